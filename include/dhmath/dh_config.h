@@ -1,0 +1,82 @@
+/**
+ * @file dh_config.h
+ * @brief The one place where every compile-time setting is defined, checked
+ *        and documented.
+ *
+ * Each CMake option maps to exactly one DH_* define here. A project may also
+ * define DH_CONFIG_HEADER="my_dh_config.h" to set them from a header; the
+ * header is included first and anything it does not set gets the default.
+ */
+#ifndef DHMATH_DH_CONFIG_H
+#define DHMATH_DH_CONFIG_H
+
+#ifdef DH_CONFIG_HEADER
+#include DH_CONFIG_HEADER
+#endif
+
+/**
+ * DH_MAX_JOINTS: capacity of dh_robot (layout-changing, PUBLIC definition).
+ * Range 1..32, default 8.
+ */
+#ifndef DH_MAX_JOINTS
+#define DH_MAX_JOINTS 8
+#endif
+#if (DH_MAX_JOINTS < 1) || (DH_MAX_JOINTS > 32)
+#error "DH_MAX_JOINTS must be in 1..32"
+#endif
+
+/**
+ * DH_QPOS_FRAC: fraction bits of fixed-point lengths (dh_qpos).
+ * Range 8..24, default 16 (Q16.16: +-32767 units at 1.5e-5 resolution;
+ * in millimetres +-32 m at 15 nm). Layout-neutral but changes values: PUBLIC.
+ */
+#ifndef DH_QPOS_FRAC
+#define DH_QPOS_FRAC 16
+#endif
+#if (DH_QPOS_FRAC < 8) || (DH_QPOS_FRAC > 24)
+#error "DH_QPOS_FRAC must be in 8..24"
+#endif
+
+/**
+ * DH_CHECK_ARGS: 1 = DH_ASSERT checks pointer arguments (programmer
+ * errors); 0 = no checks. Default 1. Range 0..1.
+ */
+#ifndef DH_CHECK_ARGS
+#define DH_CHECK_ARGS 1
+#endif
+#if (DH_CHECK_ARGS != 0) && (DH_CHECK_ARGS != 1)
+#error "DH_CHECK_ARGS must be 0 or 1"
+#endif
+
+/**
+ * DH_USE_INTRINSICS: 1 = use the Cortex-M intrinsics of port/dh_port.h
+ * (SSAT, SMULL/SMLAL, CLZ) when the compiler targets an ARM core that has
+ * them; 0 = always the plain C fallback. Default 1. Range 0..1.
+ */
+#ifndef DH_USE_INTRINSICS
+#define DH_USE_INTRINSICS 1
+#endif
+#if (DH_USE_INTRINSICS != 0) && (DH_USE_INTRINSICS != 1)
+#error "DH_USE_INTRINSICS must be 0 or 1"
+#endif
+
+/**
+ * DH_ASSERT(cond): called for programmer errors only (NULL pointers).
+ * Override it by defining DH_ASSERT before this header (or in
+ * DH_CONFIG_HEADER). Default: a trap (__builtin_trap on GCC/Clang, an
+ * endless loop elsewhere), so a NULL pointer stops the program at the call
+ * instead of corrupting memory.
+ */
+#ifndef DH_ASSERT
+#if DH_CHECK_ARGS
+#if defined(__GNUC__) || defined(__clang__)
+#define DH_ASSERT(cond) do { if (!(cond)) { __builtin_trap(); } } while (0)
+#else
+#define DH_ASSERT(cond) do { if (!(cond)) { for (;;) { } } } while (0)
+#endif
+#else
+#define DH_ASSERT(cond) ((void)0)
+#endif
+#endif
+
+#endif /* DHMATH_DH_CONFIG_H */

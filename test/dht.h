@@ -1,0 +1,86 @@
+/*
+ * dht.h - the tiny assertion layer every dhmath test is written against.
+ *
+ * The same test sources run on the host (backend: cmocka, test/dht_cmocka.c)
+ * and on emulated Cortex-M (backend: semihosting runner, test/dht_target.c).
+ * A test file defines `static void name(void)` cases and ends with
+ *
+ *     static const dht_case cases[] = { DHT_CASE(name), ... };
+ *     DHT_MAIN(cases)
+ *
+ * Checks stop the current case on failure (longjmp in both backends) after
+ * printing file:line, the expression and the values.
+ *
+ * Randomness: dht_rand_u32()/dht_rand_uniform() from a seed that is printed
+ * on failure; DHT_SEED in the environment (host) overrides it.
+ * DHT_ITER(n) scales loop counts: full on the host, reduced on slow targets
+ * (DHT_ITER_DIV, default 1 on host and set per target by CMake).
+ */
+#ifndef DHT_H
+#define DHT_H
+
+#include <stdint.h>
+#include <stddef.h>
+
+typedef void (*dht_fn)(void);
+typedef struct {
+    const char *name;
+    dht_fn fn;
+} dht_case;
+
+#define DHT_CASE(f) { #f, f }
+#define DHT_NCASES(arr) (sizeof(arr) / sizeof((arr)[0]))
+
+int dht_run(const char *suite, const dht_case *cases, size_t n);
+#define DHT_MAIN(arr) \
+    int main(void) { return dht_run(__FILE__, (arr), DHT_NCASES(arr)); }
+
+/* Failure reporting: never returns. */
+void dht_fail(const char *file, int line, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((noreturn, format(printf, 3, 4)))
+#endif
+    ;
+/* Informational output (goes to stdout on host, semihosting on target). */
+void dht_printf(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
+#define DHT_TRUE(c) \
+    do { if (!(c)) dht_fail(__FILE__, __LINE__, "check failed: %s", #c); } while (0)
+#define DHT_TRUE_MSG(c, ...) \
+    do { if (!(c)) dht_fail(__FILE__, __LINE__, __VA_ARGS__); } while (0)
+#define DHT_EQ_INT(a, b) \
+    do { long long dht_a_ = (long long)(a), dht_b_ = (long long)(b); \
+         if (dht_a_ != dht_b_) dht_fail(__FILE__, __LINE__, "%s == %s: %lld != %lld", #a, #b, dht_a_, dht_b_); } while (0)
+/* |a - b| <= tol, NaN fails. */
+#define DHT_NEAR(a, b, tol) \
+    do { double dht_a_ = (double)(a), dht_b_ = (double)(b), dht_t_ = (double)(tol); \
+         double dht_d_ = dht_a_ - dht_b_; if (dht_d_ < 0) dht_d_ = -dht_d_; \
+         if (!(dht_d_ <= dht_t_)) dht_fail(__FILE__, __LINE__, "%s ~ %s: %.17g vs %.17g (diff %.3g > tol %.3g)", \
+                                           #a, #b, dht_a_, dht_b_, dht_d_, dht_t_); } while (0)
+/* Bitwise float equality (distinguishes -0 and +0). */
+#define DHT_EQ_F32_BITS(a, b) \
+    do { float dht_a_ = (a), dht_b_ = (b); uint32_t dht_ua_, dht_ub_; \
+         dht_memcpy4(&dht_ua_, &dht_a_); dht_memcpy4(&dht_ub_, &dht_b_); \
+         if (dht_ua_ != dht_ub_) dht_fail(__FILE__, __LINE__, "%s == %s bitwise: %.9g (0x%08lx) vs %.9g (0x%08lx)", \
+                                          #a, #b, (double)dht_a_, (unsigned long)dht_ua_, (double)dht_b_, (unsigned long)dht_ub_); } while (0)
+
+void dht_memcpy4(void *dst, const void *src);
+
+/* Seeded PRNG (xorshift64*). The seed is printed by the runner on failure. */
+uint64_t dht_seed(void);
+void dht_reseed(uint64_t s);
+uint32_t dht_rand_u32(void);
+/* uniform in [lo, hi) */
+double dht_rand_uniform(double lo, double hi);
+
+#ifndef DHT_ITER_DIV
+#define DHT_ITER_DIV 1
+#endif
+/* loop count n on the host, n / DHT_ITER_DIV (at least 1) on slow targets */
+#define DHT_ITER(n) (((n) / DHT_ITER_DIV) > 0 ? ((n) / DHT_ITER_DIV) : 1)
+
+#endif /* DHT_H */

@@ -1,0 +1,37 @@
+/* Backend-independent parts of the dht test layer: PRNG and helpers. */
+#include "dht.h"
+#include <string.h>
+
+#ifndef DHT_DEFAULT_SEED
+#define DHT_DEFAULT_SEED 0x5eed2026u
+#endif
+
+static uint64_t dht_state = DHT_DEFAULT_SEED;
+static uint64_t dht_seed_value = DHT_DEFAULT_SEED;
+
+uint64_t dht_seed(void) { return dht_seed_value; }
+
+void dht_reseed(uint64_t s)
+{
+    dht_seed_value = s;
+    dht_state = s ? s : 0x9e3779b97f4a7c15ull;
+}
+
+uint32_t dht_rand_u32(void)
+{
+    uint64_t x = dht_state;
+    x ^= x >> 12;
+    x ^= x << 25;
+    x ^= x >> 27;
+    dht_state = x;
+    return (uint32_t)((x * 0x2545F4914F6CDD1Dull) >> 32);
+}
+
+double dht_rand_uniform(double lo, double hi)
+{
+    uint64_t hi32 = dht_rand_u32(), lo32 = dht_rand_u32();
+    double u = (double)((hi32 << 21) ^ lo32) / 9007199254740992.0; /* 53 bits */
+    return lo + (hi - lo) * u;
+}
+
+void dht_memcpy4(void *dst, const void *src) { memcpy(dst, src, 4); }
