@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# The README's test command: builds and runs every test suite.
+#   tools/check.sh            all stages
+#   tools/check.sh host asan  only the named stages
+# Stages: host (Release build, cmocka suite + CLI tests), asan (ASan+UBSan),
+# target suites under QEMU, guards, static analysis, coverage, config variants.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ROOT=$(pwd)
+JOBS=${JOBS:-$(nproc)}
+STAGES=${*:-"host asan m0 m4f m7 riscv32 guards variants"}
+failed=""
+
+run_stage() {
+  local name=$1; shift
+  echo "=== stage $name ==="
+  if "$@"; then echo "=== stage $name: passed ==="; else echo "=== stage $name: FAILED ==="; failed="$failed $name"; fi
+}
+
+host_suite() { # builddir, extra cmake args...
+  local dir=$1; shift
+  cmake -S "$ROOT" -B "$dir" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null &&
+  cmake --build "$dir" -j"$JOBS" >/dev/null &&
+  ctest --test-dir "$dir" -j"$JOBS" --output-on-failure
+}
+
+target_suite() { # builddir, toolchain file
+  local dir=$1 tc=$2
+  cmake -S "$ROOT" -B "$dir" -DCMAKE_TOOLCHAIN_FILE="$ROOT/port/$tc" -DCMAKE_BUILD_TYPE=Release >/dev/null &&
+  cmake --build "$dir" -j"$JOBS" >/dev/null &&
+  ctest --test-dir "$dir" -j"$JOBS" --output-on-failure
+}
+
+for s in $STAGES; do
+  case $s in
+    host) run_stage host host_suite build/host ;;
+    asan) run_stage asan host_suite build/asan -DDH_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug ;;
+    m0) [ -f port/cortex-m0plus.cmake ] && run_stage m0 target_suite build/m0 cortex-m0plus.cmake ;;
+    m4f) [ -f port/cortex-m4f.cmake ] && run_stage m4f target_suite build/m4f cortex-m4f.cmake ;;
+    m7) [ -f port/cortex-m7.cmake ] && run_stage m7 target_suite build/m7 cortex-m7.cmake ;;
+    riscv32) [ -f port/riscv32.cmake ] && run_stage riscv32 bash -c "cmake -S '$ROOT' -B build/rv32 -DCMAKE_TOOLCHAIN_FILE='$ROOT/port/riscv32.cmake' -DDH_BUILD_TESTS=OFF >/dev/null && cmake --build build/rv32 -j$JOBS" ;;
+    guards) [ -x tools/check_guards.sh ] && run_stage guards tools/check_guards.sh ;;
+    variants) [ -x tools/check_variants.sh ] && run_stage variants tools/check_variants.sh ;;
+    *) echo "unknown stage $s"; exit 2 ;;
+  esac
+done
+
+if [ -n "$failed" ]; then
+  echo "check.sh: FAILED stages:$failed"
+  exit 1
+fi
+echo "check.sh: all stages passed ($STAGES)"
