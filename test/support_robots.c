@@ -1,0 +1,350 @@
+/*
+ * support_robots.c - shipped robot descriptions and the double-precision
+ * reference forward kinematics (see support_robots.h for sources).
+ */
+#include "support_robots.h"
+#include "dht.h"
+
+#include <math.h>
+
+#define DHS_PI 3.14159265358979323846
+#define DHS_R2D (180.0 / DHS_PI)
+#define DHS_S45 0.70710678118654752440
+
+#define DHS_IDENT { { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 }, { 0, 0, 0, 1 } } }
+/* trans(0,0,z) * rotz(-45 deg), column-major */
+#define DHS_PANDA_HAND(z) { { { DHS_S45, -DHS_S45, 0, 0 }, { DHS_S45, DHS_S45, 0, 0 }, \
+                              { 0, 0, 1, 0 }, { 0, 0, (z), 1 } } }
+
+#define R_ DH_JOINT_REVOLUTE
+
+/* Puma 560, standard DH (RTB-Python models/DH/Puma560.py). */
+#define PUMA_TABLE(u) { \
+    { R_, 0, 0.67183 * (u), 90, 0, -160, 160 }, \
+    { R_, 0.4318 * (u), 0, 0, 0, -110, 110 }, \
+    { R_, 0.0203 * (u), 0.15005 * (u), -90, 0, -135, 135 }, \
+    { R_, 0, 0.4318 * (u), 90, 0, -266, 266 }, \
+    { R_, 0, 0, -90, 0, -100, 100 }, \
+    { R_, 0, 0, 0, 0, -266, 266 } }
+
+const dhs_robot dhs_puma560_m = { "puma560", DH_CONV_STANDARD, 6, 1.0, PUMA_TABLE(1.0), DHS_IDENT, DHS_IDENT };
+const dhs_robot dhs_puma560_mm = { "puma560_mm", DH_CONV_STANDARD, 6, 1000.0, PUMA_TABLE(1000.0), DHS_IDENT, DHS_IDENT };
+
+/* UR5, standard DH (Universal Robots' published parameters). */
+#define UR5_TABLE(u) { \
+    { R_, 0, 0.089159 * (u), 90, 0, -360, 360 }, \
+    { R_, -0.425 * (u), 0, 0, 0, -360, 360 }, \
+    { R_, -0.39225 * (u), 0, 0, 0, -360, 360 }, \
+    { R_, 0, 0.10915 * (u), 90, 0, -360, 360 }, \
+    { R_, 0, 0.09465 * (u), -90, 0, -360, 360 }, \
+    { R_, 0, 0.0823 * (u), 0, 0, -360, 360 } }
+
+const dhs_robot dhs_ur5_m = { "ur5", DH_CONV_STANDARD, 6, 1.0, UR5_TABLE(1.0), DHS_IDENT, DHS_IDENT };
+const dhs_robot dhs_ur5_mm = { "ur5_mm", DH_CONV_STANDARD, 6, 1000.0, UR5_TABLE(1000.0), DHS_IDENT, DHS_IDENT };
+
+/* Franka Emika Panda, modified DH (Craig): a/alpha of row i precede joint i.
+ * Flange d = 0.107 on joint 7; hand: trans(0,0,0.103) rotz(-45). */
+#define PANDA_TABLE(u) { \
+    { R_, 0, 0.333 * (u), 0, 0, -2.8973 * DHS_R2D, 2.8973 * DHS_R2D }, \
+    { R_, 0, 0, -90, 0, -1.7628 * DHS_R2D, 1.7628 * DHS_R2D }, \
+    { R_, 0, 0.316 * (u), 90, 0, -2.8973 * DHS_R2D, 2.8973 * DHS_R2D }, \
+    { R_, 0.0825 * (u), 0, 90, 0, -3.0718 * DHS_R2D, -0.0698 * DHS_R2D }, \
+    { R_, -0.0825 * (u), 0.384 * (u), -90, 0, -2.8973 * DHS_R2D, 2.8973 * DHS_R2D }, \
+    { R_, 0, 0, 90, 0, -0.0175 * DHS_R2D, 3.7525 * DHS_R2D }, \
+    { R_, 0.088 * (u), 0.107 * (u), 90, 0, -2.8973 * DHS_R2D, 2.8973 * DHS_R2D } }
+
+const dhs_robot dhs_panda_m = { "panda", DH_CONV_MODIFIED, 7, 1.0, PANDA_TABLE(1.0), DHS_IDENT,
+                                DHS_PANDA_HAND(0.103) };
+const dhs_robot dhs_panda_mm = { "panda_mm", DH_CONV_MODIFIED, 7, 1000.0, PANDA_TABLE(1000.0), DHS_IDENT,
+                                 DHS_PANDA_HAND(103.0) };
+
+/* ------------------------------------------------------------------------ */
+
+void dhs_identity(dhs_mat4_d *T)
+{
+    int c, r;
+    for (c = 0; c < 4; c++)
+        for (r = 0; r < 4; r++) T->m[c][r] = (c == r) ? 1.0 : 0.0;
+}
+
+void dhs_trans(dhs_mat4_d *T, double x, double y, double z)
+{
+    dhs_identity(T);
+    T->m[3][0] = x;
+    T->m[3][1] = y;
+    T->m[3][2] = z;
+}
+
+void dhs_rotx(dhs_mat4_d *T, double deg)
+{
+    double s = sin(deg / DHS_R2D), c = cos(deg / DHS_R2D);
+    dhs_identity(T);
+    T->m[1][1] = c; T->m[2][1] = -s;
+    T->m[1][2] = s; T->m[2][2] = c;
+}
+
+void dhs_rotz(dhs_mat4_d *T, double deg)
+{
+    double s = sin(deg / DHS_R2D), c = cos(deg / DHS_R2D);
+    dhs_identity(T);
+    T->m[0][0] = c; T->m[1][0] = -s;
+    T->m[0][1] = s; T->m[1][1] = c;
+}
+
+void dhs_mul(dhs_mat4_d *out, const dhs_mat4_d *A, const dhs_mat4_d *B)
+{
+    dhs_mat4_d t;
+    int r, c, k;
+    for (c = 0; c < 4; c++)
+        for (r = 0; r < 4; r++) {
+            double s = 0.0;
+            for (k = 0; k < 4; k++) s += A->m[k][r] * B->m[c][k];
+            t.m[c][r] = s;
+        }
+    *out = t;
+}
+
+void dhs_from_f32(dhs_mat4_d *out, const dh_mat4_f32 *T)
+{
+    int c, r;
+    for (c = 0; c < 4; c++)
+        for (r = 0; r < 4; r++) out->m[c][r] = (double)T->m[c][r];
+}
+
+void dhs_from_q(dhs_mat4_d *out, const dh_frame_q *F)
+{
+    int c, r;
+    dhs_identity(out);
+    for (c = 0; c < 3; c++)
+        for (r = 0; r < 3; r++) out->m[c][r] = ldexp((double)F->r[c][r], -30);
+    for (r = 0; r < 3; r++) out->m[3][r] = ldexp((double)F->p[r], -DH_QPOS_FRAC);
+}
+
+void dhs_link(dh_convention conv, dh_joint_type type, double a, double d,
+              double alpha_deg, double theta_deg, double q, dhs_mat4_d *A)
+{
+    dhs_mat4_d rz, tz, tx, rx;
+    double theta = theta_deg, dd = d;
+    if (type == DH_JOINT_REVOLUTE) theta += q; else dd += q;
+    dhs_rotz(&rz, theta);
+    dhs_trans(&tz, 0, 0, dd);
+    dhs_trans(&tx, a, 0, 0);
+    dhs_rotx(&rx, alpha_deg);
+    if (conv == DH_CONV_STANDARD) {          /* Rz Tz Tx Rx */
+        dhs_mul(A, &rz, &tz);
+        dhs_mul(A, A, &tx);
+        dhs_mul(A, A, &rx);
+    } else {                                 /* Rx Tx Rz Tz */
+        dhs_mul(A, &rx, &tx);
+        dhs_mul(A, A, &rz);
+        dhs_mul(A, A, &tz);
+    }
+}
+
+void dhs_fk_desc(const dhs_robot *d, const double *q, dhs_mat4_d *frames, dhs_mat4_d *T)
+{
+    dhs_mat4_d acc = d->base, A;
+    unsigned i;
+    for (i = 0; i < d->n; i++) {
+        const dhs_joint_desc *j = &d->j[i];
+        dhs_link(d->conv, j->type, j->a, j->d, j->alpha_deg, j->theta_deg, q[i], &A);
+        dhs_mul(&acc, &acc, &A);
+        if (frames) frames[i] = acc;
+    }
+    if (T) dhs_mul(T, &acc, &d->tool);
+}
+
+void dhs_fk_ref_f32(const dh_robot *r, const double *q, dhs_mat4_d *frames, dhs_mat4_d *T)
+{
+    dhs_mat4_d acc, A, tool;
+    uint32_t i;
+    dhs_from_f32(&acc, &r->base);
+    for (i = 0; i < r->n; i++) {
+        const dh_joint *j = &r->joint[i];
+        dhs_link(r->conv, j->type, (double)j->a, (double)j->d, (double)j->alpha_deg,
+                 (double)j->theta_deg, q[i], &A);
+        dhs_mul(&acc, &acc, &A);
+        if (frames) frames[i] = acc;
+    }
+    if (T) {
+        dhs_from_f32(&tool, &r->tool);
+        dhs_mul(T, &acc, &tool);
+    }
+}
+
+void dhs_fk_ref_q(const dh_robot *r, const int32_t *q, dhs_mat4_d *frames, dhs_mat4_d *T)
+{
+    dhs_mat4_d acc, A, tool;
+    uint32_t i;
+    dhs_from_q(&acc, &r->base_q);
+    for (i = 0; i < r->n; i++) {
+        const dh_joint *j = &r->joint[i];
+        double qv = (j->type == DH_JOINT_REVOLUTE) ? ldexp((double)q[i], -16)
+                                                    : ldexp((double)q[i], -DH_QPOS_FRAC);
+        dhs_link(r->conv, j->type, ldexp((double)j->a_q, -DH_QPOS_FRAC),
+                 ldexp((double)j->d_q, -DH_QPOS_FRAC), ldexp((double)j->alpha_q, -16),
+                 ldexp((double)j->theta_q, -16), qv, &A);
+        dhs_mul(&acc, &acc, &A);
+        if (frames) frames[i] = acc;
+    }
+    if (T) {
+        dhs_from_q(&tool, &r->tool_q);
+        dhs_mul(T, &acc, &tool);
+    }
+}
+
+/* ------------------------------------------------------------------------ */
+
+static void to_f32(const dhs_mat4_d *D, dh_mat4_f32 *T)
+{
+    int c, r;
+    for (c = 0; c < 4; c++)
+        for (r = 0; r < 4; r++) T->m[c][r] = (float)D->m[c][r];
+}
+
+static void to_q(const dhs_mat4_d *D, dh_frame_q *F)
+{
+    int c, r;
+    for (c = 0; c < 3; c++)
+        for (r = 0; r < 3; r++) F->r[c][r] = dhs_to_q(D->m[c][r], 30);
+    for (r = 0; r < 3; r++) F->p[r] = dhs_to_q(D->m[3][r], DH_QPOS_FRAC);
+}
+
+dh_status dhs_build(const dhs_robot *d, dh_robot *r)
+{
+    dh_mat4_f32 T;
+    dh_status st;
+    unsigned i;
+    st = dh_robot_init(r, d->conv);
+    if (st != DH_OK) return st;
+    if (d->n > DH_MAX_JOINTS) return DH_ERR_ARG;
+    for (i = 0; i < d->n; i++) {
+        const dhs_joint_desc *j = &d->j[i];
+        st = dh_robot_add_joint_f32(r, j->type, (float)j->a, (float)j->d, (float)j->alpha_deg,
+                                    (float)j->theta_deg);
+        if (st != DH_OK) return st;
+        if (j->qmin <= j->qmax) {
+            st = dh_robot_set_limits_f32(r, i, (float)j->qmin, (float)j->qmax);
+            if (st != DH_OK) return st;
+        }
+    }
+    to_f32(&d->base, &T);
+    st = dh_robot_set_base_f32(r, &T);
+    if (st != DH_OK) return st;
+    to_f32(&d->tool, &T);
+    return dh_robot_set_tool_f32(r, &T);
+}
+
+dh_status dhs_build_q(const dhs_robot *d, dh_robot *r)
+{
+    dh_frame_q F;
+    dh_status st;
+    unsigned i;
+    st = dh_robot_init(r, d->conv);
+    if (st != DH_OK) return st;
+    if (d->n > DH_MAX_JOINTS) return DH_ERR_ARG;
+    for (i = 0; i < d->n; i++) {
+        const dhs_joint_desc *j = &d->j[i];
+        st = dh_robot_add_joint_q(r, j->type, dhs_to_q(j->a, DH_QPOS_FRAC), dhs_to_q(j->d, DH_QPOS_FRAC),
+                                  dhs_to_q(j->alpha_deg, 16), dhs_to_q(j->theta_deg, 16));
+        if (st != DH_OK) return st;
+        if (j->qmin <= j->qmax) {
+            int frac = (j->type == DH_JOINT_REVOLUTE) ? 16 : DH_QPOS_FRAC;
+            st = dh_robot_set_limits_q(r, i, dhs_to_q(j->qmin, frac), dhs_to_q(j->qmax, frac));
+            if (st != DH_OK) return st;
+        }
+    }
+    to_q(&d->base, &F);
+    st = dh_robot_set_base_q(r, &F);
+    if (st != DH_OK) return st;
+    to_q(&d->tool, &F);
+    return dh_robot_set_tool_q(r, &F);
+}
+
+void dhs_random_q(const dhs_robot *d, double *q)
+{
+    unsigned i;
+    for (i = 0; i < d->n; i++) {
+        const dhs_joint_desc *j = &d->j[i];
+        if (j->qmin <= j->qmax) q[i] = dht_rand_uniform(j->qmin, j->qmax);
+        else if (j->type == DH_JOINT_REVOLUTE) q[i] = dht_rand_uniform(-180.0, 180.0);
+        else q[i] = dht_rand_uniform(-1.0, 1.0);
+    }
+}
+
+void dhs_random_q_robot(const dh_robot *r, double *q)
+{
+    uint32_t i;
+    for (i = 0; i < r->n; i++) {
+        const dh_joint *j = &r->joint[i];
+        if (j->qmin <= j->qmax) q[i] = dht_rand_uniform((double)j->qmin, (double)j->qmax);
+        else if (j->type == DH_JOINT_REVOLUTE) q[i] = dht_rand_uniform(-180.0, 180.0);
+        else q[i] = dht_rand_uniform(-1.0, 1.0);
+    }
+}
+
+int32_t dhs_to_q(double x, int frac)
+{
+    double v = floor(ldexp(x, frac) + 0.5);
+    if (v >= 2147483647.0) return INT32_MAX;
+    if (v <= -2147483648.0) return INT32_MIN;
+    return (int32_t)v;
+}
+
+void dhs_q_from_double(const dh_robot *r, const double *q, int32_t *qq)
+{
+    uint32_t i;
+    for (i = 0; i < r->n; i++)
+        qq[i] = dhs_to_q(q[i], r->joint[i].type == DH_JOINT_REVOLUTE ? 16 : DH_QPOS_FRAC);
+}
+
+double dhs_pos_err_f32(const dh_mat4_f32 *T, const dhs_mat4_d *R)
+{
+    double e = 0.0;
+    int r;
+    for (r = 0; r < 3; r++) {
+        double d = fabs((double)T->m[3][r] - R->m[3][r]);
+        if (!(d <= e)) e = d;   /* NaN propagates */
+    }
+    return e;
+}
+
+double dhs_rot_err_f32(const dh_mat4_f32 *T, const dhs_mat4_d *R)
+{
+    double e = 0.0;
+    int c, r;
+    for (c = 0; c < 3; c++)
+        for (r = 0; r < 3; r++) {
+            double d = fabs((double)T->m[c][r] - R->m[c][r]);
+            if (!(d <= e)) e = d;
+        }
+    return e;
+}
+
+int dhs_bottom_ok_f32(const dh_mat4_f32 *T)
+{
+    return T->m[0][3] == 0.0f && T->m[1][3] == 0.0f && T->m[2][3] == 0.0f && T->m[3][3] == 1.0f;
+}
+
+double dhs_pos_err_q(const dh_frame_q *F, const dhs_mat4_d *R)
+{
+    double e = 0.0;
+    int r;
+    for (r = 0; r < 3; r++) {
+        double d = fabs(ldexp((double)F->p[r], -DH_QPOS_FRAC) - R->m[3][r]);
+        if (d > e) e = d;
+    }
+    return e;
+}
+
+double dhs_rot_err_q(const dh_frame_q *F, const dhs_mat4_d *R)
+{
+    double e = 0.0;
+    int c, r;
+    for (c = 0; c < 3; c++)
+        for (r = 0; r < 3; r++) {
+            double d = fabs(ldexp((double)F->r[c][r], -30) - R->m[c][r]);
+            if (d > e) e = d;
+        }
+    return e;
+}

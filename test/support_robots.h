@@ -1,0 +1,127 @@
+/*
+ * support_robots.h - shipped robot models as double-precision descriptions
+ * and an independent double-precision reference forward kinematics.
+ *
+ * Used by the FK, Jacobian/IK and CLI tests. Nothing here calls the code
+ * under test except dhs_build()/dhs_build_q(), which fill a dh_robot through
+ * the public API. The references multiply the elementary 4x4 matrices of the
+ * DH definitions (Rz, Tz, Tx, Rx) in double with libm sin/cos of radians, so
+ * they share no code and no algebraic shortcut with the library.
+ *
+ * Units: revolute joint values in DEGREES, prismatic ones in the robot's
+ * length unit (m for the *_m models, mm for the *_mm models).
+ * Matrices are column-major like dh_mat4_f32: m[col][row].
+ *
+ * Sources of the tables (also in examples/robots/ *.dh):
+ *  - Puma 560: P. Corke, Robotics Toolbox for Python, models/DH/Puma560.py
+ *    (standard DH, d1 = 26.45 in = 0.67183 m pedestal, joint limits of that
+ *    model: +-160, +-110, +-135, +-266, +-100, +-266 deg).
+ *  - UR5: Universal Robots, "Parameters for calculations of kinematics and
+ *    dynamics" (standard DH, d1 = 0.089159, a2 = -0.425, a3 = -0.39225,
+ *    d4 = 0.10915, d5 = 0.09465, d6 = 0.0823; joints +-360 deg).
+ *  - Panda: Franka Emika, "Robot and interface specifications" / control
+ *    parameters page (modified DH, Craig), flange d = 0.107 folded into
+ *    joint 7 as in Corke's RTB Panda model, tool trans(0,0,0.103) rotz(-45)
+ *    (the hand); limits from the same page (rad converted to deg).
+ */
+#ifndef SUPPORT_ROBOTS_H
+#define SUPPORT_ROBOTS_H
+
+#include "dhmath/dh_robot.h"
+
+#define DHS_MAX_JOINTS 8
+
+/** Double 4x4 homogeneous transform, column-major m[col][row]. */
+typedef struct { double m[4][4]; } dhs_mat4_d;
+
+typedef struct {
+    dh_joint_type type;
+    double a, d, alpha_deg, theta_deg;  /* as in the DH table (theta/d = offset) */
+    double qmin, qmax;                  /* deg (R) or length (P) */
+} dhs_joint_desc;
+
+typedef struct {
+    const char *name;
+    dh_convention conv;
+    unsigned n;
+    double unit_per_m;                  /* 1 for metres, 1000 for millimetres */
+    dhs_joint_desc j[DHS_MAX_JOINTS];
+    dhs_mat4_d base, tool;
+} dhs_robot;
+
+/* The shipped models (same tables as examples/robots/ *.dh). */
+extern const dhs_robot dhs_puma560_m, dhs_puma560_mm;
+extern const dhs_robot dhs_ur5_m, dhs_ur5_mm;
+extern const dhs_robot dhs_panda_m, dhs_panda_mm;
+
+/* ---- building a dh_robot from a description (through the public API) ---- */
+
+/** init + add_joint_f32 + set_limits_f32 + set_base_f32/set_tool_f32.
+ *  Returns the first non-OK status (DH_ERR_ARG if n > DH_MAX_JOINTS). */
+dh_status dhs_build(const dhs_robot *d, dh_robot *r);
+/** Integer-only build: init + add_joint_q + set_limits_q + set_base_q/set_tool_q
+ *  with the parameters rounded to Q here (round to nearest). */
+dh_status dhs_build_q(const dhs_robot *d, dh_robot *r);
+
+/* ---- random joint values ---- */
+
+/** Uniform within the description's limits (no limits: +-180 deg / +-1 unit). */
+void dhs_random_q(const dhs_robot *d, double *q);
+/** Same, from the limits stored in a dh_robot (float limits). */
+void dhs_random_q_robot(const dh_robot *r, double *q);
+
+/* ---- double matrices ---- */
+
+void dhs_identity(dhs_mat4_d *T);
+void dhs_trans(dhs_mat4_d *T, double x, double y, double z);
+void dhs_rotx(dhs_mat4_d *T, double deg);
+void dhs_rotz(dhs_mat4_d *T, double deg);
+/** out = A * B (out may alias A or B). */
+void dhs_mul(dhs_mat4_d *out, const dhs_mat4_d *A, const dhs_mat4_d *B);
+void dhs_from_f32(dhs_mat4_d *out, const dh_mat4_f32 *T);
+void dhs_from_q(dhs_mat4_d *out, const dh_frame_q *F);
+
+/** Link matrix of one joint (standard or modified convention) at value q. */
+void dhs_link(dh_convention conv, dh_joint_type type, double a, double d,
+              double alpha_deg, double theta_deg, double q, dhs_mat4_d *A);
+
+/* ---- reference forward kinematics ---- */
+
+/**
+ * From a description (exact double parameters). frames (may be NULL, else
+ * n entries) receives base*A1..A_{i+1}; T (may be NULL) the end frame with
+ * the tool.
+ */
+void dhs_fk_desc(const dhs_robot *d, const double *q, dhs_mat4_d *frames, dhs_mat4_d *T);
+/**
+ * From a dh_robot's float parameters as stored (a, d, alpha_deg, theta_deg,
+ * base, tool), evaluated in double: the reference for the float path.
+ */
+void dhs_fk_ref_f32(const dh_robot *r, const double *q, dhs_mat4_d *frames, dhs_mat4_d *T);
+/**
+ * From a dh_robot's fixed-point parameters as stored (a_q, d_q, alpha_q,
+ * theta_q, base_q, tool_q) and Q joint values (dh_q16 deg for R, dh_qpos for
+ * P), evaluated in double: the reference for the fixed path on the same
+ * Q-rounded inputs. Lengths come out in the robot's unit (not Q).
+ */
+void dhs_fk_ref_q(const dh_robot *r, const int32_t *q, dhs_mat4_d *frames, dhs_mat4_d *T);
+
+/* ---- conversions and error measures ---- */
+
+/** Round to nearest Q with `frac` fraction bits (saturating; for test inputs). */
+int32_t dhs_to_q(double x, int frac);
+/** Joint values in deg / length -> Q (dh_q16 for R, dh_qpos for P). */
+void dhs_q_from_double(const dh_robot *r, const double *q, int32_t *qq);
+
+/** Largest |position difference| (length unit). */
+double dhs_pos_err_f32(const dh_mat4_f32 *T, const dhs_mat4_d *R);
+/** Largest |rotation entry difference| (3x3 part). */
+double dhs_rot_err_f32(const dh_mat4_f32 *T, const dhs_mat4_d *R);
+/** Bottom row exactly 0 0 0 1. */
+int dhs_bottom_ok_f32(const dh_mat4_f32 *T);
+/** Largest |position difference| in length units (Q converted to double). */
+double dhs_pos_err_q(const dh_frame_q *F, const dhs_mat4_d *R);
+/** Largest |rotation entry difference| in units of 1.0 (divide by 2^-30 for LSB). */
+double dhs_rot_err_q(const dh_frame_q *F, const dhs_mat4_d *R);
+
+#endif /* SUPPORT_ROBOTS_H */
