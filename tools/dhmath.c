@@ -1,0 +1,508 @@
+/*
+ * dhmath.c - host command-line tool over the dhmath library.
+ *
+ * Exit status: 0 success, 2 any error (usage, EXPR, robot file, numbers,
+ * library status), 3 `ik` did not converge (best joint values printed).
+ * On status 2 nothing is written to stdout: every result is computed and
+ * checked before the first byte is printed.
+ * See docs/cli.md for the reference.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "dh_expr.h"
+#include "dh_robotfile.h"
+#include "dhmath/dh_fixed.h"
+#include "dhmath/dh_kin.h"
+#include "dhmath/dh_mat4.h"
+#include "dhmath/dh_robot.h"
+
+#define EXIT_USAGE 2
+#define EXIT_ERR 2
+#define EXIT_NOCONV 3
+#define MAX_ROBOT_FILE (1024L * 1024L)
+
+static const char k_usage[] =
+    "usage: dhmath COMMAND [options] ARGS\n"
+    "\n"
+    "commands:\n"
+    "  eval [--fixed] EXPR             4x4 matrix of EXPR (4 lines of 4 numbers)\n"
+    "  axis EXPR                       equivalent axis and angle: kx ky kz theta_deg\n"
+    "  point EXPR x y z [w]            transformed homogeneous point: x y z w\n"
+    "  plane EXPR a b c d              transformed plane [a b c d] * EXPR^-1\n"
+    "  fk [--fixed] [--frames] ROBOT q1,q2,...\n"
+    "                                  end frame (with --frames: every joint frame,\n"
+    "                                  then the end frame, separated by blank lines)\n"
+    "  jacobian ROBOT q1,q2,...        6 x n geometric Jacobian in the base frame\n"
+    "                                  (rows vx vy vz wx wy wz; per radian for R joints)\n"
+    "  ik [--q0 q1,...] [--position] ROBOT EXPR\n"
+    "                                  joint values reaching EXPR; status on stderr;\n"
+    "                                  exit 0 converged, 3 not converged\n"
+    "  help                            this text\n"
+    "\n"
+    "EXPR: product, left to right, of terms separated by spaces or '*':\n"
+    "  trans(x,y,z) rotx(deg) roty(deg) rotz(deg) rot(kx,ky,kz,deg)\n"
+    "  scale(sx,sy,sz) persp(x|y|z,f) ident inv(EXPR)\n"
+    "  e.g. dhmath eval \"trans(4,-3,7) roty(90) rotz(90)\"\n"
+    "Joint values: degrees for revolute joints, length units for prismatic.\n"
+    "Numbers are printed with %.9g. Exit status: 0 ok, 2 error, 3 ik not converged.\n";
+
+/* ---- messages ----------------------------------------------------------- */
+
+static int usage_error(const char *fmt, const char *arg)
+{
+    fputs("dhmath: usage error: ", stderr);
+    fprintf(stderr, fmt, arg ? arg : "");
+    fputs("\n(run 'dhmath help' for usage)\n", stderr);
+    return EXIT_USAGE;
+}
+
+static int expr_error(const dh_expr_error *e)
+{
+    fprintf(stderr, "dhmath: error at column %lu of EXPR: %s\n", (unsigned long)(e->pos + 1), e->msg);
+    return EXIT_ERR;
+}
+
+static int error_msg(const char *what, const char *detail)
+{
+    fprintf(stderr, "dhmath: error: %s%s%s\n", what, detail ? ": " : "", detail ? detail : "");
+    return EXIT_ERR;
+}
+
+/* ---- output ------------------------------------------------------------- */
+
+/* -0 prints as 0 */
+static void put_num(double v, int last)
+{
+    if (v == 0.0) v = 0.0;
+    printf(last ? "%.9g\n" : "%.9g ", v);
+}
+
+typedef struct { double m[4][4]; } rows4;
+
+static void print_rows(const rows4 *R)
+{
+    unsigned r, c;
+    for (r = 0; r < 4u; r++)
+        for (c = 0; c < 4u; c++) put_num(R->m[r][c], c == 3u);
+}
+
+static void mat_to_rows(const dh_mat4_f32 *T, rows4 *R)
+{
+    unsigned r, c;
+    for (r = 0; r < 4u; r++)
+        for (c = 0; c < 4u; c++) R->m[r][c] = (double)DH_M4(T, r, c);
+}
+
+static void frame_to_rows(const dh_frame_q *F, rows4 *R)
+{
+    double (*M)[4] = R->m;
+    const double rs = 1.0 / 1073741824.0;
+    const double ps = 1.0 / (double)((int32_t)1 << DH_QPOS_FRAC);
+    unsigned r, c;
+    for (r = 0; r < 3u; r++) {
+        for (c = 0; c < 3u; c++) M[r][c] = (double)F->r[c][r] * rs;
+        M[r][3] = (double)F->p[r] * ps;
+        M[3][r] = 0.0;
+    }
+    M[3][3] = 1.0;
+}
+
+static int rows_finite(const rows4 *R)
+{
+    unsigned r, c;
+    for (r = 0; r < 4u; r++)
+        for (c = 0; c < 4u; c++)
+            if (!isfinite(R->m[r][c])) return 0;
+    return 1;
+}
+
+static int finish(void)
+{
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fputs("dhmath: error: writing to stdout failed\n", stderr);
+        return EXIT_ERR;
+    }
+    return 0;
+}
+
+/* ---- argument helpers --------------------------------------------------- */
+
+typedef struct {
+    int fixed, frames, position;
+    const char *q0;
+    const char *pos[8];
+    int npos;
+} opts;
+
+/* Split argv into options and positional arguments. Negative numbers are
+ * positional; anything else starting with "--" must be a known option. */
+static int parse_opts(int argc, char **argv, opts *o, const char *allowed)
+{
+    int k, only_pos = 0;
+    memset(o, 0, sizeof *o);
+    for (k = 0; k < argc; k++) {
+        const char *a = argv[k];
+        if (!only_pos && a[0] == '-' && a[1] == '-') {
+            const char *name = a + 2;
+            if (a[2] == '\0') { only_pos = 1; continue; }
+            if (strcmp(name, "fixed") == 0 && strstr(allowed, "fixed")) o->fixed = 1;
+            else if (strcmp(name, "frames") == 0 && strstr(allowed, "frames")) o->frames = 1;
+            else if (strcmp(name, "position") == 0 && strstr(allowed, "position")) o->position = 1;
+            else if (strncmp(name, "q0=", 3) == 0 && strstr(allowed, "q0")) o->q0 = name + 3;
+            else if (strcmp(name, "q0") == 0 && strstr(allowed, "q0")) {
+                if (k + 1 >= argc) return usage_error("--q0 needs a value list q1,q2,...", NULL);
+                o->q0 = argv[++k];
+            } else
+                return usage_error("unknown or inapplicable option '%s'", a);
+            continue;
+        }
+        if (!only_pos && a[0] == '-' && a[1] != '\0' && a[1] != '.' && (a[1] < '0' || a[1] > '9'))
+            return usage_error("unknown option '%s'", a);
+        if (o->npos >= (int)(sizeof o->pos / sizeof o->pos[0]))
+            return usage_error("too many arguments (at '%s')", a);
+        o->pos[o->npos++] = a;
+    }
+    return 0;
+}
+
+static int eval_expr(const char *s, dh_mat4_f32 *T)
+{
+    dh_expr_error e;
+    if (dh_expr_eval_f32(s, strlen(s), T, &e)) return expr_error(&e);
+    return 0;
+}
+
+static int parse_num_arg(const char *s, const char *what, double *v)
+{
+    const char *why = dh_expr_parse_number(s, strlen(s), v);
+    if (why) {
+        fprintf(stderr, "dhmath: error: bad number '%s' for %s: %s\n", s, what, why);
+        return EXIT_ERR;
+    }
+    return 0;
+}
+
+/* comma-separated list of exactly n numbers */
+static int parse_list(const char *s, unsigned n, double *v, const char *what)
+{
+    unsigned count = 0;
+    const char *p = s;
+    if (*s == '\0') {
+        fprintf(stderr, "dhmath: error: %s: expected %u values, got none\n", what, n);
+        return EXIT_ERR;
+    }
+    for (;;) {
+        const char *e = strchr(p, ',');
+        size_t len = e ? (size_t)(e - p) : strlen(p);
+        double x = 0.0;
+        const char *why = dh_expr_parse_number(p, len, &x);
+        if (why) {
+            fprintf(stderr, "dhmath: error: %s: value %u '%.*s' (column %lu): %s\n", what, count + 1,
+                    (int)(len > 40 ? 40 : len), p, (unsigned long)(p - s + 1), why);
+            return EXIT_ERR;
+        }
+        if (count < n) v[count] = x;
+        count++;
+        if (!e) break;
+        p = e + 1;
+    }
+    if (count != n) {
+        fprintf(stderr, "dhmath: error: %s: expected %u values (one per joint), got %u\n", what, n, count);
+        return EXIT_ERR;
+    }
+    return 0;
+}
+
+static int load_robot(const char *path, int fixed, dh_robot *r, dh_robotfile *rf)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf;
+    size_t len;
+    dh_rf_error e;
+    int rc = 0;
+    if (!f) {
+        fprintf(stderr, "dhmath: error: cannot open robot file '%s'\n", path);
+        return EXIT_ERR;
+    }
+    buf = (char *)malloc((size_t)MAX_ROBOT_FILE + 1u);
+    if (!buf) {
+        fclose(f);
+        return error_msg("out of memory", NULL);
+    }
+    len = fread(buf, 1, (size_t)MAX_ROBOT_FILE + 1u, f);
+    if (ferror(f)) rc = error_msg("cannot read robot file", path);
+    else if (len > (size_t)MAX_ROBOT_FILE) rc = error_msg("robot file larger than 1 MiB", path);
+    fclose(f);
+    if (!rc && dh_robotfile_parse(path, buf, len, rf, &e)) rc = error_msg(e.msg, NULL);
+    if (!rc && dh_robotfile_build(path, rf, fixed, r, &e)) rc = error_msg(e.msg, NULL);
+    free(buf);
+    return rc;
+}
+
+/* ---- commands ----------------------------------------------------------- */
+
+static int cmd_eval(int argc, char **argv)
+{
+    opts o;
+    rows4 M;
+    int rc = parse_opts(argc, argv, &o, "fixed");
+    if (rc) return rc;
+    if (o.npos != 1) return usage_error("eval takes one EXPR (quote it): dhmath eval [--fixed] EXPR", NULL);
+    if (o.fixed) {
+        dh_frame_q F;
+        dh_expr_error e;
+        if (dh_expr_eval_q(o.pos[0], strlen(o.pos[0]), &F, &e)) return expr_error(&e);
+        frame_to_rows(&F, &M);
+    } else {
+        dh_mat4_f32 T;
+        if ((rc = eval_expr(o.pos[0], &T)) != 0) return rc;
+        mat_to_rows(&T, &M);
+    }
+    if (!rows_finite(&M)) return error_msg("result is not finite", NULL);
+    print_rows(&M);
+    return finish();
+}
+
+static int cmd_axis(int argc, char **argv)
+{
+    opts o;
+    dh_mat4_f32 T;
+    dh_vec3_f32 k;
+    float th = 0.0f;
+    dh_status st;
+    int rc = parse_opts(argc, argv, &o, "");
+    if (rc) return rc;
+    if (o.npos != 1) return usage_error("axis takes one EXPR: dhmath axis EXPR", NULL);
+    if ((rc = eval_expr(o.pos[0], &T)) != 0) return rc;
+    st = dh_mat4_to_axis_angle_f32(&T, &k, &th);
+    if (st != DH_OK) return error_msg("axis: the rotation part of EXPR has no axis/angle", dh_status_str(st));
+    if (!isfinite(k.x) || !isfinite(k.y) || !isfinite(k.z) || !isfinite(th))
+        return error_msg("axis: result is not finite", NULL);
+    put_num(k.x, 0);
+    put_num(k.y, 0);
+    put_num(k.z, 0);
+    put_num(th, 1);
+    return finish();
+}
+
+static int cmd_point(int argc, char **argv)
+{
+    opts o;
+    dh_mat4_f32 T;
+    dh_vec4_f32 u, v;
+    double x[4] = { 0.0, 0.0, 0.0, 1.0 };
+    static const char *const names[4] = { "x", "y", "z", "w" };
+    int rc = parse_opts(argc, argv, &o, ""), k;
+    if (rc) return rc;
+    if (o.npos != 4 && o.npos != 5) return usage_error("point takes EXPR x y z [w]", NULL);
+    if ((rc = eval_expr(o.pos[0], &T)) != 0) return rc;
+    for (k = 0; k + 1 < o.npos; k++)
+        if ((rc = parse_num_arg(o.pos[k + 1], names[k], &x[k])) != 0) return rc;
+    u.x = (float)x[0];
+    u.y = (float)x[1];
+    u.z = (float)x[2];
+    u.w = (float)x[3];
+    dh_mat4_apply_vec4_f32(&T, &u, &v);
+    if (!isfinite(v.x) || !isfinite(v.y) || !isfinite(v.z) || !isfinite(v.w))
+        return error_msg("point: result is not finite (float overflow)", NULL);
+    put_num(v.x, 0);
+    put_num(v.y, 0);
+    put_num(v.z, 0);
+    put_num(v.w, 1);
+    return finish();
+}
+
+static int cmd_plane(int argc, char **argv)
+{
+    opts o;
+    dh_mat4_f32 T;
+    dh_plane_f32 P, Q;
+    double x[4];
+    static const char *const names[4] = { "a", "b", "c", "d" };
+    dh_status st;
+    int rc = parse_opts(argc, argv, &o, ""), k;
+    if (rc) return rc;
+    if (o.npos != 5) return usage_error("plane takes EXPR a b c d", NULL);
+    if ((rc = eval_expr(o.pos[0], &T)) != 0) return rc;
+    for (k = 0; k < 4; k++)
+        if ((rc = parse_num_arg(o.pos[k + 1], names[k], &x[k])) != 0) return rc;
+    P.a = (float)x[0];
+    P.b = (float)x[1];
+    P.c = (float)x[2];
+    P.d = (float)x[3];
+    st = dh_mat4_apply_plane_f32(&T, &P, &Q);
+    if (st == DH_ERR_SINGULAR)
+        return error_msg("plane: EXPR is singular (a plane transforms with the inverse)", NULL);
+    if (st != DH_OK) return error_msg("plane", dh_status_str(st));
+    if (!isfinite(Q.a) || !isfinite(Q.b) || !isfinite(Q.c) || !isfinite(Q.d))
+        return error_msg("plane: result is not finite (float overflow)", NULL);
+    put_num(Q.a, 0);
+    put_num(Q.b, 0);
+    put_num(Q.c, 0);
+    put_num(Q.d, 1);
+    return finish();
+}
+
+static void warn_limits(const dh_robot *r, const float *q)
+{
+    unsigned k;
+    if (dh_robot_check_limits_f32(r, q) == DH_OK) return;
+    for (k = 0; k < r->n; k++) {
+        const dh_joint *j = &r->joint[k];
+        if (j->qmin <= j->qmax && (q[k] < j->qmin || q[k] > j->qmax))
+            fprintf(stderr, "dhmath: warning: joint %u value %.9g outside its limits [%.9g, %.9g]\n",
+                    k + 1, (double)q[k], (double)j->qmin, (double)j->qmax);
+    }
+}
+
+static int cmd_fk(int argc, char **argv)
+{
+    opts o;
+    dh_robot r;
+    dh_robotfile rf;
+    double qd[DH_MAX_JOINTS];
+    rows4 M[DH_MAX_JOINTS + 1];
+    unsigned n, k, nout;
+    dh_status st;
+    int rc = parse_opts(argc, argv, &o, "fixed frames");
+    if (rc) return rc;
+    if (o.npos != 2) return usage_error("fk takes ROBOTFILE q1,q2,...", NULL);
+    if ((rc = load_robot(o.pos[0], o.fixed, &r, &rf)) != 0) return rc;
+    n = r.n;
+    if ((rc = parse_list(o.pos[1], n, qd, "joint values")) != 0) return rc;
+    if (o.fixed) {
+        int32_t q[DH_MAX_JOINTS];
+        dh_frame_q frames[DH_MAX_JOINTS], Tend;
+        const double pscale = (double)((int32_t)1 << DH_QPOS_FRAC);
+        for (k = 0; k < n; k++) {
+            double s = r.joint[k].type == DH_JOINT_REVOLUTE ? 65536.0 : pscale;
+            double v = floor(qd[k] * s + 0.5);
+            if (v > 2147483647.0 || v < -2147483648.0) {
+                fprintf(stderr, "dhmath: error: overflow: joint value %u (%.9g) does not fit %s\n", k + 1,
+                        qd[k], r.joint[k].type == DH_JOINT_REVOLUTE ? "degrees Q16.16" : "the fixed-point length format");
+                return EXIT_ERR;
+            }
+            q[k] = (int32_t)v;
+        }
+        if (o.frames) st = dh_fk_frames_q(&r, q, frames, &Tend);
+        else st = dh_fk_q(&r, q, &Tend);
+        if (st == DH_ERR_OVERFLOW)
+            return error_msg("overflow: the fixed-point forward kinematics saturates", NULL);
+        if (st != DH_OK) return error_msg("fk --fixed", dh_status_str(st));
+        nout = 0;
+        if (o.frames)
+            for (k = 0; k < n; k++) frame_to_rows(&frames[k], &M[nout++]);
+        frame_to_rows(&Tend, &M[nout++]);
+    } else {
+        float q[DH_MAX_JOINTS];
+        dh_mat4_f32 frames[DH_MAX_JOINTS], Tend;
+        for (k = 0; k < n; k++) q[k] = (float)qd[k];
+        if (o.frames) st = dh_fk_frames_f32(&r, q, frames, &Tend);
+        else st = dh_fk_f32(&r, q, &Tend);
+        if (st != DH_OK) return error_msg("fk", dh_status_str(st));
+        nout = 0;
+        if (o.frames)
+            for (k = 0; k < n; k++) mat_to_rows(&frames[k], &M[nout++]);
+        mat_to_rows(&Tend, &M[nout++]);
+        warn_limits(&r, q);
+    }
+    for (k = 0; k < nout; k++)
+        if (!rows_finite(&M[k])) return error_msg("fk: result is not finite", NULL);
+    for (k = 0; k < nout; k++) {
+        if (k) putchar('\n');
+        print_rows(&M[k]);
+    }
+    return finish();
+}
+
+static int cmd_jacobian(int argc, char **argv)
+{
+    opts o;
+    dh_robot r;
+    dh_robotfile rf;
+    double qd[DH_MAX_JOINTS];
+    float q[DH_MAX_JOINTS], J[6 * DH_MAX_JOINTS];
+    unsigned n, k, row;
+    dh_status st;
+    int rc = parse_opts(argc, argv, &o, "");
+    if (rc) return rc;
+    if (o.npos != 2) return usage_error("jacobian takes ROBOTFILE q1,q2,...", NULL);
+    if ((rc = load_robot(o.pos[0], 0, &r, &rf)) != 0) return rc;
+    n = r.n;
+    if ((rc = parse_list(o.pos[1], n, qd, "joint values")) != 0) return rc;
+    for (k = 0; k < n; k++) q[k] = (float)qd[k];
+    st = dh_jacobian_f32(&r, q, J, NULL);
+    if (st != DH_OK) return error_msg("jacobian", dh_status_str(st));
+    for (k = 0; k < 6u * n; k++)
+        if (!isfinite(J[k])) return error_msg("jacobian: result is not finite", NULL);
+    for (row = 0; row < 6u; row++)
+        for (k = 0; k < n; k++) put_num(J[row * n + k], k + 1 == n);
+    warn_limits(&r, q);
+    return finish();
+}
+
+static int cmd_ik(int argc, char **argv)
+{
+    opts o;
+    dh_robot r;
+    dh_robotfile rf;
+    dh_mat4_f32 target;
+    double qd[DH_MAX_JOINTS];
+    float q0[DH_MAX_JOINTS], q[DH_MAX_JOINTS];
+    static float work[DH_IK_WORK_FLOATS(DH_MAX_JOINTS)];
+    dh_ik_params prm;
+    dh_ik_result res;
+    unsigned n, k;
+    dh_status st;
+    int rc = parse_opts(argc, argv, &o, "q0 position");
+    if (rc) return rc;
+    if (o.npos != 2) return usage_error("ik takes ROBOTFILE EXPR [--q0 q1,...] [--position]", NULL);
+    if ((rc = load_robot(o.pos[0], 0, &r, &rf)) != 0) return rc;
+    if ((rc = eval_expr(o.pos[1], &target)) != 0) return rc;
+    n = r.n;
+    for (k = 0; k < n; k++) qd[k] = 0.0;
+    if (o.q0 && (rc = parse_list(o.q0, n, qd, "--q0")) != 0) return rc;
+    for (k = 0; k < n; k++) q0[k] = (float)qd[k];
+    dh_ik_params_default(&prm);
+    if (o.position) prm.mask = DH_IK_POSITION;
+    memset(&res, 0, sizeof res);
+    st = dh_ik_f32(&r, &target, q0, q, &prm, work, sizeof work / sizeof work[0], &res);
+    if (st != DH_OK && st != DH_ERR_NO_CONVERGENCE && st != DH_ERR_UNREACHABLE && st != DH_ERR_SINGULAR)
+        return error_msg("ik", dh_status_str(st));
+    for (k = 0; k < n; k++)
+        if (!isfinite(q[k])) return error_msg("ik: result is not finite", NULL);
+    for (k = 0; k < n; k++) put_num(q[k], k + 1 == n);
+    rc = finish();
+    fprintf(stderr, "ik: %s (%s), %lu iterations, position error %.3g, orientation error %.3g rad\n",
+            st == DH_OK ? "converged" : "not converged", dh_status_str(st), (unsigned long)res.iterations,
+            (double)res.err_pos, (double)res.err_rot);
+    if (rc) return rc;
+    return st == DH_OK ? 0 : EXIT_NOCONV;
+}
+
+int main(int argc, char **argv)
+{
+    const char *cmd;
+    if (argc < 2) {
+        fputs(k_usage, stderr);
+        return EXIT_USAGE;
+    }
+    cmd = argv[1];
+    if (strcmp(cmd, "help") == 0 || strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0) {
+        fputs(k_usage, stdout);
+        return finish();
+    }
+    argc -= 2;
+    argv += 2;
+    if (strcmp(cmd, "eval") == 0) return cmd_eval(argc, argv);
+    if (strcmp(cmd, "axis") == 0) return cmd_axis(argc, argv);
+    if (strcmp(cmd, "point") == 0) return cmd_point(argc, argv);
+    if (strcmp(cmd, "plane") == 0) return cmd_plane(argc, argv);
+    if (strcmp(cmd, "fk") == 0) return cmd_fk(argc, argv);
+    if (strcmp(cmd, "jacobian") == 0) return cmd_jacobian(argc, argv);
+    if (strcmp(cmd, "ik") == 0) return cmd_ik(argc, argv);
+    return usage_error("unknown command '%s'", cmd);
+}
