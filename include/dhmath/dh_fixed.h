@@ -3,9 +3,33 @@
  * @brief Fixed-point rigid frames: rotation Q2.30, position dh_qpos
  *        (DH_QPOS_FRAC fraction bits), angles in degrees Q16.16.
  *
- * Integer only (no float, no libm, no 64-bit division). 64-bit accumulation
- * with one rounding per output; saturation is reported as DH_ERR_OVERFLOW
- * (the saturated value is written). Outputs may alias inputs.
+ * Integer only (no float, no libm, no 64-bit division); the two conversion
+ * functions at the end live in their own source file and use float.
+ *
+ * Arithmetic contract shared by every function below:
+ * - Each output entry is ONE exact 64-bit sum of products rounded once:
+ *   out = floor(sum / 2^30 + 1/2), i.e. round to nearest with ties toward
+ *   +infinity. A translation is added inside the same sum (as p * 2^30),
+ *   so an output is within 0.5 LSB of the exact value of the formula for
+ *   the given integer inputs.
+ * - Rotation x rotation: three Q2.30 x Q2.30 products, >> 30 -> Q2.30.
+ *   Rotation x position: Q2.30 x Qpos >> 30 -> Qpos, for every
+ *   DH_QPOS_FRAC in 8..24 (the position format does not enter the shift).
+ * - Results that do not fit int32 are saturated to INT32_MIN / INT32_MAX
+ *   with the correct sign, written, and DH_ERR_OVERFLOW is returned (all
+ *   other outputs are still computed normally). There is no wraparound and
+ *   no sentinel value.
+ * - Any int32 value is accepted in every field of a dh_frame_q (rotation
+ *   entries in [-2, 2)): when every rotation entry of the multiplying
+ *   frame is in [-1, +1] a fast path (one SMULL/SMLAL per product) is used,
+ *   otherwise an exact overflow-free path gives the same bits, slower.
+ * - Outputs may alias inputs (results are computed into locals first).
+ * - NULL pointers are programmer errors: DH_ASSERT.
+ * - Stack: every function uses well under 256 bytes (a dh_frame_q is 48).
+ *
+ * Measured accuracy (test/test_frame_q.c, docs/accuracy_fixed.md) is
+ * quoted per function in LSB: 1 LSB of a rotation entry is 2^-30, 1 LSB of
+ * a position is 2^-DH_QPOS_FRAC units.
  */
 #ifndef DHMATH_DH_FIXED_H
 #define DHMATH_DH_FIXED_H
@@ -16,29 +40,141 @@
 extern "C" {
 #endif
 
+/**
+ * @brief F = identity (rotation I exactly, position 0). Cannot fail.
+ * @param[out] F frame to write.
+ */
 void dh_frame_identity_q(dh_frame_q *F);
+
+/**
+ * @brief F = Trans(x, y, z) (seed eq. 1.24): rotation I, position (x, y, z).
+ * @param[out] F frame to write.
+ * @param x,y,z translation, dh_qpos (DH_QPOS_FRAC fraction bits), any int32.
+ */
 void dh_frame_trans_q(dh_frame_q *F, dh_qpos x, dh_qpos y, dh_qpos z);
+
+/**
+ * @brief F = Rot(x, deg) (seed eq. 1.32), position 0.
+ *
+ * Entries are exactly the dh_sincos_q() values (c, s, and -s), so whole
+ * degrees are correctly rounded and multiples of 90 degrees are exact.
+ * @param[out] F frame to write.
+ * @param deg angle in degrees, Q16.16, any int32 (full range of dh_sincos_q).
+ */
 void dh_frame_rotx_q(dh_frame_q *F, dh_q16 deg);
+/** @brief F = Rot(y, deg) (seed eq. 1.33); otherwise as dh_frame_rotx_q(). */
 void dh_frame_roty_q(dh_frame_q *F, dh_q16 deg);
+/** @brief F = Rot(z, deg) (seed eq. 1.34); otherwise as dh_frame_rotx_q(). */
 void dh_frame_rotz_q(dh_frame_q *F, dh_q16 deg);
-/** Axis (any scale, Q2.30 or any common scale) normalised internally; zero axis -> DH_ERR_ZERO_AXIS. */
+
+/**
+ * @brief F = Rot(k, deg) (seed eq. 1.70), rotation about the axis k through
+ *        the origin; position 0.
+ *
+ * The axis is normalised internally in integer arithmetic (CLZ scaling,
+ * Newton inverse square root, one final Newton step on the vector), so any
+ * common scale of (kx, ky, kz) is accepted: Q2.30 unit vectors, integers,
+ * any int32 values including INT32_MIN. Components larger than 2^29 in
+ * magnitude lose at most their 2 lowest bits before normalisation.
+ * Accuracy vs. the double-precision formula with exact sin/cos: see
+ * docs/accuracy_fixed.md (dominated by dh_sincos_q's <= 2 LSB).
+ *
+ * @param[out] F frame to write.
+ * @param kx,ky,kz axis, any common scale (int32).
+ * @param deg angle in degrees, Q16.16, any int32.
+ * @return DH_OK; DH_ERR_ZERO_AXIS if kx == ky == kz == 0 (F untouched).
+ */
 dh_status dh_frame_rot_axis_q(dh_frame_q *F, dh_q30 kx, dh_q30 ky, dh_q30 kz, dh_q16 deg);
 
-/** out = A * B. */
+/**
+ * @brief out = A * B (rigid composition: R = Ra Rb, p = Ra pb + pa).
+ *
+ * 27 + 12 products, one rounding per output (<= 0.5 LSB vs. the exact
+ * product of the integer inputs). May alias A and/or B.
+ * @return DH_OK, or DH_ERR_OVERFLOW if any entry saturated (all 12 entries
+ *         written, saturated ones at INT32_MIN / INT32_MAX).
+ */
 dh_status dh_frame_mul_q(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B);
-/** out = F^-1 (transpose rotation, -R^T p). */
+
+/**
+ * @brief out = F^-1 for a rigid F (seed eq. 1.57): R' = R^T (exact copy),
+ *        p' = -R^T p (one rounding per entry, <= 0.5 LSB).
+ *
+ * Rigidity is not checked: for a non-orthonormal R the result is R^T and
+ * -R^T p, not the general inverse. T * T^-1 is within a few LSB of the
+ * identity for rotations from the constructors (measured: see
+ * docs/accuracy_fixed.md). May alias F.
+ * @return DH_OK, or DH_ERR_OVERFLOW if a position entry saturated (written).
+ */
 dh_status dh_frame_inv_q(dh_frame_q *out, const dh_frame_q *F);
-/** v = F * u (point). */
+
+/**
+ * @brief v = R u + p (point, w = 1). u, v in dh_qpos; may alias.
+ * @return DH_OK, or DH_ERR_OVERFLOW if a component saturated (written).
+ */
 dh_status dh_frame_apply_point_q(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_q *v);
-/** v = R * u (direction, positions scale). */
+
+/**
+ * @brief v = R u (direction, w = 0; the position of F is ignored). u and v
+ *        share any scale (dh_qpos or Q2.30 alike); may alias.
+ * @return DH_OK, or DH_ERR_OVERFLOW if a component saturated (written).
+ */
 dh_status dh_frame_apply_dir_q(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_q *v);
-/** Re-orthonormalise the rotation part in place. */
+
+/**
+ * @brief Re-orthonormalise the rotation part in place by one Newton step
+ *        R <- R (3 I - R^T R) / 2 (position untouched).
+ *
+ * The step is quadratically convergent: an input error e (largest
+ * |R^T R - I| entry) becomes about 3/4 e^2 plus rounding, so frames
+ * accumulated over many compositions stay within a few LSB of orthonormal
+ * when this is called every few hundred steps (measured: see
+ * docs/accuracy_fixed.md). Keeps the sign of det R.
+ * @return DH_OK; DH_ERR_NOT_RIGID (F untouched) if an entry exceeds 1.25 in
+ *         magnitude or the error exceeds 1/8 (2^27 LSB), where a single
+ *         step would not be reliable; DH_ERR_OVERFLOW cannot happen for the
+ *         accepted inputs but is reported if it did.
+ */
+dh_status dh_frame_orthonormalize_chk_q(dh_frame_q *F);
+
+/**
+ * @brief dh_frame_orthonormalize_chk_q() without the status: F is left
+ *        untouched when it is too far from orthonormal (see there).
+ */
 void dh_frame_orthonormalize_q(dh_frame_q *F);
-/** Largest |R^T R - I| entry in Q2.30 LSB (drift measure). */
+
+/**
+ * @brief Largest |(R^T R - I)_ij| in Q2.30 LSB (drift measure), exact up
+ *        to the one rounding; defined for every input, saturated at
+ *        INT32_MAX. 0 for the identity and the exact 90-degree rotations.
+ */
 int32_t dh_frame_ortho_error_q(const dh_frame_q *F);
 
-/* conversions (live in their own source file: they use float) */
+/* ---- conversions (dh_frame_conv.c: these use float) -------------------- */
+
+/**
+ * @brief F = T converted to fixed point: rotation entries x 2^30 and
+ *        positions x 2^DH_QPOS_FRAC, rounded to nearest (ties away from
+ *        zero); exact whenever the float value is representable.
+ *
+ * Rigidity of the rotation part is NOT checked (the frame holds any 3x3
+ * matrix; use dh_frame_ortho_error_q() or dh_mat4_check_rigid_f32()); the
+ * bottom row must be exactly 0 0 0 1.
+ * @return DH_OK;
+ *   DH_ERR_NAN if any of the 16 elements is NaN or infinite (F untouched);
+ *   DH_ERR_OVERFLOW if a rotation entry is outside [-2, 2) or a position
+ *   outside the dh_qpos range (saturated value written, rest converted);
+ *   DH_ERR_NOT_RIGID if the bottom row is not 0 0 0 1 (F fully written
+ *   from the top three rows). NaN takes precedence over overflow, overflow
+ *   over not-rigid.
+ */
 dh_status dh_frame_from_mat4_q(dh_frame_q *F, const dh_mat4_f32 *T);
+
+/**
+ * @brief T = F as a float 4x4 (bottom row 0 0 0 1). Each element is the
+ *        fixed-point value rounded once to float (round to nearest even);
+ *        values with <= 24 significant bits are exact. Cannot fail.
+ */
 void dh_frame_to_mat4_q(dh_mat4_f32 *T, const dh_frame_q *F);
 
 #ifdef __cplusplus

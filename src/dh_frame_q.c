@@ -1,0 +1,415 @@
+/*
+ * dh_frame_q.c - fixed-point rigid frames (integer only).
+ *
+ * Rotation entries are Q2.30, positions have DH_QPOS_FRAC fraction bits.
+ * Every output is one 64-bit sum of products rounded ONCE:
+ *
+ *     out = floor((sum + 2^29) / 2^30)      (round to nearest, ties up)
+ *
+ * then saturated to int32 (DH_ERR_OVERFLOW). The rotation x position
+ * products do not depend on DH_QPOS_FRAC (Q2.30 x Qpos >> 30 = Qpos), and a
+ * translation term p is added as the product p * 2^30 inside the same sum.
+ *
+ * Two paths give bit-identical results:
+ *  - fast path: used when every entry of the multiplying rotation lies in
+ *    [-1.0, +1.0] (always true for a rotation matrix up to drift of the
+ *    sign-preserving kind, and exactly the case after the constructors);
+ *    then the 64-bit accumulator provably cannot overflow:
+ *      3 * 2^30 * 2^31 + 2^31 * 2^30 <= 2^63 in magnitude, and
+ *      the positive side stays below 2^63 - 2^29 (room for the rounding);
+ *    a sum costs one SMULL/SMLAL per term on Cortex-M3/M4/M7.
+ *  - exact path: any other input (entries up to +-2). Each 62-bit product p
+ *    is split as 4*(p >> 2) + (p & 3) and the parts are summed separately,
+ *    which cannot overflow for up to four terms and gives the same rounding.
+ *
+ * Implementation-defined behaviour relied on (arithmetic >> of negative
+ * values, modulo conversion to signed) is checked at compile time in
+ * port/dh_port.h.
+ */
+#include "dhmath/dh_fixed.h"
+#include "dhmath/dh_trig.h"
+#include "dh_port.h"
+
+#define DH_ONE30 ((int32_t)0x40000000)      /* 1.0 in Q2.30 */
+#define DH_HALF30 ((int64_t)0x20000000)     /* 0.5 LSB of a >>30 result */
+
+/* ---- helpers ------------------------------------------------------------ */
+
+/* -x without ever negating INT32_MIN (saturates to INT32_MAX). */
+static int32_t dh_neg_sat(int32_t x)
+{
+    return x == INT32_MIN ? INT32_MAX : -x;
+}
+
+/*
+ * Final step of the fast path: acc already holds sum + 2^29. Returns
+ * floor(acc / 2^30) saturated to int32; sets *ovf on saturation.
+ * The high word must lie in [-2^29, 2^29) for the result to fit: one SSAT.
+ */
+static inline int32_t dh_fin30(int64_t acc, uint32_t *ovf)
+{
+    int32_t hi = (int32_t)(acc >> 32);
+    uint32_t lo = (uint32_t)((uint64_t)acc & 0xFFFFFFFFu);
+    if (DH_PORT_SSAT(hi, 30) != hi) {
+        *ovf = 1u;
+        return hi < 0 ? INT32_MIN : INT32_MAX;
+    }
+    return (int32_t)(((uint32_t)hi << 2) | (lo >> 30));
+}
+
+/*
+ * Exact path: round((c + sign * sum_{i<n} a[i]*b[i]) / 2^sh), ties up,
+ * saturated to int32. n <= 4, c a multiple of 4 with |c| <= 2^62, 2 <= sh <= 31.
+ * |a[i]*b[i]| <= 2^62, so every partial sum of the quarters stays below
+ * 2^62 + 2^60 * 4 < 2^63.
+ */
+static int32_t dh_dot_exact(const int32_t *a, const int32_t *b, unsigned n, int negate,
+                            int64_t c, unsigned sh, uint32_t *ovf)
+{
+    int64_t h = c >> 2, r;
+    uint32_t l = 0u;
+    unsigned i;
+    for (i = 0; i < n; i++) {
+        int64_t p = dh_port_smull(a[i], b[i]);
+        if (negate) p = -p;                          /* |p| <= 2^62: safe */
+        h += p >> 2;
+        l += (uint32_t)((uint64_t)p & 3u);
+    }
+    /* value + 2^(sh-1) = 4h + (l + 2^(sh-1)); floor division by 2^sh in two steps */
+    h += (int64_t)((l + (1u << (sh - 1u))) >> 2);
+    r = h >> (sh - 2u);
+    if (r > INT32_MAX) { *ovf = 1u; return INT32_MAX; }
+    if (r < INT32_MIN) { *ovf = 1u; return INT32_MIN; }
+    return (int32_t)r;
+}
+
+/* 1 if every rotation entry is in [-1.0, +1.0] (the fast-path condition). */
+static int dh_rot_unit_range(const dh_frame_q *F)
+{
+    uint32_t bad = 0u;
+    unsigned i, j;
+    for (i = 0; i < 3u; i++)
+        for (j = 0; j < 3u; j++)
+            bad |= (uint32_t)(((uint32_t)F->r[i][j] + 0x40000000u) > 0x80000000u);
+    return bad == 0u;
+}
+
+/* ---- constructors -------------------------------------------------------- */
+
+void dh_frame_identity_q(dh_frame_q *F)
+{
+    unsigned i, j;
+    DH_ASSERT(F != NULL);
+    for (i = 0; i < 3u; i++) {
+        for (j = 0; j < 3u; j++) F->r[i][j] = (i == j) ? DH_ONE30 : 0;
+        F->p[i] = 0;
+    }
+}
+
+void dh_frame_trans_q(dh_frame_q *F, dh_qpos x, dh_qpos y, dh_qpos z)
+{
+    DH_ASSERT(F != NULL);
+    dh_frame_identity_q(F);
+    F->p[0] = x;
+    F->p[1] = y;
+    F->p[2] = z;
+}
+
+/* Writes the elementary rotation about axis ax (0 x, 1 y, 2 z), given
+ * a1 = (ax + 1) mod 3 and a2 = (ax + 2) mod 3. */
+static void dh_frame_rot_elem(dh_frame_q *F, unsigned a1, unsigned a2, dh_q16 deg)
+{
+    dh_q30 s, c;
+    DH_ASSERT(F != NULL);
+    dh_sincos_q(deg, &s, &c);
+    dh_frame_identity_q(F);
+    /* columns a1, a2 of Rot(ax): r[a1] = c e_a1 + s e_a2, r[a2] = -s e_a1 + c e_a2.
+     * For ax = y (a1 = z, a2 = x) this gives the seed's Rot(y) (eq. 1.33). */
+    F->r[a1][a1] = c;
+    F->r[a1][a2] = s;
+    F->r[a2][a1] = dh_neg_sat(s);
+    F->r[a2][a2] = c;
+}
+
+void dh_frame_rotx_q(dh_frame_q *F, dh_q16 deg) { dh_frame_rot_elem(F, 1u, 2u, deg); }
+void dh_frame_roty_q(dh_frame_q *F, dh_q16 deg) { dh_frame_rot_elem(F, 2u, 0u, deg); }
+void dh_frame_rotz_q(dh_frame_q *F, dh_q16 deg) { dh_frame_rot_elem(F, 0u, 1u, deg); }
+
+/* |x| as uint32 (exact also for INT32_MIN). */
+static uint32_t dh_abs_u32(int32_t x)
+{
+    return x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
+}
+
+/* Scale magnitude m by 2^sh (sh > 0 left, sh < 0 right, truncating) and reapply the sign of x. */
+static int32_t dh_scale_signed(int32_t x, int sh)
+{
+    uint32_t m = dh_abs_u32(x);
+    m = sh >= 0 ? (m << (unsigned)sh) : (m >> (unsigned)(-sh));
+    /* m < 2^30 here, so the conversion and the negation are exact */
+    return x < 0 ? -(int32_t)m : (int32_t)m;
+}
+
+/*
+ * Unit vector of (kx, ky, kz) in Q2.30, integer only:
+ *  1. scale so the largest |component| is in [2^29, 2^30) (exact for inputs
+ *     below 2^29, otherwise truncation of at most 2 bits, relative 2^-29);
+ *  2. n2 = |w|^2 (exact, 64 bit), normalised to X in [2^29, 2^31) (Q2.30,
+ *     x in [0.5, 2)) by an even shift;
+ *  3. Y = 1/sqrt(x) by four Newton steps Y <- Y (3 - x Y^2) / 2 from a
+ *     piecewise linear seed (relative error <= 6 %, 1.5 e^2 per step);
+ *  4. u = w Y / 2^(15 + s/2), then one Newton step on the vector
+ *     u <- u (3 - |u|^2) / 2 computed with an exact 64-bit |u|^2.
+ * Returns 0 for the zero vector.
+ */
+static int dh_unit_axis(int32_t kx, int32_t ky, int32_t kz, int32_t u[3])
+{
+    int32_t w[3];
+    uint32_t m = dh_abs_u32(kx), ovf = 0u;
+    uint64_t n2;
+    int32_t X, Y, F;
+    int sh, s2, it;
+    unsigned i;
+    if (dh_abs_u32(ky) > m) m = dh_abs_u32(ky);
+    if (dh_abs_u32(kz) > m) m = dh_abs_u32(kz);
+    if (m == 0u) return 0;
+    sh = (int)dh_port_clz(m) - 2;                /* leading bit to bit 29 */
+    w[0] = dh_scale_signed(kx, sh);
+    w[1] = dh_scale_signed(ky, sh);
+    w[2] = dh_scale_signed(kz, sh);
+    n2 = 0u;
+    for (i = 0; i < 3u; i++) n2 += (uint64_t)dh_port_smull(w[i], w[i]);
+    /* n2 in [2^58, 3 * 2^60) */
+    s2 = (n2 >= ((uint64_t)1 << 59)) ? 30 : 28;
+    X = (int32_t)(n2 >> s2);                     /* [2^29, 2^31) */
+    Y = X < DH_ONE30 ? (int32_t)(7 << 28) - (X - (X >> 2))   /* 1.75 - 0.75 x */
+                     : (int32_t)(5 << 28) - (X >> 2);         /* 1.25 - 0.25 x */
+    for (it = 0; it < 4; it++) {
+        int32_t a[3], b[3], t;
+        a[0] = X; b[0] = Y;
+        t = dh_dot_exact(a, b, 1u, 0, 0, 30u, &ovf);         /* x Y = sqrt(x)-ish < 1.5 */
+        a[0] = t; b[0] = Y;
+        t = dh_dot_exact(a, b, 1u, 0, 0, 30u, &ovf);         /* x Y^2, near 1 */
+        /* Y (3 - t) / 2 = (2 * Y * 1.5 - Y * t) / 2 */
+        a[0] = Y; b[0] = (int32_t)(3 << 29);
+        a[1] = Y; b[1] = (int32_t)(3 << 29);
+        a[2] = Y; b[2] = dh_neg_sat(t);
+        Y = dh_dot_exact(a, b, 3u, 0, 0, 31u, &ovf);
+    }
+    /* u = w * Y / 2^(15 + s2/2) */
+    for (i = 0; i < 3u; i++) {
+        int32_t a[1], b[1];
+        a[0] = w[i]; b[0] = Y;
+        u[i] = dh_dot_exact(a, b, 1u, 0, 0, (unsigned)(15 + (s2 >> 1)), &ovf);
+    }
+    /* one Newton step on the vector: f = (3 - |u|^2) / 2, u <- u f */
+    F = dh_dot_exact(u, u, 3u, 1, (int64_t)3 << 60, 31u, &ovf);
+    for (i = 0; i < 3u; i++) {
+        int32_t a[1], b[1];
+        a[0] = u[i]; b[0] = F;
+        u[i] = dh_dot_exact(a, b, 1u, 0, 0, 30u, &ovf);
+    }
+    (void)ovf;                                   /* cannot saturate for these ranges */
+    return 1;
+}
+
+dh_status dh_frame_rot_axis_q(dh_frame_q *F, dh_q30 kx, dh_q30 ky, dh_q30 kz, dh_q16 deg)
+{
+    int32_t k[3], kk[3][3], s, c, ns;
+    uint32_t ovf = 0u;
+    unsigned i, j;
+    DH_ASSERT(F != NULL);
+    if (!dh_unit_axis(kx, ky, kz, k)) return DH_ERR_ZERO_AXIS;
+    dh_sincos_q(deg, &s, &c);
+    ns = dh_neg_sat(c);
+    /* k_i k_j rounded to Q2.30 (the only extra rounding, <= 0.5 LSB * vers) */
+    for (i = 0; i < 3u; i++)
+        for (j = i; j < 3u; j++) {
+            kk[i][j] = dh_fin30(dh_port_smlal(DH_HALF30, k[i], k[j]), &ovf);
+            kk[j][i] = kk[i][j];
+        }
+    /* eq. 1.70: R = k k^T vers + c I + s [k]x, vers = 1 - c;
+     * entry = (kk * 2^30 - kk * c [+ c * 2^30] [+- k_m * s]) / 2^30, one rounding.
+     * |sum| <= 2^60 + 2^60 + 2^60: no overflow. */
+    for (j = 0; j < 3u; j++) {          /* column */
+        for (i = 0; i < 3u; i++) {      /* row */
+            int64_t acc = dh_port_smlal(DH_HALF30, kk[i][j], DH_ONE30);
+            acc = dh_port_smlal(acc, kk[i][j], ns);
+            if (i == j) {
+                acc = dh_port_smlal(acc, c, DH_ONE30);
+            } else {
+                /* s [k]x: (i,j) = (1,0) +kz, (0,1) -kz, (0,2) +ky, (2,0) -ky, (2,1) +kx, (1,2) -kx */
+                unsigned m = 3u - i - j;
+                int positive = (i == j + 1u) || (i == 0u && j == 2u);
+                acc = dh_port_smlal(acc, positive ? k[m] : dh_neg_sat(k[m]), s);
+            }
+            F->r[j][i] = dh_fin30(acc, &ovf);
+        }
+        F->p[j] = 0;
+    }
+    (void)ovf;                           /* cannot saturate: |entries| <= 1 + 2 LSB */
+    return DH_OK;
+}
+
+/* ---- composition ---------------------------------------------------------- */
+
+dh_status dh_frame_mul_q(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B)
+{
+    dh_frame_q t;
+    uint32_t ovf = 0u;
+    unsigned i, j;
+    DH_ASSERT(out != NULL && A != NULL && B != NULL);
+    if (dh_rot_unit_range(A)) {
+        for (j = 0; j < 3u; j++) {
+            for (i = 0; i < 3u; i++) {
+                int64_t acc = dh_port_smlal(DH_HALF30, A->r[0][i], B->r[j][0]);
+                acc = dh_port_smlal(acc, A->r[1][i], B->r[j][1]);
+                acc = dh_port_smlal(acc, A->r[2][i], B->r[j][2]);
+                t.r[j][i] = dh_fin30(acc, &ovf);
+            }
+        }
+        for (i = 0; i < 3u; i++) {
+            int64_t acc = dh_port_smlal(DH_HALF30, A->p[i], DH_ONE30);
+            acc = dh_port_smlal(acc, A->r[0][i], B->p[0]);
+            acc = dh_port_smlal(acc, A->r[1][i], B->p[1]);
+            acc = dh_port_smlal(acc, A->r[2][i], B->p[2]);
+            t.p[i] = dh_fin30(acc, &ovf);
+        }
+    } else {
+        for (i = 0; i < 3u; i++) {
+            int32_t a[4], b[4];
+            a[0] = A->r[0][i]; a[1] = A->r[1][i]; a[2] = A->r[2][i]; a[3] = A->p[i];
+            for (j = 0; j < 3u; j++) {
+                b[0] = B->r[j][0]; b[1] = B->r[j][1]; b[2] = B->r[j][2];
+                t.r[j][i] = dh_dot_exact(a, b, 3u, 0, 0, 30u, &ovf);
+            }
+            b[0] = B->p[0]; b[1] = B->p[1]; b[2] = B->p[2]; b[3] = DH_ONE30;
+            t.p[i] = dh_dot_exact(a, b, 4u, 0, 0, 30u, &ovf);
+        }
+    }
+    *out = t;
+    return ovf ? DH_ERR_OVERFLOW : DH_OK;
+}
+
+dh_status dh_frame_inv_q(dh_frame_q *out, const dh_frame_q *F)
+{
+    dh_frame_q t;
+    uint32_t ovf = 0u;
+    unsigned i, j;
+    DH_ASSERT(out != NULL && F != NULL);
+    for (i = 0; i < 3u; i++)
+        for (j = 0; j < 3u; j++) t.r[i][j] = F->r[j][i];
+    if (dh_rot_unit_range(F)) {
+        /* p' = -R^T p: row i of R^T is column i of R; -r is safe, |r| <= 2^30 */
+        for (i = 0; i < 3u; i++) {
+            int64_t acc = dh_port_smlal(DH_HALF30, -F->r[i][0], F->p[0]);
+            acc = dh_port_smlal(acc, -F->r[i][1], F->p[1]);
+            acc = dh_port_smlal(acc, -F->r[i][2], F->p[2]);
+            t.p[i] = dh_fin30(acc, &ovf);
+        }
+    } else {
+        for (i = 0; i < 3u; i++)
+            t.p[i] = dh_dot_exact(F->r[i], F->p, 3u, 1, 0, 30u, &ovf);
+    }
+    *out = t;
+    return ovf ? DH_ERR_OVERFLOW : DH_OK;
+}
+
+/* v = R u (+ p when with_p): shared by the point and direction transforms. */
+static dh_status dh_frame_apply(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_q *v, int with_p)
+{
+    int32_t in[3], o[3];
+    uint32_t ovf = 0u;
+    unsigned i;
+    DH_ASSERT(F != NULL && u != NULL && v != NULL);
+    in[0] = u->x; in[1] = u->y; in[2] = u->z;
+    if (dh_rot_unit_range(F)) {
+        for (i = 0; i < 3u; i++) {
+            int64_t acc = dh_port_smlal(DH_HALF30, with_p ? F->p[i] : 0, DH_ONE30);
+            acc = dh_port_smlal(acc, F->r[0][i], in[0]);
+            acc = dh_port_smlal(acc, F->r[1][i], in[1]);
+            acc = dh_port_smlal(acc, F->r[2][i], in[2]);
+            o[i] = dh_fin30(acc, &ovf);
+        }
+    } else {
+        for (i = 0; i < 3u; i++) {
+            int32_t a[4], b[4];
+            a[0] = F->r[0][i]; a[1] = F->r[1][i]; a[2] = F->r[2][i]; a[3] = with_p ? F->p[i] : 0;
+            b[0] = in[0]; b[1] = in[1]; b[2] = in[2]; b[3] = DH_ONE30;
+            o[i] = dh_dot_exact(a, b, 4u, 0, 0, 30u, &ovf);
+        }
+    }
+    v->x = o[0]; v->y = o[1]; v->z = o[2];
+    return ovf ? DH_ERR_OVERFLOW : DH_OK;
+}
+
+dh_status dh_frame_apply_point_q(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_q *v)
+{
+    return dh_frame_apply(F, u, v, 1);
+}
+
+dh_status dh_frame_apply_dir_q(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_q *v)
+{
+    return dh_frame_apply(F, u, v, 0);
+}
+
+/* ---- orthonormality ------------------------------------------------------- */
+
+int32_t dh_frame_ortho_error_q(const dh_frame_q *F)
+{
+    uint32_t ovf = 0u, worst = 0u;
+    unsigned i, j;
+    DH_ASSERT(F != NULL);
+    for (i = 0; i < 3u; i++)
+        for (j = i; j < 3u; j++) {
+            /* (R^T R)_ij - delta_ij = col_i . col_j - delta_ij, in Q2.30 */
+            int32_t e = dh_dot_exact(F->r[i], F->r[j], 3u, 0,
+                                     i == j ? -((int64_t)1 << 60) : 0, 30u, &ovf);
+            uint32_t m = dh_abs_u32(e);
+            if (m > worst) worst = m;
+        }
+    return worst > (uint32_t)INT32_MAX ? INT32_MAX : (int32_t)worst;
+}
+
+dh_status dh_frame_orthonormalize_chk_q(dh_frame_q *F)
+{
+    int32_t M[3][3], nr[3][3];
+    uint32_t ovf = 0u, bad = 0u;
+    unsigned i, j;
+    DH_ASSERT(F != NULL);
+    /* |entries| <= 1.25 keeps every sum below far from 2^63 and lets the
+     * 1/8 test below decide convergence. */
+    for (i = 0; i < 3u; i++)
+        for (j = 0; j < 3u; j++)
+            if (((uint32_t)F->r[i][j] + 0x50000000u) > 0xA0000000u) return DH_ERR_NOT_RIGID;
+    /* M = (3 I - R^T R) / 2, symmetric; one rounding per entry */
+    for (i = 0; i < 3u; i++)
+        for (j = i; j < 3u; j++) {
+            int64_t acc = ((i == j) ? ((int64_t)3 << 60) : 0) + ((int64_t)1 << 30), e;
+            acc = dh_port_smlal(acc, -F->r[i][0], F->r[j][0]);
+            acc = dh_port_smlal(acc, -F->r[i][1], F->r[j][1]);
+            acc = dh_port_smlal(acc, -F->r[i][2], F->r[j][2]);
+            /* acc = 3 d 2^60 - E 2^60 + 2^30; M = acc / 2^31, error = 2 M - 2 d */
+            M[i][j] = (int32_t)(acc >> 31);
+            M[j][i] = M[i][j];
+            e = ((acc - ((int64_t)1 << 30)) >> 30) - ((i == j) ? 2 * (int64_t)DH_ONE30 : 0);
+            if (e > ((int64_t)1 << 27) || e < -((int64_t)1 << 27)) bad = 1u;
+        }
+    if (bad) return DH_ERR_NOT_RIGID;   /* |R^T R - I| > 1/8 */
+    /* R <- R M: column j of the result is R * (column j of M) */
+    for (j = 0; j < 3u; j++)
+        for (i = 0; i < 3u; i++) {
+            int64_t acc = dh_port_smlal(DH_HALF30, F->r[0][i], M[j][0]);
+            acc = dh_port_smlal(acc, F->r[1][i], M[j][1]);
+            acc = dh_port_smlal(acc, F->r[2][i], M[j][2]);
+            nr[j][i] = dh_fin30(acc, &ovf);
+        }
+    for (j = 0; j < 3u; j++)
+        for (i = 0; i < 3u; i++) F->r[j][i] = nr[j][i];
+    return ovf ? DH_ERR_OVERFLOW : DH_OK;
+}
+
+void dh_frame_orthonormalize_q(dh_frame_q *F)
+{
+    (void)dh_frame_orthonormalize_chk_q(F);
+}
