@@ -1,0 +1,94 @@
+# dh_target.cmake - how target (Cortex-M, QEMU) test executables are linked.
+# Included by test/CMakeLists.txt when cross-compiling, after the `dht`
+# library target exists and before the test executables are created.
+#
+# Provides
+#   dh_target_link(<target>)  adds port/startup_cm.c, the board's linker
+#                             script port/${DH_TARGET_BOARD}.ld, newlib with
+#                             semihosting syscalls (rdimon), libm and a map
+#                             file; the executable then runs under
+#                             CMAKE_CROSSCOMPILING_EMULATOR (set by the
+#                             toolchain file).
+#   DH_TARGET_ITER_DIV        divisor for DHT_ITER(n) loop counts on this
+#                             core (see the table below; measured run
+#                             times are in docs/porting.md).
+# Cache options (non-DH_ names, the DH_ namespace is closed):
+#   DHT_ITER_DIV_OVERRIDE     use this DHT_ITER divisor instead (e.g. 1 for
+#                             a full-length soak run under QEMU)
+#   DHT_SEED                  seed for the target runner (the host reads
+#                             the DHT_SEED environment variable; a target
+#                             has no environment, so rebuild with
+#                             -DDHT_SEED=0x... to replay a failing seed)
+
+if(NOT DEFINED DH_TARGET_BOARD OR NOT DEFINED DH_TARGET_CPU)
+  message(FATAL_ERROR "dh_target.cmake: DH_TARGET_BOARD / DH_TARGET_CPU unset; "
+                      "configure with -DCMAKE_TOOLCHAIN_FILE=port/<core>.cmake")
+endif()
+
+set(_dh_port_dir ${CMAKE_CURRENT_LIST_DIR})
+set(_dh_ld ${_dh_port_dir}/${DH_TARGET_BOARD}.ld)
+if(NOT EXISTS ${_dh_ld})
+  message(FATAL_ERROR "dh_target.cmake: no linker script ${_dh_ld} for board ${DH_TARGET_BOARD}")
+endif()
+
+# DHT_ITER divisor per core. QEMU executes instructions, not cycles: the
+# cost is the instruction count, which soft float (M0/M3) multiplies by
+# roughly 10-30 over the FPU cores, and double-precision references cost
+# soft-float calls on every core but the M7.
+if(CMAKE_C_FLAGS MATCHES "cortex-m0")
+  set(DH_TARGET_ITER_DIV 20)
+elseif(CMAKE_C_FLAGS MATCHES "cortex-m3")
+  set(DH_TARGET_ITER_DIV 10)
+elseif(CMAKE_C_FLAGS MATCHES "cortex-m4")
+  set(DH_TARGET_ITER_DIV 4)
+elseif(CMAKE_C_FLAGS MATCHES "cortex-m7")
+  set(DH_TARGET_ITER_DIV 4)
+else()
+  set(DH_TARGET_ITER_DIV 10)
+endif()
+set(DHT_ITER_DIV_OVERRIDE "" CACHE STRING "Override the target DHT_ITER divisor (empty: per-core default)")
+if(DHT_ITER_DIV_OVERRIDE)
+  set(DH_TARGET_ITER_DIV ${DHT_ITER_DIV_OVERRIDE})
+endif()
+
+set(DHT_SEED "" CACHE STRING "Seed of the target test runner (empty: the default seed of test/dht_common.c)")
+if(DHT_SEED AND TARGET dht)
+  target_compile_definitions(dht PRIVATE DHT_DEFAULT_SEED=${DHT_SEED})
+endif()
+
+function(dh_target_link tgt)
+  target_sources(${tgt} PRIVATE ${_dh_port_dir}/startup_cm.c)
+  target_link_options(${tgt} PRIVATE
+    -nostartfiles --specs=rdimon.specs
+    -L${_dh_port_dir} -T${_dh_ld}
+    -Wl,--gc-sections
+    -Wl,-Map=$<TARGET_FILE:${tgt}>.map)
+  target_link_libraries(${tgt} PRIVATE m)
+  set_property(TARGET ${tgt} APPEND PROPERTY LINK_DEPENDS
+    ${_dh_ld} ${_dh_port_dir}/cm_sections.ld)
+endfunction()
+
+# Self-tests of this infrastructure, run by ctest on every target before the
+# library's suites mean anything: a failing case must give a non-zero QEMU
+# exit status (the number of failed cases) and a crash must end the run
+# with status 3 and a message instead of hanging.
+if(TARGET dht)
+  string(REPLACE ";" "|" _dh_emu "${CMAKE_CROSSCOMPILING_EMULATOR}")
+  foreach(_st IN ITEMS runner fault)
+    add_executable(port_selftest_${_st} ${_dh_port_dir}/selftest/selftest_${_st}.c)
+    target_link_libraries(port_selftest_${_st} PRIVATE dht)
+    set_target_properties(port_selftest_${_st} PROPERTIES C_STANDARD 99 C_EXTENSIONS OFF)
+    target_compile_options(port_selftest_${_st} PRIVATE -Wall -Wextra -Werror)
+    dh_target_link(port_selftest_${_st})
+  endforeach()
+  add_test(NAME port_selftest_runner
+    COMMAND ${CMAKE_COMMAND} "-DEMU=${_dh_emu}" -DEXE=$<TARGET_FILE:port_selftest_runner>
+            -DSTATUS=2
+            "-DEXPECT=OK . startup_copies_data_and_zeroes_bss~~OK . float_and_double_arithmetic~~diff 0.25 > tol 0.001~~-5000000000 != 2~~OK . runs_after_failures~~FAILED  . 2 test"
+            -P ${_dh_port_dir}/selftest/expect.cmake)
+  add_test(NAME port_selftest_fault
+    COMMAND ${CMAKE_COMMAND} "-DEMU=${_dh_emu}" -DEXE=$<TARGET_FILE:port_selftest_fault>
+            -DSTATUS=3
+            "-DEXPECT=about to trap~~\\*\\*\\* dhmath target: (HardFault|UsageFault) at pc 0x"
+            -P ${_dh_port_dir}/selftest/expect.cmake)
+endif()
