@@ -1,0 +1,410 @@
+/*
+ * dh_mat4.c - float 4x4 homogeneous transforms: constructors, accessors,
+ * products and application to points, directions and planes (seed 000,
+ * sections 3-9, 12, 15, 16).
+ *
+ * Storage is column-major (m[col][row]); see dh_common.h. Products are
+ * written column by column so that each output column is a linear
+ * combination of the columns of the left operand, a shape compilers turn
+ * into 4-wide vector code where the target has it.
+ */
+#include <float.h>
+#include <math.h>
+
+#include "dhmath/dh_mat4.h"
+#include "dhmath/dh_trig.h"
+
+/* finite (not NaN, not +-Inf): a NaN fails the comparison */
+static int dh_finite(float x) { return fabsf(x) <= FLT_MAX; }
+
+/* +0 for either zero, x otherwise (exact) */
+static float dh_nz(float x) { return (x == 0.0f) ? 0.0f : x; }
+
+static void dh_set_identity(dh_mat4_f32 *T)
+{
+    int c, r;
+    for (c = 0; c < 4; c++) {
+        for (r = 0; r < 4; r++) T->m[c][r] = (c == r) ? 1.0f : 0.0f;
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+/* constructors                                                           */
+/* ---------------------------------------------------------------------- */
+
+void dh_mat4_identity_f32(dh_mat4_f32 *T)
+{
+    DH_ASSERT(T != NULL);
+    dh_set_identity(T);
+}
+
+void dh_mat4_trans_f32(dh_mat4_f32 *T, float x, float y, float z)
+{
+    DH_ASSERT(T != NULL);
+    dh_set_identity(T);
+    T->m[3][0] = x;
+    T->m[3][1] = y;
+    T->m[3][2] = z;
+}
+
+/*
+ * sin and cos with -0 mapped to +0, so that 0 - s below never produces -0
+ * and Rot(.., 0) is bitwise the identity.
+ */
+static dh_status dh_sc(float deg, float *s, float *c)
+{
+    float sv, cv;
+    dh_status st = dh_sincos_f32(deg, &sv, &cv);
+    if (st != DH_OK) return DH_ERR_NAN;
+    *s = dh_nz(sv);
+    *c = dh_nz(cv);
+    return DH_OK;
+}
+
+dh_status dh_mat4_rotx_f32(dh_mat4_f32 *T, float deg)
+{
+    float s, c;
+    DH_ASSERT(T != NULL);
+    if (dh_sc(deg, &s, &c) != DH_OK) return DH_ERR_NAN;
+    dh_set_identity(T);
+    T->m[1][1] = c;          /* row 1, col 1 */
+    T->m[1][2] = s;          /* row 2, col 1 */
+    T->m[2][1] = 0.0f - s;   /* row 1, col 2 */
+    T->m[2][2] = c;
+    return DH_OK;
+}
+
+dh_status dh_mat4_roty_f32(dh_mat4_f32 *T, float deg)
+{
+    float s, c;
+    DH_ASSERT(T != NULL);
+    if (dh_sc(deg, &s, &c) != DH_OK) return DH_ERR_NAN;
+    dh_set_identity(T);
+    T->m[0][0] = c;
+    T->m[0][2] = 0.0f - s;   /* row 2, col 0 */
+    T->m[2][0] = s;          /* row 0, col 2 */
+    T->m[2][2] = c;
+    return DH_OK;
+}
+
+dh_status dh_mat4_rotz_f32(dh_mat4_f32 *T, float deg)
+{
+    float s, c;
+    DH_ASSERT(T != NULL);
+    if (dh_sc(deg, &s, &c) != DH_OK) return DH_ERR_NAN;
+    dh_set_identity(T);
+    T->m[0][0] = c;
+    T->m[0][1] = s;          /* row 1, col 0 */
+    T->m[1][0] = 0.0f - s;   /* row 0, col 1 */
+    T->m[1][1] = c;
+    return DH_OK;
+}
+
+/*
+ * Diagonal entry k_i^2 vers + cos of eq. 1.70 for a unit axis. When k_i^2
+ * is large the equivalent form 1 - (k_j^2 + k_l^2) vers is used: it is more
+ * accurate there and exactly 1 on a coordinate axis.
+ */
+static float dh_rot_diag(float ki2, float others2, float v, float c)
+{
+    return (ki2 >= 0.5f) ? 1.0f - others2 * v : ki2 * v + c;
+}
+
+dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, float deg)
+{
+    float m, x, y, z, len, s, c, v, x2, y2, z2, xyv, xzv, yzv, xs, ys, zs;
+    DH_ASSERT(T != NULL);
+    if (!(dh_finite(kx) && dh_finite(ky) && dh_finite(kz) && dh_finite(deg))) return DH_ERR_NAN;
+    /* scale by the largest component first: overflow-free normalisation */
+    m = fabsf(kx);
+    if (fabsf(ky) > m) m = fabsf(ky);
+    if (fabsf(kz) > m) m = fabsf(kz);
+    if (m < FLT_MIN) return DH_ERR_ZERO_AXIS;
+    x = kx / m;
+    y = ky / m;
+    z = kz / m;
+    len = sqrtf(x * x + y * y + z * z); /* in [1, sqrt 3] */
+    x /= len;
+    y /= len;
+    z /= len;
+    if (dh_sc(deg, &s, &c) != DH_OK) return DH_ERR_NAN;
+    v = 1.0f - c; /* vers theta */
+    x2 = x * x;
+    y2 = y * y;
+    z2 = z * z;
+    xyv = x * y * v;
+    xzv = x * z * v;
+    yzv = y * z * v;
+    xs = x * s;
+    ys = y * s;
+    zs = z * s;
+    /* eq. 1.70; column 0 = n, column 1 = o, column 2 = a. The "+ 0.0f"
+     * turns a -0 (from a negative axis component times 0) into +0 and
+     * changes nothing else. */
+    T->m[0][0] = dh_rot_diag(x2, y2 + z2, v, c);
+    T->m[0][1] = (xyv + zs) + 0.0f;
+    T->m[0][2] = (xzv - ys) + 0.0f;
+    T->m[0][3] = 0.0f;
+    T->m[1][0] = (xyv - zs) + 0.0f;
+    T->m[1][1] = dh_rot_diag(y2, x2 + z2, v, c);
+    T->m[1][2] = (yzv + xs) + 0.0f;
+    T->m[1][3] = 0.0f;
+    T->m[2][0] = (xzv + ys) + 0.0f;
+    T->m[2][1] = (yzv - xs) + 0.0f;
+    T->m[2][2] = dh_rot_diag(z2, x2 + y2, v, c);
+    T->m[2][3] = 0.0f;
+    T->m[3][0] = 0.0f;
+    T->m[3][1] = 0.0f;
+    T->m[3][2] = 0.0f;
+    T->m[3][3] = 1.0f;
+    return DH_OK;
+}
+
+void dh_mat4_scale_f32(dh_mat4_f32 *T, float sx, float sy, float sz)
+{
+    DH_ASSERT(T != NULL);
+    dh_set_identity(T);
+    T->m[0][0] = sx;
+    T->m[1][1] = sy;
+    T->m[2][2] = sz;
+}
+
+dh_status dh_mat4_persp_f32(dh_mat4_f32 *T, int axis, float f)
+{
+    float r;
+    DH_ASSERT(T != NULL);
+    if (axis < 0 || axis > 2) return DH_ERR_ARG;
+    if (!dh_finite(f)) return DH_ERR_NAN;
+    if (f == 0.0f) return DH_ERR_DOMAIN;
+    r = -1.0f / f;
+    if (!dh_finite(r)) return DH_ERR_DOMAIN;
+    dh_set_identity(T);
+    T->m[axis][3] = r; /* bottom row, column of the axis (eq. 1.127) */
+    return DH_OK;
+}
+
+void dh_mat4_from_noap_f32(dh_mat4_f32 *T, const dh_vec3_f32 *n, const dh_vec3_f32 *o,
+                           const dh_vec3_f32 *a, const dh_vec3_f32 *p)
+{
+    DH_ASSERT(T != NULL && n != NULL && o != NULL && a != NULL && p != NULL);
+    {
+        /* read everything first: the vectors may live inside T */
+        const dh_vec3_f32 nn = *n, oo = *o, aa = *a, pp = *p;
+        T->m[0][0] = nn.x; T->m[0][1] = nn.y; T->m[0][2] = nn.z; T->m[0][3] = 0.0f;
+        T->m[1][0] = oo.x; T->m[1][1] = oo.y; T->m[1][2] = oo.z; T->m[1][3] = 0.0f;
+        T->m[2][0] = aa.x; T->m[2][1] = aa.y; T->m[2][2] = aa.z; T->m[2][3] = 0.0f;
+        T->m[3][0] = pp.x; T->m[3][1] = pp.y; T->m[3][2] = pp.z; T->m[3][3] = 1.0f;
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+/* accessors                                                              */
+/* ---------------------------------------------------------------------- */
+
+static dh_vec3_f32 dh_col3(const dh_mat4_f32 *T, int c)
+{
+    dh_vec3_f32 v;
+    DH_ASSERT(T != NULL);
+    v.x = T->m[c][0];
+    v.y = T->m[c][1];
+    v.z = T->m[c][2];
+    return v;
+}
+
+dh_vec3_f32 dh_mat4_n_f32(const dh_mat4_f32 *T) { return dh_col3(T, 0); }
+dh_vec3_f32 dh_mat4_o_f32(const dh_mat4_f32 *T) { return dh_col3(T, 1); }
+dh_vec3_f32 dh_mat4_a_f32(const dh_mat4_f32 *T) { return dh_col3(T, 2); }
+dh_vec3_f32 dh_mat4_p_f32(const dh_mat4_f32 *T) { return dh_col3(T, 3); }
+
+void dh_mat4_get_rot_f32(const dh_mat4_f32 *T, dh_mat3_f32 *R)
+{
+    int c, r;
+    DH_ASSERT(T != NULL && R != NULL);
+    for (c = 0; c < 3; c++) {
+        for (r = 0; r < 3; r++) R->m[c][r] = T->m[c][r];
+    }
+}
+
+void dh_mat4_set_rot_f32(dh_mat4_f32 *T, const dh_mat3_f32 *R)
+{
+    int c, r;
+    DH_ASSERT(T != NULL && R != NULL);
+    for (c = 0; c < 3; c++) {
+        for (r = 0; r < 3; r++) T->m[c][r] = R->m[c][r];
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+/* composition                                                            */
+/* ---------------------------------------------------------------------- */
+
+void dh_mat4_mul_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
+{
+    float a[4][4];
+    int c, r;
+    DH_ASSERT(out != NULL && A != NULL && B != NULL);
+    /* A is copied (it is needed for every output column); column c of B is
+     * read completely before column c of out is written, so out may alias
+     * A, B or both. */
+    for (c = 0; c < 4; c++) {
+        for (r = 0; r < 4; r++) a[c][r] = A->m[c][r];
+    }
+    for (c = 0; c < 4; c++) {
+        const float b0 = B->m[c][0], b1 = B->m[c][1], b2 = B->m[c][2], b3 = B->m[c][3];
+        for (r = 0; r < 4; r++) {
+            out->m[c][r] = a[0][r] * b0 + a[1][r] * b1 + a[2][r] * b2 + a[3][r] * b3;
+        }
+    }
+}
+
+void dh_mat4_mul_affine_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
+{
+    float a[4][3];
+    int c, r;
+    DH_ASSERT(out != NULL && A != NULL && B != NULL);
+    for (c = 0; c < 4; c++) {
+        for (r = 0; r < 3; r++) a[c][r] = A->m[c][r];
+    }
+    for (c = 0; c < 3; c++) {
+        const float b0 = B->m[c][0], b1 = B->m[c][1], b2 = B->m[c][2];
+        for (r = 0; r < 3; r++) out->m[c][r] = a[0][r] * b0 + a[1][r] * b1 + a[2][r] * b2;
+        out->m[c][3] = 0.0f;
+    }
+    {
+        const float p0 = B->m[3][0], p1 = B->m[3][1], p2 = B->m[3][2];
+        for (r = 0; r < 3; r++) out->m[3][r] = a[0][r] * p0 + a[1][r] * p1 + a[2][r] * p2 + a[3][r];
+        out->m[3][3] = 1.0f;
+    }
+}
+
+void dh_mat4_premul_f32(dh_mat4_f32 *T, const dh_mat4_f32 *X)
+{
+    dh_mat4_mul_f32(T, X, T);
+}
+
+void dh_mat4_postmul_f32(dh_mat4_f32 *T, const dh_mat4_f32 *X)
+{
+    dh_mat4_mul_f32(T, T, X);
+}
+
+/* ---------------------------------------------------------------------- */
+/* application                                                            */
+/* ---------------------------------------------------------------------- */
+
+void dh_mat4_apply_point_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
+{
+    float x, y, z;
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
+    x = u->x;
+    y = u->y;
+    z = u->z;
+    v->x = T->m[0][0] * x + T->m[1][0] * y + T->m[2][0] * z + T->m[3][0];
+    v->y = T->m[0][1] * x + T->m[1][1] * y + T->m[2][1] * z + T->m[3][1];
+    v->z = T->m[0][2] * x + T->m[1][2] * y + T->m[2][2] * z + T->m[3][2];
+}
+
+void dh_mat4_apply_dir_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
+{
+    float x, y, z;
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
+    x = u->x;
+    y = u->y;
+    z = u->z;
+    v->x = T->m[0][0] * x + T->m[1][0] * y + T->m[2][0] * z;
+    v->y = T->m[0][1] * x + T->m[1][1] * y + T->m[2][1] * z;
+    v->z = T->m[0][2] * x + T->m[1][2] * y + T->m[2][2] * z;
+}
+
+void dh_mat4_apply_vec4_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec4_f32 *v)
+{
+    float x, y, z, w;
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
+    x = u->x;
+    y = u->y;
+    z = u->z;
+    w = u->w;
+    v->x = T->m[0][0] * x + T->m[1][0] * y + T->m[2][0] * z + T->m[3][0] * w;
+    v->y = T->m[0][1] * x + T->m[1][1] * y + T->m[2][1] * z + T->m[3][1] * w;
+    v->z = T->m[0][2] * x + T->m[1][2] * y + T->m[2][2] * z + T->m[3][2] * w;
+    v->w = T->m[0][3] * x + T->m[1][3] * y + T->m[2][3] * z + T->m[3][3] * w;
+}
+
+int dh_mat4_isfinite_f32(const dh_mat4_f32 *T)
+{
+    int c, r, ok = 1;
+    DH_ASSERT(T != NULL);
+    for (c = 0; c < 4; c++) {
+        for (r = 0; r < 4; r++) ok &= dh_finite(T->m[c][r]);
+    }
+    return ok;
+}
+
+dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec3_f32 *v)
+{
+    dh_vec4_f32 h;
+    float x, y, z;
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
+    dh_mat4_apply_vec4_f32(T, u, &h);
+    if (!(dh_finite(h.x) && dh_finite(h.y) && dh_finite(h.z) && dh_finite(h.w))) {
+        const int in_ok = dh_mat4_isfinite_f32(T) && dh_finite(u->x) && dh_finite(u->y) &&
+                          dh_finite(u->z) && dh_finite(u->w);
+        return in_ok ? DH_ERR_OVERFLOW : DH_ERR_NAN;
+    }
+    if (h.w == 0.0f) return DH_ERR_DOMAIN;
+    x = h.x / h.w;
+    y = h.y / h.w;
+    z = h.z / h.w;
+    if (!(dh_finite(x) && dh_finite(y) && dh_finite(z))) return DH_ERR_OVERFLOW;
+    v->x = dh_nz(x);
+    v->y = dh_nz(y);
+    v->z = dh_nz(z);
+    return DH_OK;
+}
+
+void dh_plane_mul_f32(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv, dh_plane_f32 *Q)
+{
+    float a, b, c, d;
+    DH_ASSERT(P != NULL && Tinv != NULL && Q != NULL);
+    a = P->a;
+    b = P->b;
+    c = P->c;
+    d = P->d;
+    /* Q_j = P . (column j of Tinv); columns are contiguous */
+    Q->a = a * Tinv->m[0][0] + b * Tinv->m[0][1] + c * Tinv->m[0][2] + d * Tinv->m[0][3];
+    Q->b = a * Tinv->m[1][0] + b * Tinv->m[1][1] + c * Tinv->m[1][2] + d * Tinv->m[1][3];
+    Q->c = a * Tinv->m[2][0] + b * Tinv->m[2][1] + c * Tinv->m[2][2] + d * Tinv->m[2][3];
+    Q->d = a * Tinv->m[3][0] + b * Tinv->m[3][1] + c * Tinv->m[3][2] + d * Tinv->m[3][3];
+}
+
+dh_status dh_mat4_apply_plane_f32(const dh_mat4_f32 *T, const dh_plane_f32 *P, dh_plane_f32 *Q)
+{
+    dh_mat4_f32 inv;
+    dh_status st;
+    DH_ASSERT(T != NULL && P != NULL && Q != NULL);
+    if (!(dh_finite(P->a) && dh_finite(P->b) && dh_finite(P->c) && dh_finite(P->d))) return DH_ERR_NAN;
+    st = dh_mat4_inv_auto_f32(&inv, T);
+    if (st != DH_OK) return st;
+    dh_plane_mul_f32(P, &inv, Q);
+    return DH_OK;
+}
+
+void dh_mat4_apply_points_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, size_t count)
+{
+    size_t i;
+    float r00, r10, r20, r01, r11, r21, r02, r12, r22, p0, p1, p2;
+    DH_ASSERT(T != NULL);
+    if (count == 0) return;
+    DH_ASSERT(u != NULL && v != NULL);
+    /* hoist T: element i of v is written after element i of u is read, so
+     * in-place use (u == v) is safe */
+    r00 = T->m[0][0]; r10 = T->m[0][1]; r20 = T->m[0][2];
+    r01 = T->m[1][0]; r11 = T->m[1][1]; r21 = T->m[1][2];
+    r02 = T->m[2][0]; r12 = T->m[2][1]; r22 = T->m[2][2];
+    p0 = T->m[3][0]; p1 = T->m[3][1]; p2 = T->m[3][2];
+    for (i = 0; i < count; i++) {
+        const float x = u[i].x, y = u[i].y, z = u[i].z;
+        v[i].x = r00 * x + r01 * y + r02 * z + p0;
+        v[i].y = r10 * x + r11 * y + r12 * z + p1;
+        v[i].z = r20 * x + r21 * y + r22 * z + p2;
+    }
+}

@@ -1,0 +1,72 @@
+/*
+ * support_ref.h - double-precision reference helpers for the tests.
+ *
+ * Nothing here calls dhmath: the matrices are built from the textbook
+ * definitions with libm sin/cos of radians in double, products are plain
+ * triple loops in double and the inverse is Gauss-Jordan with partial
+ * pivoting in double. Tests compare the float code under test against these.
+ *
+ * Matrices are column-major like dh_mat4_f32: m[col][row]; DHR_M4(T, r, c)
+ * is element (row r, column c).
+ */
+#ifndef SUPPORT_REF_H
+#define SUPPORT_REF_H
+
+#include "dhmath/dh_common.h"
+
+#define DHR_PI 3.14159265358979323846
+
+/** Double 4x4 matrix, column-major m[col][row]. */
+typedef struct { double m[4][4]; } dhr_mat4;
+
+#define DHR_M4(T, r, c) ((T)->m[(c)][(r)])
+
+double dhr_deg2rad(double deg);
+double dhr_rad2deg(double rad);
+
+void dhr_identity(dhr_mat4 *T);
+void dhr_trans(dhr_mat4 *T, double x, double y, double z);
+void dhr_rotx(dhr_mat4 *T, double deg);
+void dhr_roty(dhr_mat4 *T, double deg);
+void dhr_rotz(dhr_mat4 *T, double deg);
+/** Rotation about axis k (normalised here) by deg, built as C Rot(z) C^T with a
+ *  frame C whose z axis is k (seed eq. 1.65), not from eq. 1.70. Returns 0 if
+ *  |k| == 0, else 1. */
+int dhr_rot_axis(dhr_mat4 *T, double kx, double ky, double kz, double deg);
+
+/** out = A * B; out may alias A or B. */
+void dhr_mul(dhr_mat4 *out, const dhr_mat4 *A, const dhr_mat4 *B);
+/** v = T * u (4-vectors); v may alias u. */
+void dhr_apply4(const dhr_mat4 *T, const double u[4], double v[4]);
+/** Gauss-Jordan with partial pivoting. Returns 0 (out untouched) on an
+ *  exactly zero pivot, else 1. out may alias T. */
+int dhr_inv(dhr_mat4 *out, const dhr_mat4 *T);
+/** Determinant by Gaussian elimination with partial pivoting. */
+double dhr_det(const dhr_mat4 *T);
+/** Infinity norm (max row sum of |.|). */
+double dhr_norm_inf(const dhr_mat4 *T);
+/** ||T||inf * ||T^-1||inf; HUGE_VAL when dhr_inv fails. */
+double dhr_cond_inf(const dhr_mat4 *T);
+/** max |T_ij| */
+double dhr_max_abs(const dhr_mat4 *T);
+
+/** Conversions (to_f32 rounds to nearest). */
+void dhr_from_f32(dhr_mat4 *D, const dh_mat4_f32 *T);
+void dhr_to_f32(dh_mat4_f32 *T, const dhr_mat4 *D);
+/** max |T_ij - D_ij| over all 16 elements (HUGE_VAL if any is NaN). */
+double dhr_max_abs_diff(const dh_mat4_f32 *T, const dhr_mat4 *D);
+/** max |A_ij - B_ij| between two double matrices. */
+double dhr_max_abs_diff_d(const dhr_mat4 *A, const dhr_mat4 *B);
+
+/** Random unit 3-vector (uniform on the sphere) from dht_rand_uniform. */
+void dhr_rand_unit3(double k[3]);
+/** Random rigid transform: rotation about a random axis by an angle in
+ *  [-180, 180) deg, translation components uniform in [-tmax, tmax). */
+void dhr_rand_rigid(dhr_mat4 *T, double tmax);
+/** Random matrix with entries uniform in [-1, 1) (a general 4x4). */
+void dhr_rand_general(dhr_mat4 *T);
+
+/** Size of one float ulp at |x| (2^-149 for x == 0). */
+double dhr_ulp_f32(double x);
+
+#endif /* SUPPORT_REF_H */
