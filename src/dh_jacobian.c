@@ -137,13 +137,10 @@ static void rot_vec_of(float d[3][3], float w[3])
 {
     float ux, uy, uz, un, tr, theta;
 
-    /* seed 003: identity (exact diagonal 1, 1, 1) -> 0 */
-    if (d[0][0] == 1.0f && d[1][1] == 1.0f && d[2][2] == 1.0f) {
-        w[0] = 0.0f;
-        w[1] = 0.0f;
-        w[2] = 0.0f;
-        return;
-    }
+    /* The seed's identity case (diagonal 1, 1, 1 -> 0) is NOT tested on the
+     * diagonal alone: in float the diagonal rounds to exactly 1 for angles
+     * below ~3e-4 rad while the skew part still carries the rotation. The
+     * identity falls out of the general case below (u = 0 -> w = 0). */
     ux = d[2][1] - d[1][2];
     uy = d[0][2] - d[2][0];
     uz = d[1][0] - d[0][1];
