@@ -1,0 +1,48 @@
+/*
+ * dh_trig_tables.h - PRIVATE to the trig module (not installed).
+ *
+ * Whole-degree quarter-wave sine tables (generated into dh_trig_tables.c by
+ * tools/gen_trig_tables.py) and the exact integer reduction modulo 360 that
+ * both the float and the fixed-point paths use.
+ */
+#ifndef DHMATH_DH_TRIG_TABLES_H
+#define DHMATH_DH_TRIG_TABLES_H
+
+#include <stdint.h>
+
+/** Entries per table: sin(0..90 degrees). */
+#define DH_TRIG_TAB_LEN 91
+
+/** sin(n deg), n = 0..90, correctly rounded to binary32. 364 bytes. */
+extern const float dh_trig_sin_f32[DH_TRIG_TAB_LEN];
+/** sin(n deg), n = 0..90, correctly rounded to Q2.30. 364 bytes. */
+extern const int32_t dh_trig_sin_q30[DH_TRIG_TAB_LEN];
+
+/*
+ * v mod 360 for 0 <= v < 2^24, exactly, with 32-bit multiplies only (no
+ * divide: Cortex-M0 has none, and a library call would cost ~40 cycles).
+ *
+ * 4096 = 11*360 + 136, so v = h*4096 + l == h*136 + l (mod 360).
+ * Fold 1: v < 2^24 -> h < 4096, result < 4095*136 + 4096 = 561016.
+ * Fold 2: h <= 136 -> result < 136*136 + 4096 = 22592.
+ * Then q = (v * 11650) >> 22 satisfies floor(v/360) - 1 <= q <= floor(v/360)
+ * for v < 22592 (11650 / 2^22 is below 1/360 by 2.0e-7 relative... absolute
+ * deficit v * (1/360 - 11650/2^22) < 22592 * 2.02e-7 < 0.005 < 1), and
+ * v * 11650 < 2^29 cannot overflow. One conditional subtraction finishes.
+ * Every intermediate is unsigned and far from 2^32. The test suites check
+ * the reduction against fmod over the whole range it is used on.
+ */
+static inline uint32_t dh_trig_mod360(uint32_t v)
+{
+    uint32_t q;
+    v = (v >> 12) * 136u + (v & 4095u);
+    v = (v >> 12) * 136u + (v & 4095u);
+    q = (v * 11650u) >> 22;
+    v -= q * 360u;
+    if (v >= 360u) {
+        v -= 360u;
+    }
+    return v;
+}
+
+#endif /* DHMATH_DH_TRIG_TABLES_H */
