@@ -1,0 +1,253 @@
+/*
+ * dh_euler.c - Euler angles <-> rotation matrix for the 12 axis sequences,
+ * intrinsic (upper-case names) and extrinsic (lower-case names), with the
+ * scipy naming convention and an explicit gimbal-lock policy.
+ *
+ * Notation used in the derivations below: the intrinsic sequence applies
+ * R = Ri(a) Rj(b) Rk(c) with axis indices i, j, k (k == i for a proper Euler
+ * sequence; then l is the remaining axis). e_i is the unit vector of axis
+ * i, and s = +1 when (i, j, l) -- or (i, j, k) for Tait-Bryan -- is a cyclic
+ * permutation of (x, y, z), else -1, so that e_i x e_j = s e_third.
+ * For a unit vector u perpendicular to e_q: Rq(t) u = cos t u + sin t (e_q x u).
+ */
+#include <math.h>
+
+#include "dhmath/dh_rot.h"
+#include "dhmath/dh_trig.h"
+
+#define DH_EULER_RAD2DEG 57.295779513082320876798f
+
+/* axes of the 12 intrinsic sequences, in dh_euler_seq order (0 x, 1 y, 2 z) */
+static const unsigned char dh_euler_axes[12][3] = {
+    {0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0},
+    {0, 1, 0}, {0, 2, 0}, {1, 0, 1}, {1, 2, 1}, {2, 0, 2}, {2, 1, 2}
+};
+
+static const char dh_euler_names[DH_EULER_COUNT][4] = {
+    "XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX",
+    "XYX", "XZX", "YXY", "YZY", "ZXZ", "ZYZ",
+    "xyz", "xzy", "yxz", "yzx", "zxy", "zyx",
+    "xyx", "xzx", "yxy", "yzy", "zxz", "zyz"
+};
+
+dh_status dh_euler_parse(const char *str, dh_euler_seq *seq)
+{
+    int ax[3], n, idx, lower = 0;
+    DH_ASSERT(str != NULL && seq != NULL);
+    for (n = 0; n < 3; n++) {
+        char ch = str[n];
+        int is_lower;
+        if (ch >= 'X' && ch <= 'Z') {
+            ax[n] = ch - 'X';
+            is_lower = 0;
+        } else if (ch >= 'x' && ch <= 'z') {
+            ax[n] = ch - 'x';
+            is_lower = 1;
+        } else {
+            return DH_ERR_ARG; /* also catches a NUL before the 3rd letter */
+        }
+        if (n == 0) {
+            lower = is_lower;
+        } else if (is_lower != lower || ax[n] == ax[n - 1]) {
+            return DH_ERR_ARG;
+        }
+    }
+    if (str[3] != '\0') return DH_ERR_ARG;
+    for (idx = 0; idx < 12; idx++) {
+        if (dh_euler_axes[idx][0] == ax[0] && dh_euler_axes[idx][1] == ax[1] &&
+            dh_euler_axes[idx][2] == ax[2]) {
+            *seq = (dh_euler_seq)(idx + (lower ? 12 : 0));
+            return DH_OK;
+        }
+    }
+    return DH_ERR_ARG; /* not reached: every valid triple is in the table */
+}
+
+const char *dh_euler_name(dh_euler_seq seq)
+{
+    unsigned int u = (unsigned int)seq;
+    if (u >= (unsigned int)DH_EULER_COUNT) return "???";
+    return dh_euler_names[u];
+}
+
+/*
+ * M = M Rq(t) for the elementary rotation about axis q with sine s and
+ * cosine c: only columns q+1 and q+2 (cyclic) change,
+ *   col(q+1) <- c col(q+1) + s col(q+2),  col(q+2) <- c col(q+2) - s col(q+1).
+ */
+static void dh_euler_post_rot(dh_mat3_f32 *M, int q, float s, float c)
+{
+    int u = (q + 1) % 3, w = (q + 2) % 3, r;
+    for (r = 0; r < 3; r++) {
+        float mu = M->m[u][r], mw = M->m[w][r];
+        M->m[u][r] = c * mu + s * mw;
+        M->m[w][r] = c * mw - s * mu;
+    }
+}
+
+dh_status dh_euler_to_mat3_f32(dh_mat3_f32 *R, dh_euler_seq seq, const float ang_deg[3])
+{
+    unsigned int u = (unsigned int)seq;
+    int ax[3], n, r, c;
+    float sn[3], cs[3];
+    dh_mat3_f32 M;
+    DH_ASSERT(R != NULL && ang_deg != NULL);
+    if (u >= (unsigned int)DH_EULER_COUNT) return DH_ERR_ARG;
+    for (n = 0; n < 3; n++) {
+        if (dh_sincos_f32(ang_deg[n], &sn[n], &cs[n]) != DH_OK) return DH_ERR_NAN;
+    }
+    if (u < 12u) {
+        for (n = 0; n < 3; n++) ax[n] = dh_euler_axes[u][n];
+    } else {
+        /* extrinsic (a, b, c) about l0, l1, l2 = intrinsic (c, b, a) about
+         * l2, l1, l0: reverse the axes and the angles */
+        float t;
+        for (n = 0; n < 3; n++) ax[n] = dh_euler_axes[u - 12u][2 - n];
+        t = sn[0]; sn[0] = sn[2]; sn[2] = t;
+        t = cs[0]; cs[0] = cs[2]; cs[2] = t;
+    }
+    for (c = 0; c < 3; c++) {
+        for (r = 0; r < 3; r++) M.m[c][r] = (r == c) ? 1.0f : 0.0f;
+    }
+    for (n = 0; n < 3; n++) dh_euler_post_rot(&M, ax[n], sn[n], cs[n]);
+    for (c = 0; c < 3; c++) {
+        for (r = 0; r < 3; r++) R->m[c][r] = M.m[c][r] + 0.0f; /* no -0 */
+    }
+    return DH_OK;
+}
+
+/* radians -> degrees in (-180, 180] */
+static float dh_euler_deg_pm180(float rad)
+{
+    float d = rad * DH_EULER_RAD2DEG;
+    if (d > 180.0f || d <= -180.0f) d = 180.0f; /* only +-pi (rounded) reaches here */
+    return d + 0.0f;
+}
+
+static float dh_euler_clamp(float d, float lo, float hi)
+{
+    if (d < lo) d = lo;
+    if (d > hi) d = hi;
+    return d + 0.0f;
+}
+
+/*
+ * Intrinsic angles (a, b, c), in radians, of R = Ri(a) Rj(b) Rk(c).
+ * zero_first == 0: b and c are read from row i and a is fitted to the
+ * residual R Rk(c)^T = Ri(a) Rj(b); at the pole c = 0.
+ * zero_first == 1: a and b are read from column k and c is fitted to the
+ * residual Ri(a)^T R = Rj(b) Rk(c); at the pole a = 0.
+ */
+static void dh_euler_solve(const dh_mat3_f32 *R, int i, int j, int k, int zero_first, float out[3])
+{
+#define RR(r, c) DH_M3(R, (r), (c))
+    int proper = (i == k);
+    int l = proper ? 3 - i - j : k;           /* the axis that is neither i nor j */
+    float s = (((j - i + 3) % 3) == 1) ? 1.0f : -1.0f; /* e_i x e_j = s e_l */
+    float a, b, c, n, ca, sa, cc, sc, p, q;
+
+    if (!proper) {
+        /* Tait-Bryan, k == l:
+         *   row i    = cb cc e_i - s cb sc e_j + s sb e_k
+         *   column k = s sb e_i - s cb sa e_j + cb ca e_k          */
+        if (!zero_first) {
+            n = sqrtf(RR(i, i) * RR(i, i) + RR(i, j) * RR(i, j)); /* cos b */
+            b = atan2f(s * RR(i, k), n);
+            if (n <= DH_EULER_POLE_TOL) {
+                c = 0.0f; cc = 1.0f; sc = 0.0f;
+            } else {
+                c = atan2f(-s * RR(i, j), RR(i, i));
+                cc = RR(i, i) / n;
+                sc = -s * RR(i, j) / n;
+            }
+            /* column j of R Rk(-c) = Ri(a) e_j = ca e_j + s sa e_k, and
+             * Rk(-c) e_j = cc e_j + s sc e_i */
+            p = cc * RR(j, j) + s * sc * RR(j, i);
+            q = cc * RR(k, j) + s * sc * RR(k, i);
+            a = atan2f(s * q, p);
+        } else {
+            n = sqrtf(RR(j, k) * RR(j, k) + RR(k, k) * RR(k, k)); /* cos b */
+            b = atan2f(s * RR(i, k), n);
+            if (n <= DH_EULER_POLE_TOL) {
+                a = 0.0f; ca = 1.0f; sa = 0.0f;
+            } else {
+                a = atan2f(-s * RR(j, k), RR(k, k));
+                ca = RR(k, k) / n;
+                sa = -s * RR(j, k) / n;
+            }
+            /* row j of Ri(a)^T R = (Ri(a) e_j)^T R = e_j^T Rk(c)
+             * = cc e_j + s sc e_i (as a row) */
+            p = ca * RR(j, j) + s * sa * RR(k, j);
+            q = ca * RR(j, i) + s * sa * RR(k, i);
+            c = atan2f(s * q, p);
+        }
+    } else {
+        /* proper Euler, k == i:
+         *   row i    = cb e_i + sb sc e_j + s sb cc e_l
+         *   column i = cb e_i + sb sa e_j - s sb ca e_l           */
+        if (!zero_first) {
+            n = sqrtf(RR(i, j) * RR(i, j) + RR(i, l) * RR(i, l)); /* sin b */
+            b = atan2f(n, RR(i, i));
+            if (n <= DH_EULER_POLE_TOL) {
+                c = 0.0f; cc = 1.0f; sc = 0.0f;
+            } else {
+                c = atan2f(RR(i, j), s * RR(i, l));
+                sc = RR(i, j) / n;
+                cc = s * RR(i, l) / n;
+            }
+            /* column j of R Ri(-c) = Ri(a) e_j = ca e_j + s sa e_l, and
+             * Ri(-c) e_j = cc e_j - s sc e_l */
+            p = cc * RR(j, j) - s * sc * RR(j, l);
+            q = cc * RR(l, j) - s * sc * RR(l, l);
+            a = atan2f(s * q, p);
+        } else {
+            n = sqrtf(RR(j, i) * RR(j, i) + RR(l, i) * RR(l, i)); /* sin b */
+            b = atan2f(n, RR(i, i));
+            if (n <= DH_EULER_POLE_TOL) {
+                a = 0.0f; ca = 1.0f; sa = 0.0f;
+            } else {
+                a = atan2f(RR(j, i), -s * RR(l, i));
+                sa = RR(j, i) / n;
+                ca = -s * RR(l, i) / n;
+            }
+            /* row j of Ri(a)^T R = e_j^T Ri(c) = cc e_j - s sc e_l */
+            p = ca * RR(j, j) + s * sa * RR(l, j);
+            q = ca * RR(j, l) + s * sa * RR(l, l);
+            c = atan2f(-s * q, p);
+        }
+    }
+    out[0] = a;
+    out[1] = b;
+    out[2] = c;
+#undef RR
+}
+
+dh_status dh_mat3_to_euler_f32(const dh_mat3_f32 *R, dh_euler_seq seq, float ang_deg[3])
+{
+    unsigned int u = (unsigned int)seq;
+    const unsigned char *ax;
+    float rad[3], t;
+    int proper;
+    dh_status st;
+    DH_ASSERT(R != NULL && ang_deg != NULL);
+    if (u >= (unsigned int)DH_EULER_COUNT) return DH_ERR_ARG;
+    st = dh_mat3_check_rot_f32(R, DH_ROT_TOL);
+    if (st != DH_OK) return st;
+    if (u < 12u) {
+        ax = dh_euler_axes[u];
+        dh_euler_solve(R, ax[0], ax[1], ax[2], 0, rad);
+    } else {
+        /* extrinsic (a, b, c) = intrinsic (c, b, a) of the reversed axes;
+         * the letter-third angle c is the intrinsic first one, which the
+         * gimbal-lock policy sets to 0 at the pole */
+        ax = dh_euler_axes[u - 12u];
+        dh_euler_solve(R, ax[2], ax[1], ax[0], 1, rad);
+        t = rad[0]; rad[0] = rad[2]; rad[2] = t;
+    }
+    proper = (ax[0] == ax[2]);
+    ang_deg[0] = dh_euler_deg_pm180(rad[0]);
+    ang_deg[1] = proper ? dh_euler_clamp(rad[1] * DH_EULER_RAD2DEG, 0.0f, 180.0f)
+                        : dh_euler_clamp(rad[1] * DH_EULER_RAD2DEG, -90.0f, 90.0f);
+    ang_deg[2] = dh_euler_deg_pm180(rad[2]);
+    return DH_OK;
+}

@@ -1,0 +1,323 @@
+/*
+ * dh_rotvec.c - angle-axis <-> rotation matrix, rotation vector (log / exp
+ * maps), skew-symmetric matrices and vee, angular velocity from R and
+ * Rdot, the rotation check and re-orthonormalisation of a 3x3 rotation.
+ *
+ * Math: Rodrigues' formula (seed 003, "From the angle-axis to rotation
+ * matrix"; seed 000 eq. 1.70), S(w) = Rdot R^T (seed 003, angular
+ * velocity), polar decomposition by the Newton-Schulz iteration.
+ */
+#include <float.h>
+#include <math.h>
+
+#include "dhmath/dh_rot.h"
+#include "dhmath/dh_mat4.h"
+#include "dhmath/dh_trig.h"
+
+/* 1 if x is neither NaN nor infinite (x - x is 0 only for finite x). */
+static int dh_rot_finite(float x)
+{
+    return (x - x) == 0.0f;
+}
+
+static int dh_mat3_finite(const dh_mat3_f32 *R)
+{
+    int c, r;
+    for (c = 0; c < 3; c++) {
+        for (r = 0; r < 3; r++) {
+            if (!dh_rot_finite(R->m[c][r])) return 0;
+        }
+    }
+    return 1;
+}
+
+/* max |(R^T R - I)_ij| over the 6 distinct entries (columns' dot products). */
+static float dh_mat3_ortho_dev(const dh_mat3_f32 *R)
+{
+    float dev = 0.0f, d;
+    int i, j;
+    for (i = 0; i < 3; i++) {
+        for (j = i; j < 3; j++) {
+            d = R->m[i][0] * R->m[j][0] + R->m[i][1] * R->m[j][1] + R->m[i][2] * R->m[j][2];
+            if (i == j) d -= 1.0f;
+            d = fabsf(d);
+            if (d > dev) dev = d;
+        }
+    }
+    return dev;
+}
+
+/* det R = c0 . (c1 x c2) */
+static float dh_mat3_det(const dh_mat3_f32 *R)
+{
+    const float *a = R->m[0], *b = R->m[1], *c = R->m[2];
+    return a[0] * (b[1] * c[2] - b[2] * c[1])
+         + a[1] * (b[2] * c[0] - b[0] * c[2])
+         + a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+
+dh_status dh_mat3_check_rot_f32(const dh_mat3_f32 *R, float tol)
+{
+    DH_ASSERT(R != NULL);
+    if (!dh_rot_finite(tol) || !(tol >= 0.0f)) return DH_ERR_ARG;
+    if (!dh_mat3_finite(R)) return DH_ERR_NAN;
+    if (!(dh_mat3_ortho_dev(R) <= tol)) return DH_ERR_NOT_RIGID;
+    if (!(dh_mat3_det(R) > 0.0f)) return DH_ERR_NOT_RIGID;
+    return DH_OK;
+}
+
+/*
+ * Unit vector of (x, y, z): the components are divided by the largest
+ * magnitude first, so neither the squares overflow nor underflow.
+ * Returns DH_ERR_NAN / DH_ERR_ZERO_AXIS, k untouched on error.
+ */
+static dh_status dh_rot_unit(float x, float y, float z, float k[3])
+{
+    float m, len;
+    if (!dh_rot_finite(x) || !dh_rot_finite(y) || !dh_rot_finite(z)) return DH_ERR_NAN;
+    m = fabsf(x);
+    if (fabsf(y) > m) m = fabsf(y);
+    if (fabsf(z) > m) m = fabsf(z);
+    if (m < FLT_MIN) return DH_ERR_ZERO_AXIS;
+    x /= m;
+    y /= m;
+    z /= m;
+    len = sqrtf(x * x + y * y + z * z); /* in [1, sqrt 3] */
+    k[0] = x / len;
+    k[1] = y / len;
+    k[2] = z / len;
+    return DH_OK;
+}
+
+/*
+ * R = c I + s [k]x + v k k^T for a unit k (v = 1 - c, the versine).
+ * The diagonal entries avoid cancellation and are exact for a coordinate
+ * axis (see dh_axis_angle_to_mat3_f32). Off-diagonal entries are written
+ * + 0.0f so that no -0 appears.
+ */
+static void dh_rodrigues(dh_mat3_f32 *R, const float k[3], float s, float c, float v)
+{
+    float kx = k[0], ky = k[1], kz = k[2];
+    float xx = kx * kx, yy = ky * ky, zz = kz * kz;
+    float vxy = v * kx * ky, vxz = v * kx * kz, vyz = v * ky * kz;
+    float sx = s * kx, sy = s * ky, sz = s * kz;
+
+    DH_M3(R, 0, 0) = (xx < 0.5f) ? c + v * xx : 1.0f - v * (yy + zz);
+    DH_M3(R, 1, 1) = (yy < 0.5f) ? c + v * yy : 1.0f - v * (xx + zz);
+    DH_M3(R, 2, 2) = (zz < 0.5f) ? c + v * zz : 1.0f - v * (xx + yy);
+    DH_M3(R, 0, 1) = (vxy - sz) + 0.0f;
+    DH_M3(R, 1, 0) = (vxy + sz) + 0.0f;
+    DH_M3(R, 0, 2) = (vxz + sy) + 0.0f;
+    DH_M3(R, 2, 0) = (vxz - sy) + 0.0f;
+    DH_M3(R, 1, 2) = (vyz - sx) + 0.0f;
+    DH_M3(R, 2, 1) = (vyz + sx) + 0.0f;
+}
+
+dh_status dh_axis_angle_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *axis, float deg)
+{
+    float k[3], s, c;
+    dh_status st;
+    DH_ASSERT(R != NULL && axis != NULL);
+    if (!dh_rot_finite(deg)) return DH_ERR_NAN;
+    st = dh_rot_unit(axis->x, axis->y, axis->z, k);
+    if (st != DH_OK) return st;
+    st = dh_sincos_f32(deg, &s, &c);
+    if (st != DH_OK) return st;
+    dh_rodrigues(R, k, s, c, 1.0f - c);
+    return DH_OK;
+}
+
+dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, float *deg)
+{
+    /* The same algorithm as the 4x4 version (seed 000 sec. 13), so a 3x3
+     * and a 4x4 holding the same rotation give bitwise the same answer. */
+    dh_mat4_f32 T;
+    int c, r;
+    DH_ASSERT(R != NULL && axis != NULL && deg != NULL);
+    for (c = 0; c < 3; c++) {
+        for (r = 0; r < 3; r++) T.m[c][r] = R->m[c][r];
+        T.m[c][3] = 0.0f;
+        T.m[3][c] = 0.0f;
+    }
+    T.m[3][3] = 1.0f;
+    if (!dh_mat3_finite(R)) return DH_ERR_NAN;
+    if (dh_mat3_check_rot_f32(R, DH_ROT_TOL) != DH_OK) return DH_ERR_NOT_RIGID;
+    return dh_mat4_to_axis_angle_f32(&T, axis, deg);
+}
+
+dh_status dh_rotvec_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *phi)
+{
+    float x, y, z, m, t, k[3], sh, ch;
+    DH_ASSERT(R != NULL && phi != NULL);
+    x = phi->x;
+    y = phi->y;
+    z = phi->z;
+    if (!dh_rot_finite(x) || !dh_rot_finite(y) || !dh_rot_finite(z)) return DH_ERR_NAN;
+    m = fabsf(x);
+    if (fabsf(y) > m) m = fabsf(y);
+    if (fabsf(z) > m) m = fabsf(z);
+    if (m == 0.0f) {
+        k[0] = 0.0f;
+        k[1] = 0.0f;
+        k[2] = 1.0f;
+        dh_rodrigues(R, k, 0.0f, 1.0f, 0.0f); /* exactly I */
+        return DH_OK;
+    }
+    x /= m;
+    y /= m;
+    z /= m;
+    t = sqrtf(x * x + y * y + z * z); /* |phi| / m, in [1, sqrt 3] */
+    k[0] = x / t;
+    k[1] = y / t;
+    k[2] = z / t;
+    t *= m; /* |phi|: finite unless |phi| > FLT_MAX, which sinf handles as NaN */
+    if (!dh_rot_finite(t)) return DH_ERR_NAN;
+    sh = sinf(0.5f * t);
+    ch = cosf(0.5f * t);
+    dh_rodrigues(R, k, 2.0f * sh * ch, 1.0f - 2.0f * sh * sh, 2.0f * sh * sh);
+    return DH_OK;
+}
+
+dh_status dh_mat3_to_rotvec_f32(const dh_mat3_f32 *R, dh_vec3_f32 *phi)
+{
+    dh_quat_f32 q;
+    float n, f;
+    dh_status st;
+    DH_ASSERT(R != NULL && phi != NULL);
+    st = dh_mat3_to_quat_f32(R, &q); /* checks R; w >= 0 */
+    if (st != DH_OK) return st;
+    n = sqrtf(q.x * q.x + q.y * q.y + q.z * q.z);
+    if (n == 0.0f) {
+        phi->x = 0.0f;
+        phi->y = 0.0f;
+        phi->z = 0.0f;
+        return DH_OK;
+    }
+    f = 2.0f * atan2f(n, q.w) / n; /* t / |v| = t / sin(t/2), in [2, pi] */
+    phi->x = f * q.x;
+    phi->y = f * q.y;
+    phi->z = f * q.z;
+    return DH_OK;
+}
+
+void dh_skew_f32(dh_mat3_f32 *S, const dh_vec3_f32 *v)
+{
+    float x, y, z;
+    DH_ASSERT(S != NULL && v != NULL);
+    x = v->x;
+    y = v->y;
+    z = v->z;
+    DH_M3(S, 0, 0) = 0.0f;
+    DH_M3(S, 1, 1) = 0.0f;
+    DH_M3(S, 2, 2) = 0.0f;
+    DH_M3(S, 0, 1) = -z;
+    DH_M3(S, 1, 0) = z;
+    DH_M3(S, 0, 2) = y;
+    DH_M3(S, 2, 0) = -y;
+    DH_M3(S, 1, 2) = -x;
+    DH_M3(S, 2, 1) = x;
+}
+
+void dh_vee_f32(dh_vec3_f32 *v, const dh_mat3_f32 *S)
+{
+    DH_ASSERT(v != NULL && S != NULL);
+    v->x = 0.5f * DH_M3(S, 2, 1) - 0.5f * DH_M3(S, 1, 2);
+    v->y = 0.5f * DH_M3(S, 0, 2) - 0.5f * DH_M3(S, 2, 0);
+    v->z = 0.5f * DH_M3(S, 1, 0) - 0.5f * DH_M3(S, 0, 1);
+}
+
+/*
+ * W = A B^T (body == 0) or W = A^T B (body == 1) with A = Rdot, B = R or
+ * A = R, B = Rdot respectively, then w = vee(W). Only the six
+ * off-diagonal entries of W are formed.
+ */
+static dh_status dh_angvel_common(dh_vec3_f32 *w, const dh_mat3_f32 *R, const dh_mat3_f32 *Rdot, int body)
+{
+    float W[3][3]; /* W[r][c], only off-diagonal entries used */
+    int r, c;
+    dh_status st;
+    DH_ASSERT(w != NULL && R != NULL && Rdot != NULL);
+    if (!dh_mat3_finite(R) || !dh_mat3_finite(Rdot)) return DH_ERR_NAN;
+    st = dh_mat3_check_rot_f32(R, DH_ROT_TOL);
+    if (st != DH_OK) return st;
+    for (r = 0; r < 3; r++) {
+        for (c = 0; c < 3; c++) {
+            if (r == c) {
+                W[r][c] = 0.0f;
+            } else if (!body) {
+                /* (Rdot R^T)_rc = sum_k Rdot_rk R_ck */
+                W[r][c] = DH_M3(Rdot, r, 0) * DH_M3(R, c, 0) + DH_M3(Rdot, r, 1) * DH_M3(R, c, 1)
+                        + DH_M3(Rdot, r, 2) * DH_M3(R, c, 2);
+            } else {
+                /* (R^T Rdot)_rc = sum_k R_kr Rdot_kc */
+                W[r][c] = DH_M3(R, 0, r) * DH_M3(Rdot, 0, c) + DH_M3(R, 1, r) * DH_M3(Rdot, 1, c)
+                        + DH_M3(R, 2, r) * DH_M3(Rdot, 2, c);
+            }
+        }
+    }
+    w->x = 0.5f * W[2][1] - 0.5f * W[1][2];
+    w->y = 0.5f * W[0][2] - 0.5f * W[2][0];
+    w->z = 0.5f * W[1][0] - 0.5f * W[0][1];
+    return DH_OK;
+}
+
+dh_status dh_angvel_f32(dh_vec3_f32 *w, const dh_mat3_f32 *R, const dh_mat3_f32 *Rdot)
+{
+    return dh_angvel_common(w, R, Rdot, 0);
+}
+
+dh_status dh_angvel_body_f32(dh_vec3_f32 *w, const dh_mat3_f32 *R, const dh_mat3_f32 *Rdot)
+{
+    return dh_angvel_common(w, R, Rdot, 1);
+}
+
+#define DH_ORTHO_STOP 2.384185791015625e-7f /* 2^-22 */
+#define DH_ORTHO_MAX_STEPS 8
+
+dh_status dh_mat3_orthonormalize_f32(dh_mat3_f32 *out, const dh_mat3_f32 *R)
+{
+    dh_mat3_f32 X, Y;
+    float G[3][3]; /* G = X^T X, symmetric; G[i][j] = c_i . c_j */
+    float dev;
+    int step, i, j, r;
+    DH_ASSERT(out != NULL && R != NULL);
+    if (!dh_mat3_finite(R)) return DH_ERR_NAN;
+    dev = dh_mat3_ortho_dev(R);
+    if (!(dev <= DH_ROT_ORTHO_MAX_DEV) || !(dh_mat3_det(R) > 0.0f)) return DH_ERR_NOT_RIGID;
+    X = *R;
+    for (step = 0; step <= DH_ORTHO_MAX_STEPS; step++) {
+        for (i = 0; i < 3; i++) {
+            for (j = i; j < 3; j++) {
+                G[i][j] = X.m[i][0] * X.m[j][0] + X.m[i][1] * X.m[j][1] + X.m[i][2] * X.m[j][2];
+                G[j][i] = G[i][j];
+            }
+        }
+        dev = 0.0f;
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) {
+                float d = fabsf(G[i][j] - (i == j ? 1.0f : 0.0f));
+                if (d > dev) dev = d;
+            }
+        }
+        if (dev <= DH_ORTHO_STOP) {
+            *out = X;
+            return DH_OK;
+        }
+        if (step == DH_ORTHO_MAX_STEPS) break;
+        /* Y = X (3I - G) / 2 = X + X E with E = (I - G) / 2: column j of
+         * Y is x_j + sum_i x_i E_ij, the small correction summed first so
+         * that it is not swamped by x_j. */
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) {
+                G[i][j] = 0.5f * ((i == j ? 1.0f : 0.0f) - G[i][j]);
+            }
+        }
+        for (j = 0; j < 3; j++) {
+            for (r = 0; r < 3; r++) {
+                Y.m[j][r] = X.m[j][r] + (X.m[0][r] * G[0][j] + X.m[1][r] * G[1][j] + X.m[2][r] * G[2][j]);
+            }
+        }
+        X = Y;
+    }
+    return DH_ERR_NO_CONVERGENCE;
+}
