@@ -146,48 +146,59 @@ static int32_t dh_scale_signed(int32_t x, int sh)
 {
     uint32_t m = dh_abs_u32(x);
     m = sh >= 0 ? (m << (unsigned)sh) : (m >> (unsigned)(-sh));
-    /* m < 2^30 here, so the conversion and the negation are exact */
+    /* m < 2^31 here, so the conversion and the negation are exact */
     return x < 0 ? -(int32_t)m : (int32_t)m;
 }
 
+/* round(x / 2^sh) for int64 x, 1 <= sh <= 62, |x| < 2^62 (ties up). */
+static int64_t dh_rshr64(int64_t x, unsigned sh)
+{
+    return (x + ((int64_t)1 << (sh - 1u))) >> sh;
+}
+
 /*
- * Unit vector of (kx, ky, kz) in Q2.30, integer only:
- *  1. scale so the largest |component| is in [2^29, 2^30) (exact for inputs
- *     below 2^29, otherwise truncation of at most 2 bits, relative 2^-29);
- *  2. n2 = |w|^2 (exact, 64 bit), normalised to X in [2^29, 2^31) (Q2.30,
- *     x in [0.5, 2)) by an even shift;
+ * Unit vector of (kx, ky, kz), integer only, to about 2^-44:
+ * u_i = (U[i] + E[i] / 2^16) / 2^30 with U Q2.30 and E in [-2^15, 2^15].
+ *  1. scale by a power of two so the largest |component| is in
+ *     [2^30, 2^31) (exact, except when a component is INT32_MIN: then the
+ *     others lose their lowest bit, relative 2^-31);
+ *  2. n2 = |w|^2 (exact, 64 bit unsigned, in [2^60, 3 * 2^62)), normalised
+ *     to X in [2^29, 2^31) (Q2.30, x in [0.5, 2)) by an even shift s2 of 30..34;
  *  3. Y = 1/sqrt(x) by four Newton steps Y <- Y (3 - x Y^2) / 2 from a
- *     piecewise linear seed (relative error <= 6 %, 1.5 e^2 per step);
- *  4. u = w Y / 2^(15 + s/2), then one Newton step on the vector
- *     u <- u (3 - |u|^2) / 2 computed with an exact 64-bit |u|^2.
+ *     piecewise linear seed (relative error <= 6 %, 1.5 e^2 per step),
+ *     good to about 2^-29;
+ *  4. u = w Y / 2^(15 + s2/2) in Q46, then one Newton step on the vector
+ *     u <- u + u (1 - |u|^2) / 2 with |u|^2 evaluated in Q60 from the
+ *     split U, E (the error left is far below 2^-40).
  * Returns 0 for the zero vector.
  */
-static int dh_unit_axis(int32_t kx, int32_t ky, int32_t kz, int32_t u[3])
+static int dh_unit_axis(int32_t kx, int32_t ky, int32_t kz, int32_t U[3], int32_t E[3])
 {
     int32_t w[3];
+    int64_t ext[3], n, d;
     uint32_t m = dh_abs_u32(kx), ovf = 0u;
     uint64_t n2;
-    int32_t X, Y, F;
+    int32_t X, Y, D;
     int sh, s2, it;
     unsigned i;
     if (dh_abs_u32(ky) > m) m = dh_abs_u32(ky);
     if (dh_abs_u32(kz) > m) m = dh_abs_u32(kz);
     if (m == 0u) return 0;
-    sh = (int)dh_port_clz(m) - 2;                /* leading bit to bit 29 */
+    sh = (int)dh_port_clz(m) - 1;                /* leading bit to bit 30 */
     w[0] = dh_scale_signed(kx, sh);
     w[1] = dh_scale_signed(ky, sh);
     w[2] = dh_scale_signed(kz, sh);
     n2 = 0u;
     for (i = 0; i < 3u; i++) n2 += (uint64_t)dh_port_smull(w[i], w[i]);
-    /* n2 in [2^58, 3 * 2^60) */
-    s2 = (n2 >= ((uint64_t)1 << 59)) ? 30 : 28;
-    X = (int32_t)(n2 >> s2);                     /* [2^29, 2^31) */
+    /* n2 in [2^60, 3 * 2^62): pick an even shift giving X in [2^29, 2^31) */
+    s2 = (n2 >= ((uint64_t)1 << 63)) ? 34 : ((n2 >= ((uint64_t)1 << 61)) ? 32 : 30);
+    X = (int32_t)(n2 >> s2);
     Y = X < DH_ONE30 ? (int32_t)(7 << 28) - (X - (X >> 2))   /* 1.75 - 0.75 x */
                      : (int32_t)(5 << 28) - (X >> 2);         /* 1.25 - 0.25 x */
     for (it = 0; it < 4; it++) {
         int32_t a[3], b[3], t;
         a[0] = X; b[0] = Y;
-        t = dh_dot_exact(a, b, 1u, 0, 0, 30u, &ovf);         /* x Y = sqrt(x)-ish < 1.5 */
+        t = dh_dot_exact(a, b, 1u, 0, 0, 30u, &ovf);         /* x Y < 1.5 */
         a[0] = t; b[0] = Y;
         t = dh_dot_exact(a, b, 1u, 0, 0, 30u, &ovf);         /* x Y^2, near 1 */
         /* Y (3 - t) / 2 = (2 * Y * 1.5 - Y * t) / 2 */
@@ -196,59 +207,70 @@ static int dh_unit_axis(int32_t kx, int32_t ky, int32_t kz, int32_t u[3])
         a[2] = Y; b[2] = dh_neg_sat(t);
         Y = dh_dot_exact(a, b, 3u, 0, 0, 31u, &ovf);
     }
-    /* u = w * Y / 2^(15 + s2/2) */
-    for (i = 0; i < 3u; i++) {
-        int32_t a[1], b[1];
-        a[0] = w[i]; b[0] = Y;
-        u[i] = dh_dot_exact(a, b, 1u, 0, 0, (unsigned)(15 + (s2 >> 1)), &ovf);
-    }
-    /* one Newton step on the vector: f = (3 - |u|^2) / 2, u <- u f */
-    F = dh_dot_exact(u, u, 3u, 1, (int64_t)3 << 60, 31u, &ovf);
-    for (i = 0; i < 3u; i++) {
-        int32_t a[1], b[1];
-        a[0] = u[i]; b[0] = F;
-        u[i] = dh_dot_exact(a, b, 1u, 0, 0, 30u, &ovf);
-    }
     (void)ovf;                                   /* cannot saturate for these ranges */
+    /* u in Q46: w * Y / 2^(15 + s2/2 - 16) */
+    for (i = 0; i < 3u; i++) ext[i] = dh_rshr64(dh_port_smull(w[i], Y), (unsigned)(s2 >> 1) - 1u);
+    for (it = 0; it < 2; it++) {
+        /* split ext = U 2^16 + E, E in [-2^15, 2^15) */
+        for (i = 0; i < 3u; i++) {
+            U[i] = (int32_t)dh_rshr64(ext[i], 16u);
+            E[i] = (int32_t)(ext[i] - (int64_t)U[i] * 65536);
+        }
+        if (it == 1) break;
+        /* |u|^2 in Q60: U^2 + 2 U E / 2^16 (E^2 / 2^32 < 1 is dropped) */
+        n = 0;
+        for (i = 0; i < 3u; i++)
+            n += dh_port_smull(U[i], U[i]) + dh_rshr64(2 * dh_port_smull(U[i], E[i]), 16u);
+        d = ((int64_t)1 << 60) - n;                  /* (1 - |u|^2) in Q60, |d| < 2^36 */
+        D = (int32_t)dh_rshr64(d, 8u);               /* Q52 */
+        /* u += u d / 2: in Q46, U * D / 2^(30 + 52 - 46 + 1) */
+        for (i = 0; i < 3u; i++) ext[i] += dh_rshr64(dh_port_smull(U[i], D), 37u);
+    }
     return 1;
 }
 
 dh_status dh_frame_rot_axis_q(dh_frame_q *F, dh_q30 kx, dh_q30 ky, dh_q30 kz, dh_q16 deg)
 {
-    int32_t k[3], kk[3][3], s, c, ns;
+    int32_t U[3], E[3], s, c, ns;
     uint32_t ovf = 0u;
     unsigned i, j;
     DH_ASSERT(F != NULL);
-    if (!dh_unit_axis(kx, ky, kz, k)) return DH_ERR_ZERO_AXIS;
+    if (!dh_unit_axis(kx, ky, kz, U, E)) return DH_ERR_ZERO_AXIS;
     dh_sincos_q(deg, &s, &c);
     ns = dh_neg_sat(c);
-    /* k_i k_j rounded to Q2.30 (the only extra rounding, <= 0.5 LSB * vers) */
-    for (i = 0; i < 3u; i++)
-        for (j = i; j < 3u; j++) {
-            kk[i][j] = dh_fin30(dh_port_smlal(DH_HALF30, k[i], k[j]), &ovf);
-            kk[j][i] = kk[i][j];
-        }
-    /* eq. 1.70: R = k k^T vers + c I + s [k]x, vers = 1 - c;
-     * entry = (kk * 2^30 - kk * c [+ c * 2^30] [+- k_m * s]) / 2^30, one rounding.
-     * |sum| <= 2^60 + 2^60 + 2^60: no overflow. */
+    /* eq. 1.70: R = k k^T vers + c I + s [k]x, vers = 1 - c, summed in Q60
+     * and rounded once:
+     *   k_i k_j (Q60)     P  = U_i U_j + (U_i E_j + U_j E_i) / 2^16
+     *   k_i k_j vers      P = Ph 2^30 + Pl:  Ph 2^30 - Ph c + round(Pl (2^30 - c) / 2^30)
+     *   s k_m             s U_m + round(s E_m / 2^16)
+     * Every term is below 2^61 in magnitude: no overflow. */
     for (j = 0; j < 3u; j++) {          /* column */
         for (i = 0; i < 3u; i++) {      /* row */
-            int64_t acc = dh_port_smlal(DH_HALF30, kk[i][j], DH_ONE30);
-            acc = dh_port_smlal(acc, kk[i][j], ns);
+            int64_t P = dh_port_smull(U[i], U[j]) +
+                        dh_rshr64(dh_port_smull(U[i], E[j]) + dh_port_smull(U[j], E[i]), 16u);
+            int32_t Ph = (int32_t)(P >> 30), Pl = (int32_t)(P - (int64_t)Ph * DH_ONE30);
+            int64_t acc = dh_port_smlal(DH_HALF30, Ph, DH_ONE30);
+            acc = dh_port_smlal(acc, Ph, ns);
+            acc += Pl + dh_rshr64(dh_port_smull(Pl, ns), 30u);
             if (i == j) {
                 acc = dh_port_smlal(acc, c, DH_ONE30);
             } else {
                 /* s [k]x: (i,j) = (1,0) +kz, (0,1) -kz, (0,2) +ky, (2,0) -ky, (2,1) +kx, (1,2) -kx */
                 unsigned m = 3u - i - j;
                 int positive = (i == j + 1u) || (i == 0u && j == 2u);
-                acc = dh_port_smlal(acc, positive ? k[m] : dh_neg_sat(k[m]), s);
+                int64_t t = dh_port_smull(s, U[m]) + dh_rshr64(dh_port_smull(s, E[m]), 16u);
+                acc += positive ? t : -t;
             }
             F->r[j][i] = dh_fin30(acc, &ovf);
         }
         F->p[j] = 0;
     }
-    (void)ovf;                           /* cannot saturate: |entries| <= 1 + 2 LSB */
-    return DH_OK;
+    (void)ovf;                           /* cannot saturate: |entries| <= 1 + 1 LSB */
+    /* Rounding the nine entries leaves |R^T R - I| at a few LSB; one Newton
+     * step brings it to the rounding level so that T * T^-1 stays within a
+     * few LSB of I. Cannot fail here: entries are within 1 + 2 LSB and the
+     * error is far below the 1/8 limit. */
+    return dh_frame_orthonormalize_chk_q(F);
 }
 
 /* ---- composition ---------------------------------------------------------- */

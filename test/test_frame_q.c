@@ -1,0 +1,616 @@
+/*
+ * test_frame_q.c - fixed-point rigid frames (dh_fixed.h).
+ *
+ * References are computed here in double precision from the INTEGER inputs
+ * (never from results of the code under test), so "within 0.5 LSB of the
+ * reference" checks the one-rounding contract directly. Double sums of
+ * products below 2^63 carry an error below 2^-20 LSB, far inside the
+ * tolerance. Measured maxima are printed with dht_printf.
+ */
+#include "dht.h"
+#include "dhmath/dh_fixed.h"
+#include "dhmath/dh_trig.h"
+#include <math.h>
+#include <string.h>
+
+#define Q30 1073741824.0
+#define EPS_LSB (1.0 / 1048576.0) /* double rounding allowance, 2^-20 LSB */
+
+static const double PI = 3.14159265358979323846;
+
+/* ---- random inputs --------------------------------------------------------- */
+
+static int32_t rnd_i32(void) { return (int32_t)dht_rand_u32(); }
+
+/* uniform integer in [-m, m], m <= 2^31 - 1 */
+static int32_t rnd_range(int32_t m)
+{
+    return (int32_t)floor(dht_rand_uniform(-(double)m, (double)m + 1.0));
+}
+
+static dh_q16 rnd_angle(void) { return rnd_range(720 * 65536); }
+
+/* random axis: unit Q2.30 vectors, small integers, or full-range int32 */
+static void rnd_axis(int32_t k[3])
+{
+    unsigned kind = dht_rand_u32() % 3u, i;
+    do {
+        for (i = 0; i < 3u; i++) {
+            if (kind == 0u) k[i] = rnd_range(0x40000000);
+            else if (kind == 1u) k[i] = rnd_range(5);
+            else k[i] = rnd_i32();
+        }
+    } while (k[0] == 0 && k[1] == 0 && k[2] == 0);
+}
+
+/* a rigid frame: random rotation about a random axis, position in +-pmax LSB */
+static void rnd_rigid(dh_frame_q *F, int32_t pmax)
+{
+    int32_t k[3];
+    rnd_axis(k);
+    DHT_EQ_INT(dh_frame_rot_axis_q(F, k[0], k[1], k[2], rnd_angle()), DH_OK);
+    F->p[0] = rnd_range(pmax);
+    F->p[1] = rnd_range(pmax);
+    F->p[2] = rnd_range(pmax);
+}
+
+/* a frame with arbitrary int32 entries (exact / saturating paths) */
+static void rnd_garbage(dh_frame_q *F)
+{
+    unsigned i, j;
+    for (i = 0; i < 3u; i++) {
+        for (j = 0; j < 3u; j++) F->r[i][j] = rnd_i32();
+        F->p[i] = rnd_i32();
+    }
+}
+
+/* ---- reference helpers ---------------------------------------------------- */
+
+/* Expected saturated integer for an exact real value x (LSB units): returns
+ * 1 and sets *sat when x is clearly outside int32, 0 when inside, -1 when
+ * too close to the boundary to decide with double. */
+static int ref_class(double x, int32_t *sat)
+{
+    if (x >= 2147483647.5 + 1.0) { *sat = INT32_MAX; return 1; }
+    if (x < -2147483648.5 - 1.0) { *sat = INT32_MIN; return 1; }
+    if (x > 2147483646.0 || x < -2147483647.0) return -1;
+    return 0;
+}
+
+/* check one output against the exact real value x: <= 0.5 LSB or saturated;
+ * returns |error| in LSB (0 for saturated) and records whether saturation
+ * was expected. */
+static double check_out(int32_t got, double x, int *sat_expected)
+{
+    int32_t s;
+    int c = ref_class(x, &s);
+    if (c == 1) {
+        DHT_EQ_INT(got, s);
+        *sat_expected = 1;
+        return 0.0;
+    }
+    if (c == -1) return 0.0;
+    DHT_NEAR(got, x, 0.5 + EPS_LSB);
+    return fabs((double)got - x);
+}
+
+static double ref_r(const dh_frame_q *F, int row, int col) { return (double)F->r[col][row]; }
+
+/* ---- constructors ------------------------------------------------------------ */
+
+static void identity_and_translation_are_exact(void)
+{
+    dh_frame_q F;
+    int i, j;
+    memset(&F, 0x5A, sizeof F);
+    dh_frame_identity_q(&F);
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) DHT_EQ_INT(F.r[i][j], i == j ? DH_Q30_ONE : 0);
+        DHT_EQ_INT(F.p[i], 0);
+    }
+    DHT_EQ_INT(dh_frame_ortho_error_q(&F), 0);
+    dh_frame_trans_q(&F, INT32_MIN, INT32_MAX, -7);
+    DHT_EQ_INT(F.p[0], INT32_MIN);
+    DHT_EQ_INT(F.p[1], INT32_MAX);
+    DHT_EQ_INT(F.p[2], -7);
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) DHT_EQ_INT(F.r[i][j], i == j ? DH_Q30_ONE : 0);
+}
+
+/* Elementary rotations: structure of eq. 1.32-1.34 with the trig values,
+ * and closeness to the double reference (dh_sincos_q contract <= 2 LSB). */
+static void elementary_rotations(void)
+{
+    long k, n = DHT_ITER(20000);
+    double worst = 0.0;
+    for (k = 0; k < n; k++) {
+        dh_q16 deg = (k < 9) ? (dh_q16)((k - 4) * 90 * 65536) : rnd_angle();
+        double th = (double)deg / 65536.0 * PI / 180.0, c = cos(th) * Q30, s = sin(th) * Q30;
+        /* expected matrices, row-major [row][col] */
+        double ex[3][3][3] = {
+            { { Q30, 0, 0 }, { 0, c, -s }, { 0, s, c } },
+            { { c, 0, s }, { 0, Q30, 0 }, { -s, 0, c } },
+            { { c, -s, 0 }, { s, c, 0 }, { 0, 0, Q30 } } };
+        dh_frame_q F[3];
+        int a, r, col;
+        dh_frame_rotx_q(&F[0], deg);
+        dh_frame_roty_q(&F[1], deg);
+        dh_frame_rotz_q(&F[2], deg);
+        for (a = 0; a < 3; a++) {
+            for (r = 0; r < 3; r++) {
+                for (col = 0; col < 3; col++) {
+                    double e = fabs(ref_r(&F[a], r, col) - ex[a][r][col]);
+                    if (ex[a][r][col] == 0.0 || ex[a][r][col] == Q30) DHT_EQ_INT(ref_r(&F[a], r, col), ex[a][r][col]);
+                    DHT_TRUE_MSG(e <= 2.0, "rot axis %d deg %ld entry (%d,%d) err %.3f LSB", a, (long)deg, r, col, e);
+                    if (e > worst) worst = e;
+                }
+                DHT_EQ_INT(F[a].p[r], 0);
+            }
+            if (k < 9) DHT_EQ_INT(dh_frame_ortho_error_q(&F[a]), 0); /* multiples of 90: exact */
+        }
+    }
+    dht_printf("rotx/y/z: max entry error %.3f LSB (Q2.30) over %ld angles\n", worst, n);
+}
+
+/* Rot(k, theta) vs the double Rodrigues formula (eq. 1.70) with exact sin/cos. */
+static void axis_rotation_vs_double(void)
+{
+    long k, n = DHT_ITER(30000);
+    double worst = 0.0;
+    int32_t worst_ortho = 0;
+    for (k = 0; k < n; k++) {
+        int32_t ax[3];
+        dh_q16 deg = rnd_angle();
+        dh_frame_q F;
+        double u[3], nn, th, c, s, v, R[3][3];
+        int r, col;
+        rnd_axis(ax);
+        if (k < 3) { ax[0] = ax[1] = ax[2] = 0; ax[k] = (k == 1) ? INT32_MIN : 1; }
+        DHT_EQ_INT(dh_frame_rot_axis_q(&F, ax[0], ax[1], ax[2], deg), DH_OK);
+        nn = sqrt((double)ax[0] * ax[0] + (double)ax[1] * ax[1] + (double)ax[2] * ax[2]);
+        for (r = 0; r < 3; r++) u[r] = ax[r] / nn;
+        th = (double)deg / 65536.0 * PI / 180.0;
+        c = cos(th); s = sin(th); v = 1.0 - c;
+        R[0][0] = u[0] * u[0] * v + c;        R[0][1] = u[1] * u[0] * v - u[2] * s; R[0][2] = u[2] * u[0] * v + u[1] * s;
+        R[1][0] = u[0] * u[1] * v + u[2] * s; R[1][1] = u[1] * u[1] * v + c;        R[1][2] = u[2] * u[1] * v - u[0] * s;
+        R[2][0] = u[0] * u[2] * v - u[1] * s; R[2][1] = u[1] * u[2] * v + u[0] * s; R[2][2] = u[2] * u[2] * v + c;
+        for (r = 0; r < 3; r++) {
+            for (col = 0; col < 3; col++) {
+                double e = fabs(ref_r(&F, r, col) - R[r][col] * Q30);
+                if (e > worst) worst = e;
+            }
+            DHT_EQ_INT(F.p[r], 0);
+        }
+        if (dh_frame_ortho_error_q(&F) > worst_ortho) worst_ortho = dh_frame_ortho_error_q(&F);
+    }
+    dht_printf("rot_axis: max entry error %.3f LSB, max |R^T R - I| %ld LSB over %ld cases\n",
+               worst, (long)worst_ortho, n);
+    /* measured: 1.93 LSB (sincos ~1 LSB, final rounding, Newton step) */
+    DHT_TRUE_MSG(worst <= 2.5, "rot_axis error %.3f LSB", worst);
+    DHT_TRUE_MSG(worst_ortho <= 2, "rot_axis ortho error %ld", (long)worst_ortho);
+}
+
+static void axis_rotation_special_cases(void)
+{
+    dh_frame_q F, G;
+    int i, j;
+    /* zero axis: status, F untouched */
+    memset(&F, 0x33, sizeof F);
+    G = F;
+    DHT_EQ_INT(dh_frame_rot_axis_q(&F, 0, 0, 0, 30 * 65536), DH_ERR_ZERO_AXIS);
+    DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
+    /* any scale along x gives rotx to within 1 LSB (scale-independence) */
+    for (i = 0; i < 3; i++) {
+        static const int32_t scales[] = { 1, 0x40000000, INT32_MIN };
+        int32_t ax[3] = { 0, 0, 0 };
+        dh_frame_q E;
+        ax[i] = scales[i];
+        DHT_EQ_INT(dh_frame_rot_axis_q(&F, ax[0], ax[1], ax[2], 37 * 65536 + 1234), DH_OK);
+        if (i == 0) dh_frame_rotx_q(&E, 37 * 65536 + 1234);
+        else if (i == 1) dh_frame_roty_q(&E, 37 * 65536 + 1234);
+        else dh_frame_rotz_q(&E, -(37 * 65536 + 1234)); /* negative axis */
+        for (j = 0; j < 9; j++) DHT_NEAR(F.r[j / 3][j % 3], E.r[j / 3][j % 3], 1.0);
+    }
+}
+
+/* ---- composition ---------------------------------------------------------- */
+
+/* exact real value of (A*B) entries in LSB units */
+static void ref_mul(const dh_frame_q *A, const dh_frame_q *B, double R[3][3], double p[3])
+{
+    int i, j, k;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            double s = 0.0;
+            for (k = 0; k < 3; k++) s += (double)A->r[k][i] * (double)B->r[j][k];
+            R[i][j] = s / Q30;
+        }
+        {
+            double s = (double)A->p[i] * Q30;
+            for (k = 0; k < 3; k++) s += (double)A->r[k][i] * (double)B->p[k];
+            p[i] = s / Q30;
+        }
+    }
+}
+
+static double check_mul(const dh_frame_q *A, const dh_frame_q *B, int *any_sat)
+{
+    dh_frame_q O, O2;
+    double R[3][3], p[3], worst = 0.0, e;
+    int i, j, sat = 0;
+    dh_status st = dh_frame_mul_q(&O, A, B);
+    ref_mul(A, B, R, p);
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            e = check_out(O.r[j][i], R[i][j], &sat);
+            if (e > worst) worst = e;
+        }
+        e = check_out(O.p[i], p[i], &sat);
+        if (e > worst) worst = e;
+    }
+    if (sat) DHT_EQ_INT(st, DH_ERR_OVERFLOW);
+    if (st == DH_OK) DHT_EQ_INT(sat, 0);
+    /* aliasing: out == A and out == B give the same bits */
+    O2 = *A;
+    DHT_EQ_INT(dh_frame_mul_q(&O2, &O2, B), st);
+    DHT_TRUE(memcmp(&O, &O2, sizeof O) == 0);
+    O2 = *B;
+    DHT_EQ_INT(dh_frame_mul_q(&O2, A, &O2), st);
+    DHT_TRUE(memcmp(&O, &O2, sizeof O) == 0);
+    *any_sat |= sat;
+    return worst;
+}
+
+static void compose_rigid_vs_double(void)
+{
+    long k, n = DHT_ITER(50000);
+    double worst = 0.0;
+    int sat = 0;
+    for (k = 0; k < n; k++) {
+        dh_frame_q A, B;
+        double e;
+        rnd_rigid(&A, 0x7FFFFFFF);
+        rnd_rigid(&B, 0x7FFFFFFF);
+        e = check_mul(&A, &B, &sat);
+        if (e > worst) worst = e;
+    }
+    dht_printf("mul (rigid, fast path): max error %.4f LSB vs exact, saturation seen %d\n", worst, sat);
+    DHT_TRUE(sat); /* full-range positions do overflow sometimes; must be reported */
+}
+
+static void compose_arbitrary_entries_exact_path(void)
+{
+    long k, n = DHT_ITER(50000);
+    double worst = 0.0;
+    int sat = 0;
+    for (k = 0; k < n; k++) {
+        dh_frame_q A, B;
+        double e;
+        rnd_garbage(&A);
+        if (k & 1) rnd_rigid(&B, 0x7FFFFFFF); else rnd_garbage(&B);
+        /* scale A down sometimes so that non-saturated exact-path results occur */
+        if (k & 2) { int i, j; for (i = 0; i < 3; i++) for (j = 0; j < 3; j++) A.r[i][j] /= 64; }
+        e = check_mul(&A, &B, &sat);
+        if (e > worst) worst = e;
+    }
+    dht_printf("mul (arbitrary entries): max error %.4f LSB vs exact\n", worst);
+    DHT_TRUE(sat);
+}
+
+/* 64-bit accumulator corner cases: three (-2)*(-2) products = +12 must give
+ * +INT32_MAX (not a wrapped negative); position sums at the int64 limits. */
+static void compose_accumulator_extremes(void)
+{
+    dh_frame_q A, B, O;
+    int i, j, sat = 0;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) { A.r[i][j] = INT32_MIN; B.r[i][j] = INT32_MIN; }
+        A.p[i] = INT32_MIN; B.p[i] = INT32_MIN;
+    }
+    DHT_EQ_INT(dh_frame_mul_q(&O, &A, &B), DH_ERR_OVERFLOW);
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) DHT_EQ_INT(O.r[i][j], INT32_MAX);
+        DHT_EQ_INT(O.p[i], INT32_MAX);   /* 3 * 2^31 * 2 - 2^31 > 0 */
+    }
+    /* fast path limits: entries exactly +-1.0 with extreme positions */
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) A.r[i][j] = -DH_Q30_ONE;
+        A.p[i] = INT32_MIN;
+        B.p[i] = INT32_MIN;
+    }
+    dh_frame_identity_q(&B);
+    for (i = 0; i < 3; i++) B.p[i] = INT32_MIN;
+    DHT_EQ_INT(dh_frame_mul_q(&O, &A, &B), DH_ERR_OVERFLOW);
+    for (i = 0; i < 3; i++) DHT_EQ_INT(O.p[i], INT32_MAX); /* +3*2^31 - 2^31 */
+    for (i = 0; i < 3; i++) { for (j = 0; j < 3; j++) A.r[i][j] = DH_Q30_ONE; A.p[i] = INT32_MIN; }
+    DHT_EQ_INT(dh_frame_mul_q(&O, &A, &B), DH_ERR_OVERFLOW);
+    for (i = 0; i < 3; i++) DHT_EQ_INT(O.p[i], INT32_MIN); /* -4 * 2^31 */
+    (void)check_mul(&A, &B, &sat);
+    DHT_TRUE(sat);
+    /* rounding ties go up: 0.5 LSB -> 1, -0.5 LSB -> 0 */
+    dh_frame_identity_q(&A);
+    A.r[0][0] = 1; A.r[1][1] = DH_Q30_ONE; A.r[2][2] = DH_Q30_ONE;
+    dh_frame_identity_q(&B);
+    B.r[0][0] = (int32_t)0x20000000; /* 0.5 * 2^30: product 2^29 -> 0.5 LSB */
+    DHT_EQ_INT(dh_frame_mul_q(&O, &A, &B), DH_OK);
+    DHT_EQ_INT(O.r[0][0], 1);
+    B.r[0][0] = -(int32_t)0x20000000;
+    DHT_EQ_INT(dh_frame_mul_q(&O, &A, &B), DH_OK);
+    DHT_EQ_INT(O.r[0][0], 0);
+}
+
+/* ---- inverse -------------------------------------------------------------- */
+
+static void inverse_vs_double_and_identity(void)
+{
+    long k, n = DHT_ITER(50000);
+    double worst_inv = 0.0, worst_rid = 0.0, worst_pid = 0.0;
+    for (k = 0; k < n; k++) {
+        dh_frame_q F, I, P, Q;
+        int i, j, sat = 0;
+        if (k & 1) {
+            rnd_rigid(&F, 1 << 28);
+        } else {   /* a DH-like link Rz(theta) Tz(d) Tx(a) Rx(alpha) from elementary rotations */
+            dh_frame_q X;
+            dh_frame_rotz_q(&F, rnd_angle());
+            dh_frame_trans_q(&X, rnd_range(1 << 27), 0, rnd_range(1 << 27));
+            DHT_EQ_INT(dh_frame_mul_q(&F, &F, &X), DH_OK);
+            dh_frame_rotx_q(&X, rnd_angle());
+            DHT_EQ_INT(dh_frame_mul_q(&F, &F, &X), DH_OK);
+        }
+        DHT_EQ_INT(dh_frame_inv_q(&I, &F), DH_OK);
+        for (i = 0; i < 3; i++) {
+            double s = 0.0, e;
+            for (j = 0; j < 3; j++) {
+                DHT_EQ_INT(I.r[j][i], F.r[i][j]); /* exact transpose */
+                s -= (double)F.r[i][j] * (double)F.p[j];
+            }
+            e = check_out(I.p[i], s / Q30, &sat);
+            if (e > worst_inv) worst_inv = e;
+        }
+        /* alias */
+        Q = F;
+        DHT_EQ_INT(dh_frame_inv_q(&Q, &Q), DH_OK);
+        DHT_TRUE(memcmp(&Q, &I, sizeof Q) == 0);
+        /* T * T^-1 ~ I */
+        DHT_EQ_INT(dh_frame_mul_q(&P, &F, &I), DH_OK);
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) {
+                double e = fabs((double)P.r[j][i] - (i == j ? Q30 : 0.0));
+                if (e > worst_rid) worst_rid = e;
+            }
+            if (fabs((double)P.p[i]) > worst_pid) worst_pid = fabs((double)P.p[i]);
+        }
+    }
+    dht_printf("inv: max p error %.4f LSB vs exact; T*T^-1: rotation max %.0f LSB, position max %.0f LSB (|p| <= 2^28 LSB)\n",
+               worst_inv, worst_rid, worst_pid);
+    DHT_TRUE(worst_rid <= 4.0);
+    DHT_TRUE(worst_pid <= 4.0);
+}
+
+static void inverse_saturates_and_exact_path(void)
+{
+    dh_frame_q F, I;
+    long k, n = DHT_ITER(20000);
+    int i, j, sat = 0;
+    dh_frame_identity_q(&F);
+    F.p[0] = INT32_MIN; /* -(-2^31) does not fit */
+    DHT_EQ_INT(dh_frame_inv_q(&I, &F), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(I.p[0], INT32_MAX);
+    DHT_EQ_INT(I.p[1], 0);
+    for (k = 0; k < n; k++) {
+        dh_status st;
+        rnd_garbage(&F);
+        st = dh_frame_inv_q(&I, &F);
+        sat = 0;
+        for (i = 0; i < 3; i++) {
+            double s = 0.0;
+            for (j = 0; j < 3; j++) s -= (double)F.r[i][j] * (double)F.p[j];
+            (void)check_out(I.p[i], s / Q30, &sat);
+        }
+        if (sat) DHT_EQ_INT(st, DH_ERR_OVERFLOW);
+    }
+}
+
+/* ---- points and directions -------------------------------------------------- */
+
+static void apply_point_and_dir_vs_double(void)
+{
+    long k, n = DHT_ITER(50000);
+    double worst = 0.0;
+    int any_sat = 0;
+    for (k = 0; k < n; k++) {
+        dh_frame_q F;
+        dh_vec3_q u, v, w;
+        int32_t in[3], outp[3], outd[3];
+        int i, j, sat = 0, satd = 0, which;
+        dh_status sp, sd;
+        which = (int)(k % 3);
+        if (which == 2) rnd_garbage(&F); else rnd_rigid(&F, which ? 0x7FFFFFFF : (1 << 24));
+        u.x = rnd_i32(); u.y = rnd_i32(); u.z = rnd_i32();
+        if (which == 0) { u.x >>= 6; u.y >>= 6; u.z >>= 6; }
+        in[0] = u.x; in[1] = u.y; in[2] = u.z;
+        sp = dh_frame_apply_point_q(&F, &u, &v);
+        sd = dh_frame_apply_dir_q(&F, &u, &w);
+        outp[0] = v.x; outp[1] = v.y; outp[2] = v.z;
+        outd[0] = w.x; outd[1] = w.y; outd[2] = w.z;
+        for (i = 0; i < 3; i++) {
+            double s = 0.0, e;
+            for (j = 0; j < 3; j++) s += (double)F.r[j][i] * (double)in[j];
+            e = check_out(outd[i], s / Q30, &satd);
+            if (e > worst) worst = e;
+            e = check_out(outp[i], (s + (double)F.p[i] * Q30) / Q30, &sat);
+            if (e > worst) worst = e;
+        }
+        if (sat) DHT_EQ_INT(sp, DH_ERR_OVERFLOW);
+        if (satd) DHT_EQ_INT(sd, DH_ERR_OVERFLOW);
+        if (sp == DH_OK) DHT_EQ_INT(sat, 0);
+        if (sd == DH_OK) DHT_EQ_INT(satd, 0);
+        any_sat |= sat | satd;
+        /* aliasing u == v */
+        w = u;
+        DHT_EQ_INT(dh_frame_apply_point_q(&F, &w, &w), sp);
+        DHT_TRUE(w.x == v.x && w.y == v.y && w.z == v.z);
+    }
+    dht_printf("apply point/dir: max error %.4f LSB vs exact\n", worst);
+    DHT_TRUE(any_sat);
+}
+
+/* ---- drift and re-orthonormalisation -------------------------------------- */
+
+static void ortho_error_measure(void)
+{
+    dh_frame_q F;
+    dh_frame_identity_q(&F);
+    F.r[0][0] += 1000;          /* (1 + e)^2 - 1 = 2e + e^2 -> 2000 LSB */
+    DHT_EQ_INT(dh_frame_ortho_error_q(&F), 2000);
+    dh_frame_identity_q(&F);
+    F.r[0][1] = 1 << 20;        /* col0.col1 = 2^20 LSB; col0.col0 - 1 = 2^40/2^30 = 1024 */
+    DHT_EQ_INT(dh_frame_ortho_error_q(&F), 1 << 20);
+    {   /* garbage saturates, never wraps */
+        int i, j;
+        for (i = 0; i < 3; i++) for (j = 0; j < 3; j++) F.r[i][j] = INT32_MIN;
+        DHT_EQ_INT(dh_frame_ortho_error_q(&F), INT32_MAX);
+        DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_ERR_NOT_RIGID);
+        DHT_EQ_INT(F.r[1][2], INT32_MIN); /* untouched */
+    }
+    /* one step repairs a visibly perturbed rotation */
+    DHT_EQ_INT(dh_frame_rot_axis_q(&F, 3, -4, 12, 77 * 65536), DH_OK);
+    F.r[0][0] += 10000; F.r[1][2] -= 8000; F.r[2][1] += 6000;
+    DHT_TRUE(dh_frame_ortho_error_q(&F) > 10000);
+    DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_OK);
+    DHT_TRUE_MSG(dh_frame_ortho_error_q(&F) <= 4, "after one step %ld", (long)dh_frame_ortho_error_q(&F));
+    /* far from orthonormal: refused */
+    F.r[0][0] = DH_Q30_ONE / 2;
+    DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_ERR_NOT_RIGID);
+}
+
+static void drift_bounded_with_orthonormalisation(void)
+{
+    long k, n = DHT_ITER(100000);
+    dh_frame_q Fa, Fb, S[4];
+    int32_t ea = 0, eb_max = 0;
+    int i;
+    /* small rotations about a few fixed axes, applied in a varying order */
+    DHT_EQ_INT(dh_frame_rot_axis_q(&S[0], 1, 2, 3, 65536 / 3), DH_OK);
+    DHT_EQ_INT(dh_frame_rot_axis_q(&S[1], -5, 1, 2, 65536 / 7), DH_OK);
+    DHT_EQ_INT(dh_frame_rot_axis_q(&S[2], 0x40000000, 0, 7, 12345), DH_OK);
+    DHT_EQ_INT(dh_frame_rot_axis_q(&S[3], 2, -9, 1, 65536 / 2 + 3), DH_OK);
+    dh_frame_identity_q(&Fa);
+    dh_frame_identity_q(&Fb);
+    for (k = 0; k < n; k++) {
+        const dh_frame_q *s = &S[dht_rand_u32() & 3u];
+        DHT_EQ_INT(dh_frame_mul_q(&Fa, &Fa, s), DH_OK);
+        DHT_EQ_INT(dh_frame_mul_q(&Fb, &Fb, s), DH_OK);
+        if ((k & 63) == 63) {
+            DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&Fb), DH_OK);
+            i = dh_frame_ortho_error_q(&Fb);
+            if (i > eb_max) eb_max = i;
+        }
+    }
+    ea = dh_frame_ortho_error_q(&Fa);
+    dht_printf("drift after %ld compositions: |R^T R - I| = %ld LSB without re-orthonormalisation, "
+               "max %ld LSB with one step every 64\n", n, (long)ea, (long)eb_max);
+    DHT_TRUE(eb_max <= 4);
+    DHT_TRUE(ea > 8 * (eb_max + 1) || n < 100000);
+    DHT_TRUE(ea > eb_max);
+}
+
+/* ---- conversions ------------------------------------------------------------ */
+
+static void conversions(void)
+{
+    dh_mat4_f32 T, U;
+    dh_frame_q F, G;
+    long k, n = DHT_ITER(20000);
+    int i, j;
+    const double ps = ldexp(1.0, DH_QPOS_FRAC);
+    for (k = 0; k < n; k++) {
+        rnd_rigid(&F, 0x7FFFFFFF);
+        dh_frame_to_mat4_q(&T, &F);
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) {
+                double ref = (double)F.r[j][i] / Q30;
+                DHT_TRUE(fabs(DH_M4(&T, i, j) - ref) <= fabs(ref) * ldexp(1.0, -24));
+            }
+            DHT_TRUE(fabs(DH_M4(&T, i, 3) - F.p[i] / ps) <= fabs(F.p[i] / ps) * ldexp(1.0, -24));
+            DHT_TRUE(DH_M4(&T, 3, i) == 0.0f);
+        }
+        DHT_TRUE(DH_M4(&T, 3, 3) == 1.0f);
+        /* float -> fixed: nearest integer to x * 2^k */
+        {
+            dh_status st = dh_frame_from_mat4_q(&G, &T);
+            int sat = 0;
+            for (i = 0; i < 3; i++) {
+                for (j = 0; j < 3; j++) {
+                    double x = (double)DH_M4(&T, i, j) * Q30;
+                    DHT_NEAR(G.r[j][i], x, 0.5);
+                    DHT_NEAR(G.r[j][i], F.r[j][i], fabs((double)F.r[j][i]) * ldexp(1.0, -24) + 0.5);
+                }
+                {
+                    double x = (double)DH_M4(&T, i, 3) * ps;
+                    if (x >= 2147483648.0) { sat = 1; DHT_EQ_INT(G.p[i], INT32_MAX); }
+                    else DHT_NEAR(G.p[i], x, 0.5);
+                }
+            }
+            DHT_EQ_INT(st, sat ? DH_ERR_OVERFLOW : DH_OK);
+        }
+    }
+    /* exact values round-trip exactly; ties away from zero */
+    dh_frame_identity_q(&F);
+    F.r[0][1] = 3; F.r[1][0] = -3; F.p[0] = -(1 << 20); F.p[2] = 12345;
+    dh_frame_to_mat4_q(&T, &F);
+    DHT_EQ_INT(dh_frame_from_mat4_q(&G, &T), DH_OK);
+    DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
+    DH_M4(&T, 0, 0) = (float)(2.5 / Q30);
+    DH_M4(&T, 1, 1) = (float)(-2.5 / Q30);
+    DHT_EQ_INT(dh_frame_from_mat4_q(&G, &T), DH_OK);
+    DHT_EQ_INT(G.r[0][0], 3);
+    DHT_EQ_INT(G.r[1][1], -3);
+    /* rotation entry 2.0 does not fit Q2.30 ([-2, 2)); -2.0 does */
+    U = T;
+    DH_M4(&U, 2, 2) = 2.0f;
+    DH_M4(&U, 0, 2) = -2.0f;
+    DHT_EQ_INT(dh_frame_from_mat4_q(&G, &U), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(G.r[2][2], INT32_MAX);
+    DHT_EQ_INT(G.r[2][0], INT32_MIN);
+    DHT_EQ_INT(G.r[0][0], 3);
+    /* position out of range */
+    U = T;
+    DH_M4(&U, 1, 3) = -(float)ldexp(1.0, 31 - DH_QPOS_FRAC) * 1.5f;
+    DHT_EQ_INT(dh_frame_from_mat4_q(&G, &U), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(G.p[1], INT32_MIN);
+    /* non-finite: F untouched */
+    U = T;
+    DH_M4(&U, 3, 2) = (float)NAN;
+    memset(&G, 0x11, sizeof G);
+    F = G;
+    DHT_EQ_INT(dh_frame_from_mat4_q(&G, &U), DH_ERR_NAN);
+    DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
+    U = T;
+    DH_M4(&U, 2, 1) = (float)INFINITY;
+    DHT_EQ_INT(dh_frame_from_mat4_q(&G, &U), DH_ERR_NAN);
+    DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
+    /* bottom row */
+    U = T;
+    DH_M4(&U, 3, 0) = 0.25f;
+    DHT_EQ_INT(dh_frame_from_mat4_q(&G, &U), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(G.r[0][0], 3);
+}
+
+static const dht_case cases[] = {
+    DHT_CASE(identity_and_translation_are_exact),
+    DHT_CASE(elementary_rotations),
+    DHT_CASE(axis_rotation_vs_double),
+    DHT_CASE(axis_rotation_special_cases),
+    DHT_CASE(compose_rigid_vs_double),
+    DHT_CASE(compose_arbitrary_entries_exact_path),
+    DHT_CASE(compose_accumulator_extremes),
+    DHT_CASE(inverse_vs_double_and_identity),
+    DHT_CASE(inverse_saturates_and_exact_path),
+    DHT_CASE(apply_point_and_dir_vs_double),
+    DHT_CASE(ortho_error_measure),
+    DHT_CASE(drift_bounded_with_orthonormalisation),
+    DHT_CASE(conversions),
+};
+DHT_MAIN(cases)

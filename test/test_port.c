@@ -1,0 +1,171 @@
+/*
+ * test_port.c - port/dh_port.h: the dispatching functions (intrinsics on
+ * Cortex-M3/M4/M7 target builds, plain C elsewhere) against the plain-C
+ * versions and against references written independently here, on edge
+ * values and on seeded random values.
+ */
+#include "dht.h"
+#include "../port/dh_port.h" /* private to the library: not on the test include path */
+
+static const int32_t edges[] = {
+    0, 1, -1, 2, -2, 3, INT32_MAX, INT32_MIN, INT32_MAX - 1, INT32_MIN + 1,
+    0x40000000, -0x40000000, 0x3FFFFFFF, -0x3FFFFFFF, 0x20000000, -0x20000000,
+    0xFFFF, -0xFFFF, 0x10000, -0x10000, 0x8000, -0x8000, 0x7FFF, -0x7FFF,
+    0x12345678, -0x12345678, 0x7FFF0000, (int32_t)0x80008000u, 0x0000FFFF, 0x00010001
+};
+#define NEDGES (sizeof(edges) / sizeof(edges[0]))
+
+/* exact a*b from magnitudes (|a|,|b| <= 2^31, product <= 2^62) */
+static int64_t ref_mul(int32_t a, int32_t b)
+{
+    uint64_t ma = a < 0 ? (uint64_t)0 - (uint64_t)(int64_t)a : (uint64_t)a;
+    uint64_t mb = b < 0 ? (uint64_t)0 - (uint64_t)(int64_t)b : (uint64_t)b;
+    uint64_t m = ma * mb;
+    return ((a < 0) != (b < 0)) ? -(int64_t)m : (int64_t)m;
+}
+
+static int32_t rand_edge_or_random(void)
+{
+    uint32_t r = dht_rand_u32();
+    if ((r & 3u) == 0u) return edges[dht_rand_u32() % NEDGES];
+    return (int32_t)dht_rand_u32();
+}
+
+static void report_features(void)
+{
+    dht_printf("dh_port: SMULL %d SSAT %d CLZ %d QADD %d (DH_USE_INTRINSICS %d)\n",
+               DH_PORT_HAS_SMULL, DH_PORT_HAS_SSAT, DH_PORT_HAS_CLZ, DH_PORT_HAS_QADD,
+               DH_USE_INTRINSICS);
+    /* the fallback must be used exactly when the build does not allow intrinsics */
+    if (!DH_USE_INTRINSICS) {
+        DHT_EQ_INT(DH_PORT_HAS_SMULL + DH_PORT_HAS_SSAT + DH_PORT_HAS_CLZ + DH_PORT_HAS_QADD, 0);
+    }
+#if !defined(__arm__)
+    DHT_EQ_INT(DH_PORT_HAS_SMULL + DH_PORT_HAS_SSAT + DH_PORT_HAS_CLZ + DH_PORT_HAS_QADD, 0);
+#endif
+}
+
+static void smull_edges_and_random(void)
+{
+    size_t i, j;
+    long k, n = DHT_ITER(200000);
+    for (i = 0; i < NEDGES; i++)
+        for (j = 0; j < NEDGES; j++) {
+            int32_t a = edges[i], b = edges[j];
+            int64_t r = ref_mul(a, b);
+            DHT_EQ_INT(dh_port_smull(a, b), r);
+            DHT_EQ_INT(dh_port_smull_c(a, b), r);
+        }
+    for (k = 0; k < n; k++) {
+        int32_t a = rand_edge_or_random(), b = rand_edge_or_random();
+        int64_t r = ref_mul(a, b);
+        DHT_EQ_INT(dh_port_smull(a, b), r);
+        DHT_EQ_INT(dh_port_smull_c(a, b), r);
+    }
+}
+
+static void smlal_wraps_like_hardware(void)
+{
+    static const int64_t accs[] = {
+        0, 1, -1, INT64_MAX, INT64_MIN, (int64_t)1 << 62, -((int64_t)1 << 62),
+        (int64_t)1 << 29, INT64_MAX - ((int64_t)1 << 40)
+    };
+    size_t i, j, m;
+    for (m = 0; m < sizeof(accs) / sizeof(accs[0]); m++)
+        for (i = 0; i < NEDGES; i++)
+            for (j = 0; j < NEDGES; j++) {
+                int32_t a = edges[i], b = edges[j];
+                /* reference: modulo-2^64 sum, as SMLAL does */
+                uint64_t r = (uint64_t)accs[m] + (uint64_t)ref_mul(a, b);
+                DHT_EQ_INT((uint64_t)dh_port_smlal(accs[m], a, b), r);
+                DHT_EQ_INT((uint64_t)dh_port_smlal_c(accs[m], a, b), r);
+            }
+}
+
+static int32_t ref_sat(int64_t x, unsigned bits)
+{
+    int64_t hi = ((int64_t)1 << (bits - 1u)) - 1, lo = -hi - 1;
+    return (int32_t)(x > hi ? hi : (x < lo ? lo : x));
+}
+
+static void ssat_every_width_and_constant_forms(void)
+{
+    size_t i;
+    unsigned bits;
+    long n = DHT_ITER(20000);
+    for (bits = 1; bits <= 32u; bits++)
+        for (i = 0; i < NEDGES; i++) DHT_EQ_INT(dh_port_ssat_c(edges[i], bits), ref_sat(edges[i], bits));
+    for (i = 0; i < NEDGES + (size_t)n; i++) {
+        int32_t x = i < NEDGES ? edges[i] : rand_edge_or_random();
+        /* the macro needs constant widths (SSAT immediate) */
+        DHT_EQ_INT(DH_PORT_SSAT(x, 1), ref_sat(x, 1));
+        DHT_EQ_INT(DH_PORT_SSAT(x, 8), ref_sat(x, 8));
+        DHT_EQ_INT(DH_PORT_SSAT(x, 16), ref_sat(x, 16));
+        DHT_EQ_INT(DH_PORT_SSAT(x, 30), ref_sat(x, 30));
+        DHT_EQ_INT(DH_PORT_SSAT(x, 31), ref_sat(x, 31));
+        DHT_EQ_INT(DH_PORT_SSAT(x, 32), x);
+        /* ssat boundary values exactly */
+        DHT_EQ_INT(DH_PORT_SSAT((int32_t)0x1FFFFFFF, 30), 0x1FFFFFFF);
+        DHT_EQ_INT(DH_PORT_SSAT((int32_t)0x20000000, 30), 0x1FFFFFFF);
+        DHT_EQ_INT(DH_PORT_SSAT((int32_t)-0x20000000, 30), -0x20000000);
+        DHT_EQ_INT(DH_PORT_SSAT((int32_t)-0x20000001, 30), -0x20000000);
+    }
+}
+
+static unsigned ref_clz(uint32_t x)
+{
+    unsigned n = 0;
+    uint32_t bit = 0x80000000u;
+    while (bit != 0u && (x & bit) == 0u) { n++; bit >>= 1; }
+    return n;
+}
+
+static void clz_all_bit_positions(void)
+{
+    unsigned b;
+    long k, n = DHT_ITER(100000);
+    DHT_EQ_INT(dh_port_clz(0u), 32);
+    DHT_EQ_INT(dh_port_clz_c(0u), 32);
+    for (b = 0; b < 32u; b++) {
+        uint32_t x = (uint32_t)1 << b;
+        DHT_EQ_INT(dh_port_clz(x), 31u - b);
+        DHT_EQ_INT(dh_port_clz_c(x), 31u - b);
+        DHT_EQ_INT(dh_port_clz(x | (x - 1u)), 31u - b);
+        DHT_EQ_INT(dh_port_clz_c(x | (x - 1u)), ref_clz(x | (x - 1u)));
+    }
+    for (k = 0; k < n; k++) {
+        uint32_t x = dht_rand_u32() >> (dht_rand_u32() % 32u);
+        DHT_EQ_INT(dh_port_clz(x), ref_clz(x));
+        DHT_EQ_INT(dh_port_clz_c(x), ref_clz(x));
+    }
+}
+
+static void qadd_saturates(void)
+{
+    size_t i, j;
+    long k, n = DHT_ITER(100000);
+    for (i = 0; i < NEDGES; i++)
+        for (j = 0; j < NEDGES; j++) {
+            int64_t s = (int64_t)edges[i] + edges[j];
+            int32_t r = s > INT32_MAX ? INT32_MAX : (s < INT32_MIN ? INT32_MIN : (int32_t)s);
+            DHT_EQ_INT(dh_port_qadd(edges[i], edges[j]), r);
+            DHT_EQ_INT(dh_port_qadd_c(edges[i], edges[j]), r);
+        }
+    for (k = 0; k < n; k++) {
+        int32_t a = rand_edge_or_random(), b = rand_edge_or_random();
+        int64_t s = (int64_t)a + b;
+        int32_t r = s > INT32_MAX ? INT32_MAX : (s < INT32_MIN ? INT32_MIN : (int32_t)s);
+        DHT_EQ_INT(dh_port_qadd(a, b), r);
+        DHT_EQ_INT(dh_port_qadd_c(a, b), r);
+    }
+}
+
+static const dht_case cases[] = {
+    DHT_CASE(report_features),
+    DHT_CASE(smull_edges_and_random),
+    DHT_CASE(smlal_wraps_like_hardware),
+    DHT_CASE(ssat_every_width_and_constant_forms),
+    DHT_CASE(clz_all_bit_positions),
+    DHT_CASE(qadd_saturates),
+};
+DHT_MAIN(cases)
