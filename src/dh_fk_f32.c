@@ -1,0 +1,219 @@
+/*
+ * dh_fk_f32.c - float forward kinematics.
+ *
+ * Cost per joint: one dh_sincos_f32 and one in-place affine update of the
+ * accumulated frame, written out from the DH definitions (seed 003) with
+ * sin/cos(alpha) taken from the description (computed once):
+ *
+ * Standard, T <- T * Rz(theta) Tz(d) Tx(a) Rx(alpha), columns n o a p:
+ *   n1 = ct n + st o,  u = ct o - st n
+ *   p <- p + d a + a_len n1      (Tz along the old z, Tx along the new x)
+ *   n <- n1,  o <- ca u + sa a,  a <- ca a - sa u
+ * Modified, T <- T * Rx(alpha) Tx(a) Rz(theta) Tz(d):
+ *   o1 = ca o + sa a,  a1 = ca a - sa o
+ *   p <- p + a_len n + d a1
+ *   n <- ct n + st o1,  o <- ct o1 - st n,  a <- a1
+ * That is 10 multiplications per row, 30 per joint, against 36 for a
+ * general affine product plus the link-matrix construction.
+ */
+#include "dhmath/dh_robot.h"
+#include "dhmath/dh_trig.h"
+
+static int is_finite(float x)
+{
+    return (x - x) == 0.0f;
+}
+
+/* One joint applied in place to the 3x4 part of T. */
+static void step_std(dh_mat4_f32 *T, float st, float ct, float sa, float ca, float a, float d)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        float nx = T->m[0][k], ox = T->m[1][k], ax = T->m[2][k];
+        float n1 = ct * nx + st * ox;
+        float u = ct * ox - st * nx;
+        T->m[3][k] = T->m[3][k] + d * ax + a * n1;
+        T->m[0][k] = n1;
+        T->m[1][k] = ca * u + sa * ax;
+        T->m[2][k] = ca * ax - sa * u;
+    }
+}
+
+static void step_mod(dh_mat4_f32 *T, float st, float ct, float sa, float ca, float a, float d)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        float nx = T->m[0][k], ox = T->m[1][k], ax = T->m[2][k];
+        float o1 = ca * ox + sa * ax;
+        float a1 = ca * ax - sa * ox;
+        T->m[3][k] = T->m[3][k] + a * nx + d * a1;
+        T->m[0][k] = ct * nx + st * o1;
+        T->m[1][k] = ct * o1 - st * nx;
+        T->m[2][k] = a1;
+    }
+}
+
+/* The link matrix itself (what a step applied to the identity gives). */
+static void link_direct(dh_mat4_f32 *A, dh_convention conv, float st, float ct, float sa, float ca,
+                        float a, float d)
+{
+    if (conv == DH_CONV_STANDARD) {
+        A->m[0][0] = ct;       A->m[0][1] = st;       A->m[0][2] = 0.0f;
+        A->m[1][0] = -st * ca; A->m[1][1] = ct * ca;  A->m[1][2] = sa;
+        A->m[2][0] = st * sa;  A->m[2][1] = -ct * sa; A->m[2][2] = ca;
+        A->m[3][0] = a * ct;   A->m[3][1] = a * st;   A->m[3][2] = d;
+    } else {
+        A->m[0][0] = ct;       A->m[0][1] = st * ca;  A->m[0][2] = st * sa;
+        A->m[1][0] = -st;      A->m[1][1] = ct * ca;  A->m[1][2] = ct * sa;
+        A->m[2][0] = 0.0f;     A->m[2][1] = -sa;      A->m[2][2] = ca;
+        A->m[3][0] = a;        A->m[3][1] = -sa * d;  A->m[3][2] = ca * d;
+    }
+    A->m[0][3] = 0.0f;
+    A->m[1][3] = 0.0f;
+    A->m[2][3] = 0.0f;
+    A->m[3][3] = 1.0f;
+}
+
+/* theta and d of joint j at value q (q and the sum already known finite). */
+static void joint_values(const dh_joint *j, float q, float *st, float *ct, float *d)
+{
+    if (j->type == DH_JOINT_REVOLUTE) {
+        (void)dh_sincos_f32(q + j->theta_deg, st, ct);
+        *d = j->d;
+    } else {
+        (void)dh_sincos_f32(j->theta_deg, st, ct);
+        *d = q + j->d;
+    }
+}
+
+/* DH_OK when every joint value and its sum with the offset is finite;
+ * DH_ERR_NAN for a non-finite q (checked first per joint), DH_ERR_OVERFLOW
+ * when q + offset overflows. */
+static dh_status check_q(const dh_robot *r, const float *q)
+{
+    uint32_t i;
+    for (i = 0u; i < r->n; i++) {
+        const dh_joint *j = &r->joint[i];
+        float off = (j->type == DH_JOINT_REVOLUTE) ? j->theta_deg : j->d;
+        if (!is_finite(q[i])) return DH_ERR_NAN;
+        if (!is_finite(q[i] + off)) return DH_ERR_OVERFLOW;
+    }
+    return DH_OK;
+}
+
+/* out = A * B for affine frames (bottom rows taken as 0 0 0 1); out must
+ * not alias A or B. */
+static void mul_affine(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
+{
+    int c, k;
+    for (c = 0; c < 4; c++) {
+        float b0 = B->m[c][0], b1 = B->m[c][1], b2 = B->m[c][2];
+        for (k = 0; k < 3; k++)
+            out->m[c][k] = A->m[0][k] * b0 + A->m[1][k] * b1 + A->m[2][k] * b2;
+    }
+    for (k = 0; k < 3; k++) out->m[3][k] += A->m[3][k];
+    out->m[0][3] = 0.0f;
+    out->m[1][3] = 0.0f;
+    out->m[2][3] = 0.0f;
+    out->m[3][3] = 1.0f;
+}
+
+static int frame_finite(const dh_mat4_f32 *T)
+{
+    int c, k;
+    for (c = 0; c < 4; c++)
+        for (k = 0; k < 3; k++)
+            if (!is_finite(T->m[c][k])) return 0;
+    return 1;
+}
+
+dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
+{
+    const dh_joint *j;
+    float st, ct, d;
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(A != NULL);
+    if (i >= r->n || (r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_ARG;
+    j = &r->joint[i];
+    {
+        float off = (j->type == DH_JOINT_REVOLUTE) ? j->theta_deg : j->d;
+        if (!is_finite(q)) return DH_ERR_NAN;
+        if (!is_finite(q + off)) return DH_ERR_OVERFLOW;
+    }
+    joint_values(j, q, &st, &ct, &d);
+    link_direct(A, r->conv, st, ct, j->sa, j->ca, j->a, d);
+    return DH_OK;
+}
+
+/* Shared body: frames may be NULL (end frame only), T_end may be NULL. */
+static dh_status fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *T_end)
+{
+    dh_mat4_f32 acc;
+    uint32_t i = 0u;
+    dh_status st;
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(q != NULL);
+    if (r->n == 0u || (r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_ARG;
+    st = check_q(r, q);
+    if (st != DH_OK) return st;
+
+    if (r->flags & DH_ROBOT_BASE_ID_F32) {
+        float s, c, d;
+        const dh_joint *j = &r->joint[0];
+        joint_values(j, q[0], &s, &c, &d);
+        link_direct(&acc, r->conv, s, c, j->sa, j->ca, j->a, d);
+        if (frames) frames[0] = acc;
+        i = 1u;
+    } else {
+        acc = r->base;
+    }
+    if (r->conv == DH_CONV_STANDARD) {
+        for (; i < r->n; i++) {
+            float s, c, d;
+            const dh_joint *j = &r->joint[i];
+            joint_values(j, q[i], &s, &c, &d);
+            step_std(&acc, s, c, j->sa, j->ca, j->a, d);
+            if (frames) {
+                acc.m[0][3] = 0.0f; acc.m[1][3] = 0.0f; acc.m[2][3] = 0.0f; acc.m[3][3] = 1.0f;
+                frames[i] = acc;
+            }
+        }
+    } else {
+        for (; i < r->n; i++) {
+            float s, c, d;
+            const dh_joint *j = &r->joint[i];
+            joint_values(j, q[i], &s, &c, &d);
+            step_mod(&acc, s, c, j->sa, j->ca, j->a, d);
+            if (frames) {
+                acc.m[0][3] = 0.0f; acc.m[1][3] = 0.0f; acc.m[2][3] = 0.0f; acc.m[3][3] = 1.0f;
+                frames[i] = acc;
+            }
+        }
+    }
+    acc.m[0][3] = 0.0f;
+    acc.m[1][3] = 0.0f;
+    acc.m[2][3] = 0.0f;
+    acc.m[3][3] = 1.0f;
+    if (T_end) {
+        if (r->flags & DH_ROBOT_TOOL_ID_F32) {
+            *T_end = acc;
+        } else {
+            mul_affine(T_end, &acc, &r->tool);
+        }
+        /* a non-finite chain frame always reaches T_end (x*inf, x*0*inf) */
+        return frame_finite(T_end) ? DH_OK : DH_ERR_OVERFLOW;
+    }
+    return frame_finite(&acc) ? DH_OK : DH_ERR_OVERFLOW;
+}
+
+dh_status dh_fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *T)
+{
+    DH_ASSERT(T != NULL);
+    return fk_f32(r, q, NULL, T);
+}
+
+dh_status dh_fk_frames_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *T_end)
+{
+    DH_ASSERT(frames != NULL);
+    return fk_f32(r, q, frames, T_end);
+}

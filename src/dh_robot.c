@@ -1,0 +1,273 @@
+/*
+ * dh_robot.c - building a robot description from float parameters
+ * (init, joints, limits, base/tool). The fixed-point constants of each
+ * float parameter are prepared here too, so one description serves both
+ * FK paths. The integer-only setters live in dh_robot_q.c.
+ */
+#include "dhmath/dh_robot.h"
+#include "dhmath/dh_trig.h"
+
+#define F32_MASK_NO (DH_ROBOT_F32_NO_JOINT | DH_ROBOT_F32_NO_BASE | DH_ROBOT_F32_NO_TOOL)
+#define Q_MASK_NO (DH_ROBOT_Q_NO_JOINT | DH_ROBOT_Q_NO_BASE | DH_ROBOT_Q_NO_TOOL)
+
+/* Recompute the summary bits from the reason bits. */
+static uint32_t summary(uint32_t f)
+{
+    f &= ~(DH_ROBOT_HAS_F32 | DH_ROBOT_HAS_Q);
+    if ((f & F32_MASK_NO) == 0u) f |= DH_ROBOT_HAS_F32;
+    if ((f & Q_MASK_NO) == 0u) f |= DH_ROBOT_HAS_Q;
+    return f;
+}
+
+/* NaN - NaN and Inf - Inf are NaN, which compares unequal to 0. */
+static int is_finite(float x)
+{
+    return (x - x) == 0.0f;
+}
+
+/*
+ * Round x * 2^frac to the nearest int32 (ties away from zero). Returns 1
+ * when the result is representable, 0 otherwise (out untouched). The
+ * scaling is exact (power of two); the remainder after truncation is exact
+ * because for |v| >= 2^23 a float has no fraction bits.
+ */
+static int to_fix(float x, unsigned frac, int32_t *out)
+{
+    float v = x * (float)((uint32_t)1u << frac);
+    float rem;
+    int32_t i;
+    if (!(v < 2147483648.0f) || !(v >= -2147483648.0f)) return 0;
+    i = (int32_t)v;
+    rem = v - (float)i;
+    if (rem >= 0.5f) {
+        if (i == INT32_MAX) return 0;
+        i++;
+    } else if (rem <= -0.5f) {
+        i--;
+    }
+    *out = i;
+    return 1;
+}
+
+/* Same, saturating to the int32 range instead of failing (limits). */
+static int32_t to_fix_sat(float x, unsigned frac)
+{
+    int32_t v;
+    if (to_fix(x, frac, &v)) return v;
+    return (x < 0.0f) ? INT32_MIN : INT32_MAX;
+}
+
+static int is_ident_f32(const dh_mat4_f32 *T)
+{
+    int c, r;
+    for (c = 0; c < 4; c++)
+        for (r = 0; r < 4; r++)
+            if (T->m[c][r] != ((c == r) ? 1.0f : 0.0f)) return 0;
+    return 1;
+}
+
+static int is_ident_q(const dh_frame_q *F)
+{
+    int c, r;
+    for (c = 0; c < 3; c++) {
+        if (F->p[c] != 0) return 0;
+        for (r = 0; r < 3; r++)
+            if (F->r[c][r] != ((c == r) ? DH_Q30_ONE : 0)) return 0;
+    }
+    return 1;
+}
+
+dh_status dh_robot_init(dh_robot *r, dh_convention conv)
+{
+    uint32_t i;
+    int c;
+    DH_ASSERT(r != NULL);
+    if (conv != DH_CONV_STANDARD && conv != DH_CONV_MODIFIED) return DH_ERR_ARG;
+    r->conv = conv;
+    r->n = 0u;
+    for (i = 0u; i < (uint32_t)DH_MAX_JOINTS; i++) {
+        dh_joint *j = &r->joint[i];
+        j->type = DH_JOINT_REVOLUTE;
+        j->a = 0.0f;
+        j->d = 0.0f;
+        j->alpha_deg = 0.0f;
+        j->theta_deg = 0.0f;
+        j->qmin = 1.0f;
+        j->qmax = -1.0f;
+        j->sa = 0.0f;
+        j->ca = 1.0f;
+        j->a_q = 0;
+        j->d_q = 0;
+        j->alpha_q = 0;
+        j->theta_q = 0;
+        j->sa_q = 0;
+        j->ca_q = DH_Q30_ONE;
+        j->qmin_q = 1;
+        j->qmax_q = -1;
+    }
+    for (c = 0; c < 4; c++) {
+        int k;
+        for (k = 0; k < 4; k++) {
+            r->base.m[c][k] = (c == k) ? 1.0f : 0.0f;
+            r->tool.m[c][k] = (c == k) ? 1.0f : 0.0f;
+        }
+    }
+    for (c = 0; c < 3; c++) {
+        int k;
+        r->base_q.p[c] = 0;
+        r->tool_q.p[c] = 0;
+        for (k = 0; k < 3; k++) {
+            r->base_q.r[c][k] = (c == k) ? DH_Q30_ONE : 0;
+            r->tool_q.r[c][k] = (c == k) ? DH_Q30_ONE : 0;
+        }
+    }
+    r->flags = summary(DH_ROBOT_BASE_ID_F32 | DH_ROBOT_TOOL_ID_F32 | DH_ROBOT_BASE_ID_Q |
+                       DH_ROBOT_TOOL_ID_Q);
+    return DH_OK;
+}
+
+dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float a, float d,
+                                 float alpha_deg, float theta_deg)
+{
+    dh_joint *j;
+    float sa, ca;
+    int32_t aq = 0, dq = 0, alq = 0, thq = 0;
+    int fits;
+    DH_ASSERT(r != NULL);
+    if (r->n >= (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    if (type != DH_JOINT_REVOLUTE && type != DH_JOINT_PRISMATIC) return DH_ERR_ARG;
+    if (!is_finite(a) || !is_finite(d) || !is_finite(alpha_deg) || !is_finite(theta_deg))
+        return DH_ERR_NAN;
+    (void)dh_sincos_f32(alpha_deg, &sa, &ca); /* finite input: cannot fail */
+
+    fits = to_fix(a, (unsigned)DH_QPOS_FRAC, &aq);
+    fits &= to_fix(d, (unsigned)DH_QPOS_FRAC, &dq);
+    fits &= to_fix(alpha_deg, 16u, &alq);
+    fits &= to_fix(theta_deg, 16u, &thq);
+
+    j = &r->joint[r->n];
+    j->type = type;
+    j->a = a;
+    j->d = d;
+    j->alpha_deg = alpha_deg;
+    j->theta_deg = theta_deg;
+    j->qmin = 1.0f;
+    j->qmax = -1.0f;
+    j->sa = sa;
+    j->ca = ca;
+    if (fits) {
+        j->a_q = aq;
+        j->d_q = dq;
+        j->alpha_q = alq;
+        j->theta_q = thq;
+        dh_sincos_q(alq, &j->sa_q, &j->ca_q);
+    } else {
+        j->a_q = 0;
+        j->d_q = 0;
+        j->alpha_q = 0;
+        j->theta_q = 0;
+        j->sa_q = 0;
+        j->ca_q = DH_Q30_ONE;
+        r->flags |= DH_ROBOT_Q_NO_JOINT;
+    }
+    j->qmin_q = 1;
+    j->qmax_q = -1;
+    r->n++;
+    r->flags = summary(r->flags);
+    return DH_OK;
+}
+
+dh_status dh_robot_set_limits_f32(dh_robot *r, uint32_t i, float qmin, float qmax)
+{
+    dh_joint *j;
+    unsigned frac;
+    DH_ASSERT(r != NULL);
+    if (i >= r->n) return DH_ERR_ARG;
+    if (!is_finite(qmin) || !is_finite(qmax)) return DH_ERR_NAN;
+    if (qmin > qmax) return DH_ERR_ARG;
+    j = &r->joint[i];
+    frac = (j->type == DH_JOINT_REVOLUTE) ? 16u : (unsigned)DH_QPOS_FRAC;
+    j->qmin = qmin;
+    j->qmax = qmax;
+    j->qmin_q = to_fix_sat(qmin, frac);
+    j->qmax_q = to_fix_sat(qmax, frac);
+    return DH_OK;
+}
+
+/*
+ * Shared by base and tool: validate, store the float frame, convert to Q.
+ * which: 0 base, 1 tool.
+ */
+static dh_status set_frame_f32(dh_robot *r, const dh_mat4_f32 *src, int which)
+{
+    dh_frame_q F;
+    dh_mat4_f32 T;
+    int c, k, fits = 1;
+    uint32_t f;
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(src != NULL);
+    T = *src;
+    for (c = 0; c < 4; c++)
+        for (k = 0; k < 4; k++)
+            if (!is_finite(T.m[c][k])) return DH_ERR_NAN;
+    if (T.m[0][3] != 0.0f || T.m[1][3] != 0.0f || T.m[2][3] != 0.0f || T.m[3][3] != 1.0f)
+        return DH_ERR_NOT_RIGID;
+    for (c = 0; c < 3; c++) {
+        fits &= to_fix(T.m[3][c], (unsigned)DH_QPOS_FRAC, &F.p[c]);
+        for (k = 0; k < 3; k++) {
+            fits &= to_fix(T.m[c][k], 30u, &F.r[c][k]);
+            /* the fixed path keeps rotation entries symmetric: no INT32_MIN */
+            if (fits && F.r[c][k] == INT32_MIN) fits = 0;
+        }
+    }
+    f = r->flags;
+    if (which == 0) {
+        r->base = T;
+        f &= ~(DH_ROBOT_F32_NO_BASE | DH_ROBOT_BASE_ID_F32 | DH_ROBOT_Q_NO_BASE);
+        if (is_ident_f32(&T)) f |= DH_ROBOT_BASE_ID_F32;
+        if (fits) {
+            r->base_q = F;
+            f &= ~DH_ROBOT_BASE_ID_Q;
+            if (is_ident_q(&F)) f |= DH_ROBOT_BASE_ID_Q;
+        } else {
+            f |= DH_ROBOT_Q_NO_BASE;
+        }
+    } else {
+        r->tool = T;
+        f &= ~(DH_ROBOT_F32_NO_TOOL | DH_ROBOT_TOOL_ID_F32 | DH_ROBOT_Q_NO_TOOL);
+        if (is_ident_f32(&T)) f |= DH_ROBOT_TOOL_ID_F32;
+        if (fits) {
+            r->tool_q = F;
+            f &= ~DH_ROBOT_TOOL_ID_Q;
+            if (is_ident_q(&F)) f |= DH_ROBOT_TOOL_ID_Q;
+        } else {
+            f |= DH_ROBOT_Q_NO_TOOL;
+        }
+    }
+    r->flags = summary(f);
+    return DH_OK;
+}
+
+dh_status dh_robot_set_base_f32(dh_robot *r, const dh_mat4_f32 *base)
+{
+    return set_frame_f32(r, base, 0);
+}
+
+dh_status dh_robot_set_tool_f32(dh_robot *r, const dh_mat4_f32 *tool)
+{
+    return set_frame_f32(r, tool, 1);
+}
+
+dh_status dh_robot_check_limits_f32(const dh_robot *r, const float *q)
+{
+    uint32_t i;
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(q != NULL);
+    for (i = 0u; i < r->n; i++)
+        if (!is_finite(q[i])) return DH_ERR_NAN;
+    for (i = 0u; i < r->n; i++) {
+        const dh_joint *j = &r->joint[i];
+        if (j->qmin <= j->qmax && (q[i] < j->qmin || q[i] > j->qmax)) return DH_ERR_LIMIT;
+    }
+    return DH_OK;
+}

@@ -1,0 +1,115 @@
+/*
+ * dh_robot_q.c - the integer-only half of the robot description: joints,
+ * limits and base/tool given directly in fixed point. No float, no libm,
+ * no 64-bit division (checked with arm-none-eabi-nm on the object).
+ */
+#include "dhmath/dh_robot.h"
+#include "dhmath/dh_trig.h"
+
+#define F32_MASK_NO (DH_ROBOT_F32_NO_JOINT | DH_ROBOT_F32_NO_BASE | DH_ROBOT_F32_NO_TOOL)
+#define Q_MASK_NO (DH_ROBOT_Q_NO_JOINT | DH_ROBOT_Q_NO_BASE | DH_ROBOT_Q_NO_TOOL)
+
+/* Recompute the summary bits from the reason bits (same rule as dh_robot.c). */
+static uint32_t summary(uint32_t f)
+{
+    f &= ~(DH_ROBOT_HAS_F32 | DH_ROBOT_HAS_Q);
+    if ((f & F32_MASK_NO) == 0u) f |= DH_ROBOT_HAS_F32;
+    if ((f & Q_MASK_NO) == 0u) f |= DH_ROBOT_HAS_Q;
+    return f;
+}
+
+dh_status dh_robot_add_joint_q(dh_robot *r, dh_joint_type type, dh_qpos a, dh_qpos d,
+                               dh_q16 alpha_deg, dh_q16 theta_deg)
+{
+    dh_joint *j;
+    DH_ASSERT(r != NULL);
+    if (r->n >= (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    if (type != DH_JOINT_REVOLUTE && type != DH_JOINT_PRISMATIC) return DH_ERR_ARG;
+    /* The float fields of slot n still hold the zeros written by
+     * dh_robot_init() (joints are only ever appended). */
+    j = &r->joint[r->n];
+    j->type = type;
+    j->a_q = a;
+    j->d_q = d;
+    j->alpha_q = alpha_deg;
+    j->theta_q = theta_deg;
+    dh_sincos_q(alpha_deg, &j->sa_q, &j->ca_q);
+    j->qmin_q = 1;
+    j->qmax_q = -1;
+    r->n++;
+    r->flags = summary(r->flags | DH_ROBOT_F32_NO_JOINT);
+    return DH_OK;
+}
+
+dh_status dh_robot_set_limits_q(dh_robot *r, uint32_t i, int32_t qmin, int32_t qmax)
+{
+    DH_ASSERT(r != NULL);
+    if (i >= r->n || qmin > qmax) return DH_ERR_ARG;
+    r->joint[i].qmin_q = qmin;
+    r->joint[i].qmax_q = qmax;
+    return DH_OK;
+}
+
+dh_status dh_robot_check_limits_q(const dh_robot *r, const int32_t *q)
+{
+    uint32_t i;
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(q != NULL);
+    for (i = 0u; i < r->n; i++) {
+        const dh_joint *j = &r->joint[i];
+        if (j->qmin_q <= j->qmax_q && (q[i] < j->qmin_q || q[i] > j->qmax_q)) return DH_ERR_LIMIT;
+    }
+    return DH_OK;
+}
+
+/* Copy with rotation entries INT32_MIN raised to -INT32_MAX (the fixed FK
+ * keeps rotation entries symmetric so that two-term products cannot
+ * overflow 64 bits); returns 1 when the result is the identity. */
+static int copy_frame(dh_frame_q *dst, const dh_frame_q *src)
+{
+    int c, k, ident = 1;
+    dh_frame_q F = *src;
+    for (c = 0; c < 3; c++) {
+        if (F.p[c] != 0) ident = 0;
+        for (k = 0; k < 3; k++) {
+            if (F.r[c][k] == INT32_MIN) F.r[c][k] = -INT32_MAX;
+            if (F.r[c][k] != ((c == k) ? DH_Q30_ONE : 0)) ident = 0;
+        }
+    }
+    *dst = F;
+    return ident;
+}
+
+dh_status dh_robot_set_base_q(dh_robot *r, const dh_frame_q *base)
+{
+    uint32_t f;
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(base != NULL);
+    f = r->flags & ~(DH_ROBOT_Q_NO_BASE | DH_ROBOT_BASE_ID_Q | DH_ROBOT_F32_NO_BASE);
+    if (copy_frame(&r->base_q, base)) {
+        f |= DH_ROBOT_BASE_ID_Q;
+        /* identity on both paths: the float base is still current */
+        if ((f & DH_ROBOT_BASE_ID_F32) == 0u) f |= DH_ROBOT_F32_NO_BASE;
+    } else {
+        f |= DH_ROBOT_F32_NO_BASE;
+    }
+    r->flags = summary(f);
+    return DH_OK;
+}
+
+dh_status dh_robot_set_tool_q(dh_robot *r, const dh_frame_q *tool)
+{
+    uint32_t f;
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(tool != NULL);
+    f = r->flags & ~(DH_ROBOT_Q_NO_TOOL | DH_ROBOT_TOOL_ID_Q | DH_ROBOT_F32_NO_TOOL);
+    if (copy_frame(&r->tool_q, tool)) {
+        f |= DH_ROBOT_TOOL_ID_Q;
+        /* identity on both paths: the float tool is still current */
+        if ((f & DH_ROBOT_TOOL_ID_F32) == 0u) f |= DH_ROBOT_F32_NO_TOOL;
+    } else {
+        f |= DH_ROBOT_F32_NO_TOOL;
+    }
+    r->flags = summary(f);
+    return DH_OK;
+}
