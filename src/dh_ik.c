@@ -25,20 +25,23 @@
 #include <math.h>
 
 #define IK_RAD2DEG 57.295779513082320876798f
-#define IK_POLISH_STEPS 2u      /* refinement steps after the tolerance is met */
-#define IK_STALL_STEPS 12u      /* steps without 1e-4 relative progress -> stalled */
+#define IK_POLISH_STEPS 3u      /* refinement steps after the tolerance is met */
+#define IK_STALL_STEPS 4u       /* steps in a row with less than 1% progress: stalled */
 #define IK_MU_MAX 1e12f
+#define IK_MU_MIN 0.1f         /* lowest multiplier of E in the damping */
+#define IK_STALL_RATIO 0.99f    /* E must drop below this fraction to count as progress */
 
 static int ik_finite(float x) { return fabsf(x) <= FLT_MAX; }
 
 void dh_ik_params_default(dh_ik_params *p)
 {
     DH_ASSERT(p != NULL);
-    p->max_iter = 100u;
+    p->max_iter = 400u;
     p->mask = DH_IK_FULL;
     p->tol_pos = 1e-6f;
     p->tol_rot = 1e-5f;
     p->w_rot = 1.0f;
+    p->restarts = 40u;
 }
 
 /* Workspace layout (floats), n joints. */
@@ -47,7 +50,9 @@ typedef struct {
     float *H;           /* n*n: normal matrix, then its Cholesky factor */
     float *g, *dx;      /* n each */
     float *qa, *qb;     /* n each: current / trial joint values (deg or length) */
-    float *sc;          /* n: joint unit per scaled variable */
+    float *sc;          /* n: joint unit per scaled variable (deg per rad, or L) */
+    float *cs;          /* n: Jacobian column scale (1 for revolute, L for prismatic) */
+    float *qbest;       /* n: best configuration over all attempts */
     float *ea, *eb;     /* 6 each: raw error (pos, rot) at current / trial */
 } ik_ws;
 
@@ -61,7 +66,9 @@ static void ik_layout(ik_ws *w, float *work, uint32_t n)
     w->qa = w->dx + n;
     w->qb = w->qa + n;
     w->sc = w->qb + n;
-    w->ea = w->sc + n;
+    w->cs = w->sc + n;
+    w->qbest = w->cs + n;
+    w->ea = w->qbest + n;
     w->eb = w->ea + 6;
 }
 
@@ -124,7 +131,7 @@ static int ik_solve(const ik_ws *w, uint32_t n, uint32_t free_bits, uint32_t mas
                 float wk = ik_row_w(mask, k, w_rot);
                 gi += wk * wk * w->Ja[k * n + i] * w->ea[k];
             }
-            gi *= w->sc[i];
+            gi *= w->cs[i];
         }
         g[i] = gi;
         for (j = 0; j <= i; j++) {
@@ -135,7 +142,7 @@ static int ik_solve(const ik_ws *w, uint32_t n, uint32_t free_bits, uint32_t mas
                     float wk = ik_row_w(mask, k, w_rot);
                     h += wk * wk * w->Ja[k * n + i] * w->Ja[k * n + j];
                 }
-                h *= w->sc[i] * w->sc[j];
+                h *= w->cs[i] * w->cs[j];
                 if (i == j) h += damp;
             } else if (i == j) {
                 h = 1.0f;
@@ -198,15 +205,74 @@ static float ik_length_scale(const dh_robot *r)
     return L;
 }
 
+/*
+ * One projected LM step from w->qa into w->qb. Joints on a bound whose step
+ * points outward are frozen and the system is solved again (at most n + 1
+ * solves); the rest of the step is clamped into the box.
+ * Returns 1 if qb differs from qa, 0 for an empty step, -1 if the normal
+ * matrix could not be factored.
+ */
+static int ik_step(const dh_robot *r, const ik_ws *w, const dh_ik_params *p, uint32_t all_bits,
+                   float damp)
+{
+    uint32_t n = r->n, free_bits = all_bits, pass, i;
+    int moved = 0;
+
+    for (pass = 0; pass <= n; pass++) {
+        uint32_t frozen = 0u;
+        if (ik_solve(w, n, free_bits, p->mask, p->w_rot, damp) != 0) return -1;
+        for (i = 0; i < n; i++) {
+            const dh_joint *jt = &r->joint[i];
+            float dq;
+            if (((free_bits >> i) & 1u) == 0u || jt->qmin > jt->qmax) continue;
+            dq = w->dx[i] * w->sc[i];
+            if ((w->qa[i] <= jt->qmin && dq < 0.0f) || (w->qa[i] >= jt->qmax && dq > 0.0f))
+                frozen |= 1u << i;
+        }
+        if (frozen == 0u) break;
+        free_bits &= ~frozen;
+    }
+    for (i = 0; i < n; i++) {
+        float dq = ((free_bits >> i) & 1u) ? w->dx[i] * w->sc[i] : 0.0f;
+        w->qb[i] = ik_clamp(&r->joint[i], w->qa[i] + dq);
+        if (w->qb[i] != w->qa[i]) moved = 1;
+    }
+    return moved;
+}
+
+/* Deterministic restart point: uniform in the box for limited joints,
+ * q0 +- 180 deg (revolute) or q0 +- L (prismatic) for free joints. */
+static void ik_sample(const dh_robot *r, const float *q0, float L, uint32_t *seed, float *qo)
+{
+    uint32_t i;
+    for (i = 0; i < r->n; i++) {
+        const dh_joint *jt = &r->joint[i];
+        uint32_t x = *seed;
+        float u;
+        x ^= x << 13;
+        x ^= x >> 17;
+        x ^= x << 5;
+        *seed = x;
+        u = (float)(x >> 8) * (1.0f / 16777216.0f);     /* [0, 1) */
+        if (jt->qmin <= jt->qmax) qo[i] = ik_clamp(jt, jt->qmin + u * (jt->qmax - jt->qmin));
+        else if (jt->type == DH_JOINT_REVOLUTE) qo[i] = q0[i] + (u * 360.0f - 180.0f);
+        else qo[i] = q0[i] + (2.0f * u - 1.0f) * L;
+    }
+}
+
+typedef struct {
+    float E, ep, er;
+} ik_err;
+
 dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q0, float *q,
                     const dh_ik_params *p, float *work, size_t work_len, dh_ik_result *res)
 {
     ik_ws w;
-    uint32_t n, i, iter = 0u, stall = 0u, polish = 0u;
+    ik_err cur, best;
+    uint32_t n, i, iter = 0u, stall = 0u, polish = 0u, restarts, seed = 0x2545F491u;
     uint32_t all_bits;
     float L, wbar, mu = 1.0f;
-    float Ea, ep_a, er_a;
-    int conv, stalled = 0, singular = 0;
+    int conv, best_conv = 0, end = 0;   /* end: 1 stalled, 2 singular (last attempt) */
     dh_status st;
 
     DH_ASSERT(r != NULL);
@@ -234,80 +300,92 @@ dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q
     L = ik_length_scale(r);
     wbar = DH_IK_WBAR * L * L;
     all_bits = (n >= 32u) ? 0xFFFFFFFFu : ((1u << n) - 1u);
+    restarts = p->restarts;
     for (i = 0; i < n; i++) {
         const dh_joint *jt = &r->joint[i];
         w.sc[i] = (jt->type == DH_JOINT_REVOLUTE) ? IK_RAD2DEG : L;
+        w.cs[i] = (jt->type == DH_JOINT_REVOLUTE) ? 1.0f : L;
         w.qa[i] = ik_clamp(jt, q0[i]);
     }
-    st = ik_eval(r, target, w.qa, p, w.Ja, w.ea, &Ea, &ep_a, &er_a);
+    st = ik_eval(r, target, w.qa, p, w.Ja, w.ea, &cur.E, &cur.ep, &cur.er);
     if (st != DH_OK) return st;
-    conv = (ep_a <= p->tol_pos && er_a <= p->tol_rot);
+    conv = (cur.ep <= p->tol_pos && cur.er <= p->tol_rot);
+    best = cur;
+    best_conv = conv;
+    for (i = 0; i < n; i++) w.qbest[i] = w.qa[i];
 
     while (iter < p->max_iter && !(conv && polish >= IK_POLISH_STEPS)) {
-        uint32_t free_bits = all_bits, pass;
-        float Eb, ep_b, er_b;
-        int moved = 0;
-
-        /* solve, freezing joints pushed outward at a bound (at most n passes) */
-        for (pass = 0; pass <= n; pass++) {
-            uint32_t frozen = 0u;
-            if (ik_solve(&w, n, free_bits, p->mask, p->w_rot, mu * Ea + wbar) != 0) {
-                singular = 1;
-                break;
-            }
-            for (i = 0; i < n; i++) {
-                const dh_joint *jt = &r->joint[i];
-                float dq;
-                if (((free_bits >> i) & 1u) == 0u || jt->qmin > jt->qmax) continue;
-                dq = w.dx[i] * w.sc[i];
-                if ((w.qa[i] <= jt->qmin && dq < 0.0f) || (w.qa[i] >= jt->qmax && dq > 0.0f))
-                    frozen |= 1u << i;
-            }
-            if (frozen == 0u) break;
-            free_bits &= ~frozen;
-        }
-        if (singular) break;
-        for (i = 0; i < n; i++) {
-            float dq = ((free_bits >> i) & 1u) ? w.dx[i] * w.sc[i] : 0.0f;
-            w.qb[i] = ik_clamp(&r->joint[i], w.qa[i] + dq);
-            if (w.qb[i] != w.qa[i]) moved = 1;
-        }
-        if (!moved) {           /* the projected step is empty: nothing left to do */
-            stalled = 1;
-            break;
-        }
-        st = ik_eval(r, target, w.qb, p, w.Jb, w.eb, &Eb, &ep_b, &er_b);
-        iter++;
-        if (st == DH_OK && Eb < Ea) {
-            float *t;
-            stall = (Eb < Ea * (1.0f - 1e-4f)) ? 0u : stall + 1u;
-            t = w.Ja; w.Ja = w.Jb; w.Jb = t;
-            t = w.ea; w.ea = w.eb; w.eb = t;
-            t = w.qa; w.qa = w.qb; w.qb = t;
-            Ea = Eb;
-            ep_a = ep_b;
-            er_a = er_b;
-            mu = (mu > 4.0f) ? mu * 0.25f : 1.0f;
-            if (conv) polish++;
-            conv = (ep_a <= p->tol_pos && er_a <= p->tol_rot);
+        ik_err tr;
+        int k = ik_step(r, &w, p, all_bits, mu * cur.E + wbar);
+        end = 0;
+        if (k < 0) {
+            end = 2;
+        } else if (k == 0) {
+            end = 1;            /* empty projected step: nothing left to do */
         } else {
-            /* rejected (higher error, or the trial could not be evaluated) */
-            stall++;
-            mu *= 10.0f;
-            if (conv) polish = IK_POLISH_STEPS;   /* at the float floor */
+            st = ik_eval(r, target, w.qb, p, w.Jb, w.eb, &tr.E, &tr.ep, &tr.er);
+            iter++;
+            if (st == DH_OK && tr.E < cur.E) {
+                float *t;
+                stall = (tr.E < cur.E * IK_STALL_RATIO) ? 0u : stall + 1u;
+                t = w.Ja; w.Ja = w.Jb; w.Jb = t;
+                t = w.ea; w.ea = w.eb; w.eb = t;
+                t = w.qa; w.qa = w.qb; w.qb = t;
+                if (conv) polish++;
+                cur = tr;
+                mu = (mu > 4.0f * IK_MU_MIN) ? mu * 0.25f : IK_MU_MIN;
+                if (!conv && cur.ep <= p->tol_pos && cur.er <= p->tol_rot) {
+                    conv = 1;
+                    mu = IK_MU_MIN;     /* refine with the least damping */
+                }
+            } else {
+                /* rejected (higher error, or the trial could not be evaluated) */
+                stall++;
+                mu *= 10.0f;
+                if (conv) polish = IK_POLISH_STEPS;   /* at the float floor */
+            }
+            if (!conv && (stall >= IK_STALL_STEPS || mu > IK_MU_MAX)) end = 1;
         }
-        if (!conv && (stall >= IK_STALL_STEPS || mu > IK_MU_MAX)) {
-            stalled = 1;
+        if (end == 0) continue;
+        /* this attempt is over (local minimum / stuck at limits / singular) */
+        if (cur.E < best.E) {
+            best = cur;
+            best_conv = conv;
+            for (i = 0; i < n; i++) w.qbest[i] = w.qa[i];
+        }
+        if (conv) break;
+        /* restart from a deterministic pseudo-random point in the box (a
+         * point where FK is not evaluable is skipped) */
+        st = DH_ERR_NO_CONVERGENCE;
+        while (restarts > 0u && iter < p->max_iter) {
+            restarts--;
+            ik_sample(r, q0, L, &seed, w.qa);
+            st = ik_eval(r, target, w.qa, p, w.Ja, w.ea, &cur.E, &cur.ep, &cur.er);
+            iter++;
+            if (st == DH_OK) break;
+        }
+        if (st != DH_OK) {
+            cur.E = FLT_MAX;    /* nothing new: best stays */
             break;
         }
+        conv = (cur.ep <= p->tol_pos && cur.er <= p->tol_rot);
+        mu = 1.0f;
+        stall = 0u;
+        polish = 0u;
+        end = 0;
+    }
+    if (cur.E < best.E) {
+        best = cur;
+        best_conv = conv;
+        for (i = 0; i < n; i++) w.qbest[i] = w.qa[i];
     }
 
-    for (i = 0; i < n; i++) q[i] = w.qa[i];
+    for (i = 0; i < n; i++) q[i] = w.qbest[i];
     res->iterations = iter;
-    res->err_pos = ep_a;
-    res->err_rot = er_a;
-    if (conv) return DH_OK;
-    if (singular) return DH_ERR_SINGULAR;
-    if (stalled) return DH_ERR_UNREACHABLE;
+    res->err_pos = best.ep;
+    res->err_rot = best.er;
+    if (best_conv) return DH_OK;
+    if (end == 1) return DH_ERR_UNREACHABLE;
+    if (end == 2) return DH_ERR_SINGULAR;
     return DH_ERR_NO_CONVERGENCE;
 }

@@ -126,6 +126,7 @@ typedef struct {
     float tol_pos;       /**< position tolerance (length unit), >= 0, on the norm of the masked position components */
     float tol_rot;       /**< orientation tolerance (rad), >= 0, on the norm of the masked rotation-vector components */
     float w_rot;         /**< weight of orientation vs position error (length unit per rad), > 0 */
+    uint32_t restarts;   /**< restarts from deterministic pseudo-random configurations after a stall (local minimum), within max_iter */
 } dh_ik_params;
 
 /** IK outcome figures (for the returned configuration). */
@@ -139,10 +140,10 @@ typedef struct {
  * Sugihara's constant damping bias, relative to the robot's characteristic
  * length L squared: W_N = E_k + DH_IK_WBAR * L^2.
  */
-#define DH_IK_WBAR 1e-3f
+#define DH_IK_WBAR 1e-7f
 
-/** Workspace floats needed by dh_ik_f32 for an n-joint robot: n^2 + 17 n + 12. */
-#define DH_IK_WORK_FLOATS(n) ((n) * (n) + 17u * (n) + 12u)
+/** Workspace floats needed by dh_ik_f32 for an n-joint robot: n^2 + 19 n + 12. */
+#define DH_IK_WORK_FLOATS(n) ((n) * (n) + 19u * (n) + 12u)
 
 /**
  * @brief Defaults for a robot described in metres: max_iter 100, mask
