@@ -116,12 +116,31 @@ dh_status dh_euler_to_mat3_f32(dh_mat3_f32 *R, dh_euler_seq seq, const float ang
     return DH_OK;
 }
 
-/* radians -> degrees in (-180, 180] */
-static float dh_euler_deg_pm180(float rad)
+/*
+ * atan2(y, x) in DEGREES, in (-180, 180]. atan2f is only ever asked for an
+ * angle of at most 45 degrees and the result is formed as phi, 90 - phi,
+ * -90 + phi, 180 - phi or -180 + phi, so the result near +-90 and +-180 is
+ * not limited by the float resolution of the radian value (2.4e-7 rad at
+ * pi) but only by the final rounding in degrees. atan2(+-0, x < 0) is 180.
+ */
+static float dh_euler_atan2_deg(float y, float x)
 {
-    float d = rad * DH_EULER_RAD2DEG;
-    if (d > 180.0f || d <= -180.0f) d = 180.0f; /* only +-pi (rounded) reaches here */
-    return d + 0.0f;
+    float ax = fabsf(x), ay = fabsf(y), d;
+    if (ax == 0.0f && ay == 0.0f) {
+        d = 0.0f;                                               /* undefined: 0 */
+    } else if (ay <= ax && x > 0.0f) {
+        d = atan2f(y, x) * DH_EULER_RAD2DEG;                    /* [-45, 45] */
+    } else if (ay > ax && y > 0.0f) {
+        d = 90.0f - atan2f(x, y) * DH_EULER_RAD2DEG;            /* (45, 135) */
+    } else if (ay > ax) {
+        d = -90.0f + atan2f(x, -y) * DH_EULER_RAD2DEG;          /* (-135, -45) */
+    } else if (!(y < 0.0f)) {
+        d = 180.0f - atan2f(y, -x) * DH_EULER_RAD2DEG;          /* [135, 180] */
+    } else {
+        d = -180.0f + atan2f(-y, -x) * DH_EULER_RAD2DEG;        /* (-180, -135] */
+    }
+    if (d > 180.0f || d <= -180.0f) d = 180.0f;
+    return d + 0.0f; /* no -0 */
 }
 
 static float dh_euler_clamp(float d, float lo, float hi)
@@ -132,7 +151,7 @@ static float dh_euler_clamp(float d, float lo, float hi)
 }
 
 /*
- * Intrinsic angles (a, b, c), in radians, of R = Ri(a) Rj(b) Rk(c).
+ * Intrinsic angles (a, b, c), in degrees, of R = Ri(a) Rj(b) Rk(c).
  * zero_first == 0: b and c are read from row i and a is fitted to the
  * residual R Rk(c)^T = Ri(a) Rj(b); at the pole c = 0.
  * zero_first == 1: a and b are read from column k and c is fitted to the
@@ -152,11 +171,11 @@ static void dh_euler_solve(const dh_mat3_f32 *R, int i, int j, int k, int zero_f
          *   column k = s sb e_i - s cb sa e_j + cb ca e_k          */
         if (!zero_first) {
             n = sqrtf(RR(i, i) * RR(i, i) + RR(i, j) * RR(i, j)); /* cos b */
-            b = atan2f(s * RR(i, k), n);
+            b = dh_euler_atan2_deg(s * RR(i, k), n);
             if (n <= DH_EULER_POLE_TOL) {
                 c = 0.0f; cc = 1.0f; sc = 0.0f;
             } else {
-                c = atan2f(-s * RR(i, j), RR(i, i));
+                c = dh_euler_atan2_deg(-s * RR(i, j), RR(i, i));
                 cc = RR(i, i) / n;
                 sc = -s * RR(i, j) / n;
             }
@@ -164,14 +183,14 @@ static void dh_euler_solve(const dh_mat3_f32 *R, int i, int j, int k, int zero_f
              * Rk(-c) e_j = cc e_j + s sc e_i */
             p = cc * RR(j, j) + s * sc * RR(j, i);
             q = cc * RR(k, j) + s * sc * RR(k, i);
-            a = atan2f(s * q, p);
+            a = dh_euler_atan2_deg(s * q, p);
         } else {
             n = sqrtf(RR(j, k) * RR(j, k) + RR(k, k) * RR(k, k)); /* cos b */
-            b = atan2f(s * RR(i, k), n);
+            b = dh_euler_atan2_deg(s * RR(i, k), n);
             if (n <= DH_EULER_POLE_TOL) {
                 a = 0.0f; ca = 1.0f; sa = 0.0f;
             } else {
-                a = atan2f(-s * RR(j, k), RR(k, k));
+                a = dh_euler_atan2_deg(-s * RR(j, k), RR(k, k));
                 ca = RR(k, k) / n;
                 sa = -s * RR(j, k) / n;
             }
@@ -179,7 +198,7 @@ static void dh_euler_solve(const dh_mat3_f32 *R, int i, int j, int k, int zero_f
              * = cc e_j + s sc e_i (as a row) */
             p = ca * RR(j, j) + s * sa * RR(k, j);
             q = ca * RR(j, i) + s * sa * RR(k, i);
-            c = atan2f(s * q, p);
+            c = dh_euler_atan2_deg(s * q, p);
         }
     } else {
         /* proper Euler, k == i:
@@ -187,11 +206,11 @@ static void dh_euler_solve(const dh_mat3_f32 *R, int i, int j, int k, int zero_f
          *   column i = cb e_i + sb sa e_j - s sb ca e_l           */
         if (!zero_first) {
             n = sqrtf(RR(i, j) * RR(i, j) + RR(i, l) * RR(i, l)); /* sin b */
-            b = atan2f(n, RR(i, i));
+            b = dh_euler_atan2_deg(n, RR(i, i));
             if (n <= DH_EULER_POLE_TOL) {
                 c = 0.0f; cc = 1.0f; sc = 0.0f;
             } else {
-                c = atan2f(RR(i, j), s * RR(i, l));
+                c = dh_euler_atan2_deg(RR(i, j), s * RR(i, l));
                 sc = RR(i, j) / n;
                 cc = s * RR(i, l) / n;
             }
@@ -199,21 +218,21 @@ static void dh_euler_solve(const dh_mat3_f32 *R, int i, int j, int k, int zero_f
              * Ri(-c) e_j = cc e_j - s sc e_l */
             p = cc * RR(j, j) - s * sc * RR(j, l);
             q = cc * RR(l, j) - s * sc * RR(l, l);
-            a = atan2f(s * q, p);
+            a = dh_euler_atan2_deg(s * q, p);
         } else {
             n = sqrtf(RR(j, i) * RR(j, i) + RR(l, i) * RR(l, i)); /* sin b */
-            b = atan2f(n, RR(i, i));
+            b = dh_euler_atan2_deg(n, RR(i, i));
             if (n <= DH_EULER_POLE_TOL) {
                 a = 0.0f; ca = 1.0f; sa = 0.0f;
             } else {
-                a = atan2f(RR(j, i), -s * RR(l, i));
+                a = dh_euler_atan2_deg(RR(j, i), -s * RR(l, i));
                 sa = RR(j, i) / n;
                 ca = -s * RR(l, i) / n;
             }
             /* row j of Ri(a)^T R = e_j^T Ri(c) = cc e_j - s sc e_l */
             p = ca * RR(j, j) + s * sa * RR(l, j);
             q = ca * RR(j, l) + s * sa * RR(l, l);
-            c = atan2f(-s * q, p);
+            c = dh_euler_atan2_deg(-s * q, p);
         }
     }
     out[0] = a;
@@ -226,7 +245,7 @@ dh_status dh_mat3_to_euler_f32(const dh_mat3_f32 *R, dh_euler_seq seq, float ang
 {
     unsigned int u = (unsigned int)seq;
     const unsigned char *ax;
-    float rad[3], t;
+    float dg[3], t;
     int proper;
     dh_status st;
     DH_ASSERT(R != NULL && ang_deg != NULL);
@@ -235,19 +254,21 @@ dh_status dh_mat3_to_euler_f32(const dh_mat3_f32 *R, dh_euler_seq seq, float ang
     if (st != DH_OK) return st;
     if (u < 12u) {
         ax = dh_euler_axes[u];
-        dh_euler_solve(R, ax[0], ax[1], ax[2], 0, rad);
+        dh_euler_solve(R, ax[0], ax[1], ax[2], 0, dg);
     } else {
         /* extrinsic (a, b, c) = intrinsic (c, b, a) of the reversed axes;
          * the letter-third angle c is the intrinsic first one, which the
          * gimbal-lock policy sets to 0 at the pole */
         ax = dh_euler_axes[u - 12u];
-        dh_euler_solve(R, ax[2], ax[1], ax[0], 1, rad);
-        t = rad[0]; rad[0] = rad[2]; rad[2] = t;
+        dh_euler_solve(R, ax[2], ax[1], ax[0], 1, dg);
+        t = dg[0]; dg[0] = dg[2]; dg[2] = t;
     }
     proper = (ax[0] == ax[2]);
-    ang_deg[0] = dh_euler_deg_pm180(rad[0]);
-    ang_deg[1] = proper ? dh_euler_clamp(rad[1] * DH_EULER_RAD2DEG, 0.0f, 180.0f)
-                        : dh_euler_clamp(rad[1] * DH_EULER_RAD2DEG, -90.0f, 90.0f);
-    ang_deg[2] = dh_euler_deg_pm180(rad[2]);
+    /* the helper already returns (-180, 180]; the middle angle comes from
+     * atan2 with a non-negative x (Tait-Bryan) or y (proper) argument, so
+     * the clamps only guard the documented ranges */
+    ang_deg[0] = dg[0];
+    ang_deg[1] = proper ? dh_euler_clamp(dg[1], 0.0f, 180.0f) : dh_euler_clamp(dg[1], -90.0f, 90.0f);
+    ang_deg[2] = dg[2];
     return DH_OK;
 }
