@@ -240,39 +240,48 @@ void dh_mat4_set_rot_f32(dh_mat4_f32 *T, const dh_mat3_f32 *R)
 
 void dh_mat4_mul_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
 {
-    float a[4][4];
+    float a0[4], a1[4], a2[4], a3[4];
     int c, r;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    /* A is copied (it is needed for every output column); column c of B is
-     * read completely before column c of out is written, so out may alias
-     * A, B or both. */
-    for (c = 0; c < 4; c++) {
-        for (r = 0; r < 4; r++) a[c][r] = A->m[c][r];
+    /* The columns of A are copied (every output column needs all of them);
+     * column c of B is read completely before column c of out is written,
+     * so out may alias A, B or both. Column c of the product is the linear
+     * combination of the columns of A with the weights of column c of B. */
+    for (r = 0; r < 4; r++) {
+        a0[r] = A->m[0][r];
+        a1[r] = A->m[1][r];
+        a2[r] = A->m[2][r];
+        a3[r] = A->m[3][r];
     }
     for (c = 0; c < 4; c++) {
         const float b0 = B->m[c][0], b1 = B->m[c][1], b2 = B->m[c][2], b3 = B->m[c][3];
-        for (r = 0; r < 4; r++) {
-            out->m[c][r] = a[0][r] * b0 + a[1][r] * b1 + a[2][r] * b2 + a[3][r] * b3;
-        }
+        for (r = 0; r < 4; r++) out->m[c][r] = a0[r] * b0 + a1[r] * b1 + a2[r] * b2 + a3[r] * b3;
     }
 }
 
 void dh_mat4_mul_affine_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
 {
-    float a[4][3];
+    float a0[4], a1[4], a2[4], a3[4];
     int c, r;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    for (c = 0; c < 4; c++) {
-        for (r = 0; r < 3; r++) a[c][r] = A->m[c][r];
+    /* Same shape as dh_mat4_mul_f32 without the bottom row of B. Row 3 is
+     * computed 4-wide with the rest (so the code stays vector-shaped) and
+     * then overwritten with 0 0 0 1: the bottom row of A does not affect
+     * the result. */
+    for (r = 0; r < 4; r++) {
+        a0[r] = A->m[0][r];
+        a1[r] = A->m[1][r];
+        a2[r] = A->m[2][r];
+        a3[r] = A->m[3][r];
     }
     for (c = 0; c < 3; c++) {
         const float b0 = B->m[c][0], b1 = B->m[c][1], b2 = B->m[c][2];
-        for (r = 0; r < 3; r++) out->m[c][r] = a[0][r] * b0 + a[1][r] * b1 + a[2][r] * b2;
+        for (r = 0; r < 4; r++) out->m[c][r] = a0[r] * b0 + a1[r] * b1 + a2[r] * b2;
         out->m[c][3] = 0.0f;
     }
     {
         const float p0 = B->m[3][0], p1 = B->m[3][1], p2 = B->m[3][2];
-        for (r = 0; r < 3; r++) out->m[3][r] = a[0][r] * p0 + a[1][r] * p1 + a[2][r] * p2 + a[3][r];
+        for (r = 0; r < 4; r++) out->m[3][r] = a0[r] * p0 + a1[r] * p1 + a2[r] * p2 + a3[r];
         out->m[3][3] = 1.0f;
     }
 }
