@@ -27,12 +27,22 @@
  * building each link product directly from (sin theta, cos theta, sin alpha,
  * cos alpha, a, d) without forming the link matrix.
  *
- * Accuracy (measured, tests test_fk_f32 / test_fk_q, details in
- * docs/accuracy_fk.md): float FK vs a double reference on the same float
- * parameters, 10^4 random configurations within the joint limits:
- * Puma 560 / UR5 / Panda in metres: position <= 1.2e-6 m, rotation entries
- * <= 1.2e-6. Fixed FK (robots in mm, Q16.16 lengths): Puma 560 and UR5
- * position <= 5e-4 mm (0.5 um), rotation entries <= 64 LSB of Q2.30.
+ * Accuracy (measured on the host, tests test_fk_f32 / test_fk_q, details
+ * and all figures in docs/accuracy_fk.md), 10^4 random configurations
+ * within the joint limits per robot:
+ * - float FK vs a double reference on the same float parameters and joint
+ *   values, robots in metres: position <= 3.0e-7 m, rotation entries
+ *   <= 3.1e-7 (Puma 560, UR5, Panda);
+ * - fixed FK vs a double reference on the same Q inputs, robots in mm,
+ *   DH_QPOS_FRAC 16: position <= 3.6e-5 mm (target 5e-4 mm), rotation
+ *   entries <= 4.6 LSB of Q2.30 (target 64 LSB). Position error is about
+ *   half an LSB (2^-DH_QPOS_FRAC) per joint plus the rotation error times
+ *   the reach.
+ *
+ * Overflow (fixed path): rotation entries are kept in
+ * [-INT32_MAX, INT32_MAX] (INT32_MIN given to a setter is raised by one),
+ * so no intermediate 64-bit sum can wrap; any saturated output entry makes
+ * the function return DH_ERR_OVERFLOW.
  *
  * Stack: every function here uses less than 256 bytes. No function keeps
  * state; a dh_robot may be shared read-only between threads.
@@ -145,8 +155,8 @@ dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float a, float
 /**
  * @brief Append a joint from fixed-point parameters only (integer only).
  *
- * The float parameters of the joint are set to 0 and the float path is
- * marked unavailable (DH_ROBOT_F32_NO_JOINT: dh_fk_f32() returns
+ * The float parameters of the joint stay at the 0 written by
+ * dh_robot_init() and the float path is marked unavailable (DH_ROBOT_F32_NO_JOINT: dh_fk_f32() returns
  * DH_ERR_ARG). sin/cos(alpha) come from dh_sincos_q(alpha_deg). Limits: none.
  * @param r     robot (not NULL)
  * @param type  DH_JOINT_REVOLUTE or DH_JOINT_PRISMATIC
@@ -177,20 +187,26 @@ dh_status dh_robot_set_limits_q(dh_robot *r, uint32_t i, int32_t qmin, int32_t q
 /**
  * @brief Base frame (pre-multiplies the chain), float.
  *
- * Also sets the fixed-path base when it fits (rotation entries rounded to
- * Q2.30 must lie in [-2, 2), positions in the dh_qpos range); otherwise the
- * fixed path is marked unavailable (DH_ROBOT_Q_NO_BASE) until a base that
- * fits is set. The frame is not checked for rigidity (a non-rigid base is
- * applied as given). base may point to r->base.
- * @return DH_OK; DH_ERR_NAN when an element is not finite (r untouched).
+ * The bottom row must be exactly 0 0 0 1; the 3x3 part is used as given
+ * (rigid or not: the robot file format allows scale()). Also sets the
+ * fixed-path base when it fits (rotation entries rounded to Q2.30 must lie
+ * in (-2, 2), positions in the dh_qpos range); otherwise the fixed path is
+ * marked unavailable (DH_ROBOT_Q_NO_BASE) until a base that fits is set.
+ * An exact identity is recorded (DH_ROBOT_BASE_ID_*) so FK skips the
+ * product. base may point to r->base.
+ * @return DH_OK; DH_ERR_NAN when an element is not finite; DH_ERR_NOT_RIGID
+ *         when the bottom row is not 0 0 0 1. On error r is untouched.
  */
 dh_status dh_robot_set_base_f32(dh_robot *r, const dh_mat4_f32 *base);
 /** @brief Tool frame (post-multiplies the chain), float. Same contract as dh_robot_set_base_f32(). */
 dh_status dh_robot_set_tool_f32(dh_robot *r, const dh_mat4_f32 *tool);
 /**
- * @brief Base frame, fixed path only (integer only). The float base becomes
- *        stale: the float path is unavailable (DH_ROBOT_F32_NO_BASE) until
- *        dh_robot_set_base_f32() is called. Any values accepted.
+ * @brief Base frame, fixed path only (integer only). Any values accepted;
+ *        a rotation entry equal to INT32_MIN is stored as -INT32_MAX (see
+ *        the overflow note above). Unless both the new fixed base and the
+ *        float base are the identity, the float base becomes stale: the
+ *        float path is unavailable (DH_ROBOT_F32_NO_BASE) until
+ *        dh_robot_set_base_f32() is called. Clears DH_ROBOT_Q_NO_BASE.
  * @return DH_OK.
  */
 dh_status dh_robot_set_base_q(dh_robot *r, const dh_frame_q *base);
@@ -215,8 +231,8 @@ dh_status dh_robot_check_limits_q(const dh_robot *r, const int32_t *q);
  * @param q degrees (R) or length (P), finite.
  * @param A output (bottom row 0 0 0 1); untouched on error.
  * @return DH_OK; DH_ERR_ARG when i >= n or the float path is unavailable;
- *         DH_ERR_NAN for non-finite q; DH_ERR_OVERFLOW if d + q overflows
- *         to infinity (A written).
+ *         DH_ERR_NAN for non-finite q; DH_ERR_OVERFLOW when q + offset
+ *         overflows to infinity. On error A is untouched.
  */
 dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A);
 
@@ -224,18 +240,20 @@ dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A);
  * @brief End frame T = base * A_1(q_0) .. A_n(q_{n-1}) * tool (float).
  *
  * Does not check joint limits (see dh_robot_check_limits_f32()). Any finite
- * q is accepted (angle reduction is exact). For R joints with a non-zero
- * theta offset the sum q + offset is rounded to float once.
- * Measured max error vs double reference (10^4 configurations within
- * limits): Puma 560 1.0e-6 m / 6e-7, UR5 1.2e-6 m / 7e-7, Panda 6e-7 m / 6e-7
- * (position / rotation entry). See docs/accuracy_fk.md.
+ * q is accepted (angle reduction is exact, so the error does not grow with
+ * |q|). For R joints the sum q + theta offset is rounded to float once
+ * (<= 0.5 ulp of the sum). Measured max error vs a double reference
+ * (10^4 configurations within limits, metres): Puma 560 2.3e-7 m / 2.8e-7,
+ * UR5 2.1e-7 m / 2.9e-7, Panda 3.0e-7 m / 3.1e-7 (position / rotation
+ * entry). See docs/accuracy_fk.md.
  * @param r robot (not NULL), n >= 1
  * @param q n joint values (not NULL); must not alias T
  * @param T end frame; bottom row written as exactly 0 0 0 1
  * @return DH_OK; DH_ERR_ARG when n == 0 or the float path is unavailable
  *         (T untouched); DH_ERR_NAN when any q is NaN/Inf (T untouched);
- *         DH_ERR_OVERFLOW when the position is not finite (huge prismatic
- *         values or base/tool; T written).
+ *         DH_ERR_OVERFLOW when q + offset overflows to infinity (T
+ *         untouched) or when an entry of the result is not finite (huge
+ *         prismatic values, base or tool; T written).
  */
 dh_status dh_fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *T);
 
@@ -265,8 +283,9 @@ dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A);
  * reduced exactly, no wrap-around error), dh_qpos for P joints. 64-bit
  * accumulation, one rounding per entry and product; no float, no division.
  * Measured max error vs a double reference on the same Q inputs (robots in
- * mm, DH_QPOS_FRAC 16, 10^4 configurations): Puma 560 and UR5 position
- * <= 5e-4 mm, rotation entries <= 64 LSB (see docs/accuracy_fk.md).
+ * mm, DH_QPOS_FRAC 16, 10^4 configurations): Puma 560 2.3e-5 mm / 3.9 LSB,
+ * UR5 3.5e-5 mm / 4.2 LSB, Panda 3.6e-5 mm / 4.6 LSB (position / rotation
+ * entry of Q2.30); targets 5e-4 mm / 64 LSB. See docs/accuracy_fk.md.
  * @param T output, must not alias q.
  * @return DH_OK; DH_ERR_ARG when n == 0 (T untouched); DH_ERR_OVERFLOW
  *         when the fixed path is unavailable (constants did not fit: T
