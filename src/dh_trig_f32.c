@@ -3,23 +3,28 @@
  * whole-degree table (contract in include/dhmath/dh_trig.h).
  *
  * Method:
- *  1. |deg| is split exactly into whole degrees and a fraction f in [0, 1):
- *     below 2^23 by truncation to an integer (a - trunc(a) is exact in
- *     binary32), at or above 2^23 every float is an integer M * 2^e and the
- *     whole part modulo 360 is computed from M and e in integer arithmetic.
- *     The result n mod 360 is therefore exact for every finite float, so the
- *     error does not depend on the size of the angle.
- *  2. n = 90 k + m with m in 0..89 (quadrant k).
- *  3. sin(m + f) = S + (S (cos f - 1) + C sin f),
- *     cos(m + f) = C + (C (cos f - 1) - S sin f), S = sin m, C = cos m from
- *     the correctly rounded table; sin f, cos f - 1 are short Taylor
- *     polynomials in f (f < 1 degree = 0.01745 rad: the first omitted terms
- *     are t^5/120 < 1.4e-11 and t^6/720 < 4e-14). The correction is at most
- *     0.0175, so its rounding errors are ~1e-9 and the table value
- *     dominates; at f = 0 the correction is exactly +0 and the table value is
- *     returned unchanged.
- *  4. quadrant symmetry, then the sign of the input is applied to the sine
- *     by negation (so sin(-x) == -sin(x) and cos(-x) == cos(x) bit for bit).
+ *  1. |deg| is split exactly into whole degrees i and a fraction f in
+ *     [0, 1): below 2^23 by truncation to an integer (a - trunc(a) is exact
+ *     in binary32); at or above 2^23 every float is an integer M * 2^e and
+ *     i = (M mod 360) * (2^e mod 360) mod 360 in integer arithmetic, f = 0.
+ *     The reduction is therefore exact for every finite float, so the error
+ *     does not depend on the size of the angle.
+ *  2. i = 90 q + m, m in 0..89, quadrant k = q mod 4, with q = floor(i/90)
+ *     an exact multiply-shift (no division).
+ *  3. S = sin(90k + m), C = cos(90k + m) are table entries with the
+ *     quadrant's sign (branch free), then
+ *     sin = S + (S (cos f - 1) + C sin f), cos = C + (C (cos f - 1) - S sin f)
+ *     with Taylor polynomials in f for sin f and cos f - 1 (f < 1 degree =
+ *     0.01745 rad: the first omitted terms are t^5/120 < 1.4e-11 and
+ *     t^6/720 < 4e-14). The correction is at most 0.0175, so its rounding
+ *     errors are ~1e-9 and the correctly rounded table value dominates; at
+ *     f = 0 the correction is exactly zero and the table value is returned.
+ *  4. "+ 0.0f" maps the -0 of a signed table zero to +0; the sign of the
+ *     input is applied to the sine by flipping its sign bit (so
+ *     sin(-x) == -sin(x) and cos(-x) == cos(x) bit for bit).
+ * Requires IEEE binary32 with round-to-nearest (the default) and no
+ * value-changing optimisations (-ffast-math would drop the "+ 0.0f";
+ * only the sign of exact zeros would change).
  * All arithmetic is single precision (float literals), no libm.
  */
 #include <string.h>
@@ -33,8 +38,18 @@
 #define DH_TRIG_B2 (-1.5230870989335428e-04f) /* -(pi/180)^2 / 2 */
 #define DH_TRIG_B4 3.866323851562993e-09f   /* (pi/180)^4 / 24 */
 
+/* ceil(2^32 / 90): (i * DH_TRIG_DIV90_64) >> 32 == i / 90 for every
+ * i < 2^24. Proof: the constant exceeds 2^32/90 by d < 0.17, so the
+ * estimate exceeds i/90 by i d / 2^32 < 6.6e-4, less than the distance
+ * 1/90 from i/90 (fraction at most 89/90) to the next integer. Checked
+ * exhaustively as well. */
+#define DH_TRIG_DIV90_64 47721859u
+
 /* 2^e mod 360 for e = 0..14; for e >= 3, 2^(e+12) == 2^e (mod 360) because
  * 2^e == 0 (mod 8) and 2^12 = 4096 == 1 (mod 45). */
+/* sign of sin(90 j + m) for j = 0..4 (index k + 1 for the cosine) */
+static const float dh_trig_qsign[5] = { 1.0f, 1.0f, -1.0f, -1.0f, 1.0f };
+
 static const uint16_t dh_trig_pow2_mod360[15] = {
     1u, 2u, 4u, 8u, 16u, 32u, 64u, 128u, 256u, 152u, 304u, 248u, 136u, 272u, 184u
 };
@@ -47,71 +62,69 @@ static float dh_trig_nan_f32(void)
     return r;
 }
 
-/* deg must be finite (exponent field != 0xFF). */
-static void dh_trig_core_f32(float deg, float *s_out, float *c_out)
+dh_status dh_sincos_f32(float deg, float *s, float *c)
 {
-    uint32_t bits, mag, n, k, m;
-    float a, f, f2, sf, cm, s0, c0, sq, cq, ss, cc;
+    uint32_t bits, mag, i, q, k, m;
+    float a, f, f2, sf, cm, s0, c0, ss, cc;
 
+    DH_ASSERT(s != NULL);
+    DH_ASSERT(c != NULL);
     memcpy(&bits, &deg, sizeof bits);
     mag = bits & 0x7FFFFFFFu;
+    if (mag >= 0x7F800000u) {                  /* NaN or +-Inf */
+        *s = dh_trig_nan_f32();
+        *c = *s;
+        return DH_ERR_NAN;
+    }
     memcpy(&a, &mag, sizeof a);                /* a = |deg|, exact */
 
     if (mag < 0x4B000000u) {                   /* a < 2^23 */
-        uint32_t i = (uint32_t)a;              /* truncation == floor, fits */
+        i = (uint32_t)a;                       /* truncation == floor, fits */
         f = a - (float)i;                      /* exact, in [0, 1) */
-        n = dh_trig_mod360(i);
-    } else {                                   /* a = M * 2^e, integer */
+    } else {                                   /* a = M * 2^e, an integer */
         uint32_t e = (mag >> 23) - 150u;       /* 0..104 for finite a */
         uint32_t mant = (mag & 0x007FFFFFu) | 0x00800000u;
         while (e >= 15u) {
             e -= 12u;                          /* at most 8 passes */
         }
-        n = dh_trig_mod360(dh_trig_mod360(mant) * dh_trig_pow2_mod360[e]);
+        i = dh_trig_mod360(dh_trig_mod360(mant) * dh_trig_pow2_mod360[e]);
         f = 0.0f;
     }
 
-    /* n in 0..359 -> quadrant k in 0..3 and m in 0..89 */
-    k = (uint32_t)(n >= 90u) + (uint32_t)(n >= 180u) + (uint32_t)(n >= 270u);
-    m = n - 90u * k;
-    s0 = dh_trig_sin_f32[m];
-    c0 = dh_trig_sin_f32[90u - m];
+    /* q = floor(i / 90) exactly for i < 2^24 (DH_TRIG_DIV90_64); the
+     * quadrant is k = q mod 4 (90 * 4 = 360) and m = i - 90 q is in 0..89. */
+    q = (uint32_t)(((uint64_t)i * DH_TRIG_DIV90_64) >> 32);
+    m = i - 90u * q;
+    k = q & 3u;
+
+    /* S = sin(90k + m), C = cos(90k + m) = sin(90(k+1) + m) from the
+     * quarter-wave table, branch free (random quadrants would mispredict):
+     * sin(90j + m) = (-1)^(j>>1) T[j odd ? 90 - m : m]; indices in 0..90. */
+    {
+        uint32_t odd = k & 1u;
+        s0 = dh_trig_sin_f32[odd ? 90u - m : m] * dh_trig_qsign[k];
+        c0 = dh_trig_sin_f32[odd ? m : 90u - m] * dh_trig_qsign[k + 1u];
+    }
 
     f2 = f * f;
     sf = f * (DH_TRIG_A1 + f2 * DH_TRIG_A3);   /* sin f */
     cm = f2 * (DH_TRIG_B2 + f2 * DH_TRIG_B4);  /* cos f - 1 */
-    sq = s0 + (s0 * cm + c0 * sf);
-    cq = c0 + (c0 * cm - s0 * sf);
+    ss = s0 + (s0 * cm + c0 * sf);
+    cc = c0 + (c0 * cm - s0 * sf);
 
-    /* quadrant: (s,c) -> k=1: (c,-s), k=2: (-s,-c), k=3: (-c,s).
-     * 0.0f - x instead of -x so that exact zeros come out as +0. */
-    ss = (k & 1u) ? cq : sq;
-    cc = (k & 1u) ? sq : cq;
-    if (k >= 2u) {
-        ss = 0.0f - ss;
+    /* "+ 0.0f" turns the -0 of a signed exact table zero (sin 180,
+     * cos 90) into +0 and leaves every other value unchanged. Then odd
+     * symmetry: the sign bit of the sine of a negative input is flipped, so
+     * sin(-x) == -sin(x) bit for bit, zeros included. */
+    ss = ss + 0.0f;
+    *c = cc + 0.0f;
+    {
+        uint32_t sb;
+        memcpy(&sb, &ss, sizeof sb);
+        sb ^= bits & 0x80000000u;
+        memcpy(&ss, &sb, sizeof ss);
+        *s = ss;
     }
-    if (k == 1u || k == 2u) {
-        cc = 0.0f - cc;
-    }
-    if (bits & 0x80000000u) {
-        ss = -ss;                              /* odd: exact negation */
-    }
-    *s_out = ss;
-    *c_out = cc;
-}
-
-dh_status dh_sincos_f32(float deg, float *s, float *c)
-{
-    uint32_t bits;
-    DH_ASSERT(s != NULL);
-    DH_ASSERT(c != NULL);
-    memcpy(&bits, &deg, sizeof bits);
-    if ((bits & 0x7F800000u) == 0x7F800000u) {  /* NaN or +-Inf */
-        *s = dh_trig_nan_f32();
-        *c = *s;
-        return DH_ERR_NAN;
-    }
-    dh_trig_core_f32(deg, s, c);
     return DH_OK;
 }
 

@@ -5,22 +5,24 @@
  *
  * Method (same as the float path):
  *  1. u = |x| as an unsigned magnitude (0 .. 2^31; INT32_MIN is never
- *     negated as a signed value). Whole degrees u >> 16 (0..32768) are
- *     reduced modulo 360 exactly by dh_trig_mod360(); the fraction
- *     fr = u & 0xFFFF is f = fr / 65536 degree.
- *  2. n = 90 k + m, m in 0..89, table indices m and 90 - m: both in 0..90
- *     for every input, so no table read can leave the 91-entry table.
+ *     negated as a signed value). Whole degrees n = u >> 16 (0..32768),
+ *     fraction fr = u & 0xFFFF, i.e. f = fr / 65536 degree.
+ *  2. n = 90 q + m with q = floor(n / 90) computed exactly by a 32-bit
+ *     multiply (no divide), m in 0..89, quadrant k = q mod 4. The table
+ *     indices m and 90 - m are in 0..90 for every input, so no table read
+ *     can leave the 91-entry table.
  *  3. T = f in radians in units of 2^-37 (T < 2^31.2); then
  *     sin f = T - T^3/6 and 1 - cos f = T^2/2 - T^4/24 in the same units
  *     (first omitted terms: t^5/120 < 0.02 LSB of Q2.30 and t^6/720
- *     < 1e-4 LSB). The corrections S (cos f - 1) + C sin f and
- *     C (cos f - 1) - S sin f are accumulated in 64 bits in units of 2^-67
- *     and rounded once to Q2.30, so the result is table value (0.5 LSB) +
- *     one rounding (0.5 LSB) + approximation error (< 0.05 LSB).
+ *     < 1e-4 LSB). The corrections C sin f - S (1 - cos f) and
+ *     C (1 - cos f) + S sin f (S = sin m, C = cos m, first quadrant) are
+ *     formed in 64 bits in units of 2^-67 and rounded once to Q2.30, so the
+ *     result is table value (0.5 LSB) + one rounding (0.5 LSB) +
+ *     approximation and intermediate rounding (< 0.05 LSB).
  *  4. The first-quadrant results are clamped to [0, 1.0] (the true values
  *     lie there, so the clamp can only reduce the error), the quadrant
- *     symmetry applied, and the input sign applied to the sine by negating
- *     a value of magnitude <= 2^30 (never overflows).
+ *     symmetry applied branch free, and the input sign applied to the sine
+ *     by negating a magnitude <= 2^30 (never overflows).
  * Every shift is of an unsigned value; no signed overflow is possible.
  */
 #include "dhmath/dh_trig.h"
@@ -28,22 +30,37 @@
 
 #define DH_TRIG_KT    2398762259u   /* round(pi/180 * 2^37) */
 #define DH_TRIG_INV3  1431655765u   /* round(2^32 / 3) */
-#define DH_TRIG_INV6  715827883u    /* round(2^32 / 6) */
 #define DH_TRIG_Q30   0x40000000u
+/* ceil(2^23 / 90): (n * DH_TRIG_DIV90_32) >> 23 == n / 90 for every
+ * n <= 32768, in 32 bits (n * 93207 < 3.06e9 < 2^32). Proof: the constant
+ * exceeds 2^23/90 by d < 0.25, so the estimate exceeds n/90 by
+ * n d / 2^23 < 1e-3, less than the distance 1/90 from n/90 (fraction at
+ * most 89/90) to the next integer. Checked exhaustively as well. */
+#define DH_TRIG_DIV90_32 93207u
 
-static void dh_trig_core_q(dh_q16 x, dh_q30 *s_out, dh_q30 *c_out)
+/* uint32 holding the two's complement of a value in [-2^30, 2^30] -> int32,
+ * without an implementation-defined out-of-range conversion. */
+static int32_t dh_trig_u2i(uint32_t v)
 {
-    uint32_t u, n, k, m, fr, sv, cv, t, h, h3, t3, h2, t4, sf, cm;
-    uint64_t pa, pb, pc;
-    int32_t ss, cc, sq, cq;
+    return (v & 0x80000000u) ? -(int32_t)(0u - v) : (int32_t)v;
+}
+
+void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
+{
+    uint32_t u, n, q, k, m, fr, sv, cv, t, h, h3, t3, t4, sf, cm, d, odd, ns, nc;
+    uint64_t pc;
+
+    DH_ASSERT(s_q30 != NULL);
+    DH_ASSERT(c_q30 != NULL);
 
     /* (uint32_t)x is defined (modulo 2^32); 0u - that is the magnitude */
-    u = (x < 0) ? (0u - (uint32_t)x) : (uint32_t)x;
-    n = dh_trig_mod360(u >> 16);
+    u = (deg_q16 < 0) ? (0u - (uint32_t)deg_q16) : (uint32_t)deg_q16;
+    n = u >> 16;                                /* 0..32768 whole degrees */
     fr = u & 0xFFFFu;
 
-    k = (uint32_t)(n >= 90u) + (uint32_t)(n >= 180u) + (uint32_t)(n >= 270u);
-    m = n - 90u * k;
+    q = (n * DH_TRIG_DIV90_32) >> 23;           /* floor(n / 90), exact */
+    m = n - 90u * q;                            /* 0..89 */
+    k = q & 3u;                                 /* quadrant: 90 * 4 = 360 */
     sv = (uint32_t)dh_trig_sin_q30[m];          /* sin m, 0..2^30 */
     cv = (uint32_t)dh_trig_sin_q30[90u - m];    /* cos m, 0..2^30 */
 
@@ -52,62 +69,51 @@ static void dh_trig_core_q(dh_q16 x, dh_q30 *s_out, dh_q30 *c_out)
     h  = (uint32_t)(((uint64_t)t * t + ((uint64_t)1 << 37)) >> 38);      /* t^2/2  */
     h3 = (uint32_t)(((uint64_t)h * DH_TRIG_INV3 + 0x80000000u) >> 32);   /* t^2/6  */
     t3 = (uint32_t)(((uint64_t)t * h3 + ((uint64_t)1 << 36)) >> 37);     /* t^3/6  */
-    h2 = (uint32_t)(((uint64_t)h * h + ((uint64_t)1 << 36)) >> 37);      /* t^4/4  */
-    t4 = (uint32_t)(((uint64_t)h2 * DH_TRIG_INV6 + 0x80000000u) >> 32);  /* t^4/24 */
-    sf = t - t3;                                /* sin f       (>= 0) */
-    cm = h - t4;                                /* 1 - cos f   (>= 0) */
+    t4 = (uint32_t)(((uint64_t)h * h3 + ((uint64_t)1 << 37)) >> 38);     /* t^4/24 */
+    sf = t - t3;                                /* sin f,     0 .. 2^31.2 */
+    cm = h - t4;                                /* 1 - cos f, 0 .. 2^24.4 */
 
-    /* sin(m+f) = S + (C sin f - S (1 - cos f)); units 2^-67, < 2^62 */
-    pa = (uint64_t)cv * sf;
-    pb = (uint64_t)sv * cm;
-    if (pa >= pb) {
-        uint32_t d = (uint32_t)((pa - pb + ((uint64_t)1 << 36)) >> 37);
-        sv = (sv + d > DH_TRIG_Q30) ? DH_TRIG_Q30 : sv + d;
-    } else {
-        uint32_t d = (uint32_t)((pb - pa + ((uint64_t)1 << 36)) >> 37);
-        sv = (d > sv) ? 0u : sv - d;
-    }
+    /* sin(m+f) = S + (C sin f - S (1 - cos f)). The difference of the two
+     * products (each < 2^61.2, units 2^-67) is biased by 2^62 so that it is
+     * rounded by an unsigned shift (no signed right shift anywhere); the
+     * bias 2^25 is taken off again in modular uint32 arithmetic. */
+    d = (uint32_t)(((uint64_t)cv * sf - (uint64_t)sv * cm
+                    + ((uint64_t)1 << 62) + ((uint64_t)1 << 36)) >> 37);
+    sv = sv + d - ((uint32_t)1 << 25);          /* true value in [0, 2^30] */
     /* cos(m+f) = C - (C (1 - cos f) + S sin f) */
-    pc = (uint64_t)cv * cm + (uint64_t)dh_trig_sin_q30[m] * sf;
+    pc = (uint64_t)cv * cm + (uint64_t)(uint32_t)dh_trig_sin_q30[m] * sf;
+    d = (uint32_t)((pc + ((uint64_t)1 << 36)) >> 37);
+    cv = cv - d;                                /* true value in [0, 2^30] */
+    /* Clamp to [0, 2^30] (the true values lie there, so clamping only
+     * reduces the error): a result that went below 0 wrapped to >= 2^31. */
+    sv = (sv > DH_TRIG_Q30) ? ((sv >= 0x80000000u) ? 0u : DH_TRIG_Q30) : sv;
+    cv = (cv > DH_TRIG_Q30) ? ((cv >= 0x80000000u) ? 0u : DH_TRIG_Q30) : cv;
+
+    /* quadrant: (s,c) -> k=1: (c,-s), k=2: (-s,-c), k=3: (-c,s); then the
+     * odd symmetry for a negative input. Branch free: the swap is a select,
+     * the negations are (v ^ mask) - mask on magnitudes <= 2^30 in uint32
+     * (exact two's complement of a small value, converted back below). */
+    odd = k & 1u;
+    ns = 0u - (((k >> 1) ^ (uint32_t)(deg_q16 < 0)) & 1u);   /* k = 2, 3 */
+    nc = 0u - ((k ^ (k >> 1)) & 1u);                          /* k = 1, 2 */
     {
-        uint32_t d = (uint32_t)((pc + ((uint64_t)1 << 36)) >> 37);
-        cv = (d > cv) ? 0u : cv - d;
+        uint32_t a = odd ? cv : sv;
+        uint32_t b = odd ? sv : cv;
+        *s_q30 = dh_trig_u2i((a ^ ns) - ns);
+        *c_q30 = dh_trig_u2i((b ^ nc) - nc);
     }
-
-    sq = (int32_t)sv;                           /* both in 0..2^30 */
-    cq = (int32_t)cv;
-    ss = (k & 1u) ? cq : sq;
-    cc = (k & 1u) ? sq : cq;
-    if (k >= 2u) {
-        ss = -ss;
-    }
-    if (k == 1u || k == 2u) {
-        cc = -cc;
-    }
-    if (x < 0) {
-        ss = -ss;
-    }
-    *s_out = ss;
-    *c_out = cc;
-}
-
-void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
-{
-    DH_ASSERT(s_q30 != NULL);
-    DH_ASSERT(c_q30 != NULL);
-    dh_trig_core_q(deg_q16, s_q30, c_q30);
 }
 
 dh_q30 dh_sin_q(dh_q16 deg_q16)
 {
     dh_q30 s, c;
-    dh_trig_core_q(deg_q16, &s, &c);
+    dh_sincos_q(deg_q16, &s, &c);
     return s;
 }
 
 dh_q30 dh_cos_q(dh_q16 deg_q16)
 {
     dh_q30 s, c;
-    dh_trig_core_q(deg_q16, &s, &c);
+    dh_sincos_q(deg_q16, &s, &c);
     return c;
 }

@@ -4,7 +4,6 @@
  *
  * sin(n degrees), n = 0..90, correctly rounded (exact decimal evaluation
  * at 60 digits, round to nearest even). cos(n) = sin(90 - n).
- * decimal precision 60 digits
  * min distance from a rounding tie: f32 9.816e-05 ulp, q30 7.648e-03 LSB
  * entries where double sin rounded again differs: none
  * Sizes: dh_trig_sin_f32 364 bytes, dh_trig_sin_q30 364 bytes.

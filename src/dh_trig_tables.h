@@ -26,11 +26,13 @@ extern const int32_t dh_trig_sin_q30[DH_TRIG_TAB_LEN];
  * Fold 1: v < 2^24 -> h < 4096, result < 4095*136 + 4096 = 561016.
  * Fold 2: h <= 136 -> result < 136*136 + 4096 = 22592.
  * Then q = (v * 11650) >> 22 satisfies floor(v/360) - 1 <= q <= floor(v/360)
- * for v < 22592 (11650 / 2^22 is below 1/360 by 2.0e-7 relative... absolute
- * deficit v * (1/360 - 11650/2^22) < 22592 * 2.02e-7 < 0.005 < 1), and
- * v * 11650 < 2^29 cannot overflow. One conditional subtraction finishes.
- * Every intermediate is unsigned and far from 2^32. The test suites check
- * the reduction against fmod over the whole range it is used on.
+ * for v < 22592: 11650 / 2^22 lies below 1/360 by less than 2.1e-7, so q
+ * undershoots v/360 by less than 22592 * 2.1e-7 < 0.005 (never more than
+ * one step), and v * 11650 < 2^29 cannot overflow. One conditional
+ * subtraction finishes.
+ * Every intermediate is unsigned and far from 2^32. Verified exhaustively
+ * for all v < 2^24 during development; test_trig_f32 checks the results for
+ * huge floats bit for bit against fmod-reduced angles.
  */
 static inline uint32_t dh_trig_mod360(uint32_t v)
 {

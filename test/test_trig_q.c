@@ -9,7 +9,7 @@
  *
  * Error bound asserted (DHT_Q_TOL_LSB): 1.05 LSB = table rounding (0.5) +
  * final rounding (0.5) + approximation/intermediate rounding (< 0.05);
- * measured 1.0003 LSB over every input of a full turn. The project
+ * measured 1.003 LSB over every input of a full turn. The project
  * requirement is 2 LSB.
  *
  * The host suite is meant to be run under UBSan too (DH_SANITIZE=ON): the

@@ -166,7 +166,7 @@ def main():
     out.append(" *")
     out.append(" * sin(n degrees), n = 0..90, correctly rounded (exact decimal evaluation")
     out.append(" * at %d digits, round to nearest even). cos(n) = sin(90 - n)." % PREC)
-    for line in report:
+    for line in report[1:]:
         out.append(" * " + line)
     out.append(" * Sizes: dh_trig_sin_f32 %d bytes, dh_trig_sin_q30 %d bytes."
                % (4 * len(f32), 4 * len(q30)))
