@@ -1,0 +1,683 @@
+#!/usr/bin/env python3
+"""CLI tests of the dhmath host tool (standard library only).
+
+usage: run_cli_tests.py DHMATH_EXE REPO_ROOT GROUP [--seed N]
+
+Groups:
+  seed      every worked example of seed 000 through the CLI (exact output)
+  errors    EXPR / usage error table: exit 2, empty stdout, message naming
+            the problem and its column
+  random    seeded random EXPRs vs a double-precision reference written here
+            (float and --fixed); prints the measured max errors
+  robotfile robot-file error table (file:line) and random robots: fk,
+            fk --frames, fk --fixed, jacobian vs double references here
+  examples  fk on examples/robots/puma560.dh at 0,...,0 and the other
+            shipped robots; ik round trips
+  help      help/usage behaviour
+
+The references below share no code with the library: plain 4x4 double
+matrices with math.sin/cos of radians and Gauss-Jordan inversion.
+"""
+import math
+import os
+import random
+import re
+import subprocess
+import sys
+import tempfile
+
+EXE = None
+ROOT = None
+FAILS = []
+CHECKS = [0]
+
+
+def run(args, stdin=None):
+    p = subprocess.run([EXE] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                       input=stdin, timeout=60)
+    return p.returncode, p.stdout.decode('utf-8', 'replace'), p.stderr.decode('utf-8', 'replace')
+
+
+def check(cond, what):
+    CHECKS[0] += 1
+    if not cond:
+        FAILS.append(what)
+        print('FAIL:', what)
+
+
+def nums(text):
+    return [[float(x) for x in line.split(' ')] for line in text.strip('\n').split('\n')]
+
+
+# ---- double reference ------------------------------------------------------
+
+def ident():
+    return [[1.0 if r == c else 0.0 for c in range(4)] for r in range(4)]
+
+
+def mul(A, B):
+    return [[sum(A[r][k] * B[k][c] for k in range(4)) for c in range(4)] for r in range(4)]
+
+
+def trans(x, y, z):
+    T = ident()
+    T[0][3], T[1][3], T[2][3] = x, y, z
+    return T
+
+
+def rot_axis(kx, ky, kz, deg):
+    n = math.sqrt(kx * kx + ky * ky + kz * kz)
+    kx, ky, kz = kx / n, ky / n, kz / n
+    t = math.radians(deg)
+    c, s, v = math.cos(t), math.sin(t), 1.0 - math.cos(t)
+    # seed 000 eq. 1.70
+    return [[kx * kx * v + c, ky * kx * v - kz * s, kz * kx * v + ky * s, 0.0],
+            [kx * ky * v + kz * s, ky * ky * v + c, kz * ky * v - kx * s, 0.0],
+            [kx * kz * v - ky * s, ky * kz * v + kx * s, kz * kz * v + c, 0.0],
+            [0.0, 0.0, 0.0, 1.0]]
+
+
+def rotx(d):
+    t = math.radians(d)
+    return [[1, 0, 0, 0], [0, math.cos(t), -math.sin(t), 0], [0, math.sin(t), math.cos(t), 0], [0, 0, 0, 1.0]]
+
+
+def roty(d):
+    t = math.radians(d)
+    return [[math.cos(t), 0, math.sin(t), 0], [0, 1, 0, 0], [-math.sin(t), 0, math.cos(t), 0], [0, 0, 0, 1.0]]
+
+
+def rotz(d):
+    t = math.radians(d)
+    return [[math.cos(t), -math.sin(t), 0, 0], [math.sin(t), math.cos(t), 0, 0], [0, 0, 1, 0], [0, 0, 0, 1.0]]
+
+
+def scale(a, b, c):
+    return [[a, 0, 0, 0], [0, b, 0, 0], [0, 0, c, 0], [0, 0, 0, 1.0]]
+
+
+def persp(axis, f):
+    T = ident()
+    T[3]['xyz'.index(axis)] = -1.0 / f   # eq. 1.127 (y) generalised
+    return T
+
+
+def inverse(A):
+    M = [row[:] + [1.0 if r == c else 0.0 for c in range(4)] for r, row in enumerate(A)]
+    for c in range(4):
+        p = max(range(c, 4), key=lambda r: abs(M[r][c]))
+        M[c], M[p] = M[p], M[c]
+        pv = M[c][c]
+        M[c] = [x / pv for x in M[c]]
+        for r in range(4):
+            if r != c:
+                f = M[r][c]
+                M[r] = [x - f * y for x, y in zip(M[r], M[c])]
+    return [row[4:] for row in M]
+
+
+def dh_link(conv, jtype, a, d, alpha, theta, q):
+    if jtype == 'R':
+        theta = theta + q
+    else:
+        d = d + q
+    if conv == 'standard':
+        return mul(mul(mul(rotz(theta), trans(0, 0, d)), trans(a, 0, 0)), rotx(alpha))
+    return mul(mul(mul(rotx(alpha), trans(a, 0, 0)), rotz(theta)), trans(0, 0, d))
+
+
+# ---- python model of a robot file (independent reading of the format) ------
+
+def read_robot(text):
+    rob = {'conv': 'standard', 'joints': [], 'base': 'ident', 'tool': 'ident'}
+    for line in text.split('\n'):
+        line = line.split('#')[0].strip()
+        if not line:
+            continue
+        kw, _, rest = line.partition(' ')
+        if kw == 'convention':
+            rob['conv'] = rest.strip()
+        elif kw in ('base', 'tool'):
+            rob[kw] = rest.strip()
+        elif kw == 'joint':
+            toks = rest.split()
+            j = {'type': toks[0], 'a': 0.0, 'd': 0.0, 'alpha': 0.0, 'theta': 0.0}
+            for t in toks[1:]:
+                k, _, v = t.partition('=')
+                j[k] = float(v)
+            rob['joints'].append(j)
+    return rob
+
+
+def ref_expr(s):
+    """Double evaluation of a (well-formed) EXPR written by these tests."""
+    stack = [ident()]
+    i = 0
+    while i < len(s):
+        if s[i] in ' *':
+            i += 1
+            continue
+        if s[i] == ')':
+            top = stack.pop()
+            stack[-1] = mul(stack[-1], inverse(top))
+            i += 1
+            continue
+        m = re.match(r'([a-z]+)', s[i:])
+        name = m.group(1)
+        i += len(name)
+        if name == 'inv':
+            i += 1
+            stack.append(ident())
+            continue
+        if name == 'ident':
+            continue
+        j = s.index(')', i)
+        args = s[i + 1:j].split(',')
+        i = j + 1
+        if name == 'persp':
+            T = persp(args[0], float(args[1]))
+        else:
+            v = [float(a) for a in args]
+            T = {'trans': trans, 'rotx': rotx, 'roty': roty, 'rotz': rotz, 'rot': rot_axis,
+                 'scale': scale}[name](*v)
+        stack[-1] = mul(stack[-1], T)
+    return stack[0]
+
+
+def ref_fk(rob, q, frames=False):
+    T = ref_expr(rob['base'])
+    out = []
+    for j, qi in zip(rob['joints'], q):
+        T = mul(T, dh_link(rob['conv'], j['type'], j['a'], j['d'], j['alpha'], j['theta'], qi))
+        out.append(T)
+    end = mul(T, ref_expr(rob['tool']))
+    return out + [end] if frames else end
+
+
+def maxdiff(A, B):
+    return max(abs(a - b) for ra, rb in zip(A, B) for a, b in zip(ra, rb))
+
+
+def to_expr(T):
+    """trans(p) rot(k, theta) for a rigid double matrix (test-side conversion)."""
+    R = [row[:3] for row in T[:3]]
+    c = max(-1.0, min(1.0, (R[0][0] + R[1][1] + R[2][2] - 1.0) / 2.0))
+    th = math.acos(c)
+    if th < 1e-9:
+        k = (0.0, 0.0, 1.0)
+    elif math.pi - th < 1e-6:
+        d = [math.sqrt(max(0.0, (R[i][i] + 1.0) / 2.0)) for i in range(3)]
+        i = d.index(max(d))
+        k = [0.0, 0.0, 0.0]
+        k[i] = d[i]
+        for j in range(3):
+            if j != i:
+                k[j] = (R[i][j] + R[j][i]) / (4.0 * d[i])
+        k = tuple(k)
+    else:
+        k = ((R[2][1] - R[1][2]) / (2 * math.sin(th)), (R[0][2] - R[2][0]) / (2 * math.sin(th)),
+             (R[1][0] - R[0][1]) / (2 * math.sin(th)))
+    return 'trans(%.17g,%.17g,%.17g) rot(%.17g,%.17g,%.17g,%.17g)' % (
+        T[0][3], T[1][3], T[2][3], k[0], k[1], k[2], math.degrees(th))
+
+
+# ---- groups ---------------------------------------------------------------
+
+SEED_CASES = [
+    # (what, args, expected stdout)
+    ('eq. 1.27 point', ['point', 'trans(4,-3,7)', '2', '3', '2'], '6 0 9 1\n'),
+    ('eq. 1.28 scaled point', ['point', 'trans(4,-3,7)', '4', '6', '4', '2'], '12 0 18 2\n'),
+    ('eq. 1.30 plane', ['plane', 'trans(4,-3,7)', '1', '0', '0', '-2'], '1 0 0 -6\n'),
+    ('eq. 1.41', ['eval', 'roty(90) rotz(90)'], '0 0 1 0\n1 0 0 0\n0 1 0 0\n0 0 0 1\n'),
+    ('eq. 1.42 point', ['point', 'roty(90) rotz(90)', '7', '3', '2'], '2 7 3 1\n'),
+    ('eq. 1.43', ['eval', 'rotz(90)*roty(90)'], '0 -1 0 0\n0 0 1 0\n-1 0 0 0\n0 0 0 1\n'),
+    ('eq. 1.44 point', ['point', 'rotz(90) roty(90)', '7', '3', '2'], '-3 2 -7 1\n'),
+    ('eq. 1.46', ['eval', 'trans(4,-3,7) roty(90) rotz(90)'], '0 0 1 4\n1 0 0 -3\n0 1 0 7\n0 0 0 1\n'),
+    ('eq. 1.47 point', ['point', 'trans(4,-3,7) roty(90) rotz(90)', '7', '3', '2'], '6 4 10 1\n'),
+    ('eq. 1.48 origin', ['point', 'trans(4,-3,7) roty(90) rotz(90)', '0', '0', '0'], '4 -3 7 1\n'),
+    ('eq. 1.50 X = T C', ['eval', 'trans(10,0,0) rotz(90) trans(20,10,0) rotx(90)'],
+     '0 0 1 0\n1 0 0 20\n0 1 0 0\n0 0 0 1\n'),
+    ('eq. 1.51 Y = C T', ['eval', 'trans(20,10,0) rotx(90) trans(10,0,0) rotz(90)'],
+     '0 -1 0 30\n0 0 -1 10\n1 0 0 0\n0 0 0 1\n'),
+    ('eq. 1.52', ['eval', 'trans(4,0,0) roty(90) rotz(90)'], '0 0 1 4\n1 0 0 0\n0 1 0 0\n0 0 0 1\n'),
+    ('eq. 1.54 inverse', ['eval', 'inv(trans(4,0,0) roty(90) rotz(90))'],
+     '0 1 0 0\n0 0 1 0\n1 0 0 -4\n0 0 0 1\n'),
+    ('eq. 1.55 T^-1 T = I', ['eval', 'inv(trans(4,0,0) roty(90) rotz(90)) trans(4,0,0) roty(90) rotz(90)'],
+     '1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n'),
+    ('eq. 1.46 fixed', ['eval', '--fixed', 'trans(4,-3,7) roty(90) rotz(90)'],
+     '0 0 1 4\n1 0 0 -3\n0 1 0 7\n0 0 0 1\n'),
+    ('eq. 1.54 fixed', ['eval', '--fixed', 'inv(trans(4,0,0) roty(90) rotz(90))'],
+     '0 1 0 0\n0 0 1 0\n1 0 0 -4\n0 0 0 1\n'),
+    ('eq. 1.128 persp', ['point', 'persp(y,10)', '1', '5', '2'], '1 5 2 0.5\n'),
+]
+# eq. 1.53: the six object points
+for col_in, col_out in zip([(1, 0, 0), (-1, 0, 0), (-1, 0, 2), (1, 0, 2), (1, 4, 0), (-1, 4, 0)],
+                           [(4, 1, 0), (4, -1, 0), (6, -1, 0), (6, 1, 0), (4, 1, 4), (4, -1, 4)]):
+    SEED_CASES.append(('eq. 1.53 point %s' % (col_in,), ['point', 'trans(4,0,0) roty(90) rotz(90)'] +
+                      [str(v) for v in col_in], '%d %d %d 1\n' % col_out))
+
+
+def group_seed():
+    for what, args, want in SEED_CASES:
+        rc, out, err = run(args)
+        check(rc == 0 and out == want and err == '',
+              '%s: dhmath %s -> rc %d out %r err %r (want %r)' % (what, args, rc, out, err, want))
+    # Example 1.1 (eq. 1.104-1.112): k = (1,1,1)/sqrt(3), theta = 120
+    rc, out, err = run(['axis', 'roty(90) rotz(90)'])
+    check(rc == 0, 'Example 1.1 axis rc %d %r' % (rc, err))
+    if rc == 0:
+        v = nums(out)[0]
+        want = [1 / math.sqrt(3)] * 3 + [120.0]
+        # one float ulp of 0.577 is 6e-8; the printed pinned value is 0.577350259
+        check(out == '0.577350259 0.577350259 0.577350259 120\n' or
+              max(abs(a - b) for a, b in zip(v, want)) <= 1.2e-7,
+              'Example 1.1 axis: %r' % out)
+
+
+ERROR_CASES = [
+    # (args, regex the stderr must match)
+    (['eval', 'rotw(3)'], r'column 1 of EXPR: unknown term .rotw.'),
+    (['eval', 'rotx(30) rotw(3)'], r'column 10 of EXPR: unknown term .rotw.'),
+    (['eval', 'rotx(abc)'], r'column 6 of EXPR: bad number .abc.'),
+    (['eval', 'rotx(1.2.3)'], r'column 6 of EXPR: bad number .1\.2\.3.'),
+    (['eval', 'rotx(1e)'], r'column 6 of EXPR: bad number .1e.*exponent'),
+    (['eval', 'rotx(0x10)'], r'column 6 of EXPR: bad number .0x10.'),
+    (['eval', 'rotx( 5 6)'], r"column 9 of EXPR: .*expected ',' or '\)'"),
+    (['eval', 'rotx(nan)'], r'column 6 of EXPR: .*NaN'),
+    (['eval', 'rotx(-inf)'], r'column 6 of EXPR: .*Inf'),
+    (['eval', 'trans(1,Infinity,0)'], r'column 9 of EXPR: .*Inf'),
+    (['eval', 'rotx(1e39)'], r'column 6 of EXPR: .*out of float range'),
+    (['eval', 'trans(1e-45,0,0)'], r'column 7 of EXPR: .*out of float range'),
+    (['eval', 'trans(1e400,0,0)'], r'column 7 of EXPR: .*out of float range'),
+    (['eval', 'rotx(30,2)'], r'column 1 of EXPR: .rotx. takes 1 argument.*got 2'),
+    (['eval', 'trans(1,2)'], r'column 1 of EXPR: .trans. takes 3 arguments.*got 2'),
+    (['eval', 'rot(1,0,0)'], r'column 1 of EXPR: .rot. takes 4 arguments.*got 3'),
+    (['eval', 'rotx()'], r'column 1 of EXPR: .rotx. takes 1 argument.*got 0'),
+    (['eval', 'trans(1,,2)'], r'column 9 of EXPR: .*missing argument 2'),
+    (['eval', 'ident(3)'], r'column 1 of EXPR: .ident. takes no arguments'),
+    (['eval', 'rotx'], r'column 1 of EXPR: .rotx. needs an argument list'),
+    (['eval', 'rotx(30) junk'], r'column 10 of EXPR: unknown term .junk.'),
+    (['eval', 'rotx(30) 5'], r'column 10 of EXPR: unexpected number'),
+    (['eval', 'rotx(30);'], r"column 9 of EXPR: unexpected character ';'"),
+    (['eval', 'rotx(30)rotz(3)'], r'column 9 of EXPR: missing space or .\*.'),
+    (['eval', 'rotx(30))'], r"column 9 of EXPR: unbalanced '\)'"),
+    (['eval', 'inv(rotx(30)'], r"column 1 of EXPR: unbalanced '\(': 'inv\(' is not closed"),
+    (['eval', 'rotx(30'], r"column 5 of EXPR: unbalanced '\('"),
+    (['eval', 'inv rotx(3)'], r"column 5 of EXPR: 'inv' needs '\('"),
+    (['eval', 'inv()'], r'column 1 of EXPR: .inv. of an empty expression'),
+    (['eval', ''], r'column 1 of EXPR: empty expression'),
+    (['eval', '   '], r'column 1 of EXPR: empty expression'),
+    (['eval', '* rotx(3)'], r"column 1 of EXPR: '\*' needs a term on its left"),
+    (['eval', 'rotx(3) *'], r"column 9 of EXPR: expected a term after '\*'"),
+    (['eval', 'rotx(3) * * rotz(3)'], r"column 11 of EXPR: '\*' follows '\*'"),
+    (['eval', 'inv(scale(1,0,1))'], r'column 1 of EXPR: .inv.: singular'),
+    (['eval', 'rotx(3) inv(persp(z,2) scale(0,1,1))'], r'column 9 of EXPR: .inv.: singular'),
+    (['eval', 'rot(0,0,0,30)'], r'column 1 of EXPR: .rot.: zero rotation axis'),
+    (['eval', 'persp(z,0)'], r'column 9 of EXPR: .*focal length f = 0'),
+    (['eval', 'persp(w,2)'], r'column 7 of EXPR: .*axis must be x, y or z'),
+    (['eval', 'scale(3e38,1,1) scale(3e38,1,1)'], r'column 17 of EXPR: overflow'),
+    (['eval', 'inv(' * 17 + 'rotx(1)' + ')' * 17], r'column 65 of EXPR: inv\(\) nested deeper than 16'),
+    (['eval', '--fixed', 'scale(1,2,3)'], r'column 1 of EXPR: .scale. is not rigid'),
+    (['eval', '--fixed', 'persp(z,2)'], r'column 1 of EXPR: .persp. is not rigid'),
+    (['eval', '--fixed', 'trans(40000,0,0)'], r'column 7 of EXPR: overflow'),
+    (['eval', '--fixed', 'rotx(40000)'], r'column 6 of EXPR: overflow'),
+    (['eval', '--fixed', 'trans(30000,0,0) trans(30000,0,0)'], r'column 18 of EXPR: overflow'),
+    (['eval', '--fixed', 'rot(0,0,0,3)'], r'column 1 of EXPR: .rot.: zero rotation axis'),
+    (['eval', 'rotx(3)\x01'], r"column 8 of EXPR: unexpected character '\\x01'"),
+    (['axis', 'rotw(1)'], r'column 1 of EXPR: unknown term'),
+    (['point', 'rotx(3', '1', '2', '3'], r"column 5 of EXPR: unbalanced '\('"),
+    (['point', 'rotx(3)', '1', 'x', '3'], r"bad number 'x' for y"),
+    (['point', 'rotx(3)', '1', '2', 'nan'], r"bad number 'nan' for z: NaN"),
+    (['point', 'rotx(3)', '1', '2'], r'usage error: point takes EXPR x y z \[w\]'),
+    (['point', 'scale(3e38,1,1)', '10', '0', '0'], r'not finite'),
+    (['plane', 'scale(0,1,1)', '1', '0', '0', '0'], r'plane: EXPR is singular'),
+    (['plane', 'rotx(3)', '1', '0', '0'], r'usage error: plane takes EXPR a b c d'),
+    (['eval'], r'usage error: eval takes one EXPR'),
+    (['eval', 'rotx(1)', 'rotz(2)'], r'usage error: eval takes one EXPR'),
+    (['eval', '--bogus', 'rotx(1)'], r"usage error: unknown or inapplicable option '--bogus'"),
+    (['eval', '--frames', 'rotx(1)'], r"usage error: unknown or inapplicable option '--frames'"),
+    (['eval', '-x', 'rotx(1)'], r"usage error: unknown option '-x'"),
+    (['frobnicate'], r"usage error: unknown command 'frobnicate'"),
+    ([], r'usage: dhmath COMMAND'),
+]
+
+
+def group_errors():
+    for args, pat in ERROR_CASES:
+        rc, out, err = run(args)
+        check(rc == 2, 'error case %r: exit %d (want 2)' % (args, rc))
+        check(out == '', 'error case %r: stdout not empty: %r' % (args, out))
+        check(re.search(pat, err) is not None, 'error case %r: stderr %r does not match %r' % (args, err, pat))
+        check(not args or err.startswith('dhmath: '),
+              'error case %r: stderr should start with "dhmath: ": %r' % (args, err))
+
+
+def rand_num(rng, lo, hi):
+    return '%.6g' % rng.uniform(lo, hi)
+
+
+def rand_expr(rng, depth=0, fixed=False, nterms=None):
+    terms = []
+    for _ in range(nterms or rng.randint(1, 5)):
+        k = rng.random()
+        if k < 0.2:
+            terms.append('trans(%s,%s,%s)' % tuple(rand_num(rng, -100, 100) for _ in range(3)))
+        elif k < 0.5:
+            terms.append('rot%s(%s)' % (rng.choice('xyz'), rand_num(rng, -720, 720)))
+        elif k < 0.65:
+            terms.append('rot(%s,%s,%s,%s)' % (rand_num(rng, -1, 1), rand_num(rng, -1, 1),
+                                               rand_num(rng, 0.1, 1), rand_num(rng, -360, 360)))
+        elif k < 0.72 and not fixed:
+            terms.append('scale(%s,%s,%s)' % tuple(rand_num(rng, 0.5, 2) for _ in range(3)))
+        elif k < 0.76 and not fixed:
+            terms.append('persp(%s,%s)' % (rng.choice('xyz'), rand_num(rng, 50, 200)))
+        elif k < 0.8:
+            terms.append('ident')
+        elif depth < 3:
+            terms.append('inv(%s)' % rand_expr(rng, depth + 1, fixed, rng.randint(1, 3)))
+        else:
+            terms.append('rotz(%s)' % rand_num(rng, -180, 180))
+    return rng.choice([' ', ' * ', '*', '  ']).join(terms)
+
+
+def scale_of(M):
+    return max(1.0, max(abs(x) for row in M for x in row))
+
+
+def group_random(seed):
+    rng = random.Random(seed)
+    worst = {'float': 0.0, 'fixed_rot': 0.0, 'fixed_pos': 0.0, 'point': 0.0, 'plane': 0.0}
+    n = 300
+    for it in range(n):
+        e = rand_expr(rng)
+        rc, out, err = run(['eval', e])
+        check(rc == 0, 'random eval %r: rc %d %r' % (e, rc, err))
+        if rc:
+            continue
+        got, ref = nums(out), ref_expr(e)
+        d = maxdiff(got, ref) / scale_of(ref)
+        worst['float'] = max(worst['float'], d)
+        # measured over seeds 1..60 (18000 EXPRs of up to ~15 chained
+        # products incl. scale/persp/inv, angles between table points):
+        # <= 3.2e-6 relative to max(1, largest entry)
+        check(d <= 4e-6, 'random eval %r: relative error %.3g' % (e, d))
+    for it in range(n):
+        e = rand_expr(rng, fixed=True)
+        rc, out, err = run(['eval', '--fixed', e])
+        check(rc == 0, 'random eval --fixed %r: rc %d %r' % (e, rc, err))
+        if rc:
+            continue
+        got, ref = nums(out), ref_expr(e)
+        dr = max(abs(got[r][c] - ref[r][c]) for r in range(3) for c in range(3))
+        dp = max(abs(got[r][3] - ref[r][3]) for r in range(3))
+        worst['fixed_rot'] = max(worst['fixed_rot'], dr)
+        worst['fixed_pos'] = max(worst['fixed_pos'], dp)
+        # the reference uses the decimal inputs; the fixed path sees them
+        # rounded to Q16.16 (angles 1.5e-5 deg = 2.7e-7 rad, lengths 1.5e-5).
+        # measured over seeds 1..60: rotation <= 6.0e-7, position <= 8.3e-5
+        # (|p| up to a few hundred)
+        check(dr <= 8e-7 and dp <= 1.2e-4, 'random eval --fixed %r: rot %.3g pos %.3g' % (e, dr, dp))
+    print('random: %d float EXPRs max relative error %.3g; %d fixed EXPRs max rotation error %.3g, '
+          'max position error %.3g (seed %d)' % (n, worst['float'], n, worst['fixed_rot'],
+                                                 worst['fixed_pos'], seed))
+    # point/plane vs reference
+    for it in range(100):
+        e = rand_expr(rng)
+        u = [rng.uniform(-10, 10) for _ in range(3)] + [rng.choice([1.0, 0.0, 2.5])]
+        su = ['%.6g' % x for x in u]
+        u = [float(x) for x in su]
+        rc, out, err = run(['point', e] + su)
+        check(rc == 0, 'random point %r' % e)
+        if rc == 0:
+            ref = ref_expr(e)
+            v = [sum(ref[r][k] * u[k] for k in range(4)) for r in range(4)]
+            got = nums(out)[0]
+            d = max(abs(a - b) for a, b in zip(got, v)) / max(1.0, max(abs(x) for x in v))
+            worst['point'] = max(worst['point'], d)
+            # measured over seeds 1..60: <= 3.1e-6
+            check(d <= 4e-6, 'random point %r %r: %.3g' % (e, su, d))
+        P = ['%.6g' % rng.uniform(-2, 2) for _ in range(4)]
+        rc, out, err = run(['plane', e] + P)
+        check(rc == 0, 'random plane %r' % e)
+        if rc == 0:
+            Hi = inverse(ref_expr(e))
+            pv = [float(x) for x in P]
+            q = [sum(pv[k] * Hi[k][c] for k in range(4)) for c in range(4)]
+            got = nums(out)[0]
+            # error of each component relative to sum_k |P_k| |Hinv_kc| (the
+            # size of the terms that are summed, so cancellation does not
+            # inflate it)
+            d = max(abs(got[c] - q[c]) / max(1e-30, sum(abs(pv[k] * Hi[k][c]) for k in range(4)))
+                    for c in range(4))
+            worst['plane'] = max(worst['plane'], d)
+            # measured over seeds 1..60: <= 7.6e-6
+            check(d <= 1e-5, 'random plane %r %r: %.3g' % (e, P, d))
+    print('random: 100 points max relative error %.3g, 100 planes %.3g' % (worst['point'], worst['plane']))
+
+
+RF_ERRORS = [
+    # (file text, regex; NAME is replaced by the file path)
+    ('joint R a=1\nfoo 3\n', r'NAME:2:1: unknown keyword .foo.'),
+    ('joint R a=1 b=2\n', r'NAME:1:13: joint: unknown key .b.'),
+    ('joint R a=1 a=2\n', r'NAME:1:13: joint: duplicate key .a.'),
+    ('# c\n\njoint R a=x\n', r'NAME:3:11: joint: bad number .x.'),
+    ('joint R alpha=nan\n', r'NAME:1:15: joint: bad number .nan.*NaN'),
+    ('joint R d=1e39\n', r'NAME:1:11: joint: bad number .*out of float range'),
+    ('joint Q a=1\n', r'NAME:1:7: joint: type must be R or P'),
+    ('joint\n', r'NAME:1:1: joint: missing type'),
+    ('joint R a 1\n', r'NAME:1:9: joint: expected key=value'),
+    ('joint R min=10 max=-10\n', r'NAME:1:1: joint: min=10 is greater than max=-10'),
+    ('joint R min=10\n', r'NAME:1:1: joint: .min. given without .max.'),
+    (''.join('joint R a=1\n' for _ in range(9)), r'NAME:9:1: too many joints'),
+    ('joint R\nbase rotx(30) rotw(1)\n', r'NAME:2:15: bad base EXPR: unknown term .rotw.'),
+    ('joint R\ntool inv(scale(0,1,1))\n', r'NAME:2:6: bad tool EXPR: .inv.: singular'),
+    ('joint R\ntool\n', r'NAME:2:1: .tool. needs an EXPR'),
+    ('joint R\nbase ident\nbase ident\n', r'NAME:3:1: duplicate .base. \(first given on line 2\)'),
+    ('joint R\nconvention modified\n', r'NAME:2:1: .convention. must come before the first joint'),
+    ('convention craig\njoint R\n', r'NAME:1:12: unknown convention .craig.'),
+    ('convention standard\nconvention standard\njoint R\n', r'NAME:2:1: duplicate .convention.'),
+    ('convention standard extra\njoint R\n', r'NAME:1:21: unexpected .extra.'),
+    ('# only a comment\n', r'NAME:1: no .joint. lines'),
+    ('', r'NAME:1: no .joint. lines'),
+    ('joint R a=1\x00\n', r'NAME:1:11: joint: bad number .1\\x00.'),
+]
+
+
+def rand_robot(rng, njoints):
+    conv = rng.choice(['standard', 'modified'])
+    lines = ['# random robot', 'convention %s' % conv]
+    for _ in range(njoints):
+        t = rng.choice('RRRP')
+        kv = []
+        for k, lo, hi in (('a', -0.5, 0.5), ('d', -0.5, 0.5), ('alpha', -180, 180), ('theta', -180, 180)):
+            if rng.random() < 0.8:
+                kv.append('%s=%s' % (k, rand_num(rng, lo, hi)))
+        if rng.random() < 0.3:
+            kv.append('min=-170 max=170' if t == 'R' else 'min=-1 max=1')
+        rng.shuffle(kv)
+        lines.append('joint %s %s   # comment' % (t, ' '.join(kv)))
+    if rng.random() < 0.5:
+        lines.append('base trans(%s,%s,%s) rotz(%s)' % (rand_num(rng, -1, 1), rand_num(rng, -1, 1),
+                                                        rand_num(rng, -1, 1), rand_num(rng, -180, 180)))
+    if rng.random() < 0.5:
+        lines.append('tool trans(0,0,%s) rotx(%s)' % (rand_num(rng, 0, 0.2), rand_num(rng, -180, 180)))
+    return '\n'.join(lines) + '\n'
+
+
+def rand_q(rng, rob):
+    return ['%.6g' % (rng.uniform(-170, 170) if j['type'] == 'R' else rng.uniform(-1, 1))
+            for j in rob['joints']]
+
+
+def jac_ref(rob, q):
+    """Geometric Jacobian by central differences of the double FK (per rad / per unit)."""
+    n = len(q)
+    J = [[0.0] * n for _ in range(6)]
+    for i, j in enumerate(rob['joints']):
+        h = 1e-6
+        step = math.degrees(h) if j['type'] == 'R' else h
+        qp = q[:]
+        qm = q[:]
+        qp[i] += step
+        qm[i] -= step
+        Tp, Tm = ref_fk(rob, qp), ref_fk(rob, qm)
+        T = ref_fk(rob, q)
+        for r in range(3):
+            J[r][i] = (Tp[r][3] - Tm[r][3]) / (2 * h)
+        # angular velocity: skew part of dR R^T
+        dR = [[(Tp[r][c] - Tm[r][c]) / (2 * h) for c in range(3)] for r in range(3)]
+        W = [[sum(dR[r][k] * T[c][k] for k in range(3)) for c in range(3)] for r in range(3)]
+        J[3][i] = (W[2][1] - W[1][2]) / 2
+        J[4][i] = (W[0][2] - W[2][0]) / 2
+        J[5][i] = (W[1][0] - W[0][1]) / 2
+    return J
+
+
+def group_robotfile(seed, tmp):
+    for k, (text, pat) in enumerate(RF_ERRORS):
+        path = os.path.join(tmp, 'bad%02d.dh' % k)
+        with open(path, 'wb') as f:
+            f.write(text.encode('latin-1'))
+        rc, out, err = run(['fk', path, '0'])
+        want = pat.replace('NAME', re.escape(path))
+        check(rc == 2 and out == '' and re.search(want, err) is not None,
+              'robot file %r: rc %d out %r err %r (want %r)' % (text, rc, out, err, want))
+    path = os.path.join(tmp, 'missing.dh')
+    rc, out, err = run(['fk', path, '0'])
+    check(rc == 2 and out == '' and 'cannot open' in err, 'missing robot file: %r' % err)
+
+    rng = random.Random(seed)
+    good = os.path.join(tmp, 'good.dh')
+    worst = [0.0, 0.0, 0.0, 0.0]
+    for it in range(60):
+        n = rng.randint(1, 8)
+        text = rand_robot(rng, n)
+        with open(good, 'w') as f:
+            f.write(text)
+        rob = read_robot(text)
+        q = rand_q(rng, rob)
+        qf = [float(x) for x in q]
+        # wrong count
+        rc, out, err = run(['fk', good, ','.join(q + ['0'])])
+        check(rc == 2 and out == '' and 'expected %d values' % n in err, 'fk wrong count: %r' % err)
+        rc, out, err = run(['fk', good, ','.join(q)])
+        check(rc == 0, 'fk %r %r: rc %d %r' % (text, q, rc, err))
+        if rc == 0:
+            d = maxdiff(nums(out), ref_fk(rob, qf))
+            worst[0] = max(worst[0], d)
+            # metre-sized random chains of up to 8 joints:
+            # measured over seeds 1..40 <= 6.9e-7
+            check(d <= 1e-6, 'fk %r %r: error %.3g' % (text, q, d))
+        rc, out, err = run(['fk', '--frames', good, ','.join(q)])
+        check(rc == 0, 'fk --frames rc %d %r' % (rc, err))
+        if rc == 0:
+            blocks = out.strip('\n').split('\n\n')
+            refs = ref_fk(rob, qf, frames=True)
+            check(len(blocks) == n + 1, 'fk --frames: %d blocks for %d joints' % (len(blocks), n))
+            for b, R in zip(blocks, refs):
+                check(maxdiff(nums(b), R) <= 1e-6, 'fk --frames block error')
+        rc, out, err = run(['fk', '--fixed', good, ','.join(q)])
+        check(rc == 0, 'fk --fixed %r rc %d %r' % (text, rc, err))
+        if rc == 0:
+            d = maxdiff(nums(out), ref_fk(rob, qf))
+            worst[1] = max(worst[1], d)
+            # inputs rounded to Q16.16 (angles 1.5e-5 deg, lengths 1.5e-5);
+            # measured over seeds 1..40 <= 5.5e-5
+            check(d <= 8e-5, 'fk --fixed %r %r: error %.3g' % (text, q, d))
+        rc, out, err = run(['jacobian', good, ','.join(q)])
+        check(rc == 0, 'jacobian rc %d %r' % (rc, err))
+        if rc == 0:
+            J = nums(out)
+            check(len(J) == 6 and all(len(r) == n for r in J), 'jacobian shape %r' % out)
+            if len(J) == 6 and all(len(r) == n for r in J):
+                Jr = jac_ref(rob, qf)
+                d = max(abs(J[r][c] - Jr[r][c]) for r in range(6) for c in range(n))
+                worst[2] = max(worst[2], d)
+                # includes the O(h^2) central-difference error of the
+                # reference; measured over seeds 1..40 <= 6.3e-7
+                check(d <= 1e-6, 'jacobian %r %r: error %.3g\n%r\n%r' % (text, q, d, J, Jr))
+    print('robotfile: 60 random robots: fk max error %.3g, fk --fixed %.3g, jacobian %.3g (seed %d)'
+          % (worst[0], worst[1], worst[2], seed))
+
+
+def group_examples():
+    rdir = os.path.join(ROOT, 'examples', 'robots')
+    puma = os.path.join(rdir, 'puma560.dh')
+    check(os.path.exists(puma), 'examples/robots/puma560.dh missing')
+    if not os.path.exists(puma):
+        return
+    rob = read_robot(open(puma).read())
+    z = [0.0] * len(rob['joints'])
+    rc, out, err = run(['fk', puma, ','.join('0' for _ in z)])
+    check(rc == 0, 'fk puma560 at 0: rc %d %r' % (rc, err))
+    if rc == 0:
+        got = nums(out)
+        d = maxdiff(got, ref_fk(rob, z))
+        check(d <= 2e-6, 'fk puma560 at 0: error %.3g\n%s' % (d, out))
+        print('fk puma560.dh at 0:\n' + out.rstrip())
+    rng = random.Random(7)
+    for name in sorted(os.listdir(rdir)):
+        if not name.endswith('.dh'):
+            continue
+        path = os.path.join(rdir, name)
+        rob = read_robot(open(path).read())
+        unit = 1000.0 if 'mm' in name else 1.0
+        for it in range(10):
+            q = ['%.4f' % rng.uniform(-90, 90) for _ in rob['joints']]
+            rc, out, err = run(['fk', path, ','.join(q)])
+            check(rc == 0 or 'outside its limits' in err, 'fk %s rc %d %r' % (name, rc, err))
+            if rc:
+                continue
+            T = ref_fk(rob, [float(x) for x in q])
+            d = maxdiff(nums(out), T)
+            check(d <= 5e-6 * unit, 'fk %s %r: error %.3g' % (name, q, d))
+            # ik round trip: target = fk(q), start near q
+            q0 = ['%.4f' % (float(x) + rng.uniform(-5, 5)) for x in q]
+            rc, out, err = run(['ik', path, to_expr(T), '--q0', ','.join(q0)])
+            check(rc in (0, 3), 'ik %s rc %d %r' % (name, rc, err))
+            check(err.startswith('ik: '), 'ik status line %r' % err)
+            if rc == 0:
+                qs = [float(x) for x in nums(out)[0]]
+                T2 = ref_fk(rob, qs)
+                dp = max(abs(T2[r][3] - T[r][3]) for r in range(3))
+                dr = max(abs(T2[r][c] - T[r][c]) for r in range(3) for c in range(3))
+                check(dp <= 1e-3 * unit and dr <= 1e-3, 'ik %s round trip: pos %.3g rot %.3g' % (name, dp, dr))
+
+
+def group_help():
+    for args in (['--help'], ['help'], ['-h']):
+        rc, out, err = run(args)
+        check(rc == 0 and out.startswith('usage: dhmath') and err == '', 'help %r' % args)
+        for word in ('eval', 'axis', 'point', 'plane', 'fk', 'jacobian', 'ik', 'EXPR', 'persp(x|y|z,f)'):
+            check(word in out, 'help mentions %s' % word)
+
+
+def main():
+    global EXE, ROOT
+    if len(sys.argv) < 4:
+        print(__doc__)
+        return 2
+    EXE, ROOT, group = sys.argv[1], sys.argv[2], sys.argv[3]
+    seed = int(sys.argv[5]) if len(sys.argv) > 5 and sys.argv[4] == '--seed' else 20261124
+    with tempfile.TemporaryDirectory() as tmp:
+        if group == 'seed':
+            group_seed()
+        elif group == 'errors':
+            group_errors()
+        elif group == 'random':
+            group_random(seed)
+        elif group == 'robotfile':
+            group_robotfile(seed, tmp)
+        elif group == 'examples':
+            group_examples()
+        elif group == 'help':
+            group_help()
+        else:
+            print('unknown group', group)
+            return 2
+    print('%s: %d checks, %d failures' % (group, CHECKS[0], len(FAILS)))
+    return 1 if FAILS else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())

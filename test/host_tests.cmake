@@ -1,0 +1,19 @@
+# Host-only tests of the dhmath command-line tool (tools/). Included by
+# test/CMakeLists.txt when not cross-compiling. Each group of
+# test/cli/run_cli_tests.py is one ctest test; the script needs only the
+# Python standard library.
+if(TARGET dhmath_cli OR DH_BUILD_TOOLS)
+  find_program(DHMATH_CLI_PYTHON3 NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
+  if(NOT DHMATH_CLI_PYTHON3)
+    find_program(DHMATH_CLI_PYTHON3 NAMES python3 REQUIRED)
+  endif()
+  foreach(group seed errors random robotfile examples help)
+    add_test(NAME cli_${group}
+      COMMAND ${DHMATH_CLI_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/cli/run_cli_tests.py
+              $<TARGET_FILE:dhmath_cli> ${PROJECT_SOURCE_DIR} ${group})
+    set_tests_properties(cli_${group} PROPERTIES TIMEOUT 600 LABELS cli)
+  endforeach()
+  add_test(NAME cli_demo
+    COMMAND sh ${PROJECT_SOURCE_DIR}/tools/demo.sh $<TARGET_FILE_DIR:dhmath_cli>)
+  set_tests_properties(cli_demo PROPERTIES TIMEOUT 600 LABELS cli)
+endif()
