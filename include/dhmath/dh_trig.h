@@ -49,7 +49,7 @@ extern "C" {
  * of 90: exactly 0 and +-1; exact zeros of non-negative angles are +0.
  *
  * Uses only single-precision arithmetic (no double, no libm); no division.
- * Stack: < 32 bytes.
+ * Stack: <= 56 bytes (Cortex-M0+; 72 through dh_sin_f32/dh_cos_f32).
  *
  * @return DH_OK; DH_ERR_NAN if @p deg is NaN or +-Inf, and then both
  *         outputs are set to a quiet NaN (never a table read).
@@ -59,6 +59,7 @@ dh_status dh_sincos_f32(float deg, float *s, float *c);
 /**
  * @brief sin of @p deg degrees (float); same reduction, accuracy and
  *        symmetry as dh_sincos_f32() and bit-identical to its sine output.
+ * @param deg angle in degrees, any float.
  * @return sin(deg) in [-1, 1]; a quiet NaN for NaN or +-Inf input.
  */
 float dh_sin_f32(float deg);
@@ -66,6 +67,7 @@ float dh_sin_f32(float deg);
 /**
  * @brief cos of @p deg degrees (float); same reduction, accuracy and
  *        symmetry as dh_sincos_f32() and bit-identical to its cosine output.
+ * @param deg angle in degrees, any float.
  * @return cos(deg) in [-1, 1]; a quiet NaN for NaN or +-Inf input.
  */
 float dh_cos_f32(float deg);
@@ -101,19 +103,24 @@ float dh_cos_f32(float deg);
  *
  * Integer only: no float, no libm, no division of any width; 32x32->64
  * multiplies (one library call each on Cortex-M0, UMULL on M3/M4/M7).
- * About 100 instructions on Cortex-M4. Stack: < 64 bytes. Cannot fail.
+ * About 100 instructions on Cortex-M4. Stack: <= 64 bytes (Cortex-M0+;
+ * 80 through dh_sin_q/dh_cos_q). Cannot fail.
  */
 void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30);
 
 /**
  * @brief sin of @p deg_q16 degrees (Q16.16) as Q2.30; bit-identical to the
  *        sine output of dh_sincos_q(). Defined for every int32.
+ * @param deg_q16 angle in degrees, Q16.16, any int32.
+ * @return sin, Q2.30 in [-0x40000000, 0x40000000].
  */
 dh_q30 dh_sin_q(dh_q16 deg_q16);
 
 /**
  * @brief cos of @p deg_q16 degrees (Q16.16) as Q2.30; bit-identical to the
  *        cosine output of dh_sincos_q(). Defined for every int32.
+ * @param deg_q16 angle in degrees, Q16.16, any int32.
+ * @return cos, Q2.30 in [-0x40000000, 0x40000000].
  */
 dh_q30 dh_cos_q(dh_q16 deg_q16);
 
