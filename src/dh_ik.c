@@ -15,9 +15,16 @@
  * The step is projected on the joint box INSIDE the iteration: joints that
  * sit on a bound and are pushed outward are removed from the system and the
  * system is solved again for the others; the remaining step is clamped into
- * the box. A trial point is accepted only when it lowers E, so the current
- * iterate is always the best one found. Everything lives in the caller's
- * workspace; no heap, no recursion.
+ * the box. A trial point is accepted only when it lowers E. mu is divided
+ * by 4 after an accepted step (down to 0.1) and multiplied by 10 after a
+ * rejected one. An attempt that stalls (4 steps in a row with less than 1%
+ * decrease of E, or an empty projected step) is restarted from a
+ * deterministic pseudo-random point in the joint box (xorshift32 with a
+ * fixed seed: same inputs, same outputs), at most p->restarts times within
+ * p->max_iter steps; the best configuration over all attempts is returned.
+ * Once the tolerances are met, up to 3 more steps refine the result towards
+ * the float resolution. Everything lives in the caller's workspace; no
+ * heap, no recursion.
  */
 #include "dhmath/dh_kin.h"
 
@@ -30,6 +37,13 @@
 #define IK_MU_MAX 1e12f
 #define IK_MU_MIN 0.1f         /* lowest multiplier of E in the damping */
 #define IK_STALL_RATIO 0.99f    /* E must drop below this fraction to count as progress */
+
+/* Keep the helpers out of dh_ik_f32's frame so each frame stays < 256 bytes. */
+#if defined(__GNUC__) || defined(__clang__)
+#define IK_NOINLINE __attribute__((noinline))
+#else
+#define IK_NOINLINE
+#endif
 
 static int ik_finite(float x) { return fabsf(x) <= FLT_MAX; }
 
@@ -80,7 +94,7 @@ static float ik_row_w(uint32_t mask, uint32_t row, float w_rot)
 }
 
 /* Evaluate J, e at q; *E = 1/2 |W e|^2, *ep / *er = masked error norms. */
-static dh_status ik_eval(const dh_robot *r, const dh_mat4_f32 *target, const float *q,
+static IK_NOINLINE dh_status ik_eval(const dh_robot *r, const dh_mat4_f32 *target, const float *q,
                          const dh_ik_params *p, float *J, float *e, float *E, float *ep, float *er)
 {
     dh_mat4_f32 T;
@@ -117,7 +131,7 @@ static dh_status ik_eval(const dh_robot *r, const dh_mat4_f32 *target, const flo
  * lower triangle in place) and solve for dx. 0 on success, -1 if the
  * factorisation failed (not positive definite in float / not finite).
  */
-static int ik_solve(const ik_ws *w, uint32_t n, uint32_t free_bits, uint32_t mask, float w_rot,
+static IK_NOINLINE int ik_solve(const ik_ws *w, uint32_t n, uint32_t free_bits, uint32_t mask, float w_rot,
                     float damp)
 {
     float *H = w->H, *g = w->g, *x = w->dx;
@@ -212,7 +226,7 @@ static float ik_length_scale(const dh_robot *r)
  * Returns 1 if qb differs from qa, 0 for an empty step, -1 if the normal
  * matrix could not be factored.
  */
-static int ik_step(const dh_robot *r, const ik_ws *w, const dh_ik_params *p, uint32_t all_bits,
+static IK_NOINLINE int ik_step(const dh_robot *r, const ik_ws *w, const dh_ik_params *p, uint32_t all_bits,
                    float damp)
 {
     uint32_t n = r->n, free_bits = all_bits, pass, i;
@@ -242,7 +256,7 @@ static int ik_step(const dh_robot *r, const ik_ws *w, const dh_ik_params *p, uin
 
 /* Deterministic restart point: uniform in the box for limited joints,
  * q0 +- 180 deg (revolute) or q0 +- L (prismatic) for free joints. */
-static void ik_sample(const dh_robot *r, const float *q0, float L, uint32_t *seed, float *qo)
+static IK_NOINLINE void ik_sample(const dh_robot *r, const float *q0, float L, uint32_t *seed, float *qo)
 {
     uint32_t i;
     for (i = 0; i < r->n; i++) {

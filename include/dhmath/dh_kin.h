@@ -55,9 +55,10 @@ extern "C" {
  *         is passed on (J zero-filled, T_end untouched).
  *
  * Accuracy (test/test_jacobian.c, docs/accuracy_kin.md): against central
- * finite differences of a double-precision FK, largest entry error about
- * 1e-6 per metre of reach for the Puma 560, UR5 and Panda (float rounding
- * of the frames).
+ * finite differences of the double-precision reference FK, largest entry
+ * error 2.4e-7 (base frame) and 4.6e-7 (tool frame) for the Puma 560, UR5
+ * and Panda in metres, 5.7e-7 for random 1..7-joint robots of both
+ * conventions with prismatic joints, base and tool.
  */
 dh_status dh_jacobian_f32(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end);
 
@@ -75,8 +76,9 @@ dh_status dh_jacobian_tool_f32(const dh_robot *r, const float *q, float *J, dh_m
  * @brief Orientation error a(dR), dR = R_target * R^T (seed 003).
  *
  * w is the rotation vector (unit axis times angle in radians, angle in
- * [0, pi]) with R_target = Rot(w) * R. Cases (seed 003): exact identity
- * diagonal -> 0; angle <= 90 deg: w = atan2(|u|, tr - 1) / |u| * u with
+ * [0, pi]) with R_target = Rot(w) * R. Cases (seed 003): identity -> 0
+ * (recognised by u = 0, not by the diagonal alone, which rounds to exactly
+ * 1 in float below ~3e-4 rad); angle <= 90 deg: w = atan2(|u|, tr - 1) / |u| * u with
  * u = (r32 - r23, r13 - r31, r21 - r12); angle > 90 deg: the axis is taken
  * from the symmetric part (dR + dR^T)/2 (largest diagonal first) and signed
  * like u, which stays accurate up to and at 180 deg (the seed's diagonal
@@ -90,9 +92,10 @@ dh_status dh_jacobian_tool_f32(const dh_robot *r, const float *q, float *J, dh_m
  *         input is not orthonormal within DH_ROT_ERROR_TOL (w untouched on
  *         error).
  *
- * Accuracy (test/test_jacobian.c): |w - w_ref| <= 1e-6 rad over random
- * rotations including angles within 1e-6 rad of 0 and pi (at exactly pi the
- * sign of w is arbitrary, both are the same rotation).
+ * Accuracy (test/test_jacobian.c, docs/accuracy_kin.md): |w - w_ref|
+ * <= 6.1e-7 rad measured over random float rotations at all angles, below
+ * 1e-5 rad (4.8e-8), around 90 deg and within 1e-6 rad of 180 deg (at
+ * exactly pi the sign of w is arbitrary, both are the same rotation).
  */
 dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh_vec3_f32 *w);
 
@@ -138,7 +141,9 @@ typedef struct {
 
 /**
  * Sugihara's constant damping bias, relative to the robot's characteristic
- * length L squared: W_N = E_k + DH_IK_WBAR * L^2.
+ * length L squared: W_N = mu E_k + DH_IK_WBAR * L^2. Small (near the float
+ * noise of J^T J) so that convergence stays fast near singular targets; it
+ * keeps the normal matrix positive definite for redundant arms.
  */
 #define DH_IK_WBAR 1e-7f
 
@@ -146,8 +151,10 @@ typedef struct {
 #define DH_IK_WORK_FLOATS(n) ((n) * (n) + 19u * (n) + 12u)
 
 /**
- * @brief Defaults for a robot described in metres: max_iter 100, mask
- * DH_IK_FULL, tol_pos 1e-6 (m), tol_rot 1e-5 (rad), w_rot 1 (m/rad).
+ * @brief Defaults for a robot described in metres: max_iter 400, mask
+ * DH_IK_FULL, tol_pos 1e-6 (m), tol_rot 1e-5 (rad), w_rot 1 (m/rad),
+ * restarts 40. Typical solves take 8..45 steps (docs/accuracy_kin.md); the
+ * bound only matters for hard or unreachable targets.
  * For a millimetre robot use tol_pos ~1e-3 and w_rot ~1000 (the float
  * resolution of a 1000 mm coordinate is 6e-5 mm).
  */
@@ -172,7 +179,14 @@ void dh_ik_params_default(dh_ik_params *p);
  * (multi-turn and prismatic joints are safe). q0 outside its limits is first
  * clamped into them.
  *
- * Once both tolerances are met, up to 2 further steps refine the solution
+ * An attempt stalls after 4 steps in a row that lower E by less than 1%
+ * (or an empty projected step); it is then restarted from a deterministic
+ * pseudo-random configuration in the box (limited joints uniform in their
+ * range, free joints q0 +- 180 deg / +- L), up to p->restarts times within
+ * p->max_iter steps. The result is the best configuration of all attempts.
+ * The call is deterministic: same inputs, bitwise same outputs.
+ *
+ * Once both tolerances are met, up to 3 further steps refine the solution
  * towards the float resolution of the forward kinematics (a step that does
  * not lower E ends the refinement).
  *
@@ -210,8 +224,16 @@ void dh_ik_params_default(dh_ik_params *p);
  * multiply-adds) and a Cholesky solve (n^3/6), repeated at most n times
  * when joints are frozen at limits.
  *
- * Measured (test/test_ik.c, docs/accuracy_kin.md): see that file for
- * success rates and iteration counts on the Puma 560, UR5 and Panda.
+ * Measured (test/test_ik.c, docs/accuracy_kin.md; 1000 random reachable
+ * targets, defaults, true error judged with a double FK): full pose to
+ * 1e-6 m / 1e-5 rad, UR5 99.9-100% (mean 21 steps), Panda 99.6-99.9%
+ * (mean 25), Puma 560 98.2-99.4% depending on the random set (mean 43;
+ * the misses are targets within ~3 deg of the elbow singularity and local
+ * minima at the joint limits); position only 99.5-100% (mean 8-18).
+ *
+ * Stack (GCC -fstack-usage, Cortex-M4 -O2): 224 bytes in its own frame;
+ * the deepest chain dh_ik_f32 -> evaluation (96) -> dh_jacobian_f32 (200)
+ * -> dh_link_f32 is about 520 bytes plus dh_link_f32's frame.
  */
 dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q0, float *q,
                     const dh_ik_params *p, float *work, size_t work_len, dh_ik_result *res);
