@@ -51,32 +51,68 @@ void dh_mat4_inv_rigid_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 /* Unit roundoff of float, 2^-24. */
 #define DH_U24 5.9604644775390625e-8f
 
-/* max_i sum_j |M(i, j)| (= ||T||_1) */
-static float dh_norm_rows(const dh_mat4_f32 *M)
+/*
+ * Balanced norms. The homogeneous coordinate carries a different unit from
+ * the other three (a length against a pure number), so the condition test
+ * is made on D^-1 M D with D = diag(1, 1, 1, sg): in T's terms the column p
+ * is divided by sg and the bottom row multiplied by sg. The similarity does
+ * not change what is computed, only how ill-conditioning is measured: a
+ * rigid transform with |p| = 1e6 is as well conditioned as one with |p| = 1
+ * (it is the same motion in other units). sg balances the last row and
+ * column (Osborne's choice, sqrt(|p| / |q|)); for affine matrices (q = 0) it
+ * makes the p column negligible.
+ */
+static float dh_balance(const dh_mat4_f32 *M)
+{
+    const float cp = fabsf(M->m[3][0]) + fabsf(M->m[3][1]) + fabsf(M->m[3][2]); /* |p| */
+    const float rq = fabsf(M->m[0][3]) + fabsf(M->m[1][3]) + fabsf(M->m[2][3]); /* |q| */
+    float m3 = 0.0f, sg;
+    int i;
+    for (i = 0; i < 3; i++) {
+        const float rs = fabsf(M->m[i][0]) + fabsf(M->m[i][1]) + fabsf(M->m[i][2]);
+        m3 = (rs > m3) ? rs : m3;
+    }
+    if (cp == 0.0f) return 1.0f;
+    if (rq > 0.0f) sg = sqrtf(cp) / sqrtf(rq);
+    else sg = (m3 > 0.0f) ? cp / m3 * 16777216.0f : 1.0f;
+    /* keep sg * (anything O(1..2^60)) finite */
+    if (sg > 1.15292150e18f) sg = 1.15292150e18f;       /* 2^60 */
+    if (sg < 8.67361738e-19f) sg = 8.67361738e-19f;     /* 2^-60 */
+    return sg;
+}
+
+/* max row sum of D^-1 M D (row view; = balanced ||T||_1) */
+static float dh_norm_rows(const dh_mat4_f32 *M, float sg)
 {
     float n = 0.0f;
     int i;
-    for (i = 0; i < 4; i++) {
-        const float rs = fabsf(M->m[i][0]) + fabsf(M->m[i][1]) + fabsf(M->m[i][2]) + fabsf(M->m[i][3]);
+    for (i = 0; i < 3; i++) {
+        const float rs = fabsf(M->m[i][0]) + fabsf(M->m[i][1]) + fabsf(M->m[i][2]) + fabsf(M->m[i][3]) * sg;
+        n = (rs > n) ? rs : n;
+    }
+    {
+        const float rs = (fabsf(M->m[3][0]) + fabsf(M->m[3][1]) + fabsf(M->m[3][2])) / sg + fabsf(M->m[3][3]);
         n = (rs > n) ? rs : n;
     }
     return n;
 }
 
-/* ||X M - I||inf in the row view (row i of X M is the combination of the
- * rows of M with the weights of row i of X) */
-static float dh_residual(const dh_mat4_f32 *X, const dh_mat4_f32 *M)
+/* balanced ||X (s M) - I|| in the row view (row i of X M is the
+ * combination of the rows of M with the weights of row i of X); s is a
+ * power of two, so s M is exact */
+static float dh_residual(const dh_mat4_f32 *X, const dh_mat4_f32 *M, float s, float sg)
 {
     float res = 0.0f;
     int i, j;
     for (i = 0; i < 4; i++) {
         float q[4], rs;
+        const float x0 = X->m[i][0] * s, x1 = X->m[i][1] * s, x2 = X->m[i][2] * s, x3 = X->m[i][3] * s;
         for (j = 0; j < 4; j++) {
-            q[j] = X->m[i][0] * M->m[0][j] + X->m[i][1] * M->m[1][j] + X->m[i][2] * M->m[2][j] +
-                   X->m[i][3] * M->m[3][j];
+            q[j] = x0 * M->m[0][j] + x1 * M->m[1][j] + x2 * M->m[2][j] + x3 * M->m[3][j];
         }
         q[i] -= 1.0f;
-        rs = fabsf(q[0]) + fabsf(q[1]) + fabsf(q[2]) + fabsf(q[3]);
+        if (i < 3) rs = fabsf(q[0]) + fabsf(q[1]) + fabsf(q[2]) + fabsf(q[3]) * sg;
+        else rs = (fabsf(q[0]) + fabsf(q[1]) + fabsf(q[2])) / sg + fabsf(q[3]);
         res = (rs > res) ? rs : res;
     }
     return res;
@@ -84,50 +120,49 @@ static float dh_residual(const dh_mat4_f32 *X, const dh_mat4_f32 *M)
 
 /*
  * Adjugate / determinant (Laplace expansion by the 2x2 minors of rows 0,1
- * and rows 2,3 of M): straight-line and vector friendly, accurate for well
- * conditioned matrices. Writes X = M^-1 and returns 1, or returns 0 when
- * det == 0 (X then unchanged).
+ * and rows 2,3 of s M): straight-line and vector friendly, accurate for
+ * well conditioned matrices. Writes X = (s M)^-1 and returns 1, or returns
+ * 0 when det == 0 (X then unchanged).
  */
-static int dh_inv_cofactor(const dh_mat4_f32 *M, dh_mat4_f32 *X)
+static int dh_inv_cofactor(const dh_mat4_f32 *M, float sc, dh_mat4_f32 *X)
 {
-    const float (*a)[4] = M->m;
-    float (*x)[4] = X->m;
-    float s0, s1, s2, s3, s4, s5, c0, c1, c2, c3, c4, c5, det, f;
-    int i, j;
-    s0 = a[0][0] * a[1][1] - a[1][0] * a[0][1];
-    s1 = a[0][0] * a[1][2] - a[1][0] * a[0][2];
-    s2 = a[0][0] * a[1][3] - a[1][0] * a[0][3];
-    s3 = a[0][1] * a[1][2] - a[1][1] * a[0][2];
-    s4 = a[0][1] * a[1][3] - a[1][1] * a[0][3];
-    s5 = a[0][2] * a[1][3] - a[1][2] * a[0][3];
-    c5 = a[2][2] * a[3][3] - a[3][2] * a[2][3];
-    c4 = a[2][1] * a[3][3] - a[3][1] * a[2][3];
-    c3 = a[2][1] * a[3][2] - a[3][1] * a[2][2];
-    c2 = a[2][0] * a[3][3] - a[3][0] * a[2][3];
-    c1 = a[2][0] * a[3][2] - a[3][0] * a[2][2];
-    c0 = a[2][0] * a[3][1] - a[3][0] * a[2][1];
-    det = s0 * c5 - s1 * c4 + s2 * c3 + s3 * c2 - s4 * c1 + s5 * c0;
+    /* aRC = element (R, C) of s M, held in scalars (registers) */
+    const float a00 = M->m[0][0] * sc, a01 = M->m[0][1] * sc, a02 = M->m[0][2] * sc, a03 = M->m[0][3] * sc;
+    const float a10 = M->m[1][0] * sc, a11 = M->m[1][1] * sc, a12 = M->m[1][2] * sc, a13 = M->m[1][3] * sc;
+    const float a20 = M->m[2][0] * sc, a21 = M->m[2][1] * sc, a22 = M->m[2][2] * sc, a23 = M->m[2][3] * sc;
+    const float a30 = M->m[3][0] * sc, a31 = M->m[3][1] * sc, a32 = M->m[3][2] * sc, a33 = M->m[3][3] * sc;
+    const float s0 = a00 * a11 - a10 * a01;
+    const float s1 = a00 * a12 - a10 * a02;
+    const float s2 = a00 * a13 - a10 * a03;
+    const float s3 = a01 * a12 - a11 * a02;
+    const float s4 = a01 * a13 - a11 * a03;
+    const float s5 = a02 * a13 - a12 * a03;
+    const float c5 = a22 * a33 - a32 * a23;
+    const float c4 = a21 * a33 - a31 * a23;
+    const float c3 = a21 * a32 - a31 * a22;
+    const float c2 = a20 * a33 - a30 * a23;
+    const float c1 = a20 * a32 - a30 * a22;
+    const float c0 = a20 * a31 - a30 * a21;
+    const float det = s0 * c5 - s1 * c4 + s2 * c3 + s3 * c2 - s4 * c1 + s5 * c0;
+    float f;
     if (det == 0.0f) return 0;
-    x[0][0] =  a[1][1] * c5 - a[1][2] * c4 + a[1][3] * c3;
-    x[0][1] = -a[0][1] * c5 + a[0][2] * c4 - a[0][3] * c3;
-    x[0][2] =  a[3][1] * s5 - a[3][2] * s4 + a[3][3] * s3;
-    x[0][3] = -a[2][1] * s5 + a[2][2] * s4 - a[2][3] * s3;
-    x[1][0] = -a[1][0] * c5 + a[1][2] * c2 - a[1][3] * c1;
-    x[1][1] =  a[0][0] * c5 - a[0][2] * c2 + a[0][3] * c1;
-    x[1][2] = -a[3][0] * s5 + a[3][2] * s2 - a[3][3] * s1;
-    x[1][3] =  a[2][0] * s5 - a[2][2] * s2 + a[2][3] * s1;
-    x[2][0] =  a[1][0] * c4 - a[1][1] * c2 + a[1][3] * c0;
-    x[2][1] = -a[0][0] * c4 + a[0][1] * c2 - a[0][3] * c0;
-    x[2][2] =  a[3][0] * s4 - a[3][1] * s2 + a[3][3] * s0;
-    x[2][3] = -a[2][0] * s4 + a[2][1] * s2 - a[2][3] * s0;
-    x[3][0] = -a[1][0] * c3 + a[1][1] * c1 - a[1][2] * c0;
-    x[3][1] =  a[0][0] * c3 - a[0][1] * c1 + a[0][2] * c0;
-    x[3][2] = -a[3][0] * s3 + a[3][1] * s1 - a[3][2] * s0;
-    x[3][3] =  a[2][0] * s3 - a[2][1] * s1 + a[2][2] * s0;
     f = 1.0f / det;
-    for (i = 0; i < 4; i++) {
-        for (j = 0; j < 4; j++) x[i][j] *= f;
-    }
+    X->m[0][0] = ( a11 * c5 - a12 * c4 + a13 * c3) * f;
+    X->m[0][1] = (-a01 * c5 + a02 * c4 - a03 * c3) * f;
+    X->m[0][2] = ( a31 * s5 - a32 * s4 + a33 * s3) * f;
+    X->m[0][3] = (-a21 * s5 + a22 * s4 - a23 * s3) * f;
+    X->m[1][0] = (-a10 * c5 + a12 * c2 - a13 * c1) * f;
+    X->m[1][1] = ( a00 * c5 - a02 * c2 + a03 * c1) * f;
+    X->m[1][2] = (-a30 * s5 + a32 * s2 - a33 * s1) * f;
+    X->m[1][3] = ( a20 * s5 - a22 * s2 + a23 * s1) * f;
+    X->m[2][0] = ( a10 * c4 - a11 * c2 + a13 * c0) * f;
+    X->m[2][1] = (-a00 * c4 + a01 * c2 - a03 * c0) * f;
+    X->m[2][2] = ( a30 * s4 - a31 * s2 + a33 * s0) * f;
+    X->m[2][3] = (-a20 * s4 + a21 * s2 - a23 * s0) * f;
+    X->m[3][0] = (-a10 * c3 + a11 * c1 - a12 * c0) * f;
+    X->m[3][1] = ( a00 * c3 - a01 * c1 + a02 * c0) * f;
+    X->m[3][2] = (-a30 * s3 + a31 * s1 - a32 * s0) * f;
+    X->m[3][3] = ( a20 * s3 - a21 * s1 + a22 * s0) * f;
     return 1;
 }
 
@@ -186,11 +221,9 @@ static int dh_inv_gauss_jordan(dh_mat4_f32 *X)
 
 dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
-    dh_mat4_f32 A;          /* s * T when T needs scaling */
-    dh_mat4_f32 X;          /* the inverse being built */
-    const dh_mat4_f32 *M = T;
+    dh_mat4_f32 X; /* the inverse being built */
     float m4[4] = { 0.0f, 0.0f, 0.0f, 0.0f }, z4[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-    float mx, z, s = 1.0f, na, nx;
+    float mx, z, s = 1.0f, sg, na, nx;
     uint32_t e;
     int i, j;
 
@@ -219,33 +252,34 @@ dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
          * cofactors nor the determinant over- or underflow */
         const uint32_t bits = ((e >= 254u) ? 1u : 254u - e) << 23;
         memcpy(&s, &bits, sizeof s);
-        for (i = 0; i < 4; i++) {
-            for (j = 0; j < 4; j++) A.m[i][j] = T->m[i][j] * s;
-        }
-        M = &A;
     }
-    na = dh_norm_rows(M);
+    /* from here on the matrix worked on is M = s T (row view), formed on
+     * the fly: s is a power of two, so s T is exact */
+    sg = dh_balance(T); /* scale-free: a ratio of sums of |T_ij| */
+    na = dh_norm_rows(T, sg) * s;
 
     /* Fast path: cofactors, accepted when the estimated condition number is
      * below the limit AND the residual is as small as a backward stable
      * method leaves (8 u ||X|| ||M||). Otherwise (ill-conditioned or
      * singular input) Gauss-Jordan with pivoting decides. */
-    if (dh_inv_cofactor(M, &X)) {
-        nx = dh_norm_rows(&X);
-        if (na * nx < DH_MAT4_COND_MAX && dh_residual(&X, M) <= 8.0f * DH_U24 * na * nx) {
+    if (dh_inv_cofactor(T, s, &X)) {
+        nx = dh_norm_rows(&X, sg);
+        if (na * nx < DH_MAT4_COND_MAX && dh_residual(&X, T, s, sg) <= 8.0f * DH_U24 * na * nx) {
             goto accept;
         }
     }
-    X = *M;
+    for (i = 0; i < 4; i++) {
+        for (j = 0; j < 4; j++) X.m[i][j] = T->m[i][j] * s;
+    }
     if (!dh_inv_gauss_jordan(&X)) return DH_ERR_SINGULAR;
-    nx = dh_norm_rows(&X);
+    nx = dh_norm_rows(&X, sg);
     /* (1) estimated condition number */
     if (!(na * nx < DH_MAT4_COND_MAX)) return DH_ERR_SINGULAR;
     /* (2) certificate: ||X M - I|| <= 1/2 proves M non-singular with
      * ||M^-1|| <= 2 ||X||; for a singular M, X M - I has the eigenvalue -1,
      * so the test fails whatever X is (the rounding of the residual is
      * below 4 u na nx < 0.13). */
-    if (!(dh_residual(&X, M) <= 0.5f)) return DH_ERR_SINGULAR;
+    if (!(dh_residual(&X, T, s, sg) <= 0.5f)) return DH_ERR_SINGULAR;
 
 accept:
     /* T^-1 = s X (exact power of two unless it overflows); "+ 0.0f" maps
