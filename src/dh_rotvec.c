@@ -163,15 +163,24 @@ dh_status dh_rotvec_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *phi)
         dh_rodrigues(R, k, 0.0f, 1.0f, 0.0f); /* exactly I */
         return DH_OK;
     }
-    x /= m;
-    y /= m;
-    z /= m;
-    t = sqrtf(x * x + y * y + z * z); /* |phi| / m, in [1, sqrt 3] */
-    k[0] = x / t;
-    k[1] = y / t;
-    k[2] = z / t;
-    t *= m; /* |phi|: finite unless |phi| > FLT_MAX, which sinf handles as NaN */
-    if (!dh_rot_finite(t)) return DH_ERR_NAN;
+    if (m >= 1.0842022e-19f && m <= 9.2233720e18f) {
+        /* 2^-63 .. 2^63: the squares neither overflow nor underflow, so
+         * |phi| is formed directly (one rounding less than with scaling) */
+        t = sqrtf(x * x + y * y + z * z);
+        k[0] = x / t;
+        k[1] = y / t;
+        k[2] = z / t;
+    } else {
+        x /= m;
+        y /= m;
+        z /= m;
+        t = sqrtf(x * x + y * y + z * z); /* |phi| / m, in [1, sqrt 3] */
+        k[0] = x / t;
+        k[1] = y / t;
+        k[2] = z / t;
+        t *= m;
+        if (!dh_rot_finite(t)) return DH_ERR_NAN; /* |phi| > FLT_MAX */
+    }
     sh = sinf(0.5f * t);
     ch = cosf(0.5f * t);
     dh_rodrigues(R, k, 2.0f * sh * ch, 1.0f - 2.0f * sh * sh, 2.0f * sh * sh);
