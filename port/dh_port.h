@@ -9,7 +9,7 @@
  *
  * | feature            | macro                 | used when                                  |
  * |--------------------|-----------------------|--------------------------------------------|
- * | SMULL / SMLAL      | DH_PORT_HAS_SMULL     | __ARM_ARCH_7M__, __ARM_ARCH_7EM__, __ARM_ARCH_8M_MAIN__ (M3/M4/M7/M33) |
+ * | SMULL / SMLAL      | DH_PORT_HAS_SMULL     | __ARM_ARCH_7M__, __ARM_ARCH_7EM__, __ARM_ARCH_8M_MAIN__ (M3/M4/M7/M33); emitted by the compiler from the widening product (see dh_port_smull) |
  * | SSAT               | DH_PORT_HAS_SSAT      | __ARM_FEATURE_SAT (M3 and up)              |
  * | CLZ                | DH_PORT_HAS_CLZ       | __ARM_FEATURE_CLZ (M3 and up)              |
  * | QADD               | DH_PORT_HAS_QADD      | __ARM_FEATURE_DSP (M4/M7/M33)              |
@@ -44,8 +44,9 @@ extern "C" {
 
 /** Fails to compile unless >> of negative int32/int64 is arithmetic. */
 typedef char dh_port_check_asr[(((int32_t)-5 >> 1) == -3 && ((int64_t)-5 >> 1) == -3) ? 1 : -1];
-/** Fails to compile unless uint32 -> int32 conversion wraps modulo 2^32. */
-typedef char dh_port_check_wrap[((int32_t)(uint32_t)0xFFFFFFFEu == -2) ? 1 : -1];
+/** Fails to compile unless unsigned -> signed conversion wraps (32 and 16 bits). */
+typedef char dh_port_check_wrap[((int32_t)(uint32_t)0xFFFFFFFEu == -2 &&
+                                 (int16_t)(uint16_t)0x8001u == -32767) ? 1 : -1];
 
 /* ---- feature selection ------------------------------------------------ */
 
@@ -79,29 +80,47 @@ typedef char dh_port_check_wrap[((int32_t)(uint32_t)0xFFFFFFFEu == -2) ? 1 : -1]
 
 /* ---- plain-C versions (always compiled: the tests compare against them) */
 
+/* 64-bit value from two 32-bit words (no 64-bit shift is executed). */
+#define DH_PORT_W64(h, l) (((uint64_t)(uint32_t)(h) << 32) | (uint32_t)(l))
+
 /**
- * @brief Full signed product a*b as int64 (never overflows: |a*b| <= 2^62).
+ * @brief acc + a*b modulo 2^64 with four 16x16->32 multiplies and 32-bit
+ *        add-with-carry only: the form for cores without SMULL (ARMv6-M),
+ *        where a 64-bit product would call the general 64x64 routine
+ *        __aeabi_lmul. Compiled (and tested) on every platform.
  *
- * On cores without a 32x32->64 multiply (Cortex-M0/M0+) the compiler would
- * call the general 64x64 library routine (__aeabi_lmul); this version uses
- * four 16x16->32 MULS instead, which is about half the work.
+ * Balanced split: a = ah 2^16 + al with al = the low half read as int16
+ * (in [-2^15, 2^15)) and ah = round(a / 2^16) in [-2^15, 2^15]; same for b.
+ * Then a b = ah bh 2^32 + m 2^16 + al bl with m = ah bl + al bh, and every
+ * partial result fits int32 with no overflow: |ah bh|, |al bl| <= 2^30, and
+ * m in [-2^31, 2^31 - 1] (m = 2^31 would need ah = bl = al = bh = -2^15, but
+ * ah = -2^15 forces al >= 0). Two 64-bit additions built from words, so the
+ * compiler emits ADDS/ADCS pairs (Cortex-M0, -O2: ~26 instructions per
+ * product, against ~50 through __aeabi_lmul).
  */
+static inline uint64_t dh_port_mac16(uint64_t acc, int32_t a, int32_t b)
+{
+    int32_t al = (int32_t)(int16_t)(uint16_t)((uint32_t)a & 0xFFFFu);   /* SXTH */
+    int32_t bl = (int32_t)(int16_t)(uint16_t)((uint32_t)b & 0xFFFFu);
+    int32_t ah = ((a >> 15) + 1) >> 1, bh = ((b >> 15) + 1) >> 1;
+    int32_t m = ah * bl + al * bh, ll = al * bl;
+    acc += DH_PORT_W64(ah * bh + (m >> 16), (uint32_t)m << 16);
+    acc += DH_PORT_W64(ll >> 31, ll);
+    return acc;
+}
+
+/* 1 where a 32x32->64 product would be a library call (ARMv6-M, ARMv8-M baseline) */
+#if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_8M_BASE__)
+#define DH_PORT_MUL64_IS_CALL 1
+#else
+#define DH_PORT_MUL64_IS_CALL 0
+#endif
+
+/** @brief Full signed product a*b as int64 (never overflows: |a*b| <= 2^62). */
 static inline int64_t dh_port_smull_c(int32_t a, int32_t b)
 {
-#if defined(__arm__) && !DH_PORT_HAS_SMULL && defined(__ARM_ARCH_6M__)
-    /* a = ah*2^16 + al, al in [0, 65535], ah in [-32768, 32767]; same for b. */
-    uint32_t al = (uint32_t)a & 0xFFFFu, bl = (uint32_t)b & 0xFFFFu;
-    int32_t ah = a >> 16, bh = b >> 16;
-    uint32_t ll = al * bl;                          /* < 2^32 */
-    int32_t m1 = ah * (int32_t)bl;                  /* |.| < 2^31 */
-    int32_t m2 = (int32_t)al * bh;                  /* |.| < 2^31 */
-    uint32_t hh = (uint32_t)(ah * bh);              /* |.| <= 2^30 */
-    /* sum = hh*2^32 + (m1 + m2)*2^16 + ll, computed modulo 2^64 with the
-     * mid terms sign-extended; the exact result fits int64. */
-    uint32_t lo = ll, hi = hh, t;
-    t = (uint32_t)m1 << 16; lo += t; hi += (lo < t) + (uint32_t)(m1 >> 16);
-    t = (uint32_t)m2 << 16; lo += t; hi += (lo < t) + (uint32_t)(m2 >> 16);
-    return (int64_t)(((uint64_t)hi << 32) | lo);
+#if DH_PORT_MUL64_IS_CALL
+    return (int64_t)dh_port_mac16(0u, a, b);
 #else
     return (int64_t)a * (int64_t)b;
 #endif
@@ -114,7 +133,11 @@ static inline int64_t dh_port_smull_c(int32_t a, int32_t b)
  */
 static inline int64_t dh_port_smlal_c(int64_t acc, int32_t a, int32_t b)
 {
+#if DH_PORT_MUL64_IS_CALL
+    return (int64_t)dh_port_mac16((uint64_t)acc, a, b);
+#else
     return (int64_t)((uint64_t)acc + (uint64_t)dh_port_smull_c(a, b));
+#endif
 }
 
 /** @brief Saturate x to a signed @p bits-bit value, bits in 1..32. */
@@ -152,13 +175,16 @@ static inline int32_t dh_port_qadd_c(int32_t a, int32_t b)
 
 /* ---- dispatching versions: what the library calls ---------------------- */
 
-/** @brief a*b as int64 (SMULL when available). */
+/** @brief a*b as int64 (SMULL when available; 4 x MULS on ARMv6-M). */
 static inline int64_t dh_port_smull(int32_t a, int32_t b)
 {
 #if DH_PORT_HAS_SMULL
-    int64_t r;
-    __asm__("smull %Q0, %R0, %1, %2" : "=&r"(r) : "r"(a), "r"(b));
-    return r;
+    /* GCC and Clang compile the widening product to one SMULL, and a sum
+     * of them to SMLAL. This is used instead of inline asm on purpose:
+     * asm pins 64-bit register pairs, and measured on Cortex-M4 (6-joint
+     * fixed FK under QEMU) the asm version executed ~25 % more
+     * instructions because of the register shuffles around it. */
+    return (int64_t)a * (int64_t)b;
 #else
     return dh_port_smull_c(a, b);
 #endif
@@ -167,12 +193,8 @@ static inline int64_t dh_port_smull(int32_t a, int32_t b)
 /** @brief acc + a*b modulo 2^64 (SMLAL when available). */
 static inline int64_t dh_port_smlal(int64_t acc, int32_t a, int32_t b)
 {
-#if DH_PORT_HAS_SMULL
-    __asm__("smlal %Q0, %R0, %1, %2" : "+r"(acc) : "r"(a), "r"(b));
-    return acc;
-#else
+    /* modulo 2^64 like the instruction; compiles to SMLAL where it exists */
     return dh_port_smlal_c(acc, a, b);
-#endif
 }
 
 /**

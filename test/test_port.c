@@ -33,9 +33,9 @@ static int32_t rand_edge_or_random(void)
 
 static void report_features(void)
 {
-    dht_printf("dh_port: SMULL %d SSAT %d CLZ %d QADD %d (DH_USE_INTRINSICS %d)\n",
+    dht_printf("dh_port: SMULL %d SSAT %d CLZ %d QADD %d, 64-bit product is a call %d (DH_USE_INTRINSICS %d)\n",
                DH_PORT_HAS_SMULL, DH_PORT_HAS_SSAT, DH_PORT_HAS_CLZ, DH_PORT_HAS_QADD,
-               DH_USE_INTRINSICS);
+               DH_PORT_MUL64_IS_CALL, DH_USE_INTRINSICS);
     /* the fallback must be used exactly when the build does not allow intrinsics */
     if (!DH_USE_INTRINSICS) {
         DHT_EQ_INT(DH_PORT_HAS_SMULL + DH_PORT_HAS_SSAT + DH_PORT_HAS_CLZ + DH_PORT_HAS_QADD, 0);
@@ -61,6 +61,26 @@ static void smull_edges_and_random(void)
         int64_t r = ref_mul(a, b);
         DHT_EQ_INT(dh_port_smull(a, b), r);
         DHT_EQ_INT(dh_port_smull_c(a, b), r);
+    }
+}
+
+/* the ARMv6-M 16-bit partial-product kernel, tested on every platform */
+static void mac16_matches_exact_product(void)
+{
+    size_t i, j;
+    long k, n = DHT_ITER(300000);
+    for (i = 0; i < NEDGES; i++)
+        for (j = 0; j < NEDGES; j++) {
+            uint64_t acc = ((uint64_t)dht_rand_u32() << 32) | dht_rand_u32();
+            DHT_EQ_INT(dh_port_mac16(acc, edges[i], edges[j]), acc + (uint64_t)ref_mul(edges[i], edges[j]));
+        }
+    for (k = 0; k < n; k++) {
+        int32_t a = rand_edge_or_random(), b = rand_edge_or_random();
+        uint64_t acc = ((uint64_t)dht_rand_u32() << 32) | dht_rand_u32();
+        /* bias towards the split boundaries: low halves near 0x8000, high near +-2^15 */
+        if (k & 1) a = (int32_t)(((uint32_t)a & 0xFFFF0000u) | (0x7FFFu + (dht_rand_u32() & 3u)));
+        if (k & 2) b = (int32_t)(((uint32_t)b & 0x0000FFFFu) | ((dht_rand_u32() & 1u) ? 0x7FFF0000u : 0x80000000u));
+        DHT_EQ_INT(dh_port_mac16(acc, a, b), acc + (uint64_t)ref_mul(a, b));
     }
 }
 
@@ -163,6 +183,7 @@ static void qadd_saturates(void)
 static const dht_case cases[] = {
     DHT_CASE(report_features),
     DHT_CASE(smull_edges_and_random),
+    DHT_CASE(mac16_matches_exact_product),
     DHT_CASE(smlal_wraps_like_hardware),
     DHT_CASE(ssat_every_width_and_constant_forms),
     DHT_CASE(clz_all_bit_positions),
