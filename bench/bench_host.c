@@ -1,0 +1,538 @@
+/*
+ * bench_host.c - host benchmark of dhmath against peer libraries
+ * (GitHub issue 6). Run through tools/bench.sh, which also collects the
+ * callgrind instruction counts and writes docs/performance_host.md.
+ *
+ * Usage:
+ *   bench_host [--reps N] [--csv FILE]   time every operation: N (>= 11,
+ *                                        default 15) interleaved repetitions,
+ *                                        median ns/op, table on stdout
+ *   bench_host --count N                 run every operation exactly N times,
+ *                                        no timing (for callgrind: inclusive
+ *                                        Ir of bw_<id> / N = instructions/op)
+ *
+ * Method: see bench_common.h. Inputs are BENCH_NIN random sets generated
+ * once with a fixed seed; iteration k uses set k mod BENCH_NIN, so inputs
+ * change every call and branch predictors cannot learn a single input.
+ * Peers are compiled in only when found at configure time
+ * (BENCH_HAVE_CGLM, BENCH_HAVE_FIXMATH, BENCH_HAVE_CPP); a missing peer is
+ * reported as skipped.
+ */
+#define _GNU_SOURCE 1 /* sincosf */
+#include "bench_common.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "dhmath/dhmath.h"
+
+#if BENCH_HAVE_CGLM
+#include <cglm/cglm.h>
+#endif
+#if BENCH_HAVE_FIXMATH
+#include <libfixmath/fix16.h>
+#endif
+
+#define PI_D 3.14159265358979323846
+
+volatile float bench_sink_f;
+volatile double bench_sink_d;
+volatile int32_t bench_sink_i;
+
+/* ---- inputs and outputs --------------------------------------------------- */
+
+static float in_deg[BENCH_NIN];                 /* +-720 degrees */
+static dh_q16 in_deg_q[BENCH_NIN];              /* same, Q16.16 */
+#if BENCH_HAVE_FIXMATH
+static fix16_t in_rad_fx[BENCH_NIN];            /* same in radians, fix16 (converted in double, untimed) */
+#endif
+static dh_mat4_f32 in_A[BENCH_NIN], in_B[BENCH_NIN];   /* random rigid transforms */
+static dh_frame_q in_Aq[BENCH_NIN], in_Bq[BENCH_NIN];  /* same, fixed point (positions in m, Q16) */
+static double in_q_deg[BENCH_NIN][6];           /* Puma 560 joint angles within limits */
+static float in_q_f[BENCH_NIN][6];
+static int32_t in_q_q[BENCH_NIN][6];
+
+static float out_s[BENCH_NIN], out_c[BENCH_NIN];
+static dh_q30 out_sq[BENCH_NIN], out_cq[BENCH_NIN];
+static dh_mat4_f32 out_M[BENCH_NIN];
+static dh_frame_q out_Fq[BENCH_NIN];
+static double out_D[BENCH_NIN][4][4];
+static dh_status out_st[BENCH_NIN];
+
+static dh_robot puma_m;   /* metres, float path */
+static dh_robot puma_mm;  /* millimetres, fixed path */
+
+#if BENCH_HAVE_CGLM
+static mat4 cg_A[BENCH_NIN], cg_B[BENCH_NIN], cg_T[BENCH_NIN], cg_out[BENCH_NIN];
+#endif
+
+/* ---- wrappers: one operation each ----------------------------------------- */
+
+BENCH_NOINLINE void bw_empty(uint32_t i)
+{
+    bench_sink_f = in_deg[i];
+}
+
+BENCH_NOINLINE void bw_dh_sincos_f32(uint32_t i)
+{
+    (void)dh_sincos_f32(in_deg[i], &out_s[i], &out_c[i]);
+    bench_sink_f = out_s[i];
+}
+
+BENCH_NOINLINE void bw_glibc_sinf_cosf(uint32_t i)
+{
+    float r = in_deg[i] * (float)(PI_D / 180.0);
+    out_s[i] = sinf(r);
+    out_c[i] = cosf(r);
+    bench_sink_f = out_s[i];
+}
+
+BENCH_NOINLINE void bw_glibc_sincosf(uint32_t i)
+{
+    float r = in_deg[i] * (float)(PI_D / 180.0);
+    sincosf(r, &out_s[i], &out_c[i]);
+    bench_sink_f = out_s[i];
+}
+
+BENCH_NOINLINE void bw_dh_sincos_q(uint32_t i)
+{
+    dh_sincos_q(in_deg_q[i], &out_sq[i], &out_cq[i]);
+    bench_sink_i = out_sq[i];
+}
+
+#if BENCH_HAVE_FIXMATH
+BENCH_NOINLINE void bw_fix16_sin_cos(uint32_t i)
+{
+    out_sq[i] = fix16_sin(in_rad_fx[i]);
+    out_cq[i] = fix16_cos(in_rad_fx[i]);
+    bench_sink_i = out_sq[i];
+}
+#endif
+
+BENCH_NOINLINE void bw_dh_mul_affine(uint32_t i)
+{
+    dh_mat4_mul_affine_f32(&out_M[i], &in_A[i], &in_B[i]);
+    bench_sink_f = out_M[i].m[3][0];
+}
+
+BENCH_NOINLINE void bw_dh_mul(uint32_t i)
+{
+    dh_mat4_mul_f32(&out_M[i], &in_A[i], &in_B[i]);
+    bench_sink_f = out_M[i].m[3][0];
+}
+
+BENCH_NOINLINE void bw_dh_inv_rigid(uint32_t i)
+{
+    dh_mat4_inv_rigid_f32(&out_M[i], &in_A[i]);
+    bench_sink_f = out_M[i].m[3][0];
+}
+
+BENCH_NOINLINE void bw_dh_inv(uint32_t i)
+{
+    out_st[i] = dh_mat4_inv_f32(&out_M[i], &in_A[i]);
+    bench_sink_f = out_M[i].m[3][0];
+}
+
+BENCH_NOINLINE void bw_dh_frame_mul_q(uint32_t i)
+{
+    out_st[i] = dh_frame_mul_q(&out_Fq[i], &in_Aq[i], &in_Bq[i]);
+    bench_sink_i = out_Fq[i].p[0];
+}
+
+BENCH_NOINLINE void bw_dh_frame_inv_q(uint32_t i)
+{
+    out_st[i] = dh_frame_inv_q(&out_Fq[i], &in_Aq[i]);
+    bench_sink_i = out_Fq[i].p[0];
+}
+
+BENCH_NOINLINE void bw_dh_fk_f32(uint32_t i)
+{
+    out_st[i] = dh_fk_f32(&puma_m, in_q_f[i], &out_M[i]);
+    bench_sink_f = out_M[i].m[3][0];
+}
+
+BENCH_NOINLINE void bw_dh_fk_q(uint32_t i)
+{
+    out_st[i] = dh_fk_q(&puma_mm, in_q_q[i], &out_Fq[i]);
+    bench_sink_i = out_Fq[i].p[0];
+}
+
+BENCH_NOINLINE void bw_ref_fk_double(uint32_t i)
+{
+    bench_ref_fk(&bench_puma560, 1.0, in_q_deg[i], out_D[i]);
+    bench_sink_d = out_D[i][3][0];
+}
+
+#if BENCH_HAVE_CGLM
+BENCH_NOINLINE void bw_glm_mul(uint32_t i)
+{
+    glm_mul(cg_A[i], cg_B[i], cg_out[i]);
+    bench_sink_f = cg_out[i][3][0];
+}
+
+BENCH_NOINLINE void bw_glm_mat4_mul(uint32_t i)
+{
+    glm_mat4_mul(cg_A[i], cg_B[i], cg_out[i]);
+    bench_sink_f = cg_out[i][3][0];
+}
+
+/* in place (the cglm API): the stored matrix alternates between A and A^-1,
+ * both rigid, so the input stays valid and no copy is timed */
+BENCH_NOINLINE void bw_glm_inv_tr(uint32_t i)
+{
+    glm_inv_tr(cg_T[i]);
+    bench_sink_f = cg_T[i][3][0];
+}
+
+BENCH_NOINLINE void bw_glm_mat4_inv(uint32_t i)
+{
+    glm_mat4_inv(cg_A[i], cg_out[i]);
+    bench_sink_f = cg_out[i][3][0];
+}
+#endif
+
+#if !BENCH_HAVE_CPP
+int bench_cpp_setup(const float (*A)[16], const float (*B)[16], const double (*q_deg)[6], bench_op *o, int max)
+{
+    (void)A; (void)B; (void)q_deg; (void)o; (void)max;
+    return -1;
+}
+
+int bench_cpp_kdl_fk_pos(uint32_t i, double p[3])
+{
+    (void)i; (void)p;
+    return 0;
+}
+#endif
+
+/* ---- operation table ------------------------------------------------------ */
+
+#define MAX_OPS 48
+static bench_op ops[MAX_OPS];
+static int n_ops;
+
+static void add_op(const char *id, const char *group, const char *lib, const char *desc, bench_fn fn)
+{
+    if (n_ops < MAX_OPS) {
+        bench_op *o = &ops[n_ops++];
+        o->id = id;
+        o->group = group;
+        o->lib = lib;
+        o->desc = desc;
+        o->fn = fn;
+    }
+}
+
+/* ---- input generation (double precision, independent of dhmath) ------------ */
+
+static uint64_t rng = 0x9E3779B97F4A7C15ULL;
+
+/* random rotation from a random unit quaternion, random translation */
+static void rand_rigid(double R[3][3], double p[3])
+{
+    double q0, q1, q2, q3, n;
+    do {
+        q0 = bench_rand(&rng, -1, 1);
+        q1 = bench_rand(&rng, -1, 1);
+        q2 = bench_rand(&rng, -1, 1);
+        q3 = bench_rand(&rng, -1, 1);
+        n = q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3;
+    } while (n < 0.01 || n > 1.0);
+    n = sqrt(n);
+    q0 /= n; q1 /= n; q2 /= n; q3 /= n;
+    /* R[row][col] */
+    R[0][0] = 1 - 2 * (q2 * q2 + q3 * q3); R[0][1] = 2 * (q1 * q2 - q0 * q3); R[0][2] = 2 * (q1 * q3 + q0 * q2);
+    R[1][0] = 2 * (q1 * q2 + q0 * q3); R[1][1] = 1 - 2 * (q1 * q1 + q3 * q3); R[1][2] = 2 * (q2 * q3 - q0 * q1);
+    R[2][0] = 2 * (q1 * q3 - q0 * q2); R[2][1] = 2 * (q2 * q3 + q0 * q1); R[2][2] = 1 - 2 * (q1 * q1 + q2 * q2);
+    p[0] = bench_rand(&rng, -1, 1);
+    p[1] = bench_rand(&rng, -1, 1);
+    p[2] = bench_rand(&rng, -1, 1);
+}
+
+static int32_t round_q(double x, int frac)
+{
+    return (int32_t)floor(x * (double)(1L << frac) + 0.5);
+}
+
+static void to_f32(dh_mat4_f32 *M, double R[3][3], const double p[3])
+{
+    int r, c;
+    for (c = 0; c < 3; c++) {
+        for (r = 0; r < 3; r++) M->m[c][r] = (float)R[r][c];
+        M->m[c][3] = 0.0f;
+    }
+    for (r = 0; r < 3; r++) M->m[3][r] = (float)p[r];
+    M->m[3][3] = 1.0f;
+}
+
+static void to_q(dh_frame_q *F, double R[3][3], const double p[3])
+{
+    int r, c;
+    for (r = 0; r < 3; r++) {
+        for (c = 0; c < 3; c++) F->r[c][r] = round_q(R[r][c], 30); /* r[col][row] */
+        F->p[r] = round_q(p[r], DH_QPOS_FRAC);
+    }
+}
+
+static int build_puma(dh_robot *r, double scale)
+{
+    unsigned i;
+    if (dh_robot_init(r, DH_CONV_STANDARD) != DH_OK) return 0;
+    for (i = 0; i < bench_puma560.n; i++) {
+        const bench_dh_row *j = &bench_puma560.j[i];
+        if (dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, (float)(j->a * scale), (float)(j->d * scale),
+                                   (float)j->alpha_deg, (float)j->theta_deg) != DH_OK)
+            return 0;
+    }
+    return 1;
+}
+
+static void make_inputs(void)
+{
+    uint32_t i;
+    int k;
+    for (i = 0; i < BENCH_NIN; i++) {
+        double d = bench_rand(&rng, -720.0, 720.0), R[3][3], p[3];
+        in_deg[i] = (float)d;
+        in_deg_q[i] = round_q(d, 16);
+#if BENCH_HAVE_FIXMATH
+        in_rad_fx[i] = round_q(d * (PI_D / 180.0), 16);
+#endif
+        rand_rigid(R, p);
+        to_f32(&in_A[i], R, p);
+        to_q(&in_Aq[i], R, p);
+        rand_rigid(R, p);
+        to_f32(&in_B[i], R, p);
+        to_q(&in_Bq[i], R, p);
+        for (k = 0; k < 6; k++) {
+            const bench_dh_row *j = &bench_puma560.j[k];
+            double q = bench_rand(&rng, j->qmin, j->qmax);
+            in_q_f[i][k] = (float)q;
+            in_q_deg[i][k] = (double)in_q_f[i][k];
+            in_q_q[i][k] = round_q(q, 16);
+        }
+#if BENCH_HAVE_CGLM
+        memcpy(cg_A[i], in_A[i].m, sizeof(mat4));
+        memcpy(cg_B[i], in_B[i].m, sizeof(mat4));
+        memcpy(cg_T[i], in_A[i].m, sizeof(mat4));
+#endif
+    }
+}
+
+/* ---- sanity checks: every peer computes the same thing --------------------- */
+
+static double max_diff16(const float *x, const float *y)
+{
+    double m = 0.0;
+    int k;
+    for (k = 0; k < 16; k++) {
+        double e = fabs((double)x[k] - (double)y[k]);
+        if (e > m) m = e;
+    }
+    return m;
+}
+
+static int sanity(void)
+{
+    uint32_t i;
+    int bad = 0;
+    double e_fk = 0.0, e_kdl = 0.0, e_fkq = 0.0, e_cg = 0.0;
+    for (i = 0; i < BENCH_NIN; i++) {
+        double T[4][4], p[3];
+        int k;
+        bw_dh_fk_f32(i);
+        bw_ref_fk_double(i);
+        bench_ref_fk(&bench_puma560, 1.0, in_q_deg[i], T);
+        for (k = 0; k < 3; k++) {
+            double e = fabs((double)out_M[i].m[3][k] - T[3][k]);
+            if (e > e_fk) e_fk = e;
+        }
+        bw_dh_fk_q(i);
+        {
+            double qd[6], Tq[4][4];
+            for (k = 0; k < 6; k++) qd[k] = (double)in_q_q[i][k] / 65536.0;
+            bench_ref_fk(&bench_puma560, 1000.0, qd, Tq);
+            for (k = 0; k < 3; k++) {
+                double e = fabs((double)out_Fq[i].p[k] / (double)(1L << DH_QPOS_FRAC) - Tq[3][k]);
+                if (e > e_fkq) e_fkq = e;
+            }
+        }
+        if (bench_cpp_kdl_fk_pos(i, p)) {
+            for (k = 0; k < 3; k++) {
+                double e = fabs(p[k] - T[3][k]);
+                if (e > e_kdl) e_kdl = e;
+            }
+        }
+#if BENCH_HAVE_CGLM
+        bw_dh_mul_affine(i);
+        bw_glm_mul(i);
+        e_cg = fmax(e_cg, max_diff16(&out_M[i].m[0][0], &cg_out[i][0][0]));
+        bw_dh_inv(i);
+        bw_glm_mat4_inv(i);
+        e_cg = fmax(e_cg, max_diff16(&out_M[i].m[0][0], &cg_out[i][0][0]));
+#endif
+    }
+    printf("sanity: Puma FK |dp| dhmath f32 vs double ref %.2e m, dhmath q vs ref %.2e mm, "
+           "KDL vs ref %.2e m, dhmath vs cglm products/inverses %.2e\n",
+           e_fk, e_fkq, e_kdl, e_cg);
+    if (e_fk > 1e-5 || e_kdl > 1e-9 || e_cg > 1e-5 || e_fkq > 1e-2) {
+        printf("sanity: FAILED (a peer or dhmath computes something else)\n");
+        bad = 1;
+    }
+#if BENCH_HAVE_CGLM
+    /* restore the in-place inverse inputs */
+    for (i = 0; i < BENCH_NIN; i++) memcpy(cg_T[i], in_A[i].m, sizeof(mat4));
+#endif
+    return bad;
+}
+
+/* ---- timing ---------------------------------------------------------------- */
+
+/* CPU time of this thread: the host is shared (builds, QEMU runs), and
+ * wall-clock samples would include time spent preempted. */
+static double now_ns(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec * 1e9 + (double)ts.tv_nsec;
+}
+
+static double run_ns(bench_fn fn, uint32_t iters)
+{
+    uint32_t k;
+    double t0 = now_ns();
+    for (k = 0; k < iters; k++) fn(k & BENCH_MASK);
+    return (now_ns() - t0) / (double)iters;
+}
+
+static int cmp_d(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+#define MAX_REPS 101
+
+int main(int argc, char **argv)
+{
+    int reps = 15, a, k, r;
+    long count = 0;
+    const char *csv = NULL;
+    static double samples[MAX_OPS][MAX_REPS];
+    static uint32_t iters[MAX_OPS];
+    double med[MAX_OPS], mn[MAX_OPS];
+
+    for (a = 1; a < argc; a++) {
+        if (strcmp(argv[a], "--reps") == 0 && a + 1 < argc) reps = atoi(argv[++a]);
+        else if (strcmp(argv[a], "--count") == 0 && a + 1 < argc) count = atol(argv[++a]);
+        else if (strcmp(argv[a], "--csv") == 0 && a + 1 < argc) csv = argv[++a];
+        else {
+            fprintf(stderr, "usage: %s [--reps N (11..%d)] [--csv FILE] | --count N\n", argv[0], MAX_REPS);
+            return 2;
+        }
+    }
+    if (reps < 11 || reps > MAX_REPS) {
+        fprintf(stderr, "--reps must be 11..%d\n", MAX_REPS);
+        return 2;
+    }
+
+    make_inputs();
+    if (!build_puma(&puma_m, 1.0) || !build_puma(&puma_mm, 1000.0)) {
+        fprintf(stderr, "cannot build the Puma 560 model\n");
+        return 1;
+    }
+
+    add_op("empty", "harness", "-", "call harness only (indirect call + volatile store)", bw_empty);
+    add_op("dh_sincos_f32", "sincos_f32", "dhmath", "dh_sincos_f32(deg)", bw_dh_sincos_f32);
+    add_op("glibc_sinf_cosf", "sincos_f32", "glibc", "sinf(r) + cosf(r), r = deg * (float)(pi/180)", bw_glibc_sinf_cosf);
+    add_op("glibc_sincosf", "sincos_f32", "glibc", "sincosf(r), r = deg * (float)(pi/180)", bw_glibc_sincosf);
+    add_op("dh_sincos_q", "sincos_q", "dhmath", "dh_sincos_q(deg Q16.16) -> Q2.30", bw_dh_sincos_q);
+#if BENCH_HAVE_FIXMATH
+    add_op("fix16_sin_cos", "sincos_q", "libfixmath", "fix16_sin(r) + fix16_cos(r), r fix16 radians (precomputed)", bw_fix16_sin_cos);
+#else
+    printf("skipped: libfixmath (libfixmath-dev not found at configure time)\n");
+#endif
+    add_op("dh_mul_affine", "compose", "dhmath", "dh_mat4_mul_affine_f32", bw_dh_mul_affine);
+#if BENCH_HAVE_CGLM
+    add_op("glm_mul", "compose", "cglm", "glm_mul (affine, SSE2)", bw_glm_mul);
+#endif
+    add_op("dh_frame_mul_q", "compose", "dhmath", "dh_frame_mul_q (fixed point, for information)", bw_dh_frame_mul_q);
+    add_op("dh_mul", "mul4", "dhmath", "dh_mat4_mul_f32 (general 4x4)", bw_dh_mul);
+#if BENCH_HAVE_CGLM
+    add_op("glm_mat4_mul", "mul4", "cglm", "glm_mat4_mul (general 4x4, SSE2)", bw_glm_mat4_mul);
+#endif
+    add_op("dh_inv_rigid", "inv_rigid", "dhmath", "dh_mat4_inv_rigid_f32", bw_dh_inv_rigid);
+#if BENCH_HAVE_CGLM
+    add_op("glm_inv_tr", "inv_rigid", "cglm", "glm_inv_tr (in place, SSE2)", bw_glm_inv_tr);
+#endif
+    add_op("dh_frame_inv_q", "inv_rigid", "dhmath", "dh_frame_inv_q (fixed point, for information)", bw_dh_frame_inv_q);
+    add_op("dh_inv", "inv_general", "dhmath", "dh_mat4_inv_f32 (general, reports singularity)", bw_dh_inv);
+#if BENCH_HAVE_CGLM
+    add_op("glm_mat4_inv", "inv_general", "cglm", "glm_mat4_inv (SSE2, no singularity report)", bw_glm_mat4_inv);
+#else
+    printf("skipped: cglm (libcglm-dev not found at configure time)\n");
+#endif
+    add_op("dh_fk_f32", "fk_puma", "dhmath", "dh_fk_f32, Puma 560 (m)", bw_dh_fk_f32);
+    add_op("dh_fk_q", "fk_puma", "dhmath", "dh_fk_q, Puma 560 (mm, Q16 lengths)", bw_dh_fk_q);
+    add_op("ref_fk_double", "fk_puma", "ref", "plain double DH FK (libm sin/cos, 4x4 products)", bw_ref_fk_double);
+    {
+        int got = bench_cpp_setup((const float (*)[16])(const void *)in_A, (const float (*)[16])(const void *)in_B,
+                                  (const double (*)[6])in_q_deg, &ops[n_ops], MAX_OPS - n_ops);
+        if (got < 0) {
+            printf("skipped: Eigen and Orocos KDL (no C++ compiler or packages at configure time)\n");
+        } else {
+            n_ops += got;
+        }
+    }
+
+    if (count > 0) {
+        /* no sanity pass here: it would add calls to the counted wrappers */
+        for (k = 0; k < n_ops; k++) {
+            long it;
+            for (it = 0; it < count; it++) ops[k].fn((uint32_t)it & BENCH_MASK);
+        }
+        printf("count mode: every operation ran %ld times\n", count);
+        return 0;
+    }
+
+    if (sanity() != 0) return 1;
+
+    /* calibrate: about 2 ms per sample */
+    for (k = 0; k < n_ops; k++) {
+        double t = run_ns(ops[k].fn, 20000u);
+        double n = 2e6 / (t > 0.1 ? t : 0.1);
+        iters[k] = (uint32_t)(n < 1000.0 ? 1000.0 : (n > 4e7 ? 4e7 : n));
+    }
+    /* repetitions interleaved across operations, so slow drifts (frequency,
+     * other load) hit every operation alike */
+    for (r = 0; r < reps; r++)
+        for (k = 0; k < n_ops; k++) samples[k][r] = run_ns(ops[k].fn, iters[k]);
+    for (k = 0; k < n_ops; k++) {
+        qsort(samples[k], (size_t)reps, sizeof(double), cmp_d);
+        med[k] = samples[k][reps / 2];
+        mn[k] = samples[k][0];
+    }
+
+    printf("\n%-18s %-12s %-11s %9s %9s %9s\n", "op", "group", "lib", "median_ns", "min_ns", "net_ns");
+    for (k = 0; k < n_ops; k++)
+        printf("%-18s %-12s %-11s %9.2f %9.2f %9.2f\n", ops[k].id, ops[k].group, ops[k].lib, med[k], mn[k],
+               med[k] - med[0]);
+    printf("(median of %d repetitions; net = median - median(empty))\n", reps);
+
+    if (csv != NULL) {
+        FILE *f = fopen(csv, "w");
+        if (f == NULL) {
+            perror(csv);
+            return 1;
+        }
+        fprintf(f, "id,group,lib,median_ns,min_ns,net_ns,reps,desc\n");
+        for (k = 0; k < n_ops; k++)
+            fprintf(f, "%s,%s,%s,%.4f,%.4f,%.4f,%d,\"%s\"\n", ops[k].id, ops[k].group, ops[k].lib, med[k], mn[k],
+                    med[k] - med[0], reps, ops[k].desc);
+        fclose(f);
+    }
+    return 0;
+}
