@@ -16,10 +16,12 @@
  * The target has no environment: DHT_SEED is a build option here
  * (-DDHT_SEED=0x... at configure time, see port/dh_target.cmake).
  *
- * Output format (cmocka-like, one line per event):
+ * Output format (cmocka-like, one line per event; the time per case is the
+ * host's wall clock through semihosting SYS_CLOCK, a guide for choosing
+ * DHT_ITER_DIV, not a benchmark):
  *   [==========] test_x: Running 3 test(s).
  *   [ RUN      ] case_name
- *   [       OK ] case_name
+ *   [       OK ] case_name (120 ms)
  *   [  FAILED  ] case_name
  *   [==========] test_x: 3 test(s) run.
  *   [  PASSED  ] 2 test(s).
@@ -30,6 +32,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+#include <time.h>
 
 #include "dht.h"
 
@@ -93,6 +96,7 @@ int dht_run(const char *suite, const dht_case *cases, size_t n)
     const char *base = strrchr(suite, '/');
     const uint64_t seed = dht_seed();
     size_t nfailed = 0, i;
+    clock_t t0;
     const char *name = base ? base + 1 : suite;
 
     memset(failed, 0, sizeof failed);
@@ -104,8 +108,10 @@ int dht_run(const char *suite, const dht_case *cases, size_t n)
         printf("[ RUN      ] %s\n", cases[i].name);
         fflush(stdout);
         dht_reseed(seed);
+        t0 = clock();
         if (dht_run_case() == 0) {
-            printf("[       OK ] %s\n", cases[i].name);
+            printf("[       OK ] %s (%ld ms)\n", cases[i].name,
+                   (long)((clock() - t0) * 1000 / CLOCKS_PER_SEC));
         } else {
             nfailed++;
             if (i < DHT_TARGET_MAX_CASES) {
