@@ -77,7 +77,7 @@ const char *dh_euler_name(dh_euler_seq seq)
  */
 static void dh_euler_post_rot(dh_mat3_f32 *M, int q, float s, float c)
 {
-    int u = (q + 1) % 3, w = (q + 2) % 3, r;
+    int u = (q == 2) ? 0 : q + 1, w = (q == 0) ? 2 : q - 1, r; /* no division (Cortex-M0) */
     for (r = 0; r < 3; r++) {
         float mu = M->m[u][r], mw = M->m[w][r];
         M->m[u][r] = c * mu + s * mw;
@@ -162,7 +162,7 @@ static void dh_euler_solve(const dh_mat3_f32 *R, int i, int j, int k, int zero_f
 #define RR(r, c) DH_M3(R, (r), (c))
     int proper = (i == k);
     int l = proper ? 3 - i - j : k;           /* the axis that is neither i nor j */
-    float s = (((j - i + 3) % 3) == 1) ? 1.0f : -1.0f; /* e_i x e_j = s e_l */
+    float s = (j == i + 1 || j == i - 2) ? 1.0f : -1.0f; /* e_i x e_j = s e_l (cyclic: xy, yz, zx) */
     float a, b, c, n, ca, sa, cc, sc, p, q;
 
     if (!proper) {

@@ -149,7 +149,7 @@ const char *dh_euler_name(dh_euler_seq seq);
  * angles that are multiples of 90 give exact 0/+-1 entries (the result is
  * then bitwise an exact signed permutation matrix).
  * Accuracy (random angles in [-360, 360], all 24 sequences): entry error
- * <= 4e-7 (measured 2.7e-7, see docs/accuracy_rot.md).
+ * <= 3e-7 (measured 2.2e-7, see docs/accuracy_rot.md).
  */
 dh_status dh_euler_to_mat3_f32(dh_mat3_f32 *R, dh_euler_seq seq, const float ang_deg[3]);
 
@@ -176,11 +176,16 @@ dh_status dh_euler_to_mat3_f32(dh_mat3_f32 *R, dh_euler_seq seq, const float ang
  * reproduce R: one angle is read from the matrix, the other is fitted to
  * the residual rotation.
  *
- * Accuracy (all 24 sequences): the angles reproduce R (exact rotation of
- * the returned float angles vs the input) within 4e-7 per entry
+ * Accuracy (all 24 sequences; angles are computed directly in degrees by
+ * an octant form of atan2, so values near +-90 and +-180 are limited only by
+ * the float resolution of the result): the angles reproduce R (exact
+ * rotation of the returned float angles vs the input) within 6e-7 per entry
  * everywhere, including at the poles and within 1e-4 deg of them (measured
- * 2.6e-7); away from the poles (middle angle at least 1 deg from them) the
- * angles are within 3e-5 deg of the exact ones (measured).
+ * 5.1e-7; most of it is the rounding of three angles to float degrees, half
+ * an ulp of 180 being 1.3e-7 rad each). Away from the poles (middle angle at
+ * least 1 deg from them) the angles are within 2.5e-5 deg of the exact ones
+ * (measured 1.8e-5). Near a pole the middle angle is within 1e-5 deg
+ * (measured 7.6e-6, half an ulp of 180).
  *
  * @param R rotation; must pass dh_mat3_check_rot_f32(R, DH_ROT_TOL).
  * @param seq sequence, 0 .. DH_EULER_COUNT-1.
@@ -202,10 +207,16 @@ dh_status dh_mat3_to_euler_f32(const dh_mat3_f32 *R, dh_euler_seq seq, float ang
  * rotation as dh_axis_angle_to_mat3_f32(k, t)). q and -q are the same
  * rotation; the conversions from a matrix return the one with w >= 0.
  */
-typedef struct { float w, x, y, z; } dh_quat_f32;
+typedef struct {
+    float w; /**< scalar part, cos(t/2) for a unit quaternion */
+    float x; /**< i component, sin(t/2) k_x */
+    float y; /**< j component, sin(t/2) k_y */
+    float z; /**< k component, sin(t/2) k_z */
+} dh_quat_f32;
 
 /**
  * @brief R = rotation of the quaternion q.
+ * @param R output rotation.
  * @param q any quaternion with finite components and a non-zero norm; it
  *        need not be unit: the rotation of q / |q| is returned (the formula
  *        divides by |q|^2, after an exact rescaling when the largest
@@ -213,7 +224,8 @@ typedef struct { float w, x, y, z; } dh_quat_f32;
  * @return DH_OK; DH_ERR_NAN if a component is NaN/Inf; DH_ERR_ZERO_AXIS if
  *         max |component| < FLT_MIN (zero or denormal quaternion). R
  *         untouched on error.
- * Accuracy (random unit q): entry error <= 4e-7 (measured 2.4e-7).
+ * Accuracy (random unit and scaled q): entry error <= 6e-7 (measured
+ * 4.9e-7, against the exact rotation of the float q).
  */
 dh_status dh_quat_to_mat3_f32(dh_mat3_f32 *R, const dh_quat_f32 *q);
 
@@ -233,7 +245,7 @@ dh_status dh_quat_to_mat3_f32(dh_mat3_f32 *R, const dh_quat_f32 *q);
  * Accuracy (random rotations, including dense sweeps of all four branch
  * boundaries and of 180 degrees): components within 2e-7 of the exact
  * unit quaternion (up to the sign ambiguity when |w| < 1e-6; measured
- * 1.6e-7), |q| - 1 within 2.4e-7.
+ * 1.65e-7), | |q| - 1 | within 2.4e-7 (measured 1.3e-7).
  * @return DH_OK; DH_ERR_NAN; DH_ERR_NOT_RIGID (see file comment). q
  *         untouched on error.
  */
@@ -244,7 +256,8 @@ dh_status dh_mat3_to_quat_f32(const dh_mat3_f32 *R, dh_quat_f32 *q);
  *        so that a sequence of quaternions stays continuous).
  * Overflow/underflow free: the largest component is first scaled to about
  * 1, so any finite q with a normal largest component works (1e-30 and
- * 1e30 alike). Result: | |out| - 1 | <= 2.4e-7 (measured).
+ * 1e30 alike). Result: | |out| - 1 | <= 2.4e-7 and components within
+ * 2e-7 of the exact q / |q| (measured 1.4e-7 over 2^-125 .. 2^127).
  * @return DH_OK; DH_ERR_NAN if a component is NaN/Inf; DH_ERR_ZERO_AXIS if
  *         max |component| < FLT_MIN (zero or denormal). out untouched on
  *         error; out may alias q.
@@ -267,11 +280,12 @@ void dh_quat_conj_f32(dh_quat_f32 *out, const dh_quat_f32 *q);
  *        @p axis, with k = axis / |axis|.
  * The angle is not reduced, so the sign of w follows cos(deg/2): deg and
  * deg + 360 give q and -q (the same rotation).
+ * @param q output quaternion.
  * @param axis any finite non-zero length (normalised here, overflow free).
  * @param deg angle in degrees, any finite value.
  * @return DH_OK; DH_ERR_NAN if an argument is NaN/Inf; DH_ERR_ZERO_AXIS if
  *         max |axis component| < FLT_MIN. q untouched on error.
- * Accuracy: components within 2e-7 for |deg| <= 720 (measured 1.2e-7).
+ * Accuracy: components within 2e-7 for |deg| <= 720 (measured 1.6e-7).
  */
 dh_status dh_quat_from_axis_angle_f32(dh_quat_f32 *q, const dh_vec3_f32 *axis, float deg);
 
@@ -287,12 +301,13 @@ dh_status dh_quat_from_axis_angle_f32(dh_quat_f32 *q, const dh_vec3_f32 *axis, f
  * c + (1-c) k_i^2 when k_i^2 < 1/2 and as 1 - (1-c)(k_j^2 + k_l^2)
  * otherwise, so a coordinate axis gives bitwise Rx/Ry/Rz(deg) with exact
  * 0/+-1 entries at multiples of 90.
+ * @param R output rotation.
  * @param axis any finite non-zero length (normalised here, overflow free).
  * @param deg angle in degrees, any finite value.
  * @return DH_OK; DH_ERR_NAN if an argument is NaN/Inf; DH_ERR_ZERO_AXIS if
  *         max |axis component| < FLT_MIN. R untouched on error.
  * Accuracy (random axis, |deg| <= 720): entry error <= 4e-7 (measured
- * 2.7e-7).
+ * 3.2e-7).
  */
 dh_status dh_axis_angle_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *axis, float deg);
 
@@ -306,9 +321,12 @@ dh_status dh_axis_angle_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *axis, flo
  * are the same rotation and the one whose component of the largest
  * diagonal entry is positive is returned; 90 and 180 are exact.
  * Accuracy: see dh_mat4_to_axis_angle_f32; measured here on random
- * rotations and dense sweeps near 0 and 180 degrees: R reproduced within
- * 5e-7 per entry, the angle within 3.1e-5 deg.
+ * rotations and dense sweeps near 0 (1e-9 .. 1e-3 deg) and near and at 180
+ * degrees: R reproduced within 3e-7 per entry (measured 2.5e-7), the angle
+ * within 2e-5 deg (measured 1.6e-5; 1.8e-10 near 0).
  * @param R rotation; must pass dh_mat3_check_rot_f32(R, DH_ROT_TOL).
+ * @param axis output unit axis.
+ * @param deg output angle in degrees, 0 <= deg <= 180.
  * @return DH_OK; DH_ERR_NAN; DH_ERR_NOT_RIGID (see file comment). axis and
  *         deg untouched on error.
  */
@@ -321,11 +339,14 @@ dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, flo
  * k = phi / t and libm sinf/cosf of t/2 (radians), so there is no
  * cancellation or series switch for small t and no overflow for large
  * components (|phi| is formed after scaling by the largest component).
+ * @param R output rotation.
  * @param phi rotation vector in radians, any finite value (not reduced: a
  *        length above 2 pi simply wraps).
  * @return DH_OK; DH_ERR_NAN if a component is NaN/Inf. R untouched on
  *         error.
- * Accuracy (|phi| <= 4 pi): entry error <= 4e-7 (measured 2.7e-7).
+ * Accuracy: entry error <= 4e-7 for |phi| <= pi, including 1e-30 .. 1e-2
+ * (measured 3.7e-7); for pi < |phi| <= 4 pi <= 1.5e-7 * |phi| (measured
+ * 1.2e-7 * |phi|: the float rounding of |phi| itself).
  */
 dh_status dh_rotvec_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *phi);
 
@@ -336,9 +357,10 @@ dh_status dh_rotvec_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *phi);
  * phi = v * 2 atan2(|v|, w) / |v| (phi = 0 when v == 0). Accurate down to
  * t == 0 (no division by a small sine) and up to t == pi, where phi and
  * -phi are the same rotation and the sign follows dh_mat3_to_quat_f32.
- * Accuracy: |phi - phi_exact| <= 3e-7 rad for t <= pi - 1e-3 (measured
- * 2.2e-7); for t within 1e-3 of pi the direction ambiguity makes only
- * the reproduced matrix meaningful: R reproduced within 5e-7 per entry.
+ * Accuracy: |phi - phi_exact| <= 6e-7 rad for t <= pi - 1e-3 (measured
+ * 5.0e-7, about pi times the quaternion error; 2.9e-8 for t < 0.1); for t
+ * within 1e-3 of pi the direction ambiguity makes only the reproduced
+ * matrix meaningful: R reproduced within 5.5e-7 per entry (measured 4.6e-7).
  * @return DH_OK; DH_ERR_NAN; DH_ERR_NOT_RIGID (see file comment). phi
  *         untouched on error.
  */
@@ -372,7 +394,8 @@ void dh_vee_f32(dh_vec3_f32 *v, const dh_mat3_f32 *S);
  *        ignored (see dh_vee_f32).
  * @return DH_OK; DH_ERR_NAN if an entry of R or Rdot is NaN/Inf;
  *         DH_ERR_NOT_RIGID if R is not a rotation. w untouched on error.
- * Accuracy: |w - w_exact| <= 3.6e-7 * max(1, |w|) (measured).
+ * Accuracy: |w - w_exact| <= 3e-7 * max(1, |w|) per component (measured
+ * 2.4e-7 for |w| <= 17 rad/s, with R and Rdot rounded from exact data).
  */
 dh_status dh_angvel_f32(dh_vec3_f32 *w, const dh_mat3_f32 *R, const dh_mat3_f32 *Rdot);
 
@@ -390,6 +413,7 @@ dh_status dh_angvel_body_f32(dh_vec3_f32 *w, const dh_mat3_f32 *R, const dh_mat3
  * @brief R is a rotation within @p tol: every entry of R^T R - I (column
  *        dot products c_i . c_j - delta_ij) within tol and
  *        det R = c0 . (c1 x c2) > 0.
+ * @param R matrix to check.
  * @param tol finite, >= 0 (DH_ROT_TOL is what the extraction functions use).
  * @return DH_OK; DH_ERR_NOT_RIGID; DH_ERR_NAN if an entry is NaN/Inf;
  *         DH_ERR_ARG if tol is negative, NaN or infinite.
@@ -407,9 +431,9 @@ dh_status dh_mat3_check_rot_f32(const dh_mat3_f32 *R, float tol);
  * when max |(X^T X - I)_ij| <= 2^-22 (at most 8 steps; a deviation of
  * 0.25 needs 6, one of 1e-3 needs 2), and is not biased towards any column
  * (unlike Gram-Schmidt).
- * Result: max |(out^T out - I)_ij| <= 4e-7 (measured 2.4e-7) and out
- * within 2.5e-7 per entry of the double-precision polar factor (measured
- * for perturbations up to 1e-2 per entry).
+ * Result: max |(out^T out - I)_ij| <= 4e-7 (measured 3.6e-7) and out
+ * within 3e-7 per entry of the double-precision polar factor (measured
+ * 2.4e-7, for random perturbations of up to 0.05 per entry).
  * An exact rotation is returned unchanged within rounding (at most one
  * step is taken).
  * @return DH_OK; DH_ERR_NAN if an entry is NaN/Inf; DH_ERR_NOT_RIGID if
