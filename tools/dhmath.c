@@ -18,6 +18,7 @@
 #include "dhmath/dh_kin.h"
 #include "dhmath/dh_mat4.h"
 #include "dhmath/dh_robot.h"
+#include "dhmath/dh_rot.h"
 
 #define EXIT_USAGE 2
 #define EXIT_ERR 2
@@ -32,14 +33,19 @@ static const char k_usage[] =
     "  axis EXPR                       equivalent axis and angle: kx ky kz theta_deg\n"
     "  point EXPR x y z [w]            transformed homogeneous point: x y z w\n"
     "  plane EXPR a b c d              transformed plane [a b c d] * EXPR^-1\n"
-    "  fk [--fixed] [--frames] ROBOT q1,q2,...\n"
+    "  fk [--fixed] [--frames] [--expr] ROBOT q1,q2,...\n"
     "                                  end frame (with --frames: every joint frame,\n"
-    "                                  then the end frame, separated by blank lines)\n"
+    "                                  then the end frame, separated by blank lines;\n"
+    "                                  with --expr: each frame as one EXPR line)\n"
     "  jacobian ROBOT q1,q2,...        6 x n geometric Jacobian in the base frame\n"
     "                                  (rows vx vy vz wx wy wz; per radian for R joints)\n"
-    "  ik [--q0 q1,...] [--position] ROBOT EXPR\n"
-    "                                  joint values reaching EXPR; status on stderr;\n"
+    "  ik [--q0 q1,...] [--position] [--tol-pos X] [--tol-rot RAD] [--w-rot X]\n"
+    "     [--max-iter N] ROBOT EXPR    joint values reaching EXPR; status on stderr;\n"
     "                                  exit 0 converged, 3 not converged\n"
+    "  euler SEQ EXPR                  Euler angles in degrees of EXPR's rotation; SEQ as\n"
+    "                                  scipy Rotation: XYZ intrinsic (Rot(x,a) Rot(y,b)\n"
+    "                                  Rot(z,c)), xyz extrinsic; 24 sequences\n"
+    "  quat EXPR                       unit quaternion of EXPR's rotation: w x y z (w >= 0)\n"
     "  help                            this text\n"
     "\n"
     "EXPR: product, left to right, of terms separated by spaces or '*':\n"
@@ -131,8 +137,9 @@ static int finish(void)
 /* ---- argument helpers --------------------------------------------------- */
 
 typedef struct {
-    int fixed, frames, position;
+    int fixed, frames, position, expr;
     const char *q0;
+    const char *tol_pos, *tol_rot, *w_rot, *max_iter;
     const char *pos[8];
     int npos;
 } opts;
@@ -151,12 +158,27 @@ static int parse_opts(int argc, char **argv, opts *o, const char *allowed)
             if (strcmp(name, "fixed") == 0 && strstr(allowed, "fixed")) o->fixed = 1;
             else if (strcmp(name, "frames") == 0 && strstr(allowed, "frames")) o->frames = 1;
             else if (strcmp(name, "position") == 0 && strstr(allowed, "position")) o->position = 1;
-            else if (strncmp(name, "q0=", 3) == 0 && strstr(allowed, "q0")) o->q0 = name + 3;
-            else if (strcmp(name, "q0") == 0 && strstr(allowed, "q0")) {
-                if (k + 1 >= argc) return usage_error("--q0 needs a value list q1,q2,...", NULL);
-                o->q0 = argv[++k];
-            } else
-                return usage_error("unknown or inapplicable option '%s'", a);
+            else if (strcmp(name, "expr") == 0 && strstr(allowed, "expr")) o->expr = 1;
+            else {
+                /* options with a value: --name VALUE or --name=VALUE */
+                static const char *const valued[] = { "q0", "tol-pos", "tol-rot", "w-rot", "max-iter" };
+                const char **slot[5];
+                size_t v, nl;
+                const char *eq = strchr(name, '=');
+                slot[0] = &o->q0;
+                slot[1] = &o->tol_pos;
+                slot[2] = &o->tol_rot;
+                slot[3] = &o->w_rot;
+                slot[4] = &o->max_iter;
+                nl = eq ? (size_t)(eq - name) : strlen(name);
+                for (v = 0; v < 5u; v++)
+                    if (strlen(valued[v]) == nl && strncmp(name, valued[v], nl) == 0 && strstr(allowed, valued[v]))
+                        break;
+                if (v == 5u) return usage_error("unknown or inapplicable option '%s'", a);
+                if (eq) *slot[v] = eq + 1;
+                else if (k + 1 < argc) *slot[v] = argv[++k];
+                else return usage_error("option '%s' needs a value", a);
+            }
             continue;
         }
         if (!only_pos && a[0] == '-' && a[1] != '\0' && a[1] != '.' && (a[1] < '0' || a[1] > '9'))
@@ -358,6 +380,31 @@ static void warn_limits(const dh_robot *r, const float *q)
     }
 }
 
+static double clean0(double v)
+{
+    return v == 0.0 ? 0.0 : v;
+}
+
+/* "trans(px,py,pz) rot(kx,ky,kz,theta)" of a rigid frame (axis via the library) */
+static int frame_expr(const rows4 *R, char *buf, size_t cap)
+{
+    dh_mat4_f32 T;
+    dh_vec3_f32 k;
+    float th = 0.0f;
+    unsigned r, c;
+    for (r = 0; r < 4u; r++)
+        for (c = 0; c < 4u; c++) DH_M4(&T, r, c) = (float)R->m[r][c];
+    if (dh_mat4_to_axis_angle_f32(&T, &k, &th) != DH_OK) return -1;
+    if (th == 0.0f) {
+        k.x = 0.0f;
+        k.y = 0.0f;
+        k.z = 1.0f;
+    }
+    (void)snprintf(buf, cap, "trans(%.9g,%.9g,%.9g) rot(%.9g,%.9g,%.9g,%.9g)", clean0(R->m[0][3]),
+                   clean0(R->m[1][3]), clean0(R->m[2][3]), clean0(k.x), clean0(k.y), clean0(k.z), clean0(th));
+    return 0;
+}
+
 static int cmd_fk(int argc, char **argv)
 {
     opts o;
@@ -367,9 +414,10 @@ static int cmd_fk(int argc, char **argv)
     rows4 M[DH_MAX_JOINTS + 1];
     unsigned n, k, nout;
     dh_status st;
-    int rc = parse_opts(argc, argv, &o, "fixed frames");
+    int rc = parse_opts(argc, argv, &o, "fixed frames expr");
     if (rc) return rc;
     if (o.npos != 2) return usage_error("fk takes ROBOTFILE q1,q2,...", NULL);
+    if (o.expr && o.fixed) return usage_error("fk: --expr and --fixed cannot be combined", NULL);
     if ((rc = load_robot(o.pos[0], o.fixed, &r, &rf)) != 0) return rc;
     n = r.n;
     if ((rc = parse_list(o.pos[1], n, qd, "joint values")) != 0) return rc;
@@ -411,6 +459,14 @@ static int cmd_fk(int argc, char **argv)
     }
     for (k = 0; k < nout; k++)
         if (!rows_finite(&M[k])) return error_msg("fk: result is not finite", NULL);
+    if (o.expr) {
+        /* each frame as an EXPR that reproduces it: trans(p) rot(k, theta) */
+        char line[DH_MAX_JOINTS + 1][200];
+        for (k = 0; k < nout; k++)
+            if (frame_expr(&M[k], line[k], sizeof line[k])) return error_msg("fk --expr: frame is not rigid", NULL);
+        for (k = 0; k < nout; k++) puts(line[k]);
+        return finish();
+    }
     for (k = 0; k < nout; k++) {
         if (k) putchar('\n');
         print_rows(&M[k]);
@@ -444,6 +500,16 @@ static int cmd_jacobian(int argc, char **argv)
     return finish();
 }
 
+/* characteristic length: sum of |a| + |d| of the joints plus the base and tool offsets */
+static double robot_reach(const dh_robot *r, const dh_robotfile *rf)
+{
+    double L = 0.0;
+    unsigned k;
+    for (k = 0; k < rf->n; k++) L += fabs(rf->joint[k].a) + fabs(rf->joint[k].d);
+    for (k = 0; k < 3u; k++) L += fabs((double)DH_M4(&r->base, k, 3)) + fabs((double)DH_M4(&r->tool, k, 3));
+    return L;
+}
+
 static int cmd_ik(int argc, char **argv)
 {
     opts o;
@@ -457,9 +523,11 @@ static int cmd_ik(int argc, char **argv)
     dh_ik_result res;
     unsigned n, k;
     dh_status st;
-    int rc = parse_opts(argc, argv, &o, "q0 position");
+    double L, x;
+    int rc = parse_opts(argc, argv, &o, "q0 position tol-pos tol-rot w-rot max-iter");
     if (rc) return rc;
-    if (o.npos != 2) return usage_error("ik takes ROBOTFILE EXPR [--q0 q1,...] [--position]", NULL);
+    if (o.npos != 2) return usage_error("ik takes ROBOTFILE EXPR [--q0 q1,...] [--position] [--tol-pos X] "
+                                        "[--tol-rot X] [--w-rot X] [--max-iter N]", NULL);
     if ((rc = load_robot(o.pos[0], 0, &r, &rf)) != 0) return rc;
     if ((rc = eval_expr(o.pos[1], &target)) != 0) return rc;
     n = r.n;
@@ -467,7 +535,34 @@ static int cmd_ik(int argc, char **argv)
     if (o.q0 && (rc = parse_list(o.q0, n, qd, "--q0")) != 0) return rc;
     for (k = 0; k < n; k++) q0[k] = (float)qd[k];
     dh_ik_params_default(&prm);
+    /* The library defaults are for metres. Scale the length-dependent ones
+     * by the robot's size L = max(1, reach) so a millimetre robot gets
+     * tol_pos ~1e-3 mm and w_rot ~1000 mm/rad. */
+    L = robot_reach(&r, &rf);
+    if (L < 1.0) L = 1.0;
+    prm.tol_pos = (float)((double)prm.tol_pos * L);
+    prm.w_rot = (float)((double)prm.w_rot * L);
     if (o.position) prm.mask = DH_IK_POSITION;
+    if (o.tol_pos) {
+        if ((rc = parse_num_arg(o.tol_pos, "--tol-pos", &x)) != 0) return rc;
+        if (!(x >= 0.0)) return error_msg("--tol-pos must be >= 0", NULL);
+        prm.tol_pos = (float)x;
+    }
+    if (o.tol_rot) {
+        if ((rc = parse_num_arg(o.tol_rot, "--tol-rot", &x)) != 0) return rc;
+        if (!(x >= 0.0)) return error_msg("--tol-rot must be >= 0", NULL);
+        prm.tol_rot = (float)x;
+    }
+    if (o.w_rot) {
+        if ((rc = parse_num_arg(o.w_rot, "--w-rot", &x)) != 0) return rc;
+        if (!(x > 0.0)) return error_msg("--w-rot must be > 0", NULL);
+        prm.w_rot = (float)x;
+    }
+    if (o.max_iter) {
+        if ((rc = parse_num_arg(o.max_iter, "--max-iter", &x)) != 0) return rc;
+        if (!(x >= 1.0 && x <= 1e6 && floor(x) == x)) return error_msg("--max-iter must be an integer in 1..1000000", NULL);
+        prm.max_iter = (uint32_t)x;
+    }
     memset(&res, 0, sizeof res);
     st = dh_ik_f32(&r, &target, q0, q, &prm, work, sizeof work / sizeof work[0], &res);
     if (st != DH_OK && st != DH_ERR_NO_CONVERGENCE && st != DH_ERR_UNREACHABLE && st != DH_ERR_SINGULAR)
@@ -481,6 +576,68 @@ static int cmd_ik(int argc, char **argv)
             (double)res.err_pos, (double)res.err_rot);
     if (rc) return rc;
     return st == DH_OK ? 0 : EXIT_NOCONV;
+}
+
+static int rotation_of(const char *expr, dh_mat3_f32 *R)
+{
+    dh_mat4_f32 T;
+    int rc = eval_expr(expr, &T);
+    if (rc) return rc;
+    dh_mat4_get_rot_f32(&T, R);
+    return 0;
+}
+
+static int rot_error(const char *cmd, dh_status st)
+{
+    if (st == DH_ERR_NOT_RIGID)
+        fprintf(stderr, "dhmath: error: %s: the 3x3 part of EXPR is not a rotation (not orthonormal with det +1)\n", cmd);
+    else
+        fprintf(stderr, "dhmath: error: %s: %s\n", cmd, dh_status_str(st));
+    return EXIT_ERR;
+}
+
+static int cmd_euler(int argc, char **argv)
+{
+    opts o;
+    dh_mat3_f32 R;
+    dh_euler_seq seq;
+    float a[3];
+    dh_status st;
+    int rc = parse_opts(argc, argv, &o, "");
+    if (rc) return rc;
+    if (o.npos != 2) return usage_error("euler takes SEQ EXPR, e.g. dhmath euler XYZ \"rotx(10) roty(20)\"", NULL);
+    if (dh_euler_parse(o.pos[0], &seq) != DH_OK)
+        return usage_error("unknown Euler sequence '%s' (three axis letters, uppercase intrinsic, "
+                           "lowercase extrinsic, no two equal neighbours: XYZ, ZYX, ZYZ, xyz, ...)", o.pos[0]);
+    if ((rc = rotation_of(o.pos[1], &R)) != 0) return rc;
+    st = dh_mat3_to_euler_f32(&R, seq, a);
+    if (st != DH_OK) return rot_error("euler", st);
+    if (!isfinite(a[0]) || !isfinite(a[1]) || !isfinite(a[2])) return error_msg("euler: result is not finite", NULL);
+    put_num(a[0], 0);
+    put_num(a[1], 0);
+    put_num(a[2], 1);
+    return finish();
+}
+
+static int cmd_quat(int argc, char **argv)
+{
+    opts o;
+    dh_mat3_f32 R;
+    dh_quat_f32 q;
+    dh_status st;
+    int rc = parse_opts(argc, argv, &o, "");
+    if (rc) return rc;
+    if (o.npos != 1) return usage_error("quat takes one EXPR: dhmath quat EXPR", NULL);
+    if ((rc = rotation_of(o.pos[0], &R)) != 0) return rc;
+    st = dh_mat3_to_quat_f32(&R, &q);
+    if (st != DH_OK) return rot_error("quat", st);
+    if (!isfinite(q.w) || !isfinite(q.x) || !isfinite(q.y) || !isfinite(q.z))
+        return error_msg("quat: result is not finite", NULL);
+    put_num(q.w, 0);
+    put_num(q.x, 0);
+    put_num(q.y, 0);
+    put_num(q.z, 1);
+    return finish();
 }
 
 int main(int argc, char **argv)
@@ -504,5 +661,7 @@ int main(int argc, char **argv)
     if (strcmp(cmd, "fk") == 0) return cmd_fk(argc, argv);
     if (strcmp(cmd, "jacobian") == 0) return cmd_jacobian(argc, argv);
     if (strcmp(cmd, "ik") == 0) return cmd_ik(argc, argv);
+    if (strcmp(cmd, "euler") == 0) return cmd_euler(argc, argv);
+    if (strcmp(cmd, "quat") == 0) return cmd_quat(argc, argv);
     return usage_error("unknown command '%s'", cmd);
 }

@@ -11,6 +11,7 @@ Groups:
             (float and --fixed); prints the measured max errors
   robotfile robot-file error table (file:line) and random robots: fk,
             fk --frames, fk --fixed, jacobian vs double references here
+  rot       euler (24 sequences) and quat against angles/axes chosen here
   examples  fk on examples/robots/puma560.dh at 0,...,0 and the other
             shipped robots; ik round trips
   help      help/usage behaviour
@@ -332,6 +333,13 @@ ERROR_CASES = [
     (['point', 'scale(3e38,1,1)', '10', '0', '0'], r'not finite'),
     (['plane', 'scale(0,1,1)', '1', '0', '0', '0'], r'plane: EXPR is singular'),
     (['plane', 'rotx(3)', '1', '0', '0'], r'usage error: plane takes EXPR a b c d'),
+    (['euler', 'XXZ', 'rotx(3)'], r"usage error: unknown Euler sequence 'XXZ'"),
+    (['euler', 'XYz', 'rotx(3)'], r"usage error: unknown Euler sequence 'XYz'"),
+    (['euler', 'XYZ', 'scale(2,1,1)'], r'euler: the 3x3 part of EXPR is not a rotation'),
+    (['euler', 'XYZ', 'rotx(3'], r"column 5 of EXPR: unbalanced"),
+    (['euler', 'XYZ'], r'usage error: euler takes SEQ EXPR'),
+    (['quat', 'scale(1,1,-1)'], r'quat: the 3x3 part of EXPR is not a rotation'),
+    (['quat', 'rotx(3) rotq(3)'], r'column 9 of EXPR: unknown term .rotq.'),
     (['eval'], r'usage error: eval takes one EXPR'),
     (['eval', 'rotx(1)', 'rotz(2)'], r'usage error: eval takes one EXPR'),
     (['eval', '--bogus', 'rotx(1)'], r"usage error: unknown or inapplicable option '--bogus'"),
@@ -576,6 +584,14 @@ def group_robotfile(seed, tmp):
             check(len(blocks) == n + 1, 'fk --frames: %d blocks for %d joints' % (len(blocks), n))
             for b, R in zip(blocks, refs):
                 check(maxdiff(nums(b), R) <= 1e-6, 'fk --frames block error')
+        rc, out, err = run(['fk', '--expr', good, ','.join(q)])
+        check(rc == 0 and out.count('\n') == 1, 'fk --expr rc %d %r %r' % (rc, out, err))
+        if rc == 0:
+            d = maxdiff(ref_expr(out.strip()), ref_fk(rob, qf))
+            worst[3] = max(worst[3], d)
+            # float frame -> float axis/angle printed with 9 digits; measured
+            # over seeds 1..40 <= 7.2e-7
+            check(d <= 1e-6, 'fk --expr %r %r: %r error %.3g' % (text, q, out, d))
         rc, out, err = run(['fk', '--fixed', good, ','.join(q)])
         check(rc == 0, 'fk --fixed %r rc %d %r' % (text, rc, err))
         if rc == 0:
@@ -596,8 +612,35 @@ def group_robotfile(seed, tmp):
                 # includes the O(h^2) central-difference error of the
                 # reference; measured over seeds 1..40 <= 6.3e-7
                 check(d <= 1e-6, 'jacobian %r %r: error %.3g\n%r\n%r' % (text, q, d, J, Jr))
-    print('robotfile: 60 random robots: fk max error %.3g, fk --fixed %.3g, jacobian %.3g (seed %d)'
-          % (worst[0], worst[1], worst[2], seed))
+    print('robotfile: 60 random robots: fk max error %.3g, fk --fixed %.3g, jacobian %.3g, fk --expr %.3g '
+          '(seed %d)' % (worst[0], worst[1], worst[2], worst[3], seed))
+
+
+def det(M):
+    M = [row[:] for row in M]
+    n, d = len(M), 1.0
+    for c in range(n):
+        p = max(range(c, n), key=lambda r: abs(M[r][c]))
+        if M[p][c] == 0.0:
+            return 0.0
+        if p != c:
+            M[c], M[p] = M[p], M[c]
+            d = -d
+        d *= M[c][c]
+        for r in range(c + 1, n):
+            f = M[r][c] / M[c][c]
+            M[r] = [x - f * y for x, y in zip(M[r], M[c])]
+    return d
+
+
+def near_singular(rob, q, unit):
+    """det(J J^T) small against its scale (position rows in metres)."""
+    J = jac_ref(rob, q)
+    J = [[x / unit for x in row] for row in J[:3]] + J[3:]
+    G = [[sum(a * b for a, b in zip(J[i], J[j])) for j in range(6)] for i in range(6)]
+    tr = sum(G[i][i] for i in range(6)) / 6.0
+    # 1e-9: q5 = 0.016 deg on the Puma gives 8e-11, q5 = 2 deg 1.2e-6
+    return det(G) < 1e-9 * tr ** 6
 
 
 def group_examples():
@@ -614,8 +657,38 @@ def group_examples():
         got = nums(out)
         d = maxdiff(got, ref_fk(rob, z))
         check(d <= 2e-6, 'fk puma560 at 0: error %.3g\n%s' % (d, out))
+        # published pose at q = 0 (Corke, RTB Puma560 with the 0.67183 m
+        # pedestal): R = I, p = (0.4521, -0.15005, 1.10363)
+        want = [[1, 0, 0, 0.4521], [0, 1, 0, -0.15005], [0, 0, 1, 1.10363], [0, 0, 0, 1]]
+        check(maxdiff(got, want) <= 1e-6, 'fk puma560 at 0 vs published pose:\n%s' % out)
         print('fk puma560.dh at 0:\n' + out.rstrip())
+    # unreachable target: best effort printed, exit 3, status on stderr
+    rc, out, err = run(['ik', puma, 'trans(5,0,0)'])
+    check(rc == 3 and len(nums(out)[0]) == 6 and err.startswith('ik: not converged'),
+          'ik unreachable: rc %d out %r err %r' % (rc, out, err))
+    for args, pat in ((['ik', puma, 'trans(0.5,0,0) rotw(3)'], r'column 16 of EXPR: unknown term'),
+                      (['ik', puma, 'ident', '--q0', '1,2,3'], r'--q0: expected 6 values'),
+                      (['ik', puma, 'ident', '--q0'], r"option '--q0' needs a value"),
+                      (['ik', puma, 'ident', '--tol-pos', '-1'], r'--tol-pos must be >= 0'),
+                      (['ik', puma, 'ident', '--max-iter', '2.5'], r'--max-iter must be an integer'),
+                      (['ik', puma], r'usage error: ik takes ROBOTFILE EXPR'),
+                      (['fk', puma, '0,0,0,0,0'], r'expected 6 values'),
+                      (['fk', puma, '0,0,0,0,0,x'], r"value 6 'x' \(column 11\): not a number"),
+                      (['fk', puma, '0,0,0,0,0,nan'], r"value 6 'nan'.*NaN"),
+                      (['fk', '--fixed', puma, '0,0,0,0,0,40000'], r'overflow: joint value 6'),
+                      (['jacobian', puma, '0,0,0'], r'expected 6 values')):
+        rc, out, err = run(args)
+        check(rc == 2 and out == '' and re.search(pat, err) is not None,
+              'robot error case %r: rc %d out %r err %r' % (args[2:], rc, out, err))
+    # a value outside the limits is computed, with a warning on stderr
+    rc, out, err = run(['fk', puma, '170,0,0,0,0,0'])
+    check(rc == 0 and 'warning: joint 1 value 170 outside its limits' in err, 'fk limit warning %r' % err)
+    # --fixed at q = 0 reproduces the published pose too
+    rc, out, err = run(['fk', '--fixed', puma, '0,0,0,0,0,0'])
+    check(rc == 0 and maxdiff(nums(out), ref_fk(rob, z)) <= 1e-4, 'fk --fixed puma560 at 0: %r %r' % (out, err))
+
     rng = random.Random(7)
+    stats = {}
     for name in sorted(os.listdir(rdir)):
         if not name.endswith('.dh'):
             continue
@@ -631,10 +704,17 @@ def group_examples():
             T = ref_fk(rob, [float(x) for x in q])
             d = maxdiff(nums(out), T)
             check(d <= 5e-6 * unit, 'fk %s %r: error %.3g' % (name, q, d))
-            # ik round trip: target = fk(q), start near q
+            # ik round trip: target = fk(q), start near q; configurations
+            # near a singularity (e.g. the Puma wrist at q5 ~ 0) are
+            # skipped: there the pose does not pin the joints down
+            if near_singular(rob, [float(x) for x in q], unit):
+                stats.setdefault('skipped near a singularity', [0, 0])[0] += 1
+                continue
             q0 = ['%.4f' % (float(x) + rng.uniform(-5, 5)) for x in q]
             rc, out, err = run(['ik', path, to_expr(T), '--q0', ','.join(q0)])
             check(rc in (0, 3), 'ik %s rc %d %r' % (name, rc, err))
+            st = stats.setdefault(name, [0, 0])
+            st[0 if rc == 0 else 1] += 1
             check(err.startswith('ik: '), 'ik status line %r' % err)
             if rc == 0:
                 qs = [float(x) for x in nums(out)[0]]
@@ -642,13 +722,64 @@ def group_examples():
                 dp = max(abs(T2[r][3] - T[r][3]) for r in range(3))
                 dr = max(abs(T2[r][c] - T[r][c]) for r in range(3) for c in range(3))
                 check(dp <= 1e-3 * unit and dr <= 1e-3, 'ik %s round trip: pos %.3g rot %.3g' % (name, dp, dr))
+    for name, (ok, nc) in sorted(stats.items()):
+        print('ik round trips %s: %d converged, %d not' % (name, ok, nc))
+        if name.startswith('skipped'):
+            continue
+        # started within 5 deg of a solution: all of them must converge
+        check(nc == 0, 'ik %s: %d round trips did not converge' % (name, nc))
+
+
+def group_rot(seed):
+    rng = random.Random(seed)
+    worst = [0.0, 0.0]
+    for it in range(480):
+        axes = rng.choice(['XYZ', 'XZY', 'YXZ', 'YZX', 'ZXY', 'ZYX', 'XYX', 'XZX', 'YXY', 'YZY', 'ZXZ', 'ZYZ'])
+        proper = axes[0] == axes[2]
+        seq = axes if rng.random() < 0.5 else axes.lower()
+        a, c = rng.uniform(-179, 179), rng.uniform(-179, 179)
+        # away from gimbal lock so the angles are unique
+        b = rng.uniform(2, 178) if proper else rng.uniform(-88, 88)
+        ang = ['%.6f' % v for v in (a, b, c)]
+        terms = ['rot%s(%s)' % (ax.lower(), v) for ax, v in zip(axes, ang)]
+        # intrinsic: R = R1(a) R2(b) R3(c); extrinsic: R = R3(c) R2(b) R1(a)
+        e = ' '.join(terms if seq.isupper() else terms[::-1])
+        rc, out, err = run(['euler', seq, e])
+        check(rc == 0, 'euler %s %r: rc %d %r' % (seq, e, rc, err))
+        if rc == 0:
+            got = nums(out)[0]
+            d = max(abs((g - float(w) + 180.0) % 360.0 - 180.0) for g, w in zip(got, ang))
+            worst[0] = max(worst[0], d)
+            # measured over seeds 1..40: <= 2.3e-5 deg (float entries with
+            # ~1e-7 error; worst near the gimbal margin of 2 deg)
+            check(d <= 4e-5, 'euler %s %r: %r, error %.3g deg' % (seq, e, got, d))
+    for it in range(200):
+        k = [rng.uniform(-1, 1) for _ in range(3)]
+        n = math.sqrt(sum(x * x for x in k))
+        th = rng.uniform(0.5, 179.5)
+        sk = ['%.6f' % x for x in k]
+        kf = [float(x) for x in sk]
+        n = math.sqrt(sum(x * x for x in kf))
+        rc, out, err = run(['quat', 'rot(%s,%s,%s,%.6f)' % (sk[0], sk[1], sk[2], th)])
+        check(rc == 0, 'quat rc %d %r' % (rc, err))
+        if rc == 0:
+            t = math.radians(float('%.6f' % th)) / 2
+            want = [math.cos(t)] + [math.sin(t) * x / n for x in kf]
+            d = max(abs(g - w) for g, w in zip(nums(out)[0], want))
+            worst[1] = max(worst[1], d)
+            # measured over seeds 1..40: <= 2.0e-7
+            check(d <= 3e-7, 'quat %r: %r vs %r (%.3g)' % (sk, out, want, d))
+    rc, out, err = run(['euler', 'XYZ', 'roty(90) rotz(90)'])
+    check(rc == 0 and nums(out)[0][1] == 90.0, 'euler XYZ of eq. 1.41: %r %r' % (out, err))
+    print('rot: 480 euler max error %.3g deg, 200 quat max error %.3g (seed %d)' % (worst[0], worst[1], seed))
 
 
 def group_help():
     for args in (['--help'], ['help'], ['-h']):
         rc, out, err = run(args)
         check(rc == 0 and out.startswith('usage: dhmath') and err == '', 'help %r' % args)
-        for word in ('eval', 'axis', 'point', 'plane', 'fk', 'jacobian', 'ik', 'EXPR', 'persp(x|y|z,f)'):
+        for word in ('eval', 'axis', 'point', 'plane', 'fk', 'jacobian', 'ik', 'euler', 'quat', 'EXPR',
+                     'persp(x|y|z,f)'):
             check(word in out, 'help mentions %s' % word)
 
 
@@ -670,6 +801,8 @@ def main():
             group_robotfile(seed, tmp)
         elif group == 'examples':
             group_examples()
+        elif group == 'rot':
+            group_rot(seed)
         elif group == 'help':
             group_help()
         else:
