@@ -119,50 +119,66 @@ static float dh_residual(const dh_mat4_f32 *X, const dh_mat4_f32 *M, float s, fl
 }
 
 /*
- * Adjugate / determinant (Laplace expansion by the 2x2 minors of rows 0,1
- * and rows 2,3 of s M): straight-line and vector friendly, accurate for
- * well conditioned matrices. Writes X = (s M)^-1 and returns 1, or returns
- * 0 when det == 0 (X then unchanged).
+ * Adjugate / determinant (by the 2x2 minors of rows 2,3 and rows 0,1 of
+ * M): straight-line, accurate for well conditioned matrices. Only used on
+ * unscaled matrices (max |M_ij| in [2^-16, 2^17)), where neither the minors
+ * nor det can over- or underflow. Writes X = M^-1 and returns 1, or returns
+ * 0 when det == 0.
  */
-static int dh_inv_cofactor(const dh_mat4_f32 *M, float sc, dh_mat4_f32 *X)
+static int dh_inv_cofactor(const dh_mat4_f32 *M, dh_mat4_f32 *X)
 {
-    /* aRC = element (R, C) of s M, held in scalars (registers) */
-    const float a00 = M->m[0][0] * sc, a01 = M->m[0][1] * sc, a02 = M->m[0][2] * sc, a03 = M->m[0][3] * sc;
-    const float a10 = M->m[1][0] * sc, a11 = M->m[1][1] * sc, a12 = M->m[1][2] * sc, a13 = M->m[1][3] * sc;
-    const float a20 = M->m[2][0] * sc, a21 = M->m[2][1] * sc, a22 = M->m[2][2] * sc, a23 = M->m[2][3] * sc;
-    const float a30 = M->m[3][0] * sc, a31 = M->m[3][1] * sc, a32 = M->m[3][2] * sc, a33 = M->m[3][3] * sc;
-    const float s0 = a00 * a11 - a10 * a01;
-    const float s1 = a00 * a12 - a10 * a02;
-    const float s2 = a00 * a13 - a10 * a03;
-    const float s3 = a01 * a12 - a11 * a02;
-    const float s4 = a01 * a13 - a11 * a03;
-    const float s5 = a02 * a13 - a12 * a03;
-    const float c5 = a22 * a33 - a32 * a23;
-    const float c4 = a21 * a33 - a31 * a23;
-    const float c3 = a21 * a32 - a31 * a22;
-    const float c2 = a20 * a33 - a30 * a23;
-    const float c1 = a20 * a32 - a30 * a22;
-    const float c0 = a20 * a31 - a30 * a21;
-    const float det = s0 * c5 - s1 * c4 + s2 * c3 + s3 * c2 - s4 * c1 + s5 * c0;
-    float f;
+    float det, f;
+    int i, j;
+    /* phase 1: the 2x2 minors of rows 2,3 and the cofactors that use them
+     * (columns 0, 1 of X); few values live at a time keeps the frame small */
+    {
+        const float a00 = M->m[0][0], a01 = M->m[0][1], a02 = M->m[0][2], a03 = M->m[0][3];
+        const float a10 = M->m[1][0], a11 = M->m[1][1], a12 = M->m[1][2], a13 = M->m[1][3];
+        const float a20 = M->m[2][0], a21 = M->m[2][1], a22 = M->m[2][2], a23 = M->m[2][3];
+        const float a30 = M->m[3][0], a31 = M->m[3][1], a32 = M->m[3][2], a33 = M->m[3][3];
+        const float c5 = a22 * a33 - a32 * a23;
+        const float c4 = a21 * a33 - a31 * a23;
+        const float c3 = a21 * a32 - a31 * a22;
+        const float c2 = a20 * a33 - a30 * a23;
+        const float c1 = a20 * a32 - a30 * a22;
+        const float c0 = a20 * a31 - a30 * a21;
+        X->m[0][0] =  a11 * c5 - a12 * c4 + a13 * c3;
+        X->m[1][0] = -a10 * c5 + a12 * c2 - a13 * c1;
+        X->m[2][0] =  a10 * c4 - a11 * c2 + a13 * c0;
+        X->m[3][0] = -a10 * c3 + a11 * c1 - a12 * c0;
+        X->m[0][1] = -a01 * c5 + a02 * c4 - a03 * c3;
+        X->m[1][1] =  a00 * c5 - a02 * c2 + a03 * c1;
+        X->m[2][1] = -a00 * c4 + a01 * c2 - a03 * c0;
+        X->m[3][1] =  a00 * c3 - a01 * c1 + a02 * c0;
+        /* Laplace expansion along row 0 */
+        det = a00 * X->m[0][0] + a01 * X->m[1][0] + a02 * X->m[2][0] + a03 * X->m[3][0];
+    }
     if (det == 0.0f) return 0;
+    /* phase 2: the 2x2 minors of rows 0,1 and columns 2, 3 of X */
+    {
+        const float a00 = M->m[0][0], a01 = M->m[0][1], a02 = M->m[0][2], a03 = M->m[0][3];
+        const float a10 = M->m[1][0], a11 = M->m[1][1], a12 = M->m[1][2], a13 = M->m[1][3];
+        const float a20 = M->m[2][0], a21 = M->m[2][1], a22 = M->m[2][2], a23 = M->m[2][3];
+        const float a30 = M->m[3][0], a31 = M->m[3][1], a32 = M->m[3][2], a33 = M->m[3][3];
+        const float s0 = a00 * a11 - a10 * a01;
+        const float s1 = a00 * a12 - a10 * a02;
+        const float s2 = a00 * a13 - a10 * a03;
+        const float s3 = a01 * a12 - a11 * a02;
+        const float s4 = a01 * a13 - a11 * a03;
+        const float s5 = a02 * a13 - a12 * a03;
+        X->m[0][2] =  a31 * s5 - a32 * s4 + a33 * s3;
+        X->m[1][2] = -a30 * s5 + a32 * s2 - a33 * s1;
+        X->m[2][2] =  a30 * s4 - a31 * s2 + a33 * s0;
+        X->m[3][2] = -a30 * s3 + a31 * s1 - a32 * s0;
+        X->m[0][3] = -a21 * s5 + a22 * s4 - a23 * s3;
+        X->m[1][3] =  a20 * s5 - a22 * s2 + a23 * s1;
+        X->m[2][3] = -a20 * s4 + a21 * s2 - a23 * s0;
+        X->m[3][3] =  a20 * s3 - a21 * s1 + a22 * s0;
+    }
     f = 1.0f / det;
-    X->m[0][0] = ( a11 * c5 - a12 * c4 + a13 * c3) * f;
-    X->m[0][1] = (-a01 * c5 + a02 * c4 - a03 * c3) * f;
-    X->m[0][2] = ( a31 * s5 - a32 * s4 + a33 * s3) * f;
-    X->m[0][3] = (-a21 * s5 + a22 * s4 - a23 * s3) * f;
-    X->m[1][0] = (-a10 * c5 + a12 * c2 - a13 * c1) * f;
-    X->m[1][1] = ( a00 * c5 - a02 * c2 + a03 * c1) * f;
-    X->m[1][2] = (-a30 * s5 + a32 * s2 - a33 * s1) * f;
-    X->m[1][3] = ( a20 * s5 - a22 * s2 + a23 * s1) * f;
-    X->m[2][0] = ( a10 * c4 - a11 * c2 + a13 * c0) * f;
-    X->m[2][1] = (-a00 * c4 + a01 * c2 - a03 * c0) * f;
-    X->m[2][2] = ( a30 * s4 - a31 * s2 + a33 * s0) * f;
-    X->m[2][3] = (-a20 * s4 + a21 * s2 - a23 * s0) * f;
-    X->m[3][0] = (-a10 * c3 + a11 * c1 - a12 * c0) * f;
-    X->m[3][1] = ( a00 * c3 - a01 * c1 + a02 * c0) * f;
-    X->m[3][2] = (-a30 * s3 + a31 * s1 - a32 * s0) * f;
-    X->m[3][3] = ( a20 * s3 - a21 * s1 + a22 * s0) * f;
+    for (i = 0; i < 4; i++) {
+        for (j = 0; j < 4; j++) X->m[i][j] *= f;
+    }
     return 1;
 }
 
@@ -258,11 +274,12 @@ dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
     sg = dh_balance(T); /* scale-free: a ratio of sums of |T_ij| */
     na = dh_norm_rows(T, sg) * s;
 
-    /* Fast path: cofactors, accepted when the estimated condition number is
-     * below the limit AND the residual is as small as a backward stable
-     * method leaves (8 u ||X|| ||M||). Otherwise (ill-conditioned or
-     * singular input) Gauss-Jordan with pivoting decides. */
-    if (dh_inv_cofactor(T, s, &X)) {
+    /* Fast path (unscaled input only): cofactors, accepted when the
+     * estimated condition number is below the limit AND the residual is as
+     * small as a backward stable method leaves (8 u ||X|| ||M||). Otherwise
+     * (ill-conditioned, singular or extremely scaled input) Gauss-Jordan
+     * with pivoting on s T decides. */
+    if (s == 1.0f && dh_inv_cofactor(T, &X)) {
         nx = dh_norm_rows(&X, sg);
         if (na * nx < DH_MAT4_COND_MAX && dh_residual(&X, T, s, sg) <= 8.0f * DH_U24 * na * nx) {
             goto accept;
