@@ -38,6 +38,15 @@
 #define DH_NOINLINE
 #endif
 
+/* Product for the code off the hot path (exact path, constructors): out
+ * of line on ARMv6-M, where the inlined 16-bit kernel makes GCC spill and
+ * the callers' frames exceed the 256-byte stack budget. */
+#if DH_PORT_MUL64_IS_CALL
+static DH_NOINLINE int64_t dh_mul64(int32_t a, int32_t b) { return dh_port_smull(a, b); }
+#else
+static inline int64_t dh_mul64(int32_t a, int32_t b) { return dh_port_smull(a, b); }
+#endif
+
 #define DH_ONE30 ((int32_t)0x40000000)      /* 1.0 in Q2.30 */
 #define DH_HALF30 ((int64_t)0x20000000)     /* 0.5 LSB of a >>30 result */
 
@@ -72,13 +81,13 @@ static inline int32_t dh_fin30(int64_t acc, uint32_t *ovf)
  * 2^62 + 2^60 * 4 < 2^63.
  */
 static DH_NOINLINE int32_t dh_dot_exact(const int32_t *a, const int32_t *b, unsigned n, int negate,
-                            int64_t c, unsigned sh, uint32_t *ovf)
+                                        int64_t c, unsigned sh, uint32_t *ovf)
 {
     int64_t h = c >> 2, r;
     uint32_t l = 0u;
     unsigned i;
     for (i = 0; i < n; i++) {
-        int64_t p = dh_port_smull(a[i], b[i]);
+        int64_t p = dh_mul64(a[i], b[i]);
         if (negate) p = -p;                          /* |p| <= 2^62: safe */
         h += p >> 2;
         l += (uint32_t)((uint64_t)p & 3u);
@@ -167,16 +176,63 @@ static int64_t dh_rshr64(int64_t x, unsigned sh)
  *  4. u = w Y / 2^(15 + s2/2) in Q46, then one Newton step on the vector
  *     u <- u + u (1 - |u|^2) / 2 with |u|^2 evaluated in Q60 from the
  *     split U, E (the error left is far below 2^-40).
- * Returns 0 for the zero vector.
  */
-static int dh_unit_axis(int32_t kx, int32_t ky, int32_t kz, int32_t U[3], int32_t E[3])
+/*
+ * Y = 1/sqrt(x) in Q2.30 for X = x 2^30 in [2^29, 2^31) (step 3 above).
+ * From a seed below the root, Newton's iterates stay below it, so
+ * x Y <= sqrt(x) < 1.5 and x Y^2 <= 1: no intermediate can overflow, and
+ * plain rounded shifts are used (no saturation needed).
+ */
+static DH_NOINLINE int32_t dh_inv_sqrt_q30(int32_t X)
 {
-    int32_t w[3];
-    int64_t ext[3], n, d;
-    uint32_t m = dh_abs_u32(kx), ovf = 0u;
+    int32_t Y = X < DH_ONE30 ? (int32_t)(7 << 28) - (X - (X >> 2))   /* 1.75 - 0.75 x */
+                             : (int32_t)(5 << 28) - (X >> 2);         /* 1.25 - 0.25 x */
+    int it;
+    for (it = 0; it < 4; it++) {
+        int32_t t = (int32_t)dh_rshr64(dh_mul64(X, Y), 30u);    /* x Y */
+        t = (int32_t)dh_rshr64(dh_mul64(t, Y), 30u);            /* x Y^2 */
+        /* Y (3 - t) / 2 = (2 Y 1.5 - Y t) / 2, one rounding */
+        Y = (int32_t)dh_rshr64(2 * dh_mul64(Y, (int32_t)(3 << 29)) - dh_mul64(Y, t), 31u);
+    }
+    return Y;
+}
+
+/* split x = U 2^16 + E, E in [-2^15, 2^15) */
+static void dh_split16(int64_t x, int32_t *U, int32_t *E)
+{
+    *U = (int32_t)dh_rshr64(x, 16u);
+    *E = (int32_t)(x - (int64_t)*U * 65536);
+}
+
+/* step 4 above: u = w Y / 2^(15 + s2/2) in Q46, one Newton step, split.
+ * w may alias U (each w[i] is read before U[i] is written). */
+static DH_NOINLINE void dh_unit_refine(const int32_t *w, int32_t Y, int s2, int32_t *U, int32_t *E)
+{
+    int64_t n = 0;
+    int32_t D;
+    unsigned i;
+    for (i = 0; i < 3u; i++) dh_split16(dh_rshr64(dh_mul64(w[i], Y), (unsigned)(s2 >> 1) - 1u), &U[i], &E[i]);
+    /* |u|^2 in Q60: U^2 + 2 U E / 2^16 (E^2 / 2^32 < 1 is dropped) */
+    for (i = 0; i < 3u; i++)
+        n += dh_mul64(U[i], U[i]) + dh_rshr64(2 * dh_mul64(U[i], E[i]), 16u);
+    /* D = (1 - |u|^2) in Q52 (|1 - |u|^2| < 2^-24, far inside int32) */
+    D = (int32_t)dh_rshr64(((int64_t)1 << 60) - n, 8u);
+    /* u += u d / 2: in Q46, U * D / 2^(30 + 52 - 46 + 1) */
+    for (i = 0; i < 3u; i++)
+        dh_split16((int64_t)U[i] * 65536 + E[i] + dh_rshr64(dh_mul64(U[i], D), 37u), &U[i], &E[i]);
+}
+
+/*
+ * Steps 1-2 above: w = k scaled by a power of two, *s2, and returns X
+ * (0 for the zero vector). The steps are separate functions called one
+ * after the other from dh_frame_rot_axis_q() so the stack depth is the
+ * largest step, not their sum.
+ */
+static DH_NOINLINE int32_t dh_axis_scale(int32_t kx, int32_t ky, int32_t kz, int32_t *w, int *s2)
+{
+    uint32_t m = dh_abs_u32(kx);
     uint64_t n2;
-    int32_t X, Y, D;
-    int sh, s2, it;
+    int sh;
     unsigned i;
     if (dh_abs_u32(ky) > m) m = dh_abs_u32(ky);
     if (dh_abs_u32(kz) > m) m = dh_abs_u32(kz);
@@ -186,83 +242,65 @@ static int dh_unit_axis(int32_t kx, int32_t ky, int32_t kz, int32_t U[3], int32_
     w[1] = dh_scale_signed(ky, sh);
     w[2] = dh_scale_signed(kz, sh);
     n2 = 0u;
-    for (i = 0; i < 3u; i++) n2 += (uint64_t)dh_port_smull(w[i], w[i]);
+    for (i = 0; i < 3u; i++) n2 += (uint64_t)dh_mul64(w[i], w[i]);
     /* n2 in [2^60, 3 * 2^62): pick an even shift giving X in [2^29, 2^31) */
-    s2 = (n2 >= ((uint64_t)1 << 63)) ? 34 : ((n2 >= ((uint64_t)1 << 61)) ? 32 : 30);
-    X = (int32_t)(n2 >> s2);
-    Y = X < DH_ONE30 ? (int32_t)(7 << 28) - (X - (X >> 2))   /* 1.75 - 0.75 x */
-                     : (int32_t)(5 << 28) - (X >> 2);         /* 1.25 - 0.25 x */
-    for (it = 0; it < 4; it++) {
-        int32_t a[3], b[3], t;
-        a[0] = X; b[0] = Y;
-        t = dh_dot_exact(a, b, 1u, 0, 0, 30u, &ovf);         /* x Y < 1.5 */
-        a[0] = t; b[0] = Y;
-        t = dh_dot_exact(a, b, 1u, 0, 0, 30u, &ovf);         /* x Y^2, near 1 */
-        /* Y (3 - t) / 2 = (2 * Y * 1.5 - Y * t) / 2 */
-        a[0] = Y; b[0] = (int32_t)(3 << 29);
-        a[1] = Y; b[1] = (int32_t)(3 << 29);
-        a[2] = Y; b[2] = dh_neg_sat(t);
-        Y = dh_dot_exact(a, b, 3u, 0, 0, 31u, &ovf);
+    *s2 = (n2 >= ((uint64_t)1 << 63)) ? 34 : ((n2 >= ((uint64_t)1 << 61)) ? 32 : 30);
+    return (int32_t)(n2 >> *s2);
+}
+
+/*
+ * Entry (row i, column j) of eq. 1.70, R = k k^T vers + c I + s [k]x with
+ * vers = 1 - c, summed in Q60 and rounded once:
+ *   k_i k_j (Q60)     P = U_i U_j + (U_i E_j + U_j E_i) / 2^16
+ *   k_i k_j vers      P = Ph 2^30 + Pl:  Ph 2^30 - Ph c + round(Pl (2^30 - c) / 2^30)
+ *   s k_m             s U_m + round(s E_m / 2^16)
+ * Every term is below 2^61 in magnitude: no overflow; the entry is within
+ * 1 + 1 LSB in magnitude, so it cannot saturate.
+ */
+static DH_NOINLINE int32_t dh_axis_entry(const int32_t *U, const int32_t *E, unsigned i, unsigned j,
+                                         int32_t s, int32_t c)
+{
+    uint32_t ovf = 0u;
+    int32_t ns = dh_neg_sat(c);
+    int64_t P = dh_mul64(U[i], U[j]) +
+                dh_rshr64(dh_mul64(U[i], E[j]) + dh_mul64(U[j], E[i]), 16u);
+    int32_t Ph = (int32_t)(P >> 30), Pl = (int32_t)(P - (int64_t)Ph * DH_ONE30);
+    int64_t acc = dh_port_smlal(DH_HALF30, Ph, DH_ONE30);
+    acc = dh_port_smlal(acc, Ph, ns);
+    acc += Pl + dh_rshr64(dh_mul64(Pl, ns), 30u);
+    if (i == j) {
+        acc = dh_port_smlal(acc, c, DH_ONE30);
+    } else {
+        /* s [k]x: (i,j) = (1,0) +kz, (0,1) -kz, (0,2) +ky, (2,0) -ky, (2,1) +kx, (1,2) -kx */
+        unsigned m = 3u - i - j;
+        int positive = (i == j + 1u) || (i == 0u && j == 2u);
+        int64_t t = dh_mul64(s, U[m]) + dh_rshr64(dh_mul64(s, E[m]), 16u);
+        acc += positive ? t : -t;
     }
-    (void)ovf;                                   /* cannot saturate for these ranges */
-    /* u in Q46: w * Y / 2^(15 + s2/2 - 16) */
-    for (i = 0; i < 3u; i++) ext[i] = dh_rshr64(dh_port_smull(w[i], Y), (unsigned)(s2 >> 1) - 1u);
-    for (it = 0; it < 2; it++) {
-        /* split ext = U 2^16 + E, E in [-2^15, 2^15) */
-        for (i = 0; i < 3u; i++) {
-            U[i] = (int32_t)dh_rshr64(ext[i], 16u);
-            E[i] = (int32_t)(ext[i] - (int64_t)U[i] * 65536);
-        }
-        if (it == 1) break;
-        /* |u|^2 in Q60: U^2 + 2 U E / 2^16 (E^2 / 2^32 < 1 is dropped) */
-        n = 0;
-        for (i = 0; i < 3u; i++)
-            n += dh_port_smull(U[i], U[i]) + dh_rshr64(2 * dh_port_smull(U[i], E[i]), 16u);
-        d = ((int64_t)1 << 60) - n;                  /* (1 - |u|^2) in Q60, |d| < 2^36 */
-        D = (int32_t)dh_rshr64(d, 8u);               /* Q52 */
-        /* u += u d / 2: in Q46, U * D / 2^(30 + 52 - 46 + 1) */
-        for (i = 0; i < 3u; i++) ext[i] += dh_rshr64(dh_port_smull(U[i], D), 37u);
+    return dh_fin30(acc, &ovf);
+}
+
+/* F = the rounded eq. 1.70 matrix (position 0); 0 for a zero axis (F untouched) */
+static DH_NOINLINE int dh_axis_build(dh_frame_q *F, int32_t kx, int32_t ky, int32_t kz, dh_q16 deg)
+{
+    int32_t U[3], E[3], s, c, X;
+    int s2 = 0;
+    unsigned i, j;
+    X = dh_axis_scale(kx, ky, kz, U, &s2);     /* U holds w here */
+    if (X == 0) return 0;
+    dh_unit_refine(U, dh_inv_sqrt_q30(X), s2, U, E);
+    dh_sincos_q(deg, &s, &c);
+    for (j = 0; j < 3u; j++) {          /* column */
+        for (i = 0; i < 3u; i++) F->r[j][i] = dh_axis_entry(U, E, i, j, s, c);
+        F->p[j] = 0;
     }
     return 1;
 }
 
 dh_status dh_frame_rot_axis_q(dh_frame_q *F, dh_q30 kx, dh_q30 ky, dh_q30 kz, dh_q16 deg)
 {
-    int32_t U[3], E[3], s, c, ns;
-    uint32_t ovf = 0u;
-    unsigned i, j;
     DH_ASSERT(F != NULL);
-    if (!dh_unit_axis(kx, ky, kz, U, E)) return DH_ERR_ZERO_AXIS;
-    dh_sincos_q(deg, &s, &c);
-    ns = dh_neg_sat(c);
-    /* eq. 1.70: R = k k^T vers + c I + s [k]x, vers = 1 - c, summed in Q60
-     * and rounded once:
-     *   k_i k_j (Q60)     P  = U_i U_j + (U_i E_j + U_j E_i) / 2^16
-     *   k_i k_j vers      P = Ph 2^30 + Pl:  Ph 2^30 - Ph c + round(Pl (2^30 - c) / 2^30)
-     *   s k_m             s U_m + round(s E_m / 2^16)
-     * Every term is below 2^61 in magnitude: no overflow. */
-    for (j = 0; j < 3u; j++) {          /* column */
-        for (i = 0; i < 3u; i++) {      /* row */
-            int64_t P = dh_port_smull(U[i], U[j]) +
-                        dh_rshr64(dh_port_smull(U[i], E[j]) + dh_port_smull(U[j], E[i]), 16u);
-            int32_t Ph = (int32_t)(P >> 30), Pl = (int32_t)(P - (int64_t)Ph * DH_ONE30);
-            int64_t acc = dh_port_smlal(DH_HALF30, Ph, DH_ONE30);
-            acc = dh_port_smlal(acc, Ph, ns);
-            acc += Pl + dh_rshr64(dh_port_smull(Pl, ns), 30u);
-            if (i == j) {
-                acc = dh_port_smlal(acc, c, DH_ONE30);
-            } else {
-                /* s [k]x: (i,j) = (1,0) +kz, (0,1) -kz, (0,2) +ky, (2,0) -ky, (2,1) +kx, (1,2) -kx */
-                unsigned m = 3u - i - j;
-                int positive = (i == j + 1u) || (i == 0u && j == 2u);
-                int64_t t = dh_port_smull(s, U[m]) + dh_rshr64(dh_port_smull(s, E[m]), 16u);
-                acc += positive ? t : -t;
-            }
-            F->r[j][i] = dh_fin30(acc, &ovf);
-        }
-        F->p[j] = 0;
-    }
-    (void)ovf;                           /* cannot saturate: |entries| <= 1 + 1 LSB */
+    if (!dh_axis_build(F, kx, ky, kz, deg)) return DH_ERR_ZERO_AXIS;
     /* Rounding the nine entries leaves |R^T R - I| at a few LSB; one Newton
      * step brings it to the rounding level so that T * T^-1 stays within a
      * few LSB of I. Cannot fail here: entries are within 1 + 2 LSB and the
@@ -302,21 +340,6 @@ static inline uint32_t dh_hi_chk(int64_t acc)
  * saturates correctly. No input guard is needed.
  */
 
-/* Row i of A * B by the exact path (any inputs, saturating). */
-static DH_NOINLINE void dh_mul_row_exact(dh_frame_q *t, const dh_frame_q *A, const dh_frame_q *B, unsigned i,
-                             uint32_t *ovf)
-{
-    int32_t a[4], b[4];
-    unsigned j;
-    a[0] = A->r[0][i]; a[1] = A->r[1][i]; a[2] = A->r[2][i]; a[3] = A->p[i];
-    for (j = 0; j < 3u; j++) {
-        b[0] = B->r[j][0]; b[1] = B->r[j][1]; b[2] = B->r[j][2];
-        t->r[j][i] = dh_dot_exact(a, b, 3u, 0, 0, 30u, ovf);
-    }
-    b[0] = B->p[0]; b[1] = B->p[1]; b[2] = B->p[2]; b[3] = DH_ONE30;
-    t->p[i] = dh_dot_exact(a, b, 4u, 0, 0, 30u, ovf);
-}
-
 /* one fast-path output: row i of A times 3 contiguous values of B */
 #define DH_DOT3(dst, i, bcol) do { \
         int64_t acc_ = dh_port_smlal(DH_HALF30, A->r[0][i], (bcol)[0]); \
@@ -337,91 +360,149 @@ static DH_NOINLINE void dh_mul_row_exact(dh_frame_q *t, const dh_frame_q *A, con
 
 /* output row i (rotation row i and p_i) by the fast path */
 #define DH_MUL_ROW(i) do { \
-        DH_DOT3(t.r[0][i], i, B->r[0]); \
-        DH_DOT3(t.r[1][i], i, B->r[1]); \
-        DH_DOT3(t.r[2][i], i, B->r[2]); \
+        DH_DOT3(tp->r[0][i], i, B->r[0]); \
+        DH_DOT3(tp->r[1][i], i, B->r[1]); \
+        DH_DOT3(tp->r[2][i], i, B->r[2]); \
         { \
             int64_t acc_ = DH_HALF_PLUS_P(A->p[i]); \
             acc_ = dh_port_smlal(acc_, A->r[0][i], B->p[0]); \
             acc_ = dh_port_smlal(acc_, A->r[1][i], B->p[1]); \
             acc_ = dh_port_smlal(acc_, A->r[2][i], B->p[2]); \
-            t.p[i] = dh_lo30(acc_); \
+            tp->p[i] = dh_lo30(acc_); \
             chk |= dh_hi_chk(acc_); \
         } \
     } while (0)
 
-/* Computed into a local, so out may alias A and/or B. */
-dh_status dh_frame_mul_q(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B)
+/* fast path of A * B into *tp (a local of the caller, never A or B);
+ * returns the deferred check word */
+static DH_NOINLINE uint32_t dh_mul_fast(dh_frame_q *tp, const dh_frame_q *A, const dh_frame_q *B)
 {
-    dh_frame_q t;
-    uint32_t ovf = 0u, chk = 0u;
-    unsigned i;
-    DH_ASSERT(out != NULL && A != NULL && B != NULL);
+    uint32_t chk = 0u;
     /* rows unrolled by hand: with a loop, compilers hoist the 12 values of
      * B out of it and spill them to the stack, which costs more than
      * loading them where needed */
     DH_MUL_ROW(0);
     DH_MUL_ROW(1);
     DH_MUL_ROW(2);
-    if (chk >> 30) {
-        for (i = 0; i < 3u; i++) dh_mul_row_exact(&t, A, B, i, &ovf);
+    return chk;
+}
+
+/* exact path of A * B into t (only after the fast path's test failed) */
+static DH_NOINLINE uint32_t dh_mul_exact(dh_frame_q *t, const dh_frame_q *A, const dh_frame_q *B)
+{
+    int32_t a[4], b[4];
+    uint32_t ovf = 0u;
+    unsigned i, j;
+    for (i = 0; i < 3u; i++) {
+        a[0] = A->r[0][i]; a[1] = A->r[1][i]; a[2] = A->r[2][i]; a[3] = A->p[i];
+        for (j = 0; j < 4u; j++) {
+            const int32_t *bc = (j < 3u) ? B->r[j] : B->p;
+            b[0] = bc[0]; b[1] = bc[1]; b[2] = bc[2]; b[3] = DH_ONE30;
+            /* rotation entries: 3 terms; position: 4 (the p_i 2^30 term) */
+            if (j < 3u) t->r[j][i] = dh_dot_exact(a, b, 3u, 0, 0, 30u, &ovf);
+            else t->p[i] = dh_dot_exact(a, b, 4u, 0, 0, 30u, &ovf);
+        }
     }
+    return ovf;
+}
+
+/* Computed into a local, so out may alias A and/or B. The two paths are
+ * separate functions so the stack depth is the larger of the two, not
+ * their sum. */
+dh_status dh_frame_mul_q(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B)
+{
+    dh_frame_q t;
+    uint32_t ovf = 0u;
+    DH_ASSERT(out != NULL && A != NULL && B != NULL);
+    if (dh_mul_fast(&t, A, B) >> 30) ovf = dh_mul_exact(&t, A, B);
     *out = t;
     return ovf ? DH_ERR_OVERFLOW : DH_OK;
 }
 
-dh_status dh_frame_inv_q(dh_frame_q *out, const dh_frame_q *F)
+/* p' = -R^T p by the fast path; returns the deferred check word.
+ * Row i of R^T is column i of R. acc = 2^29 - sum mod 2^64 (nothing is
+ * negated, so INT32_MIN entries are fine); the bound above is symmetric. */
+static DH_NOINLINE uint32_t dh_inv_p_fast(const dh_frame_q *F, int32_t *p)
 {
-    dh_frame_q t;
-    uint32_t ovf = 0u, chk = 0u;
-    unsigned i, j;
-    DH_ASSERT(out != NULL && F != NULL);
-    for (i = 0; i < 3u; i++)
-        for (j = 0; j < 3u; j++) t.r[i][j] = F->r[j][i];
-    /* p' = -R^T p: row i of R^T is column i of R. acc = 2^29 - sum mod 2^64
-     * (nothing is negated, so INT32_MIN entries are fine); same deferred
-     * test as the products (the bound is symmetric). */
+    uint32_t chk = 0u;
+    unsigned i;
     for (i = 0; i < 3u; i++) {
         int64_t s = dh_port_smull(F->r[i][0], F->p[0]);
         int64_t acc;
         s = dh_port_smlal(s, F->r[i][1], F->p[1]);
         s = dh_port_smlal(s, F->r[i][2], F->p[2]);
         acc = (int64_t)((uint64_t)DH_HALF30 - (uint64_t)s);
-        t.p[i] = dh_lo30(acc);
+        p[i] = dh_lo30(acc);
         chk |= dh_hi_chk(acc);
     }
-    if (chk >> 30) {
-        for (i = 0; i < 3u; i++)
-            t.p[i] = dh_dot_exact(F->r[i], F->p, 3u, 1, 0, 30u, &ovf);
+    return chk;
+}
+
+static DH_NOINLINE uint32_t dh_inv_p_exact(const dh_frame_q *F, int32_t *p)
+{
+    uint32_t ovf = 0u;
+    unsigned i;
+    for (i = 0; i < 3u; i++) p[i] = dh_dot_exact(F->r[i], F->p, 3u, 1, 0, 30u, &ovf);
+    return ovf;
+}
+
+dh_status dh_frame_inv_q(dh_frame_q *out, const dh_frame_q *F)
+{
+    int32_t p[3];
+    uint32_t ovf = 0u;
+    unsigned i, j;
+    DH_ASSERT(out != NULL && F != NULL);
+    if (dh_inv_p_fast(F, p) >> 30) ovf = dh_inv_p_exact(F, p);
+    /* transpose in place (also correct when out == F), then the position */
+    for (i = 0; i < 3u; i++) {
+        out->r[i][i] = F->r[i][i];
+        for (j = i + 1u; j < 3u; j++) {
+            int32_t x = F->r[i][j], y = F->r[j][i];
+            out->r[i][j] = y;
+            out->r[j][i] = x;
+        }
+        out->p[i] = p[i];
     }
-    *out = t;
     return ovf ? DH_ERR_OVERFLOW : DH_OK;
 }
 
-/* v = R u (+ p when with_p): shared by the point and direction transforms. */
-static dh_status dh_frame_apply(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_q *v, int32_t with_p)
+/* o = R u (+ p masked by with_p) by the fast path; returns the check word */
+static DH_NOINLINE uint32_t dh_apply_fast(const dh_frame_q *F, const int32_t *in, int32_t with_p, int32_t *o)
 {
-    const int32_t u0 = u->x, u1 = u->y, u2 = u->z;
-    int32_t o[3];
-    uint32_t ovf = 0u, chk = 0u;
+    uint32_t chk = 0u;
     unsigned i;
-    DH_ASSERT(F != NULL && u != NULL && v != NULL);
     for (i = 0; i < 3u; i++) {
-        int64_t acc = dh_port_smlal(DH_HALF30, F->p[i] & with_p, DH_ONE30);
-        acc = dh_port_smlal(acc, F->r[0][i], u0);
-        acc = dh_port_smlal(acc, F->r[1][i], u1);
-        acc = dh_port_smlal(acc, F->r[2][i], u2);
+        int64_t acc = DH_HALF_PLUS_P(F->p[i] & with_p);
+        acc = dh_port_smlal(acc, F->r[0][i], in[0]);
+        acc = dh_port_smlal(acc, F->r[1][i], in[1]);
+        acc = dh_port_smlal(acc, F->r[2][i], in[2]);
         o[i] = dh_lo30(acc);
         chk |= dh_hi_chk(acc);
     }
-    if (chk >> 30) {
-        for (i = 0; i < 3u; i++) {
-            int32_t a[4], b[4];
-            a[0] = F->r[0][i]; a[1] = F->r[1][i]; a[2] = F->r[2][i]; a[3] = F->p[i] & with_p;
-            b[0] = u0; b[1] = u1; b[2] = u2; b[3] = DH_ONE30;
-            o[i] = dh_dot_exact(a, b, 4u, 0, 0, 30u, &ovf);
-        }
+    return chk;
+}
+
+static DH_NOINLINE uint32_t dh_apply_exact(const dh_frame_q *F, const int32_t *in, int32_t with_p, int32_t *o)
+{
+    uint32_t ovf = 0u;
+    unsigned i;
+    for (i = 0; i < 3u; i++) {
+        int32_t a[4], b[4];
+        a[0] = F->r[0][i]; a[1] = F->r[1][i]; a[2] = F->r[2][i]; a[3] = F->p[i] & with_p;
+        b[0] = in[0]; b[1] = in[1]; b[2] = in[2]; b[3] = DH_ONE30;
+        o[i] = dh_dot_exact(a, b, 4u, 0, 0, 30u, &ovf);
     }
+    return ovf;
+}
+
+/* v = R u (+ p when with_p == -1): shared by the point and direction transforms. */
+static dh_status dh_frame_apply(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_q *v, int32_t with_p)
+{
+    int32_t in[3], o[3];
+    uint32_t ovf = 0u;
+    DH_ASSERT(F != NULL && u != NULL && v != NULL);
+    in[0] = u->x; in[1] = u->y; in[2] = u->z;
+    if (dh_apply_fast(F, in, with_p, o) >> 30) ovf = dh_apply_exact(F, in, with_p, o);
     v->x = o[0]; v->y = o[1]; v->z = o[2];
     return ovf ? DH_ERR_OVERFLOW : DH_OK;
 }
@@ -454,10 +535,19 @@ int32_t dh_frame_ortho_error_q(const dh_frame_q *F)
     return worst > (uint32_t)INT32_MAX ? INT32_MAX : (int32_t)worst;
 }
 
+/* acc + sum_k a[k sa] b[k sb], k = 0..2, modulo 2^64 (out of line: inlined,
+ * the 16-bit kernel of ARMv6-M makes the caller's frame grow past 256 bytes) */
+static DH_NOINLINE int64_t dh_dot3s(int64_t acc, const int32_t *a, unsigned sa, const int32_t *b, unsigned sb)
+{
+    acc = dh_port_smlal(acc, a[0], b[0]);
+    acc = dh_port_smlal(acc, a[sa], b[sb]);
+    return dh_port_smlal(acc, a[2u * sa], b[2u * sb]);
+}
+
 dh_status dh_frame_orthonormalize_chk_q(dh_frame_q *F)
 {
-    int32_t M[3][3], nr[3][3];
-    uint32_t ovf = 0u, bad = 0u;
+    int32_t M[3][3], row[3];
+    uint32_t ovf = 0u;
     unsigned i, j;
     DH_ASSERT(F != NULL);
     /* |entries| <= 1.25 keeps every sum below far from 2^63 and lets the
@@ -465,30 +555,22 @@ dh_status dh_frame_orthonormalize_chk_q(dh_frame_q *F)
     for (i = 0; i < 3u; i++)
         for (j = 0; j < 3u; j++)
             if (((uint32_t)F->r[i][j] + 0x50000000u) > 0xA0000000u) return DH_ERR_NOT_RIGID;
-    /* M = (3 I - R^T R) / 2, symmetric; one rounding per entry */
+    /* M = (3 I - R^T R) / 2, symmetric; one rounding per entry.
+     * (R^T R)_ij = column i . column j. */
     for (i = 0; i < 3u; i++)
         for (j = i; j < 3u; j++) {
-            int64_t acc = ((i == j) ? ((int64_t)3 << 60) : 0) + ((int64_t)1 << 30), e;
-            acc = dh_port_smlal(acc, -F->r[i][0], F->r[j][0]);
-            acc = dh_port_smlal(acc, -F->r[i][1], F->r[j][1]);
-            acc = dh_port_smlal(acc, -F->r[i][2], F->r[j][2]);
-            /* acc = 3 d 2^60 - E 2^60 + 2^30; M = acc / 2^31, error = 2 M - 2 d */
+            int64_t e = dh_dot3s(0, F->r[i], 1u, F->r[j], 1u);       /* E 2^60, |E| < 4.7 */
+            int64_t acc = ((i == j) ? ((int64_t)3 << 60) : 0) + ((int64_t)1 << 30) - e;
             M[i][j] = (int32_t)(acc >> 31);
             M[j][i] = M[i][j];
-            e = ((acc - ((int64_t)1 << 30)) >> 30) - ((i == j) ? 2 * (int64_t)DH_ONE30 : 0);
-            if (e > ((int64_t)1 << 27) || e < -((int64_t)1 << 27)) bad = 1u;
+            e -= (i == j) ? ((int64_t)1 << 60) : 0;                   /* (E - I) 2^60 */
+            if (e > ((int64_t)1 << 57) || e < -((int64_t)1 << 57)) return DH_ERR_NOT_RIGID; /* > 1/8 */
         }
-    if (bad) return DH_ERR_NOT_RIGID;   /* |R^T R - I| > 1/8 */
-    /* R <- R M: column j of the result is R * (column j of M) */
-    for (j = 0; j < 3u; j++)
-        for (i = 0; i < 3u; i++) {
-            int64_t acc = dh_port_smlal(DH_HALF30, F->r[0][i], M[j][0]);
-            acc = dh_port_smlal(acc, F->r[1][i], M[j][1]);
-            acc = dh_port_smlal(acc, F->r[2][i], M[j][2]);
-            nr[j][i] = dh_fin30(acc, &ovf);
-        }
-    for (j = 0; j < 3u; j++)
-        for (i = 0; i < 3u; i++) F->r[j][i] = nr[j][i];
+    /* R <- R M, row by row in place: row i of the result is row i of R times M */
+    for (i = 0; i < 3u; i++) {
+        row[0] = F->r[0][i]; row[1] = F->r[1][i]; row[2] = F->r[2][i];
+        for (j = 0; j < 3u; j++) F->r[j][i] = dh_fin30(dh_dot3s(DH_HALF30, row, 1u, M[j], 1u), &ovf);
+    }
     return ovf ? DH_ERR_OVERFLOW : DH_OK;
 }
 
