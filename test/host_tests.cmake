@@ -1,8 +1,9 @@
 # Host-only tests of the dhmath command-line tool (tools/). Included by
 # test/CMakeLists.txt when not cross-compiling. Each group of
-# test/cli/run_cli_tests.py is one ctest test; the script needs only the
-# Python standard library.
-if(TARGET dhmath_cli OR DH_BUILD_TOOLS)
+# test/cli/run_cli_tests.py is one ctest test (the script needs only the
+# Python standard library); cli_fuzz_parsers runs the parsers on mutated
+# and random buffers (run it under DH_SANITIZE=ON for ASan/UBSan checks).
+if(DH_BUILD_TOOLS)
   find_program(DHMATH_CLI_PYTHON3 NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
   if(NOT DHMATH_CLI_PYTHON3)
     find_program(DHMATH_CLI_PYTHON3 NAMES python3 REQUIRED)
@@ -16,4 +17,13 @@ if(TARGET dhmath_cli OR DH_BUILD_TOOLS)
   add_test(NAME cli_demo
     COMMAND sh ${PROJECT_SOURCE_DIR}/tools/demo.sh $<TARGET_FILE_DIR:dhmath_cli>)
   set_tests_properties(cli_demo PROPERTIES TIMEOUT 600 LABELS cli)
+
+  add_executable(cli_fuzz_parsers ${CMAKE_CURRENT_SOURCE_DIR}/cli/fuzz_parsers.c
+    ${PROJECT_SOURCE_DIR}/tools/dh_expr.c ${PROJECT_SOURCE_DIR}/tools/dh_robotfile.c)
+  target_include_directories(cli_fuzz_parsers PRIVATE ${PROJECT_SOURCE_DIR}/tools)
+  target_link_libraries(cli_fuzz_parsers PRIVATE dhmath)
+  set_target_properties(cli_fuzz_parsers PROPERTIES C_STANDARD 99 C_EXTENSIONS OFF)
+  target_compile_options(cli_fuzz_parsers PRIVATE -Wall -Wextra -Werror)
+  add_test(NAME cli_fuzz_parsers COMMAND cli_fuzz_parsers 200000)
+  set_tests_properties(cli_fuzz_parsers PROPERTIES TIMEOUT 600 LABELS cli)
 endif()
