@@ -8,19 +8,30 @@
  * products summed exactly in 64 bits and rounded once (half up), then
  * saturated.
  *
- * Overflow analysis. Rotation entries are kept symmetric, in
- * [-INT32_MAX, INT32_MAX] (saturation is symmetric and the setters raise
- * INT32_MIN), so every product x*y with x a rotation entry and |y| <= 2^31
- * is below 2^62 in magnitude and a sum or difference of two of them is below
- * 2^63: the two-term sums cannot wrap. Three-term sums (tool product) halve
- * each product first (error 2^-61 relative, far below one LSB). Rounding
- * adds 2^29 to a value below 2^63 - 2^32: no wrap either.
+ * Overflow analysis. Every product is x*y with |x| <= 2^31 and
+ * |y| <= 2^31 - 1: rotation entries (any int32) meet sines, cosines
+ * (|.| <= 2^30) or lengths, and lengths a, d are used with INT32_MIN raised
+ * to -INT32_MAX (one LSB, documented saturation). So each product is below
+ * 2^62 in magnitude and a sum or difference of two of them is below 2^63:
+ * the two-term sums cannot wrap. Three-term sums (tool product) halve each
+ * product first (error 2^-61 relative, far below one LSB). Rounding adds
+ * 2^29 to a value below 2^63 - 2^32: no wrap either. Negations go through
+ * neg() (INT32_MIN saturates).
  */
 #include "dhmath/dh_robot.h"
 #include "dhmath/dh_trig.h"
 #include "dh_port.h"
 
+/* The four step variants stay separate functions: inlined together into
+ * fk_q they would not share stack slots (over 1 KB on Cortex-M0 at -O2). */
+#if defined(__GNUC__) || defined(__clang__)
+#define FKQ_NOINLINE __attribute__((noinline))
+#else
+#define FKQ_NOINLINE
+#endif
+
 #define MUL(a, b) dh_port_smull((a), (b))
+#define MLA(acc, a, b) dh_port_smlal((acc), (a), (b))
 #define HALF29 ((int64_t)1 << 29)
 #define HALF28 ((int64_t)1 << 28)
 
@@ -28,23 +39,45 @@
  * below 2^32, used to bring q + offset back into the int32 range exactly. */
 #define TURNS_182 ((int64_t)4293918720)
 
-/* Round a Q60 sum to Q30, saturate symmetrically. */
-static int32_t rot(int64_t x, int *ovf)
+/*
+ * Round x / 2^30 to nearest (half up) into int32, saturating and setting
+ * *ovf. t >> 30 fits in int32 iff the high word of t lies in
+ * [-2^29, 2^29), which is one add and one unsigned compare on the high
+ * register; the result is then the low word shifted and or-ed (the uint32
+ * -> int32 conversion wraps, checked in dh_port.h).
+ */
+static inline int32_t rnd30(int64_t x, int *ovf)
 {
-    int64_t v = (x + HALF29) >> 30;
-    if (v > INT32_MAX) {
+    int64_t t = x + HALF29;
+    int32_t hi = (int32_t)(t >> 32);
+    if ((uint32_t)hi + 0x20000000u >= 0x40000000u) {
         *ovf = 1;
-        return INT32_MAX;
+        return (hi < 0) ? INT32_MIN : INT32_MAX;
     }
-    if (v < -(int64_t)INT32_MAX) {
-        *ovf = 1;
-        return -INT32_MAX;
-    }
-    return (int32_t)v;
+    /* bits 30..61 of t, composed from the two words (the uint32 -> int32
+     * conversion wraps, checked in dh_port.h); written this way the
+     * compiler keeps a 32-bit value and the next product stays one SMULL */
+    return (int32_t)(((uint32_t)t >> 30) | ((uint32_t)hi << 2));
+}
+
+/*
+ * Same rounding without the range check, for robots whose base rotation
+ * rows have norm <= 1.5 (DH_ROBOT_BASE_SMALL_Q). Each joint multiplies the
+ * rows of the rotation by Rz(theta) Rx(alpha) built from sines and cosines
+ * with |s|, |c| <= 2^30 and s^2 + c^2 <= 1 + 2^-28 (dh_trig.h: error
+ * <= 1.05 LSB), so a row norm grows at most by (1 + 2^-27) plus 1 LSB per
+ * joint: after DH_MAX_JOINTS <= 32 joints every entry and every two-term
+ * combination of a row is below 1.5001 < 2 and cannot leave Q2.30.
+ */
+static inline int32_t rnd30_nc(int64_t x, int *ovf)
+{
+    int64_t t = x + HALF29;
+    (void)ovf;
+    return (int32_t)(((uint32_t)t >> 30) | ((uint32_t)(int32_t)(t >> 32) << 2));
 }
 
 /* p + round(x / 2^30), saturated to int32 (x: lengths times Q2.30). */
-static int32_t pos(int32_t p, int64_t x, int *ovf)
+static inline int32_t pos(int32_t p, int64_t x, int *ovf)
 {
     int64_t v = (int64_t)p + ((x + HALF29) >> 30);
     if (v > INT32_MAX) {
@@ -58,7 +91,23 @@ static int32_t pos(int32_t p, int64_t x, int *ovf)
     return (int32_t)v;
 }
 
-/* Same for a sum of halved products (round at bit 29). */
+/* -x, saturating INT32_MIN to INT32_MAX. */
+static inline int32_t neg(int32_t x, int *ovf)
+{
+    if (x == INT32_MIN) {
+        *ovf = 1;
+        return INT32_MAX;
+    }
+    return -x;
+}
+
+/* Length operand: INT32_MIN raised to -INT32_MAX (see the overflow note). */
+static inline int32_t len(int32_t x)
+{
+    return (x == INT32_MIN) ? -INT32_MAX : x;
+}
+
+/* Sum of halved products rounded at bit 29 (three-term sums). */
 static int32_t rot_h(int64_t x, int *ovf)
 {
     int64_t v = (x + HALF28) >> 29;
@@ -66,9 +115,9 @@ static int32_t rot_h(int64_t x, int *ovf)
         *ovf = 1;
         return INT32_MAX;
     }
-    if (v < -(int64_t)INT32_MAX) {
+    if (v < INT32_MIN) {
         *ovf = 1;
-        return -INT32_MAX;
+        return INT32_MIN;
     }
     return (int32_t)v;
 }
@@ -89,7 +138,7 @@ static int32_t pos_h(int32_t p, int64_t x, int *ovf)
 
 /* theta = q + offset in Q16.16 degrees, reduced by whole turns into int32
  * when the sum leaves it (exact: the sine and cosine do not change). */
-static dh_q16 add_angle(int32_t q, dh_q16 off)
+static inline dh_q16 add_angle(int32_t q, dh_q16 off)
 {
     int64_t t = (int64_t)q + (int64_t)off;
     if (t > INT32_MAX) t -= TURNS_182;
@@ -97,31 +146,32 @@ static dh_q16 add_angle(int32_t q, dh_q16 off)
     return (dh_q16)t;
 }
 
-/* Joint values: sin/cos(theta) and d; sets *ovf when d + q saturates. */
+/* Joint values: sin/cos(theta) and d (never INT32_MIN); sets *ovf when
+ * d + q saturates. */
 static void joint_values(const dh_joint *j, int32_t q, dh_q30 *st, dh_q30 *ct, dh_qpos *d, int *ovf)
 {
     if (j->type == DH_JOINT_REVOLUTE) {
         dh_sincos_q(add_angle(q, j->theta_q), st, ct);
-        *d = j->d_q;
+        *d = len(j->d_q);
     } else {
         int64_t v = (int64_t)q + (int64_t)j->d_q;
         dh_sincos_q(j->theta_q, st, ct);
         if (v > INT32_MAX) {
             *ovf = 1;
             v = INT32_MAX;
-        } else if (v < INT32_MIN) {
-            *ovf = 1;
-            v = INT32_MIN;
+        } else if (v < -(int64_t)INT32_MAX) {
+            *ovf = (v < INT32_MIN) ? 1 : *ovf;
+            v = -(int64_t)INT32_MAX;
         }
         *d = (dh_qpos)v;
     }
 }
 
 /*
- * The x-twist applied to a pair of columns (y, z) of a frame, per row:
+ * The x-twist by alpha applied to a pair (y, z) of one row:
  * y' = ca y + sa z, z' = ca z - sa y. alpha of 0, +-90 and 180 degrees
  * (exact 0 / +-1 from the table) take the multiplication-free branch,
- * which gives bit-identical results to the general one.
+ * which gives the same values as the general one.
  */
 #define TWIST_ONE 0
 #define TWIST_P90 1
@@ -129,7 +179,7 @@ static void joint_values(const dh_joint *j, int32_t q, dh_q30 *st, dh_q30 *ct, d
 #define TWIST_180 3
 #define TWIST_GEN 4
 
-static int twist_kind(dh_q30 sa, dh_q30 ca)
+static inline int twist_kind(dh_q30 sa, dh_q30 ca)
 {
     if (sa == 0 && ca == DH_Q30_ONE) return TWIST_ONE;
     if (sa == DH_Q30_ONE && ca == 0) return TWIST_P90;
@@ -138,51 +188,72 @@ static int twist_kind(dh_q30 sa, dh_q30 ca)
     return TWIST_GEN;
 }
 
-static void twist(int kind, dh_q30 sa, dh_q30 ca, int32_t y, int32_t z, int32_t *y2, int32_t *z2,
-                  int *ovf)
-{
-    switch (kind) {
-    case TWIST_ONE: *y2 = y; *z2 = z; break;
-    case TWIST_P90: *y2 = z; *z2 = -y; break;
-    case TWIST_M90: *y2 = -z; *z2 = y; break;
-    case TWIST_180: *y2 = -y; *z2 = -z; break;
-    default:
-        *y2 = rot(MUL(ca, y) + MUL(sa, z), ovf);
-        *z2 = rot(MUL(ca, z) - MUL(sa, y), ovf);
-        break;
-    }
-}
+#define TWIST(kind, sa, ca, y, z, y2, z2, ovf, RND) do { \
+    switch (kind) { \
+    case TWIST_ONE: (y2) = (y); (z2) = (z); break; \
+    case TWIST_P90: (y2) = (z); (z2) = neg((y), (ovf)); break; \
+    case TWIST_M90: (y2) = neg((z), (ovf)); (z2) = (y); break; \
+    case TWIST_180: (y2) = neg((y), (ovf)); (z2) = neg((z), (ovf)); break; \
+    default: \
+        (y2) = RND(MLA(MUL((ca), (y)), (sa), (z)), (ovf)); \
+        (z2) = RND(MUL((ca), (z)) - MUL((sa), (y)), (ovf)); \
+        break; \
+    } } while (0)
 
-/* Standard DH joint applied in place: T <- T * Rz(theta) Tz(d) Tx(a) Rx(alpha). */
-static void step_std(dh_frame_q *T, dh_q30 st, dh_q30 ct, const dh_joint *j, dh_qpos d, int *ovf)
-{
-    int k, kind = twist_kind(j->sa_q, j->ca_q);
-    for (k = 0; k < 3; k++) {
-        int32_t nx = T->r[0][k], ox = T->r[1][k], ax = T->r[2][k];
-        int32_t n1 = rot(MUL(ct, nx) + MUL(st, ox), ovf);
-        int32_t u = rot(MUL(ct, ox) - MUL(st, nx), ovf);
-        T->p[k] = pos(T->p[k], MUL(d, ax) + MUL(j->a_q, n1), ovf);
-        T->r[0][k] = n1;
-        twist(kind, j->sa_q, j->ca_q, u, ax, &T->r[1][k], &T->r[2][k], ovf);
-    }
+/* Standard DH joint applied in place: T <- T * Rz(theta) Tz(d) Tx(a) Rx(alpha).
+ * Generated twice: with range-checked rotation rounding and without it
+ * (see rnd30_nc for when that is safe). */
+#define DEF_STEP_STD(name, RND) \
+static FKQ_NOINLINE void name(dh_frame_q *T, dh_q30 st, dh_q30 ct, const dh_joint *j, dh_qpos d, int *ovf) \
+{ \
+    const dh_q30 sa = j->sa_q, ca = j->ca_q; \
+    const dh_qpos a = len(j->a_q); \
+    const int kind = twist_kind(sa, ca); \
+    int k; \
+    for (k = 0; k < 3; k++) { \
+        int32_t nx = T->r[0][k], ox = T->r[1][k], ax = T->r[2][k]; \
+        int32_t n1 = RND(MLA(MUL(ct, nx), st, ox), ovf); \
+        int32_t u = RND(MUL(ct, ox) - MUL(st, nx), ovf); \
+        int32_t o2, a2; \
+        int64_t dp = 0; \
+        if (d != 0) dp = MUL(d, ax); \
+        if (a != 0) dp += MUL(a, n1); \
+        T->p[k] = pos(T->p[k], dp, ovf); \
+        TWIST(kind, sa, ca, u, ax, o2, a2, ovf, RND); \
+        T->r[0][k] = n1; \
+        T->r[1][k] = o2; \
+        T->r[2][k] = a2; \
+    } \
 }
 
 /* Modified DH joint in place: T <- T * Rx(alpha) Tx(a) Rz(theta) Tz(d). */
-static void step_mod(dh_frame_q *T, dh_q30 st, dh_q30 ct, const dh_joint *j, dh_qpos d, int *ovf)
-{
-    int k, kind = twist_kind(j->sa_q, j->ca_q);
-    for (k = 0; k < 3; k++) {
-        int32_t nx = T->r[0][k], o1, a1;
-        twist(kind, j->sa_q, j->ca_q, T->r[1][k], T->r[2][k], &o1, &a1, ovf);
-        T->p[k] = pos(T->p[k], MUL(j->a_q, nx) + MUL(d, a1), ovf);
-        T->r[0][k] = rot(MUL(ct, nx) + MUL(st, o1), ovf);
-        T->r[1][k] = rot(MUL(ct, o1) - MUL(st, nx), ovf);
-        T->r[2][k] = a1;
-    }
+#define DEF_STEP_MOD(name, RND) \
+static FKQ_NOINLINE void name(dh_frame_q *T, dh_q30 st, dh_q30 ct, const dh_joint *j, dh_qpos d, int *ovf) \
+{ \
+    const dh_q30 sa = j->sa_q, ca = j->ca_q; \
+    const dh_qpos a = len(j->a_q); \
+    const int kind = twist_kind(sa, ca); \
+    int k; \
+    for (k = 0; k < 3; k++) { \
+        int32_t nx = T->r[0][k], ox = T->r[1][k], ax = T->r[2][k], o1, a1; \
+        int64_t dp = 0; \
+        TWIST(kind, sa, ca, ox, ax, o1, a1, ovf, RND); \
+        if (a != 0) dp = MUL(a, nx); \
+        if (d != 0) dp += MUL(d, a1); \
+        T->p[k] = pos(T->p[k], dp, ovf); \
+        T->r[0][k] = RND(MLA(MUL(ct, nx), st, o1), ovf); \
+        T->r[1][k] = RND(MUL(ct, o1) - MUL(st, nx), ovf); \
+        T->r[2][k] = a1; \
+    } \
 }
 
+DEF_STEP_STD(step_std, rnd30)
+DEF_STEP_STD(step_std_nc, rnd30_nc)
+DEF_STEP_MOD(step_mod, rnd30)
+DEF_STEP_MOD(step_mod_nc, rnd30_nc)
+
 /* The link matrix of joint j (a step applied to the identity, written out). */
-static void link_direct(dh_frame_q *A, dh_convention conv, dh_q30 st, dh_q30 ct, const dh_joint *j,
+static FKQ_NOINLINE void link_direct(dh_frame_q *A, dh_convention conv, dh_q30 st, dh_q30 ct, const dh_joint *j,
                         dh_qpos d, int *ovf)
 {
     dh_q30 sa = j->sa_q, ca = j->ca_q;
@@ -191,11 +262,11 @@ static void link_direct(dh_frame_q *A, dh_convention conv, dh_q30 st, dh_q30 ct,
         A->r[0][0] = ct;
         A->r[0][1] = st;
         A->r[0][2] = 0;
-        A->r[1][0] = rot(-MUL(ca, st), ovf);
-        A->r[1][1] = rot(MUL(ca, ct), ovf);
+        A->r[1][0] = rnd30(-MUL(ca, st), ovf);
+        A->r[1][1] = rnd30(MUL(ca, ct), ovf);
         A->r[1][2] = sa;
-        A->r[2][0] = rot(MUL(sa, st), ovf);
-        A->r[2][1] = rot(-MUL(sa, ct), ovf);
+        A->r[2][0] = rnd30(MUL(sa, st), ovf);
+        A->r[2][1] = rnd30(-MUL(sa, ct), ovf);
         A->r[2][2] = ca;
         A->p[0] = pos(0, MUL(j->a_q, ct), ovf);
         A->p[1] = pos(0, MUL(j->a_q, st), ovf);
@@ -204,11 +275,11 @@ static void link_direct(dh_frame_q *A, dh_convention conv, dh_q30 st, dh_q30 ct,
         /* n = (ct, st ca, st sa), o = (-st, ct ca, ct sa), a = (0, -sa, ca),
          * p = (a, -sa d, ca d) */
         A->r[0][0] = ct;
-        A->r[0][1] = rot(MUL(st, ca), ovf);
-        A->r[0][2] = rot(MUL(st, sa), ovf);
+        A->r[0][1] = rnd30(MUL(st, ca), ovf);
+        A->r[0][2] = rnd30(MUL(st, sa), ovf);
         A->r[1][0] = -st;
-        A->r[1][1] = rot(MUL(ct, ca), ovf);
-        A->r[1][2] = rot(MUL(ct, sa), ovf);
+        A->r[1][1] = rnd30(MUL(ct, ca), ovf);
+        A->r[1][2] = rnd30(MUL(ct, sa), ovf);
         A->r[2][0] = 0;
         A->r[2][1] = -sa;
         A->r[2][2] = ca;
@@ -219,7 +290,7 @@ static void link_direct(dh_frame_q *A, dh_convention conv, dh_q30 st, dh_q30 ct,
 }
 
 /* out = A * B (out must not alias A or B); three-term sums with halved products. */
-static void mul_frame(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B, int *ovf)
+static FKQ_NOINLINE void mul_frame(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B, int *ovf)
 {
     int c, k;
     for (k = 0; k < 3; k++) {
@@ -252,9 +323,10 @@ static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, d
 {
     dh_frame_q acc;
     uint32_t i = 0u;
-    int ovf = 0;
+    int ovf = 0, small;
     DH_ASSERT(r != NULL);
     DH_ASSERT(q != NULL);
+    small = (r->flags & DH_ROBOT_BASE_SMALL_Q) != 0u;
     if (r->n == 0u) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_OVERFLOW;
 
@@ -273,8 +345,13 @@ static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, d
         dh_qpos d;
         const dh_joint *j = &r->joint[i];
         joint_values(j, q[i], &st, &ct, &d, &ovf);
-        if (r->conv == DH_CONV_STANDARD) step_std(&acc, st, ct, j, d, &ovf);
-        else step_mod(&acc, st, ct, j, d, &ovf);
+        if (small) {
+            if (r->conv == DH_CONV_STANDARD) step_std_nc(&acc, st, ct, j, d, &ovf);
+            else step_mod_nc(&acc, st, ct, j, d, &ovf);
+        } else {
+            if (r->conv == DH_CONV_STANDARD) step_std(&acc, st, ct, j, d, &ovf);
+            else step_mod(&acc, st, ct, j, d, &ovf);
+        }
         if (frames) frames[i] = acc;
     }
     if (T_end) {

@@ -77,6 +77,26 @@ static int is_ident_q(const dh_frame_q *F)
     return 1;
 }
 
+
+/* 1 when every row of the rotation part has Euclidean norm <= 1.5
+ * (DH_ROBOT_BASE_SMALL_Q). Entries halved first: the sum of three squares
+ * stays below 3 * 2^60. */
+static int rows_small(const dh_frame_q *F)
+{
+    const int64_t lim = (int64_t)9 << 56; /* (1.5 * 2^29)^2 = 2.25 * 2^58 */
+    int k;
+    for (k = 0; k < 3; k++) {
+        int64_t s = 0;
+        int c;
+        for (c = 0; c < 3; c++) {
+            int32_t h = F->r[c][k] >> 1;
+            s += (int64_t)h * h;
+        }
+        if (s > lim) return 0;
+    }
+    return 1;
+}
+
 dh_status dh_robot_init(dh_robot *r, dh_convention conv)
 {
     uint32_t i;
@@ -122,7 +142,7 @@ dh_status dh_robot_init(dh_robot *r, dh_convention conv)
         }
     }
     r->flags = summary(DH_ROBOT_BASE_ID_F32 | DH_ROBOT_TOOL_ID_F32 | DH_ROBOT_BASE_ID_Q |
-                       DH_ROBOT_TOOL_ID_Q);
+                       DH_ROBOT_TOOL_ID_Q | DH_ROBOT_BASE_SMALL_Q);
     return DH_OK;
 }
 
@@ -216,8 +236,6 @@ static dh_status set_frame_f32(dh_robot *r, const dh_mat4_f32 *src, int which)
         fits &= to_fix(T.m[3][c], (unsigned)DH_QPOS_FRAC, &F.p[c]);
         for (k = 0; k < 3; k++) {
             fits &= to_fix(T.m[c][k], 30u, &F.r[c][k]);
-            /* the fixed path keeps rotation entries symmetric: no INT32_MIN */
-            if (fits && F.r[c][k] == INT32_MIN) fits = 0;
         }
     }
     f = r->flags;
@@ -227,8 +245,9 @@ static dh_status set_frame_f32(dh_robot *r, const dh_mat4_f32 *src, int which)
         if (is_ident_f32(&T)) f |= DH_ROBOT_BASE_ID_F32;
         if (fits) {
             r->base_q = F;
-            f &= ~DH_ROBOT_BASE_ID_Q;
+            f &= ~(DH_ROBOT_BASE_ID_Q | DH_ROBOT_BASE_SMALL_Q);
             if (is_ident_q(&F)) f |= DH_ROBOT_BASE_ID_Q;
+            if (rows_small(&F)) f |= DH_ROBOT_BASE_SMALL_Q;
         } else {
             f |= DH_ROBOT_Q_NO_BASE;
         }

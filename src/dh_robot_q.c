@@ -18,6 +18,26 @@ static uint32_t summary(uint32_t f)
     return f;
 }
 
+
+/* 1 when every row of the rotation part has Euclidean norm <= 1.5
+ * (DH_ROBOT_BASE_SMALL_Q). Entries halved first: the sum of three squares
+ * stays below 3 * 2^60. */
+static int rows_small(const dh_frame_q *F)
+{
+    const int64_t lim = (int64_t)9 << 56; /* (1.5 * 2^29)^2 = 2.25 * 2^58 */
+    int k;
+    for (k = 0; k < 3; k++) {
+        int64_t s = 0;
+        int c;
+        for (c = 0; c < 3; c++) {
+            int32_t h = F->r[c][k] >> 1;
+            s += (int64_t)h * h;
+        }
+        if (s > lim) return 0;
+    }
+    return 1;
+}
+
 dh_status dh_robot_add_joint_q(dh_robot *r, dh_joint_type type, dh_qpos a, dh_qpos d,
                                dh_q16 alpha_deg, dh_q16 theta_deg)
 {
@@ -62,21 +82,16 @@ dh_status dh_robot_check_limits_q(const dh_robot *r, const int32_t *q)
     return DH_OK;
 }
 
-/* Copy with rotation entries INT32_MIN raised to -INT32_MAX (the fixed FK
- * keeps rotation entries symmetric so that two-term products cannot
- * overflow 64 bits); returns 1 when the result is the identity. */
+/* Copy; returns 1 when the frame is the identity. */
 static int copy_frame(dh_frame_q *dst, const dh_frame_q *src)
 {
     int c, k, ident = 1;
-    dh_frame_q F = *src;
     for (c = 0; c < 3; c++) {
-        if (F.p[c] != 0) ident = 0;
-        for (k = 0; k < 3; k++) {
-            if (F.r[c][k] == INT32_MIN) F.r[c][k] = -INT32_MAX;
-            if (F.r[c][k] != ((c == k) ? DH_Q30_ONE : 0)) ident = 0;
-        }
+        if (src->p[c] != 0) ident = 0;
+        for (k = 0; k < 3; k++)
+            if (src->r[c][k] != ((c == k) ? DH_Q30_ONE : 0)) ident = 0;
     }
-    *dst = F;
+    if (dst != src) *dst = *src;
     return ident;
 }
 
@@ -85,7 +100,9 @@ dh_status dh_robot_set_base_q(dh_robot *r, const dh_frame_q *base)
     uint32_t f;
     DH_ASSERT(r != NULL);
     DH_ASSERT(base != NULL);
-    f = r->flags & ~(DH_ROBOT_Q_NO_BASE | DH_ROBOT_BASE_ID_Q | DH_ROBOT_F32_NO_BASE);
+    f = r->flags & ~(DH_ROBOT_Q_NO_BASE | DH_ROBOT_BASE_ID_Q | DH_ROBOT_F32_NO_BASE |
+                     DH_ROBOT_BASE_SMALL_Q);
+    if (rows_small(base)) f |= DH_ROBOT_BASE_SMALL_Q;
     if (copy_frame(&r->base_q, base)) {
         f |= DH_ROBOT_BASE_ID_Q;
         /* identity on both paths: the float base is still current */

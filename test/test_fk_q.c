@@ -297,6 +297,7 @@ static void random_robots(void)
             DHT_EQ_INT(dhs_build(&d, &r), DH_OK);
         }
         DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) != 0u);
+        DHT_TRUE((r.flags & DH_ROBOT_BASE_SMALL_Q) != 0u); /* rigid base: unchecked rotation path */
         dhs_random_q(&d, q);
         dhs_q_from_double(&r, q, qq);
         fk_q_ok(&r, qq, &T);
@@ -435,7 +436,7 @@ static void errors_and_saturation(void)
     q[1] = -1;
     DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_OVERFLOW);
 
-    /* rotation entries saturate symmetrically: a base with entries near 2 */
+    /* rotation entries saturate: a base with entries of -2 (INT32_MIN) */
     {
         dh_frame_q B;
         int c, k;
@@ -443,15 +444,23 @@ static void errors_and_saturation(void)
         DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, 0, 0), DH_OK);
         for (c = 0; c < 3; c++) {
             B.p[c] = 0;
-            for (k = 0; k < 3; k++) B.r[c][k] = INT32_MIN; /* raised to -INT32_MAX */
+            for (k = 0; k < 3; k++) B.r[c][k] = INT32_MIN;
         }
         DHT_EQ_INT(dh_robot_set_base_q(&r, &B), DH_OK);
-        DHT_EQ_INT(r.base_q.r[1][2], -INT32_MAX);
+        DHT_EQ_INT(r.base_q.r[1][2], INT32_MIN);
         DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) == 0u);
-        q[0] = 45 * 65536;      /* column sums of sqrt(2) * 2 > 2: saturate */
+        DHT_TRUE((r.flags & DH_ROBOT_BASE_SMALL_Q) == 0u); /* rows of norm 2 sqrt(3) */
+        q[0] = 45 * 65536;      /* n = -2 (cos 45 + sin 45) < -2: saturates */
         DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_OVERFLOW);
-        DHT_EQ_INT(T.r[0][0], -INT32_MAX);
-        /* tool with large entries: the three-term sums do not wrap */
+        DHT_EQ_INT(T.r[0][0], INT32_MIN);
+        /* twist by 90 degrees negates an INT32_MIN entry: saturates */
+        DHT_EQ_INT(dh_robot_init(&r, DH_CONV_MODIFIED), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, 90 * 65536, 0), DH_OK);
+        DHT_EQ_INT(dh_robot_set_base_q(&r, &B), DH_OK);
+        q[0] = 0;
+        DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_OVERFLOW);
+        DHT_EQ_INT(T.r[2][0], INT32_MAX);
+        /* tool with large entries and lengths: the three-term sums do not wrap */
         for (c = 0; c < 3; c++)
             for (k = 0; k < 3; k++) B.r[c][k] = INT32_MAX;
         B.p[0] = INT32_MAX;
@@ -459,7 +468,18 @@ static void errors_and_saturation(void)
         DHT_EQ_INT(dh_robot_set_tool_q(&r, &B), DH_OK);
         DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_OVERFLOW);
         for (c = 0; c < 3; c++)
-            for (k = 0; k < 3; k++) DHT_TRUE(T.r[c][k] == INT32_MAX || T.r[c][k] == -INT32_MAX);
+            for (k = 0; k < 3; k++) DHT_TRUE(T.r[c][k] == INT32_MAX || T.r[c][k] == INT32_MIN);
+        /* lengths of INT32_MIN with entries of -2: no 64-bit wrap */
+        DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, INT32_MIN, INT32_MIN, 0, 0), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, INT32_MIN, INT32_MIN, 0, 0), DH_OK);
+        for (c = 0; c < 3; c++)
+            for (k = 0; k < 3; k++) B.r[c][k] = INT32_MIN;
+        B.p[0] = B.p[1] = B.p[2] = 0;
+        DHT_EQ_INT(dh_robot_set_base_q(&r, &B), DH_OK);
+        q[0] = q[1] = 0;
+        DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_OVERFLOW);
+        for (k = 0; k < 3; k++) DHT_EQ_INT(T.p[k], INT32_MAX);
     }
 }
 

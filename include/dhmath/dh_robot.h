@@ -39,10 +39,9 @@
  *   half an LSB (2^-DH_QPOS_FRAC) per joint plus the rotation error times
  *   the reach.
  *
- * Overflow (fixed path): rotation entries are kept in
- * [-INT32_MAX, INT32_MAX] (INT32_MIN given to a setter is raised by one),
- * so no intermediate 64-bit sum can wrap; any saturated output entry makes
- * the function return DH_ERR_OVERFLOW.
+ * Overflow (fixed path): a length a or d (or d + q) equal to INT32_MIN is
+ * used as -INT32_MAX (one LSB), so no intermediate 64-bit sum can wrap;
+ * any saturated output entry makes the function return DH_ERR_OVERFLOW.
  *
  * Stack: every function here uses less than 256 bytes. No function keeps
  * state; a dh_robot may be shared read-only between threads.
@@ -84,6 +83,7 @@ typedef enum {
 #define DH_ROBOT_TOOL_ID_F32  0x2000u /**< float tool is exactly the identity (product skipped) */
 #define DH_ROBOT_BASE_ID_Q    0x4000u /**< fixed base is exactly the identity (product skipped) */
 #define DH_ROBOT_TOOL_ID_Q    0x8000u /**< fixed tool is exactly the identity (product skipped) */
+#define DH_ROBOT_BASE_SMALL_Q 0x10000u /**< every row of the fixed base rotation has norm <= 1.5: the chain's rotation entries cannot saturate, FK skips their range checks */
 /** @} */
 
 /** One joint: parameters as given plus constants precomputed once. */
@@ -190,7 +190,7 @@ dh_status dh_robot_set_limits_q(dh_robot *r, uint32_t i, int32_t qmin, int32_t q
  * The bottom row must be exactly 0 0 0 1; the 3x3 part is used as given
  * (rigid or not: the robot file format allows scale()). Also sets the
  * fixed-path base when it fits (rotation entries rounded to Q2.30 must lie
- * in (-2, 2), positions in the dh_qpos range); otherwise the fixed path is
+ * in [-2, 2), positions in the dh_qpos range); otherwise the fixed path is
  * marked unavailable (DH_ROBOT_Q_NO_BASE) until a base that fits is set.
  * An exact identity is recorded (DH_ROBOT_BASE_ID_*) so FK skips the
  * product. base may point to r->base.
@@ -201,9 +201,8 @@ dh_status dh_robot_set_base_f32(dh_robot *r, const dh_mat4_f32 *base);
 /** @brief Tool frame (post-multiplies the chain), float. Same contract as dh_robot_set_base_f32(). */
 dh_status dh_robot_set_tool_f32(dh_robot *r, const dh_mat4_f32 *tool);
 /**
- * @brief Base frame, fixed path only (integer only). Any values accepted;
- *        a rotation entry equal to INT32_MIN is stored as -INT32_MAX (see
- *        the overflow note above). Unless both the new fixed base and the
+ * @brief Base frame, fixed path only (integer only). Any values accepted
+ *        (the 3x3 part need not be a rotation). Unless both the new fixed base and the
  *        float base are the identity, the float base becomes stale: the
  *        float path is unavailable (DH_ROBOT_F32_NO_BASE) until
  *        dh_robot_set_base_f32() is called. Clears DH_ROBOT_Q_NO_BASE.
