@@ -478,11 +478,22 @@ static void ortho_error_measure(void)
     DHT_EQ_INT(dh_frame_rot_axis_q(&F, 3, -4, 12, 77 * 65536), DH_OK);
     F.r[0][0] += 10000; F.r[1][2] -= 8000; F.r[2][1] += 6000;
     DHT_TRUE(dh_frame_ortho_error_q(&F) > 10000);
-    DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_OK);
-    DHT_TRUE_MSG(dh_frame_ortho_error_q(&F) <= 4, "after one step %ld", (long)dh_frame_ortho_error_q(&F));
-    /* far from orthonormal: refused */
+    {   /* the void form does the same step */
+        dh_frame_q G = F;
+        dh_frame_orthonormalize_q(&G);
+        DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_OK);
+        DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
+    }
+    DHT_TRUE_MSG(dh_frame_ortho_error_q(&F) <= 2, "after one step %ld", (long)dh_frame_ortho_error_q(&F));
+    /* far from orthonormal: refused, F untouched (also by the void form) */
     F.r[0][0] = DH_Q30_ONE / 2;
-    DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_ERR_NOT_RIGID);
+    {
+        dh_frame_q G = F;
+        DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_ERR_NOT_RIGID);
+        DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
+        dh_frame_orthonormalize_q(&F);
+        DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
+    }
 }
 
 static void drift_bounded_with_orthonormalisation(void)

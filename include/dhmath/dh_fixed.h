@@ -20,12 +20,18 @@
  *   other outputs are still computed normally). There is no wraparound and
  *   no sentinel value.
  * - Any int32 value is accepted in every field of a dh_frame_q (rotation
- *   entries in [-2, 2)): when every rotation entry of the multiplying
- *   frame is in [-1, +1] a fast path (one SMULL/SMLAL per product) is used,
- *   otherwise an exact overflow-free path gives the same bits, slower.
+ *   entries in [-2, 2)). The fast path (one SMULL/SMLAL per product on
+ *   Cortex-M3/M4/M7, four 16-bit MULS on Cortex-M0) sums modulo 2^64 and
+ *   one deferred range test per call detects both saturation and 64-bit
+ *   wraparound; only then an exact overflow-free path recomputes the call
+ *   (same bits, saturating correctly).
  * - Outputs may alias inputs (results are computed into locals first).
  * - NULL pointers are programmer errors: DH_ASSERT.
- * - Stack: every function uses well under 256 bytes (a dh_frame_q is 48).
+ * - Stack (measured with -fcallgraph-info=su, arm-none-eabi-gcc 12, deepest
+ *   call chain, external dh_sincos_q not included): <= 236 bytes on
+ *   Cortex-M0+ and <= 188 on Cortex-M4 at -O2, -O3 and -Os.
+ * - Cost (QEMU, executed instructions, -O2): dh_frame_mul_q ~226 on
+ *   Cortex-M4, ~1360 on Cortex-M0 (-Os: ~222 / ~1240).
  *
  * Measured accuracy (test/test_frame_q.c, docs/accuracy_fixed.md) is
  * quoted per function in LSB: 1 LSB of a rotation entry is 2^-30, 1 LSB of
@@ -57,7 +63,8 @@ void dh_frame_trans_q(dh_frame_q *F, dh_qpos x, dh_qpos y, dh_qpos z);
  * @brief F = Rot(x, deg) (seed eq. 1.32), position 0.
  *
  * Entries are exactly the dh_sincos_q() values (c, s, and -s), so whole
- * degrees are correctly rounded and multiples of 90 degrees are exact.
+ * degrees are correctly rounded and multiples of 90 degrees are exact
+ * (measured: within 0.99 LSB of the double values over 20000 angles).
  * @param[out] F frame to write.
  * @param deg angle in degrees, Q16.16, any int32 (full range of dh_sincos_q).
  */
@@ -78,8 +85,9 @@ void dh_frame_rotz_q(dh_frame_q *F, dh_q16 deg);
  * 2^-44; only an INT32_MIN component costs the others their lowest bit).
  * The matrix is summed in 64 bits with one rounding per entry, then given
  * one Newton re-orthonormalisation step (dh_frame_orthonormalize_chk_q()).
- * Measured (test/test_frame_q.c): entries within 2.5 LSB of the double
- * formula with exact sin/cos, |R^T R - I| <= 2 LSB.
+ * Measured (test/test_frame_q.c, 30000 random axes and angles): entries
+ * within 1.93 LSB of the double formula with exact sin/cos (this includes
+ * dh_sincos_q's own error), |R^T R - I| <= 2 LSB.
  *
  * @param[out] F frame to write.
  * @param kx,ky,kz axis, any common scale (int32).
@@ -91,8 +99,9 @@ dh_status dh_frame_rot_axis_q(dh_frame_q *F, dh_q30 kx, dh_q30 ky, dh_q30 kz, dh
 /**
  * @brief out = A * B (rigid composition: R = Ra Rb, p = Ra pb + pa).
  *
- * 27 + 12 products, one rounding per output (<= 0.5 LSB vs. the exact
- * product of the integer inputs). May alias A and/or B.
+ * 27 + 12 products, one rounding per output: measured <= 0.5 LSB vs. the
+ * exact product of the integer inputs (50000 random rigid pairs and 50000
+ * pairs with arbitrary int32 entries). May alias A and/or B.
  * @return DH_OK, or DH_ERR_OVERFLOW if any entry saturated (all 12 entries
  *         written, saturated ones at INT32_MIN / INT32_MAX).
  */
@@ -103,15 +112,18 @@ dh_status dh_frame_mul_q(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q 
  *        p' = -R^T p (one rounding per entry, <= 0.5 LSB).
  *
  * Rigidity is not checked: for a non-orthonormal R the result is R^T and
- * -R^T p, not the general inverse. T * T^-1 is within a few LSB of the
- * identity for rotations from the constructors (measured: see
- * docs/accuracy_fixed.md). May alias F.
+ * -R^T p, not the general inverse. Measured on 50000 random frames (from
+ * dh_frame_rot_axis_q and from DH-like chains Rz Trans Rx): T * T^-1 is
+ * within 4 LSB of I in the rotation and 1 LSB in the position for
+ * |p| <= 2^28 LSB (the position error grows with |p| times the
+ * orthonormality error). May alias F.
  * @return DH_OK, or DH_ERR_OVERFLOW if a position entry saturated (written).
  */
 dh_status dh_frame_inv_q(dh_frame_q *out, const dh_frame_q *F);
 
 /**
  * @brief v = R u + p (point, w = 1). u, v in dh_qpos; may alias.
+ *        One rounding per component (measured <= 0.5 LSB vs. exact).
  * @return DH_OK, or DH_ERR_OVERFLOW if a component saturated (written).
  */
 dh_status dh_frame_apply_point_q(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_q *v);
@@ -130,8 +142,9 @@ dh_status dh_frame_apply_dir_q(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_
  * The step is quadratically convergent: an input error e (largest
  * |R^T R - I| entry) becomes about 3/4 e^2 plus rounding, so frames
  * accumulated over many compositions stay within a few LSB of orthonormal
- * when this is called every few hundred steps (measured: see
- * docs/accuracy_fixed.md). Keeps the sign of det R.
+ * when this is called regularly (measured: 10^5 compositions of small
+ * rotations, one step every 64 compositions keeps |R^T R - I| <= 2 LSB;
+ * without it the error reached ~23000 LSB). Keeps the sign of det R.
  * @return DH_OK; DH_ERR_NOT_RIGID (F untouched) if an entry exceeds 1.25 in
  *         magnitude or the error exceeds 1/8 (2^27 LSB), where a single
  *         step would not be reliable; DH_ERR_OVERFLOW cannot happen for the
