@@ -43,8 +43,11 @@
  * used as -INT32_MAX (one LSB), so no intermediate 64-bit sum can wrap;
  * any saturated output entry makes the function return DH_ERR_OVERFLOW.
  *
- * Stack: every function here uses less than 256 bytes. No function keeps
- * state; a dh_robot may be shared read-only between threads.
+ * Stack (gcc -fstack-usage): float functions <= 168 bytes; dh_fk_q 144
+ * plus 72 in its step function on Cortex-M4 (-O2/-O3), 120 + 128 on
+ * Cortex-M0 at -Os; on Cortex-M0 at -O2/-O3 a step function takes ~300
+ * (see docs/accuracy_fk.md). No function keeps state; a dh_robot may be
+ * shared read-only between threads.
  */
 #ifndef DHMATH_DH_ROBOT_H
 #define DHMATH_DH_ROBOT_H
