@@ -31,20 +31,23 @@ if(NOT EXISTS ${_dh_ld})
   message(FATAL_ERROR "dh_target.cmake: no linker script ${_dh_ld} for board ${DH_TARGET_BOARD}")
 endif()
 
-# DHT_ITER divisor per core. QEMU executes instructions, not cycles: the
-# cost is the instruction count, which soft float (M0/M3) multiplies by
-# roughly 10-30 over the FPU cores, and double-precision references cost
-# soft-float calls on every core but the M7.
+# DHT_ITER divisor per core. QEMU's cost is the number of guest
+# instructions: soft float (M0, M3, and double precision on the M4F) costs
+# 10-30 instructions per operation, the M0 also lacks the 32x32->64
+# multiply. The host runs the full (often exhaustive) loops; the target
+# runs check that the code compiled for the core gives the same results,
+# which a 1/20..1/200 sample does. Measured QEMU CPU time of the whole
+# suite per core is in docs/porting.md; keep each core under ~30 s.
 if(CMAKE_C_FLAGS MATCHES "cortex-m0")
-  set(DH_TARGET_ITER_DIV 100)
+  set(DH_TARGET_ITER_DIV 200)
 elseif(CMAKE_C_FLAGS MATCHES "cortex-m3")
-  set(DH_TARGET_ITER_DIV 40)
+  set(DH_TARGET_ITER_DIV 100)
 elseif(CMAKE_C_FLAGS MATCHES "cortex-m4")
-  set(DH_TARGET_ITER_DIV 40)
+  set(DH_TARGET_ITER_DIV 50)
 elseif(CMAKE_C_FLAGS MATCHES "cortex-m7")
   set(DH_TARGET_ITER_DIV 20)
 else()
-  set(DH_TARGET_ITER_DIV 100)
+  set(DH_TARGET_ITER_DIV 200)
 endif()
 set(DHT_ITER_DIV_OVERRIDE "" CACHE STRING "Override the target DHT_ITER divisor (empty: per-core default)")
 if(DHT_ITER_DIV_OVERRIDE)
