@@ -600,6 +600,13 @@ def group_robotfile(seed, tmp):
             # inputs rounded to Q16.16 (angles 1.5e-5 deg, lengths 1.5e-5);
             # measured over seeds 1..40 <= 5.5e-5
             check(d <= 8e-5, 'fk --fixed %r %r: error %.3g' % (text, q, d))
+        rc, out, err = run(['fk', '--fixed', '--frames', good, ','.join(q)])
+        check(rc == 0, 'fk --fixed --frames rc %d %r' % (rc, err))
+        if rc == 0:
+            blocks = out.strip('\n').split('\n\n')
+            check(len(blocks) == n + 1, 'fk --fixed --frames: %d blocks for %d joints' % (len(blocks), n))
+            for b, R in zip(blocks, ref_fk(rob, qf, frames=True)):
+                check(maxdiff(nums(b), R) <= 8e-5, 'fk --fixed --frames block error')
         rc, out, err = run(['jacobian', good, ','.join(q)])
         check(rc == 0, 'jacobian rc %d %r' % (rc, err))
         if rc == 0:
