@@ -4,27 +4,37 @@
  *
  * Method:
  *  1. |deg| is split exactly into whole degrees i and a fraction f in
- *     [0, 1): below 2^23 by truncation to an integer (a - trunc(a) is exact
- *     in binary32); at or above 2^23 every float is an integer M * 2^e and
+ *     [0, 1): below 2^23 (the fast path, one branch) by one float->int and
+ *     one int->float conversion (a - trunc(a) is exact in binary32); at or
+ *     above 2^23 every float is an integer M * 2^e and
  *     i = (M mod 360) * (2^e mod 360) mod 360 in integer arithmetic, f = 0.
  *     The reduction is therefore exact for every finite float, so the error
  *     does not depend on the size of the angle.
  *  2. i = 90 q + m, m in 0..89, quadrant k = q mod 4, with q = floor(i/90)
  *     an exact multiply-shift (no division).
- *  3. S = sin(90k + m), C = cos(90k + m) are table entries with the
- *     quadrant's sign (branch free), then
- *     sin = S + (S (cos f - 1) + C sin f), cos = C + (C (cos f - 1) - S sin f)
+ *  3. First quadrant only: S = sin m, C = cos m = sin(90 - m) from the
+ *     table, then
+ *     sin(m + f) = S + (S (cos f - 1) + C sin f),
+ *     cos(m + f) = C + (C (cos f - 1) - S sin f)
  *     with Taylor polynomials in f for sin f and cos f - 1 (f < 1 degree =
  *     0.01745 rad: the first omitted terms are t^5/120 < 1.4e-11 and
  *     t^6/720 < 4e-14). The correction is at most 0.0175, so its rounding
  *     errors are ~1e-9 and the correctly rounded table value dominates; at
  *     f = 0 the correction is exactly zero and the table value is returned.
- *  4. "+ 0.0f" maps the -0 of a signed table zero to +0; the sign of the
- *     input is applied to the sine by flipping its sign bit (so
- *     sin(-x) == -sin(x) and cos(-x) == cos(x) bit for bit).
+ *     Both first-quadrant results are >= +0 (the only exact zero is
+ *     sin(0) = +0 at m = 0, f = 0).
+ *  4. The quadrant is applied on the bit patterns, branch free (random
+ *     quadrants would mispredict a branch half of the time): odd quadrants
+ *     swap the two values, and a sign bit is set for the negative ones
+ *     (sin in quadrants 2, 3; cos in 1, 2) and for the sine of a negative
+ *     input -- except that an exact zero keeps +0 for a non-negative input
+ *     (so sin 180 = +0, cos 90 = +0) and gets the input's sign otherwise
+ *     (sin(-x) == -sin(x) bit for bit, zeros included). IEEE negation is
+ *     exact and round-to-nearest is symmetric, so this equals evaluating
+ *     the formulas with signed table values.
  * Requires IEEE binary32 with round-to-nearest (the default) and no
- * value-changing optimisations (-ffast-math would drop the "+ 0.0f";
- * only the sign of exact zeros would change).
+ * value-changing optimisations (-ffast-math, FMA contraction would change
+ * the last bit of some results, within the bound).
  * All arithmetic is single precision (float literals), no libm.
  */
 #include <string.h>
@@ -64,24 +74,20 @@ static float dh_trig_nan_f32(void)
 
 dh_status dh_sincos_f32(float deg, float *s, float *c)
 {
-    uint32_t bits, mag, i, q, k, m;
-    float a, f, f2, sf, cm, s0, c0, ss, cc;
+    uint32_t bits, mag, i, q, k, m, sb;
+    float a, f, f2, sf, cm, s0, c0, ss;
 
     DH_ASSERT(s != NULL);
     DH_ASSERT(c != NULL);
     memcpy(&bits, &deg, sizeof bits);
     mag = bits & 0x7FFFFFFFu;
-    if (mag >= 0x7F800000u) {                  /* NaN or +-Inf */
-        *s = dh_trig_nan_f32();
-        *c = *s;
-        return DH_ERR_NAN;
-    }
     memcpy(&a, &mag, sizeof a);                /* a = |deg|, exact */
 
-    if (mag < 0x4B000000u) {                   /* a < 2^23 */
-        i = (uint32_t)a;                       /* truncation == floor, fits */
-        f = a - (float)i;                      /* exact, in [0, 1) */
-    } else {                                   /* a = M * 2^e, an integer */
+    if (mag < 0x4B000000u) {                   /* a < 2^23: the fast path */
+        int32_t n = (int32_t)a;                /* truncation == floor, fits */
+        f = a - (float)n;                      /* exact, in [0, 1) */
+        i = (uint32_t)n;
+    } else if (mag < 0x7F800000u) {            /* a = M * 2^e, an integer */
         uint32_t e = (mag >> 23) - 150u;       /* 0..104 for finite a */
         uint32_t mant = (mag & 0x007FFFFFu) | 0x00800000u;
         while (e >= 15u) {
@@ -89,42 +95,34 @@ dh_status dh_sincos_f32(float deg, float *s, float *c)
         }
         i = dh_trig_mod360(dh_trig_mod360(mant) * dh_trig_pow2_mod360[e]);
         f = 0.0f;
+    } else {                                   /* NaN or +-Inf */
+        *s = dh_trig_nan_f32();
+        *c = *s;
+        return DH_ERR_NAN;
     }
 
     /* q = floor(i / 90) exactly for i < 2^24 (DH_TRIG_DIV90_64); the
-     * quadrant is k = q mod 4 (90 * 4 = 360) and m = i - 90 q is in 0..89. */
+     * quadrant is k = q mod 4 (90 * 4 = 360) and m = i - 90 q is in 0..89,
+     * so the table indices m and 90 - m are in 0..90. */
     q = (uint32_t)(((uint64_t)i * DH_TRIG_DIV90_64) >> 32);
     m = i - 90u * q;
     k = q & 3u;
-
-    /* S = sin(90k + m), C = cos(90k + m) = sin(90(k+1) + m) from the
-     * quarter-wave table, branch free (random quadrants would mispredict):
-     * sin(90j + m) = (-1)^(j>>1) T[j odd ? 90 - m : m]; indices in 0..90. */
     {
-        uint32_t odd = k & 1u;
-        s0 = dh_trig_sin_f32[odd ? 90u - m : m] * dh_trig_qsign[k];
-        c0 = dh_trig_sin_f32[odd ? m : 90u - m] * dh_trig_qsign[k + 1u];
+        /* sin(90k + m) = +-T[odd ? 90 - m : m], cos(90k + m) = sin(90(k+1) + m):
+         * index select by mask (branch free), sign from a table */
+        uint32_t is = m ^ ((m ^ (90u - m)) & (0u - (k & 1u)));
+        s0 = dh_trig_sin_f32[is] * dh_trig_qsign[k];
+        c0 = dh_trig_sin_f32[90u - is] * dh_trig_qsign[k + 1u];
     }
 
     f2 = f * f;
     sf = f * (DH_TRIG_A1 + f2 * DH_TRIG_A3);   /* sin f */
     cm = f2 * (DH_TRIG_B2 + f2 * DH_TRIG_B4);  /* cos f - 1 */
     ss = s0 + (s0 * cm + c0 * sf);
-    cc = c0 + (c0 * cm - s0 * sf);
-
-    /* "+ 0.0f" turns the -0 of a signed exact table zero (sin 180,
-     * cos 90) into +0 and leaves every other value unchanged. Then odd
-     * symmetry: the sign bit of the sine of a negative input is flipped, so
-     * sin(-x) == -sin(x) bit for bit, zeros included. */
-    ss = ss + 0.0f;
-    *c = cc + 0.0f;
-    {
-        uint32_t sb;
-        memcpy(&sb, &ss, sizeof sb);
-        sb ^= bits & 0x80000000u;
-        memcpy(&ss, &sb, sizeof ss);
-        *s = ss;
-    }
+    *c = c0 + (c0 * cm - s0 * sf);
+    memcpy(&sb, &ss, sizeof sb);
+    sb ^= bits & 0x80000000u;
+    memcpy(s, &sb, sizeof sb);
     return DH_OK;
 }
 

@@ -97,8 +97,11 @@ void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
     ns = 0u - (((k >> 1) ^ (uint32_t)(deg_q16 < 0)) & 1u);   /* k = 2, 3 */
     nc = 0u - ((k ^ (k >> 1)) & 1u);                          /* k = 1, 2 */
     {
-        uint32_t a = odd ? cv : sv;
-        uint32_t b = odd ? sv : cv;
+        /* swap by mask: a plain select compiles to a branch on x86, which
+         * random quadrants mispredict half of the time */
+        uint32_t sw = (sv ^ cv) & (0u - odd);
+        uint32_t a = sv ^ sw;
+        uint32_t b = cv ^ sw;
         *s_q30 = dh_trig_u2i((a ^ ns) - ns);
         *c_q30 = dh_trig_u2i((b ^ nc) - nc);
     }
