@@ -12,26 +12,26 @@
  *     does not depend on the size of the angle.
  *  2. i = 90 q + m, m in 0..89, quadrant k = q mod 4, with q = floor(i/90)
  *     an exact multiply-shift (no division).
- *  3. First quadrant only: S = sin m, C = cos m = sin(90 - m) from the
- *     table, then
- *     sin(m + f) = S + (S (cos f - 1) + C sin f),
- *     cos(m + f) = C + (C (cos f - 1) - S sin f)
+ *  3. S = sin(90k + m), C = cos(90k + m) are table entries with the
+ *     quadrant's sign: the index (m or 90 - m) is selected by a mask, not a
+ *     branch (gcc compiles a plain select into a branch on x86, and random
+ *     quadrants mispredict it half of the time), the sign comes from a
+ *     5-entry table. Then
+ *     sin = S + (S (cos f - 1) + C sin f), cos = C + (C (cos f - 1) - S sin f)
  *     with Taylor polynomials in f for sin f and cos f - 1 (f < 1 degree =
  *     0.01745 rad: the first omitted terms are t^5/120 < 1.4e-11 and
  *     t^6/720 < 4e-14). The correction is at most 0.0175, so its rounding
  *     errors are ~1e-9 and the correctly rounded table value dominates; at
  *     f = 0 the correction is exactly zero and the table value is returned.
- *     Both first-quadrant results are >= +0 (the only exact zero is
- *     sin(0) = +0 at m = 0, f = 0).
- *  4. The quadrant is applied on the bit patterns, branch free (random
- *     quadrants would mispredict a branch half of the time): odd quadrants
- *     swap the two values, and a sign bit is set for the negative ones
- *     (sin in quadrants 2, 3; cos in 1, 2) and for the sine of a negative
- *     input -- except that an exact zero keeps +0 for a non-negative input
- *     (so sin 180 = +0, cos 90 = +0) and gets the input's sign otherwise
- *     (sin(-x) == -sin(x) bit for bit, zeros included). IEEE negation is
- *     exact and round-to-nearest is symmetric, so this equals evaluating
- *     the formulas with signed table values.
+ *  4. Signed zeros: a table zero with a negative quadrant sign is -0
+ *     (sin 180, cos 90), but then f = +0 (a - trunc(a) of an integer, or
+ *     the +0 of the large path), so cos f - 1 = -0, sin f = +0 and the
+ *     correction S * (-0) + C * (+0) (resp. C * (-0) - S * (+0)) is +0 when
+ *     S (resp. C) is -0; -0 + +0 = +0 in round-to-nearest, so every exact
+ *     zero comes out +0 without a "+ 0.0f". Then odd symmetry: the sign bit
+ *     of the sine of a negative input is flipped, so sin(-x) == -sin(x) bit
+ *     for bit, zeros included. (Verified bit-identical to the earlier
+ *     version that added 0.0f, on every 7th finite float of both signs.)
  * Requires IEEE binary32 with round-to-nearest (the default) and no
  * value-changing optimisations (-ffast-math, FMA contraction would change
  * the last bit of some results, within the bound).
