@@ -33,8 +33,9 @@
  *     for bit, zeros included. (Verified bit-identical to the earlier
  *     version that added 0.0f, on every 7th finite float of both signs.)
  * Requires IEEE binary32 with round-to-nearest (the default) and no
- * value-changing optimisations (-ffast-math, FMA contraction would change
- * the last bit of some results, within the bound).
+ * value-changing optimisations: -ffast-math would drop signed zeros (step
+ * 4); the error proof and the bit-identity check assume separate multiply
+ * and add (no FMA contraction, the ISO C default of gcc with -std=c99).
  * All arithmetic is single precision (float literals), no libm.
  */
 #include <string.h>
