@@ -41,6 +41,13 @@ set(DHMATH_LIBM m CACHE STRING "libm for the target: linked as -lm")
 set(CMAKE_C_FLAGS_INIT "${_dh_arch_flags} -std=c99 -ffunction-sections -fdata-sections")
 set(CMAKE_ASM_FLAGS_INIT "${_dh_arch_flags}")
 set(CMAKE_EXE_LINKER_FLAGS_INIT "-Wl,--gc-sections")
+# CMAKE_C_FLAGS_INIT is ignored when CMAKE_C_FLAGS is given on the command
+# line (-DCMAKE_C_FLAGS=-fstack-usage would silently build for the
+# compiler's default ARMv4T/ARM-mode target): keep the core flags in front.
+if(DEFINED CACHE{CMAKE_C_FLAGS} AND NOT CMAKE_C_FLAGS MATCHES "-mcpu=")
+  set(CMAKE_C_FLAGS "${_dh_arch_flags} -std=c99 -ffunction-sections -fdata-sections ${CMAKE_C_FLAGS}"
+      CACHE STRING "C flags (core flags added by the dhmath toolchain file)" FORCE)
+endif()
 
 # Optimised by default: the target suites run under emulation (and the
 # footprint/guards stages look at optimised code). -DCMAKE_BUILD_TYPE=...

@@ -1,0 +1,228 @@
+#!/usr/bin/python3
+"""Writes docs/footprint.md: flash and stack of dhmath on Cortex-M0+ and
+Cortex-M4F at -Os and -O2 (driven by tools/footprint.sh, which builds the
+libraries).
+
+  footprint.py <out.md> <label>=<builddir>=<cflags> ...
+
+For every configuration (a library-only build with -fstack-usage
+-fcallgraph-info=su):
+  * own:    bytes of the function's own code (its .text.<name> section);
+  * linked: bytes of flash (text + rodata + initialised data) of a firmware
+            that calls only this function: linked with --gc-sections and the
+            function as entry point, so it includes every library helper,
+            table, libgcc soft-float routine and libm function it pulls in
+            (newlib-nano's libc for errno, as a small firmware would use);
+  * stack:  worst case including callees (tools/dh_stack.py);
+  * modules: text + rodata of every object of libdhmath.a;
+  * tables: every read-only data object of the library.
+"""
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import dh_stack  # noqa: E402
+
+NM = "arm-none-eabi-nm"
+CC = "arm-none-eabi-gcc"
+
+
+def run(args, **kw):
+    return subprocess.run(args, check=True, capture_output=True, text=True, **kw).stdout
+
+
+def own_sizes(lib):
+    """global function -> bytes of its code; object -> module sizes."""
+    funcs = {}
+    for line in run([NM, "-S", "--defined-only", "-g", lib]).splitlines():
+        p = line.split()
+        if len(p) == 4 and p[2] in ("T", "t"):
+            funcs[p[3]] = int(p[1], 16)
+    return funcs
+
+
+def module_sizes(lib):
+    """object -> (text bytes, rodata bytes)"""
+    res = {}
+    cur = None
+    for line in run(["arm-none-eabi-size", "-A", "-d", lib]).splitlines():
+        m = re.match(r"^(\S+)\s+\(ex .*\):$", line)
+        if m:
+            cur = m.group(1)
+            res[cur] = [0, 0]
+            continue
+        p = line.split()
+        if cur and len(p) >= 2 and p[1].isdigit():
+            if p[0].startswith(".text"):
+                res[cur][0] += int(p[1])
+            elif p[0].startswith(".rodata"):
+                res[cur][1] += int(p[1])
+    return res
+
+
+def tables(lib):
+    """(object, symbol, bytes) of read-only data objects."""
+    res = []
+    cur = None
+    for line in run([NM, "-S", "--defined-only", lib]).splitlines():
+        if line.endswith(":"):
+            cur = line[:-1]
+            continue
+        p = line.split()
+        if len(p) == 4 and p[2] in ("r", "R"):
+            res.append((cur, p[3], int(p[1], 16)))
+    return res
+
+
+def linked_size(lib, func, cflags, tmp):
+    elf = os.path.join(tmp, "fp.elf")
+    # an (empty) object compiled with the same flags first, so the output
+    # gets the right build attributes (hard-float ABI) before libm is merged
+    anchor = os.path.join(tmp, "anchor_%d.o" % (hash(tuple(cflags)) & 0xffffff))
+    if not os.path.exists(anchor):
+        src = os.path.join(tmp, "anchor.c")
+        with open(src, "w") as f:
+            f.write("float dh_footprint_anchor(float x);\nfloat dh_footprint_anchor(float x) { return x; }\n")
+        subprocess.run([CC] + cflags + ["-c", src, "-o", anchor], check=True)
+    subprocess.run([CC] + cflags + ["-nostartfiles", "-nostdlib", "-Wl,--gc-sections",
+                                    "-Wl,-e," + func, "-Wl,-u," + func, anchor, lib,
+                                    "-lm", "-lc_nano", "-lgcc", "-o", elf],
+                   check=True, capture_output=True, text=True)
+    total = 0
+    for line in run(["arm-none-eabi-size", "-A", "-d", elf]).splitlines():
+        p = line.split()
+        if len(p) >= 3 and p[1].isdigit() and re.match(
+                r"^\.(text|rodata|data|ARM\.exidx|ARM\.extab|init_array|fini_array)", p[0]):
+            total += int(p[1])
+    return total
+
+
+def module_name(obj):
+    return re.sub(r"\.c\.(obj|o)$", "", obj)
+
+
+def main(argv):
+    if len(argv) < 3:
+        print(__doc__)
+        return 2
+    out = argv[1]
+    configs = []
+    for spec in argv[2:]:
+        label, bdir, flags = spec.split("=", 2)
+        configs.append((label, bdir, flags.split()))
+
+    data = {}
+    allfuncs = set()
+    with tempfile.TemporaryDirectory() as tmp:
+        for label, bdir, flags in configs:
+            lib = os.path.join(bdir, "libdhmath.a")
+            pub = sorted(dh_stack.public_functions(lib))
+            allfuncs.update(pub)
+            own = own_sizes(lib)
+            linked = {f: linked_size(lib, f, flags, tmp) for f in pub}
+            stack, errors = dh_stack.analyse(os.path.join(bdir, "CMakeFiles", "dhmath.dir"), lib, flags)
+            data[label] = dict(own=own, linked=linked, stack=stack, errors=errors,
+                               modules=module_sizes(lib), tables=tables(lib), flags=flags)
+
+    labels = [c[0] for c in configs]
+    L = []
+    L.append("# dhmath footprint on Cortex-M")
+    L.append("")
+    L.append("Generated by `tools/footprint.sh` (do not edit by hand). Compiler: %s." %
+             run([CC, "--version"]).splitlines()[0])
+    L.append("")
+    for label, bdir, flags in configs:
+        L.append("* **%s**: `%s`" % (label, " ".join(flags)))
+    L.append("")
+    L.append("Library configuration: the defaults of `include/dhmath/dh_config.h` "
+             "(DH_MAX_JOINTS 8, DH_QPOS_FRAC 16, DH_CHECK_ARGS 1, DH_USE_INTRINSICS 1).")
+    L.append("")
+    L.append("## Flash per public function")
+    L.append("")
+    L.append("*own*: the function's own code. *linked*: flash of a firmware that "
+             "calls only this function (`--gc-sections`, the function as entry): "
+             "its code plus every library helper, table, libgcc soft-float "
+             "routine and libm function it pulls in (newlib-nano libc for errno). "
+             "This is what the function costs a firmware that uses nothing else "
+             "of dhmath; functions used together share helpers and tables, so "
+             "linked sizes do not add up.")
+    L.append("")
+    hdr = "| function |" + "".join(" %s own | %s linked |" % (l, l) for l in labels)
+    L.append(hdr)
+    L.append("|---|" + "---:|---:|" * len(labels))
+    for f in sorted(allfuncs):
+        row = "| `%s` |" % f
+        for l in labels:
+            d = data[l]
+            row += " %s | %s |" % (d["own"].get(f, "-"), d["linked"].get(f, "-"))
+        L.append(row)
+    L.append("")
+    L.append("## Worst-case stack per public function (bytes)")
+    L.append("")
+    L.append("Own frame plus the deepest chain of callees, libgcc/libm/libc included "
+             "(frames of library code from GCC's `-fstack-usage`/`-fcallgraph-info`, "
+             "of libgcc/libm/libc from their disassembly; `tools/dh_stack.py`). "
+             "The project limit is 256 bytes (checked by `tools/check_guards.sh`); "
+             "**bold** entries exceed it. The deepest chain is shown for the "
+             "first configuration (`*` = libgcc/libm/libc function).")
+    L.append("")
+    L.append("| function |" + "".join(" %s |" % l for l in labels) + " deepest chain (%s) |" % labels[0])
+    L.append("|---|" + "---:|" * len(labels) + "---|")
+    for f in sorted(allfuncs):
+        row = "| `%s` |" % f
+        for l in labels:
+            s = data[l]["stack"].get(f)
+            if s is None:
+                row += " - |"
+            else:
+                row += (" **%d** |" % s[0]) if s[0] > 256 else (" %d |" % s[0])
+        s0 = data[labels[0]]["stack"].get(f)
+        row += " %s |" % (" > ".join(s0[1][1:]) if s0 and len(s0[1]) > 1 else "-")
+        L.append(row)
+    errs = sorted(set(e for l in labels for e in data[l]["errors"]))
+    if errs:
+        L.append("")
+        L.append("Stack analysis problems: " + "; ".join(errs))
+    L.append("")
+    L.append("## Flash per module (text + rodata of each object, bytes)")
+    L.append("")
+    L.append("Everything in a module, used or not; a firmware links only what it "
+             "calls (`-ffunction-sections -fdata-sections` + `--gc-sections`).")
+    L.append("")
+    L.append("| module |" + "".join(" %s text | %s rodata |" % (l, l) for l in labels))
+    L.append("|---|" + "---:|---:|" * len(labels))
+    mods = sorted(set(m for l in labels for m in data[l]["modules"]))
+    tot = {l: [0, 0] for l in labels}
+    for m in mods:
+        row = "| %s |" % module_name(m)
+        for l in labels:
+            t, r = data[l]["modules"].get(m, (0, 0))
+            tot[l][0] += t
+            tot[l][1] += r
+            row += " %d | %d |" % (t, r)
+        L.append(row)
+    L.append("| **total** |" + "".join(" **%d** | **%d** |" % tuple(tot[l]) for l in labels))
+    L.append("")
+    L.append("## Tables (read-only data objects, bytes)")
+    L.append("")
+    L.append("Identical in every configuration (the sizes below are from %s)." % labels[0])
+    L.append("")
+    L.append("| module | object | bytes |")
+    L.append("|---|---|---:|")
+    tsum = 0
+    for obj, sym, size in sorted(data[labels[0]]["tables"]):
+        L.append("| %s | `%s` | %d |" % (module_name(obj), sym, size))
+        tsum += size
+    L.append("| | **total** | **%d** |" % tsum)
+    L.append("")
+    with open(out, "w") as f:
+        f.write("\n".join(L))
+    print("footprint: wrote %s (%d public functions, %d configurations)" % (out, len(allfuncs), len(labels)))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
