@@ -80,6 +80,18 @@ void bench_ref_fk(const bench_dh_robot *r, double scale, const double *q, double
 void bench_ref_fk_params(unsigned n, const double *a, const double *d, const double *alpha_deg,
                          const double *theta_deg, const double *q, double T[4][4]);
 
+/** A robot prepared for the timed double reference: constants in double,
+ *  sin/cos(alpha) computed once (as dhmath and KDL also do). */
+typedef struct {
+    unsigned n;
+    double a[6], d[6], sa[6], ca[6], theta_deg[6];
+} bench_ref_model;
+
+void bench_ref_prepare(const bench_dh_robot *r, double scale, bench_ref_model *m);
+/** Plain double FK of a prepared model: per joint one libm sin and cos of
+ *  radians, the closed-form link matrix, a general 4x4 double product. */
+void bench_ref_fk_model(const bench_ref_model *m, const double *q_deg, double T[4][4]);
+
 /** Deterministic xorshift64* generator (uniform in [lo, hi)). */
 double bench_rand(uint64_t *state, double lo, double hi);
 

@@ -64,6 +64,7 @@ static dh_status out_st[BENCH_NIN];
 
 static dh_robot puma_m;   /* metres, float path */
 static dh_robot puma_mm;  /* millimetres, fixed path */
+static bench_ref_model puma_ref; /* metres, double reference */
 
 #if BENCH_HAVE_CGLM
 static mat4 cg_A[BENCH_NIN], cg_B[BENCH_NIN], cg_T[BENCH_NIN], cg_out[BENCH_NIN];
@@ -162,7 +163,7 @@ BENCH_NOINLINE void bw_dh_fk_q(uint32_t i)
 
 BENCH_NOINLINE void bw_ref_fk_double(uint32_t i)
 {
-    bench_ref_fk(&bench_puma560, 1.0, in_q_deg[i], out_D[i]);
+    bench_ref_fk_model(&puma_ref, in_q_deg[i], out_D[i]);
     bench_sink_d = out_D[i][3][0];
 }
 
@@ -349,6 +350,8 @@ static int sanity(void)
         for (k = 0; k < 3; k++) {
             double e = fabs((double)out_M[i].m[3][k] - T[3][k]);
             if (e > e_fk) e_fk = e;
+            e = fabs(out_D[i][3][k] - T[3][k]);
+            if (e > 1e-12) bad = 1;
         }
         bw_dh_fk_q(i);
         {
@@ -378,7 +381,7 @@ static int sanity(void)
     printf("sanity: Puma FK |dp| dhmath f32 vs double ref %.2e m, dhmath q vs ref %.2e mm, "
            "KDL vs ref %.2e m, dhmath vs cglm products/inverses %.2e\n",
            e_fk, e_fkq, e_kdl, e_cg);
-    if (e_fk > 1e-5 || e_kdl > 1e-9 || e_cg > 1e-5 || e_fkq > 1e-2) {
+    if (bad || e_fk > 1e-5 || e_kdl > 1e-9 || e_cg > 1e-5 || e_fkq > 1e-2) {
         printf("sanity: FAILED (a peer or dhmath computes something else)\n");
         bad = 1;
     }
@@ -440,6 +443,7 @@ int main(int argc, char **argv)
     }
 
     make_inputs();
+    bench_ref_prepare(&bench_puma560, 1.0, &puma_ref);
     if (!build_puma(&puma_m, 1.0) || !build_puma(&puma_mm, 1000.0)) {
         fprintf(stderr, "cannot build the Puma 560 model\n");
         return 1;
@@ -477,7 +481,7 @@ int main(int argc, char **argv)
 #endif
     add_op("dh_fk_f32", "fk_puma", "dhmath", "dh_fk_f32, Puma 560 (m)", bw_dh_fk_f32);
     add_op("dh_fk_q", "fk_puma", "dhmath", "dh_fk_q, Puma 560 (mm, Q16 lengths)", bw_dh_fk_q);
-    add_op("ref_fk_double", "fk_puma", "ref", "plain double DH FK (libm sin/cos, 4x4 products)", bw_ref_fk_double);
+    add_op("ref_fk_double", "fk_puma", "ref", "plain double DH FK (libm sin+cos of theta, sin/cos alpha precomputed, 4x4 products)", bw_ref_fk_double);
     {
         int got = bench_cpp_setup((const float (*)[16])(const void *)in_A, (const float (*)[16])(const void *)in_B,
                                   (const double (*)[6])in_q_deg, &ops[n_ops], MAX_OPS - n_ops);

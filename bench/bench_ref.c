@@ -86,6 +86,37 @@ void bench_ref_fk(const bench_dh_robot *rb, double scale, const double *q, doubl
     }
 }
 
+void bench_ref_prepare(const bench_dh_robot *rb, double scale, bench_ref_model *m)
+{
+    unsigned i;
+    m->n = rb->n;
+    for (i = 0; i < rb->n; i++) {
+        double al = rb->j[i].alpha_deg * (BENCH_PI / 180.0);
+        m->a[i] = rb->j[i].a * scale;
+        m->d[i] = rb->j[i].d * scale;
+        m->sa[i] = sin(al);
+        m->ca[i] = cos(al);
+        m->theta_deg[i] = rb->j[i].theta_deg;
+    }
+}
+
+void bench_ref_fk_model(const bench_ref_model *m, const double *q_deg, double T[4][4])
+{
+    unsigned i;
+    int c, r;
+    for (c = 0; c < 4; c++)
+        for (r = 0; r < 4; r++) T[c][r] = (c == r) ? 1.0 : 0.0;
+    for (i = 0; i < m->n; i++) {
+        double th = (q_deg[i] + m->theta_deg[i]) * (BENCH_PI / 180.0);
+        double ct = cos(th), st = sin(th), ca = m->ca[i], sa = m->sa[i], A[4][4];
+        A[0][0] = ct;       A[0][1] = st;       A[0][2] = 0.0; A[0][3] = 0.0;
+        A[1][0] = -st * ca; A[1][1] = ct * ca;  A[1][2] = sa;  A[1][3] = 0.0;
+        A[2][0] = st * sa;  A[2][1] = -ct * sa; A[2][2] = ca;  A[2][3] = 0.0;
+        A[3][0] = m->a[i] * ct; A[3][1] = m->a[i] * st; A[3][2] = m->d[i]; A[3][3] = 1.0;
+        mul4(T, A);
+    }
+}
+
 double bench_rand(uint64_t *s, double lo, double hi)
 {
     uint64_t x = *s;
