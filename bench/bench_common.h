@@ -27,9 +27,18 @@ extern "C" {
 #define BENCH_NOINLINE
 #endif
 
-/** Number of precomputed input sets (power of two). */
+/** Number of precomputed input sets (powers of two). Each wrapper receives
+ *  the raw iteration counter and masks it with the mask of its input kind.
+ *  Angles and joint configurations come in sets too large for a branch
+ *  predictor to memorise (a predictor learns a cycle of 256 quadrant
+ *  choices, which would flatter branchy code); matrices, whose operations
+ *  have no data-dependent branches, in a set that stays in L1. */
 #define BENCH_NIN 256u
 #define BENCH_MASK (BENCH_NIN - 1u)
+#define BENCH_NIN_TRIG 16384u
+#define BENCH_TRIG_MASK (BENCH_NIN_TRIG - 1u)
+#define BENCH_NIN_FK 4096u
+#define BENCH_FK_MASK (BENCH_NIN_FK - 1u)
 
 typedef void (*bench_fn)(uint32_t i);
 
@@ -98,7 +107,8 @@ double bench_rand(uint64_t *state, double lo, double hi);
 /* ---- C++ peers (bench_peers.cpp); absent when built without C++ peers --- */
 
 /** Prepare Eigen/KDL inputs from float matrices (column-major 16 floats,
- *  rigid), a second set, and Puma 560 joint angles in degrees. Returns the
+ *  rigid, BENCH_NIN each), a second set, and BENCH_NIN_FK Puma 560 joint
+ *  angle sets in degrees. Returns the
  *  number of ops written to ops (at most max). */
 int bench_cpp_setup(const float (*A)[16], const float (*B)[16], const double (*q_deg)[6],
                     bench_op *ops, int max);

@@ -11,9 +11,10 @@
  *                                        no timing (for callgrind: inclusive
  *                                        Ir of bw_<id> / N = instructions/op)
  *
- * Method: see bench_common.h. Inputs are BENCH_NIN random sets generated
- * once with a fixed seed; iteration k uses set k mod BENCH_NIN, so inputs
- * change every call and branch predictors cannot learn a single input.
+ * Method: see bench_common.h. Inputs are random sets generated once with a
+ * fixed seed (BENCH_NIN_TRIG angles, BENCH_NIN_FK joint configurations,
+ * BENCH_NIN matrices); iteration k uses set k mod the set size, so inputs
+ * change every call and branch predictors cannot learn the sequence.
  * Peers are compiled in only when found at configure time
  * (BENCH_HAVE_CGLM, BENCH_HAVE_FIXMATH, BENCH_HAVE_CPP); a missing peer is
  * reported as skipped.
@@ -44,23 +45,23 @@ volatile int32_t bench_sink_i;
 
 /* ---- inputs and outputs --------------------------------------------------- */
 
-static float in_deg[BENCH_NIN];                 /* +-720 degrees */
-static dh_q16 in_deg_q[BENCH_NIN];              /* same, Q16.16 */
+static float in_deg[BENCH_NIN_TRIG];                 /* +-720 degrees */
+static dh_q16 in_deg_q[BENCH_NIN_TRIG];              /* same, Q16.16 */
 #if BENCH_HAVE_FIXMATH
-static fix16_t in_rad_fx[BENCH_NIN];            /* same in radians, fix16 (converted in double, untimed) */
+static fix16_t in_rad_fx[BENCH_NIN_TRIG];            /* same in radians, fix16 (converted in double, untimed) */
 #endif
 static dh_mat4_f32 in_A[BENCH_NIN], in_B[BENCH_NIN];   /* random rigid transforms */
 static dh_frame_q in_Aq[BENCH_NIN], in_Bq[BENCH_NIN];  /* same, fixed point (positions in m, Q16) */
-static double in_q_deg[BENCH_NIN][6];           /* Puma 560 joint angles within limits */
-static float in_q_f[BENCH_NIN][6];
-static int32_t in_q_q[BENCH_NIN][6];
+static double in_q_deg[BENCH_NIN_FK][6];           /* Puma 560 joint angles within limits */
+static float in_q_f[BENCH_NIN_FK][6];
+static int32_t in_q_q[BENCH_NIN_FK][6];
 
-static float out_s[BENCH_NIN], out_c[BENCH_NIN];
-static dh_q30 out_sq[BENCH_NIN], out_cq[BENCH_NIN];
-static dh_mat4_f32 out_M[BENCH_NIN];
-static dh_frame_q out_Fq[BENCH_NIN];
-static double out_D[BENCH_NIN][4][4];
-static dh_status out_st[BENCH_NIN];
+static float out_s[BENCH_NIN_TRIG], out_c[BENCH_NIN_TRIG];
+static dh_q30 out_sq[BENCH_NIN_TRIG], out_cq[BENCH_NIN_TRIG];
+static dh_mat4_f32 out_M[BENCH_NIN_FK];
+static dh_frame_q out_Fq[BENCH_NIN_FK];
+static double out_D[BENCH_NIN_FK][4][4];
+static dh_status out_st[BENCH_NIN_FK];
 
 static dh_robot puma_m;   /* metres, float path */
 static dh_robot puma_mm;  /* millimetres, fixed path */
@@ -74,17 +75,20 @@ static mat4 cg_A[BENCH_NIN], cg_B[BENCH_NIN], cg_T[BENCH_NIN], cg_out[BENCH_NIN]
 
 BENCH_NOINLINE void bw_empty(uint32_t i)
 {
+    i &= BENCH_TRIG_MASK;
     bench_sink_f = in_deg[i];
 }
 
 BENCH_NOINLINE void bw_dh_sincos_f32(uint32_t i)
 {
+    i &= BENCH_TRIG_MASK;
     (void)dh_sincos_f32(in_deg[i], &out_s[i], &out_c[i]);
     bench_sink_f = out_s[i];
 }
 
 BENCH_NOINLINE void bw_glibc_sinf_cosf(uint32_t i)
 {
+    i &= BENCH_TRIG_MASK;
     float r = in_deg[i] * (float)(PI_D / 180.0);
     out_s[i] = sinf(r);
     out_c[i] = cosf(r);
@@ -93,6 +97,7 @@ BENCH_NOINLINE void bw_glibc_sinf_cosf(uint32_t i)
 
 BENCH_NOINLINE void bw_glibc_sincosf(uint32_t i)
 {
+    i &= BENCH_TRIG_MASK;
     float r = in_deg[i] * (float)(PI_D / 180.0);
     sincosf(r, &out_s[i], &out_c[i]);
     bench_sink_f = out_s[i];
@@ -100,6 +105,7 @@ BENCH_NOINLINE void bw_glibc_sincosf(uint32_t i)
 
 BENCH_NOINLINE void bw_dh_sincos_q(uint32_t i)
 {
+    i &= BENCH_TRIG_MASK;
     dh_sincos_q(in_deg_q[i], &out_sq[i], &out_cq[i]);
     bench_sink_i = out_sq[i];
 }
@@ -107,6 +113,7 @@ BENCH_NOINLINE void bw_dh_sincos_q(uint32_t i)
 #if BENCH_HAVE_FIXMATH
 BENCH_NOINLINE void bw_fix16_sin_cos(uint32_t i)
 {
+    i &= BENCH_TRIG_MASK;
     out_sq[i] = fix16_sin(in_rad_fx[i]);
     out_cq[i] = fix16_cos(in_rad_fx[i]);
     bench_sink_i = out_sq[i];
@@ -115,54 +122,63 @@ BENCH_NOINLINE void bw_fix16_sin_cos(uint32_t i)
 
 BENCH_NOINLINE void bw_dh_mul_affine(uint32_t i)
 {
+    i &= BENCH_MASK;
     dh_mat4_mul_affine_f32(&out_M[i], &in_A[i], &in_B[i]);
     bench_sink_f = out_M[i].m[3][0];
 }
 
 BENCH_NOINLINE void bw_dh_mul(uint32_t i)
 {
+    i &= BENCH_MASK;
     dh_mat4_mul_f32(&out_M[i], &in_A[i], &in_B[i]);
     bench_sink_f = out_M[i].m[3][0];
 }
 
 BENCH_NOINLINE void bw_dh_inv_rigid(uint32_t i)
 {
+    i &= BENCH_MASK;
     dh_mat4_inv_rigid_f32(&out_M[i], &in_A[i]);
     bench_sink_f = out_M[i].m[3][0];
 }
 
 BENCH_NOINLINE void bw_dh_inv(uint32_t i)
 {
+    i &= BENCH_MASK;
     out_st[i] = dh_mat4_inv_f32(&out_M[i], &in_A[i]);
     bench_sink_f = out_M[i].m[3][0];
 }
 
 BENCH_NOINLINE void bw_dh_frame_mul_q(uint32_t i)
 {
+    i &= BENCH_MASK;
     out_st[i] = dh_frame_mul_q(&out_Fq[i], &in_Aq[i], &in_Bq[i]);
     bench_sink_i = out_Fq[i].p[0];
 }
 
 BENCH_NOINLINE void bw_dh_frame_inv_q(uint32_t i)
 {
+    i &= BENCH_MASK;
     out_st[i] = dh_frame_inv_q(&out_Fq[i], &in_Aq[i]);
     bench_sink_i = out_Fq[i].p[0];
 }
 
 BENCH_NOINLINE void bw_dh_fk_f32(uint32_t i)
 {
+    i &= BENCH_FK_MASK;
     out_st[i] = dh_fk_f32(&puma_m, in_q_f[i], &out_M[i]);
     bench_sink_f = out_M[i].m[3][0];
 }
 
 BENCH_NOINLINE void bw_dh_fk_q(uint32_t i)
 {
+    i &= BENCH_FK_MASK;
     out_st[i] = dh_fk_q(&puma_mm, in_q_q[i], &out_Fq[i]);
     bench_sink_i = out_Fq[i].p[0];
 }
 
 BENCH_NOINLINE void bw_ref_fk_double(uint32_t i)
 {
+    i &= BENCH_FK_MASK;
     bench_ref_fk_model(&puma_ref, in_q_deg[i], out_D[i]);
     bench_sink_d = out_D[i][3][0];
 }
@@ -170,12 +186,14 @@ BENCH_NOINLINE void bw_ref_fk_double(uint32_t i)
 #if BENCH_HAVE_CGLM
 BENCH_NOINLINE void bw_glm_mul(uint32_t i)
 {
+    i &= BENCH_MASK;
     glm_mul(cg_A[i], cg_B[i], cg_out[i]);
     bench_sink_f = cg_out[i][3][0];
 }
 
 BENCH_NOINLINE void bw_glm_mat4_mul(uint32_t i)
 {
+    i &= BENCH_MASK;
     glm_mat4_mul(cg_A[i], cg_B[i], cg_out[i]);
     bench_sink_f = cg_out[i][3][0];
 }
@@ -184,12 +202,14 @@ BENCH_NOINLINE void bw_glm_mat4_mul(uint32_t i)
  * both rigid, so the input stays valid and no copy is timed */
 BENCH_NOINLINE void bw_glm_inv_tr(uint32_t i)
 {
+    i &= BENCH_MASK;
     glm_inv_tr(cg_T[i]);
     bench_sink_f = cg_T[i][3][0];
 }
 
 BENCH_NOINLINE void bw_glm_mat4_inv(uint32_t i)
 {
+    i &= BENCH_MASK;
     glm_mat4_inv(cg_A[i], cg_out[i]);
     bench_sink_f = cg_out[i][3][0];
 }
@@ -295,19 +315,29 @@ static void make_inputs(void)
 {
     uint32_t i;
     int k;
-    for (i = 0; i < BENCH_NIN; i++) {
-        double d = bench_rand(&rng, -720.0, 720.0), R[3][3], p[3];
+    for (i = 0; i < BENCH_NIN_TRIG; i++) {
+        double d = bench_rand(&rng, -720.0, 720.0);
         in_deg[i] = (float)d;
         in_deg_q[i] = round_q(d, 16);
 #if BENCH_HAVE_FIXMATH
         in_rad_fx[i] = round_q(d * (PI_D / 180.0), 16);
 #endif
+    }
+    for (i = 0; i < BENCH_NIN; i++) {
+        double R[3][3], p[3];
         rand_rigid(R, p);
         to_f32(&in_A[i], R, p);
         to_q(&in_Aq[i], R, p);
         rand_rigid(R, p);
         to_f32(&in_B[i], R, p);
         to_q(&in_Bq[i], R, p);
+#if BENCH_HAVE_CGLM
+        memcpy(cg_A[i], in_A[i].m, sizeof(mat4));
+        memcpy(cg_B[i], in_B[i].m, sizeof(mat4));
+        memcpy(cg_T[i], in_A[i].m, sizeof(mat4));
+#endif
+    }
+    for (i = 0; i < BENCH_NIN_FK; i++) {
         for (k = 0; k < 6; k++) {
             const bench_dh_row *j = &bench_puma560.j[k];
             double q = bench_rand(&rng, j->qmin, j->qmax);
@@ -315,11 +345,6 @@ static void make_inputs(void)
             in_q_deg[i][k] = (double)in_q_f[i][k];
             in_q_q[i][k] = round_q(q, 16);
         }
-#if BENCH_HAVE_CGLM
-        memcpy(cg_A[i], in_A[i].m, sizeof(mat4));
-        memcpy(cg_B[i], in_B[i].m, sizeof(mat4));
-        memcpy(cg_T[i], in_A[i].m, sizeof(mat4));
-#endif
     }
 }
 
@@ -407,7 +432,7 @@ static double run_ns(bench_fn fn, uint32_t iters)
 {
     uint32_t k;
     double t0 = now_ns();
-    for (k = 0; k < iters; k++) fn(k & BENCH_MASK);
+    for (k = 0; k < iters; k++) fn(k);
     return (now_ns() - t0) / (double)iters;
 }
 
@@ -496,7 +521,7 @@ int main(int argc, char **argv)
         /* no sanity pass here: it would add calls to the counted wrappers */
         for (k = 0; k < n_ops; k++) {
             long it;
-            for (it = 0; it < count; it++) ops[k].fn((uint32_t)it & BENCH_MASK);
+            for (it = 0; it < count; it++) ops[k].fn((uint32_t)it);
         }
         printf("count mode: every operation ran %ld times\n", count);
         return 0;

@@ -29,11 +29,11 @@ Eigen::Isometry3f e_IA[BENCH_NIN], e_IB[BENCH_NIN], e_Iout[BENCH_NIN];
 #endif
 
 #if BENCH_HAVE_KDL
-KDL::Frame k_A[BENCH_NIN], k_B[BENCH_NIN], k_out[BENCH_NIN];
+KDL::Frame k_A[BENCH_NIN], k_B[BENCH_NIN], k_out[BENCH_NIN_FK];
 KDL::Chain *k_chain;
 KDL::ChainFkSolverPos_recursive *k_fk;
 KDL::JntArray *k_q;   // BENCH_NIN joint arrays, in radians
-int k_status[BENCH_NIN];
+int k_status[BENCH_NIN_FK];
 #endif
 
 } // namespace
@@ -43,24 +43,28 @@ extern "C" {
 #if BENCH_HAVE_EIGEN
 BENCH_NOINLINE void bw_eigen_mat4_mul(uint32_t i)
 {
+    i &= BENCH_MASK;
     e_out[i].noalias() = e_A[i] * e_B[i];
     bench_sink_f = e_out[i](0, 3);
 }
 
 BENCH_NOINLINE void bw_eigen_iso_mul(uint32_t i)
 {
+    i &= BENCH_MASK;
     e_Iout[i] = e_IA[i] * e_IB[i];
     bench_sink_f = e_Iout[i](0, 3);
 }
 
 BENCH_NOINLINE void bw_eigen_iso_inv(uint32_t i)
 {
+    i &= BENCH_MASK;
     e_Iout[i] = e_IA[i].inverse(Eigen::Isometry);
     bench_sink_f = e_Iout[i](0, 3);
 }
 
 BENCH_NOINLINE void bw_eigen_mat4_inv(uint32_t i)
 {
+    i &= BENCH_MASK;
     e_out[i] = e_A[i].inverse();
     bench_sink_f = e_out[i](0, 3);
 }
@@ -69,18 +73,21 @@ BENCH_NOINLINE void bw_eigen_mat4_inv(uint32_t i)
 #if BENCH_HAVE_KDL
 BENCH_NOINLINE void bw_kdl_frame_mul(uint32_t i)
 {
+    i &= BENCH_MASK;
     k_out[i] = k_A[i] * k_B[i];
     bench_sink_d = k_out[i].p.x();
 }
 
 BENCH_NOINLINE void bw_kdl_frame_inv(uint32_t i)
 {
+    i &= BENCH_MASK;
     k_out[i] = k_A[i].Inverse();
     bench_sink_d = k_out[i].p.x();
 }
 
 BENCH_NOINLINE void bw_kdl_fk(uint32_t i)
 {
+    i &= BENCH_FK_MASK;
     k_status[i] = k_fk->JntToCart(k_q[i], k_out[i]);
     bench_sink_d = k_out[i].p.x();
 }
@@ -137,8 +144,8 @@ int bench_cpp_setup(const float (*A)[16], const float (*B)[16], const double (*q
                                          KDL::Frame::DH(r.a, r.alpha_deg * d2r, r.d, r.theta_deg * d2r)));
     }
     k_fk = new KDL::ChainFkSolverPos_recursive(*k_chain);
-    k_q = new KDL::JntArray[BENCH_NIN];
-    for (uint32_t i = 0; i < BENCH_NIN; i++) {
+    k_q = new KDL::JntArray[BENCH_NIN_FK];
+    for (uint32_t i = 0; i < BENCH_NIN_FK; i++) {
         k_q[i].resize(bench_puma560.n);
         for (unsigned j = 0; j < bench_puma560.n; j++) k_q[i](j) = q_deg[i][j] * (3.14159265358979323846 / 180.0);
     }
