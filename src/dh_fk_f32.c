@@ -133,7 +133,8 @@ dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
     float st, ct, d;
     DH_ASSERT(r != NULL);
     DH_ASSERT(A != NULL);
-    if (i >= r->n || (r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_ARG;
+    if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS || (r->flags & DH_ROBOT_HAS_F32) == 0u)
+        return DH_ERR_ARG;
     j = &r->joint[i];
     {
         float off = (j->type == DH_JOINT_REVOLUTE) ? j->theta_deg : j->d;
@@ -153,7 +154,8 @@ static dh_status fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frames, 
     dh_status st;
     DH_ASSERT(r != NULL);
     DH_ASSERT(q != NULL);
-    if (r->n == 0u || (r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_ARG;
+    if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS || (r->flags & DH_ROBOT_HAS_F32) == 0u)
+        return DH_ERR_ARG;
     st = check_q(r, q);
     if (st != DH_OK) return st;
 

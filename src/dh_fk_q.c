@@ -312,7 +312,7 @@ dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A)
     int ovf = 0;
     DH_ASSERT(r != NULL);
     DH_ASSERT(A != NULL);
-    if (i >= r->n) return DH_ERR_ARG;
+    if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_OVERFLOW;
     joint_values(&r->joint[i], q, &st, &ct, &d, &ovf);
     link_direct(A, r->conv, st, ct, &r->joint[i], d, &ovf);
@@ -327,7 +327,7 @@ static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, d
     DH_ASSERT(r != NULL);
     DH_ASSERT(q != NULL);
     small = (r->flags & DH_ROBOT_BASE_SMALL_Q) != 0u;
-    if (r->n == 0u) return DH_ERR_ARG;
+    if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_OVERFLOW;
 
     if (r->flags & DH_ROBOT_BASE_ID_Q) {

@@ -202,7 +202,7 @@ dh_status dh_robot_set_limits_f32(dh_robot *r, uint32_t i, float qmin, float qma
     dh_joint *j;
     unsigned frac;
     DH_ASSERT(r != NULL);
-    if (i >= r->n) return DH_ERR_ARG;
+    if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if (!is_finite(qmin) || !is_finite(qmax)) return DH_ERR_NAN;
     if (qmin > qmax) return DH_ERR_ARG;
     j = &r->joint[i];
@@ -282,6 +282,7 @@ dh_status dh_robot_check_limits_f32(const dh_robot *r, const float *q)
     uint32_t i;
     DH_ASSERT(r != NULL);
     DH_ASSERT(q != NULL);
+    if (r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     for (i = 0u; i < r->n; i++)
         if (!is_finite(q[i])) return DH_ERR_NAN;
     for (i = 0u; i < r->n; i++) {

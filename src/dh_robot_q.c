@@ -64,7 +64,7 @@ dh_status dh_robot_add_joint_q(dh_robot *r, dh_joint_type type, dh_qpos a, dh_qp
 dh_status dh_robot_set_limits_q(dh_robot *r, uint32_t i, int32_t qmin, int32_t qmax)
 {
     DH_ASSERT(r != NULL);
-    if (i >= r->n || qmin > qmax) return DH_ERR_ARG;
+    if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS || qmin > qmax) return DH_ERR_ARG;
     r->joint[i].qmin_q = qmin;
     r->joint[i].qmax_q = qmax;
     return DH_OK;
@@ -75,6 +75,7 @@ dh_status dh_robot_check_limits_q(const dh_robot *r, const int32_t *q)
     uint32_t i;
     DH_ASSERT(r != NULL);
     DH_ASSERT(q != NULL);
+    if (r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     for (i = 0u; i < r->n; i++) {
         const dh_joint *j = &r->joint[i];
         if (j->qmin_q <= j->qmax_q && (q[i] < j->qmin_q || q[i] > j->qmax_q)) return DH_ERR_LIMIT;

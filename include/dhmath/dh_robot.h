@@ -39,6 +39,13 @@
  *   half an LSB (2^-DH_QPOS_FRAC) per joint plus the rotation error times
  *   the reach.
  *
+ * Description out of range: dh_robot is a plain caller-owned struct, so
+ * its n may hold any value (a corrupted copy, or one made with a larger
+ * DH_MAX_JOINTS). Every function that walks the joints (limits, link, FK)
+ * returns DH_ERR_ARG with its outputs untouched when n > DH_MAX_JOINTS,
+ * and never reads or writes past joint[]. The full bad-input table is
+ * docs/errors.md.
+ *
  * Overflow (fixed path): a length a or d (or d + q) equal to INT32_MIN is
  * used as -INT32_MAX (one LSB), so no intermediate 64-bit sum can wrap;
  * any saturated output entry makes the function return DH_ERR_OVERFLOW.
@@ -176,14 +183,15 @@ dh_status dh_robot_add_joint_q(dh_robot *r, dh_joint_type type, dh_qpos a, dh_qp
  * Degrees for R joints, length unit for P joints. The fixed-path limits are
  * the values rounded to dh_q16 / dh_qpos, saturated to the int32 range (a
  * limit beyond the Q range does not restrict fixed-point values).
- * @return DH_OK; DH_ERR_ARG when i >= n or qmin > qmax; DH_ERR_NAN for
- *         NaN/Inf limits. On error r is untouched.
+ * @return DH_OK; DH_ERR_ARG when i >= n, n > DH_MAX_JOINTS or qmin > qmax;
+ *         DH_ERR_NAN for NaN/Inf limits. On error r is untouched.
  */
 dh_status dh_robot_set_limits_f32(dh_robot *r, uint32_t i, float qmin, float qmax);
 /**
  * @brief Fixed-path limits only of joint i (dh_q16 deg for R, dh_qpos for P).
  *        The float limits are not changed. Integer only.
- * @return DH_OK; DH_ERR_ARG when i >= n or qmin > qmax (r untouched).
+ * @return DH_OK; DH_ERR_ARG when i >= n, n > DH_MAX_JOINTS or qmin > qmax
+ *         (r untouched).
  */
 dh_status dh_robot_set_limits_q(dh_robot *r, uint32_t i, int32_t qmin, int32_t qmax);
 
@@ -219,11 +227,12 @@ dh_status dh_robot_set_tool_q(dh_robot *r, const dh_frame_q *tool);
  * @brief Check q (n values, deg for R, length for P) against the float limits.
  * @return DH_OK when every q[i] with limits is within [qmin, qmax];
  *         DH_ERR_NAN when any q[i] is NaN/Inf (checked first, all joints);
- *         DH_ERR_LIMIT otherwise.
+ *         DH_ERR_LIMIT otherwise; DH_ERR_ARG when n > DH_MAX_JOINTS.
  */
 dh_status dh_robot_check_limits_f32(const dh_robot *r, const float *q);
 /** @brief Check Q joint values (dh_q16 deg / dh_qpos) against the fixed limits.
- *  @return DH_OK or DH_ERR_LIMIT. Integer only. */
+ *  @return DH_OK or DH_ERR_LIMIT; DH_ERR_ARG when n > DH_MAX_JOINTS.
+ *  Integer only. */
 dh_status dh_robot_check_limits_q(const dh_robot *r, const int32_t *q);
 
 /* ---- forward kinematics, float ------------------------------------------ */
@@ -232,7 +241,8 @@ dh_status dh_robot_check_limits_q(const dh_robot *r, const int32_t *q);
  * @brief Link matrix A_i of joint i (0-based) at joint value q.
  * @param q degrees (R) or length (P), finite.
  * @param A output (bottom row 0 0 0 1); untouched on error.
- * @return DH_OK; DH_ERR_ARG when i >= n or the float path is unavailable;
+ * @return DH_OK; DH_ERR_ARG when i >= n, n > DH_MAX_JOINTS or the float
+ *         path is unavailable;
  *         DH_ERR_NAN for non-finite q; DH_ERR_OVERFLOW when q + offset
  *         overflows to infinity. On error A is untouched.
  */
@@ -251,8 +261,8 @@ dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A);
  * @param r robot (not NULL), n >= 1
  * @param q n joint values (not NULL); must not alias T
  * @param T end frame; bottom row written as exactly 0 0 0 1
- * @return DH_OK; DH_ERR_ARG when n == 0 or the float path is unavailable
- *         (T untouched); DH_ERR_NAN when any q is NaN/Inf (T untouched);
+ * @return DH_OK; DH_ERR_ARG when n == 0, n > DH_MAX_JOINTS or the float
+ *         path is unavailable (T untouched); DH_ERR_NAN when any q is NaN/Inf (T untouched);
  *         DH_ERR_OVERFLOW when q + offset overflows to infinity (T
  *         untouched) or when an entry of the result is not finite (huge
  *         prismatic values, base or tool; T written).
@@ -272,7 +282,8 @@ dh_status dh_fk_frames_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frame
 /**
  * @brief Link matrix A_i of joint i at Q joint value q (dh_q16 deg for R,
  *        dh_qpos for P).
- * @return DH_OK; DH_ERR_ARG when i >= n; DH_ERR_OVERFLOW when the fixed path
+ * @return DH_OK; DH_ERR_ARG when i >= n or n > DH_MAX_JOINTS (A untouched);
+ *         DH_ERR_OVERFLOW when the fixed path
  *         is unavailable (A untouched) or d + q saturates (A written with the
  *         saturated d).
  */
@@ -289,7 +300,8 @@ dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A);
  * UR5 3.5e-5 mm / 4.2 LSB, Panda 3.6e-5 mm / 4.6 LSB (position / rotation
  * entry of Q2.30); targets 5e-4 mm / 64 LSB. See docs/accuracy_fk.md.
  * @param T output, must not alias q.
- * @return DH_OK; DH_ERR_ARG when n == 0 (T untouched); DH_ERR_OVERFLOW
+ * @return DH_OK; DH_ERR_ARG when n == 0 or n > DH_MAX_JOINTS (T
+ *         untouched); DH_ERR_OVERFLOW
  *         when the fixed path is unavailable (constants did not fit: T
  *         untouched) or when a position or rotation entry saturated (T
  *         written with the saturated values).

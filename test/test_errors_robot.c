@@ -1,0 +1,498 @@
+/*
+ * test_errors_robot.c - bad input to the robot description and forward
+ * kinematics (docs/errors.md, section dh_robot.h).
+ *
+ * Robots with 0 joints, a full robot, a description whose n field is beyond
+ * DH_MAX_JOINTS (a corrupted or foreign struct), unknown enum values,
+ * NaN/Inf parameters and joint values, limits, prismatic joints beyond
+ * limits and beyond the representable range, constants that do not fit the
+ * fixed path. Outputs are pre-filled with a canary and checked untouched
+ * (or equal to the documented value). References: test/support_robots.c
+ * (double DH chains built from the elementary matrices).
+ */
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "dht.h"
+#include "support_robots.h"
+#include "dhmath/dh_fixed.h"
+#include "dhmath/dh_mat4.h"
+#include "dhmath/dh_robot.h"
+
+static void fill_canary(void *p, size_t n) { memset(p, 0xA5, n); }
+static int is_canary(const void *p, size_t n)
+{
+    const unsigned char *b = (const unsigned char *)p;
+    size_t i;
+    for (i = 0; i < n; i++)
+        if (b[i] != 0xA5u) return 0;
+    return 1;
+}
+#define CANARY(x) fill_canary(&(x), sizeof(x))
+#define UNTOUCHED(x) DHT_TRUE_MSG(is_canary(&(x), sizeof(x)), "%s written on error", #x)
+
+static float f32_bits(uint32_t u)
+{
+    float f;
+    memcpy(&f, &u, sizeof f);
+    return f;
+}
+static float bad_value(unsigned k)
+{
+    static const uint32_t b[4] = { 0x7FC00000u, 0x7F800000u, 0xFF800000u, 0xFFC00001u };
+    return f32_bits(b[k & 3u]);
+}
+
+/* a 3-joint robot R-P-R in metres with limits on every joint */
+static void small_robot(dh_robot *r, dh_convention conv)
+{
+    DHT_EQ_INT(dh_robot_init(r, conv), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, 0.3f, 0.1f, 90.0f, 0.0f), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(r, DH_JOINT_PRISMATIC, 0.0f, 0.2f, -90.0f, 10.0f), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, 0.25f, 0.0f, 0.0f, 5.0f), DH_OK);
+    DHT_EQ_INT(dh_robot_set_limits_f32(r, 0, -170.0f, 170.0f), DH_OK);
+    DHT_EQ_INT(dh_robot_set_limits_f32(r, 1, 0.0f, 0.5f), DH_OK);
+    DHT_EQ_INT(dh_robot_set_limits_f32(r, 2, -120.0f, 120.0f), DH_OK);
+}
+
+/* init: unknown convention -> ARG, r untouched */
+static void robot_init_bad_conv(void)
+{
+    dh_robot r;
+    CANARY(r);
+    DHT_EQ_INT(dh_robot_init(&r, (dh_convention)2), DH_ERR_ARG);
+    UNTOUCHED(r);
+    DHT_EQ_INT(dh_robot_init(&r, (dh_convention)-1), DH_ERR_ARG);
+    UNTOUCHED(r);
+}
+
+/* adding joints: full robot, unknown type, NaN/Inf parameters -> error,
+ * r untouched (byte for byte) */
+static void robot_add_joint_bad(void)
+{
+    dh_robot r, copy;
+    unsigned i, k, pos;
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+    copy = r;
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, (dh_joint_type)2, 0.1f, 0.0f, 0.0f, 0.0f), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, (dh_joint_type)-1, 0, 0, 0, 0), DH_ERR_ARG);
+    DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
+    for (pos = 0; pos < 4; pos++) {
+        for (k = 0; k < 4; k++) {
+            float p[4] = { 0.1f, 0.2f, 30.0f, 40.0f };
+            p[pos] = bad_value(k);
+            DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, p[0], p[1], p[2], p[3]), DH_ERR_NAN);
+            DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
+        }
+    }
+    /* fill to capacity, then one more (both builders) */
+    for (i = 0; i < (unsigned)DH_MAX_JOINTS; i++)
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.1f, 0.0f, 0.0f, 0.0f), DH_OK);
+    DHT_EQ_INT(r.n, DH_MAX_JOINTS);
+    copy = r;
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.1f, 0.0f, 0.0f, 0.0f), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 1, 0, 0, 0), DH_ERR_ARG);
+    DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
+}
+
+/* Constants that do not fit the fixed path: the joint is added, the fixed
+ * path is marked unavailable (dh_fk_q -> OVERFLOW, T untouched), the float
+ * path is unaffected and correct. */
+static void robot_unrepresentable_fixed_constants(void)
+{
+    const float big = (float)ldexp(1.0, 31 - DH_QPOS_FRAC); /* first length beyond dh_qpos */
+    static const float angs[] = { 32768.0f, -32768.5f, 1e30f };
+    unsigned k;
+    for (k = 0; k < 5; k++) {
+        dh_robot r;
+        dh_frame_q Tq;
+        dh_mat4_f32 T;
+        int32_t qq[2] = { 0, 0 };
+        float q[2] = { 10.0f, 20.0f };
+        double qd[2] = { 10.0, 20.0 };
+        dhs_mat4_d R;
+        DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 1.0f, 0.0f, 0.0f, 0.0f), DH_OK);
+        if (k == 0) DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, big, 0.0f, 0.0f, 0.0f), DH_OK);
+        else if (k == 1) DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, -big * 2.0f, 0.0f, 0.0f), DH_OK);
+        else DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.5f, 0.0f,
+                                               (k == 2) ? angs[0] : 0.0f, (k >= 3) ? angs[k - 2] : 0.0f),
+                        DH_OK);
+        DHT_EQ_INT(r.n, 2);
+        DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) == 0u);
+        DHT_TRUE((r.flags & DH_ROBOT_Q_NO_JOINT) != 0u);
+        DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) != 0u);
+        CANARY(Tq);
+        DHT_EQ_INT(dh_fk_q(&r, qq, &Tq), DH_ERR_OVERFLOW);
+        UNTOUCHED(Tq);
+        DHT_EQ_INT(dh_link_q(&r, 0, 0, &Tq), DH_ERR_OVERFLOW);
+        UNTOUCHED(Tq);
+        {
+            dh_frame_q frames[2];
+            CANARY(frames);
+            DHT_EQ_INT(dh_fk_frames_q(&r, qq, frames, &Tq), DH_ERR_OVERFLOW);
+            UNTOUCHED(frames);
+            UNTOUCHED(Tq);
+        }
+        /* float path: q = 0 on joint 1 so that the float sum q + theta is
+         * theta itself; the reference gets theta reduced exactly (a double
+         * of 1e30 degrees cannot be converted to radians accurately) */
+        q[1] = 0.0f;
+        qd[1] = 0.0;
+        DHT_EQ_INT(dh_fk_f32(&r, q, &T), DH_OK);
+        {
+            dh_robot r2 = r;
+            r2.joint[1].theta_deg = (float)fmod((double)r.joint[1].theta_deg, 360.0);
+            dhs_fk_ref_f32(&r2, qd, NULL, &R);
+        }
+        /* 3e-7 relative to the reach (docs/accuracy_fk.md) */
+        DHT_TRUE(dhs_pos_err_f32(&T, &R) <= 3e-7 * (1.5 + fabs((double)r.joint[1].a) + fabs((double)r.joint[1].d)));
+        DHT_TRUE(dhs_rot_err_f32(&T, &R) <= 3.1e-7);
+    }
+}
+
+/* limits: i >= n -> ARG, NaN/Inf -> NAN, qmin > qmax -> ARG, r untouched;
+ * limits beyond the Q range saturate the fixed-path limits */
+static void robot_set_limits_bad(void)
+{
+    dh_robot r, copy;
+    unsigned k;
+    small_robot(&r, DH_CONV_STANDARD);
+    copy = r;
+    DHT_EQ_INT(dh_robot_set_limits_f32(&r, 3, -1.0f, 1.0f), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_set_limits_f32(&r, 0xFFFFFFFFu, -1.0f, 1.0f), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_set_limits_f32(&r, 0, 1.0f, -1.0f), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_set_limits_q(&r, 3, -1, 1), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_set_limits_q(&r, 1, 2, 1), DH_ERR_ARG);
+    for (k = 0; k < 4; k++) {
+        DHT_EQ_INT(dh_robot_set_limits_f32(&r, 1, bad_value(k), 1.0f), DH_ERR_NAN);
+        DHT_EQ_INT(dh_robot_set_limits_f32(&r, 1, -1.0f, bad_value(k)), DH_ERR_NAN);
+    }
+    DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
+    /* beyond the Q range: saturated fixed limits */
+    DHT_EQ_INT(dh_robot_set_limits_f32(&r, 0, -1e9f, 1e9f), DH_OK);
+    DHT_EQ_INT(r.joint[0].qmin_q, INT32_MIN);
+    DHT_EQ_INT(r.joint[0].qmax_q, INT32_MAX);
+    DHT_EQ_INT(dh_robot_set_limits_f32(&r, 1, -FLT_MAX, 40000.0f), DH_OK);
+    DHT_EQ_INT(r.joint[1].qmin_q, INT32_MIN);
+    DHT_EQ_INT(r.joint[1].qmax_q, (40000.0 * ldexp(1.0, DH_QPOS_FRAC) >= 2147483648.0)
+                                      ? INT32_MAX : (int32_t)(40000.0 * ldexp(1.0, DH_QPOS_FRAC)));
+}
+
+/* base/tool: NaN/Inf -> NAN, bottom row not 0 0 0 1 -> NOT_RIGID, r
+ * untouched; not representable in Q -> OK with the fixed path off */
+static void robot_base_tool_bad(void)
+{
+    dh_robot r, copy;
+    dh_mat4_f32 B;
+    unsigned e, k;
+    small_robot(&r, DH_CONV_MODIFIED);
+    copy = r;
+    for (e = 0; e < 16; e++) {
+        for (k = 0; k < 4; k++) {
+            dh_mat4_identity_f32(&B);
+            B.m[e / 4][e % 4] = bad_value(k);
+            DHT_EQ_INT(dh_robot_set_base_f32(&r, &B), DH_ERR_NAN);
+            DHT_EQ_INT(dh_robot_set_tool_f32(&r, &B), DH_ERR_NAN);
+        }
+    }
+    for (e = 0; e < 4; e++) {
+        dh_mat4_identity_f32(&B);
+        B.m[e][3] = (e == 3) ? 1.0000001f : -1e-38f;
+        DHT_EQ_INT(dh_robot_set_base_f32(&r, &B), DH_ERR_NOT_RIGID);
+        DHT_EQ_INT(dh_robot_set_tool_f32(&r, &B), DH_ERR_NOT_RIGID);
+    }
+    DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
+    /* not representable: rotation entry 2.0, position beyond dh_qpos */
+    dh_mat4_scale_f32(&B, 2.0f, 1.0f, 1.0f);
+    DHT_EQ_INT(dh_robot_set_base_f32(&r, &B), DH_OK);
+    DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) == 0u && (r.flags & DH_ROBOT_Q_NO_BASE) != 0u);
+    DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) != 0u);
+    dh_mat4_trans_f32(&B, 0.0f, (float)ldexp(1.0, 32 - DH_QPOS_FRAC), 0.0f);
+    DHT_EQ_INT(dh_robot_set_tool_f32(&r, &B), DH_OK);
+    DHT_TRUE((r.flags & DH_ROBOT_Q_NO_TOOL) != 0u);
+    {
+        dh_frame_q T;
+        int32_t q[3] = { 0, 0, 0 };
+        CANARY(T);
+        DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_OVERFLOW);
+        UNTOUCHED(T);
+    }
+    /* setting representable frames again restores the fixed path */
+    dh_mat4_identity_f32(&B);
+    DHT_EQ_INT(dh_robot_set_base_f32(&r, &B), DH_OK);
+    DHT_EQ_INT(dh_robot_set_tool_f32(&r, &B), DH_OK);
+    DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) != 0u);
+}
+
+/* limit checks: NaN first (even on a joint without limits), then LIMIT;
+ * prismatic joints beyond their limits */
+static void robot_check_limits_bad(void)
+{
+    dh_robot r;
+    unsigned k;
+    float q[3] = { 0.0f, 0.25f, 0.0f };
+    int32_t qq[3] = { 0, 0, 0 };
+    small_robot(&r, DH_CONV_STANDARD);
+    DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_OK);
+    q[1] = 0.5000001f;                           /* prismatic just beyond */
+    DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_ERR_LIMIT);
+    q[1] = -1e-30f;
+    DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_ERR_LIMIT);
+    q[1] = 0.5f;                                 /* on the limit: inside */
+    DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_OK);
+    q[0] = 1e30f;
+    DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_ERR_LIMIT);
+    q[0] = 0.0f;
+    for (k = 0; k < 4; k++) {
+        q[2] = bad_value(k);
+        q[1] = 7.0f; /* also out of limits: NaN is reported first */
+        DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_ERR_NAN);
+    }
+    /* a joint without limits still rejects NaN */
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, 0.0f, 0.0f, 0.0f, 0.0f), DH_OK);
+    q[0] = bad_value(0);
+    DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_ERR_NAN);
+    q[0] = -FLT_MAX;
+    DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_OK);
+    /* fixed limits */
+    small_robot(&r, DH_CONV_STANDARD);
+    qq[1] = (int32_t)(0.5 * ldexp(1.0, DH_QPOS_FRAC)) + 1;
+    DHT_EQ_INT(dh_robot_check_limits_q(&r, qq), DH_ERR_LIMIT);
+    qq[1] = 0;
+    qq[0] = INT32_MIN;
+    DHT_EQ_INT(dh_robot_check_limits_q(&r, qq), DH_ERR_LIMIT);
+    qq[0] = 170 * 65536;
+    DHT_EQ_INT(dh_robot_check_limits_q(&r, qq), DH_OK);
+    DHT_EQ_INT(dh_robot_set_limits_q(&r, 0, INT32_MIN, INT32_MAX), DH_OK);
+    qq[0] = INT32_MIN;
+    DHT_EQ_INT(dh_robot_check_limits_q(&r, qq), DH_OK);
+}
+
+/* float FK: n == 0 -> ARG; NaN/Inf q -> NAN; q + offset overflowing ->
+ * OVERFLOW (T untouched); float path unavailable -> ARG; huge prismatic
+ * values whose frame is not finite -> OVERFLOW with T written */
+static void robot_fk_f32_bad(void)
+{
+    dh_robot r;
+    dh_mat4_f32 T, A, frames[3];
+    float q[3] = { 10.0f, 0.1f, -20.0f };
+    unsigned k, j;
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+    CANARY(T);
+    DHT_EQ_INT(dh_fk_f32(&r, q, &T), DH_ERR_ARG);
+    UNTOUCHED(T);
+    CANARY(frames);
+    DHT_EQ_INT(dh_fk_frames_f32(&r, q, frames, &T), DH_ERR_ARG);
+    UNTOUCHED(frames);
+    UNTOUCHED(T);
+    DHT_EQ_INT(dh_link_f32(&r, 0, 0.0f, &A), DH_ERR_ARG);
+    for (j = 0; j < 2; j++) {
+        small_robot(&r, j ? DH_CONV_MODIFIED : DH_CONV_STANDARD);
+        for (k = 0; k < 3 * 4; k++) {
+            float qb[3] = { 10.0f, 0.1f, -20.0f };
+            qb[k / 4] = bad_value(k);
+            CANARY(T);
+            DHT_EQ_INT(dh_fk_f32(&r, qb, &T), DH_ERR_NAN);
+            UNTOUCHED(T);
+            CANARY(frames);
+            DHT_EQ_INT(dh_fk_frames_f32(&r, qb, frames, &T), DH_ERR_NAN);
+            UNTOUCHED(frames);
+            UNTOUCHED(T);
+            CANARY(A);
+            DHT_EQ_INT(dh_link_f32(&r, k / 4, qb[k / 4], &A), DH_ERR_NAN);
+            UNTOUCHED(A);
+        }
+        /* q + offset overflows to infinity (theta offset 5, d offset 0.2) */
+        q[0] = 10.0f; q[1] = FLT_MAX; q[2] = 0.0f;
+        r.joint[1].d = FLT_MAX; /* offset of the prismatic joint */
+        CANARY(T);
+        DHT_EQ_INT(dh_fk_f32(&r, q, &T), DH_ERR_OVERFLOW);
+        UNTOUCHED(T);
+        CANARY(A);
+        DHT_EQ_INT(dh_link_f32(&r, 1, q[1], &A), DH_ERR_OVERFLOW);
+        UNTOUCHED(A);
+        r.joint[1].d = 0.2f;
+        q[1] = 0.1f;
+        q[2] = -FLT_MAX;
+        r.joint[2].theta_deg = -FLT_MAX;
+        DHT_EQ_INT(dh_fk_f32(&r, q, &T), DH_ERR_OVERFLOW);
+        UNTOUCHED(T);
+        r.joint[2].theta_deg = 5.0f;
+        /* huge prismatic value: finite sum, non-finite frame (through a
+         * scaling base, allowed) -> OVERFLOW, T written */
+        {
+            dh_mat4_f32 S;
+            dh_mat4_scale_f32(&S, 4.0f, 4.0f, 4.0f);
+            DHT_EQ_INT(dh_robot_set_base_f32(&r, &S), DH_OK);
+        }
+        q[1] = 3e38f;
+        q[2] = 0.0f;
+        DHT_EQ_INT(dh_fk_f32(&r, q, &T), DH_ERR_OVERFLOW);
+        DHT_TRUE(!is_canary(&T, sizeof T));
+        DHT_TRUE(!dh_mat4_isfinite_f32(&T));
+        DHT_EQ_F32_BITS(DH_M4(&T, 3, 3), 1.0f);
+        DHT_EQ_INT(dh_fk_frames_f32(&r, q, frames, NULL), DH_ERR_OVERFLOW);
+        DHT_EQ_INT(dh_fk_frames_f32(&r, q, frames, &T), DH_ERR_OVERFLOW);
+        {
+            dh_mat4_f32 I;
+            dh_mat4_identity_f32(&I);
+            DHT_EQ_INT(dh_robot_set_base_f32(&r, &I), DH_OK);
+        }
+        /* huge but finite revolute angles are fine (exact reduction) */
+        {
+            float qh[3] = { 1e30f, 0.25f, -3e38f };
+            double qd[3];
+            dhs_mat4_d R;
+            /* the reference reduces the float sums q + theta exactly */
+            qd[0] = fmod((double)(qh[0] + r.joint[0].theta_deg), 360.0) - (double)r.joint[0].theta_deg;
+            qd[1] = 0.25;
+            qd[2] = fmod((double)(qh[2] + r.joint[2].theta_deg), 360.0) - (double)r.joint[2].theta_deg;
+            DHT_EQ_INT(dh_fk_f32(&r, qh, &T), DH_OK);
+            dhs_fk_ref_f32(&r, qd, NULL, &R);
+            DHT_TRUE(dhs_pos_err_f32(&T, &R) <= 3e-7);
+            DHT_TRUE(dhs_rot_err_f32(&T, &R) <= 3.1e-7);
+        }
+        /* link index beyond n */
+        CANARY(A);
+        DHT_EQ_INT(dh_link_f32(&r, 3, 0.0f, &A), DH_ERR_ARG);
+        UNTOUCHED(A);
+    }
+    /* float path unavailable: a joint added with _q, or a base set with _q */
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, DH_QPOS_ONE, 0, 0, 0), DH_OK);
+    q[0] = 0.0f;
+    CANARY(T);
+    DHT_EQ_INT(dh_fk_f32(&r, q, &T), DH_ERR_ARG);
+    UNTOUCHED(T);
+    DHT_EQ_INT(dh_link_f32(&r, 0, 0.0f, &A), DH_ERR_ARG);
+    small_robot(&r, DH_CONV_STANDARD);
+    {
+        dh_frame_q F;
+        dh_frame_trans_q(&F, DH_QPOS_ONE, 0, 0);
+        DHT_EQ_INT(dh_robot_set_base_q(&r, &F), DH_OK);
+        DHT_EQ_INT(dh_robot_set_tool_q(&r, &F), DH_OK);
+    }
+    DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) == 0u);
+    q[0] = 0.0f; q[1] = 0.0f; q[2] = 0.0f;
+    DHT_EQ_INT(dh_fk_f32(&r, q, &T), DH_ERR_ARG);
+    UNTOUCHED(T);
+}
+
+/* fixed FK: n == 0 -> ARG; saturation of d + q and of positions ->
+ * OVERFLOW with T written (saturated); every int32 revolute value is fine */
+static void robot_fk_q_bad(void)
+{
+    dh_robot r;
+    dh_frame_q T, A, frames[3];
+    int32_t q[3] = { 0, 0, 0 };
+    unsigned k;
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_MODIFIED), DH_OK);
+    CANARY(T);
+    DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_ARG);
+    UNTOUCHED(T);
+    CANARY(frames);
+    DHT_EQ_INT(dh_fk_frames_q(&r, q, frames, &T), DH_ERR_ARG);
+    UNTOUCHED(frames);
+    UNTOUCHED(T);
+    DHT_EQ_INT(dh_link_q(&r, 0, 0, &A), DH_ERR_ARG);
+    for (k = 0; k < 2; k++) {
+        small_robot(&r, k ? DH_CONV_MODIFIED : DH_CONV_STANDARD);
+        CANARY(A);
+        DHT_EQ_INT(dh_link_q(&r, 3, 0, &A), DH_ERR_ARG);
+        UNTOUCHED(A);
+        /* prismatic q = INT32_MAX: d + q saturates */
+        q[0] = 0; q[1] = INT32_MAX; q[2] = 0;
+        CANARY(A);
+        DHT_EQ_INT(dh_link_q(&r, 1, q[1], &A), DH_ERR_OVERFLOW);
+        /* A written with d = INT32_MAX: standard p = (a c, a s, d), modified
+         * with alpha = -90 p = (a, -sa d, ca d) = (0, d, 0) */
+        DHT_EQ_INT(k ? A.p[1] : A.p[2], INT32_MAX);
+        CANARY(T);
+        DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_OVERFLOW);
+        DHT_TRUE(!is_canary(&T, sizeof T));
+        DHT_EQ_INT(dh_fk_frames_q(&r, q, frames, NULL), DH_ERR_OVERFLOW);
+        /* negative side: offset -1 + INT32_MIN saturates; offset +0.2 +
+         * INT32_MIN fits and is accepted */
+        q[1] = INT32_MIN;
+        DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_OK);
+        r.joint[1].d_q = -DH_QPOS_ONE;
+        DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_OVERFLOW);
+        r.joint[1].d_q = (int32_t)(0.2 * ldexp(1.0, DH_QPOS_FRAC) + 0.5);
+        /* every revolute int32 (incl. INT32_MIN) vs the double reference */
+        {
+            static const int32_t ext[] = { INT32_MIN, INT32_MAX, -1, 0x12345678 };
+            unsigned i;
+            for (i = 0; i < 4; i++) {
+                dhs_mat4_d R;
+                q[0] = ext[i]; q[1] = (int32_t)(0.3 * ldexp(1.0, DH_QPOS_FRAC)); q[2] = ext[3 - i];
+                DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_OK);
+                dhs_fk_ref_q(&r, q, NULL, &R);
+                DHT_TRUE(dhs_pos_err_q(&T, &R) <= 4.0 * ldexp(1.0, -DH_QPOS_FRAC));
+                DHT_TRUE(dhs_rot_err_q(&T, &R) <= 8.0 * ldexp(1.0, -30));
+            }
+        }
+    }
+}
+
+/* a description whose n is beyond DH_MAX_JOINTS (corrupted, or built for a
+ * larger DH_MAX_JOINTS): every function that walks the joints reports
+ * DH_ERR_ARG without reading past joint[], outputs untouched */
+static void robot_n_beyond_capacity(void)
+{
+    dh_robot r, copy;
+    dh_mat4_f32 T, frames[DH_MAX_JOINTS + 1];
+    dh_frame_q F, framesq[DH_MAX_JOINTS + 1];
+    float q[DH_MAX_JOINTS + 1];
+    int32_t qq[DH_MAX_JOINTS + 1];
+    unsigned i;
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+    for (i = 0; i < (unsigned)DH_MAX_JOINTS; i++) {
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.1f, 0.0f, 0.0f, 0.0f), DH_OK);
+        DHT_EQ_INT(dh_robot_set_limits_f32(&r, i, -10.0f, 10.0f), DH_OK);
+    }
+    for (i = 0; i < (unsigned)DH_MAX_JOINTS + 1u; i++) {
+        q[i] = 0.0f;
+        qq[i] = 0;
+    }
+    r.n = (uint32_t)DH_MAX_JOINTS + 1u;
+    copy = r;
+    CANARY(T);
+    DHT_EQ_INT(dh_fk_f32(&r, q, &T), DH_ERR_ARG);
+    UNTOUCHED(T);
+    CANARY(frames);
+    DHT_EQ_INT(dh_fk_frames_f32(&r, q, frames, &T), DH_ERR_ARG);
+    UNTOUCHED(frames);
+    DHT_EQ_INT(dh_link_f32(&r, DH_MAX_JOINTS, 0.0f, &T), DH_ERR_ARG);
+    UNTOUCHED(T);
+    CANARY(F);
+    DHT_EQ_INT(dh_fk_q(&r, qq, &F), DH_ERR_ARG);
+    UNTOUCHED(F);
+    CANARY(framesq);
+    DHT_EQ_INT(dh_fk_frames_q(&r, qq, framesq, &F), DH_ERR_ARG);
+    UNTOUCHED(framesq);
+    DHT_EQ_INT(dh_link_q(&r, DH_MAX_JOINTS, 0, &F), DH_ERR_ARG);
+    UNTOUCHED(F);
+    DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_check_limits_q(&r, qq), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_set_limits_f32(&r, DH_MAX_JOINTS, -1.0f, 1.0f), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_set_limits_q(&r, DH_MAX_JOINTS, -1, 1), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.1f, 0.0f, 0.0f, 0.0f), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 1, 0, 0, 0), DH_ERR_ARG);
+    DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
+}
+
+static const dht_case cases[] = {
+    DHT_CASE(robot_init_bad_conv),
+    DHT_CASE(robot_add_joint_bad),
+    DHT_CASE(robot_unrepresentable_fixed_constants),
+    DHT_CASE(robot_set_limits_bad),
+    DHT_CASE(robot_base_tool_bad),
+    DHT_CASE(robot_check_limits_bad),
+    DHT_CASE(robot_fk_f32_bad),
+    DHT_CASE(robot_fk_q_bad),
+    DHT_CASE(robot_n_beyond_capacity),
+};
+DHT_MAIN(cases)
