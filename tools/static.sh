@@ -55,9 +55,10 @@ done < <(grep -E '^\| *(misra-c2012-[0-9.]+|[a-zA-Z]+) *\|' docs/misra.md)
 # treats as returning and then reports every asserted pointer as
 # "possibly NULL".
 cpp_log="$B/cppcheck.txt"
+mkdir -p "$B/cppcheck"   # work files (ctu-info) stay out of src/
 "$CPPCHECK" --project="$B/compile_commands.json" -D__GNUC__=12 --library=gnu \
   --addon=misra --enable=warning,style,performance,portability,information \
-  --suppressions-list="$supp" --inline-suppr -q -j "$JOBS" \
+  --suppressions-list="$supp" --inline-suppr -q -j "$JOBS" --cppcheck-build-dir="$B/cppcheck" \
   --template='{file}:{line}:{column}: {severity}: {id}: {message}' 2>"$cpp_log" >/dev/null || true
 # unmatched deviations are reported as "unmatchedSuppression"
 ncpp=$(grep -c -E '^[^ ].*:-?[0-9]+:[0-9]+: ' "$cpp_log" || true)
