@@ -44,6 +44,9 @@ dh_status dh_jacobian_f32(const dh_robot *r, const float *q, float *J, dh_mat4_f
 
     n = r->n;
     if (n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    /* float path unavailable: stale float base/tool or joints without float
+     * parameters (checked here so that J stays untouched, also for n == 0) */
+    if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_ARG;
     if (r->conv != DH_CONV_STANDARD && r->conv != DH_CONV_MODIFIED) return DH_ERR_ARG;
     for (i = 0; i < n; i++) {
         if (!jac_finite(q[i])) return DH_ERR_NAN;
@@ -100,8 +103,14 @@ dh_status dh_jacobian_tool_f32(const dh_robot *r, const float *q, float *J, dh_m
     DH_ASSERT(q != NULL);
     DH_ASSERT(J != NULL);
 
+    /* dh_jacobian_f32 returns DH_ERR_OVERFLOW both with T computed (a
+     * non-finite result) and without it (a link that could not be formed:
+     * J zero-filled, T not written). A written T always ends in 1, so a 0
+     * placed there first tells the two apart; T is never used uninitialised. */
+    T.m[3][3] = 0.0f;
     st = dh_jacobian_f32(r, q, J, &T);
     if (st != DH_OK && st != DH_ERR_OVERFLOW) return st;
+    if (T.m[3][3] != 1.0f) return st;
     n = r->n;
     /* each half of each column: v' = R^T v (row k of R^T = column k of R) */
     for (c = 0; c < n; c++) {
@@ -115,7 +124,15 @@ dh_status dh_jacobian_tool_f32(const dh_robot *r, const float *q, float *J, dh_m
     return st;
 }
 
-/* |x| <= tol for every entry of R^T R - I. */
+/* det of the 3x3 whose columns are c0, c1, c2: c0 . (c1 x c2) */
+static float det3(const float *c0, const float *c1, const float *c2)
+{
+    return c0[0] * (c1[1] * c2[2] - c1[2] * c2[1]) + c0[1] * (c1[2] * c2[0] - c1[0] * c2[2]) +
+           c0[2] * (c1[0] * c2[1] - c1[1] * c2[0]);
+}
+
+/* |x| <= tol for every entry of R^T R - I, and det R > 0 (a reflection is
+ * orthonormal but not a rotation: its a(dR) would be meaningless). */
 static int rot_is_orthonormal(const dh_mat3_f32 *R, float tol)
 {
     uint32_t a, b, k;
@@ -126,7 +143,7 @@ static int rot_is_orthonormal(const dh_mat3_f32 *R, float tol)
             if (a == b) s -= 1.0f;
             if (!(fabsf(s) <= tol)) return 0;   /* NaN fails too */
         }
-    return 1;
+    return det3(R->m[0], R->m[1], R->m[2]) > 0.0f;
 }
 
 /*
@@ -214,7 +231,7 @@ dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh
     return DH_OK;
 }
 
-/* Rotation part of a dh_mat4_f32 orthonormal within tol. */
+/* Rotation part of a dh_mat4_f32 orthonormal within tol, det > 0. */
 static int rot4_is_orthonormal(const dh_mat4_f32 *T, float tol)
 {
     uint32_t a, b, k;
@@ -225,7 +242,7 @@ static int rot4_is_orthonormal(const dh_mat4_f32 *T, float tol)
             if (a == b) s -= 1.0f;
             if (!(fabsf(s) <= tol)) return 0;
         }
-    return 1;
+    return det3(T->m[0], T->m[1], T->m[2]) > 0.0f;
 }
 
 dh_status dh_pose_error_f32(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float e[6])

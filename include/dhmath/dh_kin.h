@@ -24,8 +24,9 @@ extern "C" {
 
 /**
  * Orthonormality tolerance of the rotation inputs of dh_rot_error_f32 and
- * dh_pose_error_f32: every entry of R^T R - I must be within it, otherwise
- * DH_ERR_NOT_RIGID. A rotation that is off by up to this amount yields an
+ * dh_pose_error_f32: every entry of R^T R - I must be within it and det R
+ * must be positive (a reflection is rejected), otherwise DH_ERR_NOT_RIGID.
+ * A rotation that is off by up to this amount yields an
  * error vector of that order of inaccuracy.
  */
 #define DH_ROT_ERROR_TOL 1e-3f
@@ -48,8 +49,10 @@ extern "C" {
  * @param T_end may be NULL; else receives the end frame (same value as
  *           dh_fk_f32 up to rounding: computed with dh_link_f32 and
  *           dh_mat4_mul_affine_f32 in chain order).
- * @return DH_OK; DH_ERR_NAN for a non-finite q (J, T_end untouched);
- *         DH_ERR_ARG for n > DH_MAX_JOINTS, unknown convention or joint type
+ * @return DH_OK (also for n == 0: J has no entries, T_end = base * tool);
+ *         DH_ERR_NAN for a non-finite q (J, T_end untouched);
+ *         DH_ERR_ARG for n > DH_MAX_JOINTS, the float path unavailable
+ *         (DH_ROBOT_HAS_F32 clear), unknown convention or joint type
  *         (J, T_end untouched); DH_ERR_OVERFLOW if a result is not finite
  *         (J and T_end hold the computed values); a status of dh_link_f32
  *         is passed on (J zero-filled, T_end untouched).
@@ -86,11 +89,12 @@ dh_status dh_jacobian_tool_f32(const dh_robot *r, const float *q, float *J, dh_m
  * used, so there is no domain error near 0 or 180 deg.
  *
  * @param R_target, R rotation matrices (column-major dh_mat3_f32),
- *        orthonormal within DH_ROT_ERROR_TOL. May alias each other.
+ *        orthonormal within DH_ROT_ERROR_TOL and with det > 0. May alias
+ *        each other.
  * @param w output (may not overlap the inputs).
  * @return DH_OK; DH_ERR_NAN for non-finite input; DH_ERR_NOT_RIGID if an
- *         input is not orthonormal within DH_ROT_ERROR_TOL (w untouched on
- *         error).
+ *         input is not orthonormal within DH_ROT_ERROR_TOL or is a
+ *         reflection (w untouched on error).
  *
  * Accuracy (test/test_jacobian.c, docs/accuracy_kin.md): |w - w_ref|
  * <= 6.1e-7 rad measured over random float rotations at all angles, below
@@ -105,8 +109,8 @@ dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh
  *
  * The error IK drives to zero (seed 003). Bottom rows are not read.
  * @return DH_OK; DH_ERR_NAN for a non-finite entry; DH_ERR_NOT_RIGID for a
- *         rotation part not orthonormal within DH_ROT_ERROR_TOL (e untouched
- *         on error).
+ *         rotation part not orthonormal within DH_ROT_ERROR_TOL or a
+ *         reflection (e untouched on error).
  */
 dh_status dh_pose_error_f32(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float e[6]);
 
