@@ -341,7 +341,8 @@ dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, flo
  * components (|phi| is formed after scaling by the largest component).
  * @param R output rotation.
  * @param phi rotation vector in radians, any finite value (not reduced: a
- *        length above 2 pi simply wraps).
+ *        length above 2 pi simply wraps; also when |phi| itself exceeds
+ *        FLT_MAX, the half angle |phi| / 2 being formed without overflow).
  * @return DH_OK; DH_ERR_NAN if a component is NaN/Inf. R untouched on
  *         error.
  * Accuracy: entry error <= 4e-7 for |phi| <= pi, including 1e-30 .. 1e-2
@@ -393,7 +394,9 @@ void dh_vee_f32(dh_vec3_f32 *v, const dh_mat3_f32 *S);
  *        consistency (Rdot R^T skew-symmetric); its symmetric part is
  *        ignored (see dh_vee_f32).
  * @return DH_OK; DH_ERR_NAN if an entry of R or Rdot is NaN/Inf;
- *         DH_ERR_NOT_RIGID if R is not a rotation. w untouched on error.
+ *         DH_ERR_NOT_RIGID if R is not a rotation; DH_ERR_OVERFLOW if the
+ *         inputs are finite but w is not (|Rdot| near FLT_MAX). w
+ *         untouched on error.
  * Accuracy: |w - w_exact| <= 3e-7 * max(1, |w|) per component (measured
  * 2.4e-7 for |w| <= 17 rad/s, with R and Rdot rounded from exact data).
  */
