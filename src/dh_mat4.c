@@ -238,52 +238,80 @@ void dh_mat4_set_rot_f32(dh_mat4_f32 *T, const dh_mat3_f32 *R)
 /* composition                                                            */
 /* ---------------------------------------------------------------------- */
 
+/*
+ * Column c of A*B is the combination of the columns of A with the weights
+ * of column c of B. The products below are written out column by column
+ * on whole 4-float columns held in locals: every input element is read
+ * before any output element is written, so out may alias A, B or both,
+ * and each 4-row statement is one vector multiply-add chain where the
+ * target has 4-wide float vectors (SSE2, NEON; plain scalar code on
+ * Cortex-M). The sums are evaluated left to right (k = 0, 1, 2, 3), the
+ * same order as the scalar definition, so results do not depend on the
+ * target.
+ */
+#define DH_COL_LOAD(v, M, c) \
+    do { (v)[0] = (M)->m[c][0]; (v)[1] = (M)->m[c][1]; (v)[2] = (M)->m[c][2]; (v)[3] = (M)->m[c][3]; } while (0)
+
 void dh_mat4_mul_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
 {
-    float a0[4], a1[4], a2[4], a3[4];
-    int c, r;
+    float a0[4], a1[4], a2[4], a3[4], c0[4], c1[4], c2[4], c3[4];
+    int r;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    /* The columns of A are copied (every output column needs all of them);
-     * column c of B is read completely before column c of out is written,
-     * so out may alias A, B or both. Column c of the product is the linear
-     * combination of the columns of A with the weights of column c of B. */
-    for (r = 0; r < 4; r++) {
-        a0[r] = A->m[0][r];
-        a1[r] = A->m[1][r];
-        a2[r] = A->m[2][r];
-        a3[r] = A->m[3][r];
+    DH_COL_LOAD(a0, A, 0);
+    DH_COL_LOAD(a1, A, 1);
+    DH_COL_LOAD(a2, A, 2);
+    DH_COL_LOAD(a3, A, 3);
+    {
+        const float x0 = B->m[0][0], y0 = B->m[0][1], z0 = B->m[0][2], w0 = B->m[0][3];
+        const float x1 = B->m[1][0], y1 = B->m[1][1], z1 = B->m[1][2], w1 = B->m[1][3];
+        const float x2 = B->m[2][0], y2 = B->m[2][1], z2 = B->m[2][2], w2 = B->m[2][3];
+        const float x3 = B->m[3][0], y3 = B->m[3][1], z3 = B->m[3][2], w3 = B->m[3][3];
+        for (r = 0; r < 4; r++) c0[r] = a0[r] * x0 + a1[r] * y0 + a2[r] * z0 + a3[r] * w0;
+        for (r = 0; r < 4; r++) c1[r] = a0[r] * x1 + a1[r] * y1 + a2[r] * z1 + a3[r] * w1;
+        for (r = 0; r < 4; r++) c2[r] = a0[r] * x2 + a1[r] * y2 + a2[r] * z2 + a3[r] * w2;
+        for (r = 0; r < 4; r++) c3[r] = a0[r] * x3 + a1[r] * y3 + a2[r] * z3 + a3[r] * w3;
     }
-    for (c = 0; c < 4; c++) {
-        const float b0 = B->m[c][0], b1 = B->m[c][1], b2 = B->m[c][2], b3 = B->m[c][3];
-        for (r = 0; r < 4; r++) out->m[c][r] = a0[r] * b0 + a1[r] * b1 + a2[r] * b2 + a3[r] * b3;
+    for (r = 0; r < 4; r++) {
+        out->m[0][r] = c0[r];
+        out->m[1][r] = c1[r];
+        out->m[2][r] = c2[r];
+        out->m[3][r] = c3[r];
     }
 }
 
 void dh_mat4_mul_affine_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
 {
-    float a0[4], a1[4], a2[4], a3[4];
-    int c, r;
+    float a0[4], a1[4], a2[4], a3[4], c0[4], c1[4], c2[4], c3[4];
+    int r;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
     /* Same shape as dh_mat4_mul_f32 without the bottom row of B. Row 3 is
      * computed 4-wide with the rest (so the code stays vector-shaped) and
-     * then overwritten with 0 0 0 1: the bottom row of A does not affect
+     * then replaced by 0 0 0 1: the bottom rows of A and B do not affect
      * the result. */
-    for (r = 0; r < 4; r++) {
-        a0[r] = A->m[0][r];
-        a1[r] = A->m[1][r];
-        a2[r] = A->m[2][r];
-        a3[r] = A->m[3][r];
-    }
-    for (c = 0; c < 3; c++) {
-        const float b0 = B->m[c][0], b1 = B->m[c][1], b2 = B->m[c][2];
-        for (r = 0; r < 4; r++) out->m[c][r] = a0[r] * b0 + a1[r] * b1 + a2[r] * b2;
-        out->m[c][3] = 0.0f;
-    }
+    DH_COL_LOAD(a0, A, 0);
+    DH_COL_LOAD(a1, A, 1);
+    DH_COL_LOAD(a2, A, 2);
+    DH_COL_LOAD(a3, A, 3);
     {
-        const float p0 = B->m[3][0], p1 = B->m[3][1], p2 = B->m[3][2];
-        for (r = 0; r < 4; r++) out->m[3][r] = a0[r] * p0 + a1[r] * p1 + a2[r] * p2 + a3[r];
-        out->m[3][3] = 1.0f;
+        const float x0 = B->m[0][0], y0 = B->m[0][1], z0 = B->m[0][2];
+        const float x1 = B->m[1][0], y1 = B->m[1][1], z1 = B->m[1][2];
+        const float x2 = B->m[2][0], y2 = B->m[2][1], z2 = B->m[2][2];
+        const float x3 = B->m[3][0], y3 = B->m[3][1], z3 = B->m[3][2];
+        for (r = 0; r < 4; r++) c0[r] = a0[r] * x0 + a1[r] * y0 + a2[r] * z0;
+        for (r = 0; r < 4; r++) c1[r] = a0[r] * x1 + a1[r] * y1 + a2[r] * z1;
+        for (r = 0; r < 4; r++) c2[r] = a0[r] * x2 + a1[r] * y2 + a2[r] * z2;
+        for (r = 0; r < 4; r++) c3[r] = a0[r] * x3 + a1[r] * y3 + a2[r] * z3 + a3[r];
     }
+    for (r = 0; r < 4; r++) {
+        out->m[0][r] = c0[r];
+        out->m[1][r] = c1[r];
+        out->m[2][r] = c2[r];
+        out->m[3][r] = c3[r];
+    }
+    out->m[0][3] = 0.0f;
+    out->m[1][3] = 0.0f;
+    out->m[2][3] = 0.0f;
+    out->m[3][3] = 1.0f;
 }
 
 void dh_mat4_premul_f32(dh_mat4_f32 *T, const dh_mat4_f32 *X)

@@ -12,6 +12,12 @@
 
 static int dh_finite(float x) { return fabsf(x) <= FLT_MAX; }
 
+#if defined(__GNUC__) || defined(__clang__)
+#define DH_NOINLINE __attribute__((noinline))
+#else
+#define DH_NOINLINE
+#endif
+
 /* ---------------------------------------------------------------------- */
 /* rigid inverse                                                          */
 /* ---------------------------------------------------------------------- */
@@ -235,15 +241,13 @@ static int dh_inv_gauss_jordan(dh_mat4_f32 *X)
     return 1;
 }
 
-dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
     dh_mat4_f32 X; /* the inverse being built */
     float m4[4] = { 0.0f, 0.0f, 0.0f, 0.0f }, z4[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     float mx, z, s = 1.0f, sg, na, nx;
     uint32_t e;
     int i, j;
-
-    DH_ASSERT(out != NULL && T != NULL);
 
     /* Lane-wise (vector-shaped) scan: z is NaN iff an element is NaN or
      * Inf (x * 0 is NaN exactly for those); mx = max |T_ij|. */
@@ -313,6 +317,188 @@ accept:
     if (z != z) return DH_ERR_OVERFLOW;
     *out = X;
     return DH_OK;
+}
+
+/* ---------------------------------------------------------------------- */
+/* general inverse: fast paths                                            */
+/* ---------------------------------------------------------------------- */
+
+/*
+ * The fast paths accept a matrix only when a cheap test PROVES it well
+ * conditioned; everything else (ill-conditioned, singular, NaN/Inf,
+ * extreme magnitudes) goes to dh_inv_certified, which decides.
+ *
+ * Test. For an n x n matrix A with squared row norms rho_i and
+ * S = sum rho_i = ||A||_F^2: every cofactor is a minor bounded by the
+ * product of the other rows' norms (Hadamard's inequality), so
+ *   n = 3: ||adj A||_F^2 <= 3 (rho0 rho1 + rho0 rho2 + rho1 rho2) <= S^2,
+ *   n = 4: ||adj A||_F^2 <= 4 e3(rho) <= S^3 / 4   (Maclaurin),
+ * and with ||A||_2 <= sqrt(S), A^-1 = adj A / det:
+ *   cond_2(A) <= S^1.5 / |det|   (n = 3),   S^2 / (2 |det|)   (n = 4).
+ * A fast path accepts only if that bound is <= DH_FAST_C = 2^16, tested
+ * without roots or divisions as det^2 C^2 >= S^3 (n = 3) and
+ * 4 det^2 C^2 >= S^4 (n = 4). Accepted matrices then have a 1-norm
+ * condition number <= n 2^16 <= 2^18 = DH_MAT4_COND_MAX / 2, so the
+ * certified criterion would accept them as well (the decision does not
+ * depend on the path), and their inverse needs no residual check: the
+ * adjugate's error is a few units of cond * u (measured in test_mat4_props).
+ * For a singular matrix the computed det is only rounding noise, below
+ * about 16 u S^(n/2), i.e. the bound would be > 2^18: it never passes.
+ * Both sides of the test scale alike (degree 2n), so the test is
+ * invariant under A -> c A; the range limits on S keep S^n, det^2 and the
+ * products normal floats, so the decision is exact. A NaN or Inf anywhere
+ * makes a comparison false.
+ * Rotations (S = 3, det = 1) pass with a margin of 2^32 / 27.
+ */
+#define DH_FAST_C2 4294967296.0f               /* C^2 = 2^32 */
+#define DH_FAST_LO3 5.9604644775390625e-8f     /* 2^-24: range of S, 3x3 */
+#define DH_FAST_HI3 16777216.0f                /* 2^24 */
+#define DH_FAST_LO4 1.52587890625e-5f          /* 2^-16: range of S, 4x4 */
+#define DH_FAST_HI4 65536.0f                   /* 2^16 */
+#define DH_FAST_PQ 7.2057594037927936e16f      /* 2^56: |p|^2, |q|^2 limit, 4x4 */
+
+/*
+ * Affine T = [R p; 0 0 0 1]: T^-1 = [R^-1, -R^-1 p; 0 0 0 1]. With the
+ * columns n, o, a of R, the rows of R^-1 are (o x a, a x n, n x o) / det,
+ * det = n . (o x a) (seed eq. 1.57 is the special case R^-1 = R^T). The
+ * test uses R only: p does not enter the conditioning of the inverse, so
+ * a rigid transform is accepted whatever its length unit.
+ * R is used as s R, s an exact power of two chosen by the caller so that
+ * S is in range (s == 1 on the common path), and T^-1 = [s (sR)^-1, ...].
+ * Writes out and returns 1, or returns 0 (out untouched).
+ */
+static int dh_inv_affine(dh_mat4_f32 *out, const dh_mat4_f32 *T, float s)
+{
+    const float nx = T->m[0][0] * s, ny = T->m[0][1] * s, nz = T->m[0][2] * s;
+    const float ox = T->m[1][0] * s, oy = T->m[1][1] * s, oz = T->m[1][2] * s;
+    const float ax = T->m[2][0] * s, ay = T->m[2][1] * s, az = T->m[2][2] * s;
+    const float px = T->m[3][0], py = T->m[3][1], pz = T->m[3][2];
+    const float c00 = oy * az - oz * ay, c01 = oz * ax - ox * az, c02 = ox * ay - oy * ax; /* o x a */
+    const float c10 = ay * nz - az * ny, c11 = az * nx - ax * nz, c12 = ax * ny - ay * nx; /* a x n */
+    const float c20 = ny * oz - nz * oy, c21 = nz * ox - nx * oz, c22 = nx * oy - ny * ox; /* n x o */
+    const float det = nx * c00 + ny * c01 + nz * c02;
+    const float S = (nx * nx + ny * ny + nz * nz) + (ox * ox + oy * oy + oz * oz) + (ax * ax + ay * ay + az * az);
+    float f, x00, x01, x02, x10, x11, x12, x20, x21, x22, t0, t1, t2;
+    if (!(S >= DH_FAST_LO3 && S <= DH_FAST_HI3 && det * det * DH_FAST_C2 >= S * S * S)) return 0;
+    f = s / det; /* s (sR)^-1 = R^-1; s / det is exact scaling of 1 / det */
+    /* element (row i, column j) of R^-1 is c_ij f; "+ 0.0f" maps -0 to +0 */
+    x00 = c00 * f + 0.0f; x01 = c01 * f + 0.0f; x02 = c02 * f + 0.0f;
+    x10 = c10 * f + 0.0f; x11 = c11 * f + 0.0f; x12 = c12 * f + 0.0f;
+    x20 = c20 * f + 0.0f; x21 = c21 * f + 0.0f; x22 = c22 * f + 0.0f;
+    /* translation -R^-1 p; 0 - x is never -0 */
+    t0 = 0.0f - (x00 * px + x01 * py + x02 * pz);
+    t1 = 0.0f - (x10 * px + x11 * py + x12 * pz);
+    t2 = 0.0f - (x20 * px + x21 * py + x22 * pz);
+    /* R^-1 is finite by the test; the translation may overflow (or be NaN
+     * from a NaN/Inf in p): then the certified path reports it */
+    if (!((t0 - t0) + (t1 - t1) + (t2 - t2) == 0.0f)) return 0;
+    out->m[0][0] = x00; out->m[0][1] = x10; out->m[0][2] = x20; out->m[0][3] = 0.0f;
+    out->m[1][0] = x01; out->m[1][1] = x11; out->m[1][2] = x21; out->m[1][3] = 0.0f;
+    out->m[2][0] = x02; out->m[2][1] = x12; out->m[2][2] = x22; out->m[2][3] = 0.0f;
+    out->m[3][0] = t0; out->m[3][1] = t1; out->m[3][2] = t2; out->m[3][3] = 1.0f;
+    return 1;
+}
+
+/*
+ * Power of two s with max |s R_ij| in [1, 2), or 0 if R is zero, denormal,
+ * or holds a NaN/Inf (then the certified path decides).
+ */
+static DH_NOINLINE float dh_affine_prescale(const dh_mat4_f32 *T)
+{
+    float mx = 0.0f, s;
+    uint32_t e;
+    int i, j;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            const float v = fabsf(T->m[i][j]);
+            mx = (v > mx) ? v : mx;
+        }
+    }
+    if (!(mx >= FLT_MIN && mx <= FLT_MAX)) return 0.0f;
+    memcpy(&e, &mx, sizeof e);
+    e >>= 23;                           /* 1..254 */
+    e = (e >= 254u) ? 1u : 254u - e;    /* exponent of 2^(127 - e) */
+    e <<= 23;
+    memcpy(&s, &e, sizeof s);
+    return s;
+}
+
+/*
+ * General (projective) T = [R p; q^T w]: adjugate from the 2x2 minors of
+ * two row pairs, in the row view of the helpers below (M = T^T). The
+ * test is made on the balanced matrix B = D^-1 T D, D = diag(1, 1, 1, sg),
+ * sg^2 = |p| / |q| (Osborne): the homogeneous coordinate has another unit
+ * than the others, and the balancing makes the test independent of the
+ * length unit. det B = det T, and ||B||_F^2 = ||R||_F^2 + 2 |p| |q| + w^2
+ * needs no sg. Writes out and returns 1, or returns 0 (out untouched).
+ */
+static DH_NOINLINE int dh_inv_proj_fast(dh_mat4_f32 *out, const dh_mat4_f32 *M)
+{
+    const float a00 = M->m[0][0], a01 = M->m[0][1], a02 = M->m[0][2], a03 = M->m[0][3];
+    const float a10 = M->m[1][0], a11 = M->m[1][1], a12 = M->m[1][2], a13 = M->m[1][3];
+    const float a20 = M->m[2][0], a21 = M->m[2][1], a22 = M->m[2][2], a23 = M->m[2][3];
+    const float a30 = M->m[3][0], a31 = M->m[3][1], a32 = M->m[3][2], a33 = M->m[3][3];
+    /* 2x2 minors of rows 2, 3 and of rows 0, 1 */
+    const float c5 = a22 * a33 - a32 * a23, c4 = a21 * a33 - a31 * a23, c3 = a21 * a32 - a31 * a22;
+    const float c2 = a20 * a33 - a30 * a23, c1 = a20 * a32 - a30 * a22, c0 = a20 * a31 - a30 * a21;
+    const float s0 = a00 * a11 - a10 * a01, s1 = a00 * a12 - a10 * a02, s2 = a00 * a13 - a10 * a03;
+    const float s3 = a01 * a12 - a11 * a02, s4 = a01 * a13 - a11 * a03, s5 = a02 * a13 - a12 * a03;
+    /* cofactors of row 0 (column 0 of the inverse), det by Laplace */
+    const float x00 = a11 * c5 - a12 * c4 + a13 * c3;
+    const float x10 = -a10 * c5 + a12 * c2 - a13 * c1;
+    const float x20 = a10 * c4 - a11 * c2 + a13 * c0;
+    const float x30 = -a10 * c3 + a11 * c1 - a12 * c0;
+    const float det = a00 * x00 + a01 * x10 + a02 * x20 + a03 * x30;
+    /* p = row 3 of M (columns 0..2), q = column 3 of M (rows 0..2) */
+    const float pp = a30 * a30 + a31 * a31 + a32 * a32;
+    const float qq = a03 * a03 + a13 * a13 + a23 * a23;
+    const float S = (a00 * a00 + a01 * a01 + a02 * a02) + (a10 * a10 + a11 * a11 + a12 * a12) +
+                    (a20 * a20 + a21 * a21 + a22 * a22) + 2.0f * sqrtf(pp * qq) + a33 * a33;
+    float f;
+    /* |p|^2, |q|^2 <= 2^56 and S <= 2^16 bound every product of entries
+     * formed below (no overflow); see the test above */
+    if (!(pp <= DH_FAST_PQ && qq <= DH_FAST_PQ && S >= DH_FAST_LO4 && S <= DH_FAST_HI4 &&
+          4.0f * DH_FAST_C2 * (det * det) >= (S * S) * (S * S))) {
+        return 0;
+    }
+    f = 1.0f / det;
+    /* every input is in a local: out may alias M */
+    out->m[0][0] = x00 * f + 0.0f;
+    out->m[1][0] = x10 * f + 0.0f;
+    out->m[2][0] = x20 * f + 0.0f;
+    out->m[3][0] = x30 * f + 0.0f;
+    out->m[0][1] = (-a01 * c5 + a02 * c4 - a03 * c3) * f + 0.0f;
+    out->m[1][1] = (a00 * c5 - a02 * c2 + a03 * c1) * f + 0.0f;
+    out->m[2][1] = (-a00 * c4 + a01 * c2 - a03 * c0) * f + 0.0f;
+    out->m[3][1] = (a00 * c3 - a01 * c1 + a02 * c0) * f + 0.0f;
+    out->m[0][2] = (a31 * s5 - a32 * s4 + a33 * s3) * f + 0.0f;
+    out->m[1][2] = (-a30 * s5 + a32 * s2 - a33 * s1) * f + 0.0f;
+    out->m[2][2] = (a30 * s4 - a31 * s2 + a33 * s0) * f + 0.0f;
+    out->m[3][2] = (-a30 * s3 + a31 * s1 - a32 * s0) * f + 0.0f;
+    out->m[0][3] = (-a21 * s5 + a22 * s4 - a23 * s3) * f + 0.0f;
+    out->m[1][3] = (a20 * s5 - a22 * s2 + a23 * s1) * f + 0.0f;
+    out->m[2][3] = (-a20 * s4 + a21 * s2 - a23 * s0) * f + 0.0f;
+    out->m[3][3] = (a20 * s3 - a21 * s1 + a22 * s0) * f + 0.0f;
+    return 1;
+}
+
+static DH_NOINLINE int dh_inv_affine_scaled(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+{
+    const float s = dh_affine_prescale(T);
+    return (s != 0.0f) && dh_inv_affine(out, T, s);
+}
+
+dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+{
+    DH_ASSERT(out != NULL && T != NULL);
+    if (T->m[0][3] == 0.0f && T->m[1][3] == 0.0f && T->m[2][3] == 0.0f && T->m[3][3] == 1.0f) {
+        /* R with ||R||_F^2 out of [2^-24, 2^24] is rescaled exactly first,
+         * so the affine decision is invariant under any scaling of R */
+        if (dh_inv_affine(out, T, 1.0f) || dh_inv_affine_scaled(out, T)) return DH_OK;
+    } else if (dh_inv_proj_fast(out, T)) {
+        return DH_OK;
+    }
+    return dh_inv_certified(out, T);
 }
 
 /* ---------------------------------------------------------------------- */
