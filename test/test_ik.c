@@ -125,22 +125,46 @@ static void run_rate(const dhs_robot *desc, const float *home, uint32_t mask, do
     }
 }
 
+/* The success rate is asserted for the run's seed (DHT_SEED or the default)
+ * and for these fixed seeds, so that one lucky random target set cannot hide
+ * a shortfall (the Puma 560 used to pass the default seed at 99.4% and fail
+ * seeds 1 and 12345 at 98.2%). */
+static const uint64_t extra_seeds[] = { 1u, 12345u, 2u, 3u, 5u, 6u };
+
 static void rate_case(const char *name, const dhs_robot *desc, const float *home, uint32_t mask,
-                      double tol_p, double tol_r, double need)
+                      double tol_p, double tol_r, double need, unsigned nseeds)
 {
     dh_ik_params prm;
     ik_stats s;
+    const uint64_t s0 = dht_seed();
+    uint64_t worst_seed = s0;
+    int worst_ok = -1, worst_runs = 1;
+    unsigned k;
     dh_ik_params_default(&prm);
     prm.mask = mask;
     prm.tol_pos = (float)tol_p;
     prm.tol_rot = (float)tol_r;
     prm.w_rot = (float)desc->unit_per_m;
-    run_rate(desc, home, mask, tol_p, tol_r, &prm, DHT_ITER(1000), &s);
-    dht_printf("ik %-22s %s: %d/%d converged with true error <= %.0e / %.0e (status OK %d), "
-               "iterations mean %.2f max %lu, worst true error %.3g / %.3g\n",
-               name, mask == DH_IK_POSITION ? "position" : "full", s.ok, s.runs, tol_p, tol_r, s.ok_status,
-               s.iter_sum / s.runs, (unsigned long)s.iter_max, s.ep_max, s.er_max);
-    DHT_TRUE_MSG((double)s.ok >= need * s.runs, "%s: success %d/%d below %.3f", name, s.ok, s.runs, need);
+    if (nseeds > sizeof extra_seeds / sizeof extra_seeds[0]) nseeds = sizeof extra_seeds / sizeof extra_seeds[0];
+    for (k = 0; k <= nseeds; k++) {
+        const uint64_t seed = (k == 0u) ? s0 : extra_seeds[k - 1u];
+        if (k > 0u && seed == s0) continue;
+        dht_reseed(seed);
+        run_rate(desc, home, mask, tol_p, tol_r, &prm, DHT_ITER(1000), &s);
+        dht_printf("ik %-22s %s seed 0x%llx: %d/%d converged with true error <= %.0e / %.0e (status OK %d), "
+                   "iterations mean %.2f max %llu, worst true error %.3g / %.3g\n",
+                   name, mask == DH_IK_POSITION ? "position" : "full", (unsigned long long)seed, s.ok, s.runs,
+                   tol_p, tol_r, s.ok_status, s.iter_sum / s.runs, (unsigned long long)s.iter_max, s.ep_max,
+                   s.er_max);
+        if (worst_ok < 0 || (double)s.ok * worst_runs < (double)worst_ok * s.runs) {
+            worst_ok = s.ok;
+            worst_runs = s.runs;
+            worst_seed = seed;
+        }
+    }
+    dht_reseed(s0);     /* the following cases start from the run's seed again */
+    DHT_TRUE_MSG((double)worst_ok >= need * worst_runs, "%s: success %d/%d below %.3f for seed 0x%llx", name,
+                 worst_ok, worst_runs, need, (unsigned long long)worst_seed);
 }
 
 /* Home poses away from singularities (deg). Puma: elbow bent, wrist q5 != 0;
@@ -150,20 +174,21 @@ static const float puma_home[6] = { 0, 30, -60, 0, 45, 0 };
 static const float ur5_home[6] = { 0, -90, 90, -90, -90, 0 };
 static const float panda_home[7] = { 0, -45, 0, -135, 0, 90, 45 };
 
-static void ik_rate_puma(void) { rate_case("puma560 (m)", &dhs_puma560_m, puma_home, DH_IK_FULL, 1e-6, 1e-5, 0.99); }
-static void ik_rate_ur5(void) { rate_case("ur5 (m)", &dhs_ur5_m, ur5_home, DH_IK_FULL, 1e-6, 1e-5, 0.99); }
-static void ik_rate_panda(void) { rate_case("panda (m)", &dhs_panda_m, panda_home, DH_IK_FULL, 1e-6, 1e-5, 0.99); }
+static void ik_rate_puma(void) { rate_case("puma560 (m)", &dhs_puma560_m, puma_home, DH_IK_FULL, 1e-6, 1e-5, 0.99, 6u); }
+static void ik_rate_ur5(void) { rate_case("ur5 (m)", &dhs_ur5_m, ur5_home, DH_IK_FULL, 1e-6, 1e-5, 0.99, 6u); }
+static void ik_rate_panda(void) { rate_case("panda (m)", &dhs_panda_m, panda_home, DH_IK_FULL, 1e-6, 1e-5, 0.99, 6u); }
 static void ik_rate_position(void)
 {
-    rate_case("puma560 (m)", &dhs_puma560_m, puma_home, DH_IK_POSITION, 1e-6, 1e-5, 0.99);
-    rate_case("ur5 (m)", &dhs_ur5_m, ur5_home, DH_IK_POSITION, 1e-6, 1e-5, 0.99);
-    rate_case("panda (m)", &dhs_panda_m, panda_home, DH_IK_POSITION, 1e-6, 1e-5, 0.99);
+    rate_case("puma560 (m)", &dhs_puma560_m, puma_home, DH_IK_POSITION, 1e-6, 1e-5, 0.99, 2u);
+    rate_case("ur5 (m)", &dhs_ur5_m, ur5_home, DH_IK_POSITION, 1e-6, 1e-5, 0.99, 2u);
+    rate_case("panda (m)", &dhs_panda_m, panda_home, DH_IK_POSITION, 1e-6, 1e-5, 0.99, 2u);
 }
 /* Millimetre models: 1e-3 mm = 1e-6 m, float resolution of 1000 mm is 6e-5 mm. */
 static void ik_rate_mm(void)
 {
-    rate_case("puma560 (mm)", &dhs_puma560_mm, puma_home, DH_IK_FULL, 1e-3, 1e-5, 0.99);
-    rate_case("panda (mm)", &dhs_panda_mm, panda_home, DH_IK_FULL, 1e-3, 1e-5, 0.99);
+    rate_case("puma560 (mm)", &dhs_puma560_mm, puma_home, DH_IK_FULL, 1e-3, 1e-5, 0.99, 4u);
+    rate_case("ur5 (mm)", &dhs_ur5_mm, ur5_home, DH_IK_FULL, 1e-3, 1e-5, 0.99, 2u);
+    rate_case("panda (mm)", &dhs_panda_mm, panda_home, DH_IK_FULL, 1e-3, 1e-5, 0.99, 2u);
 }
 
 /* ---------------------------------------------------------------------- */
