@@ -649,6 +649,32 @@ static void mat4_no_status_ieee_and_alias(void)
     }
     /* count == 0: nothing is read or written, pointers may be NULL */
     dh_mat4_apply_points_f32(&A, NULL, NULL, 0u);
+    /* accessors copy any bits, NaN included, and nothing else */
+    for (c = 0; c < 16; c++) {
+        dh_mat3_f32 R;
+        dh_vec3_f32 col[4];
+        set_identity(&A);
+        A.m[c / 4][c % 4] = bad_value((unsigned)c);
+        col[0] = dh_mat4_n_f32(&A);
+        col[1] = dh_mat4_o_f32(&A);
+        col[2] = dh_mat4_a_f32(&A);
+        col[3] = dh_mat4_p_f32(&A);
+        dh_mat4_get_rot_f32(&A, &R);
+        for (r = 0; r < 3; r++) {
+            int k;
+            for (k = 0; k < 4; k++) {
+                const float *cv = &col[k].x;
+                DHT_TRUE(memcmp(&cv[r], &A.m[k][r], sizeof(float)) == 0);
+                if (k < 3) DHT_TRUE(memcmp(&R.m[k][r], &A.m[k][r], sizeof(float)) == 0);
+            }
+        }
+        set_identity(&B);
+        dh_mat4_set_rot_f32(&B, &R);
+        for (r = 0; r < 16; r++) {
+            if (r / 4 < 3 && r % 4 < 3) DHT_TRUE(memcmp(&B.m[r / 4][r % 4], &A.m[r / 4][r % 4], 4) == 0);
+            else DHT_EQ_F32_BITS(B.m[r / 4][r % 4], (r / 4 == r % 4) ? 1.0f : 0.0f);
+        }
+    }
 }
 
 static const dht_case cases[] = {
