@@ -147,7 +147,7 @@ dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, flo
 
 dh_status dh_rotvec_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *phi)
 {
-    float x, y, z, m, t, h, k[3], sh, ch;
+    float x, y, z, m, t, k[3], sh, ch;
     DH_ASSERT(R != NULL && phi != NULL);
     x = phi->x;
     y = phi->y;
@@ -170,7 +170,6 @@ dh_status dh_rotvec_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *phi)
         k[0] = x / t;
         k[1] = y / t;
         k[2] = z / t;
-        h = 0.5f * t;
     } else {
         x /= m;
         y /= m;
@@ -179,13 +178,13 @@ dh_status dh_rotvec_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *phi)
         k[0] = x / t;
         k[1] = y / t;
         k[2] = z / t;
-        /* half the angle |phi| / 2 = t m / 2: the 1/2 goes on m when m is
-         * large, so that a finite phi whose length exceeds FLT_MAX still
-         * has a finite half angle (t <= sqrt 3, m / 2 <= 2^127) */
-        h = (m > 1.0f) ? t * (0.5f * m) : 0.5f * (t * m);
+        t *= m;
+        /* |phi| > FLT_MAX: no float angle, reported as DH_ERR_NAN
+         * (documented in dh_rot.h) */
+        if (!dh_rot_finite(t)) return DH_ERR_NAN;
     }
-    sh = sinf(h);
-    ch = cosf(h);
+    sh = sinf(0.5f * t);
+    ch = cosf(0.5f * t);
     dh_rodrigues(R, k, 2.0f * sh * ch, 1.0f - 2.0f * sh * sh, 2.0f * sh * sh);
     return DH_OK;
 }

@@ -362,9 +362,9 @@ static void rot_axis_angle_bad(void)
     }
 }
 
-/* rotation vector -> matrix: NaN/Inf -> NAN (untouched); every finite phi
- * is accepted, also when |phi| itself exceeds FLT_MAX (regression: that
- * used to return DH_ERR_NAN for finite input) */
+/* rotation vector -> matrix: NaN/Inf -> NAN (untouched); finite phi whose
+ * length |phi| exceeds FLT_MAX -> NAN as well (documented: no float angle),
+ * untouched; every other finite phi is a rotation about phi */
 static void rot_rotvec_bad_and_huge(void)
 {
     dh_vec3_f32 phi;
@@ -380,9 +380,17 @@ static void rot_rotvec_bad_and_huge(void)
         UNTOUCHED(R);
     }
     {
-        static const float big[][3] = { { FLT_MAX, FLT_MAX, FLT_MAX }, { -FLT_MAX, FLT_MAX, 0.0f },
-                                        { 3e38f, 3e38f, 0.0f }, { 1e38f, -2e38f, 3e38f },
-                                        { 1e20f, 0.0f, 0.0f }, { 1e-40f, 0.0f, 0.0f } };
+        static const float over[][3] = { { FLT_MAX, FLT_MAX, FLT_MAX }, { -FLT_MAX, FLT_MAX, 0.0f },
+                                         { 3e38f, 3e38f, 0.0f }, { 1e38f, -2e38f, 3e38f } };
+        static const float big[][3] = { { FLT_MAX, 0.0f, 0.0f }, { 2e38f, -2e38f, 0.0f },
+                                        { 1e20f, 0.0f, 0.0f }, { 1e-40f, 0.0f, 0.0f },
+                                        { 1e30f, 3e30f, -2e29f } };
+        for (k = 0; k < sizeof over / sizeof over[0]; k++) {
+            phi.x = over[k][0]; phi.y = over[k][1]; phi.z = over[k][2];
+            CANARY(R);
+            DHT_EQ_INT(dh_rotvec_to_mat3_f32(&R, &phi), DH_ERR_NAN);
+            UNTOUCHED(R);
+        }
         for (k = 0; k < sizeof big / sizeof big[0]; k++) {
             const double hx = big[k][0], hy = big[k][1], hz = big[k][2];
             const double n = sqrt(hx * hx + hy * hy + hz * hz);

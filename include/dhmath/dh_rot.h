@@ -340,10 +340,12 @@ dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, flo
  * cancellation or series switch for small t and no overflow for large
  * components (|phi| is formed after scaling by the largest component).
  * @param R output rotation.
- * @param phi rotation vector in radians, any finite value (not reduced: a
- *        length above 2 pi simply wraps; also when |phi| itself exceeds
- *        FLT_MAX, the half angle |phi| / 2 being formed without overflow).
- * @return DH_OK; DH_ERR_NAN if a component is NaN/Inf. R untouched on
+ * @param phi rotation vector in radians, any finite value whose length
+ *        |phi| is also finite (not reduced: a length above 2 pi simply
+ *        wraps).
+ * @return DH_OK; DH_ERR_NAN if a component is NaN/Inf, and also when the
+ *         components are finite but |phi| exceeds FLT_MAX (e.g. FLT_MAX in
+ *         two components: the angle has no float value). R untouched on
  *         error.
  * Accuracy: entry error <= 4e-7 for |phi| <= pi, including 1e-30 .. 1e-2
  * (measured 3.7e-7); for pi < |phi| <= 4 pi <= 1.5e-7 * |phi| (measured
