@@ -19,6 +19,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <float.h>
+#include <math.h>
 
 #define FZ_CHECK(cond, ...)                                                        \
     do {                                                                           \
@@ -83,6 +85,32 @@ static inline uint32_t fz_f32_to_bits(float f)
     uint32_t u;
     memcpy(&u, &f, sizeof u);
     return u;
+}
+
+/* largest finite |number| written in a text (strtod at every digit run),
+ * for tolerances that must cover rounding the text's values to float */
+static inline double fz_max_number(const char *buf, size_t len)
+{
+    char tmp[65];
+    double m = 0.0;
+    size_t k = 0;
+    while (k < len) {
+        if ((buf[k] >= '0' && buf[k] <= '9') || buf[k] == '.') {
+            size_t n = 0;
+            double v;
+            while (k + n < len && n < 64u && strchr("0123456789.eE+-", buf[k + n]) != NULL &&
+                   buf[k + n] != '\0')
+                n++;
+            memcpy(tmp, buf + k, n);
+            tmp[n] = '\0';
+            v = fabs(strtod(tmp, NULL));
+            if (v > m && v <= (double)FLT_MAX) m = v;
+            k += n ? n : 1u;
+        } else {
+            k++;
+        }
+    }
+    return m;
 }
 
 #endif /* DHMATH_FUZZ_COMMON_H */

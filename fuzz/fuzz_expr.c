@@ -13,9 +13,11 @@
  *    same bits);
  *  - a successful fixed-point evaluation implies a successful float one
  *    (the fixed path accepts a subset of EXPR: rigid terms whose values
- *    fit), and the two rotations agree within 1e-6 per term (angle
- *    rounding to Q16.16 is 1.3e-7 rad, float and Q2.30 rounding a few
- *    1e-7 per product, and rotation errors add without amplification);
+ *    fit), and the two rotations agree within (1e-6 + A 2^-24 pi/180) per
+ *    term, A the largest number in the text: angle rounding to Q16.16 is
+ *    1.3e-7 rad, to float at most A 2^-24 degrees (an angle of 32072.72
+ *    degrees is 0.001 degree off in float), float and Q2.30 rounding a few
+ *    1e-7 per product, and rotation errors add without amplification;
  *  - dh_expr_parse_number on the whole buffer: on success the value equals
  *    strtod of the same text, is within the float range, and the text uses
  *    only the documented characters; on error *out is untouched.
@@ -120,7 +122,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         check_error(&e, size, "eval_q");
         FZ_CHECK(memcmp(&Fq, &sentinel_q, sizeof Fq) == 0, "eval_q wrote out on error");
     } else {
-        const double tol = 1e-6 * (double)(count_terms(buf, size) + 1u);
+        const double tol = (1e-6 + fz_max_number(buf, size) * 5.9604644775390625e-8 * (3.14159265358979 / 180.0)) *
+                           (double)(count_terms(buf, size) + 1u);
         unsigned i, j;
         FZ_CHECK(rf == 0, "fixed-point EXPR accepted but float rejected it");
         for (i = 0; i < 3u; i++)

@@ -16,8 +16,8 @@
  *    a finite frame and bottom row 0 0 0 1, or DH_ERR_OVERFLOW;
  *    dh_fk_q DH_OK or DH_ERR_OVERFLOW;
  *  - when both FKs succeed on a fixed-point build, the rotations agree
- *    within 1e-6 per joint and per EXPR term (same reasoning as
- *    fuzz_expr.c; a fixed build rejects scale/persp, so base and tool are
+ *    within 1e-6 + A 2^-24 pi/180 per joint and per EXPR term, A the
+ *    largest number in the file (same reasoning as fuzz_expr.c; a fixed build rejects scale/persp, so base and tool are
  *    rigid on both paths).
  */
 #include <ctype.h>
@@ -109,7 +109,7 @@ static dh_status fk_float(const dh_robotfile *rf, const dh_robot *r0, dh_mat4_f3
 }
 
 /* fixed FK of a fixed build (r1), compared with the float FK of r0 */
-static void fk_fixed(const dh_robotfile *rf, const dh_robot *r1, dh_status sf, const dh_mat4_f32 *T)
+static void fk_fixed(const dh_robotfile *rf, const dh_robot *r1, dh_status sf, const dh_mat4_f32 *T, double amax)
 {
     float q[DH_MAX_JOINTS];
     int32_t qq[DH_MAX_JOINTS];
@@ -126,7 +126,7 @@ static void fk_fixed(const dh_robotfile *rf, const dh_robot *r1, dh_status sf, c
     FZ_CHECK(s1 == sf || (s1 == DH_ERR_ARG && (rf->base.present || rf->tool.present)),
              "dh_fk_f32 on the fixed build: status %d, float build %d", (int)s1, (int)sf);
     if (sf == DH_OK && sq == DH_OK) {
-        const double tol = 1e-6 * (double)(rf->n + 1u + count_terms(rf->base.text, rf->base.len) +
+        const double tol = (1e-6 + amax * 5.9604644775390625e-8 * (3.14159265358979 / 180.0)) * (double)(rf->n + 1u + count_terms(rf->base.text, rf->base.len) +
                                            count_terms(rf->tool.text, rf->tool.len));
         unsigned i, j;
         for (i = 0; i < 3u; i++)
@@ -189,7 +189,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             }
             FZ_CHECK(r->n == rf->n, "robot has %u joints, file %u", (unsigned)r->n, rf->n);
             if (fixed == 0) sf = fk_float(rf, r, &T);
-            else fk_fixed(rf, r, sf, &T);
+            else fk_fixed(rf, r, sf, &T, fz_max_number(buf, size));
         }
     }
 done:
