@@ -3,12 +3,15 @@
 #   tools/check.sh            all stages
 #   tools/check.sh host asan  only the named stages
 # Stages: host (Release build, cmocka suite + CLI tests), asan (ASan+UBSan),
-# target suites under QEMU, guards, static analysis, coverage, config variants.
+# target suites under QEMU (M0+, M4F, M7), riscv32 compile check, guards
+# (no .data/.bss, no heap/printf, fixed path free of float/64-bit division,
+# stack <= 256 B), config variants, coverage >= 95 % lines / 90 % branches,
+# cppcheck (MISRA addon) + clang-tidy, and a 10 s libFuzzer smoke per target.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
 JOBS=${JOBS:-$(nproc)}
-STAGES=${*:-"host asan m0 m4f m7 riscv32 guards variants"}
+STAGES=${*:-"host asan m0 m4f m7 riscv32 guards variants coverage static fuzz"}
 failed=""
 
 run_stage() {
@@ -41,6 +44,9 @@ for s in $STAGES; do
     riscv32) [ -f port/riscv32.cmake ] && run_stage riscv32 bash -c "cmake -S '$ROOT' -B build/rv32 -DCMAKE_TOOLCHAIN_FILE='$ROOT/port/riscv32.cmake' -DDH_BUILD_TESTS=OFF >/dev/null && cmake --build build/rv32 -j$JOBS" ;;
     guards) [ -x tools/check_guards.sh ] && run_stage guards tools/check_guards.sh ;;
     variants) [ -x tools/check_variants.sh ] && run_stage variants tools/check_variants.sh ;;
+    coverage) [ -x tools/coverage.sh ] && run_stage coverage tools/coverage.sh build/coverage ;;
+    static) [ -x tools/static.sh ] && run_stage static tools/static.sh ;;
+    fuzz) [ -x tools/fuzz.sh ] && run_stage fuzz tools/fuzz.sh 10 ;;
     *) echo "unknown stage $s"; exit 2 ;;
   esac
 done
