@@ -116,6 +116,15 @@ static inline uint64_t dh_port_mac16(uint64_t acc, int32_t a, int32_t b)
 #define DH_PORT_MUL64_IS_CALL 0
 #endif
 
+/* 1 when the fixed-point kernels use the 16-bit split of
+ * dh_port_dot2r30_s16() (below) instead of 64-bit products. Follows
+ * DH_PORT_MUL64_IS_CALL; a host build may predefine it to 1 (e.g.
+ * CMAKE_C_FLAGS=-DDH_PORT_USE_SPLIT16=1) to run the whole test suite
+ * through the ARMv6-M code paths. */
+#ifndef DH_PORT_USE_SPLIT16
+#define DH_PORT_USE_SPLIT16 DH_PORT_MUL64_IS_CALL
+#endif
+
 /** @brief Full signed product a*b as int64 (never overflows: |a*b| <= 2^62). */
 static inline int64_t dh_port_smull_c(int32_t a, int32_t b)
 {
@@ -171,6 +180,93 @@ static inline int32_t dh_port_qadd_c(int32_t a, int32_t b)
     if ((~((uint32_t)a ^ (uint32_t)b) & ((uint32_t)a ^ s)) & 0x80000000u)
         return a < 0 ? INT32_MIN : INT32_MAX;
     return (int32_t)s;
+}
+
+/* ---- 16-bit split kernel for rounded two-term sums (ARMv6-M) ---------- */
+
+/* Forced inlining for the kernels below: at -Os GCC otherwise keeps them
+ * out of line, and a call per product costs more than the product. */
+#if defined(__GNUC__) || defined(__clang__)
+#define DH_PORT_INLINE static inline __attribute__((always_inline))
+#else
+#define DH_PORT_INLINE static inline
+#endif
+
+/**
+ * @brief A value split as v = h 2^16 + l for dh_port_dot2r30_s16().
+ *
+ * Two kinds of split, both exact: a row split (dh_port_split_row, l in
+ * [-2^15, 2^15), any int32 v) for the values that change per use, and a
+ * constant split (dh_port_split_k, l in (-2^15, 2^15]) for the factors
+ * that are prepared once and used many times. The two low-half ranges
+ * differ on purpose: a product of two low halves then lies in
+ * [-2^30, 2^30 - 2^15], so the sum of two of them fits int32.
+ */
+typedef struct {
+    int32_t h;  /**< high part */
+    int32_t l;  /**< low part, |l| <= 2^15 */
+} dh_port_s16;
+
+/** @brief Row split of v, v < 2^31 - 2^15: l = low half as int16 in
+ *  [-2^15, 2^15), h = (v - l) / 2^16 in [-2^15, 2^15). (For larger v,
+ *  v - l would leave int32 and h wrap; the FK's entries stay below 1.6 2^30.) */
+DH_PORT_INLINE dh_port_s16 dh_port_split_row(int32_t v)
+{
+    dh_port_s16 r;
+    r.l = (int32_t)(int16_t)(uint16_t)((uint32_t)v & 0xFFFFu);             /* SXTH */
+    r.h = (int32_t)((uint32_t)v - (uint32_t)r.l) >> 16;                      /* exact: v - l = h 2^16 */
+    return r;
+}
+
+/**
+ * @brief Constant split of v, |v| <= 2^31 - 2^15: l in (-2^15, 2^15],
+ *        h = (v - l) / 2^16. (Outside that range h would not fit the
+ *        arithmetic below; the callers split values of at most 2^30.)
+ */
+DH_PORT_INLINE dh_port_s16 dh_port_split_k(int32_t v)
+{
+    /* h = floor((v + 2^15 - 1) / 2^16) (no overflow for |v| <= 2^31 - 2^15),
+     * l = v - h 2^16 in (-2^15, 2^15]; branch free */
+    dh_port_s16 r;
+    r.h = (int32_t)((uint32_t)v + 0x7FFFu) >> 16;
+    r.l = (int32_t)((uint32_t)v - ((uint32_t)r.h << 16));
+    return r;
+}
+
+/**
+ * @brief floor((c x + s y + 2^29) / 2^30): the exact sum of two products
+ *        rounded once (half up) to Q2.30 scale, with eight 16x16->32
+ *        multiplies and 32-bit additions only (no 64-bit arithmetic, no
+ *        library call on ARMv6-M).
+ *
+ * c, s are constant splits (dh_port_split_k), x, y row splits
+ * (dh_port_split_row). With S = c x + s y:
+ *     S = 2^32 H + 2^16 M + L,  H = ch xh + sh yh,
+ *     M = ch xl + cl xh + sh yl + sl yh,  L = cl xl + sl yl,
+ *     floor((S + 2^29) / 2^30) = 4 H + floor((M + 2^13 + floor(L / 2^16)) / 2^14)
+ * (the low 16 bits of L cannot carry into the floor). Every partial
+ * product is at most 2^30 in magnitude for any inputs (no undefined
+ * behaviour); L lies in [-2^31, 2^31 - 2^16] by the choice of the low
+ * ranges; the sums are formed modulo 2^32.
+ *
+ * Domain (the caller's proof obligation): x, y < 2^31 - 2^15 (row split),
+ * |c|, |s| <= 2^31 - 2^15 (constant split), |c| + |s| + |x| + |y| <= 2^32 - 2^18
+ * keeps |M + 2^13 + floor(L / 2^16)| <= (|c| + |s| + |x| + |y|) / 2 + 2^17
+ * below 2^31, and the true result must fit int32. Then the result is
+ * exact; outside, it is an unspecified int32 (still no undefined
+ * behaviour). Example: rotation entries of a row of norm <= 1.5001
+ * (|x| + |y| <= 2.1215 * 2^30) times a sine/cosine pair (|c| + |s| <=
+ * 1.4143 * 2^30). test/test_port.c checks it against the 64-bit sum.
+ * Cortex-M0, gcc -O2: about 30 instructions (8 MULS).
+ */
+DH_PORT_INLINE int32_t dh_port_dot2r30_s16(dh_port_s16 c, dh_port_s16 x, dh_port_s16 s, dh_port_s16 y)
+{
+    uint32_t hi = (uint32_t)(c.h * x.h) + (uint32_t)(s.h * y.h);
+    uint32_t mid = (uint32_t)(c.h * x.l) + (uint32_t)(c.l * x.h) + (uint32_t)(s.h * y.l) +
+                   (uint32_t)(s.l * y.h);
+    uint32_t lo = (uint32_t)(c.l * x.l) + (uint32_t)(s.l * y.l);
+    mid += 0x2000u + (uint32_t)((int32_t)lo >> 16);
+    return (int32_t)((hi << 2) + (uint32_t)((int32_t)mid >> 14));
 }
 
 /* ---- dispatching versions: what the library calls ---------------------- */

@@ -4,11 +4,48 @@
  *
  * Formats: rotation entries Q2.30, positions dh_qpos (DH_QPOS_FRAC fraction
  * bits), angles dh_q16 degrees. The link update is the same as the float
- * one (see dh_fk_f32.c); every output entry is one or two 32x32->64
- * products summed exactly in 64 bits and rounded once (half up), then
- * saturated.
+ * one (see dh_fk_f32.c): per joint, each row (x, y, z) of the rotation is
+ * turned by theta in its first two entries, twisted by alpha in the last
+ * two, and the position gains d z + a x' (standard) or a x + d z'
+ * (modified). Every output entry is one or two exact products summed and
+ * rounded ONCE (half up); the intermediate rounded entries are reused as
+ * the float code reuses its intermediate floats.
  *
- * Overflow analysis. Every product is x*y with |x| <= 2^31 and
+ * Two implementations of the same arithmetic, bit-identical whenever
+ * nothing saturates:
+ *
+ *  - fast path (fast_std / fast_mod), used when the robot's base rows have
+ *    norm <= 1.5 (DH_ROBOT_BASE_SMALL_Q; then no rotation entry can leave
+ *    Q2.30, see below) and, on cores without a 32x32->64 multiply, the
+ *    joint's |a| + |d| <= 2^30. Rotation entries are rounded without a
+ *    range check; twists by 0, +-90 and 180 degrees (exact table values)
+ *    are a column swap and negation masks chosen once per joint, so the
+ *    row loop has no branch on the twist; only positions are range
+ *    checked. The two-term sums are one SMULL + SMLAL on Cortex-M3/M4/M7
+ *    and dh_port_dot2r30_s16() (eight 16x16 MULS, no 64-bit arithmetic) on
+ *    ARMv6-M, with the sine/cosine/length factors split once per joint.
+ *  - checked path (step_std / step_mod): any base, any lengths; every
+ *    entry is range checked and saturates (DH_ERR_OVERFLOW).
+ *
+ * Why the fast path cannot overflow. Each joint multiplies the rows of the
+ * rotation by Rz(theta) Rx(alpha) built from sines and cosines with
+ * |s|, |c| <= 2^30 and s^2 + c^2 <= 1 + 2^-28 (dh_trig.h: error <= 1.05
+ * LSB), so a row norm grows at most by (1 + 2^-27) plus 1 LSB per joint:
+ * after DH_MAX_JOINTS <= 32 joints every row has norm <= 1.5001, every
+ * entry is below 2^31 (so negating one never meets INT32_MIN) and two
+ * entries of a row have |x| + |y| <= sqrt(2) 1.5001 2^30 = 2.1215 2^30.
+ *  - rotation sums c x + s y: |c| + |s| <= 1.4143 2^30, so
+ *    |c| + |s| + |x| + |y| <= 3.54 2^30, inside the domain of
+ *    dh_port_dot2r30_s16 (4 2^30 - 2^18), and the result is an entry of
+ *    a row of norm <= 1.5001: it fits int32;
+ *  - positions p + round(d z + a x): 64-bit path: |d z + a x| <=
+ *    sqrt(d^2 + a^2) sqrt(z^2 + x^2) < 2.13 2^61, plus |p 2^30| <= 2^61,
+ *    stays below 2^63 (no wrap), and the high word tells whether the
+ *    result fits; split path: |a| + |d| <= 2^30 gives
+ *    |d| + |a| + |z| + |x| <= 3.13 2^30 and |round(..)| <= 1.5001 2^30,
+ *    then p + that is added with a 32-bit overflow test.
+ *
+ * Checked path overflow analysis. Every product is x*y with |x| <= 2^31 and
  * |y| <= 2^31 - 1: rotation entries (any int32) meet sines, cosines
  * (|.| <= 2^30) or lengths, and lengths a, d are used with INT32_MIN raised
  * to -INT32_MAX (one LSB, documented saturation). So each product is below
@@ -22,22 +59,46 @@
 #include "dhmath/dh_trig.h"
 #include "dh_port.h"
 
-/* The four step variants stay separate functions: inlined together into
- * fk_q they would not share stack slots (over 1 KB on Cortex-M0 at -O2). */
+/* The step variants stay separate functions: inlined together into fk_q
+ * they would not share stack slots (over 1 KB on Cortex-M0 at -O2). */
 #if defined(__GNUC__) || defined(__clang__)
 #define FKQ_NOINLINE __attribute__((noinline))
 #else
 #define FKQ_NOINLINE
 #endif
 
-#define MUL(a, b) dh_port_smull((a), (b))
-#define MLA(acc, a, b) dh_port_smlal((acc), (a), (b))
 #define HALF29 ((int64_t)1 << 29)
 #define HALF28 ((int64_t)1 << 28)
 
 /* 360 degrees in Q16.16 times 182: the largest multiple of a full turn
  * below 2^32, used to bring q + offset back into the int32 range exactly. */
 #define TURNS_182 ((int64_t)4293918720)
+
+/* 64-bit products of the checked path, the link matrix and the tool
+ * product. Out of line where they are a 16-bit-partials kernel (ARMv6-M):
+ * inlined 40 times, that kernel makes GCC spill and the callers' frames
+ * exceed the 256-byte stack budget. */
+#if DH_PORT_MUL64_IS_CALL
+static FKQ_NOINLINE int64_t mul64(int32_t a, int32_t b)
+{
+    return dh_port_smull(a, b);
+}
+static FKQ_NOINLINE int64_t mla64(int64_t acc, int32_t a, int32_t b)
+{
+    return dh_port_smlal(acc, a, b);
+}
+#define MUL(a, b) mul64((a), (b))
+#define MLA(acc, a, b) mla64((acc), (a), (b))
+#else
+#define MUL(a, b) dh_port_smull((a), (b))
+#define MLA(acc, a, b) dh_port_smlal((acc), (a), (b))
+#endif
+
+/* bits 30..61 of t (t >> 30 when that fits int32), from the two words */
+DH_PORT_INLINE int32_t lo30(int64_t t)
+{
+    return (int32_t)(((uint32_t)((uint64_t)t & 0xFFFFFFFFu) >> 30) | ((uint32_t)((uint64_t)t >> 32) << 2));
+}
 
 /*
  * Round x / 2^30 to nearest (half up) into int32, saturating and setting
@@ -46,7 +107,7 @@
  * register; the result is then the low word shifted and or-ed (the uint32
  * -> int32 conversion wraps, checked in dh_port.h).
  */
-static inline int32_t rnd30(int64_t x, int *ovf)
+DH_PORT_INLINE int32_t rnd30(int64_t x, int *ovf)
 {
     int64_t t = x + HALF29;
     int32_t hi = (int32_t)(t >> 32);
@@ -60,24 +121,8 @@ static inline int32_t rnd30(int64_t x, int *ovf)
     return (int32_t)(((uint32_t)t >> 30) | ((uint32_t)hi << 2));
 }
 
-/*
- * Same rounding without the range check, for robots whose base rotation
- * rows have norm <= 1.5 (DH_ROBOT_BASE_SMALL_Q). Each joint multiplies the
- * rows of the rotation by Rz(theta) Rx(alpha) built from sines and cosines
- * with |s|, |c| <= 2^30 and s^2 + c^2 <= 1 + 2^-28 (dh_trig.h: error
- * <= 1.05 LSB), so a row norm grows at most by (1 + 2^-27) plus 1 LSB per
- * joint: after DH_MAX_JOINTS <= 32 joints every entry and every two-term
- * combination of a row is below 1.5001 < 2 and cannot leave Q2.30.
- */
-static inline int32_t rnd30_nc(int64_t x, int *ovf)
-{
-    int64_t t = x + HALF29;
-    (void)ovf;
-    return (int32_t)(((uint32_t)t >> 30) | ((uint32_t)(int32_t)(t >> 32) << 2));
-}
-
 /* p + round(x / 2^30), saturated to int32 (x: lengths times Q2.30). */
-static inline int32_t pos(int32_t p, int64_t x, int *ovf)
+DH_PORT_INLINE int32_t pos(int32_t p, int64_t x, int *ovf)
 {
     int64_t v = (int64_t)p + ((x + HALF29) >> 30);
     if (v > INT32_MAX) {
@@ -92,7 +137,7 @@ static inline int32_t pos(int32_t p, int64_t x, int *ovf)
 }
 
 /* -x, saturating INT32_MIN to INT32_MAX. */
-static inline int32_t neg(int32_t x, int *ovf)
+DH_PORT_INLINE int32_t neg(int32_t x, int *ovf)
 {
     if (x == INT32_MIN) {
         *ovf = 1;
@@ -102,7 +147,7 @@ static inline int32_t neg(int32_t x, int *ovf)
 }
 
 /* Length operand: INT32_MIN raised to -INT32_MAX (see the overflow note). */
-static inline int32_t len(int32_t x)
+DH_PORT_INLINE int32_t len(int32_t x)
 {
     return (x == INT32_MIN) ? -INT32_MAX : x;
 }
@@ -138,7 +183,7 @@ static int32_t pos_h(int32_t p, int64_t x, int *ovf)
 
 /* theta = q + offset in Q16.16 degrees, reduced by whole turns into int32
  * when the sum leaves it (exact: the sine and cosine do not change). */
-static inline dh_q16 add_angle(int32_t q, dh_q16 off)
+DH_PORT_INLINE dh_q16 add_angle(int32_t q, dh_q16 off)
 {
     int64_t t = (int64_t)q + (int64_t)off;
     if (t > INT32_MAX) t -= TURNS_182;
@@ -179,7 +224,7 @@ static void joint_values(const dh_joint *j, int32_t q, dh_q30 *st, dh_q30 *ct, d
 #define TWIST_180 3
 #define TWIST_GEN 4
 
-static inline int twist_kind(dh_q30 sa, dh_q30 ca)
+DH_PORT_INLINE int twist_kind(dh_q30 sa, dh_q30 ca)
 {
     if (sa == 0 && ca == DH_Q30_ONE) return TWIST_ONE;
     if (sa == DH_Q30_ONE && ca == 0) return TWIST_P90;
@@ -200,9 +245,7 @@ static inline int twist_kind(dh_q30 sa, dh_q30 ca)
         break; \
     } } while (0)
 
-/* Standard DH joint applied in place: T <- T * Rz(theta) Tz(d) Tx(a) Rx(alpha).
- * Generated twice: with range-checked rotation rounding and without it
- * (see rnd30_nc for when that is safe). */
+/* Standard DH joint applied in place, checked path: T <- T * Rz(theta) Tz(d) Tx(a) Rx(alpha). */
 #define DEF_STEP_STD(name, RND) \
 static FKQ_NOINLINE void name(dh_frame_q *T, dh_q30 st, dh_q30 ct, const dh_joint *j, dh_qpos d, int *ovf) \
 { \
@@ -226,7 +269,7 @@ static FKQ_NOINLINE void name(dh_frame_q *T, dh_q30 st, dh_q30 ct, const dh_join
     } \
 }
 
-/* Modified DH joint in place: T <- T * Rx(alpha) Tx(a) Rz(theta) Tz(d). */
+/* Modified DH joint in place, checked path: T <- T * Rx(alpha) Tx(a) Rz(theta) Tz(d). */
 #define DEF_STEP_MOD(name, RND) \
 static FKQ_NOINLINE void name(dh_frame_q *T, dh_q30 st, dh_q30 ct, const dh_joint *j, dh_qpos d, int *ovf) \
 { \
@@ -248,9 +291,194 @@ static FKQ_NOINLINE void name(dh_frame_q *T, dh_q30 st, dh_q30 ct, const dh_join
 }
 
 DEF_STEP_STD(step_std, rnd30)
-DEF_STEP_STD(step_std_nc, rnd30_nc)
 DEF_STEP_MOD(step_mod, rnd30)
-DEF_STEP_MOD(step_mod_nc, rnd30_nc)
+
+/* ---- fast path ------------------------------------------------------------ */
+
+/*
+ * fkq_k: a factor used for a whole joint (sine, cosine, length), fkq_r: a
+ * rotation entry; DOT2(c, x, s, y) = round((c x + s y) / 2^30), one
+ * rounding, no range check (callers keep to the bounds in the file
+ * comment).
+ */
+#if DH_PORT_USE_SPLIT16
+typedef dh_port_s16 fkq_k;
+typedef dh_port_s16 fkq_r;
+#define KQ(v) dh_port_split_k(v)
+#define RQ(v) dh_port_split_row(v)
+#define DOT2(c, x, s, y) dh_port_dot2r30_s16((c), (x), (s), (y))
+/* the split kernel needs the lengths' factors small (see the file comment) */
+#define FAST_LENGTHS(a, d) (abs_u(a) + abs_u(d) <= 0x40000000u)
+#else
+typedef int32_t fkq_k;
+typedef int32_t fkq_r;
+#define KQ(v) (v)
+#define RQ(v) (v)
+#define DOT2(c, x, s, y) lo30(dh_port_smlal(dh_port_smlal(HALF29, (c), (x)), (s), (y)))
+#define FAST_LENGTHS(a, d) 1
+#endif
+
+/* |x| as uint32 (x != INT32_MIN here: lengths went through len()) */
+DH_PORT_INLINE uint32_t abs_u(int32_t x)
+{
+    return x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
+}
+
+/* p + round((d z + a x) / 2^30), saturated (sets *ovf). */
+DH_PORT_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_t x, int *ovf)
+{
+#if DH_PORT_USE_SPLIT16
+    uint32_t r = (uint32_t)DOT2(kd, RQ(z), ka, RQ(x));
+    uint32_t s = (uint32_t)p + r;
+    /* signed overflow iff p and r have the same sign and s the other one */
+    if ((~((uint32_t)p ^ r) & ((uint32_t)p ^ s)) & 0x80000000u) {
+        *ovf = 1;
+        return p < 0 ? INT32_MIN : INT32_MAX;
+    }
+    return (int32_t)s;
+#else
+    /* p 2^30 + 2^29 + d z + a x modulo 2^64 (no wrap, file comment) */
+    int64_t t = (int64_t)(DH_PORT_W64(p >> 2, (uint32_t)p << 30) + (uint64_t)HALF29);
+    uint32_t hi;
+    t = dh_port_smlal(dh_port_smlal(t, kd, z), ka, x);
+    hi = (uint32_t)((uint64_t)t >> 32);
+    if (hi + 0x20000000u >= 0x40000000u) {
+        *ovf = 1;
+        return (hi & 0x80000000u) ? INT32_MIN : INT32_MAX;
+    }
+    return lo30(t);
+#endif
+}
+
+/* all ones when c holds, else 0 */
+#define MASK(c) ((c) ? 0xFFFFFFFFu : 0u)
+/* (v ^ m) - m: v or -v; v != INT32_MIN on the fast path */
+#define NEGM(v, m) ((int32_t)(((uint32_t)(v) ^ (m)) - (m)))
+
+/*
+ * Exact twists (alpha 0, +90, -90, 180) are a swap of columns 1 and 2
+ * and two negations, chosen once per joint; the row loops are generated
+ * for three variants (no swap: 0 and 180; swap: +-90; general alpha) so
+ * the swap is a constant and only the negation masks are data:
+ *  standard, (u, z) -> (y2, z2): 0 (u, z), +90 (z, -u), -90 (-z, u),
+ *    180 (-u, -z): m1 negates u, m2 negates z, a swap stores u in
+ *    column 2 and z in column 1;
+ *  modified, (y, z) -> (o1, a1): 0 (y, z), +90 (z, -y), -90 (-z, y),
+ *    180 (-y, -z): a swap reads o1 from column 2 and a1 from column 1,
+ *    the sign of o1 is folded into the factors ks, kc1, m2 negates a1.
+ */
+#define VAR_NOSWAP 0
+#define VAR_SWAP 1
+#define VAR_GEN 2
+
+/* Factors of one joint for the fast path, prepared once per joint. */
+typedef struct {
+    fkq_k kc, ks, kns, kc1;     /* ct, st (modified: +-st), -st, modified: +-ct */
+    fkq_k kd, ka;               /* d, a */
+    fkq_k kca, ksa, knsa;       /* ca, sa, -sa (general twist only) */
+    uint32_t m1, m2;            /* negation masks of the exact twists */
+    int var;                    /* VAR_* */
+} fkq_joint;
+
+DH_PORT_INLINE void fast_prep(fkq_joint *J, dh_q30 st, dh_q30 ct, const dh_joint *j, dh_qpos d, int std)
+{
+    const dh_q30 sa = j->sa_q, ca = j->ca_q;
+    const int kind = twist_kind(sa, ca);
+    const int neg1 = std ? (kind == TWIST_P90 || kind == TWIST_180) : (kind == TWIST_M90 || kind == TWIST_180);
+    const int neg2 = std ? (kind == TWIST_M90 || kind == TWIST_180) : (kind == TWIST_P90 || kind == TWIST_180);
+    J->var = kind == TWIST_GEN ? VAR_GEN : ((kind == TWIST_P90 || kind == TWIST_M90) ? VAR_SWAP : VAR_NOSWAP);
+    J->m1 = MASK(neg1);
+    J->m2 = MASK(neg2);
+    J->kc = KQ(ct);
+    J->kns = KQ(-st);
+    J->ks = KQ((!std && neg1) ? -st : st);
+    J->kc1 = KQ((!std && neg1) ? -ct : ct);
+    J->kd = KQ(d);
+    J->ka = KQ(len(j->a_q));
+}
+
+/* the factors of a general twist (only that variant reads them) */
+DH_PORT_INLINE void fast_prep_gen(fkq_joint *J, const dh_joint *j)
+{
+    J->kca = KQ(j->ca_q);
+    J->ksa = KQ(j->sa_q);
+    J->knsa = KQ(-j->sa_q);
+}
+
+/* Rows of a standard DH joint: O = I * A (O may be I: row k of I is read
+ * before row k of O is written). var is a constant. Returns 1 when a
+ * position saturated. */
+DH_PORT_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int var)
+{
+    int ovf = 0, k;
+    for (k = 0; k < 3; k++) {
+        const fkq_r x = RQ(I->r[0][k]), y = RQ(I->r[1][k]);
+        const int32_t z = I->r[2][k], p = I->p[k];
+        const int32_t n1 = DOT2(J->kc, x, J->ks, y);
+        const int32_t u = DOT2(J->kc, y, J->kns, x);
+        O->p[k] = haslen ? pos_fast(p, J->kd, z, J->ka, n1, &ovf) : p;
+        O->r[0][k] = n1;
+        if (var == VAR_GEN) {
+            const fkq_r U = RQ(u), Z = RQ(z);
+            O->r[1][k] = DOT2(J->kca, U, J->ksa, Z);
+            O->r[2][k] = DOT2(J->kca, Z, J->knsa, U);
+        } else {
+            O->r[var == VAR_SWAP ? 2 : 1][k] = NEGM(u, J->m1);
+            O->r[var == VAR_SWAP ? 1 : 2][k] = NEGM(z, J->m2);
+        }
+    }
+    return ovf;
+}
+
+/* Rows of a modified DH joint (same contract as fast_std_rows). */
+DH_PORT_INLINE int fast_mod_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int var)
+{
+    int ovf = 0, k;
+    for (k = 0; k < 3; k++) {
+        const int32_t xv = I->r[0][k], p = I->p[k];
+        const fkq_r x = RQ(xv);
+        fkq_r o;
+        int32_t a1;
+        if (var == VAR_GEN) {
+            const fkq_r Y = RQ(I->r[1][k]), Z = RQ(I->r[2][k]);
+            o = RQ(DOT2(J->kca, Y, J->ksa, Z));
+            a1 = DOT2(J->kca, Z, J->knsa, Y);
+        } else {
+            o = RQ(I->r[var == VAR_SWAP ? 2 : 1][k]);
+            a1 = NEGM(I->r[var == VAR_SWAP ? 1 : 2][k], J->m2);
+        }
+        O->p[k] = haslen ? pos_fast(p, J->ka, xv, J->kd, a1, &ovf) : p;
+        O->r[0][k] = DOT2(J->kc, x, J->ks, o);
+        O->r[1][k] = DOT2(J->kc1, o, J->kns, x);
+        O->r[2][k] = a1;
+    }
+    return ovf;
+}
+
+/* One joint by the fast path. Returns 1 on saturation. */
+static FKQ_NOINLINE int fast_std(const dh_frame_q *I, dh_frame_q *O, dh_q30 st, dh_q30 ct, const dh_joint *j,
+                                 dh_qpos d)
+{
+    fkq_joint J;
+    const int haslen = (len(j->a_q) | d) != 0;
+    fast_prep(&J, st, ct, j, d, 1);
+    if (J.var == VAR_NOSWAP) return fast_std_rows(&J, I, O, haslen, VAR_NOSWAP);
+    if (J.var == VAR_SWAP) return fast_std_rows(&J, I, O, haslen, VAR_SWAP);
+    fast_prep_gen(&J, j);
+    return fast_std_rows(&J, I, O, haslen, VAR_GEN);
+}
+
+static FKQ_NOINLINE int fast_mod(const dh_frame_q *I, dh_frame_q *O, dh_q30 st, dh_q30 ct, const dh_joint *j,
+                                 dh_qpos d)
+{
+    fkq_joint J;
+    const int haslen = (len(j->a_q) | d) != 0;
+    fast_prep(&J, st, ct, j, d, 0);
+    if (J.var == VAR_NOSWAP) return fast_mod_rows(&J, I, O, haslen, VAR_NOSWAP);
+    if (J.var == VAR_SWAP) return fast_mod_rows(&J, I, O, haslen, VAR_SWAP);
+    fast_prep_gen(&J, j);
+    return fast_mod_rows(&J, I, O, haslen, VAR_GEN);
+}
 
 /* The link matrix of joint j (a step applied to the identity, written out). */
 static FKQ_NOINLINE void link_direct(dh_frame_q *A, dh_convention conv, dh_q30 st, dh_q30 ct, const dh_joint *j,
@@ -289,19 +517,22 @@ static FKQ_NOINLINE void link_direct(dh_frame_q *A, dh_convention conv, dh_q30 s
     }
 }
 
-/* out = A * B (out must not alias A or B); three-term sums with halved products. */
+/* a0 b[0]/2 + a1 b[1]/2 + a2 b[2]/2 (each product halved, floor), exact in
+ * 64 bits (|each| <= 2^61). Out of line: keeps mul_frame's frame small. */
+static FKQ_NOINLINE int64_t dot3h(int32_t a0, int32_t a1, int32_t a2, const int32_t *b)
+{
+    return (MUL(a0, b[0]) >> 1) + (MUL(a1, b[1]) >> 1) + (MUL(a2, b[2]) >> 1);
+}
+
+/* out = A * B, three-term sums with halved products. out may be A (row k
+ * of A is read before row k of out is written), not B. */
 static FKQ_NOINLINE void mul_frame(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B, int *ovf)
 {
     int c, k;
     for (k = 0; k < 3; k++) {
-        int32_t a0 = A->r[0][k], a1 = A->r[1][k], a2 = A->r[2][k];
-        for (c = 0; c < 3; c++)
-            out->r[c][k] = rot_h((MUL(a0, B->r[c][0]) >> 1) + (MUL(a1, B->r[c][1]) >> 1) +
-                                     (MUL(a2, B->r[c][2]) >> 1),
-                                 ovf);
-        out->p[k] = pos_h(A->p[k], (MUL(a0, B->p[0]) >> 1) + (MUL(a1, B->p[1]) >> 1) +
-                                       (MUL(a2, B->p[2]) >> 1),
-                          ovf);
+        const int32_t a0 = A->r[0][k], a1 = A->r[1][k], a2 = A->r[2][k], p = A->p[k];
+        for (c = 0; c < 3; c++) out->r[c][k] = rot_h(dot3h(a0, a1, a2, B->r[c]), ovf);
+        out->p[k] = pos_h(p, dot3h(a0, a1, a2, B->p), ovf);
     }
 }
 
@@ -319,9 +550,15 @@ dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A)
     return ovf ? DH_ERR_OVERFLOW : DH_OK;
 }
 
+/*
+ * The chain is accumulated in the caller's memory (frames[i], or T_end
+ * when frames is NULL), so this function has no 48-byte local frame and
+ * the deepest call chain stays within the stack budget. Nothing is
+ * written before the argument checks.
+ */
 static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, dh_frame_q *T_end)
 {
-    dh_frame_q acc;
+    dh_frame_q *cur;
     uint32_t i = 0u;
     int ovf = 0, small;
     DH_ASSERT(r != NULL);
@@ -330,33 +567,36 @@ static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, d
     if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_OVERFLOW;
 
+    cur = frames ? frames : T_end;
     if (r->flags & DH_ROBOT_BASE_ID_Q) {
         dh_q30 st, ct;
         dh_qpos d;
         joint_values(&r->joint[0], q[0], &st, &ct, &d, &ovf);
-        link_direct(&acc, r->conv, st, ct, &r->joint[0], d, &ovf);
-        if (frames) frames[0] = acc;
+        link_direct(cur, r->conv, st, ct, &r->joint[0], d, &ovf);
         i = 1u;
     } else {
-        acc = r->base_q;
+        *cur = r->base_q;
     }
     for (; i < r->n; i++) {
         dh_q30 st, ct;
         dh_qpos d;
         const dh_joint *j = &r->joint[i];
+        /* in: the previous frame (or the base in frames[0]); out: this one */
+        dh_frame_q *out = (frames && i > 0u) ? &frames[i] : cur;
         joint_values(j, q[i], &st, &ct, &d, &ovf);
-        if (small) {
-            if (r->conv == DH_CONV_STANDARD) step_std_nc(&acc, st, ct, j, d, &ovf);
-            else step_mod_nc(&acc, st, ct, j, d, &ovf);
+        if (small && FAST_LENGTHS(len(j->a_q), d)) {
+            if (r->conv == DH_CONV_STANDARD) ovf |= fast_std(cur, out, st, ct, j, d);
+            else ovf |= fast_mod(cur, out, st, ct, j, d);
         } else {
-            if (r->conv == DH_CONV_STANDARD) step_std(&acc, st, ct, j, d, &ovf);
-            else step_mod(&acc, st, ct, j, d, &ovf);
+            if (out != cur) *out = *cur;
+            if (r->conv == DH_CONV_STANDARD) step_std(out, st, ct, j, d, &ovf);
+            else step_mod(out, st, ct, j, d, &ovf);
         }
-        if (frames) frames[i] = acc;
+        cur = out;
     }
     if (T_end) {
-        if (r->flags & DH_ROBOT_TOOL_ID_Q) *T_end = acc;
-        else mul_frame(T_end, &acc, &r->tool_q, &ovf);
+        if ((r->flags & DH_ROBOT_TOOL_ID_Q) == 0u) mul_frame(T_end, cur, &r->tool_q, &ovf);
+        else if (T_end != cur) *T_end = *cur;
     }
     return ovf ? DH_ERR_OVERFLOW : DH_OK;
 }

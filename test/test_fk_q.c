@@ -347,6 +347,99 @@ static void random_robots(void)
                n, ep, er, elp, elr);
 }
 
+
+/* ---- the checked path (base rows of norm > 1.5) and long links ---------- */
+
+/*
+ * A base that is a rotation scaled by g in [1.55, 1.95] (rows of norm g:
+ * not DH_ROBOT_BASE_SMALL_Q, so every joint takes the range-checked path)
+ * in front of random robots. The reference gets the same Q base, so the
+ * errors are the chain's errors scaled by g.
+ */
+static void checked_path_scaled_base(void)
+{
+    long k, n = DHT_ITER(2000);
+    double ep = 0, er = 0;
+    for (k = 0; k < n; k++) {
+        dhs_robot d;
+        dh_robot r;
+        dh_frame_q T, T2, B, frames[DH_MAX_JOINTS];
+        dhs_mat4_d R, RB, A;
+        double q[DHS_MAX_JOINTS], g = dht_rand_uniform(1.55, 1.95), reach, e;
+        int32_t qq[DHS_MAX_JOINTS];
+        int c, i;
+        random_robot_mm(&d);
+        DHT_EQ_INT(dhs_build_q(&d, &r), DH_OK);
+        dhs_rotz(&RB, dht_rand_uniform(-180, 180));
+        dhs_rotx(&A, dht_rand_uniform(-180, 180));
+        dhs_mul(&RB, &RB, &A);
+        for (c = 0; c < 3; c++) {
+            for (i = 0; i < 3; i++) B.r[c][i] = (int32_t)floor(g * RB.m[c][i] * 1073741824.0 + 0.5);
+            B.p[c] = (int32_t)floor(dht_rand_uniform(-1000, 1000) * len_scale() * (double)(1L << DH_QPOS_FRAC));
+        }
+        DHT_EQ_INT(dh_robot_set_base_q(&r, &B), DH_OK);
+        DHT_TRUE((r.flags & DH_ROBOT_BASE_SMALL_Q) == 0u);
+        dhs_random_q(&d, q);
+        dhs_q_from_double(&r, q, qq);
+        fk_q_ok(&r, qq, &T);
+        dhs_fk_ref_q(&r, qq, NULL, &R);
+        reach = ldexp(0.5 * (double)(d.n + 2u), -DH_QPOS_FRAC) + g * (chain_reach(&d, q) + 1000.0) * LSB30;
+        e = dhs_pos_err_q(&T, &R) / reach;
+        upd(&ep, e);
+        DHT_TRUE_MSG(e <= RR_POS_REL * g, "robot %ld pos %.3g x scale", k, e);
+        e = dhs_rot_err_q(&T, &R) / LSB30;
+        upd(&er, e);
+        DHT_TRUE_MSG(e <= RR_ROT_LSB * g, "robot %ld rot %.3g LSB", k, e);
+        /* frames (accumulated out of place) give the same end frame */
+        DHT_EQ_INT(dh_fk_frames_q(&r, qq, frames, &T2), DH_OK);
+        DHT_TRUE(memcmp(&T, &T2, sizeof T) == 0);
+    }
+    dht_printf("fk_q scaled base (checked path, %ld): max pos err %.3g x scale, max rot err %.3g LSB\n", n, ep, er);
+}
+
+/*
+ * Joints with |a| + |d| > 2^30 LSB (more than half the Q range): on cores
+ * without a 64-bit multiply they take the checked path, elsewhere the
+ * fast one; both must be within the single-link accuracy.
+ */
+static void long_links(void)
+{
+    long k, n = DHT_ITER(4000);
+    double ep = 0, er = 0, big = ldexp(1.0, 31 - DH_QPOS_FRAC);
+    for (k = 0; k < n; k++) {
+        dh_robot r;
+        dh_frame_q T, frames[2];
+        dhs_mat4_d R;
+        int32_t qq[2];
+        double e, reach;
+        dh_convention conv = (k & 1) ? DH_CONV_MODIFIED : DH_CONV_STANDARD;
+        double al = (k & 2) ? 90.0 * (double)(int)(dht_rand_u32() % 4u) : dht_rand_uniform(-180, 180);
+        double a = dht_rand_uniform(0.26, 0.33) * big * ((dht_rand_u32() & 1u) ? 1 : -1);
+        double dd = dht_rand_uniform(0.26, 0.33) * big * ((dht_rand_u32() & 1u) ? 1 : -1);
+        DHT_EQ_INT(dh_robot_init(&r, conv), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, dhs_to_q(a, DH_QPOS_FRAC), dhs_to_q(dd, DH_QPOS_FRAC),
+                                        dhs_to_q(al, 16), 0), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, dhs_to_q(dht_rand_uniform(-100, 100), DH_QPOS_FRAC),
+                                        dhs_to_q(dht_rand_uniform(-100, 100), DH_QPOS_FRAC),
+                                        dhs_to_q(dht_rand_uniform(-180, 180), 16), 0), DH_OK);
+        qq[0] = dhs_to_q(dht_rand_uniform(-360, 360), 16);
+        qq[1] = dhs_to_q(dht_rand_uniform(-360, 360), 16);
+        fk_q_ok(&r, qq, &T);
+        dhs_fk_ref_q(&r, qq, NULL, &R);
+        reach = ldexp(2.0, -DH_QPOS_FRAC) + (fabs(a) + fabs(dd) + 200.0) * LSB30;
+        e = dhs_pos_err_q(&T, &R) / reach;
+        upd(&ep, e);
+        DHT_TRUE_MSG(e <= RR_POS_REL, "long link %ld: pos %.3g x scale", k, e);
+        e = dhs_rot_err_q(&T, &R) / LSB30;
+        upd(&er, e);
+        DHT_TRUE(e <= LINK_ROT_LSB);
+        DHT_EQ_INT(dh_fk_frames_q(&r, qq, frames, NULL), DH_OK);
+        DHT_TRUE(memcmp(&T, &frames[1], sizeof T) == 0);
+    }
+    dht_printf("fk_q long links (|a| + |d| > 2^30 LSB, %ld): max pos err %.3g x scale, max rot err %.3g LSB\n", n, ep,
+               er);
+}
+
 /* ---- angle reduction: q + offset beyond the int32 range ----------------- */
 
 static void angle_wrap(void)
@@ -549,6 +642,8 @@ static const dht_case cases[] = {
     DHT_CASE(published_poses_mm),
     DHT_CASE(dense_sweep),
     DHT_CASE(random_robots),
+    DHT_CASE(checked_path_scaled_base),
+    DHT_CASE(long_links),
     DHT_CASE(angle_wrap),
     DHT_CASE(errors_and_saturation),
     DHT_CASE(limits_q),

@@ -2,7 +2,8 @@
  * test_port.c - port/dh_port.h: the dispatching functions (intrinsics on
  * Cortex-M3/M4/M7 target builds, plain C elsewhere) against the plain-C
  * versions and against references written independently here, on edge
- * values and on seeded random values.
+ * values and on seeded random values; the 16-bit split kernel of the
+ * fixed-point FK against the exact 64-bit sum on its whole domain.
  */
 #include "dht.h"
 #include "../port/dh_port.h" /* private to the library: not on the test include path */
@@ -180,6 +181,112 @@ static void qadd_saturates(void)
     }
 }
 
+
+/* ---- 16-bit split kernel of the fixed-point FK (ARMv6-M path) ----------- */
+
+/* |v| as int64 */
+static int64_t abs64(int32_t v)
+{
+    return v < 0 ? -(int64_t)v : (int64_t)v;
+}
+
+/* exact floor((c x + s y + 2^29) / 2^30) when |c x + s y| < 2^63 - 2^29 */
+static int64_t ref_dot2r30(int32_t c, int32_t x, int32_t s, int32_t y)
+{
+    int64_t t = ref_mul(c, x) + ref_mul(s, y) + ((int64_t)1 << 29);
+    return t >> 30;   /* arithmetic shift = floor (checked in dh_port.h) */
+}
+
+/* a random value of magnitude up to 2^bits, biased to split boundaries */
+static int32_t rand_mag(unsigned bits)
+{
+    uint32_t r = dht_rand_u32();
+    int32_t v = (int32_t)(dht_rand_u32() >> (32u - bits)) - (int32_t)(dht_rand_u32() >> (32u - bits));
+    switch (r & 7u) {
+    case 0: v = (int32_t)(((uint32_t)v & 0xFFFF0000u) | 0x8000u); break;  /* low half 0x8000 */
+    case 1: v = (int32_t)(((uint32_t)v & 0xFFFF0000u) | 0x7FFFu); break;
+    case 2: v = (v < 0 ? -1 : 1) * (int32_t)(((uint32_t)1 << bits) - (dht_rand_u32() & 0xFFFFu)); break;
+    default: break;
+    }
+    return v;
+}
+
+/* the splits are exact and in their documented ranges */
+static void split16_ranges(void)
+{
+    long k, n = DHT_ITER(200000);
+    for (k = 0; k < n + (long)NEDGES; k++) {
+        int32_t v = k < (long)NEDGES ? edges[k] : rand_edge_or_random();
+        if (v < 0x7FFF8000) {
+            dh_port_s16 r = dh_port_split_row(v);
+            DHT_EQ_INT((int64_t)r.h * 65536 + r.l, v);
+            DHT_TRUE(r.l >= -32768 && r.l < 32768);
+            DHT_TRUE(r.h >= -32768 && r.h < 32768);
+        }
+        if (abs64(v) <= 0x7FFF8000LL) {
+            dh_port_s16 kq = dh_port_split_k(v);
+            DHT_EQ_INT((int64_t)kq.h * 65536 + kq.l, v);
+            DHT_TRUE(kq.l > -32768 && kq.l <= 32768);
+            DHT_TRUE(kq.h >= -32768 && kq.h <= 32768);
+        }
+    }
+}
+
+/* dh_port_dot2r30_s16 equals the exactly rounded 64-bit sum on its domain
+ * |c| + |s| + |x| + |y| <= 2^32 - 2^18, x, y < 2^31 - 2^15 (result in
+ * int32), including the
+ * extremes of the low halves (0x8000 / 0x7FFF) and the FK's own ranges */
+static void dot2r30_s16_exact(void)
+{
+    long k, n = DHT_ITER(1000000), tested = 0;
+    static const int32_t ks[] = { 0x40000000, -0x40000000, 0, 1, -1, 0x3FFF8000, -0x3FFF8000, 0x2D413CCD,
+                                  -0x2D413CCD, 0x00008000, -0x00007FFF, 0x7FFF8000 / 2 };
+    static const int32_t xs[] = { 0x60000000, -0x60000000, 0x5FFF8000, -0x60008000, 0x7FFF, -0x8000, 0x8000,
+                                  0x40000000, -0x40000000, 0, 0x12348000, -0x12348000 };
+    size_t a, b, c2, d2;
+    /* structured extremes: rotation-like factors and row entries */
+    for (a = 0; a < sizeof ks / sizeof ks[0]; a++)
+        for (b = 0; b < sizeof ks / sizeof ks[0]; b++)
+            for (c2 = 0; c2 < sizeof xs / sizeof xs[0]; c2++)
+                for (d2 = 0; d2 < sizeof xs / sizeof xs[0]; d2 += 3) {
+                    int32_t c = ks[a], s = ks[b], x = xs[c2], y = xs[d2];
+                    int64_t r;
+                    if (abs64(c) + abs64(s) + abs64(x) + abs64(y) > 0xFFFC0000LL) continue;
+                    if (x >= 0x7FFF8000 || y >= 0x7FFF8000) continue;
+                    r = ref_dot2r30(c, x, s, y);
+                    if (r > INT32_MAX || r < INT32_MIN) continue;
+                    DHT_EQ_INT(dh_port_dot2r30_s16(dh_port_split_k(c), dh_port_split_row(x), dh_port_split_k(s),
+                                                   dh_port_split_row(y)), r);
+                    tested++;
+                }
+    for (k = 0; k < n; k++) {
+        int32_t c, s, x, y;
+        int64_t r;
+        switch (k % 3) {
+        case 0:   /* sine/cosine pair and a row of norm <= 1.5 (the FK rotation sums) */
+            c = rand_mag(30); s = rand_mag(30); x = rand_mag(30); y = rand_mag(30);
+            x += x / 2; y += y / 2;
+            break;
+        case 1:   /* lengths |a| + |d| <= 2^30 times rotation entries (FK positions) */
+            c = rand_mag(29); s = rand_mag(29); x = rand_mag(30); y = rand_mag(30);
+            break;
+        default:  /* anything on the domain boundary */
+            c = rand_mag(31); s = rand_mag(31); x = rand_mag(31); y = rand_mag(31);
+            break;
+        }
+        if (abs64(c) > 0x7FFF8000LL || abs64(s) > 0x7FFF8000LL) continue;
+        if (x >= 0x7FFF8000 || y >= 0x7FFF8000) continue;
+        if (abs64(c) + abs64(s) + abs64(x) + abs64(y) > 0xFFFC0000LL) continue;
+        r = ref_dot2r30(c, x, s, y);
+        if (r > INT32_MAX || r < INT32_MIN) continue;
+        DHT_EQ_INT(dh_port_dot2r30_s16(dh_port_split_k(c), dh_port_split_row(x), dh_port_split_k(s),
+                                       dh_port_split_row(y)), r);
+        tested++;
+    }
+    dht_printf("dot2r30_s16: %ld sums checked against the exact 64-bit value\n", tested);
+    DHT_TRUE(tested > n / 4);
+}
+
 static const dht_case cases[] = {
     DHT_CASE(report_features),
     DHT_CASE(smull_edges_and_random),
@@ -188,5 +295,7 @@ static const dht_case cases[] = {
     DHT_CASE(ssat_every_width_and_constant_forms),
     DHT_CASE(clz_all_bit_positions),
     DHT_CASE(qadd_saturates),
+    DHT_CASE(split16_ranges),
+    DHT_CASE(dot2r30_s16_exact),
 };
 DHT_MAIN(cases)
