@@ -1,0 +1,586 @@
+/*
+ * bench_target.c - on-target benchmark firmware: instructions (under QEMU
+ * with -icount shift=0) or cycles (on hardware) per call of dhmath
+ * operations, float and fixed point, on Cortex-M0/M0+, M4F and M7, with
+ * newlib's sinf/cosf and (bench_cglm.c) cglm as peers.
+ *
+ * Counter
+ * - SysTick on the processor clock, 24-bit, counting down from 0xFFFFFF;
+ *   its interrupt counts the wraps, so the count is 64 bits wide.
+ *   Under QEMU with -icount shift=0 virtual time advances exactly 1 ns per
+ *   executed guest instruction, and SysTick ticks once per clock period of
+ *   the board (40 ns on MPS2 at 25 MHz, 62.5 ns on the micro:bit at 16 MHz),
+ *   so ticks x (ns per tick) = executed instructions.
+ * - ARMv7-M (M3/M4/M7): DWT->CYCCNT is enabled and used instead if it
+ *   advances (real hardware; QEMU 7.2 does not model the DWT, the register
+ *   reads 0). The report says which counter was used.
+ * - Calibration: a loop of exactly 2 instructions per iteration (SUBS, BNE)
+ *   run for 10^5 and 1.01 * 10^7 iterations; the difference is 2 * 10^7
+ *   instructions. Instructions per tick = 2e7 / ticks: 40 or 62.5 under
+ *   icount (+-1 tick of quantisation; the report rounds it). A ratio below 1.5 means the counter counts core clock
+ *   cycles (hardware): the figures are then cycles, unscaled.
+ *
+ * Method per operation: bt_run() calls a wrapper fn(i) through a pointer
+ * for i = 0..n-1 over precomputed inputs (indexed by i). The same loop runs
+ * with the wrapper calling a null twin of the function (same prototype,
+ * returns at once) and with an empty wrapper; the differences give the
+ * function's own instructions and the cost of the whole call (see
+ * "operations" below).
+ *
+ * Output: lines starting with "BT " on the semihosting console, parsed by
+ * bench/target/report.py. Exit status: 0, or 1 if a sanity check failed
+ * (an operation returned an error, results disagree).
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "bench_target.h"
+
+#ifndef BENCH_CORE
+#define BENCH_CORE "unknown core"
+#endif
+#ifndef BENCH_OPT
+#define BENCH_OPT "?"
+#endif
+
+#define BT_DEG2RAD 0.017453292519943295f
+
+/* ---- counter ------------------------------------------------------------ */
+
+#define BT_SYST_CSR (*(volatile uint32_t *)0xE000E010u)
+#define BT_SYST_RVR (*(volatile uint32_t *)0xE000E014u)
+#define BT_SYST_CVR (*(volatile uint32_t *)0xE000E018u)
+#define BT_DEMCR (*(volatile uint32_t *)0xE000EDFCu)
+#define BT_DWT_CTRL (*(volatile uint32_t *)0xE0001000u)
+#define BT_DWT_CYCCNT (*(volatile uint32_t *)0xE0001004u)
+
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#define BT_HAS_DWT 1
+#else
+#define BT_HAS_DWT 0
+#endif
+
+static volatile uint32_t bt_wraps;
+static int bt_use_dwt;
+#if BT_HAS_DWT
+static uint32_t bt_dwt_last;
+static uint64_t bt_dwt_hi;
+#endif
+
+void SysTick_Handler(void);
+void SysTick_Handler(void)
+{
+    bt_wraps = bt_wraps + 1u;
+}
+
+static BT_NOINLINE uint64_t bt_now(void)
+{
+    uint32_t w, v;
+#if BT_HAS_DWT
+    if (bt_use_dwt) {
+        uint32_t c = BT_DWT_CYCCNT;
+        if (c < bt_dwt_last) {
+            bt_dwt_hi += (uint64_t)1 << 32;
+        }
+        bt_dwt_last = c;
+        return bt_dwt_hi + c;
+    }
+#endif
+    do {
+        w = bt_wraps;
+        v = BT_SYST_CVR;
+    } while (w != bt_wraps);
+    return ((uint64_t)w << 24) + (0xFFFFFFu - v);
+}
+
+/* Exactly 2 instructions per iteration (n >= 1). */
+static BT_NOINLINE void bt_spin(uint32_t n)
+{
+#if defined(__ARM_ARCH_6M__)
+    /* GCC passes Thumb-1 inline asm in divided syntax: SUB sets the flags */
+    __asm__ volatile("1:\n\tsub %0, #1\n\tbne 1b" : "+l"(n) : : "cc");
+#else
+    __asm__ volatile("1:\n\tsubs %0, %0, #1\n\tbne 1b" : "+l"(n) : : "cc");
+#endif
+}
+
+static void bt_counter_init(void)
+{
+#if BT_HAS_DWT
+    uint32_t c0, c1;
+    BT_DEMCR |= 1u << 24;   /* TRCENA */
+    BT_DWT_CYCCNT = 0u;
+    BT_DWT_CTRL |= 1u;      /* CYCCNTENA */
+    c0 = BT_DWT_CYCCNT;
+    bt_spin(1000u);
+    c1 = BT_DWT_CYCCNT;
+    if (c1 != c0) {
+        bt_use_dwt = 1;
+        bt_dwt_last = BT_DWT_CYCCNT;
+        return;
+    }
+#endif
+    BT_SYST_CSR = 0u;
+    BT_SYST_RVR = 0xFFFFFFu;
+    BT_SYST_CVR = 0u;        /* any write clears the counter */
+    BT_SYST_CSR = 7u;        /* ENABLE | TICKINT | CLKSOURCE = processor clock */
+}
+
+/* scale = bt_num / bt_den instructions per tick (1/1 for cycles) */
+static uint64_t bt_num = 1u, bt_den = 1u;
+static const char *bt_unit = "cycles";
+
+static int bt_calibrate(void)
+{
+    uint64_t t0, t1, t2, d1, d2, ticks;
+    t0 = bt_now();
+    bt_spin(100000u);
+    t1 = bt_now();
+    bt_spin(10100000u);
+    t2 = bt_now();
+    d1 = t1 - t0;
+    d2 = t2 - t1;
+    ticks = d2 - d1;
+    printf("BT calib|%s|%llu|%llu\n", bt_use_dwt ? "DWT CYCCNT" : "SysTick",
+           (unsigned long long)20000000u, (unsigned long long)ticks);
+    if (ticks == 0u || d2 <= d1) {
+        printf("BT error|counter does not advance\n");
+        return 0;
+    }
+    if (ticks * 3u <= 2u * 20000000u) {
+        /* >= 1.5 instructions per tick: a virtual clock (QEMU -icount). */
+        bt_num = 20000000u;
+        bt_den = ticks;
+        bt_unit = "instructions";
+    }
+    printf("BT unit|%s|%llu|%llu\n", bt_unit, (unsigned long long)bt_num,
+           (unsigned long long)bt_den);
+    return 1;
+}
+
+static BT_NOINLINE uint64_t bt_run(bt_fn fn, uint32_t n)
+{
+    uint64_t t0, t1;
+    uint32_t i;
+    t0 = bt_now();
+    for (i = 0; i < n; i++) {
+        fn(i);
+    }
+    t1 = bt_now();
+    return t1 - t0;
+}
+
+/* ---- inputs --------------------------------------------------------------- */
+
+__attribute__((aligned(16))) dh_mat4_f32 bt_A[BT_NSET];
+__attribute__((aligned(16))) dh_mat4_f32 bt_B[BT_NSET];
+__attribute__((aligned(16))) dh_mat4_f32 bt_out;
+dh_vec3_f32 bt_pts[BT_NSET];
+dh_vec3_f32 bt_vout;
+volatile uint32_t bt_sink;
+
+static dh_frame_q bt_FA[BT_NSET], bt_FB[BT_NSET], bt_Fout;
+static dh_vec3_q bt_ptq[BT_NSET], bt_vq;
+static float bt_ang_f[BT_NANG];
+static dh_q16 bt_ang_q[BT_NANG];
+static float bt_s, bt_c;
+static dh_q30 bt_sq, bt_cq;
+static float bt_qf[BT_NSET][6];
+static int32_t bt_qq[BT_NSET][6];
+static dh_robot bt_puma_m, bt_puma_mm;
+static float bt_J[36];
+static uint32_t bt_status;   /* OR of every status returned in the timed loops */
+
+static uint32_t bt_rng = 0x2545F491u;
+
+static uint32_t bt_rand(void)
+{
+    /* xorshift32 (Marsaglia 2003) */
+    bt_rng ^= bt_rng << 13;
+    bt_rng ^= bt_rng >> 17;
+    bt_rng ^= bt_rng << 5;
+    return bt_rng;
+}
+
+/* uniform in [lo, hi) */
+static float bt_uniform(float lo, float hi)
+{
+    return lo + (hi - lo) * ((float)(bt_rand() >> 8) * (1.0f / 16777216.0f));
+}
+
+static dh_q16 bt_to_q16(float deg)
+{
+    float x = deg * 65536.0f;
+    return (dh_q16)(x < 0.0f ? x - 0.5f : x + 0.5f);
+}
+
+/* Puma 560, standard DH, metres: Corke's Robotics Toolbox (RTB-Python
+ * models/DH/Puma560.py), the same table as test/support_robots.c and
+ * bench/bench_ref.c. Columns: a, d, alpha (deg), joint limits (deg). */
+static const float bt_puma_tab[6][5] = {
+    { 0.0f,    0.67183f, 90.0f,  -160.0f, 160.0f },
+    { 0.4318f, 0.0f,     0.0f,   -110.0f, 110.0f },
+    { 0.0203f, 0.15005f, -90.0f, -135.0f, 135.0f },
+    { 0.0f,    0.4318f,  90.0f,  -266.0f, 266.0f },
+    { 0.0f,    0.0f,     -90.0f, -100.0f, 100.0f },
+    { 0.0f,    0.0f,     0.0f,   -266.0f, 266.0f },
+};
+
+static uint32_t bt_robot(dh_robot *r, float scale)
+{
+    uint32_t st;
+    uint32_t j;
+    st = (uint32_t)dh_robot_init(r, DH_CONV_STANDARD);
+    for (j = 0; j < 6u; j++) {
+        st |= (uint32_t)dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, bt_puma_tab[j][0] * scale,
+                                               bt_puma_tab[j][1] * scale, bt_puma_tab[j][2], 0.0f);
+        st |= (uint32_t)dh_robot_set_limits_f32(r, j, bt_puma_tab[j][3], bt_puma_tab[j][4]);
+    }
+    return st;
+}
+
+/* Random rigid transform: axis uniform in the cube (not tiny), angle in
+ * +-180 deg, translation in +-reach. */
+static uint32_t bt_rigid(dh_mat4_f32 *T, float reach)
+{
+    float kx, ky, kz;
+    uint32_t st;
+    do {
+        kx = bt_uniform(-1.0f, 1.0f);
+        ky = bt_uniform(-1.0f, 1.0f);
+        kz = bt_uniform(-1.0f, 1.0f);
+    } while (kx * kx + ky * ky + kz * kz < 0.01f);
+    st = (uint32_t)dh_mat4_rot_axis_f32(T, kx, ky, kz, bt_uniform(-180.0f, 180.0f));
+    DH_M4(T, 0, 3) = bt_uniform(-reach, reach);
+    DH_M4(T, 1, 3) = bt_uniform(-reach, reach);
+    DH_M4(T, 2, 3) = bt_uniform(-reach, reach);
+    return st;
+}
+
+static uint32_t bt_inputs(void)
+{
+    uint32_t st = 0u, k, j;
+    dh_mat4_f32 T;
+    for (k = 0; k < BT_NANG; k++) {
+        bt_ang_f[k] = bt_uniform(-720.0f, 720.0f);
+        bt_ang_q[k] = bt_to_q16(bt_uniform(-720.0f, 720.0f));
+    }
+    for (k = 0; k < BT_NSET; k++) {
+        st |= bt_rigid(&bt_A[k], 1.0f);
+        st |= bt_rigid(&bt_B[k], 1.0f);
+        bt_pts[k].x = bt_uniform(-1.0f, 1.0f);
+        bt_pts[k].y = bt_uniform(-1.0f, 1.0f);
+        bt_pts[k].z = bt_uniform(-1.0f, 1.0f);
+        /* fixed frames in mm (positions up to 1000 mm) */
+        st |= bt_rigid(&T, 1000.0f);
+        st |= (uint32_t)dh_frame_from_mat4_q(&bt_FA[k], &T);
+        st |= bt_rigid(&T, 1000.0f);
+        st |= (uint32_t)dh_frame_from_mat4_q(&bt_FB[k], &T);
+        bt_ptq[k].x = (dh_qpos)bt_to_q16(bt_uniform(-1000.0f, 1000.0f));
+        bt_ptq[k].y = (dh_qpos)bt_to_q16(bt_uniform(-1000.0f, 1000.0f));
+        bt_ptq[k].z = (dh_qpos)bt_to_q16(bt_uniform(-1000.0f, 1000.0f));
+        for (j = 0; j < 6u; j++) {
+            float q = bt_uniform(bt_puma_tab[j][3], bt_puma_tab[j][4]);
+            bt_qf[k][j] = q;
+            bt_qq[k][j] = bt_to_q16(q);
+        }
+    }
+    st |= bt_robot(&bt_puma_m, 1.0f);
+    st |= bt_robot(&bt_puma_mm, 1000.0f);
+    return st;
+}
+
+/* ---- operations -----------------------------------------------------------
+ *
+ * Every dhmath operation has two wrappers built from one body macro: op_X
+ * calls the library function, nul_X calls a null twin with the same
+ * prototype that returns at once (noipa: the compiler may not look inside
+ * it, so the call and the use of its result stay). Both wrappers execute the
+ * same index arithmetic, argument set-up, call and status store, so
+ *     (ticks(op_X) - ticks(nul_X)) / n
+ * is the function's own instructions minus those of the null twin's body
+ * (`bx lr`, or `movs r0, #0; bx lr`), which report.py counts in the
+ * disassembly and adds back. ticks(op_X) - ticks(op_empty) is the whole
+ * call as the benchmark makes it (used for the comparison with the inline
+ * cglm code).
+ */
+
+#if defined(__GNUC__)
+#define BT_NOIPA __attribute__((noipa))
+#else
+#define BT_NOIPA
+#endif
+
+static BT_NOINLINE void op_empty(uint32_t i)
+{
+    (void)i;
+}
+
+/* null twins */
+static BT_NOIPA dh_status z_sincos_f32(float deg, float *s, float *c)
+{
+    (void)deg; (void)s; (void)c;
+    return DH_OK;
+}
+static BT_NOIPA void z_sincos_q(dh_q16 deg, dh_q30 *s, dh_q30 *c)
+{
+    (void)deg; (void)s; (void)c;
+}
+static BT_NOIPA void z_mat_mul(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
+{
+    (void)out; (void)A; (void)B;
+}
+static BT_NOIPA void z_mat_inv_rigid(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+{
+    (void)out; (void)T;
+}
+static BT_NOIPA dh_status z_mat_inv(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+{
+    (void)out; (void)T;
+    return DH_OK;
+}
+static BT_NOIPA void z_mat_point(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
+{
+    (void)T; (void)u; (void)v;
+}
+static BT_NOIPA dh_status z_frame_mul(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B)
+{
+    (void)out; (void)A; (void)B;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_frame_inv(dh_frame_q *out, const dh_frame_q *F)
+{
+    (void)out; (void)F;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_frame_point(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_q *v)
+{
+    (void)F; (void)u; (void)v;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *T)
+{
+    (void)r; (void)q; (void)T;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *T)
+{
+    (void)r; (void)q; (void)T;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_jacobian(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T)
+{
+    (void)r; (void)q; (void)J; (void)T;
+    return DH_OK;
+}
+
+/* wrapper bodies, F = the function to call */
+#define B_sincos_f32(F) bt_status |= (uint32_t)F(bt_ang_f[i & (BT_NANG - 1u)], &bt_s, &bt_c)
+#define B_sincos_q(F) F(bt_ang_q[i & (BT_NANG - 1u)], &bt_sq, &bt_cq)
+#define B_mul_affine(F) F(&bt_out, &bt_A[BT_IA(i)], &bt_B[BT_IB(i)])
+#define B_mul(F) F(&bt_out, &bt_A[BT_IA(i)], &bt_B[BT_IB(i)])
+#define B_inv_rigid(F) F(&bt_out, &bt_A[BT_IA(i)])
+#define B_inv(F) bt_status |= (uint32_t)F(&bt_out, &bt_A[BT_IA(i)])
+#define B_apply_point(F) F(&bt_A[BT_IA(i)], &bt_pts[BT_IB(i)], &bt_vout)
+#define B_frame_mul(F) bt_status |= (uint32_t)F(&bt_Fout, &bt_FA[BT_IA(i)], &bt_FB[BT_IB(i)])
+#define B_frame_inv(F) bt_status |= (uint32_t)F(&bt_Fout, &bt_FA[BT_IA(i)])
+#define B_frame_point(F) bt_status |= (uint32_t)F(&bt_FA[BT_IA(i)], &bt_ptq[BT_IB(i)], &bt_vq)
+#define B_fk_f32(F) bt_status |= (uint32_t)F(&bt_puma_m, bt_qf[BT_IA(i)], &bt_out)
+#define B_fk_q(F) bt_status |= (uint32_t)F(&bt_puma_mm, bt_qq[BT_IA(i)], &bt_Fout)
+#define B_jacobian(F) bt_status |= (uint32_t)F(&bt_puma_m, bt_qf[BT_IA(i)], bt_J, &bt_out)
+
+#define BT_PAIR(tag, real, null)                                  \
+    static BT_NOIPA void op_##tag(uint32_t i) { B_##tag(real); }  \
+    static BT_NOIPA void nul_##tag(uint32_t i) { B_##tag(null); }
+
+BT_PAIR(sincos_f32, dh_sincos_f32, z_sincos_f32)
+BT_PAIR(sincos_q, dh_sincos_q, z_sincos_q)
+BT_PAIR(mul_affine, dh_mat4_mul_affine_f32, z_mat_mul)
+BT_PAIR(mul, dh_mat4_mul_f32, z_mat_mul)
+BT_PAIR(inv_rigid, dh_mat4_inv_rigid_f32, z_mat_inv_rigid)
+BT_PAIR(inv, dh_mat4_inv_f32, z_mat_inv)
+BT_PAIR(apply_point, dh_mat4_apply_point_f32, z_mat_point)
+BT_PAIR(frame_mul, dh_frame_mul_q, z_frame_mul)
+BT_PAIR(frame_inv, dh_frame_inv_q, z_frame_inv)
+BT_PAIR(frame_point, dh_frame_apply_point_q, z_frame_point)
+BT_PAIR(fk_f32, dh_fk_f32, z_fk_f32)
+BT_PAIR(fk_q, dh_fk_q, z_fk_q)
+BT_PAIR(jacobian, dh_jacobian_f32, z_jacobian)
+
+static BT_NOINLINE void op_newlib_sincos(uint32_t i)
+{
+    float r = bt_ang_f[i & (BT_NANG - 1u)] * BT_DEG2RAD;
+    bt_s = sinf(r);
+    bt_c = cosf(r);
+}
+
+#define BT_OPD(name, tag, zname, n) { "dhmath", name, op_##tag, nul_##tag, zname, n }
+
+static const bt_op bt_ops_dh[] = {
+    BT_OPD("dh_sincos_f32", sincos_f32, "z_sincos_f32", 4096u),
+    BT_OPD("dh_sincos_q", sincos_q, "z_sincos_q", 4096u),
+    BT_OPD("dh_mat4_mul_affine_f32", mul_affine, "z_mat_mul", 1024u),
+    BT_OPD("dh_mat4_mul_f32", mul, "z_mat_mul", 1024u),
+    BT_OPD("dh_mat4_inv_rigid_f32", inv_rigid, "z_mat_inv_rigid", 1024u),
+    BT_OPD("dh_mat4_inv_f32", inv, "z_mat_inv", 1024u),
+    BT_OPD("dh_mat4_apply_point_f32", apply_point, "z_mat_point", 1024u),
+    BT_OPD("dh_frame_mul_q", frame_mul, "z_frame_mul", 1024u),
+    BT_OPD("dh_frame_inv_q", frame_inv, "z_frame_inv", 1024u),
+    BT_OPD("dh_frame_apply_point_q", frame_point, "z_frame_point", 1024u),
+    BT_OPD("dh_fk_f32 (Puma 560, m)", fk_f32, "z_fk_f32", 512u),
+    BT_OPD("dh_fk_q (Puma 560, mm)", fk_q, "z_fk_q", 512u),
+    BT_OPD("dh_jacobian_f32 (Puma 560)", jacobian, "z_jacobian", 128u),
+    { "newlib", "sinf + cosf (from degrees)", op_newlib_sincos, 0, "", 4096u },
+};
+
+static void bt_measure(const bt_op *op)
+{
+    uint64_t base, t, tz = 0u;
+    uint32_t warm = op->n < 16u ? op->n : 16u;
+    (void)bt_run(op->fn, warm);     /* caches / branch predictors on hardware */
+    base = bt_run(op_empty, op->n);
+    t = bt_run(op->fn, op->n);
+    if (op->null_fn != 0) {
+        tz = bt_run(op->null_fn, op->n);
+    }
+    printf("BT op|%s|%s|%lu|%llu|%llu|%llu|%s\n", op->group, op->name, (unsigned long)op->n,
+           (unsigned long long)t, (unsigned long long)base, (unsigned long long)tz,
+           op->null_sym);
+}
+
+/* ---- inverse kinematics: one solve at a time ------------------------------ */
+
+#define BT_NIK 16u
+
+static float bt_ik_work[DH_IK_WORK_FLOATS(6u)];
+
+static void bt_ik(void)
+{
+    dh_ik_params p;
+    dh_ik_result res;
+    float qt[6], q0[6], q[6];
+    dh_mat4_f32 target;
+    uint64_t t0, t1, tnull;
+    uint32_t k, j;
+    dh_ik_params_default(&p);
+    t0 = bt_now();
+    t1 = bt_now();
+    tnull = t1 - t0;
+    for (k = 0; k < BT_NIK; k++) {
+        dh_status st;
+        for (j = 0; j < 6u; j++) {
+            /* reachable target: FK of a configuration inside 80 % of the
+             * limits; start 10..20 deg away on every joint */
+            float lo = 0.8f * bt_puma_tab[j][3], hi = 0.8f * bt_puma_tab[j][4];
+            float off = bt_uniform(10.0f, 20.0f);
+            qt[j] = bt_uniform(lo, hi);
+            q0[j] = qt[j] + ((bt_rand() & 1u) ? off : -off);
+        }
+        st = dh_fk_f32(&bt_puma_m, qt, &target);
+        if (st != DH_OK) {
+            bt_status |= (uint32_t)st;
+            continue;
+        }
+        t0 = bt_now();
+        st = dh_ik_f32(&bt_puma_m, &target, q0, q, &p, bt_ik_work,
+                       sizeof bt_ik_work / sizeof bt_ik_work[0], &res);
+        t1 = bt_now();
+        printf("BT ik|%lu|%d|%lu|%llu|%llu|%lu\n", (unsigned long)k, (int)st,
+               (unsigned long)res.iterations, (unsigned long long)(t1 - t0),
+               (unsigned long long)tnull, (unsigned long)(res.err_pos * 1e9f));
+    }
+}
+
+/* ---- sanity checks (the numbers mean something only if these pass) -------- */
+
+static int bt_check(const char *name, int ok)
+{
+    printf("BT check|%s|%s\n", name, ok ? "ok" : "FAIL");
+    return ok ? 0 : 1;
+}
+
+static int bt_checks(void)
+{
+    int fail = 0;
+    float s, c, d;
+    dh_mat4_f32 T;
+    dh_frame_q F;
+    uint32_t j;
+    fail += bt_check("all timed calls returned DH_OK", bt_status == 0u);
+    (void)dh_sincos_f32(bt_ang_f[3], &s, &c);
+    d = s - sinf(bt_ang_f[3] * BT_DEG2RAD);
+    fail += bt_check("dh_sincos_f32 agrees with newlib sinf (1e-5)", d < 1e-5f && d > -1e-5f);
+    (void)dh_fk_f32(&bt_puma_m, bt_qf[1], &T);
+    (void)dh_fk_q(&bt_puma_mm, bt_qq[1], &F);
+    for (j = 0; j < 3u; j++) {
+        d = (float)F.p[j] * (1.0f / 65536.0f) - 1000.0f * DH_M4(&T, j, 3);
+        if (d > 0.01f || d < -0.01f) {
+            break;
+        }
+    }
+    fail += bt_check("dh_fk_q (mm) agrees with dh_fk_f32 (m) within 0.01 mm", j == 3u);
+    fail += bt_check("cglm affine product agrees with dhmath (1e-5)", bt_cglm_check());
+    return fail;
+}
+
+/* ---- stack high-water mark ------------------------------------------------ */
+
+extern uint32_t __stack_limit__[];
+extern uint32_t __stack_top__[];
+#define BT_PAINT 0xA5C3F00Du
+
+/* Fills the unused part of the stack (from its limit up to 64 bytes below
+ * the current stack pointer) with a pattern. */
+static BT_NOINLINE void bt_stack_paint(void)
+{
+    volatile uint32_t *p = __stack_limit__;
+    uint32_t *sp;
+    __asm__ volatile("mov %0, sp" : "=r"(sp));
+    while (p < sp - 16) {
+        *p++ = BT_PAINT;
+    }
+}
+
+/* Bytes of stack ever used since bt_stack_paint(). */
+static uint32_t bt_stack_used(void)
+{
+    const volatile uint32_t *p = __stack_limit__;
+    while (p < __stack_top__ && *p == BT_PAINT) {
+        p++;
+    }
+    return (uint32_t)((uintptr_t)__stack_top__ - (uintptr_t)p);
+}
+
+int main(void)
+{
+    static bt_op ops[8];
+    uint32_t n, k, st;
+    int fail;
+    bt_stack_paint();
+    bt_counter_init();
+    printf("BT core|%s|%s|%s\n", BENCH_CORE, BENCH_OPT, __VERSION__);
+    if (!bt_calibrate()) {
+        return 1;
+    }
+    st = bt_inputs();
+    if (st != 0u) {
+        printf("BT error|input generation returned status %lu\n", (unsigned long)st);
+        return 1;
+    }
+    bt_cglm_setup();
+    for (k = 0; k < sizeof bt_ops_dh / sizeof bt_ops_dh[0]; k++) {
+        bt_measure(&bt_ops_dh[k]);
+    }
+    n = bt_cglm_ops(ops, (uint32_t)(sizeof ops / sizeof ops[0]));
+    for (k = 0; k < n; k++) {
+        bt_measure(&ops[k]);
+    }
+    bt_ik();
+    fail = bt_checks();
+    printf("BT stack|%lu|%lu\n", (unsigned long)bt_stack_used(),
+           (unsigned long)((uintptr_t)__stack_top__ - (uintptr_t)__stack_limit__));
+    printf("BT end|%d\n", fail);
+    return fail ? 1 : 0;
+}

@@ -1,0 +1,69 @@
+/*
+ * bench_target.h - shared declarations of the on-target benchmark firmware
+ * (bench_target.c: counter, inputs, dhmath and newlib operations;
+ * bench_cglm.c: the cglm peer operations).
+ *
+ * Not part of the library. See docs/performance_target.md for the method.
+ */
+#ifndef BENCH_TARGET_H
+#define BENCH_TARGET_H
+
+#include <stdint.h>
+
+#include "dhmath/dhmath.h"
+
+#if defined(__GNUC__)
+#define BT_NOINLINE __attribute__((noinline, noclone))
+#else
+#define BT_NOINLINE
+#endif
+
+/*
+ * Input set sizes (powers of two; indices are masked). The Cortex-M0 board
+ * (micro:bit) has 16 KiB of RAM in total, so its sets are smaller. Input
+ * variety matters for the instruction count only through data-dependent
+ * paths (trig quadrants, range checks), which a few dozen inputs exercise.
+ */
+#if defined(__ARM_ARCH_6M__)
+#define BT_NSET 8u      /* matrices / frames / points / FK configurations */
+#define BT_NANG 64u     /* angles for sin/cos */
+#else
+#define BT_NSET 16u
+#define BT_NANG 256u
+#endif
+
+/** One benchmarked operation: fn(i) performs one call on input set i. */
+typedef void (*bt_fn)(uint32_t i);
+typedef struct {
+    const char *group; /**< "dhmath", "newlib", "cglm" */
+    const char *name;  /**< operation name as printed in the report */
+    bt_fn fn;          /**< wrapper doing one call */
+    bt_fn null_fn;     /**< same wrapper calling a null twin of the function, or 0 (inline code) */
+    const char *null_sym; /**< symbol of the null twin (report.py counts its instructions) */
+    uint32_t n;        /**< calls per measurement */
+} bt_op;
+
+/* Inputs (filled once by bench_target.c before any measurement). Aligned
+ * to 16 bytes so the cglm peer can use the same storage as its mat4. */
+extern __attribute__((aligned(16))) dh_mat4_f32 bt_A[BT_NSET];
+extern __attribute__((aligned(16))) dh_mat4_f32 bt_B[BT_NSET];
+extern __attribute__((aligned(16))) dh_mat4_f32 bt_out;
+extern dh_vec3_f32 bt_pts[BT_NSET];
+extern dh_vec3_f32 bt_vout;
+extern volatile uint32_t bt_sink;
+
+/** Second operand index for call i: all BT_NSET^2 pairs over BT_NSET^2 calls. */
+#define BT_IA(i) ((i) & (BT_NSET - 1u))
+#define BT_IB(i) (((i) / BT_NSET + 3u * (i)) & (BT_NSET - 1u))
+
+/**
+ * cglm peer operations (bench_cglm.c). Writes at most max entries to ops
+ * and returns their number; 0 when the firmware was built without cglm.
+ * bt_cglm_setup() is called once after the inputs exist.
+ */
+uint32_t bt_cglm_ops(bt_op *ops, uint32_t max);
+void bt_cglm_setup(void);
+/** Sanity check: cglm affine product of bt_A[0] bt_B[1] vs dhmath's (1 = agree). */
+int bt_cglm_check(void);
+
+#endif /* BENCH_TARGET_H */

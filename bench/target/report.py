@@ -1,0 +1,372 @@
+#!/usr/bin/python3
+"""report.py - turn the logs of the on-target benchmark firmware
+(bench/target/bench_target.c, run by tools/target_bench.sh) into
+docs/performance_target.md.
+
+usage: report.py OUT.md META.txt LOG=ELF...
+
+META.txt holds "key=value" lines written by tools/target_bench.sh
+(versions, command lines). Each LOG is the semihosting output of one run;
+its file name is <core>-<opt>.log; ELF is the firmware image that
+produced it (its disassembly gives the size of the null twins). Exits non-zero if a log is incomplete,
+a sanity check failed, the counter did not behave like QEMU's icount clock
+or the firmware's stack came near its reserve.
+"""
+import os
+import re
+import subprocess
+import sys
+from fractions import Fraction
+
+CORES = [("m0", "Cortex-M0 (microbit)"), ("m4f", "Cortex-M4F (mps2-an386)"),
+         ("m7", "Cortex-M7 (mps2-an500)")]
+OPTS = ["O2", "Os"]
+
+# Puma 560 FK targets of issue 6: (core key, op name, limit, label)
+TARGETS = [
+    ("m4f", "dh_fk_q (Puma 560, mm)", 2000, "6-joint Puma FK, fixed, Cortex-M4"),
+    ("m4f", "dh_fk_f32 (Puma 560, m)", 1500, "6-joint Puma FK, float, Cortex-M4F"),
+    ("m0", "dh_fk_q (Puma 560, mm)", 8000, "6-joint Puma FK, fixed, Cortex-M0"),
+]
+
+# dhmath operation -> peer operation
+PEERS = [
+    ("dh_sincos_f32", "sinf + cosf (from degrees)"),
+    ("dh_mat4_mul_affine_f32", "glm_mul (affine product)"),
+    ("dh_mat4_mul_f32", "glm_mat4_mul (general product)"),
+    ("dh_mat4_inv_rigid_f32", "glm_inv_tr (rigid inverse, in place)"),
+    ("dh_mat4_inv_f32", "glm_mat4_inv (general inverse)"),
+    ("dh_mat4_apply_point_f32", "glm_mat4_mulv3 (point, w = 1)"),
+]
+
+STATUS = {0: "ok", 1: "arg", 2: "nan", 3: "singular", 4: "not rigid", 5: "zero axis",
+          6: "domain", 7: "overflow", 8: "no convergence", 9: "unreachable", 10: "limit"}
+
+
+def fail(msg):
+    sys.stderr.write("report.py: %s\n" % msg)
+    sys.exit(1)
+
+
+class Run:
+    def __init__(self, path, elf):
+        self.path = path
+        self.elf = elf
+        self.disasm = None
+        self.ops = []        # (group, name, n, per_call)
+        self.ik = []         # (k, status, iterations, instructions, err_nm)
+        self.checks = []
+        self.core = self.opt = self.gcc = self.counter = self.unit = "?"
+        self.scale = None
+        self.calib = None
+        self.stack = None
+        ended = False
+        with open(path) as f:
+            for line in f:
+                line = line.rstrip("\n")
+                if not line.startswith("BT "):
+                    continue
+                p = line[3:].split("|")
+                kind = p[0]
+                if kind == "core":
+                    self.core, self.opt, self.gcc = p[1], p[2], p[3]
+                elif kind == "calib":
+                    self.counter = p[1]
+                    self.calib = (int(p[2]), int(p[3]))
+                elif kind == "unit":
+                    self.unit = p[1]
+                    self.scale = self.snap(Fraction(int(p[2]), int(p[3])))
+                elif kind == "op":
+                    n, t, base, tz, zsym = int(p[3]), int(p[4]), int(p[5]), int(p[6]), p[7]
+                    call = float((t - base) * self.scale) / n
+                    body = None
+                    if zsym:
+                        body = float((t - tz) * self.scale) / n + self.null_len(zsym)
+                    self.ops.append((p[1], p[2], n, body, call))
+                elif kind == "ik":
+                    ticks = int(p[4]) - int(p[5])
+                    self.ik.append((int(p[1]), int(p[2]), int(p[3]),
+                                    float(ticks * self.scale), int(p[6])))
+                elif kind == "check":
+                    self.checks.append((p[1], p[2]))
+                elif kind == "stack":
+                    self.stack = (int(p[1]), int(p[2]))
+                elif kind == "error":
+                    fail("%s: firmware error: %s" % (path, p[1]))
+                elif kind == "end":
+                    ended = True
+        if not ended:
+            fail("%s: incomplete log (no 'BT end')" % path)
+        bad = [c for c, r in self.checks if r != "ok"]
+        if bad:
+            fail("%s: sanity check failed: %s" % (path, "; ".join(bad)))
+        if self.unit != "instructions":
+            fail("%s: counter counts %s, not instructions: was QEMU run with -icount shift=0?"
+                 % (path, self.unit))
+        if self.stack is None or self.stack[0] > self.stack[1] * 3 // 4:
+            fail("%s: stack high-water mark %s too close to the reserve" % (path, self.stack))
+
+    @staticmethod
+    def snap(ratio):
+        """Instructions per tick = ns per tick under icount shift=0: the
+        board's clock period (40 ns at 25 MHz, 62.5 ns at 16 MHz). The
+        calibration is +-1 tick off; round to the nearest 1/8 ns when
+        within 0.01 %, else refuse."""
+        snapped = Fraction(round(ratio * 8), 8)
+        if abs(ratio - snapped) > ratio / 10000:
+            fail("calibration ratio %s is not a clock period in ns: not an icount clock?"
+                 % float(ratio))
+        return snapped
+
+    def null_len(self, sym):
+        """Instructions of the null twin `sym` (straight-line code ending in
+        a return), from the disassembly of the firmware."""
+        if self.disasm is None:
+            self.disasm = subprocess.run(["arm-none-eabi-objdump", "-d", self.elf], check=True,
+                                         capture_output=True, text=True).stdout
+        m = re.search(r"^[0-9a-f]+ <%s>:\n((?:.+\n)+?)\n" % re.escape(sym), self.disasm, re.M)
+        if not m:
+            fail("%s: no symbol %s in %s" % (self.path, sym, self.elf))
+        ins = [ln.split("\t")[2].split()[0] for ln in m.group(1).splitlines()
+               if ln.count("\t") >= 2 and not ln.split("\t")[2].startswith(".")]
+        while ins and ins[-1] == "nop":     # alignment padding after the return
+            ins.pop()
+        if not ins or ins[-1] not in ("bx", "pop") or any(
+                x.startswith("b") and x not in ("bx",) for x in ins[:-1]):
+            fail("%s: null twin %s is not straight-line code: %s" % (self.path, sym, ins))
+        return len(ins)
+
+    def op(self, name, call=False):
+        """Instructions per call of `name`: the function's own (default) or
+        the whole call from the benchmark loop (call=True; the only figure
+        for inline peers)."""
+        for g, nm, n, body, whole in self.ops:
+            if nm == name:
+                return whole if call or body is None else body
+        return None
+
+    def n_of(self, name):
+        for g, nm, n, body, whole in self.ops:
+            if nm == name:
+                return n
+        return None
+
+
+def fmt(v):
+    if v is None:
+        return "-"
+    return "%.1f" % v if v < 100 else "%.0f" % v
+
+
+def main():
+    if len(sys.argv) < 4:
+        fail(__doc__)
+    out, meta_path, logs = sys.argv[1], sys.argv[2], sys.argv[3:]
+    meta = {}
+    with open(meta_path) as f:
+        for line in f:
+            if "=" in line:
+                k, v = line.rstrip("\n").split("=", 1)
+                meta[k] = v
+    runs = {}
+    for arg in logs:
+        path, elf = arg.split("=", 1)
+        key = os.path.basename(path)[:-4]     # <core>-<opt>
+        runs[key] = Run(path, elf)
+    cols = [(c, o) for c, _ in CORES for o in OPTS if "%s-%s" % (c, o) in runs]
+    core_name = dict(CORES)
+
+    def get(c, o, name, call=False):
+        r = runs.get("%s-%s" % (c, o))
+        return r.op(name, call) if r else None
+
+    def overhead_range():
+        vals = []
+        for r in runs.values():
+            for g, nm, n, body, whole in r.ops:
+                if body is not None:
+                    vals.append(whole - body)
+        return "%.0f-%.0f" % (min(vals), max(vals)) if vals else "?"
+
+    L = []
+    w = L.append
+    w("# dhmath on target: instructions per call on Cortex-M0, M4F and M7")
+    w("")
+    w("Generated by `tools/target_bench.sh` (do not edit by hand; rerun the script). "
+      "Firmware: `bench/target/` (GitHub issues 3, 5 and 6).")
+    w("")
+    w("Every figure is the number of **executed instructions** per call, counted by QEMU "
+      "with `-icount shift=0` (one nanosecond of virtual time per guest instruction) through "
+      "the core's SysTick timer: exact and repeatable, but not cycles (see "
+      "[What the numbers are](#what-the-numbers-are)).")
+    w("")
+    w("## Setup")
+    w("")
+    w("| item | value |")
+    w("|---|---|")
+    for k in ("library", "compiler", "newlib", "qemu", "cglm"):
+        if k in meta:
+            w("| %s | %s |" % (k, meta[k]))
+    w("| library flags | as in a normal build: `-std=c99 -ffunction-sections -fdata-sections` plus "
+      "the core flags of `port/cortex-*.cmake`; `-O2` = CMake `RelWithDebInfo`, `-Os` = "
+      "`MinSizeRel`; default configuration (`DH_MAX_JOINTS` 8, `DH_QPOS_FRAC` 16, "
+      "`DH_CHECK_ARGS` on, `DH_USE_INTRINSICS` on) |")
+    w("| cores | " + "; ".join(
+        "%s: `%s`" % (core_name[c], meta.get("flags-" + c, "?")) for c, _ in CORES
+        if any(cc == c for cc, _ in cols)) + " |")
+    w("| QEMU command | `%s` |" % meta.get("qemu-cmd", "?"))
+    w("")
+    w("## Targets (issue 6)")
+    w("")
+    w("| goal | limit | -O2 | -Os | met at -O2 |")
+    w("|---|---:|---:|---:|---|")
+    for c, name, lim, label in TARGETS:
+        v2, vs = get(c, "O2", name), get(c, "Os", name)
+        met = "-" if v2 is None else ("yes (%.0f %% of the limit)" % (100.0 * v2 / lim)
+                                      if v2 <= lim else "**no** (+%.0f %%)" % (100.0 * (v2 / lim - 1)))
+        w("| %s (`%s`) | %d | %s | %s | %s |" % (label, name.split()[0], lim, fmt(v2), fmt(vs), met))
+    w("")
+    w("The fixed-point figures for \"Cortex-M4\" come from the M4F build: the `*_q` code is "
+      "integer-only (checked by `tools/check_guards.sh`), so a Cortex-M4 without FPU executes "
+      "the same instructions. The FK figures include the six `dh_sincos_*` calls, the "
+      "base/tool handling and argument checks of the public function.")
+    w("")
+    w("## Instructions per call")
+    w("")
+    hdr = "| operation | calls (N) | " + " | ".join(
+        "%s %s" % (core_name[c].split(" ")[0], "-" + o) for c, o in cols) + " |"
+    w(hdr)
+    w("|---|---:|" + "---:|" * len(cols))
+    names = []
+    for r in runs.values():
+        for g, nm, n, body, whole in r.ops:
+            if (g, nm) not in names:
+                names.append((g, nm))
+    first = runs[min(runs)]
+    for g, nm in names:
+        if g != "dhmath":
+            continue
+        w("| `%s` | %s | %s |" % (nm, first.n_of(nm) or "?", " | ".join(
+            fmt(get(c, o, nm)) for c, o in cols)))
+    w("")
+    w("Each figure is the function's own instructions per call (from its first instruction "
+      "through its return), averaged over N calls on varied inputs: the loop calling the "
+      "function minus the same loop calling a null twin with the same prototype (which "
+      "executes `bx lr`, or `movs r0, #0` + `bx lr`, counted in the disassembly and added "
+      "back). The caller's side of a call (argument set-up, `BL`, using the status) "
+      "comes on top: %s instructions in the benchmark's wrappers." % overhead_range())
+    w("")
+    w("Inputs (generated once by a seeded xorshift32 generator on the target): angles uniform in "
+      "+-720 deg (%d different on M4F/M7, 64 on M0); rigid transforms with a random axis, "
+      "angle in +-180 deg and translation in +-1 m (float) or +-1000 mm (fixed, from "
+      "`dh_frame_from_mat4_q`); points in +-1 m / +-1000 mm; products run over all pairs of "
+      "16 (M0: 8) matrices or frames; FK and Jacobian over 16 (M0: 8) Puma 560 configurations "
+      "uniform within the joint limits. `dh_mat4_inv_f32` gets rigid transforms (its fast "
+      "adjugate path with the certificate). Every timed call returned `DH_OK`." % 256)
+    w("")
+    w("### Peers")
+    w("")
+    w("Here both sides are counted as whole calls from the benchmark loop (the loop with "
+      "the operation minus the loop with an empty function), because cglm's functions are "
+      "inlined into the wrapper: the dhmath figures therefore include the caller's "
+      "argument set-up and `BL` and are higher than in the table above by that much.")
+    w("")
+    w("Same inputs, same loop. cglm %s (header-only, plain C paths: a Cortex-M has neither "
+      "SSE nor NEON) compiled with the same core flags and `-ffp-contract=off` like dhmath's "
+      "ISO C build (in a GNU mode GCC would fuse multiply-adds into VFMA in cglm only; same "
+      "IEEE operations on both sides this way). newlib's `sinf` + `cosf` of `deg * pi/180` "
+      "(the float-from-degrees peer of `dh_sincos_f32`; newlib's libm as shipped, "
+      "precompiled)." % meta.get("cglm", ""))
+    w("")
+    w("| dhmath | peer | " + " | ".join(
+        "%s %s" % (core_name[c].split(" ")[0], "-" + o) for c, o in cols) + " |")
+    w("|---|---|" + "---|" * len(cols))
+    for dh, peer in PEERS:
+        cells = []
+        for c, o in cols:
+            a, b = get(c, o, dh, True), get(c, o, peer, True)
+            if a is None or b is None:
+                cells.append("-")
+            else:
+                cells.append("%s vs %s (%.2fx)" % (fmt(a), fmt(b), a / b))
+        w("| `%s` | `%s` | %s |" % (dh, peer, " | ".join(cells)))
+    w("")
+    w("(x = dhmath / peer instructions; below 1 dhmath executes fewer.) What the rows "
+      "compute differs in places: `dh_sincos_f32` reduces any float angle exactly and "
+      "checks for NaN/Inf; `glm_inv_tr` inverts in place (no output copy) while "
+      "`dh_mat4_inv_rigid_f32` writes a separate output; `dh_mat4_inv_f32` certifies "
+      "singularity (condition estimate and residual check, see `include/dhmath/dh_mat4.h`) "
+      "where `glm_mat4_inv` divides by the determinant without any check; "
+      "`dh_mat4_mul_f32` is a full 4x4 product like `glm_mat4_mul`.")
+    w("")
+    w("## Inverse kinematics (`dh_ik_f32`, Puma 560 in metres)")
+    w("")
+    w("Per solve: target = `dh_fk_f32` of a random configuration within 80 % of the joint "
+      "limits, start 10-20 deg away on every joint, `dh_ik_params_default` (full pose, "
+      "1e-6 m / 1e-5 rad). Instructions of the whole `dh_ik_f32` call.")
+    w("")
+    w("| core | solves | converged | iterations mean (min-max) | instructions per solve mean (min-max) | per iteration |")
+    w("|---|---:|---:|---|---|---:|")
+    for c, o in cols:
+        r = runs["%s-%s" % (c, o)]
+        if not r.ik:
+            continue
+        its = [x[2] for x in r.ik]
+        ins = [x[3] for x in r.ik]
+        conv = sum(1 for x in r.ik if x[1] == 0)
+        w("| %s -%s | %d | %d | %.1f (%d-%d) | %.0f (%.0f-%.0f) | %.0f |" % (
+            core_name[c], o, len(r.ik), conv, sum(its) / len(its), min(its), max(its),
+            sum(ins) / len(ins), min(ins), max(ins), sum(ins) / sum(its)))
+    w("")
+    w("\"per iteration\" divides the total instructions by the total iterations, so it "
+      "includes the set-up and final evaluation of each solve. The iteration counts differ "
+      "between cores for the same targets: the float results are not bit-identical across "
+      "builds, because `dh_ik_f32` calls newlib's `sqrtf`/`atan2f`/`sinf`/`cosf` "
+      "(through the rotation-vector error), whose precompiled hard-float variants use "
+      "fused multiply-add (VFMA) and round differently from the soft-float ones.")
+    w("")
+    w("## What the numbers are")
+    w("")
+    w("* **Counter.** QEMU's `-icount shift=0` advances virtual time by exactly 1 ns per "
+      "executed guest instruction; SysTick runs on the board's processor clock (MPS2: "
+      "25 MHz, 40 ns per tick; micro:bit: 16 MHz, 62.5 ns per tick), its interrupt "
+      "extends it to 64 bits. The firmware calibrates itself with a loop of exactly "
+      "2 x 10^7 instructions (`SUBS`/`BNE`):")
+    w("")
+    w("  | run | counter | ticks for 2e7 instructions | instructions per tick | stack used / reserve (bytes) |")
+    w("  |---|---|---:|---:|---:|")
+    for c, o in cols:
+        r = runs["%s-%s" % (c, o)]
+        w("  | %s -%s | %s | %d | %s | %d / %d |" % (core_name[c], o, r.counter, r.calib[1],
+                                                 float(r.scale), r.stack[0], r.stack[1]))
+    w("")
+    w("* **Instructions are not cycles.** QEMU models no pipeline, no flash wait states, no "
+      "caches and no dual issue. On a real Cortex-M4 most instructions take one cycle, "
+      "loads/stores 2 (pipelined back to back), taken branches 2-4, `VDIV`/`VSQRT` 14, "
+      "plus flash wait states above ~30 MHz; a Cortex-M7 can issue two instructions per "
+      "cycle; a Cortex-M0 multiply takes 1 or 32 cycles depending on the "
+      "implementation. The M0 figures are for ARMv6-M code compiled for "
+      "`-mcpu=cortex-m0plus` (QEMU has no M0+ model; the instructions are the same).")
+    w("* **On hardware** the same firmware measures cycles: on ARMv7-M it enables "
+      "`DWT->CYCCNT` and uses it when it advances (under QEMU it reads 0), on ARMv6-M "
+      "SysTick counts core clocks; the calibration loop then gives fewer than 1.5 "
+      "instructions per tick and the firmware reports `cycles` instead of `instructions` "
+      "(this report generator accepts only instruction counts).")
+    w("* **Resolution.** A measurement is +-1 tick (40 or 62.5 instructions) over N calls; "
+      "with the N above that is below 0.1 instruction per call for every row but the "
+      "Jacobian (N = 128: +-0.5).")
+    w("* **Re-running.** `tools/target_bench.sh [output.md]` rebuilds the firmware for "
+      "every core at -O2 and -Os in `build/tbench-<core>-<opt>/`, runs it and rewrites this "
+      "page; it fails if a sanity check in the firmware fails (statuses, "
+      "`dh_sincos_f32` vs `sinf`, `dh_fk_q` vs `dh_fk_f32`, cglm vs dhmath product), if "
+      "the counter does not behave like the icount clock or if the firmware's stack "
+      "high-water mark passes 3/4 of its reserve. Raw logs: "
+      "`build/tbench-logs/<core>-<opt>.log`. "
+      "`TBENCH_CORES=\"m4f\" TBENCH_OPTS=\"O2\"` restricts the run.")
+    w("")
+    with open(out, "w") as f:
+        f.write("\n".join(L))
+
+
+if __name__ == "__main__":
+    main()
