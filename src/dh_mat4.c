@@ -240,73 +240,64 @@ void dh_mat4_set_rot_f32(dh_mat4_f32 *T, const dh_mat3_f32 *R)
 
 /*
  * Column c of A*B is the combination of the columns of A with the weights
- * of column c of B. The products below are written out column by column
- * on whole 4-float columns held in locals: every input element is read
- * before any output element is written, so out may alias A, B or both,
- * and each 4-row statement is one vector multiply-add chain where the
- * target has 4-wide float vectors (SSE2, NEON; plain scalar code on
- * Cortex-M). The sums are evaluated left to right (k = 0, 1, 2, 3), the
- * same order as the scalar definition, so results do not depend on the
- * target.
+ * of column c of B. The columns of A are copied to locals (every output
+ * column needs all of them); column c of B is read completely before
+ * column c of out is written, so out may alias A, B or both. Each 4-row
+ * statement is one vector multiply-add chain where the target has 4-wide
+ * float vectors (SSE2, NEON) and plain scalar code on Cortex-M; the sums
+ * are evaluated left to right (k = 0, 1, 2, 3) everywhere, so the results
+ * do not depend on the target.
  */
-#define DH_COL_LOAD(v, M, c) \
-    do { (v)[0] = (M)->m[c][0]; (v)[1] = (M)->m[c][1]; (v)[2] = (M)->m[c][2]; (v)[3] = (M)->m[c][3]; } while (0)
+#define DH_MUL_COL4(out, c, B)                                                          \
+    do {                                                                                \
+        const float x_ = (B)->m[c][0], y_ = (B)->m[c][1], z_ = (B)->m[c][2], w_ = (B)->m[c][3]; \
+        for (r = 0; r < 4; r++) (out)->m[c][r] = a0[r] * x_ + a1[r] * y_ + a2[r] * z_ + a3[r] * w_; \
+    } while (0)
+
+#define DH_MUL_COL3(out, c, B)                                                          \
+    do {                                                                                \
+        const float x_ = (B)->m[c][0], y_ = (B)->m[c][1], z_ = (B)->m[c][2];             \
+        for (r = 0; r < 4; r++) (out)->m[c][r] = a0[r] * x_ + a1[r] * y_ + a2[r] * z_;  \
+    } while (0)
 
 void dh_mat4_mul_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
 {
-    float a0[4], a1[4], a2[4], a3[4], c0[4], c1[4], c2[4], c3[4];
+    float a0[4], a1[4], a2[4], a3[4];
     int r;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    DH_COL_LOAD(a0, A, 0);
-    DH_COL_LOAD(a1, A, 1);
-    DH_COL_LOAD(a2, A, 2);
-    DH_COL_LOAD(a3, A, 3);
-    {
-        const float x0 = B->m[0][0], y0 = B->m[0][1], z0 = B->m[0][2], w0 = B->m[0][3];
-        const float x1 = B->m[1][0], y1 = B->m[1][1], z1 = B->m[1][2], w1 = B->m[1][3];
-        const float x2 = B->m[2][0], y2 = B->m[2][1], z2 = B->m[2][2], w2 = B->m[2][3];
-        const float x3 = B->m[3][0], y3 = B->m[3][1], z3 = B->m[3][2], w3 = B->m[3][3];
-        for (r = 0; r < 4; r++) c0[r] = a0[r] * x0 + a1[r] * y0 + a2[r] * z0 + a3[r] * w0;
-        for (r = 0; r < 4; r++) c1[r] = a0[r] * x1 + a1[r] * y1 + a2[r] * z1 + a3[r] * w1;
-        for (r = 0; r < 4; r++) c2[r] = a0[r] * x2 + a1[r] * y2 + a2[r] * z2 + a3[r] * w2;
-        for (r = 0; r < 4; r++) c3[r] = a0[r] * x3 + a1[r] * y3 + a2[r] * z3 + a3[r] * w3;
-    }
     for (r = 0; r < 4; r++) {
-        out->m[0][r] = c0[r];
-        out->m[1][r] = c1[r];
-        out->m[2][r] = c2[r];
-        out->m[3][r] = c3[r];
+        a0[r] = A->m[0][r];
+        a1[r] = A->m[1][r];
+        a2[r] = A->m[2][r];
+        a3[r] = A->m[3][r];
     }
+    DH_MUL_COL4(out, 0, B);
+    DH_MUL_COL4(out, 1, B);
+    DH_MUL_COL4(out, 2, B);
+    DH_MUL_COL4(out, 3, B);
 }
 
 void dh_mat4_mul_affine_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
 {
-    float a0[4], a1[4], a2[4], a3[4], c0[4], c1[4], c2[4], c3[4];
+    float a0[4], a1[4], a2[4], a3[4];
     int r;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
     /* Same shape as dh_mat4_mul_f32 without the bottom row of B. Row 3 is
      * computed 4-wide with the rest (so the code stays vector-shaped) and
      * then replaced by 0 0 0 1: the bottom rows of A and B do not affect
      * the result. */
-    DH_COL_LOAD(a0, A, 0);
-    DH_COL_LOAD(a1, A, 1);
-    DH_COL_LOAD(a2, A, 2);
-    DH_COL_LOAD(a3, A, 3);
-    {
-        const float x0 = B->m[0][0], y0 = B->m[0][1], z0 = B->m[0][2];
-        const float x1 = B->m[1][0], y1 = B->m[1][1], z1 = B->m[1][2];
-        const float x2 = B->m[2][0], y2 = B->m[2][1], z2 = B->m[2][2];
-        const float x3 = B->m[3][0], y3 = B->m[3][1], z3 = B->m[3][2];
-        for (r = 0; r < 4; r++) c0[r] = a0[r] * x0 + a1[r] * y0 + a2[r] * z0;
-        for (r = 0; r < 4; r++) c1[r] = a0[r] * x1 + a1[r] * y1 + a2[r] * z1;
-        for (r = 0; r < 4; r++) c2[r] = a0[r] * x2 + a1[r] * y2 + a2[r] * z2;
-        for (r = 0; r < 4; r++) c3[r] = a0[r] * x3 + a1[r] * y3 + a2[r] * z3 + a3[r];
-    }
     for (r = 0; r < 4; r++) {
-        out->m[0][r] = c0[r];
-        out->m[1][r] = c1[r];
-        out->m[2][r] = c2[r];
-        out->m[3][r] = c3[r];
+        a0[r] = A->m[0][r];
+        a1[r] = A->m[1][r];
+        a2[r] = A->m[2][r];
+        a3[r] = A->m[3][r];
+    }
+    DH_MUL_COL3(out, 0, B);
+    DH_MUL_COL3(out, 1, B);
+    DH_MUL_COL3(out, 2, B);
+    {
+        const float x = B->m[3][0], y = B->m[3][1], z = B->m[3][2];
+        for (r = 0; r < 4; r++) out->m[3][r] = a0[r] * x + a1[r] * y + a2[r] * z + a3[r];
     }
     out->m[0][3] = 0.0f;
     out->m[1][3] = 0.0f;
@@ -411,18 +402,6 @@ void dh_plane_mul_f32(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv, dh_plane_f
     Q->b = a * Tinv->m[1][0] + b * Tinv->m[1][1] + c * Tinv->m[1][2] + d * Tinv->m[1][3];
     Q->c = a * Tinv->m[2][0] + b * Tinv->m[2][1] + c * Tinv->m[2][2] + d * Tinv->m[2][3];
     Q->d = a * Tinv->m[3][0] + b * Tinv->m[3][1] + c * Tinv->m[3][2] + d * Tinv->m[3][3];
-}
-
-dh_status dh_mat4_apply_plane_f32(const dh_mat4_f32 *T, const dh_plane_f32 *P, dh_plane_f32 *Q)
-{
-    dh_mat4_f32 inv;
-    dh_status st;
-    DH_ASSERT(T != NULL && P != NULL && Q != NULL);
-    if (!(dh_finite(P->a) && dh_finite(P->b) && dh_finite(P->c) && dh_finite(P->d))) return DH_ERR_NAN;
-    st = dh_mat4_inv_auto_f32(&inv, T);
-    if (st != DH_OK) return st;
-    dh_plane_mul_f32(P, &inv, Q);
-    return DH_OK;
 }
 
 void dh_mat4_apply_points_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, size_t count)

@@ -14,8 +14,10 @@ static int dh_finite(float x) { return fabsf(x) <= FLT_MAX; }
 
 #if defined(__GNUC__) || defined(__clang__)
 #define DH_NOINLINE __attribute__((noinline))
+#define DH_INLINE __inline__ __attribute__((always_inline))
 #else
 #define DH_NOINLINE
+#define DH_INLINE
 #endif
 
 /* ---------------------------------------------------------------------- */
@@ -54,6 +56,9 @@ void dh_mat4_inv_rigid_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
  * residual T X - I of T.
  */
 
+static int dh_is_affine(const dh_mat4_f32 *T);
+static DH_NOINLINE float dh_affine_prescale(const dh_mat4_f32 *T);
+
 /* Unit roundoff of float, 2^-24. */
 #define DH_U24 5.9604644775390625e-8f
 
@@ -87,17 +92,32 @@ static float dh_balance(const dh_mat4_f32 *M)
     return sg;
 }
 
+/*
+ * Element (i, j) of the row-view matrix the certified path works on: M
+ * itself (aff == 0), or for an affine T the matrix blockdiag(s3 R, 1)
+ * (aff != 0; s3 a power of two): the inverse of an affine transform is
+ * [R^-1, -R^-1 p], so only R is inverted, after an exact scaling that
+ * makes the decision independent of the scale of R.
+ */
+static float dh_at(const dh_mat4_f32 *M, int i, int j, float s3, int aff)
+{
+    if (!aff) return M->m[i][j];
+    if (i < 3 && j < 3) return M->m[i][j] * s3;
+    return (i == j) ? 1.0f : 0.0f;
+}
+
 /* max row sum of D^-1 M D (row view; = balanced ||T||_1) */
-static float dh_norm_rows(const dh_mat4_f32 *M, float sg)
+static DH_NOINLINE float dh_norm_rows(const dh_mat4_f32 *M, float sg, float s3, int aff)
 {
     float n = 0.0f;
-    int i;
-    for (i = 0; i < 3; i++) {
-        const float rs = fabsf(M->m[i][0]) + fabsf(M->m[i][1]) + fabsf(M->m[i][2]) + fabsf(M->m[i][3]) * sg;
-        n = (rs > n) ? rs : n;
-    }
-    {
-        const float rs = (fabsf(M->m[3][0]) + fabsf(M->m[3][1]) + fabsf(M->m[3][2])) / sg + fabsf(M->m[3][3]);
+    int i, j;
+    for (i = 0; i < 4; i++) {
+        float rs = 0.0f;
+        for (j = 0; j < 4; j++) {
+            const float v = fabsf(dh_at(M, i, j, s3, aff));
+            if (i < 3) rs += (j < 3) ? v : v * sg;
+            else rs += (j < 3) ? v / sg : v;
+        }
         n = (rs > n) ? rs : n;
     }
     return n;
@@ -106,86 +126,26 @@ static float dh_norm_rows(const dh_mat4_f32 *M, float sg)
 /* balanced ||X (s M) - I|| in the row view (row i of X M is the
  * combination of the rows of M with the weights of row i of X); s is a
  * power of two, so s M is exact */
-static float dh_residual(const dh_mat4_f32 *X, const dh_mat4_f32 *M, float s, float sg)
+static DH_NOINLINE float dh_residual(const dh_mat4_f32 *X, const dh_mat4_f32 *M, float s, float sg, float s3,
+                                     int aff)
 {
     float res = 0.0f;
-    int i, j;
+    int i, j, k;
     for (i = 0; i < 4; i++) {
-        float q[4], rs;
-        const float x0 = X->m[i][0] * s, x1 = X->m[i][1] * s, x2 = X->m[i][2] * s, x3 = X->m[i][3] * s;
+        float rs = 0.0f;
         for (j = 0; j < 4; j++) {
-            q[j] = x0 * M->m[0][j] + x1 * M->m[1][j] + x2 * M->m[2][j] + x3 * M->m[3][j];
+            float q = 0.0f;
+            for (k = 0; k < 4; k++) q += (X->m[i][k] * s) * dh_at(M, k, j, s3, aff);
+            if (j == i) q -= 1.0f;
+            q = fabsf(q);
+            /* balanced weights: column 3 times sg in rows 0..2, columns
+             * 0..2 divided by sg in row 3 */
+            if (i < 3) rs += (j < 3) ? q : q * sg;
+            else rs += (j < 3) ? q / sg : q;
         }
-        q[i] -= 1.0f;
-        if (i < 3) rs = fabsf(q[0]) + fabsf(q[1]) + fabsf(q[2]) + fabsf(q[3]) * sg;
-        else rs = (fabsf(q[0]) + fabsf(q[1]) + fabsf(q[2])) / sg + fabsf(q[3]);
         res = (rs > res) ? rs : res;
     }
     return res;
-}
-
-/*
- * Adjugate / determinant (by the 2x2 minors of rows 2,3 and rows 0,1 of
- * M): straight-line, accurate for well conditioned matrices. Only used on
- * unscaled matrices (max |M_ij| in [2^-16, 2^17)), where neither the minors
- * nor det can over- or underflow. Writes X = M^-1 and returns 1, or returns
- * 0 when det == 0.
- */
-static int dh_inv_cofactor(const dh_mat4_f32 *M, dh_mat4_f32 *X)
-{
-    float det, f;
-    int i, j;
-    /* phase 1: the 2x2 minors of rows 2,3 and the cofactors that use them
-     * (columns 0, 1 of X); few values live at a time keeps the frame small */
-    {
-        const float a00 = M->m[0][0], a01 = M->m[0][1], a02 = M->m[0][2], a03 = M->m[0][3];
-        const float a10 = M->m[1][0], a11 = M->m[1][1], a12 = M->m[1][2], a13 = M->m[1][3];
-        const float a20 = M->m[2][0], a21 = M->m[2][1], a22 = M->m[2][2], a23 = M->m[2][3];
-        const float a30 = M->m[3][0], a31 = M->m[3][1], a32 = M->m[3][2], a33 = M->m[3][3];
-        const float c5 = a22 * a33 - a32 * a23;
-        const float c4 = a21 * a33 - a31 * a23;
-        const float c3 = a21 * a32 - a31 * a22;
-        const float c2 = a20 * a33 - a30 * a23;
-        const float c1 = a20 * a32 - a30 * a22;
-        const float c0 = a20 * a31 - a30 * a21;
-        X->m[0][0] =  a11 * c5 - a12 * c4 + a13 * c3;
-        X->m[1][0] = -a10 * c5 + a12 * c2 - a13 * c1;
-        X->m[2][0] =  a10 * c4 - a11 * c2 + a13 * c0;
-        X->m[3][0] = -a10 * c3 + a11 * c1 - a12 * c0;
-        X->m[0][1] = -a01 * c5 + a02 * c4 - a03 * c3;
-        X->m[1][1] =  a00 * c5 - a02 * c2 + a03 * c1;
-        X->m[2][1] = -a00 * c4 + a01 * c2 - a03 * c0;
-        X->m[3][1] =  a00 * c3 - a01 * c1 + a02 * c0;
-        /* Laplace expansion along row 0 */
-        det = a00 * X->m[0][0] + a01 * X->m[1][0] + a02 * X->m[2][0] + a03 * X->m[3][0];
-    }
-    if (det == 0.0f) return 0;
-    /* phase 2: the 2x2 minors of rows 0,1 and columns 2, 3 of X */
-    {
-        const float a00 = M->m[0][0], a01 = M->m[0][1], a02 = M->m[0][2], a03 = M->m[0][3];
-        const float a10 = M->m[1][0], a11 = M->m[1][1], a12 = M->m[1][2], a13 = M->m[1][3];
-        const float a20 = M->m[2][0], a21 = M->m[2][1], a22 = M->m[2][2], a23 = M->m[2][3];
-        const float a30 = M->m[3][0], a31 = M->m[3][1], a32 = M->m[3][2], a33 = M->m[3][3];
-        const float s0 = a00 * a11 - a10 * a01;
-        const float s1 = a00 * a12 - a10 * a02;
-        const float s2 = a00 * a13 - a10 * a03;
-        const float s3 = a01 * a12 - a11 * a02;
-        const float s4 = a01 * a13 - a11 * a03;
-        const float s5 = a02 * a13 - a12 * a03;
-        X->m[0][2] =  a31 * s5 - a32 * s4 + a33 * s3;
-        X->m[1][2] = -a30 * s5 + a32 * s2 - a33 * s1;
-        X->m[2][2] =  a30 * s4 - a31 * s2 + a33 * s0;
-        X->m[3][2] = -a30 * s3 + a31 * s1 - a32 * s0;
-        X->m[0][3] = -a21 * s5 + a22 * s4 - a23 * s3;
-        X->m[1][3] =  a20 * s5 - a22 * s2 + a23 * s1;
-        X->m[2][3] = -a20 * s4 + a21 * s2 - a23 * s0;
-        X->m[3][3] =  a20 * s3 - a21 * s1 + a22 * s0;
-    }
-    f = 1.0f / det;
-    for (i = 0; i < 4; i++) {
-        for (j = 0; j < 4; j++) X->m[i][j] *= f;
-    }
-    return 1;
 }
 
 /*
@@ -193,130 +153,143 @@ static int dh_inv_cofactor(const dh_mat4_f32 *M, dh_mat4_f32 *X)
  * the columns of T): X becomes X^-1. Returns 0 on an exactly zero pivot
  * (X then undefined).
  */
-static int dh_inv_gauss_jordan(dh_mat4_f32 *X)
+static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
 {
-    float (*x)[4] = X->m;
-    unsigned char perm[4];
+    unsigned perm = 0u; /* pivot row of step k in bits 2k, 2k+1 */
     int i, j, k;
     for (k = 0; k < 4; k++) {
+        float *rk;
+        float r;
         int p = k;
-        float big = fabsf(x[k][k]), r;
         for (i = k + 1; i < 4; i++) {
-            if (fabsf(x[i][k]) > big) {
-                big = fabsf(x[i][k]);
-                p = i;
-            }
+            if (fabsf(X->m[i][k]) > fabsf(X->m[p][k])) p = i;
         }
-        if (big == 0.0f) return 0;
-        perm[k] = (unsigned char)p;
+        if (X->m[p][k] == 0.0f) return 0;
+        perm |= (unsigned)p << (2 * k);
+        rk = X->m[k];
         if (p != k) {
+            float *rp = X->m[p];
             for (j = 0; j < 4; j++) {
-                const float tmp = x[k][j];
-                x[k][j] = x[p][j];
-                x[p][j] = tmp;
+                const float tmp = rk[j];
+                rk[j] = rp[j];
+                rp[j] = tmp;
             }
         }
-        r = 1.0f / x[k][k];
-        x[k][k] = 1.0f;
-        for (j = 0; j < 4; j++) x[k][j] *= r;
+        r = 1.0f / rk[k];
+        rk[k] = 1.0f;
+        for (j = 0; j < 4; j++) rk[j] *= r;
         for (i = 0; i < 4; i++) {
-            if (i != k) {
-                const float f = x[i][k];
-                x[i][k] = 0.0f;
-                for (j = 0; j < 4; j++) x[i][j] -= f * x[k][j];
-            }
+            float *ri = X->m[i];
+            float f;
+            if (i == k) continue;
+            f = ri[k];
+            ri[k] = 0.0f;
+            for (j = 0; j < 4; j++) ri[j] -= f * rk[j];
         }
     }
     /* undo the interchanges on the columns, last first */
     for (k = 3; k >= 0; k--) {
-        const int p = perm[k];
+        const int p = (int)((perm >> (2 * k)) & 3u);
         if (p != k) {
             for (i = 0; i < 4; i++) {
-                const float tmp = x[i][k];
-                x[i][k] = x[i][p];
-                x[i][p] = tmp;
+                const float tmp = X->m[i][k];
+                X->m[i][k] = X->m[i][p];
+                X->m[i][p] = tmp;
             }
         }
     }
     return 1;
 }
 
-static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+/*
+ * Certified general inverse into the scratch X (X must not alias T; its
+ * content is undefined on error). Method: NaN/Inf scan; the matrix M
+ * inverted is s T, or blockdiag(s3 R, 1) for an affine T (see dh_at), with
+ * s, s3 exact powers of two that bring the largest element into [1, 2)
+ * (s = 1 when max|T_ij| is in [2^-16, 2^17)); Gauss-Jordan with partial
+ * pivoting on M; then
+ *   (a) balanced cond = ||M|| ||X|| >= DH_MAT4_COND_MAX -> singular;
+ *   (b) residual ||X M - I|| > 1/2 -> singular. (b) is a proof: a residual
+ *       <= 1/2 implies M non-singular with ||M^-1|| <= 2 ||X||; for a
+ *       singular M, X M - I has the eigenvalue -1 whatever X is.
+ */
+static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
-    dh_mat4_f32 X; /* the inverse being built */
-    float m4[4] = { 0.0f, 0.0f, 0.0f, 0.0f }, z4[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-    float mx, z, s = 1.0f, sg, na, nx;
+    const int aff = dh_is_affine(T);
+    float mx = 0.0f, z = 0.0f, s = 1.0f, s3 = 1.0f, sg = 1.0f, na;
     uint32_t e;
     int i, j;
 
-    /* Lane-wise (vector-shaped) scan: z is NaN iff an element is NaN or
-     * Inf (x * 0 is NaN exactly for those); mx = max |T_ij|. */
+    /* z is NaN iff an element is NaN or Inf (x * 0 is NaN exactly for
+     * those); mx = max |T_ij| */
     for (i = 0; i < 4; i++) {
         for (j = 0; j < 4; j++) {
             const float v = fabsf(T->m[i][j]);
-            z4[j] += T->m[i][j] * 0.0f;
-            m4[j] = (v > m4[j]) ? v : m4[j];
+            z += v * 0.0f;
+            mx = (v > mx) ? v : mx;
         }
     }
-    z = (z4[0] + z4[1]) + (z4[2] + z4[3]);
-    mx = (m4[0] > m4[1]) ? m4[0] : m4[1];
-    mx = (m4[2] > mx) ? m4[2] : mx;
-    mx = (m4[3] > mx) ? m4[3] : mx;
     if (z != z) return DH_ERR_NAN;
-    if (mx < FLT_MIN) return DH_ERR_SINGULAR; /* zero or denormal matrix */
-    memcpy(&e, &mx, sizeof e);
-    e >>= 23; /* biased exponent of the largest element, 1..254 */
-    if (e < 127u - 16u || e > 127u + 16u) {
-        /* exact power-of-two scaling that brings the largest element into
-         * [1, 2) (or [2, 4) for the very top binade), so that neither the
-         * cofactors nor the determinant over- or underflow */
-        const uint32_t bits = ((e >= 254u) ? 1u : 254u - e) << 23;
-        memcpy(&s, &bits, sizeof s);
-    }
-    /* from here on the matrix worked on is M = s T (row view), formed on
-     * the fly: s is a power of two, so s T is exact */
-    sg = dh_balance(T); /* scale-free: a ratio of sums of |T_ij| */
-    na = dh_norm_rows(T, sg) * s;
-
-    /* Fast path (unscaled input only): cofactors, accepted when the
-     * estimated condition number is below the limit AND the residual is as
-     * small as a backward stable method leaves (8 u ||X|| ||M||). Otherwise
-     * (ill-conditioned, singular or extremely scaled input) Gauss-Jordan
-     * with pivoting on s T decides. */
-    if (s == 1.0f && dh_inv_cofactor(T, &X)) {
-        nx = dh_norm_rows(&X, sg);
-        if (na * nx < DH_MAT4_COND_MAX && dh_residual(&X, T, s, sg) <= 8.0f * DH_U24 * na * nx) {
-            goto accept;
+    if (aff) {
+        s3 = dh_affine_prescale(T);
+        if (s3 == 0.0f) return DH_ERR_SINGULAR; /* R zero or denormal */
+    } else {
+        if (mx < FLT_MIN) return DH_ERR_SINGULAR; /* zero or denormal matrix */
+        memcpy(&e, &mx, sizeof e);
+        e >>= 23; /* biased exponent of the largest element, 1..254 */
+        if (e < 127u - 16u || e > 127u + 16u) {
+            /* exact power-of-two scaling that brings the largest element
+             * into [1, 2) (or [2, 4) for the very top binade), so that
+             * nothing over- or underflows */
+            const uint32_t bits = ((e >= 254u) ? 1u : 254u - e) << 23;
+            memcpy(&s, &bits, sizeof s);
         }
+        sg = dh_balance(T); /* scale-free: a ratio of sums of |T_ij| */
     }
+    na = dh_norm_rows(T, sg, s3, aff) * s;
     for (i = 0; i < 4; i++) {
-        for (j = 0; j < 4; j++) X.m[i][j] = T->m[i][j] * s;
+        for (j = 0; j < 4; j++) X->m[i][j] = dh_at(T, i, j, s3, aff) * s;
     }
-    if (!dh_inv_gauss_jordan(&X)) return DH_ERR_SINGULAR;
-    nx = dh_norm_rows(&X, sg);
-    /* (1) estimated condition number */
-    if (!(na * nx < DH_MAT4_COND_MAX)) return DH_ERR_SINGULAR;
-    /* (2) certificate: ||X M - I|| <= 1/2 proves M non-singular with
-     * ||M^-1|| <= 2 ||X||; for a singular M, X M - I has the eigenvalue -1,
-     * so the test fails whatever X is (the rounding of the residual is
-     * below 4 u na nx < 0.13). */
-    if (!(dh_residual(&X, T, s, sg) <= 0.5f)) return DH_ERR_SINGULAR;
-
-accept:
-    /* T^-1 = s X (exact power of two unless it overflows); "+ 0.0f" maps
-     * -0 to +0 */
-    for (j = 0; j < 4; j++) z4[j] = 0.0f;
+    if (!dh_inv_gauss_jordan(X)) return DH_ERR_SINGULAR;
+    /* (a) estimated condition number */
+    if (!(na * dh_norm_rows(X, sg, 1.0f, 0) < DH_MAT4_COND_MAX)) return DH_ERR_SINGULAR;
+    /* (b) certificate (the rounding of the residual is below
+     * 4 u na nx < 0.13) */
+    if (!(dh_residual(X, T, s, sg, s3, aff) <= 0.5f)) return DH_ERR_SINGULAR;
+    /* T^-1 = s M^-1, or for affine T: R^-1 = s3 (s3 R)^-1 and the
+     * translation -R^-1 p (exact powers of two unless they overflow);
+     * "+ 0.0f" maps -0 to +0 */
+    if (aff) {
+        s = s3;
+        for (i = 0; i < 3; i++) X->m[i][3] = 0.0f;
+    }
+    z = 0.0f;
     for (i = 0; i < 4; i++) {
         for (j = 0; j < 4; j++) {
-            const float v = X.m[i][j] * s + 0.0f;
-            X.m[i][j] = v;
-            z4[j] += v * 0.0f; /* NaN iff some v overflowed to Inf */
+            const float v = X->m[i][j] * s + 0.0f;
+            X->m[i][j] = v;
+            z += v * 0.0f; /* NaN iff some v overflowed to Inf */
         }
     }
-    z = (z4[0] + z4[1]) + (z4[2] + z4[3]);
+    if (aff) {
+        for (j = 0; j < 3; j++) {
+            const float t = 0.0f - (X->m[0][j] * T->m[3][0] + X->m[1][j] * T->m[3][1] + X->m[2][j] * T->m[3][2]);
+            X->m[3][j] = t;
+            z += t * 0.0f;
+        }
+        X->m[3][3] = 1.0f;
+    }
     if (z != z) return DH_ERR_OVERFLOW;
-    *out = X;
     return DH_OK;
+}
+
+/* certified path for a caller whose output must stay untouched on error */
+static DH_NOINLINE dh_status dh_inv_certified_out(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+{
+    dh_mat4_f32 X;
+    const dh_status st = dh_inv_certified(&X, T);
+    if (st == DH_OK) *out = X;
+    return st;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -355,7 +328,7 @@ accept:
 #define DH_FAST_HI3 16777216.0f                /* 2^24 */
 #define DH_FAST_LO4 1.52587890625e-5f          /* 2^-16: range of S, 4x4 */
 #define DH_FAST_HI4 65536.0f                   /* 2^16 */
-#define DH_FAST_PQ 7.2057594037927936e16f      /* 2^56: |p|^2, |q|^2 limit, 4x4 */
+#define DH_FAST_PQ 268435456.0f               /* 2^28: |p|_1, |q|_1 limit, 4x4 */
 
 /*
  * Affine T = [R p; 0 0 0 1]: T^-1 = [R^-1, -R^-1 p; 0 0 0 1]. With the
@@ -367,7 +340,7 @@ accept:
  * S is in range (s == 1 on the common path), and T^-1 = [s (sR)^-1, ...].
  * Writes out and returns 1, or returns 0 (out untouched).
  */
-static int dh_inv_affine(dh_mat4_f32 *out, const dh_mat4_f32 *T, float s)
+static DH_INLINE int dh_inv_affine(dh_mat4_f32 *out, const dh_mat4_f32 *T, float s)
 {
     const float nx = T->m[0][0] * s, ny = T->m[0][1] * s, nz = T->m[0][2] * s;
     const float ox = T->m[1][0] * s, oy = T->m[1][1] * s, oz = T->m[1][2] * s;
@@ -430,7 +403,7 @@ static DH_NOINLINE float dh_affine_prescale(const dh_mat4_f32 *T)
  * sg^2 = |p| / |q| (Osborne): the homogeneous coordinate has another unit
  * than the others, and the balancing makes the test independent of the
  * length unit. det B = det T, and ||B||_F^2 = ||R||_F^2 + 2 |p| |q| + w^2
- * needs no sg. Writes out and returns 1, or returns 0 (out untouched).
+ * needs no sg (|p| |q| is bounded by |p|_1 |q|_1 to avoid a root). Writes out and returns 1, or returns 0 (out untouched).
  */
 static DH_NOINLINE int dh_inv_proj_fast(dh_mat4_f32 *out, const dh_mat4_f32 *M)
 {
@@ -449,15 +422,17 @@ static DH_NOINLINE int dh_inv_proj_fast(dh_mat4_f32 *out, const dh_mat4_f32 *M)
     const float x20 = a10 * c4 - a11 * c2 + a13 * c0;
     const float x30 = -a10 * c3 + a11 * c1 - a12 * c0;
     const float det = a00 * x00 + a01 * x10 + a02 * x20 + a03 * x30;
-    /* p = row 3 of M (columns 0..2), q = column 3 of M (rows 0..2) */
-    const float pp = a30 * a30 + a31 * a31 + a32 * a32;
-    const float qq = a03 * a03 + a13 * a13 + a23 * a23;
+    /* p = row 3 of M (columns 0..2), q = column 3 of M (rows 0..2); the
+     * 1-norms bound the 2-norms: S below is >= ||B||_F^2 (an upper bound
+     * keeps the test a proof) and still unit-free */
+    const float p1 = fabsf(a30) + fabsf(a31) + fabsf(a32);
+    const float q1 = fabsf(a03) + fabsf(a13) + fabsf(a23);
     const float S = (a00 * a00 + a01 * a01 + a02 * a02) + (a10 * a10 + a11 * a11 + a12 * a12) +
-                    (a20 * a20 + a21 * a21 + a22 * a22) + 2.0f * sqrtf(pp * qq) + a33 * a33;
+                    (a20 * a20 + a21 * a21 + a22 * a22) + 2.0f * (p1 * q1) + a33 * a33;
     float f;
-    /* |p|^2, |q|^2 <= 2^56 and S <= 2^16 bound every product of entries
+    /* |p|_1, |q|_1 <= 2^28 and S <= 2^16 bound every product of entries
      * formed below (no overflow); see the test above */
-    if (!(pp <= DH_FAST_PQ && qq <= DH_FAST_PQ && S >= DH_FAST_LO4 && S <= DH_FAST_HI4 &&
+    if (!(p1 <= DH_FAST_PQ && q1 <= DH_FAST_PQ && S >= DH_FAST_LO4 && S <= DH_FAST_HI4 &&
           4.0f * DH_FAST_C2 * (det * det) >= (S * S) * (S * S))) {
         return 0;
     }
@@ -488,17 +463,48 @@ static DH_NOINLINE int dh_inv_affine_scaled(dh_mat4_f32 *out, const dh_mat4_f32 
     return (s != 0.0f) && dh_inv_affine(out, T, s);
 }
 
-dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+/* bottom row exactly 0 0 0 1 */
+static int dh_is_affine(const dh_mat4_f32 *T)
 {
-    DH_ASSERT(out != NULL && T != NULL);
-    if (T->m[0][3] == 0.0f && T->m[1][3] == 0.0f && T->m[2][3] == 0.0f && T->m[3][3] == 1.0f) {
+    return T->m[0][3] == 0.0f && T->m[1][3] == 0.0f && T->m[2][3] == 0.0f && T->m[3][3] == 1.0f;
+}
+
+/*
+ * General inverse into X: the fast path for the input's shape, else the
+ * certified path (X scratch, undefined on error, must not alias T). Used
+ * by dh_mat4_apply_plane_f32.
+ */
+static dh_status dh_inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
+{
+    if (dh_is_affine(T)) {
+        if (dh_inv_affine(X, T, 1.0f) || dh_inv_affine_scaled(X, T)) return DH_OK;
+    } else if (dh_inv_proj_fast(X, T)) {
+        return DH_OK;
+    }
+    return dh_inv_certified(X, T);
+}
+
+/*
+ * The public general inverse (out untouched on error). A separate function
+ * so that dh_mat4_inv_auto_f32 calls it without the public function's
+ * frame (stack budget on Cortex-M0+).
+ */
+static DH_NOINLINE dh_status dh_inv_general(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+{
+    if (dh_is_affine(T)) {
         /* R with ||R||_F^2 out of [2^-24, 2^24] is rescaled exactly first,
          * so the affine decision is invariant under any scaling of R */
         if (dh_inv_affine(out, T, 1.0f) || dh_inv_affine_scaled(out, T)) return DH_OK;
     } else if (dh_inv_proj_fast(out, T)) {
         return DH_OK;
     }
-    return dh_inv_certified(out, T);
+    return dh_inv_certified_out(out, T);
+}
+
+dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+{
+    DH_ASSERT(out != NULL && T != NULL);
+    return dh_inv_general(out, T);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -554,5 +560,29 @@ dh_status dh_mat4_inv_auto_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
         return DH_OK;
     }
     if (st == DH_ERR_NAN) return DH_ERR_NAN;
-    return dh_mat4_inv_f32(out, T);
+    return dh_inv_general(out, T);
+}
+
+/* ---------------------------------------------------------------------- */
+/* planes                                                                 */
+/* ---------------------------------------------------------------------- */
+
+dh_status dh_mat4_apply_plane_f32(const dh_mat4_f32 *T, const dh_plane_f32 *P, dh_plane_f32 *Q)
+{
+    dh_mat4_f32 X; /* T^-1 (one 4x4 temporary; the inverse paths write into it) */
+    dh_status st;
+    DH_ASSERT(T != NULL && P != NULL && Q != NULL);
+    if (!(dh_finite(P->a) && dh_finite(P->b) && dh_finite(P->c) && dh_finite(P->d))) return DH_ERR_NAN;
+    /* the inverse as dh_mat4_inv_auto_f32 takes it, into X */
+    st = dh_mat4_check_rigid_f32(T, DH_MAT4_RIGID_TOL);
+    if (st == DH_OK) {
+        dh_mat4_inv_rigid_f32(&X, T);
+    } else if (st == DH_ERR_NAN) {
+        return DH_ERR_NAN;
+    } else {
+        st = dh_inv_into(&X, T);
+        if (st != DH_OK) return st;
+    }
+    dh_plane_mul_f32(P, &X, Q);
+    return DH_OK;
 }
