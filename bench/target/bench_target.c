@@ -416,7 +416,7 @@ static BT_NOINLINE void op_newlib_sincos(uint32_t i)
     bt_c = cosf(r);
 }
 
-#define BT_OPD(name, tag, zname, n) { "dhmath", name, op_##tag, nul_##tag, zname, n }
+#define BT_OPD(name, tag, zname, n) { "dhmath", name, op_##tag, nul_##tag, zname " nul_" #tag, n }
 
 static const bt_op bt_ops_dh[] = {
     BT_OPD("dh_sincos_f32", sincos_f32, "z_sincos_f32", 4096u),

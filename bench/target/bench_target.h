@@ -39,7 +39,7 @@ typedef struct {
     const char *name;  /**< operation name as printed in the report */
     bt_fn fn;          /**< wrapper doing one call */
     bt_fn null_fn;     /**< same wrapper calling a null twin of the function, or 0 (inline code) */
-    const char *null_sym; /**< symbol of the null twin (report.py counts its instructions) */
+    const char *null_sym; /**< "<null twin> <its wrapper>": symbols whose instructions report.py counts */
     uint32_t n;        /**< calls per measurement */
 } bt_op;
 
