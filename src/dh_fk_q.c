@@ -350,6 +350,16 @@ DH_PORT_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_
 #endif
 }
 
+/* The three rows unrolled (constant offsets, no loop counter) with GCC
+ * when not optimising for size: 6-joint FK on Cortex-M4 -O2 1926 -> 1739
+ * instructions, Cortex-M0 -O2 7185 -> 6782; at -Os the loop is kept (the
+ * unrolled code is 1.5 times larger and both -Os budgets hold without it). */
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__OPTIMIZE_SIZE__)
+#define FKQ_UNROLL3 _Pragma("GCC unroll 3")
+#else
+#define FKQ_UNROLL3
+#endif
+
 /* all ones when c holds, else 0 */
 #define MASK(c) ((c) ? 0xFFFFFFFFu : 0u)
 /* (v ^ m) - m: v or -v; v != INT32_MIN on the fast path */
@@ -411,6 +421,7 @@ DH_PORT_INLINE void fast_prep_gen(fkq_joint *J, const dh_joint *j)
 DH_PORT_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int var)
 {
     int ovf = 0, k;
+    FKQ_UNROLL3
     for (k = 0; k < 3; k++) {
         const fkq_r x = RQ(I->r[0][k]), y = RQ(I->r[1][k]);
         const int32_t z = I->r[2][k], p = I->p[k];
@@ -434,6 +445,7 @@ DH_PORT_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_fra
 DH_PORT_INLINE int fast_mod_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int var)
 {
     int ovf = 0, k;
+    FKQ_UNROLL3
     for (k = 0; k < 3; k++) {
         const int32_t xv = I->r[0][k], p = I->p[k];
         const fkq_r x = RQ(xv);

@@ -76,14 +76,16 @@ static inline int32_t dh_fin30(int64_t acc, uint32_t *ovf)
 
 /*
  * Exact path: round((c + sign * sum_{i<n} a[i]*b[i]) / 2^sh), ties up,
- * saturated to int32. n <= 4, c a multiple of 4 with |c| <= 2^62, 2 <= sh <= 31.
- * |a[i]*b[i]| <= 2^62, so every partial sum of the quarters stays below
- * 2^62 + 2^60 * 4 < 2^63.
+ * saturated to int32, with c = c30 * 2^30. n <= 4, |c30| <= 2^30 (so
+ * |c| <= 2^60), 2 <= sh <= 31. |a[i]*b[i]| <= 2^62, so every partial sum
+ * of the quarters stays below 2^58 + 2^60 * 4 < 2^63. (c is passed as an
+ * int32: an int64 argument on the stack made GCC copy it through a VFP
+ * register on Cortex-M4F, which the integer-only guard rejects.)
  */
 static DH_NOINLINE int32_t dh_dot_exact(const int32_t *a, const int32_t *b, unsigned n, int negate,
-                                        int64_t c, unsigned sh, uint32_t *ovf)
+                                        int32_t c30, unsigned sh, uint32_t *ovf)
 {
-    int64_t h = c >> 2, r;
+    int64_t h = (int64_t)c30 * ((int64_t)1 << 28), r;
     uint32_t l = 0u;
     unsigned i;
     for (i = 0; i < n; i++) {
@@ -527,8 +529,7 @@ int32_t dh_frame_ortho_error_q(const dh_frame_q *F)
     for (i = 0; i < 3u; i++)
         for (j = i; j < 3u; j++) {
             /* (R^T R)_ij - delta_ij = col_i . col_j - delta_ij, in Q2.30 */
-            int32_t e = dh_dot_exact(F->r[i], F->r[j], 3u, 0,
-                                     i == j ? -((int64_t)1 << 60) : 0, 30u, &ovf);
+            int32_t e = dh_dot_exact(F->r[i], F->r[j], 3u, 0, i == j ? -DH_ONE30 : 0, 30u, &ovf);
             uint32_t m = dh_abs_u32(e);
             if (m > worst) worst = m;
         }
