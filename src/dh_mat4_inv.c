@@ -93,28 +93,27 @@ static float dh_balance(const dh_mat4_f32 *M)
 }
 
 /*
- * Element (i, j) of the row-view matrix the certified path works on: M
- * itself (aff == 0), or for an affine T the matrix blockdiag(s3 R, 1)
- * (aff != 0; s3 a power of two): the inverse of an affine transform is
- * [R^-1, -R^-1 p], so only R is inverted, after an exact scaling that
- * makes the decision independent of the scale of R.
+ * Element (i, j) of the row-view matrix the certified path works on: s M
+ * (aff == 0), or for an affine T the matrix blockdiag(s R, 1) (aff != 0):
+ * the inverse of an affine transform is [R^-1, -R^-1 p], so only R is
+ * inverted. s is an exact power of two that makes the decision
+ * independent of the scale of M (of R).
  */
-static float dh_at(const dh_mat4_f32 *M, int i, int j, float s3, int aff)
+static DH_INLINE float dh_at(const dh_mat4_f32 *M, int i, int j, float s, int aff)
 {
-    if (!aff) return M->m[i][j];
-    if (i < 3 && j < 3) return M->m[i][j] * s3;
+    if (!aff || (i < 3 && j < 3)) return M->m[i][j] * s;
     return (i == j) ? 1.0f : 0.0f;
 }
 
 /* max row sum of D^-1 M D (row view; = balanced ||T||_1) */
-static DH_NOINLINE float dh_norm_rows(const dh_mat4_f32 *M, float sg, float s3, int aff)
+static DH_NOINLINE float dh_norm_rows(const dh_mat4_f32 *M, float sg, float s, int aff)
 {
     float n = 0.0f;
     int i, j;
     for (i = 0; i < 4; i++) {
         float rs = 0.0f;
         for (j = 0; j < 4; j++) {
-            const float v = fabsf(dh_at(M, i, j, s3, aff));
+            const float v = fabsf(dh_at(M, i, j, s, aff));
             if (i < 3) rs += (j < 3) ? v : v * sg;
             else rs += (j < 3) ? v / sg : v;
         }
@@ -123,11 +122,10 @@ static DH_NOINLINE float dh_norm_rows(const dh_mat4_f32 *M, float sg, float s3, 
     return n;
 }
 
-/* balanced ||X (s M) - I|| in the row view (row i of X M is the
- * combination of the rows of M with the weights of row i of X); s is a
- * power of two, so s M is exact */
-static DH_NOINLINE float dh_residual(const dh_mat4_f32 *X, const dh_mat4_f32 *M, float s, float sg, float s3,
-                                     int aff)
+/* balanced ||X A - I|| in the row view, A = dh_at(M, ., ., s, aff) (row i
+ * of X A is the combination of the rows of A with the weights of row i of
+ * X); s is a power of two, so A is exact */
+static DH_NOINLINE float dh_residual(const dh_mat4_f32 *X, const dh_mat4_f32 *M, float s, float sg, int aff)
 {
     float res = 0.0f;
     int i, j, k;
@@ -135,7 +133,7 @@ static DH_NOINLINE float dh_residual(const dh_mat4_f32 *X, const dh_mat4_f32 *M,
         float rs = 0.0f;
         for (j = 0; j < 4; j++) {
             float q = 0.0f;
-            for (k = 0; k < 4; k++) q += (X->m[i][k] * s) * dh_at(M, k, j, s3, aff);
+            for (k = 0; k < 4; k++) q += X->m[i][k] * dh_at(M, k, j, s, aff);
             if (j == i) q -= 1.0f;
             q = fabsf(q);
             /* balanced weights: column 3 times sg in rows 0..2, columns
@@ -202,6 +200,35 @@ static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
 }
 
 /*
+ * Exact power-of-two scale s of the certified path: for affine T the one
+ * of dh_affine_prescale (largest |R_ij| into [1, 2)); otherwise 1 when
+ * max|T_ij| is in [2^-16, 2^17), else the one that brings it into [1, 2)
+ * (or [2, 4) for the very top binade), so that nothing over- or
+ * underflows. 0 for a zero or denormal matrix (R). T is finite here.
+ */
+static DH_NOINLINE float dh_cert_scale(const dh_mat4_f32 *T, int aff)
+{
+    float mx = 0.0f, s = 1.0f;
+    uint32_t e;
+    int i, j;
+    if (aff) return dh_affine_prescale(T);
+    for (i = 0; i < 4; i++) {
+        for (j = 0; j < 4; j++) {
+            const float v = fabsf(T->m[i][j]);
+            mx = (v > mx) ? v : mx;
+        }
+    }
+    if (mx < FLT_MIN) return 0.0f;
+    memcpy(&e, &mx, sizeof e);
+    e >>= 23; /* biased exponent of the largest element, 1..254 */
+    if (e < 127u - 16u || e > 127u + 16u) {
+        const uint32_t bits = ((e >= 254u) ? 1u : 254u - e) << 23;
+        memcpy(&s, &bits, sizeof s);
+    }
+    return s;
+}
+
+/*
  * Certified general inverse into the scratch X (X must not alias T; its
  * content is undefined on error). Method: NaN/Inf scan; the matrix M
  * inverted is s T, or blockdiag(s3 R, 1) for an affine T (see dh_at), with
@@ -216,53 +243,31 @@ static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
 static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
     const int aff = dh_is_affine(T);
-    float mx = 0.0f, z = 0.0f, s = 1.0f, s3 = 1.0f, sg = 1.0f, na;
-    uint32_t e;
+    float z = 0.0f, s, sg = 1.0f, na;
     int i, j;
 
     /* z is NaN iff an element is NaN or Inf (x * 0 is NaN exactly for
-     * those); mx = max |T_ij| */
+     * those) */
     for (i = 0; i < 4; i++) {
-        for (j = 0; j < 4; j++) {
-            const float v = fabsf(T->m[i][j]);
-            z += v * 0.0f;
-            mx = (v > mx) ? v : mx;
-        }
+        for (j = 0; j < 4; j++) z += T->m[i][j] * 0.0f;
     }
     if (z != z) return DH_ERR_NAN;
-    if (aff) {
-        s3 = dh_affine_prescale(T);
-        if (s3 == 0.0f) return DH_ERR_SINGULAR; /* R zero or denormal */
-    } else {
-        if (mx < FLT_MIN) return DH_ERR_SINGULAR; /* zero or denormal matrix */
-        memcpy(&e, &mx, sizeof e);
-        e >>= 23; /* biased exponent of the largest element, 1..254 */
-        if (e < 127u - 16u || e > 127u + 16u) {
-            /* exact power-of-two scaling that brings the largest element
-             * into [1, 2) (or [2, 4) for the very top binade), so that
-             * nothing over- or underflows */
-            const uint32_t bits = ((e >= 254u) ? 1u : 254u - e) << 23;
-            memcpy(&s, &bits, sizeof s);
-        }
-        sg = dh_balance(T); /* scale-free: a ratio of sums of |T_ij| */
-    }
-    na = dh_norm_rows(T, sg, s3, aff) * s;
+    s = dh_cert_scale(T, aff);
+    if (s == 0.0f) return DH_ERR_SINGULAR; /* zero or denormal matrix (or R) */
+    if (!aff) sg = dh_balance(T); /* scale-free: a ratio of sums of |T_ij| */
     for (i = 0; i < 4; i++) {
-        for (j = 0; j < 4; j++) X->m[i][j] = dh_at(T, i, j, s3, aff) * s;
+        for (j = 0; j < 4; j++) X->m[i][j] = dh_at(T, i, j, s, aff);
     }
     if (!dh_inv_gauss_jordan(X)) return DH_ERR_SINGULAR;
     /* (a) estimated condition number */
+    na = dh_norm_rows(T, sg, s, aff);
     if (!(na * dh_norm_rows(X, sg, 1.0f, 0) < DH_MAT4_COND_MAX)) return DH_ERR_SINGULAR;
     /* (b) certificate (the rounding of the residual is below
      * 4 u na nx < 0.13) */
-    if (!(dh_residual(X, T, s, sg, s3, aff) <= 0.5f)) return DH_ERR_SINGULAR;
-    /* T^-1 = s M^-1, or for affine T: R^-1 = s3 (s3 R)^-1 and the
+    if (!(dh_residual(X, T, s, sg, aff) <= 0.5f)) return DH_ERR_SINGULAR;
+    /* T^-1 = s A^-1, or for affine T: R^-1 = s (s R)^-1 and the
      * translation -R^-1 p (exact powers of two unless they overflow);
      * "+ 0.0f" maps -0 to +0 */
-    if (aff) {
-        s = s3;
-        for (i = 0; i < 3; i++) X->m[i][3] = 0.0f;
-    }
     z = 0.0f;
     for (i = 0; i < 4; i++) {
         for (j = 0; j < 4; j++) {
@@ -275,21 +280,13 @@ static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 
         for (j = 0; j < 3; j++) {
             const float t = 0.0f - (X->m[0][j] * T->m[3][0] + X->m[1][j] * T->m[3][1] + X->m[2][j] * T->m[3][2]);
             X->m[3][j] = t;
+            X->m[j][3] = 0.0f;
             z += t * 0.0f;
         }
         X->m[3][3] = 1.0f;
     }
     if (z != z) return DH_ERR_OVERFLOW;
     return DH_OK;
-}
-
-/* certified path for a caller whose output must stay untouched on error */
-static DH_NOINLINE dh_status dh_inv_certified_out(dh_mat4_f32 *out, const dh_mat4_f32 *T)
-{
-    dh_mat4_f32 X;
-    const dh_status st = dh_inv_certified(&X, T);
-    if (st == DH_OK) *out = X;
-    return st;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -340,7 +337,7 @@ static DH_NOINLINE dh_status dh_inv_certified_out(dh_mat4_f32 *out, const dh_mat
  * S is in range (s == 1 on the common path), and T^-1 = [s (sR)^-1, ...].
  * Writes out and returns 1, or returns 0 (out untouched).
  */
-static DH_INLINE int dh_inv_affine(dh_mat4_f32 *out, const dh_mat4_f32 *T, float s)
+static DH_NOINLINE int dh_inv_affine(dh_mat4_f32 *out, const dh_mat4_f32 *T, float s)
 {
     const float nx = T->m[0][0] * s, ny = T->m[0][1] * s, nz = T->m[0][2] * s;
     const float ox = T->m[1][0] * s, oy = T->m[1][1] * s, oz = T->m[1][2] * s;
@@ -398,24 +395,24 @@ static DH_NOINLINE float dh_affine_prescale(const dh_mat4_f32 *T)
 
 /*
  * General (projective) T = [R p; q^T w]: adjugate from the 2x2 minors of
- * two row pairs, in the row view of the helpers below (M = T^T). The
+ * two row pairs (two phases, so that few values are live at a time), in
+ * the row view of the helpers above (M = T^T). The
  * test is made on the balanced matrix B = D^-1 T D, D = diag(1, 1, 1, sg),
  * sg^2 = |p| / |q| (Osborne): the homogeneous coordinate has another unit
  * than the others, and the balancing makes the test independent of the
  * length unit. det B = det T, and ||B||_F^2 = ||R||_F^2 + 2 |p| |q| + w^2
  * needs no sg (|p| |q| is bounded by |p|_1 |q|_1 to avoid a root). Writes out and returns 1, or returns 0 (out untouched).
  */
-static DH_NOINLINE int dh_inv_proj_fast(dh_mat4_f32 *out, const dh_mat4_f32 *M)
+/* phase 1: the test, and columns 0, 1 of the inverse (row view) from the
+ * 2x2 minors of rows 2, 3; returns 1 / det, or 0 if the test fails */
+static DH_NOINLINE float dh_proj_phase1(dh_mat4_f32 *X, const dh_mat4_f32 *M)
 {
     const float a00 = M->m[0][0], a01 = M->m[0][1], a02 = M->m[0][2], a03 = M->m[0][3];
     const float a10 = M->m[1][0], a11 = M->m[1][1], a12 = M->m[1][2], a13 = M->m[1][3];
     const float a20 = M->m[2][0], a21 = M->m[2][1], a22 = M->m[2][2], a23 = M->m[2][3];
     const float a30 = M->m[3][0], a31 = M->m[3][1], a32 = M->m[3][2], a33 = M->m[3][3];
-    /* 2x2 minors of rows 2, 3 and of rows 0, 1 */
     const float c5 = a22 * a33 - a32 * a23, c4 = a21 * a33 - a31 * a23, c3 = a21 * a32 - a31 * a22;
     const float c2 = a20 * a33 - a30 * a23, c1 = a20 * a32 - a30 * a22, c0 = a20 * a31 - a30 * a21;
-    const float s0 = a00 * a11 - a10 * a01, s1 = a00 * a12 - a10 * a02, s2 = a00 * a13 - a10 * a03;
-    const float s3 = a01 * a12 - a11 * a02, s4 = a01 * a13 - a11 * a03, s5 = a02 * a13 - a12 * a03;
     /* cofactors of row 0 (column 0 of the inverse), det by Laplace */
     const float x00 = a11 * c5 - a12 * c4 + a13 * c3;
     const float x10 = -a10 * c5 + a12 * c2 - a13 * c1;
@@ -431,29 +428,48 @@ static DH_NOINLINE int dh_inv_proj_fast(dh_mat4_f32 *out, const dh_mat4_f32 *M)
                     (a20 * a20 + a21 * a21 + a22 * a22) + 2.0f * (p1 * q1) + a33 * a33;
     float f;
     /* |p|_1, |q|_1 <= 2^28 and S <= 2^16 bound every product of entries
-     * formed below (no overflow); see the test above */
+     * formed here and in phase 2 (no overflow); see the test above */
     if (!(p1 <= DH_FAST_PQ && q1 <= DH_FAST_PQ && S >= DH_FAST_LO4 && S <= DH_FAST_HI4 &&
           4.0f * DH_FAST_C2 * (det * det) >= (S * S) * (S * S))) {
-        return 0;
+        return 0.0f;
     }
     f = 1.0f / det;
-    /* every input is in a local: out may alias M */
-    out->m[0][0] = x00 * f + 0.0f;
-    out->m[1][0] = x10 * f + 0.0f;
-    out->m[2][0] = x20 * f + 0.0f;
-    out->m[3][0] = x30 * f + 0.0f;
-    out->m[0][1] = (-a01 * c5 + a02 * c4 - a03 * c3) * f + 0.0f;
-    out->m[1][1] = (a00 * c5 - a02 * c2 + a03 * c1) * f + 0.0f;
-    out->m[2][1] = (-a00 * c4 + a01 * c2 - a03 * c0) * f + 0.0f;
-    out->m[3][1] = (a00 * c3 - a01 * c1 + a02 * c0) * f + 0.0f;
-    out->m[0][2] = (a31 * s5 - a32 * s4 + a33 * s3) * f + 0.0f;
-    out->m[1][2] = (-a30 * s5 + a32 * s2 - a33 * s1) * f + 0.0f;
-    out->m[2][2] = (a30 * s4 - a31 * s2 + a33 * s0) * f + 0.0f;
-    out->m[3][2] = (-a30 * s3 + a31 * s1 - a32 * s0) * f + 0.0f;
-    out->m[0][3] = (-a21 * s5 + a22 * s4 - a23 * s3) * f + 0.0f;
-    out->m[1][3] = (a20 * s5 - a22 * s2 + a23 * s1) * f + 0.0f;
-    out->m[2][3] = (-a20 * s4 + a21 * s2 - a23 * s0) * f + 0.0f;
-    out->m[3][3] = (a20 * s3 - a21 * s1 + a22 * s0) * f + 0.0f;
+    X->m[0][0] = x00 * f + 0.0f;
+    X->m[1][0] = x10 * f + 0.0f;
+    X->m[2][0] = x20 * f + 0.0f;
+    X->m[3][0] = x30 * f + 0.0f;
+    X->m[0][1] = (-a01 * c5 + a02 * c4 - a03 * c3) * f + 0.0f;
+    X->m[1][1] = (a00 * c5 - a02 * c2 + a03 * c1) * f + 0.0f;
+    X->m[2][1] = (-a00 * c4 + a01 * c2 - a03 * c0) * f + 0.0f;
+    X->m[3][1] = (a00 * c3 - a01 * c1 + a02 * c0) * f + 0.0f;
+    return f;
+}
+
+/* phase 2: columns 2, 3 of the inverse from the 2x2 minors of rows 0, 1 */
+static DH_NOINLINE void dh_proj_phase2(dh_mat4_f32 *X, const dh_mat4_f32 *M, float f)
+{
+    const float a00 = M->m[0][0], a01 = M->m[0][1], a02 = M->m[0][2], a03 = M->m[0][3];
+    const float a10 = M->m[1][0], a11 = M->m[1][1], a12 = M->m[1][2], a13 = M->m[1][3];
+    const float s0 = a00 * a11 - a10 * a01, s1 = a00 * a12 - a10 * a02, s2 = a00 * a13 - a10 * a03;
+    const float s3 = a01 * a12 - a11 * a02, s4 = a01 * a13 - a11 * a03, s5 = a02 * a13 - a12 * a03;
+    const float a20 = M->m[2][0], a21 = M->m[2][1], a22 = M->m[2][2], a23 = M->m[2][3];
+    const float a30 = M->m[3][0], a31 = M->m[3][1], a32 = M->m[3][2], a33 = M->m[3][3];
+    X->m[0][2] = (a31 * s5 - a32 * s4 + a33 * s3) * f + 0.0f;
+    X->m[1][2] = (-a30 * s5 + a32 * s2 - a33 * s1) * f + 0.0f;
+    X->m[2][2] = (a30 * s4 - a31 * s2 + a33 * s0) * f + 0.0f;
+    X->m[3][2] = (-a30 * s3 + a31 * s1 - a32 * s0) * f + 0.0f;
+    X->m[0][3] = (-a21 * s5 + a22 * s4 - a23 * s3) * f + 0.0f;
+    X->m[1][3] = (a20 * s5 - a22 * s2 + a23 * s1) * f + 0.0f;
+    X->m[2][3] = (-a20 * s4 + a21 * s2 - a23 * s0) * f + 0.0f;
+    X->m[3][3] = (a20 * s3 - a21 * s1 + a22 * s0) * f + 0.0f;
+}
+
+/* X (must not alias M) = M^-1 and 1, or 0 (X partly written) */
+static int dh_inv_proj_fast(dh_mat4_f32 *X, const dh_mat4_f32 *M)
+{
+    const float f = dh_proj_phase1(X, M);
+    if (f == 0.0f) return 0;
+    dh_proj_phase2(X, M, f);
     return 1;
 }
 
@@ -491,14 +507,18 @@ static dh_status dh_inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
  */
 static DH_NOINLINE dh_status dh_inv_general(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
+    dh_mat4_f32 X; /* scratch of the certified path */
+    dh_status st;
     if (dh_is_affine(T)) {
         /* R with ||R||_F^2 out of [2^-24, 2^24] is rescaled exactly first,
          * so the affine decision is invariant under any scaling of R */
         if (dh_inv_affine(out, T, 1.0f) || dh_inv_affine_scaled(out, T)) return DH_OK;
-    } else if (dh_inv_proj_fast(out, T)) {
-        return DH_OK;
+        st = dh_inv_certified(&X, T);
+    } else {
+        st = dh_inv_proj_fast(&X, T) ? DH_OK : dh_inv_certified(&X, T);
     }
-    return dh_inv_certified_out(out, T);
+    if (st == DH_OK) *out = X;
+    return st;
 }
 
 dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
