@@ -46,18 +46,37 @@ const char *dh_status_str(dh_status st);
 /* ---- float types ------------------------------------------------------ */
 
 /** 3-vector (a point or a direction in 3-D). */
-typedef struct { float x, y, z; } dh_vec3_f32;
+typedef struct {
+    float x; /**< x component */
+    float y; /**< y component */
+    float z; /**< z component */
+} dh_vec3_f32;
 /** Homogeneous 4-vector [x y z w]^T (column). w = 1 point, w = 0 direction. */
-typedef struct { float x, y, z, w; } dh_vec4_f32;
+typedef struct {
+    float x; /**< x component */
+    float y; /**< y component */
+    float z; /**< z component */
+    float w; /**< scale factor: 1 for a point, 0 for a direction */
+} dh_vec4_f32;
 /** Plane as the row vector [a b c d]: points u with a x + b y + c z + d w = 0 (seed eq. 1.19-1.22). */
-typedef struct { float a, b, c, d; } dh_plane_f32;
+typedef struct {
+    float a; /**< x coefficient */
+    float b; /**< y coefficient */
+    float c; /**< z coefficient */
+    float d; /**< w coefficient (offset) */
+} dh_plane_f32;
 /** 3x3 matrix, column-major: m[col][row]. */
-typedef struct { float m[3][3]; } dh_mat3_f32;
+typedef struct {
+    float m[3][3]; /**< m[col][row] */
+} dh_mat3_f32;
 /** 4x4 homogeneous transform, column-major: m[col][row]; columns n, o, a, p. */
-typedef struct { float m[4][4]; } dh_mat4_f32;
+typedef struct {
+    float m[4][4]; /**< m[col][row]; columns n, o, a, p */
+} dh_mat4_f32;
 
-/** Element (row r, column c) of a dh_mat4_f32 or dh_mat3_f32 pointer. */
+/** Element (row r, column c) of a dh_mat4_f32 pointer. */
 #define DH_M4(T, r, c) ((T)->m[(c)][(r)])
+/** Element (row r, column c) of a dh_mat3_f32 pointer. */
 #define DH_M3(R, r, c) ((R)->m[(c)][(r)])
 
 /* ---- fixed-point types ------------------------------------------------ */
@@ -69,20 +88,34 @@ typedef int32_t dh_q30;
 /** Length (translation) in the user's unit with DH_QPOS_FRAC fraction bits (default Q16.16). */
 typedef int32_t dh_qpos;
 
+/** 1.0 in Q2.30 (exact). */
 #define DH_Q30_ONE ((dh_q30)0x40000000)
+/** 1.0 (one degree) in Q16.16. */
 #define DH_Q16_ONE ((dh_q16)0x00010000)
+/** One length unit in dh_qpos. */
 #define DH_QPOS_ONE ((dh_qpos)((int32_t)1 << DH_QPOS_FRAC))
 
 /** Fixed-point 3-vector of lengths (DH_QPOS_FRAC fraction bits). */
-typedef struct { dh_qpos x, y, z; } dh_vec3_q;
+typedef struct {
+    dh_qpos x; /**< x component */
+    dh_qpos y; /**< y component */
+    dh_qpos z; /**< z component */
+} dh_vec3_q;
 /** Fixed-point 3-vector of unit-scale values (Q2.30), e.g. directions. */
-typedef struct { dh_q30 x, y, z; } dh_dir3_q;
+typedef struct {
+    dh_q30 x; /**< x component */
+    dh_q30 y; /**< y component */
+    dh_q30 z; /**< z component */
+} dh_dir3_q;
 /**
  * Rigid frame in fixed point: rotation r (Q2.30, column-major r[col][row],
  * columns n, o, a) and position p (DH_QPOS_FRAC fraction bits).
  * The implied bottom row is 0 0 0 1.
  */
-typedef struct { dh_q30 r[3][3]; dh_qpos p[3]; } dh_frame_q;
+typedef struct {
+    dh_q30 r[3][3]; /**< rotation, Q2.30, r[col][row] (columns n, o, a) */
+    dh_qpos p[3];   /**< position, DH_QPOS_FRAC fraction bits */
+} dh_frame_q;
 
 #ifdef __cplusplus
 }

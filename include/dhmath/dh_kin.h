@@ -114,12 +114,17 @@ dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh
  */
 dh_status dh_pose_error_f32(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float e[6]);
 
-/** Task-space mask bits for dh_ik_params.mask (components of the pose error). */
+/** Task-space mask bit for dh_ik_params.mask: drive the x position error to 0. */
 #define DH_IK_PX 0x01u
+/** Mask bit: y position error. */
 #define DH_IK_PY 0x02u
+/** Mask bit: z position error. */
 #define DH_IK_PZ 0x04u
+/** Mask bit: orientation error about x. */
 #define DH_IK_RX 0x08u
+/** Mask bit: orientation error about y. */
 #define DH_IK_RY 0x10u
+/** Mask bit: orientation error about z. */
 #define DH_IK_RZ 0x20u
 /** Position only (orientation is free). */
 #define DH_IK_POSITION 0x07u

@@ -239,6 +239,8 @@ dh_status dh_robot_check_limits_q(const dh_robot *r, const int32_t *q);
 
 /**
  * @brief Link matrix A_i of joint i (0-based) at joint value q.
+ * @param r robot (not NULL)
+ * @param i joint index, 0 <= i < n
  * @param q degrees (R) or length (P), finite.
  * @param A output (bottom row 0 0 0 1); untouched on error.
  * @return DH_OK; DH_ERR_ARG when i >= n, n > DH_MAX_JOINTS or the float
@@ -272,7 +274,10 @@ dh_status dh_fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *T);
 /**
  * @brief Every frame: frames[i] = base * A_1 .. A_{i+1} for i = 0..n-1 (tool
  * not applied); T_end (may be NULL) = frames[n-1] * tool.
+ * @param r robot (not NULL), n >= 1
+ * @param q n joint values (not NULL)
  * @param frames n entries (not NULL), must not overlap q or T_end.
+ * @param T_end end frame with the tool, or NULL when not wanted
  * @return as dh_fk_f32(); on DH_ERR_ARG / DH_ERR_NAN nothing is written.
  */
 dh_status dh_fk_frames_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *T_end);
@@ -299,6 +304,8 @@ dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A);
  * mm, DH_QPOS_FRAC 16, 10^4 configurations): Puma 560 2.3e-5 mm / 3.9 LSB,
  * UR5 3.5e-5 mm / 4.2 LSB, Panda 3.6e-5 mm / 4.6 LSB (position / rotation
  * entry of Q2.30); targets 5e-4 mm / 64 LSB. See docs/accuracy_fk.md.
+ * @param r robot (not NULL), n >= 1, fixed path prepared
+ * @param q n joint values (not NULL): dh_q16 degrees (R) or dh_qpos (P)
  * @param T output, must not alias q.
  * @return DH_OK; DH_ERR_ARG when n == 0 or n > DH_MAX_JOINTS (T
  *         untouched); DH_ERR_OVERFLOW

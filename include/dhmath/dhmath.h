@@ -18,9 +18,11 @@
 #include "dhmath/dh_kin.h"
 #include "dhmath/dh_rot.h"
 
-/** Library version (semantic versioning). */
+/** Library major version (semantic versioning). */
 #define DHMATH_VERSION_MAJOR 0
+/** Library minor version. */
 #define DHMATH_VERSION_MINOR 1
+/** Library patch version. */
 #define DHMATH_VERSION_PATCH 0
 
 #endif /* DHMATH_DHMATH_H */
