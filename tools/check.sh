@@ -11,7 +11,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
 JOBS=${JOBS:-$(nproc)}
-STAGES=${*:-"host asan m0 m4f m7 riscv32 guards variants coverage static fuzz"}
+STAGES=${*:-"host asan m0 m4f m7 riscv32 guards variants coverage static fuzz apidoc"}
 failed=""
 
 run_stage() {
@@ -47,6 +47,7 @@ for s in $STAGES; do
     coverage) [ -x tools/coverage.sh ] && run_stage coverage tools/coverage.sh build/coverage ;;
     static) [ -x tools/static.sh ] && run_stage static tools/static.sh ;;
     fuzz) [ -x tools/fuzz.sh ] && run_stage fuzz tools/fuzz.sh 10 ;;
+    apidoc) run_stage apidoc bash -c 'mkdir -p build && doxygen docs/Doxyfile' ;;
     *) echo "unknown stage $s"; exit 2 ;;
   esac
 done
