@@ -50,11 +50,12 @@
  * used as -INT32_MAX (one LSB), so no intermediate 64-bit sum can wrap;
  * any saturated output entry makes the function return DH_ERR_OVERFLOW.
  *
- * Stack (gcc -fstack-usage): float functions <= 168 bytes; dh_fk_q 144
- * plus 72 in its step function on Cortex-M4 (-O2/-O3), 120 + 128 on
- * Cortex-M0 at -Os; on Cortex-M0 at -O2/-O3 a step function takes ~300
- * (see docs/accuracy_fk.md). No function keeps state; a dh_robot may be
- * shared read-only between threads.
+ * Stack: worst case including callees and libgcc (tools/dh_stack.py,
+ * checked by tools/check_guards.sh against 256 bytes): dh_fk_q 216 / 248
+ * bytes on Cortex-M0+ and 160 / 200 on Cortex-M4F at -Os / -O2; the per
+ * function figures for every configuration are in docs/footprint.md.
+ * No function keeps state; a dh_robot may be shared read-only between
+ * threads.
  */
 #ifndef DHMATH_DH_ROBOT_H
 #define DHMATH_DH_ROBOT_H
@@ -306,7 +307,7 @@ dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A);
  * entry of Q2.30); targets 5e-4 mm / 64 LSB. See docs/accuracy_fk.md.
  * @param r robot (not NULL), n >= 1, fixed path prepared
  * @param q n joint values (not NULL): dh_q16 degrees (R) or dh_qpos (P)
- * @param T output, must not alias q.
+ * @param T output, must not alias q or any part of *r.
  * @return DH_OK; DH_ERR_ARG when n == 0 or n > DH_MAX_JOINTS (T
  *         untouched); DH_ERR_OVERFLOW
  *         when the fixed path is unavailable (constants did not fit: T
