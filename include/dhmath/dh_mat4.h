@@ -66,6 +66,7 @@ void dh_mat4_trans_f32(dh_mat4_f32 *T, float x, float y, float z);
 
 /**
  * @brief T = Rot(x, deg) (eq. 1.32): rows (1 0 0), (0 c -s), (0 s c).
+ * @param T output (untouched on error)
  * @param deg angle in degrees, any finite value.
  * @return DH_OK; DH_ERR_NAN if deg is NaN or infinite (T untouched).
  * The entries are exactly dh_sincos_f32(deg) and 0 - s (so no -0 appears:
@@ -82,6 +83,7 @@ dh_status dh_mat4_rotz_f32(dh_mat4_f32 *T, float deg);
 /**
  * @brief T = Rot(k, deg), rotation by deg degrees about the axis k through
  *        the origin (eq. 1.70, right-hand rule); p = 0.
+ * @param T output (untouched on error)
  * @param kx,ky,kz axis, any finite non-zero length (it is normalised; the
  *        normalisation is overflow-free for any finite components).
  * @param deg angle in degrees, any finite value.
@@ -104,6 +106,7 @@ void dh_mat4_scale_f32(dh_mat4_f32 *T, float sx, float sy, float sz);
  * @brief Perspective transform along an axis (eq. 1.127 for the y axis):
  *        identity with -1/f in the bottom row, in the column of the axis,
  *        so a point u maps to w = 1 - u_axis / f.
+ * @param T output (untouched on error)
  * @param axis 0 = x, 1 = y, 2 = z.
  * @param f focal length (any finite non-zero value; the seed uses f > 0).
  * @return DH_OK; DH_ERR_ARG if axis is not 0..2; DH_ERR_NAN if f is NaN/Inf;
@@ -316,6 +319,7 @@ dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T);
 
 /**
  * @brief Rotation part of T orthonormal with det +1, within @p tol.
+ * @param T matrix to check (not NULL)
  * Criterion: |n.n - 1|, |o.o - 1|, |a.a - 1|, |n.o|, |n.a|, |o.a| <= tol and
  * n . (o x a) > 0. p and the bottom row are not examined.
  * @param tol tolerance, finite and >= 0 (e.g. 1e-5f for float data).
