@@ -205,7 +205,12 @@ static int32_t rand_mag(unsigned bits)
     switch (r & 7u) {
     case 0: v = (int32_t)(((uint32_t)v & 0xFFFF0000u) | 0x8000u); break;  /* low half 0x8000 */
     case 1: v = (int32_t)(((uint32_t)v & 0xFFFF0000u) | 0x7FFFu); break;
-    case 2: v = (v < 0 ? -1 : 1) * (int32_t)(((uint32_t)1 << bits) - (dht_rand_u32() & 0xFFFFu)); break;
+    case 2: { /* near the top of the range; 2^31 itself is clamped to INT32_MAX */
+        int64_t m = ((int64_t)1 << bits) - (int64_t)(dht_rand_u32() & 0xFFFFu);
+        if (m > INT32_MAX) m = INT32_MAX;
+        v = (int32_t)(v < 0 ? -m : m);
+        break;
+    }
     default: break;
     }
     return v;
