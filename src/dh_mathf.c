@@ -1,0 +1,223 @@
+/*
+ * dh_mathf.c - libm-free float atan2 and sin/cos in radians with a small
+ * stack (contracts and accuracy in dh_mathf.h).
+ *
+ * Polynomial coefficients: fitted here for this file (weighted least
+ * squares iterated to minimax by Lawson's algorithm, in double, on the
+ * relative error of the final function, then rounded to float and checked
+ * by test/test_mathf.c):
+ *   sin r = r + r z (S1 + z (S2 + z S3)),          |r| <= pi/4, z = r^2
+ *   cos r = 1 - z/2 + z^2 (C1 + z (C2 + z C3))
+ *   atan u = u + u z (T1 + z (T2 + ... + z T6)),   |u| <= 1/2
+ * 2/pi to 224 bits and pi/2 to 64 bits: computed with integer arithmetic (Machin's formula);
+ * the words agree with the published expansion 0.A2F9836E 4E441529 ...
+ */
+#include <string.h>
+
+#include "dh_mathf.h"
+
+#define DH_MF_S1 (-0.16666654603f)
+#define DH_MF_S2 0.0083321603364f
+#define DH_MF_S3 (-1.9515224212e-4f)
+#define DH_MF_C1 0.041666645671f
+#define DH_MF_C2 (-0.0013887315639f)
+#define DH_MF_C3 2.4433085206e-5f
+#define DH_MF_T1 (-0.33333326912f)
+#define DH_MF_T2 0.19999488967f
+#define DH_MF_T3 (-0.14272060333f)
+#define DH_MF_T4 0.10940818909f
+#define DH_MF_T5 (-0.079834060236f)
+#define DH_MF_T6 0.03871351284f
+
+#define DH_MF_SIGN 0x80000000u
+#define DH_MF_ABS 0x7FFFFFFFu
+#define DH_MF_INF 0x7F800000u
+#define DH_MF_PIO4_BITS 0x3F490FDAu /* largest float below pi/4 */
+
+static float dh_mf_from_bits(uint32_t b)
+{
+    float f;
+    memcpy(&f, &b, sizeof f);
+    return f;
+}
+
+static uint32_t dh_mf_bits(float f)
+{
+    uint32_t b;
+    memcpy(&b, &f, sizeof b);
+    return b;
+}
+
+/* ---- atan2 ---------------------------------------------------------------- */
+
+float dh_atan2f_(float y, float x)
+{
+    /* K pi/4 = hi[K] + lo[K] (hi the float nearest, lo the float nearest
+     * the rest), K = 0..4 */
+    static const float pio4_hi[5] = {
+        0.0f, 0x1.921fb6p-1f, 0x1.921fb6p+0f, 0x1.2d97c8p+1f, 0x1.921fb6p+1f
+    };
+    static const float pio4_lo[5] = {
+        0.0f, -0x1.777a5cp-26f, -0x1.777a5cp-25f, -0x1.99bc5cp-28f, -0x1.777a5cp-24f
+    };
+    uint32_t xb = dh_mf_bits(x), yb = dh_mf_bits(y);
+    uint32_t ax_b = xb & DH_MF_ABS, ay_b = yb & DH_MF_ABS;
+    uint32_t xn, w, b, sneg, k;
+    float ax, ay, mn, mx, u, z, p, a;
+
+    if (ax_b > DH_MF_INF || ay_b > DH_MF_INF) return x + y; /* NaN in, NaN out */
+    ax = dh_mf_from_bits(ax_b);
+    ay = dh_mf_from_bits(ay_b);
+    xn = xb >> 31;                     /* x negative (or -0): the left half-plane */
+    w = (ay_b > ax_b) ? 1u : 0u;       /* |y| > |x|: reflected about the diagonal */
+    mx = w ? ay : ax;
+    mn = w ? ax : ay;
+    if (ax_b == ay_b) {
+        /* equal magnitudes: both zero (angle 0 or pi), both infinite or
+         * equal finite (pi/4 or 3 pi/4); avoids 0/0 and inf - inf */
+        b = (ax_b != 0u) ? 1u : 0u;
+        u = 0.0f;
+    } else if ((w ? ay_b : ax_b) < DH_MF_INF && mn + mn >= mx) {
+        /* (mx finite; 2 mn is exact or inf, while 0.5f * mx could
+         * underflow to 0)
+         * ratio in [1/2, 1): atan(ratio) = pi/4 + atan(u) with
+         * u = (mn - mx) / (mn + mx) in [-1/3, 0). The
+         * numerator is exact (Sterbenz); the rounding error of the
+         * denominator d is recovered exactly (Fast2Sum, mx >= mn) and
+         * divided out, so u carries one rounding, as mn / mx does. Scaled
+         * by 1/4 near the top so that mn + mx cannot overflow (exact: mn
+         * >= mx / 2 is far from subnormal). */
+        float n, d, e;
+        if (mx > 0x1.0p+126f) {
+            mx *= 0.25f;
+            mn *= 0.25f;
+        }
+        b = 1u;
+        n = mn - mx;
+        d = mx + mn;
+        e = mn - (d - mx);             /* mx + mn == d + e exactly */
+        u = n / d;
+        u = u - u * (e / d);           /* n / (d + e) to first order, |e / d| <= 2^-24 */
+    } else {
+        b = 0u;
+        u = mn / mx;                   /* in [0, 1/2); mx > 0 here; 0 when mx is inf */
+    }
+    z = u * u;
+    p = u + u * (z * (DH_MF_T1 + z * (DH_MF_T2 + z * (DH_MF_T3 + z * (DH_MF_T4 + z * (DH_MF_T5 + z * DH_MF_T6))))));
+
+    /* angle = K pi/4 + s atan(u) (see dh_mathf.h for the table):
+     *   x >= 0, |y| <= |x|: K = b,      s = +    x >= 0, |y| > |x|: K = 2 - b, s = -
+     *   x <  0, |y| <= |x|: K = 4 - b,  s = -    x <  0, |y| > |x|: K = 2 + b, s = + */
+    sneg = w ^ xn;
+    k = (w ? 2u : (xn ? 4u : 0u));
+    k = sneg ? k - b : k + b;
+    if (sneg) p = -p;
+    {
+        /* hi + p with its rounding error recovered (Fast2Sum: |hi| >= |p|
+         * whenever hi != 0, as |p| <= atan(1/2) < pi/4), then lo added to
+         * the error term: one final rounding */
+        float hi = pio4_hi[k], sum = hi + p;
+        float err = p - (sum - hi);
+        a = sum + (err + pio4_lo[k]); /* >= 0 */
+    }
+    return dh_mf_from_bits(dh_mf_bits(a) ^ (yb & DH_MF_SIGN));
+}
+
+/* ---- sin / cos ------------------------------------------------------------ */
+
+/*
+ * Exact reduction of a finite a = |x| > pi/4 (bit pattern mag): returns r
+ * in [-pi/4, pi/4] and the quadrant q (0..3) with a = (4 j + q) pi/2 + r
+ * for an integer j.
+ *
+ * a = M 2^e, M the 24-bit significand, e = exponent - 150 in -24..104.
+ * With 2/pi = sum_{i>=1} b_i 2^-i, a 2/pi = sum_i M b_i 2^(e-i); the terms
+ * with i <= e - 2 are multiples of 4 and drop out modulo 4. The 96 bits
+ * b_{e-1} .. b_{e+94} form W, and y = M W 2^-94 is a 2/pi modulo 4 up to
+ * the omitted tail, < M 2^(e - (e + 94)) 2^e / 2^e = 2^24 2^-94 = 2^-70.
+ * Bits 95..94 of the 120-bit product M W are the quadrant, bits 93..30 a
+ * 64-bit fraction f; f >= 1/2 is taken as f - 1 with the next quadrant,
+ * so r = f pi/2 (formed as a 64-bit fixed-point product, rounded to float
+ * once). The table starts with a zero word for b_i, i <= 0, so the
+ * window of bit s0 = e + 30 (>= 6) needs no special case; s0 <= 134 and
+ * the four words read are within the table.
+ */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+static float dh_mf_reduce(uint32_t mag, uint32_t *quad)
+{
+    static const uint32_t two_over_pi[8] = {
+        0x00000000u, 0xA2F9836Eu, 0x4E441529u, 0xFC2757D1u,
+        0xF534DDC0u, 0xDB629599u, 0x3C439041u, 0xFE5163ABu
+    };
+    /* round(pi/2 2^63) */
+    const uint64_t pio2_q63 = 0xC90FDAA22168C235u;
+    uint32_t s0 = (mag >> 23) - 120u;    /* e + 30 = exponent - 150 + 30 */
+    uint32_t wi = s0 >> 5, sh = s0 & 31u;
+    uint32_t m = (mag & 0x007FFFFFu) | 0x00800000u;
+    uint32_t w0, w1, w2, q, neg;
+    uint64_t lo, mid, hi, t, u, f, fa, fb, pa, pb, lh, hl;
+    float r;
+
+    /* (v << sh) | (next >> (32 - sh)) without a shift by 32 when sh == 0 */
+    w0 = (two_over_pi[wi] << sh) | ((two_over_pi[wi + 1u] >> 1) >> (31u - sh));
+    w1 = (two_over_pi[wi + 1u] << sh) | ((two_over_pi[wi + 2u] >> 1) >> (31u - sh));
+    w2 = (two_over_pi[wi + 2u] << sh) | ((two_over_pi[wi + 3u] >> 1) >> (31u - sh));
+    lo = (uint64_t)m * w2;
+    mid = (uint64_t)m * w1;
+    hi = (uint64_t)m * w0;
+    t = mid + (lo >> 32);                /* < 2^57: no carry lost */
+    u = hi + (t >> 32);                  /* bits 64.. of the product */
+    q = (uint32_t)(u >> 30) & 3u;
+    f = (u << 34) | ((t & 0xFFFFFFFFu) << 2) | ((lo & 0xFFFFFFFFu) >> 30);
+    neg = (uint32_t)(f >> 63);
+    q = (q + neg) & 3u;
+    if (neg) f = (~f) + 1u;              /* |f - 2^64|, <= 2^63 */
+    /* r 2^63 = floor(f pio2_q63 / 2^64): the high half of the 128-bit
+     * product, exact (truncated below 2^-63 absolute, while r >= 2^-40
+     * or so for every float); then a single rounding to float */
+    fa = f >> 32;
+    fb = f & 0xFFFFFFFFu;
+    pa = pio2_q63 >> 32;
+    pb = pio2_q63 & 0xFFFFFFFFu;
+    lh = fb * pa;
+    hl = fa * pb;
+    t = ((fb * pb) >> 32) + (lh & 0xFFFFFFFFu) + (hl & 0xFFFFFFFFu);
+    u = fa * pa + (lh >> 32) + (hl >> 32) + (t >> 32);
+    r = (float)u * 0x1.0p-63f;          /* u < 2^63: r in [0, pi/4] */
+    *quad = q;
+    return neg ? -r : r;
+}
+
+void dh_sincosf_(float x, float *s, float *c)
+{
+    uint32_t xb, mag, q = 0u, sb, cb, swap;
+    float r, z, sp, cp;
+
+    DH_ASSERT(s != NULL);
+    DH_ASSERT(c != NULL);
+    xb = dh_mf_bits(x);
+    mag = xb & DH_MF_ABS;
+    if (mag >= DH_MF_INF) {
+        *s = dh_mf_from_bits(0x7FC00000u);
+        *c = *s;
+        return;
+    }
+    if (mag <= DH_MF_PIO4_BITS) {
+        r = dh_mf_from_bits(mag);        /* |x|; the sign is applied at the end */
+    } else {
+        r = dh_mf_reduce(mag, &q);
+    }
+    z = r * r;
+    sp = r + r * (z * (DH_MF_S1 + z * (DH_MF_S2 + z * DH_MF_S3)));
+    cp = 1.0f - (0.5f * z - z * (z * (DH_MF_C1 + z * (DH_MF_C2 + z * DH_MF_C3))));
+    /* quadrant q: (sin, cos) = (S, C), (C, -S), (-S, -C), (-C, S) */
+    swap = q & 1u;
+    sb = dh_mf_bits(swap ? cp : sp);
+    cb = dh_mf_bits(swap ? sp : cp);
+    sb ^= ((q >> 1) << 31) ^ (xb & DH_MF_SIGN);
+    cb ^= (((q + 1u) >> 1) & 1u) << 31;
+    *s = dh_mf_from_bits(sb);
+    *c = dh_mf_from_bits(cb);
+}

@@ -1,0 +1,87 @@
+/*
+ * dh_mathf.h - PRIVATE float helpers of the library's float path (not part
+ * of the public API, not installed): libm-free replacements for atan2f and
+ * sinf/cosf with a small, fixed stack.
+ *
+ * Why: newlib's atan2f costs 176-184 bytes of stack on Cortex-M0+ and its
+ * sinf/cosf up to 616 bytes (Payne-Hanek reduction with a large local
+ * array), more than the 256-byte budget of a public function
+ * (tools/check_guards.sh); sinf also links about 9 KB of flash on M0.
+ * These helpers use no libm, no heap, no mutable data, no recursion and
+ * no double (they are -Wdouble-promotion clean); on Cortex-M0+ their only
+ * callees are the libgcc soft-float routines (and __aeabi_ul2f /
+ * __aeabi_lmul for the large-argument reduction).
+ *
+ * Requirements (as dh_trig_f32.c): IEEE binary32, round to nearest, float
+ * evaluation (FLT_EVAL_METHOD 0 or assignments rounded as C99 requires),
+ * no -ffast-math, no FMA contraction assumed by the error bounds.
+ *
+ * Accuracy is measured by test/test_mathf.c against double-precision libm
+ * (dense sweeps, signed zeros, infinities, NaN); the figures below are the
+ * measured maxima on the host.
+ */
+#ifndef DHMATH_SRC_DH_MATHF_H
+#define DHMATH_SRC_DH_MATHF_H
+
+#include "dhmath/dh_common.h"
+
+/**
+ * @brief Four-quadrant arc tangent of y / x in RADIANS, a drop-in for C99
+ *        atan2f() without libm.
+ *
+ * Method: |y| and |x| are ordered (mn <= mx); for mn < mx / 2 the
+ * argument is u = mn / mx, otherwise u = (mn - mx) / (mn + mx) (numerator
+ * exact by Sterbenz, the denominator's rounding error recovered exactly
+ * and divided out) and pi/4 is added, so |u| <= 1/2 with a single
+ * rounding; atan(u) = u + u z P(z) (z = u^2, degree-5 minimax P, relative
+ * error 2^-31.9). The octant and the quadrant are then applied as
+ * K pi/4 + s atan(u), K = 0..4, with K pi/4 held as a two-float constant
+ * (hi + lo) and hi + s atan(u) summed with its rounding error recovered
+ * (Fast2Sum), so the result is rounded once at the end. One division
+ * (two in the diagonal octants); no table beyond 10 floats.
+ *
+ * @param y any float (numerator, the sine side)
+ * @param x any float (denominator, the cosine side)
+ * @return the angle in [-pi, pi] (float(pi) = 3.14159274 at the ends),
+ *         with the C99 Annex F special cases: atan2(+-0, +0 or x > 0) =
+ *         +-0; atan2(+-0, -0 or x < 0) = +-pi; atan2(y, +-0) = +-pi/2
+ *         for y != 0; atan2(+-y, +inf) = +-0 and atan2(+-y, -inf) = +-pi
+ *         for finite y; atan2(+-inf, finite x) = +-pi/2;
+ *         atan2(+-inf, +inf) = +-pi/4, atan2(+-inf, -inf) = +-3pi/4; the
+ *         sign of a zero result is the sign of y. NaN in either argument
+ *         returns a NaN (x + y).
+ *         Error: <= 2 ulp of the exact result over the whole float range
+ *         (test_mathf, 5 seeds: max 1.60 ulp on random directions, 1.55
+ *         ulp over random bit patterns incl. subnormal and near FLT_MAX,
+ *         1.05 ulp at the octant edges).
+ * No aliasing concerns (values). Stack: one small frame plus the float
+ * division and arithmetic helpers of libgcc on soft-float cores.
+ */
+float dh_atan2f_(float y, float x);
+
+/**
+ * @brief Sine and cosine of x in RADIANS, any finite x, without libm.
+ *
+ * Method: |x| <= pi/4 is used directly. Otherwise x * 2/pi is reduced
+ * EXACTLY modulo 4 (Payne-Hanek in integers: the 24-bit significand times
+ * a 96-bit window of 2/pi selected by the exponent, from a 224-bit const
+ * table; no division, three 32x32->64 multiplications), which gives the
+ * quadrant and r in [-pi/4, pi/4] with a 64-bit fraction, times pi/2 as
+ * a 64-bit fixed-point product rounded to float once, so the result
+ * does not degrade with |x| (e.g. 1e30 rad is reduced exactly, as the
+ * float 1e30 is an exact number). Then minimax polynomials:
+ * sin r = r + r z S(z) (relative error 2^-28), cos r = 1 - z/2 + z^2 C(z)
+ * (2^-33), z = r^2, and the quadrant's swap and signs (bit operations).
+ * sin is odd bit for bit (sin(-x) == -sin(x), sin(-0) = -0); cos is even.
+ *
+ * @param x angle in radians; NaN or +-Inf gives NaN in both outputs
+ * @param s output sin x (not NULL); may not alias c
+ * @param c output cos x (not NULL)
+ * Error: <= 2 ulp of the exact sin / cos for every finite x (test_mathf,
+ * 5 seeds: max 1.53 ulp (sin) / 1.46 ulp (cos) over random bit patterns
+ * of the whole range and at the floats nearest multiples of pi/2, 1.47 /
+ * 1.46 ulp dense in |x| <= 4 pi; absolute error <= 7.7e-8).
+ */
+void dh_sincosf_(float x, float *s, float *c);
+
+#endif /* DHMATH_SRC_DH_MATHF_H */
