@@ -3,38 +3,45 @@
  * whole-degree table (contract in include/dhmath/dh_trig.h).
  *
  * Method:
- *  1. |deg| is split exactly into whole degrees i and a fraction f in
- *     [0, 1): below 2^23 (the fast path, one branch) by one float->int and
- *     one int->float conversion (a - trunc(a) is exact in binary32); at or
- *     above 2^23 every float is an integer M * 2^e and
- *     i = (M mod 360) * (2^e mod 360) mod 360 in integer arithmetic, f = 0.
- *     The reduction is therefore exact for every finite float, so the error
+ *  1. a = |deg|. Below 2^23 (the fast path, one branch) a is rounded to the
+ *     nearest whole degree i by the addition of 2^23: a + 2^23 lies in
+ *     [2^23, 2^24], where the float spacing is 1, so the sum is
+ *     2^23 + round(a) and its bit pattern minus that of 2^23 is i
+ *     (0..2^23; at the top the exponent steps up and the difference of the
+ *     bit patterns is still i = 2^23). t = sum - 2^23 is exact (Sterbenz)
+ *     and so is f = a - t, in [-0.5, 0.5] (a - t is a multiple of ulp(a)
+ *     below 1 in magnitude, or the Sterbenz case for a < 1). At or above
+ *     2^23 every float is an integer M * 2^e; it is replaced by the float
+ *     of i = (M mod 360) * (2^e mod 360) mod 360 (integer arithmetic, out
+ *     of line: rare), which then takes the fast path with f = 0. The
+ *     reduction is therefore exact for every finite float, so the error
  *     does not depend on the size of the angle.
- *  2. i = 90 q + m, m in 0..89, quadrant k = q mod 4, with q = floor(i/90)
- *     an exact multiply-shift (no division).
- *  3. S = sin(90k + m), C = cos(90k + m) are table entries with the
- *     quadrant's sign: the index (m or 90 - m) is selected by a mask, not a
- *     branch (gcc compiles a plain select into a branch on x86, and random
- *     quadrants mispredict it half of the time), the sign comes from a
- *     5-entry table. Then
- *     sin = S + (S (cos f - 1) + C sin f), cos = C + (C (cos f - 1) - S sin f)
- *     with Taylor polynomials in f for sin f and cos f - 1 (f < 1 degree =
- *     0.01745 rad: the first omitted terms are t^5/120 < 1.4e-11 and
- *     t^6/720 < 4e-14). The correction is at most 0.0175, so its rounding
- *     errors are ~1e-9 and the correctly rounded table value dominates; at
- *     f = 0 the correction is exactly zero and the table value is returned.
- *  4. Signed zeros: a table zero with a negative quadrant sign is -0
- *     (sin 180, cos 90), but then f = +0 (a - trunc(a) of an integer, or
- *     the +0 of the large path), so cos f - 1 = -0, sin f = +0 and the
- *     correction S * (-0) + C * (+0) (resp. C * (-0) - S * (+0)) is +0 when
- *     S (resp. C) is -0; -0 + +0 = +0 in round-to-nearest, so every exact
- *     zero comes out +0 without a "+ 0.0f". Then odd symmetry: the sign bit
- *     of the sine of a negative input is flipped, so sin(-x) == -sin(x) bit
- *     for bit, zeros included. (Verified bit-identical to the earlier
- *     version that added 0.0f, on every 7th finite float of both signs.)
- * Requires IEEE binary32 with round-to-nearest (the default) and no
- * value-changing optimisations: -ffast-math would drop signed zeros (step
- * 4); the error proof and the bit-identity check assume separate multiply
+ *  2. i = 180 h + r, r in 0..179, h = floor(i/180) an exact multiply-shift
+ *     (no division). sin(i) = (-1)^h sin(r), cos(i) = (-1)^h cos(r), and
+ *     with d = 90 - r (in -89..90): sin(r) = T[90 - |d|],
+ *     cos(r) = sign(d) T[|d|]. The table values are read as bit patterns
+ *     and the signs applied with XOR (no branch, no multiply): S = +-sin i,
+ *     C = +-cos i exactly.
+ *  3. sin = S + (S (cos f - 1) + C sin f), cos = C + (C (cos f - 1) - S sin f)
+ *     with sin f = A1 f + A3 f^3 and cos f - 1 = B2 f^2 (f in degrees,
+ *     t = f pi/180, |t| <= 0.00873 rad: the omitted terms are
+ *     t^5/120 < 4.2e-13 and t^4/24 < 2.5e-10). The correction is at most
+ *     0.0088 in magnitude, so its rounding errors are below 1e-9 and the
+ *     correctly rounded table value dominates; at f = 0 the correction is
+ *     exactly zero and the table value is returned.
+ *  4. Signed zeros: a table zero with a negative sign is -0 (sin 180,
+ *     cos 90 + 180 h), but then f = +0 (x - x is +0 in round-to-nearest,
+ *     and the large path passes whole degrees), so cos f - 1 = B2 * +0 = -0
+ *     and sin f = +0; the correction S * (-0) + C * (+0) (resp.
+ *     C * (-0) - S * (+0)) is +0 when S (resp. C) is -0, and -0 + +0 = +0:
+ *     every exact zero comes out +0. Then odd symmetry: the sign bit of the
+ *     sine of a negative input is flipped, so sin(-x) == -sin(x) bit for
+ *     bit, zeros included.
+ * Requires IEEE binary32 with round-to-nearest (the default), evaluation in
+ * float (FLT_EVAL_METHOD 0, or a compiler that rounds assignments as C99
+ * requires: the rounding of a + 2^23 is the reduction), and no
+ * value-changing optimisations: -ffast-math would fold (a + 2^23) - 2^23
+ * into a and drop signed zeros; the error proof assumes separate multiply
  * and add (no FMA contraction, the ISO C default of gcc with -std=c99).
  * All arithmetic is single precision (float literals), no libm.
  */
@@ -44,26 +51,21 @@
 #include "dh_trig_tables.h"
 
 /* Taylor coefficients in f (degrees): t = f * pi/180. */
-#define DH_TRIG_A1 0.017453292519943295f   /* pi/180 */
-#define DH_TRIG_A3 (-8.86096155701298e-07f) /* -(pi/180)^3 / 6 */
+#define DH_TRIG_A1 0.017453292519943295f    /* pi/180 */
+#define DH_TRIG_A3 (-8.86096155701298e-07f)  /* -(pi/180)^3 / 6 */
 #define DH_TRIG_B2 (-1.5230870989335428e-04f) /* -(pi/180)^2 / 2 */
-#define DH_TRIG_B4 3.866323851562993e-09f   /* (pi/180)^4 / 24 */
 
-/* ceil(2^32 / 90): (i * DH_TRIG_DIV90_64) >> 32 == i / 90 for every
- * i < 2^24. Proof: the constant exceeds 2^32/90 by d < 0.17, so the
- * estimate exceeds i/90 by i d / 2^32 < 6.6e-4, less than the distance
- * 1/90 from i/90 (fraction at most 89/90) to the next integer. Checked
- * exhaustively as well. */
-#define DH_TRIG_DIV90_64 47721859u
+/* 2^23 and its bit pattern: a + 2^23 rounds a to a whole number for
+ * 0 <= a < 2^23 */
+#define DH_TRIG_RND    8388608.0f
+#define DH_TRIG_RND_BITS 0x4B000000u
 
-/* 2^e mod 360 for e = 0..14; for e >= 3, 2^(e+12) == 2^e (mod 360) because
- * 2^e == 0 (mod 8) and 2^12 = 4096 == 1 (mod 45). */
-/* sign of sin(90 j + m) for j = 0..4 (index k + 1 for the cosine) */
-static const float dh_trig_qsign[5] = { 1.0f, 1.0f, -1.0f, -1.0f, 1.0f };
-
-static const uint16_t dh_trig_pow2_mod360[15] = {
-    1u, 2u, 4u, 8u, 16u, 32u, 64u, 128u, 256u, 152u, 304u, 248u, 136u, 272u, 184u
-};
+/* ceil(2^32 / 180): (i * DH_TRIG_DIV180_64) >> 32 == i / 180 for every
+ * i < 2^24. Proof: the constant exceeds 2^32/180 by d < 0.58, so the
+ * estimate exceeds i/180 by i d / 2^32 < 2.3e-3, less than the distance
+ * 1/180 from i/180 (fraction at most 179/180) to the next integer.
+ * Checked exhaustively as well. */
+#define DH_TRIG_DIV180_64 23860930u
 
 static float dh_trig_nan_f32(void)
 {
@@ -73,57 +75,79 @@ static float dh_trig_nan_f32(void)
     return r;
 }
 
+/* The whole degrees mod 360 of a finite float a >= 2^23 (magnitude bit
+ * pattern mag), as a float (exact: < 360). a = M * 2^e with the 24-bit
+ * significand M and e = 0..104; 2^e mod 360 comes from a table, using
+ * 2^(e+12) == 2^e (mod 360) for e >= 3 (2^e == 0 mod 8 and
+ * 4096 == 1 mod 45). Out of line so that the fast path stays small. */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline, cold))
+#endif
+static float dh_trig_big_deg(uint32_t mag)
+{
+    static const uint16_t pow2_mod360[15] = {
+        1u, 2u, 4u, 8u, 16u, 32u, 64u, 128u, 256u, 152u, 304u, 248u, 136u, 272u, 184u
+    };
+    uint32_t e = (mag >> 23) - 150u;           /* 0..104 for finite a */
+    uint32_t mant = (mag & 0x007FFFFFu) | 0x00800000u;
+    uint32_t i;
+    while (e >= 15u) {
+        e -= 12u;                              /* at most 8 passes */
+    }
+    i = dh_trig_mod360(dh_trig_mod360(mant) * pow2_mod360[e]);
+    return (float)i;
+}
+
 dh_status dh_sincos_f32(float deg, float *s, float *c)
 {
-    uint32_t bits, mag, i, q, k, m, sb;
-    float a, f, f2, sf, cm, s0, c0, ss;
+    uint32_t bits, mag, i, h, r, du, neg, ad, hs, sb, cb;
+    float a, sum, f, f2, sf, cm, s0, c0, ss;
 
     DH_ASSERT(s != NULL);
     DH_ASSERT(c != NULL);
     memcpy(&bits, &deg, sizeof bits);
     mag = bits & 0x7FFFFFFFu;
     memcpy(&a, &mag, sizeof a);                /* a = |deg|, exact */
-
-    if (mag < 0x4B000000u) {                   /* a < 2^23: the fast path */
-        int32_t n = (int32_t)a;                /* truncation == floor, fits */
-        f = a - (float)n;                      /* exact, in [0, 1) */
-        i = (uint32_t)n;
-    } else if (mag < 0x7F800000u) {            /* a = M * 2^e, an integer */
-        uint32_t e = (mag >> 23) - 150u;       /* 0..104 for finite a */
-        uint32_t mant = (mag & 0x007FFFFFu) | 0x00800000u;
-        while (e >= 15u) {
-            e -= 12u;                          /* at most 8 passes */
+    if (mag >= 0x4B000000u) {                  /* a >= 2^23, Inf or NaN: rare */
+        if (mag >= 0x7F800000u) {
+            *s = dh_trig_nan_f32();
+            *c = *s;
+            return DH_ERR_NAN;
         }
-        i = dh_trig_mod360(dh_trig_mod360(mant) * dh_trig_pow2_mod360[e]);
-        f = 0.0f;
-    } else {                                   /* NaN or +-Inf */
-        *s = dh_trig_nan_f32();
-        *c = *s;
-        return DH_ERR_NAN;
+        a = dh_trig_big_deg(mag);              /* same angle mod 360, < 360 */
     }
 
-    /* q = floor(i / 90) exactly for i < 2^24 (DH_TRIG_DIV90_64); the
-     * quadrant is k = q mod 4 (90 * 4 = 360) and m = i - 90 q is in 0..89,
-     * so the table indices m and 90 - m are in 0..90. */
-    q = (uint32_t)(((uint64_t)i * DH_TRIG_DIV90_64) >> 32);
-    m = i - 90u * q;
-    k = q & 3u;
-    {
-        /* sin(90k + m) = +-T[odd ? 90 - m : m], cos(90k + m) = sin(90(k+1) + m):
-         * index select by mask (branch free), sign from a table */
-        uint32_t is = m ^ ((m ^ (90u - m)) & (0u - (k & 1u)));
-        s0 = dh_trig_sin_f32[is] * dh_trig_qsign[k];
-        c0 = dh_trig_sin_f32[90u - is] * dh_trig_qsign[k + 1u];
-    }
+    /* whole degrees i = round(a), fraction f = a - i in [-0.5, 0.5] (step 1) */
+    sum = a + DH_TRIG_RND;
+    memcpy(&i, &sum, sizeof i);
+    i -= DH_TRIG_RND_BITS;                     /* 0..2^23 */
+    f = a - (sum - DH_TRIG_RND);               /* both subtractions exact */
+
+    /* i = 180 h + r; sin i = (-1)^h T[90 - |d|], cos i = (-1)^h sign(d) T[|d|]
+     * with d = 90 - r. Unsigned throughout: du is d modulo 2^32, its top
+     * bit is the sign of d, |d| = (du ^ neg) - neg in 0..90. */
+    h = (uint32_t)(dh_trig_mul64(i, DH_TRIG_DIV180_64) >> 32);
+    r = i - 180u * h;                          /* 0..179 */
+    du = 90u - r;
+    neg = 0u - (du >> 31);
+    ad = (du ^ neg) - neg;                     /* |d|, 0..90 */
+    hs = h << 31;                              /* sign bit of (-1)^h */
+    memcpy(&sb, &dh_trig_sin_f32[90u - ad], sizeof sb);
+    memcpy(&cb, &dh_trig_sin_f32[ad], sizeof cb);
+    sb ^= hs;
+    cb ^= (du ^ hs) & 0x80000000u;
+    memcpy(&s0, &sb, sizeof s0);
+    memcpy(&c0, &cb, sizeof c0);
 
     f2 = f * f;
     sf = f * (DH_TRIG_A1 + f2 * DH_TRIG_A3);   /* sin f */
-    cm = f2 * (DH_TRIG_B2 + f2 * DH_TRIG_B4);  /* cos f - 1 */
+    cm = f2 * DH_TRIG_B2;                      /* cos f - 1 */
     ss = s0 + (s0 * cm + c0 * sf);
     *c = c0 + (c0 * cm - s0 * sf);
     memcpy(&sb, &ss, sizeof sb);
     sb ^= bits & 0x80000000u;
-    memcpy(s, &sb, sizeof sb);
+    memcpy(&ss, &sb, sizeof ss);               /* to a local: no memcpy call */
+    *s = ss;
     return DH_OK;
 }
 

@@ -65,11 +65,11 @@ void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
     cv = (uint32_t)dh_trig_sin_q30[90u - m];    /* cos m, 0..2^30 */
 
     /* f in radians, units 2^-37: T <= 65535 * KT / 2^16 < 2^31.2 */
-    t  = (uint32_t)(((uint64_t)fr * DH_TRIG_KT + 0x8000u) >> 16);
-    h  = (uint32_t)(((uint64_t)t * t + ((uint64_t)1 << 37)) >> 38);      /* t^2/2  */
-    h3 = (uint32_t)(((uint64_t)h * DH_TRIG_INV3 + 0x80000000u) >> 32);   /* t^2/6  */
-    t3 = (uint32_t)(((uint64_t)t * h3 + ((uint64_t)1 << 36)) >> 37);     /* t^3/6  */
-    t4 = (uint32_t)(((uint64_t)h * h3 + ((uint64_t)1 << 37)) >> 38);     /* t^4/24 */
+    t  = (uint32_t)((dh_trig_mul64(fr, DH_TRIG_KT) + 0x8000u) >> 16);
+    h  = (uint32_t)((dh_trig_mul64(t, t) + ((uint64_t)1 << 37)) >> 38);      /* t^2/2  */
+    h3 = (uint32_t)((dh_trig_mul64(h, DH_TRIG_INV3) + 0x80000000u) >> 32);   /* t^2/6  */
+    t3 = (uint32_t)((dh_trig_mul64(t, h3) + ((uint64_t)1 << 36)) >> 37);     /* t^3/6  */
+    t4 = (uint32_t)((dh_trig_mul64(h, h3) + ((uint64_t)1 << 37)) >> 38);     /* t^4/24 */
     sf = t - t3;                                /* sin f,     0 .. 2^31.2 */
     cm = h - t4;                                /* 1 - cos f, 0 .. 2^24.4 */
 
@@ -77,11 +77,11 @@ void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
      * products (each < 2^61.2, units 2^-67) is biased by 2^62 so that it is
      * rounded by an unsigned shift (no signed right shift anywhere); the
      * bias 2^25 is taken off again in modular uint32 arithmetic. */
-    d = (uint32_t)(((uint64_t)cv * sf - (uint64_t)sv * cm
+    d = (uint32_t)((dh_trig_mul64(cv, sf) - dh_trig_mul64(sv, cm)
                     + ((uint64_t)1 << 62) + ((uint64_t)1 << 36)) >> 37);
     sv = sv + d - ((uint32_t)1 << 25);          /* true value in [0, 2^30] */
     /* cos(m+f) = C - (C (1 - cos f) + S sin f) */
-    pc = (uint64_t)cv * cm + (uint64_t)(uint32_t)dh_trig_sin_q30[m] * sf;
+    pc = dh_trig_mul64(cv, cm) + dh_trig_mul64((uint32_t)dh_trig_sin_q30[m], sf);
     d = (uint32_t)((pc + ((uint64_t)1 << 36)) >> 37);
     cv = cv - d;                                /* true value in [0, 2^30] */
     /* Clamp to [0, 2^30] (the true values lie there, so clamping only

@@ -10,6 +10,8 @@
 
 #include <stdint.h>
 
+#include "dh_port.h"
+
 /** Entries per table: sin(0..90 degrees). */
 #define DH_TRIG_TAB_LEN 91
 
@@ -45,6 +47,31 @@ static inline uint32_t dh_trig_mod360(uint32_t v)
         v -= 360u;
     }
     return v;
+}
+
+/*
+ * a * b as uint64 (exact). On cores where a 64-bit product is a library
+ * call (ARMv6-M: __aeabi_lmul, a 64x64 multiply) it is formed from four
+ * 16x16->32 products: with a = ah 2^16 + al, b = bh 2^16 + bl,
+ *   a b = ah bh 2^32 + (ah bl + al bh) 2^16 + al bl.
+ * No partial sum can wrap: mid = al bh + (al bl >> 16) and
+ * mid2 = ah bl + (mid & 0xFFFF) are at most (2^16 - 1)^2 + 2^16 - 1 < 2^32,
+ * and the high word is the exact floor(a b / 2^32) < 2^32. Selected by
+ * DH_PORT_USE_SPLIT16 (port/dh_port.h), which a host build may set to run
+ * the tests through this code. */
+DH_PORT_INLINE uint64_t dh_trig_mul64(uint32_t a, uint32_t b)
+{
+#if DH_PORT_USE_SPLIT16
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t ll = al * bl;
+    uint32_t mid = al * bh + (ll >> 16);
+    uint32_t mid2 = ah * bl + (mid & 0xFFFFu);
+    uint32_t hi = ah * bh + (mid >> 16) + (mid2 >> 16);
+    uint32_t lo = (mid2 << 16) | (ll & 0xFFFFu);
+    return DH_PORT_W64(hi, lo);
+#else
+    return (uint64_t)a * b;
+#endif
 }
 
 #endif /* DHMATH_DH_TRIG_TABLES_H */
