@@ -490,14 +490,42 @@ static int dh_is_affine(const dh_mat4_f32 *T)
  * certified path (X scratch, undefined on error, must not alias T). Used
  * by dh_mat4_apply_plane_f32.
  */
+/*
+ * 1 when the inverse X of T lost precision to underflow: the inverse of a
+ * matrix with entries near FLT_MAX has entries below FLT_MIN, where float
+ * keeps fewer than 24 significant bits, and multiplied by T's huge entries
+ * their absolute error (up to 2^-150) is no longer negligible (found by
+ * fuzz_inverse: a projective matrix with entries ~1.7e38 gave an inverse
+ * with |X T - I| = 1.5). A subnormal entry only matters when T has an
+ * entry of 2^100 or more (2^-150 * 2^100 = 2^-50); such results are
+ * reported as DH_ERR_OVERFLOW (not representable in normal floats).
+ * Checked for projective (non-affine) T only: for affine T the huge
+ * entries can only be in p, which the inverse never multiplies by R^-1's
+ * tiny entries in a way that matters (R^-1 is computed on R alone).
+ */
+static int dh_inv_underflowed(const dh_mat4_f32 *X, const dh_mat4_f32 *T)
+{
+    int c, r, sub = 0, big = 0;
+    for (c = 0; c < 4; c++) {
+        for (r = 0; r < 4; r++) {
+            const float a = fabsf(X->m[c][r]);
+            if (a != 0.0f && a < FLT_MIN) sub = 1;
+            if (fabsf(T->m[c][r]) >= 0x1p100f) big = 1;
+        }
+    }
+    return sub && big;
+}
+
 static dh_status dh_inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
+    dh_status st;
     if (dh_is_affine(T)) {
         if (dh_inv_affine(X, T, 1.0f) || dh_inv_affine_scaled(X, T)) return DH_OK;
-    } else if (dh_inv_proj_fast(X, T)) {
-        return DH_OK;
+        return dh_inv_certified(X, T);
     }
-    return dh_inv_certified(X, T);
+    st = dh_inv_proj_fast(X, T) ? DH_OK : dh_inv_certified(X, T);
+    if (st == DH_OK && dh_inv_underflowed(X, T)) st = DH_ERR_OVERFLOW;
+    return st;
 }
 
 /*
@@ -516,6 +544,7 @@ static DH_NOINLINE dh_status dh_inv_general(dh_mat4_f32 *out, const dh_mat4_f32 
         st = dh_inv_certified(&X, T);
     } else {
         st = dh_inv_proj_fast(&X, T) ? DH_OK : dh_inv_certified(&X, T);
+        if (st == DH_OK && dh_inv_underflowed(&X, T)) st = DH_ERR_OVERFLOW;
     }
     if (st == DH_OK) *out = X;
     return st;

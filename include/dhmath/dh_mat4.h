@@ -312,7 +312,9 @@ void dh_mat4_inv_rigid_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T);
  *         max|R_ij| < FLT_MIN);
  *         DH_ERR_OVERFLOW if an element of the inverse exceeds FLT_MAX
  *         (only possible for max|T_ij| below ~2^-100, or an affine T
- *         whose -R^-1 p overflows).
+ *         whose -R^-1 p overflows), or, for a non-affine T, if T has an
+ *         entry >= 2^100 and a non-zero element of the
+ *         inverse is subnormal (the inverse would have lost precision).
  *         out untouched on error. out may alias T.
  */
 dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T);
