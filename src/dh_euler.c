@@ -14,6 +14,7 @@
 
 #include "dhmath/dh_rot.h"
 #include "dhmath/dh_trig.h"
+#include "dh_mathf.h"
 
 #define DH_EULER_RAD2DEG 57.295779513082320876798f
 
@@ -117,7 +118,9 @@ dh_status dh_euler_to_mat3_f32(dh_mat3_f32 *R, dh_euler_seq seq, const float ang
 }
 
 /*
- * atan2(y, x) in DEGREES, in (-180, 180]. atan2f is only ever asked for an
+ * atan2(y, x) in DEGREES, in (-180, 180]. The float atan2 (dh_atan2f_, the
+ * library's libm-free one, smaller than newlib's atan2f in stack and flash)
+ * is only ever asked for an
  * angle of at most 45 degrees and the result is formed as phi, 90 - phi,
  * -90 + phi, 180 - phi or -180 + phi, so the result near +-90 and +-180 is
  * not limited by the float resolution of the radian value (2.4e-7 rad at
@@ -129,15 +132,15 @@ static float dh_euler_atan2_deg(float y, float x)
     if (ax == 0.0f && ay == 0.0f) {
         d = 0.0f;                                               /* undefined: 0 */
     } else if (ay <= ax && x > 0.0f) {
-        d = atan2f(y, x) * DH_EULER_RAD2DEG;                    /* [-45, 45] */
+        d = dh_atan2f_(y, x) * DH_EULER_RAD2DEG;                    /* [-45, 45] */
     } else if (ay > ax && y > 0.0f) {
-        d = 90.0f - atan2f(x, y) * DH_EULER_RAD2DEG;            /* (45, 135) */
+        d = 90.0f - dh_atan2f_(x, y) * DH_EULER_RAD2DEG;            /* (45, 135) */
     } else if (ay > ax) {
-        d = -90.0f + atan2f(x, -y) * DH_EULER_RAD2DEG;          /* (-135, -45) */
+        d = -90.0f + dh_atan2f_(x, -y) * DH_EULER_RAD2DEG;          /* (-135, -45) */
     } else if (!(y < 0.0f)) {
-        d = 180.0f - atan2f(y, -x) * DH_EULER_RAD2DEG;          /* [135, 180] */
+        d = 180.0f - dh_atan2f_(y, -x) * DH_EULER_RAD2DEG;          /* [135, 180] */
     } else {
-        d = -180.0f + atan2f(-y, -x) * DH_EULER_RAD2DEG;        /* (-180, -135] */
+        d = -180.0f + dh_atan2f_(-y, -x) * DH_EULER_RAD2DEG;        /* (-180, -135] */
     }
     if (d > 180.0f || d <= -180.0f) d = 180.0f;
     return d + 0.0f; /* no -0 */

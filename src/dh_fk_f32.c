@@ -15,6 +15,12 @@
  *   n <- ct n + st o1,  o <- ct o1 - st n,  a <- a1
  * That is 10 multiplications per row, 30 per joint, against 36 for a
  * general affine product plus the link-matrix construction.
+ *
+ * Stack: the chain is accumulated in the caller's output (frames[i], or
+ * T itself when only the end frame is wanted, the tool then applied in
+ * place row by row), not in a local 4x4, so the deepest path
+ * (fk_f32 > dh_sincos_f32 > libgcc) stays within the 256-byte budget of
+ * issue 5 on Cortex-M0+ (figures in docs/footprint.md).
  */
 #include "dhmath/dh_robot.h"
 #include "dhmath/dh_trig.h"
@@ -24,32 +30,35 @@ static int is_finite(float x)
     return (x - x) == 0.0f;
 }
 
-/* One joint applied in place to the 3x4 part of T. */
-static void step_std(dh_mat4_f32 *T, float st, float ct, float sa, float ca, float a, float d)
+/* One joint: dst = src * A on the 3x4 part (dst->m[.][3] untouched). dst
+ * may be src: each row is read completely before it is written. */
+static void step_std(dh_mat4_f32 *dst, const dh_mat4_f32 *src, float st, float ct, float sa, float ca,
+                     float a, float d)
 {
     int k;
     for (k = 0; k < 3; k++) {
-        float nx = T->m[0][k], ox = T->m[1][k], ax = T->m[2][k];
+        float nx = src->m[0][k], ox = src->m[1][k], ax = src->m[2][k], px = src->m[3][k];
         float n1 = ct * nx + st * ox;
         float u = ct * ox - st * nx;
-        T->m[3][k] = T->m[3][k] + d * ax + a * n1;
-        T->m[0][k] = n1;
-        T->m[1][k] = ca * u + sa * ax;
-        T->m[2][k] = ca * ax - sa * u;
+        dst->m[3][k] = px + d * ax + a * n1;
+        dst->m[0][k] = n1;
+        dst->m[1][k] = ca * u + sa * ax;
+        dst->m[2][k] = ca * ax - sa * u;
     }
 }
 
-static void step_mod(dh_mat4_f32 *T, float st, float ct, float sa, float ca, float a, float d)
+static void step_mod(dh_mat4_f32 *dst, const dh_mat4_f32 *src, float st, float ct, float sa, float ca,
+                     float a, float d)
 {
     int k;
     for (k = 0; k < 3; k++) {
-        float nx = T->m[0][k], ox = T->m[1][k], ax = T->m[2][k];
+        float nx = src->m[0][k], ox = src->m[1][k], ax = src->m[2][k], px = src->m[3][k];
         float o1 = ca * ox + sa * ax;
         float a1 = ca * ax - sa * ox;
-        T->m[3][k] = T->m[3][k] + a * nx + d * a1;
-        T->m[0][k] = ct * nx + st * o1;
-        T->m[1][k] = ct * o1 - st * nx;
-        T->m[2][k] = a1;
+        dst->m[3][k] = px + a * nx + d * a1;
+        dst->m[0][k] = ct * nx + st * o1;
+        dst->m[1][k] = ct * o1 - st * nx;
+        dst->m[2][k] = a1;
     }
 }
 
@@ -101,21 +110,27 @@ static dh_status check_q(const dh_robot *r, const float *q)
     return DH_OK;
 }
 
-/* out = A * B for affine frames (bottom rows taken as 0 0 0 1); out must
- * not alias A or B. */
+static void set_bottom(dh_mat4_f32 *T)
+{
+    T->m[0][3] = 0.0f;
+    T->m[1][3] = 0.0f;
+    T->m[2][3] = 0.0f;
+    T->m[3][3] = 1.0f;
+}
+
+/* out = A * B for affine frames (bottom rows taken as 0 0 0 1), row by row:
+ * out may be A (each row of A is read before it is written), not B. The
+ * same operations in the same order as a separate product. */
 static void mul_affine(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
 {
     int c, k;
-    for (c = 0; c < 4; c++) {
-        float b0 = B->m[c][0], b1 = B->m[c][1], b2 = B->m[c][2];
-        for (k = 0; k < 3; k++)
-            out->m[c][k] = A->m[0][k] * b0 + A->m[1][k] * b1 + A->m[2][k] * b2;
+    for (k = 0; k < 3; k++) {
+        float r0 = A->m[0][k], r1 = A->m[1][k], r2 = A->m[2][k], r3 = A->m[3][k];
+        for (c = 0; c < 3; c++)
+            out->m[c][k] = r0 * B->m[c][0] + r1 * B->m[c][1] + r2 * B->m[c][2];
+        out->m[3][k] = (r0 * B->m[3][0] + r1 * B->m[3][1] + r2 * B->m[3][2]) + r3;
     }
-    for (k = 0; k < 3; k++) out->m[3][k] += A->m[3][k];
-    out->m[0][3] = 0.0f;
-    out->m[1][3] = 0.0f;
-    out->m[2][3] = 0.0f;
-    out->m[3][3] = 1.0f;
+    set_bottom(out);
 }
 
 static int frame_finite(const dh_mat4_f32 *T)
@@ -146,10 +161,12 @@ dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
     return DH_OK;
 }
 
-/* Shared body: frames may be NULL (end frame only), T_end may be NULL. */
+/* Shared body: frames may be NULL (end frame only; T_end then not NULL),
+ * T_end may be NULL. The chain is built in frames[] or in T_end. */
 static dh_status fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *T_end)
 {
-    dh_mat4_f32 acc;
+    const dh_mat4_f32 *src;
+    dh_mat4_f32 *dst;
     uint32_t i = 0u;
     dh_status st;
     DH_ASSERT(r != NULL);
@@ -159,53 +176,49 @@ static dh_status fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frames, 
     st = check_q(r, q);
     if (st != DH_OK) return st;
 
+    dst = frames ? &frames[0] : T_end;
     if (r->flags & DH_ROBOT_BASE_ID_F32) {
         float s, c, d;
         const dh_joint *j = &r->joint[0];
         joint_values(j, q[0], &s, &c, &d);
-        link_direct(&acc, r->conv, s, c, j->sa, j->ca, j->a, d);
-        if (frames) frames[0] = acc;
+        link_direct(dst, r->conv, s, c, j->sa, j->ca, j->a, d);
+        src = dst;
         i = 1u;
     } else {
-        acc = r->base;
+        src = &r->base;
     }
     if (r->conv == DH_CONV_STANDARD) {
         for (; i < r->n; i++) {
             float s, c, d;
             const dh_joint *j = &r->joint[i];
+            if (frames) dst = &frames[i];
             joint_values(j, q[i], &s, &c, &d);
-            step_std(&acc, s, c, j->sa, j->ca, j->a, d);
-            if (frames) {
-                acc.m[0][3] = 0.0f; acc.m[1][3] = 0.0f; acc.m[2][3] = 0.0f; acc.m[3][3] = 1.0f;
-                frames[i] = acc;
-            }
+            step_std(dst, src, s, c, j->sa, j->ca, j->a, d);
+            src = dst;
         }
     } else {
         for (; i < r->n; i++) {
             float s, c, d;
             const dh_joint *j = &r->joint[i];
+            if (frames) dst = &frames[i];
             joint_values(j, q[i], &s, &c, &d);
-            step_mod(&acc, s, c, j->sa, j->ca, j->a, d);
-            if (frames) {
-                acc.m[0][3] = 0.0f; acc.m[1][3] = 0.0f; acc.m[2][3] = 0.0f; acc.m[3][3] = 1.0f;
-                frames[i] = acc;
-            }
+            step_mod(dst, src, s, c, j->sa, j->ca, j->a, d);
+            src = dst;
         }
     }
-    acc.m[0][3] = 0.0f;
-    acc.m[1][3] = 0.0f;
-    acc.m[2][3] = 0.0f;
-    acc.m[3][3] = 1.0f;
-    if (T_end) {
-        if (r->flags & DH_ROBOT_TOOL_ID_F32) {
-            *T_end = acc;
-        } else {
-            mul_affine(T_end, &acc, &r->tool);
-        }
-        /* a non-finite chain frame always reaches T_end (x*inf, x*0*inf) */
-        return frame_finite(T_end) ? DH_OK : DH_ERR_OVERFLOW;
+    if (frames) {
+        for (i = 0u; i < r->n; i++) set_bottom(&frames[i]);
+        if (T_end == NULL) return frame_finite(dst) ? DH_OK : DH_ERR_OVERFLOW;
     }
-    return frame_finite(&acc) ? DH_OK : DH_ERR_OVERFLOW;
+    /* dst: the last chain frame (frames[n-1], or T_end itself) */
+    if (r->flags & DH_ROBOT_TOOL_ID_F32) {
+        if (dst != T_end) *T_end = *dst;
+        set_bottom(T_end);
+    } else {
+        mul_affine(T_end, dst, &r->tool);
+    }
+    /* a non-finite chain frame always reaches T_end (x*inf, x*0*inf) */
+    return frame_finite(T_end) ? DH_OK : DH_ERR_OVERFLOW;
 }
 
 dh_status dh_fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *T)

@@ -13,6 +13,7 @@
 #include "dhmath/dh_rot.h"
 #include "dhmath/dh_mat4.h"
 #include "dhmath/dh_trig.h"
+#include "dh_mathf.h"
 
 /* 1 if x is neither NaN nor infinite (x - x is 0 only for finite x). */
 static int dh_rot_finite(float x)
@@ -127,21 +128,30 @@ dh_status dh_axis_angle_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *axis, flo
     return DH_OK;
 }
 
+/* The 3x3 rotation as a 4x4 with zero translation (for the 4x4 algorithm). */
+static void dh_mat3_to_mat4(dh_mat4_f32 *T, const dh_mat3_f32 *R)
+{
+    int c, r;
+    for (c = 0; c < 3; c++) {
+        for (r = 0; r < 3; r++) T->m[c][r] = R->m[c][r];
+        T->m[c][3] = 0.0f;
+        T->m[3][c] = 0.0f;
+    }
+    T->m[3][3] = 1.0f;
+}
+
 dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, float *deg)
 {
     /* The same algorithm as the 4x4 version (seed 000 sec. 13), so a 3x3
-     * and a 4x4 holding the same rotation give bitwise the same answer. */
+     * and a 4x4 holding the same rotation give bitwise the same answer.
+     * Stack: the checks run before the 4x4 copy is live and the body only
+     * keeps R, axis and deg, so this frame is the 64-byte copy plus three
+     * saved registers (it sits on top of dh_mat4_to_axis_angle_f32). */
     dh_mat4_f32 T;
-    int c, r;
     DH_ASSERT(R != NULL && axis != NULL && deg != NULL);
-    for (c = 0; c < 3; c++) {
-        for (r = 0; r < 3; r++) T.m[c][r] = R->m[c][r];
-        T.m[c][3] = 0.0f;
-        T.m[3][c] = 0.0f;
-    }
-    T.m[3][3] = 1.0f;
     if (!dh_mat3_finite(R)) return DH_ERR_NAN;
     if (dh_mat3_check_rot_f32(R, DH_ROT_TOL) != DH_OK) return DH_ERR_NOT_RIGID;
+    dh_mat3_to_mat4(&T, R);
     return dh_mat4_to_axis_angle_f32(&T, axis, deg);
 }
 
@@ -183,8 +193,7 @@ dh_status dh_rotvec_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *phi)
          * (documented in dh_rot.h) */
         if (!dh_rot_finite(t)) return DH_ERR_NAN;
     }
-    sh = sinf(0.5f * t);
-    ch = cosf(0.5f * t);
+    dh_sincosf_(0.5f * t, &sh, &ch);     /* libm-free, exact reduction */
     dh_rodrigues(R, k, 2.0f * sh * ch, 1.0f - 2.0f * sh * sh, 2.0f * sh * sh);
     return DH_OK;
 }
@@ -204,7 +213,7 @@ dh_status dh_mat3_to_rotvec_f32(const dh_mat3_f32 *R, dh_vec3_f32 *phi)
         phi->z = 0.0f;
         return DH_OK;
     }
-    f = 2.0f * atan2f(n, q.w) / n; /* t / |v| = t / sin(t/2), in [2, pi] */
+    f = 2.0f * dh_atan2f_(n, q.w) / n; /* t / |v| = t / sin(t/2), in [2, pi] */
     phi->x = f * q.x;
     phi->y = f * q.y;
     phi->z = f * q.z;
