@@ -67,6 +67,12 @@
  * Checked exhaustively as well. */
 #define DH_TRIG_DIV180_64 23860930u
 
+/* 2^e mod 360 for e = 0..14; for e >= 3, 2^(e+12) == 2^e (mod 360) because
+ * 2^e == 0 (mod 8) and 2^12 = 4096 == 1 (mod 45). */
+static const uint16_t dh_trig_pow2_mod360[15] = {
+    1u, 2u, 4u, 8u, 16u, 32u, 64u, 128u, 256u, 152u, 304u, 248u, 136u, 272u, 184u
+};
+
 static float dh_trig_nan_f32(void)
 {
     const uint32_t qnan = 0x7FC00000u;
@@ -77,24 +83,21 @@ static float dh_trig_nan_f32(void)
 
 /* The whole degrees mod 360 of a finite float a >= 2^23 (magnitude bit
  * pattern mag), as a float (exact: < 360). a = M * 2^e with the 24-bit
- * significand M and e = 0..104; 2^e mod 360 comes from a table, using
- * 2^(e+12) == 2^e (mod 360) for e >= 3 (2^e == 0 mod 8 and
- * 4096 == 1 mod 45). Out of line so that the fast path stays small. */
+ * significand M and e = 0..104; 2^e mod 360 comes from
+ * dh_trig_pow2_mod360 (exponents above 14 are brought into 3..14 by steps
+ * of 12). Out of line so that the fast path stays small. */
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((noinline, cold))
 #endif
 static float dh_trig_big_deg(uint32_t mag)
 {
-    static const uint16_t pow2_mod360[15] = {
-        1u, 2u, 4u, 8u, 16u, 32u, 64u, 128u, 256u, 152u, 304u, 248u, 136u, 272u, 184u
-    };
     uint32_t e = (mag >> 23) - 150u;           /* 0..104 for finite a */
     uint32_t mant = (mag & 0x007FFFFFu) | 0x00800000u;
     uint32_t i;
     while (e >= 15u) {
         e -= 12u;                              /* at most 8 passes */
     }
-    i = dh_trig_mod360(dh_trig_mod360(mant) * pow2_mod360[e]);
+    i = dh_trig_mod360(dh_trig_mod360(mant) * dh_trig_pow2_mod360[e]);
     return (float)i;
 }
 
