@@ -142,6 +142,35 @@ float dh_atan2f_(float y, float x)
  * window of bit s0 = e + 30 (>= 6) needs no special case; s0 <= 134 and
  * the four words read are within the table.
  */
+/*
+ * v 2^-63 as a float, correctly rounded (to nearest, ties to even), for
+ * 0 < v < 2^63: the integer-to-float conversion done by hand with constant
+ * shifts, because libgcc's __aeabi_ul2f needs 80 bytes of stack on
+ * Cortex-M0+. The leading bit is moved to bit 63 (binary search, e its
+ * original position), the top 24 bits are the significand and the 40
+ * bits below decide the rounding; adding the significand with its
+ * leading bit to the exponent field carries into the exponent when the
+ * rounding overflows to 2^24, which is the right result.
+ */
+static float dh_mf_q63_to_float(uint64_t v)
+{
+    uint32_t e = 63u, mant;
+    uint64_t rest;
+    if (v == 0u) return 0.0f;
+    if ((v >> 32) == 0u) { v <<= 32; e -= 32u; }
+    if ((v >> 48) == 0u) { v <<= 16; e -= 16u; }
+    if ((v >> 56) == 0u) { v <<= 8; e -= 8u; }
+    if ((v >> 60) == 0u) { v <<= 4; e -= 4u; }
+    if ((v >> 62) == 0u) { v <<= 2; e -= 2u; }
+    if ((v >> 63) == 0u) { v <<= 1; e -= 1u; }
+    mant = (uint32_t)(v >> 40);              /* 2^23 .. 2^24 - 1 */
+    rest = v << 24;                          /* the 40 bits below, as a 64-bit fraction */
+    if (rest > 0x8000000000000000u || (rest == 0x8000000000000000u && (mant & 1u) != 0u)) mant++;
+    /* value 1.m 2^(e - 63): biased exponent e + 64, minus 1 for the
+     * leading bit that mant adds */
+    return dh_mf_from_bits(((e + 63u) << 23) + mant);
+}
+
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((noinline))
 #endif
@@ -185,7 +214,7 @@ static float dh_mf_reduce(uint32_t mag, uint32_t *quad)
     hl = fa * pb;
     t = ((fb * pb) >> 32) + (lh & 0xFFFFFFFFu) + (hl & 0xFFFFFFFFu);
     u = fa * pa + (lh >> 32) + (hl >> 32) + (t >> 32);
-    r = (float)u * 0x1.0p-63f;          /* u < 2^63: r in [0, pi/4] */
+    r = dh_mf_q63_to_float(u);          /* u < 2^63: r in [0, pi/4] */
     *quad = q;
     return neg ? -r : r;
 }

@@ -53,7 +53,7 @@
  *         Error: <= 2 ulp of the exact result over the whole float range
  *         (test_mathf, 5 seeds: max 1.60 ulp on random directions, 1.55
  *         ulp over random bit patterns incl. subnormal and near FLT_MAX,
- *         1.50 ulp at the octant edges).
+ *         1.55 ulp at the octant edges).
  * No aliasing concerns (values). Stack: one small frame plus the float
  * division and arithmetic helpers of libgcc on soft-float cores.
  */

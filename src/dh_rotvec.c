@@ -128,30 +128,36 @@ dh_status dh_axis_angle_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *axis, flo
     return DH_OK;
 }
 
-/* The 3x3 rotation as a 4x4 with zero translation (for the 4x4 algorithm). */
-static void dh_mat3_to_mat4(dh_mat4_f32 *T, const dh_mat3_f32 *R)
+/* Checks R as dh_mat3_to_axis_angle_f32 documents and copies it into T as a
+ * 4x4 with zero translation (T untouched on error). Out of line so that
+ * the caller's frame holds only the 4x4 while dh_mat4_to_axis_angle_f32
+ * runs on top of it. */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+static dh_status dh_mat3_to_mat4_checked(dh_mat4_f32 *T, const dh_mat3_f32 *R)
 {
     int c, r;
+    if (!dh_mat3_finite(R)) return DH_ERR_NAN;
+    if (dh_mat3_check_rot_f32(R, DH_ROT_TOL) != DH_OK) return DH_ERR_NOT_RIGID;
     for (c = 0; c < 3; c++) {
         for (r = 0; r < 3; r++) T->m[c][r] = R->m[c][r];
         T->m[c][3] = 0.0f;
         T->m[3][c] = 0.0f;
     }
     T->m[3][3] = 1.0f;
+    return DH_OK;
 }
 
 dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, float *deg)
 {
     /* The same algorithm as the 4x4 version (seed 000 sec. 13), so a 3x3
-     * and a 4x4 holding the same rotation give bitwise the same answer.
-     * Stack: the checks run before the 4x4 copy is live and the body only
-     * keeps R, axis and deg, so this frame is the 64-byte copy plus three
-     * saved registers (it sits on top of dh_mat4_to_axis_angle_f32). */
+     * and a 4x4 holding the same rotation give bitwise the same answer. */
     dh_mat4_f32 T;
+    dh_status st;
     DH_ASSERT(R != NULL && axis != NULL && deg != NULL);
-    if (!dh_mat3_finite(R)) return DH_ERR_NAN;
-    if (dh_mat3_check_rot_f32(R, DH_ROT_TOL) != DH_OK) return DH_ERR_NOT_RIGID;
-    dh_mat3_to_mat4(&T, R);
+    st = dh_mat3_to_mat4_checked(&T, R);
+    if (st != DH_OK) return st;
     return dh_mat4_to_axis_angle_f32(&T, axis, deg);
 }
 
@@ -304,7 +310,7 @@ dh_status dh_angvel_body_f32(dh_vec3_f32 *w, const dh_mat3_f32 *R, const dh_mat3
 
 dh_status dh_mat3_orthonormalize_f32(dh_mat3_f32 *out, const dh_mat3_f32 *R)
 {
-    dh_mat3_f32 X, Y;
+    dh_mat3_f32 X;
     float G[3][3]; /* G = X^T X, symmetric; G[i][j] = c_i . c_j */
     float dev;
     int step, i, j, r;
@@ -340,12 +346,14 @@ dh_status dh_mat3_orthonormalize_f32(dh_mat3_f32 *out, const dh_mat3_f32 *R)
                 G[i][j] = 0.5f * ((i == j ? 1.0f : 0.0f) - G[i][j]);
             }
         }
-        for (j = 0; j < 3; j++) {
-            for (r = 0; r < 3; r++) {
-                Y.m[j][r] = X.m[j][r] + (X.m[0][r] * G[0][j] + X.m[1][r] * G[1][j] + X.m[2][r] * G[2][j]);
+        /* row r of Y needs only row r of X: updated in place, row by row
+         * (no second 3x3 on the stack; the same operations and order) */
+        for (r = 0; r < 3; r++) {
+            const float x0 = X.m[0][r], x1 = X.m[1][r], x2 = X.m[2][r];
+            for (j = 0; j < 3; j++) {
+                X.m[j][r] = X.m[j][r] + (x0 * G[0][j] + x1 * G[1][j] + x2 * G[2][j]);
             }
         }
-        X = Y;
     }
     return DH_ERR_NO_CONVERGENCE;
 }
