@@ -10,7 +10,7 @@ const char *dh_status_str(dh_status st)
     case DH_ERR_NOT_RIGID: return "not a rigid transform";
     case DH_ERR_ZERO_AXIS: return "zero rotation axis";
     case DH_ERR_DOMAIN: return "domain error";
-    case DH_ERR_OVERFLOW: return "fixed-point overflow";
+    case DH_ERR_OVERFLOW: return "overflow (result out of range)";
     case DH_ERR_NO_CONVERGENCE: return "no convergence";
     case DH_ERR_UNREACHABLE: return "target unreachable";
     case DH_ERR_LIMIT: return "joint limit";
