@@ -227,12 +227,20 @@ def to_expr(T):
 SEED_CASES = [
     # (what, args, expected stdout)
     ('eq. 1.27 point', ['point', 'trans(4,-3,7)', '2', '3', '2'], '6 0 9 1\n'),
-    ('eq. 1.28 scaled point', ['point', 'trans(4,-3,7)', '4', '6', '4', '2'], '12 0 18 2\n'),
+    # eq. 1.28 multiplies H by -5 (not expressible in EXPR) and gets
+    # (-60, 0, -90, -10): the same homogeneous point as (12, 0, 18, 2) = -1/5 of it
+    ('eq. 1.28 point with w = 2 (seed: -5 H, same point)', ['point', 'trans(4,-3,7)', '4', '6', '4', '2'],
+     '12 0 18 2\n'),
+    ('eq. 1.35 point', ['point', 'rotz(90)', '7', '3', '2'], '-3 7 2 1\n'),
+    ('eq. 1.36 point', ['point', 'roty(90)', '-3', '7', '2'], '2 7 3 1\n'),
     ('eq. 1.30 plane', ['plane', 'trans(4,-3,7)', '1', '0', '0', '-2'], '1 0 0 -6\n'),
     ('eq. 1.41', ['eval', 'roty(90) rotz(90)'], '0 0 1 0\n1 0 0 0\n0 1 0 0\n0 0 0 1\n'),
     ('eq. 1.42 point', ['point', 'roty(90) rotz(90)', '7', '3', '2'], '2 7 3 1\n'),
     ('eq. 1.43', ['eval', 'rotz(90)*roty(90)'], '0 -1 0 0\n0 0 1 0\n-1 0 0 0\n0 0 0 1\n'),
     ('eq. 1.44 point', ['point', 'rotz(90) roty(90)', '7', '3', '2'], '-3 2 -7 1\n'),
+    # eq. 1.45: (eq. 1.41) (eq. 1.43)^-1 is not the identity, so AB != BA
+    ('eq. 1.45 AB != BA (eq. 1.41 vs 1.43)', ['eval', 'roty(90) rotz(90) inv(rotz(90) roty(90))'],
+     '0 1 0 0\n0 0 -1 0\n-1 0 0 0\n0 0 0 1\n'),
     ('eq. 1.46', ['eval', 'trans(4,-3,7) roty(90) rotz(90)'], '0 0 1 4\n1 0 0 -3\n0 1 0 7\n0 0 0 1\n'),
     ('eq. 1.47 point', ['point', 'trans(4,-3,7) roty(90) rotz(90)', '7', '3', '2'], '6 4 10 1\n'),
     ('eq. 1.48 origin', ['point', 'trans(4,-3,7) roty(90) rotz(90)', '0', '0', '0'], '4 -3 7 1\n'),
@@ -267,12 +275,8 @@ def group_seed():
     rc, out, err = run(['axis', 'roty(90) rotz(90)'])
     check(rc == 0, 'Example 1.1 axis rc %d %r' % (rc, err))
     if rc == 0:
-        v = nums(out)[0]
-        want = [1 / math.sqrt(3)] * 3 + [120.0]
-        # one float ulp of 0.577 is 6e-8; the printed pinned value is 0.577350259
-        check(out == '0.577350259 0.577350259 0.577350259 120\n' or
-              max(abs(a - b) for a, b in zip(v, want)) <= 1.2e-7,
-              'Example 1.1 axis: %r' % out)
+        # 0.577350259 is 1/sqrt(3) rounded to float and printed with %.9g
+        check(out == '0.577350259 0.577350259 0.577350259 120\n', 'Example 1.1 axis: %r' % out)
 
 
 ERROR_CASES = [
