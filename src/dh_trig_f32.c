@@ -26,9 +26,11 @@
  *     with sin f = A1 f + A3 f^3 and cos f - 1 = B2 f^2 (f in degrees,
  *     t = f pi/180, |t| <= 0.00873 rad: the omitted terms are
  *     t^5/120 < 4.2e-13 and t^4/24 < 2.5e-10). The correction is at most
- *     0.0088 in magnitude, so its rounding errors are below 1e-9 and the
- *     correctly rounded table value dominates; at f = 0 the correction is
- *     exactly zero and the table value is returned.
+ *     0.0088 in magnitude, so its coefficient, rounding and truncation
+ *     errors stay below 2.2e-9 (docs/accuracy_trig.md) and the correctly
+ *     rounded table value dominates: bound 2^-25 + 2^-25 + 2.2e-9 < 6.2e-8.
+ *     At f = 0 the correction is exactly zero and the table value is
+ *     returned.
  *  4. Signed zeros: a table zero with a negative sign is -0 (sin 180,
  *     cos 90 + 180 h), but then f = +0 (x - x is +0 in round-to-nearest,
  *     and the large path passes whole degrees), so cos f - 1 = B2 * +0 = -0

@@ -45,7 +45,8 @@ extern "C" {
  * (exhaustive), 5.94e-8 on a 0.001-degree sweep over +-720, 5.93e-8 on
  * random angles up to 1e6, 5.92e-8 on random floats up to FLT_MAX; proven
  * bound 6.2e-8 (half an ulp of the table value + half an ulp of the result
- * + < 1.5e-9 for the correction, |f| <= 0.5 degree). Whole degrees: the
+ * = 5.96e-8, + < 2.2e-9 for the correction, |f| <= 0.5 degree; derivation
+ * in docs/accuracy_trig.md). Whole degrees: the
  * correctly rounded float of sin/cos (equal to the double value rounded to
  * float). Multiples of 90: exactly 0 and +-1; exact zeros of non-negative
  * angles are +0.
@@ -55,8 +56,9 @@ extern "C" {
  * reduction first): x86-64 gcc -O2 67 instructions, branch free apart from
  * the range test (glibc sinf + cosf: ~48 plus the conversion to radians,
  * with data-dependent branches); Cortex-M4F 59 instructions; Cortex-M0
- * (soft float) ~1680 instructions, 48-byte frame plus the soft-float
- * helpers (measured under QEMU -icount, docs/accuracy_trig.md).
+ * (soft float) ~1680 instructions (QEMU -icount, docs/accuracy_trig.md).
+ * Stack on Cortex-M0+: 80 bytes including the soft-float helpers (-O2 and
+ * -Os); 96 through dh_sin_f32/dh_cos_f32.
  *
  * @return DH_OK; DH_ERR_NAN if @p deg is NaN or +-Inf, and then both
  *         outputs are set to a quiet NaN (never a table read).
@@ -113,7 +115,8 @@ float dh_cos_f32(float deg);
  * from four 16x16->32 MULS, no library call). Straight-line code, same
  * cost for every input: Cortex-M4 93 instructions, Cortex-M0 415 (534
  * with __aeabi_lmul before), x86-64 gcc -O2 106. Stack: 96 bytes on
- * Cortex-M0+ -O2 (88 at -Os), no callees; 32 on Cortex-M4. Cannot fail.
+ * Cortex-M0+ -O2 (88 at -Os), no callees (112 / 104 through
+ * dh_sin_q/dh_cos_q); 32 on Cortex-M4. Cannot fail.
  */
 void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30);
 
