@@ -62,10 +62,18 @@ static void step_mod(dh_mat4_f32 *dst, const dh_mat4_f32 *src, float st, float c
     }
 }
 
-/* The link matrix itself (what a step applied to the identity gives). */
-static void link_direct(dh_mat4_f32 *A, dh_convention conv, float st, float ct, float sa, float ca,
-                        float a, float d)
+/* The link matrix itself (what a step applied to the identity gives).
+ * Out of line: its many live products would otherwise sit in the frame of
+ * dh_link_f32 while dh_sincos_f32 runs (the Jacobian calls dh_link_f32 per
+ * joint, so that frame is on its deepest path). */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+static void link_direct(dh_mat4_f32 *A, dh_convention conv, const dh_joint *j, const float v[3])
 {
+    /* v = (sin theta, cos theta, d) from joint_values; four arguments, so
+     * all in registers (no outgoing stack arguments in the callers) */
+    const float st = v[0], ct = v[1], d = v[2], sa = j->sa, ca = j->ca, a = j->a;
     if (conv == DH_CONV_STANDARD) {
         A->m[0][0] = ct;       A->m[0][1] = st;       A->m[0][2] = 0.0f;
         A->m[1][0] = -st * ca; A->m[1][1] = ct * ca;  A->m[1][2] = sa;
@@ -83,15 +91,16 @@ static void link_direct(dh_mat4_f32 *A, dh_convention conv, float st, float ct, 
     A->m[3][3] = 1.0f;
 }
 
-/* theta and d of joint j at value q (q and the sum already known finite). */
-static void joint_values(const dh_joint *j, float q, float *st, float *ct, float *d)
+/* v = (sin theta, cos theta, d) of joint j at value q (q and the sum
+ * already known finite). */
+static void joint_values(const dh_joint *j, float q, float v[3])
 {
     if (j->type == DH_JOINT_REVOLUTE) {
-        (void)dh_sincos_f32(q + j->theta_deg, st, ct);
-        *d = j->d;
+        (void)dh_sincos_f32(q + j->theta_deg, &v[0], &v[1]);
+        v[2] = j->d;
     } else {
-        (void)dh_sincos_f32(j->theta_deg, st, ct);
-        *d = q + j->d;
+        (void)dh_sincos_f32(j->theta_deg, &v[0], &v[1]);
+        v[2] = q + j->d;
     }
 }
 
@@ -145,7 +154,7 @@ static int frame_finite(const dh_mat4_f32 *T)
 dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
 {
     const dh_joint *j;
-    float st, ct, d;
+    float v[3];
     DH_ASSERT(r != NULL);
     DH_ASSERT(A != NULL);
     if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS || (r->flags & DH_ROBOT_HAS_F32) == 0u)
@@ -156,8 +165,8 @@ dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
         if (!is_finite(q)) return DH_ERR_NAN;
         if (!is_finite(q + off)) return DH_ERR_OVERFLOW;
     }
-    joint_values(j, q, &st, &ct, &d);
-    link_direct(A, r->conv, st, ct, j->sa, j->ca, j->a, d);
+    joint_values(j, q, v);
+    link_direct(A, r->conv, j, v);
     return DH_OK;
 }
 
@@ -178,10 +187,10 @@ static dh_status fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frames, 
 
     dst = frames ? &frames[0] : T_end;
     if (r->flags & DH_ROBOT_BASE_ID_F32) {
-        float s, c, d;
+        float v[3];
         const dh_joint *j = &r->joint[0];
-        joint_values(j, q[0], &s, &c, &d);
-        link_direct(dst, r->conv, s, c, j->sa, j->ca, j->a, d);
+        joint_values(j, q[0], v);
+        link_direct(dst, r->conv, j, v);
         src = dst;
         i = 1u;
     } else {
@@ -189,20 +198,20 @@ static dh_status fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frames, 
     }
     if (r->conv == DH_CONV_STANDARD) {
         for (; i < r->n; i++) {
-            float s, c, d;
+            float v[3];
             const dh_joint *j = &r->joint[i];
             if (frames) dst = &frames[i];
-            joint_values(j, q[i], &s, &c, &d);
-            step_std(dst, src, s, c, j->sa, j->ca, j->a, d);
+            joint_values(j, q[i], v);
+            step_std(dst, src, v[0], v[1], j->sa, j->ca, j->a, v[2]);
             src = dst;
         }
     } else {
         for (; i < r->n; i++) {
-            float s, c, d;
+            float v[3];
             const dh_joint *j = &r->joint[i];
             if (frames) dst = &frames[i];
-            joint_values(j, q[i], &s, &c, &d);
-            step_mod(dst, src, s, c, j->sa, j->ca, j->a, d);
+            joint_values(j, q[i], v);
+            step_mod(dst, src, v[0], v[1], j->sa, j->ca, j->a, v[2]);
             src = dst;
         }
     }
