@@ -338,7 +338,7 @@ dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, flo
  * Computed as R = I + sin(t) [k]x + 2 sin^2(t/2) [k]x^2 with t = |phi|,
  * k = phi / t and sin/cos of t/2 (radians) from the library's libm-free
  * dh_sincosf_ (exact argument reduction for any float, <= 2 ulp; newlib's
- * sinf needed over 500 bytes of stack), so there is no cancellation or
+ * sinf needs 552 bytes of stack on Cortex-M0+), so there is no cancellation or
  * series switch for small t and no overflow for large components (|phi|
  * is formed after scaling by the largest component).
  * @param R output rotation.
