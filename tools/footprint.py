@@ -3,7 +3,12 @@
 Cortex-M4F at -Os and -O2 (driven by tools/footprint.sh, which builds the
 libraries).
 
-  footprint.py <out.md> <label>=<builddir>=<cflags> ...
+  footprint.py <out.md> [--src=DIR] [--desc=TEXT] [--cmd=TEXT] <label>=<builddir>=<cflags> ...
+
+  --src:  source tree the libraries were built from (its include/ is used
+          to list the public functions; default: this script's tree);
+  --desc: what was measured (commit, working tree), for the report;
+  --cmd:  the command that regenerates the report, for the report.
 
 For every configuration (a library-only build with -fstack-usage
 -fcallgraph-info=su):
@@ -16,6 +21,16 @@ For every configuration (a library-only build with -fstack-usage
   * stack:  worst case including callees (tools/dh_stack.py);
   * modules: text + rodata of every object of libdhmath.a;
   * tables: every read-only data object of the library.
+
+Firmware profiles (GitHub issue 5: "the whole float + fixed core fits in
+<= 8 KiB of flash on Cortex-M4F at -Os, tables included"): for each profile
+a C file with a table of pointers to its entry points is generated from the
+public headers (gcc -aux-info lists every function they declare, so the
+profiles follow the headers), compiled with the configuration's flags and
+linked like the per-function firmwares (--gc-sections, newlib-nano libc,
+libm, libgcc) with a map file; the map attributes every byte of flash
+(text + rodata + initialised data) to dhmath, libgcc or libm+libc. The
+generated table and its accessor are not counted.
 """
 import os
 import re
@@ -100,6 +115,413 @@ def linked_size(lib, func, cflags, tmp):
     return total
 
 
+# ---- firmware profiles ------------------------------------------------------
+
+INCLUDE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "include")
+FLASH_OUT_RE = re.compile(r"^\.(text|rodata|data|ARM\.exidx|ARM\.extab|init_array|fini_array|init|fini)\b")
+AUX_RE = re.compile(r"^/\* (\S+):(\d+):(\w+) \*/ (.*)$")
+ISSUE5_LIMIT = 8192
+ISSUE5_CONFIG = "M4F -Os"
+# headers of the issue's "core": trig, transforms, inverses, DH FK (no IK)
+CORE_HEADERS = ("dh_trig.h", "dh_mat4.h", "dh_fixed.h", "dh_robot.h")
+
+
+def header_functions(cflags, tmp):
+    """header basename -> functions it declares (in header order), from
+    gcc -aux-info on a file that includes the umbrella header."""
+    src = os.path.join(tmp, "aux.c")
+    aux = os.path.join(tmp, "aux.txt")
+    with open(src, "w") as f:
+        f.write('#include "dhmath/dhmath.h"\n')
+    subprocess.run([CC] + cflags + ["-std=c99", "-I", INCLUDE_DIR, "-fsyntax-only",
+                                    "-aux-info", aux, src], check=True)
+    res = {}
+    seen = set()
+    with open(aux) as f:
+        for line in f:
+            m = AUX_RE.match(line.strip())
+            if not m or "/include/dhmath/" not in m.group(1).replace(os.sep, "/"):
+                continue
+            # C = declaration (prototype); definitions would be inline functions
+            decl = m.group(4)
+            if not m.group(3).endswith("C") or not decl.startswith("extern"):
+                continue
+            n = re.search(r"\b(dh_\w+)\s*\(", decl)
+            if n and n.group(1) not in seen:
+                seen.add(n.group(1))
+                res.setdefault(os.path.basename(m.group(1)), []).append(n.group(1))
+    return res
+
+
+def profile_defs(decl):
+    """[(key, title, [functions])] of the firmware profiles."""
+    allf = [f for h in sorted(decl) for f in decl[h]]
+    core = [f for h in CORE_HEADERS for f in decl.get(h, [])]
+    robot = decl.get("dh_robot.h", [])
+    setup_f = [f for f in robot if f == "dh_robot_init" or (f.startswith("dh_robot_") and f.endswith("_f32"))]
+    setup_q = [f for f in robot if f == "dh_robot_init" or (f.startswith("dh_robot_") and f.endswith("_q"))]
+    return [
+        ("a", "(a) core of issue 5: every function of %s" % ", ".join(CORE_HEADERS), core),
+        ("b", "(b) float FK firmware", setup_f + ["dh_fk_f32", "dh_mat4_inv_rigid_f32",
+                                                  "dh_mat4_mul_affine_f32", "dh_mat4_apply_point_f32"]),
+        ("c", "(c) fixed FK firmware", setup_q + ["dh_fk_q", "dh_frame_inv_q", "dh_frame_mul_q",
+                                                  "dh_frame_apply_point_q"]),
+        ("d", "(d) trig only: every function of dh_trig.h", list(decl.get("dh_trig.h", []))),
+        ("e", "(e) everything: every function of every public header", allf),
+    ]
+
+
+# what (a) costs without some of its parts: measured by linking (a) minus a
+# set of public functions (key, title, predicate on the function name)
+CORE_VARIANTS = [
+    ("a-float", "(a) float only: without every `_q` function",
+     lambda f: f.endswith("_q")),
+    ("a-fixed", "(a) fixed only: without every `_f32` function",
+     lambda f: f.endswith("_f32")),
+    ("a-noinv", "(a) without general inverse: without `dh_mat4_inv_f32`, "
+     "`dh_mat4_inv_auto_f32`, `dh_mat4_apply_plane_f32` (the functions that reach the "
+     "general 4x4 inverse)",
+     lambda f: f in ("dh_mat4_inv_f32", "dh_mat4_inv_auto_f32", "dh_mat4_apply_plane_f32")),
+    ("a-noaxis", "(a) without angle-axis: without `dh_mat4_to_axis_angle_f32`",
+     lambda f: f == "dh_mat4_to_axis_angle_f32"),
+    ("a-nofkframes", "(a) without FK frames: without `dh_fk_frames_f32`, `dh_fk_frames_q`",
+     lambda f: f in ("dh_fk_frames_f32", "dh_fk_frames_q")),
+]
+
+
+def map_sections(path):
+    """(output section, input section, bytes, origin) of every allocated
+    input section and fill of a GNU ld map file."""
+    res = []
+    out = None
+    pending = None
+    started = False
+    with open(path) as f:
+        for line in f:
+            line = line.rstrip("\n")
+            if not started:
+                started = line.startswith("Linker script and memory map")
+                continue
+            if line and not line[0].isspace():
+                out = line.split()[0]
+                pending = None
+                continue
+            m = re.match(r"^ (\S+)(?:\s+0x([0-9a-fA-F]+)\s+0x([0-9a-fA-F]+)(?:\s+(.*))?)?$", line)
+            if m and not m.group(1).startswith("*("):
+                if m.group(2):
+                    res.append((out, m.group(1), int(m.group(3), 16), (m.group(4) or "").strip()))
+                    pending = None
+                else:
+                    pending = m.group(1)
+                continue
+            if pending:
+                m = re.match(r"^\s+0x([0-9a-fA-F]+)\s+0x([0-9a-fA-F]+)\s+(.*)$", line)
+                if m:
+                    res.append((out, pending, int(m.group(2), 16), m.group(3).strip()))
+            pending = None
+    return res
+
+
+def origin_kind(origin, name):
+    """('dhmath', member) / ('libgcc', member) / ('libm+libc', member) /
+    ('other', ...) for an input section of the map."""
+    if name == "*fill*":
+        return "other", "padding"
+    m = re.search(r"([^/\\]+)\.a\(([^)]*)\)$", origin)
+    if not m:
+        return "other", os.path.basename(origin)
+    lib, member = m.group(1), m.group(2)
+    if lib == "libdhmath":
+        return "dhmath", member
+    if lib == "libgcc":
+        return "libgcc", member
+    if lib in ("libm", "libc", "libc_nano", "libg", "libg_nano"):
+        return "libm+libc", "%s(%s)" % (lib, member)
+    return "other", "%s(%s)" % (lib, member)
+
+
+def section_func(name):
+    """.text.dh_fk_q -> dh_fk_q; .rodata.tab -> tab (rodata)"""
+    m = re.match(r"^\.(text|rodata|data)(?:\.unlikely|\.hot|\.startup)?\.(.+)$", name)
+    if not m:
+        return name
+    return m.group(2) if m.group(1) == "text" else "%s (%s)" % (m.group(2), m.group(1))
+
+
+def link_profile(lib, funcs, cflags, tmp, key):
+    """Links a firmware that references `funcs`; returns the flash
+    breakdown from its map file."""
+    src = os.path.join(tmp, "prof_%s.c" % key)
+    obj = src[:-2] + ".o"
+    elf = src[:-2] + ".elf"
+    mapf = src[:-2] + ".map"
+    body = ["#include \"dhmath/dhmath.h\"",
+            "/* generated by tools/footprint.py: entry points of a firmware profile */",
+            "typedef void (*dh_fp_fn)(void);",
+            "static const dh_fp_fn dh_fp_table[] = {"]
+    body += ["    (dh_fp_fn)%s," % f for f in funcs] or ["    (dh_fp_fn)0,"]
+    body += ["};",
+             "const void *dh_fp_entry(void);",
+             "const void *dh_fp_entry(void) { return dh_fp_table; }", ""]
+    with open(src, "w") as f:
+        f.write("\n".join(body))
+    subprocess.run([CC] + cflags + ["-std=c99", "-I", INCLUDE_DIR, "-ffunction-sections",
+                                    "-fdata-sections", "-c", src, "-o", obj], check=True)
+    subprocess.run([CC] + cflags + ["-nostartfiles", "-nostdlib", "-Wl,--gc-sections",
+                                    "-Wl,-e,dh_fp_entry", "-Wl,-Map," + mapf, obj, lib,
+                                    "-lm", "-lc_nano", "-lgcc", "-o", elf],
+                   check=True, capture_output=True, text=True)
+    kinds = {"dhmath": 0, "libgcc": 0, "libm+libc": 0, "other": 0}
+    rodata = 0
+    members = {}
+    funcs_sz = {}
+    extern = {}
+    mapped = 0
+    for out, name, size, origin in map_sections(mapf):
+        if not FLASH_OUT_RE.match(out) or size == 0:
+            continue
+        mapped += size
+        kind, member = origin_kind(origin, name)
+        kinds[kind] += size
+        if kind == "dhmath":
+            members[member] = members.get(member, 0) + size
+            fkey = (member, section_func(name))
+            funcs_sz[fkey] = funcs_sz.get(fkey, 0) + size
+            if out.startswith(".rodata"):
+                rodata += size
+        elif kind in ("libgcc", "libm+libc"):
+            extern[(kind, member)] = extern.get((kind, member), 0) + size
+    # the map must account for every byte the ELF puts in flash
+    total = 0
+    for line in run(["arm-none-eabi-size", "-A", "-d", elf]).splitlines():
+        p = line.split()
+        if len(p) >= 3 and p[1].isdigit() and FLASH_OUT_RE.match(p[0]):
+            total += int(p[1])
+    if total != mapped:
+        raise SystemExit("footprint: map of profile %s accounts for %d of %d flash bytes"
+                         % (key, mapped, total))
+    return dict(kinds=kinds, lib=kinds["dhmath"] + kinds["libgcc"] + kinds["libm+libc"],
+                rodata=rodata, members=members, sections=funcs_sz, extern=extern)
+
+
+def profiles_for(lib, flags, tmp, tag):
+    """Links every profile and core variant of one configuration."""
+    decl = header_functions(flags, tmp)
+    defined = dh_stack.public_functions(lib)
+    res = {}
+    missing = set()
+    defs = profile_defs(decl)
+    core = next(p[2] for p in defs if p[0] == "a")
+    for key, title, funcs in defs + [(k, t, [f for f in core if not pred(f)])
+                                     for k, t, pred in CORE_VARIANTS]:
+        have = [f for f in funcs if f in defined]
+        missing.update(f for f in funcs if f not in defined)
+        res[key] = dict(title=title, funcs=have, **link_profile(lib, have, flags, tmp, tag + key))
+    return res, decl, sorted(missing)
+
+
+def extern_name(x):
+    """('libm+libc', 'libm(lib_a-sf_atan.o)') -> 'libm sf_atan'"""
+    m = re.match(r"^(\w+)\((?:lib_a-)?(.*?)(?:\.o)?\)$", x[1])
+    if m:
+        return "%s %s" % (m.group(1), m.group(2))
+    return "libgcc " + re.sub(r"\.o$", "", x[1])
+
+
+def kib(n):
+    return "%.2f KiB" % (n / 1024.0)
+
+
+def profile_sections(data, labels):
+    """Markdown of the issue-5 summary (first) and the profile sections (second)."""
+    P = {l: data[l]["profiles"] for l in labels}
+    ref = ISSUE5_CONFIG if ISSUE5_CONFIG in P else labels[0]
+    a = P[ref]["a"]
+    decl = data[ref]["decl"]
+    S = []
+    S.append("## Issue 5: flash of the float + fixed core")
+    S.append("")
+    S.append("Target (GitHub issue 5): the whole float + fixed core (trig, transforms, "
+             "inverses, DH FK, no IK) fits in **<= 8 KiB (%d bytes) of flash on "
+             "Cortex-M4F at -Os, tables included**." % ISSUE5_LIMIT)
+    S.append("")
+    met = a["lib"] <= ISSUE5_LIMIT
+    S.append("Measured (%s, profile (a) below: every public function of %s, %d functions, "
+             "angle-axis extraction `dh_mat4_to_axis_angle_f32` included since `dh_mat4.h` "
+             "declares it): **%d bytes (%s)** = %d dhmath (of which %d read-only tables and constants) + "
+             "%d libgcc + %d libm/libc. **Target %s**%s." % (
+                 ref, ", ".join("`%s`" % h for h in CORE_HEADERS), len(a["funcs"]), a["lib"],
+                 kib(a["lib"]), a["kinds"]["dhmath"], a["rodata"], a["kinds"]["libgcc"],
+                 a["kinds"]["libm+libc"], "met" if met else "NOT met",
+                 "" if met else " (%.1f times the target, %d bytes over)" % (
+                     a["lib"] / float(ISSUE5_LIMIT), a["lib"] - ISSUE5_LIMIT)))
+    S.append("")
+    S.append("On the same core and options a firmware that uses only part of the core "
+             "links less (profiles below): float FK firmware (b) %d bytes, fixed FK "
+             "firmware (c) %d bytes, trig only (d) %d bytes; the whole library (e, with "
+             "IK and rotations) %d bytes." % (P[ref]["b"]["lib"], P[ref]["c"]["lib"],
+                                              P[ref]["d"]["lib"], P[ref]["e"]["lib"]))
+    S.append("")
+    mods = sorted(a["members"].items(), key=lambda kv: -kv[1])
+    S.append("Largest contributors to (a) on %s (bytes of flash each module adds; "
+             "the full breakdown is in *Per-module breakdown of (a)*):" % ref)
+    S.append("")
+    for m, n in mods[:6]:
+        S.append("* `%s`: %d bytes (%.0f %%)" % (module_name(m), n, 100.0 * n / a["lib"]))
+    ext = a["kinds"]["libgcc"] + a["kinds"]["libm+libc"]
+    if ext:
+        S.append("* libgcc + libm/libc: %d bytes (%s)" % (ext, ", ".join(
+            "%s %d" % (extern_name(x), n) for x, n in sorted(a["extern"].items(), key=lambda kv: -kv[1]))))
+    S.append("")
+    S.append("What the measured variants of (a) show (each linked like (a) without the "
+             "named functions; the difference is what those functions and everything "
+             "only they use cost):")
+    S.append("")
+    for k, t, _ in CORE_VARIANTS:
+        v = P[ref][k]
+        gone = sorted(x for x in a["extern"] if x not in v["extern"])
+        S.append("* %s: %d bytes (%s), %d less than (a)%s." % (
+            t, v["lib"], kib(v["lib"]), a["lib"] - v["lib"],
+            "" if not gone else "; of the libgcc/libm/libc objects of (a) it no longer "
+            "links %s (%d bytes)" % (", ".join(extern_name(x) for x in gone),
+                                     sum(a["extern"][x] for x in gone))))
+    S.append("")
+    S.append("Facts about the largest modules (from their source comments; the sizes "
+             "of their functions on %s are listed under *Largest functions of (a)*):" % ref)
+    S.append("")
+    notes = {
+        "dh_fk_q.c": "two implementations of the same fixed-point link arithmetic, "
+                     "bit-identical when nothing saturates: the fast path "
+                     "(`fast_std`/`fast_mod`, for robots whose base rows have norm "
+                     "<= 1.5) and the checked path (`step_std`/`step_mod`, any base and "
+                     "lengths); each exists for the standard and the modified DH "
+                     "convention, and the fast path has three twist variants "
+                     "(no swap / swap / general) expanded inline. A firmware needs only "
+                     "one convention, but both are linked because the convention is a "
+                     "run-time field of `dh_robot`. `link_direct` builds the first link "
+                     "directly when the base is the identity (both conventions).",
+        "dh_frame_q.c": "every fixed-point frame operation has a fast path (64-bit sums "
+                        "modulo 2^64 with one deferred range test: `dh_mul_fast`, "
+                        "`dh_inv_p_fast`, `dh_apply_fast`) and an exact path used only "
+                        "when that test fails (`*_exact`, `dh_dot_exact`); the axis-angle "
+                        "constructor `dh_frame_rot_axis_q` brings its own integer "
+                        "square-root and refinement helpers.",
+        "dh_mat4_inv.c": "three inverse paths: rigid (`dh_mat4_inv_rigid_f32`: rotation "
+                         "transposed, position -R^T p), affine (`dh_inv_affine`, with an "
+                         "exact pre-scaling retry), and projective (`dh_proj_phase1/2`) "
+                         "with a certified Gauss-Jordan fallback (`dh_inv_certified`, "
+                         "`dh_inv_gauss_jordan`, `dh_residual`, `dh_norm_rows`, "
+                         "`dh_cert_scale`). Only `dh_mat4_inv_f32`, "
+                         "`dh_mat4_inv_auto_f32` and `dh_mat4_apply_plane_f32` reach the "
+                         "general paths; FK firmwares use the rigid one.",
+        "dh_mat4.c": "constructors, products and point/plane application of float 4x4 "
+                     "transforms.",
+        "dh_axis.c": "angle-axis extraction `dh_mat4_to_axis_angle_f32`; it calls "
+                     "newlib's `atan2f` and `sqrtf` (`dh_euler.c` uses the library's "
+                     "own `dh_atan2f_` from `dh_mathf.c` instead).",
+        "dh_trig_f32.c": "table-based float sine/cosine in degrees with exact reduction "
+                         "of huge angles (out of line).",
+        "dh_trig_q.c": "table-based fixed-point sine/cosine in degrees.",
+        "dh_trig_tables.c": "the sine/cosine tables shared by the float and fixed paths.",
+        "dh_robot.c": "robot setup (joints, limits, base/tool) with float "
+                      "parameters; each is also converted to its fixed-point copy "
+                      "(`to_fix`).",
+        "dh_robot_q.c": "robot setup with fixed-point parameters.",
+        "dh_frame_conv.c": "conversions between `dh_frame_q` and float 4x4.",
+        "dh_fk_f32.c": "float DH forward kinematics (standard and modified).",
+        "dh_mathf.c": "libm-free float atan2 and radian sin/cos used by the library.",
+    }
+    for m, n in mods[:6]:
+        name = module_name(m) + ".c"
+        if name in notes:
+            S.append("* `%s` (%d bytes): %s" % (name, n, notes[name]))
+    S.append("")
+    summary = S
+
+    L = []
+    L.append("## Firmware profiles")
+    L.append("")
+    L.append("Each profile is a firmware whose only references into the library are "
+             "the listed public functions: `tools/footprint.py` generates a table of "
+             "pointers to them (from the functions the public headers declare, via "
+             "`gcc -aux-info`, so the profiles follow the headers), links it with "
+             "`--gc-sections` against `libdhmath.a`, newlib-nano libc, libm and libgcc, "
+             "and splits the flash (text + rodata + initialised data, from the map "
+             "file) by origin. The generated table, its accessor and the linker's "
+             "alignment padding (together 4 bytes per function plus a few) are not counted. "
+             "A real firmware adds its own code, startup and vector table.")
+    L.append("")
+    for key, title, funcs in profile_defs(decl):
+        got = P[ref][key]["funcs"]
+        if key in ("a", "d", "e"):
+            L.append("* **%s** (%d functions)." % (title, len(got)))
+        else:
+            L.append("* **%s**: %s." % (title, ", ".join("`%s`" % f for f in got)))
+    L.append("")
+    L.append("Not in (a): `dh_status_str` (`dh_common.h`; %d bytes linked alone on %s, "
+             "see the per-function table), `dh_kin.h` (Jacobian, IK) and `dh_rot.h` "
+             "(Euler angles, quaternions, rotation vectors)." % (
+                 data[ref]["linked"].get("dh_status_str", 0), ref))
+    missing = sorted(set(f for l in labels for f in data[l]["profile_missing"]))
+    if missing:
+        L.append("")
+        L.append("Declared in a header but not defined in `libdhmath.a` (left out of the "
+                 "profiles): %s." % ", ".join("`%s`" % f for f in missing))
+    L.append("")
+    L.append("Bytes of flash; *total* = dhmath + libgcc + libm/libc; *rodata* = the "
+             "read-only data of dhmath (tables and constants), part of the dhmath figure.")
+    L.append("")
+    L.append("| profile | configuration | total | dhmath | rodata | libgcc | libm/libc |")
+    L.append("|---|---|---:|---:|---:|---:|---:|")
+    for key, title, _ in profile_defs(decl) + CORE_VARIANTS:
+        for l in labels:
+            v = P[l][key]
+            L.append("| %s | %s | %s%d%s | %d | %d | %d | %d |" % (
+                title.split(":")[0], l,
+                "**" if key == "a" else "", v["lib"], "**" if key == "a" else "",
+                v["kinds"]["dhmath"], v["rodata"], v["kinds"]["libgcc"], v["kinds"]["libm+libc"]))
+    L.append("")
+    L.append("## Per-module breakdown of (a)")
+    L.append("")
+    L.append("Bytes of flash each object contributes to the core firmware (a): only the "
+             "functions and tables it links, unlike *Flash per module* below, which "
+             "counts whole objects.")
+    L.append("")
+    L.append("| module |" + "".join(" %s |" % l for l in labels))
+    L.append("|---|" + "---:|" * len(labels))
+    allm = sorted(set(m for l in labels for m in P[l]["a"]["members"]),
+                  key=lambda m: -P[ref]["a"]["members"].get(m, 0))
+    for m in allm:
+        L.append("| %s |" % module_name(m) + "".join(
+            " %d |" % P[l]["a"]["members"].get(m, 0) for l in labels))
+    for k in ("libgcc", "libm+libc"):
+        L.append("| *%s* |" % k + "".join(" %d |" % P[l]["a"]["kinds"][k] for l in labels))
+    L.append("| **total** |" + "".join(" **%d** |" % P[l]["a"]["lib"] for l in labels))
+    L.append("")
+    L.append("libgcc and libm/libc objects linked into (a):")
+    L.append("")
+    L.append("| library object |" + "".join(" %s |" % l for l in labels))
+    L.append("|---|" + "---:|" * len(labels))
+    allx = sorted(set(x for l in labels for x in P[l]["a"]["extern"]))
+    for x in allx:
+        L.append("| %s: %s |" % x + "".join(" %s |" % P[l]["a"]["extern"].get(x, "-") for l in labels))
+    L.append("")
+    L.append("## Largest functions of (a)")
+    L.append("")
+    L.append("Input sections of dhmath linked into (a) on %s, largest first (code "
+             "includes its literal pool; `static` helpers included; `.constprop`/`.isra` "
+             "are GCC's specialised copies), covering the largest modules." % ref)
+    L.append("")
+    L.append("| module | function or table | bytes |")
+    L.append("|---|---|---:|")
+    top = set(m for m, _ in mods[:4])
+    for (m, fn), n in sorted(P[ref]["a"]["sections"].items(), key=lambda kv: (-kv[1], kv[0])):
+        if m in top and n >= 64:
+            L.append("| %s | `%s` | %d |" % (module_name(m), fn, n))
+    L.append("")
+    return summary, L
+
+
 def module_name(obj):
     return re.sub(r"\.c\.(obj|o)$", "", obj)
 
@@ -108,9 +530,21 @@ def main(argv):
     if len(argv) < 3:
         print(__doc__)
         return 2
+    global INCLUDE_DIR
     out = argv[1]
     configs = []
+    desc = None
+    cmd = "tools/footprint.sh"
     for spec in argv[2:]:
+        if spec.startswith("--src="):
+            INCLUDE_DIR = os.path.join(spec[6:], "include")
+            continue
+        if spec.startswith("--desc="):
+            desc = spec[7:]
+            continue
+        if spec.startswith("--cmd="):
+            cmd = spec[6:]
+            continue
         label, bdir, flags = spec.split("=", 2)
         configs.append((label, bdir, flags.split()))
 
@@ -124,15 +558,20 @@ def main(argv):
             own = own_sizes(lib)
             linked = {f: linked_size(lib, f, flags, tmp) for f in pub}
             stack, errors = dh_stack.analyse(os.path.join(bdir, "CMakeFiles", "dhmath.dir"), lib, flags)
+            profiles, decl, missing = profiles_for(lib, flags, tmp, "%d_" % len(data))
             data[label] = dict(own=own, linked=linked, stack=stack, errors=errors,
-                               modules=module_sizes(lib), tables=tables(lib), flags=flags)
+                               modules=module_sizes(lib), tables=tables(lib), flags=flags,
+                               profiles=profiles, decl=decl, profile_missing=missing)
 
     labels = [c[0] for c in configs]
     L = []
     L.append("# dhmath footprint on Cortex-M")
     L.append("")
-    L.append("Generated by `tools/footprint.sh` (do not edit by hand). Compiler: %s." %
-             run([CC, "--version"]).splitlines()[0])
+    L.append("Generated by `%s` (do not edit by hand). Compiler: %s." %
+             (cmd, run([CC, "--version"]).splitlines()[0]))
+    if desc:
+        L.append("")
+        L.append("Measured source: %s." % desc)
     L.append("")
     for label, bdir, flags in configs:
         L.append("* **%s**: `%s`" % (label, " ".join(flags)))
@@ -140,6 +579,9 @@ def main(argv):
     L.append("Library configuration: the defaults of `include/dhmath/dh_config.h` "
              "(DH_MAX_JOINTS 8, DH_QPOS_FRAC 16, DH_CHECK_ARGS 1, DH_USE_INTRINSICS 1).")
     L.append("")
+    summary, prof = profile_sections(data, labels)
+    L.extend(summary)
+    L.extend(prof)
     L.append("## Flash per public function")
     L.append("")
     L.append("*own*: the function's own code. *linked*: flash of a firmware that "
