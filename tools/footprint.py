@@ -394,52 +394,69 @@ def profile_sections(data, labels):
     S.append("Facts about the largest modules (from their source comments; the sizes "
              "of their functions on %s are listed under *Largest functions of (a)*):" % ref)
     S.append("")
+    # (text, functions it names that must still be linked into (a) from that
+    # module: the note is withheld when the source changed under it)
     notes = {
-        "dh_fk_q.c": "two implementations of the same fixed-point link arithmetic, "
-                     "bit-identical when nothing saturates: the fast path "
-                     "(`fast_std`/`fast_mod`, for robots whose base rows have norm "
-                     "<= 1.5) and the checked path (`step_std`/`step_mod`, any base and "
-                     "lengths); each exists for the standard and the modified DH "
-                     "convention, and the fast path has three twist variants "
-                     "(no swap / swap / general) expanded inline. A firmware needs only "
-                     "one convention, but both are linked because the convention is a "
-                     "run-time field of `dh_robot`. `link_direct` builds the first link "
-                     "directly when the base is the identity (both conventions).",
-        "dh_frame_q.c": "every fixed-point frame operation has a fast path (64-bit sums "
-                        "modulo 2^64 with one deferred range test: `dh_mul_fast`, "
-                        "`dh_inv_p_fast`, `dh_apply_fast`) and an exact path used only "
-                        "when that test fails (`*_exact`, `dh_dot_exact`); the axis-angle "
-                        "constructor `dh_frame_rot_axis_q` brings its own integer "
-                        "square-root and refinement helpers.",
-        "dh_mat4_inv.c": "three inverse paths: rigid (`dh_mat4_inv_rigid_f32`: rotation "
-                         "transposed, position -R^T p), affine (`dh_inv_affine`, with an "
-                         "exact pre-scaling retry), and projective (`dh_proj_phase1/2`) "
-                         "with a certified Gauss-Jordan fallback (`dh_inv_certified`, "
-                         "`dh_inv_gauss_jordan`, `dh_residual`, `dh_norm_rows`, "
-                         "`dh_cert_scale`). Only `dh_mat4_inv_f32`, "
-                         "`dh_mat4_inv_auto_f32` and `dh_mat4_apply_plane_f32` reach the "
-                         "general paths; FK firmwares use the rigid one.",
-        "dh_mat4.c": "constructors, products and point/plane application of float 4x4 "
-                     "transforms.",
-        "dh_axis.c": "angle-axis extraction `dh_mat4_to_axis_angle_f32`; it calls "
-                     "newlib's `atan2f` and `sqrtf` (`dh_euler.c` uses the library's "
-                     "own `dh_atan2f_` from `dh_mathf.c` instead).",
-        "dh_trig_f32.c": "table-based float sine/cosine in degrees with exact reduction "
-                         "of huge angles (out of line).",
-        "dh_trig_q.c": "table-based fixed-point sine/cosine in degrees.",
-        "dh_trig_tables.c": "the sine/cosine tables shared by the float and fixed paths.",
-        "dh_robot.c": "robot setup (joints, limits, base/tool) with float "
-                      "parameters; each is also converted to its fixed-point copy "
-                      "(`to_fix`).",
-        "dh_robot_q.c": "robot setup with fixed-point parameters.",
-        "dh_frame_conv.c": "conversions between `dh_frame_q` and float 4x4.",
-        "dh_fk_f32.c": "float DH forward kinematics (standard and modified).",
-        "dh_mathf.c": "libm-free float atan2 and radian sin/cos used by the library.",
+        "dh_fk_q.c": ("two implementations of the same fixed-point link arithmetic, "
+                      "bit-identical when nothing saturates: the fast path "
+                      "(`fast_std`/`fast_mod`, for robots whose base rows have norm "
+                      "<= 1.5) and the checked path (`step_std`/`step_mod`, any base and "
+                      "lengths); each exists for the standard and the modified DH "
+                      "convention. A firmware needs only one convention, but both are "
+                      "linked because the convention is a run-time field of `dh_robot`. "
+                      "`link_direct` builds the first link directly when the base is the "
+                      "identity (both conventions).",
+                      ["fast_std", "fast_mod", "step_std", "step_mod", "link_direct"]),
+        "dh_frame_q.c": ("every fixed-point frame operation has a fast path (64-bit sums "
+                         "modulo 2^64 with one deferred range test: `dh_mul_fast`, "
+                         "`dh_inv_p_fast`, `dh_apply_fast`) and an exact path used only "
+                         "when that test fails (`dh_mul_exact`, `dh_inv_p_exact`, "
+                         "`dh_apply_exact`, `dh_dot_exact`); the axis-angle constructor "
+                         "`dh_frame_rot_axis_q` brings its own integer square-root and "
+                         "refinement helpers (`dh_inv_sqrt_q30`, `dh_unit_refine`).",
+                         ["dh_mul_fast", "dh_inv_p_fast", "dh_apply_fast", "dh_mul_exact",
+                          "dh_inv_p_exact", "dh_apply_exact", "dh_dot_exact",
+                          "dh_frame_rot_axis_q", "dh_inv_sqrt_q30", "dh_unit_refine"]),
+        "dh_mat4_inv.c": ("three inverse paths: rigid (`dh_mat4_inv_rigid_f32`: rotation "
+                          "transposed, position -R^T p), affine (`dh_inv_affine`, with an "
+                          "exact pre-scaling retry), and projective (`dh_proj_phase1`, "
+                          "`dh_proj_phase2`) with a certified Gauss-Jordan fallback "
+                          "(`dh_inv_certified`, `dh_inv_gauss_jordan`, `dh_residual`, "
+                          "`dh_norm_rows`, `dh_cert_scale`). Only `dh_mat4_inv_f32`, "
+                          "`dh_mat4_inv_auto_f32` and `dh_mat4_apply_plane_f32` reach the "
+                          "general paths; the FK profiles use the rigid one.",
+                          ["dh_mat4_inv_rigid_f32", "dh_inv_affine", "dh_proj_phase1",
+                           "dh_proj_phase2", "dh_inv_certified", "dh_inv_gauss_jordan",
+                           "dh_residual", "dh_norm_rows", "dh_cert_scale"]),
+        "dh_mat4.c": ("constructors, products and point/plane application of float 4x4 "
+                      "transforms.", []),
+        "dh_axis.c": ("angle-axis extraction `dh_mat4_to_axis_angle_f32`; it calls "
+                      "newlib's `atan2f` and `sqrtf`.", ["dh_mat4_to_axis_angle_f32"]),
+        "dh_trig_f32.c": ("table-based float sine/cosine in degrees.", []),
+        "dh_trig_q.c": ("table-based fixed-point sine/cosine in degrees.", []),
+        "dh_robot.c": ("robot setup (joints, limits, base/tool) with float parameters; "
+                       "each is also converted to its fixed-point copy (`to_fix`).",
+                       ["to_fix"]),
+        "dh_robot_q.c": ("robot setup with fixed-point parameters.", []),
+        "dh_frame_conv.c": ("conversions between `dh_frame_q` and float 4x4.", []),
+        "dh_fk_f32.c": ("float DH forward kinematics (standard and modified).", []),
     }
+    linked = {}
+    for (mm, fn) in a["sections"]:
+        linked.setdefault(module_name(mm) + ".c", set()).add(
+            re.sub(r"\.(constprop|isra|part)\..*$", "", fn))
     for m, n in mods[:6]:
         name = module_name(m) + ".c"
-        if name in notes:
-            S.append("* `%s` (%d bytes): %s" % (name, n, notes[name]))
+        if name not in notes:
+            continue
+        text, need = notes[name]
+        stale = [f for f in need if f not in linked.get(name, set())]
+        if stale:
+            S.append("* `%s` (%d bytes): (description withheld: %s no longer linked from "
+                     "this module; see *Largest functions of (a)*)" % (
+                         name, n, ", ".join("`%s`" % f for f in stale)))
+        else:
+            S.append("* `%s` (%d bytes): %s" % (name, n, text))
     S.append("")
     summary = S
 
