@@ -105,10 +105,11 @@ static DH_INLINE float dh_at(const dh_mat4_f32 *M, int i, int j, float s, int af
     return (i == j) ? 1.0f : 0.0f;
 }
 
-/* max row sum of D^-1 M D (row view; = balanced ||T||_1) */
+/* max row sum of D^-1 M D (row view; = balanced ||T||_1); NaN if an
+ * element is NaN or Inf (t: a max alone would drop a NaN row) */
 static DH_NOINLINE float dh_norm_rows(const dh_mat4_f32 *M, float sg, float s, int aff)
 {
-    float n = 0.0f;
+    float n = 0.0f, t = 0.0f;
     int i, j;
     for (i = 0; i < 4; i++) {
         float rs = 0.0f;
@@ -117,9 +118,10 @@ static DH_NOINLINE float dh_norm_rows(const dh_mat4_f32 *M, float sg, float s, i
             if (i < 3) rs += (j < 3) ? v : v * sg;
             else rs += (j < 3) ? v / sg : v;
         }
+        t += rs;
         n = (rs > n) ? rs : n;
     }
-    return n;
+    return n + t * 0.0f;
 }
 
 /* balanced ||X A - I|| in the row view, A = dh_at(M, ., ., s, aff) (row i
@@ -127,7 +129,7 @@ static DH_NOINLINE float dh_norm_rows(const dh_mat4_f32 *M, float sg, float s, i
  * X); s is a power of two, so A is exact */
 static DH_NOINLINE float dh_residual(const dh_mat4_f32 *X, const dh_mat4_f32 *M, float s, float sg, int aff)
 {
-    float res = 0.0f;
+    float res = 0.0f, t = 0.0f; /* t: NaN propagation, as in dh_norm_rows */
     int i, j, k;
     for (i = 0; i < 4; i++) {
         float rs = 0.0f;
@@ -141,9 +143,10 @@ static DH_NOINLINE float dh_residual(const dh_mat4_f32 *X, const dh_mat4_f32 *M,
             if (i < 3) rs += (j < 3) ? q : q * sg;
             else rs += (j < 3) ? q / sg : q;
         }
+        t += rs;
         res = (rs > res) ? rs : res;
     }
-    return res;
+    return res + t * 0.0f;
 }
 
 /*
@@ -154,6 +157,7 @@ static DH_NOINLINE float dh_residual(const dh_mat4_f32 *X, const dh_mat4_f32 *M,
 static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
 {
     unsigned perm = 0u; /* pivot row of step k in bits 2k, 2k+1 */
+    unsigned sh;        /* 2k */
     int i, j, k;
     for (k = 0; k < 4; k++) {
         float *rk;
@@ -163,7 +167,8 @@ static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
             if (fabsf(X->m[i][k]) > fabsf(X->m[p][k])) p = i;
         }
         if (X->m[p][k] == 0.0f) return 0;
-        perm |= (unsigned)p << (2 * k);
+        sh = 2u * (unsigned)k;
+        perm |= (unsigned)p << sh;
         rk = X->m[k];
         if (p != k) {
             float *rp = X->m[p];
@@ -187,8 +192,10 @@ static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
     }
     /* undo the interchanges on the columns, last first */
     for (k = 3; k >= 0; k--) {
-        const int p = (int)((perm >> (2 * k)) & 3u);
-        if (p != k) {
+        unsigned p;
+        sh = 2u * (unsigned)k;
+        p = (perm >> sh) & 3u;
+        if (p != (unsigned)k) {
             for (i = 0; i < 4; i++) {
                 const float tmp = X->m[i][k];
                 X->m[i][k] = X->m[i][p];
@@ -239,11 +246,20 @@ static DH_NOINLINE float dh_cert_scale(const dh_mat4_f32 *T, int aff)
  *   (b) residual ||X M - I|| > 1/2 -> singular. (b) is a proof: a residual
  *       <= 1/2 implies M non-singular with ||M^-1|| <= 2 ||X||; for a
  *       singular M, X M - I has the eigenvalue -1 whatever X is.
+ * In T's terms (M = T^T in this row view) (b) is the RIGHT residual
+ * T X - I, the one Gauss-Jordan on M keeps small. The left residual X T - I
+ * is not controlled: it can be up to cond times larger, i.e. above 1 for a
+ * correct inverse when cond is near DH_MAT4_COND_MAX; either is a proof.
+ * Underflow. Entries of T far below the largest become subnormal or 0 in
+ * A = s T (error <= 2^-150 each): that perturbs the residual by at most
+ * ||X|| * 2^-150 * 4 * 2^60 (balancing weight) < 2^79 * 2^-88 = 2^-9
+ * (||X|| < 2^19 / na by (a), na >= 2^-60 since max|A_ij| >= 1), so the
+ * proof covers T itself. The unscaling of the result is checked below.
  */
 static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
     const int aff = dh_is_affine(T);
-    float z = 0.0f, s, sg = 1.0f, na;
+    float z = 0.0f, s, sg = 1.0f, na, lost, si;
     int i, j;
 
     /* z is NaN iff an element is NaN or Inf (x * 0 is NaN exactly for
@@ -254,6 +270,7 @@ static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 
     if (z != z) return DH_ERR_NAN;
     s = dh_cert_scale(T, aff);
     if (s == 0.0f) return DH_ERR_SINGULAR; /* zero or denormal matrix (or R) */
+    si = 1.0f / s;                         /* exact: s = 2^k, |k| <= 126 */
     if (!aff) sg = dh_balance(T); /* scale-free: a ratio of sums of |T_ij| */
     for (i = 0; i < 4; i++) {
         for (j = 0; j < 4; j++) X->m[i][j] = dh_at(T, i, j, s, aff);
@@ -266,16 +283,32 @@ static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 
      * 4 u na nx < 0.13) */
     if (!(dh_residual(X, T, s, sg, aff) <= 0.5f)) return DH_ERR_SINGULAR;
     /* T^-1 = s A^-1, or for affine T: R^-1 = s (s R)^-1 and the
-     * translation -R^-1 p (exact powers of two unless they overflow);
-     * "+ 0.0f" maps -0 to +0 */
-    z = 0.0f;
+     * translation -R^-1 p; "+ 0.0f" maps -0 to +0.
+     * The certificate (b) is for the scaled X. If the returned s X differs
+     * from it by F (overflow for s > 1; for s < 1 the gradual underflow of
+     * elements below FLT_MIN, |F_ij| <= 2^-150), its residual differs by
+     * (F / s) A: at most lost * na in the balanced norm, with lost the
+     * balanced norm of F / s = v / s - x (exact: 1/s is a power of two).
+     * DH_OK only if that is <= 2^-4: then the residual of what is returned
+     * is < 1/2 + 1/8 (rounding of (b)) + 2^-9 (flush of tiny entries of T,
+     * above) + 2^-4 < 1, the proof holds for it. Otherwise the inverse
+     * does not fit in float (Inf, or lost its meaning to underflow):
+     * DH_ERR_OVERFLOW. */
+    lost = 0.0f;
     for (i = 0; i < 4; i++) {
+        float rs = 0.0f;
         for (j = 0; j < 4; j++) {
-            const float v = X->m[i][j] * s + 0.0f;
+            const float x = X->m[i][j];
+            const float v = x * s + 0.0f;
+            const float d = fabsf(v * si - x);
             X->m[i][j] = v;
-            z += v * 0.0f; /* NaN iff some v overflowed to Inf */
+            if (i < 3) rs += (j < 3) ? d : d * sg;
+            else rs += (j < 3) ? d / sg : d;
         }
+        lost = (rs > lost) ? rs : lost;
     }
+    if (!(lost * na <= 0.0625f)) return DH_ERR_OVERFLOW;
+    z = 0.0f;
     if (aff) {
         for (j = 0; j < 3; j++) {
             const float t = 0.0f - (X->m[0][j] * T->m[3][0] + X->m[1][j] * T->m[3][1] + X->m[2][j] * T->m[3][2]);
@@ -490,42 +523,13 @@ static int dh_is_affine(const dh_mat4_f32 *T)
  * certified path (X scratch, undefined on error, must not alias T). Used
  * by dh_mat4_apply_plane_f32.
  */
-/*
- * 1 when the inverse X of T lost precision to underflow: the inverse of a
- * matrix with entries near FLT_MAX has entries below FLT_MIN, where float
- * keeps fewer than 24 significant bits, and multiplied by T's huge entries
- * their absolute error (up to 2^-150) is no longer negligible (found by
- * fuzz_inverse: a projective matrix with entries ~1.7e38 gave an inverse
- * with |X T - I| = 1.5). A subnormal entry only matters when T has an
- * entry of 2^100 or more (2^-150 * 2^100 = 2^-50); such results are
- * reported as DH_ERR_OVERFLOW (not representable in normal floats).
- * Checked for projective (non-affine) T only: for affine T the huge
- * entries can only be in p, which the inverse never multiplies by R^-1's
- * tiny entries in a way that matters (R^-1 is computed on R alone).
- */
-static int dh_inv_underflowed(const dh_mat4_f32 *X, const dh_mat4_f32 *T)
-{
-    int c, r, sub = 0, big = 0;
-    for (c = 0; c < 4; c++) {
-        for (r = 0; r < 4; r++) {
-            const float a = fabsf(X->m[c][r]);
-            if (a != 0.0f && a < FLT_MIN) sub = 1;
-            if (fabsf(T->m[c][r]) >= 0x1p100f) big = 1;
-        }
-    }
-    return sub && big;
-}
-
 static dh_status dh_inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
-    dh_status st;
     if (dh_is_affine(T)) {
         if (dh_inv_affine(X, T, 1.0f) || dh_inv_affine_scaled(X, T)) return DH_OK;
         return dh_inv_certified(X, T);
     }
-    st = dh_inv_proj_fast(X, T) ? DH_OK : dh_inv_certified(X, T);
-    if (st == DH_OK && dh_inv_underflowed(X, T)) st = DH_ERR_OVERFLOW;
-    return st;
+    return dh_inv_proj_fast(X, T) ? DH_OK : dh_inv_certified(X, T);
 }
 
 /*
@@ -544,7 +548,6 @@ static DH_NOINLINE dh_status dh_inv_general(dh_mat4_f32 *out, const dh_mat4_f32 
         st = dh_inv_certified(&X, T);
     } else {
         st = dh_inv_proj_fast(&X, T) ? DH_OK : dh_inv_certified(&X, T);
-        if (st == DH_OK && dh_inv_underflowed(&X, T)) st = DH_ERR_OVERFLOW;
     }
     if (st == DH_OK) *out = X;
     return st;
