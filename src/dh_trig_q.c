@@ -65,7 +65,13 @@ void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
     cv = (uint32_t)dh_trig_sin_q30[90u - m];    /* cos m, 0..2^30 */
 
     /* f in radians, units 2^-37: T <= 65535 * KT / 2^16 < 2^31.2 */
+#if DH_PORT_USE_SPLIT16
+    /* fr < 2^16: the same value from two 32-bit products (exact: both
+     * partial products and the sum stay below 2^32) */
+    t  = fr * (DH_TRIG_KT >> 16) + ((fr * (DH_TRIG_KT & 0xFFFFu) + 0x8000u) >> 16);
+#else
     t  = (uint32_t)((dh_trig_mul64(fr, DH_TRIG_KT) + 0x8000u) >> 16);
+#endif
     h  = (uint32_t)((dh_trig_mul64(t, t) + ((uint64_t)1 << 37)) >> 38);      /* t^2/2  */
     h3 = (uint32_t)((dh_trig_mul64(h, DH_TRIG_INV3) + 0x80000000u) >> 32);   /* t^2/6  */
     t3 = (uint32_t)((dh_trig_mul64(t, h3) + ((uint64_t)1 << 36)) >> 37);     /* t^3/6  */

@@ -56,7 +56,7 @@ extern "C" {
  * reduction first): x86-64 gcc -O2 67 instructions, branch free apart from
  * the range test (glibc sinf + cosf: ~48 plus the conversion to radians,
  * with data-dependent branches); Cortex-M4F 59 instructions; Cortex-M0
- * (soft float) ~1680 instructions (QEMU -icount, docs/accuracy_trig.md).
+ * (soft float) ~1660 instructions (QEMU -icount, docs/accuracy_trig.md).
  * Stack on Cortex-M0+: 80 bytes including the soft-float helpers (-O2 and
  * -Os); 96 through dh_sin_f32/dh_cos_f32.
  *
@@ -110,13 +110,13 @@ float dh_cos_f32(float deg);
  * [0, 2^30] in magnitude before a sign is applied, so negation cannot
  * overflow. The host suite runs > 4 * 10^7 inputs under UBSan/ASan.
  *
- * Integer only: no float, no libm, no division of any width; nine exact
- * 32x32->64 products (UMULL on M3/M4/M7; on ARMv6-M each is formed inline
- * from four 16x16->32 MULS, no library call). Straight-line code, same
- * cost for every input: Cortex-M4 93 instructions, Cortex-M0 415 (534
- * with __aeabi_lmul before), x86-64 gcc -O2 106. Stack: 96 bytes on
- * Cortex-M0+ -O2 (88 at -Os), no callees (112 / 104 through
- * dh_sin_q/dh_cos_q); 32 on Cortex-M4. Cannot fail.
+ * Integer only: no float, no libm, no division of any width; exact
+ * 32x32->64 products (UMULL on M3/M4/M7; on ARMv6-M four 16x16->32 MULS
+ * in a small helper, no library call). Straight-line code, same cost for
+ * every input: Cortex-M4 93 instructions, Cortex-M0 376 at -O2 / 335 at
+ * -Os (534 with __aeabi_lmul before), x86-64 gcc -O2 106. Stack: 76 bytes
+ * on Cortex-M0+ including the helper (92 through dh_sin_q/dh_cos_q);
+ * 32 on Cortex-M4. Cannot fail.
  */
 void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30);
 
