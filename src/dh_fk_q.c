@@ -27,6 +27,18 @@
  *  - checked path (step_std / step_mod): any base, any lengths; every
  *    entry is range checked and saturates (DH_ERR_OVERFLOW).
  *
+ * The first link of a robot with an identity base is written out directly
+ * (link_direct): its entries are products of two sines/cosines (|.| <=
+ * 2^30) or of one and a length (|.| <= 2^31 - 1 after len()), which round
+ * into int32 without a range check, so nothing there can saturate.
+ *
+ * Structure for testability: decisions that a joint fixes (twist class,
+ * convention, which column receives which value) are data or separate
+ * instantiations, never a test that one inlined instance can take only
+ * one way; the saturated value of a checked entry is chosen from the sign
+ * bit without a branch. Every remaining branch can be taken both ways by
+ * some input (test/test_fk_q.c covers them).
+ *
  * Why the fast path cannot overflow. Each joint multiplies the rows of the
  * rotation by Rz(theta) Rx(alpha) built from sines and cosines with
  * |s|, |c| <= 2^30 and s^2 + c^2 <= 1 + 2^-28 (dh_trig.h: error <= 1.05
@@ -100,6 +112,14 @@ DH_PORT_INLINE int32_t lo30(int64_t t)
     return (int32_t)(((uint32_t)((uint64_t)t & 0xFFFFFFFFu) >> 30) | ((uint32_t)((uint64_t)t >> 32) << 2));
 }
 
+/* INT32_MIN when bit 31 of w is set, else INT32_MAX (the saturated value
+ * of a result with the sign of w; branch free; the uint32 -> int32
+ * conversion wraps, checked in dh_port.h). */
+DH_PORT_INLINE int32_t sat_sign(uint32_t w)
+{
+    return (int32_t)(0x7FFFFFFFu ^ (0u - (w >> 31)));
+}
+
 /*
  * Round x / 2^30 to nearest (half up) into int32, saturating and setting
  * *ovf. t >> 30 fits in int32 iff the high word of t lies in
@@ -113,12 +133,18 @@ DH_PORT_INLINE int32_t rnd30(int64_t x, int *ovf)
     int32_t hi = (int32_t)(t >> 32);
     if ((uint32_t)hi + 0x20000000u >= 0x40000000u) {
         *ovf = 1;
-        return (hi < 0) ? INT32_MIN : INT32_MAX;
+        return sat_sign((uint32_t)hi);
     }
     /* bits 30..61 of t, composed from the two words (the uint32 -> int32
      * conversion wraps, checked in dh_port.h); written this way the
      * compiler keeps a 32-bit value and the next product stays one SMULL */
     return (int32_t)(((uint32_t)t >> 30) | ((uint32_t)hi << 2));
+}
+
+/* round(x / 2^30) when the caller knows that it fits int32 (no check). */
+DH_PORT_INLINE int32_t rnd30_fit(int64_t x)
+{
+    return lo30(x + HALF29);
 }
 
 /* p + round(x / 2^30), saturated to int32 (x: lengths times Q2.30). */
@@ -205,7 +231,8 @@ static void joint_values(const dh_joint *j, int32_t q, dh_q30 *st, dh_q30 *ct, d
             *ovf = 1;
             v = INT32_MAX;
         } else if (v < -(int64_t)INT32_MAX) {
-            *ovf = (v < INT32_MIN) ? 1 : *ovf;
+            /* INT32_MIN itself is the documented one-LSB raise, not an overflow */
+            if (v < INT32_MIN) *ovf = 1;
             v = -(int64_t)INT32_MAX;
         }
         *d = (dh_qpos)v;
@@ -217,28 +244,41 @@ static void joint_values(const dh_joint *j, int32_t q, dh_q30 *st, dh_q30 *ct, d
  * y' = ca y + sa z, z' = ca z - sa y. alpha of 0, +-90 and 180 degrees
  * (exact 0 / +-1 from the table) take the multiplication-free branch,
  * which gives the same values as the general one.
+ *
+ * A twist class is a set of bits: TW_NA / TW_NB negate the first / the
+ * second value of the pair (standard DH: u, z; modified DH: the roles are
+ * exchanged, see fast_prep), TW_SWAP exchanges columns 1 and 2, TW_GEN is
+ * the general twist (multiplications).
  */
-#define TWIST_ONE 0
-#define TWIST_P90 1
-#define TWIST_M90 2
-#define TWIST_180 3
-#define TWIST_GEN 4
+#define TW_NA 1u
+#define TW_NB 2u
+#define TW_SWAP 4u
+#define TW_GEN 8u
+#define TW_ONE 0u                       /* alpha = 0: (y, z) */
+#define TW_P90 (TW_NA | TW_SWAP)        /* +90: (z, -y) */
+#define TW_M90 (TW_NB | TW_SWAP)        /* -90: (-z, y) */
+#define TW_180 (TW_NA | TW_NB)          /* 180: (-y, -z) */
 
-DH_PORT_INLINE int twist_kind(dh_q30 sa, dh_q30 ca)
+/* Exact classes need sa, ca both exact: alpha = 90 +- 1 LSB has sa
+ * rounded to exactly 1 but ca != 0, and alpha = +-1 LSB has ca exactly 1
+ * but sa != 0; those are general twists. */
+DH_PORT_INLINE unsigned twist_kind(dh_q30 sa, dh_q30 ca)
 {
-    if (sa == 0 && ca == DH_Q30_ONE) return TWIST_ONE;
-    if (sa == DH_Q30_ONE && ca == 0) return TWIST_P90;
-    if (sa == -DH_Q30_ONE && ca == 0) return TWIST_M90;
-    if (sa == 0 && ca == -DH_Q30_ONE) return TWIST_180;
-    return TWIST_GEN;
+    unsigned kind = TW_GEN;
+    if (sa == DH_Q30_ONE || sa == -DH_Q30_ONE) {
+        if (ca == 0) kind = (sa > 0) ? TW_P90 : TW_M90;
+    } else if (ca == DH_Q30_ONE || ca == -DH_Q30_ONE) {
+        if (sa == 0) kind = (ca > 0) ? TW_ONE : TW_180;
+    }
+    return kind;
 }
 
 #define TWIST(kind, sa, ca, y, z, y2, z2, ovf, RND) do { \
     switch (kind) { \
-    case TWIST_ONE: (y2) = (y); (z2) = (z); break; \
-    case TWIST_P90: (y2) = (z); (z2) = neg((y), (ovf)); break; \
-    case TWIST_M90: (y2) = neg((z), (ovf)); (z2) = (y); break; \
-    case TWIST_180: (y2) = neg((y), (ovf)); (z2) = neg((z), (ovf)); break; \
+    case TW_ONE: (y2) = (y); (z2) = (z); break; \
+    case TW_P90: (y2) = (z); (z2) = neg((y), (ovf)); break; \
+    case TW_M90: (y2) = neg((z), (ovf)); (z2) = (y); break; \
+    case TW_180: (y2) = neg((y), (ovf)); (z2) = neg((z), (ovf)); break; \
     default: \
         (y2) = RND(MLA(MUL((ca), (y)), (sa), (z)), (ovf)); \
         (z2) = RND(MUL((ca), (z)) - MUL((sa), (y)), (ovf)); \
@@ -251,7 +291,7 @@ static FKQ_NOINLINE void name(dh_frame_q *T, dh_q30 st, dh_q30 ct, const dh_join
 { \
     const dh_q30 sa = j->sa_q, ca = j->ca_q; \
     const dh_qpos a = len(j->a_q); \
-    const int kind = twist_kind(sa, ca); \
+    const unsigned kind = twist_kind(sa, ca); \
     int k; \
     for (k = 0; k < 3; k++) { \
         int32_t nx = T->r[0][k], ox = T->r[1][k], ax = T->r[2][k]; \
@@ -275,7 +315,7 @@ static FKQ_NOINLINE void name(dh_frame_q *T, dh_q30 st, dh_q30 ct, const dh_join
 { \
     const dh_q30 sa = j->sa_q, ca = j->ca_q; \
     const dh_qpos a = len(j->a_q); \
-    const int kind = twist_kind(sa, ca); \
+    const unsigned kind = twist_kind(sa, ca); \
     int k; \
     for (k = 0; k < 3; k++) { \
         int32_t nx = T->r[0][k], ox = T->r[1][k], ax = T->r[2][k], o1, a1; \
@@ -302,6 +342,12 @@ DEF_STEP_MOD(step_mod, rnd30)
  * comment).
  */
 #if DH_PORT_USE_SPLIT16
+/* |x| as uint32 (x != INT32_MIN here: lengths went through len()) */
+DH_PORT_INLINE uint32_t abs_u(int32_t x)
+{
+    return x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
+}
+
 typedef dh_port_s16 fkq_k;
 typedef dh_port_s16 fkq_r;
 #define KQ(v) dh_port_split_k(v)
@@ -318,12 +364,6 @@ typedef int32_t fkq_r;
 #define FAST_LENGTHS(a, d) 1
 #endif
 
-/* |x| as uint32 (x != INT32_MIN here: lengths went through len()) */
-DH_PORT_INLINE uint32_t abs_u(int32_t x)
-{
-    return x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
-}
-
 /* p + round((d z + a x) / 2^30), saturated (sets *ovf). */
 DH_PORT_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_t x, int *ovf)
 {
@@ -333,7 +373,7 @@ DH_PORT_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_
     /* signed overflow iff p and r have the same sign and s the other one */
     if ((~((uint32_t)p ^ r) & ((uint32_t)p ^ s)) & 0x80000000u) {
         *ovf = 1;
-        return p < 0 ? INT32_MIN : INT32_MAX;
+        return sat_sign((uint32_t)p);
     }
     return (int32_t)s;
 #else
@@ -344,7 +384,7 @@ DH_PORT_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_
     hi = (uint32_t)((uint64_t)t >> 32);
     if (hi + 0x20000000u >= 0x40000000u) {
         *ovf = 1;
-        return (hi & 0x80000000u) ? INT32_MIN : INT32_MAX;
+        return sat_sign(hi);
     }
     return lo30(t);
 #endif
@@ -360,26 +400,23 @@ DH_PORT_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_
 #define FKQ_UNROLL3
 #endif
 
-/* all ones when c holds, else 0 */
-#define MASK(c) ((c) ? 0xFFFFFFFFu : 0u)
-/* (v ^ m) - m: v or -v; v != INT32_MIN on the fast path */
+/* (v ^ m) - m: v or -v for a mask m of all zeros or all ones; v !=
+ * INT32_MIN on the fast path */
 #define NEGM(v, m) ((int32_t)(((uint32_t)(v) ^ (m)) - (m)))
 
 /*
  * Exact twists (alpha 0, +90, -90, 180) are a swap of columns 1 and 2
  * and two negations, chosen once per joint; the row loops are generated
- * for three variants (no swap: 0 and 180; swap: +-90; general alpha) so
- * the swap is a constant and only the negation masks are data:
+ * for the swap as a constant (0: twists 0 and 180, 1: +-90) plus one loop
+ * for a general alpha, so only the negation masks are data:
  *  standard, (u, z) -> (y2, z2): 0 (u, z), +90 (z, -u), -90 (-z, u),
- *    180 (-u, -z): m1 negates u, m2 negates z, a swap stores u in
- *    column 2 and z in column 1;
+ *    180 (-u, -z): m1 negates u (TW_NA), m2 negates z (TW_NB), a swap
+ *    stores u in column 2 and z in column 1;
  *  modified, (y, z) -> (o1, a1): 0 (y, z), +90 (z, -y), -90 (-z, y),
  *    180 (-y, -z): a swap reads o1 from column 2 and a1 from column 1,
- *    the sign of o1 is folded into the factors ks, kc1, m2 negates a1.
+ *    the sign of o1 (TW_NB) is folded into the factors ks, kc1, m2
+ *    negates a1 (TW_NA).
  */
-#define VAR_NOSWAP 0
-#define VAR_SWAP 1
-#define VAR_GEN 2
 
 /* Factors of one joint for the fast path, prepared once per joint. */
 typedef struct {
@@ -387,24 +424,24 @@ typedef struct {
     fkq_k kd, ka;               /* d, a */
     fkq_k kca, ksa, knsa;       /* ca, sa, -sa (general twist only) */
     uint32_t m1, m2;            /* negation masks of the exact twists */
-    int var;                    /* VAR_* */
 } fkq_joint;
 
-DH_PORT_INLINE void fast_prep(fkq_joint *J, dh_q30 st, dh_q30 ct, const dh_joint *j, dh_qpos d, int std)
+/* sh1, sh2: the kind bits (0: TW_NA, 1: TW_NB) that negate the first and
+ * the second value of the pair; fold: all ones when the first value's
+ * sign goes into ks and kc1 (modified DH), else 0. Branch free: kind is
+ * data, the other arguments are constants of the caller. */
+DH_PORT_INLINE void fast_prep(fkq_joint *J, dh_q30 st, dh_q30 ct, dh_qpos a, dh_qpos d, unsigned kind,
+                              unsigned sh1, unsigned sh2, uint32_t fold)
 {
-    const dh_q30 sa = j->sa_q, ca = j->ca_q;
-    const int kind = twist_kind(sa, ca);
-    const int neg1 = std ? (kind == TWIST_P90 || kind == TWIST_180) : (kind == TWIST_M90 || kind == TWIST_180);
-    const int neg2 = std ? (kind == TWIST_M90 || kind == TWIST_180) : (kind == TWIST_P90 || kind == TWIST_180);
-    J->var = kind == TWIST_GEN ? VAR_GEN : ((kind == TWIST_P90 || kind == TWIST_M90) ? VAR_SWAP : VAR_NOSWAP);
-    J->m1 = MASK(neg1);
-    J->m2 = MASK(neg2);
+    const uint32_t m1 = 0u - ((kind >> sh1) & 1u);
+    J->m1 = m1;
+    J->m2 = 0u - ((kind >> sh2) & 1u);
     J->kc = KQ(ct);
     J->kns = KQ(-st);
-    J->ks = KQ((!std && neg1) ? -st : st);
-    J->kc1 = KQ((!std && neg1) ? -ct : ct);
+    J->ks = KQ(NEGM(st, m1 & fold));
+    J->kc1 = KQ(NEGM(ct, m1 & fold));
     J->kd = KQ(d);
-    J->ka = KQ(len(j->a_q));
+    J->ka = KQ(a);
 }
 
 /* the factors of a general twist (only that variant reads them) */
@@ -415,10 +452,10 @@ DH_PORT_INLINE void fast_prep_gen(fkq_joint *J, const dh_joint *j)
     J->knsa = KQ(-j->sa_q);
 }
 
-/* Rows of a standard DH joint: O = I * A (O may be I: row k of I is read
- * before row k of O is written). var is a constant. Returns 1 when a
- * position saturated. */
-DH_PORT_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int var)
+/* Rows of a standard DH joint with an exact twist: O = I * A (O may be I:
+ * row k of I is read before row k of O is written). swap (0 or 1) is a
+ * constant. Returns 1 when a position saturated. */
+DH_PORT_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int swap)
 {
     int ovf = 0, k;
     FKQ_UNROLL3
@@ -429,36 +466,60 @@ DH_PORT_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_fra
         const int32_t u = DOT2(J->kc, y, J->kns, x);
         O->p[k] = haslen ? pos_fast(p, J->kd, z, J->ka, n1, &ovf) : p;
         O->r[0][k] = n1;
-        if (var == VAR_GEN) {
-            const fkq_r U = RQ(u), Z = RQ(z);
-            O->r[1][k] = DOT2(J->kca, U, J->ksa, Z);
-            O->r[2][k] = DOT2(J->kca, Z, J->knsa, U);
-        } else {
-            O->r[var == VAR_SWAP ? 2 : 1][k] = NEGM(u, J->m1);
-            O->r[var == VAR_SWAP ? 1 : 2][k] = NEGM(z, J->m2);
-        }
+        O->r[1 + swap][k] = NEGM(u, J->m1);
+        O->r[2 - swap][k] = NEGM(z, J->m2);
     }
     return ovf;
 }
 
-/* Rows of a modified DH joint (same contract as fast_std_rows). */
-DH_PORT_INLINE int fast_mod_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int var)
+/* Rows of a standard DH joint with a general twist (same contract). */
+DH_PORT_INLINE int fast_std_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen)
+{
+    int ovf = 0, k;
+    FKQ_UNROLL3
+    for (k = 0; k < 3; k++) {
+        const fkq_r x = RQ(I->r[0][k]), y = RQ(I->r[1][k]);
+        const int32_t z = I->r[2][k], p = I->p[k];
+        const int32_t n1 = DOT2(J->kc, x, J->ks, y);
+        const int32_t u = DOT2(J->kc, y, J->kns, x);
+        const fkq_r U = RQ(u), Z = RQ(z);
+        O->p[k] = haslen ? pos_fast(p, J->kd, z, J->ka, n1, &ovf) : p;
+        O->r[0][k] = n1;
+        O->r[1][k] = DOT2(J->kca, U, J->ksa, Z);
+        O->r[2][k] = DOT2(J->kca, Z, J->knsa, U);
+    }
+    return ovf;
+}
+
+/* Rows of a modified DH joint with an exact twist (same contract). */
+DH_PORT_INLINE int fast_mod_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int swap)
 {
     int ovf = 0, k;
     FKQ_UNROLL3
     for (k = 0; k < 3; k++) {
         const int32_t xv = I->r[0][k], p = I->p[k];
         const fkq_r x = RQ(xv);
-        fkq_r o;
-        int32_t a1;
-        if (var == VAR_GEN) {
-            const fkq_r Y = RQ(I->r[1][k]), Z = RQ(I->r[2][k]);
-            o = RQ(DOT2(J->kca, Y, J->ksa, Z));
-            a1 = DOT2(J->kca, Z, J->knsa, Y);
-        } else {
-            o = RQ(I->r[var == VAR_SWAP ? 2 : 1][k]);
-            a1 = NEGM(I->r[var == VAR_SWAP ? 1 : 2][k], J->m2);
-        }
+        const fkq_r o = RQ(I->r[1 + swap][k]);
+        const int32_t a1 = NEGM(I->r[2 - swap][k], J->m2);
+        O->p[k] = haslen ? pos_fast(p, J->ka, xv, J->kd, a1, &ovf) : p;
+        O->r[0][k] = DOT2(J->kc, x, J->ks, o);
+        O->r[1][k] = DOT2(J->kc1, o, J->kns, x);
+        O->r[2][k] = a1;
+    }
+    return ovf;
+}
+
+/* Rows of a modified DH joint with a general twist (same contract). */
+DH_PORT_INLINE int fast_mod_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen)
+{
+    int ovf = 0, k;
+    FKQ_UNROLL3
+    for (k = 0; k < 3; k++) {
+        const int32_t xv = I->r[0][k], p = I->p[k];
+        const fkq_r x = RQ(xv);
+        const fkq_r Y = RQ(I->r[1][k]), Z = RQ(I->r[2][k]);
+        const fkq_r o = RQ(DOT2(J->kca, Y, J->ksa, Z));
+        const int32_t a1 = DOT2(J->kca, Z, J->knsa, Y);
         O->p[k] = haslen ? pos_fast(p, J->ka, xv, J->kd, a1, &ovf) : p;
         O->r[0][k] = DOT2(J->kc, x, J->ks, o);
         O->r[1][k] = DOT2(J->kc1, o, J->kns, x);
@@ -472,60 +533,70 @@ static FKQ_NOINLINE int fast_std(const dh_frame_q *I, dh_frame_q *O, dh_q30 st, 
                                  dh_qpos d)
 {
     fkq_joint J;
-    const int haslen = (len(j->a_q) | d) != 0;
-    fast_prep(&J, st, ct, j, d, 1);
-    if (J.var == VAR_NOSWAP) return fast_std_rows(&J, I, O, haslen, VAR_NOSWAP);
-    if (J.var == VAR_SWAP) return fast_std_rows(&J, I, O, haslen, VAR_SWAP);
-    fast_prep_gen(&J, j);
-    return fast_std_rows(&J, I, O, haslen, VAR_GEN);
+    const dh_qpos a = len(j->a_q);
+    const unsigned kind = twist_kind(j->sa_q, j->ca_q);
+    const int haslen = (a | d) != 0;
+    fast_prep(&J, st, ct, a, d, kind, 0u, 1u, 0u);
+    if ((kind & TW_GEN) != 0u) {
+        fast_prep_gen(&J, j);
+        return fast_std_rows_gen(&J, I, O, haslen);
+    }
+    if ((kind & TW_SWAP) != 0u) return fast_std_rows(&J, I, O, haslen, 1);
+    return fast_std_rows(&J, I, O, haslen, 0);
 }
 
 static FKQ_NOINLINE int fast_mod(const dh_frame_q *I, dh_frame_q *O, dh_q30 st, dh_q30 ct, const dh_joint *j,
                                  dh_qpos d)
 {
     fkq_joint J;
-    const int haslen = (len(j->a_q) | d) != 0;
-    fast_prep(&J, st, ct, j, d, 0);
-    if (J.var == VAR_NOSWAP) return fast_mod_rows(&J, I, O, haslen, VAR_NOSWAP);
-    if (J.var == VAR_SWAP) return fast_mod_rows(&J, I, O, haslen, VAR_SWAP);
-    fast_prep_gen(&J, j);
-    return fast_mod_rows(&J, I, O, haslen, VAR_GEN);
+    const dh_qpos a = len(j->a_q);
+    const unsigned kind = twist_kind(j->sa_q, j->ca_q);
+    const int haslen = (a | d) != 0;
+    fast_prep(&J, st, ct, a, d, kind, 1u, 0u, 0xFFFFFFFFu);
+    if ((kind & TW_GEN) != 0u) {
+        fast_prep_gen(&J, j);
+        return fast_mod_rows_gen(&J, I, O, haslen);
+    }
+    if ((kind & TW_SWAP) != 0u) return fast_mod_rows(&J, I, O, haslen, 1);
+    return fast_mod_rows(&J, I, O, haslen, 0);
 }
 
-/* The link matrix of joint j (a step applied to the identity, written out). */
+/* The link matrix of joint j (a step applied to the identity, written
+ * out). Cannot saturate (file comment): every entry is rounded unchecked. */
 static FKQ_NOINLINE void link_direct(dh_frame_q *A, dh_convention conv, dh_q30 st, dh_q30 ct, const dh_joint *j,
-                        dh_qpos d, int *ovf)
+                                     dh_qpos d)
 {
-    dh_q30 sa = j->sa_q, ca = j->ca_q;
+    const dh_q30 sa = j->sa_q, ca = j->ca_q;
+    const dh_qpos a = len(j->a_q);
     if (conv == DH_CONV_STANDARD) {
         /* n = (ct, st, 0), o = ca u + sa z, a = ca z - sa u with u = (-st, ct, 0) */
         A->r[0][0] = ct;
         A->r[0][1] = st;
         A->r[0][2] = 0;
-        A->r[1][0] = rnd30(-MUL(ca, st), ovf);
-        A->r[1][1] = rnd30(MUL(ca, ct), ovf);
+        A->r[1][0] = rnd30_fit(-MUL(ca, st));
+        A->r[1][1] = rnd30_fit(MUL(ca, ct));
         A->r[1][2] = sa;
-        A->r[2][0] = rnd30(MUL(sa, st), ovf);
-        A->r[2][1] = rnd30(-MUL(sa, ct), ovf);
+        A->r[2][0] = rnd30_fit(MUL(sa, st));
+        A->r[2][1] = rnd30_fit(-MUL(sa, ct));
         A->r[2][2] = ca;
-        A->p[0] = pos(0, MUL(j->a_q, ct), ovf);
-        A->p[1] = pos(0, MUL(j->a_q, st), ovf);
+        A->p[0] = rnd30_fit(MUL(a, ct));
+        A->p[1] = rnd30_fit(MUL(a, st));
         A->p[2] = d;
     } else {
         /* n = (ct, st ca, st sa), o = (-st, ct ca, ct sa), a = (0, -sa, ca),
          * p = (a, -sa d, ca d) */
         A->r[0][0] = ct;
-        A->r[0][1] = rnd30(MUL(st, ca), ovf);
-        A->r[0][2] = rnd30(MUL(st, sa), ovf);
+        A->r[0][1] = rnd30_fit(MUL(st, ca));
+        A->r[0][2] = rnd30_fit(MUL(st, sa));
         A->r[1][0] = -st;
-        A->r[1][1] = rnd30(MUL(ct, ca), ovf);
-        A->r[1][2] = rnd30(MUL(ct, sa), ovf);
+        A->r[1][1] = rnd30_fit(MUL(ct, ca));
+        A->r[1][2] = rnd30_fit(MUL(ct, sa));
         A->r[2][0] = 0;
         A->r[2][1] = -sa;
         A->r[2][2] = ca;
-        A->p[0] = j->a_q;
-        A->p[1] = pos(0, -MUL(sa, d), ovf);
-        A->p[2] = pos(0, MUL(ca, d), ovf);
+        A->p[0] = a;
+        A->p[1] = rnd30_fit(-MUL(sa, d));
+        A->p[2] = rnd30_fit(MUL(ca, d));
     }
 }
 
@@ -558,7 +629,7 @@ dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A)
     if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_OVERFLOW;
     joint_values(&r->joint[i], q, &st, &ct, &d, &ovf);
-    link_direct(A, r->conv, st, ct, &r->joint[i], d, &ovf);
+    link_direct(A, r->conv, st, ct, &r->joint[i], d);
     return ovf ? DH_ERR_OVERFLOW : DH_OK;
 }
 
@@ -584,7 +655,7 @@ static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, d
         dh_q30 st, ct;
         dh_qpos d;
         joint_values(&r->joint[0], q[0], &st, &ct, &d, &ovf);
-        link_direct(cur, r->conv, st, ct, &r->joint[0], d, &ovf);
+        link_direct(cur, r->conv, st, ct, &r->joint[0], d);
         i = 1u;
     } else {
         *cur = r->base_q;

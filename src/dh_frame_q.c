@@ -52,26 +52,16 @@ static inline int64_t dh_mul64(int32_t a, int32_t b) { return dh_port_smull(a, b
 
 /* ---- helpers ------------------------------------------------------------ */
 
-/* -x without ever negating INT32_MIN (saturates to INT32_MAX). */
-static int32_t dh_neg_sat(int32_t x)
-{
-    return x == INT32_MIN ? INT32_MAX : -x;
-}
-
 /*
- * Final step of the fast path: acc already holds sum + 2^29. Returns
- * floor(acc / 2^30) saturated to int32; sets *ovf on saturation.
- * The high word must lie in [-2^29, 2^29) for the result to fit: one SSAT.
+ * floor(acc / 2^30) taken from the two 32-bit halves, valid when the high
+ * word is in [-2^29, 2^29) (the result fits int32). Unchecked: the fast
+ * paths below test the high words with dh_hi_chk(); the callers that use
+ * it alone (dh_axis_entry, dh_frame_orthonormalize_chk_q) have results
+ * bounded well inside [-2, 2) by construction (see there).
  */
-static inline int32_t dh_fin30(int64_t acc, uint32_t *ovf)
+static inline int32_t dh_lo30(int64_t acc)
 {
-    int32_t hi = (int32_t)(acc >> 32);
-    uint32_t lo = (uint32_t)((uint64_t)acc & 0xFFFFFFFFu);
-    if (DH_PORT_SSAT(hi, 30) != hi) {
-        *ovf = 1u;
-        return hi < 0 ? INT32_MIN : INT32_MAX;
-    }
-    return (int32_t)(((uint32_t)hi << 2) | (lo >> 30));
+    return (int32_t)(((uint32_t)((uint64_t)acc >> 32) << 2) | ((uint32_t)((uint64_t)acc & 0xFFFFFFFFu) >> 30));
 }
 
 /*
@@ -135,7 +125,7 @@ static void dh_frame_rot_elem(dh_frame_q *F, unsigned a1, unsigned a2, dh_q16 de
      * For ax = y (a1 = z, a2 = x) this gives the seed's Rot(y) (eq. 1.33). */
     F->r[a1][a1] = c;
     F->r[a1][a2] = s;
-    F->r[a2][a1] = dh_neg_sat(s);
+    F->r[a2][a1] = -s;                 /* |s| <= 2^30 (dh_sincos_q): exact */
     F->r[a2][a2] = c;
 }
 
@@ -257,13 +247,12 @@ static DH_NOINLINE int32_t dh_axis_scale(int32_t kx, int32_t ky, int32_t kz, int
  *   k_i k_j vers      P = Ph 2^30 + Pl:  Ph 2^30 - Ph c + round(Pl (2^30 - c) / 2^30)
  *   s k_m             s U_m + round(s E_m / 2^16)
  * Every term is below 2^61 in magnitude: no overflow; the entry is within
- * 1 + 1 LSB in magnitude, so it cannot saturate.
+ * 1 + 1 LSB in magnitude, so it is read without a range check.
  */
 static DH_NOINLINE int32_t dh_axis_entry(const int32_t *U, const int32_t *E, unsigned i, unsigned j,
                                          int32_t s, int32_t c)
 {
-    uint32_t ovf = 0u;
-    int32_t ns = dh_neg_sat(c);
+    int32_t ns = -c;                    /* |c| <= 2^30 (dh_sincos_q): exact */
     int64_t P = dh_mul64(U[i], U[j]) +
                 dh_rshr64(dh_mul64(U[i], E[j]) + dh_mul64(U[j], E[i]), 16u);
     int32_t Ph = (int32_t)(P >> 30), Pl = (int32_t)(P - (int64_t)Ph * DH_ONE30);
@@ -279,7 +268,7 @@ static DH_NOINLINE int32_t dh_axis_entry(const int32_t *U, const int32_t *E, uns
         int64_t t = dh_mul64(s, U[m]) + dh_rshr64(dh_mul64(s, E[m]), 16u);
         acc += positive ? t : -t;
     }
-    return dh_fin30(acc, &ovf);
+    return dh_lo30(acc);
 }
 
 /* F = the rounded eq. 1.70 matrix (position 0); 0 for a zero axis (F untouched) */
@@ -313,15 +302,11 @@ dh_status dh_frame_rot_axis_q(dh_frame_q *F, dh_q30 kx, dh_q30 ky, dh_q30 kz, dh
 /* ---- composition ---------------------------------------------------------- */
 
 /*
- * Fast-path result without the saturation test: floor(acc / 2^30) taken
- * from the two 32-bit halves (valid when the high word is in [-2^29, 2^29)).
- * dh_hi_chk() gives a word whose bits 30 and 31 are clear exactly when
- * that holds, so the checks of many outputs can be OR-ed and tested once.
+ * Fast-path results are read with dh_lo30() without the saturation test;
+ * dh_hi_chk() gives a word whose bits 30 and 31 are clear exactly when the
+ * high word is in [-2^29, 2^29), so the checks of many outputs can be
+ * OR-ed and tested once.
  */
-static inline int32_t dh_lo30(int64_t acc)
-{
-    return (int32_t)(((uint32_t)((uint64_t)acc >> 32) << 2) | ((uint32_t)((uint64_t)acc & 0xFFFFFFFFu) >> 30));
-}
 static inline uint32_t dh_hi_chk(int64_t acc)
 {
     return (uint32_t)((uint64_t)acc >> 32) + 0x20000000u;
@@ -548,7 +533,6 @@ static DH_NOINLINE int64_t dh_dot3s(int64_t acc, const int32_t *a, unsigned sa, 
 dh_status dh_frame_orthonormalize_chk_q(dh_frame_q *F)
 {
     int32_t M[3][3], row[3];
-    uint32_t ovf = 0u;
     unsigned i, j;
     DH_ASSERT(F != NULL);
     /* |entries| <= 1.25 keeps every sum below far from 2^63 and lets the
@@ -567,12 +551,16 @@ dh_status dh_frame_orthonormalize_chk_q(dh_frame_q *F)
             e -= (i == j) ? ((int64_t)1 << 60) : 0;                   /* (E - I) 2^60 */
             if (e > ((int64_t)1 << 57) || e < -((int64_t)1 << 57)) return DH_ERR_NOT_RIGID; /* > 1/8 */
         }
-    /* R <- R M, row by row in place: row i of the result is row i of R times M */
+    /* R <- R M, row by row in place: row i of the result is row i of R times M.
+     * No entry can leave [-2, 2): with R^T R = I + E, |E_ij| <= 1/8 (checked
+     * above), ||R||_2 <= sqrt(1 + ||E||_F) <= sqrt(1 + 3/8) < 1.18 and
+     * M = I - E/2 (rounded) has ||M||_2 <= 1 + 3/16 + 2^-28, so every entry
+     * of R M is below 1.4 in magnitude: read unchecked, no overflow status. */
     for (i = 0; i < 3u; i++) {
         row[0] = F->r[0][i]; row[1] = F->r[1][i]; row[2] = F->r[2][i];
-        for (j = 0; j < 3u; j++) F->r[j][i] = dh_fin30(dh_dot3s(DH_HALF30, row, 1u, M[j], 1u), &ovf);
+        for (j = 0; j < 3u; j++) F->r[j][i] = dh_lo30(dh_dot3s(DH_HALF30, row, 1u, M[j], 1u));
     }
-    return ovf ? DH_ERR_OVERFLOW : DH_OK;
+    return DH_OK;
 }
 
 void dh_frame_orthonormalize_q(dh_frame_q *F)

@@ -10,6 +10,7 @@
 #include "dht.h"
 #include "support_robots.h"
 #include "dhmath/dh_robot.h"
+#include "dhmath/dh_fixed.h"
 
 #include <math.h>
 #include <string.h>
@@ -635,6 +636,459 @@ static void base_tool_flags(void)
     }
 }
 
+/* ---- twist classes, conventions and the choice of path ------------------- */
+
+#define Q16DEG 65536
+/* alpha values (Q16.16 deg): the exact classes 0, +-90, 180 (also as 270,
+ * -270), their neighbours one LSB away (where sin or cos still rounds to
+ * exactly +-1, so they must be treated as general twists) and general
+ * angles */
+static const int32_t twist_alphas[] = {
+    0, 1, -1, 90 * Q16DEG, 90 * Q16DEG + 1, 90 * Q16DEG - 1, -90 * Q16DEG, -90 * Q16DEG + 1,
+    180 * Q16DEG, 180 * Q16DEG - 1, -180 * Q16DEG + 1, 270 * Q16DEG, -270 * Q16DEG,
+    37 * Q16DEG + 12345, -123 * Q16DEG - 777
+};
+#define N_TWIST_ALPHAS (sizeof twist_alphas / sizeof twist_alphas[0])
+
+static int32_t rnd_len_q(double mm)
+{
+    return dhs_to_q(len_scale() * dht_rand_uniform(-mm, mm), DH_QPOS_FRAC);
+}
+
+/* base mode 0: identity (first link written out directly); 1: rigid
+ * rotation and translation (fast path); 2: rotation scaled by g in
+ * [1.55, 1.95] (rows of norm > 1.5: checked path). Returns g. */
+static double make_base(int mode, dh_frame_q *B)
+{
+    dhs_mat4_d R, A;
+    double g = mode == 2 ? dht_rand_uniform(1.55, 1.95) : 1.0;
+    int c, i;
+    dhs_rotz(&R, dht_rand_uniform(-180, 180));
+    dhs_rotx(&A, dht_rand_uniform(-180, 180));
+    dhs_mul(&R, &R, &A);
+    for (c = 0; c < 3; c++) {
+        for (i = 0; i < 3; i++)
+            B->r[c][i] = mode == 0 ? (c == i ? DH_Q30_ONE : 0) : (int32_t)floor(g * R.m[c][i] * 1073741824.0 + 0.5);
+        B->p[c] = mode == 0 ? 0 : rnd_len_q(1000.0);
+    }
+    return g;
+}
+
+/*
+ * Three-joint robots whose middle joint has each alpha of twist_alphas,
+ * zero or non-zero lengths, revolute or prismatic, in both conventions,
+ * behind each kind of base: every twist class of the fast path (exact
+ * 0/180, exact +-90, general) and of the checked path, with and without
+ * the position update, against the double reference on the same Q
+ * inputs (same scaled tolerances as random_robots / the scaled base).
+ */
+static void twist_classes(void)
+{
+    long rep, nrep = DHT_ITER(12);
+    double ep = 0, er = 0;
+    int conv, mode, lenmode, type;
+    size_t ia;
+    for (rep = 0; rep < nrep; rep++)
+    for (conv = 0; conv < 2; conv++)
+    for (mode = 0; mode < 3; mode++)
+    for (ia = 0; ia < N_TWIST_ALPHAS; ia++)
+    for (lenmode = 0; lenmode < 2; lenmode++)
+    for (type = 0; type < 2; type++) {
+        dh_robot r;
+        dh_frame_q B, T, T2, frames[3];
+        dhs_mat4_d R;
+        int32_t qq[3];
+        double g = make_base(mode, &B), reach, e, L = 0.0;
+        uint32_t i;
+        DHT_EQ_INT(dh_robot_init(&r, conv ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, rnd_len_q(500), rnd_len_q(500),
+                                        dhs_to_q(dht_rand_uniform(-180, 180), 16), 0), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, type ? DH_JOINT_PRISMATIC : DH_JOINT_REVOLUTE,
+                                        lenmode ? rnd_len_q(500) : 0, lenmode ? rnd_len_q(500) : 0,
+                                        twist_alphas[ia], lenmode ? dhs_to_q(dht_rand_uniform(-180, 180), 16) : 0),
+                   DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, rnd_len_q(500), rnd_len_q(500),
+                                        dhs_to_q(dht_rand_uniform(-180, 180), 16), 0), DH_OK);
+        if (mode != 0) DHT_EQ_INT(dh_robot_set_base_q(&r, &B), DH_OK);
+        /* the path taken follows from the flags */
+        DHT_EQ_INT((r.flags & DH_ROBOT_BASE_ID_Q) != 0u, mode == 0);
+        DHT_EQ_INT((r.flags & DH_ROBOT_BASE_SMALL_Q) != 0u, mode != 2);
+        for (i = 0; i < 3u; i++) {
+            if (r.joint[i].type == DH_JOINT_PRISMATIC) {
+                /* lenmode 0 with q = 0 keeps d = 0: no position update */
+                qq[i] = lenmode ? rnd_len_q(300) : 0;
+                L += fabs(ldexp(qq[i], -DH_QPOS_FRAC));
+            } else {
+                qq[i] = dhs_to_q(dht_rand_uniform(-360, 360), 16);
+            }
+            L += fabs(ldexp(r.joint[i].a_q, -DH_QPOS_FRAC)) + fabs(ldexp(r.joint[i].d_q, -DH_QPOS_FRAC));
+        }
+        for (i = 0; i < 3u; i++) L += fabs(ldexp(B.p[i], -DH_QPOS_FRAC));
+        fk_q_ok(&r, qq, &T);
+        dhs_fk_ref_q(&r, qq, NULL, &R);
+        reach = ldexp(0.5 * 5.0, -DH_QPOS_FRAC) + g * (L + 1.0) * LSB30;
+        e = dhs_pos_err_q(&T, &R) / reach;
+        upd(&ep, e);
+        DHT_TRUE_MSG(e <= RR_POS_REL * g, "conv %d base %d alpha %ld len %d type %d: pos %.3g x scale", conv, mode,
+                     (long)twist_alphas[ia], lenmode, type, e);
+        e = dhs_rot_err_q(&T, &R) / LSB30;
+        upd(&er, e);
+        DHT_TRUE_MSG(e <= RR_ROT_LSB * g, "conv %d base %d alpha %ld len %d type %d: rot %.3g LSB", conv, mode,
+                     (long)twist_alphas[ia], lenmode, type, e);
+        DHT_EQ_INT(dh_fk_frames_q(&r, qq, frames, &T2), DH_OK);
+        DHT_TRUE(memcmp(&T, &T2, sizeof T) == 0);
+        DHT_TRUE(memcmp(&T, &frames[2], sizeof T) == 0);
+    }
+    dht_printf("fk_q twist classes (%ld x %d): max pos err %.3g x scale, max rot err %.3g LSB\n", nrep,
+               2 * 3 * (int)N_TWIST_ALPHAS * 2 * 2, ep, er);
+}
+
+/*
+ * Position saturation on the fast path, for each twist variant and both
+ * conventions: three joints of a = +-(2^30 - 2^16) LSB in a row at
+ * theta = 0 (the x axis never turns, whatever the twist), so
+ * p_x = 3 a leaves int32 at the third joint while two joints still fit.
+ * The lengths keep |a| + |d| <= 2^30, so ARMv6-M takes the fast path too.
+ */
+static void fast_position_saturation(void)
+{
+    static const int32_t alphas[] = { 0, 180 * Q16DEG, 90 * Q16DEG, -90 * Q16DEG, 37 * Q16DEG };
+    static const int32_t lens[] = { 0x3FFF0000, -0x3FFF0000 };
+    int conv;
+    size_t ia, il;
+    for (conv = 0; conv < 2; conv++)
+        for (ia = 0; ia < sizeof alphas / sizeof alphas[0]; ia++)
+            for (il = 0; il < 2; il++) {
+                const int32_t a = lens[il];
+                dh_robot r;
+                dh_frame_q T, frames[3];
+                dhs_mat4_d R;
+                int32_t q[3] = { 0, 0, 0 };
+                int k;
+                DHT_EQ_INT(dh_robot_init(&r, conv ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
+                for (k = 0; k < 2; k++)
+                    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, a, 0, alphas[ia], 0), DH_OK);
+                /* two joints: 2a fits exactly */
+                fk_q_ok(&r, q, &T);
+                DHT_EQ_INT(T.p[0], 2 * (int64_t)a);
+                DHT_EQ_INT(T.p[1], 0);
+                DHT_EQ_INT(T.p[2], 0);
+                DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, a, 0, alphas[ia], 0), DH_OK);
+                DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_OVERFLOW);
+                DHT_EQ_INT(T.p[0], a > 0 ? INT32_MAX : INT32_MIN);
+                DHT_EQ_INT(T.p[1], 0);
+                DHT_EQ_INT(T.p[2], 0);
+                /* the rotation is unaffected: Rx(3 alpha) */
+                dhs_fk_ref_q(&r, q, NULL, &R);
+                DHT_TRUE(dhs_rot_err_q(&T, &R) / LSB30 <= RR_ROT_LSB);
+                DHT_EQ_INT(dh_fk_frames_q(&r, q, frames, NULL), DH_ERR_OVERFLOW);
+                DHT_TRUE(memcmp(&T, &frames[2], sizeof T) == 0);
+                DHT_EQ_INT(frames[1].p[0], 2 * (int64_t)a);
+            }
+}
+
+/* 1 when v (in output LSB) lies outside the int32 range */
+static int outside_i32(double v)
+{
+    return v > 2147483647.5 || v < -2147483648.5;
+}
+
+/* got against the exact value v (output LSB): saturated to the right end
+ * when v is outside int32, else within tol */
+static int sat_match(int32_t got, double v, double tol)
+{
+    if (v > 2147483647.5) return got == INT32_MAX;
+    if (v < -2147483648.5) return got == INT32_MIN;
+    return fabs((double)got - v) <= tol;
+}
+
+/*
+ * One joint behind base B (and tool Tl, NULL = identity) against the double
+ * product B A(q) Tl, each entry saturated to int32 on its own: exact for
+ * the cases below, chosen so that no saturated intermediate value feeds
+ * another entry. Lengths of INT32_MIN are used as -INT32_MAX (the
+ * documented one-LSB raise). Checks the entries, the status (overflow iff
+ * some entry is out of range) and dh_fk_frames_q. Returns the status.
+ */
+static dh_status single_joint(dh_convention conv, int32_t a, int32_t d, int32_t alpha, int32_t theta, int32_t q,
+                              const dh_frame_q *B, const dh_frame_q *Tl, double rot_tol, double pos_tol)
+{
+    dh_robot r;
+    dh_frame_q T, F1, E;
+    dhs_mat4_d Bd, A, Td, R;
+    dh_status st;
+    int c, k, out = 0;
+    double ad = a == INT32_MIN ? -2147483647.0 : (double)a, dd = d == INT32_MIN ? -2147483647.0 : (double)d;
+    DHT_EQ_INT(dh_robot_init(&r, conv), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, a, d, alpha, theta), DH_OK);
+    dhs_identity(&Bd);
+    dhs_identity(&Td);
+    if (B) {
+        DHT_EQ_INT(dh_robot_set_base_q(&r, B), DH_OK);
+        dhs_from_q(&Bd, B);
+    }
+    if (Tl) {
+        DHT_EQ_INT(dh_robot_set_tool_q(&r, Tl), DH_OK);
+        dhs_from_q(&Td, Tl);
+    }
+    memset(&T, 0x5a, sizeof T);
+    st = dh_fk_q(&r, &q, &T);
+    dhs_link(conv, DH_JOINT_REVOLUTE, ldexp(ad, -DH_QPOS_FRAC), ldexp(dd, -DH_QPOS_FRAC), ldexp(alpha, -16),
+             ldexp(theta, -16), ldexp(q, -16), &A);
+    dhs_mul(&R, &Bd, &A);
+    dhs_mul(&R, &R, &Td);
+    for (c = 0; c < 4; c++)
+        for (k = 0; k < 3; k++) {
+            double v = c < 3 ? ldexp(R.m[c][k], 30) : ldexp(R.m[3][k], DH_QPOS_FRAC);
+            int32_t got = c < 3 ? T.r[c][k] : T.p[k];
+            out |= outside_i32(v);
+            DHT_TRUE_MSG(sat_match(got, v, c < 3 ? rot_tol : pos_tol),
+                         "conv %d a %ld d %ld alpha %ld theta %ld q %ld: entry (%d,%d) %ld vs %.1f", (int)conv, (long)a,
+                         (long)d, (long)alpha, (long)theta, (long)q, c, k, (long)got, v);
+        }
+    DHT_EQ_INT(st, out ? DH_ERR_OVERFLOW : DH_OK);
+    DHT_EQ_INT(dh_fk_frames_q(&r, &q, &F1, &E), st);
+    DHT_TRUE(memcmp(&T, &E, sizeof T) == 0);
+    return st;
+}
+
+static void fill_frame(dh_frame_q *F, int32_t rot, int32_t p)
+{
+    int c, k;
+    for (c = 0; c < 3; c++) {
+        F->p[c] = p;
+        for (k = 0; k < 3; k++) F->r[c][k] = rot;
+    }
+}
+
+/*
+ * Checked path, rotation entries: a base with every entry -2 (INT32_MIN)
+ * or just below +2 (INT32_MAX) turned by +-45 / +-135 degrees (theta,
+ * alpha 0) or twisted by +-45, +-135, +-90, 180 degrees (theta 0), so
+ * that each rounded sum and each negation of both step functions leaves
+ * the range with either sign in some case (e.g. -2 (cos 45 + sin 45)).
+ */
+static void checked_rotation_saturation(void)
+{
+    static const int32_t angles[] = { 45 * Q16DEG, -45 * Q16DEG, 135 * Q16DEG, -135 * Q16DEG };
+    static const int32_t twists[] = { 45 * Q16DEG, -45 * Q16DEG, 135 * Q16DEG, -135 * Q16DEG,
+                                      90 * Q16DEG, -90 * Q16DEG, 180 * Q16DEG, 0 };
+    static const int32_t fills[] = { INT32_MIN, INT32_MAX };
+    dh_frame_q B;
+    int conv, nover = 0;
+    size_t f, i;
+    for (conv = 0; conv < 2; conv++)
+        for (f = 0; f < 2; f++) {
+            fill_frame(&B, fills[f], 0);
+            for (i = 0; i < sizeof angles / sizeof angles[0]; i++)
+                nover += single_joint((dh_convention)conv, 0, 0, 0, 0, angles[i], &B, NULL, 3.0, 0.0) != DH_OK;
+            for (i = 0; i < sizeof twists / sizeof twists[0]; i++)
+                nover += single_joint((dh_convention)conv, 0, 0, twists[i], 0, 0, &B, NULL, 3.0, 0.0) != DH_OK;
+        }
+    /* per convention: the -2 base saturates in every case but the identity
+     * twist (11), the +2 base (INT32_MAX) only where two entries add (8):
+     * its negation -INT32_MAX fits */
+    DHT_EQ_INT(nover, 2 * (11 + 8));
+}
+
+/*
+ * Checked path, positions: a base scaled by 1.8 (p = 0) and one link of
+ * a or d = +-0.75 2^31 LSB (1.35 times the range after the base), or
+ * +-0.25 2^31 (fits), and zero lengths, in both conventions.
+ */
+static void checked_position_saturation(void)
+{
+    static const int32_t lens[] = { 0x60000000, -0x60000000, 0x20000000, -0x20000000, 0 };
+    dh_frame_q B;
+    int conv, c, k, nover = 0;
+    size_t i;
+    for (c = 0; c < 3; c++) {
+        B.p[c] = 0;
+        for (k = 0; k < 3; k++) B.r[c][k] = c == k ? 0x73333333 : 0;   /* 1.8 */
+    }
+    for (conv = 0; conv < 2; conv++)
+        for (i = 0; i < sizeof lens / sizeof lens[0]; i++) {
+            nover += single_joint((dh_convention)conv, lens[i], 0, 0, 0, 0, &B, NULL, 1.0, 1.0) != DH_OK;
+            nover += single_joint((dh_convention)conv, 0, lens[i], 0, 0, 0, &B, NULL, 1.0, 1.0) != DH_OK;
+            nover += single_joint((dh_convention)conv, lens[i], lens[i], 30 * Q16DEG, 0, 20 * Q16DEG, &B, NULL,
+                                  3.0, 3.0) != DH_OK;
+        }
+    DHT_EQ_INT(nover, 2 * 2 * 3);
+}
+
+/*
+ * The tool product: frame 1.9 I (a zero-length joint behind a base of
+ * 1.9 I, exact) times tools with entries +-1.9 and positions at both
+ * ends of int32 (saturate with either sign) or small (fit).
+ */
+static void tool_product_saturation(void)
+{
+    static const int32_t rots[] = { 0x79999999, -0x79999999, 0x0CCCCCCD };
+    static const int32_t ps[] = { INT32_MAX, INT32_MIN, 12345 };
+    dh_frame_q B, Tl;
+    int conv, c, k, nover = 0;
+    size_t i, j;
+    for (c = 0; c < 3; c++) {
+        B.p[c] = 0;
+        for (k = 0; k < 3; k++) B.r[c][k] = c == k ? 0x79999999 : 0;
+    }
+    for (conv = 0; conv < 2; conv++)
+        for (i = 0; i < 3; i++)
+            for (j = 0; j < 3; j++) {
+                fill_frame(&Tl, rots[i], ps[j]);
+                /* rounding of three halved products: at most 1 LSB; the
+                 * position error is the rotation's times |p| < 2^31 */
+                nover += single_joint((dh_convention)conv, 0, 0, 0, 0, 0, &B, &Tl, 1.0, 3.0) != DH_OK;
+            }
+    /* rotations saturate for +-1.9 (3.61), positions for the int32 ends */
+    DHT_EQ_INT(nover, 2 * (2 * 3 + 2));
+}
+
+/*
+ * Lengths of INT32_MIN are used as -INT32_MAX on every path (the link
+ * written out for an identity base, the fast path, the checked path):
+ * from a base position of 2^30 LSB the result is 2^30 - INT32_MAX, not
+ * 2^30 + INT32_MIN, exactly.
+ */
+static void length_int32_min(void)
+{
+    int conv, mode;
+    for (conv = 0; conv < 2; conv++)
+        for (mode = 0; mode < 3; mode++) {
+            dh_robot r;
+            dh_frame_q B, T, A;
+            int32_t q = 0;
+            int c, k;
+            int32_t p0 = mode == 0 ? 0 : 0x40000000;
+            for (c = 0; c < 3; c++)
+                for (k = 0; k < 3; k++) B.r[c][k] = c == k ? DH_Q30_ONE : 0;
+            B.p[0] = p0;
+            B.p[1] = 0;
+            B.p[2] = p0;
+            if (mode == 2) B.r[1][1] = 0x79999999;   /* row y of norm 1.9: checked path, rows x, z unchanged */
+            DHT_EQ_INT(dh_robot_init(&r, conv ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
+            DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, INT32_MIN, INT32_MIN, 0, 0), DH_OK);
+            DHT_EQ_INT(dh_robot_set_base_q(&r, &B), DH_OK);
+            DHT_EQ_INT((r.flags & DH_ROBOT_BASE_SMALL_Q) != 0u, mode != 2);
+            fk_q_ok(&r, &q, &T);
+            DHT_EQ_INT(T.p[0], p0 - INT32_MAX);
+            DHT_EQ_INT(T.p[1], 0);
+            DHT_EQ_INT(T.p[2], p0 - INT32_MAX);
+            DHT_TRUE(memcmp(T.r, B.r, sizeof T.r) == 0);
+            DHT_EQ_INT(dh_link_q(&r, 0, 0, &A), DH_OK);
+            DHT_EQ_INT(A.p[0], -INT32_MAX);
+            DHT_EQ_INT(A.p[2], -INT32_MAX);
+        }
+}
+
+/* Prismatic q + d: exactly INT32_MIN is the one-LSB raise (no overflow),
+ * below it saturates (DH_ERR_OVERFLOW, d = -INT32_MAX used). */
+static void prismatic_edges(void)
+{
+    int conv;
+    for (conv = 0; conv < 2; conv++) {
+        dh_robot r;
+        dh_frame_q T;
+        int32_t q = INT32_MIN;
+        DHT_EQ_INT(dh_robot_init(&r, conv ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_PRISMATIC, 0, 0, 0, 0), DH_OK);
+        fk_q_ok(&r, &q, &T);
+        DHT_EQ_INT(T.p[2], -INT32_MAX);
+        DHT_EQ_INT(dh_link_q(&r, 0, q, &T), DH_OK);
+        DHT_EQ_INT(T.p[2], -INT32_MAX);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_PRISMATIC, 0, -10, 0, 0), DH_OK);
+        DHT_EQ_INT(dh_link_q(&r, 1, INT32_MIN + 5, &T), DH_ERR_OVERFLOW);
+        DHT_EQ_INT(T.p[2], -INT32_MAX);
+        DHT_EQ_INT(dh_link_q(&r, 1, INT32_MIN + 10, &T), DH_OK);
+        DHT_EQ_INT(T.p[2], -INT32_MAX);
+    }
+}
+
+/* n beyond DH_MAX_JOINTS (a corrupted or foreign description): DH_ERR_ARG
+ * from every function that walks the joints, outputs untouched. */
+static void joints_out_of_range(void)
+{
+    dh_robot r;
+    dh_frame_q T, frames[2];
+    int32_t q[DH_MAX_JOINTS + 1];
+    int i;
+    memset(q, 0, sizeof q);
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+    for (i = 0; i < DH_MAX_JOINTS; i++)
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, 0, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, 0, 0), DH_ERR_ARG);
+    DHT_EQ_INT(r.n, DH_MAX_JOINTS);
+    r.n = (uint32_t)DH_MAX_JOINTS + 1u;
+    memset(&T, 0x5a, sizeof T);
+    memset(frames, 0x5a, sizeof frames);
+    DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_ARG);
+    DHT_EQ_INT(dh_fk_frames_q(&r, q, frames, &T), DH_ERR_ARG);
+    DHT_EQ_INT(dh_fk_frames_q(&r, q, frames, NULL), DH_ERR_ARG);
+    DHT_EQ_INT(dh_link_q(&r, 0, 0, &T), DH_ERR_ARG);
+    DHT_EQ_INT(((unsigned char *)&T)[0], 0x5a);
+    DHT_EQ_INT(((unsigned char *)frames)[sizeof frames - 1], 0x5a);
+    DHT_EQ_INT(dh_robot_check_limits_q(&r, q), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_set_limits_q(&r, 0, -1, 1), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, 0, 0), DH_ERR_ARG);
+    DHT_EQ_INT(r.joint[0].qmin_q, 1);    /* untouched: still "no limits" */
+}
+
+/* Flags and limits of the integer-only setters (dh_robot_q.c). */
+static void robot_q_setters(void)
+{
+    dh_robot r;
+    dh_frame_q B;
+    dh_mat4_f32 M;
+    int32_t q[2] = { INT32_MIN, INT32_MAX };
+    int c, k;
+    /* a joint whose float constant does not fit Q: a later _q joint keeps
+     * the fixed path unavailable */
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 1e6f, 0, 0, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, 0, 0), DH_OK);
+    DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) == 0u);
+    DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) == 0u);
+    /* joints without limits accept any value; limits are per joint */
+    DHT_EQ_INT(dh_robot_check_limits_q(&r, q), DH_OK);
+    DHT_EQ_INT(dh_robot_set_limits_q(&r, 1, -5, 5), DH_OK);
+    DHT_EQ_INT(dh_robot_check_limits_q(&r, q), DH_ERR_LIMIT);
+    q[1] = -5;
+    DHT_EQ_INT(dh_robot_check_limits_q(&r, q), DH_OK);
+    q[1] = -6;
+    DHT_EQ_INT(dh_robot_check_limits_q(&r, q), DH_ERR_LIMIT);
+
+    /* base and tool: the robot's own frame may be passed (aliasing), and a
+     * fixed identity over a float frame that is not the identity makes
+     * the float path stale */
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 100.0f, 0, 0, 0), DH_OK);
+    for (c = 0; c < 4; c++)
+        for (k = 0; k < 4; k++) M.m[c][k] = c == k ? 1.0f : 0.0f;
+    M.m[3][0] = 5.0f;
+    DHT_EQ_INT(dh_robot_set_base_f32(&r, &M), DH_OK);
+    DHT_EQ_INT(dh_robot_set_tool_f32(&r, &M), DH_OK);
+    DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) != 0u);
+    DHT_EQ_INT(dh_robot_set_base_q(&r, &r.base_q), DH_OK);     /* same frame again */
+    DHT_EQ_INT(dh_robot_set_tool_q(&r, &r.tool_q), DH_OK);
+    DHT_EQ_INT(r.base_q.p[0], 5 << DH_QPOS_FRAC);
+    DHT_EQ_INT(r.tool_q.p[0], 5 << DH_QPOS_FRAC);
+    DHT_TRUE((r.flags & (DH_ROBOT_BASE_ID_Q | DH_ROBOT_TOOL_ID_Q)) == 0u);
+    dh_frame_identity_q(&B);
+    DHT_EQ_INT(dh_robot_set_base_q(&r, &B), DH_OK);
+    DHT_TRUE((r.flags & DH_ROBOT_BASE_ID_Q) != 0u);
+    DHT_TRUE((r.flags & DH_ROBOT_F32_NO_BASE) != 0u);
+    DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) == 0u);
+    DHT_EQ_INT(dh_robot_set_tool_q(&r, &B), DH_OK);
+    DHT_TRUE((r.flags & DH_ROBOT_TOOL_ID_Q) != 0u);
+    DHT_TRUE((r.flags & DH_ROBOT_F32_NO_TOOL) != 0u);
+    DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) != 0u);
+    /* the float setters bring the float path back */
+    for (c = 0; c < 3; c++) M.m[3][c] = 0.0f;
+    DHT_EQ_INT(dh_robot_set_base_f32(&r, &M), DH_OK);
+    DHT_EQ_INT(dh_robot_set_tool_f32(&r, &M), DH_OK);
+    DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) != 0u);
+}
+
 static const dht_case cases[] = {
     DHT_CASE(puma_mm_accuracy),
     DHT_CASE(ur5_mm_accuracy),
@@ -648,5 +1102,14 @@ static const dht_case cases[] = {
     DHT_CASE(errors_and_saturation),
     DHT_CASE(limits_q),
     DHT_CASE(base_tool_flags),
+    DHT_CASE(twist_classes),
+    DHT_CASE(fast_position_saturation),
+    DHT_CASE(checked_rotation_saturation),
+    DHT_CASE(checked_position_saturation),
+    DHT_CASE(tool_product_saturation),
+    DHT_CASE(length_int32_min),
+    DHT_CASE(prismatic_edges),
+    DHT_CASE(joints_out_of_range),
+    DHT_CASE(robot_q_setters),
 };
 DHT_MAIN(cases)

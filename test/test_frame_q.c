@@ -474,6 +474,34 @@ static void ortho_error_measure(void)
         DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_ERR_NOT_RIGID);
         DHT_EQ_INT(F.r[1][2], INT32_MIN); /* untouched */
     }
+    {   /* a negative dot product beyond -2 saturates to INT32_MIN, whose
+         * magnitude 2^31 is reported as INT32_MAX */
+        int j;
+        dh_frame_identity_q(&F);
+        for (j = 0; j < 3; j++) {
+            F.r[0][j] = INT32_MIN;
+            F.r[1][j] = INT32_MAX;
+        }
+        DHT_EQ_INT(dh_frame_ortho_error_q(&F), INT32_MAX);
+    }
+    /* refused in each direction of the 1/8 test: a column too short
+     * (|c0|^2 - 1 = -3/4) and two columns at a negative angle
+     * (c0 . c1 = -1/4), F untouched */
+    dh_frame_identity_q(&F);
+    F.r[0][0] = DH_Q30_ONE / 2;
+    DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(F.r[0][0], DH_Q30_ONE / 2);
+    dh_frame_identity_q(&F);
+    F.r[1][0] = -DH_Q30_ONE / 4;
+    DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(F.r[1][0], -DH_Q30_ONE / 4);
+    DHT_EQ_INT(F.r[1][1], DH_Q30_ONE);
+    /* just inside: c0 . c1 = -1/16 is repaired to about 3/4 (1/16)^2 =
+     * 3.1e6 LSB (quadratic convergence), below 2^22 */
+    F.r[1][0] = -DH_Q30_ONE / 16;
+    DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_OK);
+    DHT_TRUE_MSG(dh_frame_ortho_error_q(&F) < (1 << 22), "after one step from 1/16: %ld",
+                 (long)dh_frame_ortho_error_q(&F));
     /* one step repairs a visibly perturbed rotation */
     DHT_EQ_INT(dh_frame_rot_axis_q(&F, 3, -4, 12, 77 * 65536), DH_OK);
     F.r[0][0] += 10000; F.r[1][2] -= 8000; F.r[2][1] += 6000;
