@@ -164,6 +164,27 @@ static void random_up_to_1e6(void)
     report("random |deg| <= 1e6", &acc);
 }
 
+/* The top of the fast path: every float in [2^22, 2^23) (fractions 0 and
+ * 0.5 only, so the rounding to the nearest whole degree meets a tie at
+ * every other input and rounds it to even), where a + 2^23 reaches 2^24
+ * and its exponent steps up, and the first floats of the large path. */
+static void fast_path_top(void)
+{
+    err_acc acc = { 0, 0, 0, 0, 0 };
+    const uint32_t lo = 0x4A800000u;  /* 2^22 */
+    const uint32_t hi = 0x4B000000u;  /* 2^23 */
+    uint32_t b, step = (hi - lo) / DHT_ITER(hi - lo);
+    for (b = lo; b < hi; b += step) {
+        check_one(float_of(b), &acc);
+        check_one(-float_of(b), &acc);
+    }
+    for (b = hi - 16u; b < hi + 16u; b++) {
+        check_one(float_of(b), &acc);
+        check_one(-float_of(b), &acc);
+    }
+    report("every float in [2^22,2^23)", &acc);
+}
+
 /* Random bit patterns of every finite magnitude up to FLT_MAX, and the
  * boundary of the integer-only range (2^23, 2^24). Above 2^23 every float is
  * an integer, so the result must also be bit-identical to that of the whole
@@ -305,6 +326,7 @@ static const dht_case cases[] = {
     DHT_CASE(every_float_in_first_turn),
     DHT_CASE(small_angles),
     DHT_CASE(random_up_to_1e6),
+    DHT_CASE(fast_path_top),
     DHT_CASE(huge_angles),
     DHT_CASE(symmetry_and_variants),
     DHT_CASE(bounded_near_edges),
