@@ -236,6 +236,33 @@ static DH_NOINLINE float dh_cert_scale(const dh_mat4_f32 *T, int aff)
 }
 
 /*
+ * X = s X (+ 0.0f maps -0 to +0); returns the balanced norm (the weights of
+ * dh_norm_rows) of what that lost, F / s = (s X) / s - X: 0 when every
+ * element stayed exact, Inf when one overflowed, the gradual-underflow
+ * errors (<= 2^-150 each, over s) otherwise. 1/s is a power of two
+ * (s = 2^k, |k| <= 126), so (s X) / s is exact.
+ */
+static DH_NOINLINE float dh_unscale(dh_mat4_f32 *X, float s, float sg)
+{
+    const float si = 1.0f / s;
+    float lost = 0.0f;
+    int i, j;
+    for (i = 0; i < 4; i++) {
+        float rs = 0.0f;
+        for (j = 0; j < 4; j++) {
+            const float x = X->m[i][j];
+            const float v = x * s + 0.0f;
+            const float d = fabsf(v * si - x);
+            X->m[i][j] = v;
+            if (i < 3) rs += (j < 3) ? d : d * sg;
+            else rs += (j < 3) ? d / sg : d;
+        }
+        lost = (rs > lost) ? rs : lost;
+    }
+    return lost;
+}
+
+/*
  * Certified general inverse into the scratch X (X must not alias T; its
  * content is undefined on error). Method: NaN/Inf scan; the matrix M
  * inverted is s T, or blockdiag(s3 R, 1) for an affine T (see dh_at), with
@@ -259,7 +286,7 @@ static DH_NOINLINE float dh_cert_scale(const dh_mat4_f32 *T, int aff)
 static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
     const int aff = dh_is_affine(T);
-    float z = 0.0f, s, sg = 1.0f, na, lost, si;
+    float z = 0.0f, s, sg = 1.0f, na;
     int i, j;
 
     /* z is NaN iff an element is NaN or Inf (x * 0 is NaN exactly for
@@ -270,7 +297,6 @@ static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 
     if (z != z) return DH_ERR_NAN;
     s = dh_cert_scale(T, aff);
     if (s == 0.0f) return DH_ERR_SINGULAR; /* zero or denormal matrix (or R) */
-    si = 1.0f / s;                         /* exact: s = 2^k, |k| <= 126 */
     if (!aff) sg = dh_balance(T); /* scale-free: a ratio of sums of |T_ij| */
     for (i = 0; i < 4; i++) {
         for (j = 0; j < 4; j++) X->m[i][j] = dh_at(T, i, j, s, aff);
@@ -287,27 +313,13 @@ static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 
      * The certificate (b) is for the scaled X. If the returned s X differs
      * from it by F (overflow for s > 1; for s < 1 the gradual underflow of
      * elements below FLT_MIN, |F_ij| <= 2^-150), its residual differs by
-     * (F / s) A: at most lost * na in the balanced norm, with lost the
-     * balanced norm of F / s = v / s - x (exact: 1/s is a power of two).
-     * DH_OK only if that is <= 2^-4: then the residual of what is returned
+     * (F / s) A: at most ||F / s|| * na in the balanced norm, ||F / s||
+     * returned by dh_unscale. DH_OK only if that is <= 2^-4: then the residual of what is returned
      * is < 1/2 + 1/8 (rounding of (b)) + 2^-9 (flush of tiny entries of T,
      * above) + 2^-4 < 1, the proof holds for it. Otherwise the inverse
      * does not fit in float (Inf, or lost its meaning to underflow):
      * DH_ERR_OVERFLOW. */
-    lost = 0.0f;
-    for (i = 0; i < 4; i++) {
-        float rs = 0.0f;
-        for (j = 0; j < 4; j++) {
-            const float x = X->m[i][j];
-            const float v = x * s + 0.0f;
-            const float d = fabsf(v * si - x);
-            X->m[i][j] = v;
-            if (i < 3) rs += (j < 3) ? d : d * sg;
-            else rs += (j < 3) ? d / sg : d;
-        }
-        lost = (rs > lost) ? rs : lost;
-    }
-    if (!(lost * na <= 0.0625f)) return DH_ERR_OVERFLOW;
+    if (!(dh_unscale(X, s, sg) * na <= 0.0625f)) return DH_ERR_OVERFLOW;
     z = 0.0f;
     if (aff) {
         for (j = 0; j < 3; j++) {
