@@ -262,7 +262,7 @@ dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A);
  * UR5 2.1e-7 m / 2.9e-7, Panda 3.0e-7 m / 3.1e-7 (position / rotation
  * entry). See docs/accuracy_fk.md.
  * @param r robot (not NULL), n >= 1
- * @param q n joint values (not NULL); must not alias T
+ * @param q n joint values (not NULL); must not alias T; T must not overlap *r (the chain is built in T)
  * @param T end frame; bottom row written as exactly 0 0 0 1
  * @return DH_OK; DH_ERR_ARG when n == 0, n > DH_MAX_JOINTS or the float
  *         path is unavailable (T untouched); DH_ERR_NAN when any q is NaN/Inf (T untouched);
@@ -277,7 +277,7 @@ dh_status dh_fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *T);
  * not applied); T_end (may be NULL) = frames[n-1] * tool.
  * @param r robot (not NULL), n >= 1
  * @param q n joint values (not NULL)
- * @param frames n entries (not NULL), must not overlap q or T_end.
+ * @param frames n entries (not NULL), must not overlap q, T_end or *r.
  * @param T_end end frame with the tool, or NULL when not wanted
  * @return as dh_fk_f32(); on DH_ERR_ARG / DH_ERR_NAN nothing is written.
  */
