@@ -255,9 +255,9 @@ static void joint_values(const dh_joint *j, int32_t q, dh_q30 *st, dh_q30 *ct, d
 #define TW_SWAP 4u
 #define TW_GEN 8u
 #define TW_ONE 0u                       /* alpha = 0: (y, z) */
-#define TW_P90 (TW_NA | TW_SWAP)        /* +90: (z, -y) */
-#define TW_M90 (TW_NB | TW_SWAP)        /* -90: (-z, y) */
-#define TW_180 (TW_NA | TW_NB)          /* 180: (-y, -z) */
+#define TW_P90 5u                       /* +90: (z, -y), TW_NA | TW_SWAP */
+#define TW_M90 6u                       /* -90: (-z, y), TW_NB | TW_SWAP */
+#define TW_180 3u                       /* 180: (-y, -z), TW_NA | TW_NB */
 
 /* Exact classes need sa, ca both exact: alpha = 90 +- 1 LSB has sa
  * rounded to exactly 1 but ca != 0, and alpha = +-1 LSB has ca exactly 1
