@@ -149,12 +149,13 @@ static inline int64_t dh_port_smlal_c(int64_t acc, int32_t a, int32_t b)
 #endif
 }
 
-/** @brief Saturate x to a signed @p bits-bit value, bits in 1..32. */
+/** @brief Saturate x to a signed @p bits-bit value, bits in 1..32 (0 and
+ *  values above 32 return x unchanged). */
 static inline int32_t dh_port_ssat_c(int32_t x, unsigned bits)
 {
     int32_t hi, lo;
-    if (bits >= 32u) return x;
-    hi = (int32_t)((1u << (bits - 1u)) - 1u);
+    if (bits - 1u >= 31u) return x;     /* the shift below is by 0..30 */
+    hi = (int32_t)(((uint32_t)1 << (bits - 1u)) - 1u);
     lo = -hi - 1;
     return x > hi ? hi : (x < lo ? lo : x);
 }

@@ -266,9 +266,15 @@ DH_PORT_INLINE unsigned twist_kind(dh_q30 sa, dh_q30 ca)
 {
     unsigned kind = TW_GEN;
     if (sa == DH_Q30_ONE || sa == -DH_Q30_ONE) {
-        if (ca == 0) kind = (sa > 0) ? TW_P90 : TW_M90;
+        if (ca == 0) {
+            kind = TW_M90;
+            if (sa > 0) kind = TW_P90;
+        }
     } else if (ca == DH_Q30_ONE || ca == -DH_Q30_ONE) {
-        if (sa == 0) kind = (ca > 0) ? TW_ONE : TW_180;
+        if (sa == 0) {
+            kind = TW_180;
+            if (ca > 0) kind = TW_ONE;
+        }
     }
     return kind;
 }

@@ -77,6 +77,7 @@ static DH_NOINLINE int32_t dh_dot_exact(const int32_t *a, const int32_t *b, unsi
 {
     int64_t h = (int64_t)c30 * ((int64_t)1 << 28), r;
     uint32_t l = 0u;
+    const unsigned s2 = sh - 2u;        /* the second step of the division */
     unsigned i;
     for (i = 0; i < n; i++) {
         int64_t p = dh_mul64(a[i], b[i]);
@@ -85,8 +86,9 @@ static DH_NOINLINE int32_t dh_dot_exact(const int32_t *a, const int32_t *b, unsi
         l += (uint32_t)((uint64_t)p & 3u);
     }
     /* value + 2^(sh-1) = 4h + (l + 2^(sh-1)); floor division by 2^sh in two steps */
-    h += (int64_t)((l + (1u << (sh - 1u))) >> 2);
-    r = h >> (sh - 2u);
+    l = (l + ((uint32_t)1 << (sh - 1u))) >> 2;
+    h += (int64_t)l;
+    r = h >> s2;
     if (r > INT32_MAX) { *ovf = 1u; return INT32_MAX; }
     if (r < INT32_MIN) { *ovf = 1u; return INT32_MIN; }
     return (int32_t)r;
@@ -151,7 +153,9 @@ static int32_t dh_scale_signed(int32_t x, int sh)
 /* round(x / 2^sh) for int64 x, 1 <= sh <= 62, |x| < 2^62 (ties up). */
 static int64_t dh_rshr64(int64_t x, unsigned sh)
 {
-    return (x + ((int64_t)1 << (sh - 1u))) >> sh;
+    const unsigned s1 = sh - 1u;
+    const int64_t half = (int64_t)((uint64_t)1 << s1);
+    return (x + half) >> sh;
 }
 
 /*
@@ -177,14 +181,14 @@ static int64_t dh_rshr64(int64_t x, unsigned sh)
  */
 static DH_NOINLINE int32_t dh_inv_sqrt_q30(int32_t X)
 {
-    int32_t Y = X < DH_ONE30 ? (int32_t)(7 << 28) - (X - (X >> 2))   /* 1.75 - 0.75 x */
-                             : (int32_t)(5 << 28) - (X >> 2);         /* 1.25 - 0.25 x */
+    int32_t Y = X < DH_ONE30 ? (int32_t)0x70000000 - (X - (X >> 2))   /* 1.75 - 0.75 x */
+                             : (int32_t)0x50000000 - (X >> 2);         /* 1.25 - 0.25 x */
     int it;
     for (it = 0; it < 4; it++) {
         int32_t t = (int32_t)dh_rshr64(dh_mul64(X, Y), 30u);    /* x Y */
         t = (int32_t)dh_rshr64(dh_mul64(t, Y), 30u);            /* x Y^2 */
         /* Y (3 - t) / 2 = (2 Y 1.5 - Y t) / 2, one rounding */
-        Y = (int32_t)dh_rshr64(2 * dh_mul64(Y, (int32_t)(3 << 29)) - dh_mul64(Y, t), 31u);
+        Y = (int32_t)dh_rshr64(2 * dh_mul64(Y, (int32_t)0x60000000) - dh_mul64(Y, t), 31u);
     }
     return Y;
 }
