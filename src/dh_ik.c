@@ -12,7 +12,8 @@
  *   (J^T J + (mu E + wbar) I) dx = J^T e,    wbar = DH_IK_WBAR * L^2
  *
  * (mu = 1 is Sugihara's W_N = E_k + wbar; mu grows after a rejected step).
- * The step is projected on the joint box INSIDE the iteration: joints that
+ * The system is solved by an LDL^T factorisation (no square root). The
+ * step is projected on the joint box INSIDE the iteration: joints that
  * sit on a bound and are pushed outward are removed from the system and the
  * system is solved again for the others; the remaining step is clamped into
  * the box. A trial point is accepted only when it lowers E. mu is halved
@@ -21,16 +22,29 @@
  * saw-tooth between too short and rejected steps in the curved, nearly
  * flat valleys around the Puma's folded-elbow targets (measured: Puma 560
  * success 98.2% -> 99.2% worst seed at the same step budget). An attempt
- * that stalls (4 steps in a row with less than 1%
- * decrease of E, or an empty projected step) is restarted from a
- * deterministic pseudo-random point in the joint box (xorshift32 with a
- * fixed seed: same inputs, same outputs), at most p->restarts times within
- * p->max_iter steps; the best configuration over all attempts is returned.
- * Once the tolerances are met, up to 3 more steps refine the result towards
- * the float resolution. Everything lives in the caller's workspace; no
- * heap, no recursion.
+ * that stalls (4 steps in a row with less than 1% decrease of E, or an
+ * empty projected step) is restarted from a deterministic pseudo-random
+ * point in the joint box (xorshift32 with a fixed seed: same inputs, same
+ * outputs), at most p->restarts times within p->max_iter steps; the best
+ * configuration over all attempts is returned, and the status says how its
+ * attempt ended (converged; stalled: UNREACHABLE; cut by max_iter while
+ * still improving: NO_CONVERGENCE). A target farther from the base than
+ * the arm can reach (cheap bound: sum of the link offsets, the prismatic
+ * travel and the tool offset) gets only IK_HOPELESS_RESTARTS restarts and
+ * is always reported UNREACHABLE. Once the tolerances are met, up to 3
+ * more steps refine the result towards the float resolution.
+ *
+ * Stack (issue 5): the worst-case chain INCLUDING callees and libgcc must
+ * stay within 256 bytes on Cortex-M0+ (soft float) and M4F. So every
+ * vector and matrix lives in the caller's workspace, including the running
+ * frame of the Jacobian pass, dR and the scalar state; dh_ik_f32 calls
+ * shallow blocks one after the other (joint sin/cos, Jacobian pass, error,
+ * step) instead of nesting the public Jacobian and pose-error functions.
+ * No heap, no recursion.
  */
 #include "dhmath/dh_kin.h"
+#include "dhmath/dh_trig.h"
+#include "dh_kin_impl.h"
 
 #include <float.h>
 #include <math.h>
@@ -39,17 +53,65 @@
 #define IK_POLISH_STEPS 3u      /* refinement steps after the tolerance is met */
 #define IK_STALL_STEPS 4u       /* steps in a row with less than 1% progress: stalled */
 #define IK_MU_MAX 1e12f
-#define IK_MU_MIN 1e-3f        /* lowest multiplier of E in the damping */
-#define IK_MU_UP 3.0f          /* damping factor after a rejected step */
-#define IK_MU_DOWN 0.5f        /* damping factor after an accepted step */
+#define IK_MU_MIN 1e-3f         /* lowest multiplier of E in the damping */
+#define IK_MU_UP 3.0f           /* damping factor after a rejected step */
+#define IK_MU_DOWN 0.5f         /* damping factor after an accepted step */
 #define IK_STALL_RATIO 0.99f    /* E must drop below this fraction to count as progress */
+#define IK_HOPELESS_RESTARTS 3u /* restarts for a target beyond the reach bound */
+#define IK_REACH_SLACK 1.0001f  /* relative slack on the reach bound (rounding) */
 
-/* Keep the helpers out of dh_ik_f32's frame so each frame stays < 256 bytes. */
+/* Keep the blocks out of dh_ik_f32's frame so that the frames add up to
+ * the measured chain, not to one big frame. */
 #if defined(__GNUC__) || defined(__clang__)
 #define IK_NOINLINE __attribute__((noinline))
 #else
 #define IK_NOINLINE
 #endif
+
+/* Workspace layout (floats), n joints; slot s = 0, 1 (current / trial). */
+#define OFF_J(n, s) ((s) * 6u * (n))                 /* 6n each: Jacobian */
+#define OFF_E(n, s) (12u * (n) + 6u * (s))           /* 6 each: raw error */
+#define OFF_Q(n, s) (12u * (n) + 12u + (s) * (n))    /* n each: joint values */
+#define OFF_QBEST(n) (14u * (n) + 12u)               /* n: best configuration */
+#define OFF_G(n) (15u * (n) + 12u)                   /* n: J^T W^2 e */
+#define OFF_DX(n) (16u * (n) + 12u)                  /* n: step, scaled variables */
+#define OFF_SCD(n) (17u * (n) + 12u)                 /* 3n: sin, cos theta, d per joint */
+#define OFF_F(n) (20u * (n) + 12u)                   /* 12: frame of the Jacobian pass */
+#define OFF_D(n) (20u * (n) + 24u)                   /* 9: dR row-major */
+#define OFF_S(n) (20u * (n) + 33u)                   /* IK_S_COUNT scalars */
+#define OFF_H(n) (20u * (n) + 45u)                   /* n*n: normal matrix, its LDL^T */
+
+/* Scalar state slots (workspace floats). */
+enum {
+    S_E, S_EP, S_ER,        /* current point: E, masked position / rotation error norms */
+    S_TE, S_TEP, S_TER,     /* last evaluated point */
+    S_BE, S_BEP, S_BER,     /* best point over all attempts */
+    S_MU, S_L, S_WBAR,
+    IK_S_COUNT
+};
+
+/* How an attempt ended. */
+enum { K_NONE = 0, K_CONV, K_STALL, K_SING, K_CUT };
+/* What the evaluated point is. */
+enum { M_FIRST = 0, M_TRIAL, M_RESTART };
+/* Result of an evaluation. */
+enum { EV_OK = 0, EV_FK, EV_RIGID, EV_BIG };
+/* What to do after an evaluation. */
+enum { A_STEP = 0, A_OVER, A_RETRY, A_BREAK, A_FAIL };
+
+/* Everything the blocks share; lives in dh_ik_f32's frame, the vectors and
+ * float state in the workspace. */
+typedef struct {
+    const dh_robot *r;
+    const dh_mat4_f32 *target;
+    const dh_ik_params *p;
+    const float *q0;
+    float *w;               /* workspace */
+    uint32_t n;
+    uint32_t iter, stall, polish, restarts, seed;
+    uint8_t cs;             /* slot of the current point; the other one is the trial slot */
+    uint8_t mode, conv, end, best_kind, hopeless;
+} ik_ctx;
 
 static int ik_finite(float x) { return fabsf(x) <= FLT_MAX; }
 
@@ -64,33 +126,7 @@ void dh_ik_params_default(dh_ik_params *p)
     p->restarts = 200u;
 }
 
-/* Workspace layout (floats), n joints. */
-typedef struct {
-    float *Ja, *Jb;     /* 6n each: Jacobian at the current / trial point */
-    float *H;           /* n*n: normal matrix, then its Cholesky factor */
-    float *g, *dx;      /* n each */
-    float *qa, *qb;     /* n each: current / trial joint values (deg or length) */
-    float *sc;          /* n: joint unit per scaled variable (deg per rad, or L) */
-    float *cs;          /* n: Jacobian column scale (1 for revolute, L for prismatic) */
-    float *qbest;       /* n: best configuration over all attempts */
-    float *ea, *eb;     /* 6 each: raw error (pos, rot) at current / trial */
-} ik_ws;
-
-static void ik_layout(ik_ws *w, float *work, uint32_t n)
-{
-    w->Ja = work;
-    w->Jb = w->Ja + 6u * n;
-    w->H = w->Jb + 6u * n;
-    w->g = w->H + n * n;
-    w->dx = w->g + n;
-    w->qa = w->dx + n;
-    w->qb = w->qa + n;
-    w->sc = w->qb + n;
-    w->cs = w->sc + n;
-    w->qbest = w->cs + n;
-    w->ea = w->qbest + n;
-    w->eb = w->ea + 6;
-}
+static int ik_rot_mode(uint32_t mask) { return (mask & (DH_IK_FULL & ~DH_IK_POSITION)) != 0u; }
 
 /* Row weight: 0 for masked-out rows. */
 static float ik_row_w(uint32_t mask, uint32_t row, float w_rot)
@@ -99,105 +135,10 @@ static float ik_row_w(uint32_t mask, uint32_t row, float w_rot)
     return (row < 3u) ? 1.0f : w_rot;
 }
 
-/* Evaluate J, e at q; *E = 1/2 |W e|^2, *ep / *er = masked error norms. */
-static IK_NOINLINE dh_status ik_eval(const dh_robot *r, const dh_mat4_f32 *target, const float *q,
-                         const dh_ik_params *p, float *J, float *e, float *E, float *ep, float *er)
-{
-    dh_mat4_f32 T;
-    dh_status st;
-    float sp = 0.0f, sr = 0.0f;
-    uint32_t k;
-
-    st = dh_jacobian_f32(r, q, J, &T);
-    if (st != DH_OK) return st;
-    if ((p->mask & (DH_IK_FULL & ~DH_IK_POSITION)) != 0u) {
-        st = dh_pose_error_f32(target, &T, e);
-        if (st != DH_OK) return st;
-    } else {            /* position only: the target's rotation is not read */
-        for (k = 0; k < 3u; k++) {
-            e[k] = target->m[3][k] - T.m[3][k];
-            e[k + 3u] = 0.0f;
-        }
-    }
-    for (k = 0; k < 6u; k++) {
-        if ((p->mask & (1u << k)) == 0u) continue;
-        if (k < 3u) sp += e[k] * e[k];
-        else sr += e[k] * e[k];
-    }
-    *ep = sqrtf(sp);
-    *er = sqrtf(sr);
-    *E = 0.5f * (sp + p->w_rot * p->w_rot * sr);
-    if (!ik_finite(*E)) return DH_ERR_OVERFLOW;
-    return DH_OK;
-}
-
-/*
- * Build (J^T W^2 J + damp I) restricted to the free joints (others get an
- * identity row/column and a zero right-hand side), factor it (Cholesky,
- * lower triangle in place) and solve for dx. 0 on success, -1 if the
- * factorisation failed (not positive definite in float / not finite).
- */
-static IK_NOINLINE int ik_solve(const ik_ws *w, uint32_t n, uint32_t free_bits, uint32_t mask, float w_rot,
-                    float damp)
-{
-    float *H = w->H, *g = w->g, *x = w->dx;
-    uint32_t i, j, k;
-
-    for (i = 0; i < n; i++) {
-        int fi = (free_bits >> i) & 1u;
-        float gi = 0.0f;
-        if (fi) {
-            for (k = 0; k < 6u; k++) {
-                float wk = ik_row_w(mask, k, w_rot);
-                gi += wk * wk * w->Ja[k * n + i] * w->ea[k];
-            }
-            gi *= w->cs[i];
-        }
-        g[i] = gi;
-        for (j = 0; j <= i; j++) {
-            float h = 0.0f;
-            int fj = (free_bits >> j) & 1u;
-            if (fi && fj) {
-                for (k = 0; k < 6u; k++) {
-                    float wk = ik_row_w(mask, k, w_rot);
-                    h += wk * wk * w->Ja[k * n + i] * w->Ja[k * n + j];
-                }
-                h *= w->cs[i] * w->cs[j];
-                if (i == j) h += damp;
-            } else if (i == j) {
-                h = 1.0f;
-            }
-            H[i * n + j] = h;
-        }
-    }
-    /* Cholesky: H = L L^T, L in the lower triangle */
-    for (j = 0; j < n; j++) {
-        float d = H[j * n + j];
-        for (k = 0; k < j; k++) d -= H[j * n + k] * H[j * n + k];
-        if (!(d > 0.0f) || !ik_finite(d)) return -1;
-        d = sqrtf(d);
-        H[j * n + j] = d;
-        for (i = j + 1u; i < n; i++) {
-            float s = H[i * n + j];
-            for (k = 0; k < j; k++) s -= H[i * n + k] * H[j * n + k];
-            H[i * n + j] = s / d;
-        }
-    }
-    /* L y = g, then L^T x = y */
-    for (i = 0; i < n; i++) {
-        float s = g[i];
-        for (k = 0; k < i; k++) s -= H[i * n + k] * x[k];
-        x[i] = s / H[i * n + i];
-    }
-    for (i = n; i-- > 0u;) {
-        float s = x[i];
-        for (k = i + 1u; k < n; k++) s -= H[k * n + i] * x[k];
-        x[i] = s / H[i * n + i];
-    }
-    for (i = 0; i < n; i++)
-        if (!ik_finite(x[i])) return -1;
-    return 0;
-}
+/* Column scale of the Jacobian in scaled variables (1 or L) and joint unit
+ * per scaled variable (deg per rad, or L). */
+static float ik_col_scale(const dh_joint *jt, float L) { return (jt->type == DH_JOINT_REVOLUTE) ? 1.0f : L; }
+static float ik_unit(const dh_joint *jt, float L) { return (jt->type == DH_JOINT_REVOLUTE) ? IK_RAD2DEG : L; }
 
 static float ik_clamp(const dh_joint *jt, float v)
 {
@@ -208,91 +149,497 @@ static float ik_clamp(const dh_joint *jt, float v)
     return v;
 }
 
-/* Characteristic length: sum of the link lengths, prismatic travel and tool offset. */
-static float ik_length_scale(const dh_robot *r)
+/* Euclidean norm of the masked components of v[0..2] without overflow in
+ * the squares (the result is +Inf only when the norm exceeds FLT_MAX). */
+static IK_NOINLINE float ik_norm3(const float *v, uint32_t mask)
 {
+    float m = 0.0f, s = 0.0f;
+    uint32_t k;
+    for (k = 0; k < 3u; k++)
+        if ((mask & (1u << k)) != 0u && fabsf(v[k]) > m) m = fabsf(v[k]);
+    if (!(m > 0.0f) || !ik_finite(m)) return m;
+    for (k = 0; k < 3u; k++)
+        if ((mask & (1u << k)) != 0u) s += (v[k] / m) * (v[k] / m);
+    return m * dh_kin_sqrtf_(s);
+}
+
+/* ---- argument checks and set-up ---------------------------------------- */
+
+/* Every check made before anything is written. */
+static IK_NOINLINE dh_status ik_args(const ik_ctx *c, size_t work_len)
+{
+    const dh_robot *r = c->r;
+    const dh_mat4_f32 *target = c->target;
+    const dh_ik_params *p = c->p;
+    const float *q0 = c->q0, *work = c->w;
+    uint32_t i, n = r->n;
+    if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    if (work == NULL || work_len < (size_t)DH_IK_WORK_FLOATS(n)) return DH_ERR_ARG;
+    if (p->max_iter == 0u || p->mask == 0u || (p->mask & ~(uint32_t)DH_IK_FULL) != 0u)
+        return DH_ERR_ARG;
+    if (!(p->tol_pos >= 0.0f) || !(p->tol_rot >= 0.0f) || !ik_finite(p->tol_pos) ||
+        !ik_finite(p->tol_rot))
+        return DH_ERR_ARG;
+    /* w_rot^2 times pi^2 (the largest orientation term of E) must be finite */
+    if (!(p->w_rot > 0.0f) || !ik_finite(p->w_rot * p->w_rot * 16.0f)) return DH_ERR_ARG;
+    if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_ARG;
+    if (r->conv != DH_CONV_STANDARD && r->conv != DH_CONV_MODIFIED) return DH_ERR_ARG;
+    for (i = 0; i < n; i++)
+        if (r->joint[i].type != DH_JOINT_REVOLUTE && r->joint[i].type != DH_JOINT_PRISMATIC)
+            return DH_ERR_ARG;
+    for (i = 0; i < 16u; i++)
+        if (!ik_finite(target->m[i / 4u][i % 4u])) return DH_ERR_NAN;
+    for (i = 0; i < n; i++)
+        if (!ik_finite(q0[i])) return DH_ERR_NAN;
+    /* a homogeneous transform of a rigid motion: bottom row exactly 0 0 0 1
+     * (a projective target such as a perspective matrix has no pose), and
+     * a rotation part when the orientation is driven */
+    if (target->m[0][3] != 0.0f || target->m[1][3] != 0.0f || target->m[2][3] != 0.0f ||
+        target->m[3][3] != 1.0f)
+        return DH_ERR_NOT_RIGID;
+    return DH_OK;     /* the caller checks the rotation part (stack depth) */
+}
+
+/* Characteristic length L (sum of the link lengths, prismatic travel and
+ * tool offset) and the damping bias into the scalar state. */
+static IK_NOINLINE void ik_scales(const ik_ctx *c)
+{
+    const dh_robot *r = c->r;
+    float *S = c->w + OFF_S(c->n);
     float L = 0.0f;
     uint32_t i;
     for (i = 0; i < r->n; i++) {
         const dh_joint *jt = &r->joint[i];
         L += fabsf(jt->a) + fabsf(jt->d);
         if (jt->type == DH_JOINT_PRISMATIC && jt->qmin <= jt->qmax)
-            L += fmaxf(fabsf(jt->qmin), fabsf(jt->qmax));
+            L += (fabsf(jt->qmin) > fabsf(jt->qmax)) ? fabsf(jt->qmin) : fabsf(jt->qmax);
     }
-    L += sqrtf(r->tool.m[3][0] * r->tool.m[3][0] + r->tool.m[3][1] * r->tool.m[3][1] +
-               r->tool.m[3][2] * r->tool.m[3][2]);
+    L += dh_kin_sqrtf_(r->tool.m[3][0] * r->tool.m[3][0] + r->tool.m[3][1] * r->tool.m[3][1] +
+                       r->tool.m[3][2] * r->tool.m[3][2]);
     if (!(L > FLT_MIN) || !ik_finite(L * L)) L = 1.0f;
-    return L;
+    S[S_L] = L;
+    S[S_WBAR] = DH_IK_WBAR * L * L;
+    S[S_MU] = 1.0f;
 }
 
 /*
- * One projected LM step from w->qa into w->qb. Joints on a bound whose step
- * points outward are frozen and the system is solved again (at most n + 1
- * solves); the rest of the step is clamped into the box.
- * Returns 1 if qb differs from qa, 0 for an empty step, -1 if the normal
- * matrix could not be factored.
+ * Upper bound of |p_end - p_base| over every configuration within the
+ * limits, or -1 when unbounded (a prismatic joint without limits). The
+ * chain's rotations are rigid, so each link moves the origin by at most
+ * |a| + |d| (|d + q| at the ends of a prismatic joint's range) and the tool
+ * by |p_tool|; the base's 3x3 part B (any matrix) scales lengths by at
+ * most ||B||_2 <= sqrt(max row sum of |B^T B|) (1 + O(tol) for a rotation,
+ * exact for a scaled rotation).
  */
-static IK_NOINLINE int ik_step(const dh_robot *r, const ik_ws *w, const dh_ik_params *p, uint32_t all_bits,
-                   float damp)
+static IK_NOINLINE float ik_reach(const dh_robot *r)
 {
-    uint32_t n = r->n, free_bits = all_bits, pass, i;
-    int moved = 0;
-
-    for (pass = 0; pass <= n; pass++) {
-        uint32_t frozen = 0u;
-        if (ik_solve(w, n, free_bits, p->mask, p->w_rot, damp) != 0) return -1;
-        for (i = 0; i < n; i++) {
-            const dh_joint *jt = &r->joint[i];
-            float dq;
-            if (((free_bits >> i) & 1u) == 0u || jt->qmin > jt->qmax) continue;
-            dq = w->dx[i] * w->sc[i];
-            if ((w->qa[i] <= jt->qmin && dq < 0.0f) || (w->qa[i] >= jt->qmax && dq > 0.0f))
-                frozen |= 1u << i;
+    const dh_mat4_f32 *B = &r->base;
+    float R = 0.0f, gmax = 1.0f;
+    uint32_t i, k, m;
+    for (i = 0; i < r->n; i++) {
+        const dh_joint *jt = &r->joint[i];
+        R += fabsf(jt->a);
+        if (jt->type == DH_JOINT_REVOLUTE) {
+            R += fabsf(jt->d);
+        } else {
+            float lo, hi;
+            if (jt->qmin > jt->qmax) return -1.0f;
+            lo = fabsf(jt->qmin + jt->d);
+            hi = fabsf(jt->qmax + jt->d);
+            R += (lo > hi) ? lo : hi;
         }
-        if (frozen == 0u) break;
-        free_bits &= ~frozen;
     }
+    R += dh_kin_sqrtf_(r->tool.m[3][0] * r->tool.m[3][0] + r->tool.m[3][1] * r->tool.m[3][1] +
+                       r->tool.m[3][2] * r->tool.m[3][2]);
+    if ((r->flags & DH_ROBOT_BASE_ID_F32) == 0u) {
+        gmax = 0.0f;
+        for (i = 0; i < 3u; i++) {
+            float rs = 0.0f;
+            for (k = 0; k < 3u; k++) {
+                float g = 0.0f;
+                for (m = 0; m < 3u; m++) g += B->m[i][m] * B->m[k][m];
+                rs += fabsf(g);
+            }
+            if (rs > gmax) gmax = rs;
+        }
+    }
+    return R * dh_kin_sqrtf_(gmax) * IK_REACH_SLACK;
+}
+
+/* 1 when the target is provably out of reach by more than tol_pos: the
+ * masked distance between the target position and the base origin exceeds
+ * R = ik_reach(). */
+static IK_NOINLINE int ik_hopeless(const ik_ctx *c, float R)
+{
+    float v[3];
+    uint32_t k;
+    if (!(R >= 0.0f) || !ik_finite(R)) return 0;
+    for (k = 0; k < 3u; k++) v[k] = c->target->m[3][k] - c->r->base.m[3][k];
+    return ik_norm3(v, c->p->mask) > R + c->p->tol_pos;
+}
+
+/* The rest of the context (r, target, p, q0, w set by the caller). */
+static IK_NOINLINE void ik_init(ik_ctx *c)
+{
+    uint32_t i;
+    c->n = c->r->n;
+    c->iter = 0u;
+    c->stall = 0u;
+    c->polish = 0u;
+    c->seed = 0x2545F491u;
+    c->cs = 0u;
+    c->mode = (uint8_t)M_FIRST;
+    c->conv = 0u;
+    c->end = 0u;
+    c->best_kind = K_NONE;
+    c->hopeless = 0u;
+    c->restarts = c->p->restarts;
+    /* the start, clamped into the box, is the first point evaluated (slot 1) */
+    for (i = 0; i < c->n; i++) c->w[OFF_Q(c->n, 1u) + i] = ik_clamp(&c->r->joint[i], c->q0[i]);
+}
+
+/* ---- evaluation of the trial slot --------------------------------------- */
+
+/* sin, cos of theta and d of every joint at the trial point (NaN for a
+ * non-finite sum, which makes the Jacobian pass report it). */
+static IK_NOINLINE void ik_trig(const ik_ctx *c)
+{
+    const float *q = c->w + OFF_Q(c->n, c->cs ^ 1u);
+    float *t = c->w + OFF_SCD(c->n);
+    uint32_t i;
+    for (i = 0; i < c->n; i++, t += 3) {
+        const dh_joint *jt = &c->r->joint[i];
+        if (jt->type == DH_JOINT_REVOLUTE) {
+            (void)dh_sincos_f32(q[i] + jt->theta_deg, &t[0], &t[1]);
+            t[2] = jt->d;
+        } else {
+            (void)dh_sincos_f32(jt->theta_deg, &t[0], &t[1]);
+            t[2] = q[i] + jt->d;
+        }
+    }
+}
+
+/* Position error of the frame into the trial slot; with the orientation
+ * driven, dR = R_target R^T (row-major) for the rotation vector, else a
+ * zero orientation error (the target's rotation is not read). */
+static IK_NOINLINE void ik_pos_err(const ik_ctx *c)
+{
+    const float *F = c->w + OFF_F(c->n);
+    float *e = c->w + OFF_E(c->n, c->cs ^ 1u), *d = c->w + OFF_D(c->n);
+    uint32_t i, j, k;
+    for (k = 0; k < 3u; k++) e[k] = c->target->m[3][k] - F[9u + k];
+    if (!ik_rot_mode(c->p->mask)) {
+        e[3] = 0.0f;
+        e[4] = 0.0f;
+        e[5] = 0.0f;
+        return;
+    }
+    for (i = 0; i < 3u; i++)
+        for (j = 0; j < 3u; j++) {
+            float s = 0.0f;
+            for (k = 0; k < 3u; k++) s += c->target->m[k][i] * F[3u * k + j];
+            d[3u * i + j] = s;
+        }
+}
+
+/* Masked norms and E of the trial slot's error into S_TE, S_TEP, S_TER:
+ * EV_OK, or EV_BIG when E is not finite (S_TEP then computed without
+ * overflow, +Inf only beyond FLT_MAX). */
+static IK_NOINLINE int ik_norms(const ik_ctx *c)
+{
+    const uint32_t mask = c->p->mask;
+    const float *e = c->w + OFF_E(c->n, c->cs ^ 1u);
+    float *S = c->w + OFF_S(c->n);
+    float sp = 0.0f, sr = 0.0f;
+    uint32_t k;
+    for (k = 0; k < 6u; k++) {
+        if ((mask & (1u << k)) == 0u) continue;
+        if (k < 3u) sp += e[k] * e[k];
+        else sr += e[k] * e[k];
+    }
+    S[S_TEP] = dh_kin_sqrtf_(sp);
+    S[S_TER] = dh_kin_sqrtf_(sr);
+    S[S_TE] = 0.5f * (sp + c->p->w_rot * c->p->w_rot * sr);
+    if (!ik_finite(S[S_TE])) {
+        S[S_TEP] = ik_norm3(e, mask);
+        return EV_BIG;
+    }
+    return EV_OK;
+}
+
+/* ---- the LM step --------------------------------------------------------- */
+
+/* Weighted, column-scaled Jacobian B = W J C and weighted error W e of the
+ * current point, written over the trial slot (free until the next
+ * evaluation). */
+static IK_NOINLINE void ik_weigh(const ik_ctx *c)
+{
+    const uint32_t n = c->n, mask = c->p->mask;
+    const float *J = c->w + OFF_J(n, c->cs), *e = c->w + OFF_E(n, c->cs);
+    float *B = c->w + OFF_J(n, c->cs ^ 1u), *we = c->w + OFF_E(n, c->cs ^ 1u);
+    const float L = c->w[OFF_S(n) + S_L];
+    uint32_t i, k;
+    for (k = 0; k < 6u; k++) {
+        const float wk = ik_row_w(mask, k, c->p->w_rot);
+        we[k] = wk * e[k];
+        for (i = 0; i < n; i++) B[k * n + i] = wk * (ik_col_scale(&c->r->joint[i], L) * J[k * n + i]);
+    }
+}
+
+/*
+ * Lower triangle of H = B^T B + damp I and g = B^T (W e), restricted to the
+ * free joints (the others get an identity row/column and g = 0), with
+ * damp = mu E + wbar.
+ */
+static IK_NOINLINE void ik_normal(const ik_ctx *c, uint32_t free_bits)
+{
+    const uint32_t n = c->n;
+    const float *B = c->w + OFF_J(n, c->cs ^ 1u), *we = c->w + OFF_E(n, c->cs ^ 1u);
+    const float *S = c->w + OFF_S(n);
+    float *H = c->w + OFF_H(n), *g = c->w + OFF_G(n);
+    uint32_t i, j, k;
     for (i = 0; i < n; i++) {
-        float dq = ((free_bits >> i) & 1u) ? w->dx[i] * w->sc[i] : 0.0f;
-        w->qb[i] = ik_clamp(&r->joint[i], w->qa[i] + dq);
-        if (w->qb[i] != w->qa[i]) moved = 1;
+        const uint32_t fi = (free_bits >> i) & 1u;
+        float s = 0.0f;
+        if (fi)
+            for (k = 0; k < 6u; k++) s += B[k * n + i] * we[k];
+        g[i] = s;
+        for (j = 0; j <= i; j++) {
+            s = (i == j) ? 1.0f : 0.0f;
+            if (fi && ((free_bits >> j) & 1u)) {
+                s = 0.0f;
+                for (k = 0; k < 6u; k++) s += B[k * n + i] * B[k * n + j];
+                if (i == j) s += S[S_MU] * S[S_E] + S[S_WBAR];
+            }
+            H[i * n + j] = s;
+        }
+    }
+}
+
+/*
+ * Factor H = L D L^T in place (unit L below the diagonal, D on it; no
+ * square root) and solve H dx = g. 0 on success, -1 if the factorisation
+ * failed (not positive definite in float / not finite).
+ */
+static IK_NOINLINE int ik_ldl(const ik_ctx *c)
+{
+    const uint32_t n = c->n;
+    float *H = c->w + OFF_H(n), *x = c->w + OFF_DX(n);
+    const float *g = c->w + OFF_G(n);
+    uint32_t i, j, k;
+    /* x[k] temporarily holds L_jk D_k for the current row j */
+    for (j = 0; j < n; j++) {
+        float *Hj = H + j * n;
+        float d = Hj[j];
+        for (k = 0; k < j; k++) {
+            x[k] = Hj[k] * H[k * n + k];
+            d -= Hj[k] * x[k];
+        }
+        if (!(d > 0.0f) || !ik_finite(d)) return -1;
+        Hj[j] = d;
+        for (i = j + 1u; i < n; i++) {
+            float *Hi = H + i * n;
+            float s = Hi[j];
+            for (k = 0; k < j; k++) s -= Hi[k] * x[k];
+            Hi[j] = s / d;
+        }
+    }
+    /* L y = g, y / D, then L^T x = that */
+    for (i = 0; i < n; i++) {
+        float s = g[i];
+        for (k = 0; k < i; k++) s -= H[i * n + k] * x[k];
+        x[i] = s;
+    }
+    for (i = 0; i < n; i++) x[i] /= H[i * n + i];
+    for (i = n; i-- > 0u;) {
+        float s = x[i];
+        for (k = i + 1u; k < n; k++) s -= H[k * n + i] * x[k];
+        x[i] = s;
+    }
+    for (i = 0; i < n; i++)
+        if (!ik_finite(x[i])) return -1;
+    return 0;
+}
+
+/* Free joints on a bound whose step points outward (bits). */
+static IK_NOINLINE uint32_t ik_freeze(const ik_ctx *c, uint32_t free_bits)
+{
+    const uint32_t n = c->n;
+    const float *qa = c->w + OFF_Q(n, c->cs), *dx = c->w + OFF_DX(n);
+    const float L = c->w[OFF_S(n) + S_L];
+    uint32_t i, frozen = 0u;
+    for (i = 0; i < n; i++) {
+        const dh_joint *jt = &c->r->joint[i];
+        float dq;
+        if (((free_bits >> i) & 1u) == 0u || jt->qmin > jt->qmax) continue;
+        dq = dx[i] * ik_unit(jt, L);
+        if ((qa[i] <= jt->qmin && dq < 0.0f) || (qa[i] >= jt->qmax && dq > 0.0f)) frozen |= 1u << i;
+    }
+    return frozen;
+}
+
+/* Trial point = current + step of the free joints, clamped into the box;
+ * 1 if it differs from the current point, 0 for an empty step. */
+static IK_NOINLINE int ik_apply(const ik_ctx *c, uint32_t free_bits)
+{
+    const uint32_t n = c->n;
+    const float *qa = c->w + OFF_Q(n, c->cs), *dx = c->w + OFF_DX(n);
+    float *qb = c->w + OFF_Q(n, c->cs ^ 1u);
+    const float L = c->w[OFF_S(n) + S_L];
+    uint32_t i;
+    int moved = 0;
+    for (i = 0; i < n; i++) {
+        const dh_joint *jt = &c->r->joint[i];
+        float dq = ((free_bits >> i) & 1u) ? dx[i] * ik_unit(jt, L) : 0.0f;
+        qb[i] = ik_clamp(jt, qa[i] + dq);
+        if (qb[i] != qa[i]) moved = 1;
     }
     return moved;
 }
 
-/* Deterministic restart point: uniform in the box for limited joints,
- * q0 +- 180 deg (revolute) or q0 +- L (prismatic) for free joints. */
-static IK_NOINLINE void ik_sample(const dh_robot *r, const float *q0, float L, uint32_t *seed, float *qo)
+/* ---- control -------------------------------------------------------------- */
+
+/* Deterministic restart point in the trial slot: uniform in the box for
+ * limited joints, q0 +- 180 deg (revolute) or q0 +- L (prismatic) for free
+ * joints. */
+static IK_NOINLINE void ik_sample(ik_ctx *c)
 {
+    const float L = c->w[OFF_S(c->n) + S_L];
+    float *qo = c->w + OFF_Q(c->n, c->cs ^ 1u);
     uint32_t i;
-    for (i = 0; i < r->n; i++) {
-        const dh_joint *jt = &r->joint[i];
-        uint32_t x = *seed;
+    for (i = 0; i < c->n; i++) {
+        const dh_joint *jt = &c->r->joint[i];
+        uint32_t x = c->seed;
         float u;
         x ^= x << 13;
         x ^= x >> 17;
         x ^= x << 5;
-        *seed = x;
+        c->seed = x;
         u = (float)(x >> 8) * (1.0f / 16777216.0f);     /* [0, 1) */
         if (jt->qmin <= jt->qmax) qo[i] = ik_clamp(jt, jt->qmin + u * (jt->qmax - jt->qmin));
-        else if (jt->type == DH_JOINT_REVOLUTE) qo[i] = q0[i] + (u * 360.0f - 180.0f);
-        else qo[i] = q0[i] + (2.0f * u - 1.0f) * L;
+        else if (jt->type == DH_JOINT_REVOLUTE) qo[i] = c->q0[i] + (u * 360.0f - 180.0f);
+        else qo[i] = c->q0[i] + (2.0f * u - 1.0f) * L;
     }
+    c->mode = (uint8_t)M_RESTART;
 }
 
-typedef struct {
-    float E, ep, er;
-} ik_err;
+static int ik_met(const float *S, const dh_ik_params *p)
+{
+    return S[S_EP] <= p->tol_pos && S[S_ER] <= p->tol_rot;
+}
+
+/* Make the trial slot the current point. */
+static void ik_take(ik_ctx *c, float *S)
+{
+    c->cs = (uint8_t)(c->cs ^ 1u);
+    S[S_E] = S[S_TE];
+    S[S_EP] = S[S_TEP];
+    S[S_ER] = S[S_TER];
+}
+
+/* After an evaluation (ev): accept or reject, update damping and
+ * counters; returns what to do next. */
+static IK_NOINLINE unsigned ik_update(ik_ctx *c, int ev)
+{
+    const dh_ik_params *p = c->p;
+    float *S = c->w + OFF_S(c->n);
+    if (c->mode == M_FIRST) {
+        if (ev != EV_OK) return A_FAIL;
+    } else {
+        c->iter++;
+    }
+    c->end = 0u;
+    if (c->mode != M_TRIAL) {
+        if (ev != EV_OK) {
+            /* a restart point that cannot be evaluated: try another */
+            if (c->restarts > 0u && c->iter < p->max_iter) {
+                c->restarts--;
+                return A_RETRY;
+            }
+            return A_BREAK;
+        }
+        ik_take(c, S);
+        S[S_MU] = 1.0f;
+        c->stall = 0u;
+        c->polish = 0u;
+        c->conv = (uint8_t)ik_met(S, p);
+    } else if (ev == EV_OK && S[S_TE] < S[S_E]) {
+        c->stall = (S[S_TE] < S[S_E] * IK_STALL_RATIO) ? 0u : c->stall + 1u;
+        ik_take(c, S);
+        if (c->conv) c->polish++;
+        S[S_MU] = (S[S_MU] * IK_MU_DOWN > IK_MU_MIN) ? S[S_MU] * IK_MU_DOWN : IK_MU_MIN;
+        if (!c->conv && ik_met(S, p)) {
+            c->conv = 1u;
+            S[S_MU] = IK_MU_MIN;    /* refine with the least damping */
+        }
+    } else {
+        /* rejected (higher error, or the trial could not be evaluated) */
+        c->stall++;
+        S[S_MU] *= IK_MU_UP;
+        if (c->conv) c->polish = IK_POLISH_STEPS;   /* at the float floor */
+    }
+    if (c->mode == M_TRIAL && !c->conv && (c->stall >= IK_STALL_STEPS || S[S_MU] > IK_MU_MAX))
+        c->end = (uint8_t)K_STALL;
+    c->mode = (uint8_t)M_TRIAL;
+    if (c->end == 0u && !(c->conv && c->polish >= IK_POLISH_STEPS) && c->iter < p->max_iter) return A_STEP;
+    return A_OVER;
+}
+
+/* The attempt is over (converged, stalled, singular or out of steps):
+ * keep it if it is the best so far (a converged point beats any other, then
+ * the lower E). Returns 1 when the solve is finished, 0 to restart. */
+static IK_NOINLINE int ik_record(ik_ctx *c)
+{
+    float *S = c->w + OFF_S(c->n);
+    const unsigned kind = c->conv ? K_CONV : (c->end != 0u ? c->end : K_CUT);
+    uint32_t i;
+    if (c->best_kind == K_NONE || (kind == K_CONV && c->best_kind != K_CONV) ||
+        ((kind == K_CONV) == (c->best_kind == K_CONV) && S[S_E] < S[S_BE])) {
+        c->best_kind = (uint8_t)kind;
+        S[S_BE] = S[S_E];
+        S[S_BEP] = S[S_EP];
+        S[S_BER] = S[S_ER];
+        for (i = 0; i < c->n; i++) c->w[OFF_QBEST(c->n) + i] = c->w[OFF_Q(c->n, c->cs) + i];
+    }
+    if (c->conv || c->end == 0u || c->restarts == 0u || c->iter >= c->p->max_iter) return 1;
+    c->restarts--;
+    return 0;
+}
+
+/* The start could not be evaluated: outputs untouched, except for a target
+ * so far out of reach that E overflows (UNREACHABLE, q = the clamped q0). */
+static IK_NOINLINE dh_status ik_start_failed(const ik_ctx *c, int ev, float *q, dh_ik_result *res)
+{
+    const float *S = c->w + OFF_S(c->n);
+    uint32_t i;
+    if (ev == EV_RIGID) return DH_ERR_NOT_RIGID;
+    if (ev == EV_FK || !c->hopeless) return DH_ERR_OVERFLOW;
+    for (i = 0; i < c->n; i++) q[i] = c->w[OFF_Q(c->n, 1u) + i];
+    res->iterations = 0u;
+    res->err_pos = ik_finite(S[S_TEP]) ? S[S_TEP] : FLT_MAX;
+    res->err_rot = S[S_TER];
+    return DH_ERR_UNREACHABLE;
+}
+
+/* Outputs and status from the best attempt. */
+static IK_NOINLINE dh_status ik_finish(const ik_ctx *c, float *q, dh_ik_result *res)
+{
+    const float *S = c->w + OFF_S(c->n);
+    uint32_t i;
+    for (i = 0; i < c->n; i++) q[i] = c->w[OFF_QBEST(c->n) + i];
+    res->iterations = c->iter;
+    res->err_pos = S[S_BEP];
+    res->err_rot = S[S_BER];
+    if (c->best_kind == K_CONV) return DH_OK;
+    if (c->hopeless || c->best_kind == K_STALL) return DH_ERR_UNREACHABLE;
+    if (c->best_kind == K_SING) return DH_ERR_SINGULAR;
+    return DH_ERR_NO_CONVERGENCE;
+}
 
 dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q0, float *q,
                     const dh_ik_params *p, float *work, size_t work_len, dh_ik_result *res)
 {
-    ik_ws w;
-    ik_err cur, best;
-    uint32_t n, i, iter = 0u, stall = 0u, polish = 0u, restarts, seed = 0x2545F491u;
-    uint32_t all_bits;
-    float L, wbar, mu = 1.0f;
-    int conv, best_conv = 0, end = 0;   /* end: 1 stalled, 2 singular (last attempt) */
+    ik_ctx c;
     dh_status st;
 
     DH_ASSERT(r != NULL);
@@ -302,110 +649,69 @@ dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q
     DH_ASSERT(p != NULL);
     DH_ASSERT(res != NULL);
 
-    n = r->n;
-    if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
-    if (work == NULL || work_len < (size_t)DH_IK_WORK_FLOATS(n)) return DH_ERR_ARG;
-    if (p->max_iter == 0u || p->mask == 0u || (p->mask & ~(uint32_t)DH_IK_FULL) != 0u)
-        return DH_ERR_ARG;
-    if (!(p->tol_pos >= 0.0f) || !(p->tol_rot >= 0.0f) || !ik_finite(p->tol_pos) ||
-        !ik_finite(p->tol_rot))
-        return DH_ERR_ARG;
-    if (!(p->w_rot > 0.0f) || !ik_finite(p->w_rot * p->w_rot)) return DH_ERR_ARG;
-    for (i = 0; i < 16u; i++)
-        if (!ik_finite(target->m[i / 4u][i % 4u])) return DH_ERR_NAN;
-    for (i = 0; i < n; i++)
-        if (!ik_finite(q0[i])) return DH_ERR_NAN;
-
-    ik_layout(&w, work, n);
-    L = ik_length_scale(r);
-    wbar = DH_IK_WBAR * L * L;
-    all_bits = (n >= 32u) ? 0xFFFFFFFFu : ((1u << n) - 1u);
-    restarts = p->restarts;
-    for (i = 0; i < n; i++) {
-        const dh_joint *jt = &r->joint[i];
-        w.sc[i] = (jt->type == DH_JOINT_REVOLUTE) ? IK_RAD2DEG : L;
-        w.cs[i] = (jt->type == DH_JOINT_REVOLUTE) ? 1.0f : L;
-        w.qa[i] = ik_clamp(jt, q0[i]);
-    }
-    st = ik_eval(r, target, w.qa, p, w.Ja, w.ea, &cur.E, &cur.ep, &cur.er);
+    c.r = r;
+    c.target = target;
+    c.p = p;
+    c.q0 = q0;
+    c.w = work;
+    st = ik_args(&c, work_len);
     if (st != DH_OK) return st;
-    conv = (cur.ep <= p->tol_pos && cur.er <= p->tol_rot);
-    best = cur;
-    best_conv = conv;
-    for (i = 0; i < n; i++) w.qbest[i] = w.qa[i];
+    if (ik_rot_mode(p->mask) && !dh_kin_rot_ok_f32_(target->m[0], target->m[1], target->m[2]))
+        return DH_ERR_NOT_RIGID;
+    ik_init(&c);
+    ik_scales(&c);
+    if (ik_hopeless(&c, ik_reach(r))) {
+        c.hopeless = 1u;
+        if (c.restarts > IK_HOPELESS_RESTARTS) c.restarts = IK_HOPELESS_RESTARTS;
+    }
 
-    while (iter < p->max_iter && !(conv && polish >= IK_POLISH_STEPS)) {
-        ik_err tr;
-        int k = ik_step(r, &w, p, all_bits, mu * cur.E + wbar);
-        end = 0;
-        if (k < 0) {
-            end = 2;
-        } else if (k == 0) {
-            end = 1;            /* empty projected step: nothing left to do */
-        } else {
-            st = ik_eval(r, target, w.qb, p, w.Jb, w.eb, &tr.E, &tr.ep, &tr.er);
-            iter++;
-            if (st == DH_OK && tr.E < cur.E) {
-                float *t;
-                stall = (tr.E < cur.E * IK_STALL_RATIO) ? 0u : stall + 1u;
-                t = w.Ja; w.Ja = w.Jb; w.Jb = t;
-                t = w.ea; w.ea = w.eb; w.eb = t;
-                t = w.qa; w.qa = w.qb; w.qb = t;
-                if (conv) polish++;
-                cur = tr;
-                mu = (mu * IK_MU_DOWN > IK_MU_MIN) ? mu * IK_MU_DOWN : IK_MU_MIN;
-                if (!conv && cur.ep <= p->tol_pos && cur.er <= p->tol_rot) {
-                    conv = 1;
-                    mu = IK_MU_MIN;     /* refine with the least damping */
-                }
-            } else {
-                /* rejected (higher error, or the trial could not be evaluated) */
-                stall++;
-                mu *= IK_MU_UP;
-                if (conv) polish = IK_POLISH_STEPS;   /* at the float floor */
+    for (;;) {
+        const uint32_t n = c.n;
+        const unsigned t = c.cs ^ 1u;
+        unsigned act;
+        int ev = EV_FK;
+        /* evaluate the trial slot: joint sin/cos, Jacobian and end frame,
+         * error (each block called from here, so the chain stays shallow) */
+        ik_trig(&c);
+        if (dh_kin_jac_f32_(r, work + OFF_SCD(n), work + OFF_J(n, t), work + OFF_F(n))) {
+            const float *F = work + OFF_F(n);
+            ev = EV_RIGID;
+            if (c.mode != M_FIRST || !ik_rot_mode(p->mask) || dh_kin_rot_ok_f32_(F, F + 3, F + 6)) {
+                ik_pos_err(&c);
+                if (ik_rot_mode(p->mask)) dh_kin_rotvec_f32_(work + OFF_D(n), work + OFF_E(n, t) + 3);
+                ev = ik_norms(&c);
             }
-            if (!conv && (stall >= IK_STALL_STEPS || mu > IK_MU_MAX)) end = 1;
         }
-        if (end == 0) continue;
-        /* this attempt is over (local minimum / stuck at limits / singular) */
-        if (cur.E < best.E) {
-            best = cur;
-            best_conv = conv;
-            for (i = 0; i < n; i++) w.qbest[i] = w.qa[i];
+        act = ik_update(&c, ev);
+        if (act == A_FAIL) return ik_start_failed(&c, ev, q, res);
+        if (act == A_RETRY) {
+            ik_sample(&c);
+            continue;
         }
-        if (conv) break;
-        /* restart from a deterministic pseudo-random point in the box (a
-         * point where FK is not evaluable is skipped) */
-        st = DH_ERR_NO_CONVERGENCE;
-        while (restarts > 0u && iter < p->max_iter) {
-            restarts--;
-            ik_sample(r, q0, L, &seed, w.qa);
-            st = ik_eval(r, target, w.qa, p, w.Ja, w.ea, &cur.E, &cur.ep, &cur.er);
-            iter++;
-            if (st == DH_OK) break;
+        if (act == A_BREAK) break;
+        if (act == A_STEP) {
+            /* projected step: joints on a bound pushed outward are frozen
+             * and the system solved again (at most n + 1 solves) */
+            uint32_t free_bits = (n >= 32u) ? 0xFFFFFFFFu : ((1u << n) - 1u), pass;
+            int k = 0;
+            ik_weigh(&c);
+            for (pass = 0; pass <= n; pass++) {
+                uint32_t frozen;
+                ik_normal(&c, free_bits);
+                if (ik_ldl(&c) != 0) {
+                    k = -1;
+                    break;
+                }
+                frozen = ik_freeze(&c, free_bits);
+                if (frozen == 0u) break;
+                free_bits &= ~frozen;
+            }
+            if (k == 0) k = ik_apply(&c, free_bits);
+            if (k > 0) continue;
+            c.end = (uint8_t)((k < 0) ? K_SING : K_STALL);   /* singular, or an empty projected step */
         }
-        if (st != DH_OK) {
-            cur.E = FLT_MAX;    /* nothing new: best stays */
-            break;
-        }
-        conv = (cur.ep <= p->tol_pos && cur.er <= p->tol_rot);
-        mu = 1.0f;
-        stall = 0u;
-        polish = 0u;
-        end = 0;
+        if (ik_record(&c)) break;
+        ik_sample(&c);      /* restart from a deterministic pseudo-random point */
     }
-    if (cur.E < best.E) {
-        best = cur;
-        best_conv = conv;
-        for (i = 0; i < n; i++) w.qbest[i] = w.qa[i];
-    }
-
-    for (i = 0; i < n; i++) q[i] = w.qbest[i];
-    res->iterations = iter;
-    res->err_pos = best.ep;
-    res->err_rot = best.er;
-    if (best_conv) return DH_OK;
-    if (end == 1) return DH_ERR_UNREACHABLE;
-    if (end == 2) return DH_ERR_SINGULAR;
-    return DH_ERR_NO_CONVERGENCE;
+    return ik_finish(&c, q, res);
 }

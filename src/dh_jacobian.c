@@ -11,38 +11,244 @@
  * Rz(theta_i) Tz(d_i)); the origin of that frame lies on the axis in both
  * cases. One pass over the chain: while the frames are accumulated, column
  * i temporarily holds o_i (rows 0..2) and z_i (rows 3..5); once p_e is known
- * the columns are completed in place. Stack: two 4x4 matrices.
+ * the columns are completed in place.
+ *
+ * Stack (issue 5: <= 256 bytes per public function INCLUDING callees and
+ * libgcc): the running frame is a 3x4 (12 floats) updated in place, one
+ * row at a time, straight from the DH definitions (seed 003):
+ *   standard, F <- F * Rz(theta) Tz(d) Tx(a) Rx(alpha), columns n o a p:
+ *     n' = c n + s o,  u = c o - s n,  p' = p + d a + a_len n',
+ *     o' = ca u + sa a,  a' = ca a - sa u
+ *   modified, F <- F * Rx(alpha) Tx(a) Rz(theta) Tz(d):
+ *     o1 = ca o + sa a,  a' = ca a - sa o,  p' = p + a_len n + d a',
+ *     n' = c n + s o1,  o' = c o1 - s n
+ * No link matrix and no 4x4 product are formed, and the only callee below
+ * the public functions is dh_sincos_f32 (and libgcc). The orientation error
+ * uses the library's own atan2 (dh_mathf.h; newlib's atan2f needs 176+
+ * bytes of stack on Cortex-M0+).
  */
 #include "dhmath/dh_kin.h"
-#include "dhmath/dh_mat4.h"
+#include "dhmath/dh_trig.h"
+#include "dh_kin_impl.h"
+#include "dh_mathf.h"
 
 #include <float.h>
 #include <math.h>
+#include <string.h>
 
-static int jac_finite(float x) { return fabsf(x) <= FLT_MAX; }
+/* Finite test on the bits (no soft-float comparison call on Cortex-M0+). */
+static int jac_finite(float x)
+{
+    uint32_t u;
+    memcpy(&u, &x, sizeof u);
+    return (u & 0x7F800000u) != 0x7F800000u;
+}
 
-/* Store the axis frame of column c: origin in rows 0..2, z in rows 3..5. */
-static void jac_store_axis(float *J, uint32_t n, uint32_t c, const dh_mat4_f32 *T)
+/* Frames are kept apart (noinline) so that the worst-case stack is the
+ * measured chain of small frames; jac_run is inlined into both public
+ * Jacobians so that no wrapper frame adds to it. */
+#if defined(__GNUC__) || defined(__clang__)
+#define JAC_NOINLINE __attribute__((noinline))
+#define JAC_INLINE static inline __attribute__((always_inline))
+#else
+#define JAC_NOINLINE
+#define JAC_INLINE static
+#endif
+
+/*
+ * Correctly rounded square root in integer arithmetic (IEEE binary32,
+ * round to nearest), so that the float path needs no libm: newlib's sqrtf
+ * costs 72 bytes of stack on Cortex-M0+, a quarter of the budget. x = m
+ * 2^ex with a 24-bit m; the root of M = m 2^K, K = 26 or 25 so that ex - K
+ * is even and M lies in [2^48, 2^50), is taken bit by bit (25 bits, the
+ * last one the rounding bit, no remainder needed: the square root of a float is never exactly
+ * half-way between two floats, so rounding that bit up is round to
+ * nearest). Special cases as sqrtf: +-0 -> +-0, +Inf -> +Inf, NaN or
+ * x < 0 -> NaN.
+ */
+float dh_kin_sqrtf_(float x)
+{
+    uint32_t u, m, e, rem = 0u, root = 0u, i;
+    int32_t eb;
+    float y;
+    memcpy(&u, &x, sizeof u);
+    if ((u & 0x7FFFFFFFu) == 0u || u == 0x7F800000u) return x;      /* +-0, +Inf */
+    if (u > 0x7F800000u) {                                          /* NaN, x < 0 */
+        u = 0x7FC00000u;
+        memcpy(&y, &u, sizeof y);
+        return y;
+    }
+    e = u >> 23;
+    m = u & 0x007FFFFFu;
+    eb = (int32_t)e;
+    if (e == 0u) {          /* subnormal: normalise, eb may go down to -22 */
+        eb = 1;
+        while ((m & 0x00800000u) == 0u) {
+            m <<= 1;
+            eb--;
+        }
+    } else {
+        m |= 0x00800000u;
+    }
+    /* x = m 2^(eb - 150). M = m 2^K = mm 2^24 with mm = m 2^(K - 24) < 2^26:
+     * its 25 bit pairs are the 13 of mm and 12 zero pairs; one root bit per
+     * pair, remainder < 2^27 (32-bit arithmetic throughout). */
+    m <<= (((uint32_t)eb & 1u) != 0u) ? 1u : 2u;
+    for (i = 0; i < 25u; i++) {
+        uint32_t trial;
+        rem = (rem << 2) | ((i < 13u) ? (m >> (24u - 2u * i)) & 3u : 0u);
+        trial = (root << 2) | 1u;
+        if (rem >= trial) {
+            rem -= trial;
+            root = (root << 1) | 1u;
+        } else {
+            root <<= 1;
+        }
+    }
+    /* root in [2^24, 2^25): round its last bit away; the result is
+     * (root / 2) 2^((eb - 150 - K) / 2 + 1), biased exponent (eb + 152 - K) / 2
+     * (the implicit bit of the mantissa adds one to the exponent field,
+     * also when rounding carries into 2^24) */
+    m = (root >> 1) + (root & 1u);
+    e = (uint32_t)((eb + 152 - ((((uint32_t)eb & 1u) != 0u) ? 25 : 26)) / 2 - 1);
+    u = (e << 23) + m;
+    memcpy(&y, &u, sizeof y);
+    return y;
+}
+
+/* Column c of J holds the axis of its joint: origin (F's p) in rows 0..2,
+ * z (F's a) in rows 3..5. */
+static void jac_axis(const float *F, float *J, uint32_t n, uint32_t c)
 {
     uint32_t k;
     for (k = 0; k < 3u; k++) {
-        J[k * n + c] = T->m[3][k];
-        J[(k + 3u) * n + c] = T->m[2][k];
+        J[k * n + c] = F[9u + k];
+        J[(k + 3u) * n + c] = F[6u + k];
     }
 }
 
-dh_status dh_jacobian_f32(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end)
+/* One standard-DH link on the frame: F <- F * A with t = (sin theta,
+ * cos theta, d) and the twist and length of joint j. */
+static JAC_NOINLINE void jac_std(float *F, const float *t, const dh_joint *j)
 {
-    dh_mat4_f32 T, A;
-    uint32_t i, n, k;
-    float pe[3];
-    int finite = 1;
+    uint32_t k;
+    for (k = 0; k < 3u; k++) {
+        float nx = F[k], ox = F[3u + k], ax = F[6u + k];
+        float n1 = t[1] * nx + t[0] * ox, u = t[1] * ox - t[0] * nx;
+        F[9u + k] = F[9u + k] + t[2] * ax + j->a * n1;
+        F[k] = n1;
+        F[3u + k] = j->ca * u + j->sa * ax;
+        F[6u + k] = j->ca * ax - j->sa * u;
+    }
+}
 
-    DH_ASSERT(r != NULL);
-    DH_ASSERT(q != NULL);
-    DH_ASSERT(J != NULL);
+/* One modified-DH link on the frame (arguments as jac_std). */
+static JAC_NOINLINE void jac_mod(float *F, const float *t, const dh_joint *j)
+{
+    uint32_t k;
+    for (k = 0; k < 3u; k++) {
+        float nx = F[k], ox = F[3u + k], ax = F[6u + k];
+        float o1 = j->ca * ox + j->sa * ax, a1 = j->ca * ax - j->sa * ox;
+        F[9u + k] = F[9u + k] + j->a * nx + t[2] * a1;
+        F[k] = t[1] * nx + t[0] * o1;
+        F[3u + k] = t[1] * o1 - t[0] * nx;
+        F[6u + k] = a1;
+    }
+}
 
-    n = r->n;
+/* One link: F <- F * A_i with t = (sin theta, cos theta, d); stores the
+ * axis of joint i in column i of J (before the update for standard DH,
+ * after it for modified DH). */
+JAC_INLINE void jac_link(const dh_robot *r, uint32_t i, const float *t, float *F, float *J)
+{
+    if (r->conv == DH_CONV_STANDARD) {
+        jac_axis(F, J, r->n, i);
+        jac_std(F, t, &r->joint[i]);
+    } else {
+        jac_mod(F, t, &r->joint[i]);
+        jac_axis(F, J, r->n, i);
+    }
+}
+
+/* F = the base's 3x4 part. */
+static void jac_start(const dh_robot *r, float *F)
+{
+    uint32_t c, k;
+    for (c = 0; c < 4u; c++)
+        for (k = 0; k < 3u; k++) F[3u * c + k] = r->base.m[c][k];
+}
+
+/* F <- F * tool (in place, row by row). */
+static JAC_NOINLINE void jac_tool(const dh_robot *r, float *F)
+{
+    const dh_mat4_f32 *T = &r->tool;
+    uint32_t i, k;
+    if ((r->flags & DH_ROBOT_TOOL_ID_F32) != 0u) return;
+    for (k = 0; k < 3u; k++) {
+        float r0 = F[k], r1 = F[3u + k], r2 = F[6u + k], r3 = F[9u + k];
+        for (i = 0; i < 3u; i++) F[3u * i + k] = r0 * T->m[i][0] + r1 * T->m[i][1] + r2 * T->m[i][2];
+        F[9u + k] = (r0 * T->m[3][0] + r1 * T->m[3][1] + r2 * T->m[3][2]) + r3;
+    }
+}
+
+/* 1 when v[0..len-1] are all finite. */
+static JAC_NOINLINE int jac_all_finite(const float *v, uint32_t len)
+{
+    uint32_t k;
+    int fin = 1;
+    for (k = 0; k < len; k++)
+        if (!jac_finite(v[k])) fin = 0;
+    return fin;
+}
+
+/* Complete the columns of J with the end point F's p (cross products). */
+static JAC_NOINLINE void jac_cols(const dh_robot *r, const float *F, float *J)
+{
+    const uint32_t n = r->n;
+    uint32_t i, k;
+    for (i = 0; i < n; i++) {
+        float *col = J + i;
+        if (r->joint[i].type == DH_JOINT_REVOLUTE) {
+            float dx = F[9] - col[0u * n], dy = F[10] - col[1u * n], dz = F[11] - col[2u * n];
+            col[0u * n] = col[4u * n] * dz - col[5u * n] * dy;
+            col[1u * n] = col[5u * n] * dx - col[3u * n] * dz;
+            col[2u * n] = col[3u * n] * dy - col[4u * n] * dx;
+        } else {
+            for (k = 0; k < 3u; k++) {
+                col[k * n] = col[(k + 3u) * n];
+                col[(k + 3u) * n] = 0.0f;
+            }
+        }
+    }
+}
+
+int dh_kin_jac_f32_(const dh_robot *r, const float *scd, float *J, float *F)
+{
+    uint32_t i;
+    jac_start(r, F);
+    for (i = 0; i < r->n; i++) jac_link(r, i, &scd[3u * i], F, J);
+    jac_tool(r, F);
+    jac_cols(r, F, J);
+    return jac_all_finite(J, 6u * r->n) & jac_all_finite(F, 12u);
+}
+
+/* Both halves of every column rotated by R^T (R = F's rotation): v' = R^T v,
+ * component k = column k of R . v. */
+static JAC_NOINLINE void jac_to_tool(const float *F, float *J, uint32_t n)
+{
+    uint32_t c, h, k;
+    for (c = 0; c < n; c++)
+        for (h = 0; h < 6u; h += 3u) {
+            float vx = J[(h + 0u) * n + c], vy = J[(h + 1u) * n + c], vz = J[(h + 2u) * n + c];
+            for (k = 0; k < 3u; k++)
+                J[(h + k) * n + c] = F[3u * k] * vx + F[3u * k + 1u] * vy + F[3u * k + 2u] * vz;
+        }
+}
+
+/* Argument checks of the public Jacobians (nothing written). */
+static JAC_NOINLINE dh_status jac_check(const dh_robot *r, const float *q)
+{
+    uint32_t i, n = r->n;
     if (n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     /* float path unavailable: stale float base/tool or joints without float
      * parameters (checked here so that J stays untouched, also for n == 0) */
@@ -53,75 +259,72 @@ dh_status dh_jacobian_f32(const dh_robot *r, const float *q, float *J, dh_mat4_f
         if (r->joint[i].type != DH_JOINT_REVOLUTE && r->joint[i].type != DH_JOINT_PRISMATIC)
             return DH_ERR_ARG;
     }
-    T = r->base;
     for (i = 0; i < n; i++) {
-        dh_status st;
-        if (r->conv == DH_CONV_STANDARD) jac_store_axis(J, n, i, &T);
-        st = dh_link_f32(r, i, q[i], &A);
-        if (st != DH_OK) {
-            /* not expected after the checks above; J is defined anyway */
-            for (k = 0; k < 6u * n; k++) J[k] = 0.0f;
-            return st;
-        }
-        dh_mat4_mul_affine_f32(&T, &T, &A);
-        if (r->conv == DH_CONV_MODIFIED) jac_store_axis(J, n, i, &T);
+        const dh_joint *j = &r->joint[i];
+        if (!jac_finite(q[i] + ((j->type == DH_JOINT_REVOLUTE) ? j->theta_deg : j->d)))
+            return DH_ERR_OVERFLOW;
     }
-    dh_mat4_mul_affine_f32(&T, &T, &r->tool);
-    for (k = 0; k < 3u; k++) pe[k] = T.m[3][k];
-
-    for (i = 0; i < n; i++) {
-        float ox = J[0u * n + i], oy = J[1u * n + i], oz = J[2u * n + i];
-        float zx = J[3u * n + i], zy = J[4u * n + i], zz = J[5u * n + i];
-        if (r->joint[i].type == DH_JOINT_REVOLUTE) {
-            float dx = pe[0] - ox, dy = pe[1] - oy, dz = pe[2] - oz;
-            J[0u * n + i] = zy * dz - zz * dy;
-            J[1u * n + i] = zz * dx - zx * dz;
-            J[2u * n + i] = zx * dy - zy * dx;
-        } else {
-            J[0u * n + i] = zx;
-            J[1u * n + i] = zy;
-            J[2u * n + i] = zz;
-            J[3u * n + i] = 0.0f;
-            J[4u * n + i] = 0.0f;
-            J[5u * n + i] = 0.0f;
-        }
-    }
-    for (k = 0; k < 6u * n; k++)
-        if (!jac_finite(J[k])) finite = 0;
-    if (!dh_mat4_isfinite_f32(&T)) finite = 0;
-    if (T_end != NULL) *T_end = T;
-    return finite ? DH_OK : DH_ERR_OVERFLOW;
+    return DH_OK;
 }
 
-dh_status dh_jacobian_tool_f32(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end)
+/* sin, cos of theta and d of joint i at q into t[0..2]. */
+static JAC_NOINLINE void jac_trig(const dh_joint *j, float q, float *t)
 {
-    dh_mat4_f32 T;
-    uint32_t n, c, h, k;
+    if (j->type == DH_JOINT_REVOLUTE) {
+        (void)dh_sincos_f32(q + j->theta_deg, &t[0], &t[1]);
+        t[2] = j->d;
+    } else {
+        (void)dh_sincos_f32(j->theta_deg, &t[0], &t[1]);
+        t[2] = q + j->d;
+    }
+}
+
+/* T_end (may be NULL) = F with the bottom row 0 0 0 1. */
+static JAC_NOINLINE void jac_store(const float *F, dh_mat4_f32 *T_end)
+{
+    uint32_t c, k;
+    if (T_end == NULL) return;
+    for (c = 0; c < 4u; c++) {
+        for (k = 0; k < 3u; k++) T_end->m[c][k] = F[3u * c + k];
+        T_end->m[c][3] = (c == 3u) ? 1.0f : 0.0f;
+    }
+}
+
+/* Shared body of the two public Jacobians (tool != 0: tool frame). */
+JAC_INLINE dh_status jac_run(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end, int tool)
+{
+    float F[12], t[3];
+    uint32_t i;
+    int fin;
     dh_status st;
 
     DH_ASSERT(r != NULL);
     DH_ASSERT(q != NULL);
     DH_ASSERT(J != NULL);
 
-    /* dh_jacobian_f32 returns DH_ERR_OVERFLOW both with T computed (a
-     * non-finite result) and without it (a link that could not be formed:
-     * J zero-filled, T not written). A written T always ends in 1, so a 0
-     * placed there first tells the two apart; T is never used uninitialised. */
-    T.m[3][3] = 0.0f;
-    st = dh_jacobian_f32(r, q, J, &T);
-    if (st != DH_OK && st != DH_ERR_OVERFLOW) return st;
-    if (T.m[3][3] != 1.0f) return st;
-    n = r->n;
-    /* each half of each column: v' = R^T v (row k of R^T = column k of R) */
-    for (c = 0; c < n; c++) {
-        for (h = 0; h < 6u; h += 3u) {
-            float vx = J[(h + 0u) * n + c], vy = J[(h + 1u) * n + c], vz = J[(h + 2u) * n + c];
-            for (k = 0; k < 3u; k++)
-                J[(h + k) * n + c] = T.m[k][0] * vx + T.m[k][1] * vy + T.m[k][2] * vz;
-        }
+    st = jac_check(r, q);
+    if (st != DH_OK) return st;
+    jac_start(r, F);
+    for (i = 0; i < r->n; i++) {
+        jac_trig(&r->joint[i], q[i], t);
+        jac_link(r, i, t, F, J);
     }
-    if (T_end != NULL) *T_end = T;
-    return st;
+    jac_tool(r, F);
+    jac_cols(r, F, J);
+    fin = jac_all_finite(J, 6u * r->n) & jac_all_finite(F, 12u);
+    if (tool) jac_to_tool(F, J, r->n);
+    jac_store(F, T_end);
+    return fin ? DH_OK : DH_ERR_OVERFLOW;
+}
+
+dh_status dh_jacobian_f32(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end)
+{
+    return jac_run(r, q, J, T_end, 0);
+}
+
+dh_status dh_jacobian_tool_f32(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end)
+{
+    return jac_run(r, q, J, T_end, 1);
 }
 
 /* det of the 3x3 whose columns are c0, c1, c2: c0 . (c1 x c2) */
@@ -131,81 +334,101 @@ static float det3(const float *c0, const float *c1, const float *c2)
            c0[2] * (c1[0] * c2[1] - c1[1] * c2[0]);
 }
 
-/* |x| <= tol for every entry of R^T R - I, and det R > 0 (a reflection is
- * orthonormal but not a rotation: its a(dR) would be meaningless). */
-static int rot_is_orthonormal(const dh_mat3_f32 *R, float tol)
+/* |x| <= DH_ROT_ERROR_TOL for every entry of R^T R - I, and det R > 0 (a
+ * reflection is orthonormal but not a rotation: its a(dR) would be
+ * meaningless). */
+int dh_kin_rot_ok_f32_(const float *c0, const float *c1, const float *c2)
 {
+    const float *col[3];
     uint32_t a, b, k;
+    col[0] = c0;
+    col[1] = c1;
+    col[2] = c2;
     for (a = 0; a < 3u; a++)
         for (b = a; b < 3u; b++) {
             float s = 0.0f;
-            for (k = 0; k < 3u; k++) s += R->m[a][k] * R->m[b][k];
+            for (k = 0; k < 3u; k++) s += col[a][k] * col[b][k];
             if (a == b) s -= 1.0f;
-            if (!(fabsf(s) <= tol)) return 0;   /* NaN fails too */
+            if (!(fabsf(s) <= DH_ROT_ERROR_TOL)) return 0;   /* NaN fails too */
         }
-    return det3(R->m[0], R->m[1], R->m[2]) > 0.0f;
+    return det3(c0, c1, c2) > 0.0f;
 }
 
 /*
- * a(dR) of seed 003 for d = dR (d[row][col]); writes w. Never fails for
- * finite input.
+ * theta > 90 deg: u = 2 sin(theta) k loses its relative accuracy as
+ * theta -> 180, so the axis comes from the symmetric part, which does not
+ * vanish there: (dR + dR^T)/2 = c I + (1 - c) k k^T, c = cos(theta). The
+ * largest diagonal entry gives the best-conditioned component k_m; the
+ * others follow from row m. The sign is the one of u (held in w on entry;
+ * ambiguous only at exactly 180 deg, where w and -w are the same rotation,
+ * and there k_m > 0 is kept). The seed's diagonal special cases
+ * (1,-1,-1), (-1,1,-1), (-1,-1,1) -> pi e_m are exact instances.
  */
-static void rot_vec_of(float d[3][3], float w[3])
+static void rotvec_big(const float *d, float *w, float tr, float theta)
 {
-    float ux, uy, uz, un, tr, theta;
+    float c = 0.5f * tr, omc = 1.0f - c;   /* omc in (1, 2] */
+    float kv[3], km, kn, s;
+    uint32_t m = 0u, a;
+    if (d[4] > d[4u * m]) m = 1u;
+    if (d[8] > d[4u * m]) m = 2u;
+    km = (d[4u * m] - c) / omc;
+    km = dh_kin_sqrtf_(km > 0.0f ? km : 0.0f);
+    if (!(km > 0.0f)) km = 1.0f;   /* unreachable for a rotation (km^2 >= 1/3) */
+    for (a = 0; a < 3u; a++)
+        kv[a] = (a == m) ? km : 0.5f * (d[3u * a + m] + d[3u * m + a]) / (omc * km);
+    kn = dh_kin_sqrtf_(kv[0] * kv[0] + kv[1] * kv[1] + kv[2] * kv[2]);
+    s = (kv[0] * w[0] + kv[1] * w[1] + kv[2] * w[2] < 0.0f) ? -theta / kn : theta / kn;
+    w[0] = s * kv[0];
+    w[1] = s * kv[1];
+    w[2] = s * kv[2];
+}
 
-    /* The seed's identity case (diagonal 1, 1, 1 -> 0) is NOT tested on the
-     * diagonal alone: in float the diagonal rounds to exactly 1 for angles
-     * below ~3e-4 rad while the skew part still carries the rotation. The
-     * identity falls out of the general case below (u = 0 -> w = 0). */
-    ux = d[2][1] - d[1][2];
-    uy = d[0][2] - d[2][0];
-    uz = d[1][0] - d[0][1];
-    un = sqrtf(ux * ux + uy * uy + uz * uz);   /* = 2 sin(theta) */
-    tr = d[0][0] + d[1][1] + d[2][2] - 1.0f;   /* = 2 cos(theta) */
-    theta = atan2f(un, tr);                    /* in [0, pi]: no acos domain issue */
-
+/*
+ * a(dR) of seed 003. The seed's identity case (diagonal 1, 1, 1 -> 0) is
+ * NOT tested on the diagonal alone: in float the diagonal rounds to exactly
+ * 1 for angles below ~3e-4 rad while the skew part still carries the
+ * rotation. The identity falls out of the general case (u = 0 -> w = 0).
+ */
+void dh_kin_rotvec_f32_(const float *d, float *w)
+{
+    float un, tr, theta;
+    w[0] = d[7] - d[5];                       /* u = (r32 - r23, r13 - r31, r21 - r12) */
+    w[1] = d[2] - d[6];
+    w[2] = d[3] - d[1];
+    un = dh_kin_sqrtf_(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);   /* = 2 sin(theta) */
+    tr = d[0] + d[4] + d[8] - 1.0f;                         /* = 2 cos(theta) */
+    theta = dh_atan2f_(un, tr);               /* in [0, pi]: no acos domain issue */
     if (tr >= 0.0f) {
         /* theta <= 90 deg: u is accurate (seed's general case). As un -> 0,
          * theta/un -> 1/2 (atan2 keeps full relative accuracy there). */
         float f = (un > 0.0f) ? theta / un : 0.5f;
-        w[0] = f * ux;
-        w[1] = f * uy;
-        w[2] = f * uz;
+        w[0] *= f;
+        w[1] *= f;
+        w[2] *= f;
         return;
     }
-    /* theta > 90 deg: u = 2 sin(theta) k loses its relative accuracy as
-     * theta -> 180, so take the axis from the symmetric part, which does
-     * not vanish there: (dR + dR^T)/2 = c I + (1 - c) k k^T, c = cos(theta).
-     * The largest diagonal entry gives the best-conditioned component k_m;
-     * the others follow from row m. The sign is the one of u (ambiguous
-     * only at exactly 180 deg, where w and -w are the same rotation, and
-     * there k_m > 0 is kept). The seed's diagonal special cases
-     * (1,-1,-1), (-1,1,-1), (-1,-1,1) -> pi e_m are exact instances. */
-    {
-        float c = 0.5f * tr, omc = 1.0f - c;   /* omc in (1, 2] */
-        float kv[3], km2, km, kn, s;
-        uint32_t m = 0u, a;
-        if (d[1][1] > d[m][m]) m = 1u;
-        if (d[2][2] > d[m][m]) m = 2u;
-        km2 = (d[m][m] - c) / omc;
-        km = sqrtf(km2 > 0.0f ? km2 : 0.0f);
-        if (!(km > 0.0f)) km = 1.0f;   /* unreachable for a rotation (km^2 >= 1/3) */
-        for (a = 0; a < 3u; a++)
-            kv[a] = (a == m) ? km : 0.5f * (d[a][m] + d[m][a]) / (omc * km);
-        kn = sqrtf(kv[0] * kv[0] + kv[1] * kv[1] + kv[2] * kv[2]);
-        s = (kv[0] * ux + kv[1] * uy + kv[2] * uz < 0.0f) ? -theta / kn : theta / kn;
-        w[0] = s * kv[0];
-        w[1] = s * kv[1];
-        w[2] = s * kv[2];
-    }
+    rotvec_big(d, w, tr, theta);
+}
+
+/* d = Rt * R^T row-major, from the columns of both (column c, row k at
+ * c3[3c + k] style pointers: ct[c] / cr[c] point to column c). */
+static void rot_delta(const float *const *ct, const float *const *cr, float *d)
+{
+    uint32_t i, j, k;
+    /* dR(i,j) = sum_k Rt(i,k) R(j,k) = sum_k ct[k][i] cr[k][j] */
+    for (i = 0; i < 3u; i++)
+        for (j = 0; j < 3u; j++) {
+            float s = 0.0f;
+            for (k = 0; k < 3u; k++) s += ct[k][i] * cr[k][j];
+            d[3u * i + j] = s;
+        }
 }
 
 dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh_vec3_f32 *w)
 {
-    float d[3][3];          /* dR = R_target * R^T, d[row][col] */
-    float v[3];
-    uint32_t i, j, k;
+    float d[9], v[3];
+    const float *ct[3], *cr[3];
+    uint32_t i, j;
 
     DH_ASSERT(R_target != NULL);
     DH_ASSERT(R != NULL);
@@ -214,41 +437,26 @@ dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh
     for (i = 0; i < 3u; i++)
         for (j = 0; j < 3u; j++)
             if (!jac_finite(R_target->m[i][j]) || !jac_finite(R->m[i][j])) return DH_ERR_NAN;
-    if (!rot_is_orthonormal(R_target, DH_ROT_ERROR_TOL) || !rot_is_orthonormal(R, DH_ROT_ERROR_TOL))
+    if (!dh_kin_rot_ok_f32_(R_target->m[0], R_target->m[1], R_target->m[2]) ||
+        !dh_kin_rot_ok_f32_(R->m[0], R->m[1], R->m[2]))
         return DH_ERR_NOT_RIGID;
-
-    /* dR(i,j) = sum_k Rt(i,k) R(j,k); column-major: Rt(i,k) = m[k][i] */
-    for (i = 0; i < 3u; i++)
-        for (j = 0; j < 3u; j++) {
-            float s = 0.0f;
-            for (k = 0; k < 3u; k++) s += R_target->m[k][i] * R->m[k][j];
-            d[i][j] = s;
-        }
-    rot_vec_of(d, v);
+    for (i = 0; i < 3u; i++) {
+        ct[i] = R_target->m[i];
+        cr[i] = R->m[i];
+    }
+    rot_delta(ct, cr, d);
+    dh_kin_rotvec_f32_(d, v);
     w->x = v[0];
     w->y = v[1];
     w->z = v[2];
     return DH_OK;
 }
 
-/* Rotation part of a dh_mat4_f32 orthonormal within tol, det > 0. */
-static int rot4_is_orthonormal(const dh_mat4_f32 *T, float tol)
-{
-    uint32_t a, b, k;
-    for (a = 0; a < 3u; a++)
-        for (b = a; b < 3u; b++) {
-            float s = 0.0f;
-            for (k = 0; k < 3u; k++) s += T->m[a][k] * T->m[b][k];
-            if (a == b) s -= 1.0f;
-            if (!(fabsf(s) <= tol)) return 0;
-        }
-    return det3(T->m[0], T->m[1], T->m[2]) > 0.0f;
-}
-
 dh_status dh_pose_error_f32(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float e[6])
 {
-    float d[3][3];
-    uint32_t i, j, k;
+    float d[9];
+    const float *ct[3], *cr[3];
+    uint32_t i, j;
 
     DH_ASSERT(T_target != NULL);
     DH_ASSERT(T != NULL);
@@ -257,15 +465,15 @@ dh_status dh_pose_error_f32(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, f
     for (i = 0; i < 4u; i++)
         for (j = 0; j < 3u; j++)
             if (!jac_finite(T_target->m[i][j]) || !jac_finite(T->m[i][j])) return DH_ERR_NAN;
-    if (!rot4_is_orthonormal(T_target, DH_ROT_ERROR_TOL) || !rot4_is_orthonormal(T, DH_ROT_ERROR_TOL))
+    if (!dh_kin_rot_ok_f32_(T_target->m[0], T_target->m[1], T_target->m[2]) ||
+        !dh_kin_rot_ok_f32_(T->m[0], T->m[1], T->m[2]))
         return DH_ERR_NOT_RIGID;
-    for (i = 0; i < 3u; i++)
-        for (j = 0; j < 3u; j++) {
-            float s = 0.0f;
-            for (k = 0; k < 3u; k++) s += T_target->m[k][i] * T->m[k][j];
-            d[i][j] = s;
-        }
-    rot_vec_of(d, e + 3);
-    for (k = 0; k < 3u; k++) e[k] = T_target->m[3][k] - T->m[3][k];
+    for (i = 0; i < 3u; i++) {
+        ct[i] = T_target->m[i];
+        cr[i] = T->m[i];
+    }
+    rot_delta(ct, cr, d);
+    dh_kin_rotvec_f32_(d, e + 3);
+    for (i = 0; i < 3u; i++) e[i] = T_target->m[3][i] - T->m[3][i];
     return DH_OK;
 }

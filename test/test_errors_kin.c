@@ -121,8 +121,8 @@ static void kin_jacobian_bad(void)
         DHT_EQ_F32_BITS(DH_M4(&T, 0, 3), 1.0f);
         DHT_EQ_F32_BITS(DH_M4(&T, 2, 3), 3.0f);
         DHT_EQ_F32_BITS(DH_M4(&T, 1, 0), 1.0f);
-        /* q + theta offset overflows: dh_link_f32's OVERFLOW is passed on,
-         * J zero-filled, T_end untouched */
+        /* q + theta offset (or prismatic q + d) overflows: OVERFLOW before
+         * anything is computed, J and T_end untouched */
         r2 = r;
         r2.joint[2].theta_deg = FLT_MAX;
         {
@@ -133,7 +133,7 @@ static void kin_jacobian_bad(void)
             CANARY(T);
             DHT_EQ_INT(jac(&r2, qo, J, &T), DH_ERR_OVERFLOW);
             UNTOUCHED(T);
-            for (k = 0; k < 6u * NJ; k++) DHT_EQ_F32_BITS(J[k], 0.0f);
+            UNTOUCHED(J);
         }
         /* finite but non-finite result (prismatic 3e38 through a scaling
          * base): OVERFLOW with J and T_end holding the computed values */
@@ -336,14 +336,151 @@ static void kin_ik_bad_args(void)
     DHT_EQ_INT(dh_ik_f32(&r2, &target, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_ARG);
     UNTOUCHED(q);
     UNTOUCHED(res);
-    /* a target so far away that the squared error overflows: OVERFLOW at the
-     * start (the error function cannot be evaluated), untouched */
+    /* a finite target so far away that the squared error overflows is out
+     * of reach: UNREACHABLE at once (no step), q = the clamped q0, res.err_pos
+     * the distance computed without overflow (issue 4 / defect 3) */
     {
         dh_mat4_f32 tb = target;
+        dh_mat4_f32 T0;
+        unsigned j;
         tb.m[3][0] = 1e30f;
-        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_OVERFLOW);
+        CANARY(q);
+        CANARY(res);
+        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_UNREACHABLE);
+        for (j = 0; j < NJ; j++) DHT_EQ_F32_BITS(q[j], q0[j]);
+        DHT_EQ_INT(res.iterations, 0);
+        DHT_EQ_INT(dh_fk_f32(&r, q0, &T0), DH_OK);
+        DHT_NEAR(res.err_pos, 1e30, 1e24);
+        DHT_TRUE(res.err_rot >= 0.0f && res.err_rot <= 3.1416f);
+        /* farther than FLT_MAX in norm: err_pos saturates to FLT_MAX */
+        tb.m[3][0] = 3e38f;
+        tb.m[3][1] = -3e38f;
+        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_UNREACHABLE);
+        DHT_EQ_F32_BITS(res.err_pos, FLT_MAX);
+        /* position only, the same */
+        pb = p;
+        pb.mask = DH_IK_POSITION;
+        tb.m[3][1] = 0.0f;
+        tb.m[3][0] = -2e20f;
+        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &pb, work, sizeof work / sizeof work[0], &res), DH_ERR_UNREACHABLE);
+        DHT_NEAR(res.err_pos, 2e20, 1e15);
+        (void)T0;
+    }
+    /* ... but when the reach is unbounded (a prismatic joint without
+     * limits) the overflow cannot be judged: OVERFLOW, untouched */
+    {
+        dh_robot rp;
+        dh_mat4_f32 tb;
+        float qp[2] = { 0.0f, 0.0f };
+        DHT_EQ_INT(dh_robot_init(&rp, DH_CONV_STANDARD), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&rp, DH_JOINT_REVOLUTE, 0.5f, 0.0f, 90.0f, 0.0f), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&rp, DH_JOINT_PRISMATIC, 0.0f, 0.0f, 0.0f, 0.0f), DH_OK);
+        dh_mat4_identity_f32(&tb);
+        tb.m[3][2] = 1e30f;
+        pb = p;
+        pb.mask = DH_IK_POSITION;
+        CANARY(q);
+        CANARY(res);
+        DHT_EQ_INT(dh_ik_f32(&rp, &tb, qp, q, &pb, work, sizeof work / sizeof work[0], &res), DH_ERR_OVERFLOW);
         UNTOUCHED(q);
         UNTOUCHED(res);
+    }
+    /* w_rot so large that w_rot^2 pi^2 overflows: ARG */
+    pb = p;
+    pb.w_rot = 1e19f;
+    CANARY(q);
+    CANARY(res);
+    DHT_EQ_INT(dh_ik_f32(&r, &target, q0, q, &pb, work, sizeof work / sizeof work[0], &res), DH_ERR_ARG);
+    UNTOUCHED(q);
+    UNTOUCHED(res);
+}
+
+/* Targets that are not a rigid-motion transform (defect 2): a bottom row
+ * other than 0 0 0 1 (e.g. a perspective matrix) is NOT_RIGID in every
+ * mode, at once, outputs untouched; a rotation part off by more than
+ * DH_ROT_ERROR_TOL (sheared, scaled, reflected) is NOT_RIGID when the
+ * orientation is driven and ignored in position-only mode. */
+static void kin_ik_not_rigid(void)
+{
+    dh_robot r;
+    dh_ik_params p, pp;
+    dh_ik_result res;
+    dh_mat4_f32 target;
+    float q0[NJ] = { 0.0f, -45.0f, 120.0f, 0.0f, 45.0f, 0.0f };
+    float q[NJ];
+    unsigned k;
+    puma(&r);
+    ik_setup(&p, &res);
+    pp = p;
+    pp.mask = DH_IK_POSITION;
+    DHT_EQ_INT(dh_fk_f32(&r, q0, &target), DH_OK);
+    for (k = 0; k < 8; k++) {
+        dh_mat4_f32 tb = target;
+        switch (k) {
+        case 0: tb.m[2][3] = -0.5f; break;       /* perspective persp(z, 2): -1/d in the bottom row */
+        case 1: tb.m[0][3] = 1e-7f; break;
+        case 2: tb.m[1][3] = -1e-30f; break;
+        case 3: tb.m[3][3] = 1.0000001f; break;
+        case 4: tb.m[3][3] = 2.0f; break;          /* homogeneous scale */
+        case 5: tb.m[3][3] = 0.0f; break;
+        case 6: tb.m[3][3] = -1.0f; break;
+        default: tb.m[2][3] = -0.5f; tb.m[3][3] = 0.0f; break;
+        }
+        CANARY(q);
+        CANARY(res);
+        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_NOT_RIGID);
+        UNTOUCHED(q);
+        UNTOUCHED(res);
+        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &pp, work, sizeof work / sizeof work[0], &res), DH_ERR_NOT_RIGID);
+        UNTOUCHED(q);
+        UNTOUCHED(res);
+    }
+    /* the exact perspective matrix of the review: persp(z, 2) */
+    {
+        dh_mat4_f32 P;
+        dh_mat4_identity_f32(&P);
+        P.m[2][3] = -0.5f;
+        DHT_EQ_INT(dh_ik_f32(&r, &P, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_NOT_RIGID);
+        DHT_EQ_INT(dh_ik_f32(&r, &P, q0, q, &pp, work, sizeof work / sizeof work[0], &res), DH_ERR_NOT_RIGID);
+        UNTOUCHED(q);
+        UNTOUCHED(res);
+    }
+    /* rotation part: sheared by just over / within the tolerance */
+    for (k = 0; k < 2; k++) {
+        dh_mat4_f32 tb = target;
+        tb.m[1][0] += (k == 0) ? 2.5e-3f : 2e-4f;
+        CANARY(q);
+        CANARY(res);
+        if (k == 0) {
+            DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_NOT_RIGID);
+            UNTOUCHED(q);
+            UNTOUCHED(res);
+        } else {
+            /* within the tolerance: accepted, solved to about the skew */
+            dh_status st = dh_ik_f32(&r, &tb, q0, q, &p, work, sizeof work / sizeof work[0], &res);
+            DHT_TRUE(!is_canary(&res, sizeof res));
+            DHT_TRUE(st == DH_OK || st == DH_ERR_UNREACHABLE);
+        }
+        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &pp, work, sizeof work / sizeof work[0], &res), DH_OK);
+    }
+    /* a non-rigid base makes the end rotation non-rigid: NOT_RIGID in full
+     * mode (a(dR) undefined), solved in position-only mode */
+    {
+        dh_robot rs = r;
+        dh_mat4_f32 B, tb;
+        dh_mat4_scale_f32(&B, 1.5f, 1.5f, 1.5f);
+        DHT_EQ_INT(dh_robot_set_base_f32(&rs, &B), DH_OK);
+        dh_mat4_f32 Ts;
+        float qt[NJ] = { 20.0f, -30.0f, 100.0f, 10.0f, 30.0f, 10.0f };   /* within the limits */
+        DHT_EQ_INT(dh_fk_f32(&rs, qt, &Ts), DH_OK);
+        dh_mat4_identity_f32(&tb);     /* rigid target at a reachable position */
+        for (k = 0; k < 3; k++) tb.m[3][k] = Ts.m[3][k];
+        CANARY(q);
+        CANARY(res);
+        DHT_EQ_INT(dh_ik_f32(&rs, &tb, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_NOT_RIGID);
+        UNTOUCHED(q);
+        UNTOUCHED(res);
+        DHT_EQ_INT(dh_ik_f32(&rs, &tb, q0, q, &pp, work, sizeof work / sizeof work[0], &res), DH_OK);
     }
 }
 
@@ -389,7 +526,10 @@ static void kin_ik_unreachable(void)
         ik_setup(&p, &res);
         p.mask = (it % 2u) ? DH_IK_POSITION : DH_IK_FULL;
         st = dh_ik_f32(&r, &target, q0, q, &p, work, sizeof work / sizeof work[0], &res);
-        DHT_TRUE_MSG(st == DH_ERR_UNREACHABLE || st == DH_ERR_NO_CONVERGENCE, "status %d", (int)st);
+        /* beyond the reach bound: UNREACHABLE, decided early (a few
+         * attempts, not the whole step budget) */
+        DHT_EQ_INT(st, DH_ERR_UNREACHABLE);
+        DHT_TRUE_MSG(res.iterations <= 400u, "%lu steps", (unsigned long)res.iterations);
         DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_OK);
         DHT_TRUE(res.iterations >= 1u && res.iterations <= p.max_iter);
         /* res describes q */
@@ -429,10 +569,86 @@ static void kin_ik_unreachable(void)
     }
 }
 
+/* The status describes the returned configuration (defect 1):
+ * UNREACHABLE when the attempts stalled above the tolerance (or the target
+ * is beyond the reach bound), NO_CONVERGENCE only when max_iter cut an
+ * attempt that was still improving. */
+static void kin_ik_status(void)
+{
+    dh_robot r, r2;
+    dh_ik_params p;
+    dh_ik_result res;
+    dh_mat4_f32 target;
+    float q0[NJ] = { 0.0f, 30.0f, -60.0f, 0.0f, 45.0f, 0.0f };
+    float q[NJ];
+    dh_status st;
+    unsigned mode;
+    puma(&r);
+    /* the review's example: trans(10, 0, 0), 10 m away (the Puma reaches
+     * < 1.1 m): UNREACHABLE after a few attempts, not NO_CONVERGENCE after
+     * the whole budget; the best effort is the stretched arm */
+    for (mode = 0; mode < 2; mode++) {
+        dh_mat4_trans_f32(&target, 10.0f, 0.0f, 0.0f);
+        ik_setup(&p, &res);
+        p.mask = mode ? DH_IK_POSITION : DH_IK_FULL;
+        st = dh_ik_f32(&r, &target, q0, q, &p, work, sizeof work / sizeof work[0], &res);
+        dht_printf("puma trans(10,0,0) %s: status %d after %lu steps, residual %.6g m\n", mode ? "position" : "full",
+                   (int)st, (unsigned long)res.iterations, (double)res.err_pos);
+        DHT_EQ_INT(st, DH_ERR_UNREACHABLE);
+        DHT_TRUE(res.iterations < 400u);
+        DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_OK);
+        DHT_NEAR(res.err_pos, ref_pos_err(&r, &target, q), 1e-5);
+        DHT_TRUE(res.err_pos > 8.9f && res.err_pos < 9.6f);
+    }
+    /* reachable, but max_iter cuts the first attempt while every step still
+     * lowers E by far more than 1%: NO_CONVERGENCE */
+    {
+        float qt[NJ] = { 60.0f, -80.0f, 120.0f, 30.0f, 20.0f, -40.0f };   /* within the limits */
+        uint32_t m;
+        DHT_EQ_INT(dh_fk_f32(&r, qt, &target), DH_OK);
+        for (m = 1; m <= 3; m++) {
+            ik_setup(&p, &res);
+            p.max_iter = m;
+            DHT_EQ_INT(dh_ik_f32(&r, &target, q0, q, &p, work, sizeof work / sizeof work[0], &res),
+                       DH_ERR_NO_CONVERGENCE);
+            DHT_EQ_INT(res.iterations, m);
+        }
+    }
+    /* within the reach bound but not reachable within the joint limits
+     * (planar 2R, both joints limited so that neither elbow solution is
+     * admissible): every attempt stalls, whatever the budget -> UNREACHABLE */
+    DHT_EQ_INT(dh_robot_init(&r2, DH_CONV_STANDARD), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r2, DH_JOINT_REVOLUTE, 0.6f, 0, 0, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r2, DH_JOINT_REVOLUTE, 0.4f, 0, 0, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_set_limits_f32(&r2, 0, 50.0f, 90.0f), DH_OK);
+    DHT_EQ_INT(dh_robot_set_limits_f32(&r2, 1, 0.0f, 150.0f), DH_OK);
+    {
+        float qa[2] = { 35.0f, -70.0f }, q2[2], qs[2] = { 60.0f, 10.0f };
+        dh_robot rf;
+        DHT_EQ_INT(dh_robot_init(&rf, DH_CONV_STANDARD), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&rf, DH_JOINT_REVOLUTE, 0.6f, 0, 0, 0), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&rf, DH_JOINT_REVOLUTE, 0.4f, 0, 0, 0), DH_OK);
+        DHT_EQ_INT(dh_fk_f32(&rf, qa, &target), DH_OK);
+        for (mode = 0; mode < 3; mode++) {
+            ik_setup(&p, &res);
+            p.mask = DH_IK_PX | DH_IK_PY;
+            p.restarts = (mode == 0) ? 0u : (mode == 1) ? 20u : 200u;
+            st = dh_ik_f32(&r2, &target, qs, q2, &p, work, sizeof work / sizeof work[0], &res);
+            dht_printf("2R outside its limits, %lu restarts: status %d after %lu steps, residual %.4g m\n",
+                       (unsigned long)p.restarts, (int)st, (unsigned long)res.iterations, (double)res.err_pos);
+            DHT_EQ_INT(st, DH_ERR_UNREACHABLE);
+            DHT_EQ_INT(dh_robot_check_limits_f32(&r2, q2), DH_OK);
+            DHT_TRUE(res.err_pos > 1e-3f);
+        }
+    }
+}
+
 static const dht_case cases[] = {
     DHT_CASE(kin_jacobian_bad),
     DHT_CASE(kin_rot_pose_error_bad),
     DHT_CASE(kin_ik_bad_args),
     DHT_CASE(kin_ik_unreachable),
+    DHT_CASE(kin_ik_not_rigid),
+    DHT_CASE(kin_ik_status),
 };
 DHT_MAIN(cases)

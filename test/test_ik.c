@@ -282,7 +282,10 @@ static void ik_unreachable(void)
     st = dh_ik_f32(&r, &T, puma_home, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res);
     dht_printf("unreachable target: status %d after %lu iterations, residual %.4g m / %.4g rad\n", (int)st,
                (unsigned long)res.iterations, (double)res.err_pos, (double)res.err_rot);
-    DHT_TRUE(st == DH_ERR_UNREACHABLE || st == DH_ERR_NO_CONVERGENCE);
+    /* beyond the reach bound: UNREACHABLE after a few attempts, not the
+     * whole step budget */
+    DHT_EQ_INT(st, DH_ERR_UNREACHABLE);
+    DHT_TRUE(res.iterations < 400u);
     DHT_TRUE(within_limits(&r, q));
     true_error(&r, q, &T, &ep, &er);
     DHT_NEAR(res.err_pos, ep, 1e-5);
@@ -293,11 +296,13 @@ static void ik_unreachable(void)
      * |target - shoulder| - reach, found to 1e-3 */
     p.mask = DH_IK_POSITION;
     st = dh_ik_f32(&r, &T, puma_home, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res);
-    DHT_TRUE(st == DH_ERR_UNREACHABLE || st == DH_ERR_NO_CONVERGENCE);
+    DHT_EQ_INT(st, DH_ERR_UNREACHABLE);
+    DHT_TRUE(res.iterations < 400u);
     DHT_TRUE(within_limits(&r, q));
     true_error(&r, q, &T, &ep, &er);
     DHT_NEAR(res.err_pos, ep, 1e-5);
-    dht_printf("unreachable target, position only: status %d, residual %.6g m\n", (int)st, ep);
+    dht_printf("unreachable target, position only: status %d after %lu iterations, residual %.6g m\n", (int)st,
+               (unsigned long)res.iterations, ep);
     /* without restarts the stall is reported as such, quickly */
     p.restarts = 0;
     st = dh_ik_f32(&r, &T, puma_home, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res);
@@ -344,7 +349,7 @@ static void ik_limits_respected(void)
     DHT_EQ_INT(dh_robot_set_limits_f32(&r, 0, 50.0f, 90.0f), DH_OK);
     {
         dh_status st = dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res);
-        DHT_TRUE(st == DH_ERR_UNREACHABLE || st == DH_ERR_NO_CONVERGENCE);
+        DHT_EQ_INT(st, DH_ERR_UNREACHABLE);     /* every attempt stalls at the limits */
         DHT_TRUE(within_limits(&r, q));
         true_error(&r, q, &T, &ep, &er);
         DHT_TRUE(ep > 1e-3);

@@ -156,8 +156,8 @@ typedef struct {
  */
 #define DH_IK_WBAR 1e-7f
 
-/** Workspace floats needed by dh_ik_f32 for an n-joint robot: n^2 + 19 n + 12. */
-#define DH_IK_WORK_FLOATS(n) ((n) * (n) + 19u * (n) + 12u)
+/** Workspace floats needed by dh_ik_f32 for an n-joint robot: n^2 + 20 n + 45. */
+#define DH_IK_WORK_FLOATS(n) ((n) * (n) + 20u * (n) + 45u)
 
 /**
  * @brief Defaults for a robot described in metres: max_iter 2000, mask
