@@ -10,7 +10,7 @@
  *  - DH_OK: every element finite, and the result carries its promised
  *    proof of non-singularity: some induced norm (the 1-norm or inf-norm
  *    of D^-1 R D, D = diag(1,1,1,s), s = 2^k for k = -240..240 and the
- *    Osborne factor sqrt(|p|_1 / |q|_1) of T: any such similarity gives a
+ *    Osborne factor sqrt(|q|_1 / |p|_1) of T: any such similarity gives a
  *    valid norm) of the right residual R = T X - I or of the left residual
  *    R = X T - I, evaluated in double, is < 1 -- so T is never singular
  *    when DH_OK is returned. Either side is a proof (T X or X T singular
@@ -226,7 +226,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             pn += fabs(Td[i][3]);
             qn += fabs(Td[3][i]);
         }
-        if (pn > 0.0 && qn > 0.0) sg = sqrt(pn) / sqrt(qn);
+        /* norm1_d multiplies p by sg and divides q by it: Osborne's
+         * balance (|p| sg = |q| / sg) is sg = sqrt(|q| / |p|) */
+        if (pn > 0.0 && qn > 0.0) sg = sqrt(qn) / sqrt(pn);
         right = proof_norm(Rr, sg);
         left = (right < 1.0) ? right : proof_norm(Rl, sg);
         FZ_CHECK(right < 1.0 || left < 1.0,

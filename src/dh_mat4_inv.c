@@ -75,12 +75,16 @@ static DH_NOINLINE float dh_affine_prescale(const dh_mat4_f32 *T);
  */
 static float dh_balance(const dh_mat4_f32 *M)
 {
-    const float cp = fabsf(M->m[3][0]) + fabsf(M->m[3][1]) + fabsf(M->m[3][2]); /* |p| */
-    const float rq = fabsf(M->m[0][3]) + fabsf(M->m[1][3]) + fabsf(M->m[2][3]); /* |q| */
+    /* the sums are of |M_ij| / 4, so that three entries near FLT_MAX do not
+     * overflow (which made sg = 2^60 and well-conditioned matrices with
+     * entries ~2^126 "singular"); only ratios are used, which the exact
+     * factor 1/4 does not change (below FLT_MIN it only rounds) */
+    const float cp = fabsf(M->m[3][0] * 0.25f) + fabsf(M->m[3][1] * 0.25f) + fabsf(M->m[3][2] * 0.25f); /* |p| */
+    const float rq = fabsf(M->m[0][3] * 0.25f) + fabsf(M->m[1][3] * 0.25f) + fabsf(M->m[2][3] * 0.25f); /* |q| */
     float m3 = 0.0f, sg;
     int i;
     for (i = 0; i < 3; i++) {
-        const float rs = fabsf(M->m[i][0]) + fabsf(M->m[i][1]) + fabsf(M->m[i][2]);
+        const float rs = fabsf(M->m[i][0] * 0.25f) + fabsf(M->m[i][1] * 0.25f) + fabsf(M->m[i][2] * 0.25f);
         m3 = (rs > m3) ? rs : m3;
     }
     if (cp == 0.0f) return 1.0f;
@@ -90,6 +94,32 @@ static float dh_balance(const dh_mat4_f32 *M)
     if (sg > 1.15292150e18f) sg = 1.15292150e18f;       /* 2^60 */
     if (sg < 8.67361738e-19f) sg = 8.67361738e-19f;     /* 2^-60 */
     return sg;
+}
+
+/*
+ * Row view: column 3 of rows 0..2 times f, row 3 of columns 0..2 over f,
+ * f the power of two nearest to sg (within a factor sqrt(2); exact unless
+ * an element leaves the normal range). undo == 0 gives the balanced
+ * D^-1 M D, undo != 0 takes the inverse of that back to M^-1.
+ */
+static DH_NOINLINE void dh_rebalance(dh_mat4_f32 *X, float sg, int undo)
+{
+    float f = sg * 1.41421356f, fi;
+    uint32_t b;
+    int i;
+    memcpy(&b, &f, sizeof b);
+    b &= 0x7F800000u; /* sg in [2^-60, 2^60]: a normal power of two */
+    memcpy(&f, &b, sizeof f);
+    fi = 1.0f / f;
+    if (undo) {
+        const float t = f;
+        f = fi;
+        fi = t;
+    }
+    for (i = 0; i < 3; i++) {
+        X->m[i][3] *= f;
+        X->m[3][i] *= fi;
+    }
 }
 
 /*
@@ -301,7 +331,13 @@ static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 
     for (i = 0; i < 4; i++) {
         for (j = 0; j < 4; j++) X->m[i][j] = dh_at(T, i, j, s, aff);
     }
+    /* eliminate on the balanced matrix: partial pivoting then works with
+     * the magnitudes the balanced norms measure (on s M itself, with
+     * |p| / |q| ~ 2^60, it returned inverses whose balanced residual was
+     * > 1 for condition numbers ~10) */
+    dh_rebalance(X, sg, 0);
     if (!dh_inv_gauss_jordan(X)) return DH_ERR_SINGULAR;
+    dh_rebalance(X, sg, 1);
     /* (a) estimated condition number */
     na = dh_norm_rows(T, sg, s, aff);
     if (!(na * dh_norm_rows(X, sg, 1.0f, 0) < DH_MAT4_COND_MAX)) return DH_ERR_SINGULAR;
