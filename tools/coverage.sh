@@ -51,13 +51,13 @@ test_status=0
 ctest --test-dir "$build" -j "$jobs" --output-on-failure || test_status=$?
 
 # gcovr: src/ only; -O0 so gcc's branches map to the source.
-summary=$(gcovr --root "$here" --object-directory "$build" \
+summary=$(gcovr "$build" --root "$here" --object-directory "$build" \
                 --filter "$here/src/" \
                 --exclude-unreachable-branches \
                 --exclude-branches-by-pattern '.*\bDH_ASSERT\(.*' \
                 --branches --print-summary \
                 --txt "$build/coverage_branches.txt")
-gcovr --root "$here" --object-directory "$build" --filter "$here/src/" \
+gcovr "$build" --root "$here" --object-directory "$build" --filter "$here/src/" \
       --exclude-unreachable-branches --exclude-branches-by-pattern '.*\bDH_ASSERT\(.*' --txt "$build/coverage_lines.txt" >/dev/null
 
 lines=$(printf '%s\n' "$summary" | sed -n 's/^lines: *\([0-9.]*\)%.*/\1/p')

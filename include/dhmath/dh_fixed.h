@@ -147,8 +147,9 @@ dh_status dh_frame_apply_dir_q(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_
  * without it the error reached ~23000 LSB). Keeps the sign of det R.
  * @return DH_OK; DH_ERR_NOT_RIGID (F untouched) if an entry exceeds 1.25 in
  *         magnitude or the error exceeds 1/8 (2^27 LSB), where a single
- *         step would not be reliable; DH_ERR_OVERFLOW cannot happen for the
- *         accepted inputs but is reported if it did.
+ *         step would not be reliable. No other status: for the accepted
+ *         inputs every entry of the step stays inside [-2, 2) (proved in
+ *         the source), so it cannot saturate.
  */
 dh_status dh_frame_orthonormalize_chk_q(dh_frame_q *F);
 

@@ -51,8 +51,8 @@
  * any saturated output entry makes the function return DH_ERR_OVERFLOW.
  *
  * Stack: worst case including callees and libgcc (tools/dh_stack.py,
- * checked by tools/check_guards.sh against 256 bytes): dh_fk_q 216 / 248
- * bytes on Cortex-M0+ and 160 / 200 on Cortex-M4F at -Os / -O2; the per
+ * checked by tools/check_guards.sh against 256 bytes): dh_fk_q 208 / 240
+ * bytes on Cortex-M0+ and 160 / 184 on Cortex-M4F at -Os / -O2; the per
  * function figures for every configuration are in docs/footprint.md.
  * No function keeps state; a dh_robot may be shared read-only between
  * threads.
