@@ -669,7 +669,7 @@ dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q
         const uint32_t n = c.n;
         const unsigned t = c.cs ^ 1u;
         unsigned act;
-        int ev = EV_FK;
+        int ev = EV_FK, done;
         /* evaluate the trial slot: joint sin/cos, Jacobian and end frame,
          * error (each block called from here, so the chain stays shallow) */
         ik_trig(&c);
@@ -678,7 +678,7 @@ dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q
             ev = EV_RIGID;
             if (c.mode != M_FIRST || !ik_rot_mode(p->mask) || dh_kin_rot_ok_f32_(F, F + 3, F + 6)) {
                 ik_pos_err(&c);
-                if (ik_rot_mode(p->mask)) dh_kin_rotvec_f32_(work + OFF_D(n), work + OFF_E(n, t) + 3);
+                if (ik_rot_mode(p->mask)) dh_kin_rotvec_f32_(work + OFF_D(n), work + OFF_E(n, t) + 3u);
                 ev = ik_norms(&c);
             }
         }
@@ -688,29 +688,27 @@ dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q
             ik_sample(&c);
             continue;
         }
-        if (act == A_BREAK) break;
         if (act == A_STEP) {
             /* projected step: joints on a bound pushed outward are frozen
              * and the system solved again (at most n + 1 solves) */
-            uint32_t free_bits = (n >= 32u) ? 0xFFFFFFFFu : ((1u << n) - 1u), pass;
+            uint32_t free_bits = (n >= 32u) ? 0xFFFFFFFFu : ((1u << n) - 1u), pass, frozen = 1u;
             int k = 0;
             ik_weigh(&c);
-            for (pass = 0; pass <= n; pass++) {
-                uint32_t frozen;
+            for (pass = 0; (pass <= n) && (frozen != 0u) && (k == 0); pass++) {
                 ik_normal(&c, free_bits);
                 if (ik_ldl(&c) != 0) {
                     k = -1;
-                    break;
+                } else {
+                    frozen = ik_freeze(&c, free_bits);
+                    free_bits &= ~frozen;
                 }
-                frozen = ik_freeze(&c, free_bits);
-                if (frozen == 0u) break;
-                free_bits &= ~frozen;
             }
             if (k == 0) k = ik_apply(&c, free_bits);
             if (k > 0) continue;
             c.end = (uint8_t)((k < 0) ? K_SING : K_STALL);   /* singular, or an empty projected step */
         }
-        if (ik_record(&c)) break;
+        done = (act == A_BREAK) ? 1 : ik_record(&c);
+        if (done != 0) break;
         ik_sample(&c);      /* restart from a deterministic pseudo-random point */
     }
     return ik_finish(&c, q, res);

@@ -110,7 +110,9 @@ float dh_kin_sqrtf_(float x)
      * (the implicit bit of the mantissa adds one to the exponent field,
      * also when rounding carries into 2^24) */
     m = (root >> 1) + (root & 1u);
-    e = (uint32_t)((eb + 152 - ((((uint32_t)eb & 1u) != 0u) ? 25 : 26)) / 2 - 1);
+    eb += (((uint32_t)eb & 1u) != 0u) ? (152 - 25) : (152 - 26);   /* >= 104, even */
+    eb = (eb / 2) - 1;
+    e = (uint32_t)eb;
     u = (e << 23) + m;
     memcpy(&y, &u, sizeof y);
     return y;
