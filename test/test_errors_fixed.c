@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "dht.h"
+#include "support_canary.h"
 #include "dhmath/dh_fixed.h"
 #include "dhmath/dh_mat4.h"
 #include "dhmath/dh_trig.h"
@@ -25,17 +26,6 @@
 #define TWO31 2147483648.0
 #define REF_SLACK (1.0 / 262144.0) /* 2^-18 LSB: double rounding of the reference */
 
-static void fill_canary(void *p, size_t n) { memset(p, 0xA5, n); }
-static int is_canary(const void *p, size_t n)
-{
-    const unsigned char *b = (const unsigned char *)p;
-    size_t i;
-    for (i = 0; i < n; i++)
-        if (b[i] != 0xA5u) return 0;
-    return 1;
-}
-#define CANARY(x) fill_canary(&(x), sizeof(x))
-#define UNTOUCHED(x) DHT_TRUE_MSG(is_canary(&(x), sizeof(x)), "%s written on error", #x)
 
 static int32_t rand_i32(void) { return (int32_t)dht_rand_u32(); }
 
@@ -337,12 +327,6 @@ static void fixed_orthonormalize_bad(void)
     DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
 }
 
-static float f32_bits(uint32_t u)
-{
-    float f;
-    memcpy(&f, &u, sizeof f);
-    return f;
-}
 
 static void mat4_identity(dh_mat4_f32 *T)
 {

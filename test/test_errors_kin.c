@@ -11,34 +11,13 @@
 #include <string.h>
 
 #include "dht.h"
+#include "support_canary.h"
 #include "support_robots.h"
 #include "dhmath/dh_kin.h"
 #include "dhmath/dh_mat4.h"
 #include "dhmath/dh_fixed.h"
 
-static void fill_canary(void *p, size_t n) { memset(p, 0xA5, n); }
-static int is_canary(const void *p, size_t n)
-{
-    const unsigned char *b = (const unsigned char *)p;
-    size_t i;
-    for (i = 0; i < n; i++)
-        if (b[i] != 0xA5u) return 0;
-    return 1;
-}
-#define CANARY(x) fill_canary(&(x), sizeof(x))
-#define UNTOUCHED(x) DHT_TRUE_MSG(is_canary(&(x), sizeof(x)), "%s written on error", #x)
 
-static float f32_bits(uint32_t u)
-{
-    float f;
-    memcpy(&f, &u, sizeof f);
-    return f;
-}
-static float bad_value(unsigned k)
-{
-    static const uint32_t b[4] = { 0x7FC00000u, 0x7F800000u, 0xFF800000u, 0x7F800001u };
-    return f32_bits(b[k & 3u]);
-}
 
 #define NJ 6
 static float work[DH_IK_WORK_FLOATS(DH_MAX_JOINTS)];

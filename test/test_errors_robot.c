@@ -15,30 +15,15 @@
 #include <string.h>
 
 #include "dht.h"
+#include "support_canary.h"
 #include "support_robots.h"
 #include "dhmath/dh_fixed.h"
 #include "dhmath/dh_mat4.h"
 #include "dhmath/dh_robot.h"
 
-static void fill_canary(void *p, size_t n) { memset(p, 0xA5, n); }
-static int is_canary(const void *p, size_t n)
-{
-    const unsigned char *b = (const unsigned char *)p;
-    size_t i;
-    for (i = 0; i < n; i++)
-        if (b[i] != 0xA5u) return 0;
-    return 1;
-}
-#define CANARY(x) fill_canary(&(x), sizeof(x))
-#define UNTOUCHED(x) DHT_TRUE_MSG(is_canary(&(x), sizeof(x)), "%s written on error", #x)
 
-static float f32_bits(uint32_t u)
-{
-    float f;
-    memcpy(&f, &u, sizeof f);
-    return f;
-}
-static float bad_value(unsigned k)
+/* NaN, +Inf, -Inf and a negative NaN payload variant */
+static float bad_value_nan(unsigned k)
 {
     static const uint32_t b[4] = { 0x7FC00000u, 0x7F800000u, 0xFF800000u, 0xFFC00001u };
     return f32_bits(b[k & 3u]);
@@ -81,7 +66,7 @@ static void robot_add_joint_bad(void)
     for (pos = 0; pos < 4; pos++) {
         for (k = 0; k < 4; k++) {
             float p[4] = { 0.1f, 0.2f, 30.0f, 40.0f };
-            p[pos] = bad_value(k);
+            p[pos] = bad_value_nan(k);
             DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, p[0], p[1], p[2], p[3]), DH_ERR_NAN);
             DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
         }
@@ -166,8 +151,8 @@ static void robot_set_limits_bad(void)
     DHT_EQ_INT(dh_robot_set_limits_q(&r, 3, -1, 1), DH_ERR_ARG);
     DHT_EQ_INT(dh_robot_set_limits_q(&r, 1, 2, 1), DH_ERR_ARG);
     for (k = 0; k < 4; k++) {
-        DHT_EQ_INT(dh_robot_set_limits_f32(&r, 1, bad_value(k), 1.0f), DH_ERR_NAN);
-        DHT_EQ_INT(dh_robot_set_limits_f32(&r, 1, -1.0f, bad_value(k)), DH_ERR_NAN);
+        DHT_EQ_INT(dh_robot_set_limits_f32(&r, 1, bad_value_nan(k), 1.0f), DH_ERR_NAN);
+        DHT_EQ_INT(dh_robot_set_limits_f32(&r, 1, -1.0f, bad_value_nan(k)), DH_ERR_NAN);
     }
     DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
     /* beyond the Q range: saturated fixed limits */
@@ -192,7 +177,7 @@ static void robot_base_tool_bad(void)
     for (e = 0; e < 16; e++) {
         for (k = 0; k < 4; k++) {
             dh_mat4_identity_f32(&B);
-            B.m[e / 4][e % 4] = bad_value(k);
+            B.m[e / 4][e % 4] = bad_value_nan(k);
             DHT_EQ_INT(dh_robot_set_base_f32(&r, &B), DH_ERR_NAN);
             DHT_EQ_INT(dh_robot_set_tool_f32(&r, &B), DH_ERR_NAN);
         }
@@ -246,14 +231,14 @@ static void robot_check_limits_bad(void)
     DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_ERR_LIMIT);
     q[0] = 0.0f;
     for (k = 0; k < 4; k++) {
-        q[2] = bad_value(k);
+        q[2] = bad_value_nan(k);
         q[1] = 7.0f; /* also out of limits: NaN is reported first */
         DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_ERR_NAN);
     }
     /* a joint without limits still rejects NaN */
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
     DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, 0.0f, 0.0f, 0.0f, 0.0f), DH_OK);
-    q[0] = bad_value(0);
+    q[0] = bad_value_nan(0);
     DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_ERR_NAN);
     q[0] = -FLT_MAX;
     DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_OK);
@@ -293,7 +278,7 @@ static void robot_fk_f32_bad(void)
         small_robot(&r, j ? DH_CONV_MODIFIED : DH_CONV_STANDARD);
         for (k = 0; k < 3 * 4; k++) {
             float qb[3] = { 10.0f, 0.1f, -20.0f };
-            qb[k / 4] = bad_value(k);
+            qb[k / 4] = bad_value_nan(k);
             CANARY(T);
             DHT_EQ_INT(dh_fk_f32(&r, qb, &T), DH_ERR_NAN);
             UNTOUCHED(T);

@@ -15,29 +15,14 @@
 #include <string.h>
 
 #include "dht.h"
+#include "support_canary.h"
 #include "dhmath/dh_rot.h"
 
 #define PI_D 3.14159265358979323846
 
-static void fill_canary(void *p, size_t n) { memset(p, 0xA5, n); }
-static int is_canary(const void *p, size_t n)
-{
-    const unsigned char *b = (const unsigned char *)p;
-    size_t i;
-    for (i = 0; i < n; i++)
-        if (b[i] != 0xA5u) return 0;
-    return 1;
-}
-#define CANARY(x) fill_canary(&(x), sizeof(x))
-#define UNTOUCHED(x) DHT_TRUE_MSG(is_canary(&(x), sizeof(x)), "%s written on error", #x)
 
-static float f32_bits(uint32_t u)
-{
-    float f;
-    memcpy(&f, &u, sizeof f);
-    return f;
-}
-static float bad_value(unsigned k)
+/* NaN, +Inf, -Inf and a negative NaN payload variant */
+static float bad_value_nan(unsigned k)
 {
     static const uint32_t b[4] = { 0x7FC00000u, 0x7F800000u, 0xFF800000u, 0xFF800001u };
     return f32_bits(b[k & 3u]);
@@ -126,7 +111,7 @@ static void rot_extract_nan(void)
         for (k = 0; k < 4; k++) {
             dh_mat3_f32 R;
             rot_ref(&R, 0.3, 0.4, -0.5, 100.0);
-            R.m[e / 3][e % 3] = bad_value(k);
+            R.m[e / 3][e % 3] = bad_value_nan(k);
             extract_all(&R, DH_ERR_NAN);
         }
     }
@@ -178,7 +163,7 @@ static void rot_orthonormalize_bad(void)
     S = R;
     DHT_EQ_INT(dh_mat3_orthonormalize_f32(&R, &R), DH_ERR_NOT_RIGID);
     DHT_TRUE(memcmp(&R, &S, sizeof R) == 0);
-    R.m[0][0] = bad_value(0);
+    R.m[0][0] = bad_value_nan(0);
     S = R;
     DHT_EQ_INT(dh_mat3_orthonormalize_f32(&R, &R), DH_ERR_NAN);
     DHT_TRUE(memcmp(&R, &S, sizeof R) == 0);
@@ -194,9 +179,9 @@ static void rot_check_bad_tol(void)
     dh_mat3_f32 R;
     rot_ref(&R, 0.0, 1.0, 0.0, 10.0);
     DHT_EQ_INT(dh_mat3_check_rot_f32(&R, -1e-9f), DH_ERR_ARG);
-    DHT_EQ_INT(dh_mat3_check_rot_f32(&R, bad_value(0)), DH_ERR_ARG);
-    DHT_EQ_INT(dh_mat3_check_rot_f32(&R, bad_value(1)), DH_ERR_ARG);
-    DHT_EQ_INT(dh_mat3_check_rot_f32(&R, bad_value(2)), DH_ERR_ARG);
+    DHT_EQ_INT(dh_mat3_check_rot_f32(&R, bad_value_nan(0)), DH_ERR_ARG);
+    DHT_EQ_INT(dh_mat3_check_rot_f32(&R, bad_value_nan(1)), DH_ERR_ARG);
+    DHT_EQ_INT(dh_mat3_check_rot_f32(&R, bad_value_nan(2)), DH_ERR_ARG);
     DHT_EQ_INT(dh_mat3_check_rot_f32(&R, -0.0f), dh_mat3_check_rot_f32(&R, 0.0f)); /* -0 is 0 */
     DHT_EQ_INT(dh_mat3_check_rot_f32(&R, FLT_MAX), DH_OK);
 }
@@ -237,7 +222,7 @@ static void rot_euler_bad(void)
         for (k = 0; k < 12; k++) {
             dh_mat3_f32 out;
             float a[3] = { 10.0f, 20.0f, 30.0f };
-            a[k / 4] = bad_value(k);
+            a[k / 4] = bad_value_nan(k);
             CANARY(out);
             DHT_EQ_INT(dh_euler_to_mat3_f32(&out, (dh_euler_seq)s, a), DH_ERR_NAN);
             UNTOUCHED(out);
@@ -265,10 +250,10 @@ static void rot_quat_bad(void)
     unsigned k;
     for (k = 0; k < 16; k++) {
         q.w = 0.5f; q.x = 0.5f; q.y = -0.5f; q.z = 0.5f;
-        if (k / 4 == 0) q.w = bad_value(k);
-        else if (k / 4 == 1) q.x = bad_value(k);
-        else if (k / 4 == 2) q.y = bad_value(k);
-        else q.z = bad_value(k);
+        if (k / 4 == 0) q.w = bad_value_nan(k);
+        else if (k / 4 == 1) q.x = bad_value_nan(k);
+        else if (k / 4 == 2) q.y = bad_value_nan(k);
+        else q.z = bad_value_nan(k);
         CANARY(R);
         DHT_EQ_INT(dh_quat_to_mat3_f32(&R, &q), DH_ERR_NAN);
         UNTOUCHED(R);
@@ -323,10 +308,10 @@ static void rot_axis_angle_bad(void)
     for (k = 0; k < 16; k++) {
         float deg = 30.0f;
         ax.x = 1.0f; ax.y = 2.0f; ax.z = 3.0f;
-        if (k / 4 == 0) ax.x = bad_value(k);
-        else if (k / 4 == 1) ax.y = bad_value(k);
-        else if (k / 4 == 2) ax.z = bad_value(k);
-        else deg = bad_value(k);
+        if (k / 4 == 0) ax.x = bad_value_nan(k);
+        else if (k / 4 == 1) ax.y = bad_value_nan(k);
+        else if (k / 4 == 2) ax.z = bad_value_nan(k);
+        else deg = bad_value_nan(k);
         CANARY(R);
         DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&R, &ax, deg), DH_ERR_NAN);
         UNTOUCHED(R);
@@ -372,9 +357,9 @@ static void rot_rotvec_bad_and_huge(void)
     unsigned k;
     for (k = 0; k < 12; k++) {
         phi.x = 0.1f; phi.y = 0.2f; phi.z = 0.3f;
-        if (k / 4 == 0) phi.x = bad_value(k);
-        else if (k / 4 == 1) phi.y = bad_value(k);
-        else phi.z = bad_value(k);
+        if (k / 4 == 0) phi.x = bad_value_nan(k);
+        else if (k / 4 == 1) phi.y = bad_value_nan(k);
+        else phi.z = bad_value_nan(k);
         CANARY(R);
         DHT_EQ_INT(dh_rotvec_to_mat3_f32(&R, &phi), DH_ERR_NAN);
         UNTOUCHED(R);
@@ -429,7 +414,7 @@ static void rot_angvel_overflow(void)
     /* NaN in Rdot */
     for (k = 0; k < 9; k++) {
         memset(&Rd, 0, sizeof Rd);
-        Rd.m[k / 3][k % 3] = bad_value(k);
+        Rd.m[k / 3][k % 3] = bad_value_nan(k);
         DHT_EQ_INT(dh_angvel_f32(&w, &R, &Rd), DH_ERR_NAN);
         UNTOUCHED(w);
         DHT_EQ_INT(dh_angvel_body_f32(&w, &R, &Rd), DH_ERR_NAN);
@@ -456,7 +441,7 @@ static void rot_no_status_ieee(void)
     dh_vec3_f32 v, u;
     dh_mat3_f32 S;
     dh_quat_f32 a, b, c, d;
-    v.x = bad_value(0); v.y = 2.0f; v.z = -3.0f;
+    v.x = bad_value_nan(0); v.y = 2.0f; v.z = -3.0f;
     dh_skew_f32(&S, &v);
     DHT_TRUE(DH_M3(&S, 2, 1) != DH_M3(&S, 2, 1));   /* vx appears at (2,1), (1,2) */
     DHT_TRUE(DH_M3(&S, 1, 2) != DH_M3(&S, 1, 2));
@@ -482,7 +467,7 @@ static void rot_no_status_ieee(void)
     d = a;
     dh_quat_conj_f32(&d, &d);
     DHT_EQ_F32_BITS(d.x, -2.0f);
-    a.y = bad_value(1);
+    a.y = bad_value_nan(1);
     dh_quat_mul_f32(&c, &a, &b);
     DHT_TRUE(!(fabsf(c.w) <= FLT_MAX)); /* - Inf * 1.5 */
     DHT_TRUE(!(fabsf(c.x) <= FLT_MAX));
