@@ -40,6 +40,11 @@
 #define FZ_PI 3.14159265358979323846
 #define FZ_REPRO_EXACT 5e-7
 #define FZ_REPRO_K 3.0
+/* Euler angles: the contract of dh_mat3_to_euler_f32 (dh_rot.h) is 6e-7 per
+ * entry for exact rotations (three angles rounded to float degrees; measured
+ * 5.1e-7); the fuzzer found yzy (-5.4e-8, 179.999985, 0), 1.5e-5 deg from
+ * the pole, at 5.0e-7 + rounding, above the generic 5e-7 */
+#define FZ_REPRO_EULER 6e-7
 
 typedef double m3d[3][3]; /* [row][col] */
 
@@ -209,9 +214,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             FZ_CHECK(proper ? (a[1] >= 0.0f && a[1] <= 180.0f) : (a[1] >= -90.0f && a[1] <= 90.0f), "%s: middle %.9g",
                      dh_euler_name((dh_euler_seq)seq), (double)a[1]);
             euler_d(X, seq, a);
-            FZ_CHECK(repro_err(&R, X) <= tol, "%s (%.9g %.9g %.9g) reproduces R within %.3g > %.3g (dev %.3g)",
+            FZ_CHECK(repro_err(&R, X) <= FZ_REPRO_EULER + FZ_REPRO_K * dev,
+                     "%s (%.9g %.9g %.9g) reproduces R within %.3g > %.3g (dev %.3g)",
                      dh_euler_name((dh_euler_seq)seq), (double)a[0], (double)a[1], (double)a[2], repro_err(&R, X),
-                     tol, dev);
+                     FZ_REPRO_EULER + FZ_REPRO_K * dev, dev);
             FZ_CHECK(dh_euler_to_mat3_f32(&Y, (dh_euler_seq)seq, a) == DH_OK, "euler_to_mat3");
             check_ortho_out(&Y, 1e-6, "euler_to_mat3");
         }
