@@ -5,7 +5,7 @@
 # fuzz/corpus/<target>/ once. `tools/fuzz.sh 10` is the CI smoke;
 # `tools/fuzz.sh 0` only builds and replays the corpus.
 #
-# Environment: CC (default clang), FUZZ_TARGETS (default: every
+# Environment: FUZZ_SEED (libFuzzer -seed; check.sh sets one for CI), CC (default clang), FUZZ_TARGETS (default: every
 # fuzz/fuzz_*.c), FUZZ_BUILD (default build/fuzz).
 # Inputs found during the run go to $FUZZ_BUILD/work/<target>/ (not
 # committed; copy interesting ones into fuzz/corpus/<target>/ by hand),
@@ -84,6 +84,9 @@ if [ "$SECS" -gt 0 ]; then
     mkdir -p "$B/work/$t" "fuzz/corpus/$t"
     dict=()
     [ -f "fuzz/$t.dict" ] && dict=(-dict="fuzz/$t.dict")
+    # FUZZ_SEED (optional): libFuzzer's -seed, so a CI smoke explores the
+    # same sequence every time (a new finding then reproduces locally)
+    [ -n "${FUZZ_SEED:-}" ] && dict+=(-seed="$FUZZ_SEED")
     if ! "$B/bin/$t" "${dict[@]}" -max_total_time="$SECS" -timeout=5 -rss_limit_mb=2048 -max_len=4096 \
          -artifact_prefix="$B/artifacts/$t-" -print_final_stats=1 \
          "$B/work/$t" "fuzz/corpus/$t" >"$B/logs/$t.log" 2>&1; then
