@@ -69,7 +69,7 @@
  */
 #include "dhmath/dh_robot.h"
 #include "dhmath/dh_trig.h"
-#include "dh_port.h"
+#include "../port/dh_port.h" /* relative: src/ compiles with only include/ on the path */
 
 /* The step variants stay separate functions: inlined together into fk_q
  * they would not share stack slots (over 1 KB on Cortex-M0 at -O2). */

@@ -27,7 +27,7 @@
  */
 #include "dhmath/dh_fixed.h"
 #include "dhmath/dh_trig.h"
-#include "dh_port.h"
+#include "../port/dh_port.h" /* relative: src/ compiles with only include/ on the path */
 
 /* Keeps the rarely used exact path out of line: when GCC -O3 inlines it,
  * the register allocation of the fast path degrades (measured on

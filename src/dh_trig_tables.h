@@ -10,7 +10,7 @@
 
 #include <stdint.h>
 
-#include "dh_port.h"
+#include "../port/dh_port.h" /* relative: src/ compiles with only include/ on the path */
 
 /** Entries per table: sin(0..90 degrees). */
 #define DH_TRIG_TAB_LEN 91
