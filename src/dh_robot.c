@@ -6,6 +6,7 @@
  */
 #include "dhmath/dh_robot.h"
 #include "dhmath/dh_trig.h"
+#include "dh_robot_impl.h"
 
 #define F32_MASK_NO (DH_ROBOT_F32_NO_JOINT | DH_ROBOT_F32_NO_BASE | DH_ROBOT_F32_NO_TOOL)
 #define Q_MASK_NO (DH_ROBOT_Q_NO_JOINT | DH_ROBOT_Q_NO_BASE | DH_ROBOT_Q_NO_TOOL)
@@ -78,24 +79,6 @@ static int is_ident_q(const dh_frame_q *F)
 }
 
 
-/* 1 when every row of the rotation part has Euclidean norm <= 1.5
- * (DH_ROBOT_BASE_SMALL_Q). Entries halved first: the sum of three squares
- * stays below 3 * 2^60. */
-static int rows_small(const dh_frame_q *F)
-{
-    const int64_t lim = (int64_t)9 << 56; /* (1.5 * 2^29)^2 = 2.25 * 2^58 */
-    int k;
-    for (k = 0; k < 3; k++) {
-        int64_t s = 0;
-        int c;
-        for (c = 0; c < 3; c++) {
-            int32_t h = F->r[c][k] >> 1;
-            s += (int64_t)h * h;
-        }
-        if (s > lim) return 0;
-    }
-    return 1;
-}
 
 dh_status dh_robot_init(dh_robot *r, dh_convention conv)
 {
@@ -247,7 +230,7 @@ static dh_status set_frame_f32(dh_robot *r, const dh_mat4_f32 *src, int which)
             r->base_q = F;
             f &= ~(DH_ROBOT_BASE_ID_Q | DH_ROBOT_BASE_SMALL_Q);
             if (is_ident_q(&F)) f |= DH_ROBOT_BASE_ID_Q;
-            if (rows_small(&F)) f |= DH_ROBOT_BASE_SMALL_Q;
+            if (dh_robot_rows_small_q_(&F)) f |= DH_ROBOT_BASE_SMALL_Q;
         } else {
             f |= DH_ROBOT_Q_NO_BASE;
         }

@@ -5,6 +5,7 @@
  */
 #include "dhmath/dh_robot.h"
 #include "dhmath/dh_trig.h"
+#include "dh_robot_impl.h"
 
 #define F32_MASK_NO (DH_ROBOT_F32_NO_JOINT | DH_ROBOT_F32_NO_BASE | DH_ROBOT_F32_NO_TOOL)
 #define Q_MASK_NO (DH_ROBOT_Q_NO_JOINT | DH_ROBOT_Q_NO_BASE | DH_ROBOT_Q_NO_TOOL)
@@ -22,7 +23,7 @@ static uint32_t summary(uint32_t f)
 /* 1 when every row of the rotation part has Euclidean norm <= 1.5
  * (DH_ROBOT_BASE_SMALL_Q). Entries halved first: the sum of three squares
  * stays below 3 * 2^60. */
-static int rows_small(const dh_frame_q *F)
+int dh_robot_rows_small_q_(const dh_frame_q *F)
 {
     const int64_t lim = (int64_t)9 << 56; /* (1.5 * 2^29)^2 = 2.25 * 2^58 */
     int k;
@@ -103,7 +104,7 @@ dh_status dh_robot_set_base_q(dh_robot *r, const dh_frame_q *base)
     DH_ASSERT(base != NULL);
     f = r->flags & ~(DH_ROBOT_Q_NO_BASE | DH_ROBOT_BASE_ID_Q | DH_ROBOT_F32_NO_BASE |
                      DH_ROBOT_BASE_SMALL_Q);
-    if (rows_small(base)) f |= DH_ROBOT_BASE_SMALL_Q;
+    if (dh_robot_rows_small_q_(base)) f |= DH_ROBOT_BASE_SMALL_Q;
     if (copy_frame(&r->base_q, base)) {
         f |= DH_ROBOT_BASE_ID_Q;
         /* identity on both paths: the float base is still current */

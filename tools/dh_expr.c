@@ -82,11 +82,9 @@ static char lower(char c)
     return (c >= 'A' && c <= 'Z') ? (char)(c - 'A' + 'a') : c;
 }
 
-/* Copy s[0..n) into dst as printable ASCII (\xNN escapes), truncated with "...". */
-static void quote(char *dst, size_t cap, const char *s, size_t n)
+void dh_expr_quote(char *dst, size_t cap, const char *s, size_t n, size_t shown_max)
 {
     size_t o = 0, k;
-    const size_t shown_max = 24;
     for (k = 0; k < n && k < shown_max; k++) {
         unsigned char c = (unsigned char)s[k];
         if (c >= 0x20 && c < 0x7f && c != '\'') {
@@ -349,7 +347,7 @@ static int parse_args(parser *p, const term_info *ti, size_t term_pos, term_args
         if (p->buf[p->i] == ')') { p->i++; break; }
         {
             char q[64];
-            quote(q, sizeof q, p->buf + p->i, 1);
+            dh_expr_quote(q, sizeof q, p->buf + p->i, 1, 24u);
             return fail(p, p->i, DH_ERR_ARG, "'%s': expected ',' or ')' but found '%s'",
                         ti->name, q);
         }
@@ -393,7 +391,7 @@ static int do_term(parser *p, const term_info *ti, size_t term_pos)
             else if (c == 'z') axis = 2;
             else {
                 char q[64];
-                quote(q, sizeof q, p->buf + a.pos[0], a.len[0]);
+                dh_expr_quote(q, sizeof q, p->buf + a.pos[0], a.len[0], 24u);
                 return fail(p, a.pos[0], DH_ERR_ARG, "'persp': axis must be x, y or z, not '%s'", q);
             }
             continue;
@@ -401,7 +399,7 @@ static int do_term(parser *p, const term_info *ti, size_t term_pos)
         why = dh_expr_parse_number(p->buf + a.pos[k], a.len[k], &a.v[k]);
         if (why) {
             char q[64];
-            quote(q, sizeof q, p->buf + a.pos[k], a.len[k]);
+            dh_expr_quote(q, sizeof q, p->buf + a.pos[k], a.len[k], 24u);
             return fail(p, a.pos[k], why[0] == 'N' ? DH_ERR_NAN : DH_ERR_ARG,
                         "bad number '%s' (argument %lu of '%s'): %s", q, (unsigned long)(k + 1),
                         ti->name, why);
@@ -491,7 +489,7 @@ static int run(parser *p)
                     ti = &k_terms[k];
             if (!ti) {
                 char q[64];
-                quote(q, sizeof q, p->buf + s, n);
+                dh_expr_quote(q, sizeof q, p->buf + s, n, 24u);
                 return fail(p, s, DH_ERR_ARG, "unknown term '%s'", q);
             }
             star_pending = 0;
@@ -518,7 +516,7 @@ static int run(parser *p)
         }
         {
             char q[64];
-            quote(q, sizeof q, p->buf + p->i, 1);
+            dh_expr_quote(q, sizeof q, p->buf + p->i, 1, 24u);
             if (c == '(' || c == ',')
                 return fail(p, p->i, DH_ERR_ARG, "unexpected '%s' (not after a term name)", q);
             if (is_digit(c) || c == '-' || c == '+' || c == '.')

@@ -74,4 +74,11 @@ int dh_expr_eval_q(const char *buf, size_t len, dh_frame_q *out, dh_expr_error *
  */
 const char *dh_expr_parse_number(const char *buf, size_t len, double *out);
 
+/**
+ * Copy s[0..n) into dst (capacity cap, always NUL-terminated) as printable
+ * ASCII for error messages: bytes outside 0x20..0x7e and the quote character
+ * become \xNN escapes; at most shown_max bytes are shown, then "...".
+ */
+void dh_expr_quote(char *dst, size_t cap, const char *s, size_t n, size_t shown_max);
+
 #endif /* DHMATH_TOOLS_DH_EXPR_H */

@@ -22,26 +22,6 @@ static int is_blank(char c)
 }
 
 /* printable copy of s[0..n) with \xNN escapes, truncated */
-static void quote(char *dst, size_t cap, const char *s, size_t n)
-{
-    size_t o = 0, k;
-    for (k = 0; k < n && k < 32u; k++) {
-        unsigned char c = (unsigned char)s[k];
-        if (c >= 0x20 && c < 0x7f && c != '\'') {
-            if (o + 2 > cap) break;
-            dst[o++] = (char)c;
-        } else {
-            if (o + 5 > cap) break;
-            (void)snprintf(dst + o, cap - o, "\\x%02x", (unsigned)c);
-            o += 4;
-        }
-    }
-    if (k < n && o + 4 <= cap) {
-        memcpy(dst + o, "...", 3);
-        o += 3;
-    }
-    dst[o < cap ? o : cap - 1] = '\0';
-}
 
 #if defined(__GNUC__)
 __attribute__((format(printf, 4, 5)))
@@ -98,7 +78,7 @@ static int parse_joint(const ctx *c, dh_robotfile *rf, const char *line, size_t 
     if (tok_is(line + s, tl, "R")) j->type = DH_JOINT_REVOLUTE;
     else if (tok_is(line + s, tl, "P")) j->type = DH_JOINT_PRISMATIC;
     else {
-        quote(q, sizeof q, line + s, tl);
+        dh_expr_quote(q, sizeof q, line + s, tl, 32u);
         return fail(c, lineno, s + 1, "joint: type must be R or P, not '%s'", q);
     }
     for (;;) {
@@ -108,20 +88,20 @@ static int parse_joint(const ctx *c, dh_robotfile *rf, const char *line, size_t 
         if (tl == 0) break;
         for (eq = 0; eq < tl && line[s + eq] != '='; eq++) { }
         if (eq == tl) {
-            quote(q, sizeof q, line + s, tl);
+            dh_expr_quote(q, sizeof q, line + s, tl, 32u);
             return fail(c, lineno, s + 1, "joint: expected key=value, got '%s'", q);
         }
         for (k = 0; k < 6u; k++)
             if (tok_is(line + s, eq, keys[k])) key = k;
         if (key == 6u) {
-            quote(q, sizeof q, line + s, eq);
+            dh_expr_quote(q, sizeof q, line + s, eq, 32u);
             return fail(c, lineno, s + 1, "joint: unknown key '%s' (keys: a d alpha theta min max)", q);
         }
         if (seen[key]) return fail(c, lineno, s + 1, "joint: duplicate key '%s'", keys[key]);
         seen[key] = 1;
         why = dh_expr_parse_number(line + s + eq + 1, tl - eq - 1, &val[key]);
         if (why) {
-            quote(q, sizeof q, line + s + eq + 1, tl - eq - 1);
+            dh_expr_quote(q, sizeof q, line + s + eq + 1, tl - eq - 1, 32u);
             return fail(c, lineno, s + eq + 2, "joint: bad number '%s' for '%s': %s", q, keys[key], why);
         }
     }
@@ -206,11 +186,11 @@ int dh_robotfile_parse(const char *name, const char *buf, size_t len, dh_robotfi
             if (tok_is(line + s2, t2, "standard")) rf->conv = DH_CONV_STANDARD;
             else if (tok_is(line + s2, t2, "modified")) rf->conv = DH_CONV_MODIFIED;
             else {
-                quote(q, sizeof q, line + s2, t2);
+                dh_expr_quote(q, sizeof q, line + s2, t2, 32u);
                 return fail(&c, lineno, s2 + 1, "unknown convention '%s' (standard or modified)", q);
             }
             if (next_tok(line, n, &i, &s3) != 0) {
-                quote(q, sizeof q, line + s3, n - s3);
+                dh_expr_quote(q, sizeof q, line + s3, n - s3, 32u);
                 return fail(&c, lineno, s3 + 1, "unexpected '%s' after the convention", q);
             }
             conv_seen = 1;
@@ -222,7 +202,7 @@ int dh_robotfile_parse(const char *name, const char *buf, size_t len, dh_robotfi
         } else if (tok_is(line + s, tl, "tool")) {
             if (parse_frame(&c, &rf->tool, "tool", line, n, i, lineno, s + 1)) return -1;
         } else {
-            quote(q, sizeof q, line + s, tl);
+            dh_expr_quote(q, sizeof q, line + s, tl, 32u);
             return fail(&c, lineno, s + 1,
                         "unknown keyword '%s' (convention, joint, base, tool)", q);
         }
