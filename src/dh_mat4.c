@@ -254,10 +254,22 @@ void dh_mat4_set_rot_f32(dh_mat4_f32 *T, const dh_mat3_f32 *R)
         for (r = 0; r < 4; r++) (out)->m[c][r] = a0[r] * x_ + a1[r] * y_ + a2[r] * z_ + a3[r] * w_; \
     } while (0)
 
+/* Rows the affine product computes before its bottom row is set to 0 0 0 1:
+ * all four where 4-wide float SIMD makes a column one vector operation
+ * (the extra lane is free and keeps the code vector-shaped), only the three
+ * needed ones on scalar FPUs such as Cortex-M4F (a fourth row there is a
+ * third more work). Rows 0-2 are the same operations in the same order
+ * either way, so the results do not depend on the target. */
+#if defined(__SSE__) || defined(__ARM_NEON) || defined(__ARM_NEON__) || defined(__ALTIVEC__)
+#define DH_AFFINE_ROWS 4
+#else
+#define DH_AFFINE_ROWS 3
+#endif
+
 #define DH_MUL_COL3(out, c, B)                                                          \
     do {                                                                                \
         const float x_ = (B)->m[c][0], y_ = (B)->m[c][1], z_ = (B)->m[c][2];             \
-        for (r = 0; r < 4; r++) (out)->m[c][r] = a0[r] * x_ + a1[r] * y_ + a2[r] * z_;  \
+        for (r = 0; r < DH_AFFINE_ROWS; r++) (out)->m[c][r] = a0[r] * x_ + a1[r] * y_ + a2[r] * z_;  \
     } while (0)
 
 void dh_mat4_mul_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
@@ -282,11 +294,11 @@ void dh_mat4_mul_affine_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat
     float a0[4], a1[4], a2[4], a3[4];
     int r;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    /* Same shape as dh_mat4_mul_f32 without the bottom row of B. Row 3 is
-     * computed 4-wide with the rest (so the code stays vector-shaped) and
-     * then replaced by 0 0 0 1: the bottom rows of A and B do not affect
-     * the result. */
-    for (r = 0; r < 4; r++) {
+    /* Same shape as dh_mat4_mul_f32 without the bottom row of B. On SIMD
+     * hosts row 3 is computed 4-wide with the rest (DH_AFFINE_ROWS) and then
+     * replaced by 0 0 0 1: the bottom rows of A and B do not affect the
+     * result. */
+    for (r = 0; r < DH_AFFINE_ROWS; r++) {
         a0[r] = A->m[0][r];
         a1[r] = A->m[1][r];
         a2[r] = A->m[2][r];
@@ -297,7 +309,7 @@ void dh_mat4_mul_affine_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat
     DH_MUL_COL3(out, 2, B);
     {
         const float x = B->m[3][0], y = B->m[3][1], z = B->m[3][2];
-        for (r = 0; r < 4; r++) out->m[3][r] = a0[r] * x + a1[r] * y + a2[r] * z + a3[r];
+        for (r = 0; r < DH_AFFINE_ROWS; r++) out->m[3][r] = a0[r] * x + a1[r] * y + a2[r] * z + a3[r];
     }
     out->m[0][3] = 0.0f;
     out->m[1][3] = 0.0f;
