@@ -3,7 +3,8 @@
 #   tools/check.sh            all stages
 #   tools/check.sh host asan  only the named stages
 # Stages: host (Release build, cmocka suite + CLI tests), asan (ASan+UBSan),
-# target suites under QEMU (M0+, M4F, M7), riscv32 compile check, guards
+# target suites under QEMU (M0+, M4F, M7; M0+ and M4F again with DH_SMALL at
+# -Os), riscv32 compile check, guards
 # (no .data/.bss, no heap/printf, fixed path free of float/64-bit division,
 # stack <= 256 B), config variants, coverage >= 95 % lines / 90 % branches,
 # cppcheck (MISRA addon) + clang-tidy, and a 10 s libFuzzer smoke per target.
@@ -11,7 +12,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
 JOBS=${JOBS:-$(nproc)}
-STAGES=${*:-"host asan m0 m4f m7 riscv32 guards variants coverage static fuzz apidoc"}
+STAGES=${*:-"host asan m0 m4f m7 small riscv32 guards variants coverage static fuzz apidoc"}
 failed=""
 
 run_stage() {
@@ -27,11 +28,18 @@ host_suite() { # builddir, extra cmake args...
   ctest --test-dir "$dir" -j"$JOBS" --output-on-failure
 }
 
-target_suite() { # builddir, toolchain file
-  local dir=$1 tc=$2
-  cmake -S "$ROOT" -B "$dir" -DCMAKE_TOOLCHAIN_FILE="$ROOT/port/$tc" -DCMAKE_BUILD_TYPE=Release >/dev/null &&
+target_suite() { # builddir, toolchain file, extra cmake args...
+  local dir=$1 tc=$2; shift 2
+  cmake -S "$ROOT" -B "$dir" -DCMAKE_TOOLCHAIN_FILE="$ROOT/port/$tc" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null &&
   cmake --build "$dir" -j"$JOBS" >/dev/null &&
   ctest --test-dir "$dir" -j"$JOBS" --output-on-failure
+}
+
+# DH_SMALL (size-first code, dh_config.h) on the two cores it is for, at
+# the -Os it is measured with (docs/footprint.md)
+small_suite() {
+  target_suite build/m4f-small cortex-m4f.cmake -DDH_SMALL=ON -DCMAKE_BUILD_TYPE=MinSizeRel &&
+  target_suite build/m0-small cortex-m0plus.cmake -DDH_SMALL=ON -DCMAKE_BUILD_TYPE=MinSizeRel
 }
 
 for s in $STAGES; do
@@ -41,6 +49,7 @@ for s in $STAGES; do
     m0) [ -f port/cortex-m0plus.cmake ] && run_stage m0 target_suite build/m0 cortex-m0plus.cmake ;;
     m4f) [ -f port/cortex-m4f.cmake ] && run_stage m4f target_suite build/m4f cortex-m4f.cmake ;;
     m7) [ -f port/cortex-m7.cmake ] && run_stage m7 target_suite build/m7 cortex-m7.cmake ;;
+    small) run_stage small small_suite ;;
     riscv32) [ -f port/riscv32.cmake ] && run_stage riscv32 bash -c "cmake -S '$ROOT' -B build/rv32 -DCMAKE_TOOLCHAIN_FILE='$ROOT/port/riscv32.cmake' -DDH_BUILD_TESTS=OFF >/dev/null && cmake --build build/rv32 -j$JOBS" ;;
     guards) [ -x tools/check_guards.sh ] && run_stage guards tools/check_guards.sh ;;
     variants) [ -x tools/check_variants.sh ] && run_stage variants tools/check_variants.sh ;;

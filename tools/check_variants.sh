@@ -23,6 +23,8 @@ variant() { # name, cmake args...
 variant qpos12 -DDH_QPOS_FRAC=12
 variant qpos20-j16 -DDH_QPOS_FRAC=20 -DDH_MAX_JOINTS=16
 variant nochecks-plainc -DDH_CHECK_ARGS=OFF -DDH_USE_INTRINSICS=OFF
+variant small -DDH_SMALL=ON
+variant small-plainc -DDH_SMALL=ON -DDH_USE_INTRINSICS=OFF -DDH_QPOS_FRAC=12
 variant confighdr -DDH_CONFIG_HEADER="$ROOT/test/config/dh_test_config.h"
 
 # misspelled option: configure must fail and name the option

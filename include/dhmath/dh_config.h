@@ -61,6 +61,22 @@
 #endif
 
 /**
+ * DH_SMALL: 1 = size-first implementations: every function keeps its
+ * contract (same formats, same status codes, same accuracy bounds) but
+ * is built from loops and a single general code path instead of the
+ * unrolled code and the fast paths that the default build adds for speed.
+ * For firmware where flash matters more than cycles (docs/footprint.md
+ * gives both figures; docs/design.md lists which results may differ in
+ * the last bit). Default 0. Range 0..1. PUBLIC: results may differ.
+ */
+#ifndef DH_SMALL
+#define DH_SMALL 0
+#endif
+#if (DH_SMALL != 0) && (DH_SMALL != 1)
+#error "DH_SMALL must be 0 or 1"
+#endif
+
+/**
  * DH_ASSERT(cond): called for programmer errors only (NULL pointers).
  * Override it by defining DH_ASSERT before this header (or in
  * DH_CONFIG_HEADER). Default: a trap (__builtin_trap on GCC/Clang, an
