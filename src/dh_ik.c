@@ -45,6 +45,7 @@
 #include "dhmath/dh_kin.h"
 #include "dhmath/dh_trig.h"
 #include "dh_kin_impl.h"
+#include "dh_mathf.h"
 
 #include <float.h>
 #include <math.h>
@@ -160,7 +161,7 @@ static IK_NOINLINE float ik_norm3(const float *v, uint32_t mask)
     if (!(m > 0.0f) || !ik_finite(m)) return m;
     for (k = 0; k < 3u; k++)
         if ((mask & (1u << k)) != 0u) s += (v[k] / m) * (v[k] / m);
-    return m * dh_kin_sqrtf_(s);
+    return m * dh_sqrtf_(s);
 }
 
 /* ---- argument checks and set-up ---------------------------------------- */
@@ -214,7 +215,7 @@ static IK_NOINLINE void ik_scales(const ik_ctx *c)
         if (jt->type == DH_JOINT_PRISMATIC && jt->qmin <= jt->qmax)
             L += (fabsf(jt->qmin) > fabsf(jt->qmax)) ? fabsf(jt->qmin) : fabsf(jt->qmax);
     }
-    L += dh_kin_sqrtf_(r->tool.m[3][0] * r->tool.m[3][0] + r->tool.m[3][1] * r->tool.m[3][1] +
+    L += dh_sqrtf_(r->tool.m[3][0] * r->tool.m[3][0] + r->tool.m[3][1] * r->tool.m[3][1] +
                        r->tool.m[3][2] * r->tool.m[3][2]);
     if (!(L > FLT_MIN) || !ik_finite(L * L)) L = 1.0f;
     S[S_L] = L;
@@ -249,7 +250,7 @@ static IK_NOINLINE float ik_reach(const dh_robot *r)
             R += (lo > hi) ? lo : hi;
         }
     }
-    R += dh_kin_sqrtf_(r->tool.m[3][0] * r->tool.m[3][0] + r->tool.m[3][1] * r->tool.m[3][1] +
+    R += dh_sqrtf_(r->tool.m[3][0] * r->tool.m[3][0] + r->tool.m[3][1] * r->tool.m[3][1] +
                        r->tool.m[3][2] * r->tool.m[3][2]);
     if ((r->flags & DH_ROBOT_BASE_ID_F32) == 0u) {
         gmax = 0.0f;
@@ -263,7 +264,7 @@ static IK_NOINLINE float ik_reach(const dh_robot *r)
             if (rs > gmax) gmax = rs;
         }
     }
-    return R * dh_kin_sqrtf_(gmax) * IK_REACH_SLACK;
+    return R * dh_sqrtf_(gmax) * IK_REACH_SLACK;
 }
 
 /* 1 when the target is provably out of reach by more than tol_pos: the
@@ -357,8 +358,8 @@ static IK_NOINLINE int ik_norms(const ik_ctx *c)
         if (k < 3u) sp += e[k] * e[k];
         else sr += e[k] * e[k];
     }
-    S[S_TEP] = dh_kin_sqrtf_(sp);
-    S[S_TER] = dh_kin_sqrtf_(sr);
+    S[S_TEP] = dh_sqrtf_(sp);
+    S[S_TER] = dh_sqrtf_(sr);
     S[S_TE] = 0.5f * (sp + c->p->w_rot * c->p->w_rot * sr);
     if (!ik_finite(S[S_TE])) {
         S[S_TEP] = ik_norm3(e, mask);

@@ -55,69 +55,6 @@ static int jac_finite(float x)
 #define JAC_INLINE static
 #endif
 
-/*
- * Correctly rounded square root in integer arithmetic (IEEE binary32,
- * round to nearest), so that the float path needs no libm: newlib's sqrtf
- * costs 72 bytes of stack on Cortex-M0+, a quarter of the budget. x = m
- * 2^ex with a 24-bit m; the root of M = m 2^K, K = 26 or 25 so that ex - K
- * is even and M lies in [2^48, 2^50), is taken bit by bit (25 bits, the
- * last one the rounding bit, no remainder needed: the square root of a float is never exactly
- * half-way between two floats, so rounding that bit up is round to
- * nearest). Special cases as sqrtf: +-0 -> +-0, +Inf -> +Inf, NaN or
- * x < 0 -> NaN.
- */
-float dh_kin_sqrtf_(float x)
-{
-    uint32_t u, m, e, rem = 0u, root = 0u, i;
-    int32_t eb;
-    float y;
-    memcpy(&u, &x, sizeof u);
-    if ((u & 0x7FFFFFFFu) == 0u || u == 0x7F800000u) return x;      /* +-0, +Inf */
-    if (u > 0x7F800000u) {                                          /* NaN, x < 0 */
-        u = 0x7FC00000u;
-        memcpy(&y, &u, sizeof y);
-        return y;
-    }
-    e = u >> 23;
-    m = u & 0x007FFFFFu;
-    eb = (int32_t)e;
-    if (e == 0u) {          /* subnormal: normalise, eb may go down to -22 */
-        eb = 1;
-        while ((m & 0x00800000u) == 0u) {
-            m <<= 1;
-            eb--;
-        }
-    } else {
-        m |= 0x00800000u;
-    }
-    /* x = m 2^(eb - 150). M = m 2^K = mm 2^24 with mm = m 2^(K - 24) < 2^26:
-     * its 25 bit pairs are the 13 of mm and 12 zero pairs; one root bit per
-     * pair, remainder < 2^27 (32-bit arithmetic throughout). */
-    m <<= (((uint32_t)eb & 1u) != 0u) ? 1u : 2u;
-    for (i = 0; i < 25u; i++) {
-        uint32_t trial;
-        rem = (rem << 2) | ((i < 13u) ? (m >> (24u - 2u * i)) & 3u : 0u);
-        trial = (root << 2) | 1u;
-        if (rem >= trial) {
-            rem -= trial;
-            root = (root << 1) | 1u;
-        } else {
-            root <<= 1;
-        }
-    }
-    /* root in [2^24, 2^25): round its last bit away; the result is
-     * (root / 2) 2^((eb - 150 - K) / 2 + 1), biased exponent (eb + 152 - K) / 2
-     * (the implicit bit of the mantissa adds one to the exponent field,
-     * also when rounding carries into 2^24) */
-    m = (root >> 1) + (root & 1u);
-    eb += (((uint32_t)eb & 1u) != 0u) ? (152 - 25) : (152 - 26);   /* >= 104, even */
-    eb = (eb / 2) - 1;
-    e = (uint32_t)eb;
-    u = (e << 23) + m;
-    memcpy(&y, &u, sizeof y);
-    return y;
-}
-
 /* Column c of J holds the axis of its joint: origin (F's p) in rows 0..2,
  * z (F's a) in rows 3..5. */
 static void jac_axis(const float *F, float *J, uint32_t n, uint32_t c)
@@ -374,11 +311,11 @@ static void rotvec_big(const float *d, float *w, float tr, float theta)
     if (d[4] > d[4u * m]) m = 1u;
     if (d[8] > d[4u * m]) m = 2u;
     km = (d[4u * m] - c) / omc;
-    km = dh_kin_sqrtf_(km > 0.0f ? km : 0.0f);
+    km = dh_sqrtf_(km > 0.0f ? km : 0.0f);
     if (!(km > 0.0f)) km = 1.0f;   /* unreachable for a rotation (km^2 >= 1/3) */
     for (a = 0; a < 3u; a++)
         kv[a] = (a == m) ? km : 0.5f * (d[3u * a + m] + d[3u * m + a]) / (omc * km);
-    kn = dh_kin_sqrtf_(kv[0] * kv[0] + kv[1] * kv[1] + kv[2] * kv[2]);
+    kn = dh_sqrtf_(kv[0] * kv[0] + kv[1] * kv[1] + kv[2] * kv[2]);
     s = (kv[0] * w[0] + kv[1] * w[1] + kv[2] * w[2] < 0.0f) ? -theta / kn : theta / kn;
     w[0] = s * kv[0];
     w[1] = s * kv[1];
@@ -397,7 +334,7 @@ void dh_kin_rotvec_f32_(const float *d, float *w)
     w[0] = d[7] - d[5];                       /* u = (r32 - r23, r13 - r31, r21 - r12) */
     w[1] = d[2] - d[6];
     w[2] = d[3] - d[1];
-    un = dh_kin_sqrtf_(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);   /* = 2 sin(theta) */
+    un = dh_sqrtf_(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);   /* = 2 sin(theta) */
     tr = d[0] + d[4] + d[8] - 1.0f;                         /* = 2 cos(theta) */
     theta = dh_atan2f_(un, tr);               /* in [0, pi]: no acos domain issue */
     if (tr >= 0.0f) {

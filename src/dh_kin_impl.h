@@ -44,11 +44,5 @@ void dh_kin_rotvec_f32_(const float *d, float *w);
  */
 int dh_kin_rot_ok_f32_(const float *c0, const float *c1, const float *c2);
 
-/*
- * Correctly rounded square root of a float in integer arithmetic (same
- * results as an IEEE sqrtf, without libm and with a small leaf frame);
- * +-0, +Inf returned as is, NaN or x < 0 -> NaN.
- */
-float dh_kin_sqrtf_(float x);
 
 #endif /* DHMATH_SRC_DH_KIN_IMPL_H */

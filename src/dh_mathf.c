@@ -250,3 +250,72 @@ void dh_sincosf_(float x, float *s, float *c)
     *s = dh_mf_from_bits(sb);
     *c = dh_mf_from_bits(cb);
 }
+
+/*
+ * Correctly rounded square root in integer arithmetic (IEEE binary32,
+ * round to nearest), so that the float path needs no libm: newlib's sqrtf
+ * costs 72 bytes of stack on Cortex-M0+, a quarter of the budget. x = m
+ * 2^ex with a 24-bit m; the root of M = m 2^K, K = 26 or 25 so that ex - K
+ * is even and M lies in [2^48, 2^50), is taken bit by bit (25 bits, the
+ * last one the rounding bit, no remainder needed: the square root of a float is never exactly
+ * half-way between two floats, so rounding that bit up is round to
+ * nearest). Special cases as sqrtf: +-0 -> +-0, +Inf -> +Inf, NaN or
+ * x < 0 -> NaN.
+ */
+float dh_sqrtf_(float x)
+{
+#if DH_MATHF_VSQRT
+    float r;
+    __asm__("vsqrt.f32 %0, %1" : "=t"(r) : "t"(x));
+    return r;
+#else
+    uint32_t u, m, e, rem = 0u, root = 0u, i;
+    int32_t eb;
+    float y;
+    memcpy(&u, &x, sizeof u);
+    if ((u & 0x7FFFFFFFu) == 0u || u == 0x7F800000u) return x;      /* +-0, +Inf */
+    if (u > 0x7F800000u) {                                          /* NaN, x < 0 */
+        u = 0x7FC00000u;
+        memcpy(&y, &u, sizeof y);
+        return y;
+    }
+    e = u >> 23;
+    m = u & 0x007FFFFFu;
+    eb = (int32_t)e;
+    if (e == 0u) {          /* subnormal: normalise, eb may go down to -22 */
+        eb = 1;
+        while ((m & 0x00800000u) == 0u) {
+            m <<= 1;
+            eb--;
+        }
+    } else {
+        m |= 0x00800000u;
+    }
+    /* x = m 2^(eb - 150). M = m 2^K = mm 2^24 with mm = m 2^(K - 24) < 2^26:
+     * its 25 bit pairs are the 13 of mm and 12 zero pairs; one root bit per
+     * pair, remainder < 2^27 (32-bit arithmetic throughout). */
+    m <<= (((uint32_t)eb & 1u) != 0u) ? 1u : 2u;
+    for (i = 0; i < 25u; i++) {
+        uint32_t trial;
+        rem = (rem << 2) | ((i < 13u) ? (m >> (24u - 2u * i)) & 3u : 0u);
+        trial = (root << 2) | 1u;
+        if (rem >= trial) {
+            rem -= trial;
+            root = (root << 1) | 1u;
+        } else {
+            root <<= 1;
+        }
+    }
+    /* root in [2^24, 2^25): round its last bit away; the result is
+     * (root / 2) 2^((eb - 150 - K) / 2 + 1), biased exponent (eb + 152 - K) / 2
+     * (the implicit bit of the mantissa adds one to the exponent field,
+     * also when rounding carries into 2^24) */
+    m = (root >> 1) + (root & 1u);
+    eb += (((uint32_t)eb & 1u) != 0u) ? (152 - 25) : (152 - 26);   /* >= 104, even */
+    eb = (eb / 2) - 1;
+    e = (uint32_t)eb;
+    u = (e << 23) + m;
+    memcpy(&y, &u, sizeof y);
+    return y;
+#endif
+}

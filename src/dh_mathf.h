@@ -91,4 +91,22 @@ float dh_atan2f_(float y, float x);
  */
 void dh_sincosf_(float x, float *s, float *c);
 
+/*
+ * VSQRT.F32 is the IEEE square root (correctly rounded, sqrt(-x) = NaN,
+ * no errno) on ARM cores with a single-precision FPU; elsewhere the
+ * integer version in dh_mathf.c gives the same bits.
+ */
+#if defined(__GNUC__) && defined(__arm__) && defined(__ARM_FP) && ((__ARM_FP & 4) != 0) && !defined(__SOFTFP__)
+#define DH_MATHF_VSQRT 1
+#else
+#define DH_MATHF_VSQRT 0
+#endif
+
+/**
+ * Square root of x, correctly rounded (IEEE binary32, round to nearest),
+ * without libm: 4 bytes of code on an FPU core, an integer digit-by-digit
+ * root elsewhere. +-0 -> +-0, +Inf -> +Inf, NaN or x < 0 -> NaN.
+ */
+float dh_sqrtf_(float x);
+
 #endif /* DHMATH_SRC_DH_MATHF_H */
