@@ -17,8 +17,9 @@
 #      calls), and the worst-case stack of every public function, including
 #      the libgcc/libm/libc functions it calls, is <= 256 bytes
 #      (tools/dh_stack.py).
-# Exit status 0 when every guard holds. Build dirs: build/guards-<cpu>-<opt>.
-#   tools/check_guards.sh              all four configurations
+# Exit status 0 when every guard holds. Build dirs: build/guards-<cpu>-<opt>
+# (and build/guards-<cpu>-Os-small for DH_SMALL=1 at -Os).
+#   tools/check_guards.sh              all six configurations
 #   STACK_LIMIT=512 tools/check_guards.sh
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -31,16 +32,17 @@ problems=""
 
 bad() { echo "GUARD FAILED: $*"; problems="$problems\n  $*"; fail=1; }
 
-configure_build() { # cpu opt -> builddir
-  local cpu=$1 opt=$2 bt dir
+configure_build() { # cpu opt [small] -> builddir
+  local cpu=$1 opt=$2 small=${3:-} bt dir extra=
   case $opt in
     Os) bt=MinSizeRel ;;
     O2) bt=RelWithDebInfo ;;
     O3) bt=Release ;;
   esac
   dir=build/guards-$cpu-$opt
+  if [ -n "$small" ]; then dir=$dir-small; extra=-DDH_SMALL=ON; fi
   cmake -S "$ROOT" -B "$dir" -DCMAKE_TOOLCHAIN_FILE="$ROOT/port/cortex-$cpu.cmake" \
-        -DCMAKE_BUILD_TYPE=$bt -DDH_BUILD_TESTS=OFF \
+        -DCMAKE_BUILD_TYPE=$bt -DDH_BUILD_TESTS=OFF $extra \
         "-DCMAKE_C_FLAGS=-fstack-usage -fcallgraph-info=su" >/dev/null || return 1
   # call graphs of sources that no longer exist would skew the stack check
   local f
@@ -53,10 +55,10 @@ configure_build() { # cpu opt -> builddir
   echo "$dir"
 }
 
-check_config() { # cpu opt
-  local cpu=$1 opt=$2 dir lib flags
-  echo "=== guards: cortex-$cpu -$opt ==="
-  dir=$(configure_build "$cpu" "$opt") || { bad "cortex-$cpu -$opt: library does not build"; return; }
+check_config() { # cpu opt [small]
+  local cpu=$1 opt=$2 small=${3:-} dir lib flags
+  echo "=== guards: cortex-$cpu -$opt${small:+ DH_SMALL} ==="
+  dir=$(configure_build "$cpu" "$opt" "$small") || { bad "cortex-$cpu -$opt${small:+ DH_SMALL}: library does not build"; return; }
   lib=$dir/libdhmath.a
   # 1-3. sections and symbols (tools/dh_guards.py)
   local mode=soft
@@ -82,6 +84,8 @@ for cpu in m0plus m4f; do
   for opt in Os O2; do
     check_config $cpu $opt
   done
+  # the size-first build (DH_SMALL, dh_config.h) is meant for -Os
+  check_config $cpu Os small
 done
 
 if [ $fail -ne 0 ]; then

@@ -121,9 +121,41 @@ INCLUDE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "in
 FLASH_OUT_RE = re.compile(r"^\.(text|rodata|data|ARM\.exidx|ARM\.extab|init_array|fini_array|init|fini)\b")
 AUX_RE = re.compile(r"^/\* (\S+):(\d+):(\w+) \*/ (.*)$")
 ISSUE5_LIMIT = 8192
-ISSUE5_CONFIG = "M4F -Os"
-# headers of the issue's "core": trig, transforms, inverses, DH FK (no IK)
+ISSUE5_CONFIG = "M4F -Os DH_SMALL"
+ISSUE5_DEFAULT = "M4F -Os"
+# headers that hold the issue's core, and more (profile (a))
 CORE_HEADERS = ("dh_trig.h", "dh_mat4.h", "dh_fixed.h", "dh_robot.h")
+# The issue's core, function by function: "trig, transforms, inverses, DH
+# FK, no IK", each in float and fixed point. Transforms: every constructor
+# of the seed's transforms (translation, rotation about x/y/z and about any
+# axis, scaling, perspective), composition, and application to points,
+# directions, homogeneous points and planes. Inverses: rigid, general, the
+# automatic choice, fixed-point rigid. DH FK: the robot description with
+# base and tool, link matrices, FK to the end and to every frame. Left out
+# (they are in (a)): angle-axis extraction (its own seed topic), validation
+# and repair helpers (rotation/rigidity checks, re-orthonormalisation),
+# conversions between float and fixed frames, joint limits (used by IK).
+CORE_FUNCS = (
+    # trig
+    "dh_sincos_f32", "dh_sin_f32", "dh_cos_f32", "dh_sincos_q", "dh_sin_q", "dh_cos_q",
+    # float transforms
+    "dh_mat4_identity_f32", "dh_mat4_trans_f32", "dh_mat4_rotx_f32", "dh_mat4_roty_f32",
+    "dh_mat4_rotz_f32", "dh_mat4_rot_axis_f32", "dh_mat4_scale_f32", "dh_mat4_persp_f32",
+    "dh_mat4_mul_f32", "dh_mat4_mul_affine_f32", "dh_mat4_premul_f32", "dh_mat4_postmul_f32",
+    "dh_mat4_apply_point_f32", "dh_mat4_apply_dir_f32", "dh_mat4_apply_point_h_f32",
+    "dh_mat4_apply_plane_f32",
+    # fixed-point transforms
+    "dh_frame_identity_q", "dh_frame_trans_q", "dh_frame_rotx_q", "dh_frame_roty_q",
+    "dh_frame_rotz_q", "dh_frame_rot_axis_q", "dh_frame_mul_q", "dh_frame_apply_point_q",
+    "dh_frame_apply_dir_q",
+    # inverses
+    "dh_mat4_inv_rigid_f32", "dh_mat4_inv_f32", "dh_frame_inv_q",
+    # DH forward kinematics
+    "dh_robot_init", "dh_robot_add_joint_f32", "dh_robot_add_joint_q",
+    "dh_robot_set_base_f32", "dh_robot_set_tool_f32", "dh_robot_set_base_q",
+    "dh_robot_set_tool_q", "dh_link_f32", "dh_fk_f32", "dh_fk_frames_f32",
+    "dh_link_q", "dh_fk_q", "dh_fk_frames_q",
+)
 
 
 def header_functions(cflags, tmp):
@@ -163,8 +195,11 @@ def profile_defs(decl):
     fk_f = setup_f + ["dh_fk_f32", "dh_mat4_inv_rigid_f32", "dh_mat4_mul_affine_f32",
                       "dh_mat4_apply_point_f32"]
     fk_q = setup_q + ["dh_fk_q", "dh_frame_inv_q", "dh_frame_mul_q", "dh_frame_apply_point_q"]
+    declared = set(allf)
     return [
-        ("a", "(a) core of issue 5: every function of %s" % ", ".join(CORE_HEADERS), core),
+        ("k", "(k) core of issue 5: trig, transforms, inverses, DH FK, float and fixed",
+         [f for f in CORE_FUNCS if f in declared]),
+        ("a", "(a) every function of %s" % ", ".join(CORE_HEADERS), core),
         ("b", "(b) float FK firmware", fk_f),
         ("c", "(c) fixed FK firmware", fk_q),
         ("bc", "(b+c) float + fixed FK firmware: the functions of (b) and (c) together",
@@ -177,18 +212,13 @@ def profile_defs(decl):
 # what (a) costs without some of its parts: measured by linking (a) minus a
 # set of public functions (key, title, predicate on the function name)
 CORE_VARIANTS = [
-    ("a-float", "(a) float only: without every `_q` function",
+    ("k-float", "(k) float only: without every `_q` function",
      lambda f: f.endswith("_q")),
-    ("a-fixed", "(a) fixed only: without every `_f32` function",
+    ("k-fixed", "(k) fixed only: without every `_f32` function",
      lambda f: f.endswith("_f32")),
-    ("a-noinv", "(a) without general inverse: without `dh_mat4_inv_f32`, "
-     "`dh_mat4_inv_auto_f32`, `dh_mat4_apply_plane_f32` (the functions that reach the "
-     "general 4x4 inverse)",
+    ("k-noinv", "(k) without general inverse: without `dh_mat4_inv_f32` and "
+     "`dh_mat4_apply_plane_f32` (the functions that reach the general 4x4 inverse)",
      lambda f: f in ("dh_mat4_inv_f32", "dh_mat4_inv_auto_f32", "dh_mat4_apply_plane_f32")),
-    ("a-noaxis", "(a) without angle-axis: without `dh_mat4_to_axis_angle_f32`",
-     lambda f: f == "dh_mat4_to_axis_angle_f32"),
-    ("a-nofkframes", "(a) without FK frames: without `dh_fk_frames_f32`, `dh_fk_frames_q`",
-     lambda f: f in ("dh_fk_frames_f32", "dh_fk_frames_q")),
 ]
 
 
@@ -314,7 +344,7 @@ def profiles_for(lib, flags, tmp, tag):
     res = {}
     missing = set()
     defs = profile_defs(decl)
-    core = next(p[2] for p in defs if p[0] == "a")
+    core = next(p[2] for p in defs if p[0] == "k")
     for key, title, funcs in defs + [(k, t, [f for f in core if not pred(f)])
                                      for k, t, pred in CORE_VARIANTS]:
         have = [f for f in funcs if f in defined]
@@ -339,6 +369,8 @@ def profile_sections(data, labels):
     """Markdown of the issue-5 summary (first) and the profile sections (second)."""
     P = {l: data[l]["profiles"] for l in labels}
     ref = ISSUE5_CONFIG if ISSUE5_CONFIG in P else labels[0]
+    dflt = ISSUE5_DEFAULT if ISSUE5_DEFAULT in P else labels[0]
+    k = P[ref]["k"]
     a = P[ref]["a"]
     decl = data[ref]["decl"]
     S = []
@@ -348,115 +380,60 @@ def profile_sections(data, labels):
              "inverses, DH FK, no IK) fits in **<= 8 KiB (%d bytes) of flash on "
              "Cortex-M4F at -Os, tables included**." % ISSUE5_LIMIT)
     S.append("")
-    met = a["lib"] <= ISSUE5_LIMIT
-    S.append("Measured (%s, profile (a) below: every public function of %s, %d functions, "
-             "angle-axis extraction `dh_mat4_to_axis_angle_f32` included since `dh_mat4.h` "
-             "declares it): **%d bytes (%s)** = %d dhmath (of which %d read-only tables and constants) + "
-             "%d libgcc + %d libm/libc. **Target %s**%s." % (
-                 ref, ", ".join("`%s`" % h for h in CORE_HEADERS), len(a["funcs"]), a["lib"],
-                 kib(a["lib"]), a["kinds"]["dhmath"], a["rodata"], a["kinds"]["libgcc"],
-                 a["kinds"]["libm+libc"], "met" if met else "NOT met",
-                 "" if met else " (%.1f times the target, %d bytes over)" % (
-                     a["lib"] / float(ISSUE5_LIMIT), a["lib"] - ISSUE5_LIMIT)))
+    S.append("The core is profile (k) below, %d public functions: sine/cosine; every "
+             "seed transform's constructor (translation, rotation about x/y/z and any "
+             "axis, scaling, perspective), composition, application to points, "
+             "directions, homogeneous points and planes; the rigid, general and "
+             "fixed-point inverses; the robot description with base and tool, link "
+             "matrices and FK to the end and to every frame; each in float and in "
+             "fixed point. It is measured with the library built for size: `-Os` and "
+             "`DH_SMALL=1` (`include/dhmath/dh_config.h`: the same contracts from loops "
+             "and one general code path instead of unrolled code and fast paths; "
+             "`docs/design.md`)." % len(k["funcs"]))
     S.append("")
-    S.append("On the same core and options a firmware that uses only part of the core "
-             "links less (profiles below): float FK firmware (b) %d bytes, fixed FK "
-             "firmware (c) %d bytes, both together (b+c) %d bytes (%s 8 KiB), trig only "
-             "(d) %d bytes; the whole library (e, with IK and rotations) %d bytes." % (
-                 P[ref]["b"]["lib"], P[ref]["c"]["lib"], P[ref]["bc"]["lib"],
-                 "within" if P[ref]["bc"]["lib"] <= ISSUE5_LIMIT else "over",
+    met = k["lib"] <= ISSUE5_LIMIT
+    S.append("Measured (%s): **%d bytes (%s)** = %d dhmath (of which %d read-only tables "
+             "and constants) + %d libgcc + %d libm/libc. **Target %s**%s." % (
+                 ref, k["lib"], kib(k["lib"]), k["kinds"]["dhmath"], k["rodata"],
+                 k["kinds"]["libgcc"], k["kinds"]["libm+libc"], "met" if met else "NOT met",
+                 (" (%d bytes to spare)" % (ISSUE5_LIMIT - k["lib"])) if met else
+                 " (%.2f times the target, %d bytes over)" % (
+                     k["lib"] / float(ISSUE5_LIMIT), k["lib"] - ISSUE5_LIMIT)))
+    S.append("")
+    if dflt != ref:
+        S.append("The same core from the default build (speed first, `DH_SMALL=0`) at "
+                 "%s: %d bytes (%s). Every public function of the four core headers "
+                 "(profile (a), %d functions, adding angle-axis extraction, checks, "
+                 "re-orthonormalisation, float/fixed conversions and joint limits): "
+                 "%d bytes with `DH_SMALL=1`, %d bytes without." % (
+                     dflt, P[dflt]["k"]["lib"], kib(P[dflt]["k"]["lib"]), len(a["funcs"]),
+                     a["lib"], P[dflt]["a"]["lib"]))
+        S.append("")
+    S.append("Smaller firmware (%s): float FK firmware (b) %d bytes, fixed FK firmware "
+             "(c) %d bytes, both (b+c) %d bytes, trig only (d) %d bytes; the whole "
+             "library (e, with IK and rotations) %d bytes." % (
+                 ref, P[ref]["b"]["lib"], P[ref]["c"]["lib"], P[ref]["bc"]["lib"],
                  P[ref]["d"]["lib"], P[ref]["e"]["lib"]))
     S.append("")
-    mods = sorted(a["members"].items(), key=lambda kv: -kv[1])
-    S.append("Largest contributors to (a) on %s (bytes of flash each module adds; "
-             "the full breakdown is in *Per-module breakdown of (a)*):" % ref)
+    mods = sorted(k["members"].items(), key=lambda kv: -kv[1])
+    S.append("Largest contributors to (k) on %s (bytes of flash each module adds; "
+             "the full breakdown is in *Per-module breakdown of (k)*):" % ref)
     S.append("")
     for m, n in mods[:6]:
-        S.append("* `%s`: %d bytes (%.0f %%)" % (module_name(m), n, 100.0 * n / a["lib"]))
-    ext = a["kinds"]["libgcc"] + a["kinds"]["libm+libc"]
+        S.append("* `%s`: %d bytes (%.0f %%)" % (module_name(m), n, 100.0 * n / k["lib"]))
+    ext = k["kinds"]["libgcc"] + k["kinds"]["libm+libc"]
     if ext:
         S.append("* libgcc + libm/libc: %d bytes (%s)" % (ext, ", ".join(
-            "%s %d" % (extern_name(x), n) for x, n in sorted(a["extern"].items(), key=lambda kv: -kv[1]))))
+            "%s %d" % (extern_name(x), n) for x, n in sorted(k["extern"].items(), key=lambda kv: -kv[1]))))
     S.append("")
-    S.append("What the measured variants of (a) show (each linked like (a) without the "
+    S.append("What the measured variants of (k) show (each linked like (k) without the "
              "named functions; the difference is what those functions and everything "
              "only they use cost):")
     S.append("")
-    for k, t, _ in CORE_VARIANTS:
-        v = P[ref][k]
-        gone = sorted(x for x in a["extern"] if x not in v["extern"])
-        S.append("* %s: %d bytes (%s), %d less than (a)%s." % (
-            t, v["lib"], kib(v["lib"]), a["lib"] - v["lib"],
-            "" if not gone else "; of the libgcc/libm/libc objects of (a) it no longer "
-            "links %s (%d bytes)" % (", ".join(extern_name(x) for x in gone),
-                                     sum(a["extern"][x] for x in gone))))
-    S.append("")
-    S.append("Facts about the largest modules (from their source comments; the sizes "
-             "of their functions on %s are listed under *Largest functions of (a)*):" % ref)
-    S.append("")
-    # (text, functions it names that must still be linked into (a) from that
-    # module: the note is withheld when the source changed under it)
-    notes = {
-        "dh_fk_q.c": ("two implementations of the same fixed-point link arithmetic, "
-                      "bit-identical when nothing saturates: the fast path "
-                      "(`fast_std`/`fast_mod`, for robots whose base rows have norm "
-                      "<= 1.5) and the checked path (`step_std`/`step_mod`, any base and "
-                      "lengths); each exists for the standard and the modified DH "
-                      "convention. A firmware needs only one convention, but both are "
-                      "linked because the convention is a run-time field of `dh_robot`. "
-                      "`link_direct` builds the first link directly when the base is the "
-                      "identity (both conventions).",
-                      ["fast_std", "fast_mod", "step_std", "step_mod", "link_direct"]),
-        "dh_frame_q.c": ("every fixed-point frame operation has a fast path (64-bit sums "
-                         "modulo 2^64 with one deferred range test: `dh_mul_fast`, "
-                         "`dh_inv_p_fast`, `dh_apply_fast`) and an exact path used only "
-                         "when that test fails (`dh_mul_exact`, `dh_inv_p_exact`, "
-                         "`dh_apply_exact`, `dh_dot_exact`); the axis-angle constructor "
-                         "`dh_frame_rot_axis_q` brings its own integer square-root and "
-                         "refinement helpers (`dh_inv_sqrt_q30`, `dh_unit_refine`).",
-                         ["dh_mul_fast", "dh_inv_p_fast", "dh_apply_fast", "dh_mul_exact",
-                          "dh_inv_p_exact", "dh_apply_exact", "dh_dot_exact",
-                          "dh_frame_rot_axis_q", "dh_inv_sqrt_q30", "dh_unit_refine"]),
-        "dh_mat4_inv.c": ("three inverse paths: rigid (`dh_mat4_inv_rigid_f32`: rotation "
-                          "transposed, position -R^T p), affine (`dh_inv_affine`, with an "
-                          "exact pre-scaling retry), and projective (`dh_proj_phase1`, "
-                          "`dh_proj_phase2`) with a certified Gauss-Jordan fallback "
-                          "(`dh_inv_certified`, `dh_inv_gauss_jordan`, `dh_residual`, "
-                          "`dh_norm_rows`, `dh_cert_scale`). Only `dh_mat4_inv_f32`, "
-                          "`dh_mat4_inv_auto_f32` and `dh_mat4_apply_plane_f32` reach the "
-                          "general paths; the FK profiles use the rigid one.",
-                          ["dh_mat4_inv_rigid_f32", "dh_inv_affine", "dh_proj_phase1",
-                           "dh_proj_phase2", "dh_inv_certified", "dh_inv_gauss_jordan",
-                           "dh_residual", "dh_norm_rows", "dh_cert_scale"]),
-        "dh_mat4.c": ("constructors, products and point/plane application of float 4x4 "
-                      "transforms.", []),
-        "dh_axis.c": ("angle-axis extraction `dh_mat4_to_axis_angle_f32`; it calls "
-                      "newlib's `atan2f` and `sqrtf`.", ["dh_mat4_to_axis_angle_f32"]),
-        "dh_trig_f32.c": ("table-based float sine/cosine in degrees.", []),
-        "dh_trig_q.c": ("table-based fixed-point sine/cosine in degrees.", []),
-        "dh_robot.c": ("robot setup (joints, limits, base/tool) with float parameters; "
-                       "each is also converted to its fixed-point copy (`to_fix`).",
-                       ["to_fix"]),
-        "dh_robot_q.c": ("robot setup with fixed-point parameters.", []),
-        "dh_frame_conv.c": ("conversions between `dh_frame_q` and float 4x4.", []),
-        "dh_fk_f32.c": ("float DH forward kinematics (standard and modified).", []),
-    }
-    linked = {}
-    for (mm, fn) in a["sections"]:
-        linked.setdefault(module_name(mm) + ".c", set()).add(
-            re.sub(r"\.(constprop|isra|part)\..*$", "", fn))
-    for m, n in mods[:6]:
-        name = module_name(m) + ".c"
-        if name not in notes:
-            continue
-        text, need = notes[name]
-        stale = [f for f in need if f not in linked.get(name, set())]
-        if stale:
-            S.append("* `%s` (%d bytes): (description withheld: %s no longer linked from "
-                     "this module; see *Largest functions of (a)*)" % (
-                         name, n, ", ".join("`%s`" % f for f in stale)))
-        else:
-            S.append("* `%s` (%d bytes): %s" % (name, n, text))
+    for vk, t, _ in CORE_VARIANTS:
+        v = P[ref][vk]
+        S.append("* %s: %d bytes (%s), %d less than (k)." % (
+            t, v["lib"], kib(v["lib"]), k["lib"] - v["lib"]))
     S.append("")
     summary = S
 
@@ -475,10 +452,13 @@ def profile_sections(data, labels):
     L.append("")
     for key, title, funcs in profile_defs(decl):
         got = P[ref][key]["funcs"]
-        if key in ("a", "bc", "d", "e"):
+        if key in ("k", "a", "bc", "d", "e"):
             L.append("* **%s** (%d functions)." % (title, len(got)))
         else:
             L.append("* **%s**: %s." % (title, ", ".join("`%s`" % f for f in got)))
+    L.append("")
+    L.append("In (a), not in (k): %s." % ", ".join(
+        "`%s`" % f for f in P[ref]["a"]["funcs"] if f not in P[ref]["k"]["funcs"]))
     L.append("")
     L.append("Not in (a): `dh_status_str` (`dh_common.h`; %d bytes linked alone on %s, "
              "see the per-function table), `dh_kin.h` (Jacobian, IK) and `dh_rot.h` "
@@ -500,44 +480,44 @@ def profile_sections(data, labels):
             v = P[l][key]
             L.append("| %s | %s | %s%d%s | %d | %d | %d | %d |" % (
                 title.split(":")[0], l,
-                "**" if key == "a" else "", v["lib"], "**" if key == "a" else "",
+                "**" if key == "k" else "", v["lib"], "**" if key == "k" else "",
                 v["kinds"]["dhmath"], v["rodata"], v["kinds"]["libgcc"], v["kinds"]["libm+libc"]))
     L.append("")
-    L.append("## Per-module breakdown of (a)")
+    L.append("## Per-module breakdown of (k)")
     L.append("")
-    L.append("Bytes of flash each object contributes to the core firmware (a): only the "
+    L.append("Bytes of flash each object contributes to the core firmware (k): only the "
              "functions and tables it links, unlike *Flash per module* below, which "
              "counts whole objects.")
     L.append("")
     L.append("| module |" + "".join(" %s |" % l for l in labels))
     L.append("|---|" + "---:|" * len(labels))
-    allm = sorted(set(m for l in labels for m in P[l]["a"]["members"]),
-                  key=lambda m: -P[ref]["a"]["members"].get(m, 0))
+    allm = sorted(set(m for l in labels for m in P[l]["k"]["members"]),
+                  key=lambda m: -P[ref]["k"]["members"].get(m, 0))
     for m in allm:
         L.append("| %s |" % module_name(m) + "".join(
-            " %d |" % P[l]["a"]["members"].get(m, 0) for l in labels))
+            " %d |" % P[l]["k"]["members"].get(m, 0) for l in labels))
     for k in ("libgcc", "libm+libc"):
-        L.append("| *%s* |" % k + "".join(" %d |" % P[l]["a"]["kinds"][k] for l in labels))
-    L.append("| **total** |" + "".join(" **%d** |" % P[l]["a"]["lib"] for l in labels))
+        L.append("| *%s* |" % k + "".join(" %d |" % P[l]["k"]["kinds"][k] for l in labels))
+    L.append("| **total** |" + "".join(" **%d** |" % P[l]["k"]["lib"] for l in labels))
     L.append("")
-    L.append("libgcc and libm/libc objects linked into (a):")
+    L.append("libgcc and libm/libc objects linked into (k):")
     L.append("")
     L.append("| library object |" + "".join(" %s |" % l for l in labels))
     L.append("|---|" + "---:|" * len(labels))
-    allx = sorted(set(x for l in labels for x in P[l]["a"]["extern"]))
+    allx = sorted(set(x for l in labels for x in P[l]["k"]["extern"]))
     for x in allx:
-        L.append("| %s: %s |" % x + "".join(" %s |" % P[l]["a"]["extern"].get(x, "-") for l in labels))
+        L.append("| %s: %s |" % x + "".join(" %s |" % P[l]["k"]["extern"].get(x, "-") for l in labels))
     L.append("")
-    L.append("## Largest functions of (a)")
+    L.append("## Largest functions of (k)")
     L.append("")
-    L.append("Input sections of dhmath linked into (a) on %s, largest first (code "
+    L.append("Input sections of dhmath linked into (k) on %s, largest first (code "
              "includes its literal pool; `static` helpers included; `.constprop`/`.isra` "
              "are GCC's specialised copies), covering the largest modules." % ref)
     L.append("")
     L.append("| module | function or table | bytes |")
     L.append("|---|---|---:|")
     top = set(m for m, _ in mods[:4])
-    for (m, fn), n in sorted(P[ref]["a"]["sections"].items(), key=lambda kv: (-kv[1], kv[0])):
+    for (m, fn), n in sorted(P[ref]["k"]["sections"].items(), key=lambda kv: (-kv[1], kv[0])):
         if m in top and n >= 64:
             L.append("| %s | `%s` | %d |" % (module_name(m), fn, n))
     L.append("")
@@ -599,7 +579,8 @@ def main(argv):
         L.append("* **%s**: `%s`" % (label, " ".join(flags)))
     L.append("")
     L.append("Library configuration: the defaults of `include/dhmath/dh_config.h` "
-             "(DH_MAX_JOINTS 8, DH_QPOS_FRAC 16, DH_CHECK_ARGS 1, DH_USE_INTRINSICS 1).")
+             "(DH_MAX_JOINTS 8, DH_QPOS_FRAC 16, DH_CHECK_ARGS 1, DH_USE_INTRINSICS 1, "
+             "DH_SMALL 0), except `DH_SMALL=1` in the configurations named DH_SMALL.")
     L.append("")
     summary, prof = profile_sections(data, labels)
     L.extend(summary)

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # footprint.sh - flash and stack of the library on Cortex-M0+ and Cortex-M4F
-# at -Os and -O2, written to docs/footprint.md (tools/footprint.py).
+# at -Os and -O2, and at -Os with DH_SMALL=1 (the size-first build), written
+# to docs/footprint.md (tools/footprint.py).
 # The report opens with the issue-5 flash budget (the float + fixed core on
 # Cortex-M4F -Os against 8 KiB) and includes firmware profiles: entry tables
 # generated from the public headers, linked with --gc-sections, flash split
@@ -42,13 +43,14 @@ else
   [ -z "$DIRTY" ] || DESC="$DESC, with uncommitted changes in: ${DIRTY% }"
 fi
 
-build() { # cpu opt
-  local cpu=$1 opt=$2 bt dir f
+build() { # cpu opt [small]
+  local cpu=$1 opt=$2 small=${3:-} bt dir f extra=
   case $opt in Os) bt=MinSizeRel ;; O2) bt=RelWithDebInfo ;; esac
   dir=$PREFIX-$cpu-$opt
+  if [ -n "$small" ]; then dir=$dir-small; extra=-DDH_SMALL=ON; fi
   [ -z "$REV" ] || rm -rf "$dir"
   cmake -S "$SRC" -B "$dir" -DCMAKE_TOOLCHAIN_FILE="$SRC/port/cortex-$cpu.cmake" \
-        -DCMAKE_BUILD_TYPE=$bt -DDH_BUILD_TESTS=OFF \
+        -DCMAKE_BUILD_TYPE=$bt -DDH_BUILD_TESTS=OFF $extra \
         "-DCMAKE_C_FLAGS=-fstack-usage -fcallgraph-info=su" >/dev/null
   for f in "$dir"/CMakeFiles/dhmath.dir/src/*.c.ci; do
     [ -e "$f" ] || continue
@@ -60,6 +62,7 @@ build() { # cpu opt
 
 for cpu in m0plus m4f; do
   for opt in Os O2; do build $cpu $opt; done
+  build $cpu Os small
 done
 
 M0="-mcpu=cortex-m0plus -mthumb -mfloat-abi=soft"
@@ -71,4 +74,6 @@ CMD="tools/footprint.sh${REV:+ --rev $REV}"
   "M0+ -Os=$PREFIX-m0plus-Os=$M0 -Os" \
   "M0+ -O2=$PREFIX-m0plus-O2=$M0 -O2" \
   "M4F -Os=$PREFIX-m4f-Os=$M4F -Os" \
-  "M4F -O2=$PREFIX-m4f-O2=$M4F -O2"
+  "M4F -O2=$PREFIX-m4f-O2=$M4F -O2" \
+  "M0+ -Os DH_SMALL=$PREFIX-m0plus-Os-small=$M0 -Os" \
+  "M4F -Os DH_SMALL=$PREFIX-m4f-Os-small=$M4F -Os"
