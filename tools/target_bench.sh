@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # target_bench.sh - on-target benchmark: builds the firmware in bench/target
 # for Cortex-M0 (micro:bit), Cortex-M4F (mps2-an386) and Cortex-M7
-# (mps2-an500) at -O2 and -Os, runs each image under QEMU with
+# (mps2-an500) at -O2, -Os and -Os with DH_SMALL=1 (size-first build), runs each image under QEMU with
 # -icount shift=0 (executed instructions counted exactly through SysTick)
 # and writes docs/performance_target.md.
 #
@@ -9,7 +9,8 @@
 #
 # Environment:
 #   TBENCH_CORES  cores to run (default "m0 m4f m7")
-#   TBENCH_OPTS   optimisation levels (default "O2 Os")
+#   TBENCH_OPTS   optimisation levels (default "O2 Os Os-small"; Os-small =
+#                 -Os with -DDH_SMALL=ON)
 #   JOBS          parallel compile jobs (default: nproc)
 #   QEMU          emulator (default qemu-system-arm)
 #   TBENCH_LIB    benchmark the library (src/ include/ port/ CMakeLists.txt)
@@ -26,7 +27,7 @@ cd "$(dirname "$0")/.."
 ROOT=$(pwd)
 OUT=${1:-docs/performance_target.md}
 CORES=${TBENCH_CORES:-m0 m4f m7}
-OPTS=${TBENCH_OPTS:-O2 Os}
+OPTS=${TBENCH_OPTS:-O2 Os Os-small}
 JOBS=${JOBS:-$(nproc)}
 QEMU=${QEMU:-qemu-system-arm}
 PY=/usr/bin/python3
@@ -68,12 +69,14 @@ echo "== library: $libdesc"
 logs=()
 for core in $CORES; do
   for opt in $OPTS; do
+    extra=
     case $opt in O2) bt=RelWithDebInfo ;; Os) bt=MinSizeRel ;;
-      *) echo "target_bench.sh: unknown optimisation $opt (O2 or Os)" >&2; exit 2 ;; esac
+      Os-small) bt=MinSizeRel; extra=-DDH_SMALL=ON ;;
+      *) echo "target_bench.sh: unknown optimisation $opt (O2, Os or Os-small)" >&2; exit 2 ;; esac
     dir=build/tbench-$core-$opt
     echo "== $core -$opt: build ($dir)"
     cmake -S bench/target -B "$dir" -DCMAKE_TOOLCHAIN_FILE="$ROOT/$(toolchain "$core")" \
-          -DCMAKE_BUILD_TYPE=$bt -DBENCH_LIB_ROOT="$libroot" >"$dir.configure.log" 2>&1 ||
+          -DCMAKE_BUILD_TYPE=$bt -DBENCH_LIB_ROOT="$libroot" $extra >"$dir.configure.log" 2>&1 ||
       { cat "$dir.configure.log"; exit 1; }
     cmake --build "$dir" -j"$JOBS" >"$dir.build.log" 2>&1 ||
       { tail -40 "$dir.build.log"; exit 1; }

@@ -20,7 +20,8 @@ from fractions import Fraction
 
 CORES = [("m0", "Cortex-M0 (microbit)"), ("m4f", "Cortex-M4F (mps2-an386)"),
          ("m7", "Cortex-M7 (mps2-an500)")]
-OPTS = ["O2", "Os"]
+OPTS = ["O2", "Os", "Os-small"]
+OPT_LABEL = {"O2": "-O2", "Os": "-Os", "Os-small": "-Os DH_SMALL"}
 
 # Puma 560 FK targets of issue 6: (core key, op name, limit, label)
 TARGETS = [
@@ -234,7 +235,8 @@ def main():
     w("| library flags | as in a normal build: `-std=c99 -ffunction-sections -fdata-sections` plus "
       "the core flags of `port/cortex-*.cmake`; `-O2` = CMake `RelWithDebInfo`, `-Os` = "
       "`MinSizeRel`; default configuration (`DH_MAX_JOINTS` 8, `DH_QPOS_FRAC` 16, "
-      "`DH_CHECK_ARGS` on, `DH_USE_INTRINSICS` on) |")
+      "`DH_CHECK_ARGS` on, `DH_USE_INTRINSICS` on, `DH_SMALL` off) except `-Os DH_SMALL` = "
+      "`MinSizeRel` with `DH_SMALL` on (the size-first build of issue 5) |")
     w("| cores | " + "; ".join(
         "%s: `%s`" % (core_name[c], meta.get("flags-" + c, "?")) for c, _ in CORES
         if any(cc == c for cc, _ in cols)) + " |")
@@ -242,13 +244,14 @@ def main():
     w("")
     w("## Targets (issue 6)")
     w("")
-    w("| goal | limit | -O2 | -Os | met at -O2 |")
-    w("|---|---:|---:|---:|---|")
+    w("| goal | limit | -O2 | -Os | -Os DH_SMALL | met at -O2 |")
+    w("|---|---:|---:|---:|---:|---|")
     for c, name, lim, label in TARGETS:
-        v2, vs = get(c, "O2", name), get(c, "Os", name)
+        v2, vs, vk = get(c, "O2", name), get(c, "Os", name), get(c, "Os-small", name)
         met = "-" if v2 is None else ("yes (%.0f %% of the limit)" % (100.0 * v2 / lim)
                                       if v2 <= lim else "**no** (+%.0f %%)" % (100.0 * (v2 / lim - 1)))
-        w("| %s (`%s`) | %d | %s | %s | %s |" % (label, name.split()[0], lim, fmt(v2), fmt(vs), met))
+        w("| %s (`%s`) | %d | %s | %s | %s | %s |" % (label, name.split()[0], lim, fmt(v2), fmt(vs),
+                                                      fmt(vk), met))
     w("")
     w("Figures: the function's own instructions per call (see below); the caller's "
       "argument set-up and `BL` add %s. The fixed-point figures for \"Cortex-M4\" come "
@@ -260,7 +263,7 @@ def main():
     w("## Instructions per call")
     w("")
     hdr = "| operation | calls (N) | " + " | ".join(
-        "%s %s" % (core_name[c].split(" ")[0], "-" + o) for c, o in cols) + " |"
+        "%s %s" % (core_name[c].split(" ")[0], OPT_LABEL[o]) for c, o in cols) + " |"
     w(hdr)
     w("|---|---:|" + "---:|" * len(cols))
     names = []
@@ -305,7 +308,7 @@ def main():
       "argument set-up and `BL` and are higher than in the table above by that much.")
     w("")
     w("| dhmath | peer | " + " | ".join(
-        "%s %s" % (core_name[c].split(" ")[0], "-" + o) for c, o in cols) + " |")
+        "%s %s" % (core_name[c].split(" ")[0], OPT_LABEL[o]) for c, o in cols) + " |")
     w("|---|---|" + "---|" * len(cols))
     for dh, peer in PEERS:
         cells = []
@@ -405,7 +408,7 @@ def main():
       "needed. Its 16 KiB of RAM hold the inputs with a 4 KiB stack reserve "
       "(`bench/target/microbit_bench.ld`); the high-water mark is in the table above.")
     w("* **Re-running.** `tools/target_bench.sh [output.md]` rebuilds the firmware for "
-      "every core at -O2 and -Os in `build/tbench-<core>-<opt>/`, runs it and rewrites this "
+      "every core at -O2, -Os and -Os with `DH_SMALL` (`Os-small`) in `build/tbench-<core>-<opt>/`, runs it and rewrites this "
       "page; it fails if a sanity check in the firmware fails (statuses, "
       "`dh_sincos_f32` vs `sinf`, `dh_fk_q` vs `dh_fk_f32`, cglm vs dhmath product), if "
       "the counter does not behave like the icount clock or if the firmware's stack "
