@@ -53,6 +53,219 @@ static int is_finite(float x)
 #define FK_ROWS 3
 #endif
 
+#if DH_SMALL
+#include "dhmath/dh_mat4.h" /* dh_mat4_mul_affine_f32 */
+
+/*
+ * DH_SMALL: the same arithmetic with less code. One step serves both
+ * conventions: a joint is two plane rotations of the columns with the
+ * position update in between. Standard DH turns (n, o) by theta, then
+ * p <- (p + d a) + a_len n, then twists (o, a) by alpha; modified DH
+ * twists first, then p <- (p + a_len n) + d a, then turns. Every entry is
+ * computed by the same operations in the same order as step_std /
+ * step_mod of the default build, so the results are the same bits (rows
+ * 0..2 only; the bottom row is written as 0 0 0 1). The link matrix stays
+ * written out (link_direct): a step applied to the identity gives the
+ * same values but not always the same signs of zeros (1 * 0 - 0 * 1 is
+ * +0 where -st ca is -0). The q checks and the joint values share one
+ * function; the tool product is dh_mat4_mul_affine_f32.
+ */
+#if defined(__GNUC__) || defined(__clang__)
+#define FK_NOINLINE __attribute__((noinline))
+#else
+#define FK_NOINLINE
+#endif
+
+static FK_NOINLINE void set_bottom(dh_mat4_f32 *T)
+{
+    T->m[0][3] = 0.0f;
+    T->m[1][3] = 0.0f;
+    T->m[2][3] = 0.0f;
+    T->m[3][3] = 1.0f;
+}
+
+/* Columns i and i + 1 of T turned by (c, s): x' = c x + s y,
+ * y' = c y - s x. */
+static FK_NOINLINE void turn(dh_mat4_f32 *T, int i, float s, float c)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        float x = T->m[i][k], y = T->m[i + 1][k];
+        T->m[i][k] = c * x + s * y;
+        T->m[i + 1][k] = c * y - s * x;
+    }
+}
+
+/* One joint in place (mod: 1 for modified DH); v = (sin theta, cos theta,
+ * d) from joint_values. */
+static FK_NOINLINE void step(dh_mat4_f32 *T, int mod, const dh_joint *j, const float v[3])
+{
+    /* standard: theta on columns (0, 1) first, position p + d a + a_len n;
+     * modified: alpha on columns (1, 2) first, p + a_len n + d a */
+    float s1 = v[0], c1 = v[1], s2 = j->sa, c2 = j->ca, l1 = v[2], l2 = j->a;
+    const float *x1 = T->m[2], *x2 = T->m[0];
+    int k;
+    if (mod) {
+        s1 = j->sa;
+        c1 = j->ca;
+        s2 = v[0];
+        c2 = v[1];
+        l1 = j->a;
+        l2 = v[2];
+        x1 = T->m[0];
+        x2 = T->m[2];
+    }
+    turn(T, mod, s1, c1);
+    for (k = 0; k < 3; k++) T->m[3][k] = (T->m[3][k] + l1 * x1[k]) + l2 * x2[k];
+    turn(T, !mod, s2, c2);
+    set_bottom(T);
+}
+
+/* The link matrix written out (what a step applied to the identity gives
+ * up to the sign of zeros; the default build's first link, same bits). */
+static FK_NOINLINE void link_direct(dh_mat4_f32 *A, dh_convention conv, const dh_joint *j, const float v[3])
+{
+    const float st = v[0], ct = v[1], d = v[2], sa = j->sa, ca = j->ca, a = j->a;
+    if (conv == DH_CONV_STANDARD) {
+        A->m[0][0] = ct;       A->m[0][1] = st;       A->m[0][2] = 0.0f;
+        A->m[1][0] = -st * ca; A->m[1][1] = ct * ca;  A->m[1][2] = sa;
+        A->m[2][0] = st * sa;  A->m[2][1] = -ct * sa; A->m[2][2] = ca;
+        A->m[3][0] = a * ct;   A->m[3][1] = a * st;   A->m[3][2] = d;
+    } else {
+        A->m[0][0] = ct;       A->m[0][1] = st * ca;  A->m[0][2] = st * sa;
+        A->m[1][0] = -st;      A->m[1][1] = ct * ca;  A->m[1][2] = ct * sa;
+        A->m[2][0] = 0.0f;     A->m[2][1] = -sa;      A->m[2][2] = ca;
+        A->m[3][0] = a;        A->m[3][1] = -sa * d;  A->m[3][2] = ca * d;
+    }
+    set_bottom(A);
+}
+
+/* Checks joint j's value q: DH_ERR_NAN when q is not finite,
+ * DH_ERR_OVERFLOW when q + offset overflows, else DH_OK and, when v is
+ * not NULL, v = (sin theta, cos theta, d). */
+static FK_NOINLINE dh_status joint_values(const dh_joint *j, float q, float *v)
+{
+    /* (theta, d) with q added to the joint's variable */
+    float td[2];
+    const int k = j->type != DH_JOINT_REVOLUTE;
+    td[0] = j->theta_deg;
+    td[1] = j->d;
+    td[k] = q + td[k];
+    if (!is_finite(q)) return DH_ERR_NAN;
+    if (!is_finite(td[k])) return DH_ERR_OVERFLOW;
+    if (v) {
+        (void)dh_sincos_f32(td[0], &v[0], &v[1]);
+        v[2] = td[1];
+    }
+    return DH_OK;
+}
+
+/* dst = src unless they are the same frame. */
+static FK_NOINLINE void copy(dh_mat4_f32 *dst, const dh_mat4_f32 *src)
+{
+    if (dst != src) *dst = *src;
+}
+
+/* 1 when the 3x4 part of T is finite: x - x is 0 for a finite x and NaN
+ * otherwise, and a NaN stays in the sum. */
+static FK_NOINLINE int frame_finite(const dh_mat4_f32 *T)
+{
+    float z = 0.0f;
+    int c, k;
+    for (c = 0; c < 4; c++)
+        for (k = 0; k < 3; k++) z += T->m[c][k] - T->m[c][k];
+    return z == 0.0f;
+}
+
+dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
+{
+    float v[3];
+    dh_status st;
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(A != NULL);
+    if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS || (r->flags & DH_ROBOT_HAS_F32) == 0u)
+        return DH_ERR_ARG;
+    st = joint_values(&r->joint[i], q, v);
+    if (st == DH_OK) link_direct(A, r->conv, &r->joint[i], v);
+    return st;
+}
+
+/* T_end = last * tool when T_end is not NULL (last: frames[n-1], or T_end
+ * itself); DH_ERR_OVERFLOW when the result (or, without T_end, the last
+ * frame) is not finite. A non-finite chain frame always reaches T_end
+ * (x*inf, x*0*inf). */
+static dh_status finish(const dh_robot *r, const dh_mat4_f32 *last, dh_mat4_f32 *T_end)
+{
+    if (T_end) {
+        if (r->flags & DH_ROBOT_TOOL_ID_F32) copy(T_end, last);
+        else dh_mat4_mul_affine_f32(T_end, last, &r->tool);
+        last = T_end;
+    }
+    return frame_finite(last) ? DH_OK : DH_ERR_OVERFLOW;
+}
+
+/*
+ * The chain: frames may be NULL (end frame only; T_end then not NULL),
+ * T_end may be NULL. Built in frames[] or in T_end, from the base; with
+ * an identity base the first link is written out, as by default. Every q
+ * is checked before anything is written. The tool product (finish) is
+ * dh_mat4_mul_affine_f32: the same operations in the same order as the
+ * default build's row-by-row product.
+ */
+static FK_NOINLINE dh_status fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *T_end)
+{
+    const dh_mat4_f32 *src = &r->base;
+    dh_mat4_f32 *dst = T_end;
+    uint32_t i;
+    dh_status st;
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(q != NULL);
+    if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS || (r->flags & DH_ROBOT_HAS_F32) == 0u)
+        return DH_ERR_ARG;
+    for (i = 0u; i < r->n; i++) {
+        st = joint_values(&r->joint[i], q[i], NULL);
+        if (st != DH_OK) return st;
+    }
+    for (i = 0u; i < r->n; i++) {
+        float v[3];
+        const dh_joint *j = &r->joint[i];
+        if (frames) dst = &frames[i];
+        (void)joint_values(j, q[i], v);
+        if (i == 0u && (r->flags & DH_ROBOT_BASE_ID_F32)) {
+            link_direct(dst, r->conv, j, v);
+        } else {
+            copy(dst, src);
+            step(dst, r->conv != DH_CONV_STANDARD, j, v);
+        }
+        src = dst;
+    }
+    return DH_OK;
+}
+
+/* The chain, then the tool and the finiteness test: called one after the
+ * other, so the frames of fk_f32 and of the tool product are never on the
+ * stack together (the deepest path stays within 256 bytes on M0+). */
+static FK_NOINLINE dh_status fk_all(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *T_end)
+{
+    dh_status st = fk_f32(r, q, frames, T_end);
+    if (st != DH_OK) return st;
+    return finish(r, frames ? &frames[r->n - 1u] : T_end, T_end);
+}
+
+dh_status dh_fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *T)
+{
+    DH_ASSERT(T != NULL);
+    return fk_all(r, q, NULL, T);
+}
+
+dh_status dh_fk_frames_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *T_end)
+{
+    DH_ASSERT(frames != NULL);
+    return fk_all(r, q, frames, T_end);
+}
+
+#else /* !DH_SMALL: the code below is the default build, unchanged */
+
 /* One joint, in place: T = T * A on the first FK_ROWS rows. Single
  * pointer, each row read completely before it is written, so the compiler
  * sees the exact (zero-distance) dependences and may vectorise over rows. */
@@ -282,3 +495,5 @@ dh_status dh_fk_frames_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frame
     DH_ASSERT(frames != NULL);
     return fk_f32(r, q, frames, T_end);
 }
+
+#endif /* DH_SMALL */

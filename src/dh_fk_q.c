@@ -178,6 +178,147 @@ DH_PORT_INLINE int32_t len(int32_t x)
     return (x == INT32_MIN) ? -INT32_MAX : x;
 }
 
+#if DH_SMALL
+#include "dhmath/dh_fixed.h" /* dh_frame_identity_q */
+
+/*
+ * DH_SMALL: one code path for both conventions, every base, tool and
+ * twist, with the arithmetic of the checked path (step_std / step_mod of
+ * the default build): same products, one rounding (half up) per entry,
+ * every entry saturated. The fast path is bit-identical to the checked
+ * path whenever nothing saturates, so dropping it changes no result.
+ *
+ * A joint is two plane rotations of the columns and a position update in
+ * between: standard DH turns (n, o) by theta, moves p by a n + d a, then
+ * twists (o, a) by alpha; modified DH twists (o, a) first, moves p by
+ * a n + d a with the twisted a, then turns (n, o). turn() is the same
+ * helper for both rotations. The exact twists (0, +-90, 180 degrees) need
+ * no branch: with c, s in {0, +-2^30} every product is exact, so each
+ * entry comes out as y, z, or a negation, and -INT32_MIN rounds to 2^31,
+ * which saturates to INT32_MAX with the overflow flag, as neg() does.
+ * Also without a special case: the identity base (the step on the
+ * identity equals the link written out, entry by entry, and cannot
+ * saturate) and dh_link_q (a step applied to the identity). The identity
+ * tool is still skipped (a copy): the product by it would give the same
+ * bits but costs about 600 instructions of a 6-joint FK on Cortex-M4.
+ */
+
+/* v saturated to int32 (|v| < 2^63 - 2^31); sets *ovf when it does not
+ * fit: v + 2^31 then leaves [0, 2^32). */
+static FKQ_NOINLINE int32_t sat32(int64_t v, int *ovf)
+{
+    if (((uint64_t)(v + ((int64_t)1 << 31)) >> 32) != 0u) {
+        *ovf = 1;
+        return sat_sign((uint32_t)((uint64_t)v >> 32));
+    }
+    return (int32_t)v;
+}
+
+/* Columns i and i + 1 of T turned by cs = (s, c): x' = c x + s y,
+ * y' = c y - s x, each rounded once and saturated (rnd30, as the checked
+ * path). Products below 2^62, their sums below 2^63 (file comment). */
+static FKQ_NOINLINE void turn(dh_frame_q *T, unsigned i, const dh_q30 *cs, int *ovf)
+{
+    const dh_q30 s = cs[0], c = cs[1];
+    int k;
+    for (k = 0; k < 3; k++) {
+        const int32_t x = T->r[i][k], y = T->r[i + 1u][k];
+        T->r[i][k] = rnd30(MLA(MUL(c, x), s, y), ovf);
+        T->r[i + 1u][k] = rnd30(MUL(c, y) - MUL(s, x), ovf);
+    }
+}
+
+/* T <- T * A_i(q) in place (joint i of r). Returns 1 when d + q or an
+ * entry saturated. theta = q + offset is brought back into int32 by
+ * whole turns (exact); d is saturated and INT32_MIN raised to -INT32_MAX
+ * (the documented one-LSB raise, not an overflow), as is a. */
+static FKQ_NOINLINE int step(dh_frame_q *T, const dh_robot *r, uint32_t i, int32_t q)
+{
+    const dh_joint *j = &r->joint[i];
+    const unsigned mod = r->conv != DH_CONV_STANDARD;
+    dh_q30 v[4]; /* sin theta, cos theta, sin alpha, cos alpha */
+    int64_t t = j->theta_q, dv = j->d_q;
+    const int32_t a = len(j->a_q);
+    int32_t d;
+    int ovf = 0, k;
+    if (j->type == DH_JOINT_REVOLUTE) t += q;
+    else dv += q;
+    if (t > INT32_MAX) t -= TURNS_182;
+    else if (t < INT32_MIN) t += TURNS_182;
+    dh_sincos_q((dh_q16)t, &v[0], &v[1]);
+    v[2] = j->sa_q;
+    v[3] = j->ca_q;
+    d = len(sat32(dv, &ovf));
+    turn(T, mod, &v[2u * mod], &ovf);
+    for (k = 0; k < 3; k++)
+        T->p[k] = sat32(T->p[k] + ((MLA(MUL(a, T->r[0][k]), d, T->r[2][k]) + HALF29) >> 30), &ovf);
+    turn(T, mod ^ 1u, &v[2u * (mod ^ 1u)], &ovf);
+    return ovf;
+}
+
+/* a0 b[0]/2 + a1 b[1]/2 + a2 b[2]/2 (each product halved, floor), exact in
+ * 64 bits (|each| <= 2^61). */
+static FKQ_NOINLINE int64_t dot3h(int32_t a0, int32_t a1, int32_t a2, const int32_t *b)
+{
+    return (MUL(a0, b[0]) >> 1) + (MUL(a1, b[1]) >> 1) + (MUL(a2, b[2]) >> 1);
+}
+
+/* out = A * B, three-term sums of halved products rounded at bit 29. out
+ * may be A (row k of A is read before row k of out is written), not B. */
+static FKQ_NOINLINE void mul_frame(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B, int *ovf)
+{
+    int c, k;
+    for (k = 0; k < 3; k++) {
+        const int32_t a0 = A->r[0][k], a1 = A->r[1][k], a2 = A->r[2][k], p = A->p[k];
+        for (c = 0; c < 3; c++) out->r[c][k] = sat32((dot3h(a0, a1, a2, B->r[c]) + HALF28) >> 29, ovf);
+        out->p[k] = sat32(p + ((dot3h(a0, a1, a2, B->p) + HALF28) >> 29), ovf);
+    }
+}
+
+/* dst = src unless they are the same frame. */
+static FKQ_NOINLINE void copy_frame(dh_frame_q *dst, const dh_frame_q *src)
+{
+    if (dst != src) *dst = *src;
+}
+
+dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A)
+{
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(A != NULL);
+    if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_OVERFLOW;
+    dh_frame_identity_q(A);
+    return step(A, r, i, q) ? DH_ERR_OVERFLOW : DH_OK;
+}
+
+/* The chain is built in the caller's memory (frames[i], or T_end), from
+ * the base; nothing is written before the argument checks. */
+static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, dh_frame_q *T_end)
+{
+    const dh_frame_q *cur;
+    dh_frame_q *out = T_end;
+    uint32_t i;
+    int ovf = 0;
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(q != NULL);
+    if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_OVERFLOW;
+    cur = &r->base_q;
+    for (i = 0u; i < r->n; i++) {
+        if (frames) out = &frames[i];
+        copy_frame(out, cur);
+        ovf |= step(out, r, i, q[i]);
+        cur = out;
+    }
+    if (T_end) {
+        if ((r->flags & DH_ROBOT_TOOL_ID_Q) == 0u) mul_frame(T_end, cur, &r->tool_q, &ovf);
+        else copy_frame(T_end, cur);
+    }
+    return ovf ? DH_ERR_OVERFLOW : DH_OK;
+}
+
+#else /* !DH_SMALL: the code below is the default build, unchanged */
+
 /* Sum of halved products rounded at bit 29 (three-term sums). */
 static int32_t rot_h(int64_t x, int *ovf)
 {
@@ -689,6 +830,8 @@ static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, d
     }
     return ovf ? DH_ERR_OVERFLOW : DH_OK;
 }
+
+#endif /* DH_SMALL */
 
 dh_status dh_fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *T)
 {

@@ -8,6 +8,8 @@
 #include "dht.h"
 #include "support_robots.h"
 #include "dhmath/dh_robot.h"
+#include "dhmath/dh_mat4.h"
+#include "dhmath/dh_trig.h"
 
 #include <math.h>
 #include <string.h>
@@ -504,6 +506,129 @@ static void base_tool(void)
     DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) != 0u);
 }
 
+/* ---- exact bits ---------------------------------------------------------- */
+
+/* An angle for the bit tests: whole multiples of 90 degrees (sines and
+ * cosines of exactly 0 and +-1, so zeros of either sign appear), or any. */
+static float bit_angle(void)
+{
+    if (dht_rand_uniform(0, 1) < 0.5) return 90.0f * (float)floor(dht_rand_uniform(-4.0, 5.0));
+    return (float)dht_rand_uniform(-360, 360);
+}
+
+/* A length for the bit tests: 0, -0 or any. */
+static float bit_len(void)
+{
+    double u = dht_rand_uniform(0, 1);
+    if (u < 0.2) return 0.0f;
+    if (u < 0.3) return -0.0f;
+    return (float)dht_rand_uniform(-2, 2);
+}
+
+/*
+ * dh_link_f32, and dh_fk_f32 of the same joint alone behind the identity
+ * base and tool, give exactly the link matrix written out (each entry a
+ * sine, cosine or length, or one product of two; the signs of zeros
+ * included), in both conventions, for R and P joints. Sines and cosines
+ * from dh_sincos_f32 and the robot description, the products in the
+ * test. DH_SMALL builds the chain with a general step, so this pins that
+ * the first link of an identity base still is the one written out.
+ */
+static void link_bits(void)
+{
+    long rep, nrep = DHT_ITER(3000);
+    for (rep = 0; rep < nrep; rep++) {
+        dh_robot r;
+        dh_mat4_f32 A, T, E;
+        const int conv = (int)(rep & 1), pris = (rep % 3) == 0;
+        const float al = bit_angle(), th = bit_angle(), a = bit_len(), d = bit_len();
+        const float q = pris ? bit_len() : bit_angle();
+        float st, ct, sa, ca, dd;
+        int c, k;
+        DHT_EQ_INT(dh_robot_init(&r, conv ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, pris ? DH_JOINT_PRISMATIC : DH_JOINT_REVOLUTE, a, d, al, th), DH_OK);
+        sa = r.joint[0].sa;
+        ca = r.joint[0].ca;
+        DHT_EQ_INT(dh_sincos_f32(pris ? th : q + th, &st, &ct), DH_OK);
+        dd = pris ? q + d : d;
+        if (conv == 0) {
+            E.m[0][0] = ct;       E.m[0][1] = st;       E.m[0][2] = 0.0f;
+            E.m[1][0] = -st * ca; E.m[1][1] = ct * ca;  E.m[1][2] = sa;
+            E.m[2][0] = st * sa;  E.m[2][1] = -ct * sa; E.m[2][2] = ca;
+            E.m[3][0] = a * ct;   E.m[3][1] = a * st;   E.m[3][2] = dd;
+        } else {
+            E.m[0][0] = ct;       E.m[0][1] = st * ca;  E.m[0][2] = st * sa;
+            E.m[1][0] = -st;      E.m[1][1] = ct * ca;  E.m[1][2] = ct * sa;
+            E.m[2][0] = 0.0f;     E.m[2][1] = -sa;      E.m[2][2] = ca;
+            E.m[3][0] = a;        E.m[3][1] = -sa * dd; E.m[3][2] = ca * dd;
+        }
+        for (c = 0; c < 4; c++) E.m[c][3] = c == 3 ? 1.0f : 0.0f;
+        memset(&A, 0x5a, sizeof A);
+        DHT_EQ_INT(dh_link_f32(&r, 0, q, &A), DH_OK);
+        DHT_EQ_INT(dh_fk_f32(&r, &q, &T), DH_OK);
+        for (c = 0; c < 4; c++)
+            for (k = 0; k < 4; k++) {
+                DHT_EQ_F32_BITS(A.m[c][k], E.m[c][k]);
+                DHT_EQ_F32_BITS(T.m[c][k], E.m[c][k]);
+            }
+    }
+}
+
+/*
+ * One joint behind a base: the documented update (dh_fk_f32.c), evaluated
+ * here in the same order, gives the same bits, signs of zeros included,
+ * in both conventions (DH_SMALL serves both with one step whose rotation
+ * and position order depend on the convention). Bases: rotations by whole
+ * multiples of 90 degrees (exact zeros of either sign) or any, and any
+ * position. Assumes no FMA contraction (C99 mode, -ffp-contract=off).
+ */
+static void step_bits(void)
+{
+    long rep, nrep = DHT_ITER(3000);
+    for (rep = 0; rep < nrep; rep++) {
+        dh_robot r;
+        dh_mat4_f32 B, Rx, T, E;
+        const int conv = (int)(rep & 1), pris = (rep % 3) == 0;
+        const float al = bit_angle(), th = bit_angle(), a = bit_len(), d = bit_len();
+        const float q = pris ? bit_len() : bit_angle();
+        float st, ct, sa, ca, dd;
+        int c, k;
+        DHT_EQ_INT(dh_mat4_rotz_f32(&B, bit_angle()), DH_OK);
+        DHT_EQ_INT(dh_mat4_rotx_f32(&Rx, bit_angle()), DH_OK);
+        dh_mat4_mul_f32(&B, &B, &Rx);
+        for (k = 0; k < 3; k++) B.m[3][k] = bit_len();
+        DHT_EQ_INT(dh_robot_init(&r, conv ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, pris ? DH_JOINT_PRISMATIC : DH_JOINT_REVOLUTE, a, d, al, th), DH_OK);
+        DHT_EQ_INT(dh_robot_set_base_f32(&r, &B), DH_OK);
+        if ((r.flags & DH_ROBOT_BASE_ID_F32) != 0u) continue; /* the written-out link: link_bits */
+        sa = r.joint[0].sa;
+        ca = r.joint[0].ca;
+        DHT_EQ_INT(dh_sincos_f32(pris ? th : q + th, &st, &ct), DH_OK);
+        dd = pris ? q + d : d;
+        E = B;
+        for (k = 0; k < 3; k++) {
+            const float nx = B.m[0][k], ox = B.m[1][k], ax = B.m[2][k], px = B.m[3][k];
+            if (conv == 0) {
+                const float n1 = ct * nx + st * ox, u = ct * ox - st * nx;
+                E.m[3][k] = px + dd * ax + a * n1;
+                E.m[0][k] = n1;
+                E.m[1][k] = ca * u + sa * ax;
+                E.m[2][k] = ca * ax - sa * u;
+            } else {
+                const float o1 = ca * ox + sa * ax, a1 = ca * ax - sa * ox;
+                E.m[3][k] = px + a * nx + dd * a1;
+                E.m[0][k] = ct * nx + st * o1;
+                E.m[1][k] = ct * o1 - st * nx;
+                E.m[2][k] = a1;
+            }
+        }
+        for (c = 0; c < 4; c++) E.m[c][3] = c == 3 ? 1.0f : 0.0f;
+        DHT_EQ_INT(dh_fk_f32(&r, &q, &T), DH_OK);
+        for (c = 0; c < 4; c++)
+            for (k = 0; k < 4; k++) DHT_EQ_F32_BITS(T.m[c][k], E.m[c][k]);
+    }
+}
+
 static void q_only_robot_refused(void)
 {
     dh_robot r;
@@ -540,5 +665,7 @@ static const dht_case cases[] = {
     DHT_CASE(limits),
     DHT_CASE(base_tool),
     DHT_CASE(q_only_robot_refused),
+    DHT_CASE(link_bits),
+    DHT_CASE(step_bits),
 };
 DHT_MAIN(cases)

@@ -11,6 +11,7 @@
 #include "support_robots.h"
 #include "dhmath/dh_robot.h"
 #include "dhmath/dh_fixed.h"
+#include "dhmath/dh_trig.h"
 
 #include <math.h>
 #include <string.h>
@@ -981,6 +982,157 @@ static void length_int32_min(void)
         }
 }
 
+/* ---- exact bits of the link and of exact twists -------------------------- */
+
+/* round(x / 2^30) half up, as the library's one rounding per entry (the
+ * test's own arithmetic: floor division written out) */
+static int32_t rnd30_ref(int64_t x)
+{
+    int64_t t = x + ((int64_t)1 << 29);
+    int64_t qt = t / ((int64_t)1 << 30);
+    if (qt * ((int64_t)1 << 30) > t) qt--;
+    return (int32_t)qt;
+}
+
+/*
+ * dh_link_q, and dh_fk_q / dh_fk_frames_q of the same joint alone behind
+ * the identity base and tool, give exactly the link matrix written out:
+ * each entry one product rounded once (or a sine, cosine or length
+ * itself). Both conventions, R and P joints, the twists of twist_alphas,
+ * INT32_MIN lengths. Sine and cosine come from dh_sincos_q, sin/cos alpha
+ * from the robot description (not from the code under test). This pins
+ * the bits that DH_SMALL obtains by applying the general step to the
+ * identity (see dh_fk_q.c).
+ */
+static void link_bits(void)
+{
+    long rep, nrep = DHT_ITER(3000);
+    for (rep = 0; rep < nrep; rep++) {
+        dh_robot r;
+        dh_frame_q A, E, T, F;
+        const int conv = (int)(rep & 1);
+        const int pris = (rep % 3) == 0;
+        const int32_t alpha = (rep % 4 == 0) ? dhs_to_q(dht_rand_uniform(-180, 180), 16)
+                                             : twist_alphas[(size_t)(rep / 4) % N_TWIST_ALPHAS];
+        const int32_t theta = dhs_to_q(dht_rand_uniform(-360, 360), 16);
+        int32_t a = rnd_len_q(800), d = rnd_len_q(800), q;
+        int32_t st, ct, sa, ca, dd;
+        if (rep % 17 == 0) a = INT32_MIN;
+        if (rep % 19 == 0) d = INT32_MIN;
+        if (rep % 5 == 0) q = 0;                /* whole degrees: exact sines */
+        else q = pris ? rnd_len_q(300) : dhs_to_q(dht_rand_uniform(-360, 360), 16);
+        if (pris && d == INT32_MIN) q = 0;      /* d + q = INT32_MIN: the one-LSB raise */
+        DHT_EQ_INT(dh_robot_init(&r, conv ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, pris ? DH_JOINT_PRISMATIC : DH_JOINT_REVOLUTE, a, d, alpha, theta),
+                   DH_OK);
+        sa = r.joint[0].sa_q;
+        ca = r.joint[0].ca_q;
+        dh_sincos_q(pris ? theta : theta + q, &st, &ct);
+        dd = pris ? d + q : d;
+        if (dd == INT32_MIN) dd = -INT32_MAX;
+        if (a == INT32_MIN) a = -INT32_MAX;
+        if (conv == 0) {
+            E.r[0][0] = ct;
+            E.r[0][1] = st;
+            E.r[0][2] = 0;
+            E.r[1][0] = rnd30_ref(-(int64_t)ca * st);
+            E.r[1][1] = rnd30_ref((int64_t)ca * ct);
+            E.r[1][2] = sa;
+            E.r[2][0] = rnd30_ref((int64_t)sa * st);
+            E.r[2][1] = rnd30_ref(-(int64_t)sa * ct);
+            E.r[2][2] = ca;
+            E.p[0] = rnd30_ref((int64_t)a * ct);
+            E.p[1] = rnd30_ref((int64_t)a * st);
+            E.p[2] = dd;
+        } else {
+            E.r[0][0] = ct;
+            E.r[0][1] = rnd30_ref((int64_t)st * ca);
+            E.r[0][2] = rnd30_ref((int64_t)st * sa);
+            E.r[1][0] = -st;
+            E.r[1][1] = rnd30_ref((int64_t)ct * ca);
+            E.r[1][2] = rnd30_ref((int64_t)ct * sa);
+            E.r[2][0] = 0;
+            E.r[2][1] = -sa;
+            E.r[2][2] = ca;
+            E.p[0] = a;
+            E.p[1] = rnd30_ref(-(int64_t)sa * dd);
+            E.p[2] = rnd30_ref((int64_t)ca * dd);
+        }
+        memset(&A, 0x5a, sizeof A);
+        DHT_EQ_INT(dh_link_q(&r, 0, q, &A), DH_OK);
+        DHT_TRUE_MSG(memcmp(&A, &E, sizeof A) == 0, "conv %d pris %d alpha %ld theta %ld q %ld", conv, pris,
+                     (long)alpha, (long)theta, (long)q);
+        fk_q_ok(&r, &q, &T);
+        DHT_TRUE(memcmp(&T, &E, sizeof T) == 0);
+        DHT_EQ_INT(dh_fk_frames_q(&r, &q, &F, NULL), DH_OK);
+        DHT_TRUE(memcmp(&F, &E, sizeof F) == 0);
+    }
+}
+
+/*
+ * Exact twists are exact: one joint with theta = 0 (exact cos 1, sin 0)
+ * and no lengths behind a base B keeps n and p and maps (o, a) to
+ * (o, a), (a, -o), (-a, o), (-o, -a) for alpha 0, 90, -90, 180 (also as
+ * -270, 270, -180), in both conventions. A negated INT32_MIN saturates to
+ * INT32_MAX with DH_ERR_OVERFLOW (and only then). Bases: full-range
+ * random entries with INT32_MIN / INT32_MAX sprinkled in (default build:
+ * checked path; DH_SMALL: the general twist multiplied out) and small
+ * ones (default build: fast path).
+ */
+static void exact_twist_bits(void)
+{
+    static const int32_t alphas[] = { 0, 90 * Q16DEG, -90 * Q16DEG, 180 * Q16DEG,
+                                      -270 * Q16DEG, 270 * Q16DEG, -180 * Q16DEG };
+    /* per alpha: (o', a') = (so * col[io], sa * col[ia]), col 1 = o, 2 = a */
+    static const int io[] = { 1, 2, 2, 1, 2, 2, 1 }, ia[] = { 2, 1, 1, 2, 1, 1, 2 };
+    static const int so[] = { 1, 1, -1, -1, 1, -1, -1 }, sg[] = { 1, -1, 1, -1, -1, 1, -1 };
+    long rep, nrep = DHT_ITER(400);
+    for (rep = 0; rep < nrep; rep++) {
+        const int conv = (int)(rep & 1);
+        const int small = (rep & 2) != 0;
+        size_t t;
+        dh_frame_q B;
+        int c, k;
+        for (c = 0; c < 3; c++) {
+            for (k = 0; k < 3; k++) {
+                double x = floor(small ? dht_rand_uniform(-268435456.0, 268435456.0)
+                                       : dht_rand_uniform(-2147483648.0, 2147483648.0));
+                int32_t v = x >= 2147483647.0 ? INT32_MAX : (int32_t)x;
+                if (!small && dht_rand_uniform(0, 1) < 0.15) v = dht_rand_uniform(0, 1) < 0.5 ? INT32_MIN : INT32_MAX;
+                B.r[c][k] = v;
+            }
+            B.p[c] = rnd_len_q(1000);
+        }
+        for (t = 0; t < sizeof alphas / sizeof alphas[0]; t++) {
+            dh_robot r;
+            dh_frame_q T;
+            int32_t q = 0;
+            int ovf = 0;
+            dh_status st;
+            DHT_EQ_INT(dh_robot_init(&r, conv ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
+            DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, alphas[t], 0), DH_OK);
+            DHT_EQ_INT(dh_robot_set_base_q(&r, &B), DH_OK);
+            st = dh_fk_q(&r, &q, &T);
+            for (k = 0; k < 3; k++) {
+                int32_t eo = B.r[io[t]][k], ea = B.r[ia[t]][k];
+                if (so[t] < 0) {
+                    if (eo == INT32_MIN) ovf = 1;
+                    eo = eo == INT32_MIN ? INT32_MAX : -eo;
+                }
+                if (sg[t] < 0) {
+                    if (ea == INT32_MIN) ovf = 1;
+                    ea = ea == INT32_MIN ? INT32_MAX : -ea;
+                }
+                DHT_EQ_INT(T.r[0][k], B.r[0][k]);
+                DHT_EQ_INT(T.r[1][k], eo);
+                DHT_EQ_INT(T.r[2][k], ea);
+                DHT_EQ_INT(T.p[k], B.p[k]);
+            }
+            DHT_EQ_INT(st, ovf ? DH_ERR_OVERFLOW : DH_OK);
+        }
+    }
+}
+
 /* Prismatic q + d: exactly INT32_MIN is the one-LSB raise (no overflow),
  * below it saturates (DH_ERR_OVERFLOW, d = -INT32_MAX used). */
 static void prismatic_edges(void)
@@ -1111,5 +1263,7 @@ static const dht_case cases[] = {
     DHT_CASE(prismatic_edges),
     DHT_CASE(joints_out_of_range),
     DHT_CASE(robot_q_setters),
+    DHT_CASE(link_bits),
+    DHT_CASE(exact_twist_bits),
 };
 DHT_MAIN(cases)
