@@ -7,6 +7,12 @@
 #include "dhmath/dh_robot.h"
 #include "dhmath/dh_trig.h"
 #include "dh_robot_impl.h"
+#if DH_SMALL
+#include <string.h>
+
+#include "dhmath/dh_fixed.h"
+#include "dhmath/dh_mat4.h"
+#endif
 
 #define F32_MASK_NO (DH_ROBOT_F32_NO_JOINT | DH_ROBOT_F32_NO_BASE | DH_ROBOT_F32_NO_TOOL)
 #define Q_MASK_NO (DH_ROBOT_Q_NO_JOINT | DH_ROBOT_Q_NO_BASE | DH_ROBOT_Q_NO_TOOL)
@@ -25,6 +31,48 @@ static int is_finite(float x)
 {
     return (x - x) == 0.0f;
 }
+
+#if DH_SMALL
+/*
+ * Round x * 2^frac to the nearest int32 (ties away from zero), as the
+ * default build below, bit for bit. Returns 0 when stored, 1 when x is
+ * finite but the result not representable, 2 when x is NaN or infinite
+ * (out untouched in both cases), so that callers OR the results of several
+ * conversions and test finiteness and range at once. rem is in (-1, 1)
+ * and 2 rem is exact, so its truncation is +1 for rem >= 0.5, -1 for
+ * rem <= -0.5 and 0 otherwise: the default's steps (its INT32_MAX test
+ * cannot succeed: the largest float below 2^31 is 2^31 - 128, an integer,
+ * so rem is 0 there).
+ */
+static unsigned to_fix(float x, unsigned frac, int32_t *out)
+{
+    float v, rem, scale;
+    int32_t i;
+    uint32_t b, m, lim = (158u - frac) << 23; /* bit pattern of 2^(31 - frac) */
+    memcpy(&b, &x, sizeof b);
+    m = b & 0x7FFFFFFFu;
+    /* x * 2^frac is in [-2^31, 2^31) when |x| < 2^(31 - frac) (the bit
+     * patterns of non-negative floats order like their values; Inf and NaN
+     * lie above) or x = -2^(31 - frac) */
+    if (m >= lim && b != (lim | 0x80000000u)) return (m >= 0x7F800000u) ? 2u : 1u;
+    b = (127u + frac) << 23;                  /* 2^frac */
+    memcpy(&scale, &b, sizeof scale);
+    v = x * scale;                            /* exact */
+    i = (int32_t)v;
+    rem = v - (float)i;
+    *out = i + (int32_t)(rem + rem);
+    return 0u;
+}
+
+/* Same, saturating to the int32 range instead of failing (finite x). */
+static int32_t to_fix_sat(float x, unsigned frac)
+{
+    int32_t v;
+    if (to_fix(x, frac, &v) == 0u) return v;
+    return (x < 0.0f) ? INT32_MIN : INT32_MAX;
+}
+
+#else /* !DH_SMALL */
 
 /*
  * Round x * 2^frac to the nearest int32 (ties away from zero). Returns 1
@@ -57,6 +105,137 @@ static int32_t to_fix_sat(float x, unsigned frac)
     if (to_fix(x, frac, &v)) return v;
     return (x < 0.0f) ? INT32_MIN : INT32_MAX;
 }
+
+#endif /* DH_SMALL */
+
+#if DH_SMALL
+/*
+ * Size-first build: one code path that reuses the integer setters of
+ * dh_robot_q.c for the fixed half of every float setter. The float setter
+ * validates everything first (r untouched on error), converts each constant
+ * with to_fix (the same rounding as the default build, so the fixed copies
+ * are bit-identical), lets dh_robot_add_joint_q / dh_robot_set_base_q /
+ * dh_robot_set_tool_q store them, then stores the float half and corrects
+ * the bits that describe the float path. dh_robot_init is the sequence of
+ * setters that produce the empty description: DH_MAX_JOINTS zero joints
+ * (n then reset to 0) and identity base and tool (set through the fixed
+ * setters, which keeps its worst-case stack well below that of the float
+ * frame setter); every field ends with the value the default build writes.
+ */
+
+/* Flags after a float setter stored its frame or joint: clear, set, then
+ * the summary bits (one copy of the sequence for both callers). */
+static void fix_flags(dh_robot *r, uint32_t clear, uint32_t set)
+{
+    r->flags = summary((r->flags & ~clear) | set);
+}
+
+/* which: 0 base, 1 tool; the tool's flag bits are the base's shifted by 1 */
+static dh_status set_frame_f32(dh_robot *r, const dh_mat4_f32 *src, unsigned which)
+{
+    dh_frame_q F;
+    int32_t unused;
+    int c, k;
+    unsigned st = 0u;  /* to_fix results ORed: 2 NaN/Inf, 1 does not fit */
+    unsigned bad = 0u; /* 1: not the identity, 2: bottom row not 0 0 0 1 */
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(src != NULL);
+    for (c = 0; c < 4; c++) {
+        /* columns 0..2 rotation (Q2.30), column 3 position; the bottom row
+         * is converted only for its finiteness */
+        int32_t *q = (c < 3) ? F.r[c] : F.p;
+        unsigned frac = (c < 3) ? 30u : (unsigned)DH_QPOS_FRAC;
+        for (k = 0; k < 4; k++) {
+            float x = src->m[c][k];
+            st |= to_fix(x, frac, (k < 3) ? &q[k] : &unused);
+            if (x != (float)(c == k)) bad |= (k == 3) ? 2u : 1u;
+        }
+    }
+    if (st & 2u) return DH_ERR_NAN;
+    if (bad & 2u) return DH_ERR_NOT_RIGID;
+    *((which != 0u) ? &r->tool : &r->base) = *src;
+    if (st == 0u) {
+        /* fixed copy, its identity / small-rows bits; this marks the float
+         * frame stale, which fix_flags corrects */
+        if (which != 0u) (void)dh_robot_set_tool_q(r, &F);
+        else (void)dh_robot_set_base_q(r, &F);
+    }
+    /* an identity always fits: a frame that does not is no identity */
+    fix_flags(r, (DH_ROBOT_F32_NO_BASE | DH_ROBOT_BASE_ID_F32 | DH_ROBOT_Q_NO_BASE) << which,
+              ((st != 0u) ? DH_ROBOT_Q_NO_BASE : ((bad != 0u) ? 0u : DH_ROBOT_BASE_ID_F32)) << which);
+    return DH_OK;
+}
+
+dh_status dh_robot_set_base_f32(dh_robot *r, const dh_mat4_f32 *base)
+{
+    return set_frame_f32(r, base, 0u);
+}
+
+dh_status dh_robot_set_tool_f32(dh_robot *r, const dh_mat4_f32 *tool)
+{
+    return set_frame_f32(r, tool, 1u);
+}
+
+dh_status dh_robot_init(dh_robot *r, dh_convention conv)
+{
+    DH_ASSERT(r != NULL);
+    if (conv != DH_CONV_STANDARD && conv != DH_CONV_MODIFIED) return DH_ERR_ARG;
+    r->conv = conv;
+    r->n = 0u;
+    /* the float frames are set to the identity below; recorded first so
+     * that the fixed setters keep the float path current */
+    r->flags = DH_ROBOT_BASE_ID_F32 | DH_ROBOT_TOOL_ID_F32;
+    /* every slot as an empty joint; the call after the last one fails */
+    while (dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.0f, 0.0f) == DH_OK) {
+    }
+    r->n = 0u;
+    dh_mat4_identity_f32(&r->base);
+    dh_mat4_identity_f32(&r->tool);
+    dh_frame_identity_q(&r->base_q);
+    (void)dh_robot_set_base_q(r, &r->base_q);
+    (void)dh_robot_set_tool_q(r, &r->base_q);
+    return DH_OK;
+}
+
+dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float a, float d,
+                                 float alpha_deg, float theta_deg)
+{
+    dh_joint *j;
+    float v[4];
+    int32_t x[4];
+    int k;
+    unsigned st = 0u;
+    uint32_t f;
+    DH_ASSERT(r != NULL);
+    if (r->n >= (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    if (type != DH_JOINT_REVOLUTE && type != DH_JOINT_PRISMATIC) return DH_ERR_ARG;
+    v[0] = a;
+    v[1] = d;
+    v[2] = alpha_deg;
+    v[3] = theta_deg;
+    for (k = 0; k < 4; k++) st |= to_fix(v[k], (k < 2) ? (unsigned)DH_QPOS_FRAC : 16u, &x[k]);
+    if (st & 2u) return DH_ERR_NAN;
+    if (st != 0u) {
+        /* fixed copy of an unavailable joint: zeros, sin/cos 0 and 1 */
+        for (k = 0; k < 4; k++) x[k] = 0;
+    }
+    f = r->flags;
+    j = &r->joint[r->n];
+    (void)dh_robot_add_joint_q(r, type, x[0], x[1], x[2], x[3]);
+    j->a = v[0];
+    j->d = v[1];
+    j->alpha_deg = v[2];
+    j->theta_deg = v[3];
+    j->qmin = 1.0f;
+    j->qmax = -1.0f;
+    (void)dh_sincos_f32(v[2], &j->sa, &j->ca); /* finite input: cannot fail */
+    /* dh_robot_add_joint_q marked the float path unavailable: undo that
+     * unless an earlier joint was added with it (f: the flags before) */
+    fix_flags(r, DH_ROBOT_F32_NO_JOINT & ~f, (st != 0u) ? DH_ROBOT_Q_NO_JOINT : 0u);
+    return DH_OK;
+}
+
+#else /* !DH_SMALL */
 
 static int is_ident_f32(const dh_mat4_f32 *T)
 {
@@ -180,6 +359,8 @@ dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float a, float
     return DH_OK;
 }
 
+#endif /* DH_SMALL */
+
 dh_status dh_robot_set_limits_f32(dh_robot *r, uint32_t i, float qmin, float qmax)
 {
     dh_joint *j;
@@ -197,6 +378,7 @@ dh_status dh_robot_set_limits_f32(dh_robot *r, uint32_t i, float qmin, float qma
     return DH_OK;
 }
 
+#if !DH_SMALL
 /*
  * Shared by base and tool: validate, store the float frame, convert to Q.
  * which: 0 base, 1 tool.
@@ -259,6 +441,8 @@ dh_status dh_robot_set_tool_f32(dh_robot *r, const dh_mat4_f32 *tool)
 {
     return set_frame_f32(r, tool, 1);
 }
+
+#endif /* !DH_SMALL */
 
 dh_status dh_robot_check_limits_f32(const dh_robot *r, const float *q)
 {

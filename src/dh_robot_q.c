@@ -84,6 +84,52 @@ dh_status dh_robot_check_limits_q(const dh_robot *r, const int32_t *q)
     return DH_OK;
 }
 
+#if DH_SMALL
+/* Size-first build: base and tool share one setter. which: 0 base, 1 tool;
+ * the tool's flag bits are the base's shifted left by 1 (the small-rows
+ * bit exists for the base only). Same stores and flags as the default. */
+static dh_status set_frame_q(dh_robot *r, const dh_frame_q *src, unsigned which)
+{
+    dh_frame_q *dst;
+    uint32_t f;
+    int c, k, ident = 1;
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(src != NULL);
+    f = r->flags & ~((DH_ROBOT_Q_NO_BASE | DH_ROBOT_BASE_ID_Q | DH_ROBOT_F32_NO_BASE) << which);
+    if (which == 0u) {
+        f &= ~DH_ROBOT_BASE_SMALL_Q;
+        if (dh_robot_rows_small_q_(src)) f |= DH_ROBOT_BASE_SMALL_Q;
+    }
+    /* copy column by column (src may be dst itself; columns 0..2 rotation,
+     * 3 position) and test for the identity on the way */
+    dst = (which != 0u) ? &r->tool_q : &r->base_q;
+    for (c = 0; c < 4; c++) {
+        const int32_t *s = (c < 3) ? src->r[c] : src->p;
+        int32_t *d = (c < 3) ? dst->r[c] : dst->p;
+        for (k = 0; k < 3; k++) {
+            if (s[k] != ((c == k) ? DH_Q30_ONE : 0)) ident = 0;
+            d[k] = s[k];
+        }
+    }
+    if (ident) f |= DH_ROBOT_BASE_ID_Q << which;
+    /* identity on both paths: the float frame is still current */
+    if (!ident || (f & (DH_ROBOT_BASE_ID_F32 << which)) == 0u) f |= DH_ROBOT_F32_NO_BASE << which;
+    r->flags = summary(f);
+    return DH_OK;
+}
+
+dh_status dh_robot_set_base_q(dh_robot *r, const dh_frame_q *base)
+{
+    return set_frame_q(r, base, 0u);
+}
+
+dh_status dh_robot_set_tool_q(dh_robot *r, const dh_frame_q *tool)
+{
+    return set_frame_q(r, tool, 1u);
+}
+
+#else /* !DH_SMALL */
+
 /* Copy; returns 1 when the frame is the identity. */
 static int copy_frame(dh_frame_q *dst, const dh_frame_q *src)
 {
@@ -132,3 +178,5 @@ dh_status dh_robot_set_tool_q(dh_robot *r, const dh_frame_q *tool)
     r->flags = summary(f);
     return DH_OK;
 }
+
+#endif /* DH_SMALL */

@@ -69,11 +69,13 @@
  * Checked exhaustively as well. */
 #define DH_TRIG_DIV180_64 23860930u
 
+#if !DH_SMALL
 /* 2^e mod 360 for e = 0..14; for e >= 3, 2^(e+12) == 2^e (mod 360) because
  * 2^e == 0 (mod 8) and 2^12 = 4096 == 1 (mod 45). */
 static const uint16_t dh_trig_pow2_mod360[15] = {
     1u, 2u, 4u, 8u, 16u, 32u, 64u, 128u, 256u, 152u, 304u, 248u, 136u, 272u, 184u
 };
+#endif
 
 static float dh_trig_nan_f32(void)
 {
@@ -83,6 +85,30 @@ static float dh_trig_nan_f32(void)
     return r;
 }
 
+#if DH_SMALL
+/* The whole degrees mod 360 of a finite float a >= 2^23 (magnitude bit
+ * pattern mag), as a float (exact: < 360). a = M * 2^e with the 24-bit
+ * significand M and e = 0..104, so a is an integer of 24 + e bits; they are
+ * shifted in from the top, doubling the remainder mod 360 at each step
+ * (binary long division: 2 i + 1 < 720, one conditional subtraction). The
+ * same exact integer as the table method of the default build, without the
+ * table and the multiply-shift reduction; at most 128 steps on this rare
+ * path. */
+static float dh_trig_big_deg(uint32_t mag)
+{
+    uint32_t k = (mag >> 23) - 126u;       /* 24 + e bits */
+    uint32_t m = (mag << 8) | 0x80000000u; /* M (implicit bit set) at the top */
+    uint32_t i = 0u;
+    do {
+        i = 2u * i + (m >> 31);
+        m <<= 1;
+        if (i >= 360u) {
+            i -= 360u;
+        }
+    } while (--k != 0u);
+    return (float)i;
+}
+#else /* !DH_SMALL */
 /* The whole degrees mod 360 of a finite float a >= 2^23 (magnitude bit
  * pattern mag), as a float (exact: < 360). a = M * 2^e with the 24-bit
  * significand M and e = 0..104; 2^e mod 360 comes from
@@ -102,6 +128,7 @@ static float dh_trig_big_deg(uint32_t mag)
     i = dh_trig_mod360(dh_trig_mod360(mant) * dh_trig_pow2_mod360[e]);
     return (float)i;
 }
+#endif /* DH_SMALL */
 
 dh_status dh_sincos_f32(float deg, float *s, float *c)
 {
@@ -156,6 +183,30 @@ dh_status dh_sincos_f32(float deg, float *s, float *c)
     return DH_OK;
 }
 
+#if DH_SMALL
+/* dh_sincos_f32 writes the quiet NaN of the default wrappers below to both
+ * outputs when it fails, so its sine (which 0) or cosine (which 1) is
+ * returned as it is; one body for both wrappers. */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+static float dh_trig_pick_f32(float deg, unsigned which)
+{
+    float sc[2];
+    (void)dh_sincos_f32(deg, &sc[0], &sc[1]);
+    return sc[which];
+}
+
+float dh_sin_f32(float deg)
+{
+    return dh_trig_pick_f32(deg, 0u);
+}
+
+float dh_cos_f32(float deg)
+{
+    return dh_trig_pick_f32(deg, 1u);
+}
+#else /* !DH_SMALL */
 float dh_sin_f32(float deg)
 {
     float s, c;
@@ -173,3 +224,4 @@ float dh_cos_f32(float deg)
     }
     return c;
 }
+#endif /* DH_SMALL */

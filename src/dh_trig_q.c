@@ -47,7 +47,11 @@ static int32_t dh_trig_u2i(uint32_t v)
 
 void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
 {
+#if DH_SMALL
+    uint32_t u, n, q, k, m, fr, sv, cv, t, h, h3, t3, t4, sf, cm, d;
+#else
     uint32_t u, n, q, k, m, fr, sv, cv, t, h, h3, t3, t4, sf, cm, d, odd, ns, nc;
+#endif
     uint64_t pc;
 
     DH_ASSERT(s_q30 != NULL);
@@ -99,6 +103,19 @@ void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
      * odd symmetry for a negative input. Branch free: the swap is a select,
      * the negations are (v ^ mask) - mask on magnitudes <= 2^30 in uint32
      * (exact two's complement of a small value, converted back below). */
+#if DH_SMALL
+    /* the same symmetry and sign with branches instead of masks (smaller
+     * code; magnitudes <= 2^30, so 0u - v is the exact two's complement) */
+    if (k & 1u) {
+        uint32_t sw = sv;
+        sv = cv;
+        cv = sw;
+    }
+    if (((k >> 1) ^ (uint32_t)(deg_q16 < 0)) & 1u) sv = 0u - sv;
+    if ((k ^ (k >> 1)) & 1u) cv = 0u - cv;
+    *s_q30 = dh_trig_u2i(sv);
+    *c_q30 = dh_trig_u2i(cv);
+#else
     odd = k & 1u;
     ns = 0u - (((k >> 1) ^ (uint32_t)(deg_q16 < 0)) & 1u);   /* k = 2, 3 */
     nc = 0u - ((k ^ (k >> 1)) & 1u);                          /* k = 1, 2 */
@@ -111,6 +128,7 @@ void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
         *s_q30 = dh_trig_u2i((a ^ ns) - ns);
         *c_q30 = dh_trig_u2i((b ^ nc) - nc);
     }
+#endif
 }
 
 dh_q30 dh_sin_q(dh_q16 deg_q16)

@@ -469,6 +469,245 @@ static void robot_n_beyond_capacity(void)
     DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
 }
 
+/* the flags of an empty description */
+#define INIT_FLAGS (DH_ROBOT_HAS_F32 | DH_ROBOT_HAS_Q | DH_ROBOT_BASE_ID_F32 | DH_ROBOT_TOOL_ID_F32 | \
+                    DH_ROBOT_BASE_ID_Q | DH_ROBOT_TOOL_ID_Q | DH_ROBOT_BASE_SMALL_Q)
+
+/* every field of an empty description (dh_robot_init) */
+static void check_empty(const dh_robot *r, dh_convention conv)
+{
+    unsigned i, c, k;
+    DHT_EQ_INT(r->conv, conv);
+    DHT_EQ_INT(r->n, 0);
+    DHT_EQ_INT(r->flags, INIT_FLAGS);
+    for (i = 0; i < (unsigned)DH_MAX_JOINTS; i++) {
+        const dh_joint *j = &r->joint[i];
+        DHT_EQ_INT(j->type, DH_JOINT_REVOLUTE);
+        DHT_EQ_F32_BITS(j->a, 0.0f);
+        DHT_EQ_F32_BITS(j->d, 0.0f);
+        DHT_EQ_F32_BITS(j->alpha_deg, 0.0f);
+        DHT_EQ_F32_BITS(j->theta_deg, 0.0f);
+        DHT_EQ_F32_BITS(j->qmin, 1.0f);
+        DHT_EQ_F32_BITS(j->qmax, -1.0f);
+        DHT_EQ_F32_BITS(j->sa, 0.0f);
+        DHT_EQ_F32_BITS(j->ca, 1.0f);
+        DHT_EQ_INT(j->a_q, 0);
+        DHT_EQ_INT(j->d_q, 0);
+        DHT_EQ_INT(j->alpha_q, 0);
+        DHT_EQ_INT(j->theta_q, 0);
+        DHT_EQ_INT(j->sa_q, 0);
+        DHT_EQ_INT(j->ca_q, DH_Q30_ONE);
+        DHT_EQ_INT(j->qmin_q, 1);
+        DHT_EQ_INT(j->qmax_q, -1);
+    }
+    for (c = 0; c < 4; c++) {
+        for (k = 0; k < 4; k++) {
+            DHT_EQ_F32_BITS(r->base.m[c][k], (c == k) ? 1.0f : 0.0f);
+            DHT_EQ_F32_BITS(r->tool.m[c][k], (c == k) ? 1.0f : 0.0f);
+        }
+    }
+    for (c = 0; c < 3; c++) {
+        DHT_EQ_INT(r->base_q.p[c], 0);
+        DHT_EQ_INT(r->tool_q.p[c], 0);
+        for (k = 0; k < 3; k++) {
+            DHT_EQ_INT(r->base_q.r[c][k], (c == k) ? DH_Q30_ONE : 0);
+            DHT_EQ_INT(r->tool_q.r[c][k], (c == k) ? DH_Q30_ONE : 0);
+        }
+    }
+}
+
+/* init writes every field (over a canary and over a used description:
+ * full, joints of both kinds, limits, frames of both kinds) */
+static void robot_init_every_field(void)
+{
+    dh_robot r;
+    dh_mat4_f32 B;
+    dh_frame_q F;
+    unsigned pass, i;
+    CANARY(r);
+    for (pass = 0; pass < 3; pass++) {
+        dh_convention conv = (pass == 1) ? DH_CONV_MODIFIED : DH_CONV_STANDARD;
+        DHT_EQ_INT(dh_robot_init(&r, conv), DH_OK);
+        check_empty(&r, conv);
+        for (i = 0; i < (unsigned)DH_MAX_JOINTS; i++) {
+            if (i & 1u) {
+                DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_PRISMATIC, 7, -9, 11 << 16, -(13 << 16)), DH_OK);
+            } else {
+                DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, 0.25f, -1.5f, 30.0f, (pass == 2) ? 1e30f : 10.0f),
+                           DH_OK);
+            }
+            DHT_EQ_INT(dh_robot_set_limits_f32(&r, i, -2.0f, 3.0f), DH_OK);
+        }
+        dh_mat4_trans_f32(&B, 1.0f, 2.0f, 3.0f);
+        DHT_EQ_INT(dh_robot_set_base_f32(&r, &B), DH_OK);
+        dh_frame_trans_q(&F, 5, 6, 7);
+        DHT_EQ_INT(dh_robot_set_tool_q(&r, &F), DH_OK);
+        DHT_TRUE(r.flags != INIT_FLAGS);
+    }
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_MODIFIED), DH_OK);
+    check_empty(&r, DH_CONV_MODIFIED);
+}
+
+/* The fixed-point copies made by the float setters: nearest, ties away from
+ * zero, the ends of the Q ranges exact (-2^31 fits, the largest float below
+ * the upper end fits), sin/cos of alpha exact at quarter turns. */
+static void robot_fixed_copies_rounding(void)
+{
+    const float lsb = ldexpf(1.0f, -DH_QPOS_FRAC), dl = ldexpf(1.0f, -16), rl = ldexpf(1.0f, -30);
+    const float below2 = 2.0f - ldexpf(1.0f, -23); /* largest float below 2 */
+    const float qmax = ldexpf(1.0f, 31 - DH_QPOS_FRAC);
+    dh_robot r;
+    dh_mat4_f32 B;
+    dh_frame_q keep;
+    unsigned w, c, k;
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, 1.5f * lsb, -1.5f * lsb, 2.5f * dl, -0.5f * dl), DH_OK);
+    DHT_EQ_INT(r.joint[0].a_q, 2);
+    DHT_EQ_INT(r.joint[0].d_q, -2);
+    DHT_EQ_INT(r.joint[0].alpha_q, 3);
+    DHT_EQ_INT(r.joint[0].theta_q, -1);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.49999997f * lsb, -2.5f * lsb, -32768.0f,
+                                      32768.0f - ldexpf(1.0f, -9)), DH_OK);
+    DHT_EQ_INT(r.joint[1].a_q, 0);
+    DHT_EQ_INT(r.joint[1].d_q, -3);
+    DHT_EQ_INT(r.joint[1].alpha_q, INT32_MIN);
+    DHT_EQ_INT(r.joint[1].theta_q, 2147483520);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, -qmax, qmax - 128.0f * lsb, 90.0f, 0.0f), DH_OK);
+    DHT_EQ_INT(r.joint[2].a_q, INT32_MIN);
+    DHT_EQ_INT(r.joint[2].d_q, 2147483520);
+    DHT_EQ_INT(r.joint[2].sa_q, DH_Q30_ONE);
+    DHT_EQ_INT(r.joint[2].ca_q, 0);
+    DHT_EQ_F32_BITS(r.joint[2].sa, 1.0f);
+    DHT_EQ_F32_BITS(r.joint[2].ca, 0.0f);
+    /* -32490 = -90 - 90 turns */
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, -32490.0f, 0.0f), DH_OK);
+    DHT_EQ_INT(r.joint[3].alpha_q, (int32_t)(-32490 * (int64_t)65536));
+    DHT_EQ_INT(r.joint[3].sa_q, -DH_Q30_ONE);
+    DHT_EQ_INT(r.joint[3].ca_q, 0);
+    DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) != 0u);
+    /* base, then the same frame as tool */
+    for (w = 0; w < 2; w++) {
+        const dh_frame_q *Fq = w ? &r.tool_q : &r.base_q;
+        dh_mat4_identity_f32(&B);
+        B.m[0][0] = -2.0f;
+        B.m[1][0] = 1.5f * rl;
+        B.m[2][0] = -2.5f * rl;
+        B.m[0][1] = below2;
+        B.m[2][2] = -0.49999997f * rl;
+        B.m[3][0] = -qmax;
+        B.m[3][1] = 0.5f * lsb;
+        B.m[3][2] = -0.5f * lsb;
+        DHT_EQ_INT(w ? dh_robot_set_tool_f32(&r, &B) : dh_robot_set_base_f32(&r, &B), DH_OK);
+        DHT_EQ_INT(Fq->r[0][0], INT32_MIN);
+        DHT_EQ_INT(Fq->r[1][0], 2);
+        DHT_EQ_INT(Fq->r[2][0], -3);
+        DHT_EQ_INT(Fq->r[0][1], 2147483520);
+        DHT_EQ_INT(Fq->r[1][1], DH_Q30_ONE);
+        DHT_EQ_INT(Fq->r[2][2], 0);
+        DHT_EQ_INT(Fq->p[0], INT32_MIN);
+        DHT_EQ_INT(Fq->p[1], 1);
+        DHT_EQ_INT(Fq->p[2], -1);
+        DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) != 0u && (r.flags & DH_ROBOT_HAS_F32) != 0u);
+        DHT_TRUE((r.flags & (w ? DH_ROBOT_TOOL_ID_Q | DH_ROBOT_TOOL_ID_F32 : DH_ROBOT_BASE_ID_Q | DH_ROBOT_BASE_ID_F32)) == 0u);
+        if (!w) DHT_TRUE((r.flags & DH_ROBOT_BASE_SMALL_Q) == 0u); /* row 0 has norm 2 */
+        for (c = 0; c < 4; c++)
+            for (k = 0; k < 4; k++)
+                DHT_EQ_F32_BITS(w ? r.tool.m[c][k] : r.base.m[c][k], B.m[c][k]);
+        /* not representable (position at the upper end): the float frame is
+         * stored, the fixed copy kept as it was, the fixed path unavailable */
+        keep = *Fq;
+        B.m[3][1] = qmax;
+        DHT_EQ_INT(w ? dh_robot_set_tool_f32(&r, &B) : dh_robot_set_base_f32(&r, &B), DH_OK);
+        DHT_TRUE(memcmp(Fq, &keep, sizeof keep) == 0);
+        DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) == 0u && (r.flags & DH_ROBOT_HAS_F32) != 0u);
+        DHT_TRUE((r.flags & (w ? DH_ROBOT_Q_NO_TOOL : DH_ROBOT_Q_NO_BASE)) != 0u);
+        DHT_EQ_F32_BITS(w ? r.tool.m[3][1] : r.base.m[3][1], qmax);
+        /* the identity again: both paths, identity bits set */
+        dh_mat4_identity_f32(&B);
+        DHT_EQ_INT(w ? dh_robot_set_tool_f32(&r, &B) : dh_robot_set_base_f32(&r, &B), DH_OK);
+        DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) != 0u);
+        DHT_TRUE((r.flags & (w ? DH_ROBOT_TOOL_ID_Q | DH_ROBOT_TOOL_ID_F32 : DH_ROBOT_BASE_ID_Q | DH_ROBOT_BASE_ID_F32 |
+                                                                              DH_ROBOT_BASE_SMALL_Q)) ==
+                 (w ? DH_ROBOT_TOOL_ID_Q | DH_ROBOT_TOOL_ID_F32 : DH_ROBOT_BASE_ID_Q | DH_ROBOT_BASE_ID_F32 | DH_ROBOT_BASE_SMALL_Q));
+        /* an entry that rounds to 0 in Q2.30: identity in fixed point only */
+        B.m[1][2] = 0.25f * rl;
+        DHT_EQ_INT(w ? dh_robot_set_tool_f32(&r, &B) : dh_robot_set_base_f32(&r, &B), DH_OK);
+        DHT_TRUE((r.flags & (w ? DH_ROBOT_TOOL_ID_Q : DH_ROBOT_BASE_ID_Q)) != 0u);
+        DHT_TRUE((r.flags & (w ? DH_ROBOT_TOOL_ID_F32 : DH_ROBOT_BASE_ID_F32)) == 0u);
+    }
+}
+
+/* NaN/Inf is reported before a bad bottom row; r untouched */
+static void robot_frame_nan_before_not_rigid(void)
+{
+    dh_robot r, copy;
+    dh_mat4_f32 B;
+    unsigned e, k;
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+    copy = r;
+    for (e = 0; e < 16; e++) {
+        for (k = 0; k < 4; k++) {
+            dh_mat4_identity_f32(&B);
+            B.m[(e + 5u) % 4u][3] = 0.5f; /* bottom row wrong somewhere */
+            B.m[e / 4][e % 4] = bad_value_nan(k);
+            DHT_EQ_INT(dh_robot_set_base_f32(&r, &B), DH_ERR_NAN);
+            DHT_EQ_INT(dh_robot_set_tool_f32(&r, &B), DH_ERR_NAN);
+        }
+    }
+    DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
+}
+
+/* The reason bits: a joint added with _q keeps the float path unavailable
+ * after later float joints; a fixed frame makes the float one stale unless
+ * both are the identity; the float setter makes it current again; a frame
+ * set from the robot's own copy keeps its values. */
+static void robot_flag_bookkeeping(void)
+{
+    dh_robot r;
+    dh_mat4_f32 B;
+    dh_frame_q F, keep;
+    unsigned w;
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 1, 2, 3, 4), DH_OK);
+    DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) == 0u);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.5f, 0.0f, 0.0f, 0.0f), DH_OK);
+    DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) == 0u && (r.flags & DH_ROBOT_F32_NO_JOINT) != 0u);
+    DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) != 0u);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 1e30f, 0.0f, 0.0f, 0.0f), DH_OK);
+    DHT_TRUE((r.flags & (DH_ROBOT_HAS_F32 | DH_ROBOT_HAS_Q)) == 0u);
+    DHT_TRUE((r.flags & (DH_ROBOT_F32_NO_JOINT | DH_ROBOT_Q_NO_JOINT)) == (DH_ROBOT_F32_NO_JOINT | DH_ROBOT_Q_NO_JOINT));
+    for (w = 0; w < 2; w++) {
+        const uint32_t no_f32 = w ? DH_ROBOT_F32_NO_TOOL : DH_ROBOT_F32_NO_BASE;
+        const uint32_t id_q = w ? DH_ROBOT_TOOL_ID_Q : DH_ROBOT_BASE_ID_Q;
+        dh_frame_q *own = w ? &r.tool_q : &r.base_q;
+        DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.5f, 0.0f, 0.0f, 0.0f), DH_OK);
+        dh_frame_identity_q(&F);
+        DHT_EQ_INT(w ? dh_robot_set_tool_q(&r, &F) : dh_robot_set_base_q(&r, &F), DH_OK);
+        DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) != 0u && (r.flags & id_q) != 0u); /* both identity */
+        dh_frame_trans_q(&F, 0, 1, 0);
+        DHT_EQ_INT(w ? dh_robot_set_tool_q(&r, &F) : dh_robot_set_base_q(&r, &F), DH_OK);
+        DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) == 0u && (r.flags & no_f32) != 0u && (r.flags & id_q) == 0u);
+        DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) != 0u);
+        keep = *own;
+        DHT_EQ_INT(w ? dh_robot_set_tool_q(&r, own) : dh_robot_set_base_q(&r, own), DH_OK);
+        DHT_TRUE(memcmp(own, &keep, sizeof keep) == 0);
+        dh_mat4_trans_f32(&B, 0.0f, 2.0f, 0.0f);
+        DHT_EQ_INT(w ? dh_robot_set_tool_f32(&r, &B) : dh_robot_set_base_f32(&r, &B), DH_OK);
+        DHT_TRUE((r.flags & (DH_ROBOT_HAS_F32 | DH_ROBOT_HAS_Q)) == (DH_ROBOT_HAS_F32 | DH_ROBOT_HAS_Q));
+        DHT_EQ_INT(own->p[1], 2 * DH_QPOS_ONE);
+        /* a fixed identity while the float frame is not: float path stale */
+        dh_frame_identity_q(&F);
+        DHT_EQ_INT(w ? dh_robot_set_tool_q(&r, &F) : dh_robot_set_base_q(&r, &F), DH_OK);
+        DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) == 0u && (r.flags & id_q) != 0u);
+        /* the float frame from the robot's own copy */
+        DHT_EQ_INT(w ? dh_robot_set_tool_f32(&r, &r.tool) : dh_robot_set_base_f32(&r, &r.base), DH_OK);
+        DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) != 0u);
+        DHT_EQ_F32_BITS(w ? r.tool.m[3][1] : r.base.m[3][1], 2.0f);
+        DHT_EQ_INT(own->p[1], 2 * DH_QPOS_ONE);
+    }
+}
+
 static const dht_case cases[] = {
     DHT_CASE(robot_init_bad_conv),
     DHT_CASE(robot_add_joint_bad),
@@ -479,5 +718,9 @@ static const dht_case cases[] = {
     DHT_CASE(robot_fk_f32_bad),
     DHT_CASE(robot_fk_q_bad),
     DHT_CASE(robot_n_beyond_capacity),
+    DHT_CASE(robot_init_every_field),
+    DHT_CASE(robot_fixed_copies_rounding),
+    DHT_CASE(robot_frame_nan_before_not_rigid),
+    DHT_CASE(robot_flag_bookkeeping),
 };
 DHT_MAIN(cases)

@@ -219,6 +219,37 @@ static void huge_angles(void)
     report("random finite floats up to FLT_MAX", &acc);
 }
 
+/* Every exponent of the integer-only range (2^23 .. FLT_MAX: the exact
+ * reduction mod 360 works on 24 + e bits, e = 0..104, a loop of up to 128
+ * steps in the DH_SMALL build, tables and multiply-shifts in the default
+ * one), with mantissas that set the lowest, the highest, every other and
+ * every bit: bit-identical to the whole degree fmod(|x|, 360), the odd
+ * symmetry applied for a negative x. */
+static void huge_angles_every_exponent(void)
+{
+    err_acc acc = { 0, 0, 0, 0, 0 };
+    static const uint32_t mant[] = { 0x000000u, 0x000001u, 0x400000u, 0x2AAAAAu, 0x555555u, 0x7FFFFFu };
+    uint32_t e, k, sgn;
+    for (e = 150u; e <= 254u; e++) {
+        for (k = 0; k < sizeof mant / sizeof mant[0]; k++) {
+            for (sgn = 0; sgn < 2u; sgn++) {
+                float x = float_of((sgn << 31) | (e << 23) | mant[k]);
+                float w = (float)fmod(fabs((double)x), 360.0);
+                float s1, c1, s2, c2;
+                check_one(x, &acc); /* against the double reference */
+                DHT_EQ_INT(dh_sincos_f32(x, &s1, &c1), DH_OK);
+                DHT_EQ_INT(dh_sincos_f32(w, &s2, &c2), DH_OK);
+                if (sgn) s2 = -s2;
+                DHT_EQ_F32_BITS(s1, s2);
+                DHT_EQ_F32_BITS(c1, c2);
+                DHT_EQ_F32_BITS(dh_sin_f32(x), s2);
+                DHT_EQ_F32_BITS(dh_cos_f32(x), c2);
+            }
+        }
+    }
+    report("every exponent of the integer-only range", &acc);
+}
+
 /* Every whole degree in [-1080, 1080]: the double value rounded to float
  * (the generator verified that for all 91 table entries this equals the
  * correctly rounded value); multiples of 90 exactly 0 and +-1. */
@@ -328,6 +359,7 @@ static const dht_case cases[] = {
     DHT_CASE(random_up_to_1e6),
     DHT_CASE(fast_path_top),
     DHT_CASE(huge_angles),
+    DHT_CASE(huge_angles_every_exponent),
     DHT_CASE(symmetry_and_variants),
     DHT_CASE(bounded_near_edges),
     DHT_CASE(nan_and_inf),
