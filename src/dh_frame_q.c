@@ -20,6 +20,9 @@
  *    as 4*(p >> 2) + (p & 3) and the parts are summed separately, which
  *    cannot overflow for up to four terms, gives the same rounding, and
  *    saturates correctly.
+ * DH_SMALL builds keep only the first (the direction of a saturation is
+ * then taken from the high words, see dh_col) and a compact
+ * dh_frame_rot_axis_q; same bits and status codes.
  *
  * Implementation-defined behaviour relied on (arithmetic >> of negative
  * values, modulo conversion to signed) is checked at compile time in
@@ -50,6 +53,7 @@ static inline int64_t dh_mul64(int32_t a, int32_t b) { return dh_port_smull(a, b
 #define DH_ONE30 ((int32_t)0x40000000)      /* 1.0 in Q2.30 */
 #define DH_HALF30 ((int64_t)0x20000000)     /* 0.5 LSB of a >>30 result */
 
+#if !DH_SMALL
 /* ---- helpers ------------------------------------------------------------ */
 
 /*
@@ -94,6 +98,8 @@ static DH_NOINLINE int32_t dh_dot_exact(const int32_t *a, const int32_t *b, unsi
     return (int32_t)r;
 }
 
+#endif /* !DH_SMALL */
+
 /* ---- constructors -------------------------------------------------------- */
 
 void dh_frame_identity_q(dh_frame_q *F)
@@ -115,9 +121,16 @@ void dh_frame_trans_q(dh_frame_q *F, dh_qpos x, dh_qpos y, dh_qpos z)
     F->p[2] = z;
 }
 
+/* DH_SMALL: one out-of-line copy, the three public functions become tail calls */
+#if DH_SMALL
+#define DH_ROT_ELEM_ATTR static DH_NOINLINE
+#else
+#define DH_ROT_ELEM_ATTR static
+#endif
+
 /* Writes the elementary rotation about axis ax (0 x, 1 y, 2 z), given
  * a1 = (ax + 1) mod 3 and a2 = (ax + 2) mod 3. */
-static void dh_frame_rot_elem(dh_frame_q *F, unsigned a1, unsigned a2, dh_q16 deg)
+DH_ROT_ELEM_ATTR void dh_frame_rot_elem(dh_frame_q *F, unsigned a1, unsigned a2, dh_q16 deg)
 {
     dh_q30 s, c;
     DH_ASSERT(F != NULL);
@@ -134,6 +147,313 @@ static void dh_frame_rot_elem(dh_frame_q *F, unsigned a1, unsigned a2, dh_q16 de
 void dh_frame_rotx_q(dh_frame_q *F, dh_q16 deg) { dh_frame_rot_elem(F, 1u, 2u, deg); }
 void dh_frame_roty_q(dh_frame_q *F, dh_q16 deg) { dh_frame_rot_elem(F, 2u, 0u, deg); }
 void dh_frame_rotz_q(dh_frame_q *F, dh_q16 deg) { dh_frame_rot_elem(F, 0u, 1u, deg); }
+
+#if DH_SMALL
+/*
+ * DH_SMALL: one general path per operation, same bits and status codes as
+ * the default build for every input (checked bit for bit against it on
+ * random and extreme inputs during development; the suites hold both
+ * builds to the same references):
+ *  - one kernel, dh_col(), serves the product, the inverse, the point and
+ *    direction transforms, the orthonormalisation step and the
+ *    orthonormality error. It is the default's fast path, and where that
+ *    path's range test fails (the result saturates) it takes the direction
+ *    of the saturation from a sum of halved high words instead of
+ *    recomputing the sum by the exact path;
+ *  - dh_frame_rot_axis_q() does the default's integer steps in one
+ *    function with shared rounding helpers, and the Newton step of
+ *    dh_frame_orthonormalize_chk_q() without that function's entry checks
+ *    (they cannot fail there), so the constructor does not pull it in.
+ */
+
+/* modes of dh_col */
+#define DH_COL_RP ((int32_t)-1)     /* R b + p */
+#define DH_COL_R ((int32_t)0)       /* R b */
+#define DH_COL_NEG_R ((int32_t)1)   /* -R b */
+
+/*
+ * o[i] = round((sgn (row i of R) . b + (p_i & pm) 2^30) / 2^30), i = 0..2,
+ * ties up, saturated to int32; pm = mode >> 1 (-1 for DH_COL_RP, else 0),
+ * sgn = -1 for DH_COL_NEG_R. Returns DH_ERR_OVERFLOW
+ * if an output saturated, else DH_OK (0).
+ * The default build's fast path and its range test (see the comment above
+ * its dh_frame_mul_q): the sum S is taken modulo 2^64 and is the exact
+ * result whenever its high word is in [-2^29, 2^29); otherwise the true
+ * sum T is out of range (|T| >= 2^61) and only its sign is needed. That
+ * comes from the high words h_k of the four terms: T = (sum h_k) 2^32 + L
+ * with 0 <= L < 2^34, so |T| >= 2^61 gives sum h_k the sign of T, with
+ * |sum h_k| >= 2^29 - 4; H = sum (h_k >> 1) (|h_k| <= 2^30: no overflow)
+ * is within 4 of half of it, so it has the same sign. Same bits and status
+ * as the default build's fast + exact paths, for ANY int32 inputs.
+ */
+static DH_NOINLINE unsigned dh_col(int32_t *o, const dh_frame_q *A, const int32_t *b, int32_t mode)
+{
+    unsigned st = 0u, i, k;
+    for (i = 0; i < 3u; i++) {
+        int64_t S0 = DH_HALF30 + (int64_t)(A->p[i] & (mode >> 1)) * DH_ONE30;   /* |.| <= 2^61 */
+        uint64_t S = (uint64_t)S0;
+        int32_t H = (int32_t)(S0 >> 32) >> 1;
+        uint32_t hi;
+        for (k = 0; k < 3u; k++) {
+            int64_t q = dh_mul64(A->r[k][i], b[k]);
+            if (mode > 0) q = -q;                 /* |q| <= 2^62: safe */
+            S += (uint64_t)q;
+            H += (int32_t)(q >> 32) >> 1;         /* |H| < 2^31 */
+        }
+        hi = (uint32_t)(S >> 32);
+        if ((hi + 0x20000000u) >> 30) {
+            st = (unsigned)DH_ERR_OVERFLOW;
+            o[i] = H < 0 ? INT32_MIN : INT32_MAX;
+        } else {
+            o[i] = (int32_t)((hi << 2) | ((uint32_t)S >> 30));
+        }
+    }
+    return st;
+}
+
+/* round(x / 2^sh), ties up, 1 <= sh <= 62: floor((x + 2^(sh-1)) / 2^sh)
+ * = floor((floor(x / 2^(sh-1)) + 1) / 2), which cannot overflow */
+static DH_NOINLINE int64_t dh_rsh(int64_t x, unsigned sh)
+{
+    return ((x >> (sh - 1u)) + 1) >> 1;
+}
+
+/* round(a b / 2^sh) */
+static DH_NOINLINE int64_t dh_mulr(int32_t a, int32_t b, unsigned sh)
+{
+    return dh_rsh(dh_mul64(a, b), sh);
+}
+
+/* (a + ea / 2^16) (b + eb / 2^16) in the scale of a b, rounded once, the
+ * ea eb / 2^32 term dropped: a b + round((a eb + b ea) / 2^16) */
+static DH_NOINLINE int64_t dh_pp(int32_t a, int32_t ea, int32_t b, int32_t eb)
+{
+    return dh_mul64(a, b) + dh_rsh(dh_mul64(a, eb) + dh_mul64(b, ea), 16u);
+}
+
+/* 2^29 + P (1 - c) with P = Ph 2^30 + Pl, 0 <= Pl < 2^30:
+ * 2^29 + P - Ph c + round(-Pl c / 2^30); |c| <= 2^30, so -c is exact */
+static DH_NOINLINE int64_t dh_vers(int64_t P, int32_t c)
+{
+    int32_t Ph = (int32_t)(P >> 30), Pl = (int32_t)(P - (int64_t)Ph * DH_ONE30);
+    return DH_HALF30 + P - dh_mul64(Ph, c) + dh_mulr(Pl, -c, 30u);
+}
+
+/* split x = U 2^16 + E, E in [-2^15, 2^15) */
+static void dh_split16(int64_t x, int32_t *U, int32_t *E)
+{
+    *U = (int32_t)dh_rsh(x, 16u);
+    *E = (int32_t)(x - (int64_t)*U * 65536);
+}
+
+/* a . b of two columns (|entries| <= 1.25 where used: no overflow) */
+static DH_NOINLINE int64_t dh_dot3(const int32_t *a, const int32_t *b)
+{
+    int64_t e = 0;
+    unsigned k;
+    for (k = 0; k < 3u; k++) e += dh_mul64(a[k], b[k]);
+    return e;
+}
+
+/*
+ * R <- R (3 I - R^T R) / 2 in place, bit for bit the step of the default build
+ * without its entry checks: M = (3 I - R^T R) / 2 rounded once per entry
+ * (entries <= 1.25: the sums cannot overflow), then R M rounded once per
+ * entry (never saturates for the inputs that pass the checks, see the
+ * default code). Column j of R M is R times column j of M (symmetric).
+ */
+static DH_NOINLINE void dh_ortho_step(dh_frame_q *F)
+{
+    const dh_frame_q R = *F;
+    int32_t M[3][3];
+    unsigned i, j;
+    for (i = 0; i < 3u; i++)
+        for (j = 0; j < 3u; j++)
+            M[i][j] = (int32_t)((((i == j) ? ((int64_t)3 << 60) : 0) + ((int64_t)1 << 30) -
+                                 dh_dot3(R.r[i], R.r[j])) >> 31);
+    for (j = 0; j < 3u; j++) (void)dh_col(F->r[j], &R, M[j], DH_COL_R);
+}
+
+/*
+ * Same operations in the same order as the default build's dh_axis_scale,
+ * dh_inv_sqrt_q30, dh_unit_refine and dh_axis_entry (see their comments
+ * below), so the same bits, in one function: unit axis
+ * (U + E / 2^16) / 2^30, then eq. 1.70 summed in Q60 and rounded once per
+ * entry, then the Newton step of dh_frame_orthonormalize_chk_q(), whose
+ * checks cannot fail here (entries within 1 + 2 LSB, error far below 1/8).
+ * U[3] = 1, E[3] = 0 let the diagonal term c = c * 1 share the code of the
+ * s k_m terms.
+ */
+static DH_NOINLINE int dh_axis_build(dh_frame_q *F, int32_t kx, int32_t ky, int32_t kz, dh_q16 deg)
+{
+    int32_t k[3];
+    int32_t U[4], E[4], X, Y, s, c, D;
+    uint32_t m = 0u;
+    uint64_t n2 = 0u;
+    int64_t n = 0;
+    unsigned i, j, h = 14u;
+    int sh;
+    k[0] = kx; k[1] = ky; k[2] = kz;
+    /* the OR of the magnitudes has the leading bit of the largest one */
+    for (i = 0; i < 3u; i++) m |= k[i] < 0 ? 0u - (uint32_t)k[i] : (uint32_t)k[i];
+    if (m == 0u) return 0;
+    /* 1. leading bit to bit 30 (sh = -1 only for an INT32_MIN component:
+     *    then the others are halved, truncating toward zero) */
+    sh = (int)dh_port_clz(m) - 1;
+    for (i = 0; i < 3u; i++) {
+        U[i] = sh >= 0 ? (int32_t)((uint32_t)k[i] << (unsigned)sh) : k[i] / 2;   /* w */
+        n2 += (uint64_t)dh_mul64(U[i], U[i]);
+    }
+    /* 2. n2 in [2^60, 3 * 2^62): X = n2 / 2^(30, 32 or 34) in [2^29, 2^31);
+     *    the shift of step 4 is half of that minus one */
+    n2 >>= 30;
+    while (n2 >= ((uint64_t)1 << 31)) { n2 >>= 2; h++; }
+    X = (int32_t)n2;
+    /* 3. Y = 1/sqrt(x), piecewise linear seed and four Newton steps */
+    Y = X < DH_ONE30 ? (int32_t)0x70000000 - (X - (X >> 2)) : (int32_t)0x50000000 - (X >> 2);
+    for (i = 0; i < 4u; i++) {
+        int32_t t = (int32_t)dh_mulr(X, Y, 30u);
+        t = (int32_t)dh_mulr(t, Y, 30u);
+        /* Y (3 - t) / 2 rounded once = Y + round(Y (1 - t) / 2): the
+         * default's round((2 Y 1.5 - Y t) / 2^31) without its Y 2^31 term */
+        Y += (int32_t)dh_mulr(Y, DH_ONE30 - t, 31u);
+    }
+    /* 4. u = w Y in Q46, split; |u|^2 in Q60; one Newton step on the vector */
+    for (i = 0; i < 3u; i++) {
+        dh_split16(dh_mulr(U[i], Y, h), &U[i], &E[i]);
+        n += dh_pp(U[i], E[i], U[i], E[i]);
+    }
+    D = (int32_t)dh_rsh(((int64_t)1 << 60) - n, 8u);
+    for (i = 0; i < 3u; i++)
+        dh_split16((int64_t)U[i] * 65536 + E[i] + dh_mulr(U[i], D, 37u), &U[i], &E[i]);
+    U[3] = DH_ONE30;
+    E[3] = 0;
+    dh_sincos_q(deg, &s, &c);
+    /* eq. 1.70: k_i k_j vers + (i == j ? c : +-s k_m), in Q60, one rounding;
+     * k_i k_j = P = Ph 2^30 + Pl, P vers = P - Ph c + round(-Pl c / 2^30) */
+    for (j = 0; j < 3u; j++) {
+        for (i = 0; i < 3u; i++) {
+            int64_t T;
+            unsigned mm = (i == j) ? 3u : 3u - i - j;
+            T = dh_pp(i == j ? c : s, 0, U[mm], E[mm]);
+            /* s [k]x: (1,0) +kz, (0,1) -kz, (0,2) +ky, (2,0) -ky, (2,1) +kx, (1,2) -kx */
+            if ((0x8Cu >> (3u * j + i)) & 1u) T = -T;     /* bits 3 j + i of (0,1) (2,0) (1,2) */
+            /* |c| <= 2^30 (dh_sincos_q): -c is exact; the entry is within
+             * 1 + 1 LSB of [-1, 1], read without a range check */
+            F->r[j][i] = (int32_t)((dh_vers(dh_pp(U[i], E[i], U[j], E[j]), c) + T) >> 30);
+        }
+        F->p[j] = 0;
+    }
+    return 1;
+}
+
+/* separate steps, so that the stack depth is the larger of the two */
+dh_status dh_frame_rot_axis_q(dh_frame_q *F, dh_q30 kx, dh_q30 ky, dh_q30 kz, dh_q16 deg)
+{
+    DH_ASSERT(F != NULL);
+    if (!dh_axis_build(F, kx, ky, kz, deg)) return DH_ERR_ZERO_AXIS;
+    dh_ortho_step(F);
+    return DH_OK;
+}
+
+/* Computed into a local, so out may alias A and/or B: column j of the
+ * result is A times column j of [R_B p_B; 0 0 0 1]. */
+dh_status dh_frame_mul_q(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B)
+{
+    dh_frame_q t;
+    unsigned st = 0u, j;
+    DH_ASSERT(out != NULL && A != NULL && B != NULL);
+    for (j = 0; j < 3u; j++) st |= dh_col(t.r[j], A, B->r[j], DH_COL_R);
+    st |= dh_col(t.p, A, B->p, DH_COL_RP);
+    *out = t;
+    return (dh_status)st;
+}
+
+/* R' = R^T, p' = -R^T p (rows of R^T are the columns of R) */
+dh_status dh_frame_inv_q(dh_frame_q *out, const dh_frame_q *F)
+{
+    dh_frame_q t;
+    unsigned st, i, j;
+    DH_ASSERT(out != NULL && F != NULL);
+    for (i = 0; i < 3u; i++)
+        for (j = 0; j < 3u; j++) t.r[i][j] = F->r[j][i];
+    st = dh_col(t.p, &t, F->p, DH_COL_NEG_R);
+    *out = t;
+    return (dh_status)st;
+}
+
+/* v = R u (+ p for DH_COL_RP) */
+static dh_status dh_frame_apply(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_q *v, int32_t pm)
+{
+    int32_t in[3], o[3];
+    unsigned st;
+    DH_ASSERT(F != NULL && u != NULL && v != NULL);
+    in[0] = u->x; in[1] = u->y; in[2] = u->z;
+    st = dh_col(o, F, in, pm);
+    v->x = o[0]; v->y = o[1]; v->z = o[2];
+    return (dh_status)st;
+}
+
+dh_status dh_frame_apply_point_q(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_q *v)
+{
+    return dh_frame_apply(F, u, v, DH_COL_RP);
+}
+
+dh_status dh_frame_apply_dir_q(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_q *v)
+{
+    return dh_frame_apply(F, u, v, DH_COL_R);
+}
+
+/* (R^T R)_ij - delta_ij = col_i . col_j - delta_ij, in Q2.30, one rounding,
+ * saturated: column j of R^T R - I is R^T col_j - e_j (p of T = -e_j) */
+int32_t dh_frame_ortho_error_q(const dh_frame_q *F)
+{
+    dh_frame_q T;
+    int32_t e[3];
+    uint32_t worst = 0u;
+    unsigned i, j;
+    DH_ASSERT(F != NULL);
+    for (i = 0; i < 3u; i++)
+        for (j = 0; j < 3u; j++) T.r[i][j] = F->r[j][i];
+    for (j = 0; j < 3u; j++) {
+        for (i = 0; i < 3u; i++) T.p[i] = (i == j) ? -DH_ONE30 : 0;
+        (void)dh_col(e, &T, F->r[j], DH_COL_RP);
+        for (i = 0; i < 3u; i++) {
+            uint32_t m = e[i] < 0 ? 0u - (uint32_t)e[i] : (uint32_t)e[i];
+            if (m > worst) worst = m;
+        }
+    }
+    return worst > (uint32_t)INT32_MAX ? INT32_MAX : (int32_t)worst;
+}
+
+/* the checks of dh_frame_orthonormalize_chk_q(), as in the default build:
+ * entries <= 1.25, then (R^T R - I) 2^60 exactly (no overflow) <= 1/8 */
+static DH_NOINLINE dh_status dh_ortho_chk(const dh_frame_q *F)
+{
+    unsigned i, j;
+    for (i = 0; i < 3u; i++)
+        for (j = 0; j < 3u; j++)
+            if (((uint32_t)F->r[i][j] + 0x50000000u) > 0xA0000000u) return DH_ERR_NOT_RIGID;
+    for (i = 0; i < 3u; i++)
+        for (j = i; j < 3u; j++) {
+            int64_t e = dh_dot3(F->r[i], F->r[j]) - ((i == j) ? ((int64_t)1 << 60) : 0);
+            if (e > ((int64_t)1 << 57) || e < -((int64_t)1 << 57)) return DH_ERR_NOT_RIGID;
+        }
+    return DH_OK;
+}
+
+/* checks and step are separate calls, so that the stack depth is the
+ * larger of the two */
+dh_status dh_frame_orthonormalize_chk_q(dh_frame_q *F)
+{
+    dh_status st;
+    DH_ASSERT(F != NULL);
+    st = dh_ortho_chk(F);
+    if (st == DH_OK) dh_ortho_step(F);
+    return st;
+}
+
+#else /* !DH_SMALL: the fast and exact paths */
 
 /* |x| as uint32 (exact also for INT32_MIN). */
 static uint32_t dh_abs_u32(int32_t x)
@@ -566,6 +886,8 @@ dh_status dh_frame_orthonormalize_chk_q(dh_frame_q *F)
     }
     return DH_OK;
 }
+
+#endif /* DH_SMALL */
 
 void dh_frame_orthonormalize_q(dh_frame_q *F)
 {

@@ -289,6 +289,105 @@ static void fixed_apply_overflow(void)
     }
 }
 
+/*
+ * Saturation direction when the 64-bit sum wraps, and the exact edges of
+ * the int32 range. A fast 64-bit accumulation wraps modulo 2^64 for sums
+ * beyond 2^63 (three products of 2^62), so the sign of the wrapped sum is
+ * wrong; the result must still saturate toward the sign of the TRUE sum.
+ * All expected values are exact (worked out below), for every build
+ * (DH_SMALL takes the saturation direction from the high words instead
+ * of an exact recomputation: this is its check).
+ */
+static void fixed_saturation_wrap_and_edges(void)
+{
+    dh_frame_q A, B, C;
+    dh_vec3_q u, v;
+    int c, r;
+    /* mul: (-2)(2 - 2^-30) * 3 < -2^63 / 2^30: every rotation entry
+     * saturates to INT32_MIN (the wrapped sum is positive) */
+    for (c = 0; c < 3; c++) {
+        for (r = 0; r < 3; r++) {
+            A.r[c][r] = INT32_MIN;
+            B.r[c][r] = INT32_MAX;
+        }
+        A.p[c] = 0;
+        B.p[c] = 0;
+    }
+    DHT_EQ_INT(dh_frame_mul_q(&C, &A, &B), DH_ERR_OVERFLOW);
+    for (c = 0; c < 3; c++) {
+        for (r = 0; r < 3; r++) DHT_EQ_INT(C.r[c][r], INT32_MIN);
+        DHT_EQ_INT(C.p[c], 0);
+    }
+    /* inv: p' = -R^T p = -3 * 2^62 (wraps to +2^62) and +3 * (2^62 - 2^31) */
+    A.p[0] = INT32_MIN;
+    A.p[1] = INT32_MIN;
+    A.p[2] = INT32_MIN;
+    DHT_EQ_INT(dh_frame_inv_q(&C, &A), DH_ERR_OVERFLOW);
+    for (c = 0; c < 3; c++) DHT_EQ_INT(C.p[c], INT32_MIN);
+    A.p[0] = INT32_MAX;
+    A.p[1] = INT32_MAX;
+    A.p[2] = INT32_MAX;
+    DHT_EQ_INT(dh_frame_inv_q(&C, &A), DH_ERR_OVERFLOW);
+    for (c = 0; c < 3; c++) DHT_EQ_INT(C.p[c], INT32_MAX);
+    /* apply: 3 * 2^62 + p 2^30 for p = -2^31, 0, 2^31 - 1 (the last two
+     * beyond 2^63) all saturate up; with u = INT32_MAX all saturate down */
+    A.p[0] = INT32_MIN;
+    A.p[1] = 0;
+    A.p[2] = INT32_MAX;
+    u.x = INT32_MIN; u.y = INT32_MIN; u.z = INT32_MIN;
+    DHT_EQ_INT(dh_frame_apply_point_q(&A, &u, &v), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(v.x, INT32_MAX); DHT_EQ_INT(v.y, INT32_MAX); DHT_EQ_INT(v.z, INT32_MAX);
+    DHT_EQ_INT(dh_frame_apply_dir_q(&A, &u, &v), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(v.x, INT32_MAX); DHT_EQ_INT(v.y, INT32_MAX); DHT_EQ_INT(v.z, INT32_MAX);
+    u.x = INT32_MAX; u.y = INT32_MAX; u.z = INT32_MAX;
+    DHT_EQ_INT(dh_frame_apply_point_q(&A, &u, &v), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(v.x, INT32_MIN); DHT_EQ_INT(v.y, INT32_MIN); DHT_EQ_INT(v.z, INT32_MIN);
+    /* range edges, ties up: p_0 of A * B is 2^30 b0 + b1 (+ 2^29 to round)
+     * with A.r[0][0] = 1.0, A.r[1][0] = 2^-30, everything else 0 */
+    memset(&A, 0, sizeof A);
+    memset(&B, 0, sizeof B);
+    A.r[0][0] = DH_Q30_ONE;
+    A.r[1][0] = 1;
+    B.p[0] = INT32_MAX;
+    B.p[1] = (1 << 29) - 1;            /* INT32_MAX + 0.5 - 2^-30: fits */
+    DHT_EQ_INT(dh_frame_mul_q(&C, &A, &B), DH_OK);
+    DHT_EQ_INT(C.p[0], INT32_MAX);
+    B.p[1] = 1 << 29;                  /* INT32_MAX + 0.5: rounds up, saturates */
+    DHT_EQ_INT(dh_frame_mul_q(&C, &A, &B), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(C.p[0], INT32_MAX);
+    DHT_EQ_INT(C.p[1], 0);
+    B.p[0] = INT32_MIN;
+    B.p[1] = -(1 << 29);               /* INT32_MIN - 0.5: rounds up to INT32_MIN, fits */
+    DHT_EQ_INT(dh_frame_mul_q(&C, &A, &B), DH_OK);
+    DHT_EQ_INT(C.p[0], INT32_MIN);
+    B.p[1] = -(1 << 29) - 1;           /* INT32_MIN - 0.5 - 2^-30: saturates */
+    DHT_EQ_INT(dh_frame_mul_q(&C, &A, &B), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(C.p[0], INT32_MIN);
+    /* the same edges through apply (u = (b0, b1, 0)) and inv (p' = -R^T p) */
+    u.x = INT32_MAX; u.y = (1 << 29) - 1; u.z = 0;
+    DHT_EQ_INT(dh_frame_apply_dir_q(&A, &u, &v), DH_OK);
+    DHT_EQ_INT(v.x, INT32_MAX);
+    u.y = 1 << 29;
+    DHT_EQ_INT(dh_frame_apply_dir_q(&A, &u, &v), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(v.x, INT32_MAX);
+    /* inv: p'_0 = -(r00 p0 + r01 p1 + r02 p2) with column 0 of R = (1, 2^-30, 0):
+     * -(INT32_MIN 2^30 + 2^29 - 1) = INT32_MAX + 0.5 + 2^-30 ... rounds to 2^31: saturates;
+     * -(INT32_MIN 2^30 + 2^29 + 1) = INT32_MAX + 0.5 - 2^-30: fits */
+    memset(&A, 0, sizeof A);
+    A.r[0][0] = DH_Q30_ONE;
+    A.r[0][1] = 1;
+    A.p[0] = INT32_MIN;
+    A.p[1] = (1 << 29) - 1;
+    DHT_EQ_INT(dh_frame_inv_q(&C, &A), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(C.p[0], INT32_MAX);
+    A.p[1] = (1 << 29) + 1;
+    DHT_EQ_INT(dh_frame_inv_q(&C, &A), DH_OK);
+    DHT_EQ_INT(C.p[0], INT32_MAX);
+    A.p[1] = 1 << 29;                  /* exactly INT32_MAX + 0.5: ties up, saturates */
+    DHT_EQ_INT(dh_frame_inv_q(&C, &A), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(C.p[0], INT32_MAX);
+}
+
 /* re-orthonormalisation refuses frames too far from a rotation (F
  * untouched, also by the void form); ortho_error saturates */
 static void fixed_orthonormalize_bad(void)
@@ -400,6 +499,7 @@ static const dht_case cases[] = {
     DHT_CASE(fixed_mul_overflow),
     DHT_CASE(fixed_inv_overflow),
     DHT_CASE(fixed_apply_overflow),
+    DHT_CASE(fixed_saturation_wrap_and_edges),
     DHT_CASE(fixed_orthonormalize_bad),
     DHT_CASE(fixed_from_mat4_bad),
 };
