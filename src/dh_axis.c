@@ -6,11 +6,15 @@
 #include <math.h>
 
 #include "dhmath/dh_mat4.h"
+#include "dh_mathf.h"
 
 #define DH_RAD2DEG_F 57.295779513082320876798f
 
 /*
- * theta = atan2(s2, c2) in degrees, for s2 >= 0. The argument given to
+ * theta = atan2(s2, c2) in degrees, for s2 >= 0, with the libm-free
+ * dh_atan2f_ and dh_sqrtf_ of src/dh_mathf.h (no newlib atan2f / sqrtf:
+ * less flash and stack on Cortex-M; dh_sqrtf_ gives the bits of sqrtf,
+ * dh_atan2f_ is within 2 ulp). The argument given to
  * atan2f is always at most 45 degrees, and the result is formed as
  * 0 + x, 90 - x or 180 - x, so the rounding error of the radian-to-degree
  * product stays below half an ulp of 45 and the octant boundaries 90 and
@@ -20,11 +24,11 @@ static float dh_atan2_deg(float s2, float c2)
 {
     float th;
     if (c2 >= s2) {
-        th = atan2f(s2, c2) * DH_RAD2DEG_F;            /* [0, 45] */
+        th = dh_atan2f_(s2, c2) * DH_RAD2DEG_F;            /* [0, 45] */
     } else if (c2 >= -s2) {
-        th = 90.0f - atan2f(c2, s2) * DH_RAD2DEG_F;    /* (45, 135] */
+        th = 90.0f - dh_atan2f_(c2, s2) * DH_RAD2DEG_F;    /* (45, 135] */
     } else {
-        th = 180.0f - atan2f(s2, -c2) * DH_RAD2DEG_F;  /* (135, 180] */
+        th = 180.0f - dh_atan2f_(s2, -c2) * DH_RAD2DEG_F;  /* (135, 180] */
     }
     if (th < 0.0f) th = 0.0f;
     if (th > 180.0f) th = 180.0f;
@@ -46,7 +50,7 @@ dh_status dh_mat4_to_axis_angle_f32(const dh_mat4_f32 *T, dh_vec3_f32 *k, float 
     dy = ax - nz;               /* 2 ky sin(theta), eq. 1.78 */
     dz = ny - ox;               /* 2 kz sin(theta), eq. 1.79 */
     c2 = nx + oy + az - 1.0f;   /* 2 cos(theta), eq. 1.76 */
-    s2 = sqrtf(dx * dx + dy * dy + dz * dz); /* 2 sin(theta), eq. 1.81; |d| <= ~2 */
+    s2 = dh_sqrtf_(dx * dx + dy * dy + dz * dz); /* 2 sin(theta), eq. 1.81; |d| <= ~2 */
     th = dh_atan2_deg(s2, c2);
 
     if (c2 >= 0.0f) {
@@ -97,7 +101,7 @@ dh_status dh_mat4_to_axis_angle_f32(const dh_mat4_f32 *T, dh_vec3_f32 *k, float 
             z = -z;
         }
     }
-    len = sqrtf(x * x + y * y + z * z);
+    len = dh_sqrtf_(x * x + y * y + z * z);
     k->x = x / len;
     k->y = y / len;
     k->z = z / len;

@@ -14,6 +14,20 @@
 #include "dhmath/dh_mat4.h"
 #include "dhmath/dh_trig.h"
 
+#if DH_SMALL
+/*
+ * DH_SMALL: the same operations in the same order, written as loops over
+ * one shared linear-combination helper (products, points, directions) and
+ * one rotation builder (rotx/y/z are Rot(k, deg) about a coordinate axis,
+ * which is bitwise the same matrix); the square root is the libm-free
+ * dh_sqrtf_ (correctly rounded like sqrtf: same bits).
+ */
+#include "dh_mathf.h"
+#define DH_SQRTF dh_sqrtf_
+#else
+#define DH_SQRTF sqrtf
+#endif
+
 /* finite (not NaN, not +-Inf): a NaN fails the comparison */
 static int dh_finite(float x) { return fabsf(x) <= FLT_MAX; }
 
@@ -61,6 +75,27 @@ static dh_status dh_sc(float deg, float *s, float *c)
     return DH_OK;
 }
 
+#if DH_SMALL
+/* Rot(k, deg) about a coordinate axis is bitwise Rot(x|y|z, deg): the
+ * normalisation of a unit axis is exact and every product with its zero
+ * components is +-0, which the "+ 0.0f" of dh_mat4_rot_axis_f32 maps to
+ * +0 (test_mat4_seed checks the quadrants bit for bit). deg NaN or Inf:
+ * DH_ERR_NAN, as below. */
+dh_status dh_mat4_rotx_f32(dh_mat4_f32 *T, float deg)
+{
+    return dh_mat4_rot_axis_f32(T, 1.0f, 0.0f, 0.0f, deg);
+}
+
+dh_status dh_mat4_roty_f32(dh_mat4_f32 *T, float deg)
+{
+    return dh_mat4_rot_axis_f32(T, 0.0f, 1.0f, 0.0f, deg);
+}
+
+dh_status dh_mat4_rotz_f32(dh_mat4_f32 *T, float deg)
+{
+    return dh_mat4_rot_axis_f32(T, 0.0f, 0.0f, 1.0f, deg);
+}
+#else
 dh_status dh_mat4_rotx_f32(dh_mat4_f32 *T, float deg)
 {
     float s, c;
@@ -99,6 +134,7 @@ dh_status dh_mat4_rotz_f32(dh_mat4_f32 *T, float deg)
     T->m[1][1] = c;
     return DH_OK;
 }
+#endif
 
 /*
  * Diagonal entry k_i^2 vers + cos of eq. 1.70 for a unit axis. When k_i^2
@@ -110,6 +146,52 @@ static float dh_rot_diag(float ki2, float others2, float v, float c)
     return (ki2 >= 0.5f) ? 1.0f - others2 * v : ki2 * v + c;
 }
 
+#if DH_SMALL
+dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, float deg)
+{
+    float k[3], k2[3], m = 0.0f, len = 0.0f, s, c, v;
+    const float z = kx * 0.0f + ky * 0.0f + kz * 0.0f + deg * 0.0f; /* NaN iff one is NaN or Inf */
+    int i, j, a, b, t;
+    DH_ASSERT(T != NULL);
+    if (z != z) return DH_ERR_NAN;
+    k[0] = kx;
+    k[1] = ky;
+    k[2] = kz;
+    for (i = 0; i < 3; i++) {
+        if (fabsf(k[i]) > m) m = fabsf(k[i]);
+    }
+    if (m < FLT_MIN) return DH_ERR_ZERO_AXIS;
+    /* (0 + x^2) + y^2 + z^2 is bitwise x^2 + y^2 + z^2 */
+    for (i = 0; i < 3; i++) {
+        k[i] /= m;
+        len += k[i] * k[i];
+    }
+    len = DH_SQRTF(len);
+    for (i = 0; i < 3; i++) {
+        k[i] /= len;
+        k2[i] = k[i] * k[i];
+    }
+    if (dh_sc(deg, &s, &c) != DH_OK) return DH_ERR_NAN;
+    v = 1.0f - c;
+    dh_set_identity(T);
+    /* eq. 1.70 by the axis j and the two others a, b in cyclic order: the
+     * diagonal entry j as dh_rot_diag, and the pair (column a, row b) =
+     * k_a k_b vers + k_j sin, (column b, row a) = k_a k_b vers - k_j sin
+     * (the products and sums of the default code: a*b == b*a and
+     * a+b == b+a bitwise) */
+    for (i = 0, j = 0, a = 1, b = 2; i < 3; i++) {
+        const float p = k[a] * k[b] * v, q = k[j] * s;
+        T->m[j][j] = dh_rot_diag(k2[j], k2[a] + k2[b], v, c);
+        T->m[a][b] = (p + q) + 0.0f;
+        T->m[b][a] = (p - q) + 0.0f;
+        t = j; /* (j, a, b) -> (a, b, j) */
+        j = a;
+        a = b;
+        b = t;
+    }
+    return DH_OK;
+}
+#else
 dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, float deg)
 {
     float m, x, y, z, len, s, c, v, x2, y2, z2, xyv, xzv, yzv, xs, ys, zs;
@@ -123,7 +205,7 @@ dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, flo
     x = kx / m;
     y = ky / m;
     z = kz / m;
-    len = sqrtf(x * x + y * y + z * z); /* in [1, sqrt 3] */
+    len = DH_SQRTF(x * x + y * y + z * z); /* in [1, sqrt 3] */
     x /= len;
     y /= len;
     z /= len;
@@ -159,6 +241,7 @@ dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, flo
     T->m[3][3] = 1.0f;
     return DH_OK;
 }
+#endif
 
 void dh_mat4_scale_f32(dh_mat4_f32 *T, float sx, float sy, float sz)
 {
@@ -272,6 +355,61 @@ void dh_mat4_set_rot_f32(dh_mat4_f32 *T, const dh_mat3_f32 *R)
         for (r = 0; r < DH_AFFINE_ROWS; r++) (out)->m[c][r] = a0[r] * x_ + a1[r] * y_ + a2[r] * z_;  \
     } while (0)
 
+#if DH_SMALL
+/*
+ * o[r] = A_r0 in[0] + ... + A_r(n-1) in[n-1] for the rows r < 4, summed
+ * left to right as everywhere in this file: column c of a product (in =
+ * column c of B), a point (in = u, 1: the + p of the default code is
+ * p * 1, exact), a direction (n = 3), a homogeneous point.
+ */
+static void dh_lin(const dh_mat4_f32 *A, const float *in, float *o, int n)
+{
+    int r, k;
+    for (r = 0; r < 4; r++) {
+        float acc = A->m[0][r] * in[0];
+        for (k = 1; k < n; k++) acc += A->m[k][r] * in[k];
+        o[r] = acc;
+    }
+}
+
+/*
+ * out = A B (aff == 0), or the affine product (aff != 0): columns 0..2 of
+ * R_A times R_B (three terms, no fourth), column 3 R_A p_B + p_A (p_A
+ * times 1), bottom row 0 0 0 1; the bottom rows of A and B are never
+ * used (row 3 of the temporary is overwritten). Built in a temporary, so
+ * out may alias A and/or B.
+ */
+static void dh_mul(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B, int aff)
+{
+    dh_mat4_f32 t;
+    int c;
+    DH_ASSERT(out != NULL && A != NULL && B != NULL);
+    for (c = 0; c < 4; c++) {
+        if (aff) {
+            float b[4];
+            b[0] = B->m[c][0];
+            b[1] = B->m[c][1];
+            b[2] = B->m[c][2];
+            b[3] = 1.0f;
+            dh_lin(A, b, t.m[c], (c == 3) ? 4 : 3);
+            t.m[c][3] = (c == 3) ? 1.0f : 0.0f;
+        } else {
+            dh_lin(A, B->m[c], t.m[c], 4);
+        }
+    }
+    *out = t;
+}
+
+void dh_mat4_mul_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
+{
+    dh_mul(out, A, B, 0);
+}
+
+void dh_mat4_mul_affine_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
+{
+    dh_mul(out, A, B, 1);
+}
+#else
 void dh_mat4_mul_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
 {
     float a0[4], a1[4], a2[4], a3[4];
@@ -316,6 +454,7 @@ void dh_mat4_mul_affine_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat
     out->m[2][3] = 0.0f;
     out->m[3][3] = 1.0f;
 }
+#endif
 
 void dh_mat4_premul_f32(dh_mat4_f32 *T, const dh_mat4_f32 *X)
 {
@@ -331,6 +470,48 @@ void dh_mat4_postmul_f32(dh_mat4_f32 *T, const dh_mat4_f32 *X)
 /* application                                                            */
 /* ---------------------------------------------------------------------- */
 
+#if DH_SMALL
+/* v = rows 0..2 of the n-term combination of the columns of T with u, w
+ * (u, v may be the same object: u is read first) */
+static void dh_apply3(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, int n)
+{
+    float in[4], o[4];
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
+    in[0] = u->x;
+    in[1] = u->y;
+    in[2] = u->z;
+    in[3] = 1.0f;
+    dh_lin(T, in, o, n);
+    v->x = o[0];
+    v->y = o[1];
+    v->z = o[2];
+}
+
+void dh_mat4_apply_point_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
+{
+    dh_apply3(T, u, v, 4);
+}
+
+void dh_mat4_apply_dir_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
+{
+    dh_apply3(T, u, v, 3);
+}
+
+void dh_mat4_apply_vec4_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec4_f32 *v)
+{
+    float in[4], o[4];
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
+    in[0] = u->x;
+    in[1] = u->y;
+    in[2] = u->z;
+    in[3] = u->w;
+    dh_lin(T, in, o, 4);
+    v->x = o[0];
+    v->y = o[1];
+    v->z = o[2];
+    v->w = o[3];
+}
+#else
 void dh_mat4_apply_point_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
 {
     float x, y, z;
@@ -368,6 +549,7 @@ void dh_mat4_apply_vec4_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec4_
     v->z = T->m[0][2] * x + T->m[1][2] * y + T->m[2][2] * z + T->m[3][2] * w;
     v->w = T->m[0][3] * x + T->m[1][3] * y + T->m[2][3] * z + T->m[3][3] * w;
 }
+#endif
 
 int dh_mat4_isfinite_f32(const dh_mat4_f32 *T)
 {
@@ -379,6 +561,56 @@ int dh_mat4_isfinite_f32(const dh_mat4_f32 *T)
     return ok;
 }
 
+#if DH_SMALL
+dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec3_f32 *v)
+{
+    float in[4], h[4], z = 0.0f, zi = 0.0f;
+    int i;
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
+    in[0] = u->x;
+    in[1] = u->y;
+    in[2] = u->z;
+    in[3] = u->w;
+    dh_lin(T, in, h, 4);
+    /* x * 0 is NaN exactly for NaN and +-Inf */
+    for (i = 0; i < 4; i++) {
+        z += h[i] * 0.0f;
+        zi += in[i] * 0.0f;
+    }
+    if (z != z) return (dh_mat4_isfinite_f32(T) && zi == zi) ? DH_ERR_OVERFLOW : DH_ERR_NAN;
+    if (h[3] == 0.0f) return DH_ERR_DOMAIN;
+    for (i = 0; i < 3; i++) {
+        h[i] /= h[3];
+        z += h[i] * 0.0f;
+    }
+    if (z != z) return DH_ERR_OVERFLOW;
+    v->x = dh_nz(h[0]);
+    v->y = dh_nz(h[1]);
+    v->z = dh_nz(h[2]);
+    return DH_OK;
+}
+
+/* Q_j = P . (column j of Tinv), left to right as below */
+void dh_plane_mul_f32(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv, dh_plane_f32 *Q)
+{
+    float p[4], q[4];
+    int j, k;
+    DH_ASSERT(P != NULL && Tinv != NULL && Q != NULL);
+    p[0] = P->a;
+    p[1] = P->b;
+    p[2] = P->c;
+    p[3] = P->d;
+    for (j = 0; j < 4; j++) {
+        float acc = p[0] * Tinv->m[j][0];
+        for (k = 1; k < 4; k++) acc += p[k] * Tinv->m[j][k];
+        q[j] = acc;
+    }
+    Q->a = q[0];
+    Q->b = q[1];
+    Q->c = q[2];
+    Q->d = q[3];
+}
+#else
 dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec3_f32 *v)
 {
     dh_vec4_f32 h;
@@ -415,6 +647,7 @@ void dh_plane_mul_f32(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv, dh_plane_f
     Q->c = a * Tinv->m[2][0] + b * Tinv->m[2][1] + c * Tinv->m[2][2] + d * Tinv->m[2][3];
     Q->d = a * Tinv->m[3][0] + b * Tinv->m[3][1] + c * Tinv->m[3][2] + d * Tinv->m[3][3];
 }
+#endif
 
 void dh_mat4_apply_points_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, size_t count)
 {

@@ -10,7 +10,30 @@
 
 #include "dhmath/dh_mat4.h"
 
+#if DH_SMALL
+/*
+ * DH_SMALL: the general inverse is the certified path alone, with the
+ * arithmetic of the default build's certified path (the same statuses and
+ * bits as that path for every input), its balanced norms, residual and
+ * unscaling from one loop, and the libm-free square root (correctly
+ * rounded like sqrtf: same bits). The statuses are the default build's
+ * wherever its adjugate fast paths agree with its certified path; they
+ * do not for non-affine T with p = 0 and a large bottom row q (e.g.
+ * Persp(y, 1e-3)): the projective fast path bounds the condition number
+ * of blockdiag(R, w) (|p| |q| = 0 in S), the certified path that of T
+ * itself (balance factor 1 when p = 0), so the default accepts such T
+ * where the fast path's range test passes and rejects 2^k T elsewhere;
+ * DH_SMALL gives the certified answer at every scale.
+ */
+#include "dh_mathf.h"
+#define DH_SQRTF dh_sqrtf_
+#else
+#define DH_SQRTF sqrtf
+#endif
+
+#if !DH_SMALL
 static int dh_finite(float x) { return fabsf(x) <= FLT_MAX; }
+#endif
 
 #if defined(__GNUC__) || defined(__clang__)
 #define DH_NOINLINE __attribute__((noinline))
@@ -57,7 +80,9 @@ void dh_mat4_inv_rigid_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
  */
 
 static int dh_is_affine(const dh_mat4_f32 *T);
+#if !DH_SMALL
 static DH_NOINLINE float dh_affine_prescale(const dh_mat4_f32 *T);
+#endif
 
 /* Unit roundoff of float, 2^-24. */
 #define DH_U24 5.9604644775390625e-8f
@@ -73,6 +98,7 @@ static DH_NOINLINE float dh_affine_prescale(const dh_mat4_f32 *T);
  * column (Osborne's choice, sqrt(|p| / |q|)); for affine matrices (q = 0) it
  * makes the p column negligible.
  */
+#if !DH_SMALL
 static float dh_balance(const dh_mat4_f32 *M)
 {
     /* the sums are of |M_ij| / 4, so that three entries near FLT_MAX do not
@@ -88,13 +114,14 @@ static float dh_balance(const dh_mat4_f32 *M)
         m3 = (rs > m3) ? rs : m3;
     }
     if (cp == 0.0f) return 1.0f;
-    if (rq > 0.0f) sg = sqrtf(cp) / sqrtf(rq);
+    if (rq > 0.0f) sg = DH_SQRTF(cp) / DH_SQRTF(rq);
     else sg = (m3 > 0.0f) ? cp / m3 * 16777216.0f : 1.0f;
     /* keep sg * (anything O(1..2^60)) finite */
     if (sg > 1.15292150e18f) sg = 1.15292150e18f;       /* 2^60 */
     if (sg < 8.67361738e-19f) sg = 8.67361738e-19f;     /* 2^-60 */
     return sg;
 }
+#endif
 
 /*
  * Row view: column 3 of rows 0..2 times f, row 3 of columns 0..2 over f,
@@ -135,6 +162,58 @@ static DH_INLINE float dh_at(const dh_mat4_f32 *M, int i, int j, float s, int af
     return (i == j) ? 1.0f : 0.0f;
 }
 
+#if DH_SMALL
+/*
+ * The three balanced norms of the certified path in one loop (the row
+ * weights of dh_norm_rows below, the same operations in the same order);
+ * NaN if an element is NaN or Inf:
+ *  - X != NULL: the residual ||X A - I||, A = dh_at(M, ., ., s, aff)
+ *    (dh_residual below);
+ *  - X == NULL: ||A|| (dh_norm_rows; 0 + 1 * A_ij is A_ij up to the sign
+ *    of a zero), and W != NULL receives A (the X = A of dh_inv_certified
+ *    below; a zero of A as +0 only changes signs of zeros of the inverse,
+ *    which the unscaling maps to +0); M = the inverse with s == 1,
+ *    aff == 0 gives ||X||;
+ *  - si != 0 (X == NULL, aff == 0, W == M, si = 1 / s): dh_unscale below,
+ *    M = s M with the balanced norm of what that lost (its extra NaN
+ *    propagation only turns an Inf, i.e. DH_ERR_OVERFLOW, into a NaN,
+ *    which fails the same test).
+ */
+static DH_NOINLINE float dh_bnorm(const dh_mat4_f32 *X, const dh_mat4_f32 *M, float s, float sg, int aff,
+                                  dh_mat4_f32 *W, float si)
+{
+    float res = 0.0f, t = 0.0f;
+    int i, j, k;
+    for (i = 0; i < 4; i++) {
+        float rs = 0.0f;
+        for (j = 0; j < 4; j++) {
+            float q = 0.0f;
+            if (si != 0.0f) {
+                /* dh_unscale */
+                const float x = M->m[i][j], v = x * s + 0.0f;
+                W->m[i][j] = v;
+                q = v * si - x;
+            } else {
+                /* X == NULL: the term k == i alone, 0 + 1 * A_ij */
+                for (k = 0; k < 4; k++) {
+                    float x = 1.0f;
+                    if (X != NULL) x = X->m[i][k];
+                    else if (k != i) continue;
+                    q += x * dh_at(M, k, j, s, aff);
+                }
+                if (j == i && X != NULL) q -= 1.0f;
+                if (W != NULL) W->m[i][j] = q;
+            }
+            q = fabsf(q);
+            if (i < 3) rs += (j < 3) ? q : q * sg;
+            else rs += (j < 3) ? q / sg : q;
+        }
+        t += rs;
+        res = (rs > res) ? rs : res;
+    }
+    return res + t * 0.0f;
+}
+#else
 /* max row sum of D^-1 M D (row view; = balanced ||T||_1); NaN if an
  * element is NaN or Inf (t: a max alone would drop a NaN row) */
 static DH_NOINLINE float dh_norm_rows(const dh_mat4_f32 *M, float sg, float s, int aff)
@@ -178,6 +257,7 @@ static DH_NOINLINE float dh_residual(const dh_mat4_f32 *X, const dh_mat4_f32 *M,
     }
     return res + t * 0.0f;
 }
+#endif
 
 /*
  * In-place Gauss-Jordan with partial pivoting on the rows of M (i.e. on
@@ -243,6 +323,53 @@ static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
  * (or [2, 4) for the very top binade), so that nothing over- or
  * underflows. 0 for a zero or denormal matrix (R). T is finite here.
  */
+#if DH_SMALL
+/*
+ * One pass over T: returns the scale s of dh_cert_scale below with the
+ * affine prescale folded in (max over R only, always brought into [1, 2)),
+ * 0 for a zero or denormal matrix (R), NaN if an element of T is NaN or
+ * Inf (the scan of dh_inv_certified); and stores the factor sg of
+ * dh_balance below (1 for affine T) in X->m[0][0] of the scratch X (no
+ * pointer to a local in the caller: its frame stays small on Cortex-M0+).
+ * The same sums as dh_balance: (0 + a) + b + c is bitwise a + b + c for
+ * a >= 0, and |x| / 4 == |x / 4|.
+ */
+static DH_NOINLINE float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_f32 *X)
+{
+    float mx = 0.0f, s = 0.0f, z = 0.0f, cp = 0.0f, rq = 0.0f, m3 = 0.0f, sg = 1.0f;
+    uint32_t e;
+    int i, j;
+    for (i = 0; i < 4; i++) {
+        float rs = 0.0f;
+        for (j = 0; j < 4; j++) {
+            const float v = fabsf(T->m[i][j]), w = v * 0.25f;
+            z += v * 0.0f;
+            if (i < 3 && j < 3) rs += w;
+            else if (j < 3) cp += w;        /* row 3: p */
+            else if (i < 3) rq += w;        /* column 3: q */
+            if (!aff || (i < 3 && j < 3)) mx = (v > mx) ? v : mx;
+        }
+        m3 = (rs > m3) ? rs : m3;
+    }
+    if (mx >= FLT_MIN) {
+        s = 1.0f;
+        memcpy(&e, &mx, sizeof e);
+        e >>= 23;
+        if (aff || e < 127u - 16u || e > 127u + 16u) {
+            const uint32_t bits = ((e >= 254u) ? 1u : 254u - e) << 23;
+            memcpy(&s, &bits, sizeof s);
+        }
+    }
+    if (!aff && cp != 0.0f) {
+        if (rq > 0.0f) sg = DH_SQRTF(cp) / DH_SQRTF(rq);
+        else if (m3 > 0.0f) sg = cp / m3 * 16777216.0f;
+        if (sg > 1.15292150e18f) sg = 1.15292150e18f;       /* 2^60 */
+        if (sg < 8.67361738e-19f) sg = 8.67361738e-19f;     /* 2^-60 */
+    }
+    X->m[0][0] = sg;
+    return s + z;
+}
+#else
 static DH_NOINLINE float dh_cert_scale(const dh_mat4_f32 *T, int aff)
 {
     float mx = 0.0f, s = 1.0f;
@@ -264,7 +391,9 @@ static DH_NOINLINE float dh_cert_scale(const dh_mat4_f32 *T, int aff)
     }
     return s;
 }
+#endif
 
+#if !DH_SMALL
 /*
  * X = s X (+ 0.0f maps -0 to +0); returns the balanced norm (the weights of
  * dh_norm_rows) of what that lost, F / s = (s X) / s - X: 0 when every
@@ -291,6 +420,7 @@ static DH_NOINLINE float dh_unscale(dh_mat4_f32 *X, float s, float sg)
     }
     return lost;
 }
+#endif
 
 /*
  * Certified general inverse into the scratch X (X must not alias T; its
@@ -313,6 +443,37 @@ static DH_NOINLINE float dh_unscale(dh_mat4_f32 *X, float s, float sg)
  * (||X|| < 2^19 / na by (a), na >= 2^-60 since max|A_ij| >= 1), so the
  * proof covers T itself. The unscaling of the result is checked below.
  */
+#if DH_SMALL
+/* the same method and decisions as below, from the shared loops */
+static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 *T)
+{
+    const int aff = dh_is_affine(T);
+    const float s = dh_scan(T, aff, X), sg = X->m[0][0];
+    float na, z = 0.0f;
+    int j;
+    if (s != s) return DH_ERR_NAN;
+    if (s == 0.0f) return DH_ERR_SINGULAR;
+    /* X = A and its balanced norm */
+    na = dh_bnorm(NULL, T, s, sg, aff, X, 0.0f);
+    dh_rebalance(X, sg, 0);
+    if (!dh_inv_gauss_jordan(X)) return DH_ERR_SINGULAR;
+    dh_rebalance(X, sg, 1);
+    if (!(na * dh_bnorm(NULL, X, 1.0f, sg, 0, NULL, 0.0f) < DH_MAT4_COND_MAX)) return DH_ERR_SINGULAR;
+    if (!(dh_bnorm(X, T, s, sg, aff, NULL, 0.0f) <= 0.5f)) return DH_ERR_SINGULAR;
+    if (!(dh_bnorm(NULL, X, s, sg, 0, X, 1.0f / s) * na <= 0.0625f)) return DH_ERR_OVERFLOW;
+    if (aff) {
+        for (j = 0; j < 3; j++) {
+            const float t = 0.0f - (X->m[0][j] * T->m[3][0] + X->m[1][j] * T->m[3][1] + X->m[2][j] * T->m[3][2]);
+            X->m[3][j] = t;
+            X->m[j][3] = 0.0f;
+            z += t * 0.0f;
+        }
+        X->m[3][3] = 1.0f;
+    }
+    if (z != z) return DH_ERR_OVERFLOW;
+    return DH_OK;
+}
+#else
 static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
     const int aff = dh_is_affine(T);
@@ -369,7 +530,9 @@ static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 
     if (z != z) return DH_ERR_OVERFLOW;
     return DH_OK;
 }
+#endif
 
+#if !DH_SMALL
 /* ---------------------------------------------------------------------- */
 /* general inverse: fast paths                                            */
 /* ---------------------------------------------------------------------- */
@@ -559,18 +722,37 @@ static DH_NOINLINE int dh_inv_affine_scaled(dh_mat4_f32 *out, const dh_mat4_f32 
     const float s = dh_affine_prescale(T);
     return (s != 0.0f) && dh_inv_affine(out, T, s);
 }
+#endif
 
 /* bottom row exactly 0 0 0 1 */
+#if DH_SMALL
+/* the same test on the bits: +-0 (sign shifted out) and exactly 1.0f */
+static DH_NOINLINE int dh_is_affine(const dh_mat4_f32 *T)
+{
+    uint32_t b, z = 0u;
+    int i;
+    for (i = 0; i < 3; i++) {
+        memcpy(&b, &T->m[i][3], sizeof b);
+        z |= b << 1;
+    }
+    memcpy(&b, &T->m[3][3], sizeof b);
+    return z == 0u && b == 0x3F800000u;
+}
+#else
 static int dh_is_affine(const dh_mat4_f32 *T)
 {
     return T->m[0][3] == 0.0f && T->m[1][3] == 0.0f && T->m[2][3] == 0.0f && T->m[3][3] == 1.0f;
 }
+#endif
 
 /*
  * General inverse into X: the fast path for the input's shape, else the
  * certified path (X scratch, undefined on error, must not alias T). Used
  * by dh_mat4_apply_plane_f32.
  */
+#if DH_SMALL
+#define dh_inv_into dh_inv_certified
+#else
 static dh_status dh_inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
     if (dh_is_affine(T)) {
@@ -579,12 +761,14 @@ static dh_status dh_inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
     }
     return dh_inv_proj_fast(X, T) ? DH_OK : dh_inv_certified(X, T);
 }
+#endif
 
 /*
  * The public general inverse (out untouched on error). A separate function
  * so that dh_mat4_inv_auto_f32 calls it without the public function's
  * frame (stack budget on Cortex-M0+).
  */
+#if !DH_SMALL
 static DH_NOINLINE dh_status dh_inv_general(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
     dh_mat4_f32 X; /* scratch of the certified path */
@@ -600,17 +784,78 @@ static DH_NOINLINE dh_status dh_inv_general(dh_mat4_f32 *out, const dh_mat4_f32 
     if (st == DH_OK) *out = X;
     return st;
 }
+#endif
 
+#if DH_SMALL
+/* the certified path alone, into a scratch (out untouched on error, out
+ * may alias T) */
+dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+{
+    dh_mat4_f32 X;
+    dh_status st;
+    DH_ASSERT(out != NULL && T != NULL);
+    st = dh_inv_certified(&X, T);
+    if (st == DH_OK) *out = X;
+    return st;
+}
+#else
 dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
     DH_ASSERT(out != NULL && T != NULL);
     return dh_inv_general(out, T);
 }
+#endif
 
 /* ---------------------------------------------------------------------- */
 /* rigidity                                                               */
 /* ---------------------------------------------------------------------- */
 
+#if DH_SMALL
+/* the same tests as loops: the sums (0 + a) + b + c differ from a + b + c
+ * at most in the sign of a zero, which no comparison below sees */
+dh_status dh_mat4_check_rot_f32(const dh_mat4_f32 *T, float tol)
+{
+    float det = 0.0f, z = 0.0f;
+    int i, j, k, n, bad = 0;
+    DH_ASSERT(T != NULL);
+    if (!(tol >= 0.0f)) return DH_ERR_ARG;
+    for (i = 0; i < 3; i++) {
+        /* R^T R - I, row i up to the diagonal; z: NaN iff an entry of R
+         * is NaN or Inf (x * 0), which takes precedence */
+        for (j = 0; j <= i; j++) {
+            float d = 0.0f;
+            for (k = 0; k < 3; k++) {
+                d += T->m[i][k] * T->m[j][k];
+                z += T->m[i][k] * 0.0f;
+            }
+            if (i == j) d -= 1.0f;
+            bad |= !(fabsf(d) <= tol);
+        }
+    }
+    if (z != z) return DH_ERR_NAN;
+    if (bad) return DH_ERR_NOT_RIGID;
+    /* det R = n . (o x a) = sum of n_i (o_j a_k - o_k a_j), (i, j, k)
+     * the cyclic permutations of (0, 1, 2), in the default's order */
+    for (n = 0, i = 0, j = 1, k = 2; n < 3; n++) {
+        const int t = i;
+        det += T->m[0][i] * (T->m[1][j] * T->m[2][k] - T->m[1][k] * T->m[2][j]);
+        i = j; /* (i, j, k) -> (j, k, i) */
+        j = k;
+        k = t;
+    }
+    if (!(det > 0.0f)) return DH_ERR_NOT_RIGID;
+    return DH_OK;
+}
+
+dh_status dh_mat4_check_rigid_f32(const dh_mat4_f32 *T, float tol)
+{
+    DH_ASSERT(T != NULL);
+    if (!(tol >= 0.0f)) return DH_ERR_ARG;
+    if (!dh_mat4_isfinite_f32(T)) return DH_ERR_NAN;
+    if (!dh_is_affine(T)) return DH_ERR_NOT_RIGID;
+    return dh_mat4_check_rot_f32(T, tol);
+}
+#else
 dh_status dh_mat4_check_rot_f32(const dh_mat4_f32 *T, float tol)
 {
     float nx, ny, nz, ox, oy, oz, ax, ay, az, det;
@@ -649,9 +894,13 @@ dh_status dh_mat4_check_rigid_f32(const dh_mat4_f32 *T, float tol)
     }
     return dh_mat4_check_rot_f32(T, tol);
 }
+#endif
 
 dh_status dh_mat4_inv_auto_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
+#if DH_SMALL
+    dh_mat4_f32 X; /* the certified path's scratch here: one frame less */
+#endif
     dh_status st;
     DH_ASSERT(out != NULL && T != NULL);
     st = dh_mat4_check_rigid_f32(T, DH_MAT4_RIGID_TOL);
@@ -660,7 +909,13 @@ dh_status dh_mat4_inv_auto_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
         return DH_OK;
     }
     if (st == DH_ERR_NAN) return DH_ERR_NAN;
+#if DH_SMALL
+    st = dh_inv_certified(&X, T);
+    if (st == DH_OK) *out = X;
+    return st;
+#else
     return dh_inv_general(out, T);
+#endif
 }
 
 /* ---------------------------------------------------------------------- */
@@ -672,7 +927,15 @@ dh_status dh_mat4_apply_plane_f32(const dh_mat4_f32 *T, const dh_plane_f32 *P, d
     dh_mat4_f32 X; /* T^-1 (one 4x4 temporary; the inverse paths write into it) */
     dh_status st;
     DH_ASSERT(T != NULL && P != NULL && Q != NULL);
+#if DH_SMALL
+    /* NaN iff a coefficient is NaN or Inf */
+    {
+        const float z = P->a * 0.0f + P->b * 0.0f + P->c * 0.0f + P->d * 0.0f;
+        if (z != z) return DH_ERR_NAN;
+    }
+#else
     if (!(dh_finite(P->a) && dh_finite(P->b) && dh_finite(P->c) && dh_finite(P->d))) return DH_ERR_NAN;
+#endif
     /* the inverse as dh_mat4_inv_auto_f32 takes it, into X */
     st = dh_mat4_check_rigid_f32(T, DH_MAT4_RIGID_TOL);
     if (st == DH_OK) {

@@ -655,6 +655,90 @@ static void mat4_no_status_ieee_and_alias(void)
     }
 }
 
+/*
+ * Edges where the loop-based code of the DH_SMALL build is organised
+ * differently from the unrolled default code; both builds must give these
+ * results: the NaN/Inf test of check_rot/check_rigid takes precedence over
+ * the orthonormality and determinant tests; the affine test accepts -0 in
+ * the bottom row (== 0); Rot(x|y|z, deg) is bitwise Rot(k, deg) about the
+ * coordinate axis k of any positive length (dh_mat4.h); apply_point and
+ * apply_dir never let entries they do not read (the bottom row, and p for
+ * a direction) into the result.
+ */
+static void mat4_shared_path_edges(void)
+{
+    dh_mat4_f32 T, U, X, Y;
+    dh_vec3_f32 u, v, w;
+    unsigned it;
+    int c, r;
+    /* NaN/Inf in every entry of R, with R also huge or a reflection */
+    for (it = 0; it < 9u * 4u * 2u; it++) {
+        set_identity(&T);
+        T.m[0][0] = (it & 1u) ? 1e30f : -1.0f;
+        T.m[(it / 2u) % 3u][(it / 6u) % 3u] = bad_value(it / 18u);
+        DHT_EQ_INT(dh_mat4_check_rot_f32(&T, 1e-3f), DH_ERR_NAN);
+        DHT_EQ_INT(dh_mat4_check_rigid_f32(&T, 1e-3f), DH_ERR_NAN);
+    }
+    /* -0 in the bottom row is affine: same status and bits as +0 */
+    for (it = 0; it < DHT_ITER(200u); it++) {
+        DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, (float)dht_rand_uniform(-1.0, 1.0), (float)dht_rand_uniform(-1.0, 1.0),
+                                        1.0f, (float)dht_rand_uniform(-180.0, 180.0)), DH_OK);
+        for (r = 0; r < 3; r++) T.m[3][r] = (float)dht_rand_uniform(-100.0, 100.0);
+        U = T;
+        for (c = 0; c < 3; c++) U.m[c][3] = -0.0f;
+        DHT_EQ_INT(dh_mat4_check_rigid_f32(&U, DH_MAT4_RIGID_TOL), DH_OK);
+        DHT_EQ_INT(dh_mat4_inv_auto_f32(&X, &T), DH_OK);
+        DHT_EQ_INT(dh_mat4_inv_auto_f32(&Y, &U), DH_OK);
+        DHT_TRUE(memcmp(&X, &Y, sizeof X) == 0);
+        /* scaled (not rigid): the general inverse */
+        for (c = 0; c < 3; c++)
+            for (r = 0; r < 3; r++) {
+                T.m[c][r] *= 1.5f;
+                U.m[c][r] *= 1.5f;
+            }
+        DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_OK);
+        DHT_EQ_INT(dh_mat4_inv_f32(&Y, &U), DH_OK);
+        DHT_TRUE(memcmp(&X, &Y, sizeof X) == 0);
+        for (r = 0; r < 3; r++) DHT_EQ_F32_BITS(Y.m[r][3], 0.0f);
+        DHT_EQ_F32_BITS(Y.m[3][3], 1.0f);
+    }
+    /* coordinate rotations == Rot(k, deg) about a coordinate axis */
+    for (it = 0; it < DHT_ITER(3000u); it++) {
+        const double d = dht_rand_uniform(-720.0, 720.0);
+        const float deg = (it & 1u) ? (float)d : (float)(long)d;   /* whole degrees too */
+        const float len = (float)ldexp(dht_rand_uniform(1.0, 2.0), (int)(dht_rand_u32() % 201u) - 100);
+        int ax;
+        for (ax = 0; ax < 3; ax++) {
+            const dh_status st = (ax == 0) ? dh_mat4_rotx_f32(&X, deg)
+                               : (ax == 1) ? dh_mat4_roty_f32(&X, deg) : dh_mat4_rotz_f32(&X, deg);
+            DHT_EQ_INT(st, DH_OK);
+            DHT_EQ_INT(dh_mat4_rot_axis_f32(&Y, (ax == 0) ? len : 0.0f, (ax == 1) ? len : 0.0f,
+                                            (ax == 2) ? len : 0.0f, deg), DH_OK);
+            DHT_TRUE_MSG(memcmp(&X, &Y, sizeof X) == 0, "axis %d deg %.9g len %g", ax, (double)deg, (double)len);
+        }
+    }
+    /* entries not read: bottom row (point, direction), p (direction) */
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, 0.3f, -0.5f, 0.8f, 33.3f), DH_OK);
+    T.m[3][0] = 1.5f;
+    T.m[3][1] = -2.25f;
+    T.m[3][2] = 7.0f;
+    u.x = 0.7f;
+    u.y = -1.3f;
+    u.z = 2.9f;
+    for (it = 0; it < 4u; it++) {
+        U = T;
+        for (c = 0; c < 4; c++) U.m[c][3] = bad_value(it);
+        dh_mat4_apply_point_f32(&T, &u, &v);
+        dh_mat4_apply_point_f32(&U, &u, &w);
+        DHT_TRUE(memcmp(&v, &w, sizeof v) == 0);
+        for (r = 0; r < 3; r++) U.m[3][r] = bad_value(it + 1u);
+        dh_mat4_apply_dir_f32(&T, &u, &v);
+        dh_mat4_apply_dir_f32(&U, &u, &w);
+        DHT_TRUE(memcmp(&v, &w, sizeof v) == 0);
+        DHT_TRUE(dh_mat4_isfinite_f32(&U) == 0);
+    }
+}
+
 static const dht_case cases[] = {
     DHT_CASE(mat4_rot_nan_inf_huge),
     DHT_CASE(mat4_rot_axis_bad),
@@ -666,5 +750,6 @@ static const dht_case cases[] = {
     DHT_CASE(mat4_axis_angle_bad),
     DHT_CASE(mat4_apply_plane_bad),
     DHT_CASE(mat4_no_status_ieee_and_alias),
+    DHT_CASE(mat4_shared_path_edges),
 };
 DHT_MAIN(cases)
