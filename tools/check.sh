@@ -54,7 +54,7 @@ for s in $STAGES; do
     guards) [ -x tools/check_guards.sh ] && run_stage guards tools/check_guards.sh ;;
     variants) [ -x tools/check_variants.sh ] && run_stage variants tools/check_variants.sh ;;
     coverage) [ -x tools/coverage.sh ] && run_stage coverage tools/coverage.sh build/coverage ;;
-    static) [ -x tools/static.sh ] && run_stage static tools/static.sh ;;
+    static) [ -x tools/static.sh ] && run_stage static bash -c "tools/static.sh && STATIC_BUILD='$ROOT/build/static-small' STATIC_CMAKE_ARGS=-DDH_SMALL=ON tools/static.sh" ;;
     fuzz) [ -x tools/fuzz.sh ] && run_stage fuzz env FUZZ_SEED=${FUZZ_SEED:-20261124} tools/fuzz.sh 10 ;;
     apidoc) run_stage apidoc bash -c 'mkdir -p build && doxygen docs/Doxyfile' ;;
     *) echo "unknown stage $s"; exit 2 ;;

@@ -11,7 +11,10 @@
 # does a deviation that no longer matches anything.
 # Exit status 0 = clean; prints one summary line.
 # Environment: CPPCHECK, CLANG_TIDY (tool names), STATIC_BUILD (build dir),
-# JOBS (parallel clang-tidy processes, default nproc).
+# JOBS (parallel clang-tidy processes, default nproc), STATIC_CMAKE_ARGS
+# (extra configure options, e.g. -DDH_SMALL=ON to analyse the size-first
+# code; in such a run a deviation that matches nothing is not an error,
+# since it may belong to code that configuration compiles out).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
@@ -28,8 +31,10 @@ for tool in "$CPPCHECK" "$CLANG_TIDY"; do
 done
 
 # ---- compile database of the library (default options, host compiler)
+EXTRA_ARGS=${STATIC_CMAKE_ARGS:-}
+# shellcheck disable=SC2086
 cmake -S "$ROOT" -B "$B" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCMAKE_BUILD_TYPE=Release \
-  -DDH_BUILD_TESTS=OFF -DDH_BUILD_TOOLS=OFF >"$B/configure.log" 2>&1 ||
+  -DDH_BUILD_TESTS=OFF -DDH_BUILD_TOOLS=OFF $EXTRA_ARGS >"$B/configure.log" 2>&1 ||
   { cat "$B/configure.log"; echo "static.sh: FAILED: cmake configure"; exit 1; }
 
 # ---- deviations from docs/misra.md -> cppcheck suppressions
@@ -60,7 +65,12 @@ mkdir -p "$B/cppcheck"   # work files (ctu-info) stay out of src/
   --addon=misra --enable=warning,style,performance,portability,information \
   --suppressions-list="$supp" --inline-suppr -q -j "$JOBS" --cppcheck-build-dir="$B/cppcheck" \
   --template='{file}:{line}:{column}: {severity}: {id}: {message}' 2>"$cpp_log" >/dev/null || true
-# unmatched deviations are reported as "unmatchedSuppression"
+# unmatched deviations are reported as "unmatchedSuppression" (an error
+# in the default configuration only, see STATIC_CMAKE_ARGS)
+if [ -n "$EXTRA_ARGS" ]; then
+  grep -v ': unmatchedSuppression: ' "$cpp_log" >"$cpp_log.tmp" || true
+  mv "$cpp_log.tmp" "$cpp_log"
+fi
 ncpp=$(grep -c -E '^[^ ].*:-?[0-9]+:[0-9]+: ' "$cpp_log" || true)
 if [ "$ncpp" -gt 0 ]; then
   echo "--- cppcheck: $ncpp finding(s) not covered by docs/misra.md ---"
