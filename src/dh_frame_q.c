@@ -173,7 +173,7 @@ void dh_frame_rotz_q(dh_frame_q *F, dh_q16 deg) { dh_frame_rot_elem(F, 0u, 1u, d
 
 /*
  * o[i] = round((sgn (row i of R) . b + (p_i & pm) 2^30) / 2^30), i = 0..2,
- * ties up, saturated to int32; pm = mode >> 1 (-1 for DH_COL_RP, else 0),
+ * ties up, saturated to int32; pm = -1 for DH_COL_RP, else 0,
  * sgn = -1 for DH_COL_NEG_R. Returns DH_ERR_OVERFLOW
  * if an output saturated, else DH_OK (0).
  * The default build's fast path and its range test (see the comment above
@@ -190,7 +190,8 @@ static DH_NOINLINE unsigned dh_col(int32_t *o, const dh_frame_q *A, const int32_
 {
     unsigned st = 0u, i, k;
     for (i = 0; i < 3u; i++) {
-        int64_t S0 = DH_HALF30 + (int64_t)(A->p[i] & (mode >> 1)) * DH_ONE30;   /* |.| <= 2^61 */
+        const int32_t pm = (mode < 0) ? -1 : 0;   /* all ones for DH_COL_RP */
+        int64_t S0 = DH_HALF30 + (int64_t)(A->p[i] & pm) * DH_ONE30;   /* |.| <= 2^61 */
         uint64_t S = (uint64_t)S0;
         int32_t H = (int32_t)(S0 >> 32) >> 1;
         uint32_t hi;
@@ -215,7 +216,7 @@ static DH_NOINLINE unsigned dh_col(int32_t *o, const dh_frame_q *A, const int32_
  * = floor((floor(x / 2^(sh-1)) + 1) / 2), which cannot overflow */
 static DH_NOINLINE int64_t dh_rsh(int64_t x, unsigned sh)
 {
-    return ((x >> (sh - 1u)) + 1) >> 1;
+    return ((x >> (sh - 1u)) + (int64_t)1) >> 1;
 }
 
 /* round(a b / 2^sh) */
@@ -264,9 +265,10 @@ static DH_NOINLINE int64_t dh_dot3(const int32_t *a, const int32_t *b)
  */
 static DH_NOINLINE void dh_ortho_step(dh_frame_q *F)
 {
-    const dh_frame_q R = *F;
+    dh_frame_q R;
     int32_t M[3][3];
     unsigned i, j;
+    R = *F;
     for (i = 0; i < 3u; i++)
         for (j = 0; j < 3u; j++)
             M[i][j] = (int32_t)((((i == j) ? ((int64_t)3 << 60) : 0) + ((int64_t)1 << 30) -
@@ -363,7 +365,7 @@ dh_status dh_frame_mul_q(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q 
     dh_frame_q t;
     unsigned st = 0u, j;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    for (j = 0; j < 3u; j++) st |= dh_col(t.r[j], A, B->r[j], DH_COL_R);
+    for (j = 0; j < 3u; j++) st |= dh_col(&t.r[j][0], A, B->r[j], DH_COL_R);
     st |= dh_col(t.p, A, B->p, DH_COL_RP);
     *out = t;
     return (dh_status)st;
