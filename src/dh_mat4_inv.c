@@ -47,6 +47,30 @@ static int dh_finite(float x) { return fabsf(x) <= FLT_MAX; }
 /* rigid inverse                                                          */
 /* ---------------------------------------------------------------------- */
 
+#if DH_SMALL
+/* the same operations as loops: the translation first (p is read before
+ * anything is written, out may alias T), then R^T by pair swaps that read
+ * both elements before writing either */
+void dh_mat4_inv_rigid_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+{
+    float t[3];
+    int i, j;
+    DH_ASSERT(out != NULL && T != NULL);
+    for (i = 0; i < 3; i++) {
+        t[i] = 0.0f - (T->m[3][0] * T->m[i][0] + T->m[3][1] * T->m[i][1] + T->m[3][2] * T->m[i][2]);
+    }
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j <= i; j++) {
+            const float a = T->m[i][j], b = T->m[j][i];
+            out->m[i][j] = b;
+            out->m[j][i] = a;
+        }
+        out->m[i][3] = 0.0f;
+        out->m[3][i] = t[i];
+    }
+    out->m[3][3] = 1.0f;
+}
+#else
 void dh_mat4_inv_rigid_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
     float nx, ny, nz, ox, oy, oz, ax, ay, az, px, py, pz;
@@ -65,6 +89,7 @@ void dh_mat4_inv_rigid_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
     out->m[3][2] = 0.0f - (px * ax + py * ay + pz * az);
     out->m[3][3] = 1.0f;
 }
+#endif
 
 /* ---------------------------------------------------------------------- */
 /* general inverse                                                        */
