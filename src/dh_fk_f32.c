@@ -63,12 +63,18 @@ static int is_finite(float x)
  * p <- (p + d a) + a_len n, then twists (o, a) by alpha; modified DH
  * twists first, then p <- (p + a_len n) + d a, then turns. Every entry is
  * computed by the same operations in the same order as step_std /
- * step_mod of the default build, so the results are the same bits (rows
- * 0..2 only; the bottom row is written as 0 0 0 1). The link matrix stays
- * written out (link_direct): a step applied to the identity gives the
- * same values but not always the same signs of zeros (1 * 0 - 0 * 1 is
- * +0 where -st ca is -0). The q checks and the joint values share one
- * function; the tool product is dh_mat4_mul_affine_f32.
+ * step_mod of the default build, so a step gives the same bits (rows
+ * 0..2; the bottom row is written as 0 0 0 1).
+ * The link matrix is not written out: dh_link_f32 is the step applied to
+ * the identity, and an identity base takes the general step too. That
+ * gives the same values as the default's written-out link, but a zero
+ * entry may have the other sign (the step's 1 * 0 - 0 * 1 is +0 where
+ * -st * ca is -0, and the reverse); every nonzero entry, hence every
+ * later product, is the same bits, and the header promises nothing about
+ * signs of zeros (the bottom row is still exactly 0 0 0 1). This is the
+ * only difference from the default build; it saves the 144-byte
+ * link_direct. The q checks and the joint values share one function; the
+ * tool product is dh_mat4_mul_affine_f32.
  */
 #if defined(__GNUC__) || defined(__clang__)
 #define FK_NOINLINE __attribute__((noinline))
@@ -84,10 +90,11 @@ static FK_NOINLINE void set_bottom(dh_mat4_f32 *T)
     T->m[3][3] = 1.0f;
 }
 
-/* Columns i and i + 1 of T turned by (c, s): x' = c x + s y,
+/* Columns i and i + 1 of T turned by sc = (s, c): x' = c x + s y,
  * y' = c y - s x. */
-static FK_NOINLINE void turn(dh_mat4_f32 *T, int i, float s, float c)
+static FK_NOINLINE void turn(dh_mat4_f32 *T, int i, const float *sc)
 {
+    const float s = sc[0], c = sc[1];
     int k;
     for (k = 0; k < 3; k++) {
         float x = T->m[i][k], y = T->m[i + 1][k];
@@ -97,52 +104,22 @@ static FK_NOINLINE void turn(dh_mat4_f32 *T, int i, float s, float c)
 }
 
 /* One joint in place (mod: 1 for modified DH); v = (sin theta, cos theta,
- * d) from joint_values. */
-static FK_NOINLINE void step(dh_mat4_f32 *T, int mod, const dh_joint *j, const float v[3])
+ * sin alpha, cos alpha, d, a) from joint_values. Standard: theta on
+ * columns (0, 1), then p + d a + a_len n, then alpha on (1, 2); modified:
+ * alpha first, p + a_len n + d a, then theta. */
+static FK_NOINLINE void step(dh_mat4_f32 *T, int mod, const float v[6])
 {
-    /* standard: theta on columns (0, 1) first, position p + d a + a_len n;
-     * modified: alpha on columns (1, 2) first, p + a_len n + d a */
-    float s1 = v[0], c1 = v[1], s2 = j->sa, c2 = j->ca, l1 = v[2], l2 = j->a;
-    const float *x1 = T->m[2], *x2 = T->m[0];
+    const float *x1 = T->m[2 - 2 * mod], *x2 = T->m[2 * mod];
     int k;
-    if (mod) {
-        s1 = j->sa;
-        c1 = j->ca;
-        s2 = v[0];
-        c2 = v[1];
-        l1 = j->a;
-        l2 = v[2];
-        x1 = T->m[0];
-        x2 = T->m[2];
-    }
-    turn(T, mod, s1, c1);
-    for (k = 0; k < 3; k++) T->m[3][k] = (T->m[3][k] + l1 * x1[k]) + l2 * x2[k];
-    turn(T, !mod, s2, c2);
+    turn(T, mod, v + 2 * mod);
+    for (k = 0; k < 3; k++) T->m[3][k] = (T->m[3][k] + v[4 + mod] * x1[k]) + v[5 - mod] * x2[k];
+    turn(T, !mod, v + 2 - 2 * mod);
     set_bottom(T);
-}
-
-/* The link matrix written out (what a step applied to the identity gives
- * up to the sign of zeros; the default build's first link, same bits). */
-static FK_NOINLINE void link_direct(dh_mat4_f32 *A, dh_convention conv, const dh_joint *j, const float v[3])
-{
-    const float st = v[0], ct = v[1], d = v[2], sa = j->sa, ca = j->ca, a = j->a;
-    if (conv == DH_CONV_STANDARD) {
-        A->m[0][0] = ct;       A->m[0][1] = st;       A->m[0][2] = 0.0f;
-        A->m[1][0] = -st * ca; A->m[1][1] = ct * ca;  A->m[1][2] = sa;
-        A->m[2][0] = st * sa;  A->m[2][1] = -ct * sa; A->m[2][2] = ca;
-        A->m[3][0] = a * ct;   A->m[3][1] = a * st;   A->m[3][2] = d;
-    } else {
-        A->m[0][0] = ct;       A->m[0][1] = st * ca;  A->m[0][2] = st * sa;
-        A->m[1][0] = -st;      A->m[1][1] = ct * ca;  A->m[1][2] = ct * sa;
-        A->m[2][0] = 0.0f;     A->m[2][1] = -sa;      A->m[2][2] = ca;
-        A->m[3][0] = a;        A->m[3][1] = -sa * d;  A->m[3][2] = ca * d;
-    }
-    set_bottom(A);
 }
 
 /* Checks joint j's value q: DH_ERR_NAN when q is not finite,
  * DH_ERR_OVERFLOW when q + offset overflows, else DH_OK and, when v is
- * not NULL, v = (sin theta, cos theta, d). */
+ * not NULL, v = (sin theta, cos theta, sin alpha, cos alpha, d, a). */
 static FK_NOINLINE dh_status joint_values(const dh_joint *j, float q, float *v)
 {
     /* (theta, d) with q added to the joint's variable */
@@ -155,7 +132,10 @@ static FK_NOINLINE dh_status joint_values(const dh_joint *j, float q, float *v)
     if (!is_finite(td[k])) return DH_ERR_OVERFLOW;
     if (v) {
         (void)dh_sincos_f32(td[0], &v[0], &v[1]);
-        v[2] = td[1];
+        v[2] = j->sa;
+        v[3] = j->ca;
+        v[4] = td[1];
+        v[5] = j->a;
     }
     return DH_OK;
 }
@@ -166,27 +146,31 @@ static FK_NOINLINE void copy(dh_mat4_f32 *dst, const dh_mat4_f32 *src)
     if (dst != src) *dst = *src;
 }
 
-/* 1 when the 3x4 part of T is finite: x - x is 0 for a finite x and NaN
- * otherwise, and a NaN stays in the sum. */
+/* 1 when T is finite (its bottom row is 0 0 0 1 here, so that is its
+ * 3x4 part): x - x is 0 for a finite x and NaN otherwise, and a NaN stays
+ * in the sum. */
 static FK_NOINLINE int frame_finite(const dh_mat4_f32 *T)
 {
     float z = 0.0f;
     int c, k;
     for (c = 0; c < 4; c++)
-        for (k = 0; k < 3; k++) z += T->m[c][k] - T->m[c][k];
+        for (k = 0; k < 4; k++) z += T->m[c][k] - T->m[c][k];
     return z == 0.0f;
 }
 
 dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
 {
-    float v[3];
+    float v[6];
     dh_status st;
     DH_ASSERT(r != NULL);
     DH_ASSERT(A != NULL);
     if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS || (r->flags & DH_ROBOT_HAS_F32) == 0u)
         return DH_ERR_ARG;
     st = joint_values(&r->joint[i], q, v);
-    if (st == DH_OK) link_direct(A, r->conv, &r->joint[i], v);
+    if (st == DH_OK) {
+        dh_mat4_identity_f32(A);
+        step(A, r->conv != DH_CONV_STANDARD, v);
+    }
     return st;
 }
 
@@ -227,16 +211,12 @@ static FK_NOINLINE dh_status fk_f32(const dh_robot *r, const float *q, dh_mat4_f
         if (st != DH_OK) return st;
     }
     for (i = 0u; i < r->n; i++) {
-        float v[3];
+        float v[6];
         const dh_joint *j = &r->joint[i];
         if (frames) dst = &frames[i];
         (void)joint_values(j, q[i], v);
-        if (i == 0u && (r->flags & DH_ROBOT_BASE_ID_F32)) {
-            link_direct(dst, r->conv, j, v);
-        } else {
-            copy(dst, src);
-            step(dst, r->conv != DH_CONV_STANDARD, j, v);
-        }
+        copy(dst, src);
+        step(dst, r->conv != DH_CONV_STANDARD, v);
         src = dst;
     }
     return DH_OK;

@@ -201,6 +201,13 @@ DH_PORT_INLINE int32_t len(int32_t x)
  * saturate) and dh_link_q (a step applied to the identity). The identity
  * tool is still skipped (a copy): the product by it would give the same
  * bits but costs about 600 instructions of a 6-joint FK on Cortex-M4.
+ * Every two-term entry goes through add_rnd30 (p + round(x / 2^30),
+ * saturated; p = 0 for rotation entries, and d + q is d + round(q 2^30 /
+ * 2^30)), the same value and flag as the default's rnd30 / pos.
+ * The tool product keeps its own three-term sums of halved products:
+ * dh_frame_mul_q rounds the exact sum instead, which differs by one LSB
+ * in rare cases, and so at the int32 edge saturates for some inputs
+ * where this product does not (a different status).
  */
 
 /* v saturated to int32 (|v| < 2^63 - 2^31); sets *ovf when it does not
@@ -214,6 +221,13 @@ static FKQ_NOINLINE int32_t sat32(int64_t v, int *ovf)
     return (int32_t)v;
 }
 
+/* p + round(x / 2^30) (half up), saturated: x below 2^63 - 2^29 in
+ * magnitude (sums of two products, file comment). */
+static FKQ_NOINLINE int32_t add_rnd30(int32_t p, int64_t x, int *ovf)
+{
+    return sat32(p + ((x + HALF29) >> 30), ovf);
+}
+
 /* Columns i and i + 1 of T turned by cs = (s, c): x' = c x + s y,
  * y' = c y - s x, each rounded once and saturated (rnd30, as the checked
  * path). Products below 2^62, their sums below 2^63 (file comment). */
@@ -223,8 +237,8 @@ static FKQ_NOINLINE void turn(dh_frame_q *T, unsigned i, const dh_q30 *cs, int *
     int k;
     for (k = 0; k < 3; k++) {
         const int32_t x = T->r[i][k], y = T->r[i + 1u][k];
-        T->r[i][k] = rnd30(MLA(MUL(c, x), s, y), ovf);
-        T->r[i + 1u][k] = rnd30(MUL(c, y) - MUL(s, x), ovf);
+        T->r[i][k] = add_rnd30(0, MLA(MUL(c, x), s, y), ovf);
+        T->r[i + 1u][k] = add_rnd30(0, MUL(c, y) - MUL(s, x), ovf);
     }
 }
 
@@ -237,21 +251,22 @@ static FKQ_NOINLINE int step(dh_frame_q *T, const dh_robot *r, uint32_t i, int32
     const dh_joint *j = &r->joint[i];
     const unsigned mod = r->conv != DH_CONV_STANDARD;
     dh_q30 v[4]; /* sin theta, cos theta, sin alpha, cos alpha */
-    int64_t t = j->theta_q, dv = j->d_q;
+    int64_t t = j->theta_q;
     const int32_t a = len(j->a_q);
-    int32_t d;
+    int32_t d, qd = 0;
     int ovf = 0, k;
     if (j->type == DH_JOINT_REVOLUTE) t += q;
-    else dv += q;
+    else qd = q;
     if (t > INT32_MAX) t -= TURNS_182;
     else if (t < INT32_MIN) t += TURNS_182;
     dh_sincos_q((dh_q16)t, &v[0], &v[1]);
     v[2] = j->sa_q;
     v[3] = j->ca_q;
-    d = len(sat32(dv, &ovf));
+    /* d + qd, saturated: qd 2^30 rounds back to qd exactly */
+    d = len(add_rnd30(j->d_q, MUL(qd, 0x40000000), &ovf));
     turn(T, mod, &v[2u * mod], &ovf);
     for (k = 0; k < 3; k++)
-        T->p[k] = sat32(T->p[k] + ((MLA(MUL(a, T->r[0][k]), d, T->r[2][k]) + HALF29) >> 30), &ovf);
+        T->p[k] = add_rnd30(T->p[k], MLA(MUL(a, T->r[0][k]), d, T->r[2][k]), &ovf);
     turn(T, mod ^ 1u, &v[2u * (mod ^ 1u)], &ovf);
     return ovf;
 }
@@ -270,8 +285,12 @@ static FKQ_NOINLINE void mul_frame(dh_frame_q *out, const dh_frame_q *A, const d
     int c, k;
     for (k = 0; k < 3; k++) {
         const int32_t a0 = A->r[0][k], a1 = A->r[1][k], a2 = A->r[2][k], p = A->p[k];
-        for (c = 0; c < 3; c++) out->r[c][k] = sat32((dot3h(a0, a1, a2, B->r[c]) + HALF28) >> 29, ovf);
-        out->p[k] = sat32(p + ((dot3h(a0, a1, a2, B->p) + HALF28) >> 29), ovf);
+        for (c = 0; c < 4; c++) {
+            /* columns n, o, a, then p (plus the position of A) */
+            const int32_t *b = c < 3 ? B->r[c] : B->p;
+            int32_t *o = c < 3 ? &out->r[c][k] : &out->p[k];
+            *o = sat32((c < 3 ? 0 : p) + ((dot3h(a0, a1, a2, b) + HALF28) >> 29), ovf);
+        }
     }
 }
 

@@ -1153,6 +1153,22 @@ static void prismatic_edges(void)
         DHT_EQ_INT(T.p[2], -INT32_MAX);
         DHT_EQ_INT(dh_link_q(&r, 1, INT32_MIN + 10, &T), DH_OK);
         DHT_EQ_INT(T.p[2], -INT32_MAX);
+        /* the top edge and the extreme sums (DH_SMALL forms d + q as
+         * d + round(q 2^30 / 2^30), saturated) */
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_PRISMATIC, 0, INT32_MAX - 7, 0, 0), DH_OK);
+        DHT_EQ_INT(dh_link_q(&r, 2, 7, &T), DH_OK);
+        DHT_EQ_INT(T.p[2], INT32_MAX);
+        DHT_EQ_INT(dh_link_q(&r, 2, 8, &T), DH_ERR_OVERFLOW);
+        DHT_EQ_INT(T.p[2], INT32_MAX);
+        DHT_EQ_INT(dh_link_q(&r, 2, INT32_MAX, &T), DH_ERR_OVERFLOW);
+        DHT_EQ_INT(T.p[2], INT32_MAX);
+        DHT_EQ_INT(dh_link_q(&r, 2, INT32_MIN, &T), DH_OK);
+        DHT_EQ_INT(T.p[2], -8);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_PRISMATIC, 0, INT32_MIN, 0, 0), DH_OK);
+        DHT_EQ_INT(dh_link_q(&r, 3, INT32_MIN, &T), DH_ERR_OVERFLOW);
+        DHT_EQ_INT(T.p[2], -INT32_MAX);
+        DHT_EQ_INT(dh_link_q(&r, 3, INT32_MAX, &T), DH_OK);
+        DHT_EQ_INT(T.p[2], -1);
     }
 }
 
