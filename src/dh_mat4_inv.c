@@ -3,6 +3,18 @@
  * the closed-form rigid inverse (eq. 1.57), a general inverse with a
  * scale-invariant singularity test, rigidity checks and the automatic
  * choice between the two inverses.
+ *
+ * Fix (issue 5 follow-up): non-affine T with p = 0 and a large bottom row
+ * q, e.g. Persp(axis, 1e-3), were balanced with sg = 1, so the certified
+ * path measured the condition number of T itself (~ |q|^2) and rejected
+ * them as singular, while the default build's projective fast path
+ * (whose bound has |p| |q| = 0) accepted T and its certified path
+ * rejected 2^20 T: the status depended on the path and on the scale.
+ * Such T is a similarity diag(1, 1, 1, sg), sg -> 0, away from
+ * blockdiag(R, w); the balancing now takes q sg = 2^-24 of the rows of R
+ * when p is exactly zero (the mirror of the q = 0 rule), so both builds
+ * return DH_OK at every power-of-two scale with an exact inverse of
+ * Persp. Why it is sound: see "p = 0" below.
  */
 #include <float.h>
 #include <math.h>
@@ -16,14 +28,9 @@
  * arithmetic of the default build's certified path (the same statuses and
  * bits as that path for every input), its balanced norms, residual and
  * unscaling from one loop, and the libm-free square root (correctly
- * rounded like sqrtf: same bits). The statuses are the default build's
- * wherever its adjugate fast paths agree with its certified path; they
- * do not for non-affine T with p = 0 and a large bottom row q (e.g.
- * Persp(y, 1e-3)): the projective fast path bounds the condition number
- * of blockdiag(R, w) (|p| |q| = 0 in S), the certified path that of T
- * itself (balance factor 1 when p = 0), so the default accepts such T
- * where the fast path's range test passes and rejects 2^k T elsewhere;
- * DH_SMALL gives the certified answer at every scale.
+ * rounded like sqrtf: same bits). The statuses are the default build's:
+ * its adjugate fast paths accept only what its certified path accepts
+ * (since the p = 0 fix above also for p = 0 and a large q).
  */
 #include "dh_mathf.h"
 #define DH_SQRTF dh_sqrtf_
@@ -122,6 +129,31 @@ static DH_NOINLINE float dh_affine_prescale(const dh_mat4_f32 *T);
  * (it is the same motion in other units). sg balances the last row and
  * column (Osborne's choice, sqrt(|p| / |q|)); for affine matrices (q = 0) it
  * makes the p column negligible.
+ *
+ * p = 0 (exactly: the three entries are +-0; p only below the range of
+ * the sums, 2^-148, keeps sg = 1 as before). Osborne's factor is 0 and the
+ * balanced condition number decreases towards that of blockdiag(R, w) as
+ * sg -> 0, so sg = 2^-24 m3 / |q| (clamped to [2^-60, 2^60] like the
+ * others) makes the q row negligible, as the q = 0 rule does for p.
+ * Soundness: the certificate (b) proves M non-singular for ANY sg (an
+ * induced norm of a similarity), and its rounding and underflow bounds
+ * only use the clamp; but it bounds the error of the entries weighted by
+ * sg (the bottom row of T^-1) only as ||.|| / sg, i.e. not at all for a
+ * tiny sg. A rule that merely forced a tiny sg therefore accepts any
+ * bottom row: with p not exactly zero, or q sg leaving the normal range
+ * in the balanced matrix (its bits lost, and the unbalancing divides the
+ * loss by sg), the returned bottom row can be wrong while the residual
+ * passes. Here that row is exact by structure instead: row 3 of the row
+ * view is (0, 0, 0, w), Gauss-Jordan never pivots on it before step 3
+ * (zero in columns 0..2; an all-zero column is a zero pivot), so it stays
+ * (0, 0, 0, 1/w), every residual entry weighted 1/sg is exactly 0, and
+ * the bottom row of T^-1 is the elimination applied to q sg followed by
+ * the exact power-of-two unbalancing: the error of a backward-stable
+ * solve with R (pivots chosen on R alone), plus at most 2^-150 per entry
+ * of q sg below FLT_MIN, i.e. 2^-150 / sg * ||R^-1|| / |w| after the
+ * unbalancing (sg >= 2^-60). Measured: max|X - T^-1| <= 2.6 cond u
+ * max|T^-1|, right residual <= 0.053, nothing below the condition limit
+ * rejected (test_mat4_inv_regress, p_zero_magnitudes_sweep, 400 seeds).
  */
 #if !DH_SMALL
 static float dh_balance(const dh_mat4_f32 *M)
@@ -138,8 +170,13 @@ static float dh_balance(const dh_mat4_f32 *M)
         const float rs = fabsf(M->m[i][0] * 0.25f) + fabsf(M->m[i][1] * 0.25f) + fabsf(M->m[i][2] * 0.25f);
         m3 = (rs > m3) ? rs : m3;
     }
-    if (cp == 0.0f) return 1.0f;
-    if (rq > 0.0f) sg = DH_SQRTF(cp) / DH_SQRTF(rq);
+    if (cp == 0.0f) {
+        /* p exactly 0 (not only below 2^-148): the mirror of the q = 0
+         * rule below, q sg 2^-24 of the rows of R (see "p = 0" above) */
+        const float pn = fabsf(M->m[3][0]) + fabsf(M->m[3][1]) + fabsf(M->m[3][2]);
+        if (!(pn == 0.0f && rq > 0.0f && m3 > 0.0f)) return 1.0f;
+        sg = m3 / rq * DH_U24;
+    } else if (rq > 0.0f) sg = DH_SQRTF(cp) / DH_SQRTF(rq);
     else sg = (m3 > 0.0f) ? cp / m3 * 16777216.0f : 1.0f;
     /* keep sg * (anything O(1..2^60)) finite */
     if (sg > 1.15292150e18f) sg = 1.15292150e18f;       /* 2^60 */
@@ -361,7 +398,7 @@ static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
  */
 static DH_NOINLINE float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_f32 *X)
 {
-    float mx = 0.0f, s = 0.0f, z = 0.0f, cp = 0.0f, rq = 0.0f, m3 = 0.0f, sg = 1.0f;
+    float mx = 0.0f, s = 0.0f, z = 0.0f, cp = 0.0f, rq = 0.0f, m3 = 0.0f, sg = 1.0f, pn = 0.0f;
     uint32_t e;
     int i, j;
     for (i = 0; i < 4; i++) {
@@ -370,7 +407,10 @@ static DH_NOINLINE float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_f32 *X)
             const float v = fabsf(T->m[i][j]), w = v * 0.25f;
             z += v * 0.0f;
             if (i < 3 && j < 3) rs += w;
-            else if (j < 3) cp += w;        /* row 3: p */
+            else if (j < 3) {               /* row 3: p */
+                cp += w;
+                pn += v;
+            }
             else if (i < 3) rq += w;        /* column 3: q */
             if (!aff || (i < 3 && j < 3)) mx = (v > mx) ? v : mx;
         }
@@ -385,8 +425,10 @@ static DH_NOINLINE float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_f32 *X)
             memcpy(&s, &bits, sizeof s);
         }
     }
-    if (!aff && cp != 0.0f) {
-        if (rq > 0.0f) sg = DH_SQRTF(cp) / DH_SQRTF(rq);
+    if (!aff && (cp != 0.0f || rq > 0.0f)) {
+        if (cp == 0.0f) {
+            if (pn == 0.0f && m3 > 0.0f) sg = m3 / rq * DH_U24; /* p = 0 */
+        } else if (rq > 0.0f) sg = DH_SQRTF(cp) / DH_SQRTF(rq);
         else if (m3 > 0.0f) sg = cp / m3 * 16777216.0f;
         if (sg > 1.15292150e18f) sg = 1.15292150e18f;       /* 2^60 */
         if (sg < 8.67361738e-19f) sg = 8.67361738e-19f;     /* 2^-60 */

@@ -335,11 +335,151 @@ static void extreme_magnitudes_sweep(void)
     DHT_TRUE(n_ok > DHT_ITER(20000) / 4);
 }
 
+/*
+ * Persp(axis, f) with a small focal distance: T = [I 0; q^T 1], |q| = 1/f.
+ * The inverse [I 0; -q^T 1] is exact in float and a similarity
+ * diag(1, 1, 1, g), g -> 0, makes T as well conditioned as I, but with
+ * p = 0 the certified path used to balance with g = 1 (condition ~ 1/f^2):
+ * the default build accepted T on its projective fast path and rejected
+ * 2^20 T (DH_SMALL rejected every scale). Now DH_OK at every scale, in
+ * both builds, with the contract's proof and accuracy against a double
+ * reference computed here.
+ */
+static void persp_small_focal_every_scale(void)
+{
+    static const float fs[] = {1e-3f, -1e-3f, 3e-4f, 1e-4f, 1e-5f, -1e-6f, 1e-8f, 1e-10f, 1e-12f};
+    double worst_proof = 0.0, worst_rel = 0.0;
+    int ax, fi, k;
+    for (ax = 0; ax < 3; ax++)
+        for (fi = 0; fi < (int)(sizeof fs / sizeof fs[0]); fi++) {
+            dh_mat4_f32 P;
+            DHT_EQ_INT(dh_mat4_persp_f32(&P, ax, fs[fi]), DH_OK);
+            for (k = -40; k <= 40; k++) {
+                dh_mat4_f32 T, X, Y;
+                inv_check c;
+                int i, j;
+                for (i = 0; i < 4; i++)
+                    for (j = 0; j < 4; j++) T.m[i][j] = ldexpf(P.m[i][j], k);
+                DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_OK);
+                DHT_TRUE(check_inverse(&T, &X, &c));
+                DHT_TRUE_MSG(c.proof < 1.0, "axis %d f %g 2^%d: residual %.3g", ax, (double)fs[fi], k, c.proof);
+                DHT_TRUE_MSG(c.rel <= 3.1 * c.cond * U24, "axis %d f %g 2^%d: error %.3g, cond %.3g", ax,
+                             (double)fs[fi], k, c.rel, c.cond);
+                worst_proof = fmax(worst_proof, c.proof);
+                worst_rel = fmax(worst_rel, c.rel / (c.cond * U24));
+                /* the inverse of 2^k P is 2^-k [I 0; -q^T 1], exactly */
+                for (i = 0; i < 4; i++)
+                    for (j = 0; j < 4; j++) {
+                        const float e = (i == j) ? 1.0f : (i == ax && j == 3) ? -P.m[ax][3] : 0.0f;
+                        DHT_EQ_F32_BITS(X.m[i][j], ldexpf(e, -k));
+                    }
+                /* in place: the same */
+                Y = T;
+                DHT_EQ_INT(dh_mat4_inv_f32(&Y, &Y), DH_OK);
+                DHT_TRUE(memcmp(&X, &Y, sizeof X) == 0);
+            }
+        }
+    dht_printf("persp, small f, 2^-40..2^40: right residual <= %.3g, max|X - T^-1| / (max|T^-1| cond u) <= %.3g\n",
+               worst_proof, worst_rel);
+}
+
+/*
+ * T = [R 0; q^T w] (p = 0) at extreme magnitudes as in
+ * extreme_magnitudes_sweep, in a quarter of the cases with q = 0 as well
+ * (both zero: no balancing), in another with w = 1, and in a quarter
+ * [R p; 0 w] (q = 0 alone, the mirror rule, unchanged): the same status at the
+ * scales 2^-20, 1, 2^20 (unless an entry leaves the normal range or the
+ * exact inverse does not fit in float), every
+ * DH_OK with a proof and the accuracy of the contract, DH_ERR_SINGULAR
+ * only for condition numbers (smallest over the balancings) near or
+ * above the limit.
+ */
+/* the exact inverse of T exists and fits in float */
+static int fits(const dh_mat4_f32 *T)
+{
+    dhr_mat4 D, Di;
+    dhr_from_f32(&D, T);
+    return dhr_inv(&Di, &D) && dhr_max_abs(&Di) <= (double)FLT_MAX;
+}
+
+static void p_zero_magnitudes_sweep(void)
+{
+    double worst_proof = 0.0, worst_rel = 0.0, min_sing_cond = HUGE_VAL;
+    long n_ok = 0, n_sing = 0, n_ovf = 0;
+    int it;
+    for (it = 0; it < DHT_ITER(20000); it++) {
+        dh_mat4_f32 T, X, S;
+        dhr_mat4 D, Di;
+        dh_status st;
+        const int top = (int)(dht_rand_u32() % 200u) - 100;
+        const int spread = (int)(dht_rand_u32() % 90u);
+        const unsigned kind = dht_rand_u32() % 4u;
+        int r, c, sc, in_range = 1;
+        for (r = 0; r < 4; r++)
+            for (c = 0; c < 4; c++) {
+                const double f = dht_rand_uniform(0.0, 1.0) * dht_rand_uniform(0.0, 1.0);
+                DH_M4(&T, r, c) = rand_at(top - (int)(f * spread));
+            }
+        for (r = 0; r < 3; r++) {
+            if (kind != 3u) DH_M4(&T, r, 3) = 0.0f;  /* p = 0 */
+            if (kind == 0u || kind == 3u) DH_M4(&T, 3, r) = 0.0f; /* q = 0 */
+        }
+        if (kind == 1u) DH_M4(&T, 3, 3) = 1.0f;
+        memset(&S, 0x5a, sizeof S);
+        X = S;
+        st = dh_mat4_inv_f32(&X, &T);
+        for (sc = -20; sc <= 20; sc += 40) {
+            dh_mat4_f32 U, Y;
+            for (r = 0; r < 4; r++)
+                for (c = 0; c < 4; c++) {
+                    const float v = T.m[r][c];
+                    U.m[r][c] = ldexpf(v, sc);
+                    if (v != 0.0f && !(fabsf(v) >= 0x1p-105f && fabsf(v) <= 0x1p107f)) in_range = 0;
+                }
+            if (in_range && fits(&T) && fits(&U)) DHT_EQ_INT(dh_mat4_inv_f32(&Y, &U), st);
+        }
+        dhr_from_f32(&D, &T);
+        if (!dhr_inv(&Di, &D)) {
+            DHT_EQ_INT(st, DH_ERR_SINGULAR);
+            n_sing++;
+            continue;
+        }
+        if (st == DH_OK) {
+            inv_check k;
+            DHT_TRUE(check_inverse(&T, &X, &k));
+            DHT_TRUE_MSG(k.proof < 1.0, "DH_OK without proof: residual %.3g (it %d)", k.proof, it);
+            DHT_TRUE_MSG(k.rel <= 6.5 * k.cond * U24, "error %.3g cond %.3g (it %d)", k.rel, k.cond, it);
+            worst_proof = fmax(worst_proof, k.proof);
+            worst_rel = fmax(worst_rel, k.rel / (k.cond * U24));
+            n_ok++;
+        } else {
+            DHT_TRUE(memcmp(&X, &S, sizeof X) == 0);
+            if (st == DH_ERR_OVERFLOW) {
+                n_ovf++;
+            } else {
+                inv_check k;
+                DHT_EQ_INT(st, DH_ERR_SINGULAR);
+                DHT_TRUE(check_inverse(&T, &S, &k));
+                min_sing_cond = fmin(min_sing_cond, k.cond);
+                n_sing++;
+            }
+        }
+    }
+    dht_printf("p = 0 or q = 0: %ld ok, %ld singular (smallest cond %.3g), %ld overflow; right residual <= %.3g, "
+               "max|X - T^-1| / (max|T^-1| cond u) <= %.3g\n",
+               n_ok, n_sing, min_sing_cond, n_ovf, worst_proof, worst_rel);
+    DHT_TRUE(worst_proof <= 0.09);
+    DHT_TRUE(min_sing_cond >= 4.9e5);
+    DHT_TRUE(n_ok > DHT_ITER(20000) / 4);
+}
+
 static const dht_case cases[] = {
     DHT_CASE(proj_1e35_inverts_at_every_scale),
     DHT_CASE(affine_large_translation_inverts),
     DHT_CASE(nonfinite_elimination_is_singular),
     DHT_CASE(underflowing_inverse_reported),
     DHT_CASE(extreme_magnitudes_sweep),
+    DHT_CASE(persp_small_focal_every_scale),
+    DHT_CASE(p_zero_magnitudes_sweep),
 };
 DHT_MAIN(cases)

@@ -294,7 +294,12 @@ void dh_mat4_inv_rigid_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T);
  *       cond times the right one).
  * Norms: the 1-norm of the balanced D M D^-1, D = diag(1,1,1,sg),
  * sg = sqrt(|p|_1 / |q|_1) (p = column 3, q = bottom row, diagonal
- * excluded; 1 for affine M). Both tests are invariant under T -> 2^k T
+ * excluded; 1 for affine M); when q = 0 (p = 0 exactly) sg makes p (q)
+ * 2^-24 of the rows of R, so [R p; 0 w] and [R 0; q^T w] are judged like
+ * blockdiag(R, w): e.g. dh_mat4_persp_f32 with any focal distance down to
+ * 1e-12 inverts, exactly, at every scale (with p = 0 the bottom row of
+ * the inverse is exact by the elimination's structure; the proof (b)
+ * weights it by sg). Both tests are invariant under T -> 2^k T
  * (and the affine ones under R -> c R for any c); a rigid transform with
  * |p| = 1e6 is accepted like one with |p| = 1.
  *
