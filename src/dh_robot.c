@@ -17,6 +17,7 @@
 #define F32_MASK_NO (DH_ROBOT_F32_NO_JOINT | DH_ROBOT_F32_NO_BASE | DH_ROBOT_F32_NO_TOOL)
 #define Q_MASK_NO (DH_ROBOT_Q_NO_JOINT | DH_ROBOT_Q_NO_BASE | DH_ROBOT_Q_NO_TOOL)
 
+#if !DH_SMALL
 /* Recompute the summary bits from the reason bits. */
 static uint32_t summary(uint32_t f)
 {
@@ -25,6 +26,7 @@ static uint32_t summary(uint32_t f)
     if ((f & Q_MASK_NO) == 0u) f |= DH_ROBOT_HAS_Q;
     return f;
 }
+#endif
 
 /* NaN - NaN and Inf - Inf are NaN, which compares unequal to 0. */
 static int is_finite(float x)
@@ -114,21 +116,17 @@ static int32_t to_fix_sat(float x, unsigned frac)
  * dh_robot_q.c for the fixed half of every float setter. The float setter
  * validates everything first (r untouched on error), converts each constant
  * with to_fix (the same rounding as the default build, so the fixed copies
- * are bit-identical), lets dh_robot_add_joint_q / dh_robot_set_base_q /
- * dh_robot_set_tool_q store them, then stores the float half and corrects
- * the bits that describe the float path. dh_robot_init is the sequence of
- * setters that produce the empty description: DH_MAX_JOINTS zero joints
- * (n then reset to 0) and identity base and tool (set through the fixed
- * setters, which keeps its worst-case stack well below that of the float
- * frame setter); every field ends with the value the default build writes.
+ * are bit-identical), lets dh_robot_add_joint_q / dh_robot_frame_q_ (the
+ * shared body of dh_robot_set_base_q and dh_robot_set_tool_q) store them,
+ * then stores the float half and corrects the bits that describe the float
+ * path with dh_robot_flags_ (one copy of the summary rule for both objects,
+ * dh_robot_impl.h). dh_robot_init is the sequence of setters that produce
+ * the empty description: DH_MAX_JOINTS zero joints (n then reset to 0) and
+ * the identity given to the float frame setter for the base and the tool,
+ * starting from no flag at all; every field ends with the value the default
+ * build writes. Its worst-case stack is then that of the float frame setter
+ * plus its own frame (Cortex-M0+ -Os with libgcc: 244 bytes, under 256).
  */
-
-/* Flags after a float setter stored its frame or joint: clear, set, then
- * the summary bits (one copy of the sequence for both callers). */
-static void fix_flags(dh_robot *r, uint32_t clear, uint32_t set)
-{
-    r->flags = summary((r->flags & ~clear) | set);
-}
 
 /* which: 0 base, 1 tool; the tool's flag bits are the base's shifted by 1 */
 static dh_status set_frame_f32(dh_robot *r, const dh_mat4_f32 *src, unsigned which)
@@ -156,13 +154,12 @@ static dh_status set_frame_f32(dh_robot *r, const dh_mat4_f32 *src, unsigned whi
     *((which != 0u) ? &r->tool : &r->base) = *src;
     if (st == 0u) {
         /* fixed copy, its identity / small-rows bits; this marks the float
-         * frame stale, which fix_flags corrects */
-        if (which != 0u) (void)dh_robot_set_tool_q(r, &F);
-        else (void)dh_robot_set_base_q(r, &F);
+         * frame stale, which dh_robot_flags_ below corrects */
+        (void)dh_robot_frame_q_(r, &F, which);
     }
     /* an identity always fits: a frame that does not is no identity */
-    fix_flags(r, (DH_ROBOT_F32_NO_BASE | DH_ROBOT_BASE_ID_F32 | DH_ROBOT_Q_NO_BASE) << which,
-              ((st != 0u) ? DH_ROBOT_Q_NO_BASE : ((bad != 0u) ? 0u : DH_ROBOT_BASE_ID_F32)) << which);
+    dh_robot_flags_(r, (DH_ROBOT_F32_NO_BASE | DH_ROBOT_BASE_ID_F32 | DH_ROBOT_Q_NO_BASE) << which,
+                    ((st != 0u) ? DH_ROBOT_Q_NO_BASE : ((bad != 0u) ? 0u : DH_ROBOT_BASE_ID_F32)) << which);
     return DH_OK;
 }
 
@@ -182,18 +179,17 @@ dh_status dh_robot_init(dh_robot *r, dh_convention conv)
     if (conv != DH_CONV_STANDARD && conv != DH_CONV_MODIFIED) return DH_ERR_ARG;
     r->conv = conv;
     r->n = 0u;
-    /* the float frames are set to the identity below; recorded first so
-     * that the fixed setters keep the float path current */
-    r->flags = DH_ROBOT_BASE_ID_F32 | DH_ROBOT_TOOL_ID_F32;
+    r->flags = 0u; /* every bit is set by the setters below */
     /* every slot as an empty joint; the call after the last one fails */
     while (dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.0f, 0.0f) == DH_OK) {
     }
     r->n = 0u;
+    /* identity base, then the float setters copy it to the base (an exact
+     * overlap, read before it is stored) and the tool, with both fixed
+     * copies and every identity / small-rows / summary bit */
     dh_mat4_identity_f32(&r->base);
-    dh_mat4_identity_f32(&r->tool);
-    dh_frame_identity_q(&r->base_q);
-    (void)dh_robot_set_base_q(r, &r->base_q);
-    (void)dh_robot_set_tool_q(r, &r->base_q);
+    (void)set_frame_f32(r, &r->base, 0u);
+    (void)set_frame_f32(r, &r->base, 1u);
     return DH_OK;
 }
 
@@ -231,7 +227,7 @@ dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float a, float
     (void)dh_sincos_f32(v[2], &j->sa, &j->ca); /* finite input: cannot fail */
     /* dh_robot_add_joint_q marked the float path unavailable: undo that
      * unless an earlier joint was added with it (f: the flags before) */
-    fix_flags(r, DH_ROBOT_F32_NO_JOINT & ~f, (st != 0u) ? DH_ROBOT_Q_NO_JOINT : 0u);
+    dh_robot_flags_(r, DH_ROBOT_F32_NO_JOINT & ~f, (uint32_t)st * DH_ROBOT_Q_NO_JOINT); /* st 0 or 1 */
     return DH_OK;
 }
 

@@ -9,4 +9,18 @@
  * defined in dh_robot_q.c and shared by the float setters of dh_robot.c. */
 int dh_robot_rows_small_q_(const dh_frame_q *F);
 
+#if DH_SMALL
+#include "dhmath/dh_robot.h"
+
+/* Size-first build only: r->flags = summary((r->flags & ~clear) | set), the
+ * reason bits changed and the public summary bits DH_ROBOT_HAS_F32 /
+ * DH_ROBOT_HAS_Q recomputed from them. Integer only, defined once in
+ * dh_robot_q.c for the fixed and the float setters. */
+void dh_robot_flags_(dh_robot *r, uint32_t clear, uint32_t set);
+
+/* Size-first build only: dh_robot_set_base_q (which 0) and
+ * dh_robot_set_tool_q (which 1) in one function, for the float setters. */
+dh_status dh_robot_frame_q_(dh_robot *r, const dh_frame_q *src, unsigned which);
+#endif
+
 #endif

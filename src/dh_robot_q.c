@@ -10,6 +10,18 @@
 #define F32_MASK_NO (DH_ROBOT_F32_NO_JOINT | DH_ROBOT_F32_NO_BASE | DH_ROBOT_F32_NO_TOOL)
 #define Q_MASK_NO (DH_ROBOT_Q_NO_JOINT | DH_ROBOT_Q_NO_BASE | DH_ROBOT_Q_NO_TOOL)
 
+#if DH_SMALL
+/* r->flags with the reason bits clear cleared and set set, then the summary
+ * bits recomputed from them (same rule as summary() of the default build);
+ * one copy for the fixed and the float setters (dh_robot_impl.h). */
+void dh_robot_flags_(dh_robot *r, uint32_t clear, uint32_t set)
+{
+    uint32_t f = ((r->flags & ~clear) | set) & ~(DH_ROBOT_HAS_F32 | DH_ROBOT_HAS_Q);
+    if ((f & F32_MASK_NO) == 0u) f |= DH_ROBOT_HAS_F32;
+    if ((f & Q_MASK_NO) == 0u) f |= DH_ROBOT_HAS_Q;
+    r->flags = f;
+}
+#else
 /* Recompute the summary bits from the reason bits (same rule as dh_robot.c). */
 static uint32_t summary(uint32_t f)
 {
@@ -18,6 +30,7 @@ static uint32_t summary(uint32_t f)
     if ((f & Q_MASK_NO) == 0u) f |= DH_ROBOT_HAS_Q;
     return f;
 }
+#endif
 
 
 /* 1 when every row of the rotation part has Euclidean norm <= 1.5
@@ -58,7 +71,11 @@ dh_status dh_robot_add_joint_q(dh_robot *r, dh_joint_type type, dh_qpos a, dh_qp
     j->qmin_q = 1;
     j->qmax_q = -1;
     r->n++;
+#if DH_SMALL
+    dh_robot_flags_(r, 0u, DH_ROBOT_F32_NO_JOINT);
+#else
     r->flags = summary(r->flags | DH_ROBOT_F32_NO_JOINT);
+#endif
     return DH_OK;
 }
 
@@ -85,20 +102,21 @@ dh_status dh_robot_check_limits_q(const dh_robot *r, const int32_t *q)
 }
 
 #if DH_SMALL
-/* Size-first build: base and tool share one setter. which: 0 base, 1 tool;
+/* Size-first build: base and tool share one setter (also called by the
+ * float setters of dh_robot.c, dh_robot_impl.h). which: 0 base, 1 tool;
  * the tool's flag bits are the base's shifted left by 1 (the small-rows
  * bit exists for the base only). Same stores and flags as the default. */
-static dh_status set_frame_q(dh_robot *r, const dh_frame_q *src, unsigned which)
+dh_status dh_robot_frame_q_(dh_robot *r, const dh_frame_q *src, unsigned which)
 {
     dh_frame_q *dst;
-    uint32_t f;
+    uint32_t clear = DH_ROBOT_Q_NO_BASE | DH_ROBOT_BASE_ID_Q | DH_ROBOT_F32_NO_BASE;
+    uint32_t set = 0u;
     int c, k, ident = 1;
     DH_ASSERT(r != NULL);
     DH_ASSERT(src != NULL);
-    f = r->flags & ~((DH_ROBOT_Q_NO_BASE | DH_ROBOT_BASE_ID_Q | DH_ROBOT_F32_NO_BASE) << which);
     if (which == 0u) {
-        f &= ~DH_ROBOT_BASE_SMALL_Q;
-        if (dh_robot_rows_small_q_(src)) f |= DH_ROBOT_BASE_SMALL_Q;
+        clear |= DH_ROBOT_BASE_SMALL_Q;
+        if (dh_robot_rows_small_q_(src)) set = DH_ROBOT_BASE_SMALL_Q;
     }
     /* copy column by column (src may be dst itself; columns 0..2 rotation,
      * 3 position) and test for the identity on the way */
@@ -111,21 +129,21 @@ static dh_status set_frame_q(dh_robot *r, const dh_frame_q *src, unsigned which)
             d[k] = s[k];
         }
     }
-    if (ident) f |= DH_ROBOT_BASE_ID_Q << which;
+    if (ident) set |= DH_ROBOT_BASE_ID_Q;
     /* identity on both paths: the float frame is still current */
-    if (!ident || (f & (DH_ROBOT_BASE_ID_F32 << which)) == 0u) f |= DH_ROBOT_F32_NO_BASE << which;
-    r->flags = summary(f);
+    if (!ident || (r->flags & (DH_ROBOT_BASE_ID_F32 << which)) == 0u) set |= DH_ROBOT_F32_NO_BASE;
+    dh_robot_flags_(r, clear << which, set << which);
     return DH_OK;
 }
 
 dh_status dh_robot_set_base_q(dh_robot *r, const dh_frame_q *base)
 {
-    return set_frame_q(r, base, 0u);
+    return dh_robot_frame_q_(r, base, 0u);
 }
 
 dh_status dh_robot_set_tool_q(dh_robot *r, const dh_frame_q *tool)
 {
-    return set_frame_q(r, tool, 1u);
+    return dh_robot_frame_q_(r, tool, 1u);
 }
 
 #else /* !DH_SMALL */

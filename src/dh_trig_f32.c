@@ -21,7 +21,9 @@
  *     with d = 90 - r (in -89..90): sin(r) = T[90 - |d|],
  *     cos(r) = sign(d) T[|d|]. The table values are read as bit patterns
  *     and the signs applied with XOR (no branch, no multiply): S = +-sin i,
- *     C = +-cos i exactly.
+ *     C = +-cos i exactly. (DH_SMALL: the same floats converted from the
+ *     Q2.30 table, so that the float table is not linked; see
+ *     dh_trig_tab_f32.)
  *  3. sin = S + (S (cos f - 1) + C sin f), cos = C + (C (cos f - 1) - S sin f)
  *     with sin f = A1 f + A3 f^3 and cos f - 1 = B2 f^2 (f in degrees,
  *     t = f pi/180, |t| <= 0.00873 rad: the omitted terms are
@@ -130,9 +132,47 @@ static float dh_trig_big_deg(uint32_t mag)
 }
 #endif /* DH_SMALL */
 
+#if DH_SMALL
+/*
+ * (-1)^neg sin(n deg) for n = 0..90 as the correctly rounded float of the
+ * default build's table dh_trig_sin_f32, taken from the Q2.30 table instead
+ * (the float table is then not linked: 364 bytes). The conversion of the
+ * int32 rounds to nearest even and the scaling by 2^-30 is exact, so the
+ * result is the float nearest to the Q2.30 entry. That is the correctly
+ * rounded sine except where the entry lies exactly halfway between two
+ * floats: n = 1 (entry 0x011DF0B3, 25 bits, rounded up from the true value,
+ * which the float must round down: entry - 1 converts exactly to it) and
+ * n = 19 (0x14D61BD0, 29 bits, rounded down, the float rounds up: entry + 1
+ * breaks the tie upwards). Checked for all 91 entries with exact rational
+ * arithmetic, and the whole function bit for bit against the default build
+ * for every float input. Only the bit 0 of neg is used; the negation is
+ * exact (|v| <= 2^30). A zero entry comes out +0 where the default build
+ * has -0 (sin 180, cos 90 + 180 h); the result is the same: step 4 above
+ * shows that every exact zero result is +0 whatever the zero's sign, and a
+ * nonzero correction is not affected by it.
+ */
+static float dh_trig_tab_f32(uint32_t n, uint32_t neg)
+{
+    int32_t v = dh_trig_sin_q30[n];
+    if (n == 1u) {
+        v--;
+    } else if (n == 19u) {
+        v++;
+    }
+    if (neg & 1u) {
+        v = -v;
+    }
+    return (float)v * 0x1p-30f;
+}
+#endif
+
 dh_status dh_sincos_f32(float deg, float *s, float *c)
 {
+#if DH_SMALL
+    uint32_t bits, mag, i, h, r, du, neg, ad, sb;
+#else
     uint32_t bits, mag, i, h, r, du, neg, ad, hs, sb, cb;
+#endif
     float a, sum, f, f2, sf, cm, s0, c0, ss;
 
     DH_ASSERT(s != NULL);
@@ -163,6 +203,10 @@ dh_status dh_sincos_f32(float deg, float *s, float *c)
     du = 90u - r;
     neg = 0u - (du >> 31);
     ad = (du ^ neg) - neg;                     /* |d|, 0..90 */
+#if DH_SMALL
+    s0 = dh_trig_tab_f32(90u - ad, h);         /* (-1)^h T[90 - |d|] */
+    c0 = dh_trig_tab_f32(ad, h ^ (du >> 31));  /* (-1)^h sign(d) T[|d|] */
+#else
     hs = h << 31;                              /* sign bit of (-1)^h */
     memcpy(&sb, &dh_trig_sin_f32[90u - ad], sizeof sb);
     memcpy(&cb, &dh_trig_sin_f32[ad], sizeof cb);
@@ -170,6 +214,7 @@ dh_status dh_sincos_f32(float deg, float *s, float *c)
     cb ^= (du ^ hs) & 0x80000000u;
     memcpy(&s0, &sb, sizeof s0);
     memcpy(&c0, &cb, sizeof c0);
+#endif
 
     f2 = f * f;
     sf = f * (DH_TRIG_A1 + f2 * DH_TRIG_A3);   /* sin f */

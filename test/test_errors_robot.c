@@ -548,6 +548,47 @@ static void robot_init_every_field(void)
     check_empty(&r, DH_CONV_MODIFIED);
 }
 
+/* init after every reason bit was set and every identity / small-rows bit
+ * cleared: the exact flag word before (the rules of dh_robot.h), then an
+ * empty description again (the DH_SMALL init builds every flag from the
+ * setters, starting from none) */
+static void robot_init_after_every_reason(void)
+{
+    dh_robot r;
+    dh_mat4_f32 B;
+    dh_frame_q F;
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 1, 2, 3, 4), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 1e30f, 0.0f, 0.0f, 0.0f), DH_OK);
+    /* fixed base with rows far above norm 1.5 (the float base, still the
+     * identity, is stale), then a float base that does not fit: the fixed
+     * copy stays, its bits stay cleared */
+    dh_frame_identity_q(&F);
+    F.r[0][0] = INT32_MAX;
+    F.r[1][0] = INT32_MIN;
+    DHT_EQ_INT(dh_robot_set_base_q(&r, &F), DH_OK);
+    DHT_EQ_INT(r.flags, DH_ROBOT_F32_NO_JOINT | DH_ROBOT_Q_NO_JOINT | DH_ROBOT_F32_NO_BASE |
+                            DH_ROBOT_BASE_ID_F32 | DH_ROBOT_TOOL_ID_F32 | DH_ROBOT_TOOL_ID_Q);
+    dh_mat4_trans_f32(&B, 0.0f, 1e30f, 0.0f);
+    DHT_EQ_INT(dh_robot_set_base_f32(&r, &B), DH_OK);
+    DHT_EQ_INT(r.base_q.r[0][0], INT32_MAX);
+    DHT_EQ_INT(r.base_q.r[1][0], INT32_MIN);
+    /* a fixed tool that is no identity: the float tool (still the
+     * identity) is stale */
+    dh_frame_trans_q(&F, 0, 0, 1);
+    DHT_EQ_INT(dh_robot_set_tool_q(&r, &F), DH_OK);
+    DHT_EQ_INT(r.flags, DH_ROBOT_F32_NO_JOINT | DH_ROBOT_Q_NO_JOINT | DH_ROBOT_Q_NO_BASE |
+                            DH_ROBOT_F32_NO_TOOL | DH_ROBOT_TOOL_ID_F32);
+    /* a float tool that does not fit: both tool reasons swap */
+    dh_mat4_trans_f32(&B, -1e30f, 0.0f, 0.0f);
+    DHT_EQ_INT(dh_robot_set_tool_f32(&r, &B), DH_OK);
+    DHT_EQ_INT(r.flags, DH_ROBOT_F32_NO_JOINT | DH_ROBOT_Q_NO_JOINT | DH_ROBOT_Q_NO_BASE |
+                            DH_ROBOT_Q_NO_TOOL);
+    DHT_EQ_INT(r.tool_q.p[2], 1);
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_MODIFIED), DH_OK);
+    check_empty(&r, DH_CONV_MODIFIED);
+}
+
 /* The fixed-point copies made by the float setters: nearest, ties away from
  * zero, the ends of the Q ranges exact (-2^31 fits, the largest float below
  * the upper end fits), sin/cos of alpha exact at quarter turns. */
@@ -719,6 +760,7 @@ static const dht_case cases[] = {
     DHT_CASE(robot_fk_q_bad),
     DHT_CASE(robot_n_beyond_capacity),
     DHT_CASE(robot_init_every_field),
+    DHT_CASE(robot_init_after_every_reason),
     DHT_CASE(robot_fixed_copies_rounding),
     DHT_CASE(robot_frame_nan_before_not_rigid),
     DHT_CASE(robot_flag_bookkeeping),

@@ -278,6 +278,39 @@ static void whole_degrees(void)
     }
 }
 
+/* The whole degrees whose table entry, sin 1 or sin 19, lies exactly
+ * halfway between two floats in its Q2.30 rounding (0x011DF0B3 and
+ * 0x14D61BD0, the only two of the 91): the DH_SMALL build takes the float
+ * table from the Q2.30 one and breaks these ties towards the correctly
+ * rounded sine, so they are pinned here with their bits (not through libm):
+ * sin 1 = 0x1.1df0b2p-6, sin 19 = 0x1.4d61bep-2, in every quadrant and for
+ * both signs, through the sine and through the cosine. */
+static void table_tie_entries(void)
+{
+    static const float t[2] = { 0x1.1df0b2p-6f, 0x1.4d61bep-2f };
+    static const int deg[2] = { 1, 19 };
+    int e, k;
+    for (e = 0; e < 2; e++) {
+        for (k = -4; k < 4; k++) {
+            /* x = 180 k + n and 180 k + 180 - n: sin = (-1)^k T;
+             * x = 90 + 180 k - n and 90 + 180 k + n: cos = -+(-1)^k T */
+            const float sg = (k & 1) ? -1.0f : 1.0f;
+            const int n = deg[e];
+            float s, c;
+            DHT_EQ_INT(dh_sincos_f32((float)(180 * k + n), &s, &c), DH_OK);
+            DHT_EQ_F32_BITS(s, sg * t[e]);
+            DHT_EQ_INT(dh_sincos_f32((float)(180 * k + 180 - n), &s, &c), DH_OK);
+            DHT_EQ_F32_BITS(s, sg * t[e]);
+            DHT_EQ_INT(dh_sincos_f32((float)(90 + 180 * k - n), &s, &c), DH_OK);
+            DHT_EQ_F32_BITS(c, sg * t[e]);
+            DHT_EQ_INT(dh_sincos_f32((float)(90 + 180 * k + n), &s, &c), DH_OK);
+            DHT_EQ_F32_BITS(c, -sg * t[e]);
+            DHT_EQ_F32_BITS(dh_sin_f32((float)(-n - 360 * k)), -t[e]);
+            DHT_EQ_F32_BITS(dh_cos_f32((float)(90 - n + 360 * k)), t[e]);
+        }
+    }
+}
+
 /* sin(-x) == -sin(x) and cos(-x) == cos(x) bit for bit; single-output
  * variants agree with dh_sincos_f32. */
 static void symmetry_and_variants(void)
@@ -353,6 +386,7 @@ static void nan_and_inf(void)
 
 static const dht_case cases[] = {
     DHT_CASE(whole_degrees),
+    DHT_CASE(table_tie_entries),
     DHT_CASE(dense_sweep_0001_deg),
     DHT_CASE(every_float_in_first_turn),
     DHT_CASE(small_angles),
