@@ -31,8 +31,10 @@
 /* finite (not NaN, not +-Inf): a NaN fails the comparison */
 static int dh_finite(float x) { return fabsf(x) <= FLT_MAX; }
 
+#if !DH_SMALL
 /* +0 for either zero, x otherwise (exact) */
 static float dh_nz(float x) { return (x == 0.0f) ? 0.0f : x; }
+#endif
 
 static void dh_set_identity(dh_mat4_f32 *T)
 {
@@ -70,8 +72,14 @@ static dh_status dh_sc(float deg, float *s, float *c)
     float sv, cv;
     dh_status st = dh_sincos_f32(deg, &sv, &cv);
     if (st != DH_OK) return DH_ERR_NAN;
+#if DH_SMALL
+    /* x + 0 is dh_nz(x) below: -0 + +0 = +0, anything else unchanged */
+    *s = sv + 0.0f;
+    *c = cv + 0.0f;
+#else
     *s = dh_nz(sv);
     *c = dh_nz(cv);
+#endif
     return DH_OK;
 }
 
@@ -579,14 +587,15 @@ dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, 
     }
     if (z != z) return (dh_mat4_isfinite_f32(T) && zi == zi) ? DH_ERR_OVERFLOW : DH_ERR_NAN;
     if (h[3] == 0.0f) return DH_ERR_DOMAIN;
+    /* x + 0 is dh_nz(x): -0 + +0 = +0, anything else unchanged */
     for (i = 0; i < 3; i++) {
-        h[i] /= h[3];
+        h[i] = h[i] / h[3] + 0.0f;
         z += h[i] * 0.0f;
     }
     if (z != z) return DH_ERR_OVERFLOW;
-    v->x = dh_nz(h[0]);
-    v->y = dh_nz(h[1]);
-    v->z = dh_nz(h[2]);
+    v->x = h[0];
+    v->y = h[1];
+    v->z = h[2];
     return DH_OK;
 }
 

@@ -739,6 +739,54 @@ static void mat4_shared_path_edges(void)
     }
 }
 
+/*
+ * Zero results are +0 (DH_SMALL forms them as x + 0 instead of the
+ * default's x == 0 ? 0 : x, which must give the same bits): a homogeneous
+ * point whose quotient is -0 (-0 / 1 and +0 / -1), and rotations at
+ * angles whose sine or cosine is a signed zero.
+ */
+static void mat4_signed_zeros(void)
+{
+    static const float degs[] = {0.0f, -0.0f, 90.0f, -90.0f, 180.0f, -180.0f, 270.0f, -270.0f, 360.0f, -360.0f, 720.0f};
+    dh_mat4_f32 T;
+    dh_vec4_f32 u;
+    dh_vec3_f32 v;
+    int i, c, r, ax;
+    dh_mat4_trans_f32(&T, -0.0f, -0.0f, -0.0f);
+    u.x = -0.0f; u.y = -0.0f; u.z = -0.0f; u.w = 1.0f;
+    DHT_EQ_INT(dh_mat4_apply_point_h_f32(&T, &u, &v), DH_OK);
+    DHT_EQ_F32_BITS(v.x, 0.0f);
+    DHT_EQ_F32_BITS(v.y, 0.0f);
+    DHT_EQ_F32_BITS(v.z, 0.0f);
+    dh_mat4_identity_f32(&T);
+    u.x = 0.0f; u.y = 0.0f; u.z = 0.0f; u.w = -1.0f;
+    DHT_EQ_INT(dh_mat4_apply_point_h_f32(&T, &u, &v), DH_OK);
+    DHT_EQ_F32_BITS(v.x, 0.0f);
+    DHT_EQ_F32_BITS(v.y, 0.0f);
+    DHT_EQ_F32_BITS(v.z, 0.0f);
+    u.x = -2.0f; u.y = 0.0f; u.z = 4.0f; u.w = -2.0f;
+    DHT_EQ_INT(dh_mat4_apply_point_h_f32(&T, &u, &v), DH_OK);
+    DHT_EQ_F32_BITS(v.x, 1.0f);
+    DHT_EQ_F32_BITS(v.y, 0.0f);
+    DHT_EQ_F32_BITS(v.z, -2.0f);
+    for (i = 0; i < (int)(sizeof degs / sizeof degs[0]); i++) {
+        for (ax = 0; ax < 4; ax++) {
+            dh_status st;
+            if (ax == 0) st = dh_mat4_rotx_f32(&T, degs[i]);
+            else if (ax == 1) st = dh_mat4_roty_f32(&T, degs[i]);
+            else if (ax == 2) st = dh_mat4_rotz_f32(&T, degs[i]);
+            else st = dh_mat4_rot_axis_f32(&T, -1.0f, 0.0f, -0.0f, degs[i]);
+            DHT_EQ_INT(st, DH_OK);
+            for (c = 0; c < 4; c++)
+                for (r = 0; r < 4; r++) {
+                    DHT_TRUE_MSG(!(T.m[c][r] == 0.0f && signbit(T.m[c][r])), "-0 at %d %d (axis %d, %g deg)", c, r, ax,
+                                 (double)degs[i]);
+                    DHT_TRUE(T.m[c][r] == 0.0f || fabsf(T.m[c][r]) == 1.0f);
+                }
+        }
+    }
+}
+
 static const dht_case cases[] = {
     DHT_CASE(mat4_rot_nan_inf_huge),
     DHT_CASE(mat4_rot_axis_bad),
@@ -751,5 +799,6 @@ static const dht_case cases[] = {
     DHT_CASE(mat4_apply_plane_bad),
     DHT_CASE(mat4_no_status_ieee_and_alias),
     DHT_CASE(mat4_shared_path_edges),
+    DHT_CASE(mat4_signed_zeros),
 };
 DHT_MAIN(cases)
