@@ -156,6 +156,29 @@ static DH_NOINLINE float dh_affine_prescale(const dh_mat4_f32 *T);
  * rejected (test_mat4_inv_regress, p_zero_magnitudes_sweep, 400 seeds).
  */
 #if !DH_SMALL
+/*
+ * sg for |p|_1 / 4 == 0: 1 unless p is exactly 0 (not only below 2^-148),
+ * else the mirror of the q = 0 rule below, q sg 2^-24 of the rows of R
+ * (see "p = 0" above), clamped like the others. Out of line: no extra
+ * registers in dh_inv_certified's frame (M0+ stack guard).
+ */
+static DH_NOINLINE float dh_balance_p0(const dh_mat4_f32 *M)
+{
+    /* |q| / 4 and the largest row sum of |R| / 4 as in dh_balance */
+    const float rq = fabsf(M->m[0][3] * 0.25f) + fabsf(M->m[1][3] * 0.25f) + fabsf(M->m[2][3] * 0.25f);
+    float m3 = 0.0f, sg;
+    int i;
+    for (i = 0; i < 3; i++) {
+        const float rs = fabsf(M->m[i][0] * 0.25f) + fabsf(M->m[i][1] * 0.25f) + fabsf(M->m[i][2] * 0.25f);
+        m3 = (rs > m3) ? rs : m3;
+    }
+    if (!(M->m[3][0] == 0.0f && M->m[3][1] == 0.0f && M->m[3][2] == 0.0f && rq > 0.0f && m3 > 0.0f)) return 1.0f;
+    sg = m3 / rq * DH_U24;
+    if (sg > 1.15292150e18f) sg = 1.15292150e18f;       /* 2^60 */
+    if (sg < 8.67361738e-19f) sg = 8.67361738e-19f;     /* 2^-60 */
+    return sg;
+}
+
 static float dh_balance(const dh_mat4_f32 *M)
 {
     /* the sums are of |M_ij| / 4, so that three entries near FLT_MAX do not
@@ -170,13 +193,8 @@ static float dh_balance(const dh_mat4_f32 *M)
         const float rs = fabsf(M->m[i][0] * 0.25f) + fabsf(M->m[i][1] * 0.25f) + fabsf(M->m[i][2] * 0.25f);
         m3 = (rs > m3) ? rs : m3;
     }
-    if (cp == 0.0f) {
-        /* p exactly 0 (not only below 2^-148): the mirror of the q = 0
-         * rule below, q sg 2^-24 of the rows of R (see "p = 0" above) */
-        const float pn = fabsf(M->m[3][0]) + fabsf(M->m[3][1]) + fabsf(M->m[3][2]);
-        if (!(pn == 0.0f && rq > 0.0f && m3 > 0.0f)) return 1.0f;
-        sg = m3 / rq * DH_U24;
-    } else if (rq > 0.0f) sg = DH_SQRTF(cp) / DH_SQRTF(rq);
+    if (cp == 0.0f) return dh_balance_p0(M);
+    if (rq > 0.0f) sg = DH_SQRTF(cp) / DH_SQRTF(rq);
     else sg = (m3 > 0.0f) ? cp / m3 * 16777216.0f : 1.0f;
     /* keep sg * (anything O(1..2^60)) finite */
     if (sg > 1.15292150e18f) sg = 1.15292150e18f;       /* 2^60 */
