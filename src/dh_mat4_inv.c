@@ -981,6 +981,24 @@ dh_status dh_mat4_check_rigid_f32(const dh_mat4_f32 *T, float tol)
 }
 #endif
 
+/*
+ * 1 iff the translation of the closed-form rigid inverse of T, -(R^T p),
+ * is finite (the same products and sums as dh_mat4_inv_rigid_f32). A
+ * rigid T with |p| near FLT_MAX can have an inverse translation beyond
+ * FLT_MAX: the automatic inverse and the plane transform then report
+ * DH_ERR_OVERFLOW like dh_mat4_inv_f32 instead of returning an Inf.
+ */
+static DH_NOINLINE int dh_rigid_t_ok(const dh_mat4_f32 *T)
+{
+    float z = 0.0f;
+    int j;
+    for (j = 0; j < 3; j++) {
+        const float t = T->m[3][0] * T->m[j][0] + T->m[3][1] * T->m[j][1] + T->m[3][2] * T->m[j][2];
+        z += t - t;   /* NaN iff t is Inf or NaN */
+    }
+    return z == 0.0f;
+}
+
 dh_status dh_mat4_inv_auto_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
 #if DH_SMALL
@@ -990,6 +1008,7 @@ dh_status dh_mat4_inv_auto_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
     DH_ASSERT(out != NULL && T != NULL);
     st = dh_mat4_check_rigid_f32(T, DH_MAT4_RIGID_TOL);
     if (st == DH_OK) {
+        if (!dh_rigid_t_ok(T)) return DH_ERR_OVERFLOW;
         dh_mat4_inv_rigid_f32(out, T);
         return DH_OK;
     }
@@ -1021,9 +1040,17 @@ dh_status dh_mat4_apply_plane_f32(const dh_mat4_f32 *T, const dh_plane_f32 *P, d
 #else
     if (!(dh_finite(P->a) && dh_finite(P->b) && dh_finite(P->c) && dh_finite(P->d))) return DH_ERR_NAN;
 #endif
+#if DH_SMALL
+    /* the certified inverse for every T (no rigidity test): same statuses
+     * as the default build's rigid/general choice, values within the
+     * general inverse's bound */
+    st = dh_inv_into(&X, T);
+    if (st != DH_OK) return st;
+#else
     /* the inverse as dh_mat4_inv_auto_f32 takes it, into X */
     st = dh_mat4_check_rigid_f32(T, DH_MAT4_RIGID_TOL);
     if (st == DH_OK) {
+        if (!dh_rigid_t_ok(T)) return DH_ERR_OVERFLOW;
         dh_mat4_inv_rigid_f32(&X, T);
     } else if (st == DH_ERR_NAN) {
         return DH_ERR_NAN;
@@ -1031,6 +1058,7 @@ dh_status dh_mat4_apply_plane_f32(const dh_mat4_f32 *T, const dh_plane_f32 *P, d
         st = dh_inv_into(&X, T);
         if (st != DH_OK) return st;
     }
+#endif
     dh_plane_mul_f32(P, &X, Q);
     return DH_OK;
 }

@@ -473,6 +473,42 @@ static void p_zero_magnitudes_sweep(void)
     DHT_TRUE(n_ok > DHT_ITER(20000) / 4);
 }
 
+
+/*
+ * Regression: a rigid T whose inverse translation -(R^T p) exceeds
+ * FLT_MAX (|p| near FLT_MAX, R a 45-degree turn about z) was returned by
+ * dh_mat4_inv_auto_f32 and used by dh_mat4_apply_plane_f32 with an Inf in
+ * it and DH_OK, while the contract is "as dh_mat4_inv_f32": DH_ERR_OVERFLOW
+ * with the output untouched. Both builds (default: rigid closed form;
+ * DH_SMALL: the certified inverse for the plane).
+ */
+static void rigid_overflowing_translation_reported(void)
+{
+    dh_mat4_f32 T, out, ref;
+    dh_plane_f32 P = {1.0f, 2.0f, 3.0f, 4.0f}, Q, Qref;
+    const float big = 0.9f * FLT_MAX;
+    DHT_EQ_INT(dh_mat4_rotz_f32(&T, 45.0f), DH_OK);
+    T.m[3][0] = big;   /* p = (big, big, 0): |R^T p|_x = big sqrt(2) */
+    T.m[3][1] = big;
+    DHT_EQ_INT(dh_mat4_check_rigid_f32(&T, DH_MAT4_RIGID_TOL), DH_OK);
+    DHT_EQ_INT(dh_mat4_inv_f32(&out, &T), DH_ERR_OVERFLOW);
+    memset(&out, 0x5A, sizeof out);
+    ref = out;
+    DHT_EQ_INT(dh_mat4_inv_auto_f32(&out, &T), DH_ERR_OVERFLOW);
+    DHT_TRUE(memcmp(&out, &ref, sizeof out) == 0);
+    memset(&Q, 0x5A, sizeof Q);
+    Qref = Q;
+    DHT_EQ_INT(dh_mat4_apply_plane_f32(&T, &P, &Q), DH_ERR_OVERFLOW);
+    DHT_TRUE(memcmp(&Q, &Qref, sizeof Q) == 0);
+    /* a quarter of that translation fits: DH_OK and finite results */
+    T.m[3][0] = 0.25f * big;
+    T.m[3][1] = 0.25f * big;
+    DHT_EQ_INT(dh_mat4_inv_auto_f32(&out, &T), DH_OK);
+    DHT_TRUE(fabsf(out.m[3][0]) <= FLT_MAX && fabsf(out.m[3][1]) <= FLT_MAX);
+    DHT_EQ_INT(dh_mat4_apply_plane_f32(&T, &P, &Q), DH_OK);
+    DHT_TRUE(fabsf(Q.d) <= FLT_MAX);
+}
+
 static const dht_case cases[] = {
     DHT_CASE(proj_1e35_inverts_at_every_scale),
     DHT_CASE(affine_large_translation_inverts),
@@ -481,5 +517,6 @@ static const dht_case cases[] = {
     DHT_CASE(extreme_magnitudes_sweep),
     DHT_CASE(persp_small_focal_every_scale),
     DHT_CASE(p_zero_magnitudes_sweep),
+    DHT_CASE(rigid_overflowing_translation_reported),
 };
 DHT_MAIN(cases)
