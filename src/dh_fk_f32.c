@@ -82,7 +82,7 @@ static int is_finite(float x)
 #define FK_NOINLINE
 #endif
 
-static FK_NOINLINE void set_bottom(dh_mat4_f32 *T)
+static void set_bottom(dh_mat4_f32 *T)
 {
     T->m[0][3] = 0.0f;
     T->m[1][3] = 0.0f;
@@ -146,16 +146,16 @@ static FK_NOINLINE void copy(dh_mat4_f32 *dst, const dh_mat4_f32 *src)
     if (dst != src) *dst = *src;
 }
 
-/* 1 when T is finite (its bottom row is 0 0 0 1 here, so that is its
- * 3x4 part): x - x is 0 for a finite x and NaN otherwise, and a NaN stays
- * in the sum. */
-static FK_NOINLINE int frame_finite(const dh_mat4_f32 *T)
+/* DH_OK when T is finite (its bottom row is 0 0 0 1 here, so that is its
+ * 3x4 part), else DH_ERR_OVERFLOW: x - x is 0 for a finite x and NaN
+ * otherwise, and a NaN stays in the sum. */
+static FK_NOINLINE dh_status frame_finite(const dh_mat4_f32 *T)
 {
     float z = 0.0f;
     int c, k;
     for (c = 0; c < 4; c++)
         for (k = 0; k < 4; k++) z += T->m[c][k] - T->m[c][k];
-    return z == 0.0f;
+    return (z == 0.0f) ? DH_OK : DH_ERR_OVERFLOW;
 }
 
 dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
@@ -185,7 +185,7 @@ static dh_status finish(const dh_robot *r, const dh_mat4_f32 *last, dh_mat4_f32 
         else dh_mat4_mul_affine_f32(T_end, last, &r->tool);
         last = T_end;
     }
-    return frame_finite(last) ? DH_OK : DH_ERR_OVERFLOW;
+    return frame_finite(last);
 }
 
 /*

@@ -251,19 +251,27 @@ static FKQ_NOINLINE int step(dh_frame_q *T, const dh_robot *r, uint32_t i, int32
     const dh_joint *j = &r->joint[i];
     const unsigned mod = r->conv != DH_CONV_STANDARD;
     dh_q30 v[4]; /* sin theta, cos theta, sin alpha, cos alpha */
-    int64_t t = j->theta_q;
+    const uint32_t th = (uint32_t)j->theta_q;
+    uint32_t qt = 0u, t;
     const int32_t a = len(j->a_q);
     int32_t d, qd = 0;
     int ovf = 0, k;
-    if (j->type == DH_JOINT_REVOLUTE) t += q;
+    if (j->type == DH_JOINT_REVOLUTE) qt = (uint32_t)q;
     else qd = q;
-    if (t > INT32_MAX) t -= TURNS_182;
-    else if (t < INT32_MIN) t += TURNS_182;
+    /* theta + q brought back into int32 by 182 turns (TURNS_182 = 2^32 -
+     * 2^20), in 32 bits: t = theta + q modulo 2^32; when the sum leaves
+     * int32 (both terms of one sign, t of the other) the true sum is
+     * t +- 2^32, and 182 turns back is t + 2^20 when t wrapped negative,
+     * t - 2^20 otherwise (the same angle as the default's 64-bit test,
+     * fewer bytes; the uint32 -> int32 conversion wraps, dh_port.h) */
+    t = th + qt;
+    if (((t ^ th) & (t ^ qt)) >> 31) t += 0xFFF00000u + ((t >> 31) << 21);
     dh_sincos_q((dh_q16)t, &v[0], &v[1]);
     v[2] = j->sa_q;
     v[3] = j->ca_q;
-    /* d + qd, saturated: qd 2^30 rounds back to qd exactly */
-    d = len(add_rnd30(j->d_q, MUL(qd, 0x40000000), &ovf));
+    /* d + qd, saturated (the value and flag of the default's pos(d,
+     * qd 2^30): qd 2^30 rounds back to qd exactly) */
+    d = len(sat32((int64_t)j->d_q + qd, &ovf));
     turn(T, mod, &v[2u * mod], &ovf);
     for (k = 0; k < 3; k++)
         T->p[k] = add_rnd30(T->p[k], MLA(MUL(a, T->r[0][k]), d, T->r[2][k]), &ovf);
@@ -279,19 +287,21 @@ static FKQ_NOINLINE int64_t dot3h(int32_t a0, int32_t a1, int32_t a2, const int3
 }
 
 /* out = A * B, three-term sums of halved products rounded at bit 29. out
- * may be A (row k of A is read before row k of out is written), not B. */
-static FKQ_NOINLINE void mul_frame(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B, int *ovf)
+ * may be A (row k of A is read before row k of out is written), not B.
+ * Returns 1 when an entry saturated. */
+static FKQ_NOINLINE int mul_frame(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B)
 {
-    int c, k;
+    int c, k, ovf = 0;
     for (k = 0; k < 3; k++) {
         const int32_t a0 = A->r[0][k], a1 = A->r[1][k], a2 = A->r[2][k], p = A->p[k];
         for (c = 0; c < 4; c++) {
             /* columns n, o, a, then p (plus the position of A) */
             const int32_t *b = c < 3 ? B->r[c] : B->p;
             int32_t *o = c < 3 ? &out->r[c][k] : &out->p[k];
-            *o = sat32((c < 3 ? 0 : p) + ((dot3h(a0, a1, a2, b) + HALF28) >> 29), ovf);
+            *o = sat32((c < 3 ? 0 : p) + ((dot3h(a0, a1, a2, b) + HALF28) >> 29), &ovf);
         }
     }
+    return ovf;
 }
 
 /* dst = src unless they are the same frame. */
@@ -330,7 +340,7 @@ static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, d
         cur = out;
     }
     if (T_end) {
-        if ((r->flags & DH_ROBOT_TOOL_ID_Q) == 0u) mul_frame(T_end, cur, &r->tool_q, &ovf);
+        if ((r->flags & DH_ROBOT_TOOL_ID_Q) == 0u) ovf |= mul_frame(T_end, cur, &r->tool_q);
         else copy_frame(T_end, cur);
     }
     return ovf ? DH_ERR_OVERFLOW : DH_OK;

@@ -111,7 +111,8 @@ dh_status dh_robot_frame_q_(dh_robot *r, const dh_frame_q *src, unsigned which)
     dh_frame_q *dst;
     uint32_t clear = DH_ROBOT_Q_NO_BASE | DH_ROBOT_BASE_ID_Q | DH_ROBOT_F32_NO_BASE;
     uint32_t set = 0u;
-    int c, k, ident = 1;
+    uint32_t diff = 0u; /* nonzero: src is not the identity */
+    int c, k;
     DH_ASSERT(r != NULL);
     DH_ASSERT(src != NULL);
     if (which == 0u) {
@@ -125,13 +126,13 @@ dh_status dh_robot_frame_q_(dh_robot *r, const dh_frame_q *src, unsigned which)
         const int32_t *s = (c < 3) ? src->r[c] : src->p;
         int32_t *d = (c < 3) ? dst->r[c] : dst->p;
         for (k = 0; k < 3; k++) {
-            if (s[k] != ((c == k) ? DH_Q30_ONE : 0)) ident = 0;
+            diff |= (uint32_t)s[k] ^ ((c == k) ? (uint32_t)DH_Q30_ONE : 0u);
             d[k] = s[k];
         }
     }
-    if (ident) set |= DH_ROBOT_BASE_ID_Q;
+    if (diff == 0u) set |= DH_ROBOT_BASE_ID_Q;
     /* identity on both paths: the float frame is still current */
-    if (!ident || (r->flags & (DH_ROBOT_BASE_ID_F32 << which)) == 0u) set |= DH_ROBOT_F32_NO_BASE;
+    if (diff != 0u || (r->flags & (DH_ROBOT_BASE_ID_F32 << which)) == 0u) set |= DH_ROBOT_F32_NO_BASE;
     dh_robot_flags_(r, clear << which, set << which);
     return DH_OK;
 }
