@@ -36,6 +36,16 @@ static int dh_finite(float x) { return fabsf(x) <= FLT_MAX; }
 static float dh_nz(float x) { return (x == 0.0f) ? 0.0f : x; }
 #endif
 
+#if DH_SMALL
+static void dh_set_identity(dh_mat4_f32 *T)
+{
+    int c, r;
+    for (c = 0; c < 4; c++) {
+        for (r = 0; r < 4; r++) T->m[c][r] = 0.0f;
+        T->m[c][c] = 1.0f;
+    }
+}
+#else
 static void dh_set_identity(dh_mat4_f32 *T)
 {
     int c, r;
@@ -43,6 +53,7 @@ static void dh_set_identity(dh_mat4_f32 *T)
         for (r = 0; r < 4; r++) T->m[c][r] = (c == r) ? 1.0f : 0.0f;
     }
 }
+#endif
 
 /* ---------------------------------------------------------------------- */
 /* constructors                                                           */
@@ -63,6 +74,7 @@ void dh_mat4_trans_f32(dh_mat4_f32 *T, float x, float y, float z)
     T->m[3][2] = z;
 }
 
+#if !DH_SMALL
 /*
  * sin and cos with -0 mapped to +0, so that 0 - s below never produces -0
  * and Rot(.., 0) is bitwise the identity.
@@ -72,16 +84,11 @@ static dh_status dh_sc(float deg, float *s, float *c)
     float sv, cv;
     dh_status st = dh_sincos_f32(deg, &sv, &cv);
     if (st != DH_OK) return DH_ERR_NAN;
-#if DH_SMALL
-    /* x + 0 is dh_nz(x) below: -0 + +0 = +0, anything else unchanged */
-    *s = sv + 0.0f;
-    *c = cv + 0.0f;
-#else
     *s = dh_nz(sv);
     *c = dh_nz(cv);
-#endif
     return DH_OK;
 }
+#endif
 
 #if DH_SMALL
 /* Rot(k, deg) about a coordinate axis is bitwise Rot(x|y|z, deg): the
@@ -89,19 +96,26 @@ static dh_status dh_sc(float deg, float *s, float *c)
  * components is +-0, which the "+ 0.0f" of dh_mat4_rot_axis_f32 maps to
  * +0 (test_mat4_seed checks the quadrants bit for bit). deg NaN or Inf:
  * DH_ERR_NAN, as below. */
+static dh_status dh_rotk(dh_mat4_f32 *T, float deg, int axis)
+{
+    float k[3] = {0.0f, 0.0f, 0.0f};
+    k[axis] = 1.0f;
+    return dh_mat4_rot_axis_f32(T, k[0], k[1], k[2], deg);
+}
+
 dh_status dh_mat4_rotx_f32(dh_mat4_f32 *T, float deg)
 {
-    return dh_mat4_rot_axis_f32(T, 1.0f, 0.0f, 0.0f, deg);
+    return dh_rotk(T, deg, 0);
 }
 
 dh_status dh_mat4_roty_f32(dh_mat4_f32 *T, float deg)
 {
-    return dh_mat4_rot_axis_f32(T, 0.0f, 1.0f, 0.0f, deg);
+    return dh_rotk(T, deg, 1);
 }
 
 dh_status dh_mat4_rotz_f32(dh_mat4_f32 *T, float deg)
 {
-    return dh_mat4_rot_axis_f32(T, 0.0f, 0.0f, 1.0f, deg);
+    return dh_rotk(T, deg, 2);
 }
 #else
 dh_status dh_mat4_rotx_f32(dh_mat4_f32 *T, float deg)
@@ -157,17 +171,19 @@ static float dh_rot_diag(float ki2, float others2, float v, float c)
 #if DH_SMALL
 dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, float deg)
 {
-    float k[3], k2[3], m = 0.0f, len = 0.0f, s, c, v;
-    const float z = kx * 0.0f + ky * 0.0f + kz * 0.0f + deg * 0.0f; /* NaN iff one is NaN or Inf */
+    float k[4], m = 0.0f, len = 0.0f, s, c, v, z = 0.0f, x, y, w, p0;
     int i, j, a, b, t;
     DH_ASSERT(T != NULL);
-    if (z != z) return DH_ERR_NAN;
     k[0] = kx;
     k[1] = ky;
     k[2] = kz;
-    for (i = 0; i < 3; i++) {
-        if (fabsf(k[i]) > m) m = fabsf(k[i]);
+    k[3] = deg;
+    /* z is NaN iff one of them is NaN or Inf; m the largest |k_i| */
+    for (i = 0; i < 4; i++) {
+        z += k[i] * 0.0f;
+        if (i < 3 && fabsf(k[i]) > m) m = fabsf(k[i]);
     }
+    if (z != z) return DH_ERR_NAN;
     if (m < FLT_MIN) return DH_ERR_ZERO_AXIS;
     /* (0 + x^2) + y^2 + z^2 is bitwise x^2 + y^2 + z^2 */
     for (i = 0; i < 3; i++) {
@@ -175,11 +191,11 @@ dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, flo
         len += k[i] * k[i];
     }
     len = DH_SQRTF(len);
-    for (i = 0; i < 3; i++) {
-        k[i] /= len;
-        k2[i] = k[i] * k[i];
-    }
-    if (dh_sc(deg, &s, &c) != DH_OK) return DH_ERR_NAN;
+    /* deg is finite here, so dh_sincos_f32 returns DH_OK; x + 0 is
+     * dh_sc's dh_nz(x): -0 + +0 = +0, anything else unchanged */
+    (void)dh_sincos_f32(deg, &s, &c);
+    s += 0.0f;
+    c += 0.0f;
     v = 1.0f - c;
     dh_set_identity(T);
     /* eq. 1.70 by the axis j and the two others a, b in cyclic order: the
@@ -187,15 +203,24 @@ dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, flo
      * k_a k_b vers + k_j sin, (column b, row a) = k_a k_b vers - k_j sin
      * (the products and sums of the default code: a*b == b*a and
      * a+b == b+a bitwise) */
+    x = k[0];
+    y = k[1];
+    w = k[2];
     for (i = 0, j = 0, a = 1, b = 2; i < 3; i++) {
-        const float p = k[a] * k[b] * v, q = k[j] * s;
-        T->m[j][j] = dh_rot_diag(k2[j], k2[a] + k2[b], v, c);
+        /* the unit axis: k / len */
+        const float uj = x / len, ua = y / len, ub = w / len;
+        const float p = ua * ub * v, q = uj * s;
+        T->m[j][j] = dh_rot_diag(uj * uj, ua * ua + ub * ub, v, c);
         T->m[a][b] = (p + q) + 0.0f;
         T->m[b][a] = (p - q) + 0.0f;
         t = j; /* (j, a, b) -> (a, b, j) */
         j = a;
         a = b;
         b = t;
+        p0 = x;
+        x = y;
+        y = w;
+        w = p0;
     }
     return DH_OK;
 }
@@ -260,6 +285,22 @@ void dh_mat4_scale_f32(dh_mat4_f32 *T, float sx, float sy, float sz)
     T->m[2][2] = sz;
 }
 
+#if DH_SMALL
+/* f = +-0: -1 / f is an infinity, so the finiteness test of r is also the
+ * f == 0 test of the default code (same status, DH_ERR_DOMAIN) */
+dh_status dh_mat4_persp_f32(dh_mat4_f32 *T, int axis, float f)
+{
+    float r;
+    DH_ASSERT(T != NULL);
+    if (axis < 0 || axis > 2) return DH_ERR_ARG;
+    if (!dh_finite(f)) return DH_ERR_NAN;
+    r = -1.0f / f;
+    if (!dh_finite(r)) return DH_ERR_DOMAIN;
+    dh_set_identity(T);
+    T->m[axis][3] = r; /* bottom row, column of the axis (eq. 1.127) */
+    return DH_OK;
+}
+#else
 dh_status dh_mat4_persp_f32(dh_mat4_f32 *T, int axis, float f)
 {
     float r;
@@ -273,6 +314,7 @@ dh_status dh_mat4_persp_f32(dh_mat4_f32 *T, int axis, float f)
     T->m[axis][3] = r; /* bottom row, column of the axis (eq. 1.127) */
     return DH_OK;
 }
+#endif
 
 void dh_mat4_from_noap_f32(dh_mat4_f32 *T, const dh_vec3_f32 *n, const dh_vec3_f32 *o,
                            const dh_vec3_f32 *a, const dh_vec3_f32 *p)
@@ -381,29 +423,25 @@ static void dh_lin(const dh_mat4_f32 *A, const float *in, float *o, int n)
 }
 
 /*
- * out = A B (aff == 0), or the affine product (aff != 0): columns 0..2 of
- * R_A times R_B (three terms, no fourth), column 3 R_A p_B + p_A (p_A
- * times 1), bottom row 0 0 0 1; the bottom rows of A and B are never
- * used (row 3 of the temporary is overwritten). Built in a temporary, so
- * out may alias A and/or B.
+ * out = A B (aff == 0), or the affine product (aff == 1): columns 0..2 of
+ * R_A times R_B (three terms, no fourth), column 3 R_A p_B + p_A (the
+ * default code's + p_A: x * 1 is x, so it is the fourth term of a point),
+ * bottom row 0 0 0 1; the bottom rows of A and B are never used (row 3 of
+ * the temporary is overwritten). Built in a temporary, so out may alias A
+ * and/or B.
  */
 static void dh_mul(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B, int aff)
 {
     dh_mat4_f32 t;
-    int c;
+    int i;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    for (c = 0; c < 4; c++) {
-        if (aff) {
-            float b[4];
-            b[0] = B->m[c][0];
-            b[1] = B->m[c][1];
-            b[2] = B->m[c][2];
-            b[3] = 1.0f;
-            dh_lin(A, b, t.m[c], (c == 3) ? 4 : 3);
-            t.m[c][3] = (c == 3) ? 1.0f : 0.0f;
-        } else {
-            dh_lin(A, B->m[c], t.m[c], 4);
+    for (i = 0; i < 4; i++) dh_lin(A, B->m[i], t.m[i], 4 - aff);
+    if (aff) {
+        for (i = 0; i < 4; i++) {
+            t.m[i][3] = 0.0f;
+            t.m[3][i] += A->m[3][i]; /* row 3 is the 0 0 0 1 below */
         }
+        t.m[3][3] = 1.0f;
     }
     *out = t;
 }
@@ -559,6 +597,20 @@ void dh_mat4_apply_vec4_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec4_
 }
 #endif
 
+#if DH_SMALL
+int dh_mat4_isfinite_f32(const dh_mat4_f32 *T)
+{
+    /* x * 0 is +-0 for finite x and NaN for NaN and +-Inf; a sum of +-0
+     * is never NaN */
+    float z = 0.0f;
+    int c, r;
+    DH_ASSERT(T != NULL);
+    for (c = 0; c < 4; c++) {
+        for (r = 0; r < 4; r++) z += T->m[c][r] * 0.0f;
+    }
+    return z == z;
+}
+#else
 int dh_mat4_isfinite_f32(const dh_mat4_f32 *T)
 {
     int c, r, ok = 1;
@@ -568,6 +620,7 @@ int dh_mat4_isfinite_f32(const dh_mat4_f32 *T)
     }
     return ok;
 }
+#endif
 
 #if DH_SMALL
 dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec3_f32 *v)

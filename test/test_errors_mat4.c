@@ -787,6 +787,52 @@ static void mat4_signed_zeros(void)
     }
 }
 
+/*
+ * The affine product never reads the bottom rows of A and B: NaN, +-Inf or
+ * FLT_MAX in any one of those eight entries (DH_SMALL adds p_A into a
+ * column whose row 3 it then overwrites) leaves every bit of the result,
+ * also with out aliasing A or B. Small integers, so the reference (double,
+ * here) is exact.
+ */
+static void mat4_affine_bottom_rows(void)
+{
+    const float poison[] = {NAN, INFINITY, -INFINITY, FLT_MAX};
+    dh_mat4_f32 A, B, C, R;
+    int c, r, k, e, p, alias;
+    for (c = 0; c < 4; c++)
+        for (r = 0; r < 4; r++) {
+            A.m[c][r] = (float)((c * 5 + r * 3) % 7 - 3);
+            B.m[c][r] = (float)((c * 2 + r * 5) % 9 - 4);
+        }
+    for (c = 0; c < 4; c++) {
+        for (r = 0; r < 3; r++) {
+            double acc = (c == 3) ? (double)A.m[3][r] : 0.0;
+            for (k = 0; k < 3; k++) acc += (double)A.m[k][r] * (double)B.m[c][k];
+            R.m[c][r] = (float)acc;
+        }
+        R.m[c][3] = (c == 3) ? 1.0f : 0.0f;
+    }
+    for (e = 0; e < 8; e++) {
+        for (p = 0; p < 4; p++) {
+            for (alias = 0; alias < 3; alias++) {
+                dh_mat4_f32 A2 = A, B2 = B;
+                if (e < 4) A2.m[e][3] = poison[p];
+                else B2.m[e - 4][3] = poison[p];
+                if (alias == 0) {
+                    dh_mat4_mul_affine_f32(&C, &A2, &B2);
+                } else if (alias == 1) {
+                    dh_mat4_mul_affine_f32(&A2, &A2, &B2);
+                    C = A2;
+                } else {
+                    dh_mat4_mul_affine_f32(&B2, &A2, &B2);
+                    C = B2;
+                }
+                DHT_TRUE_MSG(memcmp(&C, &R, sizeof C) == 0, "entry %d poison %d alias %d", e, p, alias);
+            }
+        }
+    }
+}
+
 static const dht_case cases[] = {
     DHT_CASE(mat4_rot_nan_inf_huge),
     DHT_CASE(mat4_rot_axis_bad),
@@ -800,5 +846,6 @@ static const dht_case cases[] = {
     DHT_CASE(mat4_no_status_ieee_and_alias),
     DHT_CASE(mat4_shared_path_edges),
     DHT_CASE(mat4_signed_zeros),
+    DHT_CASE(mat4_affine_bottom_rows),
 };
 DHT_MAIN(cases)
