@@ -210,12 +210,13 @@ DH_PORT_INLINE int32_t len(int32_t x)
  * where this product does not (a different status).
  */
 
-/* v saturated to int32 (|v| < 2^63 - 2^31); sets *ovf when it does not
- * fit: v + 2^31 then leaves [0, 2^32). */
+/* v saturated to int32 (|v| < 2^63 - 2^31); sets *ovf to DH_ERR_OVERFLOW
+ * when it does not fit: v + 2^31 then leaves [0, 2^32). Every flag of
+ * this file is 0 or DH_ERR_OVERFLOW, so that it is the status itself. */
 static FKQ_NOINLINE int32_t sat32(int64_t v, int *ovf)
 {
     if (((uint64_t)(v + ((int64_t)1 << 31)) >> 32) != 0u) {
-        *ovf = 1;
+        *ovf = (int)DH_ERR_OVERFLOW;
         return sat_sign((uint32_t)((uint64_t)v >> 32));
     }
     return (int32_t)v;
@@ -242,8 +243,8 @@ static FKQ_NOINLINE void turn(dh_frame_q *T, unsigned i, const dh_q30 *cs, int *
     }
 }
 
-/* T <- T * A_i(q) in place (joint i of r). Returns 1 when d + q or an
- * entry saturated. theta = q + offset is brought back into int32 by
+/* T <- T * A_i(q) in place (joint i of r). Returns DH_ERR_OVERFLOW when
+ * d + q or an entry saturated, else 0. theta = q + offset is brought back into int32 by
  * whole turns (exact); d is saturated and INT32_MIN raised to -INT32_MAX
  * (the documented one-LSB raise, not an overflow), as is a. */
 static FKQ_NOINLINE int step(dh_frame_q *T, const dh_robot *r, uint32_t i, int32_t q)
@@ -288,7 +289,7 @@ static FKQ_NOINLINE int64_t dot3h(int32_t a0, int32_t a1, int32_t a2, const int3
 
 /* out = A * B, three-term sums of halved products rounded at bit 29. out
  * may be A (row k of A is read before row k of out is written), not B.
- * Returns 1 when an entry saturated. */
+ * Returns DH_ERR_OVERFLOW when an entry saturated, else 0. */
 static FKQ_NOINLINE int mul_frame(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B)
 {
     int c, k, ovf = 0;
@@ -317,7 +318,7 @@ dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A)
     if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_OVERFLOW;
     dh_frame_identity_q(A);
-    return step(A, r, i, q) ? DH_ERR_OVERFLOW : DH_OK;
+    return (dh_status)step(A, r, i, q);
 }
 
 /* The chain is built in the caller's memory (frames[i], or T_end), from
@@ -343,7 +344,7 @@ static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, d
         if ((r->flags & DH_ROBOT_TOOL_ID_Q) == 0u) ovf |= mul_frame(T_end, cur, &r->tool_q);
         else copy_frame(T_end, cur);
     }
-    return ovf ? DH_ERR_OVERFLOW : DH_OK;
+    return (dh_status)ovf;
 }
 
 #else /* !DH_SMALL: the code below is the default build, unchanged */
