@@ -55,27 +55,47 @@ static int dh_finite(float x) { return fabsf(x) <= FLT_MAX; }
 /* ---------------------------------------------------------------------- */
 
 #if DH_SMALL
-/* the same operations as loops: the translation first (p is read before
- * anything is written, out may alias T), then R^T by pair swaps that read
- * both elements before writing either */
+/* the same operations as loops: p is read first (out may alias T), then
+ * R^T by pair swaps that read both elements before writing either (p is
+ * not written), then the translation from R^T as stored in out (the same
+ * products in the same order) */
+/*
+ * The affine completion shared with dh_inv_certified: with R^-1 (row
+ * view) in rows 0..2, columns 0..2 of X, writes the translation
+ * -(R^-1 p) = 0 - (p_x X_0i + p_y X_1i + p_z X_2i) into row 3 and the
+ * bottom row 0 0 0 1 of T^-1 (column 3 of the row view). Returns NaN iff
+ * a translation entry is NaN or Inf.
+ */
+static DH_NOINLINE float dh_affine_t(dh_mat4_f32 *X, float px, float py, float pz)
+{
+    float z = 0.0f;
+    int i;
+    for (i = 0; i < 3; i++) {
+        const float t = 0.0f - (px * X->m[0][i] + py * X->m[1][i] + pz * X->m[2][i]);
+        X->m[3][i] = t;
+        X->m[i][3] = 0.0f;
+        z += t * 0.0f;
+    }
+    X->m[3][3] = 1.0f;
+    return z;
+}
+
 void dh_mat4_inv_rigid_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
-    float t[3];
+    float px, py, pz;
     int i, j;
     DH_ASSERT(out != NULL && T != NULL);
-    for (i = 0; i < 3; i++) {
-        t[i] = 0.0f - (T->m[3][0] * T->m[i][0] + T->m[3][1] * T->m[i][1] + T->m[3][2] * T->m[i][2]);
-    }
+    px = T->m[3][0];
+    py = T->m[3][1];
+    pz = T->m[3][2];
     for (i = 0; i < 3; i++) {
         for (j = 0; j <= i; j++) {
             const float a = T->m[i][j], b = T->m[j][i];
             out->m[i][j] = b;
             out->m[j][i] = a;
         }
-        out->m[i][3] = 0.0f;
-        out->m[3][i] = t[i];
     }
-    out->m[3][3] = 1.0f;
+    (void)dh_affine_t(out, px, py, pz);
 }
 #else
 void dh_mat4_inv_rigid_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
@@ -203,6 +223,7 @@ static float dh_balance(const dh_mat4_f32 *M)
 }
 #endif
 
+#if !DH_SMALL
 /*
  * Row view: column 3 of rows 0..2 times f, row 3 of columns 0..2 over f,
  * f the power of two nearest to sg (within a factor sqrt(2); exact unless
@@ -228,6 +249,7 @@ static DH_NOINLINE void dh_rebalance(dh_mat4_f32 *X, float sg, int undo)
         X->m[3][i] *= fi;
     }
 }
+#endif
 
 /*
  * Element (i, j) of the row-view matrix the certified path works on: s M
@@ -243,6 +265,14 @@ static DH_INLINE float dh_at(const dh_mat4_f32 *M, int i, int j, float s, int af
 }
 
 #if DH_SMALL
+/* element (i, j) of the row view weighted like D^-1 . D with w in place of
+ * sg: column 3 of rows 0..2 times w, columns 0..2 of row 3 over w */
+static DH_NOINLINE float dh_wt(float q, int i, int j, float w)
+{
+    if (i < 3) return (j < 3) ? q : q * w;
+    return (j < 3) ? q / w : q;
+}
+
 /*
  * The three balanced norms of the certified path in one loop (the row
  * weights of dh_norm_rows below, the same operations in the same order);
@@ -254,13 +284,20 @@ static DH_INLINE float dh_at(const dh_mat4_f32 *M, int i, int j, float s, int af
  *    below; a zero of A as +0 only changes signs of zeros of the inverse,
  *    which the unscaling maps to +0); M = the inverse with s == 1,
  *    aff == 0 gives ||X||;
- *  - si != 0 (X == NULL, aff == 0, W == M, si = 1 / s): dh_unscale below,
+ *  - aff < 0 (X == NULL, W == M, g = 1 / s): dh_unscale below,
  *    M = s M with the balanced norm of what that lost (its extra NaN
  *    propagation only turns an Inf, i.e. DH_ERR_OVERFLOW, into a NaN,
  *    which fails the same test).
+ * Otherwise the value stored
+ * in W (and measured) is dh_wt(q, ., ., g); g == 1 stores q itself. With
+ * M == W, s == 1, aff == 0 and g the power of two of dh_rebalance (or its
+ * inverse) this is the default build's dh_rebalance (q / g == q * (1 / g):
+ * g is a normal power of two), with the balanced norm of the result
+ * (X = 0 + 1 * X only maps -0 to +0, which changes no later sum,
+ * comparison or unscaled value).
  */
 static DH_NOINLINE float dh_bnorm(const dh_mat4_f32 *X, const dh_mat4_f32 *M, float s, float sg, int aff,
-                                  dh_mat4_f32 *W, float si)
+                                  dh_mat4_f32 *W, float g)
 {
     float res = 0.0f, t = 0.0f;
     int i, j, k;
@@ -268,11 +305,11 @@ static DH_NOINLINE float dh_bnorm(const dh_mat4_f32 *X, const dh_mat4_f32 *M, fl
         float rs = 0.0f;
         for (j = 0; j < 4; j++) {
             float q = 0.0f;
-            if (si != 0.0f) {
+            if (aff < 0) {
                 /* dh_unscale */
                 const float x = M->m[i][j], v = x * s + 0.0f;
                 W->m[i][j] = v;
-                q = v * si - x;
+                q = v * g - x;
             } else {
                 /* X == NULL: the term k == i alone, 0 + 1 * A_ij */
                 for (k = 0; k < 4; k++) {
@@ -282,11 +319,10 @@ static DH_NOINLINE float dh_bnorm(const dh_mat4_f32 *X, const dh_mat4_f32 *M, fl
                     q += x * dh_at(M, k, j, s, aff);
                 }
                 if (j == i && X != NULL) q -= 1.0f;
+                q = dh_wt(q, i, j, g);
                 if (W != NULL) W->m[i][j] = q;
             }
-            q = fabsf(q);
-            if (i < 3) rs += (j < 3) ? q : q * sg;
-            else rs += (j < 3) ? q / sg : q;
+            rs += dh_wt(fabsf(q), i, j, sg);
         }
         t += rs;
         res = (rs > res) ? rs : res;
@@ -339,6 +375,59 @@ static DH_NOINLINE float dh_residual(const dh_mat4_f32 *X, const dh_mat4_f32 *M,
 }
 #endif
 
+#if DH_SMALL
+/* the four elements of X with the indices u + n st, n = 0..3, exchanged
+ * with those at v + n st (element index 4 i + j for X->m[i][j]): rows
+ * u / 4, v / 4 with st = 1, columns u, v with st = 4; u == v leaves X as
+ * it is */
+static DH_NOINLINE void dh_swap4(dh_mat4_f32 *X, int u, int v, int st)
+{
+    int n;
+    for (n = 0; n < 4; n++) {
+        const float t = X->m[u >> 2][u & 3];
+        X->m[u >> 2][u & 3] = X->m[v >> 2][v & 3];
+        X->m[v >> 2][v & 3] = t;
+        u += st;
+        v += st;
+    }
+}
+
+/* the same elimination as below (the same pivots, operations and order);
+ * the interchanges by one helper, unconditionally (p == k swaps nothing) */
+static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
+{
+    unsigned perm = 0u; /* pivot row of step k in bits 6 - 2k, 7 - 2k */
+    int i, j, k;
+    for (k = 0; k < 4; k++) {
+        float *rk = X->m[k];
+        float r;
+        int p = k;
+        for (i = k + 1; i < 4; i++) {
+            if (fabsf(X->m[i][k]) > fabsf(X->m[p][k])) p = i;
+        }
+        if (X->m[p][k] == 0.0f) return 0;
+        perm = perm * 4u + (unsigned)p;
+        dh_swap4(X, 4 * k, 4 * p, 1);
+        r = 1.0f / rk[k];
+        rk[k] = 1.0f;
+        for (j = 0; j < 4; j++) rk[j] *= r;
+        for (i = 0; i < 4; i++) {
+            float *ri = X->m[i];
+            float f;
+            if (i == k) continue;
+            f = ri[k];
+            ri[k] = 0.0f;
+            for (j = 0; j < 4; j++) ri[j] -= f * rk[j];
+        }
+    }
+    /* undo the interchanges on the columns, last first */
+    for (k = 3; k >= 0; k--) {
+        dh_swap4(X, k, (int)(perm & 3u), 4);
+        perm >>= 2;
+    }
+    return 1;
+}
+#else
 /*
  * In-place Gauss-Jordan with partial pivoting on the rows of M (i.e. on
  * the columns of T): X becomes X^-1. Returns 0 on an exactly zero pivot
@@ -395,6 +484,7 @@ static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
     }
     return 1;
 }
+#endif
 
 /*
  * Exact power-of-two scale s of the certified path: for affine T the one
@@ -417,7 +507,7 @@ static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
 static DH_NOINLINE float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_f32 *X)
 {
     float mx = 0.0f, s = 0.0f, z = 0.0f, cp = 0.0f, rq = 0.0f, m3 = 0.0f, sg = 1.0f, pn = 0.0f;
-    uint32_t e;
+    uint32_t e, b;
     int i, j;
     for (i = 0; i < 4; i++) {
         float rs = 0.0f;
@@ -435,13 +525,11 @@ static DH_NOINLINE float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_f32 *X)
         m3 = (rs > m3) ? rs : m3;
     }
     if (mx >= FLT_MIN) {
-        s = 1.0f;
         memcpy(&e, &mx, sizeof e);
         e >>= 23;
-        if (aff || e < 127u - 16u || e > 127u + 16u) {
-            const uint32_t bits = ((e >= 254u) ? 1u : 254u - e) << 23;
-            memcpy(&s, &bits, sizeof s);
-        }
+        b = 0x3F800000u; /* 1.0f */
+        if (aff || e - (127u - 16u) > 32u) b = ((e >= 254u) ? 1u : 254u - e) << 23; /* e < 111 or e > 143 */
+        memcpy(&s, &b, sizeof s);
     }
     if (!aff && (cp != 0.0f || rq > 0.0f)) {
         if (cp == 0.0f) {
@@ -534,27 +622,24 @@ static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 
 {
     const int aff = dh_is_affine(T);
     const float s = dh_scan(T, aff, X), sg = X->m[0][0];
-    float na, z = 0.0f;
-    int j;
+    float na, z = 0.0f, f = sg * 1.41421356f;
+    uint32_t b;
     if (s != s) return DH_ERR_NAN;
     if (s == 0.0f) return DH_ERR_SINGULAR;
     /* X = A and its balanced norm */
-    na = dh_bnorm(NULL, T, s, sg, aff, X, 0.0f);
-    dh_rebalance(X, sg, 0);
+    na = dh_bnorm(NULL, T, s, sg, aff, X, 1.0f);
+    /* the power of two f of dh_rebalance: balance X, eliminate, unbalance
+     * (with the norm of the result) */
+    memcpy(&b, &f, sizeof b);
+    b &= 0x7F800000u; /* sg in [2^-60, 2^60]: a normal power of two */
+    memcpy(&f, &b, sizeof f);
+    (void)dh_bnorm(NULL, X, 1.0f, sg, 0, X, f);
     if (!dh_inv_gauss_jordan(X)) return DH_ERR_SINGULAR;
-    dh_rebalance(X, sg, 1);
-    if (!(na * dh_bnorm(NULL, X, 1.0f, sg, 0, NULL, 0.0f) < DH_MAT4_COND_MAX)) return DH_ERR_SINGULAR;
-    if (!(dh_bnorm(X, T, s, sg, aff, NULL, 0.0f) <= 0.5f)) return DH_ERR_SINGULAR;
-    if (!(dh_bnorm(NULL, X, s, sg, 0, X, 1.0f / s) * na <= 0.0625f)) return DH_ERR_OVERFLOW;
-    if (aff) {
-        for (j = 0; j < 3; j++) {
-            const float t = 0.0f - (X->m[0][j] * T->m[3][0] + X->m[1][j] * T->m[3][1] + X->m[2][j] * T->m[3][2]);
-            X->m[3][j] = t;
-            X->m[j][3] = 0.0f;
-            z += t * 0.0f;
-        }
-        X->m[3][3] = 1.0f;
-    }
+    if (!(na * dh_bnorm(NULL, X, 1.0f, sg, 0, X, 1.0f / f) < DH_MAT4_COND_MAX)) return DH_ERR_SINGULAR;
+    if (!(dh_bnorm(X, T, s, sg, aff, NULL, 1.0f) <= 0.5f)) return DH_ERR_SINGULAR;
+    if (!(dh_bnorm(NULL, X, s, sg, -1, X, 1.0f / s) * na <= 0.0625f)) return DH_ERR_OVERFLOW;
+    /* X and T are finite here: the products commute bitwise */
+    if (aff) z = dh_affine_t(X, T->m[3][0], T->m[3][1], T->m[3][2]);
     if (z != z) return DH_ERR_OVERFLOW;
     return DH_OK;
 }
