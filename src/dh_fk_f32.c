@@ -103,12 +103,13 @@ static FK_NOINLINE void turn(dh_mat4_f32 *T, int i, const float *sc)
     }
 }
 
-/* One joint in place (mod: 1 for modified DH); v = (sin theta, cos theta,
+/* One joint in place (r: the convention); v = (sin theta, cos theta,
  * sin alpha, cos alpha, d, a) from joint_values. Standard: theta on
  * columns (0, 1), then p + d a + a_len n, then alpha on (1, 2); modified:
  * alpha first, p + a_len n + d a, then theta. */
-static FK_NOINLINE void step(dh_mat4_f32 *T, int mod, const float v[6])
+static FK_NOINLINE void step(dh_mat4_f32 *T, const dh_robot *r, const float v[6])
 {
+    const int mod = r->conv != DH_CONV_STANDARD;
     const float *x1 = T->m[2 - 2 * mod], *x2 = T->m[2 * mod];
     int k;
     turn(T, mod, v + 2 * mod);
@@ -169,7 +170,7 @@ dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
     st = joint_values(&r->joint[i], q, v);
     if (st == DH_OK) {
         dh_mat4_identity_f32(A);
-        step(A, r->conv != DH_CONV_STANDARD, v);
+        step(A, r, v);
     }
     return st;
 }
@@ -216,7 +217,7 @@ static FK_NOINLINE dh_status fk_f32(const dh_robot *r, const float *q, dh_mat4_f
         if (frames) dst = &frames[i];
         (void)joint_values(j, q[i], v);
         copy(dst, src);
-        step(dst, r->conv != DH_CONV_STANDARD, v);
+        step(dst, r, v);
         src = dst;
     }
     return DH_OK;
