@@ -24,14 +24,18 @@
  *   Cortex-M3/M4/M7, four 16-bit MULS on Cortex-M0) sums modulo 2^64 and
  *   one deferred range test per call detects both saturation and 64-bit
  *   wraparound; only then an exact overflow-free path recomputes the call
- *   (same bits, saturating correctly).
+ *   (same bits, saturating correctly). With DH_SMALL=1 (dh_config.h) there
+ *   is no second path: when the test fails the entry saturates, its sign
+ *   taken from the exact sum of the terms' halved high words (same bits
+ *   and statuses as the default build).
  * - Outputs may alias inputs (results are computed into locals first).
  * - NULL pointers are programmer errors: DH_ASSERT.
  * - Stack (measured with -fcallgraph-info=su, arm-none-eabi-gcc 12, deepest
  *   call chain, external dh_sincos_q not included): <= 236 bytes on
  *   Cortex-M0+ and <= 188 on Cortex-M4 at -O2, -O3 and -Os.
  * - Cost (QEMU, executed instructions, -O2): dh_frame_mul_q ~226 on
- *   Cortex-M4, ~1360 on Cortex-M0 (-Os: ~222 / ~1240).
+ *   Cortex-M4, ~1360 on Cortex-M0 (-Os: ~222 / ~1240). DH_SMALL builds:
+ *   docs/performance_target.md, column "-Os DH_SMALL".
  *
  * Measured accuracy (test/test_frame_q.c, docs/accuracy_fixed.md) is
  * quoted per function in LSB: 1 LSB of a rotation entry is 2^-30, 1 LSB of

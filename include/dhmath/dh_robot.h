@@ -50,6 +50,13 @@
  * used as -INT32_MAX (one LSB), so no intermediate 64-bit sum can wrap;
  * any saturated output entry makes the function return DH_ERR_OVERFLOW.
  *
+ * DH_SMALL=1 (dh_config.h): FK and links are one general step for both
+ * conventions and every base, twist and length (no fast path, no
+ * written-out link); every output and status is the default build's,
+ * except that a zero entry of dh_link_f32 (and of the first frame of
+ * dh_fk_f32 with an identity base) may have the other sign. Costs:
+ * docs/performance_target.md, column "-Os DH_SMALL".
+ *
  * Stack: worst case including callees and libgcc (tools/dh_stack.py,
  * checked by tools/check_guards.sh against 256 bytes): dh_fk_q 208 / 240
  * bytes on Cortex-M0+ and 160 / 184 on Cortex-M4F at -Os / -O2; the per

@@ -59,6 +59,10 @@ extern "C" {
  * (soft float) ~1660 instructions (QEMU -icount, docs/accuracy_trig.md).
  * Stack on Cortex-M0+: 80 bytes including the soft-float helpers (-O2 and
  * -Os); 96 through dh_sin_f32/dh_cos_f32.
+ * DH_SMALL=1 (dh_config.h): the same bits for every input; angles with
+ * |deg| >= 2^23 are reduced by a shift-and-subtract loop (at most 128
+ * steps) instead of a table, and the table values may come from the
+ * Q2.30 table; costs in docs/performance_target.md ("-Os DH_SMALL").
  *
  * @return DH_OK; DH_ERR_NAN if @p deg is NaN or +-Inf, and then both
  *         outputs are set to a quiet NaN (never a table read).
@@ -116,7 +120,8 @@ float dh_cos_f32(float deg);
  * every input: Cortex-M4 93 instructions, Cortex-M0 376 at -O2 / 335 at
  * -Os (534 with __aeabi_lmul before), x86-64 gcc -O2 106. Stack: 76 bytes
  * on Cortex-M0+ including the helper (92 through dh_sin_q/dh_cos_q);
- * 32 on Cortex-M4. Cannot fail.
+ * 32 on Cortex-M4. Cannot fail. With DH_SMALL=1 the
+ * quadrant sign takes a branch (same bits, cost no longer constant).
  */
 void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30);
 
