@@ -15,7 +15,8 @@
 /** Entries per table: sin(0..90 degrees). */
 #define DH_TRIG_TAB_LEN 91
 
-/** sin(n deg), n = 0..90, correctly rounded to binary32. 364 bytes. */
+/** sin(n deg), n = 0..90, correctly rounded to binary32. 364 bytes; not
+ * linked in DH_SMALL builds (the float path reads dh_trig_sin_q30). */
 extern const float dh_trig_sin_f32[DH_TRIG_TAB_LEN];
 /** sin(n deg), n = 0..90, correctly rounded to Q2.30. 364 bytes. */
 extern const int32_t dh_trig_sin_q30[DH_TRIG_TAB_LEN];
