@@ -435,7 +435,7 @@ static void dh_mul(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B,
     dh_mat4_f32 t;
     int i;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    for (i = 0; i < 4; i++) dh_lin(A, B->m[i], t.m[i], 4 - aff);
+    for (i = 0; i < 4; i++) dh_lin(A, B->m[i], &t.m[i][0], 4 - aff);
     if (aff) {
         for (i = 0; i < 4; i++) {
             t.m[i][3] = 0.0f;

@@ -380,15 +380,15 @@ static DH_NOINLINE float dh_residual(const dh_mat4_f32 *X, const dh_mat4_f32 *M,
  * with those at v + n st (element index 4 i + j for X->m[i][j]): rows
  * u / 4, v / 4 with st = 1, columns u, v with st = 4; u == v leaves X as
  * it is */
-static DH_NOINLINE void dh_swap4(dh_mat4_f32 *X, int u, int v, int st)
+static DH_NOINLINE void dh_swap4(dh_mat4_f32 *X, unsigned u, unsigned v, unsigned st)
 {
-    int n;
-    for (n = 0; n < 4; n++) {
-        const float t = X->m[u >> 2][u & 3];
-        X->m[u >> 2][u & 3] = X->m[v >> 2][v & 3];
-        X->m[v >> 2][v & 3] = t;
-        u += st;
-        v += st;
+    unsigned a = u, b = v, n;
+    for (n = 0u; n < 4u; n++) {
+        const float t = X->m[a >> 2][a & 3u];
+        X->m[a >> 2][a & 3u] = X->m[b >> 2][b & 3u];
+        X->m[b >> 2][b & 3u] = t;
+        a += st;
+        b += st;
     }
 }
 
@@ -407,7 +407,7 @@ static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
         }
         if (X->m[p][k] == 0.0f) return 0;
         perm = perm * 4u + (unsigned)p;
-        dh_swap4(X, 4 * k, 4 * p, 1);
+        dh_swap4(X, 4u * (unsigned)k, 4u * (unsigned)p, 1u);
         r = 1.0f / rk[k];
         rk[k] = 1.0f;
         for (j = 0; j < 4; j++) rk[j] *= r;
@@ -422,7 +422,7 @@ static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
     }
     /* undo the interchanges on the columns, last first */
     for (k = 3; k >= 0; k--) {
-        dh_swap4(X, k, (int)(perm & 3u), 4);
+        dh_swap4(X, (unsigned)k, perm & 3u, 4u);
         perm >>= 2;
     }
     return 1;
@@ -918,11 +918,9 @@ static int dh_is_affine(const dh_mat4_f32 *T)
 /*
  * General inverse into X: the fast path for the input's shape, else the
  * certified path (X scratch, undefined on error, must not alias T). Used
- * by dh_mat4_apply_plane_f32.
+ * by dh_mat4_apply_plane_f32 (DH_SMALL: the certified path alone).
  */
-#if DH_SMALL
-#define dh_inv_into dh_inv_certified
-#else
+#if !DH_SMALL
 static dh_status dh_inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
     if (dh_is_affine(T)) {
@@ -1129,7 +1127,7 @@ dh_status dh_mat4_apply_plane_f32(const dh_mat4_f32 *T, const dh_plane_f32 *P, d
     /* the certified inverse for every T (no rigidity test): same statuses
      * as the default build's rigid/general choice, values within the
      * general inverse's bound */
-    st = dh_inv_into(&X, T);
+    st = dh_inv_certified(&X, T);
     if (st != DH_OK) return st;
 #else
     /* the inverse as dh_mat4_inv_auto_f32 takes it, into X */
