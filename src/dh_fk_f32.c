@@ -34,6 +34,7 @@
  */
 #include "dhmath/dh_robot.h"
 #include "dhmath/dh_trig.h"
+#include "dhmath/dh_mat4.h" /* dh_mat4_mul_affine_f32 */
 
 static int is_finite(float x)
 {
@@ -54,7 +55,6 @@ static int is_finite(float x)
 #endif
 
 #if DH_SMALL
-#include "dhmath/dh_mat4.h" /* dh_mat4_mul_affine_f32 */
 
 /*
  * DH_SMALL: the same arithmetic with less code. One step serves both
@@ -181,12 +181,13 @@ dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
  * (x*inf, x*0*inf). */
 static dh_status finish(const dh_robot *r, const dh_mat4_f32 *last, dh_mat4_f32 *T_end)
 {
+    const dh_mat4_f32 *out = last;
     if (T_end) {
         if (r->flags & DH_ROBOT_TOOL_ID_F32) copy(T_end, last);
         else dh_mat4_mul_affine_f32(T_end, last, &r->tool);
-        last = T_end;
+        out = T_end;
     }
-    return frame_finite(last);
+    return frame_finite(out);
 }
 
 /*
@@ -215,9 +216,11 @@ static FK_NOINLINE dh_status fk_f32(const dh_robot *r, const float *q, dh_mat4_f
         float v[6];
         const dh_joint *j = &r->joint[i];
         if (frames) dst = &frames[i];
-        (void)joint_values(j, q[i], v);
-        copy(dst, src);
-        step(dst, r, v);
+        /* DH_OK: q[i] passed the loop above */
+        if (joint_values(j, q[i], v) == DH_OK) {
+            copy(dst, src);
+            step(dst, r, v);
+        }
         src = dst;
     }
     return DH_OK;

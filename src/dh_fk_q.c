@@ -69,6 +69,7 @@
  */
 #include "dhmath/dh_robot.h"
 #include "dhmath/dh_trig.h"
+#include "dhmath/dh_fixed.h" /* dh_frame_identity_q */
 #include "../port/dh_port.h" /* relative: src/ compiles with only include/ on the path */
 
 /* The step variants stay separate functions: inlined together into fk_q
@@ -106,11 +107,13 @@ static FKQ_NOINLINE int64_t mla64(int64_t acc, int32_t a, int32_t b)
 #define MLA(acc, a, b) dh_port_smlal((acc), (a), (b))
 #endif
 
+#if !DH_SMALL /* lo30, rnd30, rnd30_fit, pos, neg: only the default build uses them */
 /* bits 30..61 of t (t >> 30 when that fits int32), from the two words */
 DH_PORT_INLINE int32_t lo30(int64_t t)
 {
     return (int32_t)(((uint32_t)((uint64_t)t & 0xFFFFFFFFu) >> 30) | ((uint32_t)((uint64_t)t >> 32) << 2));
 }
+#endif
 
 /* INT32_MIN when bit 31 of w is set, else INT32_MAX (the saturated value
  * of a result with the sign of w; branch free; the uint32 -> int32
@@ -120,6 +123,7 @@ DH_PORT_INLINE int32_t sat_sign(uint32_t w)
     return (int32_t)(0x7FFFFFFFu ^ (0u - (w >> 31)));
 }
 
+#if !DH_SMALL
 /*
  * Round x / 2^30 to nearest (half up) into int32, saturating and setting
  * *ovf. t >> 30 fits in int32 iff the high word of t lies in
@@ -171,6 +175,7 @@ DH_PORT_INLINE int32_t neg(int32_t x, int *ovf)
     }
     return -x;
 }
+#endif /* !DH_SMALL */
 
 /* Length operand: INT32_MIN raised to -INT32_MAX (see the overflow note). */
 DH_PORT_INLINE int32_t len(int32_t x)
@@ -179,7 +184,6 @@ DH_PORT_INLINE int32_t len(int32_t x)
 }
 
 #if DH_SMALL
-#include "dhmath/dh_fixed.h" /* dh_frame_identity_q */
 
 /*
  * DH_SMALL: one code path for both conventions, every base, tool and
