@@ -128,20 +128,11 @@ static int32_t to_fix_sat(float x, unsigned frac)
  * plus its own frame (Cortex-M0+ -Os with libgcc: 228 bytes, under 256).
  */
 
-/* set_frame_f32 views a dh_frame_q as 12 words (no padding): one loop over
- * the 16 elements of the float frame, 20 bytes less than column by column */
-typedef char dh_frame_q_is_12_words_[(sizeof(dh_frame_q) == 12u * sizeof(int32_t)) ? 1 : -1];
-
 /* which: 0 base, 1 tool; the tool's flag bits are the base's shifted by 1 */
 static dh_status set_frame_f32(dh_robot *r, const dh_mat4_f32 *src, unsigned which)
 {
-    /* the fixed frame as 12 words: w[3 c + k] is r[c][k] (c < 3) or p[k]
-     * (c = 3); dh_frame_q is 12 int32 without padding (typedef above).
-     * Every access, here and in dh_robot_frame_q_, is an int32_t one */
-    union {
-        dh_frame_q F;
-        int32_t w[13]; /* w[12]: the bottom row, converted and dropped */
-    } u;
+    dh_frame_q F;
+    int32_t spare; /* the bottom row, converted only for its finiteness */
     unsigned e;
     unsigned st = 0u;  /* to_fix results ORed: 2 NaN/Inf, 1 does not fit */
     unsigned bad = 0u; /* 1: not the identity, 2: bottom row not 0 0 0 1 */
@@ -153,8 +144,9 @@ static dh_status set_frame_f32(dh_robot *r, const dh_mat4_f32 *src, unsigned whi
          * only for its finiteness */
         const unsigned c = e >> 2, k = e & 3u;
         const float x = src->m[c][k];
-        st |= to_fix(x, (c < 3u) ? 30u : (unsigned)DH_QPOS_FRAC, &u.w[(k == 3u) ? 12u : 3u * c + k]);
-        if (x != (float)(c == k)) bad |= (k == 3u) ? 2u : 1u;
+        int32_t *const col = (c < 3u) ? F.r[c] : F.p; /* r[c] or p */
+        st |= to_fix(x, (c < 3u) ? 30u : (unsigned)DH_QPOS_FRAC, (k == 3u) ? &spare : &col[k]);
+        if (x != ((c == k) ? 1.0f : 0.0f)) bad |= (k == 3u) ? 2u : 1u;
     }
     if (st & 2u) return DH_ERR_NAN;
     if (bad & 2u) return DH_ERR_NOT_RIGID;
@@ -162,7 +154,7 @@ static dh_status set_frame_f32(dh_robot *r, const dh_mat4_f32 *src, unsigned whi
     if (st == 0u) {
         /* fixed copy, its identity / small-rows bits; this marks the float
          * frame stale, which dh_robot_flags_ below corrects */
-        (void)dh_robot_frame_q_(r, &u.F, which);
+        (void)dh_robot_frame_q_(r, &F, which);
     }
     /* an identity always fits: a frame that does not is no identity */
     dh_robot_flags_(r, (DH_ROBOT_F32_NO_BASE | DH_ROBOT_BASE_ID_F32 | DH_ROBOT_Q_NO_BASE) << which,

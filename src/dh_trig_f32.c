@@ -158,6 +158,8 @@ static float dh_trig_tab_f32(uint32_t n, uint32_t neg)
         v--;
     } else if (n == 19u) {
         v++;
+    } else {
+        /* every other entry converts to the correctly rounded float */
     }
     if (neg & 1u) {
         v = -v;
