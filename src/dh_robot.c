@@ -8,7 +8,6 @@
 #include "dhmath/dh_trig.h"
 #include "dh_robot_impl.h"
 #if DH_SMALL
-#include <string.h>
 
 #include "dhmath/dh_fixed.h"
 #include "dhmath/dh_mat4.h"
@@ -48,17 +47,14 @@ static int is_finite(float x)
  */
 static unsigned to_fix(float x, unsigned frac, int32_t *out)
 {
-    float v, rem, scale;
+    float v, rem;
     int32_t i;
-    uint32_t b, m, lim = (158u - frac) << 23; /* bit pattern of 2^(31 - frac) */
-    memcpy(&b, &x, sizeof b);
-    m = b & 0x7FFFFFFFu;
-    /* x * 2^frac is in [-2^31, 2^31) when |x| < 2^(31 - frac) (the bit
-     * patterns of non-negative floats order like their values; Inf and NaN
-     * lie above) or x = -2^(31 - frac) */
-    if (m >= lim && b != (lim | 0x80000000u)) return (m >= 0x7F800000u) ? 2u : 1u;
-    b = (127u + frac) << 23;                  /* 2^frac */
-    memcpy(&scale, &b, sizeof scale);
+    /* 2^frac and 2^(31 - frac), frac in 8..24: powers of two below 2^25,
+     * exact as floats */
+    const float scale = (float)(1u << frac), lim = (float)(1u << (31u - frac));
+    if (!(x - x == 0.0f)) return 2u;           /* NaN or Inf */
+    /* x * 2^frac is in [-2^31, 2^31) iff -2^(31 - frac) <= x < 2^(31 - frac) */
+    if (x >= lim || x < -lim) return 1u;
     v = x * scale;                            /* exact */
     i = (int32_t)v;
     rem = v - (float)i;

@@ -3,6 +3,7 @@
 #define DHMATH_DH_ROBOT_IMPL_H
 
 #include "dhmath/dh_common.h"
+#include "dhmath/dh_robot.h"
 
 /* 1 when every row of F's rotation part has Euclidean norm <= 1.5 (the
  * DH_ROBOT_BASE_SMALL_Q test of the fixed FK fast path); integer only,
@@ -10,7 +11,6 @@
 int dh_robot_rows_small_q_(const dh_frame_q *F);
 
 #if DH_SMALL
-#include "dhmath/dh_robot.h"
 
 /* Size-first build only: r->flags = summary((r->flags & ~clear) | set), the
  * reason bits changed and the public summary bits DH_ROBOT_HAS_F32 /
