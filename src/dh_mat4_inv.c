@@ -375,6 +375,29 @@ static DH_NOINLINE float dh_residual(const dh_mat4_f32 *X, const dh_mat4_f32 *M,
 }
 #endif
 
+/*
+ * One Gauss-Jordan step after the interchange: row k divided by its pivot
+ * (as a multiplication by the reciprocal), column k eliminated from the
+ * other rows. Shared by both builds' dh_inv_gauss_jordan (inlined: the
+ * same operations in the same order).
+ */
+static DH_INLINE void dh_gj_eliminate(dh_mat4_f32 *X, int k)
+{
+    float *rk = X->m[k];
+    const float r = 1.0f / rk[k];
+    int i, j;
+    rk[k] = 1.0f;
+    for (j = 0; j < 4; j++) rk[j] *= r;
+    for (i = 0; i < 4; i++) {
+        float *ri = X->m[i];
+        float f;
+        if (i == k) continue;
+        f = ri[k];
+        ri[k] = 0.0f;
+        for (j = 0; j < 4; j++) ri[j] -= f * rk[j];
+    }
+}
+
 #if DH_SMALL
 /* the four elements of X with the indices u + n st, n = 0..3, exchanged
  * with those at v + n st (element index 4 i + j for X->m[i][j]): rows
@@ -397,10 +420,8 @@ static DH_NOINLINE void dh_swap4(dh_mat4_f32 *X, unsigned u, unsigned v, unsigne
 static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
 {
     unsigned perm = 0u; /* pivot row of step k in bits 6 - 2k, 7 - 2k */
-    int i, j, k;
+    int i, k;
     for (k = 0; k < 4; k++) {
-        float *rk = X->m[k];
-        float r;
         int p = k;
         for (i = k + 1; i < 4; i++) {
             if (fabsf(X->m[i][k]) > fabsf(X->m[p][k])) p = i;
@@ -408,17 +429,7 @@ static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
         if (X->m[p][k] == 0.0f) return 0;
         perm = perm * 4u + (unsigned)p;
         dh_swap4(X, 4u * (unsigned)k, 4u * (unsigned)p, 1u);
-        r = 1.0f / rk[k];
-        rk[k] = 1.0f;
-        for (j = 0; j < 4; j++) rk[j] *= r;
-        for (i = 0; i < 4; i++) {
-            float *ri = X->m[i];
-            float f;
-            if (i == k) continue;
-            f = ri[k];
-            ri[k] = 0.0f;
-            for (j = 0; j < 4; j++) ri[j] -= f * rk[j];
-        }
+        dh_gj_eliminate(X, k);
     }
     /* undo the interchanges on the columns, last first */
     for (k = 3; k >= 0; k--) {
@@ -440,7 +451,6 @@ static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
     int i, j, k;
     for (k = 0; k < 4; k++) {
         float *rk;
-        float r;
         int p = k;
         for (i = k + 1; i < 4; i++) {
             if (fabsf(X->m[i][k]) > fabsf(X->m[p][k])) p = i;
@@ -457,17 +467,7 @@ static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
                 rp[j] = tmp;
             }
         }
-        r = 1.0f / rk[k];
-        rk[k] = 1.0f;
-        for (j = 0; j < 4; j++) rk[j] *= r;
-        for (i = 0; i < 4; i++) {
-            float *ri = X->m[i];
-            float f;
-            if (i == k) continue;
-            f = ri[k];
-            ri[k] = 0.0f;
-            for (j = 0; j < 4; j++) ri[j] -= f * rk[j];
-        }
+        dh_gj_eliminate(X, k);
     }
     /* undo the interchanges on the columns, last first */
     for (k = 3; k >= 0; k--) {
