@@ -61,7 +61,7 @@ extern "C" {
  * -Os); 96 through dh_sin_f32/dh_cos_f32.
  * DH_SMALL=1 (dh_config.h): the same bits for every input; angles with
  * |deg| >= 2^23 are reduced by a shift-and-subtract loop (at most 128
- * steps) instead of a table, and the table values may come from the
+ * steps) instead of a table, and the table values come from the
  * Q2.30 table; costs in docs/performance_target.md ("-Os DH_SMALL").
  *
  * @return DH_OK; DH_ERR_NAN if @p deg is NaN or +-Inf, and then both
