@@ -1075,6 +1075,10 @@ static DH_NOINLINE int dh_rigid_t_ok(const dh_mat4_f32 *T)
 {
     float z = 0.0f;
     int j;
+    /* common case first, without the products: the entries of a rigid R
+     * are within 1 + 1e-5 in magnitude, so |p_i| <= 2^125 bounds each
+     * translation entry by 3 2^125 (1 + 1e-5) < 2^127 */
+    if (fabsf(T->m[3][0]) <= 0x1p125f && fabsf(T->m[3][1]) <= 0x1p125f && fabsf(T->m[3][2]) <= 0x1p125f) return 1;
     for (j = 0; j < 3; j++) {
         const float t = T->m[3][0] * T->m[j][0] + T->m[3][1] * T->m[j][1] + T->m[3][2] * T->m[j][2];
         z += t - t;   /* NaN iff t is Inf or NaN */
