@@ -1,14 +1,14 @@
 /*
- * dh_axis.c - equivalent angle and axis of a rotation (seed 000, sec. 13,
- * eq. 1.72-1.103; Example 1.1, eq. 1.104-1.112).
+ * dh_axis.c - equivalent angle and axis of a rotation (Paul 1981, eq. 1.72-1.103;
+ * Example 1.1, eq. 1.104-1.112).
  */
 #include <float.h>
 #include <math.h>
 
 #include "dhmath/dh_mat4.h"
 #include "dh_mathf.h"
+#include "dh_internal.h"
 
-#define DH_RAD2DEG_F 57.295779513082320876798f
 
 /*
  * theta = atan2(s2, c2) in degrees, for s2 >= 0, with the libm-free

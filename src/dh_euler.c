@@ -15,8 +15,8 @@
 #include "dhmath/dh_rot.h"
 #include "dhmath/dh_trig.h"
 #include "dh_mathf.h"
+#include "dh_internal.h"
 
-#define DH_EULER_RAD2DEG 57.295779513082320876798f
 
 /* axes of the 12 intrinsic sequences, in dh_euler_seq order (0 x, 1 y, 2 z) */
 static const unsigned char dh_euler_axes[12][3] = {
@@ -132,15 +132,15 @@ static float dh_euler_atan2_deg(float y, float x)
     if (ax == 0.0f && ay == 0.0f) {
         d = 0.0f;                                               /* undefined: 0 */
     } else if (ay <= ax && x > 0.0f) {
-        d = dh_atan2f_(y, x) * DH_EULER_RAD2DEG;                    /* [-45, 45] */
+        d = dh_atan2f_(y, x) * DH_RAD2DEG_F;                    /* [-45, 45] */
     } else if (ay > ax && y > 0.0f) {
-        d = 90.0f - dh_atan2f_(x, y) * DH_EULER_RAD2DEG;            /* (45, 135) */
+        d = 90.0f - dh_atan2f_(x, y) * DH_RAD2DEG_F;            /* (45, 135) */
     } else if (ay > ax) {
-        d = -90.0f + dh_atan2f_(x, -y) * DH_EULER_RAD2DEG;          /* (-135, -45) */
+        d = -90.0f + dh_atan2f_(x, -y) * DH_RAD2DEG_F;          /* (-135, -45) */
     } else if (!(y < 0.0f)) {
-        d = 180.0f - dh_atan2f_(y, -x) * DH_EULER_RAD2DEG;          /* [135, 180] */
+        d = 180.0f - dh_atan2f_(y, -x) * DH_RAD2DEG_F;          /* [135, 180] */
     } else {
-        d = -180.0f + dh_atan2f_(-y, -x) * DH_EULER_RAD2DEG;        /* (-180, -135] */
+        d = -180.0f + dh_atan2f_(-y, -x) * DH_RAD2DEG_F;        /* (-180, -135] */
     }
     if (d > 180.0f || d <= -180.0f) d = 180.0f;
     return d + 0.0f; /* no -0 */

@@ -1,7 +1,7 @@
 /*
  * dh_ik.c - numerical inverse kinematics in float: Levenberg-Marquardt with
  * Sugihara's damping (T. Sugihara, "Solvability-Unconcerned Inverse
- * Kinematics by the Levenberg-Marquardt Method", cited in seed 003).
+ * Kinematics by the Levenberg-Marquardt Method", 2011).
  *
  * Per iteration, with the weighted, masked error e (position; w_rot times
  * the orientation error a(dR)), E = 1/2 e^T e and the Jacobian J taken in
@@ -18,10 +18,9 @@
  * system is solved again for the others; the remaining step is clamped into
  * the box. A trial point is accepted only when it lowers E. mu is halved
  * after an accepted step (down to 1e-3) and tripled after a rejected one:
- * gentler than the classic /10 .. x10 schedule, which made the damping
- * saw-tooth between too short and rejected steps in the curved, nearly
- * flat valleys around the Puma's folded-elbow targets (measured: Puma 560
- * success 98.2% -> 99.2% worst seed at the same step budget). An attempt
+ * gentler than the classic /10 .. x10 schedule, which makes the damping
+ * saw-tooth between too short and rejected steps in curved, nearly flat
+ * valleys (the Puma's folded-elbow targets). An attempt
  * that stalls (4 steps in a row with less than 1% decrease of E, or an
  * empty projected step) is restarted from a deterministic pseudo-random
  * point in the joint box (xorshift32 with a fixed seed: same inputs, same
@@ -34,8 +33,8 @@
  * is always reported UNREACHABLE. Once the tolerances are met, up to 3
  * more steps refine the result towards the float resolution.
  *
- * Stack (issue 5): the worst-case chain INCLUDING callees and libgcc must
- * stay within 256 bytes on Cortex-M0+ (soft float) and M4F. So every
+ * Stack: the worst-case chain including callees and libgcc stays within
+ * 256 bytes on Cortex-M0+ (soft float) and M4F. So every
  * vector and matrix lives in the caller's workspace, including the running
  * frame of the Jacobian pass, dR and the scalar state; dh_ik_f32 calls
  * shallow blocks one after the other (joint sin/cos, Jacobian pass, error,
@@ -46,11 +45,11 @@
 #include "dhmath/dh_trig.h"
 #include "dh_kin_impl.h"
 #include "dh_mathf.h"
+#include "dh_internal.h"
 
 #include <float.h>
 #include <math.h>
 
-#define IK_RAD2DEG 57.295779513082320876798f
 #define IK_POLISH_STEPS 3u      /* refinement steps after the tolerance is met */
 #define IK_STALL_STEPS 4u       /* steps in a row with less than 1% progress: stalled */
 #define IK_MU_MAX 1e12f
@@ -63,11 +62,6 @@
 
 /* Keep the blocks out of dh_ik_f32's frame so that the frames add up to
  * the measured chain, not to one big frame. */
-#if defined(__GNUC__) || defined(__clang__)
-#define IK_NOINLINE __attribute__((noinline))
-#else
-#define IK_NOINLINE
-#endif
 
 /* Workspace layout (floats), n joints; slot s = 0, 1 (current / trial). */
 #define OFF_J(n, s) ((s) * 6u * (n))                 /* 6n each: Jacobian */
@@ -114,7 +108,6 @@ typedef struct {
     uint8_t mode, conv, end, best_kind, hopeless;
 } ik_ctx;
 
-static int ik_finite(float x) { return fabsf(x) <= FLT_MAX; }
 
 void dh_ik_params_default(dh_ik_params *p)
 {
@@ -139,7 +132,7 @@ static float ik_row_w(uint32_t mask, uint32_t row, float w_rot)
 /* Column scale of the Jacobian in scaled variables (1 or L) and joint unit
  * per scaled variable (deg per rad, or L). */
 static float ik_col_scale(const dh_joint *jt, float L) { return (jt->type == DH_JOINT_REVOLUTE) ? 1.0f : L; }
-static float ik_unit(const dh_joint *jt, float L) { return (jt->type == DH_JOINT_REVOLUTE) ? IK_RAD2DEG : L; }
+static float ik_unit(const dh_joint *jt, float L) { return (jt->type == DH_JOINT_REVOLUTE) ? DH_RAD2DEG_F : L; }
 
 static float ik_clamp(const dh_joint *jt, float v)
 {
@@ -152,13 +145,13 @@ static float ik_clamp(const dh_joint *jt, float v)
 
 /* Euclidean norm of the masked components of v[0..2] without overflow in
  * the squares (the result is +Inf only when the norm exceeds FLT_MAX). */
-static IK_NOINLINE float ik_norm3(const float *v, uint32_t mask)
+static DH_NOINLINE float ik_norm3(const float *v, uint32_t mask)
 {
     float m = 0.0f, s = 0.0f;
     uint32_t k;
     for (k = 0; k < 3u; k++)
         if ((mask & (1u << k)) != 0u && fabsf(v[k]) > m) m = fabsf(v[k]);
-    if (!(m > 0.0f) || !ik_finite(m)) return m;
+    if (!(m > 0.0f) || !dh_isfinite_f32(m)) return m;
     for (k = 0; k < 3u; k++)
         if ((mask & (1u << k)) != 0u) s += (v[k] / m) * (v[k] / m);
     return m * dh_sqrtf_(s);
@@ -167,7 +160,7 @@ static IK_NOINLINE float ik_norm3(const float *v, uint32_t mask)
 /* ---- argument checks and set-up ---------------------------------------- */
 
 /* Every check made before anything is written. */
-static IK_NOINLINE dh_status ik_args(const ik_ctx *c, size_t work_len)
+static DH_NOINLINE dh_status ik_args(const ik_ctx *c, size_t work_len)
 {
     const dh_robot *r = c->r;
     const dh_mat4_f32 *target = c->target;
@@ -178,20 +171,20 @@ static IK_NOINLINE dh_status ik_args(const ik_ctx *c, size_t work_len)
     if (work == NULL || work_len < (size_t)DH_IK_WORK_FLOATS(n)) return DH_ERR_ARG;
     if (p->max_iter == 0u || p->mask == 0u || (p->mask & ~(uint32_t)DH_IK_FULL) != 0u)
         return DH_ERR_ARG;
-    if (!(p->tol_pos >= 0.0f) || !(p->tol_rot >= 0.0f) || !ik_finite(p->tol_pos) ||
-        !ik_finite(p->tol_rot))
+    if (!(p->tol_pos >= 0.0f) || !(p->tol_rot >= 0.0f) || !dh_isfinite_f32(p->tol_pos) ||
+        !dh_isfinite_f32(p->tol_rot))
         return DH_ERR_ARG;
     /* w_rot^2 times pi^2 (the largest orientation term of E) must be finite */
-    if (!(p->w_rot > 0.0f) || !ik_finite(p->w_rot * p->w_rot * 16.0f)) return DH_ERR_ARG;
+    if (!(p->w_rot > 0.0f) || !dh_isfinite_f32(p->w_rot * p->w_rot * 16.0f)) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_ARG;
     if (r->conv != DH_CONV_STANDARD && r->conv != DH_CONV_MODIFIED) return DH_ERR_ARG;
     for (i = 0; i < n; i++)
         if (r->joint[i].type != DH_JOINT_REVOLUTE && r->joint[i].type != DH_JOINT_PRISMATIC)
             return DH_ERR_ARG;
     for (i = 0; i < 16u; i++)
-        if (!ik_finite(target->m[i / 4u][i % 4u])) return DH_ERR_NAN;
+        if (!dh_isfinite_f32(target->m[i / 4u][i % 4u])) return DH_ERR_NAN;
     for (i = 0; i < n; i++)
-        if (!ik_finite(q0[i])) return DH_ERR_NAN;
+        if (!dh_isfinite_f32(q0[i])) return DH_ERR_NAN;
     /* a homogeneous transform of a rigid motion: bottom row exactly 0 0 0 1
      * (a projective target such as a perspective matrix has no pose), and
      * a rotation part when the orientation is driven */
@@ -203,7 +196,7 @@ static IK_NOINLINE dh_status ik_args(const ik_ctx *c, size_t work_len)
 
 /* Characteristic length L (sum of the link lengths, prismatic travel and
  * tool offset) and the damping bias into the scalar state. */
-static IK_NOINLINE void ik_scales(const ik_ctx *c)
+static DH_NOINLINE void ik_scales(const ik_ctx *c)
 {
     const dh_robot *r = c->r;
     float *S = c->w + OFF_S(c->n);
@@ -217,7 +210,7 @@ static IK_NOINLINE void ik_scales(const ik_ctx *c)
     }
     L += dh_sqrtf_(r->tool.m[3][0] * r->tool.m[3][0] + r->tool.m[3][1] * r->tool.m[3][1] +
                        r->tool.m[3][2] * r->tool.m[3][2]);
-    if (!(L > FLT_MIN) || !ik_finite(L * L)) L = 1.0f;
+    if (!(L > FLT_MIN) || !dh_isfinite_f32(L * L)) L = 1.0f;
     S[S_L] = L;
     S[S_WBAR] = DH_IK_WBAR * L * L;
     S[S_MU] = 1.0f;
@@ -232,7 +225,7 @@ static IK_NOINLINE void ik_scales(const ik_ctx *c)
  * most ||B||_2 <= sqrt(max row sum of |B^T B|) (1 + O(tol) for a rotation,
  * exact for a scaled rotation).
  */
-static IK_NOINLINE float ik_reach(const dh_robot *r)
+static DH_NOINLINE float ik_reach(const dh_robot *r)
 {
     const dh_mat4_f32 *B = &r->base;
     float R = 0.0f, gmax = 1.0f;
@@ -270,17 +263,17 @@ static IK_NOINLINE float ik_reach(const dh_robot *r)
 /* 1 when the target is provably out of reach by more than tol_pos: the
  * masked distance between the target position and the base origin exceeds
  * R = ik_reach(). */
-static IK_NOINLINE int ik_hopeless(const ik_ctx *c, float R)
+static DH_NOINLINE int ik_hopeless(const ik_ctx *c, float R)
 {
     float v[3];
     uint32_t k;
-    if (!(R >= 0.0f) || !ik_finite(R)) return 0;
+    if (!(R >= 0.0f) || !dh_isfinite_f32(R)) return 0;
     for (k = 0; k < 3u; k++) v[k] = c->target->m[3][k] - c->r->base.m[3][k];
     return ik_norm3(v, c->p->mask) > R + c->p->tol_pos;
 }
 
 /* The rest of the context (r, target, p, q0, w set by the caller). */
-static IK_NOINLINE void ik_init(ik_ctx *c)
+static DH_NOINLINE void ik_init(ik_ctx *c)
 {
     uint32_t i;
     c->n = c->r->n;
@@ -303,7 +296,7 @@ static IK_NOINLINE void ik_init(ik_ctx *c)
 
 /* sin, cos of theta and d of every joint at the trial point (NaN for a
  * non-finite sum, which makes the Jacobian pass report it). */
-static IK_NOINLINE void ik_trig(const ik_ctx *c)
+static DH_NOINLINE void ik_trig(const ik_ctx *c)
 {
     const float *q = c->w + OFF_Q(c->n, c->cs ^ 1u);
     float *t = c->w + OFF_SCD(c->n);
@@ -323,7 +316,7 @@ static IK_NOINLINE void ik_trig(const ik_ctx *c)
 /* Position error of the frame into the trial slot; with the orientation
  * driven, dR = R_target R^T (row-major) for the rotation vector, else a
  * zero orientation error (the target's rotation is not read). */
-static IK_NOINLINE void ik_pos_err(const ik_ctx *c)
+static DH_NOINLINE void ik_pos_err(const ik_ctx *c)
 {
     const float *F = c->w + OFF_F(c->n);
     float *e = c->w + OFF_E(c->n, c->cs ^ 1u), *d = c->w + OFF_D(c->n);
@@ -346,7 +339,7 @@ static IK_NOINLINE void ik_pos_err(const ik_ctx *c)
 /* Masked norms and E of the trial slot's error into S_TE, S_TEP, S_TER:
  * EV_OK, or EV_BIG when E is not finite (S_TEP then computed without
  * overflow, +Inf only beyond FLT_MAX). */
-static IK_NOINLINE int ik_norms(const ik_ctx *c)
+static DH_NOINLINE int ik_norms(const ik_ctx *c)
 {
     const uint32_t mask = c->p->mask;
     const float *e = c->w + OFF_E(c->n, c->cs ^ 1u);
@@ -361,7 +354,7 @@ static IK_NOINLINE int ik_norms(const ik_ctx *c)
     S[S_TEP] = dh_sqrtf_(sp);
     S[S_TER] = dh_sqrtf_(sr);
     S[S_TE] = 0.5f * (sp + c->p->w_rot * c->p->w_rot * sr);
-    if (!ik_finite(S[S_TE])) {
+    if (!dh_isfinite_f32(S[S_TE])) {
         S[S_TEP] = ik_norm3(e, mask);
         return EV_BIG;
     }
@@ -373,7 +366,7 @@ static IK_NOINLINE int ik_norms(const ik_ctx *c)
 /* Weighted, column-scaled Jacobian B = W J C and weighted error W e of the
  * current point, written over the trial slot (free until the next
  * evaluation). */
-static IK_NOINLINE void ik_weigh(const ik_ctx *c)
+static DH_NOINLINE void ik_weigh(const ik_ctx *c)
 {
     const uint32_t n = c->n, mask = c->p->mask;
     const float *J = c->w + OFF_J(n, c->cs), *e = c->w + OFF_E(n, c->cs);
@@ -392,7 +385,7 @@ static IK_NOINLINE void ik_weigh(const ik_ctx *c)
  * free joints (the others get an identity row/column and g = 0), with
  * damp = mu E + wbar.
  */
-static IK_NOINLINE void ik_normal(const ik_ctx *c, uint32_t free_bits)
+static DH_NOINLINE void ik_normal(const ik_ctx *c, uint32_t free_bits)
 {
     const uint32_t n = c->n;
     const float *B = c->w + OFF_J(n, c->cs ^ 1u), *we = c->w + OFF_E(n, c->cs ^ 1u);
@@ -422,7 +415,7 @@ static IK_NOINLINE void ik_normal(const ik_ctx *c, uint32_t free_bits)
  * square root) and solve H dx = g. 0 on success, -1 if the factorisation
  * failed (not positive definite in float / not finite).
  */
-static IK_NOINLINE int ik_ldl(const ik_ctx *c)
+static DH_NOINLINE int ik_ldl(const ik_ctx *c)
 {
     const uint32_t n = c->n;
     float *H = c->w + OFF_H(n), *x = c->w + OFF_DX(n);
@@ -436,7 +429,7 @@ static IK_NOINLINE int ik_ldl(const ik_ctx *c)
             x[k] = Hj[k] * H[k * n + k];
             d -= Hj[k] * x[k];
         }
-        if (!(d > 0.0f) || !ik_finite(d)) return -1;
+        if (!(d > 0.0f) || !dh_isfinite_f32(d)) return -1;
         Hj[j] = d;
         for (i = j + 1u; i < n; i++) {
             float *Hi = H + i * n;
@@ -458,12 +451,12 @@ static IK_NOINLINE int ik_ldl(const ik_ctx *c)
         x[i] = s;
     }
     for (i = 0; i < n; i++)
-        if (!ik_finite(x[i])) return -1;
+        if (!dh_isfinite_f32(x[i])) return -1;
     return 0;
 }
 
 /* Free joints on a bound whose step points outward (bits). */
-static IK_NOINLINE uint32_t ik_freeze(const ik_ctx *c, uint32_t free_bits)
+static DH_NOINLINE uint32_t ik_freeze(const ik_ctx *c, uint32_t free_bits)
 {
     const uint32_t n = c->n;
     const float *qa = c->w + OFF_Q(n, c->cs), *dx = c->w + OFF_DX(n);
@@ -481,7 +474,7 @@ static IK_NOINLINE uint32_t ik_freeze(const ik_ctx *c, uint32_t free_bits)
 
 /* Trial point = current + step of the free joints, clamped into the box;
  * 1 if it differs from the current point, 0 for an empty step. */
-static IK_NOINLINE int ik_apply(const ik_ctx *c, uint32_t free_bits)
+static DH_NOINLINE int ik_apply(const ik_ctx *c, uint32_t free_bits)
 {
     const uint32_t n = c->n;
     const float *qa = c->w + OFF_Q(n, c->cs), *dx = c->w + OFF_DX(n);
@@ -503,7 +496,7 @@ static IK_NOINLINE int ik_apply(const ik_ctx *c, uint32_t free_bits)
 /* Deterministic restart point in the trial slot: uniform in the box for
  * limited joints, q0 +- 180 deg (revolute) or q0 +- L (prismatic) for free
  * joints. */
-static IK_NOINLINE void ik_sample(ik_ctx *c)
+static DH_NOINLINE void ik_sample(ik_ctx *c)
 {
     const float L = c->w[OFF_S(c->n) + S_L];
     float *qo = c->w + OFF_Q(c->n, c->cs ^ 1u);
@@ -540,7 +533,7 @@ static void ik_take(ik_ctx *c, float *S)
 
 /* After an evaluation (ev): accept or reject, update damping and
  * counters; returns what to do next. */
-static IK_NOINLINE unsigned ik_update(ik_ctx *c, int ev)
+static DH_NOINLINE unsigned ik_update(ik_ctx *c, int ev)
 {
     const dh_ik_params *p = c->p;
     float *S = c->w + OFF_S(c->n);
@@ -589,7 +582,7 @@ static IK_NOINLINE unsigned ik_update(ik_ctx *c, int ev)
 /* The attempt is over (converged, stalled, singular or out of steps):
  * keep it if it is the best so far (a converged point beats any other, then
  * the lower E). Returns 1 when the solve is finished, 0 to restart. */
-static IK_NOINLINE int ik_record(ik_ctx *c)
+static DH_NOINLINE int ik_record(ik_ctx *c)
 {
     float *S = c->w + OFF_S(c->n);
     const unsigned kind = c->conv ? K_CONV : (c->end != 0u ? c->end : K_CUT);
@@ -609,7 +602,7 @@ static IK_NOINLINE int ik_record(ik_ctx *c)
 
 /* The start could not be evaluated: outputs untouched, except for a target
  * so far out of reach that E overflows (UNREACHABLE, q = the clamped q0). */
-static IK_NOINLINE dh_status ik_start_failed(const ik_ctx *c, int ev, float *q, dh_ik_result *res)
+static DH_NOINLINE dh_status ik_start_failed(const ik_ctx *c, int ev, float *q, dh_ik_result *res)
 {
     const float *S = c->w + OFF_S(c->n);
     uint32_t i;
@@ -617,13 +610,13 @@ static IK_NOINLINE dh_status ik_start_failed(const ik_ctx *c, int ev, float *q, 
     if (ev == EV_FK || !c->hopeless) return DH_ERR_OVERFLOW;
     for (i = 0; i < c->n; i++) q[i] = c->w[OFF_Q(c->n, 1u) + i];
     res->iterations = 0u;
-    res->err_pos = ik_finite(S[S_TEP]) ? S[S_TEP] : FLT_MAX;
+    res->err_pos = dh_isfinite_f32(S[S_TEP]) ? S[S_TEP] : FLT_MAX;
     res->err_rot = S[S_TER];
     return DH_ERR_UNREACHABLE;
 }
 
 /* Outputs and status from the best attempt. */
-static IK_NOINLINE dh_status ik_finish(const ik_ctx *c, float *q, dh_ik_result *res)
+static DH_NOINLINE dh_status ik_finish(const ik_ctx *c, float *q, dh_ik_result *res)
 {
     const float *S = c->w + OFF_S(c->n);
     uint32_t i;

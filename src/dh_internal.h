@@ -11,7 +11,10 @@
 #ifndef DHMATH_SRC_DH_INTERNAL_H
 #define DHMATH_SRC_DH_INTERNAL_H
 
+#include <float.h>
+#include <math.h>
 #include <stdint.h>
+#include <string.h>
 #include "dhmath/dh_config.h"
 #include "dhmath/dh_common.h"
 #include "../port/dh_port.h" /* relative: src/ compiles with only include/ on the path */
@@ -53,10 +56,25 @@
 
 /* ---- float predicates ----------------------------------------------------- */
 
-/** 1 if x is finite (not NaN, not +-Inf): x - x is 0 exactly then, NaN otherwise. */
+/** 1 when floats are emulated (no FPU): float tests are cheaper on the bits. */
+#if (defined(__arm__) && (defined(__SOFTFP__) || !defined(__ARM_FP))) || \
+    (defined(__riscv) && !defined(__riscv_flen))
+#define DH_SOFT_FLOAT 1
+#else
+#define DH_SOFT_FLOAT 0
+#endif
+
+/** 1 if x is finite (not NaN, not +-Inf). With an FPU: x - x is 0 exactly
+ *  then and NaN otherwise; soft float: the exponent field is not all ones. */
 DH_INLINE int dh_isfinite_f32(float x)
 {
+#if DH_SOFT_FLOAT
+    uint32_t u;
+    (void)memcpy(&u, &x, sizeof u);
+    return (u & 0x7F800000u) != 0x7F800000u;
+#else
     return (x - x) == 0.0f;
+#endif
 }
 
 /* ---- trig and robot description helpers --------------------------------- */
@@ -66,5 +84,24 @@ DH_INLINE int dh_isfinite_f32(float x)
 /* ---- fixed-point helpers (Q rounding, saturation) ------------------------ */
 
 /* ---- kinematics helpers ---------------------------------------------------- */
+
+/** An axis (v[0], v[1], v[2]) divided by its largest magnitude, so that its
+ *  squares neither overflow nor underflow, and *len = its length then (in
+ *  [1, sqrt 3]). DH_ERR_NAN for a NaN/Inf component, DH_ERR_ZERO_AXIS when
+ *  the largest magnitude is below FLT_MIN; v and *len untouched then. */
+DH_INLINE dh_status dh_axis_prescale_f32(float v[3], float *len)
+{
+    float m;
+    if (!dh_isfinite_f32(v[0]) || !dh_isfinite_f32(v[1]) || !dh_isfinite_f32(v[2])) return DH_ERR_NAN;
+    m = fabsf(v[0]);
+    if (fabsf(v[1]) > m) m = fabsf(v[1]);
+    if (fabsf(v[2]) > m) m = fabsf(v[2]);
+    if (m < FLT_MIN) return DH_ERR_ZERO_AXIS;
+    v[0] /= m;
+    v[1] /= m;
+    v[2] /= m;
+    *len = sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    return DH_OK;
+}
 
 #endif /* DHMATH_SRC_DH_INTERNAL_H */

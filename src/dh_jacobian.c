@@ -1,8 +1,8 @@
 /*
  * dh_jacobian.c - geometric Jacobian (base and tool frame) and the
- * orientation error a(dR) of seed 003.
+ * orientation error a(dR) (FloCal, "Inverse Kinematics").
  *
- * Jacobian (seed 003, "Jacobian Matrix"): for joint i with axis z_i through
+ * Jacobian (FloCal, "Jacobian Matrix"): for joint i with axis z_i through
  * the point o_i (both in the base frame) and the end point p_e,
  *   revolute:  column = [ z_i x (p_e - o_i) ; z_i ]   (per radian)
  *   prismatic: column = [ z_i ; 0 ]                   (per length unit)
@@ -13,9 +13,8 @@
  * i temporarily holds o_i (rows 0..2) and z_i (rows 3..5); once p_e is known
  * the columns are completed in place.
  *
- * Stack (issue 5: <= 256 bytes per public function INCLUDING callees and
- * libgcc): the running frame is a 3x4 (12 floats) updated in place, one
- * row at a time, straight from the DH definitions (seed 003):
+ * Stack (<= 256 bytes per public function including callees and libgcc): the running frame is a 3x4 (12 floats) updated in place, one
+ * row at a time, straight from the DH definitions:
  *   standard, F <- F * Rz(theta) Tz(d) Tx(a) Rx(alpha), columns n o a p:
  *     n' = c n + s o,  u = c o - s n,  p' = p + d a + a_len n',
  *     o' = ca u + sa a,  a' = ca a - sa u
@@ -31,29 +30,15 @@
 #include "dhmath/dh_trig.h"
 #include "dh_kin_impl.h"
 #include "dh_mathf.h"
+#include "dh_internal.h"
 
 #include <float.h>
 #include <math.h>
 #include <string.h>
 
-/* Finite test on the bits (no soft-float comparison call on Cortex-M0+). */
-static int jac_finite(float x)
-{
-    uint32_t u;
-    memcpy(&u, &x, sizeof u);
-    return (u & 0x7F800000u) != 0x7F800000u;
-}
-
 /* Frames are kept apart (noinline) so that the worst-case stack is the
  * measured chain of small frames; jac_run is inlined into both public
  * Jacobians so that no wrapper frame adds to it. */
-#if defined(__GNUC__) || defined(__clang__)
-#define JAC_NOINLINE __attribute__((noinline))
-#define JAC_INLINE static inline __attribute__((always_inline))
-#else
-#define JAC_NOINLINE
-#define JAC_INLINE static
-#endif
 
 /* Column c of J holds the axis of its joint: origin (F's p) in rows 0..2,
  * z (F's a) in rows 3..5. */
@@ -68,7 +53,7 @@ static void jac_axis(const float *F, float *J, uint32_t n, uint32_t c)
 
 /* One standard-DH link on the frame: F <- F * A with t = (sin theta,
  * cos theta, d) and the twist and length of joint j. */
-static JAC_NOINLINE void jac_std(float *F, const float *t, const dh_joint *j)
+static DH_NOINLINE void jac_std(float *F, const float *t, const dh_joint *j)
 {
     uint32_t k;
     for (k = 0; k < 3u; k++) {
@@ -82,7 +67,7 @@ static JAC_NOINLINE void jac_std(float *F, const float *t, const dh_joint *j)
 }
 
 /* One modified-DH link on the frame (arguments as jac_std). */
-static JAC_NOINLINE void jac_mod(float *F, const float *t, const dh_joint *j)
+static DH_NOINLINE void jac_mod(float *F, const float *t, const dh_joint *j)
 {
     uint32_t k;
     for (k = 0; k < 3u; k++) {
@@ -98,7 +83,7 @@ static JAC_NOINLINE void jac_mod(float *F, const float *t, const dh_joint *j)
 /* One link: F <- F * A_i with t = (sin theta, cos theta, d); stores the
  * axis of joint i in column i of J (before the update for standard DH,
  * after it for modified DH). */
-JAC_INLINE void jac_link(const dh_robot *r, uint32_t i, const float *t, float *F, float *J)
+DH_INLINE void jac_link(const dh_robot *r, uint32_t i, const float *t, float *F, float *J)
 {
     if (r->conv == DH_CONV_STANDARD) {
         jac_axis(F, J, r->n, i);
@@ -118,7 +103,7 @@ static void jac_start(const dh_robot *r, float *F)
 }
 
 /* F <- F * tool (in place, row by row). */
-static JAC_NOINLINE void jac_tool(const dh_robot *r, float *F)
+static DH_NOINLINE void jac_tool(const dh_robot *r, float *F)
 {
     const dh_mat4_f32 *T = &r->tool;
     uint32_t i, k;
@@ -131,17 +116,17 @@ static JAC_NOINLINE void jac_tool(const dh_robot *r, float *F)
 }
 
 /* 1 when v[0..len-1] are all finite. */
-static JAC_NOINLINE int jac_all_finite(const float *v, uint32_t len)
+static DH_NOINLINE int jac_all_finite(const float *v, uint32_t len)
 {
     uint32_t k;
     int fin = 1;
     for (k = 0; k < len; k++)
-        if (!jac_finite(v[k])) fin = 0;
+        if (!dh_isfinite_f32(v[k])) fin = 0;
     return fin;
 }
 
 /* Complete the columns of J with the end point F's p (cross products). */
-static JAC_NOINLINE void jac_cols(const dh_robot *r, const float *F, float *J)
+static DH_NOINLINE void jac_cols(const dh_robot *r, const float *F, float *J)
 {
     const uint32_t n = r->n;
     uint32_t i, k;
@@ -173,7 +158,7 @@ int dh_kin_jac_f32_(const dh_robot *r, const float *scd, float *J, float *F)
 
 /* Both halves of every column rotated by R^T (R = F's rotation): v' = R^T v,
  * component k = column k of R . v. */
-static JAC_NOINLINE void jac_to_tool(const float *F, float *J, uint32_t n)
+static DH_NOINLINE void jac_to_tool(const float *F, float *J, uint32_t n)
 {
     uint32_t c, h, k;
     for (c = 0; c < n; c++)
@@ -185,7 +170,7 @@ static JAC_NOINLINE void jac_to_tool(const float *F, float *J, uint32_t n)
 }
 
 /* Argument checks of the public Jacobians (nothing written). */
-static JAC_NOINLINE dh_status jac_check(const dh_robot *r, const float *q)
+static DH_NOINLINE dh_status jac_check(const dh_robot *r, const float *q)
 {
     uint32_t i, n = r->n;
     if (n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
@@ -194,20 +179,20 @@ static JAC_NOINLINE dh_status jac_check(const dh_robot *r, const float *q)
     if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_ARG;
     if (r->conv != DH_CONV_STANDARD && r->conv != DH_CONV_MODIFIED) return DH_ERR_ARG;
     for (i = 0; i < n; i++) {
-        if (!jac_finite(q[i])) return DH_ERR_NAN;
+        if (!dh_isfinite_f32(q[i])) return DH_ERR_NAN;
         if (r->joint[i].type != DH_JOINT_REVOLUTE && r->joint[i].type != DH_JOINT_PRISMATIC)
             return DH_ERR_ARG;
     }
     for (i = 0; i < n; i++) {
         const dh_joint *j = &r->joint[i];
-        if (!jac_finite(q[i] + ((j->type == DH_JOINT_REVOLUTE) ? j->theta_deg : j->d)))
+        if (!dh_isfinite_f32(q[i] + ((j->type == DH_JOINT_REVOLUTE) ? j->theta_deg : j->d)))
             return DH_ERR_OVERFLOW;
     }
     return DH_OK;
 }
 
 /* sin, cos of theta and d of joint i at q into t[0..2]. */
-static JAC_NOINLINE void jac_trig(const dh_joint *j, float q, float *t)
+static DH_NOINLINE void jac_trig(const dh_joint *j, float q, float *t)
 {
     if (j->type == DH_JOINT_REVOLUTE) {
         (void)dh_sincos_f32(q + j->theta_deg, &t[0], &t[1]);
@@ -219,7 +204,7 @@ static JAC_NOINLINE void jac_trig(const dh_joint *j, float q, float *t)
 }
 
 /* T_end (may be NULL) = F with the bottom row 0 0 0 1. */
-static JAC_NOINLINE void jac_store(const float *F, dh_mat4_f32 *T_end)
+static DH_NOINLINE void jac_store(const float *F, dh_mat4_f32 *T_end)
 {
     uint32_t c, k;
     if (T_end == NULL) return;
@@ -230,7 +215,7 @@ static JAC_NOINLINE void jac_store(const float *F, dh_mat4_f32 *T_end)
 }
 
 /* Shared body of the two public Jacobians (tool != 0: tool frame). */
-JAC_INLINE dh_status jac_run(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end, int tool)
+DH_INLINE dh_status jac_run(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end, int tool)
 {
     float F[12], t[3];
     uint32_t i;
@@ -300,7 +285,7 @@ int dh_kin_rot_ok_f32_(const float *c0, const float *c1, const float *c2)
  * largest diagonal entry gives the best-conditioned component k_m; the
  * others follow from row m. The sign is the one of u (held in w on entry;
  * ambiguous only at exactly 180 deg, where w and -w are the same rotation,
- * and there k_m > 0 is kept). The seed's diagonal special cases
+ * and there k_m > 0 is kept). The diagonal special cases
  * (1,-1,-1), (-1,1,-1), (-1,-1,1) -> pi e_m are exact instances.
  */
 static void rotvec_big(const float *d, float *w, float tr, float theta)
@@ -323,7 +308,7 @@ static void rotvec_big(const float *d, float *w, float tr, float theta)
 }
 
 /*
- * a(dR) of seed 003. The seed's identity case (diagonal 1, 1, 1 -> 0) is
+ * a(dR) (FloCal, "Inverse Kinematics"). The identity case (diagonal 1, 1, 1 -> 0) is
  * NOT tested on the diagonal alone: in float the diagonal rounds to exactly
  * 1 for angles below ~3e-4 rad while the skew part still carries the
  * rotation. The identity falls out of the general case (u = 0 -> w = 0).
@@ -338,7 +323,7 @@ void dh_kin_rotvec_f32_(const float *d, float *w)
     tr = d[0] + d[4] + d[8] - 1.0f;                         /* = 2 cos(theta) */
     theta = dh_atan2f_(un, tr);               /* in [0, pi]: no acos domain issue */
     if (tr >= 0.0f) {
-        /* theta <= 90 deg: u is accurate (seed's general case). As un -> 0,
+        /* theta <= 90 deg: u is accurate (the general case). As un -> 0,
          * theta/un -> 1/2 (atan2 keeps full relative accuracy there). */
         float f = (un > 0.0f) ? theta / un : 0.5f;
         w[0] *= f;
@@ -375,7 +360,7 @@ dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh
 
     for (i = 0; i < 3u; i++)
         for (j = 0; j < 3u; j++)
-            if (!jac_finite(R_target->m[i][j]) || !jac_finite(R->m[i][j])) return DH_ERR_NAN;
+            if (!dh_isfinite_f32(R_target->m[i][j]) || !dh_isfinite_f32(R->m[i][j])) return DH_ERR_NAN;
     if (!dh_kin_rot_ok_f32_(R_target->m[0], R_target->m[1], R_target->m[2]) ||
         !dh_kin_rot_ok_f32_(R->m[0], R->m[1], R->m[2]))
         return DH_ERR_NOT_RIGID;
@@ -403,7 +388,7 @@ dh_status dh_pose_error_f32(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, f
 
     for (i = 0; i < 4u; i++)
         for (j = 0; j < 3u; j++)
-            if (!jac_finite(T_target->m[i][j]) || !jac_finite(T->m[i][j])) return DH_ERR_NAN;
+            if (!dh_isfinite_f32(T_target->m[i][j]) || !dh_isfinite_f32(T->m[i][j])) return DH_ERR_NAN;
     if (!dh_kin_rot_ok_f32_(T_target->m[0], T_target->m[1], T_target->m[2]) ||
         !dh_kin_rot_ok_f32_(T->m[0], T->m[1], T->m[2]))
         return DH_ERR_NOT_RIGID;

@@ -31,7 +31,7 @@
 int dh_kin_jac_f32_(const dh_robot *r, const float *scd, float *J, float *F);
 
 /*
- * Rotation vector a(dR) of seed 003 (the method of dh_rot_error_f32) for
+ * Rotation vector a(dR) (FloCal, "Inverse Kinematics") (the method of dh_rot_error_f32) for
  * dR given row-major, d[3 * row + col]; writes w[0..2]. Never fails for
  * finite input; d and w must not overlap.
  */

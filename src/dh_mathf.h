@@ -3,26 +3,19 @@
  * of the public API, not installed): libm-free replacements for atan2f and
  * sinf/cosf with a small, fixed stack.
  *
- * Why: newlib's sinf/cosf need 552 bytes of stack on Cortex-M0+ (480 on
- * M4F: a Payne-Hanek reduction with a large local array), more than the
- * 256-byte budget of a public function (tools/check_guards.sh), and cost
- * flash: a firmware calling only dh_rotvec_to_mat3_f32 linked 9792 bytes
- * on M0+ -Os with newlib's sinf/cosf, 5676 with dh_sincosf_ (M4F -Os:
- * 5088 -> 1448; docs/footprint.md). newlib's atan2f needs 88 bytes of
- * stack on M0+, which pushed its callers over the budget.
- * These helpers use no libm, no heap, no mutable data, no recursion and
- * no double (they are -Wdouble-promotion clean); on Cortex-M0+ their only
- * callees are the libgcc soft-float routines (and __aeabi_lmul for the
- * large-argument reduction; the 64-bit to float conversion is done by
- * hand because libgcc's __aeabi_ul2f needs 80 bytes there).
+ * Why: newlib's sinf/cosf need more than the 256-byte stack budget of a
+ * public function on Cortex-M0+ (a Payne-Hanek reduction with a large local
+ * array) and pull in much flash; its atan2f also needs more stack than the
+ * callers can afford. These helpers use no libm, no heap, no mutable data,
+ * no recursion and no double (-Wdouble-promotion clean); on Cortex-M0+ their
+ * only callees are libgcc's soft-float routines (and __aeabi_lmul).
  *
  * Requirements (as dh_trig_f32.c): IEEE binary32, round to nearest, float
  * evaluation (FLT_EVAL_METHOD 0 or assignments rounded as C99 requires),
  * no -ffast-math, no FMA contraction assumed by the error bounds.
  *
- * Accuracy is measured by test/test_mathf.c against double-precision libm
- * (dense sweeps, signed zeros, infinities, NaN); the figures below are the
- * measured maxima on the host.
+ * Accuracy is tested by test/test_mathf.c against double-precision libm
+ * (dense sweeps, signed zeros, infinities, NaN).
  */
 #ifndef DHMATH_SRC_DH_MATHF_H
 #define DHMATH_SRC_DH_MATHF_H
@@ -54,13 +47,7 @@
  *         atan2(+-inf, +inf) = +-pi/4, atan2(+-inf, -inf) = +-3pi/4; the
  *         sign of a zero result is the sign of y. NaN in either argument
  *         returns a NaN (x + y).
- *         Error: <= 2 ulp of the exact result over the whole float range
- *         (test_mathf, 5 seeds: max 1.60 ulp on random directions, 1.55
- *         ulp over random bit patterns incl. subnormal and near FLT_MAX,
- *         1.55 ulp at the octant edges).
- * No aliasing concerns (values). Stack, worst case including libgcc
- * (tools/dh_stack.py): 72 / 64 bytes on Cortex-M0+ at -Os / -O2, 0 / 8 on
- * Cortex-M4F (newlib's atan2f: 88 on M0+, 32 on M4F).
+ *         Error: <= 2 ulp of the exact result over the whole float range.
  */
 float dh_atan2f_(float y, float x);
 
@@ -82,12 +69,7 @@ float dh_atan2f_(float y, float x);
  * @param x angle in radians; NaN or +-Inf gives NaN in both outputs
  * @param s output sin x (not NULL); may not alias c
  * @param c output cos x (not NULL)
- * Error: <= 2 ulp of the exact sin / cos for every finite x (test_mathf,
- * 5 seeds: max 1.53 ulp (sin) / 1.46 ulp (cos) over random bit patterns
- * of the whole range and at the floats nearest multiples of pi/2, 1.47 /
- * 1.46 ulp dense in |x| <= 4 pi; absolute error <= 7.7e-8).
- * Stack, worst case including libgcc: 140 / 148 bytes on Cortex-M0+ at
- * -Os / -O2, 52 / 48 on Cortex-M4F (newlib's sinf: 552 on M0+, 480 on M4F).
+ * Error: <= 2 ulp of the exact sin / cos for every finite x.
  */
 void dh_sincosf_(float x, float *s, float *c);
 
@@ -104,7 +86,7 @@ void dh_sincosf_(float x, float *s, float *c);
 
 /**
  * Square root of x, correctly rounded (IEEE binary32, round to nearest),
- * without libm: 4 bytes of code on an FPU core, an integer digit-by-digit
+ * without libm: one instruction on an FPU core, an integer digit-by-digit
  * root elsewhere. +-0 -> +-0, +Inf -> +Inf, NaN or x < 0 -> NaN.
  */
 float dh_sqrtf_(float x);

@@ -8,17 +8,13 @@
 
 #include "dhmath/dh_rot.h"
 #include "dhmath/dh_trig.h"
-
-static int dh_q_finite(float x)
-{
-    return (x - x) == 0.0f;
-}
+#include "dh_internal.h"
 
 /* max |component|, or -1 if a component is NaN/Inf */
 static float dh_q_maxabs(const dh_quat_f32 *q)
 {
     float m;
-    if (!dh_q_finite(q->w) || !dh_q_finite(q->x) || !dh_q_finite(q->y) || !dh_q_finite(q->z)) {
+    if (!dh_isfinite_f32(q->w) || !dh_isfinite_f32(q->x) || !dh_isfinite_f32(q->y) || !dh_isfinite_f32(q->z)) {
         return -1.0f;
     }
     m = fabsf(q->w);
@@ -172,27 +168,21 @@ void dh_quat_conj_f32(dh_quat_f32 *out, const dh_quat_f32 *q)
 
 dh_status dh_quat_from_axis_angle_f32(dh_quat_f32 *q, const dh_vec3_f32 *axis, float deg)
 {
-    float m, x, y, z, len, s, c;
+    float k[3], len, s, c;
     dh_status st;
     DH_ASSERT(q != NULL && axis != NULL);
-    x = axis->x;
-    y = axis->y;
-    z = axis->z;
-    if (!dh_q_finite(x) || !dh_q_finite(y) || !dh_q_finite(z) || !dh_q_finite(deg)) return DH_ERR_NAN;
-    m = fabsf(x);
-    if (fabsf(y) > m) m = fabsf(y);
-    if (fabsf(z) > m) m = fabsf(z);
-    if (m < FLT_MIN) return DH_ERR_ZERO_AXIS;
-    x /= m;
-    y /= m;
-    z /= m;
-    len = sqrtf(x * x + y * y + z * z);
+    k[0] = axis->x;
+    k[1] = axis->y;
+    k[2] = axis->z;
+    if (!dh_isfinite_f32(deg)) return DH_ERR_NAN;
+    st = dh_axis_prescale_f32(k, &len);
+    if (st != DH_OK) return st;
     st = dh_sincos_f32(0.5f * deg, &s, &c);
     if (st != DH_OK) return st;
     s /= len;
     q->w = c;
-    q->x = s * x;
-    q->y = s * y;
-    q->z = s * z;
+    q->x = s * k[0];
+    q->y = s * k[1];
+    q->z = s * k[2];
     return DH_OK;
 }

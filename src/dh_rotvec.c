@@ -3,9 +3,9 @@
  * maps), skew-symmetric matrices and vee, angular velocity from R and
  * Rdot, the rotation check and re-orthonormalisation of a 3x3 rotation.
  *
- * Math: Rodrigues' formula (seed 003, "From the angle-axis to rotation
- * matrix"; seed 000 eq. 1.70), S(w) = Rdot R^T (seed 003, angular
- * velocity), polar decomposition by the Newton-Schulz iteration.
+ * Math: Rodrigues' formula (Paul 1981 eq. 1.70; FloCal, "Angle Axis"),
+ * S(w) = Rdot R^T (FloCal, "Angular Velocity"), polar decomposition by the
+ * Newton-Schulz iteration.
  */
 #include <float.h>
 #include <math.h>
@@ -14,19 +14,14 @@
 #include "dhmath/dh_mat4.h"
 #include "dhmath/dh_trig.h"
 #include "dh_mathf.h"
-
-/* 1 if x is neither NaN nor infinite (x - x is 0 only for finite x). */
-static int dh_rot_finite(float x)
-{
-    return (x - x) == 0.0f;
-}
+#include "dh_internal.h"
 
 static int dh_mat3_finite(const dh_mat3_f32 *R)
 {
     int c, r;
     for (c = 0; c < 3; c++) {
         for (r = 0; r < 3; r++) {
-            if (!dh_rot_finite(R->m[c][r])) return 0;
+            if (!dh_isfinite_f32(R->m[c][r])) return 0;
         }
     }
     return 1;
@@ -60,7 +55,7 @@ static float dh_mat3_det(const dh_mat3_f32 *R)
 dh_status dh_mat3_check_rot_f32(const dh_mat3_f32 *R, float tol)
 {
     DH_ASSERT(R != NULL);
-    if (!dh_rot_finite(tol) || !(tol >= 0.0f)) return DH_ERR_ARG;
+    if (!dh_isfinite_f32(tol) || !(tol >= 0.0f)) return DH_ERR_ARG;
     if (!dh_mat3_finite(R)) return DH_ERR_NAN;
     if (!(dh_mat3_ortho_dev(R) <= tol)) return DH_ERR_NOT_RIGID;
     if (!(dh_mat3_det(R) > 0.0f)) return DH_ERR_NOT_RIGID;
@@ -74,19 +69,16 @@ dh_status dh_mat3_check_rot_f32(const dh_mat3_f32 *R, float tol)
  */
 static dh_status dh_rot_unit(float x, float y, float z, float k[3])
 {
-    float m, len;
-    if (!dh_rot_finite(x) || !dh_rot_finite(y) || !dh_rot_finite(z)) return DH_ERR_NAN;
-    m = fabsf(x);
-    if (fabsf(y) > m) m = fabsf(y);
-    if (fabsf(z) > m) m = fabsf(z);
-    if (m < FLT_MIN) return DH_ERR_ZERO_AXIS;
-    x /= m;
-    y /= m;
-    z /= m;
-    len = sqrtf(x * x + y * y + z * z); /* in [1, sqrt 3] */
-    k[0] = x / len;
-    k[1] = y / len;
-    k[2] = z / len;
+    float v[3], len;
+    dh_status st;
+    v[0] = x;
+    v[1] = y;
+    v[2] = z;
+    st = dh_axis_prescale_f32(v, &len);
+    if (st != DH_OK) return st;
+    k[0] = v[0] / len;
+    k[1] = v[1] / len;
+    k[2] = v[2] / len;
     return DH_OK;
 }
 
@@ -119,7 +111,7 @@ dh_status dh_axis_angle_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *axis, flo
     float k[3], s, c;
     dh_status st;
     DH_ASSERT(R != NULL && axis != NULL);
-    if (!dh_rot_finite(deg)) return DH_ERR_NAN;
+    if (!dh_isfinite_f32(deg)) return DH_ERR_NAN;
     st = dh_rot_unit(axis->x, axis->y, axis->z, k);
     if (st != DH_OK) return st;
     st = dh_sincos_f32(deg, &s, &c);
@@ -151,7 +143,7 @@ static dh_status dh_mat3_to_mat4_checked(dh_mat4_f32 *T, const dh_mat3_f32 *R)
 
 dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, float *deg)
 {
-    /* The same algorithm as the 4x4 version (seed 000 sec. 13), so a 3x3
+    /* The same algorithm as the 4x4 version (Paul 1981, eq. 1.72-1.103), so a 3x3
      * and a 4x4 holding the same rotation give bitwise the same answer. */
     dh_mat4_f32 T;
     dh_status st;
@@ -168,7 +160,7 @@ dh_status dh_rotvec_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *phi)
     x = phi->x;
     y = phi->y;
     z = phi->z;
-    if (!dh_rot_finite(x) || !dh_rot_finite(y) || !dh_rot_finite(z)) return DH_ERR_NAN;
+    if (!dh_isfinite_f32(x) || !dh_isfinite_f32(y) || !dh_isfinite_f32(z)) return DH_ERR_NAN;
     m = fabsf(x);
     if (fabsf(y) > m) m = fabsf(y);
     if (fabsf(z) > m) m = fabsf(z);
@@ -197,7 +189,7 @@ dh_status dh_rotvec_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *phi)
         t *= m;
         /* |phi| > FLT_MAX: no float angle, reported as DH_ERR_NAN
          * (documented in dh_rot.h) */
-        if (!dh_rot_finite(t)) return DH_ERR_NAN;
+        if (!dh_isfinite_f32(t)) return DH_ERR_NAN;
     }
     dh_sincosf_(0.5f * t, &sh, &ch);     /* libm-free, exact reduction */
     dh_rodrigues(R, k, 2.0f * sh * ch, 1.0f - 2.0f * sh * sh, 2.0f * sh * sh);
@@ -287,7 +279,7 @@ static dh_status dh_angvel_common(dh_vec3_f32 *w, const dh_mat3_f32 *R, const dh
         const float wx = 0.5f * W[2][1] - 0.5f * W[1][2];
         const float wy = 0.5f * W[0][2] - 0.5f * W[2][0];
         const float wz = 0.5f * W[1][0] - 0.5f * W[0][1];
-        if (!dh_rot_finite(wx) || !dh_rot_finite(wy) || !dh_rot_finite(wz)) return DH_ERR_OVERFLOW;
+        if (!dh_isfinite_f32(wx) || !dh_isfinite_f32(wy) || !dh_isfinite_f32(wz)) return DH_ERR_OVERFLOW;
         w->x = wx;
         w->y = wy;
         w->z = wz;
