@@ -85,6 +85,28 @@ DH_INLINE int dh_isfinite_f32(float x)
 
 /* ---- kinematics helpers ---------------------------------------------------- */
 
+/** The rotation check: 1 when the 3x3 with columns c0, c1, c2 (3 floats
+ *  each) has every entry of R^T R - I within tol in magnitude and
+ *  det R = c0 . (c1 x c2) > 0 (a reflection is not a rotation); 0 otherwise,
+ *  also for NaN or overflowing products. */
+DH_INLINE int dh_rot_cols_ok_f32(const float *c0, const float *c1, const float *c2, float tol)
+{
+    const float *col[3];
+    unsigned a, b;
+    col[0] = c0;
+    col[1] = c1;
+    col[2] = c2;
+    for (a = 0; a < 3u; a++) {
+        for (b = a; b < 3u; b++) {
+            float d = col[a][0] * col[b][0] + col[a][1] * col[b][1] + col[a][2] * col[b][2];
+            if (a == b) d -= 1.0f;
+            if (!(fabsf(d) <= tol)) return 0;
+        }
+    }
+    return (c0[0] * (c1[1] * c2[2] - c1[2] * c2[1]) + c0[1] * (c1[2] * c2[0] - c1[0] * c2[2]) +
+            c0[2] * (c1[0] * c2[1] - c1[1] * c2[0])) > 0.0f;
+}
+
 /** An axis (v[0], v[1], v[2]) divided by its largest magnitude, so that its
  *  squares neither overflow nor underflow, and *len = its length then (in
  *  [1, sqrt 3]). DH_ERR_NAN for a NaN/Inf component, DH_ERR_ZERO_AXIS when

@@ -252,30 +252,9 @@ dh_status dh_jacobian_tool_f32(const dh_robot *r, const float *q, float *J, dh_m
 }
 
 /* det of the 3x3 whose columns are c0, c1, c2: c0 . (c1 x c2) */
-static float det3(const float *c0, const float *c1, const float *c2)
-{
-    return c0[0] * (c1[1] * c2[2] - c1[2] * c2[1]) + c0[1] * (c1[2] * c2[0] - c1[0] * c2[2]) +
-           c0[2] * (c1[0] * c2[1] - c1[1] * c2[0]);
-}
-
-/* |x| <= DH_ROT_ERROR_TOL for every entry of R^T R - I, and det R > 0 (a
- * reflection is orthonormal but not a rotation: its a(dR) would be
- * meaningless). */
 int dh_kin_rot_ok_f32_(const float *c0, const float *c1, const float *c2)
 {
-    const float *col[3];
-    uint32_t a, b, k;
-    col[0] = c0;
-    col[1] = c1;
-    col[2] = c2;
-    for (a = 0; a < 3u; a++)
-        for (b = a; b < 3u; b++) {
-            float s = 0.0f;
-            for (k = 0; k < 3u; k++) s += col[a][k] * col[b][k];
-            if (a == b) s -= 1.0f;
-            if (!(fabsf(s) <= DH_ROT_ERROR_TOL)) return 0;   /* NaN fails too */
-        }
-    return det3(c0, c1, c2) > 0.0f;
+    return dh_rot_cols_ok_f32(c0, c1, c2, DH_ROT_ERROR_TOL);
 }
 
 /*

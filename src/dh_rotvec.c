@@ -27,39 +27,12 @@ static int dh_mat3_finite(const dh_mat3_f32 *R)
     return 1;
 }
 
-/* max |(R^T R - I)_ij| over the 6 distinct entries (columns' dot products). */
-static float dh_mat3_ortho_dev(const dh_mat3_f32 *R)
-{
-    float dev = 0.0f, d;
-    int i, j;
-    for (i = 0; i < 3; i++) {
-        for (j = i; j < 3; j++) {
-            d = R->m[i][0] * R->m[j][0] + R->m[i][1] * R->m[j][1] + R->m[i][2] * R->m[j][2];
-            if (i == j) d -= 1.0f;
-            d = fabsf(d);
-            if (d > dev) dev = d;
-        }
-    }
-    return dev;
-}
-
-/* det R = c0 . (c1 x c2) */
-static float dh_mat3_det(const dh_mat3_f32 *R)
-{
-    const float *a = R->m[0], *b = R->m[1], *c = R->m[2];
-    return a[0] * (b[1] * c[2] - b[2] * c[1])
-         + a[1] * (b[2] * c[0] - b[0] * c[2])
-         + a[2] * (b[0] * c[1] - b[1] * c[0]);
-}
-
 dh_status dh_mat3_check_rot_f32(const dh_mat3_f32 *R, float tol)
 {
     DH_ASSERT(R != NULL);
     if (!dh_isfinite_f32(tol) || !(tol >= 0.0f)) return DH_ERR_ARG;
     if (!dh_mat3_finite(R)) return DH_ERR_NAN;
-    if (!(dh_mat3_ortho_dev(R) <= tol)) return DH_ERR_NOT_RIGID;
-    if (!(dh_mat3_det(R) > 0.0f)) return DH_ERR_NOT_RIGID;
-    return DH_OK;
+    return dh_rot_cols_ok_f32(R->m[0], R->m[1], R->m[2], tol) ? DH_OK : DH_ERR_NOT_RIGID;
 }
 
 /*
@@ -308,8 +281,7 @@ dh_status dh_mat3_orthonormalize_f32(dh_mat3_f32 *out, const dh_mat3_f32 *R)
     int step, i, j, r;
     DH_ASSERT(out != NULL && R != NULL);
     if (!dh_mat3_finite(R)) return DH_ERR_NAN;
-    dev = dh_mat3_ortho_dev(R);
-    if (!(dev <= DH_ROT_ORTHO_MAX_DEV) || !(dh_mat3_det(R) > 0.0f)) return DH_ERR_NOT_RIGID;
+    if (!dh_rot_cols_ok_f32(R->m[0], R->m[1], R->m[2], DH_ROT_ORTHO_MAX_DEV)) return DH_ERR_NOT_RIGID;
     X = *R;
     for (step = 0; step <= DH_ORTHO_MAX_STEPS; step++) {
         for (i = 0; i < 3; i++) {
