@@ -46,6 +46,7 @@ extern "C" {
  * - prismatic: [ z_i ; 0 ]                    per length unit of q_i,
  * where z_i / o_i are the z axis / origin of frame i-1 (standard DH) or of
  * frame i (modified DH), base included (Spong et al. 2006, ch. 4).
+ * Measured entry error (metre-sized robots): <= 9.1e-7.
  *
  * @param r  robot (float path), conv standard or modified.
  * @param q  n joint values (deg / length), any finite values (limits are
@@ -64,7 +65,6 @@ extern "C" {
  *         infinity (checked first: J, T_end untouched) or when an entry of
  *         J or of the end frame is not finite (J and T_end hold the
  *         computed values).
- * Measured entry error (metre-sized robots): <= 9.1e-7.
  */
 dh_status dh_jacobian_f32(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end);
 

@@ -267,11 +267,12 @@ void dh_mat4_inv_rigid_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T);
  *         DH_ERR_NAN if any element is NaN/Inf;
  *         DH_ERR_SINGULAR if singular by the criterion above, or
  *         max|T_ij| < FLT_MIN (for affine T: max|R_ij| < FLT_MIN);
- *         DH_ERR_OVERFLOW if an element of the inverse exceeds FLT_MAX, or
- *         if elements falling below FLT_MIN could raise the balanced
- *         residual of the returned matrix by more than 2^-4 (only for
- *         non-affine T with max|T_ij| >= 2^17 and a strongly unbalanced
- *         last row/column). out untouched on error. out may alias T.
+ *         DH_ERR_OVERFLOW if an element of the inverse exceeds FLT_MAX (only
+ *         for max|T_ij| below ~2^-100, or an affine T whose -R^-1 p
+ *         overflows), or if elements falling below FLT_MIN could raise
+ *         the balanced residual of the returned matrix by more than 2^-4
+ *         (only for non-affine T with max|T_ij| >= 2^17 and a strongly
+ *         unbalanced last row/column). out untouched on error; may alias T.
  */
 dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T);
 
