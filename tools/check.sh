@@ -7,12 +7,14 @@
 # -Os), riscv32 compile check, guards
 # (no .data/.bss, no heap/printf, fixed path free of float/64-bit division,
 # stack <= 256 B), config variants, coverage >= 95 % lines / 90 % branches,
-# cppcheck (MISRA addon) + clang-tidy, and a 10 s libFuzzer smoke per target.
+# cppcheck (MISRA addon) + clang-tidy, public contracts (tools/check_contracts.py:
+# function comments <= 30 lines, no history markers in src/ and include/),
+# and a 10 s libFuzzer smoke per target.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
 JOBS=${JOBS:-$(nproc)}
-STAGES=${*:-"host asan m0 m4f m7 small riscv32 guards variants coverage static fuzz apidoc"}
+STAGES=${*:-"host asan m0 m4f m7 small riscv32 guards variants coverage static contracts fuzz apidoc"}
 failed=""
 
 run_stage() {
@@ -55,6 +57,7 @@ for s in $STAGES; do
     variants) [ -x tools/check_variants.sh ] && run_stage variants tools/check_variants.sh ;;
     coverage) [ -x tools/coverage.sh ] && run_stage coverage tools/coverage.sh build/coverage ;;
     static) [ -x tools/static.sh ] && run_stage static bash -c "tools/static.sh && STATIC_BUILD='$ROOT/build/static-small' STATIC_CMAKE_ARGS=-DDH_SMALL=ON tools/static.sh" ;;
+    contracts) run_stage contracts python3 tools/check_contracts.py ;;
     fuzz) [ -x tools/fuzz.sh ] && run_stage fuzz env FUZZ_SEED=${FUZZ_SEED:-20261124} tools/fuzz.sh 10 ;;
     apidoc) run_stage apidoc bash -c 'mkdir -p build && doxygen docs/Doxyfile' ;;
     *) echo "unknown stage $s"; exit 2 ;;

@@ -3,7 +3,7 @@
  * @brief Status codes, configuration, assertion hook and the basic float and
  *        fixed-point value types shared by every dhmath module.
  *
- * Storage convention (seed 000, eq. 1.56): a 4x4 homogeneous transform has
+ * Storage convention (Paul 1981, eq. 1.56): a 4x4 homogeneous transform has
  * columns n, o, a, p; points are column vectors and are transformed as T*u.
  * Matrices are stored COLUMN-MAJOR: element (row r, column c) is m[c][r], so
  * each of n, o, a, p is a contiguous group of floats (see DH_M4()).
@@ -58,7 +58,7 @@ typedef struct {
     float z; /**< z component */
     float w; /**< scale factor: 1 for a point, 0 for a direction */
 } dh_vec4_f32;
-/** Plane as the row vector [a b c d]: points u with a x + b y + c z + d w = 0 (seed eq. 1.19-1.22). */
+/** Plane as the row vector [a b c d]: points u with a x + b y + c z + d w = 0 (Paul 1981 eq. 1.19-1.22). */
 typedef struct {
     float a; /**< x coefficient */
     float b; /**< y coefficient */

@@ -20,26 +20,17 @@
  *   other outputs are still computed normally). There is no wraparound and
  *   no sentinel value.
  * - Any int32 value is accepted in every field of a dh_frame_q (rotation
- *   entries in [-2, 2)). The fast path (one SMULL/SMLAL per product on
- *   Cortex-M3/M4/M7, four 16-bit MULS on Cortex-M0) sums modulo 2^64 and
- *   one deferred range test per call detects both saturation and 64-bit
- *   wraparound; only then an exact overflow-free path recomputes the call
- *   (same bits, saturating correctly). With DH_SMALL=1 (dh_config.h) there
- *   is no second path: when the test fails the entry saturates, its sign
- *   taken from the exact sum of the terms' halved high words (same bits
- *   and statuses as the default build).
+ *   entries in [-2, 2)), with no intermediate overflow; DH_SMALL builds
+ *   give the same bits and statuses (method: docs/design.md, "Fixed-point
+ *   frames").
  * - Outputs may alias inputs (results are computed into locals first).
  * - NULL pointers are programmer errors: DH_ASSERT.
- * - Stack (measured with -fcallgraph-info=su, arm-none-eabi-gcc 12, deepest
- *   call chain, external dh_sincos_q not included): <= 236 bytes on
- *   Cortex-M0+ and <= 188 on Cortex-M4 at -O2, -O3 and -Os.
- * - Cost (QEMU, executed instructions, -O2): dh_frame_mul_q ~226 on
- *   Cortex-M4, ~1360 on Cortex-M0 (-Os: ~222 / ~1240). DH_SMALL builds:
- *   docs/performance_target.md, column "-Os DH_SMALL".
+ * - Every function uses at most 256 bytes of stack.
  *
- * Measured accuracy (test/test_frame_q.c, docs/accuracy_fixed.md) is
- * quoted per function in LSB: 1 LSB of a rotation entry is 2^-30, 1 LSB of
- * a position is 2^-DH_QPOS_FRAC units.
+ * Accuracy is quoted per function in LSB: 1 LSB of a rotation entry is
+ * 2^-30, 1 LSB of a position is 2^-DH_QPOS_FRAC units; equation numbers
+ * are those of Paul 1981. Measured accuracy: docs/accuracy_fixed.md; cost
+ * and stack: docs/performance_target.md, docs/footprint.md.
  */
 #ifndef DHMATH_DH_FIXED_H
 #define DHMATH_DH_FIXED_H
@@ -57,14 +48,14 @@ extern "C" {
 void dh_frame_identity_q(dh_frame_q *F);
 
 /**
- * @brief F = Trans(x, y, z) (seed eq. 1.24): rotation I, position (x, y, z).
+ * @brief F = Trans(x, y, z) (Paul 1981 eq. 1.24): rotation I, position (x, y, z).
  * @param[out] F frame to write.
  * @param x,y,z translation, dh_qpos (DH_QPOS_FRAC fraction bits), any int32.
  */
 void dh_frame_trans_q(dh_frame_q *F, dh_qpos x, dh_qpos y, dh_qpos z);
 
 /**
- * @brief F = Rot(x, deg) (seed eq. 1.32), position 0.
+ * @brief F = Rot(x, deg) (eq. 1.32), position 0.
  *
  * Entries are exactly the dh_sincos_q() values (c, s, and -s), so whole
  * degrees are correctly rounded and multiples of 90 degrees are exact
@@ -73,25 +64,22 @@ void dh_frame_trans_q(dh_frame_q *F, dh_qpos x, dh_qpos y, dh_qpos z);
  * @param deg angle in degrees, Q16.16, any int32 (full range of dh_sincos_q).
  */
 void dh_frame_rotx_q(dh_frame_q *F, dh_q16 deg);
-/** @brief F = Rot(y, deg) (seed eq. 1.33); otherwise as dh_frame_rotx_q(). */
+/** @brief F = Rot(y, deg) (eq. 1.33); otherwise as dh_frame_rotx_q(). */
 void dh_frame_roty_q(dh_frame_q *F, dh_q16 deg);
-/** @brief F = Rot(z, deg) (seed eq. 1.34); otherwise as dh_frame_rotx_q(). */
+/** @brief F = Rot(z, deg) (eq. 1.34); otherwise as dh_frame_rotx_q(). */
 void dh_frame_rotz_q(dh_frame_q *F, dh_q16 deg);
 
 /**
- * @brief F = Rot(k, deg) (seed eq. 1.70), rotation about the axis k through
+ * @brief F = Rot(k, deg) (eq. 1.70), rotation about the axis k through
  *        the origin; position 0.
  *
- * The axis is normalised internally in integer arithmetic (CLZ scaling,
- * Newton inverse square root, one final Newton step on the vector), so any
- * common scale of (kx, ky, kz) is accepted: Q2.30 unit vectors, integers,
- * any int32 values including INT32_MIN (the unit axis is exact to about
- * 2^-44; only an INT32_MIN component costs the others their lowest bit).
- * The matrix is summed in 64 bits with one rounding per entry, then given
- * one Newton re-orthonormalisation step (dh_frame_orthonormalize_chk_q()).
- * Measured (test/test_frame_q.c, 30000 random axes and angles): entries
- * within 1.93 LSB of the double formula with exact sin/cos (this includes
- * dh_sincos_q's own error), |R^T R - I| <= 2 LSB.
+ * The axis is normalised internally in integer arithmetic, so any common
+ * scale of (kx, ky, kz) is accepted: Q2.30 unit vectors, integers, any
+ * int32 values including INT32_MIN (the unit axis is exact to about 2^-44;
+ * only an INT32_MIN component costs the others their lowest bit). The
+ * result is given one re-orthonormalisation step
+ * (dh_frame_orthonormalize_chk_q()). Measured: entries within 1.93 LSB of
+ * the exact formula (dh_sincos_q's error included), |R^T R - I| <= 2 LSB.
  *
  * @param[out] F frame to write.
  * @param kx,ky,kz axis, any common scale (int32).
@@ -103,21 +91,19 @@ dh_status dh_frame_rot_axis_q(dh_frame_q *F, dh_q30 kx, dh_q30 ky, dh_q30 kz, dh
 /**
  * @brief out = A * B (rigid composition: R = Ra Rb, p = Ra pb + pa).
  *
- * 27 + 12 products, one rounding per output: measured <= 0.5 LSB vs. the
- * exact product of the integer inputs (50000 random rigid pairs and 50000
- * pairs with arbitrary int32 entries). May alias A and/or B.
+ * One rounding per output: <= 0.5 LSB vs. the exact product of the integer
+ * inputs. May alias A and/or B.
  * @return DH_OK, or DH_ERR_OVERFLOW if any entry saturated (all 12 entries
  *         written, saturated ones at INT32_MIN / INT32_MAX).
  */
 dh_status dh_frame_mul_q(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B);
 
 /**
- * @brief out = F^-1 for a rigid F (seed eq. 1.57): R' = R^T (exact copy),
+ * @brief out = F^-1 for a rigid F (eq. 1.57): R' = R^T (exact copy),
  *        p' = -R^T p (one rounding per entry, <= 0.5 LSB).
  *
  * Rigidity is not checked: for a non-orthonormal R the result is R^T and
- * -R^T p, not the general inverse. Measured on 50000 random frames (from
- * dh_frame_rot_axis_q and from DH-like chains Rz Trans Rx): T * T^-1 is
+ * -R^T p, not the general inverse. Measured on rigid frames: T * T^-1 is
  * within 4 LSB of I in the rotation and 1 LSB in the position for
  * |p| <= 2^28 LSB (the position error grows with |p| times the
  * orthonormality error). May alias F.
@@ -127,7 +113,7 @@ dh_status dh_frame_inv_q(dh_frame_q *out, const dh_frame_q *F);
 
 /**
  * @brief v = R u + p (point, w = 1). u, v in dh_qpos; may alias.
- *        One rounding per component (measured <= 0.5 LSB vs. exact).
+ *        One rounding per component (<= 0.5 LSB vs. exact).
  * @return DH_OK, or DH_ERR_OVERFLOW if a component saturated (written).
  */
 dh_status dh_frame_apply_point_q(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_q *v);
@@ -146,9 +132,8 @@ dh_status dh_frame_apply_dir_q(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_
  * The step is quadratically convergent: an input error e (largest
  * |R^T R - I| entry) becomes about 3/4 e^2 plus rounding, so frames
  * accumulated over many compositions stay within a few LSB of orthonormal
- * when this is called regularly (measured: 10^5 compositions of small
- * rotations, one step every 64 compositions keeps |R^T R - I| <= 2 LSB;
- * without it the error reached ~23000 LSB). Keeps the sign of det R.
+ * when this is called regularly (e.g. once every 64 compositions). Keeps
+ * the sign of det R.
  * @return DH_OK; DH_ERR_NOT_RIGID (F untouched) if an entry exceeds 1.25 in
  *         magnitude or the error exceeds 1/8 (2^27 LSB), where a single
  *         step would not be reliable. No other status: for the accepted

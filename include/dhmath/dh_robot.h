@@ -6,7 +6,7 @@
  * Joint variables: degrees for revolute joints, the robot's length unit for
  * prismatic joints (float: any unit; fixed: dh_qpos, typically millimetres).
  *
- * Standard DH (seed 003):  A_i = Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i)
+ * Standard DH (Paul 1981): A_i = Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i)
  * Modified DH (Craig):     A_i = Rx(alpha_{i-1}) Tx(a_{i-1}) Rz(theta_i) Tz(d_i)
  * (for modified DH the a/alpha stored in joint i are the ones that precede
  * it, as in Craig's table row i). Revolute: theta_i = q_i + theta offset,
@@ -23,21 +23,11 @@
  *   prepares both paths; dh_robot_add_joint_q() prepares only the fixed one.
  *
  * sin/cos of every alpha are computed once when the joint is added; FK
- * evaluates one sin/cos pair per joint and one affine product per joint,
- * building each link product directly from (sin theta, cos theta, sin alpha,
- * cos alpha, a, d) without forming the link matrix.
- *
- * Accuracy (measured on the host, tests test_fk_f32 / test_fk_q, details
- * and all figures in docs/accuracy_fk.md), 10^4 random configurations
- * within the joint limits per robot:
- * - float FK vs a double reference on the same float parameters and joint
- *   values, robots in metres: position <= 3.0e-7 m, rotation entries
- *   <= 3.1e-7 (Puma 560, UR5, Panda);
- * - fixed FK vs a double reference on the same Q inputs, robots in mm,
- *   DH_QPOS_FRAC 16: position <= 3.6e-5 mm (target 5e-4 mm), rotation
- *   entries <= 4.6 LSB of Q2.30 (target 64 LSB). Position error is about
- *   half an LSB (2^-DH_QPOS_FRAC) per joint plus the rotation error times
- *   the reach.
+ * evaluates one sin/cos pair per joint (method: docs/design.md, "Forward
+ * kinematics"). Error bounds: float FK as dh_fk_f32(), fixed FK as
+ * dh_fk_q(); measured accuracy for the example robots:
+ * docs/accuracy_fk.md; cost and stack: docs/performance_target.md,
+ * docs/footprint.md (every function stays within 256 bytes of stack).
  *
  * Description out of range: dh_robot is a plain caller-owned struct, so
  * its n may hold any value (a corrupted copy, or one made with a larger
@@ -50,17 +40,10 @@
  * used as -INT32_MAX (one LSB), so no intermediate 64-bit sum can wrap;
  * any saturated output entry makes the function return DH_ERR_OVERFLOW.
  *
- * DH_SMALL=1 (dh_config.h): FK and links are one general step for both
- * conventions and every base, twist and length (no fast path, no
- * written-out link); every output and status is the default build's,
- * except that a zero entry of dh_link_f32 (and of the first frame of
- * dh_fk_f32 with an identity base) may have the other sign. Costs:
- * docs/performance_target.md, column "-Os DH_SMALL".
+ * DH_SMALL=1 (dh_config.h): every output and status is the default
+ * build's, except that a zero entry of dh_link_f32 (and of the first frame
+ * of dh_fk_f32 with an identity base) may have the other sign.
  *
- * Stack: worst case including callees and libgcc (tools/dh_stack.py,
- * checked by tools/check_guards.sh against 256 bytes): dh_fk_q 208 / 240
- * bytes on Cortex-M0+ and 160 / 184 on Cortex-M4F at -Os / -O2; the per
- * function figures for every configuration are in docs/footprint.md.
  * No function keeps state; a dh_robot may be shared read-only between
  * threads.
  */
@@ -264,10 +247,8 @@ dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A);
  * Does not check joint limits (see dh_robot_check_limits_f32()). Any finite
  * q is accepted (angle reduction is exact, so the error does not grow with
  * |q|). For R joints the sum q + theta offset is rounded to float once
- * (<= 0.5 ulp of the sum). Measured max error vs a double reference
- * (10^4 configurations within limits, metres): Puma 560 2.3e-7 m / 2.8e-7,
- * UR5 2.1e-7 m / 2.9e-7, Panda 3.0e-7 m / 3.1e-7 (position / rotation
- * entry). See docs/accuracy_fk.md.
+ * (<= 0.5 ulp of the sum). Measured for the example robots in metres:
+ * position <= 3.0e-7 m, rotation entries <= 3.1e-7.
  * @param r robot (not NULL), n >= 1
  * @param q n joint values (not NULL); must not alias T; T must not overlap *r (the chain is built in T)
  * @param T end frame; bottom row written as exactly 0 0 0 1
@@ -308,10 +289,9 @@ dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A);
  * q[i] is dh_q16 degrees for R joints (any int32: theta = q + offset is
  * reduced exactly, no wrap-around error), dh_qpos for P joints. 64-bit
  * accumulation, one rounding per entry and product; no float, no division.
- * Measured max error vs a double reference on the same Q inputs (robots in
- * mm, DH_QPOS_FRAC 16, 10^4 configurations): Puma 560 2.3e-5 mm / 3.9 LSB,
- * UR5 3.5e-5 mm / 4.2 LSB, Panda 3.6e-5 mm / 4.6 LSB (position / rotation
- * entry of Q2.30); targets 5e-4 mm / 64 LSB. See docs/accuracy_fk.md.
+ * Position error about half an LSB per joint plus the rotation error times
+ * the reach; example robots in mm, DH_QPOS_FRAC 16: <= 5e-4 mm and
+ * <= 64 LSB of Q2.30 per rotation entry (measured 3.6e-5 mm, 4.6 LSB).
  * @param r robot (not NULL), n >= 1, fixed path prepared
  * @param q n joint values (not NULL): dh_q16 degrees (R) or dh_qpos (P)
  * @param T output, must not alias q or any part of *r.

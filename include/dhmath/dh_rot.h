@@ -8,7 +8,7 @@
  * Conventions:
  * - a rotation is a dh_mat3_f32, column-major (element row r, column c is
  *   R->m[c][r], read it with DH_M3(R, r, c)); vectors are columns, v' = R v;
- * - Rx(t), Ry(t), Rz(t) are the elementary rotations of seed 000 (eq.
+ * - Rx(t), Ry(t), Rz(t) are the elementary rotations of Paul 1981 (eq.
  *   1.32-1.34), right-handed: Rz(t) has rows (c -s 0), (s c 0), (0 0 1);
  * - angles at the API are in DEGREES, except the rotation vector of the
  *   log / exp maps and the angular velocity, which are in RADIANS (rad and
@@ -27,12 +27,12 @@
  * object; partial overlap of different objects is not allowed), and on a
  * non-OK status every output is left untouched.
  *
- * All functions are float-only (no double arithmetic), reentrant, use no
- * heap and less than 256 bytes of stack. Accuracy figures are measured
- * against double-precision references computed in the tests
- * (test/test_euler.c, test/test_quat.c, test/test_rotvec.c); they are
- * collected in docs/accuracy_rot.md. "Entry error" means
- * max |R_ij - R_ij(exact)| over the nine entries.
+ * All functions are float-only (no double arithmetic, no libm),
+ * reentrant, use no heap and less than 256 bytes of stack. "Entry error"
+ * means max |R_ij - R_ij(exact)| over the nine entries; bounds are against
+ * the exact result for the given float inputs. Measured accuracy:
+ * docs/accuracy_rot.md; cost and stack: docs/performance_target.md,
+ * docs/footprint.md; methods: docs/design.md ("Rotations").
  */
 #ifndef DHMATH_DH_ROT_H
 #define DHMATH_DH_ROT_H
@@ -75,7 +75,7 @@ extern "C" {
  * Upper case = INTRINSIC (rotations about the axes of the moving frame,
  * each applied after the previous one, i.e. post-multiplied): for the
  * angles (a, b, c) given in the order of the letters,
- *   "XYZ": R = Rx(a) Ry(b) Rz(c)   (the XYZ angles of seed 003).
+ *   "XYZ": R = Rx(a) Ry(b) Rz(c)   (the Cardan angles common in robotics).
  * Lower case = EXTRINSIC (rotations about the fixed axes of the reference
  * frame, each pre-multiplied): angles again in the order of the letters,
  *   "xyz": R = Rz(c) Ry(b) Rx(a),
@@ -144,12 +144,9 @@ const char *dh_euler_name(dh_euler_seq seq);
  * @return DH_OK; DH_ERR_ARG if seq is out of range; DH_ERR_NAN if an angle
  *         is NaN or infinite. R untouched on error. ang_deg must not lie
  *         inside R.
- * Method: dh_sincos_f32 of each angle, then three column-pair updates
- * (each elementary rotation only mixes two columns). Entries never hold -0;
- * angles that are multiples of 90 give exact 0/+-1 entries (the result is
- * then bitwise an exact signed permutation matrix).
- * Accuracy (random angles in [-360, 360], all 24 sequences): entry error
- * <= 3e-7 (measured 2.2e-7, see docs/accuracy_rot.md).
+ * Entries never hold -0; angles that are multiples of 90 give exact 0/+-1
+ * entries (the result is then bitwise an exact signed permutation matrix).
+ * Entry error <= 3e-7 for angles in [-360, 360].
  */
 dh_status dh_euler_to_mat3_f32(dh_mat3_f32 *R, dh_euler_seq seq, const float ang_deg[3]);
 
@@ -161,31 +158,20 @@ dh_status dh_euler_to_mat3_f32(dh_mat3_f32 *R, dh_euler_seq seq, const float ang
  * - Tait-Bryan: first and third in (-180, 180], middle in [-90, 90];
  * - proper Euler: first and third in (-180, 180], middle in [0, 180].
  *
- * Gimbal lock policy: the sequence is at its pole when the middle angle is
- * +-90 (Tait-Bryan) or 0 / 180 (proper), where only the sum or difference
- * of the first and third angle is defined. When the measured cosine
- * (Tait-Bryan) or sine (proper) of the middle angle is at most
- * DH_EULER_POLE_TOL (middle angle within 1.4e-5 deg of the pole), the
- * THIRD angle (in the order of the letters, for intrinsic and extrinsic
- * sequences alike, as scipy does) is set to exactly 0 and the whole
- * rotation about the locked axis is put in the first angle. The status is
- * still DH_OK; a caller that needs to know can test the middle angle.
- * Outside the threshold the first and third angles are individually
- * ill-conditioned near the pole (their error grows as ~1e-7 / distance to
- * the pole in radians), but they are computed so that together they still
- * reproduce R: one angle is read from the matrix, the other is fitted to
- * the residual rotation.
+ * Gimbal lock: at the pole (middle angle +-90 Tait-Bryan, 0 / 180 proper)
+ * only the sum or difference of the first and third angle is defined.
+ * When the measured cosine (Tait-Bryan) or sine (proper) of the middle
+ * angle is at most DH_EULER_POLE_TOL, the THIRD angle (in the order of the
+ * letters, intrinsic and extrinsic alike, as scipy does) is exactly 0 and
+ * the whole rotation about the locked axis is in the first. The status is
+ * still DH_OK; a caller that needs to know can test the middle angle. Near
+ * the pole the first and third angles are individually ill-conditioned,
+ * but together they still reproduce R.
  *
- * Accuracy (all 24 sequences; angles are computed directly in degrees by
- * an octant form of atan2, so values near +-90 and +-180 are limited only by
- * the float resolution of the result): the angles reproduce R (exact
- * rotation of the returned float angles vs the input) within 6e-7 per entry
- * everywhere, including at the poles and within 1e-4 deg of them (measured
- * 5.1e-7; most of it is the rounding of three angles to float degrees, half
- * an ulp of 180 being 1.3e-7 rad each). Away from the poles (middle angle at
- * least 1 deg from them) the angles are within 2.5e-5 deg of the exact ones
- * (measured 1.8e-5). Near a pole the middle angle is within 1e-5 deg
- * (measured 7.6e-6, half an ulp of 180).
+ * Error bounds: the exact rotation of the returned angles reproduces R
+ * within 6e-7 per entry everywhere, poles included; with the middle angle
+ * at least 1 deg from a pole the angles are within 2.5e-5 deg of the exact
+ * ones; near a pole the middle angle is within 1e-5 deg.
  *
  * @param R rotation; must pass dh_mat3_check_rot_f32(R, DH_ROT_TOL).
  * @param seq sequence, 0 .. DH_EULER_COUNT-1.
@@ -224,28 +210,21 @@ typedef struct {
  * @return DH_OK; DH_ERR_NAN if a component is NaN/Inf; DH_ERR_ZERO_AXIS if
  *         max |component| < FLT_MIN (zero or denormal quaternion). R
  *         untouched on error.
- * Accuracy (random unit and scaled q): entry error <= 6e-7 (measured
- * 4.9e-7, against the exact rotation of the float q).
+ * Entry error <= 6e-7 against the exact rotation of the float q.
  */
 dh_status dh_quat_to_mat3_f32(dh_mat3_f32 *R, const dh_quat_f32 *q);
 
 /**
- * @brief Unit quaternion of the rotation R (Shepperd's method).
+ * @brief Unit quaternion of the rotation R (Shepperd 1978; no division by
+ *        a small number, no cancellation near 180 degrees).
  *
- * The largest of 4w^2 = 1 + tr R, 4x^2 = 1 + R00 - R11 - R22,
- * 4y^2 = 1 - R00 + R11 - R22, 4z^2 = 1 - R00 - R11 + R22 gives its
- * component by a square root and the other three come from sums and
- * differences of symmetric off-diagonal pairs divided by it, so no
- * division by a small number and no cancellation near 180 degrees.
  * The result is normalised and its sign chosen so that w >= 0 (w is never
  * -0). At exactly 180 degrees (w == 0) the component chosen by the method,
  * that of the largest diagonal entry, is positive (the same axis as
  * dh_mat4_to_axis_angle_f32 and dh_mat3_to_axis_angle_f32 return).
  *
- * Accuracy (random rotations, including dense sweeps of all four branch
- * boundaries and of 180 degrees): components within 2e-7 of the exact
- * unit quaternion (up to the sign ambiguity when |w| < 1e-6; measured
- * 1.65e-7), | |q| - 1 | within 2.4e-7 (measured 1.3e-7).
+ * Error bounds: components within 2e-7 of the exact unit quaternion (up
+ * to the sign ambiguity when |w| < 1e-6), | |q| - 1 | <= 2.4e-7.
  * @return DH_OK; DH_ERR_NAN; DH_ERR_NOT_RIGID (see file comment). q
  *         untouched on error.
  */
@@ -257,7 +236,7 @@ dh_status dh_mat3_to_quat_f32(const dh_mat3_f32 *R, dh_quat_f32 *q);
  * Overflow/underflow free: the largest component is first scaled to about
  * 1, so any finite q with a normal largest component works (1e-30 and
  * 1e30 alike). Result: | |out| - 1 | <= 2.4e-7 and components within
- * 2e-7 of the exact q / |q| (measured 1.4e-7 over 2^-125 .. 2^127).
+ * 2e-7 of the exact q / |q|.
  * @return DH_OK; DH_ERR_NAN if a component is NaN/Inf; DH_ERR_ZERO_AXIS if
  *         max |component| < FLT_MIN (zero or denormal). out untouched on
  *         error; out may alias q.
@@ -285,7 +264,7 @@ void dh_quat_conj_f32(dh_quat_f32 *out, const dh_quat_f32 *q);
  * @param deg angle in degrees, any finite value.
  * @return DH_OK; DH_ERR_NAN if an argument is NaN/Inf; DH_ERR_ZERO_AXIS if
  *         max |axis component| < FLT_MIN. q untouched on error.
- * Accuracy: components within 2e-7 for |deg| <= 720 (measured 1.6e-7).
+ * Error bound: components within 2e-7 for |deg| <= 720.
  */
 dh_status dh_quat_from_axis_angle_f32(dh_quat_f32 *q, const dh_vec3_f32 *axis, float deg);
 
@@ -296,18 +275,15 @@ dh_status dh_quat_from_axis_angle_f32(dh_quat_f32 *q, const dh_vec3_f32 *axis, f
 /**
  * @brief R = Rot(k, deg), the rotation by @p deg degrees about the unit
  *        axis k = axis / |axis| (Rodrigues: R = c I + s [k]x + (1-c) k k^T,
- *        seed 000 eq. 1.70, seed 003).
- * s and c come from dh_sincos_f32(deg). Each diagonal entry is evaluated as
- * c + (1-c) k_i^2 when k_i^2 < 1/2 and as 1 - (1-c)(k_j^2 + k_l^2)
- * otherwise, so a coordinate axis gives bitwise Rx/Ry/Rz(deg) with exact
- * 0/+-1 entries at multiples of 90.
+ *        Paul 1981 eq. 1.70), s and c from dh_sincos_f32(deg).
+ * A coordinate axis gives bitwise Rx/Ry/Rz(deg), with exact 0/+-1 entries
+ * at multiples of 90.
  * @param R output rotation.
  * @param axis any finite non-zero length (normalised here, overflow free).
  * @param deg angle in degrees, any finite value.
  * @return DH_OK; DH_ERR_NAN if an argument is NaN/Inf; DH_ERR_ZERO_AXIS if
  *         max |axis component| < FLT_MIN. R untouched on error.
- * Accuracy (random axis, |deg| <= 720): entry error <= 4e-7 (measured
- * 3.2e-7).
+ * Entry error <= 4e-7 for |deg| <= 720.
  */
 dh_status dh_axis_angle_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *axis, float deg);
 
@@ -315,15 +291,13 @@ dh_status dh_axis_angle_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *axis, flo
  * @brief Unit axis k and angle in [0, 180] degrees of the rotation R, with
  *        R = Rot(k, angle).
  *
- * This is exactly dh_mat4_to_axis_angle_f32 (seed 000 sec. 13, robust
+ * This is exactly dh_mat4_to_axis_angle_f32 (Paul 1981 eq. 1.73-1.103, robust
  * form) applied to R: the same algorithm, results and special cases, for a
  * 3x3 input. At 0 degrees k = (0, 0, 1); at exactly 180 degrees k and -k
  * are the same rotation and the one whose component of the largest
  * diagonal entry is positive is returned; 90 and 180 are exact.
- * Accuracy: see dh_mat4_to_axis_angle_f32; measured here on random
- * rotations and dense sweeps near 0 (1e-9 .. 1e-3 deg) and near and at 180
- * degrees: R reproduced within 3e-7 per entry (measured 2.5e-7), the angle
- * within 2e-5 deg (measured 1.6e-5; 1.8e-10 near 0).
+ * Error bounds, near 0 and at 180 degrees too: R reproduced within 3e-7
+ * per entry, the angle within 2e-5 deg.
  * @param R rotation; must pass dh_mat3_check_rot_f32(R, DH_ROT_TOL).
  * @param axis output unit axis.
  * @param deg output angle in degrees, 0 <= deg <= 180.
@@ -335,12 +309,8 @@ dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, flo
 /**
  * @brief Exponential map: R = exp([phi]x), the rotation by |phi| RADIANS
  *        about phi / |phi| (phi = 0 gives exactly I).
- * Computed as R = I + sin(t) [k]x + 2 sin^2(t/2) [k]x^2 with t = |phi|,
- * k = phi / t and sin/cos of t/2 (radians) from the library's libm-free
- * dh_sincosf_ (exact argument reduction for any float, <= 2 ulp; newlib's
- * sinf needs 552 bytes of stack on Cortex-M0+), so there is no cancellation or
- * series switch for small t and no overflow for large components (|phi|
- * is formed after scaling by the largest component).
+ * No cancellation for small t = |phi| and no overflow for large
+ * components (method: docs/design.md).
  * @param R output rotation.
  * @param phi rotation vector in radians, any finite value whose length
  *        |phi| is also finite (not reduced: a length above 2 pi simply
@@ -349,27 +319,19 @@ dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, flo
  *         components are finite but |phi| exceeds FLT_MAX (e.g. FLT_MAX in
  *         two components: the angle has no float value). R untouched on
  *         error.
- * Accuracy: entry error <= 4e-7 for |phi| <= pi, including 1e-30 .. 1e-2
- * (measured 3.7e-7, 12 seeds); for pi < |phi| <= 4 pi <= 1.5e-7 * |phi|
- * (measured 1.35e-7 * |phi|: mostly the float rounding of |phi| itself).
- * Stack: no libm; 204 / 220 bytes worst case on Cortex-M0+ at -Os / -O2
- * including dh_sincosf_ and libgcc (docs/footprint.md).
+ * Entry error <= 4e-7 for |phi| <= pi (down to 1e-30); <= 1.5e-7 * |phi|
+ * for pi < |phi| <= 4 pi (mostly the float rounding of |phi| itself).
  */
 dh_status dh_rotvec_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *phi);
 
 /**
  * @brief Logarithm map: rotation vector phi = t k (RADIANS) of R, with
  *        t in [0, pi], so that dh_rotvec_to_mat3_f32(phi) == R.
- * Method: the unit quaternion (w, v) of dh_mat3_to_quat_f32 (w >= 0), then
- * phi = v * 2 atan2(|v|, w) / |v| (phi = 0 when v == 0; atan2 is the
- * library's libm-free dh_atan2f_, <= 2 ulp). Accurate down to
- * t == 0 (no division by a small sine) and up to t == pi, where phi and
- * -phi are the same rotation and the sign follows dh_mat3_to_quat_f32.
- * Accuracy: |phi - phi_exact| <= 6e-7 rad for t <= pi - 1e-3 (measured
- * 5.1e-7 over 12 seeds, about pi times the quaternion error; 2.9e-8 for
- * t < 0.1); for t
- * within 1e-3 of pi the direction ambiguity makes only the reproduced
- * matrix meaningful: R reproduced within 5.5e-7 per entry (measured 4.6e-7).
+ * Accurate down to t == 0 and up to t == pi, where phi and -phi are the
+ * same rotation and the sign follows dh_mat3_to_quat_f32 (method:
+ * docs/design.md). Error bounds: |phi - phi_exact| <= 6e-7 rad for
+ * t <= pi - 1e-3; within 1e-3 of pi only the reproduced matrix is
+ * meaningful: R reproduced within 5.5e-7 per entry.
  * @return DH_OK; DH_ERR_NAN; DH_ERR_NOT_RIGID (see file comment). phi
  *         untouched on error.
  */
@@ -377,7 +339,7 @@ dh_status dh_mat3_to_rotvec_f32(const dh_mat3_f32 *R, dh_vec3_f32 *phi);
 
 /**
  * @brief S = [v]x, the skew-symmetric matrix with S u = v x u:
- *        rows (0 -vz vy), (vz 0 -vx), (-vy vx 0) (seed 003).
+ *        rows (0 -vz vy), (vz 0 -vx), (-vy vx 0).
  * Exact (negation only; the zero diagonal is +0). No status.
  */
 void dh_skew_f32(dh_mat3_f32 *S, const dh_vec3_f32 *v);
@@ -394,7 +356,7 @@ void dh_vee_f32(dh_vec3_f32 *v, const dh_mat3_f32 *S);
 
 /**
  * @brief Angular velocity in the REFERENCE (space) frame of a rotating
- *        frame R(t): w = vee(Rdot R^T) (seed 003, S(w) = Rdot R^T).
+ *        frame R(t): w = vee(Rdot R^T) (S(w) = Rdot R^T, Spong et al. 2006).
  * @param w output in rad/s when Rdot is per second (any consistent time
  *        unit; Rdot is dR/dt with the angle in radians).
  * @param R rotation; must pass dh_mat3_check_rot_f32(R, DH_ROT_TOL).
@@ -405,8 +367,7 @@ void dh_vee_f32(dh_vec3_f32 *v, const dh_mat3_f32 *S);
  *         DH_ERR_NOT_RIGID if R is not a rotation; DH_ERR_OVERFLOW if the
  *         inputs are finite but w is not (|Rdot| near FLT_MAX). w
  *         untouched on error.
- * Accuracy: |w - w_exact| <= 3e-7 * max(1, |w|) per component (measured
- * 2.4e-7 for |w| <= 17 rad/s, with R and Rdot rounded from exact data).
+ * Error bound: |w - w_exact| <= 3e-7 * max(1, |w|) per component.
  */
 dh_status dh_angvel_f32(dh_vec3_f32 *w, const dh_mat3_f32 *R, const dh_mat3_f32 *Rdot);
 
@@ -436,15 +397,10 @@ dh_status dh_mat3_check_rot_f32(const dh_mat3_f32 *R, float tol);
  *        closest in the Frobenius norm), for a rotation matrix that has
  *        drifted (accumulated products, integration, Q format conversion).
  *
- * Method: Newton-Schulz iteration X <- X (3 I - X^T X) / 2, which
- * converges quadratically to the polar factor when the singular values of
- * R lie in (0, sqrt 3); the input check below guarantees that. It stops
- * when max |(X^T X - I)_ij| <= 2^-22 (at most 8 steps; a deviation of
- * 0.25 needs 6, one of 1e-3 needs 2), and is not biased towards any column
- * (unlike Gram-Schmidt).
- * Result: max |(out^T out - I)_ij| <= 4e-7 (measured 3.6e-7) and out
- * within 3e-7 per entry of the double-precision polar factor (measured
- * 2.4e-7, for random perturbations of up to 0.05 per entry).
+ * Newton-Schulz iteration, at most 8 steps, not biased towards any column
+ * (method: docs/design.md). Result: max |(out^T out - I)_ij| <= 4e-7 and
+ * out within 3e-7 per entry of the exact polar factor (for perturbations
+ * of up to 0.05 per entry).
  * An exact rotation is returned unchanged within rounding (at most one
  * step is taken).
  * @return DH_OK; DH_ERR_NAN if an entry is NaN/Inf; DH_ERR_NOT_RIGID if
