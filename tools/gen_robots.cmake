@@ -5,14 +5,16 @@
 # Call once per directory, with every target of that directory that needs it.
 set(_dh_robots_root ${CMAKE_CURRENT_LIST_DIR}/..)
 function(dh_robot_tables first)
-  if(NOT DH_ROBOTS_PYTHON3)
-    find_program(DH_ROBOTS_PYTHON3 NAMES python3 REQUIRED)
+  # not DH_*: that cache namespace is the library's options (checked)
+  find_program(DHMATH_ROBOTS_PYTHON3 NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
+  if(NOT DHMATH_ROBOTS_PYTHON3)
+    find_program(DHMATH_ROBOTS_PYTHON3 NAMES python3 REQUIRED)
   endif()
   file(GLOB _dh CONFIGURE_DEPENDS ${_dh_robots_root}/examples/robots/*.dh)
   set(_dir ${CMAKE_CURRENT_BINARY_DIR}/dh_robots)
   add_custom_command(OUTPUT ${_dir}/dh_robots.h
     COMMAND ${CMAKE_COMMAND} -E make_directory ${_dir}
-    COMMAND ${DH_ROBOTS_PYTHON3} ${_dh_robots_root}/tools/gen_robots.py -o ${_dir}/dh_robots.h ${_dh}
+    COMMAND ${DHMATH_ROBOTS_PYTHON3} ${_dh_robots_root}/tools/gen_robots.py -o ${_dir}/dh_robots.h ${_dh}
     DEPENDS ${_dh_robots_root}/tools/gen_robots.py ${_dh}
     COMMENT "Robot tables from examples/robots/*.dh"
     VERBATIM)
