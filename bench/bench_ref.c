@@ -3,33 +3,19 @@
  * forward kinematics used by the benchmark (as a timed peer) and by the
  * accuracy data generator (as the reference).
  *
- * Sources of the tables (same values as examples/robots/):
- *  - Puma 560: P. Corke, Robotics Toolbox for Python, models/DH/Puma560.py
- *    (standard DH; d1 = 0.67183 m pedestal; joint limits of that model).
- *  - UR5: Universal Robots, "Parameters for calculations of kinematics and
- *    dynamics" (standard DH).
+ * The tables are examples/robots/puma560.dh and ur5.dh (sources in their
+ * headers), read at build time by tools/gen_robots.py.
  */
 #include "bench_common.h"
+#include "dh_robots.h"
 
 #include <math.h>
 
 #define BENCH_PI 3.14159265358979323846
 
-const bench_dh_robot bench_puma560 = { "Puma 560", 6, {
-    { 0.0,    0.67183, 90.0,  0.0, -160.0, 160.0 },
-    { 0.4318, 0.0,     0.0,   0.0, -110.0, 110.0 },
-    { 0.0203, 0.15005, -90.0, 0.0, -135.0, 135.0 },
-    { 0.0,    0.4318,  90.0,  0.0, -266.0, 266.0 },
-    { 0.0,    0.0,     -90.0, 0.0, -100.0, 100.0 },
-    { 0.0,    0.0,     0.0,   0.0, -266.0, 266.0 } } };
-
-const bench_dh_robot bench_ur5 = { "UR5", 6, {
-    { 0.0,      0.089159, 90.0,  0.0, -360.0, 360.0 },
-    { -0.425,   0.0,      0.0,   0.0, -360.0, 360.0 },
-    { -0.39225, 0.0,      0.0,   0.0, -360.0, 360.0 },
-    { 0.0,      0.10915,  90.0,  0.0, -360.0, 360.0 },
-    { 0.0,      0.09465,  -90.0, 0.0, -360.0, 360.0 },
-    { 0.0,      0.0823,   0.0,   0.0, -360.0, 360.0 } } };
+#define BENCH_JOINT(type, a, d, alpha, theta, qmin, qmax) { a, d, alpha, theta, qmin, qmax },
+const bench_dh_robot bench_puma560 = { "Puma 560", DHR_PUMA560_N, { DHR_PUMA560_JOINTS(BENCH_JOINT) } };
+const bench_dh_robot bench_ur5 = { "UR5", DHR_UR5_N, { DHR_UR5_JOINTS(BENCH_JOINT) } };
 
 /* T <- T * A for 4x4 column-major double matrices (plain triple loop). */
 static void mul4(double T[4][4], double A[4][4])

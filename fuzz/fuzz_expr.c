@@ -1,5 +1,5 @@
 /*
- * fuzz_expr.c - the CLI's EXPR parser/evaluator (tools/dh_expr.h) on
+ * fuzz_expr.c - the CLI's EXPR parser/evaluator (cli/dh_expr.h) on
  * arbitrary bytes.
  *
  * Invariants:

@@ -1,5 +1,5 @@
 /*
- * fuzz_robotfile.c - the CLI's robot-file parser (tools/dh_robotfile.h) on
+ * fuzz_robotfile.c - the CLI's robot-file parser (cli/dh_robotfile.h) on
  * arbitrary bytes, then the library robot built from every file it
  * accepts, and forward kinematics on both paths.
  *

@@ -1,4 +1,4 @@
-# Host-only tests of the dhmath command-line tool (tools/). Included by
+# Host-only tests of the dhmath command-line tool (cli/). Included by
 # test/CMakeLists.txt when not cross-compiling. Each group of
 # test/cli/run_cli_tests.py is one ctest test (the script needs only the
 # Python standard library); cli_fuzz_parsers runs the parsers on mutated
@@ -18,10 +18,8 @@ if(DH_BUILD_TOOLS)
     COMMAND sh ${PROJECT_SOURCE_DIR}/tools/demo.sh $<TARGET_FILE_DIR:dhmath_cli>)
   set_tests_properties(cli_demo PROPERTIES TIMEOUT 600 LABELS cli)
 
-  add_executable(cli_fuzz_parsers ${CMAKE_CURRENT_SOURCE_DIR}/cli/fuzz_parsers.c
-    ${PROJECT_SOURCE_DIR}/tools/dh_expr.c ${PROJECT_SOURCE_DIR}/tools/dh_robotfile.c)
-  target_include_directories(cli_fuzz_parsers PRIVATE ${PROJECT_SOURCE_DIR}/tools)
-  target_link_libraries(cli_fuzz_parsers PRIVATE dhmath)
+  add_executable(cli_fuzz_parsers ${CMAKE_CURRENT_SOURCE_DIR}/cli/fuzz_parsers.c)
+  target_link_libraries(cli_fuzz_parsers PRIVATE dhmath_parsers)
   set_target_properties(cli_fuzz_parsers PROPERTIES C_STANDARD 99 C_EXTENSIONS OFF)
   target_compile_options(cli_fuzz_parsers PRIVATE -Wall -Wextra -Werror)
   add_test(NAME cli_fuzz_parsers COMMAND cli_fuzz_parsers 200000)

@@ -3,60 +3,26 @@
  * reference forward kinematics (see support_robots.h for sources).
  */
 #include "support_robots.h"
+#include "dh_robots.h"
 #include "dht.h"
 
 #include <math.h>
 
 #define DHS_PI 3.14159265358979323846
 #define DHS_R2D (180.0 / DHS_PI)
-#define DHS_S45 0.70710678118654752440
 
-#define DHS_IDENT { { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 }, { 0, 0, 0, 1 } } }
-/* trans(0,0,z) * rotz(-45 deg), column-major */
-#define DHS_PANDA_HAND(z) { { { DHS_S45, -DHS_S45, 0, 0 }, { DHS_S45, DHS_S45, 0, 0 }, \
-                              { 0, 0, 1, 0 }, { 0, 0, (z), 1 } } }
+/* The tables: examples/robots/ *.dh, turned into macros at build time by
+ * tools/gen_robots.py (panda_mm is panda.dh with lengths times 1000). */
+#define DHS_JOINT(type, a, d, alpha, theta, qmin, qmax) { type, a, d, alpha, theta, qmin, qmax },
+#define DHS_ROBOT(R) { DHR_##R##_NAME, DHR_##R##_CONV, DHR_##R##_N, DHR_##R##_UNIT_PER_M, \
+                       { DHR_##R##_JOINTS(DHS_JOINT) }, DHR_##R##_BASE, DHR_##R##_TOOL }
 
-#define R_ DH_JOINT_REVOLUTE
-
-/* Puma 560, standard DH (RTB-Python models/DH/Puma560.py). */
-#define PUMA_TABLE(u) { \
-    { R_, 0, 0.67183 * (u), 90, 0, -160, 160 }, \
-    { R_, 0.4318 * (u), 0, 0, 0, -110, 110 }, \
-    { R_, 0.0203 * (u), 0.15005 * (u), -90, 0, -135, 135 }, \
-    { R_, 0, 0.4318 * (u), 90, 0, -266, 266 }, \
-    { R_, 0, 0, -90, 0, -100, 100 }, \
-    { R_, 0, 0, 0, 0, -266, 266 } }
-
-const dhs_robot dhs_puma560_m = { "puma560", DH_CONV_STANDARD, 6, 1.0, PUMA_TABLE(1.0), DHS_IDENT, DHS_IDENT };
-const dhs_robot dhs_puma560_mm = { "puma560_mm", DH_CONV_STANDARD, 6, 1000.0, PUMA_TABLE(1000.0), DHS_IDENT, DHS_IDENT };
-
-/* UR5, standard DH (Universal Robots' published parameters). */
-#define UR5_TABLE(u) { \
-    { R_, 0, 0.089159 * (u), 90, 0, -360, 360 }, \
-    { R_, -0.425 * (u), 0, 0, 0, -360, 360 }, \
-    { R_, -0.39225 * (u), 0, 0, 0, -360, 360 }, \
-    { R_, 0, 0.10915 * (u), 90, 0, -360, 360 }, \
-    { R_, 0, 0.09465 * (u), -90, 0, -360, 360 }, \
-    { R_, 0, 0.0823 * (u), 0, 0, -360, 360 } }
-
-const dhs_robot dhs_ur5_m = { "ur5", DH_CONV_STANDARD, 6, 1.0, UR5_TABLE(1.0), DHS_IDENT, DHS_IDENT };
-const dhs_robot dhs_ur5_mm = { "ur5_mm", DH_CONV_STANDARD, 6, 1000.0, UR5_TABLE(1000.0), DHS_IDENT, DHS_IDENT };
-
-/* Franka Emika Panda, modified DH (Craig): a/alpha of row i precede joint i.
- * Flange d = 0.107 on joint 7; hand: trans(0,0,0.103) rotz(-45). */
-#define PANDA_TABLE(u) { \
-    { R_, 0, 0.333 * (u), 0, 0, -2.8973 * DHS_R2D, 2.8973 * DHS_R2D }, \
-    { R_, 0, 0, -90, 0, -1.7628 * DHS_R2D, 1.7628 * DHS_R2D }, \
-    { R_, 0, 0.316 * (u), 90, 0, -2.8973 * DHS_R2D, 2.8973 * DHS_R2D }, \
-    { R_, 0.0825 * (u), 0, 90, 0, -3.0718 * DHS_R2D, -0.0698 * DHS_R2D }, \
-    { R_, -0.0825 * (u), 0.384 * (u), -90, 0, -2.8973 * DHS_R2D, 2.8973 * DHS_R2D }, \
-    { R_, 0, 0, 90, 0, -0.0175 * DHS_R2D, 3.7525 * DHS_R2D }, \
-    { R_, 0.088 * (u), 0.107 * (u), 90, 0, -2.8973 * DHS_R2D, 2.8973 * DHS_R2D } }
-
-const dhs_robot dhs_panda_m = { "panda", DH_CONV_MODIFIED, 7, 1.0, PANDA_TABLE(1.0), DHS_IDENT,
-                                DHS_PANDA_HAND(0.103) };
-const dhs_robot dhs_panda_mm = { "panda_mm", DH_CONV_MODIFIED, 7, 1000.0, PANDA_TABLE(1000.0), DHS_IDENT,
-                                 DHS_PANDA_HAND(103.0) };
+const dhs_robot dhs_puma560_m = DHS_ROBOT(PUMA560);
+const dhs_robot dhs_puma560_mm = DHS_ROBOT(PUMA560_MM);
+const dhs_robot dhs_ur5_m = DHS_ROBOT(UR5);
+const dhs_robot dhs_ur5_mm = DHS_ROBOT(UR5_MM);
+const dhs_robot dhs_panda_m = DHS_ROBOT(PANDA);
+const dhs_robot dhs_panda_mm = DHS_ROBOT(PANDA_MM);
 
 /* ------------------------------------------------------------------------ */
 

@@ -12,17 +12,9 @@
  * length unit (m for the *_m models, mm for the *_mm models).
  * Matrices are column-major like dh_mat4_f32: m[col][row].
  *
- * Sources of the tables (also in examples/robots/ *.dh):
- *  - Puma 560: P. Corke, Robotics Toolbox for Python, models/DH/Puma560.py
- *    (standard DH, d1 = 26.45 in = 0.67183 m pedestal, joint limits of that
- *    model: +-160, +-110, +-135, +-266, +-100, +-266 deg).
- *  - UR5: Universal Robots, "Parameters for calculations of kinematics and
- *    dynamics" (standard DH, d1 = 0.089159, a2 = -0.425, a3 = -0.39225,
- *    d4 = 0.10915, d5 = 0.09465, d6 = 0.0823; joints +-360 deg).
- *  - Panda: Franka Emika, "Robot and interface specifications" / control
- *    parameters page (modified DH, Craig), flange d = 0.107 folded into
- *    joint 7 as in Corke's RTB Panda model, tool trans(0,0,0.103) rotz(-45)
- *    (the hand); limits from the same page (rad converted to deg).
+ * The tables are examples/robots/ *.dh (sources and units in their header
+ * comments), read at build time by tools/gen_robots.py; panda_mm is panda.dh
+ * with lengths times 1000.
  */
 #ifndef SUPPORT_ROBOTS_H
 #define SUPPORT_ROBOTS_H
@@ -49,7 +41,7 @@ typedef struct {
     dhs_mat4_d base, tool;
 } dhs_robot;
 
-/* The shipped models (same tables as examples/robots/ *.dh). */
+/* The shipped models (examples/robots/ *.dh). */
 extern const dhs_robot dhs_puma560_m, dhs_puma560_mm;
 extern const dhs_robot dhs_ur5_m, dhs_ur5_mm;
 extern const dhs_robot dhs_panda_m, dhs_panda_mm;

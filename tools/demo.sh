@@ -5,14 +5,14 @@
 #
 #   tools/demo.sh [BUILD_DIR]    default BUILD_DIR: build
 #
-# The binary is BUILD_DIR/tools/dhmath (or BUILD_DIR/dhmath). Exit status 0
+# The binary is BUILD_DIR/cli/dhmath (or BUILD_DIR/dhmath). Exit status 0
 # when every step worked and both round trips converged and reproduce the
 # joint values' end frame.
 set -eu
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 B=${1:-build}
 case $B in /*) ;; *) B=$ROOT/$B ;; esac
-if [ -x "$B/tools/dhmath" ]; then D=$B/tools/dhmath
+if [ -x "$B/cli/dhmath" ]; then D=$B/cli/dhmath
 elif [ -x "$B/dhmath" ]; then D=$B/dhmath
 else
   echo "demo.sh: no dhmath binary in $B (build first: cmake -S . -B build && cmake --build build)" >&2

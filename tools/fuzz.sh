@@ -2,7 +2,8 @@
 # tools/fuzz.sh [seconds] - build the libFuzzer targets of fuzz/ with clang
 # (-fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all), run each
 # for N seconds (default 60), then replay the committed seed corpus
-# fuzz/corpus/<target>/ once. `tools/fuzz.sh 10` is the CI smoke;
+# fuzz/corpus/<target>/ once (fuzz_robotfile also starts from and replays
+# the shipped robots, examples/robots/*.dh). `tools/fuzz.sh 10` is the CI smoke;
 # `tools/fuzz.sh 0` only builds and replays the corpus.
 #
 # Environment: FUZZ_SEED (libFuzzer -seed; check.sh sets one for CI), CC (default clang), FUZZ_TARGETS (default: every
@@ -30,21 +31,21 @@ TARGETS=${FUZZ_TARGETS:-$(cd fuzz && ls fuzz_*.c | sed 's/\.c$//' | tr '\n' ' ')
 mkdir -p "$B/obj" "$B/bin" "$B/logs" "$B/artifacts"
 
 SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-CFLAGS="-std=c99 -O1 -g $SAN -Wall -Wextra -I$ROOT/include -I$ROOT/src -I$ROOT/port -I$ROOT/tools"
+CFLAGS="-std=c99 -O1 -g $SAN -Wall -Wextra -I$ROOT/include -I$ROOT/src -I$ROOT/port -I$ROOT/cli"
 # -Werror only for the fuzz targets: the library's warning policy is
 # enforced by its own CMake build and by tools/static.sh; a clang-only
 # warning there must not stop the fuzzing.
 TFLAGS="-Werror"
 
-# ---- build: library + CLI parsers once (fuzzer-no-link, in parallel), then
+# ---- build: library + CLI parsers (cli/, the dhmath_parsers library) once (fuzzer-no-link, in parallel), then
 # each target linked with them. Objects are rebuilt when their source, any
 # header or this script is newer.
 JOBS=${JOBS:-$(nproc)}
-newest_h=$(find include port src tools fuzz -name '*.h' -newer "$B/stamp" 2>/dev/null | head -1 || true)
+newest_h=$(find include port src cli fuzz -name '*.h' -newer "$B/stamp" 2>/dev/null | head -1 || true)
 [ -f "$B/stamp" ] || newest_h=force
 objs=()
 pids=()
-for f in src/*.c tools/dh_expr.c tools/dh_robotfile.c; do
+for f in src/*.c cli/dh_expr.c cli/dh_robotfile.c; do
   o="$B/obj/$(echo "$f" | tr '/' '_').o"
   objs+=("$o")
   if [ -n "$newest_h" ] || [ ! -f "$o" ] || [ "$f" -nt "$o" ] || [ "$0" -nt "$o" ]; then
@@ -75,6 +76,13 @@ if [ $bad -ne 0 ]; then
 fi
 t1=$(date +%s)
 
+# corpus directories read besides fuzz/corpus/<target>/
+extra_corpus() {
+  case $1 in
+    fuzz_robotfile) echo examples/robots ;;
+  esac
+}
+
 # ---- fuzz each target for SECS seconds, starting from the committed corpus
 failed=""
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
@@ -89,7 +97,7 @@ if [ "$SECS" -gt 0 ]; then
     [ -n "${FUZZ_SEED:-}" ] && dict+=(-seed="$FUZZ_SEED")
     if ! "$B/bin/$t" "${dict[@]}" -max_total_time="$SECS" -timeout=5 -rss_limit_mb=2048 -max_len=4096 \
          -artifact_prefix="$B/artifacts/$t-" -print_final_stats=1 \
-         "$B/work/$t" "fuzz/corpus/$t" >"$B/logs/$t.log" 2>&1; then
+         "$B/work/$t" "fuzz/corpus/$t" $(extra_corpus "$t") >"$B/logs/$t.log" 2>&1; then
       echo "--- $t: FAILED (log $B/logs/$t.log) ---"
       grep -E "invariant failed|ERROR: |runtime error|SUMMARY|Test unit written|^  " "$B/logs/$t.log" | head -20 || true
       failed="$failed $t"
@@ -104,9 +112,10 @@ fi
 nrep=0
 for t in $TARGETS; do
   files=()
-  if [ -d "fuzz/corpus/$t" ]; then
-    while IFS= read -r -d '' f; do files+=("$f"); done < <(find "fuzz/corpus/$t" -type f -print0 | sort -z)
-  fi
+  for d in "fuzz/corpus/$t" $(extra_corpus "$t"); do
+    [ -d "$d" ] || continue
+    while IFS= read -r -d '' f; do files+=("$f"); done < <(find "$d" -type f -print0 | sort -z)
+  done
   [ ${#files[@]} -eq 0 ] && continue
   nrep=$((nrep + ${#files[@]}))
   if ! "$B/bin/$t" -timeout=5 "${files[@]}" >"$B/logs/$t.replay.log" 2>&1; then

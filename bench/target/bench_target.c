@@ -37,6 +37,7 @@
 #include <string.h>
 
 #include "bench_target.h"
+#include "dh_robots.h"
 
 #ifndef BENCH_CORE
 #define BENCH_CORE "unknown core"
@@ -216,17 +217,12 @@ static dh_q16 bt_to_q16(float deg)
     return (dh_q16)(x < 0.0f ? x - 0.5f : x + 0.5f);
 }
 
-/* Puma 560, standard DH, metres: Corke's Robotics Toolbox (RTB-Python
- * models/DH/Puma560.py), the same table as test/support_robots.c and
- * bench/bench_ref.c. Columns: a, d, alpha (deg), joint limits (deg). */
-static const float bt_puma_tab[6][5] = {
-    { 0.0f,    0.67183f, 90.0f,  -160.0f, 160.0f },
-    { 0.4318f, 0.0f,     0.0f,   -110.0f, 110.0f },
-    { 0.0203f, 0.15005f, -90.0f, -135.0f, 135.0f },
-    { 0.0f,    0.4318f,  90.0f,  -266.0f, 266.0f },
-    { 0.0f,    0.0f,     -90.0f, -100.0f, 100.0f },
-    { 0.0f,    0.0f,     0.0f,   -266.0f, 266.0f },
-};
+/* Puma 560, standard DH, metres: examples/robots/puma560.dh (through
+ * tools/gen_robots.py at build time). Columns: a, d, alpha (deg), joint
+ * limits (deg). */
+#define BT_JOINT(type, a, d, alpha, theta, qmin, qmax) \
+    { (float)(a), (float)(d), (float)(alpha), (float)(qmin), (float)(qmax) },
+static const float bt_puma_tab[6][5] = { DHR_PUMA560_JOINTS(BT_JOINT) };
 
 static uint32_t bt_robot(dh_robot *r, float scale)
 {

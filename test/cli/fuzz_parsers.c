@@ -1,6 +1,6 @@
 /*
- * fuzz_parsers.c - robustness harness of the CLI parsers (tools/dh_expr.c,
- * tools/dh_robotfile.c).
+ * fuzz_parsers.c - robustness harness of the CLI parsers (cli/dh_expr.c,
+ * cli/dh_robotfile.c).
  *
  * Two ways to run it:
  *  - libFuzzer: build with -DDH_FUZZ_LIBFUZZER -fsanitize=fuzzer,address and

@@ -21,8 +21,8 @@
  *
  * No heap, no globals, never reads outside buf[0..len).
  */
-#ifndef DHMATH_TOOLS_DH_ROBOTFILE_H
-#define DHMATH_TOOLS_DH_ROBOTFILE_H
+#ifndef DHMATH_CLI_DH_ROBOTFILE_H
+#define DHMATH_CLI_DH_ROBOTFILE_H
 
 #include <stddef.h>
 
@@ -89,4 +89,4 @@ int dh_robotfile_parse(const char *name, const char *buf, size_t len, dh_robotfi
 int dh_robotfile_build(const char *name, const dh_robotfile *rf, int fixed, dh_robot *r,
                        dh_rf_error *err);
 
-#endif /* DHMATH_TOOLS_DH_ROBOTFILE_H */
+#endif /* DHMATH_CLI_DH_ROBOTFILE_H */

@@ -17,8 +17,8 @@
  * contain any bytes. Every malformed input gives an error with the 0-based
  * byte offset of the problem and a message naming it.
  */
-#ifndef DHMATH_TOOLS_DH_EXPR_H
-#define DHMATH_TOOLS_DH_EXPR_H
+#ifndef DHMATH_CLI_DH_EXPR_H
+#define DHMATH_CLI_DH_EXPR_H
 
 #include <stddef.h>
 
@@ -81,4 +81,4 @@ const char *dh_expr_parse_number(const char *buf, size_t len, double *out);
  */
 void dh_expr_quote(char *dst, size_t cap, const char *s, size_t n, size_t shown_max);
 
-#endif /* DHMATH_TOOLS_DH_EXPR_H */
+#endif /* DHMATH_CLI_DH_EXPR_H */
