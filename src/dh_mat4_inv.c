@@ -98,15 +98,13 @@ void dh_mat4_inv_rigid_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
     float px, py, pz;
     DH_ASSERT(out != NULL && T != NULL);
-    px = T->m[3][0];
-    py = T->m[3][1];
-    pz = T->m[3][2];
 #if DH_FAST_PATHS
     {
         /* unrolled: every element read before the first write */
         const float nx = T->m[0][0], ny = T->m[0][1], nz = T->m[0][2];
         const float ox = T->m[1][0], oy = T->m[1][1], oz = T->m[1][2];
         const float ax = T->m[2][0], ay = T->m[2][1], az = T->m[2][2];
+        px = T->m[3][0]; py = T->m[3][1]; pz = T->m[3][2];
         out->m[0][0] = nx; out->m[0][1] = ox; out->m[0][2] = ax; out->m[0][3] = 0.0f;
         out->m[1][0] = ny; out->m[1][1] = oy; out->m[1][2] = ay; out->m[1][3] = 0.0f;
         out->m[2][0] = nz; out->m[2][1] = oz; out->m[2][2] = az; out->m[2][3] = 0.0f;
@@ -117,8 +115,11 @@ void dh_mat4_inv_rigid_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
         return;
     }
 #endif
-    /* R^T by pair swaps that read both elements before writing either,
-     * then the same translation products from R^T as stored in out */
+    /* p first, R^T by pair swaps that read both elements before writing
+     * either, then the same translation products from R^T as stored */
+    px = T->m[3][0];
+    py = T->m[3][1];
+    pz = T->m[3][2];
     {
         int i, j;
         for (i = 0; i < 3; i++) {
