@@ -162,7 +162,7 @@ DH_INLINE float dh_at(const dh_mat4_f32 *M, int i, int j, float s, int aff)
 
 /* element (i, j) of the row view weighted like D^-1 . D with w in place of
  * sg: column 3 of rows 0..2 times w, columns 0..2 of row 3 over w */
-static DH_NOINLINE float dh_wt(float q, int i, int j, float w)
+static DH_NOINLINE DH_COLD float dh_wt(float q, int i, int j, float w)
 {
     if (i < 3) return (j < 3) ? q : q * w;
     return (j < 3) ? q / w : q;
@@ -181,8 +181,8 @@ static DH_NOINLINE float dh_wt(float q, int i, int j, float w)
  * A zero stored as +0 instead of -0 changes no later sum, comparison or
  * unscaled value.
  */
-static DH_NOINLINE float dh_bnorm(const dh_mat4_f32 *X, const dh_mat4_f32 *M, float s, float sg, int aff,
-                                  dh_mat4_f32 *W, float g)
+static DH_NOINLINE DH_COLD float dh_bnorm(const dh_mat4_f32 *X, const dh_mat4_f32 *M, float s, float sg, int aff,
+                                          dh_mat4_f32 *W, float g)
 {
     float res = 0.0f, t = 0.0f;
     int i, j, k;
@@ -217,7 +217,7 @@ static DH_NOINLINE float dh_bnorm(const dh_mat4_f32 *X, const dh_mat4_f32 *M, fl
 /* the four elements of X with the indices u + n st, n = 0..3, exchanged
  * with those at v + n st (element index 4 i + j for X->m[i][j]): rows
  * u / 4, v / 4 with st = 1, columns u, v with st = 4; u == v is a no-op */
-static DH_NOINLINE void dh_swap4(dh_mat4_f32 *X, unsigned u, unsigned v, unsigned st)
+static DH_NOINLINE DH_COLD void dh_swap4(dh_mat4_f32 *X, unsigned u, unsigned v, unsigned st)
 {
     unsigned a = u, b = v, n;
     for (n = 0u; n < 4u; n++) {
@@ -235,7 +235,7 @@ static DH_NOINLINE void dh_swap4(dh_mat4_f32 *X, unsigned u, unsigned v, unsigne
  * multiplication by the reciprocal). Returns 0 on an exactly zero pivot
  * (X then undefined).
  */
-static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
+static DH_NOINLINE DH_COLD int dh_inv_gauss_jordan(dh_mat4_f32 *X)
 {
     unsigned perm = 0u; /* pivot row of step k in bits 6 - 2k, 7 - 2k */
     int i, j, k;
@@ -277,7 +277,7 @@ static DH_NOINLINE int dh_inv_gauss_jordan(dh_mat4_f32 *X)
  * factor sg (1 for affine T) in X->m[0][0] of the scratch X (no pointer
  * to a local in the caller: a small frame on Cortex-M0+).
  */
-static DH_NOINLINE float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_f32 *X)
+static DH_NOINLINE DH_COLD float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_f32 *X)
 {
     float mx = 0.0f, s = 0.0f, z = 0.0f, cp = 0.0f, rq = 0.0f, m3 = 0.0f, sg = 1.0f, pn = 0.0f;
     uint32_t e, b;
@@ -318,7 +318,7 @@ static DH_NOINLINE float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_f32 *X)
 
 /* The general path (see the top of the file) into the scratch X (must not
  * alias T; undefined on error). */
-static DH_NOINLINE dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 *T)
+static DH_NOINLINE DH_COLD dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
     const int aff = dh_is_affine(T);
     const float s = dh_scan(T, aff, X), sg = X->m[0][0];
@@ -483,6 +483,15 @@ static DH_NOINLINE void dh_proj_phase2(dh_mat4_f32 *X, const dh_mat4_f32 *M, flo
     X->m[2][3] = (-a20 * s4 + a21 * s2 - a23 * s0) * f + 0.0f;
     X->m[3][3] = (a20 * s3 - a21 * s1 + a22 * s0) * f + 0.0f;
 }
+
+/* X (must not alias M) = M^-1 and 1, or 0 (X partly written) */
+static DH_NOINLINE int dh_inv_proj(dh_mat4_f32 *X, const dh_mat4_f32 *M)
+{
+    const float f = dh_proj_phase1(X, M);
+    if (f == 0.0f) return 0;
+    dh_proj_phase2(X, M, f);
+    return 1;
+}
 #endif
 
 /*
@@ -492,32 +501,31 @@ static DH_NOINLINE void dh_proj_phase2(dh_mat4_f32 *X, const dh_mat4_f32 *M, flo
 DH_INLINE dh_status dh_inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
 #if DH_FAST_PATHS
-    if (dh_is_affine(T)) {
-        if (dh_inv_affine_scaled(X, T)) return DH_OK;
-    } else {
-        const float f = dh_proj_phase1(X, T);
-        if (f != 0.0f) {
-            dh_proj_phase2(X, T, f);
-            return DH_OK;
-        }
-    }
+    if (dh_is_affine(T) ? dh_inv_affine_scaled(X, T) : dh_inv_proj(X, T)) return DH_OK;
 #endif
     return dh_inv_certified(X, T);
 }
 
-/* out untouched on error, out may alias T */
-dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+/* The public general inverse (out untouched on error, out may alias T),
+ * inlined into its two callers: no extra frame on the general path. */
+DH_INLINE dh_status dh_inv_general(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
     dh_mat4_f32 X;
     dh_status st;
-    DH_ASSERT(out != NULL && T != NULL);
 #if DH_FAST_PATHS
     /* affine fast path straight into out (dh_inv_affine reads T first) */
     if (dh_is_affine(T) && dh_inv_affine_scaled(out, T)) return DH_OK;
 #endif
     st = dh_inv_into(&X, T);
-    if (st == DH_OK) *out = X;
-    return st;
+    if (st != DH_OK) return st;
+    *out = X;
+    return DH_OK;
+}
+
+dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+{
+    DH_ASSERT(out != NULL && T != NULL);
+    return dh_inv_general(out, T);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -588,47 +596,56 @@ static DH_NOINLINE int dh_rigid_t_ok(const dh_mat4_f32 *T)
     return z == 0.0f;
 }
 
+/*
+ * The rigid choice of dh_mat4_inv_auto_f32: T^-1 into X by the closed form
+ * and DH_OK if T is rigid, DH_ERR_NAN, DH_ERR_OVERFLOW, or DH_ERR_NOT_RIGID
+ * (X untouched: the general inverse decides).
+ */
+static DH_FAST_NOINLINE dh_status dh_inv_rigid_chk(dh_mat4_f32 *X, const dh_mat4_f32 *T)
+{
+    const dh_status st = dh_mat4_check_rigid_f32(T, DH_MAT4_RIGID_TOL);
+    if (st != DH_OK) return st;
+    if (!dh_rigid_t_ok(T)) return DH_ERR_OVERFLOW;
+    dh_mat4_inv_rigid_f32(X, T);
+    return DH_OK;
+}
+
 dh_status dh_mat4_inv_auto_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
     dh_status st;
     DH_ASSERT(out != NULL && T != NULL);
-    st = dh_mat4_check_rigid_f32(T, DH_MAT4_RIGID_TOL);
-    if (st == DH_OK) {
-        if (!dh_rigid_t_ok(T)) return DH_ERR_OVERFLOW;
-        dh_mat4_inv_rigid_f32(out, T);
-        return DH_OK;
-    }
-    if (st == DH_ERR_NAN) return DH_ERR_NAN;
-    return dh_mat4_inv_f32(out, T);
+    st = dh_inv_rigid_chk(out, T);
+    if (st == DH_OK) return DH_OK;
+    if (st != DH_ERR_NOT_RIGID) return st;
+    return dh_inv_general(out, T);
 }
 
 /* ---------------------------------------------------------------------- */
 /* planes                                                                 */
 /* ---------------------------------------------------------------------- */
 
+/* 1 iff every coefficient of P is finite (x * 0 is NaN exactly for a NaN
+ * or Inf x); out of line in the default build: no value stays live in the
+ * frame of dh_mat4_apply_plane_f32 (M0+ stack guard) */
+static DH_FAST_NOINLINE int dh_plane_finite(const dh_plane_f32 *P)
+{
+    const float z = P->a * 0.0f + P->b * 0.0f + P->c * 0.0f + P->d * 0.0f;
+    return z == z;
+}
+
 dh_status dh_mat4_apply_plane_f32(const dh_mat4_f32 *T, const dh_plane_f32 *P, dh_plane_f32 *Q)
 {
     dh_mat4_f32 X; /* T^-1 */
     dh_status st = DH_ERR_NOT_RIGID;
     DH_ASSERT(T != NULL && P != NULL && Q != NULL);
-    if (!(dh_isfinite_f32(P->a) && dh_isfinite_f32(P->b) && dh_isfinite_f32(P->c) && dh_isfinite_f32(P->d))) {
-        return DH_ERR_NAN;
-    }
+    if (!dh_plane_finite(P)) return DH_ERR_NAN;
 #if DH_FAST_PATHS
-    /* the inverse as dh_mat4_inv_auto_f32 takes it; without this the
-     * general inverse alone gives the same statuses */
-    st = dh_mat4_check_rigid_f32(T, DH_MAT4_RIGID_TOL);
-    if (st == DH_OK) {
-        if (!dh_rigid_t_ok(T)) return DH_ERR_OVERFLOW;
-        dh_mat4_inv_rigid_f32(&X, T);
-    } else if (st == DH_ERR_NAN) {
-        return DH_ERR_NAN;
-    }
+    /* the inverse as dh_mat4_inv_auto_f32 takes it; the general inverse
+     * alone gives the same statuses */
+    st = dh_inv_rigid_chk(&X, T);
 #endif
-    if (st != DH_OK) {
-        st = dh_inv_into(&X, T);
-        if (st != DH_OK) return st;
-    }
+    if (st == DH_ERR_NOT_RIGID) st = dh_inv_into(&X, T);
+    if (st != DH_OK) return st;
     dh_plane_mul_f32(P, &X, Q);
     return DH_OK;
 }
