@@ -633,18 +633,24 @@ static DH_FAST_NOINLINE int dh_plane_finite(const dh_plane_f32 *P)
     return z == z;
 }
 
+/* T^-1 into X as dh_mat4_inv_auto_f32 takes it (the general inverse alone
+ * gives the same statuses) */
+DH_INLINE dh_status dh_inv_auto_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
+{
+#if DH_FAST_PATHS
+    const dh_status st = dh_inv_rigid_chk(X, T);
+    if (st != DH_ERR_NOT_RIGID) return st;
+#endif
+    return dh_inv_into(X, T);
+}
+
 dh_status dh_mat4_apply_plane_f32(const dh_mat4_f32 *T, const dh_plane_f32 *P, dh_plane_f32 *Q)
 {
     dh_mat4_f32 X; /* T^-1 */
-    dh_status st = DH_ERR_NOT_RIGID;
+    dh_status st;
     DH_ASSERT(T != NULL && P != NULL && Q != NULL);
     if (!dh_plane_finite(P)) return DH_ERR_NAN;
-#if DH_FAST_PATHS
-    /* the inverse as dh_mat4_inv_auto_f32 takes it; the general inverse
-     * alone gives the same statuses */
-    st = dh_inv_rigid_chk(&X, T);
-#endif
-    if (st == DH_ERR_NOT_RIGID) st = dh_inv_into(&X, T);
+    st = dh_inv_auto_into(&X, T);
     if (st != DH_OK) return st;
     dh_plane_mul_f32(P, &X, Q);
     return DH_OK;
