@@ -64,8 +64,9 @@ DH_INLINE int dh_isfinite_f32(float x)
 /* ---- float transform helpers --------------------------------------------- */
 
 /** The general path behind a fast path (dh_mat4_inv.c): optimized for size
- *  (smaller frames: stack budget on Cortex-M0+), calls to it unlikely. */
-#if defined(__GNUC__) || defined(__clang__)
+ *  (smaller frames: stack budget on Cortex-M0+), calls to it unlikely. Not
+ *  cold in the size-first build, where it is the only path. */
+#if DH_FAST_PATHS && (defined(__GNUC__) || defined(__clang__))
 #define DH_COLD __attribute__((cold))
 #else
 #define DH_COLD

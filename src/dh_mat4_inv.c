@@ -229,19 +229,34 @@ static DH_NOINLINE DH_COLD void dh_swap4(dh_mat4_f32 *X, unsigned u, unsigned v,
     }
 }
 
-/*
- * In-place Gauss-Jordan with partial pivoting on the rows of X (the
- * columns of T): X becomes X^-1. Row k is divided by its pivot (as a
- * multiplication by the reciprocal). Returns 0 on an exactly zero pivot
- * (X then undefined).
- */
+/* One Gauss-Jordan step after the interchange: row k divided by its pivot
+ * (as a multiplication by the reciprocal), column k eliminated from the
+ * other rows */
+DH_INLINE void dh_gj_eliminate(dh_mat4_f32 *X, int k)
+{
+    float *rk = X->m[k];
+    const float r = 1.0f / rk[k];
+    int i, j;
+    rk[k] = 1.0f;
+    for (j = 0; j < 4; j++) rk[j] *= r;
+    for (i = 0; i < 4; i++) {
+        float *ri = X->m[i];
+        float f;
+        if (i == k) continue;
+        f = ri[k];
+        ri[k] = 0.0f;
+        for (j = 0; j < 4; j++) ri[j] -= f * rk[j];
+    }
+}
+
+/* In-place Gauss-Jordan with partial pivoting on the rows of X (the
+ * columns of T): X becomes X^-1. Returns 0 on an exactly zero pivot (X
+ * then undefined). */
 static DH_NOINLINE DH_COLD int dh_inv_gauss_jordan(dh_mat4_f32 *X)
 {
     unsigned perm = 0u; /* pivot row of step k in bits 6 - 2k, 7 - 2k */
-    int i, j, k;
+    int i, k;
     for (k = 0; k < 4; k++) {
-        float *rk = X->m[k];
-        float r;
         int p = k;
         for (i = k + 1; i < 4; i++) {
             if (fabsf(X->m[i][k]) > fabsf(X->m[p][k])) p = i;
@@ -249,17 +264,7 @@ static DH_NOINLINE DH_COLD int dh_inv_gauss_jordan(dh_mat4_f32 *X)
         if (X->m[p][k] == 0.0f) return 0;
         perm = perm * 4u + (unsigned)p;
         dh_swap4(X, 4u * (unsigned)k, 4u * (unsigned)p, 1u);
-        r = 1.0f / rk[k];
-        rk[k] = 1.0f;
-        for (j = 0; j < 4; j++) rk[j] *= r;
-        for (i = 0; i < 4; i++) {
-            float *ri = X->m[i];
-            float f;
-            if (i == k) continue;
-            f = ri[k];
-            ri[k] = 0.0f;
-            for (j = 0; j < 4; j++) ri[j] -= f * rk[j];
-        }
+        dh_gj_eliminate(X, k);
     }
     /* undo the interchanges on the columns, last first */
     for (k = 3; k >= 0; k--) {
@@ -396,15 +401,14 @@ static DH_NOINLINE int dh_inv_affine(dh_mat4_f32 *out, const dh_mat4_f32 *T, flo
     return 1;
 }
 
-/* dh_inv_affine with s = 1, else with the power of two s that brings
- * max|R_ij| into [1, 2) (the decision is invariant under any scaling of
- * R); 0 also for a zero, denormal or non-finite R */
+/* dh_inv_affine with the power of two s that brings max|R_ij| into
+ * [1, 2), after s = 1 failed (the decision is then invariant under any
+ * scaling of R); 0 also for a zero, denormal or non-finite R */
 static DH_NOINLINE int dh_inv_affine_scaled(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
     float mx = 0.0f, s;
     uint32_t e;
     int i, j;
-    if (dh_inv_affine(out, T, 1.0f)) return 1;
     for (i = 0; i < 3; i++) {
         for (j = 0; j < 3; j++) {
             const float v = fabsf(T->m[i][j]);
@@ -501,7 +505,7 @@ static DH_NOINLINE int dh_inv_proj(dh_mat4_f32 *X, const dh_mat4_f32 *M)
 DH_INLINE dh_status dh_inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
 #if DH_FAST_PATHS
-    if (dh_is_affine(T) ? dh_inv_affine_scaled(X, T) : dh_inv_proj(X, T)) return DH_OK;
+    if (dh_is_affine(T) ? (dh_inv_affine(X, T, 1.0f) || dh_inv_affine_scaled(X, T)) : dh_inv_proj(X, T)) return DH_OK;
 #endif
     return dh_inv_certified(X, T);
 }
@@ -514,7 +518,7 @@ DH_INLINE dh_status dh_inv_general(dh_mat4_f32 *out, const dh_mat4_f32 *T)
     dh_status st;
 #if DH_FAST_PATHS
     /* affine fast path straight into out (dh_inv_affine reads T first) */
-    if (dh_is_affine(T) && dh_inv_affine_scaled(out, T)) return DH_OK;
+    if (dh_is_affine(T) && (dh_inv_affine(out, T, 1.0f) || dh_inv_affine_scaled(out, T))) return DH_OK;
 #endif
     st = dh_inv_into(&X, T);
     if (st != DH_OK) return st;
