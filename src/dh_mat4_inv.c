@@ -500,12 +500,18 @@ static DH_NOINLINE int dh_inv_proj(dh_mat4_f32 *X, const dh_mat4_f32 *M)
 
 /*
  * General inverse into the scratch X (must not alias T; undefined on
- * error): the fast path for the input's shape, else the general path.
+ * error): the fast path for the input's shape, else the general path
+ * (after dh_inv_general's affine attempt only an affine T that fails the
+ * fast test again gets here).
  */
 DH_INLINE dh_status dh_inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
 #if DH_FAST_PATHS
-    if (dh_is_affine(T) ? (dh_inv_affine(X, T, 1.0f) || dh_inv_affine_scaled(X, T)) : dh_inv_proj(X, T)) return DH_OK;
+    if (dh_is_affine(T)) {
+        if (dh_inv_affine(X, T, 1.0f) || dh_inv_affine_scaled(X, T)) return DH_OK;
+    } else if (dh_inv_proj(X, T)) {
+        return DH_OK;
+    }
 #endif
     return dh_inv_certified(X, T);
 }
