@@ -509,8 +509,8 @@ DH_INLINE dh_status dh_inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 #if DH_FAST_PATHS
     if (dh_is_affine(T)) {
         if (dh_inv_affine(X, T, 1.0f) || dh_inv_affine_scaled(X, T)) return DH_OK;
-    } else if (dh_inv_proj(X, T)) {
-        return DH_OK;
+    } else {
+        if (dh_inv_proj(X, T)) return DH_OK;
     }
 #endif
     return dh_inv_certified(X, T);
