@@ -81,6 +81,23 @@ DH_INLINE int dh_isfinite_f32(float x)
 
 /* ---- float transform helpers --------------------------------------------- */
 
+/** The general path behind a fast path (dh_mat4_inv.c): optimized for size
+ *  (smaller frames: stack budget on Cortex-M0+), calls to it unlikely. Not
+ *  cold in the size-first build, where it is the only path. */
+#if DH_FAST_PATHS && (defined(__GNUC__) || defined(__clang__))
+#define DH_COLD __attribute__((cold))
+#else
+#define DH_COLD
+#endif
+
+/** Out of line in the default build only (callers' frames stay small on
+ *  Cortex-M0+ there); the size-first build inlines its single call. */
+#if DH_FAST_PATHS
+#define DH_FAST_NOINLINE DH_NOINLINE
+#else
+#define DH_FAST_NOINLINE
+#endif
+
 /* ---- fixed-point helpers (Q rounding, saturation) ------------------------ */
 
 /* ---- kinematics helpers ---------------------------------------------------- */
