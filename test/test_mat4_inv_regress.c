@@ -509,6 +509,41 @@ static void rigid_overflowing_translation_reported(void)
     DHT_TRUE(fabsf(Q.d) <= FLT_MAX);
 }
 
+/* A rotation with a subnormal translation (+-2^-149) and a bottom row near
+ * 2^23: well conditioned once balanced, so DH_OK at every scale 2^k that
+ * keeps p non-zero. The general path used to skip the balancing when the
+ * quarter-sums of p underflowed to 0 and called these singular (found by
+ * test_builds_agree; column-major words). */
+static const uint32_t k_subnormal_p[3][16] = {
+    {0x3de718b5u, 0xbf190dc4u, 0xbf4b2a47u, 0xcb000000u, 0x00000000u, 0xbf4c7898u, 0x3f1a099fu, 0x00000000u,
+     0xbf7e5d6fu, 0xbd8b0d8cu, 0xbdb8948du, 0x00000000u, 0x00000000u, 0x00000000u, 0x80000001u, 0x3f800000u},
+    {0x3f800000u, 0x354e697fu, 0x00000000u, 0x00000000u, 0xb48d1aa0u, 0x3eaf00a1u, 0xbf7094e8u, 0x00000000u,
+     0xb541faf7u, 0x3f7094e8u, 0x3eaf00a1u, 0x4b000001u, 0x00000000u, 0x80000001u, 0x00000000u, 0x3f800000u},
+    {0xbf773eb2u, 0x00000000u, 0xbe84c13du, 0x00000000u, 0xbe84c13du, 0x00000000u, 0x3f773eb2u, 0x4affffffu,
+     0x00000000u, 0x3f800000u, 0x00000000u, 0x00000000u, 0x00000001u, 0x00000000u, 0x00000000u, 0x3f800000u}};
+
+static void subnormal_translation_balanced(void)
+{
+    int n, k, c, r;
+    for (n = 0; n < 3; n++) {
+        for (k = 0; k <= 8; k++) {
+            dh_mat4_f32 T, X;
+            inv_check o;
+            for (c = 0; c < 4; c++)
+                for (r = 0; r < 4; r++) {
+                    float v;
+                    memcpy(&v, &k_subnormal_p[n][4 * c + r], sizeof v);
+                    T.m[c][r] = ldexpf(v, k);
+                }
+            DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_OK);
+            DHT_TRUE(check_inverse(&T, &X, &o));
+            DHT_TRUE_MSG(o.proof <= 0.5 && o.rel <= 3.2 * o.cond * 0x1p-24,
+                         "matrix %d at 2^%d: residual %.3g (bound 0.5), error %.3g (bound %.3g)", n, k,
+                         o.proof, o.rel, 3.2 * o.cond * 0x1p-24);
+        }
+    }
+}
+
 static const dht_case cases[] = {
     DHT_CASE(proj_1e35_inverts_at_every_scale),
     DHT_CASE(affine_large_translation_inverts),
@@ -518,5 +553,6 @@ static const dht_case cases[] = {
     DHT_CASE(persp_small_focal_every_scale),
     DHT_CASE(p_zero_magnitudes_sweep),
     DHT_CASE(rigid_overflowing_translation_reported),
+    DHT_CASE(subnormal_translation_balanced),
 };
 DHT_MAIN(cases)

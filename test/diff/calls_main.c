@@ -1,0 +1,3 @@
+/* The library linked as dhmath. */
+#define DIFF_TABLE diff_calls_main
+#include "diff_calls.inc"
