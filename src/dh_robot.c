@@ -19,7 +19,7 @@ static dh_status set_frame_f32(dh_robot *r, const dh_mat4_f32 *src, unsigned whi
     dh_frame_q F;
     int32_t spare; /* the bottom row, converted only for its finiteness */
     unsigned e;
-    unsigned st = 0u;  /* dh_f32_to_fix status: 2 NaN/Inf, 1 does not fit */
+    unsigned st = 0u;  /* dh_f32_to_fix results ORed: 2 NaN/Inf, 1 does not fit */
     unsigned bad = 0u; /* 1: not the identity, 2: bottom row not 0 0 0 1 */
     DH_ASSERT(r != NULL);
     DH_ASSERT(src != NULL);
@@ -29,7 +29,7 @@ static dh_status set_frame_f32(dh_robot *r, const dh_mat4_f32 *src, unsigned whi
         const unsigned c = e >> 2, k = e & 3u;
         const float x = src->m[c][k];
         int32_t *const col = (c < 3u) ? F.r[c] : F.p;
-        *((k == 3u) ? &spare : &col[k]) = dh_f32_to_fix(x, (c < 3u) ? 30u : (unsigned)DH_QPOS_FRAC, &st);
+        st |= dh_f32_to_fix(x, (c < 3u) ? 30u : (unsigned)DH_QPOS_FRAC, (k == 3u) ? &spare : &col[k]);
         if (x != ((c == k) ? 1.0f : 0.0f)) bad |= (k == 3u) ? 2u : 1u;
     }
     if (st & 2u) return DH_ERR_NAN;
@@ -91,7 +91,7 @@ dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float a, float
     v[1] = d;
     v[2] = alpha_deg;
     v[3] = theta_deg;
-    for (k = 0; k < 4; k++) x[k] = dh_f32_to_fix(v[k], (k < 2) ? (unsigned)DH_QPOS_FRAC : 16u, &st);
+    for (k = 0; k < 4; k++) st |= dh_f32_to_fix(v[k], (k < 2) ? (unsigned)DH_QPOS_FRAC : 16u, &x[k]);
     if (st & 2u) return DH_ERR_NAN;
     if (st != 0u) {
         /* fixed copy of an unavailable joint: zeros, sin/cos 0 and 1 */
@@ -128,8 +128,8 @@ dh_status dh_robot_set_limits_f32(dh_robot *r, uint32_t i, float qmin, float qma
     frac = (j->type == DH_JOINT_REVOLUTE) ? 16u : (unsigned)DH_QPOS_FRAC;
     j->qmin = qmin;
     j->qmax = qmax;
-    j->qmin_q = dh_f32_to_fix(qmin, frac, &st);
-    j->qmax_q = dh_f32_to_fix(qmax, frac, &st);
+    j->qmin_q = dh_f32_to_fix_sat(qmin, frac, &st);
+    j->qmax_q = dh_f32_to_fix_sat(qmax, frac, &st);
     return DH_OK;
 }
 
