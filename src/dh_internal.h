@@ -73,15 +73,17 @@ DH_INLINE int dh_isfinite_f32(float x)
  */
 static inline unsigned dh_f32_to_fix(float x, unsigned frac, int32_t *out)
 {
-    const float scale = (float)(1u << frac), lim = (float)(1u << (31u - frac));
+    const uint32_t p = 1u << (frac & 31u), pl = 1u << (31u - frac);
+    const float lim = (float)pl;
     float v, rem;
     int32_t i;
     if (!dh_isfinite_f32(x)) return 2u;
     if (x >= lim || x < -lim) return 1u;
-    v = x * scale;
+    v = x * (float)p;
     i = (int32_t)v;
     rem = v - (float)i;
-    *out = i + (int32_t)(rem + rem);
+    rem += rem;
+    *out = i + (int32_t)rem;
     return 0u;
 }
 
