@@ -79,6 +79,43 @@ DH_INLINE int dh_isfinite_f32(float x)
 
 /* ---- trig and robot description helpers --------------------------------- */
 
+/**
+ * x * 2^frac (frac 0..30) rounded to the nearest int32, ties away from zero,
+ * into *out. Returns 0 when stored, 1 when x is finite but the result is
+ * out of range, 2 when x is NaN or Inf (*out untouched in both cases), so
+ * that callers OR the results of several conversions. Exact: the scaling is
+ * by a power of two and the range test is on x itself (2^(31 - frac) is a
+ * float); rem = v - trunc(v) is in (-1, 1), so the truncation of 2 rem is
+ * +-1 exactly when |rem| >= 0.5. The largest float below 2^31 is an
+ * integer, so i + 1 cannot overflow.
+ */
+static inline unsigned dh_f32_to_fix(float x, unsigned frac, int32_t *out)
+{
+    const uint32_t p = 1u << (frac & 31u), pl = 1u << (31u - frac);
+    const float lim = (float)pl;
+    float v, rem;
+    int32_t i;
+    if (!dh_isfinite_f32(x)) return 2u;
+    if (x >= lim || x < -lim) return 1u;
+    v = x * (float)p;
+    i = (int32_t)v;
+    rem = v - (float)i;
+    rem += rem;
+    *out = i + (int32_t)rem;
+    return 0u;
+}
+
+/** The same, saturated to the int32 range by the sign of x when out of
+ *  range (finite x); *st |= the dh_f32_to_fix status. */
+static inline int32_t dh_f32_to_fix_sat(float x, unsigned frac, unsigned *st)
+{
+    int32_t v;
+    const unsigned e = dh_f32_to_fix(x, frac, &v);
+    *st |= e;
+    if (e == 0u) return v;
+    return (x < 0.0f) ? INT32_MIN : INT32_MAX;
+}
+
 /* ---- float transform helpers --------------------------------------------- */
 
 /** The general path behind a fast path (dh_mat4_inv.c): optimized for size

@@ -5,22 +5,15 @@
 #include "dhmath/dh_common.h"
 #include "dhmath/dh_robot.h"
 
-/* 1 when every row of F's rotation part has Euclidean norm <= 1.5 (the
- * DH_ROBOT_BASE_SMALL_Q test of the fixed FK fast path); integer only,
- * defined in dh_robot_q.c and shared by the float setters of dh_robot.c. */
+/* 1 when every row of F's rotation part has Euclidean norm <= 1.5
+ * (DH_ROBOT_BASE_SMALL_Q, the test of the fixed FK fast path). */
 int dh_robot_rows_small_q_(const dh_frame_q *F);
 
-#if DH_SMALL
-
-/* Size-first build only: r->flags = summary((r->flags & ~clear) | set), the
- * reason bits changed and the public summary bits DH_ROBOT_HAS_F32 /
- * DH_ROBOT_HAS_Q recomputed from them. Integer only, defined once in
- * dh_robot_q.c for the fixed and the float setters. */
+/* r->flags = ((r->flags & ~clear) | set) with the summary bits
+ * DH_ROBOT_HAS_F32 / DH_ROBOT_HAS_Q recomputed from the reason bits. */
 void dh_robot_flags_(dh_robot *r, uint32_t clear, uint32_t set);
 
-/* Size-first build only: dh_robot_set_base_q (which 0) and
- * dh_robot_set_tool_q (which 1) in one function, for the float setters. */
+/* dh_robot_set_base_q (which 0) and dh_robot_set_tool_q (which 1). */
 dh_status dh_robot_frame_q_(dh_robot *r, const dh_frame_q *src, unsigned which);
-#endif
 
 #endif

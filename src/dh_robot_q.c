@@ -1,7 +1,8 @@
 /*
  * dh_robot_q.c - the integer-only half of the robot description: joints,
- * limits and base/tool given directly in fixed point. No float, no libm,
- * no 64-bit division (checked with arm-none-eabi-nm on the object).
+ * limits and base/tool given directly in fixed point, and the flag rule
+ * and fixed frame setter the float setters of dh_robot.c share. No float,
+ * no libm, no 64-bit division.
  */
 #include "dhmath/dh_robot.h"
 #include "dhmath/dh_trig.h"
@@ -10,10 +11,6 @@
 #define F32_MASK_NO (DH_ROBOT_F32_NO_JOINT | DH_ROBOT_F32_NO_BASE | DH_ROBOT_F32_NO_TOOL)
 #define Q_MASK_NO (DH_ROBOT_Q_NO_JOINT | DH_ROBOT_Q_NO_BASE | DH_ROBOT_Q_NO_TOOL)
 
-#if DH_SMALL
-/* r->flags with the reason bits clear cleared and set set, then the summary
- * bits recomputed from them (same rule as summary() of the default build);
- * one copy for the fixed and the float setters (dh_robot_impl.h). */
 void dh_robot_flags_(dh_robot *r, uint32_t clear, uint32_t set)
 {
     uint32_t f = ((r->flags & ~clear) | set) & ~(DH_ROBOT_HAS_F32 | DH_ROBOT_HAS_Q);
@@ -21,21 +18,8 @@ void dh_robot_flags_(dh_robot *r, uint32_t clear, uint32_t set)
     if ((f & Q_MASK_NO) == 0u) f |= DH_ROBOT_HAS_Q;
     r->flags = f;
 }
-#else
-/* Recompute the summary bits from the reason bits (same rule as dh_robot.c). */
-static uint32_t summary(uint32_t f)
-{
-    f &= ~(DH_ROBOT_HAS_F32 | DH_ROBOT_HAS_Q);
-    if ((f & F32_MASK_NO) == 0u) f |= DH_ROBOT_HAS_F32;
-    if ((f & Q_MASK_NO) == 0u) f |= DH_ROBOT_HAS_Q;
-    return f;
-}
-#endif
 
-
-/* 1 when every row of the rotation part has Euclidean norm <= 1.5
- * (DH_ROBOT_BASE_SMALL_Q). Entries halved first: the sum of three squares
- * stays below 3 * 2^60. */
+/* Entries halved first: the sum of three squares stays below 3 * 2^60. */
 int dh_robot_rows_small_q_(const dh_frame_q *F)
 {
     const int64_t lim = (int64_t)9 << 56; /* (1.5 * 2^29)^2 = 2.25 * 2^58 */
@@ -59,8 +43,8 @@ dh_status dh_robot_add_joint_q(dh_robot *r, dh_joint_type type, dh_qpos a, dh_qp
     DH_ASSERT(r != NULL);
     if (r->n >= (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if (type != DH_JOINT_REVOLUTE && type != DH_JOINT_PRISMATIC) return DH_ERR_ARG;
-    /* The float fields of slot n still hold the zeros written by
-     * dh_robot_init() (joints are only ever appended). */
+    /* the float fields of slot n still hold the zeros of dh_robot_init()
+     * (joints are only ever appended) */
     j = &r->joint[r->n];
     j->type = type;
     j->a_q = a;
@@ -71,11 +55,7 @@ dh_status dh_robot_add_joint_q(dh_robot *r, dh_joint_type type, dh_qpos a, dh_qp
     j->qmin_q = 1;
     j->qmax_q = -1;
     r->n++;
-#if DH_SMALL
     dh_robot_flags_(r, 0u, DH_ROBOT_F32_NO_JOINT);
-#else
-    r->flags = summary(r->flags | DH_ROBOT_F32_NO_JOINT);
-#endif
     return DH_OK;
 }
 
@@ -101,11 +81,8 @@ dh_status dh_robot_check_limits_q(const dh_robot *r, const int32_t *q)
     return DH_OK;
 }
 
-#if DH_SMALL
-/* Size-first build: base and tool share one setter (also called by the
- * float setters of dh_robot.c, dh_robot_impl.h). which: 0 base, 1 tool;
- * the tool's flag bits are the base's shifted left by 1 (the small-rows
- * bit exists for the base only). Same stores and flags as the default. */
+/* which: 0 base, 1 tool; the tool's flag bits are the base's shifted left
+ * by 1 (the small-rows bit exists for the base only). */
 dh_status dh_robot_frame_q_(dh_robot *r, const dh_frame_q *src, unsigned which)
 {
     dh_frame_q *dst;
@@ -119,8 +96,8 @@ dh_status dh_robot_frame_q_(dh_robot *r, const dh_frame_q *src, unsigned which)
         clear |= DH_ROBOT_BASE_SMALL_Q;
         if (dh_robot_rows_small_q_(src)) set = DH_ROBOT_BASE_SMALL_Q;
     }
-    /* copy column by column (src may be dst itself; columns 0..2 rotation,
-     * 3 position) and test for the identity on the way */
+    /* copy column by column (src may be dst; columns 0..2 rotation, 3
+     * position), testing for the identity on the way */
     dst = (which != 0u) ? &r->tool_q : &r->base_q;
     for (c = 0; c < 4; c++) {
         const int32_t *s = (c < 3) ? src->r[c] : src->p;
@@ -146,56 +123,3 @@ dh_status dh_robot_set_tool_q(dh_robot *r, const dh_frame_q *tool)
 {
     return dh_robot_frame_q_(r, tool, 1u);
 }
-
-#else /* !DH_SMALL */
-
-/* Copy; returns 1 when the frame is the identity. */
-static int copy_frame(dh_frame_q *dst, const dh_frame_q *src)
-{
-    int c, k, ident = 1;
-    for (c = 0; c < 3; c++) {
-        if (src->p[c] != 0) ident = 0;
-        for (k = 0; k < 3; k++)
-            if (src->r[c][k] != ((c == k) ? DH_Q30_ONE : 0)) ident = 0;
-    }
-    if (dst != src) *dst = *src;
-    return ident;
-}
-
-dh_status dh_robot_set_base_q(dh_robot *r, const dh_frame_q *base)
-{
-    uint32_t f;
-    DH_ASSERT(r != NULL);
-    DH_ASSERT(base != NULL);
-    f = r->flags & ~(DH_ROBOT_Q_NO_BASE | DH_ROBOT_BASE_ID_Q | DH_ROBOT_F32_NO_BASE |
-                     DH_ROBOT_BASE_SMALL_Q);
-    if (dh_robot_rows_small_q_(base)) f |= DH_ROBOT_BASE_SMALL_Q;
-    if (copy_frame(&r->base_q, base)) {
-        f |= DH_ROBOT_BASE_ID_Q;
-        /* identity on both paths: the float base is still current */
-        if ((f & DH_ROBOT_BASE_ID_F32) == 0u) f |= DH_ROBOT_F32_NO_BASE;
-    } else {
-        f |= DH_ROBOT_F32_NO_BASE;
-    }
-    r->flags = summary(f);
-    return DH_OK;
-}
-
-dh_status dh_robot_set_tool_q(dh_robot *r, const dh_frame_q *tool)
-{
-    uint32_t f;
-    DH_ASSERT(r != NULL);
-    DH_ASSERT(tool != NULL);
-    f = r->flags & ~(DH_ROBOT_Q_NO_TOOL | DH_ROBOT_TOOL_ID_Q | DH_ROBOT_F32_NO_TOOL);
-    if (copy_frame(&r->tool_q, tool)) {
-        f |= DH_ROBOT_TOOL_ID_Q;
-        /* identity on both paths: the float tool is still current */
-        if ((f & DH_ROBOT_TOOL_ID_F32) == 0u) f |= DH_ROBOT_F32_NO_TOOL;
-    } else {
-        f |= DH_ROBOT_F32_NO_TOOL;
-    }
-    r->flags = summary(f);
-    return DH_OK;
-}
-
-#endif /* DH_SMALL */

@@ -1,28 +1,25 @@
 /*
  * dh_trig_q.c - fixed-point sine/cosine of Q16.16 degrees as Q2.30
  * (contract in include/dhmath/dh_trig.h). Integer only: no float, no libm,
- * no division of any width; 32x32->64 multiplies only.
+ * no division; 32x32->64 multiplies only.
  *
- * Method (same as the float path):
+ * Method (as the float path):
  *  1. u = |x| as an unsigned magnitude (0 .. 2^31; INT32_MIN is never
  *     negated as a signed value). Whole degrees n = u >> 16 (0..32768),
- *     fraction fr = u & 0xFFFF, i.e. f = fr / 65536 degree.
- *  2. n = 90 q + m with q = floor(n / 90) computed exactly by a 32-bit
- *     multiply (no divide), m in 0..89, quadrant k = q mod 4. The table
- *     indices m and 90 - m are in 0..90 for every input, so no table read
- *     can leave the 91-entry table.
- *  3. T = f in radians in units of 2^-37 (T < 2^31.2); then
- *     sin f = T - T^3/6 and 1 - cos f = T^2/2 - T^4/24 in the same units
- *     (first omitted terms: t^5/120 < 0.02 LSB of Q2.30 and t^6/720
- *     < 1e-4 LSB). The corrections C sin f - S (1 - cos f) and
- *     C (1 - cos f) + S sin f (S = sin m, C = cos m, first quadrant) are
- *     formed in 64 bits in units of 2^-67 and rounded once to Q2.30, so the
- *     result is table value (0.5 LSB) + one rounding (0.5 LSB) +
- *     approximation and intermediate rounding (< 0.05 LSB).
- *  4. The first-quadrant results are clamped to [0, 1.0] (the true values
- *     lie there, so the clamp can only reduce the error), the quadrant
- *     symmetry applied branch free, and the input sign applied to the sine
- *     by negating a magnitude <= 2^30 (never overflows).
+ *     fraction fr = u & 0xFFFF (f = fr / 65536 degree).
+ *  2. n = 90 q + m, q = floor(n / 90) by an exact 32-bit multiply-shift,
+ *     m in 0..89, quadrant k = q mod 4. The table indices m and 90 - m are
+ *     in 0..90 for every input.
+ *  3. T = f in radians in units of 2^-37 (T < 2^31.2); sin f = T - T^3/6
+ *     and 1 - cos f = T^2/2 - T^4/24 in the same units (omitted terms
+ *     t^5/120 < 0.02 LSB of Q2.30, t^6/720 < 1e-4 LSB). The corrections
+ *     C sin f - S (1 - cos f) and C (1 - cos f) + S sin f (S = sin m,
+ *     C = cos m) are formed in 64 bits in units of 2^-67 and rounded once:
+ *     table value (0.5 LSB) + one rounding (0.5 LSB) + approximation and
+ *     intermediate rounding (< 0.05 LSB).
+ *  4. The first-quadrant results are clamped to [0, 1.0] (where the true
+ *     values lie), then the quadrant symmetry and the input sign are
+ *     applied to magnitudes <= 2^30 (never overflows).
  * Every shift is of an unsigned value; no signed overflow is possible.
  */
 #include "dhmath/dh_trig.h"
@@ -31,11 +28,10 @@
 #define DH_TRIG_KT    2398762259u   /* round(pi/180 * 2^37) */
 #define DH_TRIG_INV3  1431655765u   /* round(2^32 / 3) */
 #define DH_TRIG_Q30   0x40000000u
-/* ceil(2^23 / 90): (n * DH_TRIG_DIV90_32) >> 23 == n / 90 for every
- * n <= 32768, in 32 bits (n * 93207 < 3.06e9 < 2^32). Proof: the constant
- * exceeds 2^23/90 by d < 0.25, so the estimate exceeds n/90 by
- * n d / 2^23 < 1e-3, less than the distance 1/90 from n/90 (fraction at
- * most 89/90) to the next integer. Checked exhaustively as well. */
+/* ceil(2^23 / 90): (n * DH_TRIG_DIV90_32) >> 23 == n / 90 for n <= 32768,
+ * in 32 bits (n * 93207 < 2^32). The constant exceeds 2^23/90 by d < 0.25,
+ * so the estimate exceeds n/90 by n d / 2^23 < 1e-3, less than the distance
+ * 1/90 from n/90 (fraction at most 89/90) to the next integer. */
 #define DH_TRIG_DIV90_32 93207u
 
 /* uint32 holding the two's complement of a value in [-2^30, 2^30] -> int32,
@@ -47,11 +43,7 @@ static int32_t dh_trig_u2i(uint32_t v)
 
 void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
 {
-#if DH_SMALL
     uint32_t u, n, q, k, m, fr, sv, cv, t, h, h3, t3, t4, sf, cm, d;
-#else
-    uint32_t u, n, q, k, m, fr, sv, cv, t, h, h3, t3, t4, sf, cm, d, odd, ns, nc;
-#endif
     uint64_t pc;
 
     DH_ASSERT(s_q30 != NULL);
@@ -94,18 +86,13 @@ void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
     pc = dh_trig_mul64(cv, cm) + dh_trig_mul64((uint32_t)dh_trig_sin_q30[m], sf);
     d = (uint32_t)((pc + ((uint64_t)1 << 36)) >> 37);
     cv = cv - d;                                /* true value in [0, 2^30] */
-    /* Clamp to [0, 2^30] (the true values lie there, so clamping only
-     * reduces the error): a result that went below 0 wrapped to >= 2^31. */
+    /* clamp to [0, 2^30]: a result below 0 wrapped to >= 2^31 */
     sv = (sv > DH_TRIG_Q30) ? ((sv >= 0x80000000u) ? 0u : DH_TRIG_Q30) : sv;
     cv = (cv > DH_TRIG_Q30) ? ((cv >= 0x80000000u) ? 0u : DH_TRIG_Q30) : cv;
 
     /* quadrant: (s,c) -> k=1: (c,-s), k=2: (-s,-c), k=3: (-c,s); then the
-     * odd symmetry for a negative input. Branch free: the swap is a select,
-     * the negations are (v ^ mask) - mask on magnitudes <= 2^30 in uint32
-     * (exact two's complement of a small value, converted back below). */
-#if DH_SMALL
-    /* the same symmetry and sign with branches instead of masks (smaller
-     * code; magnitudes <= 2^30, so 0u - v is the exact two's complement) */
+     * odd symmetry for a negative input (0u - v: the exact two's complement
+     * of a magnitude <= 2^30) */
     if (k & 1u) {
         uint32_t sw = sv;
         sv = cv;
@@ -115,20 +102,6 @@ void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
     if ((k ^ (k >> 1)) & 1u) cv = 0u - cv;
     *s_q30 = dh_trig_u2i(sv);
     *c_q30 = dh_trig_u2i(cv);
-#else
-    odd = k & 1u;
-    ns = 0u - (((k >> 1) ^ (uint32_t)(deg_q16 < 0)) & 1u);   /* k = 2, 3 */
-    nc = 0u - ((k ^ (k >> 1)) & 1u);                          /* k = 1, 2 */
-    {
-        /* swap by mask: a plain select compiles to a branch on x86, which
-         * random quadrants mispredict half of the time */
-        uint32_t sw = (sv ^ cv) & (0u - odd);
-        uint32_t a = sv ^ sw;
-        uint32_t b = cv ^ sw;
-        *s_q30 = dh_trig_u2i((a ^ ns) - ns);
-        *c_q30 = dh_trig_u2i((b ^ nc) - nc);
-    }
-#endif
 }
 
 dh_q30 dh_sin_q(dh_q16 deg_q16)
