@@ -159,7 +159,7 @@ static DH_NOINLINE int64_t dh_dot3(const int32_t *a, const int32_t *b)
  * sqrt(1 + 3/8) < 1.18 and ||M||_2 <= 1 + 3/16 + 2^-28, so every entry is
  * below 1.4 and dh_col() never saturates.
  */
-static DH_NOINLINE void dh_ortho_step(dh_frame_q *F)
+static DH_NOINLINE dh_status dh_ortho_step(dh_frame_q *F)
 {
     dh_frame_q R;
     int32_t M[3][3];
@@ -170,6 +170,7 @@ static DH_NOINLINE void dh_ortho_step(dh_frame_q *F)
             M[i][j] = (int32_t)((((i == j) ? ((int64_t)3 << 60) : 0) + ((int64_t)1 << 30) -
                                  dh_dot3(R.r[i], R.r[j])) >> 31);
     for (j = 0; j < 3u; j++) (void)dh_col(F->r[j], &R, M[j], DH_COL_R);
+    return DH_OK;
 }
 
 /*
@@ -249,8 +250,7 @@ dh_status dh_frame_rot_axis_q(dh_frame_q *F, dh_q30 kx, dh_q30 ky, dh_q30 kz, dh
 {
     DH_ASSERT(F != NULL);
     if (!dh_axis_build(F, kx, ky, kz, deg)) return DH_ERR_ZERO_AXIS;
-    dh_ortho_step(F);
-    return DH_OK;
+    return dh_ortho_step(F);
 }
 
 /* ---- fast paths ------------------------------------------------------------ */
@@ -454,7 +454,7 @@ dh_status dh_frame_orthonormalize_chk_q(dh_frame_q *F)
     dh_status st;
     DH_ASSERT(F != NULL);
     st = dh_ortho_chk(F);
-    if (st == DH_OK) dh_ortho_step(F);
+    if (st == DH_OK) st = dh_ortho_step(F);
     return st;
 }
 

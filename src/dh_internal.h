@@ -72,8 +72,8 @@ DH_INLINE int dh_isfinite_f32(float x)
 /* a b and acc + a b (modulo 2^64). Out of line where the product is the
  * 16-bit-partials kernel (DH_PORT_MUL64_IS_CALL, ARMv6-M): inlined many
  * times it makes GCC spill and the callers' frames exceed 256 bytes. */
-#if DH_PORT_MUL64_IS_CALL
-#define DH_Q_MUL_FN static inline DH_NOINLINE
+#if DH_PORT_MUL64_IS_CALL && (defined(__GNUC__) || defined(__clang__))
+#define DH_Q_MUL_FN static __attribute__((noinline, unused))
 #else
 #define DH_Q_MUL_FN DH_INLINE
 #endif
