@@ -98,7 +98,7 @@ static DH_NOINLINE unsigned dh_col(int32_t *o, const dh_frame_q *A, const int32_
         }
         if ((dh_q_hi_chk((int64_t)S) >> 30) != 0u) {
             st = (unsigned)DH_ERR_OVERFLOW;
-            o[i] = dh_q_sat_sign((uint32_t)H);
+            o[i] = H < 0 ? INT32_MIN : INT32_MAX;
         } else {
             o[i] = dh_q_lo30((int64_t)S);
         }
@@ -151,25 +151,35 @@ static DH_NOINLINE int64_t dh_dot3(const int32_t *a, const int32_t *b)
 }
 
 /*
- * R <- R (3 I - R^T R) / 2 in place (one Newton step towards the nearest
- * rotation): M = (3 I - R^T R) / 2 rounded once per entry, then R M rounded
- * once per entry; column j of R M is R times column j of M (symmetric).
- * For R that pass dh_ortho_chk() (entries <= 1.25, |R^T R - I| <= 1/8) no
- * sum can overflow and no entry of R M leaves [-2, 2): ||R||_2 <=
- * sqrt(1 + 3/8) < 1.18 and ||M||_2 <= 1 + 3/16 + 2^-28, so every entry is
- * below 1.4 and dh_col() never saturates.
+ * If R passes the checks, R <- R (3 I - R^T R) / 2 in place (one Newton
+ * step towards the nearest rotation), else DH_ERR_NOT_RIGID with F
+ * untouched. Checks: entries <= 1.25 (keeps every sum far from 2^63), then
+ * |R^T R - I| <= 1/8 per entry, exact in Q60. M = (3 I - R^T R) / 2 is
+ * rounded once per entry, then R M once per entry, row i of R M being M
+ * (symmetric) times row i of R. No entry of R M leaves [-2, 2):
+ * ||R||_2 <= sqrt(1 + 3/8) < 1.18 and ||M||_2 <= 1 + 3/16 + 2^-28, so every
+ * entry is below 1.4 and dh_col() never saturates.
  */
 static DH_NOINLINE dh_status dh_ortho_step(dh_frame_q *F)
 {
-    dh_frame_q R;
-    int32_t M[3][3];
+    dh_frame_q M;                       /* M.p: row i of R (DH_COL_R ignores p) */
+    int32_t o[3];
     unsigned i, j;
-    R = *F;
     for (i = 0; i < 3u; i++)
         for (j = 0; j < 3u; j++)
-            M[i][j] = (int32_t)((((i == j) ? ((int64_t)3 << 60) : 0) + ((int64_t)1 << 30) -
-                                 dh_dot3(R.r[i], R.r[j])) >> 31);
-    for (j = 0; j < 3u; j++) (void)dh_col(F->r[j], &R, M[j], DH_COL_R);
+            if (((uint32_t)F->r[i][j] + 0x50000000u) > 0xA0000000u) return DH_ERR_NOT_RIGID;
+    for (i = 0; i < 3u; i++)
+        for (j = 0; j < 3u; j++) {
+            const int64_t d = (i == j) ? ((int64_t)1 << 60) : 0;
+            int64_t e = dh_dot3(F->r[i], F->r[j]) - d;             /* (R^T R - I) 2^60 */
+            if (e > ((int64_t)1 << 57) || e < -((int64_t)1 << 57)) return DH_ERR_NOT_RIGID;
+            M.r[i][j] = (int32_t)((2 * d + ((int64_t)1 << 30) - e) >> 31);
+        }
+    for (i = 0; i < 3u; i++) {
+        for (j = 0; j < 3u; j++) M.p[j] = F->r[j][i];
+        (void)dh_col(o, &M, M.p, DH_COL_R);
+        for (j = 0; j < 3u; j++) F->r[j][i] = o[j];
+    }
     return DH_OK;
 }
 
@@ -244,8 +254,9 @@ static DH_NOINLINE int dh_axis_build(dh_frame_q *F, int32_t kx, int32_t ky, int3
 }
 
 /* Rounding the nine entries leaves |R^T R - I| at a few LSB; one Newton
- * step brings it to the rounding level (its checks cannot fail here). The
- * steps are separate calls: the stack depth is the larger of the two. */
+ * step brings it to the rounding level (its checks cannot fail here: entries
+ * within 1 + 2 LSB, error far below 1/8). Separate calls: the stack depth
+ * is the larger of the two. */
 dh_status dh_frame_rot_axis_q(dh_frame_q *F, dh_q30 kx, dh_q30 ky, dh_q30 kz, dh_q16 deg)
 {
     DH_ASSERT(F != NULL);
@@ -345,40 +356,68 @@ static DH_NOINLINE uint32_t dh_apply_fast(const dh_frame_q *F, const int32_t *in
 
 /* ---- composition ------------------------------------------------------------ */
 
-/* Computed into a local, so out may alias A and/or B: column j of the
- * result is A times column j of [R_B p_B; 0 0 0 1]. */
+/* general path of dh_frame_mul_q: column j of A B is A times column j of
+ * [R_B p_B; 0 0 0 1] */
+DH_Q_GENERAL_FN unsigned dh_mul_gen(dh_frame_q *t, const dh_frame_q *A, const dh_frame_q *B)
+{
+    unsigned st = 0u, j;
+    for (j = 0; j < 3u; j++) st |= dh_col(&t->r[j][0], A, B->r[j], DH_COL_R);
+    st |= dh_col(t->p, A, B->p, DH_COL_RP);
+    return st;
+}
+
+/* Computed into a local, so out may alias A and/or B. */
 dh_status dh_frame_mul_q(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B)
 {
     dh_frame_q t;
-    unsigned st = 0u, j;
+    unsigned st = 0u;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
 #if DH_FAST_PATHS
     if ((dh_mul_fast(&t, A, B) >> 30) != 0u)
 #endif
     {
-        for (j = 0; j < 3u; j++) st |= dh_col(&t.r[j][0], A, B->r[j], DH_COL_R);
-        st |= dh_col(t.p, A, B->p, DH_COL_RP);
+        st = dh_mul_gen(&t, A, B);
     }
     *out = t;
     return (dh_status)st;
 }
 
-/* R' = R^T, p' = -R^T p (rows of R^T are the columns of R) */
-dh_status dh_frame_inv_q(dh_frame_q *out, const dh_frame_q *F)
+/* general path of dh_frame_inv_q: R' = R^T, p' = -R^T p (rows of R^T are
+ * the columns of R), computed into a local (out may be F) */
+DH_Q_GENERAL_FN unsigned dh_inv_gen(dh_frame_q *out, const dh_frame_q *F)
 {
     dh_frame_q t;
-    unsigned st = 0u, i, j;
-    DH_ASSERT(out != NULL && F != NULL);
+    unsigned st, i, j;
     for (i = 0; i < 3u; i++)
         for (j = 0; j < 3u; j++) t.r[i][j] = F->r[j][i];
-#if DH_FAST_PATHS
-    if ((dh_inv_p_fast(F, t.p) >> 30) != 0u)
-#endif
-    {
-        st = dh_col(t.p, &t, F->p, DH_COL_NEG_R);
-    }
+    st = dh_col(t.p, &t, F->p, DH_COL_NEG_R);
     *out = t;
-    return (dh_status)st;
+    return st;
+}
+
+dh_status dh_frame_inv_q(dh_frame_q *out, const dh_frame_q *F)
+{
+    DH_ASSERT(out != NULL && F != NULL);
+#if DH_FAST_PATHS
+    {
+        int32_t p[3];
+        unsigned i, j;
+        if ((dh_inv_p_fast(F, p) >> 30) == 0u) {
+            /* transpose in place (also correct when out == F) */
+            for (i = 0; i < 3u; i++) {
+                out->r[i][i] = F->r[i][i];
+                for (j = i + 1u; j < 3u; j++) {
+                    int32_t x = F->r[i][j], y = F->r[j][i];
+                    out->r[i][j] = y;
+                    out->r[j][i] = x;
+                }
+                out->p[i] = p[i];
+            }
+            return DH_OK;
+        }
+    }
+#endif
+    return (dh_status)dh_inv_gen(out, F);
 }
 
 /* v = R u (+ p for DH_COL_RP) */
@@ -432,30 +471,10 @@ int32_t dh_frame_ortho_error_q(const dh_frame_q *F)
     return worst > (uint32_t)INT32_MAX ? INT32_MAX : (int32_t)worst;
 }
 
-/* entries <= 1.25 (keeps the sums far from 2^63), then (R^T R - I) 2^60,
- * exact, <= 1/8 (so that the Newton step converges) */
-static DH_NOINLINE dh_status dh_ortho_chk(const dh_frame_q *F)
-{
-    unsigned i, j;
-    for (i = 0; i < 3u; i++)
-        for (j = 0; j < 3u; j++)
-            if (((uint32_t)F->r[i][j] + 0x50000000u) > 0xA0000000u) return DH_ERR_NOT_RIGID;
-    for (i = 0; i < 3u; i++)
-        for (j = i; j < 3u; j++) {
-            int64_t e = dh_dot3(F->r[i], F->r[j]) - ((i == j) ? ((int64_t)1 << 60) : 0);
-            if (e > ((int64_t)1 << 57) || e < -((int64_t)1 << 57)) return DH_ERR_NOT_RIGID;
-        }
-    return DH_OK;
-}
-
-/* checks and step are separate calls: the stack depth is the larger of the two */
 dh_status dh_frame_orthonormalize_chk_q(dh_frame_q *F)
 {
-    dh_status st;
     DH_ASSERT(F != NULL);
-    st = dh_ortho_chk(F);
-    if (st == DH_OK) st = dh_ortho_step(F);
-    return st;
+    return dh_ortho_step(F);
 }
 
 void dh_frame_orthonormalize_q(dh_frame_q *F)

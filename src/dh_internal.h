@@ -65,6 +65,15 @@ DH_INLINE int dh_isfinite_f32(float x)
 
 /* ---- fixed-point helpers (Q rounding, saturation) ------------------------ */
 
+/** A general path that a fast path precedes in the default build: out of
+ *  line there (the fast path keeps a short prologue), inlined into its one
+ *  caller when it runs alone (DH_FAST_PATHS 0). */
+#if DH_FAST_PATHS
+#define DH_Q_GENERAL_FN static DH_NOINLINE
+#else
+#define DH_Q_GENERAL_FN DH_INLINE
+#endif
+
 /** 1.0 in Q2.30, and half an LSB of a result taken >> 30. */
 #define DH_Q_ONE30 ((int32_t)0x40000000)
 #define DH_Q_HALF30 ((int64_t)0x20000000)
@@ -73,7 +82,7 @@ DH_INLINE int dh_isfinite_f32(float x)
  * 16-bit-partials kernel (DH_PORT_MUL64_IS_CALL, ARMv6-M): inlined many
  * times it makes GCC spill and the callers' frames exceed 256 bytes. */
 #if DH_PORT_MUL64_IS_CALL && (defined(__GNUC__) || defined(__clang__))
-#define DH_Q_MUL_FN static __attribute__((noinline, unused))
+#define DH_Q_MUL_FN static DH_NOINLINE __attribute__((unused))
 #else
 #define DH_Q_MUL_FN DH_INLINE
 #endif
