@@ -103,15 +103,17 @@ DH_INLINE int64_t dh_q_rshr(int64_t x, unsigned sh)
     return ((x >> (sh - 1u)) + (int64_t)1) >> 1;
 }
 
+/* dh_q_lo30 and dh_q_hi_chk are plain inline, not DH_INLINE: forced
+ * inlining makes GCC schedule the unrolled fast paths worse. */
 /** Bits 30..61 of t from its two words: t >> 30 when that fits int32. */
-DH_INLINE int32_t dh_q_lo30(int64_t t)
+static inline int32_t dh_q_lo30(int64_t t)
 {
     return (int32_t)(((uint32_t)((uint64_t)t >> 32) << 2) | ((uint32_t)((uint64_t)t & 0xFFFFFFFFu) >> 30));
 }
 
 /** Bits 30 and 31 are clear iff t >> 30 fits int32 (high word in
  *  [-2^29, 2^29)): OR the words of several results, test once. */
-DH_INLINE uint32_t dh_q_hi_chk(int64_t t)
+static inline uint32_t dh_q_hi_chk(int64_t t)
 {
     return (uint32_t)((uint64_t)t >> 32) + 0x20000000u;
 }
