@@ -106,8 +106,9 @@ static DH_NOINLINE unsigned dh_col(int32_t *o, const dh_frame_q *A, const int32_
     return st;
 }
 
-/* ---- rotation about an axis ----------------------------------------------- */
+/* ---- rotation about an axis, re-orthonormalisation ------------------------ */
 
+/* dh_q_rshr, one out-of-line copy */
 static DH_NOINLINE int64_t dh_rsh(int64_t x, unsigned sh)
 {
     return dh_q_rshr(x, sh);
