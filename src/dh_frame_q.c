@@ -152,36 +152,27 @@ static DH_NOINLINE int64_t dh_dot3(const int32_t *a, const int32_t *b)
 }
 
 /*
- * If R passes the checks, R <- R (3 I - R^T R) / 2 in place (one Newton
- * step towards the nearest rotation), else DH_ERR_NOT_RIGID with F
- * untouched. Checks: entries <= 1.25 (keeps every sum far from 2^63), then
- * |R^T R - I| <= 1/8 per entry, exact in Q60. M = (3 I - R^T R) / 2 is
- * rounded once per entry, then R M once per entry, row i of R M being M
- * (symmetric) times row i of R. No entry of R M leaves [-2, 2):
- * ||R||_2 <= sqrt(1 + 3/8) < 1.18 and ||M||_2 <= 1 + 3/16 + 2^-28, so every
- * entry is below 1.4 and dh_col() never saturates.
+ * R <- R (3 I - R^T R) / 2 in place (one Newton step towards the nearest
+ * rotation): M = (3 I - R^T R) / 2 rounded once per entry, then R M rounded
+ * once per entry, row i of R M being M (symmetric) times row i of R. For R
+ * that pass dh_ortho_chk() no sum can overflow and no entry of R M leaves
+ * [-2, 2): ||R||_2 <= sqrt(1 + 3/8) < 1.18 and ||M||_2 <= 1 + 3/16 + 2^-28,
+ * so every entry is below 1.4 and dh_col() never saturates.
  */
-static DH_NOINLINE dh_status dh_ortho_step(dh_frame_q *F)
+static DH_NOINLINE void dh_ortho_step(dh_frame_q *F)
 {
     dh_frame_q M;                       /* M.p: row i of R (DH_COL_R ignores p) */
     int32_t o[3];
     unsigned i, j;
     for (i = 0; i < 3u; i++)
         for (j = 0; j < 3u; j++)
-            if (((uint32_t)F->r[i][j] + 0x50000000u) > 0xA0000000u) return DH_ERR_NOT_RIGID;
-    for (i = 0; i < 3u; i++)
-        for (j = 0; j < 3u; j++) {
-            const int64_t d = (i == j) ? ((int64_t)1 << 60) : 0;
-            int64_t e = dh_dot3(F->r[i], F->r[j]) - d;             /* (R^T R - I) 2^60 */
-            if (e > ((int64_t)1 << 57) || e < -((int64_t)1 << 57)) return DH_ERR_NOT_RIGID;
-            M.r[i][j] = (int32_t)((2 * d + ((int64_t)1 << 30) - e) >> 31);
-        }
+            M.r[i][j] = (int32_t)((((i == j) ? ((int64_t)3 << 60) : 0) + ((int64_t)1 << 30) -
+                                   dh_dot3(F->r[i], F->r[j])) >> 31);
     for (i = 0; i < 3u; i++) {
         for (j = 0; j < 3u; j++) M.p[j] = F->r[j][i];
         (void)dh_col(o, &M, M.p, DH_COL_R);
         for (j = 0; j < 3u; j++) F->r[j][i] = o[j];
     }
-    return DH_OK;
 }
 
 /*
@@ -262,7 +253,8 @@ dh_status dh_frame_rot_axis_q(dh_frame_q *F, dh_q30 kx, dh_q30 ky, dh_q30 kz, dh
 {
     DH_ASSERT(F != NULL);
     if (!dh_axis_build(F, kx, ky, kz, deg)) return DH_ERR_ZERO_AXIS;
-    return dh_ortho_step(F);
+    dh_ortho_step(F);
+    return DH_OK;
 }
 
 /* ---- fast paths ------------------------------------------------------------ */
@@ -472,10 +464,30 @@ int32_t dh_frame_ortho_error_q(const dh_frame_q *F)
     return worst > (uint32_t)INT32_MAX ? INT32_MAX : (int32_t)worst;
 }
 
+/* entries <= 1.25 (keeps every sum far from 2^63), then |R^T R - I| <= 1/8
+ * per entry, exact in Q60 */
+static DH_NOINLINE dh_status dh_ortho_chk(const dh_frame_q *F)
+{
+    unsigned i, j;
+    for (i = 0; i < 3u; i++)
+        for (j = 0; j < 3u; j++)
+            if (((uint32_t)F->r[i][j] + 0x50000000u) > 0xA0000000u) return DH_ERR_NOT_RIGID;
+    for (i = 0; i < 3u; i++)
+        for (j = i; j < 3u; j++) {
+            int64_t e = dh_dot3(F->r[i], F->r[j]) - ((i == j) ? ((int64_t)1 << 60) : 0);
+            if (e > ((int64_t)1 << 57) || e < -((int64_t)1 << 57)) return DH_ERR_NOT_RIGID;
+        }
+    return DH_OK;
+}
+
+/* checks and step are separate calls: the stack depth is the larger of the two */
 dh_status dh_frame_orthonormalize_chk_q(dh_frame_q *F)
 {
+    dh_status st;
     DH_ASSERT(F != NULL);
-    return dh_ortho_step(F);
+    st = dh_ortho_chk(F);
+    if (st == DH_OK) dh_ortho_step(F);
+    return st;
 }
 
 void dh_frame_orthonormalize_q(dh_frame_q *F)
