@@ -108,7 +108,10 @@ DH_INLINE int64_t dh_q_rshr(int64_t x, unsigned sh)
 /** Bits 30..61 of t from its two words: t >> 30 when that fits int32. */
 static inline int32_t dh_q_lo30(int64_t t)
 {
-    return (int32_t)(((uint32_t)((uint64_t)t >> 32) << 2) | ((uint32_t)((uint64_t)t & 0xFFFFFFFFu) >> 30));
+    const uint64_t u = (uint64_t)t;
+    const uint32_t hi = (uint32_t)(u >> 32), lo = (uint32_t)u;
+    const uint32_t r = (hi << 2) | (lo >> 30);
+    return (int32_t)r;
 }
 
 /** Bits 30 and 31 are clear iff t >> 30 fits int32 (high word in
@@ -128,7 +131,8 @@ DH_INLINE int32_t dh_q_rnd30_fit(int64_t x)
  *  of a result with the sign of w). */
 DH_INLINE int32_t dh_q_sat_sign(uint32_t w)
 {
-    return (int32_t)(0x7FFFFFFFu ^ (0u - (w >> 31)));
+    const uint32_t r = 0x7FFFFFFFu ^ (0u - (w >> 31));
+    return (int32_t)r;
 }
 
 /** v saturated to int32; sets *ovf to DH_ERR_OVERFLOW when it did not fit. */
