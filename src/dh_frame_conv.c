@@ -5,13 +5,7 @@
  * rounding to an integer is done with exact float operations.
  */
 #include "dhmath/dh_fixed.h"
-
-/* 1 if x is finite (no libm: NaN fails x == x, +-Inf gives x - x = NaN). */
-static int dh_isfinite(float x)
-{
-    float d = x - x;
-    return d == d;
-}
+#include "dh_internal.h"
 
 /* 2^e as float, 0 <= e <= 30 (exact). */
 static float dh_pow2f(unsigned e)
@@ -21,10 +15,9 @@ static float dh_pow2f(unsigned e)
 
 /*
  * Round a finite float to the nearest int32, ties away from zero, with
- * saturation (*ovf set). Every step is exact:
- *  - |x| >= 2^23: x is already an integer; the range test is exact because
- *    2^31 is a float;
- *  - |x| <  2^23: the truncation t fits easily and x - t is exact.
+ * saturation (*ovf set). Every step is exact: |x| >= 2^23 is already an
+ * integer (2^31 is a float, so the range test is exact); below, the
+ * truncation t fits and x - t is exact.
  */
 static int32_t dh_round_sat(float x, uint32_t *ovf)
 {
@@ -48,7 +41,7 @@ dh_status dh_frame_from_mat4_q(dh_frame_q *F, const dh_mat4_f32 *T)
     DH_ASSERT(F != NULL && T != NULL);
     for (j = 0; j < 4u; j++)
         for (i = 0; i < 4u; i++)
-            if (!dh_isfinite(T->m[j][i])) return DH_ERR_NAN;
+            if (!dh_isfinite_f32(T->m[j][i])) return DH_ERR_NAN;
     for (j = 0; j < 3u; j++) {
         for (i = 0; i < 3u; i++) {
             /* Q2.30 range is [-2, 2): x * 2^30 must be in [-2^31, 2^31) */

@@ -137,6 +137,121 @@ static inline int32_t dh_f32_to_fix_sat(float x, unsigned frac, unsigned *st)
 
 /* ---- fixed-point helpers (Q rounding, saturation) ------------------------ */
 
+/** A general path that a fast path precedes in the default build: out of
+ *  line there (the fast path keeps a short prologue), inlined into its one
+ *  caller when it runs alone (DH_FAST_PATHS 0). */
+#if DH_FAST_PATHS
+#define DH_Q_GENERAL_FN static DH_NOINLINE
+#else
+#define DH_Q_GENERAL_FN DH_INLINE
+#endif
+
+/** 1.0 in Q2.30, and half an LSB of a result taken >> 30. */
+#define DH_Q_ONE30 ((int32_t)0x40000000)
+#define DH_Q_HALF30 ((int64_t)0x20000000)
+
+/* a b and acc + a b (modulo 2^64). Out of line where the product is the
+ * 16-bit-partials kernel (DH_PORT_MUL64_IS_CALL, ARMv6-M): inlined many
+ * times it makes GCC spill and the callers' frames exceed 256 bytes. */
+#if DH_PORT_MUL64_IS_CALL && (defined(__GNUC__) || defined(__clang__))
+#define DH_Q_MUL_FN static DH_NOINLINE __attribute__((unused))
+#else
+#define DH_Q_MUL_FN DH_INLINE
+#endif
+/** a b, exact. */
+DH_Q_MUL_FN int64_t dh_q_mul64(int32_t a, int32_t b)
+{
+    return dh_port_smull(a, b);
+}
+/** acc + a b modulo 2^64. */
+DH_Q_MUL_FN int64_t dh_q_mla64(int64_t acc, int32_t a, int32_t b)
+{
+    return dh_port_smlal(acc, a, b);
+}
+
+/** round(x / 2^sh), ties up, 1 <= sh <= 62, any x (cannot overflow). */
+DH_INLINE int64_t dh_q_rshr(int64_t x, unsigned sh)
+{
+    return ((x >> (sh - 1u)) + (int64_t)1) >> 1;
+}
+
+/* dh_q_lo30 and dh_q_hi_chk are plain inline, not DH_INLINE: forced
+ * inlining makes GCC schedule the unrolled fast paths worse. */
+/** Bits 30..61 of t from its two words: t >> 30 when that fits int32. */
+static inline int32_t dh_q_lo30(int64_t t)
+{
+    const uint64_t u = (uint64_t)t;
+    const uint32_t hi = (uint32_t)(u >> 32), lo = (uint32_t)u;
+    const uint32_t r = (hi << 2) | (lo >> 30);
+    return (int32_t)r;
+}
+
+/** Bits 30 and 31 are clear iff t >> 30 fits int32 (high word in
+ *  [-2^29, 2^29)): OR the words of several results, test once. */
+static inline uint32_t dh_q_hi_chk(int64_t t)
+{
+    return (uint32_t)((uint64_t)t >> 32) + 0x20000000u;
+}
+
+/** round(x / 2^30), ties up, where the caller knows that it fits int32. */
+DH_INLINE int32_t dh_q_rnd30_fit(int64_t x)
+{
+    return dh_q_lo30(x + DH_Q_HALF30);
+}
+
+/** INT32_MIN when bit 31 of w is set, else INT32_MAX (the saturated value
+ *  of a result with the sign of w). */
+DH_INLINE int32_t dh_q_sat_sign(uint32_t w)
+{
+    const uint32_t r = 0x7FFFFFFFu ^ (0u - (w >> 31));
+    return (int32_t)r;
+}
+
+/** v saturated to int32; sets *ovf to DH_ERR_OVERFLOW when it did not fit. */
+DH_INLINE int32_t dh_q_sat32(int64_t v, int *ovf)
+{
+    if ((((uint64_t)v + 0x80000000u) >> 32) != 0u) {
+        *ovf = (int)DH_ERR_OVERFLOW;
+        return dh_q_sat_sign((uint32_t)((uint64_t)v >> 32));
+    }
+    return (int32_t)v;
+}
+
+/** round(x / 2^30), ties up, saturated (*ovf as dh_q_sat32); a Q2.30 entry
+ *  from a sum of Q2.30 products, |x| < 2^63 - 2^29. */
+DH_INLINE int32_t dh_q_rnd30(int64_t x, int *ovf)
+{
+    int64_t t = x + DH_Q_HALF30;
+    if ((dh_q_hi_chk(t) >> 30) != 0u) {
+        *ovf = (int)DH_ERR_OVERFLOW;
+        return dh_q_sat_sign((uint32_t)((uint64_t)t >> 32));
+    }
+    return dh_q_lo30(t);
+}
+
+/** p + round(x / 2^30), ties up, saturated (*ovf as dh_q_sat32): a position
+ *  plus rotation x position products (Q2.30 x Qpos >> 30 = Qpos). */
+DH_INLINE int32_t dh_q_pos_rnd30(int32_t p, int64_t x, int *ovf)
+{
+    return dh_q_sat32((int64_t)p + ((x + DH_Q_HALF30) >> 30), ovf);
+}
+
+/** -x, INT32_MIN saturated to INT32_MAX (*ovf as dh_q_sat32), never negated. */
+DH_INLINE int32_t dh_q_neg_sat(int32_t x, int *ovf)
+{
+    if (x == INT32_MIN) {
+        *ovf = (int)DH_ERR_OVERFLOW;
+        return INT32_MAX;
+    }
+    return -x;
+}
+
+/** |x| as uint32 (exact also for INT32_MIN). */
+DH_INLINE uint32_t dh_q_abs_u32(int32_t x)
+{
+    return x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
+}
+
 /* ---- kinematics helpers ---------------------------------------------------- */
 
 /** The rotation check: 1 when the 3x3 with columns c0, c1, c2 (3 floats
