@@ -47,8 +47,7 @@ void dh_mat4_trans_f32(dh_mat4_f32 *T, float x, float y, float z)
 /*
  * Rot(x|y|z, deg) is Rot(k, deg) about the coordinate axis k: the
  * normalisation of a unit axis is exact and every product with its zero
- * components is +-0, which the "+ 0.0f" of dh_mat4_rot_axis_f32 maps to +0
- * (test_mat4_seed checks the quadrants bit for bit).
+ * components is +-0, which the "+ 0.0f" of dh_mat4_rot_axis_f32 maps to +0.
  */
 static dh_status dh_rotk(dh_mat4_f32 *T, float deg, int axis)
 {
