@@ -250,7 +250,7 @@ static void dh_mul(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B,
 #if DH_FAST_PATHS
 /*
  * Unrolled products: column c of A*B is the combination of the columns of
- * A (copied to locals a0..a3) with the weights of column c of B, read
+ * A (copied to a local first) with the weights of column c of B, read
  * before column c of out is written, so out may alias A and/or B. Each
  * 4-row statement is one vector multiply-add chain on 4-wide float SIMD
  * (SSE2, NEON) and scalar code on Cortex-M.
@@ -258,7 +258,7 @@ static void dh_mul(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B,
 #define DH_MUL_COL4(out, c, B)                                                          \
     do {                                                                                \
         const float x_ = (B)->m[c][0], y_ = (B)->m[c][1], z_ = (B)->m[c][2], w_ = (B)->m[c][3]; \
-        for (r = 0; r < 4; r++) (out)->m[c][r] = a0[r] * x_ + a1[r] * y_ + a2[r] * z_ + a3[r] * w_; \
+        for (r = 0; r < 4; r++) (out)->m[c][r] = a.m[0][r] * x_ + a.m[1][r] * y_ + a.m[2][r] * z_ + a.m[3][r] * w_; \
     } while (0)
 
 /* Rows the affine product computes before its bottom row is set to 0 0 0 1:
@@ -273,22 +273,17 @@ static void dh_mul(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B,
 #define DH_MUL_COL3(out, c, B)                                                          \
     do {                                                                                \
         const float x_ = (B)->m[c][0], y_ = (B)->m[c][1], z_ = (B)->m[c][2];             \
-        for (r = 0; r < DH_AFFINE_ROWS; r++) (out)->m[c][r] = a0[r] * x_ + a1[r] * y_ + a2[r] * z_;  \
+        for (r = 0; r < DH_AFFINE_ROWS; r++) (out)->m[c][r] = a.m[0][r] * x_ + a.m[1][r] * y_ + a.m[2][r] * z_;  \
     } while (0)
 #endif
 
 void dh_mat4_mul_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
 {
 #if DH_FAST_PATHS
-    float a0[4], a1[4], a2[4], a3[4];
+    dh_mat4_f32 a;
     int r;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    for (r = 0; r < 4; r++) {
-        a0[r] = A->m[0][r];
-        a1[r] = A->m[1][r];
-        a2[r] = A->m[2][r];
-        a3[r] = A->m[3][r];
-    }
+    a = *A;
     DH_MUL_COL4(out, 0, B);
     DH_MUL_COL4(out, 1, B);
     DH_MUL_COL4(out, 2, B);
@@ -301,21 +296,16 @@ void dh_mat4_mul_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *
 void dh_mat4_mul_affine_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
 {
 #if DH_FAST_PATHS
-    float a0[4], a1[4], a2[4], a3[4];
+    dh_mat4_f32 a;
     int r;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    for (r = 0; r < DH_AFFINE_ROWS; r++) {
-        a0[r] = A->m[0][r];
-        a1[r] = A->m[1][r];
-        a2[r] = A->m[2][r];
-        a3[r] = A->m[3][r];
-    }
+    a = *A;
     DH_MUL_COL3(out, 0, B);
     DH_MUL_COL3(out, 1, B);
     DH_MUL_COL3(out, 2, B);
     {
         const float x = B->m[3][0], y = B->m[3][1], z = B->m[3][2];
-        for (r = 0; r < DH_AFFINE_ROWS; r++) out->m[3][r] = a0[r] * x + a1[r] * y + a2[r] * z + a3[r];
+        for (r = 0; r < DH_AFFINE_ROWS; r++) out->m[3][r] = a.m[0][r] * x + a.m[1][r] * y + a.m[2][r] * z + a.m[3][r];
     }
     out->m[0][3] = 0.0f;
     out->m[1][3] = 0.0f;
