@@ -5,8 +5,8 @@
  *
  * Storage is column-major (m[col][row]); see dh_common.h. Every sum is
  * evaluated left to right (k = 0, 1, 2, 3), so the fast paths and the
- * general loops give the same bits on every target. "x + 0.0f" maps -0 to
- * +0 and changes nothing else.
+ * general loops give the same bits (NaN payloads aside) on every target.
+ * "x + 0.0f" maps -0 to +0 and changes nothing else.
  */
 #include <float.h>
 #include <math.h>
