@@ -1,42 +1,21 @@
 /*
  * dh_mat4.c - float 4x4 homogeneous transforms: constructors, accessors,
- * products and application to points, directions and planes (seed 000,
- * sections 3-9, 12, 15, 16).
+ * products and application to points, directions and planes (Paul 1981,
+ * chapter 1).
  *
- * Storage is column-major (m[col][row]); see dh_common.h. Products are
- * written column by column so that each output column is a linear
- * combination of the columns of the left operand, a shape compilers turn
- * into 4-wide vector code where the target has it.
+ * Storage is column-major (m[col][row]); see dh_common.h. Every sum is
+ * evaluated left to right (k = 0, 1, 2, 3), so the fast paths and the
+ * general loops give the same bits (NaN payloads aside) on every target.
+ * "x + 0.0f" maps -0 to +0 and changes nothing else.
  */
 #include <float.h>
 #include <math.h>
 
 #include "dhmath/dh_mat4.h"
 #include "dhmath/dh_trig.h"
-
-#if DH_SMALL
-/*
- * DH_SMALL: the same operations in the same order, written as loops over
- * one shared linear-combination helper (products, points, directions) and
- * one rotation builder (rotx/y/z are Rot(k, deg) about a coordinate axis,
- * which is bitwise the same matrix); the square root is the libm-free
- * dh_sqrtf_ (correctly rounded like sqrtf: same bits).
- */
+#include "dh_internal.h"
 #include "dh_mathf.h"
-#define DH_SQRTF dh_sqrtf_
-#else
-#define DH_SQRTF sqrtf
-#endif
 
-/* finite (not NaN, not +-Inf): a NaN fails the comparison */
-static int dh_finite(float x) { return fabsf(x) <= FLT_MAX; }
-
-#if !DH_SMALL
-/* +0 for either zero, x otherwise (exact) */
-static float dh_nz(float x) { return (x == 0.0f) ? 0.0f : x; }
-#endif
-
-#if DH_SMALL
 static void dh_set_identity(dh_mat4_f32 *T)
 {
     int c, r;
@@ -45,15 +24,6 @@ static void dh_set_identity(dh_mat4_f32 *T)
         T->m[c][c] = 1.0f;
     }
 }
-#else
-static void dh_set_identity(dh_mat4_f32 *T)
-{
-    int c, r;
-    for (c = 0; c < 4; c++) {
-        for (r = 0; r < 4; r++) T->m[c][r] = (c == r) ? 1.0f : 0.0f;
-    }
-}
-#endif
 
 /* ---------------------------------------------------------------------- */
 /* constructors                                                           */
@@ -74,28 +44,11 @@ void dh_mat4_trans_f32(dh_mat4_f32 *T, float x, float y, float z)
     T->m[3][2] = z;
 }
 
-#if !DH_SMALL
 /*
- * sin and cos with -0 mapped to +0, so that 0 - s below never produces -0
- * and Rot(.., 0) is bitwise the identity.
- */
-static dh_status dh_sc(float deg, float *s, float *c)
-{
-    float sv, cv;
-    dh_status st = dh_sincos_f32(deg, &sv, &cv);
-    if (st != DH_OK) return DH_ERR_NAN;
-    *s = dh_nz(sv);
-    *c = dh_nz(cv);
-    return DH_OK;
-}
-#endif
-
-#if DH_SMALL
-/* Rot(k, deg) about a coordinate axis is bitwise Rot(x|y|z, deg): the
+ * Rot(x|y|z, deg) is Rot(k, deg) about the coordinate axis k: the
  * normalisation of a unit axis is exact and every product with its zero
- * components is +-0, which the "+ 0.0f" of dh_mat4_rot_axis_f32 maps to
- * +0 (test_mat4_seed checks the quadrants bit for bit). deg NaN or Inf:
- * DH_ERR_NAN, as below. */
+ * components is +-0, which the "+ 0.0f" of dh_mat4_rot_axis_f32 maps to +0.
+ */
 static dh_status dh_rotk(dh_mat4_f32 *T, float deg, int axis)
 {
     float k[3] = {0.0f, 0.0f, 0.0f};
@@ -117,50 +70,10 @@ dh_status dh_mat4_rotz_f32(dh_mat4_f32 *T, float deg)
 {
     return dh_rotk(T, deg, 2);
 }
-#else
-dh_status dh_mat4_rotx_f32(dh_mat4_f32 *T, float deg)
-{
-    float s, c;
-    DH_ASSERT(T != NULL);
-    if (dh_sc(deg, &s, &c) != DH_OK) return DH_ERR_NAN;
-    dh_set_identity(T);
-    T->m[1][1] = c;          /* row 1, col 1 */
-    T->m[1][2] = s;          /* row 2, col 1 */
-    T->m[2][1] = 0.0f - s;   /* row 1, col 2 */
-    T->m[2][2] = c;
-    return DH_OK;
-}
-
-dh_status dh_mat4_roty_f32(dh_mat4_f32 *T, float deg)
-{
-    float s, c;
-    DH_ASSERT(T != NULL);
-    if (dh_sc(deg, &s, &c) != DH_OK) return DH_ERR_NAN;
-    dh_set_identity(T);
-    T->m[0][0] = c;
-    T->m[0][2] = 0.0f - s;   /* row 2, col 0 */
-    T->m[2][0] = s;          /* row 0, col 2 */
-    T->m[2][2] = c;
-    return DH_OK;
-}
-
-dh_status dh_mat4_rotz_f32(dh_mat4_f32 *T, float deg)
-{
-    float s, c;
-    DH_ASSERT(T != NULL);
-    if (dh_sc(deg, &s, &c) != DH_OK) return DH_ERR_NAN;
-    dh_set_identity(T);
-    T->m[0][0] = c;
-    T->m[0][1] = s;          /* row 1, col 0 */
-    T->m[1][0] = 0.0f - s;   /* row 0, col 1 */
-    T->m[1][1] = c;
-    return DH_OK;
-}
-#endif
 
 /*
- * Diagonal entry k_i^2 vers + cos of eq. 1.70 for a unit axis. When k_i^2
- * is large the equivalent form 1 - (k_j^2 + k_l^2) vers is used: it is more
+ * Diagonal entry k_i^2 vers + cos of Paul 1981 eq. 1.70 for a unit axis.
+ * When k_i^2 is large the equivalent 1 - (k_j^2 + k_l^2) vers is used: more
  * accurate there and exactly 1 on a coordinate axis.
  */
 static float dh_rot_diag(float ki2, float others2, float v, float c)
@@ -168,7 +81,6 @@ static float dh_rot_diag(float ki2, float others2, float v, float c)
     return (ki2 >= 0.5f) ? 1.0f - others2 * v : ki2 * v + c;
 }
 
-#if DH_SMALL
 dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, float deg)
 {
     float k[4], m = 0.0f, len = 0.0f, s, c, v, z = 0.0f, x, y, w, p0;
@@ -185,30 +97,25 @@ dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, flo
     }
     if (z != z) return DH_ERR_NAN;
     if (m < FLT_MIN) return DH_ERR_ZERO_AXIS;
-    /* (0 + x^2) + y^2 + z^2 is bitwise x^2 + y^2 + z^2 */
+    /* scaled by the largest component: no overflow, len in [1, sqrt 3] */
     for (i = 0; i < 3; i++) {
         k[i] /= m;
         len += k[i] * k[i];
     }
-    len = DH_SQRTF(len);
-    /* deg is finite here, so dh_sincos_f32 returns DH_OK; x + 0 is
-     * dh_sc's dh_nz(x): -0 + +0 = +0, anything else unchanged */
-    (void)dh_sincos_f32(deg, &s, &c);
+    len = dh_sqrtf_(len);
+    (void)dh_sincos_f32(deg, &s, &c); /* DH_OK: deg is finite */
     s += 0.0f;
     c += 0.0f;
-    v = 1.0f - c;
+    v = 1.0f - c; /* vers */
     dh_set_identity(T);
     /* eq. 1.70 by the axis j and the two others a, b in cyclic order: the
-     * diagonal entry j as dh_rot_diag, and the pair (column a, row b) =
-     * k_a k_b vers + k_j sin, (column b, row a) = k_a k_b vers - k_j sin
-     * (the products and sums of the default code: a*b == b*a and
-     * a+b == b+a bitwise) */
+     * diagonal entry j, (column a, row b) = k_a k_b vers + k_j sin and
+     * (column b, row a) = k_a k_b vers - k_j sin */
     x = k[0];
     y = k[1];
     w = k[2];
     for (i = 0, j = 0, a = 1, b = 2; i < 3; i++) {
-        /* the unit axis: k / len */
-        const float uj = x / len, ua = y / len, ub = w / len;
+        const float uj = x / len, ua = y / len, ub = w / len; /* unit axis */
         const float p = ua * ub * v, q = uj * s;
         T->m[j][j] = dh_rot_diag(uj * uj, ua * ua + ub * ub, v, c);
         T->m[a][b] = (p + q) + 0.0f;
@@ -224,57 +131,6 @@ dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, flo
     }
     return DH_OK;
 }
-#else
-dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, float deg)
-{
-    float m, x, y, z, len, s, c, v, x2, y2, z2, xyv, xzv, yzv, xs, ys, zs;
-    DH_ASSERT(T != NULL);
-    if (!(dh_finite(kx) && dh_finite(ky) && dh_finite(kz) && dh_finite(deg))) return DH_ERR_NAN;
-    /* scale by the largest component first: overflow-free normalisation */
-    m = fabsf(kx);
-    if (fabsf(ky) > m) m = fabsf(ky);
-    if (fabsf(kz) > m) m = fabsf(kz);
-    if (m < FLT_MIN) return DH_ERR_ZERO_AXIS;
-    x = kx / m;
-    y = ky / m;
-    z = kz / m;
-    len = DH_SQRTF(x * x + y * y + z * z); /* in [1, sqrt 3] */
-    x /= len;
-    y /= len;
-    z /= len;
-    if (dh_sc(deg, &s, &c) != DH_OK) return DH_ERR_NAN;
-    v = 1.0f - c; /* vers theta */
-    x2 = x * x;
-    y2 = y * y;
-    z2 = z * z;
-    xyv = x * y * v;
-    xzv = x * z * v;
-    yzv = y * z * v;
-    xs = x * s;
-    ys = y * s;
-    zs = z * s;
-    /* eq. 1.70; column 0 = n, column 1 = o, column 2 = a. The "+ 0.0f"
-     * turns a -0 (from a negative axis component times 0) into +0 and
-     * changes nothing else. */
-    T->m[0][0] = dh_rot_diag(x2, y2 + z2, v, c);
-    T->m[0][1] = (xyv + zs) + 0.0f;
-    T->m[0][2] = (xzv - ys) + 0.0f;
-    T->m[0][3] = 0.0f;
-    T->m[1][0] = (xyv - zs) + 0.0f;
-    T->m[1][1] = dh_rot_diag(y2, x2 + z2, v, c);
-    T->m[1][2] = (yzv + xs) + 0.0f;
-    T->m[1][3] = 0.0f;
-    T->m[2][0] = (xzv + ys) + 0.0f;
-    T->m[2][1] = (yzv - xs) + 0.0f;
-    T->m[2][2] = dh_rot_diag(z2, x2 + y2, v, c);
-    T->m[2][3] = 0.0f;
-    T->m[3][0] = 0.0f;
-    T->m[3][1] = 0.0f;
-    T->m[3][2] = 0.0f;
-    T->m[3][3] = 1.0f;
-    return DH_OK;
-}
-#endif
 
 void dh_mat4_scale_f32(dh_mat4_f32 *T, float sx, float sy, float sz)
 {
@@ -285,36 +141,19 @@ void dh_mat4_scale_f32(dh_mat4_f32 *T, float sx, float sy, float sz)
     T->m[2][2] = sz;
 }
 
-#if DH_SMALL
-/* f = +-0: -1 / f is an infinity, so the finiteness test of r is also the
- * f == 0 test of the default code (same status, DH_ERR_DOMAIN) */
+/* f = +-0 gives r = -+Inf, so the finiteness test of r is also f == 0 */
 dh_status dh_mat4_persp_f32(dh_mat4_f32 *T, int axis, float f)
 {
     float r;
     DH_ASSERT(T != NULL);
     if (axis < 0 || axis > 2) return DH_ERR_ARG;
-    if (!dh_finite(f)) return DH_ERR_NAN;
+    if (!dh_isfinite_f32(f)) return DH_ERR_NAN;
     r = -1.0f / f;
-    if (!dh_finite(r)) return DH_ERR_DOMAIN;
+    if (!dh_isfinite_f32(r)) return DH_ERR_DOMAIN;
     dh_set_identity(T);
     T->m[axis][3] = r; /* bottom row, column of the axis (eq. 1.127) */
     return DH_OK;
 }
-#else
-dh_status dh_mat4_persp_f32(dh_mat4_f32 *T, int axis, float f)
-{
-    float r;
-    DH_ASSERT(T != NULL);
-    if (axis < 0 || axis > 2) return DH_ERR_ARG;
-    if (!dh_finite(f)) return DH_ERR_NAN;
-    if (f == 0.0f) return DH_ERR_DOMAIN;
-    r = -1.0f / f;
-    if (!dh_finite(r)) return DH_ERR_DOMAIN;
-    dh_set_identity(T);
-    T->m[axis][3] = r; /* bottom row, column of the axis (eq. 1.127) */
-    return DH_OK;
-}
-#endif
 
 void dh_mat4_from_noap_f32(dh_mat4_f32 *T, const dh_vec3_f32 *n, const dh_vec3_f32 *o,
                            const dh_vec3_f32 *a, const dh_vec3_f32 *p)
@@ -372,45 +211,9 @@ void dh_mat4_set_rot_f32(dh_mat4_f32 *T, const dh_mat3_f32 *R)
 /* ---------------------------------------------------------------------- */
 
 /*
- * Column c of A*B is the combination of the columns of A with the weights
- * of column c of B. The columns of A are copied to locals (every output
- * column needs all of them); column c of B is read completely before
- * column c of out is written, so out may alias A, B or both. Each 4-row
- * statement is one vector multiply-add chain where the target has 4-wide
- * float vectors (SSE2, NEON) and plain scalar code on Cortex-M; the sums
- * are evaluated left to right (k = 0, 1, 2, 3) everywhere, so the results
- * do not depend on the target.
- */
-#define DH_MUL_COL4(out, c, B)                                                          \
-    do {                                                                                \
-        const float x_ = (B)->m[c][0], y_ = (B)->m[c][1], z_ = (B)->m[c][2], w_ = (B)->m[c][3]; \
-        for (r = 0; r < 4; r++) (out)->m[c][r] = a0[r] * x_ + a1[r] * y_ + a2[r] * z_ + a3[r] * w_; \
-    } while (0)
-
-/* Rows the affine product computes before its bottom row is set to 0 0 0 1:
- * all four where 4-wide float SIMD makes a column one vector operation
- * (the extra lane is free and keeps the code vector-shaped), only the three
- * needed ones on scalar FPUs such as Cortex-M4F (a fourth row there is a
- * third more work). Rows 0-2 are the same operations in the same order
- * either way, so the results do not depend on the target. */
-#if defined(__SSE__) || defined(__ARM_NEON) || defined(__ARM_NEON__) || defined(__ALTIVEC__)
-#define DH_AFFINE_ROWS 4
-#else
-#define DH_AFFINE_ROWS 3
-#endif
-
-#define DH_MUL_COL3(out, c, B)                                                          \
-    do {                                                                                \
-        const float x_ = (B)->m[c][0], y_ = (B)->m[c][1], z_ = (B)->m[c][2];             \
-        for (r = 0; r < DH_AFFINE_ROWS; r++) (out)->m[c][r] = a0[r] * x_ + a1[r] * y_ + a2[r] * z_;  \
-    } while (0)
-
-#if DH_SMALL
-/*
- * o[r] = A_r0 in[0] + ... + A_r(n-1) in[n-1] for the rows r < 4, summed
- * left to right as everywhere in this file: column c of a product (in =
- * column c of B), a point (in = u, 1: the + p of the default code is
- * p * 1, exact), a direction (n = 3), a homogeneous point.
+ * o[r] = A_r0 in[0] + ... + A_r(n-1) in[n-1] for the rows r < 4: column c
+ * of a product (in = column c of B), a point (in = u, 1: the + p is p * 1,
+ * exact), a direction (n = 3), a homogeneous point.
  */
 static void dh_lin(const dh_mat4_f32 *A, const float *in, float *o, int n)
 {
@@ -424,11 +227,9 @@ static void dh_lin(const dh_mat4_f32 *A, const float *in, float *o, int n)
 
 /*
  * out = A B (aff == 0), or the affine product (aff == 1): columns 0..2 of
- * R_A times R_B (three terms, no fourth), column 3 R_A p_B + p_A (the
- * default code's + p_A: x * 1 is x, so it is the fourth term of a point),
- * bottom row 0 0 0 1; the bottom rows of A and B are never used (row 3 of
- * the temporary is overwritten). Built in a temporary, so out may alias A
- * and/or B.
+ * R_A R_B, column 3 R_A p_B + p_A (the fourth term of a point), bottom row
+ * 0 0 0 1; the bottom rows of A and B are not used. Built in a temporary,
+ * so out may alias A and/or B.
  */
 static void dh_mul(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B, int aff)
 {
@@ -446,61 +247,74 @@ static void dh_mul(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B,
     *out = t;
 }
 
+#if DH_FAST_PATHS
+/*
+ * Unrolled products: column c of A*B is the combination of the columns of
+ * A (copied to a local first) with the weights of column c of B, read
+ * before column c of out is written, so out may alias A and/or B. Each
+ * 4-row statement is one vector multiply-add chain on 4-wide float SIMD
+ * (SSE2, NEON) and scalar code on Cortex-M.
+ */
+#define DH_MUL_COL4(out, c, B)                                                          \
+    do {                                                                                \
+        const float x_ = (B)->m[c][0], y_ = (B)->m[c][1], z_ = (B)->m[c][2], w_ = (B)->m[c][3]; \
+        for (r = 0; r < 4; r++) (out)->m[c][r] = a.m[0][r] * x_ + a.m[1][r] * y_ + a.m[2][r] * z_ + a.m[3][r] * w_; \
+    } while (0)
+
+/* Rows the affine product computes before its bottom row is set to 0 0 0 1:
+ * four where 4-wide SIMD makes a column one vector operation, the three
+ * needed ones on scalar FPUs such as Cortex-M4F. */
+#if defined(__SSE__) || defined(__ARM_NEON) || defined(__ARM_NEON__) || defined(__ALTIVEC__)
+#define DH_AFFINE_ROWS 4
+#else
+#define DH_AFFINE_ROWS 3
+#endif
+
+#define DH_MUL_COL3(out, c, B)                                                          \
+    do {                                                                                \
+        const float x_ = (B)->m[c][0], y_ = (B)->m[c][1], z_ = (B)->m[c][2];             \
+        for (r = 0; r < DH_AFFINE_ROWS; r++) (out)->m[c][r] = a.m[0][r] * x_ + a.m[1][r] * y_ + a.m[2][r] * z_;  \
+    } while (0)
+#endif
+
 void dh_mat4_mul_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
 {
+#if DH_FAST_PATHS
+    dh_mat4_f32 a;
+    int r;
+    DH_ASSERT(out != NULL && A != NULL && B != NULL);
+    a = *A;
+    DH_MUL_COL4(out, 0, B);
+    DH_MUL_COL4(out, 1, B);
+    DH_MUL_COL4(out, 2, B);
+    DH_MUL_COL4(out, 3, B);
+    return;
+#endif
     dh_mul(out, A, B, 0);
 }
 
 void dh_mat4_mul_affine_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
 {
-    dh_mul(out, A, B, 1);
-}
-#else
-void dh_mat4_mul_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
-{
-    float a0[4], a1[4], a2[4], a3[4];
+#if DH_FAST_PATHS
+    dh_mat4_f32 a;
     int r;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    for (r = 0; r < 4; r++) {
-        a0[r] = A->m[0][r];
-        a1[r] = A->m[1][r];
-        a2[r] = A->m[2][r];
-        a3[r] = A->m[3][r];
-    }
-    DH_MUL_COL4(out, 0, B);
-    DH_MUL_COL4(out, 1, B);
-    DH_MUL_COL4(out, 2, B);
-    DH_MUL_COL4(out, 3, B);
-}
-
-void dh_mat4_mul_affine_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
-{
-    float a0[4], a1[4], a2[4], a3[4];
-    int r;
-    DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    /* Same shape as dh_mat4_mul_f32 without the bottom row of B. On SIMD
-     * hosts row 3 is computed 4-wide with the rest (DH_AFFINE_ROWS) and then
-     * replaced by 0 0 0 1: the bottom rows of A and B do not affect the
-     * result. */
-    for (r = 0; r < DH_AFFINE_ROWS; r++) {
-        a0[r] = A->m[0][r];
-        a1[r] = A->m[1][r];
-        a2[r] = A->m[2][r];
-        a3[r] = A->m[3][r];
-    }
+    a = *A;
     DH_MUL_COL3(out, 0, B);
     DH_MUL_COL3(out, 1, B);
     DH_MUL_COL3(out, 2, B);
     {
         const float x = B->m[3][0], y = B->m[3][1], z = B->m[3][2];
-        for (r = 0; r < DH_AFFINE_ROWS; r++) out->m[3][r] = a0[r] * x + a1[r] * y + a2[r] * z + a3[r];
+        for (r = 0; r < DH_AFFINE_ROWS; r++) out->m[3][r] = a.m[0][r] * x + a.m[1][r] * y + a.m[2][r] * z + a.m[3][r];
     }
     out->m[0][3] = 0.0f;
     out->m[1][3] = 0.0f;
     out->m[2][3] = 0.0f;
     out->m[3][3] = 1.0f;
-}
+    return;
 #endif
+    dh_mul(out, A, B, 1);
+}
 
 void dh_mat4_premul_f32(dh_mat4_f32 *T, const dh_mat4_f32 *X)
 {
@@ -516,8 +330,7 @@ void dh_mat4_postmul_f32(dh_mat4_f32 *T, const dh_mat4_f32 *X)
 /* application                                                            */
 /* ---------------------------------------------------------------------- */
 
-#if DH_SMALL
-/* v = rows 0..2 of the n-term combination of the columns of T with u, w
+/* v = rows 0..2 of the n-term combination of the columns of T with u, 1
  * (u, v may be the same object: u is read first) */
 static void dh_apply3(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, int n)
 {
@@ -535,6 +348,17 @@ static void dh_apply3(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v
 
 void dh_mat4_apply_point_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
 {
+#if DH_FAST_PATHS
+    float x, y, z;
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
+    x = u->x;
+    y = u->y;
+    z = u->z;
+    v->x = T->m[0][0] * x + T->m[1][0] * y + T->m[2][0] * z + T->m[3][0];
+    v->y = T->m[0][1] * x + T->m[1][1] * y + T->m[2][1] * z + T->m[3][1];
+    v->z = T->m[0][2] * x + T->m[1][2] * y + T->m[2][2] * z + T->m[3][2];
+    return;
+#endif
     dh_apply3(T, u, v, 4);
 }
 
@@ -557,51 +381,11 @@ void dh_mat4_apply_vec4_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec4_
     v->z = o[2];
     v->w = o[3];
 }
-#else
-void dh_mat4_apply_point_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
-{
-    float x, y, z;
-    DH_ASSERT(T != NULL && u != NULL && v != NULL);
-    x = u->x;
-    y = u->y;
-    z = u->z;
-    v->x = T->m[0][0] * x + T->m[1][0] * y + T->m[2][0] * z + T->m[3][0];
-    v->y = T->m[0][1] * x + T->m[1][1] * y + T->m[2][1] * z + T->m[3][1];
-    v->z = T->m[0][2] * x + T->m[1][2] * y + T->m[2][2] * z + T->m[3][2];
-}
 
-void dh_mat4_apply_dir_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
-{
-    float x, y, z;
-    DH_ASSERT(T != NULL && u != NULL && v != NULL);
-    x = u->x;
-    y = u->y;
-    z = u->z;
-    v->x = T->m[0][0] * x + T->m[1][0] * y + T->m[2][0] * z;
-    v->y = T->m[0][1] * x + T->m[1][1] * y + T->m[2][1] * z;
-    v->z = T->m[0][2] * x + T->m[1][2] * y + T->m[2][2] * z;
-}
-
-void dh_mat4_apply_vec4_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec4_f32 *v)
-{
-    float x, y, z, w;
-    DH_ASSERT(T != NULL && u != NULL && v != NULL);
-    x = u->x;
-    y = u->y;
-    z = u->z;
-    w = u->w;
-    v->x = T->m[0][0] * x + T->m[1][0] * y + T->m[2][0] * z + T->m[3][0] * w;
-    v->y = T->m[0][1] * x + T->m[1][1] * y + T->m[2][1] * z + T->m[3][1] * w;
-    v->z = T->m[0][2] * x + T->m[1][2] * y + T->m[2][2] * z + T->m[3][2] * w;
-    v->w = T->m[0][3] * x + T->m[1][3] * y + T->m[2][3] * z + T->m[3][3] * w;
-}
-#endif
-
-#if DH_SMALL
+/* x * 0 is +-0 for finite x and NaN for NaN and +-Inf; a sum of +-0 is
+ * never NaN */
 int dh_mat4_isfinite_f32(const dh_mat4_f32 *T)
 {
-    /* x * 0 is +-0 for finite x and NaN for NaN and +-Inf; a sum of +-0
-     * is never NaN */
     float z = 0.0f;
     int c, r;
     DH_ASSERT(T != NULL);
@@ -610,19 +394,7 @@ int dh_mat4_isfinite_f32(const dh_mat4_f32 *T)
     }
     return z == z;
 }
-#else
-int dh_mat4_isfinite_f32(const dh_mat4_f32 *T)
-{
-    int c, r, ok = 1;
-    DH_ASSERT(T != NULL);
-    for (c = 0; c < 4; c++) {
-        for (r = 0; r < 4; r++) ok &= dh_finite(T->m[c][r]);
-    }
-    return ok;
-}
-#endif
 
-#if DH_SMALL
 dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec3_f32 *v)
 {
     float in[4], h[4], z = 0.0f, zi = 0.0f;
@@ -633,14 +405,12 @@ dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, 
     in[2] = u->z;
     in[3] = u->w;
     dh_lin(T, in, h, 4);
-    /* x * 0 is NaN exactly for NaN and +-Inf */
     for (i = 0; i < 4; i++) {
         z += h[i] * 0.0f;
         zi += in[i] * 0.0f;
     }
     if (z != z) return (dh_mat4_isfinite_f32(T) && zi == zi) ? DH_ERR_OVERFLOW : DH_ERR_NAN;
     if (h[3] == 0.0f) return DH_ERR_DOMAIN;
-    /* x + 0 is dh_nz(x): -0 + +0 = +0, anything else unchanged */
     for (i = 0; i < 3; i++) {
         h[i] = h[i] / h[3] + 0.0f;
         z += h[i] * 0.0f;
@@ -652,7 +422,7 @@ dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, 
     return DH_OK;
 }
 
-/* Q_j = P . (column j of Tinv), left to right as below */
+/* Q_j = P . (column j of Tinv) */
 void dh_plane_mul_f32(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv, dh_plane_f32 *Q)
 {
     float p[4], q[4];
@@ -672,44 +442,6 @@ void dh_plane_mul_f32(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv, dh_plane_f
     Q->c = q[2];
     Q->d = q[3];
 }
-#else
-dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec3_f32 *v)
-{
-    dh_vec4_f32 h;
-    float x, y, z;
-    DH_ASSERT(T != NULL && u != NULL && v != NULL);
-    dh_mat4_apply_vec4_f32(T, u, &h);
-    if (!(dh_finite(h.x) && dh_finite(h.y) && dh_finite(h.z) && dh_finite(h.w))) {
-        const int in_ok = dh_mat4_isfinite_f32(T) && dh_finite(u->x) && dh_finite(u->y) &&
-                          dh_finite(u->z) && dh_finite(u->w);
-        return in_ok ? DH_ERR_OVERFLOW : DH_ERR_NAN;
-    }
-    if (h.w == 0.0f) return DH_ERR_DOMAIN;
-    x = h.x / h.w;
-    y = h.y / h.w;
-    z = h.z / h.w;
-    if (!(dh_finite(x) && dh_finite(y) && dh_finite(z))) return DH_ERR_OVERFLOW;
-    v->x = dh_nz(x);
-    v->y = dh_nz(y);
-    v->z = dh_nz(z);
-    return DH_OK;
-}
-
-void dh_plane_mul_f32(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv, dh_plane_f32 *Q)
-{
-    float a, b, c, d;
-    DH_ASSERT(P != NULL && Tinv != NULL && Q != NULL);
-    a = P->a;
-    b = P->b;
-    c = P->c;
-    d = P->d;
-    /* Q_j = P . (column j of Tinv); columns are contiguous */
-    Q->a = a * Tinv->m[0][0] + b * Tinv->m[0][1] + c * Tinv->m[0][2] + d * Tinv->m[0][3];
-    Q->b = a * Tinv->m[1][0] + b * Tinv->m[1][1] + c * Tinv->m[1][2] + d * Tinv->m[1][3];
-    Q->c = a * Tinv->m[2][0] + b * Tinv->m[2][1] + c * Tinv->m[2][2] + d * Tinv->m[2][3];
-    Q->d = a * Tinv->m[3][0] + b * Tinv->m[3][1] + c * Tinv->m[3][2] + d * Tinv->m[3][3];
-}
-#endif
 
 void dh_mat4_apply_points_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, size_t count)
 {
