@@ -55,10 +55,10 @@ dh_status dh_quat_to_mat3_f32(dh_mat3_f32 *R, const dh_quat_f32 *q)
     wx = s * w * x;
     wy = s * w * y;
     wz = s * w * z;
+    dh_rot_offdiag_f32(R, xy, xz, yz, wx, wy, wz);
     DH_M3(R, 0, 0) = 1.0f - (yy + zz);
     DH_M3(R, 1, 1) = 1.0f - (xx + zz);
     DH_M3(R, 2, 2) = 1.0f - (xx + yy);
-    dh_rot_offdiag_f32(R, xy, xz, yz, wx, wy, wz);
     return DH_OK;
 }
 
