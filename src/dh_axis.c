@@ -10,16 +10,9 @@
 #include "dh_internal.h"
 
 
-/*
- * theta = atan2(s2, c2) in degrees, for s2 >= 0, with the libm-free
- * dh_atan2f_ and dh_sqrtf_ of src/dh_mathf.h (no newlib atan2f / sqrtf:
- * less flash and stack on Cortex-M; dh_sqrtf_ gives the bits of sqrtf,
- * dh_atan2f_ is within 2 ulp). The argument given to
- * atan2f is always at most 45 degrees, and the result is formed as
- * 0 + x, 90 - x or 180 - x, so the rounding error of the radian-to-degree
- * product stays below half an ulp of 45 and the octant boundaries 90 and
- * 180 are exact.
- */
+/* theta = atan2(s2, c2) in degrees for s2 >= 0: dh_atan2f_ only sees
+ * angles <= 45 deg, combined as x, 90 - x or 180 - x, so 90 and 180 are
+ * exact and the degree conversion errs by < 1/2 ulp of 45. */
 static float dh_atan2_deg(float s2, float c2)
 {
     float th;
@@ -54,9 +47,8 @@ dh_status dh_mat4_to_axis_angle_f32(const dh_mat4_f32 *T, dh_vec3_f32 *k, float 
     th = dh_atan2_deg(s2, c2);
 
     if (c2 >= 0.0f) {
-        /* theta <= 90: k = d / |d| (eq. 1.83-1.85), renormalised; d is
-         * scaled by its largest component first so that tiny angles do not
-         * underflow. */
+        /* theta <= 90: k = d / |d| (eq. 1.83-1.85), d scaled by its largest
+         * component first (tiny angles do not underflow) */
         m = fabsf(dx);
         if (fabsf(dy) > m) m = fabsf(dy);
         if (fabsf(dz) > m) m = fabsf(dz);
@@ -72,12 +64,9 @@ dh_status dh_mat4_to_axis_angle_f32(const dh_mat4_f32 *T, dh_vec3_f32 *k, float 
         y = dy / m;
         z = dz / m;
     } else {
-        /* theta > 90: the component of the largest diagonal element from
-         * eq. 1.92-1.94 and the others from the pair sums eq. 1.95-1.103.
-         * Without the divisions, the vector
-         *   w = (2 diag_i - c2, pair sums) = 2 k_i vers(theta) k
-         * is parallel to k and has the sign of k_i, which is the sign of
-         * d_i (sgn(0) = +1 as in the seed). |w| >= 2/sqrt(3). */
+        /* theta > 90 (eq. 1.92-1.103 without the divisions): w = (2 diag_i -
+         * c2, pair sums) = 2 k_i vers(theta) k is parallel to k with the sign
+         * of k_i, i.e. of d_i (sgn(0) = +1); |w| >= 2/sqrt(3). */
         float sg;
         if (nx >= oy && nx >= az) {
             x = 2.0f * nx - c2;

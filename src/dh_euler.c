@@ -1,14 +1,8 @@
 /*
  * dh_euler.c - Euler angles <-> rotation matrix for the 12 axis sequences,
  * intrinsic (upper-case names) and extrinsic (lower-case names), with the
- * scipy naming convention and an explicit gimbal-lock policy.
- *
- * Notation used in the derivations below: the intrinsic sequence applies
- * R = Ri(a) Rj(b) Rk(c) with axis indices i, j, k (k == i for a proper Euler
- * sequence; then l is the remaining axis). e_i is the unit vector of axis
- * i, and s = +1 when (i, j, l) -- or (i, j, k) for Tait-Bryan -- is a cyclic
- * permutation of (x, y, z), else -1, so that e_i x e_j = s e_third.
- * For a unit vector u perpendicular to e_q: Rq(t) u = cos t u + sin t (e_q x u).
+ * scipy naming convention and an explicit gimbal-lock policy (method:
+ * docs/design.md, "Rotations").
  */
 #include <math.h>
 
@@ -71,11 +65,7 @@ const char *dh_euler_name(dh_euler_seq seq)
     return dh_euler_names[u];
 }
 
-/*
- * M = M Rq(t) for the elementary rotation about axis q with sine s and
- * cosine c: only columns q+1 and q+2 (cyclic) change,
- *   col(q+1) <- c col(q+1) + s col(q+2),  col(q+2) <- c col(q+2) - s col(q+1).
- */
+/* M = M Rq(t), sine s, cosine c: only columns q+1 and q+2 (cyclic) change. */
 static void dh_euler_post_rot(dh_mat3_f32 *M, int q, float s, float c)
 {
     int u = (q == 2) ? 0 : q + 1, w = (q == 0) ? 2 : q - 1, r; /* no division (Cortex-M0) */
@@ -117,15 +107,10 @@ dh_status dh_euler_to_mat3_f32(dh_mat3_f32 *R, dh_euler_seq seq, const float ang
     return DH_OK;
 }
 
-/*
- * atan2(y, x) in DEGREES, in (-180, 180]. The float atan2 (dh_atan2f_, the
- * library's libm-free one, smaller than newlib's atan2f in stack and flash)
- * is only ever asked for an
- * angle of at most 45 degrees and the result is formed as phi, 90 - phi,
- * -90 + phi, 180 - phi or -180 + phi, so the result near +-90 and +-180 is
- * not limited by the float resolution of the radian value (2.4e-7 rad at
- * pi) but only by the final rounding in degrees. atan2(+-0, x < 0) is 180.
- */
+/* atan2(y, x) in DEGREES, in (-180, 180]: dh_atan2f_ only sees angles of
+ * at most 45 deg, combined as phi, +-90 -+ phi, +-180 -+ phi, so the result
+ * near +-90 and +-180 is limited only by the final rounding in degrees.
+ * atan2(+-0, x < 0) is 180. */
 static float dh_euler_atan2_deg(float y, float x)
 {
     float ax = fabsf(x), ay = fabsf(y), d;
@@ -154,93 +139,47 @@ static float dh_euler_clamp(float d, float lo, float hi)
 }
 
 /*
- * Intrinsic angles (a, b, c), in degrees, of R = Ri(a) Rj(b) Rk(c).
- * zero_first == 0: b and c are read from row i and a is fitted to the
- * residual R Rk(c)^T = Ri(a) Rj(b); at the pole c = 0.
- * zero_first == 1: a and b are read from column k and c is fitted to the
- * residual Ri(a)^T R = Rj(b) Rk(c); at the pole a = 0.
+ * Intrinsic angles (a, b, c), in degrees, of R = Ri(a) Rj(b) Rk(c); e_i x
+ * e_j = s e_l, l the axis that is neither i nor j. The angle f on the pole
+ * side (c for zero_first == 0, read from row i; a for zero_first == 1,
+ * read from column k) is 0 at the pole; g is fitted to the residual rotation
+ * (R Rk(c)^T = Ri(a) Rj(b), or Ri(a)^T R = Rj(b) Rk(c)), from the
+ * column / row j of it: p = cf R(j,j) + t sf P2, q = cf Q1 + t sf Q2.
+ *   Tait-Bryan (k == l): row i = cb cc e_i - s cb sc e_j + s sb e_k,
+ *     column k = s sb e_i - s cb sa e_j + cb ca e_k.
+ *   proper (k == i): row i = cb e_i + sb sc e_j + s sb cc e_l,
+ *     column i = cb e_i + sb sa e_j - s sb ca e_l.
  */
 static void dh_euler_solve(const dh_mat3_f32 *R, int i, int j, int k, int zero_first, float out[3])
 {
 #define RR(r, c) DH_M3(R, (r), (c))
     int proper = (i == k);
-    int l = proper ? 3 - i - j : k;           /* the axis that is neither i nor j */
-    float s = (j == i + 1 || j == i - 2) ? 1.0f : -1.0f; /* e_i x e_j = s e_l (cyclic: xy, yz, zx) */
-    float a, b, c, n, ca, sa, cc, sc, p, q;
+    int l = proper ? 3 - i - j : k;
+    float s = (j == i + 1 || j == i - 2) ? 1.0f : -1.0f; /* cyclic: xy, yz, zx */
+    float t = s, u = s, y, x, p2, q1, q2, n, b, f, g, cf, sf;
 
-    if (!proper) {
-        /* Tait-Bryan, k == l:
-         *   row i    = cb cc e_i - s cb sc e_j + s sb e_k
-         *   column k = s sb e_i - s cb sa e_j + cb ca e_k          */
-        if (!zero_first) {
-            n = sqrtf(RR(i, i) * RR(i, i) + RR(i, j) * RR(i, j)); /* cos b */
-            b = dh_euler_atan2_deg(s * RR(i, k), n);
-            if (n <= DH_EULER_POLE_TOL) {
-                c = 0.0f; cc = 1.0f; sc = 0.0f;
-            } else {
-                c = dh_euler_atan2_deg(-s * RR(i, j), RR(i, i));
-                cc = RR(i, i) / n;
-                sc = -s * RR(i, j) / n;
-            }
-            /* column j of R Rk(-c) = Ri(a) e_j = ca e_j + s sa e_k, and
-             * Rk(-c) e_j = cc e_j + s sc e_i */
-            p = cc * RR(j, j) + s * sc * RR(j, i);
-            q = cc * RR(k, j) + s * sc * RR(k, i);
-            a = dh_euler_atan2_deg(s * q, p);
-        } else {
-            n = sqrtf(RR(j, k) * RR(j, k) + RR(k, k) * RR(k, k)); /* cos b */
-            b = dh_euler_atan2_deg(s * RR(i, k), n);
-            if (n <= DH_EULER_POLE_TOL) {
-                a = 0.0f; ca = 1.0f; sa = 0.0f;
-            } else {
-                a = dh_euler_atan2_deg(-s * RR(j, k), RR(k, k));
-                ca = RR(k, k) / n;
-                sa = -s * RR(j, k) / n;
-            }
-            /* row j of Ri(a)^T R = (Ri(a) e_j)^T R = e_j^T Rk(c)
-             * = cc e_j + s sc e_i (as a row) */
-            p = ca * RR(j, j) + s * sa * RR(k, j);
-            q = ca * RR(j, i) + s * sa * RR(k, i);
-            c = dh_euler_atan2_deg(s * q, p);
-        }
+    if (!proper && !zero_first) {
+        y = -s * RR(i, j); x = RR(i, i); p2 = RR(j, i); q1 = RR(k, j); q2 = RR(k, i);
+    } else if (!proper) {
+        y = -s * RR(j, k); x = RR(k, k); p2 = RR(k, j); q1 = RR(j, i); q2 = RR(k, i);
+    } else if (!zero_first) {
+        y = RR(i, j); x = s * RR(i, l); p2 = RR(j, l); q1 = RR(l, j); q2 = RR(l, l); t = -s;
     } else {
-        /* proper Euler, k == i:
-         *   row i    = cb e_i + sb sc e_j + s sb cc e_l
-         *   column i = cb e_i + sb sa e_j - s sb ca e_l           */
-        if (!zero_first) {
-            n = sqrtf(RR(i, j) * RR(i, j) + RR(i, l) * RR(i, l)); /* sin b */
-            b = dh_euler_atan2_deg(n, RR(i, i));
-            if (n <= DH_EULER_POLE_TOL) {
-                c = 0.0f; cc = 1.0f; sc = 0.0f;
-            } else {
-                c = dh_euler_atan2_deg(RR(i, j), s * RR(i, l));
-                sc = RR(i, j) / n;
-                cc = s * RR(i, l) / n;
-            }
-            /* column j of R Ri(-c) = Ri(a) e_j = ca e_j + s sa e_l, and
-             * Ri(-c) e_j = cc e_j - s sc e_l */
-            p = cc * RR(j, j) - s * sc * RR(j, l);
-            q = cc * RR(l, j) - s * sc * RR(l, l);
-            a = dh_euler_atan2_deg(s * q, p);
-        } else {
-            n = sqrtf(RR(j, i) * RR(j, i) + RR(l, i) * RR(l, i)); /* sin b */
-            b = dh_euler_atan2_deg(n, RR(i, i));
-            if (n <= DH_EULER_POLE_TOL) {
-                a = 0.0f; ca = 1.0f; sa = 0.0f;
-            } else {
-                a = dh_euler_atan2_deg(RR(j, i), -s * RR(l, i));
-                sa = RR(j, i) / n;
-                ca = -s * RR(l, i) / n;
-            }
-            /* row j of Ri(a)^T R = e_j^T Ri(c) = cc e_j - s sc e_l */
-            p = ca * RR(j, j) + s * sa * RR(l, j);
-            q = ca * RR(j, l) + s * sa * RR(l, l);
-            c = dh_euler_atan2_deg(-s * q, p);
-        }
+        y = RR(j, i); x = -s * RR(l, i); p2 = RR(l, j); q1 = RR(j, l); q2 = RR(l, l); u = -s;
     }
-    out[0] = a;
+    n = sqrtf(x * x + y * y);                 /* cos b (Tait-Bryan), sin b (proper) */
+    b = proper ? dh_euler_atan2_deg(n, RR(i, i)) : dh_euler_atan2_deg(s * RR(i, k), n);
+    if (n <= DH_EULER_POLE_TOL) {
+        f = 0.0f; cf = 1.0f; sf = 0.0f;
+    } else {
+        f = dh_euler_atan2_deg(y, x);
+        cf = x / n;
+        sf = y / n;
+    }
+    g = dh_euler_atan2_deg(u * (cf * q1 + t * sf * q2), cf * RR(j, j) + t * sf * p2);
+    out[0] = zero_first ? f : g;
     out[1] = b;
-    out[2] = c;
+    out[2] = zero_first ? g : f;
 #undef RR
 }
 
@@ -260,16 +199,13 @@ dh_status dh_mat3_to_euler_f32(const dh_mat3_f32 *R, dh_euler_seq seq, float ang
         dh_euler_solve(R, ax[0], ax[1], ax[2], 0, dg);
     } else {
         /* extrinsic (a, b, c) = intrinsic (c, b, a) of the reversed axes;
-         * the letter-third angle c is the intrinsic first one, which the
-         * gimbal-lock policy sets to 0 at the pole */
+         * the letter-third angle c (intrinsic first) is 0 at the pole */
         ax = dh_euler_axes[u - 12u];
         dh_euler_solve(R, ax[2], ax[1], ax[0], 1, dg);
         t = dg[0]; dg[0] = dg[2]; dg[2] = t;
     }
     proper = (ax[0] == ax[2]);
-    /* the helper already returns (-180, 180]; the middle angle comes from
-     * atan2 with a non-negative x (Tait-Bryan) or y (proper) argument, so
-     * the clamps only guard the documented ranges */
+    /* the clamps only guard the documented ranges of the middle angle */
     ang_deg[0] = dg[0];
     ang_deg[1] = proper ? dh_euler_clamp(dg[1], 0.0f, 180.0f) : dh_euler_clamp(dg[1], -90.0f, 90.0f);
     ang_deg[2] = dg[2];

@@ -1,45 +1,13 @@
 /*
  * dh_ik.c - numerical inverse kinematics in float: Levenberg-Marquardt with
- * Sugihara's damping (T. Sugihara, "Solvability-Unconcerned Inverse
- * Kinematics by the Levenberg-Marquardt Method", 2011).
+ * the damping of Sugihara 2011, projected on the joint box, with
+ * deterministic restarts (method: docs/design.md, "Kinematics").
  *
- * Per iteration, with the weighted, masked error e (position; w_rot times
- * the orientation error a(dR)), E = 1/2 e^T e and the Jacobian J taken in
- * scaled joint variables x (radians for revolute joints, length / L for
- * prismatic ones, L = the robot's characteristic length, so that every
- * column has the unit of length):
- *
- *   (J^T J + (mu E + wbar) I) dx = J^T e,    wbar = DH_IK_WBAR * L^2
- *
- * (mu = 1 is Sugihara's W_N = E_k + wbar; mu grows after a rejected step).
- * The system is solved by an LDL^T factorisation (no square root). The
- * step is projected on the joint box INSIDE the iteration: joints that
- * sit on a bound and are pushed outward are removed from the system and the
- * system is solved again for the others; the remaining step is clamped into
- * the box. A trial point is accepted only when it lowers E. mu is halved
- * after an accepted step (down to 1e-3) and tripled after a rejected one:
- * gentler than the classic /10 .. x10 schedule, which makes the damping
- * saw-tooth between too short and rejected steps in curved, nearly flat
- * valleys (the Puma's folded-elbow targets). An attempt
- * that stalls (4 steps in a row with less than 1% decrease of E, or an
- * empty projected step) is restarted from a deterministic pseudo-random
- * point in the joint box (xorshift32 with a fixed seed: same inputs, same
- * outputs), at most p->restarts times within p->max_iter steps; the best
- * configuration over all attempts is returned, and the status says how its
- * attempt ended (converged; stalled: UNREACHABLE; cut by max_iter while
- * still improving: NO_CONVERGENCE). A target farther from the base than
- * the arm can reach (cheap bound: sum of the link offsets, the prismatic
- * travel and the tool offset) gets only IK_HOPELESS_RESTARTS restarts and
- * is always reported UNREACHABLE. Once the tolerances are met, up to 3
- * more steps refine the result towards the float resolution.
- *
- * Stack: the worst-case chain including callees and libgcc stays within
- * 256 bytes on Cortex-M0+ (soft float) and M4F. So every
- * vector and matrix lives in the caller's workspace, including the running
- * frame of the Jacobian pass, dR and the scalar state; dh_ik_f32 calls
- * shallow blocks one after the other (joint sin/cos, Jacobian pass, error,
- * step) instead of nesting the public Jacobian and pose-error functions.
- * No heap, no recursion.
+ * Stack (<= 256 B per public function with callees and libgcc, M0+ and
+ * M4F): every vector and matrix, the running frame of the Jacobian pass,
+ * dR and the float state live in the caller's workspace; dh_ik_f32 calls
+ * shallow noinline blocks one after the other instead of nesting the public
+ * Jacobian and pose-error functions, so the frames do not add up.
  */
 #include "dhmath/dh_kin.h"
 #include "dhmath/dh_trig.h"
@@ -59,9 +27,6 @@
 #define IK_STALL_RATIO 0.99f    /* E must drop below this fraction to count as progress */
 #define IK_HOPELESS_RESTARTS 3u /* restarts for a target beyond the reach bound */
 #define IK_REACH_SLACK 1.0001f  /* relative slack on the reach bound (rounding) */
-
-/* Keep the blocks out of dh_ik_f32's frame so that the frames add up to
- * the measured chain, not to one big frame. */
 
 /* Workspace layout (floats), n joints; slot s = 0, 1 (current / trial). */
 #define OFF_J(n, s) ((s) * 6u * (n))                 /* 6n each: Jacobian */
@@ -94,8 +59,7 @@ enum { EV_OK = 0, EV_FK, EV_RIGID, EV_BIG };
 /* What to do after an evaluation. */
 enum { A_STEP = 0, A_OVER, A_RETRY, A_BREAK, A_FAIL };
 
-/* Everything the blocks share; lives in dh_ik_f32's frame, the vectors and
- * float state in the workspace. */
+/* Everything the blocks share (in dh_ik_f32's frame; vectors in work). */
 typedef struct {
     const dh_robot *r;
     const dh_mat4_f32 *target;
@@ -103,7 +67,7 @@ typedef struct {
     const float *q0;
     float *w;               /* workspace */
     uint32_t n;
-    uint32_t iter, stall, polish, restarts, seed;
+    uint32_t iter, stall, polish, restarts, rng;
     uint8_t cs;             /* slot of the current point; the other one is the trial slot */
     uint8_t mode, conv, end, best_kind, hopeless;
 } ik_ctx;
@@ -129,8 +93,7 @@ static float ik_row_w(uint32_t mask, uint32_t row, float w_rot)
     return (row < 3u) ? 1.0f : w_rot;
 }
 
-/* Column scale of the Jacobian in scaled variables (1 or L) and joint unit
- * per scaled variable (deg per rad, or L). */
+/* Jacobian column scale (1 or L) and joint unit per scaled variable. */
 static float ik_col_scale(const dh_joint *jt, float L) { return (jt->type == DH_JOINT_REVOLUTE) ? 1.0f : L; }
 static float ik_unit(const dh_joint *jt, float L) { return (jt->type == DH_JOINT_REVOLUTE) ? DH_RAD2DEG_F : L; }
 
@@ -143,8 +106,7 @@ static float ik_clamp(const dh_joint *jt, float v)
     return v;
 }
 
-/* Euclidean norm of the masked components of v[0..2] without overflow in
- * the squares (the result is +Inf only when the norm exceeds FLT_MAX). */
+/* Masked norm of v[0..2], no overflow in the squares (+Inf only > FLT_MAX). */
 static DH_NOINLINE float ik_norm3(const float *v, uint32_t mask)
 {
     float m = 0.0f, s = 0.0f;
@@ -156,8 +118,6 @@ static DH_NOINLINE float ik_norm3(const float *v, uint32_t mask)
         if ((mask & (1u << k)) != 0u) s += (v[k] / m) * (v[k] / m);
     return m * dh_sqrtf_(s);
 }
-
-/* ---- argument checks and set-up ---------------------------------------- */
 
 /* Every check made before anything is written. */
 static DH_NOINLINE dh_status ik_args(const ik_ctx *c, size_t work_len)
@@ -185,17 +145,14 @@ static DH_NOINLINE dh_status ik_args(const ik_ctx *c, size_t work_len)
         if (!dh_isfinite_f32(target->m[i / 4u][i % 4u])) return DH_ERR_NAN;
     for (i = 0; i < n; i++)
         if (!dh_isfinite_f32(q0[i])) return DH_ERR_NAN;
-    /* a homogeneous transform of a rigid motion: bottom row exactly 0 0 0 1
-     * (a projective target such as a perspective matrix has no pose), and
-     * a rotation part when the orientation is driven */
+    /* bottom row exactly 0 0 0 1 (a projective target has no pose) */
     if (target->m[0][3] != 0.0f || target->m[1][3] != 0.0f || target->m[2][3] != 0.0f ||
         target->m[3][3] != 1.0f)
         return DH_ERR_NOT_RIGID;
     return DH_OK;     /* the caller checks the rotation part (stack depth) */
 }
 
-/* Characteristic length L (sum of the link lengths, prismatic travel and
- * tool offset) and the damping bias into the scalar state. */
+/* Characteristic length L and the damping bias into the scalar state. */
 static DH_NOINLINE void ik_scales(const ik_ctx *c)
 {
     const dh_robot *r = c->r;
@@ -216,15 +173,8 @@ static DH_NOINLINE void ik_scales(const ik_ctx *c)
     S[S_MU] = 1.0f;
 }
 
-/*
- * Upper bound of |p_end - p_base| over every configuration within the
- * limits, or -1 when unbounded (a prismatic joint without limits). The
- * chain's rotations are rigid, so each link moves the origin by at most
- * |a| + |d| (|d + q| at the ends of a prismatic joint's range) and the tool
- * by |p_tool|; the base's 3x3 part B (any matrix) scales lengths by at
- * most ||B||_2 <= sqrt(max row sum of |B^T B|) (1 + O(tol) for a rotation,
- * exact for a scaled rotation).
- */
+/* Upper bound of |p_end - p_base| within the limits, -1 when unbounded
+ * (prismatic joint without limits); ||B||_2 <= sqrt(max row sum |B^T B|). */
 static DH_NOINLINE float ik_reach(const dh_robot *r)
 {
     const dh_mat4_f32 *B = &r->base;
@@ -260,9 +210,7 @@ static DH_NOINLINE float ik_reach(const dh_robot *r)
     return R * dh_sqrtf_(gmax) * IK_REACH_SLACK;
 }
 
-/* 1 when the target is provably out of reach by more than tol_pos: the
- * masked distance between the target position and the base origin exceeds
- * R = ik_reach(). */
+/* 1 when the masked target distance from the base exceeds R + tol_pos. */
 static DH_NOINLINE int ik_hopeless(const ik_ctx *c, float R)
 {
     float v[3];
@@ -280,7 +228,7 @@ static DH_NOINLINE void ik_init(ik_ctx *c)
     c->iter = 0u;
     c->stall = 0u;
     c->polish = 0u;
-    c->seed = 0x2545F491u;
+    c->rng = 0x2545F491u;
     c->cs = 0u;
     c->mode = (uint8_t)M_FIRST;
     c->conv = 0u;
@@ -292,10 +240,8 @@ static DH_NOINLINE void ik_init(ik_ctx *c)
     for (i = 0; i < c->n; i++) c->w[OFF_Q(c->n, 1u) + i] = ik_clamp(&c->r->joint[i], c->q0[i]);
 }
 
-/* ---- evaluation of the trial slot --------------------------------------- */
-
-/* sin, cos of theta and d of every joint at the trial point (NaN for a
- * non-finite sum, which makes the Jacobian pass report it). */
+/* sin, cos theta and d of every joint at the trial point (a non-finite
+ * sum gives NaN, which the Jacobian pass reports). */
 static DH_NOINLINE void ik_trig(const ik_ctx *c)
 {
     const float *q = c->w + OFF_Q(c->n, c->cs ^ 1u);
@@ -313,9 +259,8 @@ static DH_NOINLINE void ik_trig(const ik_ctx *c)
     }
 }
 
-/* Position error of the frame into the trial slot; with the orientation
- * driven, dR = R_target R^T (row-major) for the rotation vector, else a
- * zero orientation error (the target's rotation is not read). */
+/* Position error into the trial slot; dR = R_target R^T (row-major) when
+ * the orientation is driven, else a zero orientation error. */
 static DH_NOINLINE void ik_pos_err(const ik_ctx *c)
 {
     const float *F = c->w + OFF_F(c->n);
@@ -336,9 +281,8 @@ static DH_NOINLINE void ik_pos_err(const ik_ctx *c)
         }
 }
 
-/* Masked norms and E of the trial slot's error into S_TE, S_TEP, S_TER:
- * EV_OK, or EV_BIG when E is not finite (S_TEP then computed without
- * overflow, +Inf only beyond FLT_MAX). */
+/* Masked norms and E of the trial error into S_TE, S_TEP, S_TER; EV_BIG
+ * when E is not finite (S_TEP then without overflow). */
 static DH_NOINLINE int ik_norms(const ik_ctx *c)
 {
     const uint32_t mask = c->p->mask;
@@ -361,11 +305,7 @@ static DH_NOINLINE int ik_norms(const ik_ctx *c)
     return EV_OK;
 }
 
-/* ---- the LM step --------------------------------------------------------- */
-
-/* Weighted, column-scaled Jacobian B = W J C and weighted error W e of the
- * current point, written over the trial slot (free until the next
- * evaluation). */
+/* B = W J C and W e of the current point, over the (free) trial slot. */
 static DH_NOINLINE void ik_weigh(const ik_ctx *c)
 {
     const uint32_t n = c->n, mask = c->p->mask;
@@ -380,11 +320,8 @@ static DH_NOINLINE void ik_weigh(const ik_ctx *c)
     }
 }
 
-/*
- * Lower triangle of H = B^T B + damp I and g = B^T (W e), restricted to the
- * free joints (the others get an identity row/column and g = 0), with
- * damp = mu E + wbar.
- */
+/* Lower triangle of H = B^T B + (mu E + wbar) I and g = B^T W e over the
+ * free joints (the others: identity row/column, g = 0). */
 static DH_NOINLINE void ik_normal(const ik_ctx *c, uint32_t free_bits)
 {
     const uint32_t n = c->n;
@@ -410,11 +347,8 @@ static DH_NOINLINE void ik_normal(const ik_ctx *c, uint32_t free_bits)
     }
 }
 
-/*
- * Factor H = L D L^T in place (unit L below the diagonal, D on it; no
- * square root) and solve H dx = g. 0 on success, -1 if the factorisation
- * failed (not positive definite in float / not finite).
- */
+/* H = L D L^T in place (no square root), then H dx = g; -1 if H is not
+ * positive definite in float or dx is not finite. */
 static DH_NOINLINE int ik_ldl(const ik_ctx *c)
 {
     const uint32_t n = c->n;
@@ -472,8 +406,7 @@ static DH_NOINLINE uint32_t ik_freeze(const ik_ctx *c, uint32_t free_bits)
     return frozen;
 }
 
-/* Trial point = current + step of the free joints, clamped into the box;
- * 1 if it differs from the current point, 0 for an empty step. */
+/* Trial = current + free joints' step, clamped; 0 for an empty step. */
 static DH_NOINLINE int ik_apply(const ik_ctx *c, uint32_t free_bits)
 {
     const uint32_t n = c->n;
@@ -491,11 +424,7 @@ static DH_NOINLINE int ik_apply(const ik_ctx *c, uint32_t free_bits)
     return moved;
 }
 
-/* ---- control -------------------------------------------------------------- */
-
-/* Deterministic restart point in the trial slot: uniform in the box for
- * limited joints, q0 +- 180 deg (revolute) or q0 +- L (prismatic) for free
- * joints. */
+/* Deterministic restart point (xorshift32) in the trial slot. */
 static DH_NOINLINE void ik_sample(ik_ctx *c)
 {
     const float L = c->w[OFF_S(c->n) + S_L];
@@ -503,12 +432,12 @@ static DH_NOINLINE void ik_sample(ik_ctx *c)
     uint32_t i;
     for (i = 0; i < c->n; i++) {
         const dh_joint *jt = &c->r->joint[i];
-        uint32_t x = c->seed;
+        uint32_t x = c->rng;
         float u;
         x ^= x << 13;
         x ^= x >> 17;
         x ^= x << 5;
-        c->seed = x;
+        c->rng = x;
         u = (float)(x >> 8) * (1.0f / 16777216.0f);     /* [0, 1) */
         if (jt->qmin <= jt->qmax) qo[i] = ik_clamp(jt, jt->qmin + u * (jt->qmax - jt->qmin));
         else if (jt->type == DH_JOINT_REVOLUTE) qo[i] = c->q0[i] + (u * 360.0f - 180.0f);
@@ -531,8 +460,7 @@ static void ik_take(ik_ctx *c, float *S)
     S[S_ER] = S[S_TER];
 }
 
-/* After an evaluation (ev): accept or reject, update damping and
- * counters; returns what to do next. */
+/* Accept or reject the evaluated point, update damping and counters. */
 static DH_NOINLINE unsigned ik_update(ik_ctx *c, int ev)
 {
     const dh_ik_params *p = c->p;
@@ -579,9 +507,8 @@ static DH_NOINLINE unsigned ik_update(ik_ctx *c, int ev)
     return A_OVER;
 }
 
-/* The attempt is over (converged, stalled, singular or out of steps):
- * keep it if it is the best so far (a converged point beats any other, then
- * the lower E). Returns 1 when the solve is finished, 0 to restart. */
+/* End of an attempt: keep it if best (converged first, then lower E);
+ * 1 when the solve is finished, 0 to restart. */
 static DH_NOINLINE int ik_record(ik_ctx *c)
 {
     float *S = c->w + OFF_S(c->n);
@@ -600,8 +527,8 @@ static DH_NOINLINE int ik_record(ik_ctx *c)
     return 0;
 }
 
-/* The start could not be evaluated: outputs untouched, except for a target
- * so far out of reach that E overflows (UNREACHABLE, q = the clamped q0). */
+/* Start not evaluable: outputs untouched, except for a hopeless target
+ * whose E overflows (UNREACHABLE, q = the clamped q0). */
 static DH_NOINLINE dh_status ik_start_failed(const ik_ctx *c, int ev, float *q, dh_ik_result *res)
 {
     const float *S = c->w + OFF_S(c->n);
@@ -664,8 +591,7 @@ dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q
         const unsigned t = c.cs ^ 1u;
         unsigned act;
         int ev = EV_FK, done;
-        /* evaluate the trial slot: joint sin/cos, Jacobian and end frame,
-         * error (each block called from here, so the chain stays shallow) */
+        /* evaluate the trial slot (blocks called from here: shallow chain) */
         ik_trig(&c);
         if (dh_kin_jac_f32_(r, work + OFF_SCD(n), work + OFF_J(n, t), work + OFF_F(n))) {
             const float *F = work + OFF_F(n);
@@ -683,8 +609,7 @@ dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q
             continue;
         }
         if (act == A_STEP) {
-            /* projected step: joints on a bound pushed outward are frozen
-             * and the system solved again (at most n + 1 solves) */
+            /* projected step: at most n + 1 solves */
             uint32_t free_bits = (n >= 32u) ? 0xFFFFFFFFu : ((1u << n) - 1u), pass, frozen = 1u;
             int k = 0;
             ik_weigh(&c);

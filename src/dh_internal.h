@@ -295,4 +295,17 @@ DH_INLINE dh_status dh_axis_prescale_f32(float v[3], float *len)
     return DH_OK;
 }
 
+/** The off-diagonal of R = S + [w]x, S symmetric with S01 = xy, S02 = xz,
+ *  S12 = yz (+ 0.0f: no -0). */
+DH_INLINE void dh_rot_offdiag_f32(dh_mat3_f32 *R, float xy, float xz, float yz, float wx, float wy,
+                                  float wz)
+{
+    DH_M3(R, 0, 1) = (xy - wz) + 0.0f;
+    DH_M3(R, 1, 0) = (xy + wz) + 0.0f;
+    DH_M3(R, 0, 2) = (xz + wy) + 0.0f;
+    DH_M3(R, 2, 0) = (xz - wy) + 0.0f;
+    DH_M3(R, 1, 2) = (yz - wx) + 0.0f;
+    DH_M3(R, 2, 1) = (yz + wx) + 0.0f;
+}
+
 #endif /* DHMATH_SRC_DH_INTERNAL_H */

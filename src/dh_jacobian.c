@@ -1,30 +1,23 @@
 /*
  * dh_jacobian.c - geometric Jacobian (base and tool frame) and the
- * orientation error a(dR) (FloCal, "Inverse Kinematics").
+ * orientation error a(dR) (method: docs/design.md, "Kinematics").
  *
- * Jacobian (FloCal, "Jacobian Matrix"): for joint i with axis z_i through
- * the point o_i (both in the base frame) and the end point p_e,
- *   revolute:  column = [ z_i x (p_e - o_i) ; z_i ]   (per radian)
- *   prismatic: column = [ z_i ; 0 ]                   (per length unit)
- * The axis of joint i is z of frame i-1 for standard DH (A_i starts with
- * Rz(theta_i) Tz(d_i)) and z of frame i for modified DH (A_i ends with
- * Rz(theta_i) Tz(d_i)); the origin of that frame lies on the axis in both
- * cases. One pass over the chain: while the frames are accumulated, column
- * i temporarily holds o_i (rows 0..2) and z_i (rows 3..5); once p_e is known
- * the columns are completed in place.
+ * Column i: revolute [z_i x (p_e - o_i); z_i] per radian, prismatic
+ * [z_i; 0]; z_i, o_i of frame i-1 (standard DH) or frame i (modified).
+ * While the frames are accumulated, column i holds o_i (rows 0..2) and z_i
+ * (rows 3..5), completed in place once p_e is known.
  *
- * Stack (<= 256 bytes per public function including callees and libgcc): the running frame is a 3x4 (12 floats) updated in place, one
- * row at a time, straight from the DH definitions:
+ * Stack (<= 256 B per public function with callees and libgcc): the running
+ * frame is a 3x4 updated in place, row by row, from the DH definitions:
  *   standard, F <- F * Rz(theta) Tz(d) Tx(a) Rx(alpha), columns n o a p:
  *     n' = c n + s o,  u = c o - s n,  p' = p + d a + a_len n',
  *     o' = ca u + sa a,  a' = ca a - sa u
  *   modified, F <- F * Rx(alpha) Tx(a) Rz(theta) Tz(d):
  *     o1 = ca o + sa a,  a' = ca a - sa o,  p' = p + a_len n + d a',
  *     n' = c n + s o1,  o' = c o1 - s n
- * No link matrix and no 4x4 product are formed, and the only callee below
- * the public functions is dh_sincos_f32 (and libgcc). The orientation error
- * uses the library's own atan2 (dh_mathf.h; newlib's atan2f needs 176+
- * bytes of stack on Cortex-M0+).
+ * The only callees are dh_sincos_f32, the libm-free dh_mathf.h and libgcc;
+ * the blocks are noinline so that the worst case is a chain of small frames
+ * (jac_run is inlined into both public Jacobians: no wrapper frame).
  */
 #include "dhmath/dh_kin.h"
 #include "dhmath/dh_trig.h"
@@ -36,12 +29,7 @@
 #include <math.h>
 #include <string.h>
 
-/* Frames are kept apart (noinline) so that the worst-case stack is the
- * measured chain of small frames; jac_run is inlined into both public
- * Jacobians so that no wrapper frame adds to it. */
-
-/* Column c of J holds the axis of its joint: origin (F's p) in rows 0..2,
- * z (F's a) in rows 3..5. */
+/* Column c of J = the joint axis: F's p in rows 0..2, F's a in rows 3..5. */
 static void jac_axis(const float *F, float *J, uint32_t n, uint32_t c)
 {
     uint32_t k;
@@ -51,8 +39,7 @@ static void jac_axis(const float *F, float *J, uint32_t n, uint32_t c)
     }
 }
 
-/* One standard-DH link on the frame: F <- F * A with t = (sin theta,
- * cos theta, d) and the twist and length of joint j. */
+/* F <- F * A (standard DH), t = (sin theta, cos theta, d). */
 static DH_NOINLINE void jac_std(float *F, const float *t, const dh_joint *j)
 {
     uint32_t k;
@@ -66,7 +53,7 @@ static DH_NOINLINE void jac_std(float *F, const float *t, const dh_joint *j)
     }
 }
 
-/* One modified-DH link on the frame (arguments as jac_std). */
+/* F <- F * A (modified DH), arguments as jac_std. */
 static DH_NOINLINE void jac_mod(float *F, const float *t, const dh_joint *j)
 {
     uint32_t k;
@@ -80,9 +67,8 @@ static DH_NOINLINE void jac_mod(float *F, const float *t, const dh_joint *j)
     }
 }
 
-/* One link: F <- F * A_i with t = (sin theta, cos theta, d); stores the
- * axis of joint i in column i of J (before the update for standard DH,
- * after it for modified DH). */
+/* F <- F * A_i; the axis of joint i goes to column i of J before the
+ * update (standard DH) or after it (modified DH). */
 DH_INLINE void jac_link(const dh_robot *r, uint32_t i, const float *t, float *F, float *J)
 {
     if (r->conv == DH_CONV_STANDARD) {
@@ -156,8 +142,7 @@ int dh_kin_jac_f32_(const dh_robot *r, const float *scd, float *J, float *F)
     return jac_all_finite(J, 6u * r->n) & jac_all_finite(F, 12u);
 }
 
-/* Both halves of every column rotated by R^T (R = F's rotation): v' = R^T v,
- * component k = column k of R . v. */
+/* Both halves of every column rotated by R^T (R = F's rotation). */
 static DH_NOINLINE void jac_to_tool(const float *F, float *J, uint32_t n)
 {
     uint32_t c, h, k;
@@ -174,8 +159,7 @@ static DH_NOINLINE dh_status jac_check(const dh_robot *r, const float *q)
 {
     uint32_t i, n = r->n;
     if (n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
-    /* float path unavailable: stale float base/tool or joints without float
-     * parameters (checked here so that J stays untouched, also for n == 0) */
+    /* float path unavailable (J untouched, also for n == 0) */
     if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_ARG;
     if (r->conv != DH_CONV_STANDARD && r->conv != DH_CONV_MODIFIED) return DH_ERR_ARG;
     for (i = 0; i < n; i++) {
@@ -257,16 +241,9 @@ int dh_kin_rot_ok_f32_(const float *c0, const float *c1, const float *c2)
     return dh_rot_cols_ok_f32(c0, c1, c2, DH_ROT_ERROR_TOL);
 }
 
-/*
- * theta > 90 deg: u = 2 sin(theta) k loses its relative accuracy as
- * theta -> 180, so the axis comes from the symmetric part, which does not
- * vanish there: (dR + dR^T)/2 = c I + (1 - c) k k^T, c = cos(theta). The
- * largest diagonal entry gives the best-conditioned component k_m; the
- * others follow from row m. The sign is the one of u (held in w on entry;
- * ambiguous only at exactly 180 deg, where w and -w are the same rotation,
- * and there k_m > 0 is kept). The diagonal special cases
- * (1,-1,-1), (-1,1,-1), (-1,-1,1) -> pi e_m are exact instances.
- */
+/* theta > 90 deg: the axis from the symmetric part (dR + dR^T)/2 =
+ * c I + (1 - c) k k^T, largest diagonal entry first, signed like u (held in
+ * w on entry; at exactly 180 deg k_m > 0 is kept). */
 static void rotvec_big(const float *d, float *w, float tr, float theta)
 {
     float c = 0.5f * tr, omc = 1.0f - c;   /* omc in (1, 2] */
@@ -286,12 +263,8 @@ static void rotvec_big(const float *d, float *w, float tr, float theta)
     w[2] = s * kv[2];
 }
 
-/*
- * a(dR) (FloCal, "Inverse Kinematics"). The identity case (diagonal 1, 1, 1 -> 0) is
- * NOT tested on the diagonal alone: in float the diagonal rounds to exactly
- * 1 for angles below ~3e-4 rad while the skew part still carries the
- * rotation. The identity falls out of the general case (u = 0 -> w = 0).
- */
+/* a(dR). The identity is NOT tested on the diagonal (it rounds to 1 for
+ * small angles while u still carries the rotation): u = 0 -> w = 0. */
 void dh_kin_rotvec_f32_(const float *d, float *w)
 {
     float un, tr, theta;
@@ -300,10 +273,9 @@ void dh_kin_rotvec_f32_(const float *d, float *w)
     w[2] = d[3] - d[1];
     un = dh_sqrtf_(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);   /* = 2 sin(theta) */
     tr = d[0] + d[4] + d[8] - 1.0f;                         /* = 2 cos(theta) */
-    theta = dh_atan2f_(un, tr);               /* in [0, pi]: no acos domain issue */
+    theta = dh_atan2f_(un, tr);               /* in [0, pi]: no acos domain error */
     if (tr >= 0.0f) {
-        /* theta <= 90 deg: u is accurate (the general case). As un -> 0,
-         * theta/un -> 1/2 (atan2 keeps full relative accuracy there). */
+        /* theta <= 90 deg: u is accurate; theta / un -> 1/2 as un -> 0 */
         float f = (un > 0.0f) ? theta / un : 0.5f;
         w[0] *= f;
         w[1] *= f;
@@ -313,12 +285,10 @@ void dh_kin_rotvec_f32_(const float *d, float *w)
     rotvec_big(d, w, tr, theta);
 }
 
-/* d = Rt * R^T row-major, from the columns of both (column c, row k at
- * c3[3c + k] style pointers: ct[c] / cr[c] point to column c). */
+/* d = Rt R^T row-major; ct[c], cr[c] point to column c of Rt, R. */
 static void rot_delta(const float *const *ct, const float *const *cr, float *d)
 {
     uint32_t i, j, k;
-    /* dR(i,j) = sum_k Rt(i,k) R(j,k) = sum_k ct[k][i] cr[k][j] */
     for (i = 0; i < 3u; i++)
         for (j = 0; j < 3u; j++) {
             float s = 0.0f;

@@ -1,20 +1,17 @@
 /*
- * dh_mathf.c - libm-free float atan2 and sin/cos in radians with a small
- * stack (contracts and accuracy in dh_mathf.h).
- *
- * Polynomial coefficients: fitted here for this file (weighted least
- * squares iterated to minimax by Lawson's algorithm, in double, on the
- * relative error of the final function, then rounded to float and checked
- * by test/test_mathf.c):
+ * dh_mathf.c - libm-free float atan2, sin/cos (radians) and sqrt with a
+ * small stack (contracts in dh_mathf.h). Minimax coefficients (Lawson's
+ * algorithm on the relative error, rounded to float):
  *   sin r = r + r z (S1 + z (S2 + z S3)),          |r| <= pi/4, z = r^2
  *   cos r = 1 - z/2 + z^2 (C1 + z (C2 + z C3))
  *   atan u = u + u z (T1 + z (T2 + ... + z T6)),   |u| <= 1/2
- * 2/pi to 224 bits and pi/2 to 64 bits: computed with integer arithmetic (Machin's formula);
- * the words agree with the published expansion 0.A2F9836E 4E441529 ...
+ * 2/pi (224 bits) and pi/2 (64 bits) as in the published expansion
+ * 0.A2F9836E 4E441529 ...
  */
 #include <string.h>
 
 #include "dh_mathf.h"
+#include "dh_internal.h"
 
 #define DH_MF_S1 (-0.16666654603f)
 #define DH_MF_S2 0.0083321603364f
@@ -52,8 +49,7 @@ static uint32_t dh_mf_bits(float f)
 
 float dh_atan2f_(float y, float x)
 {
-    /* K pi/4 = hi[K] + lo[K] (hi the float nearest, lo the float nearest
-     * the rest), K = 0..4 */
+    /* K pi/4 = hi[K] + lo[K] (nearest floats), K = 0..4 */
     static const float pio4_hi[5] = {
         0.0f, 0x1.921fb6p-1f, 0x1.921fb6p+0f, 0x1.2d97c8p+1f, 0x1.921fb6p+1f
     };
@@ -73,20 +69,14 @@ float dh_atan2f_(float y, float x)
     mx = w ? ay : ax;
     mn = w ? ax : ay;
     if (ax_b == ay_b) {
-        /* equal magnitudes: both zero (angle 0 or pi), both infinite or
-         * equal finite (pi/4 or 3 pi/4); avoids 0/0 and inf - inf */
+        /* equal magnitudes (0, pi, pi/4, 3 pi/4): no 0/0, no inf - inf */
         b = (ax_b != 0u) ? 1u : 0u;
         u = 0.0f;
     } else if ((w ? ay_b : ax_b) < DH_MF_INF && mn + mn >= mx) {
-        /* (mx finite; 2 mn is exact or inf, while 0.5f * mx could
-         * underflow to 0)
-         * ratio in [1/2, 1): atan(ratio) = pi/4 + atan(u) with
-         * u = (mn - mx) / (mn + mx) in [-1/3, 0). The
-         * numerator is exact (Sterbenz); the rounding error of the
-         * denominator d is recovered exactly (Fast2Sum, mx >= mn) and
-         * divided out, so u carries one rounding, as mn / mx does. Scaled
-         * by 1/4 near the top so that mn + mx cannot overflow (exact: mn
-         * >= mx / 2 is far from subnormal). */
+        /* ratio in [1/2, 1) (2 mn: exact or inf, unlike 0.5f mx): pi/4 +
+         * atan(u), u = (mn - mx) / (mn + mx) in [-1/3, 0), exact numerator,
+         * the denominator's rounding error recovered (Fast2Sum) and
+         * divided out; scaled by 1/4 near the top (exact) against overflow. */
         float n, d, e;
         if (mx > 0x1.0p+126f) {
             mx *= 0.25f;
@@ -105,7 +95,7 @@ float dh_atan2f_(float y, float x)
     z = u * u;
     p = u + u * (z * (DH_MF_T1 + z * (DH_MF_T2 + z * (DH_MF_T3 + z * (DH_MF_T4 + z * (DH_MF_T5 + z * DH_MF_T6))))));
 
-    /* angle = K pi/4 + s atan(u) (see dh_mathf.h for the table):
+    /* angle = K pi/4 + s atan(u):
      *   x >= 0, |y| <= |x|: K = b,      s = +    x >= 0, |y| > |x|: K = 2 - b, s = -
      *   x <  0, |y| <= |x|: K = 4 - b,  s = -    x <  0, |y| > |x|: K = 2 + b, s = + */
     sneg = w ^ xn;
@@ -113,9 +103,8 @@ float dh_atan2f_(float y, float x)
     k = sneg ? k - b : k + b;
     if (sneg) p = -p;
     {
-        /* hi + p with its rounding error recovered (Fast2Sum: |hi| >= |p|
-         * whenever hi != 0, as |p| <= atan(1/2) < pi/4), then lo added to
-         * the error term: one final rounding */
+        /* hi + p, error recovered (Fast2Sum: |hi| >= |p| if hi != 0), lo
+         * added to the error: one final rounding */
         float hi = pio4_hi[k], sum = hi + p;
         float err = p - (sum - hi);
         a = sum + (err + pio4_lo[k]); /* >= 0 */
@@ -125,33 +114,9 @@ float dh_atan2f_(float y, float x)
 
 /* ---- sin / cos ------------------------------------------------------------ */
 
-/*
- * Exact reduction of a finite a = |x| > pi/4 (bit pattern mag): returns r
- * in [-pi/4, pi/4] and the quadrant q (0..3) with a = (4 j + q) pi/2 + r
- * for an integer j.
- *
- * a = M 2^e, M the 24-bit significand, e = exponent - 150 in -24..104.
- * With 2/pi = sum_{i>=1} b_i 2^-i, a 2/pi = sum_i M b_i 2^(e-i); the terms
- * with i <= e - 2 are multiples of 4 and drop out modulo 4. The 96 bits
- * b_{e-1} .. b_{e+94} form W, and y = M W 2^-94 is a 2/pi modulo 4 up to
- * the omitted tail, < M 2^(e - (e + 94)) 2^e / 2^e = 2^24 2^-94 = 2^-70.
- * Bits 95..94 of the 120-bit product M W are the quadrant, bits 93..30 a
- * 64-bit fraction f; f >= 1/2 is taken as f - 1 with the next quadrant,
- * so r = f pi/2 (formed as a 64-bit fixed-point product, rounded to float
- * once). The table starts with a zero word for b_i, i <= 0, so the
- * window of bit s0 = e + 30 (>= 6) needs no special case; s0 <= 134 and
- * the four words read are within the table.
- */
-/*
- * v 2^-63 as a float, correctly rounded (to nearest, ties to even), for
- * 0 < v < 2^63: the integer-to-float conversion done by hand with constant
- * shifts, because libgcc's __aeabi_ul2f needs 80 bytes of stack on
- * Cortex-M0+. The leading bit is moved to bit 63 (binary search, e its
- * original position), the top 24 bits are the significand and the 40
- * bits below decide the rounding; adding the significand with its
- * leading bit to the exponent field carries into the exponent when the
- * rounding overflows to 2^24, which is the right result.
- */
+/* v 2^-63 as a float, rounded to nearest even, for 0 <= v < 2^63 (by hand:
+ * libgcc's __aeabi_ul2f is stack-hungry on Cortex-M0+). A rounding carry
+ * into 2^24 carries into the exponent field, which is right. */
 static float dh_mf_q63_to_float(uint64_t v)
 {
     uint32_t e = 63u, mant;
@@ -166,15 +131,20 @@ static float dh_mf_q63_to_float(uint64_t v)
     mant = (uint32_t)(v >> 40);              /* 2^23 .. 2^24 - 1 */
     rest = v << 24;                          /* the 40 bits below, as a 64-bit fraction */
     if (rest > 0x8000000000000000u || (rest == 0x8000000000000000u && (mant & 1u) != 0u)) mant++;
-    /* value 1.m 2^(e - 63): biased exponent e + 64, minus 1 for the
-     * leading bit that mant adds */
+    /* 1.m 2^(e - 63): biased exponent e + 64, minus the leading bit's 1 */
     return dh_mf_from_bits(((e + 63u) << 23) + mant);
 }
 
-#if defined(__GNUC__) || defined(__clang__)
-__attribute__((noinline))
-#endif
-static float dh_mf_reduce(uint32_t mag, uint32_t *quad)
+/*
+ * Exact reduction of a finite a = |x| > pi/4 (bits mag): r in [-pi/4, pi/4]
+ * and quadrant q with a = (4 j + q) pi/2 + r. a = M 2^e (e = exponent -
+ * 150); the bits b_{e-1} .. b_{e+94} of 2/pi form W (earlier terms are
+ * multiples of 4), tail error < 2^-70. Bits 95..94 of M W are q, bits
+ * 93..30 a 64-bit fraction f (f >= 1/2: f - 1 and the next quadrant),
+ * r = f pi/2 in fixed point, rounded once. The leading zero word makes the
+ * window at s0 = e + 30 (6..134) need no special case.
+ */
+static DH_NOINLINE float dh_mf_reduce(uint32_t mag, uint32_t *quad)
 {
     static const uint32_t two_over_pi[8] = {
         0x00000000u, 0xA2F9836Eu, 0x4E441529u, 0xFC2757D1u,
@@ -203,9 +173,8 @@ static float dh_mf_reduce(uint32_t mag, uint32_t *quad)
     neg = (uint32_t)(f >> 63);
     q = (q + neg) & 3u;
     if (neg) f = (~f) + 1u;              /* |f - 2^64|, <= 2^63 */
-    /* r 2^63 = floor(f pio2_q63 / 2^64): the high half of the 128-bit
-     * product, exact (truncated below 2^-63 absolute, while r >= 2^-40
-     * or so for every float); then a single rounding to float */
+    /* r 2^63 = floor(f pio2_q63 / 2^64), the high half of the 128-bit
+     * product; then one rounding to float */
     fa = f >> 32;
     fb = f & 0xFFFFFFFFu;
     pa = pio2_q63 >> 32;
@@ -252,15 +221,9 @@ void dh_sincosf_(float x, float *s, float *c)
 }
 
 /*
- * Correctly rounded square root in integer arithmetic (IEEE binary32,
- * round to nearest), so that the float path needs no libm: newlib's sqrtf
- * costs 72 bytes of stack on Cortex-M0+, a quarter of the budget. x = m
- * 2^ex with a 24-bit m; the root of M = m 2^K, K = 26 or 25 so that ex - K
- * is even and M lies in [2^48, 2^50), is taken bit by bit (25 bits, the
- * last one the rounding bit, no remainder needed: the square root of a float is never exactly
- * half-way between two floats, so rounding that bit up is round to
- * nearest). Special cases as sqrtf: +-0 -> +-0, +Inf -> +Inf, NaN or
- * x < 0 -> NaN.
+ * Correctly rounded square root in integers: x = m 2^ex, the root of
+ * M = m 2^K (K = 26 or 25: ex - K even, M in [2^48, 2^50)) bit by bit, 25
+ * bits, the last one rounds (a float's root is never exactly half-way).
  */
 float dh_sqrtf_(float x)
 {
@@ -269,16 +232,10 @@ float dh_sqrtf_(float x)
     __asm__("vsqrt.f32 %0, %1" : "=t"(r) : "t"(x));
     return r;
 #else
-    uint32_t u, m, e, rem = 0u, root = 0u, i;
+    uint32_t u = dh_mf_bits(x), m, e, rem = 0u, root = 0u, i;
     int32_t eb;
-    float y;
-    memcpy(&u, &x, sizeof u);
     if ((u & 0x7FFFFFFFu) == 0u || u == 0x7F800000u) return x;      /* +-0, +Inf */
-    if (u > 0x7F800000u) {                                          /* NaN, x < 0 */
-        u = 0x7FC00000u;
-        memcpy(&y, &u, sizeof y);
-        return y;
-    }
+    if (u > 0x7F800000u) return dh_mf_from_bits(0x7FC00000u);        /* NaN, x < 0 */
     e = u >> 23;
     m = u & 0x007FFFFFu;
     eb = (int32_t)e;
@@ -291,9 +248,8 @@ float dh_sqrtf_(float x)
     } else {
         m |= 0x00800000u;
     }
-    /* x = m 2^(eb - 150). M = m 2^K = mm 2^24 with mm = m 2^(K - 24) < 2^26:
-     * its 25 bit pairs are the 13 of mm and 12 zero pairs; one root bit per
-     * pair, remainder < 2^27 (32-bit arithmetic throughout). */
+    /* M = mm 2^24, mm = m 2^(K - 24) < 2^26: 13 bit pairs of mm, 12 zero
+     * pairs; one root bit per pair, remainder < 2^27 */
     m <<= (((uint32_t)eb & 1u) != 0u) ? 1u : 2u;
     for (i = 0; i < 25u; i++) {
         uint32_t trial;
@@ -306,16 +262,12 @@ float dh_sqrtf_(float x)
             root <<= 1;
         }
     }
-    /* root in [2^24, 2^25): round its last bit away; the result is
-     * (root / 2) 2^((eb - 150 - K) / 2 + 1), biased exponent (eb + 152 - K) / 2
-     * (the implicit bit of the mantissa adds one to the exponent field,
-     * also when rounding carries into 2^24) */
+    /* root in [2^24, 2^25): round the last bit away; biased exponent
+     * (eb + 152 - K) / 2 minus the implicit bit's 1 */
     m = (root >> 1) + (root & 1u);
     eb += (((uint32_t)eb & 1u) != 0u) ? (152 - 25) : (152 - 26);   /* >= 104, even */
     eb = (eb / 2) - 1;
     e = (uint32_t)eb;
-    u = (e << 23) + m;
-    memcpy(&y, &u, sizeof y);
-    return y;
+    return dh_mf_from_bits((e << 23) + m);
 #endif
 }

@@ -24,10 +24,7 @@ static float dh_q_maxabs(const dh_quat_f32 *q)
     return m;
 }
 
-/*
- * Scale factor bringing a largest component m (normal, finite) into
- * [2^-32, 2^32]: an exact power of two, 1 when m is already inside.
- */
+/* Exact power of two bringing a largest component m into [2^-32, 2^32]. */
 static float dh_q_prescale(float m)
 {
     float f = 1.0f;
@@ -58,15 +55,10 @@ dh_status dh_quat_to_mat3_f32(dh_mat3_f32 *R, const dh_quat_f32 *q)
     wx = s * w * x;
     wy = s * w * y;
     wz = s * w * z;
+    dh_rot_offdiag_f32(R, xy, xz, yz, wx, wy, wz);
     DH_M3(R, 0, 0) = 1.0f - (yy + zz);
     DH_M3(R, 1, 1) = 1.0f - (xx + zz);
     DH_M3(R, 2, 2) = 1.0f - (xx + yy);
-    DH_M3(R, 0, 1) = (xy - wz) + 0.0f;
-    DH_M3(R, 1, 0) = (xy + wz) + 0.0f;
-    DH_M3(R, 0, 2) = (xz + wy) + 0.0f;
-    DH_M3(R, 2, 0) = (xz - wy) + 0.0f;
-    DH_M3(R, 1, 2) = (yz - wx) + 0.0f;
-    DH_M3(R, 2, 1) = (yz + wx) + 0.0f;
     return DH_OK;
 }
 
@@ -81,8 +73,7 @@ dh_status dh_mat3_to_quat_f32(const dh_mat3_f32 *R, dh_quat_f32 *q)
     r11 = DH_M3(R, 1, 1);
     r22 = DH_M3(R, 2, 2);
     t = r00 + r11 + r22;
-    /* Shepperd: 4 w^2 = 1 + t, 4 x^2 = 1 + r00 - r11 - r22, ...; the
-     * largest of the four is the one with the largest of t, r00, r11, r22. */
+    /* Shepperd 1978: the largest of t, r00, r11, r22 picks the component */
     if (t >= r00 && t >= r11 && t >= r22) {
         p = sqrtf(1.0f + t);            /* 2|w| >= 1 */
         f = 0.5f / p;
@@ -112,8 +103,7 @@ dh_status dh_mat3_to_quat_f32(const dh_mat3_f32 *R, dh_quat_f32 *q)
         x = (DH_M3(R, 0, 2) + DH_M3(R, 2, 0)) * f;
         y = (DH_M3(R, 1, 2) + DH_M3(R, 2, 1)) * f;
     }
-    /* |q| is 1 within the orthonormality of R; make it 1 within rounding.
-     * The largest component is >= 1/2, so no scaling is needed. */
+    /* normalise (largest component >= 1/2: no scaling needed) */
     n = sqrtf(w * w + x * x + y * y + z * z);
     if (w < 0.0f) n = -n;
     q->w = w / n + 0.0f; /* + 0 turns a -0 into +0 */

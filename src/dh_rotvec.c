@@ -35,32 +35,8 @@ dh_status dh_mat3_check_rot_f32(const dh_mat3_f32 *R, float tol)
     return dh_rot_cols_ok_f32(R->m[0], R->m[1], R->m[2], tol) ? DH_OK : DH_ERR_NOT_RIGID;
 }
 
-/*
- * Unit vector of (x, y, z): the components are divided by the largest
- * magnitude first, so neither the squares overflow nor underflow.
- * Returns DH_ERR_NAN / DH_ERR_ZERO_AXIS, k untouched on error.
- */
-static dh_status dh_rot_unit(float x, float y, float z, float k[3])
-{
-    float v[3], len;
-    dh_status st;
-    v[0] = x;
-    v[1] = y;
-    v[2] = z;
-    st = dh_axis_prescale_f32(v, &len);
-    if (st != DH_OK) return st;
-    k[0] = v[0] / len;
-    k[1] = v[1] / len;
-    k[2] = v[2] / len;
-    return DH_OK;
-}
-
-/*
- * R = c I + s [k]x + v k k^T for a unit k (v = 1 - c, the versine).
- * The diagonal entries avoid cancellation and are exact for a coordinate
- * axis (see dh_axis_angle_to_mat3_f32). Off-diagonal entries are written
- * + 0.0f so that no -0 appears.
- */
+/* R = c I + s [k]x + v k k^T, unit k, v = 1 - c: the diagonal avoids
+ * cancellation (exact for a coordinate axis); + 0.0f: no -0 off it. */
 static void dh_rodrigues(dh_mat3_f32 *R, const float k[3], float s, float c, float v)
 {
     float kx = k[0], ky = k[1], kz = k[2];
@@ -71,36 +47,32 @@ static void dh_rodrigues(dh_mat3_f32 *R, const float k[3], float s, float c, flo
     DH_M3(R, 0, 0) = (xx < 0.5f) ? c + v * xx : 1.0f - v * (yy + zz);
     DH_M3(R, 1, 1) = (yy < 0.5f) ? c + v * yy : 1.0f - v * (xx + zz);
     DH_M3(R, 2, 2) = (zz < 0.5f) ? c + v * zz : 1.0f - v * (xx + yy);
-    DH_M3(R, 0, 1) = (vxy - sz) + 0.0f;
-    DH_M3(R, 1, 0) = (vxy + sz) + 0.0f;
-    DH_M3(R, 0, 2) = (vxz + sy) + 0.0f;
-    DH_M3(R, 2, 0) = (vxz - sy) + 0.0f;
-    DH_M3(R, 1, 2) = (vyz - sx) + 0.0f;
-    DH_M3(R, 2, 1) = (vyz + sx) + 0.0f;
+    dh_rot_offdiag_f32(R, vxy, vxz, vyz, sx, sy, sz);
 }
 
 dh_status dh_axis_angle_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *axis, float deg)
 {
-    float k[3], s, c;
+    float k[3], len, s, c;
     dh_status st;
     DH_ASSERT(R != NULL && axis != NULL);
     if (!dh_isfinite_f32(deg)) return DH_ERR_NAN;
-    st = dh_rot_unit(axis->x, axis->y, axis->z, k);
+    k[0] = axis->x;
+    k[1] = axis->y;
+    k[2] = axis->z;
+    st = dh_axis_prescale_f32(k, &len);
     if (st != DH_OK) return st;
     st = dh_sincos_f32(deg, &s, &c);
     if (st != DH_OK) return st;
+    k[0] /= len;
+    k[1] /= len;
+    k[2] /= len;
     dh_rodrigues(R, k, s, c, 1.0f - c);
     return DH_OK;
 }
 
-/* Checks R as dh_mat3_to_axis_angle_f32 documents and copies it into T as a
- * 4x4 with zero translation (T untouched on error). Out of line so that
- * the caller's frame holds only the 4x4 while dh_mat4_to_axis_angle_f32
- * runs on top of it. */
-#if defined(__GNUC__) || defined(__clang__)
-__attribute__((noinline))
-#endif
-static dh_status dh_mat3_to_mat4_checked(dh_mat4_f32 *T, const dh_mat3_f32 *R)
+/* Checks R and copies it into T with zero translation (T untouched on
+ * error); out of line: only the 4x4 stays in the caller's frame. */
+static DH_NOINLINE dh_status dh_mat3_to_mat4_checked(dh_mat4_f32 *T, const dh_mat3_f32 *R)
 {
     int c, r;
     if (!dh_mat3_finite(R)) return DH_ERR_NAN;
@@ -116,8 +88,7 @@ static dh_status dh_mat3_to_mat4_checked(dh_mat4_f32 *T, const dh_mat3_f32 *R)
 
 dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, float *deg)
 {
-    /* The same algorithm as the 4x4 version (Paul 1981, eq. 1.72-1.103), so a 3x3
-     * and a 4x4 holding the same rotation give bitwise the same answer. */
+    /* the 4x4 version's algorithm: bitwise the same answer */
     dh_mat4_f32 T;
     dh_status st;
     DH_ASSERT(R != NULL && axis != NULL && deg != NULL);
@@ -129,6 +100,7 @@ dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, flo
 dh_status dh_rotvec_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *phi)
 {
     float x, y, z, m, t, k[3], sh, ch;
+    int scaled;
     DH_ASSERT(R != NULL && phi != NULL);
     x = phi->x;
     y = phi->y;
@@ -144,25 +116,21 @@ dh_status dh_rotvec_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *phi)
         dh_rodrigues(R, k, 0.0f, 1.0f, 0.0f); /* exactly I */
         return DH_OK;
     }
-    if (m >= 1.0842022e-19f && m <= 9.2233720e18f) {
-        /* 2^-63 .. 2^63: the squares neither overflow nor underflow, so
-         * |phi| is formed directly (one rounding less than with scaling) */
-        t = sqrtf(x * x + y * y + z * z);
-        k[0] = x / t;
-        k[1] = y / t;
-        k[2] = z / t;
-    } else {
+    /* within 2^-63 .. 2^63 the squares neither overflow nor underflow:
+     * |phi| directly (one rounding less), else scaled by 1 / m */
+    scaled = !(m >= 1.0842022e-19f && m <= 9.2233720e18f);
+    if (scaled) {
         x /= m;
         y /= m;
         z /= m;
-        t = sqrtf(x * x + y * y + z * z); /* |phi| / m, in [1, sqrt 3] */
-        k[0] = x / t;
-        k[1] = y / t;
-        k[2] = z / t;
+    }
+    t = sqrtf(x * x + y * y + z * z);
+    k[0] = x / t;
+    k[1] = y / t;
+    k[2] = z / t;
+    if (scaled) {
         t *= m;
-        /* |phi| > FLT_MAX: no float angle, reported as DH_ERR_NAN
-         * (documented in dh_rot.h) */
-        if (!dh_isfinite_f32(t)) return DH_ERR_NAN;
+        if (!dh_isfinite_f32(t)) return DH_ERR_NAN;   /* |phi| > FLT_MAX */
     }
     dh_sincosf_(0.5f * t, &sh, &ch);     /* libm-free, exact reduction */
     dh_rodrigues(R, k, 2.0f * sh * ch, 1.0f - 2.0f * sh * sh, 2.0f * sh * sh);
@@ -217,11 +185,7 @@ void dh_vee_f32(dh_vec3_f32 *v, const dh_mat3_f32 *S)
     v->z = 0.5f * DH_M3(S, 1, 0) - 0.5f * DH_M3(S, 0, 1);
 }
 
-/*
- * W = A B^T (body == 0) or W = A^T B (body == 1) with A = Rdot, B = R or
- * A = R, B = Rdot respectively, then w = vee(W). Only the six
- * off-diagonal entries of W are formed.
- */
+/* w = vee(Rdot R^T) (body == 0) or vee(R^T Rdot) (body == 1). */
 static dh_status dh_angvel_common(dh_vec3_f32 *w, const dh_mat3_f32 *R, const dh_mat3_f32 *Rdot, int body)
 {
     float W[3][3]; /* W[r][c], only off-diagonal entries used */
@@ -247,8 +211,7 @@ static dh_status dh_angvel_common(dh_vec3_f32 *w, const dh_mat3_f32 *R, const dh
         }
     }
     {
-        /* finite R and Rdot can still give a non-finite product (|Rdot|
-         * near FLT_MAX): reported, w untouched */
+        /* a finite Rdot near FLT_MAX can overflow: w untouched */
         const float wx = 0.5f * W[2][1] - 0.5f * W[1][2];
         const float wy = 0.5f * W[0][2] - 0.5f * W[2][0];
         const float wz = 0.5f * W[1][0] - 0.5f * W[0][1];
@@ -302,16 +265,14 @@ dh_status dh_mat3_orthonormalize_f32(dh_mat3_f32 *out, const dh_mat3_f32 *R)
             return DH_OK;
         }
         if (step == DH_ORTHO_MAX_STEPS) break;
-        /* Y = X (3I - G) / 2 = X + X E with E = (I - G) / 2: column j of
-         * Y is x_j + sum_i x_i E_ij, the small correction summed first so
-         * that it is not swamped by x_j. */
+        /* Y = X (3I - G) / 2 = X + X E, E = (I - G) / 2; the correction
+         * sum_i x_i E_ij is summed before x_j is added */
         for (i = 0; i < 3; i++) {
             for (j = 0; j < 3; j++) {
                 G[i][j] = 0.5f * ((i == j ? 1.0f : 0.0f) - G[i][j]);
             }
         }
-        /* row r of Y needs only row r of X: updated in place, row by row
-         * (no second 3x3 on the stack; the same operations and order) */
+        /* row r of Y needs only row r of X: in place, row by row */
         for (r = 0; r < 3; r++) {
             const float x0 = X.m[0][r], x1 = X.m[1][r], x2 = X.m[2][r];
             for (j = 0; j < 3; j++) {
