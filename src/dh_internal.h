@@ -67,4 +67,22 @@ DH_INLINE int dh_isfinite_f32(float x)
 
 /* ---- kinematics helpers ---------------------------------------------------- */
 
+/** Inlined in the default build (constant arguments such as the DH
+ *  convention fold into each copy), one out-of-line copy in the size-first
+ *  build. */
+#if DH_FAST_PATHS
+#define DH_SPEED_INLINE DH_INLINE
+#else
+#define DH_SPEED_INLINE static DH_NOINLINE
+#endif
+
+/** Unrolls the next loop n times with GCC when not optimising for size
+ *  (constant offsets, no loop counter); nothing otherwise. */
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__OPTIMIZE_SIZE__)
+#define DH_PRAGMA_(x) _Pragma(#x)
+#define DH_UNROLL(n) DH_PRAGMA_(GCC unroll n)
+#else
+#define DH_UNROLL(n)
+#endif
+
 #endif /* DHMATH_SRC_DH_INTERNAL_H */
