@@ -461,12 +461,12 @@ DH_INLINE int joint_values(const dh_joint *j, int32_t q, dh_q30 *v, dh_qpos *d)
     return ovf;
 }
 
-/* T <- I * A_i(q) (joint i of r; T may be I). Returns DH_ERR_OVERFLOW
- * when d + q or an entry saturated, else 0. The general part is in place:
- * standard DH turns (n, o) by theta, moves p by a n + d a, then twists
- * (o, a) by alpha; modified DH twists first, moves p by a n + d a with the
- * twisted a, then turns. */
-static DH_SIZE_NOINLINE int step(const dh_frame_q *I, dh_frame_q *T, const dh_robot *r, uint32_t i, int32_t q)
+/* T <- T * A_i(q) in place (joint i of r), the general step. Returns
+ * DH_ERR_OVERFLOW when d + q or an entry saturated, else 0. Standard DH
+ * turns (n, o) by theta, moves p by a n + d a, then twists (o, a) by
+ * alpha; modified DH twists first, moves p by a n + d a with the twisted
+ * a, then turns. */
+static DH_NOINLINE int step(dh_frame_q *T, const dh_robot *r, uint32_t i, int32_t q)
 {
     const dh_joint *j = &r->joint[i];
     const unsigned mod = r->conv != DH_CONV_STANDARD;
@@ -474,11 +474,6 @@ static DH_SIZE_NOINLINE int step(const dh_frame_q *I, dh_frame_q *T, const dh_ro
     dh_qpos d;
     const dh_qpos a = fkq_len(j->a_q);
     int ovf = joint_values(j, q, v, &d), k;
-#if DH_FAST_PATHS
-    if ((r->flags & DH_ROBOT_BASE_SMALL_Q) != 0u && FAST_LENGTHS(a, d))
-        return ovf | (mod ? fast_mod(I, T, v, a, d) : fast_std(I, T, v, a, d));
-#endif
-    copy_frame(T, I);
     turn(T, mod, &v[2u * mod], &ovf);
     for (k = 0; k < 3; k++)
         T->p[k] = fkq_add_rnd30(T->p[k], MLA(MUL(a, T->r[0][k]), d, T->r[2][k]), &ovf);
@@ -529,7 +524,7 @@ dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A)
     }
 #else
     dh_frame_identity_q(A);
-    return (dh_status)step(A, A, r, i, q);
+    return (dh_status)step(A, r, i, q);
 #endif
 }
 
@@ -557,8 +552,26 @@ static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, d
     }
 #endif
     for (; i < r->n; i++) {
+        int done = 0;
         if (frames) out = &frames[i];
-        ovf |= step(cur, out, r, i, q[i]);
+#if DH_FAST_PATHS
+        if ((r->flags & DH_ROBOT_BASE_SMALL_Q) != 0u) {
+            /* the fast path from cur into out; the general step (which
+             * takes the joint values again) only for too long links */
+            dh_q30 v[4];
+            dh_qpos d;
+            const dh_qpos a = fkq_len(r->joint[i].a_q);
+            const int f = joint_values(&r->joint[i], q[i], v, &d);
+            if (FAST_LENGTHS(a, d)) {
+                ovf |= f | (r->conv == DH_CONV_STANDARD ? fast_std(cur, out, v, a, d) : fast_mod(cur, out, v, a, d));
+                done = 1;
+            }
+        }
+#endif
+        if (!done) {
+            copy_frame(out, cur);
+            ovf |= step(out, r, i, q[i]);
+        }
         cur = out;
     }
     if (T_end) {
