@@ -48,6 +48,10 @@ static void set_bottom(dh_mat4_f32 *T)
     T->m[3][3] = 1.0f;
 }
 
+#if !DH_FAST_PATHS
+/* The general step. The default build's fast step (fast_step, below)
+ * computes the same bits for every input, so it has no fallback to it. */
+
 /* Columns i and i + 1 of T turned by (s, c) on the first FK_ROWS rows:
  * x' = c x + s y, y' = c y - s x. */
 DH_SPEED_INLINE void turn(dh_mat4_f32 *T, unsigned i, const float *sc)
@@ -75,6 +79,7 @@ DH_SPEED_INLINE void step(dh_mat4_f32 *T, dh_convention conv, const float v[6])
     turn(T, 1u - mod, v + 2u - 2u * mod);
     if (FK_BOTTOM_EACH) set_bottom(T);
 }
+#endif
 
 /* v = (sin theta, cos theta, sin alpha, cos alpha, d, a) of joint j. */
 DH_INLINE void joint_sincos(const dh_joint *j, float theta, float d, float v[6])
@@ -172,7 +177,7 @@ static DH_SIZE_NOINLINE dh_status frame_finite(const dh_mat4_f32 *T)
 {
     float z = 0.0f;
     int c, k;
-    DH_UNROLL(4)
+    DH_UNROLL4
     for (c = 0; c < 4; c++)
         for (k = 0; k < FK_TEST_ROWS; k++) z += T->m[c][k] - T->m[c][k];
     return (z == 0.0f) ? DH_OK : DH_ERR_OVERFLOW;
@@ -201,10 +206,13 @@ dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
 
 /* Joints i.. of the chain from src into frames[i..] (or dst); q already
  * checked. */
-DH_INLINE void chain(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *dst,
-                  const dh_mat4_f32 *src, uint32_t i, dh_convention conv)
+DH_INLINE void chain(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *dst0,
+                  const dh_mat4_f32 *src0, uint32_t i0, dh_convention conv)
 {
-    for (; i < r->n; i++) {
+    const dh_mat4_f32 *src = src0;
+    dh_mat4_f32 *dst = dst0;
+    uint32_t i;
+    for (i = i0; i < r->n; i++) {
         float v[6];
         const dh_joint *j = &r->joint[i];
         if (frames) dst = &frames[i];
@@ -222,7 +230,7 @@ DH_INLINE void chain(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_
 
 /* The chain, built in frames[] or in T_end (frames may be NULL, then T_end
  * is not NULL). Every q is checked before anything is written. */
-static DH_SIZE_NOINLINE dh_status fk_chain(const dh_robot *r, const float *q, dh_mat4_f32 *frames,
+static DH_NOINLINE dh_status fk_chain(const dh_robot *r, const float *q, dh_mat4_f32 *frames,
                                            dh_mat4_f32 *T_end)
 {
     const dh_mat4_f32 *src = &r->base;

@@ -286,7 +286,7 @@ DH_INLINE void fast_prep(fkq_joint *J, dh_q30 st, dh_q30 ct, dh_qpos a, dh_qpos 
 DH_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int swap)
 {
     int ovf = 0, k;
-    DH_UNROLL(3)
+    DH_UNROLL3
     for (k = 0; k < 3; k++) {
         const fkq_r x = RQ(I->r[0][k]), y = RQ(I->r[1][k]);
         const int32_t z = I->r[2][k], p = I->p[k];
@@ -304,7 +304,7 @@ DH_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q 
 DH_INLINE int fast_std_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen)
 {
     int ovf = 0, k;
-    DH_UNROLL(3)
+    DH_UNROLL3
     for (k = 0; k < 3; k++) {
         const fkq_r x = RQ(I->r[0][k]), y = RQ(I->r[1][k]);
         const int32_t z = I->r[2][k], p = I->p[k];
@@ -323,7 +323,7 @@ DH_INLINE int fast_std_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh_fram
 DH_INLINE int fast_mod_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int swap)
 {
     int ovf = 0, k;
-    DH_UNROLL(3)
+    DH_UNROLL3
     for (k = 0; k < 3; k++) {
         const int32_t xv = I->r[0][k], p = I->p[k];
         const fkq_r x = RQ(xv);
@@ -341,7 +341,7 @@ DH_INLINE int fast_mod_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q 
 DH_INLINE int fast_mod_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen)
 {
     int ovf = 0, k;
-    DH_UNROLL(3)
+    DH_UNROLL3
     for (k = 0; k < 3; k++) {
         const int32_t xv = I->r[0][k], p = I->p[k];
         const fkq_r x = RQ(xv);
@@ -373,17 +373,6 @@ DH_INLINE int fast_step(const dh_frame_q *I, dh_frame_q *O, unsigned mod, const 
     }
     if (mod) return swap ? fast_mod_rows(&J, I, O, haslen, 1) : fast_mod_rows(&J, I, O, haslen, 0);
     return swap ? fast_std_rows(&J, I, O, haslen, 1) : fast_std_rows(&J, I, O, haslen, 0);
-}
-
-/* fast_step() for each convention (one copy each, the convention folded). */
-static DH_NOINLINE int fast_std(const dh_frame_q *I, dh_frame_q *O, const dh_q30 *v, dh_qpos a, dh_qpos d)
-{
-    return fast_step(I, O, 0u, v, a, d);
-}
-
-static DH_NOINLINE int fast_mod(const dh_frame_q *I, dh_frame_q *O, const dh_q30 *v, dh_qpos a, dh_qpos d)
-{
-    return fast_step(I, O, 1u, v, a, d);
 }
 
 /* The link matrix of joint j (a step applied to the identity, written
@@ -460,6 +449,32 @@ DH_INLINE int joint_values(const dh_joint *j, int32_t q, dh_q30 *v, dh_qpos *d)
     *d = fkq_len(DH_FAST_PATHS ? fkq_sat32_inline(qs, &ovf) : fkq_sat32(qs, &ovf));
     return ovf;
 }
+
+#if DH_FAST_PATHS
+/* Joint j at q by the fast path from I into O (mod a constant of each
+ * caller): the status flag, or -1 when the link is too long for it. */
+DH_INLINE int fast_joint(const dh_frame_q *I, dh_frame_q *O, unsigned mod, const dh_joint *j, int32_t q)
+{
+    dh_q30 v[4];
+    dh_qpos d;
+    const dh_qpos a = fkq_len(j->a_q);
+    const int ovf = joint_values(j, q, v, &d);
+    if (!FAST_LENGTHS(a, d)) return -1;
+    return ovf | fast_step(I, O, mod, v, a, d);
+}
+
+/* fast_joint() for each convention (one copy each, out of the caller's
+ * frame, the convention folded). */
+static DH_NOINLINE int fast_std(const dh_frame_q *I, dh_frame_q *O, const dh_joint *j, int32_t q)
+{
+    return fast_joint(I, O, 0u, j, q);
+}
+
+static DH_NOINLINE int fast_mod(const dh_frame_q *I, dh_frame_q *O, const dh_joint *j, int32_t q)
+{
+    return fast_joint(I, O, 1u, j, q);
+}
+#endif
 
 /* T <- T * A_i(q) in place (joint i of r), the general step. Returns
  * DH_ERR_OVERFLOW when d + q or an entry saturated, else 0. Standard DH
@@ -552,26 +567,19 @@ static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, d
     }
 #endif
     for (; i < r->n; i++) {
-        int done = 0;
+        int f = -1; /* -1: not done by the fast path */
         if (frames) out = &frames[i];
 #if DH_FAST_PATHS
         if ((r->flags & DH_ROBOT_BASE_SMALL_Q) != 0u) {
-            /* the fast path from cur into out; the general step (which
-             * takes the joint values again) only for too long links */
-            dh_q30 v[4];
-            dh_qpos d;
-            const dh_qpos a = fkq_len(r->joint[i].a_q);
-            const int f = joint_values(&r->joint[i], q[i], v, &d);
-            if (FAST_LENGTHS(a, d)) {
-                ovf |= f | (r->conv == DH_CONV_STANDARD ? fast_std(cur, out, v, a, d) : fast_mod(cur, out, v, a, d));
-                done = 1;
-            }
+            f = (r->conv == DH_CONV_STANDARD) ? fast_std(cur, out, &r->joint[i], q[i])
+                                              : fast_mod(cur, out, &r->joint[i], q[i]);
         }
 #endif
-        if (!done) {
+        if (f < 0) {
             copy_frame(out, cur);
-            ovf |= step(out, r, i, q[i]);
+            f = step(out, r, i, q[i]);
         }
+        ovf |= f;
         cur = out;
     }
     if (T_end) {

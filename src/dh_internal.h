@@ -76,13 +76,14 @@ DH_INLINE int dh_isfinite_f32(float x)
 #define DH_SPEED_INLINE static DH_NOINLINE
 #endif
 
-/** Unrolls the next loop n times with GCC when not optimising for size
- *  (constant offsets, no loop counter); nothing otherwise. */
+/** Unrolls the next loop 3 / 4 times with GCC when not optimising for
+ *  size (constant offsets, no loop counter); nothing otherwise. */
 #if defined(__GNUC__) && !defined(__clang__) && !defined(__OPTIMIZE_SIZE__)
-#define DH_PRAGMA_(x) _Pragma(#x)
-#define DH_UNROLL(n) DH_PRAGMA_(GCC unroll n)
+#define DH_UNROLL3 _Pragma("GCC unroll 3")
+#define DH_UNROLL4 _Pragma("GCC unroll 4")
 #else
-#define DH_UNROLL(n)
+#define DH_UNROLL3
+#define DH_UNROLL4
 #endif
 
 #endif /* DHMATH_SRC_DH_INTERNAL_H */
