@@ -92,15 +92,16 @@ DH_INLINE void joint_sincos(const dh_joint *j, float theta, float d, float v[6])
 }
 
 /* Checks joint j's value q: DH_ERR_NAN when q is not finite,
- * DH_ERR_OVERFLOW when q + offset overflows, else DH_OK and, when v is
- * not NULL, the joint values v (joint_sincos) at q. */
+ * DH_ERR_OVERFLOW when q + offset overflows, else DH_OK. When v is not
+ * NULL, the joint values v (joint_sincos) at q, written in every case
+ * (not finite when the status is not DH_OK). */
 DH_SPEED_INLINE dh_status joint_values(const dh_joint *j, float q, float *v)
 {
     const int prism = j->type != DH_JOINT_REVOLUTE;
     const float x = q + (prism ? j->d : j->theta_deg); /* q added to the joint's variable */
+    if (v) joint_sincos(j, prism ? j->theta_deg : x, prism ? x : j->d, v);
     if (!dh_isfinite_f32(q)) return DH_ERR_NAN;
     if (!dh_isfinite_f32(x)) return DH_ERR_OVERFLOW;
-    if (v) joint_sincos(j, prism ? j->theta_deg : x, prism ? x : j->d, v);
     return DH_OK;
 }
 
@@ -276,7 +277,9 @@ static DH_NOINLINE dh_status fk_all(const dh_robot *r, const float *q, dh_mat4_f
     const dh_status st = fk_chain(r, q, frames, T_end);
     if (st != DH_OK) return st;
     if (frames) last = &frames[r->n - 1u];
-    for (i = 0u; !FK_BOTTOM_EACH && frames && i < r->n; i++) set_bottom(&frames[i]);
+    if (!FK_BOTTOM_EACH && frames) {
+        for (i = 0u; i < r->n; i++) set_bottom(&frames[i]);
+    }
     if (T_end) {
         if (r->flags & DH_ROBOT_TOOL_ID_F32) {
             copy(T_end, last);

@@ -357,14 +357,15 @@ DH_INLINE int fast_mod_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh_fram
 }
 
 /* One joint by the fast path: O = I * A (O may be I); mod: 0 standard, 1
- * modified (a constant of each caller); v, a, d from joint_values. */
-DH_INLINE int fast_step(const dh_frame_q *I, dh_frame_q *O, unsigned mod, const dh_q30 *v, dh_qpos a, dh_qpos d)
+ * modified (a constant of each caller); v = (st, ct, sa, ca, d, a) from
+ * joint_values. */
+DH_INLINE int fast_step(const dh_frame_q *I, dh_frame_q *O, unsigned mod, const dh_q30 *v)
 {
     fkq_joint J;
     const unsigned kind = twist_kind(v[2], v[3]);
-    const int haslen = (a | d) != 0;
+    const int haslen = (v[4] | v[5]) != 0;
     const int swap = (kind & TW_SWAP) != 0u;
-    fast_prep(&J, v[0], v[1], a, d, kind, mod, mod ^ 1u, 0u - mod);
+    fast_prep(&J, v[0], v[1], v[5], v[4], kind, mod, mod ^ 1u, 0u - mod);
     if ((kind & TW_GEN) != 0u) {
         J.kca = KQ(v[3]);
         J.ksa = KQ(v[2]);
@@ -375,13 +376,27 @@ DH_INLINE int fast_step(const dh_frame_q *I, dh_frame_q *O, unsigned mod, const 
     return swap ? fast_std_rows(&J, I, O, haslen, 1) : fast_std_rows(&J, I, O, haslen, 0);
 }
 
+/* fast_step() for each convention (one copy each, out of the caller's
+ * frame, the convention folded; they call nothing, so the joint's sine
+ * and cosine are computed before, in the caller's smaller frame). */
+static DH_NOINLINE int fast_std(const dh_frame_q *I, dh_frame_q *O, const dh_q30 *v)
+{
+    return fast_step(I, O, 0u, v);
+}
+
+static DH_NOINLINE int fast_mod(const dh_frame_q *I, dh_frame_q *O, const dh_q30 *v)
+{
+    return fast_step(I, O, 1u, v);
+}
+
 /* The link matrix of joint j (a step applied to the identity, written
- * out; v, a, d from joint_values). Cannot saturate: every entry is a
+ * out; v from joint_values). Cannot saturate: every entry is a
  * product of two sines/cosines (|.| <= 2^30) or of one and a length, which
  * rounds into int32 unchecked. */
-static DH_NOINLINE void link_direct(dh_frame_q *A, unsigned mod, const dh_q30 *v, dh_qpos a, dh_qpos d)
+static DH_NOINLINE void link_direct(dh_frame_q *A, unsigned mod, const dh_q30 *v)
 {
     const dh_q30 st = v[0], ct = v[1], sa = v[2], ca = v[3];
+    const dh_qpos d = v[4], a = v[5];
     if (mod == 0u) {
         /* n = (ct, st, 0), o = ca u + sa z, a = ca z - sa u with u = (-st, ct, 0) */
         A->r[0][0] = ct;
@@ -423,11 +438,11 @@ static DH_NOINLINE void copy_frame(dh_frame_q *dst, const dh_frame_q *src)
 }
 
 /* Joint values of joint j at q: v = (sin theta, cos theta, sin alpha,
- * cos alpha), *d = d + q saturated (INT32_MIN raised to -INT32_MAX, the
- * documented one-LSB raise, not an overflow). theta = q + offset is
- * brought back into int32 by whole turns (exact). Returns DH_ERR_OVERFLOW
- * when d + q saturated, else 0. */
-DH_INLINE int joint_values(const dh_joint *j, int32_t q, dh_q30 *v, dh_qpos *d)
+ * cos alpha, d, a), d = d + q saturated, lengths with INT32_MIN raised to
+ * -INT32_MAX (the documented one-LSB raise, not an overflow). theta = q +
+ * offset is brought back into int32 by whole turns (exact). Returns
+ * DH_ERR_OVERFLOW when d + q saturated, else 0. */
+DH_INLINE int joint_values(const dh_joint *j, int32_t q, dh_q30 *v)
 {
     const uint32_t th = (uint32_t)j->theta_q;
     uint32_t qt = 0u, t;
@@ -446,55 +461,36 @@ DH_INLINE int joint_values(const dh_joint *j, int32_t q, dh_q30 *v, dh_qpos *d)
     v[2] = j->sa_q;
     v[3] = j->ca_q;
     qs = (int64_t)j->d_q + qd;
-    *d = fkq_len(DH_FAST_PATHS ? fkq_sat32_inline(qs, &ovf) : fkq_sat32(qs, &ovf));
+    v[4] = fkq_len(DH_FAST_PATHS ? fkq_sat32_inline(qs, &ovf) : fkq_sat32(qs, &ovf));
+    v[5] = fkq_len(j->a_q);
     return ovf;
 }
 
-#if DH_FAST_PATHS
-/* Joint j at q by the fast path from I into O (mod a constant of each
- * caller): the status flag, or -1 when the link is too long for it. */
-DH_INLINE int fast_joint(const dh_frame_q *I, dh_frame_q *O, unsigned mod, const dh_joint *j, int32_t q)
+/* T <- T * A in place, the general step, v = (st, ct, sa, ca, d, a) from
+ * joint_values; mod: 0 standard, 1 modified. Sets *ovf to DH_ERR_OVERFLOW
+ * when an entry saturated. Standard DH turns (n, o) by theta, moves p
+ * by a n + d a, then twists (o, a) by alpha; modified DH twists first,
+ * moves p by a n + d a with the twisted a, then turns. */
+DH_FAST_NOINLINE void step(dh_frame_q *T, unsigned mod, const dh_q30 *v, int *ovf)
 {
-    dh_q30 v[4];
-    dh_qpos d;
-    const dh_qpos a = fkq_len(j->a_q);
-    const int ovf = joint_values(j, q, v, &d);
-    if (!FAST_LENGTHS(a, d)) return -1;
-    return ovf | fast_step(I, O, mod, v, a, d);
+    int k;
+    turn(T, mod, &v[2u * mod], ovf);
+    for (k = 0; k < 3; k++)
+        T->p[k] = fkq_add_rnd30(T->p[k], MLA(MUL(v[5], T->r[0][k]), v[4], T->r[2][k]), ovf);
+    turn(T, mod ^ 1u, &v[2u * (mod ^ 1u)], ovf);
 }
 
-/* fast_joint() for each convention (one copy each, out of the caller's
- * frame, the convention folded). */
-static DH_NOINLINE int fast_std(const dh_frame_q *I, dh_frame_q *O, const dh_joint *j, int32_t q)
+#if !DH_FAST_PATHS
+/* step() for joint i of r at q (one copy for dh_link_q and the chain):
+ * DH_ERR_OVERFLOW when d + q or an entry saturated, else 0. */
+static DH_NOINLINE int joint_step(dh_frame_q *T, const dh_robot *r, uint32_t i, int32_t q)
 {
-    return fast_joint(I, O, 0u, j, q);
-}
-
-static DH_NOINLINE int fast_mod(const dh_frame_q *I, dh_frame_q *O, const dh_joint *j, int32_t q)
-{
-    return fast_joint(I, O, 1u, j, q);
+    dh_q30 v[6];
+    int ovf = joint_values(&r->joint[i], q, v);
+    step(T, r->conv != DH_CONV_STANDARD, v, &ovf);
+    return ovf;
 }
 #endif
-
-/* T <- T * A_i(q) in place (joint i of r), the general step. Returns
- * DH_ERR_OVERFLOW when d + q or an entry saturated, else 0. Standard DH
- * turns (n, o) by theta, moves p by a n + d a, then twists (o, a) by
- * alpha; modified DH twists first, moves p by a n + d a with the twisted
- * a, then turns. */
-static DH_NOINLINE int step(dh_frame_q *T, const dh_robot *r, uint32_t i, int32_t q)
-{
-    const dh_joint *j = &r->joint[i];
-    const unsigned mod = r->conv != DH_CONV_STANDARD;
-    dh_q30 v[4];
-    dh_qpos d;
-    const dh_qpos a = fkq_len(j->a_q);
-    int ovf = joint_values(j, q, v, &d), k;
-    turn(T, mod, &v[2u * mod], &ovf);
-    for (k = 0; k < 3; k++)
-        T->p[k] = fkq_add_rnd30(T->p[k], MLA(MUL(a, T->r[0][k]), d, T->r[2][k]), &ovf);
-    turn(T, mod ^ 1u, &v[2u * (mod ^ 1u)], &ovf);
-    return ovf;
-}
 
 /* a0 b[0]/2 + a1 b[1]/2 + a2 b[2]/2 (each product halved, floor), exact in
  * 64 bits (|each| <= 2^61). */
@@ -531,15 +527,14 @@ dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A)
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_OVERFLOW;
 #if DH_FAST_PATHS
     {
-        dh_q30 v[4];
-        dh_qpos d;
-        const int ovf = joint_values(&r->joint[i], q, v, &d);
-        link_direct(A, r->conv != DH_CONV_STANDARD, v, fkq_len(r->joint[i].a_q), d);
+        dh_q30 v[6];
+        const int ovf = joint_values(&r->joint[i], q, v);
+        link_direct(A, r->conv != DH_CONV_STANDARD, v);
         return (dh_status)ovf;
     }
 #else
     dh_frame_identity_q(A);
-    return (dh_status)step(A, r, i, q);
+    return (dh_status)joint_step(A, r, i, q);
 #endif
 }
 
@@ -557,29 +552,31 @@ static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, d
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_OVERFLOW;
 #if DH_FAST_PATHS
     if (r->flags & DH_ROBOT_BASE_ID_Q) {
-        dh_q30 v[4];
-        dh_qpos d;
+        dh_q30 v[6];
         if (frames) out = frames;
-        ovf = joint_values(&r->joint[0], q[0], v, &d);
-        link_direct(out, r->conv != DH_CONV_STANDARD, v, fkq_len(r->joint[0].a_q), d);
+        ovf = joint_values(&r->joint[0], q[0], v);
+        link_direct(out, r->conv != DH_CONV_STANDARD, v);
         cur = out;
         i = 1u;
     }
 #endif
     for (; i < r->n; i++) {
-        int f = -1; /* -1: not done by the fast path */
+#if DH_FAST_PATHS
+        dh_q30 v[6];
+#endif
         if (frames) out = &frames[i];
 #if DH_FAST_PATHS
-        if ((r->flags & DH_ROBOT_BASE_SMALL_Q) != 0u) {
-            f = (r->conv == DH_CONV_STANDARD) ? fast_std(cur, out, &r->joint[i], q[i])
-                                              : fast_mod(cur, out, &r->joint[i], q[i]);
-        }
-#endif
-        if (f < 0) {
+        ovf |= joint_values(&r->joint[i], q[i], v);
+        if ((r->flags & DH_ROBOT_BASE_SMALL_Q) != 0u && FAST_LENGTHS(v[5], v[4])) {
+            ovf |= (r->conv == DH_CONV_STANDARD) ? fast_std(cur, out, v) : fast_mod(cur, out, v);
+        } else {
             copy_frame(out, cur);
-            f = step(out, r, i, q[i]);
+            step(out, r->conv != DH_CONV_STANDARD, v, &ovf);
         }
-        ovf |= f;
+#else
+        copy_frame(out, cur);
+        ovf |= joint_step(out, r, i, q[i]);
+#endif
         cur = out;
     }
     if (T_end) {

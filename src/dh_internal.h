@@ -76,6 +76,14 @@ DH_INLINE int dh_isfinite_f32(float x)
 #define DH_SPEED_INLINE static DH_NOINLINE
 #endif
 
+/** Out of line in the default build (its callers' frames stay small),
+ *  inlined into its one caller in the size-first build. */
+#if DH_FAST_PATHS
+#define DH_FAST_NOINLINE static DH_NOINLINE
+#else
+#define DH_FAST_NOINLINE DH_INLINE
+#endif
+
 /** Unrolls the next loop 3 / 4 times with GCC when not optimising for
  *  size (constant offsets, no loop counter); nothing otherwise. */
 #if defined(__GNUC__) && !defined(__clang__) && !defined(__OPTIMIZE_SIZE__)
