@@ -92,16 +92,15 @@ DH_INLINE void joint_sincos(const dh_joint *j, float theta, float d, float v[6])
 }
 
 /* Checks joint j's value q: DH_ERR_NAN when q is not finite,
- * DH_ERR_OVERFLOW when q + offset overflows, else DH_OK. When v is not
- * NULL, the joint values v (joint_sincos) at q, written in every case
- * (not finite when the status is not DH_OK). */
+ * DH_ERR_OVERFLOW when q + offset overflows, else DH_OK and, when v is
+ * not NULL, the joint values v (joint_sincos) at q. */
 DH_SPEED_INLINE dh_status joint_values(const dh_joint *j, float q, float *v)
 {
     const int prism = j->type != DH_JOINT_REVOLUTE;
     const float x = q + (prism ? j->d : j->theta_deg); /* q added to the joint's variable */
-    if (v) joint_sincos(j, prism ? j->theta_deg : x, prism ? x : j->d, v);
     if (!dh_isfinite_f32(q)) return DH_ERR_NAN;
     if (!dh_isfinite_f32(x)) return DH_ERR_OVERFLOW;
+    if (v) joint_sincos(j, prism ? j->theta_deg : x, prism ? x : j->d, v);
     return DH_OK;
 }
 
@@ -117,10 +116,11 @@ DH_INLINE void joint_checked(const dh_joint *j, float q, float v[6])
  * completely before it is written (zero-distance dependences only, so the
  * compiler may vectorise over rows); conv is a constant of each caller.
  * The same operations in the same order as step(); the bottom row is left
- * to the caller. */
-DH_INLINE void fast_step(dh_mat4_f32 *T, dh_convention conv, const float v[6])
+ * to the caller. sin/cos(alpha) and a come from j itself (the values that
+ * v holds), so they load straight into registers. */
+DH_INLINE void fast_step(dh_mat4_f32 *T, dh_convention conv, const dh_joint *j, const float v[6])
 {
-    const float st = v[0], ct = v[1], sa = v[2], ca = v[3], d = v[4], a = v[5];
+    const float st = v[0], ct = v[1], sa = j->sa, ca = j->ca, d = v[4], a = j->a;
     int k;
     for (k = 0; k < FK_ROWS; k++) {
         const float nx = T->m[0][k], ox = T->m[1][k], ax = T->m[2][k], px = T->m[3][k];
@@ -220,10 +220,10 @@ DH_INLINE void chain(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_
         copy(dst, src);
 #if DH_FAST_PATHS
         joint_checked(j, q[i], v);
-        fast_step(dst, conv, v);
+        fast_step(dst, conv, j, v);
 #else
-        (void)joint_values(j, q[i], v);
-        step(dst, conv, v);
+        /* DH_OK: q[i] passed the check before the chain */
+        if (joint_values(j, q[i], v) == DH_OK) step(dst, conv, v);
 #endif
         src = dst;
     }

@@ -544,30 +544,23 @@ static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, d
 {
     const dh_frame_q *cur = &r->base_q;
     dh_frame_q *out = T_end;
-    uint32_t i = 0u;
+    uint32_t i;
     int ovf = 0;
     DH_ASSERT(r != NULL);
     DH_ASSERT(q != NULL);
     if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_OVERFLOW;
-#if DH_FAST_PATHS
-    if (r->flags & DH_ROBOT_BASE_ID_Q) {
-        dh_q30 v[6];
-        if (frames) out = frames;
-        ovf = joint_values(&r->joint[0], q[0], v);
-        link_direct(out, r->conv != DH_CONV_STANDARD, v);
-        cur = out;
-        i = 1u;
-    }
-#endif
-    for (; i < r->n; i++) {
+    for (i = 0u; i < r->n; i++) {
 #if DH_FAST_PATHS
         dh_q30 v[6];
 #endif
         if (frames) out = &frames[i];
 #if DH_FAST_PATHS
         ovf |= joint_values(&r->joint[i], q[i], v);
-        if ((r->flags & DH_ROBOT_BASE_SMALL_Q) != 0u && FAST_LENGTHS(v[5], v[4])) {
+        if (i == 0u && (r->flags & DH_ROBOT_BASE_ID_Q) != 0u) {
+            /* identity base: the first link written out */
+            link_direct(out, r->conv != DH_CONV_STANDARD, v);
+        } else if ((r->flags & DH_ROBOT_BASE_SMALL_Q) != 0u && FAST_LENGTHS(v[5], v[4])) {
             ovf |= (r->conv == DH_CONV_STANDARD) ? fast_std(cur, out, v) : fast_mod(cur, out, v);
         } else {
             copy_frame(out, cur);
