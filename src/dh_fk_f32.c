@@ -1,86 +1,44 @@
 /*
  * dh_fk_f32.c - float forward kinematics.
  *
- * Cost per joint: one dh_sincos_f32 and one in-place affine update of the
- * accumulated frame, written out from the DH definitions (seed 003) with
- * sin/cos(alpha) taken from the description (computed once):
+ * Per joint: one dh_sincos_f32 and one in-place update of the accumulated
+ * frame, written out from the DH definitions with sin/cos(alpha) taken
+ * from the description. A joint is two plane rotations of the columns
+ * with the position update in between:
  *
  * Standard, T <- T * Rz(theta) Tz(d) Tx(a) Rx(alpha), columns n o a p:
  *   n1 = ct n + st o,  u = ct o - st n
- *   p <- p + d a + a_len n1      (Tz along the old z, Tx along the new x)
+ *   p <- (p + d a) + a_len n1
  *   n <- n1,  o <- ca u + sa a,  a <- ca a - sa u
- * Modified, T <- T * Rx(alpha) Tx(a) Rz(theta) Tz(d):
+ * Modified (Craig), T <- T * Rx(alpha) Tx(a) Rz(theta) Tz(d):
  *   o1 = ca o + sa a,  a1 = ca a - sa o
- *   p <- p + a_len n + d a1
+ *   p <- (p + a_len n) + d a1
  *   n <- ct n + st o1,  o <- ct o1 - st n,  a <- a1
- * That is 10 multiplications per row, 30 per joint, against 36 for a
- * general affine product plus the link-matrix construction.
+ * 30 multiplications per joint against 36 for a general affine product.
  *
  * Stack: the chain is accumulated in the caller's output (frames[i], or
- * T itself when only the end frame is wanted, the tool then applied in
- * place row by row), not in a local 4x4, so the deepest path
- * (fk_f32 > dh_sincos_f32 > libgcc) stays within the 256-byte budget of
- * issue 5 on Cortex-M0+ (figures in docs/footprint.md).
- *
- * Speed (issue 6): every step is done in place on one frame (frames[i] is
- * first a copy of frames[i-1]), so the row loop has only zero-distance
- * dependences; on x86-64/NEON it also carries the bottom row (FK_ROWS),
- * which makes each column one 4-lane vector and lets -O2 vectorise the
- * step; the final finiteness test sums x - x instead of branching per
- * element. Puma 560 on x86-64 -O2: 1414 -> 1067 instructions per call
- * (callgrind), ~0.27x -> ~0.21x the time of KDL's JntToCart; Cortex-M4F
- * unchanged at -O2 (1163) and 1126 -> 1107 at -Os (tools/target_bench.sh).
- * The arithmetic of rows 0-2 is the same, in the same order, as before.
+ * T itself), not in a local 4x4, and the tool product runs after the
+ * chain, so the deepest path stays within 256 bytes on Cortex-M0+.
  */
 #include "dhmath/dh_robot.h"
 #include "dhmath/dh_trig.h"
-#include "dhmath/dh_mat4.h" /* dh_mat4_mul_affine_f32 */
+#include "dhmath/dh_mat4.h" /* dh_mat4_identity_f32, dh_mat4_mul_affine_f32 */
+#include "dh_internal.h"
 
-static int is_finite(float x)
-{
-    return (x - x) == 0.0f;
-}
-
-/* Rows updated per joint step. With 4-lane float SIMD (SSE on x86-64,
- * NEON, AltiVec) the homogeneous bottom row rides along in the fourth lane:
- * each column of the column-major frame is then one vector and the whole
- * step is a handful of vector operations (GCC/Clang vectorise the loop at
- * -O2 without -march). Its value there is (0 0 0 1) up to the sign of zero
- * and it is rewritten by set_bottom() anyway. On scalar FPUs (Cortex-M)
- * the fourth row would be 33% more work for nothing, so only 3 rows. */
+/* Rows updated per joint step. With 4-lane float SIMD the bottom row rides
+ * along in the fourth lane, so each column is one vector and -O2
+ * vectorises the step; it is rewritten by set_bottom() anyway. Scalar FPUs
+ * (Cortex-M) update only the 3 rows that matter. */
 #if defined(__SSE__) || defined(__ARM_NEON) || defined(__ARM_NEON__) || defined(__ALTIVEC__)
 #define FK_ROWS 4
 #else
 #define FK_ROWS 3
 #endif
 
-#if DH_SMALL
-
-/*
- * DH_SMALL: the same arithmetic with less code. One step serves both
- * conventions: a joint is two plane rotations of the columns with the
- * position update in between. Standard DH turns (n, o) by theta, then
- * p <- (p + d a) + a_len n, then twists (o, a) by alpha; modified DH
- * twists first, then p <- (p + a_len n) + d a, then turns. Every entry is
- * computed by the same operations in the same order as step_std /
- * step_mod of the default build, so a step gives the same bits (rows
- * 0..2; the bottom row is written as 0 0 0 1).
- * The link matrix is not written out: dh_link_f32 is the step applied to
- * the identity, and an identity base takes the general step too. That
- * gives the same values as the default's written-out link, but a zero
- * entry may have the other sign (the step's 1 * 0 - 0 * 1 is +0 where
- * -st * ca is -0, and the reverse); every nonzero entry, hence every
- * later product, is the same bits, and the header promises nothing about
- * signs of zeros (the bottom row is still exactly 0 0 0 1). This is the
- * only difference from the default build; it saves the 144-byte
- * link_direct. The q checks and the joint values share one function; the
- * tool product is dh_mat4_mul_affine_f32.
- */
-#if defined(__GNUC__) || defined(__clang__)
-#define FK_NOINLINE __attribute__((noinline))
-#else
-#define FK_NOINLINE
-#endif
+/* 1: each step writes the bottom row 0 0 0 1 (size-first build); 0: one
+ * pass over the frames at the end (the default build; with FK_ROWS 4 a
+ * step leaves the bottom row 0 0 0 1 only up to the sign of zero). */
+#define FK_BOTTOM_EACH (!DH_FAST_PATHS)
 
 static void set_bottom(dh_mat4_f32 *T)
 {
@@ -90,72 +48,139 @@ static void set_bottom(dh_mat4_f32 *T)
     T->m[3][3] = 1.0f;
 }
 
-/* Columns i and i + 1 of T turned by sc = (s, c): x' = c x + s y,
- * y' = c y - s x. */
-static FK_NOINLINE void turn(dh_mat4_f32 *T, int i, const float *sc)
+#if !DH_FAST_PATHS
+/* The general step. The default build's fast step (fast_step, below)
+ * computes the same bits for every input, so it has no fallback to it. */
+
+/* Columns i and i + 1 of T turned by (s, c) on the first FK_ROWS rows:
+ * x' = c x + s y, y' = c y - s x. */
+DH_SPEED_INLINE void turn(dh_mat4_f32 *T, unsigned i, const float *sc)
 {
     const float s = sc[0], c = sc[1];
     int k;
-    for (k = 0; k < 3; k++) {
-        float x = T->m[i][k], y = T->m[i + 1][k];
+    for (k = 0; k < FK_ROWS; k++) {
+        const float x = T->m[i][k], y = T->m[i + 1u][k];
         T->m[i][k] = c * x + s * y;
-        T->m[i + 1][k] = c * y - s * x;
+        T->m[i + 1u][k] = c * y - s * x;
     }
 }
 
-/* One joint in place (r: the convention); v = (sin theta, cos theta,
- * sin alpha, cos alpha, d, a) from joint_values. Standard: theta on
- * columns (0, 1), then p + d a + a_len n, then alpha on (1, 2); modified:
- * alpha first, p + a_len n + d a, then theta. */
-static FK_NOINLINE void step(dh_mat4_f32 *T, const dh_robot *r, const float v[6])
+/* One joint in place in convention conv; v = (sin theta,
+ * cos theta, sin alpha, cos alpha, d, a). Standard: theta on columns
+ * (0, 1), then p + d a + a_len n, then alpha on (1, 2); modified: alpha
+ * first, p + a_len n + d a, then theta. */
+DH_SPEED_INLINE void step(dh_mat4_f32 *T, dh_convention conv, const float v[6])
 {
-    const int mod = r->conv != DH_CONV_STANDARD;
-    const float *x1 = T->m[2 - 2 * mod], *x2 = T->m[2 * mod];
+    const unsigned mod = conv != DH_CONV_STANDARD;
+    const float *x1 = T->m[2u - 2u * mod], *x2 = T->m[2u * mod];
     int k;
-    turn(T, mod, v + 2 * mod);
-    for (k = 0; k < 3; k++) T->m[3][k] = (T->m[3][k] + v[4 + mod] * x1[k]) + v[5 - mod] * x2[k];
-    turn(T, !mod, v + 2 - 2 * mod);
-    set_bottom(T);
+    turn(T, mod, v + 2u * mod);
+    for (k = 0; k < FK_ROWS; k++) T->m[3][k] = (T->m[3][k] + v[4u + mod] * x1[k]) + v[5u - mod] * x2[k];
+    turn(T, 1u - mod, v + 2u - 2u * mod);
+    if (FK_BOTTOM_EACH) set_bottom(T);
+}
+#endif
+
+/* v = (sin theta, cos theta, sin alpha, cos alpha, d, a) of joint j. */
+DH_INLINE void joint_sincos(const dh_joint *j, float theta, float d, float v[6])
+{
+    (void)dh_sincos_f32(theta, &v[0], &v[1]);
+    v[2] = j->sa;
+    v[3] = j->ca;
+    v[4] = d;
+    v[5] = j->a;
 }
 
 /* Checks joint j's value q: DH_ERR_NAN when q is not finite,
  * DH_ERR_OVERFLOW when q + offset overflows, else DH_OK and, when v is
- * not NULL, v = (sin theta, cos theta, sin alpha, cos alpha, d, a). */
-static FK_NOINLINE dh_status joint_values(const dh_joint *j, float q, float *v)
+ * not NULL, the joint values v (joint_sincos) at q. */
+DH_SPEED_INLINE dh_status joint_values(const dh_joint *j, float q, float *v)
 {
-    /* (theta, d) with q added to the joint's variable */
-    float td[2];
-    const int k = j->type != DH_JOINT_REVOLUTE;
-    td[0] = j->theta_deg;
-    td[1] = j->d;
-    td[k] = q + td[k];
-    if (!is_finite(q)) return DH_ERR_NAN;
-    if (!is_finite(td[k])) return DH_ERR_OVERFLOW;
-    if (v) {
-        (void)dh_sincos_f32(td[0], &v[0], &v[1]);
-        v[2] = j->sa;
-        v[3] = j->ca;
-        v[4] = td[1];
-        v[5] = j->a;
-    }
+    const int prism = j->type != DH_JOINT_REVOLUTE;
+    const float x = q + (prism ? j->d : j->theta_deg); /* q added to the joint's variable */
+    if (!dh_isfinite_f32(q)) return DH_ERR_NAN;
+    if (!dh_isfinite_f32(x)) return DH_ERR_OVERFLOW;
+    if (v) joint_sincos(j, prism ? j->theta_deg : x, prism ? x : j->d, v);
     return DH_OK;
 }
 
+#if DH_FAST_PATHS
+/* joint_values() of a q already checked, without the checks. */
+DH_INLINE void joint_checked(const dh_joint *j, float q, float v[6])
+{
+    if (j->type == DH_JOINT_REVOLUTE) joint_sincos(j, q + j->theta_deg, j->d, v);
+    else joint_sincos(j, j->theta_deg, q + j->d, v);
+}
+
+/* step() on the first FK_ROWS rows, one row at a time, each row read
+ * completely before it is written (zero-distance dependences only, so the
+ * compiler may vectorise over rows); conv is a constant of each caller.
+ * The same operations in the same order as step(); the bottom row is left
+ * to the caller. sin/cos(alpha) and a come from j itself (the values that
+ * v holds), so they load straight into registers. */
+DH_INLINE void fast_step(dh_mat4_f32 *T, dh_convention conv, const dh_joint *j, const float v[6])
+{
+    const float st = v[0], ct = v[1], sa = j->sa, ca = j->ca, d = v[4], a = j->a;
+    int k;
+    for (k = 0; k < FK_ROWS; k++) {
+        const float nx = T->m[0][k], ox = T->m[1][k], ax = T->m[2][k], px = T->m[3][k];
+        if (conv == DH_CONV_STANDARD) {
+            const float n1 = ct * nx + st * ox, u = ct * ox - st * nx;
+            T->m[3][k] = px + d * ax + a * n1;
+            T->m[0][k] = n1;
+            T->m[1][k] = ca * u + sa * ax;
+            T->m[2][k] = ca * ax - sa * u;
+        } else {
+            const float o1 = ca * ox + sa * ax, a1 = ca * ax - sa * ox;
+            T->m[3][k] = px + a * nx + d * a1;
+            T->m[0][k] = ct * nx + st * o1;
+            T->m[1][k] = ct * o1 - st * nx;
+            T->m[2][k] = a1;
+        }
+    }
+}
+
+/* The link matrix written out (what step() gives on the identity, with
+ * the zeros of the definitions' signs). Out of line: its live products
+ * would otherwise sit in the caller's frame while dh_sincos_f32 runs. */
+static DH_NOINLINE void link_direct(dh_mat4_f32 *A, unsigned mod, const float v[6])
+{
+    const float st = v[0], ct = v[1], sa = v[2], ca = v[3], d = v[4], a = v[5];
+    if (mod == 0u) {
+        A->m[0][0] = ct;       A->m[0][1] = st;       A->m[0][2] = 0.0f;
+        A->m[1][0] = -st * ca; A->m[1][1] = ct * ca;  A->m[1][2] = sa;
+        A->m[2][0] = st * sa;  A->m[2][1] = -ct * sa; A->m[2][2] = ca;
+        A->m[3][0] = a * ct;   A->m[3][1] = a * st;   A->m[3][2] = d;
+    } else {
+        A->m[0][0] = ct;       A->m[0][1] = st * ca;  A->m[0][2] = st * sa;
+        A->m[1][0] = -st;      A->m[1][1] = ct * ca;  A->m[1][2] = ct * sa;
+        A->m[2][0] = 0.0f;     A->m[2][1] = -sa;      A->m[2][2] = ca;
+        A->m[3][0] = a;        A->m[3][1] = -sa * d;  A->m[3][2] = ca * d;
+    }
+    set_bottom(A);
+}
+#endif
+
 /* dst = src unless they are the same frame. */
-static FK_NOINLINE void copy(dh_mat4_f32 *dst, const dh_mat4_f32 *src)
+DH_SPEED_INLINE void copy(dh_mat4_f32 *dst, const dh_mat4_f32 *src)
 {
     if (dst != src) *dst = *src;
 }
 
-/* DH_OK when T is finite (its bottom row is 0 0 0 1 here, so that is its
- * 3x4 part), else DH_ERR_OVERFLOW: x - x is 0 for a finite x and NaN
- * otherwise, and a NaN stays in the sum. */
-static FK_NOINLINE dh_status frame_finite(const dh_mat4_f32 *T)
+/* Rows summed by frame_finite(): the bottom row is 0 0 0 1 there, so 3 and
+ * 4 give the same status; 4 is the shorter loop, 3 the faster. */
+#define FK_TEST_ROWS (DH_FAST_PATHS ? 3 : 4)
+
+/* DH_OK when the 3x4 part of T is finite (its bottom row is 0 0 0 1), else
+ * DH_ERR_OVERFLOW: x - x is 0 for a finite x and NaN otherwise, and a NaN
+ * stays in the sums (one branch instead of twelve). */
+static DH_SIZE_NOINLINE dh_status frame_finite(const dh_mat4_f32 *T)
 {
     float z = 0.0f;
     int c, k;
+    DH_UNROLL4
     for (c = 0; c < 4; c++)
-        for (k = 0; k < 4; k++) z += T->m[c][k] - T->m[c][k];
+        for (k = 0; k < FK_TEST_ROWS; k++) z += T->m[c][k] - T->m[c][k];
     return (z == 0.0f) ? DH_OK : DH_ERR_OVERFLOW;
 }
 
@@ -169,36 +194,45 @@ dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
         return DH_ERR_ARG;
     st = joint_values(&r->joint[i], q, v);
     if (st == DH_OK) {
+#if DH_FAST_PATHS
+        link_direct(A, r->conv != DH_CONV_STANDARD, v);
+#else
+        /* the same nonzero entries; a zero entry may have the other sign */
         dh_mat4_identity_f32(A);
-        step(A, r, v);
+        step(A, r->conv, v);
+#endif
     }
     return st;
 }
 
-/* T_end = last * tool when T_end is not NULL (last: frames[n-1], or T_end
- * itself); DH_ERR_OVERFLOW when the result (or, without T_end, the last
- * frame) is not finite. A non-finite chain frame always reaches T_end
- * (x*inf, x*0*inf). */
-static dh_status finish(const dh_robot *r, const dh_mat4_f32 *last, dh_mat4_f32 *T_end)
+/* Joints i.. of the chain from src into frames[i..] (or dst); q already
+ * checked. */
+DH_INLINE void chain(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *dst0,
+                  const dh_mat4_f32 *src0, uint32_t i0, dh_convention conv)
 {
-    const dh_mat4_f32 *out = last;
-    if (T_end) {
-        if (r->flags & DH_ROBOT_TOOL_ID_F32) copy(T_end, last);
-        else dh_mat4_mul_affine_f32(T_end, last, &r->tool);
-        out = T_end;
+    const dh_mat4_f32 *src = src0;
+    dh_mat4_f32 *dst = dst0;
+    uint32_t i;
+    for (i = i0; i < r->n; i++) {
+        float v[6];
+        const dh_joint *j = &r->joint[i];
+        if (frames) dst = &frames[i];
+        copy(dst, src);
+#if DH_FAST_PATHS
+        joint_checked(j, q[i], v);
+        fast_step(dst, conv, j, v);
+#else
+        /* DH_OK: q[i] passed the check before the chain */
+        if (joint_values(j, q[i], v) == DH_OK) step(dst, conv, v);
+#endif
+        src = dst;
     }
-    return frame_finite(out);
 }
 
-/*
- * The chain: frames may be NULL (end frame only; T_end then not NULL),
- * T_end may be NULL. Built in frames[] or in T_end, from the base; with
- * an identity base the first link is written out, as by default. Every q
- * is checked before anything is written. The tool product (finish) is
- * dh_mat4_mul_affine_f32: the same operations in the same order as the
- * default build's row-by-row product.
- */
-static FK_NOINLINE dh_status fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *T_end)
+/* The chain, built in frames[] or in T_end (frames may be NULL, then T_end
+ * is not NULL). Every q is checked before anything is written. */
+static DH_NOINLINE dh_status fk_chain(const dh_robot *r, const float *q, dh_mat4_f32 *frames,
+                                           dh_mat4_f32 *T_end)
 {
     const dh_mat4_f32 *src = &r->base;
     dh_mat4_f32 *dst = T_end;
@@ -212,28 +246,50 @@ static FK_NOINLINE dh_status fk_f32(const dh_robot *r, const float *q, dh_mat4_f
         st = joint_values(&r->joint[i], q[i], NULL);
         if (st != DH_OK) return st;
     }
-    for (i = 0u; i < r->n; i++) {
+    i = 0u;
+#if DH_FAST_PATHS
+    /* identity base: the first link written out; one loop per convention */
+    if (r->flags & DH_ROBOT_BASE_ID_F32) {
         float v[6];
-        const dh_joint *j = &r->joint[i];
-        if (frames) dst = &frames[i];
-        /* DH_OK: q[i] passed the loop above */
-        if (joint_values(j, q[i], v) == DH_OK) {
-            copy(dst, src);
-            step(dst, r, v);
-        }
+        if (frames) dst = frames;
+        joint_checked(&r->joint[0], q[0], v);
+        link_direct(dst, r->conv != DH_CONV_STANDARD, v);
         src = dst;
+        i = 1u;
     }
+    if (r->conv == DH_CONV_STANDARD) chain(r, q, frames, dst, src, i, DH_CONV_STANDARD);
+    else chain(r, q, frames, dst, src, i, DH_CONV_MODIFIED);
+#else
+    chain(r, q, frames, dst, src, i, r->conv);
+#endif
     return DH_OK;
 }
 
-/* The chain, then the tool and the finiteness test: called one after the
- * other, so the frames of fk_f32 and of the tool product are never on the
- * stack together (the deepest path stays within 256 bytes on M0+). */
-static FK_NOINLINE dh_status fk_all(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *T_end)
+/* The chain, then the bottom rows, the tool (T_end = last * tool when
+ * T_end is not NULL) and the finiteness test of the result (or, without
+ * T_end, of the last frame); a non-finite chain frame always reaches
+ * T_end (x*inf, x*0*inf). Called one after the other, the chain and the
+ * tool product are never on the stack together. */
+static DH_NOINLINE dh_status fk_all(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *T_end)
 {
-    dh_status st = fk_f32(r, q, frames, T_end);
+    const dh_mat4_f32 *last = T_end;
+    uint32_t i;
+    const dh_status st = fk_chain(r, q, frames, T_end);
     if (st != DH_OK) return st;
-    return finish(r, frames ? &frames[r->n - 1u] : T_end, T_end);
+    if (frames) last = &frames[r->n - 1u];
+    if (!FK_BOTTOM_EACH && frames) {
+        for (i = 0u; i < r->n; i++) set_bottom(&frames[i]);
+    }
+    if (T_end) {
+        if (r->flags & DH_ROBOT_TOOL_ID_F32) {
+            copy(T_end, last);
+            if (!FK_BOTTOM_EACH) set_bottom(T_end);
+        } else {
+            dh_mat4_mul_affine_f32(T_end, last, &r->tool);
+        }
+        last = T_end;
+    }
+    return frame_finite(last);
 }
 
 dh_status dh_fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *T)
@@ -247,237 +303,3 @@ dh_status dh_fk_frames_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frame
     DH_ASSERT(frames != NULL);
     return fk_all(r, q, frames, T_end);
 }
-
-#else /* !DH_SMALL: the code below is the default build, unchanged */
-
-/* One joint, in place: T = T * A on the first FK_ROWS rows. Single
- * pointer, each row read completely before it is written, so the compiler
- * sees the exact (zero-distance) dependences and may vectorise over rows. */
-static void step_std(dh_mat4_f32 *T, float st, float ct, float sa, float ca, float a, float d)
-{
-    int k;
-    for (k = 0; k < FK_ROWS; k++) {
-        float nx = T->m[0][k], ox = T->m[1][k], ax = T->m[2][k], px = T->m[3][k];
-        float n1 = ct * nx + st * ox;
-        float u = ct * ox - st * nx;
-        T->m[3][k] = px + d * ax + a * n1;
-        T->m[0][k] = n1;
-        T->m[1][k] = ca * u + sa * ax;
-        T->m[2][k] = ca * ax - sa * u;
-    }
-}
-
-static void step_mod(dh_mat4_f32 *T, float st, float ct, float sa, float ca, float a, float d)
-{
-    int k;
-    for (k = 0; k < FK_ROWS; k++) {
-        float nx = T->m[0][k], ox = T->m[1][k], ax = T->m[2][k], px = T->m[3][k];
-        float o1 = ca * ox + sa * ax;
-        float a1 = ca * ax - sa * ox;
-        T->m[3][k] = px + a * nx + d * a1;
-        T->m[0][k] = ct * nx + st * o1;
-        T->m[1][k] = ct * o1 - st * nx;
-        T->m[2][k] = a1;
-    }
-}
-
-/* The link matrix itself (what a step applied to the identity gives).
- * Out of line: its many live products would otherwise sit in the frame of
- * dh_link_f32 while dh_sincos_f32 runs (the Jacobian calls dh_link_f32 per
- * joint, so that frame is on its deepest path). */
-#if defined(__GNUC__) || defined(__clang__)
-__attribute__((noinline))
-#endif
-static void link_direct(dh_mat4_f32 *A, dh_convention conv, const dh_joint *j, const float v[3])
-{
-    /* v = (sin theta, cos theta, d) from joint_values; four arguments, so
-     * all in registers (no outgoing stack arguments in the callers) */
-    const float st = v[0], ct = v[1], d = v[2], sa = j->sa, ca = j->ca, a = j->a;
-    if (conv == DH_CONV_STANDARD) {
-        A->m[0][0] = ct;       A->m[0][1] = st;       A->m[0][2] = 0.0f;
-        A->m[1][0] = -st * ca; A->m[1][1] = ct * ca;  A->m[1][2] = sa;
-        A->m[2][0] = st * sa;  A->m[2][1] = -ct * sa; A->m[2][2] = ca;
-        A->m[3][0] = a * ct;   A->m[3][1] = a * st;   A->m[3][2] = d;
-    } else {
-        A->m[0][0] = ct;       A->m[0][1] = st * ca;  A->m[0][2] = st * sa;
-        A->m[1][0] = -st;      A->m[1][1] = ct * ca;  A->m[1][2] = ct * sa;
-        A->m[2][0] = 0.0f;     A->m[2][1] = -sa;      A->m[2][2] = ca;
-        A->m[3][0] = a;        A->m[3][1] = -sa * d;  A->m[3][2] = ca * d;
-    }
-    A->m[0][3] = 0.0f;
-    A->m[1][3] = 0.0f;
-    A->m[2][3] = 0.0f;
-    A->m[3][3] = 1.0f;
-}
-
-/* v = (sin theta, cos theta, d) of joint j at value q (q and the sum
- * already known finite). */
-static void joint_values(const dh_joint *j, float q, float v[3])
-{
-    if (j->type == DH_JOINT_REVOLUTE) {
-        (void)dh_sincos_f32(q + j->theta_deg, &v[0], &v[1]);
-        v[2] = j->d;
-    } else {
-        (void)dh_sincos_f32(j->theta_deg, &v[0], &v[1]);
-        v[2] = q + j->d;
-    }
-}
-
-/* DH_OK when every joint value and its sum with the offset is finite;
- * DH_ERR_NAN for a non-finite q (checked first per joint), DH_ERR_OVERFLOW
- * when q + offset overflows. */
-static dh_status check_q(const dh_robot *r, const float *q)
-{
-    uint32_t i;
-    for (i = 0u; i < r->n; i++) {
-        const dh_joint *j = &r->joint[i];
-        float off = (j->type == DH_JOINT_REVOLUTE) ? j->theta_deg : j->d;
-        if (!is_finite(q[i])) return DH_ERR_NAN;
-        if (!is_finite(q[i] + off)) return DH_ERR_OVERFLOW;
-    }
-    return DH_OK;
-}
-
-static void set_bottom(dh_mat4_f32 *T)
-{
-    T->m[0][3] = 0.0f;
-    T->m[1][3] = 0.0f;
-    T->m[2][3] = 0.0f;
-    T->m[3][3] = 1.0f;
-}
-
-/* out = A * B for affine frames (bottom rows taken as 0 0 0 1), row by row:
- * out may be A (each row of A is read before it is written), not B. The
- * same operations in the same order as a separate product. */
-static void mul_affine(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
-{
-    int c, k;
-    for (k = 0; k < 3; k++) {
-        float r0 = A->m[0][k], r1 = A->m[1][k], r2 = A->m[2][k], r3 = A->m[3][k];
-        for (c = 0; c < 3; c++)
-            out->m[c][k] = r0 * B->m[c][0] + r1 * B->m[c][1] + r2 * B->m[c][2];
-        out->m[3][k] = (r0 * B->m[3][0] + r1 * B->m[3][1] + r2 * B->m[3][2]) + r3;
-    }
-    set_bottom(out);
-}
-
-/* 1 when the 3x4 part of T is finite. x - x is 0 for a finite x and NaN
- * for an infinity or a NaN, and NaN propagates through the sums: one
- * branch instead of twelve. One accumulator per row, in scalars (no array
- * in memory); with FK_ROWS == 4 the bottom row (finite: set_bottom() has
- * run) makes the four sums one vector. */
-static int frame_finite(const dh_mat4_f32 *T)
-{
-    float z0 = T->m[0][0] - T->m[0][0], z1 = T->m[0][1] - T->m[0][1], z2 = T->m[0][2] - T->m[0][2];
-#if FK_ROWS == 4
-    float z3 = T->m[0][3] - T->m[0][3];
-#endif
-    int c;
-    for (c = 1; c < 4; c++) {
-        z0 += T->m[c][0] - T->m[c][0];
-        z1 += T->m[c][1] - T->m[c][1];
-        z2 += T->m[c][2] - T->m[c][2];
-#if FK_ROWS == 4
-        z3 += T->m[c][3] - T->m[c][3];
-#endif
-    }
-#if FK_ROWS == 4
-    z0 += z3;
-#endif
-    return (z0 + z1) + z2 == 0.0f;
-}
-
-dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
-{
-    const dh_joint *j;
-    float v[3];
-    DH_ASSERT(r != NULL);
-    DH_ASSERT(A != NULL);
-    if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS || (r->flags & DH_ROBOT_HAS_F32) == 0u)
-        return DH_ERR_ARG;
-    j = &r->joint[i];
-    {
-        float off = (j->type == DH_JOINT_REVOLUTE) ? j->theta_deg : j->d;
-        if (!is_finite(q)) return DH_ERR_NAN;
-        if (!is_finite(q + off)) return DH_ERR_OVERFLOW;
-    }
-    joint_values(j, q, v);
-    link_direct(A, r->conv, j, v);
-    return DH_OK;
-}
-
-/* Shared body: frames may be NULL (end frame only; T_end then not NULL),
- * T_end may be NULL. The chain is built in frames[] or in T_end. */
-static dh_status fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *T_end)
-{
-    const dh_mat4_f32 *src;
-    dh_mat4_f32 *dst;
-    uint32_t i = 0u;
-    dh_status st;
-    DH_ASSERT(r != NULL);
-    DH_ASSERT(q != NULL);
-    if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS || (r->flags & DH_ROBOT_HAS_F32) == 0u)
-        return DH_ERR_ARG;
-    st = check_q(r, q);
-    if (st != DH_OK) return st;
-
-    dst = frames ? &frames[0] : T_end;
-    if (r->flags & DH_ROBOT_BASE_ID_F32) {
-        float v[3];
-        const dh_joint *j = &r->joint[0];
-        joint_values(j, q[0], v);
-        link_direct(dst, r->conv, j, v);
-        src = dst;
-        i = 1u;
-    } else {
-        src = &r->base;
-    }
-    if (r->conv == DH_CONV_STANDARD) {
-        for (; i < r->n; i++) {
-            float v[3];
-            const dh_joint *j = &r->joint[i];
-            if (frames) dst = &frames[i];
-            if (dst != src) *dst = *src;
-            joint_values(j, q[i], v);
-            step_std(dst, v[0], v[1], j->sa, j->ca, j->a, v[2]);
-            src = dst;
-        }
-    } else {
-        for (; i < r->n; i++) {
-            float v[3];
-            const dh_joint *j = &r->joint[i];
-            if (frames) dst = &frames[i];
-            if (dst != src) *dst = *src;
-            joint_values(j, q[i], v);
-            step_mod(dst, v[0], v[1], j->sa, j->ca, j->a, v[2]);
-            src = dst;
-        }
-    }
-    if (frames) {
-        for (i = 0u; i < r->n; i++) set_bottom(&frames[i]);
-        if (T_end == NULL) return frame_finite(dst) ? DH_OK : DH_ERR_OVERFLOW;
-    }
-    /* dst: the last chain frame (frames[n-1], or T_end itself) */
-    if (r->flags & DH_ROBOT_TOOL_ID_F32) {
-        if (dst != T_end) *T_end = *dst;
-        set_bottom(T_end);
-    } else {
-        mul_affine(T_end, dst, &r->tool);
-    }
-    /* a non-finite chain frame always reaches T_end (x*inf, x*0*inf) */
-    return frame_finite(T_end) ? DH_OK : DH_ERR_OVERFLOW;
-}
-
-dh_status dh_fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *T)
-{
-    DH_ASSERT(T != NULL);
-    return fk_f32(r, q, NULL, T);
-}
-
-dh_status dh_fk_frames_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *T_end)
-{
-    DH_ASSERT(frames != NULL);
-    return fk_f32(r, q, frames, T_end);
-}
-
-#endif /* DH_SMALL */

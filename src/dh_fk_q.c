@@ -3,41 +3,30 @@
  * libm, no 64-bit division; checked with arm-none-eabi-nm).
  *
  * Formats: rotation entries Q2.30, positions dh_qpos (DH_QPOS_FRAC fraction
- * bits), angles dh_q16 degrees. The link update is the same as the float
- * one (see dh_fk_f32.c): per joint, each row (x, y, z) of the rotation is
- * turned by theta in its first two entries, twisted by alpha in the last
- * two, and the position gains d z + a x' (standard) or a x + d z'
- * (modified). Every output entry is one or two exact products summed and
- * rounded ONCE (half up); the intermediate rounded entries are reused as
- * the float code reuses its intermediate floats.
+ * bits), angles dh_q16 degrees. The link update is the float one (see
+ * dh_fk_f32.c): two plane rotations of the columns with the position
+ * update in between. Every output entry is one or two exact products
+ * summed and rounded ONCE (half up); the intermediate rounded entries are
+ * reused as the float code reuses its intermediate floats.
  *
- * Two implementations of the same arithmetic, bit-identical whenever
- * nothing saturates:
+ * General step (step): any base, any lengths, any twist; every entry is
+ * range checked and saturates (DH_ERR_OVERFLOW). The exact twists (0, +-90,
+ * 180 degrees) need no branch: with c, s in {0, +-2^30} every product is
+ * exact, so each entry comes out as y, z, or a negation, and -INT32_MIN
+ * rounds to 2^31, which saturates to INT32_MAX with the overflow flag.
  *
- *  - fast path (fast_std / fast_mod), used when the robot's base rows have
- *    norm <= 1.5 (DH_ROBOT_BASE_SMALL_Q; then no rotation entry can leave
- *    Q2.30, see below) and, on cores without a 32x32->64 multiply, the
- *    joint's |a| + |d| <= 2^30. Rotation entries are rounded without a
- *    range check; twists by 0, +-90 and 180 degrees (exact table values)
- *    are a column swap and negation masks chosen once per joint, so the
- *    row loop has no branch on the twist; only positions are range
- *    checked. The two-term sums are one SMULL + SMLAL on Cortex-M3/M4/M7
- *    and dh_port_dot2r30_s16() (eight 16x16 MULS, no 64-bit arithmetic) on
- *    ARMv6-M, with the sine/cosine/length factors split once per joint.
- *  - checked path (step_std / step_mod): any base, any lengths; every
- *    entry is range checked and saturates (DH_ERR_OVERFLOW).
- *
- * The first link of a robot with an identity base is written out directly
- * (link_direct): its entries are products of two sines/cosines (|.| <=
- * 2^30) or of one and a length (|.| <= 2^31 - 1 after len()), which round
- * into int32 without a range check, so nothing there can saturate.
- *
- * Structure for testability: decisions that a joint fixes (twist class,
- * convention, which column receives which value) are data or separate
- * instantiations, never a test that one inlined instance can take only
- * one way; the saturated value of a checked entry is chosen from the sign
- * bit without a branch. Every remaining branch can be taken both ways by
- * some input (test/test_fk_q.c covers them).
+ * Fast path (DH_FAST_PATHS, in front of the general step, bit-identical to
+ * it): taken when the robot's base rows have norm <= 1.5
+ * (DH_ROBOT_BASE_SMALL_Q; then no rotation entry can leave Q2.30, see
+ * below) and, on cores without a 32x32->64 multiply, the joint's |a| + |d|
+ * <= 2^30. Rotation entries are rounded without a range check; exact
+ * twists are a column swap and negation masks chosen once per joint, so
+ * the row loop has no branch on the twist; only positions are range
+ * checked. The two-term sums are one SMULL + SMLAL on Cortex-M3/M4/M7 and
+ * dh_port_dot2r30_s16() (eight 16x16 MULS, no 64-bit arithmetic) on
+ * ARMv6-M, with the sine/cosine/length factors split once per joint. The
+ * first link of an identity base (and dh_link_q) is written out
+ * (link_direct): its entries cannot saturate.
  *
  * Why the fast path cannot overflow. Each joint multiplies the rows of the
  * rotation by Rz(theta) Rx(alpha) built from sines and cosines with
@@ -57,369 +46,107 @@
  *    |d| + |a| + |z| + |x| <= 3.13 2^30 and |round(..)| <= 1.5001 2^30,
  *    then p + that is added with a 32-bit overflow test.
  *
- * Checked path overflow analysis. Every product is x*y with |x| <= 2^31 and
- * |y| <= 2^31 - 1: rotation entries (any int32) meet sines, cosines
- * (|.| <= 2^30) or lengths, and lengths a, d are used with INT32_MIN raised
- * to -INT32_MAX (one LSB, documented saturation). So each product is below
- * 2^62 in magnitude and a sum or difference of two of them is below 2^63:
+ * General step overflow analysis. Every product is x*y with |x| <= 2^31
+ * and |y| <= 2^31 - 1: rotation entries (any int32) meet sines, cosines
+ * (|.| <= 2^30) or lengths, and lengths a, d are used with INT32_MIN
+ * raised to -INT32_MAX (one LSB, documented saturation). So each product
+ * is below 2^62 in magnitude and a sum or difference of two is below 2^63:
  * the two-term sums cannot wrap. Three-term sums (tool product) halve each
  * product first (error 2^-61 relative, far below one LSB). Rounding adds
- * 2^29 to a value below 2^63 - 2^32: no wrap either. Negations go through
- * neg() (INT32_MIN saturates).
+ * 2^29 to a value below 2^63 - 2^32: no wrap either.
  */
 #include "dhmath/dh_robot.h"
 #include "dhmath/dh_trig.h"
 #include "dhmath/dh_fixed.h" /* dh_frame_identity_q */
-#include "../port/dh_port.h" /* relative: src/ compiles with only include/ on the path */
-
-/* The step variants stay separate functions: inlined together into fk_q
- * they would not share stack slots (over 1 KB on Cortex-M0 at -O2). */
-#if defined(__GNUC__) || defined(__clang__)
-#define FKQ_NOINLINE __attribute__((noinline))
-#else
-#define FKQ_NOINLINE
-#endif
+#include "dh_internal.h"
 
 #define HALF29 ((int64_t)1 << 29)
 #define HALF28 ((int64_t)1 << 28)
 
-/* 360 degrees in Q16.16 times 182: the largest multiple of a full turn
- * below 2^32, used to bring q + offset back into the int32 range exactly. */
-#define TURNS_182 ((int64_t)4293918720)
-
-/* 64-bit products of the checked path, the link matrix and the tool
+/* 64-bit products of the general step, the link matrix and the tool
  * product. Out of line where they are a 16-bit-partials kernel (ARMv6-M):
- * inlined 40 times, that kernel makes GCC spill and the callers' frames
+ * inlined many times, that kernel makes GCC spill and the callers' frames
  * exceed the 256-byte stack budget. */
 #if DH_PORT_MUL64_IS_CALL
-static FKQ_NOINLINE int64_t mul64(int32_t a, int32_t b)
+static DH_NOINLINE int64_t fkq_mul64(int32_t a, int32_t b)
 {
     return dh_port_smull(a, b);
 }
-static FKQ_NOINLINE int64_t mla64(int64_t acc, int32_t a, int32_t b)
+static DH_NOINLINE int64_t fkq_mla64(int64_t acc, int32_t a, int32_t b)
 {
     return dh_port_smlal(acc, a, b);
 }
-#define MUL(a, b) mul64((a), (b))
-#define MLA(acc, a, b) mla64((acc), (a), (b))
+#define MUL(a, b) fkq_mul64((a), (b))
+#define MLA(acc, a, b) fkq_mla64((acc), (a), (b))
 #else
 #define MUL(a, b) dh_port_smull((a), (b))
 #define MLA(acc, a, b) dh_port_smlal((acc), (a), (b))
 #endif
 
-#if !DH_SMALL /* lo30, rnd30, rnd30_fit, pos, neg: only the default build uses them */
-/* bits 30..61 of t (t >> 30 when that fits int32), from the two words */
-DH_PORT_INLINE int32_t lo30(int64_t t)
-{
-    return (int32_t)(((uint32_t)((uint64_t)t & 0xFFFFFFFFu) >> 30) | ((uint32_t)((uint64_t)t >> 32) << 2));
-}
-#endif
-
 /* INT32_MIN when bit 31 of w is set, else INT32_MAX (the saturated value
- * of a result with the sign of w; branch free; the uint32 -> int32
- * conversion wraps, checked in dh_port.h). */
-DH_PORT_INLINE int32_t sat_sign(uint32_t w)
+ * of a result with the sign of w; the uint32 -> int32 conversion wraps,
+ * checked in dh_port.h). */
+DH_PORT_INLINE int32_t fkq_sat_sign(uint32_t w)
 {
     return (int32_t)(0x7FFFFFFFu ^ (0u - (w >> 31)));
 }
 
-#if !DH_SMALL
-/*
- * Round x / 2^30 to nearest (half up) into int32, saturating and setting
- * *ovf. t >> 30 fits in int32 iff the high word of t lies in
- * [-2^29, 2^29), which is one add and one unsigned compare on the high
- * register; the result is then the low word shifted and or-ed (the uint32
- * -> int32 conversion wraps, checked in dh_port.h).
- */
-DH_PORT_INLINE int32_t rnd30(int64_t x, int *ovf)
-{
-    int64_t t = x + HALF29;
-    int32_t hi = (int32_t)(t >> 32);
-    if ((uint32_t)hi + 0x20000000u >= 0x40000000u) {
-        *ovf = 1;
-        return sat_sign((uint32_t)hi);
-    }
-    /* bits 30..61 of t, composed from the two words (the uint32 -> int32
-     * conversion wraps, checked in dh_port.h); written this way the
-     * compiler keeps a 32-bit value and the next product stays one SMULL */
-    return (int32_t)(((uint32_t)t >> 30) | ((uint32_t)hi << 2));
-}
-
-/* round(x / 2^30) when the caller knows that it fits int32 (no check). */
-DH_PORT_INLINE int32_t rnd30_fit(int64_t x)
-{
-    return lo30(x + HALF29);
-}
-
-/* p + round(x / 2^30), saturated to int32 (x: lengths times Q2.30). */
-DH_PORT_INLINE int32_t pos(int32_t p, int64_t x, int *ovf)
-{
-    int64_t v = (int64_t)p + ((x + HALF29) >> 30);
-    if (v > INT32_MAX) {
-        *ovf = 1;
-        return INT32_MAX;
-    }
-    if (v < INT32_MIN) {
-        *ovf = 1;
-        return INT32_MIN;
-    }
-    return (int32_t)v;
-}
-
-/* -x, saturating INT32_MIN to INT32_MAX. */
-DH_PORT_INLINE int32_t neg(int32_t x, int *ovf)
-{
-    if (x == INT32_MIN) {
-        *ovf = 1;
-        return INT32_MAX;
-    }
-    return -x;
-}
-#endif /* !DH_SMALL */
-
 /* Length operand: INT32_MIN raised to -INT32_MAX (see the overflow note). */
-DH_PORT_INLINE int32_t len(int32_t x)
+DH_PORT_INLINE int32_t fkq_len(int32_t x)
 {
     return (x == INT32_MIN) ? -INT32_MAX : x;
 }
 
-#if DH_SMALL
-
-/*
- * DH_SMALL: one code path for both conventions, every base, tool and
- * twist, with the arithmetic of the checked path (step_std / step_mod of
- * the default build): same products, one rounding (half up) per entry,
- * every entry saturated. The fast path is bit-identical to the checked
- * path whenever nothing saturates, so dropping it changes no result.
- *
- * A joint is two plane rotations of the columns and a position update in
- * between: standard DH turns (n, o) by theta, moves p by a n + d a, then
- * twists (o, a) by alpha; modified DH twists (o, a) first, moves p by
- * a n + d a with the twisted a, then turns (n, o). turn() is the same
- * helper for both rotations. The exact twists (0, +-90, 180 degrees) need
- * no branch: with c, s in {0, +-2^30} every product is exact, so each
- * entry comes out as y, z, or a negation, and -INT32_MIN rounds to 2^31,
- * which saturates to INT32_MAX with the overflow flag, as neg() does.
- * Also without a special case: the identity base (the step on the
- * identity equals the link written out, entry by entry, and cannot
- * saturate) and dh_link_q (a step applied to the identity). The identity
- * tool is still skipped (a copy): the product by it would give the same
- * bits but costs about 600 instructions of a 6-joint FK on Cortex-M4.
- * Every two-term entry goes through add_rnd30 (p + round(x / 2^30),
- * saturated; p = 0 for rotation entries, and d + q is d + round(q 2^30 /
- * 2^30)), the same value and flag as the default's rnd30 / pos.
- * The tool product keeps its own three-term sums of halved products:
- * dh_frame_mul_q rounds the exact sum instead, which differs by one LSB
- * in rare cases, and so at the int32 edge saturates for some inputs
- * where this product does not (a different status).
- */
-
 /* v saturated to int32 (|v| < 2^63 - 2^31); sets *ovf to DH_ERR_OVERFLOW
- * when it does not fit: v + 2^31 then leaves [0, 2^32). Every flag of
+ * when it does not fit (v + 2^31 then leaves [0, 2^32)). Every flag of
  * this file is 0 or DH_ERR_OVERFLOW, so that it is the status itself. */
-static FKQ_NOINLINE int32_t sat32(int64_t v, int *ovf)
+DH_INLINE int32_t fkq_sat32_inline(int64_t v, int *ovf)
 {
     if (((uint64_t)(v + ((int64_t)1 << 31)) >> 32) != 0u) {
         *ovf = (int)DH_ERR_OVERFLOW;
-        return sat_sign((uint32_t)((uint64_t)v >> 32));
+        return fkq_sat_sign((uint32_t)((uint64_t)v >> 32));
     }
     return (int32_t)v;
 }
 
-/* p + round(x / 2^30) (half up), saturated: x below 2^63 - 2^29 in
- * magnitude (sums of two products, file comment). */
-static FKQ_NOINLINE int32_t add_rnd30(int32_t p, int64_t x, int *ovf)
+static DH_NOINLINE int32_t fkq_sat32(int64_t v, int *ovf)
 {
-    return sat32(p + ((x + HALF29) >> 30), ovf);
+    return fkq_sat32_inline(v, ovf);
+}
+
+/* p + round(x / 2^30) (half up), saturated: |x| below 2^63 - 2^29. */
+static DH_NOINLINE int32_t fkq_add_rnd30(int32_t p, int64_t x, int *ovf)
+{
+    return fkq_sat32(p + ((x + HALF29) >> 30), ovf);
 }
 
 /* Columns i and i + 1 of T turned by cs = (s, c): x' = c x + s y,
- * y' = c y - s x, each rounded once and saturated (rnd30, as the checked
- * path). Products below 2^62, their sums below 2^63 (file comment). */
-static FKQ_NOINLINE void turn(dh_frame_q *T, unsigned i, const dh_q30 *cs, int *ovf)
+ * y' = c y - s x, each rounded once and saturated. */
+static DH_NOINLINE void turn(dh_frame_q *T, unsigned i, const dh_q30 *cs, int *ovf)
 {
     const dh_q30 s = cs[0], c = cs[1];
     int k;
     for (k = 0; k < 3; k++) {
         const int32_t x = T->r[i][k], y = T->r[i + 1u][k];
-        T->r[i][k] = add_rnd30(0, MLA(MUL(c, x), s, y), ovf);
-        T->r[i + 1u][k] = add_rnd30(0, MUL(c, y) - MUL(s, x), ovf);
+        T->r[i][k] = fkq_add_rnd30(0, MLA(MUL(c, x), s, y), ovf);
+        T->r[i + 1u][k] = fkq_add_rnd30(0, MUL(c, y) - MUL(s, x), ovf);
     }
 }
 
-/* T <- T * A_i(q) in place (joint i of r). Returns DH_ERR_OVERFLOW when
- * d + q or an entry saturated, else 0. theta = q + offset is brought back into int32 by
- * whole turns (exact); d is saturated and INT32_MIN raised to -INT32_MAX
- * (the documented one-LSB raise, not an overflow), as is a. */
-static FKQ_NOINLINE int step(dh_frame_q *T, const dh_robot *r, uint32_t i, int32_t q)
+#if DH_FAST_PATHS
+/* bits 30..61 of t (t >> 30 when that fits int32), from the two words */
+DH_INLINE int32_t lo30(int64_t t)
 {
-    const dh_joint *j = &r->joint[i];
-    const unsigned mod = r->conv != DH_CONV_STANDARD;
-    dh_q30 v[4]; /* sin theta, cos theta, sin alpha, cos alpha */
-    const uint32_t th = (uint32_t)j->theta_q;
-    uint32_t qt = 0u, t;
-    const int32_t a = len(j->a_q);
-    int32_t d, qd = 0;
-    int ovf = 0, k;
-    if (j->type == DH_JOINT_REVOLUTE) qt = (uint32_t)q;
-    else qd = q;
-    /* theta + q brought back into int32 by 182 turns (TURNS_182 = 2^32 -
-     * 2^20), in 32 bits: t = theta + q modulo 2^32; when the sum leaves
-     * int32 (both terms of one sign, t of the other) the true sum is
-     * t +- 2^32, and 182 turns back is t + 2^20 when t wrapped negative,
-     * t - 2^20 otherwise (the same angle as the default's 64-bit test,
-     * fewer bytes; the uint32 -> int32 conversion wraps, dh_port.h) */
-    t = th + qt;
-    if (((t ^ th) & (t ^ qt)) >> 31) t += 0xFFF00000u + ((t >> 31) << 21);
-    dh_sincos_q((dh_q16)t, &v[0], &v[1]);
-    v[2] = j->sa_q;
-    v[3] = j->ca_q;
-    /* d + qd, saturated (the value and flag of the default's pos(d,
-     * qd 2^30): qd 2^30 rounds back to qd exactly) */
-    d = len(sat32((int64_t)j->d_q + qd, &ovf));
-    turn(T, mod, &v[2u * mod], &ovf);
-    for (k = 0; k < 3; k++)
-        T->p[k] = add_rnd30(T->p[k], MLA(MUL(a, T->r[0][k]), d, T->r[2][k]), &ovf);
-    turn(T, mod ^ 1u, &v[2u * (mod ^ 1u)], &ovf);
-    return ovf;
+    return (int32_t)(((uint32_t)((uint64_t)t & 0xFFFFFFFFu) >> 30) | ((uint32_t)((uint64_t)t >> 32) << 2));
 }
 
-/* a0 b[0]/2 + a1 b[1]/2 + a2 b[2]/2 (each product halved, floor), exact in
- * 64 bits (|each| <= 2^61). */
-static FKQ_NOINLINE int64_t dot3h(int32_t a0, int32_t a1, int32_t a2, const int32_t *b)
+/* round(x / 2^30) when the caller knows that it fits int32 (no check). */
+DH_INLINE int32_t rnd30_fit(int64_t x)
 {
-    return (MUL(a0, b[0]) >> 1) + (MUL(a1, b[1]) >> 1) + (MUL(a2, b[2]) >> 1);
-}
-
-/* out = A * B, three-term sums of halved products rounded at bit 29. out
- * may be A (row k of A is read before row k of out is written), not B.
- * Returns DH_ERR_OVERFLOW when an entry saturated, else 0. */
-static FKQ_NOINLINE int mul_frame(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B)
-{
-    int c, k, ovf = 0;
-    for (k = 0; k < 3; k++) {
-        const int32_t a0 = A->r[0][k], a1 = A->r[1][k], a2 = A->r[2][k], p = A->p[k];
-        for (c = 0; c < 4; c++) {
-            /* columns n, o, a, then p (plus the position of A) */
-            const int32_t *b = c < 3 ? B->r[c] : B->p;
-            int32_t *o = c < 3 ? &out->r[c][k] : &out->p[k];
-            *o = sat32((c < 3 ? 0 : p) + ((dot3h(a0, a1, a2, b) + HALF28) >> 29), &ovf);
-        }
-    }
-    return ovf;
-}
-
-/* dst = src unless they are the same frame. */
-static FKQ_NOINLINE void copy_frame(dh_frame_q *dst, const dh_frame_q *src)
-{
-    if (dst != src) *dst = *src;
-}
-
-dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A)
-{
-    DH_ASSERT(r != NULL);
-    DH_ASSERT(A != NULL);
-    if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
-    if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_OVERFLOW;
-    dh_frame_identity_q(A);
-    return (dh_status)step(A, r, i, q);
-}
-
-/* The chain is built in the caller's memory (frames[i], or T_end), from
- * the base; nothing is written before the argument checks. */
-static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, dh_frame_q *T_end)
-{
-    const dh_frame_q *cur;
-    dh_frame_q *out = T_end;
-    uint32_t i;
-    int ovf = 0;
-    DH_ASSERT(r != NULL);
-    DH_ASSERT(q != NULL);
-    if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
-    if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_OVERFLOW;
-    cur = &r->base_q;
-    for (i = 0u; i < r->n; i++) {
-        if (frames) out = &frames[i];
-        copy_frame(out, cur);
-        ovf |= step(out, r, i, q[i]);
-        cur = out;
-    }
-    if (T_end) {
-        if ((r->flags & DH_ROBOT_TOOL_ID_Q) == 0u) ovf |= mul_frame(T_end, cur, &r->tool_q);
-        else copy_frame(T_end, cur);
-    }
-    return (dh_status)ovf;
-}
-
-#else /* !DH_SMALL: the code below is the default build, unchanged */
-
-/* Sum of halved products rounded at bit 29 (three-term sums). */
-static int32_t rot_h(int64_t x, int *ovf)
-{
-    int64_t v = (x + HALF28) >> 29;
-    if (v > INT32_MAX) {
-        *ovf = 1;
-        return INT32_MAX;
-    }
-    if (v < INT32_MIN) {
-        *ovf = 1;
-        return INT32_MIN;
-    }
-    return (int32_t)v;
-}
-
-static int32_t pos_h(int32_t p, int64_t x, int *ovf)
-{
-    int64_t v = (int64_t)p + ((x + HALF28) >> 29);
-    if (v > INT32_MAX) {
-        *ovf = 1;
-        return INT32_MAX;
-    }
-    if (v < INT32_MIN) {
-        *ovf = 1;
-        return INT32_MIN;
-    }
-    return (int32_t)v;
-}
-
-/* theta = q + offset in Q16.16 degrees, reduced by whole turns into int32
- * when the sum leaves it (exact: the sine and cosine do not change). */
-DH_PORT_INLINE dh_q16 add_angle(int32_t q, dh_q16 off)
-{
-    int64_t t = (int64_t)q + (int64_t)off;
-    if (t > INT32_MAX) t -= TURNS_182;
-    else if (t < INT32_MIN) t += TURNS_182;
-    return (dh_q16)t;
-}
-
-/* Joint values: sin/cos(theta) and d (never INT32_MIN); sets *ovf when
- * d + q saturates. */
-static void joint_values(const dh_joint *j, int32_t q, dh_q30 *st, dh_q30 *ct, dh_qpos *d, int *ovf)
-{
-    if (j->type == DH_JOINT_REVOLUTE) {
-        dh_sincos_q(add_angle(q, j->theta_q), st, ct);
-        *d = len(j->d_q);
-    } else {
-        int64_t v = (int64_t)q + (int64_t)j->d_q;
-        dh_sincos_q(j->theta_q, st, ct);
-        if (v > INT32_MAX) {
-            *ovf = 1;
-            v = INT32_MAX;
-        } else if (v < -(int64_t)INT32_MAX) {
-            /* INT32_MIN itself is the documented one-LSB raise, not an overflow */
-            if (v < INT32_MIN) *ovf = 1;
-            v = -(int64_t)INT32_MAX;
-        }
-        *d = (dh_qpos)v;
-    }
+    return lo30(x + HALF29);
 }
 
 /*
- * The x-twist by alpha applied to a pair (y, z) of one row:
- * y' = ca y + sa z, z' = ca z - sa y. alpha of 0, +-90 and 180 degrees
- * (exact 0 / +-1 from the table) take the multiplication-free branch,
- * which gives the same values as the general one.
- *
  * A twist class is a set of bits: TW_NA / TW_NB negate the first / the
  * second value of the pair (standard DH: u, z; modified DH: the roles are
  * exchanged, see fast_prep), TW_SWAP exchanges columns 1 and 2, TW_GEN is
@@ -454,68 +181,6 @@ DH_PORT_INLINE unsigned twist_kind(dh_q30 sa, dh_q30 ca)
     return kind;
 }
 
-#define TWIST(kind, sa, ca, y, z, y2, z2, ovf, RND) do { \
-    switch (kind) { \
-    case TW_ONE: (y2) = (y); (z2) = (z); break; \
-    case TW_P90: (y2) = (z); (z2) = neg((y), (ovf)); break; \
-    case TW_M90: (y2) = neg((z), (ovf)); (z2) = (y); break; \
-    case TW_180: (y2) = neg((y), (ovf)); (z2) = neg((z), (ovf)); break; \
-    default: \
-        (y2) = RND(MLA(MUL((ca), (y)), (sa), (z)), (ovf)); \
-        (z2) = RND(MUL((ca), (z)) - MUL((sa), (y)), (ovf)); \
-        break; \
-    } } while (0)
-
-/* Standard DH joint applied in place, checked path: T <- T * Rz(theta) Tz(d) Tx(a) Rx(alpha). */
-#define DEF_STEP_STD(name, RND) \
-static FKQ_NOINLINE void name(dh_frame_q *T, dh_q30 st, dh_q30 ct, const dh_joint *j, dh_qpos d, int *ovf) \
-{ \
-    const dh_q30 sa = j->sa_q, ca = j->ca_q; \
-    const dh_qpos a = len(j->a_q); \
-    const unsigned kind = twist_kind(sa, ca); \
-    int k; \
-    for (k = 0; k < 3; k++) { \
-        int32_t nx = T->r[0][k], ox = T->r[1][k], ax = T->r[2][k]; \
-        int32_t n1 = RND(MLA(MUL(ct, nx), st, ox), ovf); \
-        int32_t u = RND(MUL(ct, ox) - MUL(st, nx), ovf); \
-        int32_t o2, a2; \
-        int64_t dp = 0; \
-        if (d != 0) dp = MUL(d, ax); \
-        if (a != 0) dp += MUL(a, n1); \
-        T->p[k] = pos(T->p[k], dp, ovf); \
-        TWIST(kind, sa, ca, u, ax, o2, a2, ovf, RND); \
-        T->r[0][k] = n1; \
-        T->r[1][k] = o2; \
-        T->r[2][k] = a2; \
-    } \
-}
-
-/* Modified DH joint in place, checked path: T <- T * Rx(alpha) Tx(a) Rz(theta) Tz(d). */
-#define DEF_STEP_MOD(name, RND) \
-static FKQ_NOINLINE void name(dh_frame_q *T, dh_q30 st, dh_q30 ct, const dh_joint *j, dh_qpos d, int *ovf) \
-{ \
-    const dh_q30 sa = j->sa_q, ca = j->ca_q; \
-    const dh_qpos a = len(j->a_q); \
-    const unsigned kind = twist_kind(sa, ca); \
-    int k; \
-    for (k = 0; k < 3; k++) { \
-        int32_t nx = T->r[0][k], ox = T->r[1][k], ax = T->r[2][k], o1, a1; \
-        int64_t dp = 0; \
-        TWIST(kind, sa, ca, ox, ax, o1, a1, ovf, RND); \
-        if (a != 0) dp = MUL(a, nx); \
-        if (d != 0) dp += MUL(d, a1); \
-        T->p[k] = pos(T->p[k], dp, ovf); \
-        T->r[0][k] = RND(MLA(MUL(ct, nx), st, o1), ovf); \
-        T->r[1][k] = RND(MUL(ct, o1) - MUL(st, nx), ovf); \
-        T->r[2][k] = a1; \
-    } \
-}
-
-DEF_STEP_STD(step_std, rnd30)
-DEF_STEP_MOD(step_mod, rnd30)
-
-/* ---- fast path ------------------------------------------------------------ */
-
 /*
  * fkq_k: a factor used for a whole joint (sine, cosine, length), fkq_r: a
  * rotation entry; DOT2(c, x, s, y) = round((c x + s y) / 2^30), one
@@ -523,8 +188,8 @@ DEF_STEP_MOD(step_mod, rnd30)
  * comment).
  */
 #if DH_PORT_USE_SPLIT16
-/* |x| as uint32 (x != INT32_MIN here: lengths went through len()) */
-DH_PORT_INLINE uint32_t abs_u(int32_t x)
+/* |x| as uint32 (x != INT32_MIN here: lengths went through fkq_len()) */
+DH_INLINE uint32_t abs_u(int32_t x)
 {
     return x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
 }
@@ -546,15 +211,15 @@ typedef int32_t fkq_r;
 #endif
 
 /* p + round((d z + a x) / 2^30), saturated (sets *ovf). */
-DH_PORT_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_t x, int *ovf)
+DH_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_t x, int *ovf)
 {
 #if DH_PORT_USE_SPLIT16
     uint32_t r = (uint32_t)DOT2(kd, RQ(z), ka, RQ(x));
     uint32_t s = (uint32_t)p + r;
     /* signed overflow iff p and r have the same sign and s the other one */
     if ((~((uint32_t)p ^ r) & ((uint32_t)p ^ s)) & 0x80000000u) {
-        *ovf = 1;
-        return sat_sign((uint32_t)p);
+        *ovf = (int)DH_ERR_OVERFLOW;
+        return fkq_sat_sign((uint32_t)p);
     }
     return (int32_t)s;
 #else
@@ -564,22 +229,12 @@ DH_PORT_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_
     t = dh_port_smlal(dh_port_smlal(t, kd, z), ka, x);
     hi = (uint32_t)((uint64_t)t >> 32);
     if (hi + 0x20000000u >= 0x40000000u) {
-        *ovf = 1;
-        return sat_sign(hi);
+        *ovf = (int)DH_ERR_OVERFLOW;
+        return fkq_sat_sign(hi);
     }
     return lo30(t);
 #endif
 }
-
-/* The three rows unrolled (constant offsets, no loop counter) with GCC
- * when not optimising for size: 6-joint FK on Cortex-M4 -O2 1926 -> 1739
- * instructions, Cortex-M0 -O2 7185 -> 6782; at -Os the loop is kept (the
- * unrolled code is 1.5 times larger and both -Os budgets hold without it). */
-#if defined(__GNUC__) && !defined(__clang__) && !defined(__OPTIMIZE_SIZE__)
-#define FKQ_UNROLL3 _Pragma("GCC unroll 3")
-#else
-#define FKQ_UNROLL3
-#endif
 
 /* (v ^ m) - m: v or -v for a mask m of all zeros or all ones; v !=
  * INT32_MIN on the fast path */
@@ -611,7 +266,7 @@ typedef struct {
  * the second value of the pair; fold: all ones when the first value's
  * sign goes into ks and kc1 (modified DH), else 0. Branch free: kind is
  * data, the other arguments are constants of the caller. */
-DH_PORT_INLINE void fast_prep(fkq_joint *J, dh_q30 st, dh_q30 ct, dh_qpos a, dh_qpos d, unsigned kind,
+DH_INLINE void fast_prep(fkq_joint *J, dh_q30 st, dh_q30 ct, dh_qpos a, dh_qpos d, unsigned kind,
                               unsigned sh1, unsigned sh2, uint32_t fold)
 {
     const uint32_t m1 = 0u - ((kind >> sh1) & 1u);
@@ -625,21 +280,13 @@ DH_PORT_INLINE void fast_prep(fkq_joint *J, dh_q30 st, dh_q30 ct, dh_qpos a, dh_
     J->ka = KQ(a);
 }
 
-/* the factors of a general twist (only that variant reads them) */
-DH_PORT_INLINE void fast_prep_gen(fkq_joint *J, const dh_joint *j)
-{
-    J->kca = KQ(j->ca_q);
-    J->ksa = KQ(j->sa_q);
-    J->knsa = KQ(-j->sa_q);
-}
-
 /* Rows of a standard DH joint with an exact twist: O = I * A (O may be I:
  * row k of I is read before row k of O is written). swap (0 or 1) is a
- * constant. Returns 1 when a position saturated. */
-DH_PORT_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int swap)
+ * constant. Returns DH_ERR_OVERFLOW when a position saturated, else 0. */
+DH_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int swap)
 {
     int ovf = 0, k;
-    FKQ_UNROLL3
+    DH_UNROLL3
     for (k = 0; k < 3; k++) {
         const fkq_r x = RQ(I->r[0][k]), y = RQ(I->r[1][k]);
         const int32_t z = I->r[2][k], p = I->p[k];
@@ -654,10 +301,10 @@ DH_PORT_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_fra
 }
 
 /* Rows of a standard DH joint with a general twist (same contract). */
-DH_PORT_INLINE int fast_std_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen)
+DH_INLINE int fast_std_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen)
 {
     int ovf = 0, k;
-    FKQ_UNROLL3
+    DH_UNROLL3
     for (k = 0; k < 3; k++) {
         const fkq_r x = RQ(I->r[0][k]), y = RQ(I->r[1][k]);
         const int32_t z = I->r[2][k], p = I->p[k];
@@ -673,10 +320,10 @@ DH_PORT_INLINE int fast_std_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh
 }
 
 /* Rows of a modified DH joint with an exact twist (same contract). */
-DH_PORT_INLINE int fast_mod_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int swap)
+DH_INLINE int fast_mod_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int swap)
 {
     int ovf = 0, k;
-    FKQ_UNROLL3
+    DH_UNROLL3
     for (k = 0; k < 3; k++) {
         const int32_t xv = I->r[0][k], p = I->p[k];
         const fkq_r x = RQ(xv);
@@ -691,10 +338,10 @@ DH_PORT_INLINE int fast_mod_rows(const fkq_joint *J, const dh_frame_q *I, dh_fra
 }
 
 /* Rows of a modified DH joint with a general twist (same contract). */
-DH_PORT_INLINE int fast_mod_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen)
+DH_INLINE int fast_mod_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen)
 {
     int ovf = 0, k;
-    FKQ_UNROLL3
+    DH_UNROLL3
     for (k = 0; k < 3; k++) {
         const int32_t xv = I->r[0][k], p = I->p[k];
         const fkq_r x = RQ(xv);
@@ -709,47 +356,48 @@ DH_PORT_INLINE int fast_mod_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh
     return ovf;
 }
 
-/* One joint by the fast path. Returns 1 on saturation. */
-static FKQ_NOINLINE int fast_std(const dh_frame_q *I, dh_frame_q *O, dh_q30 st, dh_q30 ct, const dh_joint *j,
-                                 dh_qpos d)
+/* One joint by the fast path: O = I * A (O may be I); mod: 0 standard, 1
+ * modified (a constant of each caller); v = (st, ct, sa, ca, d, a) from
+ * joint_values. */
+DH_INLINE int fast_step(const dh_frame_q *I, dh_frame_q *O, unsigned mod, const dh_q30 *v)
 {
     fkq_joint J;
-    const dh_qpos a = len(j->a_q);
-    const unsigned kind = twist_kind(j->sa_q, j->ca_q);
-    const int haslen = (a | d) != 0;
-    fast_prep(&J, st, ct, a, d, kind, 0u, 1u, 0u);
+    const unsigned kind = twist_kind(v[2], v[3]);
+    const int haslen = (v[4] | v[5]) != 0;
+    const int swap = (kind & TW_SWAP) != 0u;
+    fast_prep(&J, v[0], v[1], v[5], v[4], kind, mod, mod ^ 1u, 0u - mod);
     if ((kind & TW_GEN) != 0u) {
-        fast_prep_gen(&J, j);
-        return fast_std_rows_gen(&J, I, O, haslen);
+        J.kca = KQ(v[3]);
+        J.ksa = KQ(v[2]);
+        J.knsa = KQ(-v[2]);
+        return mod ? fast_mod_rows_gen(&J, I, O, haslen) : fast_std_rows_gen(&J, I, O, haslen);
     }
-    if ((kind & TW_SWAP) != 0u) return fast_std_rows(&J, I, O, haslen, 1);
-    return fast_std_rows(&J, I, O, haslen, 0);
+    if (mod) return swap ? fast_mod_rows(&J, I, O, haslen, 1) : fast_mod_rows(&J, I, O, haslen, 0);
+    return swap ? fast_std_rows(&J, I, O, haslen, 1) : fast_std_rows(&J, I, O, haslen, 0);
 }
 
-static FKQ_NOINLINE int fast_mod(const dh_frame_q *I, dh_frame_q *O, dh_q30 st, dh_q30 ct, const dh_joint *j,
-                                 dh_qpos d)
+/* fast_step() for each convention (one copy each, out of the caller's
+ * frame, the convention folded; they call nothing, so the joint's sine
+ * and cosine are computed before, in the caller's smaller frame). */
+static DH_NOINLINE int fast_std(const dh_frame_q *I, dh_frame_q *O, const dh_q30 *v)
 {
-    fkq_joint J;
-    const dh_qpos a = len(j->a_q);
-    const unsigned kind = twist_kind(j->sa_q, j->ca_q);
-    const int haslen = (a | d) != 0;
-    fast_prep(&J, st, ct, a, d, kind, 1u, 0u, 0xFFFFFFFFu);
-    if ((kind & TW_GEN) != 0u) {
-        fast_prep_gen(&J, j);
-        return fast_mod_rows_gen(&J, I, O, haslen);
-    }
-    if ((kind & TW_SWAP) != 0u) return fast_mod_rows(&J, I, O, haslen, 1);
-    return fast_mod_rows(&J, I, O, haslen, 0);
+    return fast_step(I, O, 0u, v);
+}
+
+static DH_NOINLINE int fast_mod(const dh_frame_q *I, dh_frame_q *O, const dh_q30 *v)
+{
+    return fast_step(I, O, 1u, v);
 }
 
 /* The link matrix of joint j (a step applied to the identity, written
- * out). Cannot saturate (file comment): every entry is rounded unchecked. */
-static FKQ_NOINLINE void link_direct(dh_frame_q *A, dh_convention conv, dh_q30 st, dh_q30 ct, const dh_joint *j,
-                                     dh_qpos d)
+ * out; v from joint_values). Cannot saturate: every entry is a
+ * product of two sines/cosines (|.| <= 2^30) or of one and a length, which
+ * rounds into int32 unchecked. */
+static DH_NOINLINE void link_direct(dh_frame_q *A, unsigned mod, const dh_q30 *v)
 {
-    const dh_q30 sa = j->sa_q, ca = j->ca_q;
-    const dh_qpos a = len(j->a_q);
-    if (conv == DH_CONV_STANDARD) {
+    const dh_q30 st = v[0], ct = v[1], sa = v[2], ca = v[3];
+    const dh_qpos d = v[4], a = v[5];
+    if (mod == 0u) {
         /* n = (ct, st, 0), o = ca u + sa z, a = ca z - sa u with u = (-st, ct, 0) */
         A->r[0][0] = ct;
         A->r[0][1] = st;
@@ -781,91 +429,155 @@ static FKQ_NOINLINE void link_direct(dh_frame_q *A, dh_convention conv, dh_q30 s
     }
 }
 
+#endif /* DH_FAST_PATHS */
+
+/* dst = src unless they are the same frame. */
+static DH_NOINLINE void copy_frame(dh_frame_q *dst, const dh_frame_q *src)
+{
+    if (dst != src) *dst = *src;
+}
+
+/* Joint values of joint j at q: v = (sin theta, cos theta, sin alpha,
+ * cos alpha, d, a), d = d + q saturated, lengths with INT32_MIN raised to
+ * -INT32_MAX (the documented one-LSB raise, not an overflow). theta = q +
+ * offset is brought back into int32 by whole turns (exact). Returns
+ * DH_ERR_OVERFLOW when d + q saturated, else 0. */
+DH_INLINE int joint_values(const dh_joint *j, int32_t q, dh_q30 *v)
+{
+    const uint32_t th = (uint32_t)j->theta_q;
+    uint32_t qt = 0u, t;
+    int32_t qd = 0;
+    int64_t qs;
+    int ovf = 0;
+    if (j->type == DH_JOINT_REVOLUTE) qt = (uint32_t)q;
+    else qd = q;
+    /* t = theta + q modulo 2^32; when the sum leaves int32 (both terms of
+     * one sign, t of the other) the true sum is t +- 2^32, and 182 turns
+     * (2^32 - 2^20) back is t + 2^20 when t wrapped negative, t - 2^20
+     * otherwise (the uint32 -> int32 conversion wraps, dh_port.h) */
+    t = th + qt;
+    if (((t ^ th) & (t ^ qt)) >> 31) t += 0xFFF00000u + ((t >> 31) << 21);
+    dh_sincos_q((dh_q16)t, &v[0], &v[1]);
+    v[2] = j->sa_q;
+    v[3] = j->ca_q;
+    qs = (int64_t)j->d_q + qd;
+    v[4] = fkq_len(DH_FAST_PATHS ? fkq_sat32_inline(qs, &ovf) : fkq_sat32(qs, &ovf));
+    v[5] = fkq_len(j->a_q);
+    return ovf;
+}
+
+/* T <- T * A in place, the general step, v = (st, ct, sa, ca, d, a) from
+ * joint_values; mod: 0 standard, 1 modified. Sets *ovf to DH_ERR_OVERFLOW
+ * when an entry saturated. Standard DH turns (n, o) by theta, moves p
+ * by a n + d a, then twists (o, a) by alpha; modified DH twists first,
+ * moves p by a n + d a with the twisted a, then turns. */
+DH_GENERAL_FN void step(dh_frame_q *T, unsigned mod, const dh_q30 *v, int *ovf)
+{
+    int k;
+    turn(T, mod, &v[2u * mod], ovf);
+    for (k = 0; k < 3; k++)
+        T->p[k] = fkq_add_rnd30(T->p[k], MLA(MUL(v[5], T->r[0][k]), v[4], T->r[2][k]), ovf);
+    turn(T, mod ^ 1u, &v[2u * (mod ^ 1u)], ovf);
+}
+
+#if !DH_FAST_PATHS
+/* step() for joint i of r at q (one copy for dh_link_q and the chain):
+ * DH_ERR_OVERFLOW when d + q or an entry saturated, else 0. */
+static DH_NOINLINE int joint_step(dh_frame_q *T, const dh_robot *r, uint32_t i, int32_t q)
+{
+    dh_q30 v[6];
+    int ovf = joint_values(&r->joint[i], q, v);
+    step(T, r->conv != DH_CONV_STANDARD, v, &ovf);
+    return ovf;
+}
+#endif
+
 /* a0 b[0]/2 + a1 b[1]/2 + a2 b[2]/2 (each product halved, floor), exact in
- * 64 bits (|each| <= 2^61). Out of line: keeps mul_frame's frame small. */
-static FKQ_NOINLINE int64_t dot3h(int32_t a0, int32_t a1, int32_t a2, const int32_t *b)
+ * 64 bits (|each| <= 2^61). */
+static DH_NOINLINE int64_t dot3h(int32_t a0, int32_t a1, int32_t a2, const int32_t *b)
 {
     return (MUL(a0, b[0]) >> 1) + (MUL(a1, b[1]) >> 1) + (MUL(a2, b[2]) >> 1);
 }
 
-/* out = A * B, three-term sums with halved products. out may be A (row k
- * of A is read before row k of out is written), not B. */
-static FKQ_NOINLINE void mul_frame(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B, int *ovf)
+/* out = A * B, three-term sums of halved products rounded at bit 29 (not
+ * dh_frame_mul_q, which rounds the exact sum: one LSB apart in rare cases,
+ * so a different status at the int32 edge). out may be A (row k of A is
+ * read before row k of out is written), not B. Returns DH_ERR_OVERFLOW
+ * when an entry saturated, else 0. */
+static DH_NOINLINE int mul_frame(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B)
 {
-    int c, k;
+    int c, k, ovf = 0;
     for (k = 0; k < 3; k++) {
         const int32_t a0 = A->r[0][k], a1 = A->r[1][k], a2 = A->r[2][k], p = A->p[k];
-        for (c = 0; c < 3; c++) out->r[c][k] = rot_h(dot3h(a0, a1, a2, B->r[c]), ovf);
-        out->p[k] = pos_h(p, dot3h(a0, a1, a2, B->p), ovf);
+        for (c = 0; c < 4; c++) {
+            /* columns n, o, a, then p (plus the position of A) */
+            const int32_t *b = c < 3 ? B->r[c] : B->p;
+            int32_t *o = c < 3 ? &out->r[c][k] : &out->p[k];
+            *o = fkq_sat32((c < 3 ? 0 : p) + ((dot3h(a0, a1, a2, b) + HALF28) >> 29), &ovf);
+        }
     }
+    return ovf;
 }
 
 dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A)
 {
-    dh_q30 st, ct;
-    dh_qpos d;
-    int ovf = 0;
     DH_ASSERT(r != NULL);
     DH_ASSERT(A != NULL);
     if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_OVERFLOW;
-    joint_values(&r->joint[i], q, &st, &ct, &d, &ovf);
-    link_direct(A, r->conv, st, ct, &r->joint[i], d);
-    return ovf ? DH_ERR_OVERFLOW : DH_OK;
+#if DH_FAST_PATHS
+    {
+        dh_q30 v[6];
+        const int ovf = joint_values(&r->joint[i], q, v);
+        link_direct(A, r->conv != DH_CONV_STANDARD, v);
+        return (dh_status)ovf;
+    }
+#else
+    dh_frame_identity_q(A);
+    return (dh_status)joint_step(A, r, i, q);
+#endif
 }
 
-/*
- * The chain is accumulated in the caller's memory (frames[i], or T_end
- * when frames is NULL), so this function has no 48-byte local frame and
- * the deepest call chain stays within the stack budget. Nothing is
- * written before the argument checks.
- */
+/* The chain is built in the caller's memory (frames[i], or T_end), from
+ * the base; nothing is written before the argument checks. */
 static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, dh_frame_q *T_end)
 {
-    dh_frame_q *cur;
-    uint32_t i = 0u;
-    int ovf = 0, small;
+    const dh_frame_q *cur = &r->base_q;
+    dh_frame_q *out = T_end;
+    uint32_t i;
+    int ovf = 0;
     DH_ASSERT(r != NULL);
     DH_ASSERT(q != NULL);
-    small = (r->flags & DH_ROBOT_BASE_SMALL_Q) != 0u;
     if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_OVERFLOW;
-
-    cur = frames ? frames : T_end;
-    if (r->flags & DH_ROBOT_BASE_ID_Q) {
-        dh_q30 st, ct;
-        dh_qpos d;
-        joint_values(&r->joint[0], q[0], &st, &ct, &d, &ovf);
-        link_direct(cur, r->conv, st, ct, &r->joint[0], d);
-        i = 1u;
-    } else {
-        *cur = r->base_q;
-    }
-    for (; i < r->n; i++) {
-        dh_q30 st, ct;
-        dh_qpos d;
-        const dh_joint *j = &r->joint[i];
-        /* in: the previous frame (or the base in frames[0]); out: this one */
-        dh_frame_q *out = (frames && i > 0u) ? &frames[i] : cur;
-        joint_values(j, q[i], &st, &ct, &d, &ovf);
-        if (small && FAST_LENGTHS(len(j->a_q), d)) {
-            if (r->conv == DH_CONV_STANDARD) ovf |= fast_std(cur, out, st, ct, j, d);
-            else ovf |= fast_mod(cur, out, st, ct, j, d);
+    for (i = 0u; i < r->n; i++) {
+#if DH_FAST_PATHS
+        dh_q30 v[6];
+#endif
+        if (frames) out = &frames[i];
+#if DH_FAST_PATHS
+        ovf |= joint_values(&r->joint[i], q[i], v);
+        if (i == 0u && (r->flags & DH_ROBOT_BASE_ID_Q) != 0u) {
+            /* identity base: the first link written out */
+            link_direct(out, r->conv != DH_CONV_STANDARD, v);
+        } else if ((r->flags & DH_ROBOT_BASE_SMALL_Q) != 0u && FAST_LENGTHS(v[5], v[4])) {
+            ovf |= (r->conv == DH_CONV_STANDARD) ? fast_std(cur, out, v) : fast_mod(cur, out, v);
         } else {
-            if (out != cur) *out = *cur;
-            if (r->conv == DH_CONV_STANDARD) step_std(out, st, ct, j, d, &ovf);
-            else step_mod(out, st, ct, j, d, &ovf);
+            copy_frame(out, cur);
+            step(out, r->conv != DH_CONV_STANDARD, v, &ovf);
         }
+#else
+        copy_frame(out, cur);
+        ovf |= joint_step(out, r, i, q[i]);
+#endif
         cur = out;
     }
     if (T_end) {
-        if ((r->flags & DH_ROBOT_TOOL_ID_Q) == 0u) mul_frame(T_end, cur, &r->tool_q, &ovf);
-        else if (T_end != cur) *T_end = *cur;
+        if ((r->flags & DH_ROBOT_TOOL_ID_Q) == 0u) ovf |= mul_frame(T_end, cur, &r->tool_q);
+        else copy_frame(T_end, cur);
     }
-    return ovf ? DH_ERR_OVERFLOW : DH_OK;
+    return (dh_status)ovf;
 }
-
-#endif /* DH_SMALL */
 
 dh_status dh_fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *T)
 {

@@ -351,7 +351,7 @@ static DH_NOINLINE uint32_t dh_apply_fast(const dh_frame_q *F, const int32_t *in
 
 /* general path of dh_frame_mul_q: column j of A B is A times column j of
  * [R_B p_B; 0 0 0 1] */
-DH_Q_GENERAL_FN unsigned dh_mul_gen(dh_frame_q *t, const dh_frame_q *A, const dh_frame_q *B)
+DH_GENERAL_FN unsigned dh_mul_gen(dh_frame_q *t, const dh_frame_q *A, const dh_frame_q *B)
 {
     unsigned st = 0u, j;
     for (j = 0; j < 3u; j++) st |= dh_col(&t->r[j][0], A, B->r[j], DH_COL_R);
@@ -377,7 +377,7 @@ dh_status dh_frame_mul_q(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q 
 
 /* general path of dh_frame_inv_q: R' = R^T, p' = -R^T p (rows of R^T are
  * the columns of R), computed into a local (out may be F) */
-DH_Q_GENERAL_FN unsigned dh_inv_gen(dh_frame_q *out, const dh_frame_q *F)
+DH_GENERAL_FN unsigned dh_inv_gen(dh_frame_q *out, const dh_frame_q *F)
 {
     dh_frame_q t;
     unsigned st, i, j;

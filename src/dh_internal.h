@@ -48,6 +48,15 @@
 #define DH_SIZE_NOINLINE DH_NOINLINE
 #endif
 
+/** A general path that a fast path precedes in the default build: out of
+ *  line there (the fast path keeps a short prologue), inlined into its one
+ *  caller when it runs alone (DH_FAST_PATHS 0). */
+#if DH_FAST_PATHS
+#define DH_GENERAL_FN static DH_NOINLINE
+#else
+#define DH_GENERAL_FN DH_INLINE
+#endif
+
 /* ---- constants ------------------------------------------------------------ */
 
 /** 180 / pi and pi / 180, rounded to float. */
@@ -136,15 +145,6 @@ static inline int32_t dh_f32_to_fix_sat(float x, unsigned frac, unsigned *st)
 #endif
 
 /* ---- fixed-point helpers (Q rounding, saturation) ------------------------ */
-
-/** A general path that a fast path precedes in the default build: out of
- *  line there (the fast path keeps a short prologue), inlined into its one
- *  caller when it runs alone (DH_FAST_PATHS 0). */
-#if DH_FAST_PATHS
-#define DH_Q_GENERAL_FN static DH_NOINLINE
-#else
-#define DH_Q_GENERAL_FN DH_INLINE
-#endif
 
 /** 1.0 in Q2.30, and half an LSB of a result taken >> 30. */
 #define DH_Q_ONE30 ((int32_t)0x40000000)
@@ -307,5 +307,24 @@ DH_INLINE void dh_rot_offdiag_f32(dh_mat3_f32 *R, float xy, float xz, float yz, 
     DH_M3(R, 1, 2) = (yz - wx) + 0.0f;
     DH_M3(R, 2, 1) = (yz + wx) + 0.0f;
 }
+
+/** Inlined in the default build (constant arguments such as the DH
+ *  convention fold into each copy), one out-of-line copy in the size-first
+ *  build. */
+#if DH_FAST_PATHS
+#define DH_SPEED_INLINE DH_INLINE
+#else
+#define DH_SPEED_INLINE static DH_NOINLINE
+#endif
+
+/** Unrolls the next loop 3 / 4 times with GCC when not optimising for
+ *  size (constant offsets, no loop counter); nothing otherwise. */
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__OPTIMIZE_SIZE__)
+#define DH_UNROLL3 _Pragma("GCC unroll 3")
+#define DH_UNROLL4 _Pragma("GCC unroll 4")
+#else
+#define DH_UNROLL3
+#define DH_UNROLL4
+#endif
 
 #endif /* DHMATH_SRC_DH_INTERNAL_H */
