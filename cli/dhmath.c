@@ -437,6 +437,8 @@ static int cmd_fk(int argc, char **argv)
         }
         if (o.frames) st = dh_fk_frames_q(&r, q, frames, &Tend);
         else st = dh_fk_q(&r, q, &Tend);
+        if (st == DH_ERR_UNAVAILABLE)
+            return error_msg("fk --fixed: a constant of the robot does not fit the fixed-point formats", NULL);
         if (st == DH_ERR_OVERFLOW)
             return error_msg("overflow: the fixed-point forward kinematics saturates", NULL);
         if (st != DH_OK) return error_msg("fk --fixed", dh_status_str(st));

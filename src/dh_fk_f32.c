@@ -190,8 +190,8 @@ dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
     dh_status st;
     DH_ASSERT(r != NULL);
     DH_ASSERT(A != NULL);
-    if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS || (r->flags & DH_ROBOT_HAS_F32) == 0u)
-        return DH_ERR_ARG;
+    if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_UNAVAILABLE;
     st = joint_values(&r->joint[i], q, v);
     if (st == DH_OK) {
 #if DH_FAST_PATHS
@@ -240,8 +240,8 @@ static DH_NOINLINE dh_status fk_chain(const dh_robot *r, const float *q, dh_mat4
     dh_status st;
     DH_ASSERT(r != NULL);
     DH_ASSERT(q != NULL);
-    if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS || (r->flags & DH_ROBOT_HAS_F32) == 0u)
-        return DH_ERR_ARG;
+    if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_UNAVAILABLE;
     for (i = 0u; i < r->n; i++) {
         st = joint_values(&r->joint[i], q[i], NULL);
         if (st != DH_OK) return st;

@@ -136,7 +136,7 @@ static DH_NOINLINE dh_status ik_args(const ik_ctx *c, size_t work_len)
         return DH_ERR_ARG;
     /* w_rot^2 times pi^2 (the largest orientation term of E) must be finite */
     if (!(p->w_rot > 0.0f) || !dh_isfinite_f32(p->w_rot * p->w_rot * 16.0f)) return DH_ERR_ARG;
-    if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_ARG;
+    if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_UNAVAILABLE;
     if (r->conv != DH_CONV_STANDARD && r->conv != DH_CONV_MODIFIED) return DH_ERR_ARG;
     for (i = 0; i < n; i++)
         if (r->joint[i].type != DH_JOINT_REVOLUTE && r->joint[i].type != DH_JOINT_PRISMATIC)

@@ -160,7 +160,7 @@ static DH_NOINLINE dh_status jac_check(const dh_robot *r, const float *q)
     uint32_t i, n = r->n;
     if (n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     /* float path unavailable (J untouched, also for n == 0) */
-    if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_ARG;
+    if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_UNAVAILABLE;
     if (r->conv != DH_CONV_STANDARD && r->conv != DH_CONV_MODIFIED) return DH_ERR_ARG;
     for (i = 0; i < n; i++) {
         if (!dh_isfinite_f32(q[i])) return DH_ERR_NAN;

@@ -14,6 +14,7 @@ const char *dh_status_str(dh_status st)
     case DH_ERR_NO_CONVERGENCE: return "no convergence";
     case DH_ERR_UNREACHABLE: return "target unreachable";
     case DH_ERR_LIMIT: return "joint limit";
+    case DH_ERR_UNAVAILABLE: return "robot path unavailable";
     default: return "unknown status";
     }
 }

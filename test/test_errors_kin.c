@@ -29,7 +29,8 @@ static void puma(dh_robot *r)
 }
 
 /* Jacobian: NaN/Inf q -> NAN; n > DH_MAX_JOINTS, unknown convention or
- * joint type, float path unavailable -> ARG; J and T_end untouched */
+ * joint type -> ARG; float path unavailable -> UNAVAILABLE; J and T_end
+ * untouched */
 static void kin_jacobian_bad(void)
 {
     dh_robot r, r2;
@@ -73,7 +74,7 @@ static void kin_jacobian_bad(void)
             dh_frame_trans_q(&F, 0, 0, DH_QPOS_ONE);
             DHT_EQ_INT(dh_robot_set_base_q(&r2, &F), DH_OK);
         }
-        DHT_EQ_INT(jac(&r2, q, J, &T), DH_ERR_ARG);
+        DHT_EQ_INT(jac(&r2, q, J, &T), DH_ERR_UNAVAILABLE);
         UNTOUCHED(J);
         UNTOUCHED(T);
         /* ... also with no joints (nothing else would catch the stale base) */
@@ -83,7 +84,7 @@ static void kin_jacobian_bad(void)
             dh_frame_trans_q(&F, 0, 0, DH_QPOS_ONE);
             DHT_EQ_INT(dh_robot_set_tool_q(&r2, &F), DH_OK);
         }
-        DHT_EQ_INT(jac(&r2, q, J, &T), DH_ERR_ARG);
+        DHT_EQ_INT(jac(&r2, q, J, &T), DH_ERR_UNAVAILABLE);
         UNTOUCHED(T);
         /* n == 0 with a valid float path: DH_OK, T_end = base * tool, J not written */
         DHT_EQ_INT(dh_robot_init(&r2, DH_CONV_MODIFIED), DH_OK);
@@ -304,7 +305,7 @@ static void kin_ik_bad_args(void)
         CANARY(q);
         CANARY(res);
     }
-    /* float path unavailable -> ARG (from the Jacobian), untouched */
+    /* float path unavailable -> UNAVAILABLE, untouched */
     r2 = r;
     {
         dh_frame_q F;
@@ -312,7 +313,7 @@ static void kin_ik_bad_args(void)
         F.p[0] = 1;
         DHT_EQ_INT(dh_robot_set_tool_q(&r2, &F), DH_OK);
     }
-    DHT_EQ_INT(dh_ik_f32(&r2, &target, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_ARG);
+    DHT_EQ_INT(dh_ik_f32(&r2, &target, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_UNAVAILABLE);
     UNTOUCHED(q);
     UNTOUCHED(res);
     /* a finite target so far away that the squared error overflows is out

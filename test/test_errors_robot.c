@@ -82,7 +82,7 @@ static void robot_add_joint_bad(void)
 }
 
 /* Constants that do not fit the fixed path: the joint is added, the fixed
- * path is marked unavailable (dh_fk_q -> OVERFLOW, T untouched), the float
+ * path is marked unavailable (dh_fk_q -> UNAVAILABLE, T untouched), the float
  * path is unaffected and correct. */
 static void robot_unrepresentable_fixed_constants(void)
 {
@@ -109,14 +109,14 @@ static void robot_unrepresentable_fixed_constants(void)
         DHT_TRUE((r.flags & DH_ROBOT_Q_NO_JOINT) != 0u);
         DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) != 0u);
         CANARY(Tq);
-        DHT_EQ_INT(dh_fk_q(&r, qq, &Tq), DH_ERR_OVERFLOW);
+        DHT_EQ_INT(dh_fk_q(&r, qq, &Tq), DH_ERR_UNAVAILABLE);
         UNTOUCHED(Tq);
-        DHT_EQ_INT(dh_link_q(&r, 0, 0, &Tq), DH_ERR_OVERFLOW);
+        DHT_EQ_INT(dh_link_q(&r, 0, 0, &Tq), DH_ERR_UNAVAILABLE);
         UNTOUCHED(Tq);
         {
             dh_frame_q frames[2];
             CANARY(frames);
-            DHT_EQ_INT(dh_fk_frames_q(&r, qq, frames, &Tq), DH_ERR_OVERFLOW);
+            DHT_EQ_INT(dh_fk_frames_q(&r, qq, frames, &Tq), DH_ERR_UNAVAILABLE);
             UNTOUCHED(frames);
             UNTOUCHED(Tq);
         }
@@ -201,7 +201,7 @@ static void robot_base_tool_bad(void)
         dh_frame_q T;
         int32_t q[3] = { 0, 0, 0 };
         CANARY(T);
-        DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_OVERFLOW);
+        DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_UNAVAILABLE);
         UNTOUCHED(T);
     }
     /* setting representable frames again restores the fixed path */
@@ -257,7 +257,7 @@ static void robot_check_limits_bad(void)
 }
 
 /* float FK: n == 0 -> ARG; NaN/Inf q -> NAN; q + offset overflowing ->
- * OVERFLOW (T untouched); float path unavailable -> ARG; huge prismatic
+ * OVERFLOW (T untouched); float path unavailable -> UNAVAILABLE; huge prismatic
  * values whose frame is not finite -> OVERFLOW with T written */
 static void robot_fk_f32_bad(void)
 {
@@ -350,9 +350,9 @@ static void robot_fk_f32_bad(void)
     DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, DH_QPOS_ONE, 0, 0, 0), DH_OK);
     q[0] = 0.0f;
     CANARY(T);
-    DHT_EQ_INT(dh_fk_f32(&r, q, &T), DH_ERR_ARG);
+    DHT_EQ_INT(dh_fk_f32(&r, q, &T), DH_ERR_UNAVAILABLE);
     UNTOUCHED(T);
-    DHT_EQ_INT(dh_link_f32(&r, 0, 0.0f, &A), DH_ERR_ARG);
+    DHT_EQ_INT(dh_link_f32(&r, 0, 0.0f, &A), DH_ERR_UNAVAILABLE);
     small_robot(&r, DH_CONV_STANDARD);
     {
         dh_frame_q F;
@@ -362,7 +362,7 @@ static void robot_fk_f32_bad(void)
     }
     DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) == 0u);
     q[0] = 0.0f; q[1] = 0.0f; q[2] = 0.0f;
-    DHT_EQ_INT(dh_fk_f32(&r, q, &T), DH_ERR_ARG);
+    DHT_EQ_INT(dh_fk_f32(&r, q, &T), DH_ERR_UNAVAILABLE);
     UNTOUCHED(T);
 }
 

@@ -487,17 +487,17 @@ static void errors_and_saturation(void)
     DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 1e6f, 0, 0, 0), DH_OK);
     DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) == 0u);
     DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) != 0u);
-    DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_UNAVAILABLE);
     DHT_EQ_INT(((unsigned char *)&T)[0], 0x5a);
     memset(frames, 0x5a, sizeof frames);
-    DHT_EQ_INT(dh_fk_frames_q(&r, q, frames, &T), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_fk_frames_q(&r, q, frames, &T), DH_ERR_UNAVAILABLE);
     DHT_EQ_INT(((unsigned char *)frames)[0], 0x5a);
-    DHT_EQ_INT(dh_link_q(&r, 0, 0, &T), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_link_q(&r, 0, 0, &T), DH_ERR_UNAVAILABLE);
     DHT_EQ_INT(dh_link_q(&r, 1, 0, &T), DH_ERR_ARG);
     /* alpha beyond +-32768 deg does not fit dh_q16 either */
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
     DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, 40000.0f, 0), DH_OK);
-    DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_UNAVAILABLE);
 
     /* chain longer than the Q range (two links of 0.6 x the range each):
      * saturates and reports */

@@ -58,8 +58,8 @@ extern "C" {
  *           then the tool is applied).
  * @return DH_OK (also for n == 0: J has no entries, T_end = base * tool);
  *         DH_ERR_NAN for a non-finite q (J, T_end untouched);
- *         DH_ERR_ARG for n > DH_MAX_JOINTS, the float path unavailable
- *         (DH_ROBOT_HAS_F32 clear), unknown convention or joint type
+ *         DH_ERR_UNAVAILABLE when the float path is unavailable
+ *         (DH_ROBOT_HAS_F32 clear); DH_ERR_ARG for n > DH_MAX_JOINTS, unknown convention or joint type
  *         (J, T_end untouched); DH_ERR_OVERFLOW when q + offset (theta
  *         offset of a revolute joint, d of a prismatic one) overflows to
  *         infinity (checked first: J, T_end untouched) or when an entry of
@@ -196,7 +196,8 @@ void dh_ik_params_default(dh_ik_params *p);
  *   0 iterations, err_pos the distance or FLT_MAX); DH_ERR_SINGULAR normal
  *   matrix not factorable (non-finite J). With q, res untouched: DH_ERR_ARG
  *   (n, work, work_len, max_iter, mask, tolerances, w_rot <= 0, non-finite
- *   or > 4.6e18, no float path, bad convention/joint type); DH_ERR_NAN
+ *   or > 4.6e18, bad convention/joint type); DH_ERR_UNAVAILABLE (no float
+ *   path); DH_ERR_NAN
  *   (target, q0); DH_ERR_NOT_RIGID (target bottom row, driven target
  *   rotation, end rotation not one); DH_ERR_OVERFLOW (FK or E of the start).
  */

@@ -140,7 +140,7 @@ dh_status dh_robot_init(dh_robot *r, dh_convention conv);
  * theta (deg Q16.16). When a constant does not fit its Q format (|a|, |d| >=
  * 2^(31-DH_QPOS_FRAC), |alpha|, |theta| >= 32768 deg) the joint is still added,
  * the fixed path is marked unavailable (DH_ROBOT_Q_NO_JOINT, dh_fk_q() then
- * returns DH_ERR_OVERFLOW) and the float path is unaffected. Limits: none.
+ * returns DH_ERR_UNAVAILABLE) and the float path is unaffected. Limits: none.
  * @param r     robot (not NULL)
  * @param type  DH_JOINT_REVOLUTE or DH_JOINT_PRISMATIC
  * @param a     link length (length unit)
@@ -158,7 +158,7 @@ dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float a, float
  *
  * The float parameters of the joint stay at the 0 written by
  * dh_robot_init() and the float path is marked unavailable (DH_ROBOT_F32_NO_JOINT: dh_fk_f32() returns
- * DH_ERR_ARG). sin/cos(alpha) come from dh_sincos_q(alpha_deg). Limits: none.
+ * DH_ERR_UNAVAILABLE). sin/cos(alpha) come from dh_sincos_q(alpha_deg). Limits: none.
  * @param r     robot (not NULL)
  * @param type  DH_JOINT_REVOLUTE or DH_JOINT_PRISMATIC
  * @param a, d  lengths, dh_qpos (DH_QPOS_FRAC fraction bits), any value
@@ -234,8 +234,8 @@ dh_status dh_robot_check_limits_q(const dh_robot *r, const int32_t *q);
  * @param i joint index, 0 <= i < n
  * @param q degrees (R) or length (P), finite.
  * @param A output (bottom row 0 0 0 1); untouched on error.
- * @return DH_OK; DH_ERR_ARG when i >= n, n > DH_MAX_JOINTS or the float
- *         path is unavailable;
+ * @return DH_OK; DH_ERR_ARG when i >= n or n > DH_MAX_JOINTS;
+ *         DH_ERR_UNAVAILABLE when the float path is unavailable;
  *         DH_ERR_NAN for non-finite q; DH_ERR_OVERFLOW when q + offset
  *         overflows to infinity. On error A is untouched.
  */
@@ -252,8 +252,8 @@ dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A);
  * @param r robot (not NULL), n >= 1
  * @param q n joint values (not NULL); must not alias T; T must not overlap *r (the chain is built in T)
  * @param T end frame; bottom row written as exactly 0 0 0 1
- * @return DH_OK; DH_ERR_ARG when n == 0, n > DH_MAX_JOINTS or the float
- *         path is unavailable (T untouched); DH_ERR_NAN when any q is NaN/Inf (T untouched);
+ * @return DH_OK; DH_ERR_ARG when n == 0 or n > DH_MAX_JOINTS, DH_ERR_UNAVAILABLE
+ *         when the float path is unavailable (T untouched); DH_ERR_NAN when any q is NaN/Inf (T untouched);
  *         DH_ERR_OVERFLOW when q + offset overflows to infinity (T
  *         untouched) or when an entry of the result is not finite (huge
  *         prismatic values, base or tool; T written).
@@ -277,8 +277,8 @@ dh_status dh_fk_frames_f32(const dh_robot *r, const float *q, dh_mat4_f32 *frame
  * @brief Link matrix A_i of joint i at Q joint value q (dh_q16 deg for R,
  *        dh_qpos for P).
  * @return DH_OK; DH_ERR_ARG when i >= n or n > DH_MAX_JOINTS (A untouched);
- *         DH_ERR_OVERFLOW when the fixed path
- *         is unavailable (A untouched) or d + q saturates (A written with the
+ *         DH_ERR_UNAVAILABLE when the fixed path is unavailable (A
+ *         untouched); DH_ERR_OVERFLOW when d + q saturates (A written with the
  *         saturated d).
  */
 dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A);
@@ -296,9 +296,9 @@ dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A);
  * @param q n joint values (not NULL): dh_q16 degrees (R) or dh_qpos (P)
  * @param T output, must not alias q or any part of *r.
  * @return DH_OK; DH_ERR_ARG when n == 0 or n > DH_MAX_JOINTS (T
- *         untouched); DH_ERR_OVERFLOW
- *         when the fixed path is unavailable (constants did not fit: T
- *         untouched) or when a position or rotation entry saturated (T
+ *         untouched); DH_ERR_UNAVAILABLE when the fixed path is
+ *         unavailable (constants did not fit: T untouched); DH_ERR_OVERFLOW
+ *         when a position or rotation entry saturated (T
  *         written with the saturated values).
  */
 dh_status dh_fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *T);

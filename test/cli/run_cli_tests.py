@@ -557,6 +557,16 @@ def group_robotfile(seed, tmp):
     path = os.path.join(tmp, 'missing.dh')
     rc, out, err = run(['fk', path, '0'])
     check(rc == 2 and out == '' and 'cannot open' in err, 'missing robot file: %r' % err)
+    # a length beyond Q16.16 (40000 units): the float path works, the fixed
+    # path is unavailable and says why
+    path = os.path.join(tmp, 'big.dh')
+    with open(path, 'w') as f:
+        f.write('convention standard\njoint R a=40000 d=0 alpha=0\n')
+    rc, out, err = run(['fk', path, '0'])
+    check(rc == 0, 'fk on a robot with a = 40000: rc %d %r' % (rc, err))
+    rc, out, err = run(['fk', '--fixed', path, '0'])
+    check(rc == 2 and out == '' and 'does not fit the fixed-point formats' in err,
+          'fk --fixed on a robot with a = 40000: rc %d out %r err %r' % (rc, out, err))
 
     rng = random.Random(seed)
     good = os.path.join(tmp, 'good.dh')
