@@ -86,6 +86,18 @@ DH_INLINE int dh_isfinite_f32(float x)
 #endif
 }
 
+/** 1 if v[0..len-1] are all finite: the exponent fields tested on the bits
+ *  (no float compare per element, so the same cost with or without an FPU). */
+DH_INLINE int dh_allfinite_f32(const float *v, uint32_t len)
+{
+    uint32_t k, u, bad = 0u;
+    for (k = 0; k < len; k++) {
+        (void)memcpy(&u, &v[k], sizeof u);
+        bad |= (uint32_t)((u & 0x7F800000u) == 0x7F800000u);
+    }
+    return bad == 0u;
+}
+
 /* ---- trig and robot description helpers --------------------------------- */
 
 /**

@@ -104,11 +104,7 @@ static DH_NOINLINE void jac_tool(const dh_robot *r, float *F)
 /* 1 when v[0..len-1] are all finite. */
 static DH_NOINLINE int jac_all_finite(const float *v, uint32_t len)
 {
-    uint32_t k;
-    int fin = 1;
-    for (k = 0; k < len; k++)
-        if (!dh_isfinite_f32(v[k])) fin = 0;
-    return fin;
+    return dh_allfinite_f32(v, len);
 }
 
 /* Complete the columns of J with the end point F's p (cross products). */
