@@ -52,48 +52,40 @@ void dh_mat4_trans_f32(dh_mat4_f32 *T, float x, float y, float z)
 static dh_status dh_rotk(dh_mat4_f32 *T, float deg, int axis)
 {
     float k[3] = {0.0f, 0.0f, 0.0f};
+#if DH_FAST_PATHS
+    /* finite deg: the same matrix written directly, the rotation in the
+     * plane (i, j) = (axis + 1, axis + 2) mod 3; 0 - s is never -0 */
+    if (dh_isfinite_f32(deg)) {
+        const int i = (axis == 2) ? 0 : axis + 1, j = (i == 2) ? 0 : i + 1;
+        float s, c;
+        DH_ASSERT(T != NULL);
+        (void)dh_sincos_f32(deg, &s, &c);
+        s += 0.0f;
+        c += 0.0f;
+        dh_set_identity(T);
+        T->m[i][i] = c;
+        T->m[i][j] = s;
+        T->m[j][i] = 0.0f - s;
+        T->m[j][j] = c;
+        return DH_OK;
+    }
+#endif
     k[axis] = 1.0f;
     return dh_mat4_rot_axis_f32(T, k[0], k[1], k[2], deg);
 }
 
-#if DH_FAST_PATHS
-/* The same matrix written directly for finite deg: the plane (i, j) of the
- * rotation, i = axis + 1 and j = axis + 2 (mod 3); 0 - s is never -0. */
-DH_INLINE dh_status dh_rotk_fast(dh_mat4_f32 *T, float deg, int i, int j)
-{
-    float s, c;
-    DH_ASSERT(T != NULL);
-    (void)dh_sincos_f32(deg, &s, &c);
-    s += 0.0f;
-    c += 0.0f;
-    dh_set_identity(T);
-    T->m[i][i] = c;
-    T->m[i][j] = s;
-    T->m[j][i] = 0.0f - s;
-    T->m[j][j] = c;
-    return DH_OK;
-}
-#define DH_ROTK_FAST(T, deg, i, j) \
-    if (dh_isfinite_f32(deg)) return dh_rotk_fast(T, deg, i, j)
-#else
-#define DH_ROTK_FAST(T, deg, i, j) (void)0
-#endif
-
 dh_status dh_mat4_rotx_f32(dh_mat4_f32 *T, float deg)
 {
-    DH_ROTK_FAST(T, deg, 1, 2);
     return dh_rotk(T, deg, 0);
 }
 
 dh_status dh_mat4_roty_f32(dh_mat4_f32 *T, float deg)
 {
-    DH_ROTK_FAST(T, deg, 2, 0);
     return dh_rotk(T, deg, 1);
 }
 
 dh_status dh_mat4_rotz_f32(dh_mat4_f32 *T, float deg)
 {
-    DH_ROTK_FAST(T, deg, 0, 1);
     return dh_rotk(T, deg, 2);
 }
 
