@@ -115,7 +115,7 @@ dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, flo
         x = kx / m;
         y = ky / m;
         w = kz / m;
-        len = sqrtf(x * x + y * y + w * w);
+        len = dh_sqrtf_(x * x + y * y + w * w);
         x /= len;
         y /= len;
         w /= len;
