@@ -52,6 +52,24 @@ void dh_mat4_trans_f32(dh_mat4_f32 *T, float x, float y, float z)
 static dh_status dh_rotk(dh_mat4_f32 *T, float deg, int axis)
 {
     float k[3] = {0.0f, 0.0f, 0.0f};
+#if DH_FAST_PATHS
+    /* finite deg: the same matrix written directly, the rotation in the
+     * plane (i, j) = (axis + 1, axis + 2) mod 3; 0 - s is never -0 */
+    if (dh_isfinite_f32(deg)) {
+        const int i = (axis == 2) ? 0 : axis + 1, j = (i == 2) ? 0 : i + 1;
+        float s, c;
+        DH_ASSERT(T != NULL);
+        (void)dh_sincos_f32(deg, &s, &c);
+        s += 0.0f;
+        c += 0.0f;
+        dh_set_identity(T);
+        T->m[i][i] = c;
+        T->m[i][j] = s;
+        T->m[j][i] = 0.0f - s;
+        T->m[j][j] = c;
+        return DH_OK;
+    }
+#endif
     k[axis] = 1.0f;
     return dh_mat4_rot_axis_f32(T, k[0], k[1], k[2], deg);
 }
@@ -86,6 +104,51 @@ dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, flo
     float k[4], m = 0.0f, len = 0.0f, s, c, v, z = 0.0f, x, y, w, p0;
     int i, j, a, b, t;
     DH_ASSERT(T != NULL);
+#if DH_FAST_PATHS
+    /* finite input, non-zero axis: eq. 1.70 written out, same operations */
+    m = fabsf(kx);
+    if (fabsf(ky) > m) m = fabsf(ky);
+    if (fabsf(kz) > m) m = fabsf(kz);
+    if (dh_isfinite_f32(kx) && dh_isfinite_f32(ky) && dh_isfinite_f32(kz) &&
+        dh_isfinite_f32(deg) && m >= FLT_MIN) {
+        float x2, y2, z2, xyv, xzv, yzv;
+        x = kx / m;
+        y = ky / m;
+        w = kz / m;
+        len = dh_sqrtf_(x * x + y * y + w * w);
+        x /= len;
+        y /= len;
+        w /= len;
+        (void)dh_sincos_f32(deg, &s, &c);
+        s += 0.0f;
+        c += 0.0f;
+        v = 1.0f - c;
+        x2 = x * x;
+        y2 = y * y;
+        z2 = w * w;
+        xyv = x * y * v;
+        xzv = x * w * v;
+        yzv = y * w * v;
+        T->m[0][0] = dh_rot_diag(x2, y2 + z2, v, c);
+        T->m[0][1] = (xyv + w * s) + 0.0f;
+        T->m[0][2] = (xzv - y * s) + 0.0f;
+        T->m[0][3] = 0.0f;
+        T->m[1][0] = (xyv - w * s) + 0.0f;
+        T->m[1][1] = dh_rot_diag(y2, x2 + z2, v, c);
+        T->m[1][2] = (yzv + x * s) + 0.0f;
+        T->m[1][3] = 0.0f;
+        T->m[2][0] = (xzv + y * s) + 0.0f;
+        T->m[2][1] = (yzv - x * s) + 0.0f;
+        T->m[2][2] = dh_rot_diag(z2, x2 + y2, v, c);
+        T->m[2][3] = 0.0f;
+        T->m[3][0] = 0.0f;
+        T->m[3][1] = 0.0f;
+        T->m[3][2] = 0.0f;
+        T->m[3][3] = 1.0f;
+        return DH_OK;
+    }
+    m = 0.0f;
+#endif
     k[0] = kx;
     k[1] = ky;
     k[2] = kz;
@@ -364,13 +427,43 @@ void dh_mat4_apply_point_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3
 
 void dh_mat4_apply_dir_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
 {
+#if DH_FAST_PATHS
+    float x, y, z;
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
+    x = u->x;
+    y = u->y;
+    z = u->z;
+    v->x = T->m[0][0] * x + T->m[1][0] * y + T->m[2][0] * z;
+    v->y = T->m[0][1] * x + T->m[1][1] * y + T->m[2][1] * z;
+    v->z = T->m[0][2] * x + T->m[1][2] * y + T->m[2][2] * z;
+    return;
+#endif
     dh_apply3(T, u, v, 3);
 }
+
+#if DH_FAST_PATHS
+/* rows 0..3 of T (x y z w)^T written out, for the fast paths */
+#define DH_VEC4_ROWS(T, x, y, z, w, o0, o1, o2, o3)                                       \
+    do {                                                                                  \
+        (o0) = (T)->m[0][0] * (x) + (T)->m[1][0] * (y) + (T)->m[2][0] * (z) + (T)->m[3][0] * (w); \
+        (o1) = (T)->m[0][1] * (x) + (T)->m[1][1] * (y) + (T)->m[2][1] * (z) + (T)->m[3][1] * (w); \
+        (o2) = (T)->m[0][2] * (x) + (T)->m[1][2] * (y) + (T)->m[2][2] * (z) + (T)->m[3][2] * (w); \
+        (o3) = (T)->m[0][3] * (x) + (T)->m[1][3] * (y) + (T)->m[2][3] * (z) + (T)->m[3][3] * (w); \
+    } while (0)
+#endif
 
 void dh_mat4_apply_vec4_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec4_f32 *v)
 {
     float in[4], o[4];
     DH_ASSERT(T != NULL && u != NULL && v != NULL);
+#if DH_FAST_PATHS
+    in[0] = u->x;
+    in[1] = u->y;
+    in[2] = u->z;
+    in[3] = u->w;
+    DH_VEC4_ROWS(T, in[0], in[1], in[2], in[3], v->x, v->y, v->z, v->w);
+    return;
+#endif
     in[0] = u->x;
     in[1] = u->y;
     in[2] = u->z;
@@ -404,6 +497,21 @@ dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, 
     in[1] = u->y;
     in[2] = u->z;
     in[3] = u->w;
+#if DH_FAST_PATHS
+    /* finite h with w != 0 and finite quotients; the general path below
+     * recomputes the same h and classifies everything else */
+    DH_VEC4_ROWS(T, in[0], in[1], in[2], in[3], h[0], h[1], h[2], h[3]);
+    if (dh_isfinite_f32(h[0]) && dh_isfinite_f32(h[1]) && dh_isfinite_f32(h[2]) &&
+        dh_isfinite_f32(h[3]) && h[3] != 0.0f) {
+        const float x = h[0] / h[3], y = h[1] / h[3], w = h[2] / h[3];
+        if (dh_isfinite_f32(x) && dh_isfinite_f32(y) && dh_isfinite_f32(w)) {
+            v->x = x + 0.0f;
+            v->y = y + 0.0f;
+            v->z = w + 0.0f;
+            return DH_OK;
+        }
+    }
+#endif
     dh_lin(T, in, h, 4);
     for (i = 0; i < 4; i++) {
         z += h[i] * 0.0f;
@@ -432,6 +540,13 @@ void dh_plane_mul_f32(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv, dh_plane_f
     p[1] = P->b;
     p[2] = P->c;
     p[3] = P->d;
+#if DH_FAST_PATHS
+    Q->a = p[0] * Tinv->m[0][0] + p[1] * Tinv->m[0][1] + p[2] * Tinv->m[0][2] + p[3] * Tinv->m[0][3];
+    Q->b = p[0] * Tinv->m[1][0] + p[1] * Tinv->m[1][1] + p[2] * Tinv->m[1][2] + p[3] * Tinv->m[1][3];
+    Q->c = p[0] * Tinv->m[2][0] + p[1] * Tinv->m[2][1] + p[2] * Tinv->m[2][2] + p[3] * Tinv->m[2][3];
+    Q->d = p[0] * Tinv->m[3][0] + p[1] * Tinv->m[3][1] + p[2] * Tinv->m[3][2] + p[3] * Tinv->m[3][3];
+    return;
+#endif
     for (j = 0; j < 4; j++) {
         float acc = p[0] * Tinv->m[j][0];
         for (k = 1; k < 4; k++) acc += p[k] * Tinv->m[j][k];

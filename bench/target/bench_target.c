@@ -193,6 +193,10 @@ static int32_t bt_qq[BT_NSET][6];
 static dh_robot bt_puma_m, bt_puma_mm;
 static float bt_J[36];
 static uint32_t bt_status;   /* OR of every status returned in the timed loops */
+static dh_vec4_f32 bt_p4[BT_NSET], bt_v4out;   /* homogeneous points, w in [0.5, 2) */
+static dh_plane_f32 bt_pl[BT_NSET], bt_plout;
+static float bt_fl[BT_NSET];                   /* focal lengths in [0.5, 2) */
+static int bt_axis[BT_NSET];                   /* 0, 1, 2, 0, ... */
 
 static uint32_t bt_rng = 0x2545F491u;
 
@@ -269,6 +273,16 @@ static uint32_t bt_inputs(void)
         bt_pts[k].x = bt_uniform(-1.0f, 1.0f);
         bt_pts[k].y = bt_uniform(-1.0f, 1.0f);
         bt_pts[k].z = bt_uniform(-1.0f, 1.0f);
+        bt_p4[k].x = bt_uniform(-1.0f, 1.0f);
+        bt_p4[k].y = bt_uniform(-1.0f, 1.0f);
+        bt_p4[k].z = bt_uniform(-1.0f, 1.0f);
+        bt_p4[k].w = bt_uniform(0.5f, 2.0f);
+        bt_pl[k].a = bt_uniform(-1.0f, 1.0f);
+        bt_pl[k].b = bt_uniform(-1.0f, 1.0f);
+        bt_pl[k].c = bt_uniform(-1.0f, 1.0f);
+        bt_pl[k].d = bt_uniform(-1.0f, 1.0f);
+        bt_fl[k] = bt_uniform(0.5f, 2.0f);
+        bt_axis[k] = (int)(k % 3u);
         /* fixed frames in mm (positions up to 1000 mm) */
         st |= bt_rigid(&T, 1000.0f);
         st |= (uint32_t)dh_frame_from_mat4_q(&bt_FA[k], &T);
@@ -341,6 +355,34 @@ static BT_NOIPA void z_mat_point(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_
 {
     (void)T; (void)u; (void)v;
 }
+static BT_NOIPA dh_status z_mat_rot1(dh_mat4_f32 *T, float deg)
+{
+    (void)T; (void)deg;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_mat_rot_axis(dh_mat4_f32 *T, float kx, float ky, float kz, float deg)
+{
+    (void)T; (void)kx; (void)ky; (void)kz; (void)deg;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_mat_persp(dh_mat4_f32 *T, int axis, float f)
+{
+    (void)T; (void)axis; (void)f;
+    return DH_OK;
+}
+static BT_NOIPA void z_mat_vec4(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec4_f32 *v)
+{
+    (void)T; (void)u; (void)v;
+}
+static BT_NOIPA dh_status z_mat_point_h(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec3_f32 *v)
+{
+    (void)T; (void)u; (void)v;
+    return DH_OK;
+}
+static BT_NOIPA void z_plane_mul(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv, dh_plane_f32 *Q)
+{
+    (void)P; (void)Tinv; (void)Q;
+}
 static BT_NOIPA dh_status z_frame_mul(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B)
 {
     (void)out; (void)A; (void)B;
@@ -380,6 +422,15 @@ static BT_NOIPA dh_status z_jacobian(const dh_robot *r, const float *q, float *J
 #define B_inv_rigid(F) F(&bt_out, &bt_A[BT_IA(i)])
 #define B_inv(F) bt_status |= (uint32_t)F(&bt_out, &bt_A[BT_IA(i)])
 #define B_apply_point(F) F(&bt_A[BT_IA(i)], &bt_pts[BT_IB(i)], &bt_vout)
+#define B_rotx(F) bt_status |= (uint32_t)F(&bt_out, bt_ang_f[i & (BT_NANG - 1u)])
+#define B_rot_axis(F)                                                                      \
+    bt_status |= (uint32_t)F(&bt_out, bt_pts[BT_IA(i)].x, bt_pts[BT_IA(i)].y, bt_pts[BT_IA(i)].z, \
+                             bt_ang_f[i & (BT_NANG - 1u)])
+#define B_persp(F) bt_status |= (uint32_t)F(&bt_out, bt_axis[BT_IB(i)], bt_fl[BT_IA(i)])
+#define B_apply_dir(F) F(&bt_A[BT_IA(i)], &bt_pts[BT_IB(i)], &bt_vout)
+#define B_apply_vec4(F) F(&bt_A[BT_IA(i)], &bt_p4[BT_IB(i)], &bt_v4out)
+#define B_apply_point_h(F) bt_status |= (uint32_t)F(&bt_A[BT_IA(i)], &bt_p4[BT_IB(i)], &bt_vout)
+#define B_plane_mul(F) F(&bt_pl[BT_IB(i)], &bt_A[BT_IA(i)], &bt_plout)
 #define B_frame_mul(F) bt_status |= (uint32_t)F(&bt_Fout, &bt_FA[BT_IA(i)], &bt_FB[BT_IB(i)])
 #define B_frame_inv(F) bt_status |= (uint32_t)F(&bt_Fout, &bt_FA[BT_IA(i)])
 #define B_frame_point(F) bt_status |= (uint32_t)F(&bt_FA[BT_IA(i)], &bt_ptq[BT_IB(i)], &bt_vq)
@@ -398,6 +449,13 @@ BT_PAIR(mul, dh_mat4_mul_f32, z_mat_mul)
 BT_PAIR(inv_rigid, dh_mat4_inv_rigid_f32, z_mat_inv_rigid)
 BT_PAIR(inv, dh_mat4_inv_f32, z_mat_inv)
 BT_PAIR(apply_point, dh_mat4_apply_point_f32, z_mat_point)
+BT_PAIR(rotx, dh_mat4_rotx_f32, z_mat_rot1)
+BT_PAIR(rot_axis, dh_mat4_rot_axis_f32, z_mat_rot_axis)
+BT_PAIR(persp, dh_mat4_persp_f32, z_mat_persp)
+BT_PAIR(apply_dir, dh_mat4_apply_dir_f32, z_mat_point)
+BT_PAIR(apply_vec4, dh_mat4_apply_vec4_f32, z_mat_vec4)
+BT_PAIR(apply_point_h, dh_mat4_apply_point_h_f32, z_mat_point_h)
+BT_PAIR(plane_mul, dh_plane_mul_f32, z_plane_mul)
 BT_PAIR(frame_mul, dh_frame_mul_q, z_frame_mul)
 BT_PAIR(frame_inv, dh_frame_inv_q, z_frame_inv)
 BT_PAIR(frame_point, dh_frame_apply_point_q, z_frame_point)
@@ -422,6 +480,13 @@ static const bt_op bt_ops_dh[] = {
     BT_OPD("dh_mat4_inv_rigid_f32", inv_rigid, "z_mat_inv_rigid", 1024u),
     BT_OPD("dh_mat4_inv_f32", inv, "z_mat_inv", 1024u),
     BT_OPD("dh_mat4_apply_point_f32", apply_point, "z_mat_point", 1024u),
+    BT_OPD("dh_mat4_rotx_f32", rotx, "z_mat_rot1", 1024u),
+    BT_OPD("dh_mat4_rot_axis_f32", rot_axis, "z_mat_rot_axis", 1024u),
+    BT_OPD("dh_mat4_persp_f32", persp, "z_mat_persp", 1024u),
+    BT_OPD("dh_mat4_apply_dir_f32", apply_dir, "z_mat_point", 1024u),
+    BT_OPD("dh_mat4_apply_vec4_f32", apply_vec4, "z_mat_vec4", 1024u),
+    BT_OPD("dh_mat4_apply_point_h_f32", apply_point_h, "z_mat_point_h", 1024u),
+    BT_OPD("dh_plane_mul_f32", plane_mul, "z_plane_mul", 1024u),
     BT_OPD("dh_frame_mul_q", frame_mul, "z_frame_mul", 1024u),
     BT_OPD("dh_frame_inv_q", frame_inv, "z_frame_inv", 1024u),
     BT_OPD("dh_frame_apply_point_q", frame_point, "z_frame_point", 1024u),
