@@ -79,7 +79,7 @@ DH_INLINE int dh_isfinite_f32(float x)
 {
 #if DH_SOFT_FLOAT
     uint32_t u;
-    (void)memcpy(&u, &x, sizeof u);
+    memcpy(&u, &x, sizeof u);
     return (u & 0x7F800000u) != 0x7F800000u;
 #else
     return (x - x) == 0.0f;
@@ -90,12 +90,14 @@ DH_INLINE int dh_isfinite_f32(float x)
  *  (no float compare per element, so the same cost with or without an FPU). */
 DH_INLINE int dh_allfinite_f32(const float *v, uint32_t len)
 {
-    uint32_t k, u, bad = 0u;
+    uint32_t k, u;
+    int fin = 1;
     for (k = 0; k < len; k++) {
-        (void)memcpy(&u, &v[k], sizeof u);
-        bad |= (uint32_t)((u & 0x7F800000u) == 0x7F800000u);
+        float x = v[k];
+        memcpy(&u, &x, sizeof u);
+        if ((u & 0x7F800000u) == 0x7F800000u) fin = 0;
     }
-    return bad == 0u;
+    return fin;
 }
 
 /* ---- trig and robot description helpers --------------------------------- */
