@@ -210,8 +210,8 @@ static void build(dh_robot *r, const bench_dh_robot *d, double scale)
     unsigned i;
     int ok = dh_robot_init(r, DH_CONV_STANDARD) == DH_OK;
     for (i = 0; i < d->n && ok; i++)
-        ok = dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, (float)(d->j[i].a * scale), (float)(d->j[i].d * scale),
-                                    (float)d->j[i].alpha_deg, (float)d->j[i].theta_deg) == DH_OK;
+        ok = dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, (float)d->j[i].theta_deg, (float)(d->j[i].d * scale),
+                                    (float)(d->j[i].a * scale), (float)d->j[i].alpha_deg) == DH_OK;
     if (!ok || (r->flags & DH_ROBOT_HAS_Q) == 0u) {
         fprintf(stderr, "cannot build %s\n", d->name);
         exit(1);

@@ -123,42 +123,42 @@ BENCH_NOINLINE void bw_fix16_sin_cos(uint32_t i)
 BENCH_NOINLINE void bw_dh_mul_affine(uint32_t i)
 {
     i &= BENCH_MASK;
-    dh_mat4_mul_affine_f32(&out_M[i], &in_A[i], &in_B[i]);
+    dh_mat4_mul_affine_f32(&in_A[i], &in_B[i], &out_M[i]);
     bench_sink_f = out_M[i].m[3][0];
 }
 
 BENCH_NOINLINE void bw_dh_mul(uint32_t i)
 {
     i &= BENCH_MASK;
-    dh_mat4_mul_f32(&out_M[i], &in_A[i], &in_B[i]);
+    dh_mat4_mul_f32(&in_A[i], &in_B[i], &out_M[i]);
     bench_sink_f = out_M[i].m[3][0];
 }
 
 BENCH_NOINLINE void bw_dh_inv_rigid(uint32_t i)
 {
     i &= BENCH_MASK;
-    dh_mat4_inv_rigid_f32(&out_M[i], &in_A[i]);
+    dh_mat4_inv_rigid_f32(&in_A[i], &out_M[i]);
     bench_sink_f = out_M[i].m[3][0];
 }
 
 BENCH_NOINLINE void bw_dh_inv(uint32_t i)
 {
     i &= BENCH_MASK;
-    out_st[i] = dh_mat4_inv_f32(&out_M[i], &in_A[i]);
+    out_st[i] = dh_mat4_inv_f32(&in_A[i], &out_M[i]);
     bench_sink_f = out_M[i].m[3][0];
 }
 
 BENCH_NOINLINE void bw_dh_frame_mul_q(uint32_t i)
 {
     i &= BENCH_MASK;
-    out_st[i] = dh_frame_mul_q(&out_Fq[i], &in_Aq[i], &in_Bq[i]);
+    out_st[i] = dh_frame_mul_q(&in_Aq[i], &in_Bq[i], &out_Fq[i]);
     bench_sink_i = out_Fq[i].p[0];
 }
 
 BENCH_NOINLINE void bw_dh_frame_inv_q(uint32_t i)
 {
     i &= BENCH_MASK;
-    out_st[i] = dh_frame_inv_q(&out_Fq[i], &in_Aq[i]);
+    out_st[i] = dh_frame_inv_q(&in_Aq[i], &out_Fq[i]);
     bench_sink_i = out_Fq[i].p[0];
 }
 
@@ -304,8 +304,8 @@ static int build_puma(dh_robot *r, double scale)
     if (dh_robot_init(r, DH_CONV_STANDARD) != DH_OK) return 0;
     for (i = 0; i < bench_puma560.n; i++) {
         const bench_dh_row *j = &bench_puma560.j[i];
-        if (dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, (float)(j->a * scale), (float)(j->d * scale),
-                                   (float)j->alpha_deg, (float)j->theta_deg) != DH_OK)
+        if (dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, (float)j->theta_deg, (float)(j->d * scale),
+                                   (float)(j->a * scale), (float)j->alpha_deg) != DH_OK)
             return 0;
     }
     return 1;
@@ -499,8 +499,8 @@ int main(int argc, char **argv)
 #if BENCH_HAVE_CGLM
     add_op("glm_inv_tr", "inv_rigid", "cglm", "glm_inv_tr (in place, SSE2)", bw_glm_inv_tr);
 #endif
-    add_op("dh_frame_inv_q", "inv_rigid", "dhmath", "dh_frame_inv_q (fixed point, for information)", bw_dh_frame_inv_q);
-    add_op("dh_inv", "inv_general", "dhmath", "dh_mat4_inv_f32 (general, reports singularity)", bw_dh_inv);
+    add_op("dh_frame_inv_q", "inv_rigid", "dhmath", "dh_frame_inv_q (for information, fixed point)", bw_dh_frame_inv_q);
+    add_op("dh_inv", "inv_general", "dhmath", "dh_mat4_inv_f32 (reports singularity, general)", bw_dh_inv);
 #if BENCH_HAVE_CGLM
     add_op("glm_mat4_inv", "inv_general", "cglm", "glm_mat4_inv (SSE2, no singularity report)", bw_glm_mat4_inv);
 #else

@@ -203,7 +203,7 @@ static int multiply_f(parser *p, const dh_mat4_f32 *t, size_t pos, const char *w
 {
     dh_mat4_f32 *acc = &p->acc_f[p->depth];
     unsigned r, c;
-    dh_mat4_mul_f32(acc, acc, t);
+    dh_mat4_mul_f32(acc, t, acc);
     for (c = 0; c < 4u; c++)
         for (r = 0; r < 4u; r++)
             if (!isfinite(acc->m[c][r]))
@@ -215,7 +215,7 @@ static int multiply_f(parser *p, const dh_mat4_f32 *t, size_t pos, const char *w
 static int multiply_q(parser *p, const dh_frame_q *t, size_t pos, const char *what)
 {
     dh_frame_q *acc = &p->acc_q[p->depth];
-    dh_status st = dh_frame_mul_q(acc, acc, t);
+    dh_status st = dh_frame_mul_q(acc, t, acc);
     if (st == DH_ERR_OVERFLOW)
         return fail(p, pos, st, "overflow: the fixed-point product up to '%s' saturates", what);
     if (st != DH_OK)
@@ -229,22 +229,22 @@ static int apply_term_f(parser *p, const term_info *ti, const term_args *a, int 
     dh_status st = DH_OK;
     switch (ti->kind) {
     case T_IDENT: dh_mat4_identity_f32(&t); break;
-    case T_TRANS: dh_mat4_trans_f32(&t, (float)a->v[0], (float)a->v[1], (float)a->v[2]); break;
-    case T_ROTX: st = dh_mat4_rotx_f32(&t, (float)a->v[0]); break;
-    case T_ROTY: st = dh_mat4_roty_f32(&t, (float)a->v[0]); break;
-    case T_ROTZ: st = dh_mat4_rotz_f32(&t, (float)a->v[0]); break;
+    case T_TRANS: dh_mat4_trans_f32((float)a->v[0], (float)a->v[1], (float)a->v[2], &t); break;
+    case T_ROTX: st = dh_mat4_rotx_f32((float)a->v[0], &t); break;
+    case T_ROTY: st = dh_mat4_roty_f32((float)a->v[0], &t); break;
+    case T_ROTZ: st = dh_mat4_rotz_f32((float)a->v[0], &t); break;
     case T_ROT: {
         double n = sqrt(a->v[0] * a->v[0] + a->v[1] * a->v[1] + a->v[2] * a->v[2]);
         if (!(n > 0.0)) return fail(p, pos, DH_ERR_ZERO_AXIS, "'rot': zero rotation axis");
-        st = dh_mat4_rot_axis_f32(&t, (float)(a->v[0] / n), (float)(a->v[1] / n),
-                                  (float)(a->v[2] / n), (float)a->v[3]);
+        st = dh_mat4_rot_axis_f32((float)(a->v[0] / n), (float)(a->v[1] / n), (float)(a->v[2] / n),
+                                  (float)a->v[3], &t);
         break;
     }
-    case T_SCALE: dh_mat4_scale_f32(&t, (float)a->v[0], (float)a->v[1], (float)a->v[2]); break;
+    case T_SCALE: dh_mat4_scale_f32((float)a->v[0], (float)a->v[1], (float)a->v[2], &t); break;
     case T_PERSP:
         if (a->v[1] == 0.0)
             return fail(p, a->pos[1], DH_ERR_DOMAIN, "'persp': focal length f = 0");
-        st = dh_mat4_persp_f32(&t, axis, (float)a->v[1]);
+        st = dh_mat4_persp_f32(axis, (float)a->v[1], &t);
         break;
     case T_INV: default:
         return fail(p, pos, DH_ERR_ARG, "internal: unexpected term");
@@ -273,22 +273,22 @@ static int apply_term_q(parser *p, const term_info *ti, const term_args *a, size
                 return fail(p, a->pos[k], DH_ERR_OVERFLOW,
                             "overflow: length %.9g does not fit the fixed-point format Q%d.%d",
                             a->v[k], 32 - DH_QPOS_FRAC, DH_QPOS_FRAC);
-        dh_frame_trans_q(&t, x[0], x[1], x[2]);
+        dh_frame_trans_q(x[0], x[1], x[2], &t);
         break;
     case T_ROTX: case T_ROTY: case T_ROTZ: case T_ROT: {
         unsigned ia = (ti->kind == T_ROT) ? 3u : 0u;
         if (to_fix(a->v[ia], 65536.0, &x[ia]))
             return fail(p, a->pos[ia], DH_ERR_OVERFLOW,
                         "overflow: angle %.9g deg does not fit degrees Q16.16", a->v[ia]);
-        if (ti->kind == T_ROTX) dh_frame_rotx_q(&t, x[0]);
-        else if (ti->kind == T_ROTY) dh_frame_roty_q(&t, x[0]);
-        else if (ti->kind == T_ROTZ) dh_frame_rotz_q(&t, x[0]);
+        if (ti->kind == T_ROTX) dh_frame_rotx_q(x[0], &t);
+        else if (ti->kind == T_ROTY) dh_frame_roty_q(x[0], &t);
+        else if (ti->kind == T_ROTZ) dh_frame_rotz_q(x[0], &t);
         else {
             double n = sqrt(a->v[0] * a->v[0] + a->v[1] * a->v[1] + a->v[2] * a->v[2]);
             if (!(n > 0.0)) return fail(p, pos, DH_ERR_ZERO_AXIS, "'rot': zero rotation axis");
             for (k = 0; k < 3u; k++)
                 (void)to_fix(a->v[k] / n, 1073741824.0, &x[k]); /* |v/n| <= 1: fits Q2.30 */
-            st = dh_frame_rot_axis_q(&t, x[0], x[1], x[2], x[3]);
+            st = dh_frame_rot_axis_q(x[0], x[1], x[2], x[3], &t);
         }
         break;
     }
@@ -413,7 +413,7 @@ static int close_inv(parser *p)
     size_t pos = p->open_pos[p->depth];
     if (p->fixed) {
         dh_frame_q t;
-        dh_status st = dh_frame_inv_q(&t, &p->acc_q[p->depth]);
+        dh_status st = dh_frame_inv_q(&p->acc_q[p->depth], &t);
         if (st == DH_ERR_OVERFLOW)
             return fail(p, pos, st, "overflow: 'inv' saturates in fixed point");
         if (st != DH_OK) return fail(p, pos, st, "'inv': %s", status_msg(st));
@@ -421,7 +421,7 @@ static int close_inv(parser *p)
         return multiply_q(p, &t, pos, "inv");
     } else {
         dh_mat4_f32 t;
-        dh_status st = dh_mat4_inv_auto_f32(&t, &p->acc_f[p->depth]);
+        dh_status st = dh_mat4_inv_auto_f32(&p->acc_f[p->depth], &t);
         if (st == DH_ERR_SINGULAR) return fail(p, pos, st, "'inv': singular matrix");
         if (st != DH_OK) return fail(p, pos, st, "'inv': %s", status_msg(st));
         p->depth--;

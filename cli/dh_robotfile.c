@@ -245,8 +245,8 @@ int dh_robotfile_build(const char *name, const dh_robotfile *rf, int fixed, dh_r
     if (st != DH_OK) return fail(&c, 1u, 0, "robot: %s", dh_status_str(st));
     for (k = 0; k < rf->n; k++) {
         const dh_rf_joint *j = &rf->joint[k];
-        st = dh_robot_add_joint_f32(r, j->type, (float)j->a, (float)j->d, (float)j->alpha,
-                                    (float)j->theta);
+        st = dh_robot_add_joint_f32(r, j->type, (float)j->theta, (float)j->d, (float)j->a,
+                                    (float)j->alpha);
         if (st != DH_OK) return fail(&c, j->line, 0, "joint rejected by the library: %s", dh_status_str(st));
         if (j->has_limits) {
             st = dh_robot_set_limits_f32(r, k, (float)j->qmin, (float)j->qmax);

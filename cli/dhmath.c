@@ -566,7 +566,7 @@ static int cmd_ik(int argc, char **argv)
         prm.max_iter = (uint32_t)x;
     }
     memset(&res, 0, sizeof res);
-    st = dh_ik_f32(&r, &target, q0, q, &prm, work, sizeof work / sizeof work[0], &res);
+    st = dh_ik_f32(&r, &target, q0, &prm, work, sizeof work / sizeof work[0], q, &res);
     if (st != DH_OK && st != DH_ERR_NO_CONVERGENCE && st != DH_ERR_UNREACHABLE && st != DH_ERR_SINGULAR)
         return error_msg("ik", dh_status_str(st));
     for (k = 0; k < n; k++)

@@ -8,8 +8,8 @@ int main(void)
     const float q[2] = { 30.0f, 45.0f };   /* joint angles in degrees */
 
     dh_robot_init(&arm, DH_CONV_STANDARD);
-    dh_robot_add_joint_f32(&arm, DH_JOINT_REVOLUTE, 0.4f, 0.0f, 0.0f, 0.0f);
-    dh_robot_add_joint_f32(&arm, DH_JOINT_REVOLUTE, 0.3f, 0.0f, 0.0f, 0.0f);
+    dh_robot_add_joint_f32(&arm, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.4f, 0.0f);
+    dh_robot_add_joint_f32(&arm, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.3f, 0.0f);
 
     if (dh_fk_f32(&arm, q, &T) != DH_OK) return 1;
     printf("tool at x=%.4f y=%.4f\n", (double)DH_M4(&T, 0, 3), (double)DH_M4(&T, 1, 3));

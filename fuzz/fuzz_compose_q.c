@@ -78,7 +78,7 @@ static void check_mul(const dh_frame_q *A, const dh_frame_q *B)
         }
     }
     memset(&out, 0x5a, sizeof out);
-    st = dh_frame_mul_q(&out, A, B);
+    st = dh_frame_mul_q(A, B, &out);
     if (!frame_eq(&out, &ref) || st != (sat ? DH_ERR_OVERFLOW : DH_OK)) {
         print_frame("A", A);
         print_frame("B", B);
@@ -89,14 +89,14 @@ static void check_mul(const dh_frame_q *A, const dh_frame_q *B)
     FZ_CHECK(st == (sat ? DH_ERR_OVERFLOW : DH_OK), "dh_frame_mul_q status %d, saturated %d", (int)st, sat);
 
     X = *A;
-    st2 = dh_frame_mul_q(&X, &X, B);
+    st2 = dh_frame_mul_q(&X, B, &X);
     FZ_CHECK(frame_eq(&X, &ref) && st2 == st, "dh_frame_mul_q(out == A) differs");
     X = *B;
-    st2 = dh_frame_mul_q(&X, A, &X);
+    st2 = dh_frame_mul_q(A, &X, &X);
     FZ_CHECK(frame_eq(&X, &ref) && st2 == st, "dh_frame_mul_q(out == B) differs");
     {
         dh_frame_q AA;
-        dh_status sta = dh_frame_mul_q(&AA, A, A);
+        dh_status sta = dh_frame_mul_q(A, A, &AA);
         X = *A;
         st2 = dh_frame_mul_q(&X, &X, &X);
         FZ_CHECK(frame_eq(&X, &AA) && st2 == sta, "dh_frame_mul_q(out == A == B) differs");
@@ -119,7 +119,7 @@ static void check_inv(const dh_frame_q *F)
         ref.p[i] = ref_round(s, &sat);
     }
     memset(&out, 0x5a, sizeof out);
-    st = dh_frame_inv_q(&out, F);
+    st = dh_frame_inv_q(F, &out);
     if (!frame_eq(&out, &ref)) {
         print_frame("F", F);
         print_frame("out", &out);
@@ -213,7 +213,7 @@ static void check_rot_axis(int32_t kx, int32_t ky, int32_t kz, int32_t deg)
     dh_status st;
     memset(&F, 0x33, sizeof F);
     G = F;
-    st = dh_frame_rot_axis_q(&F, kx, ky, kz, deg);
+    st = dh_frame_rot_axis_q(kx, ky, kz, deg, &F);
     if (kx == 0 && ky == 0 && kz == 0) {
         FZ_CHECK(st == DH_ERR_ZERO_AXIS && frame_eq(&F, &G), "zero axis: st %d", (int)st);
         return;
@@ -248,9 +248,9 @@ static void check_elem(int32_t deg)
     dh_frame_q X, Y, Z;
     dh_q30 s, c;
     dh_sincos_q(deg, &s, &c);
-    dh_frame_rotx_q(&X, deg);
-    dh_frame_roty_q(&Y, deg);
-    dh_frame_rotz_q(&Z, deg);
+    dh_frame_rotx_q(deg, &X);
+    dh_frame_roty_q(deg, &Y);
+    dh_frame_rotz_q(deg, &Z);
     /* (row, col) = r[col][row] */
     FZ_CHECK(X.r[0][0] == DH_Q30_ONE && X.r[1][1] == c && X.r[2][1] == -s && X.r[1][2] == s && X.r[2][2] == c &&
                  X.r[0][1] == 0 && X.r[0][2] == 0 && X.r[1][0] == 0 && X.r[2][0] == 0,
@@ -272,7 +272,7 @@ static void read_frame(fz_in *in, dh_frame_q *F, unsigned mode)
             for (j = 0; j < 3u; j++) F->r[i][j] = fz_i32(in);
     } else {
         int32_t kx = fz_i32(in), ky = fz_i32(in), kz = fz_i32(in), deg = fz_i32(in);
-        if (dh_frame_rot_axis_q(F, kx, ky, kz, deg) != DH_OK) dh_frame_identity_q(F);
+        if (dh_frame_rot_axis_q(kx, ky, kz, deg, F) != DH_OK) dh_frame_identity_q(F);
         if (mode == 2u) {
             const unsigned b = fz_u8(in) % 28u;
             for (i = 0; i < 3u; i++)

@@ -197,7 +197,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
     memset(&S, 0x6b, sizeof S);
     X = S;
-    st = dh_mat4_inv_f32(&X, &T);
+    st = dh_mat4_inv_f32(&T, &X);
     FZ_CHECK(st == DH_OK || st == DH_ERR_NAN || st == DH_ERR_SINGULAR || st == DH_ERR_OVERFLOW, "status %d", (int)st);
     FZ_CHECK((st == DH_ERR_NAN) == !finite, "status %d for %s input", (int)st, finite ? "finite" : "non-finite");
     Y = T;
@@ -284,9 +284,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         dh_mat4_f32 Z, W;
         dh_status sa;
         memset(&Z, 0x6b, sizeof Z);
-        sa = dh_mat4_inv_auto_f32(&Z, &T);
+        sa = dh_mat4_inv_auto_f32(&T, &Z);
         if (finite && dh_mat4_check_rigid_f32(&T, DH_MAT4_RIGID_TOL) == DH_OK) {
-            dh_mat4_inv_rigid_f32(&W, &T);
+            dh_mat4_inv_rigid_f32(&T, &W);
             FZ_CHECK(sa == DH_OK && memcmp(&Z, &W, sizeof Z) == 0, "inv_auto of a rigid T: %d / not the rigid inverse",
                      (int)sa);
         } else {

@@ -190,7 +190,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             rot_axis_d(X, k.x, k.y, k.z, (double)deg * (FZ_PI / 180.0));
             FZ_CHECK(repro_err(&R, X) <= tol, "axis-angle reproduces R within %.3g > %.3g (dev %.3g)",
                      repro_err(&R, X), tol, dev);
-            FZ_CHECK(dh_axis_angle_to_mat3_f32(&Y, &k, deg) == DH_OK, "axis_angle_to_mat3");
+            FZ_CHECK(dh_axis_angle_to_mat3_f32(&k, deg, &Y) == DH_OK, "axis_angle_to_mat3");
             check_ortho_out(&Y, 1e-6, "axis_angle_to_mat3");
         }
     }
@@ -218,7 +218,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                      "%s (%.9g %.9g %.9g) reproduces R within %.3g > %.3g (dev %.3g)",
                      dh_euler_name((dh_euler_seq)seq), (double)a[0], (double)a[1], (double)a[2], repro_err(&R, X),
                      FZ_REPRO_EULER + FZ_REPRO_K * dev, dev);
-            FZ_CHECK(dh_euler_to_mat3_f32(&Y, (dh_euler_seq)seq, a) == DH_OK, "euler_to_mat3");
+            FZ_CHECK(dh_euler_to_mat3_f32((dh_euler_seq)seq, a, &Y) == DH_OK, "euler_to_mat3");
             check_ortho_out(&Y, 1e-6, "euler_to_mat3");
         }
     }
@@ -243,7 +243,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             }
             FZ_CHECK(repro_err(&R, X) <= tol, "quaternion reproduces R within %.3g > %.3g (dev %.3g)", repro_err(&R, X),
                      tol, dev);
-            FZ_CHECK(dh_quat_to_mat3_f32(&Y, &q) == DH_OK, "quat_to_mat3");
+            FZ_CHECK(dh_quat_to_mat3_f32(&q, &Y) == DH_OK, "quat_to_mat3");
             check_ortho_out(&Y, 1e-6, "quat_to_mat3");
         }
     }
@@ -263,7 +263,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             else rot_axis_d(X, 0, 0, 1, 0.0);
             FZ_CHECK(repro_err(&R, X) <= tol, "rotvec reproduces R within %.3g > %.3g (dev %.3g)", repro_err(&R, X),
                      tol, dev);
-            FZ_CHECK(dh_rotvec_to_mat3_f32(&Y, &phi) == DH_OK, "rotvec_to_mat3");
+            FZ_CHECK(dh_rotvec_to_mat3_f32(&phi, &Y) == DH_OK, "rotvec_to_mat3");
             check_ortho_out(&Y, 1e-6, "rotvec_to_mat3");
         }
     }
@@ -271,7 +271,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     {
         dh_mat3_f32 X;
         memset(&X, 0x77, sizeof X);
-        st = dh_mat3_orthonormalize_f32(&X, &R);
+        st = dh_mat3_orthonormalize_f32(&R, &X);
         FZ_CHECK(st == DH_OK || st == DH_ERR_NAN || st == DH_ERR_NOT_RIGID || st == DH_ERR_NO_CONVERGENCE,
                  "orthonormalize %d", (int)st);
         if (chk == DH_ERR_NAN) FZ_CHECK(st == DH_ERR_NAN, "orthonormalize of non-finite R: %d", (int)st);

@@ -76,7 +76,7 @@ static void dh_euler_post_rot(dh_mat3_f32 *M, int q, float s, float c)
     }
 }
 
-dh_status dh_euler_to_mat3_f32(dh_mat3_f32 *R, dh_euler_seq seq, const float ang_deg[3])
+dh_status dh_euler_to_mat3_f32(dh_euler_seq seq, const float ang_deg[3], dh_mat3_f32 *R)
 {
     unsigned int u = (unsigned int)seq;
     int ax[3], n, r, c;

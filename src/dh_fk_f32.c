@@ -285,7 +285,7 @@ static DH_NOINLINE dh_status fk_all(const dh_robot *r, const float *q, dh_mat4_f
             copy(T_end, last);
             if (!FK_BOTTOM_EACH) set_bottom(T_end);
         } else {
-            dh_mat4_mul_affine_f32(T_end, last, &r->tool);
+            dh_mat4_mul_affine_f32(last, &r->tool, T_end);
         }
         last = T_end;
     }

@@ -33,7 +33,7 @@ static int32_t dh_round_sat(float x, uint32_t *ovf)
     return t;
 }
 
-dh_status dh_frame_from_mat4_q(dh_frame_q *F, const dh_mat4_f32 *T)
+dh_status dh_frame_from_mat4_q(const dh_mat4_f32 *T, dh_frame_q *F)
 {
     const float rs = dh_pow2f(30u), ps = dh_pow2f((unsigned)DH_QPOS_FRAC);
     uint32_t ovf = 0u;
@@ -56,7 +56,7 @@ dh_status dh_frame_from_mat4_q(dh_frame_q *F, const dh_mat4_f32 *T)
     return DH_OK;
 }
 
-void dh_frame_to_mat4_q(dh_mat4_f32 *T, const dh_frame_q *F)
+void dh_frame_to_mat4_q(const dh_frame_q *F, dh_mat4_f32 *T)
 {
     const float rs = 1.0f / dh_pow2f(30u), ps = 1.0f / dh_pow2f((unsigned)DH_QPOS_FRAC);
     unsigned i, j;

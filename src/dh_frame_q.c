@@ -35,7 +35,7 @@ void dh_frame_identity_q(dh_frame_q *F)
     }
 }
 
-void dh_frame_trans_q(dh_frame_q *F, dh_qpos x, dh_qpos y, dh_qpos z)
+void dh_frame_trans_q(dh_qpos x, dh_qpos y, dh_qpos z, dh_frame_q *F)
 {
     DH_ASSERT(F != NULL);
     dh_frame_identity_q(F);
@@ -59,9 +59,9 @@ static DH_SIZE_NOINLINE void dh_frame_rot_elem(dh_frame_q *F, unsigned a1, unsig
     F->r[a2][a2] = c;
 }
 
-void dh_frame_rotx_q(dh_frame_q *F, dh_q16 deg) { dh_frame_rot_elem(F, 1u, 2u, deg); }
-void dh_frame_roty_q(dh_frame_q *F, dh_q16 deg) { dh_frame_rot_elem(F, 2u, 0u, deg); }
-void dh_frame_rotz_q(dh_frame_q *F, dh_q16 deg) { dh_frame_rot_elem(F, 0u, 1u, deg); }
+void dh_frame_rotx_q(dh_q16 deg, dh_frame_q *F) { dh_frame_rot_elem(F, 1u, 2u, deg); }
+void dh_frame_roty_q(dh_q16 deg, dh_frame_q *F) { dh_frame_rot_elem(F, 2u, 0u, deg); }
+void dh_frame_rotz_q(dh_q16 deg, dh_frame_q *F) { dh_frame_rot_elem(F, 0u, 1u, deg); }
 
 /* ---- general kernel ------------------------------------------------------- */
 
@@ -249,7 +249,7 @@ static DH_NOINLINE int dh_axis_build(dh_frame_q *F, int32_t kx, int32_t ky, int3
  * step brings it to the rounding level (its checks cannot fail here: entries
  * within 1 + 2 LSB, error far below 1/8). Separate calls: the stack depth
  * is the larger of the two. */
-dh_status dh_frame_rot_axis_q(dh_frame_q *F, dh_q30 kx, dh_q30 ky, dh_q30 kz, dh_q16 deg)
+dh_status dh_frame_rot_axis_q(dh_q30 kx, dh_q30 ky, dh_q30 kz, dh_q16 deg, dh_frame_q *F)
 {
     DH_ASSERT(F != NULL);
     if (!dh_axis_build(F, kx, ky, kz, deg)) return DH_ERR_ZERO_AXIS;
@@ -360,7 +360,7 @@ DH_GENERAL_FN unsigned dh_mul_gen(dh_frame_q *t, const dh_frame_q *A, const dh_f
 }
 
 /* Computed into a local, so out may alias A and/or B. */
-dh_status dh_frame_mul_q(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B)
+dh_status dh_frame_mul_q(const dh_frame_q *A, const dh_frame_q *B, dh_frame_q *out)
 {
     dh_frame_q t;
     unsigned st = 0u;
@@ -388,7 +388,7 @@ DH_GENERAL_FN unsigned dh_inv_gen(dh_frame_q *out, const dh_frame_q *F)
     return st;
 }
 
-dh_status dh_frame_inv_q(dh_frame_q *out, const dh_frame_q *F)
+dh_status dh_frame_inv_q(const dh_frame_q *F, dh_frame_q *out)
 {
     DH_ASSERT(out != NULL && F != NULL);
 #if DH_FAST_PATHS

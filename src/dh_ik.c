@@ -557,8 +557,8 @@ static DH_NOINLINE dh_status ik_finish(const ik_ctx *c, float *q, dh_ik_result *
     return DH_ERR_NO_CONVERGENCE;
 }
 
-dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q0, float *q,
-                    const dh_ik_params *p, float *work, size_t work_len, dh_ik_result *res)
+dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q0, const dh_ik_params *p,
+                    float *work, size_t work_len, float *q, dh_ik_result *res)
 {
     ik_ctx c;
     dh_status st;

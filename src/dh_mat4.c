@@ -35,7 +35,7 @@ void dh_mat4_identity_f32(dh_mat4_f32 *T)
     dh_set_identity(T);
 }
 
-void dh_mat4_trans_f32(dh_mat4_f32 *T, float x, float y, float z)
+void dh_mat4_trans_f32(float x, float y, float z, dh_mat4_f32 *T)
 {
     DH_ASSERT(T != NULL);
     dh_set_identity(T);
@@ -71,20 +71,20 @@ static dh_status dh_rotk(dh_mat4_f32 *T, float deg, int axis)
     }
 #endif
     k[axis] = 1.0f;
-    return dh_mat4_rot_axis_f32(T, k[0], k[1], k[2], deg);
+    return dh_mat4_rot_axis_f32(k[0], k[1], k[2], deg, T);
 }
 
-dh_status dh_mat4_rotx_f32(dh_mat4_f32 *T, float deg)
+dh_status dh_mat4_rotx_f32(float deg, dh_mat4_f32 *T)
 {
     return dh_rotk(T, deg, 0);
 }
 
-dh_status dh_mat4_roty_f32(dh_mat4_f32 *T, float deg)
+dh_status dh_mat4_roty_f32(float deg, dh_mat4_f32 *T)
 {
     return dh_rotk(T, deg, 1);
 }
 
-dh_status dh_mat4_rotz_f32(dh_mat4_f32 *T, float deg)
+dh_status dh_mat4_rotz_f32(float deg, dh_mat4_f32 *T)
 {
     return dh_rotk(T, deg, 2);
 }
@@ -99,7 +99,7 @@ static float dh_rot_diag(float ki2, float others2, float v, float c)
     return (ki2 >= 0.5f) ? 1.0f - others2 * v : ki2 * v + c;
 }
 
-dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, float deg)
+dh_status dh_mat4_rot_axis_f32(float kx, float ky, float kz, float deg, dh_mat4_f32 *T)
 {
     float k[4], m = 0.0f, len = 0.0f, s, c, v, z = 0.0f, x, y, w, p0;
     int i, j, a, b, t;
@@ -195,7 +195,7 @@ dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, flo
     return DH_OK;
 }
 
-void dh_mat4_scale_f32(dh_mat4_f32 *T, float sx, float sy, float sz)
+void dh_mat4_scale_f32(float sx, float sy, float sz, dh_mat4_f32 *T)
 {
     DH_ASSERT(T != NULL);
     dh_set_identity(T);
@@ -205,7 +205,7 @@ void dh_mat4_scale_f32(dh_mat4_f32 *T, float sx, float sy, float sz)
 }
 
 /* f = +-0 gives r = -+Inf, so the finiteness test of r is also f == 0 */
-dh_status dh_mat4_persp_f32(dh_mat4_f32 *T, int axis, float f)
+dh_status dh_mat4_persp_f32(int axis, float f, dh_mat4_f32 *T)
 {
     float r;
     DH_ASSERT(T != NULL);
@@ -218,8 +218,8 @@ dh_status dh_mat4_persp_f32(dh_mat4_f32 *T, int axis, float f)
     return DH_OK;
 }
 
-void dh_mat4_from_noap_f32(dh_mat4_f32 *T, const dh_vec3_f32 *n, const dh_vec3_f32 *o,
-                           const dh_vec3_f32 *a, const dh_vec3_f32 *p)
+void dh_mat4_from_noap_f32(const dh_vec3_f32 *n, const dh_vec3_f32 *o, const dh_vec3_f32 *a,
+                           const dh_vec3_f32 *p, dh_mat4_f32 *T)
 {
     DH_ASSERT(T != NULL && n != NULL && o != NULL && a != NULL && p != NULL);
     {
@@ -340,7 +340,7 @@ static void dh_mul(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B,
     } while (0)
 #endif
 
-void dh_mat4_mul_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
+void dh_mat4_mul_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out)
 {
 #if DH_FAST_PATHS
     dh_mat4_f32 a;
@@ -356,7 +356,7 @@ void dh_mat4_mul_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *
     dh_mul(out, A, B, 0);
 }
 
-void dh_mat4_mul_affine_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
+void dh_mat4_mul_affine_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out)
 {
 #if DH_FAST_PATHS
     dh_mat4_f32 a;
@@ -381,12 +381,12 @@ void dh_mat4_mul_affine_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat
 
 void dh_mat4_premul_f32(dh_mat4_f32 *T, const dh_mat4_f32 *X)
 {
-    dh_mat4_mul_f32(T, X, T);
+    dh_mat4_mul_f32(X, T, T);
 }
 
 void dh_mat4_postmul_f32(dh_mat4_f32 *T, const dh_mat4_f32 *X)
 {
-    dh_mat4_mul_f32(T, T, X);
+    dh_mat4_mul_f32(T, X, T);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -94,7 +94,7 @@ static DH_NOINLINE float dh_affine_t(dh_mat4_f32 *X, float px, float py, float p
 }
 
 /* rows of the inverse are n, o, a; column p is -R^T p (out may alias T) */
-void dh_mat4_inv_rigid_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+void dh_mat4_inv_rigid_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 {
     float px, py, pz;
     DH_ASSERT(out != NULL && T != NULL);
@@ -534,7 +534,7 @@ DH_INLINE dh_status dh_inv_general(dh_mat4_f32 *out, const dh_mat4_f32 *T)
     return DH_OK;
 }
 
-dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+dh_status dh_mat4_inv_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 {
     DH_ASSERT(out != NULL && T != NULL);
     return dh_inv_general(out, T);
@@ -618,11 +618,11 @@ static DH_FAST_NOINLINE dh_status dh_inv_rigid_chk(dh_mat4_f32 *X, const dh_mat4
     const dh_status st = dh_mat4_check_rigid_f32(T, DH_MAT4_RIGID_TOL);
     if (st != DH_OK) return st;
     if (!dh_rigid_t_ok(T)) return DH_ERR_OVERFLOW;
-    dh_mat4_inv_rigid_f32(X, T);
+    dh_mat4_inv_rigid_f32(T, X);
     return DH_OK;
 }
 
-dh_status dh_mat4_inv_auto_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+dh_status dh_mat4_inv_auto_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 {
     dh_status st;
     DH_ASSERT(out != NULL && T != NULL);

@@ -33,7 +33,7 @@ static float dh_q_prescale(float m)
     return f;
 }
 
-dh_status dh_quat_to_mat3_f32(dh_mat3_f32 *R, const dh_quat_f32 *q)
+dh_status dh_quat_to_mat3_f32(const dh_quat_f32 *q, dh_mat3_f32 *R)
 {
     float m, f, w, x, y, z, s, xx, yy, zz, xy, xz, yz, wx, wy, wz;
     DH_ASSERT(R != NULL && q != NULL);
@@ -113,7 +113,7 @@ dh_status dh_mat3_to_quat_f32(const dh_mat3_f32 *R, dh_quat_f32 *q)
     return DH_OK;
 }
 
-dh_status dh_quat_normalize_f32(dh_quat_f32 *out, const dh_quat_f32 *q)
+dh_status dh_quat_normalize_f32(const dh_quat_f32 *q, dh_quat_f32 *out)
 {
     float m, f, w, x, y, z, n;
     DH_ASSERT(out != NULL && q != NULL);
@@ -133,7 +133,7 @@ dh_status dh_quat_normalize_f32(dh_quat_f32 *out, const dh_quat_f32 *q)
     return DH_OK;
 }
 
-void dh_quat_mul_f32(dh_quat_f32 *out, const dh_quat_f32 *a, const dh_quat_f32 *b)
+void dh_quat_mul_f32(const dh_quat_f32 *a, const dh_quat_f32 *b, dh_quat_f32 *out)
 {
     float w, x, y, z;
     DH_ASSERT(out != NULL && a != NULL && b != NULL);
@@ -147,7 +147,7 @@ void dh_quat_mul_f32(dh_quat_f32 *out, const dh_quat_f32 *a, const dh_quat_f32 *
     out->z = z;
 }
 
-void dh_quat_conj_f32(dh_quat_f32 *out, const dh_quat_f32 *q)
+void dh_quat_conj_f32(const dh_quat_f32 *q, dh_quat_f32 *out)
 {
     DH_ASSERT(out != NULL && q != NULL);
     out->w = q->w;
@@ -156,7 +156,7 @@ void dh_quat_conj_f32(dh_quat_f32 *out, const dh_quat_f32 *q)
     out->z = -q->z;
 }
 
-dh_status dh_quat_from_axis_angle_f32(dh_quat_f32 *q, const dh_vec3_f32 *axis, float deg)
+dh_status dh_quat_from_axis_angle_f32(const dh_vec3_f32 *axis, float deg, dh_quat_f32 *q)
 {
     float k[3], len, s, c;
     dh_status st;

@@ -75,8 +75,8 @@ dh_status dh_robot_init(dh_robot *r, dh_convention conv)
     return DH_OK;
 }
 
-dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float a, float d,
-                                 float alpha_deg, float theta_deg)
+dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float theta_deg, float d,
+                                 float a, float alpha_deg)
 {
     dh_joint *j;
     float v[4];
@@ -107,7 +107,7 @@ dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float a, float
     j->theta_deg = v[3];
     j->qmin = 1.0f;
     j->qmax = -1.0f;
-    (void)dh_robot_add_joint_q(r, type, x[0], x[1], x[2], x[3]);
+    (void)dh_robot_add_joint_q(r, type, x[3], x[1], x[0], x[2]);
     (void)dh_sincos_f32(j->alpha_deg, &j->sa, &j->ca); /* finite input: cannot fail */
     /* dh_robot_add_joint_q marked the float path unavailable: undo that
      * unless an earlier joint was added with it (f: the flags before) */

@@ -36,8 +36,8 @@ int dh_robot_rows_small_q_(const dh_frame_q *F)
     return 1;
 }
 
-dh_status dh_robot_add_joint_q(dh_robot *r, dh_joint_type type, dh_qpos a, dh_qpos d,
-                               dh_q16 alpha_deg, dh_q16 theta_deg)
+dh_status dh_robot_add_joint_q(dh_robot *r, dh_joint_type type, dh_q16 theta_deg, dh_qpos d,
+                               dh_qpos a, dh_q16 alpha_deg)
 {
     dh_joint *j;
     DH_ASSERT(r != NULL);

@@ -50,7 +50,7 @@ static void dh_rodrigues(dh_mat3_f32 *R, const float k[3], float s, float c, flo
     dh_rot_offdiag_f32(R, vxy, vxz, vyz, sx, sy, sz);
 }
 
-dh_status dh_axis_angle_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *axis, float deg)
+dh_status dh_axis_angle_to_mat3_f32(const dh_vec3_f32 *axis, float deg, dh_mat3_f32 *R)
 {
     float k[3], len, s, c;
     dh_status st;
@@ -97,7 +97,7 @@ dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, flo
     return dh_mat4_to_axis_angle_f32(&T, axis, deg);
 }
 
-dh_status dh_rotvec_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *phi)
+dh_status dh_rotvec_to_mat3_f32(const dh_vec3_f32 *phi, dh_mat3_f32 *R)
 {
     float x, y, z, m, t, k[3], sh, ch;
     int scaled;
@@ -159,7 +159,7 @@ dh_status dh_mat3_to_rotvec_f32(const dh_mat3_f32 *R, dh_vec3_f32 *phi)
     return DH_OK;
 }
 
-void dh_skew_f32(dh_mat3_f32 *S, const dh_vec3_f32 *v)
+void dh_skew_f32(const dh_vec3_f32 *v, dh_mat3_f32 *S)
 {
     float x, y, z;
     DH_ASSERT(S != NULL && v != NULL);
@@ -177,7 +177,7 @@ void dh_skew_f32(dh_mat3_f32 *S, const dh_vec3_f32 *v)
     DH_M3(S, 2, 1) = x;
 }
 
-void dh_vee_f32(dh_vec3_f32 *v, const dh_mat3_f32 *S)
+void dh_vee_f32(const dh_mat3_f32 *S, dh_vec3_f32 *v)
 {
     DH_ASSERT(v != NULL && S != NULL);
     v->x = 0.5f * DH_M3(S, 2, 1) - 0.5f * DH_M3(S, 1, 2);
@@ -223,12 +223,12 @@ static dh_status dh_angvel_common(dh_vec3_f32 *w, const dh_mat3_f32 *R, const dh
     return DH_OK;
 }
 
-dh_status dh_angvel_f32(dh_vec3_f32 *w, const dh_mat3_f32 *R, const dh_mat3_f32 *Rdot)
+dh_status dh_angvel_f32(const dh_mat3_f32 *R, const dh_mat3_f32 *Rdot, dh_vec3_f32 *w)
 {
     return dh_angvel_common(w, R, Rdot, 0);
 }
 
-dh_status dh_angvel_body_f32(dh_vec3_f32 *w, const dh_mat3_f32 *R, const dh_mat3_f32 *Rdot)
+dh_status dh_angvel_body_f32(const dh_mat3_f32 *R, const dh_mat3_f32 *Rdot, dh_vec3_f32 *w)
 {
     return dh_angvel_common(w, R, Rdot, 1);
 }
@@ -236,7 +236,7 @@ dh_status dh_angvel_body_f32(dh_vec3_f32 *w, const dh_mat3_f32 *R, const dh_mat3
 #define DH_ORTHO_STOP 2.384185791015625e-7f /* 2^-22 */
 #define DH_ORTHO_MAX_STEPS 8
 
-dh_status dh_mat3_orthonormalize_f32(dh_mat3_f32 *out, const dh_mat3_f32 *R)
+dh_status dh_mat3_orthonormalize_f32(const dh_mat3_f32 *R, dh_mat3_f32 *out)
 {
     dh_mat3_f32 X;
     float G[3][3]; /* G = X^T X, symmetric; G[i][j] = c_i . c_j */

@@ -186,8 +186,8 @@ dh_status dhs_build(const dhs_robot *d, dh_robot *r)
     if (d->n > DH_MAX_JOINTS) return DH_ERR_ARG;
     for (i = 0; i < d->n; i++) {
         const dhs_joint_desc *j = &d->j[i];
-        st = dh_robot_add_joint_f32(r, j->type, (float)j->a, (float)j->d, (float)j->alpha_deg,
-                                    (float)j->theta_deg);
+        st = dh_robot_add_joint_f32(r, j->type, (float)j->theta_deg, (float)j->d, (float)j->a,
+                                    (float)j->alpha_deg);
         if (st != DH_OK) return st;
         if (j->qmin <= j->qmax) {
             st = dh_robot_set_limits_f32(r, i, (float)j->qmin, (float)j->qmax);
@@ -211,8 +211,8 @@ dh_status dhs_build_q(const dhs_robot *d, dh_robot *r)
     if (d->n > DH_MAX_JOINTS) return DH_ERR_ARG;
     for (i = 0; i < d->n; i++) {
         const dhs_joint_desc *j = &d->j[i];
-        st = dh_robot_add_joint_q(r, j->type, dhs_to_q(j->a, DH_QPOS_FRAC), dhs_to_q(j->d, DH_QPOS_FRAC),
-                                  dhs_to_q(j->alpha_deg, 16), dhs_to_q(j->theta_deg, 16));
+        st = dh_robot_add_joint_q(r, j->type, dhs_to_q(j->theta_deg, 16), dhs_to_q(j->d, DH_QPOS_FRAC),
+                                  dhs_to_q(j->a, DH_QPOS_FRAC), dhs_to_q(j->alpha_deg, 16));
         if (st != DH_OK) return st;
         if (j->qmin <= j->qmax) {
             int frac = (j->type == DH_JOINT_REVOLUTE) ? 16 : DH_QPOS_FRAC;

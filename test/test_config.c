@@ -44,8 +44,8 @@ static void max_joints_is_the_capacity(void)
     uint32_t i;
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
     for (i = 0; i < (uint32_t)DH_MAX_JOINTS; i++)
-        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.1f, 0.0f, 0.0f, 0.0f), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.1f, 0.0f, 0.0f, 0.0f), DH_ERR_ARG);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.1f, 0.0f), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.1f, 0.0f), DH_ERR_ARG);
     DHT_EQ_INT(r.n, DH_MAX_JOINTS);
     DHT_EQ_INT(sizeof r.joint / sizeof r.joint[0], DH_MAX_JOINTS);
 }

@@ -103,7 +103,7 @@ static void fixed_rot_axis_zero_and_extreme(void)
     unsigned i, k;
     for (i = 0; i < sizeof degs / sizeof degs[0]; i++) {
         CANARY(F);
-        DHT_EQ_INT(dh_frame_rot_axis_q(&F, 0, 0, 0, degs[i]), DH_ERR_ZERO_AXIS);
+        DHT_EQ_INT(dh_frame_rot_axis_q(0, 0, 0, degs[i], &F), DH_ERR_ZERO_AXIS);
         UNTOUCHED(F);
     }
     for (k = 0; k < sizeof ax / sizeof ax[0]; k++) {
@@ -118,7 +118,7 @@ static void fixed_rot_axis_zero_and_extreme(void)
             R[0][0] = x * x * v + c;     R[0][1] = x * y * v - z * s; R[0][2] = x * z * v + y * s;
             R[1][0] = x * y * v + z * s; R[1][1] = y * y * v + c;     R[1][2] = y * z * v - x * s;
             R[2][0] = x * z * v - y * s; R[2][1] = y * z * v + x * s; R[2][2] = z * z * v + c;
-            DHT_EQ_INT(dh_frame_rot_axis_q(&F, ax[k][0], ax[k][1], ax[k][2], degs[i]), DH_OK);
+            DHT_EQ_INT(dh_frame_rot_axis_q(ax[k][0], ax[k][1], ax[k][2], degs[i], &F), DH_OK);
             for (r = 0; r < 3; r++) {
                 DHT_EQ_INT(F.p[r], 0);
                 for (cc = 0; cc < 3; cc++) DHT_NEAR((double)F.r[cc][r], R[r][cc] * TWO30, 1.93);
@@ -137,18 +137,18 @@ static void fixed_rot_elem_extreme_angles(void)
         dh_frame_q F;
         dh_q30 s, c;
         dh_sincos_q(degs[i], &s, &c);
-        dh_frame_rotx_q(&F, degs[i]);
+        dh_frame_rotx_q(degs[i], &F);
         DHT_EQ_INT(F.r[0][0], DH_Q30_ONE);
         DHT_EQ_INT(F.r[1][1], c);
         DHT_EQ_INT(F.r[1][2], s);
         DHT_EQ_INT(F.r[2][1], -s);
         DHT_EQ_INT(F.r[2][2], c);
-        dh_frame_roty_q(&F, degs[i]);
+        dh_frame_roty_q(degs[i], &F);
         DHT_EQ_INT(F.r[1][1], DH_Q30_ONE);
         DHT_EQ_INT(F.r[0][0], c);
         DHT_EQ_INT(F.r[2][0], s);
         DHT_EQ_INT(F.r[0][2], -s);
-        dh_frame_rotz_q(&F, degs[i]);
+        dh_frame_rotz_q(degs[i], &F);
         DHT_EQ_INT(F.r[2][2], DH_Q30_ONE);
         DHT_EQ_INT(F.r[0][1], s);
         DHT_EQ_INT(F.r[1][0], -s);
@@ -164,17 +164,17 @@ static void fixed_mul_overflow(void)
     dh_frame_q A, B, C, D;
     uint32_t it;
     /* translation overflow both ways */
-    dh_frame_trans_q(&A, INT32_MAX, INT32_MIN, 5);
-    dh_frame_trans_q(&B, 1, -1, -5);
-    DHT_EQ_INT(dh_frame_mul_q(&C, &A, &B), DH_ERR_OVERFLOW);
+    dh_frame_trans_q(INT32_MAX, INT32_MIN, 5, &A);
+    dh_frame_trans_q(1, -1, -5, &B);
+    DHT_EQ_INT(dh_frame_mul_q(&A, &B, &C), DH_ERR_OVERFLOW);
     DHT_EQ_INT(C.p[0], INT32_MAX);
     DHT_EQ_INT(C.p[1], INT32_MIN);
     DHT_EQ_INT(C.p[2], 0);
     DHT_EQ_INT(C.r[0][0], DH_Q30_ONE);
     DHT_EQ_INT(C.r[1][0], 0);
     /* just inside: no overflow */
-    dh_frame_trans_q(&B, 0, 0, 0);
-    DHT_EQ_INT(dh_frame_mul_q(&C, &A, &B), DH_OK);
+    dh_frame_trans_q(0, 0, 0, &B);
+    DHT_EQ_INT(dh_frame_mul_q(&A, &B, &C), DH_OK);
     DHT_EQ_INT(C.p[0], INT32_MAX);
     DHT_EQ_INT(C.p[1], INT32_MIN);
     /* rotation overflow: every entry -2.0; (-2)(-2) * 3 = 12 */
@@ -185,7 +185,7 @@ static void fixed_mul_overflow(void)
             for (r = 0; r < 3; r++) A.r[c][r] = INT32_MIN;
     }
     B = A;
-    DHT_EQ_INT(dh_frame_mul_q(&C, &A, &B), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_frame_mul_q(&A, &B, &C), DH_ERR_OVERFLOW);
     DHT_EQ_INT(C.r[0][0], INT32_MAX);
     DHT_EQ_INT(C.r[2][1], INT32_MAX);
     DHT_EQ_INT(C.p[0], 0);
@@ -195,7 +195,7 @@ static void fixed_mul_overflow(void)
         dh_status st;
         rand_frame_any(&A);
         rand_frame_any(&B);
-        st = dh_frame_mul_q(&C, &A, &B);
+        st = dh_frame_mul_q(&A, &B, &C);
         for (c = 0; c < 3; c++) {
             for (r = 0; r < 3; r++)
                 sat |= check_entry(C.r[c][r], dot3(A.r[0][r], B.r[c][0], A.r[1][r], B.r[c][1],
@@ -205,10 +205,10 @@ static void fixed_mul_overflow(void)
         }
         check_status(st, sat);
         D = A;
-        DHT_EQ_INT(dh_frame_mul_q(&D, &D, &B), st);
+        DHT_EQ_INT(dh_frame_mul_q(&D, &B, &D), st);
         DHT_TRUE(memcmp(&C, &D, sizeof C) == 0);
         D = B;
-        DHT_EQ_INT(dh_frame_mul_q(&D, &A, &D), st);
+        DHT_EQ_INT(dh_frame_mul_q(&A, &D, &D), st);
         DHT_TRUE(memcmp(&C, &D, sizeof C) == 0);
     }
 }
@@ -219,8 +219,8 @@ static void fixed_inv_overflow(void)
 {
     dh_frame_q F, G, H;
     uint32_t it;
-    dh_frame_trans_q(&F, INT32_MIN, INT32_MAX, 0);
-    DHT_EQ_INT(dh_frame_inv_q(&G, &F), DH_ERR_OVERFLOW);
+    dh_frame_trans_q(INT32_MIN, INT32_MAX, 0, &F);
+    DHT_EQ_INT(dh_frame_inv_q(&F, &G), DH_ERR_OVERFLOW);
     DHT_EQ_INT(G.p[0], INT32_MAX);   /* -(-2^31) saturates */
     DHT_EQ_INT(G.p[1], -INT32_MAX);  /* exact */
     DHT_EQ_INT(G.p[2], 0);
@@ -229,7 +229,7 @@ static void fixed_inv_overflow(void)
         int c, r, sat = 0;
         dh_status st;
         rand_frame_any(&F);
-        st = dh_frame_inv_q(&G, &F);
+        st = dh_frame_inv_q(&F, &G);
         for (c = 0; c < 3; c++) {
             for (r = 0; r < 3; r++) DHT_EQ_INT(G.r[c][r], F.r[r][c]);
             sat |= check_entry(G.p[c], -dot3(F.r[c][0], F.p[0], F.r[c][1], F.p[1], F.r[c][2], F.p[2], 0.0),
@@ -248,7 +248,7 @@ static void fixed_apply_overflow(void)
     dh_frame_q F;
     dh_vec3_q u, v, w;
     uint32_t it;
-    dh_frame_trans_q(&F, 1, -1, 0);
+    dh_frame_trans_q(1, -1, 0, &F);
     u.x = INT32_MAX; u.y = INT32_MIN; u.z = 7;
     DHT_EQ_INT(dh_frame_apply_point_q(&F, &u, &v), DH_ERR_OVERFLOW);
     DHT_EQ_INT(v.x, INT32_MAX);
@@ -313,7 +313,7 @@ static void fixed_saturation_wrap_and_edges(void)
         A.p[c] = 0;
         B.p[c] = 0;
     }
-    DHT_EQ_INT(dh_frame_mul_q(&C, &A, &B), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_frame_mul_q(&A, &B, &C), DH_ERR_OVERFLOW);
     for (c = 0; c < 3; c++) {
         for (r = 0; r < 3; r++) DHT_EQ_INT(C.r[c][r], INT32_MIN);
         DHT_EQ_INT(C.p[c], 0);
@@ -322,12 +322,12 @@ static void fixed_saturation_wrap_and_edges(void)
     A.p[0] = INT32_MIN;
     A.p[1] = INT32_MIN;
     A.p[2] = INT32_MIN;
-    DHT_EQ_INT(dh_frame_inv_q(&C, &A), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_frame_inv_q(&A, &C), DH_ERR_OVERFLOW);
     for (c = 0; c < 3; c++) DHT_EQ_INT(C.p[c], INT32_MIN);
     A.p[0] = INT32_MAX;
     A.p[1] = INT32_MAX;
     A.p[2] = INT32_MAX;
-    DHT_EQ_INT(dh_frame_inv_q(&C, &A), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_frame_inv_q(&A, &C), DH_ERR_OVERFLOW);
     for (c = 0; c < 3; c++) DHT_EQ_INT(C.p[c], INT32_MAX);
     /* apply: 3 * 2^62 + p 2^30 for p = -2^31, 0, 2^31 - 1 (the last two
      * beyond 2^63) all saturate up; with u = INT32_MAX all saturate down */
@@ -350,18 +350,18 @@ static void fixed_saturation_wrap_and_edges(void)
     A.r[1][0] = 1;
     B.p[0] = INT32_MAX;
     B.p[1] = (1 << 29) - 1;            /* INT32_MAX + 0.5 - 2^-30: fits */
-    DHT_EQ_INT(dh_frame_mul_q(&C, &A, &B), DH_OK);
+    DHT_EQ_INT(dh_frame_mul_q(&A, &B, &C), DH_OK);
     DHT_EQ_INT(C.p[0], INT32_MAX);
     B.p[1] = 1 << 29;                  /* INT32_MAX + 0.5: rounds up, saturates */
-    DHT_EQ_INT(dh_frame_mul_q(&C, &A, &B), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_frame_mul_q(&A, &B, &C), DH_ERR_OVERFLOW);
     DHT_EQ_INT(C.p[0], INT32_MAX);
     DHT_EQ_INT(C.p[1], 0);
     B.p[0] = INT32_MIN;
     B.p[1] = -(1 << 29);               /* INT32_MIN - 0.5: rounds up to INT32_MIN, fits */
-    DHT_EQ_INT(dh_frame_mul_q(&C, &A, &B), DH_OK);
+    DHT_EQ_INT(dh_frame_mul_q(&A, &B, &C), DH_OK);
     DHT_EQ_INT(C.p[0], INT32_MIN);
     B.p[1] = -(1 << 29) - 1;           /* INT32_MIN - 0.5 - 2^-30: saturates */
-    DHT_EQ_INT(dh_frame_mul_q(&C, &A, &B), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_frame_mul_q(&A, &B, &C), DH_ERR_OVERFLOW);
     DHT_EQ_INT(C.p[0], INT32_MIN);
     /* the same edges through apply (u = (b0, b1, 0)) and inv (p' = -R^T p) */
     u.x = INT32_MAX; u.y = (1 << 29) - 1; u.z = 0;
@@ -378,13 +378,13 @@ static void fixed_saturation_wrap_and_edges(void)
     A.r[0][1] = 1;
     A.p[0] = INT32_MIN;
     A.p[1] = (1 << 29) - 1;
-    DHT_EQ_INT(dh_frame_inv_q(&C, &A), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_frame_inv_q(&A, &C), DH_ERR_OVERFLOW);
     DHT_EQ_INT(C.p[0], INT32_MAX);
     A.p[1] = (1 << 29) + 1;
-    DHT_EQ_INT(dh_frame_inv_q(&C, &A), DH_OK);
+    DHT_EQ_INT(dh_frame_inv_q(&A, &C), DH_OK);
     DHT_EQ_INT(C.p[0], INT32_MAX);
     A.p[1] = 1 << 29;                  /* exactly INT32_MAX + 0.5: ties up, saturates */
-    DHT_EQ_INT(dh_frame_inv_q(&C, &A), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_frame_inv_q(&A, &C), DH_ERR_OVERFLOW);
     DHT_EQ_INT(C.p[0], INT32_MAX);
 }
 
@@ -449,7 +449,7 @@ static void fixed_from_mat4_bad(void)
             T.m[e / 4][e % 4] = f32_bits(bad[k]);
             T.m[0][0] = (e == 0) ? T.m[0][0] : 5.0f; /* an overflow elsewhere: NaN wins */
             CANARY(F);
-            DHT_EQ_INT(dh_frame_from_mat4_q(&F, &T), DH_ERR_NAN);
+            DHT_EQ_INT(dh_frame_from_mat4_q(&T, &F), DH_ERR_NAN);
             UNTOUCHED(F);
         }
     }
@@ -464,7 +464,7 @@ static void fixed_from_mat4_bad(void)
     T.m[3][1] = (float)-pos_lim;         /* fits: INT32_MIN */
     T.m[3][2] = 1.5f;
     CANARY(F);
-    DHT_EQ_INT(dh_frame_from_mat4_q(&F, &T), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_frame_from_mat4_q(&T, &F), DH_ERR_OVERFLOW);
     DHT_EQ_INT(F.r[0][0], INT32_MIN);
     DHT_EQ_INT(F.r[1][0], INT32_MAX);
     DHT_EQ_INT(F.r[2][0], INT32_MAX);
@@ -476,14 +476,14 @@ static void fixed_from_mat4_bad(void)
     DHT_EQ_INT(F.p[2], (int32_t)(1.5 * ldexp(1.0, DH_QPOS_FRAC)));
     /* overflow takes precedence over a bad bottom row */
     T.m[0][3] = 0.5f;
-    DHT_EQ_INT(dh_frame_from_mat4_q(&F, &T), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_frame_from_mat4_q(&T, &F), DH_ERR_OVERFLOW);
     /* bad bottom row alone: NOT_RIGID, F fully written from the top rows */
     for (e = 0; e < 4; e++) {
-        DHT_EQ_INT(dh_mat4_rotz_f32(&T, 90.0f), DH_OK);
+        DHT_EQ_INT(dh_mat4_rotz_f32(90.0f, &T), DH_OK);
         T.m[3][0] = 3.0f;
         T.m[e][3] = (e == 3) ? 2.0f : 1.0f;
         CANARY(F);
-        DHT_EQ_INT(dh_frame_from_mat4_q(&F, &T), DH_ERR_NOT_RIGID);
+        DHT_EQ_INT(dh_frame_from_mat4_q(&T, &F), DH_ERR_NOT_RIGID);
         DHT_EQ_INT(F.r[0][1], DH_Q30_ONE);
         DHT_EQ_INT(F.r[1][0], -DH_Q30_ONE);
         DHT_EQ_INT(F.r[0][0], 0);

@@ -71,7 +71,7 @@ static void kin_jacobian_bad(void)
         r2 = r;
         {
             dh_frame_q F;
-            dh_frame_trans_q(&F, 0, 0, DH_QPOS_ONE);
+            dh_frame_trans_q(0, 0, DH_QPOS_ONE, &F);
             DHT_EQ_INT(dh_robot_set_base_q(&r2, &F), DH_OK);
         }
         DHT_EQ_INT(jac(&r2, q, J, &T), DH_ERR_UNAVAILABLE);
@@ -81,7 +81,7 @@ static void kin_jacobian_bad(void)
         DHT_EQ_INT(dh_robot_init(&r2, DH_CONV_STANDARD), DH_OK);
         {
             dh_frame_q F;
-            dh_frame_trans_q(&F, 0, 0, DH_QPOS_ONE);
+            dh_frame_trans_q(0, 0, DH_QPOS_ONE, &F);
             DHT_EQ_INT(dh_robot_set_tool_q(&r2, &F), DH_OK);
         }
         DHT_EQ_INT(jac(&r2, q, J, &T), DH_ERR_UNAVAILABLE);
@@ -90,9 +90,9 @@ static void kin_jacobian_bad(void)
         DHT_EQ_INT(dh_robot_init(&r2, DH_CONV_MODIFIED), DH_OK);
         {
             dh_mat4_f32 B;
-            dh_mat4_trans_f32(&B, 1.0f, 2.0f, 3.0f);
+            dh_mat4_trans_f32(1.0f, 2.0f, 3.0f, &B);
             DHT_EQ_INT(dh_robot_set_base_f32(&r2, &B), DH_OK);
-            DHT_EQ_INT(dh_mat4_rotz_f32(&B, 90.0f), DH_OK);
+            DHT_EQ_INT(dh_mat4_rotz_f32(90.0f, &B), DH_OK);
             DHT_EQ_INT(dh_robot_set_tool_f32(&r2, &B), DH_OK);
         }
         CANARY(J);
@@ -119,11 +119,11 @@ static void kin_jacobian_bad(void)
          * base): OVERFLOW with J and T_end holding the computed values */
         DHT_EQ_INT(dh_robot_init(&r2, DH_CONV_STANDARD), DH_OK);
         DHT_EQ_INT(dh_robot_add_joint_f32(&r2, DH_JOINT_PRISMATIC, 0.0f, 0.0f, 0.0f, 0.0f), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_f32(&r2, DH_JOINT_REVOLUTE, 1.0f, 0.0f, 0.0f, 0.0f), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r2, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 1.0f, 0.0f), DH_OK);
         {
             dh_mat4_f32 B;
             float qh[2] = { 3e38f, 0.0f };
-            dh_mat4_scale_f32(&B, 4.0f, 4.0f, 4.0f);
+            dh_mat4_scale_f32(4.0f, 4.0f, 4.0f, &B);
             DHT_EQ_INT(dh_robot_set_base_f32(&r2, &B), DH_OK);
             CANARY(J);
             CANARY(T);
@@ -149,8 +149,8 @@ static void kin_rot_pose_error_bad(void)
     dh_vec3_f32 w;
     float e[6];
     unsigned k;
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&A, 1.0f, 2.0f, 3.0f, 40.0f), DH_OK);
-    DHT_EQ_INT(dh_mat4_rotx_f32(&B, -70.0f), DH_OK);
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(1.0f, 2.0f, 3.0f, 40.0f, &A), DH_OK);
+    DHT_EQ_INT(dh_mat4_rotx_f32(-70.0f, &B), DH_OK);
     for (k = 0; k < 9 * 4; k++) {
         set_rot3(&Ra, &A);
         set_rot3(&Rb, &B);
@@ -233,17 +233,17 @@ static void kin_ik_bad_args(void)
     DHT_EQ_INT(dh_robot_init(&r2, DH_CONV_STANDARD), DH_OK);
     CANARY(q);
     CANARY(res);
-    DHT_EQ_INT(dh_ik_f32(&r2, &target, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_ARG);
+    DHT_EQ_INT(dh_ik_f32(&r2, &target, q0, &p, work, sizeof work / sizeof work[0], q, &res), DH_ERR_ARG);
     UNTOUCHED(q);
     UNTOUCHED(res);
     r2 = r;
     r2.n = DH_MAX_JOINTS + 1u;
-    DHT_EQ_INT(dh_ik_f32(&r2, &target, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_ARG);
+    DHT_EQ_INT(dh_ik_f32(&r2, &target, q0, &p, work, sizeof work / sizeof work[0], q, &res), DH_ERR_ARG);
     UNTOUCHED(q);
     UNTOUCHED(res);
     /* workspace: NULL (documented as DH_ERR_ARG, not an assert) and too short */
-    DHT_EQ_INT(dh_ik_f32(&r, &target, q0, q, &p, NULL, 1000u, &res), DH_ERR_ARG);
-    DHT_EQ_INT(dh_ik_f32(&r, &target, q0, q, &p, work, DH_IK_WORK_FLOATS(NJ) - 1u, &res), DH_ERR_ARG);
+    DHT_EQ_INT(dh_ik_f32(&r, &target, q0, &p, NULL, 1000u, q, &res), DH_ERR_ARG);
+    DHT_EQ_INT(dh_ik_f32(&r, &target, q0, &p, work, DH_IK_WORK_FLOATS(NJ) - 1u, q, &res), DH_ERR_ARG);
     UNTOUCHED(q);
     UNTOUCHED(res);
     /* parameters */
@@ -264,7 +264,7 @@ static void kin_ik_bad_args(void)
         case 11: pb.w_rot = bad_value(1); break;
         default: pb.w_rot = 1e20f; break; /* w_rot^2 overflows */
         }
-        DHT_EQ_INT(dh_ik_f32(&r, &target, q0, q, &pb, work, sizeof work / sizeof work[0], &res), DH_ERR_ARG);
+        DHT_EQ_INT(dh_ik_f32(&r, &target, q0, &pb, work, sizeof work / sizeof work[0], q, &res), DH_ERR_ARG);
         UNTOUCHED(q);
         UNTOUCHED(res);
     }
@@ -272,7 +272,7 @@ static void kin_ik_bad_args(void)
     for (k = 0; k < 16 * 4; k++) {
         dh_mat4_f32 tb = target;
         tb.m[(k / 4) / 4][(k / 4) % 4] = bad_value(k);
-        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_NAN);
+        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, &p, work, sizeof work / sizeof work[0], q, &res), DH_ERR_NAN);
         UNTOUCHED(q);
         UNTOUCHED(res);
     }
@@ -280,7 +280,7 @@ static void kin_ik_bad_args(void)
         float qb[NJ];
         memcpy(qb, q0, sizeof qb);
         qb[k / 4] = bad_value(k);
-        DHT_EQ_INT(dh_ik_f32(&r, &target, qb, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_NAN);
+        DHT_EQ_INT(dh_ik_f32(&r, &target, qb, &p, work, sizeof work / sizeof work[0], q, &res), DH_ERR_NAN);
         UNTOUCHED(q);
         UNTOUCHED(res);
     }
@@ -295,13 +295,13 @@ static void kin_ik_bad_args(void)
             tb.m[0][1] = -tb.m[0][1];
             tb.m[0][2] = -tb.m[0][2];
         }
-        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_NOT_RIGID);
+        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, &p, work, sizeof work / sizeof work[0], q, &res), DH_ERR_NOT_RIGID);
         UNTOUCHED(q);
         UNTOUCHED(res);
         /* position-only IK does not read the target rotation */
         pb = p;
         pb.mask = DH_IK_POSITION;
-        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &pb, work, sizeof work / sizeof work[0], &res), DH_OK);
+        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, &pb, work, sizeof work / sizeof work[0], q, &res), DH_OK);
         CANARY(q);
         CANARY(res);
     }
@@ -313,7 +313,7 @@ static void kin_ik_bad_args(void)
         F.p[0] = 1;
         DHT_EQ_INT(dh_robot_set_tool_q(&r2, &F), DH_OK);
     }
-    DHT_EQ_INT(dh_ik_f32(&r2, &target, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_UNAVAILABLE);
+    DHT_EQ_INT(dh_ik_f32(&r2, &target, q0, &p, work, sizeof work / sizeof work[0], q, &res), DH_ERR_UNAVAILABLE);
     UNTOUCHED(q);
     UNTOUCHED(res);
     /* a finite target so far away that the squared error overflows is out
@@ -326,7 +326,7 @@ static void kin_ik_bad_args(void)
         tb.m[3][0] = 1e30f;
         CANARY(q);
         CANARY(res);
-        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_UNREACHABLE);
+        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, &p, work, sizeof work / sizeof work[0], q, &res), DH_ERR_UNREACHABLE);
         for (j = 0; j < NJ; j++) DHT_EQ_F32_BITS(q[j], q0[j]);
         DHT_EQ_INT(res.iterations, 0);
         DHT_EQ_INT(dh_fk_f32(&r, q0, &T0), DH_OK);
@@ -335,14 +335,14 @@ static void kin_ik_bad_args(void)
         /* farther than FLT_MAX in norm: err_pos saturates to FLT_MAX */
         tb.m[3][0] = 3e38f;
         tb.m[3][1] = -3e38f;
-        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_UNREACHABLE);
+        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, &p, work, sizeof work / sizeof work[0], q, &res), DH_ERR_UNREACHABLE);
         DHT_EQ_F32_BITS(res.err_pos, FLT_MAX);
         /* position only, the same */
         pb = p;
         pb.mask = DH_IK_POSITION;
         tb.m[3][1] = 0.0f;
         tb.m[3][0] = -2e20f;
-        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &pb, work, sizeof work / sizeof work[0], &res), DH_ERR_UNREACHABLE);
+        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, &pb, work, sizeof work / sizeof work[0], q, &res), DH_ERR_UNREACHABLE);
         DHT_NEAR(res.err_pos, 2e20, 1e15);
         (void)T0;
     }
@@ -353,7 +353,7 @@ static void kin_ik_bad_args(void)
         dh_mat4_f32 tb;
         float qp[2] = { 0.0f, 0.0f };
         DHT_EQ_INT(dh_robot_init(&rp, DH_CONV_STANDARD), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_f32(&rp, DH_JOINT_REVOLUTE, 0.5f, 0.0f, 90.0f, 0.0f), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&rp, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.5f, 90.0f), DH_OK);
         DHT_EQ_INT(dh_robot_add_joint_f32(&rp, DH_JOINT_PRISMATIC, 0.0f, 0.0f, 0.0f, 0.0f), DH_OK);
         dh_mat4_identity_f32(&tb);
         tb.m[3][2] = 1e30f;
@@ -361,7 +361,7 @@ static void kin_ik_bad_args(void)
         pb.mask = DH_IK_POSITION;
         CANARY(q);
         CANARY(res);
-        DHT_EQ_INT(dh_ik_f32(&rp, &tb, qp, q, &pb, work, sizeof work / sizeof work[0], &res), DH_ERR_OVERFLOW);
+        DHT_EQ_INT(dh_ik_f32(&rp, &tb, qp, &pb, work, sizeof work / sizeof work[0], q, &res), DH_ERR_OVERFLOW);
         UNTOUCHED(q);
         UNTOUCHED(res);
     }
@@ -370,7 +370,7 @@ static void kin_ik_bad_args(void)
     pb.w_rot = 1e19f;
     CANARY(q);
     CANARY(res);
-    DHT_EQ_INT(dh_ik_f32(&r, &target, q0, q, &pb, work, sizeof work / sizeof work[0], &res), DH_ERR_ARG);
+    DHT_EQ_INT(dh_ik_f32(&r, &target, q0, &pb, work, sizeof work / sizeof work[0], q, &res), DH_ERR_ARG);
     UNTOUCHED(q);
     UNTOUCHED(res);
 }
@@ -408,10 +408,10 @@ static void kin_ik_not_rigid(void)
         }
         CANARY(q);
         CANARY(res);
-        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_NOT_RIGID);
+        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, &p, work, sizeof work / sizeof work[0], q, &res), DH_ERR_NOT_RIGID);
         UNTOUCHED(q);
         UNTOUCHED(res);
-        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &pp, work, sizeof work / sizeof work[0], &res), DH_ERR_NOT_RIGID);
+        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, &pp, work, sizeof work / sizeof work[0], q, &res), DH_ERR_NOT_RIGID);
         UNTOUCHED(q);
         UNTOUCHED(res);
     }
@@ -420,8 +420,8 @@ static void kin_ik_not_rigid(void)
         dh_mat4_f32 P;
         dh_mat4_identity_f32(&P);
         P.m[2][3] = -0.5f;
-        DHT_EQ_INT(dh_ik_f32(&r, &P, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_NOT_RIGID);
-        DHT_EQ_INT(dh_ik_f32(&r, &P, q0, q, &pp, work, sizeof work / sizeof work[0], &res), DH_ERR_NOT_RIGID);
+        DHT_EQ_INT(dh_ik_f32(&r, &P, q0, &p, work, sizeof work / sizeof work[0], q, &res), DH_ERR_NOT_RIGID);
+        DHT_EQ_INT(dh_ik_f32(&r, &P, q0, &pp, work, sizeof work / sizeof work[0], q, &res), DH_ERR_NOT_RIGID);
         UNTOUCHED(q);
         UNTOUCHED(res);
     }
@@ -432,23 +432,23 @@ static void kin_ik_not_rigid(void)
         CANARY(q);
         CANARY(res);
         if (k == 0) {
-            DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_NOT_RIGID);
+            DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, &p, work, sizeof work / sizeof work[0], q, &res), DH_ERR_NOT_RIGID);
             UNTOUCHED(q);
             UNTOUCHED(res);
         } else {
             /* within the tolerance: accepted, solved to about the skew */
-            dh_status st = dh_ik_f32(&r, &tb, q0, q, &p, work, sizeof work / sizeof work[0], &res);
+            dh_status st = dh_ik_f32(&r, &tb, q0, &p, work, sizeof work / sizeof work[0], q, &res);
             DHT_TRUE(!is_canary(&res, sizeof res));
             DHT_TRUE(st == DH_OK || st == DH_ERR_UNREACHABLE);
         }
-        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, q, &pp, work, sizeof work / sizeof work[0], &res), DH_OK);
+        DHT_EQ_INT(dh_ik_f32(&r, &tb, q0, &pp, work, sizeof work / sizeof work[0], q, &res), DH_OK);
     }
     /* a non-rigid base makes the end rotation non-rigid: NOT_RIGID in full
      * mode (a(dR) undefined), solved in position-only mode */
     {
         dh_robot rs = r;
         dh_mat4_f32 B, tb;
-        dh_mat4_scale_f32(&B, 1.5f, 1.5f, 1.5f);
+        dh_mat4_scale_f32(1.5f, 1.5f, 1.5f, &B);
         DHT_EQ_INT(dh_robot_set_base_f32(&rs, &B), DH_OK);
         dh_mat4_f32 Ts;
         float qt[NJ] = { 20.0f, -30.0f, 100.0f, 10.0f, 30.0f, 10.0f };   /* within the limits */
@@ -457,10 +457,10 @@ static void kin_ik_not_rigid(void)
         for (k = 0; k < 3; k++) tb.m[3][k] = Ts.m[3][k];
         CANARY(q);
         CANARY(res);
-        DHT_EQ_INT(dh_ik_f32(&rs, &tb, q0, q, &p, work, sizeof work / sizeof work[0], &res), DH_ERR_NOT_RIGID);
+        DHT_EQ_INT(dh_ik_f32(&rs, &tb, q0, &p, work, sizeof work / sizeof work[0], q, &res), DH_ERR_NOT_RIGID);
         UNTOUCHED(q);
         UNTOUCHED(res);
-        DHT_EQ_INT(dh_ik_f32(&rs, &tb, q0, q, &pp, work, sizeof work / sizeof work[0], &res), DH_OK);
+        DHT_EQ_INT(dh_ik_f32(&rs, &tb, q0, &pp, work, sizeof work / sizeof work[0], q, &res), DH_OK);
     }
 }
 
@@ -501,11 +501,11 @@ static void kin_ik_unreachable(void)
         dir[1] = dht_rand_uniform(-1, 1);
         dir[2] = dht_rand_uniform(-1, 1);
         n = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-        DHT_EQ_INT(dh_mat4_rotz_f32(&target, 30.0f), DH_OK);
+        DHT_EQ_INT(dh_mat4_rotz_f32(30.0f, &target), DH_OK);
         for (i = 0; i < 3; i++) target.m[3][i] = (float)(dist * dir[i] / n);
         ik_setup(&p, &res);
         p.mask = (it % 2u) ? DH_IK_POSITION : DH_IK_FULL;
-        st = dh_ik_f32(&r, &target, q0, q, &p, work, sizeof work / sizeof work[0], &res);
+        st = dh_ik_f32(&r, &target, q0, &p, work, sizeof work / sizeof work[0], q, &res);
         /* beyond the reach bound: UNREACHABLE, decided early (a few
          * attempts, not the whole step budget) */
         DHT_EQ_INT(st, DH_ERR_UNREACHABLE);
@@ -519,7 +519,7 @@ static void kin_ik_unreachable(void)
         DHT_TRUE(res.err_pos >= dist - 2.0);
         /* q aliasing q0 gives bitwise the same answer */
         memcpy(qa, q0, sizeof qa);
-        DHT_EQ_INT(dh_ik_f32(&r, &target, qa, qa, &p, work, sizeof work / sizeof work[0], &res2), st);
+        DHT_EQ_INT(dh_ik_f32(&r, &target, qa, &p, work, sizeof work / sizeof work[0], qa, &res2), st);
         DHT_TRUE(memcmp(qa, q, sizeof q) == 0);
         DHT_TRUE(memcmp(&res, &res2, sizeof res) == 0);
     }
@@ -532,7 +532,7 @@ static void kin_ik_unreachable(void)
         DHT_EQ_INT(dh_fk_f32(&r, qt, &target), DH_OK);
         ik_setup(&p, &res);
         p.max_iter = 1u;
-        DHT_TRUE(dh_ik_f32(&r, &target, q0, q, &p, work, sizeof work / sizeof work[0], &res) != DH_OK);
+        DHT_TRUE(dh_ik_f32(&r, &target, q0, &p, work, sizeof work / sizeof work[0], q, &res) != DH_OK);
         e0 = ref_pos_err(&r, &target, q0);
         DHT_TRUE(res.err_pos <= e0 * (1.0 + 1e-6));
         DHT_EQ_INT(res.iterations, 1u);
@@ -544,7 +544,7 @@ static void kin_ik_unreachable(void)
         float qbad[NJ] = { 1e30f, -1e30f, 500.0f, -300.0f, 1000.0f, 1e20f };
         DHT_EQ_INT(dh_fk_f32(&r, qt, &target), DH_OK);
         ik_setup(&p, &res);
-        (void)dh_ik_f32(&r, &target, qbad, q, &p, work, sizeof work / sizeof work[0], &res);
+        (void)dh_ik_f32(&r, &target, qbad, &p, work, sizeof work / sizeof work[0], q, &res);
         DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_OK);
     }
 }
@@ -568,10 +568,10 @@ static void kin_ik_status(void)
      * < 1.1 m): UNREACHABLE after a few attempts, not NO_CONVERGENCE after
      * the whole budget; the best effort is the stretched arm */
     for (mode = 0; mode < 2; mode++) {
-        dh_mat4_trans_f32(&target, 10.0f, 0.0f, 0.0f);
+        dh_mat4_trans_f32(10.0f, 0.0f, 0.0f, &target);
         ik_setup(&p, &res);
         p.mask = mode ? DH_IK_POSITION : DH_IK_FULL;
-        st = dh_ik_f32(&r, &target, q0, q, &p, work, sizeof work / sizeof work[0], &res);
+        st = dh_ik_f32(&r, &target, q0, &p, work, sizeof work / sizeof work[0], q, &res);
         dht_printf("puma trans(10,0,0) %s: status %d after %lu steps, residual %.6g m\n", mode ? "position" : "full",
                    (int)st, (unsigned long)res.iterations, (double)res.err_pos);
         DHT_EQ_INT(st, DH_ERR_UNREACHABLE);
@@ -589,7 +589,7 @@ static void kin_ik_status(void)
         for (m = 1; m <= 3; m++) {
             ik_setup(&p, &res);
             p.max_iter = m;
-            DHT_EQ_INT(dh_ik_f32(&r, &target, q0, q, &p, work, sizeof work / sizeof work[0], &res),
+            DHT_EQ_INT(dh_ik_f32(&r, &target, q0, &p, work, sizeof work / sizeof work[0], q, &res),
                        DH_ERR_NO_CONVERGENCE);
             DHT_EQ_INT(res.iterations, m);
         }
@@ -598,22 +598,22 @@ static void kin_ik_status(void)
      * (planar 2R, both joints limited so that neither elbow solution is
      * admissible): every attempt stalls, whatever the budget -> UNREACHABLE */
     DHT_EQ_INT(dh_robot_init(&r2, DH_CONV_STANDARD), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r2, DH_JOINT_REVOLUTE, 0.6f, 0, 0, 0), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r2, DH_JOINT_REVOLUTE, 0.4f, 0, 0, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r2, DH_JOINT_REVOLUTE, 0, 0, 0.6f, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r2, DH_JOINT_REVOLUTE, 0, 0, 0.4f, 0), DH_OK);
     DHT_EQ_INT(dh_robot_set_limits_f32(&r2, 0, 50.0f, 90.0f), DH_OK);
     DHT_EQ_INT(dh_robot_set_limits_f32(&r2, 1, 0.0f, 150.0f), DH_OK);
     {
         float qa[2] = { 35.0f, -70.0f }, q2[2], qs[2] = { 60.0f, 10.0f };
         dh_robot rf;
         DHT_EQ_INT(dh_robot_init(&rf, DH_CONV_STANDARD), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_f32(&rf, DH_JOINT_REVOLUTE, 0.6f, 0, 0, 0), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_f32(&rf, DH_JOINT_REVOLUTE, 0.4f, 0, 0, 0), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&rf, DH_JOINT_REVOLUTE, 0, 0, 0.6f, 0), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&rf, DH_JOINT_REVOLUTE, 0, 0, 0.4f, 0), DH_OK);
         DHT_EQ_INT(dh_fk_f32(&rf, qa, &target), DH_OK);
         for (mode = 0; mode < 3; mode++) {
             ik_setup(&p, &res);
             p.mask = DH_IK_PX | DH_IK_PY;
             p.restarts = (mode == 0) ? 0u : (mode == 1) ? 20u : 200u;
-            st = dh_ik_f32(&r2, &target, qs, q2, &p, work, sizeof work / sizeof work[0], &res);
+            st = dh_ik_f32(&r2, &target, qs, &p, work, sizeof work / sizeof work[0], q2, &res);
             dht_printf("2R outside its limits, %lu restarts: status %d after %lu steps, residual %.4g m\n",
                        (unsigned long)p.restarts, (int)st, (unsigned long)res.iterations, (double)res.err_pos);
             DHT_EQ_INT(st, DH_ERR_UNREACHABLE);

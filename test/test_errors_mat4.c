@@ -39,8 +39,8 @@ static void mat4_rot_nan_inf_huge(void)
             dh_mat4_f32 T;
             dh_status st;
             CANARY(T);
-            st = (ax == 0) ? dh_mat4_rotx_f32(&T, bad_value(k))
-               : (ax == 1) ? dh_mat4_roty_f32(&T, bad_value(k)) : dh_mat4_rotz_f32(&T, bad_value(k));
+            st = (ax == 0) ? dh_mat4_rotx_f32(bad_value(k), &T)
+               : (ax == 1) ? dh_mat4_roty_f32(bad_value(k), &T) : dh_mat4_rotz_f32(bad_value(k), &T);
             DHT_EQ_INT(st, DH_ERR_NAN);
             UNTOUCHED(T);
         }
@@ -50,13 +50,13 @@ static void mat4_rot_nan_inf_huge(void)
         for (k = 0; k < sizeof huge / sizeof huge[0]; k++) {
             dh_mat4_f32 T;
             dhr_mat4 R;
-            DHT_EQ_INT(dh_mat4_rotz_f32(&T, huge[k]), DH_OK);
+            DHT_EQ_INT(dh_mat4_rotz_f32(huge[k], &T), DH_OK);
             dhr_rotz(&R, fmod((double)huge[k], 360.0));
             DHT_TRUE(dhr_max_abs_diff(&T, &R) <= 6.2e-8);
-            DHT_EQ_INT(dh_mat4_rotx_f32(&T, huge[k]), DH_OK);
+            DHT_EQ_INT(dh_mat4_rotx_f32(huge[k], &T), DH_OK);
             dhr_rotx(&R, fmod((double)huge[k], 360.0));
             DHT_TRUE(dhr_max_abs_diff(&T, &R) <= 6.2e-8);
-            DHT_EQ_INT(dh_mat4_roty_f32(&T, huge[k]), DH_OK);
+            DHT_EQ_INT(dh_mat4_roty_f32(huge[k], &T), DH_OK);
             dhr_roty(&R, fmod((double)huge[k], 360.0));
             DHT_TRUE(dhr_max_abs_diff(&T, &R) <= 6.2e-8);
         }
@@ -74,7 +74,7 @@ static void mat4_rot_axis_bad(void)
             dh_mat4_f32 T;
             a[pos] = bad_value(k);
             CANARY(T);
-            DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, a[0], a[1], a[2], a[3]), DH_ERR_NAN);
+            DHT_EQ_INT(dh_mat4_rot_axis_f32(a[0], a[1], a[2], a[3], &T), DH_ERR_NAN);
             UNTOUCHED(T);
         }
     }
@@ -87,13 +87,13 @@ static void mat4_rot_axis_bad(void)
         for (k = 0; k < sizeof zero_axes / sizeof zero_axes[0]; k++) {
             dh_mat4_f32 T;
             CANARY(T);
-            DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, f32_bits(zero_axes[k][0]), f32_bits(zero_axes[k][1]),
-                                            f32_bits(zero_axes[k][2]), 30.0f),
+            DHT_EQ_INT(dh_mat4_rot_axis_f32(f32_bits(zero_axes[k][0]), f32_bits(zero_axes[k][1]), f32_bits(zero_axes[k][2]),
+                                            30.0f, &T),
                        DH_ERR_ZERO_AXIS);
             UNTOUCHED(T);
             /* the zero axis is reported even with a NaN-free but huge angle */
-            DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, f32_bits(zero_axes[k][0]), f32_bits(zero_axes[k][1]),
-                                            f32_bits(zero_axes[k][2]), 1e30f),
+            DHT_EQ_INT(dh_mat4_rot_axis_f32(f32_bits(zero_axes[k][0]), f32_bits(zero_axes[k][1]), f32_bits(zero_axes[k][2]),
+                                            1e30f, &T),
                        DH_ERR_ZERO_AXIS);
             UNTOUCHED(T);
         }
@@ -104,7 +104,7 @@ static void mat4_rot_axis_bad(void)
         for (k = 0; k < 4; k++) {
             dh_mat4_f32 T;
             dhr_mat4 R;
-            DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, mags[k], mags[k], mags[k], 70.0f), DH_OK);
+            DHT_EQ_INT(dh_mat4_rot_axis_f32(mags[k], mags[k], mags[k], 70.0f, &T), DH_OK);
             dhr_rot_axis(&R, (mags[k] > 0) ? 1.0 : -1.0, (mags[k] > 0) ? 1.0 : -1.0,
                          (mags[k] > 0) ? 1.0 : -1.0, 70.0);
             DHT_TRUE(dhr_max_abs_diff(&T, &R) <= 5 * U24);
@@ -121,12 +121,12 @@ static void mat4_persp_bad(void)
     unsigned k;
     for (k = 0; k < sizeof bad_axes / sizeof bad_axes[0]; k++) {
         CANARY(T);
-        DHT_EQ_INT(dh_mat4_persp_f32(&T, bad_axes[k], 10.0f), DH_ERR_ARG);
+        DHT_EQ_INT(dh_mat4_persp_f32(bad_axes[k], 10.0f, &T), DH_ERR_ARG);
         UNTOUCHED(T);
     }
     for (k = 0; k < 4; k++) {
         CANARY(T);
-        DHT_EQ_INT(dh_mat4_persp_f32(&T, 1, bad_value(k)), DH_ERR_NAN);
+        DHT_EQ_INT(dh_mat4_persp_f32(1, bad_value(k), &T), DH_ERR_NAN);
         UNTOUCHED(T);
     }
     {
@@ -134,12 +134,12 @@ static void mat4_persp_bad(void)
         static const uint32_t dom[] = { 0u, 0x80000000u, 0x00000001u, 0x80200000u, 0x00200000u };
         for (k = 0; k < sizeof dom / sizeof dom[0]; k++) {
             CANARY(T);
-            DHT_EQ_INT(dh_mat4_persp_f32(&T, 2, f32_bits(dom[k])), DH_ERR_DOMAIN);
+            DHT_EQ_INT(dh_mat4_persp_f32(2, f32_bits(dom[k]), &T), DH_ERR_DOMAIN);
             UNTOUCHED(T);
         }
     }
     /* 2^-127 (denormal, but 1/f = 2^127 is finite): accepted */
-    DHT_EQ_INT(dh_mat4_persp_f32(&T, 0, f32_bits(0x00400000u)), DH_OK);
+    DHT_EQ_INT(dh_mat4_persp_f32(0, f32_bits(0x00400000u), &T), DH_OK);
     DHT_EQ_F32_BITS(DH_M4(&T, 3, 0), -1.7014118e38f);
     DHT_EQ_F32_BITS(DH_M4(&T, 3, 3), 1.0f);
 }
@@ -161,7 +161,7 @@ static void mat4_apply_point_h_bad(void)
     DHT_EQ_INT(dh_mat4_apply_point_h_f32(&T, &u, &v), DH_ERR_DOMAIN);
     UNTOUCHED(v);
     /* perspective point on the focal plane: w = 1 - y/f = 0 */
-    DHT_EQ_INT(dh_mat4_persp_f32(&T, 1, 4.0f), DH_OK);
+    DHT_EQ_INT(dh_mat4_persp_f32(1, 4.0f, &T), DH_OK);
     u.x = 1.0f; u.y = 4.0f; u.z = 3.0f; u.w = 1.0f;
     DHT_EQ_INT(dh_mat4_apply_point_h_f32(&T, &u, &v), DH_ERR_DOMAIN);
     UNTOUCHED(v);
@@ -252,9 +252,9 @@ static void mat4_inv_bad(void)
             set_identity(&T);
             T.m[e / 4][e % 4] = bad_value(k);
             CANARY(X);
-            DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_ERR_NAN);
+            DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_ERR_NAN);
             UNTOUCHED(X);
-            DHT_EQ_INT(dh_mat4_inv_auto_f32(&X, &T), DH_ERR_NAN);
+            DHT_EQ_INT(dh_mat4_inv_auto_f32(&T, &X), DH_ERR_NAN);
             UNTOUCHED(X);
             {
                 dh_mat4_f32 A = T;
@@ -266,12 +266,12 @@ static void mat4_inv_bad(void)
     /* zero and denormal matrices */
     memset(&T, 0, sizeof T);
     CANARY(X);
-    DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_ERR_SINGULAR);
+    DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_ERR_SINGULAR);
     UNTOUCHED(X);
     for (e = 0; e < 16; e++) T.m[e / 4][e % 4] = (e % 5 == 0) ? f32_bits(0x007FFFFFu) : 0.0f;
-    DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_ERR_SINGULAR);
+    DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_ERR_SINGULAR);
     UNTOUCHED(X);
-    DHT_EQ_INT(dh_mat4_inv_auto_f32(&X, &T), DH_ERR_SINGULAR);
+    DHT_EQ_INT(dh_mat4_inv_auto_f32(&T, &X), DH_ERR_SINGULAR);
     UNTOUCHED(X);
     /* exactly singular: rank 3, 2, 1 at scales 2^-100 .. 2^100 */
     for (it = 0; it < DHT_ITER(3000u); it++) {
@@ -295,7 +295,7 @@ static void mat4_inv_bad(void)
             for (r = 0; r < 4; r++) M.m[c][r] = ldexp(M.m[c][r], sc);
         dhr_to_f32(&T, &M);
         CANARY(X);
-        DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_ERR_SINGULAR);
+        DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_ERR_SINGULAR);
         UNTOUCHED(X);
         {
             dh_plane_f32 P, Q;
@@ -310,7 +310,7 @@ static void mat4_inv_bad(void)
         const int sc = (int)(dht_rand_u32() % 121u) - 60;
         make_conditioned(&T, 1.0, dht_rand_uniform(1e-7, 1e-6), 1.0, sc);
         CANARY(X);
-        DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_ERR_SINGULAR);
+        DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_ERR_SINGULAR);
         UNTOUCHED(X);
     }
     /* well conditioned (cond <= ~1e3) at any scale: accepted and accurate,
@@ -323,7 +323,7 @@ static void mat4_inv_bad(void)
                          dht_rand_uniform(0.5, 2.0), sc);
         dhr_from_f32(&D, &T);
         cd = cond1(&D, &Di);
-        DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_OK);
+        DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_OK);
         DHT_TRUE_MSG(dhr_max_abs_diff(&X, &Di) <= 5.5 * cd * U24 * dhr_max_abs(&Di),
                      "cond %.3g scale 2^%d err %.3g", cd, sc, dhr_max_abs_diff(&X, &Di));
     }
@@ -335,9 +335,9 @@ static void mat4_inv_bad(void)
     T.m[2][2] = ldexpf(1.0f, -120);
     T.m[3][3] = f32_bits(0x00100000u); /* 2^-130, denormal */
     CANARY(X);
-    DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_ERR_OVERFLOW);
     UNTOUCHED(X);
-    DHT_EQ_INT(dh_mat4_inv_auto_f32(&X, &T), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_mat4_inv_auto_f32(&T, &X), DH_ERR_OVERFLOW);
     UNTOUCHED(X);
     /* aliasing out == T on the error path leaves T as it was */
     {
@@ -365,7 +365,7 @@ static void mat4_inv_rigid_nonrigid(void)
             /* bottom row not 0 0 0 1: not read by the rigid inverse */
             T.m[0][3] = 0.25f;
         }
-        dh_mat4_inv_rigid_f32(&X, &T);
+        dh_mat4_inv_rigid_f32(&T, &X);
         /* documented formula, evaluated in double */
         for (c = 0; c < 3; c++)
             for (r = 0; r < 3; r++) DHT_EQ_F32_BITS(X.m[c][r], T.m[r][c]);
@@ -378,7 +378,7 @@ static void mat4_inv_rigid_nonrigid(void)
         DHT_EQ_F32_BITS(X.m[3][3], 1.0f);
         /* check_rigid rejects it; inv_auto gives the true inverse */
         DHT_EQ_INT(dh_mat4_check_rigid_f32(&T, DH_MAT4_RIGID_TOL), DH_ERR_NOT_RIGID);
-        DHT_EQ_INT(dh_mat4_inv_auto_f32(&Y, &T), DH_OK);
+        DHT_EQ_INT(dh_mat4_inv_auto_f32(&T, &Y), DH_OK);
         dhr_from_f32(&D, &T);
         DHT_TRUE(dhr_inv(&Di, &D));
         DHT_TRUE(dhr_max_abs_diff(&Y, &Di) <= 5.5 * cond1(&D, &Di) * U24 * dhr_max_abs(&Di));
@@ -453,7 +453,7 @@ static void mat4_axis_angle_bad(void)
     {
         static const float scale[] = { 2.0f, 0.5f, 1.001f, 0.0f, -1.0f };
         for (e = 0; e < sizeof scale / sizeof scale[0]; e++) {
-            DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, 1.0f, 2.0f, 3.0f, 50.0f), DH_OK);
+            DHT_EQ_INT(dh_mat4_rot_axis_f32(1.0f, 2.0f, 3.0f, 50.0f, &T), DH_OK);
             for (b = 0; b < 9; b++) T.m[b / 3][b % 3] *= scale[e];
             CANARY(k);
             CANARY(th);
@@ -474,7 +474,7 @@ static void mat4_axis_angle_bad(void)
     UNTOUCHED(k);
     UNTOUCHED(th);
     /* non-rigid p and bottom row are not examined */
-    DHT_EQ_INT(dh_mat4_rotz_f32(&T, 90.0f), DH_OK);
+    DHT_EQ_INT(dh_mat4_rotz_f32(90.0f, &T), DH_OK);
     T.m[3][0] = bad_value(0);
     T.m[0][3] = 7.0f;
     DHT_EQ_INT(dh_mat4_to_axis_angle_f32(&T, &k, &th), DH_OK);
@@ -482,7 +482,7 @@ static void mat4_axis_angle_bad(void)
     DHT_EQ_F32_BITS(k.z, 1.0f);
     /* within the tolerance (deviation 5e-5): accepted as is, the axis is
      * still a unit vector and the angle within the perturbation */
-    DHT_EQ_INT(dh_mat4_rotz_f32(&T, 40.0f), DH_OK);
+    DHT_EQ_INT(dh_mat4_rotz_f32(40.0f, &T), DH_OK);
     T.m[0][0] *= 1.00005f;
     DHT_EQ_INT(dh_mat4_to_axis_angle_f32(&T, &k, &th), DH_OK);
     DHT_NEAR(th, 40.0, 0.01);
@@ -517,17 +517,17 @@ static void mat4_apply_plane_bad(void)
         DHT_EQ_INT(dh_mat4_apply_plane_f32(&T, &P, &Q), DH_ERR_NAN);
         UNTOUCHED(Q);
     }
-    dh_mat4_scale_f32(&T, 1.0f, 0.0f, 1.0f);
+    dh_mat4_scale_f32(1.0f, 0.0f, 1.0f, &T);
     CANARY(Q);
     DHT_EQ_INT(dh_mat4_apply_plane_f32(&T, &P, &Q), DH_ERR_SINGULAR);
     UNTOUCHED(Q);
     /* alias: Q == P, translation by (0, 0, 3): z = 2 -> z = 5 */
-    dh_mat4_trans_f32(&T, 0.0f, 0.0f, 3.0f);
+    dh_mat4_trans_f32(0.0f, 0.0f, 3.0f, &T);
     DHT_EQ_INT(dh_mat4_apply_plane_f32(&T, &P, &P), DH_OK);
     DHT_EQ_F32_BITS(P.c, 1.0f);
     DHT_EQ_F32_BITS(P.d, -5.0f);
     /* error path with Q == P: P unchanged */
-    dh_mat4_scale_f32(&T, 0.0f, 1.0f, 1.0f);
+    dh_mat4_scale_f32(0.0f, 1.0f, 1.0f, &T);
     Q = P;
     DHT_EQ_INT(dh_mat4_apply_plane_f32(&T, &P, &P), DH_ERR_SINGULAR);
     DHT_TRUE(memcmp(&P, &Q, sizeof P) == 0);
@@ -545,23 +545,23 @@ static void mat4_no_status_ieee_and_alias(void)
     /* NaN in A(1, 2) reaches exactly row 1 of A*B (full product) */
     set_identity(&A);
     DH_M4(&A, 1, 2) = bad_value(0);
-    DHT_EQ_INT(dh_mat4_rotz_f32(&B, 30.0f), DH_OK);
-    dh_mat4_mul_f32(&C, &A, &B);
+    DHT_EQ_INT(dh_mat4_rotz_f32(30.0f, &B), DH_OK);
+    dh_mat4_mul_f32(&A, &B, &C);
     for (c = 0; c < 4; c++)
         for (r = 0; r < 4; r++) {
             const int nan_expected = (r == 1); /* NaN * 0 is NaN too */
             DHT_EQ_INT(DH_M4(&C, r, c) != DH_M4(&C, r, c), nan_expected);
         }
     /* the affine product ignores the bottom rows, even NaN */
-    DHT_EQ_INT(dh_mat4_rotx_f32(&A, 20.0f), DH_OK);
+    DHT_EQ_INT(dh_mat4_rotx_f32(20.0f, &A), DH_OK);
     A.m[3][0] = 1.0f;
     D = A;
     D.m[0][3] = bad_value(0);
     D.m[3][3] = bad_value(1);
     E = B;
     E.m[1][3] = bad_value(2);
-    dh_mat4_mul_affine_f32(&C, &D, &E);
-    dh_mat4_mul_f32(&D, &A, &B);
+    dh_mat4_mul_affine_f32(&D, &E, &C);
+    dh_mat4_mul_f32(&A, &B, &D);
     DHT_TRUE(dh_mat4_isfinite_f32(&C));
     for (c = 0; c < 4; c++)
         for (r = 0; r < 4; r++) DHT_NEAR(C.m[c][r], D.m[c][r], 0.0);
@@ -578,12 +578,12 @@ static void mat4_no_status_ieee_and_alias(void)
         dhr_rand_general(&RB);
         dhr_to_f32(&A, &RA);
         dhr_to_f32(&B, &RB);
-        dh_mat4_mul_f32(&C, &A, &B);
+        dh_mat4_mul_f32(&A, &B, &C);
         D = A;
-        dh_mat4_mul_f32(&D, &D, &B);
+        dh_mat4_mul_f32(&D, &B, &D);
         DHT_TRUE(memcmp(&C, &D, sizeof C) == 0);
         D = B;
-        dh_mat4_mul_f32(&D, &A, &D);
+        dh_mat4_mul_f32(&A, &D, &D);
         DHT_TRUE(memcmp(&C, &D, sizeof C) == 0);
         D = A;
         dh_mat4_postmul_f32(&D, &B);
@@ -591,18 +591,18 @@ static void mat4_no_status_ieee_and_alias(void)
         D = B;
         dh_mat4_premul_f32(&D, &A);
         DHT_TRUE(memcmp(&C, &D, sizeof C) == 0);
-        dh_mat4_mul_f32(&C, &A, &A);
+        dh_mat4_mul_f32(&A, &A, &C);
         D = A;
         dh_mat4_mul_f32(&D, &D, &D);
         DHT_TRUE(memcmp(&C, &D, sizeof C) == 0);
-        dh_mat4_mul_affine_f32(&C, &A, &B);
+        dh_mat4_mul_affine_f32(&A, &B, &C);
         D = A;
-        dh_mat4_mul_affine_f32(&D, &D, &B);
+        dh_mat4_mul_affine_f32(&D, &B, &D);
         DHT_TRUE(memcmp(&C, &D, sizeof C) == 0);
         D = B;
-        dh_mat4_mul_affine_f32(&D, &A, &D);
+        dh_mat4_mul_affine_f32(&A, &D, &D);
         DHT_TRUE(memcmp(&C, &D, sizeof C) == 0);
-        dh_mat4_inv_rigid_f32(&C, &A);
+        dh_mat4_inv_rigid_f32(&A, &C);
         D = A;
         dh_mat4_inv_rigid_f32(&D, &D);
         DHT_TRUE(memcmp(&C, &D, sizeof C) == 0);
@@ -615,11 +615,11 @@ static void mat4_no_status_ieee_and_alias(void)
         DHT_TRUE(memcmp(&u, &v, sizeof u) == 0);
     }
     /* noap may read its vectors from inside T itself */
-    DHT_EQ_INT(dh_mat4_rotz_f32(&A, 90.0f), DH_OK);
+    DHT_EQ_INT(dh_mat4_rotz_f32(90.0f, &A), DH_OK);
     A.m[3][0] = 4.0f;
     C = A;
-    dh_mat4_from_noap_f32(&A, (const dh_vec3_f32 *)&A.m[1][0], (const dh_vec3_f32 *)&A.m[0][0],
-                          (const dh_vec3_f32 *)&A.m[2][0], (const dh_vec3_f32 *)&A.m[3][0]);
+    dh_mat4_from_noap_f32((const dh_vec3_f32 *)&A.m[1][0], (const dh_vec3_f32 *)&A.m[0][0], (const dh_vec3_f32 *)&A.m[2][0],
+                          (const dh_vec3_f32 *)&A.m[3][0], &A);
     for (r = 0; r < 3; r++) {
         DHT_EQ_F32_BITS(A.m[0][r], C.m[1][r]);
         DHT_EQ_F32_BITS(A.m[1][r], C.m[0][r]);
@@ -681,14 +681,14 @@ static void mat4_shared_path_edges(void)
     }
     /* -0 in the bottom row is affine: same status and bits as +0 */
     for (it = 0; it < DHT_ITER(200u); it++) {
-        DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, (float)dht_rand_uniform(-1.0, 1.0), (float)dht_rand_uniform(-1.0, 1.0),
-                                        1.0f, (float)dht_rand_uniform(-180.0, 180.0)), DH_OK);
+        DHT_EQ_INT(dh_mat4_rot_axis_f32((float)dht_rand_uniform(-1.0, 1.0), (float)dht_rand_uniform(-1.0, 1.0), 1.0f,
+                                        (float)dht_rand_uniform(-180.0, 180.0), &T), DH_OK);
         for (r = 0; r < 3; r++) T.m[3][r] = (float)dht_rand_uniform(-100.0, 100.0);
         U = T;
         for (c = 0; c < 3; c++) U.m[c][3] = -0.0f;
         DHT_EQ_INT(dh_mat4_check_rigid_f32(&U, DH_MAT4_RIGID_TOL), DH_OK);
-        DHT_EQ_INT(dh_mat4_inv_auto_f32(&X, &T), DH_OK);
-        DHT_EQ_INT(dh_mat4_inv_auto_f32(&Y, &U), DH_OK);
+        DHT_EQ_INT(dh_mat4_inv_auto_f32(&T, &X), DH_OK);
+        DHT_EQ_INT(dh_mat4_inv_auto_f32(&U, &Y), DH_OK);
         DHT_TRUE(memcmp(&X, &Y, sizeof X) == 0);
         /* scaled (not rigid): the general inverse */
         for (c = 0; c < 3; c++)
@@ -696,8 +696,8 @@ static void mat4_shared_path_edges(void)
                 T.m[c][r] *= 1.5f;
                 U.m[c][r] *= 1.5f;
             }
-        DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_OK);
-        DHT_EQ_INT(dh_mat4_inv_f32(&Y, &U), DH_OK);
+        DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_OK);
+        DHT_EQ_INT(dh_mat4_inv_f32(&U, &Y), DH_OK);
         DHT_TRUE(memcmp(&X, &Y, sizeof X) == 0);
         for (r = 0; r < 3; r++) DHT_EQ_F32_BITS(Y.m[r][3], 0.0f);
         DHT_EQ_F32_BITS(Y.m[3][3], 1.0f);
@@ -709,16 +709,16 @@ static void mat4_shared_path_edges(void)
         const float len = (float)ldexp(dht_rand_uniform(1.0, 2.0), (int)(dht_rand_u32() % 201u) - 100);
         int ax;
         for (ax = 0; ax < 3; ax++) {
-            const dh_status st = (ax == 0) ? dh_mat4_rotx_f32(&X, deg)
-                               : (ax == 1) ? dh_mat4_roty_f32(&X, deg) : dh_mat4_rotz_f32(&X, deg);
+            const dh_status st = (ax == 0) ? dh_mat4_rotx_f32(deg, &X)
+                               : (ax == 1) ? dh_mat4_roty_f32(deg, &X) : dh_mat4_rotz_f32(deg, &X);
             DHT_EQ_INT(st, DH_OK);
-            DHT_EQ_INT(dh_mat4_rot_axis_f32(&Y, (ax == 0) ? len : 0.0f, (ax == 1) ? len : 0.0f,
-                                            (ax == 2) ? len : 0.0f, deg), DH_OK);
+            DHT_EQ_INT(dh_mat4_rot_axis_f32((ax == 0) ? len : 0.0f, (ax == 1) ? len : 0.0f, (ax == 2) ? len : 0.0f,
+                                            deg, &Y), DH_OK);
             DHT_TRUE_MSG(memcmp(&X, &Y, sizeof X) == 0, "axis %d deg %.9g len %g", ax, (double)deg, (double)len);
         }
     }
     /* entries not read: bottom row (point, direction), p (direction) */
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, 0.3f, -0.5f, 0.8f, 33.3f), DH_OK);
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(0.3f, -0.5f, 0.8f, 33.3f, &T), DH_OK);
     T.m[3][0] = 1.5f;
     T.m[3][1] = -2.25f;
     T.m[3][2] = 7.0f;
@@ -752,7 +752,7 @@ static void mat4_signed_zeros(void)
     dh_vec4_f32 u;
     dh_vec3_f32 v;
     int i, c, r, ax;
-    dh_mat4_trans_f32(&T, -0.0f, -0.0f, -0.0f);
+    dh_mat4_trans_f32(-0.0f, -0.0f, -0.0f, &T);
     u.x = -0.0f; u.y = -0.0f; u.z = -0.0f; u.w = 1.0f;
     DHT_EQ_INT(dh_mat4_apply_point_h_f32(&T, &u, &v), DH_OK);
     DHT_EQ_F32_BITS(v.x, 0.0f);
@@ -772,10 +772,10 @@ static void mat4_signed_zeros(void)
     for (i = 0; i < (int)(sizeof degs / sizeof degs[0]); i++) {
         for (ax = 0; ax < 4; ax++) {
             dh_status st;
-            if (ax == 0) st = dh_mat4_rotx_f32(&T, degs[i]);
-            else if (ax == 1) st = dh_mat4_roty_f32(&T, degs[i]);
-            else if (ax == 2) st = dh_mat4_rotz_f32(&T, degs[i]);
-            else st = dh_mat4_rot_axis_f32(&T, -1.0f, 0.0f, -0.0f, degs[i]);
+            if (ax == 0) st = dh_mat4_rotx_f32(degs[i], &T);
+            else if (ax == 1) st = dh_mat4_roty_f32(degs[i], &T);
+            else if (ax == 2) st = dh_mat4_rotz_f32(degs[i], &T);
+            else st = dh_mat4_rot_axis_f32(-1.0f, 0.0f, -0.0f, degs[i], &T);
             DHT_EQ_INT(st, DH_OK);
             for (c = 0; c < 4; c++)
                 for (r = 0; r < 4; r++) {
@@ -819,12 +819,12 @@ static void mat4_affine_bottom_rows(void)
                 if (e < 4) A2.m[e][3] = poison[p];
                 else B2.m[e - 4][3] = poison[p];
                 if (alias == 0) {
-                    dh_mat4_mul_affine_f32(&C, &A2, &B2);
+                    dh_mat4_mul_affine_f32(&A2, &B2, &C);
                 } else if (alias == 1) {
-                    dh_mat4_mul_affine_f32(&A2, &A2, &B2);
+                    dh_mat4_mul_affine_f32(&A2, &B2, &A2);
                     C = A2;
                 } else {
-                    dh_mat4_mul_affine_f32(&B2, &A2, &B2);
+                    dh_mat4_mul_affine_f32(&A2, &B2, &B2);
                     C = B2;
                 }
                 DHT_TRUE_MSG(memcmp(&C, &R, sizeof C) == 0, "entry %d poison %d alias %d", e, p, alias);

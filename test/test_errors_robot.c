@@ -33,9 +33,9 @@ static float bad_value_nan(unsigned k)
 static void small_robot(dh_robot *r, dh_convention conv)
 {
     DHT_EQ_INT(dh_robot_init(r, conv), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, 0.3f, 0.1f, 90.0f, 0.0f), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(r, DH_JOINT_PRISMATIC, 0.0f, 0.2f, -90.0f, 10.0f), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, 0.25f, 0.0f, 0.0f, 5.0f), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, 0.0f, 0.1f, 0.3f, 90.0f), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(r, DH_JOINT_PRISMATIC, 10.0f, 0.2f, 0.0f, -90.0f), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, 5.0f, 0.0f, 0.25f, 0.0f), DH_OK);
     DHT_EQ_INT(dh_robot_set_limits_f32(r, 0, -170.0f, 170.0f), DH_OK);
     DHT_EQ_INT(dh_robot_set_limits_f32(r, 1, 0.0f, 0.5f), DH_OK);
     DHT_EQ_INT(dh_robot_set_limits_f32(r, 2, -120.0f, 120.0f), DH_OK);
@@ -60,24 +60,24 @@ static void robot_add_joint_bad(void)
     unsigned i, k, pos;
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
     copy = r;
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, (dh_joint_type)2, 0.1f, 0.0f, 0.0f, 0.0f), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, (dh_joint_type)2, 0.0f, 0.0f, 0.1f, 0.0f), DH_ERR_ARG);
     DHT_EQ_INT(dh_robot_add_joint_q(&r, (dh_joint_type)-1, 0, 0, 0, 0), DH_ERR_ARG);
     DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
     for (pos = 0; pos < 4; pos++) {
         for (k = 0; k < 4; k++) {
             float p[4] = { 0.1f, 0.2f, 30.0f, 40.0f };
             p[pos] = bad_value_nan(k);
-            DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, p[0], p[1], p[2], p[3]), DH_ERR_NAN);
+            DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, p[3], p[1], p[0], p[2]), DH_ERR_NAN);
             DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
         }
     }
     /* fill to capacity, then one more (both builders) */
     for (i = 0; i < (unsigned)DH_MAX_JOINTS; i++)
-        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.1f, 0.0f, 0.0f, 0.0f), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.1f, 0.0f), DH_OK);
     DHT_EQ_INT(r.n, DH_MAX_JOINTS);
     copy = r;
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.1f, 0.0f, 0.0f, 0.0f), DH_ERR_ARG);
-    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 1, 0, 0, 0), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.1f, 0.0f), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, 1, 0), DH_ERR_ARG);
     DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
 }
 
@@ -98,11 +98,11 @@ static void robot_unrepresentable_fixed_constants(void)
         double qd[2] = { 10.0, 20.0 };
         dhs_mat4_d R;
         DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 1.0f, 0.0f, 0.0f, 0.0f), DH_OK);
-        if (k == 0) DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, big, 0.0f, 0.0f, 0.0f), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 1.0f, 0.0f), DH_OK);
+        if (k == 0) DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, big, 0.0f), DH_OK);
         else if (k == 1) DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, -big * 2.0f, 0.0f, 0.0f), DH_OK);
-        else DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.5f, 0.0f,
-                                               (k == 2) ? angs[0] : 0.0f, (k >= 3) ? angs[k - 2] : 0.0f),
+        else DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, (k >= 3) ? angs[k - 2] : 0.0f, 0.0f,
+                                               0.5f, (k == 2) ? angs[0] : 0.0f),
                         DH_OK);
         DHT_EQ_INT(r.n, 2);
         DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) == 0u);
@@ -190,11 +190,11 @@ static void robot_base_tool_bad(void)
     }
     DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
     /* not representable: rotation entry 2.0, position beyond dh_qpos */
-    dh_mat4_scale_f32(&B, 2.0f, 1.0f, 1.0f);
+    dh_mat4_scale_f32(2.0f, 1.0f, 1.0f, &B);
     DHT_EQ_INT(dh_robot_set_base_f32(&r, &B), DH_OK);
     DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) == 0u && (r.flags & DH_ROBOT_Q_NO_BASE) != 0u);
     DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) != 0u);
-    dh_mat4_trans_f32(&B, 0.0f, (float)ldexp(1.0, 32 - DH_QPOS_FRAC), 0.0f);
+    dh_mat4_trans_f32(0.0f, (float)ldexp(1.0, 32 - DH_QPOS_FRAC), 0.0f, &B);
     DHT_EQ_INT(dh_robot_set_tool_f32(&r, &B), DH_OK);
     DHT_TRUE((r.flags & DH_ROBOT_Q_NO_TOOL) != 0u);
     {
@@ -310,7 +310,7 @@ static void robot_fk_f32_bad(void)
          * scaling base, allowed) -> OVERFLOW, T written */
         {
             dh_mat4_f32 S;
-            dh_mat4_scale_f32(&S, 4.0f, 4.0f, 4.0f);
+            dh_mat4_scale_f32(4.0f, 4.0f, 4.0f, &S);
             DHT_EQ_INT(dh_robot_set_base_f32(&r, &S), DH_OK);
         }
         q[1] = 3e38f;
@@ -347,7 +347,7 @@ static void robot_fk_f32_bad(void)
     }
     /* float path unavailable: a joint added with _q, or a base set with _q */
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, DH_QPOS_ONE, 0, 0, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, DH_QPOS_ONE, 0), DH_OK);
     q[0] = 0.0f;
     CANARY(T);
     DHT_EQ_INT(dh_fk_f32(&r, q, &T), DH_ERR_UNAVAILABLE);
@@ -356,7 +356,7 @@ static void robot_fk_f32_bad(void)
     small_robot(&r, DH_CONV_STANDARD);
     {
         dh_frame_q F;
-        dh_frame_trans_q(&F, DH_QPOS_ONE, 0, 0);
+        dh_frame_trans_q(DH_QPOS_ONE, 0, 0, &F);
         DHT_EQ_INT(dh_robot_set_base_q(&r, &F), DH_OK);
         DHT_EQ_INT(dh_robot_set_tool_q(&r, &F), DH_OK);
     }
@@ -435,7 +435,7 @@ static void robot_n_beyond_capacity(void)
     unsigned i;
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
     for (i = 0; i < (unsigned)DH_MAX_JOINTS; i++) {
-        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.1f, 0.0f, 0.0f, 0.0f), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.1f, 0.0f), DH_OK);
         DHT_EQ_INT(dh_robot_set_limits_f32(&r, i, -10.0f, 10.0f), DH_OK);
     }
     for (i = 0; i < (unsigned)DH_MAX_JOINTS + 1u; i++) {
@@ -464,8 +464,8 @@ static void robot_n_beyond_capacity(void)
     DHT_EQ_INT(dh_robot_check_limits_q(&r, qq), DH_ERR_ARG);
     DHT_EQ_INT(dh_robot_set_limits_f32(&r, DH_MAX_JOINTS, -1.0f, 1.0f), DH_ERR_ARG);
     DHT_EQ_INT(dh_robot_set_limits_q(&r, DH_MAX_JOINTS, -1, 1), DH_ERR_ARG);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.1f, 0.0f, 0.0f, 0.0f), DH_ERR_ARG);
-    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 1, 0, 0, 0), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.1f, 0.0f), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, 1, 0), DH_ERR_ARG);
     DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
 }
 
@@ -531,16 +531,16 @@ static void robot_init_every_field(void)
         check_empty(&r, conv);
         for (i = 0; i < (unsigned)DH_MAX_JOINTS; i++) {
             if (i & 1u) {
-                DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_PRISMATIC, 7, -9, 11 << 16, -(13 << 16)), DH_OK);
+                DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_PRISMATIC, -(13 << 16), -9, 7, 11 << 16), DH_OK);
             } else {
-                DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, 0.25f, -1.5f, 30.0f, (pass == 2) ? 1e30f : 10.0f),
+                DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, (pass == 2) ? 1e30f : 10.0f, -1.5f, 0.25f, 30.0f),
                            DH_OK);
             }
             DHT_EQ_INT(dh_robot_set_limits_f32(&r, i, -2.0f, 3.0f), DH_OK);
         }
-        dh_mat4_trans_f32(&B, 1.0f, 2.0f, 3.0f);
+        dh_mat4_trans_f32(1.0f, 2.0f, 3.0f, &B);
         DHT_EQ_INT(dh_robot_set_base_f32(&r, &B), DH_OK);
-        dh_frame_trans_q(&F, 5, 6, 7);
+        dh_frame_trans_q(5, 6, 7, &F);
         DHT_EQ_INT(dh_robot_set_tool_q(&r, &F), DH_OK);
         DHT_TRUE(r.flags != INIT_FLAGS);
     }
@@ -558,8 +558,8 @@ static void robot_init_after_every_reason(void)
     dh_mat4_f32 B;
     dh_frame_q F;
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 1, 2, 3, 4), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 1e30f, 0.0f, 0.0f, 0.0f), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 4, 2, 1, 3), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 1e30f, 0.0f), DH_OK);
     /* fixed base with rows far above norm 1.5 (the float base, still the
      * identity, is stale), then a float base that does not fit: the fixed
      * copy stays, its bits stay cleared */
@@ -569,18 +569,18 @@ static void robot_init_after_every_reason(void)
     DHT_EQ_INT(dh_robot_set_base_q(&r, &F), DH_OK);
     DHT_EQ_INT(r.flags, DH_ROBOT_F32_NO_JOINT | DH_ROBOT_Q_NO_JOINT | DH_ROBOT_F32_NO_BASE |
                             DH_ROBOT_BASE_ID_F32 | DH_ROBOT_TOOL_ID_F32 | DH_ROBOT_TOOL_ID_Q);
-    dh_mat4_trans_f32(&B, 0.0f, 1e30f, 0.0f);
+    dh_mat4_trans_f32(0.0f, 1e30f, 0.0f, &B);
     DHT_EQ_INT(dh_robot_set_base_f32(&r, &B), DH_OK);
     DHT_EQ_INT(r.base_q.r[0][0], INT32_MAX);
     DHT_EQ_INT(r.base_q.r[1][0], INT32_MIN);
     /* a fixed tool that is no identity: the float tool (still the
      * identity) is stale */
-    dh_frame_trans_q(&F, 0, 0, 1);
+    dh_frame_trans_q(0, 0, 1, &F);
     DHT_EQ_INT(dh_robot_set_tool_q(&r, &F), DH_OK);
     DHT_EQ_INT(r.flags, DH_ROBOT_F32_NO_JOINT | DH_ROBOT_Q_NO_JOINT | DH_ROBOT_Q_NO_BASE |
                             DH_ROBOT_F32_NO_TOOL | DH_ROBOT_TOOL_ID_F32);
     /* a float tool that does not fit: both tool reasons swap */
-    dh_mat4_trans_f32(&B, -1e30f, 0.0f, 0.0f);
+    dh_mat4_trans_f32(-1e30f, 0.0f, 0.0f, &B);
     DHT_EQ_INT(dh_robot_set_tool_f32(&r, &B), DH_OK);
     DHT_EQ_INT(r.flags, DH_ROBOT_F32_NO_JOINT | DH_ROBOT_Q_NO_JOINT | DH_ROBOT_Q_NO_BASE |
                             DH_ROBOT_Q_NO_TOOL);
@@ -602,18 +602,18 @@ static void robot_fixed_copies_rounding(void)
     dh_frame_q keep;
     unsigned w, c, k;
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, 1.5f * lsb, -1.5f * lsb, 2.5f * dl, -0.5f * dl), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, -0.5f * dl, -1.5f * lsb, 1.5f * lsb, 2.5f * dl), DH_OK);
     DHT_EQ_INT(r.joint[0].a_q, 2);
     DHT_EQ_INT(r.joint[0].d_q, -2);
     DHT_EQ_INT(r.joint[0].alpha_q, 3);
     DHT_EQ_INT(r.joint[0].theta_q, -1);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.49999997f * lsb, -2.5f * lsb, -32768.0f,
-                                      32768.0f - ldexpf(1.0f, -9)), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 32768.0f - ldexpf(1.0f, -9), -2.5f * lsb, 0.49999997f * lsb,
+                                      -32768.0f), DH_OK);
     DHT_EQ_INT(r.joint[1].a_q, 0);
     DHT_EQ_INT(r.joint[1].d_q, -3);
     DHT_EQ_INT(r.joint[1].alpha_q, INT32_MIN);
     DHT_EQ_INT(r.joint[1].theta_q, 2147483520);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, -qmax, qmax - 128.0f * lsb, 90.0f, 0.0f), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, qmax - 128.0f * lsb, -qmax, 90.0f), DH_OK);
     DHT_EQ_INT(r.joint[2].a_q, INT32_MIN);
     DHT_EQ_INT(r.joint[2].d_q, 2147483520);
     DHT_EQ_INT(r.joint[2].sa_q, DH_Q30_ONE);
@@ -621,7 +621,7 @@ static void robot_fixed_copies_rounding(void)
     DHT_EQ_F32_BITS(r.joint[2].sa, 1.0f);
     DHT_EQ_F32_BITS(r.joint[2].ca, 0.0f);
     /* -32490 = -90 - 90 turns */
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, -32490.0f, 0.0f), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.0f, -32490.0f), DH_OK);
     DHT_EQ_INT(r.joint[3].alpha_q, (int32_t)(-32490 * (int64_t)65536));
     DHT_EQ_INT(r.joint[3].sa_q, -DH_Q30_ONE);
     DHT_EQ_INT(r.joint[3].ca_q, 0);
@@ -709,12 +709,12 @@ static void robot_flag_bookkeeping(void)
     dh_frame_q F, keep;
     unsigned w;
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 1, 2, 3, 4), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 4, 2, 1, 3), DH_OK);
     DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) == 0u);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.5f, 0.0f, 0.0f, 0.0f), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.5f, 0.0f), DH_OK);
     DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) == 0u && (r.flags & DH_ROBOT_F32_NO_JOINT) != 0u);
     DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) != 0u);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 1e30f, 0.0f, 0.0f, 0.0f), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 1e30f, 0.0f), DH_OK);
     DHT_TRUE((r.flags & (DH_ROBOT_HAS_F32 | DH_ROBOT_HAS_Q)) == 0u);
     DHT_TRUE((r.flags & (DH_ROBOT_F32_NO_JOINT | DH_ROBOT_Q_NO_JOINT)) == (DH_ROBOT_F32_NO_JOINT | DH_ROBOT_Q_NO_JOINT));
     for (w = 0; w < 2; w++) {
@@ -722,18 +722,18 @@ static void robot_flag_bookkeeping(void)
         const uint32_t id_q = w ? DH_ROBOT_TOOL_ID_Q : DH_ROBOT_BASE_ID_Q;
         dh_frame_q *own = w ? &r.tool_q : &r.base_q;
         DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.5f, 0.0f, 0.0f, 0.0f), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.5f, 0.0f), DH_OK);
         dh_frame_identity_q(&F);
         DHT_EQ_INT(w ? dh_robot_set_tool_q(&r, &F) : dh_robot_set_base_q(&r, &F), DH_OK);
         DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) != 0u && (r.flags & id_q) != 0u); /* both identity */
-        dh_frame_trans_q(&F, 0, 1, 0);
+        dh_frame_trans_q(0, 1, 0, &F);
         DHT_EQ_INT(w ? dh_robot_set_tool_q(&r, &F) : dh_robot_set_base_q(&r, &F), DH_OK);
         DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) == 0u && (r.flags & no_f32) != 0u && (r.flags & id_q) == 0u);
         DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) != 0u);
         keep = *own;
         DHT_EQ_INT(w ? dh_robot_set_tool_q(&r, own) : dh_robot_set_base_q(&r, own), DH_OK);
         DHT_TRUE(memcmp(own, &keep, sizeof keep) == 0);
-        dh_mat4_trans_f32(&B, 0.0f, 2.0f, 0.0f);
+        dh_mat4_trans_f32(0.0f, 2.0f, 0.0f, &B);
         DHT_EQ_INT(w ? dh_robot_set_tool_f32(&r, &B) : dh_robot_set_base_f32(&r, &B), DH_OK);
         DHT_TRUE((r.flags & (DH_ROBOT_HAS_F32 | DH_ROBOT_HAS_Q)) == (DH_ROBOT_HAS_F32 | DH_ROBOT_HAS_Q));
         DHT_EQ_INT(own->p[1], 2 * DH_QPOS_ONE);

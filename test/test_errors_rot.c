@@ -92,12 +92,12 @@ static void extract_all(const dh_mat3_f32 *R, dh_status want_)
     }
     DHT_EQ_INT(dh_mat3_check_rot_f32(R, DH_ROT_TOL), want);
     memset(&Rd, 0, sizeof Rd);
-    DHT_EQ_INT(dh_angvel_f32(&v, R, &Rd), want);
+    DHT_EQ_INT(dh_angvel_f32(R, &Rd, &v), want);
     UNTOUCHED(v);
-    DHT_EQ_INT(dh_angvel_body_f32(&v, R, &Rd), want);
+    DHT_EQ_INT(dh_angvel_body_f32(R, &Rd, &v), want);
     UNTOUCHED(v);
     if (want == DH_ERR_NAN) {
-        DHT_EQ_INT(dh_mat3_orthonormalize_f32(&out, R), DH_ERR_NAN);
+        DHT_EQ_INT(dh_mat3_orthonormalize_f32(R, &out), DH_ERR_NAN);
         UNTOUCHED(out);
     }
     want = DH_ERR_ARG; /* every later UNTOUCHED checks */
@@ -128,7 +128,7 @@ static void rot_extract_not_rigid(void)
         non_rotation(&R, k);
         extract_all(&R, DH_ERR_NOT_RIGID);
         CANARY(out);
-        st = dh_mat3_orthonormalize_f32(&out, &R);
+        st = dh_mat3_orthonormalize_f32(&R, &out);
         if (k == 0 || k == 3) {
             /* drifted by 1e-3: repaired into a rotation */
             DHT_EQ_INT(st, DH_OK);
@@ -170,7 +170,7 @@ static void rot_orthonormalize_bad(void)
     /* entries whose squares overflow */
     rot_ref(&R, 1.0, 1.0, 0.0, 50.0);
     R.m[1][1] = 1e30f;
-    DHT_EQ_INT(dh_mat3_orthonormalize_f32(&S, &R), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(dh_mat3_orthonormalize_f32(&R, &S), DH_ERR_NOT_RIGID);
 }
 
 /* check: tol negative, NaN or infinite -> ARG */
@@ -211,7 +211,7 @@ static void rot_euler_bad(void)
             dh_mat3_f32 out;
             float a[3];
             CANARY(out);
-            DHT_EQ_INT(dh_euler_to_mat3_f32(&out, (dh_euler_seq)bad_seq[i], ang), DH_ERR_ARG);
+            DHT_EQ_INT(dh_euler_to_mat3_f32((dh_euler_seq)bad_seq[i], ang, &out), DH_ERR_ARG);
             UNTOUCHED(out);
             CANARY(a);
             DHT_EQ_INT(dh_mat3_to_euler_f32(&R, (dh_euler_seq)bad_seq[i], a), DH_ERR_ARG);
@@ -224,7 +224,7 @@ static void rot_euler_bad(void)
             float a[3] = { 10.0f, 20.0f, 30.0f };
             a[k / 4] = bad_value_nan(k);
             CANARY(out);
-            DHT_EQ_INT(dh_euler_to_mat3_f32(&out, (dh_euler_seq)s, a), DH_ERR_NAN);
+            DHT_EQ_INT(dh_euler_to_mat3_f32((dh_euler_seq)s, a, &out), DH_ERR_NAN);
             UNTOUCHED(out);
         }
         /* huge finite angles: accepted, reduced exactly (checked against
@@ -234,8 +234,8 @@ static void rot_euler_bad(void)
             float ar[3];
             dh_mat3_f32 A, B;
             for (k = 0; k < 3; k++) ar[k] = (float)fmod((double)a[k], 360.0);
-            DHT_EQ_INT(dh_euler_to_mat3_f32(&A, (dh_euler_seq)s, a), DH_OK);
-            DHT_EQ_INT(dh_euler_to_mat3_f32(&B, (dh_euler_seq)s, ar), DH_OK);
+            DHT_EQ_INT(dh_euler_to_mat3_f32((dh_euler_seq)s, a, &A), DH_OK);
+            DHT_EQ_INT(dh_euler_to_mat3_f32((dh_euler_seq)s, ar, &B), DH_OK);
             for (k = 0; k < 9; k++) DHT_NEAR(A.m[k / 3][k % 3], B.m[k / 3][k % 3], 4e-7);
         }
     }
@@ -255,10 +255,10 @@ static void rot_quat_bad(void)
         else if (k / 4 == 2) q.y = bad_value_nan(k);
         else q.z = bad_value_nan(k);
         CANARY(R);
-        DHT_EQ_INT(dh_quat_to_mat3_f32(&R, &q), DH_ERR_NAN);
+        DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &R), DH_ERR_NAN);
         UNTOUCHED(R);
         CANARY(o);
-        DHT_EQ_INT(dh_quat_normalize_f32(&o, &q), DH_ERR_NAN);
+        DHT_EQ_INT(dh_quat_normalize_f32(&q, &o), DH_ERR_NAN);
         UNTOUCHED(o);
         o = q;
         DHT_EQ_INT(dh_quat_normalize_f32(&o, &o), DH_ERR_NAN);
@@ -270,10 +270,10 @@ static void rot_quat_bad(void)
         for (k = 0; k < 3; k++) {
             q.w = f32_bits(z[k][0]); q.x = f32_bits(z[k][1]); q.y = f32_bits(z[k][2]); q.z = f32_bits(z[k][3]);
             CANARY(R);
-            DHT_EQ_INT(dh_quat_to_mat3_f32(&R, &q), DH_ERR_ZERO_AXIS);
+            DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &R), DH_ERR_ZERO_AXIS);
             UNTOUCHED(R);
             CANARY(o);
-            DHT_EQ_INT(dh_quat_normalize_f32(&o, &q), DH_ERR_ZERO_AXIS);
+            DHT_EQ_INT(dh_quat_normalize_f32(&q, &o), DH_ERR_ZERO_AXIS);
             UNTOUCHED(o);
         }
     }
@@ -282,16 +282,16 @@ static void rot_quat_bad(void)
         static const float sc[] = { 2.0f * FLT_MIN, 1e-30f, 1e30f, FLT_MAX / 2.0f };
         dh_mat3_f32 U;
         q.w = 0.5f; q.x = 0.5f; q.y = -0.5f; q.z = 0.5f;
-        DHT_EQ_INT(dh_quat_to_mat3_f32(&U, &q), DH_OK);
+        DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &U), DH_OK);
         for (k = 0; k < 4; k++) {
             dh_quat_f32 s;
             s.w = 0.5f * sc[k]; s.x = 0.5f * sc[k]; s.y = -0.5f * sc[k]; s.z = 0.5f * sc[k];
-            DHT_EQ_INT(dh_quat_to_mat3_f32(&R, &s), DH_OK);
+            DHT_EQ_INT(dh_quat_to_mat3_f32(&s, &R), DH_OK);
             {
                 unsigned e;
                 for (e = 0; e < 9; e++) DHT_NEAR(R.m[e / 3][e % 3], U.m[e / 3][e % 3], 6e-7);
             }
-            DHT_EQ_INT(dh_quat_normalize_f32(&o, &s), DH_OK);
+            DHT_EQ_INT(dh_quat_normalize_f32(&s, &o), DH_OK);
             DHT_NEAR(o.w, 0.5, 2e-7);
             DHT_NEAR(o.y, -0.5, 2e-7);
         }
@@ -313,10 +313,10 @@ static void rot_axis_angle_bad(void)
         else if (k / 4 == 2) ax.z = bad_value_nan(k);
         else deg = bad_value_nan(k);
         CANARY(R);
-        DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&R, &ax, deg), DH_ERR_NAN);
+        DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&ax, deg, &R), DH_ERR_NAN);
         UNTOUCHED(R);
         CANARY(q);
-        DHT_EQ_INT(dh_quat_from_axis_angle_f32(&q, &ax, deg), DH_ERR_NAN);
+        DHT_EQ_INT(dh_quat_from_axis_angle_f32(&ax, deg, &q), DH_ERR_NAN);
         UNTOUCHED(q);
     }
     {
@@ -325,10 +325,10 @@ static void rot_axis_angle_bad(void)
         for (k = 0; k < 3; k++) {
             ax.x = f32_bits(z[k][0]); ax.y = f32_bits(z[k][1]); ax.z = f32_bits(z[k][2]);
             CANARY(R);
-            DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&R, &ax, 45.0f), DH_ERR_ZERO_AXIS);
+            DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&ax, 45.0f, &R), DH_ERR_ZERO_AXIS);
             UNTOUCHED(R);
             CANARY(q);
-            DHT_EQ_INT(dh_quat_from_axis_angle_f32(&q, &ax, 45.0f), DH_ERR_ZERO_AXIS);
+            DHT_EQ_INT(dh_quat_from_axis_angle_f32(&ax, 45.0f, &q), DH_ERR_ZERO_AXIS);
             UNTOUCHED(q);
         }
     }
@@ -337,12 +337,12 @@ static void rot_axis_angle_bad(void)
         dh_mat3_f32 U, B;
         dh_vec3_f32 u;
         u.x = 1.0f; u.y = 1.0f; u.z = 0.0f;
-        DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&U, &u, 77.0f), DH_OK);
+        DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&u, 77.0f, &U), DH_OK);
         ax.x = FLT_MAX; ax.y = FLT_MAX; ax.z = 0.0f;
-        DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&B, &ax, 77.0f), DH_OK);
+        DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&ax, 77.0f, &B), DH_OK);
         for (k = 0; k < 9; k++) DHT_EQ_F32_BITS(B.m[k / 3][k % 3], U.m[k / 3][k % 3]);
         ax.x = FLT_MIN; ax.y = FLT_MIN;
-        DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&B, &ax, 77.0f), DH_OK);
+        DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&ax, 77.0f, &B), DH_OK);
         for (k = 0; k < 9; k++) DHT_EQ_F32_BITS(B.m[k / 3][k % 3], U.m[k / 3][k % 3]);
     }
 }
@@ -361,7 +361,7 @@ static void rot_rotvec_bad_and_huge(void)
         else if (k / 4 == 1) phi.y = bad_value_nan(k);
         else phi.z = bad_value_nan(k);
         CANARY(R);
-        DHT_EQ_INT(dh_rotvec_to_mat3_f32(&R, &phi), DH_ERR_NAN);
+        DHT_EQ_INT(dh_rotvec_to_mat3_f32(&phi, &R), DH_ERR_NAN);
         UNTOUCHED(R);
     }
     {
@@ -373,7 +373,7 @@ static void rot_rotvec_bad_and_huge(void)
         for (k = 0; k < sizeof over / sizeof over[0]; k++) {
             phi.x = over[k][0]; phi.y = over[k][1]; phi.z = over[k][2];
             CANARY(R);
-            DHT_EQ_INT(dh_rotvec_to_mat3_f32(&R, &phi), DH_ERR_NAN);
+            DHT_EQ_INT(dh_rotvec_to_mat3_f32(&phi, &R), DH_ERR_NAN);
             UNTOUCHED(R);
         }
         for (k = 0; k < sizeof big / sizeof big[0]; k++) {
@@ -383,7 +383,7 @@ static void rot_rotvec_bad_and_huge(void)
             unsigned r;
             phi.x = big[k][0]; phi.y = big[k][1]; phi.z = big[k][2];
             CANARY(R);
-            DHT_EQ_INT(dh_rotvec_to_mat3_f32(&R, &phi), DH_OK);
+            DHT_EQ_INT(dh_rotvec_to_mat3_f32(&phi, &R), DH_OK);
             /* a rotation ... */
             DHT_EQ_INT(dh_mat3_check_rot_f32(&R, 1e-6f), DH_OK);
             /* ... about phi: R k == k for k = phi / |phi| (the angle itself,
@@ -407,17 +407,17 @@ static void rot_angvel_overflow(void)
     rot_ref(&R, 1.0, 1.0, 1.0, 60.0);
     for (k = 0; k < 9; k++) Rd.m[k / 3][k % 3] = (k % 2) ? FLT_MAX : -FLT_MAX;
     CANARY(w);
-    DHT_EQ_INT(dh_angvel_f32(&w, &R, &Rd), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_angvel_f32(&R, &Rd, &w), DH_ERR_OVERFLOW);
     UNTOUCHED(w);
-    DHT_EQ_INT(dh_angvel_body_f32(&w, &R, &Rd), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_angvel_body_f32(&R, &Rd, &w), DH_ERR_OVERFLOW);
     UNTOUCHED(w);
     /* NaN in Rdot */
     for (k = 0; k < 9; k++) {
         memset(&Rd, 0, sizeof Rd);
         Rd.m[k / 3][k % 3] = bad_value_nan(k);
-        DHT_EQ_INT(dh_angvel_f32(&w, &R, &Rd), DH_ERR_NAN);
+        DHT_EQ_INT(dh_angvel_f32(&R, &Rd, &w), DH_ERR_NAN);
         UNTOUCHED(w);
-        DHT_EQ_INT(dh_angvel_body_f32(&w, &R, &Rd), DH_ERR_NAN);
+        DHT_EQ_INT(dh_angvel_body_f32(&R, &Rd, &w), DH_ERR_NAN);
         UNTOUCHED(w);
     }
     /* large but representable: accepted and exact enough (Rdot = 1e30 [z]x R) */
@@ -428,7 +428,7 @@ static void rot_angvel_overflow(void)
         memset(&Rd, 0, sizeof Rd);
         DH_M3(&Rd, 0, 1) = -1e30f;
         DH_M3(&Rd, 1, 0) = 1e30f;
-        DHT_EQ_INT(dh_angvel_f32(&w, &I, &Rd), DH_OK);
+        DHT_EQ_INT(dh_angvel_f32(&I, &Rd, &w), DH_OK);
         DHT_NEAR(w.z, 1e30, 1e30 * 1e-7);
         DHT_NEAR(w.x, 0.0, 0.0);
     }
@@ -442,25 +442,25 @@ static void rot_no_status_ieee(void)
     dh_mat3_f32 S;
     dh_quat_f32 a, b, c, d;
     v.x = bad_value_nan(0); v.y = 2.0f; v.z = -3.0f;
-    dh_skew_f32(&S, &v);
+    dh_skew_f32(&v, &S);
     DHT_TRUE(DH_M3(&S, 2, 1) != DH_M3(&S, 2, 1));   /* vx appears at (2,1), (1,2) */
     DHT_TRUE(DH_M3(&S, 1, 2) != DH_M3(&S, 1, 2));
     DHT_EQ_F32_BITS(DH_M3(&S, 0, 2), 2.0f);
     DHT_EQ_F32_BITS(DH_M3(&S, 0, 0), 0.0f);
-    dh_vee_f32(&u, &S);
+    dh_vee_f32(&S, &u);
     DHT_TRUE(u.x != u.x);
     DHT_EQ_F32_BITS(u.y, 2.0f);
     DHT_EQ_F32_BITS(u.z, -3.0f);
     a.w = 1.0f; a.x = 2.0f; a.y = 3.0f; a.z = 4.0f;
     b.w = -0.5f; b.x = 0.25f; b.y = 1.5f; b.z = -2.0f;
-    dh_quat_mul_f32(&c, &a, &b);
+    dh_quat_mul_f32(&a, &b, &c);
     d = a;
-    dh_quat_mul_f32(&d, &d, &b);
+    dh_quat_mul_f32(&d, &b, &d);
     DHT_TRUE(memcmp(&c, &d, sizeof c) == 0);
     d = b;
-    dh_quat_mul_f32(&d, &a, &d);
+    dh_quat_mul_f32(&a, &d, &d);
     DHT_TRUE(memcmp(&c, &d, sizeof c) == 0);
-    dh_quat_mul_f32(&c, &a, &a);
+    dh_quat_mul_f32(&a, &a, &c);
     d = a;
     dh_quat_mul_f32(&d, &d, &d);
     DHT_TRUE(memcmp(&c, &d, sizeof c) == 0);
@@ -468,7 +468,7 @@ static void rot_no_status_ieee(void)
     dh_quat_conj_f32(&d, &d);
     DHT_EQ_F32_BITS(d.x, -2.0f);
     a.y = bad_value_nan(1);
-    dh_quat_mul_f32(&c, &a, &b);
+    dh_quat_mul_f32(&a, &b, &c);
     DHT_TRUE(!(fabsf(c.w) <= FLT_MAX)); /* - Inf * 1.5 */
     DHT_TRUE(!(fabsf(c.x) <= FLT_MAX));
 }

@@ -163,7 +163,7 @@ static void to_mat_random_vs_double(void)
             ang[0] = (float)dht_rand_uniform(-360.0, 360.0);
             ang[1] = (float)dht_rand_uniform(-360.0, 360.0);
             ang[2] = (float)dht_rand_uniform(-360.0, 360.0);
-            DHT_EQ_INT(dh_euler_to_mat3_f32(&R, (dh_euler_seq)seq, ang), DH_OK);
+            DHT_EQ_INT(dh_euler_to_mat3_f32((dh_euler_seq)seq, ang, &R), DH_OK);
             d_euler(&D, seq, ang[0], ang[1], ang[2]);
             e = max_diff(&R, &D);
             if (e > worst) worst = e;
@@ -187,7 +187,7 @@ static void to_mat_multiples_of_90_exact(void)
                     ang[0] = 90.0f * (float)i;
                     ang[1] = 90.0f * (float)j;
                     ang[2] = 90.0f * (float)k;
-                    DHT_EQ_INT(dh_euler_to_mat3_f32(&R, (dh_euler_seq)seq, ang), DH_OK);
+                    DHT_EQ_INT(dh_euler_to_mat3_f32((dh_euler_seq)seq, ang, &R), DH_OK);
                     d_euler(&D, seq, ang[0], ang[1], ang[2]);
                     for (r = 0; r < 3; r++)
                         for (c = 0; c < 3; c++) {
@@ -216,8 +216,8 @@ static void extrinsic_is_reversed_intrinsic(void)
             a[1] = (float)dht_rand_uniform(-400.0, 400.0);
             a[2] = (float)dht_rand_uniform(-400.0, 400.0);
             b[0] = a[2]; b[1] = a[1]; b[2] = a[0];
-            DHT_EQ_INT(dh_euler_to_mat3_f32(&R1, (dh_euler_seq)(seq + 12), a), DH_OK);
-            DHT_EQ_INT(dh_euler_to_mat3_f32(&R2, up, b), DH_OK);
+            DHT_EQ_INT(dh_euler_to_mat3_f32((dh_euler_seq)(seq + 12), a, &R1), DH_OK);
+            DHT_EQ_INT(dh_euler_to_mat3_f32(up, b, &R2), DH_OK);
             for (r = 0; r < 3; r++)
                 for (c = 0; c < 3; c++) DHT_EQ_F32_BITS(DH_M3(&R1, r, c), DH_M3(&R2, r, c));
         }
@@ -240,7 +240,7 @@ static void seed_xyz_formula(void)
         M[0][0] = cb * cg;                 M[0][1] = -cb * sg;                M[0][2] = sb;
         M[1][0] = ca * sg + cg * sa * sb;  M[1][1] = ca * cg - sa * sb * sg;  M[1][2] = -cb * sa;
         M[2][0] = sa * sg - ca * cg * sb;  M[2][1] = cg * sa + ca * sb * sg;  M[2][2] = ca * cb;
-        DHT_EQ_INT(dh_euler_to_mat3_f32(&R, DH_EULER_XYZ, ang), DH_OK);
+        DHT_EQ_INT(dh_euler_to_mat3_f32(DH_EULER_XYZ, ang, &R), DH_OK);
         for (r = 0; r < 3; r++)
             for (c = 0; c < 3; c++) DHT_NEAR(DH_M3(&R, r, c), M[r][c], 4e-7);
         /* and the seed's inverse solution away from gimbal lock */
@@ -347,7 +347,7 @@ static void at_the_poles(void)
                 ang[1] = (float)mid;
                 ang[2] = (float)dht_rand_uniform(-180.0, 180.0);
                 /* (1) built by the library: exact sin/cos of the pole */
-                DHT_EQ_INT(dh_euler_to_mat3_f32(&R, (dh_euler_seq)seq, ang), DH_OK);
+                DHT_EQ_INT(dh_euler_to_mat3_f32((dh_euler_seq)seq, ang, &R), DH_OK);
                 DHT_EQ_INT(dh_mat3_to_euler_f32(&R, (dh_euler_seq)seq, out), DH_OK);
                 check_ranges(seq, out);
                 DHT_EQ_F32_BITS(out[2], 0.0f);              /* policy: third angle exactly 0 */
@@ -409,12 +409,12 @@ static void bad_input(void)
     float ang[3] = { 10.0f, 20.0f, 30.0f }, out[3] = { 7.0f, 7.0f, 7.0f };
     dh_mat3_f32 R, Rb, Rsave;
     int r, c, seq;
-    DHT_EQ_INT(dh_euler_to_mat3_f32(&R, DH_EULER_ZYX, ang), DH_OK);
+    DHT_EQ_INT(dh_euler_to_mat3_f32(DH_EULER_ZYX, ang, &R), DH_OK);
     Rsave = R;
 
     /* bad sequence */
-    DHT_EQ_INT(dh_euler_to_mat3_f32(&R, (dh_euler_seq)24, ang), DH_ERR_ARG);
-    DHT_EQ_INT(dh_euler_to_mat3_f32(&R, (dh_euler_seq)-1, ang), DH_ERR_ARG);
+    DHT_EQ_INT(dh_euler_to_mat3_f32((dh_euler_seq)24, ang, &R), DH_ERR_ARG);
+    DHT_EQ_INT(dh_euler_to_mat3_f32((dh_euler_seq)-1, ang, &R), DH_ERR_ARG);
     DHT_EQ_INT(dh_mat3_to_euler_f32(&R, (dh_euler_seq)24, out), DH_ERR_ARG);
     DHT_TRUE(memcmp(&R, &Rsave, sizeof R) == 0);
     DHT_TRUE(out[0] == 7.0f && out[1] == 7.0f && out[2] == 7.0f);
@@ -423,11 +423,11 @@ static void bad_input(void)
     for (r = 0; r < 3; r++) {
         float bad[3] = { 1.0f, 2.0f, 3.0f };
         bad[r] = NAN;
-        DHT_EQ_INT(dh_euler_to_mat3_f32(&R, DH_EULER_xyz, bad), DH_ERR_NAN);
+        DHT_EQ_INT(dh_euler_to_mat3_f32(DH_EULER_xyz, bad, &R), DH_ERR_NAN);
         bad[r] = INFINITY;
-        DHT_EQ_INT(dh_euler_to_mat3_f32(&R, DH_EULER_ZXZ, bad), DH_ERR_NAN);
+        DHT_EQ_INT(dh_euler_to_mat3_f32(DH_EULER_ZXZ, bad, &R), DH_ERR_NAN);
         bad[r] = -INFINITY;
-        DHT_EQ_INT(dh_euler_to_mat3_f32(&R, DH_EULER_XYZ, bad), DH_ERR_NAN);
+        DHT_EQ_INT(dh_euler_to_mat3_f32(DH_EULER_XYZ, bad, &R), DH_ERR_NAN);
     }
     DHT_TRUE(memcmp(&R, &Rsave, sizeof R) == 0);
 

@@ -347,16 +347,16 @@ static void init_and_add_errors(void)
     /* bad type, non-finite parameters: robot untouched */
     r0 = r;
     DHT_EQ_INT(dh_robot_add_joint_f32(&r, (dh_joint_type)5, 0, 0, 0, 0), DH_ERR_ARG);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, NAN, 0, 0, 0), DH_ERR_NAN);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, NAN, 0), DH_ERR_NAN);
     DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, INFINITY, 0, 0), DH_ERR_NAN);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, -INFINITY, 0), DH_ERR_NAN);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, 0, NAN), DH_ERR_NAN);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, 0, -INFINITY), DH_ERR_NAN);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, NAN, 0, 0, 0), DH_ERR_NAN);
     DHT_TRUE(memcmp(&r, &r0, sizeof r) == 0);
 
     /* capacity: DH_MAX_JOINTS joints, the next one is refused */
     for (i = 0; i < (uint32_t)DH_MAX_JOINTS; i++)
-        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.1f, 0, 90, 0), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.1f, 0, 90, 0), DH_ERR_ARG);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, 0.1f, 90), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, 0.1f, 90), DH_ERR_ARG);
     DHT_EQ_INT(r.n, DH_MAX_JOINTS);
     DHT_EQ_INT(dh_fk_f32(&r, q, &T), DH_OK);
 
@@ -388,7 +388,7 @@ static void nan_joint_values(void)
         }
     /* finite q whose sum with the offset overflows to infinity */
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 1, 0, 0, 3e38f), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 3e38f, 0, 1, 0), DH_OK);
     q[0] = 3e38f;
     memset(&T, 0x5a, sizeof T);
     DHT_EQ_INT(dh_fk_f32(&r, q, &T), DH_ERR_OVERFLOW);
@@ -550,7 +550,7 @@ static void link_bits(void)
         float st, ct, sa, ca, dd;
         int c, k;
         DHT_EQ_INT(dh_robot_init(&r, conv ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_f32(&r, pris ? DH_JOINT_PRISMATIC : DH_JOINT_REVOLUTE, a, d, al, th), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, pris ? DH_JOINT_PRISMATIC : DH_JOINT_REVOLUTE, th, d, a, al), DH_OK);
         sa = r.joint[0].sa;
         ca = r.joint[0].ca;
         DHT_EQ_INT(dh_sincos_f32(pris ? th : q + th, &st, &ct), DH_OK);
@@ -610,15 +610,15 @@ static void step_bits(void)
         const float q = pris ? bit_len() : bit_angle();
         float st, ct, sa, ca, dd;
         int c, k;
-        DHT_EQ_INT(dh_mat4_rotz_f32(&B, bit_angle()), DH_OK);
-        DHT_EQ_INT(dh_mat4_rotx_f32(&Rx, bit_angle()), DH_OK);
-        dh_mat4_mul_f32(&B, &B, &Rx);
+        DHT_EQ_INT(dh_mat4_rotz_f32(bit_angle(), &B), DH_OK);
+        DHT_EQ_INT(dh_mat4_rotx_f32(bit_angle(), &Rx), DH_OK);
+        dh_mat4_mul_f32(&B, &Rx, &B);
         for (k = 0; k < 3; k++) B.m[3][k] = bit_len();
 #if DH_SMALL
         if (rep % 4 == 3) dh_mat4_identity_f32(&B); /* often enough the identity base */
 #endif
         DHT_EQ_INT(dh_robot_init(&r, conv ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_f32(&r, pris ? DH_JOINT_PRISMATIC : DH_JOINT_REVOLUTE, a, d, al, th), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, pris ? DH_JOINT_PRISMATIC : DH_JOINT_REVOLUTE, th, d, a, al), DH_OK);
         DHT_EQ_INT(dh_robot_set_base_f32(&r, &B), DH_OK);
 #if !DH_SMALL
         if ((r.flags & DH_ROBOT_BASE_ID_F32) != 0u) continue; /* the written-out link: link_bits */

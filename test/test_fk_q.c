@@ -419,11 +419,11 @@ static void long_links(void)
         double a = dht_rand_uniform(0.26, 0.33) * big * ((dht_rand_u32() & 1u) ? 1 : -1);
         double dd = dht_rand_uniform(0.26, 0.33) * big * ((dht_rand_u32() & 1u) ? 1 : -1);
         DHT_EQ_INT(dh_robot_init(&r, conv), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, dhs_to_q(a, DH_QPOS_FRAC), dhs_to_q(dd, DH_QPOS_FRAC),
-                                        dhs_to_q(al, 16), 0), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, dhs_to_q(dht_rand_uniform(-100, 100), DH_QPOS_FRAC),
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, dhs_to_q(dd, DH_QPOS_FRAC),
+                                        dhs_to_q(a, DH_QPOS_FRAC), dhs_to_q(al, 16)), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0,
                                         dhs_to_q(dht_rand_uniform(-100, 100), DH_QPOS_FRAC),
-                                        dhs_to_q(dht_rand_uniform(-180, 180), 16), 0), DH_OK);
+                                        dhs_to_q(dht_rand_uniform(-100, 100), DH_QPOS_FRAC), dhs_to_q(dht_rand_uniform(-180, 180), 16)), DH_OK);
         qq[0] = dhs_to_q(dht_rand_uniform(-360, 360), 16);
         qq[1] = dhs_to_q(dht_rand_uniform(-360, 360), 16);
         fk_q_ok(&r, qq, &T);
@@ -453,7 +453,7 @@ static void angle_wrap(void)
     for (a = 0; a < sizeof offs / sizeof offs[0]; a++) {
         dh_robot r;
         DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 1000 * 65536, 10 * 65536, 30 * 65536, offs[a]),
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, offs[a], 10 * 65536, 1000 * 65536, 30 * 65536),
                    DH_OK);
         for (b = 0; b < sizeof qs / sizeof qs[0]; b++) {
             dh_frame_q T;
@@ -484,7 +484,7 @@ static void errors_and_saturation(void)
     DHT_EQ_INT(r.n, 0);
 
     /* a float constant that does not fit Q: fixed path unavailable, float fine */
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 1e6f, 0, 0, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, 1e6f, 0), DH_OK);
     DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) == 0u);
     DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) != 0u);
     DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_UNAVAILABLE);
@@ -496,7 +496,7 @@ static void errors_and_saturation(void)
     DHT_EQ_INT(dh_link_q(&r, 1, 0, &T), DH_ERR_ARG);
     /* alpha beyond +-32768 deg does not fit dh_q16 either */
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, 40000.0f, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, 0, 40000.0f), DH_OK);
     DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_UNAVAILABLE);
 
     /* chain longer than the Q range (two links of 0.6 x the range each):
@@ -504,8 +504,8 @@ static void errors_and_saturation(void)
     {
         float big = (float)ldexp(0.6, 31 - DH_QPOS_FRAC);
         DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, big, 0, 0, 0), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, big, 0, 0, 0), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, big, 0), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, big, 0), DH_OK);
         DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) != 0u);
         DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_OVERFLOW);
         DHT_EQ_INT(T.p[0], INT32_MAX);
@@ -550,7 +550,7 @@ static void errors_and_saturation(void)
         DHT_EQ_INT(T.r[0][0], INT32_MIN);
         /* twist by 90 degrees negates an INT32_MIN entry: saturates */
         DHT_EQ_INT(dh_robot_init(&r, DH_CONV_MODIFIED), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, 90 * 65536, 0), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, 0, 90 * 65536), DH_OK);
         DHT_EQ_INT(dh_robot_set_base_q(&r, &B), DH_OK);
         q[0] = 0;
         DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_OVERFLOW);
@@ -566,8 +566,8 @@ static void errors_and_saturation(void)
             for (k = 0; k < 3; k++) DHT_TRUE(T.r[c][k] == INT32_MAX || T.r[c][k] == INT32_MIN);
         /* lengths of INT32_MIN with entries of -2: no 64-bit wrap */
         DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, INT32_MIN, INT32_MIN, 0, 0), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, INT32_MIN, INT32_MIN, 0, 0), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, INT32_MIN, INT32_MIN, 0), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, INT32_MIN, INT32_MIN, 0), DH_OK);
         for (c = 0; c < 3; c++)
             for (k = 0; k < 3; k++) B.r[c][k] = INT32_MIN;
         B.p[0] = B.p[1] = B.p[2] = 0;
@@ -702,14 +702,14 @@ static void twist_classes(void)
         double g = make_base(mode, &B), reach, e, L = 0.0;
         uint32_t i;
         DHT_EQ_INT(dh_robot_init(&r, conv ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, rnd_len_q(500), rnd_len_q(500),
-                                        dhs_to_q(dht_rand_uniform(-180, 180), 16), 0), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, rnd_len_q(500),
+                                        rnd_len_q(500), dhs_to_q(dht_rand_uniform(-180, 180), 16)), DH_OK);
         DHT_EQ_INT(dh_robot_add_joint_q(&r, type ? DH_JOINT_PRISMATIC : DH_JOINT_REVOLUTE,
-                                        lenmode ? rnd_len_q(500) : 0, lenmode ? rnd_len_q(500) : 0,
-                                        twist_alphas[ia], lenmode ? dhs_to_q(dht_rand_uniform(-180, 180), 16) : 0),
+                                        lenmode ? dhs_to_q(dht_rand_uniform(-180, 180), 16) : 0, lenmode ? rnd_len_q(500) : 0,
+                                        lenmode ? rnd_len_q(500) : 0, twist_alphas[ia]),
                    DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, rnd_len_q(500), rnd_len_q(500),
-                                        dhs_to_q(dht_rand_uniform(-180, 180), 16), 0), DH_OK);
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, rnd_len_q(500),
+                                        rnd_len_q(500), dhs_to_q(dht_rand_uniform(-180, 180), 16)), DH_OK);
         if (mode != 0) DHT_EQ_INT(dh_robot_set_base_q(&r, &B), DH_OK);
         /* the path taken follows from the flags */
         DHT_EQ_INT((r.flags & DH_ROBOT_BASE_ID_Q) != 0u, mode == 0);
@@ -768,13 +768,13 @@ static void fast_position_saturation(void)
                 int k;
                 DHT_EQ_INT(dh_robot_init(&r, conv ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
                 for (k = 0; k < 2; k++)
-                    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, a, 0, alphas[ia], 0), DH_OK);
+                    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, a, alphas[ia]), DH_OK);
                 /* two joints: 2a fits exactly */
                 fk_q_ok(&r, q, &T);
                 DHT_EQ_INT(T.p[0], 2 * (int64_t)a);
                 DHT_EQ_INT(T.p[1], 0);
                 DHT_EQ_INT(T.p[2], 0);
-                DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, a, 0, alphas[ia], 0), DH_OK);
+                DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, a, alphas[ia]), DH_OK);
                 DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_ERR_OVERFLOW);
                 DHT_EQ_INT(T.p[0], a > 0 ? INT32_MAX : INT32_MIN);
                 DHT_EQ_INT(T.p[1], 0);
@@ -821,7 +821,7 @@ static dh_status single_joint(dh_convention conv, int32_t a, int32_t d, int32_t 
     int c, k, out = 0;
     double ad = a == INT32_MIN ? -2147483647.0 : (double)a, dd = d == INT32_MIN ? -2147483647.0 : (double)d;
     DHT_EQ_INT(dh_robot_init(&r, conv), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, a, d, alpha, theta), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, theta, d, a, alpha), DH_OK);
     dhs_identity(&Bd);
     dhs_identity(&Td);
     if (B) {
@@ -968,7 +968,7 @@ static void length_int32_min(void)
             B.p[2] = p0;
             if (mode == 2) B.r[1][1] = 0x79999999;   /* row y of norm 1.9: checked path, rows x, z unchanged */
             DHT_EQ_INT(dh_robot_init(&r, conv ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
-            DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, INT32_MIN, INT32_MIN, 0, 0), DH_OK);
+            DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, INT32_MIN, INT32_MIN, 0), DH_OK);
             DHT_EQ_INT(dh_robot_set_base_q(&r, &B), DH_OK);
             DHT_EQ_INT((r.flags & DH_ROBOT_BASE_SMALL_Q) != 0u, mode != 2);
             fk_q_ok(&r, &q, &T);
@@ -1023,7 +1023,7 @@ static void link_bits(void)
         else q = pris ? rnd_len_q(300) : dhs_to_q(dht_rand_uniform(-360, 360), 16);
         if (pris && d == INT32_MIN) q = 0;      /* d + q = INT32_MIN: the one-LSB raise */
         DHT_EQ_INT(dh_robot_init(&r, conv ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
-        DHT_EQ_INT(dh_robot_add_joint_q(&r, pris ? DH_JOINT_PRISMATIC : DH_JOINT_REVOLUTE, a, d, alpha, theta),
+        DHT_EQ_INT(dh_robot_add_joint_q(&r, pris ? DH_JOINT_PRISMATIC : DH_JOINT_REVOLUTE, theta, d, a, alpha),
                    DH_OK);
         sa = r.joint[0].sa_q;
         ca = r.joint[0].ca_q;
@@ -1110,7 +1110,7 @@ static void exact_twist_bits(void)
             int ovf = 0;
             dh_status st;
             DHT_EQ_INT(dh_robot_init(&r, conv ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
-            DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, alphas[t], 0), DH_OK);
+            DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, 0, alphas[t]), DH_OK);
             DHT_EQ_INT(dh_robot_set_base_q(&r, &B), DH_OK);
             st = dh_fk_q(&r, &q, &T);
             for (k = 0; k < 3; k++) {
@@ -1212,7 +1212,7 @@ static void robot_q_setters(void)
     /* a joint whose float constant does not fit Q: a later _q joint keeps
      * the fixed path unavailable */
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 1e6f, 0, 0, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, 1e6f, 0), DH_OK);
     DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, 0, 0), DH_OK);
     DHT_TRUE((r.flags & DH_ROBOT_HAS_Q) == 0u);
     DHT_TRUE((r.flags & DH_ROBOT_HAS_F32) == 0u);
@@ -1229,7 +1229,7 @@ static void robot_q_setters(void)
      * fixed identity over a float frame that is not the identity makes
      * the float path stale */
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 100.0f, 0, 0, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, 100.0f, 0), DH_OK);
     for (c = 0; c < 4; c++)
         for (k = 0; k < 4; k++) M.m[c][k] = c == k ? 1.0f : 0.0f;
     M.m[3][0] = 5.0f;

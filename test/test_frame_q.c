@@ -48,7 +48,7 @@ static void rnd_rigid(dh_frame_q *F, int32_t pmax)
 {
     int32_t k[3];
     rnd_axis(k);
-    DHT_EQ_INT(dh_frame_rot_axis_q(F, k[0], k[1], k[2], rnd_angle()), DH_OK);
+    DHT_EQ_INT(dh_frame_rot_axis_q(k[0], k[1], k[2], rnd_angle(), F), DH_OK);
     F->p[0] = rnd_range(pmax);
     F->p[1] = rnd_range(pmax);
     F->p[2] = rnd_range(pmax);
@@ -109,7 +109,7 @@ static void identity_and_translation_are_exact(void)
         DHT_EQ_INT(F.p[i], 0);
     }
     DHT_EQ_INT(dh_frame_ortho_error_q(&F), 0);
-    dh_frame_trans_q(&F, INT32_MIN, INT32_MAX, -7);
+    dh_frame_trans_q(INT32_MIN, INT32_MAX, -7, &F);
     DHT_EQ_INT(F.p[0], INT32_MIN);
     DHT_EQ_INT(F.p[1], INT32_MAX);
     DHT_EQ_INT(F.p[2], -7);
@@ -133,9 +133,9 @@ static void elementary_rotations(void)
             { { c, -s, 0 }, { s, c, 0 }, { 0, 0, Q30 } } };
         dh_frame_q F[3];
         int a, r, col;
-        dh_frame_rotx_q(&F[0], deg);
-        dh_frame_roty_q(&F[1], deg);
-        dh_frame_rotz_q(&F[2], deg);
+        dh_frame_rotx_q(deg, &F[0]);
+        dh_frame_roty_q(deg, &F[1]);
+        dh_frame_rotz_q(deg, &F[2]);
         for (a = 0; a < 3; a++) {
             for (r = 0; r < 3; r++) {
                 for (col = 0; col < 3; col++) {
@@ -166,7 +166,7 @@ static void axis_rotation_vs_double(void)
         int r, col;
         rnd_axis(ax);
         if (k < 3) { ax[0] = ax[1] = ax[2] = 0; ax[k] = (k == 1) ? INT32_MIN : 1; }
-        DHT_EQ_INT(dh_frame_rot_axis_q(&F, ax[0], ax[1], ax[2], deg), DH_OK);
+        DHT_EQ_INT(dh_frame_rot_axis_q(ax[0], ax[1], ax[2], deg, &F), DH_OK);
         nn = sqrt((double)ax[0] * ax[0] + (double)ax[1] * ax[1] + (double)ax[2] * ax[2]);
         for (r = 0; r < 3; r++) u[r] = ax[r] / nn;
         th = (double)deg / 65536.0 * PI / 180.0;
@@ -197,7 +197,7 @@ static void axis_rotation_special_cases(void)
     /* zero axis: status, F untouched */
     memset(&F, 0x33, sizeof F);
     G = F;
-    DHT_EQ_INT(dh_frame_rot_axis_q(&F, 0, 0, 0, 30 * 65536), DH_ERR_ZERO_AXIS);
+    DHT_EQ_INT(dh_frame_rot_axis_q(0, 0, 0, 30 * 65536, &F), DH_ERR_ZERO_AXIS);
     DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
     /* any scale along x gives rotx to within 1 LSB (scale-independence) */
     for (i = 0; i < 3; i++) {
@@ -205,10 +205,10 @@ static void axis_rotation_special_cases(void)
         int32_t ax[3] = { 0, 0, 0 };
         dh_frame_q E;
         ax[i] = scales[i];
-        DHT_EQ_INT(dh_frame_rot_axis_q(&F, ax[0], ax[1], ax[2], 37 * 65536 + 1234), DH_OK);
-        if (i == 0) dh_frame_rotx_q(&E, 37 * 65536 + 1234);
-        else if (i == 1) dh_frame_roty_q(&E, 37 * 65536 + 1234);
-        else dh_frame_rotz_q(&E, -(37 * 65536 + 1234)); /* negative axis */
+        DHT_EQ_INT(dh_frame_rot_axis_q(ax[0], ax[1], ax[2], 37 * 65536 + 1234, &F), DH_OK);
+        if (i == 0) dh_frame_rotx_q(37 * 65536 + 1234, &E);
+        else if (i == 1) dh_frame_roty_q(37 * 65536 + 1234, &E);
+        else dh_frame_rotz_q(-(37 * 65536 + 1234), &E); /* negative axis */
         for (j = 0; j < 9; j++) DHT_NEAR(F.r[j / 3][j % 3], E.r[j / 3][j % 3], 1.0);
     }
 }
@@ -238,7 +238,7 @@ static double check_mul(const dh_frame_q *A, const dh_frame_q *B, int *any_sat)
     dh_frame_q O, O2;
     double R[3][3], p[3], worst = 0.0, e;
     int i, j, sat = 0;
-    dh_status st = dh_frame_mul_q(&O, A, B);
+    dh_status st = dh_frame_mul_q(A, B, &O);
     ref_mul(A, B, R, p);
     for (i = 0; i < 3; i++) {
         for (j = 0; j < 3; j++) {
@@ -252,10 +252,10 @@ static double check_mul(const dh_frame_q *A, const dh_frame_q *B, int *any_sat)
     if (st == DH_OK) DHT_EQ_INT(sat, 0);
     /* aliasing: out == A and out == B give the same bits */
     O2 = *A;
-    DHT_EQ_INT(dh_frame_mul_q(&O2, &O2, B), st);
+    DHT_EQ_INT(dh_frame_mul_q(&O2, B, &O2), st);
     DHT_TRUE(memcmp(&O, &O2, sizeof O) == 0);
     O2 = *B;
-    DHT_EQ_INT(dh_frame_mul_q(&O2, A, &O2), st);
+    DHT_EQ_INT(dh_frame_mul_q(A, &O2, &O2), st);
     DHT_TRUE(memcmp(&O, &O2, sizeof O) == 0);
     *any_sat |= sat;
     return worst;
@@ -307,7 +307,7 @@ static void compose_accumulator_extremes(void)
         for (j = 0; j < 3; j++) { A.r[i][j] = INT32_MIN; B.r[i][j] = INT32_MIN; }
         A.p[i] = INT32_MIN; B.p[i] = INT32_MIN;
     }
-    DHT_EQ_INT(dh_frame_mul_q(&O, &A, &B), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_frame_mul_q(&A, &B, &O), DH_ERR_OVERFLOW);
     for (i = 0; i < 3; i++) {
         for (j = 0; j < 3; j++) DHT_EQ_INT(O.r[i][j], INT32_MAX);
         DHT_EQ_INT(O.p[i], INT32_MAX);   /* 3 * 2^31 * 2 - 2^31 > 0 */
@@ -320,10 +320,10 @@ static void compose_accumulator_extremes(void)
     }
     dh_frame_identity_q(&B);
     for (i = 0; i < 3; i++) B.p[i] = INT32_MIN;
-    DHT_EQ_INT(dh_frame_mul_q(&O, &A, &B), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_frame_mul_q(&A, &B, &O), DH_ERR_OVERFLOW);
     for (i = 0; i < 3; i++) DHT_EQ_INT(O.p[i], INT32_MAX); /* +3*2^31 - 2^31 */
     for (i = 0; i < 3; i++) { for (j = 0; j < 3; j++) A.r[i][j] = DH_Q30_ONE; A.p[i] = INT32_MIN; }
-    DHT_EQ_INT(dh_frame_mul_q(&O, &A, &B), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_frame_mul_q(&A, &B, &O), DH_ERR_OVERFLOW);
     for (i = 0; i < 3; i++) DHT_EQ_INT(O.p[i], INT32_MIN); /* -4 * 2^31 */
     (void)check_mul(&A, &B, &sat);
     DHT_TRUE(sat);
@@ -332,10 +332,10 @@ static void compose_accumulator_extremes(void)
     A.r[0][0] = 1; A.r[1][1] = DH_Q30_ONE; A.r[2][2] = DH_Q30_ONE;
     dh_frame_identity_q(&B);
     B.r[0][0] = (int32_t)0x20000000; /* 0.5 * 2^30: product 2^29 -> 0.5 LSB */
-    DHT_EQ_INT(dh_frame_mul_q(&O, &A, &B), DH_OK);
+    DHT_EQ_INT(dh_frame_mul_q(&A, &B, &O), DH_OK);
     DHT_EQ_INT(O.r[0][0], 1);
     B.r[0][0] = -(int32_t)0x20000000;
-    DHT_EQ_INT(dh_frame_mul_q(&O, &A, &B), DH_OK);
+    DHT_EQ_INT(dh_frame_mul_q(&A, &B, &O), DH_OK);
     DHT_EQ_INT(O.r[0][0], 0);
 }
 
@@ -352,13 +352,13 @@ static void inverse_vs_double_and_identity(void)
             rnd_rigid(&F, 1 << 28);
         } else {   /* a DH-like link Rz(theta) Tz(d) Tx(a) Rx(alpha) from elementary rotations */
             dh_frame_q X;
-            dh_frame_rotz_q(&F, rnd_angle());
-            dh_frame_trans_q(&X, rnd_range(1 << 27), 0, rnd_range(1 << 27));
-            DHT_EQ_INT(dh_frame_mul_q(&F, &F, &X), DH_OK);
-            dh_frame_rotx_q(&X, rnd_angle());
-            DHT_EQ_INT(dh_frame_mul_q(&F, &F, &X), DH_OK);
+            dh_frame_rotz_q(rnd_angle(), &F);
+            dh_frame_trans_q(rnd_range(1 << 27), 0, rnd_range(1 << 27), &X);
+            DHT_EQ_INT(dh_frame_mul_q(&F, &X, &F), DH_OK);
+            dh_frame_rotx_q(rnd_angle(), &X);
+            DHT_EQ_INT(dh_frame_mul_q(&F, &X, &F), DH_OK);
         }
-        DHT_EQ_INT(dh_frame_inv_q(&I, &F), DH_OK);
+        DHT_EQ_INT(dh_frame_inv_q(&F, &I), DH_OK);
         for (i = 0; i < 3; i++) {
             double s = 0.0, e;
             for (j = 0; j < 3; j++) {
@@ -373,7 +373,7 @@ static void inverse_vs_double_and_identity(void)
         DHT_EQ_INT(dh_frame_inv_q(&Q, &Q), DH_OK);
         DHT_TRUE(memcmp(&Q, &I, sizeof Q) == 0);
         /* T * T^-1 ~ I */
-        DHT_EQ_INT(dh_frame_mul_q(&P, &F, &I), DH_OK);
+        DHT_EQ_INT(dh_frame_mul_q(&F, &I, &P), DH_OK);
         for (i = 0; i < 3; i++) {
             for (j = 0; j < 3; j++) {
                 double e = fabs((double)P.r[j][i] - (i == j ? Q30 : 0.0));
@@ -395,13 +395,13 @@ static void inverse_saturates_and_exact_path(void)
     int i, j, sat = 0;
     dh_frame_identity_q(&F);
     F.p[0] = INT32_MIN; /* -(-2^31) does not fit */
-    DHT_EQ_INT(dh_frame_inv_q(&I, &F), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_frame_inv_q(&F, &I), DH_ERR_OVERFLOW);
     DHT_EQ_INT(I.p[0], INT32_MAX);
     DHT_EQ_INT(I.p[1], 0);
     for (k = 0; k < n; k++) {
         dh_status st;
         rnd_garbage(&F);
-        st = dh_frame_inv_q(&I, &F);
+        st = dh_frame_inv_q(&F, &I);
         sat = 0;
         for (i = 0; i < 3; i++) {
             double s = 0.0;
@@ -503,7 +503,7 @@ static void ortho_error_measure(void)
     DHT_TRUE_MSG(dh_frame_ortho_error_q(&F) < (1 << 22), "after one step from 1/16: %ld",
                  (long)dh_frame_ortho_error_q(&F));
     /* one step repairs a visibly perturbed rotation */
-    DHT_EQ_INT(dh_frame_rot_axis_q(&F, 3, -4, 12, 77 * 65536), DH_OK);
+    DHT_EQ_INT(dh_frame_rot_axis_q(3, -4, 12, 77 * 65536, &F), DH_OK);
     F.r[0][0] += 10000; F.r[1][2] -= 8000; F.r[2][1] += 6000;
     DHT_TRUE(dh_frame_ortho_error_q(&F) > 10000);
     {   /* the void form does the same step */
@@ -531,16 +531,16 @@ static void drift_bounded_with_orthonormalisation(void)
     int32_t ea = 0, eb_max = 0;
     int i;
     /* small rotations about a few fixed axes, applied in a varying order */
-    DHT_EQ_INT(dh_frame_rot_axis_q(&S[0], 1, 2, 3, 65536 / 3), DH_OK);
-    DHT_EQ_INT(dh_frame_rot_axis_q(&S[1], -5, 1, 2, 65536 / 7), DH_OK);
-    DHT_EQ_INT(dh_frame_rot_axis_q(&S[2], 0x40000000, 0, 7, 12345), DH_OK);
-    DHT_EQ_INT(dh_frame_rot_axis_q(&S[3], 2, -9, 1, 65536 / 2 + 3), DH_OK);
+    DHT_EQ_INT(dh_frame_rot_axis_q(1, 2, 3, 65536 / 3, &S[0]), DH_OK);
+    DHT_EQ_INT(dh_frame_rot_axis_q(-5, 1, 2, 65536 / 7, &S[1]), DH_OK);
+    DHT_EQ_INT(dh_frame_rot_axis_q(0x40000000, 0, 7, 12345, &S[2]), DH_OK);
+    DHT_EQ_INT(dh_frame_rot_axis_q(2, -9, 1, 65536 / 2 + 3, &S[3]), DH_OK);
     dh_frame_identity_q(&Fa);
     dh_frame_identity_q(&Fb);
     for (k = 0; k < n; k++) {
         const dh_frame_q *s = &S[dht_rand_u32() & 3u];
-        DHT_EQ_INT(dh_frame_mul_q(&Fa, &Fa, s), DH_OK);
-        DHT_EQ_INT(dh_frame_mul_q(&Fb, &Fb, s), DH_OK);
+        DHT_EQ_INT(dh_frame_mul_q(&Fa, s, &Fa), DH_OK);
+        DHT_EQ_INT(dh_frame_mul_q(&Fb, s, &Fb), DH_OK);
         if ((k & 63) == 63) {
             DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&Fb), DH_OK);
             i = dh_frame_ortho_error_q(&Fb);
@@ -566,7 +566,7 @@ static void conversions(void)
     const double ps = ldexp(1.0, DH_QPOS_FRAC);
     for (k = 0; k < n; k++) {
         rnd_rigid(&F, 0x7FFFFFFF);
-        dh_frame_to_mat4_q(&T, &F);
+        dh_frame_to_mat4_q(&F, &T);
         for (i = 0; i < 3; i++) {
             for (j = 0; j < 3; j++) {
                 double ref = (double)F.r[j][i] / Q30;
@@ -578,7 +578,7 @@ static void conversions(void)
         DHT_TRUE(DH_M4(&T, 3, 3) == 1.0f);
         /* float -> fixed: nearest integer to x * 2^k */
         {
-            dh_status st = dh_frame_from_mat4_q(&G, &T);
+            dh_status st = dh_frame_from_mat4_q(&T, &G);
             int sat = 0;
             for (i = 0; i < 3; i++) {
                 for (j = 0; j < 3; j++) {
@@ -598,42 +598,42 @@ static void conversions(void)
     /* exact values round-trip exactly; ties away from zero */
     dh_frame_identity_q(&F);
     F.r[0][1] = 3; F.r[1][0] = -3; F.p[0] = -(1 << 20); F.p[2] = 12345;
-    dh_frame_to_mat4_q(&T, &F);
-    DHT_EQ_INT(dh_frame_from_mat4_q(&G, &T), DH_OK);
+    dh_frame_to_mat4_q(&F, &T);
+    DHT_EQ_INT(dh_frame_from_mat4_q(&T, &G), DH_OK);
     DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
     DH_M4(&T, 0, 0) = (float)(2.5 / Q30);
     DH_M4(&T, 1, 1) = (float)(-2.5 / Q30);
-    DHT_EQ_INT(dh_frame_from_mat4_q(&G, &T), DH_OK);
+    DHT_EQ_INT(dh_frame_from_mat4_q(&T, &G), DH_OK);
     DHT_EQ_INT(G.r[0][0], 3);
     DHT_EQ_INT(G.r[1][1], -3);
     /* rotation entry 2.0 does not fit Q2.30 ([-2, 2)); -2.0 does */
     U = T;
     DH_M4(&U, 2, 2) = 2.0f;
     DH_M4(&U, 0, 2) = -2.0f;
-    DHT_EQ_INT(dh_frame_from_mat4_q(&G, &U), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_frame_from_mat4_q(&U, &G), DH_ERR_OVERFLOW);
     DHT_EQ_INT(G.r[2][2], INT32_MAX);
     DHT_EQ_INT(G.r[2][0], INT32_MIN);
     DHT_EQ_INT(G.r[0][0], 3);
     /* position out of range */
     U = T;
     DH_M4(&U, 1, 3) = -(float)ldexp(1.0, 31 - DH_QPOS_FRAC) * 1.5f;
-    DHT_EQ_INT(dh_frame_from_mat4_q(&G, &U), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_frame_from_mat4_q(&U, &G), DH_ERR_OVERFLOW);
     DHT_EQ_INT(G.p[1], INT32_MIN);
     /* non-finite: F untouched */
     U = T;
     DH_M4(&U, 3, 2) = (float)NAN;
     memset(&G, 0x11, sizeof G);
     F = G;
-    DHT_EQ_INT(dh_frame_from_mat4_q(&G, &U), DH_ERR_NAN);
+    DHT_EQ_INT(dh_frame_from_mat4_q(&U, &G), DH_ERR_NAN);
     DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
     U = T;
     DH_M4(&U, 2, 1) = (float)INFINITY;
-    DHT_EQ_INT(dh_frame_from_mat4_q(&G, &U), DH_ERR_NAN);
+    DHT_EQ_INT(dh_frame_from_mat4_q(&U, &G), DH_ERR_NAN);
     DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
     /* bottom row */
     U = T;
     DH_M4(&U, 3, 0) = 0.25f;
-    DHT_EQ_INT(dh_frame_from_mat4_q(&G, &U), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(dh_frame_from_mat4_q(&U, &G), DH_ERR_NOT_RIGID);
     DHT_EQ_INT(G.r[0][0], 3);
 }
 

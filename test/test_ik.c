@@ -101,7 +101,7 @@ static void run_rate(const dhs_robot *desc, const float *home, uint32_t mask, do
         dh_status st;
         dhs_random_q(desc, q);
         target_of(&r, q, &T);
-        st = dh_ik_f32(&r, &T, home, qo, prm, g_work, DH_IK_WORK_FLOATS(r.n), &res);
+        st = dh_ik_f32(&r, &T, home, prm, g_work, DH_IK_WORK_FLOATS(r.n), qo, &res);
         /* whatever the status: a finite configuration within the limits,
          * and res describes it */
         DHT_TRUE(st == DH_OK || st == DH_ERR_NO_CONVERGENCE || st == DH_ERR_UNREACHABLE);
@@ -214,48 +214,48 @@ static void ik_bad_arguments(void)
     res.iterations = 77u;
 
     /* workspace too small / missing */
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, DH_IK_WORK_FLOATS(6u) - 1u, &res), DH_ERR_ARG);
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, NULL, 0, &res), DH_ERR_ARG);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, DH_IK_WORK_FLOATS(6u) - 1u, q, &res), DH_ERR_ARG);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, NULL, 0, q, &res), DH_ERR_ARG);
     /* bad parameters */
     p.max_iter = 0;
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res), DH_ERR_ARG);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_ARG);
     dh_ik_params_default(&p);
     p.mask = 0;
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res), DH_ERR_ARG);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_ARG);
     p.mask = 0x40u;
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res), DH_ERR_ARG);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_ARG);
     dh_ik_params_default(&p);
     p.tol_pos = -1.0f;
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res), DH_ERR_ARG);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_ARG);
     dh_ik_params_default(&p);
     p.tol_rot = NAN;
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res), DH_ERR_ARG);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_ARG);
     dh_ik_params_default(&p);
     p.w_rot = 0.0f;
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res), DH_ERR_ARG);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_ARG);
     dh_ik_params_default(&p);
     /* NaN target / NaN start */
     T.m[3][1] = NAN;
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res), DH_ERR_NAN);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_NAN);
     target_of(&r, qd, &T);
     T.m[0][0] = INFINITY;
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res), DH_ERR_NAN);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_NAN);
     target_of(&r, qd, &T);
     q0[2] = NAN;
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res), DH_ERR_NAN);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_NAN);
     q0[2] = -60.0f;
     /* target rotation not a rotation */
     T.m[0][0] *= 2.0f;
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_NOT_RIGID);
     /* ... which does not matter for position-only IK */
     p.mask = DH_IK_POSITION;
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res), DH_OK);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_OK);
     dh_ik_params_default(&p);
     for (k = 0; k < 6; k++) q[k] = 99.0f;
     res.iterations = 77u;
     /* no joints */
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res), DH_ERR_ARG);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_ARG);
     /* outputs untouched on argument errors */
     for (k = 0; k < 6; k++) DHT_TRUE(q[k] == 99.0f);
     DHT_EQ_INT(res.iterations, 77);
@@ -279,7 +279,7 @@ static void ik_unreachable(void)
     T.m[3][0] = 2.0f;
     T.m[3][1] = 0.5f;
     T.m[3][2] = 1.0f;
-    st = dh_ik_f32(&r, &T, puma_home, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res);
+    st = dh_ik_f32(&r, &T, puma_home, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
     dht_printf("unreachable target: status %d after %lu iterations, residual %.4g m / %.4g rad\n", (int)st,
                (unsigned long)res.iterations, (double)res.err_pos, (double)res.err_rot);
     /* beyond the reach bound: UNREACHABLE after a few attempts, not the
@@ -295,7 +295,7 @@ static void ik_unreachable(void)
     /* position only: the closest point is the stretched arm, distance
      * |target - shoulder| - reach, found to 1e-3 */
     p.mask = DH_IK_POSITION;
-    st = dh_ik_f32(&r, &T, puma_home, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res);
+    st = dh_ik_f32(&r, &T, puma_home, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
     DHT_EQ_INT(st, DH_ERR_UNREACHABLE);
     DHT_TRUE(res.iterations < 400u);
     DHT_TRUE(within_limits(&r, q));
@@ -305,7 +305,7 @@ static void ik_unreachable(void)
                (unsigned long)res.iterations, ep);
     /* without restarts the stall is reported as such, quickly */
     p.restarts = 0;
-    st = dh_ik_f32(&r, &T, puma_home, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res);
+    st = dh_ik_f32(&r, &T, puma_home, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
     dht_printf("unreachable target, no restarts: status %d after %lu iterations, residual %.6g m\n", (int)st,
                (unsigned long)res.iterations, (double)res.err_pos);
     DHT_EQ_INT(st, DH_ERR_UNREACHABLE);
@@ -330,15 +330,15 @@ static void ik_limits_respected(void)
     float q0[2] = { 0, -10 }, q[2];
     const float l1 = 0.6f, l2 = 0.4f;
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, l1, 0, 0, 0), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, l2, 0, 0, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, l1, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, l2, 0), DH_OK);
     target_of(&r, qt, &T);
     dh_ik_params_default(&p);
     p.mask = DH_IK_PX | DH_IK_PY;
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res), DH_OK);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_OK);
     DHT_NEAR(q[1], -70.0, 1e-3);            /* unconstrained: elbow down */
     DHT_EQ_INT(dh_robot_set_limits_f32(&r, 1, 0.0f, 150.0f), DH_OK);
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res), DH_OK);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_OK);
     DHT_TRUE(within_limits(&r, q));
     DHT_NEAR(q[1], 70.0, 1e-3);             /* elbow up */
     true_error(&r, q, &T, &ep, &er);
@@ -348,7 +348,7 @@ static void ik_limits_respected(void)
      * no admissible solution. Best effort within limits, UNREACHABLE. */
     DHT_EQ_INT(dh_robot_set_limits_f32(&r, 0, 50.0f, 90.0f), DH_OK);
     {
-        dh_status st = dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res);
+        dh_status st = dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
         DHT_EQ_INT(st, DH_ERR_UNREACHABLE);     /* every attempt stalls at the limits */
         DHT_TRUE(within_limits(&r, q));
         true_error(&r, q, &T, &ep, &er);
@@ -372,7 +372,7 @@ static void ik_multiturn(void)
     for (i = 0; i < 6; i++) DHT_EQ_INT(dh_robot_set_limits_f32(&r, i, -720.0f, 720.0f), DH_OK);
     target_of(&r, qt, &T);
     dh_ik_params_default(&p);
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res), DH_OK);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_OK);
     for (i = 0; i < 6; i++) DHT_NEAR(q[i], qt[i], 1e-2);
     true_error(&r, q, &T, &ep, &er);
     DHT_TRUE(ep <= 1e-6 && er <= 1e-5);
@@ -386,8 +386,8 @@ static void ik_prismatic(void)
     dh_ik_params p;
     int it, ok_c = 0, ok_s = 0, n = DHT_ITER(200);
     DHT_EQ_INT(dh_robot_init(&cart, DH_CONV_STANDARD), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&cart, DH_JOINT_PRISMATIC, 0, 0, -90, 0), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&cart, DH_JOINT_PRISMATIC, 0, 0, -90, -90), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&cart, DH_JOINT_PRISMATIC, 0, 0, 0, -90), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&cart, DH_JOINT_PRISMATIC, -90, 0, 0, -90), DH_OK);
     DHT_EQ_INT(dh_robot_add_joint_f32(&cart, DH_JOINT_PRISMATIC, 0, 0.1f, 0, 0), DH_OK);
     DHT_EQ_INT(dh_robot_set_limits_f32(&cart, 0, 0.0f, 1.0f), DH_OK);
     DHT_EQ_INT(dh_robot_set_limits_f32(&cart, 1, -0.5f, 0.5f), DH_OK);
@@ -395,8 +395,8 @@ static void ik_prismatic(void)
     /* SCARA: a1 = 0.35, a2 = 0.25, vertical prismatic, tool roll; alpha 180
      * on joint 2 points z down as on real SCARAs. */
     DHT_EQ_INT(dh_robot_init(&scara, DH_CONV_STANDARD), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&scara, DH_JOINT_REVOLUTE, 0.35f, 0.4f, 0, 0), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&scara, DH_JOINT_REVOLUTE, 0.25f, 0, 180, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&scara, DH_JOINT_REVOLUTE, 0, 0.4f, 0.35f, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&scara, DH_JOINT_REVOLUTE, 0, 0, 0.25f, 180), DH_OK);
     DHT_EQ_INT(dh_robot_add_joint_f32(&scara, DH_JOINT_PRISMATIC, 0, 0, 0, 0), DH_OK);
     DHT_EQ_INT(dh_robot_add_joint_f32(&scara, DH_JOINT_REVOLUTE, 0, 0.05f, 0, 0), DH_OK);
     DHT_EQ_INT(dh_robot_set_limits_f32(&scara, 0, -130.0f, 130.0f), DH_OK);
@@ -415,7 +415,7 @@ static void ik_prismatic(void)
         target_of(&cart, qc, &T);
         q[0] = 0.5f; q[1] = 0.0f; q[2] = 0.0f;
         p.mask = DH_IK_FULL;
-        st = dh_ik_f32(&cart, &T, q, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res);
+        st = dh_ik_f32(&cart, &T, q, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
         true_error(&cart, q, &T, &ep, &er);
         DHT_TRUE(within_limits(&cart, q));
         if (st == DH_OK && ep <= 1e-6 && er <= 1e-5) ok_c++;
@@ -425,7 +425,7 @@ static void ik_prismatic(void)
         target_of(&scara, qs, &T);
         q[0] = 0.0f; q[1] = 90.0f; q[2] = 0.15f; q[3] = 0.0f;
         p.mask = DH_IK_POSITION | DH_IK_RZ;
-        st = dh_ik_f32(&scara, &T, q, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res);
+        st = dh_ik_f32(&scara, &T, q, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
         true_error(&scara, q, &T, &ep, &er);
         DHT_TRUE(within_limits(&scara, q));
         /* the SCARA keeps its tool vertical, so the full rotation matches too */
@@ -455,8 +455,8 @@ static void ik_masked_deterministic(void)
     T.m[3][1] += 0.3f;     /* y is not asked for */
     dh_ik_params_default(&p);
     p.mask = DH_IK_PX | DH_IK_PZ;
-    DHT_EQ_INT(dh_ik_f32(&r, &T, puma_home, q1, &p, g_work, sizeof g_work / sizeof g_work[0], &r1), DH_OK);
-    DHT_EQ_INT(dh_ik_f32(&r, &T, puma_home, q2, &p, g_work, sizeof g_work / sizeof g_work[0], &r2), DH_OK);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, puma_home, &p, g_work, sizeof g_work / sizeof g_work[0], q1, &r1), DH_OK);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, puma_home, &p, g_work, sizeof g_work / sizeof g_work[0], q2, &r2), DH_OK);
     for (k = 0; k < 6; k++) DHT_EQ_F32_BITS(q1[k], q2[k]);
     DHT_EQ_INT(r1.iterations, r2.iterations);
     for (k = 0; k < 6; k++) qq[k] = (double)q1[k];
@@ -479,7 +479,7 @@ static void ik_start_at_solution(void)
     for (k = 0; k < 7; k++) q0[k] = (float)qd[k];
     target_of(&r, qd, &T);
     dh_ik_params_default(&p);
-    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, q, &p, g_work, sizeof g_work / sizeof g_work[0], &res), DH_OK);
+    DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_OK);
     for (k = 0; k < 7; k++) DHT_NEAR(q[k], qd[k], 1e-3);
     DHT_TRUE(res.iterations <= 3u);    /* only the refinement steps */
 }

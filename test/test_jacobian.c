@@ -239,9 +239,9 @@ static void jacobian_fd_random_robots(void)
         DHT_EQ_INT(dh_robot_init(&r, (rb & 1) ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
         for (i = 0; i < n; i++) {
             dh_joint_type t = (dht_rand_u32() % 3u == 0u) ? DH_JOINT_PRISMATIC : DH_JOINT_REVOLUTE;
-            DHT_EQ_INT(dh_robot_add_joint_f32(&r, t, (float)dht_rand_uniform(-0.5, 0.5),
+            DHT_EQ_INT(dh_robot_add_joint_f32(&r, t, (float)dht_rand_uniform(-180, 180),
                                               (float)dht_rand_uniform(-0.5, 0.5),
-                                              (float)dht_rand_uniform(-180, 180),
+                                              (float)dht_rand_uniform(-0.5, 0.5),
                                               (float)dht_rand_uniform(-180, 180)), DH_OK);
             if (t == DH_JOINT_PRISMATIC) DHT_EQ_INT(dh_robot_set_limits_f32(&r, i, -0.3f, 0.3f), DH_OK);
         }
@@ -271,12 +271,12 @@ static void jacobian_planar_2r(void)
     int it;
     double emax = 0;
     DHT_EQ_INT(dh_robot_init(&rs, DH_CONV_STANDARD), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&rs, DH_JOINT_REVOLUTE, (float)l1, 0, 0, 0), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&rs, DH_JOINT_REVOLUTE, (float)l2, 0, 0, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&rs, DH_JOINT_REVOLUTE, 0, 0, (float)l1, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&rs, DH_JOINT_REVOLUTE, 0, 0, (float)l2, 0), DH_OK);
     DHT_EQ_INT(dh_robot_init(&rm, DH_CONV_MODIFIED), DH_OK);
     DHT_EQ_INT(dh_robot_add_joint_f32(&rm, DH_JOINT_REVOLUTE, 0, 0, 0, 0), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&rm, DH_JOINT_REVOLUTE, (float)l1, 0, 0, 0), DH_OK);
-    dh_mat4_trans_f32(&tool, (float)l2, 0, 0);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&rm, DH_JOINT_REVOLUTE, 0, 0, (float)l1, 0), DH_OK);
+    dh_mat4_trans_f32((float)l2, 0, 0, &tool);
     DHT_EQ_INT(dh_robot_set_tool_f32(&rm, &tool), DH_OK);
     for (it = 0; it < DHT_ITER(2000); it++) {
         float q[2], J[12], Jm[12];
@@ -312,8 +312,8 @@ static void jacobian_cartesian(void)
     static const float ref[18] = { 0, 0, 1,   0, 1, 0,   1, 0, 0,   0, 0, 0,   0, 0, 0,   0, 0, 0 };
     /* z0 = z; x-rot -90 turns z1 into y... built so the axes are z, y, x */
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, 0, 0, -90, 0), DH_OK);
-    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, 0, 0, -90, -90), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, 0, 0, 0, -90), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, -90, 0, 0, -90), DH_OK);
     DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, 0, 0, 0, 0), DH_OK);
     DHT_EQ_INT(dh_jacobian_f32(&r, q, J, NULL), DH_OK);
     for (k = 0; k < 18; k++) DHT_NEAR(J[k], ref[k], 1e-7);

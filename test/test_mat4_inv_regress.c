@@ -173,7 +173,7 @@ static void proj_1e35_inverts_at_every_scale(void)
         from_rows(&T, k_proj_1e35, k);
         memset(&S, 0x5a, sizeof S);
         X = S;
-        st = dh_mat4_inv_f32(&X, &T);
+        st = dh_mat4_inv_f32(&T, &X);
         dhr_from_f32(&D, &T);
         if (dhr_max_abs(&D) < (double)FLT_MIN) {
             /* zero or denormal matrix */
@@ -213,7 +213,7 @@ static void affine_large_translation_inverts(void)
         dh_mat4_f32 T, X;
         inv_check c;
         from_rows(&T, k_affine_p[m], 0);
-        DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_OK);
+        DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_OK);
         DHT_TRUE(check_inverse(&T, &X, &c));
         dht_printf("affine |p| %s: right residual %.3g, max|X - T^-1| / (max|T^-1| cond u) = %.3g (cond %.3g)\n",
                    m ? "7e8" : "3.6e7", c.proof, c.rel / (c.cond * U24), c.cond);
@@ -233,7 +233,7 @@ static void nonfinite_elimination_is_singular(void)
     from_rows(&T, k_gj_overflow, 0);
     memset(&S, 0x5a, sizeof S);
     X = S;
-    DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_ERR_SINGULAR);
+    DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_ERR_SINGULAR);
     DHT_TRUE(memcmp(&X, &S, sizeof X) == 0);
     /* the expectation, independently: condition number far above 2^19 */
     dh_mat4_identity_f32(&I);
@@ -252,11 +252,11 @@ static void underflowing_inverse_reported(void)
     from_rows(&T, k_underflow, 0);
     memset(&S, 0x5a, sizeof S);
     X = S;
-    DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_ERR_OVERFLOW);
     DHT_TRUE(memcmp(&X, &S, sizeof X) == 0);
     /* scaled into a range where the inverse is normal: proven and accurate */
     from_rows(&T, k_underflow, -40);
-    DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_OK);
+    DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_OK);
     DHT_TRUE(check_inverse(&T, &X, &c));
     DHT_TRUE(c.proof < 1.0);
     DHT_TRUE(c.rel <= 3.1 * c.cond * U24);
@@ -291,7 +291,7 @@ static void extreme_magnitudes_sweep(void)
             }
         memset(&S, 0x5a, sizeof S);
         X = S;
-        st = dh_mat4_inv_f32(&X, &T);
+        st = dh_mat4_inv_f32(&T, &X);
         dhr_from_f32(&D, &T);
         if (!dhr_inv(&Di, &D)) {
             DHT_EQ_INT(st, DH_ERR_SINGULAR);
@@ -353,14 +353,14 @@ static void persp_small_focal_every_scale(void)
     for (ax = 0; ax < 3; ax++)
         for (fi = 0; fi < (int)(sizeof fs / sizeof fs[0]); fi++) {
             dh_mat4_f32 P;
-            DHT_EQ_INT(dh_mat4_persp_f32(&P, ax, fs[fi]), DH_OK);
+            DHT_EQ_INT(dh_mat4_persp_f32(ax, fs[fi], &P), DH_OK);
             for (k = -40; k <= 40; k++) {
                 dh_mat4_f32 T, X, Y;
                 inv_check c;
                 int i, j;
                 for (i = 0; i < 4; i++)
                     for (j = 0; j < 4; j++) T.m[i][j] = ldexpf(P.m[i][j], k);
-                DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_OK);
+                DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_OK);
                 DHT_TRUE(check_inverse(&T, &X, &c));
                 DHT_TRUE_MSG(c.proof < 1.0, "axis %d f %g 2^%d: residual %.3g", ax, (double)fs[fi], k, c.proof);
                 DHT_TRUE_MSG(c.rel <= 3.1 * c.cond * U24, "axis %d f %g 2^%d: error %.3g, cond %.3g", ax,
@@ -427,7 +427,7 @@ static void p_zero_magnitudes_sweep(void)
         if (kind == 1u) DH_M4(&T, 3, 3) = 1.0f;
         memset(&S, 0x5a, sizeof S);
         X = S;
-        st = dh_mat4_inv_f32(&X, &T);
+        st = dh_mat4_inv_f32(&T, &X);
         for (sc = -20; sc <= 20; sc += 40) {
             dh_mat4_f32 U, Y;
             for (r = 0; r < 4; r++)
@@ -436,7 +436,7 @@ static void p_zero_magnitudes_sweep(void)
                     U.m[r][c] = ldexpf(v, sc);
                     if (v != 0.0f && !(fabsf(v) >= 0x1p-105f && fabsf(v) <= 0x1p107f)) in_range = 0;
                 }
-            if (in_range && fits(&T) && fits(&U)) DHT_EQ_INT(dh_mat4_inv_f32(&Y, &U), st);
+            if (in_range && fits(&T) && fits(&U)) DHT_EQ_INT(dh_mat4_inv_f32(&U, &Y), st);
         }
         dhr_from_f32(&D, &T);
         if (!dhr_inv(&Di, &D)) {
@@ -487,14 +487,14 @@ static void rigid_overflowing_translation_reported(void)
     dh_mat4_f32 T, out, ref;
     dh_plane_f32 P = {1.0f, 2.0f, 3.0f, 4.0f}, Q, Qref;
     const float big = 0.9f * FLT_MAX;
-    DHT_EQ_INT(dh_mat4_rotz_f32(&T, 45.0f), DH_OK);
+    DHT_EQ_INT(dh_mat4_rotz_f32(45.0f, &T), DH_OK);
     T.m[3][0] = big;   /* p = (big, big, 0): |R^T p|_x = big sqrt(2) */
     T.m[3][1] = big;
     DHT_EQ_INT(dh_mat4_check_rigid_f32(&T, DH_MAT4_RIGID_TOL), DH_OK);
-    DHT_EQ_INT(dh_mat4_inv_f32(&out, &T), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_mat4_inv_f32(&T, &out), DH_ERR_OVERFLOW);
     memset(&out, 0x5A, sizeof out);
     ref = out;
-    DHT_EQ_INT(dh_mat4_inv_auto_f32(&out, &T), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_mat4_inv_auto_f32(&T, &out), DH_ERR_OVERFLOW);
     DHT_TRUE(memcmp(&out, &ref, sizeof out) == 0);
     memset(&Q, 0x5A, sizeof Q);
     Qref = Q;
@@ -503,7 +503,7 @@ static void rigid_overflowing_translation_reported(void)
     /* a quarter of that translation fits: DH_OK and finite results */
     T.m[3][0] = 0.25f * big;
     T.m[3][1] = 0.25f * big;
-    DHT_EQ_INT(dh_mat4_inv_auto_f32(&out, &T), DH_OK);
+    DHT_EQ_INT(dh_mat4_inv_auto_f32(&T, &out), DH_OK);
     DHT_TRUE(fabsf(out.m[3][0]) <= FLT_MAX && fabsf(out.m[3][1]) <= FLT_MAX);
     DHT_EQ_INT(dh_mat4_apply_plane_f32(&T, &P, &Q), DH_OK);
     DHT_TRUE(fabsf(Q.d) <= FLT_MAX);
@@ -535,7 +535,7 @@ static void subnormal_translation_balanced(void)
                     memcpy(&v, &k_subnormal_p[n][4 * c + r], sizeof v);
                     T.m[c][r] = ldexpf(v, k);
                 }
-            DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_OK);
+            DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_OK);
             DHT_TRUE(check_inverse(&T, &X, &o));
             DHT_TRUE_MSG(o.proof <= 0.5 && o.rel <= 3.2 * o.cond * 0x1p-24,
                          "matrix %d at 2^%d: residual %.3g (bound 0.5), error %.3g (bound %.3g)", n, k,

@@ -45,13 +45,13 @@ static void rotations_match_reference(void)
         dh_mat4_f32 T;
         dhr_mat4 D;
         double k[3];
-        DHT_EQ_INT(dh_mat4_rotx_f32(&T, deg), DH_OK);
+        DHT_EQ_INT(dh_mat4_rotx_f32(deg, &T), DH_OK);
         dhr_rotx(&D, (double)deg);
         emax_xyz = dmax(emax_xyz, dhr_max_abs_diff(&T, &D));
-        DHT_EQ_INT(dh_mat4_roty_f32(&T, deg), DH_OK);
+        DHT_EQ_INT(dh_mat4_roty_f32(deg, &T), DH_OK);
         dhr_roty(&D, (double)deg);
         emax_xyz = dmax(emax_xyz, dhr_max_abs_diff(&T, &D));
-        DHT_EQ_INT(dh_mat4_rotz_f32(&T, deg), DH_OK);
+        DHT_EQ_INT(dh_mat4_rotz_f32(deg, &T), DH_OK);
         dhr_rotz(&D, (double)deg);
         emax_xyz = dmax(emax_xyz, dhr_max_abs_diff(&T, &D));
         /* general axis: any length, reference built as C Rot(z) C^T */
@@ -59,7 +59,7 @@ static void rotations_match_reference(void)
         {
             const double len = pow(10.0, dht_rand_uniform(-30.0, 30.0));
             const float kx = (float)(k[0] * len), ky = (float)(k[1] * len), kz = (float)(k[2] * len);
-            DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, kx, ky, kz, deg), DH_OK);
+            DHT_EQ_INT(dh_mat4_rot_axis_f32(kx, ky, kz, deg, &T), DH_OK);
             DHT_TRUE(dhr_rot_axis(&D, (double)kx, (double)ky, (double)kz, (double)deg));
             emax_axis = dmax(emax_axis, dhr_max_abs_diff(&T, &D));
         }
@@ -107,9 +107,9 @@ static void products_match_reference_and_alias(void)
             DH_M4(&A, 3, 0) = 0; DH_M4(&A, 3, 1) = 0; DH_M4(&A, 3, 2) = 0; DH_M4(&A, 3, 3) = 1;
             DH_M4(&B, 3, 0) = 0; DH_M4(&B, 3, 1) = 0; DH_M4(&B, 3, 2) = 0; DH_M4(&B, 3, 3) = 1;
         }
-        dh_mat4_mul_f32(&C, &A, &B);
+        dh_mat4_mul_f32(&A, &B, &C);
         wfull = dmax(wfull, product_err_units(&C, &A, &B, 0));
-        dh_mat4_mul_affine_f32(&D, &A, &B);
+        dh_mat4_mul_affine_f32(&A, &B, &D);
         waff = dmax(waff, product_err_units(&D, &A, &B, 1));
         /* affine == full on affine inputs (values; zeros may differ in sign) */
         {
@@ -118,14 +118,14 @@ static void products_match_reference_and_alias(void)
                 for (c = 0; c < 4; c++) DHT_TRUE(DH_M4(&C, r, c) == DH_M4(&D, r, c));
         }
         /* aliasing: out == A, out == B, out == A == B */
-        E = A; dh_mat4_mul_f32(&E, &E, &B); DHT_TRUE(memcmp(&E, &C, sizeof E) == 0);
-        E = B; dh_mat4_mul_f32(&E, &A, &E); DHT_TRUE(memcmp(&E, &C, sizeof E) == 0);
-        E = A; dh_mat4_mul_affine_f32(&E, &E, &B); DHT_TRUE(memcmp(&E, &D, sizeof E) == 0);
-        E = B; dh_mat4_mul_affine_f32(&E, &A, &E); DHT_TRUE(memcmp(&E, &D, sizeof E) == 0);
-        dh_mat4_mul_f32(&C, &A, &A);
+        E = A; dh_mat4_mul_f32(&E, &B, &E); DHT_TRUE(memcmp(&E, &C, sizeof E) == 0);
+        E = B; dh_mat4_mul_f32(&A, &E, &E); DHT_TRUE(memcmp(&E, &C, sizeof E) == 0);
+        E = A; dh_mat4_mul_affine_f32(&E, &B, &E); DHT_TRUE(memcmp(&E, &D, sizeof E) == 0);
+        E = B; dh_mat4_mul_affine_f32(&A, &E, &E); DHT_TRUE(memcmp(&E, &D, sizeof E) == 0);
+        dh_mat4_mul_f32(&A, &A, &C);
         E = A; dh_mat4_mul_f32(&E, &E, &E); DHT_TRUE(memcmp(&E, &C, sizeof E) == 0);
         /* pre/post multiplication */
-        E = B; dh_mat4_premul_f32(&E, &A); dh_mat4_mul_f32(&C, &A, &B); DHT_TRUE(memcmp(&E, &C, sizeof E) == 0);
+        E = B; dh_mat4_premul_f32(&E, &A); dh_mat4_mul_f32(&A, &B, &C); DHT_TRUE(memcmp(&E, &C, sizeof E) == 0);
         E = A; dh_mat4_postmul_f32(&E, &B); DHT_TRUE(memcmp(&E, &C, sizeof E) == 0);
     }
     /* the affine product's bottom row of A is ignored */
@@ -133,10 +133,10 @@ static void products_match_reference_and_alias(void)
         dh_mat4_f32 A, B, C, D;
         rand_rigid_f(&A, 10.0);
         rand_rigid_f(&B, 10.0);
-        dh_mat4_mul_affine_f32(&C, &A, &B);
+        dh_mat4_mul_affine_f32(&A, &B, &C);
         DH_M4(&A, 3, 0) = NAN; DH_M4(&A, 3, 3) = 7.0f;
         DH_M4(&B, 3, 1) = INFINITY;
-        dh_mat4_mul_affine_f32(&D, &A, &B);
+        dh_mat4_mul_affine_f32(&A, &B, &D);
         DHT_TRUE(memcmp(&C, &D, sizeof C) == 0);
     }
     dht_printf("product max |err| / (u sum|A||B|): full %.3f, affine %.3f\n", wfull, waff);
@@ -196,8 +196,8 @@ static void apply_matches_reference(void)
         {
             dh_mat4_f32 P, PT;
             dhr_mat4 DP;
-            DHT_EQ_INT(dh_mat4_persp_f32(&P, it % 3, (float)dht_rand_uniform(200, 400)), DH_OK);
-            dh_mat4_mul_f32(&PT, &P, &T);
+            DHT_EQ_INT(dh_mat4_persp_f32(it % 3, (float)dht_rand_uniform(200, 400), &P), DH_OK);
+            dh_mat4_mul_f32(&P, &T, &PT);
             dhr_from_f32(&DP, &PT);
             h.x = u.x; h.y = u.y; h.z = u.z; h.w = 1.0f;
             du[0] = u.x; du[1] = u.y; du[2] = u.z; du[3] = 1.0;
@@ -236,26 +236,26 @@ static void rigid_inverse_properties(void)
         int r;
         rand_rigid_f(&T, tmax);
         DHT_EQ_INT(dh_mat4_check_rigid_f32(&T, DH_MAT4_RIGID_TOL), DH_OK);
-        dh_mat4_inv_rigid_f32(&Ti, &T);
+        dh_mat4_inv_rigid_f32(&T, &Ti);
         /* vs the double inverse of the (float) input; scale = 1 + |p| */
         dhr_from_f32(&D, &T);
         DHT_TRUE(dhr_inv(&Di, &D));
         scale = 1.0 + fabs(DHR_M4(&D, 0, 3)) + fabs(DHR_M4(&D, 1, 3)) + fabs(DHR_M4(&D, 2, 3));
         w_ref = dmax(w_ref, dhr_max_abs_diff(&Ti, &Di) / (U24 * scale));
         /* T * T^-1 == I */
-        dh_mat4_mul_f32(&P, &T, &Ti);
+        dh_mat4_mul_f32(&T, &Ti, &P);
         {
             dhr_mat4 I;
             dhr_identity(&I);
             w_id = dmax(w_id, dhr_max_abs_diff(&P, &I) / (U24 * scale));
         }
         /* general inverse agrees on rigid input; auto takes the fast path */
-        DHT_EQ_INT(dh_mat4_inv_f32(&Tg, &T), DH_OK);
+        DHT_EQ_INT(dh_mat4_inv_f32(&T, &Tg), DH_OK);
         w_gen = dmax(w_gen, dhr_max_abs_diff(&Tg, &Di) / (U24 * scale));
-        DHT_EQ_INT(dh_mat4_inv_auto_f32(&Ta, &T), DH_OK);
+        DHT_EQ_INT(dh_mat4_inv_auto_f32(&T, &Ta), DH_OK);
         DHT_TRUE(memcmp(&Ta, &Ti, sizeof Ta) == 0);
         /* inv(inv(T)) == T */
-        dh_mat4_inv_rigid_f32(&Tii, &Ti);
+        dh_mat4_inv_rigid_f32(&Ti, &Tii);
         {
             dhr_mat4 DT;
             dhr_from_f32(&DT, &T);
@@ -330,7 +330,7 @@ static void general_inverse_accuracy_and_scale_invariance(void)
             cond = dhr_norm_inf(&Dt) * dhr_norm_inf(&Dti);
         }
         DHT_TRUE_MSG(cond < DH_MAT4_COND_MAX / 2.0, "sample cond %g", cond);
-        DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_OK);
+        DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_OK);
         max_acc_cond = dmax(max_acc_cond, cond);
         /* relative error of the inverse in units of cond * u */
         worst = dmax(worst, dhr_max_abs_diff(&X, &Di) / dhr_max_abs(&Di) / (cond * U24));
@@ -343,7 +343,7 @@ static void general_inverse_accuracy_and_scale_invariance(void)
             worst_id = dmax(worst_id, dhr_max_abs_diff_d(&DX, &I) / (cond * U24));
         }
         /* inv(inv(T)) == T within the same kind of bound */
-        DHT_EQ_INT(dh_mat4_inv_f32(&XX, &X), DH_OK);
+        DHT_EQ_INT(dh_mat4_inv_f32(&X, &XX), DH_OK);
         /* aliasing */
         XX = T;
         DHT_EQ_INT(dh_mat4_inv_f32(&XX, &XX), DH_OK);
@@ -419,7 +419,7 @@ static void general_inverse_fast_paths_accuracy(void)
         dhr_from_f32(&D, &T);
         DHT_TRUE(dhr_inv(&Di, &D));
         cond = cond1_rot(&D);
-        DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_OK);
+        DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_OK);
         for (c = 0; c < 3; c++)
             for (r = 0; r < 3; r++) mr = dmax(mr, fabs(DHR_M4(&Di, r, c)));
         for (r = 0; r < 3; r++) {
@@ -448,7 +448,7 @@ static void general_inverse_fast_paths_accuracy(void)
             DHT_TRUE(dhr_inv(&Dti, &Dt));
             cond = dhr_norm_inf(&Dt) * dhr_norm_inf(&Dti);
         }
-        DHT_EQ_INT(dh_mat4_inv_f32(&X, &T), DH_OK);
+        DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_OK);
         w_proj = dmax(w_proj, dhr_max_abs_diff(&X, &Di) / dhr_max_abs(&Di) / (cond * U24));
     }
     dht_printf("fast paths: affine R^-1 max err / (max|R^-1| cond u) = %.3f, translation / (sum|R^-1||p| cond u) "
@@ -489,8 +489,8 @@ static void general_inverse_decision_scale_invariant(void)
             for (c = 0; c < 3; c++)
                 for (r = 0; r < 3; r++) T2.m[c][r] = ldexpf(T.m[c][r], k);
         }
-        s1 = dh_mat4_inv_f32(&X, &T);
-        s2 = dh_mat4_inv_f32(&X2, &T2);
+        s1 = dh_mat4_inv_f32(&T, &X);
+        s2 = dh_mat4_inv_f32(&T2, &X2);
         DHT_TRUE(s1 == DH_OK || s1 == DH_ERR_SINGULAR);
         if ((it & 1) == 0 && cond <= 1e4) {
             /* affine and well inside the fast path's range: exact scaling */
@@ -536,18 +536,18 @@ static void general_inverse_reports_rank_deficient(void)
             dhr_to_f32(&T, &D);
             memset(&O, 0x5a, sizeof O);
             O0 = O;
-            DHT_EQ_INT(dh_mat4_inv_f32(&O, &T), DH_ERR_SINGULAR);
+            DHT_EQ_INT(dh_mat4_inv_f32(&T, &O), DH_ERR_SINGULAR);
             DHT_TRUE(memcmp(&O, &O0, sizeof O) == 0);
-            DHT_EQ_INT(dh_mat4_inv_auto_f32(&O, &T), DH_ERR_SINGULAR);
+            DHT_EQ_INT(dh_mat4_inv_auto_f32(&T, &O), DH_ERR_SINGULAR);
         }
     }
     /* a singular affine transform: rotation block of rank 2 */
     {
         dh_mat4_f32 T, O;
-        dh_mat4_scale_f32(&T, 1.0f, 1e-9f, 1.0f);
-        DHT_EQ_INT(dh_mat4_inv_f32(&O, &T), DH_ERR_SINGULAR);
-        dh_mat4_scale_f32(&T, 1.0f, 1e-5f, 1.0f); /* cond 1e5: invertible */
-        DHT_EQ_INT(dh_mat4_inv_f32(&O, &T), DH_OK);
+        dh_mat4_scale_f32(1.0f, 1e-9f, 1.0f, &T);
+        DHT_EQ_INT(dh_mat4_inv_f32(&T, &O), DH_ERR_SINGULAR);
+        dh_mat4_scale_f32(1.0f, 1e-5f, 1.0f, &T); /* cond 1e5: invertible */
+        DHT_EQ_INT(dh_mat4_inv_f32(&T, &O), DH_OK);
         DHT_EQ_F32_BITS(DH_M4(&O, 1, 1), 1.0f / 1e-5f);
     }
 }
@@ -570,9 +570,9 @@ static void plane_point_invariance(void)
             /* non-rigid affine: rotation times scale */
             dh_mat4_f32 S;
             rand_rigid_f(&T, 100.0);
-            dh_mat4_scale_f32(&S, (float)dht_rand_uniform(0.5, 2), (float)dht_rand_uniform(0.5, 2),
-                              (float)dht_rand_uniform(0.5, 2));
-            dh_mat4_mul_f32(&T, &T, &S);
+            dh_mat4_scale_f32((float)dht_rand_uniform(0.5, 2), (float)dht_rand_uniform(0.5, 2), (float)dht_rand_uniform(0.5, 2),
+                              &S);
+            dh_mat4_mul_f32(&T, &S, &T);
         }
         P.a = (float)dht_rand_uniform(-1, 1);
         P.b = (float)dht_rand_uniform(-1, 1);
@@ -649,7 +649,7 @@ static void axis_angle_round_trips(void)
             dh_mat4_f32 R2;
             dh_vec3_f32 k2;
             float th2;
-            DHT_EQ_INT(dh_mat4_rot_axis_f32(&R2, k.x, k.y, k.z, tho), DH_OK);
+            DHT_EQ_INT(dh_mat4_rot_axis_f32(k.x, k.y, k.z, tho, &R2), DH_OK);
             DHT_EQ_INT(dh_mat4_to_axis_angle_f32(&R2, &k2, &th2), DH_OK);
             w_rebuild = dmax(w_rebuild, rebuild_err(&R2, &k2, th2));
         }

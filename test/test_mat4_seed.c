@@ -79,7 +79,7 @@ static void seed_eq_1_27_translation(void)
     dh_mat4_f32 T;
     dh_vec3_f32 u = v3(2, 3, 2), v;
     dh_vec4_f32 h = v4(2, 3, 2, 1), hv;
-    dh_mat4_trans_f32(&T, 4, -3, 7);
+    dh_mat4_trans_f32(4, -3, 7, &T);
     CHECK_MAT_BITS(&T, TR);
     dh_mat4_apply_point_f32(&T, &u, &v);
     CHECK_V3_BITS(v, 6.0f, 0.0f, 9.0f);
@@ -113,13 +113,13 @@ static void seed_eq_1_29_1_31_plane(void)
     dh_mat4_f32 T, Ti, Tg;
     dh_plane_f32 P = { 1, 0, 0, -2 }, Q;
     dh_vec3_f32 u = v3(2, 3, 2), v;
-    dh_mat4_trans_f32(&T, 4, -3, 7);
+    dh_mat4_trans_f32(4, -3, 7, &T);
     /* eq. 1.29: the point lies in the plane */
     DHT_EQ_F32_BITS(P.a * u.x + P.b * u.y + P.c * u.z + P.d, 0.0f);
     /* the inverse given in the seed, by both inverses */
-    dh_mat4_inv_rigid_f32(&Ti, &T);
+    dh_mat4_inv_rigid_f32(&T, &Ti);
     CHECK_MAT_BITS(&Ti, INV);
-    DHT_EQ_INT(dh_mat4_inv_f32(&Tg, &T), DH_OK);
+    DHT_EQ_INT(dh_mat4_inv_f32(&T, &Tg), DH_OK);
     CHECK_MAT_BITS(&Tg, INV);
     /* eq. 1.30 */
     DHT_EQ_INT(dh_mat4_apply_plane_f32(&T, &P, &Q), DH_OK);
@@ -141,9 +141,9 @@ static void seed_eq_1_35_1_36_rotations(void)
 {
     dh_mat4_f32 Rz, Ry;
     dh_vec3_f32 u = v3(7, 3, 2), v, w;
-    DHT_EQ_INT(dh_mat4_rotz_f32(&Rz, 90.0f), DH_OK);
+    DHT_EQ_INT(dh_mat4_rotz_f32(90.0f, &Rz), DH_OK);
     CHECK_MAT_BITS(&Rz, ROTZ90);
-    DHT_EQ_INT(dh_mat4_roty_f32(&Ry, 90.0f), DH_OK);
+    DHT_EQ_INT(dh_mat4_roty_f32(90.0f, &Ry), DH_OK);
     CHECK_MAT_BITS(&Ry, ROTY90);
     dh_mat4_apply_point_f32(&Rz, &u, &v);     /* eq. 1.35 */
     CHECK_V3_BITS(v, -3.0f, 7.0f, 2.0f);
@@ -155,11 +155,11 @@ static void seed_eq_1_40_1_42_composition(void)
 {
     dh_mat4_f32 Rz, Ry, P, Pa;
     dh_vec3_f32 u = v3(7, 3, 2), w;
-    dh_mat4_rotz_f32(&Rz, 90.0f);
-    dh_mat4_roty_f32(&Ry, 90.0f);
-    dh_mat4_mul_f32(&P, &Ry, &Rz);            /* eq. 1.40 / 1.41 */
+    dh_mat4_rotz_f32(90.0f, &Rz);
+    dh_mat4_roty_f32(90.0f, &Ry);
+    dh_mat4_mul_f32(&Ry, &Rz, &P);            /* eq. 1.40 / 1.41 */
     CHECK_MAT_BITS(&P, EQ141);
-    dh_mat4_mul_affine_f32(&Pa, &Ry, &Rz);
+    dh_mat4_mul_affine_f32(&Ry, &Rz, &Pa);
     CHECK_MAT_BITS(&Pa, EQ141);
     dh_mat4_apply_point_f32(&P, &u, &w);      /* eq. 1.42 */
     CHECK_V3_BITS(w, 2.0f, 7.0f, 3.0f);
@@ -169,13 +169,13 @@ static void seed_eq_1_43_1_45_noncommutative(void)
 {
     dh_mat4_f32 Rz, Ry, P, Q;
     dh_vec3_f32 u = v3(7, 3, 2), w;
-    dh_mat4_rotz_f32(&Rz, 90.0f);
-    dh_mat4_roty_f32(&Ry, 90.0f);
-    dh_mat4_mul_f32(&P, &Rz, &Ry);            /* eq. 1.43 */
+    dh_mat4_rotz_f32(90.0f, &Rz);
+    dh_mat4_roty_f32(90.0f, &Ry);
+    dh_mat4_mul_f32(&Rz, &Ry, &P);            /* eq. 1.43 */
     CHECK_MAT_BITS(&P, EQ143);
     dh_mat4_apply_point_f32(&P, &u, &w);      /* eq. 1.44 */
     CHECK_V3_BITS(w, -3.0f, 2.0f, -7.0f);
-    dh_mat4_mul_f32(&Q, &Ry, &Rz);            /* eq. 1.45: AB != BA */
+    dh_mat4_mul_f32(&Ry, &Rz, &Q);            /* eq. 1.45: AB != BA */
     DHT_TRUE(!mat_bits_equal(&P, &Q));
 }
 
@@ -184,15 +184,15 @@ static void seed_eq_1_46_1_48_translation_and_frame(void)
     dh_mat4_f32 Tr, Rz, Ry, P;
     dh_vec3_f32 u = v3(7, 3, 2), x, o = v3(0, 0, 0), d;
     dh_vec4_f32 h;
-    dh_mat4_trans_f32(&Tr, 4, -3, 7);
-    dh_mat4_rotz_f32(&Rz, 90.0f);
-    dh_mat4_roty_f32(&Ry, 90.0f);
+    dh_mat4_trans_f32(4, -3, 7, &Tr);
+    dh_mat4_rotz_f32(90.0f, &Rz);
+    dh_mat4_roty_f32(90.0f, &Ry);
     /* Trans Rot(y) Rot(z): built both ways round (grouping) and affine */
-    dh_mat4_mul_f32(&P, &Ry, &Rz);
-    dh_mat4_mul_f32(&P, &Tr, &P);             /* out aliases B */
+    dh_mat4_mul_f32(&Ry, &Rz, &P);
+    dh_mat4_mul_f32(&Tr, &P, &P);             /* out aliases B */
     CHECK_MAT_BITS(&P, EQ146);
-    dh_mat4_mul_affine_f32(&P, &Tr, &Ry);
-    dh_mat4_mul_affine_f32(&P, &P, &Rz);      /* out aliases A */
+    dh_mat4_mul_affine_f32(&Tr, &Ry, &P);
+    dh_mat4_mul_affine_f32(&P, &Rz, &P);      /* out aliases A */
     CHECK_MAT_BITS(&P, EQ146);
     dh_mat4_apply_point_f32(&P, &u, &x);      /* eq. 1.47 */
     CHECK_V3_BITS(x, 6.0f, 4.0f, 10.0f);
@@ -227,9 +227,9 @@ static void seed_eq_1_50_1_51_pre_post(void)
     static const float Y_[4][4] = { { 0, -1, 0, 30 }, { 0, 0, -1, 10 }, { 1, 0, 0, 0 }, { 0, 0, 0, 1 } };
     dh_mat4_f32 C = rows(C_), T, Tz, Tx, X, Y;
     /* T = Trans(10, 0, 0) Rot(z, 90), built with the constructors */
-    dh_mat4_trans_f32(&Tx, 10, 0, 0);
-    dh_mat4_rotz_f32(&Tz, 90.0f);
-    dh_mat4_mul_f32(&T, &Tx, &Tz);
+    dh_mat4_trans_f32(10, 0, 0, &Tx);
+    dh_mat4_rotz_f32(90.0f, &Tz);
+    dh_mat4_mul_f32(&Tx, &Tz, &T);
     CHECK_MAT_BITS(&T, T_);
     X = C;
     dh_mat4_premul_f32(&X, &T);   /* X = T C, motion in base coordinates (eq. 1.50) */
@@ -238,9 +238,9 @@ static void seed_eq_1_50_1_51_pre_post(void)
     dh_mat4_postmul_f32(&Y, &T);  /* Y = C T, motion in the frame's axes (eq. 1.51) */
     CHECK_MAT_BITS(&Y, Y_);
     /* the same with the affine product */
-    dh_mat4_mul_affine_f32(&X, &T, &C);
+    dh_mat4_mul_affine_f32(&T, &C, &X);
     CHECK_MAT_BITS(&X, X_);
-    dh_mat4_mul_affine_f32(&Y, &C, &T);
+    dh_mat4_mul_affine_f32(&C, &T, &Y);
     CHECK_MAT_BITS(&Y, Y_);
 }
 
@@ -254,10 +254,10 @@ static void seed_eq_1_52_1_53_object(void)
     dh_mat4_f32 Tr, Ry, Rz, T;
     dh_vec3_f32 u[6], v[6];
     int i;
-    dh_mat4_trans_f32(&Tr, 4, 0, 0);
-    dh_mat4_roty_f32(&Ry, 90.0f);
-    dh_mat4_rotz_f32(&Rz, 90.0f);
-    dh_mat4_mul_f32(&T, &Tr, &Ry);
+    dh_mat4_trans_f32(4, 0, 0, &Tr);
+    dh_mat4_roty_f32(90.0f, &Ry);
+    dh_mat4_rotz_f32(90.0f, &Rz);
+    dh_mat4_mul_f32(&Tr, &Ry, &T);
     dh_mat4_postmul_f32(&T, &Rz);
     CHECK_MAT_BITS(&T, EQ152);
     for (i = 0; i < 6; i++) u[i] = v3(U[i][0], U[i][1], U[i][2]);
@@ -271,15 +271,15 @@ static void seed_eq_1_52_1_53_object(void)
 static void seed_eq_1_54_1_55_inverse(void)
 {
     dh_mat4_f32 T = rows(EQ152), Ti, Tg, Ta, P;
-    dh_mat4_inv_rigid_f32(&Ti, &T);               /* eq. 1.54 via eq. 1.57 */
+    dh_mat4_inv_rigid_f32(&T, &Ti);               /* eq. 1.54 via eq. 1.57 */
     CHECK_MAT_BITS(&Ti, EQ154);
-    DHT_EQ_INT(dh_mat4_inv_f32(&Tg, &T), DH_OK);  /* general inverse */
+    DHT_EQ_INT(dh_mat4_inv_f32(&T, &Tg), DH_OK);  /* general inverse */
     CHECK_MAT_BITS(&Tg, EQ154);
-    DHT_EQ_INT(dh_mat4_inv_auto_f32(&Ta, &T), DH_OK);
+    DHT_EQ_INT(dh_mat4_inv_auto_f32(&T, &Ta), DH_OK);
     CHECK_MAT_BITS(&Ta, EQ154);
-    dh_mat4_mul_f32(&P, &Ti, &T);                 /* eq. 1.55 */
+    dh_mat4_mul_f32(&Ti, &T, &P);                 /* eq. 1.55 */
     CHECK_MAT_BITS(&P, IDENT);
-    dh_mat4_mul_f32(&P, &T, &Ti);
+    dh_mat4_mul_f32(&T, &Ti, &P);
     CHECK_MAT_BITS(&P, IDENT);
     /* in place */
     Ta = T;
@@ -298,9 +298,9 @@ static void seed_example_1_1_axis_angle(void)
     dh_vec3_f32 k;
     float th = -1.0f;
     const double inv_sqrt3 = 0.57735026918962576451; /* 1/sqrt(3) */
-    dh_mat4_roty_f32(&Ry, 90.0f);
-    dh_mat4_rotz_f32(&Rz, 90.0f);
-    dh_mat4_mul_f32(&R, &Ry, &Rz);
+    dh_mat4_roty_f32(90.0f, &Ry);
+    dh_mat4_rotz_f32(90.0f, &Rz);
+    dh_mat4_mul_f32(&Ry, &Rz, &R);
     CHECK_MAT_BITS(&R, EQ141);                    /* eq. 1.104 */
     DHT_EQ_INT(dh_mat4_to_axis_angle_f32(&R, &k, &th), DH_OK);
     DHT_EQ_F32_BITS(th, 120.0f);                  /* eq. 1.107: exactly 120 */
@@ -312,7 +312,7 @@ static void seed_example_1_1_axis_angle(void)
                (double)k.x, (double)k.y, (double)k.z, inv_sqrt3);
     /* eq. 1.111: Rot(k, 120) reproduces the matrix (0/1 entries within
      * rounding of the irrational k) */
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&Rk, 1, 1, 1, 120.0f), DH_OK);
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(1, 1, 1, 120.0f, &Rk), DH_OK);
     {
         int i, j;
         for (i = 0; i < 4; i++)
@@ -327,7 +327,7 @@ static void seed_eq_1_113_scale(void)
     static const float S[4][4] = { { 2, 0, 0, 0 }, { 0, 3, 0, 0 }, { 0, 0, 0.5f, 0 }, { 0, 0, 0, 1 } };
     dh_mat4_f32 T;
     dh_vec3_f32 u = v3(5, -7, 9), v;
-    dh_mat4_scale_f32(&T, 2, 3, 0.5f);
+    dh_mat4_scale_f32(2, 3, 0.5f, &T);
     CHECK_MAT_BITS(&T, S);
     dh_mat4_apply_point_f32(&T, &u, &v);  /* eq. 1.114 */
     CHECK_V3_BITS(v, 10.0f, -21.0f, 4.5f);
@@ -342,7 +342,7 @@ static void seed_eq_1_127_perspective(void)
     dh_mat4_f32 T, U;
     dh_vec4_f32 u = v4(3, 2, -6, 1), h;
     dh_vec3_f32 v;
-    DHT_EQ_INT(dh_mat4_persp_f32(&T, 1, 4.0f), DH_OK);
+    DHT_EQ_INT(dh_mat4_persp_f32(1, 4.0f, &T), DH_OK);
     CHECK_MAT_BITS(&T, PY);
     /* eq. 1.128: w = 1 - y/f = 0.5 */
     dh_mat4_apply_vec4_f32(&T, &u, &h);
@@ -350,22 +350,22 @@ static void seed_eq_1_127_perspective(void)
     /* eq. 1.129: image point (x, y, z) / (1 - y/f) */
     DHT_EQ_INT(dh_mat4_apply_point_h_f32(&T, &u, &v), DH_OK);
     CHECK_V3_BITS(v, 6.0f, 4.0f, -12.0f);
-    DHT_EQ_INT(dh_mat4_persp_f32(&T, 0, 4.0f), DH_OK);
+    DHT_EQ_INT(dh_mat4_persp_f32(0, 4.0f, &T), DH_OK);
     CHECK_MAT_BITS(&T, PX);
-    DHT_EQ_INT(dh_mat4_persp_f32(&T, 2, 4.0f), DH_OK);
+    DHT_EQ_INT(dh_mat4_persp_f32(2, 4.0f, &T), DH_OK);
     CHECK_MAT_BITS(&T, PZ);
     /* along z: w = 1 - z/f = 2.5 */
     DHT_EQ_INT(dh_mat4_apply_point_h_f32(&T, &u, &v), DH_OK);
     CHECK_V3_BITS(v, 1.2f, 0.8f, -2.4f);
     /* errors: bad axis, f == 0, NaN; T untouched */
     U = T;
-    DHT_EQ_INT(dh_mat4_persp_f32(&T, 3, 4.0f), DH_ERR_ARG);
-    DHT_EQ_INT(dh_mat4_persp_f32(&T, -1, 4.0f), DH_ERR_ARG);
-    DHT_EQ_INT(dh_mat4_persp_f32(&T, 1, 0.0f), DH_ERR_DOMAIN);
-    DHT_EQ_INT(dh_mat4_persp_f32(&T, 1, -0.0f), DH_ERR_DOMAIN);
-    DHT_EQ_INT(dh_mat4_persp_f32(&T, 1, 1e-45f), DH_ERR_DOMAIN); /* 1/f overflows */
-    DHT_EQ_INT(dh_mat4_persp_f32(&T, 1, NAN), DH_ERR_NAN);
-    DHT_EQ_INT(dh_mat4_persp_f32(&T, 1, INFINITY), DH_ERR_NAN);
+    DHT_EQ_INT(dh_mat4_persp_f32(3, 4.0f, &T), DH_ERR_ARG);
+    DHT_EQ_INT(dh_mat4_persp_f32(-1, 4.0f, &T), DH_ERR_ARG);
+    DHT_EQ_INT(dh_mat4_persp_f32(1, 0.0f, &T), DH_ERR_DOMAIN);
+    DHT_EQ_INT(dh_mat4_persp_f32(1, -0.0f, &T), DH_ERR_DOMAIN);
+    DHT_EQ_INT(dh_mat4_persp_f32(1, 1e-45f, &T), DH_ERR_DOMAIN); /* 1/f overflows */
+    DHT_EQ_INT(dh_mat4_persp_f32(1, NAN, &T), DH_ERR_NAN);
+    DHT_EQ_INT(dh_mat4_persp_f32(1, INFINITY, &T), DH_ERR_NAN);
     DHT_TRUE(mat_bits_equal(&T, &U));
 }
 
@@ -380,43 +380,43 @@ static void rotations_whole_quadrants_exact(void)
     dh_mat4_f32 T, I;
     dh_mat4_identity_f32(&I);
     CHECK_MAT_BITS(&I, IDENT);
-    DHT_EQ_INT(dh_mat4_rotx_f32(&T, 0.0f), DH_OK);  CHECK_MAT_BITS(&T, IDENT);
-    DHT_EQ_INT(dh_mat4_roty_f32(&T, -0.0f), DH_OK); CHECK_MAT_BITS(&T, IDENT);
-    DHT_EQ_INT(dh_mat4_rotz_f32(&T, 360.0f), DH_OK); CHECK_MAT_BITS(&T, IDENT);
-    DHT_EQ_INT(dh_mat4_rotx_f32(&T, 90.0f), DH_OK); CHECK_MAT_BITS(&T, RX90);
-    DHT_EQ_INT(dh_mat4_rotx_f32(&T, -270.0f), DH_OK); CHECK_MAT_BITS(&T, RX90);
-    DHT_EQ_INT(dh_mat4_rotz_f32(&T, 180.0f), DH_OK); CHECK_MAT_BITS(&T, RZ180);
-    DHT_EQ_INT(dh_mat4_rotz_f32(&T, -180.0f), DH_OK); CHECK_MAT_BITS(&T, RZ180);
-    DHT_EQ_INT(dh_mat4_roty_f32(&T, -90.0f), DH_OK); CHECK_MAT_BITS(&T, RYM90);
+    DHT_EQ_INT(dh_mat4_rotx_f32(0.0f, &T), DH_OK);  CHECK_MAT_BITS(&T, IDENT);
+    DHT_EQ_INT(dh_mat4_roty_f32(-0.0f, &T), DH_OK); CHECK_MAT_BITS(&T, IDENT);
+    DHT_EQ_INT(dh_mat4_rotz_f32(360.0f, &T), DH_OK); CHECK_MAT_BITS(&T, IDENT);
+    DHT_EQ_INT(dh_mat4_rotx_f32(90.0f, &T), DH_OK); CHECK_MAT_BITS(&T, RX90);
+    DHT_EQ_INT(dh_mat4_rotx_f32(-270.0f, &T), DH_OK); CHECK_MAT_BITS(&T, RX90);
+    DHT_EQ_INT(dh_mat4_rotz_f32(180.0f, &T), DH_OK); CHECK_MAT_BITS(&T, RZ180);
+    DHT_EQ_INT(dh_mat4_rotz_f32(-180.0f, &T), DH_OK); CHECK_MAT_BITS(&T, RZ180);
+    DHT_EQ_INT(dh_mat4_roty_f32(-90.0f, &T), DH_OK); CHECK_MAT_BITS(&T, RYM90);
     /* general axis along the coordinate axes: bitwise the same */
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, 1, 0, 0, 90.0f), DH_OK); CHECK_MAT_BITS(&T, RX90);
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, 0, 0, 5, 90.0f), DH_OK); CHECK_MAT_BITS(&T, ROTZ90);
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, 0, 1e-30f, 0, 90.0f), DH_OK); CHECK_MAT_BITS(&T, ROTY90);
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, 0, -3e30f, 0, -90.0f), DH_OK); CHECK_MAT_BITS(&T, ROTY90);
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, 0, 0, 1, 180.0f), DH_OK); CHECK_MAT_BITS(&T, RZ180);
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, 0.3f, -0.2f, 0.9f, 0.0f), DH_OK); CHECK_MAT_BITS(&T, IDENT);
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(1, 0, 0, 90.0f, &T), DH_OK); CHECK_MAT_BITS(&T, RX90);
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(0, 0, 5, 90.0f, &T), DH_OK); CHECK_MAT_BITS(&T, ROTZ90);
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(0, 1e-30f, 0, 90.0f, &T), DH_OK); CHECK_MAT_BITS(&T, ROTY90);
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(0, -3e30f, 0, -90.0f, &T), DH_OK); CHECK_MAT_BITS(&T, ROTY90);
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(0, 0, 1, 180.0f, &T), DH_OK); CHECK_MAT_BITS(&T, RZ180);
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(0.3f, -0.2f, 0.9f, 0.0f, &T), DH_OK); CHECK_MAT_BITS(&T, IDENT);
 }
 
 static void constructor_errors(void)
 {
     dh_mat4_f32 T, U;
-    dh_mat4_trans_f32(&T, 1, 2, 3);
+    dh_mat4_trans_f32(1, 2, 3, &T);
     U = T;
-    DHT_EQ_INT(dh_mat4_rotx_f32(&T, NAN), DH_ERR_NAN);
-    DHT_EQ_INT(dh_mat4_roty_f32(&T, INFINITY), DH_ERR_NAN);
-    DHT_EQ_INT(dh_mat4_rotz_f32(&T, -INFINITY), DH_ERR_NAN);
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, 0, 0, 0, 10.0f), DH_ERR_ZERO_AXIS);
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, 1e-40f, -1e-41f, 0, 10.0f), DH_ERR_ZERO_AXIS); /* denormal */
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, NAN, 0, 1, 10.0f), DH_ERR_NAN);
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, 0, INFINITY, 1, 10.0f), DH_ERR_NAN);
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, 0, 0, 1, NAN), DH_ERR_NAN);
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, 0, 0, 0, NAN), DH_ERR_NAN);
+    DHT_EQ_INT(dh_mat4_rotx_f32(NAN, &T), DH_ERR_NAN);
+    DHT_EQ_INT(dh_mat4_roty_f32(INFINITY, &T), DH_ERR_NAN);
+    DHT_EQ_INT(dh_mat4_rotz_f32(-INFINITY, &T), DH_ERR_NAN);
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(0, 0, 0, 10.0f, &T), DH_ERR_ZERO_AXIS);
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(1e-40f, -1e-41f, 0, 10.0f, &T), DH_ERR_ZERO_AXIS); /* denormal */
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(NAN, 0, 1, 10.0f, &T), DH_ERR_NAN);
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(0, INFINITY, 1, 10.0f, &T), DH_ERR_NAN);
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(0, 0, 1, NAN, &T), DH_ERR_NAN);
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(0, 0, 0, NAN, &T), DH_ERR_NAN);
     DHT_TRUE(mat_bits_equal(&T, &U));
     /* FLT_MIN itself is a valid (normal) axis */
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, FLT_MIN, 0, 0, 90.0f), DH_OK);
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(FLT_MIN, 0, 0, 90.0f, &T), DH_OK);
     DHT_EQ_F32_BITS(DH_M4(&T, 2, 1), 1.0f);
     /* huge components: normalisation does not overflow */
-    DHT_EQ_INT(dh_mat4_rot_axis_f32(&T, FLT_MAX, FLT_MAX, FLT_MAX, 120.0f), DH_OK);
+    DHT_EQ_INT(dh_mat4_rot_axis_f32(FLT_MAX, FLT_MAX, FLT_MAX, 120.0f, &T), DH_OK);
     DHT_NEAR(DH_M4(&T, 1, 0), 1.0, 2.4e-7);
     DHT_NEAR(DH_M4(&T, 0, 0), 0.0, 2.4e-7);
 }
@@ -430,12 +430,12 @@ static void frame_from_noap_and_rot_access(void)
     int i, j;
     /* garbage first: every element must be written */
     memset(&T, 0x7f, sizeof T);
-    dh_mat4_from_noap_f32(&T, &n, &o, &a, &p);
+    dh_mat4_from_noap_f32(&n, &o, &a, &p, &T);
     CHECK_MAT_BITS(&T, F);
     dh_mat4_get_rot_f32(&T, &R);
     for (i = 0; i < 3; i++)
         for (j = 0; j < 3; j++) DHT_EQ_F32_BITS(DH_M3(&R, i, j), F[i][j]);
-    dh_mat4_trans_f32(&U, 4, -3, 7);
+    dh_mat4_trans_f32(4, -3, 7, &U);
     dh_mat4_set_rot_f32(&U, &R);
     CHECK_MAT_BITS(&U, F);
 }
@@ -447,7 +447,7 @@ static void point_h_errors(void)
     dh_mat4_f32 T;
     dh_vec4_f32 u;
     dh_vec3_f32 v = v3(11, 12, 13);
-    dh_mat4_persp_f32(&T, 1, 4.0f);
+    dh_mat4_persp_f32(1, 4.0f, &T);
     u = v4(1, 4, 1, 1);                      /* w = 1 - 4/4 = 0: at infinity */
     DHT_EQ_INT(dh_mat4_apply_point_h_f32(&T, &u, &v), DH_ERR_DOMAIN);
     u = v4(1, 2, 3, 0);                      /* a direction through identity-ish T */
@@ -476,7 +476,7 @@ static void plane_errors(void)
 {
     dh_mat4_f32 T;
     dh_plane_f32 P = { 0, 0, 1, -1 }, Q = { 5, 6, 7, 8 };
-    dh_mat4_scale_f32(&T, 1, 0, 1);          /* singular */
+    dh_mat4_scale_f32(1, 0, 1, &T);          /* singular */
     DHT_EQ_INT(dh_mat4_apply_plane_f32(&T, &P, &Q), DH_ERR_SINGULAR);
     dh_mat4_identity_f32(&T);
     P.b = NAN;
@@ -488,7 +488,7 @@ static void plane_errors(void)
     DHT_EQ_F32_BITS(Q.d, 8.0f);
     /* a scaling (not rigid) goes through the general inverse:
      * plane z = 1 under scale z by 2 becomes z = 2 */
-    dh_mat4_scale_f32(&T, 1, 1, 2);
+    dh_mat4_scale_f32(1, 1, 2, &T);
     DHT_EQ_INT(dh_mat4_apply_plane_f32(&T, &P, &Q), DH_OK);
     DHT_EQ_F32_BITS(Q.a, 0.0f);
     DHT_EQ_F32_BITS(Q.b, 0.0f);
@@ -506,29 +506,29 @@ static void inverse_errors_and_rigidity(void)
     O0 = O;
     /* exactly singular, zero, denormal, NaN, Inf: output untouched */
     T = rows(SING);
-    DHT_EQ_INT(dh_mat4_inv_f32(&O, &T), DH_ERR_SINGULAR);
+    DHT_EQ_INT(dh_mat4_inv_f32(&T, &O), DH_ERR_SINGULAR);
     memset(&T, 0, sizeof T);
-    DHT_EQ_INT(dh_mat4_inv_f32(&O, &T), DH_ERR_SINGULAR);
-    dh_mat4_scale_f32(&T, 1e-39f, 1e-39f, 1e-39f);
+    DHT_EQ_INT(dh_mat4_inv_f32(&T, &O), DH_ERR_SINGULAR);
+    dh_mat4_scale_f32(1e-39f, 1e-39f, 1e-39f, &T);
     DH_M4(&T, 3, 3) = 1e-39f;
-    DHT_EQ_INT(dh_mat4_inv_f32(&O, &T), DH_ERR_SINGULAR);
+    DHT_EQ_INT(dh_mat4_inv_f32(&T, &O), DH_ERR_SINGULAR);
     dh_mat4_identity_f32(&T);
     DH_M4(&T, 2, 3) = NAN;
-    DHT_EQ_INT(dh_mat4_inv_f32(&O, &T), DH_ERR_NAN);
-    DHT_EQ_INT(dh_mat4_inv_auto_f32(&O, &T), DH_ERR_NAN);
+    DHT_EQ_INT(dh_mat4_inv_f32(&T, &O), DH_ERR_NAN);
+    DHT_EQ_INT(dh_mat4_inv_auto_f32(&T, &O), DH_ERR_NAN);
     DH_M4(&T, 2, 3) = -INFINITY;
-    DHT_EQ_INT(dh_mat4_inv_f32(&O, &T), DH_ERR_NAN);
+    DHT_EQ_INT(dh_mat4_inv_f32(&T, &O), DH_ERR_NAN);
     DHT_TRUE(mat_bits_equal(&O, &O0));
     /* uniform scale: diag(2^-120) has an inverse 2^120 (fine), diag(1e-38)
      * needs 1e38 (fine), diag(FLT_MIN) would need 2^126 (fine) */
-    dh_mat4_scale_f32(&T, FLT_MIN, FLT_MIN, FLT_MIN);
+    dh_mat4_scale_f32(FLT_MIN, FLT_MIN, FLT_MIN, &T);
     DH_M4(&T, 3, 3) = FLT_MIN;
-    DHT_EQ_INT(dh_mat4_inv_f32(&O, &T), DH_OK);
+    DHT_EQ_INT(dh_mat4_inv_f32(&T, &O), DH_OK);
     DHT_EQ_F32_BITS(DH_M4(&O, 0, 0), 1.0f / FLT_MIN);
     DHT_EQ_F32_BITS(DH_M4(&O, 0, 1), 0.0f);
 
     /* rigidity checks */
-    dh_mat4_trans_f32(&T, 1, 2, 3);
+    dh_mat4_trans_f32(1, 2, 3, &T);
     DHT_EQ_INT(dh_mat4_check_rigid_f32(&T, 1e-6f), DH_OK);
     DHT_EQ_INT(dh_mat4_check_rigid_f32(&T, 0.0f), DH_OK);
     DHT_EQ_INT(dh_mat4_check_rigid_f32(&T, -1.0f), DH_ERR_ARG);
@@ -537,9 +537,9 @@ static void inverse_errors_and_rigidity(void)
     DH_M4(&T, 3, 0) = 1e-3f;                              /* bottom row */
     DHT_EQ_INT(dh_mat4_check_rigid_f32(&T, 1e-2f), DH_ERR_NOT_RIGID);
     DHT_EQ_INT(dh_mat4_check_rot_f32(&T, 1e-2f), DH_OK);  /* rotation part only */
-    dh_mat4_scale_f32(&T, 1, 1, -1);                      /* reflection: det -1 */
+    dh_mat4_scale_f32(1, 1, -1, &T);                      /* reflection: det -1 */
     DHT_EQ_INT(dh_mat4_check_rigid_f32(&T, 1e-2f), DH_ERR_NOT_RIGID);
-    dh_mat4_scale_f32(&T, 1, 1, 1.001f);                  /* stretched */
+    dh_mat4_scale_f32(1, 1, 1.001f, &T);                  /* stretched */
     DHT_EQ_INT(dh_mat4_check_rigid_f32(&T, 1e-3f), DH_ERR_NOT_RIGID);
     DHT_EQ_INT(dh_mat4_check_rigid_f32(&T, 3e-3f), DH_OK);
     dh_mat4_identity_f32(&T);
@@ -553,19 +553,19 @@ static void inverse_errors_and_rigidity(void)
     DHT_EQ_INT(dh_mat4_check_rigid_f32(&T, 1e-4f), DH_ERR_NAN);
     DHT_EQ_INT(dh_mat4_check_rot_f32(&T, 1e-4f), DH_OK);
     /* huge entries: squares overflow to Inf, must be "not rigid" */
-    dh_mat4_scale_f32(&T, 1e30f, 1, 1);
+    dh_mat4_scale_f32(1e30f, 1, 1, &T);
     DHT_EQ_INT(dh_mat4_check_rigid_f32(&T, 1e-4f), DH_ERR_NOT_RIGID);
     /* inv_auto on a non-rigid matrix uses the general inverse */
-    dh_mat4_scale_f32(&T, 2, 4, 8);
-    DHT_EQ_INT(dh_mat4_inv_auto_f32(&O, &T), DH_OK);
+    dh_mat4_scale_f32(2, 4, 8, &T);
+    DHT_EQ_INT(dh_mat4_inv_auto_f32(&T, &O), DH_OK);
     DHT_EQ_F32_BITS(DH_M4(&O, 0, 0), 0.5f);
     DHT_EQ_F32_BITS(DH_M4(&O, 1, 1), 0.25f);
     DHT_EQ_F32_BITS(DH_M4(&O, 2, 2), 0.125f);
     DHT_EQ_F32_BITS(DH_M4(&O, 3, 3), 1.0f);
     /* and on a singular one reports it */
-    dh_mat4_scale_f32(&T, 2, 0, 8);
+    dh_mat4_scale_f32(2, 0, 8, &T);
     O = O0;
-    DHT_EQ_INT(dh_mat4_inv_auto_f32(&O, &T), DH_ERR_SINGULAR);
+    DHT_EQ_INT(dh_mat4_inv_auto_f32(&T, &O), DH_ERR_SINGULAR);
     DHT_TRUE(mat_bits_equal(&O, &O0));
 }
 
@@ -577,34 +577,34 @@ static void axis_angle_special_cases(void)
     dh_vec3_f32 k = v3(9, 9, 9);
     float th = 99.0f;
     /* identity: theta 0, k = +z by contract */
-    dh_mat4_trans_f32(&T, 5, 6, 7);
+    dh_mat4_trans_f32(5, 6, 7, &T);
     DHT_EQ_INT(dh_mat4_to_axis_angle_f32(&T, &k, &th), DH_OK);
     DHT_EQ_F32_BITS(th, 0.0f);
     CHECK_V3_BITS(k, 0.0f, 0.0f, 1.0f);
     /* exact quadrants */
-    dh_mat4_rotx_f32(&T, 90.0f);
+    dh_mat4_rotx_f32(90.0f, &T);
     DHT_EQ_INT(dh_mat4_to_axis_angle_f32(&T, &k, &th), DH_OK);
     DHT_EQ_F32_BITS(th, 90.0f);
     CHECK_V3_BITS(k, 1.0f, 0.0f, 0.0f);
-    dh_mat4_roty_f32(&T, -90.0f);
+    dh_mat4_roty_f32(-90.0f, &T);
     DHT_EQ_INT(dh_mat4_to_axis_angle_f32(&T, &k, &th), DH_OK);
     DHT_EQ_F32_BITS(th, 90.0f);
     CHECK_V3_BITS(k, 0.0f, -1.0f, 0.0f);
     /* 180 exactly: axis up to sign, largest-diagonal component positive */
-    dh_mat4_rotz_f32(&T, 180.0f);
+    dh_mat4_rotz_f32(180.0f, &T);
     DHT_EQ_INT(dh_mat4_to_axis_angle_f32(&T, &k, &th), DH_OK);
     DHT_EQ_F32_BITS(th, 180.0f);
     CHECK_V3_BITS(k, 0.0f, 0.0f, 1.0f);
-    dh_mat4_rotx_f32(&T, -180.0f);
+    dh_mat4_rotx_f32(-180.0f, &T);
     DHT_EQ_INT(dh_mat4_to_axis_angle_f32(&T, &k, &th), DH_OK);
     DHT_EQ_F32_BITS(th, 180.0f);
     CHECK_V3_BITS(k, 1.0f, 0.0f, 0.0f);
     /* errors: k and theta untouched */
     k = v3(9, 9, 9);
     th = 99.0f;
-    dh_mat4_scale_f32(&T, 1, 1, 1.01f);
+    dh_mat4_scale_f32(1, 1, 1.01f, &T);
     DHT_EQ_INT(dh_mat4_to_axis_angle_f32(&T, &k, &th), DH_ERR_NOT_RIGID);
-    dh_mat4_scale_f32(&T, -1, 1, 1);         /* reflection */
+    dh_mat4_scale_f32(-1, 1, 1, &T);         /* reflection */
     DHT_EQ_INT(dh_mat4_to_axis_angle_f32(&T, &k, &th), DH_ERR_NOT_RIGID);
     dh_mat4_identity_f32(&T);
     DH_M4(&T, 1, 2) = NAN;
@@ -614,7 +614,7 @@ static void axis_angle_special_cases(void)
     CHECK_V3_BITS(k, 9.0f, 9.0f, 9.0f);
     DHT_EQ_F32_BITS(th, 99.0f);
     /* only the rotation part is read: p and the bottom row are ignored */
-    dh_mat4_rotz_f32(&T, 90.0f);
+    dh_mat4_rotz_f32(90.0f, &T);
     DH_M4(&T, 3, 0) = NAN;
     DH_M4(&T, 0, 3) = 1e30f;
     DHT_EQ_INT(dh_mat4_to_axis_angle_f32(&T, &k, &th), DH_OK);

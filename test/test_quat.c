@@ -112,7 +112,7 @@ static void to_mat_vs_double(void)
         rf.w = q.w; rf.x = q.x; rf.y = q.y; rf.z = q.z;
         d_normalize(&rf);
         d_q2m(&D, &rf);
-        DHT_EQ_INT(dh_quat_to_mat3_f32(&R, &q), DH_OK);
+        DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &R), DH_OK);
         e = max_diff(&R, &D);
         if (e > worst) worst = e;
         DHT_TRUE_MSG(e <= Q2M_TOL, "entry error %.3g", e);
@@ -122,7 +122,7 @@ static void to_mat_vs_double(void)
         rf.w = qs.w; rf.x = qs.x; rf.y = qs.y; rf.z = qs.z;
         d_normalize(&rf);
         d_q2m(&D, &rf);
-        DHT_EQ_INT(dh_quat_to_mat3_f32(&R, &qs), DH_OK);
+        DHT_EQ_INT(dh_quat_to_mat3_f32(&qs, &R), DH_OK);
         e = max_diff(&R, &D);
         if (e > worst_scaled) worst_scaled = e;
         DHT_TRUE_MSG(e <= Q2M_TOL, "scale %g: entry error %.3g", sc, e);
@@ -138,30 +138,30 @@ static void to_mat_special(void)
     int r, c;
     /* identity, and 180 degrees about each axis: exact */
     q.w = 1.0f; q.x = q.y = q.z = 0.0f;
-    DHT_EQ_INT(dh_quat_to_mat3_f32(&R, &q), DH_OK);
+    DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &R), DH_OK);
     for (r = 0; r < 3; r++)
         for (c = 0; c < 3; c++) DHT_EQ_F32_BITS(DH_M3(&R, r, c), r == c ? 1.0f : 0.0f);
     q.w = 0.0f; q.x = 0.0f; q.y = 0.0f; q.z = -3.0f; /* Rz(180), non-unit */
-    DHT_EQ_INT(dh_quat_to_mat3_f32(&R, &q), DH_OK);
+    DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &R), DH_OK);
     for (r = 0; r < 3; r++)
         for (c = 0; c < 3; c++) DHT_EQ_F32_BITS(DH_M3(&R, r, c), r != c ? 0.0f : (r == 2 ? 1.0f : -1.0f));
     /* errors leave R untouched */
     Rs = R;
     q.w = 0.0f; q.x = 0.0f; q.y = 0.0f; q.z = 0.0f;
-    DHT_EQ_INT(dh_quat_to_mat3_f32(&R, &q), DH_ERR_ZERO_AXIS);
+    DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &R), DH_ERR_ZERO_AXIS);
     q.y = 1e-39f; /* denormal */
-    DHT_EQ_INT(dh_quat_to_mat3_f32(&R, &q), DH_ERR_ZERO_AXIS);
+    DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &R), DH_ERR_ZERO_AXIS);
     q.y = FLT_MIN; /* smallest normal: fine */
-    DHT_EQ_INT(dh_quat_to_mat3_f32(&Rs, &q), DH_OK);
+    DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &Rs), DH_OK);
     DHT_NEAR(DH_M3(&Rs, 1, 1), 1.0, 0.0);
     DHT_NEAR(DH_M3(&Rs, 0, 0), -1.0, 0.0);
     Rs = R;
     q.w = NAN;
-    DHT_EQ_INT(dh_quat_to_mat3_f32(&R, &q), DH_ERR_NAN);
+    DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &R), DH_ERR_NAN);
     q.w = 1.0f; q.z = INFINITY;
-    DHT_EQ_INT(dh_quat_to_mat3_f32(&R, &q), DH_ERR_NAN);
+    DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &R), DH_ERR_NAN);
     q.z = FLT_MAX; q.x = -FLT_MAX; /* huge but finite: 90 deg about (-1, 0, 1) within rounding */
-    DHT_EQ_INT(dh_quat_to_mat3_f32(&Rs, &q), DH_OK);
+    DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &Rs), DH_OK);
     DHT_NEAR(DH_M3(&Rs, 1, 1), -1.0, Q2M_TOL);
     DHT_TRUE(memcmp(&R, &Rs, sizeof R) != 0);
 }
@@ -350,7 +350,7 @@ static void normalize_cases(void)
         r.w = q.w; r.x = q.x; r.y = q.y; r.z = q.z;
         n = sqrt(r.w * r.w + r.x * r.x + r.y * r.y + r.z * r.z);
         r.w /= n; r.x /= n; r.y /= n; r.z /= n;
-        DHT_EQ_INT(dh_quat_normalize_f32(&o, &q), DH_OK);
+        DHT_EQ_INT(dh_quat_normalize_f32(&q, &o), DH_OK);
         e = q_diff(&o, &r); /* sign kept */
         if (e > worst) worst = e;
         DHT_TRUE_MSG(e <= 2e-7, "scale %g: error %.3g", sc, e);
@@ -362,16 +362,16 @@ static void normalize_cases(void)
     dht_printf("quat normalize over 2^-125..2^127: max component error %.3g\n", worst);
     o.w = 9.0f; o.x = o.y = o.z = 0.0f;
     q.w = q.x = q.y = q.z = 0.0f;
-    DHT_EQ_INT(dh_quat_normalize_f32(&o, &q), DH_ERR_ZERO_AXIS);
+    DHT_EQ_INT(dh_quat_normalize_f32(&q, &o), DH_ERR_ZERO_AXIS);
     q.z = -1e-40f;
-    DHT_EQ_INT(dh_quat_normalize_f32(&o, &q), DH_ERR_ZERO_AXIS);
+    DHT_EQ_INT(dh_quat_normalize_f32(&q, &o), DH_ERR_ZERO_AXIS);
     q.z = NAN;
-    DHT_EQ_INT(dh_quat_normalize_f32(&o, &q), DH_ERR_NAN);
+    DHT_EQ_INT(dh_quat_normalize_f32(&q, &o), DH_ERR_NAN);
     q.z = -INFINITY;
-    DHT_EQ_INT(dh_quat_normalize_f32(&o, &q), DH_ERR_NAN);
+    DHT_EQ_INT(dh_quat_normalize_f32(&q, &o), DH_ERR_NAN);
     DHT_TRUE(o.w == 9.0f);
     q.w = -FLT_MAX; q.x = FLT_MAX; q.y = 0.0f; q.z = 0.0f;
-    DHT_EQ_INT(dh_quat_normalize_f32(&o, &q), DH_OK);
+    DHT_EQ_INT(dh_quat_normalize_f32(&q, &o), DH_OK);
     DHT_NEAR(o.w, -sqrt(0.5), 1e-7);
     DHT_NEAR(o.x, sqrt(0.5), 1e-7);
 }
@@ -396,14 +396,14 @@ static void mul_conj(void)
         p.x = a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y;
         p.y = a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x;
         p.z = a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w;
-        dh_quat_mul_f32(&fp, &fa, &fb);
+        dh_quat_mul_f32(&fa, &fb, &fp);
         e = q_diff(&fp, &p);
         if (e > worst) worst = e;
         DHT_TRUE(e <= 2.4e-7);
         /* R(a b) = R(a) R(b) */
-        DHT_EQ_INT(dh_quat_to_mat3_f32(&Ra, &fa), DH_OK);
-        DHT_EQ_INT(dh_quat_to_mat3_f32(&Rb, &fb), DH_OK);
-        DHT_EQ_INT(dh_quat_to_mat3_f32(&Rp, &fp), DH_OK);
+        DHT_EQ_INT(dh_quat_to_mat3_f32(&fa, &Ra), DH_OK);
+        DHT_EQ_INT(dh_quat_to_mat3_f32(&fb, &Rb), DH_OK);
+        DHT_EQ_INT(dh_quat_to_mat3_f32(&fp, &Rp), DH_OK);
         for (r = 0; r < 3; r++)
             for (c = 0; c < 3; c++) {
                 M[r][c] = 0.0;
@@ -412,12 +412,12 @@ static void mul_conj(void)
             }
         /* aliasing: out = a */
         fc = fa;
-        dh_quat_mul_f32(&fc, &fc, &fb);
+        dh_quat_mul_f32(&fc, &fb, &fc);
         DHT_TRUE(memcmp(&fc, &fp, sizeof fc) == 0);
         /* q q* = 1 */
-        dh_quat_conj_f32(&fc, &fa);
+        dh_quat_conj_f32(&fa, &fc);
         DHT_TRUE(fc.w == fa.w && fc.x == -fa.x && fc.y == -fa.y && fc.z == -fa.z);
-        dh_quat_mul_f32(&fc, &fa, &fc);
+        dh_quat_mul_f32(&fa, &fc, &fc);
         DHT_NEAR(fc.w, 1.0, 3e-7);
         DHT_NEAR(fc.x, 0.0, 1e-7);
         DHT_NEAR(fc.y, 0.0, 1e-7);
@@ -442,7 +442,7 @@ static void from_axis_angle(void)
         n = sqrt((double)k.x * k.x + (double)k.y * k.y + (double)k.z * k.z);
         h = deg * PI_D / 360.0;
         r.w = cos(h); r.x = sin(h) * k.x / n; r.y = sin(h) * k.y / n; r.z = sin(h) * k.z / n;
-        DHT_EQ_INT(dh_quat_from_axis_angle_f32(&q, &k, (float)deg), DH_OK);
+        DHT_EQ_INT(dh_quat_from_axis_angle_f32(&k, (float)deg, &q), DH_OK);
         e = q_diff(&q, &r);
         if (e > worst) worst = e;
         DHT_TRUE_MSG(e <= 2e-7, "axis-angle -> quat error %.3g", e);
@@ -451,15 +451,15 @@ static void from_axis_angle(void)
     qs.w = 3.0f; qs.x = qs.y = qs.z = 0.0f;
     q = qs;
     k.x = k.y = k.z = 0.0f;
-    DHT_EQ_INT(dh_quat_from_axis_angle_f32(&q, &k, 30.0f), DH_ERR_ZERO_AXIS);
+    DHT_EQ_INT(dh_quat_from_axis_angle_f32(&k, 30.0f, &q), DH_ERR_ZERO_AXIS);
     k.x = 1.0f;
-    DHT_EQ_INT(dh_quat_from_axis_angle_f32(&q, &k, NAN), DH_ERR_NAN);
+    DHT_EQ_INT(dh_quat_from_axis_angle_f32(&k, NAN, &q), DH_ERR_NAN);
     k.y = INFINITY;
-    DHT_EQ_INT(dh_quat_from_axis_angle_f32(&q, &k, 30.0f), DH_ERR_NAN);
+    DHT_EQ_INT(dh_quat_from_axis_angle_f32(&k, 30.0f, &q), DH_ERR_NAN);
     DHT_TRUE(memcmp(&q, &qs, sizeof q) == 0);
     /* 180 about z exactly */
     k.x = 0.0f; k.y = 0.0f; k.z = 2.0f;
-    DHT_EQ_INT(dh_quat_from_axis_angle_f32(&q, &k, 180.0f), DH_OK);
+    DHT_EQ_INT(dh_quat_from_axis_angle_f32(&k, 180.0f, &q), DH_OK);
     DHT_EQ_F32_BITS(q.w, 0.0f);
     DHT_EQ_F32_BITS(q.z, 1.0f);
 }
@@ -476,7 +476,7 @@ static void round_trip(void)
         double e;
         d_rand_q(&r);
         q.w = (float)r.w; q.x = (float)r.x; q.y = (float)r.y; q.z = (float)r.z;
-        DHT_EQ_INT(dh_quat_to_mat3_f32(&R, &q), DH_OK);
+        DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &R), DH_OK);
         DHT_EQ_INT(dh_mat3_to_quat_f32(&R, &q2), DH_OK);
         e = (r.w < 1e-6) ? q_diff_pm(&q2, &r) : q_diff(&q2, &r);
         if (e > worst) worst = e;

@@ -100,7 +100,7 @@ static void axis_angle_to_mat(void)
         if (!(fabs(a.x) + fabs(a.y) + fabs(a.z) > 1e-6) || !isfinite(a.y) || !isfinite(a.z)) continue;
         deg = (float)dht_rand_uniform(-720.0, 720.0);
         if (it % 10 == 0) deg = (float)dht_rand_uniform(-1e-3, 1e-3);
-        DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&R, &a, (float)deg), DH_OK);
+        DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&a, (float)deg, &R), DH_OK);
         d_rot(&D, a.x, a.y, a.z, deg * PI_D / 180.0);
         e = max_diff(&R, &D);
         if (e > worst) worst = e;
@@ -125,7 +125,7 @@ static void axis_angle_coordinate_axes(void)
             a.x = ax == 0 ? len : 0.0f; a.y = ax == 1 ? len : 0.0f; a.z = ax == 2 ? len : 0.0f;
             for (r = 0; r < 3; r++) for (c = 0; c < 3; c++) E[r][c] = (r == c) ? 1.0f : 0.0f;
             E[u][u] = co; E[w][w] = co; E[w][u] = s + 0.0f; E[u][w] = 0.0f - s; /* no -0 */
-            DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&R, &a, deg), DH_OK);
+            DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&a, deg, &R), DH_OK);
             for (r = 0; r < 3; r++)
                 for (c = 0; c < 3; c++) DHT_EQ_F32_BITS(DH_M3(&R, r, c), E[r][c]);
         }
@@ -138,18 +138,18 @@ static void axis_angle_bad_input(void)
     dh_mat3_f32 R, Rs;
     memset(&R, 0x5a, sizeof R);
     Rs = R;
-    DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&R, &a, 10.0f), DH_ERR_ZERO_AXIS);
+    DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&a, 10.0f, &R), DH_ERR_ZERO_AXIS);
     a.y = 1e-39f;
-    DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&R, &a, 10.0f), DH_ERR_ZERO_AXIS);
+    DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&a, 10.0f, &R), DH_ERR_ZERO_AXIS);
     a.y = 1.0f;
-    DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&R, &a, NAN), DH_ERR_NAN);
-    DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&R, &a, -INFINITY), DH_ERR_NAN);
+    DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&a, NAN, &R), DH_ERR_NAN);
+    DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&a, -INFINITY, &R), DH_ERR_NAN);
     a.z = NAN;
-    DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&R, &a, 10.0f), DH_ERR_NAN);
+    DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&a, 10.0f, &R), DH_ERR_NAN);
     DHT_TRUE(memcmp(&R, &Rs, sizeof R) == 0);
     /* huge finite axis: normalised without overflow */
     a.x = FLT_MAX; a.y = FLT_MAX; a.z = 0.0f;
-    DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&R, &a, 180.0f), DH_OK);
+    DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&a, 180.0f, &R), DH_OK);
     DHT_NEAR(DH_M3(&R, 0, 1), 1.0, 2.4e-7);
     DHT_NEAR(DH_M3(&R, 2, 2), -1.0, 2.4e-7);
 }
@@ -269,7 +269,7 @@ static void exp_map(void)
         if (it % 4 == 0) t = pow(10.0, dht_rand_uniform(-30.0, -2.0));
         else t = dht_rand_uniform(0.0, 4.0 * PI_D);
         p.x = (float)(k[0] * t); p.y = (float)(k[1] * t); p.z = (float)(k[2] * t);
-        DHT_EQ_INT(dh_rotvec_to_mat3_f32(&R, &p), DH_OK);
+        DHT_EQ_INT(dh_rotvec_to_mat3_f32(&p, &R), DH_OK);
         /* reference: the float vector actually passed */
         t = sqrt((double)p.x * p.x + (double)p.y * p.y + (double)p.z * p.z);
         if (t == 0.0) continue;
@@ -294,14 +294,14 @@ static void exp_special(void)
     dh_vec3_f32 p = { 0.0f, 0.0f, 0.0f };
     dh_mat3_f32 R, Rs;
     int r, c;
-    DHT_EQ_INT(dh_rotvec_to_mat3_f32(&R, &p), DH_OK);
+    DHT_EQ_INT(dh_rotvec_to_mat3_f32(&p, &R), DH_OK);
     for (r = 0; r < 3; r++)
         for (c = 0; c < 3; c++) DHT_EQ_F32_BITS(DH_M3(&R, r, c), r == c ? 1.0f : 0.0f);
     p.x = 1e-45f; /* smallest denormal: still (a tiny rotation about) x */
-    DHT_EQ_INT(dh_rotvec_to_mat3_f32(&R, &p), DH_OK);
+    DHT_EQ_INT(dh_rotvec_to_mat3_f32(&p, &R), DH_OK);
     DHT_TRUE(ortho_dev(&R) <= ORTHO_TOL);
     p.x = 1e30f; p.y = -3e30f; p.z = 2e29f; /* huge: finite and a rotation */
-    DHT_EQ_INT(dh_rotvec_to_mat3_f32(&R, &p), DH_OK);
+    DHT_EQ_INT(dh_rotvec_to_mat3_f32(&p, &R), DH_OK);
     DHT_TRUE(ortho_dev(&R) <= 1e-6);
     /* huge lengths are reduced exactly (dh_sincosf_): an axis-aligned phi
      * has an exact float length, and the result is the rotation by that
@@ -313,20 +313,20 @@ static void exp_special(void)
             dm3 D;
             dh_vec3_f32 ph = { 0.0f, 0.0f, 0.0f };
             if (k % 3 == 0) ph.x = -t; else if (k % 3 == 1) ph.y = t; else ph.z = t;
-            DHT_EQ_INT(dh_rotvec_to_mat3_f32(&R, &ph), DH_OK);
+            DHT_EQ_INT(dh_rotvec_to_mat3_f32(&ph, &R), DH_OK);
             d_rot(&D, ph.x, ph.y, ph.z, (double)t);
             DHT_TRUE_MSG(max_diff(&R, &D) <= A2M_TOL, "|phi| = %.9g: entry error %.3g", (double)t, max_diff(&R, &D));
         }
     }
     p.x = 1e30f; p.y = -3e30f; p.z = 2e29f;
-    DHT_EQ_INT(dh_rotvec_to_mat3_f32(&R, &p), DH_OK);
+    DHT_EQ_INT(dh_rotvec_to_mat3_f32(&p, &R), DH_OK);
     Rs = R;
     p.y = NAN;
-    DHT_EQ_INT(dh_rotvec_to_mat3_f32(&R, &p), DH_ERR_NAN);
+    DHT_EQ_INT(dh_rotvec_to_mat3_f32(&p, &R), DH_ERR_NAN);
     p.y = INFINITY;
-    DHT_EQ_INT(dh_rotvec_to_mat3_f32(&R, &p), DH_ERR_NAN);
+    DHT_EQ_INT(dh_rotvec_to_mat3_f32(&p, &R), DH_ERR_NAN);
     p.x = FLT_MAX; p.y = FLT_MAX; /* |phi| overflows float */
-    DHT_EQ_INT(dh_rotvec_to_mat3_f32(&R, &p), DH_ERR_NAN);
+    DHT_EQ_INT(dh_rotvec_to_mat3_f32(&p, &R), DH_ERR_NAN);
     DHT_TRUE(memcmp(&R, &Rs, sizeof R) == 0);
 }
 
@@ -405,7 +405,7 @@ static void skew_vee(void)
         fu = (float)dht_rand_uniform(-1, 1); u.x = fu;
         fu = (float)dht_rand_uniform(-1, 1); u.y = fu;
         fu = (float)dht_rand_uniform(-1, 1); u.z = fu;
-        dh_skew_f32(&S, &v);
+        dh_skew_f32(&v, &S);
         /* S u == v x u (double) */
         cr[0] = (double)v.y * u.z - (double)v.z * u.y;
         cr[1] = (double)v.z * u.x - (double)v.x * u.z;
@@ -415,11 +415,11 @@ static void skew_vee(void)
             DHT_NEAR(Su[r], cr[r], 1e-15 * sc); /* exact up to double rounding */
         }
         for (r = 0; r < 3; r++) DHT_EQ_F32_BITS(DH_M3(&S, r, r), 0.0f);
-        dh_vee_f32(&w, &S);
+        dh_vee_f32(&S, &w);
         DHT_EQ_F32_BITS(w.x, v.x); DHT_EQ_F32_BITS(w.y, v.y); DHT_EQ_F32_BITS(w.z, v.z);
         /* vee of a general matrix: the skew part */
         for (r = 0; r < 3; r++) for (c = 0; c < 3; c++) DH_M3(&G, r, c) = (float)dht_rand_uniform(-1, 1);
-        dh_vee_f32(&w, &G);
+        dh_vee_f32(&G, &w);
         DHT_NEAR(w.x, 0.5 * ((double)DH_M3(&G, 2, 1) - DH_M3(&G, 1, 2)), 6e-8);
         DHT_NEAR(w.y, 0.5 * ((double)DH_M3(&G, 0, 2) - DH_M3(&G, 2, 0)), 6e-8);
         DHT_NEAR(w.z, 0.5 * ((double)DH_M3(&G, 1, 0) - DH_M3(&G, 0, 1)), 6e-8);
@@ -427,8 +427,8 @@ static void skew_vee(void)
     {   /* huge entries do not overflow */
         dh_vec3_f32 v = { FLT_MAX, -FLT_MAX, 1.0f }, w;
         dh_mat3_f32 S;
-        dh_skew_f32(&S, &v);
-        dh_vee_f32(&w, &S);
+        dh_skew_f32(&v, &S);
+        dh_vee_f32(&S, &w);
         DHT_EQ_F32_BITS(w.x, FLT_MAX); DHT_EQ_F32_BITS(w.y, -FLT_MAX); DHT_EQ_F32_BITS(w.z, 1.0f);
     }
 }
@@ -471,8 +471,8 @@ static void angular_velocity(void)
                 for (k = 0; k < 3; k++) Rdb[r][c] += D.d[r][k] * S[k][c];
                 DH_M3(&Rdotb, r, c) = (float)Rdb[r][c];
             }
-        DHT_EQ_INT(dh_angvel_f32(&w, &R, &Rdot), DH_OK);
-        DHT_EQ_INT(dh_angvel_body_f32(&wb, &R, &Rdotb), DH_OK);
+        DHT_EQ_INT(dh_angvel_f32(&R, &Rdot, &w), DH_OK);
+        DHT_EQ_INT(dh_angvel_body_f32(&R, &Rdotb, &wb), DH_OK);
         /* the float R is orthonormal only within ~1e-7, so the reference is
          * the exact formula vee(Rdot R^T) on the float data, plus its distance
          * to the true w, which is bounded by the test (scale max(1, |w|)) */
@@ -500,14 +500,14 @@ static void angular_velocity_bad_input(void)
     int r, c;
     for (r = 0; r < 3; r++) for (c = 0; c < 3; c++) { DH_M3(&R, r, c) = (r == c) ? 1.0f : 0.0f; DH_M3(&Rdot, r, c) = 0.0f; }
     DH_M3(&Rdot, 0, 1) = NAN;
-    DHT_EQ_INT(dh_angvel_f32(&w, &R, &Rdot), DH_ERR_NAN);
-    DHT_EQ_INT(dh_angvel_body_f32(&w, &R, &Rdot), DH_ERR_NAN);
+    DHT_EQ_INT(dh_angvel_f32(&R, &Rdot, &w), DH_ERR_NAN);
+    DHT_EQ_INT(dh_angvel_body_f32(&R, &Rdot, &w), DH_ERR_NAN);
     DH_M3(&Rdot, 0, 1) = 1.0f;
     DH_M3(&R, 2, 2) = INFINITY;
-    DHT_EQ_INT(dh_angvel_f32(&w, &R, &Rdot), DH_ERR_NAN);
+    DHT_EQ_INT(dh_angvel_f32(&R, &Rdot, &w), DH_ERR_NAN);
     DH_M3(&R, 2, 2) = 2.0f;
-    DHT_EQ_INT(dh_angvel_f32(&w, &R, &Rdot), DH_ERR_NOT_RIGID);
-    DHT_EQ_INT(dh_angvel_body_f32(&w, &R, &Rdot), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(dh_angvel_f32(&R, &Rdot, &w), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(dh_angvel_body_f32(&R, &Rdot, &w), DH_ERR_NOT_RIGID);
     DHT_TRUE(w.x == 4.0f && w.y == 4.0f && w.z == 4.0f);
 }
 
@@ -566,7 +566,7 @@ static void orthonormalize(void)
                 for (c = 0; c < 3; c++) DH_M3(&R, r, c) = (float)(D.d[r][c] + dht_rand_uniform(-eps[e_i], eps[e_i]));
             for (r = 0; r < 3; r++) for (c = 0; c < 3; c++) P.d[r][c] = DH_M3(&R, r, c);
             d_polar(&P);
-            DHT_EQ_INT(dh_mat3_orthonormalize_f32(&O, &R), DH_OK);
+            DHT_EQ_INT(dh_mat3_orthonormalize_f32(&R, &O), DH_OK);
             e = ortho_dev(&O);
             if (e > worst_o) worst_o = e;
             DHT_TRUE_MSG(e <= ORTHO_TOL, "eps %g: orthonormality %.3g", eps[e_i], e);
@@ -595,7 +595,7 @@ static void orthonormalize_edges(void)
     /* uniformly scaled by 0.9 (deviation 0.19 < 0.25): converges to the rotation */
     for (r = 0; r < 3; r++) for (c = 0; c < 3; c++) DH_M3(&R, r, c) = 0.0f;
     DH_M3(&R, 0, 1) = -0.9f; DH_M3(&R, 1, 0) = 0.9f; DH_M3(&R, 2, 2) = 0.9f;
-    DHT_EQ_INT(dh_mat3_orthonormalize_f32(&O, &R), DH_OK);
+    DHT_EQ_INT(dh_mat3_orthonormalize_f32(&R, &O), DH_OK);
     DHT_NEAR(DH_M3(&O, 0, 1), -1.0, 1.2e-7);
     DHT_NEAR(DH_M3(&O, 1, 0), 1.0, 1.2e-7);
     DHT_NEAR(DH_M3(&O, 2, 2), 1.0, 1.2e-7);
@@ -604,19 +604,19 @@ static void orthonormalize_edges(void)
     DH_M3(&R, 0, 1) = 0.05f;
     for (r = 0; r < 3; r++) for (c = 0; c < 3; c++) P.d[r][c] = DH_M3(&R, r, c);
     d_polar(&P);
-    DHT_EQ_INT(dh_mat3_orthonormalize_f32(&O, &R), DH_OK);
+    DHT_EQ_INT(dh_mat3_orthonormalize_f32(&R, &O), DH_OK);
     DHT_TRUE(max_diff(&O, &P) <= POLAR_TOL);
     Os = O;
     /* too far (deviation 0.44), reflection, NaN: errors, O untouched */
     for (r = 0; r < 3; r++) for (c = 0; c < 3; c++) DH_M3(&R, r, c) = (r == c) ? 1.2f : 0.0f;
-    DHT_EQ_INT(dh_mat3_orthonormalize_f32(&O, &R), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(dh_mat3_orthonormalize_f32(&R, &O), DH_ERR_NOT_RIGID);
     for (r = 0; r < 3; r++) for (c = 0; c < 3; c++) DH_M3(&R, r, c) = (r == c) ? 1.0f : 0.0f;
     DH_M3(&R, 2, 2) = -1.0f;
-    DHT_EQ_INT(dh_mat3_orthonormalize_f32(&O, &R), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(dh_mat3_orthonormalize_f32(&R, &O), DH_ERR_NOT_RIGID);
     DH_M3(&R, 2, 2) = NAN;
-    DHT_EQ_INT(dh_mat3_orthonormalize_f32(&O, &R), DH_ERR_NAN);
+    DHT_EQ_INT(dh_mat3_orthonormalize_f32(&R, &O), DH_ERR_NAN);
     memset(&R, 0, sizeof R);
-    DHT_EQ_INT(dh_mat3_orthonormalize_f32(&O, &R), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(dh_mat3_orthonormalize_f32(&R, &O), DH_ERR_NOT_RIGID);
     DHT_TRUE(memcmp(&O, &Os, sizeof O) == 0);
 }
 

@@ -74,7 +74,7 @@ int bt_cglm_check(void)
 {
     dh_mat4_f32 ref;
     int r, c;
-    dh_mat4_mul_affine_f32(&ref, &bt_A[0], &bt_B[1]);
+    dh_mat4_mul_affine_f32(&bt_A[0], &bt_B[1], &ref);
     glm_mul(bt_m(&bt_A[0]), bt_m(&bt_B[1]), bt_m(&bt_out));
     for (c = 0; c < 4; c++) {
         for (r = 0; r < 4; r++) {

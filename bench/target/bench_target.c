@@ -234,8 +234,8 @@ static uint32_t bt_robot(dh_robot *r, float scale)
     uint32_t j;
     st = (uint32_t)dh_robot_init(r, DH_CONV_STANDARD);
     for (j = 0; j < 6u; j++) {
-        st |= (uint32_t)dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, bt_puma_tab[j][0] * scale,
-                                               bt_puma_tab[j][1] * scale, bt_puma_tab[j][2], 0.0f);
+        st |= (uint32_t)dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, 0.0f,
+                                               bt_puma_tab[j][1] * scale, bt_puma_tab[j][0] * scale, bt_puma_tab[j][2]);
         st |= (uint32_t)dh_robot_set_limits_f32(r, j, bt_puma_tab[j][3], bt_puma_tab[j][4]);
     }
     return st;
@@ -252,7 +252,7 @@ static uint32_t bt_rigid(dh_mat4_f32 *T, float reach)
         ky = bt_uniform(-1.0f, 1.0f);
         kz = bt_uniform(-1.0f, 1.0f);
     } while (kx * kx + ky * ky + kz * kz < 0.01f);
-    st = (uint32_t)dh_mat4_rot_axis_f32(T, kx, ky, kz, bt_uniform(-180.0f, 180.0f));
+    st = (uint32_t)dh_mat4_rot_axis_f32(kx, ky, kz, bt_uniform(-180.0f, 180.0f), T);
     DH_M4(T, 0, 3) = bt_uniform(-reach, reach);
     DH_M4(T, 1, 3) = bt_uniform(-reach, reach);
     DH_M4(T, 2, 3) = bt_uniform(-reach, reach);
@@ -285,9 +285,9 @@ static uint32_t bt_inputs(void)
         bt_axis[k] = (int)(k % 3u);
         /* fixed frames in mm (positions up to 1000 mm) */
         st |= bt_rigid(&T, 1000.0f);
-        st |= (uint32_t)dh_frame_from_mat4_q(&bt_FA[k], &T);
+        st |= (uint32_t)dh_frame_from_mat4_q(&T, &bt_FA[k]);
         st |= bt_rigid(&T, 1000.0f);
-        st |= (uint32_t)dh_frame_from_mat4_q(&bt_FB[k], &T);
+        st |= (uint32_t)dh_frame_from_mat4_q(&T, &bt_FB[k]);
         bt_ptq[k].x = (dh_qpos)bt_to_q16(bt_uniform(-1000.0f, 1000.0f));
         bt_ptq[k].y = (dh_qpos)bt_to_q16(bt_uniform(-1000.0f, 1000.0f));
         bt_ptq[k].z = (dh_qpos)bt_to_q16(bt_uniform(-1000.0f, 1000.0f));
@@ -545,8 +545,8 @@ static void bt_ik(void)
             continue;
         }
         t0 = bt_now();
-        st = dh_ik_f32(&bt_puma_m, &target, q0, q, &p, bt_ik_work,
-                       sizeof bt_ik_work / sizeof bt_ik_work[0], &res);
+        st = dh_ik_f32(&bt_puma_m, &target, q0, &p, bt_ik_work, sizeof bt_ik_work / sizeof bt_ik_work[0],
+                       q, &res);
         t1 = bt_now();
         printf("BT ik|%lu|%d|%lu|%llu|%llu|%lu\n", (unsigned long)k, (int)st,
                (unsigned long)res.iterations, (unsigned long long)(t1 - t0),

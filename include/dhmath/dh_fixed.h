@@ -52,7 +52,7 @@ void dh_frame_identity_q(dh_frame_q *F);
  * @param[out] F frame to write.
  * @param x,y,z translation, dh_qpos (DH_QPOS_FRAC fraction bits), any int32.
  */
-void dh_frame_trans_q(dh_frame_q *F, dh_qpos x, dh_qpos y, dh_qpos z);
+void dh_frame_trans_q(dh_qpos x, dh_qpos y, dh_qpos z, dh_frame_q *F);
 
 /**
  * @brief F = Rot(x, deg) (eq. 1.32), position 0.
@@ -63,11 +63,11 @@ void dh_frame_trans_q(dh_frame_q *F, dh_qpos x, dh_qpos y, dh_qpos z);
  * @param[out] F frame to write.
  * @param deg angle in degrees, Q16.16, any int32 (full range of dh_sincos_q).
  */
-void dh_frame_rotx_q(dh_frame_q *F, dh_q16 deg);
+void dh_frame_rotx_q(dh_q16 deg, dh_frame_q *F);
 /** @brief F = Rot(y, deg) (eq. 1.33); otherwise as dh_frame_rotx_q(). */
-void dh_frame_roty_q(dh_frame_q *F, dh_q16 deg);
+void dh_frame_roty_q(dh_q16 deg, dh_frame_q *F);
 /** @brief F = Rot(z, deg) (eq. 1.34); otherwise as dh_frame_rotx_q(). */
-void dh_frame_rotz_q(dh_frame_q *F, dh_q16 deg);
+void dh_frame_rotz_q(dh_q16 deg, dh_frame_q *F);
 
 /**
  * @brief F = Rot(k, deg) (eq. 1.70), rotation about the axis k through
@@ -86,7 +86,7 @@ void dh_frame_rotz_q(dh_frame_q *F, dh_q16 deg);
  * @param deg angle in degrees, Q16.16, any int32.
  * @return DH_OK; DH_ERR_ZERO_AXIS if kx == ky == kz == 0 (F untouched).
  */
-dh_status dh_frame_rot_axis_q(dh_frame_q *F, dh_q30 kx, dh_q30 ky, dh_q30 kz, dh_q16 deg);
+dh_status dh_frame_rot_axis_q(dh_q30 kx, dh_q30 ky, dh_q30 kz, dh_q16 deg, dh_frame_q *F);
 
 /**
  * @brief out = A * B (rigid composition: R = Ra Rb, p = Ra pb + pa).
@@ -96,7 +96,7 @@ dh_status dh_frame_rot_axis_q(dh_frame_q *F, dh_q30 kx, dh_q30 ky, dh_q30 kz, dh
  * @return DH_OK, or DH_ERR_OVERFLOW if any entry saturated (all 12 entries
  *         written, saturated ones at INT32_MIN / INT32_MAX).
  */
-dh_status dh_frame_mul_q(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B);
+dh_status dh_frame_mul_q(const dh_frame_q *A, const dh_frame_q *B, dh_frame_q *out);
 
 /**
  * @brief out = F^-1 for a rigid F (eq. 1.57): R' = R^T (exact copy),
@@ -109,7 +109,7 @@ dh_status dh_frame_mul_q(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q 
  * orthonormality error). May alias F.
  * @return DH_OK, or DH_ERR_OVERFLOW if a position entry saturated (written).
  */
-dh_status dh_frame_inv_q(dh_frame_q *out, const dh_frame_q *F);
+dh_status dh_frame_inv_q(const dh_frame_q *F, dh_frame_q *out);
 
 /**
  * @brief v = R u + p (point, w = 1). u, v in dh_qpos; may alias.
@@ -173,14 +173,14 @@ int32_t dh_frame_ortho_error_q(const dh_frame_q *F);
  *   from the top three rows). NaN takes precedence over overflow, overflow
  *   over not-rigid.
  */
-dh_status dh_frame_from_mat4_q(dh_frame_q *F, const dh_mat4_f32 *T);
+dh_status dh_frame_from_mat4_q(const dh_mat4_f32 *T, dh_frame_q *F);
 
 /**
  * @brief T = F as a float 4x4 (bottom row 0 0 0 1). Each element is the
  *        fixed-point value rounded once to float (round to nearest even);
  *        values with <= 24 significant bits are exact. Cannot fail.
  */
-void dh_frame_to_mat4_q(dh_mat4_f32 *T, const dh_frame_q *F);
+void dh_frame_to_mat4_q(const dh_frame_q *F, dh_mat4_f32 *T);
 
 #ifdef __cplusplus
 }

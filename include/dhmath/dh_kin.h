@@ -185,10 +185,10 @@ void dh_ik_params_default(dh_ik_params *p);
  * @param r      robot (float path), 1..DH_MAX_JOINTS joints.
  * @param target end frame, bottom row exactly 0 0 0 1; rotation (read only
  *               when the mask drives it) within DH_ROT_ERROR_TOL, det > 0.
- * @param q0,q   start (n finite values) and result; q may alias q0.
- * @param p,res  parameters; iterations and errors of the returned q.
+ * @param q0,p   start (n finite values); parameters.
  * @param work,work_len at least DH_IK_WORK_FLOATS(n) floats, overlapping
  *               nothing else; contents undefined after.
+ * @param q,res  result (may alias q0); iterations and errors of q.
  * @return for the returned q (within the limits; res describes it): DH_OK
  *   both tolerances met; DH_ERR_NO_CONVERGENCE max_iter cut off an attempt
  *   still progressing; DH_ERR_UNREACHABLE stalled above tolerance, or beyond
@@ -197,12 +197,11 @@ void dh_ik_params_default(dh_ik_params *p);
  *   matrix not factorable (non-finite J). With q, res untouched: DH_ERR_ARG
  *   (n, work, work_len, max_iter, mask, tolerances, w_rot <= 0, non-finite
  *   or > 4.6e18, bad convention/joint type); DH_ERR_UNAVAILABLE (no float
- *   path); DH_ERR_NAN
- *   (target, q0); DH_ERR_NOT_RIGID (target bottom row, driven target
+ *   path); DH_ERR_NAN (target, q0); DH_ERR_NOT_RIGID (target bottom row, driven target
  *   rotation, end rotation not one); DH_ERR_OVERFLOW (FK or E of the start).
  */
-dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q0, float *q,
-                    const dh_ik_params *p, float *work, size_t work_len, dh_ik_result *res);
+dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q0, const dh_ik_params *p,
+                    float *work, size_t work_len, float *q, dh_ik_result *res);
 
 #ifdef __cplusplus
 }

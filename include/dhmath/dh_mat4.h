@@ -63,7 +63,7 @@ void dh_mat4_identity_f32(dh_mat4_f32 *T);
  * @brief T = Trans(x, y, z) (eq. 1.24): identity with p = (x, y, z).
  * Any float values are stored as given (no check). Cannot fail.
  */
-void dh_mat4_trans_f32(dh_mat4_f32 *T, float x, float y, float z);
+void dh_mat4_trans_f32(float x, float y, float z, dh_mat4_f32 *T);
 
 /**
  * @brief T = Rot(x, deg) (eq. 1.32): rows (1 0 0), (0 c -s), (0 s c).
@@ -73,13 +73,13 @@ void dh_mat4_trans_f32(dh_mat4_f32 *T, float x, float y, float z);
  * The entries are exactly dh_sincos_f32(deg) and 0 - s (so no -0 appears:
  * Rot(x, 0) is bitwise the identity; multiples of 90 are exact).
  */
-dh_status dh_mat4_rotx_f32(dh_mat4_f32 *T, float deg);
+dh_status dh_mat4_rotx_f32(float deg, dh_mat4_f32 *T);
 
 /** @brief T = Rot(y, deg) (eq. 1.33): rows (c 0 s), (0 1 0), (-s 0 c). Same contract as rotx. */
-dh_status dh_mat4_roty_f32(dh_mat4_f32 *T, float deg);
+dh_status dh_mat4_roty_f32(float deg, dh_mat4_f32 *T);
 
 /** @brief T = Rot(z, deg) (eq. 1.34): rows (c -s 0), (s c 0), (0 0 1). Same contract as rotx. */
-dh_status dh_mat4_rotz_f32(dh_mat4_f32 *T, float deg);
+dh_status dh_mat4_rotz_f32(float deg, dh_mat4_f32 *T);
 
 /**
  * @brief T = Rot(k, deg), rotation by deg degrees about the axis k through
@@ -94,12 +94,12 @@ dh_status dh_mat4_rotz_f32(dh_mat4_f32 *T, float deg);
  * For a coordinate axis (any positive length) the result is bitwise
  * Rot(x|y|z, deg). No -0 entries. Measured entry error <= 4.8 * 2^-24.
  */
-dh_status dh_mat4_rot_axis_f32(dh_mat4_f32 *T, float kx, float ky, float kz, float deg);
+dh_status dh_mat4_rot_axis_f32(float kx, float ky, float kz, float deg, dh_mat4_f32 *T);
 
 /**
  * @brief T = diag(sx, sy, sz, 1) (eq. 1.113). Values stored as given. Cannot fail.
  */
-void dh_mat4_scale_f32(dh_mat4_f32 *T, float sx, float sy, float sz);
+void dh_mat4_scale_f32(float sx, float sy, float sz, dh_mat4_f32 *T);
 
 /**
  * @brief Perspective transform along an axis (eq. 1.127 for the y axis):
@@ -112,14 +112,14 @@ void dh_mat4_scale_f32(dh_mat4_f32 *T, float sx, float sy, float sz);
  *         DH_ERR_DOMAIN if f == 0 or |1/f| overflows (|f| < 2^-128).
  *         T untouched on error.
  */
-dh_status dh_mat4_persp_f32(dh_mat4_f32 *T, int axis, float f);
+dh_status dh_mat4_persp_f32(int axis, float f, dh_mat4_f32 *T);
 
 /**
  * @brief T = [n o a p; 0 0 0 1] (eq. 1.56). The vectors are copied as given
  * (no orthonormality check; see dh_mat4_check_rigid_f32). Cannot fail.
  */
-void dh_mat4_from_noap_f32(dh_mat4_f32 *T, const dh_vec3_f32 *n, const dh_vec3_f32 *o,
-                           const dh_vec3_f32 *a, const dh_vec3_f32 *p);
+void dh_mat4_from_noap_f32(const dh_vec3_f32 *n, const dh_vec3_f32 *o, const dh_vec3_f32 *a,
+                           const dh_vec3_f32 *p, dh_mat4_f32 *T);
 
 /* ======================================================================
  * Accessors (plain loads; cannot fail)
@@ -149,7 +149,7 @@ void dh_mat4_set_rot_f32(dh_mat4_f32 *T, const dh_mat3_f32 *R);
  * and 0/+-1 inputs give exact results. Error vs the exact product:
  * |err_rc| <= 4 * 2^-24 * sum_k |A_rk||B_kc|.
  */
-void dh_mat4_mul_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B);
+void dh_mat4_mul_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out);
 
 /**
  * @brief out = A * B for affine transforms: the bottom rows of A and B are
@@ -159,7 +159,7 @@ void dh_mat4_mul_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *
  * values when the inputs' bottom rows are exactly 0 0 0 1 (zeros may differ
  * in sign).
  */
-void dh_mat4_mul_affine_f32(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B);
+void dh_mat4_mul_affine_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out);
 
 /**
  * @brief T = X * T (pre-multiplication, full product): the motion X is
@@ -242,7 +242,7 @@ void dh_mat4_apply_points_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec
  * measured error vs the exact inverse of T <= 2.3 * 2^-24 * (1 + |p|_1).
  * Cannot fail.
  */
-void dh_mat4_inv_rigid_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T);
+void dh_mat4_inv_rigid_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out);
 
 /**
  * @brief General 4x4 inverse with a scale-invariant, proven singularity
@@ -274,7 +274,7 @@ void dh_mat4_inv_rigid_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T);
  *         (only for non-affine T with max|T_ij| >= 2^17 and a strongly
  *         unbalanced last row/column). out untouched on error; may alias T.
  */
-dh_status dh_mat4_inv_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T);
+dh_status dh_mat4_inv_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out);
 
 /**
  * @brief Rotation part of T orthonormal with det +1, within @p tol.
@@ -303,7 +303,7 @@ dh_status dh_mat4_check_rigid_f32(const dh_mat4_f32 *T, float tol);
  * @return as dh_mat4_inv_f32 (DH_ERR_NAN, DH_ERR_SINGULAR, DH_ERR_OVERFLOW);
  *         out untouched on error; out may alias T.
  */
-dh_status dh_mat4_inv_auto_f32(dh_mat4_f32 *out, const dh_mat4_f32 *T);
+dh_status dh_mat4_inv_auto_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out);
 
 /* ======================================================================
  * Equivalent angle and axis (Paul 1981, "Equivalent Angle and Axis of Rotation")

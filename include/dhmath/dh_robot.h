@@ -143,15 +143,15 @@ dh_status dh_robot_init(dh_robot *r, dh_convention conv);
  * returns DH_ERR_UNAVAILABLE) and the float path is unaffected. Limits: none.
  * @param r     robot (not NULL)
  * @param type  DH_JOINT_REVOLUTE or DH_JOINT_PRISMATIC
- * @param a     link length (length unit)
- * @param d     link offset (length unit; offset added to q for P joints)
- * @param alpha_deg link twist (degrees)
  * @param theta_deg joint angle (degrees; offset added to q for R joints)
+ * @param d     link offset (length unit; offset added to q for P joints)
+ * @param a     link length (length unit)
+ * @param alpha_deg link twist (degrees)
  * @return DH_OK; DH_ERR_ARG when n == DH_MAX_JOINTS or type is unknown;
  *         DH_ERR_NAN when a parameter is NaN or infinite. On error r is untouched.
  */
-dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float a, float d,
-                                 float alpha_deg, float theta_deg);
+dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float theta_deg, float d,
+                                 float a, float alpha_deg);
 
 /**
  * @brief Append a joint from fixed-point parameters only (integer only).
@@ -161,12 +161,12 @@ dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float a, float
  * DH_ERR_UNAVAILABLE). sin/cos(alpha) come from dh_sincos_q(alpha_deg). Limits: none.
  * @param r     robot (not NULL)
  * @param type  DH_JOINT_REVOLUTE or DH_JOINT_PRISMATIC
- * @param a, d  lengths, dh_qpos (DH_QPOS_FRAC fraction bits), any value
- * @param alpha_deg, theta_deg degrees Q16.16, any value
+ * @param theta_deg, d, a, alpha_deg the DH table's row: angles degrees
+ *              Q16.16, lengths dh_qpos (DH_QPOS_FRAC fraction bits), any value
  * @return DH_OK; DH_ERR_ARG when full or type unknown (r untouched).
  */
-dh_status dh_robot_add_joint_q(dh_robot *r, dh_joint_type type, dh_qpos a, dh_qpos d,
-                               dh_q16 alpha_deg, dh_q16 theta_deg);
+dh_status dh_robot_add_joint_q(dh_robot *r, dh_joint_type type, dh_q16 theta_deg, dh_qpos d,
+                               dh_qpos a, dh_q16 alpha_deg);
 
 /**
  * @brief Joint limits of joint i (0-based), both paths.

@@ -148,7 +148,7 @@ const char *dh_euler_name(dh_euler_seq seq);
  * entries (the result is then bitwise an exact signed permutation matrix).
  * Entry error <= 3e-7 for angles in [-360, 360].
  */
-dh_status dh_euler_to_mat3_f32(dh_mat3_f32 *R, dh_euler_seq seq, const float ang_deg[3]);
+dh_status dh_euler_to_mat3_f32(dh_euler_seq seq, const float ang_deg[3], dh_mat3_f32 *R);
 
 /**
  * @brief Euler angles of sequence @p seq of the rotation R: the inverse of
@@ -212,7 +212,7 @@ typedef struct {
  *         untouched on error.
  * Entry error <= 6e-7 against the exact rotation of the float q.
  */
-dh_status dh_quat_to_mat3_f32(dh_mat3_f32 *R, const dh_quat_f32 *q);
+dh_status dh_quat_to_mat3_f32(const dh_quat_f32 *q, dh_mat3_f32 *R);
 
 /**
  * @brief Unit quaternion of the rotation R (Shepperd 1978; no division by
@@ -241,7 +241,7 @@ dh_status dh_mat3_to_quat_f32(const dh_mat3_f32 *R, dh_quat_f32 *q);
  *         max |component| < FLT_MIN (zero or denormal). out untouched on
  *         error; out may alias q.
  */
-dh_status dh_quat_normalize_f32(dh_quat_f32 *out, const dh_quat_f32 *q);
+dh_status dh_quat_normalize_f32(const dh_quat_f32 *q, dh_quat_f32 *out);
 
 /**
  * @brief out = a * b (Hamilton product): the rotation b followed by a,
@@ -249,10 +249,10 @@ dh_status dh_quat_normalize_f32(dh_quat_f32 *out, const dh_quat_f32 *q);
  *        semantics: NaN/Inf propagate). out may alias a and/or b.
  * Error per component <= 4 * 2^-24 * sum |a_i b_j| (four products summed).
  */
-void dh_quat_mul_f32(dh_quat_f32 *out, const dh_quat_f32 *a, const dh_quat_f32 *b);
+void dh_quat_mul_f32(const dh_quat_f32 *a, const dh_quat_f32 *b, dh_quat_f32 *out);
 
 /** @brief out = conjugate of q = (w, -x, -y, -z): the inverse rotation of a unit q. out may alias q. */
-void dh_quat_conj_f32(dh_quat_f32 *out, const dh_quat_f32 *q);
+void dh_quat_conj_f32(const dh_quat_f32 *q, dh_quat_f32 *out);
 
 /**
  * @brief q = (cos(t/2), sin(t/2) k) for the rotation by @p deg degrees about
@@ -266,7 +266,7 @@ void dh_quat_conj_f32(dh_quat_f32 *out, const dh_quat_f32 *q);
  *         max |axis component| < FLT_MIN. q untouched on error.
  * Error bound: components within 2e-7 for |deg| <= 720.
  */
-dh_status dh_quat_from_axis_angle_f32(dh_quat_f32 *q, const dh_vec3_f32 *axis, float deg);
+dh_status dh_quat_from_axis_angle_f32(const dh_vec3_f32 *axis, float deg, dh_quat_f32 *q);
 
 /* ======================================================================
  * Angle-axis, rotation vector (log / exp), skew matrices
@@ -285,7 +285,7 @@ dh_status dh_quat_from_axis_angle_f32(dh_quat_f32 *q, const dh_vec3_f32 *axis, f
  *         max |axis component| < FLT_MIN. R untouched on error.
  * Entry error <= 4e-7 for |deg| <= 720.
  */
-dh_status dh_axis_angle_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *axis, float deg);
+dh_status dh_axis_angle_to_mat3_f32(const dh_vec3_f32 *axis, float deg, dh_mat3_f32 *R);
 
 /**
  * @brief Unit axis k and angle in [0, 180] degrees of the rotation R, with
@@ -322,7 +322,7 @@ dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, flo
  * Entry error <= 4e-7 for |phi| <= pi (down to 1e-30); <= 1.5e-7 * |phi|
  * for pi < |phi| <= 4 pi (mostly the float rounding of |phi| itself).
  */
-dh_status dh_rotvec_to_mat3_f32(dh_mat3_f32 *R, const dh_vec3_f32 *phi);
+dh_status dh_rotvec_to_mat3_f32(const dh_vec3_f32 *phi, dh_mat3_f32 *R);
 
 /**
  * @brief Logarithm map: rotation vector phi = t k (RADIANS) of R, with
@@ -342,7 +342,7 @@ dh_status dh_mat3_to_rotvec_f32(const dh_mat3_f32 *R, dh_vec3_f32 *phi);
  *        rows (0 -vz vy), (vz 0 -vx), (-vy vx 0).
  * Exact (negation only; the zero diagonal is +0). No status.
  */
-void dh_skew_f32(dh_mat3_f32 *S, const dh_vec3_f32 *v);
+void dh_skew_f32(const dh_vec3_f32 *v, dh_mat3_f32 *S);
 
 /**
  * @brief v = vee(S): the vector of the skew-symmetric PART of S,
@@ -352,7 +352,7 @@ void dh_skew_f32(dh_mat3_f32 *S, const dh_vec3_f32 *v);
  * finite v whose halves are not denormal, and no overflow. No status
  * (IEEE semantics). v may not alias S (different types).
  */
-void dh_vee_f32(dh_vec3_f32 *v, const dh_mat3_f32 *S);
+void dh_vee_f32(const dh_mat3_f32 *S, dh_vec3_f32 *v);
 
 /**
  * @brief Angular velocity in the REFERENCE (space) frame of a rotating
@@ -369,13 +369,13 @@ void dh_vee_f32(dh_vec3_f32 *v, const dh_mat3_f32 *S);
  *         untouched on error.
  * Error bound: |w - w_exact| <= 3e-7 * max(1, |w|) per component.
  */
-dh_status dh_angvel_f32(dh_vec3_f32 *w, const dh_mat3_f32 *R, const dh_mat3_f32 *Rdot);
+dh_status dh_angvel_f32(const dh_mat3_f32 *R, const dh_mat3_f32 *Rdot, dh_vec3_f32 *w);
 
 /**
  * @brief Angular velocity in the BODY (moving) frame: w_b = vee(R^T Rdot)
  *        = R^T w. Same contract as dh_angvel_f32.
  */
-dh_status dh_angvel_body_f32(dh_vec3_f32 *w, const dh_mat3_f32 *R, const dh_mat3_f32 *Rdot);
+dh_status dh_angvel_body_f32(const dh_mat3_f32 *R, const dh_mat3_f32 *Rdot, dh_vec3_f32 *w);
 
 /* ======================================================================
  * Checks and re-orthonormalisation
@@ -410,7 +410,7 @@ dh_status dh_mat3_check_rot_f32(const dh_mat3_f32 *R, float tol);
  *         tolerance (not observed; out is then left untouched too).
  *         out untouched on error; out may alias R.
  */
-dh_status dh_mat3_orthonormalize_f32(dh_mat3_f32 *out, const dh_mat3_f32 *R);
+dh_status dh_mat3_orthonormalize_f32(const dh_mat3_f32 *R, dh_mat3_f32 *out);
 
 #ifdef __cplusplus
 }

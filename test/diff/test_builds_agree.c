@@ -160,7 +160,7 @@ static void rot3_exact(dh_mat3_f32 *R)
         else if (k == 2u) a[i] = 180.0f + (float)rd(-1e-3, 1e-3);
         else a[i] = (float)rd(-180.0, 180.0);
     }
-    if (dh_euler_to_mat3_f32(R, (dh_euler_seq)rn(24u), a) != DH_OK) DHT_TRUE(0);
+    if (dh_euler_to_mat3_f32((dh_euler_seq)rn(24u), a, R) != DH_OK) DHT_TRUE(0);
 }
 
 static void mat3_perturb(dh_mat3_f32 *R, double eps)
@@ -264,8 +264,8 @@ static void mat4_gen(dh_mat4_f32 *M)
         return;
     case 18: {                                          /* perspective times rigid */
         dh_mat4_f32 P;
-        if (dh_mat4_persp_f32(&P, (int)rn(3u), (float)ldexp(rd(0.5, 1.0), (int)rn(80u) - 40)) == DH_OK)
-            dh_mat4_mul_f32(M, &P, M);
+        if (dh_mat4_persp_f32((int)rn(3u), (float)ldexp(rd(0.5, 1.0), (int)rn(80u) - 40), &P) == DH_OK)
+            dh_mat4_mul_f32(&P, M, M);
         return;
     }
     default:                                            /* any float in any entry */
@@ -279,7 +279,7 @@ static void frame_gen(dh_frame_q *F)
     int c, r;
     uint32_t k = rn(12u);
     int32_t s = (int32_t)rn(31u);
-    if (dh_frame_rot_axis_q(F, i_gen(), i_gen(), i_gen(), i_gen()) != DH_OK) dh_frame_identity_q(F);
+    if (dh_frame_rot_axis_q(i_gen(), i_gen(), i_gen(), i_gen(), F) != DH_OK) dh_frame_identity_q(F);
     for (r = 0; r < 3; r++) F->p[r] = (int32_t)ru() >> s;
     switch (k) {
     case 0: case 1: case 2: case 3: return;             /* rigid */
@@ -291,9 +291,9 @@ static void frame_gen(dh_frame_q *F)
     }
     case 6: {                                           /* exact axis rotations */
         int32_t a = (int32_t)(rn(9u) * 90u) << 16;
-        if (rn(3u) == 0u) dh_frame_rotx_q(F, a);
-        else if (rn(2u)) dh_frame_roty_q(F, a);
-        else dh_frame_rotz_q(F, a);
+        if (rn(3u) == 0u) dh_frame_rotx_q(a, F);
+        else if (rn(2u)) dh_frame_roty_q(a, F);
+        else dh_frame_rotz_q(a, F);
         for (r = 0; r < 3; r++) F->p[r] = i_gen();
         return;
     }
@@ -339,7 +339,7 @@ static float joint_len(double s)
 static void frame_rigid_q(dh_frame_q *F, int32_t pscale)
 {
     int r;
-    if (dh_frame_rot_axis_q(F, i_gen(), i_gen(), i_gen(), (int32_t)ru()) != DH_OK) dh_frame_identity_q(F);
+    if (dh_frame_rot_axis_q(i_gen(), i_gen(), i_gen(), (int32_t)ru(), F) != DH_OK) dh_frame_identity_q(F);
     for (r = 0; r < 3; r++) F->p[r] = (int32_t)(rn(2u * (uint32_t)pscale + 1u) - (uint32_t)pscale);
 }
 
@@ -380,11 +380,11 @@ static void robot_gen(dh_robot *r)
         dh_joint_type t = rn(4u) == 0u ? DH_JOINT_PRISMATIC : DH_JOINT_REVOLUTE;
         if (rn(12u) == 0u) {
             int32_t sq = (int32_t)(s * 65536.0);
-            (void)dh_robot_add_joint_q(r, t, (int32_t)rn((uint32_t)(2 * sq + 1)) - sq,
+            (void)dh_robot_add_joint_q(r, t, rn(2u) ? i_gen() : 0,
                                        (int32_t)rn((uint32_t)(2 * sq + 1)) - sq,
-                                       (int32_t)(joint_angle() * 65536.0f), rn(2u) ? i_gen() : 0);
+                                       (int32_t)rn((uint32_t)(2 * sq + 1)) - sq, (int32_t)(joint_angle() * 65536.0f));
         } else {
-            (void)dh_robot_add_joint_f32(r, t, joint_len(s), joint_len(s), joint_angle(), rn(2u) ? joint_angle() : 0.0f);
+            (void)dh_robot_add_joint_f32(r, t, rn(2u) ? joint_angle() : 0.0f, joint_len(s), joint_len(s), joint_angle());
         }
         if (rn(3u) == 0u) {
             float lo = (t == DH_JOINT_REVOLUTE) ? (float)rd(-270.0, 0.0) : (float)rd(-s, 0.0);
@@ -701,7 +701,7 @@ static int plane_close(const diff_in *in, const dh_plane_f32 *Qa, const dh_plane
     const float *qa = &Qa->a, *qb = &Qb->a;
     double tX, pabs = 0.0;
     int i, j, res = 1;
-    if (dh_mat4_inv_f32(&X, &in->M[0]) != DH_OK) return 0;
+    if (dh_mat4_inv_f32(&in->M[0], &X) != DH_OK) return 0;
     tX = 2.0 * inv_bound(&in->M[0], &X) + ldexp(1.0, -148);
     for (i = 0; i < 4; i++) pabs += fabs((double)P[i]);
     for (j = 0; j < 4; j++) {
@@ -747,8 +747,8 @@ static double plane_rigid_err(const dh_mat4_f32 *T)
     double e = 0.0;
     int c, r;
     if (dh_mat4_check_rigid_f32(T, DH_MAT4_RIGID_TOL) != DH_OK) return 0.0;
-    if (dh_mat4_inv_f32(&X, T) != DH_OK) return 0.0;
-    dh_mat4_inv_rigid_f32(&Xr, T);
+    if (dh_mat4_inv_f32(T, &X) != DH_OK) return 0.0;
+    dh_mat4_inv_rigid_f32(T, &Xr);
     for (c = 0; c < 4; c++)
         for (r = 0; r < 4; r++) {
             double d = fabs((double)Xr.m[c][r] - (double)X.m[c][r]);
