@@ -93,44 +93,23 @@ static DH_NOINLINE float dh_affine_t(dh_mat4_f32 *X, float px, float py, float p
     return z;
 }
 
-/* rows of the inverse are n, o, a; column p is -R^T p (out may alias T) */
+/* rows of the inverse are n, o, a; column p is -R^T p; every element is
+ * read before the first write, so out may alias T */
 void dh_mat4_inv_rigid_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 {
-    float px, py, pz;
+    float nx, ny, nz, ox, oy, oz, ax, ay, az, px, py, pz;
     DH_ASSERT(out != NULL && T != NULL);
-#if DH_FAST_PATHS
-    {
-        /* unrolled: every element read before the first write */
-        const float nx = T->m[0][0], ny = T->m[0][1], nz = T->m[0][2];
-        const float ox = T->m[1][0], oy = T->m[1][1], oz = T->m[1][2];
-        const float ax = T->m[2][0], ay = T->m[2][1], az = T->m[2][2];
-        px = T->m[3][0]; py = T->m[3][1]; pz = T->m[3][2];
-        out->m[0][0] = nx; out->m[0][1] = ox; out->m[0][2] = ax; out->m[0][3] = 0.0f;
-        out->m[1][0] = ny; out->m[1][1] = oy; out->m[1][2] = ay; out->m[1][3] = 0.0f;
-        out->m[2][0] = nz; out->m[2][1] = oz; out->m[2][2] = az; out->m[2][3] = 0.0f;
-        out->m[3][0] = 0.0f - (px * nx + py * ny + pz * nz);
-        out->m[3][1] = 0.0f - (px * ox + py * oy + pz * oz);
-        out->m[3][2] = 0.0f - (px * ax + py * ay + pz * az);
-        out->m[3][3] = 1.0f;
-        return;
-    }
-#endif
-    /* p first, R^T by pair swaps that read both elements before writing
-     * either, then the same translation products from R^T as stored */
-    px = T->m[3][0];
-    py = T->m[3][1];
-    pz = T->m[3][2];
-    {
-        int i, j;
-        for (i = 0; i < 3; i++) {
-            for (j = 0; j <= i; j++) {
-                const float a = T->m[i][j], b = T->m[j][i];
-                out->m[i][j] = b;
-                out->m[j][i] = a;
-            }
-        }
-    }
-    (void)dh_affine_t(out, px, py, pz);
+    nx = T->m[0][0]; ny = T->m[0][1]; nz = T->m[0][2];
+    ox = T->m[1][0]; oy = T->m[1][1]; oz = T->m[1][2];
+    ax = T->m[2][0]; ay = T->m[2][1]; az = T->m[2][2];
+    px = T->m[3][0]; py = T->m[3][1]; pz = T->m[3][2];
+    out->m[0][0] = nx; out->m[0][1] = ox; out->m[0][2] = ax; out->m[0][3] = 0.0f;
+    out->m[1][0] = ny; out->m[1][1] = oy; out->m[1][2] = ay; out->m[1][3] = 0.0f;
+    out->m[2][0] = nz; out->m[2][1] = oz; out->m[2][2] = az; out->m[2][3] = 0.0f;
+    out->m[3][0] = 0.0f - (px * nx + py * ny + pz * nz);
+    out->m[3][1] = 0.0f - (px * ox + py * oy + pz * oz);
+    out->m[3][2] = 0.0f - (px * ax + py * ay + pz * az);
+    out->m[3][3] = 1.0f;
 }
 
 /* ---------------------------------------------------------------------- */
