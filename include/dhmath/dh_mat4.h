@@ -210,7 +210,9 @@ dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, 
  * invariance |Q v - P u| <= 13.5 * 2^-24 * |P| (|u|_1 + 1) on rigid and
  * scaled-rigid T.
  * DH_SMALL=1: the general (certified) inverse for every T, rigid or not:
- * the same statuses, values within the general inverse's bound.
+ * the same statuses; values within the general inverse's bound, or, for a
+ * T that is rigid only within DH_MAT4_RIGID_TOL, within the distance
+ * between that inverse and the closed form.
  * @return DH_OK; DH_ERR_NAN (T or P not finite), DH_ERR_SINGULAR,
  *         DH_ERR_OVERFLOW as dh_mat4_inv_f32. Q untouched on error.
  */

@@ -41,8 +41,8 @@
  * any saturated output entry makes the function return DH_ERR_OVERFLOW.
  *
  * DH_SMALL=1 (dh_config.h): every output and status is the default
- * build's, except that a zero entry of dh_link_f32 (and of the first frame
- * of dh_fk_f32 with an identity base) may have the other sign.
+ * build's, except that a zero entry of a float link or FK frame may have
+ * the other sign and a NaN entry another payload.
  *
  * No function keeps state; a dh_robot may be shared read-only between
  * threads.
