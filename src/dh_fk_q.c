@@ -280,10 +280,12 @@ DH_INLINE void fast_prep(fkq_joint *J, dh_q30 st, dh_q30 ct, dh_qpos a, dh_qpos 
     J->ka = KQ(a);
 }
 
-/* Rows of a standard DH joint with an exact twist: O = I * A (O may be I:
- * row k of I is read before row k of O is written). swap (0 or 1) is a
- * constant. Returns DH_ERR_OVERFLOW when a position saturated, else 0. */
-DH_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int swap)
+/* Rows of a standard DH joint: O = I * A (O may be I: row k of I is read
+ * before row k of O is written). gen 0: an exact twist, whose rows are u and
+ * z moved (swap 0 or 1) and negated; gen 1: a general twist. gen and swap
+ * are constants. Returns DH_ERR_OVERFLOW when a position saturated, else 0. */
+DH_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int gen,
+                            int swap)
 {
     int ovf = 0, k;
     DH_UNROLL3
@@ -294,27 +296,14 @@ DH_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q 
         const int32_t u = DOT2(J->kc, y, J->kns, x);
         O->p[k] = haslen ? pos_fast(p, J->kd, z, J->ka, n1, &ovf) : p;
         O->r[0][k] = n1;
-        O->r[1 + swap][k] = NEGM(u, J->m1);
-        O->r[2 - swap][k] = NEGM(z, J->m2);
-    }
-    return ovf;
-}
-
-/* Rows of a standard DH joint with a general twist (same contract). */
-DH_INLINE int fast_std_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen)
-{
-    int ovf = 0, k;
-    DH_UNROLL3
-    for (k = 0; k < 3; k++) {
-        const fkq_r x = RQ(I->r[0][k]), y = RQ(I->r[1][k]);
-        const int32_t z = I->r[2][k], p = I->p[k];
-        const int32_t n1 = DOT2(J->kc, x, J->ks, y);
-        const int32_t u = DOT2(J->kc, y, J->kns, x);
-        const fkq_r U = RQ(u), Z = RQ(z);
-        O->p[k] = haslen ? pos_fast(p, J->kd, z, J->ka, n1, &ovf) : p;
-        O->r[0][k] = n1;
-        O->r[1][k] = DOT2(J->kca, U, J->ksa, Z);
-        O->r[2][k] = DOT2(J->kca, Z, J->knsa, U);
+        if (gen) {
+            const fkq_r U = RQ(u), Z = RQ(z);
+            O->r[1][k] = DOT2(J->kca, U, J->ksa, Z);
+            O->r[2][k] = DOT2(J->kca, Z, J->knsa, U);
+        } else {
+            O->r[1 + swap][k] = NEGM(u, J->m1);
+            O->r[2 - swap][k] = NEGM(z, J->m2);
+        }
     }
     return ovf;
 }
@@ -370,10 +359,10 @@ DH_INLINE int fast_step(const dh_frame_q *I, dh_frame_q *O, unsigned mod, const 
         J.kca = KQ(v[3]);
         J.ksa = KQ(v[2]);
         J.knsa = KQ(-v[2]);
-        return mod ? fast_mod_rows_gen(&J, I, O, haslen) : fast_std_rows_gen(&J, I, O, haslen);
+        return mod ? fast_mod_rows_gen(&J, I, O, haslen) : fast_std_rows(&J, I, O, haslen, 1, 0);
     }
     if (mod) return swap ? fast_mod_rows(&J, I, O, haslen, 1) : fast_mod_rows(&J, I, O, haslen, 0);
-    return swap ? fast_std_rows(&J, I, O, haslen, 1) : fast_std_rows(&J, I, O, haslen, 0);
+    return swap ? fast_std_rows(&J, I, O, haslen, 0, 1) : fast_std_rows(&J, I, O, haslen, 0, 0);
 }
 
 /* fast_step() for each convention (one copy each, out of the caller's

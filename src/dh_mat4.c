@@ -35,13 +35,28 @@ void dh_mat4_identity_f32(dh_mat4_f32 *T)
     dh_set_identity(T);
 }
 
-void dh_mat4_trans_f32(float x, float y, float z, dh_mat4_f32 *T)
+/* o = (a, b, c, d): a 4-float struct as an array */
+DH_INLINE void dh_load4(float *o, float a, float b, float c, float d)
+{
+    o[0] = a;
+    o[1] = b;
+    o[2] = c;
+    o[3] = d;
+}
+
+/* The identity with (x, y, z) in column 3 (col 3) or on the diagonal (col -1). */
+static void dh_identity_xyz(dh_mat4_f32 *T, float x, float y, float z, int col)
 {
     DH_ASSERT(T != NULL);
     dh_set_identity(T);
-    T->m[3][0] = x;
-    T->m[3][1] = y;
-    T->m[3][2] = z;
+    T->m[(col < 0) ? 0 : col][0] = x;
+    T->m[(col < 0) ? 1 : col][1] = y;
+    T->m[(col < 0) ? 2 : col][2] = z;
+}
+
+void dh_mat4_trans_f32(float x, float y, float z, dh_mat4_f32 *T)
+{
+    dh_identity_xyz(T, x, y, z, 3);
 }
 
 /*
@@ -197,11 +212,7 @@ dh_status dh_mat4_rot_axis_f32(float kx, float ky, float kz, float deg, dh_mat4_
 
 void dh_mat4_scale_f32(float sx, float sy, float sz, dh_mat4_f32 *T)
 {
-    DH_ASSERT(T != NULL);
-    dh_set_identity(T);
-    T->m[0][0] = sx;
-    T->m[1][1] = sy;
-    T->m[2][2] = sz;
+    dh_identity_xyz(T, sx, sy, sz, -1);
 }
 
 /* f = +-0 gives r = -+Inf, so the finiteness test of r is also f == 0 */
@@ -288,28 +299,6 @@ static void dh_lin(const dh_mat4_f32 *A, const float *in, float *o, int n)
     }
 }
 
-/*
- * out = A B (aff == 0), or the affine product (aff == 1): columns 0..2 of
- * R_A R_B, column 3 R_A p_B + p_A (the fourth term of a point), bottom row
- * 0 0 0 1; the bottom rows of A and B are not used. Built in a temporary,
- * so out may alias A and/or B.
- */
-static void dh_mul(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B, int aff)
-{
-    dh_mat4_f32 t;
-    int i;
-    DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    for (i = 0; i < 4; i++) dh_lin(A, B->m[i], &t.m[i][0], 4 - aff);
-    if (aff) {
-        for (i = 0; i < 4; i++) {
-            t.m[i][3] = 0.0f;
-            t.m[3][i] += A->m[3][i]; /* row 3 is the 0 0 0 1 below */
-        }
-        t.m[3][3] = 1.0f;
-    }
-    *out = t;
-}
-
 #if DH_FAST_PATHS
 /*
  * Unrolled products: column c of A*B is the combination of the columns of
@@ -338,31 +327,21 @@ static void dh_mul(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B,
         const float x_ = (B)->m[c][0], y_ = (B)->m[c][1], z_ = (B)->m[c][2];             \
         for (r = 0; r < DH_AFFINE_ROWS; r++) (out)->m[c][r] = a.m[0][r] * x_ + a.m[1][r] * y_ + a.m[2][r] * z_;  \
     } while (0)
-#endif
 
-void dh_mat4_mul_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out)
+/* The unrolled full (affine 0) or affine (affine 1, a constant) product. */
+DH_INLINE void dh_mul_unrolled(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int affine)
 {
-#if DH_FAST_PATHS
     dh_mat4_f32 a;
     int r;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
     a = *A;
-    DH_MUL_COL4(out, 0, B);
-    DH_MUL_COL4(out, 1, B);
-    DH_MUL_COL4(out, 2, B);
-    DH_MUL_COL4(out, 3, B);
-    return;
-#endif
-    dh_mul(out, A, B, 0);
-}
-
-void dh_mat4_mul_affine_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out)
-{
-#if DH_FAST_PATHS
-    dh_mat4_f32 a;
-    int r;
-    DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    a = *A;
+    if (!affine) {
+        DH_MUL_COL4(out, 0, B);
+        DH_MUL_COL4(out, 1, B);
+        DH_MUL_COL4(out, 2, B);
+        DH_MUL_COL4(out, 3, B);
+        return;
+    }
     DH_MUL_COL3(out, 0, B);
     DH_MUL_COL3(out, 1, B);
     DH_MUL_COL3(out, 2, B);
@@ -374,8 +353,42 @@ void dh_mat4_mul_affine_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_
     out->m[1][3] = 0.0f;
     out->m[2][3] = 0.0f;
     out->m[3][3] = 1.0f;
+}
+#endif
+
+/*
+ * out = A B (aff == 0), or the affine product (aff == 1): columns 0..2 of
+ * R_A R_B, column 3 R_A p_B + p_A (the fourth term of a point), bottom row
+ * 0 0 0 1; the bottom rows of A and B are not used. Built in a temporary,
+ * so out may alias A and/or B.
+ */
+DH_SPEED_INLINE void dh_mul(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B, int aff)
+{
+    dh_mat4_f32 t;
+    int i;
+#if DH_FAST_PATHS
+    dh_mul_unrolled(A, B, out, aff);
     return;
 #endif
+    DH_ASSERT(out != NULL && A != NULL && B != NULL);
+    for (i = 0; i < 4; i++) dh_lin(A, B->m[i], &t.m[i][0], 4 - aff);
+    if (aff) {
+        for (i = 0; i < 4; i++) {
+            t.m[i][3] = 0.0f;
+            t.m[3][i] += A->m[3][i]; /* row 3 is the 0 0 0 1 below */
+        }
+        t.m[3][3] = 1.0f;
+    }
+    *out = t;
+}
+
+void dh_mat4_mul_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out)
+{
+    dh_mul(out, A, B, 0);
+}
+
+void dh_mat4_mul_affine_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out)
+{
     dh_mul(out, A, B, 1);
 }
 
@@ -393,11 +406,39 @@ void dh_mat4_postmul_f32(dh_mat4_f32 *T, const dh_mat4_f32 *X)
 /* application                                                            */
 /* ---------------------------------------------------------------------- */
 
+#if DH_FAST_PATHS
+/* R u (+ p when point, a constant) written out; u is read first, so u and v
+ * may be the same object. ((a + b) + c) + d is the general path's order. */
+DH_INLINE void dh_apply3_unrolled(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, int point)
+{
+    float x, y, z, rx, ry, rz;
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
+    x = u->x;
+    y = u->y;
+    z = u->z;
+    rx = T->m[0][0] * x + T->m[1][0] * y + T->m[2][0] * z;
+    ry = T->m[0][1] * x + T->m[1][1] * y + T->m[2][1] * z;
+    rz = T->m[0][2] * x + T->m[1][2] * y + T->m[2][2] * z;
+    if (point) {
+        rx += T->m[3][0];
+        ry += T->m[3][1];
+        rz += T->m[3][2];
+    }
+    v->x = rx;
+    v->y = ry;
+    v->z = rz;
+}
+#endif
+
 /* v = rows 0..2 of the n-term combination of the columns of T with u, 1
  * (u, v may be the same object: u is read first) */
-static void dh_apply3(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, int n)
+DH_SPEED_INLINE void dh_apply3(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, int n)
 {
     float in[4], o[4];
+#if DH_FAST_PATHS
+    dh_apply3_unrolled(T, u, v, n == 4);
+    return;
+#endif
     DH_ASSERT(T != NULL && u != NULL && v != NULL);
     in[0] = u->x;
     in[1] = u->y;
@@ -411,33 +452,11 @@ static void dh_apply3(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v
 
 void dh_mat4_apply_point_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
 {
-#if DH_FAST_PATHS
-    float x, y, z;
-    DH_ASSERT(T != NULL && u != NULL && v != NULL);
-    x = u->x;
-    y = u->y;
-    z = u->z;
-    v->x = T->m[0][0] * x + T->m[1][0] * y + T->m[2][0] * z + T->m[3][0];
-    v->y = T->m[0][1] * x + T->m[1][1] * y + T->m[2][1] * z + T->m[3][1];
-    v->z = T->m[0][2] * x + T->m[1][2] * y + T->m[2][2] * z + T->m[3][2];
-    return;
-#endif
     dh_apply3(T, u, v, 4);
 }
 
 void dh_mat4_apply_dir_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
 {
-#if DH_FAST_PATHS
-    float x, y, z;
-    DH_ASSERT(T != NULL && u != NULL && v != NULL);
-    x = u->x;
-    y = u->y;
-    z = u->z;
-    v->x = T->m[0][0] * x + T->m[1][0] * y + T->m[2][0] * z;
-    v->y = T->m[0][1] * x + T->m[1][1] * y + T->m[2][1] * z;
-    v->z = T->m[0][2] * x + T->m[1][2] * y + T->m[2][2] * z;
-    return;
-#endif
     dh_apply3(T, u, v, 3);
 }
 
@@ -493,10 +512,7 @@ dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, 
     float in[4], h[4], z = 0.0f, zi = 0.0f;
     int i;
     DH_ASSERT(T != NULL && u != NULL && v != NULL);
-    in[0] = u->x;
-    in[1] = u->y;
-    in[2] = u->z;
-    in[3] = u->w;
+    dh_load4(in, u->x, u->y, u->z, u->w);
 #if DH_FAST_PATHS
     /* finite h with w != 0 and finite quotients; the general path below
      * recomputes the same h and classifies everything else */
@@ -536,10 +552,7 @@ void dh_plane_mul_f32(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv, dh_plane_f
     float p[4], q[4];
     int j, k;
     DH_ASSERT(P != NULL && Tinv != NULL && Q != NULL);
-    p[0] = P->a;
-    p[1] = P->b;
-    p[2] = P->c;
-    p[3] = P->d;
+    dh_load4(p, P->a, P->b, P->c, P->d);
 #if DH_FAST_PATHS
     Q->a = p[0] * Tinv->m[0][0] + p[1] * Tinv->m[0][1] + p[2] * Tinv->m[0][2] + p[3] * Tinv->m[0][3];
     Q->b = p[0] * Tinv->m[1][0] + p[1] * Tinv->m[1][1] + p[2] * Tinv->m[1][2] + p[3] * Tinv->m[1][3];
