@@ -338,15 +338,15 @@ static BT_NOIPA void z_sincos_q(dh_q16 deg, dh_q30 *s, dh_q30 *c)
 {
     (void)deg; (void)s; (void)c;
 }
-static BT_NOIPA void z_mat_mul(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
+static BT_NOIPA void z_mat_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out)
 {
     (void)out; (void)A; (void)B;
 }
-static BT_NOIPA void z_mat_inv_rigid(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+static BT_NOIPA void z_mat_inv_rigid(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 {
     (void)out; (void)T;
 }
-static BT_NOIPA dh_status z_mat_inv(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+static BT_NOIPA dh_status z_mat_inv(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 {
     (void)out; (void)T;
     return DH_OK;
@@ -355,17 +355,17 @@ static BT_NOIPA void z_mat_point(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_
 {
     (void)T; (void)u; (void)v;
 }
-static BT_NOIPA dh_status z_mat_rot1(dh_mat4_f32 *T, float deg)
+static BT_NOIPA dh_status z_mat_rot1(float deg, dh_mat4_f32 *T)
 {
     (void)T; (void)deg;
     return DH_OK;
 }
-static BT_NOIPA dh_status z_mat_rot_axis(dh_mat4_f32 *T, float kx, float ky, float kz, float deg)
+static BT_NOIPA dh_status z_mat_rot_axis(float kx, float ky, float kz, float deg, dh_mat4_f32 *T)
 {
     (void)T; (void)kx; (void)ky; (void)kz; (void)deg;
     return DH_OK;
 }
-static BT_NOIPA dh_status z_mat_persp(dh_mat4_f32 *T, int axis, float f)
+static BT_NOIPA dh_status z_mat_persp(int axis, float f, dh_mat4_f32 *T)
 {
     (void)T; (void)axis; (void)f;
     return DH_OK;
@@ -383,12 +383,12 @@ static BT_NOIPA void z_plane_mul(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv,
 {
     (void)P; (void)Tinv; (void)Q;
 }
-static BT_NOIPA dh_status z_frame_mul(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B)
+static BT_NOIPA dh_status z_frame_mul(const dh_frame_q *A, const dh_frame_q *B, dh_frame_q *out)
 {
     (void)out; (void)A; (void)B;
     return DH_OK;
 }
-static BT_NOIPA dh_status z_frame_inv(dh_frame_q *out, const dh_frame_q *F)
+static BT_NOIPA dh_status z_frame_inv(const dh_frame_q *F, dh_frame_q *out)
 {
     (void)out; (void)F;
     return DH_OK;
@@ -417,22 +417,22 @@ static BT_NOIPA dh_status z_jacobian(const dh_robot *r, const float *q, float *J
 /* wrapper bodies, F = the function to call */
 #define B_sincos_f32(F) bt_status |= (uint32_t)F(bt_ang_f[i & (BT_NANG - 1u)], &bt_s, &bt_c)
 #define B_sincos_q(F) F(bt_ang_q[i & (BT_NANG - 1u)], &bt_sq, &bt_cq)
-#define B_mul_affine(F) F(&bt_out, &bt_A[BT_IA(i)], &bt_B[BT_IB(i)])
-#define B_mul(F) F(&bt_out, &bt_A[BT_IA(i)], &bt_B[BT_IB(i)])
-#define B_inv_rigid(F) F(&bt_out, &bt_A[BT_IA(i)])
-#define B_inv(F) bt_status |= (uint32_t)F(&bt_out, &bt_A[BT_IA(i)])
+#define B_mul_affine(F) F(&bt_A[BT_IA(i)], &bt_B[BT_IB(i)], &bt_out)
+#define B_mul(F) F(&bt_A[BT_IA(i)], &bt_B[BT_IB(i)], &bt_out)
+#define B_inv_rigid(F) F(&bt_A[BT_IA(i)], &bt_out)
+#define B_inv(F) bt_status |= (uint32_t)F(&bt_A[BT_IA(i)], &bt_out)
 #define B_apply_point(F) F(&bt_A[BT_IA(i)], &bt_pts[BT_IB(i)], &bt_vout)
-#define B_rotx(F) bt_status |= (uint32_t)F(&bt_out, bt_ang_f[i & (BT_NANG - 1u)])
+#define B_rotx(F) bt_status |= (uint32_t)F(bt_ang_f[i & (BT_NANG - 1u)], &bt_out)
 #define B_rot_axis(F)                                                                      \
-    bt_status |= (uint32_t)F(&bt_out, bt_pts[BT_IA(i)].x, bt_pts[BT_IA(i)].y, bt_pts[BT_IA(i)].z, \
-                             bt_ang_f[i & (BT_NANG - 1u)])
-#define B_persp(F) bt_status |= (uint32_t)F(&bt_out, bt_axis[BT_IB(i)], bt_fl[BT_IA(i)])
+    bt_status |= (uint32_t)F(bt_pts[BT_IA(i)].x, bt_pts[BT_IA(i)].y, bt_pts[BT_IA(i)].z, \
+                             bt_ang_f[i & (BT_NANG - 1u)], &bt_out)
+#define B_persp(F) bt_status |= (uint32_t)F(bt_axis[BT_IB(i)], bt_fl[BT_IA(i)], &bt_out)
 #define B_apply_dir(F) F(&bt_A[BT_IA(i)], &bt_pts[BT_IB(i)], &bt_vout)
 #define B_apply_vec4(F) F(&bt_A[BT_IA(i)], &bt_p4[BT_IB(i)], &bt_v4out)
 #define B_apply_point_h(F) bt_status |= (uint32_t)F(&bt_A[BT_IA(i)], &bt_p4[BT_IB(i)], &bt_vout)
 #define B_plane_mul(F) F(&bt_pl[BT_IB(i)], &bt_A[BT_IA(i)], &bt_plout)
-#define B_frame_mul(F) bt_status |= (uint32_t)F(&bt_Fout, &bt_FA[BT_IA(i)], &bt_FB[BT_IB(i)])
-#define B_frame_inv(F) bt_status |= (uint32_t)F(&bt_Fout, &bt_FA[BT_IA(i)])
+#define B_frame_mul(F) bt_status |= (uint32_t)F(&bt_FA[BT_IA(i)], &bt_FB[BT_IB(i)], &bt_Fout)
+#define B_frame_inv(F) bt_status |= (uint32_t)F(&bt_FA[BT_IA(i)], &bt_Fout)
 #define B_frame_point(F) bt_status |= (uint32_t)F(&bt_FA[BT_IA(i)], &bt_ptq[BT_IB(i)], &bt_vq)
 #define B_fk_f32(F) bt_status |= (uint32_t)F(&bt_puma_m, bt_qf[BT_IA(i)], &bt_out)
 #define B_fk_q(F) bt_status |= (uint32_t)F(&bt_puma_mm, bt_qq[BT_IA(i)], &bt_Fout)
