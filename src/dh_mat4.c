@@ -362,7 +362,7 @@ DH_INLINE void dh_mul_unrolled(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_ma
  * 0 0 0 1; the bottom rows of A and B are not used. Built in a temporary,
  * so out may alias A and/or B.
  */
-DH_SPEED_INLINE void dh_mul(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat4_f32 *B, int aff)
+DH_SPEED_INLINE void dh_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int aff)
 {
     dh_mat4_f32 t;
     int i;
@@ -384,12 +384,12 @@ DH_SPEED_INLINE void dh_mul(dh_mat4_f32 *out, const dh_mat4_f32 *A, const dh_mat
 
 void dh_mat4_mul_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out)
 {
-    dh_mul(out, A, B, 0);
+    dh_mul(A, B, out, 0);
 }
 
 void dh_mat4_mul_affine_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out)
 {
-    dh_mul(out, A, B, 1);
+    dh_mul(A, B, out, 1);
 }
 
 void dh_mat4_premul_f32(dh_mat4_f32 *T, const dh_mat4_f32 *X)
