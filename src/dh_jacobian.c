@@ -159,14 +159,14 @@ static DH_NOINLINE dh_status jac_check(const dh_robot *r, const float *q)
     if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_UNAVAILABLE;
     if (r->conv != DH_CONV_STANDARD && r->conv != DH_CONV_MODIFIED) return DH_ERR_ARG;
     for (i = 0; i < n; i++) {
-        if (!dh_isfinite_f32(q[i])) return DH_ERR_NAN;
+        if (!dh_allfinite_f32(&q[i], 1u)) return DH_ERR_NAN;
         if (r->joint[i].type != DH_JOINT_REVOLUTE && r->joint[i].type != DH_JOINT_PRISMATIC)
             return DH_ERR_ARG;
     }
     for (i = 0; i < n; i++) {
         const dh_joint *j = &r->joint[i];
-        if (!dh_isfinite_f32(q[i] + ((j->type == DH_JOINT_REVOLUTE) ? j->theta_deg : j->d)))
-            return DH_ERR_OVERFLOW;
+        float v = q[i] + ((j->type == DH_JOINT_REVOLUTE) ? j->theta_deg : j->d);
+        if (!dh_allfinite_f32(&v, 1u)) return DH_ERR_OVERFLOW;
     }
     return DH_OK;
 }
