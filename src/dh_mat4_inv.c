@@ -304,7 +304,7 @@ static DH_NOINLINE DH_COLD float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_
 
 /* The general path (see the top of the file) into the scratch X (must not
  * alias T; undefined on error). */
-static DH_NOINLINE DH_COLD dh_status dh_inv_certified(dh_mat4_f32 *X, const dh_mat4_f32 *T)
+static DH_NOINLINE DH_COLD dh_status dh_inv_certified(const dh_mat4_f32 *T, dh_mat4_f32 *X)
 {
     const int aff = dh_is_affine(T);
     const float s = dh_scan(T, aff, X), sg = X->m[0][0];
@@ -494,7 +494,7 @@ DH_INLINE dh_status dh_inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
         if (dh_inv_proj(X, T)) return DH_OK;
     }
 #endif
-    return dh_inv_certified(X, T);
+    return dh_inv_certified(T, X);
 }
 
 /* The public general inverse (out untouched on error, out may alias T),
