@@ -289,10 +289,12 @@ static DH_NOINLINE DH_COLD float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_
         memcpy(&s, &b, sizeof s);
     }
     if (!aff && (cp != 0.0f || rq > 0.0f)) {
-        if (pn == 0.0f) {
-            if (m3 > 0.0f) sg = m3 / rq * DH_U24;           /* p exactly 0 */
-        } else if (cp == 0.0f) {                             /* subnormal p: cp underflowed */
-            if (rq > 0.0f) sg = dh_sqrtf_(pn) / (2.0f * dh_sqrtf_(rq));
+        if (cp == 0.0f) {
+            if (pn == 0.0f) {
+                if (m3 > 0.0f) sg = m3 / rq * DH_U24;       /* p exactly 0 */
+            } else if (rq > 0.0f) {                          /* subnormal p: cp underflowed */
+                sg = dh_sqrtf_(pn) / (2.0f * dh_sqrtf_(rq));
+            }
         } else if (rq > 0.0f) sg = dh_sqrtf_(cp) / dh_sqrtf_(rq);
         else if (m3 > 0.0f) sg = cp / m3 * 16777216.0f;
         if (sg > 1.15292150e18f) sg = 1.15292150e18f;       /* 2^60 */
