@@ -292,8 +292,8 @@ static DH_NOINLINE DH_COLD float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_
         if (cp == 0.0f) {
             if (pn == 0.0f) {
                 if (m3 > 0.0f) sg = m3 / rq * DH_U24;       /* p exactly 0 */
-            } else if (rq > 0.0f) {                          /* subnormal p: cp underflowed */
-                sg = dh_sqrtf_(pn) / (2.0f * dh_sqrtf_(rq));
+            } else {                                         /* subnormal p: cp underflowed */
+                if (rq > 0.0f) sg = dh_sqrtf_(pn) / (2.0f * dh_sqrtf_(rq));
             }
         } else if (rq > 0.0f) sg = dh_sqrtf_(cp) / dh_sqrtf_(rq);
         else if (m3 > 0.0f) sg = cp / m3 * 16777216.0f;
