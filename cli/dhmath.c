@@ -310,6 +310,17 @@ static int cmd_axis(int argc, char **argv)
     return finish();
 }
 
+/* Prints a, b, c, d on one line and finishes; the message when one is not finite. */
+static int put_four(float a, float b, float c, float d, const char *not_finite)
+{
+    if (!isfinite(a) || !isfinite(b) || !isfinite(c) || !isfinite(d)) return error_msg(not_finite, NULL);
+    put_num(a, 0);
+    put_num(b, 0);
+    put_num(c, 0);
+    put_num(d, 1);
+    return finish();
+}
+
 static int cmd_point(int argc, char **argv)
 {
     opts o;
@@ -328,13 +339,7 @@ static int cmd_point(int argc, char **argv)
     u.z = (float)x[2];
     u.w = (float)x[3];
     dh_mat4_apply_vec4_f32(&T, &u, &v);
-    if (!isfinite(v.x) || !isfinite(v.y) || !isfinite(v.z) || !isfinite(v.w))
-        return error_msg("point: result is not finite (float overflow)", NULL);
-    put_num(v.x, 0);
-    put_num(v.y, 0);
-    put_num(v.z, 0);
-    put_num(v.w, 1);
-    return finish();
+    return put_four(v.x, v.y, v.z, v.w, "point: result is not finite (float overflow)");
 }
 
 static int cmd_plane(int argc, char **argv)
@@ -359,13 +364,7 @@ static int cmd_plane(int argc, char **argv)
     if (st == DH_ERR_SINGULAR)
         return error_msg("plane: EXPR is singular (a plane transforms with the inverse)", NULL);
     if (st != DH_OK) return error_msg("plane", dh_status_str(st));
-    if (!isfinite(Q.a) || !isfinite(Q.b) || !isfinite(Q.c) || !isfinite(Q.d))
-        return error_msg("plane: result is not finite (float overflow)", NULL);
-    put_num(Q.a, 0);
-    put_num(Q.b, 0);
-    put_num(Q.c, 0);
-    put_num(Q.d, 1);
-    return finish();
+    return put_four(Q.a, Q.b, Q.c, Q.d, "plane: result is not finite (float overflow)");
 }
 
 static void warn_limits(const dh_robot *r, const float *q)
