@@ -493,9 +493,10 @@ static int cmd_fk(int argc, char **argv)
         if (st == DH_ERR_UNAVAILABLE)
             return error_msg("fk --fixed: a constant of the robot does not fit the fixed-point formats", NULL);
         if (st == DH_ERR_OVERFLOW) {
-            fprintf(stderr, "dhmath: error: overflow: fk --fixed: an entry of a frame of the chain saturates (positions "
-                    "must lie in the fixed-point length format Q%d.%d, |x| < %ld length units; rotation entries in "
-                    "Q2.30); fk without --fixed computes it in float\n", 32 - DH_QPOS_FRAC, DH_QPOS_FRAC, 1L << (31 - DH_QPOS_FRAC));
+            fprintf(stderr, "dhmath: error: overflow: fk --fixed: an entry of a frame of the chain saturates "
+                    "(positions must lie in the fixed-point length format Q%d.%d, |x| < %ld length units; rotation "
+                    "entries in Q2.30); fk without --fixed computes it in float\n", 32 - DH_QPOS_FRAC, DH_QPOS_FRAC,
+                    1L << (31 - DH_QPOS_FRAC));
             return EXIT_ERR;
         }
         if (st != DH_OK) return error_msg("fk --fixed", dh_status_str(st));
