@@ -147,3 +147,123 @@ dh_status dh_robot_check_limits_f32(const dh_robot *r, const float *q)
     }
     return DH_OK;
 }
+
+/* ---- dh_robot_check -------------------------------------------------------
+ * The setters leave every description in a state that the primary fields
+ * (conv, n, type, a, d, alpha_deg, theta_deg, the limits, base, tool, the
+ * fixed parameters and frames) determine up to the setter history recorded
+ * in the reason bits. The check recomputes each derived field with the
+ * setters' own code (dh_sincos_f32, dh_sincos_q, dh_f32_to_fix, the
+ * identity and small-rows tests) and compares bit for bit:
+ *   joint: sa, ca = dh_sincos_f32(alpha_deg); sa_q, ca_q =
+ *     dh_sincos_q(alpha_q); the float parameters finite; and one of: the
+ *     fixed parameters are the float ones converted (added with _f32); the
+ *     float ones do not fit and the fixed ones are 0 (_f32, then
+ *     DH_ROBOT_Q_NO_JOINT is set); the float ones are +0 (added with _q,
+ *     then DH_ROBOT_F32_NO_JOINT is set). Each of those two bits is set
+ *     only when a joint of its kind exists. Limits are independent fields
+ *     (dh_robot_set_limits_q sets the fixed ones alone): only finiteness.
+ *   base and tool: see check_frame.
+ *   flags: no unknown bit, the summary bits as dh_robot_flags_ makes them. */
+
+static uint32_t f32_bits(float x)
+{
+    uint32_t u;
+    memcpy(&u, &x, sizeof u);
+    return u;
+}
+
+/* 0 when the float and fixed base (which 0) or tool (1) and their bits are
+ * a state that set_frame_f32 and dh_robot_frame_q_ leave: the float frame
+ * finite with bottom row 0 0 0 1 and its identity bit right; the fixed
+ * frame's identity bit (and for the base its small-rows bit) right; and
+ * either the fixed frame is the float one converted (no reason bit), or
+ * the float one does not fit (Q_NO, last set with _f32), or the fixed one
+ * was set alone (F32_NO, not both frames the identity). */
+static DH_NOINLINE unsigned check_frame(const dh_robot *r, unsigned which)
+{
+    const dh_mat4_f32 *M = (which != 0u) ? &r->tool : &r->base;
+    const dh_frame_q *G = (which != 0u) ? &r->tool_q : &r->base_q;
+    const uint32_t f = r->flags >> which;
+    dh_frame_q F;
+    int32_t spare;
+    unsigned e;
+    unsigned st = 0u, bad = 0u; /* as in set_frame_f32 */
+    uint32_t diff = 0u, idq = 0u; /* F vs G, G vs the identity */
+    for (e = 0u; e < 16u; e++) {
+        const unsigned c = e >> 2, k = e & 3u;
+        const float x = M->m[c][k];
+        int32_t *const col = (c < 3u) ? F.r[c] : F.p;
+        st |= dh_f32_to_fix(x, (c < 3u) ? 30u : (unsigned)DH_QPOS_FRAC, (k == 3u) ? &spare : &col[k]);
+        if (x != ((c == k) ? 1.0f : 0.0f)) bad |= (k == 3u) ? 2u : 1u;
+    }
+    if ((st & 2u) != 0u || (bad & 2u) != 0u) return 1u;
+    for (e = 0u; e < 12u; e++) {
+        const unsigned c = e / 3u, k = e % 3u;
+        const int32_t g = (c < 3u) ? G->r[c][k] : G->p[k];
+        if (st == 0u) diff |= (uint32_t)g ^ (uint32_t)((c < 3u) ? F.r[c][k] : F.p[k]);
+        idq |= (uint32_t)g ^ ((c == k) ? (uint32_t)DH_Q30_ONE : 0u);
+    }
+    if (((f & DH_ROBOT_BASE_ID_F32) != 0u) != (bad == 0u)) return 1u;
+    if (((f & DH_ROBOT_BASE_ID_Q) != 0u) != (idq == 0u)) return 1u;
+    if (which == 0u && ((f & DH_ROBOT_BASE_SMALL_Q) != 0u) != (dh_robot_rows_small_q_(G) != 0)) return 1u;
+    if ((f & DH_ROBOT_Q_NO_BASE) != 0u) return ((f & DH_ROBOT_F32_NO_BASE) != 0u || st == 0u) ? 1u : 0u;
+    if ((f & DH_ROBOT_F32_NO_BASE) != 0u) return (idq == 0u && bad == 0u) ? 1u : 0u;
+    return (st != 0u || diff != 0u) ? 1u : 0u;
+}
+
+dh_status dh_robot_check(const dh_robot *r)
+{
+    const uint32_t known = DH_ROBOT_HAS_F32 | DH_ROBOT_HAS_Q | DH_ROBOT_F32_NO_JOINT |
+                           DH_ROBOT_F32_NO_BASE | DH_ROBOT_F32_NO_TOOL | DH_ROBOT_Q_NO_JOINT |
+                           DH_ROBOT_Q_NO_BASE | DH_ROBOT_Q_NO_TOOL | DH_ROBOT_BASE_ID_F32 |
+                           DH_ROBOT_TOOL_ID_F32 | DH_ROBOT_BASE_ID_Q | DH_ROBOT_TOOL_ID_Q |
+                           DH_ROBOT_BASE_SMALL_Q;
+    const uint32_t jbits = DH_ROBOT_F32_NO_JOINT | DH_ROBOT_Q_NO_JOINT;
+    uint32_t i, need = 0u, allow = 0u; /* joint reason bits the joints call for / allow */
+    unsigned bad = 0u;
+    DH_ASSERT(r != NULL);
+    if (r->conv != DH_CONV_STANDARD && r->conv != DH_CONV_MODIFIED) return DH_ERR_ARG;
+    if (r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    for (i = 0u; i < r->n; i++)
+        if (r->joint[i].type != DH_JOINT_REVOLUTE && r->joint[i].type != DH_JOINT_PRISMATIC) return DH_ERR_ARG;
+    for (i = 0u; i < r->n; i++) {
+        const dh_joint *j = &r->joint[i];
+        float sa, ca;
+        dh_q30 sq, cq;
+        int32_t x[4], y[4];
+        uint32_t zf = 0u, zq = 0u, dq = 0u;
+        unsigned st = 0u;
+        int k;
+        const float v[4] = { j->a, j->d, j->alpha_deg, j->theta_deg };
+        y[0] = j->a_q;
+        y[1] = j->d_q;
+        y[2] = j->alpha_q;
+        y[3] = j->theta_q;
+        for (k = 0; k < 4; k++) {
+            st |= dh_f32_to_fix(v[k], (k < 2) ? (unsigned)DH_QPOS_FRAC : 16u, &x[k]);
+            zf |= f32_bits(v[k]);
+            zq |= (uint32_t)y[k];
+        }
+        if ((st & 2u) != 0u || !dh_isfinite_f32(j->qmin) || !dh_isfinite_f32(j->qmax)) return DH_ERR_INCONSISTENT;
+        for (k = 0; k < 4 && st == 0u; k++) dq |= (uint32_t)x[k] ^ (uint32_t)y[k];
+        (void)dh_sincos_f32(j->alpha_deg, &sa, &ca);
+        dh_sincos_q(j->alpha_q, &sq, &cq);
+        if (f32_bits(sa) != f32_bits(j->sa) || f32_bits(ca) != f32_bits(j->ca) || sq != j->sa_q ||
+            cq != j->ca_q)
+            bad = 1u;
+        if (zf == 0u) allow |= DH_ROBOT_F32_NO_JOINT;
+        if (st == 0u && dq == 0u) continue;
+        if (st != 0u && zq == 0u) need |= DH_ROBOT_Q_NO_JOINT;
+        else if (zf == 0u) need |= DH_ROBOT_F32_NO_JOINT;
+        else bad = 1u;
+    }
+    /* each joint bit set when required, and only when allowed; no unknown
+     * bit; the summary bits as the setters compute them */
+    allow |= need;
+    if ((r->flags & jbits & ~allow) != 0u || (need & ~r->flags) != 0u ||
+        (r->flags & ~known) != 0u || dh_robot_summary_(r->flags) != r->flags)
+        bad = 1u;
+    bad |= check_frame(r, 0u) | check_frame(r, 1u);
+    return (bad != 0u) ? DH_ERR_INCONSISTENT : DH_OK;
+}

@@ -9,6 +9,10 @@
  * (DH_ROBOT_BASE_SMALL_Q, the test of the fixed FK fast path). */
 int dh_robot_rows_small_q_(const dh_frame_q *F);
 
+/* flags with the summary bits DH_ROBOT_HAS_F32 / DH_ROBOT_HAS_Q
+ * recomputed from the reason bits. */
+uint32_t dh_robot_summary_(uint32_t flags);
+
 /* r->flags = ((r->flags & ~clear) | set) with the summary bits
  * DH_ROBOT_HAS_F32 / DH_ROBOT_HAS_Q recomputed from the reason bits. */
 void dh_robot_flags_(dh_robot *r, uint32_t clear, uint32_t set);
