@@ -166,13 +166,6 @@ dh_status dh_robot_check_limits_f32(const dh_robot *r, const float *q)
  *   base and tool: see check_frame.
  *   flags: no unknown bit, the summary bits as dh_robot_flags_ makes them. */
 
-static uint32_t f32_bits(float x)
-{
-    uint32_t u;
-    memcpy(&u, &x, sizeof u);
-    return u;
-}
-
 /* 0 when the float and fixed base (which 0) or tool (1) and their bits are
  * a state that set_frame_f32 and dh_robot_frame_q_ leave: the float frame
  * finite with bottom row 0 0 0 1 and its identity bit right; the fixed
@@ -201,7 +194,8 @@ static DH_NOINLINE unsigned check_frame(const dh_robot *r, unsigned which)
     for (e = 0u; e < 12u; e++) {
         const unsigned c = e / 3u, k = e % 3u;
         const int32_t g = (c < 3u) ? G->r[c][k] : G->p[k];
-        if (st == 0u) diff |= (uint32_t)g ^ (uint32_t)((c < 3u) ? F.r[c][k] : F.p[k]);
+        const int32_t fv = (st != 0u) ? g : ((c < 3u) ? F.r[c][k] : F.p[k]); /* F only where stored */
+        diff |= (uint32_t)g ^ (uint32_t)fv;
         idq |= (uint32_t)g ^ ((c == k) ? (uint32_t)DH_Q30_ONE : 0u);
     }
     if (((f & DH_ROBOT_BASE_ID_F32) != 0u) != (bad == 0u)) return 1u;
@@ -231,7 +225,7 @@ dh_status dh_robot_check(const dh_robot *r)
         const dh_joint *j = &r->joint[i];
         float sa, ca;
         dh_q30 sq, cq;
-        int32_t x[4], y[4];
+        int32_t x[4] = { 0, 0, 0, 0 }, y[4];
         uint32_t zf = 0u, zq = 0u, dq = 0u;
         unsigned st = 0u;
         int k;
@@ -242,14 +236,14 @@ dh_status dh_robot_check(const dh_robot *r)
         y[3] = j->theta_q;
         for (k = 0; k < 4; k++) {
             st |= dh_f32_to_fix(v[k], (k < 2) ? (unsigned)DH_QPOS_FRAC : 16u, &x[k]);
-            zf |= f32_bits(v[k]);
+            zf |= dh_f32_bits(v[k]);
             zq |= (uint32_t)y[k];
         }
         if ((st & 2u) != 0u || !dh_isfinite_f32(j->qmin) || !dh_isfinite_f32(j->qmax)) return DH_ERR_INCONSISTENT;
-        for (k = 0; k < 4 && st == 0u; k++) dq |= (uint32_t)x[k] ^ (uint32_t)y[k];
+        for (k = 0; k < 4; k++) dq |= (uint32_t)x[k] ^ (uint32_t)y[k]; /* used only when st == 0 */
         (void)dh_sincos_f32(j->alpha_deg, &sa, &ca);
         dh_sincos_q(j->alpha_q, &sq, &cq);
-        if (f32_bits(sa) != f32_bits(j->sa) || f32_bits(ca) != f32_bits(j->ca) || sq != j->sa_q ||
+        if (dh_f32_bits(sa) != dh_f32_bits(j->sa) || dh_f32_bits(ca) != dh_f32_bits(j->ca) || sq != j->sa_q ||
             cq != j->ca_q)
             bad = 1u;
         if (zf == 0u) allow |= DH_ROBOT_F32_NO_JOINT;
