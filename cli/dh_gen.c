@@ -50,41 +50,22 @@ static void put_i(FILE *out, int32_t v)
     else fprintf(out, "%ld", (long)v);
 }
 
-/* nl: the line break, " \\\n" inside a macro */
+/* nl: the line break, " \\\n" inside a macro; four members per line */
 static void put_joint(FILE *out, const dh_joint *j, const char *nl)
 {
-    fprintf(out, "{ .type = %s,%s          .a = ", j->type == DH_JOINT_PRISMATIC ? "DH_JOINT_PRISMATIC" : "DH_JOINT_REVOLUTE", nl);
-    put_f(out, j->a);
-    fputs(", .d = ", out);
-    put_f(out, j->d);
-    fputs(", .alpha_deg = ", out);
-    put_f(out, j->alpha_deg);
-    fputs(", .theta_deg = ", out);
-    put_f(out, j->theta_deg);
-    fprintf(out, ",%s          .qmin = ", nl);
-    put_f(out, j->qmin);
-    fputs(", .qmax = ", out);
-    put_f(out, j->qmax);
-    fputs(", .sa = ", out);
-    put_f(out, j->sa);
-    fputs(", .ca = ", out);
-    put_f(out, j->ca);
-    fprintf(out, ",%s          .a_q = ", nl);
-    put_i(out, j->a_q);
-    fputs(", .d_q = ", out);
-    put_i(out, j->d_q);
-    fputs(", .alpha_q = ", out);
-    put_i(out, j->alpha_q);
-    fputs(", .theta_q = ", out);
-    put_i(out, j->theta_q);
-    fprintf(out, ",%s          .sa_q = ", nl);
-    put_i(out, j->sa_q);
-    fputs(", .ca_q = ", out);
-    put_i(out, j->ca_q);
-    fputs(", .qmin_q = ", out);
-    put_i(out, j->qmin_q);
-    fputs(", .qmax_q = ", out);
-    put_i(out, j->qmax_q);
+    static const char *const fname[8] = { "a", "d", "alpha_deg", "theta_deg", "qmin", "qmax", "sa", "ca" };
+    static const char *const iname[8] = { "a_q", "d_q", "alpha_q", "theta_q", "sa_q", "ca_q", "qmin_q", "qmax_q" };
+    const float fv[8] = { j->a, j->d, j->alpha_deg, j->theta_deg, j->qmin, j->qmax, j->sa, j->ca };
+    const int32_t iv[8] = { j->a_q, j->d_q, j->alpha_q, j->theta_q, j->sa_q, j->ca_q, j->qmin_q, j->qmax_q };
+    unsigned k;
+    fprintf(out, "{ .type = %s,", j->type == DH_JOINT_PRISMATIC ? "DH_JOINT_PRISMATIC" : "DH_JOINT_REVOLUTE");
+    for (k = 0; k < 16u; k++) {
+        fprintf(out, (k % 4u == 0u) ? "%s          .%s = " : ", .%s%s = ", (k % 4u == 0u) ? nl : "",
+                (k < 8u) ? fname[k] : iname[k - 8u]);
+        if (k < 8u) put_f(out, fv[k]);
+        else put_i(out, iv[k - 8u]);
+        if (k % 4u == 3u && k < 15u) fputc(',', out);
+    }
     fputs(" }", out);
 }
 

@@ -11,7 +11,12 @@ function(expect_error)
   endif()
   message(STATUS "gen ${ARGN}: ${_err}")
 endfunction()
-foreach(_name "" "9lives" "a-b" "x y" "int" "_Bool" "__x" "_Robot" "r\$"
+# an empty NAME (an empty list element would vanish from ${ARGN})
+execute_process(COMMAND ${EXE} gen ${ROBOT} "" OUTPUT_VARIABLE _out ERROR_VARIABLE _err RESULT_VARIABLE _rc)
+if(NOT _rc EQUAL 2 OR NOT _out STREQUAL "" OR NOT _err MATCHES "it is empty")
+  message(FATAL_ERROR "dhmath gen ROBOT '': exit ${_rc}, stderr '${_err}'")
+endif()
+foreach(_name "9lives" "a-b" "x y" "int" "_Bool" "__x" "_Robot" "r\$"
               "a123456789012345678901234567890123456789012345678901234567890123")
   expect_error(${ROBOT} "${_name}")
 endforeach()
