@@ -190,10 +190,10 @@ static DH_NOINLINE unsigned check_frame(const dh_robot *r, unsigned which)
     const dh_mat4_f32 *M = (which != 0u) ? &r->tool : &r->base;
     const dh_frame_q *G = (which != 0u) ? &r->tool_q : &r->base_q;
     const uint32_t f = r->flags >> which;
-    dh_frame_q F;
+    dh_frame_q F = { { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } }, { 0, 0, 0 } };
     unsigned e, bad;
     const unsigned st = frame_to_fix(M, &F, &bad); /* as in set_frame_f32 */
-    uint32_t diff = 0u, idq = 0u; /* F vs G, G vs the identity */
+    uint32_t diff = 0u, idq = 0u, mask, want; /* F vs G, G vs the identity */
     if ((st & 2u) != 0u || (bad & 2u) != 0u) return 1u;
     for (e = 0u; e < 12u; e++) {
         const unsigned c = e / 3u, k = e % 3u;
@@ -202,9 +202,16 @@ static DH_NOINLINE unsigned check_frame(const dh_robot *r, unsigned which)
         diff |= (uint32_t)g ^ (uint32_t)fv;
         idq |= (uint32_t)g ^ ((c == k) ? (uint32_t)DH_Q30_ONE : 0u);
     }
-    if (((f & DH_ROBOT_BASE_ID_F32) != 0u) != (bad == 0u)) return 1u;
-    if (((f & DH_ROBOT_BASE_ID_Q) != 0u) != (idq == 0u)) return 1u;
-    if (which == 0u && ((f & DH_ROBOT_BASE_SMALL_Q) != 0u) != (dh_robot_rows_small_q_(G) != 0)) return 1u;
+    /* the identity and small-rows bits as the setters set them */
+    mask = DH_ROBOT_BASE_ID_F32 | DH_ROBOT_BASE_ID_Q;
+    want = 0u;
+    if (bad == 0u) want |= DH_ROBOT_BASE_ID_F32;
+    if (idq == 0u) want |= DH_ROBOT_BASE_ID_Q;
+    if (which == 0u) {
+        mask |= DH_ROBOT_BASE_SMALL_Q;
+        if (dh_robot_rows_small_q_(G) != 0) want |= DH_ROBOT_BASE_SMALL_Q;
+    }
+    if ((f & mask) != want) return 1u;
     if ((f & DH_ROBOT_Q_NO_BASE) != 0u) return ((f & DH_ROBOT_F32_NO_BASE) != 0u || st == 0u) ? 1u : 0u;
     if ((f & DH_ROBOT_F32_NO_BASE) != 0u) return (idq == 0u && bad == 0u) ? 1u : 0u;
     return (st != 0u || diff != 0u) ? 1u : 0u;
