@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "dh_expr.h"
+#include "dh_gen.h"
 #include "dh_robotfile.h"
 #include "dhmath/dh_fixed.h"
 #include "dhmath/dh_kin.h"
@@ -48,6 +49,7 @@ static const char k_usage[] =
     "                                  scipy Rotation: XYZ intrinsic (Rot(x,a) Rot(y,b)\n"
     "                                  Rot(z,c)), xyz extrinsic; 24 sequences\n"
     "  quat EXPR                       unit quaternion of EXPR's rotation: w x y z (w >= 0)\n"
+    "  gen ROBOT NAME                  C source defining const dh_robot NAME (flash)\n"
     "  help                            this text\n"
     "  --version                       program and library version\n"
     "\n"
@@ -762,6 +764,25 @@ static int cmd_quat(int argc, char **argv)
     return finish();
 }
 
+static int cmd_gen(int argc, char **argv)
+{
+    opts o;
+    dh_robot r;
+    dh_robotfile rf;
+    const char *why;
+    int rc = parse_opts(argc, argv, &o, "");
+    if (rc) return rc;
+    if (o.npos != 2) return usage_error("gen takes ROBOTFILE NAME, e.g. dhmath gen puma560.dh puma560", NULL);
+    if ((why = dh_gen_name_problem(o.pos[1])) != NULL) {
+        fprintf(stderr, "dhmath: error: gen: NAME '%.80s' is not a usable C identifier: %s\n", o.pos[1], why);
+        return EXIT_ERR;
+    }
+    if ((rc = load_robot(o.pos[0], 0, &r, &rf)) != 0) return rc;
+    if (dh_robot_check(&r) != DH_OK) return error_msg("gen: the built robot fails dh_robot_check", NULL);
+    dh_gen_write(stdout, &r, o.pos[1], o.pos[0]);
+    return finish();
+}
+
 int main(int argc, char **argv)
 {
     const char *cmd;
@@ -788,5 +809,6 @@ int main(int argc, char **argv)
     if (strcmp(cmd, "ik") == 0) return cmd_ik(argc, argv);
     if (strcmp(cmd, "euler") == 0) return cmd_euler(argc, argv);
     if (strcmp(cmd, "quat") == 0) return cmd_quat(argc, argv);
+    if (strcmp(cmd, "gen") == 0) return cmd_gen(argc, argv);
     return usage_error("unknown command '%s'", cmd);
 }
