@@ -4,7 +4,7 @@
 #   tools/check.sh host asan  only the named stages
 # Stages: host (Release build, cmocka suite + CLI tests), asan (ASan+UBSan),
 # target suites under QEMU (M0+, M4F, M7; M0+ and M4F again with DH_SMALL at
-# -Os), riscv32 compile check, guards
+# -Os; RV32IMAC and RV32IMAFC with picolibc), firmware examples, guards
 # (no .data/.bss, no heap/printf, fixed path free of float/64-bit division,
 # stack <= 256 B), config variants, coverage >= 95 % lines / 90 % branches,
 # cppcheck (MISRA addon) + clang-tidy, public contracts (tools/check_contracts.py:
@@ -14,7 +14,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
 JOBS=${JOBS:-$(nproc)}
-STAGES=${*:-"host asan m0 m4f m7 small riscv32 guards variants coverage static contracts fuzz apidoc"}
+STAGES=${*:-"host asan m0 m4f m7 small rv32imac rv32imafc examples guards variants coverage static contracts fuzz apidoc"}
 failed=""
 
 run_stage() {
@@ -52,7 +52,8 @@ for s in $STAGES; do
     m4f) [ -f port/cortex-m4f.cmake ] && run_stage m4f target_suite build/m4f cortex-m4f.cmake ;;
     m7) [ -f port/cortex-m7.cmake ] && run_stage m7 target_suite build/m7 cortex-m7.cmake ;;
     small) run_stage small small_suite ;;
-    riscv32) [ -f port/riscv32.cmake ] && run_stage riscv32 bash -c "cmake -S '$ROOT' -B build/rv32 -DCMAKE_TOOLCHAIN_FILE='$ROOT/port/riscv32.cmake' -DDH_BUILD_TESTS=OFF >/dev/null && cmake --build build/rv32 -j$JOBS" ;;
+    rv32imac) run_stage rv32imac target_suite build/rv32imac riscv32-imac.cmake ;;
+    rv32imafc) run_stage rv32imafc target_suite build/rv32imafc riscv32-imafc.cmake ;;
     guards) [ -x tools/check_guards.sh ] && run_stage guards tools/check_guards.sh ;;
     variants) [ -x tools/check_variants.sh ] && run_stage variants tools/check_variants.sh ;;
     coverage) [ -x tools/coverage.sh ] && run_stage coverage tools/coverage.sh build/coverage ;;
