@@ -44,6 +44,23 @@ small_suite() {
   target_suite build/m0-small cortex-m0plus.cmake -DDH_SMALL=ON -DCMAKE_BUILD_TYPE=MinSizeRel
 }
 
+# The examples: the host ones (README's C example, the C++ example) and the
+# firmware ones (examples/firmware/) on the M0+ and the M4F under QEMU, each
+# output checked against an independent reference. The target suites run
+# the firmware examples as well; this stage builds only the examples.
+examples_suite() {
+  local b tc
+  cmake -S "$ROOT" -B build/host -DCMAKE_BUILD_TYPE=Release >/dev/null &&
+  cmake --build build/host -j"$JOBS" --target readme_example cpp_example >/dev/null &&
+  ctest --test-dir build/host --output-on-failure -R '^(readme_example|readme_example_in_sync|cpp_example)$' || return 1
+  for b in m0:cortex-m0plus.cmake m4f:cortex-m4f.cmake; do
+    tc=${b#*:}; b=build/${b%%:*}
+    cmake -S "$ROOT" -B "$b" -DCMAKE_TOOLCHAIN_FILE="$ROOT/port/$tc" -DCMAKE_BUILD_TYPE=Release >/dev/null &&
+    cmake --build "$b" -j"$JOBS" --target fw_fixed_fk fw_float_ik >/dev/null &&
+    ctest --test-dir "$b" --output-on-failure -R '^example_' || return 1
+  done
+}
+
 for s in $STAGES; do
   case $s in
     host) run_stage host host_suite build/host ;;
@@ -52,6 +69,7 @@ for s in $STAGES; do
     m4f) [ -f port/cortex-m4f.cmake ] && run_stage m4f target_suite build/m4f cortex-m4f.cmake ;;
     m7) [ -f port/cortex-m7.cmake ] && run_stage m7 target_suite build/m7 cortex-m7.cmake ;;
     small) run_stage small small_suite ;;
+    examples) run_stage examples examples_suite ;;
     rv32imac) run_stage rv32imac target_suite build/rv32imac riscv32-imac.cmake ;;
     rv32imafc) run_stage rv32imafc target_suite build/rv32imafc riscv32-imafc.cmake ;;
     guards) [ -x tools/check_guards.sh ] && run_stage guards tools/check_guards.sh ;;

@@ -115,9 +115,10 @@ def check_fixed(rows, lines, frac, c):
             continue
         q = [float(v) for v in vals]
         T = fk(rows, q)
-        pk, pv = lines[i + 1]
-        rk, rv = lines[i + 2]
+        (pk, pv), (rk, rv) = (lines[i + 1:i + 3] + [('', []), ('', [])])[:2]
         c.true('lines after q_deg %s are p_qpos and r_q30' % vals, pk == 'p_qpos' and rk == 'r_q30')
+        if pk != 'p_qpos' or rk != 'r_q30':
+            continue
         p = [int(v) / one_pos for v in pv]
         r = [int(v) / one_rot for v in rv]
         c.near('q %s position (mm)' % vals, p, T[:3, 3], FIXED_TOL_MM)
