@@ -5,12 +5,13 @@
  * when adding the rounding increment to the low word of a negative value
  * carries into the high word, it misses the carry (a signed comparison
  * where an unsigned one is needed), e.g. floor(-536870911.5) returns
- * -536870656. Upstream fixed it after that release (picolibc issue 480,
- * "Wrong result in floor"). The test suites round their double references
- * with floor(), and picolibc's own sin/cos argument reduction
- * (k_rem_pio2) calls it, so port/dh_target.cmake links this definition
- * into every RV32 test executable; the linker then takes no floor() from
- * libc.a. Not part of the library (which uses no libm).
+ * -536870656. picolibc fixed it after that release ("libm: Fix carry
+ * condition in floor/ceil", 2023; see docs/references.md). The test
+ * suites round their double references with floor(), and picolibc's own
+ * sin/cos argument reduction (k_rem_pio2) calls it, so port/dh_target.cmake
+ * links this definition into every RV32 test and example executable; the
+ * linker then takes no floor() from libc.a. Not part of the library
+ * (which uses no libm).
  */
 #include <math.h>
 
