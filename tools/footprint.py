@@ -127,12 +127,12 @@ ISSUE5_DEFAULT = "M4F -Os"
 CORE_HEADERS = ("dh_trig.h", "dh_mat4.h", "dh_fixed.h", "dh_robot.h")
 # The size-goal core, function by function: "trig, transforms, inverses, DH
 # FK, no IK", each in float and fixed point. Transforms: every constructor
-# of the seed's transforms (translation, rotation about x/y/z and about any
+# of Paul 1981's transforms (translation, rotation about x/y/z and about any
 # axis, scaling, perspective), composition, and application to points,
 # directions, homogeneous points and planes. Inverses: rigid, general, the
 # automatic choice, fixed-point rigid. DH FK: the robot description with
 # base and tool, link matrices, FK to the end and to every frame. Left out
-# (they are in (a)): angle-axis extraction (its own seed topic), validation
+# (they are in (a)): angle-axis extraction (a topic of its own), validation
 # and repair helpers (rotation/rigidity checks, re-orthonormalisation),
 # conversions between float and fixed frames, joint limits (used by IK).
 CORE_FUNCS = (
@@ -381,7 +381,7 @@ def profile_sections(data, labels):
              "Cortex-M4F at -Os, tables included**." % ISSUE5_LIMIT)
     S.append("")
     S.append("The core is profile (k) below, %d public functions: sine/cosine; every "
-             "seed transform's constructor (translation, rotation about x/y/z and any "
+             "constructor of Paul 1981's transforms (translation, rotation about x/y/z and any "
              "axis, scaling, perspective), composition, application to points, "
              "directions, homogeneous points and planes; the rigid, general and "
              "fixed-point inverses; the robot description with base and tool, link "
