@@ -28,33 +28,12 @@ set(CMAKE_AR riscv64-unknown-elf-ar CACHE FILEPATH "")
 set(CMAKE_RANLIB riscv64-unknown-elf-ranlib CACHE FILEPATH "")
 set(CMAKE_OBJCOPY riscv64-unknown-elf-objcopy CACHE FILEPATH "")
 set(CMAKE_SIZE riscv64-unknown-elf-size CACHE FILEPATH "")
-set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
-
-set(CMAKE_FIND_ROOT_PATH ${CMAKE_CURRENT_LIST_DIR}/no-sysroot)
-set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
-set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
-set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
-set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)
-set(DHMATH_LIBM m CACHE STRING "libm for the target: linked as -lm")
-
 # --specs=picolibc.specs on every compile too: it puts picolibc's headers
-# in front (the compiler has no C library of its own).
-set(_dh_rv_common "${_dh_arch_flags} -mcmodel=medany --specs=picolibc.specs")
-set(CMAKE_C_FLAGS_INIT "${_dh_rv_common} -std=c99 -ffunction-sections -fdata-sections")
-set(CMAKE_ASM_FLAGS_INIT "${_dh_rv_common}")
-# (the C flags carry --specs=picolibc.specs to the link as well; naming it
-# twice is an error)
-set(CMAKE_EXE_LINKER_FLAGS_INIT "-Wl,--gc-sections")
-# as in arm-none-eabi-common.cmake: keep the core flags when CMAKE_C_FLAGS
-# is given on the command line
-if(DEFINED CACHE{CMAKE_C_FLAGS} AND NOT CMAKE_C_FLAGS MATCHES "-march=")
-  set(CMAKE_C_FLAGS "${_dh_rv_common} -std=c99 -ffunction-sections -fdata-sections ${CMAKE_C_FLAGS}"
-      CACHE STRING "C flags (core flags added by the dhmath toolchain file)" FORCE)
-endif()
-
-if(NOT CMAKE_BUILD_TYPE)
-  set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type (default Release for targets)")
-endif()
+# in front (the compiler has no C library of its own). The C flags carry it
+# to the link as well (naming it twice is an error).
+set(_dh_core_flags "${_dh_arch_flags} -mcmodel=medany --specs=picolibc.specs")
+set(_dh_core_flag_re "-march=")
+include(${CMAKE_CURRENT_LIST_DIR}/dh_cross_common.cmake)
 
 set(DH_TARGET_CPU ${_dh_qemu_cpu} CACHE STRING "QEMU -cpu for target tests")
 set(DH_TARGET_BOARD qemu-virt-rv32 CACHE STRING "QEMU machine (virt) and linker script port/<board>.ld")

@@ -45,17 +45,10 @@ void _start(void);
 void dh_rv_cstart(void);
 void dh_rv_trap_entry(void);
 void dh_rv_trap_report(void);
-void _exit(int status);
 
 /* The CSR instructions are the Zicsr extension, which newer assemblers
  * want named; the library itself never uses them. */
 #define DH_RV_ZICSR ".option push\n\t.option arch, +zicsr\n\t"
-
-#define DH_SH_SYS_WRITE0 0x04
-#define DH_SH_SYS_EXIT 0x18
-#define DH_SH_SYS_EXIT_EXTENDED 0x20
-#define DH_SH_ADP_STOPPED_APPLICATION_EXIT 0x20026u
-#define DH_SH_ADP_STOPPED_RUNTIME_ERROR 0x20023u
 
 /* The semihosting trap: an ebreak between two hint instructions (slli x0 /
  * srai x0), uncompressed and within one 4-byte aligned block so that the
@@ -77,25 +70,8 @@ static uintptr_t dh_semihost(uintptr_t op, uintptr_t arg)
     return a0;
 }
 
-static void dh_sh_puts(const char *s)
-{
-    (void)dh_semihost(DH_SH_SYS_WRITE0, (uintptr_t)s);
-}
-
-/* Ends the emulation with `status` as QEMU's exit status. */
-void _exit(int status)
-{
-    uint32_t block[2];
-    block[0] = DH_SH_ADP_STOPPED_APPLICATION_EXIT;
-    block[1] = (uint32_t)status;
-    (void)dh_semihost(DH_SH_SYS_EXIT_EXTENDED, (uintptr_t)block);
-    /* only reached if SYS_EXIT_EXTENDED is not implemented */
-    (void)dh_semihost(DH_SH_SYS_EXIT,
-                      status == 0 ? DH_SH_ADP_STOPPED_APPLICATION_EXIT
-                                  : DH_SH_ADP_STOPPED_RUNTIME_ERROR);
-    for (;;) {
-    }
-}
+/* dh_sh_puts, dh_put_hex and _exit (main's status becomes QEMU's) */
+#include "dh_semihost.h"
 
 /* Entry point (first in flash: picolibc.ld puts .text.init.enter there and
  * QEMU's virt machine jumps to the ELF entry with -bios none). */
@@ -125,18 +101,6 @@ void dh_rv_cstart(void)
     _set_tls(__tls_base);
     __libc_init_array();
     exit(main());
-}
-
-static void dh_put_hex(char *out, uint32_t v)
-{
-    int i;
-    out[0] = '0';
-    out[1] = 'x';
-    for (i = 0; i < 8; i++) {
-        uint32_t nib = (v >> (28 - 4 * i)) & 0xFu;
-        out[2 + i] = (char)(nib < 10u ? '0' + nib : 'a' + nib - 10u);
-    }
-    out[10] = '\0';
 }
 
 /* Called by dh_rv_trap_entry for every trap (nothing enables interrupts, so
