@@ -51,8 +51,8 @@ elseif(CMAKE_C_FLAGS MATCHES "cortex-m7")
 elseif(CMAKE_C_FLAGS MATCHES "rv32ima")
   # both RV32 cores: QEMU emulates RISC-V F instructions through its
   # softfloat helpers, so the FPU core is no faster to emulate than soft
-  # float (measured: at 50 the RV32IMAFC suites took 3.5 times the CPU time
-  # of the RV32IMAC ones at 100)
+  # float (at the M4F's 50 its suites take several times as long as the
+  # RV32IMAC ones at 100)
   set(DH_TARGET_ITER_DIV 100)
 else()
   set(DH_TARGET_ITER_DIV 200)
