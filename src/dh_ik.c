@@ -47,7 +47,7 @@ enum {
     S_E, S_EP, S_ER,        /* current point: E, masked position / rotation error norms */
     S_TE, S_TEP, S_TER,     /* last evaluated point */
     S_BE, S_BEP, S_BER,     /* best point over all attempts */
-    S_MU, S_L, S_LAM,       /* damping multiplier, length L, damping lambda of H */
+    S_MU, S_L, S_WBAR,
     IK_S_COUNT
 };
 
@@ -174,11 +174,13 @@ static DH_NOINLINE dh_status ik_args(const ik_ctx *c, size_t work_len)
     return DH_OK;     /* the caller checks the rotation part (stack depth) */
 }
 
-/* Characteristic length L and the damping multiplier into the scalar state. */
+/* Characteristic length L and the damping bias into the scalar state. */
 static DH_NOINLINE void ik_scales(const ik_ctx *c)
 {
     float *S = c->w + OFF_S(c->n);
-    S[S_L] = ik_length(c->r);
+    const float L = ik_length(c->r);
+    S[S_L] = L;
+    S[S_WBAR] = DH_IK_WBAR * L * L;
     S[S_MU] = 1.0f;
 }
 
@@ -347,11 +349,9 @@ static DH_NOINLINE void ik_normal(const ik_ctx *c, uint32_t free_bits)
 {
     const uint32_t n = c->n;
     const float *B = c->w + OFF_J(n, c->cs ^ 1u), *we = c->w + OFF_E(n, c->cs ^ 1u);
-    float *S = c->w + OFF_S(n);
+    const float *S = c->w + OFF_S(n);
     float *H = c->w + OFF_H(n), *g = c->w + OFF_G(n);
-    const float wbar = DH_IK_WBAR * S[S_L] * S[S_L];
     uint32_t i, j, k;
-    S[S_LAM] = wbar;
     for (i = 0; i < n; i++) {
         const uint32_t fi = (free_bits >> i) & 1u;
         float s = 0.0f;
@@ -363,7 +363,7 @@ static DH_NOINLINE void ik_normal(const ik_ctx *c, uint32_t free_bits)
             if (fi && ((free_bits >> j) & 1u)) {
                 s = 0.0f;
                 for (k = 0; k < 6u; k++) s += B[k * n + i] * B[k * n + j];
-                if (i == j) s += S[S_MU] * ((S[S_E] < s) ? S[S_E] : s) + wbar;
+                if (i == j) s += S[S_MU] * ((S[S_E] < s) ? S[S_E] : s) + S[S_WBAR];
             }
             H[i * n + j] = s;
         }
@@ -371,17 +371,17 @@ static DH_NOINLINE void ik_normal(const ik_ctx *c, uint32_t free_bits)
 }
 
 /* H = L D L^T in place (no square root), then H dx = g; -1 if an entry
- * or dx is not finite. A pivot below lambda (the least pivot of B^T B +
- * lambda I in exact arithmetic: below it only by rounding) is raised to
- * lambda, which factors H + Delta, Delta >= 0 diagonal (a modified
- * Cholesky factorisation, Gill, Murray and Wright 1981): positive definite,
- * so dx is a descent direction whenever it is finite. */
+ * or dx is not finite. Every pivot of B^T B + Lambda is at least wbar in
+ * exact arithmetic; one below it (rounding) is raised to it, which factors
+ * H + Delta, Delta >= 0 diagonal (a modified Cholesky factorisation, Gill,
+ * Murray and Wright 1981): positive definite, so dx is a descent direction
+ * of the model whenever it is finite. */
 static DH_NOINLINE int ik_ldl(const ik_ctx *c)
 {
     const uint32_t n = c->n;
     float *H = c->w + OFF_H(n), *x = c->w + OFF_DX(n);
     const float *g = c->w + OFF_G(n);
-    const float lam = c->w[OFF_S(n) + S_LAM], dmin = (lam > FLT_MIN) ? lam : FLT_MIN;
+    const float wbar = c->w[OFF_S(n) + S_WBAR], dmin = (wbar > FLT_MIN) ? wbar : FLT_MIN;
     uint32_t i, j, k;
     /* x[k] temporarily holds L_jk D_k for the current row j */
     for (j = 0; j < n; j++) {
@@ -520,7 +520,7 @@ static DH_NOINLINE unsigned ik_update(ik_ctx *c, int ev)
 {
     const dh_ik_params *p = c->p;
     float *S = c->w + OFF_S(c->n);
-    int acc;
+    const int acc = (c->mode == M_TRIAL && ev == EV_OK) ? ik_better(c, S) : 0;
     if (c->mode == M_FIRST) {
         if (ev != EV_OK) return A_FAIL;
     } else {
@@ -541,7 +541,7 @@ static DH_NOINLINE unsigned ik_update(ik_ctx *c, int ev)
         c->stall = 0u;
         c->polish = 0u;
         c->conv = (uint8_t)ik_met(S, p);
-    } else if (ev == EV_OK && (acc = ik_better(c, S)) != 0) {
+    } else if (acc != 0) {
         c->stall = (acc == 1) ? 0u : c->stall + 1u;
         ik_take(c, S);
         if (c->conv) c->polish++;
@@ -678,7 +678,7 @@ dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q
              * is repeated with more damping */
             int k;
             ik_weigh(&c);
-            do {
+            for (;;) {
                 uint32_t free_bits = (n >= 32u) ? 0xFFFFFFFFu : ((1u << n) - 1u), pass, frozen = 1u;
                 k = 0;
                 for (pass = 0; (pass <= n) && (frozen != 0u) && (k == 0); pass++) {
@@ -691,7 +691,9 @@ dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q
                     }
                 }
                 if (k == 0) k = ik_apply(&c, free_bits);
-            } while (k < 0 && ik_damp(&c));
+                if (k >= 0) break;
+                if (ik_damp(&c) == 0) break;
+            }
             if (k > 0) continue;
             c.end = (uint8_t)K_STALL;   /* an empty projected step, or no finite one */
         }
