@@ -567,10 +567,10 @@ static DH_NOINLINE unsigned ik_update(ik_ctx *c, int ev)
  * rejected step; 0 when the attempt has stalled. */
 static DH_NOINLINE int ik_damp(ik_ctx *c)
 {
-    float *S = c->w + OFF_S(c->n);
+    const uint32_t m = OFF_S(c->n) + (uint32_t)S_MU;
     c->stall++;
-    S[S_MU] *= IK_MU_UP;
-    return !c->conv && c->stall < IK_STALL_STEPS && !(S[S_MU] > IK_MU_MAX);
+    c->w[m] *= IK_MU_UP;
+    return !c->conv && c->stall < IK_STALL_STEPS && !(c->w[m] > IK_MU_MAX);
 }
 
 /* End of an attempt: keep it if best (converged first, then lower E);
@@ -676,9 +676,9 @@ dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q
         if (act == A_STEP) {
             /* projected step: at most n + 1 solves; a solve that overflows
              * is repeated with more damping */
-            int k;
+            int k = 0, again = 1;
             ik_weigh(&c);
-            for (;;) {
+            while (again != 0) {
                 uint32_t free_bits = (n >= 32u) ? 0xFFFFFFFFu : ((1u << n) - 1u), pass, frozen = 1u;
                 k = 0;
                 for (pass = 0; (pass <= n) && (frozen != 0u) && (k == 0); pass++) {
@@ -691,8 +691,7 @@ dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q
                     }
                 }
                 if (k == 0) k = ik_apply(&c, free_bits);
-                if (k >= 0) break;
-                if (ik_damp(&c) == 0) break;
+                again = (k < 0) ? ik_damp(&c) : 0;
             }
             if (k > 0) continue;
             c.end = (uint8_t)K_STALL;   /* an empty projected step, or no finite one */
