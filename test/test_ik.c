@@ -528,13 +528,46 @@ static void ik_start_at_solution(void)
 }
 
 /* Robot size as the tests define it (independently of the library): sum of
- * |a| and |d| of the joints (no tool on the shipped robots). */
+ * |a| and |d| of the joints (all revolute on the shipped robots) plus the
+ * tool offset's length. */
 static double robot_size(const dhs_robot *d)
 {
-    double L = 0;
+    const double *t = d->tool.m[3];
+    double L = sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
     unsigned i;
     for (i = 0; i < d->n; i++) L += fabs(d->j[i].a) + fabs(d->j[i].d);
     return L;
+}
+
+/* The defaults scale with the robot's size L (the tests' own sum of |a|
+ * and |d|): tol_pos 1e-6 L, w_rot L / 4, the rest fixed; the mm model gets
+ * 1000 times the metre model's lengths; a robot without lengths (n = 0, or
+ * every a and d zero) L = 1. */
+static void ik_params_default_scaled(void)
+{
+    static const dhs_robot *const robots[] = { &dhs_puma560_m, &dhs_puma560_mm, &dhs_ur5_m, &dhs_ur5_mm,
+                                                &dhs_panda_m, &dhs_panda_mm };
+    dh_robot r;
+    dh_ik_params p;
+    unsigned k;
+    for (k = 0; k < 6u; k++) {
+        const double L = robot_size(robots[k]);
+        DHT_EQ_INT(dhs_build(robots[k], &r), DH_OK);
+        dh_ik_params_default(&r, &p);
+        DHT_NEAR(p.tol_pos, 1e-6 * L, 1e-12 * L);
+        DHT_NEAR(p.w_rot, 0.25 * L, 1e-6 * L);
+        DHT_EQ_INT(p.max_iter, 2000);
+        DHT_EQ_INT(p.restarts, 200);
+        DHT_EQ_INT(p.mask, DH_IK_FULL);
+        DHT_NEAR(p.tol_rot, 1e-5, 1e-12);
+    }
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+    dh_ik_params_default(&r, &p);
+    DHT_NEAR(p.tol_pos, 1e-6, 1e-12);
+    DHT_NEAR(p.w_rot, 0.25, 1e-7);
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, 0, 90), DH_OK);
+    dh_ik_params_default(&r, &p);
+    DHT_NEAR(p.w_rot, 0.25, 1e-7);
 }
 
 /* The rotation weight does not decide success: on a fixed list of 200
@@ -725,6 +758,7 @@ static const dht_case cases[] = {
     DHT_CASE(ik_prismatic),
     DHT_CASE(ik_masked_deterministic),
     DHT_CASE(ik_start_at_solution),
+    DHT_CASE(ik_params_default_scaled),
     DHT_CASE(ik_weight_insensitive),
     DHT_CASE(ik_ur5_hard_target),
     DHT_CASE(ik_prismatic_unlimited),
