@@ -573,8 +573,8 @@ static void ik_params_default_scaled(void)
 /* The rotation weight does not decide success: on a fixed list of 200
  * reachable Puma targets (m and mm), every w_rot from 0.1 to 30 times the
  * robot's size and the heavy 100 and 1000 m/rad (x unit) converges for
- * >= 99% of them, and no status is SINGULAR (finite input). The heavy
- * weights made the normal matrix indefinite in float (pivot <= 0). */
+ * >= 99% of them, and no status is SINGULAR (finite input). Heavy weights
+ * make J^T W^2 J indefinite in float (pivots <= 0) near singular targets. */
 static void ik_weight_insensitive(void)
 {
     static const double factor[] = { 0.1, 0.3, 1.0, 3.0, 10.0, 30.0 };
@@ -608,10 +608,10 @@ static void ik_weight_insensitive(void)
     dht_reseed(s0);
 }
 
-/* A UR5 target on which the LDL^T step met a finite pivot <= 0 (SINGULAR
- * after 2000 steps at 2.4e-6 m): the metre parameters of the earlier
- * defaults (tol 1e-6 m / 1e-5 rad, w_rot 1 m/rad), home start, limits
- * +-360 (the shipped model). */
+/* A UR5 target whose normal matrix has a finite pivot <= 0 in float on the
+ * way (SINGULAR after 2000 steps at 2.4e-6 m without the pivot rule):
+ * tol 1e-6 m / 1e-5 rad, w_rot 1 m/rad, home start, limits +-360 (the
+ * shipped model). */
 static void ik_ur5_hard_target(void)
 {
     static const double qt[6] = { 299.51278838944893, 54.07958061836041, 60.844163601340369,
@@ -638,10 +638,10 @@ static void ik_ur5_hard_target(void)
 }
 
 /* Prismatic joints without limits reach distant targets: a lone P joint
- * to z = 100 (its damping mu E, E = 5000 against a column of 1, allowed
- * steps of 1/5000 of the error), and an R R P arm with 0.5 m links to
- * targets 5 .. 500 m away, position only, tol_pos 1e-6 x the distance (the
- * float resolution of 500 is 3e-5). */
+ * to z = 100 (an uncapped damping mu E, E = 5000 against a column of 1,
+ * allows steps of 1/5000 of the error), and an R R P arm with 0.5 m links
+ * to targets 5 .. 500 m away, position only, tol_pos 1e-6 x the distance
+ * (the float resolution of 500 is 3e-5). */
 static void ik_prismatic_unlimited(void)
 {
     dh_robot r;
