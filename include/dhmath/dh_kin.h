@@ -146,7 +146,7 @@ typedef struct {
 
 /**
  * Sugihara's constant damping bias, relative to the robot's characteristic
- * length L squared: the damping of joint i is mu min(E_k, (J^T J)_ii) +
+ * length L squared: the damping of joint i is mu min(E_k, (J^T W^2 J)_ii) +
  * DH_IK_WBAR * L^2. Small (near the float noise of J^T J) so that
  * convergence stays fast near singular targets; it keeps the normal matrix
  * positive definite for redundant arms.
