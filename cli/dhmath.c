@@ -639,21 +639,19 @@ static int cmd_ik(int argc, char **argv)
                     "clamped to %.9g\n", o.q0 ? "--q0:" : "start (no --q0, all zeros):", k + 1, (double)q0[k],
                     (double)j->qmin, (double)j->qmax, (double)(q0[k] < j->qmin ? j->qmin : j->qmax));
     }
-    dh_ik_params_default(&prm);
-    /* The library defaults are for metres. Scale the length-dependent ones
-     * by the robot's size L = max(1, reach) so a millimetre robot gets
-     * tol_pos ~1e-3 mm and w_rot ~1000 mm/rad. */
+    dh_ik_params_default(&r, &prm);     /* scaled to the robot's size */
+    /* L names the robot's size in the messages: sum of |a| + |d| of the
+     * joints and the base and tool offsets (the library's L, which has the
+     * tool's length instead of its offsets and no base, is near it). The
+     * library scales w_rot to L / 4, which needs L^2 finite in float. */
     L = robot_reach(&r, &rf);
-    if (L < 1.0) L = 1.0;
-    if (!o.w_rot && !ik_weight_ok((double)prm.w_rot * L)) {
+    if (!o.w_rot && !ik_weight_ok(0.25 * L)) {
         fprintf(stderr, "dhmath: error: ik: the robot's size overflows the float IK: L = %.9g (sum of |a| and |d| "
-                "of the joints and the base and tool offsets) makes the weight w_rot = %.9g length units per "
-                "radian, and dh_ik_f32 needs w_rot^2 finite in float (w_rot <= 4.6e18); give --w-rot, or "
-                "describe the robot in a larger length unit\n", L, (double)prm.w_rot * L);
+                "of the joints and the base and tool offsets) makes the default weight w_rot = L/4 = %.9g length "
+                "units per radian, and dh_ik_f32 needs w_rot^2 finite in float (w_rot <= 4.6e18); give --w-rot, or "
+                "describe the robot in a larger length unit\n", L, 0.25 * L);
         return EXIT_ERR;
     }
-    prm.tol_pos = (float)((double)prm.tol_pos * L);
-    if (!o.w_rot) prm.w_rot = (float)((double)prm.w_rot * L);
     if (o.position) prm.mask = DH_IK_POSITION;
     if (o.tol_pos) {
         if ((rc = parse_num_arg(o.tol_pos, "--tol-pos", &x)) != 0) return rc;
