@@ -318,7 +318,7 @@ static void kin_ik_bad_args(void)
     UNTOUCHED(res);
     /* a finite target so far away that the squared error overflows is out
      * of reach: UNREACHABLE at once (no step), q = the clamped q0, res.err_pos
-     * the distance computed without overflow (issue 4 / defect 3) */
+     * the distance computed without overflow */
     {
         dh_mat4_f32 tb = target;
         dh_mat4_f32 T0;

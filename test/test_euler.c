@@ -224,7 +224,7 @@ static void extrinsic_is_reversed_intrinsic(void)
     }
 }
 
-/* The explicit XYZ matrix of seed 003 ("Euler angles to rotation matrix"). */
+/* The explicit XYZ matrix of the FloCal notes ("Euler angles to rotation matrix"). */
 static void seed_xyz_formula(void)
 {
     int it, r, c;

@@ -1,9 +1,9 @@
 /*
- * test_mat4_seed.c - every worked example of seed 000 (Paul & Daly,
- * "dhmatrix.spad") reproduced EXACTLY: all the numbers in those examples
+ * test_mat4_seed.c - every worked example of Paul 1981 chapter 1 (in the
+ * transcription of Paul & Daly, "dhmatrix.spad") reproduced EXACTLY: all the numbers in those examples
  * are small integers, 0 and +-1, so the float results must be bitwise equal
- * to the seed's values (zeros as +0). The expected values below are typed
- * in from the seed, not computed by the code under test.
+ * to the book's values (zeros as +0). The expected values below are typed
+ * in from the book, not computed by the code under test.
  *
  * Also: the contracts' special cases (status codes, untouched outputs,
  * aliasing) of the constructors, products, application functions,
@@ -18,7 +18,7 @@
 
 /* ---- helpers ----------------------------------------------------------- */
 
-/* Matrix typed row by row as in the seed (rows top to bottom). */
+/* Matrix typed row by row as in the book (rows top to bottom). */
 static dh_mat4_f32 rows(const float r[4][4])
 {
     dh_mat4_f32 T;
@@ -116,7 +116,7 @@ static void seed_eq_1_29_1_31_plane(void)
     dh_mat4_trans_f32(4, -3, 7, &T);
     /* eq. 1.29: the point lies in the plane */
     DHT_EQ_F32_BITS(P.a * u.x + P.b * u.y + P.c * u.z + P.d, 0.0f);
-    /* the inverse given in the seed, by both inverses */
+    /* the inverse given in the book, by both inverses */
     dh_mat4_inv_rigid_f32(&T, &Ti);
     CHECK_MAT_BITS(&Ti, INV);
     DHT_EQ_INT(dh_mat4_inv_f32(&T, &Tg), DH_OK);

@@ -4,7 +4,7 @@
 usage: run_cli_tests.py DHMATH_EXE REPO_ROOT GROUP [--seed N]
 
 Groups:
-  seed      every worked example of seed 000 through the CLI (exact output)
+  seed      every worked example of Paul 1981 ch. 1 through the CLI (exact output)
   errors    EXPR / usage error table: exit 2, empty stdout, message naming
             the problem and its column
   random    seeded random EXPRs vs a double-precision reference written here
@@ -78,7 +78,7 @@ def rot_axis(kx, ky, kz, deg):
     kx, ky, kz = kx / n, ky / n, kz / n
     t = math.radians(deg)
     c, s, v = math.cos(t), math.sin(t), 1.0 - math.cos(t)
-    # seed 000 eq. 1.70
+    # Paul 1981 eq. 1.70
     return [[kx * kx * v + c, ky * kx * v - kz * s, kz * kx * v + ky * s, 0.0],
             [kx * ky * v + kz * s, ky * ky * v + c, kz * ky * v - kx * s, 0.0],
             [kx * kz * v - ky * s, ky * kz * v + kx * s, kz * kz * v + c, 0.0],
