@@ -126,10 +126,10 @@
  * DH_NO_CONFIG_CHECK (they define the symbols instead); an application may
  * define it to leave the check out.
  * @{ */
-#define DH_CFG_CAT2_(a, b) a##b
-#define DH_CFG_CAT_(a, b) DH_CFG_CAT2_(a, b)
-#define DH_CFG_STR2_(x) #x
-#define DH_CFG_STR_(x) DH_CFG_STR2_(x)
+#define DH_CFG_CAT2_(a, b) a##b                /**< token paste */
+#define DH_CFG_CAT_(a, b) DH_CFG_CAT2_(a, b)   /**< token paste after expansion */
+#define DH_CFG_STR2_(x) #x                     /**< stringify */
+#define DH_CFG_STR_(x) DH_CFG_STR2_(x)         /**< stringify after expansion */
 /** The symbol of this translation unit's DH_MAX_JOINTS. */
 #define DH_CFG_SYM_MAX_JOINTS_ DH_CFG_CAT_(dhmath_config_mismatch_DH_MAX_JOINTS_is_, DH_MAX_JOINTS)
 /** The symbol of this translation unit's DH_QPOS_FRAC. */
