@@ -119,8 +119,9 @@
  * value it was built with (src/dh_config.c), e.g.
  * dhmath_config_mismatch_DH_MAX_JOINTS_is_8. Every translation unit that
  * includes this header (GCC or Clang, ELF targets) references the symbols
- * of ITS values from a non-allocated note section: no flash, no RAM, no
- * code, kept by --gc-sections. Built with other values, the link fails
+ * of ITS values from a non-allocated note section (kept by --gc-sections,
+ * not loaded): no code, no RAM; the image holds the library's two 1-byte
+ * symbols. Built with other values, the link fails
  * with "undefined reference to dhmath_config_mismatch_DH_MAX_JOINTS_is_6"
  * (the application's value). The library's own sources define
  * DH_NO_CONFIG_CHECK (they define the symbols instead); an application may
