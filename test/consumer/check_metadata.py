@@ -33,8 +33,12 @@ def err(msg):
 
 
 def read(root, rel):
-    with open(os.path.join(root, rel), encoding="utf-8") as f:
-        return f.read()
+    try:
+        with open(os.path.join(root, rel), encoding="utf-8") as f:
+            return f.read()
+    except OSError:
+        err("%s: missing" % rel)
+        return ""
 
 
 def header_settings(text):
