@@ -75,7 +75,7 @@ dh_status dh_mat3_to_quat_f32(const dh_mat3_f32 *R, dh_quat_f32 *q)
     t = r00 + r11 + r22;
     /* Shepperd 1978: the largest of t, r00, r11, r22 picks the component */
     if (t >= r00 && t >= r11 && t >= r22) {
-        p = dh_sqrt_f32(1.0f + t);            /* 2|w| >= 1 */
+        p = dh_sqrt_f32(1.0f + t);      /* 2|w| >= 1 */
         f = 0.5f / p;
         w = 0.5f * p;
         x = (DH_M3(R, 2, 1) - DH_M3(R, 1, 2)) * f;

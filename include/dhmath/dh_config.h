@@ -17,8 +17,9 @@
 #ifndef DHMATH_DH_CONFIG_H
 #define DHMATH_DH_CONFIG_H
 
-/** @name Library version (semantic versioning; also CMake's, pkg-config's,
- *  zephyr/module.yml's and library.json's, checked by tools/check.sh package)
+/** @name Library version (semantic versioning). The one definition: CMake's
+ *  project version and the pkg-config file's are read from here, and
+ *  tools/check.sh package checks library.json's against it.
  * @{ */
 #define DH_VERSION_MAJOR 0        /**< incompatible API changes */
 #define DH_VERSION_MINOR 2        /**< while MAJOR is 0: also incompatible */
