@@ -167,7 +167,7 @@ static void dh_euler_solve(const dh_mat3_f32 *R, int i, int j, int k, int zero_f
     } else {
         y = RR(j, i); x = -s * RR(l, i); p2 = RR(l, j); q1 = RR(j, l); q2 = RR(l, l); u = -s;
     }
-    n = sqrtf(x * x + y * y);                 /* cos b (Tait-Bryan), sin b (proper) */
+    n = dh_sqrt_f32(x * x + y * y);           /* cos b (Tait-Bryan), sin b (proper) */
     b = proper ? dh_euler_atan2_deg(n, RR(i, i)) : dh_euler_atan2_deg(s * RR(i, k), n);
     if (n <= DH_EULER_POLE_TOL) {
         f = 0.0f; cf = 1.0f; sf = 0.0f;

@@ -17,6 +17,7 @@
 #include <string.h>
 #include "dhmath/dh_config.h"
 #include "dhmath/dh_common.h"
+#include "dh_mathf.h"
 #include "../port/dh_port.h" /* relative: src/ compiles with only include/ on the path */
 
 /* ---- what the size-first build turns off -------------------------------- */
@@ -62,6 +63,35 @@
 /** 180 / pi and pi / 180, rounded to float. */
 #define DH_RAD2DEG_F 57.295779513082320876798f
 #define DH_DEG2RAD_F 0.017453292519943295f
+
+/* ---- configuration check (include/dhmath/dh_config.h, src/dh_config.c) --- */
+
+/** Defined by the library, referenced by every application translation
+ *  unit with ITS values: a mismatch of an interface setting fails to link. */
+extern const uint8_t DH_CFG_SYM_MAX_JOINTS_;
+extern const uint8_t DH_CFG_SYM_QPOS_FRAC_;
+
+/* ---- libm-free float helpers (the library links without libm) ----------- */
+
+/** sqrt(x) for the float modules, bit for bit IEEE's (correctly rounded):
+ *  the FPU instruction through __builtin_sqrtf where the compiler emits it
+ *  without a libm call (single-precision hardware square root and
+ *  -fno-math-errno, which the library's build sets: __NO_MATH_ERRNO__),
+ *  else the integer version dh_sqrtf_ (src/dh_mathf.c). */
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__NO_MATH_ERRNO__) && \
+    (DH_MATHF_VSQRT || defined(__SSE_MATH__) || defined(__riscv_fsqrt))
+#define DH_SQRT_INSN 1
+#else
+#define DH_SQRT_INSN 0
+#endif
+DH_INLINE float dh_sqrt_f32(float x)
+{
+#if DH_SQRT_INSN
+    return __builtin_sqrtf(x);
+#else
+    return dh_sqrtf_(x);
+#endif
+}
 
 /* ---- float predicates ----------------------------------------------------- */
 
@@ -316,7 +346,7 @@ DH_INLINE dh_status dh_axis_prescale_f32(float v[3], float *len)
     v[0] /= m;
     v[1] /= m;
     v[2] /= m;
-    *len = sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    *len = dh_sqrt_f32(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     return DH_OK;
 }
 

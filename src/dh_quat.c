@@ -75,28 +75,28 @@ dh_status dh_mat3_to_quat_f32(const dh_mat3_f32 *R, dh_quat_f32 *q)
     t = r00 + r11 + r22;
     /* Shepperd 1978: the largest of t, r00, r11, r22 picks the component */
     if (t >= r00 && t >= r11 && t >= r22) {
-        p = sqrtf(1.0f + t);            /* 2|w| >= 1 */
+        p = dh_sqrt_f32(1.0f + t);      /* 2|w| >= 1 */
         f = 0.5f / p;
         w = 0.5f * p;
         x = (DH_M3(R, 2, 1) - DH_M3(R, 1, 2)) * f;
         y = (DH_M3(R, 0, 2) - DH_M3(R, 2, 0)) * f;
         z = (DH_M3(R, 1, 0) - DH_M3(R, 0, 1)) * f;
     } else if (r00 >= r11 && r00 >= r22) {
-        p = sqrtf(1.0f + r00 - r11 - r22); /* 2|x| >= 1 */
+        p = dh_sqrt_f32(1.0f + r00 - r11 - r22); /* 2|x| >= 1 */
         f = 0.5f / p;
         x = 0.5f * p;
         w = (DH_M3(R, 2, 1) - DH_M3(R, 1, 2)) * f;
         y = (DH_M3(R, 0, 1) + DH_M3(R, 1, 0)) * f;
         z = (DH_M3(R, 0, 2) + DH_M3(R, 2, 0)) * f;
     } else if (r11 >= r22) {
-        p = sqrtf(1.0f - r00 + r11 - r22);
+        p = dh_sqrt_f32(1.0f - r00 + r11 - r22);
         f = 0.5f / p;
         y = 0.5f * p;
         w = (DH_M3(R, 0, 2) - DH_M3(R, 2, 0)) * f;
         x = (DH_M3(R, 0, 1) + DH_M3(R, 1, 0)) * f;
         z = (DH_M3(R, 1, 2) + DH_M3(R, 2, 1)) * f;
     } else {
-        p = sqrtf(1.0f - r00 - r11 + r22);
+        p = dh_sqrt_f32(1.0f - r00 - r11 + r22);
         f = 0.5f / p;
         z = 0.5f * p;
         w = (DH_M3(R, 1, 0) - DH_M3(R, 0, 1)) * f;
@@ -104,7 +104,7 @@ dh_status dh_mat3_to_quat_f32(const dh_mat3_f32 *R, dh_quat_f32 *q)
         y = (DH_M3(R, 1, 2) + DH_M3(R, 2, 1)) * f;
     }
     /* normalise (largest component >= 1/2: no scaling needed) */
-    n = sqrtf(w * w + x * x + y * y + z * z);
+    n = dh_sqrt_f32(w * w + x * x + y * y + z * z);
     if (w < 0.0f) n = -n;
     q->w = w / n + 0.0f; /* + 0 turns a -0 into +0 */
     q->x = x / n;
@@ -125,7 +125,7 @@ dh_status dh_quat_normalize_f32(const dh_quat_f32 *q, dh_quat_f32 *out)
     x = q->x * f;
     y = q->y * f;
     z = q->z * f;
-    n = sqrtf(w * w + x * x + y * y + z * z); /* in [m f, 2 m f] */
+    n = dh_sqrt_f32(w * w + x * x + y * y + z * z); /* in [m f, 2 m f] */
     out->w = w / n;
     out->x = x / n;
     out->y = y / n;

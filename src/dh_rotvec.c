@@ -124,7 +124,7 @@ dh_status dh_rotvec_to_mat3_f32(const dh_vec3_f32 *phi, dh_mat3_f32 *R)
         y /= m;
         z /= m;
     }
-    t = sqrtf(x * x + y * y + z * z);
+    t = dh_sqrt_f32(x * x + y * y + z * z);
     k[0] = x / t;
     k[1] = y / t;
     k[2] = z / t;
@@ -145,7 +145,7 @@ dh_status dh_mat3_to_rotvec_f32(const dh_mat3_f32 *R, dh_vec3_f32 *phi)
     DH_ASSERT(R != NULL && phi != NULL);
     st = dh_mat3_to_quat_f32(R, &q); /* checks R; w >= 0 */
     if (st != DH_OK) return st;
-    n = sqrtf(q.x * q.x + q.y * q.y + q.z * q.z);
+    n = dh_sqrt_f32(q.x * q.x + q.y * q.y + q.z * q.z);
     if (n == 0.0f) {
         phi->x = 0.0f;
         phi->y = 0.0f;

@@ -9,12 +9,15 @@
 # stack <= 256 B), config variants, coverage >= 95 % lines / 90 % branches,
 # cppcheck (MISRA addon) + clang-tidy, public contracts (tools/check_contracts.py:
 # function comments <= 30 lines, no history markers in src/ and include/),
-# and a 10 s libFuzzer smoke per target.
+# a 10 s libFuzzer smoke per target, and package (test/consumer/run.sh:
+# install, find_package, pkg-config and add_subdirectory consumers, the
+# configuration-mismatch link failure, parent-project options, minimal
+# cross toolchains without libm, Zephyr/PlatformIO metadata).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
 JOBS=${JOBS:-$(nproc)}
-STAGES=${*:-"host asan m0 m4f m7 small rv32imac rv32imafc examples guards variants coverage static contracts fuzz apidoc"}
+STAGES=${*:-"host asan m0 m4f m7 small rv32imac rv32imafc examples guards variants coverage static contracts fuzz apidoc package"}
 failed=""
 
 run_stage() {
@@ -78,6 +81,7 @@ for s in $STAGES; do
     static) [ -x tools/static.sh ] && run_stage static bash -c "tools/static.sh && STATIC_BUILD='$ROOT/build/static-small' STATIC_CMAKE_ARGS=-DDH_SMALL=ON tools/static.sh" ;;
     contracts) run_stage contracts python3 tools/check_contracts.py ;;
     fuzz) [ -x tools/fuzz.sh ] && run_stage fuzz env FUZZ_SEED=${FUZZ_SEED:-20261124} tools/fuzz.sh 10 ;;
+    package) run_stage package env JOBS="$JOBS" test/consumer/run.sh ;;
     apidoc) run_stage apidoc bash -c 'mkdir -p build && doxygen docs/Doxyfile' ;;
     *) echo "unknown stage $s"; exit 2 ;;
   esac

@@ -6,9 +6,26 @@
  * Each CMake option maps to exactly one DH_* define here. A project may also
  * define DH_CONFIG_HEADER="my_dh_config.h" to set them from a header; the
  * header is included first and anything it does not set gets the default.
+ *
+ * Two settings change the binary interface: DH_MAX_JOINTS (the layout of
+ * dh_robot) and DH_QPOS_FRAC (the meaning of every dh_qpos). An application
+ * must be compiled with the values the library was built with; the
+ * configuration check at the end of this header makes a mismatch fail to
+ * link, naming the setting. The other settings only change the library's
+ * own code.
  */
 #ifndef DHMATH_DH_CONFIG_H
 #define DHMATH_DH_CONFIG_H
+
+/** @name Library version (semantic versioning). The one definition: CMake's
+ *  project version and the pkg-config file's are read from here, and
+ *  tools/check.sh package checks library.json's against it.
+ * @{ */
+#define DH_VERSION_MAJOR 0        /**< incompatible API changes */
+#define DH_VERSION_MINOR 2        /**< while MAJOR is 0: also incompatible */
+#define DH_VERSION_PATCH 0        /**< compatible fixes */
+#define DH_VERSION_STRING "0.2.0" /**< "MAJOR.MINOR.PATCH" */
+/** @} */
 
 #ifdef DH_CONFIG_HEADER
 #include DH_CONFIG_HEADER
@@ -16,7 +33,8 @@
 
 /**
  * DH_MAX_JOINTS: capacity of dh_robot (layout-changing, PUBLIC definition).
- * Range 1..32, default 8.
+ * Range 1..32, default 8. A decimal literal (it becomes part of a symbol
+ * name, see the configuration check below).
  */
 #ifndef DH_MAX_JOINTS
 #define DH_MAX_JOINTS 8
@@ -28,7 +46,8 @@
 /**
  * DH_QPOS_FRAC: fraction bits of fixed-point lengths (dh_qpos).
  * Range 8..24, default 16 (Q16.16: +-32767 units at 1.5e-5 resolution;
- * in millimetres +-32 m at 15 nm). Layout-neutral but changes values: PUBLIC.
+ * in millimetres +-32 m at 15 nm). Layout-neutral but changes values: PUBLIC,
+ * part of the binary interface, a decimal literal.
  */
 #ifndef DH_QPOS_FRAC
 #define DH_QPOS_FRAC 16
@@ -93,6 +112,39 @@
 #else
 #define DH_ASSERT(cond) ((void)0)
 #endif
+#endif
+
+/**
+ * @name Configuration check
+ * The library defines one symbol per interface setting, named after the
+ * value it was built with (src/dh_config.c), e.g.
+ * dhmath_config_mismatch_DH_MAX_JOINTS_is_8. Every translation unit that
+ * includes this header (GCC or Clang, ELF targets) references the symbols
+ * of ITS values from a non-allocated note section (kept by --gc-sections,
+ * not loaded): no code, no RAM; the image holds the library's two 1-byte
+ * symbols. Built with other values, the link fails
+ * with "undefined reference to dhmath_config_mismatch_DH_MAX_JOINTS_is_6"
+ * (the application's value). The library's own sources define
+ * DH_NO_CONFIG_CHECK (they define the symbols instead); an application may
+ * define it to leave the check out.
+ * @{ */
+#define DH_CFG_CAT2_(a, b) a##b                /**< token paste */
+#define DH_CFG_CAT_(a, b) DH_CFG_CAT2_(a, b)   /**< token paste after expansion */
+#define DH_CFG_STR2_(x) #x                     /**< stringify */
+#define DH_CFG_STR_(x) DH_CFG_STR2_(x)         /**< stringify after expansion */
+/** The symbol of this translation unit's DH_MAX_JOINTS. */
+#define DH_CFG_SYM_MAX_JOINTS_ DH_CFG_CAT_(dhmath_config_mismatch_DH_MAX_JOINTS_is_, DH_MAX_JOINTS)
+/** The symbol of this translation unit's DH_QPOS_FRAC. */
+#define DH_CFG_SYM_QPOS_FRAC_ DH_CFG_CAT_(dhmath_config_mismatch_DH_QPOS_FRAC_is_, DH_QPOS_FRAC)
+/** @} */
+
+#if !defined(DH_NO_CONFIG_CHECK) && (defined(__GNUC__) || defined(__clang__)) && defined(__ELF__)
+/* An ELF note (name "dhmath", type 1) holding the two references. */
+__asm__(".pushsection .note.dhmath.config,\"\",%note\n\t.balign 4\n\t"
+        ".4byte 7\n\t.4byte 8\n\t.4byte 1\n\t.asciz \"dhmath\"\n\t.balign 4\n\t"
+        ".4byte dhmath_config_mismatch_DH_MAX_JOINTS_is_" DH_CFG_STR_(DH_MAX_JOINTS) "\n\t"
+        ".4byte dhmath_config_mismatch_DH_QPOS_FRAC_is_" DH_CFG_STR_(DH_QPOS_FRAC) "\n\t"
+        ".popsection");
 #endif
 
 #endif /* DHMATH_DH_CONFIG_H */

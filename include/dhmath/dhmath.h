@@ -18,11 +18,11 @@
 #include "dhmath/dh_kin.h"
 #include "dhmath/dh_rot.h"
 
-/** Library major version (semantic versioning). */
-#define DHMATH_VERSION_MAJOR 0
-/** Library minor version. */
-#define DHMATH_VERSION_MINOR 1
-/** Library patch version. */
-#define DHMATH_VERSION_PATCH 0
+/** Library major version: DH_VERSION_MAJOR (dh_config.h, where the version is defined). */
+#define DHMATH_VERSION_MAJOR DH_VERSION_MAJOR
+/** Library minor version: DH_VERSION_MINOR. */
+#define DHMATH_VERSION_MINOR DH_VERSION_MINOR
+/** Library patch version: DH_VERSION_PATCH. */
+#define DHMATH_VERSION_PATCH DH_VERSION_PATCH
 
 #endif /* DHMATH_DHMATH_H */

@@ -822,9 +822,9 @@ def group_rot(seed):
 
 
 def group_help():
-    # --version: the library version from include/dhmath/dhmath.h
-    hdr = open(os.path.join(ROOT, 'include', 'dhmath', 'dhmath.h')).read()
-    ver = '.'.join(re.search(r'#define DHMATH_VERSION_%s (\d+)' % k, hdr).group(1) for k in ('MAJOR', 'MINOR', 'PATCH'))
+    # --version: the library version from include/dhmath/dh_config.h
+    hdr = open(os.path.join(ROOT, 'include', 'dhmath', 'dh_config.h')).read()
+    ver = '.'.join(re.search(r'#define DH_VERSION_%s (\d+)' % k, hdr).group(1) for k in ('MAJOR', 'MINOR', 'PATCH'))
     rc, out, err = run(['--version'])
     check(rc == 0 and out == 'dhmath %s\n' % ver and err == '', '--version: rc %d out %r err %r' % (rc, out, err))
     for args in (['--help'], ['help'], ['-h']):
