@@ -26,7 +26,7 @@ FLOAT_FK_TOL = 1e-6
 # dh_mat3_to_euler_f32: angles within 2.5e-5 deg of the exact ones (middle
 # angle >= 1 deg from a pole), plus what the FK's rotation error moves them
 EULER_ALGO_TOL_DEG = 2.5e-5
-# dh_ik_params_default: tol_pos 1e-6 m, tol_rot 1e-5 rad (met against the
+# fw_float_ik sets tol_pos 1e-6 m; tol_rot 1e-5 rad is the default (met against the
 # float FK, which differs from the exact one by FLOAT_FK_TOL)
 IK_TOL_POS = 1e-6
 IK_TOL_ROT = 1e-5

@@ -102,7 +102,8 @@ int main(void)
     print_vec("ik_goal_q", q_goal, 6);
     print_pose("ik_target_p", NULL, &target);
     if (print_zyx("ik_target_zyx", &target) != DH_OK) return 1;
-    dh_ik_params_default(&par);
+    dh_ik_params_default(&arm, &par);
+    par.tol_pos = 1e-6f; /* 1 um (the default is 1e-6 of the arm's size) */
     st = dh_ik_f32(&arm, &target, q_start, &par, work, sizeof work / sizeof work[0], q, &res);
     printf("ik_status: %s\n", dh_status_str(st));
     if (st != DH_OK) return 1;
