@@ -2,11 +2,14 @@
  * fw_fixed_fk.c - firmware example for a core without FPU (Cortex-M0+):
  * forward kinematics of a UR5 in fixed point, integer arithmetic only.
  *
- * The robot is built at run time from its DH table (examples/robots/
- * ur5_mm.dh: Universal Robots' published parameters, lengths in mm) with
- * the fixed-point setter; the table is written in micrometres and angles
- * in whole degrees, converted to the library's Q formats by integer
- * constant expressions, so no float is involved anywhere at run time.
+ * The robot lives in flash: `dhmath gen examples/robots/ur5_mm.dh
+ * dhg_ur5_mm` (run by the build, test/gen/) writes the C source that defines
+ * `const dh_robot dhg_ur5_mm` with every derived field computed, so the
+ * firmware calls no setter and the description takes no RAM. The
+ * joint angles are whole degrees turned into Q16.16 by an integer constant
+ * expression: no float is involved anywhere at run time. (A robot written
+ * by hand or received from outside is checked once at start-up with
+ * dh_robot_check, which uses float; a generated one passes by construction.)
  *
  * Output, one line per configuration (raw fixed-point integers, which a
  * firmware would send on as they are):
@@ -24,22 +27,11 @@
 
 #include "dhmath/dhmath.h"
 
-/* micrometres -> dh_qpos millimetres, rounded (integer constant expression) */
-#define UM(um) ((dh_qpos)(((int64_t)(um) * DH_QPOS_ONE + ((um) >= 0 ? 500 : -500)) / 1000))
 /* whole degrees -> dh_q16 */
 #define DEG(d) ((dh_q16)((d) * DH_Q16_ONE))
 
-typedef struct {
-    dh_qpos d, a;
-    dh_q16 alpha;
-} ur5_row;
-
-/* UR5, standard DH: d, a, alpha (theta is the joint variable, offset 0) */
-static const ur5_row ur5[6] = {
-    { UM(89159), UM(0), DEG(90) },      { UM(0), UM(-425000), DEG(0) },
-    { UM(0), UM(-392250), DEG(0) },     { UM(109150), UM(0), DEG(90) },
-    { UM(94650), UM(0), DEG(-90) },     { UM(82300), UM(0), DEG(0) },
-};
+/* UR5 in mm (examples/robots/ur5_mm.dh), generated into .rodata */
+extern const dh_robot dhg_ur5_mm;
 
 static const int16_t configs[3][6] = {
     { 0, 0, 0, 0, 0, 0 },
@@ -49,21 +41,14 @@ static const int16_t configs[3][6] = {
 
 int main(void)
 {
-    dh_robot arm;
     dh_frame_q T;
     int32_t q[6];
     unsigned i, j;
 
-    if (dh_robot_init(&arm, DH_CONV_STANDARD) != DH_OK) return 1;
-    for (i = 0; i < 6u; i++) {
-        if (dh_robot_add_joint_q(&arm, DH_JOINT_REVOLUTE, 0, ur5[i].d, ur5[i].a,
-                                 ur5[i].alpha) != DH_OK)
-            return 1;
-    }
     for (i = 0; i < 3u; i++) {
         dh_status st;
         for (j = 0; j < 6u; j++) q[j] = DEG(configs[i][j]);
-        st = dh_fk_q(&arm, q, &T);
+        st = dh_fk_q(&dhg_ur5_mm, q, &T);
         if (st != DH_OK) {
             printf("dh_fk_q: %s\n", dh_status_str(st));
             return 1;
