@@ -25,3 +25,17 @@ if(DH_BUILD_TOOLS)
   add_test(NAME cli_fuzz_parsers COMMAND cli_fuzz_parsers 200000)
   set_tests_properties(cli_fuzz_parsers PROPERTIES TIMEOUT 600 LABELS cli)
 endif()
+
+# A DHT_SEED that is not a seed (test/dht.h dht_parse_seed) stops a suite
+# with status 2 and a message naming it, and so does a bad DHT_ITER_DIV;
+# a valid seed is printed when the suite starts.
+foreach(bad abc 08 010 0x -1 18446744073709551616)
+  add_test(NAME dht_seed_rejects_${bad}
+    COMMAND sh -c "out=$(DHT_SEED=\"$1\" \"$2\" 2>&1); rc=$?; echo \"$out\"; [ $rc -eq 2 ] && echo \"$out\" | grep -q 'DHT_SEED=\"'\"$1\"'\" is not a seed'"
+            sh ${bad} $<TARGET_FILE:test_status>)
+endforeach()
+add_test(NAME dht_iter_div_rejects_0
+  COMMAND sh -c "out=$(DHT_ITER_DIV=0 \"$1\" 2>&1); rc=$?; echo \"$out\"; [ $rc -eq 2 ] && echo \"$out\" | grep -q 'is not a loop-count divisor'"
+          sh $<TARGET_FILE:test_status>)
+add_test(NAME dht_seed_printed
+  COMMAND sh -c "DHT_SEED=0xDEADbeef \"$1\" | grep -q 'seed 0xdeadbeef (DHT_SEED)'" sh $<TARGET_FILE:test_status>)

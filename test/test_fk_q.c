@@ -203,7 +203,7 @@ static void dense_sweep(void)
             int32_t step = 899; /* 0.0137 deg */
             dhs_random_q(d, q);
             dhs_q_from_double(&r, q, qq);
-            if (DHT_ITER_DIV > 1) step = step * (int32_t)DHT_ITER_DIV;
+            if (dht_iter_div() > 1) step = step * (int32_t)dht_iter_div();
             for (v = lo; v <= hi - step; v += step) {
                 qq[j] = v;
                 fk_q_ok(&r, qq, &T);
