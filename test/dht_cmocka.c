@@ -19,7 +19,7 @@ static void dht_trampoline(void **state)
 
 void dht_fail(const char *file, int line, const char *fmt, ...)
 {
-    char buf[512];
+    char buf[1024];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(buf, sizeof buf, fmt, ap);
