@@ -39,3 +39,14 @@ add_test(NAME dht_iter_div_rejects_0
           sh $<TARGET_FILE:test_status>)
 add_test(NAME dht_seed_printed
   COMMAND sh -c "DHT_SEED=0xDEADbeef \"$1\" | grep -q 'seed 0xdeadbeef (DHT_SEED)'" sh $<TARGET_FILE:test_status>)
+
+# A few seeded suites also at fixed seeds other than the default, among
+# them seeds whose inputs come close to the bounds (T*T^-1 of frames with
+# |R^T R - I| near 5 LSB, two-joint chains near 3.5 LSB, an exp input that
+# needs the carried length).
+foreach(_seed 0x06c45d188009454f 0xdeadbeef)
+  foreach(_suite test_frame_q test_fk_q test_rotvec)
+    add_test(NAME ${_suite}_seed_${_seed} COMMAND ${_suite})
+    set_tests_properties(${_suite}_seed_${_seed} PROPERTIES ENVIRONMENT "DHT_SEED=${_seed}" TIMEOUT 600)
+  endforeach()
+endforeach()
