@@ -42,9 +42,9 @@ add_test(NAME dht_seed_printed
 
 # A few seeded suites also at fixed seeds other than the default, among
 # them seeds whose inputs come close to the bounds (T*T^-1 of frames with
-# |R^T R - I| near 5 LSB, two-joint chains near 3.5 LSB, an exp input that
-# needs the carried length).
-foreach(_seed 0x06c45d188009454f 0xdeadbeef)
+# |R^T R - I| near 5 LSB, rot_axis frames at 3 LSB of |R^T R - I|,
+# two-joint chains near 3.5 LSB, exp and log inputs near their bounds).
+foreach(_seed 0x06c45d188009454f 0xdeadbeef 0xe6495f5d102301eb 0x9fea7dfc79d452d9)
   foreach(_suite test_frame_q test_fk_q test_rotvec)
     add_test(NAME ${_suite}_seed_${_seed} COMMAND ${_suite})
     set_tests_properties(${_suite}_seed_${_seed} PROPERTIES ENVIRONMENT "DHT_SEED=${_seed}" TIMEOUT 600)

@@ -78,8 +78,9 @@ void dh_frame_rotz_q(dh_q16 deg, dh_frame_q *F);
  * int32 values including INT32_MIN (the unit axis is exact to about 2^-44;
  * only an INT32_MIN component costs the others their lowest bit). The
  * result is given one re-orthonormalisation step
- * (dh_frame_orthonormalize_chk_q()). Measured: entries within 1.93 LSB of
- * the exact formula (dh_sincos_q's error included), |R^T R - I| <= 2 LSB.
+ * (dh_frame_orthonormalize_chk_q()). Entries within 3 LSB of the exact
+ * formula (dh_sincos_q's error included; checked over 200 seeds of random
+ * axes), dh_frame_ortho_error_q(F) <= 3 (derived in docs/design.md).
  *
  * @param[out] F frame to write.
  * @param kx,ky,kz axis, any common scale (int32).
