@@ -330,7 +330,7 @@ dh_status dh_rotvec_to_mat3_f32(const dh_vec3_f32 *phi, dh_mat3_f32 *R);
  *        t in [0, pi], so that dh_rotvec_to_mat3_f32(phi) == R.
  * Accurate down to t == 0 and up to t == pi, where phi and -phi are the
  * same rotation and the sign follows dh_mat3_to_quat_f32 (method:
- * docs/design.md). Error bounds: |phi - phi_exact| <= 6e-7 rad for
+ * docs/design.md). Error bounds: |phi - phi_exact| <= 7.5e-7 rad for
  * t <= pi - 1e-3; within 1e-3 of pi only the reproduced matrix is
  * meaningful: R reproduced within 5.5e-7 per entry.
  * @return DH_OK; DH_ERR_NAN; DH_ERR_NOT_RIGID (see file comment). phi
