@@ -127,7 +127,7 @@ static void dh_sum2(float a, float b, float *s, float *e)
  * unevaluated float pair, the float square root th, and the correction
  * tl = (x^2 + y^2 + z^2 - th^2) / (2 th) from the exact residual (th^2 is
  * within 2 ulp of the sum, so s - ph is exact by Sterbenz's lemma). */
-static float dh_norm3_2(float x, float y, float z, float *tl)
+static DH_NOINLINE float dh_norm3_2(float x, float y, float z, float *tl)
 {
     float h1, l1, h2, l2, h3, l3, s1, e1, s2, e2, th, ph, pl;
     dh_square2(x, &h1, &l1);
