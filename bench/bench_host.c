@@ -1,6 +1,6 @@
 /*
  * bench_host.c - host benchmark of dhmath against peer libraries
- * (GitHub issue 6). Run through tools/bench.sh, which also collects the
+ * (the speed goals of docs/performance.md). Run through tools/bench.sh, which also collects the
  * callgrind instruction counts and writes docs/performance_host.md.
  *
  * Usage:

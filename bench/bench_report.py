@@ -4,7 +4,7 @@
 Inputs: the timing CSV of bench_host (--csv), the callgrind_annotate
 --inclusive=yes output of `bench_host --count N`, N, and the build directory
 (for the compile flags). Writes the markdown table of ns/op, instructions/op
-and ratios, and checks the goals of issue 6 with the numbers of this run.
+and ratios, and checks the speed goals (docs/performance.md) with the numbers of this run.
 """
 import argparse
 import csv
@@ -22,7 +22,7 @@ PRIMARY = {"sincos_f32": "dh_sincos_f32", "sincos_q": "dh_sincos_q", "compose": 
            "mul4": "dh_mul", "inv_rigid": "dh_inv_rigid", "inv_general": "dh_inv",
            "fk_puma": "dh_fk_f32"}
 
-# (title, dhmath id, peer id, kind, target, issue author's peer figure)
+# (title, dhmath id, peer id, kind, target, peer figure given with the goal)
 #  kind "speedup": peer_time / dh_time must be >= target
 #  kind "ratio":   dh_time / peer_time must be <= target
 GOALS = [
@@ -194,13 +194,13 @@ def main():
     for r in rows:
         a("* `%s`: %s" % (r["id"], r["desc"]))
     a("")
-    a("## Goals of issue 6 (this run)")
+    a("## Speed goals (this run)")
     a("")
     a("Verdict on the median net times; the ratio of the minimum times (less")
     a("affected by other load on the host) and of the instruction counts are")
     a("given next to it.")
     a("")
-    a("| goal | target | dhmath net ns / Ir | peer net ns / Ir | measured (median net) | measured (min) | measured (Ir) | met? | issue author's peer figure |")
+    a("| goal | target | dhmath net ns / Ir | peer net ns / Ir | measured (median net) | measured (min) | measured (Ir) | met? | peer figure given with the goal |")
     a("|---|---|---|---|---|---|---|---|---|")
     verdict = {}
     for title, d, p, kind, target, author in GOALS:

@@ -168,10 +168,24 @@ const char *dh_expr_parse_number(const char *buf, size_t len, double *out)
     errno = 0;
     v = strtod(tmp, &end);
     if (end != tmp + len) return "not a number";
-    if (errno == ERANGE || !isfinite(v) || fabs(v) > (double)FLT_MAX)
+    /* Accepted: the values that round to a finite float (|v| below the
+     * overflow threshold FLT_MAX + half an ulp = 0x1.ffffffp+127; a value
+     * between FLT_MAX and it is FLT_MAX) and, below FLT_MIN, the values
+     * that a subnormal float holds to float precision (relative error
+     * <= 2^-24, as rounding a normal float): every float printed with %.9g
+     * reads back as the same float, while 1e-45 (rounds to 1.4e-45) and
+     * 1e-46 (rounds to 0) are rejected rather than silently changed. */
+    if (!isfinite(v) || (errno == ERANGE && fabs(v) > 1.0) || fabs(v) >= 0x1.ffffffp+127)
         return "out of float range";
-    if (v != 0.0 && fabs(v) < (double)FLT_MIN)
-        return "out of float range (too small: underflows)";
+    if (errno == ERANGE) return "out of float range (too small: underflows to 0)";
+    if (fabs(v) > (double)FLT_MAX) {
+        v = (v > 0.0) ? (double)FLT_MAX : -(double)FLT_MAX;
+    } else if (v != 0.0 && fabs(v) < (double)FLT_MIN) {
+        float f = (float)v;
+        if (f == 0.0f) return "out of float range (too small: underflows to 0)";
+        if (fabs((double)f - v) > fabs(v) * 0x1p-24)
+            return "out of float range (too small: a subnormal float cannot hold it to float precision)";
+    }
     *out = v;
     return NULL;
 }

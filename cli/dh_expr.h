@@ -47,7 +47,7 @@ typedef struct {
  * @return 0 on success, -1 on error.
  * Errors: syntax (unknown term, bad number, wrong arity, separators,
  * unbalanced parentheses, nesting deeper than DH_EXPR_MAX_DEPTH), NaN/Inf
- * or out-of-float-range numbers (|x| > FLT_MAX or 0 < |x| < FLT_MIN),
+ * or out-of-float-range numbers (as dh_expr_parse_number),
  * zero rotation axis, persp focal length 0, singular inv(), and
  * intermediate products that are not finite.
  */
@@ -67,8 +67,12 @@ int dh_expr_eval_q(const char *buf, size_t len, dh_frame_q *out, dh_expr_error *
 /**
  * Parse all of buf[0..len) as one decimal number: optional sign, digits
  * with an optional point, optional exponent. No whitespace, hexadecimal,
- * NaN or Inf. The value must be a finite float: |x| <= FLT_MAX, and a
- * non-zero value must not underflow (|x| >= FLT_MIN).
+ * NaN or Inf. The value must round to a finite float (a value between
+ * FLT_MAX and the overflow threshold FLT_MAX + half an ulp is returned as
+ * +-FLT_MAX, the float it rounds to); a non-zero value below FLT_MIN must
+ * round to a non-zero subnormal float with a relative error <= 2^-24 (float
+ * precision), so every float printed with %.9g is accepted and reads back
+ * as the same float, while e.g. 1e-45 and 1e-46 are errors.
  * @param out  receives the value (as double) on success; untouched on error
  * @return NULL on success, else a static message naming the problem.
  */

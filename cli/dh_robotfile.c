@@ -14,6 +14,7 @@
 typedef struct {
     const char *name;
     dh_rf_error *err;
+    const dh_robotfile *rf;   /* the description being built (NULL while parsing) */
 } ctx;
 
 static int is_blank(char c)
@@ -157,6 +158,7 @@ int dh_robotfile_parse(const char *name, const char *buf, size_t len, dh_robotfi
 
     c.name = name ? name : "<robot>";
     c.err = err;
+    c.rf = NULL;
     memset(rf, 0, sizeof *rf);
     rf->conv = DH_CONV_STANDARD;
     if (!buf) len = 0;
@@ -233,6 +235,34 @@ static int build_frame(const ctx *c, const dh_rf_frame *f, const char *kw, int f
     return 0;
 }
 
+/* With --fixed: the first constant of joint k (0-based) that has no
+ * fixed-point form, named with its value and the format it misses (the
+ * rule of dh_robot_add_joint_f32: |a|, |d| < 2^(31-DH_QPOS_FRAC) units,
+ * |alpha|, |theta| < 32768 deg, on the float values stored). */
+static int joint_q_error(const ctx *c, const dh_robot *r, unsigned k)
+{
+    static const char *const names[4] = { "a", "d", "alpha", "theta" };
+    const dh_joint *j = &r->joint[k];
+    const dh_rf_joint *fj = &c->rf->joint[k];
+    const float v[4] = { j->a, j->d, j->alpha_deg, j->theta_deg };
+    const double given[4] = { fj->a, fj->d, fj->alpha, fj->theta };
+    unsigned i;
+    for (i = 0; i < 4u; i++) {
+        const int len = i < 2u;
+        const float lim = len ? (float)(1L << (31 - DH_QPOS_FRAC)) : 32768.0f;
+        char as_float[40] = "";
+        if (!(v[i] >= lim || v[i] < -lim)) continue;
+        if ((double)v[i] != given[i]) (void)snprintf(as_float, sizeof as_float, " (%.9g in float)", (double)v[i]);
+        return fail(c, fj->line, 0,
+                    "joint %u: %s=%.15g%s does not fit the fixed-point %s Q%d.%d of --fixed "
+                    "(it needs %g <= %s < %g%s)",
+                    k + 1u, names[i], given[i], as_float, len ? "length format" : "angle format (degrees)",
+                    len ? 32 - DH_QPOS_FRAC : 16, len ? DH_QPOS_FRAC : 16, -(double)lim, names[i],
+                    (double)lim, len ? " length units" : " deg");
+    }
+    return fail(c, fj->line, 0, "joint %u: a constant does not fit the fixed-point formats of --fixed", k + 1u);
+}
+
 int dh_robotfile_build(const char *name, const dh_robotfile *rf, int fixed, dh_robot *r,
                        dh_rf_error *err)
 {
@@ -241,6 +271,7 @@ int dh_robotfile_build(const char *name, const dh_robotfile *rf, int fixed, dh_r
     dh_status st;
     c.name = name ? name : "<robot>";
     c.err = err;
+    c.rf = rf;
     st = dh_robot_init(r, rf->conv);
     if (st != DH_OK) return fail(&c, 1u, 0, "robot: %s", dh_status_str(st));
     for (k = 0; k < rf->n; k++) {
@@ -248,6 +279,7 @@ int dh_robotfile_build(const char *name, const dh_robotfile *rf, int fixed, dh_r
         st = dh_robot_add_joint_f32(r, j->type, (float)j->theta, (float)j->d, (float)j->a,
                                     (float)j->alpha);
         if (st != DH_OK) return fail(&c, j->line, 0, "joint rejected by the library: %s", dh_status_str(st));
+        if (fixed && (r->flags & DH_ROBOT_Q_NO_JOINT) != 0u) return joint_q_error(&c, r, k);
         if (j->has_limits) {
             st = dh_robot_set_limits_f32(r, k, (float)j->qmin, (float)j->qmax);
             if (st != DH_OK)

@@ -83,7 +83,10 @@ int dh_robotfile_parse(const char *name, const char *buf, size_t len, dh_robotfi
  * Build a library robot from a parsed file: dh_robot_init, one
  * dh_robot_add_joint_f32 per joint, limits, and base/tool. With fixed != 0
  * the base and tool are evaluated on the fixed-point EXPR path and set with
- * dh_robot_set_base_q/dh_robot_set_tool_q (after the float ones).
+ * dh_robot_set_base_q/dh_robot_set_tool_q (after the float ones), and a
+ * joint constant without a fixed-point form (|a|, |d| >= 2^(31-DH_QPOS_FRAC),
+ * |alpha|, |theta| >= 32768 deg) is an error naming the joint, the constant,
+ * its value and the range it misses.
  * @return 0, or -1 with err naming the file line the library rejected.
  */
 int dh_robotfile_build(const char *name, const dh_robotfile *rf, int fixed, dh_robot *r,

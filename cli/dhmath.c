@@ -7,18 +7,21 @@
  * checked before the first byte is printed.
  * See docs/cli.md for the reference.
  */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "dh_expr.h"
+#include "dh_gen.h"
 #include "dh_robotfile.h"
 #include "dhmath/dh_fixed.h"
 #include "dhmath/dh_kin.h"
 #include "dhmath/dh_mat4.h"
 #include "dhmath/dh_robot.h"
 #include "dhmath/dh_rot.h"
+#include "dhmath/dhmath.h"
 
 #define EXIT_USAGE 2
 #define EXIT_ERR 2
@@ -46,13 +49,16 @@ static const char k_usage[] =
     "                                  scipy Rotation: XYZ intrinsic (Rot(x,a) Rot(y,b)\n"
     "                                  Rot(z,c)), xyz extrinsic; 24 sequences\n"
     "  quat EXPR                       unit quaternion of EXPR's rotation: w x y z (w >= 0)\n"
+    "  gen ROBOT NAME                  C source defining const dh_robot NAME (flash)\n"
     "  help                            this text\n"
+    "  --version                       program and library version\n"
     "\n"
     "EXPR: product, left to right, of terms separated by spaces or '*':\n"
     "  trans(x,y,z) rotx(deg) roty(deg) rotz(deg) rot(kx,ky,kz,deg)\n"
     "  scale(sx,sy,sz) persp(x|y|z,f) ident inv(EXPR)\n"
     "  e.g. dhmath eval \"trans(4,-3,7) roty(90) rotz(90)\"\n"
     "Joint values: degrees for revolute joints, length units for prismatic.\n"
+    "'-' as EXPR or ROBOT reads it from standard input (once per command).\n"
     "Numbers are printed with %.9g. Exit status: 0 ok, 2 error, 3 ik not converged.\n";
 
 /* ---- messages ----------------------------------------------------------- */
@@ -142,10 +148,12 @@ typedef struct {
     const char *tol_pos, *tol_rot, *w_rot, *max_iter;
     const char *pos[8];
     int npos;
+    int nstdin;               /* positional "-" arguments (standard input) */
 } opts;
 
 /* Split argv into options and positional arguments. Negative numbers are
- * positional; anything else starting with "--" must be a known option. */
+ * positional; anything else starting with "--" must be a known option, given
+ * at most once. "-" (standard input) may be given once. */
 static int parse_opts(int argc, char **argv, opts *o, const char *allowed)
 {
     int k, only_pos = 0;
@@ -154,12 +162,16 @@ static int parse_opts(int argc, char **argv, opts *o, const char *allowed)
         const char *a = argv[k];
         if (!only_pos && a[0] == '-' && a[1] == '-') {
             const char *name = a + 2;
+            int *flag = NULL;
             if (a[2] == '\0') { only_pos = 1; continue; }
-            if (strcmp(name, "fixed") == 0 && strstr(allowed, "fixed")) o->fixed = 1;
-            else if (strcmp(name, "frames") == 0 && strstr(allowed, "frames")) o->frames = 1;
-            else if (strcmp(name, "position") == 0 && strstr(allowed, "position")) o->position = 1;
-            else if (strcmp(name, "expr") == 0 && strstr(allowed, "expr")) o->expr = 1;
-            else {
+            if (strcmp(name, "fixed") == 0 && strstr(allowed, "fixed")) flag = &o->fixed;
+            else if (strcmp(name, "frames") == 0 && strstr(allowed, "frames")) flag = &o->frames;
+            else if (strcmp(name, "position") == 0 && strstr(allowed, "position")) flag = &o->position;
+            else if (strcmp(name, "expr") == 0 && strstr(allowed, "expr")) flag = &o->expr;
+            if (flag) {
+                if (*flag) return usage_error("option '%s' given more than once", a);
+                *flag = 1;
+            } else {
                 /* options with a value: --name VALUE or --name=VALUE */
                 static const char *const valued[] = { "q0", "tol-pos", "tol-rot", "w-rot", "max-iter" };
                 const char **slot[5];
@@ -175,6 +187,7 @@ static int parse_opts(int argc, char **argv, opts *o, const char *allowed)
                     if (strlen(valued[v]) == nl && strncmp(name, valued[v], nl) == 0 && strstr(allowed, valued[v]))
                         break;
                 if (v == 5u) return usage_error("unknown or inapplicable option '%s'", a);
+                if (*slot[v]) return usage_error("option '%s' given more than once", a);
                 if (eq) *slot[v] = eq + 1;
                 else if (k + 1 < argc) *slot[v] = argv[++k];
                 else return usage_error("option '%s' needs a value", a);
@@ -185,16 +198,60 @@ static int parse_opts(int argc, char **argv, opts *o, const char *allowed)
             return usage_error("unknown option '%s'", a);
         if (o->npos >= (int)(sizeof o->pos / sizeof o->pos[0]))
             return usage_error("too many arguments (at '%s')", a);
+        if (strcmp(a, "-") == 0 && o->nstdin++)
+            return usage_error("'%s' (standard input) given more than once", a);
         o->pos[o->npos++] = a;
     }
     return 0;
 }
 
-static int eval_expr(const char *s, dh_mat4_f32 *T)
+/* All of f (at most MAX_ROBOT_FILE bytes) into a malloc'd *buf (caller frees). */
+static int read_all(FILE *f, const char *what, char **buf, size_t *len)
+{
+    *buf = (char *)malloc((size_t)MAX_ROBOT_FILE + 1u);
+    if (!*buf) return error_msg("out of memory", NULL);
+    *len = fread(*buf, 1, (size_t)MAX_ROBOT_FILE + 1u, f);
+    if (ferror(f) || *len > (size_t)MAX_ROBOT_FILE) {
+        fprintf(stderr, "dhmath: error: %s: %s\n", what, ferror(f) ? "cannot read it" : "larger than 1 MiB");
+        free(*buf);
+        *buf = NULL;
+        return EXIT_ERR;
+    }
+    return 0;
+}
+
+/* EXPR argument s ("-": standard input) in float (fixed == 0, into T) or on
+ * the fixed-point path (into F) */
+static int eval_expr_arg(const char *s, int fixed, dh_mat4_f32 *T, dh_frame_q *F)
 {
     dh_expr_error e;
-    if (dh_expr_eval_f32(s, strlen(s), T, &e)) return expr_error(&e);
-    return 0;
+    char *in = NULL;
+    size_t len = strlen(s);
+    int bad, rc;
+    if (strcmp(s, "-") == 0) {
+        if ((rc = read_all(stdin, "EXPR from standard input", &in, &len)) != 0) return rc;
+        s = in;
+    }
+    bad = fixed ? dh_expr_eval_q(s, len, F, &e) : dh_expr_eval_f32(s, len, T, &e);
+    free(in);
+    return bad ? expr_error(&e) : 0;
+}
+
+static int eval_expr(const char *s, dh_mat4_f32 *T)
+{
+    return eval_expr_arg(s, 0, T, NULL);
+}
+
+/* A projective EXPR (bottom row not 0 0 0 1, e.g. persp) has no rotation:
+ * the error for axis, euler and quat (ik rejects such a target too). */
+static int projective_error(const char *cmd, const dh_mat4_f32 *T)
+{
+    if (DH_M4(T, 3, 0) == 0.0f && DH_M4(T, 3, 1) == 0.0f && DH_M4(T, 3, 2) == 0.0f && DH_M4(T, 3, 3) == 1.0f)
+        return 0;
+    fprintf(stderr, "dhmath: error: %s: EXPR is not rigid: its bottom row is %.9g %.9g %.9g %.9g, not 0 0 0 1 "
+            "(a perspective transform has no rotation)\n", cmd, (double)DH_M4(T, 3, 0), (double)DH_M4(T, 3, 1),
+            (double)DH_M4(T, 3, 2), (double)DH_M4(T, 3, 3));
+    return EXIT_ERR;
 }
 
 static int parse_num_arg(const char *s, const char *what, double *v)
@@ -238,27 +295,26 @@ static int parse_list(const char *s, unsigned n, double *v, const char *what)
     return 0;
 }
 
+/* robot file path ("-": standard input, named <stdin> in messages) */
 static int load_robot(const char *path, int fixed, dh_robot *r, dh_robotfile *rf)
 {
-    FILE *f = fopen(path, "rb");
+    const int in = strcmp(path, "-") == 0;
+    FILE *f = in ? stdin : fopen(path, "rb");
     char *buf;
     size_t len;
     dh_rf_error e;
-    int rc = 0;
+    int rc;
+    char what[300];
     if (!f) {
         fprintf(stderr, "dhmath: error: cannot open robot file '%s'\n", path);
         return EXIT_ERR;
     }
-    buf = (char *)malloc((size_t)MAX_ROBOT_FILE + 1u);
-    if (!buf) {
-        fclose(f);
-        return error_msg("out of memory", NULL);
-    }
-    len = fread(buf, 1, (size_t)MAX_ROBOT_FILE + 1u, f);
-    if (ferror(f)) rc = error_msg("cannot read robot file", path);
-    else if (len > (size_t)MAX_ROBOT_FILE) rc = error_msg("robot file larger than 1 MiB", path);
-    fclose(f);
-    if (!rc && dh_robotfile_parse(path, buf, len, rf, &e)) rc = error_msg(e.msg, NULL);
+    if (in) path = "<stdin>";
+    (void)snprintf(what, sizeof what, "robot file %s", path);
+    rc = read_all(f, what, &buf, &len);
+    if (!in) fclose(f);
+    if (rc) return rc;
+    if (dh_robotfile_parse(path, buf, len, rf, &e)) rc = error_msg(e.msg, NULL);
     if (!rc && dh_robotfile_build(path, rf, fixed, r, &e)) rc = error_msg(e.msg, NULL);
     free(buf);
     return rc;
@@ -275,8 +331,7 @@ static int cmd_eval(int argc, char **argv)
     if (o.npos != 1) return usage_error("eval takes one EXPR (quote it): dhmath eval [--fixed] EXPR", NULL);
     if (o.fixed) {
         dh_frame_q F;
-        dh_expr_error e;
-        if (dh_expr_eval_q(o.pos[0], strlen(o.pos[0]), &F, &e)) return expr_error(&e);
+        if ((rc = eval_expr_arg(o.pos[0], 1, NULL, &F)) != 0) return rc;
         frame_to_rows(&F, &M);
     } else {
         dh_mat4_f32 T;
@@ -299,6 +354,7 @@ static int cmd_axis(int argc, char **argv)
     if (rc) return rc;
     if (o.npos != 1) return usage_error("axis takes one EXPR: dhmath axis EXPR", NULL);
     if ((rc = eval_expr(o.pos[0], &T)) != 0) return rc;
+    if ((rc = projective_error("axis", &T)) != 0) return rc;
     st = dh_mat4_to_axis_angle_f32(&T, &k, &th);
     if (st != DH_OK) return error_msg("axis: the rotation part of EXPR has no axis/angle", dh_status_str(st));
     if (!isfinite(k.x) || !isfinite(k.y) || !isfinite(k.z) || !isfinite(th))
@@ -438,8 +494,13 @@ static int cmd_fk(int argc, char **argv)
         else st = dh_fk_q(&r, q, &Tend);
         if (st == DH_ERR_UNAVAILABLE)
             return error_msg("fk --fixed: a constant of the robot does not fit the fixed-point formats", NULL);
-        if (st == DH_ERR_OVERFLOW)
-            return error_msg("overflow: the fixed-point forward kinematics saturates", NULL);
+        if (st == DH_ERR_OVERFLOW) {
+            fprintf(stderr, "dhmath: error: overflow: fk --fixed: an entry of a frame of the chain saturates "
+                    "(positions must lie in the fixed-point length format Q%d.%d, |x| < %ld length units; rotation "
+                    "entries in Q2.30); fk without --fixed computes it in float\n", 32 - DH_QPOS_FRAC, DH_QPOS_FRAC,
+                    1L << (31 - DH_QPOS_FRAC));
+            return EXIT_ERR;
+        }
         if (st != DH_OK) return error_msg("fk --fixed", dh_status_str(st));
         nout = 0;
         if (o.frames)
@@ -511,6 +572,42 @@ static double robot_reach(const dh_robot *r, const dh_robotfile *rf)
     return L;
 }
 
+/* w_rot accepted by dh_ik_f32: > 0 with w_rot^2 * 16 finite in float (its
+ * contract: w_rot <= 4.6e18) */
+static int ik_weight_ok(double w)
+{
+    float f;
+    if (!(w > 0.0) || w > (double)FLT_MAX) return 0;
+    f = (float)w;
+    return isfinite(f * f * 16.0f);
+}
+
+/* DH_ERR_NOT_RIGID from dh_ik_f32: which frame is not rigid. The checks are
+ * the contract's in its order: the target's bottom row, the target's
+ * rotation when the mask drives it, then the end frame's rotation, which is
+ * a rotation for any joint values unless the base or the tool is not rigid. */
+static int ik_not_rigid(const char *path, const dh_robot *r, const dh_robotfile *rf, const dh_mat4_f32 *target,
+                        uint32_t mask)
+{
+    float e[6];
+    if (strcmp(path, "-") == 0) path = "<stdin>";
+    if (projective_error("ik", target)) return EXIT_ERR;
+    if ((mask & (DH_IK_RX | DH_IK_RY | DH_IK_RZ)) != 0u && dh_pose_error_f32(target, target, e) != DH_OK)
+        return error_msg("ik: the rotation part of the target EXPR is not a rotation (not orthonormal with det +1; "
+                         "--position ignores it)", NULL);
+    if (dh_pose_error_f32(&r->base, &r->base, e) != DH_OK) {
+        fprintf(stderr, "dhmath: error: ik: the robot's base (%s:%u) is not rigid: its 3x3 part is not a rotation, "
+                "so the end frame has no orientation to match (--position ignores it)\n", path, rf->base.line);
+        return EXIT_ERR;
+    }
+    if (dh_pose_error_f32(&r->tool, &r->tool, e) != DH_OK) {
+        fprintf(stderr, "dhmath: error: ik: the robot's tool (%s:%u) is not rigid: its 3x3 part is not a rotation, "
+                "so the end frame has no orientation to match (--position ignores it)\n", path, rf->tool.line);
+        return EXIT_ERR;
+    }
+    return error_msg("ik: the end frame of the robot is not rigid (its rotation part is not a rotation)", NULL);
+}
+
 static int cmd_ik(int argc, char **argv)
 {
     opts o;
@@ -534,15 +631,27 @@ static int cmd_ik(int argc, char **argv)
     n = r.n;
     for (k = 0; k < n; k++) qd[k] = 0.0;
     if (o.q0 && (rc = parse_list(o.q0, n, qd, "--q0")) != 0) return rc;
-    for (k = 0; k < n; k++) q0[k] = (float)qd[k];
-    dh_ik_params_default(&prm);
-    /* The library defaults are for metres. Scale the length-dependent ones
-     * by the robot's size L = max(1, reach) so a millimetre robot gets
-     * tol_pos ~1e-3 mm and w_rot ~1000 mm/rad. */
+    for (k = 0; k < n; k++) {
+        const dh_joint *j = &r.joint[k];
+        q0[k] = (float)qd[k];
+        if (j->qmin <= j->qmax && (q0[k] < j->qmin || q0[k] > j->qmax))
+            fprintf(stderr, "dhmath: warning: %s joint %u value %.9g outside its limits [%.9g, %.9g]: "
+                    "clamped to %.9g\n", o.q0 ? "--q0:" : "start (no --q0, all zeros):", k + 1, (double)q0[k],
+                    (double)j->qmin, (double)j->qmax, (double)(q0[k] < j->qmin ? j->qmin : j->qmax));
+    }
+    dh_ik_params_default(&r, &prm);     /* scaled to the robot's size */
+    /* L names the robot's size in the messages: sum of |a| + |d| of the
+     * joints and the base and tool offsets (the library's L, which has the
+     * tool's length instead of its offsets and no base, is near it). The
+     * library scales w_rot to L / 4, which needs L^2 finite in float. */
     L = robot_reach(&r, &rf);
-    if (L < 1.0) L = 1.0;
-    prm.tol_pos = (float)((double)prm.tol_pos * L);
-    prm.w_rot = (float)((double)prm.w_rot * L);
+    if (!o.w_rot && !ik_weight_ok(0.25 * L)) {
+        fprintf(stderr, "dhmath: error: ik: the robot's size overflows the float IK: L = %.9g (sum of |a| and |d| "
+                "of the joints and the base and tool offsets) makes the default weight w_rot = L/4 = %.9g length "
+                "units per radian, and dh_ik_f32 needs w_rot^2 finite in float (w_rot <= 4.6e18); give --w-rot, or "
+                "describe the robot in a larger length unit\n", L, 0.25 * L);
+        return EXIT_ERR;
+    }
     if (o.position) prm.mask = DH_IK_POSITION;
     if (o.tol_pos) {
         if ((rc = parse_num_arg(o.tol_pos, "--tol-pos", &x)) != 0) return rc;
@@ -557,6 +666,11 @@ static int cmd_ik(int argc, char **argv)
     if (o.w_rot) {
         if ((rc = parse_num_arg(o.w_rot, "--w-rot", &x)) != 0) return rc;
         if (!(x > 0.0)) return error_msg("--w-rot must be > 0", NULL);
+        if (!ik_weight_ok(x)) {
+            fprintf(stderr, "dhmath: error: --w-rot %s is too large: dh_ik_f32 needs w_rot^2 finite in float "
+                    "(w_rot <= 4.6e18)\n", o.w_rot);
+            return EXIT_ERR;
+        }
         prm.w_rot = (float)x;
     }
     if (o.max_iter) {
@@ -566,6 +680,12 @@ static int cmd_ik(int argc, char **argv)
     }
     memset(&res, 0, sizeof res);
     st = dh_ik_f32(&r, &target, q0, &prm, work, sizeof work / sizeof work[0], q, &res);
+    if (st == DH_ERR_NOT_RIGID) return ik_not_rigid(o.pos[0], &r, &rf, &target, prm.mask);
+    if (st == DH_ERR_OVERFLOW) {
+        fprintf(stderr, "dhmath: error: ik: overflow: the forward kinematics or the pose error at the start is not "
+                "finite in float (the robot's size L = %.9g)\n", L);
+        return EXIT_ERR;
+    }
     if (st != DH_OK && st != DH_ERR_NO_CONVERGENCE && st != DH_ERR_UNREACHABLE && st != DH_ERR_SINGULAR)
         return error_msg("ik", dh_status_str(st));
     for (k = 0; k < n; k++)
@@ -579,11 +699,12 @@ static int cmd_ik(int argc, char **argv)
     return st == DH_OK ? 0 : EXIT_NOCONV;
 }
 
-static int rotation_of(const char *expr, dh_mat3_f32 *R)
+static int rotation_of(const char *cmd, const char *expr, dh_mat3_f32 *R)
 {
     dh_mat4_f32 T;
     int rc = eval_expr(expr, &T);
     if (rc) return rc;
+    if ((rc = projective_error(cmd, &T)) != 0) return rc;
     dh_mat4_get_rot_f32(&T, R);
     return 0;
 }
@@ -610,7 +731,7 @@ static int cmd_euler(int argc, char **argv)
     if (dh_euler_parse(o.pos[0], &seq) != DH_OK)
         return usage_error("unknown Euler sequence '%s' (three axis letters, uppercase intrinsic, "
                            "lowercase extrinsic, no two equal neighbours: XYZ, ZYX, ZYZ, xyz, ...)", o.pos[0]);
-    if ((rc = rotation_of(o.pos[1], &R)) != 0) return rc;
+    if ((rc = rotation_of("euler", o.pos[1], &R)) != 0) return rc;
     st = dh_mat3_to_euler_f32(&R, seq, a);
     if (st != DH_OK) return rot_error("euler", st);
     if (!isfinite(a[0]) || !isfinite(a[1]) || !isfinite(a[2])) return error_msg("euler: result is not finite", NULL);
@@ -629,7 +750,7 @@ static int cmd_quat(int argc, char **argv)
     int rc = parse_opts(argc, argv, &o, "");
     if (rc) return rc;
     if (o.npos != 1) return usage_error("quat takes one EXPR: dhmath quat EXPR", NULL);
-    if ((rc = rotation_of(o.pos[0], &R)) != 0) return rc;
+    if ((rc = rotation_of("quat", o.pos[0], &R)) != 0) return rc;
     st = dh_mat3_to_quat_f32(&R, &q);
     if (st != DH_OK) return rot_error("quat", st);
     if (!isfinite(q.w) || !isfinite(q.x) || !isfinite(q.y) || !isfinite(q.z))
@@ -641,16 +762,38 @@ static int cmd_quat(int argc, char **argv)
     return finish();
 }
 
+static int cmd_gen(int argc, char **argv)
+{
+    opts o;
+    dh_robot r;
+    dh_robotfile rf;
+    const char *why;
+    int rc = parse_opts(argc, argv, &o, "");
+    if (rc) return rc;
+    if (o.npos != 2) return usage_error("gen takes ROBOTFILE NAME, e.g. dhmath gen puma560.dh puma560", NULL);
+    if ((why = dh_gen_name_problem(o.pos[1])) != NULL) {
+        fprintf(stderr, "dhmath: error: gen: NAME '%.80s' is not a usable C identifier: %s\n", o.pos[1], why);
+        return EXIT_ERR;
+    }
+    if ((rc = load_robot(o.pos[0], 0, &r, &rf)) != 0) return rc;
+    if (dh_robot_check(&r) != DH_OK) return error_msg("gen: the built robot fails dh_robot_check", NULL);
+    dh_gen_write(stdout, &r, o.pos[1], o.pos[0]);
+    return finish();
+}
+
 int main(int argc, char **argv)
 {
     const char *cmd;
-    if (argc < 2) {
-        fputs(k_usage, stderr);
-        return EXIT_USAGE;
-    }
+    if (argc < 2) return usage_error("no COMMAND given (eval, axis, point, plane, fk, jacobian, ik, "
+                                     "euler, quat, help, --version)", NULL);
     cmd = argv[1];
     if (strcmp(cmd, "help") == 0 || strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0) {
         fputs(k_usage, stdout);
+        return finish();
+    }
+    if (strcmp(cmd, "--version") == 0) {
+        if (argc > 2) return usage_error("--version takes no arguments", NULL);
+        printf("dhmath %d.%d.%d\n", DHMATH_VERSION_MAJOR, DHMATH_VERSION_MINOR, DHMATH_VERSION_PATCH);
         return finish();
     }
     argc -= 2;
@@ -664,5 +807,6 @@ int main(int argc, char **argv)
     if (strcmp(cmd, "ik") == 0) return cmd_ik(argc, argv);
     if (strcmp(cmd, "euler") == 0) return cmd_euler(argc, argv);
     if (strcmp(cmd, "quat") == 0) return cmd_quat(argc, argv);
+    if (strcmp(cmd, "gen") == 0) return cmd_gen(argc, argv);
     return usage_error("unknown command '%s'", cmd);
 }

@@ -19,8 +19,10 @@
  *    degrees is 0.001 degree off in float), float and Q2.30 rounding a few
  *    1e-7 per product, and rotation errors add without amplification;
  *  - dh_expr_parse_number on the whole buffer: on success the value equals
- *    strtod of the same text, is within the float range, and the text uses
- *    only the documented characters; on error *out is untouched.
+ *    strtod of the same text (or is +-FLT_MAX for a text between FLT_MAX
+ *    and the float overflow threshold), is within the float range and does
+ *    not round to float 0 unless it is 0, and the text uses only the
+ *    documented characters; on error *out is untouched.
  */
 #include <ctype.h>
 #include <float.h>
@@ -71,8 +73,9 @@ static void check_number(const char *buf, size_t len)
         memcpy(tmp, buf, len);
         tmp[len] = '\0';
         r = strtod(tmp, NULL);
-        FZ_CHECK(r == v || (r != r && v != v), "'%s': %.17g vs strtod %.17g", tmp, v, r);
-        FZ_CHECK(fabs(v) <= (double)FLT_MAX && (v == 0.0 || fabs(v) >= (double)FLT_MIN), "'%s' = %g out of float range",
+        FZ_CHECK(r == v || (r != r && v != v) || (fabs(r) > (double)FLT_MAX && fabs(v) == (double)FLT_MAX),
+                 "'%s': %.17g vs strtod %.17g", tmp, v, r);
+        FZ_CHECK(fabs(v) <= (double)FLT_MAX && (v == 0.0 || (float)v != 0.0f), "'%s' = %g out of float range",
                  tmp, v);
     }
 }

@@ -23,38 +23,9 @@ set(CMAKE_RANLIB arm-none-eabi-ranlib CACHE FILEPATH "")
 set(CMAKE_OBJCOPY arm-none-eabi-objcopy CACHE FILEPATH "")
 set(CMAKE_SIZE arm-none-eabi-size CACHE FILEPATH "")
 
-# The compiler check cannot link a bare-metal executable without our
-# startup and linker script: check by building a static library instead.
-set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
-
-# Never pick up host libraries or headers. The compiler driver finds
-# newlib's multilib variant matching the -mcpu/-mfpu flags by itself.
-set(CMAKE_FIND_ROOT_PATH ${CMAKE_CURRENT_LIST_DIR}/no-sysroot)
-set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
-set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
-set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
-set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)
-# The library links libm by name (-lm) so the driver picks the multilib
-# variant (a find_library() hit would be one fixed variant, or the host's).
-set(DHMATH_LIBM m CACHE STRING "libm for the target: linked as -lm")
-
-set(CMAKE_C_FLAGS_INIT "${_dh_arch_flags} -std=c99 -ffunction-sections -fdata-sections")
-set(CMAKE_ASM_FLAGS_INIT "${_dh_arch_flags}")
-set(CMAKE_EXE_LINKER_FLAGS_INIT "-Wl,--gc-sections")
-# CMAKE_C_FLAGS_INIT is ignored when CMAKE_C_FLAGS is given on the command
-# line (-DCMAKE_C_FLAGS=-fstack-usage would silently build for the
-# compiler's default ARMv4T/ARM-mode target): keep the core flags in front.
-if(DEFINED CACHE{CMAKE_C_FLAGS} AND NOT CMAKE_C_FLAGS MATCHES "-mcpu=")
-  set(CMAKE_C_FLAGS "${_dh_arch_flags} -std=c99 -ffunction-sections -fdata-sections ${CMAKE_C_FLAGS}"
-      CACHE STRING "C flags (core flags added by the dhmath toolchain file)" FORCE)
-endif()
-
-# Optimised by default: the target suites run under emulation (and the
-# footprint/guards stages look at optimised code). -DCMAKE_BUILD_TYPE=...
-# still wins.
-if(NOT CMAKE_BUILD_TYPE)
-  set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type (default Release for targets)")
-endif()
+set(_dh_core_flags "${_dh_arch_flags}")
+set(_dh_core_flag_re "-mcpu=")
+include(${CMAKE_CURRENT_LIST_DIR}/dh_cross_common.cmake)
 
 set(DH_TARGET_CPU ${_dh_qemu_cpu} CACHE STRING "QEMU -cpu for target tests")
 set(DH_TARGET_BOARD ${_dh_board} CACHE STRING "QEMU -machine and linker script port/<board>.ld")

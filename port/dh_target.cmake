@@ -1,12 +1,14 @@
-# dh_target.cmake - how target (Cortex-M, QEMU) test executables are linked.
+# dh_target.cmake - how target (Cortex-M or RV32, QEMU) test executables are linked.
 # Included by test/CMakeLists.txt when cross-compiling, after the `dht`
 # library target exists and before the test executables are created.
 #
 # Provides
-#   dh_target_link(<target>)  adds port/startup_cm.c, the board's linker
-#                             script port/${DH_TARGET_BOARD}.ld, newlib with
-#                             semihosting syscalls (rdimon), libm and a map
-#                             file; the executable then runs under
+#   dh_target_link(<target>)  adds the startup (Cortex-M: port/startup_cm.c
+#                             with newlib's semihosting syscalls, rdimon;
+#                             RV32: port/startup_rv.c with picolibc's
+#                             semihosting library), the board's linker
+#                             script port/${DH_TARGET_BOARD}.ld, libm and a
+#                             map file; the executable then runs under
 #                             CMAKE_CROSSCOMPILING_EMULATOR (set by the
 #                             toolchain file).
 #   DH_TARGET_ITER_DIV        divisor for DHT_ITER(n) loop counts on this
@@ -46,6 +48,12 @@ elseif(CMAKE_C_FLAGS MATCHES "cortex-m4")
   set(DH_TARGET_ITER_DIV 50)
 elseif(CMAKE_C_FLAGS MATCHES "cortex-m7")
   set(DH_TARGET_ITER_DIV 20)
+elseif(CMAKE_C_FLAGS MATCHES "rv32ima")
+  # both RV32 cores: QEMU emulates RISC-V F instructions through its
+  # softfloat helpers, so the FPU core is no faster to emulate than soft
+  # float (at the M4F's 50 its suites take several times as long as the
+  # RV32IMAC ones at 100)
+  set(DH_TARGET_ITER_DIV 100)
 else()
   set(DH_TARGET_ITER_DIV 200)
 endif()
@@ -64,16 +72,32 @@ if(NOT DHT_SEED STREQUAL "" AND TARGET dht)
   target_compile_definitions(dht PRIVATE DHT_DEFAULT_SEED=${DHT_SEED})
 endif()
 
+if(CMAKE_SYSTEM_PROCESSOR MATCHES "^riscv")
+  # with a floor() that replaces the wrong one of Debian's picolibc 1.8
+  # (see port/picolibc_floor.c)
+  set(_dh_startup ${_dh_port_dir}/startup_rv.c ${_dh_port_dir}/picolibc_floor.c)
+  # picolibc: its semihosting library for stdio, picolibc.ld (INCLUDEd by
+  # the board script) for the sections
+  set(_dh_libc_opts --oslib=semihost)
+  set(_dh_ld_deps ${_dh_ld})
+  # the fault self-test's expected message (port/startup_rv.c)
+  set(_dh_fault_re "breakpoint at pc 0x")
+else()
+  set(_dh_startup ${_dh_port_dir}/startup_cm.c)
+  set(_dh_libc_opts --specs=rdimon.specs)
+  set(_dh_ld_deps ${_dh_ld} ${_dh_port_dir}/cm_sections.ld)
+  set(_dh_fault_re "(HardFault|UsageFault) at pc 0x")
+endif()
+
 function(dh_target_link tgt)
-  target_sources(${tgt} PRIVATE ${_dh_port_dir}/startup_cm.c)
+  target_sources(${tgt} PRIVATE ${_dh_startup})
   target_link_options(${tgt} PRIVATE
-    -nostartfiles --specs=rdimon.specs
+    -nostartfiles ${_dh_libc_opts}
     -L${_dh_port_dir} -T${_dh_ld}
     -Wl,--gc-sections
     -Wl,-Map=$<TARGET_FILE:${tgt}>.map)
   target_link_libraries(${tgt} PRIVATE m)
-  set_property(TARGET ${tgt} APPEND PROPERTY LINK_DEPENDS
-    ${_dh_ld} ${_dh_port_dir}/cm_sections.ld)
+  set_property(TARGET ${tgt} APPEND PROPERTY LINK_DEPENDS ${_dh_ld_deps})
 endfunction()
 
 # Self-tests of this infrastructure, run by ctest on every target before the
@@ -97,6 +121,12 @@ if(TARGET dht)
   add_test(NAME port_selftest_fault
     COMMAND ${CMAKE_COMMAND} "-DEMU=${_dh_emu}" -DEXE=$<TARGET_FILE:port_selftest_fault>
             -DSTATUS=3
-            "-DEXPECT=about to trap~~\\*\\*\\* dhmath target: (HardFault|UsageFault) at pc 0x"
+            "-DEXPECT=about to trap~~\\*\\*\\* dhmath target: ${_dh_fault_re}"
             -P ${_dh_port_dir}/selftest/expect.cmake)
+endif()
+
+# The firmware examples (examples/firmware/) are built and checked on every
+# target as well.
+if(TARGET dht AND EXISTS ${PROJECT_SOURCE_DIR}/examples/firmware/CMakeLists.txt)
+  add_subdirectory(${PROJECT_SOURCE_DIR}/examples/firmware ${CMAKE_BINARY_DIR}/examples/firmware)
 endif()

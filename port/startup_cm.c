@@ -66,16 +66,7 @@ void *_sbrk(ptrdiff_t incr)
 void Reset_Handler(void);
 void dh_fault_entry(void);
 void dh_fault_report(const uint32_t *frame);
-void _exit(int status);
-
-/* ARM semihosting operations (ARM IHI 0073 "Semihosting for AArch32 and
- * AArch64"). */
-#define DH_SH_SYS_WRITE0 0x04
-#define DH_SH_SYS_EXIT 0x18
-#define DH_SH_SYS_EXIT_EXTENDED 0x20
-#define DH_SH_ADP_STOPPED_APPLICATION_EXIT 0x20026u
-#define DH_SH_ADP_STOPPED_RUNTIME_ERROR 0x20023u
-
+/* The Arm semihosting trap (ARM IHI 0073: BKPT 0xAB on M-profile). */
 static uintptr_t dh_semihost(uintptr_t op, uintptr_t arg)
 {
     register uintptr_t r0 __asm__("r0") = op;
@@ -84,28 +75,8 @@ static uintptr_t dh_semihost(uintptr_t op, uintptr_t arg)
     return r0;
 }
 
-static void dh_sh_puts(const char *s)
-{
-    (void)dh_semihost(DH_SH_SYS_WRITE0, (uintptr_t)s);
-}
-
-/* Ends the emulation with `status` as QEMU's exit status. */
-void _exit(int status)
-{
-    uint32_t block[2];
-    block[0] = DH_SH_ADP_STOPPED_APPLICATION_EXIT;
-    block[1] = (uint32_t)status;
-    (void)dh_semihost(DH_SH_SYS_EXIT_EXTENDED, (uintptr_t)block);
-    /* Only reached if SYS_EXIT_EXTENDED is not implemented: the classic
-     * call cannot carry a status on AArch32, so report success as
-     * "application exit" and anything else as a run-time error (QEMU exits
-     * with 1 for that). */
-    (void)dh_semihost(DH_SH_SYS_EXIT,
-                      status == 0 ? DH_SH_ADP_STOPPED_APPLICATION_EXIT
-                                  : DH_SH_ADP_STOPPED_RUNTIME_ERROR);
-    for (;;) {
-    }
-}
+/* dh_sh_puts, dh_put_hex and _exit (main's status becomes QEMU's) */
+#include "dh_semihost.h"
 
 /* With -nostartfiles there is no crti.o: newlib's exit() still calls
  * __libc_fini_array, which calls _fini. C has no static destructors, so
@@ -142,18 +113,6 @@ void Reset_Handler(void)
     }
     initialise_monitor_handles();
     exit(main());
-}
-
-static void dh_put_hex(char *out, uint32_t v)
-{
-    int i;
-    out[0] = '0';
-    out[1] = 'x';
-    for (i = 0; i < 8; i++) {
-        uint32_t nib = (v >> (28 - 4 * i)) & 0xFu;
-        out[2 + i] = (char)(nib < 10u ? '0' + nib : 'a' + nib - 10u);
-    }
-    out[10] = '\0';
 }
 
 /* Called by dh_fault_entry with the exception stack frame (r0-r3, r12, lr,

@@ -27,6 +27,7 @@
 #define IK_STALL_RATIO 0.99f    /* E must drop below this fraction to count as progress */
 #define IK_HOPELESS_RESTARTS 3u /* restarts for a target beyond the reach bound */
 #define IK_REACH_SLACK 1.0001f  /* relative slack on the reach bound (rounding) */
+#define IK_WSTEP_MAX 1.0f       /* largest rotation weight of the step, relative to L */
 
 /* Workspace layout (floats), n joints; slot s = 0, 1 (current / trial). */
 #define OFF_J(n, s) ((s) * 6u * (n))                 /* 6n each: Jacobian */
@@ -51,7 +52,7 @@ enum {
 };
 
 /* How an attempt ended. */
-enum { K_NONE = 0, K_CONV, K_STALL, K_SING, K_CUT };
+enum { K_NONE = 0, K_CONV, K_STALL, K_CUT };
 /* What the evaluated point is. */
 enum { M_FIRST = 0, M_TRIAL, M_RESTART };
 /* Result of an evaluation. */
@@ -73,14 +74,35 @@ typedef struct {
 } ik_ctx;
 
 
-void dh_ik_params_default(dh_ik_params *p)
+/* Characteristic length L of the robot: sum of |a|, |d|, prismatic travel
+ * and |p_tool|; 1 when that is 0, subnormal or its square overflows. */
+static DH_NOINLINE float ik_length(const dh_robot *r)
 {
+    float L = 0.0f;
+    uint32_t i;
+    for (i = 0; i < r->n && i < (uint32_t)DH_MAX_JOINTS; i++) {
+        const dh_joint *jt = &r->joint[i];
+        L += fabsf(jt->a) + fabsf(jt->d);
+        if (jt->type == DH_JOINT_PRISMATIC && jt->qmin <= jt->qmax)
+            L += (fabsf(jt->qmin) > fabsf(jt->qmax)) ? fabsf(jt->qmin) : fabsf(jt->qmax);
+    }
+    L += dh_sqrtf_(r->tool.m[3][0] * r->tool.m[3][0] + r->tool.m[3][1] * r->tool.m[3][1] +
+                       r->tool.m[3][2] * r->tool.m[3][2]);
+    if (!(L > FLT_MIN) || !dh_isfinite_f32(L * L)) L = 1.0f;
+    return L;
+}
+
+void dh_ik_params_default(const dh_robot *r, dh_ik_params *p)
+{
+    float L;
+    DH_ASSERT(r != NULL);
     DH_ASSERT(p != NULL);
+    L = ik_length(r);
     p->max_iter = 2000u;
     p->mask = DH_IK_FULL;
-    p->tol_pos = 1e-6f;
+    p->tol_pos = 1e-6f * L;
     p->tol_rot = 1e-5f;
-    p->w_rot = 1.0f;
+    p->w_rot = 0.25f * L;
     p->restarts = 200u;
 }
 
@@ -155,19 +177,8 @@ static DH_NOINLINE dh_status ik_args(const ik_ctx *c, size_t work_len)
 /* Characteristic length L and the damping bias into the scalar state. */
 static DH_NOINLINE void ik_scales(const ik_ctx *c)
 {
-    const dh_robot *r = c->r;
     float *S = c->w + OFF_S(c->n);
-    float L = 0.0f;
-    uint32_t i;
-    for (i = 0; i < r->n; i++) {
-        const dh_joint *jt = &r->joint[i];
-        L += fabsf(jt->a) + fabsf(jt->d);
-        if (jt->type == DH_JOINT_PRISMATIC && jt->qmin <= jt->qmax)
-            L += (fabsf(jt->qmin) > fabsf(jt->qmax)) ? fabsf(jt->qmin) : fabsf(jt->qmax);
-    }
-    L += dh_sqrtf_(r->tool.m[3][0] * r->tool.m[3][0] + r->tool.m[3][1] * r->tool.m[3][1] +
-                       r->tool.m[3][2] * r->tool.m[3][2]);
-    if (!(L > FLT_MIN) || !dh_isfinite_f32(L * L)) L = 1.0f;
+    const float L = ik_length(c->r);
     S[S_L] = L;
     S[S_WBAR] = DH_IK_WBAR * L * L;
     S[S_MU] = 1.0f;
@@ -281,6 +292,13 @@ static DH_NOINLINE void ik_pos_err(const ik_ctx *c)
         }
 }
 
+/* Rotation weight of the step: w_rot, at most IK_WSTEP_MAX L. */
+static float ik_wstep(const ik_ctx *c)
+{
+    const float wm = IK_WSTEP_MAX * c->w[OFF_S(c->n) + S_L];
+    return (c->p->w_rot < wm) ? c->p->w_rot : wm;
+}
+
 /* Masked norms and E of the trial error into S_TE, S_TEP, S_TER; EV_BIG
  * when E is not finite (S_TEP then without overflow). */
 static DH_NOINLINE int ik_norms(const ik_ctx *c)
@@ -297,7 +315,7 @@ static DH_NOINLINE int ik_norms(const ik_ctx *c)
     }
     S[S_TEP] = dh_sqrtf_(sp);
     S[S_TER] = dh_sqrtf_(sr);
-    S[S_TE] = 0.5f * (sp + c->p->w_rot * c->p->w_rot * sr);
+    S[S_TE] = 0.5f * (sp + ik_wstep(c) * ik_wstep(c) * sr);
     if (!dh_isfinite_f32(S[S_TE])) {
         S[S_TEP] = ik_norm3(e, mask);
         return EV_BIG;
@@ -305,23 +323,28 @@ static DH_NOINLINE int ik_norms(const ik_ctx *c)
     return EV_OK;
 }
 
-/* B = W J C and W e of the current point, over the (free) trial slot. */
+/* B = W J C and W e of the current point (step weights), over the (free)
+ * trial slot. */
 static DH_NOINLINE void ik_weigh(const ik_ctx *c)
 {
     const uint32_t n = c->n, mask = c->p->mask;
     const float *J = c->w + OFF_J(n, c->cs), *e = c->w + OFF_E(n, c->cs);
     float *B = c->w + OFF_J(n, c->cs ^ 1u), *we = c->w + OFF_E(n, c->cs ^ 1u);
-    const float L = c->w[OFF_S(n) + S_L];
+    const float L = c->w[OFF_S(n) + S_L], ws = ik_wstep(c);
     uint32_t i, k;
     for (k = 0; k < 6u; k++) {
-        const float wk = ik_row_w(mask, k, c->p->w_rot);
+        const float wk = ik_row_w(mask, k, ws);
         we[k] = wk * e[k];
         for (i = 0; i < n; i++) B[k * n + i] = wk * (ik_col_scale(&c->r->joint[i], L) * J[k * n + i]);
     }
 }
 
-/* Lower triangle of H = B^T B + (mu E + wbar) I and g = B^T W e over the
- * free joints (the others: identity row/column, g = 0). */
+/* Lower triangle of H = B^T B + Lambda and g = B^T W e over the free
+ * joints (the others: identity row/column, g = 0). Lambda is diagonal,
+ * Lambda_ii = mu min(E, (B^T B)_ii) + DH_IK_WBAR L^2: Sugihara's damping,
+ * capped per column so that a column that is weak next to E (a prismatic
+ * joint far from its target, a lever arm long next to another joint's)
+ * still takes a step of its own size. */
 static DH_NOINLINE void ik_normal(const ik_ctx *c, uint32_t free_bits)
 {
     const uint32_t n = c->n;
@@ -340,20 +363,25 @@ static DH_NOINLINE void ik_normal(const ik_ctx *c, uint32_t free_bits)
             if (fi && ((free_bits >> j) & 1u)) {
                 s = 0.0f;
                 for (k = 0; k < 6u; k++) s += B[k * n + i] * B[k * n + j];
-                if (i == j) s += S[S_MU] * S[S_E] + S[S_WBAR];
+                if (i == j) s += S[S_MU] * ((S[S_E] < s) ? S[S_E] : s) + S[S_WBAR];
             }
             H[i * n + j] = s;
         }
     }
 }
 
-/* H = L D L^T in place (no square root), then H dx = g; -1 if H is not
- * positive definite in float or dx is not finite. */
+/* H = L D L^T in place (no square root), then H dx = g; -1 if an entry
+ * or dx is not finite. Every pivot of B^T B + Lambda is at least wbar in
+ * exact arithmetic; one below it (rounding) is raised to it, which factors
+ * H + Delta, Delta >= 0 diagonal (a modified Cholesky factorisation, Gill,
+ * Murray and Wright 1981): positive definite, so dx is a descent direction
+ * of the model whenever it is finite. */
 static DH_NOINLINE int ik_ldl(const ik_ctx *c)
 {
     const uint32_t n = c->n;
     float *H = c->w + OFF_H(n), *x = c->w + OFF_DX(n);
     const float *g = c->w + OFF_G(n);
+    const float wbar = c->w[OFF_S(n) + S_WBAR], dmin = (wbar > FLT_MIN) ? wbar : FLT_MIN;
     uint32_t i, j, k;
     /* x[k] temporarily holds L_jk D_k for the current row j */
     for (j = 0; j < n; j++) {
@@ -363,7 +391,8 @@ static DH_NOINLINE int ik_ldl(const ik_ctx *c)
             x[k] = Hj[k] * H[k * n + k];
             d -= Hj[k] * x[k];
         }
-        if (!(d > 0.0f) || !dh_isfinite_f32(d)) return -1;
+        if (!dh_isfinite_f32(d)) return -1;
+        if (d < dmin) d = dmin;
         Hj[j] = d;
         for (i = j + 1u; i < n; i++) {
             float *Hi = H + i * n;
@@ -451,6 +480,32 @@ static int ik_met(const float *S, const dh_ik_params *p)
     return S[S_EP] <= p->tol_pos && S[S_ER] <= p->tol_rot;
 }
 
+/* Whether the trial point replaces the current one: 0 no, 1 yes with
+ * progress, 2 yes with less than 1% progress. Before convergence a trial
+ * is better when it lowers E, or when one tolerance is met at both points
+ * and the other error drops (E alone cannot see a position error below the
+ * float noise of w_rot times the rotation error, or the reverse); after
+ * it, when it lowers E and still meets both tolerances. */
+static int ik_better(const ik_ctx *c, const float *S)
+{
+    const dh_ik_params *p = c->p;
+    float a, b;
+    if (c->conv) return (S[S_TE] < S[S_E] && S[S_TEP] <= p->tol_pos && S[S_TER] <= p->tol_rot) ? 1 : 0;
+    if (S[S_TE] < S[S_E]) {
+        a = S[S_TE];
+        b = S[S_E];
+    } else if (S[S_ER] <= p->tol_rot && S[S_TER] <= p->tol_rot && S[S_TEP] < S[S_EP]) {
+        a = S[S_TEP];
+        b = S[S_EP];
+    } else if (S[S_EP] <= p->tol_pos && S[S_TEP] <= p->tol_pos && S[S_TER] < S[S_ER]) {
+        a = S[S_TER];
+        b = S[S_ER];
+    } else {
+        return 0;
+    }
+    return (a < b * IK_STALL_RATIO) ? 1 : 2;
+}
+
 /* Make the trial slot the current point. */
 static void ik_take(ik_ctx *c, float *S)
 {
@@ -465,6 +520,7 @@ static DH_NOINLINE unsigned ik_update(ik_ctx *c, int ev)
 {
     const dh_ik_params *p = c->p;
     float *S = c->w + OFF_S(c->n);
+    const int acc = (c->mode == M_TRIAL && ev == EV_OK) ? ik_better(c, S) : 0;
     if (c->mode == M_FIRST) {
         if (ev != EV_OK) return A_FAIL;
     } else {
@@ -485,8 +541,8 @@ static DH_NOINLINE unsigned ik_update(ik_ctx *c, int ev)
         c->stall = 0u;
         c->polish = 0u;
         c->conv = (uint8_t)ik_met(S, p);
-    } else if (ev == EV_OK && S[S_TE] < S[S_E]) {
-        c->stall = (S[S_TE] < S[S_E] * IK_STALL_RATIO) ? 0u : c->stall + 1u;
+    } else if (acc != 0) {
+        c->stall = (acc == 1) ? 0u : c->stall + 1u;
         ik_take(c, S);
         if (c->conv) c->polish++;
         S[S_MU] = (S[S_MU] * IK_MU_DOWN > IK_MU_MIN) ? S[S_MU] * IK_MU_DOWN : IK_MU_MIN;
@@ -505,6 +561,16 @@ static DH_NOINLINE unsigned ik_update(ik_ctx *c, int ev)
     c->mode = (uint8_t)M_TRIAL;
     if (c->end == 0u && !(c->conv && c->polish >= IK_POLISH_STEPS) && c->iter < p->max_iter) return A_STEP;
     return A_OVER;
+}
+
+/* A solve that did not give a finite step: more damping, as after a
+ * rejected step; 0 when the attempt has stalled. */
+static DH_NOINLINE int ik_damp(ik_ctx *c)
+{
+    const uint32_t m = OFF_S(c->n) + (uint32_t)S_MU;
+    c->stall++;
+    c->w[m] *= IK_MU_UP;
+    return !c->conv && c->stall < IK_STALL_STEPS && !(c->w[m] > IK_MU_MAX);
 }
 
 /* End of an attempt: keep it if best (converged first, then lower E);
@@ -553,7 +619,6 @@ static DH_NOINLINE dh_status ik_finish(const ik_ctx *c, float *q, dh_ik_result *
     res->err_rot = S[S_BER];
     if (c->best_kind == K_CONV) return DH_OK;
     if (c->hopeless || c->best_kind == K_STALL) return DH_ERR_UNREACHABLE;
-    if (c->best_kind == K_SING) return DH_ERR_SINGULAR;
     return DH_ERR_NO_CONVERGENCE;
 }
 
@@ -609,22 +674,27 @@ dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q
             continue;
         }
         if (act == A_STEP) {
-            /* projected step: at most n + 1 solves */
-            uint32_t free_bits = (n >= 32u) ? 0xFFFFFFFFu : ((1u << n) - 1u), pass, frozen = 1u;
-            int k = 0;
+            /* projected step: at most n + 1 solves; a solve that overflows
+             * is repeated with more damping */
+            int k = 0, again = 1;
             ik_weigh(&c);
-            for (pass = 0; (pass <= n) && (frozen != 0u) && (k == 0); pass++) {
-                ik_normal(&c, free_bits);
-                if (ik_ldl(&c) != 0) {
-                    k = -1;
-                } else {
-                    frozen = ik_freeze(&c, free_bits);
-                    free_bits &= ~frozen;
+            while (again != 0) {
+                uint32_t free_bits = (n >= 32u) ? 0xFFFFFFFFu : ((1u << n) - 1u), pass, frozen = 1u;
+                k = 0;
+                for (pass = 0; (pass <= n) && (frozen != 0u) && (k == 0); pass++) {
+                    ik_normal(&c, free_bits);
+                    if (ik_ldl(&c) != 0) {
+                        k = -1;
+                    } else {
+                        frozen = ik_freeze(&c, free_bits);
+                        free_bits &= ~frozen;
+                    }
                 }
+                if (k == 0) k = ik_apply(&c, free_bits);
+                again = (k < 0) ? ik_damp(&c) : 0;
             }
-            if (k == 0) k = ik_apply(&c, free_bits);
             if (k > 0) continue;
-            c.end = (uint8_t)((k < 0) ? K_SING : K_STALL);   /* singular, or an empty projected step */
+            c.end = (uint8_t)K_STALL;   /* an empty projected step, or no finite one */
         }
         done = (act == A_BREAK) ? 1 : ik_record(&c);
         if (done != 0) break;

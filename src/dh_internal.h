@@ -139,6 +139,17 @@ static inline int32_t dh_f32_to_fix_sat(float x, unsigned frac, unsigned *st)
     return (x < 0.0f) ? INT32_MIN : INT32_MAX;
 }
 
+/* ---- robot description check (dh_robot.c) --------------------------------- */
+
+/** The bits of x (dh_robot_check compares derived floats bit for bit, so
+ *  -0 differs from +0 and a NaN from every float). */
+DH_INLINE uint32_t dh_f32_bits(float x)
+{
+    uint32_t u;
+    memcpy(&u, &x, sizeof u);
+    return u;
+}
+
 /* ---- float transform helpers --------------------------------------------- */
 
 /** The general path behind a fast path (dh_mat4_inv.c): optimized for size

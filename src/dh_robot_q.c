@@ -8,15 +8,9 @@
 #include "dhmath/dh_trig.h"
 #include "dh_robot_impl.h"
 
-#define F32_MASK_NO (DH_ROBOT_F32_NO_JOINT | DH_ROBOT_F32_NO_BASE | DH_ROBOT_F32_NO_TOOL)
-#define Q_MASK_NO (DH_ROBOT_Q_NO_JOINT | DH_ROBOT_Q_NO_BASE | DH_ROBOT_Q_NO_TOOL)
-
 void dh_robot_flags_(dh_robot *r, uint32_t clear, uint32_t set)
 {
-    uint32_t f = ((r->flags & ~clear) | set) & ~(DH_ROBOT_HAS_F32 | DH_ROBOT_HAS_Q);
-    if ((f & F32_MASK_NO) == 0u) f |= DH_ROBOT_HAS_F32;
-    if ((f & Q_MASK_NO) == 0u) f |= DH_ROBOT_HAS_Q;
-    r->flags = f;
+    r->flags = dh_robot_summary_((r->flags & ~clear) | set);
 }
 
 /* Entries halved first: the sum of three squares stays below 3 * 2^60. */

@@ -15,6 +15,7 @@ const char *dh_status_str(dh_status st)
     case DH_ERR_UNREACHABLE: return "target unreachable";
     case DH_ERR_LIMIT: return "joint limit";
     case DH_ERR_UNAVAILABLE: return "robot path unavailable";
+    case DH_ERR_INCONSISTENT: return "inconsistent robot description";
     default: return "unknown status";
     }
 }

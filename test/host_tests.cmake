@@ -8,7 +8,7 @@ if(DH_BUILD_TOOLS)
   if(NOT DHMATH_CLI_PYTHON3)
     find_program(DHMATH_CLI_PYTHON3 NAMES python3 REQUIRED)
   endif()
-  foreach(group seed errors random robotfile rot examples help)
+  foreach(group seed errors random robotfile rot examples help numbers messages)
     add_test(NAME cli_${group}
       COMMAND ${DHMATH_CLI_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/cli/run_cli_tests.py
               $<TARGET_FILE:dhmath_cli> ${PROJECT_SOURCE_DIR} ${group})
@@ -24,6 +24,14 @@ if(DH_BUILD_TOOLS)
   target_compile_options(cli_fuzz_parsers PRIVATE -Wall -Wextra -Werror)
   add_test(NAME cli_fuzz_parsers COMMAND cli_fuzz_parsers 200000)
   set_tests_properties(cli_fuzz_parsers PROPERTIES TIMEOUT 600 LABELS cli)
+
+  # every float printed with %.9g reads back as the same float
+  add_executable(cli_number_roundtrip ${CMAKE_CURRENT_SOURCE_DIR}/cli/number_roundtrip.c)
+  target_link_libraries(cli_number_roundtrip PRIVATE dhmath_parsers)
+  set_target_properties(cli_number_roundtrip PROPERTIES C_STANDARD 99 C_EXTENSIONS OFF)
+  target_compile_options(cli_number_roundtrip PRIVATE -Wall -Wextra -Werror)
+  add_test(NAME cli_number_roundtrip COMMAND cli_number_roundtrip)
+  set_tests_properties(cli_number_roundtrip PROPERTIES TIMEOUT 600 LABELS cli)
 endif()
 
 # A DHT_SEED that is not a seed (test/dht.h dht_parse_seed) stops a suite

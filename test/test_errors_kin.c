@@ -210,9 +210,9 @@ static void kin_rot_pose_error_bad(void)
     }
 }
 
-static void ik_setup(dh_ik_params *p, dh_ik_result *res)
+static void ik_setup(const dh_robot *r, dh_ik_params *p, dh_ik_result *res)
 {
-    dh_ik_params_default(p);
+    dh_ik_params_default(r, p);
     memset(res, 0, sizeof *res);
 }
 
@@ -227,7 +227,7 @@ static void kin_ik_bad_args(void)
     float q[NJ];
     unsigned k;
     puma(&r);
-    ik_setup(&p, &res);
+    ik_setup(&r, &p, &res);
     DHT_EQ_INT(dh_fk_f32(&r, q0, &target), DH_OK);
     /* n == 0 and n > DH_MAX_JOINTS */
     DHT_EQ_INT(dh_robot_init(&r2, DH_CONV_STANDARD), DH_OK);
@@ -390,7 +390,7 @@ static void kin_ik_not_rigid(void)
     float q[NJ];
     unsigned k;
     puma(&r);
-    ik_setup(&p, &res);
+    ik_setup(&r, &p, &res);
     pp = p;
     pp.mask = DH_IK_POSITION;
     DHT_EQ_INT(dh_fk_f32(&r, q0, &target), DH_OK);
@@ -503,7 +503,7 @@ static void kin_ik_unreachable(void)
         n = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
         DHT_EQ_INT(dh_mat4_rotz_f32(30.0f, &target), DH_OK);
         for (i = 0; i < 3; i++) target.m[3][i] = (float)(dist * dir[i] / n);
-        ik_setup(&p, &res);
+        ik_setup(&r, &p, &res);
         p.mask = (it % 2u) ? DH_IK_POSITION : DH_IK_FULL;
         st = dh_ik_f32(&r, &target, q0, &p, work, sizeof work / sizeof work[0], q, &res);
         /* beyond the reach bound: UNREACHABLE, decided early (a few
@@ -530,7 +530,7 @@ static void kin_ik_unreachable(void)
         float qt[NJ] = { 60.0f, -80.0f, 150.0f, 30.0f, 20.0f, -40.0f };
         double e0;
         DHT_EQ_INT(dh_fk_f32(&r, qt, &target), DH_OK);
-        ik_setup(&p, &res);
+        ik_setup(&r, &p, &res);
         p.max_iter = 1u;
         DHT_TRUE(dh_ik_f32(&r, &target, q0, &p, work, sizeof work / sizeof work[0], q, &res) != DH_OK);
         e0 = ref_pos_err(&r, &target, q0);
@@ -543,7 +543,7 @@ static void kin_ik_unreachable(void)
         float qt[NJ] = { 20.0f, -30.0f, 170.0f, 10.0f, 30.0f, 10.0f };
         float qbad[NJ] = { 1e30f, -1e30f, 500.0f, -300.0f, 1000.0f, 1e20f };
         DHT_EQ_INT(dh_fk_f32(&r, qt, &target), DH_OK);
-        ik_setup(&p, &res);
+        ik_setup(&r, &p, &res);
         (void)dh_ik_f32(&r, &target, qbad, &p, work, sizeof work / sizeof work[0], q, &res);
         DHT_EQ_INT(dh_robot_check_limits_f32(&r, q), DH_OK);
     }
@@ -569,7 +569,7 @@ static void kin_ik_status(void)
      * the whole budget; the best effort is the stretched arm */
     for (mode = 0; mode < 2; mode++) {
         dh_mat4_trans_f32(10.0f, 0.0f, 0.0f, &target);
-        ik_setup(&p, &res);
+        ik_setup(&r, &p, &res);
         p.mask = mode ? DH_IK_POSITION : DH_IK_FULL;
         st = dh_ik_f32(&r, &target, q0, &p, work, sizeof work / sizeof work[0], q, &res);
         dht_printf("puma trans(10,0,0) %s: status %d after %lu steps, residual %.6g m\n", mode ? "position" : "full",
@@ -587,7 +587,7 @@ static void kin_ik_status(void)
         uint32_t m;
         DHT_EQ_INT(dh_fk_f32(&r, qt, &target), DH_OK);
         for (m = 1; m <= 3; m++) {
-            ik_setup(&p, &res);
+            ik_setup(&r, &p, &res);
             p.max_iter = m;
             DHT_EQ_INT(dh_ik_f32(&r, &target, q0, &p, work, sizeof work / sizeof work[0], q, &res),
                        DH_ERR_NO_CONVERGENCE);
@@ -610,7 +610,7 @@ static void kin_ik_status(void)
         DHT_EQ_INT(dh_robot_add_joint_f32(&rf, DH_JOINT_REVOLUTE, 0, 0, 0.4f, 0), DH_OK);
         DHT_EQ_INT(dh_fk_f32(&rf, qa, &target), DH_OK);
         for (mode = 0; mode < 3; mode++) {
-            ik_setup(&p, &res);
+            ik_setup(&r2, &p, &res);
             p.mask = DH_IK_PX | DH_IK_PY;
             p.restarts = (mode == 0) ? 0u : (mode == 1) ? 20u : 200u;
             st = dh_ik_f32(&r2, &target, qs, &p, work, sizeof work / sizeof work[0], q2, &res);

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Host benchmark of dhmath against peer libraries (issue 6); writes
+# Host benchmark of dhmath against peer libraries (speed goals); writes
 # docs/performance_host.md.
 #
 #   tools/bench.sh

@@ -6,7 +6,7 @@
 # suites again for 3 fresh seeds, printed, full loop counts; any seed
 # reproduces with tools/seeds.sh, see there), asan (ASan+UBSan),
 # target suites under QEMU (M0+, M4F, M7; M0+ and M4F again with DH_SMALL at
-# -Os), riscv32 compile check, guards
+# -Os; RV32IMAC and RV32IMAFC with picolibc), firmware examples, guards
 # (no .data/.bss, no heap/printf, fixed path free of float/64-bit division,
 # stack <= 256 B), config variants, coverage >= 95 % lines / 90 % branches,
 # cppcheck (MISRA addon) + clang-tidy, public contracts (tools/check_contracts.py:
@@ -16,7 +16,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
 JOBS=${JOBS:-$(nproc)}
-STAGES=${*:-"host seeds asan m0 m4f m7 small riscv32 guards variants coverage static contracts fuzz apidoc"}
+STAGES=${*:-"host seeds asan m0 m4f m7 small rv32imac rv32imafc examples guards variants coverage static contracts fuzz apidoc"}
 failed=""
 
 run_stage() {
@@ -55,6 +55,23 @@ fresh_seeds() {
   done
 }
 
+# The examples: the host ones (README's C example, the C++ example) and the
+# firmware ones (examples/firmware/) on the M0+ and the M4F under QEMU, each
+# output checked against an independent reference. The target suites run
+# the firmware examples as well; this stage builds only the examples.
+examples_suite() {
+  local b tc
+  cmake -S "$ROOT" -B build/host -DCMAKE_BUILD_TYPE=Release >/dev/null &&
+  cmake --build build/host -j"$JOBS" --target readme_example cpp_example >/dev/null &&
+  ctest --test-dir build/host --output-on-failure -R '^(readme_example|readme_example_in_sync|cpp_example)$' || return 1
+  for b in m0:cortex-m0plus.cmake m4f:cortex-m4f.cmake; do
+    tc=${b#*:}; b=build/${b%%:*}
+    cmake -S "$ROOT" -B "$b" -DCMAKE_TOOLCHAIN_FILE="$ROOT/port/$tc" -DCMAKE_BUILD_TYPE=Release >/dev/null &&
+    cmake --build "$b" -j"$JOBS" --target fw_fixed_fk fw_float_ik >/dev/null &&
+    ctest --test-dir "$b" --output-on-failure -R '^example_' || return 1
+  done
+}
+
 for s in $STAGES; do
   case $s in
     host) run_stage host host_suite build/host ;;
@@ -64,7 +81,9 @@ for s in $STAGES; do
     m4f) [ -f port/cortex-m4f.cmake ] && run_stage m4f target_suite build/m4f cortex-m4f.cmake ;;
     m7) [ -f port/cortex-m7.cmake ] && run_stage m7 target_suite build/m7 cortex-m7.cmake ;;
     small) run_stage small small_suite ;;
-    riscv32) [ -f port/riscv32.cmake ] && run_stage riscv32 bash -c "cmake -S '$ROOT' -B build/rv32 -DCMAKE_TOOLCHAIN_FILE='$ROOT/port/riscv32.cmake' -DDH_BUILD_TESTS=OFF >/dev/null && cmake --build build/rv32 -j$JOBS" ;;
+    examples) run_stage examples examples_suite ;;
+    rv32imac) run_stage rv32imac target_suite build/rv32imac riscv32-imac.cmake ;;
+    rv32imafc) run_stage rv32imafc target_suite build/rv32imafc riscv32-imafc.cmake ;;
     guards) [ -x tools/check_guards.sh ] && run_stage guards tools/check_guards.sh ;;
     variants) [ -x tools/check_variants.sh ] && run_stage variants tools/check_variants.sh ;;
     coverage) [ -x tools/coverage.sh ] && run_stage coverage tools/coverage.sh build/coverage ;;

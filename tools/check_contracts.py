@@ -4,8 +4,10 @@
 1. The doc comment in front of each public function declared in
    include/dhmath/*.h has at most MAX_LINES lines (a contract a user reads
    in one screen; methods and proofs belong in src/ or docs/design.md).
-2. No history markers in src/ and include/: "issue <digit>" or "seed 00"
-   (case-insensitive). Literature is cited by name (docs/references.md).
+2. No history markers and no citations of documents outside the repository
+   in src/, include/, docs/, README.md, tools/, bench/, port/, examples/ and
+   fuzz/: the word issue followed by a number (also with a hash sign or a
+   hyphen), or seed followed by a three-digit number from 000 (any case). Literature is cited by name (docs/references.md).
 
 Usage: tools/check_contracts.py [--report] [--max N] [ROOT]
   --report  print every function's comment length, longest first.
@@ -17,7 +19,10 @@ import re
 import sys
 
 MAX_LINES = 30
-HISTORY = re.compile(r"issue [0-9]|seed 00", re.IGNORECASE)
+HISTORY = re.compile(r"issues?[ -]#?[0-9]|issues? #|seed 00[0-9]", re.IGNORECASE)
+# where the history check looks (directories walked, plus single files)
+HISTORY_DIRS = ("src", "include", "docs", "tools", "bench", "port", "examples", "fuzz")
+HISTORY_FILES = ("README.md",)
 # A function declaration at file scope: return type, name, '(' ... ');'
 DECL = re.compile(r"^[A-Za-z_][\w \*]*?\b(dh_\w+)\s*\(")
 
@@ -75,18 +80,20 @@ def main(argv):
     if report:
         for n, rel, ln, name in sorted(rows, reverse=True):
             print(f"{n:4d}  {rel}:{ln}  {name}")
-    for top in ("src", "include"):
-        for dirpath, _, files in os.walk(os.path.join(root, top)):
-            for fn in sorted(files):
-                p = os.path.join(dirpath, fn)
-                try:
-                    with open(p, encoding="utf-8", errors="replace") as f:
-                        for ln, text in enumerate(f, 1):
-                            if HISTORY.search(text):
-                                print(f"{os.path.relpath(p, root)}:{ln}: history marker: {text.strip()}")
-                                ok = False
-                except OSError:
-                    continue
+    paths = [os.path.join(root, f) for f in HISTORY_FILES]
+    for top in HISTORY_DIRS:
+        for dirpath, dirs, files in os.walk(os.path.join(root, top)):
+            dirs.sort()
+            paths.extend(os.path.join(dirpath, fn) for fn in sorted(files))
+    for p in paths:
+        try:
+            with open(p, encoding="utf-8", errors="replace") as f:
+                for ln, text in enumerate(f, 1):
+                    if HISTORY.search(text):
+                        print(f"{os.path.relpath(p, root)}:{ln}: history marker: {text.strip()}")
+                        ok = False
+        except OSError:
+            continue
     print(f"check_contracts: {len(rows)} public functions, "
           f"longest comment {max((r[0] for r in rows), default=0)} lines: "
           + ("passed" if ok else "FAILED"))

@@ -22,8 +22,8 @@ For every configuration (a library-only build with -fstack-usage
   * modules: text + rodata of every object of libdhmath.a;
   * tables: every read-only data object of the library.
 
-Firmware profiles (GitHub issue 5: "the whole float + fixed core fits in
-<= 8 KiB of flash on Cortex-M4F at -Os, tables included"): for each profile
+Firmware profiles (the size goal of docs/design.md: the whole float + fixed
+core fits in <= 8 KiB of flash on Cortex-M4F at -Os, tables included): for each profile
 a C file with a table of pointers to its entry points is generated from the
 public headers (gcc -aux-info lists every function they declare, so the
 profiles follow the headers), compiled with the configuration's flags and
@@ -123,16 +123,16 @@ AUX_RE = re.compile(r"^/\* (\S+):(\d+):(\w+) \*/ (.*)$")
 ISSUE5_LIMIT = 8192
 ISSUE5_CONFIG = "M4F -Os DH_SMALL"
 ISSUE5_DEFAULT = "M4F -Os"
-# headers that hold the issue's core, and more (profile (a))
+# headers that hold the size-goal core, and more (profile (a))
 CORE_HEADERS = ("dh_trig.h", "dh_mat4.h", "dh_fixed.h", "dh_robot.h")
-# The issue's core, function by function: "trig, transforms, inverses, DH
+# The size-goal core, function by function: "trig, transforms, inverses, DH
 # FK, no IK", each in float and fixed point. Transforms: every constructor
-# of the seed's transforms (translation, rotation about x/y/z and about any
+# of Paul 1981's transforms (translation, rotation about x/y/z and about any
 # axis, scaling, perspective), composition, and application to points,
 # directions, homogeneous points and planes. Inverses: rigid, general, the
 # automatic choice, fixed-point rigid. DH FK: the robot description with
 # base and tool, link matrices, FK to the end and to every frame. Left out
-# (they are in (a)): angle-axis extraction (its own seed topic), validation
+# (they are in (a)): angle-axis extraction (a topic of its own), validation
 # and repair helpers (rotation/rigidity checks, re-orthonormalisation),
 # conversions between float and fixed frames, joint limits (used by IK).
 CORE_FUNCS = (
@@ -197,7 +197,7 @@ def profile_defs(decl):
     fk_q = setup_q + ["dh_fk_q", "dh_frame_inv_q", "dh_frame_mul_q", "dh_frame_apply_point_q"]
     declared = set(allf)
     return [
-        ("k", "(k) core of issue 5: trig, transforms, inverses, DH FK, float and fixed",
+        ("k", "(k) size-goal core: trig, transforms, inverses, DH FK, float and fixed",
          [f for f in CORE_FUNCS if f in declared]),
         ("a", "(a) every function of %s" % ", ".join(CORE_HEADERS), core),
         ("b", "(b) float FK firmware", fk_f),
@@ -366,7 +366,7 @@ def kib(n):
 
 
 def profile_sections(data, labels):
-    """Markdown of the issue-5 summary (first) and the profile sections (second)."""
+    """Markdown of the size-goal summary (first) and the profile sections (second)."""
     P = {l: data[l]["profiles"] for l in labels}
     ref = ISSUE5_CONFIG if ISSUE5_CONFIG in P else labels[0]
     dflt = ISSUE5_DEFAULT if ISSUE5_DEFAULT in P else labels[0]
@@ -374,14 +374,14 @@ def profile_sections(data, labels):
     a = P[ref]["a"]
     decl = data[ref]["decl"]
     S = []
-    S.append("## Issue 5: flash of the float + fixed core")
+    S.append("## Size goal: flash of the float + fixed core")
     S.append("")
-    S.append("Target (GitHub issue 5): the whole float + fixed core (trig, transforms, "
+    S.append("Target (the size goal of docs/design.md, \"Size-first build\"): the whole float + fixed core (trig, transforms, "
              "inverses, DH FK, no IK) fits in **<= 8 KiB (%d bytes) of flash on "
              "Cortex-M4F at -Os, tables included**." % ISSUE5_LIMIT)
     S.append("")
     S.append("The core is profile (k) below, %d public functions: sine/cosine; every "
-             "seed transform's constructor (translation, rotation about x/y/z and any "
+             "constructor of Paul 1981's transforms (translation, rotation about x/y/z and any "
              "axis, scaling, perspective), composition, application to points, "
              "directions, homogeneous points and planes; the rigid, general and "
              "fixed-point inverses; the robot description with base and tool, link "

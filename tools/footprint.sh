@@ -2,7 +2,7 @@
 # footprint.sh - flash and stack of the library on Cortex-M0+ and Cortex-M4F
 # at -Os and -O2, and at -Os with DH_SMALL=1 (the size-first build), written
 # to docs/footprint.md (tools/footprint.py).
-# The report opens with the issue-5 flash budget (the float + fixed core on
+# The report opens with the size goal's flash budget (the float + fixed core on
 # Cortex-M4F -Os against 8 KiB) and includes firmware profiles: entry tables
 # generated from the public headers, linked with --gc-sections, flash split
 # into dhmath / libgcc / libm+libc from the map file (tools/footprint.py).

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Accuracy plots of dhmath against glibc and libfixmath (issue 6).
+"""Accuracy plots of dhmath against glibc and libfixmath (the accuracy goal of
+docs/performance.md).
 
 Runs the C data generator (bench/accuracy_data.c, built by the bench
 target), draws the PNG figures into docs/img/ and writes
@@ -184,7 +185,7 @@ def write_md(s, out):
     a("error shown is that of the usual way of calling it with degrees: rounding")
     a("deg * pi/180 to float loses up to half an ulp of the radian value, which grows")
     a("with the angle (about 5.7e-7 at 720 degrees). dhmath reduces the degrees")
-    a("exactly and is %.1fx more accurate on this range (issue 6 asks for >= 4x)." % (g / f32))
+    a("exactly and is %.1fx more accurate on this range (the speed goals of docs/performance.md ask for >= 4x)." % (g / f32))
     if have_fx:
         a("libfixmath reaches %.2g in bands tens of degrees wide (see the plot; its" % fx)
         a("polynomial loses accuracy there) and is near %.1g elsewhere (median of the"

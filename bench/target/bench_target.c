@@ -535,7 +535,8 @@ static void bt_ik(void)
     dh_mat4_f32 target;
     uint64_t t0, t1, tnull;
     uint32_t k, j;
-    dh_ik_params_default(&p);
+    dh_ik_params_default(&bt_puma_m, &p);
+    p.tol_pos = 1e-6f;
     t0 = bt_now();
     t1 = bt_now();
     tnull = t1 - t0;

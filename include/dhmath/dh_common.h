@@ -38,7 +38,8 @@ typedef enum {
     DH_ERR_NO_CONVERGENCE = 8, /**< iteration limit reached without meeting the tolerance */
     DH_ERR_UNREACHABLE = 9, /**< target out of reach: best effort returned with its residual */
     DH_ERR_LIMIT = 10,      /**< joint value outside its limits */
-    DH_ERR_UNAVAILABLE = 11 /**< the robot's float or fixed path is not prepared (dh_robot.flags says why) */
+    DH_ERR_UNAVAILABLE = 11, /**< the robot's float or fixed path is not prepared (dh_robot.flags says why) */
+    DH_ERR_INCONSISTENT = 12 /**< a robot's derived fields differ from what its setters compute (dh_robot_check) */
 } dh_status;
 
 /** @brief Short English name of a status ("ok", "singular matrix", ...). Never NULL. */

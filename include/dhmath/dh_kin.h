@@ -127,13 +127,13 @@ dh_status dh_pose_error_f32(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, f
 /** Full pose. */
 #define DH_IK_FULL 0x3Fu
 
-/** IK parameters; fill with dh_ik_params_default() and adjust. */
+/** IK parameters; fill with dh_ik_params_default() for the robot and adjust. */
 typedef struct {
     uint32_t max_iter;   /**< bound on the number of trial steps (FK + Jacobian evaluations after the first), >= 1 */
     uint32_t mask;       /**< DH_IK_* bits of the error components to drive to 0 (non-zero, within DH_IK_FULL) */
     float tol_pos;       /**< position tolerance (length unit), >= 0, on the norm of the masked position components */
     float tol_rot;       /**< orientation tolerance (rad), >= 0, on the norm of the masked rotation-vector components */
-    float w_rot;         /**< weight of orientation vs position error (length unit per rad), > 0 */
+    float w_rot;         /**< weight of orientation vs position error (length unit per rad), > 0; at most L counts (dh_ik_f32) */
     uint32_t restarts;   /**< restarts from deterministic pseudo-random configurations after a stall (local minimum), within max_iter */
 } dh_ik_params;
 
@@ -146,9 +146,10 @@ typedef struct {
 
 /**
  * Sugihara's constant damping bias, relative to the robot's characteristic
- * length L squared: W_N = mu E_k + DH_IK_WBAR * L^2. Small (near the float
- * noise of J^T J) so that convergence stays fast near singular targets; it
- * keeps the normal matrix positive definite for redundant arms.
+ * length L squared: the damping of joint i is mu min(E_k, (J^T W^2 J)_ii) +
+ * DH_IK_WBAR * L^2. Small (near the float noise of J^T J) so that
+ * convergence stays fast near singular targets; it keeps the normal matrix
+ * positive definite for redundant arms.
  */
 #define DH_IK_WBAR 1e-7f
 
@@ -159,46 +160,50 @@ typedef struct {
 #define DH_IK_WORK_FLOATS(n) ((n) * (n) + 20u * (n) + 45u)
 
 /**
- * @brief Defaults for a robot described in metres: max_iter 2000, mask
- * DH_IK_FULL, tol_pos 1e-6 (m), tol_rot 1e-5 (rad), w_rot 1 (m/rad),
- * restarts 200. The step bound matters only for hard targets and for
- * unreachable targets within the reach bound, which can take all of
- * max_iter; lower it (and restarts) for a tighter worst case, at some cost
- * in success rate (docs/accuracy_kin.md).
- * For a millimetre robot use tol_pos ~1e-3 and w_rot ~1000 (the float
- * resolution of a 1000 mm coordinate is 6e-5 mm).
+ * @brief Defaults for robot r, in its length unit: max_iter 2000, mask
+ * DH_IK_FULL, tol_pos 1e-6 L, tol_rot 1e-5 (rad), w_rot L / 4 (length unit
+ * per rad), restarts 200, where L = sum of |a|, |d|, prismatic travel
+ * (limited joints) and |p_tool| (1 if that is 0 or not finite squared):
+ * so a robot in mm gets the same solver as the one in m (tol_pos 1.7e-3
+ * mm for a 1.7 m Puma 560). Reads only r's float joint and tool values
+ * (any robot, no status). A target far beyond L (unlimited prismatic
+ * joint) needs tol_pos above its coordinates' float resolution, 6e-8 |x|.
+ * The step bound matters only for hard targets and for unreachable targets
+ * within the reach bound, which can take all of max_iter; lower it (and
+ * restarts) for a tighter worst case, at some cost in success rate
+ * (docs/accuracy_kin.md).
  */
-void dh_ik_params_default(dh_ik_params *p);
+void dh_ik_params_default(const dh_robot *r, dh_ik_params *p);
 
 /**
- * @brief Numerical IK, Levenberg-Marquardt with Sugihara 2011's damping.
- *
- * Minimises E = 1/2 (|e_pos|^2 + w_rot^2 |e_rot|^2) over the masked
- * components of dh_pose_error_f32(target, FK(q)) with q kept within the
- * joint limits (qmin <= qmax; q0 is clamped first; qmin > qmax: free, no
- * wrapping). An attempt stalls after 4 steps in a row that lower E by less
- * than 1% and restarts from a deterministic pseudo-random configuration
- * (p->restarts, within p->max_iter steps); the best result of all attempts
- * is returned (converged first, then lowest E). Same inputs, bitwise same
- * outputs. Reach bound: (sum of |a|, |d|, prismatic travel, |p_tool|) *
- * base norm * (1 + 1e-4) + tol_pos. Method: docs/design.md ("Kinematics").
+ * @brief Numerical IK, Levenberg-Marquardt with Sugihara 2011's damping:
+ * minimises E = 1/2 (|e_pos|^2 + w^2 |e_rot|^2), w = min(w_rot, L) (L as in
+ * dh_ik_params_default: a heavier weight drowns the position in the float
+ * rounding), over the masked components of dh_pose_error_f32(target,
+ * FK(q)), q within the joint limits (qmin <= qmax; q0 clamped first; qmin >
+ * qmax: free, no wrapping). An attempt stalls after 4 steps in a row with
+ * less than 1% progress (of E, or of one error while the other meets its
+ * tolerance) and restarts from a deterministic pseudo-random configuration
+ * (p->restarts, within p->max_iter steps); the best attempt is returned
+ * (converged first, then lowest E). Same inputs, bitwise same outputs.
+ * Reach bound: (sum of |a|, |d|, prismatic travel, |p_tool|) * base norm *
+ * (1 + 1e-4) + tol_pos. Method: docs/design.md ("Kinematics").
  * @param r      robot (float path), 1..DH_MAX_JOINTS joints.
  * @param target end frame, bottom row exactly 0 0 0 1; rotation (read only
  *               when the mask drives it) within DH_ROT_ERROR_TOL, det > 0.
  * @param q0,p   start (n finite values); parameters.
- * @param work,work_len at least DH_IK_WORK_FLOATS(n) floats, overlapping
- *               nothing else; contents undefined after.
+ * @param work,work_len >= DH_IK_WORK_FLOATS(n) floats, overlapping nothing; clobbered.
  * @param q,res  result (may alias q0); iterations and errors of q.
  * @return for the returned q (within the limits; res describes it): DH_OK
  *   both tolerances met; DH_ERR_NO_CONVERGENCE max_iter cut off an attempt
  *   still progressing; DH_ERR_UNREACHABLE stalled above tolerance, or beyond
- *   the reach bound (if E would overflow: no step, q = clamped q0, res:
- *   0 iterations, err_pos the distance or FLT_MAX); DH_ERR_SINGULAR normal
- *   matrix not factorable (non-finite J). With q, res untouched: DH_ERR_ARG
- *   (n, work, work_len, max_iter, mask, tolerances, w_rot <= 0, non-finite
- *   or > 4.6e18, bad convention/joint type); DH_ERR_UNAVAILABLE (no float
- *   path); DH_ERR_NAN (target, q0); DH_ERR_NOT_RIGID (target bottom row, driven target
- *   rotation, end rotation not one); DH_ERR_OVERFLOW (FK or E of the start).
+ *   the reach bound (if E would overflow: no step, q = clamped q0, res: 0
+ *   iterations, err_pos the distance or FLT_MAX). Never DH_ERR_SINGULAR.
+ *   With q, res untouched: DH_ERR_ARG (n, work, work_len, max_iter, mask,
+ *   tolerances, w_rot <= 0, non-finite or > 4.6e18, convention/joint type);
+ *   DH_ERR_UNAVAILABLE (no float path); DH_ERR_NAN (target, q0);
+ *   DH_ERR_NOT_RIGID (target bottom row, driven target rotation, end
+ *   rotation not one); DH_ERR_OVERFLOW (FK or E of the start).
  */
 dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q0, const dh_ik_params *p,
                     float *work, size_t work_len, float *q, dh_ik_result *res);

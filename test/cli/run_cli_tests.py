@@ -14,7 +14,12 @@ Groups:
   rot       euler (24 sequences) and quat against angles/axes chosen here
   examples  fk on examples/robots/puma560.dh at 0,...,0 and the other
             shipped robots; ik round trips
-  help      help/usage behaviour
+  help      help/usage behaviour, --version
+  numbers   floats printed with %.9g read back as the same float through
+            the CLI (FLT_MAX, FLT_MIN, subnormals, a strided sample)
+  messages  the messages that name a cause: ik robot size and --w-rot,
+            non-rigid tool/base/target, fk --fixed constants, projective
+            EXPR in axis/euler/quat, --q0 clamping, '-' for stdin
 
 The references below share no code with the library: plain 4x4 double
 matrices with math.sin/cos of radians and Gauss-Jordan inversion.
@@ -23,6 +28,7 @@ import math
 import os
 import random
 import re
+import struct
 import subprocess
 import sys
 import tempfile
@@ -34,8 +40,9 @@ CHECKS = [0]
 
 
 def run(args, stdin=None):
+    # no input: an empty standard input (never the caller's terminal)
     p = subprocess.run([EXE] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                       input=stdin, timeout=60)
+                       input=stdin if stdin is not None else b'', timeout=60)
     return p.returncode, p.stdout.decode('utf-8', 'replace'), p.stderr.decode('utf-8', 'replace')
 
 
@@ -350,7 +357,21 @@ ERROR_CASES = [
     (['eval', '--frames', 'rotx(1)'], r"usage error: unknown or inapplicable option '--frames'"),
     (['eval', '-x', 'rotx(1)'], r"usage error: unknown option '-x'"),
     (['frobnicate'], r"usage error: unknown command 'frobnicate'"),
-    ([], r'usage: dhmath COMMAND'),
+    ([], r'^dhmath: usage error: no COMMAND given'),
+    (['--version', 'x'], r'^dhmath: usage error: --version takes no arguments'),
+    # a repeated option is an error, flag or valued, either spelling
+    (['eval', '--fixed', '--fixed', 'ident'], r"^dhmath: usage error: option '--fixed' given more than once"),
+    (['fk', '--frames', 'r.dh', '0', '--frames'], r"^dhmath: usage error: option '--frames' given more than once"),
+    (['ik', 'r.dh', 'ident', '--q0', '0', '--q0=1'], r"^dhmath: usage error: option '--q0=1' given more than once"),
+    (['ik', 'r.dh', 'ident', '--w-rot=1', '--w-rot', '2'],
+     r"^dhmath: usage error: option '--w-rot' given more than once"),
+    # standard input can be read once
+    (['ik', '-', '-'], r"^dhmath: usage error: '-' \(standard input\) given more than once"),
+    (['eval', '-'], r'^dhmath: error at column 1 of EXPR: empty expression'),
+    # a projective EXPR has no rotation (as ik says of such a target)
+    (['quat', 'persp(z,2)'], r'^dhmath: error: quat: EXPR is not rigid: its bottom row is 0 0 -0.5 1, not 0 0 0 1'),
+    (['euler', 'ZYX', 'rotx(10) persp(x,4)'], r'^dhmath: error: euler: EXPR is not rigid: its bottom row is '),
+    (['axis', 'persp(y,10)'], r'^dhmath: error: axis: EXPR is not rigid: its bottom row is 0 -0.100000001 0 1'),
 ]
 
 
@@ -360,7 +381,7 @@ def group_errors():
         check(rc == 2, 'error case %r: exit %d (want 2)' % (args, rc))
         check(out == '', 'error case %r: stdout not empty: %r' % (args, out))
         check(re.search(pat, err) is not None, 'error case %r: stderr %r does not match %r' % (args, err, pat))
-        check(not args or err.startswith('dhmath: '),
+        check(err.startswith('dhmath: '),
               'error case %r: stderr should start with "dhmath: ": %r' % (args, err))
 
 
@@ -565,7 +586,7 @@ def group_robotfile(seed, tmp):
     rc, out, err = run(['fk', path, '0'])
     check(rc == 0, 'fk on a robot with a = 40000: rc %d %r' % (rc, err))
     rc, out, err = run(['fk', '--fixed', path, '0'])
-    check(rc == 2 and out == '' and 'does not fit the fixed-point formats' in err,
+    check(rc == 2 and out == '' and 'joint 1: a=40000 does not fit the fixed-point length format' in err,
           'fk --fixed on a robot with a = 40000: rc %d out %r err %r' % (rc, out, err))
 
     rng = random.Random(seed)
@@ -736,7 +757,12 @@ def group_examples():
             check(rc in (0, 3), 'ik %s rc %d %r' % (name, rc, err))
             st = stats.setdefault(name, [0, 0])
             st[0 if rc == 0 else 1] += 1
-            check(err.startswith('ik: '), 'ik status line %r' % err)
+            # the status line last; before it only the warnings for a start
+            # outside the limits (clamped by the IK)
+            lines = err.splitlines()
+            check(len(lines) >= 1 and lines[-1].startswith('ik: ') and
+                  all(re.match(r'dhmath: warning: --q0: joint \d value .* clamped to ', x) for x in lines[:-1]),
+                  'ik status line %r' % err)
             if rc == 0:
                 qs = [float(x) for x in nums(out)[0]]
                 T2 = ref_fk(rob, qs)
@@ -796,12 +822,137 @@ def group_rot(seed):
 
 
 def group_help():
+    # --version: the library version from include/dhmath/dhmath.h
+    hdr = open(os.path.join(ROOT, 'include', 'dhmath', 'dhmath.h')).read()
+    ver = '.'.join(re.search(r'#define DHMATH_VERSION_%s (\d+)' % k, hdr).group(1) for k in ('MAJOR', 'MINOR', 'PATCH'))
+    rc, out, err = run(['--version'])
+    check(rc == 0 and out == 'dhmath %s\n' % ver and err == '', '--version: rc %d out %r err %r' % (rc, out, err))
     for args in (['--help'], ['help'], ['-h']):
         rc, out, err = run(args)
         check(rc == 0 and out.startswith('usage: dhmath') and err == '', 'help %r' % args)
         for word in ('eval', 'axis', 'point', 'plane', 'fk', 'jacobian', 'ik', 'euler', 'quat', 'EXPR',
-                     'persp(x|y|z,f)'):
+                     'persp(x|y|z,f)', '--version', "'-'"):
             check(word in out, 'help mentions %s' % word)
+
+
+def f32_bits(b):
+    return struct.unpack('<f', struct.pack('<I', b))[0]
+
+
+def g9(x):
+    s = '%.9g' % x
+    return '0' if x == 0.0 else s
+
+
+def group_numbers():
+    """Every float the CLI prints (%.9g) must read back as the same float:
+    point ident x y z 1 prints x, y, z after parsing them into floats."""
+    edges = [0x7f7fffff, 0xff7fffff, 0x00800000, 0x80800000, 0x007fffff, 0x807fffff, 0x00000001,
+             0x80000001, 0x00000002, 0x00400000, 0x00800001, 0x7f7ffffe, 0x3f800000, 0x3f7fffff]
+    # plus a strided sample of all finite patterns (both signs)
+    pats = edges + [b for b in range(0, 1 << 32, (1 << 32) // 1500 + 7919)
+                    if (b & 0x7f800000) != 0x7f800000]
+    vals = [f32_bits(b) for b in pats]
+    bad = 0
+    for k in range(0, len(vals), 3):
+        tri = (vals[k:k + 3] + [0.0, 0.0])[:3]
+        texts = [g9(v) for v in tri]
+        # the first argument is x: a 0 * FLT_MAX cannot appear (ident)
+        rc, out, err = run(['point', 'ident'] + texts + ['1'])
+        ok = rc == 0 and out == ' '.join(texts) + ' 1\n'
+        bad += not ok
+        check(ok, 'point ident %s 1: rc %d out %r err %r' % (' '.join(texts), rc, out, err))
+    # the same texts inside an EXPR
+    rc, out, err = run(['eval', 'trans(3.40282347e+38,-1.17549435e-38,1.40129846e-45)'])
+    check(rc == 0 and [r.split(' ')[3] for r in out.split('\n')[:3]] == ['3.40282347e+38', '-1.17549435e-38',
+                                                                         '1.40129846e-45'],
+          'eval trans(FLT_MAX, -FLT_MIN, 2^-149): rc %d %r %r' % (rc, out, err))
+    print('numbers: %d floats through point ident, %d failed' % (len(vals), bad))
+
+
+def write(tmp, name, text):
+    path = os.path.join(tmp, name)
+    with open(path, 'w') as f:
+        f.write(text)
+    return path
+
+
+def group_messages(tmp):
+    puma = os.path.join(ROOT, 'examples', 'robots', 'puma560.dh')
+    rc, out, err = run(['fk', '--expr', puma, '10,-30,45,20,35,-60'])
+    check(rc == 0, 'fk --expr puma560: rc %d %r' % (rc, err))
+    target = out.strip()
+    cases = []
+    # the robot's size overflows the float IK
+    big = write(tmp, 'big.dh', 'joint R a=3e38\njoint R a=1\n')
+    cases.append((['ik', big, 'ident'], r"^dhmath: error: ik: the robot's size overflows the float IK: L = 3e\+38"))
+    cases.append((['ik', big, 'ident', '--w-rot', '1'],
+                  r"^dhmath: error: ik: overflow: .* not finite in float \(the robot's size L = 3e\+38\)"))
+    # --w-rot beyond the IK's bound is named
+    cases.append((['ik', puma, target, '--w-rot', '1e30'], r'^dhmath: error: --w-rot 1e30 is too large'))
+    cases.append((['ik', puma, target, '--w-rot=5e18'], r'^dhmath: error: --w-rot 5e18 is too large'))
+    # a tool or base that is not rigid is named, not the target
+    sc = write(tmp, 'scaled_tool.dh', 'joint R a=1\njoint R a=1\n\ntool scale(2,2,2)\n')
+    cases.append((['ik', sc, 'trans(1,0,0)'], r"^dhmath: error: ik: the robot's tool \(%s:4\) is not rigid"
+                  % re.escape(sc)))
+    sb = write(tmp, 'scaled_base.dh', 'base scale(1,1,-1)\njoint R a=1\n')
+    cases.append((['ik', sb, 'trans(1,0,0)'], r"^dhmath: error: ik: the robot's base \(%s:1\) is not rigid"
+                  % re.escape(sb)))
+    cases.append((['ik', puma, 'persp(z,2)'], r'^dhmath: error: ik: EXPR is not rigid: its bottom row'))
+    cases.append((['ik', puma, 'scale(1,2,1)'], r'^dhmath: error: ik: the rotation part of the target EXPR'))
+    # fk --fixed: the constant without a fixed-point form, its value and the range
+    for k, (key, val, fmt, unit) in enumerate((('a', '40000', 'length format Q16.16', '-32768 <= a < 32768 length units'),
+                                ('d', '-32768.5', 'length format Q16.16', '-32768 <= d < 32768 length units'),
+                                ('alpha', '40000', r'angle format \(degrees\) Q16.16', '-32768 <= alpha < 32768 deg'),
+                                ('theta', '-33000', r'angle format \(degrees\) Q16.16', '-32768 <= theta < 32768 deg'),
+                                ('a', '32767.99999', 'length format Q16.16', '-32768 <= a < 32768'))):
+        path = write(tmp, 'q_%d.dh' % k, '# big\njoint R a=1\njoint P %s=%s\n' % (key, val))
+        cases.append((['fk', '--fixed', path, '0,0'], r'^dhmath: error: %s:3: joint 2: %s=%s.* does not fit the '
+                      r'fixed-point %s of --fixed \(it needs %s' % (re.escape(path), key, re.escape(val), fmt, unit)))
+    sat = write(tmp, 'sat.dh', 'joint R a=20000\njoint R a=20000\n')
+    cases.append((['fk', '--fixed', sat, '0,0'], r'^dhmath: error: overflow: fk --fixed: an entry of a frame of the '
+                  r'chain saturates \(positions must lie in the fixed-point length format Q16.16, \|x\| < 32768'))
+    for args, pat in cases:
+        rc, out, err = run(args)
+        check(rc == 2 and out == '' and re.search(pat, err) is not None,
+              'message case %r: rc %d out %r err %r (want %r)' % (args, rc, out, err, pat))
+    # the float path of the same robots still works
+    rc, out, err = run(['fk', sat, '0,0'])
+    check(rc == 0 and nums(out)[0][3] == 40000.0, 'fk (float) of sat.dh: %r %r' % (out, err))
+    rc, out, err = run(['ik', sc, 'trans(1,0,0)', '--position'])
+    check(rc == 0, 'ik --position with a scaled tool: rc %d %r' % (rc, err))
+
+    # --q0 outside the limits: a warning that it was clamped, then the solve
+    rc, out, err = run(['ik', puma, target, '--q0', '170,0,0,0,0,0'])
+    check(rc in (0, 3) and 'dhmath: warning: --q0: joint 1 value 170 outside its limits [-160, 160]: clamped to 160'
+          in err, 'ik --q0 clamp warning: rc %d %r' % (rc, err))
+    lim = write(tmp, 'lim.dh', 'joint R a=1 min=10 max=20\njoint R a=1\n')
+    rc, out, err = run(['ik', lim, 'trans(1.5,0.5,0)', '--position'])
+    check(rc in (0, 3) and 'warning: start (no --q0, all zeros): joint 1 value 0 outside its limits [10, 20]: '
+          'clamped to 10' in err, 'ik default start clamp warning: rc %d %r' % (rc, err))
+    rc, out, err = run(['ik', puma, target, '--q0', '10,0,0,0,0,0'])
+    check('warning' not in err, 'ik --q0 within the limits warns: %r' % err)
+
+    # '-' reads the EXPR or the robot file from standard input
+    for args, stdin in ((['eval', '-'], b'trans(4,-3,7) roty(90)\n rotz(90)\n'),
+                        (['eval', '--fixed', '-'], b'trans(4,-3,7) roty(90) rotz(90)'),
+                        (['point', '-', '7', '3', '2'], b'trans(4,-3,7) roty(90) rotz(90)')):
+        rc, out, err = run(args, stdin=stdin)
+        want = {'point': '6 4 10 1\n'}.get(args[0], '0 0 1 4\n1 0 0 -3\n0 1 0 7\n0 0 0 1\n')
+        check(rc == 0 and out == want, '%r < %r: rc %d out %r err %r' % (args, stdin, rc, out, err))
+    text = open(puma, 'rb').read()
+    rc1, out1, _ = run(['fk', puma, '10,20,30,40,50,60'])
+    rc2, out2, err2 = run(['fk', '-', '10,20,30,40,50,60'], stdin=text)
+    check(rc1 == 0 and rc2 == 0 and out1 == out2, 'fk - < puma560.dh: rc %d %r %r' % (rc2, out2, err2))
+    rc, out, err = run(['ik', '-', target, '--q0', '15,-25,40,25,30,-55'], stdin=text)
+    check(rc == 0 and len(nums(out)[0]) == 6, 'ik - < puma560.dh: rc %d %r %r' % (rc, out, err))
+    rc, out, err = run(['ik', puma, '-', '--q0', '15,-25,40,25,30,-55'], stdin=target.encode())
+    check(rc == 0 and len(nums(out)[0]) == 6, 'ik ROBOT - < EXPR: rc %d %r %r' % (rc, out, err))
+    rc, out, err = run(['fk', '-', '0'], stdin=b'joint R a=1\njoint Q\n')
+    check(rc == 2 and out == '' and err.startswith('dhmath: error: <stdin>:2:7: joint: type must be R or P'),
+          'fk - with a bad robot file: %r' % err)
+    rc, out, err = run(['eval', '-'], stdin=b'rotx(30) rotw(3)')
+    check(rc == 2 and 'column 10 of EXPR: unknown term' in err, 'eval - with a bad EXPR: %r' % err)
 
 
 def main():
@@ -826,6 +977,10 @@ def main():
             group_rot(seed)
         elif group == 'help':
             group_help()
+        elif group == 'numbers':
+            group_numbers()
+        elif group == 'messages':
+            group_messages(tmp)
         else:
             print('unknown group', group)
             return 2

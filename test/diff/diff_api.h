@@ -166,6 +166,7 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_robot_set_tool_q, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
     X(dh_robot_check_limits_f32, g_robot, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_robot_check_limits_q, g_robot, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_robot_check, g_robot, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_link_f32, g_robot, 1000000, DIFF_OUT_SMALL, C_ZERO_SIGN) \
     X(dh_fk_f32, g_robot, 1000000, DIFF_OUT_SMALL, C_ZERO_SIGN) \
     X(dh_fk_frames_f32, g_robot, 1000000, DIFF_OUT_FRAMES, C_ZERO_SIGN) \
@@ -176,7 +177,7 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_jacobian_tool_f32, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_rot_error_f32, g_rot, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_pose_error_f32, g_check, 1000000, DIFF_OUT_SMALL, C_BITS) \
-    X(dh_ik_params_default, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_ik_params_default, g_robot, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_ik_f32, g_ik, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS)
 
 /* enum of the table rows */

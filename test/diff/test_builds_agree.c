@@ -620,7 +620,7 @@ static void g_ik(diff_in *in)
     if (dh_fk_f32(r, in->q, &T) != DH_OK || rn(8u) == 0u) mat4_gen(&T);
     in->M[0] = T;
     for (j = 0; j < DH_MAX_JOINTS; j++) in->q[j] = rn(2u) ? in->q[j] + (float)rd(-20.0, 20.0) : q_f32(r, j);
-    dh_ik_params_default(&in->ikp);
+    dh_ik_params_default(r, &in->ikp);
     in->ikp.max_iter = 1u + rn(64u);
     in->ikp.restarts = rn(4u);
     if (rn(4u) == 0u) in->ikp.mask = rn(2u) ? DH_IK_POSITION : (rn(8u) ? rn(64u) : ru());
