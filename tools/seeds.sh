@@ -12,8 +12,8 @@
 # Environment: SEEDS_BUILD (build dir, default build/host: configured
 # Release and built once, then reused), JOBS (ctest -j, default 2),
 # DHT_ITER_DIV (loop counts divided by this, default 10: 200 seeds take
-# about 3-4 minutes on two idle cores; DHT_ITER_DIV=1 runs the full counts
-# of the default ctest run, about 12 s per seed, 40 minutes for 200).
+# about 10 minutes on two cores; DHT_ITER_DIV=1 runs the full counts of the
+# default ctest run, about 12 s per seed, 40 minutes for 200).
 # FULL_COUNT_SUITES (default test_ik) run at full counts whatever
 # DHT_ITER_DIV says: their checks are success rates, which a tenth of the
 # targets would turn into coarser statistics (98/100 against >= 99 %). A failing seed reproduces with
