@@ -63,7 +63,12 @@ if(DHT_ITER_DIV_OVERRIDE)
 endif()
 
 set(DHT_SEED "" CACHE STRING "Seed of the target test runner (empty: the default seed of test/dht_common.c)")
-if(DHT_SEED AND TARGET dht)
+# the same rule as the host's DHT_SEED (test/dht.h dht_parse_seed): decimal
+# without a leading zero or 0x hex, so "010" cannot silently become octal 8
+if(NOT DHT_SEED STREQUAL "" AND NOT DHT_SEED MATCHES "^(0|[1-9][0-9]*|0[xX][0-9a-fA-F]+)$")
+  message(FATAL_ERROR "DHT_SEED=${DHT_SEED} is not a seed: decimal digits without a leading zero, or 0x and hex digits")
+endif()
+if(NOT DHT_SEED STREQUAL "" AND TARGET dht)
   target_compile_definitions(dht PRIVATE DHT_DEFAULT_SEED=${DHT_SEED})
 endif()
 

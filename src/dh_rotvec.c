@@ -9,6 +9,7 @@
  */
 #include <float.h>
 #include <math.h>
+#include <string.h>
 
 #include "dhmath/dh_rot.h"
 #include "dhmath/dh_mat4.h"
@@ -97,9 +98,52 @@ dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, flo
     return dh_mat4_to_axis_angle_f32(&T, axis, deg);
 }
 
+/* a * a = *h + *l exactly (Dekker's product; Veltkamp's split done on the
+ * bits: the high part keeps 12 significant bits, so each partial product
+ * has at most 24 and is exact, fused or not). Needs a * a normal: the low
+ * part of a square below 2^-102 is lost to underflow. */
+static void dh_square2(float a, float *h, float *l)
+{
+    uint32_t u;
+    float ah, al;
+    memcpy(&u, &a, sizeof u);
+    u &= 0xFFFFF000u;
+    memcpy(&ah, &u, sizeof ah);
+    al = a - ah; /* exact: the 12 low bits */
+    *h = a * a;
+    *l = ((ah * ah - *h) + 2.0f * ah * al) + al * al;
+}
+
+/* a + b = *s + *e exactly (Knuth's TwoSum, any order of magnitudes) */
+static void dh_sum2(float a, float b, float *s, float *e)
+{
+    const float t = a + b;
+    const float bb = t - a;
+    *s = t;
+    *e = (a - (t - bb)) + (b - bb);
+}
+
+/* |(x, y, z)| as th + tl to about 2^-44 relative: the sum of squares as an
+ * unevaluated float pair, the float square root th, and the correction
+ * tl = (x^2 + y^2 + z^2 - th^2) / (2 th) from the exact residual (th^2 is
+ * within 2 ulp of the sum, so s - ph is exact by Sterbenz's lemma). */
+static DH_NOINLINE float dh_norm3_2(float x, float y, float z, float *tl)
+{
+    float h1, l1, h2, l2, h3, l3, s1, e1, s2, e2, th, ph, pl;
+    dh_square2(x, &h1, &l1);
+    dh_square2(y, &h2, &l2);
+    dh_square2(z, &h3, &l3);
+    dh_sum2(h1, h2, &s1, &e1);
+    dh_sum2(s1, h3, &s2, &e2);
+    th = dh_sqrt_f32(s2);
+    dh_square2(th, &ph, &pl);
+    *tl = (((s2 - ph) - pl) + ((l1 + l2 + l3) + (e1 + e2))) / (2.0f * th);
+    return th;
+}
+
 dh_status dh_rotvec_to_mat3_f32(const dh_vec3_f32 *phi, dh_mat3_f32 *R)
 {
-    float x, y, z, m, t, k[3], sh, ch;
+    float x, y, z, m, t, tl, d, u, su, cu, k[3], sh, ch;
     int scaled;
     DH_ASSERT(R != NULL && phi != NULL);
     x = phi->x;
@@ -117,22 +161,43 @@ dh_status dh_rotvec_to_mat3_f32(const dh_vec3_f32 *phi, dh_mat3_f32 *R)
         return DH_OK;
     }
     /* within 2^-63 .. 2^63 the squares neither overflow nor underflow:
-     * |phi| directly (one rounding less), else scaled by 1 / m */
+     * |phi| directly, else scaled by 1 / m */
     scaled = !(m >= 1.0842022e-19f && m <= 9.2233720e18f);
     if (scaled) {
         x /= m;
         y /= m;
         z /= m;
     }
-    t = dh_sqrt_f32(x * x + y * y + z * z);
+    /* The angle t + tl is |phi| to about 2^-44 relative: the float |phi|
+     * alone is off by up to 1.5 ulp (3.6e-7 rad just below pi), an error
+     * that R inherits in full. k = phi / (t + tl), to first order. */
+    t = dh_norm3_2(x, y, z, &tl);
+    d = tl / t;
     k[0] = x / t;
     k[1] = y / t;
     k[2] = z / t;
+    k[0] -= k[0] * d;
+    k[1] -= k[1] * d;
+    k[2] -= k[2] * d;
     if (scaled) {
         t *= m;
+        tl *= m;
         if (!dh_isfinite_f32(t)) return DH_ERR_NAN;   /* |phi| > FLT_MAX */
     }
     dh_sincosf_(0.5f * t, &sh, &ch);     /* libm-free, exact reduction */
+    /* (sh, ch) rotated on by u = tl / 2: to first order while u^2 / 2 is
+     * below 2^-27 (|phi| up to about 2^11), else exactly (huge lengths,
+     * where tl itself can be large) */
+    u = 0.5f * tl;
+    if (fabsf(u) <= 1.220703125e-4f) { /* 2^-13 */
+        su = u;
+        cu = 1.0f;
+    } else {
+        dh_sincosf_(u, &su, &cu);
+    }
+    d = sh;
+    sh = sh * cu + ch * su;
+    ch = ch * cu - d * su;
     dh_rodrigues(R, k, 2.0f * sh * ch, 1.0f - 2.0f * sh * sh, 2.0f * sh * sh);
     return DH_OK;
 }

@@ -12,9 +12,11 @@
  * printing file:line, the expression and the values.
  *
  * Randomness: dht_rand_u32()/dht_rand_uniform() from a seed that is printed
- * on failure; DHT_SEED in the environment (host) overrides it.
- * DHT_ITER(n) scales loop counts: full on the host, reduced on slow targets
- * (DHT_ITER_DIV, default 1 on host and set per target by CMake).
+ * when the suite starts and on failure; DHT_SEED in the environment (host)
+ * overrides it, and a DHT_SEED that is not a seed (dht_parse_seed) makes
+ * the suite fail without running. DHT_ITER(n) scales loop counts: full on
+ * the host, reduced on slow targets (DHT_ITER_DIV, set per target by CMake,
+ * or in the host's environment).
  */
 #ifndef DHT_H
 #define DHT_H
@@ -77,10 +79,18 @@ uint32_t dht_rand_u32(void);
 /* uniform in [lo, hi) */
 double dht_rand_uniform(double lo, double hi);
 
-#ifndef DHT_ITER_DIV
-#define DHT_ITER_DIV 1
-#endif
-/* loop count n on the host, n / DHT_ITER_DIV (at least 1) on slow targets */
-#define DHT_ITER(n) (((n) / DHT_ITER_DIV) > 0 ? ((n) / DHT_ITER_DIV) : 1)
+/* Parses a seed: decimal digits without a leading zero ("0" itself is
+ * fine) or 0x/0X followed by 1..16 hex digits, the whole string, at most
+ * 2^64 - 1. Returns 1 and sets *seed, or 0 (no octal, sign, blank or
+ * suffix: "08", "010", "abc", " 1", "-1", "1x" are all refused). */
+int dht_parse_seed(const char *s, uint64_t *seed);
+
+/* Loop-count divisor: DHT_ITER_DIV of the build on a target (set per core
+ * by CMake), the DHT_ITER_DIV environment variable on the host (a positive
+ * decimal number, default 1; tools/seeds.sh uses it for many-seed runs). */
+long dht_iter_div(void);
+/* loop count n divided by dht_iter_div(), at least 1 */
+long dht_iter(long n);
+#define DHT_ITER(n) dht_iter((long)(n))
 
 #endif /* DHT_H */

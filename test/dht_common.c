@@ -35,3 +35,40 @@ double dht_rand_uniform(double lo, double hi)
 }
 
 void dht_memcpy4(void *dst, const void *src) { memcpy(dst, src, 4); }
+
+int dht_parse_seed(const char *s, uint64_t *seed)
+{
+    uint64_t v = 0;
+    size_t i, n = 0;
+    if (s == NULL || s[0] == '\0') return 0;
+    if (s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) {
+        for (i = 2; s[i] != '\0'; i++) {
+            char ch = s[i];
+            unsigned d;
+            if (ch >= '0' && ch <= '9') d = (unsigned)(ch - '0');
+            else if (ch >= 'a' && ch <= 'f') d = (unsigned)(ch - 'a') + 10u;
+            else if (ch >= 'A' && ch <= 'F') d = (unsigned)(ch - 'A') + 10u;
+            else return 0;
+            if (++n > 16u) return 0;
+            v = (v << 4) | d;
+        }
+        if (n == 0u) return 0;
+    } else {
+        if (s[0] == '0' && s[1] != '\0') return 0; /* 010: octal or decimal? */
+        for (i = 0; s[i] != '\0'; i++) {
+            unsigned d;
+            if (s[i] < '0' || s[i] > '9') return 0;
+            d = (unsigned)(s[i] - '0');
+            if (v > (UINT64_MAX - d) / 10u) return 0;
+            v = v * 10u + d;
+        }
+    }
+    *seed = v;
+    return 1;
+}
+
+long dht_iter(long n)
+{
+    long d = dht_iter_div();
+    return (n / d > 0) ? n / d : 1;
+}

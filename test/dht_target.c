@@ -36,6 +36,12 @@
 
 #include "dht.h"
 
+#ifndef DHT_ITER_DIV
+#define DHT_ITER_DIV 1
+#endif
+
+long dht_iter_div(void) { return (long)DHT_ITER_DIV; }
+
 #ifndef DHT_TARGET_MAX_CASES
 #define DHT_TARGET_MAX_CASES 256
 #endif

@@ -33,3 +33,28 @@ if(DH_BUILD_TOOLS)
   add_test(NAME cli_number_roundtrip COMMAND cli_number_roundtrip)
   set_tests_properties(cli_number_roundtrip PROPERTIES TIMEOUT 600 LABELS cli)
 endif()
+
+# A DHT_SEED that is not a seed (test/dht.h dht_parse_seed) stops a suite
+# with status 2 and a message naming it, and so does a bad DHT_ITER_DIV;
+# a valid seed is printed when the suite starts.
+foreach(bad abc 08 010 0x -1 18446744073709551616)
+  add_test(NAME dht_seed_rejects_${bad}
+    COMMAND sh -c "out=$(DHT_SEED=\"$1\" \"$2\" 2>&1); rc=$?; echo \"$out\"; [ $rc -eq 2 ] && echo \"$out\" | grep -q 'DHT_SEED=\"'\"$1\"'\" is not a seed'"
+            sh ${bad} $<TARGET_FILE:test_status>)
+endforeach()
+add_test(NAME dht_iter_div_rejects_0
+  COMMAND sh -c "out=$(DHT_ITER_DIV=0 \"$1\" 2>&1); rc=$?; echo \"$out\"; [ $rc -eq 2 ] && echo \"$out\" | grep -q 'is not a loop-count divisor'"
+          sh $<TARGET_FILE:test_status>)
+add_test(NAME dht_seed_printed
+  COMMAND sh -c "DHT_SEED=0xDEADbeef \"$1\" | grep -q 'seed 0xdeadbeef (DHT_SEED)'" sh $<TARGET_FILE:test_status>)
+
+# A few seeded suites also at fixed seeds other than the default, among
+# them seeds whose inputs come close to the bounds (T*T^-1 of frames with
+# |R^T R - I| near 5 LSB, rot_axis frames at 3 LSB of |R^T R - I|,
+# two-joint chains near 3.5 LSB, exp and log inputs near their bounds).
+foreach(_seed 0x06c45d188009454f 0xdeadbeef 0xe6495f5d102301eb 0x9fea7dfc79d452d9)
+  foreach(_suite test_frame_q test_fk_q test_rotvec)
+    add_test(NAME ${_suite}_seed_${_seed} COMMAND ${_suite})
+    set_tests_properties(${_suite}_seed_${_seed} PROPERTIES ENVIRONMENT "DHT_SEED=${_seed}" TIMEOUT 600)
+  endforeach()
+endforeach()

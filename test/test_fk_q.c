@@ -14,6 +14,7 @@
 #include "dhmath/dh_trig.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #define R2D (180.0 / 3.14159265358979323846)
@@ -34,6 +35,10 @@
 #define RR_ROT_LSB 7.0           /* measured <= 4.8 LSB */
 #define LINK_POS (0.75 * LSBPOS + 1e-6) /* measured 0.52 LSB */
 #define LINK_ROT_LSB 3.0         /* measured 2.2 LSB */
+/* two-joint chains (long_links): the first link's error carried through the
+ * second joint's rotations plus their own rounding; measured <= 3.53 LSB
+ * over 201 seeds x 4000 chains, so not the single-link figure */
+#define CHAIN2_ROT_LSB 4.5
 
 static void build_mm(const dhs_robot *d, dh_robot *r)
 {
@@ -59,6 +64,24 @@ typedef struct {
 static void upd(double *m, double v)
 {
     if (!(v <= *m)) *m = v;
+}
+
+/* the fixed-path description of r and the joint values qq as text, for
+ * failure messages: per joint type, theta offset and alpha (Q16.16 deg),
+ * d and a (dh_qpos), q; the base and tool as flags */
+static const char *robot_str(const dh_robot *r, const int32_t *qq, char *buf, size_t len)
+{
+    size_t used = 0;
+    uint32_t i;
+    used += (size_t)snprintf(buf, len, "%s flags 0x%lx:", r->conv == DH_CONV_MODIFIED ? "mdh" : "dh",
+                             (unsigned long)r->flags);
+    for (i = 0; i < r->n && used < len; i++) {
+        const dh_joint *j = &r->joint[i];
+        used += (size_t)snprintf(buf + used, len - used, " [%c th %ld d %ld a %ld al %ld q %ld]",
+                                 j->type == DH_JOINT_PRISMATIC ? 'P' : 'R', (long)j->theta_q, (long)j->d_q,
+                                 (long)j->a_q, (long)j->alpha_q, (long)qq[i]);
+    }
+    return buf;
 }
 
 static void accuracy(const dhs_robot *d_mm, const dhs_robot *d_m, double pos_tol, double rot_tol_lsb,
@@ -203,7 +226,7 @@ static void dense_sweep(void)
             int32_t step = 899; /* 0.0137 deg */
             dhs_random_q(d, q);
             dhs_q_from_double(&r, q, qq);
-            if (DHT_ITER_DIV > 1) step = step * (int32_t)DHT_ITER_DIV;
+            if (dht_iter_div() > 1) step = step * (int32_t)dht_iter_div();
             for (v = lo; v <= hi - step; v += step) {
                 qq[j] = v;
                 fk_q_ok(&r, qq, &T);
@@ -281,6 +304,7 @@ static double chain_reach(const dhs_robot *d, const double *q)
 static void random_robots(void)
 {
     long k, n = DHT_ITER(3000);
+    char buf[480];
     double ep = 0, er = 0, elp = 0, elr = 0;
     for (k = 0; k < n; k++) {
         dhs_robot d;
@@ -309,17 +333,23 @@ static void random_robots(void)
         reach = ldexp(0.5 * (double)(d.n + 2u), -DH_QPOS_FRAC) + chain_reach(&d, q) * LSB30;
         e = dhs_pos_err_q(&T, &R);
         upd(&ep, e / reach);
-        DHT_TRUE_MSG(e <= RR_POS_REL * reach, "robot %ld pos %.3g mm (scale %.3g)", k, e, reach);
+        DHT_TRUE_MSG(e <= RR_POS_REL * reach, "robot %ld pos %.3g mm > bound %.3g for %s", k, e,
+                     RR_POS_REL * reach, robot_str(&r, qq, buf, sizeof buf));
         e = dhs_rot_err_q(&T, &R) / LSB30;
         upd(&er, e);
-        DHT_TRUE_MSG(e <= RR_ROT_LSB, "robot %ld rot %.3g LSB", k, e);
+        DHT_TRUE_MSG(e <= RR_ROT_LSB, "robot %ld rot %.3g LSB > bound %.3g for %s", k, e, RR_ROT_LSB,
+                     robot_str(&r, qq, buf, sizeof buf));
 
         /* frames and T_end identical to dh_fk_q */
         DHT_EQ_INT(dh_fk_frames_q(&r, qq, frames, &T2), DH_OK);
         DHT_TRUE(memcmp(&T, &T2, sizeof T) == 0);
         for (i = 0; i < r.n; i++) {
-            DHT_TRUE(dhs_pos_err_q(&frames[i], &RF[i]) <= RR_POS_REL * reach);
-            DHT_TRUE(dhs_rot_err_q(&frames[i], &RF[i]) / LSB30 <= RR_ROT_LSB);
+            DHT_TRUE_MSG(dhs_pos_err_q(&frames[i], &RF[i]) <= RR_POS_REL * reach,
+                         "frame %lu pos %.3g mm > bound %.3g for %s", (unsigned long)i,
+                         dhs_pos_err_q(&frames[i], &RF[i]), RR_POS_REL * reach, robot_str(&r, qq, buf, sizeof buf));
+            DHT_TRUE_MSG(dhs_rot_err_q(&frames[i], &RF[i]) / LSB30 <= RR_ROT_LSB,
+                         "frame %lu rot %.3g LSB > bound %.3g for %s", (unsigned long)i,
+                         dhs_rot_err_q(&frames[i], &RF[i]) / LSB30, RR_ROT_LSB, robot_str(&r, qq, buf, sizeof buf));
         }
         DHT_EQ_INT(dh_fk_frames_q(&r, qq, frames, NULL), DH_OK);
 
@@ -334,8 +364,11 @@ static void random_robots(void)
                      ldexp(j->alpha_q, -16), ldexp(j->theta_q, -16), qv, &RA);
             upd(&elp, dhs_pos_err_q(&A, &RA));
             upd(&elr, dhs_rot_err_q(&A, &RA) / LSB30);
-            DHT_TRUE(dhs_pos_err_q(&A, &RA) <= LINK_POS);
-            DHT_TRUE(dhs_rot_err_q(&A, &RA) / LSB30 <= LINK_ROT_LSB);
+            DHT_TRUE_MSG(dhs_pos_err_q(&A, &RA) <= LINK_POS, "link %lu pos %.3g > bound %.3g for %s",
+                         (unsigned long)i, dhs_pos_err_q(&A, &RA), LINK_POS, robot_str(&r, qq, buf, sizeof buf));
+            DHT_TRUE_MSG(dhs_rot_err_q(&A, &RA) / LSB30 <= LINK_ROT_LSB, "link %lu rot %.3g LSB > bound %.3g for %s",
+                         (unsigned long)i, dhs_rot_err_q(&A, &RA) / LSB30, LINK_ROT_LSB,
+                         robot_str(&r, qq, buf, sizeof buf));
         }
 
         /* a non-identity base set on the fixed side only: same frames as a
@@ -361,6 +394,7 @@ static void random_robots(void)
 static void checked_path_scaled_base(void)
 {
     long k, n = DHT_ITER(2000);
+    char buf[480];
     double ep = 0, er = 0;
     for (k = 0; k < n; k++) {
         dhs_robot d;
@@ -388,10 +422,12 @@ static void checked_path_scaled_base(void)
         reach = ldexp(0.5 * (double)(d.n + 2u), -DH_QPOS_FRAC) + g * (chain_reach(&d, q) + 1000.0) * LSB30;
         e = dhs_pos_err_q(&T, &R) / reach;
         upd(&ep, e);
-        DHT_TRUE_MSG(e <= RR_POS_REL * g, "robot %ld pos %.3g x scale", k, e);
+        DHT_TRUE_MSG(e <= RR_POS_REL * g, "robot %ld pos %.3g x scale > bound %.3g for %s", k, e, RR_POS_REL * g,
+                     robot_str(&r, qq, buf, sizeof buf));
         e = dhs_rot_err_q(&T, &R) / LSB30;
         upd(&er, e);
-        DHT_TRUE_MSG(e <= RR_ROT_LSB * g, "robot %ld rot %.3g LSB", k, e);
+        DHT_TRUE_MSG(e <= RR_ROT_LSB * g, "robot %ld rot %.3g LSB > bound %.3g for %s", k, e, RR_ROT_LSB * g,
+                     robot_str(&r, qq, buf, sizeof buf));
         /* frames (accumulated out of place) give the same end frame */
         DHT_EQ_INT(dh_fk_frames_q(&r, qq, frames, &T2), DH_OK);
         DHT_TRUE(memcmp(&T, &T2, sizeof T) == 0);
@@ -402,11 +438,12 @@ static void checked_path_scaled_base(void)
 /*
  * Joints with |a| + |d| > 2^30 LSB (more than half the Q range): on cores
  * without a 64-bit multiply they take the checked path, elsewhere the
- * fast one; both must be within the single-link accuracy.
+ * fast one; both must be within the two-joint accuracy (CHAIN2_ROT_LSB).
  */
 static void long_links(void)
 {
     long k, n = DHT_ITER(4000);
+    char buf[480];
     double ep = 0, er = 0, big = ldexp(1.0, 31 - DH_QPOS_FRAC);
     for (k = 0; k < n; k++) {
         dh_robot r;
@@ -431,10 +468,12 @@ static void long_links(void)
         reach = ldexp(2.0, -DH_QPOS_FRAC) + (fabs(a) + fabs(dd) + 200.0) * LSB30;
         e = dhs_pos_err_q(&T, &R) / reach;
         upd(&ep, e);
-        DHT_TRUE_MSG(e <= RR_POS_REL, "long link %ld: pos %.3g x scale", k, e);
+        DHT_TRUE_MSG(e <= RR_POS_REL, "long link %ld: pos %.3g x scale > bound %.3g for %s", k, e, RR_POS_REL,
+                     robot_str(&r, qq, buf, sizeof buf));
         e = dhs_rot_err_q(&T, &R) / LSB30;
         upd(&er, e);
-        DHT_TRUE(e <= LINK_ROT_LSB);
+        DHT_TRUE_MSG(e <= CHAIN2_ROT_LSB, "long link %ld: rot %.3g LSB > bound %.3g for %s", k, e, CHAIN2_ROT_LSB,
+                     robot_str(&r, qq, buf, sizeof buf));
         DHT_EQ_INT(dh_fk_frames_q(&r, qq, frames, NULL), DH_OK);
         DHT_TRUE(memcmp(&T, &frames[1], sizeof T) == 0);
     }
@@ -686,6 +725,7 @@ static double make_base(int mode, dh_frame_q *B)
 static void twist_classes(void)
 {
     long rep, nrep = DHT_ITER(12);
+    char buf[480];
     double ep = 0, er = 0;
     int conv, mode, lenmode, type;
     size_t ia;
@@ -730,12 +770,14 @@ static void twist_classes(void)
         reach = ldexp(0.5 * 5.0, -DH_QPOS_FRAC) + g * (L + 1.0) * LSB30;
         e = dhs_pos_err_q(&T, &R) / reach;
         upd(&ep, e);
-        DHT_TRUE_MSG(e <= RR_POS_REL * g, "conv %d base %d alpha %ld len %d type %d: pos %.3g x scale", conv, mode,
-                     (long)twist_alphas[ia], lenmode, type, e);
+        DHT_TRUE_MSG(e <= RR_POS_REL * g, "conv %d base %d alpha %ld len %d type %d: pos %.3g x scale > bound %.3g "
+                     "for %s", conv, mode, (long)twist_alphas[ia], lenmode, type, e, RR_POS_REL * g,
+                     robot_str(&r, qq, buf, sizeof buf));
         e = dhs_rot_err_q(&T, &R) / LSB30;
         upd(&er, e);
-        DHT_TRUE_MSG(e <= RR_ROT_LSB * g, "conv %d base %d alpha %ld len %d type %d: rot %.3g LSB", conv, mode,
-                     (long)twist_alphas[ia], lenmode, type, e);
+        DHT_TRUE_MSG(e <= RR_ROT_LSB * g, "conv %d base %d alpha %ld len %d type %d: rot %.3g LSB > bound %.3g "
+                     "for %s", conv, mode, (long)twist_alphas[ia], lenmode, type, e, RR_ROT_LSB * g,
+                     robot_str(&r, qq, buf, sizeof buf));
         DHT_EQ_INT(dh_fk_frames_q(&r, qq, frames, &T2), DH_OK);
         DHT_TRUE(memcmp(&T, &T2, sizeof T) == 0);
         DHT_TRUE(memcmp(&T, &frames[2], sizeof T) == 0);

@@ -2,7 +2,9 @@
 # The README's test command: builds and runs every test suite.
 #   tools/check.sh            all stages
 #   tools/check.sh host asan  only the named stages
-# Stages: host (Release build, cmocka suite + CLI tests), asan (ASan+UBSan),
+# Stages: host (Release build, cmocka suite + CLI tests), seeds (the seeded
+# suites again for 3 fresh seeds, printed, full loop counts; any seed
+# reproduces with tools/seeds.sh, see there), asan (ASan+UBSan),
 # target suites under QEMU (M0+, M4F, M7; M0+ and M4F again with DH_SMALL at
 # -Os; RV32IMAC and RV32IMAFC with picolibc), firmware examples, guards
 # (no .data/.bss, no heap/printf, fixed path free of float/64-bit division,
@@ -17,7 +19,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
 JOBS=${JOBS:-$(nproc)}
-STAGES=${*:-"host asan m0 m4f m7 small rv32imac rv32imafc examples guards variants coverage static contracts fuzz apidoc package"}
+STAGES=${*:-"host seeds asan m0 m4f m7 small rv32imac rv32imafc examples guards variants coverage static contracts fuzz apidoc package"}
 failed=""
 
 run_stage() {
@@ -47,6 +49,15 @@ small_suite() {
   target_suite build/m0-small cortex-m0plus.cmake -DDH_SMALL=ON -DCMAKE_BUILD_TYPE=MinSizeRel
 }
 
+# n fresh 64-bit seeds from /dev/urandom (the date when it is missing)
+fresh_seeds() {
+  local k
+  for ((k = 0; k < $1; k++)); do
+    if [ -r /dev/urandom ]; then printf '0x%s ' "$(od -An -N8 -tx8 /dev/urandom | tr -d ' ')"
+    else printf '%s ' "$(( $(date +%s%N) + k ))"; fi
+  done
+}
+
 # The examples: the host ones (README's C example, the C++ example) and the
 # firmware ones (examples/firmware/) on the M0+ and the M4F under QEMU, each
 # output checked against an independent reference. The target suites run
@@ -67,6 +78,7 @@ examples_suite() {
 for s in $STAGES; do
   case $s in
     host) run_stage host host_suite build/host ;;
+    seeds) run_stage seeds env SEEDS="$(fresh_seeds 3)" DHT_ITER_DIV=1 JOBS="$JOBS" tools/seeds.sh ;;
     asan) run_stage asan host_suite build/asan -DDH_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug ;;
     m0) [ -f port/cortex-m0plus.cmake ] && run_stage m0 target_suite build/m0 cortex-m0plus.cmake ;;
     m4f) [ -f port/cortex-m4f.cmake ] && run_stage m4f target_suite build/m4f cortex-m4f.cmake ;;

@@ -319,8 +319,9 @@ dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, flo
  *         components are finite but |phi| exceeds FLT_MAX (e.g. FLT_MAX in
  *         two components: the angle has no float value). R untouched on
  *         error.
- * Entry error <= 4e-7 for |phi| <= pi (down to 1e-30); <= 1.5e-7 * |phi|
- * for pi < |phi| <= 4 pi (mostly the float rounding of |phi| itself).
+ * Entry error <= 4e-7 for |phi| <= 4 pi (down to 1e-30), and for larger
+ * lengths that are exact in float (an axis-aligned phi); |phi| itself is
+ * carried to about 2^-44 relative (method: docs/design.md).
  */
 dh_status dh_rotvec_to_mat3_f32(const dh_vec3_f32 *phi, dh_mat3_f32 *R);
 
@@ -329,7 +330,7 @@ dh_status dh_rotvec_to_mat3_f32(const dh_vec3_f32 *phi, dh_mat3_f32 *R);
  *        t in [0, pi], so that dh_rotvec_to_mat3_f32(phi) == R.
  * Accurate down to t == 0 and up to t == pi, where phi and -phi are the
  * same rotation and the sign follows dh_mat3_to_quat_f32 (method:
- * docs/design.md). Error bounds: |phi - phi_exact| <= 6e-7 rad for
+ * docs/design.md). Error bounds: |phi - phi_exact| <= 7.5e-7 rad for
  * t <= pi - 1e-3; within 1e-3 of pi only the reproduced matrix is
  * meaningful: R reproduced within 5.5e-7 per entry.
  * @return DH_OK; DH_ERR_NAN; DH_ERR_NOT_RIGID (see file comment). phi
