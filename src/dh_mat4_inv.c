@@ -16,10 +16,11 @@
  * M by the power of two s0 that brings max|M_ij| into [1, 2): A0 = s0 M is
  * the same float matrix for T and every exact 2^k T (each element is the
  * rounding of the same real number), and every decision below is taken on
- * A0 or on A = s M, s = s0 2^-E, 2^E the largest element of the balanced
- * A0 (s is clamped to the normal range only when max|T_ij| < 2^-60), so
- * SINGULAR / OK do not depend on k. Gauss-Jordan with partial pivoting on
- * the balanced A, whose largest element is then in [2^-1, 2]: no product
+ * A0 or on A = s M, s = s0 2^-E, 2^E within a factor 3 of the largest
+ * element of the balanced A0 (s is clamped to the normal range only for
+ * max|T_ij| below 2^-60 or in the top binades), so SINGULAR / OK do not
+ * depend on k. Gauss-Jordan with partial pivoting on
+ * the balanced A, whose largest element is then in [2^-2, 2]: no product
  * underflows that the balanced magnitudes do not make inevitable (with s
  * from max|T_ij| alone, a T whose largest elements sit in p would have all
  * its balanced elements near 2^-60, and their products would underflow).
@@ -47,15 +48,16 @@
  * stays (0, 0, 0, 1/w) and the bottom row of T^-1 is a backward-stable
  * solve with R plus at most 2^-150 / sg ||R^-1|| / |w| of underflow.
  * Underflow of tiny entries of s T (<= 2^-150 each) perturbs the residual
- * by < ||X|| 2^-150 4 2^60 < 2^-9 (||X|| < 2^20 for a balanced largest
- * element >= 1/2 and cond < 2^19), so (b) covers T itself. Unscaling s X
+ * by < ||X|| 2^-150 4 2^60 < 2^-9 (||X|| < 2^21 for a balanced largest
+ * element >= 1/4 and cond < 2^19), so (b) covers T itself. Unscaling s X
  * loses F (overflow, or gradual underflow); the residual of what is
  * returned then grows by ||F / s|| na: DH_OK only if that is <= 2^-4
  * (total < 1/2 + 1/8 rounding + 2^-9 + 2^-4 < 1), else DH_ERR_OVERFLOW.
  * Each lost element is <= 2^-150 / s, weighted by <= 2^60, and na <= 8,
- * so this needs s < 2^-81, i.e. max|T_ij| >= 2^79. The inverse of A does
+ * so this needs s < 2^-81, i.e. (s >= 1 / (6 max|T_ij|)) max|T_ij| >= 2^78.
+ * The inverse of A does
  * not overflow below the condition limit: ||A^-1|| <= 2^19 / ||A|| with
- * ||A|| >= 1/2 balanced, times <= 2^60 unbalanced.
+ * ||A|| >= 1/4 balanced, times <= 2^60 unbalanced.
  *
  * Fast paths (DH_FAST_PATHS) accept a matrix only when a cheap test PROVES
  * it well conditioned; everything else goes to the general path, which
@@ -100,26 +102,20 @@
 /*
  * Affine completion of dh_inv_certified: with R^-1 (row view) in rows
  * 0..2, columns 0..2 of X and the corner w of T (a power of two), writes
- * the translation -(R^-1 p) / w and the bottom row 0 0 0 1 / w. The exact
- * scaling by r = 1 / w is applied to p if |r| > 1, else to the sum
- * (products underflow only where T^-1 w p does, and for T = 2^k T0, T0
- * affine, the sum is that of T0); 0 - dot keeps an exact zero positive,
- * + 0 after a negative r. Returns NaN iff a translation entry is NaN or
- * Inf.
+ * the translation and bottom row of T^-1 as those of the affine
+ * T0 = [R, p r; 0 0 0 1], r = 1 / w, times diag(1, 1, 1, r):
+ * 0 - (R^-1 (p r)) (0 - dot keeps an exact zero positive) and 0 0 0 r.
+ * For T = 2^k T0 (T0 affine) p r is T0's p, exactly. Returns NaN iff a
+ * translation entry is NaN or Inf.
  */
 static DH_NOINLINE float dh_affine_t(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
     const float r = 1.0f / T->m[3][3];
-    float z = 0.0f, a = 1.0f, b = r;
+    const float px = T->m[3][0] * r, py = T->m[3][1] * r, pz = T->m[3][2] * r;
+    float z = 0.0f;
     int i;
-    if (fabsf(r) > 1.0f) {
-        a = r;
-        b = 1.0f;
-    }
     for (i = 0; i < 3; i++) {
-        const float t =
-            (0.0f - (T->m[3][0] * a * X->m[0][i] + T->m[3][1] * a * X->m[1][i] + T->m[3][2] * a * X->m[2][i])) * b +
-            0.0f;
+        const float t = 0.0f - (px * X->m[0][i] + py * X->m[1][i] + pz * X->m[2][i]);
         X->m[3][i] = t;
         X->m[i][3] = 0.0f;
         z += t * 0.0f;
@@ -294,72 +290,89 @@ static DH_NOINLINE DH_COLD int dh_inv_gauss_jordan(dh_mat4_f32 *X)
 
 /*
  * The scaling of the general path: returns the power of two s that brings
- * the largest element of the balanced s M (M: T, or blockdiag(R, 1) for
- * affine T) into [1, 2), clamped to [2^-126, 2^127]; 0 for a zero or
- * denormal matrix (R), NaN if an element of T is NaN or Inf. sg (1 for
- * affine T) goes to X->m[0][0] of the scratch X (no pointer to a local in
- * the caller: a small frame on Cortex-M0+). Both come from A0 = s0 M, s0
- * the power of two bringing max|M_ij| into [1, 2) ([2, 4) for the top
- * binade): A0 and s T are the same floats for T and any exact 2^k T, so
- * every later decision is too (unless s is clamped).
+ * the largest of (row sums of R, |w|, |p|_1 / sg, |q|_1 sg) of s M (M: T,
+ * or blockdiag(R, 1) for the affine type), which is within a factor 3 of
+ * its largest balanced element, into [1, 2), clamped to [2^-126, 2^127];
+ * 0 for a zero or denormal matrix (R), NaN if an element of T is NaN or
+ * Inf. sg (1 for the affine type) goes to X->m[0][0] of the scratch X (no
+ * pointer to a local in the caller: a small frame on Cortex-M0+). Both
+ * come from A0 = s0 M, s0 the power of two bringing max|M_ij| into [1, 2)
+ * ([2, 4) for the top binade): A0 and s T are the same floats for T and
+ * any exact 2^k T, so every later decision is too (unless s is clamped).
  */
 static DH_NOINLINE DH_COLD float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_f32 *X)
 {
-    float mx = 0.0f, s = 0.0f, z = 0.0f, cp = 0.0f, rq = 0.0f, m3 = 0.0f, sg = 1.0f, mr = 0.0f, mp = 0.0f,
-          mq = 0.0f;
-    uint32_t e, b;
+    float s, cp = 0.0f, rq = 0.0f, m3 = 0.0f, sg = 1.0f, w;
+    uint32_t u, ur = 0u, ub = 0u, e, b;
     int i, j;
+    /* largest |element| of R and of p, q, w, on the bits (for finite
+     * floats the order of |x| is that of the bits without the sign; NaN
+     * and Inf are above 0x7F7FFFFF) */
     for (i = 0; i < 4; i++) {
         for (j = 0; j < 4; j++) {
-            const float v = fabsf(T->m[i][j]);
-            z += v * 0.0f;
-            if (!aff || (i < 3 && j < 3)) mx = (v > mx) ? v : mx;
+            memcpy(&u, &T->m[i][j], sizeof u);
+            u &= 0x7FFFFFFFu;
+            if (i < 3 && j < 3) ur = (u > ur) ? u : ur;
+            else ub = (u > ub) ? u : ub;
         }
     }
-    if (!(mx >= FLT_MIN)) return s + z;
-    memcpy(&e, &mx, sizeof e);
-    e >>= 23;
-    b = (e >= 254u) ? 1u : 254u - e; /* exponent field of s0 */
+    u = (ub > ur) ? ub : ur;
+    if (u > 0x7F7FFFFFu) {
+        u = 0x7FC00000u;                /* NaN */
+        memcpy(&s, &u, sizeof s);
+        return s;
+    }
+    if (!aff) ur = u;
+    if (ur < 0x00800000u) return 0.0f;  /* zero or denormal */
+    e = ur >> 23;
+    b = (e >= 254u) ? 1u : 254u - e;    /* exponent field of s0 */
     e = b << 23;
     memcpy(&s, &e, sizeof s);
-    /* sums and maxima of A0 (elements <= 4: no overflow) */
-    for (i = 0; i < 4; i++) {
+    /* row sums of R, |p|_1, |q|_1 of A0 = s0 M (elements <= 4) */
+    for (i = 0; i < 3; i++) {
         float rs = 0.0f;
-        for (j = 0; j < 4; j++) {
-            const float v = fabsf(dh_at(T, i, j, s, aff));
-            if (i < 3 && j < 3) rs += v;
-            if (i == 3 && j < 3) {          /* row 3: p */
-                cp += v;
-                mp = (v > mp) ? v : mp;
-            } else if (j == 3 && i < 3) {   /* column 3: q */
-                rq += v;
-                mq = (v > mq) ? v : mq;
-            } else mr = (v > mr) ? v : mr;  /* R and w */
-        }
+        for (j = 0; j < 3; j++) rs += fabsf(T->m[i][j]) * s;
         m3 = (rs > m3) ? rs : m3;
+        rq += fabsf(T->m[i][3]) * s;    /* column 3: q */
+        cp += fabsf(T->m[3][i]) * s;    /* row 3: p */
     }
-    if (cp != 0.0f || rq != 0.0f) {
-        if (cp == 0.0f) {
-            if (m3 > 0.0f) sg = m3 / rq * DH_U24;       /* p exactly 0 */
-        } else if (rq > 0.0f) sg = dh_sqrtf_(cp) / dh_sqrtf_(rq);
-        else if (m3 > 0.0f) sg = cp / m3 * 16777216.0f;
-        if (sg > 1.15292150e18f) sg = 1.15292150e18f;       /* 2^60 */
-        if (sg < 8.67361738e-19f) sg = 8.67361738e-19f;     /* 2^-60 */
+    w = fabsf(T->m[3][3]) * s;
+    if (aff) {
+        cp = 0.0f;                      /* M = blockdiag(s0 R, 1) */
+        rq = 0.0f;
+        w = 1.0f;
     }
+    /* sg (R = 0 gives 0 or Inf, which the clamp maps to 2^-60, 2^60) */
+    if (cp == 0.0f) {
+        if (rq != 0.0f) sg = m3 / rq * DH_U24;          /* p exactly 0 */
+    } else if (rq == 0.0f) {
+        sg = cp / m3 * 16777216.0f;                      /* q exactly 0 */
+    } else {
+        sg = dh_sqrtf_(cp) / dh_sqrtf_(rq);
+    }
+    /* clamped to [2^-60, 2^60] on the bits (sg >= 0) */
+    memcpy(&u, &sg, sizeof u);
+    u = (u < 0x21800000u) ? 0x21800000u : u;
+    u = (u > 0x5D800000u) ? 0x5D800000u : u;
+    memcpy(&sg, &u, sizeof sg);
     X->m[0][0] = sg;
-    /* largest balanced element of A0, in [2^-61, 2^62] (that of A0 is >= 1):
-     * s = s0 2^-E, E its exponent; exponent field b - E, clamped */
-    mp /= sg;
-    mq *= sg;
-    mr = (mp > mr) ? mp : mr;
-    mr = (mq > mr) ? mq : mr;
-    memcpy(&e, &mr, sizeof e);
+    /* within a factor 3 of the largest balanced element of A0, in
+     * [2^-62, 2^4] (that of A0 is >= 1), on the bits: s = s0 2^-E, E its
+     * exponent; exponent field b - E, clamped to the normal range */
+    cp /= sg;
+    rq *= sg;
+    memcpy(&e, &m3, sizeof e);
+    memcpy(&u, &w, sizeof u);
+    e = (u > e) ? u : e;
+    memcpy(&u, &cp, sizeof u);
+    e = (u > e) ? u : e;
+    memcpy(&u, &rq, sizeof u);
+    e = (u > e) ? u : e;
     e = b + 127u - (e >> 23);
-    if (e > 254u) e = (e > 0x80000000u) ? 1u : 254u;
-    if (e == 0u) e = 1u;
+    if (e - 1u > 253u) e = (e - 1u >= 0x80000000u) ? 1u : 254u; /* e <= 0 (wrapped): 1 */
     e <<= 23;
     memcpy(&s, &e, sizeof s);
-    return s + z;
+    return s;
 }
 
 /* The general path (see the top of the file) into the scratch X (must not

@@ -511,10 +511,10 @@ static void contract_one(const dh_mat4_f32 *T, int k, contract_stats *st)
                     (int)s);
         } else if (s == DH_ERR_OVERFLOW) {
             /* within the error bound of FLT_MAX, or the underflow rule
-             * (elements of T^-1 below FLT_MIN, only for max|T| >= 2^79) */
-            CHECK_M(fmax(mt, tsum[0]) * (1.0 + rb) >= (double)FLT_MAX || dhr_max_abs(&D) >= 0x1p79, T,
+             * (elements of T^-1 below FLT_MIN, only for max|T| >= 2^78) */
+            CHECK_M(fmax(mt, tsum[0]) * (1.0 + rb) >= (double)FLT_MAX || dhr_max_abs(&D) >= 0x1p78, T,
                     "DH_ERR_OVERFLOW with max|T^-1| %.6g, sum|R^-1||p| / |w| %.6g < FLT_MAX / (1 + %.3g) and "
-                    "max|T| %.6g < 2^79", mt, tsum[0], rb, dhr_max_abs(&D));
+                    "max|T| %.6g < 2^78", mt, tsum[0], rb, dhr_max_abs(&D));
             st->n_ovf++;
         } else {
             double err;

@@ -281,7 +281,7 @@ void dh_mat4_inv_rigid_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out);
  *         within the error bound of it), for affine-type T also if a sum
  *         |R^-1_i0 p_0| + |R^-1_i1 p_1| + |R^-1_i2 p_2| over |w| does, or if
  *         elements falling below FLT_MIN could raise the balanced residual
- *         by more than 2^-4 (only for max|T_ij| >= 2^79).
+ *         by more than 2^-4 (only for max|T_ij| >= 2^78).
  *         out untouched on error; may alias T.
  */
 dh_status dh_mat4_inv_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out);
