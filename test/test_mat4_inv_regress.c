@@ -401,12 +401,13 @@ static double ref_cond(const dh_mat4_f32 *T, dhr_mat4 *Ti, double tsum[2], doubl
  * max|E (X - T^-1) E^-1| / max|E T^-1 E^-1|, E = diag(1, 1, 1, 1 / g) (the
  * balanced coordinates of ref_cond); affine T the larger of
  * max|X_R - R^-1| / max|R^-1| and max_i |X_i3 - t_i| / tsc (t = -R^-1 p
- * / w, tsc = max|R^-1| |p|_1 / |w|), the corner 1 / w exact; after
- * 2^-147 absolute (underflow).
+ * / w, tsc = max|R^-1| |p|_1 / |w|), the rest of the bottom row (0 in
+ * T^-1) like the R^-1 block, the corner relative to 1 / w; after 2^-147
+ * absolute (underflow).
  */
 static double bal_err(const dh_mat4_f32 *X, const dhr_mat4 *Ti, double g, int aff, double tsc)
 {
-    double e = 0.0, m = 0.0, et = 0.0;
+    double e = 0.0, m = 0.0, et = 0.0, ec = 0.0;
     int r, c;
     for (r = 0; r < 4; r++)
         for (c = 0; c < 4; c++) {
@@ -418,8 +419,10 @@ static double bal_err(const dh_mat4_f32 *X, const dhr_mat4 *Ti, double g, int af
                     m = fmax(m, fabs(DHR_M4(Ti, r, c)));
                 } else if (r < 3) {
                     et = fmax(et, d);
-                } else if (d != 0.0) {
-                    return HUGE_VAL; /* bottom row 0 0 0 1 / w, exactly */
+                } else if (c < 3) {
+                    e = fmax(e, d);                          /* 0 in T^-1 */
+                } else {
+                    ec = d / fabs(DHR_M4(Ti, 3, 3));         /* 1 / w, relative */
                 }
                 continue;
             }
@@ -431,7 +434,7 @@ static double bal_err(const dh_mat4_f32 *X, const dhr_mat4 *Ti, double g, int af
     e /= m;
     if (aff && tsc > 0.0) e = fmax(e, et / tsc);
     else if (aff && et > 0.0) return HUGE_VAL;
-    return e;
+    return fmax(e, ec);
 }
 
 /* standard normal deviate (Box-Muller) */
@@ -537,6 +540,22 @@ static void contract_one(const dh_mat4_f32 *T, int k, contract_stats *st)
         else
             CHECK_M(s != DH_ERR_SINGULAR && su != DH_ERR_SINGULAR, T,
                     "status %d, but %d for 2^%d T (cond %.6g)", (int)s, (int)su, k, cond);
+        if (su == DH_OK) {
+            /* the accuracy of 2^k T too (an affine T becomes bottom row
+             * 0 0 0 2^k: the affine type with w != 1) */
+            dhr_mat4 Ui;
+            double tu[2] = {0.0, 0.0}, gu = 1.0, eu;
+            const double cu = ref_cond(&U, &Ui, tu, &gu);
+            if (cu < (double)DH_MAT4_COND_MAX / 2.0) {
+                eu = bal_err(&Y, &Ui, gu, is_affine_ref(&U), tu[1]) / (cu * U24);
+                CHECK_M(eu <= INV_C, &U, "2^%d T: error %.4g cond u (balanced) > bound %.1f cond u, cond %.6g", k, eu,
+                        INV_C, cu);
+                if (eu > st->worst) {
+                    st->worst = eu;
+                    st->worst_cond = cu;
+                }
+            }
+        }
     }
 }
 
