@@ -268,7 +268,7 @@ static void underflowing_inverse_reported(void)
 
 /* Error bound of the contract (dh_mat4.h): bal_err <= INV_C cond u (its
  * balanced measure, 2^-147 absolute allowed for underflow) */
-#define INV_C 4.5
+#define INV_C 5.0
 
 /* T in row-major hexadecimal words, for the message of a failed check */
 static void show(const char *what, const dh_mat4_f32 *T)
