@@ -164,6 +164,14 @@ static DH_SIZE_NOINLINE uint32_t dh_bottom_w(const dh_mat4_f32 *T)
 /* bottom row exactly 0 0 0 1 */
 DH_INLINE int dh_is_affine(const dh_mat4_f32 *T) { return dh_bottom_w(T) == 0x3F800000u; }
 
+/* bottom row exactly 0 0 0 w, w a normal power of two: the affine type of
+ * dh_inv_certified (out of line: no extra value in its frame) */
+static DH_NOINLINE DH_COLD int dh_affine_type(const dh_mat4_f32 *T)
+{
+    const uint32_t b = dh_bottom_w(T);
+    return (b & 0x007FFFFFu) == 0u && (b & 0x7F800000u) != 0u;
+}
+
 /*
  * Element (i, j) of the row-view matrix the general path works on: s M
  * (aff == 0), or blockdiag(s R, 1) for an affine T (aff != 0).
@@ -369,7 +377,13 @@ static DH_NOINLINE DH_COLD float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_
     memcpy(&u, &rq, sizeof u);
     e = (u > e) ? u : e;
     e = b + 127u - (e >> 23);
-    if (e - 1u > 253u) e = (e - 1u >= 0x80000000u) ? 1u : 254u; /* e <= 0 (wrapped): 1 */
+    if ((e - 1u) > 253u) {
+        if ((e - 1u) >= 0x80000000u) {
+            e = 1u;                     /* e <= 0 (wrapped) */
+        } else {
+            e = 254u;
+        }
+    }
     e <<= 23;
     memcpy(&s, &e, sizeof s);
     return s;
@@ -379,8 +393,7 @@ static DH_NOINLINE DH_COLD float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_
  * alias T; undefined on error). */
 static DH_NOINLINE DH_COLD dh_status dh_inv_certified(const dh_mat4_f32 *T, dh_mat4_f32 *X)
 {
-    const uint32_t wb = dh_bottom_w(T); /* affine type: w a power of two */
-    const int aff = (wb & 0x007FFFFFu) == 0u && (wb & 0x7F800000u) != 0u;
+    const int aff = dh_affine_type(T);
     const float s = dh_scan(T, aff, X), sg = X->m[0][0];
     float na, z = 0.0f, f = sg * 1.41421356f;
     uint32_t b;
