@@ -149,7 +149,7 @@ void dh_mat4_inv_rigid_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 
 /* bits of w if the bottom row is exactly 0 0 0 w (+-0 on the bits: the
  * sign shifted out), else 0 */
-static DH_SIZE_NOINLINE uint32_t dh_bottom_w(const dh_mat4_f32 *T)
+static DH_NOINLINE uint32_t dh_bottom_w(const dh_mat4_f32 *T)
 {
     uint32_t b, z = 0u;
     int i;
