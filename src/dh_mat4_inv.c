@@ -10,33 +10,54 @@
  * yields T^-1 with no transposition. Norms of M are the 1-norms of T, and
  * the residual X M - I is the right residual T X - I.
  *
- * General inverse (dh_inv_certified, compiled in every build). M is s T,
- * or blockdiag(s R, 1) for an affine T (T^-1 = [R^-1, -R^-1 p]), s an
- * exact power of two bringing the largest element into [1, 2) (s = 1 when
- * max|T_ij| is in [2^-16, 2^17)). Gauss-Jordan with partial pivoting on
- * the balanced matrix, then
- *   (a) balanced cond = ||M|| ||X|| >= DH_MAT4_COND_MAX -> singular;
- *   (b) residual ||X M - I|| > 1/2 -> singular. A residual <= 1/2 proves M
- *       non-singular with ||M^-1|| <= 2 ||X||; for a singular M, X M - I
+ * General inverse (dh_inv_certified, compiled in every build). M is T, or
+ * blockdiag(R, 1) for T = [R p; 0 w] with w a power of two (affine, or
+ * 2^k times affine: T^-1 = [R^-1, -R^-1 p / w; 0, 1 / w]). dh_scan scales
+ * M by the power of two s0 that brings max|M_ij| into [1, 2): A0 = s0 M is
+ * the same float matrix for T and every exact 2^k T (each element is the
+ * rounding of the same real number), and every decision below is taken on
+ * A0 or on A = s M, s = s0 2^-E, 2^E within a factor 3 of the largest
+ * element of the balanced A0 (s is clamped to the normal range only for
+ * max|T_ij| below 2^-60 or in the top binades), so SINGULAR / OK do not
+ * depend on k. Gauss-Jordan with partial pivoting on
+ * the balanced A, whose largest element is then in [2^-2, 2]: no product
+ * underflows that the balanced magnitudes do not make inevitable (with s
+ * from max|T_ij| alone, a T whose largest elements sit in p would have all
+ * its balanced elements near 2^-60, and their products would underflow).
+ * Then
+ *   (a) balanced cond = ||A|| ||X|| >= DH_MAT4_COND_MAX -> singular;
+ *   (b) residual ||X A - I|| > 1/2 -> singular. A residual <= 1/2 proves A
+ *       non-singular with ||A^-1|| <= 2 ||X||; for a singular A, X A - I
  *       has the eigenvalue -1 whatever X is. The left residual X T - I is
  *       not controlled (up to cond times larger); either would be a proof.
+ * With r the computed residual, ||X|| <= (1 + r) ||A^-1||: a cond below
+ * DH_MAT4_COND_MAX / 2 fails (a) only if r > 1 (then (b) fails anyway), so
+ * it is SINGULAR only if (b) fails, i.e. if the elimination's residual
+ * exceeds 1/2 at cond < 2^18 (a residual of a few cond u: measured <= 0.06
+ * where cond u is up to 2^-6).
  * Balancing. The homogeneous coordinate carries another unit than the
- * other three, so the norms are those of D^-1 M D, D = diag(1, 1, 1, sg):
+ * other three, so the norms are those of D^-1 A D, D = diag(1, 1, 1, sg):
  * column p divided by sg, bottom row q times sg. sg = sqrt(|p| / |q|)
- * (Osborne); for q = 0, 2^24 |p| / ||R|| (p negligible); for p exactly 0,
- * 2^-24 ||R|| / |q| (q negligible); clamped to [2^-60, 2^60]. Sums are of
- * |M_ij| / 4 so that entries near FLT_MAX do not overflow them. A rigid T
- * with |p| = 1e6 is then as well conditioned as one with |p| = 1.
- * p = 0: (b) proves M non-singular for any sg, but bounds the bottom row
+ * (Osborne) from the sums over A0 (elements <= 4); for q = 0,
+ * 2^24 |p| / ||R|| (p negligible); for p = 0 in A0, 2^-24 ||R|| / |q|
+ * (q negligible); clamped to [2^-60, 2^60]. A rigid T with |p| = 1e6 is
+ * then as well conditioned as one with |p| = 1.
+ * p = 0: (b) proves A non-singular for any sg, but bounds the bottom row
  * of T^-1 only as ||.|| / sg. That row is exact by structure here: row 3
  * of the row view is (0, 0, 0, w), never a pivot before step 3, so it
  * stays (0, 0, 0, 1/w) and the bottom row of T^-1 is a backward-stable
  * solve with R plus at most 2^-150 / sg ||R^-1|| / |w| of underflow.
  * Underflow of tiny entries of s T (<= 2^-150 each) perturbs the residual
- * by < ||X|| 2^-150 4 2^60 < 2^-9, so (b) covers T itself. Unscaling s X
+ * by < ||X|| 2^-150 4 2^60 < 2^-9 (||X|| < 2^21 for a balanced largest
+ * element >= 1/4 and cond < 2^19), so (b) covers T itself. Unscaling s X
  * loses F (overflow, or gradual underflow); the residual of what is
  * returned then grows by ||F / s|| na: DH_OK only if that is <= 2^-4
  * (total < 1/2 + 1/8 rounding + 2^-9 + 2^-4 < 1), else DH_ERR_OVERFLOW.
+ * Each lost element is <= 2^-150 / s, weighted by <= 2^60, and na <= 8,
+ * so this needs s < 2^-81, i.e. (s >= 1 / (6 max|T_ij|)) max|T_ij| >= 2^78.
+ * The inverse of A does
+ * not overflow below the condition limit: ||A^-1|| <= 2^19 / ||A|| with
+ * ||A|| >= 1/4 balanced, times <= 2^60 unbalanced.
  *
  * Fast paths (DH_FAST_PATHS) accept a matrix only when a cheap test PROVES
  * it well conditioned; everything else goes to the general path, which
@@ -45,14 +66,20 @@
  *   n = 3: ||adj A||_F^2 <= S^2,  n = 4: ||adj A||_F^2 <= S^3 / 4
  * (Maclaurin), so with ||A||_2 <= sqrt(S) and A^-1 = adj A / det,
  *   cond_2(A) <= S^1.5 / |det| (n = 3),  S^2 / (2 |det|) (n = 4).
- * Accepted iff that is <= C = 2^16, tested as det^2 C^2 >= S^3 (n = 3),
- * 4 det^2 C^2 >= S^4 (n = 4): a 1-norm condition <= n 2^16 <= 2^18 =
+ * Accepted iff that is <= C = 2^10, tested as det^2 C^2 >= S^3 (n = 3),
+ * 4 det^2 C^2 >= S^4 (n = 4): a 1-norm condition <= n 2^10 < 2^18 =
  * DH_MAT4_COND_MAX / 2, which the general path accepts too (the status does
- * not depend on the path); the adjugate's error is a few cond u. For a
+ * not depend on the path). C bounds the adjugate's error, not only the
+ * condition: the cofactors of an A with one large singular value cancel,
+ * and the error grows like u S^(n/2) / |det| (sigma_1 / sigma_2 times
+ * cond u): C = 2^16 would allow 15 cond u against the general path's 2,
+ * with C = 2^10 the adjugate stays within the general inverse's bound
+ * (rigid and scaled-rigid T, the common inputs, have S^1.5 / |det| = 3^1.5
+ * times their scale: unaffected). For a
  * singular matrix the computed det is rounding noise below 16 u S^(n/2):
  * it never passes. Both sides scale alike (degree 2n) and the limits on S
  * keep every product normal, so the decision is exact and scale-free; a
- * NaN or Inf makes a comparison false. Rotations pass with margin 2^32/27.
+ * NaN or Inf makes a comparison false. Rotations pass with margin 2^20/27.
  * The projective test is on the balanced B = D^-1 T D: det B = det T and
  * ||B||_F^2 = ||R||_F^2 + 2 |p| |q| + w^2 needs no sg (|p| |q| is bounded
  * by |p|_1 |q|_1).
@@ -73,14 +100,18 @@
 /* ---------------------------------------------------------------------- */
 
 /*
- * Affine completion, shared with dh_inv_certified: with R^-1 (row view) in
- * rows 0..2, columns 0..2 of X, writes the translation
- * -(R^-1 p) = 0 - (p_x X_0i + p_y X_1i + p_z X_2i) (0 - dot keeps an exact
- * zero positive) and the bottom row 0 0 0 1. Returns NaN iff a
+ * Affine completion of dh_inv_certified: with R^-1 (row view) in rows
+ * 0..2, columns 0..2 of X and the corner w of T (a power of two), writes
+ * the translation and bottom row of T^-1 as those of the affine
+ * T0 = [R, p r; 0 0 0 1], r = 1 / w, times diag(1, 1, 1, r):
+ * 0 - (R^-1 (p r)) (0 - dot keeps an exact zero positive) and 0 0 0 r.
+ * For T = 2^k T0 (T0 affine) p r is T0's p, exactly. Returns NaN iff a
  * translation entry is NaN or Inf.
  */
-static DH_NOINLINE float dh_affine_t(dh_mat4_f32 *X, float px, float py, float pz)
+static DH_NOINLINE float dh_affine_t(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
+    const float r = 1.0f / T->m[3][3];
+    const float px = T->m[3][0] * r, py = T->m[3][1] * r, pz = T->m[3][2] * r;
     float z = 0.0f;
     int i;
     for (i = 0; i < 3; i++) {
@@ -89,7 +120,7 @@ static DH_NOINLINE float dh_affine_t(dh_mat4_f32 *X, float px, float py, float p
         X->m[i][3] = 0.0f;
         z += t * 0.0f;
     }
-    X->m[3][3] = 1.0f;
+    X->m[3][3] = r;
     return z;
 }
 
@@ -116,8 +147,9 @@ void dh_mat4_inv_rigid_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 /* general inverse                                                        */
 /* ---------------------------------------------------------------------- */
 
-/* bottom row exactly 0 0 0 1, on the bits: +-0 (sign shifted out), 1.0f */
-static DH_SIZE_NOINLINE int dh_is_affine(const dh_mat4_f32 *T)
+/* bits of w if the bottom row is exactly 0 0 0 w (+-0 on the bits: the
+ * sign shifted out), else 0 */
+static DH_NOINLINE uint32_t dh_bottom_w(const dh_mat4_f32 *T)
 {
     uint32_t b, z = 0u;
     int i;
@@ -126,7 +158,18 @@ static DH_SIZE_NOINLINE int dh_is_affine(const dh_mat4_f32 *T)
         z |= b << 1;
     }
     memcpy(&b, &T->m[3][3], sizeof b);
-    return z == 0u && b == 0x3F800000u;
+    return (z == 0u) ? b : 0u;
+}
+
+/* bottom row exactly 0 0 0 1 */
+DH_INLINE int dh_is_affine(const dh_mat4_f32 *T) { return dh_bottom_w(T) == 0x3F800000u; }
+
+/* bottom row exactly 0 0 0 w, w a normal power of two: the affine type of
+ * dh_inv_certified (out of line: no extra value in its frame) */
+static DH_NOINLINE DH_COLD int dh_affine_type(const dh_mat4_f32 *T)
+{
+    const uint32_t b = dh_bottom_w(T);
+    return (b & 0x007FFFFFu) == 0u && (b & 0x7F800000u) != 0u;
 }
 
 /*
@@ -254,61 +297,103 @@ static DH_NOINLINE DH_COLD int dh_inv_gauss_jordan(dh_mat4_f32 *X)
 }
 
 /*
- * One pass over T: returns the scale s (for affine T from R alone, always
- * brought into [1, 2); else 1 when max|T_ij| is in [2^-16, 2^17), else
- * into [1, 2), or [2, 4) for the top binade), 0 for a zero or denormal
- * matrix (R), NaN if an element of T is NaN or Inf; stores the balancing
- * factor sg (1 for affine T) in X->m[0][0] of the scratch X (no pointer
- * to a local in the caller: a small frame on Cortex-M0+).
+ * The scaling of the general path: returns the power of two s that brings
+ * the largest of (row sums of R, |w|, |p|_1 / sg, |q|_1 sg) of s M (M: T,
+ * or blockdiag(R, 1) for the affine type), which is within a factor 3 of
+ * its largest balanced element, into [1, 2), clamped to [2^-126, 2^127];
+ * 0 for a zero or denormal matrix (R), NaN if an element of T is NaN or
+ * Inf. sg (1 for the affine type) goes to X->m[0][0] of the scratch X (no
+ * pointer to a local in the caller: a small frame on Cortex-M0+). Both
+ * come from A0 = s0 M, s0 the power of two bringing max|M_ij| into [1, 2)
+ * ([2, 4) for the top binade): A0 and s T are the same floats for T and
+ * any exact 2^k T, so every later decision is too (unless s is clamped).
  */
 static DH_NOINLINE DH_COLD float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_f32 *X)
 {
-    float mx = 0.0f, s = 0.0f, z = 0.0f, cp = 0.0f, rq = 0.0f, m3 = 0.0f, sg = 1.0f, pn = 0.0f;
-    uint32_t e, b;
+    float s, cp = 0.0f, rq = 0.0f, m3 = 0.0f, sg = 1.0f, w;
+    uint32_t u, ur = 0u, ub = 0u, e, b;
     int i, j;
+    /* largest |element| of R and of p, q, w, on the bits (for finite
+     * floats the order of |x| is that of the bits without the sign; NaN
+     * and Inf are above 0x7F7FFFFF) */
     for (i = 0; i < 4; i++) {
-        float rs = 0.0f;
         for (j = 0; j < 4; j++) {
-            const float v = fabsf(T->m[i][j]), w = v * 0.25f;
-            z += v * 0.0f;
-            if (i < 3 && j < 3) rs += w;
-            else if (j < 3) {               /* row 3: p */
-                cp += w;
-                pn += v;
-            }
-            else if (i < 3) rq += w;        /* column 3: q */
-            if (!aff || (i < 3 && j < 3)) mx = (v > mx) ? v : mx;
+            memcpy(&u, &T->m[i][j], sizeof u);
+            u &= 0x7FFFFFFFu;
+            if (i < 3 && j < 3) ur = (u > ur) ? u : ur;
+            else ub = (u > ub) ? u : ub;
         }
+    }
+    u = (ub > ur) ? ub : ur;
+    if (u > 0x7F7FFFFFu) {
+        u = 0x7FC00000u;                /* NaN */
+        memcpy(&s, &u, sizeof s);
+        return s;
+    }
+    if (!aff) ur = u;
+    if (ur < 0x00800000u) return 0.0f;  /* zero or denormal */
+    e = ur >> 23;
+    b = (e >= 254u) ? 1u : 254u - e;    /* exponent field of s0 */
+    e = b << 23;
+    memcpy(&s, &e, sizeof s);
+    /* row sums of R, |p|_1, |q|_1 of A0 = s0 M (elements <= 4) */
+    for (i = 0; i < 3; i++) {
+        float rs = 0.0f;
+        for (j = 0; j < 3; j++) rs += fabsf(T->m[i][j]) * s;
         m3 = (rs > m3) ? rs : m3;
+        rq += fabsf(T->m[i][3]) * s;    /* column 3: q */
+        cp += fabsf(T->m[3][i]) * s;    /* row 3: p */
     }
-    if (mx >= FLT_MIN) {
-        memcpy(&e, &mx, sizeof e);
-        e >>= 23;
-        b = 0x3F800000u; /* 1.0f */
-        if (aff || e - (127u - 16u) > 32u) b = ((e >= 254u) ? 1u : 254u - e) << 23; /* e < 111 or e > 143 */
-        memcpy(&s, &b, sizeof s);
+    w = fabsf(T->m[3][3]) * s;
+    if (aff) {
+        cp = 0.0f;                      /* M = blockdiag(s0 R, 1) */
+        rq = 0.0f;
+        w = 1.0f;
     }
-    if (!aff && (cp != 0.0f || rq > 0.0f)) {
-        if (cp == 0.0f) {
-            if (pn == 0.0f) {
-                if (m3 > 0.0f) sg = m3 / rq * DH_U24;       /* p exactly 0 */
-            } else {                                         /* subnormal p: cp underflowed */
-                if (rq > 0.0f) sg = dh_sqrtf_(pn) / (2.0f * dh_sqrtf_(rq));
-            }
-        } else if (rq > 0.0f) sg = dh_sqrtf_(cp) / dh_sqrtf_(rq);
-        else if (m3 > 0.0f) sg = cp / m3 * 16777216.0f;
-        if (sg > 1.15292150e18f) sg = 1.15292150e18f;       /* 2^60 */
-        if (sg < 8.67361738e-19f) sg = 8.67361738e-19f;     /* 2^-60 */
+    /* sg (R = 0 gives 0 or Inf, which the clamp maps to 2^-60, 2^60) */
+    if (cp == 0.0f) {
+        if (rq != 0.0f) sg = m3 / rq * DH_U24;          /* p exactly 0 */
+    } else if (rq == 0.0f) {
+        sg = cp / m3 * 16777216.0f;                      /* q exactly 0 */
+    } else {
+        sg = dh_sqrtf_(cp) / dh_sqrtf_(rq);
     }
+    /* clamped to [2^-60, 2^60] on the bits (sg >= 0) */
+    memcpy(&u, &sg, sizeof u);
+    u = (u < 0x21800000u) ? 0x21800000u : u;
+    u = (u > 0x5D800000u) ? 0x5D800000u : u;
+    memcpy(&sg, &u, sizeof sg);
     X->m[0][0] = sg;
-    return s + z;
+    /* within a factor 3 of the largest balanced element of A0, in
+     * [2^-62, 2^4] (that of A0 is >= 1), on the bits: s = s0 2^-E, E its
+     * exponent; exponent field b - E, clamped to the normal range */
+    cp /= sg;
+    rq *= sg;
+    memcpy(&e, &m3, sizeof e);
+    memcpy(&u, &w, sizeof u);
+    e = (u > e) ? u : e;
+    memcpy(&u, &cp, sizeof u);
+    e = (u > e) ? u : e;
+    memcpy(&u, &rq, sizeof u);
+    e = (u > e) ? u : e;
+    e = b + 127u - (e >> 23);
+    if ((e - 1u) > 253u) {
+        if ((e - 1u) >= 0x80000000u) {
+            e = 1u;                     /* e <= 0 (wrapped) */
+        } else {
+            e = 254u;
+        }
+    }
+    e <<= 23;
+    memcpy(&s, &e, sizeof s);
+    return s;
 }
 
 /* The general path (see the top of the file) into the scratch X (must not
  * alias T; undefined on error). */
 static DH_NOINLINE DH_COLD dh_status dh_inv_certified(const dh_mat4_f32 *T, dh_mat4_f32 *X)
 {
-    const int aff = dh_is_affine(T);
+    const int aff = dh_affine_type(T);
     const float s = dh_scan(T, aff, X), sg = X->m[0][0];
     float na, z = 0.0f, f = sg * 1.41421356f;
     uint32_t b;
@@ -328,7 +413,7 @@ static DH_NOINLINE DH_COLD dh_status dh_inv_certified(const dh_mat4_f32 *T, dh_m
     if (!(dh_bnorm(X, T, s, sg, aff, NULL, 1.0f) <= 0.5f)) return DH_ERR_SINGULAR;
     if (!(dh_bnorm(NULL, X, s, sg, -1, X, 1.0f / s) * na <= 0.0625f)) return DH_ERR_OVERFLOW;
     /* X and T are finite here: the products commute bitwise */
-    if (aff) z = dh_affine_t(X, T->m[3][0], T->m[3][1], T->m[3][2]);
+    if (aff) z = dh_affine_t(X, T);
     if (z != z) return DH_ERR_OVERFLOW;
     return DH_OK;
 }
@@ -338,7 +423,7 @@ static DH_NOINLINE DH_COLD dh_status dh_inv_certified(const dh_mat4_f32 *T, dh_m
 /* general inverse: fast paths (tests at the top of the file)             */
 /* ---------------------------------------------------------------------- */
 
-#define DH_FAST_C2 4294967296.0f               /* C^2 = 2^32 */
+#define DH_FAST_C2 1048576.0f                 /* C^2 = 2^20 */
 #define DH_FAST_LO3 5.9604644775390625e-8f     /* 2^-24: range of S, 3x3 */
 #define DH_FAST_HI3 16777216.0f                /* 2^24 */
 #define DH_FAST_LO4 1.52587890625e-5f          /* 2^-16: range of S, 4x4 */
