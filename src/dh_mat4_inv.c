@@ -410,10 +410,12 @@ static DH_NOINLINE DH_COLD dh_status dh_inv_certified(const dh_mat4_f32 *T, dh_m
     (void)dh_bnorm(NULL, X, 1.0f, sg, 0, X, f);
     if (!dh_inv_gauss_jordan(X)) return DH_ERR_SINGULAR;
     if (!(na * dh_bnorm(NULL, X, 1.0f, sg, 0, X, 1.0f / f) < DH_MAT4_COND_MAX)) return DH_ERR_SINGULAR;
-    if (!(dh_bnorm(X, T, s, sg, aff, NULL, 1.0f) <= 0.5f)) return DH_ERR_SINGULAR;
+    if (!(dh_bnorm(X, T, s, sg, dh_affine_type(T), NULL, 1.0f) <= 0.5f)) return DH_ERR_SINGULAR;
     if (!(dh_bnorm(NULL, X, s, sg, -1, X, 1.0f / s) * na <= 0.0625f)) return DH_ERR_OVERFLOW;
-    /* X and T are finite here: the products commute bitwise */
-    if (aff) z = dh_affine_t(X, T);
+    /* X and T are finite here: the products commute bitwise. (The affine
+     * type is asked again rather than kept across the calls: one value
+     * less in this frame keeps the M0+ stack within its budget.) */
+    if (dh_affine_type(T)) z = dh_affine_t(X, T);
     if (z != z) return DH_ERR_OVERFLOW;
     return DH_OK;
 }
