@@ -22,6 +22,25 @@
 float dh_atan2f_(float y, float x);
 
 /**
+ * atan2(y, x) in DEGREES plus corr (degrees, added before the one final
+ * rounding), for finite (y, x) not both zero: the shared reduction of
+ * dh_atan2f_ on (x, y) scaled by a power of two (max magnitude in [1, 2)),
+ * then 45 K +- (180/pi) (u + ul + c) in double-float (hi + lo) arithmetic.
+ * Result in [-180, 180] (y = -0 with x < 0 gives -180; the sign of a zero
+ * result is that of y), within 1 ulp of the correctly rounded value when
+ * |corr| <= 2^-20 |result|; corr is dropped where min/max < 2^-60.
+ */
+float dh_atan2f_deg_(float y, float x, float corr);
+
+/**
+ * asin v (want_acos 0, in [-90, 90], odd bit for bit) or acos v (want_acos
+ * 1, in [0, 180]) in DEGREES for |v| <= 1 (not NaN), within 1 ulp of the
+ * correctly rounded value: sqrt(1 - v^2) in double-float and
+ * dh_atan2f_deg_ with the first-order effect of its low part as corr.
+ */
+float dh_asinf_deg_(float v, unsigned want_acos);
+
+/**
  * sin x and cos x (RADIANS) into *s, *c (not NULL, not aliased) without
  * libm, <= 2 ulp for every finite x; NaN or +-Inf gives NaN in both. |x| >
  * pi/4 is reduced EXACTLY modulo pi/2 (Payne-Hanek in integers on a
