@@ -36,10 +36,10 @@ endif()
 
 # The constant macros of dh_fixed.h emit no float code on Cortex-M0+ and
 # reject an out-of-range literal (test/fixed_const_m0.cmake).
-find_program(DH_ARM_GCC arm-none-eabi-gcc)
-find_program(DH_ARM_NM arm-none-eabi-nm)
-if(DH_ARM_GCC AND DH_ARM_NM)
+find_program(FIXED_CONST_ARM_GCC arm-none-eabi-gcc)
+find_program(FIXED_CONST_ARM_NM arm-none-eabi-nm)
+if(FIXED_CONST_ARM_GCC AND FIXED_CONST_ARM_NM)
   add_test(NAME fixed_const_m0
-    COMMAND ${CMAKE_COMMAND} -DCC=${DH_ARM_GCC} -DNM=${DH_ARM_NM} -DSRC_DIR=${PROJECT_SOURCE_DIR}
+    COMMAND ${CMAKE_COMMAND} -DCC=${FIXED_CONST_ARM_GCC} -DNM=${FIXED_CONST_ARM_NM} -DSRC_DIR=${PROJECT_SOURCE_DIR}
             -DOUT=${CMAKE_CURRENT_BINARY_DIR} -P ${CMAKE_CURRENT_SOURCE_DIR}/fixed_const_m0.cmake)
 endif()
