@@ -46,20 +46,24 @@
 #define DH_ITRIG_Q30_TOL 0x40000200u   /* 1 + 2^-21 in Q2.30 */
 #define DH_ITRIG_STEPS   29u
 
-/* round(atan(2^-i) * 180/pi * 2^25), i = 1..29 */
-static const uint32_t dh_itrig_atan_tab[DH_ITRIG_STEPS] = {
-    891375203u, 470978177u, 239075877u, 120001869u, 60059434u, 30037045u,
-    15019439u, 7509834u, 3754931u, 1877468u, 938734u, 469367u, 234684u,
-    117342u, 58671u, 29335u, 14668u, 7334u, 3667u, 1833u, 917u, 458u, 229u,
-    115u, 57u, 29u, 14u, 7u, 4u
-};
-
 /* atan2(ay, ax) in Q16.16 degrees, [0, 90 deg], for magnitudes not both 0 */
 static DH_NOINLINE uint32_t dh_itrig_atan2_u(uint32_t ay, uint32_t ax)
 {
-    uint32_t w = (ay > ax) ? 1u : 0u;
-    uint32_t x = w ? ay : ax, y = w ? ax : ay, yneg = 0u, i, t;
+    /* round(atan(2^-i) * 180/pi * 2^25), i = 1..29 */
+    static const uint32_t dh_itrig_atan_tab[DH_ITRIG_STEPS] = {
+        891375203u, 470978177u, 239075877u, 120001869u, 60059434u, 30037045u,
+        15019439u, 7509834u, 3754931u, 1877468u, 938734u, 469367u, 234684u,
+        117342u, 58671u, 29335u, 14668u, 7334u, 3667u, 1833u, 917u, 458u, 229u,
+        115u, 57u, 29u, 14u, 7u, 4u
+    };
+    uint32_t w = 0u, x = ax, y = ay, yneg = 0u, i, t;
     int32_t th = 0;
+
+    if (ay > ax) {
+        w = 1u;
+        x = ay;
+        y = ax;
+    }
 
     /* 1. normalise: x in [2^30, 2^31] */
     if (x < 0x00008000u) { x <<= 16; y <<= 16; }

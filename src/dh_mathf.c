@@ -1,6 +1,6 @@
 /*
- * dh_mathf.c - libm-free float atan2, sin/cos (radians) and sqrt with a
- * small stack (contracts in dh_mathf.h). Minimax coefficients (Lawson's
+ * dh_mathf.c - libm-free float atan2, sin/cos (radians), atan2/asin/acos
+ * in degrees and sqrt with a small stack (contracts in dh_mathf.h). Minimax coefficients (Lawson's
  * algorithm on the relative error, rounded to float):
  *   sin r = r + r z (S1 + z (S2 + z S3)),          |r| <= pi/4, z = r^2
  *   cos r = 1 - z/2 + z^2 (C1 + z (C2 + z C3))
@@ -29,6 +29,7 @@
 #define DH_MF_SIGN 0x80000000u
 #define DH_MF_ABS 0x7FFFFFFFu
 #define DH_MF_INF 0x7F800000u
+#define DH_MF_ONE 0x3F800000u /* 1.0f */
 #define DH_MF_PIO4_BITS 0x3F490FDAu /* largest float below pi/4 */
 
 static float dh_mf_from_bits(uint32_t b)
@@ -216,12 +217,12 @@ float dh_atan2f_deg_(float y, float x, float corr)
     mb = dh_mf_mant(big, &eb);
     ms = (sml != 0u) ? dh_mf_mant(sml, &es) : 0u;
     dexp = (sml != 0u) ? eb - es : 255;
-    sb = (127u << 23) | (mb & 0x007FFFFFu);                     /* big 2^-E */
+    sb = DH_MF_ONE | (mb & 0x007FFFFFu);                        /* big 2^-E */
     if (dexp <= 60 || ax_b > ay_b) {
         /* the shared reduction on the scaled pair (the smaller one exact
          * and normal, or +0); for dexp > 60 with |y| < |x| only the sign
          * of x matters (K = 0 or 4) */
-        ss = (dexp <= 60) ? (((uint32_t)(127 - dexp) << 23) | (ms & 0x007FFFFFu)) : 0u;
+        ss = (dexp <= 60) ? (((127u - (uint32_t)dexp) << 23) | (ms & 0x007FFFFFu)) : 0u;
         if (ay_b > ax_b) {
             dh_mf_atan2_parts(dh_mf_from_bits(sb), dh_mf_from_bits(ss | (xb & DH_MF_SIGN)), 1, &pt);
         } else {
@@ -237,7 +238,7 @@ float dh_atan2f_deg_(float y, float x, float corr)
     }
     if (dexp > 60 && sml != 0u && pt.k == 0u) {
         /* y tiny against x > 0: R q 2^-dexp */
-        float fx = dh_mf_from_bits(sb), fy = dh_mf_from_bits((127u << 23) | (ms & 0x007FFFFFu));
+        float fx = dh_mf_from_bits(sb), fy = dh_mf_from_bits(DH_MF_ONE | (ms & 0x007FFFFFu));
         float q = fy / fx, ph, pl, ql, v;
         dh_mf_two_prod(q, fx, &ph, &pl);
         ql = ((fy - ph) - pl) / fx;
@@ -245,7 +246,7 @@ float dh_atan2f_deg_(float y, float x, float corr)
         v = ph + (pl + (DH_MF_R_HI * ql + DH_MF_R_LO * q));         /* in [28, 115) */
         v *= 0x1.0p-60f;                                            /* exact */
         dexp -= 60;
-        a = (dexp > 100) ? 0.0f : v * dh_mf_from_bits((uint32_t)(127 - dexp) << 23);
+        a = (dexp > 100) ? 0.0f : v * dh_mf_from_bits((127u - (uint32_t)dexp) << 23);
     } else {
         float ph, pl, tail, base = 45.0f * (float)pt.k, sum, err;
         dh_mf_two_prod(DH_MF_R_HI, pt.u, &ph, &pl);
