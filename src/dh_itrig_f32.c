@@ -22,14 +22,14 @@
 static uint32_t dh_itrig_bits(float f)
 {
     uint32_t b;
-    (void)memcpy(&b, &f, sizeof b);
+    memcpy(&b, &f, sizeof b);
     return b;
 }
 
 static float dh_itrig_float(uint32_t b)
 {
     float f;
-    (void)memcpy(&f, &b, sizeof f);
+    memcpy(&f, &b, sizeof f);
     return f;
 }
 
