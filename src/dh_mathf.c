@@ -197,9 +197,10 @@ static uint32_t dh_mf_mant(uint32_t b, int32_t *e)
  * when K != 0) and every small term added to its error: one final
  * rounding. Error before it (|u| <= 1/2, worst near |deg| = 26.6, in ulp
  * of the result): polynomial 0.07, the rounding of c and of R_hi c 0.25,
- * the tail sums < 0.05, so the result is within 1 ulp of the correctly
- * rounded value. dexp > 60: atan(u) = u to 2^-120 relative; 90 or 180
- * (correctly rounded: the tiny part is below 2^-57) or s R q 2^-dexp with
+ * the tail sums < 0.05: < 0.4 ulp before the rounding, so the result is
+ * within 1 ulp of the correctly rounded value. dexp > 60: atan(u) = u to
+ * 2^-118 relative; 90 or 180 (correctly rounded: the tiny part, below
+ * 2^-53 deg, is far below half an ulp of either) or s R q 2^-dexp with
  * q = my / mx in [1/2, 2) as R q (hi + lo) rounded once, then scaled (a
  * second rounding only for a subnormal result: within 1 ulp again); corr is
  * not added there (see the contract).
