@@ -58,3 +58,13 @@ foreach(_seed 0x06c45d188009454f 0xdeadbeef 0xe6495f5d102301eb 0x9fea7dfc79d452d
     set_tests_properties(${_suite}_seed_${_seed} PROPERTIES ENVIRONMENT "DHT_SEED=${_seed}" TIMEOUT 600)
   endforeach()
 endforeach()
+
+# The constant macros of dh_fixed.h emit no float code on Cortex-M0+ and
+# reject an out-of-range literal (test/fixed_const_m0.cmake).
+find_program(FIXED_CONST_ARM_GCC arm-none-eabi-gcc)
+find_program(FIXED_CONST_ARM_NM arm-none-eabi-nm)
+if(FIXED_CONST_ARM_GCC AND FIXED_CONST_ARM_NM)
+  add_test(NAME fixed_const_m0
+    COMMAND ${CMAKE_COMMAND} -DCC=${FIXED_CONST_ARM_GCC} -DNM=${FIXED_CONST_ARM_NM} -DSRC_DIR=${PROJECT_SOURCE_DIR}
+            -DOUT=${CMAKE_CURRENT_BINARY_DIR} -P ${CMAKE_CURRENT_SOURCE_DIR}/fixed_const_m0.cmake)
+endif()

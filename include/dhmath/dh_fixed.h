@@ -41,6 +41,41 @@
 extern "C" {
 #endif
 
+/* ---- compile-time constants ------------------------------------------- */
+
+/**
+ * @name Fixed-point constants from decimal literals
+ * DH_Q16(90.5) (Q16.16 degrees), DH_Q30(0.70710678) (Q2.30) and
+ * DH_QPOS(123.25) (dh_qpos, DH_QPOS_FRAC fraction bits): the literal times
+ * 2^16, 2^30 or 2^DH_QPOS_FRAC, rounded to the nearest int32 (halves away
+ * from zero: the fraction is split off exactly in double), as an int32_t.
+ * Each is an arithmetic constant expression (C99 6.6), so it may
+ * initialise a static or const object, e.g. a robot table or a limit, and
+ * no float code is emitted for a literal argument (the compiler folds it).
+ * It is not an integer constant expression (no case label, array size).
+ * Range: the rounded value must fit int32 (Q16.16 below +-32768 deg, Q2.30
+ * in [-2, 2), dh_qpos below +-2^(31 - DH_QPOS_FRAC)); outside it the
+ * expression divides by zero, which makes a static initialiser a compile
+ * error in C and draws -Wdiv-by-zero from GCC and Clang elsewhere. The
+ * argument is evaluated several times: pass a literal or constant.
+ * @{
+ */
+/** @cond */
+#define DH_FIX_FITS_(v) ((v) > -2147483648.5 && (v) < 2147483647.5)
+#define DH_FIX_ROUND_(x, s)                                                         \
+    ((int32_t)((int32_t)((x) * (s)) +                                               \
+               ((((x) * (s)) - (double)(int32_t)((x) * (s))) >= 0.5 ? 1 :           \
+                ((((x) * (s)) - (double)(int32_t)((x) * (s))) <= -0.5 ? -1 : 0)) +  \
+               (1 / DH_FIX_FITS_((x) * (s)) - 1)))
+/** @endcond */
+/** Q16.16 degrees from a literal in degrees. */
+#define DH_Q16(x) ((dh_q16)DH_FIX_ROUND_((x), 65536.0))
+/** Q2.30 from a literal in [-2, 2) (1.0 -> 0x40000000 exactly). */
+#define DH_Q30(x) ((dh_q30)DH_FIX_ROUND_((x), 1073741824.0))
+/** dh_qpos from a literal length (DH_QPOS_FRAC fraction bits). */
+#define DH_QPOS(x) ((dh_qpos)DH_FIX_ROUND_((x), (double)((int32_t)1 << DH_QPOS_FRAC)))
+/** @} */
+
 /**
  * @brief F = identity (rotation I exactly, position 0). Cannot fail.
  * @param[out] F frame to write.

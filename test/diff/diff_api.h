@@ -87,6 +87,12 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_sincos_q, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_sin_q, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_cos_q, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_atan2_deg_f32, g_atan2_f, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_asin_deg_f32, g_unit_f, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_acos_deg_f32, g_unit_f, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_atan2_q, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_asin_q, g_unit_q, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_acos_q, g_unit_q, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_frame_identity_q, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_frame_trans_q, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_frame_rotx_q, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \

@@ -441,6 +441,27 @@ static void g_angle_f(diff_in *in)
 {
     in->f[0] = f_angle();
 }
+static void g_atan2_f(diff_in *in)
+{
+    in->f[0] = f_gen(1.0);
+    in->f[1] = rn(8u) ? f_gen(1.0) : in->f[0] * (rn(2u) ? 1.0f : -1.0f); /* diagonals */
+}
+/* sines / cosines: mostly [-1, 1], the clamp band just outside, edges */
+static void g_unit_f(diff_in *in)
+{
+    uint32_t k = rn(16u);
+    if (k == 0u) in->f[0] = f_edge();
+    else if (k == 1u) in->f[0] = fbits((0x3F800000u + rn(12u) - 6u) | (rn(2u) << 31)); /* around +-1 */
+    else if (k == 2u) in->f[0] = fbits(rn(0x3F800001u) | (rn(2u) << 31));             /* any exponent */
+    else in->f[0] = (float)rd(-1.0, 1.0);
+}
+static void g_unit_q(diff_in *in)
+{
+    uint32_t k = rn(8u);
+    if (k == 0u) in->k[0] = i_gen();
+    else if (k == 1u) in->k[0] = (0x40000000 + (int32_t)rn(2048u) - 1024) * (rn(2u) ? 1 : -1);
+    else in->k[0] = (int32_t)rn(0x80000001u) - 0x40000000;
+}
 static void g_ints(diff_in *in)
 {
     int i;
