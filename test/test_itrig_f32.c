@@ -239,7 +239,7 @@ static void atan2_sweep(void)
 {
     static const float xs[] = { 1.0f, -1.0f, 3.0e-39f, -7.0e33f };
     stats st = { 0, 0, 0.0 };
-    uint32_t stride = (uint32_t)(1024L * DHT_ITER_DIV) | 1u, u;   /* sparser on slow targets */
+    uint32_t stride = (uint32_t)(1024L * dht_iter_div()) | 1u, u;   /* sparser on slow targets */
     unsigned k;
     for (k = 0; k < sizeof xs / sizeof xs[0]; k++) {
         for (u = 1u; u < 0x7F800000u - stride; u += stride) {
@@ -324,7 +324,7 @@ static void asin_acos_clamp_and_status(void)
 static void asin_acos_sweep(void)
 {
     stats sa = { 0, 0, 0.0 }, sc = { 0, 0, 0.0 };
-    uint32_t stride = (uint32_t)(96L * DHT_ITER_DIV) | 1u, u;
+    uint32_t stride = (uint32_t)(96L * dht_iter_div()) | 1u, u;
     long i, n = DHT_ITER(1000000L);
     for (u = 0u; u <= 0x3F800000u; u += stride) {
         check_asin_acos(&sa, &sc, float_of(u));

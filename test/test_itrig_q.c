@@ -220,7 +220,7 @@ static void asin_acos_values(void)
 
 static void asin_acos_sweep(void)
 {
-    uint32_t stride = (uint32_t)(256L * DHT_ITER_DIV) | 1u, k;   /* sparser on slow targets */
+    uint32_t stride = (uint32_t)(256L * dht_iter_div()) | 1u, k;   /* sparser on slow targets */
     int32_t s;
     long i, n = DHT_ITER(2000000L);
     worst_asin = worst_acos = 0.0;
