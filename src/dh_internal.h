@@ -116,6 +116,23 @@ DH_INLINE int dh_isfinite_f32(float x)
 #endif
 }
 
+/** The bits of x and the float of bits b (bit-level tests and constants;
+ *  dh_robot_check compares derived floats bit for bit, so -0 differs from
+ *  +0 and a NaN from every float). */
+DH_INLINE uint32_t dh_f32_bits(float x)
+{
+    uint32_t u;
+    memcpy(&u, &x, sizeof u);
+    return u;
+}
+
+DH_INLINE float dh_f32_from_bits(uint32_t b)
+{
+    float x;
+    memcpy(&x, &b, sizeof x);
+    return x;
+}
+
 /** 1 if v[0..len-1] are all finite: the exponent fields tested on the bits
  *  (no float compare per element, so the same cost with or without an FPU). */
 DH_INLINE int dh_allfinite_f32(const float *v, uint32_t len)
@@ -169,16 +186,6 @@ static inline int32_t dh_f32_to_fix_sat(float x, unsigned frac, unsigned *st)
     return (x < 0.0f) ? INT32_MIN : INT32_MAX;
 }
 
-/* ---- robot description check (dh_robot.c) --------------------------------- */
-
-/** The bits of x (dh_robot_check compares derived floats bit for bit, so
- *  -0 differs from +0 and a NaN from every float). */
-DH_INLINE uint32_t dh_f32_bits(float x)
-{
-    uint32_t u;
-    memcpy(&u, &x, sizeof u);
-    return u;
-}
 
 /* ---- float transform helpers --------------------------------------------- */
 

@@ -6,7 +6,6 @@
  * statuses, the clamp of asin/acos arguments just outside [-1, 1] and the
  * range (-180, 180] of atan2.
  */
-#include <string.h>
 
 #include "dhmath/dh_trig.h"
 #include "dh_internal.h"
@@ -19,36 +18,22 @@
 #define DH_ITRIG_M180 0xC3340000u   /* -180.0f */
 #define DH_ITRIG_M180_UP 0xC333FFFFu /* the float just above -180 */
 
-static uint32_t dh_itrig_bits(float f)
-{
-    uint32_t b;
-    memcpy(&b, &f, sizeof b);
-    return b;
-}
-
-static float dh_itrig_float(uint32_t b)
-{
-    float f;
-    memcpy(&f, &b, sizeof f);
-    return f;
-}
-
 dh_status dh_atan2_deg_f32(float y, float x, float *deg)
 {
     uint32_t ax, ay, r;
 
     DH_ASSERT(deg != NULL);
-    ax = dh_itrig_bits(x) & DH_ITRIG_ABS;
-    ay = dh_itrig_bits(y) & DH_ITRIG_ABS;
+    ax = dh_f32_bits(x) & DH_ITRIG_ABS;
+    ay = dh_f32_bits(y) & DH_ITRIG_ABS;
     if (ax >= DH_ITRIG_INF || ay >= DH_ITRIG_INF) return DH_ERR_NAN;
     if ((ax | ay) == 0u) return DH_ERR_DOMAIN;
-    r = dh_itrig_bits(dh_atan2f_deg_(y, x, 0.0f));
+    r = dh_f32_bits(dh_atan2f_deg_(y, x, 0.0f));
     if (r == DH_ITRIG_M180) {
         /* y = -0 (x < 0): the negative x axis is +180; y < 0 rounded to
          * -180: the nearest value inside (-180, 180] */
         r = (ay == 0u) ? (r & DH_ITRIG_ABS) : DH_ITRIG_M180_UP;
     }
-    *deg = dh_itrig_float(r);
+    *deg = dh_f32_from_bits(r);
     return DH_OK;
 }
 
@@ -56,10 +41,10 @@ dh_status dh_atan2_deg_f32(float y, float x, float *deg)
  * otherwise (v untouched) */
 static dh_status dh_itrig_unit_arg(float *v)
 {
-    uint32_t b = dh_itrig_bits(*v), m = b & DH_ITRIG_ABS;
+    uint32_t b = dh_f32_bits(*v), m = b & DH_ITRIG_ABS;
     if (m >= DH_ITRIG_INF) return DH_ERR_NAN;
     if (m > DH_ITRIG_TOL) return DH_ERR_DOMAIN;
-    if (m > DH_ITRIG_ONE) *v = dh_itrig_float((b & ~DH_ITRIG_ABS) | DH_ITRIG_ONE);
+    if (m > DH_ITRIG_ONE) *v = dh_f32_from_bits((b & ~DH_ITRIG_ABS) | DH_ITRIG_ONE);
     return DH_OK;
 }
 

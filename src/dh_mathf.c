@@ -8,7 +8,6 @@
  * 2/pi (224 bits) and pi/2 (64 bits) as in the published expansion
  * 0.A2F9836E 4E441529 ...
  */
-#include <string.h>
 
 #include "dh_mathf.h"
 #include "dh_internal.h"
@@ -31,20 +30,6 @@
 #define DH_MF_INF 0x7F800000u
 #define DH_MF_ONE 0x3F800000u /* 1.0f */
 #define DH_MF_PIO4_BITS 0x3F490FDAu /* largest float below pi/4 */
-
-static float dh_mf_from_bits(uint32_t b)
-{
-    float f;
-    memcpy(&f, &b, sizeof f);
-    return f;
-}
-
-static uint32_t dh_mf_bits(float f)
-{
-    uint32_t b;
-    memcpy(&b, &f, sizeof b);
-    return b;
-}
 
 /* ---- atan2 ---------------------------------------------------------------- */
 
@@ -76,13 +61,13 @@ static void dh_mf_two_prod(float a, float b, float *hi, float *lo)
 
 DH_INLINE void dh_mf_atan2_parts(float y, float x, int lo, dh_mf_atan_parts *r)
 {
-    uint32_t xb = dh_mf_bits(x), yb = dh_mf_bits(y);
+    uint32_t xb = dh_f32_bits(x), yb = dh_f32_bits(y);
     uint32_t ax_b = xb & DH_MF_ABS, ay_b = yb & DH_MF_ABS;
     uint32_t xn, w, b, sneg, k;
     float ax, ay, mn, mx, u, z, ul = 0.0f;
 
-    ax = dh_mf_from_bits(ax_b);
-    ay = dh_mf_from_bits(ay_b);
+    ax = dh_f32_from_bits(ax_b);
+    ay = dh_f32_from_bits(ay_b);
     xn = xb >> 31;                     /* x negative (or -0): the left half-plane */
     w = (ay_b > ax_b) ? 1u : 0u;       /* |y| > |x|: reflected about the diagonal */
     mx = w ? ay : ax;
@@ -146,7 +131,7 @@ float dh_atan2f_(float y, float x)
     static const float pio4_lo[5] = {
         0.0f, -0x1.777a5cp-26f, -0x1.777a5cp-25f, -0x1.99bc5cp-28f, -0x1.777a5cp-24f
     };
-    uint32_t ax_b = dh_mf_bits(x) & DH_MF_ABS, ay_b = dh_mf_bits(y) & DH_MF_ABS;
+    uint32_t ax_b = dh_f32_bits(x) & DH_MF_ABS, ay_b = dh_f32_bits(y) & DH_MF_ABS;
     dh_mf_atan_parts pt;
     float p, a;
 
@@ -161,7 +146,7 @@ float dh_atan2f_(float y, float x)
         float err = p - (sum - hi);
         a = sum + (err + pio4_lo[pt.k]); /* >= 0 */
     }
-    return dh_mf_from_bits(dh_mf_bits(a) ^ (dh_mf_bits(y) & DH_MF_SIGN));
+    return dh_f32_from_bits(dh_f32_bits(a) ^ (dh_f32_bits(y) & DH_MF_SIGN));
 }
 
 /* 180 / pi = DH_MF_R_HI + DH_MF_R_LO (+ 2.0e-15) */
@@ -207,7 +192,7 @@ static uint32_t dh_mf_mant(uint32_t b, int32_t *e)
  */
 float dh_atan2f_deg_(float y, float x, float corr)
 {
-    uint32_t xb = dh_mf_bits(x), yb = dh_mf_bits(y);
+    uint32_t xb = dh_f32_bits(x), yb = dh_f32_bits(y);
     uint32_t ax_b = xb & DH_MF_ABS, ay_b = yb & DH_MF_ABS;
     uint32_t big = (ay_b > ax_b) ? ay_b : ax_b, sml = (ay_b > ax_b) ? ax_b : ay_b;
     uint32_t mb, ms, sb, ss, res;
@@ -225,9 +210,9 @@ float dh_atan2f_deg_(float y, float x, float corr)
          * of x matters (K = 0 or 4) */
         ss = (dexp <= 60) ? (((127u - (uint32_t)dexp) << 23) | (ms & 0x007FFFFFu)) : 0u;
         if (ay_b > ax_b) {
-            dh_mf_atan2_parts(dh_mf_from_bits(sb), dh_mf_from_bits(ss | (xb & DH_MF_SIGN)), 1, &pt);
+            dh_mf_atan2_parts(dh_f32_from_bits(sb), dh_f32_from_bits(ss | (xb & DH_MF_SIGN)), 1, &pt);
         } else {
-            dh_mf_atan2_parts(dh_mf_from_bits(ss), dh_mf_from_bits(sb | (xb & DH_MF_SIGN)), 1, &pt);
+            dh_mf_atan2_parts(dh_f32_from_bits(ss), dh_f32_from_bits(sb | (xb & DH_MF_SIGN)), 1, &pt);
         }
     } else {
         /* |y| >> |x|: 90 (the tiny part is below half an ulp of 90) */
@@ -239,7 +224,7 @@ float dh_atan2f_deg_(float y, float x, float corr)
     }
     if (dexp > 60 && sml != 0u && pt.k == 0u) {
         /* y tiny against x > 0: R q 2^-dexp */
-        float fx = dh_mf_from_bits(sb), fy = dh_mf_from_bits(DH_MF_ONE | (ms & 0x007FFFFFu));
+        float fx = dh_f32_from_bits(sb), fy = dh_f32_from_bits(DH_MF_ONE | (ms & 0x007FFFFFu));
         float q = fy / fx, ph, pl, ql, v;
         dh_mf_two_prod(q, fx, &ph, &pl);
         ql = ((fy - ph) - pl) / fx;
@@ -247,7 +232,7 @@ float dh_atan2f_deg_(float y, float x, float corr)
         v = ph + (pl + (DH_MF_R_HI * ql + DH_MF_R_LO * q));         /* in [28, 115) */
         v *= 0x1.0p-60f;                                            /* exact */
         dexp -= 60;
-        a = (dexp > 100) ? 0.0f : v * dh_mf_from_bits((127u - (uint32_t)dexp) << 23);
+        a = (dexp > 100) ? 0.0f : v * dh_f32_from_bits((127u - (uint32_t)dexp) << 23);
     } else {
         float ph, pl, tail, base = 45.0f * (float)pt.k, sum, err;
         dh_mf_two_prod(DH_MF_R_HI, pt.u, &ph, &pl);
@@ -260,8 +245,8 @@ float dh_atan2f_deg_(float y, float x, float corr)
         err = ph - (sum - base);
         a = sum + ((err + tail) + corr);
     }
-    res = dh_mf_bits(a);
-    return dh_mf_from_bits((res & DH_MF_ABS) ^ (yb & DH_MF_SIGN));
+    res = dh_f32_bits(a);
+    return dh_f32_from_bits((res & DH_MF_ABS) ^ (yb & DH_MF_SIGN));
 }
 
 /*
@@ -276,8 +261,8 @@ float dh_atan2f_deg_(float y, float x, float corr)
  */
 float dh_asinf_deg_(float v, unsigned want_acos)
 {
-    uint32_t vb = dh_mf_bits(v);
-    float a = dh_mf_from_bits(vb & DH_MF_ABS), th, tl, r, rl = 0.0f, ph, pl, deg;
+    uint32_t vb = dh_f32_bits(v);
+    float a = dh_f32_from_bits(vb & DH_MF_ABS), th, tl, r, rl = 0.0f, ph, pl, deg;
 
     if (a >= 0.5f) {
         float p = 1.0f - a, qh = 1.0f + a, ql = a - (qh - 1.0f);
@@ -298,7 +283,7 @@ float dh_asinf_deg_(float v, unsigned want_acos)
         return dh_atan2f_deg_(r, v, DH_MF_R_HI * (v * rl));
     }
     deg = dh_atan2f_deg_(a, r, -DH_MF_R_HI * (a * rl));
-    return dh_mf_from_bits(dh_mf_bits(deg) ^ (vb & DH_MF_SIGN));
+    return dh_f32_from_bits(dh_f32_bits(deg) ^ (vb & DH_MF_SIGN));
 }
 
 /* ---- sin / cos ------------------------------------------------------------ */
@@ -321,7 +306,7 @@ static float dh_mf_q63_to_float(uint64_t v)
     rest = v << 24;                          /* the 40 bits below, as a 64-bit fraction */
     if (rest > 0x8000000000000000u || (rest == 0x8000000000000000u && (mant & 1u) != 0u)) mant++;
     /* 1.m 2^(e - 63): biased exponent e + 64, minus the leading bit's 1 */
-    return dh_mf_from_bits(((e + 63u) << 23) + mant);
+    return dh_f32_from_bits(((e + 63u) << 23) + mant);
 }
 
 /*
@@ -384,15 +369,15 @@ void dh_sincosf_(float x, float *s, float *c)
 
     DH_ASSERT(s != NULL);
     DH_ASSERT(c != NULL);
-    xb = dh_mf_bits(x);
+    xb = dh_f32_bits(x);
     mag = xb & DH_MF_ABS;
     if (mag >= DH_MF_INF) {
-        *s = dh_mf_from_bits(0x7FC00000u);
+        *s = dh_f32_from_bits(0x7FC00000u);
         *c = *s;
         return;
     }
     if (mag <= DH_MF_PIO4_BITS) {
-        r = dh_mf_from_bits(mag);        /* |x|; the sign is applied at the end */
+        r = dh_f32_from_bits(mag);        /* |x|; the sign is applied at the end */
     } else {
         r = dh_mf_reduce(mag, &q);
     }
@@ -401,12 +386,12 @@ void dh_sincosf_(float x, float *s, float *c)
     cp = 1.0f - (0.5f * z - z * (z * (DH_MF_C1 + z * (DH_MF_C2 + z * DH_MF_C3))));
     /* quadrant q: (sin, cos) = (S, C), (C, -S), (-S, -C), (-C, S) */
     swap = q & 1u;
-    sb = dh_mf_bits(swap ? cp : sp);
-    cb = dh_mf_bits(swap ? sp : cp);
+    sb = dh_f32_bits(swap ? cp : sp);
+    cb = dh_f32_bits(swap ? sp : cp);
     sb ^= ((q >> 1) << 31) ^ (xb & DH_MF_SIGN);
     cb ^= (((q + 1u) >> 1) & 1u) << 31;
-    *s = dh_mf_from_bits(sb);
-    *c = dh_mf_from_bits(cb);
+    *s = dh_f32_from_bits(sb);
+    *c = dh_f32_from_bits(cb);
 }
 
 /*
@@ -421,10 +406,10 @@ float dh_sqrtf_(float x)
     __asm__("vsqrt.f32 %0, %1" : "=t"(r) : "t"(x));
     return r;
 #else
-    uint32_t u = dh_mf_bits(x), m, e, rem = 0u, root = 0u, i;
+    uint32_t u = dh_f32_bits(x), m, e, rem = 0u, root = 0u, i;
     int32_t eb;
     if ((u & 0x7FFFFFFFu) == 0u || u == 0x7F800000u) return x;      /* +-0, +Inf */
-    if (u > 0x7F800000u) return dh_mf_from_bits(0x7FC00000u);        /* NaN, x < 0 */
+    if (u > 0x7F800000u) return dh_f32_from_bits(0x7FC00000u);        /* NaN, x < 0 */
     e = u >> 23;
     m = u & 0x007FFFFFu;
     eb = (int32_t)e;
@@ -457,6 +442,6 @@ float dh_sqrtf_(float x)
     eb += (((uint32_t)eb & 1u) != 0u) ? (152 - 25) : (152 - 26);   /* >= 104, even */
     eb = (eb / 2) - 1;
     e = (uint32_t)eb;
-    return dh_mf_from_bits((e << 23) + m);
+    return dh_f32_from_bits((e << 23) + m);
 #endif
 }
