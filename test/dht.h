@@ -91,6 +91,8 @@ int dht_parse_seed(const char *s, uint64_t *seed);
 long dht_iter_div(void);
 /* loop count n divided by dht_iter_div(), at least 1 */
 long dht_iter(long n);
-#define DHT_ITER(n) dht_iter((long)(n))
+/* (0 * (n) + ...: the count keeps n's signedness, as loop counters of
+ * n's type compare with it without a sign-compare warning on ILP32) */
+#define DHT_ITER(n) (0 * (n) + dht_iter((long)(n)))
 
 #endif /* DHT_H */
