@@ -69,6 +69,9 @@ static void hand_written_const_robot_is_reported(void)
             fixed.joint[i].ca = built.joint[i].ca;
             fixed.joint[i].sa_q = built.joint[i].sa_q;
             fixed.joint[i].ca_q = built.joint[i].ca_q;
+            /* the fixed copies (written above for DH_QPOS_FRAC 16) */
+            fixed.joint[i].a_q = built.joint[i].a_q;
+            fixed.joint[i].d_q = built.joint[i].d_q;
         }
         fixed.flags = built.flags;
         DHT_EQ_INT(dh_robot_check(&fixed), DH_OK);

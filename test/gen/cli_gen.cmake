@@ -1,4 +1,5 @@
-# cmake -DEXE=dhmath -DCC=cc -DINC=include -DROBOT=puma560.dh -DDIR=tmp -P cli_gen.cmake
+# cmake -DEXE=dhmath -DCC=cc -DINC=include -DROBOT=puma560.dh -DDIR=tmp -DQPOS=16 -P cli_gen.cmake
+# (QPOS: the DH_QPOS_FRAC the generator was built with)
 # `dhmath gen` errors: a NAME that is no usable C identifier, a missing
 # file or wrong arguments exit with status 2, a message on stderr and
 # nothing on stdout. The guards of the generated source: it compiles with
@@ -37,8 +38,13 @@ function(try_cc want)
     message(FATAL_ERROR "generated source with ${ARGN}: want an error '${want}', got ${_rc}: ${_err}")
   endif()
 endfunction()
-try_cc(ok -DDH_MAX_JOINTS=6)
-try_cc(ok -DDH_MAX_JOINTS=32)
-try_cc(ok -DDH_MAX_JOINTS=8 -DDH_SMALL=1)
-try_cc("DH_MAX_JOINTS must be at least 6" -DDH_MAX_JOINTS=5)
-try_cc("generated for DH_QPOS_FRAC 16" -DDH_QPOS_FRAC=12)
+if(QPOS EQUAL 12)
+  set(_other 16)
+else()
+  set(_other 12)
+endif()
+try_cc(ok -DDH_QPOS_FRAC=${QPOS} -DDH_MAX_JOINTS=6)
+try_cc(ok -DDH_QPOS_FRAC=${QPOS} -DDH_MAX_JOINTS=32)
+try_cc(ok -DDH_QPOS_FRAC=${QPOS} -DDH_MAX_JOINTS=8 -DDH_SMALL=1)
+try_cc("DH_MAX_JOINTS must be at least 6" -DDH_QPOS_FRAC=${QPOS} -DDH_MAX_JOINTS=5)
+try_cc("generated for DH_QPOS_FRAC ${QPOS}" -DDH_QPOS_FRAC=${_other})
