@@ -9,7 +9,6 @@
  */
 #include <float.h>
 #include <math.h>
-#include <string.h>
 
 #include "dhmath/dh_rot.h"
 #include "dhmath/dh_mat4.h"
@@ -104,12 +103,8 @@ dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, flo
  * part of a square below 2^-102 is lost to underflow. */
 static void dh_square2(float a, float *h, float *l)
 {
-    uint32_t u;
-    float ah, al;
-    memcpy(&u, &a, sizeof u);
-    u &= 0xFFFFF000u;
-    memcpy(&ah, &u, sizeof ah);
-    al = a - ah; /* exact: the 12 low bits */
+    const float ah = dh_f32_from_bits(dh_f32_bits(a) & 0xFFFFF000u);
+    const float al = a - ah; /* exact: the 12 low bits */
     *h = a * a;
     *l = ((ah * ah - *h) + 2.0f * ah * al) + al * al;
 }
