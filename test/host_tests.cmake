@@ -59,6 +59,11 @@ foreach(_seed 0x06c45d188009454f 0xdeadbeef 0xe6495f5d102301eb 0x9fea7dfc79d452d
   endforeach()
 endforeach()
 
+# atan2(-0, x < 0) among the random inputs (+180 by the contract)
+add_test(NAME test_itrig_f32_seed_0x928d6f2d7453424e COMMAND test_itrig_f32)
+set_tests_properties(test_itrig_f32_seed_0x928d6f2d7453424e PROPERTIES
+  ENVIRONMENT "DHT_SEED=0x928d6f2d7453424e;DHT_ITER_DIV=10" TIMEOUT 600)
+
 # The constant macros of dh_fixed.h emit no float code on Cortex-M0+ and
 # reject an out-of-range literal (test/fixed_const_m0.cmake).
 find_program(FIXED_CONST_ARM_GCC arm-none-eabi-gcc)
