@@ -64,6 +64,11 @@ add_test(NAME test_itrig_f32_seed_0x928d6f2d7453424e COMMAND test_itrig_f32)
 set_tests_properties(test_itrig_f32_seed_0x928d6f2d7453424e PROPERTIES
   ENVIRONMENT "DHT_SEED=0x928d6f2d7453424e;DHT_ITER_DIV=10" TIMEOUT 600)
 
+# a non-affine bottom row with a translation that made the matrix singular
+add_test(NAME test_errors_mat4_seed_0x003bd11972cabf14 COMMAND test_errors_mat4)
+set_tests_properties(test_errors_mat4_seed_0x003bd11972cabf14 PROPERTIES
+  ENVIRONMENT "DHT_SEED=0x003bd11972cabf14" TIMEOUT 600)
+
 # The constant macros of dh_fixed.h emit no float code on Cortex-M0+ and
 # reject an out-of-range literal (test/fixed_const_m0.cmake).
 find_program(FIXED_CONST_ARM_GCC arm-none-eabi-gcc)

@@ -362,8 +362,13 @@ static void mat4_inv_rigid_nonrigid(void)
         for (c = 0; c < 3; c++) T.m[c][3] = 0.0f;
         T.m[3][3] = 1.0f;
         if (it % 2u) {
-            /* bottom row not 0 0 0 1: not read by the rigid inverse */
+            /* bottom row not 0 0 0 1: not read by the rigid inverse. The
+             * matrix stays well conditioned for the general inverse only
+             * if 1 - b R^-1 p stays away from 0 (b = (0.25, 0, 0)): with
+             * |p| <= 0.87 and sigma_min(R) >= 0.5, |b R^-1 p| <= 0.44
+             * (with |p| up to 17, some draws are singular to float) */
             T.m[0][3] = 0.25f;
+            for (r = 0; r < 3; r++) T.m[3][r] *= 0.05f;
         }
         dh_mat4_inv_rigid_f32(&T, &X);
         /* documented formula, evaluated in double */
