@@ -71,6 +71,9 @@ void dht_printf(const char *fmt, ...)
                                           #a, #b, (double)dht_a_, (unsigned long)dht_ua_, (double)dht_b_, (unsigned long)dht_ub_); } while (0)
 
 void dht_memcpy4(void *dst, const void *src);
+/* The bits of a float and the float of a bit pattern (IEEE binary32). */
+uint32_t dht_f32_bits(float f);
+float dht_f32_from_bits(uint32_t u);
 
 /* Seeded PRNG (xorshift64*). The seed is printed by the runner on failure. */
 uint64_t dht_seed(void);

@@ -36,6 +36,20 @@ double dht_rand_uniform(double lo, double hi)
 
 void dht_memcpy4(void *dst, const void *src) { memcpy(dst, src, 4); }
 
+uint32_t dht_f32_bits(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof u);
+    return u;
+}
+
+float dht_f32_from_bits(uint32_t u)
+{
+    float f;
+    memcpy(&f, &u, sizeof f);
+    return f;
+}
+
 int dht_parse_seed(const char *s, uint64_t *seed)
 {
     uint64_t v = 0;

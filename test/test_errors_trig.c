@@ -23,23 +23,9 @@
 /* bound of dh_sincos_q (dh_trig.h): 1.05 LSB of Q2.30 */
 #define TRIG_Q_TOL_LSB 1.05
 
-static float f32_bits(uint32_t u)
-{
-    float f;
-    memcpy(&f, &u, sizeof f);
-    return f;
-}
-
-static uint32_t bits_f32(float f)
-{
-    uint32_t u;
-    memcpy(&u, &f, sizeof u);
-    return u;
-}
-
 static int is_quiet_nan(float f)
 {
-    uint32_t u = bits_f32(f);
+    uint32_t u = dht_f32_bits(f);
     return (u & 0x7F800000u) == 0x7F800000u && (u & 0x00400000u) != 0u;
 }
 
@@ -80,10 +66,10 @@ static void trig_f32_nan_inf(void)
     unsigned i;
     for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         float s = 0.25f, c = 0.5f;
-        const float deg = f32_bits(bad[i]);
+        const float deg = dht_f32_from_bits(bad[i]);
         DHT_EQ_INT(dh_sincos_f32(deg, &s, &c), DH_ERR_NAN);
         DHT_TRUE_MSG(is_quiet_nan(s) && is_quiet_nan(c), "input 0x%08lx: s 0x%08lx c 0x%08lx",
-                     (unsigned long)bad[i], (unsigned long)bits_f32(s), (unsigned long)bits_f32(c));
+                     (unsigned long)bad[i], (unsigned long)dht_f32_bits(s), (unsigned long)dht_f32_bits(c));
         DHT_TRUE(is_quiet_nan(dh_sin_f32(deg)));
         DHT_TRUE(is_quiet_nan(dh_cos_f32(deg)));
     }
@@ -104,7 +90,7 @@ static void trig_f32_huge_angles(void)
     for (k = 0; k < DHT_ITER(200000u); k++) {
         uint32_t e = 127u + 20u + dht_rand_u32() % (254u - 147u + 1u);
         uint32_t u = (e << 23) | (dht_rand_u32() & 0x007FFFFFu) | (dht_rand_u32() & 0x80000000u);
-        check_f32_angle(f32_bits(u));
+        check_f32_angle(dht_f32_from_bits(u));
     }
     /* dense sweep between whole degrees just above 1e6 (fractions kept) */
     for (k = 0; k < DHT_ITER(100000u); k++) {
@@ -120,11 +106,11 @@ static void trig_f32_tiny_angles(void)
     unsigned i;
     for (i = 0; i < sizeof tiny / sizeof tiny[0]; i++) {
         float s = 5.0f, c = 5.0f;
-        const float deg = f32_bits(tiny[i]);
+        const float deg = dht_f32_from_bits(tiny[i]);
         DHT_EQ_INT(dh_sincos_f32(deg, &s, &c), DH_OK);
         DHT_EQ_F32_BITS(c, 1.0f);
         DHT_NEAR(s, (double)deg * (PI_D / 180.0), TRIG_F32_TOL);
-        DHT_EQ_INT(bits_f32(s) >> 31, tiny[i] >> 31); /* sin(-x) == -sin(x), also for 0 */
+        DHT_EQ_INT(dht_f32_bits(s) >> 31, tiny[i] >> 31); /* sin(-x) == -sin(x), also for 0 */
     }
 }
 

@@ -22,24 +22,10 @@
 
 #define R_LD 57.295779513082320876798154814105170332L
 
-static uint32_t bits_of(float x)
-{
-    uint32_t u;
-    memcpy(&u, &x, sizeof u);
-    return u;
-}
-
-static float float_of(uint32_t u)
-{
-    float x;
-    memcpy(&x, &u, sizeof x);
-    return x;
-}
-
 /* distance in ulp between two floats (finite, not NaN) */
 static uint32_t ulp_dist(float a, float b)
 {
-    uint32_t ua = bits_of(a), ub = bits_of(b);
+    uint32_t ua = dht_f32_bits(a), ub = dht_f32_bits(b);
     if ((ua ^ ub) & 0x80000000u) return (ua & 0x7FFFFFFFu) + (ub & 0x7FFFFFFFu);
     return ua > ub ? ua - ub : ub - ua;
 }
@@ -72,15 +58,15 @@ static void check_one(stats *st, const char *what, float in1, float in2, float g
         cr = 180.0f; /* documented: y = +-0, x < 0 gives +180 (either sign of zero) */
         e = ulp_err(got, 180.0L);
         if (e > st->max_err) st->max_err = e;
-    } else if (is_atan2 && bits_of(cr) == 0xC3340000u) {
-        cr = float_of(0xC333FFFFu); /* the documented value above -180 */
+    } else if (is_atan2 && dht_f32_bits(cr) == 0xC3340000u) {
+        cr = dht_f32_from_bits(0xC333FFFFu); /* the documented value above -180 */
     } else {
         e = ulp_err(got, ref);
         if (e > st->max_err) st->max_err = e;
     }
     DHT_TRUE_MSG(ulp_dist(got, cr) <= 1u, "%s(%a, %a) = %a, correctly rounded %a (exact %.21Lg)", what,
                  (double)in1, (double)in2, (double)got, (double)cr, ref);
-    if (bits_of(got) != bits_of(cr)) st->not_cr++;
+    if (dht_f32_bits(got) != dht_f32_bits(cr)) st->not_cr++;
     st->n++;
 }
 
@@ -117,7 +103,7 @@ static float rand_finite(void)
     do {
         u = dht_rand_u32();
     } while ((u & 0x7F800000u) == 0x7F800000u);
-    return float_of(u);
+    return dht_f32_from_bits(u);
 }
 
 /* a random float with exponent in [emin, emax] */
@@ -164,9 +150,9 @@ static void atan2_exact_values(void)
     }
     /* y < 0 next to the negative x axis: -180 rounded, the float above */
     DHT_EQ_INT(dh_atan2_deg_f32(-1e-30f, -1.0f, &d), DH_OK);
-    DHT_EQ_F32_BITS(d, float_of(0xC333FFFFu));
+    DHT_EQ_F32_BITS(d, dht_f32_from_bits(0xC333FFFFu));
     DHT_EQ_INT(dh_atan2_deg_f32(-1e-45f, -FLT_MAX, &d), DH_OK);
-    DHT_EQ_F32_BITS(d, float_of(0xC333FFFFu));
+    DHT_EQ_F32_BITS(d, dht_f32_from_bits(0xC333FFFFu));
     DHT_EQ_INT(dh_atan2_deg_f32(1e-30f, -1.0f, &d), DH_OK);
     DHT_EQ_F32_BITS(d, 180.0f);
     /* extreme ratios: a subnormal angle, an angle that rounds to 0 */
@@ -180,8 +166,8 @@ static void atan2_exact_values(void)
 
 static void atan2_status(void)
 {
-    const float inf = float_of(0x7F800000u), nan_ = float_of(0x7FC00000u);
-    const float bad[] = { inf, -inf, nan_, -nan_, float_of(0x7F800001u) };
+    const float inf = dht_f32_from_bits(0x7F800000u), nan_ = dht_f32_from_bits(0x7FC00000u);
+    const float bad[] = { inf, -inf, nan_, -nan_, dht_f32_from_bits(0x7F800001u) };
     unsigned i;
     float d = 12.5f;
     DHT_EQ_INT(dh_atan2_deg_f32(0.0f, 0.0f, &d), DH_ERR_DOMAIN);
@@ -214,12 +200,12 @@ static void atan2_random(void)
             break;
         case 3:                                                        /* near the diagonals */
             x = rand_finite();
-            y = float_of((bits_of(x) & 0x7FFFFFFFu) + (dht_rand_u32() % 4001u) - 2000u);
+            y = dht_f32_from_bits((dht_f32_bits(x) & 0x7FFFFFFFu) + (dht_rand_u32() % 4001u) - 2000u);
             if (dht_rand_u32() & 1u) y = -y;
             break;
         case 4:                                                        /* subnormal and tiny */
-            x = float_of(dht_rand_u32() & 0x80FFFFFFu);
-            y = float_of(dht_rand_u32() & 0x80FFFFFFu);
+            x = dht_f32_from_bits(dht_rand_u32() & 0x80FFFFFFu);
+            y = dht_f32_from_bits(dht_rand_u32() & 0x80FFFFFFu);
             break;
         case 5: y = rand_exp(90, 127); x = rand_exp(90, 127); break;   /* huge */
         case 6: y = rand_exp(-149, 127); x = rand_exp(-149, 127); break;
@@ -229,9 +215,9 @@ static void atan2_random(void)
             y = (float)sin(a);
             break;
         }
-        if (bits_of(x) == 0xFFFFFFFFu) continue;
-        if (((bits_of(x) | bits_of(y)) & 0x7FFFFFFFu) == 0u) continue;
-        if (((bits_of(x) & 0x7F800000u) == 0x7F800000u) || ((bits_of(y) & 0x7F800000u) == 0x7F800000u)) continue;
+        if (dht_f32_bits(x) == 0xFFFFFFFFu) continue;
+        if (((dht_f32_bits(x) | dht_f32_bits(y)) & 0x7FFFFFFFu) == 0u) continue;
+        if (((dht_f32_bits(x) & 0x7F800000u) == 0x7F800000u) || ((dht_f32_bits(y) & 0x7F800000u) == 0x7F800000u)) continue;
         check_atan2(&st, y, x);
     }
     report("atan2 random", &st);
@@ -247,7 +233,7 @@ static void atan2_sweep(void)
     unsigned k;
     for (k = 0; k < sizeof xs / sizeof xs[0]; k++) {
         for (u = 1u; u < 0x7F800000u - stride; u += stride) {
-            float v = float_of(u);
+            float v = dht_f32_from_bits(u);
             check_atan2(&st, v, xs[k]);
             check_atan2(&st, -xs[k], v);
         }
@@ -260,10 +246,10 @@ static void atan2_symmetry(void)
     long i, n = DHT_ITER(200000L);
     for (i = 0; i < n; i++) {
         float y = rand_finite(), x = rand_finite(), a, b;
-        if (((bits_of(x) | bits_of(y)) & 0x7FFFFFFFu) == 0u) continue;
+        if (((dht_f32_bits(x) | dht_f32_bits(y)) & 0x7FFFFFFFu) == 0u) continue;
         DHT_EQ_INT(dh_atan2_deg_f32(y, x, &a), DH_OK);
         DHT_EQ_INT(dh_atan2_deg_f32(-y, x, &b), DH_OK);
-        if (fabsf(a) < 180.0f && bits_of(a) != 0xC333FFFFu && bits_of(b) != 0xC333FFFFu) {
+        if (fabsf(a) < 180.0f && dht_f32_bits(a) != 0xC333FFFFu && dht_f32_bits(b) != 0xC333FFFFu) {
             DHT_EQ_F32_BITS(b, -a);
         }
     }
@@ -298,8 +284,8 @@ static void asin_acos_exact_values(void)
 
 static void asin_acos_clamp_and_status(void)
 {
-    const float above1 = float_of(0x3F800001u), tol = float_of(0x3F800004u), out = float_of(0x3F800005u);
-    const float inf = float_of(0x7F800000u), nan_ = float_of(0x7FC00000u);
+    const float above1 = dht_f32_from_bits(0x3F800001u), tol = dht_f32_from_bits(0x3F800004u), out = dht_f32_from_bits(0x3F800005u);
+    const float inf = dht_f32_from_bits(0x7F800000u), nan_ = dht_f32_from_bits(0x7FC00000u);
     float d = 12.5f;
     /* 1.0000001 (a rotation matrix entry one ulp above 1): clamped */
     DHT_EQ_INT(dh_asin_deg_f32(above1, &d), DH_OK);
@@ -331,11 +317,11 @@ static void asin_acos_sweep(void)
     uint32_t stride = (uint32_t)(96L * dht_iter_div()) | 1u, u;
     long i, n = DHT_ITER(1000000L);
     for (u = 0u; u <= 0x3F800000u; u += stride) {
-        check_asin_acos(&sa, &sc, float_of(u));
-        check_asin_acos(&sa, &sc, float_of(u | 0x80000000u));
+        check_asin_acos(&sa, &sc, dht_f32_from_bits(u));
+        check_asin_acos(&sa, &sc, dht_f32_from_bits(u | 0x80000000u));
     }
     for (u = 0u; u < (uint32_t)DHT_ITER(2000000L); u++) {
-        check_asin_acos(&sa, &sc, float_of(0x3F800000u - u));   /* just below 1 */
+        check_asin_acos(&sa, &sc, dht_f32_from_bits(0x3F800000u - u));   /* just below 1 */
     }
     for (i = 0; i < n; i++) {
         float s = (float)dht_rand_uniform(-1.0, 1.0);
@@ -349,7 +335,7 @@ static void asin_odd(void)
 {
     long i, n = DHT_ITER(200000L);
     for (i = 0; i < n; i++) {
-        float s = float_of(dht_rand_u32() % 0x3F800001u), a, b;
+        float s = dht_f32_from_bits(dht_rand_u32() % 0x3F800001u), a, b;
         DHT_EQ_INT(dh_asin_deg_f32(s, &a), DH_OK);
         DHT_EQ_INT(dh_asin_deg_f32(-s, &b), DH_OK);
         DHT_EQ_F32_BITS(b, -a);

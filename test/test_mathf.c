@@ -19,20 +19,6 @@
 #define PI_D 3.14159265358979323846
 #define ULP_TOL 2.0  /* contract of dh_mathf.h (measured maxima printed) */
 
-static uint32_t bits_of(float x)
-{
-    uint32_t u;
-    memcpy(&u, &x, sizeof u);
-    return u;
-}
-
-static float float_of(uint32_t u)
-{
-    float x;
-    memcpy(&x, &u, sizeof x);
-    return x;
-}
-
 /* ulp of a float of magnitude |v| (v the exact value, double) */
 static double ulp_of(double v)
 {
@@ -111,13 +97,13 @@ static void atan2_extreme_magnitudes(void)
     int it, n = DHT_ITER(400000);
     worst_atan2 = 0.0;
     for (it = 0; it < n; it++) {
-        float x = float_of(dht_rand_u32() % 0x7F800000u);
-        float y = float_of(dht_rand_u32() % 0x7F800000u);
+        float x = dht_f32_from_bits(dht_rand_u32() % 0x7F800000u);
+        float y = dht_f32_from_bits(dht_rand_u32() % 0x7F800000u);
         if (it & 1) x = -x;
         if (it & 2) y = -y;
         check_atan2(y, x);
         check_atan2(FLT_MAX * (float)dht_rand_uniform(0.4, 1.0), -FLT_MAX * (float)dht_rand_uniform(0.4, 1.0));
-        check_atan2(float_of(dht_rand_u32() % 0x00800000u), float_of(dht_rand_u32() % 0x00800000u));
+        check_atan2(dht_f32_from_bits(dht_rand_u32() % 0x00800000u), dht_f32_from_bits(dht_rand_u32() % 0x00800000u));
     }
     dht_printf("atan2, whole range incl. subnormal and near FLT_MAX: max %.3f ulp\n", worst_atan2);
 }
@@ -210,10 +196,10 @@ static void sincos_dense(void)
     for (it = 0; it < DHT_ITER(16); it++) {
         /* consecutive floats around k pi/4 */
         int k = (int)(dht_rand_u32() % 33u) - 16, j;
-        uint32_t b = bits_of((float)(k * PI_D / 4.0));
+        uint32_t b = dht_f32_bits((float)(k * PI_D / 4.0));
         for (j = -300; j <= 300; j++) {
-            if (k == 0) check_sincos(float_of(bits_of(1e-3f) + (uint32_t)(j + 300)));
-            else check_sincos(float_of(b + (uint32_t)j));
+            if (k == 0) check_sincos(dht_f32_from_bits(dht_f32_bits(1e-3f) + (uint32_t)(j + 300)));
+            else check_sincos(dht_f32_from_bits(b + (uint32_t)j));
         }
     }
     dht_printf("sincos |x| <= 4 pi: max %.3f ulp (sin), %.3f ulp (cos), %.3g absolute\n",
@@ -228,7 +214,7 @@ static void sincos_whole_range(void)
     int it, n = DHT_ITER(300000);
     worst_s = worst_c = worst_abs = 0.0;
     for (it = 0; it < n; it++) {
-        float x = float_of(dht_rand_u32() % 0x7F800000u);
+        float x = dht_f32_from_bits(dht_rand_u32() % 0x7F800000u);
         check_sincos((it & 1) ? -x : x);
     }
     for (it = 0; it < DHT_ITER(20000); it++) {

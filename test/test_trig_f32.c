@@ -24,20 +24,6 @@
 #define PI_D 3.14159265358979323846
 #define DHT_F32_TOL 6.2e-8
 
-static uint32_t bits_of(float x)
-{
-    uint32_t u;
-    memcpy(&u, &x, sizeof u);
-    return u;
-}
-
-static float float_of(uint32_t u)
-{
-    float x;
-    memcpy(&x, &u, sizeof x);
-    return x;
-}
-
 /* exact reduction of a non-negative double with <= 53 significant bits */
 static void ref_pos(double d, double *s, double *c)
 {
@@ -119,7 +105,7 @@ static void every_float_in_first_turn(void)
     const uint32_t hi = 0x43B40000u;  /* 360.0f */
     uint32_t b, step = (hi - lo) / DHT_ITER(hi - lo);
     for (b = lo; b < hi; b += step) {
-        check_one(float_of(b), &acc);
+        check_one(dht_f32_from_bits(b), &acc);
     }
     report("every float in [1,360)", &acc);
 }
@@ -133,11 +119,11 @@ static void small_angles(void)
     const uint32_t lo = 0x2B800000u, hi = 0x3F800000u;
     uint32_t step = 61u * ((hi - lo) / 61u / DHT_ITER((hi - lo) / 61u));
     for (b = lo; b < hi; b += step) {
-        check_one(float_of(b), &acc);
+        check_one(dht_f32_from_bits(b), &acc);
     }
     check_one(0.0f, &acc);
     check_one(FLT_MIN, &acc);
-    check_one(float_of(1u), &acc); /* smallest denormal */
+    check_one(dht_f32_from_bits(1u), &acc); /* smallest denormal */
     check_one(nextafterf(1.0f, 0.0f), &acc);
     report("floats in [2^-40,1)", &acc);
 }
@@ -175,12 +161,12 @@ static void fast_path_top(void)
     const uint32_t hi = 0x4B000000u;  /* 2^23 */
     uint32_t b, step = (hi - lo) / DHT_ITER(hi - lo);
     for (b = lo; b < hi; b += step) {
-        check_one(float_of(b), &acc);
-        check_one(-float_of(b), &acc);
+        check_one(dht_f32_from_bits(b), &acc);
+        check_one(-dht_f32_from_bits(b), &acc);
     }
     for (b = hi - 16u; b < hi + 16u; b++) {
-        check_one(float_of(b), &acc);
-        check_one(-float_of(b), &acc);
+        check_one(dht_f32_from_bits(b), &acc);
+        check_one(-dht_f32_from_bits(b), &acc);
     }
     report("every float in [2^22,2^23)", &acc);
 }
@@ -204,7 +190,7 @@ static void huge_angles(void)
         /* exponent field 1..254, random mantissa and sign */
         uint32_t r = dht_rand_u32();
         uint32_t e = 1u + dht_rand_u32() % 254u;
-        float x = float_of((r & 0x807FFFFFu) | (e << 23));
+        float x = dht_f32_from_bits((r & 0x807FFFFFu) | (e << 23));
         check_one(x, &acc);
         if (fabsf(x) >= 8388608.0f) {
             float s1, c1, s2, c2;
@@ -233,7 +219,7 @@ static void huge_angles_every_exponent(void)
     for (e = 150u; e <= 254u; e++) {
         for (k = 0; k < sizeof mant / sizeof mant[0]; k++) {
             for (sgn = 0; sgn < 2u; sgn++) {
-                float x = float_of((sgn << 31) | (e << 23) | mant[k]);
+                float x = dht_f32_from_bits((sgn << 31) | (e << 23) | mant[k]);
                 float w = (float)fmod(fabs((double)x), 360.0);
                 float s1, c1, s2, c2;
                 check_one(x, &acc); /* against the double reference */
@@ -271,8 +257,8 @@ static void whole_degrees(void)
             DHT_TRUE(c == cv[q]);
             if (n >= 0) {
                 /* exact zeros of non-negative angles are +0 */
-                if (sv[q] == 0.0f) DHT_EQ_INT(bits_of(s), 0);
-                if (cv[q] == 0.0f) DHT_EQ_INT(bits_of(c), 0);
+                if (sv[q] == 0.0f) DHT_EQ_INT(dht_f32_bits(s), 0);
+                if (cv[q] == 0.0f) DHT_EQ_INT(dht_f32_bits(c), 0);
             }
         }
     }
@@ -322,7 +308,7 @@ static void symmetry_and_variants(void)
         case 0: x = (float)dht_rand_uniform(0, 720); break;
         case 1: x = (float)dht_rand_uniform(0, 1e6); break;
         case 2: x = (float)(dht_rand_u32() % 1440u) * 0.25f; break;  /* quadrant edges */
-        default: x = float_of(dht_rand_u32() & 0x7F7FFFFFu); break;
+        default: x = dht_f32_from_bits(dht_rand_u32() & 0x7F7FFFFFu); break;
         }
         DHT_EQ_INT(dh_sincos_f32(x, &s1, &c1), DH_OK);
         DHT_EQ_INT(dh_sincos_f32(-x, &s2, &c2), DH_OK);
@@ -335,7 +321,7 @@ static void symmetry_and_variants(void)
     {
         float s, c;
         DHT_EQ_INT(dh_sincos_f32(-0.0f, &s, &c), DH_OK);
-        DHT_EQ_INT(bits_of(s), 0x80000000u);
+        DHT_EQ_INT(dht_f32_bits(s), 0x80000000u);
         DHT_TRUE(c == 1.0f);
     }
 }
@@ -369,8 +355,8 @@ static void bounded_near_edges(void)
  * variants return NaN. */
 static void nan_and_inf(void)
 {
-    const float bad[] = { float_of(0x7FC00000u), float_of(0xFFC00000u), float_of(0x7F800001u),
-                          float_of(0x7FFFFFFFu), float_of(0x7F800000u), float_of(0xFF800000u) };
+    const float bad[] = { dht_f32_from_bits(0x7FC00000u), dht_f32_from_bits(0xFFC00000u), dht_f32_from_bits(0x7F800001u),
+                          dht_f32_from_bits(0x7FFFFFFFu), dht_f32_from_bits(0x7F800000u), dht_f32_from_bits(0xFF800000u) };
     size_t i;
     for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         float s = 0.5f, c = 0.5f;
