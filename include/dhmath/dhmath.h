@@ -17,6 +17,7 @@
 #include "dhmath/dh_robot.h"
 #include "dhmath/dh_kin.h"
 #include "dhmath/dh_rot.h"
+#include "dhmath/dh_ikc.h"
 
 /** Library major version: DH_VERSION_MAJOR (dh_config.h, where the version is defined). */
 #define DHMATH_VERSION_MAJOR DH_VERSION_MAJOR

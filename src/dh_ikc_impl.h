@@ -1,0 +1,50 @@
+/*
+ * dh_ikc_impl.h - PRIVATE interface between the closed-form IK front ends
+ * (dh_ikc.c float, dh_ikc_q.c fixed) and the family solvers (not installed).
+ *
+ * The front end turns the robot into the canonical chain of the model
+ * (standard DH, joints 1..n with a, d, alpha, theta offset; an MDH robot's
+ * first a/alpha moved into pre, since Tx(a) Rx(alpha) = Rx(alpha) Tx(a)),
+ * and a target T into T06 = pre^-1 T post^-1. A family solver then works
+ * on canonical joint values c_i: theta_i = q_i + off_i in degrees for a
+ * revolute joint, d_i = q_i + d offset for a prismatic one. It writes raw
+ * solutions (canonical values, each revolute value in (-180, 180], flags
+ * = branch and singularity bits only) to sol[0..count-1]; the front end
+ * subtracts the offsets, applies the 360-degree shifts and the limits.
+ * cref: q_ref in canonical values (never NULL), for the singular splits.
+ *
+ * Detectors read the canonical chain of m (a, d, sa, ca, off, prismatic,
+ * n) and, when the family applies, fill m->k and return 1 (else 0, m->k
+ * unspecified). The layout of m->k belongs to each family and is written
+ * down next to its detector.
+ */
+#ifndef DHMATH_SRC_DH_IKC_IMPL_H
+#define DHMATH_SRC_DH_IKC_IMPL_H
+
+#include "dhmath/dh_ikc.h"
+
+/* ---- float (dh_ikc.c: wrist families; dh_ikc_ur.c: UR and SCARA) ---- */
+int dh_ikc_detect_wrist_f32_(dh_ikc_model_f32 *m);   /* sets kind WRIST_RRR or WRIST_RRP */
+int dh_ikc_detect_par234_f32_(dh_ikc_model_f32 *m);
+int dh_ikc_detect_scara_f32_(dh_ikc_model_f32 *m);
+uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
+                           dh_ikc_sol_f32 *sol);
+uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
+                            dh_ikc_sol_f32 *sol);
+uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
+                           dh_ikc_sol_f32 *sol);
+
+/* ---- fixed, integer only (dh_ikc_q.c: wrist families; dh_ikc_ur_q.c: UR and SCARA) ----
+ * Same contract; a solver returns DH_ERR_OVERFLOW when an intermediate
+ * would saturate (count 0), else DH_OK with *count (0 = unreachable). */
+int dh_ikc_detect_wrist_q_(dh_ikc_model_q *m);
+int dh_ikc_detect_par234_q_(dh_ikc_model_q *m);
+int dh_ikc_detect_scara_q_(dh_ikc_model_q *m);
+dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const dh_frame_q *T06, const int32_t *cref, dh_ikc_sol_q *sol,
+                          uint32_t *count);
+dh_status dh_ikc_par234_q_(const dh_ikc_model_q *m, const dh_frame_q *T06, const int32_t *cref,
+                           dh_ikc_sol_q *sol, uint32_t *count);
+dh_status dh_ikc_scara_q_(const dh_ikc_model_q *m, const dh_frame_q *T06, const int32_t *cref, dh_ikc_sol_q *sol,
+                          uint32_t *count);
+
+#endif /* DHMATH_SRC_DH_IKC_IMPL_H */
