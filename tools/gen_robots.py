@@ -14,8 +14,9 @@ shipped files use, and stops with FILE:LINE: message on anything else:
     "lengths in millimetres" (any case); NAME_mm files are millimetres,
     the others metres
   - 'convention standard|modified', at most once, before the first joint
-  - 'joint R a=.. d=.. alpha=.. min=.. max=..' (decimal numbers; a, d and
-    alpha default to 0; min and max required)
+  - 'joint R|P a=.. d=.. alpha=.. theta=.. min=.. max=..' (decimal numbers;
+    a, d, alpha and theta default to 0; min and max required; a prismatic
+    joint's limits are lengths and scale with the millimetre twin)
   - 'base' / 'tool' EXPR: a product of trans(x,y,z) and rotz(deg) with deg a
     multiple of 45 (exact sines and cosines)
 
@@ -42,7 +43,7 @@ import sys
 from fractions import Fraction
 
 NUM = re.compile(r'^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$')
-KEYS = ('a', 'd', 'alpha', 'min', 'max')
+KEYS = ('a', 'd', 'alpha', 'theta', 'min', 'max')
 S45 = math.sqrt(0.5)
 # cos, sin of k*45 degrees, k = 0..7
 ROTZ = [(1.0, 0.0), (S45, S45), (0.0, 1.0), (-S45, S45),
@@ -147,8 +148,8 @@ def parse(path):
                                % where)
             rob['conv'] = tok[1]
         elif kw == 'joint':
-            if len(tok) < 2 or tok[1] != 'R':
-                raise GenError('%s: only revolute joints (joint R ...) are supported' % where)
+            if len(tok) < 2 or tok[1] not in ('R', 'P'):
+                raise GenError('%s: a joint is revolute or prismatic (joint R|P ...)' % where)
             vals = {}
             for kv in tok[2:]:
                 k, eq, v = kv.partition('=')
@@ -160,8 +161,8 @@ def parse(path):
                 vals[k] = number(v, where)
             if 'min' not in vals or 'max' not in vals or vals['min'] > vals['max']:
                 raise GenError('%s: every joint needs min= and max= with min <= max' % where)
-            rob['joints'].append((vals.get('a', 0.0), vals.get('d', 0.0), vals.get('alpha', 0.0),
-                                  0.0, vals['min'], vals['max']))
+            rob['joints'].append((tok[1], vals.get('a', 0.0), vals.get('d', 0.0), vals.get('alpha', 0.0),
+                                  vals.get('theta', 0.0), vals['min'], vals['max']))
         elif kw in ('base', 'tool'):
             if rob[kw] is not None:
                 raise GenError('%s: duplicate %s' % (where, kw))
@@ -186,7 +187,8 @@ def scaled(rob, stem, k):
     def fr(T):
         return [col[:] if c < 3 else [v * k for v in col[:3]] + [col[3]] for c, col in enumerate(T)]
     return {'stem': stem, 'conv': rob['conv'], 'unit': rob['unit'] * k,
-            'joints': [(a * k, d * k, al, th, lo, hi) for a, d, al, th, lo, hi in rob['joints']],
+            'joints': [(t, a * k, d * k, al, th, lo * k if t == 'P' else lo, hi * k if t == 'P' else hi)
+                       for t, a, d, al, th, lo, hi in rob['joints']],
             'base': fr(rob['base']), 'tool': fr(rob['tool'])}
 
 
@@ -197,8 +199,8 @@ def same(x, y):
 def check_twin(mm, m, path):
     want = scaled(m, mm['stem'], 1000.0)
     ok = mm['conv'] == want['conv'] and len(mm['joints']) == len(want['joints'])
-    ok = ok and all(same(x, y) for ja, jb in zip(mm['joints'], want['joints'])
-                    for x, y in zip(ja, jb))
+    ok = ok and all(ja[0] == jb[0] and all(same(x, y) for x, y in zip(ja[1:], jb[1:]))
+                    for ja, jb in zip(mm['joints'], want['joints']))
     ok = ok and all(same(mm[f][c][r], want[f][c][r])
                     for f in ('base', 'tool') for c in range(4) for r in range(4))
     if not ok:
@@ -224,9 +226,10 @@ def emit(rob, src):
            '#define %s_N %du' % (N, len(rob['joints'])),
            '#define %s_UNIT_PER_M %s' % (N, lit(rob['unit'])),
            '#define %s_JOINTS(X) \\' % N]
-    for a, d, al, th, lo, hi in rob['joints']:
-        out.append('    X(DH_JOINT_REVOLUTE, %s, %s, %s, %s, %s, %s) \\'
-                   % tuple(lit(v) for v in (a, d, al, th, lo, hi)))
+    for t, a, d, al, th, lo, hi in rob['joints']:
+        out.append('    X(%s, %s, %s, %s, %s, %s, %s) \\'
+                   % ((('DH_JOINT_REVOLUTE' if t == 'R' else 'DH_JOINT_PRISMATIC'),)
+                      + tuple(lit(v) for v in (a, d, al, th, lo, hi))))
     out[-1] = out[-1][:-2]
     out.append('#define %s_BASE %s' % (N, mat(rob['base'])))
     out.append('#define %s_TOOL %s' % (N, mat(rob['tool'])))
