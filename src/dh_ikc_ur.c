@@ -18,22 +18,22 @@ int dh_ikc_detect_scara_f32_(dh_ikc_model_f32 *m)
     return 0;
 }
 
-uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
+uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                             dh_ikc_sol_f32 *sol)
 {
     (void)m;
-    (void)T06;
-    (void)cref;
+    (void)T;
+    (void)q_ref;
     (void)sol;
     return 0u;
 }
 
-uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
+uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                            dh_ikc_sol_f32 *sol)
 {
     (void)m;
-    (void)T06;
-    (void)cref;
+    (void)T;
+    (void)q_ref;
     (void)sol;
     return 0u;
 }

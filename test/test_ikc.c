@@ -701,6 +701,14 @@ static void ikc_no_closed_form(void)
                                           (i == 1u) ? 10.0f : (float)j->alpha_deg), DH_OK);
     }
     expect_none(&r, DH_ERR_UNAVAILABLE, DH_IKC_WHY_AXES, "puma with alpha2 = 10");
+    /* Puma with alpha4 = 60: the wrist axes meet, but not at right angles */
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+    for (i = 0; i < 6u; i++) {
+        const dhs_joint_desc *j = &dhs_puma560_m.j[i];
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, j->type, (float)j->theta_deg, (float)j->d, (float)j->a,
+                                          (i == 3u) ? 60.0f : (float)j->alpha_deg), DH_OK);
+    }
+    expect_none(&r, DH_ERR_UNAVAILABLE, DH_IKC_WHY_AXES, "puma with alpha4 = 60");
     /* Stanford with alpha2 = 60: not a Stanford arm */
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
     for (i = 0; i < 6u; i++) {
