@@ -261,6 +261,8 @@ static int ikc_shift(float *v, float lo, float hi, float ref)
 {
     float t = ref, x, c;
     int32_t k;
+    /* within the limits and within 180 deg of ref: no other shift is nearer */
+    if (*v >= lo && *v <= hi && fabsf(ref - *v) <= 180.0f) return 1;
     if (t < lo) t = lo;
     if (t > hi) t = hi;
     if (t > 368640.0f) t = 368640.0f;
