@@ -23,6 +23,12 @@ const dhs_robot dhs_ur5_m = DHS_ROBOT(UR5);
 const dhs_robot dhs_ur5_mm = DHS_ROBOT(UR5_MM);
 const dhs_robot dhs_panda_m = DHS_ROBOT(PANDA);
 const dhs_robot dhs_panda_mm = DHS_ROBOT(PANDA_MM);
+const dhs_robot dhs_kuka_kr5_m = DHS_ROBOT(KUKA_KR5);
+const dhs_robot dhs_kuka_kr5_mm = DHS_ROBOT(KUKA_KR5_MM);
+const dhs_robot dhs_abb_irb140_m = DHS_ROBOT(ABB_IRB140);
+const dhs_robot dhs_abb_irb140_mm = DHS_ROBOT(ABB_IRB140_MM);
+const dhs_robot dhs_stanford_m = DHS_ROBOT(STANFORD);
+const dhs_robot dhs_stanford_mm = DHS_ROBOT(STANFORD_MM);
 
 /* ------------------------------------------------------------------------ */
 

@@ -6,10 +6,11 @@
  * Families (dh_ikc_kind), each recognised from a dh_robot in standard or
  * modified DH with any base and tool frame and joint offsets:
  * - DH_IKC_WRIST_RRR: six revolute joints, axes 2 and 3 parallel, the last
- *   three axes intersecting in one point (spherical wrist), any shoulder and
+ *   three axes meeting in one point at right angles (spherical wrist), any shoulder and
  *   elbow offsets (Puma 560, KUKA KR5, ABB IRB140; Paul 1981 ch. 3, the
  *   Puma's transform-equation solution); up to 8 solutions;
- * - DH_IKC_WRIST_RRP: the same wrist on an R-R-P arm (Stanford arm); up to 4;
+ * - DH_IKC_WRIST_RRP: the same wrist on an R-R-P arm (Stanford arm); up to
+ *   8, four of them with the prismatic joint's extension negative;
  * - DH_IKC_PARALLEL_234: six revolute joints with axes 2, 3, 4 parallel
  *   (Universal Robots UR3/UR5/UR10 and e-series); up to 8;
  * - DH_IKC_SCARA: R-R-P-R with all four axes parallel (Adept Cobra 600); up to 2.
@@ -77,7 +78,7 @@ typedef enum {
     DH_IKC_WHY_NONE = 0,   /**< it has one (kind != DH_IKC_NONE) */
     DH_IKC_WHY_JOINTS = 1, /**< joint count or types match no family (6R, RRP + 3R, RRPR) */
     DH_IKC_WHY_WRIST = 2,  /**< six joints, but the last three axes do not meet in one point and axes 2, 3, 4 are not parallel */
-    DH_IKC_WHY_AXES = 3,   /**< the last three axes meet, but axes 2 and 3 are not parallel (RRR) or the first three are not a Stanford R-R-P arm; SCARA axes not parallel */
+    DH_IKC_WHY_AXES = 3,   /**< the last three axes meet, but not at right angles, or axes 2 and 3 are not parallel (RRR) or the first three are not a Stanford R-R-P arm; SCARA axes not parallel */
     DH_IKC_WHY_PATH = 4    /**< the float (analyse_f32) or fixed (analyse_q) path of the robot is not prepared */
 } dh_ikc_why;
 
@@ -195,7 +196,8 @@ dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int3
 
 /**
  * @brief Index of the solution nearest q_ref: smallest sum over joints of
- *        |q_i - q_ref_i| (the first of equals). n joints, n_sol solutions.
+ *        |q_i - q_ref_i| (the first of equals). n joints, n_sol solutions;
+ *        q_ref NULL means all zeros.
  * @return DH_OK; DH_ERR_ARG n_sol == 0 or n > DH_IKC_JOINTS (*index untouched);
  *         DH_ERR_NAN q_ref not finite.
  */
