@@ -300,32 +300,22 @@ static void dh_lin(const dh_mat4_f32 *A, const float *in, float *o, int n)
 }
 
 #if DH_FAST_PATHS
+#if defined(__SSE__) || defined(__ARM_NEON) || defined(__ARM_NEON__) || defined(__ALTIVEC__)
 /*
- * Unrolled products: column c of A*B is the combination of the columns of
- * A (copied to a local first) with the weights of column c of B, read
- * before column c of out is written, so out may alias A and/or B. Each
- * 4-row statement is one vector multiply-add chain on 4-wide float SIMD
- * (SSE2, NEON) and scalar code on Cortex-M.
+ * Unrolled products on 4-wide float SIMD (SSE2, NEON): column c of A*B is
+ * the combination of the columns of A (copied to a local first) with the
+ * weights of column c of B, read before column c of out is written, so out
+ * may alias A and/or B. Each 4-row statement is one vector multiply-add
+ * chain; the affine product computes the fourth row too (one vector
+ * operation per column) and then sets the bottom row to 0 0 0 1.
  */
-#define DH_MUL_COL4(out, c, B)                                                          \
+#define DH_MUL_COL4(out, c, B, n)                                                       \
     do {                                                                                \
         const float x_ = (B)->m[c][0], y_ = (B)->m[c][1], z_ = (B)->m[c][2], w_ = (B)->m[c][3]; \
-        for (r = 0; r < 4; r++) (out)->m[c][r] = a.m[0][r] * x_ + a.m[1][r] * y_ + a.m[2][r] * z_ + a.m[3][r] * w_; \
-    } while (0)
-
-/* Rows the affine product computes before its bottom row is set to 0 0 0 1:
- * four where 4-wide SIMD makes a column one vector operation, the three
- * needed ones on scalar FPUs such as Cortex-M4F. */
-#if defined(__SSE__) || defined(__ARM_NEON) || defined(__ARM_NEON__) || defined(__ALTIVEC__)
-#define DH_AFFINE_ROWS 4
-#else
-#define DH_AFFINE_ROWS 3
-#endif
-
-#define DH_MUL_COL3(out, c, B)                                                          \
-    do {                                                                                \
-        const float x_ = (B)->m[c][0], y_ = (B)->m[c][1], z_ = (B)->m[c][2];             \
-        for (r = 0; r < DH_AFFINE_ROWS; r++) (out)->m[c][r] = a.m[0][r] * x_ + a.m[1][r] * y_ + a.m[2][r] * z_;  \
+        for (r = 0; r < 4; r++) {                                                       \
+            float acc_ = a.m[0][r] * x_ + a.m[1][r] * y_ + a.m[2][r] * z_;              \
+            (out)->m[c][r] = (n) == 4 ? acc_ + a.m[3][r] * w_ : acc_;                   \
+        }                                                                               \
     } while (0)
 
 /* The unrolled full (affine 0) or affine (affine 1, a constant) product. */
@@ -336,24 +326,89 @@ DH_INLINE void dh_mul_unrolled(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_ma
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
     a = *A;
     if (!affine) {
-        DH_MUL_COL4(out, 0, B);
-        DH_MUL_COL4(out, 1, B);
-        DH_MUL_COL4(out, 2, B);
-        DH_MUL_COL4(out, 3, B);
+        DH_MUL_COL4(out, 0, B, 4);
+        DH_MUL_COL4(out, 1, B, 4);
+        DH_MUL_COL4(out, 2, B, 4);
+        DH_MUL_COL4(out, 3, B, 4);
         return;
     }
-    DH_MUL_COL3(out, 0, B);
-    DH_MUL_COL3(out, 1, B);
-    DH_MUL_COL3(out, 2, B);
+    DH_MUL_COL4(out, 0, B, 3);
+    DH_MUL_COL4(out, 1, B, 3);
+    DH_MUL_COL4(out, 2, B, 3);
     {
         const float x = B->m[3][0], y = B->m[3][1], z = B->m[3][2];
-        for (r = 0; r < DH_AFFINE_ROWS; r++) out->m[3][r] = a.m[0][r] * x + a.m[1][r] * y + a.m[2][r] * z + a.m[3][r];
+        for (r = 0; r < 4; r++) out->m[3][r] = a.m[0][r] * x + a.m[1][r] * y + a.m[2][r] * z + a.m[3][r];
     }
     out->m[0][3] = 0.0f;
     out->m[1][3] = 0.0f;
     out->m[2][3] = 0.0f;
     out->m[3][3] = 1.0f;
 }
+#else
+/*
+ * Unrolled products on scalar FPUs (Cortex-M4F/M7) and soft float: every
+ * element of A that the product uses is read into a local first (out may
+ * alias A), then column c of out is computed from column c of B, read
+ * before column c of out is written (out may alias B). Straight-line code
+ * with no copy through memory: the locals are registers (the 16 of the
+ * full product, the weights and the sums fit the 32 single registers of
+ * FPv4/FPv5). Same sums in the same order as the general path.
+ */
+#define DH_A_COL(k) \
+    const float a0##k = A->m[k][0], a1##k = A->m[k][1], a2##k = A->m[k][2]
+#define DH_ROWS3(c)                                                          \
+    do {                                                                     \
+        const float x_ = B->m[c][0], y_ = B->m[c][1], z_ = B->m[c][2];       \
+        out->m[c][0] = a00 * x_ + a01 * y_ + a02 * z_;                       \
+        out->m[c][1] = a10 * x_ + a11 * y_ + a12 * z_;                       \
+        out->m[c][2] = a20 * x_ + a21 * y_ + a22 * z_;                       \
+    } while (0)
+#define DH_ROWS4(c)                                                          \
+    do {                                                                     \
+        const float x_ = B->m[c][0], y_ = B->m[c][1], z_ = B->m[c][2], w_ = B->m[c][3]; \
+        out->m[c][0] = a00 * x_ + a01 * y_ + a02 * z_ + a03 * w_;            \
+        out->m[c][1] = a10 * x_ + a11 * y_ + a12 * z_ + a13 * w_;            \
+        out->m[c][2] = a20 * x_ + a21 * y_ + a22 * z_ + a23 * w_;            \
+        out->m[c][3] = a30 * x_ + a31 * y_ + a32 * z_ + a33 * w_;            \
+    } while (0)
+
+/* The unrolled full (affine 0) or affine (affine 1, a constant) product. */
+DH_INLINE void dh_mul_unrolled(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int affine)
+{
+    DH_ASSERT(out != NULL && A != NULL && B != NULL);
+    if (!affine) {
+        DH_A_COL(0);
+        DH_A_COL(1);
+        DH_A_COL(2);
+        DH_A_COL(3);
+        const float a30 = A->m[0][3], a31 = A->m[1][3], a32 = A->m[2][3], a33 = A->m[3][3];
+        DH_ROWS4(0);
+        DH_ROWS4(1);
+        DH_ROWS4(2);
+        DH_ROWS4(3);
+        return;
+    }
+    {
+        DH_A_COL(0);
+        DH_A_COL(1);
+        DH_A_COL(2);
+        DH_A_COL(3);
+        DH_ROWS3(0);
+        DH_ROWS3(1);
+        DH_ROWS3(2);
+        {
+            const float x = B->m[3][0], y = B->m[3][1], z = B->m[3][2];
+            out->m[3][0] = a00 * x + a01 * y + a02 * z + a03;
+            out->m[3][1] = a10 * x + a11 * y + a12 * z + a13;
+            out->m[3][2] = a20 * x + a21 * y + a22 * z + a23;
+        }
+        out->m[0][3] = 0.0f;
+        out->m[1][3] = 0.0f;
+        out->m[2][3] = 0.0f;
+        out->m[3][3] = 1.0f;
+    }
+}
+#endif
 #endif
 
 /*
