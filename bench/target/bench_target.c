@@ -327,12 +327,6 @@ static uint32_t bt_inputs(void)
  * cglm code).
  */
 
-#if defined(__GNUC__)
-#define BT_NOIPA __attribute__((noipa))
-#else
-#define BT_NOIPA
-#endif
-
 static BT_NOINLINE void op_empty(uint32_t i)
 {
     (void)i;
