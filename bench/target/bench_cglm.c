@@ -52,6 +52,13 @@ static BT_NOIPA void cg_inv_tr(dh_mat4_f32 *T)
     glm_inv_tr(T->m);
 }
 
+/* the out-of-place rigid inverse in cglm: copy, then invert the copy */
+static BT_NOIPA void cg_inv_tr_copy(const dh_mat4_f32 *T, dh_mat4_f32 *out)
+{
+    glm_mat4_copy(bt_m(T), out->m);
+    glm_inv_tr(out->m);
+}
+
 static BT_NOIPA void cg_mat4_inv(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 {
     glm_mat4_inv(bt_m(T), out->m);
@@ -92,6 +99,7 @@ static dh_mat4_f32 bt_cg_M[BT_NSET]; /* glm_inv_tr's in-place operands */
 #define C_mul(F) F(&bt_A[BT_IA(i)], &bt_B[BT_IB(i)], &bt_out)
 #define C_mat4_mul(F) F(&bt_A[BT_IA(i)], &bt_B[BT_IB(i)], &bt_out)
 #define C_inv_tr(F) F(&bt_cg_M[BT_IA(i)])
+#define C_inv_tr_copy(F) F(&bt_A[BT_IA(i)], &bt_out)
 #define C_mat4_inv(F) F(&bt_A[BT_IA(i)], &bt_out)
 #define C_mulv3(F) F(&bt_A[BT_IA(i)], &bt_pts[BT_IB(i)], &bt_vout)
 
@@ -102,6 +110,7 @@ static dh_mat4_f32 bt_cg_M[BT_NSET]; /* glm_inv_tr's in-place operands */
 BC_PAIR(mul, cg_mul, zc_mul)
 BC_PAIR(mat4_mul, cg_mat4_mul, zc_mul)
 BC_PAIR(inv_tr, cg_inv_tr, zc_inv_tr)
+BC_PAIR(inv_tr_copy, cg_inv_tr_copy, zc_inv)
 BC_PAIR(mat4_inv, cg_mat4_inv, zc_inv)
 BC_PAIR(mulv3, cg_mulv3, zc_point)
 
@@ -138,6 +147,8 @@ uint32_t bt_cglm_ops(bt_op *ops, uint32_t max)
           "zc_mul nul_cg_mat4_mul", 1024u },
         { "cglm", "glm_inv_tr (rigid inverse, in place)", op_cg_inv_tr, nul_cg_inv_tr,
           "zc_inv_tr nul_cg_inv_tr", 1024u },
+        { "cglm", "glm_mat4_copy + glm_inv_tr (rigid inverse, out of place)", op_cg_inv_tr_copy,
+          nul_cg_inv_tr_copy, "zc_inv nul_cg_inv_tr_copy", 1024u },
         { "cglm", "glm_mat4_inv (general inverse)", op_cg_mat4_inv, nul_cg_mat4_inv,
           "zc_inv nul_cg_mat4_inv", 1024u },
         { "cglm", "glm_mat4_mulv3 (point, w = 1)", op_cg_mulv3, nul_cg_mulv3, "zc_point nul_cg_mulv3",

@@ -35,7 +35,8 @@ PEERS = [
     ("dh_sincos_f32", "sinf + cosf (from degrees)"),
     ("dh_mat4_mul_affine_f32", "glm_mul (affine product)"),
     ("dh_mat4_mul_f32", "glm_mat4_mul (general product)"),
-    ("dh_mat4_inv_rigid_f32", "glm_inv_tr (rigid inverse, in place)"),
+    ("dh_mat4_inv_rigid_f32", "glm_mat4_copy + glm_inv_tr (rigid inverse, out of place)"),
+    ("dh_mat4_inv_rigid_f32 (in place)", "glm_inv_tr (rigid inverse, in place)"),
     ("dh_mat4_inv_f32", "glm_mat4_inv (general inverse)"),
     ("dh_mat4_apply_point_f32", "glm_mat4_mulv3 (point, w = 1)"),
 ]
