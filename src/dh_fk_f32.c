@@ -339,9 +339,11 @@ static DH_NOINLINE dh_status fk_chain(const dh_robot *r, const float *q, dh_mat4
     if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_UNAVAILABLE;
 #if DH_FAST_PATHS
-    /* no frames: the chain in registers, checked on the way (the loop
-     * below gives the status when a joint value fails) */
-    if (!frames) {
+    /* no frames, an FPU: the chain in registers, checked on the way (the
+     * loop below gives the status when a joint value fails). Not with soft
+     * float: its 12 locals would not fit the core registers, and their
+     * spills would push the Cortex-M0+ frame past the 256-byte budget. */
+    if (!DH_SOFT_FLOAT && !frames) {
         int bad;
         if (r->conv == DH_CONV_STANDARD) bad = chain_regs(r, q, T_end, src, DH_CONV_STANDARD);
         else bad = chain_regs(r, q, T_end, src, DH_CONV_MODIFIED);
