@@ -287,16 +287,39 @@ void dh_mat4_set_rot_f32(dh_mat4_f32 *T, const dh_mat3_f32 *R)
 /*
  * o[r] = A_r0 in[0] + ... + A_r(n-1) in[n-1] for the rows r < 4: column c
  * of a product (in = column c of B), a point (in = u, 1: the + p is p * 1,
- * exact), a direction (n = 3), a homogeneous point.
+ * exact), a direction (n = 3), a homogeneous point; n is 3 or 4. The four
+ * sums are kept in registers, one column of A per step; each still runs
+ * k = 0, 1, ... .
  */
 static void dh_lin(const dh_mat4_f32 *A, const float *in, float *o, int n)
 {
-    int r, k;
-    for (r = 0; r < 4; r++) {
-        float acc = A->m[0][r] * in[0];
-        for (k = 1; k < n; k++) acc += A->m[k][r] * in[k];
-        o[r] = acc;
-    }
+    float x = in[0];
+    float o0 = A->m[0][0] * x, o1 = A->m[0][1] * x, o2 = A->m[0][2] * x, o3 = A->m[0][3] * x;
+    int k = 1;
+    do { /* n >= 2: a bottom-tested loop */
+        const float *c = A->m[k];
+        x = in[k];
+        o0 += c[0] * x;
+        o1 += c[1] * x;
+        o2 += c[2] * x;
+        o3 += c[3] * x;
+    } while (++k < n);
+    o[0] = o0;
+    o[1] = o1;
+    o[2] = o2;
+    o[3] = o3;
+}
+
+/* dh_lin() of in = (x, y, z, 1): a point (n = 4; its p * 1 is p, exact) or
+ * a direction (n = 3) */
+static void dh_lin3(const dh_mat4_f32 *A, float x, float y, float z, float *o, int n)
+{
+    float in[4];
+    in[0] = x;
+    in[1] = y;
+    in[2] = z;
+    in[3] = 1.0f;
+    dh_lin(A, in, o, n);
 }
 
 #if DH_FAST_PATHS
@@ -426,12 +449,15 @@ DH_SPEED_INLINE void dh_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_
     return;
 #endif
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    for (i = 0; i < 4; i++) dh_lin(A, B->m[i], &t.m[i][0], 4 - aff);
+    /* the columns of R_A R_B (aff) or of A B: B's columns read before out
+     * is written */
+    for (i = 0; i < 4 - aff; i++) dh_lin(A, B->m[i], t.m[i], 4 - aff);
     if (aff) {
-        for (i = 0; i < 4; i++) {
-            t.m[i][3] = 0.0f;
-            t.m[3][i] += A->m[3][i]; /* row 3 is the 0 0 0 1 below */
-        }
+        /* column 3: R_A p_B + p_A, A applied to the point p_B */
+        dh_lin3(A, B->m[3][0], B->m[3][1], B->m[3][2], t.m[3], 4);
+        t.m[0][3] = 0.0f;
+        t.m[1][3] = 0.0f;
+        t.m[2][3] = 0.0f;
         t.m[3][3] = 1.0f;
     }
     *out = t;
@@ -489,17 +515,13 @@ DH_INLINE void dh_apply3_unrolled(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh
  * (u, v may be the same object: u is read first) */
 DH_SPEED_INLINE void dh_apply3(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, int n)
 {
-    float in[4], o[4];
+    float o[4];
 #if DH_FAST_PATHS
     dh_apply3_unrolled(T, u, v, n == 4);
     return;
 #endif
     DH_ASSERT(T != NULL && u != NULL && v != NULL);
-    in[0] = u->x;
-    in[1] = u->y;
-    in[2] = u->z;
-    in[3] = 1.0f;
-    dh_lin(T, in, o, n);
+    dh_lin3(T, u->x, u->y, u->z, o, n);
     v->x = o[0];
     v->y = o[1];
     v->z = o[2];
