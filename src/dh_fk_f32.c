@@ -35,6 +35,17 @@
 #define FK_ROWS 3
 #endif
 
+/* 1 where the chain without frames runs in registers (chain_regs): the
+ * float ABI must keep 12 FPU registers across the dh_sincos_f32 calls, as
+ * AAPCS-VFP does (s16-s31 callee-saved: Cortex-M4F/M7). Not with soft float
+ * (the locals spill, and the Cortex-M0+ frame passes 256 bytes) nor on
+ * x86-64 (no callee-saved XMM register: every joint would spill them). */
+#if defined(__arm__) && !DH_SOFT_FLOAT
+#define FK_REG_CHAIN 1
+#else
+#define FK_REG_CHAIN 0
+#endif
+
 /* 1: each step writes the bottom row 0 0 0 1 (size-first build); 0: one
  * pass over the frames at the end (the default build; with FK_ROWS 4 a
  * step leaves the bottom row 0 0 0 1 only up to the sign of zero). */
@@ -339,11 +350,9 @@ static DH_NOINLINE dh_status fk_chain(const dh_robot *r, const float *q, dh_mat4
     if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_UNAVAILABLE;
 #if DH_FAST_PATHS
-    /* no frames, an FPU: the chain in registers, checked on the way (the
-     * loop below gives the status when a joint value fails). Not with soft
-     * float: its 12 locals would not fit the core registers, and their
-     * spills would push the Cortex-M0+ frame past the 256-byte budget. */
-    if (!DH_SOFT_FLOAT && !frames) {
+    /* no frames: the chain in registers (FK_REG_CHAIN), checked on the
+     * way (the loop below gives the status when a joint value fails) */
+    if (FK_REG_CHAIN && !frames) {
         int bad;
         if (r->conv == DH_CONV_STANDARD) bad = chain_regs(r, q, T_end, src, DH_CONV_STANDARD);
         else bad = chain_regs(r, q, T_end, src, DH_CONV_MODIFIED);
