@@ -353,10 +353,9 @@ static DH_NOINLINE dh_status fk_chain(const dh_robot *r, const float *q, dh_mat4
     /* no frames: the chain in registers (FK_REG_CHAIN), checked on the
      * way (the loop below gives the status when a joint value fails) */
     if (FK_REG_CHAIN && !frames) {
-        int bad;
-        if (r->conv == DH_CONV_STANDARD) bad = chain_regs(r, q, T_end, src, DH_CONV_STANDARD);
-        else bad = chain_regs(r, q, T_end, src, DH_CONV_MODIFIED);
-        if (!bad) return DH_OK;
+        /* one copy for both conventions (the test per joint is cheaper
+         * than a second copy of the loop in flash) */
+        if (!chain_regs(r, q, T_end, src, r->conv)) return DH_OK;
     }
 #endif
     for (i = 0u; i < r->n; i++) {
