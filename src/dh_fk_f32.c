@@ -35,6 +35,17 @@
 #define FK_ROWS 3
 #endif
 
+/* 1 where the chain without frames runs in registers (chain_regs): the
+ * float ABI must keep 12 FPU registers across the dh_sincos_f32 calls, as
+ * AAPCS-VFP does (s16-s31 callee-saved: Cortex-M4F/M7). Not with soft float
+ * (the locals spill, and the Cortex-M0+ frame passes 256 bytes) nor on
+ * x86-64 (no callee-saved XMM register: every joint would spill them). */
+#if defined(__arm__) && !DH_SOFT_FLOAT
+#define FK_REG_CHAIN 1
+#else
+#define FK_REG_CHAIN 0
+#endif
+
 /* 1: each step writes the bottom row 0 0 0 1 (size-first build); 0: one
  * pass over the frames at the end (the default build; with FK_ROWS 4 a
  * step leaves the bottom row 0 0 0 1 only up to the sign of zero). */
@@ -159,6 +170,102 @@ static DH_NOINLINE void link_direct(dh_mat4_f32 *A, unsigned mod, const float v[
     }
     set_bottom(A);
 }
+
+/* fast_step() on row k of a frame held in the locals nK, oK, aK, pK (same
+ * operations in the same order). */
+#define FK_ROW_STD(k)                                                     \
+    do {                                                                  \
+        const float n1_ = ct * n##k + st * o##k, u_ = ct * o##k - st * n##k; \
+        p##k = p##k + d * a##k + a * n1_;                                 \
+        n##k = n1_;                                                       \
+        o##k = ca * u_ + sa * a##k;                                       \
+        a##k = ca * a##k - sa * u_;                                       \
+    } while (0)
+#define FK_ROW_MOD(k)                                                     \
+    do {                                                                  \
+        const float o1_ = ca * o##k + sa * a##k, a1_ = ca * a##k - sa * o##k; \
+        p##k = p##k + a * n##k + d * a1_;                                 \
+        { const float n1_ = ct * n##k + st * o1_;                         \
+          o##k = ct * o1_ - st * n##k;                                    \
+          n##k = n1_; }                                                   \
+        a##k = a1_;                                                       \
+    } while (0)
+
+/*
+ * chain() into T alone (no frames), with the frame in locals: the 12
+ * entries stay in registers across the joints and the dh_sincos_f32 calls
+ * (callee-saved FPU registers) instead of 12 loads and 12 stores per
+ * joint. The joint values are not checked first: their finiteness is
+ * summed on the way (x - x is 0 for a finite x, NaN otherwise) and T is
+ * written only when every one passed; returns 0 then, else 1 with T
+ * untouched (the caller's checks then give the status). src may not be T.
+ * An identity base starts from the first link as link_direct() writes it
+ * (the frames path's bits, signs of zeros included).
+ */
+/* joint_checked() on a q not checked yet; returns 0 when q and q plus
+ * the offset are finite, else NaN (x - x). */
+DH_INLINE float joint_unchecked(const dh_joint *j, float q, float v[6])
+{
+    const float x = q + (j->type == DH_JOINT_REVOLUTE ? j->theta_deg : j->d);
+    if (j->type == DH_JOINT_REVOLUTE) joint_sincos(j, x, j->d, v);
+    else joint_sincos(j, j->theta_deg, x, v);
+    return (q - q) + (x - x);
+}
+
+DH_INLINE int chain_regs(const dh_robot *r, const float *q, dh_mat4_f32 *T, const dh_mat4_f32 *src,
+                         dh_convention conv)
+{
+    float n0, n1, n2, o0, o1, o2, a0, a1, a2, p0, p1, p2, z = 0.0f;
+    uint32_t i = 0u;
+    if (r->flags & DH_ROBOT_BASE_ID_F32) {
+        /* identity base: the first link as link_direct() writes it */
+        float v[6];
+        z = joint_unchecked(&r->joint[0], q[0], v);
+        {
+            const float st = v[0], ct = v[1], sa = v[2], ca = v[3], d = v[4], a = v[5];
+            if (conv == DH_CONV_STANDARD) {
+                n0 = ct;       n1 = st;       n2 = 0.0f;
+                o0 = -st * ca; o1 = ct * ca;  o2 = sa;
+                a0 = st * sa;  a1 = -ct * sa; a2 = ca;
+                p0 = a * ct;   p1 = a * st;   p2 = d;
+            } else {
+                n0 = ct;       n1 = st * ca;  n2 = st * sa;
+                o0 = -st;      o1 = ct * ca;  o2 = ct * sa;
+                a0 = 0.0f;     a1 = -sa;      a2 = ca;
+                p0 = a;        p1 = -sa * d;  p2 = ca * d;
+            }
+        }
+        i = 1u;
+    } else {
+        n0 = src->m[0][0]; n1 = src->m[0][1]; n2 = src->m[0][2];
+        o0 = src->m[1][0]; o1 = src->m[1][1]; o2 = src->m[1][2];
+        a0 = src->m[2][0]; a1 = src->m[2][1]; a2 = src->m[2][2];
+        p0 = src->m[3][0]; p1 = src->m[3][1]; p2 = src->m[3][2];
+    }
+    for (; i < r->n; i++) {
+        float v[6];
+        const dh_joint *j = &r->joint[i];
+        z += joint_unchecked(j, q[i], v);
+        {
+            const float st = v[0], ct = v[1], sa = j->sa, ca = j->ca, d = v[4], a = j->a;
+            if (conv == DH_CONV_STANDARD) {
+                FK_ROW_STD(0);
+                FK_ROW_STD(1);
+                FK_ROW_STD(2);
+            } else {
+                FK_ROW_MOD(0);
+                FK_ROW_MOD(1);
+                FK_ROW_MOD(2);
+            }
+        }
+    }
+    if (z != 0.0f) return 1;
+    T->m[0][0] = n0; T->m[0][1] = n1; T->m[0][2] = n2;
+    T->m[1][0] = o0; T->m[1][1] = o1; T->m[1][2] = o2;
+    T->m[2][0] = a0; T->m[2][1] = a1; T->m[2][2] = a2;
+    T->m[3][0] = p0; T->m[3][1] = p1; T->m[3][2] = p2;
+    return 0;
+}
 #endif
 
 /* dst = src unless they are the same frame. */
@@ -242,6 +349,15 @@ static DH_NOINLINE dh_status fk_chain(const dh_robot *r, const float *q, dh_mat4
     DH_ASSERT(q != NULL);
     if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_UNAVAILABLE;
+#if DH_FAST_PATHS
+    /* no frames: the chain in registers (FK_REG_CHAIN), checked on the
+     * way (the loop below gives the status when a joint value fails) */
+    if (FK_REG_CHAIN && !frames) {
+        /* one copy for both conventions (the test per joint is cheaper
+         * than a second copy of the loop in flash) */
+        if (!chain_regs(r, q, T_end, src, r->conv)) return DH_OK;
+    }
+#endif
     for (i = 0u; i < r->n; i++) {
         st = joint_values(&r->joint[i], q[i], NULL);
         if (st != DH_OK) return st;

@@ -128,19 +128,37 @@ static DH_NOINLINE float dh_affine_t(dh_mat4_f32 *X, const dh_mat4_f32 *T)
  * read before the first write, so out may alias T */
 void dh_mat4_inv_rigid_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 {
-    float nx, ny, nz, ox, oy, oz, ax, ay, az, px, py, pz;
     DH_ASSERT(out != NULL && T != NULL);
-    nx = T->m[0][0]; ny = T->m[0][1]; nz = T->m[0][2];
-    ox = T->m[1][0]; oy = T->m[1][1]; oz = T->m[1][2];
-    ax = T->m[2][0]; ay = T->m[2][1]; az = T->m[2][2];
-    px = T->m[3][0]; py = T->m[3][1]; pz = T->m[3][2];
-    out->m[0][0] = nx; out->m[0][1] = ox; out->m[0][2] = ax; out->m[0][3] = 0.0f;
-    out->m[1][0] = ny; out->m[1][1] = oy; out->m[1][2] = ay; out->m[1][3] = 0.0f;
-    out->m[2][0] = nz; out->m[2][1] = oz; out->m[2][2] = az; out->m[2][3] = 0.0f;
-    out->m[3][0] = 0.0f - (px * nx + py * ny + pz * nz);
-    out->m[3][1] = 0.0f - (px * ox + py * oy + pz * oz);
-    out->m[3][2] = 0.0f - (px * ax + py * ay + pz * az);
-    out->m[3][3] = 1.0f;
+#if DH_FAST_PATHS
+    {
+        /* written out, the entries in registers */
+        float nx, ny, nz, ox, oy, oz, ax, ay, az, px, py, pz;
+        nx = T->m[0][0]; ny = T->m[0][1]; nz = T->m[0][2];
+        ox = T->m[1][0]; oy = T->m[1][1]; oz = T->m[1][2];
+        ax = T->m[2][0]; ay = T->m[2][1]; az = T->m[2][2];
+        px = T->m[3][0]; py = T->m[3][1]; pz = T->m[3][2];
+        out->m[0][0] = nx; out->m[0][1] = ox; out->m[0][2] = ax; out->m[0][3] = 0.0f;
+        out->m[1][0] = ny; out->m[1][1] = oy; out->m[1][2] = ay; out->m[1][3] = 0.0f;
+        out->m[2][0] = nz; out->m[2][1] = oz; out->m[2][2] = az; out->m[2][3] = 0.0f;
+        out->m[3][0] = 0.0f - (px * nx + py * ny + pz * nz);
+        out->m[3][1] = 0.0f - (px * ox + py * oy + pz * oz);
+        out->m[3][2] = 0.0f - (px * ax + py * ay + pz * az);
+        out->m[3][3] = 1.0f;
+        return;
+    }
+#endif
+    {
+        /* the same entries in the same order, from loops over a copy */
+        dh_mat4_f32 t;
+        int c, r;
+        t = *T;
+        for (c = 0; c < 3; c++) {
+            for (r = 0; r < 3; r++) out->m[c][r] = t.m[r][c];
+            out->m[c][3] = 0.0f;
+            out->m[3][c] = 0.0f - (t.m[3][0] * t.m[c][0] + t.m[3][1] * t.m[c][1] + t.m[3][2] * t.m[c][2]);
+        }
+        out->m[3][3] = 1.0f;
+    }
 }
 
 /* ---------------------------------------------------------------------- */

@@ -1,7 +1,9 @@
 /*
  * dh_trig_q.c - fixed-point sine/cosine of Q16.16 degrees as Q2.30
  * (contract in include/dhmath/dh_trig.h). Integer only: no float, no libm,
- * no division; 32x32->64 multiplies only.
+ * no division except one by the constant 3 where a 32x32->64 multiply
+ * exists (the compiler makes it a multiply-high); 32x32->64 multiplies
+ * only.
  *
  * Method (as the float path):
  *  1. u = |x| as an unsigned magnitude (0 .. 2^31; INT32_MIN is never
@@ -69,7 +71,17 @@ void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
     t  = (uint32_t)((dh_trig_mul64(fr, DH_TRIG_KT) + 0x8000u) >> 16);
 #endif
     h  = (uint32_t)((dh_trig_mul64(t, t) + ((uint64_t)1 << 37)) >> 38);      /* t^2/2  */
+#if DH_PORT_USE_SPLIT16
     h3 = (uint32_t)((dh_trig_mul64(h, DH_TRIG_INV3) + 0x80000000u) >> 32);   /* t^2/6  */
+#else
+    /* the same value: INV3 = (2^32 - 1) / 3 exactly, so for h = 3 q + r
+     * the product rounds to q + (r == 2) while h / 2^32 < 1/6, i.e. for
+     * every h < 2^29 (here h < 2^24.5; also checked exhaustively below
+     * 2^26). A division by a constant compiles to a multiply-high where
+     * a 32x32->64 multiply exists; GCC expands the product by 0x55555555
+     * instead into a 20-instruction shift-add chain at -O2 on Cortex-M4. */
+    h3 = (h + 1u) / 3u;                                                     /* t^2/6  */
+#endif
     t3 = (uint32_t)((dh_trig_mul64(t, h3) + ((uint64_t)1 << 36)) >> 37);     /* t^3/6  */
     t4 = (uint32_t)((dh_trig_mul64(h, h3) + ((uint64_t)1 << 37)) >> 38);     /* t^4/24 */
     sf = t - t3;                                /* sin f,     0 .. 2^31.2 */

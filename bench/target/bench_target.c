@@ -178,6 +178,7 @@ static BT_NOINLINE uint64_t bt_run(bt_fn fn, uint32_t n)
 __attribute__((aligned(16))) dh_mat4_f32 bt_A[BT_NSET];
 __attribute__((aligned(16))) dh_mat4_f32 bt_B[BT_NSET];
 __attribute__((aligned(16))) dh_mat4_f32 bt_out;
+static dh_mat4_f32 bt_M[BT_NSET];  /* in-place rigid inverses: T, T^-1, T, ... */
 dh_vec3_f32 bt_pts[BT_NSET];
 dh_vec3_f32 bt_vout;
 volatile uint32_t bt_sink;
@@ -287,6 +288,9 @@ static uint32_t bt_inputs(void)
             bt_qq[k][j] = bt_to_q16(q);
         }
     }
+    for (k = 0; k < BT_NSET; k++) {
+        bt_M[k] = bt_A[k];
+    }
     st |= bt_robot(&bt_puma_m, 1.0f);
     st |= bt_robot(&bt_puma_mm, 1000.0f);
     /* inputs of the later rows from a generator of their own, so that the
@@ -326,12 +330,6 @@ static uint32_t bt_inputs(void)
  * call as the benchmark makes it (used for the comparison with the inline
  * cglm code).
  */
-
-#if defined(__GNUC__)
-#define BT_NOIPA __attribute__((noipa))
-#else
-#define BT_NOIPA
-#endif
 
 static BT_NOINLINE void op_empty(uint32_t i)
 {
@@ -430,6 +428,7 @@ static BT_NOIPA dh_status z_jacobian(const dh_robot *r, const float *q, float *J
 #define B_mul_affine(F) F(&bt_A[BT_IA(i)], &bt_B[BT_IB(i)], &bt_out)
 #define B_mul(F) F(&bt_A[BT_IA(i)], &bt_B[BT_IB(i)], &bt_out)
 #define B_inv_rigid(F) F(&bt_A[BT_IA(i)], &bt_out)
+#define B_inv_rigid_ip(F) F(&bt_M[BT_IA(i)], &bt_M[BT_IA(i)])
 #define B_inv(F) bt_status |= (uint32_t)F(&bt_A[BT_IA(i)], &bt_out)
 #define B_apply_point(F) F(&bt_A[BT_IA(i)], &bt_pts[BT_IB(i)], &bt_vout)
 #define B_rotx(F) bt_status |= (uint32_t)F(bt_ang_f[i & (BT_NANG - 1u)], &bt_out)
@@ -457,6 +456,7 @@ BT_PAIR(sincos_q, dh_sincos_q, z_sincos_q)
 BT_PAIR(mul_affine, dh_mat4_mul_affine_f32, z_mat_mul)
 BT_PAIR(mul, dh_mat4_mul_f32, z_mat_mul)
 BT_PAIR(inv_rigid, dh_mat4_inv_rigid_f32, z_mat_inv_rigid)
+BT_PAIR(inv_rigid_ip, dh_mat4_inv_rigid_f32, z_mat_inv_rigid)
 BT_PAIR(inv, dh_mat4_inv_f32, z_mat_inv)
 BT_PAIR(apply_point, dh_mat4_apply_point_f32, z_mat_point)
 BT_PAIR(rotx, dh_mat4_rotx_f32, z_mat_rot1)
@@ -488,6 +488,7 @@ static const bt_op bt_ops_dh[] = {
     BT_OPD("dh_mat4_mul_affine_f32", mul_affine, "z_mat_mul", 1024u),
     BT_OPD("dh_mat4_mul_f32", mul, "z_mat_mul", 1024u),
     BT_OPD("dh_mat4_inv_rigid_f32", inv_rigid, "z_mat_inv_rigid", 1024u),
+    BT_OPD("dh_mat4_inv_rigid_f32 (in place)", inv_rigid_ip, "z_mat_inv_rigid", 1024u),
     BT_OPD("dh_mat4_inv_f32", inv, "z_mat_inv", 1024u),
     BT_OPD("dh_mat4_apply_point_f32", apply_point, "z_mat_point", 1024u),
     BT_OPD("dh_mat4_rotx_f32", rotx, "z_mat_rot1", 1024u),
@@ -627,7 +628,7 @@ static uint32_t bt_stack_used(void)
 
 int main(void)
 {
-    static bt_op ops[8];
+    static bt_op ops[12];
     uint32_t n, k, st;
     int fail;
     bt_stack_paint();

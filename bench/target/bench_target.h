@@ -14,8 +14,11 @@
 
 #if defined(__GNUC__)
 #define BT_NOINLINE __attribute__((noinline, noclone))
+/* no inlining, cloning or interprocedural use of the body (null twins) */
+#define BT_NOIPA __attribute__((noipa))
 #else
 #define BT_NOINLINE
+#define BT_NOIPA
 #endif
 
 /*
