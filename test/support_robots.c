@@ -23,6 +23,12 @@ const dhs_robot dhs_ur5_m = DHS_ROBOT(UR5);
 const dhs_robot dhs_ur5_mm = DHS_ROBOT(UR5_MM);
 const dhs_robot dhs_panda_m = DHS_ROBOT(PANDA);
 const dhs_robot dhs_panda_mm = DHS_ROBOT(PANDA_MM);
+const dhs_robot dhs_ur3_m = DHS_ROBOT(UR3);
+const dhs_robot dhs_ur3_mm = DHS_ROBOT(UR3_MM);
+const dhs_robot dhs_ur10_m = DHS_ROBOT(UR10);
+const dhs_robot dhs_ur10_mm = DHS_ROBOT(UR10_MM);
+const dhs_robot dhs_cobra600_m = DHS_ROBOT(COBRA600);
+const dhs_robot dhs_cobra600_mm = DHS_ROBOT(COBRA600_MM);
 
 /* ------------------------------------------------------------------------ */
 

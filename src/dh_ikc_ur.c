@@ -1,0 +1,393 @@
+/*
+ * dh_ikc_ur.c - closed-form IK, float: six revolute joints with axes 2, 3,
+ * 4 parallel (DH_IKC_PARALLEL_234, Universal Robots) and R-R-P-R with four
+ * parallel axes (DH_IKC_SCARA). Family solvers behind the front end
+ * dh_ikc.c; contract: src/dh_ikc_impl.h (canonical standard-DH chain,
+ * T06 = pre^-1 T post^-1, raw canonical solutions in (-180, 180]).
+ * Derivation and thresholds: docs/design.md, "Closed-form inverse
+ * kinematics: axes 2-3-4 parallel and SCARA".
+ *
+ * Notation: canonical joint i has a_i, d_i, alpha_i (sa_i, ca_i), theta_i;
+ * A_i = Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i); x_i, y_i, z_i the axes
+ * of frame i in frame 0. A twist of 0 or 180 degrees commutes with Rz up to
+ * the sign of the angle: Rx(alpha) Rz(t) = Rz(c t) Rx(alpha), c = cos alpha.
+ */
+#include "dh_ikc_impl.h"
+#include "dh_internal.h"
+#include "dhmath/dh_trig.h"
+
+/* |sin| or |cos| of a twist at most this is taken as 0 (dh_sincos_f32
+ * gives exact 0 and +-1 at multiples of 90 degrees, so tables with exact
+ * twists pass with any margin). */
+#define IKC_TWIST_EPS 1e-6f
+/* A length at most this times the chain's length scale L (sum of |a|, |d|)
+ * is taken as 0. */
+#define IKC_LEN_EPS 1e-6f
+/* Position tolerance of the clamps and merges, relative to L: a target
+ * this close to the boundary of a branch's workspace is solved on it. */
+#define IKC_POS_REL 4e-7f
+/* Wrist (PARALLEL_234): |sin theta5| at most this is singular. */
+#define IKC_WRIST_TOL 1e-6f
+/* SCARA: the tool axis may lean this much (rad) off the joint axes. */
+#define IKC_SCARA_TILT 1e-6f
+
+DH_INLINE int ikc_zero(float x, float eps)
+{
+    return fabsf(x) <= eps;
+}
+
+DH_INLINE float ikc_sign(float x)
+{
+    return x < 0.0f ? -1.0f : 1.0f;
+}
+
+/* atan2 in degrees, (-180, 180]; (0, 0) gives 0. */
+DH_INLINE float ikc_atan2(float y, float x)
+{
+    if (y == 0.0f && x == 0.0f) return 0.0f;
+    return dh_wrap180_f32(dh_atan2f_deg_(y, x, 0.0f));
+}
+
+/* Sum of |a_i| and |d_i| of the first n canonical joints (length scale). */
+static float ikc_len_scale(const dh_ikc_model_f32 *m, uint32_t n)
+{
+    float L = 0.0f;
+    uint32_t i;
+    for (i = 0; i < n; i++) L += fabsf(m->a[i]) + fabsf(m->d[i]);
+    return L > 0.0f ? L : 1.0f;
+}
+
+/* ======================================================================
+ * DH_IKC_PARALLEL_234
+ *
+ * Structure detected (canonical SDH): six revolute joints, alpha1 = +-90
+ * (|ca1| tiny), alpha2, alpha3 in {0, 180} (|sa2|, |sa3| tiny: axes 2, 3,
+ * 4 parallel), alpha4 = +-90 and alpha5 = +-90 (|ca4|, |ca5| tiny),
+ * a5 = 0, a2 != 0, a3 != 0; a1, a4, every d, every offset, a6 and alpha6
+ * are free (UR3/UR5/UR10: a1 = a4 = 0, alpha = 90, 0, 0, 90, -90, 0).
+ *
+ * Signs: tau = sa1, s2 = ca2, s23 = ca2 ca3, sb = sin(alpha2 + alpha3 +
+ * alpha4) = s23 sa4, w5 = sa5 (each +-1). Frame 1: x1 = (c1, s1, 0),
+ * y1 = (0, 0, tau), z1 = tau (s1, -c1, 0). Frames 2..4 turn about axes
+ * parallel to z1: R14 = Rz(phi) Rx(alpha2 + alpha3 + alpha4) with
+ * phi = t2 + s2 t3 + s23 t4, and in frame 1 (a5 = 0)
+ *   o5 = a2 (c2, s2) + a3 (cos, sin)(t2 + s2 t3) + a4 (cphi, sphi)
+ *        + sb d5 (sphi, -cphi),   z component h = d2 + s2 d3 + s23 d4.
+ * Tool side: R' = R06 Rx(alpha6)^T (x' = x6, z' = sa6 y6 + ca6 z6 = axis 6),
+ * p05 = p - R06 (a6, d6 sa6, d6 ca6) = o5.
+ * 1. z1 . p05 = h: tau (s1 px - c1 py) = h, so with u = +-sqrt(px^2 + py^2
+ *    - h^2): (c1, s1) ~ (u px - tau h py, tau h px + u py).
+ * 2. N = R01^T R' = Rz(phi) Rx(beta) Rz(t5) Rx(alpha5) Rz(t6), whose third
+ *    column is Rz(phi) (w5 s5, 0, -sb w5 c5): c5 = -sb w5 n33,
+ *    s5 = +-|(n13, n23)|, (cphi, sphi) = (n13, n23) / (w5 s5).
+ * 3. t6 from the first column rotated back, m' = Rz(-phi) N e_x:
+ *    t6 = atan2(-w5 sb m'y, c5 m'x + s5 sb m'z); consistent with phi, so the
+ *    solution stays exact however small s5 is. Wrist flip (s5 -> -s5):
+ *    (phi + 180, -t5, t6 + 180).
+ * 4. Planar 2R: v = p1 - a4 (cphi, sphi) - sb d5 (sphi, -cphi) with
+ *    p1 = (c1 px + s1 py - a1, tau (pz - d1)); K = |v|^2 - a2^2 - a3^2,
+ *    D = 2 a2 a3: t3 = atan2(+-sqrt(D^2 - K^2), K sgn D); (A, B) = (a2 + a3
+ *    c3, s2 a3 s3): t2 = atan2(A vy - B vx, A vx + B vy);
+ *    t4 = s23 (phi - t2 - s2 t3).
+ * Singular: |s5| <= IKC_WRIST_TOL (axes 2, 3, 4, 6 parallel): t5 = 0 or 180,
+ * t6 = cref6, phi from the first column: Rz(phi) g = (n11, n21) with
+ * g = (c5 c6, -sb w5 s6). Shoulder: px^2 + py^2 - h^2 within the position
+ * tolerance (the joint 5 point on the cylinder of radius |h| about axis 1,
+ * or on axis 1 when h = 0): one branch u = 0, or t1 = cref1 on the axis.
+ * ====================================================================== */
+
+/* m->k layout, PARALLEL_234 */
+enum {
+    P_TAU = 0, /* sa1 (+-1) */
+    P_S2,      /* ca2 (+-1) */
+    P_S23,     /* ca2 ca3 (+-1) */
+    P_SB,      /* sin(alpha2 + alpha3 + alpha4) = s23 sa4 (+-1) */
+    P_W5,      /* sa5 (+-1) */
+    P_H,       /* h = d2 + s2 d3 + s23 d4 */
+    P_D,       /* 2 a2 a3 */
+    P_A23,     /* a2^2 + a3^2 */
+    P_E5,      /* sb d5 */
+    P_TOLS,    /* shoulder band on px^2 + py^2 - h^2 */
+    P_AXIS,    /* (position tolerance)^2: the point on axis 1 */
+    P_ELB,     /* elbow band: (4 |D| tol)^2, compared with (D^2 - K^2)^2 / |v|^2 */
+    P_W0,      /* a6 */
+    P_W1,      /* d6 sa6 */
+    P_W2,      /* d6 ca6 */
+    P_SA6,     /* sa6 */
+    P_CA6      /* ca6 */
+};
+
+int dh_ikc_detect_par234_f32_(dh_ikc_model_f32 *m)
+{
+    float *k = m->k;
+    float L, tol;
+    if (m->n != 6u || m->prismatic != 0u) return 0;
+    if (!ikc_zero(m->ca[0], IKC_TWIST_EPS) || !ikc_zero(m->sa[1], IKC_TWIST_EPS) ||
+        !ikc_zero(m->sa[2], IKC_TWIST_EPS) || !ikc_zero(m->ca[3], IKC_TWIST_EPS) ||
+        !ikc_zero(m->ca[4], IKC_TWIST_EPS))
+        return 0;
+    L = ikc_len_scale(m, 6u);
+    if (!ikc_zero(m->a[4], IKC_LEN_EPS * L) || ikc_zero(m->a[1], IKC_LEN_EPS * L) ||
+        ikc_zero(m->a[2], IKC_LEN_EPS * L))
+        return 0;
+    k[P_TAU] = ikc_sign(m->sa[0]);
+    k[P_S2] = ikc_sign(m->ca[1]);
+    k[P_S23] = k[P_S2] * ikc_sign(m->ca[2]);
+    k[P_SB] = k[P_S23] * ikc_sign(m->sa[3]);
+    k[P_W5] = ikc_sign(m->sa[4]);
+    k[P_H] = m->d[1] + k[P_S2] * m->d[2] + k[P_S23] * m->d[3];
+    k[P_D] = 2.0f * m->a[1] * m->a[2];
+    k[P_A23] = m->a[1] * m->a[1] + m->a[2] * m->a[2];
+    k[P_E5] = k[P_SB] * m->d[4];
+    tol = IKC_POS_REL * L;
+    k[P_TOLS] = 2.0f * fabsf(k[P_H]) * tol + tol * tol;
+    k[P_AXIS] = tol * tol;
+    k[P_ELB] = (4.0f * fabsf(k[P_D]) * tol) * (4.0f * fabsf(k[P_D]) * tol);
+    k[P_W0] = m->a[5];
+    k[P_W1] = m->d[5] * m->sa[5];
+    k[P_W2] = m->d[5] * m->ca[5];
+    k[P_SA6] = m->sa[5];
+    k[P_CA6] = m->ca[5];
+    m->kind = DH_IKC_PARALLEL_234;
+    return 1;
+}
+
+/* One wrist choice of one shoulder branch: t1, t5, t6 in q[0], q[4],
+ * q[5]; (cphi, sphi) the planar angle; p1 the joint 5 point in frame 1.
+ * Writes the elbow solutions (0, 1 or 2) to sol, returns their count. */
+static DH_NOINLINE uint32_t par234_arm(const dh_ikc_model_f32 *m, const float *q, float cphi, float sphi,
+                                       float p1x, float p1y, uint32_t flags, dh_ikc_sol_f32 *sol)
+{
+    const float *k = m->k;
+    const float a2 = m->a[1], a3 = m->a[2], D = k[P_D];
+    const float vx = p1x - m->a[3] * cphi - k[P_E5] * sphi;
+    const float vy = p1y - m->a[3] * sphi + k[P_E5] * cphi;
+    const float K = vx * vx + vy * vy - k[P_A23];
+    const float Kd = D < 0.0f ? -K : K;
+    const float Ad = a2 * fabsf(D) + a3 * Kd; /* A |D| */
+    const float phi = ikc_atan2(sphi, cphi);
+    float rad = (D - K) * (D + K), r; /* no cancellation of D^2 against K^2 */
+    uint32_t e, ne = 2u, cnt = 0u;
+    /* merging moves the point by about |rad| / (4 |D| |v|): within the
+     * position tolerance tol when rad^2 <= (4 |D| tol)^2 |v|^2 */
+    if (rad * rad <= k[P_ELB] * (vx * vx + vy * vy)) {
+        rad = 0.0f;
+        ne = 1u;
+        flags |= DH_IKC_SING_ELBOW;
+    } else if (rad < 0.0f) {
+        return 0u;
+    }
+    r = dh_sqrt_f32(rad);
+    for (e = 0u; e < ne; e++) {
+        const float s3d = e ? -r : r; /* s3 |D| */
+        const float Bd = k[P_S2] * a3 * s3d;
+        const float t3 = ikc_atan2(s3d, Kd);
+        float y = Ad * vy - Bd * vx, x = Ad * vx + Bd * vy, t2;
+        t2 = (x == 0.0f && y == 0.0f) ? q[1] : ikc_atan2(y, x);
+        sol[cnt].q[0] = q[0];
+        sol[cnt].q[1] = t2;
+        sol[cnt].q[2] = t3;
+        sol[cnt].q[3] = dh_wrap180_f32(k[P_S23] * (phi - t2 - k[P_S2] * t3));
+        sol[cnt].q[4] = q[4];
+        sol[cnt].q[5] = q[5];
+        sol[cnt].flags = flags | (e ? DH_IKC_ELBOW_ALT : 0u);
+        cnt++;
+    }
+    return cnt;
+}
+
+uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
+                            dh_ikc_sol_f32 *sol)
+{
+    const float *k = m->k;
+    const float tau = k[P_TAU], h = k[P_H], sb = k[P_SB], w5 = k[P_W5];
+    const float xx = T06->m[0][0], xy = T06->m[0][1], xz = T06->m[0][2];
+    const float zx = k[P_SA6] * T06->m[1][0] + k[P_CA6] * T06->m[2][0];
+    const float zy = k[P_SA6] * T06->m[1][1] + k[P_CA6] * T06->m[2][1];
+    const float zz = k[P_SA6] * T06->m[1][2] + k[P_CA6] * T06->m[2][2];
+    const float px = T06->m[3][0] - (k[P_W0] * xx + k[P_W1] * T06->m[1][0] + k[P_W2] * T06->m[2][0]);
+    const float py = T06->m[3][1] - (k[P_W0] * xy + k[P_W1] * T06->m[1][1] + k[P_W2] * T06->m[2][1]);
+    const float pz = T06->m[3][2] - (k[P_W0] * xz + k[P_W1] * T06->m[1][2] + k[P_W2] * T06->m[2][2]);
+    const float r2 = px * px + py * py;
+    float rad = r2 - h * h, u = 0.0f, q[6];
+    uint32_t s, ns = 2u, fs = 0u, cnt = 0u;
+    if (rad < -k[P_TOLS]) return 0u;
+    if (rad <= k[P_TOLS]) {
+        ns = 1u;
+        fs = DH_IKC_SING_SHOULDER;
+    } else {
+        u = dh_sqrt_f32(rad);
+    }
+    q[1] = cref[1];
+    for (s = 0u; s < ns; s++) {
+        float c1, s1, n11, n21, n31, n13, n23, c5, s5q, p1x, p1y;
+        const uint32_t f = fs | (s ? DH_IKC_SHOULDER_ALT : 0u);
+        if (fs != 0u && r2 <= k[P_AXIS]) {
+            q[0] = cref[0];
+            (void)dh_sincos_f32(q[0], &s1, &c1);
+        } else {
+            const float uu = s ? -u : u;
+            const float X = uu * px - tau * h * py, Y = tau * h * px + uu * py;
+            const float inv = 1.0f / dh_sqrt_f32(X * X + Y * Y);
+            q[0] = ikc_atan2(Y, X);
+            c1 = X * inv;
+            s1 = Y * inv;
+        }
+        /* N = R01^T R': first and third columns */
+        n11 = c1 * xx + s1 * xy;
+        n21 = tau * xz;
+        n31 = tau * (s1 * xx - c1 * xy);
+        n13 = c1 * zx + s1 * zy;
+        n23 = tau * zz;
+        c5 = -sb * w5 * tau * (s1 * zx - c1 * zy);
+        p1x = c1 * px + s1 * py - m->a[0];
+        p1y = tau * (pz - m->d[0]);
+        s5q = n13 * n13 + n23 * n23;
+        if (s5q <= IKC_WRIST_TOL * IKC_WRIST_TOL) {
+            /* axes 2, 3, 4, 6 parallel: t6 from cref, phi from the first column */
+            float s6, c6, gx, gy, cp, sp, nn;
+            q[4] = c5 < 0.0f ? 180.0f : 0.0f;
+            q[5] = cref[5];
+            (void)dh_sincos_f32(q[5], &s6, &c6);
+            gx = (c5 < 0.0f ? -c6 : c6);
+            gy = -sb * w5 * s6;
+            cp = n11 * gx + n21 * gy;
+            sp = n21 * gx - n11 * gy;
+            nn = cp * cp + sp * sp;
+            if (nn > 0.0f) {
+                nn = 1.0f / dh_sqrt_f32(nn);
+                cp *= nn;
+                sp *= nn;
+            } else {
+                cp = 1.0f;
+            }
+            cnt += par234_arm(m, q, cp, sp, p1x, p1y, f | DH_IKC_SING_WRIST, sol + cnt);
+        } else {
+            const float s5 = dh_sqrt_f32(s5q);
+            const float inv = w5 / s5; /* 1 / (w5 s5) */
+            const float cp = n13 * inv, sp = n23 * inv;
+            const float mx = cp * n11 + sp * n21, my = cp * n21 - sp * n11;
+            q[4] = ikc_atan2(s5, c5);
+            q[5] = ikc_atan2(-w5 * sb * my, c5 * mx + s5 * sb * n31);
+            cnt += par234_arm(m, q, cp, sp, p1x, p1y, f, sol + cnt);
+            /* flip: (phi + 180, -t5, t6 + 180) */
+            q[4] = dh_wrap180_f32(-q[4]);
+            q[5] = dh_wrap180_f32(q[5] + 180.0f);
+            cnt += par234_arm(m, q, -cp, -sp, p1x, p1y, f | DH_IKC_WRIST_ALT, sol + cnt);
+        }
+    }
+    return cnt;
+}
+
+/* ======================================================================
+ * DH_IKC_SCARA
+ *
+ * Structure detected (canonical SDH): four joints R-R-P-R, alpha1, alpha2,
+ * alpha3 in {0, 180} (|sa1|, |sa2|, |sa3| tiny: axes 1..4 parallel),
+ * a1 != 0 and |b| != 0 for the effective second link b = (a2 + a3 cos g,
+ * a3 sin g), g = s12 theta3 (theta3 the prismatic joint's fixed angle);
+ * every d, offset and joint 4's a4, alpha4 free (Cobra 600: a1 = 0.325,
+ * a2 = 0.275, alpha2 = 180).
+ * Signs s1 = ca1, s12 = ca1 ca2, s123 = s12 ca3. R' = R04 Rx(alpha4)^T =
+ * Rz(psi) Rx(alpha1 + alpha2 + alpha3), psi = t1 + s1 t2 + s12 theta3 +
+ * s123 t4, so the tool axis z' = sa4 y4 + ca4 z4 must be (0, 0, s123) and
+ * psi = atan2(x4y, x4x). The frame 3 origin p3 = p - a4 x4 - d4 z' has
+ * z = d1 + s1 d2 + s12 d3 and (x, y) = Rz(t1) (a1 + |b| cos eta, |b| sin eta)
+ * with eta = s1 t2 + delta, delta = atan2(by, bx): 2R with K = |p3xy|^2 -
+ * a1^2 - |b|^2, D = 2 a1 |b|, eta = atan2(+-sqrt(D^2 - K^2), K sgn D).
+ * ====================================================================== */
+
+/* m->k layout, SCARA */
+enum {
+    S_S1 = 0, /* ca1 (+-1) */
+    S_S12,    /* ca1 ca2 (+-1) */
+    S_S123,   /* ca1 ca2 ca3 (+-1) */
+    S_LB,     /* |b| */
+    S_DELTA,  /* atan2(by, bx), degrees */
+    S_D,      /* 2 a1 |b| */
+    S_A1B,    /* a1^2 + |b|^2 */
+    S_Z0,     /* d1 + s1 d2 */
+    S_G,      /* s12 theta3 (fixed angle of the prismatic joint), degrees */
+    S_ELB,    /* elbow band: (4 |D| tol)^2, compared with (D^2 - K^2)^2 / |p3xy|^2 */
+    S_AXIS    /* (position tolerance)^2: p3 on axis 1 */
+};
+
+int dh_ikc_detect_scara_f32_(dh_ikc_model_f32 *m)
+{
+    float *k = m->k;
+    float L, sg, cg, bx, by, tol;
+    if (m->n != 4u || m->prismatic != 0x4u) return 0;
+    if (!ikc_zero(m->sa[0], IKC_TWIST_EPS) || !ikc_zero(m->sa[1], IKC_TWIST_EPS) ||
+        !ikc_zero(m->sa[2], IKC_TWIST_EPS))
+        return 0;
+    L = ikc_len_scale(m, 4u);
+    k[S_S1] = ikc_sign(m->ca[0]);
+    k[S_S12] = k[S_S1] * ikc_sign(m->ca[1]);
+    k[S_S123] = k[S_S12] * ikc_sign(m->ca[2]);
+    if (!(fabsf(m->off[2]) < 1e6f)) return 0;
+    k[S_G] = dh_wrap180_f32(k[S_S12] * dh_wrap180_f32(m->off[2] - 360.0f * (float)(int32_t)(m->off[2] / 360.0f)));
+    (void)dh_sincos_f32(k[S_G], &sg, &cg);
+    bx = m->a[1] + m->a[2] * cg;
+    by = m->a[2] * sg;
+    k[S_LB] = dh_sqrt_f32(bx * bx + by * by);
+    if (ikc_zero(m->a[0], IKC_LEN_EPS * L) || ikc_zero(k[S_LB], IKC_LEN_EPS * L)) return 0;
+    k[S_DELTA] = ikc_atan2(by, bx);
+    k[S_D] = 2.0f * m->a[0] * k[S_LB];
+    k[S_A1B] = m->a[0] * m->a[0] + k[S_LB] * k[S_LB];
+    k[S_Z0] = m->d[0] + k[S_S1] * m->d[1];
+    tol = IKC_POS_REL * L;
+    k[S_ELB] = (4.0f * fabsf(k[S_D]) * tol) * (4.0f * fabsf(k[S_D]) * tol);
+    k[S_AXIS] = tol * tol;
+    m->kind = DH_IKC_SCARA;
+    return 1;
+}
+
+uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
+                           dh_ikc_sol_f32 *sol)
+{
+    const float *k = m->k;
+    const float sa4 = m->sa[3], ca4 = m->ca[3], D = k[S_D], lb = k[S_LB];
+    const float zx = sa4 * T06->m[1][0] + ca4 * T06->m[2][0];
+    const float zy = sa4 * T06->m[1][1] + ca4 * T06->m[2][1];
+    const float zz = sa4 * T06->m[1][2] + ca4 * T06->m[2][2];
+    const float px = T06->m[3][0] - m->a[3] * T06->m[0][0] - m->d[3] * zx;
+    const float py = T06->m[3][1] - m->a[3] * T06->m[0][1] - m->d[3] * zy;
+    const float pz = T06->m[3][2] - m->a[3] * T06->m[0][2] - m->d[3] * zz;
+    const float K = px * px + py * py - k[S_A1B];
+    const float Kd = D < 0.0f ? -K : K;
+    const float Ad = m->a[0] * fabsf(D) + lb * Kd; /* (a1 + |b| cos eta) |D| */
+    const float psi = ikc_atan2(T06->m[0][1], T06->m[0][0]);
+    const float d3 = k[S_S12] * (pz - k[S_Z0]);
+    float rad = (D - K) * (D + K), r;
+    uint32_t e, ne = 2u, flags = 0u;
+    if (zx * zx + zy * zy > IKC_SCARA_TILT * IKC_SCARA_TILT || zz * k[S_S123] <= 0.0f) return 0u;
+    if (rad * rad <= k[S_ELB] * (px * px + py * py)) {
+        rad = 0.0f;
+        ne = 1u;
+        flags = DH_IKC_SING_ELBOW;
+    } else if (rad < 0.0f) {
+        return 0u;
+    }
+    r = dh_sqrt_f32(rad);
+    for (e = 0u; e < ne; e++) {
+        const float sd = e ? -r : r; /* sin eta |D| */
+        const float Bd = lb * sd;
+        const float eta = ikc_atan2(sd, Kd);
+        uint32_t f = flags | (e ? DH_IKC_ELBOW_ALT : 0u);
+        float t1;
+        if (px * px + py * py <= k[S_AXIS]) {
+            t1 = cref[0];
+            f |= DH_IKC_SING_SHOULDER;
+        } else {
+            t1 = ikc_atan2(Ad * py - Bd * px, Ad * px + Bd * py);
+        }
+        sol[e].q[0] = t1;
+        sol[e].q[1] = dh_wrap180_f32(k[S_S1] * dh_wrap180_f32(eta - k[S_DELTA]));
+        sol[e].q[2] = d3;
+        sol[e].q[3] = dh_wrap180_f32(k[S_S123] * dh_wrap180_f32(dh_wrap180_f32(psi - t1) - (eta - k[S_DELTA]) - k[S_G]));
+        sol[e].q[4] = 0.0f;
+        sol[e].q[5] = 0.0f;
+        sol[e].flags = f;
+    }
+    return ne;
+}

@@ -1,0 +1,273 @@
+/*
+ * test_ikc_ur.c - closed-form IK, float: axes 2-3-4 parallel (UR3, UR5,
+ * UR10) and SCARA (Adept Cobra 600), robots in metres.
+ *
+ * Every solution is judged in double, independently of the library: its
+ * joint values go through the double reference FK of support_robots.c
+ * (the robot's stored float parameters) and are compared with the float
+ * target (position norm, rotation angle of R_target R^T). Targets are the
+ * reference FK of random in-limit configurations, rounded to float.
+ */
+#include "dht.h"
+#include "support_robots.h"
+#include "dhmath/dh_ikc.h"
+#include "dhmath/dh_kin.h"
+#include "dhmath/dh_mat4.h"
+#include "../src/dh_ikc_impl.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+#define D2R (PI / 180.0)
+#define TOL_POS 2e-6
+#define TOL_ROT 2e-6
+#define NJ DH_IKC_JOINTS
+/* Completeness: the generating configuration is among the solutions within
+ * 1e-3 deg when its normalised distance from every singularity (shoulder
+ * |u| / L, elbow |a2 a3 s3| / (|a2| + |a3|)^2, wrist |s5|; SCARA |s2|) is at
+ * least SING_FAR; between 1e-2 and SING_FAR within 1e-2 deg. Closer than
+ * SING_FAR the rounding of the float target alone moves the exact solution
+ * by that much: 1.5e-8 m on a coordinate turns theta1 by 1e-7 rad at
+ * r = 0.15 m (UR3), which the wrist amplifies by 1 / |s5|, the elbow by
+ * (|a2| + |a3|) / (|a2 a3 s3|). */
+#define SING_FAR 5e-2
+
+/* ---- the robots ---------------------------------------------------------- */
+
+static const dhs_robot *const g_robots[] = { &dhs_ur3_m, &dhs_ur5_m, &dhs_ur10_m, &dhs_cobra600_m };
+#define N_ROBOTS (sizeof g_robots / sizeof g_robots[0])
+
+/* ---- double helpers --------------------------------------------------------- */
+
+static double rot_angle(double R[3][3])
+{
+    double ux = R[1][2] - R[2][1], uy = R[2][0] - R[0][2], uz = R[0][1] - R[1][0];
+    double s = sqrt(ux * ux + uy * uy + uz * uz), c = R[0][0] + R[1][1] + R[2][2] - 1.0;
+    return atan2(s, c);
+}
+
+/* position norm and rotation angle between the reference FK of q and T */
+static void true_error(const dh_robot *r, const float *q, const dh_mat4_f32 *T, double *ep, double *er)
+{
+    dhs_mat4_d F;
+    double qd[DHS_MAX_JOINTS], D[3][3];
+    uint32_t i;
+    int a, b, k;
+    for (i = 0; i < r->n; i++) qd[i] = (double)q[i];
+    dhs_fk_ref_f32(r, qd, NULL, &F);
+    *ep = 0;
+    for (k = 0; k < 3; k++) {
+        double d = (double)T->m[3][k] - F.m[3][k];
+        *ep += d * d;
+    }
+    *ep = sqrt(*ep);
+    for (a = 0; a < 3; a++)
+        for (b = 0; b < 3; b++) {
+            double s = 0;
+            for (k = 0; k < 3; k++) s += (double)T->m[k][a] * F.m[k][b];
+            D[b][a] = s;
+        }
+    *er = rot_angle(D);
+}
+
+static void to_f32(const dhs_mat4_d *D, dh_mat4_f32 *T)
+{
+    int c, r;
+    for (c = 0; c < 4; c++)
+        for (r = 0; r < 4; r++) T->m[c][r] = (float)D->m[c][r];
+}
+
+static void target_of(const dh_robot *r, const double *q, dh_mat4_f32 *T)
+{
+    dhs_mat4_d F;
+    dhs_fk_ref_f32(r, q, NULL, &F);
+    to_f32(&F, T);
+}
+
+/* |a - b| modulo 360 for revolute joints, plain for prismatic ones */
+static double joint_dist(const dh_robot *r, uint32_t i, double a, double b)
+{
+    double d = a - b;
+    if (r->joint[i].type == DH_JOINT_REVOLUTE) {
+        d = fmod(d, 360.0);
+        if (d > 180.0) d -= 360.0;
+        if (d < -180.0) d += 360.0;
+    }
+    return fabs(d);
+}
+
+static double sol_dist(const dh_robot *r, const float *qs, const double *q)
+{
+    double m = 0.0;
+    uint32_t i;
+    for (i = 0; i < r->n; i++) {
+        double d = joint_dist(r, i, (double)qs[i], q[i]);
+        if (r->joint[i].type == DH_JOINT_PRISMATIC) d *= 1000.0; /* mm as "degrees" */
+        if (d > m) m = d;
+    }
+    return m;
+}
+
+static const char *q_str(const double *q, uint32_t n, int slot)
+{
+    static char buf[2][160];
+    uint32_t i;
+    size_t o = 0;
+    buf[slot][0] = 0;
+    for (i = 0; i < n && o < sizeof buf[slot]; i++)
+        o += (size_t)snprintf(buf[slot] + o, sizeof buf[slot] - o, "%s%.9g", i ? " " : "", q[i]);
+    return buf[slot];
+}
+
+/* ---- raw canonical harness (SDH robots without base and tool) ------------- */
+
+/* The canonical model of an SDH robot, filled by hand (the front end's
+ * job): the chain's own parameters. */
+static void raw_model(const dh_robot *r, dh_ikc_model_f32 *m)
+{
+    uint32_t i;
+    memset(m, 0, sizeof *m);
+    m->n = r->n;
+    for (i = 0; i < r->n; i++) {
+        const dh_joint *j = &r->joint[i];
+        if (j->type == DH_JOINT_PRISMATIC) m->prismatic |= 1u << i;
+        m->a[i] = j->a;
+        m->d[i] = j->d;
+        m->sa[i] = j->sa;
+        m->ca[i] = j->ca;
+        m->off[i] = j->theta_deg;
+        m->qmin[i] = j->qmin;
+        m->qmax[i] = j->qmax;
+    }
+}
+
+/* raw solutions converted to joint values (canonical minus offsets) */
+static uint32_t raw_solve(const dh_robot *r, const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *cref,
+                          dh_ikc_sol_f32 *sol)
+{
+    uint32_t n, s, i;
+    if (m->kind == DH_IKC_PARALLEL_234)
+        n = dh_ikc_par234_f32_(m, T, cref, sol);
+    else
+        n = dh_ikc_scara_f32_(m, T, cref, sol);
+    DHT_TRUE(n <= DH_IKC_MAX_SOL);
+    for (s = 0; s < n; s++)
+        for (i = 0; i < r->n; i++) {
+            if (r->joint[i].type == DH_JOINT_PRISMATIC)
+                sol[s].q[i] -= r->joint[i].d;
+            else
+                sol[s].q[i] -= r->joint[i].theta_deg;
+        }
+    return n;
+}
+
+static void build_raw(const dhs_robot *d, dh_robot *r, dh_ikc_model_f32 *m)
+{
+    DHT_EQ_INT(dhs_build(d, r), DH_OK);
+    raw_model(r, m);
+    if (r->n == 6u) {
+        DHT_TRUE(dh_ikc_detect_par234_f32_(m));
+        DHT_EQ_INT(m->kind, DH_IKC_PARALLEL_234);
+    } else {
+        DHT_TRUE(dh_ikc_detect_scara_f32_(m));
+        DHT_EQ_INT(m->kind, DH_IKC_SCARA);
+    }
+}
+
+/* distance of configuration q from the family's singularities (normalised:
+ * sines of the singular angles, shoulder offset over the reach) */
+static double sing_dist(const dhs_robot *d, const double *q)
+{
+    dhs_mat4_d F[DHS_MAX_JOINTS];
+    if (d->n == 4u) {
+        return fabs(sin(q[1] * D2R));
+    } else {
+        double L = 0, u, s3, s5, m;
+        unsigned i;
+        for (i = 0; i < d->n; i++) L += fabs(d->j[i].a) + fabs(d->j[i].d);
+        dhs_fk_desc(d, q, F, NULL);
+        /* in-plane coordinate of the joint 5 point along x1 */
+        u = (F[4].m[3][0] - F[0].m[3][0]) * F[0].m[0][0] + (F[4].m[3][1] - F[0].m[3][1]) * F[0].m[0][1];
+        /* elbow: the planar arm's Jacobian determinant over its reach squared */
+        s3 = fabs(d->j[1].a * d->j[2].a * sin((q[2] + d->j[2].theta_deg) * D2R)) /
+             ((fabs(d->j[1].a) + fabs(d->j[2].a)) * (fabs(d->j[1].a) + fabs(d->j[2].a)));
+        s5 = fabs(sin((q[4] + d->j[4].theta_deg) * D2R));
+        m = fabs(u) / L;
+        if (s3 < m) m = s3;
+        if (s5 < m) m = s5;
+        return m;
+    }
+}
+
+/* every solution FK-correct; returns the smallest distance to q */
+static double check_all(const dh_robot *r, const dh_mat4_f32 *T, const dh_ikc_sol_f32 *sol, uint32_t n,
+                        const double *q, const char *name, double *ep_max, double *er_max)
+{
+    double best = 1e9;
+    uint32_t s;
+    for (s = 0; s < n; s++) {
+        double ep, er, dd;
+        double qs[NJ];
+        uint32_t i;
+        for (i = 0; i < r->n; i++) qs[i] = (double)sol[s].q[i];
+        true_error(r, sol[s].q, T, &ep, &er);
+        DHT_TRUE_MSG(ep <= TOL_POS && er <= TOL_ROT,
+                     "%s: solution %u (flags 0x%x) q %s: error %.3g m, %.3g rad; generated by %s", name,
+                     (unsigned)s, (unsigned)sol[s].flags, q_str(qs, r->n, 0), ep, er, q_str(q, r->n, 1));
+        if (ep > *ep_max) *ep_max = ep;
+        if (er > *er_max) *er_max = er;
+        dd = sol_dist(r, sol[s].q, q);
+        if (dd < best) best = dd;
+    }
+    return best;
+}
+
+/* ---- raw solver tests ------------------------------------------------------ */
+
+static void raw_complete(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < N_ROBOTS; ri++) {
+        const dhs_robot *d = g_robots[ri];
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+        const float cref[NJ] = { 0 };
+        double ep_max = 0, er_max = 0, worst = 0, worst_near = 0;
+        long it, n_it = DHT_ITER(10000), used = 0;
+        build_raw(d, &r, &m);
+        for (it = 0; it < n_it; it++) {
+            double q[DHS_MAX_JOINTS], best, sd;
+            dh_mat4_f32 T;
+            uint32_t n;
+            dhs_random_q(d, q);
+            sd = sing_dist(d, q);
+            if (sd < 1e-2) continue;
+            used++;
+            target_of(&r, q, &T);
+            n = raw_solve(&r, &m, &T, cref, sol);
+            DHT_TRUE_MSG(n >= 1u, "%s: no solution for q %s", d->name, q_str(q, r.n, 0));
+            best = check_all(&r, &T, sol, n, q, d->name, &ep_max, &er_max);
+            if (sd >= SING_FAR) {
+                DHT_TRUE_MSG(best <= 1e-3, "%s: generating q %s not among the %u solutions (nearest %.3g deg)",
+                             d->name, q_str(q, r.n, 0), (unsigned)n, best);
+            } else {
+                DHT_TRUE_MSG(best <= 1e-2, "%s: generating q %s (singular distance %.3g) not among the %u "
+                             "solutions (nearest %.3g deg)", d->name, q_str(q, r.n, 0), sd, (unsigned)n, best);
+                if (best > worst_near) worst_near = best;
+                continue;
+            }
+            if (best > worst) worst = best;
+        }
+        dht_printf("%s raw: %ld targets, max error %.3g m %.3g rad, generating q within %.3g deg "
+                   "(%.3g deg at singular distance 1e-2..%g)\n", d->name, used, ep_max, er_max, worst, worst_near,
+                   SING_FAR);
+    }
+}
+
+static const dht_case cases[] = {
+    DHT_CASE(raw_complete),
+};
+DHT_MAIN(cases)
