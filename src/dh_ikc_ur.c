@@ -114,7 +114,9 @@ enum {
     P_W1,      /* d6 sa6 */
     P_W2,      /* d6 ca6 */
     P_SA6,     /* sa6 */
-    P_CA6      /* ca6 */
+    P_CA6,     /* ca6 */
+    P_SUM2,    /* (|a2| + |a3|)^2 */
+    P_DIF2     /* (|a2| - |a3|)^2 */
 };
 
 int dh_ikc_detect_par234_f32_(dh_ikc_model_f32 *m)
@@ -148,6 +150,8 @@ int dh_ikc_detect_par234_f32_(dh_ikc_model_f32 *m)
     k[P_W2] = m->d[5] * m->ca[5];
     k[P_SA6] = m->sa[5];
     k[P_CA6] = m->ca[5];
+    k[P_SUM2] = (fabsf(m->a[1]) + fabsf(m->a[2])) * (fabsf(m->a[1]) + fabsf(m->a[2]));
+    k[P_DIF2] = (fabsf(m->a[1]) - fabsf(m->a[2])) * (fabsf(m->a[1]) - fabsf(m->a[2]));
     m->kind = DH_IKC_PARALLEL_234;
     return 1;
 }
@@ -162,15 +166,18 @@ static DH_NOINLINE uint32_t par234_arm(const dh_ikc_model_f32 *m, const float *q
     const float a2 = m->a[1], a3 = m->a[2], D = k[P_D];
     const float vx = p1x - m->a[3] * cphi - k[P_E5] * sphi;
     const float vy = p1y - m->a[3] * sphi + k[P_E5] * cphi;
-    const float K = vx * vx + vy * vy - k[P_A23];
+    const float v2 = vx * vx + vy * vy;
+    const float K = v2 - k[P_A23];
     const float Kd = D < 0.0f ? -K : K;
     const float Ad = a2 * fabsf(D) + a3 * Kd; /* A |D| */
     const float phi = ikc_atan2(sphi, cphi);
-    float rad = (D - K) * (D + K), r; /* no cancellation of D^2 against K^2 */
+    /* D^2 - K^2 = ((|a2| + |a3|)^2 - |v|^2) (|v|^2 - (|a2| - |a3|)^2): no
+     * cancellation of large terms near the stretched or folded elbow */
+    float rad = (k[P_SUM2] - v2) * (v2 - k[P_DIF2]), r;
     uint32_t e, ne = 2u, cnt = 0u;
     /* merging moves the point by about |rad| / (4 |D| |v|): within the
      * position tolerance tol when rad^2 <= (4 |D| tol)^2 |v|^2 */
-    if (rad * rad <= k[P_ELB] * (vx * vx + vy * vy)) {
+    if (rad * rad <= k[P_ELB] * v2) {
         rad = 0.0f;
         ne = 1u;
         flags |= DH_IKC_SING_ELBOW;
@@ -309,7 +316,9 @@ enum {
     S_Z0,     /* d1 + s1 d2 */
     S_G,      /* s12 theta3 (fixed angle of the prismatic joint), degrees */
     S_ELB,    /* elbow band: (4 |D| tol)^2, compared with (D^2 - K^2)^2 / |p3xy|^2 */
-    S_AXIS    /* (position tolerance)^2: p3 on axis 1 */
+    S_AXIS,   /* (position tolerance)^2: p3 on axis 1 */
+    S_SUM2,   /* (|a1| + |b|)^2 */
+    S_DIF2    /* (|a1| - |b|)^2 */
 };
 
 int dh_ikc_detect_scara_f32_(dh_ikc_model_f32 *m)
@@ -338,6 +347,8 @@ int dh_ikc_detect_scara_f32_(dh_ikc_model_f32 *m)
     tol = IKC_POS_REL * L;
     k[S_ELB] = (4.0f * fabsf(k[S_D]) * tol) * (4.0f * fabsf(k[S_D]) * tol);
     k[S_AXIS] = tol * tol;
+    k[S_SUM2] = (fabsf(m->a[0]) + k[S_LB]) * (fabsf(m->a[0]) + k[S_LB]);
+    k[S_DIF2] = (fabsf(m->a[0]) - k[S_LB]) * (fabsf(m->a[0]) - k[S_LB]);
     m->kind = DH_IKC_SCARA;
     return 1;
 }
@@ -353,15 +364,16 @@ uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, co
     const float px = T06->m[3][0] - m->a[3] * T06->m[0][0] - m->d[3] * zx;
     const float py = T06->m[3][1] - m->a[3] * T06->m[0][1] - m->d[3] * zy;
     const float pz = T06->m[3][2] - m->a[3] * T06->m[0][2] - m->d[3] * zz;
-    const float K = px * px + py * py - k[S_A1B];
+    const float p2 = px * px + py * py;
+    const float K = p2 - k[S_A1B];
     const float Kd = D < 0.0f ? -K : K;
     const float Ad = m->a[0] * fabsf(D) + lb * Kd; /* (a1 + |b| cos eta) |D| */
     const float psi = ikc_atan2(T06->m[0][1], T06->m[0][0]);
     const float d3 = k[S_S12] * (pz - k[S_Z0]);
-    float rad = (D - K) * (D + K), r;
+    float rad = (k[S_SUM2] - p2) * (p2 - k[S_DIF2]), r; /* D^2 - K^2, as for PARALLEL_234 */
     uint32_t e, ne = 2u, flags = 0u;
     if (zx * zx + zy * zy > IKC_SCARA_TILT * IKC_SCARA_TILT || zz * k[S_S123] <= 0.0f) return 0u;
-    if (rad * rad <= k[S_ELB] * (px * px + py * py)) {
+    if (rad * rad <= k[S_ELB] * p2) {
         rad = 0.0f;
         ne = 1u;
         flags = DH_IKC_SING_ELBOW;
@@ -375,7 +387,7 @@ uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, co
         const float eta = ikc_atan2(sd, Kd);
         uint32_t f = flags | (e ? DH_IKC_ELBOW_ALT : 0u);
         float t1;
-        if (px * px + py * py <= k[S_AXIS]) {
+        if (p2 <= k[S_AXIS]) {
             t1 = cref[0];
             f |= DH_IKC_SING_SHOULDER;
         } else {

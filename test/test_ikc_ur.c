@@ -176,29 +176,39 @@ static void build_raw(const dhs_robot *d, dh_robot *r, dh_ikc_model_f32 *m)
     }
 }
 
-/* distance of configuration q from the family's singularities (normalised:
- * sines of the singular angles, shoulder offset over the reach) */
-static double sing_dist(const dhs_robot *d, const double *q)
+/* normalised distances of configuration q from the family's singularities:
+ * part[0] shoulder |u| / L (u: the joint 5 point's coordinate along x1),
+ * part[1] elbow |a2 a3 s3| / (|a2| + |a3|)^2, part[2] wrist |s5|; SCARA:
+ * part[1] = |s2|, the others 1. Returns the smallest. */
+static double sing_parts(const dhs_robot *d, const double *q, double part[3])
 {
     dhs_mat4_d F[DHS_MAX_JOINTS];
+    double m;
+    int i;
+    part[0] = part[2] = 1.0;
     if (d->n == 4u) {
-        return fabs(sin(q[1] * D2R));
+        part[1] = fabs(sin(q[1] * D2R));
     } else {
-        double L = 0, u, s3, s5, m;
-        unsigned i;
-        for (i = 0; i < d->n; i++) L += fabs(d->j[i].a) + fabs(d->j[i].d);
+        const double a2 = fabs(d->j[1].a), a3 = fabs(d->j[2].a);
+        double L = 0, u;
+        unsigned j;
+        for (j = 0; j < d->n; j++) L += fabs(d->j[j].a) + fabs(d->j[j].d);
         dhs_fk_desc(d, q, F, NULL);
-        /* in-plane coordinate of the joint 5 point along x1 */
         u = (F[4].m[3][0] - F[0].m[3][0]) * F[0].m[0][0] + (F[4].m[3][1] - F[0].m[3][1]) * F[0].m[0][1];
-        /* elbow: the planar arm's Jacobian determinant over its reach squared */
-        s3 = fabs(d->j[1].a * d->j[2].a * sin((q[2] + d->j[2].theta_deg) * D2R)) /
-             ((fabs(d->j[1].a) + fabs(d->j[2].a)) * (fabs(d->j[1].a) + fabs(d->j[2].a)));
-        s5 = fabs(sin((q[4] + d->j[4].theta_deg) * D2R));
-        m = fabs(u) / L;
-        if (s3 < m) m = s3;
-        if (s5 < m) m = s5;
-        return m;
+        part[0] = fabs(u) / L;
+        part[1] = a2 * a3 * fabs(sin((q[2] + d->j[2].theta_deg) * D2R)) / ((a2 + a3) * (a2 + a3));
+        part[2] = fabs(sin((q[4] + d->j[4].theta_deg) * D2R));
     }
+    m = part[0];
+    for (i = 1; i < 3; i++)
+        if (part[i] < m) m = part[i];
+    return m;
+}
+
+static double sing_dist(const dhs_robot *d, const double *q)
+{
+    double part[3];
+    return sing_parts(d, q, part);
 }
 
 /* every solution FK-correct; returns the smallest distance to q */
@@ -267,7 +277,236 @@ static void raw_complete(void)
     }
 }
 
+
+/* ---- singular cases ------------------------------------------------------- */
+
+/* solve, check every solution's FK; returns n and ORs the flags */
+static uint32_t solve_check(const dh_robot *r, const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *cref,
+                            const double *q, const char *what, uint32_t *flags_or, double *best)
+{
+    dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+    double ep = 0, er = 0;
+    uint32_t n = raw_solve(r, m, T, cref, sol), s;
+    *flags_or = 0;
+    DHT_TRUE_MSG(n >= 1u, "%s: no solution for q %s", what, q_str(q, r->n, 0));
+    for (s = 0; s < n; s++) *flags_or |= sol[s].flags;
+    *best = check_all(r, T, sol, n, q, what, &ep, &er);
+    return n;
+}
+
+/* UR with q5 = 0 or 180: wrist singular, joint 6 taken from cref; with
+ * cref6 = the generating q6 the generating configuration is found. */
+static void raw_ur_wrist_singular(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < 3u; ri++) {
+        const dhs_robot *d = g_robots[ri];
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        long it;
+        build_raw(d, &r, &m);
+        for (it = 0; it < DHT_ITER(500); it++) {
+            double q[DHS_MAX_JOINTS], best;
+            float cref[NJ] = { 0 };
+            dh_mat4_f32 T;
+            uint32_t n, fl;
+            double part[3];
+            dhs_random_q(d, q);
+            q[4] = (it & 1) ? 180.0 : 0.0;
+            (void)sing_parts(d, q, part);
+            if (part[0] < SING_FAR || part[1] < SING_FAR) continue; /* only the wrist singular */
+            cref[5] = (float)(q[5] - 360.0 * floor((q[5] + 180.0) / 360.0));
+            target_of(&r, q, &T);
+            n = solve_check(&r, &m, &T, cref, q, d->name, &fl, &best);
+            DHT_TRUE_MSG((fl & DH_IKC_SING_WRIST) != 0u, "%s: q5 = %g not flagged wrist singular", d->name, q[4]);
+            /* the singular shoulder branch gives 2 (one per elbow), the other at most 4 */
+            DHT_TRUE_MSG(n <= 6u, "%s: %u solutions at a wrist singularity", d->name, (unsigned)n);
+            DHT_TRUE_MSG(best <= 1e-2, "%s: q %s not found with cref6 = q6 (nearest %.3g deg)", d->name,
+                         q_str(q, r.n, 0), best);
+        }
+    }
+}
+
+/* UR with the joint 5 point on the cylinder |u| = 0 (the two shoulder
+ * branches meet): flagged, FK-correct, returned once */
+static void raw_ur_shoulder_singular(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < 3u; ri++) {
+        const dhs_robot *d = g_robots[ri];
+        const double a2 = d->j[1].a, a3 = d->j[2].a, e5 = d->j[4].d; /* sb = +1 for UR */
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        long it;
+        int found = 0;
+        build_raw(d, &r, &m);
+        for (it = 0; it < DHT_ITER(500); it++) {
+            double q[DHS_MAX_JOINTS], best, X, Y, R, c, phi;
+            const float cref[NJ] = { 0 };
+            dh_mat4_f32 T;
+            uint32_t n, fl;
+            dhs_random_q(d, q);
+            /* planar x of the joint 5 point: a2 c2 + a3 c23 + e5 sin(phi) = 0 */
+            phi = (q[1] + q[2] + q[3]) * D2R;
+            X = a2 + a3 * cos(q[2] * D2R);
+            Y = a3 * sin(q[2] * D2R);
+            R = sqrt(X * X + Y * Y);
+            c = -e5 * sin(phi);
+            if (fabs(c) >= R) continue;
+            q[1] = (-atan2(Y, X) + ((it & 1) ? 1 : -1) * acos(c / R)) / D2R;
+            q[3] = phi / D2R - q[1] - q[2];
+            DHT_TRUE(sing_dist(d, q) < 1e-12);
+            target_of(&r, q, &T);
+            n = solve_check(&r, &m, &T, cref, q, d->name, &fl, &best);
+            DHT_TRUE_MSG((fl & DH_IKC_SING_SHOULDER) != 0u, "%s: u = 0 not flagged shoulder singular (q %s)",
+                         d->name, q_str(q, r.n, 0));
+            DHT_TRUE_MSG(n <= 4u, "%s: %u solutions with the shoulder branches merged", d->name, (unsigned)n);
+            found++;
+        }
+        DHT_TRUE(found > 0);
+    }
+}
+
+/* stretched or folded elbow: UR q3 = 0 / 180, SCARA q2 = 0 */
+static void raw_elbow_singular(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < N_ROBOTS; ri++) {
+        const dhs_robot *d = g_robots[ri];
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        long it;
+        build_raw(d, &r, &m);
+        for (it = 0; it < DHT_ITER(500); it++) {
+            double q[DHS_MAX_JOINTS], best;
+            const float cref[NJ] = { 0 };
+            dh_mat4_f32 T;
+            uint32_t n, fl, j = (d->n == 4u) ? 1u : 2u;
+            double part[3];
+            dhs_random_q(d, q);
+            q[j] = (d->n == 6u && (it & 1)) ? 180.0 : 0.0;
+            (void)sing_parts(d, q, part);
+            if (part[0] < SING_FAR || part[2] < SING_FAR) continue; /* only the elbow singular */
+            target_of(&r, q, &T);
+            n = solve_check(&r, &m, &T, cref, q, d->name, &fl, &best);
+            DHT_TRUE_MSG((fl & DH_IKC_SING_ELBOW) != 0u, "%s: q%u = %g not flagged elbow singular (q %s)", d->name,
+                         (unsigned)j + 1u, q[j], q_str(q, r.n, 0));
+            /* UR: the stretched branch once, its wrist flip and the other shoulder up to 2 + 4 */
+            DHT_TRUE_MSG(n <= (d->n == 4u ? 1u : 7u), "%s: %u solutions with the elbow stretched", d->name,
+                         (unsigned)n);
+        }
+    }
+}
+
+/* ---- unreachable ------------------------------------------------------------- */
+
+static void raw_unreachable(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < N_ROBOTS; ri++) {
+        const dhs_robot *d = g_robots[ri];
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+        const float cref[NJ] = { 0 };
+        double q[DHS_MAX_JOINTS];
+        dh_mat4_f32 T;
+        long it;
+        uint32_t n;
+        build_raw(d, &r, &m);
+        for (it = 0; it < DHT_ITER(200); it++) {
+            double L = 0, sc, rxy;
+            unsigned i;
+            for (i = 0; i < d->n; i++) L += fabs(d->j[i].a) + fabs(d->j[i].d);
+            dhs_random_q(d, q);
+            target_of(&r, q, &T);
+            /* beyond the reach: the horizontal position moved out to 1.2 .. 5 L */
+            rxy = sqrt((double)T.m[3][0] * T.m[3][0] + (double)T.m[3][1] * T.m[3][1]);
+            sc = dht_rand_uniform(1.2, 5.0) * L / (rxy > 1e-3 ? rxy : 1e-3);
+            T.m[3][0] = (float)(T.m[3][0] * sc);
+            T.m[3][1] = (float)(T.m[3][1] * sc);
+            n = raw_solve(&r, &m, &T, cref, sol);
+            DHT_TRUE_MSG(n == 0u, "%s: %u solutions for the unreachable p = (%g, %g, %g)", d->name, (unsigned)n,
+                         (double)T.m[3][0], (double)T.m[3][1], (double)T.m[3][2]);
+        }
+        if (d->n == 4u) {
+            /* SCARA: a tool axis not parallel to the joint axes */
+            dh_mat4_f32 Rx, T2;
+            dhs_random_q(d, q);
+            target_of(&r, q, &T);
+            DHT_EQ_INT(dh_mat4_rotx_f32(0.01f, &Rx), DH_OK);
+            dh_mat4_mul_f32(&T, &Rx, &T2);
+            T = T2;
+            DHT_EQ_INT(raw_solve(&r, &m, &T, cref, sol), 0);
+        }
+    }
+}
+
+/* ---- numerical IK finds nothing the closed form misses ------------------- */
+
+static void raw_vs_numerical(void)
+{
+    static float work[DH_IK_WORK_FLOATS(DH_MAX_JOINTS)];
+    unsigned ri;
+    for (ri = 0; ri < N_ROBOTS; ri++) {
+        const dhs_robot *d = g_robots[ri];
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        dh_ik_params p;
+        long it, st_n, conv = 0, near = 0;
+        double worst = 0;
+        build_raw(d, &r, &m);
+        dh_ik_params_default(&r, &p);
+        p.restarts = 0;
+        p.max_iter = 60;
+        if (d->n == 4u) p.mask = DH_IK_POSITION | DH_IK_RZ;
+        for (it = 0; it < DHT_ITER(1000); it++) {
+            double q[DHS_MAX_JOINTS];
+            dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+            const float cref[NJ] = { 0 };
+            dh_mat4_f32 T;
+            uint32_t n;
+            dhs_random_q(d, q);
+            target_of(&r, q, &T);
+            n = raw_solve(&r, &m, &T, cref, sol);
+            DHT_TRUE(n >= 1u);
+            for (st_n = 0; st_n < DHT_ITER(200); st_n++) {
+                double q0d[DHS_MAX_JOINTS], qn[DHS_MAX_JOINTS], best = 1e9, ep, er;
+                float q0[DHS_MAX_JOINTS], qo[DHS_MAX_JOINTS];
+                dh_ik_result res;
+                uint32_t i, s;
+                dhs_random_q(d, q0d);
+                for (i = 0; i < r.n; i++) q0[i] = (float)q0d[i];
+                if (dh_ik_f32(&r, &T, q0, &p, work, sizeof work / sizeof work[0], qo, &res) != DH_OK) continue;
+                true_error(&r, qo, &T, &ep, &er);
+                if (ep > 1e-5 || er > 1e-4) continue;
+                for (i = 0; i < r.n; i++) qn[i] = (double)qo[i];
+                if (sing_dist(d, qn) < 1e-2) { /* the solution set is flat there: joint distance says little */
+                    near++;
+                    continue;
+                }
+                conv++;
+                for (s = 0; s < n; s++) {
+                    double dd = sol_dist(&r, sol[s].q, qn);
+                    if (dd < best) best = dd;
+                }
+                if (best > worst) worst = best;
+                DHT_TRUE_MSG(best <= 0.5, "%s: numerical solution %s (error %.3g m %.3g rad) not among the %u "
+                             "closed-form ones (nearest %.3g deg); target q %s", d->name, q_str(qn, r.n, 0), ep, er,
+                             (unsigned)n, best, q_str(q, r.n, 1));
+            }
+        }
+        dht_printf("%s: %ld converged numerical solutions, all among the closed-form ones (within %.3g deg; "
+                   "%ld more within 1e-2 of a singularity not compared)\n", d->name, conv, worst, near);
+    }
+}
+
 static const dht_case cases[] = {
     DHT_CASE(raw_complete),
+    DHT_CASE(raw_ur_wrist_singular),
+    DHT_CASE(raw_ur_shoulder_singular),
+    DHT_CASE(raw_elbow_singular),
+    DHT_CASE(raw_unreachable),
+    DHT_CASE(raw_vs_numerical),
 };
 DHT_MAIN(cases)
