@@ -29,6 +29,12 @@ const dhs_robot dhs_ur10_m = DHS_ROBOT(UR10);
 const dhs_robot dhs_ur10_mm = DHS_ROBOT(UR10_MM);
 const dhs_robot dhs_cobra600_m = DHS_ROBOT(COBRA600);
 const dhs_robot dhs_cobra600_mm = DHS_ROBOT(COBRA600_MM);
+const dhs_robot dhs_kuka_kr5_m = DHS_ROBOT(KUKA_KR5);
+const dhs_robot dhs_kuka_kr5_mm = DHS_ROBOT(KUKA_KR5_MM);
+const dhs_robot dhs_abb_irb140_m = DHS_ROBOT(ABB_IRB140);
+const dhs_robot dhs_abb_irb140_mm = DHS_ROBOT(ABB_IRB140_MM);
+const dhs_robot dhs_stanford_m = DHS_ROBOT(STANFORD);
+const dhs_robot dhs_stanford_mm = DHS_ROBOT(STANFORD_MM);
 
 /* ------------------------------------------------------------------------ */
 
