@@ -48,6 +48,17 @@ DH_INLINE float ikc_atan2(float y, float x)
     return dh_wrap180_f32(dh_atan2f_deg_(y, x, 0.0f));
 }
 
+/* A reference angle (any finite degrees) in (-180, 180]. */
+static float ikc_ref(float x)
+{
+    if (!(fabsf(x) <= 540.0f)) {
+        const float t = x * (1.0f / 360.0f);
+        if (fabsf(t) < 8388608.0f) x -= 360.0f * (float)(int32_t)t;
+        if (!(fabsf(x) <= 540.0f)) x = 0.0f; /* |x| >= 2^23 turns: no fraction left */
+    }
+    return dh_wrap180_f32(x);
+}
+
 /* Sum of |a_i| and |d_i| of the first n canonical joints (length scale). */
 static float ikc_len_scale(const dh_ikc_model_f32 *m, uint32_t n)
 {
@@ -225,12 +236,12 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, c
     } else {
         u = dh_sqrt_f32(rad);
     }
-    q[1] = cref[1];
+    q[1] = ikc_ref(cref[1]);
     for (s = 0u; s < ns; s++) {
         float c1, s1, n11, n21, n31, n13, n23, c5, s5q, p1x, p1y;
         const uint32_t f = fs | (s ? DH_IKC_SHOULDER_ALT : 0u);
         if (fs != 0u && r2 <= k[P_AXIS]) {
-            q[0] = cref[0];
+            q[0] = ikc_ref(cref[0]);
             (void)dh_sincos_f32(q[0], &s1, &c1);
         } else {
             const float uu = s ? -u : u;
@@ -254,7 +265,7 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, c
             /* axes 2, 3, 4, 6 parallel: t6 from cref, phi from the first column */
             float s6, c6, gx, gy, cp, sp, nn;
             q[4] = c5 < 0.0f ? 180.0f : 0.0f;
-            q[5] = cref[5];
+            q[5] = ikc_ref(cref[5]);
             (void)dh_sincos_f32(q[5], &s6, &c6);
             gx = (c5 < 0.0f ? -c6 : c6);
             gy = -sb * w5 * s6;
@@ -388,7 +399,7 @@ uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, co
         uint32_t f = flags | (e ? DH_IKC_ELBOW_ALT : 0u);
         float t1;
         if (p2 <= k[S_AXIS]) {
-            t1 = cref[0];
+            t1 = ikc_ref(cref[0]);
             f |= DH_IKC_SING_SHOULDER;
         } else {
             t1 = ikc_atan2(Ad * py - Bd * px, Ad * px + Bd * py);
