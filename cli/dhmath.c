@@ -17,6 +17,7 @@
 #include "dh_gen.h"
 #include "dh_robotfile.h"
 #include "dhmath/dh_fixed.h"
+#include "dhmath/dh_ikc.h"
 #include "dhmath/dh_kin.h"
 #include "dhmath/dh_mat4.h"
 #include "dhmath/dh_robot.h"
@@ -45,6 +46,11 @@ static const char k_usage[] =
     "  ik [--q0 q1,...] [--position] [--tol-pos X] [--tol-rot RAD] [--w-rot X]\n"
     "     [--max-iter N] ROBOT EXPR    joint values reaching EXPR; status on stderr;\n"
     "                                  exit 0 converged, 3 not converged\n"
+    "  ik --all [--q0 q1,...] ROBOT EXPR\n"
+    "                                  every closed-form solution within the limits,\n"
+    "                                  one per line (--q0: reference for the 360-degree\n"
+    "                                  shifts and singular splits); exit 0 at least one,\n"
+    "                                  3 none, 2 no closed form for the robot\n"
     "  euler SEQ EXPR                  Euler angles in degrees of EXPR's rotation; SEQ as\n"
     "                                  scipy Rotation: XYZ intrinsic (Rot(x,a) Rot(y,b)\n"
     "                                  Rot(z,c)), xyz extrinsic; 24 sequences\n"
@@ -59,7 +65,7 @@ static const char k_usage[] =
     "  e.g. dhmath eval \"trans(4,-3,7) roty(90) rotz(90)\"\n"
     "Joint values: degrees for revolute joints, length units for prismatic.\n"
     "'-' as EXPR or ROBOT reads it from standard input (once per command).\n"
-    "Numbers are printed with %.9g. Exit status: 0 ok, 2 error, 3 ik not converged.\n";
+    "Numbers are printed with %.9g. Exit status: 0 ok, 2 error, 3 ik not converged or no solution.\n";
 
 /* ---- messages ----------------------------------------------------------- */
 
@@ -143,7 +149,7 @@ static int finish(void)
 /* ---- argument helpers --------------------------------------------------- */
 
 typedef struct {
-    int fixed, frames, position, expr;
+    int fixed, frames, position, expr, all;
     const char *q0;
     const char *tol_pos, *tol_rot, *w_rot, *max_iter;
     const char *pos[8];
@@ -168,6 +174,7 @@ static int parse_opts(int argc, char **argv, opts *o, const char *allowed)
             else if (strcmp(name, "frames") == 0 && strstr(allowed, "frames")) flag = &o->frames;
             else if (strcmp(name, "position") == 0 && strstr(allowed, "position")) flag = &o->position;
             else if (strcmp(name, "expr") == 0 && strstr(allowed, "expr")) flag = &o->expr;
+            else if (strcmp(name, "all") == 0 && strstr(allowed, "all")) flag = &o->all;
             if (flag) {
                 if (*flag) return usage_error("option '%s' given more than once", a);
                 *flag = 1;
@@ -608,6 +615,51 @@ static int ik_not_rigid(const char *path, const dh_robot *r, const dh_robotfile 
     return error_msg("ik: the end frame of the robot is not rigid (its rotation part is not a rotation)", NULL);
 }
 
+/* ik --all: every closed-form solution (dh_ikc_f32), one line each. The
+ * float solver only: a fixed-point variant (--fixed, dh_ikc_q) would take
+ * the robot's fixed path here. */
+static int ik_all(const opts *o, const dh_robot *r, const dh_robotfile *rf, const dh_mat4_f32 *target)
+{
+    dh_ikc_model_f32 m;
+    dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+    double qd[DH_IKC_JOINTS];
+    float qref[DH_IKC_JOINTS];
+    uint32_t n_sol = 0, n_all = 0, s, k;
+    const char *path = strcmp(o->pos[0], "-") == 0 ? "<stdin>" : o->pos[0];
+    dh_status st;
+    int rc;
+    if (o->position || o->tol_pos || o->tol_rot || o->w_rot || o->max_iter)
+        return usage_error("ik --all takes only --q0 (the closed form has no tolerances, weights or iterations)", NULL);
+    st = dh_ikc_analyse_f32(r, &m);
+    if (st != DH_OK) {
+        fprintf(stderr, "dhmath: error: ik --all: %s has no closed-form inverse kinematics: %s\n", path,
+                dh_ikc_why_str(m.why));
+        return EXIT_ERR;
+    }
+    for (k = 0; k < DH_IKC_JOINTS; k++) qd[k] = 0.0;
+    if (o->q0 && (rc = parse_list(o->q0, r->n, qd, "--q0")) != 0) return rc;
+    for (k = 0; k < DH_IKC_JOINTS; k++) qref[k] = (float)qd[k];
+    st = dh_ikc_f32(&m, target, qref, 0u, sol, &n_sol);
+    if (st == DH_ERR_NOT_RIGID) return ik_not_rigid(o->pos[0], r, rf, target, DH_IK_FULL);
+    if (st == DH_ERR_UNREACHABLE) {
+        fprintf(stderr, "ik --all: no solution: the target is out of reach\n");
+        return EXIT_NOCONV;
+    }
+    if (st == DH_ERR_LIMIT) {
+        (void)dh_ikc_f32(&m, target, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_all);
+        fprintf(stderr, "ik --all: no solution within the joint limits (%u outside)\n", (unsigned)n_all);
+        return EXIT_NOCONV;
+    }
+    if (st != DH_OK) return error_msg("ik --all", dh_status_str(st));
+    for (s = 0; s < n_sol; s++)
+        for (k = 0; k < r->n; k++) put_num(sol[s].q[k], k + 1 == r->n);
+    rc = finish();
+    (void)dh_ikc_f32(&m, target, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_all);
+    fprintf(stderr, "ik --all: %u closed-form solution%s within the limits (%u outside)\n", (unsigned)n_sol,
+            n_sol == 1u ? "" : "s", (unsigned)(n_all - n_sol));
+    return rc;
+}
+
 static int cmd_ik(int argc, char **argv)
 {
     opts o;
@@ -622,12 +674,13 @@ static int cmd_ik(int argc, char **argv)
     unsigned n, k;
     dh_status st;
     double L, x;
-    int rc = parse_opts(argc, argv, &o, "q0 position tol-pos tol-rot w-rot max-iter");
+    int rc = parse_opts(argc, argv, &o, "q0 position tol-pos tol-rot w-rot max-iter all");
     if (rc) return rc;
     if (o.npos != 2) return usage_error("ik takes ROBOTFILE EXPR [--q0 q1,...] [--position] [--tol-pos X] "
-                                        "[--tol-rot X] [--w-rot X] [--max-iter N]", NULL);
+                                        "[--tol-rot X] [--w-rot X] [--max-iter N], or --all [--q0 q1,...]", NULL);
     if ((rc = load_robot(o.pos[0], 0, &r, &rf)) != 0) return rc;
     if ((rc = eval_expr(o.pos[1], &target)) != 0) return rc;
+    if (o.all) return ik_all(&o, &r, &rf, &target);
     n = r.n;
     for (k = 0; k < n; k++) qd[k] = 0.0;
     if (o.q0 && (rc = parse_list(o.q0, n, qd, "--q0")) != 0) return rc;

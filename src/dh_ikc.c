@@ -40,6 +40,8 @@ enum {
     KW_SA23,       /* sigma sin alpha3 */
     KW_CA23,       /* sigma cos alpha3 */
     KW_INV2A2,     /* 1 / (2 a2) */
+    KW_CPLUS,      /* |a2| + rho: wrist centre distance from axis 2, elbow stretched */
+    KW_CMINUS,     /* ||a2| - rho|: the same, elbow folded */
     /* RRP */
     KW_W,          /* a2 + a3 cos th3 + e sin th3 (th3 the fixed theta of joint 3) */
     KW_Z3C,        /* cos(alpha3) d4: z3 = d3 + KW_Z3C */
@@ -50,12 +52,9 @@ enum {
 
 typedef char dh_ikc_k_fits_[(KW_COUNT <= (int)DH_IKC_K) ? 1 : -1];
 
-/* Wrist singular below this |sin theta5|: the orientation error of the
- * q_ref split is at most |sin theta5| rad. */
-#define IKC_SING_WRIST 1e-6f
-/* Elbow stretched when D^2 - K'^2 <= this times D^2 (position error
- * <= 2e-6 D / (2 reach), well below the float FK's rounding). */
-#define IKC_SING_ELBOW 4e-6f
+/* Wrist singular when axis 6 is within this angle (rad) of axis 4: the
+ * orientation error of the q_ref split is at most that angle. */
+#define IKC_SING_WRIST 1.5e-6f
 /* Length tolerance per unit of the characteristic length L. */
 #define IKC_EPS_L 5e-7f
 
@@ -386,6 +385,8 @@ int dh_ikc_detect_wrist_f32_(dh_ikc_model_f32 *m)
         k[KW_SA23] = m->ca[1] * m->sa[2];
         k[KW_CA23] = m->ca[1] * m->ca[2];
         k[KW_INV2A2] = 1.0f / (2.0f * a2);
+        k[KW_CPLUS] = fabsf(a2) + rho;
+        k[KW_CMINUS] = fabsf(fabsf(a2) - rho);
         m->kind = DH_IKC_WRIST_RRR;
     } else if (m->prismatic == 0x4u) {
         const float e = m->sa[2] * m->d[3];
@@ -447,11 +448,13 @@ static DH_NOINLINE uint32_t ikc_wrist(const dh_ikc_model_f32 *m, const float *R6
     c5 = (k[KW_CC45] - mz[2]) * k[KW_INV45];
     if (c5 > 1.0f) c5 = 1.0f;
     if (c5 < -1.0f) c5 = -1.0f;
+    /* axes 4 and 6 aligned when M e_z (axis 6 in frame 3) is on the z axis */
+    s = dh_sqrt_f32(mz[0] * mz[0] + mz[1] * mz[1]);
     if (k[KW_ORTHO] != 0.0f)
-        s5 = dh_sqrt_f32(mz[0] * mz[0] + mz[1] * mz[1]);
+        s5 = s;
     else
         s5 = dh_sqrt_f32(1.0f - c5 * c5);
-    if (s5 < IKC_SING_WRIST) {
+    if (s < IKC_SING_WRIST) {
         /* axes 4 and 6 aligned: joint 4 from q_ref */
         t4 = cref[3];
         (void)dh_sincos_f32(t4, &s4, &c4);
@@ -515,19 +518,25 @@ static uint32_t ikc_elbow_rrr(const dh_ikc_model_f32 *m, float vx, float vy, con
                               dh_ikc_sol_f32 *sol)
 {
     const float *k = m->k;
-    const float D = k[KW_D], Kp = vx * vx + vy * vy - k[KW_A2RHO];
-    const float r3 = D * D - Kp * Kp, tol = IKC_SING_ELBOW * D * D;
-    const float KD = (D < 0.0f) ? -Kp : Kp;
+    const float v2 = vx * vx + vy * vy, v = dh_sqrt_f32(v2), D = k[KW_D], Kp = v2 - k[KW_A2RHO];
+    const float aD = fabsf(D), KD = (D < 0.0f) ? -Kp : Kp;
+    /* dK = |D| - |K'| from |v| (no cancellation of the squares against the
+     * constant a2^2 + rho^2): stretched elbow (|a2| + rho)^2 - |v|^2,
+     * folded |v|^2 - (|a2| - rho)^2. Moving K' by dK moves the wrist centre
+     * by dK / (2 |v|): the branches coincide within KW_EPS. */
+    const float dK = (KD >= 0.0f) ? (k[KW_CPLUS] - v) * (k[KW_CPLUS] + v) : (v - k[KW_CMINUS]) * (v + k[KW_CMINUS]);
+    const float tol = 2.0f * k[KW_EPS] * v;
     const float A = m->a[1] + Kp * k[KW_INV2A2];
     float sq, psi, B;
     uint32_t b, nb = 2u;
-    if (r3 < -tol) return 0u;
-    if (r3 <= tol) {
+    if (dK < -tol) return 0u;
+    if (dK <= tol) {
         nb = 1u;
         sq = 0.0f;
         sol->flags |= DH_IKC_SING_ELBOW;
     } else {
-        sq = dh_sqrt_f32(r3);
+        /* D^2 - K'^2 = dK (|D| + |K'|) */
+        sq = dh_sqrt_f32(dK * (2.0f * aD - dK));
     }
     psi = dh_atan2f_deg_(sq, KD, 0.0f);
     for (b = 0; b < nb; b++) {
@@ -550,7 +559,8 @@ static uint32_t ikc_elbow_rrp(const dh_ikc_model_f32 *m, float vx, float vy, con
 {
     const float *k = m->k;
     const float W = k[KW_W], eps = k[KW_EPS], tau2 = m->sa[1];
-    const float r = vx * vx + vy * vy - W * W, tol = eps * (2.0f * fabsf(W) + eps);
+    const float v = dh_sqrt_f32(vx * vx + vy * vy), r = (v - fabsf(W)) * (v + fabsf(W));
+    const float tol = eps * (2.0f * fabsf(W) + eps);
     float z;
     uint32_t b, nb = 2u;
     if (r < -tol) return 0u;
@@ -591,7 +601,8 @@ uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, co
     py = T06->m[3][1] - a6 * R6[1] - d6 * R6[7];
     pz = T06->m[3][2] - a6 * R6[2] - d6 * R6[8];
     /* shoulder: u = +-sqrt(px^2 + py^2 - h^2) */
-    rad = px * px + py * py - h * h;
+    rad = dh_sqrt_f32(px * px + py * py);
+    rad = (rad - fabsf(h)) * (rad + fabsf(h));
     tol = eps * (2.0f * fabsf(h) + eps);
     if (rad < -tol) return 0u;
     if (rad <= tol) {

@@ -17,6 +17,10 @@ Groups:
   help      help/usage behaviour, --version
   numbers   floats printed with %.9g read back as the same float through
             the CLI (FLT_MAX, FLT_MIN, subnormals, a strided sample)
+  ikc       ik --all (closed form) on the shipped wrist robots: every line a
+            solution (double FK here), the generating configuration among
+            them, exit 3 unreachable / outside the limits, exit 2 and the
+            reason for a robot without a closed form
   messages  the messages that name a cause: ik robot size and --w-rot,
             non-rigid tool/base/target, fk --fixed constants, projective
             EXPR in axis/euler/quat, --q0 clamping, '-' for stdin
@@ -738,7 +742,10 @@ def group_examples():
         rob = read_robot(open(path).read())
         unit = 1000.0 if 'mm' in name else 1.0
         for it in range(10):
-            q = ['%.4f' % rng.uniform(-90, 90) for _ in rob['joints']]
+            # within +-90 deg and the joint's limits (a prismatic joint: its limits)
+            q = ['%.4f' % (rng.uniform(j['min'], j['max']) if j['type'] == 'P' else
+                           rng.uniform(max(-90.0, j.get('min', -90.0)), min(90.0, j.get('max', 90.0))))
+                 for j in rob['joints']]
             rc, out, err = run(['fk', path, ','.join(q)])
             check(rc == 0 or 'outside its limits' in err, 'fk %s rc %d %r' % (name, rc, err))
             if rc:
@@ -955,6 +962,92 @@ def group_messages(tmp):
     check(rc == 2 and 'column 10 of EXPR: unknown term' in err, 'eval - with a bad EXPR: %r' % err)
 
 
+def ang_diff(a, b):
+    d = (a - b) % 360.0
+    return min(d, 360.0 - d)
+
+
+def group_ikc(seed, tmp):
+    rdir = os.path.join(ROOT, 'examples', 'robots')
+    rng = random.Random(seed)
+    for name in ('puma560.dh', 'kuka_kr5.dh', 'abb_irb140.dh', 'stanford.dh'):
+        path = os.path.join(rdir, name)
+        rob = read_robot(open(path).read())
+        js = rob['joints']
+        nsol = 0
+        for it in range(20):
+            q = [rng.uniform(j['min'], j['max']) for j in js]
+            if abs(math.sin(math.radians(q[4] + js[4]['theta']))) < 0.1:
+                continue
+            T = ref_fk(rob, q)
+            rc, out, err = run(['ik', '--all', path, to_expr(T)])
+            lines = err.splitlines()
+            check(rc in (0, 3) and len(lines) == 1 and lines[0].startswith('ik --all: '),
+                  'ik --all %s: rc %d err %r' % (name, rc, err))
+            if rc != 0:
+                check(out == '', 'ik --all %s rc 3 printed %r' % (name, out))
+                continue
+            best = 1e30
+            rows = nums(out)
+            check(re.match(r'ik --all: %d closed-form solutions? within the limits \(\d+ outside\)$' % len(rows),
+                           lines[0]) is not None, 'ik --all %s summary %r' % (name, lines[0]))
+            for row in rows:
+                check(len(row) == len(js), 'ik --all %s: line %r' % (name, row))
+                T2 = ref_fk(rob, row)
+                d = maxdiff(T2, T)
+                check(d <= 2e-5, 'ik --all %s: solution %r misses the target by %.3g' % (name, row, d))
+                for j, v in zip(js, row):
+                    check(j['min'] <= v <= j['max'], 'ik --all %s: %r outside the limits' % (name, row))
+                w = max(ang_diff(a, b) if j['type'] == 'R' else abs(a - b) for j, a, b in zip(js, row, q))
+                best = min(best, w)
+            nsol += len(rows)
+            check(best <= 1e-2, 'ik --all %s: generating q %r not printed (nearest %.3g)\n%s' % (name, q, best, out))
+        print('ik --all %s: %d solutions printed' % (name, nsol))
+    puma = os.path.join(rdir, 'puma560.dh')
+    kr5 = os.path.join(rdir, 'kuka_kr5.dh')
+    # --q0 chooses the 360-degree shift: KR5 joints 4 and 6 over +-350
+    rob = read_robot(open(kr5).read())
+    q = [20, -40, 60, 200, 50, -190]
+    target = to_expr(ref_fk(rob, q))
+    for q0, want in (('0,0,0,180,0,-180', (200, -190)), ('0,0,0,0,0,0', (-160, 170))):
+        rc, out, err = run(['ik', '--all', '--q0', q0, kr5, target])
+        ok = rc == 0 and any(abs(r[0] - 20) < 1e-2 and abs(r[1] + 40) < 1e-2 and abs(r[3] - want[0]) < 1e-2 and
+                             abs(r[5] - want[1]) < 1e-2 for r in nums(out))
+        check(ok, 'ik --all --q0 %s: %r %r' % (q0, out, err))
+    # no solution: exit 3, nothing on stdout, one line on stderr
+    rc, out, err = run(['ik', '--all', puma, 'trans(5,0,0)'])
+    check(rc == 3 and out == '' and err == 'ik --all: no solution: the target is out of reach\n',
+          'ik --all unreachable: rc %d %r %r' % (rc, out, err))
+    narrow = write(tmp, 'narrow.dh', open(puma).read().replace('min=-160 max=160', 'min=10 max=20'))
+    rc, out, err = run(['ik', '--all', narrow, target_of_puma(60)])
+    check(rc == 3 and out == '' and re.match(r'ik --all: no solution within the joint limits \(\d+ outside\)\n$', err),
+          'ik --all outside the limits: rc %d %r %r' % (rc, out, err))
+    # robots without a closed form, errors: exit 2 and the reason
+    offset = write(tmp, 'offset.dh', open(puma).read().replace(
+        'joint R a=0      d=0       alpha=-90', 'joint R a=0.05   d=0       alpha=-90'))
+    cases = [(['ik', '--all', os.path.join(rdir, 'panda.dh'), 'ident'],
+              r'^dhmath: error: ik --all: .*panda.dh has no closed-form inverse kinematics: the joint count or types '
+              r'match no closed-form family\n$'),
+             (['ik', '--all', offset, 'ident'],
+              r'^dhmath: error: ik --all: .*offset.dh has no closed-form inverse kinematics: the last three axes do '
+              r'not meet in one point'),
+             (['ik', '--all', '--position', puma, 'ident'], r'^dhmath: usage error: ik --all takes only --q0'),
+             (['ik', '--all', '--max-iter', '3', puma, 'ident'], r'^dhmath: usage error: ik --all takes only --q0'),
+             (['ik', '--all', '--fixed', puma, 'ident'], r"^dhmath: usage error: unknown or inapplicable option '--fixed'"),
+             (['ik', '--all', '--q0', '1,2', puma, 'ident'], r'--q0: expected 6 values'),
+             (['ik', '--all', puma, 'scale(1,2,1)'], r'^dhmath: error: ik: the rotation part of the target EXPR'),
+             (['ik', '--all', puma, 'persp(z,2)'], r'^dhmath: error: ik: EXPR is not rigid')]
+    for args, pat in cases:
+        rc, out, err = run(args)
+        check(rc == 2 and out == '' and re.search(pat, err) is not None,
+              'ik --all error %r: rc %d out %r err %r' % (args, rc, out, err))
+
+
+def target_of_puma(q1):
+    rob = read_robot(open(os.path.join(ROOT, 'examples', 'robots', 'puma560.dh')).read())
+    return to_expr(ref_fk(rob, [q1, -30, 40, 10, 30, 20]))
+
+
 def main():
     global EXE, ROOT
     if len(sys.argv) < 4:
@@ -981,6 +1074,8 @@ def main():
             group_numbers()
         elif group == 'messages':
             group_messages(tmp)
+        elif group == 'ikc':
+            group_ikc(seed, tmp)
         else:
             print('unknown group', group)
             return 2
