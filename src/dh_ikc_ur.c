@@ -167,16 +167,111 @@ int dh_ikc_detect_par234_f32_(dh_ikc_model_f32 *m)
     return 1;
 }
 
-/* One wrist choice of one shoulder branch: t1, t5, t6 in q[0], q[4],
- * q[5]; (cphi, sphi) the planar angle; p1 the joint 5 point in frame 1.
- * Writes the elbow solutions (0, 1 or 2) to sol, returns their count. */
-static DH_NOINLINE uint32_t par234_arm(const dh_ikc_model_f32 *m, const float *q, float cphi, float sphi,
-                                       float p1x, float p1y, uint32_t flags, dh_ikc_sol_f32 *sol)
+/* The solver runs in two flat passes so that no call chain holds more than
+ * one solver frame (stack budget): pass 1 writes one record per (shoulder,
+ * wrist) choice into the solution slots r = 4 shoulder + 2 wrist and r + 1
+ * (sol[r].q = t1, t5, t6, cphi, sphi, p1x; sol[r + 1].q[0] = p1y; flags in
+ * sol[r].flags, IKC_EMPTY in sol[r + 1].flags for no record); pass 2 turns
+ * each record into its elbow solutions in the same two slots; the slots
+ * left empty are then squeezed out, keeping the branch order. */
+#define IKC_EMPTY 0xFFFFFFFFu
+
+/* Pass 1 for one shoulder branch (f: its flags, DH_IKC_SHOULDER_ALT for the
+ * second): joint 1 from the joint 5 point p05 and u (pw = px, py, pz, u,
+ * px^2 + py^2, kept in sol[1].q[1..5]), then the two wrist records in
+ * rec = sol + 4 s. */
+static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
+                                     uint32_t f, dh_ikc_sol_f32 *sol)
+{
+    const float *k = m->k;
+    const float tau = k[P_TAU], sb = k[P_SB], w5 = k[P_W5];
+    const float *pw = &sol[1].q[1];
+    const uint32_t s = f & DH_IKC_SHOULDER_ALT;
+    dh_ikc_sol_f32 *rec = sol + (s ? 4u : 0u);
+    float c1, s1;
+    if ((f & DH_IKC_SING_SHOULDER) != 0u && pw[4] <= k[P_AXIS]) {
+        rec[0].q[0] = ikc_ref(cref[0]);
+        (void)dh_sincos_f32(rec[0].q[0], &s1, &c1);
+    } else {
+        const float th = tau * k[P_H], uu = s ? -pw[3] : pw[3];
+        const float X = uu * pw[0] - th * pw[1], Y = th * pw[0] + uu * pw[1];
+        const float inv = 1.0f / dh_sqrt_f32(X * X + Y * Y);
+        rec[0].q[0] = ikc_atan2(Y, X);
+        c1 = X * inv;
+        s1 = Y * inv;
+    }
+    rec[0].q[5] = c1 * pw[0] + s1 * pw[1] - m->a[0]; /* the joint 5 point in frame 1 */
+    rec[1].q[0] = tau * (pw[2] - m->d[0]);
+    {
+    /* N = R01^T R': first column (n11, n21, n31), third column (n13, n23, n33) */
+    const float xx = T06->m[0][0], xy = T06->m[0][1];
+    const float zx = k[P_SA6] * T06->m[1][0] + k[P_CA6] * T06->m[2][0];
+    const float zy = k[P_SA6] * T06->m[1][1] + k[P_CA6] * T06->m[2][1];
+    const float n11 = c1 * xx + s1 * xy, n21 = tau * T06->m[0][2];
+    const float n13 = c1 * zx + s1 * zy;
+    const float n23 = tau * (k[P_SA6] * T06->m[1][2] + k[P_CA6] * T06->m[2][2]);
+    const float c5 = -sb * w5 * tau * (s1 * zx - c1 * zy);
+    const float s5q = n13 * n13 + n23 * n23;
+    float cp, sp;
+    if (s5q <= IKC_WRIST_TOL * IKC_WRIST_TOL) {
+        /* axes 2, 3, 4, 6 parallel: t6 from cref, phi from the first column,
+         * Rz(phi) (c5 c6, -sb w5 s6) = (n11, n21) */
+        float s6, c6, gx, gy, nn;
+        rec[0].q[1] = c5 < 0.0f ? 180.0f : 0.0f;
+        rec[0].q[2] = ikc_ref(cref[5]);
+        (void)dh_sincos_f32(rec[0].q[2], &s6, &c6);
+        gx = (c5 < 0.0f ? -c6 : c6);
+        gy = -sb * w5 * s6;
+        cp = n11 * gx + n21 * gy;
+        sp = n21 * gx - n11 * gy;
+        nn = cp * cp + sp * sp;
+        if (nn > 0.0f) {
+            nn = 1.0f / dh_sqrt_f32(nn);
+            cp *= nn;
+            sp *= nn;
+        } else {
+            cp = 1.0f;
+        }
+        f |= DH_IKC_SING_WRIST;
+        rec[3].flags = IKC_EMPTY;
+    } else {
+        const float s5 = dh_sqrt_f32(s5q);
+        const float inv = w5 / s5; /* 1 / (w5 s5) */
+        const float n31 = tau * (s1 * xx - c1 * xy);
+        float mx, my;
+        cp = n13 * inv;
+        sp = n23 * inv;
+        mx = cp * n11 + sp * n21;
+        my = cp * n21 - sp * n11;
+        rec[0].q[1] = ikc_atan2(s5, c5);
+        rec[0].q[2] = ikc_atan2(-w5 * sb * my, c5 * mx + s5 * sb * n31);
+        /* flip: (phi + 180, -t5, t6 + 180) */
+        rec[2].q[0] = rec[0].q[0];
+        rec[2].q[1] = dh_wrap180_f32(-rec[0].q[1]);
+        rec[2].q[2] = dh_wrap180_f32(rec[0].q[2] + 180.0f);
+        rec[2].q[3] = -cp;
+        rec[2].q[4] = -sp;
+        rec[2].q[5] = rec[0].q[5];
+        rec[3].q[0] = rec[1].q[0];
+        rec[2].flags = f | DH_IKC_WRIST_ALT;
+        rec[3].flags = 0u;
+    }
+    rec[0].q[3] = cp;
+    rec[0].q[4] = sp;
+    rec[0].flags = f;
+    rec[1].flags = 0u;
+    }
+}
+
+/* Pass 2 for one record (slots rec[0], rec[1]): its elbow solutions, in
+ * place. */
+static DH_NOINLINE void par234_arm(const dh_ikc_model_f32 *m, const float *cref, dh_ikc_sol_f32 *rec)
 {
     const float *k = m->k;
     const float a2 = m->a[1], a3 = m->a[2], D = k[P_D];
-    const float vx = p1x - m->a[3] * cphi - k[P_E5] * sphi;
-    const float vy = p1y - m->a[3] * sphi + k[P_E5] * cphi;
+    const float t1 = rec[0].q[0], t5 = rec[0].q[1], t6 = rec[0].q[2], cphi = rec[0].q[3], sphi = rec[0].q[4];
+    const float vx = rec[0].q[5] - m->a[3] * cphi - k[P_E5] * sphi;
+    const float vy = rec[1].q[0] - m->a[3] * sphi + k[P_E5] * cphi;
     const float v2 = vx * vx + vy * vy;
     const float K = v2 - k[P_A23];
     const float Kd = D < 0.0f ? -K : K;
@@ -185,7 +280,8 @@ static DH_NOINLINE uint32_t par234_arm(const dh_ikc_model_f32 *m, const float *q
     /* D^2 - K^2 = ((|a2| + |a3|)^2 - |v|^2) (|v|^2 - (|a2| - |a3|)^2): no
      * cancellation of large terms near the stretched or folded elbow */
     float rad = (k[P_SUM2] - v2) * (v2 - k[P_DIF2]), r;
-    uint32_t e, ne = 2u, cnt = 0u;
+    uint32_t e, ne = 2u, flags = rec[0].flags;
+    rec[1].flags = IKC_EMPTY;
     /* merging moves the point by about |rad| / (4 |D| |v|): within the
      * position tolerance tol when rad^2 <= (4 |D| tol)^2 |v|^2 */
     if (rad * rad <= k[P_ELB] * v2) {
@@ -193,106 +289,72 @@ static DH_NOINLINE uint32_t par234_arm(const dh_ikc_model_f32 *m, const float *q
         ne = 1u;
         flags |= DH_IKC_SING_ELBOW;
     } else if (rad < 0.0f) {
-        return 0u;
+        rec[0].flags = IKC_EMPTY;
+        return;
     }
     r = dh_sqrt_f32(rad);
     for (e = 0u; e < ne; e++) {
         const float s3d = e ? -r : r; /* s3 |D| */
         const float Bd = k[P_S2] * a3 * s3d;
         const float t3 = ikc_atan2(s3d, Kd);
-        float y = Ad * vy - Bd * vx, x = Ad * vx + Bd * vy, t2;
-        t2 = (x == 0.0f && y == 0.0f) ? q[1] : ikc_atan2(y, x);
-        sol[cnt].q[0] = q[0];
-        sol[cnt].q[1] = t2;
-        sol[cnt].q[2] = t3;
-        sol[cnt].q[3] = dh_wrap180_f32(k[P_S23] * (phi - t2 - k[P_S2] * t3));
-        sol[cnt].q[4] = q[4];
-        sol[cnt].q[5] = q[5];
-        sol[cnt].flags = flags | (e ? DH_IKC_ELBOW_ALT : 0u);
-        cnt++;
+        const float y = Ad * vy - Bd * vx, x = Ad * vx + Bd * vy;
+        const float t2 = (x == 0.0f && y == 0.0f) ? ikc_ref(cref[1]) : ikc_atan2(y, x);
+        rec[e].q[0] = t1;
+        rec[e].q[1] = t2;
+        rec[e].q[2] = t3;
+        rec[e].q[3] = dh_wrap180_f32(k[P_S23] * (phi - t2 - k[P_S2] * t3));
+        rec[e].q[4] = t5;
+        rec[e].q[5] = t6;
+        rec[e].flags = flags | (e ? DH_IKC_ELBOW_ALT : 0u);
     }
-    return cnt;
+}
+
+/* The joint 5 point p05 and u = sqrt(px^2 + py^2 - h^2) into pw (as
+ * par234_wrist reads them); returns the number of shoulder branches (0:
+ * unreachable, 1: merged or on axis 1). */
+static DH_NOINLINE uint32_t par234_p05(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, float *pw)
+{
+    const float *k = m->k;
+    float rad;
+    uint32_t i;
+    for (i = 0u; i < 3u; i++)
+        pw[i] = T06->m[3][i] - (k[P_W0] * T06->m[0][i] + k[P_W1] * T06->m[1][i] + k[P_W2] * T06->m[2][i]);
+    pw[4] = pw[0] * pw[0] + pw[1] * pw[1];
+    rad = pw[4] - k[P_H] * k[P_H];
+    pw[3] = 0.0f;
+    if (rad < -k[P_TOLS]) return 0u;
+    if (rad <= k[P_TOLS]) return 1u;
+    pw[3] = dh_sqrt_f32(rad);
+    return 2u;
 }
 
 uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
                             dh_ikc_sol_f32 *sol)
 {
-    const float *k = m->k;
-    const float tau = k[P_TAU], h = k[P_H], sb = k[P_SB], w5 = k[P_W5];
-    const float xx = T06->m[0][0], xy = T06->m[0][1], xz = T06->m[0][2];
-    const float zx = k[P_SA6] * T06->m[1][0] + k[P_CA6] * T06->m[2][0];
-    const float zy = k[P_SA6] * T06->m[1][1] + k[P_CA6] * T06->m[2][1];
-    const float zz = k[P_SA6] * T06->m[1][2] + k[P_CA6] * T06->m[2][2];
-    const float px = T06->m[3][0] - (k[P_W0] * xx + k[P_W1] * T06->m[1][0] + k[P_W2] * T06->m[2][0]);
-    const float py = T06->m[3][1] - (k[P_W0] * xy + k[P_W1] * T06->m[1][1] + k[P_W2] * T06->m[2][1]);
-    const float pz = T06->m[3][2] - (k[P_W0] * xz + k[P_W1] * T06->m[1][2] + k[P_W2] * T06->m[2][2]);
-    const float r2 = px * px + py * py;
-    float rad = r2 - h * h, u = 0.0f, q[6];
-    uint32_t s, ns = 2u, fs = 0u, cnt = 0u;
-    if (rad < -k[P_TOLS]) return 0u;
-    if (rad <= k[P_TOLS]) {
-        ns = 1u;
-        fs = DH_IKC_SING_SHOULDER;
-    } else {
-        u = dh_sqrt_f32(rad);
+    float *pw = &sol[1].q[1]; /* px, py, pz, u, px^2 + py^2 (slot 1 is free until pass 2) */
+    const uint32_t ns = par234_p05(m, T06, pw);
+    const uint32_t fs = (ns == 1u) ? DH_IKC_SING_SHOULDER : 0u;
+    uint32_t s, cnt = 0u;
+    if (ns == 0u) return 0u;
+    if (ns == 1u) {
+        sol[5].flags = IKC_EMPTY;
+        sol[7].flags = IKC_EMPTY;
     }
-    q[1] = ikc_ref(cref[1]);
-    for (s = 0u; s < ns; s++) {
-        float c1, s1, n11, n21, n31, n13, n23, c5, s5q, p1x, p1y;
-        const uint32_t f = fs | (s ? DH_IKC_SHOULDER_ALT : 0u);
-        if (fs != 0u && r2 <= k[P_AXIS]) {
-            q[0] = ikc_ref(cref[0]);
-            (void)dh_sincos_f32(q[0], &s1, &c1);
-        } else {
-            const float uu = s ? -u : u;
-            const float X = uu * px - tau * h * py, Y = tau * h * px + uu * py;
-            const float inv = 1.0f / dh_sqrt_f32(X * X + Y * Y);
-            q[0] = ikc_atan2(Y, X);
-            c1 = X * inv;
-            s1 = Y * inv;
+    for (s = 0u; s < ns; s++) par234_wrist(m, T06, cref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
+    for (s = 0u; s < 8u; s += 2u) {
+        if (sol[s + 1u].flags != IKC_EMPTY)
+            par234_arm(m, cref, sol + s);
+        else
+            sol[s].flags = IKC_EMPTY;
+    }
+    for (s = 0u; s < 8u; s++) {
+        uint32_t i;
+        if (sol[s].flags == IKC_EMPTY) continue;
+        if (cnt != s) {
+            for (i = 0u; i < 6u; i++) sol[cnt].q[i] = sol[s].q[i];
+            sol[cnt].flags = sol[s].flags;
         }
-        /* N = R01^T R': first and third columns */
-        n11 = c1 * xx + s1 * xy;
-        n21 = tau * xz;
-        n31 = tau * (s1 * xx - c1 * xy);
-        n13 = c1 * zx + s1 * zy;
-        n23 = tau * zz;
-        c5 = -sb * w5 * tau * (s1 * zx - c1 * zy);
-        p1x = c1 * px + s1 * py - m->a[0];
-        p1y = tau * (pz - m->d[0]);
-        s5q = n13 * n13 + n23 * n23;
-        if (s5q <= IKC_WRIST_TOL * IKC_WRIST_TOL) {
-            /* axes 2, 3, 4, 6 parallel: t6 from cref, phi from the first column */
-            float s6, c6, gx, gy, cp, sp, nn;
-            q[4] = c5 < 0.0f ? 180.0f : 0.0f;
-            q[5] = ikc_ref(cref[5]);
-            (void)dh_sincos_f32(q[5], &s6, &c6);
-            gx = (c5 < 0.0f ? -c6 : c6);
-            gy = -sb * w5 * s6;
-            cp = n11 * gx + n21 * gy;
-            sp = n21 * gx - n11 * gy;
-            nn = cp * cp + sp * sp;
-            if (nn > 0.0f) {
-                nn = 1.0f / dh_sqrt_f32(nn);
-                cp *= nn;
-                sp *= nn;
-            } else {
-                cp = 1.0f;
-            }
-            cnt += par234_arm(m, q, cp, sp, p1x, p1y, f | DH_IKC_SING_WRIST, sol + cnt);
-        } else {
-            const float s5 = dh_sqrt_f32(s5q);
-            const float inv = w5 / s5; /* 1 / (w5 s5) */
-            const float cp = n13 * inv, sp = n23 * inv;
-            const float mx = cp * n11 + sp * n21, my = cp * n21 - sp * n11;
-            q[4] = ikc_atan2(s5, c5);
-            q[5] = ikc_atan2(-w5 * sb * my, c5 * mx + s5 * sb * n31);
-            cnt += par234_arm(m, q, cp, sp, p1x, p1y, f, sol + cnt);
-            /* flip: (phi + 180, -t5, t6 + 180) */
-            q[4] = dh_wrap180_f32(-q[4]);
-            q[5] = dh_wrap180_f32(q[5] + 180.0f);
-            cnt += par234_arm(m, q, -cp, -sp, p1x, p1y, f | DH_IKC_WRIST_ALT, sol + cnt);
-        }
+        cnt++;
     }
     return cnt;
 }
