@@ -9,7 +9,8 @@
  *   three axes intersecting in one point (spherical wrist), any shoulder and
  *   elbow offsets (Puma 560, KUKA KR5, ABB IRB140; Paul 1981 ch. 3, the
  *   Puma's transform-equation solution); up to 8 solutions;
- * - DH_IKC_WRIST_RRP: the same wrist on an R-R-P arm (Stanford arm); up to 4;
+ * - DH_IKC_WRIST_RRP: the same wrist on an R-R-P arm (Stanford arm); up to
+ *   8, four of them with the prismatic joint's extension negative;
  * - DH_IKC_PARALLEL_234: six revolute joints with axes 2, 3, 4 parallel
  *   (Universal Robots UR3/UR5/UR10 and e-series); up to 8;
  * - DH_IKC_SCARA: R-R-P-R with all four axes parallel (Adept Cobra 600); up to 2.
@@ -198,7 +199,8 @@ dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int3
 
 /**
  * @brief Index of the solution nearest q_ref: smallest sum over joints of
- *        |q_i - q_ref_i| (the first of equals). n joints, n_sol solutions.
+ *        |q_i - q_ref_i| (the first of equals). n joints, n_sol solutions;
+ *        q_ref NULL means all zeros.
  * @return DH_OK; DH_ERR_ARG n_sol == 0 or n > DH_IKC_JOINTS (*index untouched);
  *         DH_ERR_NAN q_ref not finite.
  */
