@@ -176,33 +176,48 @@ int dh_ikc_detect_par234_f32_(dh_ikc_model_f32 *m)
  * left empty are then squeezed out, keeping the branch order. */
 #define IKC_EMPTY 0xFFFFFFFFu
 
-/* Pass 1 for one shoulder branch (f: its flags, DH_IKC_SHOULDER_ALT for the
- * second): joint 1 from the joint 5 point p05 and u (pw = px, py, pz, u,
- * px^2 + py^2, kept in sol[1].q[1..5]), then the two wrist records in
- * rec = sol + 4 s. */
+/* Pass 1a for one shoulder branch (f: its flags, DH_IKC_SHOULDER_ALT for
+ * the second): joint 1 from the joint 5 point p05 and u (pw = px, py, pz,
+ * u, px^2 + py^2, kept in sol[1].q[1..5]) into rec = sol + 4 s: t1 in
+ * rec[0].q[0], the joint 5 point in frame 1 in rec[0].q[5] and
+ * rec[1].q[0], (c1, s1) in rec[3].q[1..2] (scratch). */
+static DH_NOINLINE void par234_shoulder(const dh_ikc_model_f32 *m, const float *cref, uint32_t f,
+                                        dh_ikc_sol_f32 *sol)
+{
+    const float *k = m->k;
+    const float *pw = &sol[1].q[1];
+    dh_ikc_sol_f32 *rec = sol + ((f & DH_IKC_SHOULDER_ALT) ? 4u : 0u);
+    float c1, s1;
+    if ((f & DH_IKC_SING_SHOULDER) != 0u && pw[4] <= k[P_AXIS]) {
+        (void)dh_sincos_f32(ikc_ref(cref[0]), &s1, &c1);
+    } else {
+        const float th = k[P_TAU] * k[P_H], uu = (f & DH_IKC_SHOULDER_ALT) ? -pw[3] : pw[3];
+        const float X = uu * pw[0] - th * pw[1], Y = th * pw[0] + uu * pw[1];
+        const float inv = 1.0f / dh_sqrt_f32(X * X + Y * Y);
+        c1 = X * inv;
+        s1 = Y * inv;
+    }
+    rec[3].q[1] = c1;
+    rec[3].q[2] = s1;
+    rec[0].q[5] = c1 * pw[0] + s1 * pw[1] - m->a[0];
+    rec[1].q[0] = k[P_TAU] * (pw[2] - m->d[0]);
+    /* t1 = atan2(s1, c1) is taken by par234_angles (rec[3].q[5] = 1) */
+    rec[3].q[5] = 1.0f;
+    if ((f & DH_IKC_SING_SHOULDER) != 0u && pw[4] <= k[P_AXIS]) {
+        rec[0].q[0] = ikc_ref(cref[0]);
+        rec[3].q[5] = 0.0f;
+    }
+}
+
+/* Pass 1b: the two wrist records of the shoulder branch (rec = sol + 4 s,
+ * after par234_shoulder). */
 static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
                                      uint32_t f, dh_ikc_sol_f32 *sol)
 {
     const float *k = m->k;
     const float tau = k[P_TAU], sb = k[P_SB], w5 = k[P_W5];
-    const float *pw = &sol[1].q[1];
-    const uint32_t s = f & DH_IKC_SHOULDER_ALT;
-    dh_ikc_sol_f32 *rec = sol + (s ? 4u : 0u);
-    float c1, s1;
-    if ((f & DH_IKC_SING_SHOULDER) != 0u && pw[4] <= k[P_AXIS]) {
-        rec[0].q[0] = ikc_ref(cref[0]);
-        (void)dh_sincos_f32(rec[0].q[0], &s1, &c1);
-    } else {
-        const float th = tau * k[P_H], uu = s ? -pw[3] : pw[3];
-        const float X = uu * pw[0] - th * pw[1], Y = th * pw[0] + uu * pw[1];
-        const float inv = 1.0f / dh_sqrt_f32(X * X + Y * Y);
-        rec[0].q[0] = ikc_atan2(Y, X);
-        c1 = X * inv;
-        s1 = Y * inv;
-    }
-    rec[0].q[5] = c1 * pw[0] + s1 * pw[1] - m->a[0]; /* the joint 5 point in frame 1 */
-    rec[1].q[0] = tau * (pw[2] - m->d[0]);
-    {
+    dh_ikc_sol_f32 *rec = sol + ((f & DH_IKC_SHOULDER_ALT) ? 4u : 0u);
+    const float c1 = rec[3].q[1], s1 = rec[3].q[2];
     /* N = R01^T R': first column (n11, n21, n31), third column (n13, n23, n33) */
     const float xx = T06->m[0][0], xy = T06->m[0][1];
     const float zx = k[P_SA6] * T06->m[1][0] + k[P_CA6] * T06->m[2][0];
@@ -233,24 +248,22 @@ static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const dh_mat4_f3
             cp = 1.0f;
         }
         f |= DH_IKC_SING_WRIST;
+        rec[2].flags = IKC_EMPTY;
         rec[3].flags = IKC_EMPTY;
     } else {
         const float s5 = dh_sqrt_f32(s5q);
         const float inv = w5 / s5; /* 1 / (w5 s5) */
         const float n31 = tau * (s1 * xx - c1 * xy);
-        float mx, my;
         cp = n13 * inv;
         sp = n23 * inv;
-        mx = cp * n11 + sp * n21;
-        my = cp * n21 - sp * n11;
-        rec[0].q[1] = ikc_atan2(s5, c5);
-        rec[0].q[2] = ikc_atan2(-w5 * sb * my, c5 * mx + s5 * sb * n31);
-        /* flip: (phi + 180, -t5, t6 + 180) */
-        rec[2].q[0] = rec[0].q[0];
-        rec[2].q[1] = dh_wrap180_f32(-rec[0].q[1]);
-        rec[2].q[2] = dh_wrap180_f32(rec[0].q[2] + 180.0f);
+        /* t6 = atan2(-w5 sb m'y, c5 m'x + s5 sb m'z), m' = Rz(-phi) N e_x;
+         * its two arguments parked in rec[2] until the angles are taken */
+        rec[2].q[1] = -w5 * sb * (cp * n21 - sp * n11);
+        rec[2].q[2] = c5 * (cp * n11 + sp * n21) + s5 * sb * n31;
         rec[2].q[3] = -cp;
         rec[2].q[4] = -sp;
+        rec[3].q[3] = s5; /* t5 = atan2(s5, c5), taken by par234_angles */
+        rec[3].q[4] = c5;
         rec[2].q[5] = rec[0].q[5];
         rec[3].q[0] = rec[1].q[0];
         rec[2].flags = f | DH_IKC_WRIST_ALT;
@@ -260,53 +273,78 @@ static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const dh_mat4_f3
     rec[0].q[4] = sp;
     rec[0].flags = f;
     rec[1].flags = 0u;
-    }
 }
 
-/* Pass 2 for one record (slots rec[0], rec[1]): its elbow solutions, in
- * place. */
-static DH_NOINLINE void par234_arm(const dh_ikc_model_f32 *m, const float *cref, dh_ikc_sol_f32 *rec)
+/* Pass 1c: the angles from their parked arguments (kept out of the
+ * frames above for the stack): t1 unless taken from cref; unless wrist
+ * singular, t5 and t6 and the flip (phi + 180, -t5, t6 + 180) of the
+ * second record. */
+static DH_NOINLINE void par234_angles(dh_ikc_sol_f32 *rec)
+{
+    if (rec[3].q[5] != 0.0f) rec[0].q[0] = ikc_atan2(rec[3].q[2], rec[3].q[1]);
+    if (rec[3].flags == IKC_EMPTY) return;
+    rec[0].q[1] = ikc_atan2(rec[3].q[3], rec[3].q[4]);
+    rec[0].q[2] = ikc_atan2(rec[2].q[1], rec[2].q[2]);
+    rec[2].q[0] = rec[0].q[0];
+    rec[2].q[1] = dh_wrap180_f32(-rec[0].q[1]);
+    rec[2].q[2] = dh_wrap180_f32(rec[0].q[2] + 180.0f);
+}
+
+/* Pass 2a for one record (slots rec[0], rec[1]): the planar point v, the
+ * elbow radicand and phi into scratch rec[1].q[0..5] = phi, vx, vy, A |D|,
+ * K sgn D, sqrt(radicand); t5, t6 moved to rec[0].q[4..5]. Returns the
+ * number of elbow solutions (0: unreachable), flags in rec[0].flags. */
+static DH_NOINLINE uint32_t par234_elbow_prep(const dh_ikc_model_f32 *m, dh_ikc_sol_f32 *rec)
 {
     const float *k = m->k;
-    const float a2 = m->a[1], a3 = m->a[2], D = k[P_D];
-    const float t1 = rec[0].q[0], t5 = rec[0].q[1], t6 = rec[0].q[2], cphi = rec[0].q[3], sphi = rec[0].q[4];
+    const float D = k[P_D], cphi = rec[0].q[3], sphi = rec[0].q[4];
     const float vx = rec[0].q[5] - m->a[3] * cphi - k[P_E5] * sphi;
     const float vy = rec[1].q[0] - m->a[3] * sphi + k[P_E5] * cphi;
     const float v2 = vx * vx + vy * vy;
     const float K = v2 - k[P_A23];
     const float Kd = D < 0.0f ? -K : K;
-    const float Ad = a2 * fabsf(D) + a3 * Kd; /* A |D| */
-    const float phi = ikc_atan2(sphi, cphi);
     /* D^2 - K^2 = ((|a2| + |a3|)^2 - |v|^2) (|v|^2 - (|a2| - |a3|)^2): no
      * cancellation of large terms near the stretched or folded elbow */
-    float rad = (k[P_SUM2] - v2) * (v2 - k[P_DIF2]), r;
-    uint32_t e, ne = 2u, flags = rec[0].flags;
-    rec[1].flags = IKC_EMPTY;
+    float rad = (k[P_SUM2] - v2) * (v2 - k[P_DIF2]);
+    uint32_t ne = 2u;
+    rec[1].q[1] = vx;
+    rec[1].q[2] = vy;
+    rec[1].q[3] = m->a[1] * fabsf(D) + m->a[2] * Kd; /* A |D| */
+    rec[1].q[4] = Kd;
+    rec[0].q[4] = rec[0].q[1];
+    rec[0].q[5] = rec[0].q[2];
     /* merging moves the point by about |rad| / (4 |D| |v|): within the
      * position tolerance tol when rad^2 <= (4 |D| tol)^2 |v|^2 */
     if (rad * rad <= k[P_ELB] * v2) {
         rad = 0.0f;
         ne = 1u;
-        flags |= DH_IKC_SING_ELBOW;
+        rec[0].flags |= DH_IKC_SING_ELBOW;
     } else if (rad < 0.0f) {
-        rec[0].flags = IKC_EMPTY;
-        return;
+        return 0u;
     }
-    r = dh_sqrt_f32(rad);
-    for (e = 0u; e < ne; e++) {
-        const float s3d = e ? -r : r; /* s3 |D| */
-        const float Bd = k[P_S2] * a3 * s3d;
-        const float t3 = ikc_atan2(s3d, Kd);
-        const float y = Ad * vy - Bd * vx, x = Ad * vx + Bd * vy;
-        const float t2 = (x == 0.0f && y == 0.0f) ? ikc_ref(cref[1]) : ikc_atan2(y, x);
-        rec[e].q[0] = t1;
-        rec[e].q[1] = t2;
-        rec[e].q[2] = t3;
-        rec[e].q[3] = dh_wrap180_f32(k[P_S23] * (phi - t2 - k[P_S2] * t3));
-        rec[e].q[4] = t5;
-        rec[e].q[5] = t6;
-        rec[e].flags = flags | (e ? DH_IKC_ELBOW_ALT : 0u);
-    }
+    rec[1].q[5] = dh_sqrt_f32(rad);
+    rec[1].q[0] = ikc_atan2(sphi, cphi);
+    return ne;
+}
+
+/* Pass 2b: elbow solution e of the record prepared by par234_elbow_prep. */
+static DH_NOINLINE void par234_elbow(const dh_ikc_model_f32 *m, const float *cref, uint32_t e, dh_ikc_sol_f32 *rec)
+{
+    const float *k = m->k;
+    const float *w = rec[1].q; /* phi, vx, vy, A |D|, K sgn D, sqrt(radicand) */
+    const float s3d = e ? -w[5] : w[5]; /* s3 |D| */
+    const float Bd = k[P_S2] * m->a[2] * s3d;
+    const float y = w[3] * w[2] - Bd * w[1], x = w[3] * w[1] + Bd * w[2];
+    const float t3 = ikc_atan2(s3d, w[4]);
+    const float t2 = (x == 0.0f && y == 0.0f) ? ikc_ref(cref[1]) : ikc_atan2(y, x);
+    const float t4 = dh_wrap180_f32(k[P_S23] * (w[0] - t2 - k[P_S2] * t3));
+    rec[e].q[0] = rec[0].q[0];
+    rec[e].q[1] = t2;
+    rec[e].q[2] = t3;
+    rec[e].q[3] = t4;
+    rec[e].q[4] = rec[0].q[4];
+    rec[e].q[5] = rec[0].q[5];
+    rec[e].flags = rec[0].flags | (e ? DH_IKC_ELBOW_ALT : 0u);
 }
 
 /* The joint 5 point p05 and u = sqrt(px^2 + py^2 - h^2) into pw (as
@@ -340,12 +378,17 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, c
         sol[5].flags = IKC_EMPTY;
         sol[7].flags = IKC_EMPTY;
     }
-    for (s = 0u; s < ns; s++) par234_wrist(m, T06, cref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
+    for (s = 0u; s < ns; s++) {
+        par234_shoulder(m, cref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
+        par234_wrist(m, T06, cref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
+        par234_angles(sol + 4u * s);
+    }
     for (s = 0u; s < 8u; s += 2u) {
-        if (sol[s + 1u].flags != IKC_EMPTY)
-            par234_arm(m, cref, sol + s);
-        else
-            sol[s].flags = IKC_EMPTY;
+        uint32_t ne = 0u, e;
+        if (sol[s + 1u].flags != IKC_EMPTY) ne = par234_elbow_prep(m, sol + s);
+        if (ne == 0u) sol[s].flags = IKC_EMPTY;
+        sol[s + 1u].flags = IKC_EMPTY;
+        for (e = 0u; e < ne; e++) par234_elbow(m, cref, e, sol + s);
     }
     for (s = 0u; s < 8u; s++) {
         uint32_t i;
