@@ -51,12 +51,16 @@ DH_INLINE float ikc_atan2(float y, float x)
 /* A reference angle (any finite degrees) in (-180, 180]. */
 static float ikc_ref(float x)
 {
-    if (!(fabsf(x) <= 540.0f)) {
-        const float t = x * (1.0f / 360.0f);
-        if (fabsf(t) < 8388608.0f) x -= 360.0f * (float)(int32_t)t;
-        if (!(fabsf(x) <= 540.0f)) x = 0.0f; /* |x| >= 2^23 turns: no fraction left */
+    float v = x;
+    if (!(fabsf(v) <= 540.0f)) {
+        const float t = v * (1.0f / 360.0f);
+        if (fabsf(t) < 8388608.0f) {
+            const int32_t turns = (int32_t)t;
+            v -= 360.0f * (float)turns;
+        }
+        if (!(fabsf(v) <= 540.0f)) v = 0.0f; /* |x| >= 2^23 turns: no fraction left */
     }
-    return dh_wrap180_f32(x);
+    return dh_wrap180_f32(v);
 }
 
 /* Sum of |a_i| and |d_i| of the first n canonical joints (length scale). */
@@ -186,7 +190,7 @@ static DH_NOINLINE void par234_shoulder(const dh_ikc_model_f32 *m, const float *
 {
     const float *k = m->k;
     const float *pw = &sol[1].q[1];
-    dh_ikc_sol_f32 *rec = sol + ((f & DH_IKC_SHOULDER_ALT) ? 4u : 0u);
+    dh_ikc_sol_f32 *rec = &sol[((f & DH_IKC_SHOULDER_ALT) != 0u) ? 4u : 0u];
     float c1, s1;
     if ((f & DH_IKC_SING_SHOULDER) != 0u && pw[4] <= k[P_AXIS]) {
         (void)dh_sincos_f32(ikc_ref(cref[0]), &s1, &c1);
@@ -216,8 +220,9 @@ static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const dh_mat4_f3
 {
     const float *k = m->k;
     const float tau = k[P_TAU], sb = k[P_SB], w5 = k[P_W5];
-    dh_ikc_sol_f32 *rec = sol + ((f & DH_IKC_SHOULDER_ALT) ? 4u : 0u);
+    dh_ikc_sol_f32 *rec = &sol[((f & DH_IKC_SHOULDER_ALT) != 0u) ? 4u : 0u];
     const float c1 = rec[3].q[1], s1 = rec[3].q[2];
+    uint32_t fw = f;
     /* N = R01^T R': first column (n11, n21, n31), third column (n13, n23, n33) */
     const float xx = T06->m[0][0], xy = T06->m[0][1];
     const float zx = k[P_SA6] * T06->m[1][0] + k[P_CA6] * T06->m[2][0];
@@ -247,7 +252,7 @@ static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const dh_mat4_f3
         } else {
             cp = 1.0f;
         }
-        f |= DH_IKC_SING_WRIST;
+        fw |= DH_IKC_SING_WRIST;
         rec[2].flags = IKC_EMPTY;
         rec[3].flags = IKC_EMPTY;
     } else {
@@ -266,12 +271,12 @@ static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const dh_mat4_f3
         rec[3].q[4] = c5;
         rec[2].q[5] = rec[0].q[5];
         rec[3].q[0] = rec[1].q[0];
-        rec[2].flags = f | DH_IKC_WRIST_ALT;
+        rec[2].flags = fw | DH_IKC_WRIST_ALT;
         rec[3].flags = 0u;
     }
     rec[0].q[3] = cp;
     rec[0].q[4] = sp;
-    rec[0].flags = f;
+    rec[0].flags = fw;
     rec[1].flags = 0u;
 }
 
@@ -321,6 +326,8 @@ static DH_NOINLINE uint32_t par234_elbow_prep(const dh_ikc_model_f32 *m, dh_ikc_
         rec[0].flags |= DH_IKC_SING_ELBOW;
     } else if (rad < 0.0f) {
         return 0u;
+    } else {
+        /* two elbow branches */
     }
     rec[1].q[5] = dh_sqrt_f32(rad);
     rec[1].q[0] = ikc_atan2(sphi, cphi);
@@ -371,7 +378,7 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, c
 {
     float *pw = &sol[1].q[1]; /* px, py, pz, u, px^2 + py^2 (slot 1 is free until pass 2) */
     const uint32_t ns = par234_p05(m, T06, pw);
-    const uint32_t fs = (ns == 1u) ? DH_IKC_SING_SHOULDER : 0u;
+    const uint32_t fs = (ns == 1u) ? (uint32_t)DH_IKC_SING_SHOULDER : 0u;
     uint32_t s, cnt = 0u;
     if (ns == 0u) return 0u;
     if (ns == 1u) {
@@ -381,14 +388,14 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, c
     for (s = 0u; s < ns; s++) {
         par234_shoulder(m, cref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
         par234_wrist(m, T06, cref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
-        par234_angles(sol + 4u * s);
+        par234_angles(&sol[4u * s]);
     }
     for (s = 0u; s < 8u; s += 2u) {
         uint32_t ne = 0u, e;
-        if (sol[s + 1u].flags != IKC_EMPTY) ne = par234_elbow_prep(m, sol + s);
+        if (sol[s + 1u].flags != IKC_EMPTY) ne = par234_elbow_prep(m, &sol[s]);
         if (ne == 0u) sol[s].flags = IKC_EMPTY;
         sol[s + 1u].flags = IKC_EMPTY;
-        for (e = 0u; e < ne; e++) par234_elbow(m, cref, e, sol + s);
+        for (e = 0u; e < ne; e++) par234_elbow(m, cref, e, &sol[s]);
     }
     for (s = 0u; s < 8u; s++) {
         uint32_t i;
@@ -449,8 +456,7 @@ int dh_ikc_detect_scara_f32_(dh_ikc_model_f32 *m)
     k[S_S1] = ikc_sign(m->ca[0]);
     k[S_S12] = k[S_S1] * ikc_sign(m->ca[1]);
     k[S_S123] = k[S_S12] * ikc_sign(m->ca[2]);
-    if (!(fabsf(m->off[2]) < 1e6f)) return 0;
-    k[S_G] = dh_wrap180_f32(k[S_S12] * dh_wrap180_f32(m->off[2] - 360.0f * (float)(int32_t)(m->off[2] / 360.0f)));
+    k[S_G] = dh_wrap180_f32(k[S_S12] * ikc_ref(m->off[2]));
     (void)dh_sincos_f32(k[S_G], &sg, &cg);
     bx = m->a[1] + m->a[2] * cg;
     by = m->a[2] * sg;
@@ -495,6 +501,8 @@ uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, co
         flags = DH_IKC_SING_ELBOW;
     } else if (rad < 0.0f) {
         return 0u;
+    } else {
+        /* two elbow branches */
     }
     r = dh_sqrt_f32(rad);
     for (e = 0u; e < ne; e++) {

@@ -396,11 +396,12 @@ DH_INLINE void dh_rot_offdiag_f32(dh_mat3_f32 *R, float xy, float xz, float yz, 
  *  of x's ulp (360 is a multiple of it), so it is representable. */
 DH_INLINE float dh_wrap180_f32(float x)
 {
-    if (x > 180.0f) x -= 360.0f;
-    if (x > 180.0f) x -= 360.0f;
-    if (x <= -180.0f) x += 360.0f;
-    if (x <= -180.0f) x += 360.0f;
-    return x;
+    float v = x;
+    if (v > 180.0f) v -= 360.0f;
+    if (v > 180.0f) v -= 360.0f;
+    if (v <= -180.0f) v += 360.0f;
+    if (v <= -180.0f) v += 360.0f;
+    return v;
 }
 
 #endif /* DHMATH_SRC_DH_INTERNAL_H */
