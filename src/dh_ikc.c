@@ -30,8 +30,6 @@ enum {
     KW_HZERO,      /* 1: |h| <= KW_EPS (wrist centre can reach axis 1) */
     KW_INV45,      /* 1 / (sin alpha4 sin alpha5) */
     KW_INVSA5,     /* 1 / sin alpha5 */
-    KW_ORTHO,      /* 1: cos alpha4 = cos alpha5 = 0 (flip shortcut) */
-    KW_CC45,       /* cos alpha4 cos alpha5 */
     /* RRR */
     KW_PHI,        /* atan2(e, a3) in degrees, e = sin(alpha3) d4 */
     KW_A2RHO,      /* a2^2 + a3^2 + e^2 */
@@ -60,11 +58,13 @@ typedef char dh_ikc_k_fits_[(KW_COUNT <= (int)DH_IKC_K) ? 1 : -1];
 
 /* ---- small helpers --------------------------------------------------------- */
 
-/* atan2 in degrees, fallback when both arguments are zero (free angle). */
-static float ikc_atan2(float y, float x, float fallback)
+/* atan2 in degrees, fallback when both arguments are zero (free angle).
+ * The radian atan2 (<= 2 ulp) scaled: a third of the stack of the degree
+ * version (dh_atan2f_deg_), which no solver frame could afford on top. */
+DH_INLINE float ikc_atan2(float y, float x, float fallback)
 {
     if (y == 0.0f && x == 0.0f) return fallback;
-    return dh_atan2f_deg_(y, x, 0.0f);
+    return dh_atan2f_(y, x) * DH_RAD2DEG_F;
 }
 
 /* x reduced into (-180, 180] (|x| < 540). */
@@ -94,12 +94,13 @@ static int ikc_spherical(const dh_ikc_model_f32 *m)
 
 /* ---- analysis -------------------------------------------------------------- */
 
-/* Canonical chain of r into m (a, d, sa, ca, off, limits, prismatic) and
- * the frame before it into *pre. */
-static DH_NOINLINE void ikc_canonical(const dh_robot *r, dh_ikc_model_f32 *m, dh_mat4_f32 *pre)
+/* Canonical chain of r into m (a, d, sa, ca, off, limits, prismatic);
+ * the frame before it into m->pre_inv (inverted by the caller). */
+static DH_NOINLINE void ikc_canonical(const dh_robot *r, dh_ikc_model_f32 *m)
 {
     uint32_t i, n = r->n;
     const int mdh = (r->conv == DH_CONV_MODIFIED);
+    dh_mat4_f32 *P = &m->pre_inv;
     for (i = 0; i < n; i++) {
         const dh_joint *j = &r->joint[i];
         m->d[i] = j->d;
@@ -121,29 +122,40 @@ static DH_NOINLINE void ikc_canonical(const dh_robot *r, dh_ikc_model_f32 *m, dh
             m->ca[i] = 1.0f;
         }
     }
-    *pre = r->base;
+    *P = r->base;
     if (mdh) {
-        /* base * Rx(alpha_0) Tx(a_0) */
-        dh_mat4_f32 X;
-        const dh_joint *j = &r->joint[0];
-        dh_mat4_identity_f32(&X);
-        X.m[1][1] = j->ca;
-        X.m[1][2] = j->sa;
-        X.m[2][1] = -j->sa;
-        X.m[2][2] = j->ca;
-        X.m[3][0] = j->a;
-        dh_mat4_postmul_f32(pre, &X);
+        /* base * Rx(alpha_0) Tx(a_0), column by column */
+        const float sa = r->joint[0].sa, ca = r->joint[0].ca, a0 = r->joint[0].a;
+        for (i = 0; i < 3u; i++) {
+            const float b0 = r->base.m[0][i], b1 = r->base.m[1][i], b2 = r->base.m[2][i];
+            P->m[1][i] = ca * b1 + sa * b2;
+            P->m[2][i] = ca * b2 - sa * b1;
+            P->m[3][i] = a0 * b0 + r->base.m[3][i];
+        }
     }
 }
 
-/* Inverse of a frame (identity kept exact). */
-static dh_status ikc_inverse(const dh_mat4_f32 *F, dh_mat4_f32 *out)
+/* A float frame with bottom row 0 0 0 1 and a rotation within
+ * DH_ROT_ERROR_TOL (det > 0), every entry finite. */
+static int ikc_rigid(const dh_mat4_f32 *F)
 {
-    if (ikc_is_identity(F)) {
-        dh_mat4_identity_f32(out);
-        return DH_OK;
-    }
-    return dh_mat4_inv_f32(F, out);
+    return dh_allfinite_f32(&F->m[0][0], 16u) && F->m[0][3] == 0.0f && F->m[1][3] == 0.0f &&
+           F->m[2][3] == 0.0f && F->m[3][3] == 1.0f &&
+           dh_rot_cols_ok_f32(F->m[0], F->m[1], F->m[2], DH_ROT_ERROR_TOL);
+}
+
+/* F <- F^-1 for a rigid F (Paul 1981 eq. 1.57: R^T, -R^T p); an exact
+ * identity stays exact. The base and tool are rotations to the float
+ * rounding in practice; one off orthonormal by e moves the solutions by
+ * about e. */
+static void ikc_inv_rigid(dh_mat4_f32 *F)
+{
+    float p0 = F->m[3][0], p1 = F->m[3][1], p2 = F->m[3][2], t;
+    uint32_t i;
+    t = F->m[0][1]; F->m[0][1] = F->m[1][0]; F->m[1][0] = t;
+    t = F->m[0][2]; F->m[0][2] = F->m[2][0]; F->m[2][0] = t;
+    t = F->m[1][2]; F->m[1][2] = F->m[2][1]; F->m[2][1] = t;
+    for (i = 0; i < 3u; i++) F->m[3][i] = 0.0f - (F->m[0][i] * p0 + F->m[1][i] * p1 + F->m[2][i] * p2);
 }
 
 /* Why the canonical chain of m has no closed form (every detector said no). */
@@ -164,27 +176,27 @@ static dh_status ikc_none(dh_ikc_model_f32 *m, dh_ikc_why why, dh_status st)
 
 dh_status dh_ikc_analyse_f32(const dh_robot *r, dh_ikc_model_f32 *m)
 {
-    dh_mat4_f32 pre;
     uint32_t i;
     DH_ASSERT(r != NULL);
     DH_ASSERT(m != NULL);
     memset(m, 0, sizeof *m);
-    dh_mat4_identity_f32(&m->pre_inv);
-    dh_mat4_identity_f32(&m->post_inv);
+    for (i = 0; i < 4u; i++) {
+        m->pre_inv.m[i][i] = 1.0f;
+        m->post_inv.m[i][i] = 1.0f;
+    }
     if (r->n > (uint32_t)DH_MAX_JOINTS || (r->conv != DH_CONV_STANDARD && r->conv != DH_CONV_MODIFIED))
         return ikc_none(m, DH_IKC_WHY_JOINTS, DH_ERR_ARG);
     for (i = 0; i < r->n; i++)
         if (r->joint[i].type != DH_JOINT_REVOLUTE && r->joint[i].type != DH_JOINT_PRISMATIC)
             return ikc_none(m, DH_IKC_WHY_JOINTS, DH_ERR_ARG);
     if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return ikc_none(m, DH_IKC_WHY_PATH, DH_ERR_UNAVAILABLE);
-    if (dh_mat4_check_rigid_f32(&r->base, DH_ROT_ERROR_TOL) != DH_OK ||
-        dh_mat4_check_rigid_f32(&r->tool, DH_ROT_ERROR_TOL) != DH_OK)
-        return ikc_none(m, DH_IKC_WHY_PATH, DH_ERR_NOT_RIGID);
+    if (!ikc_rigid(&r->base) || !ikc_rigid(&r->tool)) return ikc_none(m, DH_IKC_WHY_PATH, DH_ERR_NOT_RIGID);
     if (r->n == 0u || r->n > DH_IKC_JOINTS) return ikc_none(m, DH_IKC_WHY_JOINTS, DH_ERR_UNAVAILABLE);
     m->n = r->n;
-    ikc_canonical(r, m, &pre);
-    if (ikc_inverse(&pre, &m->pre_inv) != DH_OK || ikc_inverse(&r->tool, &m->post_inv) != DH_OK)
-        return ikc_none(m, DH_IKC_WHY_PATH, DH_ERR_NOT_RIGID);
+    ikc_canonical(r, m);
+    ikc_inv_rigid(&m->pre_inv);
+    m->post_inv = r->tool;
+    ikc_inv_rigid(&m->post_inv);
     if (dh_ikc_detect_wrist_f32_(m)) {
         m->why = DH_IKC_WHY_NONE;
         return DH_OK;
@@ -208,7 +220,7 @@ const char *dh_ikc_why_str(dh_ikc_why why)
     case DH_IKC_WHY_NONE: return "the robot has a closed-form solution";
     case DH_IKC_WHY_JOINTS: return "the joint count or types match no closed-form family";
     case DH_IKC_WHY_WRIST: return "the last three axes do not meet in one point and axes 2, 3, 4 are not parallel";
-    case DH_IKC_WHY_AXES: return "the wrist is spherical but the arm axes match no closed-form family";
+    case DH_IKC_WHY_AXES: return "the wrist axes meet in one point but the arm (or a non-orthogonal wrist) matches no closed-form family";
     case DH_IKC_WHY_PATH: return "the robot's path is not prepared or its base or tool is not rigid";
     default: return "unknown reason";
     }
@@ -264,7 +276,7 @@ static int ikc_shift(float *v, float lo, float hi, float ref)
 }
 
 /* Raw canonical solution -> joint values; 1 when within the limits. */
-static int ikc_to_joints(const dh_ikc_model_f32 *m, const float *q_ref, float *q)
+static DH_NOINLINE int ikc_to_joints(const dh_ikc_model_f32 *m, const float *q_ref, float *q)
 {
     uint32_t i;
     int in = 1;
@@ -291,8 +303,6 @@ static int ikc_to_joints(const dh_ikc_model_f32 *m, const float *q_ref, float *q
 dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const float *q_ref, uint32_t opts,
                      dh_ikc_sol_f32 *sol, uint32_t *n_sol)
 {
-    dh_mat4_f32 T06;
-    float cref[DH_IKC_JOINTS];
     uint32_t raw = 0, i, j, out = 0;
     dh_status st;
     DH_ASSERT(m != NULL);
@@ -302,19 +312,11 @@ dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const
     *n_sol = 0;
     st = ikc_args(m, target, q_ref, opts);
     if (st != DH_OK) return st;
-    for (i = 0; i < DH_IKC_JOINTS; i++) {
-        float v = (q_ref != NULL && i < m->n) ? q_ref[i] : 0.0f;
-        if (i < m->n) v += ((m->prismatic >> i) & 1u) ? m->d[i] : m->off[i];
-        cref[i] = v;
-    }
-    T06 = *target;
-    if (!ikc_is_identity(&m->pre_inv)) dh_mat4_premul_f32(&T06, &m->pre_inv);
-    if (!ikc_is_identity(&m->post_inv)) dh_mat4_postmul_f32(&T06, &m->post_inv);
     switch (m->kind) {
     case DH_IKC_WRIST_RRR:
-    case DH_IKC_WRIST_RRP: raw = dh_ikc_wrist_f32_(m, &T06, cref, sol); break;
-    case DH_IKC_PARALLEL_234: raw = dh_ikc_par234_f32_(m, &T06, cref, sol); break;
-    default: raw = dh_ikc_scara_f32_(m, &T06, cref, sol); break;
+    case DH_IKC_WRIST_RRP: raw = dh_ikc_wrist_f32_(m, target, q_ref, sol); break;
+    case DH_IKC_PARALLEL_234: raw = dh_ikc_par234_f32_(m, target, q_ref, sol); break;
+    default: raw = dh_ikc_scara_f32_(m, target, q_ref, sol); break;
     }
     if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;
     if (raw == 0u) return DH_ERR_UNREACHABLE;
@@ -356,13 +358,37 @@ dh_status dh_ikc_nearest_f32(const dh_ikc_sol_f32 *sol, uint32_t n_sol, const fl
     return DH_OK;
 }
 
+float dh_ikc_cref_f32_(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i)
+{
+    const float v = (q_ref != NULL) ? q_ref[i] : 0.0f;
+    return v + (((m->prismatic >> i) & 1u) ? m->d[i] : m->off[i]);
+}
+
+/* out = A (x, w) for w = 1 (point) or 0 (direction); out may alias x. */
+static void ikc_xform(const dh_mat4_f32 *A, const float *x, float w, float *out)
+{
+    const float x0 = x[0], x1 = x[1], x2 = x[2];
+    uint32_t i;
+    for (i = 0; i < 3u; i++) out[i] = A->m[0][i] * x0 + A->m[1][i] * x1 + A->m[2][i] * x2 + A->m[3][i] * w;
+}
+
+void dh_ikc_t06_vec_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *v, float w, float *out)
+{
+    out[0] = v[0];
+    out[1] = v[1];
+    out[2] = v[2];
+    if (!ikc_is_identity(&m->post_inv)) ikc_xform(&m->post_inv, out, w, out);
+    ikc_xform(T, out, w, out);
+    if (!ikc_is_identity(&m->pre_inv)) ikc_xform(&m->pre_inv, out, w, out);
+}
+
 /* ---- spherical-wrist families ------------------------------------------------- */
 
 int dh_ikc_detect_wrist_f32_(dh_ikc_model_f32 *m)
 {
     float *k = m->k, L = 0.0f;
     uint32_t i;
-    if (!ikc_spherical(m) || m->ca[0] != 0.0f) return 0;
+    if (!ikc_spherical(m) || m->ca[3] != 0.0f || m->ca[4] != 0.0f || m->ca[0] != 0.0f) return 0;
     for (i = 0; i < 6u; i++) {
         L += fabsf(m->a[i]) + fabsf(m->d[i]);
         if (((m->prismatic >> i) & 1u) && m->qmin[i] <= m->qmax[i])
@@ -371,8 +397,6 @@ int dh_ikc_detect_wrist_f32_(dh_ikc_model_f32 *m)
     k[KW_EPS] = IKC_EPS_L * ((L > 0.0f) ? L : 1.0f);
     k[KW_INV45] = 1.0f / (m->sa[3] * m->sa[4]);
     k[KW_INVSA5] = 1.0f / m->sa[4];
-    k[KW_ORTHO] = (m->ca[3] == 0.0f && m->ca[4] == 0.0f) ? 1.0f : 0.0f;
-    k[KW_CC45] = m->ca[3] * m->ca[4];
     if (m->prismatic == 0u) {
         const float e = m->sa[2] * m->d[3], a2 = m->a[1], a3 = m->a[2];
         const float rho = dh_sqrt_f32(a3 * a3 + e * e);
@@ -406,118 +430,140 @@ int dh_ikc_detect_wrist_f32_(dh_ikc_model_f32 *m)
     return 1;
 }
 
-/* R <- R Rz(theta) Rx(alpha), R a 3x3 column-major (c, s of theta). */
-static void ikc_rzrx(float *R, float c, float s, float sa, float ca)
+/* v <- Rx(alpha)^T Rz(theta)^T v for the two 3-vectors at a and b (c, s
+ * of theta). */
+static void ikc_rzrx_t(float *a, float *b, float c, float s, float sa, float ca)
 {
-    uint32_t r;
-    for (r = 0; r < 3u; r++) {
-        const float x = R[r], y = R[3u + r], z = R[6u + r];
-        const float y1 = -s * x + c * y;
-        R[r] = c * x + s * y;
-        R[3u + r] = ca * y1 + sa * z;
-        R[6u + r] = -sa * y1 + ca * z;
+    uint32_t k;
+    for (k = 0; k < 2u; k++) {
+        float *v = (k == 0u) ? a : b;
+        const float x = c * v[0] + s * v[1], y = c * v[1] - s * v[0], z = v[2];
+        v[0] = x;
+        v[1] = ca * y + sa * z;
+        v[2] = ca * z - sa * y;
     }
 }
 
-/* Wrist of one arm solution: sol[0] holds the arm values (and its flags);
- * writes the wrist values into sol[0] and, unless singular, the second
- * wrist branch into sol[1]. Returns 1 or 2. R6 = R06 Rx(alpha6)^T
- * (column-major, 9 floats). */
-static DH_NOINLINE uint32_t ikc_wrist(const dh_ikc_model_f32 *m, const float *R6, const float *cref,
-                                      dh_ikc_sol_f32 *sol)
+/* Layout of sol while the wrist families solve (the caller's array is the
+ * scratch, so that no frame below the atan2 calls holds vectors):
+ * sol[7].q[3..5] = R06 e_x, sol[6].q[3..5] = R06 Rx(alpha6)^T e_z (the
+ * columns M is made of), sol[5].q[3..5] = the wrist centre; arm solutions
+ * use q[0..2] and flags only. */
+#define IKC_RN(sol) (&(sol)[7].q[3])
+#define IKC_RA(sol) (&(sol)[6].q[3])
+#define IKC_P(sol) (&(sol)[5].q[3])
+#define IKC_GAP 0xFFFFFFFFu
+
+/* Wrist, phase A, for the arm solution in *arm: the arm values and flags
+ * into out[0]; M's third and first columns (R03^T of R06's two columns)
+ * into out[0].q[3..5] and out[1].q[3..5] (for the last arm these are
+ * where R06's columns are, so they are read in place). Wrist singular
+ * (axis 6 in frame 3 on the z axis, joint 4's axis): flagged, and joint 4
+ * from q_ref with its sine and cosine into out[1].q[2], q[0], q[1]. */
+static DH_NOINLINE void ikc_wrist_a(const dh_ikc_model_f32 *m, const float *q_ref, const dh_ikc_sol_f32 *arm,
+                                    dh_ikc_sol_f32 *out, const float *rn, const float *ra)
 {
     const float *k = m->k;
-    float R[9], mz[3], mx[3], c5, s5, s4, c4, c, s, xp, yp, n11, n21, t4, t5, t6;
-    uint32_t i, j;
-    for (i = 0; i < 9u; i++) R[i] = (i % 4u == 0u) ? 1.0f : 0.0f;
-    (void)dh_sincos_f32(sol->q[0], &s, &c);
-    ikc_rzrx(R, c, s, m->sa[0], m->ca[0]);
-    if (m->kind == DH_IKC_WRIST_RRR) {
-        (void)dh_sincos_f32(sol->q[1] + k[KW_SIGMA] * sol->q[2], &s, &c);
-        ikc_rzrx(R, c, s, k[KW_SA23], k[KW_CA23]);
-    } else {
-        (void)dh_sincos_f32(sol->q[1], &s, &c);
-        ikc_rzrx(R, c, s, m->sa[1], m->ca[1]);
-        ikc_rzrx(R, k[KW_C3], k[KW_S3], m->sa[2], m->ca[2]);
-    }
-    /* M = R03^T R6: its third and first columns */
+    const float t1 = arm->q[0], t2 = arm->q[1], t3 = arm->q[2];
+    float *mz = &out[0].q[3], *mx = &out[1].q[3];
+    float c, s;
+    uint32_t i;
+    out[0].flags = arm->flags;
     for (i = 0; i < 3u; i++) {
-        mz[i] = R[3u * i] * R6[6] + R[3u * i + 1u] * R6[7] + R[3u * i + 2u] * R6[8];
-        mx[i] = R[3u * i] * R6[0] + R[3u * i + 1u] * R6[1] + R[3u * i + 2u] * R6[2];
+        mx[i] = rn[i];
+        mz[i] = ra[i];
     }
-    c5 = (k[KW_CC45] - mz[2]) * k[KW_INV45];
+    out[0].q[0] = t1;
+    out[0].q[1] = t2;
+    out[0].q[2] = t3;
+    (void)dh_sincos_f32(t1, &s, &c);
+    ikc_rzrx_t(mz, mx, c, s, m->sa[0], m->ca[0]);
+    if (m->kind == DH_IKC_WRIST_RRR) {
+        (void)dh_sincos_f32(t2 + k[KW_SIGMA] * t3, &s, &c);
+        ikc_rzrx_t(mz, mx, c, s, k[KW_SA23], k[KW_CA23]);
+    } else {
+        (void)dh_sincos_f32(t2, &s, &c);
+        ikc_rzrx_t(mz, mx, c, s, m->sa[1], m->ca[1]);
+        ikc_rzrx_t(mz, mx, k[KW_C3], k[KW_S3], m->sa[2], m->ca[2]);
+    }
+    if (mz[0] * mz[0] + mz[1] * mz[1] < IKC_SING_WRIST * IKC_SING_WRIST) {
+        out[0].flags |= DH_IKC_SING_WRIST;
+        c = dh_ikc_cref_f32_(m, q_ref, 3u);
+        out[1].q[2] = c;
+        (void)dh_sincos_f32(c, &out[1].q[0], &out[1].q[1]);
+    }
+}
+
+/* Wrist, phase B (orthogonal wrist): from M's columns the atan2 arguments
+ * of theta4 (y, x into out[0].q[3], q[4]), theta5 (out[0].q[5],
+ * out[1].q[3]) and theta6 (out[1].q[4], q[5]). theta4 rotates (X', Y') =
+ * (sin a5 s5, 0) onto (m13, m23); theta6 from M e_x rotated back by theta4
+ * against the first two columns of Rx(a4) Rz(t5) Rx(a5) (consistency). */
+static DH_NOINLINE void ikc_wrist_b(const dh_ikc_model_f32 *m, dh_ikc_sol_f32 *out)
+{
+    const float *k = m->k;
+    const float m0 = out[0].q[3], m1 = out[0].q[4], m2 = out[0].q[5];
+    const float sa4 = m->sa[3], sa5 = m->sa[4];
+    float c5 = -m2 * k[KW_INV45], s5, c4, s4, mpx, mpy, mpz;
     if (c5 > 1.0f) c5 = 1.0f;
     if (c5 < -1.0f) c5 = -1.0f;
-    /* axes 4 and 6 aligned when M e_z (axis 6 in frame 3) is on the z axis */
-    s = dh_sqrt_f32(mz[0] * mz[0] + mz[1] * mz[1]);
-    if (k[KW_ORTHO] != 0.0f)
-        s5 = s;
-    else
-        s5 = dh_sqrt_f32(1.0f - c5 * c5);
-    if (s < IKC_SING_WRIST) {
-        /* axes 4 and 6 aligned: joint 4 from q_ref */
-        t4 = cref[3];
-        (void)dh_sincos_f32(t4, &s4, &c4);
-        s5 = (c4 * mz[0] + s4 * mz[1]) * k[KW_INVSA5];
-        sol->flags |= DH_IKC_SING_WRIST;
+    if ((out[0].flags & DH_IKC_SING_WRIST) != 0u) {
+        s4 = out[1].q[0];
+        c4 = out[1].q[1];
+        s5 = (c4 * m0 + s4 * m1) * k[KW_INVSA5];
     } else {
-        xp = m->sa[4] * s5;
-        yp = -(m->ca[3] * m->sa[4] * c5 + m->sa[3] * m->ca[4]);
-        c4 = xp * mz[0] + yp * mz[1];
-        s4 = xp * mz[1] - yp * mz[0];
-        t4 = dh_atan2f_deg_(s4, c4, 0.0f);
-        c = 1.0f / dh_sqrt_f32(c4 * c4 + s4 * s4);
-        c4 *= c;
-        s4 *= c;
+        float r;
+        s5 = dh_sqrt_f32(m0 * m0 + m1 * m1);
+        /* (c4, s4) proportional to (X' m13, X' m23), X' = sin a5 s5 */
+        c4 = sa5 * m0;
+        s4 = sa5 * m1;
+        r = 1.0f / dh_sqrt_f32(c4 * c4 + s4 * s4);
+        c4 *= r;
+        s4 *= r;
     }
-    t5 = ikc_atan2(s5, c5, 0.0f);
-    {
-        const float mpx = c4 * mx[0] + s4 * mx[1], mpy = -s4 * mx[0] + c4 * mx[1], mpz = mx[2];
-        const float sa4 = m->sa[3], ca4 = m->ca[3], ca5 = m->ca[4], sa5 = m->sa[4];
-        n11 = c5 * mpx + ca4 * s5 * mpy + sa4 * s5 * mpz;
-        n21 = -s5 * ca5 * mpx + (ca4 * c5 * ca5 - sa4 * sa5) * mpy + (sa4 * c5 * ca5 + ca4 * sa5) * mpz;
-    }
-    t6 = ikc_atan2(n21, n11, 0.0f);
-    sol->q[3] = ikc_wrap(t4);
-    sol->q[4] = t5;
-    sol->q[5] = t6;
-    if ((sol->flags & DH_IKC_SING_WRIST) != 0u) return 1u;
-    for (j = 0; j < 3u; j++) sol[1].q[j] = sol->q[j];
-    sol[1].flags = sol->flags | DH_IKC_WRIST_ALT;
-    if (k[KW_ORTHO] != 0.0f) {
-        sol[1].q[3] = ikc_wrap(t4 + 180.0f);
-        sol[1].q[4] = ikc_wrap(-t5);
-        sol[1].q[5] = ikc_wrap(t6 + 180.0f);
-        return 2u;
-    }
-    /* general wrist: the other sign of sin theta5 */
-    s5 = -s5;
-    xp = m->sa[4] * s5;
-    yp = -(m->ca[3] * m->sa[4] * c5 + m->sa[3] * m->ca[4]);
-    c4 = xp * mz[0] + yp * mz[1];
-    s4 = xp * mz[1] - yp * mz[0];
-    sol[1].q[3] = dh_atan2f_deg_(s4, c4, 0.0f);
-    c = 1.0f / dh_sqrt_f32(c4 * c4 + s4 * s4);
-    c4 *= c;
-    s4 *= c;
-    sol[1].q[4] = ikc_atan2(s5, c5, 0.0f);
-    {
-        const float mpx = c4 * mx[0] + s4 * mx[1], mpy = -s4 * mx[0] + c4 * mx[1], mpz = mx[2];
-        const float sa4 = m->sa[3], ca4 = m->ca[3], ca5 = m->ca[4], sa5 = m->sa[4];
-        n11 = c5 * mpx + ca4 * s5 * mpy + sa4 * s5 * mpz;
-        n21 = -s5 * ca5 * mpx + (ca4 * c5 * ca5 - sa4 * sa5) * mpy + (sa4 * c5 * ca5 + ca4 * sa5) * mpz;
-    }
-    sol[1].q[5] = ikc_atan2(n21, n11, 0.0f);
-    return 2u;
+    mpx = c4 * out[1].q[3] + s4 * out[1].q[4];
+    mpy = c4 * out[1].q[4] - s4 * out[1].q[3];
+    mpz = out[1].q[5];
+    out[0].q[3] = s4;
+    out[0].q[4] = c4;
+    out[0].q[5] = s5;
+    out[1].q[3] = c5;
+    /* N21, N11 with cos a4 = cos a5 = 0 */
+    out[1].q[4] = -sa4 * sa5 * mpy;
+    out[1].q[5] = c5 * mpx + sa4 * s5 * mpz;
 }
 
-/* Joints 2, 3 of the RRR arm for one shoulder branch: (vx, vy) the wrist
- * centre in the plane of the arm; writes sol[0] and maybe sol[1] (q[0]
- * and flags preset in sol[0]). Returns 0, 1 or 2. */
-static uint32_t ikc_elbow_rrr(const dh_ikc_model_f32 *m, float vx, float vy, const float *cref,
-                              dh_ikc_sol_f32 *sol)
+/* Wrist, phase C: the angles, and the flipped solution (t4 + 180, -t5,
+ * t6 + 180) into out[1] unless singular. */
+static DH_NOINLINE void ikc_wrist_c(dh_ikc_sol_f32 *out)
+{
+    const int sing = (out[0].flags & DH_IKC_SING_WRIST) != 0u;
+    const float t4 = sing ? out[1].q[2] : ikc_atan2(out[0].q[3], out[0].q[4], 0.0f);
+    const float t5 = ikc_atan2(out[0].q[5], out[1].q[3], 0.0f);
+    const float t6 = ikc_atan2(out[1].q[4], out[1].q[5], 0.0f);
+    out[0].q[3] = ikc_wrap(t4);
+    out[0].q[4] = t5;
+    out[0].q[5] = t6;
+    if (sing) {
+        out[1].flags = IKC_GAP;
+        return;
+    }
+    out[1].q[0] = out[0].q[0];
+    out[1].q[1] = out[0].q[1];
+    out[1].q[2] = out[0].q[2];
+    out[1].q[3] = ikc_wrap(t4 + 180.0f);
+    out[1].q[4] = ikc_wrap(-t5);
+    out[1].q[5] = ikc_wrap(t6 + 180.0f);
+    out[1].flags = out[0].flags | DH_IKC_WRIST_ALT;
+}
+
+/* Joints 2, 3 of the RRR arm for one shoulder branch: sol[0] holds theta1,
+ * (vx, vy) (the wrist centre in the plane of the arm) in q[0..2] and the
+ * flags; writes sol[0] and maybe sol[1] (q[0..2], flags). Returns 0, 1, 2. */
+static DH_NOINLINE uint32_t ikc_elbow_rrr(const dh_ikc_model_f32 *m, float cref2, dh_ikc_sol_f32 *sol)
 {
     const float *k = m->k;
+    const float vx = sol->q[1], vy = sol->q[2];
     const float v2 = vx * vx + vy * vy, v = dh_sqrt_f32(v2), D = k[KW_D], Kp = v2 - k[KW_A2RHO];
     const float aD = fabsf(D), KD = (D < 0.0f) ? -Kp : Kp;
     /* dK = |D| - |K'| from |v| (no cancellation of the squares against the
@@ -527,124 +573,166 @@ static uint32_t ikc_elbow_rrr(const dh_ikc_model_f32 *m, float vx, float vy, con
     const float dK = (KD >= 0.0f) ? (k[KW_CPLUS] - v) * (k[KW_CPLUS] + v) : (v - k[KW_CMINUS]) * (v + k[KW_CMINUS]);
     const float tol = 2.0f * k[KW_EPS] * v;
     const float A = m->a[1] + Kp * k[KW_INV2A2];
-    float sq, psi, B;
+    float sq = 0.0f, psi, B;
     uint32_t b, nb = 2u;
     if (dK < -tol) return 0u;
     if (dK <= tol) {
         nb = 1u;
-        sq = 0.0f;
         sol->flags |= DH_IKC_SING_ELBOW;
     } else {
         /* D^2 - K'^2 = dK (|D| + |K'|) */
         sq = dh_sqrt_f32(dK * (2.0f * aD - dK));
     }
-    psi = dh_atan2f_deg_(sq, KD, 0.0f);
-    for (b = 0; b < nb; b++) {
+    psi = ikc_atan2(sq, KD, 0.0f);
+    for (b = nb; b-- > 0u;) {
         const float sg = (b == 0u) ? 1.0f : -1.0f;
         if (b == 1u) {
             sol[1].q[0] = sol[0].q[0];
             sol[1].flags = sol[0].flags | DH_IKC_ELBOW_ALT;
         }
-        /* a3 s3 - e c3 = rho sin(theta3 - phi) = +-sqrt(r3) / (2 |a2|) */
+        /* a3 s3 - e c3 = rho sin(theta3 - phi) = +-sqrt(D^2 - K'^2) / (2 |a2|) */
         B = k[KW_SIGMA] * sg * sq * fabsf(k[KW_INV2A2]);
         sol[b].q[2] = ikc_wrap(k[KW_PHI] + sg * psi);
-        sol[b].q[1] = ikc_atan2(A * vy - B * vx, A * vx + B * vy, cref[1]);
+        sol[b].q[1] = ikc_atan2(A * vy - B * vx, A * vx + B * vy, cref2);
     }
     return nb;
 }
 
 /* Joints 2, 3 of the RRP arm (the prismatic extension z3 = +-sqrt(.)). */
-static uint32_t ikc_elbow_rrp(const dh_ikc_model_f32 *m, float vx, float vy, const float *cref,
-                              dh_ikc_sol_f32 *sol)
+static DH_NOINLINE uint32_t ikc_elbow_rrp(const dh_ikc_model_f32 *m, float cref2, dh_ikc_sol_f32 *sol)
 {
     const float *k = m->k;
+    const float vx = sol->q[1], vy = sol->q[2];
     const float W = k[KW_W], eps = k[KW_EPS], tau2 = m->sa[1];
     const float v = dh_sqrt_f32(vx * vx + vy * vy), r = (v - fabsf(W)) * (v + fabsf(W));
     const float tol = eps * (2.0f * fabsf(W) + eps);
-    float z;
+    float z = 0.0f;
     uint32_t b, nb = 2u;
     if (r < -tol) return 0u;
     if (r <= tol) {
         nb = 1u;
-        z = 0.0f;
         sol->flags |= DH_IKC_SING_ELBOW;
     } else {
         z = dh_sqrt_f32(r);
     }
-    for (b = 0; b < nb; b++) {
+    for (b = nb; b-- > 0u;) {
         const float zb = (b == 0u) ? z : -z;
         if (b == 1u) {
             sol[1].q[0] = sol[0].q[0];
             sol[1].flags = sol[0].flags | DH_IKC_ELBOW_ALT;
         }
-        sol[b].q[1] = ikc_atan2(tau2 * zb * vx + W * vy, W * vx - tau2 * zb * vy, cref[1]);
+        sol[b].q[1] = ikc_atan2(tau2 * zb * vx + W * vy, W * vx - tau2 * zb * vy, cref2);
         sol[b].q[2] = zb - k[KW_Z3C];
     }
     return nb;
 }
 
-uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
-                           dh_ikc_sol_f32 *sol)
+/* Shoulder: u = +-sqrt(px^2 + py^2 - h^2) of the wrist centre p (read
+ * from IKC_P), theta1; per branch sol[b] gets theta1, vx, vy and its
+ * flags. Returns the number of branches (0, 1 or 2). */
+static DH_NOINLINE uint32_t ikc_shoulder(const dh_ikc_model_f32 *m, float cref1, dh_ikc_sol_f32 *sol)
 {
-    const float *k = m->k;
-    const float sa6 = m->sa[5], ca6 = m->ca[5], a6 = m->a[5], d6 = m->d[5];
+    const float *k = m->k, *p = IKC_P(sol);
     const float h = k[KW_H], eps = k[KW_EPS], tau = m->sa[0];
-    float R6[9], px, py, pz, rad, tol, u;
-    uint32_t i, na = 0, nu = 2u, b, cnt = 0, out;
-    /* R6 = R06 Rx(alpha6)^T; wrist centre o5 = p - a6 n - d6 R6 e_z */
-    for (i = 0; i < 3u; i++) {
-        R6[i] = T06->m[0][i];
-        R6[3u + i] = ca6 * T06->m[1][i] - sa6 * T06->m[2][i];
-        R6[6u + i] = sa6 * T06->m[1][i] + ca6 * T06->m[2][i];
-    }
-    px = T06->m[3][0] - a6 * R6[0] - d6 * R6[6];
-    py = T06->m[3][1] - a6 * R6[1] - d6 * R6[7];
-    pz = T06->m[3][2] - a6 * R6[2] - d6 * R6[8];
-    /* shoulder: u = +-sqrt(px^2 + py^2 - h^2) */
+    const float px = p[0], py = p[1], pz = p[2];
+    float rad, tol, u = 0.0f;
+    uint32_t b, nu = 2u;
     rad = dh_sqrt_f32(px * px + py * py);
     rad = (rad - fabsf(h)) * (rad + fabsf(h));
     tol = eps * (2.0f * fabsf(h) + eps);
     if (rad < -tol) return 0u;
-    if (rad <= tol) {
+    if (rad <= tol)
         nu = 1u;
-        u = 0.0f;
-    } else {
+    else
         u = dh_sqrt_f32(rad);
-    }
-    /* arm solutions in sol[0..3] */
     for (b = 0; b < nu; b++) {
         const float ub = (b == 0u) ? u : -u;
-        float vx, vy;
-        dh_ikc_sol_f32 *s = &sol[na];
+        dh_ikc_sol_f32 *s = &sol[b];
         s->flags = (b == 0u) ? 0u : DH_IKC_SHOULDER_ALT;
         if (nu == 1u && k[KW_HZERO] != 0.0f) {
             /* wrist centre on axis 1: joint 1 from q_ref */
-            s->q[0] = cref[0];
+            s->q[0] = cref1;
             s->flags |= DH_IKC_SING_SHOULDER;
         } else {
-            s->q[0] = ikc_atan2(tau * h * px + ub * py, ub * px - tau * h * py, cref[0]);
+            s->q[0] = ikc_atan2(tau * h * px + ub * py, ub * px - tau * h * py, cref1);
         }
-        vx = ub - m->a[0];
-        vy = tau * (pz - m->d[0]);
-        if (m->kind == DH_IKC_WRIST_RRR)
-            na += ikc_elbow_rrr(m, vx, vy, cref, s);
-        else
-            na += ikc_elbow_rrp(m, vx, vy, cref, s);
+        s->q[1] = ub - m->a[0];
+        s->q[2] = tau * (pz - m->d[0]);
     }
-    if (na == 0u) return 0u;
-    /* each arm solution i -> wrist solutions at 2i, 2i+1 (from the last:
-     * nothing unread is overwritten), then compacted */
-    for (i = na; i-- > 0u;) {
-        if (i != 0u) sol[2u * i] = sol[i];
-        sol[2u * i + 1u].flags = 0xFFFFFFFFu;
-        (void)ikc_wrist(m, R6, cref, &sol[2u * i]);
-    }
-    out = 0;
-    for (i = 0; i < 2u * na; i++) {
-        if (sol[i].flags == 0xFFFFFFFFu) continue;
-        if (out != i) sol[out] = sol[i];
+    return nu;
+}
+
+/* The vectors of T06 the wrist families need, into the scratch of sol. */
+static DH_NOINLINE void ikc_prepare(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol)
+{
+    float *v = IKC_RN(sol);
+    v[0] = 1.0f;
+    v[1] = 0.0f;
+    v[2] = 0.0f;
+    dh_ikc_t06_vec_f32_(m, T, v, 0.0f, v);
+    v = IKC_RA(sol);
+    v[0] = 0.0f;
+    v[1] = m->sa[5];
+    v[2] = m->ca[5];
+    dh_ikc_t06_vec_f32_(m, T, v, 0.0f, v);
+    /* wrist centre o5 = T06 (-a6, -d6 sin alpha6, -d6 cos alpha6) */
+    v = IKC_P(sol);
+    v[0] = -m->a[5];
+    v[1] = -m->d[5] * m->sa[5];
+    v[2] = -m->d[5] * m->ca[5];
+    dh_ikc_t06_vec_f32_(m, T, v, 1.0f, v);
+}
+
+/* Arm values and flags (q[0..2]) of src into dst, q[3..5] left alone. */
+static void ikc_copy_arm(dh_ikc_sol_f32 *dst, const dh_ikc_sol_f32 *src)
+{
+    dst->q[0] = src->q[0];
+    dst->q[1] = src->q[1];
+    dst->q[2] = src->q[2];
+    dst->flags = src->flags;
+}
+
+/* Entries of sol[0..n-1] whose flags are not IKC_GAP moved to the front
+ * (arm values only when arm, else whole entries), in order. */
+static DH_NOINLINE uint32_t ikc_compact(dh_ikc_sol_f32 *sol, uint32_t n, int arm)
+{
+    uint32_t i, out = 0;
+    for (i = 0; i < n; i++) {
+        if (sol[i].flags == IKC_GAP) continue;
+        if (out != i) {
+            if (arm) ikc_copy_arm(&sol[out], &sol[i]);
+            else sol[out] = sol[i];
+        }
         out++;
     }
-    cnt = out;
-    return cnt;
+    return out;
+}
+
+uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, dh_ikc_sol_f32 *sol)
+{
+    uint32_t i, na, base;
+    float c4;
+    ikc_prepare(m, T, sol);
+    /* shoulder branches in sol[0..1], each -> elbow branches at 2b, 2b+1
+     * (from the last: nothing unread is overwritten) */
+    na = ikc_shoulder(m, dh_ikc_cref_f32_(m, q_ref, 0u), sol);
+    for (i = na; i-- > 0u;) {
+        uint32_t ne;
+        if (i != 0u) ikc_copy_arm(&sol[2u * i], &sol[i]);
+        sol[2u * i + 1u].flags = IKC_GAP;
+        c4 = dh_ikc_cref_f32_(m, q_ref, 1u);
+        ne = (m->kind == DH_IKC_WRIST_RRR) ? ikc_elbow_rrr(m, c4, &sol[2u * i]) : ikc_elbow_rrp(m, c4, &sol[2u * i]);
+        if (ne == 0u) sol[2u * i].flags = IKC_GAP;
+    }
+    na = ikc_compact(sol, 2u * na, 1);
+    /* arms to the end (slots 8 - na .. 7), then arm j -> wrist solutions at
+     * 2j, 2j+1: every slot written has been read */
+    base = DH_IKC_MAX_SOL - na;
+    for (i = na; i-- > 0u;) ikc_copy_arm(&sol[base + i], &sol[i]);
+    for (i = 0; i < na; i++) {
+        ikc_wrist_a(m, q_ref, &sol[base + i], &sol[2u * i], IKC_RN(sol), IKC_RA(sol));
+        ikc_wrist_b(m, &sol[2u * i]);
+        ikc_wrist_c(&sol[2u * i]);
+    }
+    return ikc_compact(sol, 2u * na, 0);
 }

@@ -11,7 +11,15 @@
  * solutions (canonical values, each revolute value in (-180, 180], flags
  * = branch and singularity bits only) to sol[0..count-1]; the front end
  * subtracts the offsets, applies the 360-degree shifts and the limits.
- * cref: q_ref in canonical values (never NULL), for the singular splits.
+ * Float solvers get q_ref, the caller's reference (may be NULL: zeros),
+ * and dh_ikc_cref_f32_ gives joint i's in canonical values, for the
+ * singular splits; the fixed solvers get cref: q_ref in canonical values
+ * (never NULL).
+ *
+ * Stack: a float solver gets the TARGET T (not T06) and forms only the vectors
+ * of T06 it needs with dh_ikc_t06_vec_f32_ (T06 (v, w) = pre^-1 T post^-1
+ * (v, w), identities skipped), so that no 4x4 sits on the stack below
+ * the atan2 / sincos calls (256 B per public function with callees).
  *
  * Detectors read the canonical chain of m (a, d, sa, ca, off, prismatic,
  * n) and, when the family applies, fill m->k and return 1 (else 0, m->k
@@ -24,14 +32,18 @@
 #include "dhmath/dh_ikc.h"
 
 /* ---- float (dh_ikc.c: wrist families; dh_ikc_ur.c: UR and SCARA) ---- */
+/* out = T06 (v, w): w = 1 a point, 0 a direction; out may alias v. */
+void dh_ikc_t06_vec_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *v, float w, float *out);
+/* q_ref[i] (0 when q_ref is NULL) plus joint i's theta or d offset. */
+float dh_ikc_cref_f32_(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i);
 int dh_ikc_detect_wrist_f32_(dh_ikc_model_f32 *m);   /* sets kind WRIST_RRR or WRIST_RRP */
 int dh_ikc_detect_par234_f32_(dh_ikc_model_f32 *m);
 int dh_ikc_detect_scara_f32_(dh_ikc_model_f32 *m);
-uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
+uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                            dh_ikc_sol_f32 *sol);
-uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
+uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                             dh_ikc_sol_f32 *sol);
-uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
+uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                            dh_ikc_sol_f32 *sol);
 
 /* ---- fixed, integer only (dh_ikc_q.c: wrist families; dh_ikc_ur_q.c: UR and SCARA) ----

@@ -63,6 +63,9 @@ static float ikc_ref(float x)
     return dh_wrap180_f32(v);
 }
 
+/* The direction e_x, for dh_ikc_t06_vec_f32_. */
+static const float ikc_ex[3] = { 1.0f, 0.0f, 0.0f };
+
 /* Sum of |a_i| and |d_i| of the first n canonical joints (length scale). */
 static float ikc_len_scale(const dh_ikc_model_f32 *m, uint32_t n)
 {
@@ -125,11 +128,12 @@ enum {
     P_TOLS,    /* shoulder band on px^2 + py^2 - h^2 */
     P_AXIS,    /* (position tolerance)^2: the point on axis 1 */
     P_ELB,     /* elbow band: (4 |D| tol)^2, compared with (D^2 - K^2)^2 / |v|^2 */
-    P_W0,      /* a6 */
-    P_W1,      /* d6 sa6 */
-    P_W2,      /* d6 ca6 */
-    P_SA6,     /* sa6 */
-    P_CA6,     /* ca6 */
+    P_W0,      /* -a6       } the point (-w, 1) that T06 maps to p05 */
+    P_W1,      /* -d6 sa6   } */
+    P_W2,      /* -d6 ca6   } */
+    P_Z0,      /* 0         } the direction (0, sa6, ca6) that T06 maps to axis 6 */
+    P_SA6,     /* sa6       } */
+    P_CA6,     /* ca6       } */
     P_SUM2,    /* (|a2| + |a3|)^2 */
     P_DIF2     /* (|a2| - |a3|)^2 */
 };
@@ -160,9 +164,10 @@ int dh_ikc_detect_par234_f32_(dh_ikc_model_f32 *m)
     k[P_TOLS] = 2.0f * fabsf(k[P_H]) * tol + tol * tol;
     k[P_AXIS] = tol * tol;
     k[P_ELB] = (4.0f * fabsf(k[P_D]) * tol) * (4.0f * fabsf(k[P_D]) * tol);
-    k[P_W0] = m->a[5];
-    k[P_W1] = m->d[5] * m->sa[5];
-    k[P_W2] = m->d[5] * m->ca[5];
+    k[P_W0] = -m->a[5];
+    k[P_W1] = -(m->d[5] * m->sa[5]);
+    k[P_W2] = -(m->d[5] * m->ca[5]);
+    k[P_Z0] = 0.0f;
     k[P_SA6] = m->sa[5];
     k[P_CA6] = m->ca[5];
     k[P_SUM2] = (fabsf(m->a[1]) + fabsf(m->a[2])) * (fabsf(m->a[1]) + fabsf(m->a[2]));
@@ -185,7 +190,7 @@ int dh_ikc_detect_par234_f32_(dh_ikc_model_f32 *m)
  * u, px^2 + py^2, kept in sol[1].q[1..5]) into rec = sol + 4 s: t1 in
  * rec[0].q[0], the joint 5 point in frame 1 in rec[0].q[5] and
  * rec[1].q[0], (c1, s1) in rec[3].q[1..2] (scratch). */
-static DH_NOINLINE void par234_shoulder(const dh_ikc_model_f32 *m, const float *cref, uint32_t f,
+static DH_NOINLINE void par234_shoulder(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t f,
                                         dh_ikc_sol_f32 *sol)
 {
     const float *k = m->k;
@@ -193,7 +198,7 @@ static DH_NOINLINE void par234_shoulder(const dh_ikc_model_f32 *m, const float *
     dh_ikc_sol_f32 *rec = &sol[((f & DH_IKC_SHOULDER_ALT) != 0u) ? 4u : 0u];
     float c1, s1;
     if ((f & DH_IKC_SING_SHOULDER) != 0u && pw[4] <= k[P_AXIS]) {
-        (void)dh_sincos_f32(ikc_ref(cref[0]), &s1, &c1);
+        (void)dh_sincos_f32(ikc_ref(dh_ikc_cref_f32_(m, q_ref, 0u)), &s1, &c1);
     } else {
         const float th = k[P_TAU] * k[P_H], uu = (f & DH_IKC_SHOULDER_ALT) ? -pw[3] : pw[3];
         const float X = uu * pw[0] - th * pw[1], Y = th * pw[0] + uu * pw[1];
@@ -208,14 +213,14 @@ static DH_NOINLINE void par234_shoulder(const dh_ikc_model_f32 *m, const float *
     /* t1 = atan2(s1, c1) is taken by par234_angles (rec[3].q[5] = 1) */
     rec[3].q[5] = 1.0f;
     if ((f & DH_IKC_SING_SHOULDER) != 0u && pw[4] <= k[P_AXIS]) {
-        rec[0].q[0] = ikc_ref(cref[0]);
+        rec[0].q[0] = ikc_ref(dh_ikc_cref_f32_(m, q_ref, 0u));
         rec[3].q[5] = 0.0f;
     }
 }
 
 /* Pass 1b: the two wrist records of the shoulder branch (rec = sol + 4 s,
  * after par234_shoulder). */
-static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
+static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                                      uint32_t f, dh_ikc_sol_f32 *sol)
 {
     const float *k = m->k;
@@ -223,13 +228,17 @@ static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const dh_mat4_f3
     dh_ikc_sol_f32 *rec = &sol[((f & DH_IKC_SHOULDER_ALT) != 0u) ? 4u : 0u];
     const float c1 = rec[3].q[1], s1 = rec[3].q[2];
     uint32_t fw = f;
+    /* x' = x6 and z' = axis 6 of T06, parked in rec[2] (written only below) */
+    const float *xv = rec[2].q, *zv = &rec[2].q[3];
+    dh_ikc_t06_vec_f32_(m, T, ikc_ex, 0.0f, rec[2].q);
+    dh_ikc_t06_vec_f32_(m, T, &k[P_Z0], 0.0f, &rec[2].q[3]);
+    {
     /* N = R01^T R': first column (n11, n21, n31), third column (n13, n23, n33) */
-    const float xx = T06->m[0][0], xy = T06->m[0][1];
-    const float zx = k[P_SA6] * T06->m[1][0] + k[P_CA6] * T06->m[2][0];
-    const float zy = k[P_SA6] * T06->m[1][1] + k[P_CA6] * T06->m[2][1];
-    const float n11 = c1 * xx + s1 * xy, n21 = tau * T06->m[0][2];
+    const float xx = xv[0], xy = xv[1];
+    const float zx = zv[0], zy = zv[1];
+    const float n11 = c1 * xx + s1 * xy, n21 = tau * xv[2];
     const float n13 = c1 * zx + s1 * zy;
-    const float n23 = tau * (k[P_SA6] * T06->m[1][2] + k[P_CA6] * T06->m[2][2]);
+    const float n23 = tau * zv[2];
     const float c5 = -sb * w5 * tau * (s1 * zx - c1 * zy);
     const float s5q = n13 * n13 + n23 * n23;
     float cp, sp;
@@ -238,7 +247,7 @@ static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const dh_mat4_f3
          * Rz(phi) (c5 c6, -sb w5 s6) = (n11, n21) */
         float s6, c6, gx, gy, nn;
         rec[0].q[1] = c5 < 0.0f ? 180.0f : 0.0f;
-        rec[0].q[2] = ikc_ref(cref[5]);
+        rec[0].q[2] = ikc_ref(dh_ikc_cref_f32_(m, q_ref, 5u));
         (void)dh_sincos_f32(rec[0].q[2], &s6, &c6);
         gx = (c5 < 0.0f ? -c6 : c6);
         gy = -sb * w5 * s6;
@@ -278,6 +287,7 @@ static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const dh_mat4_f3
     rec[0].q[4] = sp;
     rec[0].flags = fw;
     rec[1].flags = 0u;
+    }
 }
 
 /* Pass 1c: the angles from their parked arguments (kept out of the
@@ -302,22 +312,20 @@ static DH_NOINLINE void par234_angles(dh_ikc_sol_f32 *rec)
 static DH_NOINLINE uint32_t par234_elbow_prep(const dh_ikc_model_f32 *m, dh_ikc_sol_f32 *rec)
 {
     const float *k = m->k;
-    const float D = k[P_D], cphi = rec[0].q[3], sphi = rec[0].q[4];
-    const float vx = rec[0].q[5] - m->a[3] * cphi - k[P_E5] * sphi;
-    const float vy = rec[1].q[0] - m->a[3] * sphi + k[P_E5] * cphi;
-    const float v2 = vx * vx + vy * vy;
-    const float K = v2 - k[P_A23];
-    const float Kd = D < 0.0f ? -K : K;
-    /* D^2 - K^2 = ((|a2| + |a3|)^2 - |v|^2) (|v|^2 - (|a2| - |a3|)^2): no
-     * cancellation of large terms near the stretched or folded elbow */
-    float rad = (k[P_SUM2] - v2) * (v2 - k[P_DIF2]);
+    float rad, v2;
     uint32_t ne = 2u;
-    rec[1].q[1] = vx;
-    rec[1].q[2] = vy;
-    rec[1].q[3] = m->a[1] * fabsf(D) + m->a[2] * Kd; /* A |D| */
-    rec[1].q[4] = Kd;
+    /* rec[1].q[1..2] = v: the planar point less the joint 4 and 5 terms */
+    rec[1].q[1] = rec[0].q[5] - m->a[3] * rec[0].q[3] - k[P_E5] * rec[0].q[4];
+    rec[1].q[2] = rec[1].q[0] - m->a[3] * rec[0].q[4] + k[P_E5] * rec[0].q[3];
+    rec[1].q[0] = ikc_atan2(rec[0].q[4], rec[0].q[3]); /* phi */
+    v2 = rec[1].q[1] * rec[1].q[1] + rec[1].q[2] * rec[1].q[2];
+    rec[1].q[4] = (k[P_D] < 0.0f) ? k[P_A23] - v2 : v2 - k[P_A23]; /* K sgn D */
+    rec[1].q[3] = m->a[1] * fabsf(k[P_D]) + m->a[2] * rec[1].q[4]; /* A |D| */
     rec[0].q[4] = rec[0].q[1];
     rec[0].q[5] = rec[0].q[2];
+    /* D^2 - K^2 = ((|a2| + |a3|)^2 - |v|^2) (|v|^2 - (|a2| - |a3|)^2): no
+     * cancellation of large terms near the stretched or folded elbow */
+    rad = (k[P_SUM2] - v2) * (v2 - k[P_DIF2]);
     /* merging moves the point by about |rad| / (4 |D| |v|): within the
      * position tolerance tol when rad^2 <= (4 |D| tol)^2 |v|^2 */
     if (rad * rad <= k[P_ELB] * v2) {
@@ -330,12 +338,12 @@ static DH_NOINLINE uint32_t par234_elbow_prep(const dh_ikc_model_f32 *m, dh_ikc_
         /* two elbow branches */
     }
     rec[1].q[5] = dh_sqrt_f32(rad);
-    rec[1].q[0] = ikc_atan2(sphi, cphi);
     return ne;
 }
 
 /* Pass 2b: elbow solution e of the record prepared by par234_elbow_prep. */
-static DH_NOINLINE void par234_elbow(const dh_ikc_model_f32 *m, const float *cref, uint32_t e, dh_ikc_sol_f32 *rec)
+static DH_NOINLINE void par234_elbow(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t e,
+                                     dh_ikc_sol_f32 *rec)
 {
     const float *k = m->k;
     const float *w = rec[1].q; /* phi, vx, vy, A |D|, K sgn D, sqrt(radicand) */
@@ -343,7 +351,7 @@ static DH_NOINLINE void par234_elbow(const dh_ikc_model_f32 *m, const float *cre
     const float Bd = k[P_S2] * m->a[2] * s3d;
     const float y = w[3] * w[2] - Bd * w[1], x = w[3] * w[1] + Bd * w[2];
     const float t3 = ikc_atan2(s3d, w[4]);
-    const float t2 = (x == 0.0f && y == 0.0f) ? ikc_ref(cref[1]) : ikc_atan2(y, x);
+    const float t2 = (x == 0.0f && y == 0.0f) ? ikc_ref(dh_ikc_cref_f32_(m, q_ref, 1u)) : ikc_atan2(y, x);
     const float t4 = dh_wrap180_f32(k[P_S23] * (w[0] - t2 - k[P_S2] * t3));
     rec[e].q[0] = rec[0].q[0];
     rec[e].q[1] = t2;
@@ -357,13 +365,11 @@ static DH_NOINLINE void par234_elbow(const dh_ikc_model_f32 *m, const float *cre
 /* The joint 5 point p05 and u = sqrt(px^2 + py^2 - h^2) into pw (as
  * par234_wrist reads them); returns the number of shoulder branches (0:
  * unreachable, 1: merged or on axis 1). */
-static DH_NOINLINE uint32_t par234_p05(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, float *pw)
+static DH_NOINLINE uint32_t par234_p05(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, float *pw)
 {
     const float *k = m->k;
     float rad;
-    uint32_t i;
-    for (i = 0u; i < 3u; i++)
-        pw[i] = T06->m[3][i] - (k[P_W0] * T06->m[0][i] + k[P_W1] * T06->m[1][i] + k[P_W2] * T06->m[2][i]);
+    dh_ikc_t06_vec_f32_(m, T, &k[P_W0], 1.0f, pw);
     pw[4] = pw[0] * pw[0] + pw[1] * pw[1];
     rad = pw[4] - k[P_H] * k[P_H];
     pw[3] = 0.0f;
@@ -373,11 +379,11 @@ static DH_NOINLINE uint32_t par234_p05(const dh_ikc_model_f32 *m, const dh_mat4_
     return 2u;
 }
 
-uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
+uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                             dh_ikc_sol_f32 *sol)
 {
     float *pw = &sol[1].q[1]; /* px, py, pz, u, px^2 + py^2 (slot 1 is free until pass 2) */
-    const uint32_t ns = par234_p05(m, T06, pw);
+    const uint32_t ns = par234_p05(m, T, pw);
     const uint32_t fs = (ns == 1u) ? (uint32_t)DH_IKC_SING_SHOULDER : 0u;
     uint32_t s, cnt = 0u;
     if (ns == 0u) return 0u;
@@ -386,8 +392,8 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, c
         sol[7].flags = IKC_EMPTY;
     }
     for (s = 0u; s < ns; s++) {
-        par234_shoulder(m, cref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
-        par234_wrist(m, T06, cref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
+        par234_shoulder(m, q_ref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
+        par234_wrist(m, T, q_ref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
         par234_angles(&sol[4u * s]);
     }
     for (s = 0u; s < 8u; s += 2u) {
@@ -395,7 +401,7 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, c
         if (sol[s + 1u].flags != IKC_EMPTY) ne = par234_elbow_prep(m, &sol[s]);
         if (ne == 0u) sol[s].flags = IKC_EMPTY;
         sol[s + 1u].flags = IKC_EMPTY;
-        for (e = 0u; e < ne; e++) par234_elbow(m, cref, e, &sol[s]);
+        for (e = 0u; e < ne; e++) par234_elbow(m, q_ref, e, &sol[s]);
     }
     for (s = 0u; s < 8u; s++) {
         uint32_t i;
@@ -441,7 +447,13 @@ enum {
     S_ELB,    /* elbow band: (4 |D| tol)^2, compared with (D^2 - K^2)^2 / |p3xy|^2 */
     S_AXIS,   /* (position tolerance)^2: p3 on axis 1 */
     S_SUM2,   /* (|a1| + |b|)^2 */
-    S_DIF2    /* (|a1| - |b|)^2 */
+    S_DIF2,   /* (|a1| - |b|)^2 */
+    S_ZD0,    /* 0         } the direction (0, sa4, ca4) that T06 maps to the tool axis z' */
+    S_ZDS,    /* sa4       } */
+    S_ZDC,    /* ca4       } */
+    S_P0,     /* -a4       } the point that T06 maps to the frame 3 origin */
+    S_P1,     /* -d4 sa4   } */
+    S_P2      /* -d4 ca4   } */
 };
 
 int dh_ikc_detect_scara_f32_(dh_ikc_model_f32 *m)
@@ -471,26 +483,39 @@ int dh_ikc_detect_scara_f32_(dh_ikc_model_f32 *m)
     k[S_AXIS] = tol * tol;
     k[S_SUM2] = (fabsf(m->a[0]) + k[S_LB]) * (fabsf(m->a[0]) + k[S_LB]);
     k[S_DIF2] = (fabsf(m->a[0]) - k[S_LB]) * (fabsf(m->a[0]) - k[S_LB]);
+    k[S_ZD0] = 0.0f;
+    k[S_ZDS] = m->sa[3];
+    k[S_ZDC] = m->ca[3];
+    k[S_P0] = -m->a[3];
+    k[S_P1] = -(m->d[3] * m->sa[3]);
+    k[S_P2] = -(m->d[3] * m->ca[3]);
     m->kind = DH_IKC_SCARA;
     return 1;
 }
 
-uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, const float *cref,
+/* x4, z' (sol[2].q) and the frame 3 origin p3 (sol[3].q[0..2]) of T06:
+ * slots 2 and 3 never hold a SCARA solution. */
+static DH_NOINLINE void scara_vecs(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol)
+{
+    dh_ikc_t06_vec_f32_(m, T, ikc_ex, 0.0f, sol[2].q);
+    dh_ikc_t06_vec_f32_(m, T, &m->k[S_ZD0], 0.0f, &sol[2].q[3]);
+    dh_ikc_t06_vec_f32_(m, T, &m->k[S_P0], 1.0f, sol[3].q);
+}
+
+uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                            dh_ikc_sol_f32 *sol)
 {
+    scara_vecs(m, T, sol);
     const float *k = m->k;
-    const float sa4 = m->sa[3], ca4 = m->ca[3], D = k[S_D], lb = k[S_LB];
-    const float zx = sa4 * T06->m[1][0] + ca4 * T06->m[2][0];
-    const float zy = sa4 * T06->m[1][1] + ca4 * T06->m[2][1];
-    const float zz = sa4 * T06->m[1][2] + ca4 * T06->m[2][2];
-    const float px = T06->m[3][0] - m->a[3] * T06->m[0][0] - m->d[3] * zx;
-    const float py = T06->m[3][1] - m->a[3] * T06->m[0][1] - m->d[3] * zy;
-    const float pz = T06->m[3][2] - m->a[3] * T06->m[0][2] - m->d[3] * zz;
+    const float D = k[S_D], lb = k[S_LB];
+    const float *xv = sol[2].q;
+    const float zx = sol[2].q[3], zy = sol[2].q[4], zz = sol[2].q[5];
+    const float px = sol[3].q[0], py = sol[3].q[1], pz = sol[3].q[2];
     const float p2 = px * px + py * py;
     const float K = p2 - k[S_A1B];
     const float Kd = D < 0.0f ? -K : K;
     const float Ad = m->a[0] * fabsf(D) + lb * Kd; /* (a1 + |b| cos eta) |D| */
-    const float psi = ikc_atan2(T06->m[0][1], T06->m[0][0]);
+    const float psi = ikc_atan2(xv[1], xv[0]);
     const float d3 = k[S_S12] * (pz - k[S_Z0]);
     float rad = (k[S_SUM2] - p2) * (p2 - k[S_DIF2]), r; /* D^2 - K^2, as for PARALLEL_234 */
     uint32_t e, ne = 2u, flags = 0u;
@@ -512,7 +537,7 @@ uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T06, co
         uint32_t f = flags | (e ? DH_IKC_ELBOW_ALT : 0u);
         float t1;
         if (p2 <= k[S_AXIS]) {
-            t1 = ikc_ref(cref[0]);
+            t1 = ikc_ref(dh_ikc_cref_f32_(m, q_ref, 0u));
             f |= DH_IKC_SING_SHOULDER;
         } else {
             t1 = ikc_atan2(Ad * py - Bd * px, Ad * px + Bd * py);

@@ -133,10 +133,10 @@ static void check_solutions(const dh_robot *r, const dh_mat4_f32 *T, const dh_ik
         double ep, er;
         true_error(r, sol[s].q, T, &ep, &er);
         DHT_TRUE_MSG(ep <= TOL_POS && er <= TOL_ROT, "%s: solution %u (%s, flags 0x%x): position error %.3g m, rotation %.3g rad",
-                     what, s, qf_str(sol[s].q, r->n, 0), sol[s].flags, ep, er);
+                     what, (unsigned)s, qf_str(sol[s].q, r->n, 0), (unsigned)sol[s].flags, ep, er);
         DHT_TRUE_MSG(((sol[s].flags & DH_IKC_OUT_OF_LIMITS) != 0u) == !within_limits(r, sol[s].q),
-                     "%s: solution %u (%s) flags 0x%x disagree with the limits", what, s, qf_str(sol[s].q, r->n, 0),
-                     sol[s].flags);
+                     "%s: solution %u (%s) flags 0x%x disagree with the limits", what, (unsigned)s, qf_str(sol[s].q, r->n, 0),
+                     (unsigned)sol[s].flags);
         if (ep > *wp) *wp = ep;
         if (er > *wr) *wr = er;
     }
@@ -211,7 +211,7 @@ static void run_completeness(const char *name, const dhs_robot *desc, const dh_r
         dhs_random_q_robot(r, q);
         target_of(r, q, &T);
         st = dh_ikc_f32(m, &T, NULL, 0u, sol, &n_sol);
-        DHT_TRUE_MSG(n_sol <= DH_IKC_MAX_SOL, "%s: %u solutions", name, n_sol);
+        DHT_TRUE_MSG(n_sol <= DH_IKC_MAX_SOL, "%s: %u solutions", name, (unsigned)n_sol);
         if (st != DH_OK && !away_from(desc, q, 1e-6)) {
             /* within the float rounding of a boundary of the workspace
              * (wrist centre at the shoulder, the elbow folded): the rounded
@@ -222,7 +222,7 @@ static void run_completeness(const char *name, const dhs_robot *desc, const dh_r
             continue;
         }
         DHT_TRUE_MSG(st == DH_OK && n_sol >= 1u, "%s: q = %s: status %d, %u solutions", name, q_str(q, r->n, 0),
-                     (int)st, n_sol);
+                     (int)st, (unsigned)n_sol);
         check_solutions(r, &T, sol, n_sol, name, &wp, &wr);
         nsum += (long)n_sol;
         (void)desc;
@@ -233,7 +233,7 @@ static void run_completeness(const char *name, const dhs_robot *desc, const dh_r
             if (dq < best) best = dq;
         }
         DHT_TRUE_MSG(best <= TOL_GEN, "%s: q = %s not among the %u solutions (nearest %.3g deg away; first %s)", name,
-                     q_str(q, r->n, 0), n_sol, best, qf_str(sol[0].q, r->n, 1));
+                     q_str(q, r->n, 0), (unsigned)n_sol, best, qf_str(sol[0].q, r->n, 1));
         if (best > wq) wq = best;
     }
     dht_printf("ikc %s: %ld targets (%ld checked for the generating configuration), mean %.2f solutions, worst "
@@ -261,7 +261,9 @@ static void ikc_completeness(void)
 static void ikc_numerical_completeness(void)
 {
     unsigned k;
-    const long targets = DHT_ITER(1000), starts = 200;
+    /* host: 1000 targets x 200 starts; targets (DHT_ITER divisor > 1):
+     * fewer targets and 20 starts each */
+    const long targets = DHT_ITER(1000), starts = (dht_iter_div() == 1) ? 200 : 20;
     for (k = 0; k < N_ROBOTS; k++) {
         dh_robot r;
         dh_ikc_model_f32 m;
@@ -303,7 +305,7 @@ static void ikc_numerical_completeness(void)
                 }
                 DHT_TRUE_MSG(best <= 0.05, "%s: target of q = %s: dh_ik_f32 found %s, not among the %u closed-form "
                              "solutions (nearest %.3g away)", g_robots[k].name, q_str(q, r.n, 0),
-                             qf_str(qs, r.n, 1), n_sol, best);
+                             qf_str(qs, r.n, 1), (unsigned)n_sol, best);
             }
             for (s = 0; s < n_sol; s++)
                 if ((hit >> s) & 1u) found++;
@@ -354,7 +356,7 @@ static void ikc_wrist_singular(void)
         }
         /* the generating arm branch is singular (theta5 = 0 exactly) */
         DHT_TRUE_MSG(nsing >= 1u, "q = %s: no solution flagged wrist singular", q_str(q, 6u, 0));
-        DHT_TRUE_MSG(n_sol <= 8u - nsing, "q = %s: %u solutions with %u singular ones", q_str(q, 6u, 0), n_sol, nsing);
+        DHT_TRUE_MSG(n_sol <= 8u - nsing, "q = %s: %u solutions with %u singular ones", q_str(q, 6u, 0), (unsigned)n_sol, (unsigned)nsing);
     }
 }
 
@@ -408,10 +410,10 @@ static void ikc_shoulder_singular(void)
             target_of(&r, q, &T);
             DHT_EQ_INT(dh_ikc_f32(&m, &T, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_sol), DH_OK);
             check_solutions(&r, &T, sol, n_sol, descs[k]->name, &wp, &wr);
-            DHT_TRUE_MSG(n_sol >= 1u && n_sol <= 4u, "%s shoulder singular: %u solutions", descs[k]->name, n_sol);
+            DHT_TRUE_MSG(n_sol >= 1u && n_sol <= 4u, "%s shoulder singular: %u solutions", descs[k]->name, (unsigned)n_sol);
             for (s = 0; s < n_sol; s++) {
                 DHT_TRUE_MSG((sol[s].flags & DH_IKC_SING_SHOULDER) != 0u, "%s: solution %u not flagged shoulder singular",
-                             descs[k]->name, s);
+                             descs[k]->name, (unsigned)s);
                 DHT_TRUE_MSG(sol[s].q[0] == qref[0], "%s shoulder singular: q1 = %.9g, q_ref1 = %.9g", descs[k]->name,
                              (double)sol[s].q[0], (double)qref[0]);
             }
@@ -444,7 +446,7 @@ static void ikc_elbow_stretched(void)
         for (s = 0; s < n_sol; s++)
             if ((sol[s].flags & DH_IKC_SING_ELBOW) != 0u) nel++;
         DHT_TRUE_MSG(nel >= 2u && (sol[0].flags & DH_IKC_SING_ELBOW) != 0u && n_sol <= 6u,
-                     "q = %s: %u solutions, %u flagged stretched", q_str(q, 6u, 0), n_sol, nel);
+                     "q = %s: %u solutions, %u flagged stretched", q_str(q, 6u, 0), (unsigned)n_sol, (unsigned)nel);
         for (s = 0; s < n_sol; s++)
             DHT_TRUE_MSG((sol[s].flags & DH_IKC_ELBOW_ALT) == 0u || (sol[s].flags & DH_IKC_SING_ELBOW) == 0u,
                          "stretched elbow returned twice");
@@ -476,7 +478,7 @@ static void ikc_limits(void)
         for (i = 0; i < 6u; i++) dd = fmax(dd, fabs((double)sol[s].q[i] - q[i]));
         if (dd <= TOL_GEN) seen = 1;
         DHT_TRUE_MSG(fabs((double)sol[s].q[3] - 180.0) <= 180.0 && fabs((double)sol[s].q[5] + 180.0) <= 180.0,
-                     "kr5 solution %u: q4 %.9g, q6 %.9g not the shifts nearest q_ref", s, (double)sol[s].q[3],
+                     "kr5 solution %u: q4 %.9g, q6 %.9g not the shifts nearest q_ref", (unsigned)s, (double)sol[s].q[3],
                      (double)sol[s].q[5]);
     }
     DHT_TRUE_MSG(seen, "kr5: q = %s (q4, q6 beyond +-180) not returned as such for q_ref near it", q_str(q, 6u, 0));
@@ -503,8 +505,8 @@ static void ikc_limits(void)
         DHT_EQ_INT(st, DH_OK);
         DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, solk, &n_keep), DH_OK);
         check_solutions(&r, &T, solk, n_keep, "puma keep", &wp, &wr);
-        DHT_TRUE_MSG(n_keep >= n_sol, "kept %u < %u", n_keep, n_sol);
-        for (s = 0; s < n_sol; s++) DHT_TRUE_MSG(within_limits(&r, sol[s].q), "solution %u outside the limits", s);
+        DHT_TRUE_MSG(n_keep >= n_sol, "kept %u < %u", (unsigned)n_keep, (unsigned)n_sol);
+        for (s = 0; s < n_sol; s++) DHT_TRUE_MSG(within_limits(&r, sol[s].q), "solution %u outside the limits", (unsigned)s);
         /* the in-limit ones of the kept set are the plain set, same order */
         for (a = 0, b = 0; a < n_keep; a++) {
             if ((solk[a].flags & DH_IKC_OUT_OF_LIMITS) != 0u) {
@@ -531,7 +533,7 @@ static void ikc_limits(void)
         DHT_EQ_INT(n_sol, 0);
         DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_sol), DH_OK);
         DHT_TRUE_MSG(n_sol >= 1u, "kept nothing");
-        for (s = 0; s < n_sol; s++) DHT_TRUE_MSG((sol[s].flags & DH_IKC_OUT_OF_LIMITS) != 0u, "solution %u not flagged", s);
+        for (s = 0; s < n_sol; s++) DHT_TRUE_MSG((sol[s].flags & DH_IKC_OUT_OF_LIMITS) != 0u, "solution %u not flagged", (unsigned)s);
         check_solutions(&r, &T, sol, n_sol, "puma narrow joint 1", &wp, &wr);
     }
     /* Stanford: the prismatic extension's negative branch is outside its
@@ -545,7 +547,7 @@ static void ikc_limits(void)
         DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, solk, &n_keep), DH_OK);
         DHT_EQ_INT(n_keep, 8);
         DHT_TRUE(n_sol >= 1u && n_sol <= 4u);
-        for (s = 0; s < n_sol; s++) DHT_TRUE_MSG(sol[s].q[2] > 0.0f, "stanford solution %u: d3 %.9g", s, (double)sol[s].q[2]);
+        for (s = 0; s < n_sol; s++) DHT_TRUE_MSG(sol[s].q[2] > 0.0f, "stanford solution %u: d3 %.9g", (unsigned)s, (double)sol[s].q[2]);
         for (s = 0, nflag = 0; s < n_keep; s++) nflag += (solk[s].q[2] < 0.0f) ? 1u : 0u;
         DHT_EQ_INT(nflag, 4); /* the negative extensions, kept and flagged */
         check_solutions(&r, &T, solk, n_keep, "stanford kept", &wp, &wr);
@@ -615,7 +617,7 @@ static void ikc_mdh_puma(void)
             for (j = 0; j < 6u; j++) dd[j] = (double)s1[s].q[j];
             dq = q_dist(&rs, s2[s].q, dd);
             DHT_TRUE_MSG(dq <= 1e-3 && s1[s].flags == s2[s].flags, "MDH solution %u (%s) differs from SDH (%s) by %.3g",
-                         s, qf_str(s2[s].q, 6u, 0), qf_str(s1[s].q, 6u, 1), dq);
+                         (unsigned)s, qf_str(s2[s].q, 6u, 0), qf_str(s1[s].q, 6u, 1), dq);
         }
     }
 }
@@ -701,6 +703,14 @@ static void ikc_no_closed_form(void)
                                           (i == 1u) ? 10.0f : (float)j->alpha_deg), DH_OK);
     }
     expect_none(&r, DH_ERR_UNAVAILABLE, DH_IKC_WHY_AXES, "puma with alpha2 = 10");
+    /* Puma with alpha4 = 60: the wrist axes meet, but not at right angles */
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+    for (i = 0; i < 6u; i++) {
+        const dhs_joint_desc *j = &dhs_puma560_m.j[i];
+        DHT_EQ_INT(dh_robot_add_joint_f32(&r, j->type, (float)j->theta_deg, (float)j->d, (float)j->a,
+                                          (i == 3u) ? 60.0f : (float)j->alpha_deg), DH_OK);
+    }
+    expect_none(&r, DH_ERR_UNAVAILABLE, DH_IKC_WHY_AXES, "puma with alpha4 = 60");
     /* Stanford with alpha2 = 60: not a Stanford arm */
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
     for (i = 0; i < 6u; i++) {

@@ -6,7 +6,7 @@
  * Families (dh_ikc_kind), each recognised from a dh_robot in standard or
  * modified DH with any base and tool frame and joint offsets:
  * - DH_IKC_WRIST_RRR: six revolute joints, axes 2 and 3 parallel, the last
- *   three axes intersecting in one point (spherical wrist), any shoulder and
+ *   three axes meeting in one point at right angles (spherical wrist), any shoulder and
  *   elbow offsets (Puma 560, KUKA KR5, ABB IRB140; Paul 1981 ch. 3, the
  *   Puma's transform-equation solution); up to 8 solutions;
  * - DH_IKC_WRIST_RRP: the same wrist on an R-R-P arm (Stanford arm); up to
@@ -81,7 +81,7 @@ typedef enum {
     DH_IKC_WHY_NONE = 0,   /**< it has one (kind != DH_IKC_NONE) */
     DH_IKC_WHY_JOINTS = 1, /**< joint count or types match no family (6R, RRP + 3R, RRPR) */
     DH_IKC_WHY_WRIST = 2,  /**< six joints, but the last three axes do not meet in one point and axes 2, 3, 4 are not parallel */
-    DH_IKC_WHY_AXES = 3,   /**< the last three axes meet, but axes 2 and 3 are not parallel (RRR) or the first three are not a Stanford R-R-P arm; SCARA axes not parallel */
+    DH_IKC_WHY_AXES = 3,   /**< the last three axes meet, but not at right angles, or axes 2 and 3 are not parallel (RRR) or the first three are not a Stanford R-R-P arm; SCARA axes not parallel */
     DH_IKC_WHY_PATH = 4    /**< the float (analyse_f32) or fixed (analyse_q) path of the robot is not prepared */
 } dh_ikc_why;
 
