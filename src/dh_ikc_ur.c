@@ -41,11 +41,13 @@ DH_INLINE float ikc_sign(float x)
     return x < 0.0f ? -1.0f : 1.0f;
 }
 
-/* atan2 in degrees, (-180, 180]; (0, 0) gives 0. */
+/* atan2 in degrees, (-180, 180]; (0, 0) gives 0. The radian atan2 (2 ulp)
+ * times 180/pi: the degree version's double-float arithmetic needs 80
+ * more bytes of stack on Cortex-M0+, more than the budget leaves. */
 DH_INLINE float ikc_atan2(float y, float x)
 {
     if (y == 0.0f && x == 0.0f) return 0.0f;
-    return dh_wrap180_f32(dh_atan2f_deg_(y, x, 0.0f));
+    return dh_wrap180_f32(dh_atan2f_(y, x) * DH_RAD2DEG_F);
 }
 
 /* A reference angle (any finite degrees) in (-180, 180]. */
@@ -220,18 +222,17 @@ static DH_NOINLINE void par234_shoulder(const dh_ikc_model_f32 *m, const float *
 
 /* Pass 1b: the two wrist records of the shoulder branch (rec = sol + 4 s,
  * after par234_shoulder). */
-static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
-                                     uint32_t f, dh_ikc_sol_f32 *sol)
+static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t f,
+                                     dh_ikc_sol_f32 *sol)
 {
     const float *k = m->k;
     const float tau = k[P_TAU], sb = k[P_SB], w5 = k[P_W5];
     dh_ikc_sol_f32 *rec = &sol[((f & DH_IKC_SHOULDER_ALT) != 0u) ? 4u : 0u];
     const float c1 = rec[3].q[1], s1 = rec[3].q[2];
     uint32_t fw = f;
-    /* x' = x6 and z' = axis 6 of T06, parked in rec[2] (written only below) */
-    const float *xv = rec[2].q, *zv = &rec[2].q[3];
-    dh_ikc_t06_vec_f32_(m, T, ikc_ex, 0.0f, rec[2].q);
-    dh_ikc_t06_vec_f32_(m, T, &k[P_Z0], 0.0f, &rec[2].q[3]);
+    /* x' = x6 and z' = axis 6 of T06, in sol[6] (par234_p05; read here
+     * before the second branch's flip record overwrites them) */
+    const float *xv = sol[6].q, *zv = &sol[6].q[3];
     {
     /* N = R01^T R': first column (n11, n21, n31), third column (n13, n23, n33) */
     const float xx = xv[0], xy = xv[1];
@@ -363,13 +364,16 @@ static DH_NOINLINE void par234_elbow(const dh_ikc_model_f32 *m, const float *q_r
 }
 
 /* The joint 5 point p05 and u = sqrt(px^2 + py^2 - h^2) into pw (as
- * par234_wrist reads them); returns the number of shoulder branches (0:
+ * par234_wrist reads them), x' = x6 and z' = axis 6 of T06 into sol6[0..5];
+ * returns the number of shoulder branches (0:
  * unreachable, 1: merged or on axis 1). */
-static DH_NOINLINE uint32_t par234_p05(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, float *pw)
+static DH_NOINLINE uint32_t par234_p05(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, float *pw, float *sol6)
 {
     const float *k = m->k;
     float rad;
     dh_ikc_t06_vec_f32_(m, T, &k[P_W0], 1.0f, pw);
+    dh_ikc_t06_vec_f32_(m, T, ikc_ex, 0.0f, sol6);
+    dh_ikc_t06_vec_f32_(m, T, &k[P_Z0], 0.0f, &sol6[3]);
     pw[4] = pw[0] * pw[0] + pw[1] * pw[1];
     rad = pw[4] - k[P_H] * k[P_H];
     pw[3] = 0.0f;
@@ -383,7 +387,7 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, con
                             dh_ikc_sol_f32 *sol)
 {
     float *pw = &sol[1].q[1]; /* px, py, pz, u, px^2 + py^2 (slot 1 is free until pass 2) */
-    const uint32_t ns = par234_p05(m, T, pw);
+    const uint32_t ns = par234_p05(m, T, pw, sol[6].q);
     const uint32_t fs = (ns == 1u) ? (uint32_t)DH_IKC_SING_SHOULDER : 0u;
     uint32_t s, cnt = 0u;
     if (ns == 0u) return 0u;
@@ -393,7 +397,7 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, con
     }
     for (s = 0u; s < ns; s++) {
         par234_shoulder(m, q_ref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
-        par234_wrist(m, T, q_ref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
+        par234_wrist(m, q_ref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
         par234_angles(&sol[4u * s]);
     }
     for (s = 0u; s < 8u; s += 2u) {
