@@ -506,10 +506,10 @@ static DH_NOINLINE void scara_vecs(const dh_ikc_model_f32 *m, const dh_mat4_f32 
     dh_ikc_t06_vec_f32_(m, T, &m->k[S_P0], 1.0f, sol[3].q);
 }
 
-uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
-                           dh_ikc_sol_f32 *sol)
+/* The solutions from the vectors of scara_vecs (a separate frame, so that
+ * the transform's chain and the atan2 chain do not stack). */
+static DH_NOINLINE uint32_t scara_solve(const dh_ikc_model_f32 *m, const float *q_ref, dh_ikc_sol_f32 *sol)
 {
-    scara_vecs(m, T, sol);
     const float *k = m->k;
     const float D = k[S_D], lb = k[S_LB];
     const float *xv = sol[2].q;
@@ -555,4 +555,11 @@ uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, cons
         sol[e].flags = f;
     }
     return ne;
+}
+
+uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
+                           dh_ikc_sol_f32 *sol)
+{
+    scara_vecs(m, T, sol);
+    return scara_solve(m, q_ref, sol);
 }
