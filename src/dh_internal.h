@@ -389,4 +389,19 @@ DH_INLINE void dh_rot_offdiag_f32(dh_mat3_f32 *R, float xy, float xz, float yz, 
 #define DH_UNROLL4
 #endif
 
+/* ---- closed-form IK helpers ----------------------------------------------- */
+
+/** x (degrees, |x| < 900) shifted by a multiple of 360 into (-180, 180];
+ *  exact: each step's result is smaller than x in magnitude and on the grid
+ *  of x's ulp (360 is a multiple of it), so it is representable. */
+DH_INLINE float dh_wrap180_f32(float x)
+{
+    float v = x;
+    if (v > 180.0f) v -= 360.0f;
+    if (v > 180.0f) v -= 360.0f;
+    if (v <= -180.0f) v += 360.0f;
+    if (v <= -180.0f) v += 360.0f;
+    return v;
+}
+
 #endif /* DHMATH_SRC_DH_INTERNAL_H */

@@ -45,6 +45,9 @@ typedef struct {
 extern const dhs_robot dhs_puma560_m, dhs_puma560_mm;
 extern const dhs_robot dhs_ur5_m, dhs_ur5_mm;
 extern const dhs_robot dhs_panda_m, dhs_panda_mm;
+extern const dhs_robot dhs_ur3_m, dhs_ur3_mm;
+extern const dhs_robot dhs_ur10_m, dhs_ur10_mm;
+extern const dhs_robot dhs_cobra600_m, dhs_cobra600_mm;
 extern const dhs_robot dhs_kuka_kr5_m, dhs_kuka_kr5_mm;
 extern const dhs_robot dhs_abb_irb140_m, dhs_abb_irb140_mm;
 extern const dhs_robot dhs_stanford_m, dhs_stanford_mm;

@@ -35,10 +35,13 @@
  * Singular cases are solved, not failed: wrist singular (axes 4 and 6
  * aligned) returns the one-parameter family's member whose joint 4 keeps
  * q_ref's value (the sum or difference of joints 4 and 6 is what the target
- * fixes), flagged DH_IKC_SING_WRIST; shoulder singular (the wrist centre, or
- * for DH_IKC_PARALLEL_234 the joint 5 axis point, on axis 1) keeps joint 1
- * at q_ref's value, flagged DH_IKC_SING_SHOULDER. Elbow stretched: flagged
- * DH_IKC_SING_ELBOW.
+ * fixes; DH_IKC_PARALLEL_234, axes 2, 3, 4, 6 parallel: joint 6 keeps it),
+ * flagged DH_IKC_SING_WRIST; shoulder singular (the wrist centre, or for
+ * DH_IKC_PARALLEL_234 the joint 5 axis point, on axis 1) keeps joint 1
+ * at q_ref's value, flagged DH_IKC_SING_SHOULDER, which also marks the
+ * PARALLEL_234 shoulder branches met (that point on the cylinder about
+ * axis 1 whose radius is the arm's offset along axis 2). Elbow stretched
+ * or folded: flagged DH_IKC_SING_ELBOW.
  *
  * Accuracy (tests against double, test/test_ikc*.c; measured figures:
  * docs/accuracy_kin.md): for every solution FK(q) matches the target within
@@ -91,7 +94,7 @@ typedef enum {
 #define DH_IKC_ELBOW_ALT 0x02u     /**< second elbow branch */
 #define DH_IKC_WRIST_ALT 0x04u     /**< second wrist branch (wrist flipped) */
 #define DH_IKC_OUT_OF_LIMITS 0x10u /**< a joint value is outside its limits (kept with DH_IKC_KEEP_OUT_OF_LIMITS) */
-#define DH_IKC_SING_WRIST 0x20u    /**< wrist singular: joint 4 taken from q_ref */
+#define DH_IKC_SING_WRIST 0x20u    /**< wrist singular: joint 4 (PARALLEL_234: joint 6) taken from q_ref */
 #define DH_IKC_SING_SHOULDER 0x40u /**< shoulder singular: joint 1 taken from q_ref */
 #define DH_IKC_SING_ELBOW 0x80u    /**< elbow stretched: the two elbow branches coincide (returned once) */
 /** @} */

@@ -1,0 +1,722 @@
+/*
+ * test_ikc_ur.c - closed-form IK, float: axes 2-3-4 parallel (UR3, UR5,
+ * UR10) and SCARA (Adept Cobra 600), robots in metres.
+ *
+ * Every solution is judged in double, independently of the library: its
+ * joint values go through the double reference FK of support_robots.c
+ * (the robot's stored float parameters) and are compared with the float
+ * target (position norm, rotation angle of R_target R^T). Targets are the
+ * reference FK of random in-limit configurations, rounded to float.
+ */
+#include "dht.h"
+#include "support_robots.h"
+#include "dhmath/dh_ikc.h"
+#include "dhmath/dh_kin.h"
+#include "dhmath/dh_mat4.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+#define D2R (PI / 180.0)
+#define TOL_POS 2e-6
+#define TOL_ROT 2e-6
+#define NJ DH_IKC_JOINTS
+/* Completeness: the generating configuration is among the solutions within
+ * 1e-3 deg when its normalised distance from every singularity (shoulder
+ * |u| / L, elbow |a2 a3 s3| / (|a2| + |a3|)^2, wrist |s5|; SCARA
+ * |a1 a2 s2| / (|a1| + |a2|)^2) is at
+ * least SING_FAR; between 1e-2 and SING_FAR within 1e-2 deg. Closer than
+ * SING_FAR the rounding of the float target (and of pre^-1 T post^-1 with
+ * a base and tool) alone moves the exact solution by that much: 1.5e-8 m on a coordinate turns theta1 by 1e-7 rad at
+ * r = 0.15 m (UR3), which the wrist amplifies by 1 / |s5|, the elbow by
+ * (|a2| + |a3|) / (|a2 a3 s3|). */
+#define SING_FAR 1e-1
+
+/* ---- the robots ---------------------------------------------------------- */
+
+static const dhs_robot *const g_robots[] = { &dhs_ur3_m, &dhs_ur5_m, &dhs_ur10_m, &dhs_cobra600_m };
+#define N_ROBOTS (sizeof g_robots / sizeof g_robots[0])
+
+/* ---- double helpers --------------------------------------------------------- */
+
+static double rot_angle(double R[3][3])
+{
+    double ux = R[1][2] - R[2][1], uy = R[2][0] - R[0][2], uz = R[0][1] - R[1][0];
+    double s = sqrt(ux * ux + uy * uy + uz * uz), c = R[0][0] + R[1][1] + R[2][2] - 1.0;
+    return atan2(s, c);
+}
+
+/* position norm and rotation angle between the reference FK of q and T */
+static void true_error(const dh_robot *r, const float *q, const dh_mat4_f32 *T, double *ep, double *er)
+{
+    dhs_mat4_d F;
+    double qd[DHS_MAX_JOINTS], D[3][3];
+    uint32_t i;
+    int a, b, k;
+    for (i = 0; i < r->n; i++) qd[i] = (double)q[i];
+    dhs_fk_ref_f32(r, qd, NULL, &F);
+    *ep = 0;
+    for (k = 0; k < 3; k++) {
+        double d = (double)T->m[3][k] - F.m[3][k];
+        *ep += d * d;
+    }
+    *ep = sqrt(*ep);
+    for (a = 0; a < 3; a++)
+        for (b = 0; b < 3; b++) {
+            double s = 0;
+            for (k = 0; k < 3; k++) s += (double)T->m[k][a] * F.m[k][b];
+            D[b][a] = s;
+        }
+    *er = rot_angle(D);
+}
+
+static void to_f32(const dhs_mat4_d *D, dh_mat4_f32 *T)
+{
+    int c, r;
+    for (c = 0; c < 4; c++)
+        for (r = 0; r < 4; r++) T->m[c][r] = (float)D->m[c][r];
+}
+
+static void target_of(const dh_robot *r, const double *q, dh_mat4_f32 *T)
+{
+    dhs_mat4_d F;
+    dhs_fk_ref_f32(r, q, NULL, &F);
+    to_f32(&F, T);
+}
+
+/* |a - b| modulo 360 for revolute joints, plain for prismatic ones */
+static double joint_dist(const dh_robot *r, uint32_t i, double a, double b)
+{
+    double d = a - b;
+    if (r->joint[i].type == DH_JOINT_REVOLUTE) {
+        d = fmod(d, 360.0);
+        if (d > 180.0) d -= 360.0;
+        if (d < -180.0) d += 360.0;
+    }
+    return fabs(d);
+}
+
+static double sol_dist(const dh_robot *r, const float *qs, const double *q)
+{
+    double m = 0.0;
+    uint32_t i;
+    for (i = 0; i < r->n; i++) {
+        double d = joint_dist(r, i, (double)qs[i], q[i]);
+        if (r->joint[i].type == DH_JOINT_PRISMATIC) d *= 1000.0; /* mm as "degrees" */
+        if (d > m) m = d;
+    }
+    return m;
+}
+
+static const char *q_str(const double *q, uint32_t n, int slot)
+{
+    static char buf[2][160];
+    uint32_t i;
+    size_t o = 0;
+    buf[slot][0] = 0;
+    for (i = 0; i < n && o < sizeof buf[slot]; i++)
+        o += (size_t)snprintf(buf[slot] + o, sizeof buf[slot] - o, "%s%.9g", i ? " " : "", q[i]);
+    return buf[slot];
+}
+
+/* ---- analysis and solving through the public API -------------------------- */
+
+static void build(const dhs_robot *d, dh_robot *r, dh_ikc_model_f32 *m)
+{
+    DHT_EQ_INT(dhs_build(d, r), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_f32(r, m), DH_OK);
+    DHT_EQ_INT(m->kind, r->n == 6u ? DH_IKC_PARALLEL_234 : DH_IKC_SCARA);
+    DHT_EQ_INT(m->why, DH_IKC_WHY_NONE);
+}
+
+/* every solution within the limits; DH_ERR_UNREACHABLE / DH_ERR_LIMIT: 0 */
+static uint32_t solve(const dh_robot *r, const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
+                      dh_ikc_sol_f32 *sol)
+{
+    uint32_t n = 99u, s, i;
+    const dh_status st = dh_ikc_f32(m, T, q_ref, 0u, sol, &n);
+    DHT_TRUE_MSG(st == DH_OK || st == DH_ERR_UNREACHABLE || st == DH_ERR_LIMIT, "dh_ikc_f32: status %d", (int)st);
+    DHT_TRUE(n <= DH_IKC_MAX_SOL);
+    DHT_TRUE((st == DH_OK) == (n >= 1u));
+    for (s = 0; s < n; s++) {
+        DHT_EQ_INT(sol[s].flags & DH_IKC_OUT_OF_LIMITS, 0);
+        for (i = 0; i < r->n; i++) {
+            const dh_joint *j = &r->joint[i];
+            DHT_TRUE_MSG(j->qmin > j->qmax || (sol[s].q[i] >= j->qmin && sol[s].q[i] <= j->qmax),
+                         "solution %u joint %u = %.9g outside [%g, %g]", (unsigned)s, (unsigned)i,
+                         (double)sol[s].q[i], (double)j->qmin, (double)j->qmax);
+        }
+    }
+    return n;
+}
+
+/* normalised distances of configuration q from the family's singularities:
+ * part[0] shoulder |u| / L (u: the joint 5 point's coordinate along x1),
+ * part[1] elbow |a2 a3 s3| / (|a2| + |a3|)^2, part[2] wrist |s5|; SCARA:
+ * part[1] = |a1 a2 s2| / (|a1| + |a2|)^2, the others 1. Returns the smallest. */
+static double sing_parts(const dhs_robot *d, const double *q, double part[3])
+{
+    dhs_mat4_d F[DHS_MAX_JOINTS];
+    double m;
+    int i;
+    part[0] = part[2] = 1.0;
+    if (d->n == 4u) {
+        const double a1 = fabs(d->j[0].a), a2 = fabs(d->j[1].a);
+        part[1] = a1 * a2 * fabs(sin((q[1] + d->j[1].theta_deg) * D2R)) / ((a1 + a2) * (a1 + a2));
+    } else {
+        const double a2 = fabs(d->j[1].a), a3 = fabs(d->j[2].a);
+        double L = 0, u;
+        unsigned j;
+        for (j = 0; j < d->n; j++) L += fabs(d->j[j].a) + fabs(d->j[j].d);
+        dhs_fk_desc(d, q, F, NULL);
+        /* along x1 from the origin of the frame before joint 1 (the base) */
+        u = (F[4].m[3][0] - d->base.m[3][0]) * F[0].m[0][0] + (F[4].m[3][1] - d->base.m[3][1]) * F[0].m[0][1] +
+            (F[4].m[3][2] - d->base.m[3][2]) * F[0].m[0][2];
+        part[0] = fabs(u) / L;
+        part[1] = a2 * a3 * fabs(sin((q[2] + d->j[2].theta_deg) * D2R)) / ((a2 + a3) * (a2 + a3));
+        part[2] = fabs(sin((q[4] + d->j[4].theta_deg) * D2R));
+    }
+    m = part[0];
+    for (i = 1; i < 3; i++)
+        if (part[i] < m) m = part[i];
+    return m;
+}
+
+static double sing_dist(const dhs_robot *d, const double *q)
+{
+    double part[3];
+    return sing_parts(d, q, part);
+}
+
+/* every solution FK-correct; returns the smallest distance to q */
+static double check_all(const dh_robot *r, const dh_mat4_f32 *T, const dh_ikc_sol_f32 *sol, uint32_t n,
+                        const double *q, const char *name, double *ep_max, double *er_max)
+{
+    double best = 1e9;
+    uint32_t s;
+    for (s = 0; s < n; s++) {
+        double ep, er, dd;
+        double qs[NJ];
+        uint32_t i;
+        for (i = 0; i < r->n; i++) qs[i] = (double)sol[s].q[i];
+        true_error(r, sol[s].q, T, &ep, &er);
+        DHT_TRUE_MSG(ep <= TOL_POS && er <= TOL_ROT,
+                     "%s: solution %u (flags 0x%x) q %s: error %.3g m, %.3g rad; generated by %s", name,
+                     (unsigned)s, (unsigned)sol[s].flags, q_str(qs, r->n, 0), ep, er, q_str(q, r->n, 1));
+        if (ep > *ep_max) *ep_max = ep;
+        if (er > *er_max) *er_max = er;
+        dd = sol_dist(r, sol[s].q, q);
+        if (dd < best) best = dd;
+    }
+    return best;
+}
+
+/* ---- completeness ----------------------------------------------------------- */
+
+static void ikc_complete(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < N_ROBOTS; ri++) {
+        const dhs_robot *d = g_robots[ri];
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+        const float qref[NJ] = { 0 };
+        double ep_max = 0, er_max = 0, worst = 0, worst_near = 0;
+        long it, n_it = DHT_ITER(10000), used = 0;
+        build(d, &r, &m);
+        for (it = 0; it < n_it; it++) {
+            double q[DHS_MAX_JOINTS], best, sd;
+            dh_mat4_f32 T;
+            uint32_t n;
+            dhs_random_q(d, q);
+            sd = sing_dist(d, q);
+            if (sd < 1e-2) continue;
+            used++;
+            target_of(&r, q, &T);
+            n = solve(&r, &m, &T, qref, sol);
+            DHT_TRUE_MSG(n >= 1u, "%s: no solution for q %s", d->name, q_str(q, r.n, 0));
+            best = check_all(&r, &T, sol, n, q, d->name, &ep_max, &er_max);
+            if (sd >= SING_FAR) {
+                DHT_TRUE_MSG(best <= 1e-3, "%s: generating q %s not among the %u solutions (nearest %.3g deg)",
+                             d->name, q_str(q, r.n, 0), (unsigned)n, best);
+            } else {
+                DHT_TRUE_MSG(best <= 1e-2, "%s: generating q %s (singular distance %.3g) not among the %u "
+                             "solutions (nearest %.3g deg)", d->name, q_str(q, r.n, 0), sd, (unsigned)n, best);
+                if (best > worst_near) worst_near = best;
+                continue;
+            }
+            if (best > worst) worst = best;
+        }
+        dht_printf("%s: %ld targets, max error %.3g m %.3g rad, generating q within %.3g deg "
+                   "(%.3g deg at singular distance 1e-2..%g)\n", d->name, used, ep_max, er_max, worst, worst_near,
+                   SING_FAR);
+    }
+}
+
+
+/* ---- singular cases ------------------------------------------------------- */
+
+/* solve, check every solution's FK; returns n and ORs the flags */
+static uint32_t solve_check(const dh_robot *r, const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *qref,
+                            const double *q, const char *what, uint32_t *flags_or, double *best)
+{
+    dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+    double ep = 0, er = 0;
+    uint32_t n = solve(r, m, T, qref, sol), s;
+    *flags_or = 0;
+    DHT_TRUE_MSG(n >= 1u, "%s: no solution for q %s", what, q_str(q, r->n, 0));
+    for (s = 0; s < n; s++) *flags_or |= sol[s].flags;
+    *best = check_all(r, T, sol, n, q, what, &ep, &er);
+    return n;
+}
+
+/* UR with q5 = 0 or 180: wrist singular, joint 6 taken from q_ref; with
+ * qref6 = the generating q6 the generating configuration is found. */
+static void ikc_ur_wrist_singular(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < 3u; ri++) {
+        const dhs_robot *d = g_robots[ri];
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        long it;
+        build(d, &r, &m);
+        for (it = 0; it < DHT_ITER(500); it++) {
+            double q[DHS_MAX_JOINTS], best;
+            float qref[NJ] = { 0 };
+            dh_mat4_f32 T;
+            uint32_t n, fl;
+            double part[3];
+            dhs_random_q(d, q);
+            q[4] = (it & 1) ? 180.0 : 0.0;
+            (void)sing_parts(d, q, part);
+            if (part[0] < SING_FAR || part[1] < SING_FAR) continue; /* only the wrist singular */
+            qref[5] = (float)(q[5] - 360.0 * floor((q[5] + 180.0) / 360.0));
+            target_of(&r, q, &T);
+            n = solve_check(&r, &m, &T, qref, q, d->name, &fl, &best);
+            DHT_TRUE_MSG((fl & DH_IKC_SING_WRIST) != 0u, "%s: q5 = %g not flagged wrist singular", d->name, q[4]);
+            /* the singular shoulder branch gives 2 (one per elbow), the other at most 4 */
+            DHT_TRUE_MSG(n <= 6u, "%s: %u solutions at a wrist singularity", d->name, (unsigned)n);
+            DHT_TRUE_MSG(best <= 1e-2, "%s: q %s not found with qref6 = q6 (nearest %.3g deg)", d->name,
+                         q_str(q, r.n, 0), best);
+        }
+    }
+}
+
+/* UR with the joint 5 point on the cylinder |u| = 0 (the two shoulder
+ * branches meet): flagged, FK-correct, returned once */
+static void ikc_ur_shoulder_singular(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < 3u; ri++) {
+        const dhs_robot *d = g_robots[ri];
+        const double a2 = d->j[1].a, a3 = d->j[2].a, e5 = d->j[4].d; /* sb = +1 for UR */
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        long it;
+        int found = 0;
+        build(d, &r, &m);
+        for (it = 0; it < DHT_ITER(500); it++) {
+            double q[DHS_MAX_JOINTS], best, X, Y, R, c, phi;
+            const float qref[NJ] = { 0 };
+            dh_mat4_f32 T;
+            uint32_t n, fl;
+            dhs_random_q(d, q);
+            /* planar x of the joint 5 point: a2 c2 + a3 c23 + e5 sin(phi) = 0 */
+            phi = (q[1] + q[2] + q[3]) * D2R;
+            X = a2 + a3 * cos(q[2] * D2R);
+            Y = a3 * sin(q[2] * D2R);
+            R = sqrt(X * X + Y * Y);
+            c = -e5 * sin(phi);
+            if (fabs(c) >= R) continue;
+            q[1] = (-atan2(Y, X) + ((it & 1) ? 1 : -1) * acos(c / R)) / D2R;
+            q[3] = phi / D2R - q[1] - q[2];
+            DHT_TRUE(sing_dist(d, q) < 1e-12);
+            target_of(&r, q, &T);
+            n = solve_check(&r, &m, &T, qref, q, d->name, &fl, &best);
+            DHT_TRUE_MSG((fl & DH_IKC_SING_SHOULDER) != 0u, "%s: u = 0 not flagged shoulder singular (q %s)",
+                         d->name, q_str(q, r.n, 0));
+            DHT_TRUE_MSG(n <= 4u, "%s: %u solutions with the shoulder branches merged", d->name, (unsigned)n);
+            found++;
+        }
+        DHT_TRUE(found > 0);
+    }
+}
+
+/* stretched or folded elbow: UR q3 = 0 / 180, SCARA q2 = 0 */
+static void ikc_elbow_singular(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < N_ROBOTS; ri++) {
+        const dhs_robot *d = g_robots[ri];
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        long it;
+        build(d, &r, &m);
+        for (it = 0; it < DHT_ITER(500); it++) {
+            double q[DHS_MAX_JOINTS], best;
+            const float qref[NJ] = { 0 };
+            dh_mat4_f32 T;
+            uint32_t n, fl, j = (d->n == 4u) ? 1u : 2u;
+            double part[3];
+            dhs_random_q(d, q);
+            q[j] = (d->n == 6u && (it & 1)) ? 180.0 : 0.0;
+            (void)sing_parts(d, q, part);
+            if (part[0] < SING_FAR || part[2] < SING_FAR) continue; /* only the elbow singular */
+            target_of(&r, q, &T);
+            n = solve_check(&r, &m, &T, qref, q, d->name, &fl, &best);
+            DHT_TRUE_MSG((fl & DH_IKC_SING_ELBOW) != 0u, "%s: q%u = %g not flagged elbow singular (q %s)", d->name,
+                         (unsigned)j + 1u, q[j], q_str(q, r.n, 0));
+            /* UR: the stretched branch once, its wrist flip and the other shoulder up to 2 + 4 */
+            DHT_TRUE_MSG(n <= (d->n == 4u ? 1u : 7u), "%s: %u solutions with the elbow stretched", d->name,
+                         (unsigned)n);
+        }
+    }
+}
+
+/* ---- unreachable ------------------------------------------------------------- */
+
+static void ikc_unreachable(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < N_ROBOTS; ri++) {
+        const dhs_robot *d = g_robots[ri];
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+        const float qref[NJ] = { 0 };
+        double q[DHS_MAX_JOINTS];
+        dh_mat4_f32 T;
+        long it;
+        uint32_t n;
+        build(d, &r, &m);
+        for (it = 0; it < DHT_ITER(200); it++) {
+            double L = 0, sc, rxy;
+            unsigned i;
+            for (i = 0; i < d->n; i++) L += fabs(d->j[i].a) + fabs(d->j[i].d);
+            dhs_random_q(d, q);
+            target_of(&r, q, &T);
+            /* beyond the reach: the horizontal position moved out to 1.2 .. 5 L */
+            rxy = sqrt((double)T.m[3][0] * T.m[3][0] + (double)T.m[3][1] * T.m[3][1]);
+            sc = dht_rand_uniform(1.2, 5.0) * L / (rxy > 1e-3 ? rxy : 1e-3);
+            T.m[3][0] = (float)(T.m[3][0] * sc);
+            T.m[3][1] = (float)(T.m[3][1] * sc);
+            n = solve(&r, &m, &T, qref, sol);
+            DHT_TRUE_MSG(n == 0u, "%s: %u solutions for the unreachable p = (%g, %g, %g)", d->name, (unsigned)n,
+                         (double)T.m[3][0], (double)T.m[3][1], (double)T.m[3][2]);
+        }
+        if (d->n == 4u) {
+            /* SCARA: a tool axis not parallel to the joint axes */
+            dh_mat4_f32 Rx, T2;
+            dhs_random_q(d, q);
+            target_of(&r, q, &T);
+            DHT_EQ_INT(dh_mat4_rotx_f32(0.01f, &Rx), DH_OK);
+            dh_mat4_mul_f32(&T, &Rx, &T2);
+            T = T2;
+            DHT_EQ_INT(solve(&r, &m, &T, qref, sol), 0);
+        }
+    }
+}
+
+/* ---- numerical IK finds nothing the closed form misses ------------------- */
+
+static void ikc_vs_numerical(void)
+{
+    static float work[DH_IK_WORK_FLOATS(DH_MAX_JOINTS)];
+    unsigned ri;
+    for (ri = 0; ri < N_ROBOTS; ri++) {
+        const dhs_robot *d = g_robots[ri];
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        dh_ik_params p;
+        long it, st_n, conv = 0, near = 0;
+        double worst = 0;
+        build(d, &r, &m);
+        dh_ik_params_default(&r, &p);
+        p.restarts = 0;
+        p.max_iter = 60;
+        if (d->n == 4u) p.mask = DH_IK_POSITION | DH_IK_RZ;
+        for (it = 0; it < DHT_ITER(1000); it++) {
+            double q[DHS_MAX_JOINTS];
+            dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+            const float qref[NJ] = { 0 };
+            dh_mat4_f32 T;
+            uint32_t n;
+            dhs_random_q(d, q);
+            target_of(&r, q, &T);
+            n = solve(&r, &m, &T, qref, sol);
+            DHT_TRUE(n >= 1u);
+            for (st_n = 0; st_n < DHT_ITER(200); st_n++) {
+                double q0d[DHS_MAX_JOINTS], qn[DHS_MAX_JOINTS], best = 1e9, ep, er;
+                float q0[DHS_MAX_JOINTS], qo[DHS_MAX_JOINTS];
+                dh_ik_result res;
+                uint32_t i, s;
+                dhs_random_q(d, q0d);
+                for (i = 0; i < r.n; i++) q0[i] = (float)q0d[i];
+                if (dh_ik_f32(&r, &T, q0, &p, work, sizeof work / sizeof work[0], qo, &res) != DH_OK) continue;
+                true_error(&r, qo, &T, &ep, &er);
+                if (ep > 1e-5 || er > 1e-4) continue;
+                for (i = 0; i < r.n; i++) qn[i] = (double)qo[i];
+                if (sing_dist(d, qn) < 1e-2) { /* the solution set is flat there: joint distance says little */
+                    near++;
+                    continue;
+                }
+                conv++;
+                for (s = 0; s < n; s++) {
+                    double dd = sol_dist(&r, sol[s].q, qn);
+                    if (dd < best) best = dd;
+                }
+                if (best > worst) worst = best;
+                DHT_TRUE_MSG(best <= 0.5, "%s: numerical solution %s (error %.3g m %.3g rad) not among the %u "
+                             "closed-form ones (nearest %.3g deg); target q %s", d->name, q_str(qn, r.n, 0), ep, er,
+                             (unsigned)n, best, q_str(q, r.n, 1));
+            }
+        }
+        dht_printf("%s: %ld converged numerical solutions, all among the closed-form ones (within %.3g deg; "
+                   "%ld more within 1e-2 of a singularity not compared)\n", d->name, conv, worst, near);
+    }
+}
+
+/* ---- frames, conventions, limits, statuses ------------------------------- */
+
+/* completeness and FK of one description (any base, tool, convention);
+ * sdh: a standard-DH description of the same chain, for the singular distance */
+static void complete_desc(const dhs_robot *d, const dhs_robot *sdh, long count)
+{
+    dh_robot r;
+    dh_ikc_model_f32 m;
+    dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+    double ep_max = 0, er_max = 0, worst = 0;
+    long it, used = 0;
+    build(d, &r, &m);
+    for (it = 0; it < count; it++) {
+        double q[DHS_MAX_JOINTS], best;
+        dh_mat4_f32 T;
+        uint32_t n;
+        dhs_random_q(d, q);
+        if (sing_dist(sdh, q) < SING_FAR) continue;
+        used++;
+        target_of(&r, q, &T);
+        n = solve(&r, &m, &T, NULL, sol);
+        DHT_TRUE_MSG(n >= 1u, "%s: no solution for q %s", d->name, q_str(q, r.n, 0));
+        best = check_all(&r, &T, sol, n, q, d->name, &ep_max, &er_max);
+        DHT_TRUE_MSG(best <= 1e-3, "%s: generating q %s not among the %u solutions (nearest %.3g deg)", d->name,
+                     q_str(q, r.n, 0), (unsigned)n, best);
+        if (best > worst) worst = best;
+    }
+    dht_printf("%s: %ld targets, max error %.3g m %.3g rad, generating q within %.3g deg\n", d->name, used, ep_max,
+               er_max, worst);
+}
+
+/* a rigid frame from a random rotation vector and translation (double) */
+static void random_frame(dhs_mat4_d *F, double tmax)
+{
+    dhs_mat4_d A, B;
+    dhs_rotz(&A, dht_rand_uniform(-180, 180));
+    dhs_rotx(&B, dht_rand_uniform(-180, 180));
+    dhs_mul(F, &A, &B);
+    dhs_rotz(&A, dht_rand_uniform(-180, 180));
+    dhs_mul(F, F, &A);
+    F->m[3][0] = dht_rand_uniform(-tmax, tmax);
+    F->m[3][1] = dht_rand_uniform(-tmax, tmax);
+    F->m[3][2] = dht_rand_uniform(-tmax, tmax);
+}
+
+/* frames rounded to float and back, so that the description and the
+ * float robot hold the same rigid frame */
+static void frame_f32(dhs_mat4_d *F)
+{
+    int c, k;
+    for (c = 0; c < 4; c++)
+        for (k = 0; k < 4; k++) F->m[c][k] = (double)(float)F->m[c][k];
+}
+
+static void ikc_ur_base_tool(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < N_ROBOTS; ri++) {
+        dhs_robot d = *g_robots[ri];
+        random_frame(&d.base, 0.5);
+        random_frame(&d.tool, 0.15);
+        frame_f32(&d.base);
+        frame_f32(&d.tool);
+        if (d.n == 4u) {
+            /* SCARA: a base and tool about the joint axes keep the tool axis reachable */
+            dhs_rotz(&d.tool, dht_rand_uniform(-180, 180));
+            d.tool.m[3][0] = 0.05;
+            d.tool.m[3][2] = -0.1;
+            frame_f32(&d.tool);
+        }
+        complete_desc(&d, &d, DHT_ITER(2000));
+    }
+}
+
+/* UR5 in modified DH: joint i takes the twist and length of SDH joint
+ * i - 1 (Tx(a) Rx(alpha) = Rx(alpha) Tx(a)); SDH joint 6's (0, 0) drops out */
+static void ikc_ur5_mdh(void)
+{
+    dhs_robot d = dhs_ur5_m;
+    unsigned i;
+    d.name = "ur5 (modified DH)";
+    d.conv = DH_CONV_MODIFIED;
+    for (i = d.n - 1u; i >= 1u; i--) {
+        d.j[i].a = d.j[i - 1u].a;
+        d.j[i].alpha_deg = d.j[i - 1u].alpha_deg;
+    }
+    d.j[0].a = 0.0;
+    d.j[0].alpha_deg = 0.0;
+    /* the conversion is exact: same FK as the SDH table */
+    {
+        double q[DHS_MAX_JOINTS];
+        dhs_mat4_d A, B;
+        int c, k;
+        dhs_random_q(&d, q);
+        dhs_fk_desc(&d, q, NULL, &A);
+        dhs_fk_desc(&dhs_ur5_m, q, NULL, &B);
+        for (c = 0; c < 4; c++)
+            for (k = 0; k < 4; k++) DHT_NEAR(A.m[c][k], B.m[c][k], 1e-12);
+    }
+    complete_desc(&d, &dhs_ur5_m, DHT_ITER(2000));
+    /* and with a base and a tool */
+    random_frame(&d.base, 0.5);
+    random_frame(&d.tool, 0.15);
+    frame_f32(&d.base);
+    frame_f32(&d.tool);
+    {
+        dhs_robot sdh = dhs_ur5_m;
+        sdh.base = d.base;
+        complete_desc(&d, &sdh, DHT_ITER(2000));
+    }
+}
+
+/* limits: the Cobra's joints 1 and 2 (+-50, +-88) leave out the other elbow
+ * for many targets; kept and flagged with DH_IKC_KEEP_OUT_OF_LIMITS */
+static void ikc_limits(void)
+{
+    dh_robot r;
+    dh_ikc_model_f32 m;
+    long it, cut = 0;
+    build(&dhs_cobra600_m, &r, &m);
+    for (it = 0; it < DHT_ITER(2000); it++) {
+        double q[DHS_MAX_JOINTS], ep = 0, er = 0;
+        dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL], all[DH_IKC_MAX_SOL];
+        dh_mat4_f32 T;
+        uint32_t n = 0, na = 0, s, flagged = 0;
+        dhs_random_q(&dhs_cobra600_m, q);
+        target_of(&r, q, &T);
+        n = solve(&r, &m, &T, NULL, sol);
+        DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, all, &na), DH_OK);
+        (void)check_all(&r, &T, all, na, q, "cobra600 kept", &ep, &er);
+        for (s = 0; s < na; s++) flagged += (all[s].flags & DH_IKC_OUT_OF_LIMITS) ? 1u : 0u;
+        DHT_EQ_INT(na - flagged, n);
+        if (flagged) cut++;
+    }
+    DHT_TRUE(cut > 0);
+    /* every solution out of the limits: DH_ERR_LIMIT */
+    {
+        double q[DHS_MAX_JOINTS] = { 40.0, 80.0, 0.1, 10.0 };
+        dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+        dh_mat4_f32 T;
+        uint32_t n = 7u;
+        target_of(&r, q, &T);
+        T.m[3][2] += 0.5f; /* joint 3 would have to go to 0.6 m (limit 0.21) */
+        DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, 0u, sol, &n), DH_ERR_LIMIT);
+        DHT_EQ_INT(n, 0);
+        DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n), DH_OK);
+        DHT_TRUE(n >= 1u);
+    }
+}
+
+/* statuses of unreachable targets */
+static void ikc_unreachable_status(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < N_ROBOTS; ri++) {
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+        dh_mat4_f32 T;
+        double q[DHS_MAX_JOINTS];
+        uint32_t n = 5u;
+        build(g_robots[ri], &r, &m);
+        dhs_random_q(g_robots[ri], q);
+        target_of(&r, q, &T);
+        T.m[3][0] += 10.0f;
+        DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n), DH_ERR_UNREACHABLE);
+        DHT_EQ_INT(n, 0);
+        if (r.n == 4u) {
+            dh_mat4_f32 Rx, T2;
+            target_of(&r, q, &T);
+            DHT_EQ_INT(dh_mat4_rotx_f32(0.01f, &Rx), DH_OK);
+            dh_mat4_mul_f32(&T, &Rx, &T2);
+            n = 5u;
+            DHT_EQ_INT(dh_ikc_f32(&m, &T2, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n), DH_ERR_UNREACHABLE);
+            DHT_EQ_INT(n, 0);
+        }
+    }
+}
+
+/* what is recognised: a twist off by 1 degree or a joint 5 length breaks
+ * the family; signs and offsets keep it */
+static void ikc_detect(void)
+{
+    dh_robot r;
+    dh_ikc_model_f32 m;
+    dhs_robot d = dhs_ur5_m;
+    d.j[1].alpha_deg = 1.0;
+    DHT_EQ_INT(dhs_build(&d, &r), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_f32(&r, &m), DH_ERR_UNAVAILABLE);
+    DHT_EQ_INT(m.kind, DH_IKC_NONE);
+    d = dhs_ur5_m;
+    d.j[4].a = 0.01;
+    DHT_EQ_INT(dhs_build(&d, &r), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_f32(&r, &m), DH_ERR_UNAVAILABLE);
+    d = dhs_cobra600_m;
+    d.j[1].alpha_deg = 179.0;
+    DHT_EQ_INT(dhs_build(&d, &r), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_f32(&r, &m), DH_ERR_UNAVAILABLE);
+    /* other signs, offsets and shoulder / wrist offsets: still the family, still complete */
+    d = dhs_ur10_m;
+    d.name = "ur10 (signs, offsets)";
+    d.j[0].alpha_deg = -90.0;
+    d.j[0].a = 0.05;
+    d.j[1].alpha_deg = 180.0;
+    d.j[2].d = 0.03;
+    d.j[3].alpha_deg = -90.0;
+    d.j[3].a = 0.02;
+    d.j[4].alpha_deg = 90.0;
+    d.j[1].theta_deg = 20.0;
+    d.j[4].theta_deg = -90.0;
+    d.j[5].a = 0.01;
+    d.j[5].alpha_deg = 30.0;
+    complete_desc(&d, &d, DHT_ITER(2000));
+    d = dhs_cobra600_m;
+    d.name = "cobra600 (signs, offsets)";
+    d.j[0].alpha_deg = 180.0;
+    d.j[1].alpha_deg = 0.0;
+    d.j[2].a = 0.02;
+    d.j[2].theta_deg = 30.0;
+    d.j[2].qmin = -0.3;
+    d.j[2].qmax = 0.3;
+    d.j[3].d = 0.05;
+    d.j[0].theta_deg = 15.0;
+    complete_desc(&d, &d, DHT_ITER(2000));
+}
+
+static const dht_case cases[] = {
+    DHT_CASE(ikc_complete),
+    DHT_CASE(ikc_ur_wrist_singular),
+    DHT_CASE(ikc_ur_shoulder_singular),
+    DHT_CASE(ikc_elbow_singular),
+    DHT_CASE(ikc_unreachable),
+    DHT_CASE(ikc_vs_numerical),
+    DHT_CASE(ikc_ur_base_tool),
+    DHT_CASE(ikc_ur5_mdh),
+    DHT_CASE(ikc_limits),
+    DHT_CASE(ikc_unreachable_status),
+    DHT_CASE(ikc_detect),
+};
+DHT_MAIN(cases)
