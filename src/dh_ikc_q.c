@@ -1,0 +1,817 @@
+/*
+ * dh_ikc_q.c - closed-form inverse kinematics, fixed point (integer only:
+ * no float, no libm, no 64-bit division; checked by tools/check.sh guards):
+ * the front end (dh_ikc_analyse_q, dh_ikc_q, dh_ikc_nearest_q) and the
+ * spherical-wrist families DH_IKC_WRIST_RRR (Puma 560, KUKA KR5, ABB
+ * IRB140) and DH_IKC_WRIST_RRP (Stanford arm). Contract: dh_ikc.h and the
+ * private interface dh_ikc_impl.h; method: docs/design.md ("Closed-form
+ * inverse kinematics"), after Paul 1981 ch. 3.
+ *
+ * Formats. Lengths are raw dh_qpos (DH_QPOS_FRAC fraction bits, written F
+ * below); squares and products of two lengths are int64 with 2F fraction
+ * bits; rotations and sines Q2.30; angles Q16.16 degrees. The code never
+ * depends on F: every formula is homogeneous in the length unit.
+ *
+ * Ranges (why nothing wraps). analyse accepts a chain only when every
+ * canonical |a|, |d| <= 2^29 raw (else DH_IKC_WHY_PATH); the solver returns
+ * DH_ERR_OVERFLOW when a wrist-centre component or the planar vector
+ * (vx, vy) exceeds 2^30 raw (2^14 units at F = 16). Then every square is
+ * below 2^60, every sum of the few squares used below 2^62 (the domain of
+ * dh_q_isqrt62), and each atan2 argument pair is an int64 brought below
+ * 2^30 by one common rounding shift (ikq_atan2: only the ratio matters).
+ * Rotation entries of a rigid target (within 2^-10 of orthonormal) stay
+ * below 1.001 in magnitude, so their rotated copies are rounded without a
+ * range check and are never INT32_MIN.
+ *
+ * Position, RRR (alpha1 = +-90 with tau = sin alpha1, alpha2 in {0, 180}
+ * with sigma = cos alpha2; joints 1-based in formulas, 0-based in code).
+ * The wrist centre o = p - R06 (a6, d6 s_alpha6, d6 c_alpha6) is the origin
+ * of frame 4. In frame 1 it is Rz(t2) (A, B) + h z with
+ * A = a2 + a3 c3 + e s3, B = sigma (a3 s3 - e c3), e = s_alpha3 d4,
+ * h = d2 + sigma (d3 + c_alpha3 d4); frame 0 gives
+ * (px, py) = Rz(t1) (u, -tau h), u = a1 + x1, so u = +-sqrt(px^2 + py^2 - h^2)
+ * (the shoulder branches), t1 = atan2(tau h px + u py, u px - tau h py),
+ * and (vx, vy) = (u - a1, tau (pz - d1)) = Rz(t2) (A, B). Then
+ * |v|^2 - a2^2 - rho^2 = 2 a2 rho cos(t3 - phi) (rho^2 = a3^2 + e^2,
+ * phi = atan2(e, a3)): with D = |2 a2 rho| and K the left side times sgn
+ * (a2), t3 = phi +- atan2(sqrt((D - K)(D + K)), K). Each factor is shifted
+ * below 2^31 on its own (the near-zero one keeps its bits, which is what
+ * the stretched elbow needs), the shifts made even in sum, and K shifted by
+ * half the sum. t2 = atan2(A vy - B vx, A vx + B vy).
+ *
+ * Position, RRP (alpha1, alpha2 = +-90, tau1, tau2; joint 3 prismatic with
+ * fixed theta3). A3 (0, 0, d4) = Rz(theta3) (a3, -e) + L z with
+ * L = d3 + c_alpha3 d4, so in frame 1 the wrist centre is
+ * Rz(t2) (X2, -tau2 L) + h z, X2 = a2 + gx, h = d2 + tau2 gy,
+ * (gx, gy) = Rz(theta3) (a3, -e). t1 as above; |v|^2 = X2^2 + L^2 gives
+ * L = +-sqrt(|v|^2 - X2^2) (the two signs: ELBOW_ALT is the negative
+ * extension, which limits on d3 normally remove) and
+ * t2 = atan2(X2 vy + tau2 L vx, X2 vx - tau2 L vy).
+ *
+ * Wrist (both families). R03 = Rz(t1) Rx(alpha1) Rz(tb) C with tb = t2 +
+ * sigma t3, C = Rx(alpha2 + alpha3) (RRR) or tb = t2, C = Rx(alpha2)
+ * Rz(theta3) Rx(alpha3) (RRP); C is a model constant. Only two columns of
+ * M = R03^T R06 Rx(alpha6)^T are needed: M e_x = R03^T (R06 e_x) and
+ * M e_z = R03^T (s_alpha6 R06 e_y + c_alpha6 R06 e_z); the shoulder part
+ * Rx(alpha1)^T Rz(t1)^T is applied once per shoulder branch. For the
+ * orthogonal wrist (alpha4, alpha5 = +-90, signs s4a, s5a):
+ * M e_z = (s5a s5 c4, s5a s5 s4, -s4a s5a c5), so t4 = atan2(s5a m23, s5a m13)
+ * (s5 >= 0 branch), s5 = s5a (c4 m13 + s4 m23), c5 = -s4a s5a m33, and with
+ * m' = Rz(-t4) M e_x = (c5 c6, -s4a s5a s6, s4a s5 c6):
+ * t6 = atan2(-s4a s5a m'y, c5 m'x + s4a s5 m'z). The other wrist branch is
+ * (t4 + 180, -t5, t6 + 180), no second atan2. Wrist singular (|m13| and
+ * |m23| both <= 2^11 LSB: orientation error <= 2.7e-6 rad): t4 = the reference, t5 and t6 from
+ * the same formulas (t6 absorbs the choice), one solution.
+ *
+ * Cost (all solutions of the Puma 560): 2 atan2 for joint 1, 2 for the
+ * elbow, 4 for joint 2, 3 per arm branch for the wrist (12), 3 integer
+ * square roots (u, two elbow radicands), sin/cos of t1, t3, tb, t4.
+ */
+#include "dhmath/dh_ikc.h"
+#include "dhmath/dh_fixed.h"
+#include "dhmath/dh_trig.h"
+#include "dh_ikc_impl.h"
+#include "dh_internal.h"
+
+#define Q16_180 ((int32_t)11796480)
+#define Q16_360 ((int32_t)23592960)
+/* |cos alpha| or |sin alpha| this small counts as zero (6e-8) */
+#define IKQ_TOL_ALPHA 64
+/* rigidity of the target, base and tool: |R^T R - I| <= 2^-10 */
+#define IKQ_RIGID_TOL ((int32_t)1 << 20)
+/* wrist singular: |m13|, |m23| <= 2^-19 (orientation error <= 2.7e-6 rad) */
+#define IKQ_SING_WRIST ((int32_t)1 << 11)
+/* shoulder singular: wrist centre within 2^-12 units of axis 1 */
+#define IKQ_SING_AXIS ((DH_QPOS_ONE >> 12) + 1)
+/* canonical lengths and intermediate lengths, raw */
+#define IKQ_LEN_LIM ((int32_t)1 << 29)
+#define IKQ_POS_LIM ((int64_t)1 << 30)
+
+/* model constants of the wrist families (m->k) */
+#define K_TAU1 0 /* sign of sin alpha1 */
+#define K_SIG 1  /* RRR: sign of cos alpha2 (sigma); RRP: sign of sin alpha2 (tau2) */
+#define K_S4 2   /* sign of sin alpha4 */
+#define K_S5 3   /* sign of sin alpha5 */
+#define K_H 4    /* h, dh_qpos */
+#define K_E 5    /* RRR: e = s_alpha3 d4; RRP: X2 */
+#define K_RHO 6  /* RRR: delta = rho - |a2| (dh_qpos) */
+#define K_PHI 7  /* RRR: phi, Q16.16 deg */
+#define K_LOFF 8 /* RRP: c_alpha3 d4 */
+#define K_W 9    /* 9..11: w = (a6, d6 s_alpha6, d6 c_alpha6) */
+#define K_C 12   /* 12..20: C row-major, Q2.30 */
+
+static const dh_frame_q ikq_identity = {
+    {{DH_Q_ONE30, 0, 0}, {0, DH_Q_ONE30, 0}, {0, 0, DH_Q_ONE30}}, {0, 0, 0}};
+
+/* ---- small helpers ------------------------------------------------------ */
+
+/* x in (-540, 540] deg -> (-180, 180] */
+DH_INLINE int32_t ikq_wrap180(int32_t x)
+{
+    if (x > Q16_180) return x - Q16_360;
+    if (x <= -Q16_180) return x + Q16_360;
+    return x;
+}
+
+/* any int32 angle -> (-180, 180] (32-bit remainder, no negation of INT32_MIN) */
+static int32_t ikq_reduce(int32_t x)
+{
+    const uint32_t a = dh_q_abs_u32(x) % (uint32_t)Q16_360;
+    int32_t r = (int32_t)a;
+    if (x < 0) r = -r;
+    return ikq_wrap180(r);
+}
+
+DH_INLINE int32_t ikq_sign(int32_t x)
+{
+    return x < 0 ? -1 : 1;
+}
+
+DH_INLINE int ikq_small(int32_t x)
+{
+    return x <= IKQ_TOL_ALPHA && x >= -IKQ_TOL_ALPHA;
+}
+
+DH_INLINE uint64_t ikq_abs64(int64_t x)
+{
+    return x < 0 ? (uint64_t)0 - (uint64_t)x : (uint64_t)x;
+}
+
+DH_INLINE int32_t ikq_r30(int64_t x)
+{
+    return dh_q_rnd30_fit(x);
+}
+
+/* round(n / d) for |n| < 2^62, 0 < d < 2^32, quotient below 2^31 in
+ * magnitude: restoring division bit by bit (no 64-bit division) */
+static DH_NOINLINE int32_t ikq_div_rnd(int64_t n, uint64_t d)
+{
+    uint64_t a = ikq_abs64(n) + (d >> 1), r = 0u, qt = 0u;
+    int i;
+    for (i = 63; i >= 0; i--) {
+        r = (r << 1) | ((a >> i) & 1u);
+        qt <<= 1;
+        if (r >= d) {
+            r -= d;
+            qt |= 1u;
+        }
+    }
+    return n < 0 ? -(int32_t)qt : (int32_t)qt;
+}
+
+/* atan2 of two int64 of a common scale (|.| < 2^63): both rounded by the
+ * same shift below 2^30 + 1, then dh_atan2_q; (0, 0) gives 0 */
+static DH_NOINLINE int32_t ikq_atan2(int64_t y, int64_t x)
+{
+    uint64_t mag = ikq_abs64(y) | ikq_abs64(x);
+    unsigned s = 0u;
+    dh_q16 a = 0;
+    while ((mag >> 38) != 0u) {
+        mag >>= 8;
+        s += 8u;
+    }
+    while ((mag >> 30) != 0u) {
+        mag >>= 1;
+        s++;
+    }
+    if (s != 0u) {
+        y = dh_q_rshr(y, s);
+        x = dh_q_rshr(x, s);
+    }
+    (void)dh_atan2_q((int32_t)y, (int32_t)x, &a);
+    return a;
+}
+
+/* v <- Rz(t)^T v in the plane (x, y): (c x + s y, c y - s x) */
+static DH_NOINLINE void ikq_rot2(int32_t *x, int32_t *y, int32_t c, int32_t s)
+{
+    const int32_t a = *x, b = *y;
+    *x = ikq_r30(dh_q_mla64(dh_q_mul64(c, a), s, b));
+    *y = ikq_r30(dh_q_mul64(c, b) - dh_q_mul64(s, a));
+}
+
+/* 1 when F's rotation is within 2^-10 of orthonormal with det > 0 */
+static DH_NOINLINE int ikq_rigid(const dh_frame_q *F)
+{
+    const dh_q30(*c)[3] = F->r;
+    int32_t x, y, z;
+    if (dh_frame_ortho_error_q(F) > IKQ_RIGID_TOL) return 0;
+    x = ikq_r30(dh_q_mul64(c[1][1], c[2][2]) - dh_q_mul64(c[1][2], c[2][1]));
+    y = ikq_r30(dh_q_mul64(c[1][2], c[2][0]) - dh_q_mul64(c[1][0], c[2][2]));
+    z = ikq_r30(dh_q_mul64(c[1][0], c[2][1]) - dh_q_mul64(c[1][1], c[2][0]));
+    return dh_q_mla64(dh_q_mla64(dh_q_mul64(c[0][0], x), c[0][1], y), c[0][2], z) > 0;
+}
+
+/* ---- analysis ----------------------------------------------------------- */
+
+/* spherical wrist of the canonical chain: a4 = a5 = d5 = 0, alpha4, alpha5 not 0 or 180 */
+static int ikq_spherical(const dh_ikc_model_q *m)
+{
+    return m->a[3] == 0 && m->a[4] == 0 && m->d[4] == 0 && !ikq_small(m->sa[3]) && !ikq_small(m->sa[4]);
+}
+
+/* canonical chain, limits, pre/post inverses (m->n set) */
+static DH_NOINLINE dh_status ikq_chain(const dh_robot *r, dh_ikc_model_q *m)
+{
+    const uint32_t n = r->n;
+    const int mdh = (r->conv == DH_CONV_MODIFIED);
+    uint32_t i;
+    int bad = 0;
+    dh_frame_q f;
+
+    for (i = 0; i < n; i++) {
+        const dh_joint *j = &r->joint[i];
+        const dh_joint *nx = mdh ? ((i + 1u < n) ? &r->joint[i + 1u] : NULL) : j;
+        if (j->type == DH_JOINT_PRISMATIC) m->prismatic |= 1u << i;
+        m->d[i] = j->d_q;
+        m->off[i] = j->theta_q;
+        m->qmin[i] = j->qmin_q;
+        m->qmax[i] = j->qmax_q;
+        if (nx != NULL) {
+            m->a[i] = nx->a_q;
+            m->sa[i] = nx->sa_q;
+            m->ca[i] = nx->ca_q;
+        } else {
+            m->a[i] = 0;
+            m->sa[i] = 0;
+            m->ca[i] = DH_Q_ONE30;
+        }
+        if (dh_q_abs_u32(m->a[i]) > (uint32_t)IKQ_LEN_LIM || dh_q_abs_u32(m->d[i]) > (uint32_t)IKQ_LEN_LIM) bad = 1;
+    }
+    if (!ikq_rigid(&r->base_q) || !ikq_rigid(&r->tool_q)) {
+        m->why = DH_IKC_WHY_PATH;
+        return DH_ERR_NOT_RIGID;
+    }
+    f = r->base_q;
+    if (mdh) {
+        /* pre = base Rx(alpha_0) Tx(a_0) */
+        dh_frame_q x = ikq_identity;
+        x.r[1][1] = r->joint[0].ca_q;
+        x.r[1][2] = r->joint[0].sa_q;
+        x.r[2][1] = -r->joint[0].sa_q;
+        x.r[2][2] = r->joint[0].ca_q;
+        x.p[0] = r->joint[0].a_q;
+        if (dh_frame_mul_q(&r->base_q, &x, &f) != DH_OK) bad = 1;
+    }
+    if (dh_frame_inv_q(&f, &m->pre_inv) != DH_OK) bad = 1;
+    if (dh_frame_inv_q(&r->tool_q, &m->post_inv) != DH_OK) bad = 1;
+    if (bad) {
+        m->why = DH_IKC_WHY_PATH;
+        return DH_ERR_UNAVAILABLE;
+    }
+    return DH_OK;
+}
+
+/* family, or the reason for none */
+static DH_NOINLINE void ikq_classify(dh_ikc_model_q *m)
+{
+    const uint32_t p = m->prismatic;
+    m->why = DH_IKC_WHY_NONE;
+    if (m->n == 6u) {
+        if (dh_ikc_detect_wrist_q_(m)) return;
+        if (dh_ikc_detect_par234_q_(m)) {
+            m->kind = DH_IKC_PARALLEL_234;
+            return;
+        }
+        m->kind = DH_IKC_NONE;
+        if (p != 0u && p != 0x4u)
+            m->why = DH_IKC_WHY_JOINTS;
+        else if (ikq_spherical(m))
+            m->why = DH_IKC_WHY_AXES;
+        else
+            m->why = DH_IKC_WHY_WRIST;
+    } else if (m->n == 4u) {
+        if (dh_ikc_detect_scara_q_(m)) {
+            m->kind = DH_IKC_SCARA;
+            return;
+        }
+        m->kind = DH_IKC_NONE;
+        m->why = (p == 0x4u) ? DH_IKC_WHY_AXES : DH_IKC_WHY_JOINTS;
+    } else {
+        m->kind = DH_IKC_NONE;
+        m->why = DH_IKC_WHY_JOINTS;
+    }
+}
+
+dh_status dh_ikc_analyse_q(const dh_robot *r, dh_ikc_model_q *m)
+{
+    uint32_t i;
+    dh_status st;
+
+    DH_ASSERT(r != NULL && m != NULL);
+    memset(m, 0, sizeof *m);
+    m->kind = DH_IKC_NONE;
+    m->why = DH_IKC_WHY_JOINTS;
+    m->pre_inv = ikq_identity;
+    m->post_inv = ikq_identity;
+    if ((r->conv != DH_CONV_STANDARD && r->conv != DH_CONV_MODIFIED) || r->n > DH_MAX_JOINTS) return DH_ERR_ARG;
+    for (i = 0; i < r->n; i++)
+        if (r->joint[i].type != DH_JOINT_REVOLUTE && r->joint[i].type != DH_JOINT_PRISMATIC) return DH_ERR_ARG;
+    if ((r->flags & DH_ROBOT_HAS_Q) == 0u) {
+        m->why = DH_IKC_WHY_PATH;
+        return DH_ERR_UNAVAILABLE;
+    }
+    if (r->n == 0u || r->n > DH_IKC_JOINTS) return DH_ERR_UNAVAILABLE;
+    m->n = r->n;
+    st = ikq_chain(r, m);
+    if (st != DH_OK) return st;
+    ikq_classify(m);
+    return (m->kind != DH_IKC_NONE) ? DH_OK : DH_ERR_UNAVAILABLE;
+}
+
+/* ---- wrist families: detector ------------------------------------------- */
+
+/* C = Rx(alpha2) Rz(theta3) Rx(alpha3) (RRP) into k[K_C..] */
+static DH_NOINLINE void ikq_c_rrp(dh_ikc_model_q *m, int32_t s3, int32_t c3)
+{
+    int32_t *C = &m->k[K_C];
+    const int32_t sa3 = m->sa[2], ca3 = m->ca[2], sa2 = m->sa[1], ca2 = m->ca[1];
+    int32_t r1[3], r2[3];
+    unsigned j;
+    /* Rz(theta3) Rx(alpha3) = [c3, -s3 ca3, s3 sa3; s3, c3 ca3, -c3 sa3; 0, sa3, ca3] */
+    C[0] = c3;
+    C[1] = ikq_r30(-dh_q_mul64(s3, ca3));
+    C[2] = ikq_r30(dh_q_mul64(s3, sa3));
+    r1[0] = s3;
+    r1[1] = ikq_r30(dh_q_mul64(c3, ca3));
+    r1[2] = ikq_r30(-dh_q_mul64(c3, sa3));
+    r2[0] = 0;
+    r2[1] = sa3;
+    r2[2] = ca3;
+    for (j = 0; j < 3u; j++) {
+        C[3u + j] = ikq_r30(dh_q_mul64(ca2, r1[j]) - dh_q_mul64(sa2, r2[j]));
+        C[6u + j] = ikq_r30(dh_q_mla64(dh_q_mul64(sa2, r1[j]), ca2, r2[j]));
+    }
+}
+
+int dh_ikc_detect_wrist_q_(dh_ikc_model_q *m)
+{
+    int32_t *k = m->k;
+    const uint32_t p = m->prismatic;
+    int32_t e, s3, c3;
+    int64_t h;
+
+    if (m->n != 6u || !ikq_spherical(m) || !ikq_small(m->ca[3]) || !ikq_small(m->ca[4]) || !ikq_small(m->ca[0]))
+        return 0;
+    k[K_TAU1] = ikq_sign(m->sa[0]);
+    k[K_S4] = ikq_sign(m->sa[3]);
+    k[K_S5] = ikq_sign(m->sa[4]);
+    k[K_W + 0] = m->a[5];
+    k[K_W + 1] = ikq_r30(dh_q_mul64(m->d[5], m->sa[5]));
+    k[K_W + 2] = ikq_r30(dh_q_mul64(m->d[5], m->ca[5]));
+    e = ikq_r30(dh_q_mul64(m->sa[2], m->d[3]));
+    if (p == 0u) {
+        int32_t sig;
+        uint32_t rho;
+        if (!ikq_small(m->sa[1]) || m->a[1] == 0) return 0;
+        sig = ikq_sign(m->ca[1]);
+        h = (int64_t)m->d[2] + ikq_r30(dh_q_mul64(m->ca[2], m->d[3]));
+        h = (int64_t)m->d[1] + (sig > 0 ? h : -h);
+        {
+            /* delta = rho - |a2| = (rho^2 - a2^2) / (rho + |a2|), the
+             * numerator exact: 2 |a2| rho = a2^2 + rho^2 - delta^2 then
+             * keeps the folded elbow exact to the rounding of delta */
+            const int64_t r2 = dh_q_mla64(dh_q_mul64(m->a[2], m->a[2]), e, e);
+            const int64_t num = r2 - dh_q_mul64(m->a[1], m->a[1]);
+            rho = dh_q_isqrt62((uint64_t)r2);
+            if (rho == 0u) return 0;
+            k[K_RHO] = ikq_div_rnd(num, (uint64_t)rho + dh_q_abs_u32(m->a[1]));
+        }
+        k[K_SIG] = sig;
+        k[K_E] = e;
+        k[K_PHI] = ikq_atan2(e, m->a[2]);
+        /* C = Rx(alpha2 + alpha3): sin, cos = sigma s_alpha3, sigma c_alpha3 */
+        s3 = sig > 0 ? m->sa[2] : -m->sa[2];
+        c3 = sig > 0 ? m->ca[2] : -m->ca[2];
+        memset(&k[K_C], 0, 9u * sizeof k[0]);
+        k[K_C + 0] = DH_Q_ONE30;
+        k[K_C + 4] = c3;
+        k[K_C + 5] = -s3;
+        k[K_C + 7] = s3;
+        k[K_C + 8] = c3;
+        m->kind = DH_IKC_WRIST_RRR;
+    } else if (p == 0x4u) {
+        int32_t tau2, gx, gy;
+        int64_t x2;
+        if (!ikq_small(m->ca[1])) return 0;
+        tau2 = ikq_sign(m->sa[1]);
+        dh_sincos_q(m->off[2], &s3, &c3);
+        gx = ikq_r30(dh_q_mla64(dh_q_mul64(c3, m->a[2]), s3, e));
+        gy = ikq_r30(dh_q_mul64(s3, m->a[2]) - dh_q_mul64(c3, e));
+        x2 = (int64_t)m->a[1] + gx;
+        h = (int64_t)m->d[1] + (tau2 > 0 ? gy : -gy);
+        k[K_SIG] = tau2;
+        k[K_E] = (int32_t)x2;
+        k[K_LOFF] = ikq_r30(dh_q_mul64(m->ca[2], m->d[3]));
+        ikq_c_rrp(m, s3, c3);
+        m->kind = DH_IKC_WRIST_RRP;
+    } else {
+        return 0;
+    }
+    k[K_H] = (int32_t)h; /* |h| <= 3 2^29 */
+    m->why = DH_IKC_WHY_NONE;
+    return 1;
+}
+
+/* ---- wrist families: solver --------------------------------------------- */
+
+typedef struct {
+    const dh_ikc_model_q *m;
+    const int32_t *cref;
+    dh_ikc_sol_q *sol;
+    uint32_t cnt;
+    uint32_t flags;   /* branch and singular bits of the arm */
+    int32_t q[3];     /* canonical t1, t2, t3 (or d3) */
+    int32_t n1[3];    /* Rx(alpha1)^T Rz(t1)^T R06 e_x */
+    int32_t z1[3];    /* the same for R06 Rx(alpha6)^T e_z */
+} ikq_ctx;
+
+static void ikq_emit(ikq_ctx *c, int32_t t4, int32_t t5, int32_t t6, uint32_t flags)
+{
+    dh_ikc_sol_q *s;
+    if (c->cnt >= DH_IKC_MAX_SOL) return;
+    s = &c->sol[c->cnt++];
+    s->q[0] = c->q[0];
+    s->q[1] = c->q[1];
+    s->q[2] = c->q[2];
+    s->q[3] = t4;
+    s->q[4] = t5;
+    s->q[5] = t6;
+    s->flags = flags;
+}
+
+/* C^T v, C row-major (column i of C dotted with v) */
+static DH_NOINLINE void ikq_ct(const int32_t *C, int32_t *v)
+{
+    int32_t o[3];
+    unsigned i;
+    for (i = 0; i < 3u; i++) o[i] = ikq_r30(dh_q_mla64(dh_q_mla64(dh_q_mul64(C[i], v[0]), C[3u + i], v[1]), C[6u + i], v[2]));
+    v[0] = o[0];
+    v[1] = o[1];
+    v[2] = o[2];
+}
+
+/* joints 4..6 for the arm in c (q, n1, z1), tb the angle of Rz before C */
+static DH_NOINLINE void ikq_wrist(ikq_ctx *c, int32_t tb)
+{
+    const int32_t *k = c->m->k;
+    const int32_t s4a = k[K_S4], s5a = k[K_S5];
+    int32_t n[3], z[3], s, co, t4, t5, t6, s5, c5, mx, my;
+    int sing;
+    int64_t n11;
+
+    dh_sincos_q(tb, &s, &co);
+    n[0] = c->n1[0];
+    n[1] = c->n1[1];
+    n[2] = c->n1[2];
+    z[0] = c->z1[0];
+    z[1] = c->z1[1];
+    z[2] = c->z1[2];
+    ikq_rot2(&n[0], &n[1], co, s);
+    ikq_rot2(&z[0], &z[1], co, s);
+    ikq_ct(&k[K_C], n);
+    ikq_ct(&k[K_C], z);
+    sing = (dh_q_abs_u32(z[0]) <= (uint32_t)IKQ_SING_WRIST && dh_q_abs_u32(z[1]) <= (uint32_t)IKQ_SING_WRIST);
+    if (sing)
+        t4 = c->cref[3];
+    else
+        t4 = ikq_atan2(s5a > 0 ? z[1] : -z[1], s5a > 0 ? z[0] : -z[0]);
+    dh_sincos_q(t4, &s, &co);
+    s5 = ikq_r30(dh_q_mla64(dh_q_mul64(co, z[0]), s, z[1]));
+    if (s5a < 0) s5 = -s5;
+    c5 = (s4a == s5a) ? -z[2] : z[2];
+    (void)dh_atan2_q(s5, c5, &t5);
+    mx = n[0];
+    my = n[1];
+    ikq_rot2(&mx, &my, co, s);
+    n11 = dh_q_mul64(c5, mx);
+    n11 = (s4a > 0) ? dh_q_mla64(n11, s5, n[2]) : n11 - dh_q_mul64(s5, n[2]);
+    t6 = ikq_atan2((s4a == s5a) ? -(int64_t)my : (int64_t)my, n11 >> 30);
+    if (sing) {
+        ikq_emit(c, t4, t5, t6, c->flags | DH_IKC_SING_WRIST);
+        return;
+    }
+    ikq_emit(c, t4, t5, t6, c->flags);
+    ikq_emit(c, ikq_wrap180(t4 + Q16_180), ikq_wrap180(-t5), ikq_wrap180(t6 + Q16_180), c->flags | DH_IKC_WRIST_ALT);
+}
+
+/* shift of an int64 below 2^31 (v >= 0) */
+static unsigned ikq_fit31(int64_t v)
+{
+    unsigned s = 0u;
+    while ((v >> s) >= ((int64_t)1 << 31)) s++;
+    return s;
+}
+
+/* RRR elbow and shoulder joint 2 for one shoulder branch; 1 on overflow */
+static DH_NOINLINE int ikq_arm_rrr(ikq_ctx *c, int64_t vx, int64_t vy)
+{
+    const dh_ikc_model_q *m = c->m;
+    const int32_t *k = m->k;
+    const int32_t a2 = m->a[1], a3 = m->a[2], e = k[K_E];
+    int64_t K, D, Dabs, R2, ds, df, dm, dp, tol, loose;
+    unsigned s1, s2, b, ne;
+    int32_t psi, S;
+    const uint32_t f0 = c->flags;
+
+    /* K = |v|^2 - a2^2 - a3^2 - e^2 and |D| = 2 |a2| rho =
+     * a2^2 + a3^2 + e^2 - delta^2, both from exact products (a rounded rho
+     * times 2 a2 would move a nearly folded elbow by units of 1e-3) */
+    R2 = dh_q_mla64(dh_q_mla64(dh_q_mul64(a2, a2), a3, a3), e, e);
+    K = (int64_t)dh_q_mla64(dh_q_mul64((int32_t)vx, (int32_t)vx), (int32_t)vy, (int32_t)vy) - R2;
+    Dabs = R2 - dh_q_mul64(k[K_RHO], k[K_RHO]);
+    D = (a2 < 0) ? -Dabs : Dabs;
+    /* stretched (ds = 0) and folded (df = 0) elbows: |v|^2 within
+     * tol = 2 |v| 2^-14 units of either counts as exactly there; the wrist
+     * centre then moves by tol / (|v| + |a2 - rho|) <= 2^-13 units */
+    tol = (((int64_t)ikq_abs64(vx) + (int64_t)ikq_abs64(vy)) << DH_QPOS_FRAC >> 13) + 1;
+    ds = Dabs - K;
+    df = Dabs + K;
+    /* beyond either by less than 2^-9 units of the wrist centre (rounded
+     * targets near two singularities at once): solved at the boundary */
+    loose = (((int64_t)ikq_abs64(vx) + (int64_t)ikq_abs64(vy) + (int64_t)dh_q_abs_u32(k[K_RHO]) + 1) << DH_QPOS_FRAC) >> 9;
+    if (ds < -loose || df < -loose) return 0; /* this shoulder cannot reach */
+    if (ds <= tol) ds = 0;
+    if (df <= tol) df = 0;
+    /* cos(t3 - phi) = K / D */
+    if (D < 0) {
+        dm = df;
+        dp = ds;
+        K = -K;
+    } else {
+        dm = ds;
+        dp = df;
+    }
+    s1 = ikq_fit31(dm);
+    s2 = ikq_fit31(dp);
+    if (((s1 + s2) & 1u) != 0u) s1++;
+    S = (int32_t)dh_q_isqrt62((uint64_t)dh_q_mul64((int32_t)(dm >> s1), (int32_t)(dp >> s2)));
+    psi = ikq_atan2(S, K >> ((s1 + s2) >> 1));
+    ne = (S == 0) ? 1u : 2u;
+    for (b = 0; b < ne; b++) {
+        int32_t t3 = ikq_wrap180(k[K_PHI] + (b ? -psi : psi)), s3, c3, A, B;
+        dh_sincos_q(t3, &s3, &c3);
+        A = a2 + ikq_r30(dh_q_mla64(dh_q_mul64(a3, c3), e, s3));
+        B = ikq_r30(dh_q_mul64(a3, s3) - dh_q_mul64(e, c3));
+        if (k[K_SIG] < 0) B = -B;
+        c->q[1] = ikq_atan2(dh_q_mul64(A, (int32_t)vy) - dh_q_mul64(B, (int32_t)vx),
+                            dh_q_mla64(dh_q_mul64(A, (int32_t)vx), B, (int32_t)vy));
+        c->q[2] = t3;
+        c->flags = f0 | (ne == 1u ? DH_IKC_SING_ELBOW : 0u) | (b ? DH_IKC_ELBOW_ALT : 0u);
+        ikq_wrist(c, c->q[1] + (k[K_SIG] < 0 ? -t3 : t3));
+    }
+    c->flags = f0;
+    return 0;
+}
+
+/* RRP joint 2 and the extension for one shoulder branch */
+static DH_NOINLINE int ikq_arm_rrp(ikq_ctx *c, int64_t vx, int64_t vy)
+{
+    const int32_t *k = c->m->k;
+    const int32_t x2 = k[K_E], tau2 = k[K_SIG];
+    int64_t L2, tol;
+    uint32_t L;
+    unsigned b, nl;
+    const uint32_t f0 = c->flags;
+
+    L2 = (int64_t)dh_q_mla64(dh_q_mul64((int32_t)vx, (int32_t)vx), (int32_t)vy, (int32_t)vy) - dh_q_mul64(x2, x2);
+    /* as the RRR elbow: within 2^-9 units of L = 0 counts as there */
+    tol = (((int64_t)ikq_abs64(vx) + (int64_t)ikq_abs64(vy) + (int64_t)dh_q_abs_u32(x2) + 1) << DH_QPOS_FRAC) >> 9;
+    if (L2 < -tol) return 0;
+    if (L2 < 0) L2 = 0;
+    L = dh_q_isqrt62((uint64_t)L2);
+    nl = (L == 0u) ? 1u : 2u;
+    for (b = 0; b < nl; b++) {
+        const int32_t l = b ? -(int32_t)L : (int32_t)L, tl = tau2 > 0 ? l : -l;
+        c->q[1] = ikq_atan2(dh_q_mla64(dh_q_mul64(x2, (int32_t)vy), tl, (int32_t)vx),
+                            dh_q_mul64(x2, (int32_t)vx) - dh_q_mul64(tl, (int32_t)vy));
+        c->q[2] = l - k[K_LOFF];
+        c->flags = f0 | (nl == 1u ? DH_IKC_SING_ELBOW : 0u) | (b ? DH_IKC_ELBOW_ALT : 0u);
+        ikq_wrist(c, c->q[1]);
+    }
+    c->flags = f0;
+    return 0;
+}
+
+/* one shoulder branch: joint 1 (or the reference), the shoulder part of M, the arm */
+static DH_NOINLINE int ikq_shoulder(ikq_ctx *c, const int32_t *o, int32_t u, int sing, const int32_t *nz)
+{
+    const dh_ikc_model_q *m = c->m;
+    const int32_t *k = m->k;
+    const int32_t th = k[K_TAU1] > 0 ? k[K_H] : -k[K_H];
+    int32_t t1, s, co;
+    int64_t vx, vy;
+
+    if (sing) {
+        t1 = c->cref[0];
+        dh_sincos_q(t1, &s, &co);
+        u = ikq_r30(dh_q_mla64(dh_q_mul64(co, o[0]), s, o[1]));
+    } else {
+        t1 = ikq_atan2(dh_q_mla64(dh_q_mul64(th, o[0]), u, o[1]), dh_q_mul64(u, o[0]) - dh_q_mul64(th, o[1]));
+        dh_sincos_q(t1, &s, &co);
+    }
+    c->q[0] = t1;
+    /* Rx(alpha1)^T Rz(t1)^T applied to R06 e_x and to the tool z column */
+    c->n1[0] = nz[0];
+    c->n1[1] = nz[1];
+    c->n1[2] = nz[2];
+    c->z1[0] = nz[3];
+    c->z1[1] = nz[4];
+    c->z1[2] = nz[5];
+    ikq_rot2(&c->n1[0], &c->n1[1], co, s);
+    ikq_rot2(&c->z1[0], &c->z1[1], co, s);
+    ikq_rot2(&c->n1[1], &c->n1[2], m->ca[0], m->sa[0]);
+    ikq_rot2(&c->z1[1], &c->z1[2], m->ca[0], m->sa[0]);
+    vx = (int64_t)u - m->a[0];
+    vy = (int64_t)o[2] - m->d[0];
+    if (k[K_TAU1] < 0) vy = -vy;
+    if (ikq_abs64(vx) > (uint64_t)IKQ_POS_LIM || ikq_abs64(vy) > (uint64_t)IKQ_POS_LIM) return 1;
+    return (m->kind == DH_IKC_WRIST_RRR) ? ikq_arm_rrr(c, vx, vy) : ikq_arm_rrp(c, vx, vy);
+}
+
+dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const dh_frame_q *T06, const int32_t *cref, dh_ikc_sol_q *sol,
+                          uint32_t *count)
+{
+    const int32_t *k = m->k;
+    const dh_q30(*R)[3] = T06->r;
+    ikq_ctx c;
+    int32_t o[3], nz[6], h = k[K_H];
+    int64_t r2, rad, tol;
+    uint32_t u, i;
+    int sing;
+
+    *count = 0;
+    for (i = 0; i < 3u; i++) {
+        const int64_t rw = dh_q_mla64(dh_q_mla64(dh_q_mul64(R[0][i], k[K_W]), R[1][i], k[K_W + 1]), R[2][i], k[K_W + 2]);
+        const int64_t v = (int64_t)T06->p[i] - ((rw + DH_Q_HALF30) >> 30);
+        if (ikq_abs64(v) > (uint64_t)IKQ_POS_LIM) return DH_ERR_OVERFLOW;
+        o[i] = (int32_t)v;
+        nz[i] = R[0][i];
+        nz[3u + i] = ikq_r30(dh_q_mla64(dh_q_mul64(m->sa[5], R[1][i]), m->ca[5], R[2][i]));
+    }
+    r2 = dh_q_mla64(dh_q_mul64(o[0], o[0]), o[1], o[1]);
+    rad = r2 - dh_q_mul64(h, h);
+    /* inside the cylinder of radius |h| by less than 2^-9 units: u = 0 */
+    tol = (((int64_t)dh_q_abs_u32(o[0]) + (int64_t)dh_q_abs_u32(o[1]) + (int64_t)dh_q_abs_u32(h) + 1) << DH_QPOS_FRAC) >> 9;
+    if (rad < -tol) return DH_OK; /* beyond the shoulder's reach: count 0 */
+    if (rad < 0) rad = 0;
+    sing = dh_q_abs_u32(o[0]) <= (uint32_t)IKQ_SING_AXIS && dh_q_abs_u32(o[1]) <= (uint32_t)IKQ_SING_AXIS;
+    u = sing ? 0u : dh_q_isqrt62((uint64_t)rad);
+    c.m = m;
+    c.cref = cref;
+    c.sol = sol;
+    c.cnt = 0;
+    c.flags = sing ? DH_IKC_SING_SHOULDER : 0u;
+    if (ikq_shoulder(&c, o, (int32_t)u, sing, nz)) return DH_ERR_OVERFLOW;
+    if (u != 0u) {
+        c.flags = DH_IKC_SHOULDER_ALT;
+        if (ikq_shoulder(&c, o, -(int32_t)u, 0, nz)) return DH_ERR_OVERFLOW;
+    }
+    *count = c.cnt;
+    return DH_OK;
+}
+
+/* ---- front end: solve --------------------------------------------------- */
+
+static int ikq_model_ok(const dh_ikc_model_q *m)
+{
+    switch (m->kind) {
+    case DH_IKC_WRIST_RRR:
+    case DH_IKC_WRIST_RRP:
+    case DH_IKC_PARALLEL_234:
+        return m->n == 6u;
+    case DH_IKC_SCARA:
+        return m->n == 4u;
+    default:
+        return 0;
+    }
+}
+
+/* q (in (-180, 180]) shifted by a multiple of 360 into [lo, hi], nearest
+ * ref (ties: the lower); *in = 0 when no shift is inside (q returned) */
+static DH_NOINLINE int32_t ikq_shift(int32_t q, int32_t lo, int32_t hi, int32_t ref, int *in)
+{
+    const int64_t d = (int64_t)q - lo;
+    const uint32_t P = (uint32_t)Q16_360;
+    uint32_t rem = (uint32_t)ikq_abs64(d) % P, kmax, kk;
+    int64_t first, c0;
+
+    *in = 1;
+    if (lo > hi) return q;
+    if (d < 0 && rem != 0u) rem = P - rem;
+    first = (int64_t)lo + rem;
+    if (first > hi) {
+        *in = 0;
+        return q;
+    }
+    kmax = (uint32_t)((int64_t)hi - first) / P;
+    kk = 0;
+    if (ref > first) {
+        kk = (uint32_t)((int64_t)ref - first) / P;
+        if (kk >= kmax) {
+            kk = kmax;
+        } else {
+            c0 = first + (int64_t)kk * P;
+            if ((int64_t)ref - c0 > c0 + P - ref) kk++;
+        }
+    }
+    return (int32_t)(first + (int64_t)kk * P);
+}
+
+/* raw canonical solutions -> joint values, shifts, limits, compaction */
+static DH_NOINLINE uint32_t ikq_finish(const dh_ikc_model_q *m, const int32_t *q_ref, uint32_t opts,
+                                       dh_ikc_sol_q *sol, uint32_t raw, int *ovf)
+{
+    uint32_t s, i, kept = 0;
+    for (s = 0; s < raw; s++) {
+        dh_ikc_sol_q t = sol[s];
+        int all_in = 1;
+        for (i = 0; i < m->n; i++) {
+            const int32_t ref = q_ref ? q_ref[i] : 0;
+            int in = 1;
+            if ((m->prismatic >> i) & 1u) {
+                const int32_t v = dh_q_sat32((int64_t)t.q[i] - m->d[i], ovf);
+                if (m->qmin[i] <= m->qmax[i]) in = (v >= m->qmin[i] && v <= m->qmax[i]);
+                t.q[i] = v;
+            } else {
+                t.q[i] = ikq_shift(ikq_wrap180(t.q[i] - ikq_reduce(m->off[i])), m->qmin[i], m->qmax[i], ref, &in);
+            }
+            if (!in) all_in = 0;
+        }
+        if (!all_in) {
+            if ((opts & DH_IKC_KEEP_OUT_OF_LIMITS) == 0u) continue;
+            t.flags |= DH_IKC_OUT_OF_LIMITS;
+        }
+        sol[kept++] = t;
+    }
+    return kept;
+}
+
+/* T06 = pre_inv T post_inv, identity products skipped */
+static DH_NOINLINE dh_status ikq_t06(const dh_ikc_model_q *m, const dh_frame_q *T, dh_frame_q *T06)
+{
+    dh_status st = DH_OK;
+    *T06 = *T;
+    if (memcmp(&m->pre_inv, &ikq_identity, sizeof ikq_identity) != 0) st = dh_frame_mul_q(&m->pre_inv, T06, T06);
+    if (memcmp(&m->post_inv, &ikq_identity, sizeof ikq_identity) != 0 &&
+        dh_frame_mul_q(T06, &m->post_inv, T06) != DH_OK)
+        st = DH_ERR_OVERFLOW;
+    return st;
+}
+
+dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int32_t *q_ref, uint32_t opts,
+                   dh_ikc_sol_q *sol, uint32_t *n_sol)
+{
+    int32_t cref[DH_IKC_JOINTS];
+    dh_frame_q T06;
+    uint32_t raw = 0, i, kept;
+    dh_status st;
+    int ovf = 0;
+
+    DH_ASSERT(m != NULL && target != NULL && sol != NULL && n_sol != NULL);
+    *n_sol = 0;
+    if (m->kind == DH_IKC_NONE) return DH_ERR_UNAVAILABLE;
+    if ((opts & ~DH_IKC_KEEP_OUT_OF_LIMITS) != 0u || !ikq_model_ok(m)) return DH_ERR_ARG;
+    if (!ikq_rigid(target)) return DH_ERR_NOT_RIGID;
+    for (i = 0; i < m->n; i++) {
+        const int32_t ref = q_ref ? q_ref[i] : 0;
+        if ((m->prismatic >> i) & 1u)
+            cref[i] = dh_q_sat32((int64_t)ref + m->d[i], &ovf);
+        else
+            cref[i] = ikq_wrap180(ikq_reduce(ref) + ikq_reduce(m->off[i]));
+    }
+    if (ikq_t06(m, target, &T06) != DH_OK) return DH_ERR_OVERFLOW;
+    if (m->kind == DH_IKC_PARALLEL_234)
+        st = dh_ikc_par234_q_(m, &T06, cref, sol, &raw);
+    else if (m->kind == DH_IKC_SCARA)
+        st = dh_ikc_scara_q_(m, &T06, cref, sol, &raw);
+    else
+        st = dh_ikc_wrist_q_(m, &T06, cref, sol, &raw);
+    if (st != DH_OK) return st;
+    if (raw == 0u) return DH_ERR_UNREACHABLE;
+    ovf = 0;
+    kept = ikq_finish(m, q_ref, opts, sol, raw, &ovf);
+    if (ovf != 0) return DH_ERR_OVERFLOW;
+    *n_sol = kept;
+    return kept != 0u ? DH_OK : DH_ERR_LIMIT;
+}
+
+dh_status dh_ikc_nearest_q(const dh_ikc_sol_q *sol, uint32_t n_sol, const int32_t *q_ref, uint32_t n,
+                           uint32_t *index)
+{
+    uint32_t s, i, best = 0;
+    uint64_t best_d = 0;
+
+    DH_ASSERT(sol != NULL && index != NULL);
+    if (n_sol == 0u || n > DH_IKC_JOINTS) return DH_ERR_ARG;
+    for (s = 0; s < n_sol; s++) {
+        uint64_t d = 0;
+        for (i = 0; i < n; i++) d += ikq_abs64((int64_t)sol[s].q[i] - (q_ref ? q_ref[i] : 0));
+        if (s == 0u || d < best_d) {
+            best = s;
+            best_d = d;
+        }
+    }
+    *index = best;
+    return DH_OK;
+}
