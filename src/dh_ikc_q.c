@@ -77,7 +77,8 @@
 #define Q16_360 ((int32_t)23592960)
 /* |cos alpha| or |sin alpha| this small counts as zero (6e-8) */
 #define IKQ_TOL_ALPHA 64
-/* rigidity of the target, base and tool: |R^T R - I| <= 2^-10 */
+/* rigidity of the target, base and tool: |R^T R - I| <= 2^-10, entries <= 1.1 */
+#define IKQ_ENTRY_MAX 0x46666666u
 #define IKQ_RIGID_TOL ((int32_t)1 << 20)
 /* wrist singular: |m13|, |m23| <= 2^-19 (orientation error <= 2.7e-6 rad) */
 #define IKQ_SING_WRIST ((int32_t)1 << 11)
@@ -190,16 +191,58 @@ static DH_NOINLINE void ikq_rot2(int32_t *x, int32_t *y, int32_t c, int32_t s)
     *y = ikq_r30(dh_q_mul64(c, b) - dh_q_mul64(s, a));
 }
 
-/* 1 when F's rotation is within 2^-10 of orthonormal with det > 0 */
-static DH_NOINLINE int ikq_rigid(const dh_frame_q *F)
+/* 1 when the columns c0, c1, c2 (Q2.30) are within 2^-10 of orthonormal
+ * with det > 0; entries above 1.1 in magnitude fail first, which bounds
+ * every three-term sum below (3.63 2^61 < 2^63) */
+static DH_NOINLINE int ikq_rigid3(const int32_t *c0, const int32_t *c1, const int32_t *c2)
 {
-    const dh_q30(*c)[3] = F->r;
+    const int32_t *c[3];
+    unsigned a, b, i;
     int32_t x, y, z;
-    if (dh_frame_ortho_error_q(F) > IKQ_RIGID_TOL) return 0;
-    x = ikq_r30(dh_q_mul64(c[1][1], c[2][2]) - dh_q_mul64(c[1][2], c[2][1]));
-    y = ikq_r30(dh_q_mul64(c[1][2], c[2][0]) - dh_q_mul64(c[1][0], c[2][2]));
-    z = ikq_r30(dh_q_mul64(c[1][0], c[2][1]) - dh_q_mul64(c[1][1], c[2][0]));
-    return dh_q_mla64(dh_q_mla64(dh_q_mul64(c[0][0], x), c[0][1], y), c[0][2], z) > 0;
+    c[0] = c0;
+    c[1] = c1;
+    c[2] = c2;
+    for (a = 0; a < 3u; a++)
+        for (i = 0; i < 3u; i++)
+            if (dh_q_abs_u32(c[a][i]) > IKQ_ENTRY_MAX) return 0;
+    for (a = 0; a < 3u; a++)
+        for (b = a; b < 3u; b++) {
+            int32_t d = ikq_r30(dh_q_mla64(dh_q_mla64(dh_q_mul64(c[a][0], c[b][0]), c[a][1], c[b][1]), c[a][2], c[b][2]));
+            if (a == b) d -= DH_Q_ONE30;
+            if (d > IKQ_RIGID_TOL || d < -IKQ_RIGID_TOL) return 0;
+        }
+    x = ikq_r30(dh_q_mul64(c1[1], c2[2]) - dh_q_mul64(c1[2], c2[1]));
+    y = ikq_r30(dh_q_mul64(c1[2], c2[0]) - dh_q_mul64(c1[0], c2[2]));
+    z = ikq_r30(dh_q_mul64(c1[0], c2[1]) - dh_q_mul64(c1[1], c2[0]));
+    return dh_q_mla64(dh_q_mla64(dh_q_mul64(c0[0], x), c0[1], y), c0[2], z) > 0;
+}
+
+DH_INLINE int ikq_rigid(const dh_frame_q *F)
+{
+    return ikq_rigid3(F->r[0], F->r[1], F->r[2]);
+}
+
+/* F <- F^-1 for a rigid F (entries <= 1.1): R^T, -R^T p; 1 on overflow */
+static DH_NOINLINE int ikq_inv(dh_frame_q *F)
+{
+    int ovf = 0;
+    int32_t q[3], t;
+    unsigned i;
+    for (i = 0; i < 3u; i++)
+        q[i] = dh_q_pos_rnd30(0, -dh_q_mla64(dh_q_mla64(dh_q_mul64(F->r[i][0], F->p[0]), F->r[i][1], F->p[1]), F->r[i][2], F->p[2]), &ovf);
+    t = F->r[0][1];
+    F->r[0][1] = F->r[1][0];
+    F->r[1][0] = t;
+    t = F->r[0][2];
+    F->r[0][2] = F->r[2][0];
+    F->r[2][0] = t;
+    t = F->r[1][2];
+    F->r[1][2] = F->r[2][1];
+    F->r[2][1] = t;
+    F->p[0] = q[0];
+    F->p[1] = q[1];
+    F->p[2] = q[2];
+    return ovf;
 }
 
 /* ---- analysis ----------------------------------------------------------- */
@@ -217,7 +260,6 @@ static DH_NOINLINE dh_status ikq_chain(const dh_robot *r, dh_ikc_model_q *m)
     const int mdh = (r->conv == DH_CONV_MODIFIED);
     uint32_t i;
     int bad = 0;
-    dh_frame_q f;
 
     for (i = 0; i < n; i++) {
         const dh_joint *j = &r->joint[i];
@@ -242,19 +284,23 @@ static DH_NOINLINE dh_status ikq_chain(const dh_robot *r, dh_ikc_model_q *m)
         m->why = DH_IKC_WHY_PATH;
         return DH_ERR_NOT_RIGID;
     }
-    f = r->base_q;
+    m->pre_inv = r->base_q;
     if (mdh) {
-        /* pre = base Rx(alpha_0) Tx(a_0) */
-        dh_frame_q x = ikq_identity;
-        x.r[1][1] = r->joint[0].ca_q;
-        x.r[1][2] = r->joint[0].sa_q;
-        x.r[2][1] = -r->joint[0].sa_q;
-        x.r[2][2] = r->joint[0].ca_q;
-        x.p[0] = r->joint[0].a_q;
-        if (dh_frame_mul_q(&r->base_q, &x, &f) != DH_OK) bad = 1;
+        /* pre = base Rx(alpha_0) Tx(a_0): columns n, c o + s a, c a - s o;
+         * position p + a_0 n */
+        dh_frame_q *F = &m->pre_inv;
+        const int32_t sa = r->joint[0].sa_q, ca = r->joint[0].ca_q;
+        int ovf = 0;
+        for (i = 0; i < 3u; i++) {
+            const int32_t o = F->r[1][i], a = F->r[2][i];
+            F->r[1][i] = dh_q_rnd30(dh_q_mla64(dh_q_mul64(ca, o), sa, a), &ovf);
+            F->r[2][i] = dh_q_rnd30(dh_q_mul64(ca, a) - dh_q_mul64(sa, o), &ovf);
+            F->p[i] = dh_q_pos_rnd30(F->p[i], dh_q_mul64(r->joint[0].a_q, F->r[0][i]), &ovf);
+        }
+        if (ovf) bad = 1;
     }
-    if (dh_frame_inv_q(&f, &m->pre_inv) != DH_OK) bad = 1;
-    if (dh_frame_inv_q(&r->tool_q, &m->post_inv) != DH_OK) bad = 1;
+    m->post_inv = r->tool_q;
+    if (ikq_inv(&m->pre_inv) || ikq_inv(&m->post_inv)) bad = 1;
     if (bad) {
         m->why = DH_IKC_WHY_PATH;
         return DH_ERR_UNAVAILABLE;
@@ -415,87 +461,96 @@ int dh_ikc_detect_wrist_q_(dh_ikc_model_q *m)
 
 /* ---- wrist families: solver --------------------------------------------- */
 
-typedef struct {
-    const dh_ikc_model_q *m;
-    const int32_t *cref;
-    dh_ikc_sol_q *sol;
-    uint32_t cnt;
-    uint32_t flags;   /* branch and singular bits of the arm */
-    int32_t q[3];     /* canonical t1, t2, t3 (or d3) */
-    int32_t n1[3];    /* Rx(alpha1)^T Rz(t1)^T R06 e_x */
-    int32_t z1[3];    /* the same for R06 Rx(alpha6)^T e_z */
-} ikq_ctx;
-
-static void ikq_emit(ikq_ctx *c, int32_t t4, int32_t t5, int32_t t6, uint32_t flags)
-{
-    dh_ikc_sol_q *s;
-    if (c->cnt >= DH_IKC_MAX_SOL) return;
-    s = &c->sol[c->cnt++];
-    s->q[0] = c->q[0];
-    s->q[1] = c->q[1];
-    s->q[2] = c->q[2];
-    s->q[3] = t4;
-    s->q[4] = t5;
-    s->q[5] = t6;
-    s->flags = flags;
-}
+/*
+ * Stack. The whole call chain of dh_ikc_q stays within 256 bytes on
+ * Cortex-M0, so the solver keeps its state in the solution array, not in
+ * its frames: T06 arrives in sol[0..1] (dh_ikc_impl.h); solution slot
+ * 4 s + 2 b + w holds shoulder branch s, elbow branch b, wrist branch w;
+ * ikq_prep reads T06 and leaves per-shoulder data in the elbow-1 slots of
+ * that shoulder (slot 4 s + 2: t1, vx, its flags, M's x column after the
+ * shoulder rotation; slot 4 s + 3: vy, the z column), ikq_arm overwrites
+ * q[0..2] of the slots 4 s and 4 s + 2 with the arm angles of each elbow
+ * branch once it has read them, and ikq_wrist reads its columns before it
+ * writes a pair of slots. Empty slots carry IKQ_EMPTY flags and are
+ * squeezed out at the end. Every helper is called from the solver itself,
+ * so the chain is front end -> solver -> one helper -> dh_sincos_q or
+ * dh_atan2_q.
+ */
+#define IKQ_EMPTY 0xFFFFFFFFu
+#define IKQ_ABSENT ((int32_t)-1)
 
 /* C^T v, C row-major (column i of C dotted with v) */
 static DH_NOINLINE void ikq_ct(const int32_t *C, int32_t *v)
 {
-    int32_t o[3];
+    const int32_t x = v[0], y = v[1], z = v[2];
     unsigned i;
-    for (i = 0; i < 3u; i++) o[i] = ikq_r30(dh_q_mla64(dh_q_mla64(dh_q_mul64(C[i], v[0]), C[3u + i], v[1]), C[6u + i], v[2]));
-    v[0] = o[0];
-    v[1] = o[1];
-    v[2] = o[2];
+    for (i = 0; i < 3u; i++) v[i] = ikq_r30(dh_q_mla64(dh_q_mla64(dh_q_mul64(C[i], x), C[3u + i], y), C[6u + i], z));
 }
 
-/* joints 4..6 for the arm in c (q, n1, z1), tb the angle of Rz before C */
-static DH_NOINLINE void ikq_wrist(ikq_ctx *c, int32_t tb)
+/* wrist centre, u, and the data of each shoulder branch; 1 on overflow */
+static DH_NOINLINE int ikq_prep(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, int32_t cref0)
 {
-    const int32_t *k = c->m->k;
-    const int32_t s4a = k[K_S4], s5a = k[K_S5];
-    int32_t n[3], z[3], s, co, t4, t5, t6, s5, c5, mx, my;
-    int sing;
-    int64_t n11;
+    const int32_t *k = m->k;
+    const int32_t *c0 = DH_IKC_T06_COL_(sol, 0u), *c1 = DH_IKC_T06_COL_(sol, 1u), *c2 = DH_IKC_T06_COL_(sol, 2u);
+    const int32_t *p = DH_IKC_T06_COL_(sol, 3u);
+    const int32_t h = k[K_H], th = k[K_TAU1] > 0 ? k[K_H] : -k[K_H];
+    int32_t o[3], vy, u;
+    int64_t rad, tol, v;
+    unsigned i, s, sing, nsh;
 
-    dh_sincos_q(tb, &s, &co);
-    n[0] = c->n1[0];
-    n[1] = c->n1[1];
-    n[2] = c->n1[2];
-    z[0] = c->z1[0];
-    z[1] = c->z1[1];
-    z[2] = c->z1[2];
-    ikq_rot2(&n[0], &n[1], co, s);
-    ikq_rot2(&z[0], &z[1], co, s);
-    ikq_ct(&k[K_C], n);
-    ikq_ct(&k[K_C], z);
-    sing = (dh_q_abs_u32(z[0]) <= (uint32_t)IKQ_SING_WRIST && dh_q_abs_u32(z[1]) <= (uint32_t)IKQ_SING_WRIST);
-    if (sing)
-        t4 = c->cref[3];
-    else
-        t4 = ikq_atan2(s5a > 0 ? z[1] : -z[1], s5a > 0 ? z[0] : -z[0]);
-    dh_sincos_q(t4, &s, &co);
-    s5 = ikq_r30(dh_q_mla64(dh_q_mul64(co, z[0]), s, z[1]));
-    if (s5a < 0) s5 = -s5;
-    c5 = (s4a == s5a) ? -z[2] : z[2];
-    (void)dh_atan2_q(s5, c5, &t5);
-    mx = n[0];
-    my = n[1];
-    ikq_rot2(&mx, &my, co, s);
-    n11 = dh_q_mul64(c5, mx);
-    n11 = (s4a > 0) ? dh_q_mla64(n11, s5, n[2]) : n11 - dh_q_mul64(s5, n[2]);
-    t6 = ikq_atan2((s4a == s5a) ? -(int64_t)my : (int64_t)my, n11 >> 30);
-    if (sing) {
-        ikq_emit(c, t4, t5, t6, c->flags | DH_IKC_SING_WRIST);
-        return;
+    for (i = 0; i < 3u; i++) {
+        const int64_t rw = dh_q_mla64(dh_q_mla64(dh_q_mul64(c0[i], k[K_W]), c1[i], k[K_W + 1]), c2[i], k[K_W + 2]);
+        v = (int64_t)p[i] - ((rw + DH_Q_HALF30) >> 30);
+        if (ikq_abs64(v) > (uint64_t)IKQ_POS_LIM) return 1;
+        o[i] = (int32_t)v;
     }
-    ikq_emit(c, t4, t5, t6, c->flags);
-    ikq_emit(c, ikq_wrap180(t4 + Q16_180), ikq_wrap180(-t5), ikq_wrap180(t6 + Q16_180), c->flags | DH_IKC_WRIST_ALT);
+    v = (int64_t)o[2] - m->d[0];
+    if (k[K_TAU1] < 0) v = -v;
+    if (ikq_abs64(v) > (uint64_t)IKQ_POS_LIM) return 1;
+    vy = (int32_t)v;
+    for (i = 0; i < DH_IKC_MAX_SOL; i++) sol[i].flags = IKQ_EMPTY;
+    sol[2].q[2] = IKQ_ABSENT;
+    sol[6].q[2] = IKQ_ABSENT;
+    rad = dh_q_mla64(dh_q_mul64(o[0], o[0]), o[1], o[1]) - dh_q_mul64(h, h);
+    /* inside the cylinder of radius |h| by less than 2^-9 units: u = 0 */
+    tol = (((int64_t)dh_q_abs_u32(o[0]) + (int64_t)dh_q_abs_u32(o[1]) + (int64_t)dh_q_abs_u32(h) + 1) << DH_QPOS_FRAC) >> 9;
+    if (rad < -tol) return 0; /* beyond the shoulder's reach */
+    if (rad < 0) rad = 0;
+    sing = dh_q_abs_u32(o[0]) <= (uint32_t)IKQ_SING_AXIS && dh_q_abs_u32(o[1]) <= (uint32_t)IKQ_SING_AXIS;
+    u = sing ? 0 : (int32_t)dh_q_isqrt62((uint64_t)rad);
+    nsh = (sing || u == 0) ? 1u : 2u;
+    for (s = 0; s < nsh; s++) {
+        dh_ikc_sol_q *d0 = &sol[4u * s + 2u], *d1 = &sol[4u * s + 3u];
+        int32_t t1, sn, cs, *n1 = &d0->q[3], *z1 = &d1->q[3];
+        if (sing) {
+            t1 = cref0;
+            dh_sincos_q(t1, &sn, &cs);
+            u = ikq_r30(dh_q_mla64(dh_q_mul64(cs, o[0]), sn, o[1]));
+        } else {
+            t1 = ikq_atan2(dh_q_mla64(dh_q_mul64(th, o[0]), u, o[1]), dh_q_mul64(u, o[0]) - dh_q_mul64(th, o[1]));
+            dh_sincos_q(t1, &sn, &cs);
+        }
+        v = (int64_t)u - m->a[0];
+        if (ikq_abs64(v) > (uint64_t)IKQ_POS_LIM) return 1;
+        /* Rx(alpha1)^T Rz(t1)^T applied to R06 e_x and to R06 Rx(alpha6)^T e_z */
+        for (i = 0; i < 3u; i++) {
+            n1[i] = c0[i];
+            z1[i] = ikq_r30(dh_q_mla64(dh_q_mul64(m->sa[5], c1[i]), m->ca[5], c2[i]));
+        }
+        ikq_rot2(&n1[0], &n1[1], cs, sn);
+        ikq_rot2(&z1[0], &z1[1], cs, sn);
+        ikq_rot2(&n1[1], &n1[2], m->ca[0], m->sa[0]);
+        ikq_rot2(&z1[1], &z1[2], m->ca[0], m->sa[0]);
+        d0->q[0] = t1;
+        d0->q[1] = (int32_t)v;
+        d0->q[2] = (int32_t)((sing ? DH_IKC_SING_SHOULDER : 0u) | (s ? DH_IKC_SHOULDER_ALT : 0u));
+        d1->q[0] = vy;
+        u = -u;
+    }
+    return 0;
 }
 
-/* shift of an int64 below 2^31 (v >= 0) */
+/* shift of a non-negative int64 below 2^31 */
 static unsigned ikq_fit31(int64_t v)
 {
     unsigned s = 0u;
@@ -503,178 +558,188 @@ static unsigned ikq_fit31(int64_t v)
     return s;
 }
 
-/* RRR elbow and shoulder joint 2 for one shoulder branch; 1 on overflow */
-static DH_NOINLINE int ikq_arm_rrr(ikq_ctx *c, int64_t vx, int64_t vy)
+/* write arm angles (t1, t2, t3) and flags into slot j */
+DH_INLINE void ikq_put_arm(dh_ikc_sol_q *d, int32_t t1, int32_t t2, int32_t t3, uint32_t flags)
 {
-    const dh_ikc_model_q *m = c->m;
+    d->q[0] = t1;
+    d->q[1] = t2;
+    d->q[2] = t3;
+    d->flags = flags;
+}
+
+/* RRR: the elbow branches of shoulder s (t3, then t2) */
+static DH_NOINLINE void ikq_arm_rrr(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned s)
+{
     const int32_t *k = m->k;
     const int32_t a2 = m->a[1], a3 = m->a[2], e = k[K_E];
-    int64_t K, D, Dabs, R2, ds, df, dm, dp, tol, loose;
+    const int32_t t1 = sol[4u * s + 2u].q[0], vx = sol[4u * s + 2u].q[1], vy = sol[4u * s + 3u].q[0];
+    const uint32_t f0 = (uint32_t)sol[4u * s + 2u].q[2];
+    int64_t K, D, R2, ds, df, tol;
     unsigned s1, s2, b, ne;
     int32_t psi, S;
-    const uint32_t f0 = c->flags;
 
     /* K = |v|^2 - a2^2 - a3^2 - e^2 and |D| = 2 |a2| rho =
      * a2^2 + a3^2 + e^2 - delta^2, both from exact products (a rounded rho
      * times 2 a2 would move a nearly folded elbow by units of 1e-3) */
     R2 = dh_q_mla64(dh_q_mla64(dh_q_mul64(a2, a2), a3, a3), e, e);
-    K = (int64_t)dh_q_mla64(dh_q_mul64((int32_t)vx, (int32_t)vx), (int32_t)vy, (int32_t)vy) - R2;
-    Dabs = R2 - dh_q_mul64(k[K_RHO], k[K_RHO]);
-    D = (a2 < 0) ? -Dabs : Dabs;
+    K = dh_q_mla64(dh_q_mul64(vx, vx), vy, vy) - R2;
+    D = R2 - dh_q_mul64(k[K_RHO], k[K_RHO]);
     /* stretched (ds = 0) and folded (df = 0) elbows: |v|^2 within
      * tol = 2 |v| 2^-14 units of either counts as exactly there; the wrist
      * centre then moves by tol / (|v| + |a2 - rho|) <= 2^-13 units */
-    tol = (((int64_t)ikq_abs64(vx) + (int64_t)ikq_abs64(vy)) << DH_QPOS_FRAC >> 13) + 1;
-    ds = Dabs - K;
-    df = Dabs + K;
+    tol = (((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy)) << DH_QPOS_FRAC >> 13) + 1;
+    ds = D - K;
+    df = D + K;
     /* beyond either by less than 2^-9 units of the wrist centre (rounded
      * targets near two singularities at once): solved at the boundary */
-    loose = (((int64_t)ikq_abs64(vx) + (int64_t)ikq_abs64(vy) + (int64_t)dh_q_abs_u32(k[K_RHO]) + 1) << DH_QPOS_FRAC) >> 9;
-    if (ds < -loose || df < -loose) return 0; /* this shoulder cannot reach */
+    R2 = (((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy) + (int64_t)dh_q_abs_u32(k[K_RHO]) + 1) << DH_QPOS_FRAC) >> 9;
+    if (ds < -R2 || df < -R2) return; /* this shoulder cannot reach */
     if (ds <= tol) ds = 0;
     if (df <= tol) df = 0;
-    /* cos(t3 - phi) = K / D */
-    if (D < 0) {
-        dm = df;
-        dp = ds;
+    /* cos(t3 - phi) = K / (2 a2 rho): with a2 < 0 the roles swap */
+    if (a2 < 0) {
+        R2 = ds;
+        ds = df;
+        df = R2;
         K = -K;
-    } else {
-        dm = ds;
-        dp = df;
     }
-    s1 = ikq_fit31(dm);
-    s2 = ikq_fit31(dp);
+    s1 = ikq_fit31(ds);
+    s2 = ikq_fit31(df);
     if (((s1 + s2) & 1u) != 0u) s1++;
-    S = (int32_t)dh_q_isqrt62((uint64_t)dh_q_mul64((int32_t)(dm >> s1), (int32_t)(dp >> s2)));
+    S = (int32_t)dh_q_isqrt62((uint64_t)dh_q_mul64((int32_t)(ds >> s1), (int32_t)(df >> s2)));
     psi = ikq_atan2(S, K >> ((s1 + s2) >> 1));
     ne = (S == 0) ? 1u : 2u;
     for (b = 0; b < ne; b++) {
-        int32_t t3 = ikq_wrap180(k[K_PHI] + (b ? -psi : psi)), s3, c3, A, B;
+        const int32_t t3 = ikq_wrap180(k[K_PHI] + (b ? -psi : psi));
+        int32_t s3, c3, A, B;
         dh_sincos_q(t3, &s3, &c3);
         A = a2 + ikq_r30(dh_q_mla64(dh_q_mul64(a3, c3), e, s3));
         B = ikq_r30(dh_q_mul64(a3, s3) - dh_q_mul64(e, c3));
         if (k[K_SIG] < 0) B = -B;
-        c->q[1] = ikq_atan2(dh_q_mul64(A, (int32_t)vy) - dh_q_mul64(B, (int32_t)vx),
-                            dh_q_mla64(dh_q_mul64(A, (int32_t)vx), B, (int32_t)vy));
-        c->q[2] = t3;
-        c->flags = f0 | (ne == 1u ? DH_IKC_SING_ELBOW : 0u) | (b ? DH_IKC_ELBOW_ALT : 0u);
-        ikq_wrist(c, c->q[1] + (k[K_SIG] < 0 ? -t3 : t3));
+        ikq_put_arm(&sol[4u * s + 2u * b], t1,
+                    ikq_atan2(dh_q_mul64(A, vy) - dh_q_mul64(B, vx), dh_q_mla64(dh_q_mul64(A, vx), B, vy)), t3,
+                    f0 | (ne == 1u ? DH_IKC_SING_ELBOW : 0u) | (b ? DH_IKC_ELBOW_ALT : 0u));
     }
-    c->flags = f0;
-    return 0;
 }
 
-/* RRP joint 2 and the extension for one shoulder branch */
-static DH_NOINLINE int ikq_arm_rrp(ikq_ctx *c, int64_t vx, int64_t vy)
+/* RRP: the two extensions of shoulder s (d3, then t2) */
+static DH_NOINLINE void ikq_arm_rrp(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned s)
 {
-    const int32_t *k = c->m->k;
+    const int32_t *k = m->k;
     const int32_t x2 = k[K_E], tau2 = k[K_SIG];
+    const int32_t t1 = sol[4u * s + 2u].q[0], vx = sol[4u * s + 2u].q[1], vy = sol[4u * s + 3u].q[0];
+    const uint32_t f0 = (uint32_t)sol[4u * s + 2u].q[2];
     int64_t L2, tol;
     uint32_t L;
     unsigned b, nl;
-    const uint32_t f0 = c->flags;
 
-    L2 = (int64_t)dh_q_mla64(dh_q_mul64((int32_t)vx, (int32_t)vx), (int32_t)vy, (int32_t)vy) - dh_q_mul64(x2, x2);
+    L2 = dh_q_mla64(dh_q_mul64(vx, vx), vy, vy) - dh_q_mul64(x2, x2);
     /* as the RRR elbow: within 2^-9 units of L = 0 counts as there */
-    tol = (((int64_t)ikq_abs64(vx) + (int64_t)ikq_abs64(vy) + (int64_t)dh_q_abs_u32(x2) + 1) << DH_QPOS_FRAC) >> 9;
-    if (L2 < -tol) return 0;
+    tol = (((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy) + (int64_t)dh_q_abs_u32(x2) + 1) << DH_QPOS_FRAC) >> 9;
+    if (L2 < -tol) return;
     if (L2 < 0) L2 = 0;
     L = dh_q_isqrt62((uint64_t)L2);
     nl = (L == 0u) ? 1u : 2u;
     for (b = 0; b < nl; b++) {
         const int32_t l = b ? -(int32_t)L : (int32_t)L, tl = tau2 > 0 ? l : -l;
-        c->q[1] = ikq_atan2(dh_q_mla64(dh_q_mul64(x2, (int32_t)vy), tl, (int32_t)vx),
-                            dh_q_mul64(x2, (int32_t)vx) - dh_q_mul64(tl, (int32_t)vy));
-        c->q[2] = l - k[K_LOFF];
-        c->flags = f0 | (nl == 1u ? DH_IKC_SING_ELBOW : 0u) | (b ? DH_IKC_ELBOW_ALT : 0u);
-        ikq_wrist(c, c->q[1]);
+        ikq_put_arm(&sol[4u * s + 2u * b], t1,
+                    ikq_atan2(dh_q_mla64(dh_q_mul64(x2, vy), tl, vx), dh_q_mul64(x2, vx) - dh_q_mul64(tl, vy)),
+                    l - k[K_LOFF], f0 | (nl == 1u ? DH_IKC_SING_ELBOW : 0u) | (b ? DH_IKC_ELBOW_ALT : 0u));
     }
-    c->flags = f0;
-    return 0;
 }
 
-/* one shoulder branch: joint 1 (or the reference), the shoulder part of M, the arm */
-static DH_NOINLINE int ikq_shoulder(ikq_ctx *c, const int32_t *o, int32_t u, int sing, const int32_t *nz)
+/* joints 4..6 of the arm in slot j = 4 s + 2 b, its flip into slot j + 1 */
+static DH_NOINLINE void ikq_wrist(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned j, int32_t cref3)
 {
-    const dh_ikc_model_q *m = c->m;
     const int32_t *k = m->k;
-    const int32_t th = k[K_TAU1] > 0 ? k[K_H] : -k[K_H];
-    int32_t t1, s, co;
-    int64_t vx, vy;
+    const int32_t s4a = k[K_S4], s5a = k[K_S5];
+    dh_ikc_sol_q *d = &sol[j], *f = &sol[j + 1u];
+    const dh_ikc_sol_q *src = &sol[(j & ~3u) + 2u];
+    int32_t n[3], z[3], s, co, t4, t5, t6, s5, c5, my;
+    uint32_t sing;
 
+    n[0] = src[0].q[3];
+    n[1] = src[0].q[4];
+    n[2] = src[0].q[5];
+    z[0] = src[1].q[3];
+    z[1] = src[1].q[4];
+    z[2] = src[1].q[5];
+    /* tb = t2 + sigma t3 (RRR) or t2 (RRP) */
+    t4 = d->q[1];
+    if (m->kind == DH_IKC_WRIST_RRR) t4 += (k[K_SIG] < 0) ? -d->q[2] : d->q[2];
+    dh_sincos_q(t4, &s, &co);
+    ikq_rot2(&n[0], &n[1], co, s);
+    ikq_rot2(&z[0], &z[1], co, s);
+    ikq_ct(&k[K_C], n);
+    ikq_ct(&k[K_C], z);
+    sing = (dh_q_abs_u32(z[0]) <= (uint32_t)IKQ_SING_WRIST && dh_q_abs_u32(z[1]) <= (uint32_t)IKQ_SING_WRIST);
+    if (sing)
+        t4 = cref3;
+    else
+        t4 = ikq_atan2(s5a > 0 ? z[1] : -z[1], s5a > 0 ? z[0] : -z[0]);
+    dh_sincos_q(t4, &s, &co);
+    s5 = ikq_r30(dh_q_mla64(dh_q_mul64(co, z[0]), s, z[1]));
+    if (s5a < 0) s5 = -s5;
+    c5 = (s4a == s5a) ? -z[2] : z[2];
+    (void)dh_atan2_q(s5, c5, &t5);
+    /* m' = Rz(-t4) M e_x; n[0] becomes m'x, my = m'y */
+    my = n[1];
+    ikq_rot2(&n[0], &my, co, s);
+    t6 = ikq_atan2((s4a == s5a) ? -(int64_t)my : (int64_t)my,
+                   ((s4a > 0) ? dh_q_mla64(dh_q_mul64(c5, n[0]), s5, n[2])
+                              : dh_q_mul64(c5, n[0]) - dh_q_mul64(s5, n[2])) >> 30);
+    d->q[3] = t4;
+    d->q[4] = t5;
+    d->q[5] = t6;
     if (sing) {
-        t1 = c->cref[0];
-        dh_sincos_q(t1, &s, &co);
-        u = ikq_r30(dh_q_mla64(dh_q_mul64(co, o[0]), s, o[1]));
-    } else {
-        t1 = ikq_atan2(dh_q_mla64(dh_q_mul64(th, o[0]), u, o[1]), dh_q_mul64(u, o[0]) - dh_q_mul64(th, o[1]));
-        dh_sincos_q(t1, &s, &co);
+        d->flags |= DH_IKC_SING_WRIST;
+        f->flags = IKQ_EMPTY;
+        return;
     }
-    c->q[0] = t1;
-    /* Rx(alpha1)^T Rz(t1)^T applied to R06 e_x and to the tool z column */
-    c->n1[0] = nz[0];
-    c->n1[1] = nz[1];
-    c->n1[2] = nz[2];
-    c->z1[0] = nz[3];
-    c->z1[1] = nz[4];
-    c->z1[2] = nz[5];
-    ikq_rot2(&c->n1[0], &c->n1[1], co, s);
-    ikq_rot2(&c->z1[0], &c->z1[1], co, s);
-    ikq_rot2(&c->n1[1], &c->n1[2], m->ca[0], m->sa[0]);
-    ikq_rot2(&c->z1[1], &c->z1[2], m->ca[0], m->sa[0]);
-    vx = (int64_t)u - m->a[0];
-    vy = (int64_t)o[2] - m->d[0];
-    if (k[K_TAU1] < 0) vy = -vy;
-    if (ikq_abs64(vx) > (uint64_t)IKQ_POS_LIM || ikq_abs64(vy) > (uint64_t)IKQ_POS_LIM) return 1;
-    return (m->kind == DH_IKC_WRIST_RRR) ? ikq_arm_rrr(c, vx, vy) : ikq_arm_rrp(c, vx, vy);
+    f->q[0] = d->q[0];
+    f->q[1] = d->q[1];
+    f->q[2] = d->q[2];
+    f->q[3] = ikq_wrap180(t4 + Q16_180);
+    f->q[4] = ikq_wrap180(-t5);
+    f->q[5] = ikq_wrap180(t6 + Q16_180);
+    f->flags = d->flags | DH_IKC_WRIST_ALT;
 }
 
-dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const dh_frame_q *T06, const int32_t *cref, dh_ikc_sol_q *sol,
-                          uint32_t *count)
+dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const int32_t *cref, dh_ikc_sol_q *sol, uint32_t *count)
 {
-    const int32_t *k = m->k;
-    const dh_q30(*R)[3] = T06->r;
-    ikq_ctx c;
-    int32_t o[3], nz[6], h = k[K_H];
-    int64_t r2, rad, tol;
-    uint32_t u, i;
-    int sing;
+    uint32_t s, j, cnt = 0;
 
     *count = 0;
-    for (i = 0; i < 3u; i++) {
-        const int64_t rw = dh_q_mla64(dh_q_mla64(dh_q_mul64(R[0][i], k[K_W]), R[1][i], k[K_W + 1]), R[2][i], k[K_W + 2]);
-        const int64_t v = (int64_t)T06->p[i] - ((rw + DH_Q_HALF30) >> 30);
-        if (ikq_abs64(v) > (uint64_t)IKQ_POS_LIM) return DH_ERR_OVERFLOW;
-        o[i] = (int32_t)v;
-        nz[i] = R[0][i];
-        nz[3u + i] = ikq_r30(dh_q_mla64(dh_q_mul64(m->sa[5], R[1][i]), m->ca[5], R[2][i]));
+    if (ikq_prep(m, sol, cref[0])) return DH_ERR_OVERFLOW;
+    for (s = 0; s < 2u; s++) {
+        if (sol[4u * s + 2u].q[2] == IKQ_ABSENT) continue;
+        if (m->kind == DH_IKC_WRIST_RRR)
+            ikq_arm_rrr(m, sol, s);
+        else
+            ikq_arm_rrp(m, sol, s);
+        if (sol[4u * s].flags != IKQ_EMPTY) ikq_wrist(m, sol, 4u * s, cref[3]);
+        if (sol[4u * s + 2u].flags != IKQ_EMPTY) ikq_wrist(m, sol, 4u * s + 2u, cref[3]);
     }
-    r2 = dh_q_mla64(dh_q_mul64(o[0], o[0]), o[1], o[1]);
-    rad = r2 - dh_q_mul64(h, h);
-    /* inside the cylinder of radius |h| by less than 2^-9 units: u = 0 */
-    tol = (((int64_t)dh_q_abs_u32(o[0]) + (int64_t)dh_q_abs_u32(o[1]) + (int64_t)dh_q_abs_u32(h) + 1) << DH_QPOS_FRAC) >> 9;
-    if (rad < -tol) return DH_OK; /* beyond the shoulder's reach: count 0 */
-    if (rad < 0) rad = 0;
-    sing = dh_q_abs_u32(o[0]) <= (uint32_t)IKQ_SING_AXIS && dh_q_abs_u32(o[1]) <= (uint32_t)IKQ_SING_AXIS;
-    u = sing ? 0u : dh_q_isqrt62((uint64_t)rad);
-    c.m = m;
-    c.cref = cref;
-    c.sol = sol;
-    c.cnt = 0;
-    c.flags = sing ? DH_IKC_SING_SHOULDER : 0u;
-    if (ikq_shoulder(&c, o, (int32_t)u, sing, nz)) return DH_ERR_OVERFLOW;
-    if (u != 0u) {
-        c.flags = DH_IKC_SHOULDER_ALT;
-        if (ikq_shoulder(&c, o, -(int32_t)u, 0, nz)) return DH_ERR_OVERFLOW;
-    }
-    *count = c.cnt;
+    for (j = 0; j < DH_IKC_MAX_SOL; j++)
+        if (sol[j].flags != IKQ_EMPTY) {
+            if (j != cnt) sol[cnt] = sol[j];
+            cnt++;
+        }
+    *count = cnt;
     return DH_OK;
 }
 
 /* ---- front end: solve --------------------------------------------------- */
 
-static int ikq_model_ok(const dh_ikc_model_q *m)
+/* kind known, n the family's, pre/post rotation entries <= 1.1 (the
+ * products of ikq_t06 cannot wrap) */
+static DH_NOINLINE int ikq_model_ok(const dh_ikc_model_q *m)
 {
+    unsigned c, i;
+    for (c = 0; c < 3u; c++)
+        for (i = 0; i < 3u; i++)
+            if (dh_q_abs_u32(m->pre_inv.r[c][i]) > IKQ_ENTRY_MAX || dh_q_abs_u32(m->post_inv.r[c][i]) > IKQ_ENTRY_MAX)
+                return 0;
     switch (m->kind) {
     case DH_IKC_WRIST_RRR:
     case DH_IKC_WRIST_RRP:
@@ -724,46 +789,75 @@ static DH_NOINLINE uint32_t ikq_finish(const dh_ikc_model_q *m, const int32_t *q
 {
     uint32_t s, i, kept = 0;
     for (s = 0; s < raw; s++) {
-        dh_ikc_sol_q t = sol[s];
+        dh_ikc_sol_q *t = &sol[s];
         int all_in = 1;
         for (i = 0; i < m->n; i++) {
-            const int32_t ref = q_ref ? q_ref[i] : 0;
             int in = 1;
             if ((m->prismatic >> i) & 1u) {
-                const int32_t v = dh_q_sat32((int64_t)t.q[i] - m->d[i], ovf);
-                if (m->qmin[i] <= m->qmax[i]) in = (v >= m->qmin[i] && v <= m->qmax[i]);
-                t.q[i] = v;
+                t->q[i] = dh_q_sat32((int64_t)t->q[i] - m->d[i], ovf);
+                if (m->qmin[i] <= m->qmax[i]) in = (t->q[i] >= m->qmin[i] && t->q[i] <= m->qmax[i]);
             } else {
-                t.q[i] = ikq_shift(ikq_wrap180(t.q[i] - ikq_reduce(m->off[i])), m->qmin[i], m->qmax[i], ref, &in);
+                t->q[i] = ikq_shift(ikq_wrap180(t->q[i] - ikq_reduce(m->off[i])), m->qmin[i], m->qmax[i],
+                                    q_ref ? q_ref[i] : 0, &in);
             }
             if (!in) all_in = 0;
         }
         if (!all_in) {
             if ((opts & DH_IKC_KEEP_OUT_OF_LIMITS) == 0u) continue;
-            t.flags |= DH_IKC_OUT_OF_LIMITS;
+            t->flags |= DH_IKC_OUT_OF_LIMITS;
         }
-        sol[kept++] = t;
+        if (kept != s) sol[kept] = *t;
+        kept++;
     }
     return kept;
 }
 
-/* T06 = pre_inv T post_inv, identity products skipped */
-static DH_NOINLINE dh_status ikq_t06(const dh_ikc_model_q *m, const dh_frame_q *T, dh_frame_q *T06)
+/* v <- R v (+ p with addp) for a model frame; 1 on overflow */
+static DH_NOINLINE int ikq_col_apply(const dh_frame_q *F, int32_t *v, int addp)
 {
-    dh_status st = DH_OK;
-    *T06 = *T;
-    if (memcmp(&m->pre_inv, &ikq_identity, sizeof ikq_identity) != 0) st = dh_frame_mul_q(&m->pre_inv, T06, T06);
-    if (memcmp(&m->post_inv, &ikq_identity, sizeof ikq_identity) != 0 &&
-        dh_frame_mul_q(T06, &m->post_inv, T06) != DH_OK)
-        st = DH_ERR_OVERFLOW;
-    return st;
+    const int32_t x = v[0], y = v[1], z = v[2];
+    int ovf = 0;
+    unsigned i;
+    for (i = 0; i < 3u; i++) {
+        const int64_t t = dh_q_mla64(dh_q_mla64(dh_q_mul64(F->r[0][i], x), F->r[1][i], y), F->r[2][i], z);
+        v[i] = addp ? dh_q_pos_rnd30(F->p[i], t, &ovf) : dh_q_rnd30(t, &ovf);
+    }
+    return ovf;
+}
+
+/* row i of the scratch T06 times a model frame on the right; 1 on overflow */
+static DH_NOINLINE int ikq_row_apply(const dh_frame_q *F, dh_ikc_sol_q *sol, unsigned i)
+{
+    int32_t *c0 = DH_IKC_T06_COL_(sol, 0u), *c1 = DH_IKC_T06_COL_(sol, 1u), *c2 = DH_IKC_T06_COL_(sol, 2u);
+    int32_t *p = DH_IKC_T06_COL_(sol, 3u);
+    const int32_t x = c0[i], y = c1[i], z = c2[i];
+    int ovf = 0;
+    c0[i] = dh_q_rnd30(dh_q_mla64(dh_q_mla64(dh_q_mul64(x, F->r[0][0]), y, F->r[0][1]), z, F->r[0][2]), &ovf);
+    c1[i] = dh_q_rnd30(dh_q_mla64(dh_q_mla64(dh_q_mul64(x, F->r[1][0]), y, F->r[1][1]), z, F->r[1][2]), &ovf);
+    c2[i] = dh_q_rnd30(dh_q_mla64(dh_q_mla64(dh_q_mul64(x, F->r[2][0]), y, F->r[2][1]), z, F->r[2][2]), &ovf);
+    p[i] = dh_q_pos_rnd30(p[i], dh_q_mla64(dh_q_mla64(dh_q_mul64(x, F->p[0]), y, F->p[1]), z, F->p[2]), &ovf);
+    return ovf;
+}
+
+/* T06 = pre_inv T post_inv into the scratch of sol, identity products
+ * skipped; 1 on overflow */
+static DH_NOINLINE int ikq_t06(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_sol_q *sol)
+{
+    unsigned c, i;
+    int ovf = 0;
+    for (c = 0; c < 4u; c++)
+        for (i = 0; i < 3u; i++) DH_IKC_T06_COL_(sol, c)[i] = (c < 3u) ? T->r[c][i] : T->p[i];
+    if (memcmp(&m->pre_inv, &ikq_identity, sizeof ikq_identity) != 0)
+        for (c = 0; c < 4u; c++) ovf |= ikq_col_apply(&m->pre_inv, DH_IKC_T06_COL_(sol, c), c == 3u);
+    if (memcmp(&m->post_inv, &ikq_identity, sizeof ikq_identity) != 0)
+        for (i = 0; i < 3u; i++) ovf |= ikq_row_apply(&m->post_inv, sol, i);
+    return ovf;
 }
 
 dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int32_t *q_ref, uint32_t opts,
                    dh_ikc_sol_q *sol, uint32_t *n_sol)
 {
     int32_t cref[DH_IKC_JOINTS];
-    dh_frame_q T06;
     uint32_t raw = 0, i, kept;
     dh_status st;
     int ovf = 0;
@@ -780,13 +874,13 @@ dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int3
         else
             cref[i] = ikq_wrap180(ikq_reduce(ref) + ikq_reduce(m->off[i]));
     }
-    if (ikq_t06(m, target, &T06) != DH_OK) return DH_ERR_OVERFLOW;
+    if (ikq_t06(m, target, sol)) return DH_ERR_OVERFLOW;
     if (m->kind == DH_IKC_PARALLEL_234)
-        st = dh_ikc_par234_q_(m, &T06, cref, sol, &raw);
+        st = dh_ikc_par234_q_(m, cref, sol, &raw);
     else if (m->kind == DH_IKC_SCARA)
-        st = dh_ikc_scara_q_(m, &T06, cref, sol, &raw);
+        st = dh_ikc_scara_q_(m, cref, sol, &raw);
     else
-        st = dh_ikc_wrist_q_(m, &T06, cref, sol, &raw);
+        st = dh_ikc_wrist_q_(m, cref, sol, &raw);
     if (st != DH_OK) return st;
     if (raw == 0u) return DH_ERR_UNREACHABLE;
     ovf = 0;
