@@ -464,16 +464,16 @@ int dh_ikc_detect_wrist_q_(dh_ikc_model_q *m)
 /*
  * Stack. The whole call chain of dh_ikc_q stays within 256 bytes on
  * Cortex-M0, so the solver keeps its state in the solution array, not in
- * its frames: T06 arrives in sol[0..1] (dh_ikc_impl.h); solution slot
- * 4 s + 2 b + w holds shoulder branch s, elbow branch b, wrist branch w;
- * ikq_prep reads T06 and leaves per-shoulder data in the elbow-1 slots of
- * that shoulder (slot 4 s + 2: t1, vx, its flags, M's x column after the
- * shoulder rotation; slot 4 s + 3: vy, the z column), ikq_arm overwrites
- * q[0..2] of the slots 4 s and 4 s + 2 with the arm angles of each elbow
- * branch once it has read them, and ikq_wrist reads its columns before it
- * writes a pair of slots. Empty slots carry IKQ_EMPTY flags and are
- * squeezed out at the end. Every helper is called from the solver itself,
- * so the chain is front end -> solver -> one helper -> dh_sincos_q or
+ * its frames, and calls one helper at a time: T06 arrives in sol[0..1]
+ * (dh_ikc_impl.h); solution slot 4 s + 2 b + w holds shoulder branch s,
+ * elbow branch b, wrist branch w. ikq_centre leaves the wrist centre in
+ * sol[4] (o, vy, u, shoulder singular); ikq_shoulder puts each shoulder
+ * branch's data into its elbow-2 slots (slot 4 s + 2: t1, vx, flags, M's x
+ * column after the shoulder rotation; slot 4 s + 3: vy, the elbow pair,
+ * the z column); ikq_arm_* writes q[0..2] of slots 4 s and 4 s + 2 once it
+ * has read them, and ikq_wrist reads its columns before it writes a pair
+ * of slots. Empty slots carry IKQ_EMPTY flags and are squeezed out at the
+ * end. The chain is front end -> solver -> one helper -> dh_sincos_q or
  * dh_atan2_q.
  */
 #define IKQ_EMPTY 0xFFFFFFFFu
@@ -487,66 +487,72 @@ static DH_NOINLINE void ikq_ct(const int32_t *C, int32_t *v)
     for (i = 0; i < 3u; i++) v[i] = ikq_r30(dh_q_mla64(dh_q_mla64(dh_q_mul64(C[i], x), C[3u + i], y), C[6u + i], z));
 }
 
-/* wrist centre, u, and the data of each shoulder branch; 1 on overflow */
-static DH_NOINLINE int ikq_prep(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, int32_t cref0)
+/* wrist centre o, vy and u into sol[4].q (o, vy, u, shoulder singular);
+ * 1 on overflow, -1 when the shoulder cannot reach, else 0 */
+static DH_NOINLINE int ikq_centre(const dh_ikc_model_q *m, dh_ikc_sol_q *sol)
 {
     const int32_t *k = m->k;
     const int32_t *c0 = DH_IKC_T06_COL_(sol, 0u), *c1 = DH_IKC_T06_COL_(sol, 1u), *c2 = DH_IKC_T06_COL_(sol, 2u);
     const int32_t *p = DH_IKC_T06_COL_(sol, 3u);
-    const int32_t h = k[K_H], th = k[K_TAU1] > 0 ? k[K_H] : -k[K_H];
-    int32_t o[3], vy, u;
-    int64_t rad, tol, v;
-    unsigned i, s, sing, nsh;
+    int32_t *o = sol[4].q;
+    int64_t v;
+    unsigned i;
 
     for (i = 0; i < 3u; i++) {
-        const int64_t rw = dh_q_mla64(dh_q_mla64(dh_q_mul64(c0[i], k[K_W]), c1[i], k[K_W + 1]), c2[i], k[K_W + 2]);
-        v = (int64_t)p[i] - ((rw + DH_Q_HALF30) >> 30);
+        v = dh_q_mla64(dh_q_mla64(dh_q_mul64(c0[i], k[K_W]), c1[i], k[K_W + 1]), c2[i], k[K_W + 2]);
+        v = (int64_t)p[i] - ((v + DH_Q_HALF30) >> 30);
         if (ikq_abs64(v) > (uint64_t)IKQ_POS_LIM) return 1;
         o[i] = (int32_t)v;
     }
     v = (int64_t)o[2] - m->d[0];
     if (k[K_TAU1] < 0) v = -v;
     if (ikq_abs64(v) > (uint64_t)IKQ_POS_LIM) return 1;
-    vy = (int32_t)v;
-    for (i = 0; i < DH_IKC_MAX_SOL; i++) sol[i].flags = IKQ_EMPTY;
-    sol[2].q[2] = IKQ_ABSENT;
-    sol[6].q[2] = IKQ_ABSENT;
-    rad = dh_q_mla64(dh_q_mul64(o[0], o[0]), o[1], o[1]) - dh_q_mul64(h, h);
+    o[3] = (int32_t)v;
+    v = dh_q_mla64(dh_q_mul64(o[0], o[0]), o[1], o[1]) - dh_q_mul64(k[K_H], k[K_H]);
     /* inside the cylinder of radius |h| by less than 2^-9 units: u = 0 */
-    tol = (((int64_t)dh_q_abs_u32(o[0]) + (int64_t)dh_q_abs_u32(o[1]) + (int64_t)dh_q_abs_u32(h) + 1) << DH_QPOS_FRAC) >> 9;
-    if (rad < -tol) return 0; /* beyond the shoulder's reach */
-    if (rad < 0) rad = 0;
-    sing = dh_q_abs_u32(o[0]) <= (uint32_t)IKQ_SING_AXIS && dh_q_abs_u32(o[1]) <= (uint32_t)IKQ_SING_AXIS;
-    u = sing ? 0 : (int32_t)dh_q_isqrt62((uint64_t)rad);
-    nsh = (sing || u == 0) ? 1u : 2u;
-    for (s = 0; s < nsh; s++) {
-        dh_ikc_sol_q *d0 = &sol[4u * s + 2u], *d1 = &sol[4u * s + 3u];
-        int32_t t1, sn, cs, *n1 = &d0->q[3], *z1 = &d1->q[3];
-        if (sing) {
-            t1 = cref0;
-            dh_sincos_q(t1, &sn, &cs);
-            u = ikq_r30(dh_q_mla64(dh_q_mul64(cs, o[0]), sn, o[1]));
-        } else {
-            t1 = ikq_atan2(dh_q_mla64(dh_q_mul64(th, o[0]), u, o[1]), dh_q_mul64(u, o[0]) - dh_q_mul64(th, o[1]));
-            dh_sincos_q(t1, &sn, &cs);
-        }
-        v = (int64_t)u - m->a[0];
-        if (ikq_abs64(v) > (uint64_t)IKQ_POS_LIM) return 1;
-        /* Rx(alpha1)^T Rz(t1)^T applied to R06 e_x and to R06 Rx(alpha6)^T e_z */
-        for (i = 0; i < 3u; i++) {
-            n1[i] = c0[i];
-            z1[i] = ikq_r30(dh_q_mla64(dh_q_mul64(m->sa[5], c1[i]), m->ca[5], c2[i]));
-        }
-        ikq_rot2(&n1[0], &n1[1], cs, sn);
-        ikq_rot2(&z1[0], &z1[1], cs, sn);
-        ikq_rot2(&n1[1], &n1[2], m->ca[0], m->sa[0]);
-        ikq_rot2(&z1[1], &z1[2], m->ca[0], m->sa[0]);
-        d0->q[0] = t1;
-        d0->q[1] = (int32_t)v;
-        d0->q[2] = (int32_t)((sing ? DH_IKC_SING_SHOULDER : 0u) | (s ? DH_IKC_SHOULDER_ALT : 0u));
-        d1->q[0] = vy;
-        u = -u;
+    if (v < -((((int64_t)dh_q_abs_u32(o[0]) + (int64_t)dh_q_abs_u32(o[1]) + (int64_t)dh_q_abs_u32(k[K_H]) + 1)
+               << DH_QPOS_FRAC) >> 9))
+        return -1;
+    o[5] = dh_q_abs_u32(o[0]) <= (uint32_t)IKQ_SING_AXIS && dh_q_abs_u32(o[1]) <= (uint32_t)IKQ_SING_AXIS;
+    o[4] = (o[5] || v <= 0) ? 0 : (int32_t)dh_q_isqrt62((uint64_t)v);
+    return 0;
+}
+
+/* shoulder branch s: joint 1 and the shoulder part of M into slots 4 s + 2, 4 s + 3 */
+static DH_NOINLINE int ikq_shoulder(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned s, int32_t cref0)
+{
+    const int32_t *k = m->k;
+    const int32_t *c0 = DH_IKC_T06_COL_(sol, 0u), *c1 = DH_IKC_T06_COL_(sol, 1u), *c2 = DH_IKC_T06_COL_(sol, 2u);
+    const int32_t *o = sol[4].q;
+    dh_ikc_sol_q *d0 = &sol[4u * s + 2u], *d1 = &sol[4u * s + 3u];
+    int32_t t1, sn, cs, u = s ? -o[4] : o[4];
+    int64_t v;
+    unsigned i;
+
+    if (o[5]) {
+        t1 = cref0;
+        dh_sincos_q(t1, &sn, &cs);
+        u = ikq_r30(dh_q_mla64(dh_q_mul64(cs, o[0]), sn, o[1]));
+    } else {
+        const int32_t th = k[K_TAU1] > 0 ? k[K_H] : -k[K_H];
+        t1 = ikq_atan2(dh_q_mla64(dh_q_mul64(th, o[0]), u, o[1]), dh_q_mul64(u, o[0]) - dh_q_mul64(th, o[1]));
+        dh_sincos_q(t1, &sn, &cs);
     }
+    v = (int64_t)u - m->a[0];
+    if (ikq_abs64(v) > (uint64_t)IKQ_POS_LIM) return 1;
+    /* Rx(alpha1)^T Rz(t1)^T applied to R06 e_x and to R06 Rx(alpha6)^T e_z */
+    for (i = 0; i < 3u; i++) {
+        d0->q[3u + i] = c0[i];
+        d1->q[3u + i] = ikq_r30(dh_q_mla64(dh_q_mul64(m->sa[5], c1[i]), m->ca[5], c2[i]));
+    }
+    ikq_rot2(&d0->q[3], &d0->q[4], cs, sn);
+    ikq_rot2(&d1->q[3], &d1->q[4], cs, sn);
+    ikq_rot2(&d0->q[4], &d0->q[5], m->ca[0], m->sa[0]);
+    ikq_rot2(&d1->q[4], &d1->q[5], m->ca[0], m->sa[0]);
+    d0->q[0] = t1;
+    d0->q[1] = (int32_t)v;
+    d0->q[2] = (int32_t)((o[5] ? DH_IKC_SING_SHOULDER : 0u) | (s ? DH_IKC_SHOULDER_ALT : 0u));
+    d1->q[0] = o[3];
     return 0;
 }
 
@@ -567,84 +573,116 @@ DH_INLINE void ikq_put_arm(dh_ikc_sol_q *d, int32_t t1, int32_t t2, int32_t t3, 
     d->flags = flags;
 }
 
-/* RRR: the elbow branches of shoulder s (t3, then t2) */
-static DH_NOINLINE void ikq_arm_rrr(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned s)
+/* RRR elbow of shoulder s: the pair (sqrt((D - K)(D + K)), K) scaled to
+ * int32 into slot 4 s + 3 q[1..2]; SING_ELBOW or IKQ_ABSENT into the
+ * shoulder's flags */
+static DH_NOINLINE void ikq_elbow_rrr(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned s)
 {
     const int32_t *k = m->k;
     const int32_t a2 = m->a[1], a3 = m->a[2], e = k[K_E];
-    const int32_t t1 = sol[4u * s + 2u].q[0], vx = sol[4u * s + 2u].q[1], vy = sol[4u * s + 3u].q[0];
-    const uint32_t f0 = (uint32_t)sol[4u * s + 2u].q[2];
-    int64_t K, D, R2, ds, df, tol;
-    unsigned s1, s2, b, ne;
-    int32_t psi, S;
+    dh_ikc_sol_q *d0 = &sol[4u * s + 2u], *d1 = &sol[4u * s + 3u];
+    const int32_t vx = d0->q[1], vy = d1->q[0];
+    int64_t K, ds, df, tol;
+    unsigned s1, s2;
+    uint32_t S;
 
     /* K = |v|^2 - a2^2 - a3^2 - e^2 and |D| = 2 |a2| rho =
      * a2^2 + a3^2 + e^2 - delta^2, both from exact products (a rounded rho
      * times 2 a2 would move a nearly folded elbow by units of 1e-3) */
-    R2 = dh_q_mla64(dh_q_mla64(dh_q_mul64(a2, a2), a3, a3), e, e);
-    K = dh_q_mla64(dh_q_mul64(vx, vx), vy, vy) - R2;
-    D = R2 - dh_q_mul64(k[K_RHO], k[K_RHO]);
-    /* stretched (ds = 0) and folded (df = 0) elbows: |v|^2 within
-     * tol = 2 |v| 2^-14 units of either counts as exactly there; the wrist
-     * centre then moves by tol / (|v| + |a2 - rho|) <= 2^-13 units */
+    ds = dh_q_mla64(dh_q_mla64(dh_q_mul64(a2, a2), a3, a3), e, e);
+    K = dh_q_mla64(dh_q_mul64(vx, vx), vy, vy) - ds;
+    ds -= dh_q_mul64(k[K_RHO], k[K_RHO]);
+    df = ds + K;
+    ds -= K;
+    /* beyond stretched or folded by less than 2^-9 units of the wrist
+     * centre (rounded targets near two singularities at once): solved at
+     * the boundary */
+    tol = (((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy) + (int64_t)dh_q_abs_u32(k[K_RHO]) + 1)
+           << DH_QPOS_FRAC) >> 9;
+    if (ds < -tol || df < -tol) {
+        d0->q[2] = IKQ_ABSENT;
+        return;
+    }
+    /* |v|^2 within tol = 2 |v| 2^-14 units of stretched (ds = 0) or folded
+     * (df = 0) counts as exactly there; the wrist centre then moves by
+     * tol / (|v| + |a2 - rho|) <= 2^-13 units */
     tol = (((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy)) << DH_QPOS_FRAC >> 13) + 1;
-    ds = D - K;
-    df = D + K;
-    /* beyond either by less than 2^-9 units of the wrist centre (rounded
-     * targets near two singularities at once): solved at the boundary */
-    R2 = (((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy) + (int64_t)dh_q_abs_u32(k[K_RHO]) + 1) << DH_QPOS_FRAC) >> 9;
-    if (ds < -R2 || df < -R2) return; /* this shoulder cannot reach */
     if (ds <= tol) ds = 0;
     if (df <= tol) df = 0;
     /* cos(t3 - phi) = K / (2 a2 rho): with a2 < 0 the roles swap */
     if (a2 < 0) {
-        R2 = ds;
+        tol = ds;
         ds = df;
-        df = R2;
+        df = tol;
         K = -K;
     }
     s1 = ikq_fit31(ds);
     s2 = ikq_fit31(df);
     if (((s1 + s2) & 1u) != 0u) s1++;
-    S = (int32_t)dh_q_isqrt62((uint64_t)dh_q_mul64((int32_t)(ds >> s1), (int32_t)(df >> s2)));
-    psi = ikq_atan2(S, K >> ((s1 + s2) >> 1));
-    ne = (S == 0) ? 1u : 2u;
+    S = dh_q_isqrt62((uint64_t)dh_q_mul64((int32_t)(ds >> s1), (int32_t)(df >> s2)));
+    if (S == 0u) d0->q[2] |= (int32_t)DH_IKC_SING_ELBOW;
+    /* the pair (S, K 2^-(s1 + s2) / 2), both rounded below 2^30 */
+    K >>= (s1 + s2) >> 1;
+    s1 = 0u;
+    while ((((uint64_t)S | ikq_abs64(K)) >> s1) >= ((uint64_t)1 << 30)) s1++;
+    d1->q[1] = (s1 != 0u) ? (int32_t)dh_q_rshr((int64_t)S, s1) : (int32_t)S;
+    d1->q[2] = (s1 != 0u) ? (int32_t)dh_q_rshr(K, s1) : (int32_t)K;
+}
+
+/* RRR arm angles of shoulder s: t3 = phi +- psi, then t2, into slots 4 s, 4 s + 2 */
+static DH_NOINLINE void ikq_arm_rrr(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned s)
+{
+    const int32_t *k = m->k;
+    const dh_ikc_sol_q *d0 = &sol[4u * s + 2u], *d1 = &sol[4u * s + 3u];
+    const int32_t t1 = d0->q[0], vx = d0->q[1], vy = d1->q[0];
+    const uint32_t f0 = (uint32_t)d0->q[2];
+    int32_t psi = 0, s3, c3, A, B, t3;
+    unsigned b, ne = ((f0 & DH_IKC_SING_ELBOW) != 0u) ? 1u : 2u;
+
+    (void)dh_atan2_q(d1->q[1], d1->q[2], &psi);
     for (b = 0; b < ne; b++) {
-        const int32_t t3 = ikq_wrap180(k[K_PHI] + (b ? -psi : psi));
-        int32_t s3, c3, A, B;
+        t3 = ikq_wrap180(k[K_PHI] + (b ? -psi : psi));
         dh_sincos_q(t3, &s3, &c3);
-        A = a2 + ikq_r30(dh_q_mla64(dh_q_mul64(a3, c3), e, s3));
-        B = ikq_r30(dh_q_mul64(a3, s3) - dh_q_mul64(e, c3));
+        A = m->a[1] + ikq_r30(dh_q_mla64(dh_q_mul64(m->a[2], c3), k[K_E], s3));
+        B = ikq_r30(dh_q_mul64(m->a[2], s3) - dh_q_mul64(k[K_E], c3));
         if (k[K_SIG] < 0) B = -B;
         ikq_put_arm(&sol[4u * s + 2u * b], t1,
                     ikq_atan2(dh_q_mul64(A, vy) - dh_q_mul64(B, vx), dh_q_mla64(dh_q_mul64(A, vx), B, vy)), t3,
-                    f0 | (ne == 1u ? DH_IKC_SING_ELBOW : 0u) | (b ? DH_IKC_ELBOW_ALT : 0u));
+                    f0 | (b ? DH_IKC_ELBOW_ALT : 0u));
     }
 }
 
-/* RRP: the two extensions of shoulder s (d3, then t2) */
+/* RRP: the extension L of shoulder s into slot 4 s + 3 q[1] */
+static DH_NOINLINE void ikq_elbow_rrp(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned s)
+{
+    const int32_t x2 = m->k[K_E];
+    dh_ikc_sol_q *d0 = &sol[4u * s + 2u], *d1 = &sol[4u * s + 3u];
+    const int32_t vx = d0->q[1], vy = d1->q[0];
+    int64_t L2 = dh_q_mla64(dh_q_mul64(vx, vx), vy, vy) - dh_q_mul64(x2, x2);
+    /* as the RRR elbow: within 2^-9 units of L = 0 counts as there */
+    if (L2 < -((((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy) + (int64_t)dh_q_abs_u32(x2) + 1)
+                << DH_QPOS_FRAC) >> 9)) {
+        d0->q[2] = IKQ_ABSENT;
+        return;
+    }
+    d1->q[1] = (L2 <= 0) ? 0 : (int32_t)dh_q_isqrt62((uint64_t)L2);
+    if (d1->q[1] == 0) d0->q[2] |= (int32_t)DH_IKC_SING_ELBOW;
+}
+
+/* RRP arm of shoulder s: t2 and d3 for +-L into slots 4 s, 4 s + 2 */
 static DH_NOINLINE void ikq_arm_rrp(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned s)
 {
     const int32_t *k = m->k;
-    const int32_t x2 = k[K_E], tau2 = k[K_SIG];
-    const int32_t t1 = sol[4u * s + 2u].q[0], vx = sol[4u * s + 2u].q[1], vy = sol[4u * s + 3u].q[0];
-    const uint32_t f0 = (uint32_t)sol[4u * s + 2u].q[2];
-    int64_t L2, tol;
-    uint32_t L;
-    unsigned b, nl;
+    const dh_ikc_sol_q *d0 = &sol[4u * s + 2u], *d1 = &sol[4u * s + 3u];
+    const int32_t t1 = d0->q[0], vx = d0->q[1], vy = d1->q[0], L = d1->q[1], x2 = k[K_E];
+    const uint32_t f0 = (uint32_t)d0->q[2];
+    unsigned b, nl = (L == 0) ? 1u : 2u;
 
-    L2 = dh_q_mla64(dh_q_mul64(vx, vx), vy, vy) - dh_q_mul64(x2, x2);
-    /* as the RRR elbow: within 2^-9 units of L = 0 counts as there */
-    tol = (((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy) + (int64_t)dh_q_abs_u32(x2) + 1) << DH_QPOS_FRAC) >> 9;
-    if (L2 < -tol) return;
-    if (L2 < 0) L2 = 0;
-    L = dh_q_isqrt62((uint64_t)L2);
-    nl = (L == 0u) ? 1u : 2u;
     for (b = 0; b < nl; b++) {
-        const int32_t l = b ? -(int32_t)L : (int32_t)L, tl = tau2 > 0 ? l : -l;
+        const int32_t l = b ? -L : L, tl = k[K_SIG] > 0 ? l : -l;
         ikq_put_arm(&sol[4u * s + 2u * b], t1,
                     ikq_atan2(dh_q_mla64(dh_q_mul64(x2, vy), tl, vx), dh_q_mul64(x2, vx) - dh_q_mul64(tl, vy)),
-                    l - k[K_LOFF], f0 | (nl == 1u ? DH_IKC_SING_ELBOW : 0u) | (b ? DH_IKC_ELBOW_ALT : 0u));
+                    l - k[K_LOFF], f0 | (b ? DH_IKC_ELBOW_ALT : 0u));
     }
 }
 
@@ -705,20 +743,33 @@ static DH_NOINLINE void ikq_wrist(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, un
     f->flags = d->flags | DH_IKC_WRIST_ALT;
 }
 
-dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const int32_t *cref, dh_ikc_sol_q *sol, uint32_t *count)
+dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count)
 {
-    uint32_t s, j, cnt = 0;
+    uint32_t s, j, cnt = 0, nsh;
+    int st;
 
     *count = 0;
-    if (ikq_prep(m, sol, cref[0])) return DH_ERR_OVERFLOW;
+    st = ikq_centre(m, sol);
+    if (st > 0) return DH_ERR_OVERFLOW;
+    if (st < 0) return DH_OK; /* unreachable */
+    nsh = (sol[4].q[5] || sol[4].q[4] == 0) ? 1u : 2u;
+    for (s = 0; s < nsh; s++)
+        if (ikq_shoulder(m, sol, s, dh_ikc_cref_q_(m, q_ref, 0u))) return DH_ERR_OVERFLOW;
+    for (j = 0; j < DH_IKC_MAX_SOL; j++) sol[j].flags = IKQ_EMPTY;
+    if (nsh == 1u) sol[6].q[2] = IKQ_ABSENT;
     for (s = 0; s < 2u; s++) {
+        if (sol[4u * s + 2u].q[2] == IKQ_ABSENT) continue;
+        if (m->kind == DH_IKC_WRIST_RRR)
+            ikq_elbow_rrr(m, sol, s);
+        else
+            ikq_elbow_rrp(m, sol, s);
         if (sol[4u * s + 2u].q[2] == IKQ_ABSENT) continue;
         if (m->kind == DH_IKC_WRIST_RRR)
             ikq_arm_rrr(m, sol, s);
         else
             ikq_arm_rrp(m, sol, s);
-        if (sol[4u * s].flags != IKQ_EMPTY) ikq_wrist(m, sol, 4u * s, cref[3]);
-        if (sol[4u * s + 2u].flags != IKQ_EMPTY) ikq_wrist(m, sol, 4u * s + 2u, cref[3]);
+        for (j = 4u * s; j <= 4u * s + 2u; j += 2u)
+            if (sol[j].flags != IKQ_EMPTY) ikq_wrist(m, sol, j, dh_ikc_cref_q_(m, q_ref, 3u));
     }
     for (j = 0; j < DH_IKC_MAX_SOL; j++)
         if (sol[j].flags != IKQ_EMPTY) {
@@ -854,11 +905,18 @@ static DH_NOINLINE int ikq_t06(const dh_ikc_model_q *m, const dh_frame_q *T, dh_
     return ovf;
 }
 
+int32_t dh_ikc_cref_q_(const dh_ikc_model_q *m, const int32_t *q_ref, uint32_t i)
+{
+    const int32_t ref = q_ref ? q_ref[i] : 0;
+    int ovf = 0;
+    if ((m->prismatic >> i) & 1u) return dh_q_sat32((int64_t)ref + m->d[i], &ovf);
+    return ikq_wrap180(ikq_reduce(ref) + ikq_reduce(m->off[i]));
+}
+
 dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int32_t *q_ref, uint32_t opts,
                    dh_ikc_sol_q *sol, uint32_t *n_sol)
 {
-    int32_t cref[DH_IKC_JOINTS];
-    uint32_t raw = 0, i, kept;
+    uint32_t raw = 0, kept;
     dh_status st;
     int ovf = 0;
 
@@ -867,23 +925,15 @@ dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int3
     if (m->kind == DH_IKC_NONE) return DH_ERR_UNAVAILABLE;
     if ((opts & ~DH_IKC_KEEP_OUT_OF_LIMITS) != 0u || !ikq_model_ok(m)) return DH_ERR_ARG;
     if (!ikq_rigid(target)) return DH_ERR_NOT_RIGID;
-    for (i = 0; i < m->n; i++) {
-        const int32_t ref = q_ref ? q_ref[i] : 0;
-        if ((m->prismatic >> i) & 1u)
-            cref[i] = dh_q_sat32((int64_t)ref + m->d[i], &ovf);
-        else
-            cref[i] = ikq_wrap180(ikq_reduce(ref) + ikq_reduce(m->off[i]));
-    }
     if (ikq_t06(m, target, sol)) return DH_ERR_OVERFLOW;
     if (m->kind == DH_IKC_PARALLEL_234)
-        st = dh_ikc_par234_q_(m, cref, sol, &raw);
+        st = dh_ikc_par234_q_(m, q_ref, sol, &raw);
     else if (m->kind == DH_IKC_SCARA)
-        st = dh_ikc_scara_q_(m, cref, sol, &raw);
+        st = dh_ikc_scara_q_(m, q_ref, sol, &raw);
     else
-        st = dh_ikc_wrist_q_(m, cref, sol, &raw);
+        st = dh_ikc_wrist_q_(m, q_ref, sol, &raw);
     if (st != DH_OK) return st;
     if (raw == 0u) return DH_ERR_UNREACHABLE;
-    ovf = 0;
     kept = ikq_finish(m, q_ref, opts, sol, raw, &ovf);
     if (ovf != 0) return DH_ERR_OVERFLOW;
     *n_sol = kept;

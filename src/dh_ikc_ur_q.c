@@ -19,19 +19,19 @@ int dh_ikc_detect_scara_q_(dh_ikc_model_q *m)
     return 0;
 }
 
-dh_status dh_ikc_par234_q_(const dh_ikc_model_q *m, const int32_t *cref, dh_ikc_sol_q *sol, uint32_t *count)
+dh_status dh_ikc_par234_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count)
 {
     (void)m;
-    (void)cref;
+    (void)q_ref;
     (void)sol;
     *count = 0;
     return DH_OK;
 }
 
-dh_status dh_ikc_scara_q_(const dh_ikc_model_q *m, const int32_t *cref, dh_ikc_sol_q *sol, uint32_t *count)
+dh_status dh_ikc_scara_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count)
 {
     (void)m;
-    (void)cref;
+    (void)q_ref;
     (void)sol;
     *count = 0;
     return DH_OK;
