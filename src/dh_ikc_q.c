@@ -629,22 +629,26 @@ static DH_NOINLINE void ikq_elbow_rrr(const dh_ikc_model_q *m, dh_ikc_sol_q *sol
     d1->q[2] = (s1 != 0u) ? (int32_t)dh_q_rshr(K, s1) : (int32_t)K;
 }
 
-/* RRR arm angles of shoulder s: t3 = phi +- psi, then t2, into slots 4 s, 4 s + 2 */
+/* RRR arm angles of shoulder s: t3 = phi +- psi, then t2, into slots 4 s,
+ * 4 s + 2; psi and sin/cos t3 go to q[3..5] of slot 4 s (free until its
+ * wrist), so that no local needs an address */
 static DH_NOINLINE void ikq_arm_rrr(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned s)
 {
     const int32_t *k = m->k;
     const dh_ikc_sol_q *d0 = &sol[4u * s + 2u], *d1 = &sol[4u * s + 3u];
     const int32_t t1 = d0->q[0], vx = d0->q[1], vy = d1->q[0];
     const uint32_t f0 = (uint32_t)d0->q[2];
-    int32_t psi = 0, s3, c3, A, B, t3;
+    int32_t *w = &sol[4u * s].q[3];
+    int32_t A, B, t3;
     unsigned b, ne = ((f0 & DH_IKC_SING_ELBOW) != 0u) ? 1u : 2u;
 
-    (void)dh_atan2_q(d1->q[1], d1->q[2], &psi);
+    w[2] = 0;
+    (void)dh_atan2_q(d1->q[1], d1->q[2], &w[2]);
     for (b = 0; b < ne; b++) {
-        t3 = ikq_wrap180(k[K_PHI] + (b ? -psi : psi));
-        dh_sincos_q(t3, &s3, &c3);
-        A = m->a[1] + ikq_r30(dh_q_mla64(dh_q_mul64(m->a[2], c3), k[K_E], s3));
-        B = ikq_r30(dh_q_mul64(m->a[2], s3) - dh_q_mul64(k[K_E], c3));
+        t3 = ikq_wrap180(k[K_PHI] + (b ? -w[2] : w[2]));
+        dh_sincos_q(t3, &w[0], &w[1]);
+        A = m->a[1] + ikq_r30(dh_q_mla64(dh_q_mul64(m->a[2], w[1]), k[K_E], w[0]));
+        B = ikq_r30(dh_q_mul64(m->a[2], w[0]) - dh_q_mul64(k[K_E], w[1]));
         if (k[K_SIG] < 0) B = -B;
         ikq_put_arm(&sol[4u * s + 2u * b], t1,
                     ikq_atan2(dh_q_mul64(A, vy) - dh_q_mul64(B, vx), dh_q_mla64(dh_q_mul64(A, vx), B, vy)), t3,
@@ -686,66 +690,68 @@ static DH_NOINLINE void ikq_arm_rrp(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, 
     }
 }
 
-/* joints 4..6 of the arm in slot j = 4 s + 2 b, its flip into slot j + 1 */
+/* joints 4..6 of the arm in slot j = 4 s + 2 b, its flip into slot j + 1;
+ * the two columns of M are worked on in place in q[3..5] of these slots
+ * (for j = 4 s + 2 they are the shoulder's copies, read for the last time) */
 static DH_NOINLINE void ikq_wrist(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned j, int32_t cref3)
 {
     const int32_t *k = m->k;
-    const int32_t s4a = k[K_S4], s5a = k[K_S5];
-    dh_ikc_sol_q *d = &sol[j], *f = &sol[j + 1u];
+    dh_ikc_sol_q *d = &sol[j];
     const dh_ikc_sol_q *src = &sol[(j & ~3u) + 2u];
-    int32_t n[3], z[3], s, co, t4, t5, t6, s5, c5, my;
-    uint32_t sing;
+    int32_t *n = &d[0].q[3], *z = &d[1].q[3];
+    int32_t sc[2], t4, t5;
+    unsigned i, sing;
 
-    n[0] = src[0].q[3];
-    n[1] = src[0].q[4];
-    n[2] = src[0].q[5];
-    z[0] = src[1].q[3];
-    z[1] = src[1].q[4];
-    z[2] = src[1].q[5];
+    if (d != src)
+        for (i = 0; i < 3u; i++) {
+            n[i] = src[0].q[3u + i];
+            z[i] = src[1].q[3u + i];
+        }
     /* tb = t2 + sigma t3 (RRR) or t2 (RRP) */
     t4 = d->q[1];
     if (m->kind == DH_IKC_WRIST_RRR) t4 += (k[K_SIG] < 0) ? -d->q[2] : d->q[2];
-    dh_sincos_q(t4, &s, &co);
-    ikq_rot2(&n[0], &n[1], co, s);
-    ikq_rot2(&z[0], &z[1], co, s);
+    dh_sincos_q(t4, &sc[0], &sc[1]);
+    ikq_rot2(&n[0], &n[1], sc[1], sc[0]);
+    ikq_rot2(&z[0], &z[1], sc[1], sc[0]);
     ikq_ct(&k[K_C], n);
     ikq_ct(&k[K_C], z);
     sing = (dh_q_abs_u32(z[0]) <= (uint32_t)IKQ_SING_WRIST && dh_q_abs_u32(z[1]) <= (uint32_t)IKQ_SING_WRIST);
     if (sing)
         t4 = cref3;
     else
-        t4 = ikq_atan2(s5a > 0 ? z[1] : -z[1], s5a > 0 ? z[0] : -z[0]);
-    dh_sincos_q(t4, &s, &co);
-    s5 = ikq_r30(dh_q_mla64(dh_q_mul64(co, z[0]), s, z[1]));
-    if (s5a < 0) s5 = -s5;
-    c5 = (s4a == s5a) ? -z[2] : z[2];
-    (void)dh_atan2_q(s5, c5, &t5);
-    /* m' = Rz(-t4) M e_x; n[0] becomes m'x, my = m'y */
-    my = n[1];
-    ikq_rot2(&n[0], &my, co, s);
-    t6 = ikq_atan2((s4a == s5a) ? -(int64_t)my : (int64_t)my,
-                   ((s4a > 0) ? dh_q_mla64(dh_q_mul64(c5, n[0]), s5, n[2])
-                              : dh_q_mul64(c5, n[0]) - dh_q_mul64(s5, n[2])) >> 30);
-    d->q[3] = t4;
-    d->q[4] = t5;
-    d->q[5] = t6;
+        t4 = ikq_atan2(k[K_S5] > 0 ? z[1] : -z[1], k[K_S5] > 0 ? z[0] : -z[0]);
+    dh_sincos_q(t4, &sc[0], &sc[1]);
+    /* s5 into z[0], c5 into z[2] */
+    z[0] = ikq_r30(dh_q_mla64(dh_q_mul64(sc[1], z[0]), sc[0], z[1]));
+    if (k[K_S5] < 0) z[0] = -z[0];
+    if (k[K_S4] == k[K_S5]) z[2] = -z[2];
+    (void)dh_atan2_q(z[0], z[2], &t5);
+    /* m' = Rz(-t4) M e_x into n[0], n[1] */
+    ikq_rot2(&n[0], &n[1], sc[1], sc[0]);
+    if (k[K_S4] == k[K_S5]) n[1] = -n[1];
+    n[0] = ikq_atan2(n[1], ((k[K_S4] > 0) ? dh_q_mla64(dh_q_mul64(z[2], n[0]), z[0], n[2])
+                                             : dh_q_mul64(z[2], n[0]) - dh_q_mul64(z[0], n[2])) >> 30);
+    n[2] = n[0];
+    n[0] = t4;
+    n[1] = t5;
     if (sing) {
         d->flags |= DH_IKC_SING_WRIST;
-        f->flags = IKQ_EMPTY;
+        d[1].flags = IKQ_EMPTY;
         return;
     }
-    f->q[0] = d->q[0];
-    f->q[1] = d->q[1];
-    f->q[2] = d->q[2];
-    f->q[3] = ikq_wrap180(t4 + Q16_180);
-    f->q[4] = ikq_wrap180(-t5);
-    f->q[5] = ikq_wrap180(t6 + Q16_180);
-    f->flags = d->flags | DH_IKC_WRIST_ALT;
+    d[1].q[0] = d->q[0];
+    d[1].q[1] = d->q[1];
+    d[1].q[2] = d->q[2];
+    z[0] = ikq_wrap180(t4 + Q16_180);
+    z[1] = ikq_wrap180(-t5);
+    z[2] = ikq_wrap180(n[2] + Q16_180);
+    d[1].flags = d->flags | DH_IKC_WRIST_ALT;
 }
 
 dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count)
 {
     uint32_t s, j, cnt = 0, nsh;
+    int32_t cref3;
     int st;
 
     *count = 0;
@@ -757,6 +763,7 @@ dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_
         if (ikq_shoulder(m, sol, s, dh_ikc_cref_q_(m, q_ref, 0u))) return DH_ERR_OVERFLOW;
     for (j = 0; j < DH_IKC_MAX_SOL; j++) sol[j].flags = IKQ_EMPTY;
     if (nsh == 1u) sol[6].q[2] = IKQ_ABSENT;
+    cref3 = dh_ikc_cref_q_(m, q_ref, 3u);
     for (s = 0; s < 2u; s++) {
         if (sol[4u * s + 2u].q[2] == IKQ_ABSENT) continue;
         if (m->kind == DH_IKC_WRIST_RRR)
@@ -769,7 +776,7 @@ dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_
         else
             ikq_arm_rrp(m, sol, s);
         for (j = 4u * s; j <= 4u * s + 2u; j += 2u)
-            if (sol[j].flags != IKQ_EMPTY) ikq_wrist(m, sol, j, dh_ikc_cref_q_(m, q_ref, 3u));
+            if (sol[j].flags != IKQ_EMPTY) ikq_wrist(m, sol, j, cref3);
     }
     for (j = 0; j < DH_IKC_MAX_SOL; j++)
         if (sol[j].flags != IKQ_EMPTY) {
@@ -834,18 +841,21 @@ static DH_NOINLINE int32_t ikq_shift(int32_t q, int32_t lo, int32_t hi, int32_t 
     return (int32_t)(first + (int64_t)kk * P);
 }
 
-/* raw canonical solutions -> joint values, shifts, limits, compaction */
+/* raw canonical solutions -> joint values, shifts, limits, compaction;
+ * the count kept, or IKQ_FINISH_OVF when a prismatic value saturated */
+#define IKQ_FINISH_OVF 0xFFFFFFFFu
 static DH_NOINLINE uint32_t ikq_finish(const dh_ikc_model_q *m, const int32_t *q_ref, uint32_t opts,
-                                       dh_ikc_sol_q *sol, uint32_t raw, int *ovf)
+                                       dh_ikc_sol_q *sol, uint32_t raw)
 {
     uint32_t s, i, kept = 0;
+    int ovf = 0;
     for (s = 0; s < raw; s++) {
         dh_ikc_sol_q *t = &sol[s];
         int all_in = 1;
         for (i = 0; i < m->n; i++) {
             int in = 1;
             if ((m->prismatic >> i) & 1u) {
-                t->q[i] = dh_q_sat32((int64_t)t->q[i] - m->d[i], ovf);
+                t->q[i] = dh_q_sat32((int64_t)t->q[i] - m->d[i], &ovf);
                 if (m->qmin[i] <= m->qmax[i]) in = (t->q[i] >= m->qmin[i] && t->q[i] <= m->qmax[i]);
             } else {
                 t->q[i] = ikq_shift(ikq_wrap180(t->q[i] - ikq_reduce(m->off[i])), m->qmin[i], m->qmax[i],
@@ -860,7 +870,7 @@ static DH_NOINLINE uint32_t ikq_finish(const dh_ikc_model_q *m, const int32_t *q
         if (kept != s) sol[kept] = *t;
         kept++;
     }
-    return kept;
+    return ovf ? IKQ_FINISH_OVF : kept;
 }
 
 /* v <- R v (+ p with addp) for a model frame; 1 on overflow */
@@ -916,9 +926,8 @@ int32_t dh_ikc_cref_q_(const dh_ikc_model_q *m, const int32_t *q_ref, uint32_t i
 dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int32_t *q_ref, uint32_t opts,
                    dh_ikc_sol_q *sol, uint32_t *n_sol)
 {
-    uint32_t raw = 0, kept;
     dh_status st;
-    int ovf = 0;
+    uint32_t raw;
 
     DH_ASSERT(m != NULL && target != NULL && sol != NULL && n_sol != NULL);
     *n_sol = 0;
@@ -926,18 +935,21 @@ dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int3
     if ((opts & ~DH_IKC_KEEP_OUT_OF_LIMITS) != 0u || !ikq_model_ok(m)) return DH_ERR_ARG;
     if (!ikq_rigid(target)) return DH_ERR_NOT_RIGID;
     if (ikq_t06(m, target, sol)) return DH_ERR_OVERFLOW;
+    /* the raw count goes through *n_sol (no addressable local here) */
     if (m->kind == DH_IKC_PARALLEL_234)
-        st = dh_ikc_par234_q_(m, q_ref, sol, &raw);
+        st = dh_ikc_par234_q_(m, q_ref, sol, n_sol);
     else if (m->kind == DH_IKC_SCARA)
-        st = dh_ikc_scara_q_(m, q_ref, sol, &raw);
+        st = dh_ikc_scara_q_(m, q_ref, sol, n_sol);
     else
-        st = dh_ikc_wrist_q_(m, q_ref, sol, &raw);
+        st = dh_ikc_wrist_q_(m, q_ref, sol, n_sol);
+    raw = *n_sol;
+    *n_sol = 0;
     if (st != DH_OK) return st;
     if (raw == 0u) return DH_ERR_UNREACHABLE;
-    kept = ikq_finish(m, q_ref, opts, sol, raw, &ovf);
-    if (ovf != 0) return DH_ERR_OVERFLOW;
-    *n_sol = kept;
-    return kept != 0u ? DH_OK : DH_ERR_LIMIT;
+    raw = ikq_finish(m, q_ref, opts, sol, raw);
+    if (raw == IKQ_FINISH_OVF) return DH_ERR_OVERFLOW;
+    *n_sol = raw;
+    return raw != 0u ? DH_OK : DH_ERR_LIMIT;
 }
 
 dh_status dh_ikc_nearest_q(const dh_ikc_sol_q *sol, uint32_t n_sol, const int32_t *q_ref, uint32_t n,
