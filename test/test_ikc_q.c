@@ -16,15 +16,43 @@
 #include <stdio.h>
 #include <string.h>
 
-#define POS_TOL 5e-3  /* mm */
+/* The accuracy targets are for robots in mm at DH_QPOS_FRAC 16. At other
+ * fraction bits (tools/check.sh variants) every length of the test robots
+ * and targets is scaled by LS = 2^(16 - DH_QPOS_FRAC), so that the solver
+ * sees the same raw values, and the length tolerances scale with it. */
+#define LS ldexp(1.0, 16 - DH_QPOS_FRAC)
+#define POS_TOL (5e-3 * LS) /* mm at DH_QPOS_FRAC 16 */
 #define ROT_TOL 5e-6  /* rotation entries (rad for small errors) */
 #define COMP_DEG 2e-3 /* completeness, deg (mm for a prismatic joint) */
 #define AWAY 1e-2     /* distance from the singularities (sin, or 10 mm) */
 #define PI_D 3.14159265358979323846
-#define R 0
-#define P 1
 
 /* ---- robots --------------------------------------------------------------- */
+
+/* lengths of d (a, d, prismatic limits, base and tool translations) times LS */
+static void scale_desc(dhs_robot *d)
+{
+    unsigned i;
+    for (i = 0; i < d->n; i++) {
+        d->j[i].a *= LS;
+        d->j[i].d *= LS;
+        if (d->j[i].type == DH_JOINT_PRISMATIC) {
+            d->j[i].qmin *= LS;
+            d->j[i].qmax *= LS;
+        }
+    }
+    for (i = 0; i < 3; i++) {
+        d->base.m[3][i] *= LS;
+        d->tool.m[3][i] *= LS;
+    }
+}
+
+/* the shipped Puma 560 in mm, scaled */
+static void puma(dhs_robot *d)
+{
+    *d = dhs_puma560_mm;
+    scale_desc(d);
+}
 
 static void desc_set(dhs_robot *d, const char *name, dh_convention conv, unsigned n, const dhs_joint_desc *j)
 {
@@ -36,6 +64,7 @@ static void desc_set(dhs_robot *d, const char *name, dh_convention conv, unsigne
     memcpy(d->j, j, n * sizeof *j);
     dhs_identity(&d->base);
     dhs_identity(&d->tool);
+    scale_desc(d);
 }
 
 /* KUKA KR5 in mm, standard DH after P. Corke's Robotics Toolbox model
@@ -115,7 +144,7 @@ static void to_frame(const dhs_mat4_d *T, dh_frame_q *F)
 static double jdiff(const dh_robot *r, unsigned i, int32_t a, int32_t b)
 {
     double d;
-    if (r->joint[i].type == DH_JOINT_PRISMATIC) return fabs(ldexp((double)a - (double)b, -DH_QPOS_FRAC));
+    if (r->joint[i].type == DH_JOINT_PRISMATIC) return fabs(ldexp((double)a - (double)b, -DH_QPOS_FRAC)) / LS;
     d = fmod(ldexp((double)a - (double)b, -16), 360.0);
     if (d > 180.0) d -= 360.0;
     if (d < -180.0) d += 360.0;
@@ -171,7 +200,7 @@ static int away_u(const dhs_robot *d, const double *q, double umin)
         double e = sin(d->j[2].alpha_deg * PI_D / 180.0) * d->j[3].d;
         t3 = (q[2] + d->j[2].theta_deg) * PI_D / 180.0;
         if (fabs(sin(t3 - atan2(e, d->j[2].a))) < AWAY) return 0;
-    } else if (fabs(q[2] + d->j[2].d) < 10.0) {
+    } else if (fabs(q[2] + d->j[2].d) < 10.0 * LS) {
         return 0;
     }
     dhs_fk_desc(d, q, fr, &T);
@@ -182,7 +211,7 @@ static int away_u(const dhs_robot *d, const double *q, double umin)
                 fr[0].m[i][2] * (o[2] - fr[0].m[3][2]);
     h2 = o1[2] * o1[2];
     u2 = o[0] * o[0] + o[1] * o[1] - h2;
-    return u2 > umin * umin;
+    return u2 > umin * umin * LS * LS;
 }
 
 static int away(const dhs_robot *d, const double *q)
@@ -311,7 +340,9 @@ static void random_run(const dhs_robot *d, const dhs_robot *f, dh_ikc_kind kind,
 
 static void puma_random(void)
 {
-    random_run(&dhs_puma560_mm, &dhs_puma560_mm, DH_IKC_WRIST_RRR, DHT_ITER(10000));
+    dhs_robot d;
+    puma(&d);
+    random_run(&d, &d, DH_IKC_WRIST_RRR, DHT_ITER(10000));
 }
 
 static void kr5_random(void)
@@ -339,45 +370,46 @@ static void stanford_random(void)
  * joint 0 gets a = 50, alpha = 30 (a non-trivial first link, pre frame) */
 static void mdh_random(void)
 {
-    dhs_robot d = dhs_puma560_mm;
+    dhs_robot d, f;
     unsigned i;
+    puma(&f);
+    d = f;
     d.name = "puma560_mdh_mm";
     d.conv = DH_CONV_MODIFIED;
     for (i = 5; i >= 1; i--) {
-        d.j[i].a = dhs_puma560_mm.j[i - 1].a;
-        d.j[i].alpha_deg = dhs_puma560_mm.j[i - 1].alpha_deg;
+        d.j[i].a = f.j[i - 1].a;
+        d.j[i].alpha_deg = f.j[i - 1].alpha_deg;
     }
-    d.j[0].a = 50.0;
+    d.j[0].a = 50.0 * LS;
     d.j[0].alpha_deg = 30.0;
-    random_run(&d, &dhs_puma560_mm, DH_IKC_WRIST_RRR, DHT_ITER(3000));
+    random_run(&d, &f, DH_IKC_WRIST_RRR, DHT_ITER(3000));
 }
 
 static void base_tool_random(void)
 {
-    dhs_robot d = dhs_puma560_mm;
+    dhs_robot d, f;
     dhs_mat4_d A, B;
+    puma(&f);
+    d = f;
     d.name = "puma560_base_tool_mm";
     dhs_rotz(&A, 30.0);
-    dhs_trans(&B, 100.0, -50.0, 200.0);
+    dhs_trans(&B, 100.0 * LS, -50.0 * LS, 200.0 * LS);
     dhs_mul(&d.base, &A, &B);
     dhs_rotx(&A, 10.0);
     B = d.base;
     dhs_mul(&d.base, &B, &A);
-    dhs_trans(&A, 10.0, 20.0, 80.0);
+    dhs_trans(&A, 10.0 * LS, 20.0 * LS, 80.0 * LS);
     dhs_rotx(&B, 20.0);
     dhs_mul(&d.tool, &A, &B);
-    random_run(&d, &dhs_puma560_mm, DH_IKC_WRIST_RRR, DHT_ITER(3000));
+    random_run(&d, &f, DH_IKC_WRIST_RRR, DHT_ITER(3000));
     /* the same with the KR5's table (sigma = -1, alpha6 = 180) */
     desc_set(&d, "kr5_base_tool_mm", DH_CONV_STANDARD, 6, kr5_j);
     dhs_rotz(&A, -45.0);
-    dhs_trans(&B, 0.0, 300.0, 0.0);
+    dhs_trans(&B, 0.0, 300.0 * LS, 0.0);
     dhs_mul(&d.base, &A, &B);
-    dhs_trans(&d.tool, 0.0, 0.0, 115.0);
-    {
-        dhs_robot f;
-        desc_set(&f, "kr5_mm", DH_CONV_STANDARD, 6, kr5_j);
-        random_run(&d, &f, DH_IKC_WRIST_RRR, DHT_ITER(3000));
-    }
+    dhs_trans(&d.tool, 0.0, 0.0, 115.0 * LS);
+    desc_set(&f, "kr5_mm", DH_CONV_STANDARD, 6, kr5_j);
+    random_run(&d, &f, DH_IKC_WRIST_RRR, DHT_ITER(3000));
 }
 
 /* ---- singular cases ------------------------------------------------------- */
@@ -394,25 +426,27 @@ static void solve_q(const dh_robot *r, const dh_ikc_model_q *m, const int32_t *q
 
 static void singular_wrist(void)
 {
+    dhs_robot P;
     dh_robot r;
     dh_ikc_model_q m;
     long it;
     long tested = 0;
-    build(&dhs_puma560_mm, &r, &m, DH_IKC_WRIST_RRR);
+    puma(&P);
+    build(&P, &r, &m, DH_IKC_WRIST_RRR);
     for (it = 0; it < DHT_ITER(500); it++) {
         double q[6];
         int32_t qq[6];
         dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
         uint32_t ns, s, hits = 0;
         dhs_mat4_d Td;
-        dhs_random_q(&dhs_puma560_mm, q);
+        dhs_random_q(&P, q);
         /* a well-conditioned arm (elbow far from stretched and folded,
          * shoulder bent): its angles come out within a few LSB, so the
          * wrist sees less than the 2^-19 of its singular test */
         q[1] = dht_rand_uniform(-60.0, 60.0);
         q[2] = dht_rand_uniform(-40.0, 40.0);
         q[4] = 30.0;
-        if (!away_u(&dhs_puma560_mm, q, 200.0)) continue;
+        if (!away_u(&P, q, 200.0)) continue;
         tested++;
         q[4] = 0.0;
         dhs_q_from_double(&r, q, qq);
@@ -436,8 +470,10 @@ static void singular_wrist(void)
 
 static void singular_elbow(void)
 {
+    dhs_robot P;
     dh_robot r;
     dh_ikc_model_q m;
+    puma(&P);
     /* stretched: t3 = phi = atan2(s_alpha3 d4, a3) */
     const double phi = atan2(-431.8, 20.3) * 180.0 / PI_D;
     double q[6] = {20.0, -30.0, 0.0, 40.0, 50.0, -60.0};
@@ -446,7 +482,7 @@ static void singular_elbow(void)
     uint32_t ns, s;
     dhs_mat4_d Td;
     q[2] = phi;
-    build(&dhs_puma560_mm, &r, &m, DH_IKC_WRIST_RRR);
+    build(&P, &r, &m, DH_IKC_WRIST_RRR);
     dhs_q_from_double(&r, q, qq);
     solve_q(&r, &m, qq, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns, &Td);
     DHT_EQ_INT(ns, 4);
@@ -460,7 +496,7 @@ static void singular_elbow(void)
 /* a Puma with d3 = 0 (h = 0): the wrist centre on axis 1 */
 static void singular_shoulder(void)
 {
-    dhs_robot d = dhs_puma560_mm;
+    dhs_robot P, d;
     dh_robot r;
     dh_ikc_model_q m;
     const double t3 = 30.0 * PI_D / 180.0, a2 = 431.8, a3 = 20.3, e = -431.8;
@@ -470,6 +506,8 @@ static void singular_shoulder(void)
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
     uint32_t ns, s;
     dhs_mat4_d Td;
+    puma(&P);
+    d = P;
     d.j[2].d = 0.0;
     build(&d, &r, &m, DH_IKC_WRIST_RRR);
     q[1] = atan2(A, B) * 180.0 / PI_D;
@@ -489,6 +527,7 @@ static void singular_shoulder(void)
 
 static void limits_shift(void)
 {
+    dhs_robot P;
     dh_robot r;
     dh_ikc_model_q m;
     double q[6] = {10.0, -20.0, 30.0, 200.0, 40.0, -250.0};
@@ -497,7 +536,8 @@ static void limits_shift(void)
     uint32_t ns, idx;
     dhs_mat4_d Td;
     int f;
-    build(&dhs_puma560_mm, &r, &m, DH_IKC_WRIST_RRR);
+    puma(&P);
+    build(&P, &r, &m, DH_IKC_WRIST_RRR);
     dhs_q_from_double(&r, q, qq);
     /* q_ref = the configuration: joints 4 and 6 shifted to 200 and -250 */
     memcpy(qref, qq, sizeof qref);
@@ -518,7 +558,7 @@ static void limits_shift(void)
 
 static void limits_drop_keep(void)
 {
-    dhs_robot d = dhs_puma560_mm, dn = dhs_puma560_mm;
+    dhs_robot P, d, dn;
     dh_robot r, rn;
     dh_ikc_model_q m, mn;
     double q[6] = {90.0, -20.0, 30.0, 20.0, 40.0, -50.0};
@@ -528,6 +568,9 @@ static void limits_drop_keep(void)
     dhs_mat4_d Td;
     dh_frame_q T;
     unsigned j;
+    puma(&P);
+    d = P;
+    dn = P;
     d.j[0].qmin = 0.0;
     d.j[0].qmax = 1.0;
     for (j = 0; j < 6; j++) dn.j[j].qmin = 1.0, dn.j[j].qmax = -1.0; /* no limits */
@@ -550,7 +593,7 @@ static void limits_drop_keep(void)
         for (i = 0; i < 6; i++) DHT_EQ_INT(sol[s].q[i], all[s].q[i]);
     }
     /* the Puma's own limits drop some of the eight and keep the rest */
-    build(&dhs_puma560_mm, &r, &m, DH_IKC_WRIST_RRR);
+    build(&P, &r, &m, DH_IKC_WRIST_RRR);
     DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, 0u, sol, &ns), DH_OK);
     DHT_TRUE(ns >= 1u && ns < 8u);
     for (s = 0; s < ns; s++) DHT_EQ_INT(dh_robot_check_limits_q(&r, sol[s].q), DH_OK);
@@ -570,7 +613,7 @@ static void analyse_why(const dhs_robot *d, dh_ikc_why why)
 
 static void no_closed_form(void)
 {
-    dhs_robot d = dhs_puma560_mm;
+    dhs_robot P, d;
     dh_robot r;
     dh_ikc_model_q m;
     dh_frame_q F;
@@ -586,16 +629,18 @@ static void no_closed_form(void)
         {DH_JOINT_PRISMATIC, 0.0, 0.0, 0.0, 0.0, 1.0, -1.0},
         {DH_JOINT_REVOLUTE, 0.0, 0.0, 0.0, 0.0, 1.0, -1.0},
     };
+    puma(&P);
+    d = P;
     analyse_why(&dhs_panda_mm, DH_IKC_WHY_JOINTS);       /* 7 joints */
-    d.j[4].a = 30.0;                                    /* wrist axes do not meet */
+    d.j[4].a = 30.0 * LS;                               /* wrist axes do not meet */
     analyse_why(&d, DH_IKC_WHY_WRIST);
-    d = dhs_puma560_mm;
+    d = P;
     d.j[1].alpha_deg = 90.0;                            /* axes 2 and 3 not parallel */
     analyse_why(&d, DH_IKC_WHY_AXES);
-    d = dhs_puma560_mm;
+    d = P;
     d.j[2].type = DH_JOINT_PRISMATIC;                   /* R-R-P, but alpha2 = 0 */
     analyse_why(&d, DH_IKC_WHY_AXES);
-    d = dhs_puma560_mm;
+    d = P;
     d.j[0].type = DH_JOINT_PRISMATIC;                   /* P-R-R + wrist */
     analyse_why(&d, DH_IKC_WHY_JOINTS);
     desc_set(&d, "rrrr", DH_CONV_STANDARD, 4, rrrr);
@@ -603,28 +648,28 @@ static void no_closed_form(void)
     desc_set(&d, "rrpr", DH_CONV_STANDARD, 4, rrpr);
     analyse_why(&d, DH_IKC_WHY_AXES);
     /* fixed path not prepared: a length beyond the dh_qpos range */
-    d = dhs_puma560_mm;
-    d.j[1].a = 1.0e6;
+    d = P;
+    d.j[1].a = ldexp(1.0, 32 - DH_QPOS_FRAC);
     analyse_why(&d, DH_IKC_WHY_PATH);
     /* representable, but beyond the solver's 2^29-unit range */
-    d = dhs_puma560_mm;
-    d.j[1].a = ldexp(1.0, 29 - DH_QPOS_FRAC) + 1.0;
-    if (d.j[1].a < ldexp(1.0, 31 - DH_QPOS_FRAC) - 1.0) analyse_why(&d, DH_IKC_WHY_PATH);
+    d = P;
+    d.j[1].a = ldexp(1.0, 29 - DH_QPOS_FRAC) + LS;
+    analyse_why(&d, DH_IKC_WHY_PATH);
     /* base not rigid (fixed path only), tool a reflection */
-    DHT_EQ_INT(dhs_build(&dhs_puma560_mm, &r), DH_OK);
+    DHT_EQ_INT(dhs_build(&P, &r), DH_OK);
     dh_frame_identity_q(&F);
     F.r[0][0] = DH_Q30(1.01);
     DHT_EQ_INT(dh_robot_set_base_q(&r, &F), DH_OK);
     DHT_EQ_INT(dh_ikc_analyse_q(&r, &m), DH_ERR_NOT_RIGID);
     DHT_EQ_INT(m.kind, DH_IKC_NONE);
     DHT_EQ_INT(m.why, DH_IKC_WHY_PATH);
-    DHT_EQ_INT(dhs_build(&dhs_puma560_mm, &r), DH_OK);
+    DHT_EQ_INT(dhs_build(&P, &r), DH_OK);
     dh_frame_identity_q(&F);
     F.r[2][2] = -DH_Q30(1.0);
     DHT_EQ_INT(dh_robot_set_tool_q(&r, &F), DH_OK);
     DHT_EQ_INT(dh_ikc_analyse_q(&r, &m), DH_ERR_NOT_RIGID);
     /* bad descriptions */
-    DHT_EQ_INT(dhs_build(&dhs_puma560_mm, &r), DH_OK);
+    DHT_EQ_INT(dhs_build(&P, &r), DH_OK);
     r.n = DH_MAX_JOINTS + 1u;
     DHT_EQ_INT(dh_ikc_analyse_q(&r, &m), DH_ERR_ARG);
     DHT_EQ_INT(m.kind, DH_IKC_NONE);
@@ -641,6 +686,7 @@ static void no_closed_form(void)
 
 static void solve_errors(void)
 {
+    dhs_robot P;
     dh_robot r;
     dh_ikc_model_q m, bad;
     dh_frame_q T, X;
@@ -649,7 +695,8 @@ static void solve_errors(void)
     int32_t qq[6] = {0, 0, 0, 0, 30 << 16, 0}, qref[6];
     dhs_mat4_d Td;
     unsigned i;
-    build(&dhs_puma560_mm, &r, &m, DH_IKC_WRIST_RRR);
+    puma(&P);
+    build(&P, &r, &m, DH_IKC_WRIST_RRR);
     dhs_fk_ref_q(&r, qq, NULL, &Td);
     to_frame(&Td, &T);
     memset(canary, 0xA5, sizeof canary);
@@ -684,7 +731,7 @@ static void solve_errors(void)
     /* far away: overflow (any coordinate, INT32_MIN and INT32_MAX included) */
     for (i = 0; i < 3; i++) {
         X = T;
-        X.p[i] = dhs_to_q(20000.0, DH_QPOS_FRAC) > 0 ? dhs_to_q(20000.0, DH_QPOS_FRAC) : INT32_MAX;
+        X.p[i] = dhs_to_q(20000.0 * LS, DH_QPOS_FRAC);
         ns = 77;
         DHT_EQ_INT(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_OVERFLOW);
         DHT_EQ_INT(ns, 0);
@@ -696,12 +743,10 @@ static void solve_errors(void)
     }
     /* unreachable: 3000 mm away, rotation of the target */
     X = T;
-    X.p[0] = dhs_to_q(3000.0, DH_QPOS_FRAC);
-    if (X.p[0] == dhs_to_q(3000.0, DH_QPOS_FRAC) && ldexp(1.0, 30 - DH_QPOS_FRAC) > 3500.0) {
-        ns = 77;
-        DHT_EQ_INT(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_UNREACHABLE);
-        DHT_EQ_INT(ns, 0);
-    }
+    X.p[0] = dhs_to_q(3000.0 * LS, DH_QPOS_FRAC);
+    ns = 77;
+    DHT_EQ_INT(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_UNREACHABLE);
+    DHT_EQ_INT(ns, 0);
     /* extreme references: INT32_MIN / INT32_MAX in every joint */
     for (i = 0; i < 6; i++) qref[i] = (i & 1u) ? INT32_MAX : INT32_MIN;
     DHT_EQ_INT(dh_ikc_q(&m, &T, qref, 0u, sol, &ns), DH_OK);
