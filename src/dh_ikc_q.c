@@ -164,15 +164,11 @@ static DH_NOINLINE int32_t ikq_div_rnd(int64_t n, uint64_t d)
  * same shift below 2^30 + 1, then dh_atan2_q; (0, 0) gives 0 */
 static DH_NOINLINE int32_t ikq_atan2(int64_t y, int64_t x)
 {
-    uint64_t mag = ikq_abs64(y) | ikq_abs64(x);
+    uint32_t hi = (uint32_t)((ikq_abs64(y) | ikq_abs64(x)) >> 30);
     unsigned s = 0u;
     dh_q16 a = 0;
-    while ((mag >> 38) != 0u) {
-        mag >>= 8;
-        s += 8u;
-    }
-    while ((mag >> 30) != 0u) {
-        mag >>= 1;
+    while (hi != 0u) {
+        hi >>= 1;
         s++;
     }
     if (s != 0u) {
@@ -183,12 +179,23 @@ static DH_NOINLINE int32_t ikq_atan2(int64_t y, int64_t x)
     return a;
 }
 
+/* acc + c v, |c| <= 2^30: a factor 0 or +-1.0 (exact twists, sines and
+ * cosines of multiples of 90 degrees, zero tool offsets) costs no
+ * multiplication (the products of Cortex-M0 are 16-bit partials) */
+static DH_NOINLINE int64_t ikq_mla(int64_t acc, int32_t c, int32_t v)
+{
+    if (c == 0) return acc;
+    if (c == DH_Q_ONE30) return acc + (int64_t)v * DH_Q_ONE30;
+    if (c == -DH_Q_ONE30) return acc - (int64_t)v * DH_Q_ONE30;
+    return dh_q_mla64(acc, c, v);
+}
+
 /* v <- Rz(t)^T v in the plane (x, y): (c x + s y, c y - s x) */
 static DH_NOINLINE void ikq_rot2(int32_t *x, int32_t *y, int32_t c, int32_t s)
 {
     const int32_t a = *x, b = *y;
-    *x = ikq_r30(dh_q_mla64(dh_q_mul64(c, a), s, b));
-    *y = ikq_r30(dh_q_mul64(c, b) - dh_q_mul64(s, a));
+    *x = ikq_r30(ikq_mla(ikq_mla(0, c, a), s, b));
+    *y = ikq_r30(ikq_mla(ikq_mla(0, c, b), -s, a));
 }
 
 /* 1 when the columns c0, c1, c2 (Q2.30) are within 2^-10 of orthonormal
@@ -484,7 +491,7 @@ static DH_NOINLINE void ikq_ct(const int32_t *C, int32_t *v)
 {
     const int32_t x = v[0], y = v[1], z = v[2];
     unsigned i;
-    for (i = 0; i < 3u; i++) v[i] = ikq_r30(dh_q_mla64(dh_q_mla64(dh_q_mul64(C[i], x), C[3u + i], y), C[6u + i], z));
+    for (i = 0; i < 3u; i++) v[i] = ikq_r30(ikq_mla(ikq_mla(ikq_mla(0, C[i], x), C[3u + i], y), C[6u + i], z));
 }
 
 /* wrist centre o, vy and u into sol[4].q (o, vy, u, shoulder singular);
@@ -499,7 +506,7 @@ static DH_NOINLINE int ikq_centre(const dh_ikc_model_q *m, dh_ikc_sol_q *sol)
     unsigned i;
 
     for (i = 0; i < 3u; i++) {
-        v = dh_q_mla64(dh_q_mla64(dh_q_mul64(c0[i], k[K_W]), c1[i], k[K_W + 1]), c2[i], k[K_W + 2]);
+        v = ikq_mla(ikq_mla(ikq_mla(0, k[K_W], c0[i]), k[K_W + 1], c1[i]), k[K_W + 2], c2[i]);
         v = (int64_t)p[i] - ((v + DH_Q_HALF30) >> 30);
         if (ikq_abs64(v) > (uint64_t)IKQ_POS_LIM) return 1;
         o[i] = (int32_t)v;
@@ -559,8 +566,12 @@ static DH_NOINLINE int ikq_shoulder(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, 
 /* shift of a non-negative int64 below 2^31 */
 static unsigned ikq_fit31(int64_t v)
 {
+    uint32_t hi = (uint32_t)((uint64_t)v >> 31);
     unsigned s = 0u;
-    while ((v >> s) >= ((int64_t)1 << 31)) s++;
+    while (hi != 0u) {
+        hi >>= 1;
+        s++;
+    }
     return s;
 }
 
