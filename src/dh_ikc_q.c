@@ -273,7 +273,9 @@ static DH_NOINLINE dh_status ikq_chain(const dh_robot *r, dh_ikc_model_q *m)
         const dh_joint *nx = mdh ? ((i + 1u < n) ? &r->joint[i + 1u] : NULL) : j;
         if (j->type == DH_JOINT_PRISMATIC) m->prismatic |= 1u << i;
         m->d[i] = j->d_q;
-        m->off[i] = j->theta_q;
+        /* revolute: the offset modulo 360, in (-180, 180] (saves a
+         * remainder per joint and solution) */
+        m->off[i] = (j->type == DH_JOINT_PRISMATIC) ? j->theta_q : ikq_reduce(j->theta_q);
         m->qmin[i] = j->qmin_q;
         m->qmax[i] = j->qmax_q;
         if (nx != NULL) {
@@ -801,7 +803,7 @@ dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_
 /* ---- front end: solve --------------------------------------------------- */
 
 /* kind known, n the family's, pre/post rotation entries <= 1.1 (the
- * products of ikq_t06 cannot wrap) */
+ * products of ikq_t06 cannot wrap), revolute offsets in (-180, 180] */
 static DH_NOINLINE int ikq_model_ok(const dh_ikc_model_q *m)
 {
     unsigned c, i;
@@ -809,6 +811,8 @@ static DH_NOINLINE int ikq_model_ok(const dh_ikc_model_q *m)
         for (i = 0; i < 3u; i++)
             if (dh_q_abs_u32(m->pre_inv.r[c][i]) > IKQ_ENTRY_MAX || dh_q_abs_u32(m->post_inv.r[c][i]) > IKQ_ENTRY_MAX)
                 return 0;
+    for (i = 0; i < m->n && i < DH_IKC_JOINTS; i++)
+        if (((m->prismatic >> i) & 1u) == 0u && (m->off[i] > Q16_180 || m->off[i] <= -Q16_180)) return 0;
     switch (m->kind) {
     case DH_IKC_WRIST_RRR:
     case DH_IKC_WRIST_RRP:
@@ -827,11 +831,27 @@ static DH_NOINLINE int32_t ikq_shift(int32_t q, int32_t lo, int32_t hi, int32_t 
 {
     const int64_t d = (int64_t)q - lo;
     const uint32_t P = (uint32_t)Q16_360;
-    uint32_t rem = (uint32_t)ikq_abs64(d) % P, kmax, kk;
+    uint32_t rem, kmax, kk;
     int64_t first, c0;
 
     *in = 1;
     if (lo > hi) return q;
+    if ((int64_t)hi - lo < 3 * (int64_t)P) {
+        /* up to three candidates: no division */
+        int32_t best;
+        int64_t cand = q;
+        while (cand - (int64_t)P >= lo) cand -= P;
+        while (cand < lo) cand += P;
+        if (cand > hi) {
+            *in = 0;
+            return q;
+        }
+        best = (int32_t)cand;
+        for (cand += P; cand <= hi; cand += P)
+            if (ikq_abs64(cand - ref) < ikq_abs64((int64_t)best - ref)) best = (int32_t)cand;
+        return best;
+    }
+    rem = (uint32_t)ikq_abs64(d) % P;
     if (d < 0 && rem != 0u) rem = P - rem;
     first = (int64_t)lo + rem;
     if (first > hi) {
@@ -869,7 +889,7 @@ static DH_NOINLINE uint32_t ikq_finish(const dh_ikc_model_q *m, const int32_t *q
                 t->q[i] = dh_q_sat32((int64_t)t->q[i] - m->d[i], &ovf);
                 if (m->qmin[i] <= m->qmax[i]) in = (t->q[i] >= m->qmin[i] && t->q[i] <= m->qmax[i]);
             } else {
-                t->q[i] = ikq_shift(ikq_wrap180(t->q[i] - ikq_reduce(m->off[i])), m->qmin[i], m->qmax[i],
+                t->q[i] = ikq_shift(ikq_wrap180(t->q[i] - m->off[i]), m->qmin[i], m->qmax[i],
                                     q_ref ? q_ref[i] : 0, &in);
             }
             if (!in) all_in = 0;
@@ -931,7 +951,7 @@ int32_t dh_ikc_cref_q_(const dh_ikc_model_q *m, const int32_t *q_ref, uint32_t i
     const int32_t ref = q_ref ? q_ref[i] : 0;
     int ovf = 0;
     if ((m->prismatic >> i) & 1u) return dh_q_sat32((int64_t)ref + m->d[i], &ovf);
-    return ikq_wrap180(ikq_reduce(ref) + ikq_reduce(m->off[i]));
+    return ikq_wrap180(ikq_reduce(ref) + m->off[i]);
 }
 
 dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int32_t *q_ref, uint32_t opts,

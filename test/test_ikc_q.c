@@ -554,6 +554,19 @@ static void limits_shift(void)
     DHT_TRUE(f >= 0);
     DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) + 160.0) < COMP_DEG);
     DHT_TRUE(fabs(ldexp((double)sol[f].q[5], -16) - 110.0) < COMP_DEG);
+    /* wide limits (more than three turns): joint 4 shifted next to q_ref = 1000 */
+    DHT_EQ_INT(dh_robot_set_limits_q(&r, 3, -2000 * 65536, 2000 * 65536), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_q(&r, &m), DH_OK);
+    qref[3] = 1000 * 65536;
+    solve_q(&r, &m, qq, qref, 0u, sol, &ns, &Td);
+    f = check_sols(&r, &Td, sol, ns, qq, NULL);
+    DHT_TRUE(f >= 0);
+    DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) - 920.0) < COMP_DEG);
+    qref[3] = -2000 * 65536;
+    solve_q(&r, &m, qq, qref, 0u, sol, &ns, &Td);
+    f = check_sols(&r, &Td, sol, ns, qq, NULL);
+    DHT_TRUE(f >= 0);
+    DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) + 1960.0) < COMP_DEG);
 }
 
 static void limits_drop_keep(void)
@@ -714,6 +727,12 @@ static void solve_errors(void)
     EXPECT_UNTOUCHED(dh_ikc_q(&bad, &T, NULL, 0u, sol, &ns), DH_ERR_ARG);
     bad = m;
     bad.kind = (dh_ikc_kind)9;
+    EXPECT_UNTOUCHED(dh_ikc_q(&bad, &T, NULL, 0u, sol, &ns), DH_ERR_ARG);
+    bad = m;
+    bad.off[2] = 200 * 65536; /* offsets are stored in (-180, 180] */
+    EXPECT_UNTOUCHED(dh_ikc_q(&bad, &T, NULL, 0u, sol, &ns), DH_ERR_ARG);
+    bad = m;
+    bad.pre_inv.r[0][0] = INT32_MIN;
     EXPECT_UNTOUCHED(dh_ikc_q(&bad, &T, NULL, 0u, sol, &ns), DH_ERR_ARG);
     bad = m;
     bad.kind = DH_IKC_NONE;
