@@ -284,6 +284,7 @@ static int well_conditioned_to(const dhs_robot *d, const double *q, double tol, 
     for (i = 0; i < nj; i++) {
         double b = 0.0;
         for (j = 0; j < 6; j++) b += fabs(A[i][6 + j] / A[i][i]) * dx[j];
+        if (d->j[i].type == DH_JOINT_PRISMATIC) b /= LS; /* as jdiff */
         if (b > tol) return 0;
     }
     return 1;
