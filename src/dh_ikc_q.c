@@ -82,8 +82,16 @@
 #define IKQ_RIGID_TOL ((int32_t)1 << 20)
 /* wrist singular: |m13|, |m23| <= 2^-19 (orientation error <= 2.7e-6 rad) */
 #define IKQ_SING_WRIST ((int32_t)1 << 11)
-/* shoulder singular: wrist centre within 2^-12 units of axis 1 */
-#define IKQ_SING_AXIS ((DH_QPOS_ONE >> 12) + 1)
+/* Tolerances on lengths are counted in LSB, so that the solver does the
+ * same on the same raw values for every DH_QPOS_FRAC (units quoted for
+ * DH_QPOS_FRAC 16, robots in mm). Shoulder singular: wrist centre within
+ * 16 LSB (2.4e-4 units) of axis 1. */
+#define IKQ_SING_AXIS 16
+/* reach tolerance: 2^7 LSB (2^-9 units) of the wrist centre, as a bound
+ * on a squared length: 2^7 (sum of the magnitudes involved) */
+#define IKQ_REACH_SH 7
+/* stretched / folded elbow: within 8 LSB (2^-13 units) */
+#define IKQ_FOLD_SH 3
 /* canonical lengths and intermediate lengths, raw */
 #define IKQ_LEN_LIM ((int32_t)1 << 29)
 #define IKQ_POS_LIM ((int64_t)1 << 30)
@@ -518,9 +526,9 @@ static DH_NOINLINE int ikq_centre(const dh_ikc_model_q *m, dh_ikc_sol_q *sol)
     if (ikq_abs64(v) > (uint64_t)IKQ_POS_LIM) return 1;
     o[3] = (int32_t)v;
     v = dh_q_mla64(dh_q_mul64(o[0], o[0]), o[1], o[1]) - dh_q_mul64(k[K_H], k[K_H]);
-    /* inside the cylinder of radius |h| by less than 2^-9 units: u = 0 */
-    if (v < -((((int64_t)dh_q_abs_u32(o[0]) + (int64_t)dh_q_abs_u32(o[1]) + (int64_t)dh_q_abs_u32(k[K_H]) + 1)
-               << DH_QPOS_FRAC) >> 9))
+    /* inside the cylinder of radius |h| by less than 2^7 LSB: u = 0 */
+    if (v < -(((int64_t)dh_q_abs_u32(o[0]) + (int64_t)dh_q_abs_u32(o[1]) + (int64_t)dh_q_abs_u32(k[K_H]) + 1)
+              << IKQ_REACH_SH))
         return -1;
     o[5] = dh_q_abs_u32(o[0]) <= (uint32_t)IKQ_SING_AXIS && dh_q_abs_u32(o[1]) <= (uint32_t)IKQ_SING_AXIS;
     o[4] = (o[5] || v <= 0) ? 0 : (int32_t)dh_q_isqrt62((uint64_t)v);
@@ -607,19 +615,19 @@ static DH_NOINLINE void ikq_elbow_rrr(const dh_ikc_model_q *m, dh_ikc_sol_q *sol
     ds -= dh_q_mul64(k[K_RHO], k[K_RHO]);
     df = ds + K;
     ds -= K;
-    /* beyond stretched or folded by less than 2^-9 units of the wrist
+    /* beyond stretched or folded by less than 2^7 LSB of the wrist
      * centre (rounded targets near two singularities at once): solved at
      * the boundary */
-    tol = (((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy) + (int64_t)dh_q_abs_u32(k[K_RHO]) + 1)
-           << DH_QPOS_FRAC) >> 9;
+    tol = ((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy) + (int64_t)dh_q_abs_u32(k[K_RHO]) + 1)
+          << IKQ_REACH_SH;
     if (ds < -tol || df < -tol) {
         d0->q[2] = IKQ_ABSENT;
         return;
     }
-    /* |v|^2 within tol = 2 |v| 2^-14 units of stretched (ds = 0) or folded
+    /* |v|^2 within tol = 2 |v| 4 LSB of stretched (ds = 0) or folded
      * (df = 0) counts as exactly there; the wrist centre then moves by
-     * tol / (|v| + |a2 - rho|) <= 2^-13 units */
-    tol = (((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy)) << DH_QPOS_FRAC >> 13) + 1;
+     * tol / (|v| + |a2 - rho|) <= 8 LSB */
+    tol = (((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy)) << IKQ_FOLD_SH) + 1;
     if (ds <= tol) ds = 0;
     if (df <= tol) df = 0;
     /* cos(t3 - phi) = K / (2 a2 rho): with a2 < 0 the roles swap */
@@ -676,9 +684,9 @@ static DH_NOINLINE void ikq_elbow_rrp(const dh_ikc_model_q *m, dh_ikc_sol_q *sol
     dh_ikc_sol_q *d0 = &sol[4u * s + 2u], *d1 = &sol[4u * s + 3u];
     const int32_t vx = d0->q[1], vy = d1->q[0];
     int64_t L2 = dh_q_mla64(dh_q_mul64(vx, vx), vy, vy) - dh_q_mul64(x2, x2);
-    /* as the RRR elbow: within 2^-9 units of L = 0 counts as there */
-    if (L2 < -((((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy) + (int64_t)dh_q_abs_u32(x2) + 1)
-                << DH_QPOS_FRAC) >> 9)) {
+    /* as the RRR elbow: within 2^7 LSB of L = 0 counts as there */
+    if (L2 < -(((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy) + (int64_t)dh_q_abs_u32(x2) + 1)
+               << IKQ_REACH_SH)) {
         d0->q[2] = IKQ_ABSENT;
         return;
     }
