@@ -19,9 +19,11 @@
  * below 2^60, every sum of the few squares used below 2^62 (the domain of
  * dh_q_isqrt62), and each atan2 argument pair is an int64 brought below
  * 2^30 by one common rounding shift (ikq_atan2: only the ratio matters).
- * Rotation entries of a rigid target (within 2^-10 of orthonormal) stay
- * below 1.001 in magnitude, so their rotated copies are rounded without a
- * range check and are never INT32_MIN.
+ * Rotation entries of a rigid target (within 2^-10 of orthonormal, and
+ * every entry <= 1.1, checked first) stay below 1.001 in magnitude, so
+ * their rotated copies are rounded without a range check and are never
+ * INT32_MIN; the model's pre/post rotations are checked for entries <= 1.1
+ * by dh_ikc_q, which bounds every three-term sum of ikq_t06 below 2^63.
  *
  * Position, RRR (alpha1 = +-90 with tau = sin alpha1, alpha2 in {0, 180}
  * with sigma = cos alpha2; joints 1-based in formulas, 0-based in code).
@@ -64,8 +66,11 @@
  * the same formulas (t6 absorbs the choice), one solution.
  *
  * Cost (all solutions of the Puma 560): 2 atan2 for joint 1, 2 for the
- * elbow, 4 for joint 2, 3 per arm branch for the wrist (12), 3 integer
- * square roots (u, two elbow radicands), sin/cos of t1, t3, tb, t4.
+ * elbow, 4 for joint 2, 3 per arm branch for the wrist (12): 20 atan2;
+ * sin/cos of t1 (2), t3 (4), tb and t4 (2 per arm branch, 8): 14;
+ * 3 integer square roots (u, two elbow radicands); about 250 products.
+ * Factors 0 and +-1 (exact twists, zero tool offsets) are not multiplied.
+ * Measured under QEMU on Cortex-M0 (-O2): 43,900 instructions per call.
  */
 #include "dhmath/dh_ikc.h"
 #include "dhmath/dh_fixed.h"
