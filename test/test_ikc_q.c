@@ -67,10 +67,43 @@ static void desc_set(dhs_robot *d, const char *name, dh_convention conv, unsigne
     scale_desc(d);
 }
 
-/* KUKA KR5 in mm, standard DH after P. Corke's Robotics Toolbox model
- * mdl_KR5 (G. Sinha, IIT Kanpur), without its tool; limits from the KR 5
- * data sheet. Fields: type, a, d, alpha, theta offset, qmin, qmax. */
+/* KUKA KR5 (KR 5 arc) in mm, standard DH: P. Corke, Robotics Toolbox for
+ * Python, models/DH/KR5.py (as examples/robots/kuka_kr5.dh, which names its
+ * sources), with the 115 mm flange as d6. Fields: type, a, d, alpha,
+ * theta offset, qmin, qmax. */
 static const dhs_joint_desc kr5_j[6] = {
+    {DH_JOINT_REVOLUTE, 180.0, 400.0, -90.0, 0.0, -155.0, 155.0},
+    {DH_JOINT_REVOLUTE, 600.0, 0.0, 0.0, 0.0, -180.0, 65.0},
+    {DH_JOINT_REVOLUTE, 120.0, 0.0, 90.0, 0.0, -15.0, 158.0},
+    {DH_JOINT_REVOLUTE, 0.0, -620.0, -90.0, 0.0, -350.0, 350.0},
+    {DH_JOINT_REVOLUTE, 0.0, 0.0, 90.0, 0.0, -130.0, 130.0},
+    {DH_JOINT_REVOLUTE, 0.0, -115.0, 180.0, 0.0, -350.0, 350.0},
+};
+/* ABB IRB 140 in mm, standard DH: P. Corke, Robotics Toolbox for Python,
+ * models/DH/IRB140.py (as examples/robots/abb_irb140.dh). */
+static const dhs_joint_desc irb140_j[6] = {
+    {DH_JOINT_REVOLUTE, 70.0, 352.0, -90.0, 0.0, -180.0, 180.0},
+    {DH_JOINT_REVOLUTE, 360.0, 0.0, 0.0, 0.0, -100.0, 100.0},
+    {DH_JOINT_REVOLUTE, 0.0, 0.0, -90.0, 0.0, -220.0, 60.0},
+    {DH_JOINT_REVOLUTE, 0.0, 380.0, 90.0, 0.0, -200.0, 200.0},
+    {DH_JOINT_REVOLUTE, 0.0, 0.0, -90.0, 0.0, -120.0, 120.0},
+    {DH_JOINT_REVOLUTE, 0.0, 65.0, 0.0, 0.0, -400.0, 400.0},
+};
+/* Stanford arm in mm, standard DH: P. Corke, Robotics Toolbox for Python,
+ * models/DH/Stanford.py (kinematics from Stanford AIM-177, fig. 2.3; as
+ * examples/robots/stanford.dh); joint 3 prismatic, theta -90, a 20.3. */
+static const dhs_joint_desc stanford_j[6] = {
+    {DH_JOINT_REVOLUTE, 0.0, 412.0, -90.0, 0.0, -170.0, 170.0},
+    {DH_JOINT_REVOLUTE, 0.0, 154.0, 90.0, 0.0, -170.0, 170.0},
+    {DH_JOINT_PRISMATIC, 20.3, 0.0, 0.0, -90.0, 304.8, 1270.0},
+    {DH_JOINT_REVOLUTE, 0.0, 0.0, -90.0, 0.0, -170.0, 170.0},
+    {DH_JOINT_REVOLUTE, 0.0, 0.0, 90.0, 0.0, -90.0, 90.0},
+    {DH_JOINT_REVOLUTE, 0.0, 0.0, 0.0, 0.0, -170.0, 170.0},
+};
+/* Test tables (not real robots) for what the three above leave out:
+ * alpha2 = 180 (sigma = -1), d3 != 0, a tool along z, alpha6 = 180;
+ * theta offsets on revolute joints, alpha3 = +90, a prismatic d6 tool. */
+static const dhs_joint_desc sigma_j[6] = {
     {DH_JOINT_REVOLUTE, 180.0, 400.0, 90.0, 0.0, -155.0, 155.0},
     {DH_JOINT_REVOLUTE, 600.0, 135.0, 180.0, 0.0, -180.0, 65.0},
     {DH_JOINT_REVOLUTE, 120.0, 135.0, -90.0, 0.0, -15.0, 158.0},
@@ -78,25 +111,13 @@ static const dhs_joint_desc kr5_j[6] = {
     {DH_JOINT_REVOLUTE, 0.0, 0.0, 90.0, 0.0, -130.0, 130.0},
     {DH_JOINT_REVOLUTE, 0.0, 0.0, 180.0, 0.0, -350.0, 350.0},
 };
-/* ABB IRB 140 in mm, standard DH after P. Corke's Robotics Toolbox model
- * mdl_irb140 (ABB IRB 140 data sheet), with its theta offsets. */
-static const dhs_joint_desc irb140_j[6] = {
+static const dhs_joint_desc offsets_j[6] = {
     {DH_JOINT_REVOLUTE, 70.0, 352.0, -90.0, 0.0, -180.0, 180.0},
     {DH_JOINT_REVOLUTE, 360.0, 0.0, 0.0, -90.0, -100.0, 100.0},
     {DH_JOINT_REVOLUTE, 0.0, 0.0, 90.0, 180.0, -220.0, 60.0},
     {DH_JOINT_REVOLUTE, 0.0, 380.0, -90.0, 0.0, -200.0, 200.0},
     {DH_JOINT_REVOLUTE, 0.0, 0.0, 90.0, 0.0, -120.0, 120.0},
     {DH_JOINT_REVOLUTE, 0.0, 65.0, 0.0, 0.0, -400.0, 400.0},
-};
-/* Stanford arm in mm, standard DH as in P. Corke's mdl_stanford (kinematic
- * data from Stanford AIM-177, fig. 2.3); joint 3 prismatic, theta -90. */
-static const dhs_joint_desc stanford_j[6] = {
-    {DH_JOINT_REVOLUTE, 0.0, 412.0, -90.0, 0.0, -170.0, 170.0},
-    {DH_JOINT_REVOLUTE, 0.0, 154.0, 90.0, 0.0, -170.0, 170.0},
-    {DH_JOINT_PRISMATIC, 0.0, 0.0, 0.0, -90.0, 304.8, 1219.2},
-    {DH_JOINT_REVOLUTE, 0.0, 0.0, -90.0, 0.0, -170.0, 170.0},
-    {DH_JOINT_REVOLUTE, 0.0, 0.0, 90.0, 0.0, -90.0, 90.0},
-    {DH_JOINT_REVOLUTE, 0.0, 263.0, 0.0, 0.0, -170.0, 170.0},
 };
 
 static void build(const dhs_robot *d, dh_robot *r, dh_ikc_model_q *m, dh_ikc_kind kind)
@@ -360,6 +381,15 @@ static void irb140_random(void)
     random_run(&d, &d, DH_IKC_WRIST_RRR, DHT_ITER(10000));
 }
 
+static void test_tables_random(void)
+{
+    dhs_robot d;
+    desc_set(&d, "sigma_test", DH_CONV_STANDARD, 6, sigma_j);
+    random_run(&d, &d, DH_IKC_WRIST_RRR, DHT_ITER(5000));
+    desc_set(&d, "offsets_test", DH_CONV_STANDARD, 6, offsets_j);
+    random_run(&d, &d, DH_IKC_WRIST_RRR, DHT_ITER(5000));
+}
+
 static void stanford_random(void)
 {
     dhs_robot d;
@@ -403,7 +433,7 @@ static void base_tool_random(void)
     dhs_rotx(&B, 20.0);
     dhs_mul(&d.tool, &A, &B);
     random_run(&d, &f, DH_IKC_WRIST_RRR, DHT_ITER(3000));
-    /* the same with the KR5's table (sigma = -1, alpha6 = 180) */
+    /* the same with the KR5 (alpha6 = 180, a tool along z) */
     desc_set(&d, "kr5_base_tool_mm", DH_CONV_STANDARD, 6, kr5_j);
     dhs_rotz(&A, -45.0);
     dhs_trans(&B, 0.0, 300.0 * LS, 0.0);
@@ -807,6 +837,7 @@ static const dht_case cases[] = {
     DHT_CASE(kr5_random),
     DHT_CASE(irb140_random),
     DHT_CASE(stanford_random),
+    DHT_CASE(test_tables_random),
     DHT_CASE(mdh_random),
     DHT_CASE(base_tool_random),
     DHT_CASE(singular_wrist),
