@@ -47,16 +47,25 @@ uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, cons
                            dh_ikc_sol_f32 *sol);
 
 /* ---- fixed, integer only (dh_ikc_q.c: wrist families; dh_ikc_ur_q.c: UR and SCARA) ----
- * Same contract; a solver returns DH_ERR_OVERFLOW when an intermediate
- * would saturate (count 0), else DH_OK with *count (0 = unreachable). */
+ * Same contract, except for two inputs, because the whole call chain of
+ * dh_ikc_q must stay within 256 bytes of stack on Cortex-M0 (the front end
+ * keeps no frame or array on its stack while a solver runs):
+ * - T06 arrives in the solution array: columns n and o of R06 in
+ *   sol[0].q[0..2] and sol[0].q[3..5], column a in sol[1].q[0..2], the
+ *   position in sol[1].q[3..5] (Q2.30, dh_qpos); DH_IKC_T06_COL_(sol, c)
+ *   is column c = 0..3. A solver may use all of sol[0..DH_IKC_MAX_SOL-1]
+ *   as scratch.
+ * - the reference is the caller's q_ref (NULL: zeros); the canonical
+ *   reference value of joint i is dh_ikc_cref_q_(m, q_ref, i).
+ * A solver returns DH_ERR_OVERFLOW when an intermediate would saturate
+ * (count 0), else DH_OK with *count (0 = unreachable). */
+#define DH_IKC_T06_COL_(sol, c) (&(sol)[(c) >> 1].q[3u * ((c) & 1u)])
+int32_t dh_ikc_cref_q_(const dh_ikc_model_q *m, const int32_t *q_ref, uint32_t i);
 int dh_ikc_detect_wrist_q_(dh_ikc_model_q *m);
 int dh_ikc_detect_par234_q_(dh_ikc_model_q *m);
 int dh_ikc_detect_scara_q_(dh_ikc_model_q *m);
-dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const dh_frame_q *T06, const int32_t *cref, dh_ikc_sol_q *sol,
-                          uint32_t *count);
-dh_status dh_ikc_par234_q_(const dh_ikc_model_q *m, const dh_frame_q *T06, const int32_t *cref,
-                           dh_ikc_sol_q *sol, uint32_t *count);
-dh_status dh_ikc_scara_q_(const dh_ikc_model_q *m, const dh_frame_q *T06, const int32_t *cref, dh_ikc_sol_q *sol,
-                          uint32_t *count);
+dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count);
+dh_status dh_ikc_par234_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count);
+dh_status dh_ikc_scara_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count);
 
 #endif /* DHMATH_SRC_DH_IKC_IMPL_H */

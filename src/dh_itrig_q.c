@@ -114,26 +114,10 @@ dh_status dh_atan2_q(int32_t y, int32_t x, dh_q16 *deg_q16)
     return DH_OK;
 }
 
-/* floor(sqrt(2^60 - a^2)) for a <= 2^30, digit by digit (31 bit pairs of
- * a 62-bit value; the remainder stays below 2 root + 1 <= 2^31 + 1) */
+/* floor(sqrt(2^60 - a^2)) for a <= 2^30 (dh_q_isqrt62, dh_internal.h) */
 static uint32_t dh_itrig_cofactor(uint32_t a)
 {
-    uint64_t v = ((uint64_t)1 << 60) - (uint64_t)dh_q_mul64((int32_t)a, (int32_t)a);
-    uint64_t rem = 0u;
-    uint32_t root = 0u, i;
-
-    for (i = 0u; i < 31u; i++) {
-        uint64_t trial;
-        rem = (rem << 2) | (v >> 60);
-        v = (v << 2) & (((uint64_t)1 << 62) - 1u);
-        root <<= 1;
-        trial = ((uint64_t)root << 1) | 1u;
-        if (rem >= trial) {
-            rem -= trial;
-            root |= 1u;
-        }
-    }
-    return root;
+    return dh_q_isqrt62(((uint64_t)1 << 60) - (uint64_t)dh_q_mul64((int32_t)a, (int32_t)a));
 }
 
 /* |v| clamped to 2^30 when within 1 + 2^-21; 1 (out of domain) otherwise */

@@ -10,7 +10,8 @@
  *   elbow offsets (Puma 560, KUKA KR5, ABB IRB140; Paul 1981 ch. 3, the
  *   Puma's transform-equation solution); up to 8 solutions;
  * - DH_IKC_WRIST_RRP: the same wrist on an R-R-P arm (Stanford arm); up to
- *   8, four of them with the prismatic joint's extension negative;
+ *   8, four of them with the prismatic joint's extension negative (limits on
+ *   the prismatic joint normally remove those);
  * - DH_IKC_PARALLEL_234: six revolute joints with axes 2, 3, 4 parallel
  *   (Universal Robots UR3/UR5/UR10 and e-series); up to 8;
  * - DH_IKC_SCARA: R-R-P-R with all four axes parallel (Adept Cobra 600); up to 2.

@@ -1,0 +1,852 @@
+/*
+ * test_ikc_q.c - fixed-point closed-form IK, spherical-wrist families
+ * (dh_ikc_analyse_q, dh_ikc_q, dh_ikc_nearest_q): every solution against
+ * the double reference FK (test/support_robots.h) within 5e-3 mm and 5e-6
+ * (rotation entries, ~rad), completeness (the generating configuration
+ * among the solutions within 2e-3 deg) on random in-limit configurations
+ * away from the singularities, singular cases, limits and 360-degree
+ * shifts, MDH, base and tool, robots without a closed form, every status.
+ */
+#include "dht.h"
+#include "support_robots.h"
+#include "dhmath/dh_ikc.h"
+#include "dhmath/dh_fixed.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* The accuracy targets are for robots in mm at DH_QPOS_FRAC 16. At other
+ * fraction bits (tools/check.sh variants) every length of the test robots
+ * and targets is scaled by LS = 2^(16 - DH_QPOS_FRAC), so that the solver
+ * sees the same raw values, and the length tolerances scale with it. */
+#define LS ldexp(1.0, 16 - DH_QPOS_FRAC)
+#define POS_TOL (5e-3 * LS) /* mm at DH_QPOS_FRAC 16 */
+#define ROT_TOL 5e-6  /* rotation entries (rad for small errors) */
+#define COMP_DEG 2e-3 /* completeness, deg (mm for a prismatic joint) */
+#define AWAY 1e-2     /* distance from the singularities (sin, or 10 mm) */
+#define PI_D 3.14159265358979323846
+
+/* ---- robots --------------------------------------------------------------- */
+
+/* lengths of d (a, d, prismatic limits, base and tool translations) times LS */
+static void scale_desc(dhs_robot *d)
+{
+    unsigned i;
+    for (i = 0; i < d->n; i++) {
+        d->j[i].a *= LS;
+        d->j[i].d *= LS;
+        if (d->j[i].type == DH_JOINT_PRISMATIC) {
+            d->j[i].qmin *= LS;
+            d->j[i].qmax *= LS;
+        }
+    }
+    for (i = 0; i < 3; i++) {
+        d->base.m[3][i] *= LS;
+        d->tool.m[3][i] *= LS;
+    }
+}
+
+/* the shipped Puma 560 in mm, scaled */
+static void puma(dhs_robot *d)
+{
+    *d = dhs_puma560_mm;
+    scale_desc(d);
+}
+
+static void desc_set(dhs_robot *d, const char *name, dh_convention conv, unsigned n, const dhs_joint_desc *j)
+{
+    memset(d, 0, sizeof *d);
+    d->name = name;
+    d->conv = conv;
+    d->n = n;
+    d->unit_per_m = 1000.0;
+    memcpy(d->j, j, n * sizeof *j);
+    dhs_identity(&d->base);
+    dhs_identity(&d->tool);
+    scale_desc(d);
+}
+
+/* KUKA KR5 (KR 5 arc) in mm, standard DH: P. Corke, Robotics Toolbox for
+ * Python, models/DH/KR5.py (as examples/robots/kuka_kr5.dh, which names its
+ * sources), with the 115 mm flange as d6. Fields: type, a, d, alpha,
+ * theta offset, qmin, qmax. */
+static const dhs_joint_desc kr5_j[6] = {
+    {DH_JOINT_REVOLUTE, 180.0, 400.0, -90.0, 0.0, -155.0, 155.0},
+    {DH_JOINT_REVOLUTE, 600.0, 0.0, 0.0, 0.0, -180.0, 65.0},
+    {DH_JOINT_REVOLUTE, 120.0, 0.0, 90.0, 0.0, -15.0, 158.0},
+    {DH_JOINT_REVOLUTE, 0.0, -620.0, -90.0, 0.0, -350.0, 350.0},
+    {DH_JOINT_REVOLUTE, 0.0, 0.0, 90.0, 0.0, -130.0, 130.0},
+    {DH_JOINT_REVOLUTE, 0.0, -115.0, 180.0, 0.0, -350.0, 350.0},
+};
+/* ABB IRB 140 in mm, standard DH: P. Corke, Robotics Toolbox for Python,
+ * models/DH/IRB140.py (as examples/robots/abb_irb140.dh). */
+static const dhs_joint_desc irb140_j[6] = {
+    {DH_JOINT_REVOLUTE, 70.0, 352.0, -90.0, 0.0, -180.0, 180.0},
+    {DH_JOINT_REVOLUTE, 360.0, 0.0, 0.0, 0.0, -100.0, 100.0},
+    {DH_JOINT_REVOLUTE, 0.0, 0.0, -90.0, 0.0, -220.0, 60.0},
+    {DH_JOINT_REVOLUTE, 0.0, 380.0, 90.0, 0.0, -200.0, 200.0},
+    {DH_JOINT_REVOLUTE, 0.0, 0.0, -90.0, 0.0, -120.0, 120.0},
+    {DH_JOINT_REVOLUTE, 0.0, 65.0, 0.0, 0.0, -400.0, 400.0},
+};
+/* Stanford arm in mm, standard DH: P. Corke, Robotics Toolbox for Python,
+ * models/DH/Stanford.py (kinematics from Stanford AIM-177, fig. 2.3; as
+ * examples/robots/stanford.dh); joint 3 prismatic, theta -90, a 20.3. */
+static const dhs_joint_desc stanford_j[6] = {
+    {DH_JOINT_REVOLUTE, 0.0, 412.0, -90.0, 0.0, -170.0, 170.0},
+    {DH_JOINT_REVOLUTE, 0.0, 154.0, 90.0, 0.0, -170.0, 170.0},
+    {DH_JOINT_PRISMATIC, 20.3, 0.0, 0.0, -90.0, 304.8, 1270.0},
+    {DH_JOINT_REVOLUTE, 0.0, 0.0, -90.0, 0.0, -170.0, 170.0},
+    {DH_JOINT_REVOLUTE, 0.0, 0.0, 90.0, 0.0, -90.0, 90.0},
+    {DH_JOINT_REVOLUTE, 0.0, 0.0, 0.0, 0.0, -170.0, 170.0},
+};
+/* Test tables (not real robots) for what the three above leave out:
+ * alpha2 = 180 (sigma = -1), d3 != 0, a tool along z, alpha6 = 180;
+ * theta offsets on revolute joints, alpha3 = +90, a prismatic d6 tool. */
+static const dhs_joint_desc sigma_j[6] = {
+    {DH_JOINT_REVOLUTE, 180.0, 400.0, 90.0, 0.0, -155.0, 155.0},
+    {DH_JOINT_REVOLUTE, 600.0, 135.0, 180.0, 0.0, -180.0, 65.0},
+    {DH_JOINT_REVOLUTE, 120.0, 135.0, -90.0, 0.0, -15.0, 158.0},
+    {DH_JOINT_REVOLUTE, 0.0, 620.0, 90.0, 0.0, -350.0, 350.0},
+    {DH_JOINT_REVOLUTE, 0.0, 0.0, 90.0, 0.0, -130.0, 130.0},
+    {DH_JOINT_REVOLUTE, 0.0, 0.0, 180.0, 0.0, -350.0, 350.0},
+};
+static const dhs_joint_desc offsets_j[6] = {
+    {DH_JOINT_REVOLUTE, 70.0, 352.0, -90.0, 0.0, -180.0, 180.0},
+    {DH_JOINT_REVOLUTE, 360.0, 0.0, 0.0, -90.0, -100.0, 100.0},
+    {DH_JOINT_REVOLUTE, 0.0, 0.0, 90.0, 180.0, -220.0, 60.0},
+    {DH_JOINT_REVOLUTE, 0.0, 380.0, -90.0, 0.0, -200.0, 200.0},
+    {DH_JOINT_REVOLUTE, 0.0, 0.0, 90.0, 0.0, -120.0, 120.0},
+    {DH_JOINT_REVOLUTE, 0.0, 65.0, 0.0, 0.0, -400.0, 400.0},
+};
+
+static void build(const dhs_robot *d, dh_robot *r, dh_ikc_model_q *m, dh_ikc_kind kind)
+{
+    DHT_EQ_INT(dhs_build(d, r), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_q(r, m), DH_OK);
+    DHT_EQ_INT(m->kind, kind);
+    DHT_EQ_INT(m->why, DH_IKC_WHY_NONE);
+}
+
+/* ---- reference checks ----------------------------------------------------- */
+
+static double pos_err(const dhs_mat4_d *A, const dhs_mat4_d *B)
+{
+    double e = 0.0;
+    int i;
+    for (i = 0; i < 3; i++) {
+        double d = fabs(A->m[3][i] - B->m[3][i]);
+        if (d > e) e = d;
+    }
+    return e;
+}
+
+static double rot_err(const dhs_mat4_d *A, const dhs_mat4_d *B)
+{
+    double e = 0.0;
+    int c, i;
+    for (c = 0; c < 3; c++)
+        for (i = 0; i < 3; i++) {
+            double d = fabs(A->m[c][i] - B->m[c][i]);
+            if (d > e) e = d;
+        }
+    return e;
+}
+
+static void to_frame(const dhs_mat4_d *T, dh_frame_q *F)
+{
+    int c, i;
+    for (c = 0; c < 3; c++)
+        for (i = 0; i < 3; i++) F->r[c][i] = dhs_to_q(T->m[c][i], 30);
+    for (i = 0; i < 3; i++) F->p[i] = dhs_to_q(T->m[3][i], DH_QPOS_FRAC);
+}
+
+/* |a - b| in deg (revolute, modulo 360) or length units (prismatic) */
+static double jdiff(const dh_robot *r, unsigned i, int32_t a, int32_t b)
+{
+    double d;
+    if (r->joint[i].type == DH_JOINT_PRISMATIC) return fabs(ldexp((double)a - (double)b, -DH_QPOS_FRAC)) / LS;
+    d = fmod(ldexp((double)a - (double)b, -16), 360.0);
+    if (d > 180.0) d -= 360.0;
+    if (d < -180.0) d += 360.0;
+    return fabs(d);
+}
+
+typedef struct {
+    long targets, comp, sols;
+    double pos, rot;
+} stats;
+
+/* every solution FK-correct; returns the index of the solution equal to qgen, or -1 */
+static int check_sols(const dh_robot *r, const dhs_mat4_d *Td, const dh_ikc_sol_q *sol, uint32_t ns, const int32_t *qgen,
+                      stats *st)
+{
+    uint32_t s, i;
+    int found = -1;
+    for (s = 0; s < ns; s++) {
+        dhs_mat4_d Ts;
+        double pe, re, worst = 0.0;
+        dhs_fk_ref_q(r, sol[s].q, NULL, &Ts);
+        pe = pos_err(&Ts, Td);
+        re = rot_err(&Ts, Td);
+        DHT_TRUE_MSG(pe <= POS_TOL && re <= ROT_TOL,
+                     "solution %u of %u (flags 0x%x): pos err %.3g mm, rot err %.3g; q %ld %ld %ld %ld %ld %ld",
+                     (unsigned)s, (unsigned)ns, (unsigned)sol[s].flags, pe, re, (long)sol[s].q[0], (long)sol[s].q[1],
+                     (long)sol[s].q[2], (long)sol[s].q[3], (long)sol[s].q[4], (long)sol[s].q[5]);
+        if (st) {
+            if (pe > st->pos) st->pos = pe;
+            if (re > st->rot) st->rot = re;
+            st->sols++;
+        }
+        if (qgen) {
+            for (i = 0; i < r->n; i++) {
+                double d = jdiff(r, i, sol[s].q[i], qgen[i]);
+                if (d > worst) worst = d;
+            }
+            if (worst <= COMP_DEG && found < 0) found = (int)s;
+        }
+    }
+    return found;
+}
+
+/* 1 when q of the SDH description d (identity base) is AWAY from the wrist,
+ * elbow and shoulder singularities of the families */
+static int away_u(const dhs_robot *d, const double *q, double umin)
+{
+    dhs_mat4_d fr[6], T;
+    double o[3], o1[3], h2, u2, t3;
+    int i;
+    if (fabs(sin((q[4] + d->j[4].theta_deg) * PI_D / 180.0)) < AWAY) return 0;
+    if (d->j[2].type == DH_JOINT_REVOLUTE) {
+        double e = sin(d->j[2].alpha_deg * PI_D / 180.0) * d->j[3].d;
+        t3 = (q[2] + d->j[2].theta_deg) * PI_D / 180.0;
+        if (fabs(sin(t3 - atan2(e, d->j[2].a))) < AWAY) return 0;
+    } else if (fabs(q[2] + d->j[2].d) < 10.0 * LS) {
+        return 0;
+    }
+    dhs_fk_desc(d, q, fr, &T);
+    for (i = 0; i < 3; i++) o[i] = fr[3].m[3][i];
+    /* o in frame 1: the offset h of the wrist centre along z1 */
+    for (i = 0; i < 3; i++)
+        o1[i] = fr[0].m[i][0] * (o[0] - fr[0].m[3][0]) + fr[0].m[i][1] * (o[1] - fr[0].m[3][1]) +
+                fr[0].m[i][2] * (o[2] - fr[0].m[3][2]);
+    h2 = o1[2] * o1[2];
+    u2 = o[0] * o[0] + o[1] * o[1] - h2;
+    return u2 > umin * umin * LS * LS;
+}
+
+static int away(const dhs_robot *d, const double *q)
+{
+    return away_u(d, q, 10.0);
+}
+
+/* The target is rounded (2^-DH_QPOS_FRAC, 2^-30) and the arm angles are
+ * Q16.16 values that the wrist angles absorb, so the exact inverse of the
+ * rounded target differs from the generating configuration by about
+ * J^-1 (target rounding + J_arm x 2 LSB): near a singularity (elbow almost
+ * stretched, wrist centre near axis 2, joint 5 near 0) and more so where
+ * two of them meet, this exceeds 2e-3 deg even at 1e-2 from each. The
+ * completeness check is made where this bound (J by central differences
+ * of the double FK of the description) is below half the tolerance. */
+static int well_conditioned_to(const dhs_robot *d, const double *q, double tol, int nj)
+{
+    double J[6][6], A[6][12], qp[6], qm[6], dx[6];
+    dhs_mat4_d T0, Tp, Tm;
+    const double h = 1e-4;
+    int i, j, k, c;
+    dhs_fk_desc(d, q, NULL, &T0);
+    for (k = 0; k < 6; k++) {
+        double W[3][3];
+        memcpy(qp, q, sizeof qp);
+        memcpy(qm, q, sizeof qm);
+        qp[k] += h;
+        qm[k] -= h;
+        dhs_fk_desc(d, qp, NULL, &Tp);
+        dhs_fk_desc(d, qm, NULL, &Tm);
+        for (i = 0; i < 3; i++) J[i][k] = (Tp.m[3][i] - Tm.m[3][i]) / (2.0 * h);
+        /* W = dR R^T (m[col][row]) */
+        for (i = 0; i < 3; i++)
+            for (j = 0; j < 3; j++) {
+                W[i][j] = 0.0;
+                for (c = 0; c < 3; c++) W[i][j] += (Tp.m[c][i] - Tm.m[c][i]) / (2.0 * h) * T0.m[c][j];
+            }
+        J[3][k] = 0.5 * (W[2][1] - W[1][2]);
+        J[4][k] = 0.5 * (W[0][2] - W[2][0]);
+        J[5][k] = 0.5 * (W[1][0] - W[0][1]);
+    }
+    for (i = 0; i < 6; i++) {
+        for (j = 0; j < 6; j++) {
+            A[i][j] = J[i][j];
+            A[i][6 + j] = (i == j) ? 1.0 : 0.0;
+        }
+    }
+    for (c = 0; c < 6; c++) { /* Gauss-Jordan, partial pivoting */
+        int piv = c;
+        for (i = c + 1; i < 6; i++)
+            if (fabs(A[i][c]) > fabs(A[piv][c])) piv = i;
+        if (fabs(A[piv][c]) < 1e-12) return 0;
+        for (j = 0; j < 12; j++) {
+            double t = A[c][j];
+            A[c][j] = A[piv][j];
+            A[piv][j] = t;
+        }
+        for (i = 0; i < 6; i++) {
+            double f;
+            if (i == c) continue;
+            f = A[i][c] / A[c][c];
+            for (j = 0; j < 12; j++) A[i][j] -= f * A[c][j];
+        }
+    }
+    for (i = 0; i < 6; i++) {
+        dx[i] = (i < 3) ? ldexp(1.0, -DH_QPOS_FRAC) : ldexp(2.0, -30);
+        for (k = 0; k < 3; k++)
+            dx[i] += fabs(J[i][k]) * ((d->j[k].type == DH_JOINT_REVOLUTE) ? ldexp(2.0, -16) : ldexp(2.0, -DH_QPOS_FRAC));
+    }
+    for (i = 0; i < nj; i++) {
+        double b = 0.0;
+        for (j = 0; j < 6; j++) b += fabs(A[i][6 + j] / A[i][i]) * dx[j];
+        if (d->j[i].type == DH_JOINT_PRISMATIC) b /= LS; /* as jdiff */
+        if (b > tol) return 0;
+    }
+    return 1;
+}
+
+static int well_conditioned(const dhs_robot *d, const double *q)
+{
+    return well_conditioned_to(d, q, 0.5 * COMP_DEG, 6);
+}
+
+/* random in-limit configurations of d (filter: the SDH description f) */
+static void random_run(const dhs_robot *d, const dhs_robot *f, dh_ikc_kind kind, long iters)
+{
+    dh_robot r;
+    dh_ikc_model_q m;
+    stats st;
+    long it;
+    memset(&st, 0, sizeof st);
+    build(d, &r, &m, kind);
+    for (it = 0; it < iters; it++) {
+        double q[6];
+        int32_t qq[6];
+        dhs_mat4_d Td;
+        dh_frame_q T;
+        dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+        uint32_t ns = 0;
+        dh_status rc;
+        int comp, found;
+        dhs_random_q(d, q);
+        dhs_q_from_double(&r, q, qq);
+        comp = away(f, q) && well_conditioned(d, q);
+        dhs_fk_ref_q(&r, qq, NULL, &Td);
+        to_frame(&Td, &T);
+        rc = dh_ikc_q(&m, &T, NULL, 0u, sol, &ns);
+        if (rc == DH_ERR_LIMIT && !comp) {
+            /* ill-conditioned: the in-limit configuration may move across a
+             * limit; the solutions kept out of limits are checked */
+            rc = dh_ikc_q(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns);
+        }
+        DHT_TRUE_MSG(rc == DH_OK && ns >= 1u, "%s: status %d, %u solutions for q %.6f %.6f %.6f %.6f %.6f %.6f",
+                     d->name, (int)rc, (unsigned)ns, q[0], q[1], q[2], q[3], q[4], q[5]);
+        found = check_sols(&r, &Td, sol, ns, qq, &st);
+        st.targets++;
+        if (comp) {
+            st.comp++;
+            DHT_TRUE_MSG(found >= 0, "%s: generating configuration %.6f %.6f %.6f %.6f %.6f %.6f not among %u solutions",
+                         d->name, q[0], q[1], q[2], q[3], q[4], q[5], (unsigned)ns);
+        }
+    }
+    dht_printf("%s: %ld targets (%ld completeness), %ld solutions, max err %.3g mm, %.3g\n", d->name, st.targets,
+               st.comp, st.sols, st.pos, st.rot);
+    DHT_TRUE(st.comp >= iters / 2);
+}
+
+static void puma_random(void)
+{
+    dhs_robot d;
+    puma(&d);
+    random_run(&d, &d, DH_IKC_WRIST_RRR, DHT_ITER(10000));
+}
+
+static void kr5_random(void)
+{
+    dhs_robot d;
+    desc_set(&d, "kr5_mm", DH_CONV_STANDARD, 6, kr5_j);
+    random_run(&d, &d, DH_IKC_WRIST_RRR, DHT_ITER(10000));
+}
+
+static void irb140_random(void)
+{
+    dhs_robot d;
+    desc_set(&d, "irb140_mm", DH_CONV_STANDARD, 6, irb140_j);
+    random_run(&d, &d, DH_IKC_WRIST_RRR, DHT_ITER(10000));
+}
+
+static void test_tables_random(void)
+{
+    dhs_robot d;
+    desc_set(&d, "sigma_test", DH_CONV_STANDARD, 6, sigma_j);
+    random_run(&d, &d, DH_IKC_WRIST_RRR, DHT_ITER(5000));
+    desc_set(&d, "offsets_test", DH_CONV_STANDARD, 6, offsets_j);
+    random_run(&d, &d, DH_IKC_WRIST_RRR, DHT_ITER(5000));
+}
+
+static void stanford_random(void)
+{
+    dhs_robot d;
+    desc_set(&d, "stanford_mm", DH_CONV_STANDARD, 6, stanford_j);
+    random_run(&d, &d, DH_IKC_WRIST_RRP, DHT_ITER(10000));
+}
+
+/* the Puma 560 as an MDH table: joint i takes the SDH a/alpha of joint i-1;
+ * joint 0 gets a = 50, alpha = 30 (a non-trivial first link, pre frame) */
+static void mdh_random(void)
+{
+    dhs_robot d, f;
+    unsigned i;
+    puma(&f);
+    d = f;
+    d.name = "puma560_mdh_mm";
+    d.conv = DH_CONV_MODIFIED;
+    for (i = 5; i >= 1; i--) {
+        d.j[i].a = f.j[i - 1].a;
+        d.j[i].alpha_deg = f.j[i - 1].alpha_deg;
+    }
+    d.j[0].a = 50.0 * LS;
+    d.j[0].alpha_deg = 30.0;
+    random_run(&d, &f, DH_IKC_WRIST_RRR, DHT_ITER(3000));
+}
+
+static void base_tool_random(void)
+{
+    dhs_robot d, f;
+    dhs_mat4_d A, B;
+    puma(&f);
+    d = f;
+    d.name = "puma560_base_tool_mm";
+    dhs_rotz(&A, 30.0);
+    dhs_trans(&B, 100.0 * LS, -50.0 * LS, 200.0 * LS);
+    dhs_mul(&d.base, &A, &B);
+    dhs_rotx(&A, 10.0);
+    B = d.base;
+    dhs_mul(&d.base, &B, &A);
+    dhs_trans(&A, 10.0 * LS, 20.0 * LS, 80.0 * LS);
+    dhs_rotx(&B, 20.0);
+    dhs_mul(&d.tool, &A, &B);
+    random_run(&d, &f, DH_IKC_WRIST_RRR, DHT_ITER(3000));
+    /* the same with the KR5 (alpha6 = 180, a tool along z) */
+    desc_set(&d, "kr5_base_tool_mm", DH_CONV_STANDARD, 6, kr5_j);
+    dhs_rotz(&A, -45.0);
+    dhs_trans(&B, 0.0, 300.0 * LS, 0.0);
+    dhs_mul(&d.base, &A, &B);
+    dhs_trans(&d.tool, 0.0, 0.0, 115.0 * LS);
+    desc_set(&f, "kr5_mm", DH_CONV_STANDARD, 6, kr5_j);
+    random_run(&d, &f, DH_IKC_WRIST_RRR, DHT_ITER(3000));
+}
+
+/* ---- singular cases ------------------------------------------------------- */
+
+static void solve_q(const dh_robot *r, const dh_ikc_model_q *m, const int32_t *qq, const int32_t *qref, uint32_t opts,
+                    dh_ikc_sol_q *sol, uint32_t *ns, dhs_mat4_d *Td)
+{
+    dh_frame_q T;
+    dhs_fk_ref_q(r, qq, NULL, Td);
+    to_frame(Td, &T);
+    DHT_EQ_INT(dh_ikc_q(m, &T, qref, opts, sol, ns), DH_OK);
+    (void)check_sols(r, Td, sol, *ns, NULL, NULL);
+}
+
+static void singular_wrist(void)
+{
+    dhs_robot P;
+    dh_robot r;
+    dh_ikc_model_q m;
+    long it;
+    long tested = 0;
+    puma(&P);
+    build(&P, &r, &m, DH_IKC_WRIST_RRR);
+    for (it = 0; it < DHT_ITER(500); it++) {
+        double q[6];
+        int32_t qq[6];
+        dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+        uint32_t ns, s, hits = 0;
+        dhs_mat4_d Td;
+        dhs_random_q(&P, q);
+        /* a well-conditioned arm (elbow far from stretched and folded,
+         * shoulder bent): its angles come out within a few LSB, so the
+         * wrist sees less than the 2^-19 of its singular test */
+        q[1] = dht_rand_uniform(-60.0, 60.0);
+        q[2] = dht_rand_uniform(-40.0, 40.0);
+        q[4] = 30.0;
+        if (!away_u(&P, q, 200.0)) continue;
+        tested++;
+        q[4] = 0.0;
+        dhs_q_from_double(&r, q, qq);
+        solve_q(&r, &m, qq, qq, 0u, sol, &ns, &Td);
+        DHT_TRUE(ns >= 1u && ns <= 7u);
+        for (s = 0; s < ns; s++) {
+            /* the generating arm branch is singular (the others are not, in general) */
+            if (jdiff(&r, 0, sol[s].q[0], qq[0]) > COMP_DEG || jdiff(&r, 1, sol[s].q[1], qq[1]) > COMP_DEG ||
+                jdiff(&r, 2, sol[s].q[2], qq[2]) > COMP_DEG)
+                continue;
+            hits++;
+            DHT_TRUE((sol[s].flags & DH_IKC_SING_WRIST) != 0u);
+            DHT_TRUE((sol[s].flags & DH_IKC_WRIST_ALT) == 0u);
+            /* joint 4 keeps the reference's value */
+            DHT_TRUE(jdiff(&r, 3, sol[s].q[3], qq[3]) == 0.0);
+        }
+        DHT_EQ_INT(hits, 1);
+    }
+    DHT_TRUE(tested >= DHT_ITER(500) / 4);
+}
+
+static void singular_elbow(void)
+{
+    dhs_robot P;
+    dh_robot r;
+    dh_ikc_model_q m;
+    puma(&P);
+    /* stretched: t3 = phi = atan2(s_alpha3 d4, a3) */
+    const double phi = atan2(-431.8, 20.3) * 180.0 / PI_D;
+    double q[6] = {20.0, -30.0, 0.0, 40.0, 50.0, -60.0};
+    int32_t qq[6];
+    dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+    uint32_t ns, s;
+    dhs_mat4_d Td;
+    q[2] = phi;
+    build(&P, &r, &m, DH_IKC_WRIST_RRR);
+    dhs_q_from_double(&r, q, qq);
+    solve_q(&r, &m, qq, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns, &Td);
+    DHT_EQ_INT(ns, 4);
+    for (s = 0; s < ns; s++) {
+        DHT_TRUE((sol[s].flags & DH_IKC_SING_ELBOW) != 0u);
+        DHT_TRUE((sol[s].flags & DH_IKC_ELBOW_ALT) == 0u);
+    }
+    DHT_TRUE(check_sols(&r, &Td, sol, ns, qq, NULL) >= 0);
+}
+
+/* a Puma with d3 = 0 (h = 0): the wrist centre on axis 1 */
+static void singular_shoulder(void)
+{
+    dhs_robot P, d;
+    dh_robot r;
+    dh_ikc_model_q m;
+    const double t3 = 30.0 * PI_D / 180.0, a2 = 431.8, a3 = 20.3, e = -431.8;
+    const double A = a2 + a3 * cos(t3) + e * sin(t3), B = a3 * sin(t3) - e * cos(t3);
+    double q[6] = {0.0, 0.0, 30.0, 10.0, 40.0, 20.0};
+    int32_t qq[6], qref[6] = {0, 0, 0, 0, 0, 0};
+    dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+    uint32_t ns, s;
+    dhs_mat4_d Td;
+    puma(&P);
+    d = P;
+    d.j[2].d = 0.0;
+    build(&d, &r, &m, DH_IKC_WRIST_RRR);
+    q[1] = atan2(A, B) * 180.0 / PI_D;
+    q[0] = 25.0;
+    dhs_q_from_double(&r, q, qq);
+    qref[0] = qq[0] + 3 * 65536; /* joint 1 comes from the reference */
+    solve_q(&r, &m, qq, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns, &Td);
+    DHT_TRUE(ns >= 1u && ns <= 4u);
+    for (s = 0; s < ns; s++) {
+        DHT_TRUE((sol[s].flags & DH_IKC_SING_SHOULDER) != 0u);
+        DHT_TRUE((sol[s].flags & DH_IKC_SHOULDER_ALT) == 0u);
+        DHT_EQ_INT(sol[s].q[0], qref[0]);
+    }
+}
+
+/* ---- limits --------------------------------------------------------------- */
+
+static void limits_shift(void)
+{
+    dhs_robot P;
+    dh_robot r;
+    dh_ikc_model_q m;
+    double q[6] = {10.0, -20.0, 30.0, 200.0, 40.0, -250.0};
+    int32_t qq[6], qref[6];
+    dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+    uint32_t ns, idx;
+    dhs_mat4_d Td;
+    int f;
+    puma(&P);
+    build(&P, &r, &m, DH_IKC_WRIST_RRR);
+    dhs_q_from_double(&r, q, qq);
+    /* q_ref = the configuration: joints 4 and 6 shifted to 200 and -250 */
+    memcpy(qref, qq, sizeof qref);
+    solve_q(&r, &m, qq, qref, 0u, sol, &ns, &Td);
+    f = check_sols(&r, &Td, sol, ns, qq, NULL);
+    DHT_TRUE(f >= 0);
+    DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) - 200.0) < COMP_DEG);
+    DHT_TRUE(fabs(ldexp((double)sol[f].q[5], -16) + 250.0) < COMP_DEG);
+    DHT_EQ_INT(dh_ikc_nearest_q(sol, ns, qref, 6, &idx), DH_OK);
+    DHT_EQ_INT(idx, f);
+    /* q_ref zero: the values nearest 0, -160 and 110 */
+    solve_q(&r, &m, qq, NULL, 0u, sol, &ns, &Td);
+    f = check_sols(&r, &Td, sol, ns, qq, NULL);
+    DHT_TRUE(f >= 0);
+    DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) + 160.0) < COMP_DEG);
+    DHT_TRUE(fabs(ldexp((double)sol[f].q[5], -16) - 110.0) < COMP_DEG);
+    /* wide limits (more than three turns): joint 4 shifted next to q_ref = 1000 */
+    DHT_EQ_INT(dh_robot_set_limits_q(&r, 3, -2000 * 65536, 2000 * 65536), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_q(&r, &m), DH_OK);
+    qref[3] = 1000 * 65536;
+    solve_q(&r, &m, qq, qref, 0u, sol, &ns, &Td);
+    f = check_sols(&r, &Td, sol, ns, qq, NULL);
+    DHT_TRUE(f >= 0);
+    DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) - 920.0) < COMP_DEG);
+    qref[3] = -2000 * 65536;
+    solve_q(&r, &m, qq, qref, 0u, sol, &ns, &Td);
+    f = check_sols(&r, &Td, sol, ns, qq, NULL);
+    DHT_TRUE(f >= 0);
+    DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) + 1960.0) < COMP_DEG);
+}
+
+static void limits_drop_keep(void)
+{
+    dhs_robot P, d, dn;
+    dh_robot r, rn;
+    dh_ikc_model_q m, mn;
+    double q[6] = {90.0, -20.0, 30.0, 20.0, 40.0, -50.0};
+    int32_t qq[6];
+    dh_ikc_sol_q sol[DH_IKC_MAX_SOL], all[DH_IKC_MAX_SOL];
+    uint32_t ns, na, s, i;
+    dhs_mat4_d Td;
+    dh_frame_q T;
+    unsigned j;
+    puma(&P);
+    d = P;
+    dn = P;
+    d.j[0].qmin = 0.0;
+    d.j[0].qmax = 1.0;
+    for (j = 0; j < 6; j++) dn.j[j].qmin = 1.0, dn.j[j].qmax = -1.0; /* no limits */
+    build(&d, &r, &m, DH_IKC_WRIST_RRR);
+    build(&dn, &rn, &mn, DH_IKC_WRIST_RRR);
+    dhs_q_from_double(&rn, q, qq);
+    dhs_fk_ref_q(&rn, qq, NULL, &Td);
+    to_frame(&Td, &T);
+    DHT_EQ_INT(dh_ikc_q(&mn, &T, NULL, 0u, all, &na), DH_OK);
+    DHT_EQ_INT(na, 8);
+    (void)check_sols(&rn, &Td, all, na, NULL, NULL);
+    for (s = 0; s < na; s++) DHT_EQ_INT(all[s].flags & DH_IKC_OUT_OF_LIMITS, 0);
+    ns = 99;
+    DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, 0u, sol, &ns), DH_ERR_LIMIT);
+    DHT_EQ_INT(ns, 0);
+    DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_OK);
+    DHT_EQ_INT(ns, 8);
+    for (s = 0; s < ns; s++) {
+        DHT_TRUE((sol[s].flags & DH_IKC_OUT_OF_LIMITS) != 0u);
+        for (i = 0; i < 6; i++) DHT_EQ_INT(sol[s].q[i], all[s].q[i]);
+    }
+    /* the Puma's own limits drop some of the eight and keep the rest */
+    build(&P, &r, &m, DH_IKC_WRIST_RRR);
+    DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, 0u, sol, &ns), DH_OK);
+    DHT_TRUE(ns >= 1u && ns < 8u);
+    for (s = 0; s < ns; s++) DHT_EQ_INT(dh_robot_check_limits_q(&r, sol[s].q), DH_OK);
+}
+
+/* ---- robots without a closed form ---------------------------------------- */
+
+static void analyse_why(const dhs_robot *d, dh_ikc_why why)
+{
+    dh_robot r;
+    dh_ikc_model_q m;
+    DHT_EQ_INT(dhs_build(d, &r), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_q(&r, &m), DH_ERR_UNAVAILABLE);
+    DHT_EQ_INT(m.kind, DH_IKC_NONE);
+    DHT_EQ_INT(m.why, why);
+}
+
+static void no_closed_form(void)
+{
+    dhs_robot P, d;
+    dh_robot r;
+    dh_ikc_model_q m;
+    dh_frame_q F;
+    static const dhs_joint_desc rrrr[4] = {
+        {DH_JOINT_REVOLUTE, 100.0, 0.0, 0.0, 0.0, 1.0, -1.0},
+        {DH_JOINT_REVOLUTE, 100.0, 0.0, 0.0, 0.0, 1.0, -1.0},
+        {DH_JOINT_REVOLUTE, 100.0, 0.0, 0.0, 0.0, 1.0, -1.0},
+        {DH_JOINT_REVOLUTE, 100.0, 0.0, 0.0, 0.0, 1.0, -1.0},
+    };
+    static const dhs_joint_desc rrpr[4] = {
+        {DH_JOINT_REVOLUTE, 100.0, 0.0, 90.0, 0.0, 1.0, -1.0},
+        {DH_JOINT_REVOLUTE, 100.0, 0.0, 90.0, 0.0, 1.0, -1.0},
+        {DH_JOINT_PRISMATIC, 0.0, 0.0, 0.0, 0.0, 1.0, -1.0},
+        {DH_JOINT_REVOLUTE, 0.0, 0.0, 0.0, 0.0, 1.0, -1.0},
+    };
+    puma(&P);
+    d = P;
+    analyse_why(&dhs_panda_mm, DH_IKC_WHY_JOINTS);       /* 7 joints */
+    d.j[4].a = 30.0 * LS;                               /* wrist axes do not meet */
+    analyse_why(&d, DH_IKC_WHY_WRIST);
+    d = P;
+    d.j[1].alpha_deg = 90.0;                            /* axes 2 and 3 not parallel */
+    analyse_why(&d, DH_IKC_WHY_AXES);
+    d = P;
+    d.j[2].type = DH_JOINT_PRISMATIC;                   /* R-R-P, but alpha2 = 0 */
+    analyse_why(&d, DH_IKC_WHY_AXES);
+    d = P;
+    d.j[0].type = DH_JOINT_PRISMATIC;                   /* P-R-R + wrist */
+    analyse_why(&d, DH_IKC_WHY_JOINTS);
+    desc_set(&d, "rrrr", DH_CONV_STANDARD, 4, rrrr);
+    analyse_why(&d, DH_IKC_WHY_JOINTS);
+    desc_set(&d, "rrpr", DH_CONV_STANDARD, 4, rrpr);
+    analyse_why(&d, DH_IKC_WHY_AXES);
+    /* fixed path not prepared: a length beyond the dh_qpos range */
+    d = P;
+    d.j[1].a = ldexp(1.0, 32 - DH_QPOS_FRAC);
+    analyse_why(&d, DH_IKC_WHY_PATH);
+    /* representable, but beyond the solver's 2^29-unit range */
+    d = P;
+    d.j[1].a = ldexp(1.0, 29 - DH_QPOS_FRAC) + LS;
+    analyse_why(&d, DH_IKC_WHY_PATH);
+    /* base not rigid (fixed path only), tool a reflection */
+    DHT_EQ_INT(dhs_build(&P, &r), DH_OK);
+    dh_frame_identity_q(&F);
+    F.r[0][0] = DH_Q30(1.01);
+    DHT_EQ_INT(dh_robot_set_base_q(&r, &F), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_q(&r, &m), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(m.kind, DH_IKC_NONE);
+    DHT_EQ_INT(m.why, DH_IKC_WHY_PATH);
+    DHT_EQ_INT(dhs_build(&P, &r), DH_OK);
+    dh_frame_identity_q(&F);
+    F.r[2][2] = -DH_Q30(1.0);
+    DHT_EQ_INT(dh_robot_set_tool_q(&r, &F), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_q(&r, &m), DH_ERR_NOT_RIGID);
+    /* bad descriptions */
+    DHT_EQ_INT(dhs_build(&P, &r), DH_OK);
+    r.n = DH_MAX_JOINTS + 1u;
+    DHT_EQ_INT(dh_ikc_analyse_q(&r, &m), DH_ERR_ARG);
+    DHT_EQ_INT(m.kind, DH_IKC_NONE);
+    DHT_EQ_INT(m.why, DH_IKC_WHY_JOINTS);
+    r.n = 6;
+    r.conv = (dh_convention)7;
+    DHT_EQ_INT(dh_ikc_analyse_q(&r, &m), DH_ERR_ARG);
+    r.conv = DH_CONV_STANDARD;
+    r.joint[3].type = (dh_joint_type)5;
+    DHT_EQ_INT(dh_ikc_analyse_q(&r, &m), DH_ERR_ARG);
+}
+
+/* ---- statuses of dh_ikc_q and dh_ikc_nearest_q ---------------------------- */
+
+static void solve_errors(void)
+{
+    dhs_robot P;
+    dh_robot r;
+    dh_ikc_model_q m, bad;
+    dh_frame_q T, X;
+    dh_ikc_sol_q sol[DH_IKC_MAX_SOL], canary[DH_IKC_MAX_SOL];
+    uint32_t ns;
+    int32_t qq[6] = {0, 0, 0, 0, 30 << 16, 0}, qref[6];
+    dhs_mat4_d Td;
+    unsigned i;
+    puma(&P);
+    build(&P, &r, &m, DH_IKC_WRIST_RRR);
+    dhs_fk_ref_q(&r, qq, NULL, &Td);
+    to_frame(&Td, &T);
+    memset(canary, 0xA5, sizeof canary);
+#define EXPECT_UNTOUCHED(call, status)                                   \
+    do {                                                                 \
+        memcpy(sol, canary, sizeof sol);                                 \
+        ns = 77;                                                         \
+        DHT_EQ_INT(call, status);                                        \
+        DHT_EQ_INT(ns, 0);                                               \
+        DHT_TRUE(memcmp(sol, canary, sizeof sol) == 0);                  \
+    } while (0)
+    EXPECT_UNTOUCHED(dh_ikc_q(&m, &T, NULL, 2u, sol, &ns), DH_ERR_ARG);
+    bad = m;
+    bad.n = 5;
+    EXPECT_UNTOUCHED(dh_ikc_q(&bad, &T, NULL, 0u, sol, &ns), DH_ERR_ARG);
+    bad = m;
+    bad.kind = (dh_ikc_kind)9;
+    EXPECT_UNTOUCHED(dh_ikc_q(&bad, &T, NULL, 0u, sol, &ns), DH_ERR_ARG);
+    bad = m;
+    bad.off[2] = 200 * 65536; /* offsets are stored in (-180, 180] */
+    EXPECT_UNTOUCHED(dh_ikc_q(&bad, &T, NULL, 0u, sol, &ns), DH_ERR_ARG);
+    bad = m;
+    bad.pre_inv.r[0][0] = INT32_MIN;
+    EXPECT_UNTOUCHED(dh_ikc_q(&bad, &T, NULL, 0u, sol, &ns), DH_ERR_ARG);
+    bad = m;
+    bad.kind = DH_IKC_NONE;
+    EXPECT_UNTOUCHED(dh_ikc_q(&bad, &T, NULL, 0u, sol, &ns), DH_ERR_UNAVAILABLE);
+    /* not rigid: scaled, sheared, reflected, INT32_MIN entries */
+    X = T;
+    X.r[0][0] += (X.r[0][0] >= 0 ? 1 : -1) * (1 << 21);
+    EXPECT_UNTOUCHED(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_NOT_RIGID);
+    X = T;
+    for (i = 0; i < 3; i++) X.r[2][i] = -X.r[2][i];
+    EXPECT_UNTOUCHED(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_NOT_RIGID);
+    X = T;
+    X.r[1][1] = INT32_MIN;
+    EXPECT_UNTOUCHED(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_NOT_RIGID);
+    /* far away: overflow (any coordinate, INT32_MIN and INT32_MAX included) */
+    for (i = 0; i < 3; i++) {
+        X = T;
+        X.p[i] = dhs_to_q(20000.0 * LS, DH_QPOS_FRAC);
+        ns = 77;
+        DHT_EQ_INT(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_OVERFLOW);
+        DHT_EQ_INT(ns, 0);
+        X.p[i] = INT32_MIN;
+        DHT_EQ_INT(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_OVERFLOW);
+        X.p[i] = INT32_MAX;
+        DHT_EQ_INT(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_OVERFLOW);
+        DHT_EQ_INT(ns, 0);
+    }
+    /* unreachable: 3000 mm away, rotation of the target */
+    X = T;
+    X.p[0] = dhs_to_q(3000.0 * LS, DH_QPOS_FRAC);
+    ns = 77;
+    DHT_EQ_INT(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_UNREACHABLE);
+    DHT_EQ_INT(ns, 0);
+    /* extreme references: INT32_MIN / INT32_MAX in every joint */
+    for (i = 0; i < 6; i++) qref[i] = (i & 1u) ? INT32_MAX : INT32_MIN;
+    DHT_EQ_INT(dh_ikc_q(&m, &T, qref, 0u, sol, &ns), DH_OK);
+    (void)check_sols(&r, &Td, sol, ns, NULL, NULL);
+    DHT_EQ_INT(dh_ikc_q(&m, &T, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_OK);
+    (void)check_sols(&r, &Td, sol, ns, NULL, NULL);
+#undef EXPECT_UNTOUCHED
+}
+
+static void nearest(void)
+{
+    dh_ikc_sol_q s[3];
+    int32_t ref[6] = {INT32_MIN, INT32_MIN, INT32_MIN, INT32_MIN, INT32_MIN, INT32_MIN};
+    uint32_t idx = 42;
+    unsigned i;
+    memset(s, 0, sizeof s);
+    for (i = 0; i < 6; i++) {
+        s[0].q[i] = INT32_MAX;
+        s[1].q[i] = INT32_MAX - 1;
+        s[2].q[i] = INT32_MAX - 1;
+    }
+    DHT_EQ_INT(dh_ikc_nearest_q(s, 0, ref, 6, &idx), DH_ERR_ARG);
+    DHT_EQ_INT(idx, 42);
+    DHT_EQ_INT(dh_ikc_nearest_q(s, 3, ref, 7, &idx), DH_ERR_ARG);
+    DHT_EQ_INT(idx, 42);
+    /* sums of 6 x (2^32 - 1) do not wrap; ties give the first */
+    DHT_EQ_INT(dh_ikc_nearest_q(s, 3, ref, 6, &idx), DH_OK);
+    DHT_EQ_INT(idx, 1);
+    s[0].q[0] = 5;
+    DHT_EQ_INT(dh_ikc_nearest_q(s, 3, NULL, 1, &idx), DH_OK);
+    DHT_EQ_INT(idx, 0);
+    DHT_EQ_INT(dh_ikc_nearest_q(s, 3, ref, 0, &idx), DH_OK);
+    DHT_EQ_INT(idx, 0);
+}
+
+static const dht_case cases[] = {
+    DHT_CASE(puma_random),
+    DHT_CASE(kr5_random),
+    DHT_CASE(irb140_random),
+    DHT_CASE(stanford_random),
+    DHT_CASE(test_tables_random),
+    DHT_CASE(mdh_random),
+    DHT_CASE(base_tool_random),
+    DHT_CASE(singular_wrist),
+    DHT_CASE(singular_elbow),
+    DHT_CASE(singular_shoulder),
+    DHT_CASE(limits_shift),
+    DHT_CASE(limits_drop_keep),
+    DHT_CASE(no_closed_form),
+    DHT_CASE(solve_errors),
+    DHT_CASE(nearest),
+};
+DHT_MAIN(cases)
