@@ -305,7 +305,7 @@ static DH_NOINLINE int ikc_to_joints(const dh_ikc_model_f32 *m, const float *q_r
 dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const float *q_ref, uint32_t opts,
                      dh_ikc_sol_f32 *sol, uint32_t *n_sol)
 {
-    uint32_t raw = 0, i, j, out = 0;
+    uint32_t raw = 0, i, j, out = 0, finite = 0;
     dh_status st;
     DH_ASSERT(m != NULL);
     DH_ASSERT(target != NULL);
@@ -323,7 +323,12 @@ dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const
     if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;
     if (raw == 0u) return DH_ERR_UNREACHABLE;
     for (i = 0; i < raw; i++) {
-        const int in = ikc_to_joints(m, q_ref, sol[i].q);
+        int in;
+        /* a target far beyond the reach can overflow the squares of the
+         * position solution: such a branch is no solution */
+        if (!dh_allfinite_f32(sol[i].q, m->n)) continue;
+        finite++;
+        in = ikc_to_joints(m, q_ref, sol[i].q);
         if (!in) {
             if ((opts & DH_IKC_KEEP_OUT_OF_LIMITS) == 0u) continue;
             sol[i].flags |= DH_IKC_OUT_OF_LIMITS;
@@ -336,6 +341,7 @@ dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const
     }
     for (i = out; i < raw; i++) sol[i].flags = 0u;
     *n_sol = out;
+    if (finite == 0u) return DH_ERR_UNREACHABLE;
     return (out == 0u) ? DH_ERR_LIMIT : DH_OK;
 }
 

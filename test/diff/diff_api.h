@@ -61,6 +61,10 @@ typedef struct {
     float J[6 * DH_MAX_JOINTS];
     dh_mat4_f32 Mf[DH_MAX_JOINTS];
     dh_frame_q Ff[DH_MAX_JOINTS];
+    dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+    dh_ikc_sol_q solq[DH_IKC_MAX_SOL];
+    dh_ikc_model_f32 mf;
+    dh_ikc_model_q mq;
     /* DIFF_OUT_FRAMES */
     dh_robot rob;
 } diff_out;
@@ -184,7 +188,14 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_rot_error_f32, g_rot, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_pose_error_f32, g_check, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_ik_params_default, g_robot, 1000000, DIFF_OUT_SMALL, C_BITS) \
-    X(dh_ik_f32, g_ik, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS)
+    X(dh_ik_f32, g_ik, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_ikc_analyse_f32, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_ikc_analyse_q, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_ikc_why_str, g_status, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_ikc_f32, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_ikc_q, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_ikc_nearest_f32, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_ikc_nearest_q, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS)
 
 /* enum of the table rows */
 #define DIFF_ENUM(name, gen, count, len, cmp) E_##name,
