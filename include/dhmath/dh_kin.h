@@ -248,6 +248,69 @@ void dh_ik_params_default(const dh_robot *r, dh_ik_params *p);
 dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q0, const dh_ik_params *p,
                     float *work, size_t work_len, float *q, dh_ik_result *res);
 
+/** DH_ROT_ERROR_TOL in Q2.30 for the fixed-point functions (1e-3 * 2^30). */
+#define DH_ROT_ERROR_TOL_Q 1073742
+
+/** Fixed-point IK parameters; fill with dh_ik_params_default_q() and adjust. */
+typedef struct {
+    uint32_t max_iter;   /**< bound on the trial steps (FK + Jacobian after the first), >= 1 */
+    uint32_t mask;       /**< DH_IK_* bits to drive to 0 (non-zero, within DH_IK_FULL) */
+    int32_t tol_pos;     /**< position tolerance, dh_qpos, >= 0, on the masked position norm */
+    int32_t tol_rot;     /**< orientation tolerance, Q2.30 rad, >= 0, on the masked rotation-vector norm */
+    int32_t w_rot;       /**< weight of orientation vs position, dh_qpos per rad, > 0; at most L counts */
+    uint32_t restarts;   /**< restarts from deterministic pseudo-random configurations, within max_iter */
+} dh_ik_params_q;
+
+/** Fixed-point IK outcome (for the returned configuration). */
+typedef struct {
+    uint32_t iterations; /**< trial steps taken (each one FK + Jacobian) */
+    int32_t err_pos;     /**< masked position error norm, dh_qpos (saturated at INT32_MAX) */
+    int32_t err_rot;     /**< masked orientation error norm, Q2.30 rad (saturated at INT32_MAX, 2 rad) */
+} dh_ik_result_q;
+
+/** Workspace int32 words needed by dh_ik_q for n joints: n^2 + 24 n + 48
+ *  (228 for n = 6, 265 for n = 7): both Jacobians, the equilibrated
+ *  normal matrix and its factor, the frame and the solver state. */
+#define DH_IK_WORK_Q(n) ((n) * (n) + 24u * (n) + 48u)
+
+/**
+ * @brief Fixed-point defaults for robot r (integer only): max_iter 2000,
+ * mask DH_IK_FULL, tol_pos L / 2^20 (at least 1 LSB), tol_rot 10737 (1e-5
+ * rad), w_rot L / 4, restarts 200, where L = sum of |a_q|, |d_q|,
+ * prismatic travel (limited joints) and |tool_q p| in dh_qpos (one length
+ * unit if that is 0; saturated at INT32_MAX). Reads only r's fixed fields.
+ */
+void dh_ik_params_default_q(const dh_robot *r, dh_ik_params_q *p);
+
+/**
+ * @brief Numerical IK in fixed point (integer only: no float, libm or
+ * 64-bit division): dh_ik_f32's method (Levenberg-Marquardt with Sugihara
+ * 2011's damping, joint limits in the iteration, stall restarts, best
+ * attempt returned, deterministic) on the fixed chain of dh_jacobian_q.
+ * E = 1/2 (|e_pos|^2 + w^2 |e_rot|^2), w = min(w_rot, L), e_pos = target p
+ * - FK p (dh_qpos), e_rot = a(R_target R^T) (rad). q in dh_q16 deg (R) or
+ * dh_qpos (P), within the fixed limits (q0 clamped first). The errors are
+ * those of dh_fk_q: add its error (docs/accuracy_fk.md) for the true one.
+ * @param r      robot (fixed path), 1..DH_MAX_JOINTS joints.
+ * @param target end frame; rotation (read only when the mask drives it)
+ *               within DH_ROT_ERROR_TOL_Q of orthonormal, det > 0.
+ * @param q0,p   start (n values); parameters.
+ * @param work,work_len >= DH_IK_WORK_Q(n) words, overlapping nothing; clobbered.
+ * @param q,res  result (may alias q0); iterations and errors of q.
+ * @return for the returned q (res describes it): DH_OK both tolerances met;
+ *   DH_ERR_NO_CONVERGENCE max_iter cut off an attempt still progressing;
+ *   DH_ERR_UNREACHABLE stalled above tolerance, or the target beyond the
+ *   reach bound (dh_ik_f32's, in dh_qpos). With q, res untouched:
+ *   DH_ERR_ARG (n, work NULL or work_len too small, max_iter 0, mask,
+ *   tolerance < 0, w_rot <= 0, convention or joint type);
+ *   DH_ERR_UNAVAILABLE (no fixed path); DH_ERR_NOT_RIGID (driven target
+ *   rotation, or the start's end rotation, not one); DH_ERR_OVERFLOW (FK
+ *   or Jacobian of the start saturated). Trial points that saturate are
+ *   rejected (never wrapped). Never DH_ERR_SINGULAR.
+ */
+dh_status dh_ik_q(const dh_robot *r, const dh_frame_q *target, const int32_t *q0, const dh_ik_params_q *p,
+                  int32_t *work, size_t work_len, int32_t *q, dh_ik_result_q *res);
+
 #ifdef __cplusplus
 }
 #endif

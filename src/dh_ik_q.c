@@ -1,0 +1,845 @@
+/*
+ * dh_ik_q.c - numerical inverse kinematics in fixed point (integer only:
+ * no float, no libm, no 64-bit division). The method of dh_ik.c
+ * (Levenberg-Marquardt with the damping of Sugihara 2011, projected on the
+ * joint box, deterministic restarts) on the fixed chain of dh_jacobian_q.
+ *
+ * Scales. Every length (Jacobian linear rows, position error, w_rot times
+ * the angular rows and the rotation error) is in dh_qpos shifted right by
+ * sp, the smallest shift that brings 2 L and w below 2^28, so that the
+ * weighted Jacobian B (6 x n) has entries below 2^29 and the weighted
+ * error es (clamped to 2^30) keeps every sum of products of the normal
+ * equations H = B^T B + Lambda, g = B^T es in int64. Revolute columns are
+ * per radian, prismatic ones per L (as dh_ik.c).
+ *
+ * Solve. H is equilibrated by powers of two, H' = D H D with D = diag(2^-c_j)
+ * chosen so that H'_jj is in [1/4, 1) (Q2.30): then every |H'_jk| <= 1
+ * (Cauchy-Schwarz), and the Cholesky factor of H' is bounded by 1 as well.
+ * The factor is computed with one reciprocal square root per pivot (Newton,
+ * dh_q_rsqrt29: no division); a pivot below 2^-20 is raised to it (the
+ * modified Cholesky factorisation of Gill, Murray and Wright 1981, as the
+ * float LDL^T). g' = D g, normalised to 20 bits, and the two triangular
+ * solves in Q2.30 with saturation checks: a solve that overflows is
+ * retried with more damping, as an overflowing float solve.
+ *
+ * Damping: mu = 2^m, m in [-10, 40], times 4 after a rejected step and
+ * halved after an accepted one (dh_ik.c: 3 and 1/2).
+ *
+ * Stack: the vectors, matrices, the frame and the int64 state live in the
+ * caller's workspace (int64 as two words); the blocks below are noinline
+ * and called one after the other from dh_ik_q.
+ */
+#include "dhmath/dh_kin.h"
+#include "dhmath/dh_fixed.h"
+#include "dhmath/dh_trig.h"
+#include "dh_kin_impl.h"
+#include "dh_internal.h"
+
+#define IKQ_POLISH_STEPS 1u     /* refinement steps after the tolerance is met */
+#define IKQ_STALL_STEPS 4u      /* steps in a row with less than 1% progress: stalled */
+#define IKQ_MU_MAX 40           /* mu = 2^m */
+#define IKQ_MU_MIN (-10)
+#define IKQ_MU_UP 2             /* mu times 4 after a rejected step */
+#define IKQ_GBITS 20            /* bits of the normalised right-hand side */
+#define IKQ_GBITS_DROP 8        /* fewer bits when the solve overflows (twice at most) */
+#define IKQ_DMIN60 ((int64_t)1 << 40)   /* pivot floor, 2^-20 in Q60 */
+#define IKQ_HOPELESS_RESTARTS 3u
+#define IKQ_ES_MAX ((int64_t)1 << 30)   /* clamp of the scaled error */
+#define IKQ_LAMBDA_MAX ((int64_t)1 << 61)
+/* 180 / pi * 2^25 and pi / 180 * 2^36 */
+#define IKQ_R2D25 1922527338
+#define IKQ_D2R36 1199381129
+/* 1/6 and 3/40 in Q2.30 */
+#define IKQ_SIXTH30 178956971
+#define IKQ_3_40_30 80530637
+
+/* Workspace layout (int32 words), n joints; slot s = 0, 1 (current / trial). */
+#define OFF_J(n, s) ((s) * 6u * (n))                 /* 6n each: Jacobian, then B */
+#define OFF_E(n, s) (12u * (n) + 6u * (s))           /* 6 each: scaled weighted error */
+#define OFF_Q(n, s) (12u * (n) + 12u + (s) * (n))    /* n each: joint values */
+#define OFF_QBEST(n) (14u * (n) + 12u)               /* n: best configuration */
+#define OFF_DQ(n) (15u * (n) + 12u)                  /* n: step in joint units */
+#define OFF_C(n) (16u * (n) + 12u)                   /* n: column exponents c_j */
+#define OFF_Y(n) (17u * (n) + 12u)                   /* n: right-hand side, then solution */
+#define OFF_IY(n) (18u * (n) + 12u)                  /* n: 1/sqrt(pivot) mantissa, Q3.29 */
+#define OFF_IK(n) (19u * (n) + 12u)                  /* n: its shift */
+#define OFF_F(n) (20u * (n) + 12u)                   /* 12: frame of the evaluation */
+#define OFF_S(n) (20u * (n) + 24u)                   /* IKQ_S_COUNT scalars */
+#define OFF_D64(n) (20u * (n) + 48u)                 /* 2n: diagonal of H, int64 */
+#define OFF_G64(n) (22u * (n) + 48u)                 /* 2n: g, int64 */
+#define OFF_H(n) (24u * (n) + 48u)                   /* n*n: H', then its factor */
+
+/* Scalar state slots (workspace words); int64 values take two. */
+enum {
+    S_E = 0, S_TE = 2, S_BE = 4, S_WBAR = 6, /* int64: E current, trial, best; damping bias */
+    S_EP = 8, S_ER, S_TEP, S_TER, S_BEP, S_BER,
+    S_MU, S_SP, S_L, S_W,
+    IKQ_S_COUNT
+};
+
+enum { K_NONE = 0, K_CONV, K_STALL, K_CUT };
+enum { M_FIRST = 0, M_TRIAL, M_RESTART };
+enum { EV_OK = 0, EV_FK, EV_RIGID };
+enum { A_STEP = 0, A_OVER, A_RETRY, A_BREAK, A_FAIL };
+
+typedef struct {
+    const dh_robot *r;
+    const dh_frame_q *target;
+    const dh_ik_params_q *p;
+    const int32_t *q0;
+    int32_t *w;
+    uint32_t n;
+    uint32_t iter, stall, polish, restarts, rng;
+    uint8_t cs, mode, conv, end, best_kind, hopeless;
+} ikq_ctx;
+
+/* ---- small helpers ------------------------------------------------------- */
+
+static int64_t ikq_get64(const int32_t *w, uint32_t k)
+{
+    const uint64_t u = ((uint64_t)(uint32_t)w[k + 1u] << 32) | (uint32_t)w[k];
+    return (int64_t)u;
+}
+
+static void ikq_put64(int32_t *w, uint32_t k, int64_t v)
+{
+    const uint64_t u = (uint64_t)v;
+    w[k] = (int32_t)(uint32_t)u;
+    w[k + 1u] = (int32_t)(uint32_t)(u >> 32);
+}
+
+static uint64_t ikq_abs64(int64_t v) { return v < 0 ? 0u - (uint64_t)v : (uint64_t)v; }
+
+/* round(x 2^-s) for any shift s (left shifts only where the result fits) */
+static int64_t ikq_shift(int64_t x, int s)
+{
+    if (x == 0) return 0;
+    if (s > 62) return (x < 0) ? -1 : 0;
+    if (s > 0) return dh_q_rshr(x, (unsigned)s);
+    return (int64_t)((uint64_t)x << (unsigned)(-s));
+}
+
+static int32_t ikq_clamp(const dh_joint *jt, int64_t v)
+{
+    if (jt->qmin_q <= jt->qmax_q) {
+        if (v < jt->qmin_q) return jt->qmin_q;
+        if (v > jt->qmax_q) return jt->qmax_q;
+    }
+    if (v > INT32_MAX) return INT32_MAX;
+    if (v < INT32_MIN) return INT32_MIN;
+    return (int32_t)v;
+}
+
+static int ikq_rot_mode(uint32_t mask) { return (mask & (DH_IK_FULL & ~DH_IK_POSITION)) != 0u; }
+
+static uint32_t ikq_sat_add(uint32_t a, uint32_t b)
+{
+    return (a > 0x7FFFFFFFu - b) ? 0x7FFFFFFFu : a + b;
+}
+
+/* |v|, v a 3-vector of int64 differences below 2^33, saturated at INT32_MAX. */
+static uint32_t ikq_norm3(const int64_t *v, uint32_t mask)
+{
+    uint64_t s = 0u;
+    uint32_t k, h;
+    for (k = 0; k < 3u; k++) {
+        uint64_t a;
+        if ((mask & (1u << k)) == 0u) continue;
+        a = ikq_abs64(v[k]) >> 1;   /* < 2^32: the halves' squares sum below 2^66 / 4 */
+        if (a >= ((uint64_t)1 << 31)) return 0x7FFFFFFFu;
+        s += a * a;
+    }
+    h = dh_q_sqrt_u64(s);
+    return (h >= 0x40000000u) ? 0x7FFFFFFFu : 2u * h;
+}
+
+/* ---- robot scales -------------------------------------------------------- */
+
+static DH_NOINLINE uint32_t ikq_length(const dh_robot *r)
+{
+    uint32_t L = 0u, i;
+    int64_t t[3];
+    for (i = 0; i < r->n && i < (uint32_t)DH_MAX_JOINTS; i++) {
+        const dh_joint *jt = &r->joint[i];
+        L = ikq_sat_add(L, dh_q_abs_u32(jt->a_q));
+        L = ikq_sat_add(L, dh_q_abs_u32(jt->d_q));
+        if (jt->type == DH_JOINT_PRISMATIC && jt->qmin_q <= jt->qmax_q) {
+            const uint32_t lo = dh_q_abs_u32(jt->qmin_q), hi = dh_q_abs_u32(jt->qmax_q);
+            L = ikq_sat_add(L, lo > hi ? lo : hi);
+        }
+    }
+    for (i = 0; i < 3u; i++) t[i] = r->tool_q.p[i];
+    L = ikq_sat_add(L, ikq_norm3(t, 7u));
+    return (L == 0u) ? (uint32_t)DH_QPOS_ONE : L;
+}
+
+void dh_ik_params_default_q(const dh_robot *r, dh_ik_params_q *p)
+{
+    uint32_t L;
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(p != NULL);
+    L = ikq_length(r);
+    p->max_iter = 2000u;
+    p->mask = DH_IK_FULL;
+    p->tol_pos = (int32_t)((L >> 20) > 0u ? (L >> 20) : 1u);
+    p->tol_rot = 10737;
+    p->w_rot = (int32_t)((L >> 2) > 0u ? (L >> 2) : 1u);
+    p->restarts = 200u;
+}
+
+/* 1 when the columns c0, c1, c2 (Q2.30) form a rotation within
+ * DH_ROT_ERROR_TOL_Q with det > 0. */
+static DH_NOINLINE int ikq_rot_ok(const dh_frame_q *F)
+{
+    int32_t x[3];
+    int64_t det = 0;
+    uint32_t k;
+    int ovf = 0;
+    if (dh_frame_ortho_error_q(F) > DH_ROT_ERROR_TOL_Q) return 0;
+    for (k = 0; k < 3u; k++) {
+        const uint32_t a = (k + 1u) % 3u, b = (k + 2u) % 3u;
+        x[k] = dh_q_rnd30(dh_q_mul64(F->r[1][a], F->r[2][b]) - dh_q_mul64(F->r[1][b], F->r[2][a]), &ovf);
+    }
+    for (k = 0; k < 3u; k++) det = dh_q_mla64(det, F->r[0][k], x[k]);
+    return det > 0;
+}
+
+static DH_NOINLINE dh_status ikq_args(const ikq_ctx *c, size_t work_len)
+{
+    const dh_robot *r = c->r;
+    const dh_ik_params_q *p = c->p;
+    uint32_t i, n = r->n;
+    if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    if (c->w == NULL || work_len < (size_t)DH_IK_WORK_Q(n)) return DH_ERR_ARG;
+    if (p->max_iter == 0u || p->mask == 0u || (p->mask & ~(uint32_t)DH_IK_FULL) != 0u) return DH_ERR_ARG;
+    if (p->tol_pos < 0 || p->tol_rot < 0 || p->w_rot <= 0) return DH_ERR_ARG;
+    if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_UNAVAILABLE;
+    if (r->conv != DH_CONV_STANDARD && r->conv != DH_CONV_MODIFIED) return DH_ERR_ARG;
+    for (i = 0; i < n; i++)
+        if (r->joint[i].type != DH_JOINT_REVOLUTE && r->joint[i].type != DH_JOINT_PRISMATIC) return DH_ERR_ARG;
+    if (ikq_rot_mode(p->mask) && !ikq_rot_ok(c->target)) return DH_ERR_NOT_RIGID;
+    return DH_OK;
+}
+
+/* L, the shift sp, w = min(w_rot, L) and the damping bias into the state. */
+static DH_NOINLINE void ikq_scales(const ikq_ctx *c)
+{
+    int32_t *S = c->w + OFF_S(c->n);
+    const uint32_t L = ikq_length(c->r);
+    const uint32_t w = ((uint32_t)c->p->w_rot < L) ? (uint32_t)c->p->w_rot : L;
+    const uint32_t big = (L > 0x3FFFFFFFu) ? 0xFFFFFFFFu : 2u * L;
+    int sp = (int)dh_q_bitlen64(big > w ? big : w) - 28;
+    uint32_t Ls;
+    if (sp < 0) sp = 0;
+    Ls = L >> (unsigned)sp;
+    S[S_L] = (int32_t)L;
+    S[S_W] = (int32_t)w;
+    S[S_SP] = sp;
+    S[S_MU] = 0;
+    ikq_put64(S, S_WBAR, (((int64_t)Ls * (int64_t)Ls) >> 23) + 1);
+}
+
+/* Upper bound of |p_end - p_base| (dh_qpos) within the limits, -1 when
+ * unbounded; ||B||_2 <= max(||B||_1, ||B||_inf). */
+static DH_NOINLINE int64_t ikq_reach(const dh_robot *r)
+{
+    int64_t R = 0, t[3];
+    uint32_t i, k, gmax = 0u;
+    for (i = 0; i < r->n; i++) {
+        const dh_joint *jt = &r->joint[i];
+        R += dh_q_abs_u32(jt->a_q);
+        if (jt->type == DH_JOINT_REVOLUTE) {
+            R += dh_q_abs_u32(jt->d_q);
+        } else {
+            int64_t lo, hi;
+            if (jt->qmin_q > jt->qmax_q) return -1;
+            lo = (int64_t)jt->qmin_q + jt->d_q;
+            hi = (int64_t)jt->qmax_q + jt->d_q;
+            lo = lo < 0 ? -lo : lo;
+            hi = hi < 0 ? -hi : hi;
+            R += (lo > hi) ? lo : hi;
+        }
+    }
+    for (i = 0; i < 3u; i++) t[i] = r->tool_q.p[i];
+    R += ikq_norm3(t, 7u);
+    for (i = 0; i < 3u; i++) {
+        uint32_t rs = 0u, cs = 0u;
+        for (k = 0; k < 3u; k++) {
+            rs += dh_q_abs_u32(r->base_q.r[k][i]) >> 2;
+            cs += dh_q_abs_u32(r->base_q.r[i][k]) >> 2;
+        }
+        if (rs > gmax) gmax = rs;
+        if (cs > gmax) gmax = cs;
+    }
+    /* R < 2^37, gmax < 2^31 (Q2.28): R gmax / 2^28 plus 1e-4 R */
+    R = (int64_t)(((uint64_t)R * gmax) >> 28) + (R >> 13) + 1;
+    return R;
+}
+
+static DH_NOINLINE int ikq_hopeless(const ikq_ctx *c, int64_t R)
+{
+    int64_t v[3];
+    uint32_t k;
+    if (R < 0) return 0;
+    for (k = 0; k < 3u; k++) v[k] = (int64_t)c->target->p[k] - c->r->base_q.p[k];
+    return (int64_t)ikq_norm3(v, c->p->mask) > R + c->p->tol_pos;
+}
+
+static DH_NOINLINE void ikq_init(ikq_ctx *c)
+{
+    uint32_t i;
+    c->n = c->r->n;
+    c->iter = 0u;
+    c->stall = 0u;
+    c->polish = 0u;
+    c->rng = 0x2545F491u;
+    c->cs = 0u;
+    c->mode = (uint8_t)M_FIRST;
+    c->conv = 0u;
+    c->end = 0u;
+    c->best_kind = K_NONE;
+    c->hopeless = 0u;
+    c->restarts = c->p->restarts;
+    for (i = 0; i < c->n; i++) c->w[OFF_Q(c->n, 1u) + i] = ikq_clamp(&c->r->joint[i], c->q0[i]);
+}
+
+/* ---- orientation error ---------------------------------------------------- */
+
+/* w = theta v / |v| (w Q3.29, theta Q3.29, v Q2.30 not 0). */
+static void ikq_dirscale(const int32_t *v, int32_t theta, int32_t *w)
+{
+    uint64_t n2 = 0u;
+    int32_t m, y;
+    int t;
+    uint32_t k;
+    for (k = 0; k < 3u; k++) n2 += (uint64_t)dh_q_mul64(v[k], v[k]);
+    dh_q_norm_even(n2, &m, &t);
+    y = dh_q_rsqrt29(m);
+    for (k = 0; k < 3u; k++) {
+        const int32_t u = (int32_t)ikq_shift(dh_q_mul64(v[k], y), 14 + t / 2);   /* unit, Q2.30 */
+        w[k] = (int32_t)dh_q_rshr(dh_q_mul64(theta, u), 30u);
+    }
+}
+
+/* a(dR), dR = Rt R^T (Rt the target's rotation, R F's), into w (Q3.29):
+ * the method of dh_kin_rotvec_f32_ (docs/design.md) with the angle from
+ * dh_atan2_q and, below sin = 1/16, the series theta / sin = 1 + s^2/6 +
+ * 3 s^4/40 (error below 3e-9). */
+static DH_NOINLINE void ikq_rotvec(const dh_frame_q *Tt, const dh_frame_q *F, int32_t *w)
+{
+    int32_t d[9], uh[3], v[3], s, ch, theta;
+    dh_q16 deg = 0;
+    uint64_t s2 = 0u;
+    uint32_t i, j, m;
+    int ovf = 0;
+    for (i = 0; i < 3u; i++)
+        for (j = 0; j < 3u; j++) {
+            int64_t a = 0;
+            uint32_t k;
+            for (k = 0; k < 3u; k++) a = dh_q_mla64(a, Tt->r[k][i], F->r[k][j]);
+            d[3u * i + j] = dh_q_rnd30(a, &ovf);
+        }
+    uh[0] = (int32_t)(((int64_t)d[7] - d[5]) >> 1);
+    uh[1] = (int32_t)(((int64_t)d[2] - d[6]) >> 1);
+    uh[2] = (int32_t)(((int64_t)d[3] - d[1]) >> 1);
+    ch = (int32_t)(((int64_t)d[0] + d[4] + d[8] - DH_Q_ONE30) >> 1);
+    for (i = 0; i < 3u; i++) s2 += (uint64_t)dh_q_mul64(uh[i], uh[i]);
+    s = (int32_t)dh_q_sqrt_u64(s2);
+    if (ch >= 0 && s < ((int32_t)1 << 26)) {
+        const int32_t q2 = (int32_t)(s2 >> 30);
+        const int32_t q4 = (int32_t)(dh_q_mul64(q2, q2) >> 30);
+        const int32_t f = DH_Q_ONE30 + (int32_t)(dh_q_mul64(q2, IKQ_SIXTH30) >> 30) +
+                          (int32_t)(dh_q_mul64(q4, IKQ_3_40_30) >> 30);
+        for (i = 0; i < 3u; i++) w[i] = (int32_t)dh_q_rshr(dh_q_mul64(uh[i], f), 31u);
+        return;
+    }
+    (void)dh_atan2_q(s, ch, &deg);
+    theta = (int32_t)dh_q_rshr(dh_q_mul64(deg, IKQ_D2R36), 23u);
+    if (ch >= 0) {
+        ikq_dirscale(uh, theta, w);
+        return;
+    }
+    /* beyond 90 deg: the axis from the symmetric part (1 - c) k k^T, column
+     * of the largest diagonal entry, signed like u */
+    m = 0u;
+    if (d[4] > d[4u * m]) m = 1u;
+    if (d[8] > d[4u * m]) m = 2u;
+    for (i = 0; i < 3u; i++)
+        v[i] = (int32_t)((((int64_t)d[3u * i + m] + d[3u * m + i]) >> 1) - ((i == m) ? ch : 0));
+    if (dh_q_mul64(v[0], uh[0]) + dh_q_mul64(v[1], uh[1]) + dh_q_mul64(v[2], uh[2]) < 0)
+        for (i = 0; i < 3u; i++) v[i] = -v[i];
+    ikq_dirscale(v, theta, w);
+}
+
+/* ---- evaluation ------------------------------------------------------------ */
+
+/* Errors of the trial slot from its frame: scaled weighted error es, the
+ * masked norms and E into S_TE, S_TEP, S_TER. */
+static DH_NOINLINE void ikq_errors(const ikq_ctx *c)
+{
+    const uint32_t n = c->n, mask = c->p->mask, t = c->cs ^ 1u;
+    const dh_frame_q *F = (const dh_frame_q *)(void *)(c->w + OFF_F(n));
+    int32_t *es = c->w + OFF_E(n, t), *S = c->w + OFF_S(n);
+    const int sp = S[S_SP];
+    int64_t e[3], E = 0;
+    int32_t wr[3] = { 0, 0, 0 };
+    uint64_t r2 = 0u;
+    uint32_t k;
+    for (k = 0; k < 3u; k++) e[k] = (int64_t)c->target->p[k] - F->p[k];
+    if (ikq_rot_mode(mask)) ikq_rotvec(c->target, F, wr);
+    for (k = 0; k < 6u; k++) {
+        int64_t v = 0;
+        if ((mask & (1u << k)) != 0u) {
+            if (k < 3u) {
+                v = (sp > 0) ? dh_q_rshr(e[k], (unsigned)sp) : e[k];
+            } else {
+                v = dh_q_rshr(dh_q_mul64(wr[k - 3u], S[S_W]), 29u + (unsigned)sp);
+                r2 += (uint64_t)dh_q_mul64(wr[k - 3u], wr[k - 3u]);
+            }
+            if (v > IKQ_ES_MAX) v = IKQ_ES_MAX;
+            if (v < -IKQ_ES_MAX) v = -IKQ_ES_MAX;
+        }
+        es[k] = (int32_t)v;
+        E = dh_q_mla64(E, es[k], es[k]);
+    }
+    ikq_put64(S, S_TE, E >> 1);
+    S[S_TEP] = (int32_t)ikq_norm3(e, mask);
+    {
+        const uint32_t h = dh_q_sqrt_u64(r2);   /* Q3.29 */
+        S[S_TER] = (h >= 0x40000000u) ? INT32_MAX : (int32_t)(2u * h);
+    }
+}
+
+/* B = weighted Jacobian of the current point into the (free) trial slot. */
+static DH_NOINLINE void ikq_weigh(const ikq_ctx *c)
+{
+    const uint32_t n = c->n, mask = c->p->mask;
+    const int32_t *J = c->w + OFF_J(n, c->cs), *S = c->w + OFF_S(n);
+    int32_t *B = c->w + OFF_J(n, c->cs ^ 1u);
+    const unsigned sp = (unsigned)S[S_SP];
+    uint32_t i, k;
+    for (k = 0; k < 6u; k++)
+        for (i = 0; i < n; i++) {
+            const int32_t x = J[k * n + i];
+            int64_t v = 0;
+            if ((mask & (1u << k)) != 0u) {
+                if (c->r->joint[i].type == DH_JOINT_PRISMATIC)
+                    v = (k < 3u) ? dh_q_rshr(dh_q_mul64(x, S[S_L]), 30u + sp) : 0;
+                else if (k < 3u)
+                    v = (sp > 0u) ? dh_q_rshr(x, sp) : x;
+                else
+                    v = dh_q_rshr(dh_q_mul64(x, S[S_W]), 30u + sp);
+            }
+            B[k * n + i] = (int32_t)v;
+        }
+}
+
+/* Diagonal of H = B^T B + Lambda and g = B^T es (int64), the column
+ * exponents c_j and H' = D H D (Q2.30) over the free joints; the others get
+ * an identity row and column and g = 0. Lambda_jj = mu min(E, (B^T B)_jj)
+ * + wbar (dh_ik.c). Returns the largest bit length of D g. */
+static DH_NOINLINE int ikq_normal(const ikq_ctx *c, uint32_t free_bits)
+{
+    const uint32_t n = c->n;
+    int32_t *w = c->w;
+    const int32_t *B = w + OFF_J(n, c->cs ^ 1u), *es = w + OFF_E(n, c->cs), *S = w + OFF_S(n);
+    int32_t *C = w + OFF_C(n), *H = w + OFF_H(n);
+    const int64_t E = ikq_get64(S, S_E), wbar = ikq_get64(S, S_WBAR);
+    const int mu = S[S_MU];
+    uint32_t i, j, k;
+    int eg = -64;
+    for (j = 0; j < n; j++) {
+        int64_t h = 0, g = 0, lam;
+        C[j] = 0;
+        ikq_put64(w, OFF_G64(n) + 2u * j, 0);
+        if (((free_bits >> j) & 1u) == 0u) continue;
+        for (k = 0; k < 6u; k++) {
+            h = dh_q_mla64(h, B[k * n + j], B[k * n + j]);
+            g = dh_q_mla64(g, B[k * n + j], es[k]);
+        }
+        lam = (E < h) ? E : h;
+        if (mu >= 0) lam = ((int)dh_q_bitlen64((uint64_t)lam) + mu > 61) ? IKQ_LAMBDA_MAX : lam << mu;
+        else lam >>= -mu;
+        h += lam + wbar;
+        C[j] = ((int)dh_q_bitlen64((uint64_t)h) - 29) >> 1;
+        ikq_put64(w, OFF_G64(n) + 2u * j, g);
+        if (g != 0) {
+            const int b = (int)dh_q_bitlen64(ikq_abs64(g)) - C[j];
+            if (b > eg) eg = b;
+        }
+        H[j * n + j] = (int32_t)ikq_shift(h, 2 * C[j]);
+    }
+    for (i = 0; i < n; i++)
+        for (j = 0; j < i; j++) {
+            int64_t h = 0;
+            if ((((free_bits >> i) & (free_bits >> j)) & 1u) != 0u) {
+                for (k = 0; k < 6u; k++) h = dh_q_mla64(h, B[k * n + i], B[k * n + j]);
+                h = ikq_shift(h, C[i] + C[j]);
+            }
+            H[i * n + j] = (int32_t)h;
+        }
+    for (j = 0; j < n; j++)
+        if (((free_bits >> j) & 1u) == 0u) H[j * n + j] = DH_Q_ONE30;
+    return eg;
+}
+
+/* Y = g' = D g 2^-eg (frozen joints: g = 0). */
+static DH_NOINLINE void ikq_rhs(const ikq_ctx *c, int eg)
+{
+    const uint32_t n = c->n;
+    int32_t *Y = c->w + OFF_Y(n);
+    const int32_t *C = c->w + OFF_C(n);
+    uint32_t j;
+    for (j = 0; j < n; j++) Y[j] = (int32_t)ikq_shift(ikq_get64(c->w, OFF_G64(n) + 2u * j), C[j] + eg);
+}
+
+/* x = s30 / sqrt(pivot j), saturated: 1 when it does not fit int32. */
+static int32_t ikq_div(const int32_t *w, uint32_t n, uint32_t j, int64_t s60, int *bad)
+{
+    const int64_t s = dh_q_rshr(s60, 30u);
+    int64_t x;
+    if (s > INT32_MAX || s < -INT32_MAX) {
+        *bad = 1;
+        return 0;
+    }
+    x = dh_q_rshr(dh_q_mul64((int32_t)s, w[OFF_IY(n) + j]), (unsigned)w[OFF_IK(n) + j]);
+    if (x > INT32_MAX || x < -INT32_MAX) {
+        *bad = 1;
+        return 0;
+    }
+    return (int32_t)x;
+}
+
+/* H' = L L^T in place (lower triangle), pivots below 2^-20 raised to it;
+ * -1 when a value does not fit. */
+static DH_NOINLINE int ikq_chol(const ikq_ctx *c)
+{
+    const uint32_t n = c->n;
+    int32_t *w = c->w, *H = w + OFF_H(n);
+    uint32_t i, j, k;
+    int bad = 0;
+    for (j = 0; j < n; j++) {
+        int64_t d = (int64_t)((uint64_t)(int64_t)H[j * n + j] << 30);
+        int32_t m;
+        int t;
+        for (k = 0; k < j; k++) d -= dh_q_mul64(H[j * n + k], H[j * n + k]);
+        if (d < IKQ_DMIN60) d = IKQ_DMIN60;
+        dh_q_norm_even((uint64_t)d, &m, &t);
+        w[OFF_IY(n) + j] = dh_q_rsqrt29(m);
+        w[OFF_IK(n) + j] = 14 + t / 2;
+        for (i = j + 1u; i < n; i++) {
+            int64_t s = (int64_t)((uint64_t)(int64_t)H[i * n + j] << 30);
+            for (k = 0; k < j; k++) s -= dh_q_mul64(H[i * n + k], H[j * n + k]);
+            H[i * n + j] = ikq_div(w, n, j, s, &bad);
+        }
+    }
+    return bad ? -1 : 0;
+}
+
+/* L z = g', L^T y = z in Y; -1 when a value does not fit. */
+static DH_NOINLINE int ikq_solve(const ikq_ctx *c)
+{
+    const uint32_t n = c->n;
+    int32_t *w = c->w, *H = w + OFF_H(n), *Y = w + OFF_Y(n);
+    uint32_t i, k;
+    int bad = 0;
+    for (i = 0; i < n; i++) {
+        int64_t s = (int64_t)((uint64_t)(int64_t)Y[i] << 30);
+        for (k = 0; k < i; k++) s -= dh_q_mul64(H[i * n + k], Y[k]);
+        Y[i] = ikq_div(w, n, i, s, &bad);
+    }
+    for (i = n; i-- > 0u;) {
+        int64_t s = (int64_t)((uint64_t)(int64_t)Y[i] << 30);
+        for (k = i + 1u; k < n; k++) s -= dh_q_mul64(H[k * n + i], Y[k]);
+        Y[i] = ikq_div(w, n, i, s, &bad);
+    }
+    return bad ? -1 : 0;
+}
+
+/* Joint step from the solution: revolute Y 2^(eg - c - 30) rad in Q16.16
+ * degrees, prismatic that many L in dh_qpos; saturated. */
+static DH_NOINLINE void ikq_step(const ikq_ctx *c, int eg)
+{
+    const uint32_t n = c->n;
+    const int32_t *w = c->w, *Y = w + OFF_Y(n), *C = w + OFF_C(n);
+    int32_t *dq = c->w + OFF_DQ(n);
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        const int pr = c->r->joint[i].type == DH_JOINT_PRISMATIC;
+        const int64_t prod = dh_q_mul64(Y[i], pr ? w[OFF_S(n) + S_L] : IKQ_R2D25);
+        const int sh = (pr ? 30 : 39) + C[i] - eg;
+        int64_t v;
+        if (prod == 0) {
+            v = 0;
+        } else if (sh <= 0) {
+            v = (prod < 0) ? INT32_MIN : INT32_MAX;
+        } else {
+            v = dh_q_rshr(prod, (unsigned)(sh > 62 ? 62 : sh));
+            if (v > INT32_MAX) v = INT32_MAX;
+            if (v < INT32_MIN) v = INT32_MIN;
+        }
+        dq[i] = (int32_t)v;
+    }
+}
+
+/* Free joints on a bound whose step points outward (bits). */
+static DH_NOINLINE uint32_t ikq_freeze(const ikq_ctx *c, uint32_t free_bits)
+{
+    const uint32_t n = c->n;
+    const int32_t *qa = c->w + OFF_Q(n, c->cs), *dq = c->w + OFF_DQ(n);
+    uint32_t i, frozen = 0u;
+    for (i = 0; i < n; i++) {
+        const dh_joint *jt = &c->r->joint[i];
+        if (((free_bits >> i) & 1u) == 0u || jt->qmin_q > jt->qmax_q) continue;
+        if ((qa[i] <= jt->qmin_q && dq[i] < 0) || (qa[i] >= jt->qmax_q && dq[i] > 0)) frozen |= 1u << i;
+    }
+    return frozen;
+}
+
+static DH_NOINLINE int ikq_apply(const ikq_ctx *c, uint32_t free_bits)
+{
+    const uint32_t n = c->n;
+    const int32_t *qa = c->w + OFF_Q(n, c->cs), *dq = c->w + OFF_DQ(n);
+    int32_t *qb = c->w + OFF_Q(n, c->cs ^ 1u);
+    uint32_t i;
+    int moved = 0;
+    for (i = 0; i < n; i++) {
+        const int32_t d = ((free_bits >> i) & 1u) ? dq[i] : 0;
+        qb[i] = ikq_clamp(&c->r->joint[i], (int64_t)qa[i] + d);
+        if (qb[i] != qa[i]) moved = 1;
+    }
+    return moved;
+}
+
+static DH_NOINLINE void ikq_sample(ikq_ctx *c)
+{
+    const int32_t L = c->w[OFF_S(c->n) + S_L];
+    int32_t *qo = c->w + OFF_Q(c->n, c->cs ^ 1u);
+    uint32_t i;
+    for (i = 0; i < c->n; i++) {
+        const dh_joint *jt = &c->r->joint[i];
+        uint32_t x = c->rng;
+        int32_t u;
+        x ^= x << 13;
+        x ^= x >> 17;
+        x ^= x << 5;
+        c->rng = x;
+        u = (int32_t)(x >> 1);      /* [0, 2^31) */
+        if (jt->qmin_q <= jt->qmax_q) {
+            const uint32_t range = (uint32_t)jt->qmax_q - (uint32_t)jt->qmin_q;
+            qo[i] = ikq_clamp(jt, (int64_t)jt->qmin_q + (dh_q_mul64((int32_t)(range >> 1), u) >> 30));
+        } else if (jt->type == DH_JOINT_REVOLUTE) {
+            qo[i] = ikq_clamp(jt, (int64_t)c->q0[i] + (dh_q_mul64(u, 360 * 65536) >> 31) - 180 * 65536);
+        } else {
+            qo[i] = ikq_clamp(jt, (int64_t)c->q0[i] + (dh_q_mul64(u, L) >> 30) - L);
+        }
+    }
+    c->mode = (uint8_t)M_RESTART;
+}
+
+/* ---- acceptance (dh_ik.c) ------------------------------------------------- */
+
+static int ikq_met(const int32_t *S, const dh_ik_params_q *p)
+{
+    return S[S_EP] <= p->tol_pos && S[S_ER] <= p->tol_rot;
+}
+
+/* 0 reject, 1 accept with progress, 2 accept with less than 1% (1/128). */
+static int ikq_better(const ikq_ctx *c, const int32_t *S)
+{
+    const dh_ik_params_q *p = c->p;
+    const int64_t E = ikq_get64(S, S_E), TE = ikq_get64(S, S_TE);
+    int64_t a, b;
+    if (c->conv) return (TE < E && S[S_TEP] <= p->tol_pos && S[S_TER] <= p->tol_rot) ? 1 : 0;
+    if (TE < E) {
+        a = TE;
+        b = E;
+    } else if (S[S_ER] <= p->tol_rot && S[S_TER] <= p->tol_rot && S[S_TEP] < S[S_EP]) {
+        a = S[S_TEP];
+        b = S[S_EP];
+    } else if (S[S_EP] <= p->tol_pos && S[S_TEP] <= p->tol_pos && S[S_TER] < S[S_ER]) {
+        a = S[S_TER];
+        b = S[S_ER];
+    } else {
+        return 0;
+    }
+    return (a < b - (b >> 7)) ? 1 : 2;
+}
+
+static void ikq_take(ikq_ctx *c, int32_t *S)
+{
+    c->cs = (uint8_t)(c->cs ^ 1u);
+    ikq_put64(S, S_E, ikq_get64(S, S_TE));
+    S[S_EP] = S[S_TEP];
+    S[S_ER] = S[S_TER];
+}
+
+static DH_NOINLINE unsigned ikq_update(ikq_ctx *c, int ev)
+{
+    const dh_ik_params_q *p = c->p;
+    int32_t *S = c->w + OFF_S(c->n);
+    const int acc = (c->mode == M_TRIAL && ev == EV_OK) ? ikq_better(c, S) : 0;
+    if (c->mode == M_FIRST) {
+        if (ev != EV_OK) return A_FAIL;
+    } else {
+        c->iter++;
+    }
+    c->end = 0u;
+    if (c->mode != M_TRIAL) {
+        if (ev != EV_OK) {
+            if (c->restarts > 0u && c->iter < p->max_iter) {
+                c->restarts--;
+                return A_RETRY;
+            }
+            return A_BREAK;
+        }
+        ikq_take(c, S);
+        S[S_MU] = 0;
+        c->stall = 0u;
+        c->polish = 0u;
+        c->conv = (uint8_t)ikq_met(S, p);
+    } else if (acc != 0) {
+        c->stall = (acc == 1) ? 0u : c->stall + 1u;
+        ikq_take(c, S);
+        if (c->conv) c->polish++;
+        if (S[S_MU] > IKQ_MU_MIN) S[S_MU]--;
+        if (!c->conv && ikq_met(S, p)) {
+            c->conv = 1u;
+            S[S_MU] = IKQ_MU_MIN;
+        }
+    } else {
+        c->stall++;
+        S[S_MU] += IKQ_MU_UP;
+        if (c->conv) c->polish = IKQ_POLISH_STEPS;
+    }
+    if (c->mode == M_TRIAL && !c->conv && (c->stall >= IKQ_STALL_STEPS || S[S_MU] > IKQ_MU_MAX))
+        c->end = (uint8_t)K_STALL;
+    c->mode = (uint8_t)M_TRIAL;
+    if (c->end == 0u && !(c->conv && c->polish >= IKQ_POLISH_STEPS) && c->iter < p->max_iter) return A_STEP;
+    return A_OVER;
+}
+
+static DH_NOINLINE int ikq_damp(ikq_ctx *c)
+{
+    int32_t *mu = c->w + OFF_S(c->n) + S_MU;
+    c->stall++;
+    *mu += IKQ_MU_UP;
+    return !c->conv && c->stall < IKQ_STALL_STEPS && *mu <= IKQ_MU_MAX;
+}
+
+static DH_NOINLINE int ikq_record(ikq_ctx *c)
+{
+    int32_t *S = c->w + OFF_S(c->n);
+    const unsigned kind = c->conv ? K_CONV : (c->end != 0u ? c->end : K_CUT);
+    uint32_t i;
+    if (c->best_kind == K_NONE || (kind == K_CONV && c->best_kind != K_CONV) ||
+        ((kind == K_CONV) == (c->best_kind == K_CONV) && ikq_get64(S, S_E) < ikq_get64(S, S_BE))) {
+        c->best_kind = (uint8_t)kind;
+        ikq_put64(S, S_BE, ikq_get64(S, S_E));
+        S[S_BEP] = S[S_EP];
+        S[S_BER] = S[S_ER];
+        for (i = 0; i < c->n; i++) c->w[OFF_QBEST(c->n) + i] = c->w[OFF_Q(c->n, c->cs) + i];
+    }
+    if (c->conv || c->end == 0u || c->restarts == 0u || c->iter >= c->p->max_iter) return 1;
+    c->restarts--;
+    return 0;
+}
+
+static DH_NOINLINE dh_status ikq_finish(const ikq_ctx *c, int32_t *q, dh_ik_result_q *res)
+{
+    const int32_t *S = c->w + OFF_S(c->n);
+    uint32_t i;
+    for (i = 0; i < c->n; i++) q[i] = c->w[OFF_QBEST(c->n) + i];
+    res->iterations = c->iter;
+    res->err_pos = S[S_BEP];
+    res->err_rot = S[S_BER];
+    if (c->best_kind == K_CONV) return DH_OK;
+    if (c->hopeless || c->best_kind == K_STALL) return DH_ERR_UNREACHABLE;
+    return DH_ERR_NO_CONVERGENCE;
+}
+
+/* Evaluate the trial slot: Jacobian, frame, errors. */
+static DH_NOINLINE int ikq_eval(const ikq_ctx *c)
+{
+    const uint32_t n = c->n, t = c->cs ^ 1u;
+    dh_frame_q *F = (dh_frame_q *)(void *)(c->w + OFF_F(n));
+    if (dh_jacobian_q(c->r, c->w + OFF_Q(n, t), c->w + OFF_J(n, t), F) != DH_OK) return EV_FK;
+    if (c->mode == M_FIRST && ikq_rot_mode(c->p->mask) && !ikq_rot_ok(F)) return EV_RIGID;
+    ikq_errors(c);
+    return EV_OK;
+}
+
+/* Projected step: at most n + 1 solves; a solve that overflows is repeated
+ * with more damping. 1 when a trial point was made. */
+static DH_NOINLINE int ikq_make_step(ikq_ctx *c)
+{
+    const uint32_t n = c->n;
+    int k = 0, again = 1;
+    ikq_weigh(c);
+    while (again != 0) {
+        uint32_t free_bits = (1u << n) - 1u, pass, frozen = 1u;
+        k = 0;
+        for (pass = 0; (pass <= n) && (frozen != 0u) && (k == 0); pass++) {
+            int eg = ikq_normal(c, free_bits) - IKQ_GBITS, s = -1, tries;
+            if (ikq_chol(c) == 0)
+                for (tries = 0; tries < 3 && s != 0; tries++, eg += IKQ_GBITS_DROP) {
+                    ikq_rhs(c, eg);
+                    s = ikq_solve(c);
+                }
+            if (s != 0) {
+                k = -1;
+            } else {
+                ikq_step(c, eg - IKQ_GBITS_DROP);
+                frozen = ikq_freeze(c, free_bits);
+                free_bits &= ~frozen;
+            }
+        }
+        if (k == 0) k = ikq_apply(c, free_bits);
+        again = (k < 0) ? ikq_damp(c) : 0;
+    }
+    return k > 0;
+}
+
+dh_status dh_ik_q(const dh_robot *r, const dh_frame_q *target, const int32_t *q0, const dh_ik_params_q *p,
+                  int32_t *work, size_t work_len, int32_t *q, dh_ik_result_q *res)
+{
+    ikq_ctx c;
+    dh_status st;
+
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(target != NULL);
+    DH_ASSERT(q0 != NULL);
+    DH_ASSERT(q != NULL);
+    DH_ASSERT(p != NULL);
+    DH_ASSERT(res != NULL);
+
+    c.r = r;
+    c.target = target;
+    c.p = p;
+    c.q0 = q0;
+    c.w = work;
+    st = ikq_args(&c, work_len);
+    if (st != DH_OK) return st;
+    ikq_init(&c);
+    ikq_scales(&c);
+    if (ikq_hopeless(&c, ikq_reach(r))) {
+        c.hopeless = 1u;
+        if (c.restarts > IKQ_HOPELESS_RESTARTS) c.restarts = IKQ_HOPELESS_RESTARTS;
+    }
+    for (;;) {
+        const int ev = ikq_eval(&c);
+        const unsigned act = ikq_update(&c, ev);
+        if (act == A_FAIL) return (ev == EV_RIGID) ? DH_ERR_NOT_RIGID : DH_ERR_OVERFLOW;
+        if (act == A_RETRY) {
+            ikq_sample(&c);
+            continue;
+        }
+        if (act == A_STEP) {
+            if (ikq_make_step(&c)) continue;
+            c.end = (uint8_t)K_STALL;
+        }
+        if (act == A_BREAK || ikq_record(&c)) break;
+        ikq_sample(&c);
+    }
+    return ikq_finish(&c, q, res);
+}
