@@ -35,7 +35,7 @@
 #include "dh_kin_impl.h"
 #include "dh_internal.h"
 
-#define IKQ_POLISH_STEPS 1u     /* refinement steps after the tolerance is met */
+#define IKQ_POLISH_STEPS 0u     /* refinement steps after the tolerance is met */
 #define IKQ_STALL_STEPS 4u      /* steps in a row with less than 1% progress: stalled */
 #define IKQ_MU_MAX 40           /* mu = 2^m */
 #define IKQ_MU_MIN (-10)
@@ -65,17 +65,18 @@
 #define OFF_IK(n) (19u * (n) + 12u)                  /* n: its shift */
 #define OFF_F(n) (20u * (n) + 12u)                   /* 12: frame of the evaluation */
 #define OFF_S(n) (20u * (n) + 24u)                   /* IKQ_S_COUNT scalars */
-#define OFF_D64(n) (20u * (n) + 48u)                 /* 2n: diagonal of H, int64 */
-#define OFF_G64(n) (22u * (n) + 48u)                 /* 2n: g, int64 */
-#define OFF_H(n) (24u * (n) + 48u)                   /* n*n: H', then its factor */
+#define OFF_G64(n) (20u * (n) + 48u)                 /* 2n: g, int64 */
+#define OFF_R(n) (22u * (n) + 48u)                   /* 20: orientation error scratch */
+#define OFF_H(n) (22u * (n) + 68u)                   /* n*n: H', then its factor */
 
 /* Scalar state slots (workspace words); int64 values take two. */
 enum {
     S_E = 0, S_TE = 2, S_BE = 4, S_WBAR = 6, /* int64: E current, trial, best; damping bias */
     S_EP = 8, S_ER, S_TEP, S_TER, S_BEP, S_BER,
-    S_MU, S_SP, S_L, S_W,
+    S_MU, S_SP, S_L, S_W, S_LS, S_WS,  /* L, w and both shifted right by sp */
     IKQ_S_COUNT
 };
+typedef char ikq_state_fits[(IKQ_S_COUNT <= 24) ? 1 : -1];   /* OFF_S holds 24 words */
 
 enum { K_NONE = 0, K_CONV, K_STALL, K_CUT };
 enum { M_FIRST = 0, M_TRIAL, M_RESTART };
@@ -234,6 +235,8 @@ static DH_NOINLINE void ikq_scales(const ikq_ctx *c)
     Ls = L >> (unsigned)sp;
     S[S_L] = (int32_t)L;
     S[S_W] = (int32_t)w;
+    S[S_LS] = (int32_t)Ls;
+    S[S_WS] = (int32_t)(w >> (unsigned)sp);
     S[S_SP] = sp;
     S[S_MU] = 0;
     ikq_put64(S, S_WBAR, (((int64_t)Ls * (int64_t)Ls) >> 23) + 1);
@@ -305,44 +308,48 @@ static DH_NOINLINE void ikq_init(ikq_ctx *c)
 
 /* ---- orientation error ---------------------------------------------------- */
 
-/* w = theta v / |v| (w Q3.29, theta Q3.29, v Q2.30 not 0). */
-static void ikq_dirscale(const int32_t *v, int32_t theta, int32_t *w)
-{
-    uint64_t n2 = 0u;
-    int32_t m, y;
-    int t;
-    uint32_t k;
-    for (k = 0; k < 3u; k++) n2 += (uint64_t)dh_q_mul64(v[k], v[k]);
-    dh_q_norm_even(n2, &m, &t);
-    y = dh_q_rsqrt29(m);
-    for (k = 0; k < 3u; k++) {
-        const int32_t u = (int32_t)ikq_shift(dh_q_mul64(v[k], y), 14 + t / 2);   /* unit, Q2.30 */
-        w[k] = (int32_t)dh_q_rshr(dh_q_mul64(theta, u), 30u);
-    }
-}
+/* Scratch of the orientation error (workspace words at OFF_R). */
+enum {
+    R_D = 0,            /* 9: dR row-major, Q2.30 */
+    R_U = 9,            /* 3: u / 2 = sin(theta) k, Q2.30 */
+    R_V = 12,           /* 3: direction whose unit vector times theta is w */
+    R_W = 15,           /* 3: w, Q3.29 */
+    R_TH = 18,          /* theta, Q3.29 */
+    R_CH = 19,          /* cos(theta), Q2.30 */
+    IKQ_R_COUNT = 20
+};
 
-/* a(dR), dR = Rt R^T (Rt the target's rotation, R F's), into w (Q3.29):
- * the method of dh_kin_rotvec_f32_ (docs/design.md) with the angle from
- * dh_atan2_q and, below sin = 1/16, the series theta / sin = 1 + s^2/6 +
- * 3 s^4/40 (error below 3e-9). */
-static DH_NOINLINE void ikq_rotvec(const dh_frame_q *Tt, const dh_frame_q *F, int32_t *w)
+/* dR = Rt R^T (Rt the target's rotation, R the frame's), row-major, and
+ * u / 2, cos(theta). */
+static DH_NOINLINE void ikq_dr(const dh_frame_q *Tt, const dh_frame_q *F, int32_t *R)
 {
-    int32_t d[9], uh[3], v[3], s, ch, theta;
-    dh_q16 deg = 0;
-    uint64_t s2 = 0u;
-    uint32_t i, j, m;
+    int32_t *d = R + R_D;
+    uint32_t i, j, k;
     int ovf = 0;
     for (i = 0; i < 3u; i++)
         for (j = 0; j < 3u; j++) {
             int64_t a = 0;
-            uint32_t k;
             for (k = 0; k < 3u; k++) a = dh_q_mla64(a, Tt->r[k][i], F->r[k][j]);
             d[3u * i + j] = dh_q_rnd30(a, &ovf);
         }
-    uh[0] = (int32_t)(((int64_t)d[7] - d[5]) >> 1);
-    uh[1] = (int32_t)(((int64_t)d[2] - d[6]) >> 1);
-    uh[2] = (int32_t)(((int64_t)d[3] - d[1]) >> 1);
-    ch = (int32_t)(((int64_t)d[0] + d[4] + d[8] - DH_Q_ONE30) >> 1);
+    R[R_U + 0] = (int32_t)(((int64_t)d[7] - d[5]) >> 1);
+    R[R_U + 1] = (int32_t)(((int64_t)d[2] - d[6]) >> 1);
+    R[R_U + 2] = (int32_t)(((int64_t)d[3] - d[1]) >> 1);
+    R[R_CH] = (int32_t)(((int64_t)d[0] + d[4] + d[8] - DH_Q_ONE30) >> 1);
+}
+
+/* The angle and the direction: 0 when w is written (below sin = 1/16 and
+ * 90 deg, the series theta / sin = 1 + s^2/6 + 3 s^4/40, error below
+ * 3e-9), 1 when w = theta v / |v| remains (ikq_dirscale). Beyond 90 deg v
+ * is the column of the largest diagonal entry of the symmetric part
+ * (1 - c) k k^T, signed like u (the method of dh_kin_rotvec_f32_). */
+static DH_NOINLINE int ikq_axis(int32_t *R)
+{
+    const int32_t *d = R + R_D, *uh = R + R_U, ch = R[R_CH];
+    uint64_t s2 = 0u;
+    int32_t s;
+    dh_q16 deg = 0;
+    uint32_t i, m;
     for (i = 0; i < 3u; i++) s2 += (uint64_t)dh_q_mul64(uh[i], uh[i]);
     s = (int32_t)dh_q_sqrt_u64(s2);
     if (ch >= 0 && s < ((int32_t)1 << 26)) {
@@ -350,126 +357,165 @@ static DH_NOINLINE void ikq_rotvec(const dh_frame_q *Tt, const dh_frame_q *F, in
         const int32_t q4 = (int32_t)(dh_q_mul64(q2, q2) >> 30);
         const int32_t f = DH_Q_ONE30 + (int32_t)(dh_q_mul64(q2, IKQ_SIXTH30) >> 30) +
                           (int32_t)(dh_q_mul64(q4, IKQ_3_40_30) >> 30);
-        for (i = 0; i < 3u; i++) w[i] = (int32_t)dh_q_rshr(dh_q_mul64(uh[i], f), 31u);
-        return;
+        for (i = 0; i < 3u; i++) R[R_W + i] = (int32_t)dh_q_rshr(dh_q_mul64(uh[i], f), 31u);
+        return 0;
     }
     (void)dh_atan2_q(s, ch, &deg);
-    theta = (int32_t)dh_q_rshr(dh_q_mul64(deg, IKQ_D2R36), 23u);
+    R[R_TH] = (int32_t)dh_q_rshr(dh_q_mul64(deg, IKQ_D2R36), 23u);
     if (ch >= 0) {
-        ikq_dirscale(uh, theta, w);
-        return;
+        for (i = 0; i < 3u; i++) R[R_V + i] = uh[i];
+        return 1;
     }
-    /* beyond 90 deg: the axis from the symmetric part (1 - c) k k^T, column
-     * of the largest diagonal entry, signed like u */
     m = 0u;
     if (d[4] > d[4u * m]) m = 1u;
     if (d[8] > d[4u * m]) m = 2u;
     for (i = 0; i < 3u; i++)
-        v[i] = (int32_t)((((int64_t)d[3u * i + m] + d[3u * m + i]) >> 1) - ((i == m) ? ch : 0));
-    if (dh_q_mul64(v[0], uh[0]) + dh_q_mul64(v[1], uh[1]) + dh_q_mul64(v[2], uh[2]) < 0)
-        for (i = 0; i < 3u; i++) v[i] = -v[i];
-    ikq_dirscale(v, theta, w);
+        R[R_V + i] = (int32_t)((((int64_t)d[3u * i + m] + d[3u * m + i]) >> 1) - ((i == m) ? ch : 0));
+    if (dh_q_mul64(R[R_V], uh[0]) + dh_q_mul64(R[R_V + 1], uh[1]) + dh_q_mul64(R[R_V + 2], uh[2]) < 0)
+        for (i = 0; i < 3u; i++) R[R_V + i] = -R[R_V + i];
+    return 1;
+}
+
+/* w = theta v / |v| (v not 0). */
+static DH_NOINLINE void ikq_dirscale(int32_t *R)
+{
+    const int32_t *v = R + R_V;
+    uint64_t n2 = 0u;
+    int32_t m, y;
+    int t;
+    uint32_t k;
+    for (k = 0; k < 3u; k++) n2 += (uint64_t)dh_q_mul64(v[k], v[k]);
+    dh_q_norm_even(n2, &m, &t);
+    y = dh_q_rsqrt29(m, 2u);
+    for (k = 0; k < 3u; k++) {
+        const int32_t u = (int32_t)ikq_shift(dh_q_mul64(v[k], y), 14 + t / 2);   /* unit, Q2.30 */
+        R[R_W + k] = (int32_t)dh_q_rshr(dh_q_mul64(R[R_TH], u), 30u);
+    }
+}
+
+/* a(dR) of the evaluated frame into R_W (Q3.29), three blocks in a row. */
+static DH_NOINLINE void ikq_rotvec(const ikq_ctx *c)
+{
+    int32_t *R = c->w + OFF_R(c->n);
+    ikq_dr(c->target, (const dh_frame_q *)(const void *)(c->w + OFF_F(c->n)), R);
+    if (ikq_axis(R)) ikq_dirscale(R);
 }
 
 /* ---- evaluation ------------------------------------------------------------ */
 
-/* Errors of the trial slot from its frame: scaled weighted error es, the
- * masked norms and E into S_TE, S_TEP, S_TER. */
-static DH_NOINLINE void ikq_errors(const ikq_ctx *c)
+/* Position part of the trial slot's error: es[0..2] and S_TEP. */
+static DH_NOINLINE void ikq_pos_err(const ikq_ctx *c)
 {
-    const uint32_t n = c->n, mask = c->p->mask, t = c->cs ^ 1u;
-    const dh_frame_q *F = (const dh_frame_q *)(void *)(c->w + OFF_F(n));
-    int32_t *es = c->w + OFF_E(n, t), *S = c->w + OFF_S(n);
+    const uint32_t n = c->n, mask = c->p->mask;
+    const int32_t *Fp = c->w + OFF_F(n) + 9u;   /* dh_frame_q p */
+    int32_t *es = c->w + OFF_E(n, c->cs ^ 1u), *S = c->w + OFF_S(n);
     const int sp = S[S_SP];
-    int64_t e[3], E = 0;
-    int32_t wr[3] = { 0, 0, 0 };
-    uint64_t r2 = 0u;
+    int64_t e[3];
     uint32_t k;
-    for (k = 0; k < 3u; k++) e[k] = (int64_t)c->target->p[k] - F->p[k];
-    if (ikq_rot_mode(mask)) ikq_rotvec(c->target, F, wr);
-    for (k = 0; k < 6u; k++) {
+    for (k = 0; k < 3u; k++) {
         int64_t v = 0;
+        e[k] = (int64_t)c->target->p[k] - Fp[k];
         if ((mask & (1u << k)) != 0u) {
-            if (k < 3u) {
-                v = (sp > 0) ? dh_q_rshr(e[k], (unsigned)sp) : e[k];
-            } else {
-                v = dh_q_rshr(dh_q_mul64(wr[k - 3u], S[S_W]), 29u + (unsigned)sp);
-                r2 += (uint64_t)dh_q_mul64(wr[k - 3u], wr[k - 3u]);
-            }
+            v = (sp > 0) ? dh_q_rshr(e[k], (unsigned)sp) : e[k];
             if (v > IKQ_ES_MAX) v = IKQ_ES_MAX;
             if (v < -IKQ_ES_MAX) v = -IKQ_ES_MAX;
         }
         es[k] = (int32_t)v;
-        E = dh_q_mla64(E, es[k], es[k]);
     }
-    ikq_put64(S, S_TE, E >> 1);
     S[S_TEP] = (int32_t)ikq_norm3(e, mask);
-    {
-        const uint32_t h = dh_q_sqrt_u64(r2);   /* Q3.29 */
-        S[S_TER] = (h >= 0x40000000u) ? INT32_MAX : (int32_t)(2u * h);
-    }
 }
 
-/* B = weighted Jacobian of the current point into the (free) trial slot. */
+/* Rotation part (w from ikq_rotvec, or 0 when not driven): es[3..5],
+ * S_TER, and E of the whole error into S_TE. */
+static DH_NOINLINE void ikq_rot_err(const ikq_ctx *c)
+{
+    const uint32_t n = c->n, mask = c->p->mask;
+    const int32_t *wr = c->w + OFF_R(n) + R_W;
+    int32_t *es = c->w + OFF_E(n, c->cs ^ 1u), *S = c->w + OFF_S(n);
+    uint64_t r2 = 0u;
+    int64_t E = 0;
+    uint32_t k, h;
+    for (k = 3u; k < 6u; k++) {
+        int64_t v = 0;
+        if ((mask & (1u << k)) != 0u) {
+            v = dh_q_rshr(dh_q_mul64(wr[k - 3u], S[S_WS]), 29u);
+            r2 += (uint64_t)dh_q_mul64(wr[k - 3u], wr[k - 3u]);
+            if (v > IKQ_ES_MAX) v = IKQ_ES_MAX;
+            if (v < -IKQ_ES_MAX) v = -IKQ_ES_MAX;
+        }
+        es[k] = (int32_t)v;
+    }
+    for (k = 0; k < 6u; k++) E = dh_q_mla64(E, es[k], es[k]);
+    ikq_put64(S, S_TE, E >> 1);
+    h = dh_q_sqrt_u64(r2);   /* Q3.29 */
+    S[S_TER] = (h >= 0x40000000u) ? INT32_MAX : (int32_t)(2u * h);
+}
+
+/* B = weighted Jacobian of the current point into the (free) trial slot:
+ * linear rows J >> sp (revolute) or z (L >> sp) (prismatic), angular rows
+ * z (w >> sp) (revolute) or 0, masked rows 0. */
 static DH_NOINLINE void ikq_weigh(const ikq_ctx *c)
 {
     const uint32_t n = c->n, mask = c->p->mask;
     const int32_t *J = c->w + OFF_J(n, c->cs), *S = c->w + OFF_S(n);
     int32_t *B = c->w + OFF_J(n, c->cs ^ 1u);
-    const unsigned sp = (unsigned)S[S_SP];
+    const int32_t sp = S[S_SP], Ls = S[S_LS], Ws = S[S_WS];
     uint32_t i, k;
-    for (k = 0; k < 6u; k++)
+    for (k = 0; k < 6u; k++) {
+        const int on = (mask & (1u << k)) != 0u;
         for (i = 0; i < n; i++) {
             const int32_t x = J[k * n + i];
-            int64_t v = 0;
-            if ((mask & (1u << k)) != 0u) {
+            int32_t v = 0;
+            if (on) {
                 if (c->r->joint[i].type == DH_JOINT_PRISMATIC)
-                    v = (k < 3u) ? dh_q_rshr(dh_q_mul64(x, S[S_L]), 30u + sp) : 0;
-                else if (k < 3u)
-                    v = (sp > 0u) ? dh_q_rshr(x, sp) : x;
+                    v = (k < 3u) ? (int32_t)dh_q_rshr(dh_q_mul64(x, Ls), 30u) : 0;
+                else if (k >= 3u)
+                    v = (int32_t)dh_q_rshr(dh_q_mul64(x, Ws), 30u);
                 else
-                    v = dh_q_rshr(dh_q_mul64(x, S[S_W]), 30u + sp);
+                    v = (sp == 0) ? x : (int32_t)dh_q_rshr(x, (unsigned)sp);
             }
-            B[k * n + i] = (int32_t)v;
+            B[k * n + i] = v;
         }
+    }
 }
 
-/* Diagonal of H = B^T B + Lambda and g = B^T es (int64), the column
- * exponents c_j and H' = D H D (Q2.30) over the free joints; the others get
- * an identity row and column and g = 0. Lambda_jj = mu min(E, (B^T B)_jj)
- * + wbar (dh_ik.c). Returns the largest bit length of D g. */
-static DH_NOINLINE int ikq_normal(const ikq_ctx *c, uint32_t free_bits)
+/* Column j of the normal equations: H_jj = (B^T B)_jj + Lambda_jj into
+ * D64, g_j = (B^T es)_j into G64, the exponent c_j and H'_jj = H_jj 2^-2c_j
+ * (Q2.30, in [1/4, 1)). Lambda_jj = mu min(E, (B^T B)_jj) + wbar
+ * (dh_ik.c). Returns the bit length of |g_j| 2^-c_j (-64 for g_j = 0). */
+static DH_NOINLINE int ikq_diag(const ikq_ctx *c, uint32_t j)
 {
     const uint32_t n = c->n;
     int32_t *w = c->w;
     const int32_t *B = w + OFF_J(n, c->cs ^ 1u), *es = w + OFF_E(n, c->cs), *S = w + OFF_S(n);
-    int32_t *C = w + OFF_C(n), *H = w + OFF_H(n);
-    const int64_t E = ikq_get64(S, S_E), wbar = ikq_get64(S, S_WBAR);
     const int mu = S[S_MU];
-    uint32_t i, j, k;
-    int eg = -64;
-    for (j = 0; j < n; j++) {
-        int64_t h = 0, g = 0, lam;
-        C[j] = 0;
-        ikq_put64(w, OFF_G64(n) + 2u * j, 0);
-        if (((free_bits >> j) & 1u) == 0u) continue;
-        for (k = 0; k < 6u; k++) {
-            h = dh_q_mla64(h, B[k * n + j], B[k * n + j]);
-            g = dh_q_mla64(g, B[k * n + j], es[k]);
-        }
-        lam = (E < h) ? E : h;
-        if (mu >= 0) lam = ((int)dh_q_bitlen64((uint64_t)lam) + mu > 61) ? IKQ_LAMBDA_MAX : lam << mu;
-        else lam >>= -mu;
-        h += lam + wbar;
-        C[j] = ((int)dh_q_bitlen64((uint64_t)h) - 29) >> 1;
-        ikq_put64(w, OFF_G64(n) + 2u * j, g);
-        if (g != 0) {
-            const int b = (int)dh_q_bitlen64(ikq_abs64(g)) - C[j];
-            if (b > eg) eg = b;
-        }
-        H[j * n + j] = (int32_t)ikq_shift(h, 2 * C[j]);
+    int64_t h = 0, g = 0, lam, E;
+    uint32_t k;
+    int cj;
+    for (k = 0; k < 6u; k++) {
+        h = dh_q_mla64(h, B[k * n + j], B[k * n + j]);
+        g = dh_q_mla64(g, B[k * n + j], es[k]);
     }
-    for (i = 0; i < n; i++)
+    E = ikq_get64(S, S_E);
+    lam = (E < h) ? E : h;
+    if (mu >= 0) lam = ((int)dh_q_bitlen64((uint64_t)lam) + mu > 61) ? IKQ_LAMBDA_MAX : lam << mu;
+    else lam >>= -mu;
+    h += lam + ikq_get64(S, S_WBAR);
+    cj = ((int)dh_q_bitlen64((uint64_t)h) - 29) >> 1;
+    w[OFF_C(n) + j] = cj;
+    ikq_put64(w, OFF_G64(n) + 2u * j, g);
+    w[OFF_H(n) + j * n + j] = (int32_t)ikq_shift(h, 2 * cj);
+    return (g != 0) ? (int)dh_q_bitlen64(ikq_abs64(g)) - cj : -64;
+}
+
+/* H'_ij = (B^T B)_ij 2^-(c_i + c_j) for i > j, both free (else 0). */
+static DH_NOINLINE void ikq_offdiag(const ikq_ctx *c, uint32_t free_bits)
+{
+    const uint32_t n = c->n;
+    const int32_t *B = c->w + OFF_J(n, c->cs ^ 1u), *C = c->w + OFF_C(n);
+    int32_t *H = c->w + OFF_H(n);
+    uint32_t i, j, k;
+    for (i = 1u; i < n; i++)
         for (j = 0; j < i; j++) {
             int64_t h = 0;
             if ((((free_bits >> i) & (free_bits >> j)) & 1u) != 0u) {
@@ -478,8 +524,26 @@ static DH_NOINLINE int ikq_normal(const ikq_ctx *c, uint32_t free_bits)
             }
             H[i * n + j] = (int32_t)h;
         }
-    for (j = 0; j < n; j++)
-        if (((free_bits >> j) & 1u) == 0u) H[j * n + j] = DH_Q_ONE30;
+}
+
+/* H' over the free joints (the others: identity row and column, g = 0);
+ * returns the largest bit length of D g. */
+static DH_NOINLINE int ikq_normal(const ikq_ctx *c, uint32_t free_bits)
+{
+    const uint32_t n = c->n;
+    uint32_t j;
+    int eg = -64;
+    for (j = 0; j < n; j++) {
+        if (((free_bits >> j) & 1u) != 0u) {
+            const int b = ikq_diag(c, j);
+            if (b > eg) eg = b;
+        } else {
+            c->w[OFF_C(n) + j] = 0;
+            ikq_put64(c->w, OFF_G64(n) + 2u * j, 0);
+            c->w[OFF_H(n) + j * n + j] = DH_Q_ONE30;
+        }
+    }
+    ikq_offdiag(c, free_bits);
     return eg;
 }
 
@@ -510,29 +574,35 @@ static int32_t ikq_div(const int32_t *w, uint32_t n, uint32_t j, int64_t s60, in
     return (int32_t)x;
 }
 
-/* H' = L L^T in place (lower triangle), pivots below 2^-20 raised to it;
- * -1 when a value does not fit. */
-static DH_NOINLINE int ikq_chol(const ikq_ctx *c)
+/* Column j of L (H' = L L^T in place, lower triangle): the pivot, raised
+ * to 2^-20 when below, its reciprocal square root, then L_ij, i > j. */
+static DH_NOINLINE int ikq_chol_col(const ikq_ctx *c, uint32_t j)
 {
     const uint32_t n = c->n;
     int32_t *w = c->w, *H = w + OFF_H(n);
-    uint32_t i, j, k;
-    int bad = 0;
-    for (j = 0; j < n; j++) {
-        int64_t d = (int64_t)((uint64_t)(int64_t)H[j * n + j] << 30);
-        int32_t m;
-        int t;
-        for (k = 0; k < j; k++) d -= dh_q_mul64(H[j * n + k], H[j * n + k]);
-        if (d < IKQ_DMIN60) d = IKQ_DMIN60;
-        dh_q_norm_even((uint64_t)d, &m, &t);
-        w[OFF_IY(n) + j] = dh_q_rsqrt29(m);
-        w[OFF_IK(n) + j] = 14 + t / 2;
-        for (i = j + 1u; i < n; i++) {
-            int64_t s = (int64_t)((uint64_t)(int64_t)H[i * n + j] << 30);
-            for (k = 0; k < j; k++) s -= dh_q_mul64(H[i * n + k], H[j * n + k]);
-            H[i * n + j] = ikq_div(w, n, j, s, &bad);
-        }
+    int64_t d = (int64_t)((uint64_t)(int64_t)H[j * n + j] << 30);
+    uint32_t i, k;
+    int32_t m;
+    int t, bad = 0;
+    for (k = 0; k < j; k++) d -= dh_q_mul64(H[j * n + k], H[j * n + k]);
+    if (d < IKQ_DMIN60) d = IKQ_DMIN60;
+    dh_q_norm_even((uint64_t)d, &m, &t);
+    w[OFF_IY(n) + j] = dh_q_rsqrt29(m, 2u);
+    w[OFF_IK(n) + j] = 14 + t / 2;
+    for (i = j + 1u; i < n; i++) {
+        int64_t s = (int64_t)((uint64_t)(int64_t)H[i * n + j] << 30);
+        for (k = 0; k < j; k++) s -= dh_q_mul64(H[i * n + k], H[j * n + k]);
+        H[i * n + j] = ikq_div(w, n, j, s, &bad);
     }
+    return bad;
+}
+
+/* H' = L L^T; -1 when a value does not fit. */
+static DH_NOINLINE int ikq_chol(const ikq_ctx *c)
+{
+    uint32_t j;
+    int bad = 0;
+    for (j = 0; j < c->n; j++) bad |= ikq_chol_col(c, j);
     return bad ? -1 : 0;
 }
 
@@ -715,7 +785,7 @@ static DH_NOINLINE unsigned ikq_update(ikq_ctx *c, int ev)
     if (c->mode == M_TRIAL && !c->conv && (c->stall >= IKQ_STALL_STEPS || S[S_MU] > IKQ_MU_MAX))
         c->end = (uint8_t)K_STALL;
     c->mode = (uint8_t)M_TRIAL;
-    if (c->end == 0u && !(c->conv && c->polish >= IKQ_POLISH_STEPS) && c->iter < p->max_iter) return A_STEP;
+    if (c->end == 0u && !(c->conv && c->polish + 1u > IKQ_POLISH_STEPS) && c->iter < p->max_iter) return A_STEP;
     return A_OVER;
 }
 
@@ -758,14 +828,17 @@ static DH_NOINLINE dh_status ikq_finish(const ikq_ctx *c, int32_t *q, dh_ik_resu
     return DH_ERR_NO_CONVERGENCE;
 }
 
-/* Evaluate the trial slot: Jacobian, frame, errors. */
+/* Evaluate the trial slot: Jacobian, frame, errors (blocks in a row). */
 static DH_NOINLINE int ikq_eval(const ikq_ctx *c)
 {
     const uint32_t n = c->n, t = c->cs ^ 1u;
     dh_frame_q *F = (dh_frame_q *)(void *)(c->w + OFF_F(n));
     if (dh_jacobian_q(c->r, c->w + OFF_Q(n, t), c->w + OFF_J(n, t), F) != DH_OK) return EV_FK;
     if (c->mode == M_FIRST && ikq_rot_mode(c->p->mask) && !ikq_rot_ok(F)) return EV_RIGID;
-    ikq_errors(c);
+    ikq_pos_err(c);
+    if (ikq_rot_mode(c->p->mask)) ikq_rotvec(c);
+    else c->w[OFF_R(n) + R_W] = c->w[OFF_R(n) + R_W + 1u] = c->w[OFF_R(n) + R_W + 2u] = 0;
+    ikq_rot_err(c);
     return EV_OK;
 }
 

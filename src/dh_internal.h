@@ -326,12 +326,12 @@ DH_INLINE unsigned dh_q_bitlen64(uint64_t v)
 
 /**
  * 1 / sqrt(x / 2^30) in Q3.29 for x in [2^28, 2^30] (a value in [1/4, 1],
- * result in [1, 2]): three Newton steps Y <- Y (3 - x Y^2) / 2 from the
- * tangent of 1/sqrt at 0.36 (x below 1/2) or 0.72 (above), which lies
- * below the root (relative error <= 5%: 5e-2 -> 3.8e-3 -> 2.1e-5 ->
- * 7e-10, plus a few LSB of rounding). Integer only.
+ * result in [1, 2]): `steps` (1..3) Newton steps Y <- Y (3 - x Y^2) / 2
+ * from the tangent of 1/sqrt at 0.36 (x below 1/2) or 0.72 (above), which
+ * lies below the root (relative error <= 5%, then 3.8e-3, 2.1e-5, 7e-10,
+ * plus a few LSB of rounding). Integer only.
  */
-static inline int32_t dh_q_rsqrt29(int32_t x)
+static inline int32_t dh_q_rsqrt29(int32_t x, unsigned steps)
 {
     int32_t y;
     unsigned i;
@@ -340,7 +340,7 @@ static inline int32_t dh_q_rsqrt29(int32_t x)
         y = (int32_t)1342177280 - (int32_t)(dh_q_mul64(x, 1242756741) >> 30);
     else
         y = (int32_t)949062656 - (int32_t)(dh_q_mul64(x, 439380859) >> 30);
-    for (i = 0; i < 3u; i++) {
+    for (i = 0; i < steps; i++) {
         int32_t t = (int32_t)(dh_q_mul64(x, y) >> 29);  /* x y, Q30 */
         t = (int32_t)(dh_q_mul64(t, y) >> 29);          /* x y^2, Q30, near 1 */
         y += (int32_t)(dh_q_mul64(y, DH_Q_ONE30 - t) >> 31);
@@ -358,8 +358,8 @@ DH_INLINE void dh_q_norm_even(uint64_t v, int32_t *m, int *t)
     *m = (sh >= 0) ? (int32_t)(v >> (unsigned)sh) : (int32_t)(v << (unsigned)(-sh));
 }
 
-/** sqrt(v) for any uint64 v, within 2^-28 relative (0 for 0): the
- *  normalised v times its reciprocal square root. */
+/** sqrt(v) for any uint64 v, within 2.2e-5 relative (0 for 0): the
+ *  normalised v times its reciprocal square root (two Newton steps). */
 static inline uint32_t dh_q_sqrt_u64(uint64_t v)
 {
     int32_t m, y;
@@ -367,7 +367,7 @@ static inline uint32_t dh_q_sqrt_u64(uint64_t v)
     uint64_t r;
     if (v == 0u) return 0u;
     dh_q_norm_even(v, &m, &t);
-    y = dh_q_rsqrt29(m);
+    y = dh_q_rsqrt29(m, 2u);
     /* sqrt(m) = m y / 2^44 (m y < 2^61); times 2^(t/2) */
     r = (uint64_t)dh_q_mul64(m, y);
     sh = 44 - t / 2;
