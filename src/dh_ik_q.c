@@ -45,6 +45,7 @@
 #define IKQ_DMIN60 ((int64_t)1 << 40)   /* pivot floor, 2^-20 in Q60 */
 #define IKQ_HOPELESS_RESTARTS 3u
 #define IKQ_ES_MAX ((int64_t)1 << 30)   /* clamp of the scaled error */
+#define IKQ_B_MAX (((int32_t)1 << 29) - 1)   /* clamp of the weighted Jacobian */
 #define IKQ_LAMBDA_MAX ((int64_t)1 << 61)
 /* 180 / pi * 2^25 and pi / 180 * 2^36 */
 #define IKQ_R2D25 1922527338
@@ -180,12 +181,12 @@ void dh_ik_params_default_q(const dh_robot *r, dh_ik_params_q *p)
     DH_ASSERT(r != NULL);
     DH_ASSERT(p != NULL);
     L = ikq_length(r);
-    p->max_iter = 2000u;
+    p->max_iter = 500u;
     p->mask = DH_IK_FULL;
     p->tol_pos = (int32_t)((L >> 20) > 0u ? (L >> 20) : 1u);
     p->tol_rot = 10737;
     p->w_rot = (int32_t)((L >> 2) > 0u ? (L >> 2) : 1u);
-    p->restarts = 200u;
+    p->restarts = 50u;
 }
 
 /* 1 when the columns c0, c1, c2 (Q2.30) form a rotation within
@@ -472,11 +473,22 @@ static DH_NOINLINE void ikq_weigh(const ikq_ctx *c)
                 else if (k >= 3u)
                     v = (int32_t)dh_q_rshr(dh_q_mul64(x, Ws), 30u);
                 else
-                    v = (sp == 0) ? x : (int32_t)dh_q_rshr(x, (unsigned)sp);
+                    v = (sp == 0) ? x : (((x >> (sp - 1)) + 1) >> 1);
             }
+            if (v > IKQ_B_MAX) v = IKQ_B_MAX;     /* only for a base that scales lengths */
+            if (v < -IKQ_B_MAX) v = -IKQ_B_MAX;
             B[k * n + i] = v;
         }
     }
+}
+
+/* (B^T B)_ij, exact (|B| < 2^29: the sum is below 2^61). */
+static int64_t ikq_dot6(const int32_t *B, uint32_t n, uint32_t i, uint32_t j)
+{
+    int64_t h = 0;
+    uint32_t k;
+    for (k = 0; k < 6u; k++) h = dh_q_mla64(h, B[k * n + i], B[k * n + j]);
+    return h;
 }
 
 /* Column j of the normal equations: H_jj = (B^T B)_jj + Lambda_jj into
@@ -492,13 +504,11 @@ static DH_NOINLINE int ikq_diag(const ikq_ctx *c, uint32_t j)
     int64_t h = 0, g = 0, lam, E;
     uint32_t k;
     int cj;
-    for (k = 0; k < 6u; k++) {
-        h = dh_q_mla64(h, B[k * n + j], B[k * n + j]);
-        g = dh_q_mla64(g, B[k * n + j], es[k]);
-    }
+    for (k = 0; k < 6u; k++) g = dh_q_mla64(g, B[k * n + j], es[k]);
+    h = ikq_dot6(B, n, j, j);
     E = ikq_get64(S, S_E);
     lam = (E < h) ? E : h;
-    if (mu >= 0) lam = ((int)dh_q_bitlen64((uint64_t)lam) + mu > 61) ? IKQ_LAMBDA_MAX : lam << mu;
+    if (mu >= 0) lam = (lam > (IKQ_LAMBDA_MAX >> mu)) ? IKQ_LAMBDA_MAX : lam << mu;
     else lam >>= -mu;
     h += lam + ikq_get64(S, S_WBAR);
     cj = ((int)dh_q_bitlen64((uint64_t)h) - 29) >> 1;
@@ -514,14 +524,11 @@ static DH_NOINLINE void ikq_offdiag(const ikq_ctx *c, uint32_t free_bits)
     const uint32_t n = c->n;
     const int32_t *B = c->w + OFF_J(n, c->cs ^ 1u), *C = c->w + OFF_C(n);
     int32_t *H = c->w + OFF_H(n);
-    uint32_t i, j, k;
+    uint32_t i, j;
     for (i = 1u; i < n; i++)
         for (j = 0; j < i; j++) {
             int64_t h = 0;
-            if ((((free_bits >> i) & (free_bits >> j)) & 1u) != 0u) {
-                for (k = 0; k < 6u; k++) h = dh_q_mla64(h, B[k * n + i], B[k * n + j]);
-                h = ikq_shift(h, C[i] + C[j]);
-            }
+            if ((((free_bits >> i) & (free_bits >> j)) & 1u) != 0u) h = ikq_shift(ikq_dot6(B, n, i, j), C[i] + C[j]);
             H[i * n + j] = (int32_t)h;
         }
 }
@@ -834,7 +841,11 @@ static DH_NOINLINE int ikq_eval(const ikq_ctx *c)
     const uint32_t n = c->n, t = c->cs ^ 1u;
     dh_frame_q *F = (dh_frame_q *)(void *)(c->w + OFF_F(n));
     if (dh_jacobian_q(c->r, c->w + OFF_Q(n, t), c->w + OFF_J(n, t), F) != DH_OK) return EV_FK;
-    if (c->mode == M_FIRST && ikq_rot_mode(c->p->mask) && !ikq_rot_ok(F)) return EV_RIGID;
+    /* a chain of DH links is a rotation: only a base or tool can make it none */
+    if (c->mode == M_FIRST && ikq_rot_mode(c->p->mask) &&
+        (c->r->flags & (DH_ROBOT_BASE_ID_Q | DH_ROBOT_TOOL_ID_Q)) != (DH_ROBOT_BASE_ID_Q | DH_ROBOT_TOOL_ID_Q) &&
+        !ikq_rot_ok(F))
+        return EV_RIGID;
     ikq_pos_err(c);
     if (ikq_rot_mode(c->p->mask)) ikq_rotvec(c);
     else c->w[OFF_R(n) + R_W] = c->w[OFF_R(n) + R_W + 1u] = c->w[OFF_R(n) + R_W + 2u] = 0;

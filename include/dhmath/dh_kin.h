@@ -276,11 +276,15 @@ typedef struct {
 #define DH_IK_WORK_Q(n) ((n) * (n) + 22u * (n) + 68u)
 
 /**
- * @brief Fixed-point defaults for robot r (integer only): max_iter 2000,
+ * @brief Fixed-point defaults for robot r (integer only): max_iter 500,
  * mask DH_IK_FULL, tol_pos L / 2^20 (at least 1 LSB), tol_rot 10737 (1e-5
- * rad), w_rot L / 4, restarts 200, where L = sum of |a_q|, |d_q|,
+ * rad), w_rot L / 4, restarts 50, where L = sum of |a_q|, |d_q|,
  * prismatic travel (limited joints) and |tool_q p| in dh_qpos (one length
  * unit if that is 0; saturated at INT32_MAX). Reads only r's fixed fields.
+ * The step budget is a quarter of dh_ik_params_default's: it bounds the
+ * worst case (a step costs about 30,000 instructions on a Cortex-M0,
+ * docs/performance_target.md) at a small cost in success rate for
+ * near-singular targets (docs/accuracy_kin.md).
  */
 void dh_ik_params_default_q(const dh_robot *r, dh_ik_params_q *p);
 
