@@ -583,32 +583,11 @@ dh_status dh_fk_frames_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames
 
 /* ---- private blocks of the fixed Jacobian (dh_kin_impl.h) --------------- */
 
-static DH_NOINLINE int apply_general(dh_frame_q *T, unsigned mod, const dh_q30 *v)
+/* joint_values of joint i of r at q into v[6] (sin theta, cos theta, sin
+ * alpha, cos alpha, d, a; the lengths raised from INT32_MIN). */
+int dh_fk_values_q_(const dh_robot *r, uint32_t i, int32_t q, dh_q30 *v)
 {
-    int ovf = 0;
-    step(T, mod, v, &ovf);
-    return ovf;
-}
-
-/* T <- T * A_i(q) in place, for T = base * A_1 .. A_i of r (the chain
- * fk_q builds, so the fast path's bounds hold): the same step, the same
- * bits as fk_q. No argument checks (the caller's). The general step's
- * flag lives in apply_general, so that this frame, the caller's and the
- * fast step's stay within the stack budget. */
-int dh_fk_step_q_(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *T)
-{
-    dh_q30 v[6];
-    const int ovf = joint_values(&r->joint[i], q, v);
-    const unsigned mod = r->conv != DH_CONV_STANDARD;
-#if DH_FAST_PATHS
-    if (i == 0u && (r->flags & DH_ROBOT_BASE_ID_Q) != 0u) {
-        link_direct(T, mod, v);
-        return ovf;
-    }
-    if ((r->flags & DH_ROBOT_BASE_SMALL_Q) != 0u && FAST_LENGTHS(v[5], v[4]))
-        return ovf | (mod ? fast_mod(T, T, v) : fast_std(T, T, v));
-#endif
-    return ovf | apply_general(T, mod, v);
+    return joint_values(&r->joint[i], q, v);
 }
 
 /* T <- T * tool in place (nothing for an identity tool), as fk_q. */

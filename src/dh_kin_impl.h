@@ -24,11 +24,12 @@ void dh_kin_rotvec_f32_(const float *d, float *w);
 /* dh_rot_cols_ok_f32 with DH_ROT_ERROR_TOL (columns c0, c1, c2). */
 int dh_kin_rot_ok_f32_(const float *c0, const float *c1, const float *c2);
 
-/* Fixed path (dh_fk_q.c): T <- T * A_i(q) in place for T = base * A_1 ..
- * A_i (the FK chain: same step, same bits as dh_fk_q), and T <- T * tool.
- * No argument checks; DH_ERR_OVERFLOW when an entry (or d + q) saturated,
- * else 0. */
-int dh_fk_step_q_(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *T);
+/* Fixed path (dh_fk_q.c): v[6] = (sin theta, cos theta, sin alpha, cos
+ * alpha, d, a) of joint i at q as the FK step uses them (d + q saturated,
+ * lengths with INT32_MIN raised to -INT32_MAX), and T <- T * tool in
+ * place (as dh_fk_q). No argument checks; DH_ERR_OVERFLOW when a value
+ * saturated, else 0. */
+int dh_fk_values_q_(const dh_robot *r, uint32_t i, int32_t q, dh_q30 *v);
 int dh_fk_tool_q_(const dh_robot *r, dh_frame_q *T);
 
 #endif /* DHMATH_SRC_DH_KIN_IMPL_H */

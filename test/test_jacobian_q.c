@@ -282,6 +282,19 @@ static void jacq_saturation(void)
         DHT_EQ_INT(J[5 * 2 + 0], DH_Q30_ONE);
         DHT_EQ_INT(T.p[0], sgn < 0 ? INT32_MAX - 1 : -INT32_MAX);
     }
+    /* a lever arm beyond int32 along the joint axis: the exact product is 0
+     * (no saturation, DH_OK) */
+    DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
+    dh_frame_trans_q(DH_QPOS(3.0), 0, INT32_MIN, &B);
+    DHT_EQ_INT(dh_robot_set_base_q(&r, &B), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, INT32_MAX, 0, 0), DH_OK);
+    DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, INT32_MAX, DH_QPOS(2.0), 0), DH_OK);
+    DHT_EQ_INT(dh_jacobian_q(&r, q, J, &T), DH_OK);
+    DHT_EQ_INT(T.p[2], INT32_MAX - 1);
+    /* column 0: z x (2, 0, 2^32 - 2) = (0, 2, 0) mm */
+    DHT_EQ_INT(J[0 * 2 + 0], 0);
+    DHT_EQ_INT(J[1 * 2 + 0], DH_QPOS(2.0));
+    DHT_EQ_INT(J[2 * 2 + 0], 0);
 }
 
 /* INT32_MIN entries (a base rotation of -2 entries, any int32 is accepted)

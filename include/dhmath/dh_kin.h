@@ -89,8 +89,7 @@ dh_status dh_jacobian_tool_f32(const dh_robot *r, const float *q, float *J, dh_m
  * angular rows z_i in Q2.30. Prismatic column: linear rows z_i in Q2.30
  * (length per length, dimensionless), angular rows 0.
  * Each linear entry is the exact cross product of the integer frame
- * entries rounded once (<= 0.5 LSB; in (-2^31, 2^31) differences, else
- * within 0.5 + 2^-26 LSB). Against the exact robot, measured for the
+ * entries rounded once (<= 0.5 LSB). Against the exact robot, measured for the
  * Puma 560, UR5 and Panda in mm (DH_QPOS_FRAC 16): at least as accurate
  * as dh_jacobian_f32 on the same robot (docs/accuracy_kin.md).
  *
