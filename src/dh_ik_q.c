@@ -44,6 +44,7 @@
 #define IKQ_GBITS_DROP 8        /* fewer bits when the solve overflows (twice at most) */
 #define IKQ_DMIN60 ((int64_t)1 << 40)   /* pivot floor, 2^-20 in Q60 */
 #define IKQ_HOPELESS_RESTARTS 3u
+#define IKQ_ID_BOTH (DH_ROBOT_BASE_ID_Q | DH_ROBOT_TOOL_ID_Q)
 #define IKQ_ES_MAX ((int64_t)1 << 30)   /* clamp of the scaled error */
 #define IKQ_B_MAX (((int32_t)1 << 29) - 1)   /* clamp of the weighted Jacobian */
 #define IKQ_LAMBDA_MAX ((int64_t)1 << 61)
@@ -66,9 +67,10 @@
 #define OFF_IK(n) (19u * (n) + 12u)                  /* n: its shift */
 #define OFF_F(n) (20u * (n) + 12u)                   /* 12: frame of the evaluation */
 #define OFF_S(n) (20u * (n) + 24u)                   /* IKQ_S_COUNT scalars */
-#define OFF_G64(n) (20u * (n) + 48u)                 /* 2n: g, int64 */
-#define OFF_R(n) (22u * (n) + 48u)                   /* 20: orientation error scratch */
-#define OFF_H(n) (22u * (n) + 68u)                   /* n*n: H', then its factor */
+#define OFF_ST(n) (20u * (n) + 48u)                  /* 8: ikq_state */
+#define OFF_G64(n) (20u * (n) + 56u)                 /* 2n: g, int64 */
+#define OFF_R(n) (22u * (n) + 56u)                   /* 20: orientation error scratch */
+#define OFF_H(n) (22u * (n) + 76u)                   /* n*n: H', then its factor */
 
 /* Scalar state slots (workspace words); int64 values take two. */
 enum {
@@ -84,15 +86,23 @@ enum { M_FIRST = 0, M_TRIAL, M_RESTART };
 enum { EV_OK = 0, EV_FK, EV_RIGID };
 enum { A_STEP = 0, A_OVER, A_RETRY, A_BREAK, A_FAIL };
 
+/* Counters and flags of the solve: in the workspace (OFF_ST), not in
+ * dh_ik_q's frame, which every block's stack adds to. */
+typedef struct {
+    uint32_t iter, stall, polish, restarts, rng;
+    uint8_t cs, mode, conv, end, best_kind, hopeless;
+} ikq_state;
+typedef char ikq_st_fits[(sizeof(ikq_state) <= 8u * sizeof(int32_t)) ? 1 : -1];   /* OFF_ST: 8 words */
+
+/* What the blocks share (in dh_ik_q's frame; everything else in work). */
 typedef struct {
     const dh_robot *r;
     const dh_frame_q *target;
     const dh_ik_params_q *p;
     const int32_t *q0;
-    int32_t *w;
+    int32_t *w;             /* workspace */
+    ikq_state *st;          /* in the workspace */
     uint32_t n;
-    uint32_t iter, stall, polish, restarts, rng;
-    uint8_t cs, mode, conv, end, best_kind, hopeless;
 } ikq_ctx;
 
 /* ---- small helpers ------------------------------------------------------- */
@@ -157,10 +167,18 @@ static uint32_t ikq_norm3(const int64_t *v, uint32_t mask)
 
 /* ---- robot scales -------------------------------------------------------- */
 
+/* |tool_q p| (dh_qpos, saturated). */
+static DH_NOINLINE uint32_t ikq_tool_len(const dh_robot *r)
+{
+    int64_t t[3];
+    uint32_t i;
+    for (i = 0; i < 3u; i++) t[i] = r->tool_q.p[i];
+    return ikq_norm3(t, 7u);
+}
+
 static DH_NOINLINE uint32_t ikq_length(const dh_robot *r)
 {
     uint32_t L = 0u, i;
-    int64_t t[3];
     for (i = 0; i < r->n && i < (uint32_t)DH_MAX_JOINTS; i++) {
         const dh_joint *jt = &r->joint[i];
         L = ikq_sat_add(L, dh_q_abs_u32(jt->a_q));
@@ -170,8 +188,7 @@ static DH_NOINLINE uint32_t ikq_length(const dh_robot *r)
             L = ikq_sat_add(L, lo > hi ? lo : hi);
         }
     }
-    for (i = 0; i < 3u; i++) t[i] = r->tool_q.p[i];
-    L = ikq_sat_add(L, ikq_norm3(t, 7u));
+    L = ikq_sat_add(L, ikq_tool_len(r));
     return (L == 0u) ? (uint32_t)DH_QPOS_ONE : L;
 }
 
@@ -189,21 +206,27 @@ void dh_ik_params_default_q(const dh_robot *r, dh_ik_params_q *p)
     p->restarts = 50u;
 }
 
-/* 1 when the columns c0, c1, c2 (Q2.30) form a rotation within
- * DH_ROT_ERROR_TOL_Q with det > 0. */
-static DH_NOINLINE int ikq_rot_ok(const dh_frame_q *F)
+/* 1 when det R > 0 (R = F's rotation, Q2.30). */
+static DH_NOINLINE int ikq_det_pos(const dh_frame_q *F)
 {
     int32_t x[3];
     int64_t det = 0;
     uint32_t k;
     int ovf = 0;
-    if (dh_frame_ortho_error_q(F) > DH_ROT_ERROR_TOL_Q) return 0;
     for (k = 0; k < 3u; k++) {
         const uint32_t a = (k + 1u) % 3u, b = (k + 2u) % 3u;
         x[k] = dh_q_rnd30(dh_q_mul64(F->r[1][a], F->r[2][b]) - dh_q_mul64(F->r[1][b], F->r[2][a]), &ovf);
     }
     for (k = 0; k < 3u; k++) det = dh_q_mla64(det, F->r[0][k], x[k]);
     return det > 0;
+}
+
+/* 1 when F's rotation is one within DH_ROT_ERROR_TOL_Q with det > 0
+ * (inlined into dh_ik_q: the public ortho check's stack adds to its frame
+ * only). */
+DH_INLINE int ikq_rot_ok(const dh_frame_q *F)
+{
+    return dh_frame_ortho_error_q(F) <= DH_ROT_ERROR_TOL_Q && ikq_det_pos(F);
 }
 
 static DH_NOINLINE dh_status ikq_args(const ikq_ctx *c, size_t work_len)
@@ -219,8 +242,7 @@ static DH_NOINLINE dh_status ikq_args(const ikq_ctx *c, size_t work_len)
     if (r->conv != DH_CONV_STANDARD && r->conv != DH_CONV_MODIFIED) return DH_ERR_ARG;
     for (i = 0; i < n; i++)
         if (r->joint[i].type != DH_JOINT_REVOLUTE && r->joint[i].type != DH_JOINT_PRISMATIC) return DH_ERR_ARG;
-    if (ikq_rot_mode(p->mask) && !ikq_rot_ok(c->target)) return DH_ERR_NOT_RIGID;
-    return DH_OK;
+    return DH_OK;     /* the caller checks the target rotation (stack depth) */
 }
 
 /* L, the shift sp, w = min(w_rot, L) and the damping bias into the state. */
@@ -243,12 +265,28 @@ static DH_NOINLINE void ikq_scales(const ikq_ctx *c)
     ikq_put64(S, S_WBAR, (((int64_t)Ls * (int64_t)Ls) >> 23) + 1);
 }
 
+/* max(||B||_1, ||B||_inf) of the base rotation in Q2.28 (>= ||B||_2). */
+static DH_NOINLINE uint32_t ikq_base_gain(const dh_robot *r)
+{
+    uint32_t i, k, gmax = 0u;
+    for (i = 0; i < 3u; i++) {
+        uint32_t rs = 0u, cs = 0u;
+        for (k = 0; k < 3u; k++) {
+            rs += dh_q_abs_u32(r->base_q.r[k][i]) >> 2;
+            cs += dh_q_abs_u32(r->base_q.r[i][k]) >> 2;
+        }
+        if (rs > gmax) gmax = rs;
+        if (cs > gmax) gmax = cs;
+    }
+    return gmax;
+}
+
 /* Upper bound of |p_end - p_base| (dh_qpos) within the limits, -1 when
- * unbounded; ||B||_2 <= max(||B||_1, ||B||_inf). */
+ * unbounded (a prismatic joint without limits). */
 static DH_NOINLINE int64_t ikq_reach(const dh_robot *r)
 {
-    int64_t R = 0, t[3];
-    uint32_t i, k, gmax = 0u;
+    int64_t R = 0;
+    uint32_t i;
     for (i = 0; i < r->n; i++) {
         const dh_joint *jt = &r->joint[i];
         R += dh_q_abs_u32(jt->a_q);
@@ -264,20 +302,9 @@ static DH_NOINLINE int64_t ikq_reach(const dh_robot *r)
             R += (lo > hi) ? lo : hi;
         }
     }
-    for (i = 0; i < 3u; i++) t[i] = r->tool_q.p[i];
-    R += ikq_norm3(t, 7u);
-    for (i = 0; i < 3u; i++) {
-        uint32_t rs = 0u, cs = 0u;
-        for (k = 0; k < 3u; k++) {
-            rs += dh_q_abs_u32(r->base_q.r[k][i]) >> 2;
-            cs += dh_q_abs_u32(r->base_q.r[i][k]) >> 2;
-        }
-        if (rs > gmax) gmax = rs;
-        if (cs > gmax) gmax = cs;
-    }
-    /* R < 2^37, gmax < 2^31 (Q2.28): R gmax / 2^28 plus 1e-4 R */
-    R = (int64_t)(((uint64_t)R * gmax) >> 28) + (R >> 13) + 1;
-    return R;
+    R += ikq_tool_len(r);
+    /* R < 2^37, gain < 2^31 (Q2.28): R gain / 2^28 plus 1e-4 R */
+    return (int64_t)(((uint64_t)R * ikq_base_gain(r)) >> 28) + (R >> 13) + 1;
 }
 
 static DH_NOINLINE int ikq_hopeless(const ikq_ctx *c, int64_t R)
@@ -293,17 +320,17 @@ static DH_NOINLINE void ikq_init(ikq_ctx *c)
 {
     uint32_t i;
     c->n = c->r->n;
-    c->iter = 0u;
-    c->stall = 0u;
-    c->polish = 0u;
-    c->rng = 0x2545F491u;
-    c->cs = 0u;
-    c->mode = (uint8_t)M_FIRST;
-    c->conv = 0u;
-    c->end = 0u;
-    c->best_kind = K_NONE;
-    c->hopeless = 0u;
-    c->restarts = c->p->restarts;
+    c->st->iter = 0u;
+    c->st->stall = 0u;
+    c->st->polish = 0u;
+    c->st->rng = 0x2545F491u;
+    c->st->cs = 0u;
+    c->st->mode = (uint8_t)M_FIRST;
+    c->st->conv = 0u;
+    c->st->end = 0u;
+    c->st->best_kind = K_NONE;
+    c->st->hopeless = 0u;
+    c->st->restarts = c->p->restarts;
     for (i = 0; i < c->n; i++) c->w[OFF_Q(c->n, 1u) + i] = ikq_clamp(&c->r->joint[i], c->q0[i]);
 }
 
@@ -409,7 +436,7 @@ static DH_NOINLINE void ikq_pos_err(const ikq_ctx *c)
 {
     const uint32_t n = c->n, mask = c->p->mask;
     const int32_t *Fp = c->w + OFF_F(n) + 9u;   /* dh_frame_q p */
-    int32_t *es = c->w + OFF_E(n, c->cs ^ 1u), *S = c->w + OFF_S(n);
+    int32_t *es = c->w + OFF_E(n, c->st->cs ^ 1u), *S = c->w + OFF_S(n);
     const int sp = S[S_SP];
     int64_t e[3];
     uint32_t k;
@@ -432,7 +459,7 @@ static DH_NOINLINE void ikq_rot_err(const ikq_ctx *c)
 {
     const uint32_t n = c->n, mask = c->p->mask;
     const int32_t *wr = c->w + OFF_R(n) + R_W;
-    int32_t *es = c->w + OFF_E(n, c->cs ^ 1u), *S = c->w + OFF_S(n);
+    int32_t *es = c->w + OFF_E(n, c->st->cs ^ 1u), *S = c->w + OFF_S(n);
     uint64_t r2 = 0u;
     int64_t E = 0;
     uint32_t k, h;
@@ -458,8 +485,8 @@ static DH_NOINLINE void ikq_rot_err(const ikq_ctx *c)
 static DH_NOINLINE void ikq_weigh(const ikq_ctx *c)
 {
     const uint32_t n = c->n, mask = c->p->mask;
-    const int32_t *J = c->w + OFF_J(n, c->cs), *S = c->w + OFF_S(n);
-    int32_t *B = c->w + OFF_J(n, c->cs ^ 1u);
+    const int32_t *J = c->w + OFF_J(n, c->st->cs), *S = c->w + OFF_S(n);
+    int32_t *B = c->w + OFF_J(n, c->st->cs ^ 1u);
     const int32_t sp = S[S_SP], Ls = S[S_LS], Ws = S[S_WS];
     uint32_t i, k;
     for (k = 0; k < 6u; k++) {
@@ -499,7 +526,7 @@ static DH_NOINLINE int ikq_diag(const ikq_ctx *c, uint32_t j)
 {
     const uint32_t n = c->n;
     int32_t *w = c->w;
-    const int32_t *B = w + OFF_J(n, c->cs ^ 1u), *es = w + OFF_E(n, c->cs), *S = w + OFF_S(n);
+    const int32_t *B = w + OFF_J(n, c->st->cs ^ 1u), *es = w + OFF_E(n, c->st->cs), *S = w + OFF_S(n);
     const int mu = S[S_MU];
     int64_t h = 0, g = 0, lam, E;
     uint32_t k;
@@ -522,7 +549,7 @@ static DH_NOINLINE int ikq_diag(const ikq_ctx *c, uint32_t j)
 static DH_NOINLINE void ikq_offdiag(const ikq_ctx *c, uint32_t free_bits)
 {
     const uint32_t n = c->n;
-    const int32_t *B = c->w + OFF_J(n, c->cs ^ 1u), *C = c->w + OFF_C(n);
+    const int32_t *B = c->w + OFF_J(n, c->st->cs ^ 1u), *C = c->w + OFF_C(n);
     int32_t *H = c->w + OFF_H(n);
     uint32_t i, j;
     for (i = 1u; i < n; i++)
@@ -663,7 +690,7 @@ static DH_NOINLINE void ikq_step(const ikq_ctx *c, int eg)
 static DH_NOINLINE uint32_t ikq_freeze(const ikq_ctx *c, uint32_t free_bits)
 {
     const uint32_t n = c->n;
-    const int32_t *qa = c->w + OFF_Q(n, c->cs), *dq = c->w + OFF_DQ(n);
+    const int32_t *qa = c->w + OFF_Q(n, c->st->cs), *dq = c->w + OFF_DQ(n);
     uint32_t i, frozen = 0u;
     for (i = 0; i < n; i++) {
         const dh_joint *jt = &c->r->joint[i];
@@ -676,8 +703,8 @@ static DH_NOINLINE uint32_t ikq_freeze(const ikq_ctx *c, uint32_t free_bits)
 static DH_NOINLINE int ikq_apply(const ikq_ctx *c, uint32_t free_bits)
 {
     const uint32_t n = c->n;
-    const int32_t *qa = c->w + OFF_Q(n, c->cs), *dq = c->w + OFF_DQ(n);
-    int32_t *qb = c->w + OFF_Q(n, c->cs ^ 1u);
+    const int32_t *qa = c->w + OFF_Q(n, c->st->cs), *dq = c->w + OFF_DQ(n);
+    int32_t *qb = c->w + OFF_Q(n, c->st->cs ^ 1u);
     uint32_t i;
     int moved = 0;
     for (i = 0; i < n; i++) {
@@ -691,16 +718,16 @@ static DH_NOINLINE int ikq_apply(const ikq_ctx *c, uint32_t free_bits)
 static DH_NOINLINE void ikq_sample(ikq_ctx *c)
 {
     const int32_t L = c->w[OFF_S(c->n) + S_L];
-    int32_t *qo = c->w + OFF_Q(c->n, c->cs ^ 1u);
+    int32_t *qo = c->w + OFF_Q(c->n, c->st->cs ^ 1u);
     uint32_t i;
     for (i = 0; i < c->n; i++) {
         const dh_joint *jt = &c->r->joint[i];
-        uint32_t x = c->rng;
+        uint32_t x = c->st->rng;
         int32_t u;
         x ^= x << 13;
         x ^= x >> 17;
         x ^= x << 5;
-        c->rng = x;
+        c->st->rng = x;
         u = (int32_t)(x >> 1);      /* [0, 2^31) */
         if (jt->qmin_q <= jt->qmax_q) {
             const uint32_t range = (uint32_t)jt->qmax_q - (uint32_t)jt->qmin_q;
@@ -711,7 +738,7 @@ static DH_NOINLINE void ikq_sample(ikq_ctx *c)
             qo[i] = ikq_clamp(jt, (int64_t)c->q0[i] + (dh_q_mul64(u, L) >> 30) - L);
         }
     }
-    c->mode = (uint8_t)M_RESTART;
+    c->st->mode = (uint8_t)M_RESTART;
 }
 
 /* ---- acceptance (dh_ik.c) ------------------------------------------------- */
@@ -727,7 +754,7 @@ static int ikq_better(const ikq_ctx *c, const int32_t *S)
     const dh_ik_params_q *p = c->p;
     const int64_t E = ikq_get64(S, S_E), TE = ikq_get64(S, S_TE);
     int64_t a, b;
-    if (c->conv) return (TE < E && S[S_TEP] <= p->tol_pos && S[S_TER] <= p->tol_rot) ? 1 : 0;
+    if (c->st->conv) return (TE < E && S[S_TEP] <= p->tol_pos && S[S_TER] <= p->tol_rot) ? 1 : 0;
     if (TE < E) {
         a = TE;
         b = E;
@@ -745,7 +772,7 @@ static int ikq_better(const ikq_ctx *c, const int32_t *S)
 
 static void ikq_take(ikq_ctx *c, int32_t *S)
 {
-    c->cs = (uint8_t)(c->cs ^ 1u);
+    c->st->cs = (uint8_t)(c->st->cs ^ 1u);
     ikq_put64(S, S_E, ikq_get64(S, S_TE));
     S[S_EP] = S[S_TEP];
     S[S_ER] = S[S_TER];
@@ -755,70 +782,70 @@ static DH_NOINLINE unsigned ikq_update(ikq_ctx *c, int ev)
 {
     const dh_ik_params_q *p = c->p;
     int32_t *S = c->w + OFF_S(c->n);
-    const int acc = (c->mode == M_TRIAL && ev == EV_OK) ? ikq_better(c, S) : 0;
-    if (c->mode == M_FIRST) {
+    const int acc = (c->st->mode == M_TRIAL && ev == EV_OK) ? ikq_better(c, S) : 0;
+    if (c->st->mode == M_FIRST) {
         if (ev != EV_OK) return A_FAIL;
     } else {
-        c->iter++;
+        c->st->iter++;
     }
-    c->end = 0u;
-    if (c->mode != M_TRIAL) {
+    c->st->end = 0u;
+    if (c->st->mode != M_TRIAL) {
         if (ev != EV_OK) {
-            if (c->restarts > 0u && c->iter < p->max_iter) {
-                c->restarts--;
+            if (c->st->restarts > 0u && c->st->iter < p->max_iter) {
+                c->st->restarts--;
                 return A_RETRY;
             }
             return A_BREAK;
         }
         ikq_take(c, S);
         S[S_MU] = 0;
-        c->stall = 0u;
-        c->polish = 0u;
-        c->conv = (uint8_t)ikq_met(S, p);
+        c->st->stall = 0u;
+        c->st->polish = 0u;
+        c->st->conv = (uint8_t)ikq_met(S, p);
     } else if (acc != 0) {
-        c->stall = (acc == 1) ? 0u : c->stall + 1u;
+        c->st->stall = (acc == 1) ? 0u : c->st->stall + 1u;
         ikq_take(c, S);
-        if (c->conv) c->polish++;
+        if (c->st->conv) c->st->polish++;
         if (S[S_MU] > IKQ_MU_MIN) S[S_MU]--;
-        if (!c->conv && ikq_met(S, p)) {
-            c->conv = 1u;
+        if (!c->st->conv && ikq_met(S, p)) {
+            c->st->conv = 1u;
             S[S_MU] = IKQ_MU_MIN;
         }
     } else {
-        c->stall++;
+        c->st->stall++;
         S[S_MU] += IKQ_MU_UP;
-        if (c->conv) c->polish = IKQ_POLISH_STEPS;
+        if (c->st->conv) c->st->polish = IKQ_POLISH_STEPS;
     }
-    if (c->mode == M_TRIAL && !c->conv && (c->stall >= IKQ_STALL_STEPS || S[S_MU] > IKQ_MU_MAX))
-        c->end = (uint8_t)K_STALL;
-    c->mode = (uint8_t)M_TRIAL;
-    if (c->end == 0u && !(c->conv && c->polish + 1u > IKQ_POLISH_STEPS) && c->iter < p->max_iter) return A_STEP;
+    if (c->st->mode == M_TRIAL && !c->st->conv && (c->st->stall >= IKQ_STALL_STEPS || S[S_MU] > IKQ_MU_MAX))
+        c->st->end = (uint8_t)K_STALL;
+    c->st->mode = (uint8_t)M_TRIAL;
+    if (c->st->end == 0u && !(c->st->conv && c->st->polish + 1u > IKQ_POLISH_STEPS) && c->st->iter < p->max_iter) return A_STEP;
     return A_OVER;
 }
 
 static DH_NOINLINE int ikq_damp(ikq_ctx *c)
 {
     int32_t *mu = c->w + OFF_S(c->n) + S_MU;
-    c->stall++;
+    c->st->stall++;
     *mu += IKQ_MU_UP;
-    return !c->conv && c->stall < IKQ_STALL_STEPS && *mu <= IKQ_MU_MAX;
+    return !c->st->conv && c->st->stall < IKQ_STALL_STEPS && *mu <= IKQ_MU_MAX;
 }
 
 static DH_NOINLINE int ikq_record(ikq_ctx *c)
 {
     int32_t *S = c->w + OFF_S(c->n);
-    const unsigned kind = c->conv ? K_CONV : (c->end != 0u ? c->end : K_CUT);
+    const unsigned kind = c->st->conv ? K_CONV : (c->st->end != 0u ? c->st->end : K_CUT);
     uint32_t i;
-    if (c->best_kind == K_NONE || (kind == K_CONV && c->best_kind != K_CONV) ||
-        ((kind == K_CONV) == (c->best_kind == K_CONV) && ikq_get64(S, S_E) < ikq_get64(S, S_BE))) {
-        c->best_kind = (uint8_t)kind;
+    if (c->st->best_kind == K_NONE || (kind == K_CONV && c->st->best_kind != K_CONV) ||
+        ((kind == K_CONV) == (c->st->best_kind == K_CONV) && ikq_get64(S, S_E) < ikq_get64(S, S_BE))) {
+        c->st->best_kind = (uint8_t)kind;
         ikq_put64(S, S_BE, ikq_get64(S, S_E));
         S[S_BEP] = S[S_EP];
         S[S_BER] = S[S_ER];
-        for (i = 0; i < c->n; i++) c->w[OFF_QBEST(c->n) + i] = c->w[OFF_Q(c->n, c->cs) + i];
+        for (i = 0; i < c->n; i++) c->w[OFF_QBEST(c->n) + i] = c->w[OFF_Q(c->n, c->st->cs) + i];
     }
-    if (c->conv || c->end == 0u || c->restarts == 0u || c->iter >= c->p->max_iter) return 1;
-    c->restarts--;
+    if (c->st->conv || c->st->end == 0u || c->st->restarts == 0u || c->st->iter >= c->p->max_iter) return 1;
+    c->st->restarts--;
     return 0;
 }
 
@@ -827,25 +854,20 @@ static DH_NOINLINE dh_status ikq_finish(const ikq_ctx *c, int32_t *q, dh_ik_resu
     const int32_t *S = c->w + OFF_S(c->n);
     uint32_t i;
     for (i = 0; i < c->n; i++) q[i] = c->w[OFF_QBEST(c->n) + i];
-    res->iterations = c->iter;
+    res->iterations = c->st->iter;
     res->err_pos = S[S_BEP];
     res->err_rot = S[S_BER];
-    if (c->best_kind == K_CONV) return DH_OK;
-    if (c->hopeless || c->best_kind == K_STALL) return DH_ERR_UNREACHABLE;
+    if (c->st->best_kind == K_CONV) return DH_OK;
+    if (c->st->hopeless || c->st->best_kind == K_STALL) return DH_ERR_UNREACHABLE;
     return DH_ERR_NO_CONVERGENCE;
 }
 
-/* Evaluate the trial slot: Jacobian, frame, errors (blocks in a row). */
+/* Errors of the trial slot from its frame (blocks in a row; the Jacobian
+ * pass and the start's rotation check are dh_ik_q's, one frame less on the
+ * stack). */
 static DH_NOINLINE int ikq_eval(const ikq_ctx *c)
 {
-    const uint32_t n = c->n, t = c->cs ^ 1u;
-    dh_frame_q *F = (dh_frame_q *)(void *)(c->w + OFF_F(n));
-    if (dh_jacobian_q(c->r, c->w + OFF_Q(n, t), c->w + OFF_J(n, t), F) != DH_OK) return EV_FK;
-    /* a chain of DH links is a rotation: only a base or tool can make it none */
-    if (c->mode == M_FIRST && ikq_rot_mode(c->p->mask) &&
-        (c->r->flags & (DH_ROBOT_BASE_ID_Q | DH_ROBOT_TOOL_ID_Q)) != (DH_ROBOT_BASE_ID_Q | DH_ROBOT_TOOL_ID_Q) &&
-        !ikq_rot_ok(F))
-        return EV_RIGID;
+    const uint32_t n = c->n;
     ikq_pos_err(c);
     if (ikq_rot_mode(c->p->mask)) ikq_rotvec(c);
     else c->w[OFF_R(n) + R_W] = c->w[OFF_R(n) + R_W + 1u] = c->w[OFF_R(n) + R_W + 2u] = 0;
@@ -904,15 +926,28 @@ dh_status dh_ik_q(const dh_robot *r, const dh_frame_q *target, const int32_t *q0
     c.w = work;
     st = ikq_args(&c, work_len);
     if (st != DH_OK) return st;
+    if (ikq_rot_mode(p->mask) && !ikq_rot_ok(target)) return DH_ERR_NOT_RIGID;
+    c.st = (ikq_state *)(void *)(work + OFF_ST(r->n));
     ikq_init(&c);
     ikq_scales(&c);
     if (ikq_hopeless(&c, ikq_reach(r))) {
-        c.hopeless = 1u;
-        if (c.restarts > IKQ_HOPELESS_RESTARTS) c.restarts = IKQ_HOPELESS_RESTARTS;
+        c.st->hopeless = 1u;
+        if (c.st->restarts > IKQ_HOPELESS_RESTARTS) c.st->restarts = IKQ_HOPELESS_RESTARTS;
     }
     for (;;) {
-        const int ev = ikq_eval(&c);
-        const unsigned act = ikq_update(&c, ev);
+        const uint32_t t = c.st->cs ^ 1u;
+        dh_frame_q *F = (dh_frame_q *)(void *)(work + OFF_F(c.n));
+        int ev = EV_FK;
+        unsigned act;
+        if (dh_kin_jac_q_(r, work + OFF_Q(c.n, t), work + OFF_J(c.n, t), F) == 0) {
+            /* a chain of DH links is a rotation: only a base or tool can make it none */
+            if (c.st->mode == M_FIRST && ikq_rot_mode(p->mask) && (r->flags & IKQ_ID_BOTH) != IKQ_ID_BOTH &&
+                !ikq_rot_ok(F))
+                ev = EV_RIGID;
+            else
+                ev = ikq_eval(&c);
+        }
+        act = ikq_update(&c, ev);
         if (act == A_FAIL) return (ev == EV_RIGID) ? DH_ERR_NOT_RIGID : DH_ERR_OVERFLOW;
         if (act == A_RETRY) {
             ikq_sample(&c);
@@ -920,7 +955,7 @@ dh_status dh_ik_q(const dh_robot *r, const dh_frame_q *target, const int32_t *q0
         }
         if (act == A_STEP) {
             if (ikq_make_step(&c)) continue;
-            c.end = (uint8_t)K_STALL;
+            c.st->end = (uint8_t)K_STALL;
         }
         if (act == A_BREAK || ikq_record(&c)) break;
         ikq_sample(&c);

@@ -209,6 +209,16 @@ static DH_NOINLINE int jacq_chain(const dh_robot *r, const int32_t *q, int32_t *
     return ovf;
 }
 
+/* The chain, the tool and the columns into the caller's F (dh_kin_impl.h:
+ * dh_ik_q evaluates with F in its workspace). */
+int dh_kin_jac_q_(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *F)
+{
+    int ovf = jacq_chain(r, q, J, F);
+    ovf |= dh_fk_tool_q_(r, F);
+    ovf |= jacq_cols(r, F->p, J);
+    return ovf;
+}
+
 /* Shared body of the two public Jacobians (tool != 0: tool frame). */
 DH_INLINE dh_status jacq_run(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *T_end, int tool)
 {
@@ -222,9 +232,7 @@ DH_INLINE dh_status jacq_run(const dh_robot *r, const int32_t *q, int32_t *J, dh
 
     st = jacq_check(r);
     if (st != DH_OK) return st;
-    ovf = jacq_chain(r, q, J, &F);
-    ovf |= dh_fk_tool_q_(r, &F);
-    ovf |= jacq_cols(r, F.p, J);
+    ovf = dh_kin_jac_q_(r, q, J, &F);
     if (tool) ovf |= jacq_to_tool(&F, J, r->n);
     if (T_end != NULL) *T_end = F;
     return ovf ? DH_ERR_OVERFLOW : DH_OK;

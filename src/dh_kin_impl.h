@@ -32,4 +32,9 @@ int dh_kin_rot_ok_f32_(const float *c0, const float *c1, const float *c2);
 int dh_fk_values_q_(const dh_robot *r, uint32_t i, int32_t q, dh_q30 *v);
 int dh_fk_tool_q_(const dh_robot *r, dh_frame_q *T);
 
+/* dh_jacobian_q's body (dh_jacobian_q.c) without its argument checks (n,
+ * fixed path, convention, joint types: the caller's) and with the end
+ * frame F supplied by the caller; nonzero when an entry saturated. */
+int dh_kin_jac_q_(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *F);
+
 #endif /* DHMATH_SRC_DH_KIN_IMPL_H */
