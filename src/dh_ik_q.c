@@ -149,17 +149,20 @@ static uint32_t ikq_sat_add(uint32_t a, uint32_t b)
     return (a > 0x7FFFFFFFu - b) ? 0x7FFFFFFFu : a + b;
 }
 
-/* |v|, v a 3-vector of int64 differences below 2^33, saturated at INT32_MAX. */
-static uint32_t ikq_norm3(const int64_t *v, uint32_t mask)
+/* |a - b| over the masked components (int32 positions), saturated at
+ * INT32_MAX; b may be NULL (|a|). The halved differences fit 32 bits. */
+static DH_NOINLINE uint32_t ikq_dist(const int32_t *a, const int32_t *b, uint32_t mask)
 {
     uint64_t s = 0u;
     uint32_t k, h;
     for (k = 0; k < 3u; k++) {
-        uint64_t a;
+        int64_t d;
+        uint64_t m;
         if ((mask & (1u << k)) == 0u) continue;
-        a = ikq_abs64(v[k]) >> 1;   /* < 2^32: the halves' squares sum below 2^66 / 4 */
-        if (a >= ((uint64_t)1 << 31)) return 0x7FFFFFFFu;
-        s += a * a;
+        d = (int64_t)a[k] - (b != NULL ? b[k] : 0);
+        m = ikq_abs64(d) >> 1;
+        if (m >= ((uint64_t)1 << 31)) return 0x7FFFFFFFu;
+        s += m * m;
     }
     h = dh_q_sqrt_u64(s);
     return (h >= 0x40000000u) ? 0x7FFFFFFFu : 2u * h;
@@ -168,12 +171,9 @@ static uint32_t ikq_norm3(const int64_t *v, uint32_t mask)
 /* ---- robot scales -------------------------------------------------------- */
 
 /* |tool_q p| (dh_qpos, saturated). */
-static DH_NOINLINE uint32_t ikq_tool_len(const dh_robot *r)
+static uint32_t ikq_tool_len(const dh_robot *r)
 {
-    int64_t t[3];
-    uint32_t i;
-    for (i = 0; i < 3u; i++) t[i] = r->tool_q.p[i];
-    return ikq_norm3(t, 7u);
+    return ikq_dist(r->tool_q.p, NULL, 7u);
 }
 
 static DH_NOINLINE uint32_t ikq_length(const dh_robot *r)
@@ -283,7 +283,7 @@ static DH_NOINLINE uint32_t ikq_base_gain(const dh_robot *r)
 
 /* Upper bound of |p_end - p_base| (dh_qpos) within the limits, -1 when
  * unbounded (a prismatic joint without limits). */
-static DH_NOINLINE int64_t ikq_reach(const dh_robot *r)
+static DH_NOINLINE int64_t ikq_reach(const dh_robot *r, uint32_t tool_len)
 {
     int64_t R = 0;
     uint32_t i;
@@ -302,18 +302,15 @@ static DH_NOINLINE int64_t ikq_reach(const dh_robot *r)
             R += (lo > hi) ? lo : hi;
         }
     }
-    R += ikq_tool_len(r);
+    R += tool_len;
     /* R < 2^37, gain < 2^31 (Q2.28): R gain / 2^28 plus 1e-4 R */
     return (int64_t)(((uint64_t)R * ikq_base_gain(r)) >> 28) + (R >> 13) + 1;
 }
 
 static DH_NOINLINE int ikq_hopeless(const ikq_ctx *c, int64_t R)
 {
-    int64_t v[3];
-    uint32_t k;
     if (R < 0) return 0;
-    for (k = 0; k < 3u; k++) v[k] = (int64_t)c->target->p[k] - c->r->base_q.p[k];
-    return (int64_t)ikq_norm3(v, c->p->mask) > R + c->p->tol_pos;
+    return (int64_t)ikq_dist(c->target->p, c->r->base_q.p, c->p->mask) > R + c->p->tol_pos;
 }
 
 static DH_NOINLINE void ikq_init(ikq_ctx *c)
@@ -438,19 +435,17 @@ static DH_NOINLINE void ikq_pos_err(const ikq_ctx *c)
     const int32_t *Fp = c->w + OFF_F(n) + 9u;   /* dh_frame_q p */
     int32_t *es = c->w + OFF_E(n, c->st->cs ^ 1u), *S = c->w + OFF_S(n);
     const int sp = S[S_SP];
-    int64_t e[3];
     uint32_t k;
     for (k = 0; k < 3u; k++) {
         int64_t v = 0;
-        e[k] = (int64_t)c->target->p[k] - Fp[k];
         if ((mask & (1u << k)) != 0u) {
-            v = (sp > 0) ? dh_q_rshr(e[k], (unsigned)sp) : e[k];
+            v = (int64_t)c->target->p[k] - Fp[k];
+            if (sp > 0) v = dh_q_rshr(v, (unsigned)sp);
             if (v > IKQ_ES_MAX) v = IKQ_ES_MAX;
             if (v < -IKQ_ES_MAX) v = -IKQ_ES_MAX;
         }
         es[k] = (int32_t)v;
     }
-    S[S_TEP] = (int32_t)ikq_norm3(e, mask);
 }
 
 /* Rotation part (w from ikq_rotvec, or 0 when not driven): es[3..5],
@@ -629,15 +624,6 @@ static DH_NOINLINE int ikq_chol_col(const ikq_ctx *c, uint32_t j)
         H[i * n + j] = ikq_div(w, n, j, s, &bad);
     }
     return bad;
-}
-
-/* H' = L L^T; -1 when a value does not fit. */
-static DH_NOINLINE int ikq_chol(const ikq_ctx *c)
-{
-    uint32_t j;
-    int bad = 0;
-    for (j = 0; j < c->n; j++) bad |= ikq_chol_col(c, j);
-    return bad ? -1 : 0;
 }
 
 /* L z = g', L^T y = z in Y; -1 when a value does not fit. */
@@ -869,6 +855,7 @@ static DH_NOINLINE int ikq_eval(const ikq_ctx *c)
 {
     const uint32_t n = c->n;
     ikq_pos_err(c);
+    c->w[OFF_S(n) + S_TEP] = (int32_t)ikq_dist(c->target->p, c->w + OFF_F(n) + 9u, c->p->mask);
     if (ikq_rot_mode(c->p->mask)) ikq_rotvec(c);
     else c->w[OFF_R(n) + R_W] = c->w[OFF_R(n) + R_W + 1u] = c->w[OFF_R(n) + R_W + 2u] = 0;
     ikq_rot_err(c);
@@ -887,7 +874,10 @@ static DH_NOINLINE int ikq_make_step(ikq_ctx *c)
         k = 0;
         for (pass = 0; (pass <= n) && (frozen != 0u) && (k == 0); pass++) {
             int eg = ikq_normal(c, free_bits) - IKQ_GBITS, s = -1, tries;
-            if (ikq_chol(c) == 0)
+            int bad = 0;
+            uint32_t j;
+            for (j = 0; j < n; j++) bad |= ikq_chol_col(c, j);
+            if (bad == 0)
                 for (tries = 0; tries < 3 && s != 0; tries++, eg += IKQ_GBITS_DROP) {
                     ikq_rhs(c, eg);
                     s = ikq_solve(c);
@@ -930,7 +920,7 @@ dh_status dh_ik_q(const dh_robot *r, const dh_frame_q *target, const int32_t *q0
     c.st = (ikq_state *)(void *)(work + OFF_ST(r->n));
     ikq_init(&c);
     ikq_scales(&c);
-    if (ikq_hopeless(&c, ikq_reach(r))) {
+    if (ikq_hopeless(&c, ikq_reach(r, ikq_tool_len(r)))) {
         c.st->hopeless = 1u;
         if (c.st->restarts > IKQ_HOPELESS_RESTARTS) c.st->restarts = IKQ_HOPELESS_RESTARTS;
     }
