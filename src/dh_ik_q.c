@@ -71,6 +71,7 @@
 #define OFF_G64(n) (20u * (n) + 56u)                 /* 2n: g, int64 */
 #define OFF_R(n) (22u * (n) + 56u)                   /* 20: orientation error scratch */
 #define OFF_H(n) (22u * (n) + 76u)                   /* n*n: H', then its factor */
+#define OFF_Q0(n) ((n) * (n) + 22u * (n) + 76u)      /* n: q0 */
 
 /* Scalar state slots (workspace words); int64 values take two. */
 enum {
@@ -94,16 +95,16 @@ typedef struct {
 } ikq_state;
 typedef char ikq_st_fits[(sizeof(ikq_state) <= 8u * sizeof(int32_t)) ? 1 : -1];   /* OFF_ST: 8 words */
 
-/* What the blocks share (in dh_ik_q's frame; everything else in work). */
+/* What the blocks share: four pointers in dh_ik_q's frame (which the
+ * Jacobian pass and every block add to); n is r->n, the state and a copy
+ * of q0 are in the workspace (IKQ_ST, OFF_Q0). */
 typedef struct {
     const dh_robot *r;
     const dh_frame_q *target;
     const dh_ik_params_q *p;
-    const int32_t *q0;
     int32_t *w;             /* workspace */
-    ikq_state *st;          /* in the workspace */
-    uint32_t n;
 } ikq_ctx;
+#define IKQ_ST(c) ((ikq_state *)(void *)((c)->w + OFF_ST((c)->r->n)))
 
 /* ---- small helpers ------------------------------------------------------- */
 
@@ -229,13 +230,12 @@ DH_INLINE int ikq_rot_ok(const dh_frame_q *F)
     return dh_frame_ortho_error_q(F) <= DH_ROT_ERROR_TOL_Q && ikq_det_pos(F);
 }
 
-static DH_NOINLINE dh_status ikq_args(const ikq_ctx *c, size_t work_len)
+static DH_NOINLINE dh_status ikq_args(const dh_robot *r, const dh_ik_params_q *p, const int32_t *work,
+                                      size_t work_len)
 {
-    const dh_robot *r = c->r;
-    const dh_ik_params_q *p = c->p;
     uint32_t i, n = r->n;
     if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
-    if (c->w == NULL || work_len < (size_t)DH_IK_WORK_Q(n)) return DH_ERR_ARG;
+    if (work == NULL || work_len < (size_t)DH_IK_WORK_Q(n)) return DH_ERR_ARG;
     if (p->max_iter == 0u || p->mask == 0u || (p->mask & ~(uint32_t)DH_IK_FULL) != 0u) return DH_ERR_ARG;
     if (p->tol_pos < 0 || p->tol_rot < 0 || p->w_rot <= 0) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_UNAVAILABLE;
@@ -248,7 +248,7 @@ static DH_NOINLINE dh_status ikq_args(const ikq_ctx *c, size_t work_len)
 /* L, the shift sp, w = min(w_rot, L) and the damping bias into the state. */
 static DH_NOINLINE void ikq_scales(const ikq_ctx *c)
 {
-    int32_t *S = c->w + OFF_S(c->n);
+    int32_t *S = c->w + OFF_S(c->r->n);
     const uint32_t L = ikq_length(c->r);
     const uint32_t w = ((uint32_t)c->p->w_rot < L) ? (uint32_t)c->p->w_rot : L;
     const uint32_t big = (L > 0x3FFFFFFFu) ? 0xFFFFFFFFu : 2u * L;
@@ -316,19 +316,18 @@ static DH_NOINLINE int ikq_hopeless(const ikq_ctx *c, int64_t R)
 static DH_NOINLINE void ikq_init(ikq_ctx *c)
 {
     uint32_t i;
-    c->n = c->r->n;
-    c->st->iter = 0u;
-    c->st->stall = 0u;
-    c->st->polish = 0u;
-    c->st->rng = 0x2545F491u;
-    c->st->cs = 0u;
-    c->st->mode = (uint8_t)M_FIRST;
-    c->st->conv = 0u;
-    c->st->end = 0u;
-    c->st->best_kind = K_NONE;
-    c->st->hopeless = 0u;
-    c->st->restarts = c->p->restarts;
-    for (i = 0; i < c->n; i++) c->w[OFF_Q(c->n, 1u) + i] = ikq_clamp(&c->r->joint[i], c->q0[i]);
+    IKQ_ST(c)->iter = 0u;
+    IKQ_ST(c)->stall = 0u;
+    IKQ_ST(c)->polish = 0u;
+    IKQ_ST(c)->rng = 0x2545F491u;
+    IKQ_ST(c)->cs = 0u;
+    IKQ_ST(c)->mode = (uint8_t)M_FIRST;
+    IKQ_ST(c)->conv = 0u;
+    IKQ_ST(c)->end = 0u;
+    IKQ_ST(c)->best_kind = K_NONE;
+    IKQ_ST(c)->hopeless = 0u;
+    IKQ_ST(c)->restarts = c->p->restarts;
+    for (i = 0; i < c->r->n; i++) c->w[OFF_Q(c->r->n, 1u) + i] = ikq_clamp(&c->r->joint[i], c->w[OFF_Q0(c->r->n) + i]);
 }
 
 /* ---- orientation error ---------------------------------------------------- */
@@ -421,8 +420,8 @@ static DH_NOINLINE void ikq_dirscale(int32_t *R)
 /* a(dR) of the evaluated frame into R_W (Q3.29), three blocks in a row. */
 static DH_NOINLINE void ikq_rotvec(const ikq_ctx *c)
 {
-    int32_t *R = c->w + OFF_R(c->n);
-    ikq_dr(c->target, (const dh_frame_q *)(const void *)(c->w + OFF_F(c->n)), R);
+    int32_t *R = c->w + OFF_R(c->r->n);
+    ikq_dr(c->target, (const dh_frame_q *)(const void *)(c->w + OFF_F(c->r->n)), R);
     if (ikq_axis(R)) ikq_dirscale(R);
 }
 
@@ -431,9 +430,9 @@ static DH_NOINLINE void ikq_rotvec(const ikq_ctx *c)
 /* Position part of the trial slot's error: es[0..2] and S_TEP. */
 static DH_NOINLINE void ikq_pos_err(const ikq_ctx *c)
 {
-    const uint32_t n = c->n, mask = c->p->mask;
+    const uint32_t n = c->r->n, mask = c->p->mask;
     const int32_t *Fp = c->w + OFF_F(n) + 9u;   /* dh_frame_q p */
-    int32_t *es = c->w + OFF_E(n, c->st->cs ^ 1u), *S = c->w + OFF_S(n);
+    int32_t *es = c->w + OFF_E(n, IKQ_ST(c)->cs ^ 1u), *S = c->w + OFF_S(n);
     const int sp = S[S_SP];
     uint32_t k;
     for (k = 0; k < 3u; k++) {
@@ -452,9 +451,9 @@ static DH_NOINLINE void ikq_pos_err(const ikq_ctx *c)
  * S_TER, and E of the whole error into S_TE. */
 static DH_NOINLINE void ikq_rot_err(const ikq_ctx *c)
 {
-    const uint32_t n = c->n, mask = c->p->mask;
+    const uint32_t n = c->r->n, mask = c->p->mask;
     const int32_t *wr = c->w + OFF_R(n) + R_W;
-    int32_t *es = c->w + OFF_E(n, c->st->cs ^ 1u), *S = c->w + OFF_S(n);
+    int32_t *es = c->w + OFF_E(n, IKQ_ST(c)->cs ^ 1u), *S = c->w + OFF_S(n);
     uint64_t r2 = 0u;
     int64_t E = 0;
     uint32_t k, h;
@@ -479,9 +478,9 @@ static DH_NOINLINE void ikq_rot_err(const ikq_ctx *c)
  * z (w >> sp) (revolute) or 0, masked rows 0. */
 static DH_NOINLINE void ikq_weigh(const ikq_ctx *c)
 {
-    const uint32_t n = c->n, mask = c->p->mask;
-    const int32_t *J = c->w + OFF_J(n, c->st->cs), *S = c->w + OFF_S(n);
-    int32_t *B = c->w + OFF_J(n, c->st->cs ^ 1u);
+    const uint32_t n = c->r->n, mask = c->p->mask;
+    const int32_t *J = c->w + OFF_J(n, IKQ_ST(c)->cs), *S = c->w + OFF_S(n);
+    int32_t *B = c->w + OFF_J(n, IKQ_ST(c)->cs ^ 1u);
     const int32_t sp = S[S_SP], Ls = S[S_LS], Ws = S[S_WS];
     uint32_t i, k;
     for (k = 0; k < 6u; k++) {
@@ -505,7 +504,7 @@ static DH_NOINLINE void ikq_weigh(const ikq_ctx *c)
 }
 
 /* (B^T B)_ij, exact (|B| < 2^29: the sum is below 2^61). */
-static int64_t ikq_dot6(const int32_t *B, uint32_t n, uint32_t i, uint32_t j)
+DH_INLINE int64_t ikq_dot6(const int32_t *B, uint32_t n, uint32_t i, uint32_t j)
 {
     int64_t h = 0;
     uint32_t k;
@@ -519,9 +518,9 @@ static int64_t ikq_dot6(const int32_t *B, uint32_t n, uint32_t i, uint32_t j)
  * (dh_ik.c). Returns the bit length of |g_j| 2^-c_j (-64 for g_j = 0). */
 static DH_NOINLINE int ikq_diag(const ikq_ctx *c, uint32_t j)
 {
-    const uint32_t n = c->n;
+    const uint32_t n = c->r->n;
     int32_t *w = c->w;
-    const int32_t *B = w + OFF_J(n, c->st->cs ^ 1u), *es = w + OFF_E(n, c->st->cs), *S = w + OFF_S(n);
+    const int32_t *B = w + OFF_J(n, IKQ_ST(c)->cs ^ 1u), *es = w + OFF_E(n, IKQ_ST(c)->cs), *S = w + OFF_S(n);
     const int mu = S[S_MU];
     int64_t h = 0, g = 0, lam, E;
     uint32_t k;
@@ -543,8 +542,8 @@ static DH_NOINLINE int ikq_diag(const ikq_ctx *c, uint32_t j)
 /* H'_ij = (B^T B)_ij 2^-(c_i + c_j) for i > j, both free (else 0). */
 static DH_NOINLINE void ikq_offdiag(const ikq_ctx *c, uint32_t free_bits)
 {
-    const uint32_t n = c->n;
-    const int32_t *B = c->w + OFF_J(n, c->st->cs ^ 1u), *C = c->w + OFF_C(n);
+    const uint32_t n = c->r->n;
+    const int32_t *B = c->w + OFF_J(n, IKQ_ST(c)->cs ^ 1u), *C = c->w + OFF_C(n);
     int32_t *H = c->w + OFF_H(n);
     uint32_t i, j;
     for (i = 1u; i < n; i++)
@@ -559,7 +558,7 @@ static DH_NOINLINE void ikq_offdiag(const ikq_ctx *c, uint32_t free_bits)
  * returns the largest bit length of D g. */
 static DH_NOINLINE int ikq_normal(const ikq_ctx *c, uint32_t free_bits)
 {
-    const uint32_t n = c->n;
+    const uint32_t n = c->r->n;
     uint32_t j;
     int eg = -64;
     for (j = 0; j < n; j++) {
@@ -579,7 +578,7 @@ static DH_NOINLINE int ikq_normal(const ikq_ctx *c, uint32_t free_bits)
 /* Y = g' = D g 2^-eg (frozen joints: g = 0). */
 static DH_NOINLINE void ikq_rhs(const ikq_ctx *c, int eg)
 {
-    const uint32_t n = c->n;
+    const uint32_t n = c->r->n;
     int32_t *Y = c->w + OFF_Y(n);
     const int32_t *C = c->w + OFF_C(n);
     uint32_t j;
@@ -607,7 +606,7 @@ static int32_t ikq_div(const int32_t *w, uint32_t n, uint32_t j, int64_t s60, in
  * to 2^-20 when below, its reciprocal square root, then L_ij, i > j. */
 static DH_NOINLINE int ikq_chol_col(const ikq_ctx *c, uint32_t j)
 {
-    const uint32_t n = c->n;
+    const uint32_t n = c->r->n;
     int32_t *w = c->w, *H = w + OFF_H(n);
     int64_t d = (int64_t)((uint64_t)(int64_t)H[j * n + j] << 30);
     uint32_t i, k;
@@ -629,7 +628,7 @@ static DH_NOINLINE int ikq_chol_col(const ikq_ctx *c, uint32_t j)
 /* L z = g', L^T y = z in Y; -1 when a value does not fit. */
 static DH_NOINLINE int ikq_solve(const ikq_ctx *c)
 {
-    const uint32_t n = c->n;
+    const uint32_t n = c->r->n;
     int32_t *w = c->w, *H = w + OFF_H(n), *Y = w + OFF_Y(n);
     uint32_t i, k;
     int bad = 0;
@@ -650,7 +649,7 @@ static DH_NOINLINE int ikq_solve(const ikq_ctx *c)
  * degrees, prismatic that many L in dh_qpos; saturated. */
 static DH_NOINLINE void ikq_step(const ikq_ctx *c, int eg)
 {
-    const uint32_t n = c->n;
+    const uint32_t n = c->r->n;
     const int32_t *w = c->w, *Y = w + OFF_Y(n), *C = w + OFF_C(n);
     int32_t *dq = c->w + OFF_DQ(n);
     uint32_t i;
@@ -675,8 +674,8 @@ static DH_NOINLINE void ikq_step(const ikq_ctx *c, int eg)
 /* Free joints on a bound whose step points outward (bits). */
 static DH_NOINLINE uint32_t ikq_freeze(const ikq_ctx *c, uint32_t free_bits)
 {
-    const uint32_t n = c->n;
-    const int32_t *qa = c->w + OFF_Q(n, c->st->cs), *dq = c->w + OFF_DQ(n);
+    const uint32_t n = c->r->n;
+    const int32_t *qa = c->w + OFF_Q(n, IKQ_ST(c)->cs), *dq = c->w + OFF_DQ(n);
     uint32_t i, frozen = 0u;
     for (i = 0; i < n; i++) {
         const dh_joint *jt = &c->r->joint[i];
@@ -688,9 +687,9 @@ static DH_NOINLINE uint32_t ikq_freeze(const ikq_ctx *c, uint32_t free_bits)
 
 static DH_NOINLINE int ikq_apply(const ikq_ctx *c, uint32_t free_bits)
 {
-    const uint32_t n = c->n;
-    const int32_t *qa = c->w + OFF_Q(n, c->st->cs), *dq = c->w + OFF_DQ(n);
-    int32_t *qb = c->w + OFF_Q(n, c->st->cs ^ 1u);
+    const uint32_t n = c->r->n;
+    const int32_t *qa = c->w + OFF_Q(n, IKQ_ST(c)->cs), *dq = c->w + OFF_DQ(n);
+    int32_t *qb = c->w + OFF_Q(n, IKQ_ST(c)->cs ^ 1u);
     uint32_t i;
     int moved = 0;
     for (i = 0; i < n; i++) {
@@ -703,28 +702,28 @@ static DH_NOINLINE int ikq_apply(const ikq_ctx *c, uint32_t free_bits)
 
 static DH_NOINLINE void ikq_sample(ikq_ctx *c)
 {
-    const int32_t L = c->w[OFF_S(c->n) + S_L];
-    int32_t *qo = c->w + OFF_Q(c->n, c->st->cs ^ 1u);
+    const int32_t L = c->w[OFF_S(c->r->n) + S_L];
+    int32_t *qo = c->w + OFF_Q(c->r->n, IKQ_ST(c)->cs ^ 1u);
     uint32_t i;
-    for (i = 0; i < c->n; i++) {
+    for (i = 0; i < c->r->n; i++) {
         const dh_joint *jt = &c->r->joint[i];
-        uint32_t x = c->st->rng;
+        uint32_t x = IKQ_ST(c)->rng;
         int32_t u;
         x ^= x << 13;
         x ^= x >> 17;
         x ^= x << 5;
-        c->st->rng = x;
+        IKQ_ST(c)->rng = x;
         u = (int32_t)(x >> 1);      /* [0, 2^31) */
         if (jt->qmin_q <= jt->qmax_q) {
             const uint32_t range = (uint32_t)jt->qmax_q - (uint32_t)jt->qmin_q;
             qo[i] = ikq_clamp(jt, (int64_t)jt->qmin_q + (dh_q_mul64((int32_t)(range >> 1), u) >> 30));
         } else if (jt->type == DH_JOINT_REVOLUTE) {
-            qo[i] = ikq_clamp(jt, (int64_t)c->q0[i] + (dh_q_mul64(u, 360 * 65536) >> 31) - 180 * 65536);
+            qo[i] = ikq_clamp(jt, (int64_t)c->w[OFF_Q0(c->r->n) + i] + (dh_q_mul64(u, 360 * 65536) >> 31) - 180 * 65536);
         } else {
-            qo[i] = ikq_clamp(jt, (int64_t)c->q0[i] + (dh_q_mul64(u, L) >> 30) - L);
+            qo[i] = ikq_clamp(jt, (int64_t)c->w[OFF_Q0(c->r->n) + i] + (dh_q_mul64(u, L) >> 30) - L);
         }
     }
-    c->st->mode = (uint8_t)M_RESTART;
+    IKQ_ST(c)->mode = (uint8_t)M_RESTART;
 }
 
 /* ---- acceptance (dh_ik.c) ------------------------------------------------- */
@@ -740,7 +739,7 @@ static int ikq_better(const ikq_ctx *c, const int32_t *S)
     const dh_ik_params_q *p = c->p;
     const int64_t E = ikq_get64(S, S_E), TE = ikq_get64(S, S_TE);
     int64_t a, b;
-    if (c->st->conv) return (TE < E && S[S_TEP] <= p->tol_pos && S[S_TER] <= p->tol_rot) ? 1 : 0;
+    if (IKQ_ST(c)->conv) return (TE < E && S[S_TEP] <= p->tol_pos && S[S_TER] <= p->tol_rot) ? 1 : 0;
     if (TE < E) {
         a = TE;
         b = E;
@@ -758,7 +757,7 @@ static int ikq_better(const ikq_ctx *c, const int32_t *S)
 
 static void ikq_take(ikq_ctx *c, int32_t *S)
 {
-    c->st->cs = (uint8_t)(c->st->cs ^ 1u);
+    IKQ_ST(c)->cs = (uint8_t)(IKQ_ST(c)->cs ^ 1u);
     ikq_put64(S, S_E, ikq_get64(S, S_TE));
     S[S_EP] = S[S_TEP];
     S[S_ER] = S[S_TER];
@@ -767,84 +766,84 @@ static void ikq_take(ikq_ctx *c, int32_t *S)
 static DH_NOINLINE unsigned ikq_update(ikq_ctx *c, int ev)
 {
     const dh_ik_params_q *p = c->p;
-    int32_t *S = c->w + OFF_S(c->n);
-    const int acc = (c->st->mode == M_TRIAL && ev == EV_OK) ? ikq_better(c, S) : 0;
-    if (c->st->mode == M_FIRST) {
+    int32_t *S = c->w + OFF_S(c->r->n);
+    const int acc = (IKQ_ST(c)->mode == M_TRIAL && ev == EV_OK) ? ikq_better(c, S) : 0;
+    if (IKQ_ST(c)->mode == M_FIRST) {
         if (ev != EV_OK) return A_FAIL;
     } else {
-        c->st->iter++;
+        IKQ_ST(c)->iter++;
     }
-    c->st->end = 0u;
-    if (c->st->mode != M_TRIAL) {
+    IKQ_ST(c)->end = 0u;
+    if (IKQ_ST(c)->mode != M_TRIAL) {
         if (ev != EV_OK) {
-            if (c->st->restarts > 0u && c->st->iter < p->max_iter) {
-                c->st->restarts--;
+            if (IKQ_ST(c)->restarts > 0u && IKQ_ST(c)->iter < p->max_iter) {
+                IKQ_ST(c)->restarts--;
                 return A_RETRY;
             }
             return A_BREAK;
         }
         ikq_take(c, S);
         S[S_MU] = 0;
-        c->st->stall = 0u;
-        c->st->polish = 0u;
-        c->st->conv = (uint8_t)ikq_met(S, p);
+        IKQ_ST(c)->stall = 0u;
+        IKQ_ST(c)->polish = 0u;
+        IKQ_ST(c)->conv = (uint8_t)ikq_met(S, p);
     } else if (acc != 0) {
-        c->st->stall = (acc == 1) ? 0u : c->st->stall + 1u;
+        IKQ_ST(c)->stall = (acc == 1) ? 0u : IKQ_ST(c)->stall + 1u;
         ikq_take(c, S);
-        if (c->st->conv) c->st->polish++;
+        if (IKQ_ST(c)->conv) IKQ_ST(c)->polish++;
         if (S[S_MU] > IKQ_MU_MIN) S[S_MU]--;
-        if (!c->st->conv && ikq_met(S, p)) {
-            c->st->conv = 1u;
+        if (!IKQ_ST(c)->conv && ikq_met(S, p)) {
+            IKQ_ST(c)->conv = 1u;
             S[S_MU] = IKQ_MU_MIN;
         }
     } else {
-        c->st->stall++;
+        IKQ_ST(c)->stall++;
         S[S_MU] += IKQ_MU_UP;
-        if (c->st->conv) c->st->polish = IKQ_POLISH_STEPS;
+        if (IKQ_ST(c)->conv) IKQ_ST(c)->polish = IKQ_POLISH_STEPS;
     }
-    if (c->st->mode == M_TRIAL && !c->st->conv && (c->st->stall >= IKQ_STALL_STEPS || S[S_MU] > IKQ_MU_MAX))
-        c->st->end = (uint8_t)K_STALL;
-    c->st->mode = (uint8_t)M_TRIAL;
-    if (c->st->end == 0u && !(c->st->conv && c->st->polish + 1u > IKQ_POLISH_STEPS) && c->st->iter < p->max_iter) return A_STEP;
+    if (IKQ_ST(c)->mode == M_TRIAL && !IKQ_ST(c)->conv && (IKQ_ST(c)->stall >= IKQ_STALL_STEPS || S[S_MU] > IKQ_MU_MAX))
+        IKQ_ST(c)->end = (uint8_t)K_STALL;
+    IKQ_ST(c)->mode = (uint8_t)M_TRIAL;
+    if (IKQ_ST(c)->end == 0u && !(IKQ_ST(c)->conv && IKQ_ST(c)->polish + 1u > IKQ_POLISH_STEPS) && IKQ_ST(c)->iter < p->max_iter) return A_STEP;
     return A_OVER;
 }
 
 static DH_NOINLINE int ikq_damp(ikq_ctx *c)
 {
-    int32_t *mu = c->w + OFF_S(c->n) + S_MU;
-    c->st->stall++;
+    int32_t *mu = c->w + OFF_S(c->r->n) + S_MU;
+    IKQ_ST(c)->stall++;
     *mu += IKQ_MU_UP;
-    return !c->st->conv && c->st->stall < IKQ_STALL_STEPS && *mu <= IKQ_MU_MAX;
+    return !IKQ_ST(c)->conv && IKQ_ST(c)->stall < IKQ_STALL_STEPS && *mu <= IKQ_MU_MAX;
 }
 
 static DH_NOINLINE int ikq_record(ikq_ctx *c)
 {
-    int32_t *S = c->w + OFF_S(c->n);
-    const unsigned kind = c->st->conv ? K_CONV : (c->st->end != 0u ? c->st->end : K_CUT);
+    int32_t *S = c->w + OFF_S(c->r->n);
+    const unsigned kind = IKQ_ST(c)->conv ? K_CONV : (IKQ_ST(c)->end != 0u ? IKQ_ST(c)->end : K_CUT);
     uint32_t i;
-    if (c->st->best_kind == K_NONE || (kind == K_CONV && c->st->best_kind != K_CONV) ||
-        ((kind == K_CONV) == (c->st->best_kind == K_CONV) && ikq_get64(S, S_E) < ikq_get64(S, S_BE))) {
-        c->st->best_kind = (uint8_t)kind;
+    if (IKQ_ST(c)->best_kind == K_NONE || (kind == K_CONV && IKQ_ST(c)->best_kind != K_CONV) ||
+        ((kind == K_CONV) == (IKQ_ST(c)->best_kind == K_CONV) && ikq_get64(S, S_E) < ikq_get64(S, S_BE))) {
+        IKQ_ST(c)->best_kind = (uint8_t)kind;
         ikq_put64(S, S_BE, ikq_get64(S, S_E));
         S[S_BEP] = S[S_EP];
         S[S_BER] = S[S_ER];
-        for (i = 0; i < c->n; i++) c->w[OFF_QBEST(c->n) + i] = c->w[OFF_Q(c->n, c->st->cs) + i];
+        for (i = 0; i < c->r->n; i++) c->w[OFF_QBEST(c->r->n) + i] = c->w[OFF_Q(c->r->n, IKQ_ST(c)->cs) + i];
     }
-    if (c->st->conv || c->st->end == 0u || c->st->restarts == 0u || c->st->iter >= c->p->max_iter) return 1;
-    c->st->restarts--;
+    if (IKQ_ST(c)->conv || IKQ_ST(c)->end == 0u || IKQ_ST(c)->restarts == 0u || IKQ_ST(c)->iter >= c->p->max_iter) return 1;
+    IKQ_ST(c)->restarts--;
     return 0;
 }
 
 static DH_NOINLINE dh_status ikq_finish(const ikq_ctx *c, int32_t *q, dh_ik_result_q *res)
 {
-    const int32_t *S = c->w + OFF_S(c->n);
+    const int32_t *S = c->w + OFF_S(c->r->n);
     uint32_t i;
-    for (i = 0; i < c->n; i++) q[i] = c->w[OFF_QBEST(c->n) + i];
-    res->iterations = c->st->iter;
+    for (i = 0; i < c->r->n; i++) q[i] = c->w[OFF_QBEST(c->r->n) + i];
+    res->iterations = IKQ_ST(c)->iter;
     res->err_pos = S[S_BEP];
     res->err_rot = S[S_BER];
-    if (c->st->best_kind == K_CONV) return DH_OK;
-    if (c->st->hopeless || c->st->best_kind == K_STALL) return DH_ERR_UNREACHABLE;
+    if (IKQ_ST(c)->best_kind == K_CONV) return DH_OK;
+    if (IKQ_ST(c)->hopeless || IKQ_ST(c)->best_kind == K_STALL) return DH_ERR_UNREACHABLE;
     return DH_ERR_NO_CONVERGENCE;
 }
 
@@ -853,7 +852,7 @@ static DH_NOINLINE dh_status ikq_finish(const ikq_ctx *c, int32_t *q, dh_ik_resu
  * stack). */
 static DH_NOINLINE int ikq_eval(const ikq_ctx *c)
 {
-    const uint32_t n = c->n;
+    const uint32_t n = c->r->n;
     ikq_pos_err(c);
     c->w[OFF_S(n) + S_TEP] = (int32_t)ikq_dist(c->target->p, c->w + OFF_F(n) + 9u, c->p->mask);
     if (ikq_rot_mode(c->p->mask)) ikq_rotvec(c);
@@ -866,7 +865,7 @@ static DH_NOINLINE int ikq_eval(const ikq_ctx *c)
  * with more damping. 1 when a trial point was made. */
 static DH_NOINLINE int ikq_make_step(ikq_ctx *c)
 {
-    const uint32_t n = c->n;
+    const uint32_t n = c->r->n;
     int k = 0, again = 1;
     ikq_weigh(c);
     while (again != 0) {
@@ -899,8 +898,9 @@ static DH_NOINLINE int ikq_make_step(ikq_ctx *c)
 dh_status dh_ik_q(const dh_robot *r, const dh_frame_q *target, const int32_t *q0, const dh_ik_params_q *p,
                   int32_t *work, size_t work_len, int32_t *q, dh_ik_result_q *res)
 {
-    ikq_ctx c;
+    ikq_ctx cx, *c = &cx;
     dh_status st;
+    uint32_t i;
 
     DH_ASSERT(r != NULL);
     DH_ASSERT(target != NULL);
@@ -909,46 +909,45 @@ dh_status dh_ik_q(const dh_robot *r, const dh_frame_q *target, const int32_t *q0
     DH_ASSERT(p != NULL);
     DH_ASSERT(res != NULL);
 
-    c.r = r;
-    c.target = target;
-    c.p = p;
-    c.q0 = q0;
-    c.w = work;
-    st = ikq_args(&c, work_len);
+    st = ikq_args(r, p, work, work_len);
     if (st != DH_OK) return st;
     if (ikq_rot_mode(p->mask) && !ikq_rot_ok(target)) return DH_ERR_NOT_RIGID;
-    c.st = (ikq_state *)(void *)(work + OFF_ST(r->n));
-    ikq_init(&c);
-    ikq_scales(&c);
-    if (ikq_hopeless(&c, ikq_reach(r, ikq_tool_len(r)))) {
-        c.st->hopeless = 1u;
-        if (c.st->restarts > IKQ_HOPELESS_RESTARTS) c.st->restarts = IKQ_HOPELESS_RESTARTS;
+    c->r = r;
+    c->target = target;
+    c->p = p;
+    c->w = work;
+    for (i = 0; i < r->n; i++) work[OFF_Q0(r->n) + i] = q0[i];
+    ikq_init(c);
+    ikq_scales(c);
+    if (ikq_hopeless(c, ikq_reach(r, ikq_tool_len(r)))) {
+        IKQ_ST(c)->hopeless = 1u;
+        if (IKQ_ST(c)->restarts > IKQ_HOPELESS_RESTARTS) IKQ_ST(c)->restarts = IKQ_HOPELESS_RESTARTS;
     }
     for (;;) {
-        const uint32_t t = c.st->cs ^ 1u;
-        dh_frame_q *F = (dh_frame_q *)(void *)(work + OFF_F(c.n));
+        const uint32_t t = IKQ_ST(c)->cs ^ 1u;
+        dh_frame_q *F = (dh_frame_q *)(void *)(work + OFF_F(c->r->n));
         int ev = EV_FK;
         unsigned act;
-        if (dh_kin_jac_q_(r, work + OFF_Q(c.n, t), work + OFF_J(c.n, t), F) == 0) {
+        if (dh_kin_jac_q_(r, work + OFF_Q(c->r->n, t), work + OFF_J(c->r->n, t), F) == 0) {
             /* a chain of DH links is a rotation: only a base or tool can make it none */
-            if (c.st->mode == M_FIRST && ikq_rot_mode(p->mask) && (r->flags & IKQ_ID_BOTH) != IKQ_ID_BOTH &&
+            if (IKQ_ST(c)->mode == M_FIRST && ikq_rot_mode(p->mask) && (r->flags & IKQ_ID_BOTH) != IKQ_ID_BOTH &&
                 !ikq_rot_ok(F))
                 ev = EV_RIGID;
             else
-                ev = ikq_eval(&c);
+                ev = ikq_eval(c);
         }
-        act = ikq_update(&c, ev);
+        act = ikq_update(c, ev);
         if (act == A_FAIL) return (ev == EV_RIGID) ? DH_ERR_NOT_RIGID : DH_ERR_OVERFLOW;
         if (act == A_RETRY) {
-            ikq_sample(&c);
+            ikq_sample(c);
             continue;
         }
         if (act == A_STEP) {
-            if (ikq_make_step(&c)) continue;
-            c.st->end = (uint8_t)K_STALL;
+            if (ikq_make_step(c)) continue;
+            IKQ_ST(c)->end = (uint8_t)K_STALL;
         }
-        if (act == A_BREAK || ikq_record(&c)) break;
-        ikq_sample(&c);
+        if (act == A_BREAK || ikq_record(c)) break;
+        ikq_sample(c);
     }
-    return ikq_finish(&c, q, res);
+    return ikq_finish(c, q, res);
 }

@@ -358,8 +358,8 @@ DH_INLINE void dh_q_norm_even(uint64_t v, int32_t *m, int *t)
     *m = (sh >= 0) ? (int32_t)(v >> (unsigned)sh) : (int32_t)(v << (unsigned)(-sh));
 }
 
-/** sqrt(v) for any uint64 v, within 2.2e-5 relative (0 for 0): the
- *  normalised v times its reciprocal square root (two Newton steps). */
+/** sqrt(v) for any uint64 v, within 2^-28 relative (0 for 0): the
+ *  normalised v times its reciprocal square root (three Newton steps). */
 static inline uint32_t dh_q_sqrt_u64(uint64_t v)
 {
     int32_t m, y;
@@ -367,7 +367,7 @@ static inline uint32_t dh_q_sqrt_u64(uint64_t v)
     uint64_t r;
     if (v == 0u) return 0u;
     dh_q_norm_even(v, &m, &t);
-    y = dh_q_rsqrt29(m, 2u);
+    y = dh_q_rsqrt29(m, 3u);
     /* sqrt(m) = m y / 2^44 (m y < 2^61); times 2^(t/2) */
     r = (uint64_t)dh_q_mul64(m, y);
     sh = 44 - t / 2;

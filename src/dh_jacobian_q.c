@@ -209,14 +209,21 @@ static DH_NOINLINE int jacq_chain(const dh_robot *r, const int32_t *q, int32_t *
     return ovf;
 }
 
-/* The chain, the tool and the columns into the caller's F (dh_kin_impl.h:
- * dh_ik_q evaluates with F in its workspace). */
-int dh_kin_jac_q_(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *F)
+/* The chain, the tool and the columns into F (inlined into the public
+ * Jacobians: no frame of its own there). */
+DH_INLINE int jacq_body(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *F)
 {
     int ovf = jacq_chain(r, q, J, F);
     ovf |= dh_fk_tool_q_(r, F);
     ovf |= jacq_cols(r, F->p, J);
     return ovf;
+}
+
+/* The same for dh_ik_q, which evaluates with F in its workspace
+ * (dh_kin_impl.h). */
+int dh_kin_jac_q_(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *F)
+{
+    return jacq_body(r, q, J, F);
 }
 
 /* Shared body of the two public Jacobians (tool != 0: tool frame). */
@@ -232,7 +239,7 @@ DH_INLINE dh_status jacq_run(const dh_robot *r, const int32_t *q, int32_t *J, dh
 
     st = jacq_check(r);
     if (st != DH_OK) return st;
-    ovf = dh_kin_jac_q_(r, q, J, &F);
+    ovf = jacq_body(r, q, J, &F);
     if (tool) ovf |= jacq_to_tool(&F, J, r->n);
     if (T_end != NULL) *T_end = F;
     return ovf ? DH_ERR_OVERFLOW : DH_OK;

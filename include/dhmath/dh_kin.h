@@ -267,12 +267,12 @@ typedef struct {
     int32_t err_rot;     /**< masked orientation error norm, Q2.30 rad (saturated at INT32_MAX, 2 rad) */
 } dh_ik_result_q;
 
-/** Workspace int32 words needed by dh_ik_q for n joints: n^2 + 22 n + 76
- *  (244 for n = 6, 279 for n = 7): both Jacobians, the equilibrated
+/** Workspace int32 words needed by dh_ik_q for n joints: n^2 + 23 n + 76
+ *  (250 for n = 6, 286 for n = 7): both Jacobians, the equilibrated
  *  normal matrix and its factor, the frame, the orientation error's
- *  scratch and the solver state (so that dh_ik_q stays within its stack
- *  budget). */
-#define DH_IK_WORK_Q(n) ((n) * (n) + 22u * (n) + 76u)
+ *  scratch, the solver state and a copy of q0 (so that dh_ik_q stays
+ *  within its stack budget). */
+#define DH_IK_WORK_Q(n) ((n) * (n) + 23u * (n) + 76u)
 
 /**
  * @brief Fixed-point defaults for robot r (integer only): max_iter 500,
