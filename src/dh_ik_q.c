@@ -286,7 +286,7 @@ static DH_NOINLINE uint32_t ikq_base_gain(const dh_robot *r)
 static DH_NOINLINE int64_t ikq_reach(const dh_robot *r, uint32_t tool_len)
 {
     int64_t R = 0;
-    uint32_t i;
+    uint32_t i, gain;
     for (i = 0; i < r->n; i++) {
         const dh_joint *jt = &r->joint[i];
         R += dh_q_abs_u32(jt->a_q);
@@ -303,8 +303,12 @@ static DH_NOINLINE int64_t ikq_reach(const dh_robot *r, uint32_t tool_len)
         }
     }
     R += tool_len;
-    /* R < 2^37, gain < 2^31 (Q2.28): R gain / 2^28 plus 1e-4 R */
-    return (int64_t)(((uint64_t)R * ikq_base_gain(r)) >> 28) + (R >> 13) + 1;
+    /* R < 2^37, gain < 2^31 (Q2.28): R gain / 2^28 plus 1e-4 R, the
+     * product exact below R = 2^32 and of R / 64 above (no wrap; the lost
+     * low bits of R are far below the slack there) */
+    gain = ikq_base_gain(r);
+    if (R < ((int64_t)1 << 32)) return (int64_t)(((uint64_t)R * gain) >> 28) + (R >> 13) + 1;
+    return (int64_t)((((uint64_t)R >> 6) * gain) >> 22) + (R >> 13) + 1;
 }
 
 static DH_NOINLINE int ikq_hopeless(const ikq_ctx *c, int64_t R)

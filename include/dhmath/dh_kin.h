@@ -281,9 +281,9 @@ typedef struct {
  * prismatic travel (limited joints) and |tool_q p| in dh_qpos (one length
  * unit if that is 0; saturated at INT32_MAX). Reads only r's fixed fields.
  * The step budget is a quarter of dh_ik_params_default's: it bounds the
- * worst case (a step costs about 30,000 instructions on a Cortex-M0,
- * docs/performance_target.md) at a small cost in success rate for
- * near-singular targets (docs/accuracy_kin.md).
+ * worst case (a step costs about 45,000 instructions on a Cortex-M0 for
+ * the Puma 560, tools/target_bench.sh) at a small cost in success rate
+ * for near-singular targets (docs/accuracy_kin.md).
  */
 void dh_ik_params_default_q(const dh_robot *r, dh_ik_params_q *p);
 
