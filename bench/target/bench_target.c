@@ -566,6 +566,52 @@ static void bt_ik(void)
     }
 }
 
+/* ---- fixed-point inverse kinematics: one solve at a time ------------------- */
+
+#define BT_NIKQ 64u
+
+/* As bt_ik on the Puma 560 in mm, all integer: target = dh_fk_q of a random
+ * Q configuration within 80 % of the limits, start 10..20 deg away on every
+ * joint, dh_ik_params_default_q with tolerances 0.9e-3 mm and 0.9e-5 rad (full pose).
+ * The workspace is on the stack: the micro:bit's RAM has no room for it in .bss. */
+static BT_NOINLINE void bt_ik_q(void)
+{
+    int32_t bt_ikq_work[DH_IK_WORK_Q(6u)];
+    dh_ik_params_q p;
+    dh_ik_result_q res;
+    int32_t qt[6], q0[6], q[6];
+    dh_frame_q target;
+    uint64_t t0, t1, tnull;
+    uint32_t k, j;
+    dh_ik_params_default_q(&bt_puma_mm, &p);
+    p.tol_pos = DH_QPOS(0.9e-3);    /* 0.9 of 1e-3 mm, 1e-5 rad: room for dh_fk_q's error */
+    p.tol_rot = DH_Q30(0.9e-5);
+    t0 = bt_now();
+    t1 = bt_now();
+    tnull = t1 - t0;
+    for (k = 0; k < BT_NIKQ; k++) {
+        dh_status st;
+        for (j = 0; j < 6u; j++) {
+            float lo = 0.8f * bt_puma_tab[j][3], hi = 0.8f * bt_puma_tab[j][4];
+            float off = bt_uniform(10.0f, 20.0f);
+            float v = bt_uniform(lo, hi);
+            qt[j] = bt_to_q16(v);
+            q0[j] = bt_to_q16(v + ((bt_rand() & 1u) ? off : -off));
+        }
+        st = dh_fk_q(&bt_puma_mm, qt, &target);
+        if (st != DH_OK) {
+            bt_status |= (uint32_t)st;
+            continue;
+        }
+        t0 = bt_now();
+        st = dh_ik_q(&bt_puma_mm, &target, q0, &p, bt_ikq_work, sizeof bt_ikq_work / sizeof bt_ikq_work[0], q,
+                     &res);
+        t1 = bt_now();
+        printf("BT ikq|%lu|%d|%lu|%llu|%llu|%ld\n", (unsigned long)k, (int)st, (unsigned long)res.iterations,
+               (unsigned long long)(t1 - t0), (unsigned long long)tnull, (long)res.err_pos);
+    }
+}
+
 /* ---- sanity checks (the numbers mean something only if these pass) -------- */
 
 static int bt_check(const char *name, int ok)
@@ -651,6 +697,7 @@ int main(void)
         bt_measure(&ops[k]);
     }
     bt_ik();
+    bt_ik_q();
     fail = bt_checks();
     printf("BT stack|%lu|%lu\n", (unsigned long)bt_stack_used(),
            (unsigned long)((uintptr_t)__stack_top__ - (uintptr_t)__stack_limit__));

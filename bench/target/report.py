@@ -57,6 +57,7 @@ class Run:
         self.disasm = None
         self.ops = []        # (group, name, n, per_call)
         self.ik = []         # (k, status, iterations, instructions, err_nm)
+        self.ikq = []        # (k, status, iterations, instructions, err_pos LSB)
         self.checks = []
         self.core = self.opt = self.gcc = self.counter = self.unit = "?"
         self.scale = None
@@ -101,6 +102,10 @@ class Run:
                     ticks = int(p[4]) - int(p[5])
                     self.ik.append((int(p[1]), int(p[2]), int(p[3]),
                                     float(ticks * self.scale), int(p[6])))
+                elif kind == "ikq":
+                    ticks = int(p[4]) - int(p[5])
+                    self.ikq.append((int(p[1]), int(p[2]), int(p[3]),
+                                     float(ticks * self.scale), int(p[6])))
                 elif kind == "check":
                     self.checks.append((p[1], p[2]))
                 elif kind == "stack":
@@ -398,6 +403,27 @@ def main():
       "`sqrtf`), and newlib's precompiled FPU variants contain VFMA instructions (seen in "
       "the disassembly of `atanf`, `__kernel_sinf`, `__kernel_cosf`), which round "
       "differently from the soft-float code; this is the likely cause.")
+    w("")
+    w("## Inverse kinematics in fixed point (`dh_ik_q`, Puma 560 in mm)")
+    w("")
+    w("Per solve: target = `dh_fk_q` of a random Q configuration within 80 % of the joint "
+      "limits, start 10-20 deg away on every joint, `dh_ik_params_default_q(robot)` with tolerances "
+      "0.9e-3 mm / 0.9e-5 rad (full pose, w_rot L/4; 0.9 of the 1e-3 mm / 1e-5 rad verified by "
+      "test/test_ik_q.c, room for the fixed FK's error). Instructions of the whole "
+      "`dh_ik_q` call (integer only).")
+    w("")
+    w("| core | solves | converged | iterations mean (min-max) | instructions per solve mean (min-max) | per iteration |")
+    w("|---|---:|---:|---|---|---:|")
+    for c, o in cols:
+        r = runs["%s-%s" % (c, o)]
+        if not r.ikq:
+            continue
+        its = [x[2] for x in r.ikq]
+        ins = [x[3] for x in r.ikq]
+        conv = sum(1 for x in r.ikq if x[1] == 0)
+        w("| %s -%s | %d | %d | %.1f (%d-%d) | %.0f (%.0f-%.0f) | %.0f |" % (
+            core_name[c], o, len(r.ikq), conv, sum(its) / len(its), min(its), max(its),
+            sum(ins) / len(ins), min(ins), max(ins), sum(ins) / max(1, sum(its))))
     w("")
     w("## What the numbers are")
     w("")

@@ -32,6 +32,7 @@ typedef struct {
     dh_quat_f32 qt[2];
     dh_vec3_q vq;
     dh_ik_params ikp;
+    dh_ik_params_q ikpq;
     char str[8];
     const dh_robot *rob;     /* read-only robot (FK, Jacobian, IK, setters copy it) */
 } diff_in;
@@ -54,10 +55,13 @@ typedef struct {
     dh_frame_q F;
     dh_vec3_f32 pts[4];
     dh_ik_params ikp;
+    dh_ik_params_q ikpq;
     char str[32];            /* string results (the pointers differ between copies) */
     /* DIFF_OUT_SMALL */
     float q[DH_MAX_JOINTS];
     dh_ik_result ikres;
+    dh_ik_result_q ikresq;
+    int32_t qi[DH_MAX_JOINTS];
     float J[6 * DH_MAX_JOINTS];
     dh_mat4_f32 Mf[DH_MAX_JOINTS];
     dh_frame_q Ff[DH_MAX_JOINTS];
@@ -77,6 +81,7 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
 
 /* IK workspace (caller-owned, contents undefined after the call) */
 #define DIFF_IK_WORK DH_IK_WORK_FLOATS(DH_MAX_JOINTS)
+#define DIFF_IKQ_WORK DH_IK_WORK_Q(DH_MAX_JOINTS)
 
 /*
  * The table: X(name, generator, count, compared bytes, comparison).
@@ -195,7 +200,9 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_ikc_f32, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_ikc_q, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_ikc_nearest_f32, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
-    X(dh_ikc_nearest_q, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS)
+    X(dh_ikc_nearest_q, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_ik_params_default_q, g_robot, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_ik_q, g_ikq, DIFF_IKQ_COUNT, DIFF_OUT_FRAMES, C_BITS)
 
 /* enum of the table rows */
 #define DIFF_ENUM(name, gen, count, len, cmp) E_##name,

@@ -33,7 +33,8 @@
  * plane transform and counted: the default build's rigid closed form for a
  * T that is rigid only within DH_MAT4_RIGID_TOL (see plane_rigid_err).
  *
- * Counts: 10^6 inputs per function (dh_ik_f32 included, DIFF_IK_COUNT).
+ * Counts: 10^6 inputs per function (dh_ik_f32 included, DIFF_IK_COUNT),
+ * 10^5 for dh_ik_q (DIFF_IKQ_COUNT).
  * DHT_SEED selects the seed (printed on failure); DHT_DIFF_DIV divides
  * every count (quick local runs); DHT_DIFF_ONLY=<substring> runs only the
  * functions whose name contains it.
@@ -53,6 +54,7 @@
 #define DIFF_IK_COUNT 1000000
 /* closed-form IK: 3 * 10^5 inputs per function (a few us per solve) */
 #define DIFF_IKC_COUNT 300000
+#define DIFF_IKQ_COUNT 100000
 
 #include "diff_api.h"
 
@@ -725,6 +727,30 @@ static void g_ik(diff_in *in)
     in->k[0] = (int32_t)rn(DIFF_IK_WORK + 1u);
     in->sel = ru() & (rn(16u) ? 1u : 3u);
 }
+static void g_ikq(diff_in *in)
+{
+    const dh_robot *r;
+    uint32_t j;
+    dh_frame_q T;
+    do {
+        r = &pool[rn(POOL_N)];
+    } while ((r->flags & DH_ROBOT_HAS_Q) == 0u && rn(8u) != 0u);
+    in->rob = r;
+    for (j = 0; j < DH_MAX_JOINTS; j++) in->qi[j] = q_q(r, j);
+    if (dh_fk_q(r, in->qi, &T) != DH_OK || rn(8u) == 0u) frame_gen(&T);
+    in->F[0] = T;
+    for (j = 0; j < DH_MAX_JOINTS; j++)
+        if (rn(2u)) in->qi[j] = (int32_t)((uint32_t)in->qi[j] + (uint32_t)((int32_t)rn(40u << 16) - (20 << 16)));
+    dh_ik_params_default_q(r, &in->ikpq);
+    in->ikpq.max_iter = 1u + rn(32u);
+    in->ikpq.restarts = rn(4u);
+    if (rn(4u) == 0u) in->ikpq.mask = rn(2u) ? DH_IK_POSITION : (rn(8u) ? rn(64u) : ru());
+    if (rn(4u) == 0u) { in->ikpq.tol_pos = (int32_t)ru() >> rn(31u); in->ikpq.tol_rot = (int32_t)ru() >> rn(31u); }
+    if (rn(8u) == 0u) in->ikpq.w_rot = (int32_t)ru();
+    if (rn(16u) == 0u) in->ikpq.max_iter = 0u;
+    in->k[0] = (int32_t)rn(DIFF_IKQ_WORK + 1u);
+    in->sel = ru() & (rn(16u) ? 1u : 3u);
+}
 
 /* closed-form IK: a target from FK of a random configuration (a singular
  * wrist at times), else a random matrix; q_ref near it or arbitrary */
@@ -747,7 +773,7 @@ static void g_ikc(diff_in *in)
     for (j = 0; j < DH_MAX_JOINTS; j++) {
         if (rn(2u)) in->q[j] += (float)rd(-30.0, 30.0);
         else if (rn(8u) == 0u) in->q[j] = q_f32(r, j);
-        if (rn(2u)) in->qi[j] += (int32_t)rn(60u << 16) - (30 << 16);
+        if (rn(2u)) in->qi[j] = (int32_t)((uint32_t)in->qi[j] + (uint32_t)((int32_t)rn(60u << 16) - (30 << 16)));
         else if (rn(8u) == 0u) in->qi[j] = q_q(r, j);
     }
     if (rn(4u)) for (j = 0; j < DH_MAX_JOINTS; j++) if (!isfinite(in->q[j])) in->q[j] = 0.0f;
