@@ -314,6 +314,43 @@ DH_INLINE uint32_t dh_q_abs_u32(int32_t x)
     return x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
 }
 
+/** floor(sqrt(v)) for v < 2^62, digit by digit (31 bit pairs; the
+ *  remainder stays below 2 root + 1 <= 2^32). Integer only. */
+static inline uint32_t dh_q_isqrt64(uint64_t v)
+{
+    uint64_t rem = 0u;
+    uint32_t root = 0u, i;
+    for (i = 0u; i < 31u; i++) {
+        uint64_t trial;
+        rem = (rem << 2) | (v >> 60);
+        v = (v << 2) & (((uint64_t)1 << 62) - 1u);
+        root <<= 1;
+        trial = ((uint64_t)root << 1) | 1u;
+        if (rem >= trial) {
+            rem -= trial;
+            root |= 1u;
+        }
+    }
+    return root;
+}
+
+/** round(n 2^frac / d), ties up, for d in [1, 2^31), frac <= 30 and
+ *  n 2^frac / d below 2^31: the integer part by one 32-bit division, then one
+ *  bit per step (r < d < 2^31, so 2 r fits). No 64-bit division. */
+static inline uint32_t dh_q_udiv(uint32_t n, uint32_t d, unsigned frac)
+{
+    uint32_t q = n / d, r = n - q * d, i;
+    for (i = 0u; i <= frac; i++) {
+        r <<= 1;
+        q <<= 1;
+        if (r >= d) {
+            r -= d;
+            q |= 1u;
+        }
+    }
+    return (q >> 1) + (q & 1u);
+}
+
 /* ---- kinematics helpers ---------------------------------------------------- */
 
 /** The rotation check: 1 when the 3x3 with columns c0, c1, c2 (3 floats
