@@ -59,11 +59,11 @@ typedef struct {
     float q[DH_MAX_JOINTS];
     dh_ik_result ikres;
     float J[6 * DH_MAX_JOINTS];
-    int32_t Ji[6 * DH_MAX_JOINTS]; /* fixed Jacobian */
-    dh_quat_q qq;            /* fixed quaternion */
-    dh_dir3_q dq;            /* fixed axis / rotation vector */
     dh_mat4_f32 Mf[DH_MAX_JOINTS];
     dh_frame_q Ff[DH_MAX_JOINTS];
+    int32_t Ji[6 * DH_MAX_JOINTS]; /* fixed Jacobian (integer words: after the float J, Mf) */
+    dh_quat_q qq;            /* fixed quaternion */
+    dh_dir3_q dq;            /* fixed axis / rotation vector */
     /* DIFF_OUT_FRAMES */
     dh_robot rob;
 } diff_out;
