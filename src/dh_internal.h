@@ -396,6 +396,23 @@ static inline uint32_t dh_q_sqrt_u64(uint64_t v)
     return (uint32_t)(r << (unsigned)(-sh));
 }
 
+/** round(n 2^frac / d), ties up, for d in [1, 2^31), frac <= 30 and
+ *  n 2^frac / d below 2^31: the integer part by one 32-bit division, then one
+ *  bit per step (r < d < 2^31, so 2 r fits). No 64-bit division. */
+static inline uint32_t dh_q_udiv(uint32_t n, uint32_t d, unsigned frac)
+{
+    uint32_t q = n / d, r = n - q * d, i;
+    for (i = 0u; i <= frac; i++) {
+        r <<= 1;
+        q <<= 1;
+        if (r >= d) {
+            r -= d;
+            q |= 1u;
+        }
+    }
+    return (q >> 1) + (q & 1u);
+}
+
 /* ---- kinematics helpers ---------------------------------------------------- */
 
 /** The rotation check: 1 when the 3x3 with columns c0, c1, c2 (3 floats

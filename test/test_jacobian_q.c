@@ -183,10 +183,13 @@ static void jacq_prismatic_planar(void)
         c1 = cos(q[0] / 65536.0 * PI / 180);
         s12 = sin((q[0] + q[1]) / 65536.0 * PI / 180);
         c12 = cos((q[0] + q[1]) / 65536.0 * PI / 180);
-        DHT_NEAR(J[0 * 3 + 0] / QPOS, -a1 * s1 - a2 * s12, 1e-4);
-        DHT_NEAR(J[1 * 3 + 0] / QPOS, a1 * c1 + a2 * c12, 1e-4);
-        DHT_NEAR(J[0 * 3 + 1] / QPOS, -a2 * s12, 1e-4);
-        DHT_NEAR(J[1 * 3 + 1] / QPOS, a2 * c12, 1e-4);
+        /* sin/cos within 1.05 LSB of Q2.30 times 500 mm (5e-7 mm), plus the
+         * position format's own rounding: the FK step and the entry are
+         * rounded once each (0.5 LSB), the lengths are exact */
+        DHT_NEAR(J[0 * 3 + 0] / QPOS, -a1 * s1 - a2 * s12, 1e-6 + 2.0 / QPOS);
+        DHT_NEAR(J[1 * 3 + 0] / QPOS, a1 * c1 + a2 * c12, 1e-6 + 2.0 / QPOS);
+        DHT_NEAR(J[0 * 3 + 1] / QPOS, -a2 * s12, 1e-6 + 2.0 / QPOS);
+        DHT_NEAR(J[1 * 3 + 1] / QPOS, a2 * c12, 1e-6 + 2.0 / QPOS);
         DHT_EQ_INT(J[2 * 3 + 0], 0);
         DHT_EQ_INT(J[5 * 3 + 0], DH_Q30_ONE);
         DHT_EQ_INT(J[5 * 3 + 1], DH_Q30_ONE);

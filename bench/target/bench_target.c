@@ -507,6 +507,140 @@ static const bt_op bt_ops_dh[] = {
     { "newlib", "sinf + cosf (from degrees)", op_newlib_sincos, 0, "", 4096u },
 };
 
+/* ---- fixed Jacobian and rotation conversions, next to their float
+ * counterparts (inputs derived from the sets above, no random draws) ---- */
+static dh_mat3_f32 bt_R3[BT_NSET];
+static dh_quat_f32 bt_qtin[BT_NSET], bt_qt;
+static dh_quat_q bt_qqin[BT_NSET], bt_qtq;
+static float bt_eul[3], bt_deg;
+static dh_q16 bt_eulq[3], bt_degq;
+static int32_t bt_Jq[36];
+static dh_vec3_f32 bt_v3;
+static dh_dir3_q bt_dq;
+static dh_mat3_f32 bt_R3out;
+
+static uint32_t bt_inputs_kinq(void)
+{
+    uint32_t st = 0u, k, c, r;
+    for (k = 0; k < BT_NSET; k++) {
+        for (c = 0; c < 3u; c++)
+            for (r = 0; r < 3u; r++) bt_R3[k].m[c][r] = bt_A[k].m[c][r];
+        st |= (uint32_t)dh_mat3_to_quat_f32(&bt_R3[k], &bt_qtin[k]);
+        st |= (uint32_t)dh_frame_to_quat_q(&bt_FA[k], &bt_qqin[k]);
+    }
+    return st;
+}
+
+static BT_NOIPA dh_status z_jacobian_q(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *T)
+{
+    (void)r; (void)q; (void)J; (void)T;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_to_euler_f32(const dh_mat3_f32 *R, dh_euler_seq s, float *a)
+{
+    (void)R; (void)s; (void)a;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_to_euler_q(const dh_frame_q *F, dh_euler_seq s, dh_q16 *a)
+{
+    (void)F; (void)s; (void)a;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_from_euler_f32(dh_euler_seq s, const float *a, dh_mat3_f32 *R)
+{
+    (void)R; (void)s; (void)a;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_from_euler_q(dh_euler_seq s, const dh_q16 *a, dh_frame_q *F)
+{
+    (void)F; (void)s; (void)a;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_to_quat_f32(const dh_mat3_f32 *R, dh_quat_f32 *q)
+{
+    (void)R; (void)q;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_to_quat_q(const dh_frame_q *F, dh_quat_q *q)
+{
+    (void)F; (void)q;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_from_quat_f32(const dh_quat_f32 *q, dh_mat3_f32 *R)
+{
+    (void)R; (void)q;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_from_quat_q(const dh_quat_q *q, dh_frame_q *F)
+{
+    (void)F; (void)q;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_axis_f32(const dh_mat3_f32 *R, dh_vec3_f32 *k, float *d)
+{
+    (void)R; (void)k; (void)d;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_axis_q(const dh_frame_q *F, dh_dir3_q *k, dh_q16 *d)
+{
+    (void)F; (void)k; (void)d;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_roterr_f32(const dh_mat3_f32 *A, const dh_mat3_f32 *B, dh_vec3_f32 *w)
+{
+    (void)A; (void)B; (void)w;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_roterr_q(const dh_frame_q *A, const dh_frame_q *B, dh_dir3_q *w)
+{
+    (void)A; (void)B; (void)w;
+    return DH_OK;
+}
+
+#define B_jacobian_q(F) bt_status |= (uint32_t)F(&bt_puma_mm, bt_qq[BT_IA(i)], bt_Jq, &bt_Fout)
+#define B_to_euler_f32(F) bt_status |= (uint32_t)F(&bt_R3[BT_IA(i)], DH_EULER_ZYX, bt_eul)
+#define B_to_euler_q(F) bt_status |= (uint32_t)F(&bt_FA[BT_IA(i)], DH_EULER_ZYX, bt_eulq)
+#define B_from_euler_f32(F) bt_status |= (uint32_t)F(DH_EULER_ZYX, &bt_ang_f[i & (BT_NANG - 4u)], &bt_R3out)
+#define B_from_euler_q(F) bt_status |= (uint32_t)F(DH_EULER_ZYX, &bt_ang_q[i & (BT_NANG - 4u)], &bt_Fout)
+#define B_to_quat_f32(F) bt_status |= (uint32_t)F(&bt_R3[BT_IA(i)], &bt_qt)
+#define B_to_quat_q(F) bt_status |= (uint32_t)F(&bt_FA[BT_IA(i)], &bt_qtq)
+#define B_from_quat_f32(F) bt_status |= (uint32_t)F(&bt_qtin[BT_IA(i)], &bt_R3out)
+#define B_from_quat_q(F) bt_status |= (uint32_t)F(&bt_qqin[BT_IA(i)], &bt_Fout)
+#define B_axis_f32(F) bt_status |= (uint32_t)F(&bt_R3[BT_IA(i)], &bt_v3, &bt_deg)
+#define B_axis_q(F) bt_status |= (uint32_t)F(&bt_FA[BT_IA(i)], &bt_dq, &bt_degq)
+#define B_roterr_f32(F) bt_status |= (uint32_t)F(&bt_R3[BT_IA(i)], &bt_R3[BT_IB(i)], &bt_v3)
+#define B_roterr_q(F) bt_status |= (uint32_t)F(&bt_FA[BT_IA(i)], &bt_FB[BT_IB(i)], &bt_dq)
+
+BT_PAIR(jacobian_q, dh_jacobian_q, z_jacobian_q)
+BT_PAIR(to_euler_f32, dh_mat3_to_euler_f32, z_to_euler_f32)
+BT_PAIR(to_euler_q, dh_frame_to_euler_q, z_to_euler_q)
+BT_PAIR(from_euler_f32, dh_euler_to_mat3_f32, z_from_euler_f32)
+BT_PAIR(from_euler_q, dh_euler_to_frame_q, z_from_euler_q)
+BT_PAIR(to_quat_f32, dh_mat3_to_quat_f32, z_to_quat_f32)
+BT_PAIR(to_quat_q, dh_frame_to_quat_q, z_to_quat_q)
+BT_PAIR(from_quat_f32, dh_quat_to_mat3_f32, z_from_quat_f32)
+BT_PAIR(from_quat_q, dh_quat_to_frame_q, z_from_quat_q)
+BT_PAIR(axis_f32, dh_mat3_to_axis_angle_f32, z_axis_f32)
+BT_PAIR(axis_q, dh_frame_to_axis_angle_q, z_axis_q)
+BT_PAIR(roterr_f32, dh_rot_error_f32, z_roterr_f32)
+BT_PAIR(roterr_q, dh_rot_error_q, z_roterr_q)
+
+static const bt_op bt_ops_kinq[] = {
+    BT_OPD("dh_jacobian_q (Puma 560, mm)", jacobian_q, "z_jacobian_q", 128u),
+    BT_OPD("dh_mat3_to_euler_f32 (ZYX)", to_euler_f32, "z_to_euler_f32", 512u),
+    BT_OPD("dh_frame_to_euler_q (ZYX)", to_euler_q, "z_to_euler_q", 512u),
+    BT_OPD("dh_euler_to_mat3_f32 (ZYX)", from_euler_f32, "z_from_euler_f32", 512u),
+    BT_OPD("dh_euler_to_frame_q (ZYX)", from_euler_q, "z_from_euler_q", 512u),
+    BT_OPD("dh_mat3_to_quat_f32", to_quat_f32, "z_to_quat_f32", 512u),
+    BT_OPD("dh_frame_to_quat_q", to_quat_q, "z_to_quat_q", 512u),
+    BT_OPD("dh_quat_to_mat3_f32", from_quat_f32, "z_from_quat_f32", 512u),
+    BT_OPD("dh_quat_to_frame_q", from_quat_q, "z_from_quat_q", 512u),
+    BT_OPD("dh_mat3_to_axis_angle_f32", axis_f32, "z_axis_f32", 512u),
+    BT_OPD("dh_frame_to_axis_angle_q", axis_q, "z_axis_q", 512u),
+    BT_OPD("dh_rot_error_f32", roterr_f32, "z_roterr_f32", 512u),
+    BT_OPD("dh_rot_error_q", roterr_q, "z_roterr_q", 512u),
+};
+
 static void bt_measure(const bt_op *op)
 {
     uint64_t base, t, tz = 0u;
@@ -691,6 +825,14 @@ int main(void)
     bt_cglm_setup();
     for (k = 0; k < sizeof bt_ops_dh / sizeof bt_ops_dh[0]; k++) {
         bt_measure(&bt_ops_dh[k]);
+    }
+    /* fixed Jacobian and rotation conversions */
+    if (bt_inputs_kinq() != 0u) {
+        printf("BT error|rotation inputs returned a status\n");
+        return 1;
+    }
+    for (k = 0; k < sizeof bt_ops_kinq / sizeof bt_ops_kinq[0]; k++) {
+        bt_measure(&bt_ops_kinq[k]);
     }
     n = bt_cglm_ops(ops, (uint32_t)(sizeof ops / sizeof ops[0]));
     for (k = 0; k < n; k++) {

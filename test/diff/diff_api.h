@@ -65,6 +65,9 @@ typedef struct {
     float J[6 * DH_MAX_JOINTS];
     dh_mat4_f32 Mf[DH_MAX_JOINTS];
     dh_frame_q Ff[DH_MAX_JOINTS];
+    int32_t Ji[6 * DH_MAX_JOINTS]; /* fixed Jacobian (integer words: after the float J, Mf) */
+    dh_quat_q qq;            /* fixed quaternion */
+    dh_dir3_q dq;            /* fixed axis / rotation vector */
     dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
     dh_ikc_sol_q solq[DH_IKC_MAX_SOL];
     dh_ikc_model_f32 mf;
@@ -191,6 +194,14 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_jacobian_f32, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_jacobian_tool_f32, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_rot_error_f32, g_rot, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_jacobian_q, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_jacobian_tool_q, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_rot_error_q, g_frames, 1000000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_frame_to_euler_q, g_frames, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_euler_to_frame_q, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_frame_to_quat_q, g_frames, 1000000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_quat_to_frame_q, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_frame_to_axis_angle_q, g_frames, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_pose_error_f32, g_check, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_ik_params_default, g_robot, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_ik_f32, g_ik, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS) \
