@@ -103,6 +103,29 @@ BENCH_NOINLINE void bw_glibc_sincosf(uint32_t i)
     bench_sink_f = out_s[i];
 }
 
+/* Tight loop: 64 independent calls per operation (consecutive angles of
+ * the set, outputs stored), nothing between them but the loop; the report
+ * divides by BENCH_LOOP_N. The library's function is called out of line
+ * (as linked from libdhmath.a), glibc's likewise. */
+#define BENCH_LOOP_N 64u
+BENCH_NOINLINE void bw_dh_sincos_f32_loop(uint32_t i)
+{
+    uint32_t k, b = (i * BENCH_LOOP_N) & BENCH_TRIG_MASK;
+    for (k = 0; k < BENCH_LOOP_N; k++) (void)dh_sincos_f32(in_deg[b + k], &out_s[b + k], &out_c[b + k]);
+    bench_sink_f = out_s[b];
+}
+
+BENCH_NOINLINE void bw_glibc_sinf_cosf_loop(uint32_t i)
+{
+    uint32_t k, b = (i * BENCH_LOOP_N) & BENCH_TRIG_MASK;
+    for (k = 0; k < BENCH_LOOP_N; k++) {
+        const float r = in_deg[b + k] * (float)(PI_D / 180.0);
+        out_s[b + k] = sinf(r);
+        out_c[b + k] = cosf(r);
+    }
+    bench_sink_f = out_s[b];
+}
+
 BENCH_NOINLINE void bw_dh_sincos_q(uint32_t i)
 {
     i &= BENCH_TRIG_MASK;
@@ -480,6 +503,8 @@ int main(int argc, char **argv)
     add_op("dh_sincos_f32", "sincos_f32", "dhmath", "dh_sincos_f32(deg)", bw_dh_sincos_f32);
     add_op("glibc_sinf_cosf", "sincos_f32", "glibc", "sinf(r) + cosf(r), r = deg * (float)(pi/180)", bw_glibc_sinf_cosf);
     add_op("glibc_sincosf", "sincos_f32", "glibc", "sincosf(r), r = deg * (float)(pi/180)", bw_glibc_sincosf);
+    add_op("dh_sincos_f32_loop", "sincos_loop", "dhmath", "64 x dh_sincos_f32(deg) in a tight loop of independent calls (per 64)", bw_dh_sincos_f32_loop);
+    add_op("glibc_sinf_cosf_loop", "sincos_loop", "glibc", "64 x sinf(r) + cosf(r) in a tight loop (per 64)", bw_glibc_sinf_cosf_loop);
     add_op("dh_sincos_q", "sincos_q", "dhmath", "dh_sincos_q(deg Q16.16) -> Q2.30", bw_dh_sincos_q);
 #if BENCH_HAVE_FIXMATH
     add_op("fix16_sin_cos", "sincos_q", "libfixmath", "fix16_sin(r) + fix16_cos(r), r fix16 radians (precomputed)", bw_fix16_sin_cos);
