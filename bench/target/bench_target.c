@@ -566,6 +566,84 @@ static void bt_ik(void)
     }
 }
 
+/* ---- closed-form inverse kinematics: all solutions ------------------------- */
+
+#define BT_NIKC BT_NSET
+
+#if defined(__ARM_FP) || !defined(__arm__)
+#define BT_IKC_FLOAT 1
+#else
+#define BT_IKC_FLOAT 0
+#endif
+
+/* Targets: FK of random configurations within the limits (untimed). The
+ * loop of BT_NIKC solves is timed as a whole; the same loop with the call
+ * left out gives the loop's own count. */
+static void bt_ikc(void)
+{
+    static dh_ikc_model_q mq;
+    static dh_frame_q Tq[BT_NIKC];
+    static dh_ikc_sol_q solq[DH_IKC_MAX_SOL];
+#if BT_IKC_FLOAT
+    static dh_ikc_model_f32 mf;
+    static dh_mat4_f32 Tf[BT_NIKC];
+    static dh_ikc_sol_f32 solf[DH_IKC_MAX_SOL];
+#endif
+    uint32_t k, j, nsol, total, st = 0u;
+    uint64_t t0, t1, tl;
+    const uint32_t saved = bt_rng;
+    bt_rng = 0x85EBCA6Bu;
+    for (k = 0; k < BT_NIKC; k++) {
+        float q[6];
+        int32_t qq[6];
+        for (j = 0; j < 6u; j++) {
+            q[j] = bt_uniform(bt_puma_tab[j][3], bt_puma_tab[j][4]);
+            qq[j] = bt_to_q16(q[j]);
+        }
+#if BT_IKC_FLOAT
+        st |= (uint32_t)dh_fk_f32(&bt_puma_m, q, &Tf[k]);
+#endif
+        st |= (uint32_t)dh_fk_q(&bt_puma_mm, qq, &Tq[k]);
+    }
+    bt_rng = saved;
+#if BT_IKC_FLOAT
+    st |= (uint32_t)dh_ikc_analyse_f32(&bt_puma_m, &mf);
+#endif
+    st |= (uint32_t)dh_ikc_analyse_q(&bt_puma_mm, &mq);
+    if (st != 0u) {
+        printf("BT error|closed-form IK set-up returned status %lu\n", (unsigned long)st);
+        bt_status |= st;
+        return;
+    }
+    t0 = bt_now();
+    for (k = 0; k < BT_NIKC; k++) {
+        bt_sink = k;
+    }
+    t1 = bt_now();
+    tl = t1 - t0;
+#if BT_IKC_FLOAT
+    total = 0u;
+    t0 = bt_now();
+    for (k = 0; k < BT_NIKC; k++) {
+        st |= (uint32_t)dh_ikc_f32(&mf, &Tf[k], NULL, 0u, solf, &nsol);
+        total += nsol;
+    }
+    t1 = bt_now();
+    printf("BT ikc|dh_ikc_f32 (Puma 560, m, all solutions)|%lu|%llu|%llu|%lu|%lu\n", (unsigned long)BT_NIKC,
+           (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total, (unsigned long)st);
+#endif
+    total = 0u;
+    t0 = bt_now();
+    for (k = 0; k < BT_NIKC; k++) {
+        st |= (uint32_t)dh_ikc_q(&mq, &Tq[k], NULL, 0u, solq, &nsol);
+        total += nsol;
+    }
+    t1 = bt_now();
+    printf("BT ikc|dh_ikc_q (Puma 560, mm, all solutions)|%lu|%llu|%llu|%lu|%lu\n", (unsigned long)BT_NIKC,
+           (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total, (unsigned long)st);
+    bt_status |= st;
+}
+
 /* ---- sanity checks (the numbers mean something only if these pass) -------- */
 
 static int bt_check(const char *name, int ok)
@@ -651,6 +729,7 @@ int main(void)
         bt_measure(&ops[k]);
     }
     bt_ik();
+    bt_ikc();
     fail = bt_checks();
     printf("BT stack|%lu|%lu\n", (unsigned long)bt_stack_used(),
            (unsigned long)((uintptr_t)__stack_top__ - (uintptr_t)__stack_limit__));
