@@ -280,25 +280,32 @@ static int ikc_shift(float *v, float lo, float hi, float ref)
 }
 
 /* Raw canonical solution -> joint values; 1 when within the limits.
- */
+ * Common case first: the revolute value already in (-180, 180] and within
+ * its limits with no nearer shift (|ref - v| <= 180), left as it is. */
 static DH_NOINLINE int ikc_to_joints(const dh_ikc_model_f32 *m, const float *q_ref, float *q)
 {
     uint32_t i;
     int in = 1;
     for (i = 0; i < m->n; i++) {
-        const float lo = m->qmin[i], hi = m->qmax[i];
+        const float lo = m->qmin[i], hi = m->qmax[i], ref = (q_ref != NULL) ? q_ref[i] : 0.0f;
+        float v;
         if ((m->prismatic >> i) & 1u) {
             q[i] -= m->d[i];
             if (lo <= hi && (q[i] < lo || q[i] > hi)) in = 0;
-        } else {
-            float v = q[i] - m->off[i];
+            continue;
+        }
+        v = q[i] - m->off[i];
+        if (!(v > -180.0f && v <= 180.0f)) {
             if (!(fabsf(v) <= 540.0f)) {
                 /* a theta offset beyond +-360 deg: whole turns off first */
                 const float x = v * (1.0f / 360.0f);
                 if (fabsf(x) < 8388608.0f) v -= 360.0f * (float)(int32_t)x;
             }
             v = ikc_wrap(ikc_wrap(v));
-            if (lo <= hi && !ikc_shift(&v, lo, hi, (q_ref != NULL) ? q_ref[i] : 0.0f)) in = 0;
+        }
+        q[i] = v;
+        if (lo <= hi && !(v >= lo && v <= hi && fabsf(ref - v) <= 180.0f)) {
+            if (!ikc_shift(&v, lo, hi, ref)) in = 0;
             q[i] = v;
         }
     }
