@@ -526,7 +526,31 @@ static void bt_measure(const bt_op *op)
 
 #define BT_NIK 16u
 
-static float bt_ik_work[DH_IK_WORK_FLOATS(6u)];
+#define BT_NIKC (BT_NSET == 8u ? 4u : BT_NSET)
+
+#if defined(__ARM_FP) || !defined(__arm__)
+#define BT_IKC_FLOAT 1
+#else
+#define BT_IKC_FLOAT 0
+#endif
+
+/* The numerical IK's work array and the closed-form IK's models, targets
+ * and solutions share memory (used one after the other): the Cortex-M0's
+ * 16 KiB hold both this way. */
+static union {
+    float ik_work[DH_IK_WORK_FLOATS(6u)];
+    struct {
+        dh_ikc_model_q mq;
+        dh_frame_q Tq[BT_NIKC];
+        dh_ikc_sol_q solq[DH_IKC_MAX_SOL];
+#if BT_IKC_FLOAT
+        dh_ikc_model_f32 mf;
+        dh_mat4_f32 Tf[BT_NIKC];
+        dh_ikc_sol_f32 solf[DH_IKC_MAX_SOL];
+#endif
+    } c;
+} bt_mem;
+#define bt_ik_work bt_mem.ik_work
 
 static void bt_ik(void)
 {
@@ -557,7 +581,7 @@ static void bt_ik(void)
             continue;
         }
         t0 = bt_now();
-        st = dh_ik_f32(&bt_puma_m, &target, q0, &p, bt_ik_work, sizeof bt_ik_work / sizeof bt_ik_work[0],
+        st = dh_ik_f32(&bt_puma_m, &target, q0, &p, bt_ik_work, sizeof bt_mem.ik_work / sizeof bt_mem.ik_work[0],
                        q, &res);
         t1 = bt_now();
         printf("BT ik|%lu|%d|%lu|%llu|%llu|%lu\n", (unsigned long)k, (int)st,
@@ -568,26 +592,19 @@ static void bt_ik(void)
 
 /* ---- closed-form inverse kinematics: all solutions ------------------------- */
 
-#define BT_NIKC BT_NSET
-
-#if defined(__ARM_FP) || !defined(__arm__)
-#define BT_IKC_FLOAT 1
-#else
-#define BT_IKC_FLOAT 0
-#endif
 
 /* Targets: FK of random configurations within the limits (untimed). The
  * loop of BT_NIKC solves is timed as a whole; the same loop with the call
  * left out gives the loop's own count. */
 static void bt_ikc(void)
 {
-    static dh_ikc_model_q mq;
-    static dh_frame_q Tq[BT_NIKC];
-    static dh_ikc_sol_q solq[DH_IKC_MAX_SOL];
+    dh_ikc_model_q *const mq = &bt_mem.c.mq;
+    dh_frame_q *const Tq = bt_mem.c.Tq;
+    dh_ikc_sol_q *const solq = bt_mem.c.solq;
 #if BT_IKC_FLOAT
-    static dh_ikc_model_f32 mf;
-    static dh_mat4_f32 Tf[BT_NIKC];
-    static dh_ikc_sol_f32 solf[DH_IKC_MAX_SOL];
+    dh_ikc_model_f32 *const mf = &bt_mem.c.mf;
+    dh_mat4_f32 *const Tf = bt_mem.c.Tf;
+    dh_ikc_sol_f32 *const solf = bt_mem.c.solf;
 #endif
     uint32_t k, j, nsol, total, st = 0u;
     uint64_t t0, t1, tl;
@@ -607,9 +624,9 @@ static void bt_ikc(void)
     }
     bt_rng = saved;
 #if BT_IKC_FLOAT
-    st |= (uint32_t)dh_ikc_analyse_f32(&bt_puma_m, &mf);
+    st |= (uint32_t)dh_ikc_analyse_f32(&bt_puma_m, mf);
 #endif
-    st |= (uint32_t)dh_ikc_analyse_q(&bt_puma_mm, &mq);
+    st |= (uint32_t)dh_ikc_analyse_q(&bt_puma_mm, mq);
     if (st != 0u) {
         printf("BT error|closed-form IK set-up returned status %lu\n", (unsigned long)st);
         bt_status |= st;
@@ -625,7 +642,7 @@ static void bt_ikc(void)
     total = 0u;
     t0 = bt_now();
     for (k = 0; k < BT_NIKC; k++) {
-        st |= (uint32_t)dh_ikc_f32(&mf, &Tf[k], NULL, 0u, solf, &nsol);
+        st |= (uint32_t)dh_ikc_f32(mf, &Tf[k], NULL, 0u, solf, &nsol);
         total += nsol;
     }
     t1 = bt_now();
@@ -635,7 +652,7 @@ static void bt_ikc(void)
     total = 0u;
     t0 = bt_now();
     for (k = 0; k < BT_NIKC; k++) {
-        st |= (uint32_t)dh_ikc_q(&mq, &Tq[k], NULL, 0u, solq, &nsol);
+        st |= (uint32_t)dh_ikc_q(mq, &Tq[k], NULL, 0u, solq, &nsol);
         total += nsol;
     }
     t1 = bt_now();

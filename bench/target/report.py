@@ -380,8 +380,8 @@ def main():
     w("## Closed-form inverse kinematics (Puma 560, all solutions)")
     w("")
     w("Per call: all solutions of `dh_ikc_f32` (metres, float cores only) and `dh_ikc_q` (mm) for "
-      "targets = FK of random configurations within the joint limits (computed untimed; 8 on "
-      "the Cortex-M0, 16 elsewhere, BT_NSET); the loop over the targets is timed as a whole, minus the "
+      "targets = FK of random configurations within the joint limits (computed untimed; 4 on "
+      "the Cortex-M0 for its 16 KiB of RAM, 16 elsewhere); the loop over the targets is timed as a whole, minus the "
       "same loop without the call.")
     w("")
     w("| core | operation | instructions per call | solutions per call |")
