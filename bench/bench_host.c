@@ -482,6 +482,22 @@ static int sanity(void)
         e_cg = fmax(e_cg, max_diff16(&out_M[i].m[0][0], &cg_out[i][0][0]));
 #endif
     }
+    {
+        /* closed-form IK: every target is FK of an in-limit configuration,
+         * so every call must find a solution */
+        uint32_t bad_ikc = 0;
+        for (i = 0; i < BENCH_NIN_IKC; i++) {
+            bw_dh_ikc_kr5(i);
+            bad_ikc += out_st[i] != DH_OK;
+            bw_dh_ikc_puma(i);
+            bad_ikc += out_st[i] != DH_OK;
+            bw_dh_ikc_q_puma(i);
+            bad_ikc += out_st[i] != DH_OK;
+        }
+        printf("sanity: closed-form IK calls without a solution: %u of %u\n", (unsigned)bad_ikc,
+               3u * BENCH_NIN_IKC);
+        if (bad_ikc != 0u) bad = 1;
+    }
     printf("sanity: Puma FK |dp| dhmath f32 vs double ref %.2e m, dhmath q vs ref %.2e mm, "
            "KDL vs ref %.2e m, dhmath vs cglm products/inverses %.2e\n",
            e_fk, e_fkq, e_kdl, e_cg);
