@@ -304,7 +304,8 @@ static DH_NOINLINE int ikc_to_joints(const dh_ikc_model_f32 *m, const float *q_r
             v = ikc_wrap(ikc_wrap(v));
         }
         q[i] = v;
-        if (lo <= hi && !(v >= lo && v <= hi && fabsf(ref - v) <= 180.0f)) {
+        /* (with q_ref NULL, ref = 0 and |v| <= 180: no nearer shift) */
+        if (lo <= hi && !(v >= lo && v <= hi && (q_ref == NULL || fabsf(ref - v) <= 180.0f))) {
             if (!ikc_shift(&v, lo, hi, ref)) in = 0;
             q[i] = v;
         }
