@@ -660,7 +660,31 @@ static void bt_measure(const bt_op *op)
 
 #define BT_NIK 16u
 
-static float bt_ik_work[DH_IK_WORK_FLOATS(6u)];
+#define BT_NIKC (BT_NSET == 8u ? 4u : BT_NSET)
+
+#if defined(__ARM_FP) || !defined(__arm__)
+#define BT_IKC_FLOAT 1
+#else
+#define BT_IKC_FLOAT 0
+#endif
+
+/* The numerical IK's work array and the closed-form IK's models, targets
+ * and solutions share memory (used one after the other): the Cortex-M0's
+ * 16 KiB hold both this way. */
+static union {
+    float ik_work[DH_IK_WORK_FLOATS(6u)];
+    struct {
+        dh_ikc_model_q mq;
+        dh_frame_q Tq[BT_NIKC];
+        dh_ikc_sol_q solq[DH_IKC_MAX_SOL];
+#if BT_IKC_FLOAT
+        dh_ikc_model_f32 mf;
+        dh_mat4_f32 Tf[BT_NIKC];
+        dh_ikc_sol_f32 solf[DH_IKC_MAX_SOL];
+#endif
+    } c;
+} bt_mem;
+#define bt_ik_work bt_mem.ik_work
 
 static void bt_ik(void)
 {
@@ -691,7 +715,7 @@ static void bt_ik(void)
             continue;
         }
         t0 = bt_now();
-        st = dh_ik_f32(&bt_puma_m, &target, q0, &p, bt_ik_work, sizeof bt_ik_work / sizeof bt_ik_work[0],
+        st = dh_ik_f32(&bt_puma_m, &target, q0, &p, bt_ik_work, sizeof bt_mem.ik_work / sizeof bt_mem.ik_work[0],
                        q, &res);
         t1 = bt_now();
         printf("BT ik|%lu|%d|%lu|%llu|%llu|%lu\n", (unsigned long)k, (int)st,
@@ -744,6 +768,77 @@ static BT_NOINLINE void bt_ik_q(void)
         printf("BT ikq|%lu|%d|%lu|%llu|%llu|%ld\n", (unsigned long)k, (int)st, (unsigned long)res.iterations,
                (unsigned long long)(t1 - t0), (unsigned long long)tnull, (long)res.err_pos);
     }
+}
+
+/* ---- closed-form inverse kinematics: all solutions ------------------------- */
+
+
+/* Targets: FK of random configurations within the limits (untimed). The
+ * loop of BT_NIKC solves is timed as a whole; the same loop with the call
+ * left out gives the loop's own count. */
+static void bt_ikc(void)
+{
+    dh_ikc_model_q *const mq = &bt_mem.c.mq;
+    dh_frame_q *const Tq = bt_mem.c.Tq;
+    dh_ikc_sol_q *const solq = bt_mem.c.solq;
+#if BT_IKC_FLOAT
+    dh_ikc_model_f32 *const mf = &bt_mem.c.mf;
+    dh_mat4_f32 *const Tf = bt_mem.c.Tf;
+    dh_ikc_sol_f32 *const solf = bt_mem.c.solf;
+#endif
+    uint32_t k, j, nsol, total, st = 0u;
+    uint64_t t0, t1, tl;
+    const uint32_t saved = bt_rng;
+    bt_rng = 0x85EBCA6Bu;
+    for (k = 0; k < BT_NIKC; k++) {
+        float q[6];
+        int32_t qq[6];
+        for (j = 0; j < 6u; j++) {
+            q[j] = bt_uniform(bt_puma_tab[j][3], bt_puma_tab[j][4]);
+            qq[j] = bt_to_q16(q[j]);
+        }
+#if BT_IKC_FLOAT
+        st |= (uint32_t)dh_fk_f32(&bt_puma_m, q, &Tf[k]);
+#endif
+        st |= (uint32_t)dh_fk_q(&bt_puma_mm, qq, &Tq[k]);
+    }
+    bt_rng = saved;
+#if BT_IKC_FLOAT
+    st |= (uint32_t)dh_ikc_analyse_f32(&bt_puma_m, mf);
+#endif
+    st |= (uint32_t)dh_ikc_analyse_q(&bt_puma_mm, mq);
+    if (st != 0u) {
+        printf("BT error|closed-form IK set-up returned status %lu\n", (unsigned long)st);
+        bt_status |= st;
+        return;
+    }
+    t0 = bt_now();
+    for (k = 0; k < BT_NIKC; k++) {
+        bt_sink = k;
+    }
+    t1 = bt_now();
+    tl = t1 - t0;
+#if BT_IKC_FLOAT
+    total = 0u;
+    t0 = bt_now();
+    for (k = 0; k < BT_NIKC; k++) {
+        st |= (uint32_t)dh_ikc_f32(mf, &Tf[k], NULL, 0u, solf, &nsol);
+        total += nsol;
+    }
+    t1 = bt_now();
+    printf("BT ikc|dh_ikc_f32 (Puma 560, m, all solutions)|%lu|%llu|%llu|%lu|%lu\n", (unsigned long)BT_NIKC,
+           (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total, (unsigned long)st);
+#endif
+    total = 0u;
+    t0 = bt_now();
+    for (k = 0; k < BT_NIKC; k++) {
+        st |= (uint32_t)dh_ikc_q(mq, &Tq[k], NULL, 0u, solq, &nsol);
+        total += nsol;
+    }
+    t1 = bt_now();
+    printf("BT ikc|dh_ikc_q (Puma 560, mm, all solutions)|%lu|%llu|%llu|%lu|%lu\n", (unsigned long)BT_NIKC,
+           (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total, (unsigned long)st);
+    bt_status |= st;
 }
 
 /* ---- sanity checks (the numbers mean something only if these pass) -------- */
@@ -840,6 +935,7 @@ int main(void)
     }
     bt_ik();
     bt_ik_q();
+    bt_ikc();
     fail = bt_checks();
     printf("BT stack|%lu|%lu\n", (unsigned long)bt_stack_used(),
            (unsigned long)((uintptr_t)__stack_top__ - (uintptr_t)__stack_limit__));

@@ -58,6 +58,7 @@ class Run:
         self.ops = []        # (group, name, n, per_call)
         self.ik = []         # (k, status, iterations, instructions, err_nm)
         self.ikq = []        # (k, status, iterations, instructions, err_pos LSB)
+        self.ikc = []        # (name, instructions per call, solutions per call)
         self.checks = []
         self.core = self.opt = self.gcc = self.counter = self.unit = "?"
         self.scale = None
@@ -106,6 +107,12 @@ class Run:
                     ticks = int(p[4]) - int(p[5])
                     self.ikq.append((int(p[1]), int(p[2]), int(p[3]),
                                      float(ticks * self.scale), int(p[6])))
+                elif kind == "ikc":
+                    n = int(p[2])
+                    ticks = int(p[3]) - int(p[4])
+                    if int(p[6]) != 0:
+                        fail("%s: %s returned status %s" % (path, p[1], p[6]))
+                    self.ikc.append((p[1], float(ticks * self.scale) / n, int(p[5]) / n))
                 elif kind == "check":
                     self.checks.append((p[1], p[2]))
                 elif kind == "stack":
@@ -374,6 +381,20 @@ def main():
       "singularity (condition estimate and residual check, see `include/dhmath/dh_mat4.h`) "
       "where `glm_mat4_inv` divides by the determinant without any check; "
       "`dh_mat4_mul_f32` is a full 4x4 product like `glm_mat4_mul`.")
+    w("")
+    w("## Closed-form inverse kinematics (Puma 560, all solutions)")
+    w("")
+    w("Per call: all solutions of `dh_ikc_f32` (metres, float cores only) and `dh_ikc_q` (mm) for "
+      "targets = FK of random configurations within the joint limits (computed untimed; 4 on "
+      "the Cortex-M0 for its 16 KiB of RAM, 16 elsewhere); the loop over the targets is timed as a whole, minus the "
+      "same loop without the call.")
+    w("")
+    w("| core | operation | instructions per call | solutions per call |")
+    w("|---|---|---:|---:|")
+    for c, o in cols:
+        r = runs["%s-%s" % (c, o)]
+        for name, ins, ns in r.ikc:
+            w("| %s -%s | `%s` | %.0f | %.2f |" % (core_name[c], o, name, ins, ns))
     w("")
     w("## Inverse kinematics (`dh_ik_f32`, Puma 560 in metres)")
     w("")
