@@ -390,11 +390,15 @@ static DH_NOINLINE int fast_mod(const dh_frame_q *I, dh_frame_q *O, const dh_q30
  * term (folded away: four MULS, no 64-bit arithmetic, no call). */
 #if DH_PORT_USE_SPLIT16
 #define MULR30(c, x) dh_port_dot2r30_s16(dh_port_split_k(c), dh_port_split_row(x), dh_port_split_k(0), dh_port_split_row(0))
-/* the same for a length l (any int32 but INT32_MIN) and |x| <= 2^30: the
- * split kernel where |l| <= 2^31 - 2^16 (its constant-split domain), else
- * the 64-bit product */
-#define MULR30L(l, x) (abs_u(l) <= 0x7FFF0000u ? MULR30((l), (x)) : rnd30_fit(MUL((l), (x))))
+/* the same for a length l (any int32 but INT32_MIN) and |x| <= 2^30: 0
+ * for a zero length (common), the split kernel where |l| <= 2^31 - 2^16
+ * (its constant-split domain), else the 64-bit product */
+#define MULR30L(l, x) ((l) == 0 ? 0 : abs_u(l) <= 0x7FFF0000u ? MULR30((l), (x)) : rnd30_fit(MUL((l), (x))))
+/* MULR30 by a twist sine/cosine c; ex: the twist is exact (sa, ca in
+ * {0, +-2^30}), where the product is 0 or +-x without rounding */
+#define MULR30T(c, x, ex) ((ex) ? ((c) == 0 ? 0 : ((c) > 0 ? (x) : -(x))) : MULR30((c), (x)))
 #else
+#define MULR30T(c, x, ex) ((void)(ex), MULR30((c), (x)))
 #define MULR30(c, x) rnd30_fit(MUL((c), (x)))
 #define MULR30L(l, x) MULR30((l), (x))
 #endif
@@ -407,16 +411,17 @@ static DH_NOINLINE void link_direct(dh_frame_q *A, unsigned mod, const dh_q30 *v
 {
     const dh_q30 st = v[0], ct = v[1], sa = v[2], ca = v[3];
     const dh_qpos d = v[4], a = v[5];
+    const int ex = ((uint32_t)(sa | ca) & 0x3FFFFFFFu) == 0u;
     if (mod == 0u) {
         /* n = (ct, st, 0), o = ca u + sa z, a = ca z - sa u with u = (-st, ct, 0) */
         A->r[0][0] = ct;
         A->r[0][1] = st;
         A->r[0][2] = 0;
-        A->r[1][0] = MULR30(ca, -st);
-        A->r[1][1] = MULR30(ca, ct);
+        A->r[1][0] = MULR30T(ca, -st, ex);
+        A->r[1][1] = MULR30T(ca, ct, ex);
         A->r[1][2] = sa;
-        A->r[2][0] = MULR30(sa, st);
-        A->r[2][1] = MULR30(sa, -ct);
+        A->r[2][0] = MULR30T(sa, st, ex);
+        A->r[2][1] = MULR30T(sa, -ct, ex);
         A->r[2][2] = ca;
         A->p[0] = MULR30L(a, ct);
         A->p[1] = MULR30L(a, st);
@@ -425,11 +430,11 @@ static DH_NOINLINE void link_direct(dh_frame_q *A, unsigned mod, const dh_q30 *v
         /* n = (ct, st ca, st sa), o = (-st, ct ca, ct sa), a = (0, -sa, ca),
          * p = (a, -sa d, ca d) */
         A->r[0][0] = ct;
-        A->r[0][1] = MULR30(ca, st);
-        A->r[0][2] = MULR30(sa, st);
+        A->r[0][1] = MULR30T(ca, st, ex);
+        A->r[0][2] = MULR30T(sa, st, ex);
         A->r[1][0] = -st;
-        A->r[1][1] = MULR30(ca, ct);
-        A->r[1][2] = MULR30(sa, ct);
+        A->r[1][1] = MULR30T(ca, ct, ex);
+        A->r[1][2] = MULR30T(sa, ct, ex);
         A->r[2][0] = 0;
         A->r[2][1] = -sa;
         A->r[2][2] = ca;
