@@ -394,14 +394,13 @@ static DH_NOINLINE int fast_mod(const dh_frame_q *I, dh_frame_q *O, const dh_q30
  * for a zero length (common), the split kernel where |l| <= 2^31 - 2^16
  * (its constant-split domain), else the 64-bit product */
 #define MULR30L(l, x) ((l) == 0 ? 0 : abs_u(l) <= 0x7FFF0000u ? MULR30((l), (x)) : rnd30_fit(MUL((l), (x))))
+#else
+#define MULR30(c, x) rnd30_fit(MUL((c), (x)))
+#define MULR30L(l, x) ((l) == 0 ? 0 : MULR30((l), (x)))
+#endif
 /* MULR30 by a twist sine/cosine c; ex: the twist is exact (sa, ca in
  * {0, +-2^30}), where the product is 0 or +-x without rounding */
 #define MULR30T(c, x, ex) ((ex) ? ((c) == 0 ? 0 : ((c) > 0 ? (x) : -(x))) : MULR30((c), (x)))
-#else
-#define MULR30T(c, x, ex) ((void)(ex), MULR30((c), (x)))
-#define MULR30(c, x) rnd30_fit(MUL((c), (x)))
-#define MULR30L(l, x) MULR30((l), (x))
-#endif
 
 /* The link matrix of joint j (a step applied to the identity, written
  * out; v from joint_values). Cannot saturate: every entry is a
