@@ -77,6 +77,7 @@ void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
     q = (n * DH_TRIG_DIV90_32) >> 23;           /* floor(n / 90), exact */
     m = n - 90u * q;                            /* 0..89 */
     k = q & 3u;                                 /* quadrant: 90 * 4 = 360 */
+    k |= (uint32_t)(deg_q16 < 0) << 2;          /* and the input's sign (one value live) */
     sv = (uint32_t)dh_trig_sin_q30[m];          /* sin m, 0..2^30 */
     cv = (uint32_t)dh_trig_sin_q30[90u - m];    /* cos m, 0..2^30 */
 
@@ -180,7 +181,7 @@ void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
         sv = cv;
         cv = sw;
     }
-    if (((k >> 1) ^ (uint32_t)(deg_q16 < 0)) & 1u) sv = 0u - sv;
+    if (((k >> 1) ^ (k >> 2)) & 1u) sv = 0u - sv;
     if ((k ^ (k >> 1)) & 1u) cv = 0u - cv;
     *s_q30 = dh_trig_u2i(sv);
     *c_q30 = dh_trig_u2i(cv);
