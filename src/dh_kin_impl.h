@@ -37,4 +37,8 @@ int dh_fk_tool_q_(const dh_robot *r, dh_frame_q *T);
  * frame F supplied by the caller; nonzero when an entry saturated. */
 int dh_kin_jac_q_(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *F);
 
+/* dh_rot_error_q's body (dh_rot_q.c) without its rigidity checks (the
+ * caller's): w = a(Rt R^T), Q3.29 rad. */
+void dh_kin_rot_error_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_dir3_q *w);
+
 #endif /* DHMATH_SRC_DH_KIN_IMPL_H */

@@ -38,6 +38,7 @@
 #include "dhmath/dh_kin.h"
 #include "dhmath/dh_fixed.h"
 #include "dhmath/dh_trig.h"
+#include "dh_kin_impl.h"
 #include "dh_internal.h"
 
 /* element (row a, column b) of a frame's rotation */
@@ -323,13 +324,18 @@ static DH_NOINLINE void rotq_delta(const dh_frame_q *Ft, const dh_frame_q *F, dh
     D->p[2] = 0;
 }
 
-dh_status dh_rot_error_q(const dh_frame_q *F_target, const dh_frame_q *F, dh_dir3_q *w)
+void dh_kin_rot_error_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_dir3_q *w)
 {
     dh_frame_q D;
-    DH_ASSERT(F_target != NULL && F != NULL && w != NULL);
-    if (!rotq_ok(F_target, DH_ROT_ERROR_TOL_Q) || !rotq_ok(F, DH_ROT_ERROR_TOL_Q)) return DH_ERR_NOT_RIGID;
     rotq_delta(F_target, F, &D);
     rotq_rotvec(&D, w);
+}
+
+dh_status dh_rot_error_q(const dh_frame_q *F_target, const dh_frame_q *F, dh_dir3_q *w)
+{
+    DH_ASSERT(F_target != NULL && F != NULL && w != NULL);
+    if (!rotq_ok(F_target, DH_ROT_ERROR_TOL_Q) || !rotq_ok(F, DH_ROT_ERROR_TOL_Q)) return DH_ERR_NOT_RIGID;
+    dh_kin_rot_error_q_(F_target, F, w);
     return DH_OK;
 }
 
