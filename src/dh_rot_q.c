@@ -324,11 +324,39 @@ static DH_NOINLINE void rotq_delta(const dh_frame_q *Ft, const dh_frame_q *F, dh
     D->p[2] = 0;
 }
 
+/* 1/6 and 3/40 in Q2.30 */
+#define ROTQ_SIXTH30 178956971
+#define ROTQ_3_40_30 80530637
+
+/* Small angles (sin theta below 1/16, cos theta >= 0: near convergence in
+ * dh_ik_q, the common case) without the quaternion: u / 2 = sin(theta) k
+ * from the skew part of D, w = (u / 2) theta / sin(theta) by the series
+ * 1 + s^2/6 + 3 s^4/40 (truncation below 3e-9). 0 when D is beyond that. */
+static DH_NOINLINE int rotq_small(const dh_frame_q *D, dh_dir3_q *w)
+{
+    int32_t uh[3], q2, q4, f;
+    uint64_t s2 = 0u;
+    unsigned i;
+    uh[0] = (int32_t)(((int64_t)RQ(D, 2, 1) - RQ(D, 1, 2)) >> 1);
+    uh[1] = (int32_t)(((int64_t)RQ(D, 0, 2) - RQ(D, 2, 0)) >> 1);
+    uh[2] = (int32_t)(((int64_t)RQ(D, 1, 0) - RQ(D, 0, 1)) >> 1);
+    if ((int64_t)RQ(D, 0, 0) + RQ(D, 1, 1) + RQ(D, 2, 2) < DH_Q_ONE30) return 0;   /* cos theta < 0 */
+    for (i = 0; i < 3u; i++) s2 += (uint64_t)dh_q_mul64(uh[i], uh[i]);
+    if (s2 >= ((uint64_t)1 << 52)) return 0;   /* sin theta >= 1/16 */
+    q2 = (int32_t)(s2 >> 30);
+    q4 = (int32_t)(dh_q_mul64(q2, q2) >> 30);
+    f = DH_Q_ONE30 + (int32_t)(dh_q_mul64(q2, ROTQ_SIXTH30) >> 30) + (int32_t)(dh_q_mul64(q4, ROTQ_3_40_30) >> 30);
+    w->x = (int32_t)dh_q_rshr(dh_q_mul64(uh[0], f), 31u);
+    w->y = (int32_t)dh_q_rshr(dh_q_mul64(uh[1], f), 31u);
+    w->z = (int32_t)dh_q_rshr(dh_q_mul64(uh[2], f), 31u);
+    return 1;
+}
+
 void dh_kin_rot_error_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_dir3_q *w)
 {
     dh_frame_q D;
     rotq_delta(F_target, F, &D);
-    rotq_rotvec(&D, w);
+    if (!rotq_small(&D, w)) rotq_rotvec(&D, w);
 }
 
 dh_status dh_rot_error_q(const dh_frame_q *F_target, const dh_frame_q *F, dh_dir3_q *w)
