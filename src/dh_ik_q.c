@@ -65,9 +65,10 @@
 #define OFF_S(n) (20u * (n) + 24u)                   /* IKQ_S_COUNT scalars */
 #define OFF_ST(n) (20u * (n) + 48u)                  /* 8: ikq_state */
 #define OFF_G64(n) (20u * (n) + 56u)                 /* 2n: g, int64 */
-#define OFF_R(n) (22u * (n) + 56u)                   /* 3: orientation error w, Q3.29 */
-#define OFF_H(n) (22u * (n) + 59u)                   /* n*n: H', then its factor */
-#define OFF_Q0(n) ((n) * (n) + 22u * (n) + 59u)      /* n: q0 */
+#define OFF_D(n) (22u * (n) + 56u)                   /* 19: dh_kin_rot_scratch_q: dR, w, q */
+#define OFF_R(n) (22u * (n) + 68u)                   /* 3: its w, orientation error, Q3.29 */
+#define OFF_H(n) (22u * (n) + 75u)                   /* n*n: H', then its factor */
+#define OFF_Q0(n) ((n) * (n) + 22u * (n) + 75u)      /* n: q0 */
 
 /* Scalar state slots (workspace words); int64 values take two. */
 enum {
@@ -330,20 +331,6 @@ static DH_NOINLINE void ikq_init(ikq_ctx *c)
     for (i = 0; i < c->r->n; i++) c->w[OFF_Q(c->r->n, 1u) + i] = ikq_clamp(&c->r->joint[i], c->w[OFF_Q0(c->r->n) + i]);
 }
 
-/* ---- orientation error ---------------------------------------------------- */
-
-/* w = a(Rt R^T) of the evaluated frame (dh_rot_error_q's core, the checks
- * done once by dh_ik_q) into the workspace words at OFF_R (Q3.29). */
-static DH_NOINLINE void ikq_rotvec(const ikq_ctx *c)
-{
-    int32_t *R = c->w + OFF_R(c->r->n);
-    dh_dir3_q w;
-    dh_kin_rot_error_q_(c->target, (const dh_frame_q *)(const void *)(c->w + OFF_F(c->r->n)), &w);
-    R[0] = w.x;
-    R[1] = w.y;
-    R[2] = w.z;
-}
-
 /* ---- evaluation ------------------------------------------------------------ */
 
 /* Position part of the trial slot's error: es[0..2] and S_TEP. */
@@ -366,7 +353,7 @@ static DH_NOINLINE void ikq_pos_err(const ikq_ctx *c)
     }
 }
 
-/* Rotation part (w from ikq_rotvec, or 0 when not driven): es[3..5],
+/* Rotation part (w at OFF_R, or 0 when not driven): es[3..5],
  * S_TER, and E of the whole error into S_TE. */
 static DH_NOINLINE void ikq_rot_err(const ikq_ctx *c)
 {
@@ -774,8 +761,11 @@ static DH_NOINLINE int ikq_eval(const ikq_ctx *c)
     const uint32_t n = c->r->n;
     ikq_pos_err(c);
     c->w[OFF_S(n) + S_TEP] = (int32_t)ikq_dist(c->target->p, c->w + OFF_F(n) + 9u, c->p->mask);
-    if (ikq_rot_mode(c->p->mask)) ikq_rotvec(c);
-    else c->w[OFF_R(n)] = c->w[OFF_R(n) + 1u] = c->w[OFF_R(n) + 2u] = 0;
+    if (ikq_rot_mode(c->p->mask))   /* w = a(Rt R^T), dh_rot_error_q's core */
+        dh_kin_rot_error_q_(c->target, (const dh_frame_q *)(const void *)(c->w + OFF_F(n)),
+                            (dh_kin_rot_scratch_q *)(void *)(c->w + OFF_D(n)));
+    else
+        c->w[OFF_R(n)] = c->w[OFF_R(n) + 1u] = c->w[OFF_R(n) + 2u] = 0;
     ikq_rot_err(c);
     return EV_OK;
 }

@@ -112,7 +112,7 @@ static DH_NOINLINE uint32_t rotq_norm(const int32_t *v, unsigned len)
     uint64_t s = 0u;
     unsigned k;
     for (k = 0; k < len; k++) s += (uint64_t)dh_q_mul64(v[k], v[k]);
-    return rotq_isqrt(s);
+    return dh_q_isqrt62(s);   /* inline: one frame less on the deepest chains */
 }
 
 /* v * 2^frac / d rounded, the sign of v kept: |v| < 2^32, 1 <= d < 2^31,
@@ -283,10 +283,10 @@ dh_status dh_frame_to_axis_angle_q(const dh_frame_q *F, dh_dir3_q *axis, dh_q16 
 /* pi / 180 * 2^36, rounded: Q16.16 degrees -> Q3.29 radians by >> 23 */
 #define ROTQ_DEG2RAD36 INT32_C(1199381129)
 
-/* Rotation vector (Q3.29 rad) of the checked-or-near rotation D. */
-static DH_NOINLINE void rotq_rotvec(const dh_frame_q *D, dh_dir3_q *w)
+/* Rotation vector (Q3.29 rad) of the checked-or-near rotation D (q: 4
+ * words of scratch, the caller's: the frame stays small). */
+static DH_NOINLINE void rotq_rotvec(const dh_frame_q *D, dh_dir3_q *w, int32_t *q)
 {
-    int32_t q[4];
     uint32_t vn, f;
     rotq_quat(D, q);
     vn = rotq_norm(q + 1, 3u);
@@ -352,18 +352,25 @@ static DH_NOINLINE int rotq_small(const dh_frame_q *D, dh_dir3_q *w)
     return 1;
 }
 
-void dh_kin_rot_error_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_dir3_q *w)
+/* w = a(Ft F^T) with the scratch D (dR) and q (its quaternion). */
+DH_INLINE void rotq_err_core(const dh_frame_q *Ft, const dh_frame_q *F, dh_frame_q *D, dh_dir3_q *w, int32_t *q)
 {
-    dh_frame_q D;
-    rotq_delta(F_target, F, &D);
-    if (!rotq_small(&D, w)) rotq_rotvec(&D, w);
+    rotq_delta(Ft, F, D);
+    if (!rotq_small(D, w)) rotq_rotvec(D, w, q);
+}
+
+void dh_kin_rot_error_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_kin_rot_scratch_q *s)
+{
+    rotq_err_core(F_target, F, &s->D, &s->w, s->q);
 }
 
 dh_status dh_rot_error_q(const dh_frame_q *F_target, const dh_frame_q *F, dh_dir3_q *w)
 {
+    dh_frame_q D;
+    int32_t q[4];
     DH_ASSERT(F_target != NULL && F != NULL && w != NULL);
     if (!rotq_ok(F_target, DH_ROT_ERROR_TOL_Q) || !rotq_ok(F, DH_ROT_ERROR_TOL_Q)) return DH_ERR_NOT_RIGID;
-    dh_kin_rot_error_q_(F_target, F, w);
+    rotq_err_core(F_target, F, &D, w, q);
     return DH_OK;
 }
 
