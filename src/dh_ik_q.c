@@ -48,12 +48,8 @@
 #define IKQ_ES_MAX ((int64_t)1 << 30)   /* clamp of the scaled error */
 #define IKQ_B_MAX (((int32_t)1 << 29) - 1)   /* clamp of the weighted Jacobian */
 #define IKQ_LAMBDA_MAX ((int64_t)1 << 61)
-/* 180 / pi * 2^25 and pi / 180 * 2^36 */
+/* 180 / pi * 2^25 */
 #define IKQ_R2D25 1922527338
-#define IKQ_D2R36 1199381129
-/* 1/6 and 3/40 in Q2.30 */
-#define IKQ_SIXTH30 178956971
-#define IKQ_3_40_30 80530637
 
 /* Workspace layout (int32 words), n joints; slot s = 0, 1 (current / trial). */
 #define OFF_J(n, s) ((s) * 6u * (n))                 /* 6n each: Jacobian, then B */
@@ -69,9 +65,10 @@
 #define OFF_S(n) (20u * (n) + 24u)                   /* IKQ_S_COUNT scalars */
 #define OFF_ST(n) (20u * (n) + 48u)                  /* 8: ikq_state */
 #define OFF_G64(n) (20u * (n) + 56u)                 /* 2n: g, int64 */
-#define OFF_R(n) (22u * (n) + 56u)                   /* 20: orientation error scratch */
-#define OFF_H(n) (22u * (n) + 76u)                   /* n*n: H', then its factor */
-#define OFF_Q0(n) ((n) * (n) + 22u * (n) + 76u)      /* n: q0 */
+#define OFF_D(n) (22u * (n) + 56u)                   /* 19: dh_kin_rot_scratch_q: dR, w, q */
+#define OFF_R(n) (22u * (n) + 68u)                   /* 3: its w, orientation error, Q3.29 */
+#define OFF_H(n) (22u * (n) + 75u)                   /* n*n: H', then its factor */
+#define OFF_Q0(n) ((n) * (n) + 22u * (n) + 75u)      /* n: q0 */
 
 /* Scalar state slots (workspace words); int64 values take two. */
 enum {
@@ -334,101 +331,6 @@ static DH_NOINLINE void ikq_init(ikq_ctx *c)
     for (i = 0; i < c->r->n; i++) c->w[OFF_Q(c->r->n, 1u) + i] = ikq_clamp(&c->r->joint[i], c->w[OFF_Q0(c->r->n) + i]);
 }
 
-/* ---- orientation error ---------------------------------------------------- */
-
-/* Scratch of the orientation error (workspace words at OFF_R). */
-enum {
-    R_D = 0,            /* 9: dR row-major, Q2.30 */
-    R_U = 9,            /* 3: u / 2 = sin(theta) k, Q2.30 */
-    R_V = 12,           /* 3: direction whose unit vector times theta is w */
-    R_W = 15,           /* 3: w, Q3.29 */
-    R_TH = 18,          /* theta, Q3.29 */
-    R_CH = 19,          /* cos(theta), Q2.30 */
-    IKQ_R_COUNT = 20
-};
-
-/* dR = Rt R^T (Rt the target's rotation, R the frame's), row-major, and
- * u / 2, cos(theta). */
-static DH_NOINLINE void ikq_dr(const dh_frame_q *Tt, const dh_frame_q *F, int32_t *R)
-{
-    int32_t *d = R + R_D;
-    uint32_t i, j, k;
-    int ovf = 0;
-    for (i = 0; i < 3u; i++)
-        for (j = 0; j < 3u; j++) {
-            int64_t a = 0;
-            for (k = 0; k < 3u; k++) a = dh_q_mla64(a, Tt->r[k][i], F->r[k][j]);
-            d[3u * i + j] = dh_q_rnd30(a, &ovf);
-        }
-    R[R_U + 0] = (int32_t)(((int64_t)d[7] - d[5]) >> 1);
-    R[R_U + 1] = (int32_t)(((int64_t)d[2] - d[6]) >> 1);
-    R[R_U + 2] = (int32_t)(((int64_t)d[3] - d[1]) >> 1);
-    R[R_CH] = (int32_t)(((int64_t)d[0] + d[4] + d[8] - DH_Q_ONE30) >> 1);
-}
-
-/* The angle and the direction: 0 when w is written (below sin = 1/16 and
- * 90 deg, the series theta / sin = 1 + s^2/6 + 3 s^4/40, error below
- * 3e-9), 1 when w = theta v / |v| remains (ikq_dirscale). Beyond 90 deg v
- * is the column of the largest diagonal entry of the symmetric part
- * (1 - c) k k^T, signed like u (the method of dh_kin_rotvec_f32_). */
-static DH_NOINLINE int ikq_axis(int32_t *R)
-{
-    const int32_t *d = R + R_D, *uh = R + R_U, ch = R[R_CH];
-    uint64_t s2 = 0u;
-    int32_t s;
-    dh_q16 deg = 0;
-    uint32_t i, m;
-    for (i = 0; i < 3u; i++) s2 += (uint64_t)dh_q_mul64(uh[i], uh[i]);
-    s = (int32_t)dh_q_sqrt_u64(s2);
-    if (ch >= 0 && s < ((int32_t)1 << 26)) {
-        const int32_t q2 = (int32_t)(s2 >> 30);
-        const int32_t q4 = (int32_t)(dh_q_mul64(q2, q2) >> 30);
-        const int32_t f = DH_Q_ONE30 + (int32_t)(dh_q_mul64(q2, IKQ_SIXTH30) >> 30) +
-                          (int32_t)(dh_q_mul64(q4, IKQ_3_40_30) >> 30);
-        for (i = 0; i < 3u; i++) R[R_W + i] = (int32_t)dh_q_rshr(dh_q_mul64(uh[i], f), 31u);
-        return 0;
-    }
-    (void)dh_atan2_q(s, ch, &deg);
-    R[R_TH] = (int32_t)dh_q_rshr(dh_q_mul64(deg, IKQ_D2R36), 23u);
-    if (ch >= 0) {
-        for (i = 0; i < 3u; i++) R[R_V + i] = uh[i];
-        return 1;
-    }
-    m = 0u;
-    if (d[4] > d[4u * m]) m = 1u;
-    if (d[8] > d[4u * m]) m = 2u;
-    for (i = 0; i < 3u; i++)
-        R[R_V + i] = (int32_t)((((int64_t)d[3u * i + m] + d[3u * m + i]) >> 1) - ((i == m) ? ch : 0));
-    if (dh_q_mul64(R[R_V], uh[0]) + dh_q_mul64(R[R_V + 1], uh[1]) + dh_q_mul64(R[R_V + 2], uh[2]) < 0)
-        for (i = 0; i < 3u; i++) R[R_V + i] = -R[R_V + i];
-    return 1;
-}
-
-/* w = theta v / |v| (v not 0). */
-static DH_NOINLINE void ikq_dirscale(int32_t *R)
-{
-    const int32_t *v = R + R_V;
-    uint64_t n2 = 0u;
-    int32_t m, y;
-    int t;
-    uint32_t k;
-    for (k = 0; k < 3u; k++) n2 += (uint64_t)dh_q_mul64(v[k], v[k]);
-    dh_q_norm_even(n2, &m, &t);
-    y = dh_q_rsqrt29(m, 2u);
-    for (k = 0; k < 3u; k++) {
-        const int32_t u = (int32_t)ikq_shift(dh_q_mul64(v[k], y), 14 + t / 2);   /* unit, Q2.30 */
-        R[R_W + k] = (int32_t)dh_q_rshr(dh_q_mul64(R[R_TH], u), 30u);
-    }
-}
-
-/* a(dR) of the evaluated frame into R_W (Q3.29), three blocks in a row. */
-static DH_NOINLINE void ikq_rotvec(const ikq_ctx *c)
-{
-    int32_t *R = c->w + OFF_R(c->r->n);
-    ikq_dr(c->target, (const dh_frame_q *)(const void *)(c->w + OFF_F(c->r->n)), R);
-    if (ikq_axis(R)) ikq_dirscale(R);
-}
-
 /* ---- evaluation ------------------------------------------------------------ */
 
 /* Position part of the trial slot's error: es[0..2] and S_TEP. */
@@ -451,12 +353,12 @@ static DH_NOINLINE void ikq_pos_err(const ikq_ctx *c)
     }
 }
 
-/* Rotation part (w from ikq_rotvec, or 0 when not driven): es[3..5],
+/* Rotation part (w at OFF_R, or 0 when not driven): es[3..5],
  * S_TER, and E of the whole error into S_TE. */
 static DH_NOINLINE void ikq_rot_err(const ikq_ctx *c)
 {
     const uint32_t n = c->r->n, mask = c->p->mask;
-    const int32_t *wr = c->w + OFF_R(n) + R_W;
+    const int32_t *wr = c->w + OFF_R(n);
     int32_t *es = c->w + OFF_E(n, IKQ_ST(c)->cs ^ 1u), *S = c->w + OFF_S(n);
     uint64_t r2 = 0u;
     int64_t E = 0;
@@ -859,8 +761,11 @@ static DH_NOINLINE int ikq_eval(const ikq_ctx *c)
     const uint32_t n = c->r->n;
     ikq_pos_err(c);
     c->w[OFF_S(n) + S_TEP] = (int32_t)ikq_dist(c->target->p, c->w + OFF_F(n) + 9u, c->p->mask);
-    if (ikq_rot_mode(c->p->mask)) ikq_rotvec(c);
-    else c->w[OFF_R(n) + R_W] = c->w[OFF_R(n) + R_W + 1u] = c->w[OFF_R(n) + R_W + 2u] = 0;
+    if (ikq_rot_mode(c->p->mask))   /* w = a(Rt R^T), dh_rot_error_q's core */
+        dh_kin_rot_error_q_(c->target, (const dh_frame_q *)(const void *)(c->w + OFF_F(n)),
+                            (dh_kin_rot_scratch_q *)(void *)(c->w + OFF_D(n)));
+    else
+        c->w[OFF_R(n)] = c->w[OFF_R(n) + 1u] = c->w[OFF_R(n) + 2u] = 0;
     ikq_rot_err(c);
     return EV_OK;
 }

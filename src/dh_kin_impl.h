@@ -37,4 +37,14 @@ int dh_fk_tool_q_(const dh_robot *r, dh_frame_q *T);
  * frame F supplied by the caller; nonzero when an entry saturated. */
 int dh_kin_jac_q_(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *F);
 
+/* dh_rot_error_q's body (dh_rot_q.c) without its rigidity checks (the
+ * caller's): s->w = a(Rt R^T), Q3.29 rad; s->D (dR) and s->q scratch, in
+ * the caller's memory (dh_ik_q keeps them off the stack: 19 words). */
+typedef struct {
+    dh_frame_q D;
+    dh_dir3_q w;
+    int32_t q[4];
+} dh_kin_rot_scratch_q;
+void dh_kin_rot_error_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_kin_rot_scratch_q *s);
+
 #endif /* DHMATH_SRC_DH_KIN_IMPL_H */

@@ -38,6 +38,7 @@
 #include "dhmath/dh_kin.h"
 #include "dhmath/dh_fixed.h"
 #include "dhmath/dh_trig.h"
+#include "dh_kin_impl.h"
 #include "dh_internal.h"
 
 /* element (row a, column b) of a frame's rotation */
@@ -111,7 +112,7 @@ static DH_NOINLINE uint32_t rotq_norm(const int32_t *v, unsigned len)
     uint64_t s = 0u;
     unsigned k;
     for (k = 0; k < len; k++) s += (uint64_t)dh_q_mul64(v[k], v[k]);
-    return rotq_isqrt(s);
+    return dh_q_isqrt62(s);   /* inline: one frame less on the deepest chains */
 }
 
 /* v * 2^frac / d rounded, the sign of v kept: |v| < 2^32, 1 <= d < 2^31,
@@ -282,10 +283,10 @@ dh_status dh_frame_to_axis_angle_q(const dh_frame_q *F, dh_dir3_q *axis, dh_q16 
 /* pi / 180 * 2^36, rounded: Q16.16 degrees -> Q3.29 radians by >> 23 */
 #define ROTQ_DEG2RAD36 INT32_C(1199381129)
 
-/* Rotation vector (Q3.29 rad) of the checked-or-near rotation D. */
-static DH_NOINLINE void rotq_rotvec(const dh_frame_q *D, dh_dir3_q *w)
+/* Rotation vector (Q3.29 rad) of the checked-or-near rotation D (q: 4
+ * words of scratch, the caller's: the frame stays small). */
+static DH_NOINLINE void rotq_rotvec(const dh_frame_q *D, dh_dir3_q *w, int32_t *q)
 {
-    int32_t q[4];
     uint32_t vn, f;
     rotq_quat(D, q);
     vn = rotq_norm(q + 1, 3u);
@@ -323,13 +324,53 @@ static DH_NOINLINE void rotq_delta(const dh_frame_q *Ft, const dh_frame_q *F, dh
     D->p[2] = 0;
 }
 
+/* 1/6 and 3/40 in Q2.30 */
+#define ROTQ_SIXTH30 178956971
+#define ROTQ_3_40_30 80530637
+
+/* Small angles (sin theta below 1/16, cos theta >= 0: near convergence in
+ * dh_ik_q, the common case) without the quaternion: u / 2 = sin(theta) k
+ * from the skew part of D, w = (u / 2) theta / sin(theta) by the series
+ * 1 + s^2/6 + 3 s^4/40 (truncation below 3e-9). 0 when D is beyond that. */
+static DH_NOINLINE int rotq_small(const dh_frame_q *D, dh_dir3_q *w)
+{
+    int32_t uh[3], q2, q4, f;
+    uint64_t s2 = 0u;
+    unsigned i;
+    uh[0] = (int32_t)(((int64_t)RQ(D, 2, 1) - RQ(D, 1, 2)) >> 1);
+    uh[1] = (int32_t)(((int64_t)RQ(D, 0, 2) - RQ(D, 2, 0)) >> 1);
+    uh[2] = (int32_t)(((int64_t)RQ(D, 1, 0) - RQ(D, 0, 1)) >> 1);
+    if ((int64_t)RQ(D, 0, 0) + RQ(D, 1, 1) + RQ(D, 2, 2) < DH_Q_ONE30) return 0;   /* cos theta < 0 */
+    for (i = 0; i < 3u; i++) s2 += (uint64_t)dh_q_mul64(uh[i], uh[i]);
+    if (s2 >= ((uint64_t)1 << 52)) return 0;   /* sin theta >= 1/16 */
+    q2 = (int32_t)(s2 >> 30);
+    q4 = (int32_t)(dh_q_mul64(q2, q2) >> 30);
+    f = DH_Q_ONE30 + (int32_t)(dh_q_mul64(q2, ROTQ_SIXTH30) >> 30) + (int32_t)(dh_q_mul64(q4, ROTQ_3_40_30) >> 30);
+    w->x = (int32_t)dh_q_rshr(dh_q_mul64(uh[0], f), 31u);
+    w->y = (int32_t)dh_q_rshr(dh_q_mul64(uh[1], f), 31u);
+    w->z = (int32_t)dh_q_rshr(dh_q_mul64(uh[2], f), 31u);
+    return 1;
+}
+
+/* w = a(Ft F^T) with the scratch D (dR) and q (its quaternion). */
+DH_INLINE void rotq_err_core(const dh_frame_q *Ft, const dh_frame_q *F, dh_frame_q *D, dh_dir3_q *w, int32_t *q)
+{
+    rotq_delta(Ft, F, D);
+    if (!rotq_small(D, w)) rotq_rotvec(D, w, q);
+}
+
+void dh_kin_rot_error_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_kin_rot_scratch_q *s)
+{
+    rotq_err_core(F_target, F, &s->D, &s->w, s->q);
+}
+
 dh_status dh_rot_error_q(const dh_frame_q *F_target, const dh_frame_q *F, dh_dir3_q *w)
 {
     dh_frame_q D;
+    int32_t q[4];
     DH_ASSERT(F_target != NULL && F != NULL && w != NULL);
     if (!rotq_ok(F_target, DH_ROT_ERROR_TOL_Q) || !rotq_ok(F, DH_ROT_ERROR_TOL_Q)) return DH_ERR_NOT_RIGID;
-    rotq_delta(F_target, F, &D);
-    rotq_rotvec(&D, w);
+    rotq_err_core(F_target, F, &D, w, q);
     return DH_OK;
 }
 

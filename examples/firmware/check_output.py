@@ -2,7 +2,7 @@
 """Runs a firmware example (under QEMU) and checks its output against an
 independent double-precision computation with numpy.
 
-  check_output.py --robot ROBOT.dh --kind fixed|float [--qpos-frac N] -- CMD...
+  check_output.py --robot ROBOT.dh --kind fixed|fixedkin|float [--qpos-frac N] -- CMD...
 
 The reference never uses the library: the robot is read from its .dh file
 (the published DH table), the FK is the product of standard DH link
@@ -30,6 +30,14 @@ EULER_ALGO_TOL_DEG = 2.5e-5
 # float FK, which differs from the exact one by FLOAT_FK_TOL)
 IK_TOL_POS = 1e-6
 IK_TOL_ROT = 1e-5
+# dh_ikc_q (include/dhmath/dh_ikc.h): every solution within 5e-3 mm and
+# 5e-6 rad of the target; the generating configuration within 2e-3 deg
+IKC_Q_TOL_MM = 5e-3
+IKC_Q_TOL_RAD = 5e-6
+IKC_Q_TOL_DEG = 2e-3
+# dh_frame_to_euler_q (include/dhmath/dh_rot.h): 2e-5 deg (middle angle >= 1
+# deg from a pole) plus 1 LSB of Q16.16
+EULER_Q_TOL_DEG = 2e-5 + 1.0 / 65536.0
 
 
 def read_dh(path):
@@ -107,16 +115,16 @@ def parse(out):
     return lines
 
 
-def check_fixed(rows, lines, frac, c):
+def check_fixed(rows, lines, frac, c, qkey='q_deg', qone=1.0):
     one_pos, one_rot = float(1 << frac), float(1 << 30)
     n = 0
     for i, (key, vals) in enumerate(lines):
-        if key != 'q_deg':
+        if key != qkey:
             continue
-        q = [float(v) for v in vals]
+        q = [float(v) / qone for v in vals]
         T = fk(rows, q)
         (pk, pv), (rk, rv) = (lines[i + 1:i + 3] + [('', []), ('', [])])[:2]
-        c.true('lines after q_deg %s are p_qpos and r_q30' % vals, pk == 'p_qpos' and rk == 'r_q30')
+        c.true('lines after %s %s are p_qpos and r_q30' % (qkey, vals), pk == 'p_qpos' and rk == 'r_q30')
         if pk != 'p_qpos' or rk != 'r_q30':
             continue
         p = [int(v) / one_pos for v in pv]
@@ -126,6 +134,48 @@ def check_fixed(rows, lines, frac, c):
                T[:3, :3].reshape(9) * one_rot, FIXED_TOL_Q30_LSB)
         n += 1
     c.true('%d configurations printed' % n, n == 3)
+
+
+def check_fixed_kin(rows, lines, frac, c):
+    one_pos, one_rot, one_deg = float(1 << frac), float(1 << 30), 65536.0
+    check_fixed(rows, lines, frac, c, 'q_q16', one_deg)
+    d = {}
+    for key, vals in lines:
+        d.setdefault(key, []).append([int(v) for v in vals])
+    need = ['q_q16', 'euler_zyx_q16', 'ikc_sol_q16', 'ikc_nearest', 'ikq_status', 'ikq_q16', 'ikq_tol']
+    missing = [k for k in need if k not in d]
+    c.true('every output line present (missing: %s)' % (missing or 'none'), not missing)
+    if missing or len(d['q_q16']) < 2:
+        return
+    q_goal = [v / one_deg for v in d['q_q16'][1]]
+    T = fk(rows, q_goal)
+    ref = zyx_deg(T[:3, :3])
+    tol = EULER_Q_TOL_DEG + math.degrees(2.0 * FIXED_TOL_Q30_LSB / one_rot / math.cos(math.radians(ref[1])))
+    c.near('Euler ZYX of the FK pose (deg)', [v / one_deg for v in d['euler_zyx_q16'][0]], ref, tol)
+
+    def reaches(what, q, tol_mm, tol_rad):
+        Tq = fk(rows, q)
+        c.near('%s reaches the target position (mm)' % what, Tq[:3, 3], T[:3, 3], tol_mm)
+        c.near('%s reaches the target orientation (rad)' % what, [rot_angle(T[:3, :3], Tq[:3, :3])], [0.0],
+               tol_rad)
+        c.true('%s within the joint limits of the .dh file' % what,
+               all(row['min'] <= qi <= row['max'] for row, qi in zip(rows, q)))
+
+    # the target is dh_fk_q's frame: its error (FIXED_TOL_MM, 64 LSB per
+    # entry, at most about 2 x 64 LSB in angle) adds to every bound
+    fk_rad = 2.0 * FIXED_TOL_Q30_LSB / one_rot
+    sols = [[v / one_deg for v in s_] for s_ in d['ikc_sol_q16']]
+    for k, q in enumerate(sols):
+        reaches('closed-form solution %d' % k, q, IKC_Q_TOL_MM + FIXED_TOL_MM, IKC_Q_TOL_RAD + fk_rad)
+    near = d['ikc_nearest'][0][0]
+    c.true('nearest solution index %d valid' % near, 0 <= near < len(sols))
+    if 0 <= near < len(sols):
+        c.near('nearest closed-form solution is the generating configuration (deg)', sols[near], q_goal,
+               IKC_Q_TOL_DEG)
+    c.true('numerical IK status DH_OK (got %d)' % d['ikq_status'][0][0], d['ikq_status'][0][0] == 0)
+    tol_pos, tol_rot = d['ikq_tol'][0][0] / one_pos, d['ikq_tol'][0][1] / one_rot
+    reaches('numerical IK solution', [v / one_deg for v in d['ikq_q16'][0]],
+            tol_pos + 2.0 * FIXED_TOL_MM, tol_rot + 2.0 * fk_rad)
 
 
 def check_float(rows, lines, c):
@@ -165,7 +215,7 @@ def check_float(rows, lines, c):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--robot', required=True)
-    ap.add_argument('--kind', choices=['fixed', 'float'], required=True)
+    ap.add_argument('--kind', choices=['fixed', 'fixedkin', 'float'], required=True)
     ap.add_argument('--qpos-frac', type=int, default=16)
     ap.add_argument('cmd', nargs=argparse.REMAINDER)
     a = ap.parse_args()
@@ -182,6 +232,8 @@ def main():
     lines = parse(run.stdout)
     if a.kind == 'fixed':
         check_fixed(rows, lines, a.qpos_frac, c)
+    elif a.kind == 'fixedkin':
+        check_fixed_kin(rows, lines, a.qpos_frac, c)
     else:
         check_float(rows, lines, c)
     print('%d of %d checks passed' % (c.checks - c.failures, c.checks))

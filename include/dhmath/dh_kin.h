@@ -293,7 +293,7 @@ typedef struct {
  *  normal matrix and its factor, the frame, the orientation error's
  *  scratch, the solver state and a copy of q0 (so that dh_ik_q stays
  *  within its stack budget). */
-#define DH_IK_WORK_Q(n) ((n) * (n) + 23u * (n) + 76u)
+#define DH_IK_WORK_Q(n) ((n) * (n) + 23u * (n) + 75u)
 
 /**
  * @brief Fixed-point defaults for robot r (integer only): max_iter 500,
