@@ -326,3 +326,33 @@ double dhs_rot_err_q(const dh_frame_q *F, const dhs_mat4_d *R)
         }
     return e;
 }
+
+double dhs_rot_angle(double R[3][3])
+{
+    double ux = R[1][2] - R[2][1], uy = R[2][0] - R[0][2], uz = R[0][1] - R[1][0];
+    double s = sqrt(ux * ux + uy * uy + uz * uz), c = R[0][0] + R[1][1] + R[2][2] - 1.0;
+    return atan2(s, c);
+}
+
+void dhs_true_error_f32(const dh_robot *r, const float *q, const dh_mat4_f32 *target, double *ep, double *er)
+{
+    dhs_mat4_d T;
+    double qd[DHS_MAX_JOINTS], D[3][3];
+    uint32_t i;
+    int a, b, k;
+    for (i = 0; i < r->n && i < DHS_MAX_JOINTS; i++) qd[i] = (double)q[i];
+    dhs_fk_ref_f32(r, qd, NULL, &T);
+    *ep = 0;
+    for (k = 0; k < 3; k++) {
+        double d = (double)target->m[3][k] - T.m[3][k];
+        *ep += d * d;
+    }
+    *ep = sqrt(*ep);
+    for (a = 0; a < 3; a++)
+        for (b = 0; b < 3; b++) {
+            double s = 0;
+            for (k = 0; k < 3; k++) s += (double)target->m[k][a] * T.m[k][b];
+            D[b][a] = s;
+        }
+    *er = dhs_rot_angle(D);
+}

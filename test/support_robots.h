@@ -112,6 +112,13 @@ int32_t dhs_to_q(double x, int frac);
 void dhs_q_from_double(const dh_robot *r, const double *q, int32_t *qq);
 
 /** Largest |position difference| (length unit). */
+/** Rotation angle (rad) of the double 3x3 R (column-major R[col][row]),
+ *  robust near 0 and pi: atan2 of the skew part's norm and trace - 1. */
+double dhs_rot_angle(double R[3][3]);
+/** True errors of float joint values q for a float target: position norm
+ *  and rotation angle of R_target R(q)^T, by the double reference FK of
+ *  r's stored float parameters (dhs_fk_ref_f32). */
+void dhs_true_error_f32(const dh_robot *r, const float *q, const dh_mat4_f32 *target, double *ep, double *er);
 double dhs_pos_err_f32(const dh_mat4_f32 *T, const dhs_mat4_d *R);
 /** Largest |rotation entry difference| (3x3 part). */
 double dhs_rot_err_f32(const dh_mat4_f32 *T, const dhs_mat4_d *R);

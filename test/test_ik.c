@@ -25,39 +25,6 @@ static float g_work[DH_IK_WORK_FLOATS(NJ)];
 
 /* ---------------------------------------------------------------------- */
 
-/* Rotation vector angle of R (column-major 3x3, double), robust. */
-static double rot_angle(double R[3][3])
-{
-    double ux = R[1][2] - R[2][1], uy = R[2][0] - R[0][2], uz = R[0][1] - R[1][0];
-    double s = sqrt(ux * ux + uy * uy + uz * uz), c = R[0][0] + R[1][1] + R[2][2] - 1.0;
-    return atan2(s, c);
-}
-
-/* True errors of float q for the float target: position norm and rotation
- * angle of R_target R(q)^T, both from the double reference FK. */
-static void true_error(const dh_robot *r, const float *q, const dh_mat4_f32 *target, double *ep, double *er)
-{
-    dhs_mat4_d T;
-    double qd[NJ], D[3][3];
-    uint32_t i;
-    int a, b, k;
-    for (i = 0; i < r->n; i++) qd[i] = (double)q[i];
-    dhs_fk_ref_f32(r, qd, NULL, &T);
-    *ep = 0;
-    for (k = 0; k < 3; k++) {
-        double d = (double)target->m[3][k] - T.m[3][k];
-        *ep += d * d;
-    }
-    *ep = sqrt(*ep);
-    for (a = 0; a < 3; a++)
-        for (b = 0; b < 3; b++) {
-            double s = 0;
-            for (k = 0; k < 3; k++) s += (double)target->m[k][a] * T.m[k][b];
-            D[b][a] = s;
-        }
-    *er = rot_angle(D);
-}
-
 static int within_limits(const dh_robot *r, const float *q)
 {
     uint32_t i;
@@ -136,7 +103,7 @@ static void run_rate(const char *name, const dhs_robot *desc, const float *home,
                      q_str(q, r.n, 0));
         DHT_TRUE_MSG(within_limits(&r, qo), "%s target %d: result outside the limits: q %s; target q %s", name, it,
                      qf_str(qo, r.n, 1), q_str(q, r.n, 0));
-        true_error(&r, qo, &T, &ep, &er);
+        dhs_true_error_f32(&r, qo, &T, &ep, &er);
         DHT_TRUE_MSG(res.iterations <= prm->max_iter, "%s target %d: %lu iterations > max_iter %lu", name, it,
                      (unsigned long)res.iterations, (unsigned long)prm->max_iter);
         s->runs++;
@@ -329,7 +296,7 @@ static void ik_unreachable(void)
     DHT_EQ_INT(st, DH_ERR_UNREACHABLE);
     DHT_TRUE_MSG(res.iterations < 400u, "%lu iterations, bound < 400", (unsigned long)res.iterations);
     DHT_TRUE_MSG(within_limits(&r, q), "result outside the limits: q %s", qf_str(q, r.n, 0));
-    true_error(&r, q, &T, &ep, &er);
+    dhs_true_error_f32(&r, q, &T, &ep, &er);
     DHT_NEAR(res.err_pos, ep, 1e-5);
     /* reach of the Puma is < 1.1 m from the shoulder at z = 0.672: the
      * distance to (2, 0.5, 1) can't be below 2.06 - 1.1 */
@@ -341,7 +308,7 @@ static void ik_unreachable(void)
     DHT_EQ_INT(st, DH_ERR_UNREACHABLE);
     DHT_TRUE_MSG(res.iterations < 400u, "%lu iterations, bound < 400", (unsigned long)res.iterations);
     DHT_TRUE_MSG(within_limits(&r, q), "result outside the limits: q %s", qf_str(q, r.n, 0));
-    true_error(&r, q, &T, &ep, &er);
+    dhs_true_error_f32(&r, q, &T, &ep, &er);
     DHT_NEAR(res.err_pos, ep, 1e-5);
     dht_printf("unreachable target, position only: status %d after %lu iterations, residual %.6g m\n", (int)st,
                (unsigned long)res.iterations, ep);
@@ -353,7 +320,7 @@ static void ik_unreachable(void)
     DHT_EQ_INT(st, DH_ERR_UNREACHABLE);
     DHT_TRUE_MSG(res.iterations < 100u, "%lu iterations, bound < 100", (unsigned long)res.iterations);
     DHT_TRUE_MSG(within_limits(&r, q), "result outside the limits: q %s", qf_str(q, r.n, 0));
-    true_error(&r, q, &T, &ep, &er);
+    dhs_true_error_f32(&r, q, &T, &ep, &er);
     DHT_NEAR(res.err_pos, ep, 1e-5);
     DHT_TRUE_MSG(ep > 0.9 && ep < 1.3, "true residual %.6g m, expected in (0.9, 1.3)", ep);
 }
@@ -383,7 +350,7 @@ static void ik_limits_respected(void)
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_OK);
     DHT_TRUE_MSG(within_limits(&r, q), "result outside the limits: q %s", qf_str(q, r.n, 0));
     DHT_NEAR(q[1], 70.0, 1e-3);             /* elbow up */
-    true_error(&r, q, &T, &ep, &er);
+    dhs_true_error_f32(&r, q, &T, &ep, &er);
     DHT_TRUE_MSG(ep <= 1e-6, "true position error %.3g m > 1e-6", ep);
     /* q1 limited too, to [50, 90]: the elbow-up solution needs q1 = 35 - 70
      * ... = -35 (outside), the elbow-down one q1 = 35 with q2 = -70 (outside):
@@ -393,7 +360,7 @@ static void ik_limits_respected(void)
         dh_status st = dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
         DHT_EQ_INT(st, DH_ERR_UNREACHABLE);     /* every attempt stalls at the limits */
         DHT_TRUE_MSG(within_limits(&r, q), "result outside the limits: q %s", qf_str(q, r.n, 0));
-        true_error(&r, q, &T, &ep, &er);
+        dhs_true_error_f32(&r, q, &T, &ep, &er);
         DHT_TRUE_MSG(ep > 1e-3, "true position error %.3g m, expected > 1e-3 (no admissible solution)", ep);
         DHT_NEAR(res.err_pos, ep, 1e-6);
     }
@@ -416,7 +383,7 @@ static void ik_multiturn(void)
     dh_ik_params_default(&r, &p);
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_OK);
     for (i = 0; i < 6; i++) DHT_NEAR(q[i], qt[i], 1e-2);
-    true_error(&r, q, &T, &ep, &er);
+    dhs_true_error_f32(&r, q, &T, &ep, &er);
     DHT_TRUE_MSG(ep <= 1e-6 && er <= 1e-5, "true errors %.3g m / %.3g rad, bounds 1e-6 / 1e-5", ep, er);
 }
 
@@ -459,7 +426,7 @@ static void ik_prismatic(void)
         q[0] = 0.5f; q[1] = 0.0f; q[2] = 0.0f;
         p.mask = DH_IK_FULL;
         st = dh_ik_f32(&cart, &T, q, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
-        true_error(&cart, q, &T, &ep, &er);
+        dhs_true_error_f32(&cart, q, &T, &ep, &er);
         DHT_TRUE_MSG(within_limits(&cart, q), "cartesian: result outside the limits: q %s", qf_str(q, 3u, 0));
         if (st == DH_OK && ep <= 1e-6 && er <= 1e-5) ok_c++;
         for (i = 0; i < 3; i++) DHT_NEAR(q[i], qc[i], 2e-6);
@@ -469,7 +436,7 @@ static void ik_prismatic(void)
         q[0] = 0.0f; q[1] = 90.0f; q[2] = 0.15f; q[3] = 0.0f;
         p.mask = DH_IK_POSITION | DH_IK_RZ;
         st = dh_ik_f32(&scara, &T, q, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
-        true_error(&scara, q, &T, &ep, &er);
+        dhs_true_error_f32(&scara, q, &T, &ep, &er);
         DHT_TRUE_MSG(within_limits(&scara, q), "SCARA: result outside the limits: q %s", qf_str(q, 4u, 0));
         /* the SCARA keeps its tool vertical, so the full rotation matches too */
         if (st == DH_OK && ep <= 1e-6 && er <= 1e-5) ok_s++;
@@ -629,7 +596,7 @@ static void ik_ur5_hard_target(void)
     p.tol_pos = 1e-6f;
     p.w_rot = 1.0f;
     st = dh_ik_f32(&r, &T, ur5_home, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
-    true_error(&r, q, &T, &ep, &er);
+    dhs_true_error_f32(&r, q, &T, &ep, &er);
     dht_printf("ur5 hard target: status %d after %lu iterations, true error %.3g m / %.3g rad\n", (int)st,
                (unsigned long)res.iterations, ep, er);
     DHT_TRUE_MSG(st == DH_OK && ep <= 1e-6 && er <= 1e-5,
@@ -683,7 +650,7 @@ static void ik_prismatic_unlimited(void)
         p.mask = DH_IK_POSITION;
         p.tol_pos = (float)(1e-6 * dist);
         st = dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
-        true_error(&r, q, &T, &ep, &er);
+        dhs_true_error_f32(&r, q, &T, &ep, &er);
         dht_printf("R R P to (%g, %g, %g): status %d after %lu iterations, q %s, true error %.3g\n",
                    (double)tgt[k][0], (double)tgt[k][1], (double)tgt[k][2], (int)st, (unsigned long)res.iterations,
                    qf_str(q, 3u, 0), ep);

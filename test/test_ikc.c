@@ -34,38 +34,6 @@ static float g_work[DH_IK_WORK_FLOATS(NJ)];
 
 /* ---------------------------------------------------------------------- */
 
-static double rot_angle(double R[3][3])
-{
-    double ux = R[1][2] - R[2][1], uy = R[2][0] - R[0][2], uz = R[0][1] - R[1][0];
-    double s = sqrt(ux * ux + uy * uy + uz * uz), c = R[0][0] + R[1][1] + R[2][2] - 1.0;
-    return atan2(s, c);
-}
-
-/* Position norm and rotation angle between FK(q) (double reference of the
- * float parameters) and the target. */
-static void true_error(const dh_robot *r, const float *q, const dh_mat4_f32 *target, double *ep, double *er)
-{
-    dhs_mat4_d T;
-    double qd[NJ], D[3][3];
-    uint32_t i;
-    int a, b, k;
-    for (i = 0; i < r->n; i++) qd[i] = (double)q[i];
-    dhs_fk_ref_f32(r, qd, NULL, &T);
-    *ep = 0;
-    for (k = 0; k < 3; k++) {
-        double d = (double)target->m[3][k] - T.m[3][k];
-        *ep += d * d;
-    }
-    *ep = sqrt(*ep);
-    for (a = 0; a < 3; a++)
-        for (b = 0; b < 3; b++) {
-            double s = 0;
-            for (k = 0; k < 3; k++) s += (double)target->m[k][a] * T.m[k][b];
-            D[b][a] = s;
-        }
-    *er = rot_angle(D);
-}
-
 static void target_of(const dh_robot *r, const double *q, dh_mat4_f32 *T)
 {
     dhs_mat4_d D;
@@ -131,7 +99,7 @@ static void check_solutions(const dh_robot *r, const dh_mat4_f32 *T, const dh_ik
     uint32_t s;
     for (s = 0; s < n_sol; s++) {
         double ep, er;
-        true_error(r, sol[s].q, T, &ep, &er);
+        dhs_true_error_f32(r, sol[s].q, T, &ep, &er);
         DHT_TRUE_MSG(ep <= TOL_POS && er <= TOL_ROT, "%s: solution %u (%s, flags 0x%x): position error %.3g m, rotation %.3g rad",
                      what, (unsigned)s, qf_str(sol[s].q, r->n, 0), (unsigned)sol[s].flags, ep, er);
         DHT_TRUE_MSG(((sol[s].flags & DH_IKC_OUT_OF_LIMITS) != 0u) == !within_limits(r, sol[s].q),
