@@ -44,7 +44,7 @@ static const char k_usage[] =
     "  jacobian [--fixed] ROBOT q1,q2,...\n"
     "                                  6 x n geometric Jacobian in the base frame\n"
     "                                  (rows vx vy vz wx wy wz; per radian for R joints)\n"
-    "  ik [--q0 q1,...] [--position] [--tol-pos X] [--tol-rot RAD] [--w-rot X]\n"
+    "  ik [--fixed] [--q0 q1,...] [--position] [--tol-pos X] [--tol-rot RAD] [--w-rot X]\n"
     "     [--max-iter N] ROBOT EXPR    joint values reaching EXPR; status on stderr;\n"
     "                                  exit 0 converged, 3 not converged\n"
     "  ik --all [--q0 q1,...] ROBOT EXPR\n"
@@ -708,6 +708,78 @@ static int ik_all(const opts *o, const dh_robot *r, const dh_robotfile *rf, cons
     return rc;
 }
 
+/* ik --fixed: dh_ik_q on the robot's fixed path (robot in mm, say). The
+ * target is EXPR evaluated in float and rounded to a dh_frame_q; --q0 and
+ * the tolerances are rounded to the fixed formats; the joint values are
+ * printed in degrees / length units as without --fixed. */
+static int ik_fixed(const opts *o, const dh_robot *r, const dh_mat4_f32 *target)
+{
+    const double pscale = (double)((int32_t)1 << DH_QPOS_FRAC);
+    double qd[DH_MAX_JOINTS], x;
+    int32_t q0[DH_MAX_JOINTS], q[DH_MAX_JOINTS];
+    static int32_t work[DH_IK_WORK_Q(DH_MAX_JOINTS)];
+    dh_ik_params_q prm;
+    dh_ik_result_q res;
+    dh_frame_q F;
+    unsigned k;
+    dh_status st;
+    int rc;
+    if ((r->flags & DH_ROBOT_HAS_Q) == 0u)
+        return error_msg("ik --fixed: a constant of the robot does not fit the fixed-point formats", NULL);
+    if (dh_frame_from_mat4_q(target, &F) != DH_OK) {
+        fprintf(stderr, "dhmath: error: ik --fixed: the target EXPR is not a rigid frame in the fixed-point formats "
+                "(rotation entries in Q2.30, position |x| < %ld length units)\n", 1L << (31 - DH_QPOS_FRAC));
+        return EXIT_ERR;
+    }
+    for (k = 0; k < r->n; k++) qd[k] = 0.0;
+    if (o->q0 && (rc = parse_list(o->q0, r->n, qd, "--q0")) != 0) return rc;
+    if ((rc = joints_to_q(r, qd, q0)) != 0) return rc;
+    dh_ik_params_default_q(r, &prm);
+    if (o->position) prm.mask = DH_IK_POSITION;
+    if (o->tol_pos) {
+        if ((rc = parse_num_arg(o->tol_pos, "--tol-pos", &x)) != 0) return rc;
+        if (!(x >= 0.0 && x * pscale < 2147483647.0)) return error_msg("--tol-pos must be >= 0 and fit the fixed length format", NULL);
+        prm.tol_pos = (int32_t)floor(x * pscale + 0.5);
+    }
+    if (o->tol_rot) {
+        if ((rc = parse_num_arg(o->tol_rot, "--tol-rot", &x)) != 0) return rc;
+        if (!(x >= 0.0 && x < 2.0)) return error_msg("--tol-rot must be in [0, 2) rad with --fixed", NULL);
+        prm.tol_rot = (int32_t)floor(x * 1073741824.0 + 0.5);
+    }
+    if (o->w_rot) {
+        if ((rc = parse_num_arg(o->w_rot, "--w-rot", &x)) != 0) return rc;
+        if (!(x > 0.0 && x * pscale < 2147483647.0 && floor(x * pscale + 0.5) >= 1.0))
+            return error_msg("--w-rot must be > 0 and fit the fixed length format", NULL);
+        prm.w_rot = (int32_t)floor(x * pscale + 0.5);
+    }
+    if (o->max_iter) {
+        if ((rc = parse_num_arg(o->max_iter, "--max-iter", &x)) != 0) return rc;
+        if (!(x >= 1.0 && x <= 1e6 && floor(x) == x)) return error_msg("--max-iter must be an integer in 1..1000000", NULL);
+        prm.max_iter = (uint32_t)x;
+    }
+    memset(&res, 0, sizeof res);
+    st = dh_ik_q(r, &F, q0, &prm, work, sizeof work / sizeof work[0], q, &res);
+    if (st == DH_ERR_NOT_RIGID)
+        return error_msg("ik --fixed: the target's rotation, or the robot's end rotation at the start, is not a "
+                         "rotation (not orthonormal with det +1)", NULL);
+    if (st == DH_ERR_OVERFLOW) {
+        fprintf(stderr, "dhmath: error: overflow: ik --fixed: the forward kinematics or the pose error at the start "
+                "saturates the fixed-point formats (|x| < %ld length units); ik without --fixed computes in float\n",
+                1L << (31 - DH_QPOS_FRAC));
+        return EXIT_ERR;
+    }
+    if (st != DH_OK && st != DH_ERR_NO_CONVERGENCE && st != DH_ERR_UNREACHABLE)
+        return error_msg("ik --fixed", dh_status_str(st));
+    for (k = 0; k < r->n; k++)
+        put_num((double)q[k] / (r->joint[k].type == DH_JOINT_REVOLUTE ? 65536.0 : pscale), k + 1 == r->n);
+    rc = finish();
+    fprintf(stderr, "ik --fixed: %s (%s), %lu iterations, position error %.3g, orientation error %.3g rad\n",
+            st == DH_OK ? "converged" : "not converged", dh_status_str(st), (unsigned long)res.iterations,
+            (double)res.err_pos / pscale, (double)res.err_rot / 1073741824.0);
+    if (rc) return rc;
+    return st == DH_OK ? 0 : EXIT_NOCONV;
+}
+
 static int cmd_ik(int argc, char **argv)
 {
     opts o;
@@ -722,13 +794,15 @@ static int cmd_ik(int argc, char **argv)
     unsigned n, k;
     dh_status st;
     double L, x;
-    int rc = parse_opts(argc, argv, &o, "q0 position tol-pos tol-rot w-rot max-iter all");
+    int rc = parse_opts(argc, argv, &o, "q0 position tol-pos tol-rot w-rot max-iter all fixed");
     if (rc) return rc;
     if (o.npos != 2) return usage_error("ik takes ROBOTFILE EXPR [--q0 q1,...] [--position] [--tol-pos X] "
                                         "[--tol-rot X] [--w-rot X] [--max-iter N], or --all [--q0 q1,...]", NULL);
-    if ((rc = load_robot(o.pos[0], 0, &r, &rf)) != 0) return rc;
+    if ((rc = load_robot(o.pos[0], o.fixed, &r, &rf)) != 0) return rc;
     if ((rc = eval_expr(o.pos[1], &target)) != 0) return rc;
+    if (o.all && o.fixed) return usage_error("ik --all does not take --fixed", NULL);
     if (o.all) return ik_all(&o, &r, &rf, &target);
+    if (o.fixed) return ik_fixed(&o, &r, &target);
     n = r.n;
     for (k = 0; k < n; k++) qd[k] = 0.0;
     if (o.q0 && (rc = parse_list(o.q0, n, qd, "--q0")) != 0) return rc;

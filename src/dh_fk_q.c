@@ -215,8 +215,14 @@ typedef int32_t fkq_r;
 DH_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_t x, int *ovf)
 {
 #if DH_PORT_USE_SPLIT16
-    uint32_t r = (uint32_t)DOT2(kd, RQ(z), ka, RQ(x));
-    uint32_t s = (uint32_t)p + r;
+    /* a zero length (most joints have one) drops its four products; a
+     * zero split is the exact zero term, so the sum is the same */
+    const fkq_k k0 = KQ(0);
+    uint32_t r, s;
+    if ((ka.h | ka.l) == 0) r = (uint32_t)DOT2(kd, RQ(z), k0, RQ(0));
+    else if ((kd.h | kd.l) == 0) r = (uint32_t)DOT2(ka, RQ(x), k0, RQ(0));
+    else r = (uint32_t)DOT2(kd, RQ(z), ka, RQ(x));
+    s = (uint32_t)p + r;
     /* signed overflow iff p and r have the same sign and s the other one */
     if ((~((uint32_t)p ^ r) & ((uint32_t)p ^ s)) & 0x80000000u) {
         *ovf = (int)DH_ERR_OVERFLOW;
@@ -379,6 +385,23 @@ static DH_NOINLINE int fast_mod(const dh_frame_q *I, dh_frame_q *O, const dh_q30
     return fast_step(I, O, 1u, v);
 }
 
+/* round(c x / 2^30) (half up) for |c| <= 2^30 and |x| < 2^31 - 2^15, no
+ * range check (the result fits int32): on ARMv6-M dot2 with a zero second
+ * term (folded away: four MULS, no 64-bit arithmetic, no call). */
+#if DH_PORT_USE_SPLIT16
+#define MULR30(c, x) dh_port_dot2r30_s16(dh_port_split_k(c), dh_port_split_row(x), dh_port_split_k(0), dh_port_split_row(0))
+/* the same for a length l (any int32 but INT32_MIN) and |x| <= 2^30: 0
+ * for a zero length (common), the split kernel where |l| <= 2^31 - 2^16
+ * (its constant-split domain), else the 64-bit product */
+#define MULR30L(l, x) ((l) == 0 ? 0 : abs_u(l) <= 0x7FFF0000u ? MULR30((l), (x)) : rnd30_fit(MUL((l), (x))))
+#else
+#define MULR30(c, x) rnd30_fit(MUL((c), (x)))
+#define MULR30L(l, x) ((l) == 0 ? 0 : MULR30((l), (x)))
+#endif
+/* MULR30 by a twist sine/cosine c; ex: the twist is exact (sa, ca in
+ * {0, +-2^30}), where the product is 0 or +-x without rounding */
+#define MULR30T(c, x, ex) ((ex) ? ((c) == 0 ? 0 : ((c) > 0 ? (x) : -(x))) : MULR30((c), (x)))
+
 /* The link matrix of joint j (a step applied to the identity, written
  * out; v from joint_values). Cannot saturate: every entry is a
  * product of two sines/cosines (|.| <= 2^30) or of one and a length, which
@@ -387,35 +410,36 @@ static DH_NOINLINE void link_direct(dh_frame_q *A, unsigned mod, const dh_q30 *v
 {
     const dh_q30 st = v[0], ct = v[1], sa = v[2], ca = v[3];
     const dh_qpos d = v[4], a = v[5];
+    const int ex = ((uint32_t)(sa | ca) & 0x3FFFFFFFu) == 0u;
     if (mod == 0u) {
         /* n = (ct, st, 0), o = ca u + sa z, a = ca z - sa u with u = (-st, ct, 0) */
         A->r[0][0] = ct;
         A->r[0][1] = st;
         A->r[0][2] = 0;
-        A->r[1][0] = rnd30_fit(-MUL(ca, st));
-        A->r[1][1] = rnd30_fit(MUL(ca, ct));
+        A->r[1][0] = MULR30T(ca, -st, ex);
+        A->r[1][1] = MULR30T(ca, ct, ex);
         A->r[1][2] = sa;
-        A->r[2][0] = rnd30_fit(MUL(sa, st));
-        A->r[2][1] = rnd30_fit(-MUL(sa, ct));
+        A->r[2][0] = MULR30T(sa, st, ex);
+        A->r[2][1] = MULR30T(sa, -ct, ex);
         A->r[2][2] = ca;
-        A->p[0] = rnd30_fit(MUL(a, ct));
-        A->p[1] = rnd30_fit(MUL(a, st));
+        A->p[0] = MULR30L(a, ct);
+        A->p[1] = MULR30L(a, st);
         A->p[2] = d;
     } else {
         /* n = (ct, st ca, st sa), o = (-st, ct ca, ct sa), a = (0, -sa, ca),
          * p = (a, -sa d, ca d) */
         A->r[0][0] = ct;
-        A->r[0][1] = rnd30_fit(MUL(st, ca));
-        A->r[0][2] = rnd30_fit(MUL(st, sa));
+        A->r[0][1] = MULR30T(ca, st, ex);
+        A->r[0][2] = MULR30T(sa, st, ex);
         A->r[1][0] = -st;
-        A->r[1][1] = rnd30_fit(MUL(ct, ca));
-        A->r[1][2] = rnd30_fit(MUL(ct, sa));
+        A->r[1][1] = MULR30T(ca, ct, ex);
+        A->r[1][2] = MULR30T(sa, ct, ex);
         A->r[2][0] = 0;
         A->r[2][1] = -sa;
         A->r[2][2] = ca;
         A->p[0] = a;
-        A->p[1] = rnd30_fit(-MUL(sa, d));
-        A->p[2] = rnd30_fit(MUL(ca, d));
+        A->p[1] = MULR30L(d, -sa);
+        A->p[2] = MULR30L(d, ca);
     }
 }
 

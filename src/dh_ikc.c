@@ -313,10 +313,37 @@ static DH_NOINLINE int ikc_to_joints(const dh_ikc_model_f32 *m, const float *q_r
     return in;
 }
 
+/* The raw solutions sol[0..raw-1] to joint values: non-finite branches (a
+ * target far beyond the reach overflows the squares of the position
+ * solution) are no solutions; limits per opts; kept ones packed to the
+ * front. Out of line: its frame is not on top of a solver's. */
+static DH_NOINLINE dh_status ikc_finish(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t opts,
+                                        dh_ikc_sol_f32 *sol, uint32_t raw, uint32_t *n_sol)
+{
+    uint32_t i, j, out = 0, finite = 0;
+    for (i = 0; i < raw; i++) {
+        if (!dh_allfinite_f32(sol[i].q, m->n)) continue;
+        finite++;
+        if (!ikc_to_joints(m, q_ref, sol[i].q)) {
+            if ((opts & DH_IKC_KEEP_OUT_OF_LIMITS) == 0u) continue;
+            sol[i].flags |= DH_IKC_OUT_OF_LIMITS;
+        }
+        if (out != i) {
+            for (j = 0; j < DH_IKC_JOINTS; j++) sol[out].q[j] = sol[i].q[j];
+            sol[out].flags = sol[i].flags;
+        }
+        out++;
+    }
+    for (i = out; i < raw; i++) sol[i].flags = 0u;
+    *n_sol = out;
+    if (finite == 0u) return DH_ERR_UNREACHABLE;
+    return (out == 0u) ? DH_ERR_LIMIT : DH_OK;
+}
+
 dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const float *q_ref, uint32_t opts,
                      dh_ikc_sol_f32 *sol, uint32_t *n_sol)
 {
-    uint32_t raw = 0, i, j, out = 0, finite = 0;
+    uint32_t raw = 0;
     dh_status st;
     DH_ASSERT(m != NULL);
     DH_ASSERT(target != NULL);
@@ -333,27 +360,7 @@ dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const
     }
     if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;
     if (raw == 0u) return DH_ERR_UNREACHABLE;
-    for (i = 0; i < raw; i++) {
-        int in;
-        /* a target far beyond the reach can overflow the squares of the
-         * position solution: such a branch is no solution */
-        if (!dh_allfinite_f32(sol[i].q, m->n)) continue;
-        finite++;
-        in = ikc_to_joints(m, q_ref, sol[i].q);
-        if (!in) {
-            if ((opts & DH_IKC_KEEP_OUT_OF_LIMITS) == 0u) continue;
-            sol[i].flags |= DH_IKC_OUT_OF_LIMITS;
-        }
-        if (out != i) {
-            for (j = 0; j < DH_IKC_JOINTS; j++) sol[out].q[j] = sol[i].q[j];
-            sol[out].flags = sol[i].flags;
-        }
-        out++;
-    }
-    for (i = out; i < raw; i++) sol[i].flags = 0u;
-    *n_sol = out;
-    if (finite == 0u) return DH_ERR_UNREACHABLE;
-    return (out == 0u) ? DH_ERR_LIMIT : DH_OK;
+    return ikc_finish(m, q_ref, opts, sol, raw, n_sol);
 }
 
 dh_status dh_ikc_nearest_f32(const dh_ikc_sol_f32 *sol, uint32_t n_sol, const float *q_ref, uint32_t n,

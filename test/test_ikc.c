@@ -603,7 +603,7 @@ static void ikc_far_target(void)
                     /* an unlimited prismatic joint reaches it: real solutions only */
                     uint32_t i, j;
                     for (i = 0; i < n_sol; i++)
-                        for (j = 0; j < m.n; j++) DHT_TRUE_MSG(isfinite(sol[i].q[j]), "%s: solution %u", robots[k]->name, i);
+                        for (j = 0; j < m.n; j++) DHT_TRUE_MSG(isfinite(sol[i].q[j]), "%s: solution %u", robots[k]->name, (unsigned)i);
                     continue;
                 }
                 DHT_TRUE_MSG(st == DH_ERR_UNREACHABLE && n_sol == 0u, "%s, target (%g, %g, %g): status %d, %u solutions",

@@ -485,7 +485,7 @@ def main():
     w("* **micro:bit counter.** QEMU 7.2's `microbit` machine (nRF51, Cortex-M0) has the "
       "ARMv6-M SysTick on the 16 MHz system clock, so the same counter works there "
       "(62.5 instructions per tick, confirmed by the calibration); no nRF51 timer is "
-      "needed. Its 16 KiB of RAM hold the inputs with a 4 KiB stack reserve "
+      "needed. Its 16 KiB of RAM hold the inputs with a 3 KiB stack reserve "
       "(`bench/target/microbit_bench.ld`); the high-water mark is in the table above.")
     w("* **Re-running.** `tools/target_bench.sh [output.md]` rebuilds the firmware for "
       "every core at -O2, -Os and -Os with `DH_SMALL` (`Os-small`) in `build/tbench-<core>-<opt>/`, runs it and rewrites this "

@@ -928,8 +928,45 @@ def group_fixed(seed, tmp):
         rc, out, err = run(args)
         check(rc == 2 and out == '' and re.search(pat, err) and err.startswith('dhmath: '),
               '%r: rc %d out %r err %r' % (args, rc, out, err))
-    print('fixed: jacobian --fixed max error (fixed, float) %s; euler --fixed %.3g deg, quat --fixed %.3g (seed %d)' %
-          (', '.join('%s %.3g %.3g' % (k, v[0], v[1]) for k, v in worst.items()), we, wq, seed))
+    # ik --fixed (dh_ik_q) on the Puma 560 and UR5 in mm: the solution's end
+    # frame (double reference FK) within 1e-3 mm and 1e-5 rad of the target
+    # (the target is the reference FK of a configuration within 80 % of the
+    # limits, the start 10 deg away on every joint)
+    wik = 0.0
+    nok = 0
+    for name in ('puma560_mm.dh', 'ur5_mm.dh'):
+        path = os.path.join(ROOT, 'examples', 'robots', name)
+        rob = read_robot(open(path).read())
+        for it in range(12):
+            q = [rng.uniform(0.8 * j['min'], 0.8 * j['max']) for j in rob['joints']]
+            T = ref_fk(rob, q)
+            q0 = ','.join('%.6f' % (v + (10.0 if rng.random() < 0.5 else -10.0)) for v in q)
+            rc, out, err = run(['ik', '--fixed', '--tol-pos', '0.0009', '--tol-rot', '0.000009', '--q0', q0, path, to_expr(T)])
+            check(rc in (0, 3) and 'ik --fixed:' in err, 'ik --fixed %s: rc %d %r' % (name, rc, err))
+            if rc != 0:
+                continue
+            nok += 1
+            got = nums(out)[0]
+            check(len(got) == len(q), 'ik --fixed %s: %r' % (name, out))
+            G = ref_fk(rob, got)
+            dp = max(abs(G[k][3] - T[k][3]) for k in range(3))
+            dr = max(abs(G[r][c] - T[r][c]) for r in range(3) for c in range(3))
+            wik = max(wik, dp)
+            check(dp <= 1e-3 and dr <= 1e-5, 'ik --fixed %s %r: position %.3g mm, rotation %.3g' % (name, got, dp, dr))
+    check(nok >= 20, 'ik --fixed: only %d of 24 converged' % nok)
+    puma_mm = os.path.join(ROOT, 'examples', 'robots', 'puma560_mm.dh')
+    rc, out, err = run(['ik', '--fixed', puma_mm, 'trans(5000,0,0)'])
+    check(rc == 3 and len(nums(out)) == 1 and 'not converged' in err, 'ik --fixed unreachable: rc %d %r %r' % (rc, out, err))
+    for args, pat in ((['ik', '--fixed', puma_mm, 'trans(50000,0,0)'], r'not a rigid frame in the fixed-point formats'),
+                      (['ik', '--fixed', puma_mm, 'scale(1,2,3)'], r'not a rigid frame'),
+                      (['ik', '--fixed', bad, 'ident'], r'does not fit the fixed-point length format'),
+                      (['ik', '--fixed', '--tol-rot', '3', puma_mm, 'ident'], r'--tol-rot must be in')):
+        rc, out, err = run(args)
+        check(rc == 2 and out == '' and re.search(pat, err) and err.startswith('dhmath: '),
+              '%r: rc %d out %r err %r' % (args, rc, out, err))
+    print('fixed: jacobian --fixed max error (fixed, float) %s; euler --fixed %.3g deg, quat --fixed %.3g; '
+          'ik --fixed %d of 24 converged, worst %.3g mm (seed %d)' %
+          (', '.join('%s %.3g %.3g' % (k, v[0], v[1]) for k, v in worst.items()), we, wq, nok, wik, seed))
 
 
 def group_help():
@@ -1137,7 +1174,7 @@ def group_ikc(seed, tmp):
               r'not meet in one point'),
              (['ik', '--all', '--position', puma, 'ident'], r'^dhmath: usage error: ik --all takes only --q0'),
              (['ik', '--all', '--max-iter', '3', puma, 'ident'], r'^dhmath: usage error: ik --all takes only --q0'),
-             (['ik', '--all', '--fixed', puma, 'ident'], r"^dhmath: usage error: unknown or inapplicable option '--fixed'"),
+             (['ik', '--all', '--fixed', puma, 'ident'], r'^dhmath: usage error: ik --all does not take --fixed'),
              (['ik', '--all', '--q0', '1,2', puma, 'ident'], r'--q0: expected 6 values'),
              (['ik', '--all', puma, 'scale(1,2,1)'], r'^dhmath: error: ik: the rotation part of the target EXPR'),
              (['ik', '--all', puma, 'persp(z,2)'], r'^dhmath: error: ik: EXPR is not rigid')]
