@@ -424,7 +424,7 @@ int dh_ikc_detect_wrist_q_(dh_ikc_model_q *m)
     k[K_TAU1] = ikq_sign(m->sa[0]);
     k[K_S4] = ikq_sign(m->sa[3]);
     k[K_S5] = ikq_sign(m->sa[4]);
-    k[K_W + 0] = m->a[5];
+    k[K_W] = m->a[5];
     k[K_W + 1] = ikq_r30(dh_q_mul64(m->d[5], m->sa[5]));
     k[K_W + 2] = ikq_r30(dh_q_mul64(m->d[5], m->ca[5]));
     e = ikq_r30(dh_q_mul64(m->sa[2], m->d[3]));
@@ -452,7 +452,7 @@ int dh_ikc_detect_wrist_q_(dh_ikc_model_q *m)
         s3 = sig > 0 ? m->sa[2] : -m->sa[2];
         c3 = sig > 0 ? m->ca[2] : -m->ca[2];
         memset(&k[K_C], 0, 9u * sizeof k[0]);
-        k[K_C + 0] = DH_Q_ONE30;
+        k[K_C] = DH_Q_ONE30;
         k[K_C + 4] = c3;
         k[K_C + 5] = -s3;
         k[K_C + 7] = s3;
@@ -648,7 +648,10 @@ static DH_NOINLINE void ikq_elbow_rrr(const dh_ikc_model_q *m, dh_ikc_sol_q *sol
     S = dh_q_isqrt62((uint64_t)dh_q_mul64((int32_t)(ds >> s1), (int32_t)(df >> s2)));
     if (S == 0u) d0->q[2] |= (int32_t)DH_IKC_SING_ELBOW;
     /* the pair (S, K 2^-(s1 + s2) / 2), both rounded below 2^30 */
-    K >>= (s1 + s2) >> 1;
+    {
+        const unsigned sh = (s1 + s2) >> 1;
+        K >>= sh;
+    }
     s1 = 0u;
     while ((((uint64_t)S | ikq_abs64(K)) >> s1) >= ((uint64_t)1 << 30)) s1++;
     d1->q[1] = (s1 != 0u) ? (int32_t)dh_q_rshr((int64_t)S, s1) : (int32_t)S;
@@ -724,7 +727,8 @@ static DH_NOINLINE void ikq_wrist(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, un
     const int32_t *k = m->k;
     dh_ikc_sol_q *d = &sol[j];
     const dh_ikc_sol_q *src = &sol[(j & ~3u) + 2u];
-    int32_t *n = &d[0].q[3], *z = &d[1].q[3];
+    int32_t *const n = &sol[j].q[3];
+    int32_t *const z = &sol[j + 1u].q[3];
     int32_t sc[2], t4, t5;
     unsigned i, sing;
 
@@ -903,7 +907,7 @@ static DH_NOINLINE uint32_t ikq_finish(const dh_ikc_model_q *m, const int32_t *q
                 if (m->qmin[i] <= m->qmax[i]) in = (t->q[i] >= m->qmin[i] && t->q[i] <= m->qmax[i]);
             } else {
                 t->q[i] = ikq_shift(ikq_wrap180(t->q[i] - m->off[i]), m->qmin[i], m->qmax[i],
-                                    q_ref ? q_ref[i] : 0, &in);
+                                    (q_ref != NULL) ? q_ref[i] : 0, &in);
             }
             if (!in) all_in = 0;
         }
@@ -961,7 +965,7 @@ static DH_NOINLINE int ikq_t06(const dh_ikc_model_q *m, const dh_frame_q *T, dh_
 
 int32_t dh_ikc_cref_q_(const dh_ikc_model_q *m, const int32_t *q_ref, uint32_t i)
 {
-    const int32_t ref = q_ref ? q_ref[i] : 0;
+    const int32_t ref = (q_ref != NULL) ? q_ref[i] : 0;
     int ovf = 0;
     if ((m->prismatic >> i) & 1u) return dh_q_sat32((int64_t)ref + m->d[i], &ovf);
     return ikq_wrap180(ikq_reduce(ref) + m->off[i]);
@@ -1006,7 +1010,7 @@ dh_status dh_ikc_nearest_q(const dh_ikc_sol_q *sol, uint32_t n_sol, const int32_
     if (n_sol == 0u || n > DH_IKC_JOINTS) return DH_ERR_ARG;
     for (s = 0; s < n_sol; s++) {
         uint64_t d = 0;
-        for (i = 0; i < n; i++) d += ikq_abs64((int64_t)sol[s].q[i] - (q_ref ? q_ref[i] : 0));
+        for (i = 0; i < n; i++) d += ikq_abs64((int64_t)sol[s].q[i] - ((q_ref != NULL) ? q_ref[i] : 0));
         if (s == 0u || d < best_d) {
             best = s;
             best_d = d;

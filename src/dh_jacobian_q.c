@@ -96,7 +96,7 @@ static DH_NOINLINE int jacq_cols(const dh_robot *r, const int32_t *p, int32_t *J
     int32_t t[3];
     int ovf = 0;
     for (i = 0; i < n; i++) {
-        int32_t *col = J + i;
+        int32_t *col = &J[i];
         if (r->joint[i].type != DH_JOINT_REVOLUTE) {
             for (k = 0; k < 3u; k++) {
                 t[k] = col[(k + 3u) * n];

@@ -295,15 +295,16 @@ static void dh_lin(const dh_mat4_f32 *A, const float *in, float *o, int n)
 {
     float x = in[0];
     float o0 = A->m[0][0] * x, o1 = A->m[0][1] * x, o2 = A->m[0][2] * x, o3 = A->m[0][3] * x;
+    const int nk = (n < 4) ? n : 4; /* in[] has at most 4 entries */
     int k = 1;
-    do { /* n >= 2: a bottom-tested loop */
+    do { /* nk >= 2: a bottom-tested loop */
         const float *c = A->m[k];
         x = in[k];
         o0 += c[0] * x;
         o1 += c[1] * x;
         o2 += c[2] * x;
         o3 += c[3] * x;
-    } while (++k < n);
+    } while (++k < nk);
     o[0] = o0;
     o[1] = o1;
     o[2] = o2;

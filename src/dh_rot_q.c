@@ -254,7 +254,7 @@ static DH_NOINLINE dh_q16 rotq_angle(const dh_frame_q *F)
     const uint32_t sn = rotq_isqrt(s >> 2);
     dh_q16 d = 0;
     if (sn == 0u && x2 >= 0) return 0;
-    (void)dh_atan2_q((int32_t)sn, (int32_t)(x2 >> 1), &d);
+    (void)dh_atan2_q((int32_t)sn, (int32_t)((x2 - (x2 & 1)) / 2), &d); /* floor(x2 / 2): exact division */
     return d < 0 ? 0 : d;
 }
 
@@ -265,7 +265,7 @@ dh_status dh_frame_to_axis_angle_q(const dh_frame_q *F, dh_dir3_q *axis, dh_q16 
     DH_ASSERT(F != NULL && axis != NULL && deg != NULL);
     if (!rotq_ok(F, DH_ROT_TOL_Q)) return DH_ERR_NOT_RIGID;
     rotq_quat(F, q);
-    vn = rotq_norm(q + 1, 3u);
+    vn = rotq_norm(&q[1], 3u);
     *deg = rotq_angle(F);
     if (vn == 0u) {
         axis->x = 0;
@@ -289,7 +289,7 @@ static DH_NOINLINE void rotq_rotvec(const dh_frame_q *D, dh_dir3_q *w, int32_t *
 {
     uint32_t vn, f;
     rotq_quat(D, q);
-    vn = rotq_norm(q + 1, 3u);
+    vn = rotq_norm(&q[1], 3u);
     if (vn < 0x04000000u) {
         /* s < 1/16: f = 2 asin(s) / s in Q3.29 by its series (s^2 in Q2.30) */
         const uint32_t s2 = (uint32_t)dh_q_rshr(dh_q_mul64((int32_t)vn, (int32_t)vn), 30u); /* < 2^22 */
