@@ -286,9 +286,9 @@ static DH_NOINLINE int64_t ikq_reach(const dh_robot *r, uint32_t tool_len)
     uint32_t i, gain;
     for (i = 0; i < r->n; i++) {
         const dh_joint *jt = &r->joint[i];
-        R += dh_q_abs_u32(jt->a_q);
+        R += (int64_t)dh_q_abs_u32(jt->a_q);
         if (jt->type == DH_JOINT_REVOLUTE) {
-            R += dh_q_abs_u32(jt->d_q);
+            R += (int64_t)dh_q_abs_u32(jt->d_q);
         } else {
             int64_t lo, hi;
             if (jt->qmin_q > jt->qmax_q) return -1;
@@ -299,7 +299,7 @@ static DH_NOINLINE int64_t ikq_reach(const dh_robot *r, uint32_t tool_len)
             R += (lo > hi) ? lo : hi;
         }
     }
-    R += tool_len;
+    R += (int64_t)tool_len;
     /* R < 2^37, gain < 2^31 (Q2.28): R gain / 2^28 plus 1e-4 R, the
      * product exact below R = 2^32 and of R / 64 above (no wrap; the lost
      * low bits of R are far below the slack there) */
