@@ -361,7 +361,8 @@ static void ur_wrist_singular(void)
         long it, n = 0;
         robot_mm(&d, g_ur[ri]);
         build(&d, &r, &m, DH_IKC_PARALLEL_234);
-        for (it = 0; it < DHT_ITER(500); it++) {
+        /* until DHT_ITER(500) targets pass the filter (at most 20 times as many tries) */
+        for (it = 0; it < 20L * DHT_ITER(500) && n < DHT_ITER(500); it++) {
             double q[6], part[3];
             int32_t qq[6], qref[6] = {0};
             dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
@@ -394,7 +395,7 @@ static void ur_shoulder_singular(void)
         int found = 0;
         robot_mm(&d, g_ur[ri]);
         build(&d, &r, &m, DH_IKC_PARALLEL_234);
-        for (it = 0; it < DHT_ITER(500); it++) {
+        for (it = 0; it < 20L * DHT_ITER(500) && found < DHT_ITER(500); it++) {
             const double a2 = d.j[1].a, a3 = d.j[2].a, e5 = d.j[4].d;
             double q[6], X, Y, R, c, phi;
             int32_t qq[6];
@@ -430,7 +431,7 @@ static void elbow_singular(void)
         long it, n = 0;
         robot_mm(&d, ri < 3u ? g_ur[ri] : &dhs_cobra600_mm);
         build(&d, &r, &m, ri < 3u ? DH_IKC_PARALLEL_234 : DH_IKC_SCARA);
-        for (it = 0; it < DHT_ITER(500); it++) {
+        for (it = 0; it < 20L * DHT_ITER(500) && n < DHT_ITER(500); it++) {
             double q[6] = {0}, part[3];
             int32_t qq[6] = {0};
             dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
