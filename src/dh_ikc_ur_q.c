@@ -30,7 +30,9 @@
  *
  * Cost (all 8 UR solutions): atan2 2 (joint 1) + 3 per shoulder (phi, t5,
  * t6) + 3 per wrist record (elbow pair, two t2) = 20; sin/cos 2 (t1) + 2
- * (phi) + 8 (t3) = 12; 2 + 4 integer square roots.
+ * (phi) + 8 (t3) = 12; 2 + 4 integer square roots. Measured under QEMU on
+ * Cortex-M0 (-O2, bench/target harness, 4 UR5 targets in mm): 36,300
+ * instructions per call.
  *
  * Stack: as dh_ikc_q.c, the state lives in the solution array and the
  * solver calls one helper at a time. PARALLEL_234 slots: p05, u, the
