@@ -71,6 +71,7 @@ typedef struct {
 
 extern const bench_dh_robot bench_puma560;
 extern const bench_dh_robot bench_ur5;
+extern const bench_dh_robot bench_kr5;
 
 /**
  * Plain double-precision standard-DH forward kinematics (no base/tool):

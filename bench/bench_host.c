@@ -10,6 +10,8 @@
  *   bench_host --count N                 run every operation exactly N times,
  *                                        no timing (for callgrind: inclusive
  *                                        Ir of bw_<id> / N = instructions/op)
+ *   --only SUBSTR                        (either mode) only the operations
+ *                                        whose id contains SUBSTR, and the harness
  *
  * Method: see bench_common.h. Inputs are random sets generated once with a
  * fixed seed (BENCH_NIN_TRIG angles, BENCH_NIN_FK joint configurations,
@@ -63,6 +65,19 @@ static dh_frame_q out_Fq[BENCH_NIN_FK];
 static double out_D[BENCH_NIN_FK][4][4];
 static dh_status out_st[BENCH_NIN_FK];
 
+/* closed-form IK: models of robots with their joint limits, targets = FK of
+ * random in-limit configurations (computed untimed) */
+#define BENCH_NIN_IKC 256u
+#define BENCH_IKC_MASK (BENCH_NIN_IKC - 1u)
+static dh_robot ikc_puma_r, ikc_puma_mm_r, ikc_kr5_r;
+static dh_ikc_model_f32 ikc_puma, ikc_kr5;
+static dh_ikc_model_q ikc_puma_q;
+static dh_mat4_f32 in_T_puma[BENCH_NIN_IKC], in_T_kr5[BENCH_NIN_IKC];
+static dh_frame_q in_T_puma_q[BENCH_NIN_IKC];
+static dh_ikc_sol_f32 out_sol[DH_IKC_MAX_SOL];
+static dh_ikc_sol_q out_sol_q[DH_IKC_MAX_SOL];
+static uint32_t out_nsol;
+
 static dh_robot puma_m;   /* metres, float path */
 static dh_robot puma_mm;  /* millimetres, fixed path */
 static bench_ref_model puma_ref; /* metres, double reference */
@@ -101,6 +116,29 @@ BENCH_NOINLINE void bw_glibc_sincosf(uint32_t i)
     float r = in_deg[i] * (float)(PI_D / 180.0);
     sincosf(r, &out_s[i], &out_c[i]);
     bench_sink_f = out_s[i];
+}
+
+/* Tight loop: 64 independent calls per operation (consecutive angles of
+ * the set, outputs stored), nothing between them but the loop; the report
+ * divides by BENCH_LOOP_N. The library's function is called out of line
+ * (as linked from libdhmath.a), glibc's likewise. */
+#define BENCH_LOOP_N 64u
+BENCH_NOINLINE void bw_dh_sincos_f32_loop(uint32_t i)
+{
+    uint32_t k, b = (i * BENCH_LOOP_N) & BENCH_TRIG_MASK;
+    for (k = 0; k < BENCH_LOOP_N; k++) (void)dh_sincos_f32(in_deg[b + k], &out_s[b + k], &out_c[b + k]);
+    bench_sink_f = out_s[b];
+}
+
+BENCH_NOINLINE void bw_glibc_sinf_cosf_loop(uint32_t i)
+{
+    uint32_t k, b = (i * BENCH_LOOP_N) & BENCH_TRIG_MASK;
+    for (k = 0; k < BENCH_LOOP_N; k++) {
+        const float r = in_deg[b + k] * (float)(PI_D / 180.0);
+        out_s[b + k] = sinf(r);
+        out_c[b + k] = cosf(r);
+    }
+    bench_sink_f = out_s[b];
 }
 
 BENCH_NOINLINE void bw_dh_sincos_q(uint32_t i)
@@ -160,6 +198,27 @@ BENCH_NOINLINE void bw_dh_frame_inv_q(uint32_t i)
     i &= BENCH_MASK;
     out_st[i] = dh_frame_inv_q(&in_Aq[i], &out_Fq[i]);
     bench_sink_i = out_Fq[i].p[0];
+}
+
+BENCH_NOINLINE void bw_dh_ikc_kr5(uint32_t i)
+{
+    i &= BENCH_IKC_MASK;
+    out_st[i] = dh_ikc_f32(&ikc_kr5, &in_T_kr5[i], NULL, 0u, out_sol, &out_nsol);
+    bench_sink_f = out_sol[0].q[0];
+}
+
+BENCH_NOINLINE void bw_dh_ikc_puma(uint32_t i)
+{
+    i &= BENCH_IKC_MASK;
+    out_st[i] = dh_ikc_f32(&ikc_puma, &in_T_puma[i], NULL, 0u, out_sol, &out_nsol);
+    bench_sink_f = out_sol[0].q[0];
+}
+
+BENCH_NOINLINE void bw_dh_ikc_q_puma(uint32_t i)
+{
+    i &= BENCH_IKC_MASK;
+    out_st[i] = dh_ikc_q(&ikc_puma_q, &in_T_puma_q[i], NULL, 0u, out_sol_q, &out_nsol);
+    bench_sink_i = out_sol_q[0].q[0];
 }
 
 BENCH_NOINLINE void bw_dh_fk_f32(uint32_t i)
@@ -311,6 +370,47 @@ static int build_puma(dh_robot *r, double scale)
     return 1;
 }
 
+/* robot with its joint limits, for the closed-form IK rows */
+static int build_limited(dh_robot *r, const bench_dh_robot *b, double scale)
+{
+    unsigned i;
+    if (dh_robot_init(r, DH_CONV_STANDARD) != DH_OK) return 0;
+    for (i = 0; i < b->n; i++) {
+        const bench_dh_row *j = &b->j[i];
+        if (dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, (float)j->theta_deg, (float)(j->d * scale),
+                                   (float)(j->a * scale), (float)j->alpha_deg) != DH_OK ||
+            dh_robot_set_limits_f32(r, i, (float)j->qmin, (float)j->qmax) != DH_OK)
+            return 0;
+    }
+    return 1;
+}
+
+/* the IK models and targets (FK of random in-limit configurations) */
+static int make_ikc_inputs(void)
+{
+    uint32_t i;
+    int k;
+    if (!build_limited(&ikc_puma_r, &bench_puma560, 1.0) || !build_limited(&ikc_puma_mm_r, &bench_puma560, 1000.0) ||
+        !build_limited(&ikc_kr5_r, &bench_kr5, 1.0) || dh_ikc_analyse_f32(&ikc_puma_r, &ikc_puma) != DH_OK ||
+        dh_ikc_analyse_f32(&ikc_kr5_r, &ikc_kr5) != DH_OK || dh_ikc_analyse_q(&ikc_puma_mm_r, &ikc_puma_q) != DH_OK)
+        return 0;
+    for (i = 0; i < BENCH_NIN_IKC; i++) {
+        float qp[6], qk[6];
+        int32_t qq[6];
+        for (k = 0; k < 6; k++) {
+            const bench_dh_row *j = &bench_puma560.j[k];
+            qp[k] = (float)bench_rand(&rng, j->qmin, j->qmax);
+            qq[k] = round_q((double)qp[k], 16);
+            j = &bench_kr5.j[k];
+            qk[k] = (float)bench_rand(&rng, j->qmin, j->qmax);
+        }
+        if (dh_fk_f32(&ikc_puma_r, qp, &in_T_puma[i]) != DH_OK || dh_fk_f32(&ikc_kr5_r, qk, &in_T_kr5[i]) != DH_OK ||
+            dh_fk_q(&ikc_puma_mm_r, qq, &in_T_puma_q[i]) != DH_OK)
+            return 0;
+    }
+    return 1;
+}
+
 static void make_inputs(void)
 {
     uint32_t i;
@@ -405,6 +505,22 @@ static int sanity(void)
         e_cg = fmax(e_cg, max_diff16(&out_M[i].m[0][0], &cg_out[i][0][0]));
 #endif
     }
+    {
+        /* closed-form IK: every target is FK of an in-limit configuration,
+         * so every call must find a solution */
+        uint32_t bad_ikc = 0;
+        for (i = 0; i < BENCH_NIN_IKC; i++) {
+            bw_dh_ikc_kr5(i);
+            bad_ikc += out_st[i] != DH_OK;
+            bw_dh_ikc_puma(i);
+            bad_ikc += out_st[i] != DH_OK;
+            bw_dh_ikc_q_puma(i);
+            bad_ikc += out_st[i] != DH_OK;
+        }
+        printf("sanity: closed-form IK calls without a solution: %u of %u\n", (unsigned)bad_ikc,
+               3u * BENCH_NIN_IKC);
+        if (bad_ikc != 0u) bad = 1;
+    }
     printf("sanity: Puma FK |dp| dhmath f32 vs double ref %.2e m, dhmath q vs ref %.2e mm, "
            "KDL vs ref %.2e m, dhmath vs cglm products/inverses %.2e\n",
            e_fk, e_fkq, e_kdl, e_cg);
@@ -450,7 +566,7 @@ int main(int argc, char **argv)
 {
     int reps = 15, a, k, r;
     long count = 0;
-    const char *csv = NULL;
+    const char *csv = NULL, *only = NULL;
     static double samples[MAX_OPS][MAX_REPS];
     static uint32_t iters[MAX_OPS];
     double med[MAX_OPS], mn[MAX_OPS];
@@ -459,8 +575,9 @@ int main(int argc, char **argv)
         if (strcmp(argv[a], "--reps") == 0 && a + 1 < argc) reps = atoi(argv[++a]);
         else if (strcmp(argv[a], "--count") == 0 && a + 1 < argc) count = atol(argv[++a]);
         else if (strcmp(argv[a], "--csv") == 0 && a + 1 < argc) csv = argv[++a];
+        else if (strcmp(argv[a], "--only") == 0 && a + 1 < argc) only = argv[++a];
         else {
-            fprintf(stderr, "usage: %s [--reps N (11..%d)] [--csv FILE] | --count N\n", argv[0], MAX_REPS);
+            fprintf(stderr, "usage: %s [--reps N (11..%d)] [--csv FILE] [--only SUBSTR] | --count N [--only SUBSTR]\n", argv[0], MAX_REPS);
             return 2;
         }
     }
@@ -475,11 +592,17 @@ int main(int argc, char **argv)
         fprintf(stderr, "cannot build the Puma 560 model\n");
         return 1;
     }
+    if (!make_ikc_inputs()) {
+        fprintf(stderr, "cannot build the closed-form IK models or targets\n");
+        return 1;
+    }
 
     add_op("empty", "harness", "-", "call harness only (indirect call + volatile store)", bw_empty);
     add_op("dh_sincos_f32", "sincos_f32", "dhmath", "dh_sincos_f32(deg)", bw_dh_sincos_f32);
     add_op("glibc_sinf_cosf", "sincos_f32", "glibc", "sinf(r) + cosf(r), r = deg * (float)(pi/180)", bw_glibc_sinf_cosf);
     add_op("glibc_sincosf", "sincos_f32", "glibc", "sincosf(r), r = deg * (float)(pi/180)", bw_glibc_sincosf);
+    add_op("dh_sincos_f32_loop", "sincos_loop", "dhmath", "64 x dh_sincos_f32(deg) in a tight loop of independent calls (per 64)", bw_dh_sincos_f32_loop);
+    add_op("glibc_sinf_cosf_loop", "sincos_loop", "glibc", "64 x sinf(r) + cosf(r) in a tight loop (per 64)", bw_glibc_sinf_cosf_loop);
     add_op("dh_sincos_q", "sincos_q", "dhmath", "dh_sincos_q(deg Q16.16) -> Q2.30", bw_dh_sincos_q);
 #if BENCH_HAVE_FIXMATH
     add_op("fix16_sin_cos", "sincos_q", "libfixmath", "fix16_sin(r) + fix16_cos(r), r fix16 radians (precomputed)", bw_fix16_sin_cos);
@@ -508,6 +631,9 @@ int main(int argc, char **argv)
 #endif
     add_op("dh_fk_f32", "fk_puma", "dhmath", "dh_fk_f32, Puma 560 (m)", bw_dh_fk_f32);
     add_op("dh_fk_q", "fk_puma", "dhmath", "dh_fk_q, Puma 560 (mm, Q16 lengths)", bw_dh_fk_q);
+    add_op("dh_ikc_kr5", "ikc", "dhmath", "dh_ikc_f32, KUKA KR5 (m), all solutions, targets FK of in-limit configurations", bw_dh_ikc_kr5);
+    add_op("dh_ikc_puma", "ikc", "dhmath", "dh_ikc_f32, Puma 560 (m), all solutions", bw_dh_ikc_puma);
+    add_op("dh_ikc_q_puma", "ikc", "dhmath", "dh_ikc_q, Puma 560 (mm), all solutions", bw_dh_ikc_q_puma);
     add_op("ref_fk_double", "fk_puma", "ref", "plain double DH FK (libm sin+cos of theta, sin/cos alpha precomputed, 4x4 products)", bw_ref_fk_double);
     {
         int got = bench_cpp_setup((const float (*)[16])(const void *)in_A, (const float (*)[16])(const void *)in_B,
@@ -517,6 +643,14 @@ int main(int argc, char **argv)
         } else {
             n_ops += got;
         }
+    }
+
+    if (only != NULL) {
+        /* keep the harness row and the operations whose id contains SUBSTR */
+        int w = 1;
+        for (k = 1; k < n_ops; k++)
+            if (strstr(ops[k].id, only) != NULL) ops[w++] = ops[k];
+        n_ops = w;
     }
 
     if (count > 0) {

@@ -3,7 +3,7 @@
  * forward kinematics used by the benchmark (as a timed peer) and by the
  * accuracy data generator (as the reference).
  *
- * The tables are examples/robots/puma560.dh and ur5.dh (sources in their
+ * The tables are examples/robots/puma560.dh, ur5.dh and kuka_kr5.dh (sources in their
  * headers), read at build time by tools/gen_robots.py.
  */
 #include "bench_common.h"
@@ -16,6 +16,7 @@
 #define BENCH_JOINT(type, a, d, alpha, theta, qmin, qmax) { a, d, alpha, theta, qmin, qmax },
 const bench_dh_robot bench_puma560 = { "Puma 560", DHR_PUMA560_N, { DHR_PUMA560_JOINTS(BENCH_JOINT) } };
 const bench_dh_robot bench_ur5 = { "UR5", DHR_UR5_N, { DHR_UR5_JOINTS(BENCH_JOINT) } };
+const bench_dh_robot bench_kr5 = { "KUKA KR5", DHR_KUKA_KR5_N, { DHR_KUKA_KR5_JOINTS(BENCH_JOINT) } };
 
 /* T <- T * A for 4x4 column-major double matrices (plain triple loop). */
 static void mul4(double T[4][4], double A[4][4])

@@ -41,7 +41,8 @@ static const char k_usage[] =
     "                                  end frame (with --frames: every joint frame,\n"
     "                                  then the end frame, separated by blank lines;\n"
     "                                  with --expr: each frame as one EXPR line)\n"
-    "  jacobian ROBOT q1,q2,...        6 x n geometric Jacobian in the base frame\n"
+    "  jacobian [--fixed] ROBOT q1,q2,...\n"
+    "                                  6 x n geometric Jacobian in the base frame\n"
     "                                  (rows vx vy vz wx wy wz; per radian for R joints)\n"
     "  ik [--q0 q1,...] [--position] [--tol-pos X] [--tol-rot RAD] [--w-rot X]\n"
     "     [--max-iter N] ROBOT EXPR    joint values reaching EXPR; status on stderr;\n"
@@ -52,10 +53,10 @@ static const char k_usage[] =
     "                                  shifts and singular splits; --fixed: the robot's\n"
     "                                  fixed-point path); exit 0 at least one,\n"
     "                                  3 none, 2 no closed form for the robot\n"
-    "  euler SEQ EXPR                  Euler angles in degrees of EXPR's rotation; SEQ as\n"
+    "  euler [--fixed] SEQ EXPR        Euler angles in degrees of EXPR's rotation; SEQ as\n"
     "                                  scipy Rotation: XYZ intrinsic (Rot(x,a) Rot(y,b)\n"
     "                                  Rot(z,c)), xyz extrinsic; 24 sequences\n"
-    "  quat EXPR                       unit quaternion of EXPR's rotation: w x y z (w >= 0)\n"
+    "  quat [--fixed] EXPR             unit quaternion of EXPR's rotation: w x y z (w >= 0)\n"
     "  gen ROBOT NAME                  C source defining const dh_robot NAME (flash)\n"
     "  help                            this text\n"
     "  --version                       program and library version\n"
@@ -66,6 +67,8 @@ static const char k_usage[] =
     "  e.g. dhmath eval \"trans(4,-3,7) roty(90) rotz(90)\"\n"
     "Joint values: degrees for revolute joints, length units for prismatic.\n"
     "'-' as EXPR or ROBOT reads it from standard input (once per command).\n"
+    "--fixed: the integer-only fixed-point path (angles Q16.16 degrees, rotations Q2.30,\n"
+    "lengths with DH_QPOS_FRAC fraction bits), printed in the same units as without it.\n"
     "Numbers are printed with %.9g. Exit status: 0 ok, 2 error, 3 ik not converged or no solution.\n";
 
 /* ---- messages ----------------------------------------------------------- */
@@ -468,6 +471,25 @@ static int frame_expr(const rows4 *R, char *buf, size_t cap)
     return 0;
 }
 
+/* joint values (deg / length units) rounded to the fixed formats: dh_q16
+ * degrees (revolute), dh_qpos (prismatic); an error when one does not fit */
+static int joints_to_q(const dh_robot *r, const double *qd, int32_t *q)
+{
+    const double pscale = (double)((int32_t)1 << DH_QPOS_FRAC);
+    unsigned k;
+    for (k = 0; k < r->n; k++) {
+        double s = r->joint[k].type == DH_JOINT_REVOLUTE ? 65536.0 : pscale;
+        double v = floor(qd[k] * s + 0.5);
+        if (v > 2147483647.0 || v < -2147483648.0) {
+            fprintf(stderr, "dhmath: error: overflow: joint value %u (%.9g) does not fit %s\n", k + 1,
+                    qd[k], r->joint[k].type == DH_JOINT_REVOLUTE ? "degrees Q16.16" : "the fixed-point length format");
+            return EXIT_ERR;
+        }
+        q[k] = (int32_t)v;
+    }
+    return 0;
+}
+
 static int cmd_fk(int argc, char **argv)
 {
     opts o;
@@ -487,17 +509,7 @@ static int cmd_fk(int argc, char **argv)
     if (o.fixed) {
         int32_t q[DH_MAX_JOINTS];
         dh_frame_q frames[DH_MAX_JOINTS], Tend;
-        const double pscale = (double)((int32_t)1 << DH_QPOS_FRAC);
-        for (k = 0; k < n; k++) {
-            double s = r.joint[k].type == DH_JOINT_REVOLUTE ? 65536.0 : pscale;
-            double v = floor(qd[k] * s + 0.5);
-            if (v > 2147483647.0 || v < -2147483648.0) {
-                fprintf(stderr, "dhmath: error: overflow: joint value %u (%.9g) does not fit %s\n", k + 1,
-                        qd[k], r.joint[k].type == DH_JOINT_REVOLUTE ? "degrees Q16.16" : "the fixed-point length format");
-                return EXIT_ERR;
-            }
-            q[k] = (int32_t)v;
-        }
+        if ((rc = joints_to_q(&r, qd, q)) != 0) return rc;
         if (o.frames) st = dh_fk_frames_q(&r, q, frames, &Tend);
         else st = dh_fk_q(&r, q, &Tend);
         if (st == DH_ERR_UNAVAILABLE)
@@ -544,6 +556,37 @@ static int cmd_fk(int argc, char **argv)
     return finish();
 }
 
+/* jacobian --fixed: dh_jacobian_q on the robot's fixed path, printed in
+ * the float path's units (linear rows per radian in length units, or
+ * dimensionless for prismatic joints; angular rows dimensionless) */
+static int jacobian_fixed(const dh_robot *r, const double *qd)
+{
+    int32_t q[DH_MAX_JOINTS], J[6 * DH_MAX_JOINTS];
+    const double pscale = (double)((int32_t)1 << DH_QPOS_FRAC);
+    const unsigned n = r->n;
+    unsigned k, row;
+    dh_status st;
+    int rc = joints_to_q(r, qd, q);
+    if (rc) return rc;
+    st = dh_jacobian_q(r, q, J, NULL);
+    if (st == DH_ERR_UNAVAILABLE)
+        return error_msg("jacobian --fixed: a constant of the robot does not fit the fixed-point formats", NULL);
+    if (st == DH_ERR_OVERFLOW) {
+        fprintf(stderr, "dhmath: error: overflow: jacobian --fixed: an entry of the chain or of the Jacobian "
+                "saturates (lengths and lever arms must lie in the fixed-point length format Q%d.%d, |x| < %ld "
+                "length units); jacobian without --fixed computes it in float\n", 32 - DH_QPOS_FRAC, DH_QPOS_FRAC,
+                1L << (31 - DH_QPOS_FRAC));
+        return EXIT_ERR;
+    }
+    if (st != DH_OK) return error_msg("jacobian --fixed", dh_status_str(st));
+    for (row = 0; row < 6u; row++)
+        for (k = 0; k < n; k++) {
+            const int lin = row < 3u && r->joint[k].type == DH_JOINT_REVOLUTE;
+            put_num((double)J[row * n + k] / (lin ? pscale : 1073741824.0), k + 1 == n);
+        }
+    return finish();
+}
+
 static int cmd_jacobian(int argc, char **argv)
 {
     opts o;
@@ -553,13 +596,18 @@ static int cmd_jacobian(int argc, char **argv)
     float q[DH_MAX_JOINTS], J[6 * DH_MAX_JOINTS];
     unsigned n, k, row;
     dh_status st;
-    int rc = parse_opts(argc, argv, &o, "");
+    int rc = parse_opts(argc, argv, &o, "fixed");
     if (rc) return rc;
     if (o.npos != 2) return usage_error("jacobian takes ROBOTFILE q1,q2,...", NULL);
-    if ((rc = load_robot(o.pos[0], 0, &r, &rf)) != 0) return rc;
+    if ((rc = load_robot(o.pos[0], o.fixed, &r, &rf)) != 0) return rc;
     n = r.n;
     if ((rc = parse_list(o.pos[1], n, qd, "joint values")) != 0) return rc;
     for (k = 0; k < n; k++) q[k] = (float)qd[k];
+    if (o.fixed) {
+        rc = jacobian_fixed(&r, qd);
+        if (rc == 0) warn_limits(&r, q);
+        return rc;
+    }
     st = dh_jacobian_f32(&r, q, J, NULL);
     if (st != DH_OK) return error_msg("jacobian", dh_status_str(st));
     for (k = 0; k < 6u * n; k++)
@@ -848,12 +896,25 @@ static int cmd_euler(int argc, char **argv)
     dh_euler_seq seq;
     float a[3];
     dh_status st;
-    int rc = parse_opts(argc, argv, &o, "");
+    int rc = parse_opts(argc, argv, &o, "fixed");
     if (rc) return rc;
-    if (o.npos != 2) return usage_error("euler takes SEQ EXPR, e.g. dhmath euler XYZ \"rotx(10) roty(20)\"", NULL);
+    if (o.npos != 2)
+        return usage_error("euler takes SEQ EXPR, e.g. dhmath euler [--fixed] XYZ \"rotx(10) roty(20)\"", NULL);
     if (dh_euler_parse(o.pos[0], &seq) != DH_OK)
         return usage_error("unknown Euler sequence '%s' (three axis letters, uppercase intrinsic, "
                            "lowercase extrinsic, no two equal neighbours: XYZ, ZYX, ZYZ, xyz, ...)", o.pos[0]);
+    if (o.fixed) {
+        /* EXPR on the fixed-point path, angles Q16.16 degrees */
+        dh_frame_q F;
+        dh_q16 aq[3];
+        if ((rc = eval_expr_arg(o.pos[1], 1, NULL, &F)) != 0) return rc;
+        st = dh_frame_to_euler_q(&F, seq, aq);
+        if (st != DH_OK) return rot_error("euler --fixed", st);
+        put_num(aq[0] / 65536.0, 0);
+        put_num(aq[1] / 65536.0, 0);
+        put_num(aq[2] / 65536.0, 1);
+        return finish();
+    }
     if ((rc = rotation_of("euler", o.pos[1], &R)) != 0) return rc;
     st = dh_mat3_to_euler_f32(&R, seq, a);
     if (st != DH_OK) return rot_error("euler", st);
@@ -870,9 +931,22 @@ static int cmd_quat(int argc, char **argv)
     dh_mat3_f32 R;
     dh_quat_f32 q;
     dh_status st;
-    int rc = parse_opts(argc, argv, &o, "");
+    int rc = parse_opts(argc, argv, &o, "fixed");
     if (rc) return rc;
-    if (o.npos != 1) return usage_error("quat takes one EXPR: dhmath quat EXPR", NULL);
+    if (o.npos != 1) return usage_error("quat takes one EXPR: dhmath quat [--fixed] EXPR", NULL);
+    if (o.fixed) {
+        /* EXPR on the fixed-point path, components Q2.30 */
+        dh_frame_q F;
+        dh_quat_q qq;
+        if ((rc = eval_expr_arg(o.pos[0], 1, NULL, &F)) != 0) return rc;
+        st = dh_frame_to_quat_q(&F, &qq);
+        if (st != DH_OK) return rot_error("quat --fixed", st);
+        put_num(qq.w / 1073741824.0, 0);
+        put_num(qq.x / 1073741824.0, 0);
+        put_num(qq.y / 1073741824.0, 0);
+        put_num(qq.z / 1073741824.0, 1);
+        return finish();
+    }
     if ((rc = rotation_of("quat", o.pos[0], &R)) != 0) return rc;
     st = dh_mat3_to_quat_f32(&R, &q);
     if (st != DH_OK) return rot_error("quat", st);

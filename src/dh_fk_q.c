@@ -59,6 +59,7 @@
 #include "dhmath/dh_trig.h"
 #include "dhmath/dh_fixed.h" /* dh_frame_identity_q */
 #include "dh_internal.h"
+#include "dh_kin_impl.h"
 
 #define HALF29 ((int64_t)1 << 29)
 #define HALF28 ((int64_t)1 << 28)
@@ -578,4 +579,20 @@ dh_status dh_fk_frames_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames
 {
     DH_ASSERT(frames != NULL);
     return fk_q(r, q, frames, T_end);
+}
+
+/* ---- private blocks of the fixed Jacobian (dh_kin_impl.h) --------------- */
+
+/* joint_values of joint i of r at q into v[6] (sin theta, cos theta, sin
+ * alpha, cos alpha, d, a; the lengths raised from INT32_MIN). */
+int dh_fk_values_q_(const dh_robot *r, uint32_t i, int32_t q, dh_q30 *v)
+{
+    return joint_values(&r->joint[i], q, v);
+}
+
+/* T <- T * tool in place (nothing for an identity tool), as fk_q. */
+int dh_fk_tool_q_(const dh_robot *r, dh_frame_q *T)
+{
+    if ((r->flags & DH_ROBOT_TOOL_ID_Q) != 0u) return 0;
+    return mul_frame(T, T, &r->tool_q);
 }

@@ -45,6 +45,8 @@ enum {
     KW_Z3C,        /* cos(alpha3) d4: z3 = d3 + KW_Z3C */
     KW_S3,         /* sin, cos of the fixed theta of joint 3 */
     KW_C3,
+    KW_PRE,        /* 1: pre_inv is not the identity (its product is needed) */
+    KW_POST,       /* 1: post_inv is not the identity */
     KW_COUNT
 };
 
@@ -277,25 +279,34 @@ static int ikc_shift(float *v, float lo, float hi, float ref)
     return 1;
 }
 
-/* Raw canonical solution -> joint values; 1 when within the limits. */
+/* Raw canonical solution -> joint values; 1 when within the limits.
+ * Common case first: the revolute value already in (-180, 180] and within
+ * its limits with no nearer shift (|ref - v| <= 180), left as it is. */
 static DH_NOINLINE int ikc_to_joints(const dh_ikc_model_f32 *m, const float *q_ref, float *q)
 {
     uint32_t i;
     int in = 1;
     for (i = 0; i < m->n; i++) {
-        const int lim = m->qmin[i] <= m->qmax[i];
+        const float lo = m->qmin[i], hi = m->qmax[i], ref = (q_ref != NULL) ? q_ref[i] : 0.0f;
+        float v;
         if ((m->prismatic >> i) & 1u) {
             q[i] -= m->d[i];
-            if (lim && (q[i] < m->qmin[i] || q[i] > m->qmax[i])) in = 0;
-        } else {
-            float v = q[i] - m->off[i];
+            if (lo <= hi && (q[i] < lo || q[i] > hi)) in = 0;
+            continue;
+        }
+        v = q[i] - m->off[i];
+        if (!(v > -180.0f && v <= 180.0f)) {
             if (!(fabsf(v) <= 540.0f)) {
                 /* a theta offset beyond +-360 deg: whole turns off first */
                 const float x = v * (1.0f / 360.0f);
                 if (fabsf(x) < 8388608.0f) v -= 360.0f * (float)(int32_t)x;
             }
             v = ikc_wrap(ikc_wrap(v));
-            if (lim && !ikc_shift(&v, m->qmin[i], m->qmax[i], (q_ref != NULL) ? q_ref[i] : 0.0f)) in = 0;
+        }
+        q[i] = v;
+        /* (with q_ref NULL, ref = 0 and |v| <= 180: no nearer shift) */
+        if (lo <= hi && !(v >= lo && v <= hi && (q_ref == NULL || fabsf(ref - v) <= 180.0f))) {
+            if (!ikc_shift(&v, lo, hi, ref)) in = 0;
             q[i] = v;
         }
     }
@@ -305,7 +316,7 @@ static DH_NOINLINE int ikc_to_joints(const dh_ikc_model_f32 *m, const float *q_r
 dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const float *q_ref, uint32_t opts,
                      dh_ikc_sol_f32 *sol, uint32_t *n_sol)
 {
-    uint32_t raw = 0, i, j, out = 0;
+    uint32_t raw = 0, i, j, out = 0, finite = 0;
     dh_status st;
     DH_ASSERT(m != NULL);
     DH_ASSERT(target != NULL);
@@ -323,7 +334,12 @@ dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const
     if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;
     if (raw == 0u) return DH_ERR_UNREACHABLE;
     for (i = 0; i < raw; i++) {
-        const int in = ikc_to_joints(m, q_ref, sol[i].q);
+        int in;
+        /* a target far beyond the reach can overflow the squares of the
+         * position solution: such a branch is no solution */
+        if (!dh_allfinite_f32(sol[i].q, m->n)) continue;
+        finite++;
+        in = ikc_to_joints(m, q_ref, sol[i].q);
         if (!in) {
             if ((opts & DH_IKC_KEEP_OUT_OF_LIMITS) == 0u) continue;
             sol[i].flags |= DH_IKC_OUT_OF_LIMITS;
@@ -336,6 +352,7 @@ dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const
     }
     for (i = out; i < raw; i++) sol[i].flags = 0u;
     *n_sol = out;
+    if (finite == 0u) return DH_ERR_UNREACHABLE;
     return (out == 0u) ? DH_ERR_LIMIT : DH_OK;
 }
 
@@ -429,6 +446,8 @@ int dh_ikc_detect_wrist_f32_(dh_ikc_model_f32 *m)
         return 0;
     }
     k[KW_HZERO] = (fabsf(k[KW_H]) <= k[KW_EPS]) ? 1.0f : 0.0f;
+    k[KW_PRE] = ikc_is_identity(&m->pre_inv) ? 0.0f : 1.0f;
+    k[KW_POST] = ikc_is_identity(&m->post_inv) ? 0.0f : 1.0f;
     return 1;
 }
 
@@ -664,25 +683,37 @@ static DH_NOINLINE uint32_t ikc_shoulder(const dh_ikc_model_f32 *m, float cref1,
     return nu;
 }
 
-/* The vectors of T06 the wrist families need, into the scratch of sol. */
+/* The vectors of T06 the wrist families need, into the scratch of sol.
+ * T06 = pre_inv T post_inv; the products with an identity pre_inv or
+ * post_inv (flagged at analysis) are left out. */
 static DH_NOINLINE void ikc_prepare(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol)
 {
-    float *v = IKC_RN(sol);
-    v[0] = 1.0f;
-    v[1] = 0.0f;
-    v[2] = 0.0f;
-    dh_ikc_t06_vec_f32_(m, T, v, 0.0f, v);
-    v = IKC_RA(sol);
-    v[0] = 0.0f;
-    v[1] = m->sa[5];
-    v[2] = m->ca[5];
-    dh_ikc_t06_vec_f32_(m, T, v, 0.0f, v);
-    /* wrist centre o5 = T06 (-a6, -d6 sin alpha6, -d6 cos alpha6) */
-    v = IKC_P(sol);
-    v[0] = -m->a[5];
-    v[1] = -m->d[5] * m->sa[5];
-    v[2] = -m->d[5] * m->ca[5];
-    dh_ikc_t06_vec_f32_(m, T, v, 1.0f, v);
+    const int pre = m->k[KW_PRE] != 0.0f, post = m->k[KW_POST] != 0.0f;
+    float *rn = IKC_RN(sol), *ra = IKC_RA(sol), *p = IKC_P(sol);
+    uint32_t i;
+    /* in the frame of T's columns: e_x, Rx(alpha6)^T e_z and the wrist
+     * centre o5 = (-a6, -d6 sin alpha6, -d6 cos alpha6) */
+    ra[0] = 0.0f;
+    ra[1] = m->sa[5];
+    ra[2] = m->ca[5];
+    p[0] = -m->a[5];
+    p[1] = -m->d[5] * m->sa[5];
+    p[2] = -m->d[5] * m->ca[5];
+    if (post) {
+        for (i = 0; i < 3u; i++) rn[i] = m->post_inv.m[0][i];
+        ikc_xform(&m->post_inv, ra, 0.0f, ra);
+        ikc_xform(&m->post_inv, p, 1.0f, p);
+        ikc_xform(T, rn, 0.0f, rn);
+    } else {
+        for (i = 0; i < 3u; i++) rn[i] = T->m[0][i];
+    }
+    ikc_xform(T, ra, 0.0f, ra);
+    ikc_xform(T, p, 1.0f, p);
+    if (pre) {
+        ikc_xform(&m->pre_inv, rn, 0.0f, rn);
+        ikc_xform(&m->pre_inv, ra, 0.0f, ra);
+        ikc_xform(&m->pre_inv, p, 1.0f, p);
+    }
 }
 
 /* Arm values and flags (q[0..2]) of src into dst, q[3..5] left alone. */

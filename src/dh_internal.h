@@ -335,6 +335,84 @@ static inline uint32_t dh_q_isqrt62(uint64_t v)
     return root;
 }
 
+/* ---- fixed-point square roots (integer only, no division) --------------- */
+
+/** Number of significant bits of v (0 for 0). */
+DH_INLINE unsigned dh_q_bitlen64(uint64_t v)
+{
+    const uint32_t hi = (uint32_t)(v >> 32), lo = (uint32_t)v;
+    if (hi != 0u) return 64u - dh_port_clz(hi);
+    return 32u - dh_port_clz(lo);
+}
+
+/**
+ * 1 / sqrt(x / 2^30) in Q3.29 for x in [2^28, 2^30] (a value in [1/4, 1],
+ * result in [1, 2]): `steps` (1..3) Newton steps Y <- Y (3 - x Y^2) / 2
+ * from the tangent of 1/sqrt at 0.36 (x below 1/2) or 0.72 (above), which
+ * lies below the root (relative error <= 5%, then 3.8e-3, 2.1e-5, 7e-10,
+ * plus a few LSB of rounding). Integer only.
+ */
+static inline int32_t dh_q_rsqrt29(int32_t x, unsigned steps)
+{
+    int32_t y;
+    unsigned i;
+    /* tangents 2.5 - 2.31481 x and 1.76777 - 0.818415 x (Q29 constants) */
+    if (x < (int32_t)0x20000000)
+        y = (int32_t)1342177280 - (int32_t)(dh_q_mul64(x, 1242756741) >> 30);
+    else
+        y = (int32_t)949062656 - (int32_t)(dh_q_mul64(x, 439380859) >> 30);
+    for (i = 0; i < steps; i++) {
+        int32_t t = (int32_t)(dh_q_mul64(x, y) >> 29);  /* x y, Q30 */
+        t = (int32_t)(dh_q_mul64(t, y) >> 29);          /* x y^2, Q30, near 1 */
+        y += (int32_t)(dh_q_mul64(y, DH_Q_ONE30 - t) >> 31);
+    }
+    return y;
+}
+
+/** v normalised for dh_q_rsqrt29: v = (*m) 2^(*t) with *m in [2^28, 2^30)
+ *  and *t even (may be negative); v > 0. */
+DH_INLINE void dh_q_norm_even(uint64_t v, int32_t *m, int *t)
+{
+    int sh = (int)dh_q_bitlen64(v) - 30;
+    if (sh & 1) sh++;
+    *t = sh;
+    *m = (sh >= 0) ? (int32_t)(v >> (unsigned)sh) : (int32_t)(v << (unsigned)(-sh));
+}
+
+/** sqrt(v) for any uint64 v, within 2^-28 relative (0 for 0): the
+ *  normalised v times its reciprocal square root (three Newton steps). */
+static inline uint32_t dh_q_sqrt_u64(uint64_t v)
+{
+    int32_t m, y;
+    int t, sh;
+    uint64_t r;
+    if (v == 0u) return 0u;
+    dh_q_norm_even(v, &m, &t);
+    y = dh_q_rsqrt29(m, 3u);
+    /* sqrt(m) = m y / 2^44 (m y < 2^61); times 2^(t/2) */
+    r = (uint64_t)dh_q_mul64(m, y);
+    sh = 44 - t / 2;
+    if (sh > 0) return (uint32_t)((r + ((uint64_t)1 << (sh - 1))) >> (unsigned)sh);
+    return (uint32_t)(r << (unsigned)(-sh));
+}
+
+/** round(n 2^frac / d), ties up, for d in [1, 2^31), frac <= 30 and
+ *  n 2^frac / d below 2^31: the integer part by one 32-bit division, then one
+ *  bit per step (r < d < 2^31, so 2 r fits). No 64-bit division. */
+static inline uint32_t dh_q_udiv(uint32_t n, uint32_t d, unsigned frac)
+{
+    uint32_t q = n / d, r = n - q * d, i;
+    for (i = 0u; i <= frac; i++) {
+        r <<= 1;
+        q <<= 1;
+        if (r >= d) {
+            r -= d;
+            q |= 1u;
+        }
+    }
+    return (q >> 1) + (q & 1u);
+}
+
 /* ---- kinematics helpers ---------------------------------------------------- */
 
 /** The rotation check: 1 when the 3x3 with columns c0, c1, c2 (3 floats

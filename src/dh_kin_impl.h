@@ -24,4 +24,17 @@ void dh_kin_rotvec_f32_(const float *d, float *w);
 /* dh_rot_cols_ok_f32 with DH_ROT_ERROR_TOL (columns c0, c1, c2). */
 int dh_kin_rot_ok_f32_(const float *c0, const float *c1, const float *c2);
 
+/* Fixed path (dh_fk_q.c): v[6] = (sin theta, cos theta, sin alpha, cos
+ * alpha, d, a) of joint i at q as the FK step uses them (d + q saturated,
+ * lengths with INT32_MIN raised to -INT32_MAX), and T <- T * tool in
+ * place (as dh_fk_q). No argument checks; DH_ERR_OVERFLOW when a value
+ * saturated, else 0. */
+int dh_fk_values_q_(const dh_robot *r, uint32_t i, int32_t q, dh_q30 *v);
+int dh_fk_tool_q_(const dh_robot *r, dh_frame_q *T);
+
+/* dh_jacobian_q's body (dh_jacobian_q.c) without its argument checks (n,
+ * fixed path, convention, joint types: the caller's) and with the end
+ * frame F supplied by the caller; nonzero when an entry saturated. */
+int dh_kin_jac_q_(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *F);
+
 #endif /* DHMATH_SRC_DH_KIN_IMPL_H */

@@ -574,6 +574,44 @@ static void ikc_unreachable(void)
     }
 }
 
+/* Regression: a finite target far beyond the reach (1e6 .. 3e38) overflows
+ * the squares of the position solution; every revolute family answers
+ * UNREACHABLE with no solution (once it returned DH_OK with NaN joint
+ * values); a robot whose prismatic joint reaches it, kept outside its limits,
+ * returns finite solutions only. */
+static void ikc_far_target(void)
+{
+    static const dhs_robot *const robots[] = { &dhs_puma560_m, &dhs_kuka_kr5_m, &dhs_stanford_m, &dhs_ur5_m,
+                                               &dhs_ur10_m, &dhs_cobra600_m };
+    static const float far[] = { 1e6f, 1e15f, 1e19f, 1e20f, 1e30f, 3e38f };
+    unsigned k, f, c;
+    for (k = 0; k < sizeof robots / sizeof robots[0]; k++) {
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        DHT_EQ_INT(dhs_build(robots[k], &r), DH_OK);
+        DHT_EQ_INT(dh_ikc_analyse_f32(&r, &m), DH_OK);
+        for (f = 0; f < sizeof far / sizeof far[0]; f++)
+            for (c = 0; c < 4u; c++) {
+                dh_mat4_f32 T;
+                dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+                uint32_t n_sol = 7u;
+                dh_status st;
+                const float x = (c & 1u) ? -far[f] : far[f], y = (c & 2u) ? 0.5f * far[f] : 0.0f;
+                dh_mat4_trans_f32(x, y, -0.7f * far[f], &T);
+                st = dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_sol);
+                if (m.prismatic != 0u && st == DH_OK) {
+                    /* an unlimited prismatic joint reaches it: real solutions only */
+                    uint32_t i, j;
+                    for (i = 0; i < n_sol; i++)
+                        for (j = 0; j < m.n; j++) DHT_TRUE_MSG(isfinite(sol[i].q[j]), "%s: solution %u", robots[k]->name, i);
+                    continue;
+                }
+                DHT_TRUE_MSG(st == DH_ERR_UNREACHABLE && n_sol == 0u, "%s, target (%g, %g, %g): status %d, %u solutions",
+                             robots[k]->name, (double)x, (double)y, -0.7 * (double)far[f], (int)st, (unsigned)n_sol);
+            }
+    }
+}
+
 /* ---------------------------------------------------------------------- */
 /* conventions and frames                                                   */
 
@@ -875,6 +913,7 @@ static const dht_case cases[] = {
     DHT_CASE(ikc_nearest),
     DHT_CASE(ikc_no_closed_form),
     DHT_CASE(ikc_unreachable),
+    DHT_CASE(ikc_far_target),
     DHT_CASE(ikc_limits),
     DHT_CASE(ikc_wrist_singular),
     DHT_CASE(ikc_shoulder_singular),

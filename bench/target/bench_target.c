@@ -507,6 +507,140 @@ static const bt_op bt_ops_dh[] = {
     { "newlib", "sinf + cosf (from degrees)", op_newlib_sincos, 0, "", 4096u },
 };
 
+/* ---- fixed Jacobian and rotation conversions, next to their float
+ * counterparts (inputs derived from the sets above, no random draws) ---- */
+static dh_mat3_f32 bt_R3[BT_NSET];
+static dh_quat_f32 bt_qtin[BT_NSET], bt_qt;
+static dh_quat_q bt_qqin[BT_NSET], bt_qtq;
+static float bt_eul[3], bt_deg;
+static dh_q16 bt_eulq[3], bt_degq;
+static int32_t bt_Jq[36];
+static dh_vec3_f32 bt_v3;
+static dh_dir3_q bt_dq;
+static dh_mat3_f32 bt_R3out;
+
+static uint32_t bt_inputs_kinq(void)
+{
+    uint32_t st = 0u, k, c, r;
+    for (k = 0; k < BT_NSET; k++) {
+        for (c = 0; c < 3u; c++)
+            for (r = 0; r < 3u; r++) bt_R3[k].m[c][r] = bt_A[k].m[c][r];
+        st |= (uint32_t)dh_mat3_to_quat_f32(&bt_R3[k], &bt_qtin[k]);
+        st |= (uint32_t)dh_frame_to_quat_q(&bt_FA[k], &bt_qqin[k]);
+    }
+    return st;
+}
+
+static BT_NOIPA dh_status z_jacobian_q(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *T)
+{
+    (void)r; (void)q; (void)J; (void)T;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_to_euler_f32(const dh_mat3_f32 *R, dh_euler_seq s, float *a)
+{
+    (void)R; (void)s; (void)a;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_to_euler_q(const dh_frame_q *F, dh_euler_seq s, dh_q16 *a)
+{
+    (void)F; (void)s; (void)a;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_from_euler_f32(dh_euler_seq s, const float *a, dh_mat3_f32 *R)
+{
+    (void)R; (void)s; (void)a;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_from_euler_q(dh_euler_seq s, const dh_q16 *a, dh_frame_q *F)
+{
+    (void)F; (void)s; (void)a;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_to_quat_f32(const dh_mat3_f32 *R, dh_quat_f32 *q)
+{
+    (void)R; (void)q;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_to_quat_q(const dh_frame_q *F, dh_quat_q *q)
+{
+    (void)F; (void)q;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_from_quat_f32(const dh_quat_f32 *q, dh_mat3_f32 *R)
+{
+    (void)R; (void)q;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_from_quat_q(const dh_quat_q *q, dh_frame_q *F)
+{
+    (void)F; (void)q;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_axis_f32(const dh_mat3_f32 *R, dh_vec3_f32 *k, float *d)
+{
+    (void)R; (void)k; (void)d;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_axis_q(const dh_frame_q *F, dh_dir3_q *k, dh_q16 *d)
+{
+    (void)F; (void)k; (void)d;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_roterr_f32(const dh_mat3_f32 *A, const dh_mat3_f32 *B, dh_vec3_f32 *w)
+{
+    (void)A; (void)B; (void)w;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_roterr_q(const dh_frame_q *A, const dh_frame_q *B, dh_dir3_q *w)
+{
+    (void)A; (void)B; (void)w;
+    return DH_OK;
+}
+
+#define B_jacobian_q(F) bt_status |= (uint32_t)F(&bt_puma_mm, bt_qq[BT_IA(i)], bt_Jq, &bt_Fout)
+#define B_to_euler_f32(F) bt_status |= (uint32_t)F(&bt_R3[BT_IA(i)], DH_EULER_ZYX, bt_eul)
+#define B_to_euler_q(F) bt_status |= (uint32_t)F(&bt_FA[BT_IA(i)], DH_EULER_ZYX, bt_eulq)
+#define B_from_euler_f32(F) bt_status |= (uint32_t)F(DH_EULER_ZYX, &bt_ang_f[i & (BT_NANG - 4u)], &bt_R3out)
+#define B_from_euler_q(F) bt_status |= (uint32_t)F(DH_EULER_ZYX, &bt_ang_q[i & (BT_NANG - 4u)], &bt_Fout)
+#define B_to_quat_f32(F) bt_status |= (uint32_t)F(&bt_R3[BT_IA(i)], &bt_qt)
+#define B_to_quat_q(F) bt_status |= (uint32_t)F(&bt_FA[BT_IA(i)], &bt_qtq)
+#define B_from_quat_f32(F) bt_status |= (uint32_t)F(&bt_qtin[BT_IA(i)], &bt_R3out)
+#define B_from_quat_q(F) bt_status |= (uint32_t)F(&bt_qqin[BT_IA(i)], &bt_Fout)
+#define B_axis_f32(F) bt_status |= (uint32_t)F(&bt_R3[BT_IA(i)], &bt_v3, &bt_deg)
+#define B_axis_q(F) bt_status |= (uint32_t)F(&bt_FA[BT_IA(i)], &bt_dq, &bt_degq)
+#define B_roterr_f32(F) bt_status |= (uint32_t)F(&bt_R3[BT_IA(i)], &bt_R3[BT_IB(i)], &bt_v3)
+#define B_roterr_q(F) bt_status |= (uint32_t)F(&bt_FA[BT_IA(i)], &bt_FB[BT_IB(i)], &bt_dq)
+
+BT_PAIR(jacobian_q, dh_jacobian_q, z_jacobian_q)
+BT_PAIR(to_euler_f32, dh_mat3_to_euler_f32, z_to_euler_f32)
+BT_PAIR(to_euler_q, dh_frame_to_euler_q, z_to_euler_q)
+BT_PAIR(from_euler_f32, dh_euler_to_mat3_f32, z_from_euler_f32)
+BT_PAIR(from_euler_q, dh_euler_to_frame_q, z_from_euler_q)
+BT_PAIR(to_quat_f32, dh_mat3_to_quat_f32, z_to_quat_f32)
+BT_PAIR(to_quat_q, dh_frame_to_quat_q, z_to_quat_q)
+BT_PAIR(from_quat_f32, dh_quat_to_mat3_f32, z_from_quat_f32)
+BT_PAIR(from_quat_q, dh_quat_to_frame_q, z_from_quat_q)
+BT_PAIR(axis_f32, dh_mat3_to_axis_angle_f32, z_axis_f32)
+BT_PAIR(axis_q, dh_frame_to_axis_angle_q, z_axis_q)
+BT_PAIR(roterr_f32, dh_rot_error_f32, z_roterr_f32)
+BT_PAIR(roterr_q, dh_rot_error_q, z_roterr_q)
+
+static const bt_op bt_ops_kinq[] = {
+    BT_OPD("dh_jacobian_q (Puma 560, mm)", jacobian_q, "z_jacobian_q", 128u),
+    BT_OPD("dh_mat3_to_euler_f32 (ZYX)", to_euler_f32, "z_to_euler_f32", 512u),
+    BT_OPD("dh_frame_to_euler_q (ZYX)", to_euler_q, "z_to_euler_q", 512u),
+    BT_OPD("dh_euler_to_mat3_f32 (ZYX)", from_euler_f32, "z_from_euler_f32", 512u),
+    BT_OPD("dh_euler_to_frame_q (ZYX)", from_euler_q, "z_from_euler_q", 512u),
+    BT_OPD("dh_mat3_to_quat_f32", to_quat_f32, "z_to_quat_f32", 512u),
+    BT_OPD("dh_frame_to_quat_q", to_quat_q, "z_to_quat_q", 512u),
+    BT_OPD("dh_quat_to_mat3_f32", from_quat_f32, "z_from_quat_f32", 512u),
+    BT_OPD("dh_quat_to_frame_q", from_quat_q, "z_from_quat_q", 512u),
+    BT_OPD("dh_mat3_to_axis_angle_f32", axis_f32, "z_axis_f32", 512u),
+    BT_OPD("dh_frame_to_axis_angle_q", axis_q, "z_axis_q", 512u),
+    BT_OPD("dh_rot_error_f32", roterr_f32, "z_roterr_f32", 512u),
+    BT_OPD("dh_rot_error_q", roterr_q, "z_roterr_q", 512u),
+};
+
 static void bt_measure(const bt_op *op)
 {
     uint64_t base, t, tz = 0u;
@@ -526,7 +660,31 @@ static void bt_measure(const bt_op *op)
 
 #define BT_NIK 16u
 
-static float bt_ik_work[DH_IK_WORK_FLOATS(6u)];
+#define BT_NIKC (BT_NSET == 8u ? 4u : BT_NSET)
+
+#if defined(__ARM_FP) || !defined(__arm__)
+#define BT_IKC_FLOAT 1
+#else
+#define BT_IKC_FLOAT 0
+#endif
+
+/* The numerical IK's work array and the closed-form IK's models, targets
+ * and solutions share memory (used one after the other): the Cortex-M0's
+ * 16 KiB hold both this way. */
+static union {
+    float ik_work[DH_IK_WORK_FLOATS(6u)];
+    struct {
+        dh_ikc_model_q mq;
+        dh_frame_q Tq[BT_NIKC];
+        dh_ikc_sol_q solq[DH_IKC_MAX_SOL];
+#if BT_IKC_FLOAT
+        dh_ikc_model_f32 mf;
+        dh_mat4_f32 Tf[BT_NIKC];
+        dh_ikc_sol_f32 solf[DH_IKC_MAX_SOL];
+#endif
+    } c;
+} bt_mem;
+#define bt_ik_work bt_mem.ik_work
 
 static void bt_ik(void)
 {
@@ -557,13 +715,130 @@ static void bt_ik(void)
             continue;
         }
         t0 = bt_now();
-        st = dh_ik_f32(&bt_puma_m, &target, q0, &p, bt_ik_work, sizeof bt_ik_work / sizeof bt_ik_work[0],
+        st = dh_ik_f32(&bt_puma_m, &target, q0, &p, bt_ik_work, sizeof bt_mem.ik_work / sizeof bt_mem.ik_work[0],
                        q, &res);
         t1 = bt_now();
         printf("BT ik|%lu|%d|%lu|%llu|%llu|%lu\n", (unsigned long)k, (int)st,
                (unsigned long)res.iterations, (unsigned long long)(t1 - t0),
                (unsigned long long)tnull, (unsigned long)(res.err_pos * 1e9f));
     }
+}
+
+/* ---- fixed-point inverse kinematics: one solve at a time ------------------- */
+
+#define BT_NIKQ 64u
+
+/* As bt_ik on the Puma 560 in mm, all integer: target = dh_fk_q of a random
+ * Q configuration within 80 % of the limits, start 10..20 deg away on every
+ * joint, dh_ik_params_default_q with tolerances 0.9e-3 mm and 0.9e-5 rad (full pose).
+ * The workspace is on the stack: the micro:bit's RAM has no room for it in .bss. */
+static BT_NOINLINE void bt_ik_q(void)
+{
+    int32_t bt_ikq_work[DH_IK_WORK_Q(6u)];
+    dh_ik_params_q p;
+    dh_ik_result_q res;
+    int32_t qt[6], q0[6], q[6];
+    dh_frame_q target;
+    uint64_t t0, t1, tnull;
+    uint32_t k, j;
+    dh_ik_params_default_q(&bt_puma_mm, &p);
+    p.tol_pos = DH_QPOS(0.9e-3);    /* 0.9 of 1e-3 mm, 1e-5 rad: room for dh_fk_q's error */
+    p.tol_rot = DH_Q30(0.9e-5);
+    t0 = bt_now();
+    t1 = bt_now();
+    tnull = t1 - t0;
+    for (k = 0; k < BT_NIKQ; k++) {
+        dh_status st;
+        for (j = 0; j < 6u; j++) {
+            float lo = 0.8f * bt_puma_tab[j][3], hi = 0.8f * bt_puma_tab[j][4];
+            float off = bt_uniform(10.0f, 20.0f);
+            float v = bt_uniform(lo, hi);
+            qt[j] = bt_to_q16(v);
+            q0[j] = bt_to_q16(v + ((bt_rand() & 1u) ? off : -off));
+        }
+        st = dh_fk_q(&bt_puma_mm, qt, &target);
+        if (st != DH_OK) {
+            bt_status |= (uint32_t)st;
+            continue;
+        }
+        t0 = bt_now();
+        st = dh_ik_q(&bt_puma_mm, &target, q0, &p, bt_ikq_work, sizeof bt_ikq_work / sizeof bt_ikq_work[0], q,
+                     &res);
+        t1 = bt_now();
+        printf("BT ikq|%lu|%d|%lu|%llu|%llu|%ld\n", (unsigned long)k, (int)st, (unsigned long)res.iterations,
+               (unsigned long long)(t1 - t0), (unsigned long long)tnull, (long)res.err_pos);
+    }
+}
+
+/* ---- closed-form inverse kinematics: all solutions ------------------------- */
+
+
+/* Targets: FK of random configurations within the limits (untimed). The
+ * loop of BT_NIKC solves is timed as a whole; the same loop with the call
+ * left out gives the loop's own count. */
+static void bt_ikc(void)
+{
+    dh_ikc_model_q *const mq = &bt_mem.c.mq;
+    dh_frame_q *const Tq = bt_mem.c.Tq;
+    dh_ikc_sol_q *const solq = bt_mem.c.solq;
+#if BT_IKC_FLOAT
+    dh_ikc_model_f32 *const mf = &bt_mem.c.mf;
+    dh_mat4_f32 *const Tf = bt_mem.c.Tf;
+    dh_ikc_sol_f32 *const solf = bt_mem.c.solf;
+#endif
+    uint32_t k, j, nsol, total, st = 0u;
+    uint64_t t0, t1, tl;
+    const uint32_t saved = bt_rng;
+    bt_rng = 0x85EBCA6Bu;
+    for (k = 0; k < BT_NIKC; k++) {
+        float q[6];
+        int32_t qq[6];
+        for (j = 0; j < 6u; j++) {
+            q[j] = bt_uniform(bt_puma_tab[j][3], bt_puma_tab[j][4]);
+            qq[j] = bt_to_q16(q[j]);
+        }
+#if BT_IKC_FLOAT
+        st |= (uint32_t)dh_fk_f32(&bt_puma_m, q, &Tf[k]);
+#endif
+        st |= (uint32_t)dh_fk_q(&bt_puma_mm, qq, &Tq[k]);
+    }
+    bt_rng = saved;
+#if BT_IKC_FLOAT
+    st |= (uint32_t)dh_ikc_analyse_f32(&bt_puma_m, mf);
+#endif
+    st |= (uint32_t)dh_ikc_analyse_q(&bt_puma_mm, mq);
+    if (st != 0u) {
+        printf("BT error|closed-form IK set-up returned status %lu\n", (unsigned long)st);
+        bt_status |= st;
+        return;
+    }
+    t0 = bt_now();
+    for (k = 0; k < BT_NIKC; k++) {
+        bt_sink = k;
+    }
+    t1 = bt_now();
+    tl = t1 - t0;
+#if BT_IKC_FLOAT
+    total = 0u;
+    t0 = bt_now();
+    for (k = 0; k < BT_NIKC; k++) {
+        st |= (uint32_t)dh_ikc_f32(mf, &Tf[k], NULL, 0u, solf, &nsol);
+        total += nsol;
+    }
+    t1 = bt_now();
+    printf("BT ikc|dh_ikc_f32 (Puma 560, m, all solutions)|%lu|%llu|%llu|%lu|%lu\n", (unsigned long)BT_NIKC,
+           (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total, (unsigned long)st);
+#endif
+    total = 0u;
+    t0 = bt_now();
+    for (k = 0; k < BT_NIKC; k++) {
+        st |= (uint32_t)dh_ikc_q(mq, &Tq[k], NULL, 0u, solq, &nsol);
+        total += nsol;
+    }
+    t1 = bt_now();
+    printf("BT ikc|dh_ikc_q (Puma 560, mm, all solutions)|%lu|%llu|%llu|%lu|%lu\n", (unsigned long)BT_NIKC,
+           (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total, (unsigned long)st);
+    bt_status |= st;
 }
 
 /* ---- sanity checks (the numbers mean something only if these pass) -------- */
@@ -646,11 +921,21 @@ int main(void)
     for (k = 0; k < sizeof bt_ops_dh / sizeof bt_ops_dh[0]; k++) {
         bt_measure(&bt_ops_dh[k]);
     }
+    /* fixed Jacobian and rotation conversions */
+    if (bt_inputs_kinq() != 0u) {
+        printf("BT error|rotation inputs returned a status\n");
+        return 1;
+    }
+    for (k = 0; k < sizeof bt_ops_kinq / sizeof bt_ops_kinq[0]; k++) {
+        bt_measure(&bt_ops_kinq[k]);
+    }
     n = bt_cglm_ops(ops, (uint32_t)(sizeof ops / sizeof ops[0]));
     for (k = 0; k < n; k++) {
         bt_measure(&ops[k]);
     }
     bt_ik();
+    bt_ik_q();
+    bt_ikc();
     fail = bt_checks();
     printf("BT stack|%lu|%lu\n", (unsigned long)bt_stack_used(),
            (unsigned long)((uintptr_t)__stack_top__ - (uintptr_t)__stack_limit__));

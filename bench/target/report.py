@@ -57,6 +57,8 @@ class Run:
         self.disasm = None
         self.ops = []        # (group, name, n, per_call)
         self.ik = []         # (k, status, iterations, instructions, err_nm)
+        self.ikq = []        # (k, status, iterations, instructions, err_pos LSB)
+        self.ikc = []        # (name, instructions per call, solutions per call)
         self.checks = []
         self.core = self.opt = self.gcc = self.counter = self.unit = "?"
         self.scale = None
@@ -101,6 +103,16 @@ class Run:
                     ticks = int(p[4]) - int(p[5])
                     self.ik.append((int(p[1]), int(p[2]), int(p[3]),
                                     float(ticks * self.scale), int(p[6])))
+                elif kind == "ikq":
+                    ticks = int(p[4]) - int(p[5])
+                    self.ikq.append((int(p[1]), int(p[2]), int(p[3]),
+                                     float(ticks * self.scale), int(p[6])))
+                elif kind == "ikc":
+                    n = int(p[2])
+                    ticks = int(p[3]) - int(p[4])
+                    if int(p[6]) != 0:
+                        fail("%s: %s returned status %s" % (path, p[1], p[6]))
+                    self.ikc.append((p[1], float(ticks * self.scale) / n, int(p[5]) / n))
                 elif kind == "check":
                     self.checks.append((p[1], p[2]))
                 elif kind == "stack":
@@ -370,6 +382,20 @@ def main():
       "where `glm_mat4_inv` divides by the determinant without any check; "
       "`dh_mat4_mul_f32` is a full 4x4 product like `glm_mat4_mul`.")
     w("")
+    w("## Closed-form inverse kinematics (Puma 560, all solutions)")
+    w("")
+    w("Per call: all solutions of `dh_ikc_f32` (metres, float cores only) and `dh_ikc_q` (mm) for "
+      "targets = FK of random configurations within the joint limits (computed untimed; 4 on "
+      "the Cortex-M0 for its 16 KiB of RAM, 16 elsewhere); the loop over the targets is timed as a whole, minus the "
+      "same loop without the call.")
+    w("")
+    w("| core | operation | instructions per call | solutions per call |")
+    w("|---|---|---:|---:|")
+    for c, o in cols:
+        r = runs["%s-%s" % (c, o)]
+        for name, ins, ns in r.ikc:
+            w("| %s -%s | `%s` | %.0f | %.2f |" % (core_name[c], o, name, ins, ns))
+    w("")
     w("## Inverse kinematics (`dh_ik_f32`, Puma 560 in metres)")
     w("")
     w("Per solve: target = `dh_fk_f32` of a random configuration within 80 % of the joint "
@@ -398,6 +424,27 @@ def main():
       "`sqrtf`), and newlib's precompiled FPU variants contain VFMA instructions (seen in "
       "the disassembly of `atanf`, `__kernel_sinf`, `__kernel_cosf`), which round "
       "differently from the soft-float code; this is the likely cause.")
+    w("")
+    w("## Inverse kinematics in fixed point (`dh_ik_q`, Puma 560 in mm)")
+    w("")
+    w("Per solve: target = `dh_fk_q` of a random Q configuration within 80 % of the joint "
+      "limits, start 10-20 deg away on every joint, `dh_ik_params_default_q(robot)` with tolerances "
+      "0.9e-3 mm / 0.9e-5 rad (full pose, w_rot L/4; 0.9 of the 1e-3 mm / 1e-5 rad verified by "
+      "test/test_ik_q.c, room for the fixed FK's error). Instructions of the whole "
+      "`dh_ik_q` call (integer only).")
+    w("")
+    w("| core | solves | converged | iterations mean (min-max) | instructions per solve mean (min-max) | per iteration |")
+    w("|---|---:|---:|---|---|---:|")
+    for c, o in cols:
+        r = runs["%s-%s" % (c, o)]
+        if not r.ikq:
+            continue
+        its = [x[2] for x in r.ikq]
+        ins = [x[3] for x in r.ikq]
+        conv = sum(1 for x in r.ikq if x[1] == 0)
+        w("| %s -%s | %d | %d | %.1f (%d-%d) | %.0f (%.0f-%.0f) | %.0f |" % (
+            core_name[c], o, len(r.ikq), conv, sum(its) / len(its), min(its), max(its),
+            sum(ins) / len(ins), min(ins), max(ins), sum(ins) / max(1, sum(its))))
     w("")
     w("## What the numbers are")
     w("")
@@ -438,7 +485,7 @@ def main():
     w("* **micro:bit counter.** QEMU 7.2's `microbit` machine (nRF51, Cortex-M0) has the "
       "ARMv6-M SysTick on the 16 MHz system clock, so the same counter works there "
       "(62.5 instructions per tick, confirmed by the calibration); no nRF51 timer is "
-      "needed. Its 16 KiB of RAM hold the inputs with a 4 KiB stack reserve "
+      "needed. Its 16 KiB of RAM hold the inputs with a 3 KiB stack reserve "
       "(`bench/target/microbit_bench.ld`); the high-water mark is in the table above.")
     w("* **Re-running.** `tools/target_bench.sh [output.md]` rebuilds the firmware for "
       "every core at -O2, -Os and -Os with `DH_SMALL` (`Os-small`) in `build/tbench-<core>-<opt>/`, runs it and rewrites this "

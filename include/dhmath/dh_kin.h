@@ -8,7 +8,9 @@
  * is per RADIAN for revolute joints (so J * qdot, qdot in rad/s, gives m/s
  * and rad/s), orientation errors are in radians.
  *
- * Float only (f-suffixed constants, no double) and no libm: square roots
+ * The _q functions are the fixed-point counterparts (integer only: no
+ * float, no libm, no 64-bit division; formats as dh_fixed.h). The float
+ * ones use f-suffixed constants, no double and no libm: square roots
  * are correctly rounded (bit-identical to an IEEE sqrtf). No heap, no
  * recursion, reentrant; every function stays within 256 bytes of stack
  * including callees (dh_ik_f32 keeps its vectors and matrices in the
@@ -79,6 +81,44 @@ dh_status dh_jacobian_f32(const dh_robot *r, const float *q, float *J, dh_mat4_f
 dh_status dh_jacobian_tool_f32(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end);
 
 /**
+ * @brief Geometric Jacobian of the fixed-point chain, base frame (integer
+ * only): the columns of dh_jacobian_f32 from the chain dh_fk_q builds.
+ *
+ * J is 6 x n int32, row-major (J[row * n + col]), rows vx vy vz wx wy wz.
+ * Revolute column: linear rows z_i x (p_end - o_i) in dh_qpos per RADIAN,
+ * angular rows z_i in Q2.30. Prismatic column: linear rows z_i in Q2.30
+ * (length per length, dimensionless), angular rows 0.
+ * Each linear entry is the exact cross product of the integer frame
+ * entries rounded once (<= 0.5 LSB). Against the exact robot, measured for the
+ * Puma 560, UR5 and Panda in mm (DH_QPOS_FRAC 16): at least as accurate
+ * as dh_jacobian_f32 on the same robot (measured 4.5e-5 mm against the
+ * float path's 3.9e-4 mm, test/test_jacobian_q.c).
+ *
+ * @param r  robot (fixed path), conv standard or modified.
+ * @param q  n joint values: dh_q16 degrees (R), dh_qpos (P), any int32
+ *           (as dh_fk_q; limits are not checked).
+ * @param J  6*n int32, output. Must not overlap q or r.
+ * @param T_end may be NULL; else receives the end frame, bit for bit the
+ *           dh_fk_q result (n == 0: base * tool).
+ * @return DH_OK (also for n == 0: J has no entries);
+ *         DH_ERR_UNAVAILABLE when the fixed path is unavailable
+ *         (DH_ROBOT_HAS_Q clear); DH_ERR_ARG for n > DH_MAX_JOINTS, unknown
+ *         convention or joint type (J, T_end untouched for both);
+ *         DH_ERR_OVERFLOW when d + q, an FK entry or an entry of J
+ *         saturated (J and T_end written, saturated entries at INT32_MIN /
+ *         INT32_MAX with the true sign; never wrapped).
+ */
+dh_status dh_jacobian_q(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *T_end);
+
+/**
+ * @brief dh_jacobian_q expressed in the tool (end) frame: both halves of
+ * every column rotated by R_end^T (each component a three-term sum of
+ * exact products rounded once, within 0.5 + 2^-29 LSB). Arguments,
+ * statuses and outputs on error as dh_jacobian_q.
+ */
+dh_status dh_jacobian_tool_q(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *T_end);
+
+/**
  * @brief Orientation error a(dR), dR = R_target * R^T (Sugihara 2011).
  *
  * w is the rotation vector (unit axis times angle in radians, angle in
@@ -98,6 +138,26 @@ dh_status dh_jacobian_tool_f32(const dh_robot *r, const float *q, float *J, dh_m
  * Measured: |w - w_ref| <= 6.3e-7 rad at all angles.
  */
 dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh_vec3_f32 *w);
+
+/** DH_ROT_ERROR_TOL in Q2.30 LSB (1e-3 2^30), for dh_rot_error_q. */
+#define DH_ROT_ERROR_TOL_Q 1073742
+
+/**
+ * @brief Orientation error a(dR), dR = R_target R^T, of two fixed frames'
+ * rotations (Q2.30; positions ignored): the fixed counterpart of
+ * dh_rot_error_f32 (integer only). w is the rotation vector in Q3.29
+ * RADIANS (1.0 rad = 2^29; |w| <= pi), R_target = Rot(w) R; w = 0 for
+ * dR = I; at exactly pi the sign of w is arbitrary. Accurate at every
+ * angle: |w - w_ref| <= 6.3e-7 rad (the float path's bound; measured
+ * against double in test/test_rot_q.c).
+ * @param F_target, F frames whose rotations are orthonormal within
+ *        DH_ROT_ERROR_TOL_Q (dh_frame_ortho_error_q) with det > 0. May
+ *        alias each other.
+ * @param w output (Q3.29 rad).
+ * @return DH_OK; DH_ERR_NOT_RIGID if a rotation is not orthonormal within
+ *         the tolerance or is a reflection (w untouched).
+ */
+dh_status dh_rot_error_q(const dh_frame_q *F_target, const dh_frame_q *F, dh_dir3_q *w);
 
 /**
  * @brief Pose error between two frames: e[0..2] = p_target - p (length
@@ -207,6 +267,75 @@ void dh_ik_params_default(const dh_robot *r, dh_ik_params *p);
  */
 dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q0, const dh_ik_params *p,
                     float *work, size_t work_len, float *q, dh_ik_result *res);
+
+/** DH_ROT_ERROR_TOL in Q2.30 for the fixed-point functions (1e-3 * 2^30). */
+#define DH_ROT_ERROR_TOL_Q 1073742
+
+/** Fixed-point IK parameters; fill with dh_ik_params_default_q() and adjust. */
+typedef struct {
+    uint32_t max_iter;   /**< bound on the trial steps (FK + Jacobian after the first), >= 1 */
+    uint32_t mask;       /**< DH_IK_* bits to drive to 0 (non-zero, within DH_IK_FULL) */
+    int32_t tol_pos;     /**< position tolerance, dh_qpos, >= 0, on the masked position norm */
+    int32_t tol_rot;     /**< orientation tolerance, Q2.30 rad, >= 0, on the masked rotation-vector norm */
+    int32_t w_rot;       /**< weight of orientation vs position, dh_qpos per rad, > 0; at most L counts */
+    uint32_t restarts;   /**< restarts from deterministic pseudo-random configurations, within max_iter */
+} dh_ik_params_q;
+
+/** Fixed-point IK outcome (for the returned configuration). */
+typedef struct {
+    uint32_t iterations; /**< trial steps taken (each one FK + Jacobian) */
+    int32_t err_pos;     /**< masked position error norm, dh_qpos (saturated at INT32_MAX) */
+    int32_t err_rot;     /**< masked orientation error norm, Q2.30 rad (saturated at INT32_MAX, 2 rad) */
+} dh_ik_result_q;
+
+/** Workspace int32 words needed by dh_ik_q for n joints: n^2 + 23 n + 76
+ *  (250 for n = 6, 286 for n = 7): both Jacobians, the equilibrated
+ *  normal matrix and its factor, the frame, the orientation error's
+ *  scratch, the solver state and a copy of q0 (so that dh_ik_q stays
+ *  within its stack budget). */
+#define DH_IK_WORK_Q(n) ((n) * (n) + 23u * (n) + 76u)
+
+/**
+ * @brief Fixed-point defaults for robot r (integer only): max_iter 500,
+ * mask DH_IK_FULL, tol_pos L / 2^20 (at least 1 LSB), tol_rot 10737 (1e-5
+ * rad), w_rot L / 4, restarts 50, where L = sum of |a_q|, |d_q|,
+ * prismatic travel (limited joints) and |tool_q p| in dh_qpos (one length
+ * unit if that is 0; saturated at INT32_MAX). Reads only r's fixed fields.
+ * The step budget is a quarter of dh_ik_params_default's: it bounds the
+ * worst case (a step costs about 45,000 instructions on a Cortex-M0 for
+ * the Puma 560, tools/target_bench.sh) at a small cost in success rate
+ * for near-singular targets (docs/accuracy_kin.md).
+ */
+void dh_ik_params_default_q(const dh_robot *r, dh_ik_params_q *p);
+
+/**
+ * @brief Numerical IK in fixed point (integer only: no float, libm or
+ * 64-bit division): dh_ik_f32's method (Levenberg-Marquardt with Sugihara
+ * 2011's damping, joint limits in the iteration, stall restarts, best
+ * attempt returned, deterministic) on the fixed chain of dh_jacobian_q.
+ * E = 1/2 (|e_pos|^2 + w^2 |e_rot|^2), w = min(w_rot, L), e_pos = target p
+ * - FK p (dh_qpos), e_rot = a(R_target R^T) (rad). q in dh_q16 deg (R) or
+ * dh_qpos (P), within the fixed limits (q0 clamped first). The errors are
+ * those of dh_fk_q: add its error (docs/accuracy_fk.md) for the true one.
+ * @param r      robot (fixed path), 1..DH_MAX_JOINTS joints.
+ * @param target end frame; rotation (read only when the mask drives it)
+ *               within DH_ROT_ERROR_TOL_Q of orthonormal, det > 0.
+ * @param q0,p   start (n values); parameters.
+ * @param work,work_len >= DH_IK_WORK_Q(n) words, overlapping nothing; clobbered.
+ * @param q,res  result (may alias q0); iterations and errors of q.
+ * @return for the returned q (res describes it): DH_OK both tolerances met;
+ *   DH_ERR_NO_CONVERGENCE max_iter cut off an attempt still progressing;
+ *   DH_ERR_UNREACHABLE stalled above tolerance, or the target beyond the
+ *   reach bound (dh_ik_f32's, in dh_qpos). With q, res untouched:
+ *   DH_ERR_ARG (n, work NULL or work_len too small, max_iter 0, mask,
+ *   tolerance < 0, w_rot <= 0, convention or joint type);
+ *   DH_ERR_UNAVAILABLE (no fixed path); DH_ERR_NOT_RIGID (driven target
+ *   rotation, or the start's end rotation, not one); DH_ERR_OVERFLOW (FK
+ *   or Jacobian of the start saturated). Trial points that saturate are
+ *   rejected (never wrapped). Never DH_ERR_SINGULAR.
+ */
+dh_status dh_ik_q(const dh_robot *r, const dh_frame_q *target, const int32_t *q0, const dh_ik_params_q *p,
+                  int32_t *work, size_t work_len, int32_t *q, dh_ik_result_q *res);
 
 #ifdef __cplusplus
 }

@@ -413,6 +413,92 @@ dh_status dh_mat3_check_rot_f32(const dh_mat3_f32 *R, float tol);
  */
 dh_status dh_mat3_orthonormalize_f32(const dh_mat3_f32 *R, dh_mat3_f32 *out);
 
+/* ======================================================================
+ * Fixed point (integer only: no float, no libm, no 64-bit division)
+ * ==================================================================== */
+
+/**
+ * DH_ROT_TOL in Q2.30 LSB (1e-4 2^30): the orthonormality tolerance of the
+ * fixed extractions below. F's rotation is accepted when
+ * dh_frame_ortho_error_q(F) <= DH_ROT_TOL_Q and det > 0, else
+ * DH_ERR_NOT_RIGID (the float path's policy; the position is not read).
+ */
+#define DH_ROT_TOL_Q 107374
+/** DH_EULER_POLE_TOL in Q2.30 LSB (2^-22). */
+#define DH_EULER_POLE_TOL_Q 256
+
+/** Quaternion in Q2.30 (1.0 = 0x40000000), scalar part first, as dh_quat_f32. */
+typedef struct {
+    dh_q30 w; /**< scalar part */
+    dh_q30 x; /**< i component */
+    dh_q30 y; /**< j component */
+    dh_q30 z; /**< k component */
+} dh_quat_q;
+
+/**
+ * @brief Euler angles (Q16.16 degrees) of F's rotation: the fixed
+ *        counterpart of dh_mat3_to_euler_f32, with its output ranges and
+ *        gimbal-lock policy: when the measured cosine (Tait-Bryan) or sine
+ *        (proper) of the middle angle is at most DH_EULER_POLE_TOL_Q, the
+ *        third angle (in the order of the letters) is exactly 0 and the
+ *        whole rotation about the locked axis is in the first.
+ *
+ * Error bounds (measured against double, test/test_rot_q.c): with the
+ * middle angle at least 1 deg from a pole, angles within 2e-5 deg of the
+ * exact ones of the rotation; everywhere, the exact rotation of the
+ * returned angles reproduces F within 6e-7 per entry; near a pole the
+ * middle angle is within 1e-5 deg.
+ * @param F rotation part read (Q2.30); position ignored.
+ * @param seq sequence, 0 .. DH_EULER_COUNT-1.
+ * @param ang_deg output (a, b, c), Q16.16 degrees.
+ * @return DH_OK; DH_ERR_ARG (seq out of range); DH_ERR_NOT_RIGID (see
+ *         DH_ROT_TOL_Q). ang_deg untouched on error.
+ */
+dh_status dh_frame_to_euler_q(const dh_frame_q *F, dh_euler_seq seq, dh_q16 ang_deg[3]);
+
+/**
+ * @brief F = rotation of the Euler angles (Q16.16 degrees, any int32) in
+ *        sequence seq (products as dh_euler_to_mat3_f32), position 0.
+ *        Sines and cosines from dh_sincos_q (multiples of 90 deg exact),
+ *        each of the three elementary turns rounded once per entry: entry
+ *        error <= 4 LSB (4e-9).
+ * @return DH_OK; DH_ERR_ARG for seq out of range (F untouched). ang_deg
+ *         must not lie inside F.
+ */
+dh_status dh_euler_to_frame_q(dh_euler_seq seq, const dh_q16 ang_deg[3], dh_frame_q *F);
+
+/**
+ * @brief Unit quaternion (Q2.30) of F's rotation (Shepperd 1978), the fixed
+ *        counterpart of dh_mat3_to_quat_f32: normalised, w >= 0; at w == 0
+ *        the component of the largest diagonal entry is positive.
+ *        Components within 2e-7 of the exact unit quaternion (measured:
+ *        a few LSB).
+ * @return DH_OK; DH_ERR_NOT_RIGID (see DH_ROT_TOL_Q; q untouched).
+ */
+dh_status dh_frame_to_quat_q(const dh_frame_q *F, dh_quat_q *q);
+
+/**
+ * @brief F = rotation of q / |q| (position 0) for any non-zero q: the
+ *        components are brought to a common scale (exact shifts), q is
+ *        normalised in integer arithmetic, then R is formed with one
+ *        rounding per entry: entry error <= 6e-7 (measured: a few LSB).
+ *        INT32_MIN components are accepted (never negated).
+ * @return DH_OK; DH_ERR_ZERO_AXIS when all four components are 0 (F
+ *         untouched).
+ */
+dh_status dh_quat_to_frame_q(const dh_quat_q *q, dh_frame_q *F);
+
+/**
+ * @brief Unit axis (Q2.30) and angle (Q16.16 degrees, [0, 180]) of F's
+ *        rotation, the fixed counterpart of dh_mat3_to_axis_angle_f32 with
+ *        its special cases: at 0 degrees axis = (0, 0, 1); at 180 degrees
+ *        the axis whose component of the largest diagonal entry is
+ *        positive. The angle is one atan2 (accurate at 0 and 180 alike),
+ *        within 2e-5 deg; the axis from the quaternion's vector part.
+ * @return DH_OK; DH_ERR_NOT_RIGID (see DH_ROT_TOL_Q; outputs untouched).
+ */
+dh_status dh_frame_to_axis_angle_q(const dh_frame_q *F, dh_dir3_q *axis, dh_q16 *deg);
+
 #ifdef __cplusplus
 }
 #endif

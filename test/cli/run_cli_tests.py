@@ -12,6 +12,8 @@ Groups:
   robotfile robot-file error table (file:line) and random robots: fk,
             fk --frames, fk --fixed, jacobian vs double references here
   rot       euler (24 sequences) and quat against angles/axes chosen here
+  fixed     jacobian --fixed, euler --fixed, quat --fixed against the same
+            references, next to the float path; robots without a fixed path
   examples  fk on examples/robots/puma560.dh at 0,...,0 and the other
             shipped robots; ik round trips
   help      help/usage behaviour, --version
@@ -830,6 +832,108 @@ def group_rot(seed):
     print('rot: 480 euler max error %.3g deg, 200 quat max error %.3g (seed %d)' % (worst[0], worst[1], seed))
 
 
+def q256(rng, lo, hi):
+    """a multiple of 1/256 (exact in Q16.16 and in float, short in decimal)"""
+    return '%.10g' % (round(rng.uniform(lo, hi) * 256) / 256.0)
+
+
+def group_fixed(seed, tmp):
+    rng = random.Random(seed)
+    # jacobian --fixed on the shipped robots in mm: against the double
+    # reference, next to the float path on the same configurations
+    worst = {}
+    for name in ('puma560_mm.dh', 'ur5_mm.dh', 'puma560.dh'):
+        path = os.path.join(ROOT, 'examples', 'robots', name)
+        rob = read_robot(open(path).read())
+        ef = eq = 0.0
+        for it in range(40):
+            q = [q256(rng, -170, 170) if j['type'] == 'R' else q256(rng, -1, 1) for j in rob['joints']]
+            J = jac_ref(rob, [float(x) for x in q])
+            rc, out, err = run(['jacobian', '--fixed', path, ','.join(q)])
+            check(rc == 0, 'jacobian --fixed %s %r: rc %d %r' % (name, q, rc, err))
+            rcf, outf, errf = run(['jacobian', path, ','.join(q)])
+            check(rcf == 0, 'jacobian %s %r: rc %d %r' % (name, q, rcf, errf))
+            if rc != 0 or rcf != 0:
+                continue
+            Gq, Gf = nums(out), nums(outf)
+            check(len(Gq) == 6 and all(len(r) == len(q) for r in Gq), 'jacobian --fixed shape %r' % out)
+            eq = max(eq, max(abs(Gq[r][c] - J[r][c]) for r in range(6) for c in range(len(q))))
+            ef = max(ef, max(abs(Gf[r][c] - J[r][c]) for r in range(6) for c in range(len(q))))
+        worst[name] = (eq, ef)
+        if name.endswith('_mm.dh'):
+            # the fixed Jacobian is at least as accurate as the float one on
+            # a robot in mm (the library's test asserts the same per entry)
+            check(eq <= ef, 'jacobian --fixed %s: error %.3g above the float path %.3g' % (name, eq, ef))
+        else:
+            # metres in Q16.16: lengths to 1.5e-5 m, entries to 1.5e-5 m per rad
+            check(eq <= 1e-4, 'jacobian --fixed %s: error %.3g' % (name, eq))
+    # no fixed path: a length beyond Q16.16
+    bad = os.path.join(tmp, 'nofixed.dh')
+    with open(bad, 'w') as f:
+        f.write('convention standard\njoint R a=40000\n')
+    rc, out, err = run(['jacobian', '--fixed', bad, '0'])
+    check(rc == 2 and out == '' and 'does not fit the fixed-point length format' in err and
+          err.startswith('dhmath: error:'), 'jacobian --fixed without a fixed path: rc %d out %r err %r' % (rc, out, err))
+    rc, out, err = run(['jacobian', bad, '0'])
+    check(rc == 0, 'jacobian (float) on the same robot: rc %d %r' % (rc, err))
+    # a chain whose lever arm leaves the fixed length format: overflow, exit 2
+    far = os.path.join(tmp, 'far.dh')
+    with open(far, 'w') as f:
+        f.write('convention standard\njoint R a=30000\njoint R a=30000\n')
+    rc, out, err = run(['jacobian', '--fixed', far, '0,0'])
+    check(rc == 2 and out == '' and 'overflow' in err, 'jacobian --fixed overflow: rc %d out %r err %r' % (rc, out, err))
+    # euler --fixed: 24 sequences, angles exact in Q16.16
+    we = wq = 0.0
+    for it in range(240):
+        axes = rng.choice(['XYZ', 'XZY', 'YXZ', 'YZX', 'ZXY', 'ZYX', 'XYX', 'XZX', 'YXY', 'YZY', 'ZXZ', 'ZYZ'])
+        proper = axes[0] == axes[2]
+        seq = axes if rng.random() < 0.5 else axes.lower()
+        ang = [q256(rng, -179, 179), q256(rng, 2, 178) if proper else q256(rng, -88, 88), q256(rng, -179, 179)]
+        terms = ['rot%s(%s)' % (ax.lower(), v) for ax, v in zip(axes, ang)]
+        e = ' '.join(terms if seq.isupper() else terms[::-1])
+        rc, out, err = run(['euler', '--fixed', seq, e])
+        check(rc == 0, 'euler --fixed %s %r: rc %d %r' % (seq, e, rc, err))
+        if rc == 0:
+            got = nums(out)[0]
+            d = max(abs((g - float(w) + 180.0) % 360.0 - 180.0) for g, w in zip(got, ang))
+            we = max(we, d)
+            # the library's bound away from the poles
+            check(d <= 2e-5, 'euler --fixed %s %r: %r, error %.3g deg' % (seq, e, got, d))
+    for it in range(100):
+        sk = ['%.6f' % rng.uniform(-1, 1) for _ in range(3)]
+        kf = [float(x) for x in sk]
+        n = math.sqrt(sum(x * x for x in kf))
+        if n < 0.1:
+            continue
+        th = q256(rng, 0.5, 179.5)
+        rc, out, err = run(['quat', '--fixed', 'rot(%s,%s,%s,%s)' % (sk[0], sk[1], sk[2], th)])
+        check(rc == 0, 'quat --fixed rc %d %r' % (rc, err))
+        if rc == 0:
+            t = math.radians(float(th)) / 2
+            want = [math.cos(t)] + [math.sin(t) * x / n for x in kf]
+            d = max(abs(g - w) for g, w in zip(nums(out)[0], want))
+            wq = max(wq, d)
+            # the float path's bound for the quaternion (dh_rot.h: 2e-7)
+            check(d <= 2e-7, 'quat --fixed %r: %r vs %r (%.3g)' % (sk, out, want, d))
+    # the same output format as the float path
+    # (at the pole: the third angle 0, the float path's policy)
+    rc, out, err = run(['euler', '--fixed', 'XYZ', 'roty(90) rotz(90)'])
+    rcf, outf, errf = run(['euler', 'XYZ', 'roty(90) rotz(90)'])
+    check(rc == 0 and out == '90 90 0\n' and out == outf, 'euler --fixed XYZ of eq. 1.41: %r %r (float %r)' % (out, err, outf))
+    rc, out, err = run(['quat', '--fixed', 'ident'])
+    check(rc == 0 and out == '1 0 0 0\n', 'quat --fixed ident: %r %r' % (out, err))
+    # EXPRs without a fixed rotation, bad sequences: exit 2, one message
+    for args, pat in ((['euler', '--fixed', 'XYZ', 'scale(1,2,3)'], r'not rigid'),
+                      (['quat', '--fixed', 'persp(z,2)'], r'not rigid'),
+                      (['euler', '--fixed', 'XXY', 'ident'], r'unknown Euler sequence'),
+                      (['quat', '--fixed', '--fixed', 'ident'], r'given more than once')):
+        rc, out, err = run(args)
+        check(rc == 2 and out == '' and re.search(pat, err) and err.startswith('dhmath: '),
+              '%r: rc %d out %r err %r' % (args, rc, out, err))
+    print('fixed: jacobian --fixed max error (fixed, float) %s; euler --fixed %.3g deg, quat --fixed %.3g (seed %d)' %
+          (', '.join('%s %.3g %.3g' % (k, v[0], v[1]) for k, v in worst.items()), we, wq, seed))
+
+
 def group_help():
     # --version: the library version from include/dhmath/dh_config.h
     hdr = open(os.path.join(ROOT, 'include', 'dhmath', 'dh_config.h')).read()
@@ -1143,6 +1247,8 @@ def main():
             group_examples()
         elif group == 'rot':
             group_rot(seed)
+        elif group == 'fixed':
+            group_fixed(seed, tmp)
         elif group == 'help':
             group_help()
         elif group == 'numbers':

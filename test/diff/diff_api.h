@@ -32,6 +32,7 @@ typedef struct {
     dh_quat_f32 qt[2];
     dh_vec3_q vq;
     dh_ik_params ikp;
+    dh_ik_params_q ikpq;
     char str[8];
     const dh_robot *rob;     /* read-only robot (FK, Jacobian, IK, setters copy it) */
 } diff_in;
@@ -54,13 +55,23 @@ typedef struct {
     dh_frame_q F;
     dh_vec3_f32 pts[4];
     dh_ik_params ikp;
+    dh_ik_params_q ikpq;
     char str[32];            /* string results (the pointers differ between copies) */
     /* DIFF_OUT_SMALL */
     float q[DH_MAX_JOINTS];
     dh_ik_result ikres;
+    dh_ik_result_q ikresq;
+    int32_t qi[DH_MAX_JOINTS];
     float J[6 * DH_MAX_JOINTS];
     dh_mat4_f32 Mf[DH_MAX_JOINTS];
     dh_frame_q Ff[DH_MAX_JOINTS];
+    int32_t Ji[6 * DH_MAX_JOINTS]; /* fixed Jacobian (integer words: after the float J, Mf) */
+    dh_quat_q qq;            /* fixed quaternion */
+    dh_dir3_q dq;            /* fixed axis / rotation vector */
+    dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+    dh_ikc_sol_q solq[DH_IKC_MAX_SOL];
+    dh_ikc_model_f32 mf;
+    dh_ikc_model_q mq;
     /* DIFF_OUT_FRAMES */
     dh_robot rob;
 } diff_out;
@@ -73,6 +84,7 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
 
 /* IK workspace (caller-owned, contents undefined after the call) */
 #define DIFF_IK_WORK DH_IK_WORK_FLOATS(DH_MAX_JOINTS)
+#define DIFF_IKQ_WORK DH_IK_WORK_Q(DH_MAX_JOINTS)
 
 /*
  * The table: X(name, generator, count, compared bytes, comparison).
@@ -182,9 +194,26 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_jacobian_f32, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_jacobian_tool_f32, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_rot_error_f32, g_rot, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_jacobian_q, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_jacobian_tool_q, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_rot_error_q, g_frames, 1000000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_frame_to_euler_q, g_frames, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_euler_to_frame_q, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_frame_to_quat_q, g_frames, 1000000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_quat_to_frame_q, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_frame_to_axis_angle_q, g_frames, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_pose_error_f32, g_check, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_ik_params_default, g_robot, 1000000, DIFF_OUT_SMALL, C_BITS) \
-    X(dh_ik_f32, g_ik, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS)
+    X(dh_ik_f32, g_ik, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_ikc_analyse_f32, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_ikc_analyse_q, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_ikc_why_str, g_status, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_ikc_f32, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_ikc_q, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_ikc_nearest_f32, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_ikc_nearest_q, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_ik_params_default_q, g_robot, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_ik_q, g_ikq, DIFF_IKQ_COUNT, DIFF_OUT_FRAMES, C_BITS)
 
 /* enum of the table rows */
 #define DIFF_ENUM(name, gen, count, len, cmp) E_##name,

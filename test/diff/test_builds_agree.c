@@ -33,7 +33,8 @@
  * plane transform and counted: the default build's rigid closed form for a
  * T that is rigid only within DH_MAT4_RIGID_TOL (see plane_rigid_err).
  *
- * Counts: 10^6 inputs per function (dh_ik_f32 included, DIFF_IK_COUNT).
+ * Counts: 10^6 inputs per function (dh_ik_f32 included, DIFF_IK_COUNT),
+ * 10^5 for dh_ik_q (DIFF_IKQ_COUNT).
  * DHT_SEED selects the seed (printed on failure); DHT_DIFF_DIV divides
  * every count (quick local runs); DHT_DIFF_ONLY=<substring> runs only the
  * functions whose name contains it.
@@ -51,6 +52,9 @@
  * 12 us per input for the two builds on an x86-64 host, against 0.3 us for
  * FK: the largest share of the test's time). */
 #define DIFF_IK_COUNT 1000000
+/* closed-form IK: 3 * 10^5 inputs per function (a few us per solve) */
+#define DIFF_IKC_COUNT 300000
+#define DIFF_IKQ_COUNT 100000
 
 #include "diff_api.h"
 
@@ -402,6 +406,78 @@ static void pool_make(void)
     for (i = 0; i < POOL_N; i++) robot_gen(&pool[i]);
 }
 
+/* Robots with a closed form (dh_ikc.h): the four families with random
+ * lengths, twist signs, offsets, limits, conventions and base/tool frames,
+ * plus every 8th one a pool robot (no closed form, mostly). Built at
+ * start-up like the pool. */
+#define IKC_POOL_N 256
+static dh_robot ikc_pool[IKC_POOL_N];
+
+static float sgn90(void) { return rn(2u) ? 90.0f : -90.0f; }
+static float par0(void) { return rn(2u) ? 0.0f : 180.0f; }
+
+static void ikc_robot_gen(dh_robot *r)
+{
+    /* canonical standard-DH rows: type, a, d, alpha */
+    float a[6] = { 0 }, d[6] = { 0 }, al[6] = { 0 }, th[6] = { 0 };
+    dh_joint_type t[6] = { DH_JOINT_REVOLUTE, DH_JOINT_REVOLUTE, DH_JOINT_REVOLUTE, DH_JOINT_REVOLUTE,
+                           DH_JOINT_REVOLUTE, DH_JOINT_REVOLUTE };
+    double s = rn(2u) ? 1.0 : 1000.0;
+    uint32_t fam = rn(8u), n = 6u, j;
+    dh_convention conv = (dh_convention)rn(2u);
+    if (fam == 7u) { *r = pool[rn(POOL_N)]; return; }
+    switch (fam & 3u) {
+    case 0: /* spherical wrist on R-R-R (Puma, KR5, IRB140 shapes) */
+        al[0] = sgn90(); al[1] = par0(); al[2] = sgn90(); al[3] = sgn90(); al[4] = sgn90();
+        d[0] = (float)rd(0.0, 0.8 * s); a[0] = rn(2u) ? 0.0f : (float)rd(-0.3 * s, 0.3 * s);
+        a[1] = (float)rd(0.2 * s, 0.7 * s); d[1] = rn(2u) ? 0.0f : (float)rd(-0.2 * s, 0.2 * s);
+        a[2] = rn(2u) ? 0.0f : (float)rd(-0.2 * s, 0.2 * s); d[2] = rn(2u) ? 0.0f : (float)rd(-0.2 * s, 0.2 * s);
+        d[3] = (float)rd(0.1 * s, 0.7 * s);
+        break;
+    case 1: /* spherical wrist on R-R-P (Stanford shape) */
+        al[0] = sgn90(); al[1] = sgn90(); al[3] = sgn90(); al[4] = sgn90();
+        t[2] = DH_JOINT_PRISMATIC;
+        d[0] = (float)rd(0.0, 0.5 * s); d[1] = (float)rd(-0.2 * s, 0.2 * s); d[2] = (float)rd(0.0, 0.3 * s);
+        break;
+    case 2: /* axes 2, 3, 4 parallel (UR shape) */
+        al[0] = sgn90(); al[1] = par0(); al[2] = par0(); al[3] = sgn90(); al[4] = sgn90();
+        d[0] = (float)rd(0.05 * s, 0.2 * s); a[1] = (float)rd(-0.6 * s, -0.2 * s); a[2] = (float)rd(-0.6 * s, -0.2 * s);
+        d[3] = (float)rd(0.05 * s, 0.2 * s); d[4] = (float)rd(0.05 * s, 0.2 * s);
+        break;
+    default: /* SCARA R-R-P-R */
+        n = 4u;
+        t[2] = DH_JOINT_PRISMATIC;
+        al[1] = par0(); a[0] = (float)rd(0.2 * s, 0.4 * s); a[1] = (float)rd(0.2 * s, 0.4 * s);
+        d[0] = (float)rd(0.0, 0.4 * s);
+        break;
+    }
+    d[n - 1u] = rn(2u) ? 0.0f : (float)rd(0.0, 0.2 * s);
+    if (rn(4u) == 0u) { a[n - 1u] = (float)rd(-0.1 * s, 0.1 * s); al[n - 1u] = joint_angle(); }
+    for (j = 0; j < n; j++) th[j] = rn(2u) ? 0.0f : joint_angle();
+    (void)dh_robot_init(r, conv);
+    for (j = 0; j < n; j++) {
+        /* modified DH: row j holds the a/alpha of canonical row j-1 (row 0: a random pre-twist) */
+        float aj = a[j], alj = al[j];
+        if (conv == DH_CONV_MODIFIED) {
+            aj = (j == 0u) ? (rn(2u) ? 0.0f : (float)rd(-0.1 * s, 0.1 * s)) : a[j - 1u];
+            alj = (j == 0u) ? (rn(2u) ? 0.0f : joint_angle()) : al[j - 1u];
+        }
+        (void)dh_robot_add_joint_f32(r, t[j], th[j], d[j], aj, alj);
+        if (rn(2u)) {
+            if (t[j] == DH_JOINT_REVOLUTE) (void)dh_robot_set_limits_f32(r, j, (float)rd(-270.0, -30.0), (float)rd(30.0, 270.0));
+            else (void)dh_robot_set_limits_f32(r, j, (float)rd(-0.2 * s, 0.1 * s), (float)rd(0.2 * s, 1.0 * s));
+        }
+    }
+    robot_base_tool(r, 0, s);
+    robot_base_tool(r, 1, s);
+}
+
+static void ikc_pool_make(void)
+{
+    int i;
+    for (i = 0; i < IKC_POOL_N; i++) ikc_robot_gen(&ikc_pool[i]);
+}
+
 static float q_f32(const dh_robot *r, uint32_t j)
 {
     double s = 1.0;
@@ -651,6 +727,63 @@ static void g_ik(diff_in *in)
     in->k[0] = (int32_t)rn(DIFF_IK_WORK + 1u);
     in->sel = ru() & (rn(16u) ? 1u : 3u);
 }
+static void g_ikq(diff_in *in)
+{
+    const dh_robot *r;
+    uint32_t j;
+    dh_frame_q T;
+    do {
+        r = &pool[rn(POOL_N)];
+    } while ((r->flags & DH_ROBOT_HAS_Q) == 0u && rn(8u) != 0u);
+    in->rob = r;
+    for (j = 0; j < DH_MAX_JOINTS; j++) in->qi[j] = q_q(r, j);
+    if (dh_fk_q(r, in->qi, &T) != DH_OK || rn(8u) == 0u) frame_gen(&T);
+    in->F[0] = T;
+    for (j = 0; j < DH_MAX_JOINTS; j++)
+        if (rn(2u)) in->qi[j] = (int32_t)((uint32_t)in->qi[j] + (uint32_t)((int32_t)rn(40u << 16) - (20 << 16)));
+    dh_ik_params_default_q(r, &in->ikpq);
+    in->ikpq.max_iter = 1u + rn(32u);
+    in->ikpq.restarts = rn(4u);
+    if (rn(4u) == 0u) in->ikpq.mask = rn(2u) ? DH_IK_POSITION : (rn(8u) ? rn(64u) : ru());
+    if (rn(4u) == 0u) { in->ikpq.tol_pos = (int32_t)ru() >> rn(31u); in->ikpq.tol_rot = (int32_t)ru() >> rn(31u); }
+    if (rn(8u) == 0u) in->ikpq.w_rot = (int32_t)ru();
+    if (rn(16u) == 0u) in->ikpq.max_iter = 0u;
+    in->k[0] = (int32_t)rn(DIFF_IKQ_WORK + 1u);
+    in->sel = ru() & (rn(16u) ? 1u : 3u);
+}
+
+/* closed-form IK: a target from FK of a random configuration (a singular
+ * wrist at times), else a random matrix; q_ref near it or arbitrary */
+static void g_ikc(diff_in *in)
+{
+    const dh_robot *r = &ikc_pool[rn(IKC_POOL_N)];
+    uint32_t j;
+    in->rob = r;
+    for (j = 0; j < DH_MAX_JOINTS; j++) {
+        in->q[j] = q_f32(r, j);
+        in->qi[j] = q_q(r, j);
+        if (rn(2u) && j < DH_MAX_JOINTS && r->joint[j].type == DH_JOINT_REVOLUTE) {
+            in->q[j] = (float)rd(-180.0, 180.0);
+            in->qi[j] = (int32_t)(in->q[j] * 65536.0f);
+        }
+    }
+    if (rn(8u) == 0u) { in->q[4] = 0.0f; in->qi[4] = 0; }
+    if (rn(8u) == 0u || dh_fk_f32(r, in->q, &in->M[0]) != DH_OK) mat4_gen(&in->M[0]);
+    if (rn(8u) == 0u || dh_fk_q(r, in->qi, &in->F[0]) != DH_OK) frame_gen(&in->F[0]);
+    for (j = 0; j < DH_MAX_JOINTS; j++) {
+        if (rn(2u)) in->q[j] += (float)rd(-30.0, 30.0);
+        else if (rn(8u) == 0u) in->q[j] = q_f32(r, j);
+        if (rn(2u)) in->qi[j] = (int32_t)((uint32_t)in->qi[j] + (uint32_t)((int32_t)rn(60u << 16) - (30 << 16)));
+        else if (rn(8u) == 0u) in->qi[j] = q_q(r, j);
+    }
+    if (rn(4u)) for (j = 0; j < DH_MAX_JOINTS; j++) if (!isfinite(in->q[j])) in->q[j] = 0.0f;
+    in->k[1] = rn(8u) ? (int32_t)(rn(2u) * DH_IKC_KEEP_OUT_OF_LIMITS) : (int32_t)ru();
+    in->k[2] = (int32_t)rn(7u) - 1;
+    in->k[3] = (int32_t)rn(9u);
+    in->k[4] = (int32_t)rn(DH_IKC_MAX_SOL + 1u);
+    in->k[5] = (int32_t)rn(DH_IKC_JOINTS + 2u);
+    in->sel = ru() & (rn(8u) ? 13u : 15u);
+}
 
 /* ---- comparison ------------------------------------------------------------- */
 
@@ -828,6 +961,7 @@ static void mark_floats(size_t off, size_t bytes)
 static void float_words_init(void)
 {
     diff_out o;
+    size_t k;
     memset(float_word, 0, sizeof float_word);
     mark_floats(offsetof(diff_out, f), sizeof o.f);
     mark_floats(offsetof(diff_out, v), sizeof o.v + sizeof o.v4 + sizeof o.pl + sizeof o.qt);
@@ -836,6 +970,10 @@ static void float_words_init(void)
     mark_floats(offsetof(diff_out, q), sizeof o.q);
     mark_floats(offsetof(diff_out, ikres) + offsetof(dh_ik_result, err_pos), 2u * sizeof(float));
     mark_floats(offsetof(diff_out, J), sizeof o.J + sizeof o.Mf);
+    for (k = 0; k < DH_IKC_MAX_SOL; k++) mark_floats(offsetof(diff_out, sol) + k * sizeof o.sol[0], sizeof o.sol[0].q);
+    mark_floats(offsetof(diff_out, mf) + offsetof(dh_ikc_model_f32, a),
+                offsetof(dh_ikc_model_f32, k) + sizeof o.mf.k - offsetof(dh_ikc_model_f32, a));
+    mark_floats(offsetof(diff_out, mf) + offsetof(dh_ikc_model_f32, pre_inv), sizeof o.mf.pre_inv + sizeof o.mf.post_inv);
 }
 
 static int is_nan_bits(uint32_t u) { return (u & 0x7FFFFFFFu) > 0x7F800000u; }
@@ -924,6 +1062,7 @@ static void run(int fn, const char *name, diff_gen gen, unsigned long count, siz
     memset(&t, 0, sizeof t);
     float_words_init();
     pool_make();
+    ikc_pool_make();
     for (i = 0; i < count; i++) {
         memset(&in, 0, sizeof in);
         gen(&in);
