@@ -47,10 +47,11 @@ static const char k_usage[] =
     "  ik [--fixed] [--q0 q1,...] [--position] [--tol-pos X] [--tol-rot RAD] [--w-rot X]\n"
     "     [--max-iter N] ROBOT EXPR    joint values reaching EXPR; status on stderr;\n"
     "                                  exit 0 converged, 3 not converged\n"
-    "  ik --all [--q0 q1,...] ROBOT EXPR\n"
+    "  ik --all [--fixed] [--q0 q1,...] ROBOT EXPR\n"
     "                                  every closed-form solution within the limits,\n"
     "                                  one per line (--q0: reference for the 360-degree\n"
-    "                                  shifts and singular splits); exit 0 at least one,\n"
+    "                                  shifts and singular splits; --fixed: the robot's\n"
+    "                                  fixed-point path); exit 0 at least one,\n"
     "                                  3 none, 2 no closed form for the robot\n"
     "  euler [--fixed] SEQ EXPR        Euler angles in degrees of EXPR's rotation; SEQ as\n"
     "                                  scipy Rotation: XYZ intrinsic (Rot(x,a) Rot(y,b)\n"
@@ -663,9 +664,76 @@ static int ik_not_rigid(const char *path, const dh_robot *r, const dh_robotfile 
     return error_msg("ik: the end frame of the robot is not rigid (its rotation part is not a rotation)", NULL);
 }
 
-/* ik --all: every closed-form solution (dh_ikc_f32), one line each. The
- * float solver only: a fixed-point variant (--fixed, dh_ikc_q) would take
- * the robot's fixed path here. */
+/* ik --all --fixed: every closed-form solution on the robot's fixed path
+ * (dh_ikc_q: the target EXPR converted to a dh_frame_q, Q16.16 degrees and
+ * dh_qpos out, printed in degrees and the robot's unit) */
+static int ik_all_q(const opts *o, const dh_robot *r, const dh_mat4_f32 *target, const char *path)
+{
+    dh_ikc_model_q m;
+    dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+    dh_frame_q F;
+    double qd[DH_IKC_JOINTS];
+    int32_t qref[DH_IKC_JOINTS];
+    const double pscale = (double)((int32_t)1 << DH_QPOS_FRAC);
+    uint32_t n_sol = 0, n_all = 0, s, k;
+    dh_status st;
+    int rc;
+    st = dh_ikc_analyse_q(r, &m);
+    if (st != DH_OK) {
+        fprintf(stderr, "dhmath: error: ik --all --fixed: %s has no fixed-point closed-form inverse kinematics: %s\n",
+                path, dh_ikc_why_str(m.why));
+        return EXIT_ERR;
+    }
+    for (k = 0; k < DH_IKC_JOINTS; k++) qd[k] = 0.0;
+    if (o->q0 && (rc = parse_list(o->q0, r->n, qd, "--q0")) != 0) return rc;
+    for (k = 0; k < DH_IKC_JOINTS; k++) {
+        const double v = floor(qd[k] * ((k < r->n && r->joint[k].type == DH_JOINT_PRISMATIC) ? pscale : 65536.0) + 0.5);
+        if (v > 2147483647.0 || v < -2147483648.0) {
+            fprintf(stderr, "dhmath: error: overflow: --q0 value %u (%.9g) does not fit %s\n", k + 1, qd[k],
+                    r->joint[k].type == DH_JOINT_REVOLUTE ? "degrees Q16.16" : "the fixed-point length format");
+            return EXIT_ERR;
+        }
+        qref[k] = (int32_t)v;
+    }
+    st = dh_frame_from_mat4_q(target, &F);
+    if (st == DH_ERR_OVERFLOW) {
+        fprintf(stderr, "dhmath: error: overflow: ik --all --fixed: the target EXPR does not fit the fixed-point "
+                "formats (positions |x| < %ld length units, rotation entries in Q2.30)\n",
+                (long)1 << (31 - DH_QPOS_FRAC));
+        return EXIT_ERR;
+    }
+    if (st != DH_OK) return error_msg("ik --all --fixed: the target EXPR", dh_status_str(st));
+    st = dh_ikc_q(&m, &F, qref, 0u, sol, &n_sol);
+    if (st == DH_ERR_NOT_RIGID)
+        return error_msg("ik --all --fixed: the rotation part of the target EXPR is not a rotation within 2^-10 "
+                         "(orthonormal with det +1)", NULL);
+    if (st == DH_ERR_OVERFLOW) {
+        fprintf(stderr, "dhmath: error: overflow: ik --all --fixed: the target is more than 2^30 LSB (%ld length "
+                "units) from the base; ik --all without --fixed solves it in float\n", (long)1 << (30 - DH_QPOS_FRAC));
+        return EXIT_ERR;
+    }
+    if (st == DH_ERR_UNREACHABLE) {
+        fprintf(stderr, "ik --all --fixed: no solution: the target is out of reach\n");
+        return EXIT_NOCONV;
+    }
+    if (st == DH_ERR_LIMIT) {
+        (void)dh_ikc_q(&m, &F, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_all);
+        fprintf(stderr, "ik --all --fixed: no solution within the joint limits (%u outside)\n", (unsigned)n_all);
+        return EXIT_NOCONV;
+    }
+    if (st != DH_OK) return error_msg("ik --all --fixed", dh_status_str(st));
+    for (s = 0; s < n_sol; s++)
+        for (k = 0; k < r->n; k++)
+            put_num((double)sol[s].q[k] / (r->joint[k].type == DH_JOINT_PRISMATIC ? pscale : 65536.0), k + 1 == r->n);
+    rc = finish();
+    (void)dh_ikc_q(&m, &F, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_all);
+    fprintf(stderr, "ik --all --fixed: %u closed-form solution%s within the limits (%u outside)\n", (unsigned)n_sol,
+            n_sol == 1u ? "" : "s", (unsigned)(n_all - n_sol));
+    return rc;
+}
+
+/* ik --all: every closed-form solution (dh_ikc_f32, with --fixed dh_ikc_q),
+ * one line each */
 static int ik_all(const opts *o, const dh_robot *r, const dh_robotfile *rf, const dh_mat4_f32 *target)
 {
     dh_ikc_model_f32 m;
@@ -678,6 +746,7 @@ static int ik_all(const opts *o, const dh_robot *r, const dh_robotfile *rf, cons
     int rc;
     if (o->position || o->tol_pos || o->tol_rot || o->w_rot || o->max_iter)
         return usage_error("ik --all takes only --q0 (the closed form has no tolerances, weights or iterations)", NULL);
+    if (o->fixed) return ik_all_q(o, r, target, path);
     st = dh_ikc_analyse_f32(r, &m);
     if (st != DH_OK) {
         fprintf(stderr, "dhmath: error: ik --all: %s has no closed-form inverse kinematics: %s\n", path,
@@ -797,10 +866,9 @@ static int cmd_ik(int argc, char **argv)
     int rc = parse_opts(argc, argv, &o, "q0 position tol-pos tol-rot w-rot max-iter all fixed");
     if (rc) return rc;
     if (o.npos != 2) return usage_error("ik takes ROBOTFILE EXPR [--q0 q1,...] [--position] [--tol-pos X] "
-                                        "[--tol-rot X] [--w-rot X] [--max-iter N], or --all [--q0 q1,...]", NULL);
+                                        "[--tol-rot X] [--w-rot X] [--max-iter N] [--fixed], or --all [--fixed] [--q0 q1,...]", NULL);
     if ((rc = load_robot(o.pos[0], o.fixed, &r, &rf)) != 0) return rc;
     if ((rc = eval_expr(o.pos[1], &target)) != 0) return rc;
-    if (o.all && o.fixed) return usage_error("ik --all does not take --fixed", NULL);
     if (o.all) return ik_all(&o, &r, &rf, &target);
     if (o.fixed) return ik_fixed(&o, &r, &target);
     n = r.n;

@@ -30,6 +30,7 @@
 #define DHMATH_SRC_DH_IKC_IMPL_H
 
 #include "dhmath/dh_ikc.h"
+#include "dh_internal.h"
 
 /* ---- float (dh_ikc.c: wrist families; dh_ikc_ur.c: UR and SCARA) ---- */
 /* out = T06 (v, w): w = 1 a point, 0 a direction; out may alias v. */
@@ -67,5 +68,23 @@ int dh_ikc_detect_scara_q_(dh_ikc_model_q *m);
 dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count);
 dh_status dh_ikc_par234_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count);
 dh_status dh_ikc_scara_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count);
+
+/* Shared fixed helpers (defined in dh_ikc_q.c). */
+#define DH_IKC_Q16_180 ((int32_t)11796480)
+#define DH_IKC_Q16_360 ((int32_t)23592960)
+/* atan2 in Q16.16 degrees of two int64 of a common scale (|.| < 2^63): both
+ * rounded by one shift below 2^30 + 1, then dh_atan2_q; (0, 0) gives 0. */
+int32_t dh_ikc_atan2_q_(int64_t y, int64_t x);
+/* acc + c v, |c| <= 2^30; factors 0 and +-2^30 cost no multiplication. */
+int64_t dh_ikc_mla_q_(int64_t acc, int32_t c, int32_t v);
+/* The right shift that brings a non-negative int64 below 2^31. */
+unsigned dh_ikc_fit31_q_(int64_t v);
+/* x in (-540, 540] deg (Q16.16) -> (-180, 180]. */
+DH_INLINE int32_t dh_ikc_wrap180_q_(int32_t x)
+{
+    if (x > DH_IKC_Q16_180) return x - DH_IKC_Q16_360;
+    if (x <= -DH_IKC_Q16_180) return x + DH_IKC_Q16_360;
+    return x;
+}
 
 #endif /* DHMATH_SRC_DH_IKC_IMPL_H */

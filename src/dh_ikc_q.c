@@ -78,8 +78,8 @@
 #include "dh_ikc_impl.h"
 #include "dh_internal.h"
 
-#define Q16_180 ((int32_t)11796480)
-#define Q16_360 ((int32_t)23592960)
+#define Q16_180 DH_IKC_Q16_180
+#define Q16_360 DH_IKC_Q16_360
 /* |cos alpha| or |sin alpha| this small counts as zero (6e-8) */
 #define IKQ_TOL_ALPHA 64
 /* rigidity of the target, base and tool: |R^T R - I| <= 2^-10, entries <= 1.1 */
@@ -119,21 +119,13 @@ static const dh_frame_q ikq_identity = {
 
 /* ---- small helpers ------------------------------------------------------ */
 
-/* x in (-540, 540] deg -> (-180, 180] */
-DH_INLINE int32_t ikq_wrap180(int32_t x)
-{
-    if (x > Q16_180) return x - Q16_360;
-    if (x <= -Q16_180) return x + Q16_360;
-    return x;
-}
-
 /* any int32 angle -> (-180, 180] (32-bit remainder, no negation of INT32_MIN) */
 static int32_t ikq_reduce(int32_t x)
 {
     const uint32_t a = dh_q_abs_u32(x) % (uint32_t)Q16_360;
     int32_t r = (int32_t)a;
     if (x < 0) r = -r;
-    return ikq_wrap180(r);
+    return dh_ikc_wrap180_q_(r);
 }
 
 DH_INLINE int32_t ikq_sign(int32_t x)
@@ -175,7 +167,7 @@ static DH_NOINLINE int32_t ikq_div_rnd(int64_t n, uint64_t d)
 
 /* atan2 of two int64 of a common scale (|.| < 2^63): both rounded by the
  * same shift below 2^30 + 1, then dh_atan2_q; (0, 0) gives 0 */
-static DH_NOINLINE int32_t ikq_atan2(int64_t y, int64_t x)
+DH_NOINLINE int32_t dh_ikc_atan2_q_(int64_t y, int64_t x)
 {
     uint32_t hi = (uint32_t)((ikq_abs64(y) | ikq_abs64(x)) >> 30);
     unsigned s = 0u;
@@ -195,7 +187,7 @@ static DH_NOINLINE int32_t ikq_atan2(int64_t y, int64_t x)
 /* acc + c v, |c| <= 2^30: a factor 0 or +-1.0 (exact twists, sines and
  * cosines of multiples of 90 degrees, zero tool offsets) costs no
  * multiplication (the products of Cortex-M0 are 16-bit partials) */
-static DH_NOINLINE int64_t ikq_mla(int64_t acc, int32_t c, int32_t v)
+DH_NOINLINE int64_t dh_ikc_mla_q_(int64_t acc, int32_t c, int32_t v)
 {
     if (c == 0) return acc;
     if (c == DH_Q_ONE30) return acc + (int64_t)v * DH_Q_ONE30;
@@ -207,8 +199,8 @@ static DH_NOINLINE int64_t ikq_mla(int64_t acc, int32_t c, int32_t v)
 static DH_NOINLINE void ikq_rot2(int32_t *x, int32_t *y, int32_t c, int32_t s)
 {
     const int32_t a = *x, b = *y;
-    *x = ikq_r30(ikq_mla(ikq_mla(0, c, a), s, b));
-    *y = ikq_r30(ikq_mla(ikq_mla(0, c, b), -s, a));
+    *x = ikq_r30(dh_ikc_mla_q_(dh_ikc_mla_q_(0, c, a), s, b));
+    *y = ikq_r30(dh_ikc_mla_q_(dh_ikc_mla_q_(0, c, b), -s, a));
 }
 
 /* 1 when the columns c0, c1, c2 (Q2.30) are within 2^-10 of orthonormal
@@ -447,7 +439,7 @@ int dh_ikc_detect_wrist_q_(dh_ikc_model_q *m)
         }
         k[K_SIG] = sig;
         k[K_E] = e;
-        k[K_PHI] = ikq_atan2(e, m->a[2]);
+        k[K_PHI] = dh_ikc_atan2_q_(e, m->a[2]);
         /* C = Rx(alpha2 + alpha3): sin, cos = sigma s_alpha3, sigma c_alpha3 */
         s3 = sig > 0 ? m->sa[2] : -m->sa[2];
         c3 = sig > 0 ? m->ca[2] : -m->ca[2];
@@ -506,7 +498,7 @@ static DH_NOINLINE void ikq_ct(const int32_t *C, int32_t *v)
 {
     const int32_t x = v[0], y = v[1], z = v[2];
     unsigned i;
-    for (i = 0; i < 3u; i++) v[i] = ikq_r30(ikq_mla(ikq_mla(ikq_mla(0, C[i], x), C[3u + i], y), C[6u + i], z));
+    for (i = 0; i < 3u; i++) v[i] = ikq_r30(dh_ikc_mla_q_(dh_ikc_mla_q_(dh_ikc_mla_q_(0, C[i], x), C[3u + i], y), C[6u + i], z));
 }
 
 /* wrist centre o, vy and u into sol[4].q (o, vy, u, shoulder singular);
@@ -521,7 +513,7 @@ static DH_NOINLINE int ikq_centre(const dh_ikc_model_q *m, dh_ikc_sol_q *sol)
     unsigned i;
 
     for (i = 0; i < 3u; i++) {
-        v = ikq_mla(ikq_mla(ikq_mla(0, k[K_W], c0[i]), k[K_W + 1], c1[i]), k[K_W + 2], c2[i]);
+        v = dh_ikc_mla_q_(dh_ikc_mla_q_(dh_ikc_mla_q_(0, k[K_W], c0[i]), k[K_W + 1], c1[i]), k[K_W + 2], c2[i]);
         v = (int64_t)p[i] - ((v + DH_Q_HALF30) >> 30);
         if (ikq_abs64(v) > (uint64_t)IKQ_POS_LIM) return 1;
         o[i] = (int32_t)v;
@@ -557,7 +549,7 @@ static DH_NOINLINE int ikq_shoulder(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, 
         u = ikq_r30(dh_q_mla64(dh_q_mul64(cs, o[0]), sn, o[1]));
     } else {
         const int32_t th = k[K_TAU1] > 0 ? k[K_H] : -k[K_H];
-        t1 = ikq_atan2(dh_q_mla64(dh_q_mul64(th, o[0]), u, o[1]), dh_q_mul64(u, o[0]) - dh_q_mul64(th, o[1]));
+        t1 = dh_ikc_atan2_q_(dh_q_mla64(dh_q_mul64(th, o[0]), u, o[1]), dh_q_mul64(u, o[0]) - dh_q_mul64(th, o[1]));
         dh_sincos_q(t1, &sn, &cs);
     }
     v = (int64_t)u - m->a[0];
@@ -579,7 +571,7 @@ static DH_NOINLINE int ikq_shoulder(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, 
 }
 
 /* shift of a non-negative int64 below 2^31 */
-static unsigned ikq_fit31(int64_t v)
+unsigned dh_ikc_fit31_q_(int64_t v)
 {
     uint32_t hi = (uint32_t)((uint64_t)v >> 31);
     unsigned s = 0u;
@@ -642,8 +634,8 @@ static DH_NOINLINE void ikq_elbow_rrr(const dh_ikc_model_q *m, dh_ikc_sol_q *sol
         df = tol;
         K = -K;
     }
-    s1 = ikq_fit31(ds);
-    s2 = ikq_fit31(df);
+    s1 = dh_ikc_fit31_q_(ds);
+    s2 = dh_ikc_fit31_q_(df);
     if (((s1 + s2) & 1u) != 0u) s1++;
     S = dh_q_isqrt62((uint64_t)dh_q_mul64((int32_t)(ds >> s1), (int32_t)(df >> s2)));
     if (S == 0u) d0->q[2] |= (int32_t)DH_IKC_SING_ELBOW;
@@ -674,13 +666,13 @@ static DH_NOINLINE void ikq_arm_rrr(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, 
     w[2] = 0;
     (void)dh_atan2_q(d1->q[1], d1->q[2], &w[2]);
     for (b = 0; b < ne; b++) {
-        t3 = ikq_wrap180(k[K_PHI] + (b ? -w[2] : w[2]));
+        t3 = dh_ikc_wrap180_q_(k[K_PHI] + (b ? -w[2] : w[2]));
         dh_sincos_q(t3, &w[0], &w[1]);
         A = m->a[1] + ikq_r30(dh_q_mla64(dh_q_mul64(m->a[2], w[1]), k[K_E], w[0]));
         B = ikq_r30(dh_q_mul64(m->a[2], w[0]) - dh_q_mul64(k[K_E], w[1]));
         if (k[K_SIG] < 0) B = -B;
         ikq_put_arm(&sol[4u * s + 2u * b], t1,
-                    ikq_atan2(dh_q_mul64(A, vy) - dh_q_mul64(B, vx), dh_q_mla64(dh_q_mul64(A, vx), B, vy)), t3,
+                    dh_ikc_atan2_q_(dh_q_mul64(A, vy) - dh_q_mul64(B, vx), dh_q_mla64(dh_q_mul64(A, vx), B, vy)), t3,
                     f0 | (b ? DH_IKC_ELBOW_ALT : 0u));
     }
 }
@@ -714,7 +706,7 @@ static DH_NOINLINE void ikq_arm_rrp(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, 
     for (b = 0; b < nl; b++) {
         const int32_t l = b ? -L : L, tl = k[K_SIG] > 0 ? l : -l;
         ikq_put_arm(&sol[4u * s + 2u * b], t1,
-                    ikq_atan2(dh_q_mla64(dh_q_mul64(x2, vy), tl, vx), dh_q_mul64(x2, vx) - dh_q_mul64(tl, vy)),
+                    dh_ikc_atan2_q_(dh_q_mla64(dh_q_mul64(x2, vy), tl, vx), dh_q_mul64(x2, vx) - dh_q_mul64(tl, vy)),
                     l - k[K_LOFF], f0 | (b ? DH_IKC_ELBOW_ALT : 0u));
     }
 }
@@ -749,7 +741,7 @@ static DH_NOINLINE void ikq_wrist(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, un
     if (sing)
         t4 = cref3;
     else
-        t4 = ikq_atan2(k[K_S5] > 0 ? z[1] : -z[1], k[K_S5] > 0 ? z[0] : -z[0]);
+        t4 = dh_ikc_atan2_q_(k[K_S5] > 0 ? z[1] : -z[1], k[K_S5] > 0 ? z[0] : -z[0]);
     dh_sincos_q(t4, &sc[0], &sc[1]);
     /* s5 into z[0], c5 into z[2] */
     z[0] = ikq_r30(dh_q_mla64(dh_q_mul64(sc[1], z[0]), sc[0], z[1]));
@@ -759,7 +751,7 @@ static DH_NOINLINE void ikq_wrist(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, un
     /* m' = Rz(-t4) M e_x into n[0], n[1] */
     ikq_rot2(&n[0], &n[1], sc[1], sc[0]);
     if (k[K_S4] == k[K_S5]) n[1] = -n[1];
-    n[0] = ikq_atan2(n[1], ((k[K_S4] > 0) ? dh_q_mla64(dh_q_mul64(z[2], n[0]), z[0], n[2])
+    n[0] = dh_ikc_atan2_q_(n[1], ((k[K_S4] > 0) ? dh_q_mla64(dh_q_mul64(z[2], n[0]), z[0], n[2])
                                              : dh_q_mul64(z[2], n[0]) - dh_q_mul64(z[0], n[2])) >> 30);
     n[2] = n[0];
     n[0] = t4;
@@ -772,9 +764,9 @@ static DH_NOINLINE void ikq_wrist(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, un
     d[1].q[0] = d->q[0];
     d[1].q[1] = d->q[1];
     d[1].q[2] = d->q[2];
-    z[0] = ikq_wrap180(t4 + Q16_180);
-    z[1] = ikq_wrap180(-t5);
-    z[2] = ikq_wrap180(n[2] + Q16_180);
+    z[0] = dh_ikc_wrap180_q_(t4 + Q16_180);
+    z[1] = dh_ikc_wrap180_q_(-t5);
+    z[2] = dh_ikc_wrap180_q_(n[2] + Q16_180);
     d[1].flags = d->flags | DH_IKC_WRIST_ALT;
 }
 
@@ -906,7 +898,7 @@ static DH_NOINLINE uint32_t ikq_finish(const dh_ikc_model_q *m, const int32_t *q
                 t->q[i] = dh_q_sat32((int64_t)t->q[i] - m->d[i], &ovf);
                 if (m->qmin[i] <= m->qmax[i]) in = (t->q[i] >= m->qmin[i] && t->q[i] <= m->qmax[i]);
             } else {
-                t->q[i] = ikq_shift(ikq_wrap180(t->q[i] - m->off[i]), m->qmin[i], m->qmax[i],
+                t->q[i] = ikq_shift(dh_ikc_wrap180_q_(t->q[i] - m->off[i]), m->qmin[i], m->qmax[i],
                                     (q_ref != NULL) ? q_ref[i] : 0, &in);
             }
             if (!in) all_in = 0;
@@ -968,7 +960,7 @@ int32_t dh_ikc_cref_q_(const dh_ikc_model_q *m, const int32_t *q_ref, uint32_t i
     const int32_t ref = (q_ref != NULL) ? q_ref[i] : 0;
     int ovf = 0;
     if ((m->prismatic >> i) & 1u) return dh_q_sat32((int64_t)ref + m->d[i], &ovf);
-    return ikq_wrap180(ikq_reduce(ref) + m->off[i]);
+    return dh_ikc_wrap180_q_(ikq_reduce(ref) + m->off[i]);
 }
 
 dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int32_t *q_ref, uint32_t opts,

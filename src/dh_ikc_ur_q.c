@@ -1,38 +1,504 @@
 /*
- * dh_ikc_ur_q.c - fixed-point closed-form families DH_IKC_PARALLEL_234 and
- * DH_IKC_SCARA (private interface: dh_ikc_impl.h). Placeholder: neither
- * family is detected yet on the fixed path, so such robots analyse to
- * DH_IKC_NONE (reason from the front end); the solvers return no solution.
+ * dh_ikc_ur_q.c - closed-form IK, fixed point, integer only (no float,
+ * libm or 64-bit division; tools/check.sh guards): six revolute joints with
+ * axes 2, 3, 4 parallel (DH_IKC_PARALLEL_234, Universal Robots) and R-R-P-R
+ * with four parallel axes (DH_IKC_SCARA). Family solvers behind the front
+ * end dh_ikc_q.c; contract: src/dh_ikc_impl.h. The algebra is that of the
+ * float solvers (dh_ikc_ur.c, docs/design.md "Closed-form inverse
+ * kinematics: axes 2-3-4 parallel and SCARA"); the formats, ranges and
+ * tolerances (counted in LSB) are those of dh_ikc_q.c.
+ *
+ * PARALLEL_234, per shoulder branch (u = +-sqrt(px^2 + py^2 - h^2) of the
+ * joint 5 point p05 = p - R06 (a6, d6 sa6, d6 ca6)):
+ *   t1 = atan2(tau h px + u py, u px - tau h py);
+ *   N = R01^T R' (R' = R06 Rx(alpha6)^T): phi = atan2(w5 n23, w5 n13),
+ *   s5 = w5 (cphi n13 + sphi n23) >= 0, c5 = -sb w5 n33, t5 = atan2(s5, c5);
+ *   m' = Rz(-phi) N e_x: t6 = atan2(-w5 sb m'y, c5 m'x + s5 sb m'z);
+ *   flip (phi + 180, -t5, t6 + 180); wrist singular (|n13|, |n23| <= 2^11
+ *   LSB): t5 = 0 or 180, t6 = cref6, phi from Rz(phi) (c5 c6, -sb w5 s6) =
+ *   (n11, n21), one record.
+ *   Per wrist record the planar 2R point v = p1 - a4 (cphi, sphi) -
+ *   sb d5 (sphi, -cphi), p1 = (c1 px + s1 py - a1, tau (pz - d1)):
+ *   D^2 - K^2 = ((|a2| + |a3|)^2 - |v|^2) (|v|^2 - (|a2| - |a3|)^2) from
+ *   exact products, t3 = atan2(+-sqrt(.), K sgn D); A = a2 + a3 c3,
+ *   B = s2 a3 s3, t2 = atan2(A vy - B vx, A vx + B vy),
+ *   t4 = s23 (phi - t2 - s2 t3).
+ * SCARA: psi = atan2(x4y, x4x); the frame 3 origin p3 = p - a4 x4 - d4 z'
+ * gives the 2R (a1, |b|) with eta = s1 t2 + delta, t1 = atan2(A py - B px,
+ * A px + B py), A = a1 + |b| cos eta, B = |b| sin eta;
+ * d3 = s12 (pz - d1 - s1 d2); t4 = s123 (psi - t1 - (eta - delta) - g).
+ *
+ * Cost (all 8 UR solutions): atan2 2 (joint 1) + 3 per shoulder (phi, t5,
+ * t6) + 3 per wrist record (elbow pair, two t2) = 20; sin/cos 2 (t1) + 2
+ * (phi) + 8 (t3) = 12; 2 + 4 integer square roots. Measured under QEMU on
+ * Cortex-M0 (-O2, bench/target harness, 4 UR5 targets in mm): 36,300
+ * instructions per call.
+ *
+ * Stack: as dh_ikc_q.c, the state lives in the solution array and the
+ * solver calls one helper at a time. PARALLEL_234 slots: p05, u, the
+ * branch count and the on-axis bit in sol[5]; x' = x6 and z' = axis 6 in
+ * sol[7]; the shoulder branch's t1, c1, s1, p1 in sol[1]; wrist record r
+ * = 4 s + 2 w holds (t1, t5, t6, phi, vx, vy) until its elbow solutions
+ * overwrite slots r and r + 1.
  */
+#include "dhmath/dh_fixed.h"
+#include "dhmath/dh_trig.h"
 #include "dh_ikc_impl.h"
 #include "dh_internal.h"
 
+#define Q16_180 DH_IKC_Q16_180
+#define IKU_EMPTY 0xFFFFFFFFu
+/* |sin| or |cos| of a twist this small counts as zero (as dh_ikc_q.c) */
+#define IKU_TOL_ALPHA 64
+/* wrist singular / SCARA tilt: 2^11 LSB of Q2.30 (1.9e-6) */
+#define IKU_SING ((int32_t)1 << 11)
+/* on axis 1: within 16 LSB */
+#define IKU_SING_AXIS 16
+/* reach tolerance 2^7 LSB, elbow fold 2^3 LSB (as dh_ikc_q.c) */
+#define IKU_REACH_SH 7
+#define IKU_FOLD_SH 3
+/* shoulder cylinder band: px^2 + py^2 - h^2 within 2^4 (|h| + 1), a point
+ * within 8 LSB of the cylinder */
+#define IKU_CYL_SH 4
+#define IKU_POS_LIM ((int64_t)1 << 30)
+
+DH_INLINE int iku_small(int32_t x)
+{
+    return x <= IKU_TOL_ALPHA && x >= -IKU_TOL_ALPHA;
+}
+
+DH_INLINE int32_t iku_sign(int32_t x)
+{
+    return x < 0 ? -1 : 1;
+}
+
+DH_INLINE uint64_t iku_abs64(int64_t x)
+{
+    return x < 0 ? (uint64_t)0 - (uint64_t)x : (uint64_t)x;
+}
+
+DH_INLINE int32_t iku_r30(int64_t x)
+{
+    return dh_q_rnd30_fit(x);
+}
+
+/* The 2R elbow shared by both families: link lengths l1, l2 (l1 l2 != 0),
+ * planar point (vx, vy). Writes the pair (S, K sgn D) scaled below 2^30
+ * into out[0..1]; returns 0 unreachable, 1 stretched or folded, 2 two
+ * branches. */
+static DH_NOINLINE unsigned iku_elbow(int32_t l1, int32_t l2, int32_t vx, int32_t vy, int32_t *out)
+{
+    const int64_t D = 2 * (int64_t)iku_abs64(dh_q_mul64(l1, l2));
+    const int64_t K = dh_q_mla64(dh_q_mla64(dh_q_mul64(vx, vx), vy, vy), l1, -l1) - dh_q_mul64(l2, l2);
+    int64_t ds = D - K, df = D + K, Kd = ((l1 < 0) != (l2 < 0)) ? -K : K, tol;
+    unsigned s1, s2, sh = 0u;
+    uint32_t S;
+    tol = ((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy) + 1) << IKU_REACH_SH;
+    if (ds < -tol || df < -tol) return 0u;
+    tol = (((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy)) << IKU_FOLD_SH) + 1;
+    if (ds <= tol) ds = 0;
+    if (df <= tol) df = 0;
+    s1 = dh_ikc_fit31_q_(ds);
+    s2 = dh_ikc_fit31_q_(df);
+    if (((s1 + s2) & 1u) != 0u) s1++;
+    S = dh_q_isqrt62((uint64_t)dh_q_mul64((int32_t)(ds >> s1), (int32_t)(df >> s2)));
+    Kd >>= (s1 + s2) >> 1;
+    while ((((uint64_t)S | iku_abs64(Kd)) >> sh) >= ((uint64_t)1 << 30)) sh++;
+    out[0] = (sh != 0u) ? (int32_t)dh_q_rshr((int64_t)S, sh) : (int32_t)S;
+    out[1] = (sh != 0u) ? (int32_t)dh_q_rshr(Kd, sh) : (int32_t)Kd;
+    return (S == 0u) ? 1u : 2u;
+}
+
+/* ======================================================================
+ * DH_IKC_PARALLEL_234: detector. Structure as the float one: six revolute
+ * joints, alpha1 = +-90, alpha2, alpha3 in {0, 180}, alpha4, alpha5 = +-90,
+ * a5 = 0, a2, a3 != 0.
+ * ====================================================================== */
+
+/* m->k layout, PARALLEL_234 */
+#define P_TAU 0 /* sign of sa1 */
+#define P_S2 1  /* sign of ca2 */
+#define P_S23 2 /* sign of ca2 ca3 */
+#define P_SB 3  /* s23 sign of sa4 */
+#define P_W5 4  /* sign of sa5 */
+#define P_H 5   /* h = d2 + s2 d3 + s23 d4, dh_qpos */
+#define P_E5 6  /* sb d5 */
+#define P_W 7   /* 7..9: (a6, d6 sa6, d6 ca6) */
+
 int dh_ikc_detect_par234_q_(dh_ikc_model_q *m)
 {
-    (void)m;
+    int32_t *k = m->k;
+    int64_t h;
+    if (m->n != 6u || m->prismatic != 0u) return 0;
+    if (!iku_small(m->ca[0]) || !iku_small(m->sa[1]) || !iku_small(m->sa[2]) || !iku_small(m->ca[3]) ||
+        !iku_small(m->ca[4]))
+        return 0;
+    if (m->a[4] != 0 || m->a[1] == 0 || m->a[2] == 0) return 0;
+    k[P_TAU] = iku_sign(m->sa[0]);
+    k[P_S2] = iku_sign(m->ca[1]);
+    k[P_S23] = k[P_S2] * iku_sign(m->ca[2]);
+    k[P_SB] = k[P_S23] * iku_sign(m->sa[3]);
+    k[P_W5] = iku_sign(m->sa[4]);
+    h = (int64_t)m->d[1] + k[P_S2] * (int64_t)m->d[2] + k[P_S23] * (int64_t)m->d[3];
+    /* |h| <= 2^30 keeps h^2 and the products with it in range */
+    if (iku_abs64(h) > (uint64_t)IKU_POS_LIM) return 0;
+    k[P_H] = (int32_t)h;
+    k[P_E5] = k[P_SB] * m->d[4];
+    k[P_W + 0] = m->a[5];
+    k[P_W + 1] = iku_r30(dh_q_mul64(m->d[5], m->sa[5]));
+    k[P_W + 2] = iku_r30(dh_q_mul64(m->d[5], m->ca[5]));
+    m->kind = DH_IKC_PARALLEL_234;
+    m->why = DH_IKC_WHY_NONE;
+    return 1;
+}
+
+/* p05, x', z' from T06 (sol[0..1]) into sol[5] (px, py, pz, u, branch
+ * count, on axis) and sol[7] (x', z'); 1 on overflow, -1 unreachable */
+static DH_NOINLINE int p234_point(const dh_ikc_model_q *m, dh_ikc_sol_q *sol)
+{
+    const int32_t *k = m->k;
+    const int32_t *c0 = DH_IKC_T06_COL_(sol, 0u), *c1 = DH_IKC_T06_COL_(sol, 1u), *c2 = DH_IKC_T06_COL_(sol, 2u);
+    const int32_t *p = DH_IKC_T06_COL_(sol, 3u);
+    int32_t *o = sol[5].q, *xz = sol[7].q;
+    int64_t v, band;
+    unsigned i;
+    for (i = 0; i < 3u; i++) {
+        v = dh_ikc_mla_q_(dh_ikc_mla_q_(dh_ikc_mla_q_(0, k[P_W], c0[i]), k[P_W + 1], c1[i]), k[P_W + 2], c2[i]);
+        v = (int64_t)p[i] - ((v + DH_Q_HALF30) >> 30);
+        if (iku_abs64(v) > (uint64_t)IKU_POS_LIM) return 1;
+        o[i] = (int32_t)v;
+        xz[i] = c0[i];
+        xz[3u + i] = iku_r30(dh_ikc_mla_q_(dh_ikc_mla_q_(0, m->sa[5], c1[i]), m->ca[5], c2[i]));
+    }
+    v = dh_q_mla64(dh_q_mul64(o[0], o[0]), o[1], o[1]) - dh_q_mul64(k[P_H], k[P_H]);
+    if (v < -(((int64_t)dh_q_abs_u32(o[0]) + (int64_t)dh_q_abs_u32(o[1]) + (int64_t)dh_q_abs_u32(k[P_H]) + 1)
+              << IKU_REACH_SH))
+        return -1;
+    band = ((int64_t)dh_q_abs_u32(k[P_H]) + 1) << IKU_CYL_SH;
+    o[5] = dh_q_abs_u32(o[0]) <= (uint32_t)IKU_SING_AXIS && dh_q_abs_u32(o[1]) <= (uint32_t)IKU_SING_AXIS;
+    if (o[5] || v <= band) {
+        o[3] = 0;
+        o[4] = 1;
+    } else {
+        o[3] = (int32_t)dh_q_isqrt62((uint64_t)v);
+        o[4] = 2;
+    }
     return 0;
 }
 
-int dh_ikc_detect_scara_q_(dh_ikc_model_q *m)
+/* shoulder branch s: t1, c1, s1, p1x, p1y into sol[1].q, flags into
+ * sol[1].flags; 1 on overflow */
+static DH_NOINLINE int p234_shoulder(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned s, int32_t cref0)
 {
-    (void)m;
+    const int32_t *k = m->k;
+    const int32_t *o = sol[5].q;
+    int32_t *d = sol[1].q;
+    int32_t sn, cs;
+    int64_t v;
+    if (o[5]) {
+        d[0] = cref0;
+    } else {
+        const int32_t th = k[P_TAU] > 0 ? k[P_H] : -k[P_H], u = s ? -o[3] : o[3];
+        d[0] = dh_ikc_atan2_q_(dh_q_mla64(dh_q_mul64(th, o[0]), u, o[1]), dh_q_mul64(u, o[0]) - dh_q_mul64(th, o[1]));
+    }
+    dh_sincos_q(d[0], &sn, &cs);
+    d[1] = cs;
+    d[2] = sn;
+    v = ((dh_q_mla64(dh_q_mul64(cs, o[0]), sn, o[1]) + DH_Q_HALF30) >> 30) - m->a[0];
+    if (iku_abs64(v) > (uint64_t)IKU_POS_LIM) return 1;
+    d[3] = (int32_t)v;
+    v = (int64_t)o[2] - m->d[0];
+    if (k[P_TAU] < 0) v = -v;
+    if (iku_abs64(v) > (uint64_t)IKU_POS_LIM) return 1;
+    d[4] = (int32_t)v;
+    sol[1].flags = (o[4] == 1 ? (uint32_t)DH_IKC_SING_SHOULDER : 0u) | (s ? DH_IKC_SHOULDER_ALT : 0u);
     return 0;
+}
+
+/* record (t1, t5, t6, phi, v) of a wrist branch into slot r: v = p1 -+
+ * (a4 (c, s) + e5 (s, -c)) (sg = +1 for phi, -1 for phi + 180); 1 on
+ * overflow */
+static DH_NOINLINE int p234_record(const dh_ikc_model_q *m, dh_ikc_sol_q *r, const int32_t *d, int32_t sg,
+                                   int32_t c, int32_t s)
+{
+    const int32_t a4 = m->a[3], e5 = m->k[P_E5];
+    int64_t x = dh_q_mla64(dh_q_mul64(a4, c), e5, s), y = dh_q_mul64(a4, s) - dh_q_mul64(e5, c);
+    x = (int64_t)d[3] - sg * ((x + DH_Q_HALF30) >> 30);
+    y = (int64_t)d[4] - sg * ((y + DH_Q_HALF30) >> 30);
+    if (iku_abs64(x) > (uint64_t)IKU_POS_LIM || iku_abs64(y) > (uint64_t)IKU_POS_LIM) return 1;
+    r->q[0] = d[0];
+    r->q[4] = (int32_t)x;
+    r->q[5] = (int32_t)y;
+    return 0;
+}
+
+/* N = R01^T R' of the shoulder branch in sol[1]: n11, n21, n13, n23, c5
+ * (= -sb w5 n33), n31 into sol[3].q (free until the elbow pass) */
+static DH_NOINLINE void p234_n(const dh_ikc_model_q *m, dh_ikc_sol_q *sol)
+{
+    const int32_t *k = m->k;
+    const int32_t *d = sol[1].q, *xv = sol[7].q;
+    int32_t *n = sol[3].q;
+    const int32_t c1 = d[1], s1 = d[2];
+    n[0] = iku_r30(dh_q_mla64(dh_q_mul64(c1, xv[0]), s1, xv[1]));
+    n[1] = k[P_TAU] > 0 ? xv[2] : -xv[2];
+    n[2] = iku_r30(dh_q_mla64(dh_q_mul64(c1, xv[3]), s1, xv[4]));
+    n[3] = k[P_TAU] > 0 ? xv[5] : -xv[5];
+    n[4] = iku_r30(dh_q_mul64(s1, xv[3]) - dh_q_mul64(c1, xv[4])); /* tau n33 */
+    if ((k[P_TAU] * k[P_SB] * k[P_W5]) > 0) n[4] = -n[4];
+    n[5] = iku_r30(dh_q_mul64(s1, xv[0]) - dh_q_mul64(c1, xv[1]));
+    if (k[P_TAU] < 0) n[5] = -n[5];
+}
+
+/* the wrist records of shoulder branch s into slots 4 s and 4 s + 2 (N from
+ * p234_n, worked on in place); 1 on overflow */
+static DH_NOINLINE int p234_wrist(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned s, int32_t cref5)
+{
+    const int32_t *k = m->k;
+    int32_t *n = sol[3].q;
+    dh_ikc_sol_q *r0 = &sol[4u * s], *r1 = &sol[4u * s + 2u];
+    int32_t sn, cs;
+    r0->flags = sol[1].flags;
+    if (dh_q_abs_u32(n[2]) <= (uint32_t)IKU_SING && dh_q_abs_u32(n[3]) <= (uint32_t)IKU_SING) {
+        /* axes 2, 3, 4, 6 parallel: t6 = cref6, phi from the first column,
+         * Rz(phi) g = (n11, n21), g = (c5 c6, -sb w5 s6) */
+        r0->q[1] = n[4] < 0 ? Q16_180 : 0;
+        r0->q[2] = cref5;
+        dh_sincos_q(cref5, &sn, &cs);
+        if (n[4] < 0) cs = -cs;
+        if (k[P_SB] * k[P_W5] > 0) sn = -sn;
+        r0->q[3] = dh_ikc_atan2_q_(dh_q_mul64(n[1], cs) - dh_q_mul64(n[0], sn), dh_q_mla64(dh_q_mul64(n[0], cs), n[1], sn));
+        r0->flags |= DH_IKC_SING_WRIST;
+        r1->flags = IKU_EMPTY;
+        dh_sincos_q(r0->q[3], &sn, &cs);
+        return p234_record(m, r0, sol[1].q, 1, cs, sn);
+    }
+    r0->q[3] = dh_ikc_atan2_q_(k[P_W5] > 0 ? n[3] : -n[3], k[P_W5] > 0 ? n[2] : -n[2]);
+    dh_sincos_q(r0->q[3], &sn, &cs);
+    /* s5 into n[2]; t5 */
+    n[2] = iku_r30(dh_q_mla64(dh_q_mul64(cs, n[2]), sn, n[3]));
+    if (k[P_W5] < 0) n[2] = -n[2];
+    r0->q[1] = 0;
+    (void)dh_atan2_q(n[2], n[4], &r0->q[1]);
+    /* m' = Rz(-phi) N e_x: m'x into n[3], m'y into n[1], m'z = n31 */
+    n[3] = iku_r30(dh_q_mla64(dh_q_mul64(cs, n[0]), sn, n[1]));
+    n[1] = iku_r30(dh_q_mul64(cs, n[1]) - dh_q_mul64(sn, n[0]));
+    if (k[P_SB] < 0) n[2] = -n[2]; /* sb s5 */
+    if (k[P_W5] * k[P_SB] > 0) n[1] = -n[1]; /* -w5 sb m'y */
+    r0->q[2] = dh_ikc_atan2_q_(dh_q_mul64(n[1], DH_Q_ONE30), dh_q_mla64(dh_q_mul64(n[4], n[3]), n[2], n[5]));
+    r1->q[1] = dh_ikc_wrap180_q_(-r0->q[1]);
+    r1->q[2] = dh_ikc_wrap180_q_(r0->q[2] + Q16_180);
+    r1->q[3] = dh_ikc_wrap180_q_(r0->q[3] + Q16_180);
+    r1->flags = r0->flags | DH_IKC_WRIST_ALT;
+    if (p234_record(m, r0, sol[1].q, 1, cs, sn)) return 1;
+    return p234_record(m, r1, sol[1].q, -1, cs, sn);
+}
+
+/* the ne elbow solutions of wrist record j into slots j, j + 1 (the pair
+ * (S, Kd) of iku_elbow in slot j + 1) */
+static DH_NOINLINE void p234_elbow(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned j, unsigned ne,
+                                   int32_t cref1)
+{
+    const int32_t *k = m->k;
+    dh_ikc_sol_q *r = &sol[j];
+    const int32_t *pr = sol[j + 1u].q;
+    const int32_t a2 = m->a[1], a3 = m->a[2];
+    int32_t psi = 0, sc[2];
+    unsigned e;
+    sol[j + 1u].flags = IKU_EMPTY;
+    if (ne == 0u) {
+        r->flags = IKU_EMPTY;
+        return;
+    }
+    if (ne == 1u) r->flags |= DH_IKC_SING_ELBOW;
+    (void)dh_atan2_q(pr[0], pr[1], &psi);
+    /* branch 1 first: slot j + 1 is written after the last read of pr,
+     * slot j after the last read of the record */
+    for (e = ne; e-- > 0u;) {
+        dh_ikc_sol_q *o = &sol[j + e];
+        int64_t x, y;
+        int32_t A, B, t2;
+        const int32_t t3 = dh_ikc_wrap180_q_(e ? -psi : psi);
+        dh_sincos_q(t3, &sc[0], &sc[1]);
+        A = a2 + iku_r30(dh_q_mul64(a3, sc[1]));
+        B = iku_r30(dh_q_mul64(a3, sc[0]));
+        if (k[P_S2] < 0) B = -B;
+        y = dh_q_mul64(A, r->q[5]) - dh_q_mul64(B, r->q[4]);
+        x = dh_q_mla64(dh_q_mul64(A, r->q[4]), B, r->q[5]);
+        t2 = (x == 0 && y == 0) ? cref1 : dh_ikc_atan2_q_(y, x);
+        /* t4 = s23 (phi - t2 - s2 t3) */
+        A = dh_ikc_wrap180_q_(dh_ikc_wrap180_q_(r->q[3] - t2) - (k[P_S2] > 0 ? t3 : -t3));
+        if (k[P_S23] < 0) A = dh_ikc_wrap180_q_(-A);
+        o->flags = r->flags | (e ? DH_IKC_ELBOW_ALT : 0u);
+        o->q[0] = r->q[0];
+        o->q[4] = r->q[1];
+        o->q[5] = r->q[2];
+        o->q[1] = t2;
+        o->q[2] = t3;
+        o->q[3] = A;
+    }
 }
 
 dh_status dh_ikc_par234_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count)
 {
-    (void)m;
-    (void)q_ref;
-    (void)sol;
+    uint32_t s, j, cnt = 0, nsh;
+    int st;
     *count = 0;
+    st = p234_point(m, sol);
+    if (st > 0) return DH_ERR_OVERFLOW;
+    if (st < 0) return DH_OK; /* unreachable */
+    for (j = 0; j < DH_IKC_MAX_SOL; j++) sol[j].flags = IKU_EMPTY;
+    nsh = (uint32_t)sol[5].q[4];
+    for (s = 0; s < nsh; s++) {
+        if (p234_shoulder(m, sol, s, dh_ikc_cref_q_(m, q_ref, 0u))) return DH_ERR_OVERFLOW;
+        p234_n(m, sol);
+        if (p234_wrist(m, sol, s, dh_ikc_cref_q_(m, q_ref, 5u))) return DH_ERR_OVERFLOW;
+    }
+    if (nsh == 1u) {
+        sol[4].flags = IKU_EMPTY;
+        sol[6].flags = IKU_EMPTY;
+    }
+    for (j = 0; j < DH_IKC_MAX_SOL; j += 2u)
+        if (sol[j].flags != IKU_EMPTY)
+            p234_elbow(m, sol, j, iku_elbow(m->a[1], m->a[2], sol[j].q[4], sol[j].q[5], sol[j + 1u].q),
+                       dh_ikc_cref_q_(m, q_ref, 1u));
+        else
+            sol[j + 1u].flags = IKU_EMPTY;
+    for (j = 0; j < DH_IKC_MAX_SOL; j++)
+        if (sol[j].flags != IKU_EMPTY) {
+            if (j != cnt) sol[cnt] = sol[j];
+            cnt++;
+        }
+    *count = cnt;
     return DH_OK;
+}
+
+/* ======================================================================
+ * DH_IKC_SCARA: detector. Structure as the float one: R-R-P-R, alpha1,
+ * alpha2, alpha3 in {0, 180}, a1 != 0, |b| != 0 for the effective second
+ * link b = (a2 + a3 cos g, a3 sin g), g = s12 theta3.
+ * ====================================================================== */
+
+/* m->k layout, SCARA */
+#define S_S1 0    /* sign of ca1 */
+#define S_S12 1   /* sign of ca1 ca2 */
+#define S_S123 2  /* sign of ca1 ca2 ca3 */
+#define S_LB 3    /* |b|, dh_qpos */
+#define S_DELTA 4 /* atan2(by, bx), Q16.16 deg */
+#define S_Z0 5    /* d1 + s1 d2 */
+#define S_G 6     /* g = s12 theta3, Q16.16 deg */
+#define S_P 7     /* 7..9: (a4, d4 sa4, d4 ca4) */
+
+int dh_ikc_detect_scara_q_(dh_ikc_model_q *m)
+{
+    int32_t *k = m->k;
+    int32_t sg, cg, bx, by;
+    int64_t z0;
+    if (m->n != 4u || m->prismatic != 0x4u) return 0;
+    if (!iku_small(m->sa[0]) || !iku_small(m->sa[1]) || !iku_small(m->sa[2])) return 0;
+    k[S_S1] = iku_sign(m->ca[0]);
+    k[S_S12] = k[S_S1] * iku_sign(m->ca[1]);
+    k[S_S123] = k[S_S12] * iku_sign(m->ca[2]);
+    /* the prismatic joint's fixed theta, any int32: reduced to (-180, 180] */
+    {
+        const uint32_t a = dh_q_abs_u32(m->off[2]) % (uint32_t)DH_IKC_Q16_360;
+        int32_t g = (int32_t)a;
+        if ((m->off[2] < 0) != (k[S_S12] < 0)) g = -g;
+        k[S_G] = dh_ikc_wrap180_q_(g);
+    }
+    dh_sincos_q(k[S_G], &sg, &cg);
+    bx = m->a[1] + iku_r30(dh_q_mul64(m->a[2], cg));
+    by = iku_r30(dh_q_mul64(m->a[2], sg));
+    k[S_LB] = (int32_t)dh_q_isqrt62((uint64_t)dh_q_mla64(dh_q_mul64(bx, bx), by, by));
+    if (m->a[0] == 0 || k[S_LB] == 0) return 0;
+    k[S_DELTA] = dh_ikc_atan2_q_(by, bx);
+    z0 = (int64_t)m->d[0] + k[S_S1] * (int64_t)m->d[1];
+    if (iku_abs64(z0) > (uint64_t)IKU_POS_LIM) return 0;
+    k[S_Z0] = (int32_t)z0;
+    k[S_P + 0] = m->a[3];
+    k[S_P + 1] = iku_r30(dh_q_mul64(m->d[3], m->sa[3]));
+    k[S_P + 2] = iku_r30(dh_q_mul64(m->d[3], m->ca[3]));
+    m->kind = DH_IKC_SCARA;
+    m->why = DH_IKC_WHY_NONE;
+    return 1;
+}
+
+/* x4 into sol[2].q[0..2], z' into sol[2].q[3..5], p3 into sol[3].q[0..2]
+ * (slots 2 and 3 never hold a SCARA solution); 1 on overflow, -1 when the
+ * tool axis is not parallel to the joint axes */
+static DH_NOINLINE int scara_vecs(const dh_ikc_model_q *m, dh_ikc_sol_q *sol)
+{
+    const int32_t *k = m->k;
+    const int32_t *c0 = DH_IKC_T06_COL_(sol, 0u), *c1 = DH_IKC_T06_COL_(sol, 1u), *c2 = DH_IKC_T06_COL_(sol, 2u);
+    const int32_t *p = DH_IKC_T06_COL_(sol, 3u);
+    int32_t *x = sol[2].q, *z = &sol[2].q[3], *o = sol[3].q;
+    int64_t v;
+    unsigned i;
+    for (i = 0; i < 3u; i++) {
+        x[i] = c0[i];
+        z[i] = iku_r30(dh_ikc_mla_q_(dh_ikc_mla_q_(0, m->sa[3], c1[i]), m->ca[3], c2[i]));
+        v = dh_ikc_mla_q_(dh_ikc_mla_q_(dh_ikc_mla_q_(0, k[S_P], c0[i]), k[S_P + 1], c1[i]), k[S_P + 2], c2[i]);
+        v = (int64_t)p[i] - ((v + DH_Q_HALF30) >> 30);
+        if (iku_abs64(v) > (uint64_t)IKU_POS_LIM) return 1;
+        o[i] = (int32_t)v;
+    }
+    if (dh_q_abs_u32(z[0]) > (uint32_t)IKU_SING || dh_q_abs_u32(z[1]) > (uint32_t)IKU_SING) return -1;
+    if ((z[2] < 0) != (k[S_S123] < 0)) return -1;
+    v = (int64_t)o[2] - k[S_Z0];
+    if (k[S_S12] < 0) v = -v;
+    if (iku_abs64(v) > (uint64_t)IKU_POS_LIM) return 1;
+    o[3] = (int32_t)v; /* d3 */
+    o[4] = 0;
+    (void)dh_atan2_q(x[1], x[0], &o[4]); /* psi */
+    return 0;
+}
+
+/* elbow branch e into slot e (pair (S, Kd) and eta in sol[3].q[5],
+ * sol[2].q[0..1] free after psi) */
+static DH_NOINLINE void scara_branch(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned e, uint32_t f, int32_t cref0)
+{
+    const int32_t *k = m->k;
+    const int32_t *o = sol[3].q;
+    int32_t *w = sol[2].q; /* w[0..1] the pair, w[2] eta, w[3..4] sin/cos eta */
+    dh_ikc_sol_q *r = &sol[e];
+    int32_t A, B, t1, b;
+    w[3] = dh_ikc_wrap180_q_(e ? -w[2] : w[2]);
+    r->flags = f | (e ? DH_IKC_ELBOW_ALT : 0u);
+    if (dh_q_abs_u32(o[0]) <= (uint32_t)IKU_SING_AXIS && dh_q_abs_u32(o[1]) <= (uint32_t)IKU_SING_AXIS) {
+        t1 = cref0;
+        r->flags |= DH_IKC_SING_SHOULDER;
+    } else {
+        int32_t sn, cs;
+        dh_sincos_q(w[3], &sn, &cs);
+        A = m->a[0] + iku_r30(dh_q_mul64(k[S_LB], cs));
+        B = iku_r30(dh_q_mul64(k[S_LB], sn));
+        t1 = dh_ikc_atan2_q_(dh_q_mul64(A, o[1]) - dh_q_mul64(B, o[0]), dh_q_mla64(dh_q_mul64(A, o[0]), B, o[1]));
+    }
+    b = dh_ikc_wrap180_q_(w[3] - k[S_DELTA]); /* s1 t2 */
+    r->q[0] = t1;
+    r->q[1] = k[S_S1] > 0 ? b : dh_ikc_wrap180_q_(-b);
+    r->q[2] = o[3];
+    A = dh_ikc_wrap180_q_(dh_ikc_wrap180_q_(dh_ikc_wrap180_q_(o[4] - t1) - b) - k[S_G]);
+    r->q[3] = k[S_S123] > 0 ? A : dh_ikc_wrap180_q_(-A);
+    r->q[4] = 0;
+    r->q[5] = 0;
 }
 
 dh_status dh_ikc_scara_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count)
 {
-    (void)m;
-    (void)q_ref;
-    (void)sol;
+    int st;
+    unsigned ne, e;
+    uint32_t f = 0u;
     *count = 0;
+    st = scara_vecs(m, sol);
+    if (st > 0) return DH_ERR_OVERFLOW;
+    if (st < 0) return DH_OK;
+    ne = iku_elbow(m->a[0], m->k[S_LB], sol[3].q[0], sol[3].q[1], sol[2].q);
+    if (ne == 0u) return DH_OK;
+    if (ne == 1u) f = DH_IKC_SING_ELBOW;
+    sol[2].q[2] = 0;
+    (void)dh_atan2_q(sol[2].q[0], sol[2].q[1], &sol[2].q[2]);
+    for (e = 0; e < ne; e++) scara_branch(m, sol, e, f, dh_ikc_cref_q_(m, q_ref, 0u));
+    *count = ne;
     return DH_OK;
 }

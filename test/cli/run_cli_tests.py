@@ -22,7 +22,9 @@ Groups:
   ikc       ik --all (closed form) on the shipped wrist robots: every line a
             solution (double FK here), the generating configuration among
             them, exit 3 unreachable / outside the limits, exit 2 and the
-            reason for a robot without a closed form
+            reason for a robot without a closed form; ik --all --fixed on
+            puma560_mm and ur5_mm (the fixed path, within 5e-3 mm), its
+            exit 3 and exit 2 cases
   messages  the messages that name a cause: ik robot size and --w-rot,
             non-rigid tool/base/target, fk --fixed constants, projective
             EXPR in axis/euler/quat, --q0 clamping, '-' for stdin
@@ -1174,7 +1176,6 @@ def group_ikc(seed, tmp):
               r'not meet in one point'),
              (['ik', '--all', '--position', puma, 'ident'], r'^dhmath: usage error: ik --all takes only --q0'),
              (['ik', '--all', '--max-iter', '3', puma, 'ident'], r'^dhmath: usage error: ik --all takes only --q0'),
-             (['ik', '--all', '--fixed', puma, 'ident'], r'^dhmath: usage error: ik --all does not take --fixed'),
              (['ik', '--all', '--q0', '1,2', puma, 'ident'], r'--q0: expected 6 values'),
              (['ik', '--all', puma, 'scale(1,2,1)'], r'^dhmath: error: ik: the rotation part of the target EXPR'),
              (['ik', '--all', puma, 'persp(z,2)'], r'^dhmath: error: ik: EXPR is not rigid')]
@@ -1182,6 +1183,79 @@ def group_ikc(seed, tmp):
         rc, out, err = run(args)
         check(rc == 2 and out == '' and re.search(pat, err) is not None,
               'ik --all error %r: rc %d out %r err %r' % (args, rc, out, err))
+
+
+    group_ikc_fixed(rng, tmp, rdir)
+
+
+def group_ikc_fixed(rng, tmp, rdir):
+    """ik --all --fixed on robots in mm: every printed solution reaches the
+    target (double reference FK, mm), the generating configuration is printed."""
+    for name in ('puma560_mm.dh', 'ur5_mm.dh'):
+        path = os.path.join(rdir, name)
+        rob = read_robot(open(path).read())
+        js = rob['joints']
+        nsol = 0
+        for it in range(20):
+            q = [rng.uniform(j['min'], j['max']) for j in js]
+            if abs(math.sin(math.radians(q[4] + js[4]['theta']))) < 0.1:
+                continue
+            if name.startswith('ur5') and abs(math.sin(math.radians(q[2]))) < 0.1:
+                continue
+            T = ref_fk(rob, q)
+            rc, out, err = run(['ik', '--all', '--fixed', path, to_expr(T)])
+            lines = err.splitlines()
+            check(rc in (0, 3) and len(lines) == 1 and lines[0].startswith('ik --all --fixed: '),
+                  'ik --all --fixed %s: rc %d err %r' % (name, rc, err))
+            if rc != 0:
+                check(out == '', 'ik --all --fixed %s rc 3 printed %r' % (name, out))
+                continue
+            rows = nums(out)
+            check(re.match(r'ik --all --fixed: %d closed-form solutions? within the limits \(\d+ outside\)$'
+                           % len(rows), lines[0]) is not None, 'ik --all --fixed %s summary %r' % (name, lines[0]))
+            best = 1e30
+            for row in rows:
+                check(len(row) == len(js), 'ik --all --fixed %s: line %r' % (name, row))
+                T2 = ref_fk(rob, row)
+                dp = max(abs(T2[i][3] - T[i][3]) for i in range(3))
+                dr = max(abs(T2[i][c] - T[i][c]) for i in range(3) for c in range(3))
+                check(dp <= 5e-3 and dr <= 5e-6, 'ik --all --fixed %s: solution %r misses the target by %.3g mm, '
+                      '%.3g' % (name, row, dp, dr))
+                for j, v in zip(js, row):
+                    check(j['min'] <= v <= j['max'], 'ik --all --fixed %s: %r outside the limits' % (name, row))
+                best = min(best, max(ang_diff(a, b) for a, b in zip(row, q)))
+            nsol += len(rows)
+            check(best <= 1e-2, 'ik --all --fixed %s: generating q %r not printed (nearest %.3g)\n%s'
+                  % (name, q, best, out))
+        print('ik --all --fixed %s: %d solutions printed' % (name, nsol))
+    puma = os.path.join(rdir, 'puma560_mm.dh')
+    rc, out, err = run(['ik', '--all', '--fixed', puma, 'trans(5000,0,0)'])
+    check(rc == 3 and out == '' and err == 'ik --all --fixed: no solution: the target is out of reach\n',
+          'ik --all --fixed unreachable: rc %d %r %r' % (rc, out, err))
+    rob = read_robot(open(puma).read())
+    narrow = write(tmp, 'narrow_mm.dh', open(puma).read().replace('min=-160 max=160', 'min=10 max=20'))
+    rc, out, err = run(['ik', '--all', '--fixed', narrow, to_expr(ref_fk(rob, [60, -30, 40, 10, 30, 20]))])
+    check(rc == 3 and out == '' and
+          re.match(r'ik --all --fixed: no solution within the joint limits \(\d+ outside\)\n$', err),
+          'ik --all --fixed outside the limits: rc %d %r %r' % (rc, out, err))
+    huge = write(tmp, 'huge_mm.dh', open(puma).read().replace('a=431.8', 'a=40000'))
+    cases = [(['ik', '--all', '--fixed', os.path.join(rdir, 'panda.dh'), 'ident'],
+              r'^dhmath: error: ik --all --fixed: .*panda.dh has no fixed-point closed-form inverse kinematics: the '
+              r'joint count or types match no closed-form family\n$'),
+             (['ik', '--all', '--fixed', huge, 'ident'], r'^dhmath: error: .*huge_mm.dh'),
+             (['ik', '--all', '--fixed', puma, 'trans(20000,0,0)'],
+              r'^dhmath: error: overflow: ik --all --fixed: the target is more than 2\^30 LSB'),
+             (['ik', '--all', '--fixed', puma, 'trans(1e6,0,0)'],
+              r'^dhmath: error: overflow: ik --all --fixed: the target EXPR does not fit'),
+             (['ik', '--all', '--fixed', puma, 'scale(1,1.5,1)'],
+              r'^dhmath: error: ik --all --fixed: the rotation part of the target EXPR is not a rotation'),
+             (['ik', '--all', '--fixed', puma, 'scale(1,2,1)'],
+              r'^dhmath: error: overflow: ik --all --fixed: the target EXPR does not fit'),
+             (['ik', '--all', '--fixed', '--q0', '1,2', puma, 'ident'], r'--q0: expected 6 values')]
+    for args, pat in cases:
+        rc, out, err = run(args)
+        check(rc == 2 and out == '' and re.search(pat, err) is not None,
+              'ik --all --fixed error %r: rc %d out %r err %r' % (args, rc, out, err))
 
 
 def target_of_puma(q1):

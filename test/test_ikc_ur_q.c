@@ -1,0 +1,591 @@
+/*
+ * test_ikc_ur_q.c - fixed-point closed-form IK of the families
+ * DH_IKC_PARALLEL_234 (UR3, UR5, UR10) and DH_IKC_SCARA (Cobra 600), robots
+ * in mm: every solution against the double reference FK
+ * (test/support_robots.h) within 5e-3 mm and 5e-6 (rotation entries, ~rad),
+ * completeness (the generating configuration among the solutions within
+ * 2e-3 deg / mm) on random in-limit configurations away from the
+ * singularities, singular cases flagged and FK-correct, unreachable
+ * targets, the statuses of the fixed solvers.
+ */
+#include "dht.h"
+#include "support_robots.h"
+#include "dhmath/dh_ikc.h"
+#include "dhmath/dh_fixed.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* As test_ikc_q.c: at DH_QPOS_FRAC other than 16 every length is scaled by
+ * LS = 2^(16 - DH_QPOS_FRAC), so that the solver sees the same raw values. */
+#define LS ldexp(1.0, 16 - DH_QPOS_FRAC)
+#define POS_TOL (5e-3 * LS) /* mm at DH_QPOS_FRAC 16 */
+#define ROT_TOL 5e-6  /* rotation entries (rad for small errors) */
+#define COMP_DEG 2e-3 /* completeness, deg (mm for a prismatic joint) */
+#define AWAY 1e-2     /* normalised distance from the singularities */
+#define PI_D 3.14159265358979323846
+#define D2R (PI_D / 180.0)
+
+/* ---- robots --------------------------------------------------------------- */
+
+/* lengths of d (a, d, prismatic limits, base and tool translations) times LS */
+static void scale_desc(dhs_robot *d)
+{
+    unsigned i;
+    for (i = 0; i < d->n; i++) {
+        d->j[i].a *= LS;
+        d->j[i].d *= LS;
+        if (d->j[i].type == DH_JOINT_PRISMATIC) {
+            d->j[i].qmin *= LS;
+            d->j[i].qmax *= LS;
+        }
+    }
+    for (i = 0; i < 3; i++) {
+        d->base.m[3][i] *= LS;
+        d->tool.m[3][i] *= LS;
+    }
+}
+
+
+static void robot_mm(dhs_robot *d, const dhs_robot *src)
+{
+    *d = *src;
+    scale_desc(d);
+}
+
+static void build(const dhs_robot *d, dh_robot *r, dh_ikc_model_q *m, dh_ikc_kind kind)
+{
+    DHT_EQ_INT(dhs_build(d, r), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_q(r, m), DH_OK);
+    DHT_EQ_INT(m->kind, kind);
+    DHT_EQ_INT(m->why, DH_IKC_WHY_NONE);
+}
+
+/* ---- reference checks ----------------------------------------------------- */
+
+static double pos_err(const dhs_mat4_d *A, const dhs_mat4_d *B)
+{
+    double e = 0.0;
+    int i;
+    for (i = 0; i < 3; i++) {
+        double d = fabs(A->m[3][i] - B->m[3][i]);
+        if (d > e) e = d;
+    }
+    return e;
+}
+
+static double rot_err(const dhs_mat4_d *A, const dhs_mat4_d *B)
+{
+    double e = 0.0;
+    int c, i;
+    for (c = 0; c < 3; c++)
+        for (i = 0; i < 3; i++) {
+            double d = fabs(A->m[c][i] - B->m[c][i]);
+            if (d > e) e = d;
+        }
+    return e;
+}
+
+static void to_frame(const dhs_mat4_d *T, dh_frame_q *F)
+{
+    int c, i;
+    for (c = 0; c < 3; c++)
+        for (i = 0; i < 3; i++) F->r[c][i] = dhs_to_q(T->m[c][i], 30);
+    for (i = 0; i < 3; i++) F->p[i] = dhs_to_q(T->m[3][i], DH_QPOS_FRAC);
+}
+
+/* |a - b| in deg (revolute, modulo 360) or length units (prismatic) */
+static double jdiff(const dh_robot *r, unsigned i, int32_t a, int32_t b)
+{
+    double d;
+    if (r->joint[i].type == DH_JOINT_PRISMATIC) return fabs(ldexp((double)a - (double)b, -DH_QPOS_FRAC)) / LS;
+    d = fmod(ldexp((double)a - (double)b, -16), 360.0);
+    if (d > 180.0) d -= 360.0;
+    if (d < -180.0) d += 360.0;
+    return fabs(d);
+}
+
+typedef struct {
+    long targets, comp, sols;
+    double pos, rot;
+} stats;
+
+/* every solution FK-correct; returns the index of the solution equal to qgen, or -1 */
+static int check_sols(const dh_robot *r, const dhs_mat4_d *Td, const dh_ikc_sol_q *sol, uint32_t ns, const int32_t *qgen,
+                      stats *st)
+{
+    uint32_t s, i;
+    int found = -1;
+    for (s = 0; s < ns; s++) {
+        dhs_mat4_d Ts;
+        double pe, re, worst = 0.0;
+        dhs_fk_ref_q(r, sol[s].q, NULL, &Ts);
+        pe = pos_err(&Ts, Td);
+        re = rot_err(&Ts, Td);
+        DHT_TRUE_MSG(pe <= POS_TOL && re <= ROT_TOL,
+                     "solution %u of %u (flags 0x%x): pos err %.3g mm, rot err %.3g; q %ld %ld %ld %ld %ld %ld",
+                     (unsigned)s, (unsigned)ns, (unsigned)sol[s].flags, pe, re, (long)sol[s].q[0], (long)sol[s].q[1],
+                     (long)sol[s].q[2], (long)sol[s].q[3], (long)sol[s].q[4], (long)sol[s].q[5]);
+        if (st) {
+            if (pe > st->pos) st->pos = pe;
+            if (re > st->rot) st->rot = re;
+            st->sols++;
+        }
+        if (qgen) {
+            for (i = 0; i < r->n; i++) {
+                double d = jdiff(r, i, sol[s].q[i], qgen[i]);
+                if (d > worst) worst = d;
+            }
+            if (worst <= COMP_DEG && found < 0) found = (int)s;
+        }
+    }
+    return found;
+}
+
+/* The target is rounded (2^-DH_QPOS_FRAC, 2^-30) and the arm angles are
+ * Q16.16 values that the wrist angles absorb, so the exact inverse of the
+ * rounded target differs from the generating configuration by about
+ * J^-1 (target rounding + J_arm x 2 LSB): near a singularity (elbow almost
+ * stretched, wrist centre near axis 2, joint 5 near 0) and more so where
+ * two of them meet, this exceeds 2e-3 deg even at 1e-2 from each. The
+ * completeness check is made where this bound (J by central differences
+ * of the double FK of the description) is below half the tolerance. */
+static int well_conditioned_to(const dhs_robot *d, const double *q, double tol, int nj)
+{
+    double J[6][6], A[6][12], qp[6], qm[6], dx[6];
+    dhs_mat4_d T0, Tp, Tm;
+    const double h = 1e-4;
+    int i, j, k, c;
+    dhs_fk_desc(d, q, NULL, &T0);
+    for (k = 0; k < 6; k++) {
+        double W[3][3];
+        memcpy(qp, q, sizeof qp);
+        memcpy(qm, q, sizeof qm);
+        qp[k] += h;
+        qm[k] -= h;
+        dhs_fk_desc(d, qp, NULL, &Tp);
+        dhs_fk_desc(d, qm, NULL, &Tm);
+        for (i = 0; i < 3; i++) J[i][k] = (Tp.m[3][i] - Tm.m[3][i]) / (2.0 * h);
+        /* W = dR R^T (m[col][row]) */
+        for (i = 0; i < 3; i++)
+            for (j = 0; j < 3; j++) {
+                W[i][j] = 0.0;
+                for (c = 0; c < 3; c++) W[i][j] += (Tp.m[c][i] - Tm.m[c][i]) / (2.0 * h) * T0.m[c][j];
+            }
+        J[3][k] = 0.5 * (W[2][1] - W[1][2]);
+        J[4][k] = 0.5 * (W[0][2] - W[2][0]);
+        J[5][k] = 0.5 * (W[1][0] - W[0][1]);
+    }
+    for (i = 0; i < 6; i++) {
+        for (j = 0; j < 6; j++) {
+            A[i][j] = J[i][j];
+            A[i][6 + j] = (i == j) ? 1.0 : 0.0;
+        }
+    }
+    for (c = 0; c < 6; c++) { /* Gauss-Jordan, partial pivoting */
+        int piv = c;
+        for (i = c + 1; i < 6; i++)
+            if (fabs(A[i][c]) > fabs(A[piv][c])) piv = i;
+        if (fabs(A[piv][c]) < 1e-12) return 0;
+        for (j = 0; j < 12; j++) {
+            double t = A[c][j];
+            A[c][j] = A[piv][j];
+            A[piv][j] = t;
+        }
+        for (i = 0; i < 6; i++) {
+            double f;
+            if (i == c) continue;
+            f = A[i][c] / A[c][c];
+            for (j = 0; j < 12; j++) A[i][j] -= f * A[c][j];
+        }
+    }
+    for (i = 0; i < 6; i++) {
+        dx[i] = (i < 3) ? ldexp(1.0, -DH_QPOS_FRAC) : ldexp(2.0, -30);
+        for (k = 0; k < 3; k++)
+            dx[i] += fabs(J[i][k]) * ((d->j[k].type == DH_JOINT_REVOLUTE) ? ldexp(2.0, -16) : ldexp(2.0, -DH_QPOS_FRAC));
+    }
+    for (i = 0; i < nj; i++) {
+        double b = 0.0;
+        for (j = 0; j < 6; j++) b += fabs(A[i][6 + j] / A[i][i]) * dx[j];
+        if (d->j[i].type == DH_JOINT_PRISMATIC) b /= LS; /* as jdiff */
+        if (b > tol) return 0;
+    }
+    return 1;
+}
+
+
+/* normalised distances of q from the singularities (as test_ikc_ur.c):
+ * part[0] shoulder |u| / L, part[1] elbow |a2 a3 s3| / (|a2| + |a3|)^2,
+ * part[2] wrist |s5|; SCARA: part[1] = |a1 a2 s2| / (|a1| + |a2|)^2 */
+static double sing_parts(const dhs_robot *d, const double *q, double part[3])
+{
+    dhs_mat4_d F[DHS_MAX_JOINTS];
+    double m;
+    int i;
+    part[0] = part[2] = 1.0;
+    if (d->n == 4u) {
+        const double a1 = fabs(d->j[0].a), a2 = fabs(d->j[1].a);
+        part[1] = a1 * a2 * fabs(sin((q[1] + d->j[1].theta_deg) * D2R)) / ((a1 + a2) * (a1 + a2));
+    } else {
+        const double a2 = fabs(d->j[1].a), a3 = fabs(d->j[2].a);
+        double L = 0, u;
+        unsigned j;
+        for (j = 0; j < d->n; j++) L += fabs(d->j[j].a) + fabs(d->j[j].d);
+        dhs_fk_desc(d, q, F, NULL);
+        u = (F[4].m[3][0] - d->base.m[3][0]) * F[0].m[0][0] + (F[4].m[3][1] - d->base.m[3][1]) * F[0].m[0][1] +
+            (F[4].m[3][2] - d->base.m[3][2]) * F[0].m[0][2];
+        part[0] = fabs(u) / L;
+        part[1] = a2 * a3 * fabs(sin((q[2] + d->j[2].theta_deg) * D2R)) / ((a2 + a3) * (a2 + a3));
+        part[2] = fabs(sin((q[4] + d->j[4].theta_deg) * D2R));
+    }
+    m = part[0];
+    for (i = 1; i < 3; i++)
+        if (part[i] < m) m = part[i];
+    return m;
+}
+
+/* SCARA: the rounding of the target and of the Q16.16 arm angles moves the
+ * exact solution by about J^-1 of it; the 2R Jacobian's determinant is
+ * a1 a2 s2, so the bound is (|a1| + |a2|) (2 LSB) / |a1 a2 s2| */
+static int scara_conditioned(const dhs_robot *d, const double *q)
+{
+    const double a1 = fabs(d->j[0].a), a2 = fabs(d->j[1].a);
+    const double det = a1 * a2 * fabs(sin((q[1] + d->j[1].theta_deg) * D2R));
+    const double dx = 4.0 * ldexp(1.0, -DH_QPOS_FRAC) + (a1 + a2) * ldexp(2.0, -16) * D2R;
+    return (a1 + a2) * dx / det / D2R <= 0.5 * COMP_DEG;
+}
+
+static void random_run(const dhs_robot *d, dh_ikc_kind kind, long iters)
+{
+    dh_robot r;
+    dh_ikc_model_q m;
+    stats st;
+    long it;
+    memset(&st, 0, sizeof st);
+    build(d, &r, &m, kind);
+    for (it = 0; it < iters; it++) {
+        double q[6] = {0}, part[3];
+        int32_t qq[6] = {0};
+        dhs_mat4_d Td;
+        dh_frame_q T;
+        dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+        uint32_t ns = 0;
+        dh_status rc;
+        int comp, found;
+        dhs_random_q(d, q);
+        dhs_q_from_double(&r, q, qq);
+        comp = sing_parts(d, q, part) >= AWAY &&
+               (d->n == 4u ? scara_conditioned(d, q) : well_conditioned_to(d, q, 0.5 * COMP_DEG, 6));
+        dhs_fk_ref_q(&r, qq, NULL, &Td);
+        to_frame(&Td, &T);
+        rc = dh_ikc_q(&m, &T, NULL, 0u, sol, &ns);
+        if (rc == DH_ERR_LIMIT && !comp) rc = dh_ikc_q(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns);
+        DHT_TRUE_MSG(rc == DH_OK && ns >= 1u, "%s: status %d, %u solutions for q %.6f %.6f %.6f %.6f %.6f %.6f",
+                     d->name, (int)rc, (unsigned)ns, q[0], q[1], q[2], q[3], q[4], q[5]);
+        found = check_sols(&r, &Td, sol, ns, qq, &st);
+        st.targets++;
+        if (comp) {
+            st.comp++;
+            DHT_TRUE_MSG(found >= 0, "%s: generating configuration %.6f %.6f %.6f %.6f %.6f %.6f not among %u solutions",
+                         d->name, q[0], q[1], q[2], q[3], q[4], q[5], (unsigned)ns);
+        }
+    }
+    dht_printf("%s: %ld targets (%ld completeness), %ld solutions, max err %.3g mm, %.3g\n", d->name, st.targets,
+               st.comp, st.sols, st.pos, st.rot);
+    DHT_TRUE(st.comp >= iters / 4);
+}
+
+static void ur_random(void)
+{
+    dhs_robot d;
+    robot_mm(&d, &dhs_ur3_mm);
+    random_run(&d, DH_IKC_PARALLEL_234, DHT_ITER(10000));
+    robot_mm(&d, &dhs_ur5_mm);
+    random_run(&d, DH_IKC_PARALLEL_234, DHT_ITER(10000));
+    robot_mm(&d, &dhs_ur10_mm);
+    random_run(&d, DH_IKC_PARALLEL_234, DHT_ITER(10000));
+}
+
+static void scara_random(void)
+{
+    dhs_robot d;
+    robot_mm(&d, &dhs_cobra600_mm);
+    random_run(&d, DH_IKC_SCARA, DHT_ITER(10000));
+}
+
+/* ---- singular cases ------------------------------------------------------- */
+
+/* solve q (Q values) with qref, every solution FK-correct; the flags ORed,
+ * the count returned */
+static uint32_t solve_q(const dh_robot *r, const dh_ikc_model_q *m, const int32_t *qq, const int32_t *qref,
+                        dh_ikc_sol_q *sol, uint32_t *fl)
+{
+    dhs_mat4_d Td;
+    dh_frame_q T;
+    uint32_t ns = 0, s;
+    dhs_fk_ref_q(r, qq, NULL, &Td);
+    to_frame(&Td, &T);
+    DHT_EQ_INT(dh_ikc_q(m, &T, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_OK);
+    (void)check_sols(r, &Td, sol, ns, NULL, NULL);
+    *fl = 0u;
+    for (s = 0; s < ns; s++) *fl |= sol[s].flags;
+    return ns;
+}
+
+/* 1 when qq is among the solutions within tol deg */
+static int among(const dh_robot *r, const dh_ikc_sol_q *sol, uint32_t ns, const int32_t *qq, double tol)
+{
+    uint32_t s, i;
+    for (s = 0; s < ns; s++) {
+        double w = 0.0;
+        for (i = 0; i < r->n; i++) {
+            double dd = jdiff(r, i, sol[s].q[i], qq[i]);
+            if (dd > w) w = dd;
+        }
+        if (w <= tol) return 1;
+    }
+    return 0;
+}
+
+static const dhs_robot *const g_ur[3] = {&dhs_ur3_mm, &dhs_ur5_mm, &dhs_ur10_mm};
+
+/* q5 = 0 or 180: wrist singular, joint 6 from q_ref */
+static void ur_wrist_singular(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < 3u; ri++) {
+        dhs_robot d;
+        dh_robot r;
+        dh_ikc_model_q m;
+        long it, n = 0;
+        robot_mm(&d, g_ur[ri]);
+        build(&d, &r, &m, DH_IKC_PARALLEL_234);
+        /* until DHT_ITER(500) targets pass the filter (at most 20 times as many tries) */
+        for (it = 0; it < 20L * DHT_ITER(500) && n < DHT_ITER(500); it++) {
+            double q[6], part[3];
+            int32_t qq[6], qref[6] = {0};
+            dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+            uint32_t ns, fl;
+            dhs_random_q(&d, q);
+            q[4] = (it & 1) ? 180.0 : 0.0;
+            (void)sing_parts(&d, q, part);
+            if (part[0] < 0.1 || part[1] < 0.1) continue;
+            dhs_q_from_double(&r, q, qq);
+            qref[5] = qq[5];
+            ns = solve_q(&r, &m, qq, qref, sol, &fl);
+            DHT_TRUE_MSG((fl & DH_IKC_SING_WRIST) != 0u, "%s: q5 = %g not flagged", d.name, q[4]);
+            DHT_TRUE(ns <= 6u);
+            DHT_TRUE_MSG(among(&r, sol, ns, qq, 1e-2), "%s: q not found with qref6 = q6", d.name);
+            n++;
+        }
+        DHT_TRUE(n > 0);
+    }
+}
+
+/* the joint 5 point on the cylinder u = 0: flagged, returned once */
+static void ur_shoulder_singular(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < 3u; ri++) {
+        dhs_robot d;
+        dh_robot r;
+        dh_ikc_model_q m;
+        long it;
+        int found = 0;
+        robot_mm(&d, g_ur[ri]);
+        build(&d, &r, &m, DH_IKC_PARALLEL_234);
+        for (it = 0; it < 20L * DHT_ITER(500) && found < DHT_ITER(500); it++) {
+            const double a2 = d.j[1].a, a3 = d.j[2].a, e5 = d.j[4].d;
+            double q[6], X, Y, R, c, phi;
+            int32_t qq[6];
+            dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+            uint32_t ns, fl;
+            dhs_random_q(&d, q);
+            phi = (q[1] + q[2] + q[3]) * D2R;
+            X = a2 + a3 * cos(q[2] * D2R);
+            Y = a3 * sin(q[2] * D2R);
+            R = sqrt(X * X + Y * Y);
+            c = -e5 * sin(phi);
+            if (fabs(c) >= R) continue;
+            q[1] = (-atan2(Y, X) + ((it & 1) ? 1 : -1) * acos(c / R)) / D2R;
+            q[3] = phi / D2R - q[1] - q[2];
+            dhs_q_from_double(&r, q, qq);
+            ns = solve_q(&r, &m, qq, NULL, sol, &fl);
+            DHT_TRUE_MSG((fl & DH_IKC_SING_SHOULDER) != 0u, "%s: u = 0 not flagged", d.name);
+            DHT_TRUE_MSG(ns <= 4u, "%s: %u solutions with the shoulder branches merged", d.name, (unsigned)ns);
+            found++;
+        }
+        DHT_TRUE(found > 0);
+    }
+}
+
+/* stretched or folded elbow: UR q3 = 0 / 180, SCARA q2 = 0 */
+static void elbow_singular(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < 4u; ri++) {
+        dhs_robot d;
+        dh_robot r;
+        dh_ikc_model_q m;
+        long it, n = 0;
+        robot_mm(&d, ri < 3u ? g_ur[ri] : &dhs_cobra600_mm);
+        build(&d, &r, &m, ri < 3u ? DH_IKC_PARALLEL_234 : DH_IKC_SCARA);
+        for (it = 0; it < 20L * DHT_ITER(500) && n < DHT_ITER(500); it++) {
+            double q[6] = {0}, part[3];
+            int32_t qq[6] = {0};
+            dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+            uint32_t ns, fl, j = (d.n == 4u) ? 1u : 2u;
+            dhs_random_q(&d, q);
+            q[j] = (d.n == 6u && (it & 1)) ? 180.0 : 0.0;
+            (void)sing_parts(&d, q, part);
+            if (part[0] < 0.1 || part[2] < 0.1) continue;
+            dhs_q_from_double(&r, q, qq);
+            ns = solve_q(&r, &m, qq, NULL, sol, &fl);
+            DHT_TRUE_MSG((fl & DH_IKC_SING_ELBOW) != 0u, "%s: q%u = %g not flagged", d.name, (unsigned)j + 1u, q[j]);
+            DHT_TRUE(ns <= (d.n == 4u ? 1u : 7u));
+            n++;
+        }
+        DHT_TRUE(n > 0);
+    }
+}
+
+/* SCARA with joint 3's frame origin on axis 1 (a1 = a2 folded is not the
+ * Cobra; a test table with equal links): joint 1 from q_ref, flagged */
+static void scara_shoulder_singular(void)
+{
+    dhs_robot d;
+    dh_robot r;
+    dh_ikc_model_q m;
+    double q[6] = {30.0, 180.0, 100.0 * LS, 20.0, 0.0, 0.0};
+    int32_t qq[6] = {0}, qref[6] = {0};
+    dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+    uint32_t ns, fl;
+    robot_mm(&d, &dhs_cobra600_mm);
+    d.j[1].a = d.j[0].a;
+    d.j[1].qmin = -180.0;
+    d.j[1].qmax = 180.0;
+    build(&d, &r, &m, DH_IKC_SCARA);
+    dhs_q_from_double(&r, q, qq);
+    qref[0] = qq[0];
+    ns = solve_q(&r, &m, qq, qref, sol, &fl);
+    DHT_TRUE((fl & DH_IKC_SING_SHOULDER) != 0u);
+    DHT_TRUE((fl & DH_IKC_SING_ELBOW) != 0u);
+    DHT_EQ_INT(ns, 1);
+    DHT_TRUE(among(&r, sol, ns, qq, COMP_DEG));
+}
+
+/* ---- unreachable and statuses --------------------------------------------- */
+
+static void unreachable(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < 4u; ri++) {
+        dhs_robot d;
+        dh_robot r;
+        dh_ikc_model_q m;
+        long it;
+        robot_mm(&d, ri < 3u ? g_ur[ri] : &dhs_cobra600_mm);
+        build(&d, &r, &m, ri < 3u ? DH_IKC_PARALLEL_234 : DH_IKC_SCARA);
+        for (it = 0; it < DHT_ITER(200); it++) {
+            double q[6] = {0}, L = 0, sc, rxy;
+            int32_t qq[6] = {0};
+            dhs_mat4_d Td;
+            dh_frame_q T;
+            dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+            uint32_t ns = 9, i;
+            for (i = 0; i < d.n; i++) L += fabs(d.j[i].a) + fabs(d.j[i].d);
+            dhs_random_q(&d, q);
+            dhs_q_from_double(&r, q, qq);
+            dhs_fk_ref_q(&r, qq, NULL, &Td);
+            rxy = sqrt(Td.m[3][0] * Td.m[3][0] + Td.m[3][1] * Td.m[3][1]);
+            sc = dht_rand_uniform(1.2, 5.0) * L / (rxy > 1e-3 ? rxy : 1e-3);
+            Td.m[3][0] *= sc;
+            Td.m[3][1] *= sc;
+            to_frame(&Td, &T);
+            DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, 0u, sol, &ns), DH_ERR_UNREACHABLE);
+            DHT_EQ_INT(ns, 0);
+        }
+        if (d.n == 4u) {
+            /* a tool axis not parallel to the joint axes */
+            double q[6] = {10.0, 20.0, 100.0 * LS, 30.0, 0.0, 0.0};
+            int32_t qq[6] = {0};
+            dhs_mat4_d Td, Rx, T2;
+            dh_frame_q T;
+            dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+            uint32_t ns = 9;
+            dhs_q_from_double(&r, q, qq);
+            dhs_fk_ref_q(&r, qq, NULL, &Td);
+            dhs_rotx(&Rx, 0.01);
+            dhs_mul(&T2, &Td, &Rx);
+            to_frame(&T2, &T);
+            DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, 0u, sol, &ns), DH_ERR_UNREACHABLE);
+            DHT_EQ_INT(ns, 0);
+        }
+    }
+}
+
+/* the joint 5 point (UR) or joint 3 origin (SCARA) beyond 2^30 LSB: OVERFLOW */
+static void overflow(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < 2u; ri++) {
+        dhs_robot d;
+        dh_robot r;
+        dh_ikc_model_q m;
+        dh_frame_q T;
+        dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+        uint32_t ns = 9;
+        int i;
+        robot_mm(&d, ri == 0u ? &dhs_ur5_mm : &dhs_cobra600_mm);
+        build(&d, &r, &m, ri == 0u ? DH_IKC_PARALLEL_234 : DH_IKC_SCARA);
+        memset(&T, 0, sizeof T);
+        for (i = 0; i < 3; i++) T.r[i][i] = (int32_t)1 << 30;
+        if (ri == 1u) { /* tool axis down as the Cobra's */
+            T.r[1][1] = -((int32_t)1 << 30);
+            T.r[2][2] = -((int32_t)1 << 30);
+        }
+        T.p[0] = INT32_MAX;
+        T.p[1] = 5;
+        T.p[2] = 7;
+        DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, 0u, sol, &ns), DH_ERR_OVERFLOW);
+        DHT_EQ_INT(ns, 0);
+    }
+}
+
+/* what the fixed detectors recognise: as the float ones */
+static void detect(void)
+{
+    dhs_robot d;
+    dh_robot r;
+    dh_ikc_model_q m;
+    robot_mm(&d, &dhs_ur5_mm);
+    d.j[1].alpha_deg = 1.0; /* axes 2, 3 not parallel */
+    DHT_EQ_INT(dhs_build(&d, &r), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_q(&r, &m), DH_ERR_UNAVAILABLE);
+    DHT_EQ_INT(m.kind, DH_IKC_NONE);
+    DHT_EQ_INT(m.why, DH_IKC_WHY_WRIST);
+    robot_mm(&d, &dhs_ur5_mm);
+    d.j[4].a = 10.0; /* a5 != 0 */
+    DHT_EQ_INT(dhs_build(&d, &r), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_q(&r, &m), DH_ERR_UNAVAILABLE);
+    DHT_EQ_INT(m.why, DH_IKC_WHY_WRIST);
+    robot_mm(&d, &dhs_cobra600_mm);
+    d.j[1].alpha_deg = 179.0; /* SCARA axes not parallel */
+    DHT_EQ_INT(dhs_build(&d, &r), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_q(&r, &m), DH_ERR_UNAVAILABLE);
+    DHT_EQ_INT(m.why, DH_IKC_WHY_AXES);
+}
+
+static const dht_case cases[] = {
+    DHT_CASE(ur_random),
+    DHT_CASE(scara_random),
+    DHT_CASE(ur_wrist_singular),
+    DHT_CASE(ur_shoulder_singular),
+    DHT_CASE(elbow_singular),
+    DHT_CASE(scara_shoulder_singular),
+    DHT_CASE(unreachable),
+    DHT_CASE(overflow),
+    DHT_CASE(detect),
+};
+DHT_MAIN(cases)
