@@ -102,7 +102,10 @@ static DH_NOINLINE unsigned iku_elbow(int32_t l1, int32_t l2, int32_t vx, int32_
     s2 = dh_ikc_fit31_q_(df);
     if (((s1 + s2) & 1u) != 0u) s1++;
     S = dh_q_isqrt62((uint64_t)dh_q_mul64((int32_t)(ds >> s1), (int32_t)(df >> s2)));
-    Kd >>= (s1 + s2) >> 1;
+    {
+        const unsigned sh2 = (s1 + s2) >> 1;
+        Kd >>= sh2;
+    }
     while ((((uint64_t)S | iku_abs64(Kd)) >> sh) >= ((uint64_t)1 << 30)) sh++;
     out[0] = (sh != 0u) ? (int32_t)dh_q_rshr((int64_t)S, sh) : (int32_t)S;
     out[1] = (sh != 0u) ? (int32_t)dh_q_rshr(Kd, sh) : (int32_t)Kd;
@@ -144,7 +147,7 @@ int dh_ikc_detect_par234_q_(dh_ikc_model_q *m)
     if (iku_abs64(h) > (uint64_t)IKU_POS_LIM) return 0;
     k[P_H] = (int32_t)h;
     k[P_E5] = k[P_SB] * m->d[4];
-    k[P_W + 0] = m->a[5];
+    k[P_W] = m->a[5];
     k[P_W + 1] = iku_r30(dh_q_mul64(m->d[5], m->sa[5]));
     k[P_W + 2] = iku_r30(dh_q_mul64(m->d[5], m->ca[5]));
     m->kind = DH_IKC_PARALLEL_234;
@@ -415,7 +418,7 @@ int dh_ikc_detect_scara_q_(dh_ikc_model_q *m)
     z0 = (int64_t)m->d[0] + k[S_S1] * (int64_t)m->d[1];
     if (iku_abs64(z0) > (uint64_t)IKU_POS_LIM) return 0;
     k[S_Z0] = (int32_t)z0;
-    k[S_P + 0] = m->a[3];
+    k[S_P] = m->a[3];
     k[S_P + 1] = iku_r30(dh_q_mul64(m->d[3], m->sa[3]));
     k[S_P + 2] = iku_r30(dh_q_mul64(m->d[3], m->ca[3]));
     m->kind = DH_IKC_SCARA;

@@ -467,7 +467,7 @@ DH_SPEED_INLINE void dh_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
     /* the columns of R_A R_B (aff) or of A B: B's columns read before out
      * is written */
-    for (i = 0; i < 4 - aff; i++) dh_lin(A, B->m[i], t.m[i], 4 - aff);
+    for (i = 0; i < 4 - aff; i++) dh_lin(A, B->m[i], &t.m[i][0], 4 - aff);
     if (aff) {
         /* column 3: R_A p_B + p_A, A applied to the point p_B */
         dh_lin3(A, B->m[3][0], B->m[3][1], B->m[3][2], t.m[3], 4);
