@@ -42,7 +42,10 @@
  * at q_ref's value, flagged DH_IKC_SING_SHOULDER, which also marks the
  * PARALLEL_234 shoulder branches met (that point on the cylinder about
  * axis 1 whose radius is the arm's offset along axis 2). Elbow stretched
- * or folded: flagged DH_IKC_SING_ELBOW.
+ * or folded: flagged DH_IKC_SING_ELBOW. A target within the rounding of
+ * the workspace's boundary (the wrist centre on the shoulder cylinder, the
+ * elbow folded) may be reported DH_ERR_UNREACHABLE: its rounded inputs can
+ * lie just outside (docs/accuracy_kin.md counts such targets).
  *
  * Accuracy (tests against double, test/test_ikc*.c; measured figures:
  * docs/accuracy_kin.md): for every solution FK(q) matches the target within
