@@ -219,7 +219,10 @@ static DH_NOINLINE int ikq_rigid3(const int32_t *c0, const int32_t *c1, const in
             if (dh_q_abs_u32(c[a][i]) > IKQ_ENTRY_MAX) return 0;
     for (a = 0; a < 3u; a++)
         for (b = a; b < 3u; b++) {
-            int32_t d = ikq_r30(dh_q_mla64(dh_q_mla64(dh_q_mul64(c[a][0], c[b][0]), c[a][1], c[b][1]), c[a][2], c[b][2]));
+            /* the dot product rounded in 64 bits: up to 3.63 (above the
+             * int32 range of Q2.30) before the identity is subtracted */
+            int64_t d = dh_q_rshr(dh_q_mla64(dh_q_mla64(dh_q_mul64(c[a][0], c[b][0]), c[a][1], c[b][1]), c[a][2], c[b][2]),
+                                  30u);
             if (a == b) d -= DH_Q_ONE30;
             if (d > IKQ_RIGID_TOL || d < -IKQ_RIGID_TOL) return 0;
         }

@@ -778,6 +778,13 @@ static void solve_errors(void)
     X = T;
     X.r[1][1] = INT32_MIN;
     EXPECT_UNTOUCHED(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_NOT_RIGID);
+    /* regression: every entry 1.09 (each below the 1.1 entry bound), so a
+     * column's dot product, 3.56, lies above the int32 range of Q2.30 (it
+     * was rounded to int32 and overflowed when 1 was subtracted) */
+    for (i = 0; i < 9; i++) X.r[i / 3][i % 3] = (int32_t)(1.09 * 1073741824.0);
+    EXPECT_UNTOUCHED(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_NOT_RIGID);
+    for (i = 0; i < 9; i++) X.r[i / 3][i % 3] = (i % 2) ? -(int32_t)(1.09 * 1073741824.0) : (int32_t)(1.09 * 1073741824.0);
+    EXPECT_UNTOUCHED(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_NOT_RIGID);
     /* far away: overflow (any coordinate, INT32_MIN and INT32_MAX included) */
     for (i = 0; i < 3; i++) {
         X = T;
