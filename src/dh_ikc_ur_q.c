@@ -54,9 +54,11 @@
 #define IKU_SING ((int32_t)1 << 11)
 /* on axis 1: within 16 LSB */
 #define IKU_SING_AXIS 16
-/* reach tolerance 2^7 LSB, elbow fold 2^3 LSB (as dh_ikc_q.c) */
+/* reach tolerance 2^7 LSB; elbow fold 2^5 LSB: the UR planar point carries the
+ * error of the wrist terms (a few LSB), which a 2^3 LSB band missed for the
+ * UR3 folded (|a2| - |a3| = 30 mm) */
 #define IKU_REACH_SH 7
-#define IKU_FOLD_SH 3
+#define IKU_FOLD_SH 5
 /* shoulder cylinder band: px^2 + py^2 - h^2 within 2^4 (|h| + 1), a point
  * within 8 LSB of the cylinder */
 #define IKU_CYL_SH 4
