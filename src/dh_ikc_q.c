@@ -750,6 +750,9 @@ static DH_NOINLINE void ikq_wrist(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, un
     z[0] = ikq_r30(dh_q_mla64(dh_q_mul64(sc[1], z[0]), sc[0], z[1]));
     if (k[K_S5] < 0) z[0] = -z[0];
     if (k[K_S4] == k[K_S5]) z[2] = -z[2];
+    /* (s5, c5) = (0, 0) only for a degenerate M (saturated entries): t5 = 0
+     * then, as dh_ikc_atan2_q_ answers (0, 0) */
+    t5 = 0;
     (void)dh_atan2_q(z[0], z[2], &t5);
     /* m' = Rz(-t4) M e_x into n[0], n[1] */
     ikq_rot2(&n[0], &n[1], sc[1], sc[0]);
