@@ -224,6 +224,17 @@ static void ikc_completeness(void)
     }
 }
 
+/* a joint of q exactly on one of its limits (where dh_ik_f32 clamps) */
+static int on_limit(const dh_robot *r, const float *q)
+{
+    uint32_t i;
+    for (i = 0; i < r->n; i++) {
+        const dh_joint *j = &r->joint[i];
+        if (j->qmin <= j->qmax && (q[i] == j->qmin || q[i] == j->qmax)) return 1;
+    }
+    return 0;
+}
+
 /* dh_ik_f32 from random starts (no restarts) on random targets: every
  * converged in-limit result is one of the closed-form solutions. */
 static void ikc_numerical_completeness(void)
@@ -253,7 +264,10 @@ static void ikc_numerical_completeness(void)
                 continue;
             }
             target_of(&r, q, &T);
-            DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, 0u, sol, &n_sol), DH_OK);
+            /* out-of-limit solutions kept: dh_ik_f32 stops on a limit with a
+             * residual below its tolerance, where the exact solution may lie
+             * a rounding beyond it (matched only then, see on_limit) */
+            DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_sol), DH_OK);
             for (st_i = 0; st_i < starts; st_i++) {
                 double q0d[NJ];
                 float q0[NJ], qs[NJ];
@@ -268,6 +282,7 @@ static void ikc_numerical_completeness(void)
                     double dd[NJ], dq;
                     for (i = 0; i < r.n; i++) dd[i] = (double)qs[i];
                     dq = q_dist(&r, sol[s].q, dd);
+                    if ((sol[s].flags & DH_IKC_OUT_OF_LIMITS) != 0u && !on_limit(&r, qs)) continue;
                     if (dq < best) best = dq;
                     if (dq <= 0.05) hit |= 1u << s;
                 }
