@@ -46,7 +46,12 @@ static dh_status set_frame_f32(dh_robot *r, const dh_mat4_f32 *src, unsigned whi
     st = frame_to_fix(src, &F, &bad);
     if (st & 2u) return DH_ERR_NAN;
     if (bad & 2u) return DH_ERR_NOT_RIGID;
-    *((which != 0u) ? &r->tool : &r->base) = *src;
+    {
+        /* element by element: a loop is smaller than the unrolled struct copy */
+        dh_mat4_f32 *dst = (which != 0u) ? &r->tool : &r->base;
+        unsigned e;
+        for (e = 0u; e < 16u; e++) dst->m[e >> 2][e & 3u] = src->m[e >> 2][e & 3u];
+    }
     if (st == 0u) {
         /* fixed copy and its bits; this marks the float frame stale, which
          * dh_robot_flags_ below corrects */
@@ -68,8 +73,12 @@ dh_status dh_robot_set_tool_f32(dh_robot *r, const dh_mat4_f32 *tool)
     return set_frame_f32(r, tool, 1u);
 }
 
-/* The setters' sequence for the empty description: every slot an empty
- * joint (n reset to 0), identity base and tool, from no flag at all. */
+/* The state the setters leave for the empty description (every slot the
+ * joint dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, 0, 0, 0, 0) writes, n
+ * reset to 0, identity base and tool set with the float setters), made
+ * with the integer setter (which writes the same slot), identity frames and
+ * the flags of that state: no float arithmetic, so a firmware building its
+ * robot with the _q setters links no soft float. */
 dh_status dh_robot_init(dh_robot *r, dh_convention conv)
 {
     DH_ASSERT(r != NULL);
@@ -77,13 +86,16 @@ dh_status dh_robot_init(dh_robot *r, dh_convention conv)
     r->conv = conv;
     r->n = 0u;
     r->flags = 0u;
-    while (dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.0f, 0.0f) == DH_OK) {
+    while (dh_robot_add_joint_q(r, DH_JOINT_REVOLUTE, 0, 0, 0, 0) == DH_OK) {
     }
     r->n = 0u;
-    /* the base setter copies r->base onto itself (read before stored) */
+    /* the identities are constants (no float arithmetic either) */
     dh_mat4_identity_f32(&r->base);
-    (void)set_frame_f32(r, &r->base, 0u);
-    (void)set_frame_f32(r, &r->base, 1u);
+    dh_mat4_identity_f32(&r->tool);
+    dh_frame_identity_q(&r->base_q);
+    dh_frame_identity_q(&r->tool_q);
+    r->flags = dh_robot_summary_(DH_ROBOT_BASE_ID_F32 | DH_ROBOT_TOOL_ID_F32 | DH_ROBOT_BASE_ID_Q |
+                                 DH_ROBOT_TOOL_ID_Q | DH_ROBOT_BASE_SMALL_Q);
     return DH_OK;
 }
 
@@ -109,18 +121,17 @@ dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float theta_de
         /* fixed copy of an unavailable joint: zeros, sin/cos 0 and 1 */
         for (k = 0; k < 4; k++) x[k] = 0;
     }
-    /* nothing fails from here on: the float fields first (no float kept
-     * across the calls), then the fixed half and sin/cos of alpha */
+    /* nothing fails from here on: the fixed half (which also writes the
+     * slot's float fields as for a joint without them, no limits among
+     * them), then the float parameters and sin/cos of alpha */
     f = r->flags;
     j = &r->joint[r->n];
+    (void)dh_robot_add_joint_q(r, type, x[3], x[1], x[0], x[2]);
     j->a = v[0];
     j->d = v[1];
     j->alpha_deg = v[2];
     j->theta_deg = v[3];
-    j->qmin = 1.0f;
-    j->qmax = -1.0f;
-    (void)dh_robot_add_joint_q(r, type, x[3], x[1], x[0], x[2]);
-    (void)dh_sincos_f32(j->alpha_deg, &j->sa, &j->ca); /* finite input: cannot fail */
+    (void)dh_sincos_f32(v[2], &j->sa, &j->ca); /* finite input: cannot fail */
     /* dh_robot_add_joint_q marked the float path unavailable: undo that
      * unless an earlier joint was added with it (f: the flags before) */
     dh_robot_flags_(r, DH_ROBOT_F32_NO_JOINT & ~f, (uint32_t)st * DH_ROBOT_Q_NO_JOINT); /* st 0 or 1 */

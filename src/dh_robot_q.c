@@ -4,9 +4,20 @@
  * and fixed frame setter the float setters of dh_robot.c share. No float,
  * no libm, no 64-bit division.
  */
+#include <string.h>
+
 #include "dhmath/dh_robot.h"
 #include "dhmath/dh_trig.h"
 #include "dh_robot_impl.h"
+
+/* Bit patterns of float constants, stored as integers: no float
+ * arithmetic. */
+#define DH_F32_BITS_ONE 0x3F800000u
+
+static void put_f32_bits(float *dst, uint32_t bits)
+{
+    memcpy(dst, &bits, sizeof bits);
+}
 
 void dh_robot_flags_(dh_robot *r, uint32_t clear, uint32_t set)
 {
@@ -37,17 +48,26 @@ dh_status dh_robot_add_joint_q(dh_robot *r, dh_joint_type type, dh_q16 theta_deg
     DH_ASSERT(r != NULL);
     if (r->n >= (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if (type != DH_JOINT_REVOLUTE && type != DH_JOINT_PRISMATIC) return DH_ERR_ARG;
-    /* the float fields of slot n still hold the zeros of dh_robot_init()
-     * (joints are only ever appended) */
+    /* the float fields as for a joint without float parameters: +0, sin
+     * and cos of alpha 0 and 1, no limits (qmin 1 > qmax 0; dh_robot_add_joint_f32 then
+     * stores its own), as bit patterns: no float arithmetic */
     j = &r->joint[r->n];
     j->type = type;
     j->a_q = a;
     j->d_q = d;
     j->alpha_q = alpha_deg;
     j->theta_q = theta_deg;
-    dh_sincos_q(alpha_deg, &j->sa_q, &j->ca_q);
     j->qmin_q = 1;
-    j->qmax_q = -1;
+    j->qmax_q = 0;
+    dh_sincos_q(alpha_deg, &j->sa_q, &j->ca_q);
+    put_f32_bits(&j->a, 0u);
+    put_f32_bits(&j->d, 0u);
+    put_f32_bits(&j->alpha_deg, 0u);
+    put_f32_bits(&j->theta_deg, 0u);
+    put_f32_bits(&j->qmin, DH_F32_BITS_ONE);
+    put_f32_bits(&j->qmax, 0u);
+    put_f32_bits(&j->sa, 0u);
+    put_f32_bits(&j->ca, DH_F32_BITS_ONE);
     r->n++;
     dh_robot_flags_(r, 0u, DH_ROBOT_F32_NO_JOINT);
     return DH_OK;

@@ -488,7 +488,7 @@ static void check_empty(const dh_robot *r, dh_convention conv)
         DHT_EQ_F32_BITS(j->alpha_deg, 0.0f);
         DHT_EQ_F32_BITS(j->theta_deg, 0.0f);
         DHT_EQ_F32_BITS(j->qmin, 1.0f);
-        DHT_EQ_F32_BITS(j->qmax, -1.0f);
+        DHT_EQ_F32_BITS(j->qmax, 0.0f); /* no limits: qmin 1 > qmax 0 */
         DHT_EQ_F32_BITS(j->sa, 0.0f);
         DHT_EQ_F32_BITS(j->ca, 1.0f);
         DHT_EQ_INT(j->a_q, 0);
@@ -498,7 +498,7 @@ static void check_empty(const dh_robot *r, dh_convention conv)
         DHT_EQ_INT(j->sa_q, 0);
         DHT_EQ_INT(j->ca_q, DH_Q30_ONE);
         DHT_EQ_INT(j->qmin_q, 1);
-        DHT_EQ_INT(j->qmax_q, -1);
+        DHT_EQ_INT(j->qmax_q, 0);
     }
     for (c = 0; c < 4; c++) {
         for (k = 0; k < 4; k++) {

@@ -259,7 +259,61 @@ static void setter_sequences_pass(void)
     }
 }
 
+/* dh_robot_init (integer only) leaves the state of the float setters'
+ * sequence for the empty description: every slot the joint
+ * dh_robot_add_joint_f32(R, 0, 0, 0, 0) writes, n back to 0, identity base
+ * and tool set with dh_robot_set_base_f32 / _tool_f32; compared field by
+ * field (floats by their bits), then the flags and the check. */
+static void init_is_the_setter_sequence(void)
+{
+    static const dh_mat4_f32 id = HW_ID4;
+    unsigned conv;
+    for (conv = 0u; conv < 2u; conv++) {
+        dh_robot a, b;
+        uint32_t i;
+        memset(&a, 0xA5, sizeof a);
+        memset(&b, 0x5A, sizeof b);
+        DHT_EQ_INT(dh_robot_init(&a, (dh_convention)conv), DH_OK);
+        b.conv = (dh_convention)conv;
+        b.n = 0u;
+        b.flags = 0u;
+        b.base = id;
+        b.tool = id;
+        b.base_q = (dh_frame_q)HW_IDQ;
+        b.tool_q = (dh_frame_q)HW_IDQ;
+        for (i = 0u; i < (uint32_t)DH_MAX_JOINTS; i++)
+            DHT_EQ_INT(dh_robot_add_joint_f32(&b, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.0f, 0.0f), DH_OK);
+        b.n = 0u;
+        DHT_EQ_INT(dh_robot_set_base_f32(&b, &id), DH_OK);
+        DHT_EQ_INT(dh_robot_set_tool_f32(&b, &id), DH_OK);
+        DHT_EQ_INT(a.conv, b.conv);
+        DHT_EQ_INT(a.n, 0u);
+        DHT_EQ_INT(a.flags, b.flags);
+        DHT_EQ_INT(a.flags, DH_ROBOT_HAS_F32 | DH_ROBOT_HAS_Q | DH_ROBOT_BASE_ID_F32 | DH_ROBOT_TOOL_ID_F32 |
+                                DH_ROBOT_BASE_ID_Q | DH_ROBOT_TOOL_ID_Q | DH_ROBOT_BASE_SMALL_Q);
+        for (i = 0u; i < (uint32_t)DH_MAX_JOINTS; i++) {
+            const dh_joint *x = &a.joint[i], *y = &b.joint[i];
+            const float fx[8] = { x->a, x->d, x->alpha_deg, x->theta_deg, x->qmin, x->qmax, x->sa, x->ca };
+            const float fy[8] = { y->a, y->d, y->alpha_deg, y->theta_deg, y->qmin, y->qmax, y->sa, y->ca };
+            const int32_t ix[8] = { x->a_q, x->d_q, x->alpha_q, x->theta_q, x->sa_q, x->ca_q, x->qmin_q, x->qmax_q };
+            const int32_t iy[8] = { y->a_q, y->d_q, y->alpha_q, y->theta_q, y->sa_q, y->ca_q, y->qmin_q, y->qmax_q };
+            DHT_EQ_INT(x->type, DH_JOINT_REVOLUTE);
+            DHT_TRUE(x->qmin > x->qmax && x->qmin_q > x->qmax_q); /* no limits */
+            DHT_TRUE(x->ca == 1.0f && x->ca_q == DH_Q30_ONE && x->sa_q == 0);
+            DHT_EQ_INT(x->type, y->type);
+            DHT_TRUE_MSG(memcmp(fx, fy, sizeof fx) == 0, "joint %u: float fields differ", (unsigned)i);
+            DHT_TRUE_MSG(memcmp(ix, iy, sizeof ix) == 0, "joint %u: fixed fields differ", (unsigned)i);
+        }
+        DHT_TRUE(memcmp(&a.base, &b.base, sizeof a.base) == 0);
+        DHT_TRUE(memcmp(&a.tool, &b.tool, sizeof a.tool) == 0);
+        DHT_TRUE(memcmp(&a.base_q, &b.base_q, sizeof a.base_q) == 0);
+        DHT_TRUE(memcmp(&a.tool_q, &b.tool_q, sizeof a.tool_q) == 0);
+        DHT_EQ_INT(dh_robot_check(&a), DH_OK);
+    }
+}
+
 static const dht_case cases[] = {
+    DHT_CASE(init_is_the_setter_sequence),
     DHT_CASE(hand_written_const_robot_is_reported),
     DHT_CASE(corrupted_fields_are_reported),
     DHT_CASE(setter_sequences_pass),

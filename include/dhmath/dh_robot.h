@@ -125,6 +125,9 @@ typedef struct {
 /**
  * @brief Empty robot: n = 0, identity base and tool on both paths, both
  *        paths available (flags HAS_F32 | HAS_Q and the identity bits).
+ *
+ * Integer only (the float fields are stored as bit patterns): a firmware
+ * that builds its robot with this and the _q setters links no soft float.
  * @param r    robot to initialise (not NULL). Every field is written.
  * @param conv DH_CONV_STANDARD or DH_CONV_MODIFIED.
  * @return DH_OK, or DH_ERR_ARG for an unknown convention (r untouched).
