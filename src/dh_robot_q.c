@@ -48,9 +48,10 @@ dh_status dh_robot_add_joint_q(dh_robot *r, dh_joint_type type, dh_q16 theta_deg
     DH_ASSERT(r != NULL);
     if (r->n >= (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if (type != DH_JOINT_REVOLUTE && type != DH_JOINT_PRISMATIC) return DH_ERR_ARG;
-    /* the float fields as for a joint without float parameters: +0, sin
-     * and cos of alpha 0 and 1, no limits (qmin 1 > qmax 0; dh_robot_add_joint_f32 then
-     * stores its own), as bit patterns: no float arithmetic */
+    /* every field of the slot; the float ones (last) as for a joint
+     * without float parameters: +0, sin and cos of alpha 0 and 1, no
+     * limits (qmin 1 > qmax 0), as bit patterns (no float arithmetic);
+     * dh_robot_add_joint_f32 then stores its parameters over them */
     j = &r->joint[r->n];
     j->type = type;
     j->a_q = a;

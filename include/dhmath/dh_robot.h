@@ -159,9 +159,10 @@ dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float theta_de
 /**
  * @brief Append a joint from fixed-point parameters only (integer only).
  *
- * The float parameters of the joint stay at the 0 written by
- * dh_robot_init() and the float path is marked unavailable (DH_ROBOT_F32_NO_JOINT: dh_fk_f32() returns
- * DH_ERR_UNAVAILABLE). sin/cos(alpha) come from dh_sincos_q(alpha_deg). Limits: none.
+ * The joint's float parameters are set to +0 (sin/cos 0 and 1) and the
+ * float path is marked unavailable (DH_ROBOT_F32_NO_JOINT: dh_fk_f32()
+ * returns DH_ERR_UNAVAILABLE). sin/cos(alpha) come from
+ * dh_sincos_q(alpha_deg). Limits: none on either path.
  * @param r     robot (not NULL)
  * @param type  DH_JOINT_REVOLUTE or DH_JOINT_PRISMATIC
  * @param theta_deg, d, a, alpha_deg the DH table's row: angles degrees
