@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * accuracy_data.c - writes the CSV data behind the plots in docs/img/ and
  * docs/accuracy_plots.md (run by tools/plot_accuracy.py).

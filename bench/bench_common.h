@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bench_common.h - shared declarations of the host benchmark and the
  * accuracy data generator (host only, not part of the library).

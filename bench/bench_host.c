@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bench_host.c - host benchmark of dhmath against peer libraries
  * (the speed goals of docs/performance.md). Run through tools/bench.sh, which also collects the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bench_peers.cpp - the C++ peers of the host benchmark: Eigen (Matrix4f,
  * Isometry3f) and Orocos KDL (Frame, ChainFkSolverPos_recursive). Each

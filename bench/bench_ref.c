@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bench_ref.c - robot DH tables and the plain double-precision reference
  * forward kinematics used by the benchmark (as a timed peer) and by the

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Turns one tools/bench.sh run into docs/performance_host.md.
 
 Inputs: the timing CSV of bench_host (--csv), the callgrind_annotate

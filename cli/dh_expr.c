@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_expr.c - EXPR parser/evaluator of the dhmath host tool (see dh_expr.h).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file dh_expr.h
  * @brief Parser and evaluator of transform expressions (EXPR) for the host

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_gen.c - `dhmath gen ROBOT NAME`: the robot built by the library's
  * setters, printed as a C designated initialiser of a const dh_robot.

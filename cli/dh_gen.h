@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file dh_gen.h
  * @brief `dhmath gen`: a dh_robot written out as a C source that defines it

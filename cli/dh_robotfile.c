@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_robotfile.c - robot file parser of the dhmath host tool (see
  * dh_robotfile.h). Line by line over the caller's buffer; no heap.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file dh_robotfile.h
  * @brief Parser of dhmath robot description files (host tool), usable on

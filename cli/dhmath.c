@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dhmath.c - host command-line tool over the dhmath library.
  *

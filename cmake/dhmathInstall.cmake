@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Install rules of dhmath (included by the top-level CMakeLists.txt when
 # DH_INSTALL is ON):
 #   <prefix>/include/dhmath/*.h                 public headers

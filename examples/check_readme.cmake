@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Fails when README.md does not contain examples/readme_example.c verbatim.
 file(READ ${README} readme)
 file(READ ${EXAMPLE} example)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 // cpp_example.cpp - using dhmath from C++ (host, g++): the headers are
 // plain C with extern "C" guards, so the library links unchanged.
 //

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fuzz_compose_q.c - fixed-point frame arithmetic (dh_fixed.h) against an
  * exact 128-bit integer reference computed here.

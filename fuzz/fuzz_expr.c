@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fuzz_expr.c - the CLI's EXPR parser/evaluator (cli/dh_expr.h) on
  * arbitrary bytes.

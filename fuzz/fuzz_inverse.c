@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fuzz_inverse.c - general 4x4 inverse dh_mat4_inv_f32 and the automatic
  * choice dh_mat4_inv_auto_f32 (dh_mat4.h) on arbitrary and structured

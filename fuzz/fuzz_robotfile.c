@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fuzz_robotfile.c - the CLI's robot-file parser (cli/dh_robotfile.h) on
  * arbitrary bytes, then the library robot built from every file it

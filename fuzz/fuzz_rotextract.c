@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fuzz_rotextract.c - rotation extraction (dh_rot.h, dh_mat4.h):
  * angle-axis, Euler (all 24 sequences and invalid ones), quaternion,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fuzz_sincos.c - dh_sincos_f32 / dh_sincos_q on arbitrary angles.
  *

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # arm-none-eabi-common.cmake - shared part of dhmath's Cortex-M toolchain
 # files. A per-core file (cortex-m0plus.cmake, cortex-m3.cmake,
 # cortex-m4f.cmake, cortex-m7.cmake) sets

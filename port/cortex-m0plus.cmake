@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Cortex-M0+ (ARMv6-M): no FPU (soft float), no 32x32->64 multiply (SMULL),
 # no divide instruction, no SSAT/CLZ.
 # QEMU has no Cortex-M0+ model; ARMv6-M code runs on its cortex-m0 CPU.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Cortex-M4 with the single-precision FPU (FPv4-SP-D16), hard-float ABI.
 # Tests run on QEMU's mps2-an386 (AN386 FPGA image: Cortex-M4F).
 #   cmake -S . -B build-m4f -DCMAKE_TOOLCHAIN_FILE=port/cortex-m4f.cmake

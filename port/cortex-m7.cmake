@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Cortex-M7 with the double-precision FPU (FPv5-D16), hard-float ABI.
 # Tests run on QEMU's mps2-an500 (AN500 FPGA image: Cortex-M7). QEMU's
 # cortex-m7 model implements the double-precision FPv5 (MVFR0 reports

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # dh_cross_common.cmake - the part of dhmath's toolchain files that does not
 # depend on the architecture, included by arm-none-eabi-common.cmake and
 # riscv32-common.cmake after they set

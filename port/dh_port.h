@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file dh_port.h
  * @brief Port layer: the few Cortex-M instructions the fixed-point code

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_semihost.h - the semihosting calls of dhmath's test and example
  * firmware, shared by port/startup_cm.c (Cortex-M) and port/startup_rv.c

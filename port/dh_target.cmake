@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # dh_target.cmake - how target (Cortex-M or RV32, QEMU) test executables are linked.
 # Included by test/CMakeLists.txt when cross-compiling, after the `dht`
 # library target exists and before the test executables are created.

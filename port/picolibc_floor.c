@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * picolibc_floor.c - a correct floor() for the RV32 test firmware.
  *

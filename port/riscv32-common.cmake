@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # riscv32-common.cmake - shared part of dhmath's RV32 toolchain files
 # (riscv32-imac.cmake, riscv32-imafc.cmake). A per-core file sets
 #   _dh_arch_flags   the -march/-mabi flags

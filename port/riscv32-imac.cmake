@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # RISC-V RV32IMAC, ilp32: no FPU (soft float), with the M (multiply/divide,
 # MULH for the 64-bit product), A and C extensions. QEMU's sifive-e31 CPU
 # model is an RV32IMAC core (no F/D: a float instruction would trap).

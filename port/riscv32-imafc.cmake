@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # RISC-V RV32IMAFC, ilp32f: single-precision FPU (F), hard-float ABI for
 # float arguments; double is soft. QEMU's sifive-e34 CPU model is an
 # RV32IMAFC core (no D: a double-precision instruction would trap).

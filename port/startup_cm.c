@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * startup_cm.c - reset and fault handling for dhmath's Cortex-M test and
  * benchmark firmware under QEMU (any ARMv6-M / ARMv7-M / ARMv7E-M core).

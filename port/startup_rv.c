@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * startup_rv.c - reset and trap handling for dhmath's RISC-V (RV32) test and
  * example firmware under QEMU's `virt` machine, machine mode, bare metal.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_axis.c - equivalent angle and axis of a rotation (Paul 1981, eq. 1.72-1.103;
  * Example 1.1, eq. 1.104-1.112).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_config.c - the configuration check's symbols (include/dhmath/dh_config.h):
  * one per interface setting, named after the value this library is built

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_euler.c - Euler angles <-> rotation matrix for the 12 axis sequences,
  * intrinsic (upper-case names) and extrinsic (lower-case names), with the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_fk_q.c - fixed-point forward kinematics (integer only: no float, no
  * libm, no 64-bit division; checked with arm-none-eabi-nm).

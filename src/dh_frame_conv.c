@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_frame_conv.c - conversions between the float dh_mat4_f32 and the
  * fixed-point dh_frame_q. This is the only frame file that uses float (no

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_frame_q.c - fixed-point rigid frames (integer only).
  *

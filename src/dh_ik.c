@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_ik.c - numerical inverse kinematics in float: Levenberg-Marquardt with
  * the damping of Sugihara 2011, projected on the joint box, with

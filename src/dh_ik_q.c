@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_ik_q.c - numerical inverse kinematics in fixed point (integer only:
  * no float, no libm, no 64-bit division). The method of dh_ik.c

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_ikc.c - closed-form inverse kinematics, float: the front end (model,
  * canonical chain, target checks, offsets, 360-degree shifts, limits) and

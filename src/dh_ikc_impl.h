@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_ikc_impl.h - PRIVATE interface between the closed-form IK front ends
  * (dh_ikc.c float, dh_ikc_q.c fixed) and the family solvers (not installed).

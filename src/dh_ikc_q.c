@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_ikc_q.c - closed-form inverse kinematics, fixed point (integer only:
  * no float, no libm, no 64-bit division; checked by tools/check.sh guards):

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_ikc_ur.c - closed-form IK, float: six revolute joints with axes 2, 3,
  * 4 parallel (DH_IKC_PARALLEL_234, Universal Robots) and R-R-P-R with four

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_ikc_ur_q.c - closed-form IK, fixed point, integer only (no float,
  * libm or 64-bit division; tools/check.sh guards): six revolute joints with

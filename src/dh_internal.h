@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_internal.h - private helpers shared by every module of src/ (not
  * installed, not part of the API). Each helper is defined here once.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_itrig_f32.c - inverse trigonometry in degrees, float (contracts in
  * include/dhmath/dh_trig.h). The arithmetic is the libm-free atan2 of

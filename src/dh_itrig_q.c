@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_itrig_q.c - inverse trigonometry in fixed point: atan2 of two int32
  * and asin/acos of Q2.30, results in Q16.16 degrees (contracts in

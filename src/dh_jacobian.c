@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_jacobian.c - geometric Jacobian (base and tool frame) and the
  * orientation error a(dR) (method: docs/design.md, "Kinematics").

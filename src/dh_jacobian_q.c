@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_jacobian_q.c - geometric Jacobian of the fixed-point chain (base and
  * tool frame). Integer only: no float, no libm, no 64-bit division.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_kin_impl.h - PRIVATE blocks shared by dh_jacobian.c and dh_ik.c (not
  * installed). dh_ik_f32 calls them one after the other on its workspace

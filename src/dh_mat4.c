@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_mat4.c - float 4x4 homogeneous transforms: constructors, accessors,
  * products and application to points, directions and planes (Paul 1981,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_mat4_inv.c - inverses of float 4x4 transforms: the closed-form rigid
  * inverse (Paul 1981 eq. 1.57), a general inverse with a certified

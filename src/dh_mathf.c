@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_mathf.c - libm-free float atan2, sin/cos (radians), atan2/asin/acos
  * in degrees and sqrt with a small stack (contracts in dh_mathf.h). Minimax coefficients (Lawson's

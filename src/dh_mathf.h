@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_mathf.h - PRIVATE libm-free float helpers (not installed): newlib's
  * sinf/cosf/atan2f/sqrtf need more than the 256 B stack budget of a public

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_quat.c - unit quaternions (w, x, y, z) <-> rotation matrices
  * (Shepperd's method for the matrix -> quaternion direction), normalisation,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_robot.c - building a robot description from float parameters (init,
  * joints, limits, base/tool). Each float setter validates everything first

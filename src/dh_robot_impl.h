@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Private to dh_robot.c and dh_robot_q.c (not installed). */
 #ifndef DHMATH_DH_ROBOT_IMPL_H
 #define DHMATH_DH_ROBOT_IMPL_H

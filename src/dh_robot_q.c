@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_robot_q.c - the integer-only half of the robot description: joints,
  * limits and base/tool given directly in fixed point, and the flag rule

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_rot_q.c - rotation conversions of a fixed-point rotation (Q2.30):
  * Euler angles (all 24 sequences), unit quaternion (Shepperd 1978),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_rotvec.c - angle-axis <-> rotation matrix, rotation vector (log / exp
  * maps), skew-symmetric matrices and vee, angular velocity from R and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 #include "dhmath/dh_common.h"
 
 const char *dh_status_str(dh_status st)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_trig_f32.c - float sine/cosine of angles in degrees through the
  * whole-degree table (contract in include/dhmath/dh_trig.h).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_trig_q.c - fixed-point sine/cosine of Q16.16 degrees as Q2.30
  * (contract in include/dhmath/dh_trig.h). Integer only: no float, no libm,

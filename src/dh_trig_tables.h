@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_trig_tables.h - PRIVATE to the trig module (not installed): the
  * whole-degree quarter-wave sine tables (generated into dh_trig_tables.c

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dht.h - the tiny assertion layer every dhmath test is written against.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Host backend of dht: every case is a cmocka unit test. */
 #include <stdarg.h>
 #include <setjmp.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Backend-independent parts of the dht test layer: PRNG and helpers. */
 #include "dht.h"
 #include <string.h>

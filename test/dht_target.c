@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Target backend of dht (test/dht.h): runs the same test sources as the
  * host on bare-metal Cortex-M under QEMU, printing through semihosting

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fixed_const_m0.c - compiled for Cortex-M0+ (soft float) by
  * test/fixed_const_m0.cmake: the constant macros of dh_fixed.h in static

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # fixed_const_m0.cmake - ctest script (cmake -P): test/fixed_const_m0.c,
 # which uses DH_Q16 / DH_Q30 / DH_QPOS, compiled for Cortex-M0+ (soft
 # float) at -O0 and -Os references no routine (nm -u lists nothing but the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Host-only tests of the dhmath command-line tool (cli/). Included by
 # test/CMakeLists.txt when not cross-compiling. Each group of
 # test/cli/run_cli_tests.py is one ctest test (the script needs only the
@@ -48,27 +49,6 @@ add_test(NAME dht_iter_div_rejects_0
 add_test(NAME dht_seed_printed
   COMMAND sh -c "DHT_SEED=0xDEADbeef \"$1\" | grep -q 'seed 0xdeadbeef (DHT_SEED)'" sh $<TARGET_FILE:test_status>)
 
-# A few seeded suites also at fixed seeds other than the default, among
-# them seeds whose inputs come close to the bounds (T*T^-1 of frames with
-# |R^T R - I| near 5 LSB, rot_axis frames at 3 LSB of |R^T R - I|,
-# two-joint chains near 3.5 LSB, exp and log inputs near their bounds).
-foreach(_seed 0x06c45d188009454f 0xdeadbeef 0xe6495f5d102301eb 0x9fea7dfc79d452d9)
-  foreach(_suite test_frame_q test_fk_q test_rotvec)
-    add_test(NAME ${_suite}_seed_${_seed} COMMAND ${_suite})
-    set_tests_properties(${_suite}_seed_${_seed} PROPERTIES ENVIRONMENT "DHT_SEED=${_seed}" TIMEOUT 600)
-  endforeach()
-endforeach()
-
-# atan2(-0, x < 0) among the random inputs (+180 by the contract)
-add_test(NAME test_itrig_f32_seed_0x928d6f2d7453424e COMMAND test_itrig_f32)
-set_tests_properties(test_itrig_f32_seed_0x928d6f2d7453424e PROPERTIES
-  ENVIRONMENT "DHT_SEED=0x928d6f2d7453424e;DHT_ITER_DIV=10" TIMEOUT 600)
-
-# a non-affine bottom row with a translation that made the matrix singular
-add_test(NAME test_errors_mat4_seed_0x003bd11972cabf14 COMMAND test_errors_mat4)
-set_tests_properties(test_errors_mat4_seed_0x003bd11972cabf14 PROPERTIES
-  ENVIRONMENT "DHT_SEED=0x003bd11972cabf14" TIMEOUT 600)
-
 # The constant macros of dh_fixed.h emit no float code on Cortex-M0+ and
 # reject an out-of-range literal (test/fixed_const_m0.cmake).
 find_program(FIXED_CONST_ARM_GCC arm-none-eabi-gcc)
@@ -79,14 +59,30 @@ if(FIXED_CONST_ARM_GCC AND FIXED_CONST_ARM_NM)
             -DOUT=${CMAKE_CURRENT_BINARY_DIR} -P ${CMAKE_CURRENT_SOURCE_DIR}/fixed_const_m0.cmake)
 endif()
 
-# the UR3 folded at q3 = 180 among the fixed-point singular cases (the
-# elbow band once missed it and returned two unflagged branches)
-foreach(_seed 0x2 0xabc)
-  add_test(NAME test_ikc_ur_q_seed_${_seed} COMMAND test_ikc_ur_q)
-  set_tests_properties(test_ikc_ur_q_seed_${_seed} PROPERTIES ENVIRONMENT "DHT_SEED=${_seed}" TIMEOUT 600)
+# Regression seeds (test/regression_seeds.txt): SUITE SEED ITER_DIV # reason
+file(STRINGS ${CMAKE_CURRENT_SOURCE_DIR}/regression_seeds.txt _dh_regress_lines)
+foreach(_line IN LISTS _dh_regress_lines)
+  string(REGEX REPLACE "#.*" "" _line "${_line}")
+  string(STRIP "${_line}" _line)
+  if(_line STREQUAL "")
+    continue()
+  endif()
+  separate_arguments(_f UNIX_COMMAND "${_line}")
+  list(LENGTH _f _n)
+  if(NOT _n EQUAL 3)
+    message(FATAL_ERROR "test/regression_seeds.txt: '${_line}' is not SUITE SEED ITER_DIV")
+  endif()
+  list(GET _f 0 _suite)
+  list(GET _f 1 _seed)
+  list(GET _f 2 _div)
+  if(NOT TARGET ${_suite})
+    message(FATAL_ERROR "test/regression_seeds.txt: no test suite named ${_suite}")
+  endif()
+  add_test(NAME ${_suite}_seed_${_seed} COMMAND ${_suite})
+  set_tests_properties(${_suite}_seed_${_seed} PROPERTIES
+    ENVIRONMENT "DHT_SEED=${_seed};DHT_ITER_DIV=${_div}" LABELS regression TIMEOUT 600)
 endforeach()
 
-# an ABB IRB 140 target whose numerical solution stops on the joint 5 limit
-# while the closed form's lies a rounding beyond it (flagged out of limits)
-add_test(NAME test_ikc_seed_0x31b0e8661574b52d COMMAND test_ikc)
-set_tests_properties(test_ikc_seed_0x31b0e8661574b52d PROPERTIES ENVIRONMENT "DHT_SEED=0x31b0e8661574b52d" TIMEOUT 600)
+# every source, header, script and CMake file carries its licence line
+find_program(DH_SPDX_PYTHON3 NAMES python3 REQUIRED)
+add_test(NAME spdx_lines COMMAND ${DH_SPDX_PYTHON3} ${PROJECT_SOURCE_DIR}/tools/check_spdx.py ${PROJECT_SOURCE_DIR})

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Helpers shared by the test_errors_*.c suites: outputs are pre-filled
  * with a canary pattern before a call that must fail, and checked after it
  * (docs/errors.md: outputs on error are untouched or documented). */

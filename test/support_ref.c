@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * support_ref.c - double-precision reference helpers (see support_ref.h).
  * Independent of the library: only libm in double and plain loops.

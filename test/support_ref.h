@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * support_ref.h - double-precision reference helpers for the tests.
  *

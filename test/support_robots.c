@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * support_robots.c - shipped robot descriptions and the double-precision
  * reference forward kinematics (see support_robots.h for sources).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * support_robots.h - shipped robot models as double-precision descriptions
  * and an independent double-precision reference forward kinematics.

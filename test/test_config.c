@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Configuration sanity: the settings the library was built with are in
  * range and, when a config header is given, it was really included. */
 #include "dht.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_errors_fixed.c - bad input to the fixed-point frames
  * (docs/errors.md, section dh_fixed.h).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_errors_kin.c - bad input to the Jacobian, the orientation / pose
  * errors and the inverse kinematics (docs/errors.md, section dh_kin.h).

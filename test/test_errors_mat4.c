@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_errors_mat4.c - bad input to the float 4x4 transforms
  * (docs/errors.md, section dh_mat4.h).

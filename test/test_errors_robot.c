@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_errors_robot.c - bad input to the robot description and forward
  * kinematics (docs/errors.md, section dh_robot.h).

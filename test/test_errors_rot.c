@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_errors_rot.c - bad input to the rotation conversions of dh_rot.h
  * (docs/errors.md, section dh_rot.h): Euler angles, quaternions,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_errors_trig.c - bad input to the lookup-table trigonometry
  * (docs/errors.md, section dh_trig.h).

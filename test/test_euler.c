@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_euler.c - Euler angles <-> rotation matrix (dh_rot.h), all 24
  * sequences, against double-precision references built here from the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_fixed_const.c - the compile-time constant macros of dh_fixed.h
  * (DH_Q16, DH_Q30, DH_QPOS) in static const initialisers.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_fk_f32.c - robot description (float side) and float forward
  * kinematics: published poses, random configurations against the double

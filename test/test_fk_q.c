@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_fk_q.c - fixed-point robot description and forward kinematics:
  * accuracy targets on the shipped robots in millimetres (Puma 560 and UR5:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_frame_q.c - fixed-point rigid frames (dh_fixed.h).
  *

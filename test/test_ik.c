@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_ik.c - numerical inverse kinematics (dh_ik_f32).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_ik_q.c - numerical inverse kinematics in fixed point (dh_ik_q).
  *

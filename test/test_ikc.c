@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_ikc.c - closed-form inverse kinematics, float (dh_ikc_analyse_f32,
  * dh_ikc_f32, dh_ikc_nearest_f32): the spherical-wrist families.

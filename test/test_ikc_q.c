@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_ikc_q.c - fixed-point closed-form IK, spherical-wrist families
  * (dh_ikc_analyse_q, dh_ikc_q, dh_ikc_nearest_q): every solution against

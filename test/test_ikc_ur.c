@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_ikc_ur.c - closed-form IK, float: axes 2-3-4 parallel (UR3, UR5,
  * UR10) and SCARA (Adept Cobra 600), robots in metres.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_ikc_ur_q.c - fixed-point closed-form IK of the families
  * DH_IKC_PARALLEL_234 (UR3, UR5, UR10) and DH_IKC_SCARA (Cobra 600), robots

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_itrig_f32.c - dh_atan2_deg_f32, dh_asin_deg_f32, dh_acos_deg_f32
  * against a correctly rounded reference: libm atan2l / asinl / acosl of the

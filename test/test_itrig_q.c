@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_itrig_q.c - dh_atan2_q, dh_asin_q, dh_acos_q (int32 / Q2.30 in,
  * Q16.16 degrees out) against double precision: atan2 / asin / acos of

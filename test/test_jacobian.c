@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_jacobian.c - geometric Jacobian (base and tool frame), orientation
  * error a(dR) and pose error.

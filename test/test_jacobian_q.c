@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_jacobian_q.c - fixed-point geometric Jacobian (base and tool frame)
  * against an independent double reference, side by side with the float

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_mat4_inv_regress.c - regression tests of dh_mat4_inv_f32 for the
  * inputs found by fuzz/fuzz_inverse.c (the same matrices are replayed from

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_mat4_props.c - property tests of the float 4x4 module against
  * double-precision references computed here (test/support_ref.c), with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_mat4_seed.c - every worked example of Paul 1981 chapter 1 (in the
  * transcription of Paul & Daly, "dhmatrix.spad") reproduced EXACTLY: all the numbers in those examples

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_mathf.c - the library's private float helpers (src/dh_mathf.h):
  * dh_atan2f_ and dh_sincosf_ against double-precision libm atan2 / sin /

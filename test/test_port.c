@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_port.c - port/dh_port.h: the dispatching functions (intrinsics on
  * Cortex-M3/M4/M7 target builds, plain C elsewhere) against the plain-C

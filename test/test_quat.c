@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_quat.c - quaternions (dh_rot.h) against double-precision references
  * computed here from the textbook formulas with libm.

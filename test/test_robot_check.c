@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_robot_check.c - dh_robot_check: a description whose derived fields
  * are not what the setters compute is reported (DH_ERR_INCONSISTENT), every

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_rot_q.c - fixed-point rotation conversions (Euler angles, quaternion,
  * angle and axis, orientation error) against independent double

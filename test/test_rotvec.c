@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_rotvec.c - angle-axis, rotation vector (log / exp), skew / vee,
  * angular velocity, rotation check and re-orthonormalisation (dh_rot.h),

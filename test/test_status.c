@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 #include "dht.h"
 #include "dhmath/dh_common.h"
 #include <string.h>

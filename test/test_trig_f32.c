@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_trig_f32.c - dh_sincos_f32 / dh_sin_f32 / dh_cos_f32 against an
  * independent double-precision reference.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_trig_q.c - dh_sincos_q / dh_sin_q / dh_cos_q (Q16.16 degrees ->
  * Q2.30) against an independent double-precision reference.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Host benchmark of dhmath against peer libraries (speed goals); writes
 # docs/performance_host.md.
 #

@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The README's test command: builds and runs every test suite.
 #   tools/check.sh            all stages
 #   tools/check.sh host asan  only the named stages
-# Stages: host (Release build, cmocka suite + CLI tests), seeds (the seeded
-# suites again for 3 fresh seeds, printed, full loop counts; any seed
-# reproduces with tools/seeds.sh, see there), asan (ASan+UBSan),
+# Stages: host (Release build, cmocka suite + CLI tests, each suite at its
+# default seed and at its committed regression seeds), seeds (every seeded
+# suite at every committed regression seed of test/regression_seeds.txt, a
+# tenth of the loop counts: deterministic; tools/seeds.sh searches fresh
+# seeds outside the landing gate), asan (ASan+UBSan),
 # target suites under QEMU (M0+, M4F, M7; M0+ and M4F again with DH_SMALL at
 # -Os; RV32IMAC and RV32IMAFC with picolibc), firmware examples, guards
 # (no .data/.bss, no heap/printf, fixed path free of float/64-bit division,
@@ -49,13 +52,9 @@ small_suite() {
   target_suite build/m0-small cortex-m0plus.cmake -DDH_SMALL=ON -DCMAKE_BUILD_TYPE=MinSizeRel
 }
 
-# n fresh 64-bit seeds from /dev/urandom (the date when it is missing)
-fresh_seeds() {
-  local k
-  for ((k = 0; k < $1; k++)); do
-    if [ -r /dev/urandom ]; then printf '0x%s ' "$(od -An -N8 -tx8 /dev/urandom | tr -d ' ')"
-    else printf '%s ' "$(( $(date +%s%N) + k ))"; fi
-  done
+# The committed regression seeds (test/regression_seeds.txt), once each
+regression_seeds() {
+  sed -e 's/#.*//' "$ROOT/test/regression_seeds.txt" | awk 'NF == 3 { print $2 }' | sort -u | tr '\n' ' '
 }
 
 # The examples: the host ones (README's C example, the C++ example) and the
@@ -78,7 +77,7 @@ examples_suite() {
 for s in $STAGES; do
   case $s in
     host) run_stage host host_suite build/host ;;
-    seeds) run_stage seeds env SEEDS="$(fresh_seeds 3)" DHT_ITER_DIV=1 JOBS="$JOBS" tools/seeds.sh ;;
+    seeds) run_stage seeds env SEEDS="$(regression_seeds)" DHT_ITER_DIV=10 JOBS="$JOBS" tools/seeds.sh ;;
     asan) run_stage asan host_suite build/asan -DDH_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug ;;
     m0) [ -f port/cortex-m0plus.cmake ] && run_stage m0 target_suite build/m0 cortex-m0plus.cmake ;;
     m4f) [ -f port/cortex-m4f.cmake ] && run_stage m4f target_suite build/m4f cortex-m4f.cmake ;;

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Contract checks of the public headers (tools/check.sh stage "contracts").
 
 1. The doc comment in front of each public function declared in

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # check_guards.sh - CI guards on the cross-compiled library (libdhmath.a).
 #
 # Builds the library alone (no tests) for Cortex-M0+ (soft float, so every

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Configuration variants: every option that changes code builds and runs the
 # host suite. A misspelled option must be rejected at configure time.
 set -euo pipefail

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # tools/coverage.sh - line and branch coverage of the library (src/ only).
 #
 # Usage:  tools/coverage.sh [build-dir]        (default: build-coverage)

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # demo.sh - the dhmath CLI's main job on real robots: forward kinematics,
 # the Jacobian and an inverse-kinematics round trip on the Puma 560 and the
 # Franka Panda, and every closed-form IK solution of a Puma 560 and a UR5

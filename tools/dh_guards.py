@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Symbol and section guards on a cross-compiled libdhmath.a (driven by
 tools/check_guards.sh, which also runs the stack guard tools/dh_stack.py).
 

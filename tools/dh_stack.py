@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Worst-case stack depth of every public dhmath function on a Cortex-M build.
 
 Inputs: a CMake build directory of the library compiled with

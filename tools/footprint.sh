@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # footprint.sh - flash and stack of the library on Cortex-M0+ and Cortex-M4F
 # at -Os and -O2, and at -Os with DH_SMALL=1 (the size-first build), written
 # to docs/footprint.md (tools/footprint.py).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # tools/fuzz.sh [seconds] - build the libFuzzer targets of fuzz/ with clang
 # (-fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all), run each
 # for N seconds (default 60), then replay the committed seed corpus

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # dh_robot_tables(<target>...): give the targets the header dh_robots.h with
 # the shipped robots' DH tables, generated at build time from
 # examples/robots/*.dh by tools/gen_robots.py (macro layout: the head of that

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Accuracy plots of dhmath against glibc and libfixmath (the accuracy goal of
 docs/performance.md).
 

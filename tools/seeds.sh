@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Runs the seeded test suites (ctest label "seeded": every test/test_*.c
 # that draws random inputs) for many values of DHT_SEED and reports the
 # failing suites per seed. Every bound in those suites must hold for ANY

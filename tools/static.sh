@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # tools/static.sh - static-analysis gate of the library (src/, the public
 # headers and port/dh_port.h):
 #   1. cppcheck with the MISRA C:2012 addon plus cppcheck's warning, style,

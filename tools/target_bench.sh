@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # target_bench.sh - on-target benchmark: builds the firmware in bench/target
 # for Cortex-M0 (micro:bit), Cortex-M4F (mps2-an386) and Cortex-M7
 # (mps2-an500) at -O2, -Os and -Os with DH_SMALL=1 (size-first build), runs each image under QEMU with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bench_cglm.c - peer rows: the same 4x4 operations from cglm's
  * header-only code (Debian libcglm-dev; cglm's plain C paths, since a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bench_target.c - on-target benchmark firmware: instructions (under QEMU
  * with -icount shift=0) or cycles (on hardware) per call of dhmath

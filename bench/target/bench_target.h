@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bench_target.h - shared declarations of the on-target benchmark firmware
  * (bench_target.c: counter, inputs, dhmath and newlib operations;

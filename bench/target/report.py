@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """report.py - turn the logs of the on-target benchmark firmware
 (bench/target/bench_target.c, run by tools/target_bench.sh) into
 docs/performance_target.md.

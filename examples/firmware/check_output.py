@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Runs a firmware example (under QEMU) and checks its output against an
 independent double-precision computation with numpy.
 

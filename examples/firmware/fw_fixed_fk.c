@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fw_fixed_fk.c - firmware example for a core without FPU (Cortex-M0+):
  * forward kinematics of a UR5 in fixed point, integer arithmetic only.

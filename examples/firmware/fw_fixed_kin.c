@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fw_fixed_kin.c - firmware example for a core without FPU (Cortex-M0+):
  * kinematics of a Puma 560 in fixed point with no float linked at all.

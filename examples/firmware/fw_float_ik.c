@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fw_float_ik.c - firmware example for a core with a single-precision FPU
  * (Cortex-M4F): forward kinematics, inverse kinematics to a pose, and the

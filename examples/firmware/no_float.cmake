@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # no_float.cmake - ctest script (cmake -P): the linked image ELF defines
 # and references no soft-float or libm routine: no __aeabi_f* / __aeabi_d*
 # (float and double arithmetic and conversions), no __aeabi_[ui]2f/2d,

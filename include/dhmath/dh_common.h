@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file dh_common.h
  * @brief Status codes, configuration, assertion hook and the basic float and

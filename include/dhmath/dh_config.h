@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file dh_config.h
  * @brief The one place where every compile-time setting is defined, checked

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file dh_fixed.h
  * @brief Fixed-point rigid frames: rotation Q2.30, position dh_qpos

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file dh_ikc.h
  * @brief Closed-form inverse kinematics: every solution, no iteration,

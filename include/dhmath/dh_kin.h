@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file dh_kin.h
  * @brief Geometric Jacobian, orientation error and numerical inverse

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file dh_mat4.h
  * @brief Float 4x4 homogeneous transforms (Paul 1981, ch. 1): constructors,

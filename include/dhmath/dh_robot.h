@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file dh_robot.h
  * @brief Caller-owned robot description (standard or modified DH) and

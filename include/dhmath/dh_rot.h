@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file dh_rot.h
  * @brief Float rotation conversions: Euler angles (all 12 sequences,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file dh_trig.h
  * @brief Sine and cosine of angles in DEGREES through a whole-degree lookup

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file dhmath.h
  * @brief Umbrella header: includes every dhmath module.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # expect.cmake - runs one target self-test executable under the emulator and
 # checks its exit status and output (ctest alone can check either, not both).
 #   cmake -DEMU="<emulator|args...>" -DEXE=<elf> -DSTATUS=<n>

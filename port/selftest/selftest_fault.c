@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Self-test of the fault path of port/startup_cm.c: a test that crashes
  * (here like DH_ASSERT's default trap, __builtin_trap) must end the

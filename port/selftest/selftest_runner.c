@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Self-test of the target test infrastructure (port/startup_cm.c,
  * test/dht_target.c, the linker scripts), run by ctest on every target

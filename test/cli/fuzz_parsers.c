@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fuzz_parsers.c - robustness harness of the CLI parsers (cli/dh_expr.c,
  * cli/dh_robotfile.c).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * number_roundtrip.c - the CLI's number parser (dh_expr_parse_number)
  * against its own output format: every finite float printed with %.9g (the

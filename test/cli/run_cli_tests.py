@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """CLI tests of the dhmath host tool (standard library only).
 
 usage: run_cli_tests.py DHMATH_EXE REPO_ROOT GROUP [--seed N]

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * app.c - an external consumer of dhmath, built by test/consumer/run.sh
  * through add_subdirectory, the installed CMake package, pkg-config and a

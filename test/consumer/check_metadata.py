@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Syntax and consistency check of dhmath's ecosystem metadata (run by
 test/consumer/run.sh, the "package" stage of tools/check.sh).
 

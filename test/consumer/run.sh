@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # test/consumer/run.sh - the "package" stage of tools/check.sh: dhmath as a
 # dependency of an external project (test/consumer/app.c).
 #   1. install: cmake --install puts headers, libdhmath.a, the CMake package

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * diff_api.h - inputs, outputs and the wrapper table of test_builds_agree.
  *

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Renames every defined global symbol of a static library with a prefix
 # (cmake -P script, run at build time by test/diff/CMakeLists.txt).
 #   IN, OUT   input / output archive

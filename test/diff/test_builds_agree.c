@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_builds_agree - the default build and the size-first build
  * (DH_SMALL=1) agree on every public function.

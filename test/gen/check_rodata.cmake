@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # cmake -DNM=nm -DOBJDUMP=objdump -DOBJS=a.o;b.o -DELF=test_gen -P check_rodata.cmake
 # Every generated robot dhg_* is a global read-only object: nm type R in
 # its object file, section .rodata there; in the linked ELF in no writable

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # cmake -DEXE=dhmath -DCC=cc -DINC=include -DROBOT=puma560.dh -DDIR=tmp -DQPOS=16 -P cli_gen.cmake
 # (QPOS: the DH_QPOS_FRAC the generator was built with)
 # `dhmath gen` errors: a NAME that is no usable C identifier, a missing

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # cmake -DEXE=dhmath -DIN=robot.dh -DNAME=ident -DOUT=file.c -P run_gen.cmake
 # Runs `EXE gen IN NAME` and writes its stdout to OUT; fails (and leaves no
 # OUT) when the command fails.

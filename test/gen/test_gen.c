@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_gen.c - the robots `dhmath gen` wrote for the .dh files of examples/robots
  * (const dh_robot dhg_<stem>, compiled into this test from the build tree)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Minimal toolchain file (Cortex-M0+, soft float): compiler and CPU only.
 set(CMAKE_SYSTEM_NAME Generic)
 set(CMAKE_SYSTEM_PROCESSOR arm)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Minimal toolchain file (Cortex-M4F, hard float), with the flags firmware
 # projects commonly add: -ffreestanding, section garbage collection.
 set(CMAKE_SYSTEM_NAME Generic)
