@@ -536,6 +536,59 @@ static DH_NOINLINE int ikq_centre(const dh_ikc_model_q *m, dh_ikc_sol_q *sol)
     return 0;
 }
 
+/* u of shoulder branch s into slot 4 s + 2 q[0]: +-o[4], or the boundary
+ * value u' when the planar point (u - a1, vy) lies beyond the arm's reach
+ * (|v| below the folded radius |delta| (RRR) or |X2| (RRP), or above the
+ * stretched radius |a2| + rho (RRR)) and u' = a1 +- sqrt(r^2 - vy^2) on
+ * that radius r, of the branch's sign and nearest u, satisfies
+ * |u'^2 - u^2| <= 2^IKQ_REACH_SH (|ox| + |oy| + 1): u^2 = ox^2 + oy^2 - h^2
+ * moves by 2 (ox dox + oy doy) when the wrist centre moves, so u' is u for
+ * a wrist centre at most 2^(IKQ_REACH_SH - 1) sqrt(2) LSB away. Near the
+ * shoulder cylinder (u small) a rounding of the target moves u by much
+ * more than a rounding; this keeps such targets on the boundary solvable. */
+static DH_NOINLINE void ikq_reach(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned s)
+{
+    const int32_t *k = m->k, *o = sol[4].q;
+    const int32_t u = s ? -o[4] : o[4], vy = o[3];
+    const int64_t vx = (int64_t)u - m->a[0];
+    int64_t v2, r2, d;
+    uint32_t w;
+    int32_t c[2];
+    unsigned i;
+
+    sol[4u * s + 2u].q[0] = u;
+    if (o[5] || ikq_abs64(vx) > (uint64_t)IKQ_POS_LIM) return;
+    v2 = dh_q_mla64(dh_q_mul64((int32_t)vx, (int32_t)vx), vy, vy);
+    if (m->kind == DH_IKC_WRIST_RRR) {
+        const int64_t s2 = dh_q_mla64(dh_q_mla64(dh_q_mul64(m->a[1], m->a[1]), m->a[2], m->a[2]), k[K_E], k[K_E]);
+        const int64_t f2 = dh_q_mul64(k[K_RHO], k[K_RHO]);
+        if (v2 < f2) r2 = f2;
+        else if (v2 > 2 * s2 - f2) r2 = 2 * s2 - f2; /* (|a2| + rho)^2 */
+        else return;
+    } else {
+        r2 = dh_q_mul64(k[K_E], k[K_E]);
+        if (v2 >= r2) return;
+    }
+    r2 -= dh_q_mul64(vy, vy);
+    if (r2 < 0) return; /* vy alone is beyond: the elbow decides */
+    w = dh_q_isqrt62((uint64_t)r2);
+    c[0] = m->a[0] + (int32_t)w;
+    c[1] = m->a[0] - (int32_t)w;
+    /* the candidate of the branch's sign nearest u, if within the bound */
+    d = -1;
+    for (i = 0; i < 2u; i++) {
+        const int64_t du = (int64_t)c[i] - u;
+        int64_t dd;
+        if ((s ? c[i] > 0 : c[i] < 0) || ikq_abs64(c[i]) > (uint64_t)IKQ_POS_LIM) continue;
+        dd = dh_q_mul64(c[i], c[i]) - dh_q_mul64(u, u);
+        if (ikq_abs64(dd) > ((uint64_t)dh_q_abs_u32(o[0]) + dh_q_abs_u32(o[1]) + 1u) << IKQ_REACH_SH) continue;
+        if (d < 0 || (int64_t)ikq_abs64(du) < d) {
+            d = (int64_t)ikq_abs64(du);
+            sol[4u * s + 2u].q[0] = c[i];
+        }
+    }
+}
+
 /* shoulder branch s: joint 1 and the shoulder part of M into slots 4 s + 2, 4 s + 3 */
 static DH_NOINLINE int ikq_shoulder(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned s, int32_t cref0)
 {
@@ -543,7 +596,7 @@ static DH_NOINLINE int ikq_shoulder(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, 
     const int32_t *c0 = DH_IKC_T06_COL_(sol, 0u), *c1 = DH_IKC_T06_COL_(sol, 1u), *c2 = DH_IKC_T06_COL_(sol, 2u);
     const int32_t *o = sol[4].q;
     dh_ikc_sol_q *d0 = &sol[4u * s + 2u], *d1 = &sol[4u * s + 3u];
-    int32_t t1, sn, cs, u = s ? -o[4] : o[4];
+    int32_t t1, sn, cs, u = d0->q[0];
     int64_t v;
     unsigned i;
 
@@ -616,11 +669,10 @@ static DH_NOINLINE void ikq_elbow_rrr(const dh_ikc_model_q *m, dh_ikc_sol_q *sol
     ds -= dh_q_mul64(k[K_RHO], k[K_RHO]);
     df = ds + K;
     ds -= K;
-    /* beyond stretched or folded by less than 2^7 LSB of the wrist
-     * centre (rounded targets near two singularities at once): solved at
-     * the boundary */
-    tol = ((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy) + (int64_t)dh_q_abs_u32(k[K_RHO]) + 1)
-          << IKQ_REACH_SH;
+    /* beyond stretched or folded by at most 2^(IKQ_REACH_SH - 1) sqrt(2)
+     * LSB of |v| (|v|^2 moves by 2 |v| d|v|; ds and df are exact products
+     * but for delta's rounding of 1 LSB): solved at the boundary */
+    tol = ((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy) + 1) << IKQ_REACH_SH;
     if (ds < -tol || df < -tol) {
         d0->q[2] = IKQ_ABSENT;
         return;
@@ -787,9 +839,16 @@ dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_
     st = ikq_centre(m, sol);
     if (st > 0) return DH_ERR_OVERFLOW;
     if (st < 0) return DH_OK; /* unreachable */
-    nsh = (sol[4].q[5] || sol[4].q[4] == 0) ? 1u : 2u;
-    for (s = 0; s < nsh; s++)
+    nsh = sol[4].q[5] ? 1u : 2u;
+    for (s = 0; s < nsh; s++) {
+        ikq_reach(m, sol, s);
+        /* u = 0 on both branches: one solution */
+        if (s == 1u && sol[4].q[4] == 0 && sol[6].q[0] == 0) {
+            nsh = 1u;
+            break;
+        }
         if (ikq_shoulder(m, sol, s, dh_ikc_cref_q_(m, q_ref, 0u))) return DH_ERR_OVERFLOW;
+    }
     for (j = 0; j < DH_IKC_MAX_SOL; j++) sol[j].flags = IKQ_EMPTY;
     if (nsh == 1u) sol[6].q[2] = IKQ_ABSENT;
     cref3 = dh_ikc_cref_q_(m, q_ref, 3u);

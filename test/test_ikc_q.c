@@ -174,7 +174,7 @@ static double jdiff(const dh_robot *r, unsigned i, int32_t a, int32_t b)
 }
 
 typedef struct {
-    long targets, comp, sols;
+    long targets, comp, sols, near_limit;
     double pos, rot;
 } stats;
 
@@ -208,6 +208,20 @@ static int check_sols(const dh_robot *r, const dhs_mat4_d *Td, const dh_ikc_sol_
         }
     }
     return found;
+}
+
+/* 1 when a joint of q lies within COMP_DEG of one of its limits: the
+ * solution that matches q within COMP_DEG may then lie beyond that limit
+ * by as much (flagged DH_IKC_OUT_OF_LIMITS and dropped by default) */
+static int near_limit(const dh_robot *r, const int32_t *q)
+{
+    unsigned i;
+    for (i = 0; i < r->n; i++) {
+        const dh_joint *j = &r->joint[i];
+        if (j->qmin_q <= j->qmax_q && (jdiff(r, i, q[i], j->qmin_q) <= COMP_DEG || jdiff(r, i, q[i], j->qmax_q) <= COMP_DEG))
+            return 1;
+    }
+    return 0;
 }
 
 /* 1 when q of the SDH description d (identity base) is AWAY from the wrist,
@@ -350,6 +364,14 @@ static void random_run(const dhs_robot *d, const dhs_robot *f, dh_ikc_kind kind,
                      d->name, (int)rc, (unsigned)ns, q[0], q[1], q[2], q[3], q[4], q[5]);
         found = check_sols(&r, &Td, sol, ns, qq, &st);
         st.targets++;
+        if (comp && found < 0 && near_limit(&r, qq)) {
+            /* the generating configuration's own solution may lie beyond
+             * the limit by a rounding: search the solutions kept out of
+             * limits too (every one still checked for its residuals) */
+            DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_OK);
+            found = check_sols(&r, &Td, sol, ns, qq, NULL);
+            st.near_limit++;
+        }
         if (comp) {
             st.comp++;
             DHT_TRUE_MSG(found >= 0, "%s: generating configuration %.6f %.6f %.6f %.6f %.6f %.6f not among %u solutions",
@@ -417,22 +439,29 @@ static void mdh_random(void)
     random_run(&d, &f, DH_IKC_WRIST_RRR, DHT_ITER(3000));
 }
 
+/* the Puma 560 with a base and a tool frame */
+static void puma_base_tool(dhs_robot *d)
+{
+    dhs_mat4_d A, B;
+    puma(d);
+    d->name = "puma560_base_tool_mm";
+    dhs_rotz(&A, 30.0);
+    dhs_trans(&B, 100.0 * LS, -50.0 * LS, 200.0 * LS);
+    dhs_mul(&d->base, &A, &B);
+    dhs_rotx(&A, 10.0);
+    B = d->base;
+    dhs_mul(&d->base, &B, &A);
+    dhs_trans(&A, 10.0 * LS, 20.0 * LS, 80.0 * LS);
+    dhs_rotx(&B, 20.0);
+    dhs_mul(&d->tool, &A, &B);
+}
+
 static void base_tool_random(void)
 {
     dhs_robot d, f;
     dhs_mat4_d A, B;
     puma(&f);
-    d = f;
-    d.name = "puma560_base_tool_mm";
-    dhs_rotz(&A, 30.0);
-    dhs_trans(&B, 100.0 * LS, -50.0 * LS, 200.0 * LS);
-    dhs_mul(&d.base, &A, &B);
-    dhs_rotx(&A, 10.0);
-    B = d.base;
-    dhs_mul(&d.base, &B, &A);
-    dhs_trans(&A, 10.0 * LS, 20.0 * LS, 80.0 * LS);
-    dhs_rotx(&B, 20.0);
-    dhs_mul(&d.tool, &A, &B);
+    puma_base_tool(&d);
     random_run(&d, &f, DH_IKC_WRIST_RRR, DHT_ITER(3000));
     /* the same with the KR5 (alpha6 = 180, a tool along z) */
     desc_set(&d, "kr5_base_tool_mm", DH_CONV_STANDARD, 6, kr5_j);
@@ -523,6 +552,107 @@ static void singular_elbow(void)
         DHT_TRUE((sol[s].flags & DH_IKC_ELBOW_ALT) == 0u);
     }
     DHT_TRUE(check_sols(&r, &Td, sol, ns, qq, NULL) >= 0);
+}
+
+/* The folded elbow with the wrist centre on the shoulder cylinder (u = 0):
+ * a rounding of the target moves u by far more than a rounding there, so
+ * the rounded wrist centre can lie inside the folded radius; such targets
+ * are solved on the boundary. The sweep covers +-4 LSB of joint 3 around
+ * the fold and +-0.03 deg of joint 2 around u = 0; the two listed
+ * configurations are random draws that once came back unreachable. */
+static void boundary_folded(void)
+{
+    static const double seen[2][6] = {
+        {-134.376743, 50.400184, 92.694226, 197.892038, -71.685242, -229.089479},
+        {-128.923767, 18.078812, 92.700125, -87.316141, -4.757050, -109.683987}};
+    const double a2 = 431.8, a3 = 20.3, e = -431.8;
+    const double t3 = atan2(e, a3) + PI_D; /* folded: t3 - phi = 180 deg */
+    const double A = a2 + a3 * cos(t3) + e * sin(t3), B = a3 * sin(t3) - e * cos(t3);
+    const double t2 = 90.0 - atan2(B, A) * 180.0 / PI_D; /* vx = 0 */
+    dhs_robot d;
+    dh_robot r;
+    dh_ikc_model_q m;
+    dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+    dhs_mat4_d Td;
+    uint32_t ns, s;
+    int i, j, k;
+    puma_base_tool(&d);
+    build(&d, &r, &m, DH_IKC_WRIST_RRR);
+    for (i = 0; i < 2; i++) {
+        int32_t qq[6];
+        dhs_q_from_double(&r, seen[i], qq);
+        solve_q(&r, &m, qq, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns, &Td);
+        DHT_TRUE(ns >= 1u);
+        for (s = 0; s < ns; s++) DHT_TRUE((sol[s].flags & DH_IKC_SING_ELBOW) != 0u);
+    }
+    for (j = -3; j <= 3; j++)
+        for (k = -4; k <= 4; k++) {
+            double q[6] = {-130.0, 0.0, 0.0, 40.0, 50.0, -60.0};
+            int32_t qq[6];
+            q[1] = t2 + 0.01 * j;
+            dhs_q_from_double(&r, q, qq);
+            qq[2] = (int32_t)floor(t3 * 180.0 / PI_D * 65536.0 + 0.5) + k;
+            solve_q(&r, &m, qq, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns, &Td);
+            DHT_TRUE(ns >= 1u);
+        }
+}
+
+/* A target moved radially beyond the stretched elbow: by 2^-11 mm (32 LSB)
+ * it is solved, by 2^-7 mm (512 LSB) it is unreachable (the bounds of
+ * dh_ikc.h). Moved by 2^-11 mm beyond the folded elbow it is solved; 2^-7
+ * mm in that direction is not beyond by as much: the Puma's folded wrist
+ * centre lies within |delta| of the shoulder cylinder, where joint 1 turns
+ * such a point back to within 2 LSB of the workspace. */
+static void boundary_beyond(void)
+{
+    const double phi = atan2(-431.8, 20.3) * 180.0 / PI_D;
+    const double rho = sqrt(20.3 * 20.3 + 431.8 * 431.8);
+    dhs_robot P;
+    dh_robot r;
+    dh_ikc_model_q m;
+    dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+    dh_frame_q T;
+    uint32_t ns, s;
+    int i, far, folded;
+    puma(&P);
+    build(&P, &r, &m, DH_IKC_WRIST_RRR);
+    for (folded = 0; folded < 2; folded++) {
+        double q[6] = {20.0, -30.0, 0.0, 40.0, 50.0, -60.0}, w[3], nw = 0.0, wz = 0.0;
+        dhs_mat4_d fr[6], Td;
+        int32_t qq[6];
+        q[2] = folded ? phi + 180.0 : phi;
+        dhs_q_from_double(&r, q, qq);
+        dhs_fk_ref_q(&r, qq, fr, &Td);
+        /* from the joint 2 axis (frame 1) to the wrist centre (origin of
+         * frame 4), normal to that axis: outward for stretched, inward for folded */
+        for (i = 0; i < 3; i++) w[i] = fr[3].m[3][i] - fr[0].m[3][i];
+        for (i = 0; i < 3; i++) wz += w[i] * fr[0].m[2][i];
+        for (i = 0; i < 3; i++) {
+            w[i] -= wz * fr[0].m[2][i];
+            nw += w[i] * w[i];
+        }
+        nw = sqrt(nw);
+        DHT_TRUE(fabs(nw - (folded ? rho - 431.8 : rho + 431.8)) < 1e-3);
+        for (far = 0; far < 2 - folded; far++) {
+            dhs_mat4_d Tm = Td;
+            const double dist = (far ? ldexp(1.0, -7) : ldexp(1.0, -11)) * (folded ? -1.0 : 1.0);
+            for (i = 0; i < 3; i++) Tm.m[3][i] += dist * w[i] / nw;
+            to_frame(&Tm, &T);
+            if (far) {
+                DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_ERR_UNREACHABLE);
+                DHT_EQ_INT(ns, 0);
+            } else {
+                DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_OK);
+                DHT_TRUE(ns >= 1u);
+                /* stretched: flagged; folded, the Puma's wrist centre lies
+                 * within |delta| of the shoulder cylinder, where the
+                 * target's rounding moves |v| by more than 2^5 LSB: the
+                 * solutions may be the two branches of a point just inside */
+                for (s = 0; s < ns && !folded; s++) DHT_TRUE((sol[s].flags & DH_IKC_SING_ELBOW) != 0u);
+                (void)check_sols(&r, &Tm, sol, ns, NULL, NULL);
+            }
+        }
+    }
 }
 
 /* a Puma with d3 = 0 (h = 0): the wrist centre on axis 1 */
@@ -851,6 +981,8 @@ static const dht_case cases[] = {
     DHT_CASE(singular_wrist),
     DHT_CASE(singular_elbow),
     DHT_CASE(singular_shoulder),
+    DHT_CASE(boundary_folded),
+    DHT_CASE(boundary_beyond),
     DHT_CASE(limits_shift),
     DHT_CASE(limits_drop_keep),
     DHT_CASE(no_closed_form),

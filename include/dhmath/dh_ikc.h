@@ -43,10 +43,16 @@
  * at q_ref's value, flagged DH_IKC_SING_SHOULDER, which also marks the
  * PARALLEL_234 shoulder branches met (that point on the cylinder about
  * axis 1 whose radius is the arm's offset along axis 2). Elbow stretched
- * or folded: flagged DH_IKC_SING_ELBOW. A target within the rounding of
- * the workspace's boundary (the wrist centre on the shoulder cylinder, the
- * elbow folded) may be reported DH_ERR_UNREACHABLE: its rounded inputs can
- * lie just outside (docs/accuracy_kin.md counts such targets).
+ * or folded: flagged DH_IKC_SING_ELBOW.
+ *
+ * Boundary targets. A spherical-wrist target whose wrist centre lies
+ * beyond the workspace's boundary (elbow stretched or folded, the
+ * shoulder cylinder) by no more than the rounding of its inputs is solved
+ * on the boundary, flagged as above, within the accuracy bounds below:
+ * on the fixed path a wrist centre within 2^(5 - F) length units of the
+ * boundary (F = DH_QPOS_FRAC; 2^-11 mm for robots in mm) is solved, one
+ * beyond it by more than 2^(8 - F) units is DH_ERR_UNREACHABLE; on the
+ * float path the band is 5e-7 L (L: the sum of the robot's |a| and |d|).
  *
  * Accuracy (tests against double, test/test_ikc*.c; measured figures:
  * docs/accuracy_kin.md): for every solution FK(q) matches the target within
