@@ -656,37 +656,78 @@ static DH_NOINLINE uint32_t ikc_elbow_rrp(const dh_ikc_model_f32 *m, float cref2
     return nb;
 }
 
+/* u of shoulder branch b (u >= 0 for b = 0, u <= 0 for b = 1) moved onto the
+ * arm's reach: when the planar point (ub - a1, vy) lies beyond it (|v|
+ * below the folded radius |a2| - rho (RRR) or |W| (RRP), above the
+ * stretched |a2| + rho (RRR)), the u' = a1 +- sqrt(r^2 - vy^2) on that
+ * radius nearest ub, if |u'^2 - ub^2| <= 2 eps (|px| + |py|): u^2 = px^2 +
+ * py^2 - h^2 moves by 2 (px dpx + py dpy), so u' belongs to a wrist centre
+ * at most sqrt(2) eps away. Near the shoulder cylinder (u small) the
+ * target's rounding moves u by far more than eps; this keeps such targets
+ * on the boundary solvable. Otherwise ub. */
+static DH_NOINLINE float ikc_reach(const dh_ikc_model_f32 *m, uint32_t b, float ub, float vy, float pl1)
+{
+    const float *k = m->k, a1 = m->a[0], vx = ub - a1, v = dh_sqrt_f32(vx * vx + vy * vy);
+    float r, w, best = ub, db = -1.0f;
+    uint32_t i;
+    if (m->kind == DH_IKC_WRIST_RRR) {
+        if (v < k[KW_CMINUS]) r = k[KW_CMINUS];
+        else if (v > k[KW_CPLUS]) r = k[KW_CPLUS];
+        else return ub;
+    } else {
+        r = fabsf(k[KW_W]);
+        if (v >= r) return ub;
+    }
+    w = (r - fabsf(vy)) * (r + fabsf(vy));
+    if (!(w >= 0.0f)) return ub; /* vy alone is beyond: the elbow decides */
+    w = dh_sqrt_f32(w);
+    for (i = 0; i < 2u; i++) {
+        const float c = (i == 0u) ? a1 + w : a1 - w, d = fabsf(c - ub);
+        if ((b == 0u) ? (c < 0.0f) : (c > 0.0f)) continue;
+        if (d * fabsf(c + ub) > 2.0f * k[KW_EPS] * pl1) continue;
+        if (db < 0.0f || d < db) {
+            db = d;
+            best = c;
+        }
+    }
+    return best;
+}
+
 /* Shoulder: u = +-sqrt(px^2 + py^2 - h^2) of the wrist centre p (read
- * from IKC_P), theta1; per branch sol[b] gets theta1, vx, vy and its
- * flags. Returns the number of branches (0, 1 or 2). */
+ * from IKC_P), each moved onto the arm's reach by ikc_reach, theta1; per
+ * branch sol[b] gets theta1, vx, vy and its flags. Returns the number of
+ * branches (0, 1 or 2). */
 static DH_NOINLINE uint32_t ikc_shoulder(const dh_ikc_model_f32 *m, float cref1, dh_ikc_sol_f32 *sol)
 {
     const float *k = m->k, *p = IKC_P(sol);
     const float h = k[KW_H], eps = k[KW_EPS], tau = m->sa[0];
-    const float px = p[0], py = p[1], pz = p[2];
+    const float px = p[0], py = p[1], pz = p[2], vy = tau * (pz - m->d[0]);
     float rad, tol, u = 0.0f;
-    uint32_t b, nu = 2u;
+    uint32_t b, nu = 0u;
+    int sing;
     rad = dh_sqrt_f32(px * px + py * py);
     rad = (rad - fabsf(h)) * (rad + fabsf(h));
     tol = eps * (2.0f * fabsf(h) + eps);
     if (rad < -tol) return 0u;
-    if (rad <= tol)
-        nu = 1u;
-    else
-        u = dh_sqrt_f32(rad);
-    for (b = 0; b < nu; b++) {
-        const float ub = (b == 0u) ? u : -u;
-        dh_ikc_sol_f32 *s = &sol[b];
-        s->flags = (b == 0u) ? 0u : DH_IKC_SHOULDER_ALT;
-        if (nu == 1u && k[KW_HZERO] != 0.0f) {
-            /* wrist centre on axis 1: joint 1 from q_ref */
+    if (rad > 0.0f) u = dh_sqrt_f32(rad);
+    /* wrist centre on axis 1: joint 1 from q_ref, one branch */
+    sing = (rad <= tol && k[KW_HZERO] != 0.0f);
+    for (b = 0; b < 2u; b++) {
+        dh_ikc_sol_f32 *s = &sol[nu];
+        float ub = (b == 0u) ? u : -u;
+        if (sing) {
+            if (b != 0u) break;
             s->q[0] = cref1;
-            s->flags |= DH_IKC_SING_SHOULDER;
+            s->flags = DH_IKC_SING_SHOULDER;
         } else {
+            ub = ikc_reach(m, b, ub, vy, fabsf(px) + fabsf(py));
+            if (b != 0u && !(u > 0.0f) && !(ub < 0.0f)) break; /* both branches at u = 0 */
             s->q[0] = ikc_atan2(tau * h * px + ub * py, ub * px - tau * h * py, cref1);
+            s->flags = (b == 0u) ? 0u : DH_IKC_SHOULDER_ALT;
         }
         s->q[1] = ub - m->a[0];
-        s->q[2] = tau * (pz - m->d[0]);
+        s->q[2] = vy;
+        nu++;
     }
     return nu;
 }

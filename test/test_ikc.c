@@ -164,6 +164,35 @@ static const robot_case g_robots[] = {
 };
 #define N_ROBOTS (sizeof g_robots / sizeof g_robots[0])
 
+/* 1 when a joint of q lies within TOL_GEN of one of its limits */
+static int near_limit_f32(const dh_robot *r, const double *q)
+{
+    uint32_t i;
+    for (i = 0; i < r->n; i++) {
+        const dh_joint *j = &r->joint[i];
+        if (j->qmin <= j->qmax && (fabs(q[i] - j->qmin) <= TOL_GEN || fabs(q[i] - j->qmax) <= TOL_GEN)) return 1;
+    }
+    return 0;
+}
+
+/* dh_ikc_f32 on the target T of the in-limit configuration q. A joint of
+ * q within TOL_GEN of its limit, or q within the singular bands of
+ * dh_ikc.h (the elbow's 5e-7 L holds the Puma's configurations within
+ * 0.13 deg of stretched; sin^2 < 1e-5 covers them), where the solution's
+ * joints differ from q's by more than a rounding: the solution may lie
+ * beyond a limit; DH_ERR_LIMIT then solves again keeping out-of-limit
+ * solutions (counted in *nedge). */
+static dh_status solve_target(const dh_ikc_model_f32 *m, const dh_robot *r, const dhs_robot *desc, const double *q,
+                              const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol, uint32_t *n_sol, long *nedge)
+{
+    dh_status st = dh_ikc_f32(m, T, NULL, 0u, sol, n_sol);
+    if (st == DH_ERR_LIMIT && (near_limit_f32(r, q) || !away_from(desc, q, 1e-5))) {
+        st = dh_ikc_f32(m, T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, n_sol);
+        (*nedge)++;
+    }
+    return st;
+}
+
 /* count random in-limit configurations of r: every solution checked; the
  * generating one found when away from the singularities. */
 static void run_completeness(const char *name, const dhs_robot *desc, const dh_robot *r, const dh_ikc_model_f32 *m,
@@ -179,17 +208,8 @@ static void run_completeness(const char *name, const dhs_robot *desc, const dh_r
         dh_status st;
         dhs_random_q_robot(r, q);
         target_of(r, q, &T);
-        st = dh_ikc_f32(m, &T, NULL, 0u, sol, &n_sol);
+        st = solve_target(m, r, desc, q, &T, sol, &n_sol, &nedge);
         DHT_TRUE_MSG(n_sol <= DH_IKC_MAX_SOL, "%s: %u solutions", name, (unsigned)n_sol);
-        if (st != DH_OK && !away_from(desc, q, 1e-6)) {
-            /* within the float rounding of a boundary of the workspace
-             * (wrist centre at the shoulder, the elbow folded): the rounded
-             * target may lie outside */
-            DHT_TRUE_MSG(st == DH_ERR_UNREACHABLE || st == DH_ERR_LIMIT, "%s: q = %s: status %d", name, q_str(q, r->n, 0),
-                         (int)st);
-            nedge++;
-            continue;
-        }
         DHT_TRUE_MSG(st == DH_OK && n_sol >= 1u, "%s: q = %s: status %d, %u solutions", name, q_str(q, r->n, 0),
                      (int)st, (unsigned)n_sol);
         check_solutions(r, &T, sol, n_sol, name, &wp, &wr);
@@ -206,8 +226,8 @@ static void run_completeness(const char *name, const dhs_robot *desc, const dh_r
         if (best > wq) wq = best;
     }
     dht_printf("ikc %s: %ld targets (%ld checked for the generating configuration), mean %.2f solutions, worst "
-               "position %.3g m, rotation %.3g rad, generating configuration within %.3g; %ld at a workspace "
-               "boundary without solution\n",
+               "position %.3g m, rotation %.3g rad, generating configuration within %.3g; %ld within it of a "
+               "limit or a singularity, solved beyond a limit\n",
                name, count, checked, (double)nsum / (double)count, wp, wr, wq, nedge);
 }
 
@@ -403,6 +423,68 @@ static void ikc_shoulder_singular(void)
             }
         }
     }
+}
+
+/* Puma near its elbow boundaries. The folded elbow with the wrist centre
+ * on the shoulder cylinder (u = 0), where a rounding of the target moves u
+ * by far more than a rounding: every target of a sweep over +-4e-6 deg of
+ * joint 3 around the fold and +-0.03 deg of joint 2 around u = 0 is solved.
+ * A target moved radially beyond the stretched elbow: by 1e-7 m it is
+ * solved on the boundary (flagged), by 1e-5 m it is unreachable (the bounds
+ * of dh_ikc.h: 5e-7 L and 4 of those, L = 1.1 m). */
+static void ikc_elbow_boundary(void)
+{
+    const dhs_robot *d = &dhs_puma560_m;
+    const double a2 = d->j[1].a, a3 = d->j[2].a, e = sin(d->j[2].alpha_deg * D2R) * d->j[3].d;
+    const double phi = atan2(e, a3), t3 = phi + PI;
+    const double A = a2 + a3 * cos(t3) + e * sin(t3), B = a3 * sin(t3) - e * cos(t3);
+    const double t2 = 90.0 - atan2(B, A) / D2R;
+    dh_robot r;
+    dh_ikc_model_f32 m;
+    dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+    dh_mat4_f32 T;
+    double wp = 0.0, wr = 0.0;
+    uint32_t n_sol, s;
+    int i, j, k, far;
+    DHT_EQ_INT(dhs_build(d, &r), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_f32(&r, &m), DH_OK);
+    for (j = -3; j <= 3; j++)
+        for (k = -4; k <= 4; k++) {
+            double q[6] = {-130.0, 0.0, 0.0, 40.0, 50.0, -60.0};
+            q[1] = t2 - d->j[1].theta_deg + 0.01 * j;
+            q[2] = t3 / D2R - d->j[2].theta_deg + 1e-6 * k;
+            target_of(&r, q, &T);
+            DHT_TRUE_MSG(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_sol) == DH_OK && n_sol >= 1u,
+                         "folded elbow on the shoulder cylinder: q = %s not solved", q_str(q, 6u, 0));
+            check_solutions(&r, &T, sol, n_sol, "folded elbow on the shoulder cylinder", &wp, &wr);
+        }
+    for (far = 0; far < 2; far++) {
+        double q[6] = {20.0, -30.0, 0.0, 40.0, 50.0, -60.0}, w[3], nw = 0.0, wz = 0.0;
+        dhs_mat4_d F[DHS_MAX_JOINTS];
+        q[2] = phi / D2R - d->j[2].theta_deg;
+        dhs_fk_desc(d, q, F, NULL);
+        /* from the joint 2 axis (frame 1) to the wrist centre (frame 4), normal to that axis */
+        for (i = 0; i < 3; i++) w[i] = F[3].m[3][i] - F[0].m[3][i];
+        for (i = 0; i < 3; i++) wz += w[i] * F[0].m[2][i];
+        for (i = 0; i < 3; i++) {
+            w[i] -= wz * F[0].m[2][i];
+            nw += w[i] * w[i];
+        }
+        nw = sqrt(nw);
+        DHT_TRUE(fabs(nw - (fabs(a2) + sqrt(a3 * a3 + e * e))) < 1e-9); /* stretched */
+        target_of(&r, q, &T);
+        for (i = 0; i < 3; i++) T.m[3][i] = (float)((double)T.m[3][i] + (far ? 1e-5 : 1e-7) * w[i] / nw);
+        if (far) {
+            DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_sol), DH_ERR_UNREACHABLE);
+            DHT_EQ_INT(n_sol, 0);
+        } else {
+            DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_sol), DH_OK);
+            DHT_TRUE(n_sol >= 1u);
+            for (s = 0; s < n_sol; s++) DHT_TRUE((sol[s].flags & DH_IKC_SING_ELBOW) != 0u);
+            check_solutions(&r, &T, sol, n_sol, "just beyond the stretched elbow", &wp, &wr);
+        }
+    }
+    dht_printf("ikc puma elbow boundary: worst position %.3g m, rotation %.3g rad\n", wp, wr);
 }
 
 /* Puma with the elbow stretched (theta3 = atan2(sin alpha3 d4, a3)): the
@@ -666,7 +748,7 @@ static void ikc_base_tool(void)
         DHT_EQ_INT(dh_ikc_analyse_f32(&r, &m), DH_OK);
         DHT_EQ_INT(m.kind, g_robots[k].kind);
         {
-            long t;
+            long t, nedge = 0;
             double wp = 0, wr = 0;
             for (t = 0; t < DHT_ITER(1000); t++) {
                 double q[NJ], best = 1e30;
@@ -674,16 +756,16 @@ static void ikc_base_tool(void)
                 dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
                 uint32_t n_sol = 0, s;
                 dhs_random_q_robot(&r, q);
-                if (!away_from(g_robots[k].desc, q, 1e-6)) continue;
                 target_of(&r, q, &T);
-                DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, 0u, sol, &n_sol), DH_OK);
+                DHT_EQ_INT(solve_target(&m, &r, g_robots[k].desc, q, &T, sol, &n_sol, &nedge), DH_OK);
                 check_solutions(&r, &T, sol, n_sol, "base and tool", &wp, &wr);
                 if (!away_from_singular(g_robots[k].desc, q)) continue;
                 for (s = 0; s < n_sol; s++) best = fmin(best, q_dist(&r, sol[s].q, q));
                 DHT_TRUE_MSG(best <= TOL_GEN, "%s with base and tool: q = %s not found (%.3g)", g_robots[k].name,
                              q_str(q, r.n, 0), best);
             }
-            dht_printf("ikc %s with base and tool: worst position %.3g m, rotation %.3g rad\n", g_robots[k].name, wp, wr);
+            dht_printf("ikc %s with base and tool: worst position %.3g m, rotation %.3g rad; %ld solved beyond a limit\n",
+                       g_robots[k].name, wp, wr, nedge);
         }
     }
 }
@@ -902,6 +984,7 @@ static const dht_case cases[] = {
     DHT_CASE(ikc_wrist_singular),
     DHT_CASE(ikc_shoulder_singular),
     DHT_CASE(ikc_elbow_stretched),
+    DHT_CASE(ikc_elbow_boundary),
     DHT_CASE(ikc_mdh_puma),
     DHT_CASE(ikc_base_tool),
     DHT_CASE(ikc_completeness),

@@ -53,6 +53,13 @@
  * boundary (F = DH_QPOS_FRAC; 2^-11 mm for robots in mm) is solved, one
  * beyond it by more than 2^(8 - F) units is DH_ERR_UNREACHABLE; on the
  * float path the band is 5e-7 L (L: the sum of the robot's |a| and |d|).
+ * A target within the band, inside or beyond, is solved at the boundary:
+ * its joints differ from an exact solution's by up to the square root of
+ * the band (about 0.13 deg for the Puma's stretched elbow), and near a
+ * singularity the target's rounding moves the joints by more than it
+ * moves the pose (joint 2 of a folded Puma elbow, whose wrist centre lies
+ * 0.5 mm from axis 2, by up to about 2 deg). A joint limit that near may
+ * drop such a solution (DH_ERR_LIMIT; DH_IKC_KEEP_OUT_OF_LIMITS keeps it).
  *
  * Accuracy (tests against double, test/test_ikc*.c; measured figures:
  * docs/accuracy_kin.md): for every solution FK(q) matches the target within
