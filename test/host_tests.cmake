@@ -86,3 +86,20 @@ endforeach()
 # every source, header, script and CMake file carries its licence line
 find_program(DH_SPDX_PYTHON3 NAMES python3 REQUIRED)
 add_test(NAME spdx_lines COMMAND ${DH_SPDX_PYTHON3} ${PROJECT_SOURCE_DIR}/tools/check_spdx.py ${PROJECT_SOURCE_DIR})
+
+# Every C snippet of README.md and docs/*.md (test/doc_snippets.py): a whole
+# program or a fragment in a named wrapper (test/snippets/), compiled against
+# this build's library, run, and run under valgrind when it is installed.
+if(DH_BUILD_TOOLS)
+  set(_dh_snippet_cli --cli $<TARGET_FILE:dhmath_cli>)
+else()
+  set(_dh_snippet_cli)
+endif()
+add_test(NAME doc_snippets
+  COMMAND ${DH_SPDX_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/doc_snippets.py
+          --root ${PROJECT_SOURCE_DIR} --cc ${CMAKE_C_COMPILER} --lib $<TARGET_FILE:dhmath>
+          --out ${CMAKE_CURRENT_BINARY_DIR}/doc_snippets
+          "--includes=$<JOIN:$<TARGET_PROPERTY:dhmath,INTERFACE_INCLUDE_DIRECTORIES>,@@>"
+          "--defines=$<JOIN:$<TARGET_PROPERTY:dhmath,INTERFACE_COMPILE_DEFINITIONS>,@@>"
+          ${_dh_snippet_cli})
+set_tests_properties(doc_snippets PROPERTIES TIMEOUT 600)
