@@ -6,6 +6,7 @@ installed, runs valgrind-clean.
 
     python3 test/doc_snippets.py --root ROOT --cc CC --lib LIBDHMATH.a
         --out DIR [--includes 'DIR@@DIR'] [--defines 'A=1@@B=2'] [--cli DHMATH]
+        [--cflags 'FLAG@@FLAG'] [--no-valgrind]
 
 Each ```c fence is one of:
   * a whole program: it defines main(); compiled as it is;
@@ -71,12 +72,14 @@ def main(argv):
     ap.add_argument('--includes', default='')
     ap.add_argument('--defines', default='')
     ap.add_argument('--cli')
+    ap.add_argument('--cflags', default='', help="the build's own compile and link flags, '@@'-separated")
+    ap.add_argument('--no-valgrind', action='store_true', help='a sanitizer build: the sanitizers check instead')
     a = ap.parse_args(argv[1:])
     root = os.path.abspath(a.root)
     incs = [d for d in a.includes.split('@@') if d] or [os.path.join(root, 'include')]
     defs = [d for d in a.defines.split('@@') if d]
-    flags = WARN + ['-I' + d for d in incs] + ['-D' + d for d in defs]
-    valgrind = shutil.which('valgrind')
+    flags = WARN + [f for f in a.cflags.split('@@') if f] + ['-I' + d for d in incs] + ['-D' + d for d in defs]
+    valgrind = None if a.no_valgrind else shutil.which('valgrind')
     os.makedirs(a.out, exist_ok=True)
 
     docs = [os.path.join(root, 'README.md')] + sorted(glob.glob(os.path.join(root, 'docs', '*.md')))
@@ -140,7 +143,7 @@ def main(argv):
     if count == 0:
         failures.append('no ```c block found in README.md and docs/*.md')
     if not valgrind:
-        print('valgrind not installed: the snippets ran without it')
+        print('the snippets ran without valgrind (%s)' % ('--no-valgrind' if a.no_valgrind else 'not installed'))
     for f in failures:
         print('FAIL ' + f)
     print('%d C snippets, %d failures' % (count, len(failures)))

@@ -89,17 +89,26 @@ add_test(NAME spdx_lines COMMAND ${DH_SPDX_PYTHON3} ${PROJECT_SOURCE_DIR}/tools/
 
 # Every C snippet of README.md and docs/*.md (test/doc_snippets.py): a whole
 # program or a fragment in a named wrapper (test/snippets/), compiled against
-# this build's library, run, and run under valgrind when it is installed.
+# this build's library with its flags, run, and run under valgrind when it is
+# installed (sanitizer builds: under the sanitizers instead). Needs the CLI
+# (a wrapper links a robot that dhmath gen writes).
 if(DH_BUILD_TOOLS)
-  set(_dh_snippet_cli --cli $<TARGET_FILE:dhmath_cli>)
-else()
-  set(_dh_snippet_cli)
+  separate_arguments(_dh_snippet_flags UNIX_COMMAND "${CMAKE_C_FLAGS}")
+  set(_dh_snippet_opts)
+  if(DH_SANITIZE)
+    list(APPEND _dh_snippet_flags -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+    set(_dh_snippet_opts --no-valgrind)
+  endif()
+  if(DH_COVERAGE)
+    list(APPEND _dh_snippet_flags --coverage)
+  endif()
+  string(REPLACE ";" "@@" _dh_snippet_flags "${_dh_snippet_flags}")
+  add_test(NAME doc_snippets
+    COMMAND ${DH_SPDX_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/doc_snippets.py
+            --root ${PROJECT_SOURCE_DIR} --cc ${CMAKE_C_COMPILER} --lib $<TARGET_FILE:dhmath>
+            --out ${CMAKE_CURRENT_BINARY_DIR}/doc_snippets --cli $<TARGET_FILE:dhmath_cli>
+            "--includes=$<JOIN:$<TARGET_PROPERTY:dhmath,INTERFACE_INCLUDE_DIRECTORIES>,@@>"
+            "--defines=$<JOIN:$<TARGET_PROPERTY:dhmath,INTERFACE_COMPILE_DEFINITIONS>,@@>"
+            "--cflags=${_dh_snippet_flags}" ${_dh_snippet_opts})
+  set_tests_properties(doc_snippets PROPERTIES TIMEOUT 600)
 endif()
-add_test(NAME doc_snippets
-  COMMAND ${DH_SPDX_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/doc_snippets.py
-          --root ${PROJECT_SOURCE_DIR} --cc ${CMAKE_C_COMPILER} --lib $<TARGET_FILE:dhmath>
-          --out ${CMAKE_CURRENT_BINARY_DIR}/doc_snippets
-          "--includes=$<JOIN:$<TARGET_PROPERTY:dhmath,INTERFACE_INCLUDE_DIRECTORIES>,@@>"
-          "--defines=$<JOIN:$<TARGET_PROPERTY:dhmath,INTERFACE_COMPILE_DEFINITIONS>,@@>"
-          ${_dh_snippet_cli})
-set_tests_properties(doc_snippets PROPERTIES TIMEOUT 600)
