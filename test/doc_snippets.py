@@ -15,9 +15,9 @@ Each ```c fence is one of:
     fragment goes (the prose of the doc says what surrounds it). A line
     '/* @GEN@ ROBOT.dh NAME */' of the wrapper adds the source written by
     'dhmath gen ROBOT.dh NAME' (needs --cli) to the program.
-Any other ```c fence fails the test, and so does a wrapper under
-test/snippets/ that no fragment uses, an unclosed fence, or a
-compiler warning (-Werror).
+Any other ```c fence fails the test, and so does a C fence under another
+name (```h, ```c99 ...), a wrapper under test/snippets/ that no fragment
+uses, an unclosed fence, or a compiler warning (-Werror).
 """
 import argparse
 import glob
@@ -32,6 +32,7 @@ FENCE = re.compile(r'^(\s*)```\s*([A-Za-z0-9_+-]*)\s*$')
 FRAGMENT = re.compile(r'^/\* fragment: (\S+?)[,:;]?\s.*\*/\s*$|^/\* fragment: (\S+?)\s*\*/\s*$')
 MAIN = re.compile(r'\bint\s+main\s*\(')
 SLOT = '/* @SNIPPET@ */'
+OTHER_C = ('h', 'c99', 'c11', 'cc', 'ansi-c')   # C under another name: an error, never skipped
 GEN = re.compile(r'^\s*/\* @GEN@ (\S+) ([A-Za-z_][A-Za-z0-9_]*) \*/\s*$', re.M)
 
 
@@ -47,6 +48,9 @@ def snippets(path):
             elif m and m.group(2) == '':
                 if lang == 'c':
                     out.append((start, ''.join(cur)))
+                elif lang in OTHER_C:
+                    raise SystemExit('%s:%d: a ```%s fence: C snippets are ```c (or another language, '
+                                     'not tested here)' % (path, start, lang))
                 cur = None
             else:
                 cur.append(line)
