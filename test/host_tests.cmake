@@ -111,3 +111,17 @@ foreach(_reach "0x90b0f7f3|stanford" "0x31b0e8661574b52d|abb_irb140")
             sh $<TARGET_FILE:test_ikc> ${_seed} ${_robot})
   set_tests_properties(test_ikc_reach_${_seed} PROPERTIES LABELS regression TIMEOUT 600)
 endforeach()
+
+# test_builds_agree (not a seeded suite: its own counts, DHT_DIFF_ONLY) at
+# DHT_SEED=0xa3372da0 for the plane transform: input 561679 has d = 2^127
+# and a T whose inverse has a bottom-row entry the two builds' general
+# inverses give as -4 and 0 (exact -0.22, within the inverse's bound): one
+# build's Q.b is -Inf, the other's +0.31, both within the bound carried
+# through P. The test asserts that such an Inf is still drawn.
+if(TARGET test_builds_agree)
+  add_test(NAME test_builds_agree_plane_seed_0xa3372da0
+    COMMAND sh -c "out=$(\"$1\" 2>&1); rc=$?; echo \"$out\"; [ $rc -eq 0 ] && echo \"$out\" | grep -q '^dh_mat4_apply_plane_f32 .*; [1-9][0-9]* Inf against a finite value of the other sign'"
+            sh $<TARGET_FILE:test_builds_agree>)
+  set_tests_properties(test_builds_agree_plane_seed_0xa3372da0 PROPERTIES
+    ENVIRONMENT "DHT_SEED=0xa3372da0;DHT_DIFF_ONLY=dh_mat4_apply_plane_f32" LABELS regression TIMEOUT 600)
+endif()
