@@ -122,8 +122,9 @@ static const char *q_str(const int32_t *q, uint32_t n)
  * near 92.7 deg (the folded elbow) or q5 near 0; for 686 of the 706 the
  * smallest singular value of the weighted Jacobian at the target is below
  * the solver's damping floor sqrt(wbar) = L 2^-11.5 = 0.59 mm/rad (most
- * 0.01 .. 0.1 mm/rad), so that an attempt crawls along that direction and
- * uses up max_iter. Against need = 99 %, the number of misses is
+ * 0.01 .. 0.1 mm/rad): attempts crawl along that direction (about 1 % of
+ * E per step) or stall, and the restarts use up max_iter (UNREACHABLE,
+ * some NO_CONVERGENCE). Against need = 99 %, the number of misses is
  * Binomial(n, 0.0035): over 100 targets it exceeds 1 % for 4.8 % of the
  * seeds, over 1000 for 0.1 %, over 10,000 for 7e-20 (1.4e-10 at a miss
  * rate of 0.5 %). So the host runs 10,000 targets whatever DHT_ITER_DIV
