@@ -70,6 +70,11 @@
 #define OFF_R(n) (22u * (n) + 68u)                   /* 3: its w, orientation error, Q3.29 */
 #define OFF_H(n) (22u * (n) + 75u)                   /* n*n: H', then its factor */
 #define OFF_Q0(n) ((n) * (n) + 22u * (n) + 75u)      /* n: q0 */
+/* The layout ends at DH_IK_WORK_Q(n) words (a quadratic in n: equal at three n, equal at every n),
+ * and the rotation scratch at OFF_D fills its 19 words up to OFF_H. */
+typedef char ikq_work_is_layout[(DH_IK_WORK_Q(1u) == OFF_Q0(1u) + 1u && DH_IK_WORK_Q(2u) == OFF_Q0(2u) + 2u &&
+                                 DH_IK_WORK_Q(3u) == OFF_Q0(3u) + 3u) ? 1 : -1];
+typedef char ikq_scratch_fits[(sizeof(dh_kin_rot_scratch_q) == (OFF_H(1u) - OFF_D(1u)) * sizeof(int32_t)) ? 1 : -1];
 
 /* Scalar state slots (workspace words); int64 values take two. */
 enum {

@@ -104,7 +104,11 @@ typedef struct {
     dh_qpos y; /**< y component */
     dh_qpos z; /**< z component */
 } dh_vec3_q;
-/** Fixed-point 3-vector of unit-scale values (Q2.30), e.g. directions. */
+/**
+ * Fixed-point 3-vector of dh_q30 words: unit-scale values in Q2.30 (e.g.
+ * the axis of dh_frame_to_axis_angle_q), except where a function says
+ * otherwise: dh_rot_error_q writes a rotation vector in Q3.29 radians.
+ */
 typedef struct {
     dh_q30 x; /**< x component */
     dh_q30 y; /**< y component */

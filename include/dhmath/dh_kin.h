@@ -154,7 +154,8 @@ dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh
  * @param F_target, F frames whose rotations are orthonormal within
  *        DH_ROT_ERROR_TOL_Q (dh_frame_ortho_error_q) with det > 0. May
  *        alias each other.
- * @param w output (Q3.29 rad).
+ * @param w output: each component in Q3.29 rad (1.0 rad = 2^29), not the
+ *        Q2.30 of dh_dir3_q's other uses.
  * @return DH_OK; DH_ERR_NOT_RIGID if a rotation is not orthonormal within
  *         the tolerance or is a reflection (w untouched).
  */
@@ -289,8 +290,8 @@ typedef struct {
     int32_t err_rot;     /**< masked orientation error norm, Q2.30 rad (saturated at INT32_MAX, 2 rad) */
 } dh_ik_result_q;
 
-/** Workspace int32 words needed by dh_ik_q for n joints: n^2 + 23 n + 76
- *  (250 for n = 6, 286 for n = 7): both Jacobians, the equilibrated
+/** Workspace int32 words needed by dh_ik_q for n joints: n^2 + 23 n + 75
+ *  (249 for n = 6, 285 for n = 7): both Jacobians, the equilibrated
  *  normal matrix and its factor, the frame, the orientation error's
  *  scratch, the solver state and a copy of q0 (so that dh_ik_q stays
  *  within its stack budget). */

@@ -844,8 +844,10 @@ static int inv_close(const dh_mat4_f32 *T, const dh_mat4_f32 *Xa, const dh_mat4_
 /* Q = P T^-1 of both builds: the inverse's bound carried through P, plus
  * 4 roundings of the row-times-matrix product in each build. Returns 1
  * within that bound, 2 within it only after adding rigid_err (see
- * plane_rigid_err), 0 otherwise. */
-static int plane_close(const diff_in *in, const dh_plane_f32 *Qa, const dh_plane_f32 *Qb, double rigid_err)
+ * plane_rigid_err), 0 otherwise; *cross set when an Inf was accepted
+ * against a finite value of the other sign. */
+static int plane_close(const diff_in *in, const dh_plane_f32 *Qa, const dh_plane_f32 *Qb, double rigid_err,
+                       int *cross)
 {
     dh_mat4_f32 X;
     const float *P = &in->pl.a;
@@ -860,16 +862,22 @@ static int plane_close(const diff_in *in, const dh_plane_f32 *Qa, const dh_plane
         for (i = 0; i < 4; i++) sum += fabs((double)P[i] * (double)X.m[j][i]);
         tol = 2.0 * pabs * tX + 8.0 * ldexp(1.0, -24) * sum + ldexp(1.0, -148);
         if (!isfinite(qa[j]) || !isfinite(qb[j])) {
-            /* an Inf is accepted against a finite value of the same sign
-             * that lies within the bound of FLT_MAX (the exact value may
-             * round to either side of the overflow threshold) */
+            /* an Inf is accepted against a finite value whose bound reaches
+             * the overflow threshold on the Inf's side: the two unrounded
+             * values lie within tol of each other, and the exact one may
+             * round to either side of the threshold. Where tol exceeds
+             * the finite value (a huge plane coefficient times an entry of
+             * T^-1 that the bound leaves open), that finite value may
+             * even have the other sign. */
             double fin = isfinite(qa[j]) ? (double)qa[j] : (double)qb[j];
             double inf = isfinite(qa[j]) ? (double)qb[j] : (double)qa[j];
+            double reach;
             if (bitsf(qa[j]) == bitsf(qb[j]) || (isnan(qa[j]) && isnan(qb[j]))) continue;
-            if (isnan(inf) || !isfinite(fin) || (fin < 0.0) != (inf < 0.0)) return 0;
-            if (fabs(fin) + tol >= (double)FLT_MAX) continue;
-            if (fabs(fin) + tol + pabs * rigid_err < (double)FLT_MAX) return 0;
-            res = 2;
+            if (isnan(inf) || !isfinite(fin)) return 0;
+            reach = (inf > 0.0) ? fin + tol : tol - fin;
+            if (reach + pabs * rigid_err < (double)FLT_MAX) return 0;
+            if (reach < (double)FLT_MAX) res = 2;
+            if (fin != 0.0 && (fin < 0.0) != (inf < 0.0)) *cross = 1;
             continue;
         }
         d = fabs((double)qa[j] - (double)qb[j]);
@@ -980,7 +988,7 @@ static void float_words_init(void)
 static int is_nan_bits(uint32_t u) { return (u & 0x7FFFFFFFu) > 0x7F800000u; }
 
 typedef struct {
-    unsigned long bad, bound, zero_sign, nan_payload, rigid_plane, ok, zero_beyond;
+    unsigned long bad, bound, zero_sign, nan_payload, rigid_plane, inf_cross, ok, zero_beyond;
     size_t zero_first, zero_last; /* words of the last zero-sign difference */
 } diff_tally;
 
@@ -1038,8 +1046,9 @@ static int agree(unsigned long idx, const diff_in *in, const diff_out *a, const 
         if (a->st != DH_OK || b->st != DH_OK) return 0;
         if (cmp == C_INV && !inv_close(&in->M[0], &a->M, &b->M)) return 0;
         if (cmp == C_PLANE) {
-            int pc = plane_close(in, &a->pl, &b->pl, plane_rigid_err(&in->M[0]));
+            int cross = 0, pc = plane_close(in, &a->pl, &b->pl, plane_rigid_err(&in->M[0]), &cross);
             if (pc == 0) return 0;
+            if (cross) t->inf_cross++;
             if (pc == 2) { t->rigid_plane++; if (t->rigid_plane <= 3u) report("NOTE (accepted only with the rigid-path term, see plane_rigid_err):", "dh_mat4_apply_plane_f32", idx, in, a, b, DIFF_OUT_SMALL); }
         }
         t->bound++;
@@ -1086,7 +1095,9 @@ static void run(int fn, const char *name, diff_gen gen, unsigned long count, siz
     if (t.ok != 0ul) dht_printf(" (%lu DH_OK)", t.ok);
     dht_printf(": %lu disagree; within the exception: %lu bound, %lu zero sign; %lu NaN payload",
                t.bad, t.bound, t.zero_sign, t.nan_payload);
-    if (cmp == C_PLANE) dht_printf("; %lu only with the rigid-path term", t.rigid_plane);
+    if (cmp == C_PLANE)
+        dht_printf("; %lu only with the rigid-path term; %lu Inf against a finite value of the other sign",
+                   t.rigid_plane, t.inf_cross);
     if (cmp == C_ZERO_SIGN) dht_printf("; %lu zero sign outside the documented places", t.zero_beyond);
     dht_printf(" (%.2f s)\n", (double)(clock() - t0) / CLOCKS_PER_SEC);
     DHT_TRUE_MSG(t.bad == 0ul, "%s: %lu of %lu inputs disagree between the builds", name, t.bad, count);
