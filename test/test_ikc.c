@@ -65,20 +65,23 @@ static const char *qf_str(const float *q, uint32_t n, int slot)
 
 /* Largest joint difference between float solution s and q (revolute
  * joints modulo 360 deg). */
+/* |s - q| of joint i, revolute differences modulo 360 */
+static double joint_dist(const dh_robot *r, uint32_t i, float s, double q)
+{
+    double d = (double)s - q;
+    if (r->joint[i].type == DH_JOINT_REVOLUTE) {
+        d = fmod(d, 360.0);
+        if (d > 180.0) d -= 360.0;
+        if (d < -180.0) d += 360.0;
+    }
+    return fabs(d);
+}
+
 static double q_dist(const dh_robot *r, const float *s, const double *q)
 {
     double w = 0.0;
     uint32_t i;
-    for (i = 0; i < r->n; i++) {
-        double d = (double)s[i] - q[i];
-        if (r->joint[i].type == DH_JOINT_REVOLUTE) {
-            d = fmod(d, 360.0);
-            if (d > 180.0) d -= 360.0;
-            if (d < -180.0) d += 360.0;
-        }
-        d = fabs(d);
-        if (d > w) w = d;
-    }
+    for (i = 0; i < r->n; i++) w = fmax(w, joint_dist(r, i, s[i], q[i]));
     return w;
 }
 
@@ -275,6 +278,24 @@ static int limit_twin(const dh_robot *r, const float *c, const float *qn)
     return 1;
 }
 
+/* q_dist of a dh_ik_f32 result y from a closed-form solution c, where
+ * joints 4 and 6 count only beyond what the solver's orientation tolerance
+ * leaves open near the wrist singularity: stopped within tol_rot, y's
+ * joints 4 and 6 may each be off by up to tol_rot / |sin t5| (only their
+ * sum or difference is fixed at t5 = 0). */
+static double wrist_dist(const dh_robot *r, const dh_ik_params *p, const float *c, const double *y)
+{
+    const double s5 = fabs(sin((y[4] + (double)r->joint[4].theta_deg) * D2R));
+    const double open = (double)p->tol_rot / D2R / fmax(s5, 1e-9);
+    double w = 0.0;
+    uint32_t i;
+    for (i = 0; i < r->n; i++) {
+        const double d = joint_dist(r, i, c[i], y[i]);
+        w = fmax(w, (i == 3u || i == 5u) ? fmax(d - open, 0.0) : d);
+    }
+    return w;
+}
+
 /* dh_ik_f32 from random starts (no restarts) on random targets: every
  * converged in-limit result is one of the closed-form solutions. */
 static void ikc_numerical_completeness(void)
@@ -323,7 +344,7 @@ static void ikc_numerical_completeness(void)
                 for (s = 0; s < n_sol; s++) {
                     double dd[NJ], dq;
                     for (i = 0; i < r.n; i++) dd[i] = (double)qs[i];
-                    dq = q_dist(&r, sol[s].q, dd);
+                    dq = wrist_dist(&r, &p, sol[s].q, dd);
                     if ((sol[s].flags & DH_IKC_OUT_OF_LIMITS) != 0u && !limit_twin(&r, sol[s].q, qs)) continue;
                     if (dq < best) {
                         best = dq;
