@@ -18,6 +18,10 @@
 #      misspelled dhmath option on the command line is reported (warning
 #      under a parent, error at the top level), a misspelled set(DH_MAX_JOINT)
 #      of the parent gets a warning naming it;
+#   5b. strict parent (strict/): -Wall -Wextra -Wpedantic -Wconversion
+#      -Wshadow -Wundef -Wfloat-equal -Wcast-qual -Wstrict-prototypes
+#      -Wmissing-prototypes -Wdouble-promotion -Werror on the whole build,
+#      library sources included, with GCC and with Clang;
 #   6. cross builds through add_subdirectory with minimal toolchain files
 #      (cross/m0plus.cmake with DH_SMALL, cross/m4f.cmake with
 #      -ffreestanding and --gc-sections): the firmware links without libm;
@@ -173,6 +177,17 @@ if must_fail "$B/top_typo.log" "Unknown dhmath option DH_MAX_JOINT " \
 else
   bad "misspelled option at the top level not rejected"
 fi
+
+# ---- 5b. strict warnings as errors on the whole build, GCC and Clang
+for cc in gcc clang; do
+  if ! command -v $cc >/dev/null 2>&1; then bad "strict parent: no $cc"; continue; fi
+  if quiet "$B/strict_$cc.log" bash -c "cmake -S '$T/strict' -B '$B/strict-$cc' -DCMAKE_C_COMPILER=$cc \
+        -DCMAKE_BUILD_TYPE=Release -DDHMATH_SRC='$SRC' && cmake --build '$B/strict-$cc' -j$JOBS && '$B/strict-$cc/consumer'"; then
+    ok "$cc, -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wundef -Wfloat-equal -Wcast-qual -Wstrict-prototypes -Wmissing-prototypes -Wdouble-promotion -Werror on library and program: builds and runs"
+  else
+    bad "$cc: strict warnings on the library or program"
+  fi
+done
 
 # ---- 6. cross builds with minimal toolchain files
 for cpu in m0plus m4f; do
