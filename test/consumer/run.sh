@@ -32,7 +32,10 @@
 #      the installed host bin/dhmath, links with --orphan-handling=error
 #      (port's linker script) and runs under QEMU; the same consumer on the
 #      host, linked with --orphan-handling=warn: no orphan section but the
-#      C runtime's start files' (Debian's own crt objects have some);
+#      C runtime's start files' (Debian's own crt objects have some); and
+#      a host consumer that vendors dhmath (add_subdirectory), whose
+#      dhmath_add_robot() builds and runs the CLI target; a cross one with no
+#      host dhmath stops at configure time saying how to get one;
 #   7. no libm: no undefined symbol of the host, M0+ or M4F library is one
 #      that libm defines (nm against the toolchain's own libm);
 #   8. ecosystem metadata: zephyr/module.yml, zephyr/Kconfig (every DH_*
@@ -237,6 +240,21 @@ if quiet "$B/robot_host.log" bash -c "cmake -S '$T/robot' -B '$B/robot-host' -DC
   fi
 else
   bad "installed host consumer with dhmath_add_robot"
+fi
+
+if quiet "$B/robot_vendored.log" bash -c "cmake -S '$T/robot' -B '$B/robot-vendored' -DDHMATH_SRC='$SRC' && \
+      cmake --build '$B/robot-vendored' -j$JOBS && '$B/robot-vendored/robot_app'" &&
+   grep -q "dhmath gen planar.dh consumer_arm" "$B/robot_vendored.log" && [ -x "$B/robot-vendored/dhmath/cli/dhmath" ]; then
+  ok "host consumer vendoring dhmath: dhmath_add_robot with the CLI target built on demand: $(tail -1 "$B/robot_vendored.log")"
+else
+  bad "vendored host consumer with dhmath_add_robot"
+fi
+
+if must_fail "$B/robot_nohost.log" "no host .dhmath. program" \
+     cmake -S "$T/robot" -B "$B/robot-nohost" -DCMAKE_TOOLCHAIN_FILE="$SRC/port/cortex-m4f.cmake" -DDHMATH_SRC="$SRC"; then
+  ok "cross consumer vendoring dhmath, no host dhmath anywhere: configuration stops saying how to get one"
+else
+  bad "cross consumer without a host dhmath: no clear error"
 fi
 
 # ---- 7. no libm symbol among the undefined symbols of the library
