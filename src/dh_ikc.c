@@ -251,7 +251,8 @@ static DH_NOINLINE dh_status ikc_args(const dh_ikc_model_f32 *m, const dh_mat4_f
     }
     if (!dh_allfinite_f32(&T->m[0][0], 16u)) return DH_ERR_NAN;
     if (q_ref != NULL && !dh_allfinite_f32(q_ref, m->n)) return DH_ERR_NAN;
-    if (!dh_feq_f32(T->m[0][3], 0.0f) || !dh_feq_f32(T->m[1][3], 0.0f) || !dh_feq_f32(T->m[2][3], 0.0f) || !dh_feq_f32(T->m[3][3], 1.0f))
+    if (!dh_feq_f32(T->m[0][3], 0.0f) || !dh_feq_f32(T->m[1][3], 0.0f) || !dh_feq_f32(T->m[2][3], 0.0f) ||
+        !dh_feq_f32(T->m[3][3], 1.0f))
         return DH_ERR_NOT_RIGID;
     if (!dh_rot_cols_ok_f32(T->m[0], T->m[1], T->m[2], DH_ROT_ERROR_TOL)) return DH_ERR_NOT_RIGID;
     return DH_OK;
@@ -415,7 +416,9 @@ int dh_ikc_detect_wrist_f32_(dh_ikc_model_f32 *m)
 {
     float *k = m->k, L = 0.0f;
     uint32_t i;
-    if (!ikc_spherical(m) || !dh_feq_f32(m->ca[3], 0.0f) || !dh_feq_f32(m->ca[4], 0.0f) || !dh_feq_f32(m->ca[0], 0.0f)) return 0;
+    if (!ikc_spherical(m) || !dh_feq_f32(m->ca[3], 0.0f) || !dh_feq_f32(m->ca[4], 0.0f) ||
+        !dh_feq_f32(m->ca[0], 0.0f))
+        return 0;
     for (i = 0; i < 6u; i++) {
         L += fabsf(m->a[i]) + fabsf(m->d[i]);
         if (((m->prismatic >> i) & 1u) && m->qmin[i] <= m->qmax[i])

@@ -353,7 +353,8 @@ static DH_NOINLINE void par234_elbow(const dh_ikc_model_f32 *m, const float *q_r
     const float Bd = k[P_S2] * m->a[2] * s3d;
     const float y = w[3] * w[2] - Bd * w[1], x = w[3] * w[1] + Bd * w[2];
     const float t3 = ikc_atan2(s3d, w[4]);
-    const float t2 = (dh_feq_f32(x, 0.0f) && dh_feq_f32(y, 0.0f)) ? ikc_ref(dh_ikc_cref_f32_(m, q_ref, 1u)) : ikc_atan2(y, x);
+    const float t2 = (dh_feq_f32(x, 0.0f) && dh_feq_f32(y, 0.0f)) ? ikc_ref(dh_ikc_cref_f32_(m, q_ref, 1u))
+                                                                   : ikc_atan2(y, x);
     const float t4 = dh_wrap180_f32(k[P_S23] * (w[0] - t2 - k[P_S2] * t3));
     rec[e].q[0] = rec[0].q[0];
     rec[e].q[1] = t2;
