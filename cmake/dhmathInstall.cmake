@@ -5,7 +5,12 @@
 #   <prefix>/lib/libdhmath.a                    the library
 #   <prefix>/lib/cmake/dhmath/                  find_package(dhmath 0.2 CONFIG)
 #                                               -> imported target dhmath::dhmath
+#   <prefix>/lib/cmake/dhmath/dhmathRobot.cmake  dhmath_add_robot() (with
+#                                               dhmathGen.cmake)
 #   <prefix>/lib/pkgconfig/dhmath.pc            pkg-config dhmath
+#   <prefix>/bin/dhmath                         the host CLI (host builds
+#                                               with DH_BUILD_TOOLS)
+#   <prefix>/share/doc/dhmath/LICENSE           the licence (Apache-2.0)
 # The build's DH_* settings travel as interface definitions (CMake) and in
 # Cflags (pkg-config), so a consumer compiles with the library's layout.
 include(CMakePackageConfigHelpers)
@@ -22,9 +27,19 @@ if(DH_CONFIG_HEADER AND IS_ABSOLUTE "${DH_CONFIG_HEADER}")
   install(FILES ${DH_CONFIG_HEADER} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dhmath)
 endif()
 install(EXPORT dhmathTargets NAMESPACE dhmath:: DESTINATION ${DH_INSTALL_CMAKEDIR})
+if(DH_BUILD_TOOLS AND NOT CMAKE_CROSSCOMPILING)
+  install(TARGETS dhmath_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
+install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(FILES ${PROJECT_SOURCE_DIR}/cmake/dhmathRobot.cmake ${PROJECT_SOURCE_DIR}/cmake/dhmathGen.cmake
+  DESTINATION ${DH_INSTALL_CMAKEDIR})
+# SPDX identifier of the licence: dhmathConfig.cmake (dhmath_LICENSE),
+# dhmath.pc (License:)
+set(DH_LICENSE Apache-2.0)
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/dhmathConfig.cmake.in
-  ${PROJECT_BINARY_DIR}/dhmathConfig.cmake INSTALL_DESTINATION ${DH_INSTALL_CMAKEDIR})
+  ${PROJECT_BINARY_DIR}/dhmathConfig.cmake INSTALL_DESTINATION ${DH_INSTALL_CMAKEDIR}
+  PATH_VARS CMAKE_INSTALL_BINDIR CMAKE_INSTALL_DOCDIR)
 # 0.x: a new minor version may change the API, so only the same minor matches
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/dhmathConfigVersion.cmake
   VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)

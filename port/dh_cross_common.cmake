@@ -9,9 +9,21 @@
 # startup and linker script: check by building a static library instead.
 set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
 
-# Never pick up host libraries or headers. The compiler driver finds the C
-# library's multilib variant matching the core flags by itself.
+# Never pick up host libraries, headers or packages. The compiler driver
+# finds the C library's multilib variant matching the core flags by itself.
+# The prefixes the user names (CMAKE_PREFIX_PATH, on the command line or in
+# the environment) are target prefixes, e.g. a cross build of dhmath
+# installed with cmake --install: they are search roots, so
+# find_package(dhmath) finds <prefix>/lib/cmake/dhmath there and nowhere
+# on the host.
 set(CMAKE_FIND_ROOT_PATH ${CMAKE_CURRENT_LIST_DIR}/no-sysroot)
+foreach(_dh_p IN LISTS CMAKE_PREFIX_PATH)
+  list(APPEND CMAKE_FIND_ROOT_PATH "${_dh_p}")
+endforeach()
+if(DEFINED ENV{CMAKE_PREFIX_PATH})
+  string(REPLACE ":" ";" _dh_env_prefixes "$ENV{CMAKE_PREFIX_PATH}")
+  list(APPEND CMAKE_FIND_ROOT_PATH ${_dh_env_prefixes})
+endif()
 set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
 set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
 set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)

@@ -53,7 +53,7 @@ dh_status dh_mat4_to_axis_angle_f32(const dh_mat4_f32 *T, dh_vec3_f32 *k, float 
         m = fabsf(dx);
         if (fabsf(dy) > m) m = fabsf(dy);
         if (fabsf(dz) > m) m = fabsf(dz);
-        if (m == 0.0f) {
+        if (dh_feq_f32(m, 0.0f)) {
             /* no rotation: the axis is arbitrary, documented as +z */
             k->x = 0.0f;
             k->y = 0.0f;

@@ -5,8 +5,9 @@
  * with. Every translation unit of an application references the symbols of
  * its own values, so an application built with another DH_MAX_JOINTS or
  * DH_QPOS_FRAC fails to link, and the undefined symbol names the setting.
- * The references come from a non-allocated note section; they keep these
- * two bytes in the image (.rodata), nothing else.
+ * The references are two PC-relative offsets in a retained COMDAT .rodata
+ * section (one 8-byte copy per image); they keep these two bytes in the
+ * image (.rodata), nothing else.
  */
 #include "dhmath/dh_config.h"
 #include "dh_internal.h"

@@ -115,7 +115,7 @@ dh_status dh_euler_to_mat3_f32(dh_euler_seq seq, const float ang_deg[3], dh_mat3
 static float dh_euler_atan2_deg(float y, float x)
 {
     float ax = fabsf(x), ay = fabsf(y), d;
-    if (ax == 0.0f && ay == 0.0f) {
+    if (dh_feq_f32(ax, 0.0f) && dh_feq_f32(ay, 0.0f)) {
         d = 0.0f;                                               /* undefined: 0 */
     } else if (ay <= ax && x > 0.0f) {
         d = dh_atan2f_(y, x) * DH_RAD2DEG_F;                    /* [-45, 45] */

@@ -260,7 +260,7 @@ DH_INLINE int chain_regs(const dh_robot *r, const float *q, dh_mat4_f32 *T, cons
             }
         }
     }
-    if (z != 0.0f) return 1;
+    if (!dh_feq_f32(z, 0.0f)) return 1;
     T->m[0][0] = n0; T->m[0][1] = n1; T->m[0][2] = n2;
     T->m[1][0] = o0; T->m[1][1] = o1; T->m[1][2] = o2;
     T->m[2][0] = a0; T->m[2][1] = a1; T->m[2][2] = a2;
@@ -289,7 +289,7 @@ static DH_SIZE_NOINLINE dh_status frame_finite(const dh_mat4_f32 *T)
     DH_UNROLL4
     for (c = 0; c < 4; c++)
         for (k = 0; k < FK_TEST_ROWS; k++) z += T->m[c][k] - T->m[c][k];
-    return (z == 0.0f) ? DH_OK : DH_ERR_OVERFLOW;
+    return dh_feq_f32(z, 0.0f) ? DH_OK : DH_ERR_OVERFLOW;
 }
 
 dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)

@@ -51,8 +51,8 @@ dh_status dh_frame_from_mat4_q(const dh_mat4_f32 *T, dh_frame_q *F)
         F->p[j] = dh_round_sat(T->m[3][j] * ps, &ovf);
     }
     if (ovf) return DH_ERR_OVERFLOW;
-    if (DH_M4(T, 3, 0) != 0.0f || DH_M4(T, 3, 1) != 0.0f || DH_M4(T, 3, 2) != 0.0f ||
-        DH_M4(T, 3, 3) != 1.0f)
+    if (!dh_feq_f32(DH_M4(T, 3, 0), 0.0f) || !dh_feq_f32(DH_M4(T, 3, 1), 0.0f) || !dh_feq_f32(DH_M4(T, 3, 2), 0.0f) ||
+        !dh_feq_f32(DH_M4(T, 3, 3), 1.0f))
         return DH_ERR_NOT_RIGID;
     return DH_OK;
 }

@@ -169,8 +169,8 @@ static DH_NOINLINE dh_status ik_args(const ik_ctx *c, size_t work_len)
     for (i = 0; i < n; i++)
         if (!dh_isfinite_f32(q0[i])) return DH_ERR_NAN;
     /* bottom row exactly 0 0 0 1 (a projective target has no pose) */
-    if (target->m[0][3] != 0.0f || target->m[1][3] != 0.0f || target->m[2][3] != 0.0f ||
-        target->m[3][3] != 1.0f)
+    if (!dh_feq_f32(target->m[0][3], 0.0f) || !dh_feq_f32(target->m[1][3], 0.0f) ||
+        !dh_feq_f32(target->m[2][3], 0.0f) || !dh_feq_f32(target->m[3][3], 1.0f))
         return DH_ERR_NOT_RIGID;
     return DH_OK;     /* the caller checks the rotation part (stack depth) */
 }
@@ -449,7 +449,7 @@ static DH_NOINLINE int ik_apply(const ik_ctx *c, uint32_t free_bits)
         const dh_joint *jt = &c->r->joint[i];
         float dq = ((free_bits >> i) & 1u) ? dx[i] * ik_unit(jt, L) : 0.0f;
         qb[i] = ik_clamp(jt, qa[i] + dq);
-        if (qb[i] != qa[i]) moved = 1;
+        if (!dh_feq_f32(qb[i], qa[i])) moved = 1;
     }
     return moved;
 }

@@ -66,7 +66,7 @@ typedef char dh_ikc_k_fits_[(KW_COUNT <= (int)DH_IKC_K) ? 1 : -1];
  * version (dh_atan2f_deg_), which no solver frame could afford on top. */
 DH_INLINE float ikc_atan2(float y, float x, float fallback)
 {
-    if (y == 0.0f && x == 0.0f) return fallback;
+    if (dh_feq_f32(y, 0.0f) && dh_feq_f32(x, 0.0f)) return fallback;
     return dh_atan2f_(y, x) * DH_RAD2DEG_F;
 }
 
@@ -83,7 +83,7 @@ static int ikc_is_identity(const dh_mat4_f32 *T)
     uint32_t c, r;
     for (c = 0; c < 4u; c++)
         for (r = 0; r < 4u; r++)
-            if (T->m[c][r] != ((c == r) ? 1.0f : 0.0f)) return 0;
+            if (!dh_feq_f32(T->m[c][r], (c == r) ? 1.0f : 0.0f)) return 0;
     return 1;
 }
 
@@ -91,8 +91,8 @@ static int ikc_is_identity(const dh_mat4_f32 *T)
  * and 5, 6 not parallel (joints 4..6 revolute). */
 static int ikc_spherical(const dh_ikc_model_f32 *m)
 {
-    return m->n == 6u && (m->prismatic & 0x38u) == 0u && m->a[3] == 0.0f && m->a[4] == 0.0f &&
-           m->d[4] == 0.0f && m->sa[3] != 0.0f && m->sa[4] != 0.0f;
+    return m->n == 6u && (m->prismatic & 0x38u) == 0u && dh_feq_f32(m->a[3], 0.0f) && dh_feq_f32(m->a[4], 0.0f) &&
+           dh_feq_f32(m->d[4], 0.0f) && !dh_feq_f32(m->sa[3], 0.0f) && !dh_feq_f32(m->sa[4], 0.0f);
 }
 
 /* ---- analysis -------------------------------------------------------------- */
@@ -142,8 +142,8 @@ static DH_NOINLINE void ikc_canonical(const dh_robot *r, dh_ikc_model_f32 *m)
  * DH_ROT_ERROR_TOL (det > 0), every entry finite. */
 static int ikc_rigid(const dh_mat4_f32 *F)
 {
-    return dh_allfinite_f32(&F->m[0][0], 16u) && F->m[0][3] == 0.0f && F->m[1][3] == 0.0f &&
-           F->m[2][3] == 0.0f && F->m[3][3] == 1.0f &&
+    return dh_allfinite_f32(&F->m[0][0], 16u) && dh_feq_f32(F->m[0][3], 0.0f) && dh_feq_f32(F->m[1][3], 0.0f) &&
+           dh_feq_f32(F->m[2][3], 0.0f) && dh_feq_f32(F->m[3][3], 1.0f) &&
            dh_rot_cols_ok_f32(F->m[0], F->m[1], F->m[2], DH_ROT_ERROR_TOL);
 }
 
@@ -251,7 +251,8 @@ static DH_NOINLINE dh_status ikc_args(const dh_ikc_model_f32 *m, const dh_mat4_f
     }
     if (!dh_allfinite_f32(&T->m[0][0], 16u)) return DH_ERR_NAN;
     if (q_ref != NULL && !dh_allfinite_f32(q_ref, m->n)) return DH_ERR_NAN;
-    if (T->m[0][3] != 0.0f || T->m[1][3] != 0.0f || T->m[2][3] != 0.0f || T->m[3][3] != 1.0f)
+    if (!dh_feq_f32(T->m[0][3], 0.0f) || !dh_feq_f32(T->m[1][3], 0.0f) || !dh_feq_f32(T->m[2][3], 0.0f) ||
+        !dh_feq_f32(T->m[3][3], 1.0f))
         return DH_ERR_NOT_RIGID;
     if (!dh_rot_cols_ok_f32(T->m[0], T->m[1], T->m[2], DH_ROT_ERROR_TOL)) return DH_ERR_NOT_RIGID;
     return DH_OK;
@@ -415,7 +416,9 @@ int dh_ikc_detect_wrist_f32_(dh_ikc_model_f32 *m)
 {
     float *k = m->k, L = 0.0f;
     uint32_t i;
-    if (!ikc_spherical(m) || m->ca[3] != 0.0f || m->ca[4] != 0.0f || m->ca[0] != 0.0f) return 0;
+    if (!ikc_spherical(m) || !dh_feq_f32(m->ca[3], 0.0f) || !dh_feq_f32(m->ca[4], 0.0f) ||
+        !dh_feq_f32(m->ca[0], 0.0f))
+        return 0;
     for (i = 0; i < 6u; i++) {
         L += fabsf(m->a[i]) + fabsf(m->d[i]);
         if (((m->prismatic >> i) & 1u) && m->qmin[i] <= m->qmax[i])
@@ -427,7 +430,7 @@ int dh_ikc_detect_wrist_f32_(dh_ikc_model_f32 *m)
     if (m->prismatic == 0u) {
         const float e = m->sa[2] * m->d[3], a2 = m->a[1], a3 = m->a[2];
         const float rho = dh_sqrt_f32(a3 * a3 + e * e);
-        if (m->sa[1] != 0.0f || a2 == 0.0f || !(rho > 0.0f)) return 0;
+        if (!dh_feq_f32(m->sa[1], 0.0f) || dh_feq_f32(a2, 0.0f) || !(rho > 0.0f)) return 0;
         k[KW_SIGMA] = m->ca[1];
         k[KW_H] = m->d[1] + m->ca[1] * (m->d[2] + m->ca[2] * m->d[3]);
         k[KW_PHI] = dh_atan2f_deg_(e, a3, 0.0f);
@@ -442,7 +445,7 @@ int dh_ikc_detect_wrist_f32_(dh_ikc_model_f32 *m)
     } else if (m->prismatic == 0x4u) {
         const float e = m->sa[2] * m->d[3];
         float s3, c3;
-        if (m->ca[1] != 0.0f) return 0;
+        if (!dh_feq_f32(m->ca[1], 0.0f)) return 0;
         (void)dh_sincos_f32(m->off[2], &s3, &c3);
         k[KW_S3] = s3;
         k[KW_C3] = c3;
@@ -711,7 +714,7 @@ static DH_NOINLINE uint32_t ikc_shoulder(const dh_ikc_model_f32 *m, float cref1,
     if (rad < -tol) return 0u;
     if (rad > 0.0f) u = dh_sqrt_f32(rad);
     /* wrist centre on axis 1: joint 1 from q_ref, one branch */
-    sing = (rad <= tol && k[KW_HZERO] != 0.0f);
+    sing = (rad <= tol && !dh_feq_f32(k[KW_HZERO], 0.0f));
     for (b = 0; b < 2u; b++) {
         dh_ikc_sol_f32 *s = &sol[nu];
         float ub = (b == 0u) ? u : -u;
@@ -737,7 +740,7 @@ static DH_NOINLINE uint32_t ikc_shoulder(const dh_ikc_model_f32 *m, float cref1,
  * post_inv (flagged at analysis) are left out. */
 static DH_NOINLINE void ikc_prepare(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol)
 {
-    const int pre = m->k[KW_PRE] != 0.0f, post = m->k[KW_POST] != 0.0f;
+    const int pre = !dh_feq_f32(m->k[KW_PRE], 0.0f), post = !dh_feq_f32(m->k[KW_POST], 0.0f);
     float *rn = IKC_RN(sol), *ra = IKC_RA(sol), *p = IKC_P(sol);
     uint32_t i;
     /* in the frame of T's columns: e_x, Rx(alpha6)^T e_z and the wrist

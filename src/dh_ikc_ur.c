@@ -47,7 +47,7 @@ DH_INLINE float ikc_sign(float x)
  * more bytes of stack on Cortex-M0+, more than the budget leaves. */
 DH_INLINE float ikc_atan2(float y, float x)
 {
-    if (y == 0.0f && x == 0.0f) return 0.0f;
+    if (dh_feq_f32(y, 0.0f) && dh_feq_f32(x, 0.0f)) return 0.0f;
     return dh_wrap180_f32(dh_atan2f_(y, x) * DH_RAD2DEG_F);
 }
 
@@ -298,7 +298,7 @@ static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const float *q_r
  * second record. */
 static DH_NOINLINE void par234_angles(dh_ikc_sol_f32 *rec)
 {
-    if (rec[3].q[5] != 0.0f) rec[0].q[0] = ikc_atan2(rec[3].q[2], rec[3].q[1]);
+    if (!dh_feq_f32(rec[3].q[5], 0.0f)) rec[0].q[0] = ikc_atan2(rec[3].q[2], rec[3].q[1]);
     if (rec[3].flags == IKC_EMPTY) return;
     rec[0].q[1] = ikc_atan2(rec[3].q[3], rec[3].q[4]);
     rec[0].q[2] = ikc_atan2(rec[2].q[1], rec[2].q[2]);
@@ -353,7 +353,8 @@ static DH_NOINLINE void par234_elbow(const dh_ikc_model_f32 *m, const float *q_r
     const float Bd = k[P_S2] * m->a[2] * s3d;
     const float y = w[3] * w[2] - Bd * w[1], x = w[3] * w[1] + Bd * w[2];
     const float t3 = ikc_atan2(s3d, w[4]);
-    const float t2 = (x == 0.0f && y == 0.0f) ? ikc_ref(dh_ikc_cref_f32_(m, q_ref, 1u)) : ikc_atan2(y, x);
+    const float t2 = (dh_feq_f32(x, 0.0f) && dh_feq_f32(y, 0.0f)) ? ikc_ref(dh_ikc_cref_f32_(m, q_ref, 1u))
+                                                                   : ikc_atan2(y, x);
     const float t4 = dh_wrap180_f32(k[P_S23] * (w[0] - t2 - k[P_S2] * t3));
     rec[e].q[0] = rec[0].q[0];
     rec[e].q[1] = t2;

@@ -104,6 +104,14 @@ DH_INLINE float dh_sqrt_f32(float x)
 #define DH_SOFT_FLOAT 0
 #endif
 
+/** a == b for floats: +0 equals -0, a NaN equals nothing. Written with
+ *  C99's quiet comparison macros (<math.h>, no libm): compilers emit the
+ *  one comparison of ==, and -Wfloat-equal has no == on floats to report. */
+DH_INLINE int dh_feq_f32(float a, float b)
+{
+    return !islessgreater(a, b) && !isunordered(a, b);
+}
+
 /** 1 if x is finite (not NaN, not +-Inf). With an FPU: x - x is 0 exactly
  *  then and NaN otherwise; soft float: the exponent field is not all ones. */
 DH_INLINE int dh_isfinite_f32(float x)
@@ -113,7 +121,7 @@ DH_INLINE int dh_isfinite_f32(float x)
     memcpy(&u, &x, sizeof u);
     return (u & 0x7F800000u) != 0x7F800000u;
 #else
-    return (x - x) == 0.0f;
+    return dh_feq_f32(x - x, 0.0f);
 #endif
 }
 

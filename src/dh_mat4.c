@@ -174,7 +174,7 @@ dh_status dh_mat4_rot_axis_f32(float kx, float ky, float kz, float deg, dh_mat4_
         z += k[i] * 0.0f;
         if (i < 3 && fabsf(k[i]) > m) m = fabsf(k[i]);
     }
-    if (z != z) return DH_ERR_NAN;
+    if (!dh_feq_f32(z, z)) return DH_ERR_NAN;
     if (m < FLT_MIN) return DH_ERR_ZERO_AXIS;
     /* scaled by the largest component: no overflow, len in [1, sqrt 3] */
     for (i = 0; i < 3; i++) {
@@ -598,7 +598,7 @@ int dh_mat4_isfinite_f32(const dh_mat4_f32 *T)
     for (c = 0; c < 4; c++) {
         for (r = 0; r < 4; r++) z += T->m[c][r] * 0.0f;
     }
-    return z == z;
+    return dh_feq_f32(z, z);
 }
 
 dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec3_f32 *v)
@@ -612,7 +612,7 @@ dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, 
      * recomputes the same h and classifies everything else */
     DH_VEC4_ROWS(T, in[0], in[1], in[2], in[3], h[0], h[1], h[2], h[3]);
     if (dh_isfinite_f32(h[0]) && dh_isfinite_f32(h[1]) && dh_isfinite_f32(h[2]) &&
-        dh_isfinite_f32(h[3]) && h[3] != 0.0f) {
+        dh_isfinite_f32(h[3]) && !dh_feq_f32(h[3], 0.0f)) {
         const float x = h[0] / h[3], y = h[1] / h[3], w = h[2] / h[3];
         if (dh_isfinite_f32(x) && dh_isfinite_f32(y) && dh_isfinite_f32(w)) {
             v->x = x + 0.0f;
@@ -627,13 +627,13 @@ dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, 
         z += h[i] * 0.0f;
         zi += in[i] * 0.0f;
     }
-    if (z != z) return (dh_mat4_isfinite_f32(T) && zi == zi) ? DH_ERR_OVERFLOW : DH_ERR_NAN;
-    if (h[3] == 0.0f) return DH_ERR_DOMAIN;
+    if (!dh_feq_f32(z, z)) return (dh_mat4_isfinite_f32(T) && dh_feq_f32(zi, zi)) ? DH_ERR_OVERFLOW : DH_ERR_NAN;
+    if (dh_feq_f32(h[3], 0.0f)) return DH_ERR_DOMAIN;
     for (i = 0; i < 3; i++) {
         h[i] = h[i] / h[3] + 0.0f;
         z += h[i] * 0.0f;
     }
-    if (z != z) return DH_ERR_OVERFLOW;
+    if (!dh_feq_f32(z, z)) return DH_ERR_OVERFLOW;
     v->x = h[0];
     v->y = h[1];
     v->z = h[2];

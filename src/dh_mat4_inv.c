@@ -302,7 +302,7 @@ static DH_NOINLINE DH_COLD int dh_inv_gauss_jordan(dh_mat4_f32 *X)
         for (i = k + 1; i < 4; i++) {
             if (fabsf(X->m[i][k]) > fabsf(X->m[p][k])) p = i;
         }
-        if (X->m[p][k] == 0.0f) return 0;
+        if (dh_feq_f32(X->m[p][k], 0.0f)) return 0;
         perm = perm * 4u + (unsigned)p;
         dh_swap4(X, 4u * (unsigned)k, 4u * (unsigned)p, 1u);
         dh_gj_eliminate(X, k);
@@ -370,9 +370,9 @@ static DH_NOINLINE DH_COLD float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_
         w = 1.0f;
     }
     /* sg (R = 0 gives 0 or Inf, which the clamp maps to 2^-60, 2^60) */
-    if (cp == 0.0f) {
-        if (rq != 0.0f) sg = m3 / rq * DH_U24;          /* p exactly 0 */
-    } else if (rq == 0.0f) {
+    if (dh_feq_f32(cp, 0.0f)) {
+        if (!dh_feq_f32(rq, 0.0f)) sg = m3 / rq * DH_U24;          /* p exactly 0 */
+    } else if (dh_feq_f32(rq, 0.0f)) {
         sg = cp / m3 * 16777216.0f;                      /* q exactly 0 */
     } else {
         sg = dh_sqrtf_(cp) / dh_sqrtf_(rq);
@@ -416,8 +416,8 @@ static DH_NOINLINE DH_COLD dh_status dh_inv_certified(const dh_mat4_f32 *T, dh_m
     const float s = dh_scan(T, aff, X), sg = X->m[0][0];
     float na, z = 0.0f, f = sg * 1.41421356f;
     uint32_t b;
-    if (s != s) return DH_ERR_NAN;
-    if (s == 0.0f) return DH_ERR_SINGULAR;
+    if (!dh_feq_f32(s, s)) return DH_ERR_NAN;
+    if (dh_feq_f32(s, 0.0f)) return DH_ERR_SINGULAR;
     /* X = A and its balanced norm */
     na = dh_bnorm(NULL, T, s, sg, aff, X, 1.0f);
     /* f: the power of two nearest to sg (within sqrt(2)), exact for sg in
@@ -435,7 +435,7 @@ static DH_NOINLINE DH_COLD dh_status dh_inv_certified(const dh_mat4_f32 *T, dh_m
      * type is asked again rather than kept across the calls: one value
      * less in this frame keeps the M0+ stack within its budget.) */
     if (dh_affine_type(T)) z = dh_affine_t(X, T);
-    if (z != z) return DH_ERR_OVERFLOW;
+    if (!dh_feq_f32(z, z)) return DH_ERR_OVERFLOW;
     return DH_OK;
 }
 
@@ -482,7 +482,7 @@ static DH_NOINLINE int dh_inv_affine(dh_mat4_f32 *out, const dh_mat4_f32 *T, flo
     t2 = 0.0f - (x20 * px + x21 * py + x22 * pz);
     /* the translation may overflow (or be NaN from p): the general path
      * reports it */
-    if (!((t0 - t0) + (t1 - t1) + (t2 - t2) == 0.0f)) return 0;
+    if (!dh_feq_f32((t0 - t0) + (t1 - t1) + (t2 - t2), 0.0f)) return 0;
     out->m[0][0] = x00; out->m[0][1] = x10; out->m[0][2] = x20; out->m[0][3] = 0.0f;
     out->m[1][0] = x01; out->m[1][1] = x11; out->m[1][2] = x21; out->m[1][3] = 0.0f;
     out->m[2][0] = x02; out->m[2][1] = x12; out->m[2][2] = x22; out->m[2][3] = 0.0f;
@@ -581,7 +581,7 @@ static DH_NOINLINE void dh_proj_phase2(dh_mat4_f32 *X, const dh_mat4_f32 *M, flo
 static DH_NOINLINE int dh_inv_proj(dh_mat4_f32 *X, const dh_mat4_f32 *M)
 {
     const float f = dh_proj_phase1(X, M);
-    if (f == 0.0f) return 0;
+    if (dh_feq_f32(f, 0.0f)) return 0;
     dh_proj_phase2(X, M, f);
     return 1;
 }
@@ -651,7 +651,7 @@ dh_status dh_mat4_check_rot_f32(const dh_mat4_f32 *T, float tol)
             bad |= !(fabsf(d) <= tol);
         }
     }
-    if (z != z) return DH_ERR_NAN;
+    if (!dh_feq_f32(z, z)) return DH_ERR_NAN;
     if (bad) return DH_ERR_NOT_RIGID;
     /* det R = n . (o x a) = sum of n_i (o_j a_k - o_k a_j) over the cyclic
      * permutations (i, j, k) of (0, 1, 2) */
@@ -692,7 +692,7 @@ static DH_NOINLINE int dh_rigid_t_ok(const dh_mat4_f32 *T)
         const float t = T->m[3][0] * T->m[j][0] + T->m[3][1] * T->m[j][1] + T->m[3][2] * T->m[j][2];
         z += t - t;   /* NaN iff t is Inf or NaN */
     }
-    return z == 0.0f;
+    return dh_feq_f32(z, 0.0f);
 }
 
 /*
@@ -729,7 +729,7 @@ dh_status dh_mat4_inv_auto_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 static DH_FAST_NOINLINE int dh_plane_finite(const dh_plane_f32 *P)
 {
     const float z = P->a * 0.0f + P->b * 0.0f + P->c * 0.0f + P->d * 0.0f;
-    return z == z;
+    return dh_feq_f32(z, z);
 }
 
 /* T^-1 into X as dh_mat4_inv_auto_f32 takes it (the general inverse alone

@@ -276,7 +276,7 @@ float dh_asinf_deg_(float v, unsigned want_acos)
         tl = ((1.0f - th) - sh) - sl;
     }
     r = dh_sqrtf_(th);
-    if (th != 0.0f) {
+    if (!dh_feq_f32(th, 0.0f)) {
         dh_mf_two_prod(r, r, &ph, &pl);
         rl = (((th - ph) - pl) + tl) / (r + r);
     }

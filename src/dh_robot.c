@@ -30,7 +30,7 @@ DH_INLINE unsigned frame_to_fix(const dh_mat4_f32 *src, dh_frame_q *F, unsigned 
         const float x = src->m[c][k];
         int32_t *const col = (c < 3u) ? F->r[c] : F->p;
         st |= dh_f32_to_fix(x, (c < 3u) ? 30u : (unsigned)DH_QPOS_FRAC, (k == 3u) ? &spare : &col[k]);
-        if (x != ((c == k) ? 1.0f : 0.0f)) b |= (k == 3u) ? 2u : 1u;
+        if (!dh_feq_f32(x, (c == k) ? 1.0f : 0.0f)) b |= (k == 3u) ? 2u : 1u;
     }
     *bad = b;
     return st;

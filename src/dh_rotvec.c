@@ -149,7 +149,7 @@ dh_status dh_rotvec_to_mat3_f32(const dh_vec3_f32 *phi, dh_mat3_f32 *R)
     m = fabsf(x);
     if (fabsf(y) > m) m = fabsf(y);
     if (fabsf(z) > m) m = fabsf(z);
-    if (m == 0.0f) {
+    if (dh_feq_f32(m, 0.0f)) {
         k[0] = 0.0f;
         k[1] = 0.0f;
         k[2] = 1.0f;
@@ -207,7 +207,7 @@ dh_status dh_mat3_to_rotvec_f32(const dh_mat3_f32 *R, dh_vec3_f32 *phi)
     st = dh_mat3_to_quat_f32(R, &q); /* checks R; w >= 0 */
     if (st != DH_OK) return st;
     n = dh_sqrt_f32(q.x * q.x + q.y * q.y + q.z * q.z);
-    if (n == 0.0f) {
+    if (dh_feq_f32(n, 0.0f)) {
         phi->x = 0.0f;
         phi->y = 0.0f;
         phi->z = 0.0f;

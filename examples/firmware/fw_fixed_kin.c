@@ -31,7 +31,8 @@
 #include "dhmath/dhmath.h"
 
 /* Puma 560 in mm (examples/robots/puma560_mm.dh), generated into .rodata by
- * `dhmath gen examples/robots/puma560_mm.dh dhg_puma560_mm` (test/gen/) */
+ * `dhmath gen examples/robots/puma560_mm.dh dhg_puma560_mm` at build time
+ * (dhmath_add_robot() in examples/firmware/CMakeLists.txt) */
 extern const dh_robot dhg_puma560_mm;
 
 static const dh_q16 configs[3][6] = {

@@ -120,12 +120,20 @@
  * The library defines one symbol per interface setting, named after the
  * value it was built with (src/dh_config.c), e.g.
  * dhmath_config_mismatch_DH_MAX_JOINTS_is_8. Every translation unit that
- * includes this header (GCC or Clang, ELF targets) references the symbols
- * of ITS values from a non-allocated note section (kept by --gc-sections,
- * not loaded): no code, no RAM; the image holds the library's two 1-byte
- * symbols. Built with other values, the link fails
- * with "undefined reference to dhmath_config_mismatch_DH_MAX_JOINTS_is_6"
- * (the application's value). The library's own sources define
+ * includes this header (GCC 11 or later, Clang 13 or later, ELF targets)
+ * references the symbols of ITS values from a 4-byte-aligned pair of
+ * PC-relative offsets in .rodata.dhmath_config_check_j<N>_q<F>, a section
+ * that every linker script places with the rest of .rodata.* (no section
+ * of its own: --orphan-handling=error links). The section is in a COMDAT
+ * group named like it (the image keeps one 8-byte copy per configuration,
+ * however many translation units include the header) and carries
+ * SHF_GNU_RETAIN (binutils 2.36 or later), so --gc-sections keeps it and
+ * the linker resolves the references; the library's two 1-byte symbols
+ * stay in .rodata with it. No code, no RAM. Built with other values, the
+ * link fails with "undefined reference to
+ * dhmath_config_mismatch_DH_MAX_JOINTS_is_6" (the application's value).
+ * The references are hidden symbols: a shared object that links the static
+ * library resolves them inside itself. The library's own sources define
  * DH_NO_CONFIG_CHECK (they define the symbols instead); an application may
  * define it to leave the check out.
  * @{ */
@@ -139,12 +147,16 @@
 #define DH_CFG_SYM_QPOS_FRAC_ DH_CFG_CAT_(dhmath_config_mismatch_DH_QPOS_FRAC_is_, DH_QPOS_FRAC)
 /** @} */
 
-#if !defined(DH_NO_CONFIG_CHECK) && (defined(__GNUC__) || defined(__clang__)) && defined(__ELF__)
-/* An ELF note (name "dhmath", type 1) holding the two references. */
-__asm__(".pushsection .note.dhmath.config,\"\",%note\n\t.balign 4\n\t"
-        ".4byte 7\n\t.4byte 8\n\t.4byte 1\n\t.asciz \"dhmath\"\n\t.balign 4\n\t"
-        ".4byte dhmath_config_mismatch_DH_MAX_JOINTS_is_" DH_CFG_STR_(DH_MAX_JOINTS) "\n\t"
-        ".4byte dhmath_config_mismatch_DH_QPOS_FRAC_is_" DH_CFG_STR_(DH_QPOS_FRAC) "\n\t"
+#if !defined(DH_NO_CONFIG_CHECK) && defined(__ELF__) && \
+    ((defined(__clang__) && (__clang_major__ >= 13)) || (!defined(__clang__) && defined(__GNUC__) && (__GNUC__ >= 11)))
+/* The two references, in a retained COMDAT .rodata section. */
+#define DH_CFG_GROUP_ "dhmath_config_check_j" DH_CFG_STR_(DH_MAX_JOINTS) "_q" DH_CFG_STR_(DH_QPOS_FRAC)
+__asm__(".pushsection .rodata." DH_CFG_GROUP_ ",\"aGR\",%progbits," DH_CFG_GROUP_ ",comdat\n\t"
+        ".balign 4\n\t"
+        ".hidden dhmath_config_mismatch_DH_MAX_JOINTS_is_" DH_CFG_STR_(DH_MAX_JOINTS) "\n\t"
+        ".hidden dhmath_config_mismatch_DH_QPOS_FRAC_is_" DH_CFG_STR_(DH_QPOS_FRAC) "\n\t"
+        ".4byte dhmath_config_mismatch_DH_MAX_JOINTS_is_" DH_CFG_STR_(DH_MAX_JOINTS) " - .\n\t"
+        ".4byte dhmath_config_mismatch_DH_QPOS_FRAC_is_" DH_CFG_STR_(DH_QPOS_FRAC) " - .\n\t"
         ".popsection");
 #endif
 

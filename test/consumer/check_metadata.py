@@ -17,7 +17,12 @@ Checks, with no YAML or Kconfig library:
     from CONFIG_DHMATH_X;
   - zephyr/module.yml names the module and points at files that exist;
   - library.json is JSON with name, version == DH_VERSION_STRING, existing
-    srcDir/includeDir and -fno-math-errno;
+    srcDir/includeDir and -fno-math-errno, license Apache-2.0, a git
+    repository url, authors with names, and platforms as a list that names
+    native, Cortex-M and RISC-V platforms and not atmelavr (AVR would copy
+    the tables to RAM);
+  - zephyr/module.yml names the licence (in a comment: its schema has no
+    licence key);
   - the top-level CMakeLists.txt knows every DH_X as an option.
 Exit status 0 when every check holds.
 """
@@ -204,6 +209,8 @@ def main(argv):
     cm = kv.get("build.cmake")
     if not cm or not os.path.isfile(os.path.join(root, cm, "CMakeLists.txt")):
         err("zephyr/module.yml: build.cmake does not name a directory with a CMakeLists.txt")
+    if not re.search(r"^#.*\bApache-2\.0\b", mod, re.M):
+        err("zephyr/module.yml: no comment naming the licence (Apache-2.0)")
     kc = kv.get("build.kconfig")
     if not kc or not os.path.isfile(os.path.join(root, kc)):
         err("zephyr/module.yml: build.kconfig does not name a file")
@@ -224,6 +231,25 @@ def main(argv):
                 err("library.json: build.%s is not a directory" % key)
         if "-fno-math-errno" not in build.get("flags", []):
             err("library.json: build.flags lacks -fno-math-errno")
+        if lj.get("license") != "Apache-2.0":
+            err("library.json: license is not Apache-2.0")
+        repo = lj.get("repository")
+        if not isinstance(repo, dict) or repo.get("type") != "git" or not str(repo.get("url", "")).startswith("https://"):
+            err("library.json: repository is not {type: git, url: https://...}")
+        authors = lj.get("authors")
+        if not isinstance(authors, list) or not authors or not all(isinstance(a, dict) and a.get("name")
+                                                                    for a in authors):
+            err("library.json: authors is not a list of {name: ...}")
+        plat = lj.get("platforms")
+        if not isinstance(plat, list):
+            err("library.json: platforms is not a list")
+        else:
+            for need in ("native", "ststm32", "sifive"):
+                if need not in plat:
+                    err("library.json: platforms lacks %s" % need)
+            for bad in ("*", "atmelavr", "atmelmegaavr"):
+                if bad in plat:
+                    err("library.json: platforms names %s" % bad)
 
     top = read(root, "CMakeLists.txt")
     known = re.search(r"set\(_dh_known([^)]*)\)", top)
