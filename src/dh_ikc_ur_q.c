@@ -89,6 +89,10 @@
 /* evaluations per record: the branch's u, then the search (2^6 - 1, in pairs) */
 #define IKU_SEARCH_SH 6u
 #define IKU_SEARCH_LAST ((1u << IKU_SEARCH_SH) - 1u)
+/* p234_done: no record (below every margin) */
+#define IKU_NO_MARGIN (-INT64_MAX)
+/* p234_done: overflow */
+#define IKU_K_OVF 0x80000000u
 #define IKU_POS_LIM ((int64_t)1 << 30)
 
 DH_INLINE int iku_small(int32_t x)
@@ -249,7 +253,8 @@ static DH_NOINLINE int p234_point(const dh_ikc_model_q *m, dh_ikc_sol_q *sol)
     if (v < -iku_btol(dh_q_abs_u32(k[P_H]))) return -1;
     band = ((int64_t)dh_q_abs_u32(k[P_H]) + 1) << IKU_CYL_SH;
     /* o[4]: the branch count, + 4 on axis 1 */
-    o[4] = (dh_q_abs_u32(o[0]) <= (uint32_t)IKU_SING_AXIS && dh_q_abs_u32(o[1]) <= (uint32_t)IKU_SING_AXIS) ? 4 : 0;
+    o[4] = 0;
+    if (dh_q_abs_u32(o[0]) <= (uint32_t)IKU_SING_AXIS && dh_q_abs_u32(o[1]) <= (uint32_t)IKU_SING_AXIS) o[4] = 4;
     if (o[4] != 0 || v <= band) {
         o[3] = 0;
         o[4] += 1;
@@ -329,8 +334,11 @@ static DH_NOINLINE void p234_n(const dh_ikc_model_q *m, dh_ikc_sol_q *sol)
 }
 
 /* the first wrist record of the shoulder branch in sol[1] into slot j (N
- * from p234_n, worked on in place; SING_WRIST: the only record); 1 on
- * overflow */
+ * from p234_n, worked on in place; 1 on overflow). A singular wrist takes
+ * t6 = cref6 and has one record (SING_WRIST), unless bit j & ~2 of
+ * sol[5].flags is set (p234_done: that record is beyond the 2R's reach):
+ * then phi from the third column as off the singularity (exact however
+ * small s5), two records, flagged SING_WRIST. */
 static DH_NOINLINE int p234_wrist(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, uint32_t j, int32_t cref5)
 {
     const int32_t *k = m->k;
@@ -339,6 +347,9 @@ static DH_NOINLINE int p234_wrist(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, ui
     int32_t sn, cs;
     r0->flags = sol[1].flags;
     if (dh_q_abs_u32(n[2]) <= (uint32_t)IKU_SING && dh_q_abs_u32(n[3]) <= (uint32_t)IKU_SING) {
+        r0->flags |= DH_IKC_SING_WRIST;
+    }
+    if ((r0->flags & DH_IKC_SING_WRIST) != 0u && (sol[5].flags & (1u << (j & ~2u))) == 0u) {
         /* axes 2, 3, 4, 6 parallel: t6 = cref6, phi from the first column,
          * Rz(phi) g = (n11, n21), g = (c5 c6, -sb w5 s6) */
         r0->q[1] = n[4] < 0 ? Q16_180 : 0;
@@ -347,7 +358,6 @@ static DH_NOINLINE int p234_wrist(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, ui
         if (n[4] < 0) cs = -cs;
         if (k[P_SB] * k[P_W5] > 0) sn = -sn;
         r0->q[3] = dh_ikc_atan2_q_(dh_q_mul64(n[1], cs) - dh_q_mul64(n[0], sn), dh_q_mla64(dh_q_mul64(n[0], cs), n[1], sn));
-        r0->flags |= DH_IKC_SING_WRIST;
         dh_sincos_q(r0->q[3], &sn, &cs);
         return p234_record(m, r0, sol[1].q, 1, cs, sn);
     }
@@ -399,9 +409,10 @@ static DH_NOINLINE void p234_band(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, un
     const int64_t v = dh_q_mla64(dh_q_mul64(o[0], o[0]), o[1], o[1]) - dh_q_mul64(m->k[P_H], m->k[P_H]);
     const int64_t t = iku_btol(dh_q_abs_u32(m->k[P_H]));
     /* v >= -t (p234_point); |u| <= 2^30.5 */
-    int32_t hi = (int32_t)dh_q_isqrt62((uint64_t)(v + t)), lo = -hi;
+    const int64_t vhi = v + t, vlo = v - t;
+    int32_t hi = (int32_t)dh_q_isqrt62((uint64_t)vhi), lo = -hi;
     if (o[4] != 1) {
-        lo = v > t ? (int32_t)dh_q_isqrt62((uint64_t)(v - t)) : 0;
+        lo = vlo > 0 ? (int32_t)dh_q_isqrt62((uint64_t)vlo) : 0;
         if (j >= 4u) {
             const int32_t a = lo;
             lo = -hi;
@@ -476,16 +487,16 @@ static DH_NOINLINE int p234_next(dh_ikc_sol_q *sol, uint32_t k)
 /* After evaluation k (p234_wrist's record in slot j; st != 0: overflow):
  * the flip for the second wrist branch, the 2R margin; returns the k
  * that the loop continues from (k | (2^sh - 1): record j done), or
- * UINT32_MAX on an overflow of the branch's own u. */
+ * IKU_K_OVF on an overflow of the branch's own u. */
 static DH_NOINLINE uint32_t p234_done(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, uint32_t k, int st)
 {
     const uint32_t j = (k >> IKU_SEARCH_SH) << 1, i = k & IKU_SEARCH_LAST;
     dh_ikc_sol_q *r = &sol[j];
-    int64_t f = INT64_MIN;
+    int64_t f = IKU_NO_MARGIN;
     int e = st;
     if (e == 0 && (j & 2u) != 0u) {
-        /* a singular wrist has one record */
-        if ((r->flags & DH_IKC_SING_WRIST) != 0u) {
+        /* a singular wrist has one record (p234_wrist) */
+        if ((r->flags & DH_IKC_SING_WRIST) != 0u && (sol[5].flags & (1u << (j & ~2u))) == 0u) {
             if (i == 0u) {
                 r->flags = IKU_EMPTY;
                 return k | IKU_SEARCH_LAST;
@@ -495,9 +506,16 @@ static DH_NOINLINE uint32_t p234_done(const dh_ikc_model_q *m, dh_ikc_sol_q *sol
             e = p234_flip(m, sol, r, r);
         }
     }
-    if (e > 0 && i == 0u) return UINT32_MAX;
+    if (e > 0 && i == 0u) return IKU_K_OVF;
     if (e == 0) f = iku_margin(m->a[1], m->a[2], r->q[4], r->q[5]);
     if (f >= 0) return k | IKU_SEARCH_LAST;
+    if (i == 0u && (r->flags & DH_IKC_SING_WRIST) != 0u && (j & 2u) == 0u && (sol[5].flags & (1u << j)) == 0u) {
+        /* the singular wrist's record (t6 = cref6) beyond the reach: again
+         * with phi as off the singularity (k - 1 wraps at 0: the loop's
+         * increment returns to k) */
+        sol[5].flags |= 1u << j;
+        return k - 1u;
+    }
     if (i == 0u) {
         /* beyond the reach: searched off axis 1, unless hopeless */
         if (sol[5].q[4] > 2 || p234_hopeless(m, sol, f)) {
@@ -567,6 +585,7 @@ dh_status dh_ikc_par234_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc
     if (st > 0) return DH_ERR_OVERFLOW;
     if (st < 0) return DH_OK; /* unreachable */
     for (k = 0; k < DH_IKC_MAX_SOL; k++) sol[k].flags = IKU_EMPTY;
+    sol[5].flags = 0u; /* p234_wrist's bits */
     /* the wrist records at each shoulder branch's u, and for those beyond
      * the 2R's reach the search of p234_band; one helper at a time */
     for (k = 0; k < (4u << IKU_SEARCH_SH); k++) {
@@ -577,7 +596,7 @@ dh_status dh_ikc_par234_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc
             st = p234_wrist(m, sol, (k >> IKU_SEARCH_SH) << 1, dh_ikc_cref_q_(m, q_ref, 5u));
         }
         k = p234_done(m, sol, k, st);
-        if (k == UINT32_MAX) return DH_ERR_OVERFLOW;
+        if (k == IKU_K_OVF) return DH_ERR_OVERFLOW;
     }
     for (k = 0; k < DH_IKC_MAX_SOL; k += 2u)
         if (sol[k].flags != IKU_EMPTY)
