@@ -468,13 +468,15 @@ static DH_NOINLINE int p234_hopeless(const dh_ikc_model_q *m, const dh_ikc_sol_q
 /* Evaluation k of dh_ikc_par234_q_: record j = 2 (k >> sh) (shoulder
  * branch j / 4, wrist branch (j / 2) & 1), i = k & (2^sh - 1): i = 0 at
  * the branch's u, i >= 1 the search. Its shoulder branch and u into
- * sol[1].flags and sol[1].q[0] (p234_shoulder); 1 when there is nothing
- * to evaluate. */
+ * sol[1].flags and sol[1].q[0] (p234_shoulder) and 0; 1 when there is
+ * nothing to evaluate; 2 for the flip record at the branch's u, which
+ * p234_done wrote with the first. */
 static DH_NOINLINE int p234_next(dh_ikc_sol_q *sol, uint32_t k)
 {
     const uint32_t j = (k >> IKU_SEARCH_SH) << 1, s = j >> 2, i = k & IKU_SEARCH_LAST;
     if (i == 0u) {
         if (s >= ((uint32_t)sol[5].q[4] & 3u)) return 1;
+        if ((j & 2u) != 0u) return (sol[j].flags == IKU_EMPTY) ? 1 : 2;
         sol[1].q[0] = s ? -sol[5].q[3] : sol[5].q[3];
     } else {
         if (sol[j].flags == IKU_EMPTY) return 1;
@@ -484,27 +486,30 @@ static DH_NOINLINE int p234_next(dh_ikc_sol_q *sol, uint32_t k)
     return 0;
 }
 
-/* After evaluation k (p234_wrist's record in slot j; st != 0: overflow):
- * the flip for the second wrist branch, the 2R margin; returns the k
- * that the loop continues from (k | (2^sh - 1): record j done), or
- * IKU_K_OVF on an overflow of the branch's own u. */
+/* After evaluation k (p234_wrist's record in slot j; st = 1: overflow,
+ * 2: the flip record written at the branch's u): at the branch's u the
+ * flip into slot j + 2, in the search the flip in place for the second
+ * wrist branch (a singular wrist has one record, p234_wrist); the 2R
+ * margin. Returns the k that the loop continues from (k | (2^sh - 1):
+ * record j done), or IKU_K_OVF on an overflow at the branch's u. */
 static DH_NOINLINE uint32_t p234_done(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, uint32_t k, int st)
 {
     const uint32_t j = (k >> IKU_SEARCH_SH) << 1, i = k & IKU_SEARCH_LAST;
     dh_ikc_sol_q *r = &sol[j];
+    const int one = (r->flags & DH_IKC_SING_WRIST) != 0u && (sol[5].flags & (1u << (j & ~2u))) == 0u;
     int64_t f = IKU_NO_MARGIN;
     int e = st;
-    if (e == 0 && (j & 2u) != 0u) {
-        /* a singular wrist has one record (p234_wrist) */
-        if ((r->flags & DH_IKC_SING_WRIST) != 0u && (sol[5].flags & (1u << (j & ~2u))) == 0u) {
-            if (i == 0u) {
-                r->flags = IKU_EMPTY;
-                return k | IKU_SEARCH_LAST;
-            }
-            e = -1;
-        } else {
-            e = p234_flip(m, sol, r, r);
-        }
+    if (e == 2) {
+        e = 0;
+    } else if (e == 0 && (j & 2u) != 0u) {
+        e = one ? -1 : p234_flip(m, sol, r, r);
+    } else if (e == 0 && i == 0u) {
+        if (one)
+            sol[j + 2u].flags = IKU_EMPTY;
+        else if (p234_flip(m, sol, &sol[j + 2u], r) != 0)
+            return IKU_K_OVF;
+    } else {
+        /* overflow */
     }
     if (e > 0 && i == 0u) return IKU_K_OVF;
     if (e == 0) f = iku_margin(m->a[1], m->a[2], r->q[4], r->q[5]);
@@ -589,11 +594,14 @@ dh_status dh_ikc_par234_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc
     /* the wrist records at each shoulder branch's u, and for those beyond
      * the 2R's reach the search of p234_band; one helper at a time */
     for (k = 0; k < (4u << IKU_SEARCH_SH); k++) {
-        if (p234_next(sol, k)) continue;
-        st = p234_shoulder(m, sol, dh_ikc_cref_q_(m, q_ref, 0u));
+        st = p234_next(sol, k);
+        if (st == 1) continue;
         if (st == 0) {
-            p234_n(m, sol);
-            st = p234_wrist(m, sol, (k >> IKU_SEARCH_SH) << 1, dh_ikc_cref_q_(m, q_ref, 5u));
+            st = p234_shoulder(m, sol, dh_ikc_cref_q_(m, q_ref, 0u));
+            if (st == 0) {
+                p234_n(m, sol);
+                st = p234_wrist(m, sol, (k >> IKU_SEARCH_SH) << 1, dh_ikc_cref_q_(m, q_ref, 5u));
+            }
         }
         k = p234_done(m, sol, k, st);
         if (k == IKU_K_OVF) return DH_ERR_OVERFLOW;
