@@ -75,10 +75,10 @@
  * the target (1/2 LSB per coordinate) and of the wrist terms of the planar
  * point (a few LSB), and stays far below the FK residual of the tests
  * (5e-3 mm = 328 LSB). The shoulder (px^2 + py^2 - h^2 ~ 2 |h| dist) trades
- * up to B of radial distance for the 2R's reach (p234_search), so a
- * solved target is within B (shoulder) + B (2R, orthogonal to it) of its
- * solution's FK, and a target farther than that from the workspace is
- * refused. Elbow fold 2^5 LSB: the UR planar point carries the error of
+ * up to B of radial distance for the 2R's reach (p234_band), so a solved
+ * target is within B (shoulder) and B (2R, orthogonal to it) of its
+ * solution's FK, and a target farther than about 2 B from the workspace
+ * is refused. SCARA's 2R refuses beyond B alike. Elbow fold 2^5 LSB: the UR planar point carries the error of
  * the wrist terms (a few LSB), which a 2^3 LSB band missed for the UR3
  * folded (|a2| - |a3| = 30 mm). */
 #define IKU_BOUND_SH 6
