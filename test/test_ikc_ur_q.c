@@ -6,8 +6,10 @@
  * (test/support_robots.h) within 5e-3 mm and 5e-6 (rotation entries, ~rad),
  * completeness (the generating configuration among the solutions within
  * 2e-3 deg / mm) on random in-limit configurations away from the
- * singularities, singular cases flagged and FK-correct, unreachable
- * targets, the statuses of the fixed solvers.
+ * singularities, singular cases flagged and FK-correct, targets on the
+ * workspace boundary (B / 2 beyond it solved, 4 B beyond it refused, B =
+ * 64 LSB of the position format; the shoulder cylinder meeting the elbow's
+ * boundary), unreachable targets, the statuses of the fixed solvers.
  */
 #include "dht.h"
 #include "support_robots.h"
