@@ -35,12 +35,23 @@
  * Cortex-M0 (-O2, bench/target harness, 4 UR5 targets in mm): 36,300
  * instructions per call.
  *
+ * Boundary: a wrist record whose planar point is beyond the 2R's reach
+ * is searched for along the shoulder's freedom within the bound B
+ * (p234_band, IKU_BOUND_SH): near the shoulder cylinder the rounding of
+ * the target leaves t1 free by up to 1e-3 rad, which moves the planar
+ * point by tenths of mm. Such a target is solved with an FK residual
+ * within about 2 B (B = 64 LSB, 9.8e-4 mm at DH_QPOS_FRAC 16 in mm); a
+ * target farther than that from the workspace stays unreachable. The
+ * search costs up to 63 evaluations (t1, the wrist) per record, on
+ * targets near the boundary only.
+ *
  * Stack: as dh_ikc_q.c, the state lives in the solution array and the
  * solver calls one helper at a time. PARALLEL_234 slots: p05, u, the
- * branch count and the on-axis bit in sol[5]; x' = x6 and z' = axis 6 in
- * sol[7]; the shoulder branch's t1, c1, s1, p1 in sol[1]; wrist record r
- * = 4 s + 2 w holds (t1, t5, t6, phi, vx, vy) until its elbow solutions
- * overwrite slots r and r + 1.
+ * branch count (+ 4 on axis 1) and the search's hi in sol[5]; x' = x6 and
+ * z' = axis 6 in sol[7]; the shoulder branch's t1, c1, s1, p1 and the
+ * search's lo in sol[1]; N in sol[3] (the search's kept margin in its
+ * flags); wrist record r = 4 s + 2 w holds (t1, t5, t6, phi, vx, vy)
+ * until its elbow solutions overwrite slots r and r + 1.
  */
 #include "dhmath/dh_fixed.h"
 #include "dhmath/dh_trig.h"
@@ -55,14 +66,33 @@
 #define IKU_SING ((int32_t)1 << 11)
 /* on axis 1: within 16 LSB */
 #define IKU_SING_AXIS 16
-/* reach tolerance 2^7 LSB; elbow fold 2^5 LSB: the UR planar point carries the
- * error of the wrist terms (a few LSB), which a 2^3 LSB band missed for the
- * UR3 folded (|a2| - |a3| = 30 mm) */
-#define IKU_REACH_SH 7
+/* Boundary bound: a point within B = 2^IKU_BOUND_SH LSB of the position
+ * format (64 LSB; 9.8e-4 mm at DH_QPOS_FRAC 16 in mm) beyond the boundary
+ * of the 2R annulus (stretched or folded elbow) or inside the shoulder
+ * cylinder is clamped onto it and solved; the 2R refuses |v| beyond
+ * |a2| + |a3| + B or below ||a2| - |a3|| - B (tolerances 2^(sh + 1) (l + 1)
+ * on the products (l - |v|)(l + |v|) ~ 2 l dist). B covers the rounding of
+ * the target (1/2 LSB per coordinate) and of the wrist terms of the planar
+ * point (a few LSB), and stays far below the FK residual of the tests
+ * (5e-3 mm = 328 LSB). The shoulder (px^2 + py^2 - h^2 ~ 2 |h| dist) trades
+ * up to B of radial distance for the 2R's reach (p234_band), so a solved
+ * target is within B (shoulder) and B (2R, orthogonal to it) of its
+ * solution's FK, and a target farther than about 2 B from the workspace
+ * is refused. SCARA's 2R refuses beyond B alike. Elbow fold 2^5 LSB: the UR planar point carries the error of
+ * the wrist terms (a few LSB), which a 2^3 LSB band missed for the UR3
+ * folded (|a2| - |a3| = 30 mm). */
+#define IKU_BOUND_SH 6
 #define IKU_FOLD_SH 5
 /* shoulder cylinder band: px^2 + py^2 - h^2 within 2^4 (|h| + 1), a point
- * within 8 LSB of the cylinder */
+ * within 8 LSB of the cylinder: one branch */
 #define IKU_CYL_SH 4
+/* evaluations per record: the branch's u, then the search (2^6 - 1, in pairs) */
+#define IKU_SEARCH_SH 6u
+#define IKU_SEARCH_LAST ((1u << IKU_SEARCH_SH) - 1u)
+/* p234_done: no record (below every margin) */
+#define IKU_NO_MARGIN (-INT64_MAX)
+/* p234_done: overflow */
+#define IKU_K_OVF 0x80000000u
 #define IKU_POS_LIM ((int64_t)1 << 30)
 
 DH_INLINE int iku_small(int32_t x)
@@ -85,19 +115,61 @@ DH_INLINE int32_t iku_r30(int64_t x)
     return dh_q_rnd30_fit(x);
 }
 
+/* the tolerance of a product (l - dist)(l + dist) ~ 2 l (l - dist): a
+ * distance B from a circle of radius l (l >= 0) */
+DH_INLINE int64_t iku_btol(uint32_t l)
+{
+    return ((int64_t)l + 1) << (IKU_BOUND_SH + 1);
+}
+
+/* 2R reach of (vx, vy) with links l1, l2: ds = (|l1| + |l2|)^2 - |v|^2 and
+ * df = |v|^2 - (|l1| - |l2|)^2 from exact products (D = 2 |l1 l2|, K =
+ * |v|^2 - l1^2 - l2^2: ds = D - K, df = D + K) */
+DH_INLINE void iku_dsdf(int32_t l1, int32_t l2, int32_t vx, int32_t vy, int64_t *ds, int64_t *df)
+{
+    const int64_t D = 2 * (int64_t)iku_abs64(dh_q_mul64(l1, l2));
+    const int64_t K = dh_q_mla64(dh_q_mla64(dh_q_mul64(vx, vx), vy, vy), l1, -l1) - dh_q_mul64(l2, l2);
+    *ds = D - K;
+    *df = D + K;
+}
+
+/* the outer and inner radii |l1| + |l2|, ||l1| - |l2|| (|l| < 2^31) */
+DH_INLINE uint32_t iku_lsum(int32_t l1, int32_t l2)
+{
+    return dh_q_abs_u32(l1) + dh_q_abs_u32(l2);
+}
+
+DH_INLINE uint32_t iku_ldif(int32_t l1, int32_t l2)
+{
+    const uint32_t a = dh_q_abs_u32(l1), b = dh_q_abs_u32(l2);
+    return a > b ? a - b : b - a;
+}
+
+/* the 2R's reach margin: >= 0 when |v| lies in the annulus widened by B
+ * on each side (the points iku_elbow solves) */
+static DH_NOINLINE int64_t iku_margin(int32_t l1, int32_t l2, int32_t vx, int32_t vy)
+{
+    int64_t ds, df;
+    iku_dsdf(l1, l2, vx, vy, &ds, &df);
+    ds += iku_btol(iku_lsum(l1, l2));
+    df += iku_btol(iku_ldif(l1, l2));
+    return ds < df ? ds : df;
+}
+
 /* The 2R elbow shared by both families: link lengths l1, l2 (l1 l2 != 0),
  * planar point (vx, vy). Writes the pair (S, K sgn D) scaled below 2^30
  * into out[0..1]; returns 0 unreachable, 1 stretched or folded, 2 two
  * branches. */
 static DH_NOINLINE unsigned iku_elbow(int32_t l1, int32_t l2, int32_t vx, int32_t vy, int32_t *out)
 {
-    const int64_t D = 2 * (int64_t)iku_abs64(dh_q_mul64(l1, l2));
-    const int64_t K = dh_q_mla64(dh_q_mla64(dh_q_mul64(vx, vx), vy, vy), l1, -l1) - dh_q_mul64(l2, l2);
-    int64_t ds = D - K, df = D + K, Kd = ((l1 < 0) != (l2 < 0)) ? -K : K, tol;
+    int64_t ds, df, Kd, tol;
     unsigned s1, s2, sh = 0u;
     uint32_t S;
-    tol = ((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy) + 1) << IKU_REACH_SH;
-    if (ds < -tol || df < -tol) return 0u;
+    iku_dsdf(l1, l2, vx, vy, &ds, &df);
+    /* K sgn D: df - ds = 2 K, exactly halved */
+    Kd = (df - ds) >> 1;
+    if ((l1 < 0) != (l2 < 0)) Kd = -Kd;
+    if (ds < -iku_btol(iku_lsum(l1, l2)) || df < -iku_btol(iku_ldif(l1, l2))) return 0u;
     tol = (((int64_t)dh_q_abs_u32(vx) + (int64_t)dh_q_abs_u32(vy)) << IKU_FOLD_SH) + 1;
     if (ds <= tol) ds = 0;
     if (df <= tol) df = 0;
@@ -177,34 +249,39 @@ static DH_NOINLINE int p234_point(const dh_ikc_model_q *m, dh_ikc_sol_q *sol)
         xz[3u + i] = iku_r30(dh_ikc_mla_q_(dh_ikc_mla_q_(0, m->sa[5], c1[i]), m->ca[5], c2[i]));
     }
     v = dh_q_mla64(dh_q_mul64(o[0], o[0]), o[1], o[1]) - dh_q_mul64(k[P_H], k[P_H]);
-    if (v < -(((int64_t)dh_q_abs_u32(o[0]) + (int64_t)dh_q_abs_u32(o[1]) + (int64_t)dh_q_abs_u32(k[P_H]) + 1)
-              << IKU_REACH_SH))
-        return -1;
+    /* more than B inside the shoulder cylinder: unreachable */
+    if (v < -iku_btol(dh_q_abs_u32(k[P_H]))) return -1;
     band = ((int64_t)dh_q_abs_u32(k[P_H]) + 1) << IKU_CYL_SH;
-    o[5] = dh_q_abs_u32(o[0]) <= (uint32_t)IKU_SING_AXIS && dh_q_abs_u32(o[1]) <= (uint32_t)IKU_SING_AXIS;
-    if (o[5] || v <= band) {
+    /* o[4]: the branch count, + 4 on axis 1 */
+    o[4] = 0;
+    if (dh_q_abs_u32(o[0]) <= (uint32_t)IKU_SING_AXIS && dh_q_abs_u32(o[1]) <= (uint32_t)IKU_SING_AXIS) o[4] = 4;
+    if (o[4] != 0 || v <= band) {
         o[3] = 0;
-        o[4] = 1;
+        o[4] += 1;
     } else {
         o[3] = (int32_t)dh_q_isqrt62((uint64_t)v);
         o[4] = 2;
     }
+    o[5] = 0;
     return 0;
 }
 
-/* shoulder branch s: t1, c1, s1, p1x, p1y into sol[1].q, flags into
- * sol[1].flags; 1 on overflow */
-static DH_NOINLINE int p234_shoulder(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned s, int32_t cref0)
+/* shoulder branch s = sol[1].flags with the joint 5 point at u =
+ * sol[1].q[0] along x1 (p234_next): t1, c1, s1, p1x, p1y into sol[1].q,
+ * flags into sol[1].flags; 1 on overflow */
+static DH_NOINLINE int p234_shoulder(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, int32_t cref0)
 {
     const int32_t *k = m->k;
     const int32_t *o = sol[5].q;
     int32_t *d = sol[1].q;
+    const uint32_t s = sol[1].flags;
+    const int32_t u = d[0];
     int32_t sn, cs;
     int64_t v;
-    if (o[5]) {
+    if (o[4] > 2) {
         d[0] = cref0;
     } else {
-        const int32_t th = k[P_TAU] > 0 ? k[P_H] : -k[P_H], u = s ? -o[3] : o[3];
+        const int32_t th = k[P_TAU] > 0 ? k[P_H] : -k[P_H];
         d[0] = dh_ikc_atan2_q_(dh_q_mla64(dh_q_mul64(th, o[0]), u, o[1]), dh_q_mul64(u, o[0]) - dh_q_mul64(th, o[1]));
     }
     dh_sincos_q(d[0], &sn, &cs);
@@ -217,7 +294,7 @@ static DH_NOINLINE int p234_shoulder(const dh_ikc_model_q *m, dh_ikc_sol_q *sol,
     if (k[P_TAU] < 0) v = -v;
     if (iku_abs64(v) > (uint64_t)IKU_POS_LIM) return 1;
     d[4] = (int32_t)v;
-    sol[1].flags = (o[4] == 1 ? (uint32_t)DH_IKC_SING_SHOULDER : 0u) | (s ? DH_IKC_SHOULDER_ALT : 0u);
+    sol[1].flags = (o[4] != 2 ? (uint32_t)DH_IKC_SING_SHOULDER : 0u) | (s != 0u ? DH_IKC_SHOULDER_ALT : 0u);
     return 0;
 }
 
@@ -256,16 +333,23 @@ static DH_NOINLINE void p234_n(const dh_ikc_model_q *m, dh_ikc_sol_q *sol)
     if (k[P_TAU] < 0) n[5] = -n[5];
 }
 
-/* the wrist records of shoulder branch s into slots 4 s and 4 s + 2 (N from
- * p234_n, worked on in place); 1 on overflow */
-static DH_NOINLINE int p234_wrist(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned s, int32_t cref5)
+/* the first wrist record of the shoulder branch in sol[1] into slot j (N
+ * from p234_n, worked on in place; 1 on overflow). A singular wrist takes
+ * t6 = cref6 and has one record (SING_WRIST), unless bit j & ~2 of
+ * sol[5].flags is set (p234_done: that record is beyond the 2R's reach):
+ * then phi from the third column as off the singularity (exact however
+ * small s5), two records, flagged SING_WRIST. */
+static DH_NOINLINE int p234_wrist(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, uint32_t j, int32_t cref5)
 {
     const int32_t *k = m->k;
     int32_t *n = sol[3].q;
-    dh_ikc_sol_q *r0 = &sol[4u * s], *r1 = &sol[4u * s + 2u];
+    dh_ikc_sol_q *r0 = &sol[j];
     int32_t sn, cs;
     r0->flags = sol[1].flags;
     if (dh_q_abs_u32(n[2]) <= (uint32_t)IKU_SING && dh_q_abs_u32(n[3]) <= (uint32_t)IKU_SING) {
+        r0->flags |= DH_IKC_SING_WRIST;
+    }
+    if ((r0->flags & DH_IKC_SING_WRIST) != 0u && (sol[5].flags & (1u << (j & ~2u))) == 0u) {
         /* axes 2, 3, 4, 6 parallel: t6 = cref6, phi from the first column,
          * Rz(phi) g = (n11, n21), g = (c5 c6, -sb w5 s6) */
         r0->q[1] = n[4] < 0 ? Q16_180 : 0;
@@ -274,8 +358,6 @@ static DH_NOINLINE int p234_wrist(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, un
         if (n[4] < 0) cs = -cs;
         if (k[P_SB] * k[P_W5] > 0) sn = -sn;
         r0->q[3] = dh_ikc_atan2_q_(dh_q_mul64(n[1], cs) - dh_q_mul64(n[0], sn), dh_q_mla64(dh_q_mul64(n[0], cs), n[1], sn));
-        r0->flags |= DH_IKC_SING_WRIST;
-        r1->flags = IKU_EMPTY;
         dh_sincos_q(r0->q[3], &sn, &cs);
         return p234_record(m, r0, sol[1].q, 1, cs, sn);
     }
@@ -292,12 +374,166 @@ static DH_NOINLINE int p234_wrist(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, un
     if (k[P_SB] < 0) n[2] = -n[2]; /* sb s5 */
     if (k[P_W5] * k[P_SB] > 0) n[1] = -n[1]; /* -w5 sb m'y */
     r0->q[2] = dh_ikc_atan2_q_(dh_q_mul64(n[1], DH_Q_ONE30), dh_q_mla64(dh_q_mul64(n[4], n[3]), n[2], n[5]));
-    r1->q[1] = dh_ikc_wrap180_q_(-r0->q[1]);
-    r1->q[2] = dh_ikc_wrap180_q_(r0->q[2] + Q16_180);
-    r1->q[3] = dh_ikc_wrap180_q_(r0->q[3] + Q16_180);
-    r1->flags = r0->flags | DH_IKC_WRIST_ALT;
-    if (p234_record(m, r0, sol[1].q, 1, cs, sn)) return 1;
-    return p234_record(m, r1, sol[1].q, -1, cs, sn);
+    return p234_record(m, r0, sol[1].q, 1, cs, sn);
+}
+
+/* the wrist flip (phi + 180, -t5, t6 + 180) of record src (of the shoulder
+ * branch in sol[1]) into dst (dst may be src); 1 on overflow */
+static DH_NOINLINE int p234_flip(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, dh_ikc_sol_q *dst,
+                                 const dh_ikc_sol_q *src)
+{
+    const int32_t phi = src->q[3];
+    int32_t sn, cs;
+    dh_sincos_q(phi, &sn, &cs);
+    dst->q[1] = dh_ikc_wrap180_q_(-src->q[1]);
+    dst->q[2] = dh_ikc_wrap180_q_(src->q[2] + Q16_180);
+    dst->q[3] = dh_ikc_wrap180_q_(phi + Q16_180);
+    dst->flags = src->flags | DH_IKC_WRIST_ALT;
+    return p234_record(m, dst, sol[1].q, -1, cs, sn);
+}
+
+/* Record j's planar point is beyond the 2R's reach. Within B of the
+ * shoulder cylinder t1 is ill-conditioned: the joint 5 point at u along x1
+ * (u^2 = px^2 + py^2 - h^2 exact) and at any u' with |u'^2 - u^2| <=
+ * 2^(sh + 1) (|h| + 1) (the same point moved by at most B radially) give
+ * t1 apart by up to 1e-3 rad, which the wrist (phi, divided by s5) and the
+ * planar point amplify to tenths of mm. dh_ikc_par234_q_ searches that
+ * interval (u' of the branch's sign; either sign for the merged branch)
+ * by thirds for the largest 2R margin and stops at the first u' the 2R
+ * reaches. The interval [lo, hi] lives in sol[1].q[5] and sol[5].q[5],
+ * the first margin of a pair in sol[3].flags (free during the search: the
+ * solver's frame stays that of pass 1, within the stack budget). */
+static DH_NOINLINE void p234_band(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, unsigned j)
+{
+    int32_t *o = sol[5].q;
+    const int64_t v = dh_q_mla64(dh_q_mul64(o[0], o[0]), o[1], o[1]) - dh_q_mul64(m->k[P_H], m->k[P_H]);
+    const int64_t t = iku_btol(dh_q_abs_u32(m->k[P_H]));
+    /* v >= -t (p234_point); |u| <= 2^30.5 */
+    const int64_t vhi = v + t, vlo = v - t;
+    int32_t hi = (int32_t)dh_q_isqrt62((uint64_t)vhi), lo = -hi;
+    if (o[4] != 1) {
+        lo = vlo > 0 ? (int32_t)dh_q_isqrt62((uint64_t)vlo) : 0;
+        if (j >= 4u) {
+            const int32_t a = lo;
+            lo = -hi;
+            hi = -a;
+        }
+    }
+    sol[1].q[5] = lo;
+    o[5] = hi;
+}
+
+/* the third (hi - lo) 11 / 32 of the search interval */
+DH_INLINE int32_t p234_third(const dh_ikc_sol_q *sol)
+{
+    return (int32_t)((((int64_t)sol[5].q[5] - sol[1].q[5]) * 11) >> 5);
+}
+
+/* evaluation i of the search: even at lo + third, odd at hi - third */
+static DH_NOINLINE int32_t p234_cand(const dh_ikc_sol_q *sol, uint32_t i)
+{
+    return (i & 1u) ? sol[5].q[5] - p234_third(sol) : sol[1].q[5] + p234_third(sol);
+}
+
+/* margin f (< 0) of evaluation i: even, kept (f / 2^16, clamped, offset
+ * by 2^31 so that unsigned order is the order); odd, the larger margin of
+ * the pair at hi - third drops the lower third, else the upper */
+static DH_NOINLINE void p234_step(dh_ikc_sol_q *sol, uint32_t i, int64_t f)
+{
+    int64_t c = f >> 16;
+    uint32_t b;
+    if (c < -(int64_t)INT32_MAX) c = -(int64_t)INT32_MAX;
+    b = (uint32_t)(c + ((int64_t)1 << 31));
+    if ((i & 1u) == 0u) {
+        sol[3].flags = b;
+    } else if (sol[3].flags < b) {
+        sol[1].q[5] += p234_third(sol);
+    } else {
+        sol[5].q[5] -= p234_third(sol);
+    }
+}
+
+/* 1 when a margin f < 0 is not worth a search: two shoulder branches and
+ * the planar point about 2^16 LSB (1 mm at DH_QPOS_FRAC 16) beyond the
+ * annulus (in the tests the searches that reach start within a few tens
+ * of LSB beyond B; most records of random targets beyond the reach are
+ * far beyond it).
+ * The merged branch (within 8 LSB of the cylinder, t1 free by up to 1e-3
+ * rad, which the wrist divides by s5) is always searched. */
+static DH_NOINLINE int p234_hopeless(const dh_ikc_model_q *m, const dh_ikc_sol_q *sol, int64_t f)
+{
+    return sol[5].q[4] == 2 && f < -((int64_t)iku_lsum(m->a[1], m->a[2]) << 17);
+}
+
+/* Evaluation k of dh_ikc_par234_q_: record j = 2 (k >> sh) (shoulder
+ * branch j / 4, wrist branch (j / 2) & 1), i = k & (2^sh - 1): i = 0 at
+ * the branch's u, i >= 1 the search. Its shoulder branch and u into
+ * sol[1].flags and sol[1].q[0] (p234_shoulder) and 0; 1 when there is
+ * nothing to evaluate; 2 for the flip record at the branch's u, which
+ * p234_done wrote with the first. */
+static DH_NOINLINE int p234_next(dh_ikc_sol_q *sol, uint32_t k)
+{
+    const uint32_t j = (k >> IKU_SEARCH_SH) << 1, s = j >> 2, i = k & IKU_SEARCH_LAST;
+    if (i == 0u) {
+        if (s >= ((uint32_t)sol[5].q[4] & 3u)) return 1;
+        if ((j & 2u) != 0u) return (sol[j].flags == IKU_EMPTY) ? 1 : 2;
+        sol[1].q[0] = s ? -sol[5].q[3] : sol[5].q[3];
+    } else {
+        if (sol[j].flags == IKU_EMPTY) return 1;
+        sol[1].q[0] = p234_cand(sol, i - 1u);
+    }
+    sol[1].flags = s;
+    return 0;
+}
+
+/* After evaluation k (p234_wrist's record in slot j; st = 1: overflow,
+ * 2: the flip record written at the branch's u): at the branch's u the
+ * flip into slot j + 2, in the search the flip in place for the second
+ * wrist branch (a singular wrist has one record, p234_wrist); the 2R
+ * margin. Returns the k that the loop continues from (k | (2^sh - 1):
+ * record j done), or IKU_K_OVF on an overflow at the branch's u. */
+static DH_NOINLINE uint32_t p234_done(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, uint32_t k, int st)
+{
+    const uint32_t j = (k >> IKU_SEARCH_SH) << 1, i = k & IKU_SEARCH_LAST;
+    dh_ikc_sol_q *r = &sol[j];
+    const int one = (r->flags & DH_IKC_SING_WRIST) != 0u && (sol[5].flags & (1u << (j & ~2u))) == 0u;
+    int64_t f = IKU_NO_MARGIN;
+    int e = st;
+    if (e == 2) {
+        e = 0;
+    } else if (e == 0 && (j & 2u) != 0u) {
+        e = one ? -1 : p234_flip(m, sol, r, r);
+    } else if (e == 0 && i == 0u) {
+        if (one)
+            sol[j + 2u].flags = IKU_EMPTY;
+        else if (p234_flip(m, sol, &sol[j + 2u], r) != 0)
+            return IKU_K_OVF;
+    } else {
+        /* overflow */
+    }
+    if (e > 0 && i == 0u) return IKU_K_OVF;
+    if (e == 0) f = iku_margin(m->a[1], m->a[2], r->q[4], r->q[5]);
+    if (f >= 0) return k | IKU_SEARCH_LAST;
+    if (i == 0u && (r->flags & DH_IKC_SING_WRIST) != 0u && (j & 2u) == 0u && (sol[5].flags & (1u << j)) == 0u) {
+        /* the singular wrist's record (t6 = cref6) beyond the reach: again
+         * with phi as off the singularity (k - 1 wraps at 0: the loop's
+         * increment returns to k) */
+        sol[5].flags |= 1u << j;
+        return k - 1u;
+    }
+    if (i == 0u) {
+        /* beyond the reach: searched off axis 1, unless hopeless */
+        if (sol[5].q[4] > 2 || p234_hopeless(m, sol, f)) {
+            r->flags = IKU_EMPTY;
+            return k | IKU_SEARCH_LAST;
+        }
+        p234_band(m, sol, j);
+    } else if (i == IKU_SEARCH_LAST) {
+        r->flags = IKU_EMPTY;
+    } else {
+        p234_step(sol, i - 1u, f);
+    }
+    return k;
 }
 
 /* the ne elbow solutions of wrist record j into slots j, j + 1 (the pair
@@ -347,32 +583,38 @@ static DH_NOINLINE void p234_elbow(const dh_ikc_model_q *m, dh_ikc_sol_q *sol, u
 
 dh_status dh_ikc_par234_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count)
 {
-    uint32_t s, j, cnt = 0, nsh;
+    uint32_t k, cnt = 0;
     int st;
     *count = 0;
     st = p234_point(m, sol);
     if (st > 0) return DH_ERR_OVERFLOW;
     if (st < 0) return DH_OK; /* unreachable */
-    for (j = 0; j < DH_IKC_MAX_SOL; j++) sol[j].flags = IKU_EMPTY;
-    nsh = (uint32_t)sol[5].q[4];
-    for (s = 0; s < nsh; s++) {
-        if (p234_shoulder(m, sol, s, dh_ikc_cref_q_(m, q_ref, 0u))) return DH_ERR_OVERFLOW;
-        p234_n(m, sol);
-        if (p234_wrist(m, sol, s, dh_ikc_cref_q_(m, q_ref, 5u))) return DH_ERR_OVERFLOW;
+    for (k = 0; k < DH_IKC_MAX_SOL; k++) sol[k].flags = IKU_EMPTY;
+    sol[5].flags = 0u; /* p234_wrist's bits */
+    /* the wrist records at each shoulder branch's u, and for those beyond
+     * the 2R's reach the search of p234_band; one helper at a time */
+    for (k = 0; k < (4u << IKU_SEARCH_SH); k++) {
+        st = p234_next(sol, k);
+        if (st == 1) continue;
+        if (st == 0) {
+            st = p234_shoulder(m, sol, dh_ikc_cref_q_(m, q_ref, 0u));
+            if (st == 0) {
+                p234_n(m, sol);
+                st = p234_wrist(m, sol, (k >> IKU_SEARCH_SH) << 1, dh_ikc_cref_q_(m, q_ref, 5u));
+            }
+        }
+        k = p234_done(m, sol, k, st);
+        if (k == IKU_K_OVF) return DH_ERR_OVERFLOW;
     }
-    if (nsh == 1u) {
-        sol[4].flags = IKU_EMPTY;
-        sol[6].flags = IKU_EMPTY;
-    }
-    for (j = 0; j < DH_IKC_MAX_SOL; j += 2u)
-        if (sol[j].flags != IKU_EMPTY)
-            p234_elbow(m, sol, j, iku_elbow(m->a[1], m->a[2], sol[j].q[4], sol[j].q[5], sol[j + 1u].q),
+    for (k = 0; k < DH_IKC_MAX_SOL; k += 2u)
+        if (sol[k].flags != IKU_EMPTY)
+            p234_elbow(m, sol, k, iku_elbow(m->a[1], m->a[2], sol[k].q[4], sol[k].q[5], sol[k + 1u].q),
                        dh_ikc_cref_q_(m, q_ref, 1u));
         else
-            sol[j + 1u].flags = IKU_EMPTY;
-    for (j = 0; j < DH_IKC_MAX_SOL; j++)
-        if (sol[j].flags != IKU_EMPTY) {
-            if (j != cnt) sol[cnt] = sol[j];
+            sol[k + 1u].flags = IKU_EMPTY;
+    for (k = 0; k < DH_IKC_MAX_SOL; k++)
+        if (sol[k].flags != IKU_EMPTY) {
+            if (k != cnt) sol[cnt] = sol[k];
             cnt++;
         }
     *count = cnt;

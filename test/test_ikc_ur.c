@@ -316,6 +316,47 @@ static void ikc_ur_shoulder_singular(void)
     }
 }
 
+/* The joint 5 point on the shoulder cylinder and the elbow within 0.05 deg
+ * of stretched or folded: the rounding of the target turns the exact
+ * joint 1 by up to sqrt(2 |h| e) / |h| (e the rounding), which the wrist
+ * amplifies into the elbow's planar point; every such target is solved,
+ * FK-correct. */
+static void ikc_ur_corner(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < 3u; ri++) {
+        const dhs_robot *d = g_robots[ri];
+        const double a2 = d->j[1].a, a3 = d->j[2].a, e5 = d->j[4].d; /* sb = +1 for UR */
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        long it;
+        int found = 0;
+        build(d, &r, &m);
+        for (it = 0; it < 20L * DHT_ITER(500) && found < DHT_ITER(500); it++) {
+            double q[DHS_MAX_JOINTS], part[3], best, X, Y, R, c, phi;
+            const float qref[NJ] = { 0 };
+            dh_mat4_f32 T;
+            uint32_t fl;
+            dhs_random_q(d, q);
+            q[2] = ((it & 2) ? 180.0 : 0.0) + dht_rand_uniform(-0.05, 0.05);
+            phi = (q[1] + q[2] + q[3]) * D2R;
+            X = a2 + a3 * cos(q[2] * D2R);
+            Y = a3 * sin(q[2] * D2R);
+            R = sqrt(X * X + Y * Y);
+            c = -e5 * sin(phi);
+            if (fabs(c) >= R) continue;
+            q[1] = (-atan2(Y, X) + ((it & 1) ? 1 : -1) * acos(c / R)) / D2R;
+            q[3] = phi / D2R - q[1] - q[2];
+            (void)sing_parts(d, q, part);
+            if (part[2] < 0.05) continue;
+            target_of(&r, q, &T);
+            (void)solve_check(&r, &m, &T, qref, q, d->name, &fl, &best);
+            found++;
+        }
+        DHT_TRUE(found > 0);
+    }
+}
+
 /* stretched or folded elbow: UR q3 = 0 / 180, SCARA q2 = 0 */
 static void ikc_elbow_singular(void)
 {
@@ -680,6 +721,7 @@ static const dht_case cases[] = {
     DHT_CASE(ikc_complete),
     DHT_CASE(ikc_ur_wrist_singular),
     DHT_CASE(ikc_ur_shoulder_singular),
+    DHT_CASE(ikc_ur_corner),
     DHT_CASE(ikc_elbow_singular),
     DHT_CASE(ikc_unreachable),
     DHT_CASE(ikc_vs_numerical),

@@ -6,8 +6,10 @@
  * (test/support_robots.h) within 5e-3 mm and 5e-6 (rotation entries, ~rad),
  * completeness (the generating configuration among the solutions within
  * 2e-3 deg / mm) on random in-limit configurations away from the
- * singularities, singular cases flagged and FK-correct, unreachable
- * targets, the statuses of the fixed solvers.
+ * singularities, singular cases flagged and FK-correct, targets on the
+ * workspace boundary (B / 2 beyond it solved, 4 B beyond it refused, B =
+ * 64 LSB of the position format; the shoulder cylinder meeting the elbow's
+ * boundary), unreachable targets, the statuses of the fixed solvers.
  */
 #include "dht.h"
 #include "support_robots.h"
@@ -476,6 +478,239 @@ static void scara_shoulder_singular(void)
     DHT_TRUE(among(&r, sol, ns, qq, COMP_DEG));
 }
 
+/* ---- targets on and beyond the workspace boundary -------------------------- */
+
+/* B of src/dh_ikc_ur_q.c: 64 LSB of the position format, in length units */
+#define BOUND ldexp(64.0, -DH_QPOS_FRAC)
+
+/* T translated by dist along the unit vector e */
+static void shift(dhs_mat4_d *T, const double *e, double dist)
+{
+    int i;
+    for (i = 0; i < 3; i++) T->m[3][i] += dist * e[i];
+}
+
+/* dh_ikc_q of Td (any limits); when DH_OK, every solution checked against
+ * Td; the flags ORed into *fl */
+static dh_status solve_T(const dh_robot *r, const dh_ikc_model_q *m, const dhs_mat4_d *Td, dh_ikc_sol_q *sol,
+                         uint32_t *ns, uint32_t *fl)
+{
+    dh_frame_q T;
+    dh_status rc;
+    uint32_t s;
+    *ns = 9;
+    to_frame(Td, &T);
+    rc = dh_ikc_q(m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, ns);
+    *fl = 0u;
+    if (rc == DH_OK) (void)check_sols(r, Td, sol, *ns, NULL, NULL);
+    for (s = 0; rc == DH_OK && s < *ns; s++) *fl |= sol[s].flags;
+    return rc;
+}
+
+static double norm3(double *e)
+{
+    const double n = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    int i;
+    for (i = 0; i < 3; i++) e[i] /= n;
+    return n;
+}
+
+/* Stretched elbow with the wrist offset d5 in line with the arm (q3 = 0, q4
+ * = +-90, whichever puts the joint 5 point farther): the joint 5 point on
+ * the sphere about the frame 1 origin of radius sqrt((|a2| + |a3| + |d5|)^2
+ * + h^2) (h = d2 + d3 + d4), beyond which no configuration reaches.
+ * Moved outward by B / 2 the target is solved (the generating
+ * configuration among the solutions, elbow flagged); by 4 B it is
+ * unreachable. Folded (q3 = 180): moved by B / 2 into the elbow's hole the
+ * generating branch is solved; by 4 B it is not among the solutions. */
+static void ur_boundary_elbow(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < 3u; ri++) {
+        dhs_robot d;
+        dh_robot r;
+        dh_ikc_model_q m;
+        long it, n[2] = {0, 0};
+        robot_mm(&d, g_ur[ri]);
+        build(&d, &r, &m, DH_IKC_PARALLEL_234);
+        for (it = 0; it < 20L * DHT_ITER(200) && (n[0] < DHT_ITER(200) || n[1] < DHT_ITER(200)); it++) {
+            const int folded = (int)(it & 1);
+            const double L = fabs(d.j[1].a) + fabs(d.j[2].a), e5 = fabs(d.j[4].d);
+            const double h = d.j[1].d + d.j[2].d + d.j[3].d;
+            double q[6], part[3], e[3], R, best = -1.0;
+            int32_t qq[6];
+            dhs_mat4_d F[DHS_MAX_JOINTS], Td, Ts;
+            dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+            uint32_t ns, fl;
+            int k, i;
+            if (n[folded] >= DHT_ITER(200)) continue;
+            dhs_random_q(&d, q);
+            q[2] = folded ? 180.0 : 0.0;
+            for (k = 0; k < 2; k++) { /* q4 = +-90: the joint 5 point farther from the frame 1 origin */
+                double qt[6];
+                memcpy(qt, q, sizeof qt);
+                qt[3] = k ? -90.0 : 90.0;
+                dhs_fk_desc(&d, qt, F, NULL);
+                for (i = 0; i < 3; i++) e[i] = F[4].m[3][i] - F[0].m[3][i];
+                R = norm3(e);
+                if (R > best) {
+                    best = R;
+                    q[3] = qt[3];
+                }
+            }
+            /* UR10 folded: |u| <= |a2| - |a3| + |d5| = 0.09 L */
+            (void)sing_parts(&d, q, part);
+            if (part[0] < 0.05 || part[2] < 0.1) continue;
+            dhs_q_from_double(&r, q, qq);
+            dhs_fk_ref_q(&r, qq, F, &Td);
+            if (!folded) {
+                /* outward from the frame 1 origin, on the sphere of the
+                 * largest reach */
+                for (i = 0; i < 3; i++) e[i] = F[4].m[3][i] - F[0].m[3][i];
+                R = norm3(e);
+                DHT_TRUE_MSG(fabs(R - sqrt((L + e5) * (L + e5) + h * h)) <= 4.0 * ldexp(1.0, -DH_QPOS_FRAC),
+                             "%s: joint 5 point at %.9g from the frame 1 origin", d.name, R);
+            } else {
+                /* toward joint 2's axis in the arm's plane (normal z1):
+                 * the frame 3 origin less its z1 component */
+                double z[3], w[3], dz = 0.0;
+                for (i = 0; i < 3; i++) {
+                    z[i] = F[0].m[2][i];
+                    w[i] = F[2].m[3][i] - F[0].m[3][i];
+                    dz += w[i] * z[i];
+                }
+                for (i = 0; i < 3; i++) e[i] = -(w[i] - dz * z[i]);
+                R = norm3(e);
+                DHT_TRUE_MSG(fabs(R - fabs(fabs(d.j[1].a) - fabs(d.j[2].a))) <= 4.0 * ldexp(1.0, -DH_QPOS_FRAC),
+                             "%s: folded planar point at %.9g", d.name, R);
+            }
+            Ts = Td;
+            shift(&Ts, e, 0.5 * BOUND);
+            DHT_EQ_INT(solve_T(&r, &m, &Ts, sol, &ns, &fl), DH_OK);
+            DHT_TRUE_MSG((fl & DH_IKC_SING_ELBOW) != 0u, "%s: B / 2 beyond the elbow's reach not flagged", d.name);
+            DHT_TRUE_MSG(among(&r, sol, ns, qq, COMP_DEG), "%s: %s elbow B / 2 beyond: q not among %u solutions",
+                         d.name, folded ? "folded" : "stretched", (unsigned)ns);
+            Ts = Td;
+            shift(&Ts, e, 4.0 * BOUND);
+            if (!folded) {
+                DHT_EQ_INT(solve_T(&r, &m, &Ts, sol, &ns, &fl), DH_ERR_UNREACHABLE);
+                DHT_EQ_INT(ns, 0);
+            } else if (solve_T(&r, &m, &Ts, sol, &ns, &fl) == DH_OK) {
+                DHT_TRUE_MSG(!among(&r, sol, ns, qq, 0.1), "%s: folded elbow 4 B beyond: q among the solutions",
+                             d.name);
+            }
+            n[folded]++;
+        }
+        DHT_TRUE(n[0] > 0 && n[1] > 0);
+    }
+}
+
+/* A configuration with the joint 5 point on the shoulder cylinder (u = 0,
+ * as ur_shoulder_singular); elbow (q3 = 0 or 180) offset by `off` deg, or
+ * away from it when off < 0; |s5| at least s5min. */
+static int u_zero_q(const dhs_robot *d, long it, double off, double s5min, double *q)
+{
+    const double a2 = d->j[1].a, a3 = d->j[2].a, e5 = d->j[4].d;
+    double X, Y, Rr, c, phi, part[3];
+    dhs_random_q(d, q);
+    if (off >= 0.0) q[2] = ((it & 2) ? 180.0 : 0.0) + dht_rand_uniform(-off, off);
+    phi = (q[1] + q[2] + q[3]) * D2R;
+    X = a2 + a3 * cos(q[2] * D2R);
+    Y = a3 * sin(q[2] * D2R);
+    Rr = sqrt(X * X + Y * Y);
+    c = -e5 * sin(phi);
+    if (fabs(c) >= Rr) return 0;
+    q[1] = (-atan2(Y, X) + ((it & 1) ? 1 : -1) * acos(c / Rr)) / D2R;
+    q[3] = phi / D2R - q[1] - q[2];
+    (void)sing_parts(d, q, part);
+    return part[2] >= s5min && (off >= 0.0 || part[1] >= 0.1);
+}
+
+/* The joint 5 point moved B / 2 into the shoulder cylinder (radius |h| about
+ * axis 1): solved, flagged, the generating configuration among the
+ * solutions within 1e-2 deg (the merged branch takes joint 1 from the
+ * point's direction: the Q16.16 rounding of q moves u by up to ~30 LSB,
+ * joint 1 by 30 / |h| rad, which the wrist amplifies by 1 / |s5| <= 3.3);
+ * 4 B into it: unreachable (no configuration puts the joint 5 point nearer
+ * axis 1 than |h|). */
+static void ur_boundary_shoulder(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < 3u; ri++) {
+        dhs_robot d;
+        dh_robot r;
+        dh_ikc_model_q m;
+        long it, n = 0;
+        robot_mm(&d, g_ur[ri]);
+        build(&d, &r, &m, DH_IKC_PARALLEL_234);
+        for (it = 0; it < 20L * DHT_ITER(200) && n < DHT_ITER(200); it++) {
+            const double h = d.j[1].d + d.j[2].d + d.j[3].d;
+            double q[6], e[3], ez = 0.0, R;
+            int32_t qq[6];
+            dhs_mat4_d F[DHS_MAX_JOINTS], Td, Ts;
+            dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+            uint32_t ns, fl;
+            int i;
+            if (!u_zero_q(&d, it, -1.0, 0.3, q)) continue;
+            dhs_q_from_double(&r, q, qq);
+            dhs_fk_ref_q(&r, qq, F, &Td);
+            /* from axis 1 (base z through the base origin) to the joint 5 point */
+            for (i = 0; i < 3; i++) {
+                e[i] = F[4].m[3][i] - d.base.m[3][i];
+                ez += e[i] * d.base.m[2][i];
+            }
+            for (i = 0; i < 3; i++) e[i] -= ez * d.base.m[2][i];
+            R = norm3(e);
+            DHT_TRUE_MSG(fabs(R - fabs(h)) <= 4.0 * ldexp(1.0, -DH_QPOS_FRAC),
+                         "%s: joint 5 point at %.9g from axis 1, |h| = %.9g", d.name, R, fabs(h));
+            Ts = Td;
+            shift(&Ts, e, -0.5 * BOUND);
+            DHT_EQ_INT(solve_T(&r, &m, &Ts, sol, &ns, &fl), DH_OK);
+            DHT_TRUE_MSG((fl & DH_IKC_SING_SHOULDER) != 0u, "%s: B / 2 inside the cylinder not flagged", d.name);
+            DHT_TRUE_MSG(among(&r, sol, ns, qq, 1e-2), "%s: B / 2 inside the cylinder: q not among %u solutions",
+                         d.name, (unsigned)ns);
+            Ts = Td;
+            shift(&Ts, e, -4.0 * BOUND);
+            DHT_EQ_INT(solve_T(&r, &m, &Ts, sol, &ns, &fl), DH_ERR_UNREACHABLE);
+            DHT_EQ_INT(ns, 0);
+            n++;
+        }
+        DHT_TRUE(n > 0);
+    }
+}
+
+/* The joint 5 point on the shoulder cylinder and the elbow within 0.05 deg
+ * of stretched or folded: the rounding of the target moves the exact
+ * joint 1 by up to sqrt(2 |h| LSB) / |h| (3e-4 rad), which the wrist
+ * amplifies into the planar point; every such target is solved. */
+static void ur_boundary_corner(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < 3u; ri++) {
+        dhs_robot d;
+        dh_robot r;
+        dh_ikc_model_q m;
+        long it, n = 0;
+        robot_mm(&d, g_ur[ri]);
+        build(&d, &r, &m, DH_IKC_PARALLEL_234);
+        for (it = 0; it < 20L * DHT_ITER(500) && n < DHT_ITER(500); it++) {
+            double q[6];
+            int32_t qq[6];
+            dhs_mat4_d Td;
+            dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+            uint32_t ns, fl;
+            if (!u_zero_q(&d, it, 0.05, 0.05, q)) continue;
+            dhs_q_from_double(&r, q, qq);
+            dhs_fk_ref_q(&r, qq, NULL, &Td);
+            DHT_TRUE_MSG(solve_T(&r, &m, &Td, sol, &ns, &fl) == DH_OK && ns >= 1u,
+                         "%s: corner target refused, q %.6f %.6f %.6f %.6f %.6f %.6f", d.name, q[0], q[1], q[2], q[3],
+                         q[4], q[5]);
+            n++;
+        }
+        DHT_TRUE(n > 0);
+    }
+}
+
 /* ---- unreachable and statuses --------------------------------------------- */
 
 static void unreachable(void)
@@ -585,6 +820,9 @@ static const dht_case cases[] = {
     DHT_CASE(ur_shoulder_singular),
     DHT_CASE(elbow_singular),
     DHT_CASE(scara_shoulder_singular),
+    DHT_CASE(ur_boundary_elbow),
+    DHT_CASE(ur_boundary_shoulder),
+    DHT_CASE(ur_boundary_corner),
     DHT_CASE(unreachable),
     DHT_CASE(overflow),
     DHT_CASE(detect),
