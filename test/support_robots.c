@@ -357,3 +357,17 @@ void dhs_true_error_f32(const dh_robot *r, const float *q, const dh_mat4_f32 *ta
         }
     *er = dhs_rot_angle(D);
 }
+
+int dhs_limit_twin_f32(const dh_robot *r, const float *c, const float *qn, double slack_deg, double slack_len)
+{
+    uint32_t i;
+    for (i = 0; i < r->n; i++) {
+        const dh_joint *j = &r->joint[i];
+        const double slack = (j->type == DH_JOINT_REVOLUTE) ? slack_deg : slack_len;
+        const double lo = (double)j->qmin, hi = (double)j->qmax, x = (double)c[i], y = (double)qn[i];
+        if (j->qmin > j->qmax) continue;
+        if (x < lo && !(lo - x <= slack && y >= lo && y - lo <= slack)) return 0;
+        if (x > hi && !(x - hi <= slack && y <= hi && hi - y <= slack)) return 0;
+    }
+    return 1;
+}

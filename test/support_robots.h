@@ -120,6 +120,15 @@ double dhs_rot_angle(double R[3][3]);
  *  and rotation angle of R_target R(q)^T, by the double reference FK of
  *  r's stored float parameters (dhs_fk_ref_f32). */
 void dhs_true_error_f32(const dh_robot *r, const float *q, const dh_mat4_f32 *target, double *ep, double *er);
+
+/**
+ * 1 when the closed-form solution c (flagged outside the limits) and the
+ * in-limit numerical solution qn straddle a limit by no more than the
+ * slack: on every joint where c lies outside its limits, c is at most the
+ * slack (slack_deg for revolute joints, slack_len for prismatic ones)
+ * beyond the limit it crosses and qn at most that inside it.
+ */
+int dhs_limit_twin_f32(const dh_robot *r, const float *c, const float *qn, double slack_deg, double slack_len);
 double dhs_pos_err_f32(const dh_mat4_f32 *T, const dhs_mat4_d *R);
 /** Largest |rotation entry difference| (3x3 part). */
 double dhs_rot_err_f32(const dh_mat4_f32 *T, const dhs_mat4_d *R);

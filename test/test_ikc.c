@@ -260,23 +260,6 @@ static void ikc_completeness(void)
 #define LIMIT_SLACK_DEG 1e-2
 #define LIMIT_SLACK_M 1e-5
 
-/* 1 when the closed-form solution c (flagged outside the limits) and the
- * in-limit numerical solution qn straddle a limit by rounding: on every
- * joint where c lies outside its limits, c is at most the slack beyond
- * the limit it crosses and qn at most the slack inside that limit. */
-static int limit_twin(const dh_robot *r, const float *c, const float *qn)
-{
-    uint32_t i;
-    for (i = 0; i < r->n; i++) {
-        const dh_joint *j = &r->joint[i];
-        const double slack = (j->type == DH_JOINT_REVOLUTE) ? LIMIT_SLACK_DEG : LIMIT_SLACK_M;
-        const double lo = (double)j->qmin, hi = (double)j->qmax, x = (double)c[i], y = (double)qn[i];
-        if (j->qmin > j->qmax) continue;
-        if (x < lo && !(lo - x <= slack && y >= lo && y - lo <= slack)) return 0;
-        if (x > hi && !(x - hi <= slack && y <= hi && hi - y <= slack)) return 0;
-    }
-    return 1;
-}
 
 /* q_dist of a dh_ik_f32 result y from a closed-form solution c, where
  * joints 4 and 6 count only beyond what the solver's orientation tolerance
@@ -328,7 +311,7 @@ static void ikc_numerical_completeness(void)
             /* out-of-limit solutions kept: dh_ik_f32 stops within its
              * tolerance on or just inside a limit, where the closed form's
              * solution may lie a rounding beyond it (matched only then, see
-             * limit_twin) */
+             * dhs_limit_twin_f32) */
             DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_sol), DH_OK);
             for (st_i = 0; st_i < starts; st_i++) {
                 double q0d[NJ];
@@ -345,7 +328,9 @@ static void ikc_numerical_completeness(void)
                     double dd[NJ], dq;
                     for (i = 0; i < r.n; i++) dd[i] = (double)qs[i];
                     dq = wrist_dist(&r, &p, sol[s].q, dd);
-                    if ((sol[s].flags & DH_IKC_OUT_OF_LIMITS) != 0u && !limit_twin(&r, sol[s].q, qs)) continue;
+                    if ((sol[s].flags & DH_IKC_OUT_OF_LIMITS) != 0u &&
+                        !dhs_limit_twin_f32(&r, sol[s].q, qs, LIMIT_SLACK_DEG, LIMIT_SLACK_M))
+                        continue;
                     if (dq < best) {
                         best = dq;
                         twin = (sol[s].flags & DH_IKC_OUT_OF_LIMITS) != 0u;
