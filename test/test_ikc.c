@@ -460,9 +460,9 @@ static void ikc_shoulder_singular(void)
  * on the shoulder cylinder (u = 0), where a rounding of the target moves u
  * by far more than a rounding: every target of a sweep over +-4e-6 deg of
  * joint 3 around the fold and +-0.03 deg of joint 2 around u = 0 is solved.
- * A target moved radially beyond the stretched elbow: by 1e-7 m it is
- * solved on the boundary (flagged), by 1e-5 m it is unreachable (the bounds
- * of dh_ikc.h: 5e-7 L and 4 of those, L = 1.1 m). */
+ * A target moved radially beyond the stretched elbow: by 0.9 of 2.5e-7 L
+ * it is solved on the boundary (flagged), by 1.1 of 1.5e-6 L it is
+ * unreachable (the bounds of dh_ikc.h; L = 1.1 m). */
 static void ikc_elbow_boundary(void)
 {
     const dhs_robot *d = &dhs_puma560_m;
@@ -474,9 +474,10 @@ static void ikc_elbow_boundary(void)
     dh_ikc_model_f32 m;
     dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
     dh_mat4_f32 T;
-    double wp = 0.0, wr = 0.0;
+    double wp = 0.0, wr = 0.0, L = 0.0;
     uint32_t n_sol, s;
     int i, j, k, far;
+    for (i = 0; i < (int)d->n; i++) L += fabs(d->j[i].a) + fabs(d->j[i].d);
     DHT_EQ_INT(dhs_build(d, &r), DH_OK);
     DHT_EQ_INT(dh_ikc_analyse_f32(&r, &m), DH_OK);
     for (j = -3; j <= 3; j++)
@@ -504,7 +505,7 @@ static void ikc_elbow_boundary(void)
         nw = sqrt(nw);
         DHT_TRUE(fabs(nw - (fabs(a2) + sqrt(a3 * a3 + e * e))) < 1e-9); /* stretched */
         target_of(&r, q, &T);
-        for (i = 0; i < 3; i++) T.m[3][i] = (float)((double)T.m[3][i] + (far ? 1e-5 : 1e-7) * w[i] / nw);
+        for (i = 0; i < 3; i++) T.m[3][i] = (float)((double)T.m[3][i] + (far ? 1.1 * 1.5e-6 : 0.9 * 2.5e-7) * L * w[i] / nw);
         if (far) {
             DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_sol), DH_ERR_UNREACHABLE);
             DHT_EQ_INT(n_sol, 0);

@@ -45,14 +45,16 @@
  * axis 1 whose radius is the arm's offset along axis 2). Elbow stretched
  * or folded: flagged DH_IKC_SING_ELBOW.
  *
- * Boundary targets. A spherical-wrist target whose wrist centre lies
- * beyond the workspace's boundary (elbow stretched or folded, the
- * shoulder cylinder) by no more than the rounding of its inputs is solved
- * on the boundary, flagged as above, within the accuracy bounds below:
- * on the fixed path a wrist centre within 2^(5 - F) length units of the
- * boundary (F = DH_QPOS_FRAC; 2^-11 mm for robots in mm) is solved, one
- * beyond it by more than 2^(8 - F) units is DH_ERR_UNREACHABLE; on the
- * float path the band is 5e-7 L (L: the sum of the robot's |a| and |d|).
+ * Boundary targets. A target whose wrist centre (DH_IKC_PARALLEL_234: the
+ * joint 5 point; SCARA: the frame 3 origin) lies beyond the workspace's
+ * boundary (elbow stretched or folded, the shoulder cylinder) by no more
+ * than the rounding of its inputs is solved on the boundary, flagged as
+ * above, within the accuracy bounds below. Fixed path, every family: that
+ * point within 2^(5 - F) length units of the boundary (F = DH_QPOS_FRAC;
+ * 2^-11 mm for robots in mm) is solved, beyond it by more than 2^(8 - F)
+ * units DH_ERR_UNREACHABLE. Float path, spherical wrist: within 2.5e-7 L
+ * solved, beyond 1.5e-6 L unreachable (L: the sum of the robot's |a| and
+ * |d|; the band of the singular flags is 5e-7 L).
  * A target within the band, inside or beyond, is solved at the boundary:
  * its joints differ from an exact solution's by up to the square root of
  * the band (about 0.13 deg for the Puma's stretched elbow), and near a
