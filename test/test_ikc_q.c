@@ -600,9 +600,9 @@ static void boundary_folded(void)
 /* A target moved radially beyond the stretched elbow: by 0.9 of 2^-11 mm
  * it is solved, by 1.1 of 2^-8 mm it is unreachable (the bounds of
  * dh_ikc.h). Moved by 0.9 of 2^-11 mm beyond the folded elbow it is
- * solved; farther in that direction is not beyond by as much: the Puma's folded wrist
- * centre lies within |delta| of the shoulder cylinder, where joint 1 turns
- * such a point back to within 2 LSB of the workspace. */
+ * solved; farther in that direction is not beyond by as much: the Puma's
+ * folded wrist centre lies within |delta| of the shoulder cylinder, where
+ * joint 1 turns such a point back to within 2 LSB of the workspace. */
 static void boundary_beyond(void)
 {
     const double phi = atan2(-431.8, 20.3) * 180.0 / PI_D;
