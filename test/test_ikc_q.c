@@ -597,10 +597,10 @@ static void boundary_folded(void)
         }
 }
 
-/* A target moved radially beyond the stretched elbow: by 0.9 of 2^-11 mm
- * it is solved, by 1.1 of 2^-8 mm it is unreachable (the bounds of
- * dh_ikc.h). Moved by 0.9 of 2^-11 mm beyond the folded elbow it is
- * solved; farther in that direction is not beyond by as much: the Puma's
+/* A target moved radially beyond the stretched elbow: by 0.9 of 2^(5 - F)
+ * units it is solved, by 1.1 of 2^(8 - F) units it is unreachable (the
+ * bounds of dh_ikc.h; F = DH_QPOS_FRAC, the robot in units of 2^(F - 16)
+ * mm). Moved by 0.9 of 2^(5 - F) beyond the folded elbow it is solved; farther in that direction is not beyond by as much: the Puma's
  * folded wrist centre lies within |delta| of the shoulder cylinder, where
  * joint 1 turns such a point back to within 2 LSB of the workspace. */
 static void boundary_beyond(void)
@@ -632,10 +632,10 @@ static void boundary_beyond(void)
             nw += w[i] * w[i];
         }
         nw = sqrt(nw);
-        DHT_TRUE(fabs(nw - (folded ? rho - 431.8 : rho + 431.8)) < 1e-3);
+        DHT_TRUE(fabs(nw - (folded ? rho - 431.8 : rho + 431.8) * LS) < 1e-3 * LS);
         for (far = 0; far < 2 - folded; far++) {
             dhs_mat4_d Tm = Td;
-            const double dist = (far ? 1.1 * ldexp(1.0, -8) : 0.9 * ldexp(1.0, -11)) * (folded ? -1.0 : 1.0);
+            const double dist = (far ? ldexp(1.1, 8 - DH_QPOS_FRAC) : ldexp(0.9, 5 - DH_QPOS_FRAC)) * (folded ? -1.0 : 1.0);
             for (i = 0; i < 3; i++) Tm.m[3][i] += dist * w[i] / nw;
             to_frame(&Tm, &T);
             if (far) {
