@@ -27,10 +27,34 @@
 /* Position tolerance of the clamps and merges, relative to L: a target
  * this close to the boundary of a branch's workspace is solved on it. */
 #define IKC_POS_REL 4e-7f
+/* Boundary bound (PARALLEL_234 and SCARA): tol = IKC_POS_REL L (4e-7 L;
+ * L the sum of the robot's |a| and |d|, 3.6e-7 m for the UR3 in metres).
+ * A joint 5 point (SCARA: frame 3 origin) within tol beyond the elbow's
+ * reach (stretched or folded) is merged onto it (DH_IKC_SING_ELBOW); one
+ * within tol of the shoulder cylinder, inside or outside, is on it
+ * (DH_IKC_SING_SHOULDER, one branch); near the cylinder joint 1 is
+ * searched for within the same tol of radial distance (par234_search).
+ * A solution's FK is thus within about 2 tol of the target (shoulder and
+ * elbow, orthogonal in the tests: 1.5e-6 m for the UR10 in metres). The
+ * float rounding of the target, T06 and the planar point takes up to about
+ * tol / 2 of the band (UR10 stretched): a joint 5 point within tol / 4
+ * (1e-7 L) beyond the workspace boundary is solved, one farther than
+ * 3 tol (1.2e-6 L) beyond it is DH_ERR_UNREACHABLE (test/test_ikc_ur.c,
+ * ikc_ur_beyond: tol / 4 solved, 4 tol refused). */
 /* Wrist (PARALLEL_234): |sin theta5| at most this is singular. */
 #define IKC_WRIST_TOL 1e-6f
 /* SCARA: the tool axis may lean this much (rad) off the joint axes. */
 #define IKC_SCARA_TILT 1e-6f
+/* Boundary search (par234_search): evaluations per shoulder branch and
+ * half (the branch's u, then pairs by thirds: the interval shrinks to 4e-5
+ * of its width; the merged branch searches two halves); a record whose
+ * planar point lies beyond the elbow's reach at the branch's u by more
+ * than IKC_HOPELESS tol (1e-3 L) plus what the search can move it is not
+ * searched for; a search stops at the first u' where one record lies
+ * within IKC_SEARCH_OK tol of the reach. */
+#define IKC_SEARCH_N 49u
+#define IKC_HOPELESS 2500.0f
+#define IKC_SEARCH_OK 0.5f
 
 DH_INLINE int ikc_zero(float x, float eps)
 {
@@ -365,6 +389,127 @@ static DH_NOINLINE void par234_elbow(const dh_ikc_model_f32 *m, const float *q_r
     rec[e].flags = rec[0].flags | (e ? DH_IKC_ELBOW_ALT : 0u);
 }
 
+/* The elbow's margin of wrist record w (0, or 1: the flip) at the
+ * shoulder coordinate u: the radicand of par234_elbow_prep divided by
+ * 4 |D| tol |v|, about the planar point's distance inside the 2R's reach
+ * in units of tol (>= -1: par234_elbow_prep solves it). The arithmetic is
+ * that of par234_shoulder, par234_wrist and par234_elbow_prep. A singular
+ * wrist gives 0 (not searched for). */
+DH_INLINE float par234_margin(const dh_ikc_model_f32 *m, const dh_ikc_sol_f32 *sol, float u, uint32_t w,
+                              float *s5)
+{
+    const float *k = m->k, *pw = &sol[1].q[1], *zv = &sol[6].q[3];
+    const float th = k[P_TAU] * k[P_H];
+    const float X = u * pw[0] - th * pw[1], Y = th * pw[0] + u * pw[1];
+    const float inv = 1.0f / dh_sqrt_f32(X * X + Y * Y);
+    const float c1 = X * inv, s1 = Y * inv;
+    const float n13 = c1 * zv[0] + s1 * zv[1], n23 = k[P_TAU] * zv[2];
+    const float s5q = n13 * n13 + n23 * n23;
+    float cp, sp, vx, vy, v2, den;
+    if (s5q <= IKC_WRIST_TOL * IKC_WRIST_TOL) return 0.0f;
+    *s5 = dh_sqrt_f32(s5q);
+    den = k[P_W5] / *s5;
+    cp = w ? -(n13 * den) : n13 * den;
+    sp = w ? -(n23 * den) : n23 * den;
+    vx = c1 * pw[0] + s1 * pw[1] - m->a[0] - m->a[3] * cp - k[P_E5] * sp;
+    vy = k[P_TAU] * (pw[2] - m->d[0]) - m->a[3] * sp + k[P_E5] * cp;
+    v2 = vx * vx + vy * vy;
+    den = dh_sqrt_f32(k[P_ELB] * v2);
+    if (!(den > 0.0f)) return -2.0f * IKC_HOPELESS; /* the planar point on axis 2 */
+    return (k[P_SUM2] - v2) * (v2 - k[P_DIF2]) / den;
+}
+
+/* The larger margin of the records searched for (flags bits 0, 1 of the
+ * scratch slot) at u. */
+DH_INLINE float par234_best(const dh_ikc_model_f32 *m, const dh_ikc_sol_f32 *sol, float u, uint32_t mask)
+{
+    float g = -3.0e38f, s5 = 1.0f;
+    uint32_t w;
+    for (w = 0u; w < 2u; w++) {
+        if ((mask & (1u << w)) != 0u) {
+            const float gw = par234_margin(m, sol, u, w, &s5);
+            if (gw > g) g = gw;
+        }
+    }
+    return g;
+}
+
+/* Boundary search, the next evaluation i of shoulder branch s (before
+ * its pass 1; pw as par234_p05 left it, x' and z' in sol[6]). Near the shoulder
+ * cylinder the rounding of the target leaves joint 1 free by up to about
+ * 1e-3 rad, which the wrist (dividing by s5) turns into tenths of mm of
+ * the elbow's planar point: when a record lies beyond the elbow's reach at
+ * the branch's u, u' is searched for with |u'^2 - (px^2 + py^2 - h^2)| <=
+ * the shoulder band (the joint 5 point moved radially by at most tol;
+ * u' of the branch's sign; for the merged branch u' >= 0, then u' <= 0)
+ * by thirds for the largest margin of its records (those not hopeless at
+ * u), stopping at the first u' where one lies within IKC_SEARCH_OK tol of
+ * the reach; else u stays. A branch with a record solved at u is not
+ * searched (it is solved). Sets pw[3] for par234_shoulder; returns 1
+ * while the search goes on. Scratch sc = sol[4 s] (free until pass 1 of the branch): lo,
+ * hi, the first margin of a pair, u; in its flags the records searched
+ * (bits 0, 1) and i (from bit 2; 0 before the first evaluation). */
+static DH_NOINLINE uint32_t par234_search(const dh_ikc_model_f32 *m, uint32_t ns, uint32_t s, dh_ikc_sol_f32 *sol)
+{
+    const float *k = m->k;
+    float *pw = &sol[1].q[1], *sc = sol[4u * s].q;
+    const uint32_t i = sol[4u * s].flags >> 2;
+    const float third = (sc[1] - sc[0]) * (11.0f / 32.0f);
+    float c, g;
+    if (i == 0u) {
+        const float rad = pw[4] - k[P_H] * k[P_H], tol = dh_sqrt_f32(k[P_AXIS]);
+        uint32_t w, mask = 0u;
+        float best = -3.0e38f, s5 = 1.0f, width;
+        c = (s != 0u) ? -pw[3] : pw[3];
+        sc[3] = c;
+        if (ns == 1u && pw[4] <= k[P_AXIS]) return 0u;
+        sc[1] = dh_sqrt_f32(rad + k[P_TOLS]);
+        sc[0] = (rad > k[P_TOLS]) ? dh_sqrt_f32(rad - k[P_TOLS]) : 0.0f;
+        width = ((ns == 1u) ? 2.0f * sc[1] : sc[1] - sc[0]) / tol;
+        /* u' turns joint 1 by up to width / |h|, which moves the planar
+         * point by up to (|a4| + |sb d5|) / s5 as much (and by the width
+         * along x1): a record beyond that plus IKC_HOPELESS tol is hopeless */
+        for (w = 0u; w < 2u; w++) {
+            g = par234_margin(m, sol, c, w, &s5);
+            if (g >= -(IKC_HOPELESS +
+                       width * (1.0f + (fabsf(m->a[3]) + fabsf(k[P_E5])) / (s5 * (fabsf(k[P_H]) + tol)))))
+                mask |= 1u << w;
+            if (g > best) best = g;
+        }
+        if (mask == 0u || best >= -1.0f) return 0u;
+        sol[4u * s].flags = mask | 4u;
+        if (s != 0u) {
+            const float lo = sc[0];
+            sc[0] = -sc[1];
+            sc[1] = -lo;
+        }
+        return 1u;
+    }
+    c = ((i & 1u) != 0u) ? sc[0] + third : sc[1] - third;
+    g = par234_best(m, sol, c, sol[4u * s].flags & 3u);
+    if (g < -IKC_SEARCH_OK) {
+        if ((i & 1u) != 0u) {
+            sc[2] = g;
+        } else if (g > sc[2]) {
+            sc[0] += third;
+        } else {
+            sc[1] -= third;
+        }
+        if (i + 1u < IKC_SEARCH_N || (i + 1u < 2u * IKC_SEARCH_N - 1u && ns == 1u)) {
+            sol[4u * s].flags += 4u;
+            if (i + 1u == IKC_SEARCH_N) {
+                /* the merged branch: the half u' <= 0 after u' >= 0 */
+                sc[0] = -dh_sqrt_f32(pw[4] - k[P_H] * k[P_H] + k[P_TOLS]);
+                sc[1] = 0.0f;
+            }
+            return 1u;
+        }
+        c = sc[3];
+    }
+    pw[3] = (s != 0u) ? -c : c;
+    return 0u;
+}
+
 /* The joint 5 point p05 and u = sqrt(px^2 + py^2 - h^2) into pw (as
  * par234_wrist reads them), x' = x6 and z' = axis 6 of T06 into sol6[0..5];
  * returns the number of shoulder branches (0:
@@ -398,6 +543,10 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, con
         sol[7].flags = IKC_EMPTY;
     }
     for (s = 0u; s < ns; s++) {
+        sol[4u * s].flags = 0u;
+        while (par234_search(m, ns, s, sol) != 0u) {
+            /* the search's state is in sol[4 s] */
+        }
         par234_shoulder(m, q_ref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
         par234_wrist(m, q_ref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
         par234_angles(&sol[4u * s]);

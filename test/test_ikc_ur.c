@@ -357,6 +357,164 @@ static void ikc_ur_corner(void)
     }
 }
 
+/* As ikc_ur_corner with the joint 5 point 0.3 mm along +-x1 off the
+ * shoulder cylinder (u = +-3e-4 m, set exactly in the double reference):
+ * inside the float shoulder band of UR3 and UR5 (one branch) or just
+ * outside it (UR10, two branches). The rounding of the float target
+ * leaves joint 1 free by up to about 1e-3 rad there, which the wrist turns
+ * into tenths of mm of the elbow's planar point; every such target is
+ * solved, FK-correct. */
+static void ikc_ur_corner_off(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < 3u; ri++) {
+        const dhs_robot *d = g_robots[ri];
+        const double a2 = d->j[1].a, a3 = d->j[2].a, e5 = d->j[4].d; /* sb = +1 for UR */
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        long it;
+        int found = 0;
+        build(d, &r, &m);
+        for (it = 0; it < 20L * DHT_ITER(500) && found < DHT_ITER(500); it++) {
+            double q[DHS_MAX_JOINTS], part[3], best, X, Y, R, c, phi, L = 0.0;
+            const double u0 = (it & 4) ? 3e-4 : -3e-4;
+            const float qref[NJ] = { 0 };
+            dh_mat4_f32 T;
+            uint32_t fl;
+            unsigned j;
+            for (j = 0; j < d->n; j++) L += fabs(d->j[j].a) + fabs(d->j[j].d);
+            dhs_random_q(d, q);
+            q[2] = ((it & 2) ? 180.0 : 0.0) + dht_rand_uniform(-0.05, 0.05);
+            phi = (q[1] + q[2] + q[3]) * D2R;
+            X = a2 + a3 * cos(q[2] * D2R);
+            Y = a3 * sin(q[2] * D2R);
+            R = sqrt(X * X + Y * Y);
+            /* planar x of the joint 5 point: a2 c2 + a3 c23 + e5 sin(phi) = u0 */
+            c = u0 - e5 * sin(phi);
+            if (fabs(c) >= R) continue;
+            q[1] = (-atan2(Y, X) + ((it & 1) ? 1 : -1) * acos(c / R)) / D2R;
+            q[3] = phi / D2R - q[1] - q[2];
+            (void)sing_parts(d, q, part);
+            DHT_TRUE_MSG(fabs(part[0] * L - 3e-4) <= 1e-9, "%s: u = %.9g m, not 3e-4", d->name, part[0] * L);
+            if (part[2] < 0.05) continue;
+            target_of(&r, q, &T);
+            (void)solve_check(&r, &m, &T, qref, q, d->name, &fl, &best);
+            found++;
+        }
+        DHT_TRUE(found > 0);
+    }
+}
+
+/* The float boundary bound of src/dh_ikc_ur.c: tol = 4e-7 L (L the sum of
+ * the robot's |a| and |d|); solved within tol / 4 beyond the boundary (the
+ * solver's own rounding takes up to about half of tol: UR10), refused
+ * beyond 3 tol. The double parameters of the description
+ * differ from the robot's stored float ones by up to 1e-8 m: the
+ * reference points below are checked within 2e-8 m. */
+#define UR_TOL_REL 4e-7
+
+/* Stretched elbow with the wrist offset d5 in line with the arm (q3 = 0,
+ * q4 = +-90, whichever puts the joint 5 point farther from the frame 1
+ * origin): the joint 5 point on the sphere of the largest reach, beyond
+ * which no configuration puts it. The target moved outward by tol / 4:
+ * solved, elbow flagged, FK-correct; by 4 tol: DH_ERR_UNREACHABLE. The
+ * joint 5 point on the shoulder cylinder (u = 0) moved into it by tol / 4:
+ * solved, shoulder flagged; by 4 tol: DH_ERR_UNREACHABLE. */
+static void ikc_ur_beyond(void)
+{
+    unsigned ri;
+    for (ri = 0; ri < 3u; ri++) {
+        const dhs_robot *d = g_robots[ri];
+        const double a2 = d->j[1].a, a3 = d->j[2].a, e5 = d->j[4].d; /* sb = +1 for UR */
+        const double h = d->j[1].d + d->j[2].d + d->j[3].d;
+        dh_robot r;
+        dh_ikc_model_f32 m;
+        dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+        double L = 0.0;
+        long it, n[2] = { 0, 0 };
+        unsigned j;
+        for (j = 0; j < d->n; j++) L += fabs(d->j[j].a) + fabs(d->j[j].d);
+        build(d, &r, &m);
+        for (it = 0; it < 20L * DHT_ITER(200) && (n[0] < DHT_ITER(200) || n[1] < DHT_ITER(200)); it++) {
+            const int cyl = (int)(it & 1);
+            const float qref[NJ] = { 0 };
+            double q[DHS_MAX_JOINTS], part[3], e[3], Rr, best = -1.0, ez = 0.0, sh;
+            dhs_mat4_d F[DHS_MAX_JOINTS], Td, Ts;
+            dh_mat4_f32 T;
+            uint32_t fl, ns, k;
+            int i;
+            if (n[cyl] >= DHT_ITER(200)) continue;
+            dhs_random_q(d, q);
+            if (!cyl) {
+                q[2] = 0.0;
+                for (k = 0; k < 2u; k++) {
+                    double qt[DHS_MAX_JOINTS];
+                    memcpy(qt, q, sizeof qt);
+                    qt[3] = k ? -90.0 : 90.0;
+                    dhs_fk_ref_f32(&r, qt, F, NULL);
+                    for (i = 0; i < 3; i++) e[i] = F[4].m[3][i] - F[0].m[3][i];
+                    Rr = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+                    if (Rr > best) {
+                        best = Rr;
+                        q[3] = qt[3];
+                    }
+                }
+            } else {
+                double X, Y, c, phi;
+                phi = (q[1] + q[2] + q[3]) * D2R;
+                X = a2 + a3 * cos(q[2] * D2R);
+                Y = a3 * sin(q[2] * D2R);
+                Rr = sqrt(X * X + Y * Y);
+                c = -e5 * sin(phi);
+                if (fabs(c) >= Rr) continue;
+                q[1] = (-atan2(Y, X) + ((it & 2) ? 1 : -1) * acos(c / Rr)) / D2R;
+                q[3] = phi / D2R - q[1] - q[2];
+            }
+            (void)sing_parts(d, q, part);
+            if (part[2] < 0.1 || (cyl ? part[1] < 0.1 : part[0] < 0.05)) continue;
+            dhs_fk_ref_f32(&r, q, F, &Td);
+            if (!cyl) {
+                /* outward from the frame 1 origin */
+                for (i = 0; i < 3; i++) e[i] = F[4].m[3][i] - F[0].m[3][i];
+                Rr = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+                DHT_TRUE_MSG(fabs(Rr - sqrt((fabs(a2) + fabs(a3) + fabs(e5)) * (fabs(a2) + fabs(a3) + fabs(e5)) + h * h)) <=
+                                 2e-8,
+                             "%s: joint 5 point at %.9g from the frame 1 origin", d->name, Rr);
+                sh = 1.0;
+            } else {
+                /* from axis 1 (base z through the base origin) to the joint 5 point, inward */
+                for (i = 0; i < 3; i++) {
+                    e[i] = F[4].m[3][i] - d->base.m[3][i];
+                    ez += e[i] * d->base.m[2][i];
+                }
+                for (i = 0; i < 3; i++) e[i] -= ez * d->base.m[2][i];
+                Rr = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+                DHT_TRUE_MSG(fabs(Rr - fabs(h)) <= 2e-8, "%s: joint 5 point at %.9g from axis 1, |h| = %.9g",
+                             d->name, Rr, fabs(h));
+                sh = -1.0;
+            }
+            for (i = 0; i < 3; i++) e[i] /= Rr;
+            Ts = Td;
+            for (i = 0; i < 3; i++) Ts.m[3][i] += sh * 0.25 * UR_TOL_REL * L * e[i];
+            to_f32(&Ts, &T);
+            (void)solve_check(&r, &m, &T, qref, q, d->name, &fl, &best);
+            DHT_TRUE_MSG((fl & (cyl ? DH_IKC_SING_SHOULDER : DH_IKC_SING_ELBOW)) != 0u,
+                         "%s: tol / 4 beyond the %s not flagged (q %s)", d->name, cyl ? "shoulder cylinder" : "reach",
+                         q_str(q, r.n, 0));
+            Ts = Td;
+            for (i = 0; i < 3; i++) Ts.m[3][i] += sh * 4.0 * UR_TOL_REL * L * e[i];
+            to_f32(&Ts, &T);
+            ns = 99u;
+            DHT_TRUE_MSG(dh_ikc_f32(&m, &T, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns) == DH_ERR_UNREACHABLE &&
+                             ns == 0u,
+                         "%s: 4 tol beyond the %s: %u solutions (q %s)", d->name,
+                         cyl ? "shoulder cylinder" : "reach", (unsigned)ns, q_str(q, r.n, 0));
+            n[cyl]++;
+        }
+        DHT_TRUE(n[0] > 0 && n[1] > 0);
+    }
+}
+
 /* stretched or folded elbow: UR q3 = 0 / 180, SCARA q2 = 0 */
 static void ikc_elbow_singular(void)
 {
@@ -733,6 +891,8 @@ static const dht_case cases[] = {
     DHT_CASE(ikc_ur_wrist_singular),
     DHT_CASE(ikc_ur_shoulder_singular),
     DHT_CASE(ikc_ur_corner),
+    DHT_CASE(ikc_ur_corner_off),
+    DHT_CASE(ikc_ur_beyond),
     DHT_CASE(ikc_elbow_singular),
     DHT_CASE(ikc_unreachable),
     DHT_CASE(ikc_vs_numerical),
