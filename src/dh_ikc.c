@@ -706,7 +706,7 @@ static DH_NOINLINE uint32_t ikc_shoulder(const dh_ikc_model_f32 *m, float cref1,
     const float h = k[KW_H], eps = k[KW_EPS], tau = m->sa[0];
     const float px = p[0], py = p[1], pz = p[2], vy = tau * (pz - m->d[0]);
     float rad, tol, u = 0.0f;
-    uint32_t b, nu = 0u;
+    uint32_t b, nb, nu = 0u;
     int sing;
     rad = dh_sqrt_f32(px * px + py * py);
     rad = (rad - fabsf(h)) * (rad + fabsf(h));
@@ -715,16 +715,16 @@ static DH_NOINLINE uint32_t ikc_shoulder(const dh_ikc_model_f32 *m, float cref1,
     if (rad > 0.0f) u = dh_sqrt_f32(rad);
     /* wrist centre on axis 1: joint 1 from q_ref, one branch */
     sing = (rad <= tol && !dh_feq_f32(k[KW_HZERO], 0.0f));
-    for (b = 0; b < 2u; b++) {
+    nb = sing ? 1u : 2u;
+    for (b = 0; b < nb; b++) {
         dh_ikc_sol_f32 *s = &sol[nu];
         float ub = (b == 0u) ? u : -u;
         if (sing) {
-            if (b != 0u) break;
             s->q[0] = cref1;
             s->flags = DH_IKC_SING_SHOULDER;
         } else {
             ub = ikc_reach(m, b, ub, vy, fabsf(px) + fabsf(py));
-            if (b != 0u && !(u > 0.0f) && !(ub < 0.0f)) break; /* both branches at u = 0 */
+            if (b != 0u && !(u > 0.0f) && !(ub < 0.0f)) continue; /* both branches at u = 0: one */
             s->q[0] = ikc_atan2(tau * h * px + ub * py, ub * px - tau * h * py, cref1);
             s->flags = (b == 0u) ? 0u : DH_IKC_SHOULDER_ALT;
         }
