@@ -52,9 +52,10 @@
  * above, within the accuracy bounds below. Fixed path, every family: that
  * point within 2^(5 - F) length units of the boundary (F = DH_QPOS_FRAC;
  * 2^-11 mm for robots in mm) is solved, beyond it by more than 2^(8 - F)
- * units DH_ERR_UNREACHABLE. Float path, spherical wrist: within 2.5e-7 L
- * solved, beyond 1.5e-6 L unreachable (L: the sum of the robot's |a| and
- * |d|; the band of the singular flags is 5e-7 L).
+ * units DH_ERR_UNREACHABLE. Float path (L: the sum of the robot's |a| and
+ * |d|): spherical wrist within 2.5e-7 L solved, beyond 1.5e-6 L
+ * unreachable (the band of the singular flags is 5e-7 L); PARALLEL_234
+ * within 1e-7 L solved, beyond 1.6e-6 L unreachable (band 4e-7 L).
  * A target within the band, inside or beyond, is solved at the boundary:
  * its joints differ from an exact solution's by up to the square root of
  * the band (about 0.13 deg for the Puma's stretched elbow), and near a
