@@ -276,6 +276,22 @@ static void ikc_ur_wrist_singular(void)
     }
 }
 
+/* q[1] and q[3] of a UR configuration moved, keeping q[2] and
+ * phi = q2 + q3 + q4, so that the planar x of the joint 5 point,
+ * a2 c2 + a3 c23 + e5 sin(phi), is u0 (the elbow solution of sign sgn);
+ * 0 when no such q[1] exists */
+static int put_u(const dhs_robot *d, double *q, double u0, int sgn)
+{
+    const double a2 = d->j[1].a, a3 = d->j[2].a, e5 = d->j[4].d; /* sb = +1 for UR */
+    const double phi = (q[1] + q[2] + q[3]) * D2R;
+    const double X = a2 + a3 * cos(q[2] * D2R), Y = a3 * sin(q[2] * D2R), R = sqrt(X * X + Y * Y);
+    const double c = u0 - e5 * sin(phi);
+    if (fabs(c) >= R) return 0;
+    q[1] = (-atan2(Y, X) + sgn * acos(c / R)) / D2R;
+    q[3] = phi / D2R - q[1] - q[2];
+    return 1;
+}
+
 /* UR with the joint 5 point on the cylinder |u| = 0 (the two shoulder
  * branches meet): flagged, FK-correct, returned once */
 static void ikc_ur_shoulder_singular(void)
@@ -283,27 +299,18 @@ static void ikc_ur_shoulder_singular(void)
     unsigned ri;
     for (ri = 0; ri < 3u; ri++) {
         const dhs_robot *d = g_robots[ri];
-        const double a2 = d->j[1].a, a3 = d->j[2].a, e5 = d->j[4].d; /* sb = +1 for UR */
         dh_robot r;
         dh_ikc_model_f32 m;
         long it;
         int found = 0;
         build(d, &r, &m);
         for (it = 0; it < DHT_ITER(500); it++) {
-            double q[DHS_MAX_JOINTS], best, X, Y, R, c, phi;
+            double q[DHS_MAX_JOINTS], best;
             const float qref[NJ] = { 0 };
             dh_mat4_f32 T;
             uint32_t n, fl;
             dhs_random_q(d, q);
-            /* planar x of the joint 5 point: a2 c2 + a3 c23 + e5 sin(phi) = 0 */
-            phi = (q[1] + q[2] + q[3]) * D2R;
-            X = a2 + a3 * cos(q[2] * D2R);
-            Y = a3 * sin(q[2] * D2R);
-            R = sqrt(X * X + Y * Y);
-            c = -e5 * sin(phi);
-            if (fabs(c) >= R) continue;
-            q[1] = (-atan2(Y, X) + ((it & 1) ? 1 : -1) * acos(c / R)) / D2R;
-            q[3] = phi / D2R - q[1] - q[2];
+            if (!put_u(d, q, 0.0, (it & 1) ? 1 : -1)) continue;
             DHT_TRUE(sing_dist(d, q) < 1e-12);
             target_of(&r, q, &T);
             n = solve_check(&r, &m, &T, qref, q, d->name, &fl, &best);
@@ -326,27 +333,19 @@ static void ikc_ur_corner(void)
     unsigned ri;
     for (ri = 0; ri < 3u; ri++) {
         const dhs_robot *d = g_robots[ri];
-        const double a2 = d->j[1].a, a3 = d->j[2].a, e5 = d->j[4].d; /* sb = +1 for UR */
         dh_robot r;
         dh_ikc_model_f32 m;
         long it;
         int found = 0;
         build(d, &r, &m);
         for (it = 0; it < 20L * DHT_ITER(500) && found < DHT_ITER(500); it++) {
-            double q[DHS_MAX_JOINTS], part[3], best, X, Y, R, c, phi;
+            double q[DHS_MAX_JOINTS], part[3], best;
             const float qref[NJ] = { 0 };
             dh_mat4_f32 T;
             uint32_t fl;
             dhs_random_q(d, q);
             q[2] = ((it & 2) ? 180.0 : 0.0) + dht_rand_uniform(-0.05, 0.05);
-            phi = (q[1] + q[2] + q[3]) * D2R;
-            X = a2 + a3 * cos(q[2] * D2R);
-            Y = a3 * sin(q[2] * D2R);
-            R = sqrt(X * X + Y * Y);
-            c = -e5 * sin(phi);
-            if (fabs(c) >= R) continue;
-            q[1] = (-atan2(Y, X) + ((it & 1) ? 1 : -1) * acos(c / R)) / D2R;
-            q[3] = phi / D2R - q[1] - q[2];
+            if (!put_u(d, q, 0.0, (it & 1) ? 1 : -1)) continue;
             (void)sing_parts(d, q, part);
             if (part[2] < 0.05) continue;
             target_of(&r, q, &T);
@@ -369,14 +368,13 @@ static void ikc_ur_corner_off(void)
     unsigned ri;
     for (ri = 0; ri < 3u; ri++) {
         const dhs_robot *d = g_robots[ri];
-        const double a2 = d->j[1].a, a3 = d->j[2].a, e5 = d->j[4].d; /* sb = +1 for UR */
         dh_robot r;
         dh_ikc_model_f32 m;
         long it;
         int found = 0;
         build(d, &r, &m);
         for (it = 0; it < 20L * DHT_ITER(500) && found < DHT_ITER(500); it++) {
-            double q[DHS_MAX_JOINTS], part[3], best, X, Y, R, c, phi, L = 0.0;
+            double q[DHS_MAX_JOINTS], part[3], best, L = 0.0;
             const double u0 = (it & 4) ? 3e-4 : -3e-4;
             const float qref[NJ] = { 0 };
             dh_mat4_f32 T;
@@ -385,15 +383,7 @@ static void ikc_ur_corner_off(void)
             for (j = 0; j < d->n; j++) L += fabs(d->j[j].a) + fabs(d->j[j].d);
             dhs_random_q(d, q);
             q[2] = ((it & 2) ? 180.0 : 0.0) + dht_rand_uniform(-0.05, 0.05);
-            phi = (q[1] + q[2] + q[3]) * D2R;
-            X = a2 + a3 * cos(q[2] * D2R);
-            Y = a3 * sin(q[2] * D2R);
-            R = sqrt(X * X + Y * Y);
-            /* planar x of the joint 5 point: a2 c2 + a3 c23 + e5 sin(phi) = u0 */
-            c = u0 - e5 * sin(phi);
-            if (fabs(c) >= R) continue;
-            q[1] = (-atan2(Y, X) + ((it & 1) ? 1 : -1) * acos(c / R)) / D2R;
-            q[3] = phi / D2R - q[1] - q[2];
+            if (!put_u(d, q, u0, (it & 1) ? 1 : -1)) continue;
             (void)sing_parts(d, q, part);
             DHT_TRUE_MSG(fabs(part[0] * L - 3e-4) <= 1e-9, "%s: u = %.9g m, not 3e-4", d->name, part[0] * L);
             if (part[2] < 0.05) continue;
