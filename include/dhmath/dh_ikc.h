@@ -58,10 +58,10 @@
  * within 1e-7 L solved, beyond 1.6e-6 L unreachable (band 4e-7 L).
  * A target within the band, inside or beyond, is solved at the boundary:
  * its joints differ from an exact solution's by up to the square root of
- * the band (about 0.13 deg for the Puma's stretched elbow), and near a
- * singularity the target's rounding moves the joints by more than it
+ * the band (0.12 deg for a Puma target 0.12 deg from stretched), and near
+ * a singularity the target's rounding moves the joints by more than it
  * moves the pose (joint 2 of a folded Puma elbow, whose wrist centre lies
- * 0.5 mm from axis 2, by up to about 2 deg). A joint limit that near may
+ * 0.5 mm from axis 2: 1.8 deg in the tests; docs/accuracy_kin.md). A joint limit that near may
  * drop such a solution (DH_ERR_LIMIT; DH_IKC_KEEP_OUT_OF_LIMITS keeps it).
  *
  * Accuracy (tests against double, test/test_ikc*.c; measured figures:
