@@ -959,6 +959,12 @@ static void ikc_bad_arguments(void)
     U.m[2][3] = 1e-3f;
     expect_err(&m, &U, qref, 0u, DH_ERR_NOT_RIGID, "bottom row");
     U = T;
+    U.m[0][3] = -1e-3f;
+    expect_err(&m, &U, qref, 0u, DH_ERR_NOT_RIGID, "bottom row, column 0");
+    U = T;
+    U.m[1][3] = 1e-3f;
+    expect_err(&m, &U, qref, 0u, DH_ERR_NOT_RIGID, "bottom row, column 1");
+    U = T;
     U.m[3][3] = 2.0f;
     expect_err(&m, &U, qref, 0u, DH_ERR_NOT_RIGID, "bottom row w");
     U = T;

@@ -792,6 +792,7 @@ static void no_closed_form(void)
     dh_robot r;
     dh_ikc_model_q m;
     dh_frame_q F;
+    unsigned i;
     static const dhs_joint_desc rrrr[4] = {
         {DH_JOINT_REVOLUTE, 100.0, 0.0, 0.0, 0.0, 1.0, -1.0},
         {DH_JOINT_REVOLUTE, 100.0, 0.0, 0.0, 0.0, 1.0, -1.0},
@@ -809,6 +810,12 @@ static void no_closed_form(void)
     analyse_why(&dhs_panda_mm, DH_IKC_WHY_JOINTS);       /* 7 joints */
     d.j[4].a = 30.0 * LS;                               /* wrist axes do not meet */
     analyse_why(&d, DH_IKC_WHY_WRIST);
+    for (i = 0; i < 5u; i++) {                          /* twist 1, 4 or 5 one degree off */
+        if (i == 1u || i == 2u) continue;               /* (joint 3's twist is free in the family) */
+        d = P;
+        d.j[i].alpha_deg += 1.0;
+        analyse_why(&d, DH_IKC_WHY_AXES);
+    }
     d = P;
     d.j[1].alpha_deg = 90.0;                            /* axes 2 and 3 not parallel */
     analyse_why(&d, DH_IKC_WHY_AXES);

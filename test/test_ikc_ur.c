@@ -24,15 +24,14 @@
 #define TOL_POS 2e-6
 #define TOL_ROT 2e-6
 #define NJ DH_IKC_JOINTS
-/* Completeness: the generating configuration is among the solutions within
- * 1e-3 deg when its normalised distance from every singularity (shoulder
- * |u| / L, elbow |a2 a3 s3| / (|a2| + |a3|)^2, wrist |s5|; SCARA
- * |a1 a2 s2| / (|a1| + |a2|)^2) is at
- * least SING_FAR; between 1e-2 and SING_FAR within 1e-2 deg. Closer than
- * SING_FAR the rounding of the float target (and of pre^-1 T post^-1 with
- * a base and tool) alone moves the exact solution by that much: 1.5e-8 m on a coordinate turns theta1 by 1e-7 rad at
- * r = 0.15 m (UR3), which the wrist amplifies by 1 / |s5|, the elbow by
- * (|a2| + |a3|) / (|a2 a3 s3|). */
+/* Normalised distance from every singularity (shoulder |u| / L, elbow
+ * |a2 a3 s3| / (|a2| + |a3|)^2, wrist |s5|; SCARA |a1 a2 s2| / (|a1| +
+ * |a2|)^2). ikc_complete and ikc_vs_numerical accept a joint distance
+ * within MATCH_FLOOR, or else within the bound derived from the local
+ * conditioning (pair_bound), which is only evaluated for the pairs that
+ * need it; the description variants (complete_desc) and the singular cases
+ * keep configurations at least SING_FAR away, where the generating
+ * configuration is among the solutions within 1e-3 deg. */
 #define SING_FAR 1e-1
 
 /* ---- the robots ---------------------------------------------------------- */
@@ -183,7 +182,151 @@ static double check_all(const dh_robot *r, const dh_mat4_f32 *T, const dh_ikc_so
     return best;
 }
 
+/* ---- joint-space match bound from the local conditioning ------------------- */
+
+/* Two configurations qa and qb whose end frames differ by at most ep (m,
+ * position) and er (rad, rotation angle) satisfy, by the mean value
+ * theorem, FK(qb) - FK(qa) = Jm (qb - qa) with Jm the Jacobian averaged
+ * over the segment, so |qb_i - qa_i| <= ||Jm^-1_i,pos|| ep +
+ * ||Jm^-1_i,rot|| er, with Jm^-1_i,pos / _i,rot the position / rotation
+ * blocks of row i of Jm^-1 (Cauchy-Schwarz on each block). J is square:
+ * 6x6 for the UR, 4x4 over x y z and the rotation about z for the SCARA;
+ * match_bound evaluates that first-order bound with J at one configuration
+ * (in double, central differences of the reference FK). Near a singularity
+ * J^-1 grows as 1 / (singular distance): this is the amplification of the
+ * wrist (1 / |s5|), the elbow and the shoulder. The conditioning along the
+ * segment is set by the singular distance, which the ill-conditioned
+ * direction itself barely moves (the wrist's: q4 and q6 turning against
+ * each other about nearly parallel axes leave s5 unchanged), so pair_bound
+ * takes the larger first-order bound of the two ends (the end nearer a
+ * singularity, the worse conditioned along a short segment between them)
+ * and MATCH_SAFETY for the rest of the second-order term.
+ * Units follow sol_dist: deg for revolute joints, mm for prismatic ones. */
+#define MATCH_SAFETY 2.0
+/* deg: the joint distance accepted without the derived bound, the
+ * resolution the completeness checks ask for */
+#define MATCH_FLOOR 1e-3
+#define F32_EPS (1.0 / 16777216.0) /* 2^-24: float rounding, relative */
+
+static double match_bound(const dh_robot *r, const double *qa, double ep, double er)
+{
+    const uint32_t n = r->n, nr = (n == 6u) ? 6u : 4u;
+    double J[6][6], A[6][12], b = 0.0;
+    uint32_t i, k, c;
+    for (i = 0; i < n; i++) {
+        const int pri = r->joint[i].type == DH_JOINT_PRISMATIC;
+        const double h = pri ? 1e-7 : 1e-4; /* m / deg */
+        double qp[DHS_MAX_JOINTS], qm[DHS_MAX_JOINTS], w[3];
+        dhs_mat4_d Fp, Fm, F0;
+        int a, bb, kk;
+        memcpy(qp, qa, n * sizeof qa[0]);
+        memcpy(qm, qa, n * sizeof qa[0]);
+        qp[i] += h;
+        qm[i] -= h;
+        dhs_fk_ref_f32(r, qp, NULL, &Fp);
+        dhs_fk_ref_f32(r, qm, NULL, &Fm);
+        dhs_fk_ref_f32(r, qa, NULL, &F0);
+        /* per deg (revolute) or per mm (prismatic) */
+        for (k = 0; k < 3; k++) J[k][i] = (Fp.m[3][k] - Fm.m[3][k]) / (2.0 * h) / (pri ? 1000.0 : 1.0);
+        { /* omega: the axial vector of dR R^T (R[row][col] = m[col][row]) */
+            double W[3][3];
+            for (a = 0; a < 3; a++)
+                for (bb = 0; bb < 3; bb++) {
+                    double s = 0;
+                    for (kk = 0; kk < 3; kk++) s += (Fp.m[kk][a] - Fm.m[kk][a]) * F0.m[kk][bb];
+                    W[a][bb] = s / (2.0 * h) / (pri ? 1000.0 : 1.0);
+                }
+            w[0] = 0.5 * (W[2][1] - W[1][2]);
+            w[1] = 0.5 * (W[0][2] - W[2][0]);
+            w[2] = 0.5 * (W[1][0] - W[0][1]);
+        }
+        if (nr == 6u)
+            for (k = 0; k < 3; k++) J[3 + k][i] = w[k];
+        else
+            J[3][i] = w[2];
+    }
+    /* J^-1 by Gauss-Jordan with partial pivoting */
+    for (i = 0; i < nr; i++)
+        for (c = 0; c < 2 * nr; c++) A[i][c] = (c < nr) ? J[i][c] : (c - nr == i ? 1.0 : 0.0);
+    for (c = 0; c < nr; c++) {
+        uint32_t p = c;
+        double t;
+        for (i = c + 1; i < nr; i++)
+            if (fabs(A[i][c]) > fabs(A[p][c])) p = i;
+        if (A[p][c] == 0.0) return 1e9;
+        for (k = 0; k < 2 * nr; k++) {
+            t = A[c][k];
+            A[c][k] = A[p][k];
+            A[p][k] = t;
+        }
+        t = A[c][c];
+        for (k = 0; k < 2 * nr; k++) A[c][k] /= t;
+        for (i = 0; i < nr; i++)
+            if (i != c) {
+                t = A[i][c];
+                for (k = 0; k < 2 * nr; k++) A[i][k] -= t * A[c][k];
+            }
+    }
+    for (i = 0; i < nr; i++) { /* row i of J^-1: A[i][nr..2nr) */
+        double sp = 0, sr = 0, bi;
+        for (k = 0; k < 3; k++) sp += A[i][nr + k] * A[i][nr + k];
+        for (k = 3; k < nr; k++) sr += A[i][nr + k] * A[i][nr + k];
+        bi = sqrt(sp) * ep + sqrt(sr) * er;
+        if (bi > b) b = bi;
+    }
+    return b;
+}
+
+/* the match bound of a float solution qs against qa (see match_bound) */
+static double pair_bound(const dh_robot *r, const double *qa, const float *qs, double ep, double er)
+{
+    double qb[DHS_MAX_JOINTS], ba, bb;
+    uint32_t i;
+    for (i = 0; i < r->n; i++) qb[i] = (double)qs[i];
+    ba = match_bound(r, qa, ep, er);
+    bb = match_bound(r, qb, ep, er);
+    return MATCH_SAFETY * (ba > bb ? ba : bb);
+}
+
+/* the rounding of the float target T of the exact frame with position p:
+ * 2^-24 relative per coordinate, 2^-24 per rotation entry (|entry| <= 1,
+ * so the rotation moves by at most its Frobenius norm, 3 x 2^-24 rad) */
+static void target_rounding(const dh_mat4_f32 *T, double *rp, double *rr)
+{
+    double s = 0;
+    int k;
+    for (k = 0; k < 3; k++) s += (double)T->m[3][k] * (double)T->m[3][k];
+    *rp = F32_EPS * sqrt(s);
+    *rr = 3.0 * F32_EPS;
+}
+
 /* ---- completeness ----------------------------------------------------------- */
+
+/* the smallest ratio, over the solutions, of the joint distance to q and
+ * the pair's match bound: the end frame of solution s lies within
+ * ep_s + rp, er_s + rr of FK(q) (its measured error to the float target
+ * plus the target's rounding). *dist, *bound: those of the solution
+ * attaining it */
+static double nearest_ratio(const dh_robot *r, const dh_mat4_f32 *T, const dh_ikc_sol_f32 *sol,
+                            uint32_t n, const double *q, double *dist, double *bound)
+{
+    double rp, rr, best = 1e30;
+    uint32_t s;
+    target_rounding(T, &rp, &rr);
+    *dist = *bound = 1e9;
+    for (s = 0; s < n; s++) {
+        double ep, er, b, dd;
+        dhs_true_error_f32(r, sol[s].q, T, &ep, &er);
+        b = pair_bound(r, q, sol[s].q, ep + rp, er + rr);
+        dd = sol_dist(r, sol[s].q, q);
+        if (dd / b < best) {
+            best = dd / b;
+            *dist = dd;
+            *bound = b;
+        }
+    }
+    return best;
+}
 
 static void ikc_complete(void)
 {
@@ -194,8 +337,8 @@ static void ikc_complete(void)
         dh_ikc_model_f32 m;
         dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
         const float qref[NJ] = { 0 };
-        double ep_max = 0, er_max = 0, worst = 0, worst_near = 0;
-        long it, n_it = DHT_ITER(10000), used = 0;
+        double ep_max = 0, er_max = 0, worst = 0, worst_near = 0, ratio_max = 0;
+        long it, n_it = DHT_ITER(10000), used = 0, derived = 0;
         build(d, &r, &m);
         for (it = 0; it < n_it; it++) {
             double q[DHS_MAX_JOINTS], best, sd;
@@ -209,23 +352,26 @@ static void ikc_complete(void)
             n = solve(&r, &m, &T, qref, sol);
             DHT_TRUE_MSG(n >= 1u, "%s: no solution for q %s", d->name, q_str(q, r.n, 0));
             best = check_all(&r, &T, sol, n, q, d->name, &ep_max, &er_max);
-            if (sd >= SING_FAR) {
-                DHT_TRUE_MSG(best <= 1e-3, "%s: generating q %s not among the %u solutions (nearest %.3g deg)",
-                             d->name, q_str(q, r.n, 0), (unsigned)n, best);
-            } else {
-                DHT_TRUE_MSG(best <= 1e-2, "%s: generating q %s (singular distance %.3g) not among the %u "
-                             "solutions (nearest %.3g deg)", d->name, q_str(q, r.n, 0), sd, (unsigned)n, best);
-                if (best > worst_near) worst_near = best;
-                continue;
+            if (best > MATCH_FLOOR) {
+                double dist, bound;
+                const double ratio = nearest_ratio(&r, &T, sol, n, q, &dist, &bound);
+                DHT_TRUE_MSG(ratio <= 1.0, "%s: generating q %s (singular distance %.3g) not among the %u "
+                             "solutions (nearest %.3g deg, %.3g deg from the one within its derived bound %.3g deg)",
+                             d->name, q_str(q, r.n, 0), sd, (unsigned)n, best, dist, bound);
+                derived++;
+                if (ratio > ratio_max) ratio_max = ratio;
             }
-            if (best > worst) worst = best;
+            if (sd < SING_FAR) {
+                if (best > worst_near) worst_near = best;
+            } else if (best > worst) {
+                worst = best;
+            }
         }
         dht_printf("%s: %ld targets, max error %.3g m %.3g rad, generating q within %.3g deg "
-                   "(%.3g deg at singular distance 1e-2..%g)\n", d->name, used, ep_max, er_max, worst, worst_near,
-                   SING_FAR);
+                   "(%.3g deg at singular distance 1e-2..%g); %ld beyond %g deg, distance / derived bound <= %.3g\n",
+                   d->name, used, ep_max, er_max, worst, worst_near, SING_FAR, derived, MATCH_FLOOR, ratio_max);
     }
 }
-
 
 /* ---- singular cases ------------------------------------------------------- */
 
@@ -582,9 +728,36 @@ static void ikc_unreachable(void)
 
 /* ---- numerical IK finds nothing the closed form misses ------------------- */
 
-/* the largest distance at which a dh_ik_f32 result counts as a closed-form
- * solution (deg; m for the prismatic joint) */
-#define NUM_MATCH_DEG 0.5
+/* A dh_ik_f32 result qn (error ep, er to the float target, measured in
+ * double) counts as closed-form solution s (error ep_s, er_s) when their
+ * joint distance is within MATCH_FLOOR or else within pair_bound(qn, s,
+ * ep + ep_s, er + er_s): both end frames lie within their errors of the
+ * target. The solver stops at tol_pos 1e-6 L and tol_rot 1e-5 rad (the
+ * test keeps ep <= 1e-5 m, er <= 1e-4 rad); near the wrist singularity
+ * J^-1 maps its error of about 1e-6 m to tenths of a degree. */
+
+/* the smallest distance / derived bound over the closed-form solutions
+ * (out-of-limit ones only as limit twins of qo) */
+static double numerical_ratio(const dh_robot *r, const dh_mat4_f32 *T, const dh_ikc_sol_f32 *sol, uint32_t n,
+                              const float *qo, double ep, double er, double *bound)
+{
+    double qn[DHS_MAX_JOINTS], ratio = 1e30;
+    uint32_t i, s;
+    for (i = 0; i < r->n; i++) qn[i] = (double)qo[i];
+    *bound = 1e9;
+    for (s = 0; s < n; s++) {
+        double eps, ers, bd, dd = sol_dist(r, sol[s].q, qn);
+        dhs_true_error_f32(r, sol[s].q, T, &eps, &ers);
+        bd = pair_bound(r, qn, sol[s].q, ep + eps, er + ers);
+        if ((sol[s].flags & DH_IKC_OUT_OF_LIMITS) != 0u && !dhs_limit_twin_f32(r, sol[s].q, qo, bd, bd * 1e-3))
+            continue;
+        if (dd / bd < ratio) {
+            ratio = dd / bd;
+            *bound = bd;
+        }
+    }
+    return ratio;
+}
 
 static void ikc_vs_numerical(void)
 {
@@ -595,8 +768,8 @@ static void ikc_vs_numerical(void)
         dh_robot r;
         dh_ikc_model_f32 m;
         dh_ik_params p;
-        long it, st_n, conv = 0, near = 0;
-        double worst = 0;
+        long it, st_n, conv = 0, near = 0, derived = 0;
+        double worst = 0, ratio_max = 0;
         build(d, &r, &m);
         dh_ik_params_default(&r, &p);
         p.restarts = 0;
@@ -614,7 +787,7 @@ static void ikc_vs_numerical(void)
             DHT_TRUE(n >= 1u);
             /* out-of-limit solutions kept: dh_ik_f32 stops on or just inside
              * a limit, where the closed form's solution may lie beyond it
-             * (matched only then, within the match distance NUM_MATCH_DEG) */
+             * (matched only then, as the limit twin of the numerical result) */
             DHT_EQ_INT(dh_ikc_f32(&m, &T, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n), DH_OK);
             for (st_n = 0; st_n < DHT_ITER(200); st_n++) {
                 double q0d[DHS_MAX_JOINTS], qn[DHS_MAX_JOINTS], best = 1e9, ep, er;
@@ -631,22 +804,30 @@ static void ikc_vs_numerical(void)
                     near++;
                     continue;
                 }
-                conv++;
                 for (s = 0; s < n; s++) {
                     double dd = sol_dist(&r, sol[s].q, qn);
                     if ((sol[s].flags & DH_IKC_OUT_OF_LIMITS) != 0u &&
-                        !dhs_limit_twin_f32(&r, sol[s].q, qo, NUM_MATCH_DEG, NUM_MATCH_DEG))
+                        !dhs_limit_twin_f32(&r, sol[s].q, qo, MATCH_FLOOR, MATCH_FLOOR * 1e-3))
                         continue;
                     if (dd < best) best = dd;
                 }
+                if (best > MATCH_FLOOR) {
+                    double bound;
+                    const double ratio = numerical_ratio(&r, &T, sol, n, qo, ep, er, &bound);
+                    derived++;
+                    if (ratio > ratio_max) ratio_max = ratio;
+                    DHT_TRUE_MSG(ratio <= 1.0, "%s: numerical solution %s (error %.3g m %.3g rad) not among the %u "
+                                 "closed-form ones (nearest %.3g deg, distance / derived bound %.3g, bound %.3g deg); "
+                                 "target q %s", d->name, q_str(qn, r.n, 0), ep, er, (unsigned)n, best, ratio, bound,
+                                 q_str(q, r.n, 1));
+                }
+                conv++;
                 if (best > worst) worst = best;
-                DHT_TRUE_MSG(best <= NUM_MATCH_DEG, "%s: numerical solution %s (error %.3g m %.3g rad) not among the %u "
-                             "closed-form ones (nearest %.3g deg); target q %s", d->name, q_str(qn, r.n, 0), ep, er,
-                             (unsigned)n, best, q_str(q, r.n, 1));
             }
         }
-        dht_printf("%s: %ld converged numerical solutions, all among the closed-form ones (within %.3g deg; "
-                   "%ld more within 1e-2 of a singularity not compared)\n", d->name, conv, worst, near);
+        dht_printf("%s: %ld converged numerical solutions, all among the closed-form ones (nearest within %.3g "
+                   "deg; %ld beyond %g deg, distance / derived bound <= %.3g; not compared: %ld within 1e-2 of a "
+                   "singularity)\n", d->name, conv, worst, derived, MATCH_FLOOR, ratio_max, near);
     }
 }
 
@@ -876,6 +1057,75 @@ static void ikc_detect(void)
     complete_desc(&d, &d, DHT_ITER(2000));
 }
 
+/* not the family: each structural condition of the detectors broken on its
+ * own (a twist 1 degree off, a length that must be zero made non-zero, a
+ * length that must be non-zero made zero) */
+static void not_family(const dhs_robot *d, dh_ikc_kind kind)
+{
+    dh_robot r;
+    dh_ikc_model_f32 m;
+    dh_status st;
+    DHT_EQ_INT(dhs_build(d, &r), DH_OK);
+    st = dh_ikc_analyse_f32(&r, &m);
+    DHT_TRUE_MSG(st == DH_OK || st == DH_ERR_UNAVAILABLE, "%s: status %d", d->name, (int)st);
+    DHT_TRUE_MSG(m.kind != kind, "%s: still recognised as kind %d", d->name, (int)kind);
+}
+
+/* the twist that flips the axis: 0 <-> 180, a <-> -a otherwise */
+static double mirror_twist(double a)
+{
+    if (fabs(a) < 1.0) return 180.0;
+    if (fabs(fabs(a) - 180.0) < 1.0) return 0.0;
+    return -a;
+}
+
+static void ikc_detect_each(void)
+{
+    dhs_robot d;
+    unsigned i;
+    for (i = 0; i < 5u; i++) {
+        d = dhs_ur5_m;
+        d.name = "ur5, one twist 1 deg off";
+        d.j[i].alpha_deg += 1.0;
+        not_family(&d, DH_IKC_PARALLEL_234);
+    }
+    d = dhs_ur5_m;
+    d.j[4].a = 0.01;
+    not_family(&d, DH_IKC_PARALLEL_234);
+    for (i = 1; i < 3u; i++) {
+        d = dhs_ur5_m;
+        d.name = "ur5, a2 or a3 zero";
+        d.j[i].a = 0.0;
+        not_family(&d, DH_IKC_PARALLEL_234);
+    }
+    for (i = 0; i < 3u; i++) {
+        d = dhs_cobra600_m;
+        d.name = "cobra600, one twist 1 deg off";
+        d.j[i].alpha_deg += 1.0;
+        not_family(&d, DH_IKC_SCARA);
+    }
+    d = dhs_cobra600_m;
+    d.j[0].a = 0.0;
+    not_family(&d, DH_IKC_SCARA);
+    d = dhs_cobra600_m; /* the second link folded onto itself: a2 + a3 cos 180 = 0 */
+    d.j[2].a = d.j[1].a;
+    d.j[2].theta_deg = 180.0;
+    not_family(&d, DH_IKC_SCARA);
+    /* each twist sign on its own: still the family, still complete */
+    for (i = 0; i < 5u; i++) {
+        d = dhs_ur5_m;
+        d.name = "ur5, one twist mirrored";
+        d.j[i].alpha_deg = mirror_twist(d.j[i].alpha_deg);
+        complete_desc(&d, &d, DHT_ITER(300));
+    }
+    for (i = 0; i < 3u; i++) {
+        d = dhs_cobra600_m;
+        d.name = "cobra600, one twist mirrored";
+        d.j[i].alpha_deg = mirror_twist(d.j[i].alpha_deg);
+        complete_desc(&d, &d, DHT_ITER(300));
+    }
+}
+
 static const dht_case cases[] = {
     DHT_CASE(ikc_complete),
     DHT_CASE(ikc_ur_wrist_singular),
@@ -891,5 +1141,6 @@ static const dht_case cases[] = {
     DHT_CASE(ikc_limits),
     DHT_CASE(ikc_unreachable_status),
     DHT_CASE(ikc_detect),
+    DHT_CASE(ikc_detect_each),
 };
 DHT_MAIN(cases)

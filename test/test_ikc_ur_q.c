@@ -813,6 +813,74 @@ static void detect(void)
     DHT_EQ_INT(m.why, DH_IKC_WHY_AXES);
 }
 
+/* not the family: each structural condition of the fixed detectors broken
+ * on its own, as in the float suite */
+static void not_family(const dhs_robot *d, dh_ikc_kind kind)
+{
+    dh_robot r;
+    dh_ikc_model_q m;
+    dh_status st;
+    DHT_EQ_INT(dhs_build(d, &r), DH_OK);
+    st = dh_ikc_analyse_q(&r, &m);
+    DHT_TRUE_MSG(st == DH_OK || st == DH_ERR_UNAVAILABLE, "%s: status %d", d->name, (int)st);
+    DHT_TRUE_MSG(m.kind != kind, "%s: still recognised as kind %d", d->name, (int)kind);
+}
+
+/* the twist that flips the axis: 0 <-> 180, a <-> -a otherwise */
+static double mirror_twist(double a)
+{
+    if (fabs(a) < 1.0) return 180.0;
+    if (fabs(fabs(a) - 180.0) < 1.0) return 0.0;
+    return -a;
+}
+
+static void detect_each(void)
+{
+    dhs_robot d;
+    unsigned i;
+    for (i = 0; i < 5u; i++) {
+        robot_mm(&d, &dhs_ur5_mm);
+        d.name = "ur5, one twist 1 deg off";
+        d.j[i].alpha_deg += 1.0;
+        not_family(&d, DH_IKC_PARALLEL_234);
+    }
+    robot_mm(&d, &dhs_ur5_mm);
+    d.j[4].a = 10.0;
+    not_family(&d, DH_IKC_PARALLEL_234);
+    for (i = 1; i < 3u; i++) {
+        robot_mm(&d, &dhs_ur5_mm);
+        d.name = "ur5, a2 or a3 zero";
+        d.j[i].a = 0.0;
+        not_family(&d, DH_IKC_PARALLEL_234);
+    }
+    for (i = 0; i < 3u; i++) {
+        robot_mm(&d, &dhs_cobra600_mm);
+        d.name = "cobra600, one twist 1 deg off";
+        d.j[i].alpha_deg += 1.0;
+        not_family(&d, DH_IKC_SCARA);
+    }
+    robot_mm(&d, &dhs_cobra600_mm);
+    d.j[0].a = 0.0;
+    not_family(&d, DH_IKC_SCARA);
+    robot_mm(&d, &dhs_cobra600_mm); /* the second link folded onto itself: a2 + a3 cos 180 = 0 */
+    d.j[2].a = d.j[1].a;
+    d.j[2].theta_deg = 180.0;
+    not_family(&d, DH_IKC_SCARA);
+    /* each twist sign on its own: still the family, still complete */
+    for (i = 0; i < 5u; i++) {
+        robot_mm(&d, &dhs_ur5_mm);
+        d.name = "ur5, one twist mirrored";
+        d.j[i].alpha_deg = mirror_twist(d.j[i].alpha_deg);
+        random_run(&d, DH_IKC_PARALLEL_234, DHT_ITER(400));
+    }
+    for (i = 0; i < 3u; i++) {
+        robot_mm(&d, &dhs_cobra600_mm);
+        d.name = "cobra600, one twist mirrored";
+        d.j[i].alpha_deg = mirror_twist(d.j[i].alpha_deg);
+        random_run(&d, DH_IKC_SCARA, DHT_ITER(400));
+    }
+}
+
 static const dht_case cases[] = {
     DHT_CASE(ur_random),
     DHT_CASE(scara_random),
@@ -826,5 +894,6 @@ static const dht_case cases[] = {
     DHT_CASE(unreachable),
     DHT_CASE(overflow),
     DHT_CASE(detect),
+    DHT_CASE(detect_each),
 };
 DHT_MAIN(cases)

@@ -161,6 +161,11 @@ static void to_mat_special(void)
     DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &R), DH_ERR_NAN);
     q.w = 1.0f; q.z = INFINITY;
     DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &R), DH_ERR_NAN);
+    q.z = 0.0f; q.x = NAN; /* each component on its own */
+    DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &R), DH_ERR_NAN);
+    q.x = 0.0f; q.y = -INFINITY;
+    DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &R), DH_ERR_NAN);
+    q.y = FLT_MIN;
     q.z = FLT_MAX; q.x = -FLT_MAX; /* huge but finite: 90 deg about (-1, 0, 1) within rounding */
     DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &Rs), DH_OK);
     DHT_NEAR(DH_M3(&Rs, 1, 1), -1.0, Q2M_TOL);
