@@ -371,3 +371,10 @@ int dhs_limit_twin_f32(const dh_robot *r, const float *c, const float *qn, doubl
     }
     return 1;
 }
+
+double dhs_mirror_twist(double alpha_deg)
+{
+    if (fabs(alpha_deg) < 1.0) return 180.0;
+    if (fabs(fabs(alpha_deg) - 180.0) < 1.0) return 0.0;
+    return -alpha_deg;
+}

@@ -121,6 +121,8 @@ double dhs_rot_angle(double R[3][3]);
  *  r's stored float parameters (dhs_fk_ref_f32). */
 void dhs_true_error_f32(const dh_robot *r, const float *q, const dh_mat4_f32 *target, double *ep, double *er);
 
+/** The twist (deg) that flips a joint axis: 0 <-> 180, a <-> -a otherwise. */
+double dhs_mirror_twist(double alpha_deg);
 /**
  * 1 when the closed-form solution c (flagged outside the limits) and the
  * in-limit numerical solution qn straddle a limit by no more than the

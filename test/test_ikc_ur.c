@@ -1071,14 +1071,6 @@ static void not_family(const dhs_robot *d, dh_ikc_kind kind)
     DHT_TRUE_MSG(m.kind != kind, "%s: still recognised as kind %d", d->name, (int)kind);
 }
 
-/* the twist that flips the axis: 0 <-> 180, a <-> -a otherwise */
-static double mirror_twist(double a)
-{
-    if (fabs(a) < 1.0) return 180.0;
-    if (fabs(fabs(a) - 180.0) < 1.0) return 0.0;
-    return -a;
-}
-
 static void ikc_detect_each(void)
 {
     dhs_robot d;
@@ -1115,13 +1107,13 @@ static void ikc_detect_each(void)
     for (i = 0; i < 5u; i++) {
         d = dhs_ur5_m;
         d.name = "ur5, one twist mirrored";
-        d.j[i].alpha_deg = mirror_twist(d.j[i].alpha_deg);
+        d.j[i].alpha_deg = dhs_mirror_twist(d.j[i].alpha_deg);
         complete_desc(&d, &d, DHT_ITER(300));
     }
     for (i = 0; i < 3u; i++) {
         d = dhs_cobra600_m;
         d.name = "cobra600, one twist mirrored";
-        d.j[i].alpha_deg = mirror_twist(d.j[i].alpha_deg);
+        d.j[i].alpha_deg = dhs_mirror_twist(d.j[i].alpha_deg);
         complete_desc(&d, &d, DHT_ITER(300));
     }
 }
