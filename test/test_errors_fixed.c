@@ -22,6 +22,7 @@
 #include "dhmath/frame.h"
 #include "dhmath/mat4.h"
 #include "dhmath/trig.h"
+#include "dhmath/rot.h"
 
 #define TWO30 1073741824.0
 #define TWO31 2147483648.0

@@ -17,6 +17,7 @@
 #include "support_canary.h"
 #include "support_ref.h"
 #include "dhmath/mat4.h"
+#include "dhmath/rot.h"
 
 #define U24 5.9604644775390625e-8
 

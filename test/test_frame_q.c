@@ -11,6 +11,7 @@
 #include "dht.h"
 #include "dhmath/frame.h"
 #include "dhmath/trig.h"
+#include "dhmath/rot.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

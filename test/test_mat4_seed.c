@@ -16,6 +16,7 @@
 
 #include "dht.h"
 #include "dhmath/mat4.h"
+#include "dhmath/rot.h"
 
 /* ---- helpers ----------------------------------------------------------- */
 

@@ -1,4 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * Index: the functions of common.h by source file (src/common/).
+ *   dh_status.c  dh_status_str
+ */
 /**
  * @file common.h
  * @brief Status codes, configuration, assertion hook and the basic float and
@@ -9,8 +13,8 @@
  * Matrices are stored COLUMN-MAJOR: element (row r, column c) is m[c][r], so
  * each of n, o, a, p is a contiguous group of floats (see DH_M4()).
  */
-#ifndef DHMATH_DH_COMMON_H
-#define DHMATH_DH_COMMON_H
+#ifndef DHMATH_COMMON_H
+#define DHMATH_COMMON_H
 
 #include <stdint.h>
 #include <stddef.h>
@@ -128,4 +132,4 @@ typedef struct {
 }
 #endif
 
-#endif /* DHMATH_DH_COMMON_H */
+#endif /* DHMATH_COMMON_H */

@@ -15,8 +15,8 @@
  * link, naming the setting. The other settings only change the library's
  * own code.
  */
-#ifndef DHMATH_DH_CONFIG_H
-#define DHMATH_DH_CONFIG_H
+#ifndef DHMATH_CONFIG_H
+#define DHMATH_CONFIG_H
 
 /** @name Library version (semantic versioning). The one definition: CMake's
  *  project version and the pkg-config file's are read from here, and
@@ -160,4 +160,4 @@ __asm__(".pushsection .rodata." DH_CFG_GROUP_ ",\"aGR\",%progbits," DH_CFG_GROUP
         ".popsection");
 #endif
 
-#endif /* DHMATH_DH_CONFIG_H */
+#endif /* DHMATH_CONFIG_H */

@@ -1,11 +1,19 @@
 /* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * Index: the functions of frame.h by source file (src/frame/).
+ *   dh_frame_q.c  dh_frame_identity_q, dh_frame_trans_q, dh_frame_rotx_q,
+ *                 dh_frame_roty_q, dh_frame_rotz_q, dh_frame_rot_axis_q,
+ *                 dh_frame_mul_q, dh_frame_inv_q, dh_frame_apply_point_q,
+ *                 dh_frame_apply_dir_q, dh_frame_orthonormalize_chk_q,
+ *                 dh_frame_orthonormalize_q, dh_frame_ortho_error_q
+ */
 /**
  * @file frame.h
  * @brief Fixed-point rigid frames: rotation Q2.30, position dh_qpos
  *        (DH_QPOS_FRAC fraction bits), angles in degrees Q16.16.
  *
- * Integer only (no float, no libm, no 64-bit division); the two conversion
- * functions at the end live in their own source file and use float.
+ * Integer only (no float, no libm, no 64-bit division). The conversions
+ * between dh_frame_q and dh_mat4_f32 are in rot.h (they use float).
  *
  * Arithmetic contract shared by every function below:
  * - Each output entry is ONE exact 64-bit sum of products rounded once:
@@ -33,8 +41,8 @@
  * are those of Paul 1981. Measured accuracy: docs/accuracy_fixed.md; cost
  * and stack: docs/performance_target.md, docs/footprint.md.
  */
-#ifndef DHMATH_DH_FIXED_H
-#define DHMATH_DH_FIXED_H
+#ifndef DHMATH_FRAME_H
+#define DHMATH_FRAME_H
 
 #include "dhmath/common.h"
 
@@ -192,35 +200,8 @@ void dh_frame_orthonormalize_q(dh_frame_q *F);
  */
 int32_t dh_frame_ortho_error_q(const dh_frame_q *F);
 
-/* ---- conversions (dh_frame_conv.c: these use float) -------------------- */
-
-/**
- * @brief F = T converted to fixed point: rotation entries x 2^30 and
- *        positions x 2^DH_QPOS_FRAC, rounded to nearest (ties away from
- *        zero); exact whenever the float value is representable.
- *
- * Rigidity of the rotation part is NOT checked (the frame holds any 3x3
- * matrix; use dh_frame_ortho_error_q() or dh_mat4_check_rigid_f32()); the
- * bottom row must be exactly 0 0 0 1.
- * @return DH_OK;
- *   DH_ERR_NAN if any of the 16 elements is NaN or infinite (F untouched);
- *   DH_ERR_OVERFLOW if a rotation entry is outside [-2, 2) or a position
- *   outside the dh_qpos range (saturated value written, rest converted);
- *   DH_ERR_NOT_RIGID if the bottom row is not 0 0 0 1 (F fully written
- *   from the top three rows). NaN takes precedence over overflow, overflow
- *   over not-rigid.
- */
-dh_status dh_frame_from_mat4_q(const dh_mat4_f32 *T, dh_frame_q *F);
-
-/**
- * @brief T = F as a float 4x4 (bottom row 0 0 0 1). Each element is the
- *        fixed-point value rounded once to float (round to nearest even);
- *        values with <= 24 significant bits are exact. Cannot fail.
- */
-void dh_frame_to_mat4_q(const dh_frame_q *F, dh_mat4_f32 *T);
-
 #ifdef __cplusplus
 }
 #endif
 
-#endif /* DHMATH_DH_FIXED_H */
+#endif /* DHMATH_FRAME_H */

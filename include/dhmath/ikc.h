@@ -1,4 +1,10 @@
 /* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * Index: the functions of ikc.h by source file (src/ikc/).
+ *   dh_ikc.c    dh_ikc_analyse_f32, dh_ikc_why_str, dh_ikc_f32,
+ *               dh_ikc_nearest_f32
+ *   dh_ikc_q.c  dh_ikc_analyse_q, dh_ikc_q, dh_ikc_nearest_q
+ */
 /**
  * @file ikc.h
  * @brief Closed-form inverse kinematics: every solution, no iteration,
@@ -72,8 +78,8 @@
  * every function within the 256 B stack guard. Method: docs/design.md
  * ("Closed-form inverse kinematics").
  */
-#ifndef DHMATH_DH_IKC_H
-#define DHMATH_DH_IKC_H
+#ifndef DHMATH_IKC_H
+#define DHMATH_IKC_H
 
 #include "dhmath/robot.h"
 
@@ -236,4 +242,4 @@ dh_status dh_ikc_nearest_q(const dh_ikc_sol_q *sol, uint32_t n_sol, const int32_
 }
 #endif
 
-#endif /* DHMATH_DH_IKC_H */
+#endif /* DHMATH_IKC_H */

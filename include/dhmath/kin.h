@@ -1,4 +1,13 @@
 /* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * Index: the functions of kin.h by source file (src/kin/).
+ *   dh_jacobian.c      dh_jacobian_f32, dh_jacobian_tool_f32
+ *   dh_jacobian_q.c    dh_jacobian_q, dh_jacobian_tool_q
+ *   dh_pose_error.c    dh_rot_error_f32, dh_pose_error_f32
+ *   dh_pose_error_q.c  dh_rot_error_q
+ *   dh_ik.c            dh_ik_params_default, dh_ik_f32
+ *   dh_ik_q.c          dh_ik_params_default_q, dh_ik_q
+ */
 /**
  * @file kin.h
  * @brief Geometric Jacobian, orientation error and numerical inverse
@@ -21,8 +30,8 @@
  * rates: docs/accuracy_kin.md; cost and stack: docs/performance_target.md,
  * docs/footprint.md.
  */
-#ifndef DHMATH_DH_KIN_H
-#define DHMATH_DH_KIN_H
+#ifndef DHMATH_KIN_H
+#define DHMATH_KIN_H
 
 #include "dhmath/robot.h"
 
@@ -343,4 +352,4 @@ dh_status dh_ik_q(const dh_robot *r, const dh_frame_q *target, const int32_t *q0
 }
 #endif
 
-#endif /* DHMATH_DH_KIN_H */
+#endif /* DHMATH_KIN_H */

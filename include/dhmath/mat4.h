@@ -1,4 +1,21 @@
 /* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * Index: the functions of mat4.h by source file (src/mat4/).
+ *   dh_mat4.c      dh_mat4_identity_f32, dh_mat4_trans_f32, dh_mat4_rotx_f32,
+ *                  dh_mat4_roty_f32, dh_mat4_rotz_f32, dh_mat4_rot_axis_f32,
+ *                  dh_mat4_scale_f32, dh_mat4_persp_f32,
+ *                  dh_mat4_from_noap_f32, dh_mat4_n_f32, dh_mat4_o_f32,
+ *                  dh_mat4_a_f32, dh_mat4_p_f32, dh_mat4_get_rot_f32,
+ *                  dh_mat4_set_rot_f32, dh_mat4_mul_f32,
+ *                  dh_mat4_mul_affine_f32, dh_mat4_premul_f32,
+ *                  dh_mat4_postmul_f32, dh_mat4_apply_point_f32,
+ *                  dh_mat4_apply_dir_f32, dh_mat4_apply_vec4_f32,
+ *                  dh_mat4_apply_point_h_f32, dh_plane_mul_f32,
+ *                  dh_mat4_apply_points_f32, dh_mat4_isfinite_f32
+ *   dh_mat4_inv.c  dh_mat4_apply_plane_f32, dh_mat4_inv_rigid_f32,
+ *                  dh_mat4_inv_f32, dh_mat4_check_rot_f32,
+ *                  dh_mat4_check_rigid_f32, dh_mat4_inv_auto_f32
+ */
 /**
  * @file mat4.h
  * @brief Float 4x4 homogeneous transforms (Paul 1981, ch. 1): constructors,
@@ -26,8 +43,8 @@
  * docs/design.md ("Float transforms and inverses"). All functions are
  * float-only, reentrant, use no heap and at most 256 bytes of stack.
  */
-#ifndef DHMATH_DH_MAT4_H
-#define DHMATH_DH_MAT4_H
+#ifndef DHMATH_MAT4_H
+#define DHMATH_MAT4_H
 
 #include "dhmath/common.h"
 
@@ -322,36 +339,6 @@ dh_status dh_mat4_check_rigid_f32(const dh_mat4_f32 *T, float tol);
  */
 dh_status dh_mat4_inv_auto_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out);
 
-/* ======================================================================
- * Equivalent angle and axis (Paul 1981, "Equivalent Angle and Axis of Rotation")
- * ==================================================================== */
-
-/**
- * @brief Rotation part R of T -> unit axis k and angle theta in [0, 180]
- *        degrees with R = Rot(k, theta) (eq. 1.73).
- *
- * The robust form of Paul 1981 (eq. 1.76, 1.81, 1.92-1.103;
- * method in docs/design.md): accurate at every angle up to and at 180
- * degrees; 90 and 180 come out exact.
- * Special cases: theta == 0 (d == 0 and trace == 3) returns k = (0, 0, 1),
- * theta = 0. At theta == 180 exactly, k and -k describe the same rotation;
- * the one whose largest-diagonal component is positive is returned.
- * Example 1.1 (eq. 1.104) gives theta = 120 exactly and k = (1, 1, 1) *
- * 0.57735026 (1/sqrt(3) within 1 ulp).
- * Measured (float-rounded Rot(k, theta) as input): |theta error| <=
- * 1.5e-5 deg; |Rot(k_out, theta_out) - R| <= 8.3 * 2^-24 per entry; |k -
- * k_exact| <= 2.4e-7 for theta >= 1 deg (below, |k - k_exact| * theta_rad
- * <= 1.9e-9: the axis is ill defined); ||k| - 1| <= 1.6e-7.
- *
- * @param T transform; only the rotation part is read.
- * @param k output unit axis.
- * @param theta_deg output angle in degrees, 0 <= theta <= 180.
- * @return DH_OK; DH_ERR_NAN if an entry of R is NaN/Inf; DH_ERR_NOT_RIGID if
- *         R is not a rotation within DH_MAT4_AXIS_TOL (see
- *         dh_mat4_check_rot_f32). k and theta untouched on error.
- */
-dh_status dh_mat4_to_axis_angle_f32(const dh_mat4_f32 *T, dh_vec3_f32 *k, float *theta_deg);
-
 /* ---- misc ---- */
 /** @brief 1 if every element of T is finite, else 0. Cannot fail. */
 int dh_mat4_isfinite_f32(const dh_mat4_f32 *T);
@@ -360,4 +347,4 @@ int dh_mat4_isfinite_f32(const dh_mat4_f32 *T);
 }
 #endif
 
-#endif /* DHMATH_DH_MAT4_H */
+#endif /* DHMATH_MAT4_H */

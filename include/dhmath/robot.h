@@ -1,4 +1,16 @@
 /* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * Index: the functions of robot.h by source file (src/robot/).
+ *   dh_robot.c    dh_robot_init, dh_robot_add_joint_f32,
+ *                 dh_robot_set_limits_f32, dh_robot_set_base_f32,
+ *                 dh_robot_set_tool_f32, dh_robot_check_limits_f32,
+ *                 dh_robot_check
+ *   dh_robot_q.c  dh_robot_add_joint_q, dh_robot_set_limits_q,
+ *                 dh_robot_set_base_q, dh_robot_set_tool_q,
+ *                 dh_robot_check_limits_q
+ *   dh_fk_f32.c   dh_link_f32, dh_fk_f32, dh_fk_frames_f32
+ *   dh_fk_q.c     dh_link_q, dh_fk_q, dh_fk_frames_q
+ */
 /**
  * @file robot.h
  * @brief Caller-owned robot description (standard or modified DH) and
@@ -48,8 +60,8 @@
  * No function keeps state; a dh_robot may be shared read-only between
  * threads.
  */
-#ifndef DHMATH_DH_ROBOT_H
-#define DHMATH_DH_ROBOT_H
+#ifndef DHMATH_ROBOT_H
+#define DHMATH_ROBOT_H
 
 #include "dhmath/common.h"
 
@@ -344,4 +356,4 @@ dh_status dh_fk_frames_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames
 }
 #endif
 
-#endif /* DHMATH_DH_ROBOT_H */
+#endif /* DHMATH_ROBOT_H */

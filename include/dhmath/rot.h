@@ -1,4 +1,22 @@
 /* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * Index: the functions of rot.h by source file (src/rot/).
+ *   dh_euler.c       dh_euler_parse, dh_euler_name, dh_euler_to_mat3_f32,
+ *                    dh_mat3_to_euler_f32
+ *   dh_quat.c        dh_quat_to_mat3_f32, dh_mat3_to_quat_f32,
+ *                    dh_quat_normalize_f32, dh_quat_mul_f32, dh_quat_conj_f32,
+ *                    dh_quat_from_axis_angle_f32
+ *   dh_axis_angle.c  dh_mat4_to_axis_angle_f32, dh_axis_angle_to_mat3_f32,
+ *                    dh_mat3_to_axis_angle_f32
+ *   dh_rotvec.c      dh_rotvec_to_mat3_f32, dh_mat3_to_rotvec_f32
+ *   dh_mat3.c        dh_skew_f32, dh_vee_f32, dh_angvel_f32,
+ *                    dh_angvel_body_f32, dh_mat3_check_rot_f32,
+ *                    dh_mat3_orthonormalize_f32
+ *   dh_rot_q.c       dh_frame_to_euler_q, dh_euler_to_frame_q,
+ *                    dh_frame_to_quat_q, dh_quat_to_frame_q,
+ *                    dh_frame_to_axis_angle_q
+ *   dh_frame_conv.c  dh_frame_from_mat4_q, dh_frame_to_mat4_q
+ */
 /**
  * @file rot.h
  * @brief Float rotation conversions: Euler angles (all 12 sequences,
@@ -35,8 +53,8 @@
  * docs/accuracy_rot.md; cost and stack: docs/performance_target.md,
  * docs/footprint.md; methods: docs/design.md ("Rotations").
  */
-#ifndef DHMATH_DH_ROT_H
-#define DHMATH_DH_ROT_H
+#ifndef DHMATH_ROT_H
+#define DHMATH_ROT_H
 
 #include "dhmath/common.h"
 
@@ -270,6 +288,36 @@ void dh_quat_conj_f32(const dh_quat_f32 *q, dh_quat_f32 *out);
 dh_status dh_quat_from_axis_angle_f32(const dh_vec3_f32 *axis, float deg, dh_quat_f32 *q);
 
 /* ======================================================================
+ * Equivalent angle and axis of a 4x4 (Paul 1981, "Equivalent Angle and Axis of Rotation")
+ * ==================================================================== */
+
+/**
+ * @brief Rotation part R of T -> unit axis k and angle theta in [0, 180]
+ *        degrees with R = Rot(k, theta) (eq. 1.73).
+ *
+ * The robust form of Paul 1981 (eq. 1.76, 1.81, 1.92-1.103;
+ * method in docs/design.md): accurate at every angle up to and at 180
+ * degrees; 90 and 180 come out exact.
+ * Special cases: theta == 0 (d == 0 and trace == 3) returns k = (0, 0, 1),
+ * theta = 0. At theta == 180 exactly, k and -k describe the same rotation;
+ * the one whose largest-diagonal component is positive is returned.
+ * Example 1.1 (eq. 1.104) gives theta = 120 exactly and k = (1, 1, 1) *
+ * 0.57735026 (1/sqrt(3) within 1 ulp).
+ * Measured (float-rounded Rot(k, theta) as input): |theta error| <=
+ * 1.5e-5 deg; |Rot(k_out, theta_out) - R| <= 8.3 * 2^-24 per entry; |k -
+ * k_exact| <= 2.4e-7 for theta >= 1 deg (below, |k - k_exact| * theta_rad
+ * <= 1.9e-9: the axis is ill defined); ||k| - 1| <= 1.6e-7.
+ *
+ * @param T transform; only the rotation part is read.
+ * @param k output unit axis.
+ * @param theta_deg output angle in degrees, 0 <= theta <= 180.
+ * @return DH_OK; DH_ERR_NAN if an entry of R is NaN/Inf; DH_ERR_NOT_RIGID if
+ *         R is not a rotation within DH_MAT4_AXIS_TOL (see
+ *         dh_mat4_check_rot_f32). k and theta untouched on error.
+ */
+dh_status dh_mat4_to_axis_angle_f32(const dh_mat4_f32 *T, dh_vec3_f32 *k, float *theta_deg);
+
+/* ======================================================================
  * Angle-axis, rotation vector (log / exp), skew matrices
  * ==================================================================== */
 
@@ -500,8 +548,37 @@ dh_status dh_quat_to_frame_q(const dh_quat_q *q, dh_frame_q *F);
  */
 dh_status dh_frame_to_axis_angle_q(const dh_frame_q *F, dh_dir3_q *axis, dh_q16 *deg);
 
+/* ======================================================================
+ * Fixed <-> float frames (these use float)
+ * ==================================================================== */
+
+/**
+ * @brief F = T converted to fixed point: rotation entries x 2^30 and
+ *        positions x 2^DH_QPOS_FRAC, rounded to nearest (ties away from
+ *        zero); exact whenever the float value is representable.
+ *
+ * Rigidity of the rotation part is NOT checked (the frame holds any 3x3
+ * matrix; use dh_frame_ortho_error_q() or dh_mat4_check_rigid_f32()); the
+ * bottom row must be exactly 0 0 0 1.
+ * @return DH_OK;
+ *   DH_ERR_NAN if any of the 16 elements is NaN or infinite (F untouched);
+ *   DH_ERR_OVERFLOW if a rotation entry is outside [-2, 2) or a position
+ *   outside the dh_qpos range (saturated value written, rest converted);
+ *   DH_ERR_NOT_RIGID if the bottom row is not 0 0 0 1 (F fully written
+ *   from the top three rows). NaN takes precedence over overflow, overflow
+ *   over not-rigid.
+ */
+dh_status dh_frame_from_mat4_q(const dh_mat4_f32 *T, dh_frame_q *F);
+
+/**
+ * @brief T = F as a float 4x4 (bottom row 0 0 0 1). Each element is the
+ *        fixed-point value rounded once to float (round to nearest even);
+ *        values with <= 24 significant bits are exact. Cannot fail.
+ */
+void dh_frame_to_mat4_q(const dh_frame_q *F, dh_mat4_f32 *T);
+
 #ifdef __cplusplus
 }
 #endif
 
-#endif /* DHMATH_DH_ROT_H */
+#endif /* DHMATH_ROT_H */

@@ -1,4 +1,11 @@
 /* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * Index: the functions of trig.h by source file (src/trig/).
+ *   dh_trig_f32.c   dh_sincos_f32, dh_sin_f32, dh_cos_f32
+ *   dh_trig_q.c     dh_sincos_q, dh_sin_q, dh_cos_q
+ *   dh_itrig_f32.c  dh_atan2_deg_f32, dh_asin_deg_f32, dh_acos_deg_f32
+ *   dh_itrig_q.c    dh_atan2_q, dh_asin_q, dh_acos_q
+ */
 /**
  * @file trig.h
  * @brief Sine and cosine of angles in DEGREES through a whole-degree lookup
@@ -15,8 +22,8 @@
  * ("Lookup-table trigonometry"), docs/accuracy_trig.md. Measured cost and
  * stack: docs/performance_target.md, docs/footprint.md.
  */
-#ifndef DHMATH_DH_TRIG_H
-#define DHMATH_DH_TRIG_H
+#ifndef DHMATH_TRIG_H
+#define DHMATH_TRIG_H
 
 #include "dhmath/common.h"
 
@@ -197,4 +204,4 @@ dh_status dh_acos_q(dh_q30 c_q30, dh_q16 *deg_q16);
 }
 #endif
 
-#endif /* DHMATH_DH_TRIG_H */
+#endif /* DHMATH_TRIG_H */

@@ -26,7 +26,7 @@
  *  the FPU instruction through __builtin_sqrtf where the compiler emits it
  *  without a libm call (single-precision hardware square root and
  *  -fno-math-errno, which the library's build sets: __NO_MATH_ERRNO__),
- *  else the integer version dh_sqrtf_ (src/dh_mathf.c). */
+ *  else the integer version dh_sqrtf_ (src/internal/dh_mathf.c). */
 #if (defined(__GNUC__) || defined(__clang__)) && defined(__NO_MATH_ERRNO__) && \
     (DH_MATHF_VSQRT || defined(__SSE_MATH__) || defined(__riscv_fsqrt))
 #define DH_SQRT_INSN 1

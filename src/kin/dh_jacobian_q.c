@@ -221,7 +221,7 @@ DH_INLINE int jacq_body(const dh_robot *r, const int32_t *q, int32_t *J, dh_fram
 }
 
 /* The same for dh_ik_q, which evaluates with F in its workspace
- * (dh_kin_impl.h). */
+ * (kin_impl.h). */
 int dh_kin_jac_q_(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *F)
 {
     return jacq_body(r, q, J, F);

@@ -15,8 +15,8 @@
 #include "robot_impl.h"
 
 /* src converted to F (columns 0..2 rotation Q2.30, column 3 position
- * dh_qpos) and compared with the identity, for set_frame_f32 and
- * check_frame. Returns the dh_f32_to_fix results ORed (2 NaN/Inf, 1 does
+ * dh_qpos) and compared with the identity, for robot_set_frame and
+ * robot_check_frame. Returns the dh_f32_to_fix results ORed (2 NaN/Inf, 1 does
  * not fit; F is complete only when 0); *bad = 1: not the identity, 2:
  * bottom row not 0 0 0 1. Inlined: the setter's code stays as it is. */
 DH_INLINE unsigned frame_to_fix(const dh_mat4_f32 *src, dh_frame_q *F, unsigned *bad)
@@ -37,7 +37,7 @@ DH_INLINE unsigned frame_to_fix(const dh_mat4_f32 *src, dh_frame_q *F, unsigned 
 }
 
 /* which: 0 base, 1 tool; the tool's flag bits are the base's shifted by 1 */
-static dh_status set_frame_f32(dh_robot *r, const dh_mat4_f32 *src, unsigned which)
+static dh_status robot_set_frame(dh_robot *r, const dh_mat4_f32 *src, unsigned which)
 {
     dh_frame_q F;
     unsigned st;  /* dh_f32_to_fix results ORed: 2 NaN/Inf, 1 does not fit */
@@ -66,12 +66,12 @@ static dh_status set_frame_f32(dh_robot *r, const dh_mat4_f32 *src, unsigned whi
 
 dh_status dh_robot_set_base_f32(dh_robot *r, const dh_mat4_f32 *base)
 {
-    return set_frame_f32(r, base, 0u);
+    return robot_set_frame(r, base, 0u);
 }
 
 dh_status dh_robot_set_tool_f32(dh_robot *r, const dh_mat4_f32 *tool)
 {
-    return set_frame_f32(r, tool, 1u);
+    return robot_set_frame(r, tool, 1u);
 }
 
 /* The state the setters leave for the empty description (every slot the
@@ -187,24 +187,24 @@ dh_status dh_robot_check_limits_f32(const dh_robot *r, const float *q)
  *     then DH_ROBOT_F32_NO_JOINT is set). Each of those two bits is set
  *     only when a joint of its kind exists. Limits are independent fields
  *     (dh_robot_set_limits_q sets the fixed ones alone): only finiteness.
- *   base and tool: see check_frame.
+ *   base and tool: see robot_check_frame.
  *   flags: no unknown bit, the summary bits as dh_robot_flags_ makes them. */
 
 /* 0 when the float and fixed base (which 0) or tool (1) and their bits are
- * a state that set_frame_f32 and dh_robot_frame_q_ leave: the float frame
+ * a state that robot_set_frame and dh_robot_frame_q_ leave: the float frame
  * finite with bottom row 0 0 0 1 and its identity bit right; the fixed
  * frame's identity bit (and for the base its small-rows bit) right; and
  * either the fixed frame is the float one converted (no reason bit), or
  * the float one does not fit (Q_NO, last set with _f32), or the fixed one
  * was set alone (F32_NO, not both frames the identity). */
-static DH_NOINLINE unsigned check_frame(const dh_robot *r, unsigned which)
+static DH_NOINLINE unsigned robot_check_frame(const dh_robot *r, unsigned which)
 {
     const dh_mat4_f32 *M = (which != 0u) ? &r->tool : &r->base;
     const dh_frame_q *G = (which != 0u) ? &r->tool_q : &r->base_q;
     const uint32_t f = r->flags >> which;
     dh_frame_q F = { { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } }, { 0, 0, 0 } };
     unsigned e, bad;
-    const unsigned st = frame_to_fix(M, &F, &bad); /* as in set_frame_f32 */
+    const unsigned st = frame_to_fix(M, &F, &bad); /* as in robot_set_frame */
     uint32_t diff = 0u, idq = 0u, mask, want; /* F vs G, G vs the identity */
     if ((st & 2u) != 0u || (bad & 2u) != 0u) return 1u;
     for (e = 0u; e < 12u; e++) {
@@ -231,7 +231,7 @@ static DH_NOINLINE unsigned check_frame(const dh_robot *r, unsigned which)
 
 /* 0 when joint j is a state the setters leave; *need |= the joint reason
  * bit it calls for, *allow |= the one it permits (see above). */
-static DH_NOINLINE unsigned check_joint(const dh_joint *j, uint32_t *need, uint32_t *allow)
+static DH_NOINLINE unsigned robot_check_joint(const dh_joint *j, uint32_t *need, uint32_t *allow)
 {
     float sa, ca;
     dh_q30 sq, cq;
@@ -279,13 +279,13 @@ dh_status dh_robot_check(const dh_robot *r)
     if (r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     for (i = 0u; i < r->n; i++)
         if (r->joint[i].type != DH_JOINT_REVOLUTE && r->joint[i].type != DH_JOINT_PRISMATIC) return DH_ERR_ARG;
-    for (i = 0u; i < r->n; i++) bad |= check_joint(&r->joint[i], &need, &allow);
+    for (i = 0u; i < r->n; i++) bad |= robot_check_joint(&r->joint[i], &need, &allow);
     /* each joint bit set when called for, and only when permitted; no
      * unknown bit; the summary bits as the setters compute them */
     allow |= need;
     if ((r->flags & jbits & ~allow) != 0u || (need & ~r->flags) != 0u ||
         (r->flags & ~known) != 0u || dh_robot_summary_(r->flags) != r->flags)
         bad = 1u;
-    bad |= check_frame(r, 0u) | check_frame(r, 1u);
+    bad |= robot_check_frame(r, 0u) | robot_check_frame(r, 1u);
     return (bad != 0u) ? DH_ERR_INCONSISTENT : DH_OK;
 }

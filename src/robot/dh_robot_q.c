@@ -15,7 +15,7 @@
  * arithmetic. */
 #define DH_F32_BITS_ONE 0x3F800000u
 
-static void put_f32_bits(float *dst, uint32_t bits)
+static void robotq_put_f32_bits(float *dst, uint32_t bits)
 {
     memcpy(dst, &bits, sizeof bits);
 }
@@ -62,14 +62,14 @@ dh_status dh_robot_add_joint_q(dh_robot *r, dh_joint_type type, dh_q16 theta_deg
     j->qmin_q = 1;
     j->qmax_q = 0;
     dh_sincos_q(alpha_deg, &j->sa_q, &j->ca_q);
-    put_f32_bits(&j->a, 0u);
-    put_f32_bits(&j->d, 0u);
-    put_f32_bits(&j->alpha_deg, 0u);
-    put_f32_bits(&j->theta_deg, 0u);
-    put_f32_bits(&j->qmin, DH_F32_BITS_ONE);
-    put_f32_bits(&j->qmax, 0u);
-    put_f32_bits(&j->sa, 0u);
-    put_f32_bits(&j->ca, DH_F32_BITS_ONE);
+    robotq_put_f32_bits(&j->a, 0u);
+    robotq_put_f32_bits(&j->d, 0u);
+    robotq_put_f32_bits(&j->alpha_deg, 0u);
+    robotq_put_f32_bits(&j->theta_deg, 0u);
+    robotq_put_f32_bits(&j->qmin, DH_F32_BITS_ONE);
+    robotq_put_f32_bits(&j->qmax, 0u);
+    robotq_put_f32_bits(&j->sa, 0u);
+    robotq_put_f32_bits(&j->ca, DH_F32_BITS_ONE);
     r->n++;
     dh_robot_flags_(r, 0u, DH_ROBOT_F32_NO_JOINT);
     return DH_OK;

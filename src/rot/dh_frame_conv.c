@@ -9,7 +9,7 @@
 #include "../internal/dh_floatops.h"
 
 /* 2^e as float, 0 <= e <= 30 (exact). */
-static float dh_pow2f(unsigned e)
+static float frame_conv_pow2f(unsigned e)
 {
     return (float)((uint32_t)1 << e);
 }
@@ -20,7 +20,7 @@ static float dh_pow2f(unsigned e)
  * integer (2^31 is a float, so the range test is exact); below, the
  * truncation t fits and x - t is exact.
  */
-static int32_t dh_round_sat(float x, uint32_t *ovf)
+static int32_t frame_conv_round_sat(float x, uint32_t *ovf)
 {
     int32_t t;
     float f;
@@ -36,7 +36,7 @@ static int32_t dh_round_sat(float x, uint32_t *ovf)
 
 dh_status dh_frame_from_mat4_q(const dh_mat4_f32 *T, dh_frame_q *F)
 {
-    const float rs = dh_pow2f(30u), ps = dh_pow2f((unsigned)DH_QPOS_FRAC);
+    const float rs = frame_conv_pow2f(30u), ps = frame_conv_pow2f((unsigned)DH_QPOS_FRAC);
     uint32_t ovf = 0u;
     unsigned i, j;
     DH_ASSERT(F != NULL && T != NULL);
@@ -46,9 +46,9 @@ dh_status dh_frame_from_mat4_q(const dh_mat4_f32 *T, dh_frame_q *F)
     for (j = 0; j < 3u; j++) {
         for (i = 0; i < 3u; i++) {
             /* Q2.30 range is [-2, 2): x * 2^30 must be in [-2^31, 2^31) */
-            F->r[j][i] = dh_round_sat(T->m[j][i] * rs, &ovf);
+            F->r[j][i] = frame_conv_round_sat(T->m[j][i] * rs, &ovf);
         }
-        F->p[j] = dh_round_sat(T->m[3][j] * ps, &ovf);
+        F->p[j] = frame_conv_round_sat(T->m[3][j] * ps, &ovf);
     }
     if (ovf) return DH_ERR_OVERFLOW;
     if (!dh_feq_f32(DH_M4(T, 3, 0), 0.0f) || !dh_feq_f32(DH_M4(T, 3, 1), 0.0f) || !dh_feq_f32(DH_M4(T, 3, 2), 0.0f) ||
@@ -59,7 +59,7 @@ dh_status dh_frame_from_mat4_q(const dh_mat4_f32 *T, dh_frame_q *F)
 
 void dh_frame_to_mat4_q(const dh_frame_q *F, dh_mat4_f32 *T)
 {
-    const float rs = 1.0f / dh_pow2f(30u), ps = 1.0f / dh_pow2f((unsigned)DH_QPOS_FRAC);
+    const float rs = 1.0f / frame_conv_pow2f(30u), ps = 1.0f / frame_conv_pow2f((unsigned)DH_QPOS_FRAC);
     unsigned i, j;
     DH_ASSERT(F != NULL && T != NULL);
     for (j = 0; j < 3u; j++) {

@@ -13,7 +13,7 @@
 #include "rot_impl.h"
 
 /* max |component|, or -1 if a component is NaN/Inf */
-static float dh_q_maxabs(const dh_quat_f32 *q)
+static float quat_maxabs(const dh_quat_f32 *q)
 {
     float m;
     if (!dh_isfinite_f32(q->w) || !dh_isfinite_f32(q->x) || !dh_isfinite_f32(q->y) || !dh_isfinite_f32(q->z)) {
@@ -27,7 +27,7 @@ static float dh_q_maxabs(const dh_quat_f32 *q)
 }
 
 /* Exact power of two bringing a largest component m into [2^-32, 2^32]. */
-static float dh_q_prescale(float m)
+static float quat_prescale(float m)
 {
     float f = 1.0f;
     while (m * f > 4294967296.0f) f *= 2.3283064365386963e-10f;  /* 2^-32, at most 3 times */
@@ -39,10 +39,10 @@ dh_status dh_quat_to_mat3_f32(const dh_quat_f32 *q, dh_mat3_f32 *R)
 {
     float m, f, w, x, y, z, s, xx, yy, zz, xy, xz, yz, wx, wy, wz;
     DH_ASSERT(R != NULL && q != NULL);
-    m = dh_q_maxabs(q);
+    m = quat_maxabs(q);
     if (m < 0.0f) return DH_ERR_NAN;
     if (m < FLT_MIN) return DH_ERR_ZERO_AXIS;
-    f = dh_q_prescale(m);
+    f = quat_prescale(m);
     w = q->w * f;
     x = q->x * f;
     y = q->y * f;
@@ -119,10 +119,10 @@ dh_status dh_quat_normalize_f32(const dh_quat_f32 *q, dh_quat_f32 *out)
 {
     float m, f, w, x, y, z, n;
     DH_ASSERT(out != NULL && q != NULL);
-    m = dh_q_maxabs(q);
+    m = quat_maxabs(q);
     if (m < 0.0f) return DH_ERR_NAN;
     if (m < FLT_MIN) return DH_ERR_ZERO_AXIS;
-    f = dh_q_prescale(m); /* exact: the squares can neither overflow nor underflow */
+    f = quat_prescale(m); /* exact: the squares can neither overflow nor underflow */
     w = q->w * f;
     x = q->x * f;
     y = q->y * f;

@@ -36,10 +36,9 @@
  * term below 1e-11), so the error does not grow towards 0.
  */
 #include "dhmath/rot.h"
-#include "dhmath/kin.h"
 #include "dhmath/frame.h"
 #include "dhmath/trig.h"
-#include "../kin/kin_impl.h"
+#include "rot_impl.h"
 #include "../internal/dh_qmath.h"
 
 /* element (row a, column b) of a frame's rotation */
@@ -65,7 +64,7 @@ static DH_NOINLINE int64_t rotq_dot(const int32_t *ca, const int32_t *cb, int64_
  * above 1.25 fails at once (its column's norm is then far from 1), which
  * bounds every product below. The cross product's two products are below
  * 2^61 each, the determinant's sum below 2^63. */
-static DH_NOINLINE int rotq_ok(const dh_frame_q *F, int32_t tol)
+DH_NOINLINE int dh_rot_ok_q_(const dh_frame_q *F, int32_t tol)
 {
     const int64_t lim = (int64_t)tol << 30;
     int64_t det = 0;
@@ -176,7 +175,7 @@ dh_status dh_frame_to_quat_q(const dh_frame_q *F, dh_quat_q *q)
 {
     int32_t v[4];
     DH_ASSERT(F != NULL && q != NULL);
-    if (!rotq_ok(F, DH_ROT_TOL_Q)) return DH_ERR_NOT_RIGID;
+    if (!dh_rot_ok_q_(F, DH_ROT_TOL_Q)) return DH_ERR_NOT_RIGID;
     rotq_quat(F, v);
     q->w = v[0];
     q->x = v[1];
@@ -264,7 +263,7 @@ dh_status dh_frame_to_axis_angle_q(const dh_frame_q *F, dh_dir3_q *axis, dh_q16 
     int32_t q[4];
     uint32_t vn;
     DH_ASSERT(F != NULL && axis != NULL && deg != NULL);
-    if (!rotq_ok(F, DH_ROT_TOL_Q)) return DH_ERR_NOT_RIGID;
+    if (!dh_rot_ok_q_(F, DH_ROT_TOL_Q)) return DH_ERR_NOT_RIGID;
     rotq_quat(F, q);
     vn = rotq_norm(&q[1], 3u);
     *deg = rotq_angle(F);
@@ -286,7 +285,7 @@ dh_status dh_frame_to_axis_angle_q(const dh_frame_q *F, dh_dir3_q *axis, dh_q16 
 
 /* Rotation vector (Q3.29 rad) of the checked-or-near rotation D (q: 4
  * words of scratch, the caller's: the frame stays small). */
-static DH_NOINLINE void rotq_rotvec(const dh_frame_q *D, dh_dir3_q *w, int32_t *q)
+DH_NOINLINE void dh_rot_vec_q_(const dh_frame_q *D, dh_dir3_q *w, int32_t *q)
 {
     uint32_t vn, f;
     rotq_quat(D, q);
@@ -306,73 +305,6 @@ static DH_NOINLINE void rotq_rotvec(const dh_frame_q *D, dh_dir3_q *w, int32_t *
     w->x = (int32_t)dh_q_rshr(dh_q_mul64(q[1], (int32_t)f), 30u);
     w->y = (int32_t)dh_q_rshr(dh_q_mul64(q[2], (int32_t)f), 30u);
     w->z = (int32_t)dh_q_rshr(dh_q_mul64(q[3], (int32_t)f), 30u);
-}
-
-/* D = Rt R^T, each entry a three-term exact sum rounded once (entries of
- * checked rotations: products below 2^60.1). */
-static DH_NOINLINE void rotq_delta(const dh_frame_q *Ft, const dh_frame_q *F, dh_frame_q *D)
-{
-    unsigned i, j, k;
-    for (i = 0; i < 3u; i++)
-        for (j = 0; j < 3u; j++) {
-            int64_t t = 0;
-            int ovf = 0;
-            for (k = 0; k < 3u; k++) t += dh_q_mul64(RQ(Ft, i, k), RQ(F, j, k));
-            RQ(D, i, j) = dh_q_rnd30(t, &ovf);
-        }
-    D->p[0] = 0;
-    D->p[1] = 0;
-    D->p[2] = 0;
-}
-
-/* 1/6 and 3/40 in Q2.30 */
-#define ROTQ_SIXTH30 178956971
-#define ROTQ_3_40_30 80530637
-
-/* Small angles (sin theta below 1/16, cos theta >= 0: near convergence in
- * dh_ik_q, the common case) without the quaternion: u / 2 = sin(theta) k
- * from the skew part of D, w = (u / 2) theta / sin(theta) by the series
- * 1 + s^2/6 + 3 s^4/40 (truncation below 3e-9). 0 when D is beyond that. */
-static DH_NOINLINE int rotq_small(const dh_frame_q *D, dh_dir3_q *w)
-{
-    int32_t uh[3], q2, q4, f;
-    uint64_t s2 = 0u;
-    unsigned i;
-    uh[0] = (int32_t)(((int64_t)RQ(D, 2, 1) - RQ(D, 1, 2)) >> 1);
-    uh[1] = (int32_t)(((int64_t)RQ(D, 0, 2) - RQ(D, 2, 0)) >> 1);
-    uh[2] = (int32_t)(((int64_t)RQ(D, 1, 0) - RQ(D, 0, 1)) >> 1);
-    if ((int64_t)RQ(D, 0, 0) + RQ(D, 1, 1) + RQ(D, 2, 2) < DH_Q_ONE30) return 0;   /* cos theta < 0 */
-    for (i = 0; i < 3u; i++) s2 += (uint64_t)dh_q_mul64(uh[i], uh[i]);
-    if (s2 >= ((uint64_t)1 << 52)) return 0;   /* sin theta >= 1/16 */
-    q2 = (int32_t)(s2 >> 30);
-    q4 = (int32_t)(dh_q_mul64(q2, q2) >> 30);
-    f = DH_Q_ONE30 + (int32_t)(dh_q_mul64(q2, ROTQ_SIXTH30) >> 30) + (int32_t)(dh_q_mul64(q4, ROTQ_3_40_30) >> 30);
-    w->x = (int32_t)dh_q_rshr(dh_q_mul64(uh[0], f), 31u);
-    w->y = (int32_t)dh_q_rshr(dh_q_mul64(uh[1], f), 31u);
-    w->z = (int32_t)dh_q_rshr(dh_q_mul64(uh[2], f), 31u);
-    return 1;
-}
-
-/* w = a(Ft F^T) with the scratch D (dR) and q (its quaternion). */
-DH_INLINE void rotq_err_core(const dh_frame_q *Ft, const dh_frame_q *F, dh_frame_q *D, dh_dir3_q *w, int32_t *q)
-{
-    rotq_delta(Ft, F, D);
-    if (!rotq_small(D, w)) rotq_rotvec(D, w, q);
-}
-
-void dh_kin_rot_error_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_kin_rot_scratch_q *s)
-{
-    rotq_err_core(F_target, F, &s->D, &s->w, s->q);
-}
-
-dh_status dh_rot_error_q(const dh_frame_q *F_target, const dh_frame_q *F, dh_dir3_q *w)
-{
-    dh_frame_q D;
-    int32_t q[4];
-    DH_ASSERT(F_target != NULL && F != NULL && w != NULL);
-    if (!rotq_ok(F_target, DH_ROT_ERROR_TOL_Q) || !rotq_ok(F, DH_ROT_ERROR_TOL_Q)) return DH_ERR_NOT_RIGID;
-    rotq_err_core(F_target, F, &D, w, q);
-    return DH_OK;
 }
 
 /* ---- Euler angles --------------------------------------------------------- */
@@ -483,7 +415,7 @@ dh_status dh_frame_to_euler_q(const dh_frame_q *F, dh_euler_seq seq, dh_q16 ang_
     dh_q16 dg[3];
     DH_ASSERT(F != NULL && ang_deg != NULL);
     if (u >= (unsigned)DH_EULER_COUNT) return DH_ERR_ARG;
-    if (!rotq_ok(F, DH_ROT_TOL_Q)) return DH_ERR_NOT_RIGID;
+    if (!dh_rot_ok_q_(F, DH_ROT_TOL_Q)) return DH_ERR_NOT_RIGID;
     if (u < 12u) {
         ax = rotq_axes[u];
         rotq_solve(F, ax[0], ax[1], ax[2], 0, dg);

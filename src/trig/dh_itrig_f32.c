@@ -2,7 +2,7 @@
 /*
  * dh_itrig_f32.c - inverse trigonometry in degrees, float (contracts in
  * include/dhmath/trig.h). The arithmetic is the libm-free atan2 of
- * src/dh_mathf.c (one reduction and polynomial for the radian and the
+ * src/internal/dh_mathf.c (one reduction and polynomial for the radian and the
  * degree results; method and error budget there); this file holds the
  * statuses, the clamp of asin/acos arguments just outside [-1, 1] and the
  * range (-180, 180] of atan2.
@@ -40,7 +40,7 @@ dh_status dh_atan2_deg_f32(float y, float x, float *deg)
 
 /* v with |v| in (1, 1 + 2^-21] replaced by +-1; DH_ERR_NAN / DH_ERR_DOMAIN
  * otherwise (v untouched) */
-static dh_status dh_itrig_unit_arg(float *v)
+static dh_status itrig_unit_arg(float *v)
 {
     uint32_t b = dh_f32_bits(*v), m = b & DH_ITRIG_ABS;
     if (m >= DH_ITRIG_INF) return DH_ERR_NAN;
@@ -54,7 +54,7 @@ dh_status dh_asin_deg_f32(float s, float *deg)
     dh_status st;
 
     DH_ASSERT(deg != NULL);
-    st = dh_itrig_unit_arg(&s);
+    st = itrig_unit_arg(&s);
     if (st != DH_OK) return st;
     *deg = dh_asinf_deg_(s, 0u);
     return DH_OK;
@@ -65,7 +65,7 @@ dh_status dh_acos_deg_f32(float c, float *deg)
     dh_status st;
 
     DH_ASSERT(deg != NULL);
-    st = dh_itrig_unit_arg(&c);
+    st = itrig_unit_arg(&c);
     if (st != DH_OK) return st;
     *deg = dh_asinf_deg_(c, 1u);
     return DH_OK;

@@ -48,7 +48,7 @@
 #define DH_ITRIG_STEPS   29u
 
 /* atan2(ay, ax) in Q16.16 degrees, [0, 90 deg], for magnitudes not both 0 */
-static DH_NOINLINE uint32_t dh_itrig_atan2_u(uint32_t ay, uint32_t ax)
+static DH_NOINLINE uint32_t itrigq_atan2_u(uint32_t ay, uint32_t ax)
 {
     /* round(atan(2^-i) * 180/pi * 2^25), i = 1..29 */
     static const uint32_t dh_itrig_atan_tab[DH_ITRIG_STEPS] = {
@@ -94,7 +94,7 @@ static DH_NOINLINE uint32_t dh_itrig_atan2_u(uint32_t ay, uint32_t ax)
 }
 
 /* Q16.16 magnitude <= 180 deg -> int32 with the sign neg */
-static int32_t dh_itrig_signed(uint32_t t, uint32_t neg)
+static int32_t itrigq_signed(uint32_t t, uint32_t neg)
 {
     return neg ? -(int32_t)t : (int32_t)t;
 }
@@ -107,22 +107,22 @@ dh_status dh_atan2_q(int32_t y, int32_t x, dh_q16 *deg_q16)
     ax = dh_q_abs_u32(x);
     ay = dh_q_abs_u32(y);
     if ((ax | ay) == 0u) return DH_ERR_DOMAIN;
-    t = dh_itrig_atan2_u(ay, ax);
+    t = itrigq_atan2_u(ay, ax);
     if (x < 0) t = DH_ITRIG_Q16_180 - t;
     /* y < 0 next to the negative x axis: -180 is outside (-180, 180] */
     if (y < 0 && t == DH_ITRIG_Q16_180) t--;
-    *deg_q16 = dh_itrig_signed(t, (y < 0) ? 1u : 0u);
+    *deg_q16 = itrigq_signed(t, (y < 0) ? 1u : 0u);
     return DH_OK;
 }
 
 /* floor(sqrt(2^60 - a^2)) for a <= 2^30 (dh_q_isqrt62, dh_qmath.h) */
-static uint32_t dh_itrig_cofactor(uint32_t a)
+static uint32_t itrigq_cofactor(uint32_t a)
 {
     return dh_q_isqrt62(((uint64_t)1 << 60) - (uint64_t)dh_q_mul64((int32_t)a, (int32_t)a));
 }
 
 /* |v| clamped to 2^30 when within 1 + 2^-21; 1 (out of domain) otherwise */
-static int dh_itrig_unit_q(int32_t v, uint32_t *a)
+static int itrigq_unit_q(int32_t v, uint32_t *a)
 {
     uint32_t m = dh_q_abs_u32(v);
     if (m > DH_ITRIG_Q30_TOL) return 1;
@@ -135,8 +135,8 @@ dh_status dh_asin_q(dh_q30 s_q30, dh_q16 *deg_q16)
     uint32_t a;
 
     DH_ASSERT(deg_q16 != NULL);
-    if (dh_itrig_unit_q(s_q30, &a) != 0) return DH_ERR_DOMAIN;
-    *deg_q16 = dh_itrig_signed(dh_itrig_atan2_u(a, dh_itrig_cofactor(a)), (s_q30 < 0) ? 1u : 0u);
+    if (itrigq_unit_q(s_q30, &a) != 0) return DH_ERR_DOMAIN;
+    *deg_q16 = itrigq_signed(itrigq_atan2_u(a, itrigq_cofactor(a)), (s_q30 < 0) ? 1u : 0u);
     return DH_OK;
 }
 
@@ -145,8 +145,8 @@ dh_status dh_acos_q(dh_q30 c_q30, dh_q16 *deg_q16)
     uint32_t a, t;
 
     DH_ASSERT(deg_q16 != NULL);
-    if (dh_itrig_unit_q(c_q30, &a) != 0) return DH_ERR_DOMAIN;
-    t = dh_itrig_atan2_u(dh_itrig_cofactor(a), a);
+    if (itrigq_unit_q(c_q30, &a) != 0) return DH_ERR_DOMAIN;
+    t = itrigq_atan2_u(itrigq_cofactor(a), a);
     if (c_q30 < 0) t = DH_ITRIG_Q16_180 - t;
     *deg_q16 = (int32_t)t;
     return DH_OK;

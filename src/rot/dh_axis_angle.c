@@ -1,20 +1,25 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * dh_axis.c - equivalent angle and axis of a rotation (Paul 1981, eq. 1.72-1.103;
- * Example 1.1, eq. 1.104-1.112).
+ * dh_axis_angle.c - equivalent angle and axis of a rotation, both ways:
+ * rotation matrix (3x3 or the rotation of a 4x4) -> angle and axis (Paul
+ * 1981, eq. 1.72-1.103; Example 1.1, eq. 1.104-1.112) and angle and axis
+ * -> rotation matrix (Rodrigues' formula, Paul 1981 eq. 1.70; FloCal,
+ * "Angle Axis").
  */
 #include <float.h>
 #include <math.h>
 
+#include "dhmath/rot.h"
 #include "dhmath/mat4.h"
+#include "dhmath/trig.h"
 #include "../internal/dh_mathf.h"
 #include "../internal/dh_floatops.h"
-
+#include "rot_impl.h"
 
 /* theta = atan2(s2, c2) in degrees for s2 >= 0: dh_atan2f_ only sees
  * angles <= 45 deg, combined as x, 90 - x or 180 - x, so 90 and 180 are
  * exact and the degree conversion errs by < 1/2 ulp of 45. */
-static float dh_atan2_deg(float s2, float c2)
+static float axis_angle_atan2_deg(float s2, float c2)
 {
     float th;
     if (c2 >= s2) {
@@ -45,7 +50,7 @@ dh_status dh_mat4_to_axis_angle_f32(const dh_mat4_f32 *T, dh_vec3_f32 *k, float 
     dz = ny - ox;               /* 2 kz sin(theta), eq. 1.79 */
     c2 = nx + oy + az - 1.0f;   /* 2 cos(theta), eq. 1.76 */
     s2 = dh_sqrtf_(dx * dx + dy * dy + dz * dz); /* 2 sin(theta), eq. 1.81; |d| <= ~2 */
-    th = dh_atan2_deg(s2, c2);
+    th = axis_angle_atan2_deg(s2, c2);
 
     if (c2 >= 0.0f) {
         /* theta <= 90: k = d / |d| (eq. 1.83-1.85), d scaled by its largest
@@ -97,4 +102,51 @@ dh_status dh_mat4_to_axis_angle_f32(const dh_mat4_f32 *T, dh_vec3_f32 *k, float 
     k->z = z / len;
     *theta_deg = th;
     return DH_OK;
+}
+
+dh_status dh_axis_angle_to_mat3_f32(const dh_vec3_f32 *axis, float deg, dh_mat3_f32 *R)
+{
+    float k[3], len, s, c;
+    dh_status st;
+    DH_ASSERT(R != NULL && axis != NULL);
+    if (!dh_isfinite_f32(deg)) return DH_ERR_NAN;
+    k[0] = axis->x;
+    k[1] = axis->y;
+    k[2] = axis->z;
+    st = dh_axis_prescale_f32(k, &len);
+    if (st != DH_OK) return st;
+    st = dh_sincos_f32(deg, &s, &c);
+    if (st != DH_OK) return st;
+    k[0] /= len;
+    k[1] /= len;
+    k[2] /= len;
+    dh_rot_rodrigues_f32(R, k, s, c, 1.0f - c);
+    return DH_OK;
+}
+
+/* Checks R and copies it into T with zero translation (T untouched on
+ * error); out of line: only the 4x4 stays in the caller's frame. */
+static DH_NOINLINE dh_status axis_angle_to_mat4(dh_mat4_f32 *T, const dh_mat3_f32 *R)
+{
+    int c, r;
+    const dh_status st = dh_mat3_check_rot_f32(R, DH_ROT_TOL); /* DH_ERR_NAN or DH_ERR_NOT_RIGID */
+    if (st != DH_OK) return st;
+    for (c = 0; c < 3; c++) {
+        for (r = 0; r < 3; r++) T->m[c][r] = R->m[c][r];
+        T->m[c][3] = 0.0f;
+        T->m[3][c] = 0.0f;
+    }
+    T->m[3][3] = 1.0f;
+    return DH_OK;
+}
+
+dh_status dh_mat3_to_axis_angle_f32(const dh_mat3_f32 *R, dh_vec3_f32 *axis, float *deg)
+{
+    /* the 4x4 version's algorithm: bitwise the same answer */
+    dh_mat4_f32 T;
+    dh_status st;
+    DH_ASSERT(R != NULL && axis != NULL && deg != NULL);
+    st = axis_angle_to_mat4(&T, R);
+    if (st != DH_OK) return st;
+    return dh_mat4_to_axis_angle_f32(&T, axis, deg);
 }

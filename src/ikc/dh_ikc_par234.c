@@ -1,12 +1,11 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * dh_ikc_ur.c - closed-form IK, float: six revolute joints with axes 2, 3,
- * 4 parallel (DH_IKC_PARALLEL_234, Universal Robots) and R-R-P-R with four
- * parallel axes (DH_IKC_SCARA). Family solvers behind the front end
- * dh_ikc.c; contract: src/dh_ikc_impl.h (canonical standard-DH chain,
- * T06 = pre^-1 T post^-1, raw canonical solutions in (-180, 180]).
- * Derivation and thresholds: docs/design.md, "Closed-form inverse
- * kinematics: axes 2-3-4 parallel and SCARA".
+ * dh_ikc_par234.c - closed-form IK, float: six revolute joints with axes
+ * 2, 3, 4 parallel (DH_IKC_PARALLEL_234, Universal Robots), detector and
+ * solver behind the front end dh_ikc.c; interface in ikc_impl.h
+ * (canonical standard-DH chain, T06 = pre^-1 T post^-1, raw canonical
+ * solutions in (-180, 180]). Derivation and thresholds: docs/design.md,
+ * "Closed-form inverse kinematics: axes 2-3-4 parallel and SCARA".
  *
  * Notation: canonical joint i has a_i, d_i, alpha_i (sa_i, ca_i), theta_i;
  * A_i = Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i); x_i, y_i, z_i the axes
@@ -17,34 +16,8 @@
 #include "../internal/dh_floatops.h"
 #include "dhmath/trig.h"
 
-/* |sin| or |cos| of a twist at most this is taken as 0 (dh_sincos_f32
- * gives exact 0 and +-1 at multiples of 90 degrees, so tables with exact
- * twists pass with any margin). */
-#define IKC_TWIST_EPS 1e-6f
-/* A length at most this times the chain's length scale L (sum of |a|, |d|)
- * is taken as 0. */
-#define IKC_LEN_EPS 1e-6f
-/* Position tolerance of the clamps and merges, relative to L: a target
- * this close to the boundary of a branch's workspace is solved on it. */
-#define IKC_POS_REL 4e-7f
-/* Boundary bound (PARALLEL_234 and SCARA): tol = IKC_POS_REL L (4e-7 L;
- * L the sum of the robot's |a| and |d|, 3.6e-7 m for the UR3 in metres).
- * A joint 5 point (SCARA: frame 3 origin) within tol beyond the elbow's
- * reach (stretched or folded) is merged onto it (DH_IKC_SING_ELBOW); one
- * within tol of the shoulder cylinder, inside or outside, is on it
- * (DH_IKC_SING_SHOULDER, one branch); near the cylinder joint 1 is
- * searched for within the same tol of radial distance (par234_search).
- * A solution's FK is thus within about 2 tol of the target (shoulder and
- * elbow, orthogonal in the tests: 1.5e-6 m for the UR10 in metres). The
- * float rounding of the target, T06 and the planar point takes up to about
- * tol / 2 of the band (UR10 stretched): a joint 5 point within tol / 4
- * (1e-7 L) beyond the workspace boundary is solved, one farther than
- * 3 tol (1.2e-6 L) beyond it is DH_ERR_UNREACHABLE (test/test_ikc_ur.c,
- * ikc_ur_beyond: tol / 4 solved, 4 tol refused). */
 /* Wrist (PARALLEL_234): |sin theta5| at most this is singular. */
 #define IKC_WRIST_TOL 1e-6f
-/* SCARA: the tool axis may lean this much (rad) off the joint axes. */
-#define IKC_SCARA_TILT 1e-6f
 /* Boundary search (par234_search): evaluations per shoulder branch and
  * half (the branch's u, then pairs by thirds: the interval shrinks to 4e-5
  * of its width; the merged branch searches two halves); a record whose
@@ -56,51 +29,8 @@
 #define IKC_HOPELESS 2500.0f
 #define IKC_SEARCH_OK 0.5f
 
-DH_INLINE int ikc_zero(float x, float eps)
-{
-    return fabsf(x) <= eps;
-}
-
-DH_INLINE float ikc_sign(float x)
-{
-    return x < 0.0f ? -1.0f : 1.0f;
-}
-
-/* atan2 in degrees, (-180, 180]; (0, 0) gives 0. The radian atan2 (2 ulp)
- * times 180/pi: the degree version's double-float arithmetic needs 80
- * more bytes of stack on Cortex-M0+, more than the budget leaves. */
-DH_INLINE float ikc_atan2(float y, float x)
-{
-    if (dh_feq_f32(y, 0.0f) && dh_feq_f32(x, 0.0f)) return 0.0f;
-    return dh_wrap180_f32(dh_atan2f_(y, x) * DH_RAD2DEG_F);
-}
-
-/* A reference angle (any finite degrees) in (-180, 180]. */
-static float ikc_ref(float x)
-{
-    float v = x;
-    if (!(fabsf(v) <= 540.0f)) {
-        const float t = v * (1.0f / 360.0f);
-        if (fabsf(t) < 8388608.0f) {
-            const int32_t turns = (int32_t)t;
-            v -= 360.0f * (float)turns;
-        }
-        if (!(fabsf(v) <= 540.0f)) v = 0.0f; /* |x| >= 2^23 turns: no fraction left */
-    }
-    return dh_wrap180_f32(v);
-}
-
 /* The direction e_x, for dh_ikc_t06_vec_f32_. */
-static const float ikc_ex[3] = { 1.0f, 0.0f, 0.0f };
-
-/* Sum of |a_i| and |d_i| of the first n canonical joints (length scale). */
-static float ikc_len_scale(const dh_ikc_model_f32 *m, uint32_t n)
-{
-    float L = 0.0f;
-    uint32_t i;
-    for (i = 0; i < n; i++) L += fabsf(m->a[i]) + fabsf(m->d[i]);
-    return L > 0.0f ? L : 1.0f;
-}
+static const float par234_ex[3] = { 1.0f, 0.0f, 0.0f };
 
 /* ======================================================================
  * DH_IKC_PARALLEL_234
@@ -170,19 +100,19 @@ int dh_ikc_detect_par234_f32_(dh_ikc_model_f32 *m)
     float *k = m->k;
     float L, tol;
     if (m->n != 6u || m->prismatic != 0u) return 0;
-    if (!ikc_zero(m->ca[0], IKC_TWIST_EPS) || !ikc_zero(m->sa[1], IKC_TWIST_EPS) ||
-        !ikc_zero(m->sa[2], IKC_TWIST_EPS) || !ikc_zero(m->ca[3], IKC_TWIST_EPS) ||
-        !ikc_zero(m->ca[4], IKC_TWIST_EPS))
+    if (!dh_ikc_zero_f32_(m->ca[0], IKC_TWIST_EPS) || !dh_ikc_zero_f32_(m->sa[1], IKC_TWIST_EPS) ||
+        !dh_ikc_zero_f32_(m->sa[2], IKC_TWIST_EPS) || !dh_ikc_zero_f32_(m->ca[3], IKC_TWIST_EPS) ||
+        !dh_ikc_zero_f32_(m->ca[4], IKC_TWIST_EPS))
         return 0;
-    L = ikc_len_scale(m, 6u);
-    if (!ikc_zero(m->a[4], IKC_LEN_EPS * L) || ikc_zero(m->a[1], IKC_LEN_EPS * L) ||
-        ikc_zero(m->a[2], IKC_LEN_EPS * L))
+    L = dh_ikc_len_scale_f32_(m, 6u);
+    if (!dh_ikc_zero_f32_(m->a[4], IKC_LEN_EPS * L) || dh_ikc_zero_f32_(m->a[1], IKC_LEN_EPS * L) ||
+        dh_ikc_zero_f32_(m->a[2], IKC_LEN_EPS * L))
         return 0;
-    k[P_TAU] = ikc_sign(m->sa[0]);
-    k[P_S2] = ikc_sign(m->ca[1]);
-    k[P_S23] = k[P_S2] * ikc_sign(m->ca[2]);
-    k[P_SB] = k[P_S23] * ikc_sign(m->sa[3]);
-    k[P_W5] = ikc_sign(m->sa[4]);
+    k[P_TAU] = dh_ikc_sign_f32_(m->sa[0]);
+    k[P_S2] = dh_ikc_sign_f32_(m->ca[1]);
+    k[P_S23] = k[P_S2] * dh_ikc_sign_f32_(m->ca[2]);
+    k[P_SB] = k[P_S23] * dh_ikc_sign_f32_(m->sa[3]);
+    k[P_W5] = dh_ikc_sign_f32_(m->sa[4]);
     k[P_H] = m->d[1] + k[P_S2] * m->d[2] + k[P_S23] * m->d[3];
     k[P_D] = 2.0f * m->a[1] * m->a[2];
     k[P_A23] = m->a[1] * m->a[1] + m->a[2] * m->a[2];
@@ -225,7 +155,7 @@ static DH_NOINLINE void par234_shoulder(const dh_ikc_model_f32 *m, const float *
     dh_ikc_sol_f32 *rec = &sol[((f & DH_IKC_SHOULDER_ALT) != 0u) ? 4u : 0u];
     float c1, s1;
     if ((f & DH_IKC_SING_SHOULDER) != 0u && pw[4] <= k[P_AXIS]) {
-        (void)dh_sincos_f32(ikc_ref(dh_ikc_cref_f32_(m, q_ref, 0u)), &s1, &c1);
+        (void)dh_sincos_f32(dh_ikc_ref_f32_(dh_ikc_cref_f32_(m, q_ref, 0u)), &s1, &c1);
     } else {
         const float th = k[P_TAU] * k[P_H], uu = (f & DH_IKC_SHOULDER_ALT) ? -pw[3] : pw[3];
         const float X = uu * pw[0] - th * pw[1], Y = th * pw[0] + uu * pw[1];
@@ -240,7 +170,7 @@ static DH_NOINLINE void par234_shoulder(const dh_ikc_model_f32 *m, const float *
     /* t1 = atan2(s1, c1) is taken by par234_angles (rec[3].q[5] = 1) */
     rec[3].q[5] = 1.0f;
     if ((f & DH_IKC_SING_SHOULDER) != 0u && pw[4] <= k[P_AXIS]) {
-        rec[0].q[0] = ikc_ref(dh_ikc_cref_f32_(m, q_ref, 0u));
+        rec[0].q[0] = dh_ikc_ref_f32_(dh_ikc_cref_f32_(m, q_ref, 0u));
         rec[3].q[5] = 0.0f;
     }
 }
@@ -273,7 +203,7 @@ static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const float *q_r
          * Rz(phi) (c5 c6, -sb w5 s6) = (n11, n21) */
         float s6, c6, gx, gy, nn;
         rec[0].q[1] = c5 < 0.0f ? 180.0f : 0.0f;
-        rec[0].q[2] = ikc_ref(dh_ikc_cref_f32_(m, q_ref, 5u));
+        rec[0].q[2] = dh_ikc_ref_f32_(dh_ikc_cref_f32_(m, q_ref, 5u));
         (void)dh_sincos_f32(rec[0].q[2], &s6, &c6);
         gx = (c5 < 0.0f ? -c6 : c6);
         gy = -sb * w5 * s6;
@@ -322,10 +252,10 @@ static DH_NOINLINE void par234_wrist(const dh_ikc_model_f32 *m, const float *q_r
  * second record. */
 static DH_NOINLINE void par234_angles(dh_ikc_sol_f32 *rec)
 {
-    if (!dh_feq_f32(rec[3].q[5], 0.0f)) rec[0].q[0] = ikc_atan2(rec[3].q[2], rec[3].q[1]);
+    if (!dh_feq_f32(rec[3].q[5], 0.0f)) rec[0].q[0] = dh_ikc_atan2_f32_(rec[3].q[2], rec[3].q[1]);
     if (rec[3].flags == IKC_EMPTY) return;
-    rec[0].q[1] = ikc_atan2(rec[3].q[3], rec[3].q[4]);
-    rec[0].q[2] = ikc_atan2(rec[2].q[1], rec[2].q[2]);
+    rec[0].q[1] = dh_ikc_atan2_f32_(rec[3].q[3], rec[3].q[4]);
+    rec[0].q[2] = dh_ikc_atan2_f32_(rec[2].q[1], rec[2].q[2]);
     rec[2].q[0] = rec[0].q[0];
     rec[2].q[1] = dh_wrap180_f32(-rec[0].q[1]);
     rec[2].q[2] = dh_wrap180_f32(rec[0].q[2] + 180.0f);
@@ -343,7 +273,7 @@ static DH_NOINLINE uint32_t par234_elbow_prep(const dh_ikc_model_f32 *m, dh_ikc_
     /* rec[1].q[1..2] = v: the planar point less the joint 4 and 5 terms */
     rec[1].q[1] = rec[0].q[5] - m->a[3] * rec[0].q[3] - k[P_E5] * rec[0].q[4];
     rec[1].q[2] = rec[1].q[0] - m->a[3] * rec[0].q[4] + k[P_E5] * rec[0].q[3];
-    rec[1].q[0] = ikc_atan2(rec[0].q[4], rec[0].q[3]); /* phi */
+    rec[1].q[0] = dh_ikc_atan2_f32_(rec[0].q[4], rec[0].q[3]); /* phi */
     v2 = rec[1].q[1] * rec[1].q[1] + rec[1].q[2] * rec[1].q[2];
     rec[1].q[4] = (k[P_D] < 0.0f) ? k[P_A23] - v2 : v2 - k[P_A23]; /* K sgn D */
     rec[1].q[3] = m->a[1] * fabsf(k[P_D]) + m->a[2] * rec[1].q[4]; /* A |D| */
@@ -376,9 +306,9 @@ static DH_NOINLINE void par234_elbow(const dh_ikc_model_f32 *m, const float *q_r
     const float s3d = e ? -w[5] : w[5]; /* s3 |D| */
     const float Bd = k[P_S2] * m->a[2] * s3d;
     const float y = w[3] * w[2] - Bd * w[1], x = w[3] * w[1] + Bd * w[2];
-    const float t3 = ikc_atan2(s3d, w[4]);
-    const float t2 = (dh_feq_f32(x, 0.0f) && dh_feq_f32(y, 0.0f)) ? ikc_ref(dh_ikc_cref_f32_(m, q_ref, 1u))
-                                                                   : ikc_atan2(y, x);
+    const float t3 = dh_ikc_atan2_f32_(s3d, w[4]);
+    const float t2 = (dh_feq_f32(x, 0.0f) && dh_feq_f32(y, 0.0f)) ? dh_ikc_ref_f32_(dh_ikc_cref_f32_(m, q_ref, 1u))
+                                                                   : dh_ikc_atan2_f32_(y, x);
     const float t4 = dh_wrap180_f32(k[P_S23] * (w[0] - t2 - k[P_S2] * t3));
     rec[e].q[0] = rec[0].q[0];
     rec[e].q[1] = t2;
@@ -519,7 +449,7 @@ static DH_NOINLINE uint32_t par234_p05(const dh_ikc_model_f32 *m, const dh_mat4_
     const float *k = m->k;
     float rad;
     dh_ikc_t06_vec_f32_(m, T, &k[P_W0], 1.0f, pw);
-    dh_ikc_t06_vec_f32_(m, T, ikc_ex, 0.0f, sol6);
+    dh_ikc_t06_vec_f32_(m, T, par234_ex, 0.0f, sol6);
     dh_ikc_t06_vec_f32_(m, T, &k[P_Z0], 0.0f, &sol6[3]);
     pw[4] = pw[0] * pw[0] + pw[1] * pw[1];
     rad = pw[4] - k[P_H] * k[P_H];
@@ -568,149 +498,4 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, con
         cnt++;
     }
     return cnt;
-}
-
-/* ======================================================================
- * DH_IKC_SCARA
- *
- * Structure detected (canonical SDH): four joints R-R-P-R, alpha1, alpha2,
- * alpha3 in {0, 180} (|sa1|, |sa2|, |sa3| tiny: axes 1..4 parallel),
- * a1 != 0 and |b| != 0 for the effective second link b = (a2 + a3 cos g,
- * a3 sin g), g = s12 theta3 (theta3 the prismatic joint's fixed angle);
- * every d, offset and joint 4's a4, alpha4 free (Cobra 600: a1 = 0.325,
- * a2 = 0.275, alpha2 = 180).
- * Signs s1 = ca1, s12 = ca1 ca2, s123 = s12 ca3. R' = R04 Rx(alpha4)^T =
- * Rz(psi) Rx(alpha1 + alpha2 + alpha3), psi = t1 + s1 t2 + s12 theta3 +
- * s123 t4, so the tool axis z' = sa4 y4 + ca4 z4 must be (0, 0, s123) and
- * psi = atan2(x4y, x4x). The frame 3 origin p3 = p - a4 x4 - d4 z' has
- * z = d1 + s1 d2 + s12 d3 and (x, y) = Rz(t1) (a1 + |b| cos eta, |b| sin eta)
- * with eta = s1 t2 + delta, delta = atan2(by, bx): 2R with K = |p3xy|^2 -
- * a1^2 - |b|^2, D = 2 a1 |b|, eta = atan2(+-sqrt(D^2 - K^2), K sgn D).
- * ====================================================================== */
-
-/* m->k layout, SCARA */
-enum {
-    S_S1 = 0, /* ca1 (+-1) */
-    S_S12,    /* ca1 ca2 (+-1) */
-    S_S123,   /* ca1 ca2 ca3 (+-1) */
-    S_LB,     /* |b| */
-    S_DELTA,  /* atan2(by, bx), degrees */
-    S_D,      /* 2 a1 |b| */
-    S_A1B,    /* a1^2 + |b|^2 */
-    S_Z0,     /* d1 + s1 d2 */
-    S_G,      /* s12 theta3 (fixed angle of the prismatic joint), degrees */
-    S_ELB,    /* elbow band: (4 |D| tol)^2, compared with (D^2 - K^2)^2 / |p3xy|^2 */
-    S_AXIS,   /* (position tolerance)^2: p3 on axis 1 */
-    S_SUM2,   /* (|a1| + |b|)^2 */
-    S_DIF2,   /* (|a1| - |b|)^2 */
-    S_ZD0,    /* 0         } the direction (0, sa4, ca4) that T06 maps to the tool axis z' */
-    S_ZDS,    /* sa4       } */
-    S_ZDC,    /* ca4       } */
-    S_P0,     /* -a4       } the point that T06 maps to the frame 3 origin */
-    S_P1,     /* -d4 sa4   } */
-    S_P2      /* -d4 ca4   } */
-};
-
-int dh_ikc_detect_scara_f32_(dh_ikc_model_f32 *m)
-{
-    float *k = m->k;
-    float L, sg, cg, bx, by, tol;
-    if (m->n != 4u || m->prismatic != 0x4u) return 0;
-    if (!ikc_zero(m->sa[0], IKC_TWIST_EPS) || !ikc_zero(m->sa[1], IKC_TWIST_EPS) ||
-        !ikc_zero(m->sa[2], IKC_TWIST_EPS))
-        return 0;
-    L = ikc_len_scale(m, 4u);
-    k[S_S1] = ikc_sign(m->ca[0]);
-    k[S_S12] = k[S_S1] * ikc_sign(m->ca[1]);
-    k[S_S123] = k[S_S12] * ikc_sign(m->ca[2]);
-    k[S_G] = dh_wrap180_f32(k[S_S12] * ikc_ref(m->off[2]));
-    (void)dh_sincos_f32(k[S_G], &sg, &cg);
-    bx = m->a[1] + m->a[2] * cg;
-    by = m->a[2] * sg;
-    k[S_LB] = dh_sqrt_f32(bx * bx + by * by);
-    if (ikc_zero(m->a[0], IKC_LEN_EPS * L) || ikc_zero(k[S_LB], IKC_LEN_EPS * L)) return 0;
-    k[S_DELTA] = ikc_atan2(by, bx);
-    k[S_D] = 2.0f * m->a[0] * k[S_LB];
-    k[S_A1B] = m->a[0] * m->a[0] + k[S_LB] * k[S_LB];
-    k[S_Z0] = m->d[0] + k[S_S1] * m->d[1];
-    tol = IKC_POS_REL * L;
-    k[S_ELB] = (4.0f * fabsf(k[S_D]) * tol) * (4.0f * fabsf(k[S_D]) * tol);
-    k[S_AXIS] = tol * tol;
-    k[S_SUM2] = (fabsf(m->a[0]) + k[S_LB]) * (fabsf(m->a[0]) + k[S_LB]);
-    k[S_DIF2] = (fabsf(m->a[0]) - k[S_LB]) * (fabsf(m->a[0]) - k[S_LB]);
-    k[S_ZD0] = 0.0f;
-    k[S_ZDS] = m->sa[3];
-    k[S_ZDC] = m->ca[3];
-    k[S_P0] = -m->a[3];
-    k[S_P1] = -(m->d[3] * m->sa[3]);
-    k[S_P2] = -(m->d[3] * m->ca[3]);
-    m->kind = DH_IKC_SCARA;
-    return 1;
-}
-
-/* x4, z' (sol[2].q) and the frame 3 origin p3 (sol[3].q[0..2]) of T06:
- * slots 2 and 3 never hold a SCARA solution. */
-static DH_NOINLINE void scara_vecs(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol)
-{
-    dh_ikc_t06_vec_f32_(m, T, ikc_ex, 0.0f, sol[2].q);
-    dh_ikc_t06_vec_f32_(m, T, &m->k[S_ZD0], 0.0f, &sol[2].q[3]);
-    dh_ikc_t06_vec_f32_(m, T, &m->k[S_P0], 1.0f, sol[3].q);
-}
-
-/* The solutions from the vectors of scara_vecs (a separate frame, so that
- * the transform's chain and the atan2 chain do not stack). */
-static DH_NOINLINE uint32_t scara_solve(const dh_ikc_model_f32 *m, const float *q_ref, dh_ikc_sol_f32 *sol)
-{
-    const float *k = m->k;
-    const float D = k[S_D], lb = k[S_LB];
-    const float *xv = sol[2].q;
-    const float zx = sol[2].q[3], zy = sol[2].q[4], zz = sol[2].q[5];
-    const float px = sol[3].q[0], py = sol[3].q[1], pz = sol[3].q[2];
-    const float p2 = px * px + py * py;
-    const float K = p2 - k[S_A1B];
-    const float Kd = D < 0.0f ? -K : K;
-    const float Ad = m->a[0] * fabsf(D) + lb * Kd; /* (a1 + |b| cos eta) |D| */
-    const float psi = ikc_atan2(xv[1], xv[0]);
-    const float d3 = k[S_S12] * (pz - k[S_Z0]);
-    float rad = (k[S_SUM2] - p2) * (p2 - k[S_DIF2]), r; /* D^2 - K^2, as for PARALLEL_234 */
-    uint32_t e, ne = 2u, flags = 0u;
-    if (zx * zx + zy * zy > IKC_SCARA_TILT * IKC_SCARA_TILT || zz * k[S_S123] <= 0.0f) return 0u;
-    if (rad * rad <= k[S_ELB] * p2) {
-        rad = 0.0f;
-        ne = 1u;
-        flags = DH_IKC_SING_ELBOW;
-    } else if (rad < 0.0f) {
-        return 0u;
-    } else {
-        /* two elbow branches */
-    }
-    r = dh_sqrt_f32(rad);
-    for (e = 0u; e < ne; e++) {
-        const float sd = e ? -r : r; /* sin eta |D| */
-        const float Bd = lb * sd;
-        const float eta = ikc_atan2(sd, Kd);
-        uint32_t f = flags | (e ? DH_IKC_ELBOW_ALT : 0u);
-        float t1;
-        if (p2 <= k[S_AXIS]) {
-            t1 = ikc_ref(dh_ikc_cref_f32_(m, q_ref, 0u));
-            f |= DH_IKC_SING_SHOULDER;
-        } else {
-            t1 = ikc_atan2(Ad * py - Bd * px, Ad * px + Bd * py);
-        }
-        sol[e].q[0] = t1;
-        sol[e].q[1] = dh_wrap180_f32(k[S_S1] * dh_wrap180_f32(eta - k[S_DELTA]));
-        sol[e].q[2] = d3;
-        sol[e].q[3] = dh_wrap180_f32(k[S_S123] * dh_wrap180_f32(dh_wrap180_f32(psi - t1) - (eta - k[S_DELTA]) - k[S_G]));
-        sol[e].q[4] = 0.0f;
-        sol[e].q[5] = 0.0f;
-        sol[e].flags = f;
-    }
-    return ne;
-}
-
-uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
-                           dh_ikc_sol_f32 *sol)
-{
-    scara_vecs(m, T, sol);
-    return scara_solve(m, q_ref, sol);
 }
