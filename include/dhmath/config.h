@@ -69,7 +69,7 @@
 #endif
 
 /**
- * DH_USE_INTRINSICS: 1 = use the Cortex-M intrinsics of port/dh_port.h
+ * DH_USE_INTRINSICS: 1 = use the Cortex-M intrinsics of src/internal/dh_port.h
  * (SSAT, SMULL/SMLAL, CLZ) when the compiler targets an ARM core that has
  * them; 0 = always the plain C fallback. Default 1. Range 0..1.
  */

@@ -29,9 +29,6 @@
 #define IKC_HOPELESS 2500.0f
 #define IKC_SEARCH_OK 0.5f
 
-/* The direction e_x, for dh_ikc_t06_vec_f32_. */
-static const float par234_ex[3] = { 1.0f, 0.0f, 0.0f };
-
 /* ======================================================================
  * DH_IKC_PARALLEL_234
  *
@@ -446,6 +443,7 @@ static DH_NOINLINE uint32_t par234_search(const dh_ikc_model_f32 *m, uint32_t ns
  * unreachable, 1: merged or on axis 1). */
 static DH_NOINLINE uint32_t par234_p05(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, float *pw, float *sol6)
 {
+    static const float par234_ex[3] = { 1.0f, 0.0f, 0.0f }; /* the direction e_x */
     const float *k = m->k;
     float rad;
     dh_ikc_t06_vec_f32_(m, T, &k[P_W0], 1.0f, pw);

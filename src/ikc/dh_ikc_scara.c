@@ -19,9 +19,6 @@
 /* SCARA: the tool axis may lean this much (rad) off the joint axes. */
 #define IKC_SCARA_TILT 1e-6f
 
-/* The direction e_x, for dh_ikc_t06_vec_f32_. */
-static const float scara_ex[3] = { 1.0f, 0.0f, 0.0f };
-
 /* ======================================================================
  * DH_IKC_SCARA
  *
@@ -104,6 +101,7 @@ int dh_ikc_detect_scara_f32_(dh_ikc_model_f32 *m)
  * slots 2 and 3 never hold a SCARA solution. */
 static DH_NOINLINE void scara_vecs(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol)
 {
+    static const float scara_ex[3] = { 1.0f, 0.0f, 0.0f }; /* the direction e_x */
     dh_ikc_t06_vec_f32_(m, T, scara_ex, 0.0f, sol[2].q);
     dh_ikc_t06_vec_f32_(m, T, &m->k[S_ZD0], 0.0f, &sol[2].q[3]);
     dh_ikc_t06_vec_f32_(m, T, &m->k[S_P0], 1.0f, sol[3].q);

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * kin_impl.h - PRIVATE blocks shared by dh_jacobian.c and dh_ik.c (not
- * installed). dh_ik_f32 calls them one after the other on its workspace
+ * kin_impl.h - PRIVATE blocks of the kinematics family (src/kin/, not
+ * installed): the Jacobian and orientation-error blocks that the IK solvers
+ * call. dh_ik_f32 calls them one after the other on its workspace
  * to stay within the 256 B stack budget; the Jacobian pass calls no
  * trigonometry (sin/cos precomputed) and only libgcc below it.
  * F (12 floats): the 3x4 part of a frame by columns n, o, a, p,
@@ -31,7 +32,7 @@ int dh_kin_rot_ok_f32_(const float *c0, const float *c1, const float *c2);
  * frame F supplied by the caller; nonzero when an entry saturated. */
 int dh_kin_jac_q_(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *F);
 
-/* dh_rot_error_q's body (dh_rot_q.c) without its rigidity checks (the
+/* dh_rot_error_q's body (dh_pose_error_q.c) without its rigidity checks (the
  * caller's): s->w = a(Rt R^T), Q3.29 rad; s->D (dR) and s->q scratch, in
  * the caller's memory (dh_ik_q keeps them off the stack: 19 words). */
 typedef struct {

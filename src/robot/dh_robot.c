@@ -19,7 +19,7 @@
  * robot_check_frame. Returns the dh_f32_to_fix results ORed (2 NaN/Inf, 1 does
  * not fit; F is complete only when 0); *bad = 1: not the identity, 2:
  * bottom row not 0 0 0 1. Inlined: the setter's code stays as it is. */
-DH_INLINE unsigned frame_to_fix(const dh_mat4_f32 *src, dh_frame_q *F, unsigned *bad)
+DH_INLINE unsigned robot_frame_to_fix(const dh_mat4_f32 *src, dh_frame_q *F, unsigned *bad)
 {
     int32_t spare; /* the bottom row, converted only for its finiteness */
     unsigned e;
@@ -44,7 +44,7 @@ static dh_status robot_set_frame(dh_robot *r, const dh_mat4_f32 *src, unsigned w
     unsigned bad; /* 1: not the identity, 2: bottom row not 0 0 0 1 */
     DH_ASSERT(r != NULL);
     DH_ASSERT(src != NULL);
-    st = frame_to_fix(src, &F, &bad);
+    st = robot_frame_to_fix(src, &F, &bad);
     if (st & 2u) return DH_ERR_NAN;
     if (bad & 2u) return DH_ERR_NOT_RIGID;
     {
@@ -204,7 +204,7 @@ static DH_NOINLINE unsigned robot_check_frame(const dh_robot *r, unsigned which)
     const uint32_t f = r->flags >> which;
     dh_frame_q F = { { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } }, { 0, 0, 0 } };
     unsigned e, bad;
-    const unsigned st = frame_to_fix(M, &F, &bad); /* as in robot_set_frame */
+    const unsigned st = robot_frame_to_fix(M, &F, &bad); /* as in robot_set_frame */
     uint32_t diff = 0u, idq = 0u, mask, want; /* F vs G, G vs the identity */
     if ((st & 2u) != 0u || (bad & 2u) != 0u) return 1u;
     for (e = 0u; e < 12u; e++) {

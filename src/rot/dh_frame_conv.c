@@ -6,6 +6,7 @@
  * rounding to an integer is done with exact float operations.
  */
 #include "dhmath/frame.h"
+#include "dhmath/rot.h"
 #include "../internal/dh_floatops.h"
 
 /* 2^e as float, 0 <= e <= 30 (exact). */

@@ -2,9 +2,10 @@
 /*
  * dh_rot_q.c - rotation conversions of a fixed-point rotation (Q2.30):
  * Euler angles (all 24 sequences), unit quaternion (Shepperd 1978),
- * angle and axis, the orientation error a(dR) and back. Integer only: no
- * float, no libm, no 64-bit division (32-bit divisions and 32x32->64
- * products only). Contracts in include/dhmath/rot.h and kin.h.
+ * angle and axis, and the rotation vector that the orientation error
+ * (src/kin/dh_pose_error_q.c) takes. Integer only: no float, no libm, no
+ * 64-bit division (32-bit divisions and 32x32->64 products only).
+ * Contracts in include/dhmath/rot.h.
  *
  * Every extraction first checks its input as the float path does
  * (dh_mat3_check_rot_f32 with DH_ROT_TOL, or DH_ROT_ERROR_TOL for the

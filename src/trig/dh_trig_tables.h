@@ -22,7 +22,7 @@ extern const int32_t dh_trig_sin_q30[DH_TRIG_TAB_LEN];
 
 /*
  * a * b as uint64 (exact). Where a 64-bit product is a library call
- * (DH_PORT_USE_SPLIT16, port/dh_port.h: ARMv6-M's __aeabi_lmul) it is
+ * (DH_PORT_USE_SPLIT16, src/internal/dh_port.h: ARMv6-M's __aeabi_lmul) it is
  * formed from four 16x16->32 products, a b = ah bh 2^32 + (ah bl + al bh)
  * 2^16 + al bl; no partial sum wraps (mid and mid2 are at most
  * (2^16 - 1)^2 + 2^16 - 1), and the helper stays out of line (inlined, its
