@@ -18,8 +18,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "dhmath/dh_fixed.h"
-#include "dhmath/dh_mat4.h"
+#include "dhmath/frame.h"
+#include "dhmath/mat4.h"
 
 /* ---- term table ---------------------------------------------------- */
 

@@ -23,7 +23,7 @@
 
 #include <stddef.h>
 
-#include "dhmath/dh_common.h"
+#include "dhmath/common.h"
 
 /** Deepest nesting of inv(...) accepted. */
 #define DH_EXPR_MAX_DEPTH 16

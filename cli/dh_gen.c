@@ -172,7 +172,7 @@ void dh_gen_write(FILE *out, const dh_robot *r, const char *name, const char *sr
         put_joint(out, j, "\n");
         fputs(",\n", out);
     }
-    for (i = r->n; i < 32u; i++) /* 32: the largest DH_MAX_JOINTS (dh_config.h) */
+    for (i = r->n; i < 32u; i++) /* 32: the largest DH_MAX_JOINTS (config.h) */
         fprintf(out, "#if DH_MAX_JOINTS > %u\n        [%u] = %s_EMPTY_JOINT,\n#endif\n", i, i, name);
     fputs("    },\n", out);
     put_mat(out, "base", &r->base);

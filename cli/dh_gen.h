@@ -10,7 +10,7 @@
 
 #include <stdio.h>
 
-#include "dhmath/dh_robot.h"
+#include "dhmath/robot.h"
 
 /** Longest NAME accepted (C99 guarantees 63 significant initial characters
  *  of an internal identifier). */

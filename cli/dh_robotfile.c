@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "dh_expr.h"
-#include "dhmath/dh_mat4.h"
+#include "dhmath/mat4.h"
 
 typedef struct {
     const char *name;

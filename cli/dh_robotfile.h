@@ -27,7 +27,7 @@
 
 #include <stddef.h>
 
-#include "dhmath/dh_robot.h"
+#include "dhmath/robot.h"
 
 /** Longest base/tool EXPR kept (bytes). */
 #define DH_RF_MAX_EXPR 512

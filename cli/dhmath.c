@@ -17,12 +17,12 @@
 #include "dh_expr.h"
 #include "dh_gen.h"
 #include "dh_robotfile.h"
-#include "dhmath/dh_fixed.h"
-#include "dhmath/dh_ikc.h"
-#include "dhmath/dh_kin.h"
-#include "dhmath/dh_mat4.h"
-#include "dhmath/dh_robot.h"
-#include "dhmath/dh_rot.h"
+#include "dhmath/frame.h"
+#include "dhmath/ikc.h"
+#include "dhmath/kin.h"
+#include "dhmath/mat4.h"
+#include "dhmath/robot.h"
+#include "dhmath/rot.h"
 #include "dhmath/dhmath.h"
 
 #define EXIT_USAGE 2

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * fuzz_compose_q.c - fixed-point frame arithmetic (dh_fixed.h) against an
+ * fuzz_compose_q.c - fixed-point frame arithmetic (frame.h) against an
  * exact 128-bit integer reference computed here.
  *
  * Invariants:
@@ -27,8 +27,8 @@
  */
 #include <math.h>
 
-#include "dhmath/dh_fixed.h"
-#include "dhmath/dh_trig.h"
+#include "dhmath/frame.h"
+#include "dhmath/trig.h"
 #include "fuzz_common.h"
 
 __extension__ typedef __int128 i128;

@@ -30,7 +30,7 @@
 #include <math.h>
 
 #include "dh_expr.h"
-#include "dhmath/dh_fixed.h"
+#include "dhmath/frame.h"
 #include "fuzz_common.h"
 
 static void check_error(const dh_expr_error *e, size_t len, const char *what)

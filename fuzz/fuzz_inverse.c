@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fuzz_inverse.c - general 4x4 inverse dh_mat4_inv_f32 and the automatic
- * choice dh_mat4_inv_auto_f32 (dh_mat4.h) on arbitrary and structured
+ * choice dh_mat4_inv_auto_f32 (mat4.h) on arbitrary and structured
  * matrices.
  *
  * Invariants:
@@ -40,7 +40,7 @@
 #include <float.h>
 #include <math.h>
 
-#include "dhmath/dh_mat4.h"
+#include "dhmath/mat4.h"
 #include "fuzz_common.h"
 
 #define U24 5.9604644775390625e-8

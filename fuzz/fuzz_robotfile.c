@@ -27,7 +27,7 @@
 #include <math.h>
 
 #include "dh_robotfile.h"
-#include "dhmath/dh_robot.h"
+#include "dhmath/robot.h"
 #include "fuzz_common.h"
 
 static void check_msg(const char *msg, size_t cap, const char *what)
@@ -123,7 +123,7 @@ static void fk_fixed(const dh_robotfile *rf, const dh_robot *r1, dh_status sf, c
     FZ_CHECK(sq == DH_OK || sq == DH_ERR_OVERFLOW || (sq == DH_ERR_UNAVAILABLE && (r1->flags & DH_ROBOT_HAS_Q) == 0u),
              "dh_fk_q status %d", (int)sq);
     /* dh_robot_set_base_q/_tool_q make the float frames of r1 stale
-     * (dh_robot.h), so its float path is unavailable when a non-identity
+     * (robot.h), so its float path is unavailable when a non-identity
      * base or tool was set; otherwise it behaves as r0's */
     s1 = dh_fk_f32(r1, q, &T1);
     FZ_CHECK(s1 == sf || (s1 == DH_ERR_UNAVAILABLE && (rf->base.present || rf->tool.present)),

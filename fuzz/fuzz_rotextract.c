@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * fuzz_rotextract.c - rotation extraction (dh_rot.h, dh_mat4.h):
+ * fuzz_rotextract.c - rotation extraction (rot.h, mat4.h):
  * angle-axis, Euler (all 24 sequences and invalid ones), quaternion,
  * rotation vector, and re-orthonormalisation.
  *
@@ -34,14 +34,14 @@
 #include <float.h>
 #include <math.h>
 
-#include "dhmath/dh_mat4.h"
-#include "dhmath/dh_rot.h"
+#include "dhmath/mat4.h"
+#include "dhmath/rot.h"
 #include "fuzz_common.h"
 
 #define FZ_PI 3.14159265358979323846
 #define FZ_REPRO_EXACT 5e-7
 #define FZ_REPRO_K 3.0
-/* Euler angles: the contract of dh_mat3_to_euler_f32 (dh_rot.h) is 6e-7 per
+/* Euler angles: the contract of dh_mat3_to_euler_f32 (rot.h) is 6e-7 per
  * entry for exact rotations (three angles rounded to float degrees; measured
  * 5.1e-7); the fuzzer found yzy (-5.4e-8, 179.999985, 0), 1.5e-5 deg from
  * the pole, at 5.0e-7 + rounding, above the generic 5e-7 */
@@ -77,7 +77,7 @@ static void elem_d(m3d R, unsigned axis, double deg)
     rot_axis_d(R, e[axis][0], e[axis][1], e[axis][2], t);
 }
 
-/* rotation of Euler angles of sequence seq, in double (dh_rot.h table) */
+/* rotation of Euler angles of sequence seq, in double (rot.h table) */
 static void euler_d(m3d R, unsigned seq, const float ang[3])
 {
     static const char *const names[12] = { "XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX",

@@ -2,7 +2,7 @@
 /*
  * fuzz_sincos.c - dh_sincos_f32 / dh_sincos_q on arbitrary angles.
  *
- * Invariants (contracts in include/dhmath/dh_trig.h):
+ * Invariants (contracts in include/dhmath/trig.h):
  *  float: NaN/Inf -> DH_ERR_NAN with both outputs NaN; otherwise DH_OK,
  *         |s|, |c| <= 1, within the proven bound 6.2e-8 of double sin/cos
  *         of the exactly reduced angle (fmod is exact in double),
@@ -16,7 +16,7 @@
  */
 #include <math.h>
 
-#include "dhmath/dh_trig.h"
+#include "dhmath/trig.h"
 #include "fuzz_common.h"
 
 #define FZ_F32_BOUND 6.2e-8

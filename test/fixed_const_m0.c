@@ -1,13 +1,13 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fixed_const_m0.c - compiled for Cortex-M0+ (soft float) by
- * test/fixed_const_m0.cmake: the constant macros of dh_fixed.h in static
+ * test/fixed_const_m0.cmake: the constant macros of frame.h in static
  * initialisers and in code must not reference any routine (no soft-float
  * __aeabi_f or __aeabi_d call: the compiler folds them). With
  * -DDH_CONST_OUT_OF_RANGE it must not compile (a literal outside the
  * Q16.16 range in a static initialiser).
  */
-#include "dhmath/dh_fixed.h"
+#include "dhmath/frame.h"
 
 int32_t dh_const_probe(unsigned i);
 

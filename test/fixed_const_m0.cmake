@@ -2,7 +2,7 @@
 # fixed_const_m0.cmake - ctest script (cmake -P): test/fixed_const_m0.c,
 # which uses DH_Q16 / DH_Q30 / DH_QPOS, compiled for Cortex-M0+ (soft
 # float) at -O0 and -Os references no routine (nm -u lists nothing but the
-# configuration guard's symbols of dh_config.h: no soft-float call), and the out-of-range variant does not compile (even
+# configuration guard's symbols of config.h: no soft-float call), and the out-of-range variant does not compile (even
 # without -Werror: the initialiser is not a constant).
 # Variables: CC (arm-none-eabi-gcc), NM, SRC_DIR (project root), OUT (dir).
 set(base -mcpu=cortex-m0plus -mthumb -mfloat-abi=soft -std=c99 -pedantic -Wall -Wextra

@@ -49,7 +49,7 @@ add_test(NAME dht_iter_div_rejects_0
 add_test(NAME dht_seed_printed
   COMMAND sh -c "DHT_SEED=0xDEADbeef \"$1\" | grep -q 'seed 0xdeadbeef (DHT_SEED)'" sh $<TARGET_FILE:test_status>)
 
-# The constant macros of dh_fixed.h emit no float code on Cortex-M0+ and
+# The constant macros of frame.h emit no float code on Cortex-M0+ and
 # reject an out-of-range literal (test/fixed_const_m0.cmake).
 find_program(FIXED_CONST_ARM_GCC arm-none-eabi-gcc)
 find_program(FIXED_CONST_ARM_NM arm-none-eabi-nm)

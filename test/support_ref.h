@@ -13,7 +13,7 @@
 #ifndef SUPPORT_REF_H
 #define SUPPORT_REF_H
 
-#include "dhmath/dh_common.h"
+#include "dhmath/common.h"
 
 #define DHR_PI 3.14159265358979323846
 

@@ -20,7 +20,7 @@
 #ifndef SUPPORT_ROBOTS_H
 #define SUPPORT_ROBOTS_H
 
-#include "dhmath/dh_robot.h"
+#include "dhmath/robot.h"
 
 #define DHS_MAX_JOINTS 8
 

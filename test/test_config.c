@@ -2,8 +2,8 @@
 /* Configuration sanity: the settings the library was built with are in
  * range and, when a config header is given, it was really included. */
 #include "dht.h"
-#include "dhmath/dh_common.h"
-#include "dhmath/dh_robot.h"
+#include "dhmath/common.h"
+#include "dhmath/robot.h"
 
 /* The Q constants have the values the formats define (a wrong one would
  * silently scale every fixed-point result). */
@@ -16,7 +16,7 @@ static void q_constants(void)
 
 static void config_header_honoured(void)
 {
-    /* dh_config.h includes DH_CONFIG_HEADER when the build sets one (the
+    /* config.h includes DH_CONFIG_HEADER when the build sets one (the
      * confighdr variant of tools/check_variants.sh); the test header
      * defines DH_TEST_CONFIG_HEADER_SEEN. Without a config header the macro
      * must not leak in from anywhere else. */

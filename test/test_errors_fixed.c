@@ -1,12 +1,12 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_errors_fixed.c - bad input to the fixed-point frames
- * (docs/errors.md, section dh_fixed.h).
+ * (docs/errors.md, section frame.h).
  *
  * Overflow in composition, inversion and point/direction transforms must
  * saturate the affected entries to INT32_MIN / INT32_MAX with the right
  * sign, compute every other entry normally and return DH_ERR_OVERFLOW.
- * The reference is the formula of dh_fixed.h evaluated in double: each
+ * The reference is the formula of frame.h evaluated in double: each
  * output is a sum of at most three int32 x int32 products (< 2^62 each,
  * rounded to double with an error below 2^10) plus a translation, divided
  * by 2^30, so the double value is within 2^-18 LSB of the exact one. An
@@ -19,9 +19,10 @@
 
 #include "dht.h"
 #include "support_canary.h"
-#include "dhmath/dh_fixed.h"
-#include "dhmath/dh_mat4.h"
-#include "dhmath/dh_trig.h"
+#include "dhmath/frame.h"
+#include "dhmath/mat4.h"
+#include "dhmath/trig.h"
+#include "dhmath/rot.h"
 
 #define TWO30 1073741824.0
 #define TWO31 2147483648.0

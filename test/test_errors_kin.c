@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_errors_kin.c - bad input to the Jacobian, the orientation / pose
- * errors and the inverse kinematics (docs/errors.md, section dh_kin.h).
+ * errors and the inverse kinematics (docs/errors.md, section kin.h).
  *
  * Outputs are pre-filled with a canary and checked untouched, or equal to
  * the documented value. IK results on unreachable targets are judged with
@@ -14,9 +14,9 @@
 #include "dht.h"
 #include "support_canary.h"
 #include "support_robots.h"
-#include "dhmath/dh_kin.h"
-#include "dhmath/dh_mat4.h"
-#include "dhmath/dh_fixed.h"
+#include "dhmath/kin.h"
+#include "dhmath/mat4.h"
+#include "dhmath/frame.h"
 
 
 

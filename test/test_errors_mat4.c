@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_errors_mat4.c - bad input to the float 4x4 transforms
- * (docs/errors.md, section dh_mat4.h).
+ * (docs/errors.md, section mat4.h).
  *
  * Every error case pre-fills the outputs with a canary byte pattern and
- * checks that they are untouched afterwards (the contract of dh_mat4.h:
+ * checks that they are untouched afterwards (the contract of mat4.h:
  * "on a non-OK status every output is left untouched"). Accepted inputs at
  * the edges are checked against double references computed here or in
  * test/support_ref.c (never against the code under test).
@@ -16,7 +16,8 @@
 #include "dht.h"
 #include "support_canary.h"
 #include "support_ref.h"
-#include "dhmath/dh_mat4.h"
+#include "dhmath/mat4.h"
+#include "dhmath/rot.h"
 
 #define U24 5.9604644775390625e-8
 
@@ -315,7 +316,7 @@ static void mat4_inv_bad(void)
         UNTOUCHED(X);
     }
     /* well conditioned (cond <= ~1e3) at any scale: accepted and accurate,
-     * |X - T^-1| <= 5.5 cond 2^-24 max|T^-1| (dh_mat4.h) */
+     * |X - T^-1| <= 5.5 cond 2^-24 max|T^-1| (mat4.h) */
     for (it = 0; it < DHT_ITER(2000u); it++) {
         const int sc = (int)(dht_rand_u32() % 121u) - 60;
         dhr_mat4 D, Di;
@@ -667,7 +668,7 @@ static void mat4_no_status_ieee_and_alias(void)
  * results: the NaN/Inf test of check_rot/check_rigid takes precedence over
  * the orthonormality and determinant tests; the affine test accepts -0 in
  * the bottom row (== 0); Rot(x|y|z, deg) is bitwise Rot(k, deg) about the
- * coordinate axis k of any positive length (dh_mat4.h); apply_point and
+ * coordinate axis k of any positive length (mat4.h); apply_point and
  * apply_dir never let entries they do not read (the bottom row, and p for
  * a direction) into the result.
  */

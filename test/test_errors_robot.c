@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_errors_robot.c - bad input to the robot description and forward
- * kinematics (docs/errors.md, section dh_robot.h).
+ * kinematics (docs/errors.md, section robot.h).
  *
  * Robots with 0 joints, a full robot, a description whose n field is beyond
  * DH_MAX_JOINTS (a corrupted or foreign struct), unknown enum values,
@@ -18,9 +18,9 @@
 #include "dht.h"
 #include "support_canary.h"
 #include "support_robots.h"
-#include "dhmath/dh_fixed.h"
-#include "dhmath/dh_mat4.h"
-#include "dhmath/dh_robot.h"
+#include "dhmath/frame.h"
+#include "dhmath/mat4.h"
+#include "dhmath/robot.h"
 
 
 /* NaN, +Inf, -Inf and a negative NaN payload variant */
@@ -550,7 +550,7 @@ static void robot_init_every_field(void)
 }
 
 /* init after every reason bit was set and every identity / small-rows bit
- * cleared: the exact flag word before (the rules of dh_robot.h), then an
+ * cleared: the exact flag word before (the rules of robot.h), then an
  * empty description again (the DH_SMALL init builds every flag from the
  * setters, starting from none) */
 static void robot_init_after_every_reason(void)

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * test_errors_rot.c - bad input to the rotation conversions of dh_rot.h
- * (docs/errors.md, section dh_rot.h): Euler angles, quaternions,
+ * test_errors_rot.c - bad input to the rotation conversions of rot.h
+ * (docs/errors.md, section rot.h): Euler angles, quaternions,
  * angle-axis, rotation vector, angular velocity, checks and
  * re-orthonormalisation.
  *
@@ -17,7 +17,7 @@
 
 #include "dht.h"
 #include "support_canary.h"
-#include "dhmath/dh_rot.h"
+#include "dhmath/rot.h"
 
 #define PI_D 3.14159265358979323846
 

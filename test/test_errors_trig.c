@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_errors_trig.c - bad input to the lookup-table trigonometry
- * (docs/errors.md, section dh_trig.h).
+ * (docs/errors.md, section trig.h).
  *
  * Float: NaN (quiet, signalling, negative), +-Inf -> DH_ERR_NAN with both
  * outputs set to a quiet NaN; finite angles of any magnitude up to FLT_MAX
@@ -15,13 +15,13 @@
 #include <string.h>
 
 #include "dht.h"
-#include "dhmath/dh_trig.h"
+#include "dhmath/trig.h"
 
 #define PI_D 3.14159265358979323846
 
-/* proven bound of dh_sincos_f32 (dh_trig.h): 6.2e-8 */
+/* proven bound of dh_sincos_f32 (trig.h): 6.2e-8 */
 #define TRIG_F32_TOL 6.2e-8
-/* bound of dh_sincos_q (dh_trig.h): 1.05 LSB of Q2.30 */
+/* bound of dh_sincos_q (trig.h): 1.05 LSB of Q2.30 */
 #define TRIG_Q_TOL_LSB 1.05
 
 static int is_quiet_nan(float f)

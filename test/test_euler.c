@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * test_euler.c - Euler angles <-> rotation matrix (dh_rot.h), all 24
+ * test_euler.c - Euler angles <-> rotation matrix (rot.h), all 24
  * sequences, against double-precision references built here from the
  * scipy definitions with libm (never from the code under test).
  */
@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "dht.h"
-#include "dhmath/dh_rot.h"
+#include "dhmath/rot.h"
 
 #define PI_D 3.14159265358979323846
 

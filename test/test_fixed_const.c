@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * test_fixed_const.c - the compile-time constant macros of dh_fixed.h
+ * test_fixed_const.c - the compile-time constant macros of frame.h
  * (DH_Q16, DH_Q30, DH_QPOS) in static const initialisers.
  *
  * Expected values: the exact binary value of each double literal times
@@ -18,7 +18,7 @@
 #include <stdint.h>
 
 #include "dht.h"
-#include "dhmath/dh_fixed.h"
+#include "dhmath/frame.h"
 
 #define Q16_LIST(X) \
     X(90.5, 5931008) X(-90.5, -5931008) X(0.0, 0) X(1.0, 65536) X(-1.0, -65536) \

@@ -8,9 +8,9 @@
  */
 #include "dht.h"
 #include "support_robots.h"
-#include "dhmath/dh_robot.h"
-#include "dhmath/dh_mat4.h"
-#include "dhmath/dh_trig.h"
+#include "dhmath/robot.h"
+#include "dhmath/mat4.h"
+#include "dhmath/trig.h"
 
 #include <math.h>
 #include <string.h>

@@ -10,9 +10,9 @@
  */
 #include "dht.h"
 #include "support_robots.h"
-#include "dhmath/dh_robot.h"
-#include "dhmath/dh_fixed.h"
-#include "dhmath/dh_trig.h"
+#include "dhmath/robot.h"
+#include "dhmath/frame.h"
+#include "dhmath/trig.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * test_frame_q.c - fixed-point rigid frames (dh_fixed.h).
+ * test_frame_q.c - fixed-point rigid frames (frame.h).
  *
  * References are computed here in double precision from the INTEGER inputs
  * (never from results of the code under test), so "within 0.5 LSB of the
@@ -9,8 +9,9 @@
  * tolerance. Measured maxima are printed with dht_printf.
  */
 #include "dht.h"
-#include "dhmath/dh_fixed.h"
-#include "dhmath/dh_trig.h"
+#include "dhmath/frame.h"
+#include "dhmath/trig.h"
+#include "dhmath/rot.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

@@ -10,8 +10,8 @@
  */
 #include "dht.h"
 #include "support_robots.h"
-#include "dhmath/dh_kin.h"
-#include "dhmath/dh_mat4.h"
+#include "dhmath/kin.h"
+#include "dhmath/mat4.h"
 
 #include <float.h>
 #include <math.h>

@@ -10,8 +10,8 @@
  */
 #include "dht.h"
 #include "support_robots.h"
-#include "dhmath/dh_kin.h"
-#include "dhmath/dh_fixed.h"
+#include "dhmath/kin.h"
+#include "dhmath/frame.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -14,9 +14,9 @@
  */
 #include "dht.h"
 #include "support_robots.h"
-#include "dhmath/dh_ikc.h"
-#include "dhmath/dh_kin.h"
-#include "dhmath/dh_mat4.h"
+#include "dhmath/ikc.h"
+#include "dhmath/kin.h"
+#include "dhmath/mat4.h"
 
 #include <float.h>
 #include <math.h>
@@ -180,7 +180,7 @@ static int near_limit_f32(const dh_robot *r, const double *q)
 
 /* dh_ikc_f32 on the target T of the in-limit configuration q. A joint of
  * q within TOL_GEN of its limit, or q within the singular bands of
- * dh_ikc.h (the elbow's 5e-7 L holds the Puma's configurations within
+ * ikc.h (the elbow's 5e-7 L holds the Puma's configurations within
  * 0.13 deg of stretched; sin^2 < 1e-5 covers them), where the solution's
  * joints differ from q's by more than a rounding: the solution may lie
  * beyond a limit; DH_ERR_LIMIT then solves again keeping out-of-limit
@@ -462,7 +462,7 @@ static void ikc_shoulder_singular(void)
  * joint 3 around the fold and +-0.03 deg of joint 2 around u = 0 is solved.
  * A target moved radially beyond the stretched elbow: by 0.9 of 2.5e-7 L
  * it is solved on the boundary (flagged), by 1.1 of 1.5e-6 L it is
- * unreachable (the bounds of dh_ikc.h; L = 1.1 m). */
+ * unreachable (the bounds of ikc.h; L = 1.1 m). */
 static void ikc_elbow_boundary(void)
 {
     const dhs_robot *d = &dhs_puma560_m;

@@ -10,8 +10,8 @@
  */
 #include "dht.h"
 #include "support_robots.h"
-#include "dhmath/dh_ikc.h"
-#include "dhmath/dh_fixed.h"
+#include "dhmath/ikc.h"
+#include "dhmath/frame.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -599,7 +599,7 @@ static void boundary_folded(void)
 
 /* A target moved radially beyond the stretched elbow: by 0.9 of 2^(5 - F)
  * units it is solved, by 1.1 of 2^(8 - F) units it is unreachable (the
- * bounds of dh_ikc.h; F = DH_QPOS_FRAC, the robot in units of 2^(F - 16)
+ * bounds of ikc.h; F = DH_QPOS_FRAC, the robot in units of 2^(F - 16)
  * mm). Moved by 0.9 of 2^(5 - F) beyond the folded elbow it is solved; farther in that direction is not beyond by as much: the Puma's
  * folded wrist centre lies within |delta| of the shoulder cylinder, where
  * joint 1 turns such a point back to within 2 LSB of the workspace. */

@@ -11,9 +11,9 @@
  */
 #include "dht.h"
 #include "support_robots.h"
-#include "dhmath/dh_ikc.h"
-#include "dhmath/dh_kin.h"
-#include "dhmath/dh_mat4.h"
+#include "dhmath/ikc.h"
+#include "dhmath/kin.h"
+#include "dhmath/mat4.h"
 
 #include <math.h>
 #include <stdio.h>

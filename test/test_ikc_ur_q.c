@@ -13,8 +13,8 @@
  */
 #include "dht.h"
 #include "support_robots.h"
-#include "dhmath/dh_ikc.h"
-#include "dhmath/dh_fixed.h"
+#include "dhmath/ikc.h"
+#include "dhmath/frame.h"
 
 #include <math.h>
 #include <stdio.h>

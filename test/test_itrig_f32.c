@@ -19,7 +19,7 @@
 #include <string.h>
 
 #include "dht.h"
-#include "dhmath/dh_trig.h"
+#include "dhmath/trig.h"
 
 #define R_LD 57.295779513082320876798154814105170332L
 

@@ -11,10 +11,10 @@
  */
 #include "dht.h"
 #include "support_robots.h"
-#include "dhmath/dh_kin.h"
-#include "dhmath/dh_mat4.h"
-#include "../src/dh_kin_impl.h"
-#include "../src/dh_mathf.h"
+#include "dhmath/kin.h"
+#include "dhmath/mat4.h"
+#include "../src/kin/kin_impl.h"
+#include "../src/internal/dh_mathf.h"
 
 #include <float.h>
 #include <math.h>

@@ -15,8 +15,8 @@
 #include "dht.h"
 #include "support_robots.h"
 #include "support_canary.h"
-#include "dhmath/dh_kin.h"
-#include "dhmath/dh_fixed.h"
+#include "dhmath/kin.h"
+#include "dhmath/frame.h"
 
 #include <math.h>
 #include <string.h>

@@ -19,7 +19,7 @@
 
 #include "dht.h"
 #include "support_ref.h"
-#include "dhmath/dh_mat4.h"
+#include "dhmath/mat4.h"
 
 #define U24 5.9604644775390625e-8
 
@@ -267,7 +267,7 @@ static void underflowing_inverse_reported(void)
 /* the contract of dh_mat4_inv_f32 over the class it names                */
 /* ---------------------------------------------------------------------- */
 
-/* Error bound of the contract (dh_mat4.h): bal_err <= INV_C cond u (its
+/* Error bound of the contract (mat4.h): bal_err <= INV_C cond u (its
  * balanced measure, 2^-147 absolute allowed for underflow) */
 #define INV_C 5.0
 
@@ -314,7 +314,7 @@ static int is_affine_ref(const dh_mat4_f32 *T)
 }
 
 /*
- * The balanced condition number as dh_mat4.h defines it, from its
+ * The balanced condition number as mat4.h defines it, from its
  * definition (double): M = T, or for an affine T blockdiag(R, 1) with R
  * scaled by the power of two that brings max|R_ij| into [1, 2);
  * B = E M E^-1, E = diag(1, 1, 1, g), g from A0 = M scaled (in float, by

@@ -14,7 +14,8 @@
 
 #include "dht.h"
 #include "support_ref.h"
-#include "dhmath/dh_mat4.h"
+#include "dhmath/mat4.h"
+#include "dhmath/rot.h"
 
 #define U24 5.9604644775390625e-8 /* 2^-24 */
 

@@ -15,7 +15,8 @@
 #include <string.h>
 
 #include "dht.h"
-#include "dhmath/dh_mat4.h"
+#include "dhmath/mat4.h"
+#include "dhmath/rot.h"
 
 /* ---- helpers ----------------------------------------------------------- */
 

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * test_quat.c - quaternions (dh_rot.h) against double-precision references
+ * test_quat.c - quaternions (rot.h) against double-precision references
  * computed here from the textbook formulas with libm.
  */
 #include <float.h>
@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "dht.h"
-#include "dhmath/dh_rot.h"
+#include "dhmath/rot.h"
 
 #define PI_D 3.14159265358979323846
 

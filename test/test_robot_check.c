@@ -14,7 +14,7 @@
 
 #include "dht.h"
 #include "support_robots.h"
-#include "dhmath/dh_robot.h"
+#include "dhmath/robot.h"
 
 /* The first three joints of the Puma 560 (examples/robots/puma560.dh) as a
  * firmware author would write them: DH table, limits and fixed copies

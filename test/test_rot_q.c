@@ -4,14 +4,14 @@
  * angle and axis, orientation error) against independent double
  * references: elementary rotations and Rodrigues' formula in double with
  * libm, the quaternion of a known axis and angle. The limits are the float
- * path's documented bounds (include/dhmath/dh_rot.h, dh_kin.h) and, away
+ * path's documented bounds (include/dhmath/rot.h, kin.h) and, away
  * from the Euler poles, 2e-5 deg.
  */
 #include "dht.h"
 #include "support_canary.h"
-#include "dhmath/dh_rot.h"
-#include "dhmath/dh_kin.h"
-#include "dhmath/dh_fixed.h"
+#include "dhmath/rot.h"
+#include "dhmath/kin.h"
+#include "dhmath/frame.h"
 
 #include <math.h>
 #include <string.h>
@@ -47,7 +47,7 @@ static void m_elem(m3 R, int ax, double deg)
     R[u][w] = -s;
 }
 
-/* R of the Euler angles (deg) of sequence seq, from its name (dh_rot.h). */
+/* R of the Euler angles (deg) of sequence seq, from its name (rot.h). */
 static void m_euler(m3 R, unsigned seq, const double *a)
 {
     const char *nm = dh_euler_name((dh_euler_seq)seq);

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_rotvec.c - angle-axis, rotation vector (log / exp), skew / vee,
- * angular velocity, rotation check and re-orthonormalisation (dh_rot.h),
+ * angular velocity, rotation check and re-orthonormalisation (rot.h),
  * against double-precision references computed here with libm.
  */
 #include <float.h>
@@ -9,9 +9,9 @@
 #include <string.h>
 
 #include "dht.h"
-#include "dhmath/dh_rot.h"
-#include "dhmath/dh_mat4.h"
-#include "dhmath/dh_trig.h"
+#include "dhmath/rot.h"
+#include "dhmath/mat4.h"
+#include "dhmath/trig.h"
 
 #define PI_D 3.14159265358979323846
 

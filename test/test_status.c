@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 #include "dht.h"
-#include "dhmath/dh_common.h"
+#include "dhmath/common.h"
 #include <string.h>
 
 static void status_strings_are_distinct(void)

@@ -20,7 +20,7 @@
 #include <string.h>
 
 #include "dht.h"
-#include "dhmath/dh_trig.h"
+#include "dhmath/trig.h"
 
 #define PI_D 3.14159265358979323846
 #define DHT_F32_TOL 6.2e-8

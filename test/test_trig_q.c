@@ -22,7 +22,7 @@
 #include <stdint.h>
 
 #include "dht.h"
-#include "dhmath/dh_trig.h"
+#include "dhmath/trig.h"
 
 #define PI_D 3.14159265358979323846
 #define Q30 1073741824.0

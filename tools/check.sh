@@ -46,7 +46,7 @@ target_suite() { # builddir, toolchain file, extra cmake args...
   ctest --test-dir "$dir" -j"$JOBS" --output-on-failure
 }
 
-# DH_SMALL (size-first code, dh_config.h) on the two cores it is for, at
+# DH_SMALL (size-first code, config.h) on the two cores it is for, at
 # the -Os it is measured with (docs/footprint.md)
 small_suite() {
   target_suite build/m4f-small cortex-m4f.cmake -DDH_SMALL=ON -DCMAKE_BUILD_TYPE=MinSizeRel &&

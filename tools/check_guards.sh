@@ -47,10 +47,11 @@ configure_build() { # cpu opt [small] -> builddir
         "-DCMAKE_C_FLAGS=-fstack-usage -fcallgraph-info=su" >/dev/null || return 1
   # call graphs of sources that no longer exist would skew the stack check
   local f
-  for f in "$dir"/CMakeFiles/dhmath.dir/src/*.c.ci; do
+  for f in "$dir"/CMakeFiles/dhmath.dir/src/*.c.ci "$dir"/CMakeFiles/dhmath.dir/src/*/*.c.ci; do
     [ -e "$f" ] || continue
-    f=$(basename "$f" .ci)
-    [ -e "$ROOT/src/$f" ] || rm -f "$dir/CMakeFiles/dhmath.dir/src/$f".*
+    f=${f#"$dir"/CMakeFiles/dhmath.dir/}
+    f=${f%.ci}
+    [ -e "$ROOT/$f" ] || rm -f "$dir/CMakeFiles/dhmath.dir/$f".*
   done
   cmake --build "$dir" -j"$JOBS" --target dhmath >/dev/null 2>"$dir.err" || { cat "$dir.err"; return 1; }
   echo "$dir"
@@ -85,7 +86,7 @@ for cpu in m0plus m4f; do
   for opt in Os O2; do
     check_config $cpu $opt
   done
-  # the size-first build (DH_SMALL, dh_config.h) is meant for -Os
+  # the size-first build (DH_SMALL, config.h) is meant for -Os
   check_config $cpu Os small
 done
 

@@ -125,7 +125,7 @@ ISSUE5_LIMIT = 8192
 ISSUE5_CONFIG = "M4F -Os DH_SMALL"
 ISSUE5_DEFAULT = "M4F -Os"
 # headers that hold the size-goal core, and more (profile (a))
-CORE_HEADERS = ("dh_trig.h", "dh_mat4.h", "dh_fixed.h", "dh_robot.h")
+CORE_HEADERS = ("trig.h", "mat4.h", "frame.h", "robot.h")
 # The size-goal core, function by function: "trig, transforms, inverses, DH
 # FK, no IK", each in float and fixed point. Transforms: every constructor
 # of Paul 1981's transforms (translation, rotation about x/y/z and about any
@@ -190,7 +190,7 @@ def profile_defs(decl):
     """[(key, title, [functions])] of the firmware profiles."""
     allf = [f for h in sorted(decl) for f in decl[h]]
     core = [f for h in CORE_HEADERS for f in decl.get(h, [])]
-    robot = decl.get("dh_robot.h", [])
+    robot = decl.get("robot.h", [])
     setup_f = [f for f in robot if f == "dh_robot_init" or (f.startswith("dh_robot_") and f.endswith("_f32"))]
     setup_q = [f for f in robot if f == "dh_robot_init" or (f.startswith("dh_robot_") and f.endswith("_q"))]
     fk_f = setup_f + ["dh_fk_f32", "dh_mat4_inv_rigid_f32", "dh_mat4_mul_affine_f32",
@@ -205,7 +205,7 @@ def profile_defs(decl):
         ("c", "(c) fixed FK firmware", fk_q),
         ("bc", "(b+c) float + fixed FK firmware: the functions of (b) and (c) together",
          fk_f + [f for f in fk_q if f not in fk_f]),
-        ("d", "(d) trig only: every function of dh_trig.h", list(decl.get("dh_trig.h", []))),
+        ("d", "(d) trig only: every function of trig.h", list(decl.get("trig.h", []))),
         ("e", "(e) everything: every function of every public header", allf),
     ]
 
@@ -388,7 +388,7 @@ def profile_sections(data, labels):
              "fixed-point inverses; the robot description with base and tool, link "
              "matrices and FK to the end and to every frame; each in float and in "
              "fixed point. It is measured with the library built for size: `-Os` and "
-             "`DH_SMALL=1` (`include/dhmath/dh_config.h`: the same contracts from loops "
+             "`DH_SMALL=1` (`include/dhmath/config.h`: the same contracts from loops "
              "and one general code path instead of unrolled code and fast paths; "
              "`docs/design.md`)." % len(k["funcs"]))
     S.append("")
@@ -461,8 +461,8 @@ def profile_sections(data, labels):
     L.append("In (a), not in (k): %s." % ", ".join(
         "`%s`" % f for f in P[ref]["a"]["funcs"] if f not in P[ref]["k"]["funcs"]))
     L.append("")
-    L.append("Not in (a): `dh_status_str` (`dh_common.h`; %d bytes linked alone on %s, "
-             "see the per-function table), `dh_kin.h` (Jacobian, IK) and `dh_rot.h` "
+    L.append("Not in (a): `dh_status_str` (`common.h`; %d bytes linked alone on %s, "
+             "see the per-function table), `kin.h` (Jacobian, IK) and `rot.h` "
              "(Euler angles, quaternions, rotation vectors)." % (
                  data[ref]["linked"].get("dh_status_str", 0), ref))
     missing = sorted(set(f for l in labels for f in data[l]["profile_missing"]))
@@ -579,7 +579,7 @@ def main(argv):
     for label, bdir, flags in configs:
         L.append("* **%s**: `%s`" % (label, " ".join(flags)))
     L.append("")
-    L.append("Library configuration: the defaults of `include/dhmath/dh_config.h` "
+    L.append("Library configuration: the defaults of `include/dhmath/config.h` "
              "(DH_MAX_JOINTS 8, DH_QPOS_FRAC 16, DH_CHECK_ARGS 1, DH_USE_INTRINSICS 1, "
              "DH_SMALL 0), except `DH_SMALL=1` in the configurations named DH_SMALL.")
     L.append("")

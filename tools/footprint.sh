@@ -53,10 +53,11 @@ build() { # cpu opt [small]
   cmake -S "$SRC" -B "$dir" -DCMAKE_TOOLCHAIN_FILE="$SRC/port/cortex-$cpu.cmake" \
         -DCMAKE_BUILD_TYPE=$bt -DDH_BUILD_TESTS=OFF $extra \
         "-DCMAKE_C_FLAGS=-fstack-usage -fcallgraph-info=su" >/dev/null
-  for f in "$dir"/CMakeFiles/dhmath.dir/src/*.c.ci; do
+  for f in "$dir"/CMakeFiles/dhmath.dir/src/*.c.ci "$dir"/CMakeFiles/dhmath.dir/src/*/*.c.ci; do
     [ -e "$f" ] || continue
-    f=$(basename "$f" .ci)
-    [ -e "$SRC/src/$f" ] || rm -f "$dir/CMakeFiles/dhmath.dir/src/$f".*
+    f=${f#"$dir"/CMakeFiles/dhmath.dir/}
+    f=${f%.ci}
+    [ -e "$SRC/$f" ] || rm -f "$dir/CMakeFiles/dhmath.dir/$f".*
   done
   cmake --build "$dir" -j"$JOBS" --target dhmath >/dev/null
 }

@@ -32,7 +32,7 @@ TARGETS=${FUZZ_TARGETS:-$(cd fuzz && ls fuzz_*.c | sed 's/\.c$//' | tr '\n' ' ')
 mkdir -p "$B/obj" "$B/bin" "$B/logs" "$B/artifacts"
 
 SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-CFLAGS="-std=c99 -O1 -g $SAN -Wall -Wextra -I$ROOT/include -I$ROOT/src -I$ROOT/port -I$ROOT/cli"
+CFLAGS="-std=c99 -O1 -g $SAN -Wall -Wextra -I$ROOT/include -I$ROOT/src -I$ROOT/cli"
 # -Werror only for the fuzz targets: the library's warning policy is
 # enforced by its own CMake build and by tools/static.sh; a clang-only
 # warning there must not stop the fuzzing.
@@ -46,7 +46,7 @@ newest_h=$(find include port src cli fuzz -name '*.h' -newer "$B/stamp" 2>/dev/n
 [ -f "$B/stamp" ] || newest_h=force
 objs=()
 pids=()
-for f in src/*.c cli/dh_expr.c cli/dh_robotfile.c; do
+for f in src/*/*.c cli/dh_expr.c cli/dh_robotfile.c; do
   o="$B/obj/$(echo "$f" | tr '/' '_').o"
   objs+=("$o")
   if [ -n "$newest_h" ] || [ ! -f "$o" ] || [ "$f" -nt "$o" ] || [ "$0" -nt "$o" ]; then

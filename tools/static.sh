@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # tools/static.sh - static-analysis gate of the library (src/, the public
-# headers and port/dh_port.h):
+# headers and src/internal/dh_port.h):
 #   1. cppcheck with the MISRA C:2012 addon plus cppcheck's warning, style,
 #      performance and portability checks;
 #   2. clang-tidy with .clang-tidy (bugprone, CERT, clang static analyzer,
@@ -82,7 +82,7 @@ t1=$(date +%s)
 # ---- clang-tidy (configuration: .clang-tidy)
 tidy_log="$B/clang-tidy.txt"
 : >"$tidy_log"
-ls src/*.c | xargs -P "$JOBS" -n 2 "$CLANG_TIDY" -p "$B" --quiet --extra-arg=-Wcomma \
+ls src/*/*.c | xargs -P "$JOBS" -n 2 "$CLANG_TIDY" -p "$B" --quiet --extra-arg=-Wcomma \
   >>"$tidy_log" 2>"$B/clang-tidy.err" || true
 ntidy=$(grep -c -E '^/.*:[0-9]+:[0-9]+: (warning|error): ' "$tidy_log" || true)
 if [ "$ntidy" -gt 0 ]; then

@@ -379,7 +379,7 @@ def main():
       "compute differs in places: `dh_sincos_f32` reduces any float angle exactly and "
       "checks for NaN/Inf; `glm_inv_tr` inverts in place (no output copy) while "
       "`dh_mat4_inv_rigid_f32` writes a separate output; `dh_mat4_inv_f32` certifies "
-      "singularity (condition estimate and residual check, see `include/dhmath/dh_mat4.h`) "
+      "singularity (condition estimate and residual check, see `include/dhmath/mat4.h`) "
       "where `glm_mat4_inv` divides by the determinant without any check; "
       "`dh_mat4_mul_f32` is a full 4x4 product like `glm_mat4_mul`.")
     w("")

@@ -18,7 +18,7 @@ import sys
 
 import numpy as np
 
-# dh_fk_q (include/dhmath/dh_robot.h): example robots in mm, DH_QPOS_FRAC 16
+# dh_fk_q (include/dhmath/robot.h): example robots in mm, DH_QPOS_FRAC 16
 FIXED_TOL_MM = 5e-4
 FIXED_TOL_Q30_LSB = 64
 # dh_fk_f32: measured 3.0e-7 m / 3.1e-7 per entry for the example robots in
@@ -31,12 +31,12 @@ EULER_ALGO_TOL_DEG = 2.5e-5
 # float FK, which differs from the exact one by FLOAT_FK_TOL)
 IK_TOL_POS = 1e-6
 IK_TOL_ROT = 1e-5
-# dh_ikc_q (include/dhmath/dh_ikc.h): every solution within 5e-3 mm and
+# dh_ikc_q (include/dhmath/ikc.h): every solution within 5e-3 mm and
 # 5e-6 rad of the target; the generating configuration within 2e-3 deg
 IKC_Q_TOL_MM = 5e-3
 IKC_Q_TOL_RAD = 5e-6
 IKC_Q_TOL_DEG = 2e-3
-# dh_frame_to_euler_q (include/dhmath/dh_rot.h): 2e-5 deg (middle angle >= 1
+# dh_frame_to_euler_q (include/dhmath/rot.h): 2e-5 deg (middle angle >= 1
 # deg from a pole) plus 1 LSB of Q16.16
 EULER_Q_TOL_DEG = 2e-5 + 1.0 / 65536.0
 

@@ -10,17 +10,17 @@
 #ifndef DHMATH_DHMATH_H
 #define DHMATH_DHMATH_H
 
-#include "dhmath/dh_config.h"
-#include "dhmath/dh_common.h"
-#include "dhmath/dh_trig.h"
-#include "dhmath/dh_mat4.h"
-#include "dhmath/dh_fixed.h"
-#include "dhmath/dh_robot.h"
-#include "dhmath/dh_kin.h"
-#include "dhmath/dh_rot.h"
-#include "dhmath/dh_ikc.h"
+#include "dhmath/config.h"
+#include "dhmath/common.h"
+#include "dhmath/trig.h"
+#include "dhmath/mat4.h"
+#include "dhmath/frame.h"
+#include "dhmath/robot.h"
+#include "dhmath/kin.h"
+#include "dhmath/rot.h"
+#include "dhmath/ikc.h"
 
-/** Library major version: DH_VERSION_MAJOR (dh_config.h, where the version is defined). */
+/** Library major version: DH_VERSION_MAJOR (config.h, where the version is defined). */
 #define DHMATH_VERSION_MAJOR DH_VERSION_MAJOR
 /** Library minor version: DH_VERSION_MINOR. */
 #define DHMATH_VERSION_MINOR DH_VERSION_MINOR

@@ -914,7 +914,7 @@ def group_fixed(seed, tmp):
             want = [math.cos(t)] + [math.sin(t) * x / n for x in kf]
             d = max(abs(g - w) for g, w in zip(nums(out)[0], want))
             wq = max(wq, d)
-            # the float path's bound for the quaternion (dh_rot.h: 2e-7)
+            # the float path's bound for the quaternion (rot.h: 2e-7)
             check(d <= 2e-7, 'quat --fixed %r: %r vs %r (%.3g)' % (sk, out, want, d))
     # the same output format as the float path
     # (at the pole: the third angle 0, the float path's policy)
@@ -973,8 +973,8 @@ def group_fixed(seed, tmp):
 
 
 def group_help():
-    # --version: the library version from include/dhmath/dh_config.h
-    hdr = open(os.path.join(ROOT, 'include', 'dhmath', 'dh_config.h')).read()
+    # --version: the library version from include/dhmath/config.h
+    hdr = open(os.path.join(ROOT, 'include', 'dhmath', 'config.h')).read()
     ver = '.'.join(re.search(r'#define DH_VERSION_%s (\d+)' % k, hdr).group(1) for k in ('MAJOR', 'MINOR', 'PATCH'))
     rc, out, err = run(['--version'])
     check(rc == 0 and out == 'dhmath %s\n' % ver and err == '', '--version: rc %d out %r err %r' % (rc, out, err))

@@ -5,7 +5,7 @@ test/consumer/run.sh, the "package" stage of tools/check.sh).
 
   check_metadata.py [source tree]
 
-Reads the settings from include/dhmath/dh_config.h: every
+Reads the settings from include/dhmath/config.h: every
 "#ifndef DH_X / #define DH_X <number>" with its range check
 ("#if (DH_X < a) || (DH_X > b)" or "!= 0 && != 1"), and DH_VERSION_STRING.
 Checks, with no YAML or Kconfig library:
@@ -59,14 +59,14 @@ def header_settings(text):
         elif boolean:
             settings[name] = (default, 0, 1)
         else:
-            err("dh_config.h: %s has no range check" % name)
+            err("config.h: %s has no range check" % name)
     ver = re.search(r'^#define DH_VERSION_STRING "([0-9]+\.[0-9]+\.[0-9]+)"', text, re.M)
     parts = [re.search(r"^#define DH_VERSION_%s ([0-9]+)" % p, text, re.M) for p in ("MAJOR", "MINOR", "PATCH")]
     if not ver or not all(parts):
-        err("dh_config.h: DH_VERSION_MAJOR/MINOR/PATCH/STRING missing")
+        err("config.h: DH_VERSION_MAJOR/MINOR/PATCH/STRING missing")
         return settings, None
     if ver.group(1) != ".".join(p.group(1) for p in parts):
-        err("dh_config.h: DH_VERSION_STRING %s does not match the numbers" % ver.group(1))
+        err("config.h: DH_VERSION_STRING %s does not match the numbers" % ver.group(1))
     return settings, ver.group(1)
 
 
@@ -154,9 +154,9 @@ def parse_kconfig(text):
 
 def main(argv):
     root = argv[1] if len(argv) > 1 else os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
-    settings, version = header_settings(read(root, "include/dhmath/dh_config.h"))
+    settings, version = header_settings(read(root, "include/dhmath/config.h"))
     if len(settings) < 5:
-        err("dh_config.h: only %d settings found" % len(settings))
+        err("config.h: only %d settings found" % len(settings))
 
     kconf = parse_kconfig(read(root, "zephyr/Kconfig"))
     if "DHMATH" not in kconf or kconf["DHMATH"]["type"] != "bool":
@@ -174,7 +174,7 @@ def main(argv):
             err("zephyr/Kconfig: %s must be int, range %d %d, default %d (as %s)" % (kname, lo, hi, default, name))
     for kname in kconf:
         if kname != "DHMATH" and "DH_" + kname[7:] not in settings:
-            err("zephyr/Kconfig: %s maps to no setting of dh_config.h" % kname)
+            err("zephyr/Kconfig: %s maps to no setting of config.h" % kname)
 
     zcm = read(root, "zephyr/CMakeLists.txt")
     code = re.sub(r"#.*", "", zcm)
@@ -224,7 +224,7 @@ def main(argv):
         if lj.get("name") != "dhmath":
             err("library.json: name is not dhmath")
         if lj.get("version") != version:
-            err("library.json: version %s, dh_config.h says %s" % (lj.get("version"), version))
+            err("library.json: version %s, config.h says %s" % (lj.get("version"), version))
         build = lj.get("build", {})
         for key in ("srcDir", "includeDir"):
             if not os.path.isdir(os.path.join(root, build.get(key, "?"))):

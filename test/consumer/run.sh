@@ -75,7 +75,7 @@ P=$B/prefix
 if quiet "$B/install.log" bash -c "cmake -S '$SRC' -B '$B/lib' -DDH_BUILD_TESTS=OFF \
       -DCMAKE_INSTALL_PREFIX='$P' && cmake --build '$B/lib' -j$JOBS && cmake --install '$B/lib'"; then
   missing=""
-  for f in include/dhmath/dhmath.h include/dhmath/dh_config.h lib/libdhmath.a lib/cmake/dhmath/dhmathConfig.cmake \
+  for f in include/dhmath/dhmath.h include/dhmath/config.h lib/libdhmath.a lib/cmake/dhmath/dhmathConfig.cmake \
            lib/cmake/dhmath/dhmathConfigVersion.cmake lib/cmake/dhmath/dhmathTargets.cmake lib/pkgconfig/dhmath.pc \
            lib/cmake/dhmath/dhmathRobot.cmake lib/cmake/dhmath/dhmathGen.cmake bin/dhmath share/doc/dhmath/LICENSE; do
     [ -f "$P/$f" ] || missing="$missing $f"
@@ -108,7 +108,7 @@ fi
 # ---- 3. pkg-config + plain Makefile
 export PKG_CONFIG_PATH=$P/lib/pkgconfig
 ver=$(pkg-config --modversion dhmath 2>/dev/null)
-hver=$(sed -n 's/^#define DH_VERSION_STRING "\([^"]*\)".*/\1/p' "$SRC/include/dhmath/dh_config.h")
+hver=$(sed -n 's/^#define DH_VERSION_STRING "\([^"]*\)".*/\1/p' "$SRC/include/dhmath/config.h")
 if [ -n "$ver" ] && [ "$ver" = "$hver" ] &&
    quiet "$B/pkgconfig.log" bash -c "make -f '$T/Makefile' O='$B' && '$B/consumer_pc'"; then
   ok "pkg-config dhmath $ver + Makefile: $(tail -1 "$B/pkgconfig.log")"

@@ -19,7 +19,7 @@
  * Documented exceptions (docs/design.md, "Size-first build"), checked
  * against their bound instead of bitwise:
  * - dh_mat4_inv_f32 / dh_mat4_inv_auto_f32: same status; values within
- *   the general inverse's bound (dh_mat4.h): each build is within
+ *   the general inverse's bound (mat4.h): each build is within
  *   3.2 * cond * 2^-24 * max|T^-1| of T^-1 (cond: the smallest balanced
  *   1-norm condition number over D = diag(1, 1, 1, 2^k)), so the two may
  *   differ by twice that;
@@ -27,7 +27,7 @@
  *   carried through P plus the rounding of the product;
  * - dh_link_f32, dh_fk_f32, dh_fk_frames_f32: a zero entry may have the
  *   other sign (everything else bitwise; zero signs outside the places
- *   dh_robot.h names are counted apart, see zero_documented).
+ *   robot.h names are counted apart, see zero_documented).
  * Accepted everywhere and counted: a float output that is a NaN in both
  * builds may differ in payload and sign (IEEE 754 leaves them open; the
  * two builds combine NaN operands in different orders). Accepted for the
@@ -407,7 +407,7 @@ static void pool_make(void)
     for (i = 0; i < POOL_N; i++) robot_gen(&pool[i]);
 }
 
-/* Robots with a closed form (dh_ikc.h): the four families with random
+/* Robots with a closed form (ikc.h): the four families with random
  * lengths, twist signs, offsets, limits, conventions and base/tool frames,
  * plus every 8th one a pool robot (no closed form, mostly). Built at
  * start-up like the pool. */
@@ -897,7 +897,7 @@ static int plane_close(const diff_in *in, const dh_plane_f32 *Qa, const dh_plane
  * size-first build always with the general inverse. For a T that is rigid
  * only within the tolerance, R^T is not R^-1: the two results then differ
  * by up to |P| times the distance between the two inverses, which is far
- * above the general inverse's bound that dh_mat4.h quotes for DH_SMALL.
+ * above the general inverse's bound that mat4.h quotes for DH_SMALL.
  * Returns that distance (largest entry), 0 when T is not accepted as rigid.
  */
 static double plane_rigid_err(const dh_mat4_f32 *T)
@@ -993,7 +993,7 @@ typedef struct {
 } diff_tally;
 
 /*
- * dh_robot.h documents the zero-sign difference for dh_link_f32 and for
+ * robot.h documents the zero-sign difference for dh_link_f32 and for
  * "the first frame of dh_fk_f32 with an identity base". 1 when the
  * zero-sign differences of this input lie there: dh_link_f32; dh_fk_f32 of
  * a one-joint robot with an identity float base; frames[0] of

@@ -15,8 +15,8 @@
 #include "support_robots.h"
 #include "dh_robots.h"
 #include "dhg_list.h"
-#include "dhmath/dh_mat4.h"
-#include "dhmath/dh_robot.h"
+#include "dhmath/mat4.h"
+#include "dhmath/robot.h"
 
 #define DHG_DECL(stem, UP) extern const dh_robot dhg_##stem;
 DHG_ROBOTS(DHG_DECL)

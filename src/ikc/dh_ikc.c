@@ -1,0 +1,315 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * dh_ikc.c - closed-form inverse kinematics, float: the front end
+ * (dh_ikc_analyse_f32, dh_ikc_f32, dh_ikc_nearest_f32): the model and its
+ * canonical chain, the target checks, the dispatch to the family solvers
+ * (dh_ikc_wrist.c, dh_ikc_par234.c, dh_ikc_scara.c), then offsets,
+ * 360-degree shifts and limits. Method: docs/design.md ("Closed-form
+ * inverse kinematics"), after Paul 1981 ch. 3.
+ *
+ * Canonical chain (ikc_impl.h): standard DH joints with an MDH robot's
+ * first Rx(alpha_0) Tx(a_0) moved into pre; T06 = pre^-1 T post^-1, the
+ * products with an identity pre or post skipped.
+ *
+ * Stack: the front end keeps T06 (64 B); the family solvers keep one 3x3
+ * and a few scalars and write their raw solutions straight into sol.
+ */
+#include "dhmath/ikc.h"
+#include "dhmath/kin.h"
+#include "dhmath/mat4.h"
+#include "dhmath/trig.h"
+#include "ikc_impl.h"
+#include "../internal/dh_floatops.h"
+
+#include <math.h>
+
+/* ---- analysis -------------------------------------------------------------- */
+
+/* Canonical chain of r into m (a, d, sa, ca, off, limits, prismatic);
+ * the frame before it into m->pre_inv (inverted by the caller). */
+static DH_NOINLINE void ikc_canonical(const dh_robot *r, dh_ikc_model_f32 *m)
+{
+    uint32_t i, n = r->n;
+    const int mdh = (r->conv == DH_CONV_MODIFIED);
+    dh_mat4_f32 *P = &m->pre_inv;
+    for (i = 0; i < n; i++) {
+        const dh_joint *j = &r->joint[i];
+        m->d[i] = j->d;
+        m->off[i] = j->theta_deg;
+        m->qmin[i] = j->qmin;
+        m->qmax[i] = j->qmax;
+        if (j->type == DH_JOINT_PRISMATIC) m->prismatic |= 1u << i;
+        if (!mdh) {
+            m->a[i] = j->a;
+            m->sa[i] = j->sa;
+            m->ca[i] = j->ca;
+        } else if (i + 1u < n) {
+            m->a[i] = r->joint[i + 1u].a;
+            m->sa[i] = r->joint[i + 1u].sa;
+            m->ca[i] = r->joint[i + 1u].ca;
+        } else {
+            m->a[i] = 0.0f;
+            m->sa[i] = 0.0f;
+            m->ca[i] = 1.0f;
+        }
+    }
+    *P = r->base;
+    if (mdh) {
+        /* base * Rx(alpha_0) Tx(a_0), column by column */
+        const float sa = r->joint[0].sa, ca = r->joint[0].ca, a0 = r->joint[0].a;
+        for (i = 0; i < 3u; i++) {
+            const float b0 = r->base.m[0][i], b1 = r->base.m[1][i], b2 = r->base.m[2][i];
+            P->m[1][i] = ca * b1 + sa * b2;
+            P->m[2][i] = ca * b2 - sa * b1;
+            P->m[3][i] = a0 * b0 + r->base.m[3][i];
+        }
+    }
+}
+
+/* A float frame with bottom row 0 0 0 1 and a rotation within
+ * DH_ROT_ERROR_TOL (det > 0), every entry finite. */
+static int ikc_rigid(const dh_mat4_f32 *F)
+{
+    return dh_allfinite_f32(&F->m[0][0], 16u) && dh_feq_f32(F->m[0][3], 0.0f) && dh_feq_f32(F->m[1][3], 0.0f) &&
+           dh_feq_f32(F->m[2][3], 0.0f) && dh_feq_f32(F->m[3][3], 1.0f) &&
+           dh_rot_cols_ok_f32(F->m[0], F->m[1], F->m[2], DH_ROT_ERROR_TOL);
+}
+
+/* F <- F^-1 for a rigid F (Paul 1981 eq. 1.57: R^T, -R^T p); an exact
+ * identity stays exact. The base and tool are rotations to the float
+ * rounding in practice; one off orthonormal by e moves the solutions by
+ * about e. */
+static void ikc_inv_rigid(dh_mat4_f32 *F)
+{
+    float p0 = F->m[3][0], p1 = F->m[3][1], p2 = F->m[3][2], t;
+    uint32_t i;
+    t = F->m[0][1]; F->m[0][1] = F->m[1][0]; F->m[1][0] = t;
+    t = F->m[0][2]; F->m[0][2] = F->m[2][0]; F->m[2][0] = t;
+    t = F->m[1][2]; F->m[1][2] = F->m[2][1]; F->m[2][1] = t;
+    for (i = 0; i < 3u; i++) F->m[3][i] = 0.0f - (F->m[0][i] * p0 + F->m[1][i] * p1 + F->m[2][i] * p2);
+}
+
+/* Why the canonical chain of m has no closed form (every detector said no). */
+static dh_ikc_why ikc_why(const dh_ikc_model_f32 *m)
+{
+    if (m->n == 6u && (m->prismatic == 0u || m->prismatic == 0x4u))
+        return dh_ikc_spherical_f32_(m) ? DH_IKC_WHY_AXES : DH_IKC_WHY_WRIST;
+    if (m->n == 4u && m->prismatic == 0x4u) return DH_IKC_WHY_AXES;
+    return DH_IKC_WHY_JOINTS;
+}
+
+static dh_status ikc_none(dh_ikc_model_f32 *m, dh_ikc_why why, dh_status st)
+{
+    m->kind = DH_IKC_NONE;
+    m->why = why;
+    return st;
+}
+
+dh_status dh_ikc_analyse_f32(const dh_robot *r, dh_ikc_model_f32 *m)
+{
+    uint32_t i;
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(m != NULL);
+    memset(m, 0, sizeof *m);
+    for (i = 0; i < 4u; i++) {
+        m->pre_inv.m[i][i] = 1.0f;
+        m->post_inv.m[i][i] = 1.0f;
+    }
+    if (r->n > (uint32_t)DH_MAX_JOINTS || (r->conv != DH_CONV_STANDARD && r->conv != DH_CONV_MODIFIED))
+        return ikc_none(m, DH_IKC_WHY_JOINTS, DH_ERR_ARG);
+    for (i = 0; i < r->n; i++)
+        if (r->joint[i].type != DH_JOINT_REVOLUTE && r->joint[i].type != DH_JOINT_PRISMATIC)
+            return ikc_none(m, DH_IKC_WHY_JOINTS, DH_ERR_ARG);
+    if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return ikc_none(m, DH_IKC_WHY_PATH, DH_ERR_UNAVAILABLE);
+    if (!ikc_rigid(&r->base) || !ikc_rigid(&r->tool)) return ikc_none(m, DH_IKC_WHY_PATH, DH_ERR_NOT_RIGID);
+    if (r->n == 0u || r->n > DH_IKC_JOINTS) return ikc_none(m, DH_IKC_WHY_JOINTS, DH_ERR_UNAVAILABLE);
+    m->n = r->n;
+    ikc_canonical(r, m);
+    ikc_inv_rigid(&m->pre_inv);
+    m->post_inv = r->tool;
+    ikc_inv_rigid(&m->post_inv);
+    if (dh_ikc_detect_wrist_f32_(m)) {
+        m->why = DH_IKC_WHY_NONE;
+        return DH_OK;
+    }
+    if (dh_ikc_detect_par234_f32_(m)) {
+        m->kind = DH_IKC_PARALLEL_234;
+        m->why = DH_IKC_WHY_NONE;
+        return DH_OK;
+    }
+    if (dh_ikc_detect_scara_f32_(m)) {
+        m->kind = DH_IKC_SCARA;
+        m->why = DH_IKC_WHY_NONE;
+        return DH_OK;
+    }
+    return ikc_none(m, ikc_why(m), DH_ERR_UNAVAILABLE);
+}
+
+const char *dh_ikc_why_str(dh_ikc_why why)
+{
+    switch (why) {
+    case DH_IKC_WHY_NONE: return "the robot has a closed-form solution";
+    case DH_IKC_WHY_JOINTS: return "the joint count or types match no closed-form family";
+    case DH_IKC_WHY_WRIST: return "the last three axes do not meet in one point and axes 2, 3, 4 are not parallel";
+    case DH_IKC_WHY_AXES: return "the wrist axes meet in one point but the arm (or a non-orthogonal wrist) matches no closed-form family";
+    case DH_IKC_WHY_PATH: return "the robot's path is not prepared or its base or tool is not rigid";
+    default: return "unknown reason";
+    }
+}
+
+/* ---- solving ------------------------------------------------------------------ */
+
+/* Every check of dh_ikc_f32 made before anything is written. */
+static DH_NOINLINE dh_status ikc_args(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
+                                      uint32_t opts)
+{
+    if ((opts & ~(uint32_t)DH_IKC_KEEP_OUT_OF_LIMITS) != 0u) return DH_ERR_ARG;
+    if (m->kind == DH_IKC_NONE) return DH_ERR_UNAVAILABLE;
+    switch (m->kind) {
+    case DH_IKC_WRIST_RRR:
+    case DH_IKC_WRIST_RRP:
+    case DH_IKC_PARALLEL_234:
+        if (m->n != 6u) return DH_ERR_ARG;
+        break;
+    case DH_IKC_SCARA:
+        if (m->n != 4u) return DH_ERR_ARG;
+        break;
+    default:
+        return DH_ERR_ARG;
+    }
+    if (!dh_allfinite_f32(&T->m[0][0], 16u)) return DH_ERR_NAN;
+    if (q_ref != NULL && !dh_allfinite_f32(q_ref, m->n)) return DH_ERR_NAN;
+    if (!dh_feq_f32(T->m[0][3], 0.0f) || !dh_feq_f32(T->m[1][3], 0.0f) || !dh_feq_f32(T->m[2][3], 0.0f) ||
+        !dh_feq_f32(T->m[3][3], 1.0f))
+        return DH_ERR_NOT_RIGID;
+    if (!dh_rot_cols_ok_f32(T->m[0], T->m[1], T->m[2], DH_ROT_ERROR_TOL)) return DH_ERR_NOT_RIGID;
+    return DH_OK;
+}
+
+/* Revolute value v in (-180, 180] shifted by a multiple of 360 into
+ * [lo, hi], to the shifted value nearest ref; 0 when no shift fits (v
+ * unchanged). The shift count is bounded by 1024 turns. */
+static int ikc_shift(float *v, float lo, float hi, float ref)
+{
+    float t = ref, x, c;
+    int32_t k;
+    /* within the limits and within 180 deg of ref: no other shift is nearer */
+    if (*v >= lo && *v <= hi && fabsf(ref - *v) <= 180.0f) return 1;
+    if (t < lo) t = lo;
+    if (t > hi) t = hi;
+    if (t > 368640.0f) t = 368640.0f;
+    if (t < -368640.0f) t = -368640.0f;
+    x = (t - *v) * (1.0f / 360.0f);
+    k = (int32_t)(x + ((x >= 0.0f) ? 0.5f : -0.5f));
+    c = *v + 360.0f * (float)k;
+    if (c > hi) c -= 360.0f;
+    else if (c < lo) c += 360.0f;
+    if (c < lo || c > hi) return 0;
+    *v = c;
+    return 1;
+}
+
+/* Raw canonical solution -> joint values; 1 when within the limits.
+ * Common case first: the revolute value already in (-180, 180] and within
+ * its limits with no nearer shift (|ref - v| <= 180), left as it is. */
+static DH_NOINLINE int ikc_to_joints(const dh_ikc_model_f32 *m, const float *q_ref, float *q)
+{
+    uint32_t i;
+    int in = 1;
+    for (i = 0; i < m->n; i++) {
+        const float lo = m->qmin[i], hi = m->qmax[i], ref = (q_ref != NULL) ? q_ref[i] : 0.0f;
+        float v;
+        if ((m->prismatic >> i) & 1u) {
+            q[i] -= m->d[i];
+            if (lo <= hi && (q[i] < lo || q[i] > hi)) in = 0;
+            continue;
+        }
+        v = q[i] - m->off[i];
+        if (!(v > -180.0f && v <= 180.0f)) {
+            if (!(fabsf(v) <= 540.0f)) {
+                /* a theta offset beyond +-360 deg: whole turns off first */
+                const float x = v * (1.0f / 360.0f);
+                if (fabsf(x) < 8388608.0f) v -= 360.0f * (float)(int32_t)x;
+            }
+            v = dh_ikc_wrap_f32_(dh_ikc_wrap_f32_(v));
+        }
+        q[i] = v;
+        /* (with q_ref NULL, ref = 0 and |v| <= 180: no nearer shift) */
+        if (lo <= hi && !(v >= lo && v <= hi && (q_ref == NULL || fabsf(ref - v) <= 180.0f))) {
+            if (!ikc_shift(&v, lo, hi, ref)) in = 0;
+            q[i] = v;
+        }
+    }
+    return in;
+}
+
+/* The raw solutions sol[0..raw-1] to joint values: non-finite branches (a
+ * target far beyond the reach overflows the squares of the position
+ * solution) are no solutions; limits per opts; kept ones packed to the
+ * front. Out of line: its frame is not on top of a solver's. */
+static DH_NOINLINE dh_status ikc_finish(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t opts,
+                                        dh_ikc_sol_f32 *sol, uint32_t raw, uint32_t *n_sol)
+{
+    uint32_t i, j, out = 0, finite = 0;
+    for (i = 0; i < raw; i++) {
+        if (!dh_allfinite_f32(sol[i].q, m->n)) continue;
+        finite++;
+        if (!ikc_to_joints(m, q_ref, sol[i].q)) {
+            if ((opts & DH_IKC_KEEP_OUT_OF_LIMITS) == 0u) continue;
+            sol[i].flags |= DH_IKC_OUT_OF_LIMITS;
+        }
+        if (out != i) {
+            for (j = 0; j < DH_IKC_JOINTS; j++) sol[out].q[j] = sol[i].q[j];
+            sol[out].flags = sol[i].flags;
+        }
+        out++;
+    }
+    for (i = out; i < raw; i++) sol[i].flags = 0u;
+    *n_sol = out;
+    if (finite == 0u) return DH_ERR_UNREACHABLE;
+    return (out == 0u) ? DH_ERR_LIMIT : DH_OK;
+}
+
+dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const float *q_ref, uint32_t opts,
+                     dh_ikc_sol_f32 *sol, uint32_t *n_sol)
+{
+    uint32_t raw = 0;
+    dh_status st;
+    DH_ASSERT(m != NULL);
+    DH_ASSERT(target != NULL);
+    DH_ASSERT(sol != NULL);
+    DH_ASSERT(n_sol != NULL);
+    *n_sol = 0;
+    st = ikc_args(m, target, q_ref, opts);
+    if (st != DH_OK) return st;
+    switch (m->kind) {
+    case DH_IKC_WRIST_RRR:
+    case DH_IKC_WRIST_RRP: raw = dh_ikc_wrist_f32_(m, target, q_ref, sol); break;
+    case DH_IKC_PARALLEL_234: raw = dh_ikc_par234_f32_(m, target, q_ref, sol); break;
+    default: raw = dh_ikc_scara_f32_(m, target, q_ref, sol); break;
+    }
+    if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;
+    if (raw == 0u) return DH_ERR_UNREACHABLE;
+    return ikc_finish(m, q_ref, opts, sol, raw, n_sol);
+}
+
+dh_status dh_ikc_nearest_f32(const dh_ikc_sol_f32 *sol, uint32_t n_sol, const float *q_ref, uint32_t n,
+                             uint32_t *index)
+{
+    uint32_t s, i, best = 0;
+    float dbest = 0.0f;
+    DH_ASSERT(sol != NULL);
+    DH_ASSERT(index != NULL);
+    if (n_sol == 0u || n > DH_IKC_JOINTS) return DH_ERR_ARG;
+    if (q_ref != NULL && !dh_allfinite_f32(q_ref, n)) return DH_ERR_NAN;
+    for (s = 0; s < n_sol; s++) {
+        float d = 0.0f;
+        for (i = 0; i < n; i++) d += fabsf(sol[s].q[i] - ((q_ref != NULL) ? q_ref[i] : 0.0f));
+        if (s == 0u || d < dbest) {
+            dbest = d;
+            best = s;
+        }
+    }
+    *index = best;
+    return DH_OK;
+}

@@ -1,0 +1,477 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * dh_ikc_wrist.c - closed-form IK, float: the spherical-wrist families
+ * DH_IKC_WRIST_RRR (Puma 560, KUKA KR5, ABB IRB140) and DH_IKC_WRIST_RRP
+ * (Stanford arm), detector and solver behind the front end dh_ikc.c;
+ * interface in ikc_impl.h. The method follows Paul 1981 ch. 3 (the arm
+ * positions the wrist centre, the wrist the orientation); derivations:
+ * docs/design.md ("Closed-form inverse kinematics").
+ *
+ * Stack: the solver keeps one 3x3 and a few scalars and writes its raw
+ * solutions straight into sol.
+ */
+#include "dhmath/ikc.h"
+#include "dhmath/trig.h"
+#include "ikc_impl.h"
+#include "../internal/dh_floatops.h"
+
+#include <math.h>
+
+/* Family constants of the wrist families, m->k. */
+enum {
+    KW_H = 0,      /* offset of the wrist centre from the plane of axis 1 (h) */
+    KW_EPS,        /* length tolerance of the branch coincidences: 5e-7 L */
+    KW_HZERO,      /* 1: |h| <= KW_EPS (wrist centre can reach axis 1) */
+    KW_INV45,      /* 1 / (sin alpha4 sin alpha5) */
+    KW_INVSA5,     /* 1 / sin alpha5 */
+    /* RRR */
+    KW_PHI,        /* atan2(e, a3) in degrees, e = sin(alpha3) d4 */
+    KW_A2RHO,      /* a2^2 + a3^2 + e^2 */
+    KW_D,          /* 2 a2 rho */
+    KW_SIGMA,      /* cos alpha2 (+-1) */
+    KW_SA23,       /* sigma sin alpha3 */
+    KW_CA23,       /* sigma cos alpha3 */
+    KW_INV2A2,     /* 1 / (2 a2) */
+    KW_CPLUS,      /* |a2| + rho: wrist centre distance from axis 2, elbow stretched */
+    KW_CMINUS,     /* ||a2| - rho|: the same, elbow folded */
+    /* RRP */
+    KW_W,          /* a2 + a3 cos th3 + e sin th3 (th3 the fixed theta of joint 3) */
+    KW_Z3C,        /* cos(alpha3) d4: z3 = d3 + KW_Z3C */
+    KW_S3,         /* sin, cos of the fixed theta of joint 3 */
+    KW_C3,
+    KW_PRE,        /* 1: pre_inv is not the identity (its product is needed) */
+    KW_POST,       /* 1: post_inv is not the identity */
+    KW_COUNT
+};
+
+typedef char dh_ikc_k_fits_[(KW_COUNT <= (int)DH_IKC_K) ? 1 : -1];
+
+/* Wrist singular when axis 6 is within this angle (rad) of axis 4: the
+ * orientation error of the q_ref split is at most that angle. */
+#define IKC_SING_WRIST 1.5e-6f
+/* Length tolerance per unit of the characteristic length L. */
+#define IKC_EPS_L 5e-7f
+
+/* ---- small helpers --------------------------------------------------------- */
+
+/* atan2 in degrees, fallback when both arguments are zero (free angle).
+ * The radian atan2 (<= 2 ulp) scaled: a third of the stack of the degree
+ * version (dh_atan2f_deg_), which no solver frame could afford on top. */
+DH_INLINE float wrist_atan2(float y, float x, float fallback)
+{
+    if (dh_feq_f32(y, 0.0f) && dh_feq_f32(x, 0.0f)) return fallback;
+    return dh_atan2f_(y, x) * DH_RAD2DEG_F;
+}
+
+
+/* ---- spherical-wrist families ------------------------------------------------- */
+
+int dh_ikc_detect_wrist_f32_(dh_ikc_model_f32 *m)
+{
+    float *k = m->k, L = 0.0f;
+    uint32_t i;
+    if (!dh_ikc_spherical_f32_(m) || !dh_feq_f32(m->ca[3], 0.0f) || !dh_feq_f32(m->ca[4], 0.0f) ||
+        !dh_feq_f32(m->ca[0], 0.0f))
+        return 0;
+    for (i = 0; i < 6u; i++) {
+        L += fabsf(m->a[i]) + fabsf(m->d[i]);
+        if (((m->prismatic >> i) & 1u) && m->qmin[i] <= m->qmax[i])
+            L += (fabsf(m->qmin[i]) > fabsf(m->qmax[i])) ? fabsf(m->qmin[i]) : fabsf(m->qmax[i]);
+    }
+    k[KW_EPS] = IKC_EPS_L * ((L > 0.0f) ? L : 1.0f);
+    k[KW_INV45] = 1.0f / (m->sa[3] * m->sa[4]);
+    k[KW_INVSA5] = 1.0f / m->sa[4];
+    if (m->prismatic == 0u) {
+        const float e = m->sa[2] * m->d[3], a2 = m->a[1], a3 = m->a[2];
+        const float rho = dh_sqrt_f32(a3 * a3 + e * e);
+        if (!dh_feq_f32(m->sa[1], 0.0f) || dh_feq_f32(a2, 0.0f) || !(rho > 0.0f)) return 0;
+        k[KW_SIGMA] = m->ca[1];
+        k[KW_H] = m->d[1] + m->ca[1] * (m->d[2] + m->ca[2] * m->d[3]);
+        k[KW_PHI] = dh_atan2f_deg_(e, a3, 0.0f);
+        k[KW_A2RHO] = a2 * a2 + rho * rho;
+        k[KW_D] = 2.0f * a2 * rho;
+        k[KW_SA23] = m->ca[1] * m->sa[2];
+        k[KW_CA23] = m->ca[1] * m->ca[2];
+        k[KW_INV2A2] = 1.0f / (2.0f * a2);
+        k[KW_CPLUS] = fabsf(a2) + rho;
+        k[KW_CMINUS] = fabsf(fabsf(a2) - rho);
+        m->kind = DH_IKC_WRIST_RRR;
+    } else if (m->prismatic == 0x4u) {
+        const float e = m->sa[2] * m->d[3];
+        float s3, c3;
+        if (!dh_feq_f32(m->ca[1], 0.0f)) return 0;
+        (void)dh_sincos_f32(m->off[2], &s3, &c3);
+        k[KW_S3] = s3;
+        k[KW_C3] = c3;
+        k[KW_W] = m->a[1] + m->a[2] * c3 + e * s3;
+        k[KW_H] = m->d[1] + m->sa[1] * (m->a[2] * s3 - e * c3);
+        k[KW_Z3C] = m->ca[2] * m->d[3];
+        m->kind = DH_IKC_WRIST_RRP;
+    } else {
+        return 0;
+    }
+    k[KW_HZERO] = (fabsf(k[KW_H]) <= k[KW_EPS]) ? 1.0f : 0.0f;
+    k[KW_PRE] = dh_ikc_is_identity_f32_(&m->pre_inv) ? 0.0f : 1.0f;
+    k[KW_POST] = dh_ikc_is_identity_f32_(&m->post_inv) ? 0.0f : 1.0f;
+    return 1;
+}
+
+/* v <- Rx(alpha)^T Rz(theta)^T v for the two 3-vectors at a and b (c, s
+ * of theta). */
+static void wrist_rzrx_t(float *a, float *b, float c, float s, float sa, float ca)
+{
+    uint32_t k;
+    for (k = 0; k < 2u; k++) {
+        float *v = (k == 0u) ? a : b;
+        const float x = c * v[0] + s * v[1], y = c * v[1] - s * v[0], z = v[2];
+        v[0] = x;
+        v[1] = ca * y + sa * z;
+        v[2] = ca * z - sa * y;
+    }
+}
+
+/* Layout of sol while the wrist families solve (the caller's array is the
+ * scratch, so that no frame below the atan2 calls holds vectors):
+ * sol[7].q[3..5] = R06 e_x, sol[6].q[3..5] = R06 Rx(alpha6)^T e_z (the
+ * columns M is made of), sol[5].q[3..5] = the wrist centre; arm solutions
+ * use q[0..2] and flags only. */
+#define IKC_RN(sol) (&(sol)[7].q[3])
+#define IKC_RA(sol) (&(sol)[6].q[3])
+#define IKC_P(sol) (&(sol)[5].q[3])
+#define IKC_GAP 0xFFFFFFFFu
+
+/* Wrist, phase A, for the arm solution in *arm: the arm values and flags
+ * into out[0]; M's third and first columns (R03^T of R06's two columns)
+ * into out[0].q[3..5] and out[1].q[3..5] (for the last arm these are
+ * where R06's columns are, so they are read in place). Wrist singular
+ * (axis 6 in frame 3 on the z axis, joint 4's axis): flagged, and joint 4
+ * from q_ref with its sine and cosine into out[1].q[2], q[0], q[1]. */
+static DH_NOINLINE void wrist_a(const dh_ikc_model_f32 *m, const float *q_ref, const dh_ikc_sol_f32 *arm,
+                                    dh_ikc_sol_f32 *out, const float *rn, const float *ra)
+{
+    const float *k = m->k;
+    const float t1 = arm->q[0], t2 = arm->q[1], t3 = arm->q[2];
+    float *mz = &out[0].q[3], *mx = &out[1].q[3];
+    float c, s;
+    uint32_t i;
+    out[0].flags = arm->flags;
+    for (i = 0; i < 3u; i++) {
+        mx[i] = rn[i];
+        mz[i] = ra[i];
+    }
+    out[0].q[0] = t1;
+    out[0].q[1] = t2;
+    out[0].q[2] = t3;
+    (void)dh_sincos_f32(t1, &s, &c);
+    wrist_rzrx_t(mz, mx, c, s, m->sa[0], m->ca[0]);
+    if (m->kind == DH_IKC_WRIST_RRR) {
+        (void)dh_sincos_f32(t2 + k[KW_SIGMA] * t3, &s, &c);
+        wrist_rzrx_t(mz, mx, c, s, k[KW_SA23], k[KW_CA23]);
+    } else {
+        (void)dh_sincos_f32(t2, &s, &c);
+        wrist_rzrx_t(mz, mx, c, s, m->sa[1], m->ca[1]);
+        wrist_rzrx_t(mz, mx, k[KW_C3], k[KW_S3], m->sa[2], m->ca[2]);
+    }
+    if (mz[0] * mz[0] + mz[1] * mz[1] < IKC_SING_WRIST * IKC_SING_WRIST) {
+        out[0].flags |= DH_IKC_SING_WRIST;
+        c = dh_ikc_cref_f32_(m, q_ref, 3u);
+        out[1].q[2] = c;
+        (void)dh_sincos_f32(c, &out[1].q[0], &out[1].q[1]);
+    }
+}
+
+/* Wrist, phase B (orthogonal wrist): from M's columns the atan2 arguments
+ * of theta4 (y, x into out[0].q[3], q[4]), theta5 (out[0].q[5],
+ * out[1].q[3]) and theta6 (out[1].q[4], q[5]). theta4 rotates (X', Y') =
+ * (sin a5 s5, 0) onto (m13, m23); theta6 from M e_x rotated back by theta4
+ * against the first two columns of Rx(a4) Rz(t5) Rx(a5) (consistency). */
+static DH_NOINLINE void wrist_b(const dh_ikc_model_f32 *m, dh_ikc_sol_f32 *out)
+{
+    const float *k = m->k;
+    const float m0 = out[0].q[3], m1 = out[0].q[4], m2 = out[0].q[5];
+    const float sa4 = m->sa[3], sa5 = m->sa[4];
+    float c5 = -m2 * k[KW_INV45], s5, c4, s4, mpx, mpy, mpz;
+    if (c5 > 1.0f) c5 = 1.0f;
+    if (c5 < -1.0f) c5 = -1.0f;
+    if ((out[0].flags & DH_IKC_SING_WRIST) != 0u) {
+        s4 = out[1].q[0];
+        c4 = out[1].q[1];
+        s5 = (c4 * m0 + s4 * m1) * k[KW_INVSA5];
+    } else {
+        float r;
+        s5 = dh_sqrt_f32(m0 * m0 + m1 * m1);
+        /* (c4, s4) proportional to (X' m13, X' m23), X' = sin a5 s5 */
+        c4 = sa5 * m0;
+        s4 = sa5 * m1;
+        r = 1.0f / dh_sqrt_f32(c4 * c4 + s4 * s4);
+        c4 *= r;
+        s4 *= r;
+    }
+    mpx = c4 * out[1].q[3] + s4 * out[1].q[4];
+    mpy = c4 * out[1].q[4] - s4 * out[1].q[3];
+    mpz = out[1].q[5];
+    out[0].q[3] = s4;
+    out[0].q[4] = c4;
+    out[0].q[5] = s5;
+    out[1].q[3] = c5;
+    /* N21, N11 with cos a4 = cos a5 = 0 */
+    out[1].q[4] = -sa4 * sa5 * mpy;
+    out[1].q[5] = c5 * mpx + sa4 * s5 * mpz;
+}
+
+/* Wrist, phase C: the angles, and the flipped solution (t4 + 180, -t5,
+ * t6 + 180) into out[1] unless singular. */
+static DH_NOINLINE void wrist_c(dh_ikc_sol_f32 *out)
+{
+    const int sing = (out[0].flags & DH_IKC_SING_WRIST) != 0u;
+    const float t4 = sing ? out[1].q[2] : wrist_atan2(out[0].q[3], out[0].q[4], 0.0f);
+    const float t5 = wrist_atan2(out[0].q[5], out[1].q[3], 0.0f);
+    const float t6 = wrist_atan2(out[1].q[4], out[1].q[5], 0.0f);
+    out[0].q[3] = dh_ikc_wrap_f32_(t4);
+    out[0].q[4] = t5;
+    out[0].q[5] = t6;
+    if (sing) {
+        out[1].flags = IKC_GAP;
+        return;
+    }
+    out[1].q[0] = out[0].q[0];
+    out[1].q[1] = out[0].q[1];
+    out[1].q[2] = out[0].q[2];
+    out[1].q[3] = dh_ikc_wrap_f32_(t4 + 180.0f);
+    out[1].q[4] = dh_ikc_wrap_f32_(-t5);
+    out[1].q[5] = dh_ikc_wrap_f32_(t6 + 180.0f);
+    out[1].flags = out[0].flags | DH_IKC_WRIST_ALT;
+}
+
+/* Joints 2, 3 of the RRR arm for one shoulder branch: sol[0] holds theta1,
+ * (vx, vy) (the wrist centre in the plane of the arm) in q[0..2] and the
+ * flags; writes sol[0] and maybe sol[1] (q[0..2], flags). Returns 0, 1, 2. */
+static DH_NOINLINE uint32_t wrist_elbow_rrr(const dh_ikc_model_f32 *m, float cref2, dh_ikc_sol_f32 *sol)
+{
+    const float *k = m->k;
+    const float vx = sol->q[1], vy = sol->q[2];
+    const float v2 = vx * vx + vy * vy, v = dh_sqrt_f32(v2), D = k[KW_D], Kp = v2 - k[KW_A2RHO];
+    const float aD = fabsf(D), KD = (D < 0.0f) ? -Kp : Kp;
+    /* dK = |D| - |K'| from |v| (no cancellation of the squares against the
+     * constant a2^2 + rho^2): stretched elbow (|a2| + rho)^2 - |v|^2,
+     * folded |v|^2 - (|a2| - rho)^2. Moving K' by dK moves the wrist centre
+     * by dK / (2 |v|): the branches coincide within KW_EPS. */
+    const float dK = (KD >= 0.0f) ? (k[KW_CPLUS] - v) * (k[KW_CPLUS] + v) : (v - k[KW_CMINUS]) * (v + k[KW_CMINUS]);
+    const float tol = 2.0f * k[KW_EPS] * v;
+    const float A = m->a[1] + Kp * k[KW_INV2A2];
+    float sq = 0.0f, psi, B;
+    uint32_t b, nb = 2u;
+    if (dK < -tol) return 0u;
+    if (dK <= tol) {
+        nb = 1u;
+        sol->flags |= DH_IKC_SING_ELBOW;
+    } else {
+        /* D^2 - K'^2 = dK (|D| + |K'|) */
+        sq = dh_sqrt_f32(dK * (2.0f * aD - dK));
+    }
+    psi = wrist_atan2(sq, KD, 0.0f);
+    for (b = nb; b-- > 0u;) {
+        const float sg = (b == 0u) ? 1.0f : -1.0f;
+        if (b == 1u) {
+            sol[1].q[0] = sol[0].q[0];
+            sol[1].flags = sol[0].flags | DH_IKC_ELBOW_ALT;
+        }
+        /* a3 s3 - e c3 = rho sin(theta3 - phi) = +-sqrt(D^2 - K'^2) / (2 |a2|) */
+        B = k[KW_SIGMA] * sg * sq * fabsf(k[KW_INV2A2]);
+        sol[b].q[2] = dh_ikc_wrap_f32_(k[KW_PHI] + sg * psi);
+        sol[b].q[1] = wrist_atan2(A * vy - B * vx, A * vx + B * vy, cref2);
+    }
+    return nb;
+}
+
+/* Joints 2, 3 of the RRP arm (the prismatic extension z3 = +-sqrt(.)). */
+static DH_NOINLINE uint32_t wrist_elbow_rrp(const dh_ikc_model_f32 *m, float cref2, dh_ikc_sol_f32 *sol)
+{
+    const float *k = m->k;
+    const float vx = sol->q[1], vy = sol->q[2];
+    const float W = k[KW_W], eps = k[KW_EPS], tau2 = m->sa[1];
+    const float v = dh_sqrt_f32(vx * vx + vy * vy), r = (v - fabsf(W)) * (v + fabsf(W));
+    const float tol = eps * (2.0f * fabsf(W) + eps);
+    float z = 0.0f;
+    uint32_t b, nb = 2u;
+    if (r < -tol) return 0u;
+    if (r <= tol) {
+        nb = 1u;
+        sol->flags |= DH_IKC_SING_ELBOW;
+    } else {
+        z = dh_sqrt_f32(r);
+    }
+    for (b = nb; b-- > 0u;) {
+        const float zb = (b == 0u) ? z : -z;
+        if (b == 1u) {
+            sol[1].q[0] = sol[0].q[0];
+            sol[1].flags = sol[0].flags | DH_IKC_ELBOW_ALT;
+        }
+        sol[b].q[1] = wrist_atan2(tau2 * zb * vx + W * vy, W * vx - tau2 * zb * vy, cref2);
+        sol[b].q[2] = zb - k[KW_Z3C];
+    }
+    return nb;
+}
+
+/* u of shoulder branch b (u >= 0 for b = 0, u <= 0 for b = 1) moved onto the
+ * arm's reach: when the planar point (ub - a1, vy) lies beyond it (|v|
+ * below the folded radius |a2| - rho (RRR) or |W| (RRP), above the
+ * stretched |a2| + rho (RRR)), the u' = a1 +- sqrt(r^2 - vy^2) on that
+ * radius nearest ub, if |u'^2 - ub^2| <= 2 eps (|px| + |py|): u^2 = px^2 +
+ * py^2 - h^2 moves by 2 (px dpx + py dpy), so u' belongs to a wrist centre
+ * at most sqrt(2) eps away. Near the shoulder cylinder (u small) the
+ * target's rounding moves u by far more than eps; this keeps such targets
+ * on the boundary solvable. Otherwise ub. */
+static DH_NOINLINE float wrist_reach(const dh_ikc_model_f32 *m, uint32_t b, float ub, float vy, float pl1)
+{
+    const float *k = m->k, a1 = m->a[0], vx = ub - a1, v = dh_sqrt_f32(vx * vx + vy * vy);
+    float r, w, best = ub, db = -1.0f;
+    uint32_t i;
+    if (m->kind == DH_IKC_WRIST_RRR) {
+        if (v < k[KW_CMINUS]) r = k[KW_CMINUS];
+        else if (v > k[KW_CPLUS]) r = k[KW_CPLUS];
+        else return ub;
+    } else {
+        r = fabsf(k[KW_W]);
+        if (v >= r) return ub;
+    }
+    w = (r - fabsf(vy)) * (r + fabsf(vy));
+    if (!(w >= 0.0f)) return ub; /* vy alone is beyond: the elbow decides */
+    w = dh_sqrt_f32(w);
+    for (i = 0; i < 2u; i++) {
+        const float c = (i == 0u) ? a1 + w : a1 - w, d = fabsf(c - ub);
+        if ((b == 0u) ? (c < 0.0f) : (c > 0.0f)) continue;
+        if (d * fabsf(c + ub) > 2.0f * k[KW_EPS] * pl1) continue;
+        if (db < 0.0f || d < db) {
+            db = d;
+            best = c;
+        }
+    }
+    return best;
+}
+
+/* Shoulder: u = +-sqrt(px^2 + py^2 - h^2) of the wrist centre p (read
+ * from IKC_P), each moved onto the arm's reach by wrist_reach, theta1; per
+ * branch sol[b] gets theta1, vx, vy and its flags. Returns the number of
+ * branches (0, 1 or 2). */
+static DH_NOINLINE uint32_t wrist_shoulder(const dh_ikc_model_f32 *m, float cref1, dh_ikc_sol_f32 *sol)
+{
+    const float *k = m->k, *p = IKC_P(sol);
+    const float h = k[KW_H], eps = k[KW_EPS], tau = m->sa[0];
+    const float px = p[0], py = p[1], pz = p[2], vy = tau * (pz - m->d[0]);
+    float rad, tol, u = 0.0f;
+    uint32_t b, nb, nu = 0u;
+    int sing;
+    rad = dh_sqrt_f32(px * px + py * py);
+    rad = (rad - fabsf(h)) * (rad + fabsf(h));
+    tol = eps * (2.0f * fabsf(h) + eps);
+    if (rad < -tol) return 0u;
+    if (rad > 0.0f) u = dh_sqrt_f32(rad);
+    /* wrist centre on axis 1: joint 1 from q_ref, one branch */
+    sing = (rad <= tol && !dh_feq_f32(k[KW_HZERO], 0.0f));
+    nb = sing ? 1u : 2u;
+    for (b = 0; b < nb; b++) {
+        dh_ikc_sol_f32 *s = &sol[nu];
+        float ub = (b == 0u) ? u : -u;
+        if (sing) {
+            s->q[0] = cref1;
+            s->flags = DH_IKC_SING_SHOULDER;
+        } else {
+            ub = wrist_reach(m, b, ub, vy, fabsf(px) + fabsf(py));
+            if (b != 0u && !(u > 0.0f) && !(ub < 0.0f)) continue; /* both branches at u = 0: one */
+            s->q[0] = wrist_atan2(tau * h * px + ub * py, ub * px - tau * h * py, cref1);
+            s->flags = (b == 0u) ? 0u : DH_IKC_SHOULDER_ALT;
+        }
+        s->q[1] = ub - m->a[0];
+        s->q[2] = vy;
+        nu++;
+    }
+    return nu;
+}
+
+/* The vectors of T06 the wrist families need, into the scratch of sol.
+ * T06 = pre_inv T post_inv; the products with an identity pre_inv or
+ * post_inv (flagged at analysis) are left out. */
+static DH_NOINLINE void wrist_prepare(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol)
+{
+    const int pre = !dh_feq_f32(m->k[KW_PRE], 0.0f), post = !dh_feq_f32(m->k[KW_POST], 0.0f);
+    float *rn = IKC_RN(sol), *ra = IKC_RA(sol), *p = IKC_P(sol);
+    uint32_t i;
+    /* in the frame of T's columns: e_x, Rx(alpha6)^T e_z and the wrist
+     * centre o5 = (-a6, -d6 sin alpha6, -d6 cos alpha6) */
+    ra[0] = 0.0f;
+    ra[1] = m->sa[5];
+    ra[2] = m->ca[5];
+    p[0] = -m->a[5];
+    p[1] = -m->d[5] * m->sa[5];
+    p[2] = -m->d[5] * m->ca[5];
+    if (post) {
+        for (i = 0; i < 3u; i++) rn[i] = m->post_inv.m[0][i];
+        dh_ikc_xform_f32_(&m->post_inv, ra, 0.0f, ra);
+        dh_ikc_xform_f32_(&m->post_inv, p, 1.0f, p);
+        dh_ikc_xform_f32_(T, rn, 0.0f, rn);
+    } else {
+        for (i = 0; i < 3u; i++) rn[i] = T->m[0][i];
+    }
+    dh_ikc_xform_f32_(T, ra, 0.0f, ra);
+    dh_ikc_xform_f32_(T, p, 1.0f, p);
+    if (pre) {
+        dh_ikc_xform_f32_(&m->pre_inv, rn, 0.0f, rn);
+        dh_ikc_xform_f32_(&m->pre_inv, ra, 0.0f, ra);
+        dh_ikc_xform_f32_(&m->pre_inv, p, 1.0f, p);
+    }
+}
+
+/* Arm values and flags (q[0..2]) of src into dst, q[3..5] left alone. */
+static void wrist_copy_arm(dh_ikc_sol_f32 *dst, const dh_ikc_sol_f32 *src)
+{
+    dst->q[0] = src->q[0];
+    dst->q[1] = src->q[1];
+    dst->q[2] = src->q[2];
+    dst->flags = src->flags;
+}
+
+/* Entries of sol[0..n-1] whose flags are not IKC_GAP moved to the front
+ * (arm values only when arm, else whole entries), in order. */
+static DH_NOINLINE uint32_t wrist_compact(dh_ikc_sol_f32 *sol, uint32_t n, int arm)
+{
+    uint32_t i, out = 0;
+    for (i = 0; i < n; i++) {
+        if (sol[i].flags == IKC_GAP) continue;
+        if (out != i) {
+            if (arm) wrist_copy_arm(&sol[out], &sol[i]);
+            else sol[out] = sol[i];
+        }
+        out++;
+    }
+    return out;
+}
+
+uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, dh_ikc_sol_f32 *sol)
+{
+    uint32_t i, na, base;
+    float c4;
+    wrist_prepare(m, T, sol);
+    /* shoulder branches in sol[0..1], each -> elbow branches at 2b, 2b+1
+     * (from the last: nothing unread is overwritten) */
+    na = wrist_shoulder(m, dh_ikc_cref_f32_(m, q_ref, 0u), sol);
+    for (i = na; i-- > 0u;) {
+        uint32_t ne;
+        if (i != 0u) wrist_copy_arm(&sol[2u * i], &sol[i]);
+        sol[2u * i + 1u].flags = IKC_GAP;
+        c4 = dh_ikc_cref_f32_(m, q_ref, 1u);
+        ne = (m->kind == DH_IKC_WRIST_RRR) ? wrist_elbow_rrr(m, c4, &sol[2u * i]) : wrist_elbow_rrp(m, c4, &sol[2u * i]);
+        if (ne == 0u) sol[2u * i].flags = IKC_GAP;
+    }
+    na = wrist_compact(sol, 2u * na, 1);
+    /* arms to the end (slots 8 - na .. 7), then arm j -> wrist solutions at
+     * 2j, 2j+1: every slot written has been read */
+    base = DH_IKC_MAX_SOL - na;
+    for (i = na; i-- > 0u;) wrist_copy_arm(&sol[base + i], &sol[i]);
+    for (i = 0; i < na; i++) {
+        wrist_a(m, q_ref, &sol[base + i], &sol[2u * i], IKC_RN(sol), IKC_RA(sol));
+        wrist_b(m, &sol[2u * i]);
+        wrist_c(&sol[2u * i]);
+    }
+    return wrist_compact(sol, 2u * na, 0);
+}

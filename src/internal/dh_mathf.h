@@ -1,0 +1,65 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * dh_mathf.h - PRIVATE libm-free float helpers (not installed): newlib's
+ * sinf/cosf/atan2f/sqrtf need more than the 256 B stack budget of a public
+ * function on Cortex-M0+. No libm, heap, mutable data, recursion or double;
+ * on Cortex-M0+ the only callees are libgcc's soft-float routines.
+ * Requires IEEE binary32, round to nearest, no -ffast-math, no FMA
+ * contraction (as dh_trig_f32.c). Tested by test/test_mathf.c and (the
+ * degree functions, through the public API) test/test_itrig_f32.c.
+ */
+#ifndef DHMATH_SRC_DH_MATHF_H
+#define DHMATH_SRC_DH_MATHF_H
+
+#include "dhmath/common.h"
+
+/**
+ * atan2f(y, x) in RADIANS without libm, with the C99 Annex F special cases
+ * (the sign of a zero result is the sign of y; NaN in, NaN out), result in
+ * [-pi, pi], <= 2 ulp. Method: u = mn / mx for mn < mx / 2, else
+ * u = (mn - mx) / (mn + mx) + pi/4 (exact numerator, Fast2Sum on the
+ * denominator), |u| <= 1/2, atan(u) = u + u z P(z), then K pi/4 (hi + lo)
+ * +- atan(u) summed with Fast2Sum: one rounding at the end.
+ */
+float dh_atan2f_(float y, float x);
+
+/**
+ * atan2(y, x) in DEGREES plus corr (degrees, added before the one final
+ * rounding), for finite (y, x) not both zero: the shared reduction of
+ * dh_atan2f_ on (x, y) scaled by a power of two (max magnitude in [1, 2)),
+ * then 45 K +- (180/pi) (u + ul + c) in double-float (hi + lo) arithmetic.
+ * Result in [-180, 180] (y = -0 with x < 0 gives -180; the sign of a zero
+ * result is that of y), within 1 ulp of the correctly rounded value when
+ * |corr| <= 2^-20 |result|; corr is dropped where min/max < 2^-60.
+ */
+float dh_atan2f_deg_(float y, float x, float corr);
+
+/**
+ * asin v (want_acos 0, in [-90, 90], odd bit for bit) or acos v (want_acos
+ * 1, in [0, 180]) in DEGREES for |v| <= 1 (not NaN), within 1 ulp of the
+ * correctly rounded value: sqrt(1 - v^2) in double-float and
+ * dh_atan2f_deg_ with the first-order effect of its low part as corr.
+ */
+float dh_asinf_deg_(float v, unsigned want_acos);
+
+/**
+ * sin x and cos x (RADIANS) into *s, *c (not NULL, not aliased) without
+ * libm, <= 2 ulp for every finite x; NaN or +-Inf gives NaN in both. |x| >
+ * pi/4 is reduced EXACTLY modulo pi/2 (Payne-Hanek in integers on a
+ * 224-bit 2/pi), then minimax polynomials; sin is odd and cos even bit for
+ * bit.
+ */
+void dh_sincosf_(float x, float *s, float *c);
+
+/* VSQRT.F32 (single-precision FPU) gives the bits of the integer version. */
+#if defined(__GNUC__) && defined(__arm__) && defined(__ARM_FP) && ((__ARM_FP & 4) != 0) && !defined(__SOFTFP__)
+#define DH_MATHF_VSQRT 1
+#else
+#define DH_MATHF_VSQRT 0
+#endif
+
+/** sqrtf(x) correctly rounded without libm: +-0 -> +-0, +Inf -> +Inf,
+ *  NaN or x < 0 -> NaN. */
+float dh_sqrtf_(float x);
+
+#endif /* DHMATH_SRC_DH_MATHF_H */

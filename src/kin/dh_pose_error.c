@@ -1,0 +1,130 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * dh_pose_error.c - the orientation error a(dR) = w, dR = Rt R^T (the
+ * rotation vector of dR, accurate at 0 and 180 degrees alike) and the pose
+ * error (position difference and w) of two float frames; the blocks that
+ * the float IK calls on its workspace (kin_impl.h). Method: docs/design.md,
+ * "Kinematics".
+ */
+#include "dhmath/kin.h"
+#include "kin_impl.h"
+#include "../internal/dh_mathf.h"
+#include "../internal/dh_floatops.h"
+
+#include <math.h>
+
+/* det of the 3x3 whose columns are c0, c1, c2: c0 . (c1 x c2) */
+int dh_kin_rot_ok_f32_(const float *c0, const float *c1, const float *c2)
+{
+    return dh_rot_cols_ok_f32(c0, c1, c2, DH_ROT_ERROR_TOL);
+}
+
+/* theta > 90 deg: the axis from the symmetric part (dR + dR^T)/2 =
+ * c I + (1 - c) k k^T, largest diagonal entry first, signed like u (held in
+ * w on entry; at exactly 180 deg k_m > 0 is kept). */
+static void pose_rotvec_big(const float *d, float *w, float tr, float theta)
+{
+    float c = 0.5f * tr, omc = 1.0f - c;   /* omc in (1, 2] */
+    float kv[3], km, kn, s;
+    uint32_t m = 0u, a;
+    if (d[4] > d[4u * m]) m = 1u;
+    if (d[8] > d[4u * m]) m = 2u;
+    km = (d[4u * m] - c) / omc;
+    km = dh_sqrtf_(km > 0.0f ? km : 0.0f);
+    if (!(km > 0.0f)) km = 1.0f;   /* unreachable for a rotation (km^2 >= 1/3) */
+    for (a = 0; a < 3u; a++)
+        kv[a] = (a == m) ? km : 0.5f * (d[3u * a + m] + d[3u * m + a]) / (omc * km);
+    kn = dh_sqrtf_(kv[0] * kv[0] + kv[1] * kv[1] + kv[2] * kv[2]);
+    s = (kv[0] * w[0] + kv[1] * w[1] + kv[2] * w[2] < 0.0f) ? -theta / kn : theta / kn;
+    w[0] = s * kv[0];
+    w[1] = s * kv[1];
+    w[2] = s * kv[2];
+}
+
+/* a(dR). The identity is NOT tested on the diagonal (it rounds to 1 for
+ * small angles while u still carries the rotation): u = 0 -> w = 0. */
+void dh_kin_rotvec_f32_(const float *d, float *w)
+{
+    float un, tr, theta;
+    w[0] = d[7] - d[5];                       /* u = (r32 - r23, r13 - r31, r21 - r12) */
+    w[1] = d[2] - d[6];
+    w[2] = d[3] - d[1];
+    un = dh_sqrtf_(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);   /* = 2 sin(theta) */
+    tr = d[0] + d[4] + d[8] - 1.0f;                         /* = 2 cos(theta) */
+    theta = dh_atan2f_(un, tr);               /* in [0, pi]: no acos domain error */
+    if (tr >= 0.0f) {
+        /* theta <= 90 deg: u is accurate; theta / un -> 1/2 as un -> 0 */
+        float f = (un > 0.0f) ? theta / un : 0.5f;
+        w[0] *= f;
+        w[1] *= f;
+        w[2] *= f;
+        return;
+    }
+    pose_rotvec_big(d, w, tr, theta);
+}
+
+/* d = Rt R^T row-major; ct[c], cr[c] point to column c of Rt, R. */
+static void pose_delta(const float *const *ct, const float *const *cr, float *d)
+{
+    uint32_t i, j, k;
+    for (i = 0; i < 3u; i++)
+        for (j = 0; j < 3u; j++) {
+            float s = 0.0f;
+            for (k = 0; k < 3u; k++) s += ct[k][i] * cr[k][j];
+            d[3u * i + j] = s;
+        }
+}
+
+dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh_vec3_f32 *w)
+{
+    float d[9], v[3];
+    const float *ct[3], *cr[3];
+    uint32_t i, j;
+
+    DH_ASSERT(R_target != NULL);
+    DH_ASSERT(R != NULL);
+    DH_ASSERT(w != NULL);
+
+    for (i = 0; i < 3u; i++)
+        for (j = 0; j < 3u; j++)
+            if (!dh_isfinite_f32(R_target->m[i][j]) || !dh_isfinite_f32(R->m[i][j])) return DH_ERR_NAN;
+    if (!dh_kin_rot_ok_f32_(R_target->m[0], R_target->m[1], R_target->m[2]) ||
+        !dh_kin_rot_ok_f32_(R->m[0], R->m[1], R->m[2]))
+        return DH_ERR_NOT_RIGID;
+    for (i = 0; i < 3u; i++) {
+        ct[i] = R_target->m[i];
+        cr[i] = R->m[i];
+    }
+    pose_delta(ct, cr, d);
+    dh_kin_rotvec_f32_(d, v);
+    w->x = v[0];
+    w->y = v[1];
+    w->z = v[2];
+    return DH_OK;
+}
+
+dh_status dh_pose_error_f32(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float e[6])
+{
+    float d[9];
+    const float *ct[3], *cr[3];
+    uint32_t i, j;
+
+    DH_ASSERT(T_target != NULL);
+    DH_ASSERT(T != NULL);
+    DH_ASSERT(e != NULL);
+
+    for (i = 0; i < 4u; i++)
+        for (j = 0; j < 3u; j++)
+            if (!dh_isfinite_f32(T_target->m[i][j]) || !dh_isfinite_f32(T->m[i][j])) return DH_ERR_NAN;
+    if (!dh_kin_rot_ok_f32_(T_target->m[0], T_target->m[1], T_target->m[2]) ||
+        !dh_kin_rot_ok_f32_(T->m[0], T->m[1], T->m[2]))
+        return DH_ERR_NOT_RIGID;
+    for (i = 0; i < 3u; i++) {
+        ct[i] = T_target->m[i];
+        cr[i] = T->m[i];
+    }
+    pose_delta(ct, cr, d);
+    dh_kin_rotvec_f32_(d, e + 3);
+    for (i = 0; i < 3u; i++) e[i] = T_target->m[3][i] - T->m[3][i];
+    return DH_OK;
+}

@@ -1,0 +1,45 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * kin_impl.h - PRIVATE blocks of the kinematics family (src/kin/, not
+ * installed): the Jacobian and orientation-error blocks that the IK solvers
+ * call. dh_ik_f32 calls them one after the other on its workspace
+ * to stay within the 256 B stack budget; the Jacobian pass calls no
+ * trigonometry (sin/cos precomputed) and only libgcc below it.
+ * F (12 floats): the 3x4 part of a frame by columns n, o, a, p,
+ * F[3c + k] = row k of column c (as dh_mat4_f32.m[c][k]).
+ */
+#ifndef DHMATH_SRC_KIN_IMPL_H
+#define DHMATH_SRC_KIN_IMPL_H
+
+#include "dhmath/kin.h"
+#include "../robot/robot_impl.h" /* the fixed FK steps */
+
+/* Jacobian (6 x n row-major, base frame) and end frame F from
+ * scd[3i..3i+2] = sin theta_i, cos theta_i, d_i. No argument checks (n,
+ * convention, joint types, float path: the caller's job); J, F, scd do not
+ * overlap. 1 when every entry of J and F is finite, else 0. */
+int dh_kin_jac_f32_(const dh_robot *r, const float *scd, float *J, float *F);
+
+/* a(dR) of dh_rot_error_f32 for dR row-major, d[3 row + col], into w[0..2]
+ * (d and w do not overlap). */
+void dh_kin_rotvec_f32_(const float *d, float *w);
+
+/* dh_rot_cols_ok_f32 with DH_ROT_ERROR_TOL (columns c0, c1, c2). */
+int dh_kin_rot_ok_f32_(const float *c0, const float *c1, const float *c2);
+
+/* dh_jacobian_q's body (dh_jacobian_q.c) without its argument checks (n,
+ * fixed path, convention, joint types: the caller's) and with the end
+ * frame F supplied by the caller; nonzero when an entry saturated. */
+int dh_kin_jac_q_(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *F);
+
+/* dh_rot_error_q's body (dh_pose_error_q.c) without its rigidity checks (the
+ * caller's): s->w = a(Rt R^T), Q3.29 rad; s->D (dR) and s->q scratch, in
+ * the caller's memory (dh_ik_q keeps them off the stack: 19 words). */
+typedef struct {
+    dh_frame_q D;
+    dh_dir3_q w;
+    int32_t q[4];
+} dh_kin_rot_scratch_q;
+void dh_kin_rot_error_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_kin_rot_scratch_q *s);
+
+#endif /* DHMATH_SRC_KIN_IMPL_H */

@@ -1,0 +1,687 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * dh_mat4.c - float 4x4 homogeneous transforms: constructors, accessors,
+ * products and application to points, directions and planes (Paul 1981,
+ * chapter 1).
+ *
+ * Storage is column-major (m[col][row]); see dh_common.h. Every sum is
+ * evaluated left to right (k = 0, 1, 2, 3), so the fast paths and the
+ * general loops give the same bits (NaN payloads aside) on every target.
+ * "x + 0.0f" maps -0 to +0 and changes nothing else.
+ */
+#include <float.h>
+#include <math.h>
+
+#include "dhmath/mat4.h"
+#include "dhmath/trig.h"
+#include "../internal/dh_floatops.h"
+#include "../internal/dh_mathf.h"
+
+static void dh_set_identity(dh_mat4_f32 *T)
+{
+    int c, r;
+    for (c = 0; c < 4; c++) {
+        for (r = 0; r < 4; r++) T->m[c][r] = 0.0f;
+        T->m[c][c] = 1.0f;
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+/* constructors                                                           */
+/* ---------------------------------------------------------------------- */
+
+void dh_mat4_identity_f32(dh_mat4_f32 *T)
+{
+    DH_ASSERT(T != NULL);
+    dh_set_identity(T);
+}
+
+/* o = (a, b, c, d): a 4-float struct as an array */
+DH_INLINE void dh_load4(float *o, float a, float b, float c, float d)
+{
+    o[0] = a;
+    o[1] = b;
+    o[2] = c;
+    o[3] = d;
+}
+
+/* The identity with (x, y, z) in column 3 (col 3) or on the diagonal (col -1). */
+static void dh_identity_xyz(dh_mat4_f32 *T, float x, float y, float z, int col)
+{
+    DH_ASSERT(T != NULL);
+    dh_set_identity(T);
+    T->m[(col < 0) ? 0 : col][0] = x;
+    T->m[(col < 0) ? 1 : col][1] = y;
+    T->m[(col < 0) ? 2 : col][2] = z;
+}
+
+void dh_mat4_trans_f32(float x, float y, float z, dh_mat4_f32 *T)
+{
+    dh_identity_xyz(T, x, y, z, 3);
+}
+
+/*
+ * Rot(x|y|z, deg) is Rot(k, deg) about the coordinate axis k: the
+ * normalisation of a unit axis is exact and every product with its zero
+ * components is +-0, which the "+ 0.0f" of dh_mat4_rot_axis_f32 maps to +0.
+ */
+static dh_status dh_rotk(dh_mat4_f32 *T, float deg, int axis)
+{
+    float k[3] = {0.0f, 0.0f, 0.0f};
+#if DH_FAST_PATHS
+    /* finite deg: the same matrix written directly, the rotation in the
+     * plane (i, j) = (axis + 1, axis + 2) mod 3; 0 - s is never -0 */
+    if (dh_isfinite_f32(deg)) {
+        const int i = (axis == 2) ? 0 : axis + 1, j = (i == 2) ? 0 : i + 1;
+        float s, c;
+        DH_ASSERT(T != NULL);
+        (void)dh_sincos_f32(deg, &s, &c);
+        s += 0.0f;
+        c += 0.0f;
+        dh_set_identity(T);
+        T->m[i][i] = c;
+        T->m[i][j] = s;
+        T->m[j][i] = 0.0f - s;
+        T->m[j][j] = c;
+        return DH_OK;
+    }
+#endif
+    k[axis] = 1.0f;
+    return dh_mat4_rot_axis_f32(k[0], k[1], k[2], deg, T);
+}
+
+dh_status dh_mat4_rotx_f32(float deg, dh_mat4_f32 *T)
+{
+    return dh_rotk(T, deg, 0);
+}
+
+dh_status dh_mat4_roty_f32(float deg, dh_mat4_f32 *T)
+{
+    return dh_rotk(T, deg, 1);
+}
+
+dh_status dh_mat4_rotz_f32(float deg, dh_mat4_f32 *T)
+{
+    return dh_rotk(T, deg, 2);
+}
+
+/*
+ * Diagonal entry k_i^2 vers + cos of Paul 1981 eq. 1.70 for a unit axis.
+ * When k_i^2 is large the equivalent 1 - (k_j^2 + k_l^2) vers is used: more
+ * accurate there and exactly 1 on a coordinate axis.
+ */
+static float dh_rot_diag(float ki2, float others2, float v, float c)
+{
+    return (ki2 >= 0.5f) ? 1.0f - others2 * v : ki2 * v + c;
+}
+
+dh_status dh_mat4_rot_axis_f32(float kx, float ky, float kz, float deg, dh_mat4_f32 *T)
+{
+    float k[4], m = 0.0f, len = 0.0f, s, c, v, z = 0.0f, x, y, w, p0;
+    int i, j, a, b, t;
+    DH_ASSERT(T != NULL);
+#if DH_FAST_PATHS
+    /* finite input, non-zero axis: eq. 1.70 written out, same operations */
+    m = fabsf(kx);
+    if (fabsf(ky) > m) m = fabsf(ky);
+    if (fabsf(kz) > m) m = fabsf(kz);
+    if (dh_isfinite_f32(kx) && dh_isfinite_f32(ky) && dh_isfinite_f32(kz) &&
+        dh_isfinite_f32(deg) && m >= FLT_MIN) {
+        float x2, y2, z2, xyv, xzv, yzv;
+        x = kx / m;
+        y = ky / m;
+        w = kz / m;
+        len = dh_sqrtf_(x * x + y * y + w * w);
+        x /= len;
+        y /= len;
+        w /= len;
+        (void)dh_sincos_f32(deg, &s, &c);
+        s += 0.0f;
+        c += 0.0f;
+        v = 1.0f - c;
+        x2 = x * x;
+        y2 = y * y;
+        z2 = w * w;
+        xyv = x * y * v;
+        xzv = x * w * v;
+        yzv = y * w * v;
+        T->m[0][0] = dh_rot_diag(x2, y2 + z2, v, c);
+        T->m[0][1] = (xyv + w * s) + 0.0f;
+        T->m[0][2] = (xzv - y * s) + 0.0f;
+        T->m[0][3] = 0.0f;
+        T->m[1][0] = (xyv - w * s) + 0.0f;
+        T->m[1][1] = dh_rot_diag(y2, x2 + z2, v, c);
+        T->m[1][2] = (yzv + x * s) + 0.0f;
+        T->m[1][3] = 0.0f;
+        T->m[2][0] = (xzv + y * s) + 0.0f;
+        T->m[2][1] = (yzv - x * s) + 0.0f;
+        T->m[2][2] = dh_rot_diag(z2, x2 + y2, v, c);
+        T->m[2][3] = 0.0f;
+        T->m[3][0] = 0.0f;
+        T->m[3][1] = 0.0f;
+        T->m[3][2] = 0.0f;
+        T->m[3][3] = 1.0f;
+        return DH_OK;
+    }
+    m = 0.0f;
+#endif
+    k[0] = kx;
+    k[1] = ky;
+    k[2] = kz;
+    k[3] = deg;
+    /* z is NaN iff one of them is NaN or Inf; m the largest |k_i| */
+    for (i = 0; i < 4; i++) {
+        z += k[i] * 0.0f;
+        if (i < 3 && fabsf(k[i]) > m) m = fabsf(k[i]);
+    }
+    if (!dh_feq_f32(z, z)) return DH_ERR_NAN;
+    if (m < FLT_MIN) return DH_ERR_ZERO_AXIS;
+    /* scaled by the largest component: no overflow, len in [1, sqrt 3] */
+    for (i = 0; i < 3; i++) {
+        k[i] /= m;
+        len += k[i] * k[i];
+    }
+    len = dh_sqrtf_(len);
+    (void)dh_sincos_f32(deg, &s, &c); /* DH_OK: deg is finite */
+    s += 0.0f;
+    c += 0.0f;
+    v = 1.0f - c; /* vers */
+    dh_set_identity(T);
+    /* eq. 1.70 by the axis j and the two others a, b in cyclic order: the
+     * diagonal entry j, (column a, row b) = k_a k_b vers + k_j sin and
+     * (column b, row a) = k_a k_b vers - k_j sin */
+    x = k[0];
+    y = k[1];
+    w = k[2];
+    for (i = 0, j = 0, a = 1, b = 2; i < 3; i++) {
+        const float uj = x / len, ua = y / len, ub = w / len; /* unit axis */
+        const float p = ua * ub * v, q = uj * s;
+        T->m[j][j] = dh_rot_diag(uj * uj, ua * ua + ub * ub, v, c);
+        T->m[a][b] = (p + q) + 0.0f;
+        T->m[b][a] = (p - q) + 0.0f;
+        t = j; /* (j, a, b) -> (a, b, j) */
+        j = a;
+        a = b;
+        b = t;
+        p0 = x;
+        x = y;
+        y = w;
+        w = p0;
+    }
+    return DH_OK;
+}
+
+void dh_mat4_scale_f32(float sx, float sy, float sz, dh_mat4_f32 *T)
+{
+    dh_identity_xyz(T, sx, sy, sz, -1);
+}
+
+/* f = +-0 gives r = -+Inf, so the finiteness test of r is also f == 0 */
+dh_status dh_mat4_persp_f32(int axis, float f, dh_mat4_f32 *T)
+{
+    float r;
+    DH_ASSERT(T != NULL);
+    if (axis < 0 || axis > 2) return DH_ERR_ARG;
+    if (!dh_isfinite_f32(f)) return DH_ERR_NAN;
+    r = -1.0f / f;
+    if (!dh_isfinite_f32(r)) return DH_ERR_DOMAIN;
+    dh_set_identity(T);
+    T->m[axis][3] = r; /* bottom row, column of the axis (eq. 1.127) */
+    return DH_OK;
+}
+
+void dh_mat4_from_noap_f32(const dh_vec3_f32 *n, const dh_vec3_f32 *o, const dh_vec3_f32 *a,
+                           const dh_vec3_f32 *p, dh_mat4_f32 *T)
+{
+    DH_ASSERT(T != NULL && n != NULL && o != NULL && a != NULL && p != NULL);
+    {
+        /* read everything first: the vectors may live inside T */
+        const dh_vec3_f32 nn = *n, oo = *o, aa = *a, pp = *p;
+        T->m[0][0] = nn.x; T->m[0][1] = nn.y; T->m[0][2] = nn.z; T->m[0][3] = 0.0f;
+        T->m[1][0] = oo.x; T->m[1][1] = oo.y; T->m[1][2] = oo.z; T->m[1][3] = 0.0f;
+        T->m[2][0] = aa.x; T->m[2][1] = aa.y; T->m[2][2] = aa.z; T->m[2][3] = 0.0f;
+        T->m[3][0] = pp.x; T->m[3][1] = pp.y; T->m[3][2] = pp.z; T->m[3][3] = 1.0f;
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+/* accessors                                                              */
+/* ---------------------------------------------------------------------- */
+
+static dh_vec3_f32 dh_col3(const dh_mat4_f32 *T, int c)
+{
+    dh_vec3_f32 v;
+    DH_ASSERT(T != NULL);
+    v.x = T->m[c][0];
+    v.y = T->m[c][1];
+    v.z = T->m[c][2];
+    return v;
+}
+
+dh_vec3_f32 dh_mat4_n_f32(const dh_mat4_f32 *T) { return dh_col3(T, 0); }
+dh_vec3_f32 dh_mat4_o_f32(const dh_mat4_f32 *T) { return dh_col3(T, 1); }
+dh_vec3_f32 dh_mat4_a_f32(const dh_mat4_f32 *T) { return dh_col3(T, 2); }
+dh_vec3_f32 dh_mat4_p_f32(const dh_mat4_f32 *T) { return dh_col3(T, 3); }
+
+void dh_mat4_get_rot_f32(const dh_mat4_f32 *T, dh_mat3_f32 *R)
+{
+    int c, r;
+    DH_ASSERT(T != NULL && R != NULL);
+    for (c = 0; c < 3; c++) {
+        for (r = 0; r < 3; r++) R->m[c][r] = T->m[c][r];
+    }
+}
+
+void dh_mat4_set_rot_f32(dh_mat4_f32 *T, const dh_mat3_f32 *R)
+{
+    int c, r;
+    DH_ASSERT(T != NULL && R != NULL);
+    for (c = 0; c < 3; c++) {
+        for (r = 0; r < 3; r++) T->m[c][r] = R->m[c][r];
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+/* composition                                                            */
+/* ---------------------------------------------------------------------- */
+
+/*
+ * o[r] = A_r0 in[0] + ... + A_r(n-1) in[n-1] for the rows r < 4: column c
+ * of a product (in = column c of B), a point (in = u, 1: the + p is p * 1,
+ * exact), a direction (n = 3), a homogeneous point; n is 3 or 4. The four
+ * sums are kept in registers, one column of A per step; each still runs
+ * k = 0, 1, ... .
+ */
+static void dh_lin(const dh_mat4_f32 *A, const float *in, float *o, int n)
+{
+    float x = in[0];
+    float o0 = A->m[0][0] * x, o1 = A->m[0][1] * x, o2 = A->m[0][2] * x, o3 = A->m[0][3] * x;
+    const int nk = (n < 4) ? n : 4; /* in[] has at most 4 entries */
+    int k = 1;
+    do { /* nk >= 2: a bottom-tested loop */
+        const float *c = A->m[k];
+        x = in[k];
+        o0 += c[0] * x;
+        o1 += c[1] * x;
+        o2 += c[2] * x;
+        o3 += c[3] * x;
+    } while (++k < nk);
+    o[0] = o0;
+    o[1] = o1;
+    o[2] = o2;
+    o[3] = o3;
+}
+
+/* dh_lin() of in = (x, y, z, 1): a point (n = 4; its p * 1 is p, exact) or
+ * a direction (n = 3) */
+static void dh_lin3(const dh_mat4_f32 *A, float x, float y, float z, float *o, int n)
+{
+    float in[4];
+    in[0] = x;
+    in[1] = y;
+    in[2] = z;
+    in[3] = 1.0f;
+    dh_lin(A, in, o, n);
+}
+
+#if DH_FAST_PATHS
+/* The register form below on scalar FPUs (Cortex-M4F/M7); the copy form
+ * on 4-wide SIMD hosts (vectorised) and with soft float (where the
+ * register form saves 2 % of the instructions for about 1 KiB of flash on
+ * Cortex-M0+). */
+#if defined(__SSE__) || defined(__ARM_NEON) || defined(__ARM_NEON__) || defined(__ALTIVEC__) || DH_SOFT_FLOAT
+/*
+ * Unrolled products: column c of A*B is the combination of the columns of
+ * A (copied to a local first) with the weights of column c of B, read
+ * before column c of out is written, so out may alias A and/or B. Each
+ * 4-row statement is one vector multiply-add chain on 4-wide float SIMD
+ * (SSE2, NEON) and scalar code with soft float.
+ */
+#define DH_MUL_COL4(out, c, B)                                                          \
+    do {                                                                                \
+        const float x_ = (B)->m[c][0], y_ = (B)->m[c][1], z_ = (B)->m[c][2], w_ = (B)->m[c][3]; \
+        for (r = 0; r < 4; r++) (out)->m[c][r] = a.m[0][r] * x_ + a.m[1][r] * y_ + a.m[2][r] * z_ + a.m[3][r] * w_; \
+    } while (0)
+
+/* Rows the affine product computes before its bottom row is set to 0 0 0 1:
+ * four where 4-wide SIMD makes a column one vector operation, the three
+ * needed ones with soft float. */
+#if defined(__SSE__) || defined(__ARM_NEON) || defined(__ARM_NEON__) || defined(__ALTIVEC__)
+#define DH_AFFINE_ROWS 4
+#else
+#define DH_AFFINE_ROWS 3
+#endif
+
+#define DH_MUL_COL3(out, c, B)                                                          \
+    do {                                                                                \
+        const float x_ = (B)->m[c][0], y_ = (B)->m[c][1], z_ = (B)->m[c][2];             \
+        for (r = 0; r < DH_AFFINE_ROWS; r++) (out)->m[c][r] = a.m[0][r] * x_ + a.m[1][r] * y_ + a.m[2][r] * z_;  \
+    } while (0)
+
+/* The unrolled full (affine 0) or affine (affine 1, a constant) product. */
+DH_INLINE void dh_mul_unrolled(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int affine)
+{
+    dh_mat4_f32 a;
+    int r;
+    DH_ASSERT(out != NULL && A != NULL && B != NULL);
+    a = *A;
+    if (!affine) {
+        DH_MUL_COL4(out, 0, B);
+        DH_MUL_COL4(out, 1, B);
+        DH_MUL_COL4(out, 2, B);
+        DH_MUL_COL4(out, 3, B);
+        return;
+    }
+    DH_MUL_COL3(out, 0, B);
+    DH_MUL_COL3(out, 1, B);
+    DH_MUL_COL3(out, 2, B);
+    {
+        const float x = B->m[3][0], y = B->m[3][1], z = B->m[3][2];
+        for (r = 0; r < DH_AFFINE_ROWS; r++) out->m[3][r] = a.m[0][r] * x + a.m[1][r] * y + a.m[2][r] * z + a.m[3][r];
+    }
+    out->m[0][3] = 0.0f;
+    out->m[1][3] = 0.0f;
+    out->m[2][3] = 0.0f;
+    out->m[3][3] = 1.0f;
+}
+#else
+/*
+ * Unrolled products on scalar FPUs (Cortex-M4F/M7): every
+ * element of A that the product uses is read into a local first (out may
+ * alias A), then column c of out is computed from column c of B, read
+ * before column c of out is written (out may alias B). Straight-line code
+ * with no copy through memory: the locals are registers (the 16 of the
+ * full product, the weights and the sums fit the 32 single registers of
+ * FPv4/FPv5). Same sums in the same order as the general path.
+ */
+#define DH_A_COL(k) \
+    const float a0##k = A->m[k][0], a1##k = A->m[k][1], a2##k = A->m[k][2]
+#define DH_ROWS3(c)                                                          \
+    do {                                                                     \
+        const float x_ = B->m[c][0], y_ = B->m[c][1], z_ = B->m[c][2];       \
+        out->m[c][0] = a00 * x_ + a01 * y_ + a02 * z_;                       \
+        out->m[c][1] = a10 * x_ + a11 * y_ + a12 * z_;                       \
+        out->m[c][2] = a20 * x_ + a21 * y_ + a22 * z_;                       \
+    } while (0)
+#define DH_ROWS4(c)                                                          \
+    do {                                                                     \
+        const float x_ = B->m[c][0], y_ = B->m[c][1], z_ = B->m[c][2], w_ = B->m[c][3]; \
+        out->m[c][0] = a00 * x_ + a01 * y_ + a02 * z_ + a03 * w_;            \
+        out->m[c][1] = a10 * x_ + a11 * y_ + a12 * z_ + a13 * w_;            \
+        out->m[c][2] = a20 * x_ + a21 * y_ + a22 * z_ + a23 * w_;            \
+        out->m[c][3] = a30 * x_ + a31 * y_ + a32 * z_ + a33 * w_;            \
+    } while (0)
+
+/* The unrolled full (affine 0) or affine (affine 1, a constant) product. */
+DH_INLINE void dh_mul_unrolled(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int affine)
+{
+    DH_ASSERT(out != NULL && A != NULL && B != NULL);
+    if (!affine) {
+        DH_A_COL(0);
+        DH_A_COL(1);
+        DH_A_COL(2);
+        DH_A_COL(3);
+        const float a30 = A->m[0][3], a31 = A->m[1][3], a32 = A->m[2][3], a33 = A->m[3][3];
+        DH_ROWS4(0);
+        DH_ROWS4(1);
+        DH_ROWS4(2);
+        DH_ROWS4(3);
+        return;
+    }
+    {
+        DH_A_COL(0);
+        DH_A_COL(1);
+        DH_A_COL(2);
+        DH_A_COL(3);
+        DH_ROWS3(0);
+        DH_ROWS3(1);
+        DH_ROWS3(2);
+        {
+            const float x = B->m[3][0], y = B->m[3][1], z = B->m[3][2];
+            out->m[3][0] = a00 * x + a01 * y + a02 * z + a03;
+            out->m[3][1] = a10 * x + a11 * y + a12 * z + a13;
+            out->m[3][2] = a20 * x + a21 * y + a22 * z + a23;
+        }
+        out->m[0][3] = 0.0f;
+        out->m[1][3] = 0.0f;
+        out->m[2][3] = 0.0f;
+        out->m[3][3] = 1.0f;
+    }
+}
+#endif
+#endif
+
+/*
+ * out = A B (aff == 0), or the affine product (aff == 1): columns 0..2 of
+ * R_A R_B, column 3 R_A p_B + p_A (the fourth term of a point), bottom row
+ * 0 0 0 1; the bottom rows of A and B are not used. Built in a temporary,
+ * so out may alias A and/or B.
+ */
+DH_SPEED_INLINE void dh_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int aff)
+{
+    dh_mat4_f32 t;
+    int i;
+#if DH_FAST_PATHS
+    dh_mul_unrolled(A, B, out, aff);
+    return;
+#endif
+    DH_ASSERT(out != NULL && A != NULL && B != NULL);
+    /* the columns of R_A R_B (aff) or of A B: B's columns read before out
+     * is written */
+    for (i = 0; i < 4 - aff; i++) dh_lin(A, B->m[i], &t.m[i][0], 4 - aff);
+    if (aff) {
+        /* column 3: R_A p_B + p_A, A applied to the point p_B */
+        dh_lin3(A, B->m[3][0], B->m[3][1], B->m[3][2], t.m[3], 4);
+        t.m[0][3] = 0.0f;
+        t.m[1][3] = 0.0f;
+        t.m[2][3] = 0.0f;
+        t.m[3][3] = 1.0f;
+    }
+    *out = t;
+}
+
+void dh_mat4_mul_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out)
+{
+    dh_mul(A, B, out, 0);
+}
+
+void dh_mat4_mul_affine_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out)
+{
+    dh_mul(A, B, out, 1);
+}
+
+void dh_mat4_premul_f32(dh_mat4_f32 *T, const dh_mat4_f32 *X)
+{
+    dh_mat4_mul_f32(X, T, T);
+}
+
+void dh_mat4_postmul_f32(dh_mat4_f32 *T, const dh_mat4_f32 *X)
+{
+    dh_mat4_mul_f32(T, X, T);
+}
+
+/* ---------------------------------------------------------------------- */
+/* application                                                            */
+/* ---------------------------------------------------------------------- */
+
+#if DH_FAST_PATHS
+/* R u (+ p when point, a constant) written out; u is read first, so u and v
+ * may be the same object. ((a + b) + c) + d is the general path's order. */
+DH_INLINE void dh_apply3_unrolled(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, int point)
+{
+    float x, y, z, rx, ry, rz;
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
+    x = u->x;
+    y = u->y;
+    z = u->z;
+    rx = T->m[0][0] * x + T->m[1][0] * y + T->m[2][0] * z;
+    ry = T->m[0][1] * x + T->m[1][1] * y + T->m[2][1] * z;
+    rz = T->m[0][2] * x + T->m[1][2] * y + T->m[2][2] * z;
+    if (point) {
+        rx += T->m[3][0];
+        ry += T->m[3][1];
+        rz += T->m[3][2];
+    }
+    v->x = rx;
+    v->y = ry;
+    v->z = rz;
+}
+#endif
+
+/* v = rows 0..2 of the n-term combination of the columns of T with u, 1
+ * (u, v may be the same object: u is read first) */
+DH_SPEED_INLINE void dh_apply3(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, int n)
+{
+    float o[4];
+#if DH_FAST_PATHS
+    dh_apply3_unrolled(T, u, v, n == 4);
+    return;
+#endif
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
+    dh_lin3(T, u->x, u->y, u->z, o, n);
+    v->x = o[0];
+    v->y = o[1];
+    v->z = o[2];
+}
+
+void dh_mat4_apply_point_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
+{
+    dh_apply3(T, u, v, 4);
+}
+
+void dh_mat4_apply_dir_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
+{
+    dh_apply3(T, u, v, 3);
+}
+
+#if DH_FAST_PATHS
+/* rows 0..3 of T (x y z w)^T written out, for the fast paths */
+#define DH_VEC4_ROWS(T, x, y, z, w, o0, o1, o2, o3)                                       \
+    do {                                                                                  \
+        (o0) = (T)->m[0][0] * (x) + (T)->m[1][0] * (y) + (T)->m[2][0] * (z) + (T)->m[3][0] * (w); \
+        (o1) = (T)->m[0][1] * (x) + (T)->m[1][1] * (y) + (T)->m[2][1] * (z) + (T)->m[3][1] * (w); \
+        (o2) = (T)->m[0][2] * (x) + (T)->m[1][2] * (y) + (T)->m[2][2] * (z) + (T)->m[3][2] * (w); \
+        (o3) = (T)->m[0][3] * (x) + (T)->m[1][3] * (y) + (T)->m[2][3] * (z) + (T)->m[3][3] * (w); \
+    } while (0)
+#endif
+
+void dh_mat4_apply_vec4_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec4_f32 *v)
+{
+    float in[4], o[4];
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
+#if DH_FAST_PATHS
+    in[0] = u->x;
+    in[1] = u->y;
+    in[2] = u->z;
+    in[3] = u->w;
+    DH_VEC4_ROWS(T, in[0], in[1], in[2], in[3], v->x, v->y, v->z, v->w);
+    return;
+#endif
+    in[0] = u->x;
+    in[1] = u->y;
+    in[2] = u->z;
+    in[3] = u->w;
+    dh_lin(T, in, o, 4);
+    v->x = o[0];
+    v->y = o[1];
+    v->z = o[2];
+    v->w = o[3];
+}
+
+/* x * 0 is +-0 for finite x and NaN for NaN and +-Inf; a sum of +-0 is
+ * never NaN */
+int dh_mat4_isfinite_f32(const dh_mat4_f32 *T)
+{
+    float z = 0.0f;
+    int c, r;
+    DH_ASSERT(T != NULL);
+    for (c = 0; c < 4; c++) {
+        for (r = 0; r < 4; r++) z += T->m[c][r] * 0.0f;
+    }
+    return dh_feq_f32(z, z);
+}
+
+dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec3_f32 *v)
+{
+    float in[4], h[4], z = 0.0f, zi = 0.0f;
+    int i;
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
+    dh_load4(in, u->x, u->y, u->z, u->w);
+#if DH_FAST_PATHS
+    /* finite h with w != 0 and finite quotients; the general path below
+     * recomputes the same h and classifies everything else */
+    DH_VEC4_ROWS(T, in[0], in[1], in[2], in[3], h[0], h[1], h[2], h[3]);
+    if (dh_isfinite_f32(h[0]) && dh_isfinite_f32(h[1]) && dh_isfinite_f32(h[2]) &&
+        dh_isfinite_f32(h[3]) && !dh_feq_f32(h[3], 0.0f)) {
+        const float x = h[0] / h[3], y = h[1] / h[3], w = h[2] / h[3];
+        if (dh_isfinite_f32(x) && dh_isfinite_f32(y) && dh_isfinite_f32(w)) {
+            v->x = x + 0.0f;
+            v->y = y + 0.0f;
+            v->z = w + 0.0f;
+            return DH_OK;
+        }
+    }
+#endif
+    dh_lin(T, in, h, 4);
+    for (i = 0; i < 4; i++) {
+        z += h[i] * 0.0f;
+        zi += in[i] * 0.0f;
+    }
+    if (!dh_feq_f32(z, z)) return (dh_mat4_isfinite_f32(T) && dh_feq_f32(zi, zi)) ? DH_ERR_OVERFLOW : DH_ERR_NAN;
+    if (dh_feq_f32(h[3], 0.0f)) return DH_ERR_DOMAIN;
+    for (i = 0; i < 3; i++) {
+        h[i] = h[i] / h[3] + 0.0f;
+        z += h[i] * 0.0f;
+    }
+    if (!dh_feq_f32(z, z)) return DH_ERR_OVERFLOW;
+    v->x = h[0];
+    v->y = h[1];
+    v->z = h[2];
+    return DH_OK;
+}
+
+/* Q_j = P . (column j of Tinv) */
+void dh_plane_mul_f32(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv, dh_plane_f32 *Q)
+{
+    float p[4], q[4];
+    int j, k;
+    DH_ASSERT(P != NULL && Tinv != NULL && Q != NULL);
+    dh_load4(p, P->a, P->b, P->c, P->d);
+#if DH_FAST_PATHS
+    Q->a = p[0] * Tinv->m[0][0] + p[1] * Tinv->m[0][1] + p[2] * Tinv->m[0][2] + p[3] * Tinv->m[0][3];
+    Q->b = p[0] * Tinv->m[1][0] + p[1] * Tinv->m[1][1] + p[2] * Tinv->m[1][2] + p[3] * Tinv->m[1][3];
+    Q->c = p[0] * Tinv->m[2][0] + p[1] * Tinv->m[2][1] + p[2] * Tinv->m[2][2] + p[3] * Tinv->m[2][3];
+    Q->d = p[0] * Tinv->m[3][0] + p[1] * Tinv->m[3][1] + p[2] * Tinv->m[3][2] + p[3] * Tinv->m[3][3];
+    return;
+#endif
+    for (j = 0; j < 4; j++) {
+        float acc = p[0] * Tinv->m[j][0];
+        for (k = 1; k < 4; k++) acc += p[k] * Tinv->m[j][k];
+        q[j] = acc;
+    }
+    Q->a = q[0];
+    Q->b = q[1];
+    Q->c = q[2];
+    Q->d = q[3];
+}
+
+void dh_mat4_apply_points_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, size_t count)
+{
+    size_t i;
+    float r00, r10, r20, r01, r11, r21, r02, r12, r22, p0, p1, p2;
+    DH_ASSERT(T != NULL);
+    if (count == 0) return;
+    DH_ASSERT(u != NULL && v != NULL);
+    /* hoist T: element i of v is written after element i of u is read, so
+     * in-place use (u == v) is safe */
+    r00 = T->m[0][0]; r10 = T->m[0][1]; r20 = T->m[0][2];
+    r01 = T->m[1][0]; r11 = T->m[1][1]; r21 = T->m[1][2];
+    r02 = T->m[2][0]; r12 = T->m[2][1]; r22 = T->m[2][2];
+    p0 = T->m[3][0]; p1 = T->m[3][1]; p2 = T->m[3][2];
+    for (i = 0; i < count; i++) {
+        const float x = u[i].x, y = u[i].y, z = u[i].z;
+        v[i].x = r00 * x + r01 * y + r02 * z + p0;
+        v[i].y = r10 * x + r11 * y + r12 * z + p1;
+        v[i].z = r20 * x + r21 * y + r22 * z + p2;
+    }
+}
