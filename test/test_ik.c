@@ -39,7 +39,7 @@ static int within_limits(const dh_robot *r, const float *q)
 
 static void target_of(const dh_robot *r, const double *q, dh_mat4_f32 *T)
 {
-    dhs_mat4_d D;
+    dhr_mat4 D;
     int c, k;
     dhs_fk_ref_f32(r, q, NULL, &D);
     for (c = 0; c < 4; c++)
@@ -458,7 +458,7 @@ static void ik_masked_deterministic(void)
     dh_mat4_f32 T;
     double qd[6] = { 20, 40, -50, 30, 60, -20 };
     float q1[6], q2[6];
-    dhs_mat4_d D;
+    dhr_mat4 D;
     double qq[6];
     int k;
     DHT_EQ_INT(dhs_build(&dhs_puma560_m, &r), DH_OK);

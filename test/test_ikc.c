@@ -37,7 +37,7 @@ static float g_work[DH_IK_WORK_FLOATS(NJ)];
 
 static void target_of(const dh_robot *r, const double *q, dh_mat4_f32 *T)
 {
-    dhs_mat4_d D;
+    dhr_mat4 D;
     int c, k;
     dhs_fk_ref_f32(r, q, NULL, &D);
     for (c = 0; c < 4; c++)
@@ -126,7 +126,7 @@ static void check_solutions(const dh_robot *r, const dh_mat4_f32 *T, const dh_ik
  * (near two of them at once the amplifications multiply). */
 static int away_from(const dhs_robot *d, const double *q, double lim)
 {
-    dhs_mat4_d F[DHS_MAX_JOINTS];
+    dhr_mat4 F[DHS_MAX_JOINTS];
     double t5 = (q[4] + d->j[4].theta_deg) * D2R, x, y, reach = 0.0;
     unsigned i;
     if (sin(t5) * sin(t5) < lim) return 0;
@@ -410,7 +410,7 @@ static void ikc_shoulder_singular(void)
         for (t = 0; t < DHT_ITER(50); t++) {
             double q[NJ], lo, hi, flo, wp = 0, wr = 0;
             float qref[NJ] = { 0 };
-            dhs_mat4_d F[NJ];
+            dhr_mat4 F[NJ];
             dh_mat4_f32 T;
             dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
             uint32_t n_sol = 0, s, it;
@@ -492,7 +492,7 @@ static void ikc_elbow_boundary(void)
         }
     for (far = 0; far < 2; far++) {
         double q[6] = {20.0, -30.0, 0.0, 40.0, 50.0, -60.0}, w[3], nw = 0.0, wz = 0.0;
-        dhs_mat4_d F[DHS_MAX_JOINTS];
+        dhr_mat4 F[DHS_MAX_JOINTS];
         q[2] = phi / D2R - d->j[2].theta_deg;
         dhs_fk_desc(d, q, F, NULL);
         /* from the joint 2 axis (frame 1) to the wrist centre (frame 4), normal to that axis */

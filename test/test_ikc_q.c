@@ -63,8 +63,8 @@ static void desc_set(dhs_robot *d, const char *name, dh_convention conv, unsigne
     d->n = n;
     d->unit_per_m = 1000.0;
     memcpy(d->j, j, n * sizeof *j);
-    dhs_identity(&d->base);
-    dhs_identity(&d->tool);
+    dhr_identity(&d->base);
+    dhr_identity(&d->tool);
     scale_desc(d);
 }
 
@@ -131,7 +131,7 @@ static void build(const dhs_robot *d, dh_robot *r, dh_ikc_model_q *m, dh_ikc_kin
 
 /* ---- reference checks ----------------------------------------------------- */
 
-static double pos_err(const dhs_mat4_d *A, const dhs_mat4_d *B)
+static double pos_err(const dhr_mat4 *A, const dhr_mat4 *B)
 {
     double e = 0.0;
     int i;
@@ -142,7 +142,7 @@ static double pos_err(const dhs_mat4_d *A, const dhs_mat4_d *B)
     return e;
 }
 
-static double rot_err(const dhs_mat4_d *A, const dhs_mat4_d *B)
+static double rot_err(const dhr_mat4 *A, const dhr_mat4 *B)
 {
     double e = 0.0;
     int c, i;
@@ -154,7 +154,7 @@ static double rot_err(const dhs_mat4_d *A, const dhs_mat4_d *B)
     return e;
 }
 
-static void to_frame(const dhs_mat4_d *T, dh_frame_q *F)
+static void to_frame(const dhr_mat4 *T, dh_frame_q *F)
 {
     int c, i;
     for (c = 0; c < 3; c++)
@@ -179,13 +179,13 @@ typedef struct {
 } stats;
 
 /* every solution FK-correct; returns the index of the solution equal to qgen, or -1 */
-static int check_sols(const dh_robot *r, const dhs_mat4_d *Td, const dh_ikc_sol_q *sol, uint32_t ns, const int32_t *qgen,
+static int check_sols(const dh_robot *r, const dhr_mat4 *Td, const dh_ikc_sol_q *sol, uint32_t ns, const int32_t *qgen,
                       stats *st)
 {
     uint32_t s, i;
     int found = -1;
     for (s = 0; s < ns; s++) {
-        dhs_mat4_d Ts;
+        dhr_mat4 Ts;
         double pe, re, worst = 0.0;
         dhs_fk_ref_q(r, sol[s].q, NULL, &Ts);
         pe = pos_err(&Ts, Td);
@@ -228,7 +228,7 @@ static int near_limit(const dh_robot *r, const int32_t *q)
  * elbow and shoulder singularities of the families */
 static int away_u(const dhs_robot *d, const double *q, double umin)
 {
-    dhs_mat4_d fr[6], T;
+    dhr_mat4 fr[6], T;
     double o[3], o1[3], h2, u2, t3;
     int i;
     if (fabs(sin((q[4] + d->j[4].theta_deg) * PI_D / 180.0)) < AWAY) return 0;
@@ -266,7 +266,7 @@ static int away(const dhs_robot *d, const double *q)
 static int well_conditioned_to(const dhs_robot *d, const double *q, double tol, int nj)
 {
     double J[6][6], A[6][12], qp[6], qm[6], dx[6];
-    dhs_mat4_d T0, Tp, Tm;
+    dhr_mat4 T0, Tp, Tm;
     const double h = 1e-4;
     int i, j, k, c;
     dhs_fk_desc(d, q, NULL, &T0);
@@ -343,7 +343,7 @@ static void random_run(const dhs_robot *d, const dhs_robot *f, dh_ikc_kind kind,
     for (it = 0; it < iters; it++) {
         double q[6];
         int32_t qq[6];
-        dhs_mat4_d Td;
+        dhr_mat4 Td;
         dh_frame_q T;
         dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
         uint32_t ns = 0;
@@ -442,33 +442,33 @@ static void mdh_random(void)
 /* the Puma 560 with a base and a tool frame */
 static void puma_base_tool(dhs_robot *d)
 {
-    dhs_mat4_d A, B;
+    dhr_mat4 A, B;
     puma(d);
     d->name = "puma560_base_tool_mm";
-    dhs_rotz(&A, 30.0);
-    dhs_trans(&B, 100.0 * LS, -50.0 * LS, 200.0 * LS);
-    dhs_mul(&d->base, &A, &B);
-    dhs_rotx(&A, 10.0);
+    dhr_rotz(30.0, &A);
+    dhr_trans(100.0 * LS, -50.0 * LS, 200.0 * LS, &B);
+    dhr_mul(&A, &B, &d->base);
+    dhr_rotx(10.0, &A);
     B = d->base;
-    dhs_mul(&d->base, &B, &A);
-    dhs_trans(&A, 10.0 * LS, 20.0 * LS, 80.0 * LS);
-    dhs_rotx(&B, 20.0);
-    dhs_mul(&d->tool, &A, &B);
+    dhr_mul(&B, &A, &d->base);
+    dhr_trans(10.0 * LS, 20.0 * LS, 80.0 * LS, &A);
+    dhr_rotx(20.0, &B);
+    dhr_mul(&A, &B, &d->tool);
 }
 
 static void base_tool_random(void)
 {
     dhs_robot d, f;
-    dhs_mat4_d A, B;
+    dhr_mat4 A, B;
     puma(&f);
     puma_base_tool(&d);
     random_run(&d, &f, DH_IKC_WRIST_RRR, DHT_ITER(3000));
     /* the same with the KR5 (alpha6 = 180, a tool along z) */
     desc_set(&d, "kr5_base_tool_mm", DH_CONV_STANDARD, 6, kr5_j);
-    dhs_rotz(&A, -45.0);
-    dhs_trans(&B, 0.0, 300.0 * LS, 0.0);
-    dhs_mul(&d.base, &A, &B);
-    dhs_trans(&d.tool, 0.0, 0.0, 115.0 * LS);
+    dhr_rotz(-45.0, &A);
+    dhr_trans(0.0, 300.0 * LS, 0.0, &B);
+    dhr_mul(&A, &B, &d.base);
+    dhr_trans(0.0, 0.0, 115.0 * LS, &d.tool);
     desc_set(&f, "kr5_mm", DH_CONV_STANDARD, 6, kr5_j);
     random_run(&d, &f, DH_IKC_WRIST_RRR, DHT_ITER(3000));
 }
@@ -476,7 +476,7 @@ static void base_tool_random(void)
 /* ---- singular cases ------------------------------------------------------- */
 
 static void solve_q(const dh_robot *r, const dh_ikc_model_q *m, const int32_t *qq, const int32_t *qref, uint32_t opts,
-                    dh_ikc_sol_q *sol, uint32_t *ns, dhs_mat4_d *Td)
+                    dh_ikc_sol_q *sol, uint32_t *ns, dhr_mat4 *Td)
 {
     dh_frame_q T;
     dhs_fk_ref_q(r, qq, NULL, Td);
@@ -499,7 +499,7 @@ static void singular_wrist(void)
         int32_t qq[6];
         dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
         uint32_t ns, s, hits = 0;
-        dhs_mat4_d Td;
+        dhr_mat4 Td;
         dhs_random_q(&P, q);
         /* a well-conditioned arm (elbow far from stretched and folded,
          * shoulder bent): its angles come out within a few LSB, so the
@@ -541,7 +541,7 @@ static void singular_elbow(void)
     int32_t qq[6];
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
     uint32_t ns, s;
-    dhs_mat4_d Td;
+    dhr_mat4 Td;
     q[2] = phi;
     build(&P, &r, &m, DH_IKC_WRIST_RRR);
     dhs_q_from_double(&r, q, qq);
@@ -573,7 +573,7 @@ static void boundary_folded(void)
     dh_robot r;
     dh_ikc_model_q m;
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
-    dhs_mat4_d Td;
+    dhr_mat4 Td;
     uint32_t ns, s;
     int i, j, k;
     puma_base_tool(&d);
@@ -618,7 +618,7 @@ static void boundary_beyond(void)
     build(&P, &r, &m, DH_IKC_WRIST_RRR);
     for (folded = 0; folded < 2; folded++) {
         double q[6] = {20.0, -30.0, 0.0, 40.0, 50.0, -60.0}, w[3], nw = 0.0, wz = 0.0;
-        dhs_mat4_d fr[6], Td;
+        dhr_mat4 fr[6], Td;
         int32_t qq[6];
         q[2] = folded ? phi + 180.0 : phi;
         dhs_q_from_double(&r, q, qq);
@@ -634,7 +634,7 @@ static void boundary_beyond(void)
         nw = sqrt(nw);
         DHT_TRUE(fabs(nw - (folded ? rho - 431.8 : rho + 431.8) * LS) < 1e-3 * LS);
         for (far = 0; far < 2 - folded; far++) {
-            dhs_mat4_d Tm = Td;
+            dhr_mat4 Tm = Td;
             const double dist = (far ? ldexp(1.1, 8 - DH_QPOS_FRAC) : ldexp(0.9, 5 - DH_QPOS_FRAC)) * (folded ? -1.0 : 1.0);
             for (i = 0; i < 3; i++) Tm.m[3][i] += dist * w[i] / nw;
             to_frame(&Tm, &T);
@@ -667,7 +667,7 @@ static void singular_shoulder(void)
     int32_t qq[6], qref[6] = {0, 0, 0, 0, 0, 0};
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
     uint32_t ns, s;
-    dhs_mat4_d Td;
+    dhr_mat4 Td;
     puma(&P);
     d = P;
     d.j[2].d = 0.0;
@@ -696,7 +696,7 @@ static void limits_shift(void)
     int32_t qq[6], qref[6];
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
     uint32_t ns, idx;
-    dhs_mat4_d Td;
+    dhr_mat4 Td;
     int f;
     puma(&P);
     build(&P, &r, &m, DH_IKC_WRIST_RRR);
@@ -740,7 +740,7 @@ static void limits_drop_keep(void)
     int32_t qq[6];
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL], all[DH_IKC_MAX_SOL];
     uint32_t ns, na, s, i;
-    dhs_mat4_d Td;
+    dhr_mat4 Td;
     dh_frame_q T;
     unsigned j;
     puma(&P);
@@ -875,7 +875,7 @@ static void solve_errors(void)
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL], canary[DH_IKC_MAX_SOL];
     uint32_t ns;
     int32_t qq[6] = {0, 0, 0, 0, 30 << 16, 0}, qref[6];
-    dhs_mat4_d Td;
+    dhr_mat4 Td;
     unsigned i;
     puma(&P);
     build(&P, &r, &m, DH_IKC_WRIST_RRR);

@@ -41,7 +41,7 @@ static const dhs_robot *const g_robots[] = { &dhs_ur3_m, &dhs_ur5_m, &dhs_ur10_m
 
 /* ---- double helpers --------------------------------------------------------- */
 
-static void to_f32(const dhs_mat4_d *D, dh_mat4_f32 *T)
+static void to_f32(const dhr_mat4 *D, dh_mat4_f32 *T)
 {
     int c, r;
     for (c = 0; c < 4; c++)
@@ -50,7 +50,7 @@ static void to_f32(const dhs_mat4_d *D, dh_mat4_f32 *T)
 
 static void target_of(const dh_robot *r, const double *q, dh_mat4_f32 *T)
 {
-    dhs_mat4_d F;
+    dhr_mat4 F;
     dhs_fk_ref_f32(r, q, NULL, &F);
     to_f32(&F, T);
 }
@@ -127,7 +127,7 @@ static uint32_t solve(const dh_robot *r, const dh_ikc_model_f32 *m, const dh_mat
  * part[1] = |a1 a2 s2| / (|a1| + |a2|)^2, the others 1. Returns the smallest. */
 static double sing_parts(const dhs_robot *d, const double *q, double part[3])
 {
-    dhs_mat4_d F[DHS_MAX_JOINTS];
+    dhr_mat4 F[DHS_MAX_JOINTS];
     double m;
     int i;
     part[0] = part[2] = 1.0;
@@ -217,7 +217,7 @@ static double match_bound(const dh_robot *r, const double *qa, double ep, double
         const int pri = r->joint[i].type == DH_JOINT_PRISMATIC;
         const double h = pri ? 1e-7 : 1e-4; /* m / deg */
         double qp[DHS_MAX_JOINTS], qm[DHS_MAX_JOINTS], w[3];
-        dhs_mat4_d Fp, Fm, F0;
+        dhr_mat4 Fp, Fm, F0;
         int a, bb, kk;
         memcpy(qp, qa, n * sizeof qa[0]);
         memcpy(qm, qa, n * sizeof qa[0]);
@@ -575,7 +575,7 @@ static void ikc_ur_beyond(void)
             const int cyl = (int)(it & 1);
             const float qref[NJ] = { 0 };
             double q[DHS_MAX_JOINTS], part[3], e[3], Rr, best = -1.0, ez = 0.0, sh;
-            dhs_mat4_d F[DHS_MAX_JOINTS], Td, Ts;
+            dhr_mat4 F[DHS_MAX_JOINTS], Td, Ts;
             dh_mat4_f32 T;
             uint32_t fl, ns, k;
             int i;
@@ -863,14 +863,14 @@ static void complete_desc(const dhs_robot *d, const dhs_robot *sdh, long count)
 }
 
 /* a rigid frame from a random rotation vector and translation (double) */
-static void random_frame(dhs_mat4_d *F, double tmax)
+static void random_frame(dhr_mat4 *F, double tmax)
 {
-    dhs_mat4_d A, B;
-    dhs_rotz(&A, dht_rand_uniform(-180, 180));
-    dhs_rotx(&B, dht_rand_uniform(-180, 180));
-    dhs_mul(F, &A, &B);
-    dhs_rotz(&A, dht_rand_uniform(-180, 180));
-    dhs_mul(F, F, &A);
+    dhr_mat4 A, B;
+    dhr_rotz(dht_rand_uniform(-180, 180), &A);
+    dhr_rotx(dht_rand_uniform(-180, 180), &B);
+    dhr_mul(&A, &B, F);
+    dhr_rotz(dht_rand_uniform(-180, 180), &A);
+    dhr_mul(F, &A, F);
     F->m[3][0] = dht_rand_uniform(-tmax, tmax);
     F->m[3][1] = dht_rand_uniform(-tmax, tmax);
     F->m[3][2] = dht_rand_uniform(-tmax, tmax);
@@ -878,7 +878,7 @@ static void random_frame(dhs_mat4_d *F, double tmax)
 
 /* frames rounded to float and back, so that the description and the
  * float robot hold the same rigid frame */
-static void frame_f32(dhs_mat4_d *F)
+static void frame_f32(dhr_mat4 *F)
 {
     int c, k;
     for (c = 0; c < 4; c++)
@@ -896,7 +896,7 @@ static void ikc_ur_base_tool(void)
         frame_f32(&d.tool);
         if (d.n == 4u) {
             /* SCARA: a base and tool about the joint axes keep the tool axis reachable */
-            dhs_rotz(&d.tool, dht_rand_uniform(-180, 180));
+            dhr_rotz(dht_rand_uniform(-180, 180), &d.tool);
             d.tool.m[3][0] = 0.05;
             d.tool.m[3][2] = -0.1;
             frame_f32(&d.tool);
@@ -922,7 +922,7 @@ static void ikc_ur5_mdh(void)
     /* the conversion is exact: same FK as the SDH table */
     {
         double q[DHS_MAX_JOINTS];
-        dhs_mat4_d A, B;
+        dhr_mat4 A, B;
         int c, k;
         dhs_random_q(&d, q);
         dhs_fk_desc(&d, q, NULL, &A);

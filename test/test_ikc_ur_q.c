@@ -67,7 +67,7 @@ static void build(const dhs_robot *d, dh_robot *r, dh_ikc_model_q *m, dh_ikc_kin
 
 /* ---- reference checks ----------------------------------------------------- */
 
-static double pos_err(const dhs_mat4_d *A, const dhs_mat4_d *B)
+static double pos_err(const dhr_mat4 *A, const dhr_mat4 *B)
 {
     double e = 0.0;
     int i;
@@ -78,7 +78,7 @@ static double pos_err(const dhs_mat4_d *A, const dhs_mat4_d *B)
     return e;
 }
 
-static double rot_err(const dhs_mat4_d *A, const dhs_mat4_d *B)
+static double rot_err(const dhr_mat4 *A, const dhr_mat4 *B)
 {
     double e = 0.0;
     int c, i;
@@ -90,7 +90,7 @@ static double rot_err(const dhs_mat4_d *A, const dhs_mat4_d *B)
     return e;
 }
 
-static void to_frame(const dhs_mat4_d *T, dh_frame_q *F)
+static void to_frame(const dhr_mat4 *T, dh_frame_q *F)
 {
     int c, i;
     for (c = 0; c < 3; c++)
@@ -115,13 +115,13 @@ typedef struct {
 } stats;
 
 /* every solution FK-correct; returns the index of the solution equal to qgen, or -1 */
-static int check_sols(const dh_robot *r, const dhs_mat4_d *Td, const dh_ikc_sol_q *sol, uint32_t ns, const int32_t *qgen,
+static int check_sols(const dh_robot *r, const dhr_mat4 *Td, const dh_ikc_sol_q *sol, uint32_t ns, const int32_t *qgen,
                       stats *st)
 {
     uint32_t s, i;
     int found = -1;
     for (s = 0; s < ns; s++) {
-        dhs_mat4_d Ts;
+        dhr_mat4 Ts;
         double pe, re, worst = 0.0;
         dhs_fk_ref_q(r, sol[s].q, NULL, &Ts);
         pe = pos_err(&Ts, Td);
@@ -157,7 +157,7 @@ static int check_sols(const dh_robot *r, const dhs_mat4_d *Td, const dh_ikc_sol_
 static int well_conditioned_to(const dhs_robot *d, const double *q, double tol, int nj)
 {
     double J[6][6], A[6][12], qp[6], qm[6], dx[6];
-    dhs_mat4_d T0, Tp, Tm;
+    dhr_mat4 T0, Tp, Tm;
     const double h = 1e-4;
     int i, j, k, c;
     dhs_fk_desc(d, q, NULL, &T0);
@@ -223,7 +223,7 @@ static int well_conditioned_to(const dhs_robot *d, const double *q, double tol, 
  * part[2] wrist |s5|; SCARA: part[1] = |a1 a2 s2| / (|a1| + |a2|)^2 */
 static double sing_parts(const dhs_robot *d, const double *q, double part[3])
 {
-    dhs_mat4_d F[DHS_MAX_JOINTS];
+    dhr_mat4 F[DHS_MAX_JOINTS];
     double m;
     int i;
     part[0] = part[2] = 1.0;
@@ -270,7 +270,7 @@ static void random_run(const dhs_robot *d, dh_ikc_kind kind, long iters)
     for (it = 0; it < iters; it++) {
         double q[6] = {0}, part[3];
         int32_t qq[6] = {0};
-        dhs_mat4_d Td;
+        dhr_mat4 Td;
         dh_frame_q T;
         dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
         uint32_t ns = 0;
@@ -324,7 +324,7 @@ static void scara_random(void)
 static uint32_t solve_q(const dh_robot *r, const dh_ikc_model_q *m, const int32_t *qq, const int32_t *qref,
                         dh_ikc_sol_q *sol, uint32_t *fl)
 {
-    dhs_mat4_d Td;
+    dhr_mat4 Td;
     dh_frame_q T;
     uint32_t ns = 0, s;
     dhs_fk_ref_q(r, qq, NULL, &Td);
@@ -484,7 +484,7 @@ static void scara_shoulder_singular(void)
 #define BOUND ldexp(64.0, -DH_QPOS_FRAC)
 
 /* T translated by dist along the unit vector e */
-static void shift(dhs_mat4_d *T, const double *e, double dist)
+static void shift(dhr_mat4 *T, const double *e, double dist)
 {
     int i;
     for (i = 0; i < 3; i++) T->m[3][i] += dist * e[i];
@@ -492,7 +492,7 @@ static void shift(dhs_mat4_d *T, const double *e, double dist)
 
 /* dh_ikc_q of Td (any limits); when DH_OK, every solution checked against
  * Td; the flags ORed into *fl */
-static dh_status solve_T(const dh_robot *r, const dh_ikc_model_q *m, const dhs_mat4_d *Td, dh_ikc_sol_q *sol,
+static dh_status solve_T(const dh_robot *r, const dh_ikc_model_q *m, const dhr_mat4 *Td, dh_ikc_sol_q *sol,
                          uint32_t *ns, uint32_t *fl)
 {
     dh_frame_q T;
@@ -539,7 +539,7 @@ static void ur_boundary_elbow(void)
             const double h = d.j[1].d + d.j[2].d + d.j[3].d;
             double q[6], part[3], e[3], R, best = -1.0;
             int32_t qq[6];
-            dhs_mat4_d F[DHS_MAX_JOINTS], Td, Ts;
+            dhr_mat4 F[DHS_MAX_JOINTS], Td, Ts;
             dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
             uint32_t ns, fl;
             int k, i;
@@ -647,7 +647,7 @@ static void ur_boundary_shoulder(void)
             const double h = d.j[1].d + d.j[2].d + d.j[3].d;
             double q[6], e[3], ez = 0.0, R;
             int32_t qq[6];
-            dhs_mat4_d F[DHS_MAX_JOINTS], Td, Ts;
+            dhr_mat4 F[DHS_MAX_JOINTS], Td, Ts;
             dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
             uint32_t ns, fl;
             int i;
@@ -696,7 +696,7 @@ static void ur_boundary_corner(void)
         for (it = 0; it < 20L * DHT_ITER(500) && n < DHT_ITER(500); it++) {
             double q[6];
             int32_t qq[6];
-            dhs_mat4_d Td;
+            dhr_mat4 Td;
             dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
             uint32_t ns, fl;
             if (!u_zero_q(&d, it, 0.05, 0.05, q)) continue;
@@ -726,7 +726,7 @@ static void unreachable(void)
         for (it = 0; it < DHT_ITER(200); it++) {
             double q[6] = {0}, L = 0, sc, rxy;
             int32_t qq[6] = {0};
-            dhs_mat4_d Td;
+            dhr_mat4 Td;
             dh_frame_q T;
             dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
             uint32_t ns = 9, i;
@@ -746,14 +746,14 @@ static void unreachable(void)
             /* a tool axis not parallel to the joint axes */
             double q[6] = {10.0, 20.0, 100.0 * LS, 30.0, 0.0, 0.0};
             int32_t qq[6] = {0};
-            dhs_mat4_d Td, Rx, T2;
+            dhr_mat4 Td, Rx, T2;
             dh_frame_q T;
             dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
             uint32_t ns = 9;
             dhs_q_from_double(&r, q, qq);
             dhs_fk_ref_q(&r, qq, NULL, &Td);
-            dhs_rotx(&Rx, 0.01);
-            dhs_mul(&T2, &Td, &Rx);
+            dhr_rotx(0.01, &Rx);
+            dhr_mul(&Td, &Rx, &T2);
             to_frame(&T2, &T);
             DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, 0u, sol, &ns), DH_ERR_UNREACHABLE);
             DHT_EQ_INT(ns, 0);
