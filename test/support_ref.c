@@ -296,6 +296,45 @@ void dhr_rand_general(dhr_mat4 *T)
         for (r = 0; r < 4; r++) T->m[c][r] = dht_rand_uniform(-1.0, 1.0);
 }
 
+void dhr_mat3_mul(const dhr_mat3 *A, const dhr_mat3 *B, dhr_mat3 *out)
+{
+    dhr_mat3 t;
+    int i, j, k;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) {
+            double s = 0.0;
+            for (k = 0; k < 3; k++) s += A->d[i][k] * B->d[k][j];
+            t.d[i][j] = s;
+        }
+    *out = t;
+}
+
+void dhr_mat3_from_quat(double w, double x, double y, double z, dhr_mat3 *R)
+{
+    R->d[0][0] = 1 - 2 * (y * y + z * z); R->d[0][1] = 2 * (x * y - w * z); R->d[0][2] = 2 * (x * z + w * y);
+    R->d[1][0] = 2 * (x * y + w * z); R->d[1][1] = 1 - 2 * (x * x + z * z); R->d[1][2] = 2 * (y * z - w * x);
+    R->d[2][0] = 2 * (x * z - w * y); R->d[2][1] = 2 * (y * z + w * x); R->d[2][2] = 1 - 2 * (x * x + y * y);
+}
+
+void dhr_mat3_to_f32(const dhr_mat3 *D, dh_mat3_f32 *R)
+{
+    int r, c;
+    for (r = 0; r < 3; r++)
+        for (c = 0; c < 3; c++) DH_M3(R, r, c) = (float)D->d[r][c];
+}
+
+double dhr_mat3_max_diff(const dh_mat3_f32 *R, const dhr_mat3 *D)
+{
+    double m = 0.0;
+    int r, c;
+    for (r = 0; r < 3; r++)
+        for (c = 0; c < 3; c++) {
+            double e = fabs((double)DH_M3(R, r, c) - D->d[r][c]);
+            if (!(e <= m)) m = e; /* NaN propagates as a failure */
+        }
+    return m;
+}
+
 double dhr_ulp_f32(double x)
 {
     int e;

@@ -71,6 +71,20 @@ void dhr_rand_rigid(double tmax, dhr_mat4 *T);
 /** Random matrix with entries uniform in [-1, 1) (a general 4x4). */
 void dhr_rand_general(dhr_mat4 *T);
 
+/** Double 3x3 matrix, row-major: d[r][c] is element (row r, column c)
+ *  (dh_mat3_f32 is column-major: DH_M3(R, r, c) == R->m[c][r]). */
+typedef struct { double d[3][3]; } dhr_mat3;
+
+/** out = A * B; out may alias A or B. */
+void dhr_mat3_mul(const dhr_mat3 *A, const dhr_mat3 *B, dhr_mat3 *out);
+/** Rotation matrix of the unit quaternion w + xi + yj + zk (textbook formula,
+ *  no normalisation). */
+void dhr_mat3_from_quat(double w, double x, double y, double z, dhr_mat3 *R);
+/** Rounds each entry to the nearest float. */
+void dhr_mat3_to_f32(const dhr_mat3 *D, dh_mat3_f32 *R);
+/** max |R_ij - D_ij| over the 9 entries (NaN if any entry of R is NaN). */
+double dhr_mat3_max_diff(const dh_mat3_f32 *R, const dhr_mat3 *D);
+
 /** Size of one float ulp at |x| (2^-149 for x == 0). */
 double dhr_ulp_f32(double x);
 
