@@ -268,6 +268,29 @@ double dhr_max_abs_diff_d(const dhr_mat4 *A, const dhr_mat4 *B)
     return best;
 }
 
+double dhr_pos_diff(const dhr_mat4 *A, const dhr_mat4 *B)
+{
+    double e = 0.0;
+    int i;
+    for (i = 0; i < 3; i++) {
+        double d = fabs(A->m[3][i] - B->m[3][i]);
+        if (!(d <= e)) e = d; /* NaN propagates */
+    }
+    return e;
+}
+
+double dhr_rot_diff(const dhr_mat4 *A, const dhr_mat4 *B)
+{
+    double e = 0.0;
+    int c, i;
+    for (c = 0; c < 3; c++)
+        for (i = 0; i < 3; i++) {
+            double d = fabs(A->m[c][i] - B->m[c][i]);
+            if (!(d <= e)) e = d;
+        }
+    return e;
+}
+
 void dhr_rand_unit3(double k[3])
 {
     /* uniform z in [-1, 1) and azimuth: uniform on the sphere */

@@ -62,6 +62,12 @@ void dhr_from_q(const dh_frame_q *F, dhr_mat4 *D);
 double dhr_max_abs_diff(const dh_mat4_f32 *T, const dhr_mat4 *D);
 /** max |A_ij - B_ij| between two double matrices. */
 double dhr_max_abs_diff_d(const dhr_mat4 *A, const dhr_mat4 *B);
+/** Largest |position difference| (translation column) of two double
+ *  matrices (NaN if a difference is NaN). */
+double dhr_pos_diff(const dhr_mat4 *A, const dhr_mat4 *B);
+/** Largest |rotation entry difference| (3x3 part) of two double matrices
+ *  (NaN if a difference is NaN). */
+double dhr_rot_diff(const dhr_mat4 *A, const dhr_mat4 *B);
 
 /** Random unit 3-vector (uniform on the sphere) from dht_rand_uniform. */
 void dhr_rand_unit3(double k[3]);

@@ -8,6 +8,7 @@
 #include "dht.h"
 
 #include <math.h>
+#include <stdio.h>
 
 
 /* The tables: examples/robots/ *.dh, turned into macros at build time by
@@ -112,7 +113,7 @@ void dhs_fk_ref_q(const dh_robot *r, const int32_t *q, dhr_mat4 *frames, dhr_mat
 
 /* ------------------------------------------------------------------------ */
 
-static void to_q(const dhr_mat4 *D, dh_frame_q *F)
+void dhs_to_frame_q(const dhr_mat4 *D, dh_frame_q *F)
 {
     int c, r;
     for (c = 0; c < 3; c++)
@@ -164,10 +165,10 @@ dh_status dhs_build_q(const dhs_robot *d, dh_robot *r)
             if (st != DH_OK) return st;
         }
     }
-    to_q(&d->base, &F);
+    dhs_to_frame_q(&d->base, &F);
     st = dh_robot_set_base_q(r, &F);
     if (st != DH_OK) return st;
-    to_q(&d->tool, &F);
+    dhs_to_frame_q(&d->tool, &F);
     return dh_robot_set_tool_q(r, &F);
 }
 
@@ -193,6 +194,44 @@ void dhs_random_q_robot(const dh_robot *r, double *q)
     }
 }
 
+void dhs_target_f32(const dh_robot *r, const double *q, dh_mat4_f32 *T)
+{
+    dhr_mat4 D;
+    dhs_fk_ref_f32(r, q, NULL, &D);
+    dhr_to_f32(&D, T);
+}
+
+double dhs_joint_dist(const dh_robot *r, uint32_t i, double a, double b)
+{
+    double d = a - b;
+    if (r->joint[i].type == DH_JOINT_REVOLUTE) {
+        d = fmod(d, 360.0);
+        if (d > 180.0) d -= 360.0;
+        if (d < -180.0) d += 360.0;
+    }
+    return fabs(d);
+}
+
+const char *dhs_q_str(const double *q, uint32_t n, int slot)
+{
+    static char buf[2][DHS_MAX_JOINTS * 26];
+    char *o = buf[slot & 1];
+    size_t k = 0;
+    uint32_t i;
+    o[0] = '\0';
+    for (i = 0; i < n && i < DHS_MAX_JOINTS; i++)
+        k += (size_t)snprintf(o + k, sizeof buf[0] - k, "%s%.17g", i ? " " : "", q[i]);
+    return o;
+}
+
+const char *dhs_qf_str(const float *q, uint32_t n, int slot)
+{
+    double d[DHS_MAX_JOINTS];
+    uint32_t i;
+    for (i = 0; i < n && i < DHS_MAX_JOINTS; i++) d[i] = (double)q[i];
+    return dhs_q_str(d, n, slot);
+}
+
 int32_t dhs_to_q(double x, int frac)
 {
     double v = floor(ldexp(x, frac) + 0.5);
@@ -210,25 +249,16 @@ void dhs_q_from_double(const dh_robot *r, const double *q, int32_t *qq)
 
 double dhs_pos_err_f32(const dh_mat4_f32 *T, const dhr_mat4 *R)
 {
-    double e = 0.0;
-    int r;
-    for (r = 0; r < 3; r++) {
-        double d = fabs((double)T->m[3][r] - R->m[3][r]);
-        if (!(d <= e)) e = d;   /* NaN propagates */
-    }
-    return e;
+    dhr_mat4 D;
+    dhr_from_f32(T, &D);
+    return dhr_pos_diff(&D, R);
 }
 
 double dhs_rot_err_f32(const dh_mat4_f32 *T, const dhr_mat4 *R)
 {
-    double e = 0.0;
-    int c, r;
-    for (c = 0; c < 3; c++)
-        for (r = 0; r < 3; r++) {
-            double d = fabs((double)T->m[c][r] - R->m[c][r]);
-            if (!(d <= e)) e = d;
-        }
-    return e;
+    dhr_mat4 D;
+    dhr_from_f32(T, &D);
+    return dhr_rot_diff(&D, R);
 }
 
 int dhs_bottom_ok_f32(const dh_mat4_f32 *T)
@@ -238,25 +268,16 @@ int dhs_bottom_ok_f32(const dh_mat4_f32 *T)
 
 double dhs_pos_err_q(const dh_frame_q *F, const dhr_mat4 *R)
 {
-    double e = 0.0;
-    int r;
-    for (r = 0; r < 3; r++) {
-        double d = fabs(ldexp((double)F->p[r], -DH_QPOS_FRAC) - R->m[3][r]);
-        if (d > e) e = d;
-    }
-    return e;
+    dhr_mat4 D;
+    dhr_from_q(F, &D);
+    return dhr_pos_diff(&D, R);
 }
 
 double dhs_rot_err_q(const dh_frame_q *F, const dhr_mat4 *R)
 {
-    double e = 0.0;
-    int c, r;
-    for (c = 0; c < 3; c++)
-        for (r = 0; r < 3; r++) {
-            double d = fabs(ldexp((double)F->r[c][r], -30) - R->m[c][r]);
-            if (d > e) e = d;
-        }
-    return e;
+    dhr_mat4 D;
+    dhr_from_q(F, &D);
+    return dhr_rot_diff(&D, R);
 }
 
 double dhs_rot_angle(double R[3][3])

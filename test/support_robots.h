@@ -93,14 +93,30 @@ void dhs_fk_ref_f32(const dh_robot *r, const double *q, dhr_mat4 *frames, dhr_ma
  */
 void dhs_fk_ref_q(const dh_robot *r, const int32_t *q, dhr_mat4 *frames, dhr_mat4 *T);
 
+/* ---- targets, joint distances, messages ---- */
+
+/** The float target of joint values q (deg / length): the double reference
+ *  FK of r's stored float parameters (dhs_fk_ref_f32), rounded to float. */
+void dhs_target_f32(const dh_robot *r, const double *q, dh_mat4_f32 *T);
+/** |a - b| of joint i: modulo 360 (in [0, 180]) for a revolute joint, plain
+ *  for a prismatic one. */
+double dhs_joint_dist(const dh_robot *r, uint32_t i, double a, double b);
+/** "q1 q2 ..." (%.17g) of n joint values, for failure messages; two
+ *  buffers (slot 0 or 1), so that one message can show two vectors. */
+const char *dhs_q_str(const double *q, uint32_t n, int slot);
+/** dhs_q_str of float joint values. */
+const char *dhs_qf_str(const float *q, uint32_t n, int slot);
+
 /* ---- conversions and error measures ---- */
 
 /** Round to nearest Q with `frac` fraction bits (saturating; for test inputs). */
 int32_t dhs_to_q(double x, int frac);
+/** A double frame -> Q (rotation Q2.30, position DH_QPOS_FRAC fraction
+ *  bits), each entry by dhs_to_q; the bottom row is not read. */
+void dhs_to_frame_q(const dhr_mat4 *D, dh_frame_q *F);
 /** Joint values in deg / length -> Q (dh_q16 for R, dh_qpos for P). */
 void dhs_q_from_double(const dh_robot *r, const double *q, int32_t *qq);
 
-/** Largest |position difference| (length unit). */
 /** Rotation angle (rad) of the double 3x3 R (column-major R[col][row]),
  *  robust near 0 and pi: atan2 of the skew part's norm and trace - 1. */
 double dhs_rot_angle(double R[3][3]);
@@ -119,8 +135,9 @@ double dhs_mirror_twist(double alpha_deg);
  * beyond the limit it crosses and qn at most that inside it.
  */
 int dhs_limit_twin_f32(const dh_robot *r, const float *c, const float *qn, double slack_deg, double slack_len);
+/** Largest |position difference| (length unit; NaN propagates). */
 double dhs_pos_err_f32(const dh_mat4_f32 *T, const dhr_mat4 *R);
-/** Largest |rotation entry difference| (3x3 part). */
+/** Largest |rotation entry difference| (3x3 part; NaN propagates). */
 double dhs_rot_err_f32(const dh_mat4_f32 *T, const dhr_mat4 *R);
 /** Bottom row exactly 0 0 0 1. */
 int dhs_bottom_ok_f32(const dh_mat4_f32 *T);
