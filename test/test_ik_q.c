@@ -144,6 +144,7 @@ static void rate_case(const char *name, const dhs_robot *desc, double tol_p, dou
     int it, ok = 0, ok_status = 0, miss100 = 0, miss1000 = 0;
     double iter_sum = 0, ep_max = 0, er_max = 0;
     uint32_t iter_max = 0;
+    char probe[48];
     DHT_EQ_INT(dhs_build(desc, &r), DH_OK);
     dh_ik_params_default_q(&r, &p);
     /* the solver's tolerances 0.9 of the verified ones: room for the
@@ -194,6 +195,11 @@ static void rate_case(const char *name, const dhs_robot *desc, double tol_p, dou
                name, (unsigned long long)dht_seed(), ok, count, tol_p, tol_r, ok_status, iter_sum / count,
                (unsigned long)iter_max, ep_max, er_max);
     dht_printf("ik_q %-14s misses among the first 100 / 1000 targets: %d / %d\n", name, miss100, miss1000);
+    /* reach probes "<desc name>.miss100" and ".miss1000" */
+    snprintf(probe, sizeof probe, "%s.miss100", desc->name);
+    dht_reach_max(probe, (double)miss100);
+    snprintf(probe, sizeof probe, "%s.miss1000", desc->name);
+    dht_reach_max(probe, (double)miss1000);
     DHT_TRUE_MSG((double)ok >= need * count, "%s: success %d/%d below %.3f", name, ok, count, need);
 }
 

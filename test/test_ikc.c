@@ -157,12 +157,16 @@ static dh_status solve_target(const dh_ikc_model_f32 *m, const dh_robot *r, cons
 }
 
 /* count random in-limit configurations of r: every solution checked; the
- * generating one found when away from the singularities. */
+ * generating one found when away from the singularities. Reach probes:
+ * "<name>.elbow_deg", the nearest a configuration came to the stretched or
+ * folded elbow (deg), and "edge.<name>", the targets solved beyond a limit. */
 static void run_completeness(const char *name, const dhs_robot *desc, const dh_robot *r, const dh_ikc_model_f32 *m,
                              long count)
 {
     long t, checked = 0, nsum = 0, nedge = 0;
     double wp = 0.0, wr = 0.0, wq = 0.0;
+    char probe[40];
+    snprintf(probe, sizeof probe, "%s.elbow_deg", name);
     for (t = 0; t < count; t++) {
         double q[NJ], best = 1e30;
         dh_mat4_f32 T;
@@ -170,6 +174,10 @@ static void run_completeness(const char *name, const dhs_robot *desc, const dh_r
         uint32_t n_sol = 99u, s;
         dh_status st;
         dhs_random_q_robot(r, q);
+        if (desc->j[2].type == DH_JOINT_REVOLUTE) /* from stretched or folded */
+            dht_reach_min(probe, fabs(remainder(q[2] + desc->j[2].theta_deg -
+                                                atan2(sin(desc->j[2].alpha_deg * D2R) * desc->j[3].d, desc->j[2].a) / D2R,
+                                                180.0)));
         dhs_target_f32(r, q, &T);
         st = solve_target(m, r, desc, q, &T, sol, &n_sol, &nedge);
         DHT_TRUE_MSG(n_sol <= DH_IKC_MAX_SOL, "%s: %u solutions", name, (unsigned)n_sol);
@@ -188,6 +196,8 @@ static void run_completeness(const char *name, const dhs_robot *desc, const dh_r
                      dhs_q_str(q, r->n, 0), (unsigned)n_sol, best, dhs_qf_str(sol[0].q, r->n, 1));
         if (best > wq) wq = best;
     }
+    snprintf(probe, sizeof probe, "edge.%s", name);
+    dht_reach_max(probe, (double)nedge);
     dht_printf("ikc %s: %ld targets (%ld checked for the generating configuration), mean %.2f solutions, worst "
                "position %.3g m, rotation %.3g rad, generating configuration within %.3g; %ld within it of a "
                "limit or a singularity, solved beyond a limit\n",
@@ -240,7 +250,9 @@ static double wrist_dist(const dh_robot *r, const dh_ik_params *p, const float *
 }
 
 /* dh_ik_f32 from random starts (no restarts) on random targets: every
- * converged in-limit result is one of the closed-form solutions. */
+ * converged in-limit result is one of the closed-form solutions. Reach
+ * probes: "numerical.<name>.s5", the smallest |sin theta5| of a converged
+ * result, and "twins.<name>", the results matched to a twin beyond a limit. */
 static void ikc_numerical_completeness(void)
 {
     unsigned k;
@@ -252,6 +264,8 @@ static void ikc_numerical_completeness(void)
         dh_ikc_model_f32 m;
         dh_ik_params p;
         long t, st_i, found = 0, conv = 0, twins = 0;
+        char probe[40], probe_s5[40];
+        snprintf(probe_s5, sizeof probe_s5, "numerical.%s.s5", g_robots[k].name);
         DHT_EQ_INT(dhs_build(g_robots[k].desc, &r), DH_OK);
         DHT_EQ_INT(dh_ikc_analyse_f32(&r, &m), DH_OK);
         dh_ik_params_default(&r, &p);
@@ -284,6 +298,7 @@ static void ikc_numerical_completeness(void)
                 for (i = 0; i < r.n; i++) q0[i] = (float)q0d[i];
                 if (dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], qs, &res) != DH_OK) continue;
                 conv++;
+                dht_reach_min(probe_s5, fabs(sin(((double)qs[4] + (double)r.joint[4].theta_deg) * D2R)));
                 for (s = 0; s < n_sol; s++) {
                     double dd[NJ], dq;
                     for (i = 0; i < r.n; i++) dd[i] = (double)qs[i];
@@ -305,6 +320,8 @@ static void ikc_numerical_completeness(void)
             for (s = 0; s < n_sol; s++)
                 if ((hit >> s) & 1u) found++;
         }
+        snprintf(probe, sizeof probe, "twins.%s", g_robots[k].name);
+        dht_reach_max(probe, (double)twins);
         dht_printf("ikc %s: dh_ik_f32 from %ld starts on %ld targets: %ld converged, all among the closed-form "
                    "solutions (%ld distinct solutions met; %ld results on or just inside a limit matched a twin beyond it)\n",
                    g_robots[k].name, starts, targets, conv, found, twins);

@@ -149,13 +149,19 @@ static int well_conditioned(const dhs_robot *d, const double *q)
     return dhk_well_conditioned_q(d, q, 0.5 * DHK_COMP_DEG, 6);
 }
 
-/* random in-limit configurations of d (filter: the SDH description f) */
+/* random in-limit configurations of d (filter: the SDH description f).
+ * Reach probes: "<name>.elbow_deg", the nearest a configuration came to the
+ * stretched or folded elbow of f (deg), "<name>.kept", the ill-conditioned
+ * targets solved only with the out-of-limit solutions kept, and
+ * "<name>.near_limit", the generating configurations found only among
+ * those (stats.near_limit). */
 static void random_run(const dhs_robot *d, const dhs_robot *f, dh_ikc_kind kind, long iters)
 {
     dh_robot r;
     dh_ikc_model_q m;
     dhk_stats st;
-    long it;
+    long it, kept = 0;
+    char probe[48];
     memset(&st, 0, sizeof st);
     dhk_build_q(d, kind, &r, &m);
     for (it = 0; it < iters; it++) {
@@ -169,6 +175,13 @@ static void random_run(const dhs_robot *d, const dhs_robot *f, dh_ikc_kind kind,
         int comp, found;
         dhs_random_q(d, q);
         dhs_q_from_double(&r, q, qq);
+        if (f->j[2].type == DH_JOINT_REVOLUTE) {
+            snprintf(probe, sizeof probe, "%s.elbow_deg", d->name);
+            dht_reach_min(probe, fabs(remainder(q[2] + f->j[2].theta_deg -
+                                                atan2(sin(f->j[2].alpha_deg * PI_D / 180.0) * f->j[3].d, f->j[2].a) *
+                                                    180.0 / PI_D,
+                                                180.0)));
+        }
         comp = away(f, q) && well_conditioned(d, q);
         dhs_fk_ref_q(&r, qq, NULL, &Td);
         dhs_to_frame_q(&Td, &T);
@@ -177,6 +190,7 @@ static void random_run(const dhs_robot *d, const dhs_robot *f, dh_ikc_kind kind,
             /* ill-conditioned: the in-limit configuration may move across a
              * limit; the solutions kept out of limits are checked */
             rc = dh_ikc_q(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns);
+            kept++;
         }
         DHT_TRUE_MSG(rc == DH_OK && ns >= 1u, "%s: status %d, %u solutions for q %.6f %.6f %.6f %.6f %.6f %.6f",
                      d->name, (int)rc, (unsigned)ns, q[0], q[1], q[2], q[3], q[4], q[5]);
@@ -196,6 +210,10 @@ static void random_run(const dhs_robot *d, const dhs_robot *f, dh_ikc_kind kind,
                          d->name, q[0], q[1], q[2], q[3], q[4], q[5], (unsigned)ns);
         }
     }
+    snprintf(probe, sizeof probe, "%s.kept", d->name);
+    dht_reach_max(probe, (double)kept);
+    snprintf(probe, sizeof probe, "%s.near_limit", d->name);
+    dht_reach_max(probe, (double)st.near_limit);
     dht_printf("%s: %ld targets (%ld completeness), %ld solutions, max err %.3g mm, %.3g\n", d->name, st.targets,
                st.comp, st.sols, st.pos, st.rot);
     DHT_TRUE(st.comp >= iters / 2);

@@ -292,6 +292,7 @@ static void ikc_complete(void)
                 derived++;
                 if (ratio > ratio_max) ratio_max = ratio;
             }
+            dht_reach_max("complete.dist", best); /* deg: the farthest generating q from its solution */
             if (sd < SING_FAR) {
                 if (best > worst_near) worst_near = best;
             } else if (best > worst) {
@@ -753,6 +754,7 @@ static void ikc_vs_numerical(void)
                                  dhs_q_str(q, r.n, 1));
                 }
                 conv++;
+                dht_reach_max("vs_numerical.dist", best); /* deg: the farthest result from a closed-form one */
                 if (best > worst) worst = best;
             }
         }
