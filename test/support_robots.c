@@ -232,6 +232,18 @@ const char *dhs_qf_str(const float *q, uint32_t n, int slot)
     return dhs_q_str(d, n, slot);
 }
 
+double dhs_chain_reach(const dhs_robot *d, const double *q)
+{
+    double L = 0.0;
+    unsigned i;
+    for (i = 0; i < 3; i++) L += fabs(d->base.m[3][i]) + fabs(d->tool.m[3][i]);
+    for (i = 0; i < d->n; i++) {
+        L += fabs(d->j[i].a) + fabs(d->j[i].d);
+        if (d->j[i].type == DH_JOINT_PRISMATIC) L += fabs(q[i]);
+    }
+    return L > 1.0 ? L : 1.0;
+}
+
 int32_t dhs_to_q(double x, int frac)
 {
     double v = floor(ldexp(x, frac) + 0.5);

@@ -107,6 +107,11 @@ const char *dhs_q_str(const double *q, uint32_t n, int slot);
 /** dhs_q_str of float joint values. */
 const char *dhs_qf_str(const float *q, uint32_t n, int slot);
 
+/** Sum of every length in the chain at q (base and tool offsets, |a|, |d|,
+ *  and |q| of prismatic joints), at least 1: the scale of the position
+ *  error. */
+double dhs_chain_reach(const dhs_robot *d, const double *q);
+
 /* ---- conversions and error measures ---- */
 
 /** Round to nearest Q with `frac` fraction bits (saturating; for test inputs). */

@@ -232,20 +232,6 @@ static void random_robot(dhs_robot *d)
     if (dht_rand_u32() % 4u == 0u) dhr_identity(&d->base);
 }
 
-/* Sum of every length in the chain (base and tool offsets, |a|, |d|, and
- * |q| of prismatic joints): the scale of the position error. */
-static double chain_reach(const dhs_robot *d, const double *q)
-{
-    double L = 0.0;
-    unsigned i;
-    for (i = 0; i < 3; i++) L += fabs(d->base.m[3][i]) + fabs(d->tool.m[3][i]);
-    for (i = 0; i < d->n; i++) {
-        L += fabs(d->j[i].a) + fabs(d->j[i].d);
-        if (d->j[i].type == DH_JOINT_PRISMATIC) L += fabs(q[i]);
-    }
-    return L > 1.0 ? L : 1.0;
-}
-
 static void random_robots(void)
 {
     long k, n = DHT_ITER(3000);
@@ -265,7 +251,7 @@ static void random_robots(void)
         fk(&r, q, &T);
         ref(&r, q, &R);
         /* position error relative to the reach L (sum of all lengths) */
-        reach = chain_reach(&d, q);
+        reach = dhs_chain_reach(&d, q);
         if (dhs_pos_err_f32(&T, &R) / reach > ep) ep = dhs_pos_err_f32(&T, &R) / reach;
         if (dhs_rot_err_f32(&T, &R) > er) er = dhs_rot_err_f32(&T, &R);
         DHT_TRUE_MSG(dhs_pos_err_f32(&T, &R) <= RR_POS_TOL * reach, "robot %ld pos %.3g", k, dhs_pos_err_f32(&T, &R));

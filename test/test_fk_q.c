@@ -290,18 +290,6 @@ static void random_robot_mm(dhs_robot *d)
     }
 }
 
-static double chain_reach(const dhs_robot *d, const double *q)
-{
-    double L = 0.0;
-    unsigned i;
-    for (i = 0; i < 3; i++) L += fabs(d->base.m[3][i]) + fabs(d->tool.m[3][i]);
-    for (i = 0; i < d->n; i++) {
-        L += fabs(d->j[i].a) + fabs(d->j[i].d);
-        if (d->j[i].type == DH_JOINT_PRISMATIC) L += fabs(q[i]);
-    }
-    return L > 1.0 ? L : 1.0;
-}
-
 static void random_robots(void)
 {
     long k, n = DHT_ITER(3000);
@@ -331,7 +319,7 @@ static void random_robots(void)
         dhs_fk_ref_q(&r, qq, RF, &R);
         /* position error scale: half an LSB per rounded position
          * (n + 2 roundings) plus one rotation LSB times the reach */
-        reach = ldexp(0.5 * (double)(d.n + 2u), -DH_QPOS_FRAC) + chain_reach(&d, q) * LSB30;
+        reach = ldexp(0.5 * (double)(d.n + 2u), -DH_QPOS_FRAC) + dhs_chain_reach(&d, q) * LSB30;
         e = dhs_pos_err_q(&T, &R);
         upd(&ep, e / reach);
         DHT_TRUE_MSG(e <= RR_POS_REL * reach, "robot %ld pos %.3g mm > bound %.3g for %s", k, e,
@@ -420,7 +408,7 @@ static void checked_path_scaled_base(void)
         dhs_q_from_double(&r, q, qq);
         fk_q_ok(&r, qq, &T);
         dhs_fk_ref_q(&r, qq, NULL, &R);
-        reach = ldexp(0.5 * (double)(d.n + 2u), -DH_QPOS_FRAC) + g * (chain_reach(&d, q) + 1000.0) * LSB30;
+        reach = ldexp(0.5 * (double)(d.n + 2u), -DH_QPOS_FRAC) + g * (dhs_chain_reach(&d, q) + 1000.0) * LSB30;
         e = dhs_pos_err_q(&T, &R) / reach;
         upd(&ep, e);
         DHT_TRUE_MSG(e <= RR_POS_REL * g, "robot %ld pos %.3g x scale > bound %.3g for %s", k, e, RR_POS_REL * g,

@@ -401,47 +401,10 @@ static void ikc_ur_shoulder_singular(void)
     }
 }
 
-/* The joint 5 point on the shoulder cylinder and the elbow within 0.05 deg
- * of stretched or folded: the rounding of the target turns the exact
- * joint 1 by up to sqrt(2 |h| e) / |h| (e the rounding), which the wrist
- * amplifies into the elbow's planar point; every such target is solved,
- * FK-correct. */
-static void ikc_ur_corner(void)
-{
-    unsigned ri;
-    for (ri = 0; ri < 3u; ri++) {
-        const dhs_robot *d = g_robots[ri];
-        dh_robot r;
-        dh_ikc_model_f32 m;
-        long it;
-        int found = 0;
-        build(d, &r, &m);
-        for (it = 0; it < 20L * DHT_ITER(500) && found < DHT_ITER(500); it++) {
-            double q[DHS_MAX_JOINTS], part[3], best;
-            const float qref[NJ] = { 0 };
-            dh_mat4_f32 T;
-            uint32_t fl;
-            dhs_random_q(d, q);
-            q[2] = ((it & 2) ? 180.0 : 0.0) + dht_rand_uniform(-0.05, 0.05);
-            if (!put_u(d, q, 0.0, (it & 1) ? 1 : -1)) continue;
-            (void)dhk_sing_parts(d, q, part);
-            if (part[2] < 0.05) continue;
-            dhs_target_f32(&r, q, &T);
-            (void)solve_check(&r, &m, &T, qref, q, d->name, &fl, &best);
-            found++;
-        }
-        DHT_TRUE(found > 0);
-    }
-}
-
-/* As ikc_ur_corner with the joint 5 point 0.3 mm along +-x1 off the
- * shoulder cylinder (u = +-3e-4 m, set exactly in the double reference):
- * inside the float shoulder band of UR3 and UR5 (one branch) or just
- * outside it (UR10, two branches). The rounding of the float target
- * leaves joint 1 free by up to about 1e-3 rad there, which the wrist turns
- * into tenths of mm of the elbow's planar point; every such target is
- * solved, FK-correct. */
-static void ikc_ur_corner_off(void)
+/* The joint 5 point at u = +-u_off (0: on the shoulder cylinder; set
+ * exactly in the double reference) and the elbow within 0.05 deg of
+ * stretched or folded: every such target is solved, FK-correct. */
+static void corner_run(double u_off)
 {
     unsigned ri;
     for (ri = 0; ri < 3u; ri++) {
@@ -453,7 +416,7 @@ static void ikc_ur_corner_off(void)
         build(d, &r, &m);
         for (it = 0; it < 20L * DHT_ITER(500) && found < DHT_ITER(500); it++) {
             double q[DHS_MAX_JOINTS], part[3], best, L = 0.0;
-            const double u0 = (it & 4) ? 3e-4 : -3e-4;
+            const double u0 = (it & 4) ? u_off : -u_off;
             const float qref[NJ] = { 0 };
             dh_mat4_f32 T;
             uint32_t fl;
@@ -463,7 +426,7 @@ static void ikc_ur_corner_off(void)
             q[2] = ((it & 2) ? 180.0 : 0.0) + dht_rand_uniform(-0.05, 0.05);
             if (!put_u(d, q, u0, (it & 1) ? 1 : -1)) continue;
             (void)dhk_sing_parts(d, q, part);
-            DHT_TRUE_MSG(fabs(part[0] * L - 3e-4) <= 1e-9, "%s: u = %.9g m, not 3e-4", d->name, part[0] * L);
+            DHT_TRUE_MSG(fabs(part[0] * L - u_off) <= 1e-9, "%s: u = %.9g m, not %g", d->name, part[0] * L, u_off);
             if (part[2] < 0.05) continue;
             dhs_target_f32(&r, q, &T);
             (void)solve_check(&r, &m, &T, qref, q, d->name, &fl, &best);
@@ -472,6 +435,18 @@ static void ikc_ur_corner_off(void)
         DHT_TRUE(found > 0);
     }
 }
+
+/* On the shoulder cylinder: the rounding of the target turns the exact
+ * joint 1 by up to sqrt(2 |h| e) / |h| (e the rounding), which the wrist
+ * amplifies into the elbow's planar point. */
+static void ikc_ur_corner(void) { corner_run(0.0); }
+
+/* 0.3 mm along +-x1 off the shoulder cylinder: inside the float shoulder
+ * band of UR3 and UR5 (one branch) or just outside it (UR10, two
+ * branches). The rounding of the float target leaves joint 1 free by up
+ * to about 1e-3 rad there, which the wrist turns into tenths of mm of the
+ * elbow's planar point. */
+static void ikc_ur_corner_off(void) { corner_run(3e-4); }
 
 /* The float boundary bound of src/dh_ikc_ur.c: tol = 4e-7 L (L the sum of
  * the robot's |a| and |d|); solved within tol / 4 beyond the boundary (the
