@@ -89,6 +89,25 @@ double dht_rand_uniform(double lo, double hi);
  * suffix: "08", "010", "abc", " 1", "-1", "1x" are all refused). */
 int dht_parse_seed(const char *s, uint64_t *seed);
 
+/* Reach probes: a test records the hardest input of a kind that it met,
+ * under a name (at most DHT_REACH_MAX_PROBES names, each at most 47
+ * characters): dht_reach_min keeps the smallest value recorded,
+ * dht_reach_max the largest. When the suite ends, every probe's extreme is
+ * printed ("reach NAME min VALUE"). A regression line of
+ * test/regression_seeds.txt names what its seed must reach, "NAME<VALUE"
+ * (a min probe below VALUE) or "NAME>VALUE" (a max probe above it), several
+ * joined by ','; the host runner gets it in DHT_REACH and fails the suite
+ * when a named probe was never recorded or stayed on the other side, so a
+ * change in the order of the draws fails loudly instead of testing nothing. */
+#define DHT_REACH_MAX_PROBES 48
+void dht_reach_min(const char *name, double v);
+void dht_reach_max(const char *name, double v);
+/* prints every probe's extreme (both backends call it when a suite ends) */
+void dht_reach_report(void);
+/* 1 and the probe's kind and extreme when name[0..len) was recorded, else 0
+ * (the host runner checks DHT_REACH with it) */
+int dht_reach_value(const char *name, size_t len, int *is_max, double *v);
+
 /* Loop-count divisor: DHT_ITER_DIV of the build on a target (set per core
  * by CMake), the DHT_ITER_DIV environment variable on the host (a positive
  * decimal number, default 1; tools/seeds.sh uses it for many-seed runs). */

@@ -55,6 +55,55 @@ static int dht_parse_div(const char *env, long *div)
     return 1;
 }
 
+/* 1 when every term of spec (NAME<VALUE or NAME>VALUE, joined by ',', see
+ * dht.h) holds for the probes recorded; else 0, after printing each term
+ * that does not hold or does not parse. */
+static int dht_reach_check(const char *spec)
+{
+    int ok = 1;
+    const char *t = spec;
+    while (*t != '\0') {
+        const char *end = strchr(t, ',');
+        size_t len = end ? (size_t)(end - t) : strlen(t);
+        const char *op = t;
+        while (op < t + len && *op != '<' && *op != '>') op++;
+        if (op == t || op == t + len || op + 1 == t + len) {
+            dht_printf("DHT_REACH: \"%.*s\" is not NAME<VALUE or NAME>VALUE\n", (int)len, t);
+            ok = 0;
+        } else {
+            char num[64], *stop;
+            size_t nlen = (size_t)(t + len - (op + 1));
+            double lim;
+            int is_max = 0;
+            double v = 0.0;
+            const int found = dht_reach_value(t, (size_t)(op - t), &is_max, &v);
+            if (nlen >= sizeof num) nlen = sizeof num - 1;
+            memcpy(num, op + 1, nlen);
+            num[nlen] = '\0';
+            lim = strtod(num, &stop);
+            if (stop == num || *stop != '\0') {
+                dht_printf("DHT_REACH: \"%.*s\": \"%s\" is not a number\n", (int)len, t, num);
+                ok = 0;
+            } else if (!found) {
+                dht_printf("DHT_REACH: %.*s never recorded: the seed no longer reaches the input its regression line "
+                           "names\n", (int)(op - t), t);
+                ok = 0;
+            } else if (is_max != (*op == '>')) {
+                dht_printf("DHT_REACH: %.*s is a %s probe, \"%.*s\" asks the other side\n", (int)(op - t), t,
+                           is_max ? "max" : "min", (int)len, t);
+                ok = 0;
+            } else if (!(is_max ? v > lim : v < lim)) {
+                dht_printf("DHT_REACH: %.*s %s %.17g, not %c %g: the seed no longer reaches the input its regression "
+                           "line names\n", (int)(op - t), t, is_max ? "max" : "min", v, *op, lim);
+                ok = 0;
+            }
+        }
+        t += len;
+        if (*t == ',') t++;
+    }
+    return ok;
+}
+
 int dht_run(const char *suite, const dht_case *cases, size_t n)
 {
     struct CMUnitTest *tests;
@@ -87,5 +136,12 @@ int dht_run(const char *suite, const dht_case *cases, size_t n)
     }
     rc = _cmocka_run_group_tests(name, tests, n, NULL, NULL);
     free(tests);
+    dht_reach_report();
+    /* DHT_REACH: what the seed of a regression line must reach */
+    if (getenv("DHT_REACH") != NULL && !dht_reach_check(getenv("DHT_REACH"))) {
+        fprintf(stderr, "%s: DHT_REACH=\"%s\" not reached (seed 0x%llx)\n", name, getenv("DHT_REACH"),
+                (unsigned long long)seed);
+        return rc != 0 ? rc : 3;
+    }
     return rc;
 }

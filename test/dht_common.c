@@ -87,3 +87,60 @@ long dht_iter(long n)
     long d = dht_iter_div();
     return (n / d > 0) ? n / d : 1;
 }
+
+/* ---- reach probes ---- */
+
+typedef struct {
+    char name[48];
+    int is_max;
+    double v;
+} dht_probe;
+
+static dht_probe dht_probes[DHT_REACH_MAX_PROBES];
+static size_t dht_nprobes;
+
+static dht_probe *dht_probe_find(const char *name, size_t len)
+{
+    size_t i;
+    for (i = 0; i < dht_nprobes; i++)
+        if (strlen(dht_probes[i].name) == len && memcmp(dht_probes[i].name, name, len) == 0) return &dht_probes[i];
+    return NULL;
+}
+
+static void dht_reach(const char *name, int is_max, double v)
+{
+    dht_probe *p = dht_probe_find(name, strlen(name));
+    if (p == NULL) {
+        /* a test error, not an input: fail where it is recorded */
+        if (strlen(name) >= sizeof dht_probes[0].name || dht_nprobes >= DHT_REACH_MAX_PROBES)
+            dht_fail(__FILE__, __LINE__, "reach probe \"%s\": name too long or more than %d probes", name,
+                     DHT_REACH_MAX_PROBES);
+        p = &dht_probes[dht_nprobes++];
+        strcpy(p->name, name);
+        p->is_max = is_max;
+        p->v = v;
+        return;
+    }
+    if (p->is_max != is_max)
+        dht_fail(__FILE__, __LINE__, "reach probe \"%s\" recorded as both min and max", name);
+    if (is_max ? v > p->v : v < p->v) p->v = v;
+}
+
+void dht_reach_min(const char *name, double v) { dht_reach(name, 0, v); }
+void dht_reach_max(const char *name, double v) { dht_reach(name, 1, v); }
+
+void dht_reach_report(void)
+{
+    size_t i;
+    for (i = 0; i < dht_nprobes; i++)
+        dht_printf("reach %s %s %.17g\n", dht_probes[i].name, dht_probes[i].is_max ? "max" : "min", dht_probes[i].v);
+}
+
+int dht_reach_value(const char *name, size_t len, int *is_max, double *v)
+{
+    const dht_probe *p = dht_probe_find(name, len);
+    if (p == NULL) return 0;
+    *is_max = p->is_max;
+    *v = p->v;
+    return 1;
+}

@@ -130,6 +130,7 @@ int dht_run(const char *suite, const dht_case *cases, size_t n)
     }
     /* every case starts from the suite seed, and so does the next suite */
     dht_reseed(seed);
+    dht_reach_report();
     printf("[==========] %s: %u test(s) run.\n", name, (unsigned)n);
     printf("[  PASSED  ] %u test(s).\n", (unsigned)(n - nfailed));
     if (nfailed > 0) {

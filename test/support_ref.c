@@ -19,7 +19,7 @@ void dhr_identity(dhr_mat4 *T)
         for (r = 0; r < 4; r++) T->m[c][r] = (c == r) ? 1.0 : 0.0;
 }
 
-void dhr_trans(dhr_mat4 *T, double x, double y, double z)
+void dhr_trans(double x, double y, double z, dhr_mat4 *T)
 {
     dhr_identity(T);
     DHR_M4(T, 0, 3) = x;
@@ -42,7 +42,7 @@ static void dhr_sincos(double deg, double *s, double *c)
     *c = cos(dhr_deg2rad(deg));
 }
 
-void dhr_rotx(dhr_mat4 *T, double deg)
+void dhr_rotx(double deg, dhr_mat4 *T)
 {
     double s, c;
     dhr_sincos(deg, &s, &c);
@@ -51,7 +51,7 @@ void dhr_rotx(dhr_mat4 *T, double deg)
     DHR_M4(T, 2, 1) = s; DHR_M4(T, 2, 2) = c;
 }
 
-void dhr_roty(dhr_mat4 *T, double deg)
+void dhr_roty(double deg, dhr_mat4 *T)
 {
     double s, c;
     dhr_sincos(deg, &s, &c);
@@ -60,7 +60,7 @@ void dhr_roty(dhr_mat4 *T, double deg)
     DHR_M4(T, 2, 0) = -s; DHR_M4(T, 2, 2) = c;
 }
 
-void dhr_rotz(dhr_mat4 *T, double deg)
+void dhr_rotz(double deg, dhr_mat4 *T)
 {
     double s, c;
     dhr_sincos(deg, &s, &c);
@@ -69,7 +69,7 @@ void dhr_rotz(dhr_mat4 *T, double deg)
     DHR_M4(T, 1, 0) = s; DHR_M4(T, 1, 1) = c;
 }
 
-int dhr_rot_axis(dhr_mat4 *T, double kx, double ky, double kz, double deg)
+int dhr_rot_axis(double kx, double ky, double kz, double deg, dhr_mat4 *T)
 {
     /* frame C with a = k, n any unit vector orthogonal to k, o = a x n;
      * Rot(k) = C Rot(z) C^T (seed eq. 1.65) */
@@ -104,13 +104,13 @@ int dhr_rot_axis(dhr_mat4 *T, double kx, double ky, double kz, double deg)
         Ct.m[i][1] = o[i];
         Ct.m[i][2] = a[i];
     }
-    dhr_rotz(&Rz, deg);
-    dhr_mul(&tmp, &C, &Rz);
-    dhr_mul(T, &tmp, &Ct);
+    dhr_rotz(deg, &Rz);
+    dhr_mul(&C, &Rz, &tmp);
+    dhr_mul(&tmp, &Ct, T);
     return 1;
 }
 
-void dhr_mul(dhr_mat4 *out, const dhr_mat4 *A, const dhr_mat4 *B)
+void dhr_mul(const dhr_mat4 *A, const dhr_mat4 *B, dhr_mat4 *out)
 {
     dhr_mat4 r;
     int i, j, k;
@@ -135,7 +135,7 @@ void dhr_apply4(const dhr_mat4 *T, const double u[4], double v[4])
     for (i = 0; i < 4; i++) v[i] = r[i];
 }
 
-int dhr_inv(dhr_mat4 *out, const dhr_mat4 *T)
+int dhr_inv(const dhr_mat4 *T, dhr_mat4 *out)
 {
     double a[4][8]; /* row-major augmented [T | I] */
     int i, j, k, p;
@@ -207,7 +207,7 @@ double dhr_norm_inf(const dhr_mat4 *T)
 double dhr_cond_inf(const dhr_mat4 *T)
 {
     dhr_mat4 inv;
-    if (!dhr_inv(&inv, T)) return HUGE_VAL;
+    if (!dhr_inv(T, &inv)) return HUGE_VAL;
     return dhr_norm_inf(T) * dhr_norm_inf(&inv);
 }
 
@@ -221,14 +221,23 @@ double dhr_max_abs(const dhr_mat4 *T)
     return best;
 }
 
-void dhr_from_f32(dhr_mat4 *D, const dh_mat4_f32 *T)
+void dhr_from_f32(const dh_mat4_f32 *T, dhr_mat4 *D)
 {
     int c, r;
     for (c = 0; c < 4; c++)
         for (r = 0; r < 4; r++) D->m[c][r] = (double)T->m[c][r];
 }
 
-void dhr_to_f32(dh_mat4_f32 *T, const dhr_mat4 *D)
+void dhr_from_q(const dh_frame_q *F, dhr_mat4 *out)
+{
+    int c, r;
+    dhr_identity(out);
+    for (c = 0; c < 3; c++)
+        for (r = 0; r < 3; r++) out->m[c][r] = ldexp((double)F->r[c][r], -30);
+    for (r = 0; r < 3; r++) out->m[3][r] = ldexp((double)F->p[r], -DH_QPOS_FRAC);
+}
+
+void dhr_to_f32(const dhr_mat4 *D, dh_mat4_f32 *T)
 {
     int c, r;
     for (c = 0; c < 4; c++)
@@ -259,6 +268,29 @@ double dhr_max_abs_diff_d(const dhr_mat4 *A, const dhr_mat4 *B)
     return best;
 }
 
+double dhr_pos_diff(const dhr_mat4 *A, const dhr_mat4 *B)
+{
+    double e = 0.0;
+    int i;
+    for (i = 0; i < 3; i++) {
+        double d = fabs(A->m[3][i] - B->m[3][i]);
+        if (!(d <= e)) e = d; /* NaN propagates */
+    }
+    return e;
+}
+
+double dhr_rot_diff(const dhr_mat4 *A, const dhr_mat4 *B)
+{
+    double e = 0.0;
+    int c, i;
+    for (c = 0; c < 3; c++)
+        for (i = 0; i < 3; i++) {
+            double d = fabs(A->m[c][i] - B->m[c][i]);
+            if (!(d <= e)) e = d;
+        }
+    return e;
+}
+
 void dhr_rand_unit3(double k[3])
 {
     /* uniform z in [-1, 1) and azimuth: uniform on the sphere */
@@ -270,11 +302,11 @@ void dhr_rand_unit3(double k[3])
     k[2] = z;
 }
 
-void dhr_rand_rigid(dhr_mat4 *T, double tmax)
+void dhr_rand_rigid(double tmax, dhr_mat4 *T)
 {
     double k[3];
     dhr_rand_unit3(k);
-    dhr_rot_axis(T, k[0], k[1], k[2], dht_rand_uniform(-180.0, 180.0));
+    dhr_rot_axis(k[0], k[1], k[2], dht_rand_uniform(-180.0, 180.0), T);
     DHR_M4(T, 0, 3) = dht_rand_uniform(-tmax, tmax);
     DHR_M4(T, 1, 3) = dht_rand_uniform(-tmax, tmax);
     DHR_M4(T, 2, 3) = dht_rand_uniform(-tmax, tmax);
@@ -285,6 +317,45 @@ void dhr_rand_general(dhr_mat4 *T)
     int c, r;
     for (c = 0; c < 4; c++)
         for (r = 0; r < 4; r++) T->m[c][r] = dht_rand_uniform(-1.0, 1.0);
+}
+
+void dhr_mat3_mul(const dhr_mat3 *A, const dhr_mat3 *B, dhr_mat3 *out)
+{
+    dhr_mat3 t;
+    int i, j, k;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) {
+            double s = 0.0;
+            for (k = 0; k < 3; k++) s += A->d[i][k] * B->d[k][j];
+            t.d[i][j] = s;
+        }
+    *out = t;
+}
+
+void dhr_mat3_from_quat(double w, double x, double y, double z, dhr_mat3 *R)
+{
+    R->d[0][0] = 1 - 2 * (y * y + z * z); R->d[0][1] = 2 * (x * y - w * z); R->d[0][2] = 2 * (x * z + w * y);
+    R->d[1][0] = 2 * (x * y + w * z); R->d[1][1] = 1 - 2 * (x * x + z * z); R->d[1][2] = 2 * (y * z - w * x);
+    R->d[2][0] = 2 * (x * z - w * y); R->d[2][1] = 2 * (y * z + w * x); R->d[2][2] = 1 - 2 * (x * x + y * y);
+}
+
+void dhr_mat3_to_f32(const dhr_mat3 *D, dh_mat3_f32 *R)
+{
+    int r, c;
+    for (r = 0; r < 3; r++)
+        for (c = 0; c < 3; c++) DH_M3(R, r, c) = (float)D->d[r][c];
+}
+
+double dhr_mat3_max_diff(const dh_mat3_f32 *R, const dhr_mat3 *D)
+{
+    double m = 0.0;
+    int r, c;
+    for (r = 0; r < 3; r++)
+        for (c = 0; c < 3; c++) {
+            double e = fabs((double)DH_M3(R, r, c) - D->d[r][c]);
+            if (!(e <= m)) m = e; /* NaN propagates as a failure */
+        }
+    return m;
 }
 
 double dhr_ulp_f32(double x)

@@ -8,9 +8,8 @@
 #include "dht.h"
 
 #include <math.h>
+#include <stdio.h>
 
-#define DHS_PI 3.14159265358979323846
-#define DHS_R2D (180.0 / DHS_PI)
 
 /* The tables: examples/robots/ *.dh, turned into macros at build time by
  * tools/gen_robots.py (panda_mm is panda.dh with lengths times 1000). */
@@ -39,123 +38,63 @@ const dhs_robot dhs_stanford_mm = DHS_ROBOT(STANFORD_MM);
 
 /* ------------------------------------------------------------------------ */
 
-void dhs_identity(dhs_mat4_d *T)
-{
-    int c, r;
-    for (c = 0; c < 4; c++)
-        for (r = 0; r < 4; r++) T->m[c][r] = (c == r) ? 1.0 : 0.0;
-}
-
-void dhs_trans(dhs_mat4_d *T, double x, double y, double z)
-{
-    dhs_identity(T);
-    T->m[3][0] = x;
-    T->m[3][1] = y;
-    T->m[3][2] = z;
-}
-
-void dhs_rotx(dhs_mat4_d *T, double deg)
-{
-    double s = sin(deg / DHS_R2D), c = cos(deg / DHS_R2D);
-    dhs_identity(T);
-    T->m[1][1] = c; T->m[2][1] = -s;
-    T->m[1][2] = s; T->m[2][2] = c;
-}
-
-void dhs_rotz(dhs_mat4_d *T, double deg)
-{
-    double s = sin(deg / DHS_R2D), c = cos(deg / DHS_R2D);
-    dhs_identity(T);
-    T->m[0][0] = c; T->m[1][0] = -s;
-    T->m[0][1] = s; T->m[1][1] = c;
-}
-
-void dhs_mul(dhs_mat4_d *out, const dhs_mat4_d *A, const dhs_mat4_d *B)
-{
-    dhs_mat4_d t;
-    int r, c, k;
-    for (c = 0; c < 4; c++)
-        for (r = 0; r < 4; r++) {
-            double s = 0.0;
-            for (k = 0; k < 4; k++) s += A->m[k][r] * B->m[c][k];
-            t.m[c][r] = s;
-        }
-    *out = t;
-}
-
-void dhs_from_f32(dhs_mat4_d *out, const dh_mat4_f32 *T)
-{
-    int c, r;
-    for (c = 0; c < 4; c++)
-        for (r = 0; r < 4; r++) out->m[c][r] = (double)T->m[c][r];
-}
-
-void dhs_from_q(dhs_mat4_d *out, const dh_frame_q *F)
-{
-    int c, r;
-    dhs_identity(out);
-    for (c = 0; c < 3; c++)
-        for (r = 0; r < 3; r++) out->m[c][r] = ldexp((double)F->r[c][r], -30);
-    for (r = 0; r < 3; r++) out->m[3][r] = ldexp((double)F->p[r], -DH_QPOS_FRAC);
-}
-
 void dhs_link(dh_convention conv, dh_joint_type type, double a, double d,
-              double alpha_deg, double theta_deg, double q, dhs_mat4_d *A)
+              double alpha_deg, double theta_deg, double q, dhr_mat4 *A)
 {
-    dhs_mat4_d rz, tz, tx, rx;
+    dhr_mat4 rz, tz, tx, rx;
     double theta = theta_deg, dd = d;
     if (type == DH_JOINT_REVOLUTE) theta += q; else dd += q;
-    dhs_rotz(&rz, theta);
-    dhs_trans(&tz, 0, 0, dd);
-    dhs_trans(&tx, a, 0, 0);
-    dhs_rotx(&rx, alpha_deg);
+    dhr_rotz(theta, &rz);
+    dhr_trans(0, 0, dd, &tz);
+    dhr_trans(a, 0, 0, &tx);
+    dhr_rotx(alpha_deg, &rx);
     if (conv == DH_CONV_STANDARD) {          /* Rz Tz Tx Rx */
-        dhs_mul(A, &rz, &tz);
-        dhs_mul(A, A, &tx);
-        dhs_mul(A, A, &rx);
+        dhr_mul(&rz, &tz, A);
+        dhr_mul(A, &tx, A);
+        dhr_mul(A, &rx, A);
     } else {                                 /* Rx Tx Rz Tz */
-        dhs_mul(A, &rx, &tx);
-        dhs_mul(A, A, &rz);
-        dhs_mul(A, A, &tz);
+        dhr_mul(&rx, &tx, A);
+        dhr_mul(A, &rz, A);
+        dhr_mul(A, &tz, A);
     }
 }
 
-void dhs_fk_desc(const dhs_robot *d, const double *q, dhs_mat4_d *frames, dhs_mat4_d *T)
+void dhs_fk_desc(const dhs_robot *d, const double *q, dhr_mat4 *frames, dhr_mat4 *T)
 {
-    dhs_mat4_d acc = d->base, A;
+    dhr_mat4 acc = d->base, A;
     unsigned i;
     for (i = 0; i < d->n; i++) {
         const dhs_joint_desc *j = &d->j[i];
         dhs_link(d->conv, j->type, j->a, j->d, j->alpha_deg, j->theta_deg, q[i], &A);
-        dhs_mul(&acc, &acc, &A);
+        dhr_mul(&acc, &A, &acc);
         if (frames) frames[i] = acc;
     }
-    if (T) dhs_mul(T, &acc, &d->tool);
+    if (T) dhr_mul(&acc, &d->tool, T);
 }
 
-void dhs_fk_ref_f32(const dh_robot *r, const double *q, dhs_mat4_d *frames, dhs_mat4_d *T)
+void dhs_fk_ref_f32(const dh_robot *r, const double *q, dhr_mat4 *frames, dhr_mat4 *T)
 {
-    dhs_mat4_d acc, A, tool;
+    dhr_mat4 acc, A, tool;
     uint32_t i;
-    dhs_from_f32(&acc, &r->base);
+    dhr_from_f32(&r->base, &acc);
     for (i = 0; i < r->n; i++) {
         const dh_joint *j = &r->joint[i];
         dhs_link(r->conv, j->type, (double)j->a, (double)j->d, (double)j->alpha_deg,
                  (double)j->theta_deg, q[i], &A);
-        dhs_mul(&acc, &acc, &A);
+        dhr_mul(&acc, &A, &acc);
         if (frames) frames[i] = acc;
     }
     if (T) {
-        dhs_from_f32(&tool, &r->tool);
-        dhs_mul(T, &acc, &tool);
+        dhr_from_f32(&r->tool, &tool);
+        dhr_mul(&acc, &tool, T);
     }
 }
 
-void dhs_fk_ref_q(const dh_robot *r, const int32_t *q, dhs_mat4_d *frames, dhs_mat4_d *T)
+void dhs_fk_ref_q(const dh_robot *r, const int32_t *q, dhr_mat4 *frames, dhr_mat4 *T)
 {
-    dhs_mat4_d acc, A, tool;
+    dhr_mat4 acc, A, tool;
     uint32_t i;
-    dhs_from_q(&acc, &r->base_q);
+    dhr_from_q(&r->base_q, &acc);
     for (i = 0; i < r->n; i++) {
         const dh_joint *j = &r->joint[i];
         double qv = (j->type == DH_JOINT_REVOLUTE) ? ldexp((double)q[i], -16)
@@ -163,25 +102,18 @@ void dhs_fk_ref_q(const dh_robot *r, const int32_t *q, dhs_mat4_d *frames, dhs_m
         dhs_link(r->conv, j->type, ldexp((double)j->a_q, -DH_QPOS_FRAC),
                  ldexp((double)j->d_q, -DH_QPOS_FRAC), ldexp((double)j->alpha_q, -16),
                  ldexp((double)j->theta_q, -16), qv, &A);
-        dhs_mul(&acc, &acc, &A);
+        dhr_mul(&acc, &A, &acc);
         if (frames) frames[i] = acc;
     }
     if (T) {
-        dhs_from_q(&tool, &r->tool_q);
-        dhs_mul(T, &acc, &tool);
+        dhr_from_q(&r->tool_q, &tool);
+        dhr_mul(&acc, &tool, T);
     }
 }
 
 /* ------------------------------------------------------------------------ */
 
-static void to_f32(const dhs_mat4_d *D, dh_mat4_f32 *T)
-{
-    int c, r;
-    for (c = 0; c < 4; c++)
-        for (r = 0; r < 4; r++) T->m[c][r] = (float)D->m[c][r];
-}
-
-static void to_q(const dhs_mat4_d *D, dh_frame_q *F)
+void dhs_to_frame_q(const dhr_mat4 *D, dh_frame_q *F)
 {
     int c, r;
     for (c = 0; c < 3; c++)
@@ -207,10 +139,10 @@ dh_status dhs_build(const dhs_robot *d, dh_robot *r)
             if (st != DH_OK) return st;
         }
     }
-    to_f32(&d->base, &T);
+    dhr_to_f32(&d->base, &T);
     st = dh_robot_set_base_f32(r, &T);
     if (st != DH_OK) return st;
-    to_f32(&d->tool, &T);
+    dhr_to_f32(&d->tool, &T);
     return dh_robot_set_tool_f32(r, &T);
 }
 
@@ -233,10 +165,10 @@ dh_status dhs_build_q(const dhs_robot *d, dh_robot *r)
             if (st != DH_OK) return st;
         }
     }
-    to_q(&d->base, &F);
+    dhs_to_frame_q(&d->base, &F);
     st = dh_robot_set_base_q(r, &F);
     if (st != DH_OK) return st;
-    to_q(&d->tool, &F);
+    dhs_to_frame_q(&d->tool, &F);
     return dh_robot_set_tool_q(r, &F);
 }
 
@@ -262,6 +194,56 @@ void dhs_random_q_robot(const dh_robot *r, double *q)
     }
 }
 
+void dhs_target_f32(const dh_robot *r, const double *q, dh_mat4_f32 *T)
+{
+    dhr_mat4 D;
+    dhs_fk_ref_f32(r, q, NULL, &D);
+    dhr_to_f32(&D, T);
+}
+
+double dhs_joint_dist(const dh_robot *r, uint32_t i, double a, double b)
+{
+    double d = a - b;
+    if (r->joint[i].type == DH_JOINT_REVOLUTE) {
+        d = fmod(d, 360.0);
+        if (d > 180.0) d -= 360.0;
+        if (d < -180.0) d += 360.0;
+    }
+    return fabs(d);
+}
+
+const char *dhs_q_str(const double *q, uint32_t n, int slot)
+{
+    static char buf[2][DHS_MAX_JOINTS * 26];
+    char *o = buf[slot & 1];
+    size_t k = 0;
+    uint32_t i;
+    o[0] = '\0';
+    for (i = 0; i < n && i < DHS_MAX_JOINTS; i++)
+        k += (size_t)snprintf(o + k, sizeof buf[0] - k, "%s%.17g", i ? " " : "", q[i]);
+    return o;
+}
+
+const char *dhs_qf_str(const float *q, uint32_t n, int slot)
+{
+    double d[DHS_MAX_JOINTS];
+    uint32_t i;
+    for (i = 0; i < n && i < DHS_MAX_JOINTS; i++) d[i] = (double)q[i];
+    return dhs_q_str(d, n, slot);
+}
+
+double dhs_chain_reach(const dhs_robot *d, const double *q)
+{
+    double L = 0.0;
+    unsigned i;
+    for (i = 0; i < 3; i++) L += fabs(d->base.m[3][i]) + fabs(d->tool.m[3][i]);
+    for (i = 0; i < d->n; i++) {
+        L += fabs(d->j[i].a) + fabs(d->j[i].d);
+        if (d->j[i].type == DH_JOINT_PRISMATIC) L += fabs(q[i]);
+    }
+    return L > 1.0 ? L : 1.0;
+}
+
 int32_t dhs_to_q(double x, int frac)
 {
     double v = floor(ldexp(x, frac) + 0.5);
@@ -277,27 +259,18 @@ void dhs_q_from_double(const dh_robot *r, const double *q, int32_t *qq)
         qq[i] = dhs_to_q(q[i], r->joint[i].type == DH_JOINT_REVOLUTE ? 16 : DH_QPOS_FRAC);
 }
 
-double dhs_pos_err_f32(const dh_mat4_f32 *T, const dhs_mat4_d *R)
+double dhs_pos_err_f32(const dh_mat4_f32 *T, const dhr_mat4 *R)
 {
-    double e = 0.0;
-    int r;
-    for (r = 0; r < 3; r++) {
-        double d = fabs((double)T->m[3][r] - R->m[3][r]);
-        if (!(d <= e)) e = d;   /* NaN propagates */
-    }
-    return e;
+    dhr_mat4 D;
+    dhr_from_f32(T, &D);
+    return dhr_pos_diff(&D, R);
 }
 
-double dhs_rot_err_f32(const dh_mat4_f32 *T, const dhs_mat4_d *R)
+double dhs_rot_err_f32(const dh_mat4_f32 *T, const dhr_mat4 *R)
 {
-    double e = 0.0;
-    int c, r;
-    for (c = 0; c < 3; c++)
-        for (r = 0; r < 3; r++) {
-            double d = fabs((double)T->m[c][r] - R->m[c][r]);
-            if (!(d <= e)) e = d;
-        }
-    return e;
+    dhr_mat4 D;
+    dhr_from_f32(T, &D);
+    return dhr_rot_diff(&D, R);
 }
 
 int dhs_bottom_ok_f32(const dh_mat4_f32 *T)
@@ -305,27 +278,18 @@ int dhs_bottom_ok_f32(const dh_mat4_f32 *T)
     return T->m[0][3] == 0.0f && T->m[1][3] == 0.0f && T->m[2][3] == 0.0f && T->m[3][3] == 1.0f;
 }
 
-double dhs_pos_err_q(const dh_frame_q *F, const dhs_mat4_d *R)
+double dhs_pos_err_q(const dh_frame_q *F, const dhr_mat4 *R)
 {
-    double e = 0.0;
-    int r;
-    for (r = 0; r < 3; r++) {
-        double d = fabs(ldexp((double)F->p[r], -DH_QPOS_FRAC) - R->m[3][r]);
-        if (d > e) e = d;
-    }
-    return e;
+    dhr_mat4 D;
+    dhr_from_q(F, &D);
+    return dhr_pos_diff(&D, R);
 }
 
-double dhs_rot_err_q(const dh_frame_q *F, const dhs_mat4_d *R)
+double dhs_rot_err_q(const dh_frame_q *F, const dhr_mat4 *R)
 {
-    double e = 0.0;
-    int c, r;
-    for (c = 0; c < 3; c++)
-        for (r = 0; r < 3; r++) {
-            double d = fabs(ldexp((double)F->r[c][r], -30) - R->m[c][r]);
-            if (d > e) e = d;
-        }
-    return e;
+    dhr_mat4 D;
+    dhr_from_q(F, &D);
+    return dhr_rot_diff(&D, R);
 }
 
 double dhs_rot_angle(double R[3][3])
@@ -337,7 +301,7 @@ double dhs_rot_angle(double R[3][3])
 
 void dhs_true_error_f32(const dh_robot *r, const float *q, const dh_mat4_f32 *target, double *ep, double *er)
 {
-    dhs_mat4_d T;
+    dhr_mat4 T;
     double qd[DHS_MAX_JOINTS], D[3][3];
     uint32_t i;
     int a, b, k;

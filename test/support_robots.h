@@ -6,8 +6,9 @@
  * Used by the FK, Jacobian/IK and CLI tests. Nothing here calls the code
  * under test except dhs_build()/dhs_build_q(), which fill a dh_robot through
  * the public API. The references multiply the elementary 4x4 matrices of the
- * DH definitions (Rz, Tz, Tx, Rx) in double with libm sin/cos of radians, so
- * they share no code and no algebraic shortcut with the library.
+ * DH definitions (Rz, Tz, Tx, Rx) in double with the helpers of
+ * support_ref.h (libm sin/cos of radians), so they share no code and no
+ * algebraic shortcut with the library.
  *
  * Units: revolute joint values in DEGREES, prismatic ones in the robot's
  * length unit (m for the *_m models, mm for the *_mm models).
@@ -21,11 +22,9 @@
 #define SUPPORT_ROBOTS_H
 
 #include "dhmath/robot.h"
+#include "support_ref.h"
 
 #define DHS_MAX_JOINTS 8
-
-/** Double 4x4 homogeneous transform, column-major m[col][row]. */
-typedef struct { double m[4][4]; } dhs_mat4_d;
 
 typedef struct {
     dh_joint_type type;
@@ -39,7 +38,7 @@ typedef struct {
     unsigned n;
     double unit_per_m;                  /* 1 for metres, 1000 for millimetres */
     dhs_joint_desc j[DHS_MAX_JOINTS];
-    dhs_mat4_d base, tool;
+    dhr_mat4 base, tool;
 } dhs_robot;
 
 /* The shipped models (examples/robots/ *.dh). */
@@ -69,20 +68,9 @@ void dhs_random_q(const dhs_robot *d, double *q);
 /** Same, from the limits stored in a dh_robot (float limits). */
 void dhs_random_q_robot(const dh_robot *r, double *q);
 
-/* ---- double matrices ---- */
-
-void dhs_identity(dhs_mat4_d *T);
-void dhs_trans(dhs_mat4_d *T, double x, double y, double z);
-void dhs_rotx(dhs_mat4_d *T, double deg);
-void dhs_rotz(dhs_mat4_d *T, double deg);
-/** out = A * B (out may alias A or B). */
-void dhs_mul(dhs_mat4_d *out, const dhs_mat4_d *A, const dhs_mat4_d *B);
-void dhs_from_f32(dhs_mat4_d *out, const dh_mat4_f32 *T);
-void dhs_from_q(dhs_mat4_d *out, const dh_frame_q *F);
-
 /** Link matrix of one joint (standard or modified convention) at value q. */
 void dhs_link(dh_convention conv, dh_joint_type type, double a, double d,
-              double alpha_deg, double theta_deg, double q, dhs_mat4_d *A);
+              double alpha_deg, double theta_deg, double q, dhr_mat4 *A);
 
 /* ---- reference forward kinematics ---- */
 
@@ -91,28 +79,49 @@ void dhs_link(dh_convention conv, dh_joint_type type, double a, double d,
  * n entries) receives base*A1..A_{i+1}; T (may be NULL) the end frame with
  * the tool.
  */
-void dhs_fk_desc(const dhs_robot *d, const double *q, dhs_mat4_d *frames, dhs_mat4_d *T);
+void dhs_fk_desc(const dhs_robot *d, const double *q, dhr_mat4 *frames, dhr_mat4 *T);
 /**
  * From a dh_robot's float parameters as stored (a, d, alpha_deg, theta_deg,
  * base, tool), evaluated in double: the reference for the float path.
  */
-void dhs_fk_ref_f32(const dh_robot *r, const double *q, dhs_mat4_d *frames, dhs_mat4_d *T);
+void dhs_fk_ref_f32(const dh_robot *r, const double *q, dhr_mat4 *frames, dhr_mat4 *T);
 /**
  * From a dh_robot's fixed-point parameters as stored (a_q, d_q, alpha_q,
  * theta_q, base_q, tool_q) and Q joint values (dh_q16 deg for R, dh_qpos for
  * P), evaluated in double: the reference for the fixed path on the same
  * Q-rounded inputs. Lengths come out in the robot's unit (not Q).
  */
-void dhs_fk_ref_q(const dh_robot *r, const int32_t *q, dhs_mat4_d *frames, dhs_mat4_d *T);
+void dhs_fk_ref_q(const dh_robot *r, const int32_t *q, dhr_mat4 *frames, dhr_mat4 *T);
+
+/* ---- targets, joint distances, messages ---- */
+
+/** The float target of joint values q (deg / length): the double reference
+ *  FK of r's stored float parameters (dhs_fk_ref_f32), rounded to float. */
+void dhs_target_f32(const dh_robot *r, const double *q, dh_mat4_f32 *T);
+/** |a - b| of joint i: modulo 360 (in [0, 180]) for a revolute joint, plain
+ *  for a prismatic one. */
+double dhs_joint_dist(const dh_robot *r, uint32_t i, double a, double b);
+/** "q1 q2 ..." (%.17g) of n joint values, for failure messages; two
+ *  buffers (slot 0 or 1), so that one message can show two vectors. */
+const char *dhs_q_str(const double *q, uint32_t n, int slot);
+/** dhs_q_str of float joint values. */
+const char *dhs_qf_str(const float *q, uint32_t n, int slot);
+
+/** Sum of every length in the chain at q (base and tool offsets, |a|, |d|,
+ *  and |q| of prismatic joints), at least 1: the scale of the position
+ *  error. */
+double dhs_chain_reach(const dhs_robot *d, const double *q);
 
 /* ---- conversions and error measures ---- */
 
 /** Round to nearest Q with `frac` fraction bits (saturating; for test inputs). */
 int32_t dhs_to_q(double x, int frac);
+/** A double frame -> Q (rotation Q2.30, position DH_QPOS_FRAC fraction
+ *  bits), each entry by dhs_to_q; the bottom row is not read. */
+void dhs_to_frame_q(const dhr_mat4 *D, dh_frame_q *F);
 /** Joint values in deg / length -> Q (dh_q16 for R, dh_qpos for P). */
 void dhs_q_from_double(const dh_robot *r, const double *q, int32_t *qq);
 
-/** Largest |position difference| (length unit). */
 /** Rotation angle (rad) of the double 3x3 R (column-major R[col][row]),
  *  robust near 0 and pi: atan2 of the skew part's norm and trace - 1. */
 double dhs_rot_angle(double R[3][3]);
@@ -131,14 +140,15 @@ double dhs_mirror_twist(double alpha_deg);
  * beyond the limit it crosses and qn at most that inside it.
  */
 int dhs_limit_twin_f32(const dh_robot *r, const float *c, const float *qn, double slack_deg, double slack_len);
-double dhs_pos_err_f32(const dh_mat4_f32 *T, const dhs_mat4_d *R);
-/** Largest |rotation entry difference| (3x3 part). */
-double dhs_rot_err_f32(const dh_mat4_f32 *T, const dhs_mat4_d *R);
+/** Largest |position difference| (length unit; NaN propagates). */
+double dhs_pos_err_f32(const dh_mat4_f32 *T, const dhr_mat4 *R);
+/** Largest |rotation entry difference| (3x3 part; NaN propagates). */
+double dhs_rot_err_f32(const dh_mat4_f32 *T, const dhr_mat4 *R);
 /** Bottom row exactly 0 0 0 1. */
 int dhs_bottom_ok_f32(const dh_mat4_f32 *T);
 /** Largest |position difference| in length units (Q converted to double). */
-double dhs_pos_err_q(const dh_frame_q *F, const dhs_mat4_d *R);
+double dhs_pos_err_q(const dh_frame_q *F, const dhr_mat4 *R);
 /** Largest |rotation entry difference| in units of 1.0 (divide by 2^-30 for LSB). */
-double dhs_rot_err_q(const dh_frame_q *F, const dhs_mat4_d *R);
+double dhs_rot_err_q(const dh_frame_q *F, const dhr_mat4 *R);
 
 #endif /* SUPPORT_ROBOTS_H */

@@ -469,7 +469,7 @@ static void kin_ik_not_rigid(void)
 static double ref_pos_err(const dh_robot *r, const dh_mat4_f32 *target, const float *q)
 {
     double qd[NJ], s = 0.0;
-    dhs_mat4_d R;
+    dhr_mat4 R;
     unsigned i;
     for (i = 0; i < r->n; i++) qd[i] = q[i];
     dhs_fk_ref_f32(r, qd, NULL, &R);

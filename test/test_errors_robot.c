@@ -97,7 +97,7 @@ static void robot_unrepresentable_fixed_constants(void)
         int32_t qq[2] = { 0, 0 };
         float q[2] = { 10.0f, 20.0f };
         double qd[2] = { 10.0, 20.0 };
-        dhs_mat4_d R;
+        dhr_mat4 R;
         DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
         DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 1.0f, 0.0f), DH_OK);
         if (k == 0) DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, big, 0.0f), DH_OK);
@@ -331,7 +331,7 @@ static void robot_fk_f32_bad(void)
         {
             float qh[3] = { 1e30f, 0.25f, -3e38f };
             double qd[3];
-            dhs_mat4_d R;
+            dhr_mat4 R;
             /* the reference reduces the float sums q + theta exactly */
             qd[0] = fmod((double)(qh[0] + r.joint[0].theta_deg), 360.0) - (double)r.joint[0].theta_deg;
             qd[1] = 0.25;
@@ -412,7 +412,7 @@ static void robot_fk_q_bad(void)
             static const int32_t ext[] = { INT32_MIN, INT32_MAX, -1, 0x12345678 };
             unsigned i;
             for (i = 0; i < 4; i++) {
-                dhs_mat4_d R;
+                dhr_mat4 R;
                 q[0] = ext[i]; q[1] = (int32_t)(0.3 * ldexp(1.0, DH_QPOS_FRAC)); q[2] = ext[3 - i];
                 DHT_EQ_INT(dh_fk_q(&r, q, &T), DH_OK);
                 dhs_fk_ref_q(&r, q, NULL, &R);

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "dht.h"
+#include "support_ref.h"
 #include "dhmath/rot.h"
 
 #define PI_D 3.14159265358979323846
@@ -20,9 +21,7 @@
  */
 #define REPRO_TOL 6e-7     /* measured 5.1e-7 */
 
-/* ---- double reference (row-major d[r][c]) ---------------------------- */
-
-typedef struct { double d[3][3]; } dm3;
+/* ---- double reference (dhr_mat3 of support_ref.h) ------------------- */
 
 /* the 24 names in dh_euler_seq order: the reference reads the axes from
  * the letters itself */
@@ -31,7 +30,7 @@ static const char *const seq_names[24] = {
     "xyz", "xzy", "yxz", "yzx", "zxy", "zyx", "xyx", "xzx", "yxy", "yzy", "zxz", "zyz"
 };
 
-static void d_elem(dm3 *M, int axis, double deg)
+static void d_elem(int axis, double deg, dhr_mat3 *M)
 {
     double t = deg * PI_D / 180.0, c = cos(t), s = sin(t);
     int i, j;
@@ -42,60 +41,28 @@ static void d_elem(dm3 *M, int axis, double deg)
     if (axis == 2) { M->d[0][0] = c; M->d[0][1] = -s; M->d[1][0] = s; M->d[1][1] = c; }
 }
 
-static void d_mul(dm3 *out, const dm3 *A, const dm3 *B)
-{
-    dm3 t;
-    int i, j, k;
-    for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++) {
-            double s = 0.0;
-            for (k = 0; k < 3; k++) s += A->d[i][k] * B->d[k][j];
-            t.d[i][j] = s;
-        }
-    *out = t;
-}
-
 /* scipy: upper case R = R_l0(a) R_l1(b) R_l2(c); lower case R = R_l2(c) R_l1(b) R_l0(a) */
-static void d_euler(dm3 *R, int seq, double a, double b, double c)
+static void d_euler(int seq, double a, double b, double c, dhr_mat3 *R)
 {
     const char *nm = seq_names[seq];
     int ax[3], k, upper = (nm[0] >= 'X' && nm[0] <= 'Z');
-    dm3 A, B, C;
+    dhr_mat3 A, B, C;
     for (k = 0; k < 3; k++) ax[k] = upper ? nm[k] - 'X' : nm[k] - 'x';
-    d_elem(&A, ax[0], a);
-    d_elem(&B, ax[1], b);
-    d_elem(&C, ax[2], c);
+    d_elem(ax[0], a, &A);
+    d_elem(ax[1], b, &B);
+    d_elem(ax[2], c, &C);
     if (upper) {
-        d_mul(R, &A, &B);
-        d_mul(R, R, &C);
+        dhr_mat3_mul(&A, &B, R);
+        dhr_mat3_mul(R, &C, R);
     } else {
-        d_mul(R, &C, &B);
-        d_mul(R, R, &A);
+        dhr_mat3_mul(&C, &B, R);
+        dhr_mat3_mul(R, &A, R);
     }
 }
 
 static int is_proper(int seq)
 {
     return seq_names[seq][0] == seq_names[seq][2];
-}
-
-static void to_f32(dh_mat3_f32 *R, const dm3 *D)
-{
-    int r, c;
-    for (r = 0; r < 3; r++)
-        for (c = 0; c < 3; c++) DH_M3(R, r, c) = (float)D->d[r][c];
-}
-
-static double max_diff(const dh_mat3_f32 *R, const dm3 *D)
-{
-    double m = 0.0;
-    int r, c;
-    for (r = 0; r < 3; r++)
-        for (c = 0; c < 3; c++) {
-            double e = fabs((double)DH_M3(R, r, c) - D->d[r][c]);
-            if (!(e <= m)) m = e; /* NaN propagates as a failure */
-        }
-    return m;
 }
 
 /* |a - b| modulo 360, in [0, 180] */
@@ -108,9 +75,9 @@ static double ang_diff(double a, double b)
 /* exact rotation of the float angles returned, compared with the float input */
 static double reproduce_err(const dh_mat3_f32 *R, int seq, const float ang[3])
 {
-    dm3 D;
-    d_euler(&D, seq, (double)ang[0], (double)ang[1], (double)ang[2]);
-    return max_diff(R, &D);
+    dhr_mat3 D;
+    d_euler(seq, (double)ang[0], (double)ang[1], (double)ang[2], &D);
+    return dhr_mat3_max_diff(R, &D);
 }
 
 static void check_ranges(int seq, const float ang[3])
@@ -159,14 +126,14 @@ static void to_mat_random_vs_double(void)
         for (it = 0; it < n; it++) {
             float ang[3];
             dh_mat3_f32 R;
-            dm3 D;
+            dhr_mat3 D;
             double e;
             ang[0] = (float)dht_rand_uniform(-360.0, 360.0);
             ang[1] = (float)dht_rand_uniform(-360.0, 360.0);
             ang[2] = (float)dht_rand_uniform(-360.0, 360.0);
             DHT_EQ_INT(dh_euler_to_mat3_f32((dh_euler_seq)seq, ang, &R), DH_OK);
-            d_euler(&D, seq, ang[0], ang[1], ang[2]);
-            e = max_diff(&R, &D);
+            d_euler(seq, ang[0], ang[1], ang[2], &D);
+            e = dhr_mat3_max_diff(&R, &D);
             if (e > worst) worst = e;
             DHT_TRUE_MSG(e <= 3e-7, "%s (%.9g %.9g %.9g): entry error %.3g",
                          seq_names[seq], (double)ang[0], (double)ang[1], (double)ang[2], e);
@@ -184,12 +151,12 @@ static void to_mat_multiples_of_90_exact(void)
                 for (k = -4; k <= 4; k++) {
                     float ang[3];
                     dh_mat3_f32 R;
-                    dm3 D;
+                    dhr_mat3 D;
                     ang[0] = 90.0f * (float)i;
                     ang[1] = 90.0f * (float)j;
                     ang[2] = 90.0f * (float)k;
                     DHT_EQ_INT(dh_euler_to_mat3_f32((dh_euler_seq)seq, ang, &R), DH_OK);
-                    d_euler(&D, seq, ang[0], ang[1], ang[2]);
+                    d_euler(seq, ang[0], ang[1], ang[2], &D);
                     for (r = 0; r < 3; r++)
                         for (c = 0; c < 3; c++) {
                             /* exact 0 / +-1, and +0 rather than -0 */
@@ -275,10 +242,10 @@ static void from_mat_random_roundtrip(void)
             double a[3], e;
             float out[3];
             dh_mat3_f32 R;
-            dm3 D;
+            dhr_mat3 D;
             rand_angles(seq, a);
-            d_euler(&D, seq, a[0], a[1], a[2]);
-            to_f32(&R, &D);
+            d_euler(seq, a[0], a[1], a[2], &D);
+            dhr_mat3_to_f32(&D, &R);
             DHT_EQ_INT(dh_mat3_to_euler_f32(&R, (dh_euler_seq)seq, out), DH_OK);
             check_ranges(seq, out);
             for (k = 0; k < 3; k++) {
@@ -302,17 +269,15 @@ static void from_mat_haar_random(void)
     double worst = 0.0;
     for (it = 0; it < n; it++) {
         double q[4], nq = 0.0, w, x, y, z;
-        dm3 D;
+        dhr_mat3 D;
         dh_mat3_f32 R;
         int k;
         for (k = 0; k < 4; k++) { q[k] = dht_rand_uniform(-1.0, 1.0); nq += q[k] * q[k]; }
         if (nq < 1e-3 || nq > 1.0) { it--; continue; }
         nq = sqrt(nq);
         w = q[0] / nq; x = q[1] / nq; y = q[2] / nq; z = q[3] / nq;
-        D.d[0][0] = 1 - 2 * (y * y + z * z); D.d[0][1] = 2 * (x * y - w * z); D.d[0][2] = 2 * (x * z + w * y);
-        D.d[1][0] = 2 * (x * y + w * z); D.d[1][1] = 1 - 2 * (x * x + z * z); D.d[1][2] = 2 * (y * z - w * x);
-        D.d[2][0] = 2 * (x * z - w * y); D.d[2][1] = 2 * (y * z + w * x); D.d[2][2] = 1 - 2 * (x * x + y * y);
-        to_f32(&R, &D);
+        dhr_mat3_from_quat(w, x, y, z, &D);
+        dhr_mat3_to_f32(&D, &R);
         for (seq = 0; seq < 24; seq++) {
             float out[3];
             double e;
@@ -342,7 +307,7 @@ static void at_the_poles(void)
             for (it = 0; it < n; it++) {
                 float ang[3], out[3];
                 dh_mat3_f32 R;
-                dm3 D;
+                dhr_mat3 D;
                 double e, mid = pole_mid(seq, which);
                 ang[0] = (float)dht_rand_uniform(-180.0, 180.0);
                 ang[1] = (float)mid;
@@ -357,8 +322,8 @@ static void at_the_poles(void)
                 if (e > worst) worst = e;
                 DHT_TRUE_MSG(e <= REPRO_TOL, "%s pole %g: reproduction %.3g", seq_names[seq], mid, e);
                 /* (2) the exact matrix rounded to float */
-                d_euler(&D, seq, ang[0], mid, ang[2]);
-                to_f32(&R, &D);
+                d_euler(seq, ang[0], mid, ang[2], &D);
+                dhr_mat3_to_f32(&D, &R);
                 DHT_EQ_INT(dh_mat3_to_euler_f32(&R, (dh_euler_seq)seq, out), DH_OK);
                 check_ranges(seq, out);
                 DHT_NEAR(out[1], mid, 1e-5);
@@ -381,15 +346,15 @@ static void near_the_poles(void)
                 double mid = pole_mid(seq, which), delta, b, a0, a2, e;
                 float out[3];
                 dh_mat3_f32 R;
-                dm3 D;
+                dhr_mat3 D;
                 if (it & 1) delta = pow(10.0, dht_rand_uniform(-9.0, -4.0));
                 else delta = dht_rand_uniform(0.0, 1e-4);
                 /* towards the inside of the range */
                 b = (mid > 0.0) ? mid - delta : mid + delta;
                 a0 = dht_rand_uniform(-180.0, 180.0);
                 a2 = dht_rand_uniform(-180.0, 180.0);
-                d_euler(&D, seq, a0, b, a2);
-                to_f32(&R, &D);
+                d_euler(seq, a0, b, a2, &D);
+                dhr_mat3_to_f32(&D, &R);
                 DHT_EQ_INT(dh_mat3_to_euler_f32(&R, (dh_euler_seq)seq, out), DH_OK);
                 check_ranges(seq, out);
                 e = fabs(out[1] - b);
@@ -460,9 +425,9 @@ static void bad_input(void)
         Rb.m[0][1] += 4e-5f;
         DHT_EQ_INT(dh_mat3_to_euler_f32(&Rb, (dh_euler_seq)seq, out), DH_OK);
         {
-            dm3 D;
-            d_euler(&D, seq, out[0], out[1], out[2]);
-            DHT_TRUE(max_diff(&Rsave, &D) <= 1e-4);
+            dhr_mat3 D;
+            d_euler(seq, out[0], out[1], out[2], &D);
+            DHT_TRUE(dhr_mat3_max_diff(&Rsave, &D) <= 1e-4);
         }
         out[0] = out[1] = out[2] = 7.0f;
     }

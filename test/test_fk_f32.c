@@ -45,7 +45,7 @@ static void fk(const dh_robot *r, const double *qd, dh_mat4_f32 *T)
 }
 
 /* Reference on the float-rounded joint values (what the code receives). */
-static void ref(const dh_robot *r, const double *qd, dhs_mat4_d *R)
+static void ref(const dh_robot *r, const double *qd, dhr_mat4 *R)
 {
     double qf[DHS_MAX_JOINTS];
     uint32_t i;
@@ -128,7 +128,7 @@ static void random_configs(const dhs_robot *d, double pos_tol, double rot_tol)
 {
     dh_robot r;
     dh_mat4_f32 T;
-    dhs_mat4_d R, D;
+    dhr_mat4 R, D;
     double q[DHS_MAX_JOINTS], ep = 0, er = 0, epd = 0, erd = 0;
     long k, n = DHT_ITER(10000);
     build(d, &r);
@@ -170,7 +170,7 @@ static void dense_sweep(void)
         const dhs_robot *d = models[m];
         dh_robot r;
         dh_mat4_f32 T;
-        dhs_mat4_d R;
+        dhr_mat4 R;
         double q[DHS_MAX_JOINTS], ep = 0, er = 0;
         unsigned j;
         long k, steps = DHT_ITER(4000);
@@ -195,7 +195,7 @@ static void dense_sweep(void)
 
 static void random_robot(dhs_robot *d)
 {
-    dhs_mat4_d A;
+    dhr_mat4 A;
     unsigned i;
     memset(d, 0, sizeof *d);
     d->name = "random";
@@ -214,36 +214,22 @@ static void random_robot(dhs_robot *d)
         else { j->qmin = -400.0; j->qmax = 400.0; }
     }
     /* base: a rigid motion; tool: rigid, sometimes identity */
-    dhs_rotz(&d->base, dht_rand_uniform(-180, 180));
-    dhs_rotx(&A, dht_rand_uniform(-180, 180));
-    dhs_mul(&d->base, &d->base, &A);
+    dhr_rotz(dht_rand_uniform(-180, 180), &d->base);
+    dhr_rotx(dht_rand_uniform(-180, 180), &A);
+    dhr_mul(&d->base, &A, &d->base);
     d->base.m[3][0] = dht_rand_uniform(-1, 1);
     d->base.m[3][1] = dht_rand_uniform(-1, 1);
     d->base.m[3][2] = dht_rand_uniform(-1, 1);
     if (dht_rand_u32() & 1u) {
-        dhs_identity(&d->tool);
+        dhr_identity(&d->tool);
     } else {
-        dhs_rotx(&d->tool, dht_rand_uniform(-180, 180));
-        dhs_rotz(&A, dht_rand_uniform(-180, 180));
-        dhs_mul(&d->tool, &d->tool, &A);
+        dhr_rotx(dht_rand_uniform(-180, 180), &d->tool);
+        dhr_rotz(dht_rand_uniform(-180, 180), &A);
+        dhr_mul(&d->tool, &A, &d->tool);
         d->tool.m[3][0] = dht_rand_uniform(-0.2, 0.2);
         d->tool.m[3][2] = dht_rand_uniform(-0.2, 0.2);
     }
-    if (dht_rand_u32() % 4u == 0u) dhs_identity(&d->base);
-}
-
-/* Sum of every length in the chain (base and tool offsets, |a|, |d|, and
- * |q| of prismatic joints): the scale of the position error. */
-static double chain_reach(const dhs_robot *d, const double *q)
-{
-    double L = 0.0;
-    unsigned i;
-    for (i = 0; i < 3; i++) L += fabs(d->base.m[3][i]) + fabs(d->tool.m[3][i]);
-    for (i = 0; i < d->n; i++) {
-        L += fabs(d->j[i].a) + fabs(d->j[i].d);
-        if (d->j[i].type == DH_JOINT_PRISMATIC) L += fabs(q[i]);
-    }
-    return L > 1.0 ? L : 1.0;
+    if (dht_rand_u32() % 4u == 0u) dhr_identity(&d->base);
 }
 
 static void random_robots(void)
@@ -254,7 +240,7 @@ static void random_robots(void)
         dhs_robot d;
         dh_robot r;
         dh_mat4_f32 T, frames[DH_MAX_JOINTS], T2;
-        dhs_mat4_d R, RF[DHS_MAX_JOINTS];
+        dhr_mat4 R, RF[DHS_MAX_JOINTS];
         double q[DHS_MAX_JOINTS], reach;
         float qf[DHS_MAX_JOINTS];
         uint32_t i;
@@ -265,7 +251,7 @@ static void random_robots(void)
         fk(&r, q, &T);
         ref(&r, q, &R);
         /* position error relative to the reach L (sum of all lengths) */
-        reach = chain_reach(&d, q);
+        reach = dhs_chain_reach(&d, q);
         if (dhs_pos_err_f32(&T, &R) / reach > ep) ep = dhs_pos_err_f32(&T, &R) / reach;
         if (dhs_rot_err_f32(&T, &R) > er) er = dhs_rot_err_f32(&T, &R);
         DHT_TRUE_MSG(dhs_pos_err_f32(&T, &R) <= RR_POS_TOL * reach, "robot %ld pos %.3g", k, dhs_pos_err_f32(&T, &R));
@@ -289,7 +275,7 @@ static void random_robots(void)
         /* link matrices */
         for (i = 0; i < r.n; i++) {
             dh_mat4_f32 A;
-            dhs_mat4_d RA;
+            dhr_mat4 RA;
             const dh_joint *j = &r.joint[i];
             DHT_EQ_INT(dh_link_f32(&r, i, qf[i], &A), DH_OK);
             dhs_link(r.conv, j->type, (double)j->a, (double)j->d, (double)j->alpha_deg,
@@ -310,7 +296,7 @@ static void large_angles(void)
 {
     dh_robot r;
     dh_mat4_f32 T;
-    dhs_mat4_d R;
+    dhr_mat4 R;
     double q[6], ep = 0, er = 0;
     long k;
     build(&dhs_ur5_m, &r);
@@ -456,7 +442,7 @@ static void base_tool(void)
 {
     dh_robot r, r0;
     dh_mat4_f32 B, T, T2;
-    dhs_mat4_d R;
+    dhr_mat4 R;
     double q[6] = { 10, -20, 30, -40, 50, -60 };
     int c, k;
     build(&dhs_puma560_m, &r);

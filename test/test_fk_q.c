@@ -99,7 +99,7 @@ static void accuracy(const dhs_robot *d_mm, const dhs_robot *d_m, double pos_tol
         int32_t qq[DHS_MAX_JOINTS];
         dh_frame_q T;
         dh_mat4_f32 TF;
-        dhs_mat4_d R;
+        dhr_mat4 R;
         uint32_t i;
         double e;
         dhs_random_q(d_mm, q);
@@ -217,7 +217,7 @@ static void dense_sweep(void)
         const dhs_robot *d = models[m];
         dh_robot r;
         dh_frame_q T;
-        dhs_mat4_d R;
+        dhr_mat4 R;
         double q[DHS_MAX_JOINTS], ep = 0, er = 0;
         int32_t qq[DHS_MAX_JOINTS];
         unsigned j;
@@ -254,7 +254,7 @@ static double len_scale(void)
 static void random_robot_mm(dhs_robot *d)
 {
     double L = len_scale();
-    dhs_mat4_d A;
+    dhr_mat4 A;
     unsigned i, nmax = DH_MAX_JOINTS < DHS_MAX_JOINTS ? DH_MAX_JOINTS : DHS_MAX_JOINTS;
     memset(d, 0, sizeof *d);
     d->name = "random_mm";
@@ -272,34 +272,22 @@ static void random_robot_mm(dhs_robot *d)
         if (j->type == DH_JOINT_PRISMATIC) { j->qmin = -300 * L; j->qmax = 300 * L; }
         else { j->qmin = -400.0; j->qmax = 400.0; }
     }
-    dhs_identity(&d->base);
-    dhs_identity(&d->tool);
+    dhr_identity(&d->base);
+    dhr_identity(&d->tool);
     if (dht_rand_u32() & 1u) {
-        dhs_rotz(&d->base, dht_rand_uniform(-180, 180));
-        dhs_rotx(&A, dht_rand_uniform(-180, 180));
-        dhs_mul(&d->base, &d->base, &A);
+        dhr_rotz(dht_rand_uniform(-180, 180), &d->base);
+        dhr_rotx(dht_rand_uniform(-180, 180), &A);
+        dhr_mul(&d->base, &A, &d->base);
         d->base.m[3][0] = L * dht_rand_uniform(-1000, 1000);
         d->base.m[3][2] = L * dht_rand_uniform(-1000, 1000);
     }
     if (dht_rand_u32() & 1u) {
-        dhs_rotx(&d->tool, dht_rand_uniform(-180, 180));
-        dhs_rotz(&A, dht_rand_uniform(-180, 180));
-        dhs_mul(&d->tool, &d->tool, &A);
+        dhr_rotx(dht_rand_uniform(-180, 180), &d->tool);
+        dhr_rotz(dht_rand_uniform(-180, 180), &A);
+        dhr_mul(&d->tool, &A, &d->tool);
         d->tool.m[3][1] = L * dht_rand_uniform(-200, 200);
         d->tool.m[3][2] = L * dht_rand_uniform(-200, 200);
     }
-}
-
-static double chain_reach(const dhs_robot *d, const double *q)
-{
-    double L = 0.0;
-    unsigned i;
-    for (i = 0; i < 3; i++) L += fabs(d->base.m[3][i]) + fabs(d->tool.m[3][i]);
-    for (i = 0; i < d->n; i++) {
-        L += fabs(d->j[i].a) + fabs(d->j[i].d);
-        if (d->j[i].type == DH_JOINT_PRISMATIC) L += fabs(q[i]);
-    }
-    return L > 1.0 ? L : 1.0;
 }
 
 static void random_robots(void)
@@ -311,7 +299,7 @@ static void random_robots(void)
         dhs_robot d;
         dh_robot r, r2;
         dh_frame_q T, T2, frames[DH_MAX_JOINTS];
-        dhs_mat4_d R, RF[DHS_MAX_JOINTS];
+        dhr_mat4 R, RF[DHS_MAX_JOINTS];
         double q[DHS_MAX_JOINTS], reach, e;
         int32_t qq[DHS_MAX_JOINTS];
         uint32_t i;
@@ -331,7 +319,7 @@ static void random_robots(void)
         dhs_fk_ref_q(&r, qq, RF, &R);
         /* position error scale: half an LSB per rounded position
          * (n + 2 roundings) plus one rotation LSB times the reach */
-        reach = ldexp(0.5 * (double)(d.n + 2u), -DH_QPOS_FRAC) + chain_reach(&d, q) * LSB30;
+        reach = ldexp(0.5 * (double)(d.n + 2u), -DH_QPOS_FRAC) + dhs_chain_reach(&d, q) * LSB30;
         e = dhs_pos_err_q(&T, &R);
         upd(&ep, e / reach);
         DHT_TRUE_MSG(e <= RR_POS_REL * reach, "robot %ld pos %.3g mm > bound %.3g for %s", k, e,
@@ -357,7 +345,7 @@ static void random_robots(void)
         /* link matrices */
         for (i = 0; i < r.n; i++) {
             dh_frame_q A;
-            dhs_mat4_d RA;
+            dhr_mat4 RA;
             const dh_joint *j = &r.joint[i];
             double qv = ldexp((double)qq[i], j->type == DH_JOINT_REVOLUTE ? -16 : -DH_QPOS_FRAC);
             DHT_EQ_INT(dh_link_q(&r, i, qq[i], &A), DH_OK);
@@ -401,15 +389,15 @@ static void checked_path_scaled_base(void)
         dhs_robot d;
         dh_robot r;
         dh_frame_q T, T2, B, frames[DH_MAX_JOINTS];
-        dhs_mat4_d R, RB, A;
+        dhr_mat4 R, RB, A;
         double q[DHS_MAX_JOINTS], g = dht_rand_uniform(1.55, 1.95), reach, e;
         int32_t qq[DHS_MAX_JOINTS];
         int c, i;
         random_robot_mm(&d);
         DHT_EQ_INT(dhs_build_q(&d, &r), DH_OK);
-        dhs_rotz(&RB, dht_rand_uniform(-180, 180));
-        dhs_rotx(&A, dht_rand_uniform(-180, 180));
-        dhs_mul(&RB, &RB, &A);
+        dhr_rotz(dht_rand_uniform(-180, 180), &RB);
+        dhr_rotx(dht_rand_uniform(-180, 180), &A);
+        dhr_mul(&RB, &A, &RB);
         for (c = 0; c < 3; c++) {
             for (i = 0; i < 3; i++) B.r[c][i] = (int32_t)floor(g * RB.m[c][i] * 1073741824.0 + 0.5);
             B.p[c] = (int32_t)floor(dht_rand_uniform(-1000, 1000) * len_scale() * (double)(1L << DH_QPOS_FRAC));
@@ -420,7 +408,7 @@ static void checked_path_scaled_base(void)
         dhs_q_from_double(&r, q, qq);
         fk_q_ok(&r, qq, &T);
         dhs_fk_ref_q(&r, qq, NULL, &R);
-        reach = ldexp(0.5 * (double)(d.n + 2u), -DH_QPOS_FRAC) + g * (chain_reach(&d, q) + 1000.0) * LSB30;
+        reach = ldexp(0.5 * (double)(d.n + 2u), -DH_QPOS_FRAC) + g * (dhs_chain_reach(&d, q) + 1000.0) * LSB30;
         e = dhs_pos_err_q(&T, &R) / reach;
         upd(&ep, e);
         DHT_TRUE_MSG(e <= RR_POS_REL * g, "robot %ld pos %.3g x scale > bound %.3g for %s", k, e, RR_POS_REL * g,
@@ -449,7 +437,7 @@ static void long_links(void)
     for (k = 0; k < n; k++) {
         dh_robot r;
         dh_frame_q T, frames[2];
-        dhs_mat4_d R;
+        dhr_mat4 R;
         int32_t qq[2];
         double e, reach;
         dh_convention conv = (k & 1) ? DH_CONV_MODIFIED : DH_CONV_STANDARD;
@@ -497,7 +485,7 @@ static void angle_wrap(void)
                    DH_OK);
         for (b = 0; b < sizeof qs / sizeof qs[0]; b++) {
             dh_frame_q T;
-            dhs_mat4_d R;
+            dhr_mat4 R;
             int32_t q = qs[b];
             fk_q_ok(&r, &q, &T);
             dhs_fk_ref_q(&r, &q, NULL, &R);
@@ -701,12 +689,12 @@ static int32_t rnd_len_q(double mm)
  * [1.55, 1.95] (rows of norm > 1.5: checked path). Returns g. */
 static double make_base(int mode, dh_frame_q *B)
 {
-    dhs_mat4_d R, A;
+    dhr_mat4 R, A;
     double g = mode == 2 ? dht_rand_uniform(1.55, 1.95) : 1.0;
     int c, i;
-    dhs_rotz(&R, dht_rand_uniform(-180, 180));
-    dhs_rotx(&A, dht_rand_uniform(-180, 180));
-    dhs_mul(&R, &R, &A);
+    dhr_rotz(dht_rand_uniform(-180, 180), &R);
+    dhr_rotx(dht_rand_uniform(-180, 180), &A);
+    dhr_mul(&R, &A, &R);
     for (c = 0; c < 3; c++) {
         for (i = 0; i < 3; i++)
             B->r[c][i] = mode == 0 ? (c == i ? DH_Q30_ONE : 0) : (int32_t)floor(g * R.m[c][i] * 1073741824.0 + 0.5);
@@ -738,7 +726,7 @@ static void twist_classes(void)
     for (type = 0; type < 2; type++) {
         dh_robot r;
         dh_frame_q B, T, T2, frames[3];
-        dhs_mat4_d R;
+        dhr_mat4 R;
         int32_t qq[3];
         double g = make_base(mode, &B), reach, e, L = 0.0;
         uint32_t i;
@@ -806,7 +794,7 @@ static void fast_position_saturation(void)
                 const int32_t a = lens[il];
                 dh_robot r;
                 dh_frame_q T, frames[3];
-                dhs_mat4_d R;
+                dhr_mat4 R;
                 int32_t q[3] = { 0, 0, 0 };
                 int k;
                 DHT_EQ_INT(dh_robot_init(&r, conv ? DH_CONV_MODIFIED : DH_CONV_STANDARD), DH_OK);
@@ -859,28 +847,28 @@ static dh_status single_joint(dh_convention conv, int32_t a, int32_t d, int32_t 
 {
     dh_robot r;
     dh_frame_q T, F1, E;
-    dhs_mat4_d Bd, A, Td, R;
+    dhr_mat4 Bd, A, Td, R;
     dh_status st;
     int c, k, out = 0;
     double ad = a == INT32_MIN ? -2147483647.0 : (double)a, dd = d == INT32_MIN ? -2147483647.0 : (double)d;
     DHT_EQ_INT(dh_robot_init(&r, conv), DH_OK);
     DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, theta, d, a, alpha), DH_OK);
-    dhs_identity(&Bd);
-    dhs_identity(&Td);
+    dhr_identity(&Bd);
+    dhr_identity(&Td);
     if (B) {
         DHT_EQ_INT(dh_robot_set_base_q(&r, B), DH_OK);
-        dhs_from_q(&Bd, B);
+        dhr_from_q(B, &Bd);
     }
     if (Tl) {
         DHT_EQ_INT(dh_robot_set_tool_q(&r, Tl), DH_OK);
-        dhs_from_q(&Td, Tl);
+        dhr_from_q(Tl, &Td);
     }
     memset(&T, 0x5a, sizeof T);
     st = dh_fk_q(&r, &q, &T);
     dhs_link(conv, DH_JOINT_REVOLUTE, ldexp(ad, -DH_QPOS_FRAC), ldexp(dd, -DH_QPOS_FRAC), ldexp(alpha, -16),
              ldexp(theta, -16), ldexp(q, -16), &A);
-    dhs_mul(&R, &Bd, &A);
-    dhs_mul(&R, &R, &Td);
+    dhr_mul(&Bd, &A, &R);
+    dhr_mul(&R, &Td, &R);
     for (c = 0; c < 4; c++)
         for (k = 0; k < 3; k++) {
             double v = c < 3 ? ldexp(R.m[c][k], 30) : ldexp(R.m[3][k], DH_QPOS_FRAC);

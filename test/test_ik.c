@@ -37,38 +37,8 @@ static int within_limits(const dh_robot *r, const float *q)
     return 1;
 }
 
-static void target_of(const dh_robot *r, const double *q, dh_mat4_f32 *T)
-{
-    dhs_mat4_d D;
-    int c, k;
-    dhs_fk_ref_f32(r, q, NULL, &D);
-    for (c = 0; c < 4; c++)
-        for (k = 0; k < 4; k++) T->m[c][k] = (float)D.m[c][k];
-}
-
 /* ---------------------------------------------------------------------- */
 /* success rate on random reachable targets                                 */
-
-/* "q1 q2 ..." of n joint values, for failure messages; two buffers (slot
- * 0 or 1) so that one message can show two vectors. */
-static const char *q_str(const double *q, uint32_t n, int slot)
-{
-    static char buf[2][NJ * 26];
-    char *o = buf[slot & 1];
-    size_t k = 0;
-    uint32_t i;
-    for (i = 0; i < n && i < NJ; i++)
-        k += (size_t)snprintf(o + k, sizeof buf[0] - k, "%s%.17g", i ? " " : "", q[i]);
-    return o;
-}
-
-static const char *qf_str(const float *q, uint32_t n, int slot)
-{
-    double d[NJ];
-    uint32_t i;
-    for (i = 0; i < n && i < NJ; i++) d[i] = (double)q[i];
-    return q_str(d, n, slot);
-}
 
 typedef struct {
     int runs, ok, ok_status;
@@ -93,7 +63,7 @@ static void run_rate(const char *name, const dhs_robot *desc, const float *home,
         dh_ik_result res;
         dh_status st;
         dhs_random_q(desc, q);
-        target_of(&r, q, &T);
+        dhs_target_f32(&r, q, &T);
         st = dh_ik_f32(&r, &T, home, prm, g_work, DH_IK_WORK_FLOATS(r.n), qo, &res);
         /* whatever the status: a finite configuration within the limits,
          * and res describes it */
@@ -101,9 +71,9 @@ static void run_rate(const char *name, const dhs_robot *desc, const float *home,
                      "%s target %d: status %d (%s), expected OK, NO_CONVERGENCE or UNREACHABLE; w_rot %g, "
                      "tol %g / %g, %lu iterations; target q %s", name, it, (int)st, dh_status_str(st),
                      (double)prm->w_rot, (double)prm->tol_pos, (double)prm->tol_rot, (unsigned long)res.iterations,
-                     q_str(q, r.n, 0));
+                     dhs_q_str(q, r.n, 0));
         DHT_TRUE_MSG(within_limits(&r, qo), "%s target %d: result outside the limits: q %s; target q %s", name, it,
-                     qf_str(qo, r.n, 1), q_str(q, r.n, 0));
+                     dhs_qf_str(qo, r.n, 1), dhs_q_str(q, r.n, 0));
         dhs_true_error_f32(&r, qo, &T, &ep, &er);
         DHT_TRUE_MSG(res.iterations <= prm->max_iter, "%s target %d: %lu iterations > max_iter %lu", name, it,
                      (unsigned long)res.iterations, (unsigned long)prm->max_iter);
@@ -116,7 +86,7 @@ static void run_rate(const char *name, const dhs_robot *desc, const float *home,
             DHT_TRUE_MSG(res.err_pos <= prm->tol_pos && res.err_rot <= prm->tol_rot,
                          "%s target %d: OK with reported errors %g / %g above tol %g / %g; target q %s", name, it,
                          (double)res.err_pos, (double)res.err_rot, (double)prm->tol_pos, (double)prm->tol_rot,
-                         q_str(q, r.n, 0));
+                         dhs_q_str(q, r.n, 0));
         }
         if (prm->mask == DH_IK_POSITION) er = 0;
         if (st == DH_OK && ep <= tol_p && er <= tol_r) {
@@ -218,7 +188,7 @@ static void ik_bad_arguments(void)
     double qd[6] = { 10, 20, -30, 40, 50, 60 };
     int k;
     DHT_EQ_INT(dhs_build(&dhs_puma560_m, &r), DH_OK);
-    target_of(&r, qd, &T);
+    dhs_target_f32(&r, qd, &T);
     dh_ik_params_default(&r, &p);
     for (k = 0; k < 6; k++) q[k] = 99.0f;
     res.iterations = 77u;
@@ -247,10 +217,10 @@ static void ik_bad_arguments(void)
     /* NaN target / NaN start */
     T.m[3][1] = NAN;
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_NAN);
-    target_of(&r, qd, &T);
+    dhs_target_f32(&r, qd, &T);
     T.m[0][0] = INFINITY;
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_NAN);
-    target_of(&r, qd, &T);
+    dhs_target_f32(&r, qd, &T);
     q0[2] = NAN;
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_NAN);
     q0[2] = -60.0f;
@@ -296,7 +266,7 @@ static void ik_unreachable(void)
      * whole step budget */
     DHT_EQ_INT(st, DH_ERR_UNREACHABLE);
     DHT_TRUE_MSG(res.iterations < 400u, "%lu iterations, bound < 400", (unsigned long)res.iterations);
-    DHT_TRUE_MSG(within_limits(&r, q), "result outside the limits: q %s", qf_str(q, r.n, 0));
+    DHT_TRUE_MSG(within_limits(&r, q), "result outside the limits: q %s", dhs_qf_str(q, r.n, 0));
     dhs_true_error_f32(&r, q, &T, &ep, &er);
     DHT_NEAR(res.err_pos, ep, 1e-5);
     /* reach of the Puma is < 1.1 m from the shoulder at z = 0.672: the
@@ -308,7 +278,7 @@ static void ik_unreachable(void)
     st = dh_ik_f32(&r, &T, puma_home, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
     DHT_EQ_INT(st, DH_ERR_UNREACHABLE);
     DHT_TRUE_MSG(res.iterations < 400u, "%lu iterations, bound < 400", (unsigned long)res.iterations);
-    DHT_TRUE_MSG(within_limits(&r, q), "result outside the limits: q %s", qf_str(q, r.n, 0));
+    DHT_TRUE_MSG(within_limits(&r, q), "result outside the limits: q %s", dhs_qf_str(q, r.n, 0));
     dhs_true_error_f32(&r, q, &T, &ep, &er);
     DHT_NEAR(res.err_pos, ep, 1e-5);
     dht_printf("unreachable target, position only: status %d after %lu iterations, residual %.6g m\n", (int)st,
@@ -320,7 +290,7 @@ static void ik_unreachable(void)
                (unsigned long)res.iterations, (double)res.err_pos);
     DHT_EQ_INT(st, DH_ERR_UNREACHABLE);
     DHT_TRUE_MSG(res.iterations < 100u, "%lu iterations, bound < 100", (unsigned long)res.iterations);
-    DHT_TRUE_MSG(within_limits(&r, q), "result outside the limits: q %s", qf_str(q, r.n, 0));
+    DHT_TRUE_MSG(within_limits(&r, q), "result outside the limits: q %s", dhs_qf_str(q, r.n, 0));
     dhs_true_error_f32(&r, q, &T, &ep, &er);
     DHT_NEAR(res.err_pos, ep, 1e-5);
     DHT_TRUE_MSG(ep > 0.9 && ep < 1.3, "true residual %.6g m, expected in (0.9, 1.3)", ep);
@@ -342,14 +312,14 @@ static void ik_limits_respected(void)
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
     DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, l1, 0), DH_OK);
     DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, l2, 0), DH_OK);
-    target_of(&r, qt, &T);
+    dhs_target_f32(&r, qt, &T);
     dh_ik_params_default(&r, &p);
     p.mask = DH_IK_PX | DH_IK_PY;
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_OK);
     DHT_NEAR(q[1], -70.0, 1e-3);            /* unconstrained: elbow down */
     DHT_EQ_INT(dh_robot_set_limits_f32(&r, 1, 0.0f, 150.0f), DH_OK);
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_OK);
-    DHT_TRUE_MSG(within_limits(&r, q), "result outside the limits: q %s", qf_str(q, r.n, 0));
+    DHT_TRUE_MSG(within_limits(&r, q), "result outside the limits: q %s", dhs_qf_str(q, r.n, 0));
     DHT_NEAR(q[1], 70.0, 1e-3);             /* elbow up */
     dhs_true_error_f32(&r, q, &T, &ep, &er);
     DHT_TRUE_MSG(ep <= 1e-6, "true position error %.3g m > 1e-6", ep);
@@ -360,7 +330,7 @@ static void ik_limits_respected(void)
     {
         dh_status st = dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
         DHT_EQ_INT(st, DH_ERR_UNREACHABLE);     /* every attempt stalls at the limits */
-        DHT_TRUE_MSG(within_limits(&r, q), "result outside the limits: q %s", qf_str(q, r.n, 0));
+        DHT_TRUE_MSG(within_limits(&r, q), "result outside the limits: q %s", dhs_qf_str(q, r.n, 0));
         dhs_true_error_f32(&r, q, &T, &ep, &er);
         DHT_TRUE_MSG(ep > 1e-3, "true position error %.3g m, expected > 1e-3 (no admissible solution)", ep);
         DHT_NEAR(res.err_pos, ep, 1e-6);
@@ -380,7 +350,7 @@ static void ik_multiturn(void)
     uint32_t i;
     DHT_EQ_INT(dhs_build(&dhs_ur5_m, &r), DH_OK);
     for (i = 0; i < 6; i++) DHT_EQ_INT(dh_robot_set_limits_f32(&r, i, -720.0f, 720.0f), DH_OK);
-    target_of(&r, qt, &T);
+    dhs_target_f32(&r, qt, &T);
     dh_ik_params_default(&r, &p);
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_OK);
     for (i = 0; i < 6; i++) DHT_NEAR(q[i], qt[i], 1e-2);
@@ -423,22 +393,22 @@ static void ik_prismatic(void)
         dh_status st;
         uint32_t i;
         dhs_random_q_robot(&cart, qc);
-        target_of(&cart, qc, &T);
+        dhs_target_f32(&cart, qc, &T);
         q[0] = 0.5f; q[1] = 0.0f; q[2] = 0.0f;
         p.mask = DH_IK_FULL;
         st = dh_ik_f32(&cart, &T, q, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
         dhs_true_error_f32(&cart, q, &T, &ep, &er);
-        DHT_TRUE_MSG(within_limits(&cart, q), "cartesian: result outside the limits: q %s", qf_str(q, 3u, 0));
+        DHT_TRUE_MSG(within_limits(&cart, q), "cartesian: result outside the limits: q %s", dhs_qf_str(q, 3u, 0));
         if (st == DH_OK && ep <= 1e-6 && er <= 1e-5) ok_c++;
         for (i = 0; i < 3; i++) DHT_NEAR(q[i], qc[i], 2e-6);
 
         dhs_random_q_robot(&scara, qs);
-        target_of(&scara, qs, &T);
+        dhs_target_f32(&scara, qs, &T);
         q[0] = 0.0f; q[1] = 90.0f; q[2] = 0.15f; q[3] = 0.0f;
         p.mask = DH_IK_POSITION | DH_IK_RZ;
         st = dh_ik_f32(&scara, &T, q, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
         dhs_true_error_f32(&scara, q, &T, &ep, &er);
-        DHT_TRUE_MSG(within_limits(&scara, q), "SCARA: result outside the limits: q %s", qf_str(q, 4u, 0));
+        DHT_TRUE_MSG(within_limits(&scara, q), "SCARA: result outside the limits: q %s", dhs_qf_str(q, 4u, 0));
         /* the SCARA keeps its tool vertical, so the full rotation matches too */
         if (st == DH_OK && ep <= 1e-6 && er <= 1e-5) ok_s++;
     }
@@ -458,11 +428,11 @@ static void ik_masked_deterministic(void)
     dh_mat4_f32 T;
     double qd[6] = { 20, 40, -50, 30, 60, -20 };
     float q1[6], q2[6];
-    dhs_mat4_d D;
+    dhr_mat4 D;
     double qq[6];
     int k;
     DHT_EQ_INT(dhs_build(&dhs_puma560_m, &r), DH_OK);
-    target_of(&r, qd, &T);
+    dhs_target_f32(&r, qd, &T);
     T.m[3][1] += 0.3f;     /* y is not asked for */
     dh_ik_params_default(&r, &p);
     p.mask = DH_IK_PX | DH_IK_PZ;
@@ -488,7 +458,7 @@ static void ik_start_at_solution(void)
     int k;
     DHT_EQ_INT(dhs_build(&dhs_panda_m, &r), DH_OK);
     for (k = 0; k < 7; k++) q0[k] = (float)qd[k];
-    target_of(&r, qd, &T);
+    dhs_target_f32(&r, qd, &T);
     dh_ik_params_default(&r, &p);
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_OK);
     for (k = 0; k < 7; k++) DHT_NEAR(q[k], qd[k], 1e-3);
@@ -592,7 +562,7 @@ static void ik_ur5_hard_target(void)
     double ep, er;
     dh_status st;
     DHT_EQ_INT(dhs_build(&dhs_ur5_m, &r), DH_OK);
-    target_of(&r, qt, &T);
+    dhs_target_f32(&r, qt, &T);
     dh_ik_params_default(&r, &p);
     p.tol_pos = 1e-6f;
     p.w_rot = 1.0f;
@@ -602,7 +572,7 @@ static void ik_ur5_hard_target(void)
                (unsigned long)res.iterations, ep, er);
     DHT_TRUE_MSG(st == DH_OK && ep <= 1e-6 && er <= 1e-5,
                  "ur5 target q %s: status %d (%s), %lu iterations, true error %.3g m / %.3g rad (bounds 1e-6 / 1e-5)",
-                 q_str(qt, 6u, 0), (int)st, dh_status_str(st), (unsigned long)res.iterations, ep, er);
+                 dhs_q_str(qt, 6u, 0), (int)st, dh_status_str(st), (unsigned long)res.iterations, ep, er);
 }
 
 /* Prismatic joints without limits reach distant targets: a lone P joint
@@ -654,11 +624,11 @@ static void ik_prismatic_unlimited(void)
         dhs_true_error_f32(&r, q, &T, &ep, &er);
         dht_printf("R R P to (%g, %g, %g): status %d after %lu iterations, q %s, true error %.3g\n",
                    (double)tgt[k][0], (double)tgt[k][1], (double)tgt[k][2], (int)st, (unsigned long)res.iterations,
-                   qf_str(q, 3u, 0), ep);
+                   dhs_qf_str(q, 3u, 0), ep);
         DHT_TRUE_MSG(st == DH_OK && ep <= 1e-6 * dist,
                      "R R P to (%g, %g, %g): status %d (%s) after %lu iterations, q %s, true error %.3g > %.3g",
                      (double)tgt[k][0], (double)tgt[k][1], (double)tgt[k][2], (int)st, dh_status_str(st),
-                     (unsigned long)res.iterations, qf_str(q, 3u, 0), ep, 1e-6 * dist);
+                     (unsigned long)res.iterations, dhs_qf_str(q, 3u, 0), ep, 1e-6 * dist);
     }
 }
 
@@ -684,12 +654,12 @@ static void ik_normal_overflow(void)
     p.mask = DH_IK_POSITION;
     st = dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
     dht_printf("normal matrix overflow: status %d after %lu iterations, q %s, err_pos %.4g\n", (int)st,
-               (unsigned long)res.iterations, qf_str(q, 2u, 0), (double)res.err_pos);
+               (unsigned long)res.iterations, dhs_qf_str(q, 2u, 0), (double)res.err_pos);
     DHT_TRUE_MSG(st == DH_ERR_UNREACHABLE || st == DH_ERR_NO_CONVERGENCE || st == DH_OK,
                  "status %d (%s) after %lu iterations, expected UNREACHABLE, NO_CONVERGENCE or OK", (int)st,
                  dh_status_str(st), (unsigned long)res.iterations);
     DHT_TRUE_MSG(within_limits(&r, q) && q[0] == q[0] && q[1] == q[1] && res.err_pos == res.err_pos &&
-                 res.err_pos <= FLT_MAX, "q %s, err_pos %g: not finite", qf_str(q, 2u, 0), (double)res.err_pos);
+                 res.err_pos <= FLT_MAX, "q %s, err_pos %g: not finite", dhs_qf_str(q, 2u, 0), (double)res.err_pos);
 }
 
 /* A robot in millimetres converges with its defaults (no parameter set by

@@ -33,7 +33,7 @@ static double pos_tol(double x)
 
 /* ---------------------------------------------------------------------- */
 
-static void to_frame_q(const dhs_mat4_d *D, dh_frame_q *F)
+static void to_frame_q(const dhr_mat4 *D, dh_frame_q *F)
 {
     int c, k;
     for (c = 0; c < 3; c++)
@@ -43,9 +43,9 @@ static void to_frame_q(const dhs_mat4_d *D, dh_frame_q *F)
 
 /* True errors of q for the double target D: position norm (length unit)
  * and rotation angle of R_D R(q)^T, from the double reference FK. */
-static void true_error(const dh_robot *r, const int32_t *q, const dhs_mat4_d *D, double *ep, double *er)
+static void true_error(const dh_robot *r, const int32_t *q, const dhr_mat4 *D, double *ep, double *er)
 {
-    dhs_mat4_d T;
+    dhr_mat4 T;
     double M[3][3], ux, uy, uz;
     int a, b, k;
     dhs_fk_ref_q(r, q, NULL, &T);
@@ -88,7 +88,7 @@ static int32_t clamp_q(const dh_joint *j, double v)
 
 /* A random in-limit Q configuration qt, its double FK D and target T, and a
  * start q0 10..20 degrees away on every joint (clamped into the limits). */
-static void random_case(const dhs_robot *desc, const dh_robot *r, int32_t *qt, int32_t *q0, dhs_mat4_d *D,
+static void random_case(const dhs_robot *desc, const dh_robot *r, int32_t *qt, int32_t *q0, dhr_mat4 *D,
                         dh_frame_q *T)
 {
     double q[NJ];
@@ -144,6 +144,7 @@ static void rate_case(const char *name, const dhs_robot *desc, double tol_p, dou
     int it, ok = 0, ok_status = 0, miss100 = 0, miss1000 = 0;
     double iter_sum = 0, ep_max = 0, er_max = 0;
     uint32_t iter_max = 0;
+    char probe[48];
     DHT_EQ_INT(dhs_build(desc, &r), DH_OK);
     dh_ik_params_default_q(&r, &p);
     /* the solver's tolerances 0.9 of the verified ones: room for the
@@ -152,7 +153,7 @@ static void rate_case(const char *name, const dhs_robot *desc, double tol_p, dou
     p.tol_rot = (int32_t)(0.9 * tol_r * 1073741824.0);
     for (it = 0; it < count; it++) {
         int32_t qt[NJ], q0[NJ], q[NJ];
-        dhs_mat4_d D;
+        dhr_mat4 D;
         dh_frame_q T;
         dh_ik_result_q res;
         double ep, er;
@@ -194,6 +195,11 @@ static void rate_case(const char *name, const dhs_robot *desc, double tol_p, dou
                name, (unsigned long long)dht_seed(), ok, count, tol_p, tol_r, ok_status, iter_sum / count,
                (unsigned long)iter_max, ep_max, er_max);
     dht_printf("ik_q %-14s misses among the first 100 / 1000 targets: %d / %d\n", name, miss100, miss1000);
+    /* reach probes "<desc name>.miss100" and ".miss1000" */
+    snprintf(probe, sizeof probe, "%s.miss100", desc->name);
+    dht_reach_max(probe, (double)miss100);
+    snprintf(probe, sizeof probe, "%s.miss1000", desc->name);
+    dht_reach_max(probe, (double)miss1000);
     DHT_TRUE_MSG((double)ok >= need * count, "%s: success %d/%d below %.3f", name, ok, count, need);
 }
 
@@ -204,7 +210,7 @@ static void ikq_rate_panda(void) { rate_case("panda (mm)", &dhs_panda_mm, pos_to
 /* ---------------------------------------------------------------------- */
 /* bad input                                                               */
 
-static void puma_case(dh_robot *r, dh_frame_q *T, dhs_mat4_d *D, int32_t *q0)
+static void puma_case(dh_robot *r, dh_frame_q *T, dhr_mat4 *D, int32_t *q0)
 {
     int32_t qt[6] = { DH_Q16(10), DH_Q16(20), DH_Q16(-30), DH_Q16(40), DH_Q16(50), DH_Q16(60) };
     int i;
@@ -220,7 +226,7 @@ static void ikq_bad_arguments(void)
     dh_ik_params_q p;
     dh_ik_result_q res;
     dh_frame_q T;
-    dhs_mat4_d D;
+    dhr_mat4 D;
     int32_t q[6], q0[6];
     int k;
     puma_case(&r, &T, &D, q0);
@@ -290,7 +296,7 @@ static void ikq_end_not_rigid(void)
     dh_ik_params_q p;
     dh_ik_result_q res;
     dh_frame_q T, B;
-    dhs_mat4_d D;
+    dhr_mat4 D;
     int32_t q[6], q0[6];
     puma_case(&r, &T, &D, q0);
     dh_ik_params_default_q(&r, &p);
@@ -333,7 +339,7 @@ static void ikq_unreachable(void)
     dh_ik_params_q p;
     dh_ik_result_q res;
     dh_frame_q T;
-    dhs_mat4_d D;
+    dhr_mat4 D;
     int32_t q[6], q0[6];
     double ep, er;
     dh_status st;
@@ -387,7 +393,7 @@ static void ikq_deterministic(void)
     dh_ik_params_q p;
     dh_ik_result_q a, b;
     dh_frame_q T;
-    dhs_mat4_d D;
+    dhr_mat4 D;
     int32_t q0[6], q1[6], q2[6];
     int k;
     puma_case(&r, &T, &D, q0);
@@ -409,7 +415,7 @@ static void ikq_large_rotation(void)
     dh_ik_params_q p;
     dh_ik_result_q res;
     dh_frame_q T;
-    dhs_mat4_d D;
+    dhr_mat4 D;
     int32_t q[6], q0[6];
     double ep, er;
     puma_case(&r, &T, &D, q0);

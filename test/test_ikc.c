@@ -35,53 +35,13 @@ static float g_work[DH_IK_WORK_FLOATS(NJ)];
 
 /* ---------------------------------------------------------------------- */
 
-static void target_of(const dh_robot *r, const double *q, dh_mat4_f32 *T)
-{
-    dhs_mat4_d D;
-    int c, k;
-    dhs_fk_ref_f32(r, q, NULL, &D);
-    for (c = 0; c < 4; c++)
-        for (k = 0; k < 4; k++) T->m[c][k] = (float)D.m[c][k];
-}
-
-static const char *q_str(const double *q, uint32_t n, int slot)
-{
-    static char buf[2][NJ * 26];
-    char *o = buf[slot & 1];
-    size_t k = 0;
-    uint32_t i;
-    for (i = 0; i < n && i < NJ; i++)
-        k += (size_t)snprintf(o + k, sizeof buf[0] - k, "%s%.9g", i ? " " : "", q[i]);
-    return o;
-}
-
-static const char *qf_str(const float *q, uint32_t n, int slot)
-{
-    double d[NJ];
-    uint32_t i;
-    for (i = 0; i < n && i < NJ; i++) d[i] = (double)q[i];
-    return q_str(d, n, slot);
-}
-
 /* Largest joint difference between float solution s and q (revolute
  * joints modulo 360 deg). */
-/* |s - q| of joint i, revolute differences modulo 360 */
-static double joint_dist(const dh_robot *r, uint32_t i, float s, double q)
-{
-    double d = (double)s - q;
-    if (r->joint[i].type == DH_JOINT_REVOLUTE) {
-        d = fmod(d, 360.0);
-        if (d > 180.0) d -= 360.0;
-        if (d < -180.0) d += 360.0;
-    }
-    return fabs(d);
-}
-
 static double q_dist(const dh_robot *r, const float *s, const double *q)
 {
     double w = 0.0;
     uint32_t i;
-    for (i = 0; i < r->n; i++) w = fmax(w, joint_dist(r, i, s[i], q[i]));
+    for (i = 0; i < r->n; i++) w = fmax(w, dhs_joint_dist(r, i, s[i], q[i]));
     return w;
 }
 
@@ -105,9 +65,9 @@ static void check_solutions(const dh_robot *r, const dh_mat4_f32 *T, const dh_ik
         double ep, er;
         dhs_true_error_f32(r, sol[s].q, T, &ep, &er);
         DHT_TRUE_MSG(ep <= TOL_POS && er <= TOL_ROT, "%s: solution %u (%s, flags 0x%x): position error %.3g m, rotation %.3g rad",
-                     what, (unsigned)s, qf_str(sol[s].q, r->n, 0), (unsigned)sol[s].flags, ep, er);
+                     what, (unsigned)s, dhs_qf_str(sol[s].q, r->n, 0), (unsigned)sol[s].flags, ep, er);
         DHT_TRUE_MSG(((sol[s].flags & DH_IKC_OUT_OF_LIMITS) != 0u) == !within_limits(r, sol[s].q),
-                     "%s: solution %u (%s) flags 0x%x disagree with the limits", what, (unsigned)s, qf_str(sol[s].q, r->n, 0),
+                     "%s: solution %u (%s) flags 0x%x disagree with the limits", what, (unsigned)s, dhs_qf_str(sol[s].q, r->n, 0),
                      (unsigned)sol[s].flags);
         if (ep > *wp) *wp = ep;
         if (er > *wr) *wr = er;
@@ -126,7 +86,7 @@ static void check_solutions(const dh_robot *r, const dh_mat4_f32 *T, const dh_ik
  * (near two of them at once the amplifications multiply). */
 static int away_from(const dhs_robot *d, const double *q, double lim)
 {
-    dhs_mat4_d F[DHS_MAX_JOINTS];
+    dhr_mat4 F[DHS_MAX_JOINTS];
     double t5 = (q[4] + d->j[4].theta_deg) * D2R, x, y, reach = 0.0;
     unsigned i;
     if (sin(t5) * sin(t5) < lim) return 0;
@@ -197,12 +157,16 @@ static dh_status solve_target(const dh_ikc_model_f32 *m, const dh_robot *r, cons
 }
 
 /* count random in-limit configurations of r: every solution checked; the
- * generating one found when away from the singularities. */
+ * generating one found when away from the singularities. Reach probes:
+ * "<name>.elbow_deg", the nearest a configuration came to the stretched or
+ * folded elbow (deg), and "edge.<name>", the targets solved beyond a limit. */
 static void run_completeness(const char *name, const dhs_robot *desc, const dh_robot *r, const dh_ikc_model_f32 *m,
                              long count)
 {
     long t, checked = 0, nsum = 0, nedge = 0;
     double wp = 0.0, wr = 0.0, wq = 0.0;
+    char probe[40];
+    snprintf(probe, sizeof probe, "%s.elbow_deg", name);
     for (t = 0; t < count; t++) {
         double q[NJ], best = 1e30;
         dh_mat4_f32 T;
@@ -210,10 +174,14 @@ static void run_completeness(const char *name, const dhs_robot *desc, const dh_r
         uint32_t n_sol = 99u, s;
         dh_status st;
         dhs_random_q_robot(r, q);
-        target_of(r, q, &T);
+        if (desc->j[2].type == DH_JOINT_REVOLUTE) /* from stretched or folded */
+            dht_reach_min(probe, fabs(remainder(q[2] + desc->j[2].theta_deg -
+                                                atan2(sin(desc->j[2].alpha_deg * D2R) * desc->j[3].d, desc->j[2].a) / D2R,
+                                                180.0)));
+        dhs_target_f32(r, q, &T);
         st = solve_target(m, r, desc, q, &T, sol, &n_sol, &nedge);
         DHT_TRUE_MSG(n_sol <= DH_IKC_MAX_SOL, "%s: %u solutions", name, (unsigned)n_sol);
-        DHT_TRUE_MSG(st == DH_OK && n_sol >= 1u, "%s: q = %s: status %d, %u solutions", name, q_str(q, r->n, 0),
+        DHT_TRUE_MSG(st == DH_OK && n_sol >= 1u, "%s: q = %s: status %d, %u solutions", name, dhs_q_str(q, r->n, 0),
                      (int)st, (unsigned)n_sol);
         check_solutions(r, &T, sol, n_sol, name, &wp, &wr);
         nsum += (long)n_sol;
@@ -225,9 +193,11 @@ static void run_completeness(const char *name, const dhs_robot *desc, const dh_r
             if (dq < best) best = dq;
         }
         DHT_TRUE_MSG(best <= TOL_GEN, "%s: q = %s not among the %u solutions (nearest %.3g deg away; first %s)", name,
-                     q_str(q, r->n, 0), (unsigned)n_sol, best, qf_str(sol[0].q, r->n, 1));
+                     dhs_q_str(q, r->n, 0), (unsigned)n_sol, best, dhs_qf_str(sol[0].q, r->n, 1));
         if (best > wq) wq = best;
     }
+    snprintf(probe, sizeof probe, "edge.%s", name);
+    dht_reach_max(probe, (double)nedge);
     dht_printf("ikc %s: %ld targets (%ld checked for the generating configuration), mean %.2f solutions, worst "
                "position %.3g m, rotation %.3g rad, generating configuration within %.3g; %ld within it of a "
                "limit or a singularity, solved beyond a limit\n",
@@ -273,14 +243,16 @@ static double wrist_dist(const dh_robot *r, const dh_ik_params *p, const float *
     double w = 0.0;
     uint32_t i;
     for (i = 0; i < r->n; i++) {
-        const double d = joint_dist(r, i, c[i], y[i]);
+        const double d = dhs_joint_dist(r, i, c[i], y[i]);
         w = fmax(w, (i == 3u || i == 5u) ? fmax(d - open, 0.0) : d);
     }
     return w;
 }
 
 /* dh_ik_f32 from random starts (no restarts) on random targets: every
- * converged in-limit result is one of the closed-form solutions. */
+ * converged in-limit result is one of the closed-form solutions. Reach
+ * probes: "numerical.<name>.s5", the smallest |sin theta5| of a converged
+ * result, and "twins.<name>", the results matched to a twin beyond a limit. */
 static void ikc_numerical_completeness(void)
 {
     unsigned k;
@@ -292,6 +264,8 @@ static void ikc_numerical_completeness(void)
         dh_ikc_model_f32 m;
         dh_ik_params p;
         long t, st_i, found = 0, conv = 0, twins = 0;
+        char probe[40], probe_s5[40];
+        snprintf(probe_s5, sizeof probe_s5, "numerical.%s.s5", g_robots[k].name);
         DHT_EQ_INT(dhs_build(g_robots[k].desc, &r), DH_OK);
         DHT_EQ_INT(dh_ikc_analyse_f32(&r, &m), DH_OK);
         dh_ik_params_default(&r, &p);
@@ -307,7 +281,7 @@ static void ikc_numerical_completeness(void)
                 t--;
                 continue;
             }
-            target_of(&r, q, &T);
+            dhs_target_f32(&r, q, &T);
             /* out-of-limit solutions kept: dh_ik_f32 stops within its
              * tolerance on or just inside a limit, where the closed form's
              * solution may lie a rounding beyond it (matched only then, see
@@ -324,6 +298,7 @@ static void ikc_numerical_completeness(void)
                 for (i = 0; i < r.n; i++) q0[i] = (float)q0d[i];
                 if (dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], qs, &res) != DH_OK) continue;
                 conv++;
+                dht_reach_min(probe_s5, fabs(sin(((double)qs[4] + (double)r.joint[4].theta_deg) * D2R)));
                 for (s = 0; s < n_sol; s++) {
                     double dd[NJ], dq;
                     for (i = 0; i < r.n; i++) dd[i] = (double)qs[i];
@@ -338,13 +313,15 @@ static void ikc_numerical_completeness(void)
                     if (dq <= 0.05) hit |= 1u << s;
                 }
                 DHT_TRUE_MSG(best <= 0.05, "%s: target of q = %s: dh_ik_f32 found %s, not among the %u closed-form "
-                             "solutions (nearest %.3g away)", g_robots[k].name, q_str(q, r.n, 0),
-                             qf_str(qs, r.n, 1), (unsigned)n_sol, best);
+                             "solutions (nearest %.3g away)", g_robots[k].name, dhs_q_str(q, r.n, 0),
+                             dhs_qf_str(qs, r.n, 1), (unsigned)n_sol, best);
                 if (twin) twins++;
             }
             for (s = 0; s < n_sol; s++)
                 if ((hit >> s) & 1u) found++;
         }
+        snprintf(probe, sizeof probe, "twins.%s", g_robots[k].name);
+        dht_reach_max(probe, (double)twins);
         dht_printf("ikc %s: dh_ik_f32 from %ld starts on %ld targets: %ld converged, all among the closed-form "
                    "solutions (%ld distinct solutions met; %ld results on or just inside a limit matched a twin beyond it)\n",
                    g_robots[k].name, starts, targets, conv, found, twins);
@@ -380,7 +357,7 @@ static void ikc_wrist_singular(void)
         q[4] = 0.0;
         dhs_random_q_robot(&r, qr);
         for (i = 0; i < 6u; i++) qref[i] = (float)qr[i];
-        target_of(&r, q, &T);
+        dhs_target_f32(&r, q, &T);
         DHT_EQ_INT(dh_ikc_f32(&m, &T, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_sol), DH_OK);
         check_solutions(&r, &T, sol, n_sol, "puma wrist singular", &wp, &wr);
         for (s = 0; s < n_sol; s++) {
@@ -390,8 +367,8 @@ static void ikc_wrist_singular(void)
                          (double)qref[3]);
         }
         /* the generating arm branch is singular (theta5 = 0 exactly) */
-        DHT_TRUE_MSG(nsing >= 1u, "q = %s: no solution flagged wrist singular", q_str(q, 6u, 0));
-        DHT_TRUE_MSG(n_sol <= 8u - nsing, "q = %s: %u solutions with %u singular ones", q_str(q, 6u, 0), (unsigned)n_sol, (unsigned)nsing);
+        DHT_TRUE_MSG(nsing >= 1u, "q = %s: no solution flagged wrist singular", dhs_q_str(q, 6u, 0));
+        DHT_TRUE_MSG(n_sol <= 8u - nsing, "q = %s: %u solutions with %u singular ones", dhs_q_str(q, 6u, 0), (unsigned)n_sol, (unsigned)nsing);
     }
 }
 
@@ -410,7 +387,7 @@ static void ikc_shoulder_singular(void)
         for (t = 0; t < DHT_ITER(50); t++) {
             double q[NJ], lo, hi, flo, wp = 0, wr = 0;
             float qref[NJ] = { 0 };
-            dhs_mat4_d F[NJ];
+            dhr_mat4 F[NJ];
             dh_mat4_f32 T;
             dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
             uint32_t n_sol = 0, s, it;
@@ -442,7 +419,7 @@ static void ikc_shoulder_singular(void)
             }
             q[1] = 0.5 * (lo + hi);
             qref[0] = (float)dht_rand_uniform(-100.0, 100.0);
-            target_of(&r, q, &T);
+            dhs_target_f32(&r, q, &T);
             DHT_EQ_INT(dh_ikc_f32(&m, &T, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_sol), DH_OK);
             check_solutions(&r, &T, sol, n_sol, descs[k]->name, &wp, &wr);
             DHT_TRUE_MSG(n_sol >= 1u && n_sol <= 4u, "%s shoulder singular: %u solutions", descs[k]->name, (unsigned)n_sol);
@@ -485,14 +462,14 @@ static void ikc_elbow_boundary(void)
             double q[6] = {-130.0, 0.0, 0.0, 40.0, 50.0, -60.0};
             q[1] = t2 - d->j[1].theta_deg + 0.01 * j;
             q[2] = t3 / D2R - d->j[2].theta_deg + 1e-6 * k;
-            target_of(&r, q, &T);
+            dhs_target_f32(&r, q, &T);
             DHT_TRUE_MSG(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_sol) == DH_OK && n_sol >= 1u,
-                         "folded elbow on the shoulder cylinder: q = %s not solved", q_str(q, 6u, 0));
+                         "folded elbow on the shoulder cylinder: q = %s not solved", dhs_q_str(q, 6u, 0));
             check_solutions(&r, &T, sol, n_sol, "folded elbow on the shoulder cylinder", &wp, &wr);
         }
     for (far = 0; far < 2; far++) {
         double q[6] = {20.0, -30.0, 0.0, 40.0, 50.0, -60.0}, w[3], nw = 0.0, wz = 0.0;
-        dhs_mat4_d F[DHS_MAX_JOINTS];
+        dhr_mat4 F[DHS_MAX_JOINTS];
         q[2] = phi / D2R - d->j[2].theta_deg;
         dhs_fk_desc(d, q, F, NULL);
         /* from the joint 2 axis (frame 1) to the wrist centre (frame 4), normal to that axis */
@@ -504,7 +481,7 @@ static void ikc_elbow_boundary(void)
         }
         nw = sqrt(nw);
         DHT_TRUE(fabs(nw - (fabs(a2) + sqrt(a3 * a3 + e * e))) < 1e-9); /* stretched */
-        target_of(&r, q, &T);
+        dhs_target_f32(&r, q, &T);
         for (i = 0; i < 3; i++) T.m[3][i] = (float)((double)T.m[3][i] + (far ? 1.1 * 1.5e-6 : 0.9 * 2.5e-7) * L * w[i] / nw);
         if (far) {
             DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_sol), DH_ERR_UNREACHABLE);
@@ -538,13 +515,13 @@ static void ikc_elbow_stretched(void)
         dhs_random_q_robot(&r, q);
         q[2] = phi - d->j[2].theta_deg;
         if (fabs(sin(q[4] * D2R)) < 1e-2) q[4] = 30.0;
-        target_of(&r, q, &T);
+        dhs_target_f32(&r, q, &T);
         DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_sol), DH_OK);
         check_solutions(&r, &T, sol, n_sol, "puma elbow stretched", &wp, &wr);
         for (s = 0; s < n_sol; s++)
             if ((sol[s].flags & DH_IKC_SING_ELBOW) != 0u) nel++;
         DHT_TRUE_MSG(nel >= 2u && (sol[0].flags & DH_IKC_SING_ELBOW) != 0u && n_sol <= 6u,
-                     "q = %s: %u solutions, %u flagged stretched", q_str(q, 6u, 0), (unsigned)n_sol, (unsigned)nel);
+                     "q = %s: %u solutions, %u flagged stretched", dhs_q_str(q, 6u, 0), (unsigned)n_sol, (unsigned)nel);
         for (s = 0; s < n_sol; s++)
             DHT_TRUE_MSG((sol[s].flags & DH_IKC_ELBOW_ALT) == 0u || (sol[s].flags & DH_IKC_SING_ELBOW) == 0u,
                          "stretched elbow returned twice");
@@ -568,7 +545,7 @@ static void ikc_limits(void)
     /* KUKA KR5, joints 4 and 6 over +-350: the value nearest q_ref */
     DHT_EQ_INT(dhs_build(&dhs_kuka_kr5_m, &r), DH_OK);
     DHT_EQ_INT(dh_ikc_analyse_f32(&r, &m), DH_OK);
-    target_of(&r, q, &T);
+    dhs_target_f32(&r, q, &T);
     DHT_EQ_INT(dh_ikc_f32(&m, &T, qref, 0u, sol, &n_sol), DH_OK);
     for (s = 0; s < n_sol; s++) {
         double dd = 0;
@@ -579,7 +556,7 @@ static void ikc_limits(void)
                      "kr5 solution %u: q4 %.9g, q6 %.9g not the shifts nearest q_ref", (unsigned)s, (double)sol[s].q[3],
                      (double)sol[s].q[5]);
     }
-    DHT_TRUE_MSG(seen, "kr5: q = %s (q4, q6 beyond +-180) not returned as such for q_ref near it", q_str(q, 6u, 0));
+    DHT_TRUE_MSG(seen, "kr5: q = %s (q4, q6 beyond +-180) not returned as such for q_ref near it", dhs_q_str(q, 6u, 0));
     /* same target, q_ref 0: q4 = 200 - 360 and q6 = -190 + 360 */
     DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, 0u, sol, &n_sol), DH_OK);
     seen = 0;
@@ -598,7 +575,7 @@ static void ikc_limits(void)
         dh_status st;
         dhs_random_q_robot(&r, q);
         if (!away_from(&dhs_puma560_m, q, 1e-6)) continue;
-        target_of(&r, q, &T);
+        dhs_target_f32(&r, q, &T);
         st = dh_ikc_f32(&m, &T, NULL, 0u, sol, &n_sol);
         DHT_EQ_INT(st, DH_OK);
         DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, solk, &n_keep), DH_OK);
@@ -625,7 +602,7 @@ static void ikc_limits(void)
     DHT_EQ_INT(dh_ikc_analyse_f32(&r, &m), DH_OK);
     {
         double qo[NJ] = { 60, -30, 40, 10, 30, 20 };
-        target_of(&r, qo, &T);
+        dhs_target_f32(&r, qo, &T);
         n_sol = 5u;
         DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, 0u, sol, &n_sol), DH_ERR_LIMIT);
         DHT_EQ_INT(n_sol, 0);
@@ -640,7 +617,7 @@ static void ikc_limits(void)
     DHT_EQ_INT(dh_ikc_analyse_f32(&r, &m), DH_OK);
     {
         double qs[NJ] = { 30, -50, 0.8, 20, 40, -60 };
-        target_of(&r, qs, &T);
+        dhs_target_f32(&r, qs, &T);
         DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, 0u, sol, &n_sol), DH_OK);
         DHT_EQ_INT(dh_ikc_f32(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, solk, &n_keep), DH_OK);
         DHT_EQ_INT(n_keep, 8);
@@ -742,7 +719,7 @@ static void ikc_mdh_puma(void)
         uint32_t n1 = 0, n2 = 0, s;
         dhs_random_q_robot(&rm, q);
         if (!away_from(d, q, 1e-6)) continue;
-        target_of(&rm, q, &T);
+        dhs_target_f32(&rm, q, &T);
         DHT_EQ_INT(dh_ikc_f32(&mm, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, s2, &n2), DH_OK);
         check_solutions(&rm, &T, s2, n2, "puma MDH", &wp, &wr);
         DHT_EQ_INT(dh_ikc_f32(&ms, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, s1, &n1), DH_OK);
@@ -753,7 +730,7 @@ static void ikc_mdh_puma(void)
             for (j = 0; j < 6u; j++) dd[j] = (double)s1[s].q[j];
             dq = q_dist(&rs, s2[s].q, dd);
             DHT_TRUE_MSG(dq <= 1e-3 && s1[s].flags == s2[s].flags, "MDH solution %u (%s) differs from SDH (%s) by %.3g",
-                         (unsigned)s, qf_str(s2[s].q, 6u, 0), qf_str(s1[s].q, 6u, 1), dq);
+                         (unsigned)s, dhs_qf_str(s2[s].q, 6u, 0), dhs_qf_str(s1[s].q, 6u, 1), dq);
         }
     }
 }
@@ -788,13 +765,13 @@ static void ikc_base_tool(void)
                 dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
                 uint32_t n_sol = 0, s;
                 dhs_random_q_robot(&r, q);
-                target_of(&r, q, &T);
+                dhs_target_f32(&r, q, &T);
                 DHT_EQ_INT(solve_target(&m, &r, g_robots[k].desc, q, &T, sol, &n_sol, &nedge), DH_OK);
                 check_solutions(&r, &T, sol, n_sol, "base and tool", &wp, &wr);
                 if (!away_from_singular(g_robots[k].desc, q)) continue;
                 for (s = 0; s < n_sol; s++) best = fmin(best, q_dist(&r, sol[s].q, q));
                 DHT_TRUE_MSG(best <= TOL_GEN, "%s with base and tool: q = %s not found (%.3g)", g_robots[k].name,
-                             q_str(q, r.n, 0), best);
+                             dhs_q_str(q, r.n, 0), best);
             }
             dht_printf("ikc %s with base and tool: worst position %.3g m, rotation %.3g rad; %ld solved beyond a limit\n",
                        g_robots[k].name, wp, wr, nedge);
@@ -929,7 +906,7 @@ static void ikc_bad_arguments(void)
     double q[NJ] = { 10, 20, -30, 40, 50, 60 };
     DHT_EQ_INT(dhs_build(&dhs_puma560_m, &r), DH_OK);
     DHT_EQ_INT(dh_ikc_analyse_f32(&r, &m), DH_OK);
-    target_of(&r, q, &T);
+    dhs_target_f32(&r, q, &T);
     expect_err(&m, &T, qref, 0x2u, DH_ERR_ARG, "unknown option bit");
     expect_err(&m, &T, qref, 0x80000001u, DH_ERR_ARG, "unknown option bit with KEEP");
     bad = m;

@@ -9,7 +9,7 @@
  * shifts, MDH, base and tool, robots without a closed form, every status.
  */
 #include "dht.h"
-#include "support_robots.h"
+#include "support_ikc.h"
 #include "dhmath/ikc.h"
 #include "dhmath/frame.h"
 
@@ -17,42 +17,18 @@
 #include <stdio.h>
 #include <string.h>
 
-/* The accuracy targets are for robots in mm at DH_QPOS_FRAC 16. At other
- * fraction bits (tools/check.sh variants) every length of the test robots
- * and targets is scaled by LS = 2^(16 - DH_QPOS_FRAC), so that the solver
- * sees the same raw values, and the length tolerances scale with it. */
-#define LS ldexp(1.0, 16 - DH_QPOS_FRAC)
-#define POS_TOL (5e-3 * LS) /* mm at DH_QPOS_FRAC 16 */
-#define ROT_TOL 5e-6  /* rotation entries (rad for small errors) */
-#define COMP_DEG 2e-3 /* completeness, deg (mm for a prismatic joint) */
+/* lengths scaled by DHK_LS and the tolerances DHK_POS_TOL, DHK_ROT_TOL,
+ * DHK_COMP_DEG: support_ikc.h */
 #define AWAY 1e-2     /* distance from the singularities (sin, or 10 mm) */
 #define PI_D 3.14159265358979323846
 
 /* ---- robots --------------------------------------------------------------- */
 
-/* lengths of d (a, d, prismatic limits, base and tool translations) times LS */
-static void scale_desc(dhs_robot *d)
-{
-    unsigned i;
-    for (i = 0; i < d->n; i++) {
-        d->j[i].a *= LS;
-        d->j[i].d *= LS;
-        if (d->j[i].type == DH_JOINT_PRISMATIC) {
-            d->j[i].qmin *= LS;
-            d->j[i].qmax *= LS;
-        }
-    }
-    for (i = 0; i < 3; i++) {
-        d->base.m[3][i] *= LS;
-        d->tool.m[3][i] *= LS;
-    }
-}
-
 /* the shipped Puma 560 in mm, scaled */
 static void puma(dhs_robot *d)
 {
     *d = dhs_puma560_mm;
-    scale_desc(d);
+    dhk_scale_desc(d);
 }
 
 static void desc_set(dhs_robot *d, const char *name, dh_convention conv, unsigned n, const dhs_joint_desc *j)
@@ -63,9 +39,9 @@ static void desc_set(dhs_robot *d, const char *name, dh_convention conv, unsigne
     d->n = n;
     d->unit_per_m = 1000.0;
     memcpy(d->j, j, n * sizeof *j);
-    dhs_identity(&d->base);
-    dhs_identity(&d->tool);
-    scale_desc(d);
+    dhr_identity(&d->base);
+    dhr_identity(&d->tool);
+    dhk_scale_desc(d);
 }
 
 /* KUKA KR5 (KR 5 arc) in mm, standard DH: P. Corke, Robotics Toolbox for
@@ -121,104 +97,17 @@ static const dhs_joint_desc offsets_j[6] = {
     {DH_JOINT_REVOLUTE, 0.0, 65.0, 0.0, 0.0, -400.0, 400.0},
 };
 
-static void build(const dhs_robot *d, dh_robot *r, dh_ikc_model_q *m, dh_ikc_kind kind)
-{
-    DHT_EQ_INT(dhs_build(d, r), DH_OK);
-    DHT_EQ_INT(dh_ikc_analyse_q(r, m), DH_OK);
-    DHT_EQ_INT(m->kind, kind);
-    DHT_EQ_INT(m->why, DH_IKC_WHY_NONE);
-}
+/* ---- reference checks (and support_ikc.h) ---------------------------------- */
 
-/* ---- reference checks ----------------------------------------------------- */
-
-static double pos_err(const dhs_mat4_d *A, const dhs_mat4_d *B)
-{
-    double e = 0.0;
-    int i;
-    for (i = 0; i < 3; i++) {
-        double d = fabs(A->m[3][i] - B->m[3][i]);
-        if (d > e) e = d;
-    }
-    return e;
-}
-
-static double rot_err(const dhs_mat4_d *A, const dhs_mat4_d *B)
-{
-    double e = 0.0;
-    int c, i;
-    for (c = 0; c < 3; c++)
-        for (i = 0; i < 3; i++) {
-            double d = fabs(A->m[c][i] - B->m[c][i]);
-            if (d > e) e = d;
-        }
-    return e;
-}
-
-static void to_frame(const dhs_mat4_d *T, dh_frame_q *F)
-{
-    int c, i;
-    for (c = 0; c < 3; c++)
-        for (i = 0; i < 3; i++) F->r[c][i] = dhs_to_q(T->m[c][i], 30);
-    for (i = 0; i < 3; i++) F->p[i] = dhs_to_q(T->m[3][i], DH_QPOS_FRAC);
-}
-
-/* |a - b| in deg (revolute, modulo 360) or length units (prismatic) */
-static double jdiff(const dh_robot *r, unsigned i, int32_t a, int32_t b)
-{
-    double d;
-    if (r->joint[i].type == DH_JOINT_PRISMATIC) return fabs(ldexp((double)a - (double)b, -DH_QPOS_FRAC)) / LS;
-    d = fmod(ldexp((double)a - (double)b, -16), 360.0);
-    if (d > 180.0) d -= 360.0;
-    if (d < -180.0) d += 360.0;
-    return fabs(d);
-}
-
-typedef struct {
-    long targets, comp, sols, near_limit;
-    double pos, rot;
-} stats;
-
-/* every solution FK-correct; returns the index of the solution equal to qgen, or -1 */
-static int check_sols(const dh_robot *r, const dhs_mat4_d *Td, const dh_ikc_sol_q *sol, uint32_t ns, const int32_t *qgen,
-                      stats *st)
-{
-    uint32_t s, i;
-    int found = -1;
-    for (s = 0; s < ns; s++) {
-        dhs_mat4_d Ts;
-        double pe, re, worst = 0.0;
-        dhs_fk_ref_q(r, sol[s].q, NULL, &Ts);
-        pe = pos_err(&Ts, Td);
-        re = rot_err(&Ts, Td);
-        DHT_TRUE_MSG(pe <= POS_TOL && re <= ROT_TOL,
-                     "solution %u of %u (flags 0x%x): pos err %.3g mm, rot err %.3g; q %ld %ld %ld %ld %ld %ld",
-                     (unsigned)s, (unsigned)ns, (unsigned)sol[s].flags, pe, re, (long)sol[s].q[0], (long)sol[s].q[1],
-                     (long)sol[s].q[2], (long)sol[s].q[3], (long)sol[s].q[4], (long)sol[s].q[5]);
-        if (st) {
-            if (pe > st->pos) st->pos = pe;
-            if (re > st->rot) st->rot = re;
-            st->sols++;
-        }
-        if (qgen) {
-            for (i = 0; i < r->n; i++) {
-                double d = jdiff(r, i, sol[s].q[i], qgen[i]);
-                if (d > worst) worst = d;
-            }
-            if (worst <= COMP_DEG && found < 0) found = (int)s;
-        }
-    }
-    return found;
-}
-
-/* 1 when a joint of q lies within COMP_DEG of one of its limits: the
- * solution that matches q within COMP_DEG may then lie beyond that limit
+/* 1 when a joint of q lies within DHK_COMP_DEG of one of its limits: the
+ * solution that matches q within DHK_COMP_DEG may then lie beyond that limit
  * by as much (flagged DH_IKC_OUT_OF_LIMITS and dropped by default) */
 static int near_limit(const dh_robot *r, const int32_t *q)
 {
     unsigned i;
     for (i = 0; i < r->n; i++) {
         const dh_joint *j = &r->joint[i];
-        if (j->qmin_q <= j->qmax_q && (jdiff(r, i, q[i], j->qmin_q) <= COMP_DEG || jdiff(r, i, q[i], j->qmax_q) <= COMP_DEG))
+        if (j->qmin_q <= j->qmax_q && (dhk_jdiff_q(r, i, q[i], j->qmin_q) <= DHK_COMP_DEG || dhk_jdiff_q(r, i, q[i], j->qmax_q) <= DHK_COMP_DEG))
             return 1;
     }
     return 0;
@@ -228,7 +117,7 @@ static int near_limit(const dh_robot *r, const int32_t *q)
  * elbow and shoulder singularities of the families */
 static int away_u(const dhs_robot *d, const double *q, double umin)
 {
-    dhs_mat4_d fr[6], T;
+    dhr_mat4 fr[6], T;
     double o[3], o1[3], h2, u2, t3;
     int i;
     if (fabs(sin((q[4] + d->j[4].theta_deg) * PI_D / 180.0)) < AWAY) return 0;
@@ -236,7 +125,7 @@ static int away_u(const dhs_robot *d, const double *q, double umin)
         double e = sin(d->j[2].alpha_deg * PI_D / 180.0) * d->j[3].d;
         t3 = (q[2] + d->j[2].theta_deg) * PI_D / 180.0;
         if (fabs(sin(t3 - atan2(e, d->j[2].a))) < AWAY) return 0;
-    } else if (fabs(q[2] + d->j[2].d) < 10.0 * LS) {
+    } else if (fabs(q[2] + d->j[2].d) < 10.0 * DHK_LS) {
         return 0;
     }
     dhs_fk_desc(d, q, fr, &T);
@@ -247,7 +136,7 @@ static int away_u(const dhs_robot *d, const double *q, double umin)
                 fr[0].m[i][2] * (o[2] - fr[0].m[3][2]);
     h2 = o1[2] * o1[2];
     u2 = o[0] * o[0] + o[1] * o[1] - h2;
-    return u2 > umin * umin * LS * LS;
+    return u2 > umin * umin * DHK_LS * DHK_LS;
 }
 
 static int away(const dhs_robot *d, const double *q)
@@ -255,95 +144,30 @@ static int away(const dhs_robot *d, const double *q)
     return away_u(d, q, 10.0);
 }
 
-/* The target is rounded (2^-DH_QPOS_FRAC, 2^-30) and the arm angles are
- * Q16.16 values that the wrist angles absorb, so the exact inverse of the
- * rounded target differs from the generating configuration by about
- * J^-1 (target rounding + J_arm x 2 LSB): near a singularity (elbow almost
- * stretched, wrist centre near axis 2, joint 5 near 0) and more so where
- * two of them meet, this exceeds 2e-3 deg even at 1e-2 from each. The
- * completeness check is made where this bound (J by central differences
- * of the double FK of the description) is below half the tolerance. */
-static int well_conditioned_to(const dhs_robot *d, const double *q, double tol, int nj)
-{
-    double J[6][6], A[6][12], qp[6], qm[6], dx[6];
-    dhs_mat4_d T0, Tp, Tm;
-    const double h = 1e-4;
-    int i, j, k, c;
-    dhs_fk_desc(d, q, NULL, &T0);
-    for (k = 0; k < 6; k++) {
-        double W[3][3];
-        memcpy(qp, q, sizeof qp);
-        memcpy(qm, q, sizeof qm);
-        qp[k] += h;
-        qm[k] -= h;
-        dhs_fk_desc(d, qp, NULL, &Tp);
-        dhs_fk_desc(d, qm, NULL, &Tm);
-        for (i = 0; i < 3; i++) J[i][k] = (Tp.m[3][i] - Tm.m[3][i]) / (2.0 * h);
-        /* W = dR R^T (m[col][row]) */
-        for (i = 0; i < 3; i++)
-            for (j = 0; j < 3; j++) {
-                W[i][j] = 0.0;
-                for (c = 0; c < 3; c++) W[i][j] += (Tp.m[c][i] - Tm.m[c][i]) / (2.0 * h) * T0.m[c][j];
-            }
-        J[3][k] = 0.5 * (W[2][1] - W[1][2]);
-        J[4][k] = 0.5 * (W[0][2] - W[2][0]);
-        J[5][k] = 0.5 * (W[1][0] - W[0][1]);
-    }
-    for (i = 0; i < 6; i++) {
-        for (j = 0; j < 6; j++) {
-            A[i][j] = J[i][j];
-            A[i][6 + j] = (i == j) ? 1.0 : 0.0;
-        }
-    }
-    for (c = 0; c < 6; c++) { /* Gauss-Jordan, partial pivoting */
-        int piv = c;
-        for (i = c + 1; i < 6; i++)
-            if (fabs(A[i][c]) > fabs(A[piv][c])) piv = i;
-        if (fabs(A[piv][c]) < 1e-12) return 0;
-        for (j = 0; j < 12; j++) {
-            double t = A[c][j];
-            A[c][j] = A[piv][j];
-            A[piv][j] = t;
-        }
-        for (i = 0; i < 6; i++) {
-            double f;
-            if (i == c) continue;
-            f = A[i][c] / A[c][c];
-            for (j = 0; j < 12; j++) A[i][j] -= f * A[c][j];
-        }
-    }
-    for (i = 0; i < 6; i++) {
-        dx[i] = (i < 3) ? ldexp(1.0, -DH_QPOS_FRAC) : ldexp(2.0, -30);
-        for (k = 0; k < 3; k++)
-            dx[i] += fabs(J[i][k]) * ((d->j[k].type == DH_JOINT_REVOLUTE) ? ldexp(2.0, -16) : ldexp(2.0, -DH_QPOS_FRAC));
-    }
-    for (i = 0; i < nj; i++) {
-        double b = 0.0;
-        for (j = 0; j < 6; j++) b += fabs(A[i][6 + j] / A[i][i]) * dx[j];
-        if (d->j[i].type == DH_JOINT_PRISMATIC) b /= LS; /* as jdiff */
-        if (b > tol) return 0;
-    }
-    return 1;
-}
-
 static int well_conditioned(const dhs_robot *d, const double *q)
 {
-    return well_conditioned_to(d, q, 0.5 * COMP_DEG, 6);
+    return dhk_well_conditioned_q(d, q, 0.5 * DHK_COMP_DEG, 6);
 }
 
-/* random in-limit configurations of d (filter: the SDH description f) */
+/* random in-limit configurations of d (filter: the SDH description f).
+ * Reach probes: "<name>.elbow_deg", the nearest a configuration came to the
+ * stretched or folded elbow of f (deg), "<name>.kept", the ill-conditioned
+ * targets solved only with the out-of-limit solutions kept, and
+ * "<name>.near_limit", the generating configurations found only among
+ * those (stats.near_limit). */
 static void random_run(const dhs_robot *d, const dhs_robot *f, dh_ikc_kind kind, long iters)
 {
     dh_robot r;
     dh_ikc_model_q m;
-    stats st;
-    long it;
+    dhk_stats st;
+    long it, kept = 0;
+    char probe[48];
     memset(&st, 0, sizeof st);
-    build(d, &r, &m, kind);
+    dhk_build_q(d, kind, &r, &m);
     for (it = 0; it < iters; it++) {
         double q[6];
         int32_t qq[6];
-        dhs_mat4_d Td;
+        dhr_mat4 Td;
         dh_frame_q T;
         dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
         uint32_t ns = 0;
@@ -351,25 +175,33 @@ static void random_run(const dhs_robot *d, const dhs_robot *f, dh_ikc_kind kind,
         int comp, found;
         dhs_random_q(d, q);
         dhs_q_from_double(&r, q, qq);
+        if (f->j[2].type == DH_JOINT_REVOLUTE) {
+            snprintf(probe, sizeof probe, "%s.elbow_deg", d->name);
+            dht_reach_min(probe, fabs(remainder(q[2] + f->j[2].theta_deg -
+                                                atan2(sin(f->j[2].alpha_deg * PI_D / 180.0) * f->j[3].d, f->j[2].a) *
+                                                    180.0 / PI_D,
+                                                180.0)));
+        }
         comp = away(f, q) && well_conditioned(d, q);
         dhs_fk_ref_q(&r, qq, NULL, &Td);
-        to_frame(&Td, &T);
+        dhs_to_frame_q(&Td, &T);
         rc = dh_ikc_q(&m, &T, NULL, 0u, sol, &ns);
         if (rc == DH_ERR_LIMIT && !comp) {
             /* ill-conditioned: the in-limit configuration may move across a
              * limit; the solutions kept out of limits are checked */
             rc = dh_ikc_q(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns);
+            kept++;
         }
         DHT_TRUE_MSG(rc == DH_OK && ns >= 1u, "%s: status %d, %u solutions for q %.6f %.6f %.6f %.6f %.6f %.6f",
                      d->name, (int)rc, (unsigned)ns, q[0], q[1], q[2], q[3], q[4], q[5]);
-        found = check_sols(&r, &Td, sol, ns, qq, &st);
+        found = dhk_check_sols_q(&r, &Td, sol, ns, qq, &st);
         st.targets++;
         if (comp && found < 0 && near_limit(&r, qq)) {
             /* the generating configuration's own solution may lie beyond
              * the limit by a rounding: search the solutions kept out of
              * limits too (every one still checked for its residuals) */
             DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_OK);
-            found = check_sols(&r, &Td, sol, ns, qq, NULL);
+            found = dhk_check_sols_q(&r, &Td, sol, ns, qq, NULL);
             st.near_limit++;
         }
         if (comp) {
@@ -378,6 +210,10 @@ static void random_run(const dhs_robot *d, const dhs_robot *f, dh_ikc_kind kind,
                          d->name, q[0], q[1], q[2], q[3], q[4], q[5], (unsigned)ns);
         }
     }
+    snprintf(probe, sizeof probe, "%s.kept", d->name);
+    dht_reach_max(probe, (double)kept);
+    snprintf(probe, sizeof probe, "%s.near_limit", d->name);
+    dht_reach_max(probe, (double)st.near_limit);
     dht_printf("%s: %ld targets (%ld completeness), %ld solutions, max err %.3g mm, %.3g\n", d->name, st.targets,
                st.comp, st.sols, st.pos, st.rot);
     DHT_TRUE(st.comp >= iters / 2);
@@ -434,7 +270,7 @@ static void mdh_random(void)
         d.j[i].a = f.j[i - 1].a;
         d.j[i].alpha_deg = f.j[i - 1].alpha_deg;
     }
-    d.j[0].a = 50.0 * LS;
+    d.j[0].a = 50.0 * DHK_LS;
     d.j[0].alpha_deg = 30.0;
     random_run(&d, &f, DH_IKC_WRIST_RRR, DHT_ITER(3000));
 }
@@ -442,33 +278,33 @@ static void mdh_random(void)
 /* the Puma 560 with a base and a tool frame */
 static void puma_base_tool(dhs_robot *d)
 {
-    dhs_mat4_d A, B;
+    dhr_mat4 A, B;
     puma(d);
     d->name = "puma560_base_tool_mm";
-    dhs_rotz(&A, 30.0);
-    dhs_trans(&B, 100.0 * LS, -50.0 * LS, 200.0 * LS);
-    dhs_mul(&d->base, &A, &B);
-    dhs_rotx(&A, 10.0);
+    dhr_rotz(30.0, &A);
+    dhr_trans(100.0 * DHK_LS, -50.0 * DHK_LS, 200.0 * DHK_LS, &B);
+    dhr_mul(&A, &B, &d->base);
+    dhr_rotx(10.0, &A);
     B = d->base;
-    dhs_mul(&d->base, &B, &A);
-    dhs_trans(&A, 10.0 * LS, 20.0 * LS, 80.0 * LS);
-    dhs_rotx(&B, 20.0);
-    dhs_mul(&d->tool, &A, &B);
+    dhr_mul(&B, &A, &d->base);
+    dhr_trans(10.0 * DHK_LS, 20.0 * DHK_LS, 80.0 * DHK_LS, &A);
+    dhr_rotx(20.0, &B);
+    dhr_mul(&A, &B, &d->tool);
 }
 
 static void base_tool_random(void)
 {
     dhs_robot d, f;
-    dhs_mat4_d A, B;
+    dhr_mat4 A, B;
     puma(&f);
     puma_base_tool(&d);
     random_run(&d, &f, DH_IKC_WRIST_RRR, DHT_ITER(3000));
     /* the same with the KR5 (alpha6 = 180, a tool along z) */
     desc_set(&d, "kr5_base_tool_mm", DH_CONV_STANDARD, 6, kr5_j);
-    dhs_rotz(&A, -45.0);
-    dhs_trans(&B, 0.0, 300.0 * LS, 0.0);
-    dhs_mul(&d.base, &A, &B);
-    dhs_trans(&d.tool, 0.0, 0.0, 115.0 * LS);
+    dhr_rotz(-45.0, &A);
+    dhr_trans(0.0, 300.0 * DHK_LS, 0.0, &B);
+    dhr_mul(&A, &B, &d.base);
+    dhr_trans(0.0, 0.0, 115.0 * DHK_LS, &d.tool);
     desc_set(&f, "kr5_mm", DH_CONV_STANDARD, 6, kr5_j);
     random_run(&d, &f, DH_IKC_WRIST_RRR, DHT_ITER(3000));
 }
@@ -476,13 +312,13 @@ static void base_tool_random(void)
 /* ---- singular cases ------------------------------------------------------- */
 
 static void solve_q(const dh_robot *r, const dh_ikc_model_q *m, const int32_t *qq, const int32_t *qref, uint32_t opts,
-                    dh_ikc_sol_q *sol, uint32_t *ns, dhs_mat4_d *Td)
+                    dh_ikc_sol_q *sol, uint32_t *ns, dhr_mat4 *Td)
 {
     dh_frame_q T;
     dhs_fk_ref_q(r, qq, NULL, Td);
-    to_frame(Td, &T);
+    dhs_to_frame_q(Td, &T);
     DHT_EQ_INT(dh_ikc_q(m, &T, qref, opts, sol, ns), DH_OK);
-    (void)check_sols(r, Td, sol, *ns, NULL, NULL);
+    (void)dhk_check_sols_q(r, Td, sol, *ns, NULL, NULL);
 }
 
 static void singular_wrist(void)
@@ -493,13 +329,13 @@ static void singular_wrist(void)
     long it;
     long tested = 0;
     puma(&P);
-    build(&P, &r, &m, DH_IKC_WRIST_RRR);
+    dhk_build_q(&P, DH_IKC_WRIST_RRR, &r, &m);
     for (it = 0; it < DHT_ITER(500); it++) {
         double q[6];
         int32_t qq[6];
         dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
         uint32_t ns, s, hits = 0;
-        dhs_mat4_d Td;
+        dhr_mat4 Td;
         dhs_random_q(&P, q);
         /* a well-conditioned arm (elbow far from stretched and folded,
          * shoulder bent): its angles come out within a few LSB, so the
@@ -515,14 +351,14 @@ static void singular_wrist(void)
         DHT_TRUE(ns >= 1u && ns <= 7u);
         for (s = 0; s < ns; s++) {
             /* the generating arm branch is singular (the others are not, in general) */
-            if (jdiff(&r, 0, sol[s].q[0], qq[0]) > COMP_DEG || jdiff(&r, 1, sol[s].q[1], qq[1]) > COMP_DEG ||
-                jdiff(&r, 2, sol[s].q[2], qq[2]) > COMP_DEG)
+            if (dhk_jdiff_q(&r, 0, sol[s].q[0], qq[0]) > DHK_COMP_DEG || dhk_jdiff_q(&r, 1, sol[s].q[1], qq[1]) > DHK_COMP_DEG ||
+                dhk_jdiff_q(&r, 2, sol[s].q[2], qq[2]) > DHK_COMP_DEG)
                 continue;
             hits++;
             DHT_TRUE((sol[s].flags & DH_IKC_SING_WRIST) != 0u);
             DHT_TRUE((sol[s].flags & DH_IKC_WRIST_ALT) == 0u);
             /* joint 4 keeps the reference's value */
-            DHT_TRUE(jdiff(&r, 3, sol[s].q[3], qq[3]) == 0.0);
+            DHT_TRUE(dhk_jdiff_q(&r, 3, sol[s].q[3], qq[3]) == 0.0);
         }
         DHT_EQ_INT(hits, 1);
     }
@@ -541,9 +377,9 @@ static void singular_elbow(void)
     int32_t qq[6];
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
     uint32_t ns, s;
-    dhs_mat4_d Td;
+    dhr_mat4 Td;
     q[2] = phi;
-    build(&P, &r, &m, DH_IKC_WRIST_RRR);
+    dhk_build_q(&P, DH_IKC_WRIST_RRR, &r, &m);
     dhs_q_from_double(&r, q, qq);
     solve_q(&r, &m, qq, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns, &Td);
     DHT_EQ_INT(ns, 4);
@@ -551,7 +387,7 @@ static void singular_elbow(void)
         DHT_TRUE((sol[s].flags & DH_IKC_SING_ELBOW) != 0u);
         DHT_TRUE((sol[s].flags & DH_IKC_ELBOW_ALT) == 0u);
     }
-    DHT_TRUE(check_sols(&r, &Td, sol, ns, qq, NULL) >= 0);
+    DHT_TRUE(dhk_check_sols_q(&r, &Td, sol, ns, qq, NULL) >= 0);
 }
 
 /* The folded elbow with the wrist centre on the shoulder cylinder (u = 0):
@@ -573,11 +409,11 @@ static void boundary_folded(void)
     dh_robot r;
     dh_ikc_model_q m;
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
-    dhs_mat4_d Td;
+    dhr_mat4 Td;
     uint32_t ns, s;
     int i, j, k;
     puma_base_tool(&d);
-    build(&d, &r, &m, DH_IKC_WRIST_RRR);
+    dhk_build_q(&d, DH_IKC_WRIST_RRR, &r, &m);
     for (i = 0; i < 2; i++) {
         int32_t qq[6];
         dhs_q_from_double(&r, seen[i], qq);
@@ -615,10 +451,10 @@ static void boundary_beyond(void)
     uint32_t ns, s;
     int i, far, folded;
     puma(&P);
-    build(&P, &r, &m, DH_IKC_WRIST_RRR);
+    dhk_build_q(&P, DH_IKC_WRIST_RRR, &r, &m);
     for (folded = 0; folded < 2; folded++) {
         double q[6] = {20.0, -30.0, 0.0, 40.0, 50.0, -60.0}, w[3], nw = 0.0, wz = 0.0;
-        dhs_mat4_d fr[6], Td;
+        dhr_mat4 fr[6], Td;
         int32_t qq[6];
         q[2] = folded ? phi + 180.0 : phi;
         dhs_q_from_double(&r, q, qq);
@@ -632,12 +468,12 @@ static void boundary_beyond(void)
             nw += w[i] * w[i];
         }
         nw = sqrt(nw);
-        DHT_TRUE(fabs(nw - (folded ? rho - 431.8 : rho + 431.8) * LS) < 1e-3 * LS);
+        DHT_TRUE(fabs(nw - (folded ? rho - 431.8 : rho + 431.8) * DHK_LS) < 1e-3 * DHK_LS);
         for (far = 0; far < 2 - folded; far++) {
-            dhs_mat4_d Tm = Td;
+            dhr_mat4 Tm = Td;
             const double dist = (far ? ldexp(1.1, 8 - DH_QPOS_FRAC) : ldexp(0.9, 5 - DH_QPOS_FRAC)) * (folded ? -1.0 : 1.0);
             for (i = 0; i < 3; i++) Tm.m[3][i] += dist * w[i] / nw;
-            to_frame(&Tm, &T);
+            dhs_to_frame_q(&Tm, &T);
             if (far) {
                 DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_ERR_UNREACHABLE);
                 DHT_EQ_INT(ns, 0);
@@ -649,7 +485,7 @@ static void boundary_beyond(void)
                  * target's rounding moves |v| by more than 2^5 LSB: the
                  * solutions may be the two branches of a point just inside */
                 for (s = 0; s < ns && !folded; s++) DHT_TRUE((sol[s].flags & DH_IKC_SING_ELBOW) != 0u);
-                (void)check_sols(&r, &Tm, sol, ns, NULL, NULL);
+                (void)dhk_check_sols_q(&r, &Tm, sol, ns, NULL, NULL);
             }
         }
     }
@@ -667,11 +503,11 @@ static void singular_shoulder(void)
     int32_t qq[6], qref[6] = {0, 0, 0, 0, 0, 0};
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
     uint32_t ns, s;
-    dhs_mat4_d Td;
+    dhr_mat4 Td;
     puma(&P);
     d = P;
     d.j[2].d = 0.0;
-    build(&d, &r, &m, DH_IKC_WRIST_RRR);
+    dhk_build_q(&d, DH_IKC_WRIST_RRR, &r, &m);
     q[1] = atan2(A, B) * 180.0 / PI_D;
     q[0] = 25.0;
     dhs_q_from_double(&r, q, qq);
@@ -696,39 +532,39 @@ static void limits_shift(void)
     int32_t qq[6], qref[6];
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
     uint32_t ns, idx;
-    dhs_mat4_d Td;
+    dhr_mat4 Td;
     int f;
     puma(&P);
-    build(&P, &r, &m, DH_IKC_WRIST_RRR);
+    dhk_build_q(&P, DH_IKC_WRIST_RRR, &r, &m);
     dhs_q_from_double(&r, q, qq);
     /* q_ref = the configuration: joints 4 and 6 shifted to 200 and -250 */
     memcpy(qref, qq, sizeof qref);
     solve_q(&r, &m, qq, qref, 0u, sol, &ns, &Td);
-    f = check_sols(&r, &Td, sol, ns, qq, NULL);
+    f = dhk_check_sols_q(&r, &Td, sol, ns, qq, NULL);
     DHT_TRUE(f >= 0);
-    DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) - 200.0) < COMP_DEG);
-    DHT_TRUE(fabs(ldexp((double)sol[f].q[5], -16) + 250.0) < COMP_DEG);
+    DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) - 200.0) < DHK_COMP_DEG);
+    DHT_TRUE(fabs(ldexp((double)sol[f].q[5], -16) + 250.0) < DHK_COMP_DEG);
     DHT_EQ_INT(dh_ikc_nearest_q(sol, ns, qref, 6, &idx), DH_OK);
     DHT_EQ_INT(idx, f);
     /* q_ref zero: the values nearest 0, -160 and 110 */
     solve_q(&r, &m, qq, NULL, 0u, sol, &ns, &Td);
-    f = check_sols(&r, &Td, sol, ns, qq, NULL);
+    f = dhk_check_sols_q(&r, &Td, sol, ns, qq, NULL);
     DHT_TRUE(f >= 0);
-    DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) + 160.0) < COMP_DEG);
-    DHT_TRUE(fabs(ldexp((double)sol[f].q[5], -16) - 110.0) < COMP_DEG);
+    DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) + 160.0) < DHK_COMP_DEG);
+    DHT_TRUE(fabs(ldexp((double)sol[f].q[5], -16) - 110.0) < DHK_COMP_DEG);
     /* wide limits (more than three turns): joint 4 shifted next to q_ref = 1000 */
     DHT_EQ_INT(dh_robot_set_limits_q(&r, 3, -2000 * 65536, 2000 * 65536), DH_OK);
     DHT_EQ_INT(dh_ikc_analyse_q(&r, &m), DH_OK);
     qref[3] = 1000 * 65536;
     solve_q(&r, &m, qq, qref, 0u, sol, &ns, &Td);
-    f = check_sols(&r, &Td, sol, ns, qq, NULL);
+    f = dhk_check_sols_q(&r, &Td, sol, ns, qq, NULL);
     DHT_TRUE(f >= 0);
-    DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) - 920.0) < COMP_DEG);
+    DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) - 920.0) < DHK_COMP_DEG);
     qref[3] = -2000 * 65536;
     solve_q(&r, &m, qq, qref, 0u, sol, &ns, &Td);
-    f = check_sols(&r, &Td, sol, ns, qq, NULL);
+    f = dhk_check_sols_q(&r, &Td, sol, ns, qq, NULL);
     DHT_TRUE(f >= 0);
-    DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) + 1960.0) < COMP_DEG);
+    DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) + 1960.0) < DHK_COMP_DEG);
 }
 
 static void limits_drop_keep(void)
@@ -740,7 +576,7 @@ static void limits_drop_keep(void)
     int32_t qq[6];
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL], all[DH_IKC_MAX_SOL];
     uint32_t ns, na, s, i;
-    dhs_mat4_d Td;
+    dhr_mat4 Td;
     dh_frame_q T;
     unsigned j;
     puma(&P);
@@ -749,14 +585,14 @@ static void limits_drop_keep(void)
     d.j[0].qmin = 0.0;
     d.j[0].qmax = 1.0;
     for (j = 0; j < 6; j++) dn.j[j].qmin = 1.0, dn.j[j].qmax = -1.0; /* no limits */
-    build(&d, &r, &m, DH_IKC_WRIST_RRR);
-    build(&dn, &rn, &mn, DH_IKC_WRIST_RRR);
+    dhk_build_q(&d, DH_IKC_WRIST_RRR, &r, &m);
+    dhk_build_q(&dn, DH_IKC_WRIST_RRR, &rn, &mn);
     dhs_q_from_double(&rn, q, qq);
     dhs_fk_ref_q(&rn, qq, NULL, &Td);
-    to_frame(&Td, &T);
+    dhs_to_frame_q(&Td, &T);
     DHT_EQ_INT(dh_ikc_q(&mn, &T, NULL, 0u, all, &na), DH_OK);
     DHT_EQ_INT(na, 8);
-    (void)check_sols(&rn, &Td, all, na, NULL, NULL);
+    (void)dhk_check_sols_q(&rn, &Td, all, na, NULL, NULL);
     for (s = 0; s < na; s++) DHT_EQ_INT(all[s].flags & DH_IKC_OUT_OF_LIMITS, 0);
     ns = 99;
     DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, 0u, sol, &ns), DH_ERR_LIMIT);
@@ -768,7 +604,7 @@ static void limits_drop_keep(void)
         for (i = 0; i < 6; i++) DHT_EQ_INT(sol[s].q[i], all[s].q[i]);
     }
     /* the Puma's own limits drop some of the eight and keep the rest */
-    build(&P, &r, &m, DH_IKC_WRIST_RRR);
+    dhk_build_q(&P, DH_IKC_WRIST_RRR, &r, &m);
     DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, 0u, sol, &ns), DH_OK);
     DHT_TRUE(ns >= 1u && ns < 8u);
     for (s = 0; s < ns; s++) DHT_EQ_INT(dh_robot_check_limits_q(&r, sol[s].q), DH_OK);
@@ -808,7 +644,7 @@ static void no_closed_form(void)
     puma(&P);
     d = P;
     analyse_why(&dhs_panda_mm, DH_IKC_WHY_JOINTS);       /* 7 joints */
-    d.j[4].a = 30.0 * LS;                               /* wrist axes do not meet */
+    d.j[4].a = 30.0 * DHK_LS;                               /* wrist axes do not meet */
     analyse_why(&d, DH_IKC_WHY_WRIST);
     for (i = 0; i < 5u; i++) {                          /* twist 1, 4 or 5 one degree off */
         if (i == 1u || i == 2u) continue;               /* (joint 3's twist is free in the family) */
@@ -835,7 +671,7 @@ static void no_closed_form(void)
     analyse_why(&d, DH_IKC_WHY_PATH);
     /* representable, but beyond the solver's 2^29-unit range */
     d = P;
-    d.j[1].a = ldexp(1.0, 29 - DH_QPOS_FRAC) + LS;
+    d.j[1].a = ldexp(1.0, 29 - DH_QPOS_FRAC) + DHK_LS;
     analyse_why(&d, DH_IKC_WHY_PATH);
     /* base not rigid (fixed path only), tool a reflection */
     DHT_EQ_INT(dhs_build(&P, &r), DH_OK);
@@ -875,12 +711,12 @@ static void solve_errors(void)
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL], canary[DH_IKC_MAX_SOL];
     uint32_t ns;
     int32_t qq[6] = {0, 0, 0, 0, 30 << 16, 0}, qref[6];
-    dhs_mat4_d Td;
+    dhr_mat4 Td;
     unsigned i;
     puma(&P);
-    build(&P, &r, &m, DH_IKC_WRIST_RRR);
+    dhk_build_q(&P, DH_IKC_WRIST_RRR, &r, &m);
     dhs_fk_ref_q(&r, qq, NULL, &Td);
-    to_frame(&Td, &T);
+    dhs_to_frame_q(&Td, &T);
     memset(canary, 0xA5, sizeof canary);
 #define EXPECT_UNTOUCHED(call, status)                                   \
     do {                                                                 \
@@ -926,7 +762,7 @@ static void solve_errors(void)
     /* far away: overflow (any coordinate, INT32_MIN and INT32_MAX included) */
     for (i = 0; i < 3; i++) {
         X = T;
-        X.p[i] = dhs_to_q(20000.0 * LS, DH_QPOS_FRAC);
+        X.p[i] = dhs_to_q(20000.0 * DHK_LS, DH_QPOS_FRAC);
         ns = 77;
         DHT_EQ_INT(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_OVERFLOW);
         DHT_EQ_INT(ns, 0);
@@ -938,16 +774,16 @@ static void solve_errors(void)
     }
     /* unreachable: 3000 mm away, rotation of the target */
     X = T;
-    X.p[0] = dhs_to_q(3000.0 * LS, DH_QPOS_FRAC);
+    X.p[0] = dhs_to_q(3000.0 * DHK_LS, DH_QPOS_FRAC);
     ns = 77;
     DHT_EQ_INT(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_UNREACHABLE);
     DHT_EQ_INT(ns, 0);
     /* extreme references: INT32_MIN / INT32_MAX in every joint */
     for (i = 0; i < 6; i++) qref[i] = (i & 1u) ? INT32_MAX : INT32_MIN;
     DHT_EQ_INT(dh_ikc_q(&m, &T, qref, 0u, sol, &ns), DH_OK);
-    (void)check_sols(&r, &Td, sol, ns, NULL, NULL);
+    (void)dhk_check_sols_q(&r, &Td, sol, ns, NULL, NULL);
     DHT_EQ_INT(dh_ikc_q(&m, &T, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_OK);
-    (void)check_sols(&r, &Td, sol, ns, NULL, NULL);
+    (void)dhk_check_sols_q(&r, &Td, sol, ns, NULL, NULL);
 #undef EXPECT_UNTOUCHED
 }
 

@@ -12,7 +12,7 @@
  * boundary), unreachable targets, the statuses of the fixed solvers.
  */
 #include "dht.h"
-#include "support_robots.h"
+#include "support_ikc.h"
 #include "dhmath/ikc.h"
 #include "dhmath/frame.h"
 
@@ -20,233 +20,21 @@
 #include <stdio.h>
 #include <string.h>
 
-/* As test_ikc_q.c: at DH_QPOS_FRAC other than 16 every length is scaled by
- * LS = 2^(16 - DH_QPOS_FRAC), so that the solver sees the same raw values. */
-#define LS ldexp(1.0, 16 - DH_QPOS_FRAC)
-#define POS_TOL (5e-3 * LS) /* mm at DH_QPOS_FRAC 16 */
-#define ROT_TOL 5e-6  /* rotation entries (rad for small errors) */
-#define COMP_DEG 2e-3 /* completeness, deg (mm for a prismatic joint) */
+/* lengths scaled by DHK_LS and the tolerances DHK_POS_TOL, DHK_ROT_TOL,
+ * DHK_COMP_DEG: support_ikc.h */
 #define AWAY 1e-2     /* normalised distance from the singularities */
 #define PI_D 3.14159265358979323846
 #define D2R (PI_D / 180.0)
 
 /* ---- robots --------------------------------------------------------------- */
 
-/* lengths of d (a, d, prismatic limits, base and tool translations) times LS */
-static void scale_desc(dhs_robot *d)
-{
-    unsigned i;
-    for (i = 0; i < d->n; i++) {
-        d->j[i].a *= LS;
-        d->j[i].d *= LS;
-        if (d->j[i].type == DH_JOINT_PRISMATIC) {
-            d->j[i].qmin *= LS;
-            d->j[i].qmax *= LS;
-        }
-    }
-    for (i = 0; i < 3; i++) {
-        d->base.m[3][i] *= LS;
-        d->tool.m[3][i] *= LS;
-    }
-}
-
-
 static void robot_mm(dhs_robot *d, const dhs_robot *src)
 {
     *d = *src;
-    scale_desc(d);
+    dhk_scale_desc(d);
 }
 
-static void build(const dhs_robot *d, dh_robot *r, dh_ikc_model_q *m, dh_ikc_kind kind)
-{
-    DHT_EQ_INT(dhs_build(d, r), DH_OK);
-    DHT_EQ_INT(dh_ikc_analyse_q(r, m), DH_OK);
-    DHT_EQ_INT(m->kind, kind);
-    DHT_EQ_INT(m->why, DH_IKC_WHY_NONE);
-}
-
-/* ---- reference checks ----------------------------------------------------- */
-
-static double pos_err(const dhs_mat4_d *A, const dhs_mat4_d *B)
-{
-    double e = 0.0;
-    int i;
-    for (i = 0; i < 3; i++) {
-        double d = fabs(A->m[3][i] - B->m[3][i]);
-        if (d > e) e = d;
-    }
-    return e;
-}
-
-static double rot_err(const dhs_mat4_d *A, const dhs_mat4_d *B)
-{
-    double e = 0.0;
-    int c, i;
-    for (c = 0; c < 3; c++)
-        for (i = 0; i < 3; i++) {
-            double d = fabs(A->m[c][i] - B->m[c][i]);
-            if (d > e) e = d;
-        }
-    return e;
-}
-
-static void to_frame(const dhs_mat4_d *T, dh_frame_q *F)
-{
-    int c, i;
-    for (c = 0; c < 3; c++)
-        for (i = 0; i < 3; i++) F->r[c][i] = dhs_to_q(T->m[c][i], 30);
-    for (i = 0; i < 3; i++) F->p[i] = dhs_to_q(T->m[3][i], DH_QPOS_FRAC);
-}
-
-/* |a - b| in deg (revolute, modulo 360) or length units (prismatic) */
-static double jdiff(const dh_robot *r, unsigned i, int32_t a, int32_t b)
-{
-    double d;
-    if (r->joint[i].type == DH_JOINT_PRISMATIC) return fabs(ldexp((double)a - (double)b, -DH_QPOS_FRAC)) / LS;
-    d = fmod(ldexp((double)a - (double)b, -16), 360.0);
-    if (d > 180.0) d -= 360.0;
-    if (d < -180.0) d += 360.0;
-    return fabs(d);
-}
-
-typedef struct {
-    long targets, comp, sols;
-    double pos, rot;
-} stats;
-
-/* every solution FK-correct; returns the index of the solution equal to qgen, or -1 */
-static int check_sols(const dh_robot *r, const dhs_mat4_d *Td, const dh_ikc_sol_q *sol, uint32_t ns, const int32_t *qgen,
-                      stats *st)
-{
-    uint32_t s, i;
-    int found = -1;
-    for (s = 0; s < ns; s++) {
-        dhs_mat4_d Ts;
-        double pe, re, worst = 0.0;
-        dhs_fk_ref_q(r, sol[s].q, NULL, &Ts);
-        pe = pos_err(&Ts, Td);
-        re = rot_err(&Ts, Td);
-        DHT_TRUE_MSG(pe <= POS_TOL && re <= ROT_TOL,
-                     "solution %u of %u (flags 0x%x): pos err %.3g mm, rot err %.3g; q %ld %ld %ld %ld %ld %ld",
-                     (unsigned)s, (unsigned)ns, (unsigned)sol[s].flags, pe, re, (long)sol[s].q[0], (long)sol[s].q[1],
-                     (long)sol[s].q[2], (long)sol[s].q[3], (long)sol[s].q[4], (long)sol[s].q[5]);
-        if (st) {
-            if (pe > st->pos) st->pos = pe;
-            if (re > st->rot) st->rot = re;
-            st->sols++;
-        }
-        if (qgen) {
-            for (i = 0; i < r->n; i++) {
-                double d = jdiff(r, i, sol[s].q[i], qgen[i]);
-                if (d > worst) worst = d;
-            }
-            if (worst <= COMP_DEG && found < 0) found = (int)s;
-        }
-    }
-    return found;
-}
-
-/* The target is rounded (2^-DH_QPOS_FRAC, 2^-30) and the arm angles are
- * Q16.16 values that the wrist angles absorb, so the exact inverse of the
- * rounded target differs from the generating configuration by about
- * J^-1 (target rounding + J_arm x 2 LSB): near a singularity (elbow almost
- * stretched, wrist centre near axis 2, joint 5 near 0) and more so where
- * two of them meet, this exceeds 2e-3 deg even at 1e-2 from each. The
- * completeness check is made where this bound (J by central differences
- * of the double FK of the description) is below half the tolerance. */
-static int well_conditioned_to(const dhs_robot *d, const double *q, double tol, int nj)
-{
-    double J[6][6], A[6][12], qp[6], qm[6], dx[6];
-    dhs_mat4_d T0, Tp, Tm;
-    const double h = 1e-4;
-    int i, j, k, c;
-    dhs_fk_desc(d, q, NULL, &T0);
-    for (k = 0; k < 6; k++) {
-        double W[3][3];
-        memcpy(qp, q, sizeof qp);
-        memcpy(qm, q, sizeof qm);
-        qp[k] += h;
-        qm[k] -= h;
-        dhs_fk_desc(d, qp, NULL, &Tp);
-        dhs_fk_desc(d, qm, NULL, &Tm);
-        for (i = 0; i < 3; i++) J[i][k] = (Tp.m[3][i] - Tm.m[3][i]) / (2.0 * h);
-        /* W = dR R^T (m[col][row]) */
-        for (i = 0; i < 3; i++)
-            for (j = 0; j < 3; j++) {
-                W[i][j] = 0.0;
-                for (c = 0; c < 3; c++) W[i][j] += (Tp.m[c][i] - Tm.m[c][i]) / (2.0 * h) * T0.m[c][j];
-            }
-        J[3][k] = 0.5 * (W[2][1] - W[1][2]);
-        J[4][k] = 0.5 * (W[0][2] - W[2][0]);
-        J[5][k] = 0.5 * (W[1][0] - W[0][1]);
-    }
-    for (i = 0; i < 6; i++) {
-        for (j = 0; j < 6; j++) {
-            A[i][j] = J[i][j];
-            A[i][6 + j] = (i == j) ? 1.0 : 0.0;
-        }
-    }
-    for (c = 0; c < 6; c++) { /* Gauss-Jordan, partial pivoting */
-        int piv = c;
-        for (i = c + 1; i < 6; i++)
-            if (fabs(A[i][c]) > fabs(A[piv][c])) piv = i;
-        if (fabs(A[piv][c]) < 1e-12) return 0;
-        for (j = 0; j < 12; j++) {
-            double t = A[c][j];
-            A[c][j] = A[piv][j];
-            A[piv][j] = t;
-        }
-        for (i = 0; i < 6; i++) {
-            double f;
-            if (i == c) continue;
-            f = A[i][c] / A[c][c];
-            for (j = 0; j < 12; j++) A[i][j] -= f * A[c][j];
-        }
-    }
-    for (i = 0; i < 6; i++) {
-        dx[i] = (i < 3) ? ldexp(1.0, -DH_QPOS_FRAC) : ldexp(2.0, -30);
-        for (k = 0; k < 3; k++)
-            dx[i] += fabs(J[i][k]) * ((d->j[k].type == DH_JOINT_REVOLUTE) ? ldexp(2.0, -16) : ldexp(2.0, -DH_QPOS_FRAC));
-    }
-    for (i = 0; i < nj; i++) {
-        double b = 0.0;
-        for (j = 0; j < 6; j++) b += fabs(A[i][6 + j] / A[i][i]) * dx[j];
-        if (d->j[i].type == DH_JOINT_PRISMATIC) b /= LS; /* as jdiff */
-        if (b > tol) return 0;
-    }
-    return 1;
-}
-
-
-/* normalised distances of q from the singularities (as test_ikc_ur.c):
- * part[0] shoulder |u| / L, part[1] elbow |a2 a3 s3| / (|a2| + |a3|)^2,
- * part[2] wrist |s5|; SCARA: part[1] = |a1 a2 s2| / (|a1| + |a2|)^2 */
-static double sing_parts(const dhs_robot *d, const double *q, double part[3])
-{
-    dhs_mat4_d F[DHS_MAX_JOINTS];
-    double m;
-    int i;
-    part[0] = part[2] = 1.0;
-    if (d->n == 4u) {
-        const double a1 = fabs(d->j[0].a), a2 = fabs(d->j[1].a);
-        part[1] = a1 * a2 * fabs(sin((q[1] + d->j[1].theta_deg) * D2R)) / ((a1 + a2) * (a1 + a2));
-    } else {
-        const double a2 = fabs(d->j[1].a), a3 = fabs(d->j[2].a);
-        double L = 0, u;
-        unsigned j;
-        for (j = 0; j < d->n; j++) L += fabs(d->j[j].a) + fabs(d->j[j].d);
-        dhs_fk_desc(d, q, F, NULL);
-        u = (F[4].m[3][0] - d->base.m[3][0]) * F[0].m[0][0] + (F[4].m[3][1] - d->base.m[3][1]) * F[0].m[0][1] +
-            (F[4].m[3][2] - d->base.m[3][2]) * F[0].m[0][2];
-        part[0] = fabs(u) / L;
-        part[1] = a2 * a3 * fabs(sin((q[2] + d->j[2].theta_deg) * D2R)) / ((a2 + a3) * (a2 + a3));
-        part[2] = fabs(sin((q[4] + d->j[4].theta_deg) * D2R));
-    }
-    m = part[0];
-    for (i = 1; i < 3; i++)
-        if (part[i] < m) m = part[i];
-    return m;
-}
+/* ---- reference checks (and support_ikc.h) ---------------------------------- */
 
 /* SCARA: the rounding of the target and of the Q16.16 arm angles moves the
  * exact solution by about J^-1 of it; the 2R Jacobian's determinant is
@@ -256,21 +44,23 @@ static int scara_conditioned(const dhs_robot *d, const double *q)
     const double a1 = fabs(d->j[0].a), a2 = fabs(d->j[1].a);
     const double det = a1 * a2 * fabs(sin((q[1] + d->j[1].theta_deg) * D2R));
     const double dx = 4.0 * ldexp(1.0, -DH_QPOS_FRAC) + (a1 + a2) * ldexp(2.0, -16) * D2R;
-    return (a1 + a2) * dx / det / D2R <= 0.5 * COMP_DEG;
+    return (a1 + a2) * dx / det / D2R <= 0.5 * DHK_COMP_DEG;
 }
 
-static void random_run(const dhs_robot *d, dh_ikc_kind kind, long iters)
+/* probe (may be NULL): the prefix of the reach probes of the singular
+ * distances drawn (dhk_reach_sing) */
+static void random_run(const dhs_robot *d, dh_ikc_kind kind, long iters, const char *probe)
 {
     dh_robot r;
     dh_ikc_model_q m;
-    stats st;
+    dhk_stats st;
     long it;
     memset(&st, 0, sizeof st);
-    build(d, &r, &m, kind);
+    dhk_build_q(d, kind, &r, &m);
     for (it = 0; it < iters; it++) {
         double q[6] = {0}, part[3];
         int32_t qq[6] = {0};
-        dhs_mat4_d Td;
+        dhr_mat4 Td;
         dh_frame_q T;
         dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
         uint32_t ns = 0;
@@ -278,15 +68,16 @@ static void random_run(const dhs_robot *d, dh_ikc_kind kind, long iters)
         int comp, found;
         dhs_random_q(d, q);
         dhs_q_from_double(&r, q, qq);
-        comp = sing_parts(d, q, part) >= AWAY &&
-               (d->n == 4u ? scara_conditioned(d, q) : well_conditioned_to(d, q, 0.5 * COMP_DEG, 6));
+        comp = dhk_sing_parts(d, q, part) >= AWAY &&
+               (d->n == 4u ? scara_conditioned(d, q) : dhk_well_conditioned_q(d, q, 0.5 * DHK_COMP_DEG, 6));
+        if (probe) dhk_reach_sing(probe, part);
         dhs_fk_ref_q(&r, qq, NULL, &Td);
-        to_frame(&Td, &T);
+        dhs_to_frame_q(&Td, &T);
         rc = dh_ikc_q(&m, &T, NULL, 0u, sol, &ns);
         if (rc == DH_ERR_LIMIT && !comp) rc = dh_ikc_q(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns);
         DHT_TRUE_MSG(rc == DH_OK && ns >= 1u, "%s: status %d, %u solutions for q %.6f %.6f %.6f %.6f %.6f %.6f",
                      d->name, (int)rc, (unsigned)ns, q[0], q[1], q[2], q[3], q[4], q[5]);
-        found = check_sols(&r, &Td, sol, ns, qq, &st);
+        found = dhk_check_sols_q(&r, &Td, sol, ns, qq, &st);
         st.targets++;
         if (comp) {
             st.comp++;
@@ -299,22 +90,24 @@ static void random_run(const dhs_robot *d, dh_ikc_kind kind, long iters)
     DHT_TRUE(st.comp >= iters / 4);
 }
 
+/* the singular distances drawn are the reach probes "<robot>" (ur3_mm.e:
+ * the smallest elbow part of dhk_sing_parts; test/regression_seeds.txt) */
 static void ur_random(void)
 {
     dhs_robot d;
     robot_mm(&d, &dhs_ur3_mm);
-    random_run(&d, DH_IKC_PARALLEL_234, DHT_ITER(10000));
+    random_run(&d, DH_IKC_PARALLEL_234, DHT_ITER(10000), d.name);
     robot_mm(&d, &dhs_ur5_mm);
-    random_run(&d, DH_IKC_PARALLEL_234, DHT_ITER(10000));
+    random_run(&d, DH_IKC_PARALLEL_234, DHT_ITER(10000), d.name);
     robot_mm(&d, &dhs_ur10_mm);
-    random_run(&d, DH_IKC_PARALLEL_234, DHT_ITER(10000));
+    random_run(&d, DH_IKC_PARALLEL_234, DHT_ITER(10000), d.name);
 }
 
 static void scara_random(void)
 {
     dhs_robot d;
     robot_mm(&d, &dhs_cobra600_mm);
-    random_run(&d, DH_IKC_SCARA, DHT_ITER(10000));
+    random_run(&d, DH_IKC_SCARA, DHT_ITER(10000), d.name);
 }
 
 /* ---- singular cases ------------------------------------------------------- */
@@ -324,13 +117,13 @@ static void scara_random(void)
 static uint32_t solve_q(const dh_robot *r, const dh_ikc_model_q *m, const int32_t *qq, const int32_t *qref,
                         dh_ikc_sol_q *sol, uint32_t *fl)
 {
-    dhs_mat4_d Td;
+    dhr_mat4 Td;
     dh_frame_q T;
     uint32_t ns = 0, s;
     dhs_fk_ref_q(r, qq, NULL, &Td);
-    to_frame(&Td, &T);
+    dhs_to_frame_q(&Td, &T);
     DHT_EQ_INT(dh_ikc_q(m, &T, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_OK);
-    (void)check_sols(r, &Td, sol, ns, NULL, NULL);
+    (void)dhk_check_sols_q(r, &Td, sol, ns, NULL, NULL);
     *fl = 0u;
     for (s = 0; s < ns; s++) *fl |= sol[s].flags;
     return ns;
@@ -343,7 +136,7 @@ static int among(const dh_robot *r, const dh_ikc_sol_q *sol, uint32_t ns, const 
     for (s = 0; s < ns; s++) {
         double w = 0.0;
         for (i = 0; i < r->n; i++) {
-            double dd = jdiff(r, i, sol[s].q[i], qq[i]);
+            double dd = dhk_jdiff_q(r, i, sol[s].q[i], qq[i]);
             if (dd > w) w = dd;
         }
         if (w <= tol) return 1;
@@ -363,7 +156,7 @@ static void ur_wrist_singular(void)
         dh_ikc_model_q m;
         long it, n = 0;
         robot_mm(&d, g_ur[ri]);
-        build(&d, &r, &m, DH_IKC_PARALLEL_234);
+        dhk_build_q(&d, DH_IKC_PARALLEL_234, &r, &m);
         /* until DHT_ITER(500) targets pass the filter (at most 20 times as many tries) */
         for (it = 0; it < 20L * DHT_ITER(500) && n < DHT_ITER(500); it++) {
             double q[6], part[3];
@@ -372,7 +165,7 @@ static void ur_wrist_singular(void)
             uint32_t ns, fl;
             dhs_random_q(&d, q);
             q[4] = (it & 1) ? 180.0 : 0.0;
-            (void)sing_parts(&d, q, part);
+            (void)dhk_sing_parts(&d, q, part);
             if (part[0] < 0.1 || part[1] < 0.1) continue;
             dhs_q_from_double(&r, q, qq);
             qref[5] = qq[5];
@@ -386,7 +179,8 @@ static void ur_wrist_singular(void)
     }
 }
 
-/* the joint 5 point on the cylinder u = 0: flagged, returned once */
+/* the joint 5 point on the cylinder u = 0: flagged, returned once; the
+ * singular distances drawn are the reach probes "u0.<robot>" */
 static void ur_shoulder_singular(void)
 {
     unsigned ri;
@@ -397,7 +191,7 @@ static void ur_shoulder_singular(void)
         long it;
         int found = 0;
         robot_mm(&d, g_ur[ri]);
-        build(&d, &r, &m, DH_IKC_PARALLEL_234);
+        dhk_build_q(&d, DH_IKC_PARALLEL_234, &r, &m);
         for (it = 0; it < 20L * DHT_ITER(500) && found < DHT_ITER(500); it++) {
             const double a2 = d.j[1].a, a3 = d.j[2].a, e5 = d.j[4].d;
             double q[6], X, Y, R, c, phi;
@@ -414,6 +208,13 @@ static void ur_shoulder_singular(void)
             q[1] = (-atan2(Y, X) + ((it & 1) ? 1 : -1) * acos(c / R)) / D2R;
             q[3] = phi / D2R - q[1] - q[2];
             dhs_q_from_double(&r, q, qq);
+            {
+                double part[3];
+                char pre[40];
+                (void)dhk_sing_parts(&d, q, part);
+                snprintf(pre, sizeof pre, "u0.%s", d.name);
+                dhk_reach_sing(pre, part);
+            }
             ns = solve_q(&r, &m, qq, NULL, sol, &fl);
             DHT_TRUE_MSG((fl & DH_IKC_SING_SHOULDER) != 0u, "%s: u = 0 not flagged", d.name);
             DHT_TRUE_MSG(ns <= 4u, "%s: %u solutions with the shoulder branches merged", d.name, (unsigned)ns);
@@ -433,7 +234,7 @@ static void elbow_singular(void)
         dh_ikc_model_q m;
         long it, n = 0;
         robot_mm(&d, ri < 3u ? g_ur[ri] : &dhs_cobra600_mm);
-        build(&d, &r, &m, ri < 3u ? DH_IKC_PARALLEL_234 : DH_IKC_SCARA);
+        dhk_build_q(&d, ri < 3u ? DH_IKC_PARALLEL_234 : DH_IKC_SCARA, &r, &m);
         for (it = 0; it < 20L * DHT_ITER(500) && n < DHT_ITER(500); it++) {
             double q[6] = {0}, part[3];
             int32_t qq[6] = {0};
@@ -441,7 +242,7 @@ static void elbow_singular(void)
             uint32_t ns, fl, j = (d.n == 4u) ? 1u : 2u;
             dhs_random_q(&d, q);
             q[j] = (d.n == 6u && (it & 1)) ? 180.0 : 0.0;
-            (void)sing_parts(&d, q, part);
+            (void)dhk_sing_parts(&d, q, part);
             if (part[0] < 0.1 || part[2] < 0.1) continue;
             dhs_q_from_double(&r, q, qq);
             ns = solve_q(&r, &m, qq, NULL, sol, &fl);
@@ -460,7 +261,7 @@ static void scara_shoulder_singular(void)
     dhs_robot d;
     dh_robot r;
     dh_ikc_model_q m;
-    double q[6] = {30.0, 180.0, 100.0 * LS, 20.0, 0.0, 0.0};
+    double q[6] = {30.0, 180.0, 100.0 * DHK_LS, 20.0, 0.0, 0.0};
     int32_t qq[6] = {0}, qref[6] = {0};
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
     uint32_t ns, fl;
@@ -468,14 +269,14 @@ static void scara_shoulder_singular(void)
     d.j[1].a = d.j[0].a;
     d.j[1].qmin = -180.0;
     d.j[1].qmax = 180.0;
-    build(&d, &r, &m, DH_IKC_SCARA);
+    dhk_build_q(&d, DH_IKC_SCARA, &r, &m);
     dhs_q_from_double(&r, q, qq);
     qref[0] = qq[0];
     ns = solve_q(&r, &m, qq, qref, sol, &fl);
     DHT_TRUE((fl & DH_IKC_SING_SHOULDER) != 0u);
     DHT_TRUE((fl & DH_IKC_SING_ELBOW) != 0u);
     DHT_EQ_INT(ns, 1);
-    DHT_TRUE(among(&r, sol, ns, qq, COMP_DEG));
+    DHT_TRUE(among(&r, sol, ns, qq, DHK_COMP_DEG));
 }
 
 /* ---- targets on and beyond the workspace boundary -------------------------- */
@@ -484,7 +285,7 @@ static void scara_shoulder_singular(void)
 #define BOUND ldexp(64.0, -DH_QPOS_FRAC)
 
 /* T translated by dist along the unit vector e */
-static void shift(dhs_mat4_d *T, const double *e, double dist)
+static void shift(dhr_mat4 *T, const double *e, double dist)
 {
     int i;
     for (i = 0; i < 3; i++) T->m[3][i] += dist * e[i];
@@ -492,17 +293,17 @@ static void shift(dhs_mat4_d *T, const double *e, double dist)
 
 /* dh_ikc_q of Td (any limits); when DH_OK, every solution checked against
  * Td; the flags ORed into *fl */
-static dh_status solve_T(const dh_robot *r, const dh_ikc_model_q *m, const dhs_mat4_d *Td, dh_ikc_sol_q *sol,
+static dh_status solve_T(const dh_robot *r, const dh_ikc_model_q *m, const dhr_mat4 *Td, dh_ikc_sol_q *sol,
                          uint32_t *ns, uint32_t *fl)
 {
     dh_frame_q T;
     dh_status rc;
     uint32_t s;
     *ns = 9;
-    to_frame(Td, &T);
+    dhs_to_frame_q(Td, &T);
     rc = dh_ikc_q(m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, ns);
     *fl = 0u;
-    if (rc == DH_OK) (void)check_sols(r, Td, sol, *ns, NULL, NULL);
+    if (rc == DH_OK) (void)dhk_check_sols_q(r, Td, sol, *ns, NULL, NULL);
     for (s = 0; rc == DH_OK && s < *ns; s++) *fl |= sol[s].flags;
     return rc;
 }
@@ -532,14 +333,14 @@ static void ur_boundary_elbow(void)
         dh_ikc_model_q m;
         long it, n[2] = {0, 0};
         robot_mm(&d, g_ur[ri]);
-        build(&d, &r, &m, DH_IKC_PARALLEL_234);
+        dhk_build_q(&d, DH_IKC_PARALLEL_234, &r, &m);
         for (it = 0; it < 20L * DHT_ITER(200) && (n[0] < DHT_ITER(200) || n[1] < DHT_ITER(200)); it++) {
             const int folded = (int)(it & 1);
             const double L = fabs(d.j[1].a) + fabs(d.j[2].a), e5 = fabs(d.j[4].d);
             const double h = d.j[1].d + d.j[2].d + d.j[3].d;
             double q[6], part[3], e[3], R, best = -1.0;
             int32_t qq[6];
-            dhs_mat4_d F[DHS_MAX_JOINTS], Td, Ts;
+            dhr_mat4 F[DHS_MAX_JOINTS], Td, Ts;
             dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
             uint32_t ns, fl;
             int k, i;
@@ -559,7 +360,7 @@ static void ur_boundary_elbow(void)
                 }
             }
             /* UR10 folded: |u| <= |a2| - |a3| + |d5| = 0.09 L */
-            (void)sing_parts(&d, q, part);
+            (void)dhk_sing_parts(&d, q, part);
             if (part[0] < 0.05 || part[2] < 0.1) continue;
             dhs_q_from_double(&r, q, qq);
             dhs_fk_ref_q(&r, qq, F, &Td);
@@ -588,7 +389,7 @@ static void ur_boundary_elbow(void)
             shift(&Ts, e, 0.5 * BOUND);
             DHT_EQ_INT(solve_T(&r, &m, &Ts, sol, &ns, &fl), DH_OK);
             DHT_TRUE_MSG((fl & DH_IKC_SING_ELBOW) != 0u, "%s: B / 2 beyond the elbow's reach not flagged", d.name);
-            DHT_TRUE_MSG(among(&r, sol, ns, qq, COMP_DEG), "%s: %s elbow B / 2 beyond: q not among %u solutions",
+            DHT_TRUE_MSG(among(&r, sol, ns, qq, DHK_COMP_DEG), "%s: %s elbow B / 2 beyond: q not among %u solutions",
                          d.name, folded ? "folded" : "stretched", (unsigned)ns);
             Ts = Td;
             shift(&Ts, e, 4.0 * BOUND);
@@ -622,7 +423,7 @@ static int u_zero_q(const dhs_robot *d, long it, double off, double s5min, doubl
     if (fabs(c) >= Rr) return 0;
     q[1] = (-atan2(Y, X) + ((it & 1) ? 1 : -1) * acos(c / Rr)) / D2R;
     q[3] = phi / D2R - q[1] - q[2];
-    (void)sing_parts(d, q, part);
+    (void)dhk_sing_parts(d, q, part);
     return part[2] >= s5min && (off >= 0.0 || part[1] >= 0.1);
 }
 
@@ -642,12 +443,12 @@ static void ur_boundary_shoulder(void)
         dh_ikc_model_q m;
         long it, n = 0;
         robot_mm(&d, g_ur[ri]);
-        build(&d, &r, &m, DH_IKC_PARALLEL_234);
+        dhk_build_q(&d, DH_IKC_PARALLEL_234, &r, &m);
         for (it = 0; it < 20L * DHT_ITER(200) && n < DHT_ITER(200); it++) {
             const double h = d.j[1].d + d.j[2].d + d.j[3].d;
             double q[6], e[3], ez = 0.0, R;
             int32_t qq[6];
-            dhs_mat4_d F[DHS_MAX_JOINTS], Td, Ts;
+            dhr_mat4 F[DHS_MAX_JOINTS], Td, Ts;
             dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
             uint32_t ns, fl;
             int i;
@@ -692,11 +493,11 @@ static void ur_boundary_corner(void)
         dh_ikc_model_q m;
         long it, n = 0;
         robot_mm(&d, g_ur[ri]);
-        build(&d, &r, &m, DH_IKC_PARALLEL_234);
+        dhk_build_q(&d, DH_IKC_PARALLEL_234, &r, &m);
         for (it = 0; it < 20L * DHT_ITER(500) && n < DHT_ITER(500); it++) {
             double q[6];
             int32_t qq[6];
-            dhs_mat4_d Td;
+            dhr_mat4 Td;
             dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
             uint32_t ns, fl;
             if (!u_zero_q(&d, it, 0.05, 0.05, q)) continue;
@@ -722,11 +523,11 @@ static void unreachable(void)
         dh_ikc_model_q m;
         long it;
         robot_mm(&d, ri < 3u ? g_ur[ri] : &dhs_cobra600_mm);
-        build(&d, &r, &m, ri < 3u ? DH_IKC_PARALLEL_234 : DH_IKC_SCARA);
+        dhk_build_q(&d, ri < 3u ? DH_IKC_PARALLEL_234 : DH_IKC_SCARA, &r, &m);
         for (it = 0; it < DHT_ITER(200); it++) {
             double q[6] = {0}, L = 0, sc, rxy;
             int32_t qq[6] = {0};
-            dhs_mat4_d Td;
+            dhr_mat4 Td;
             dh_frame_q T;
             dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
             uint32_t ns = 9, i;
@@ -738,23 +539,23 @@ static void unreachable(void)
             sc = dht_rand_uniform(1.2, 5.0) * L / (rxy > 1e-3 ? rxy : 1e-3);
             Td.m[3][0] *= sc;
             Td.m[3][1] *= sc;
-            to_frame(&Td, &T);
+            dhs_to_frame_q(&Td, &T);
             DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, 0u, sol, &ns), DH_ERR_UNREACHABLE);
             DHT_EQ_INT(ns, 0);
         }
         if (d.n == 4u) {
             /* a tool axis not parallel to the joint axes */
-            double q[6] = {10.0, 20.0, 100.0 * LS, 30.0, 0.0, 0.0};
+            double q[6] = {10.0, 20.0, 100.0 * DHK_LS, 30.0, 0.0, 0.0};
             int32_t qq[6] = {0};
-            dhs_mat4_d Td, Rx, T2;
+            dhr_mat4 Td, Rx, T2;
             dh_frame_q T;
             dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
             uint32_t ns = 9;
             dhs_q_from_double(&r, q, qq);
             dhs_fk_ref_q(&r, qq, NULL, &Td);
-            dhs_rotx(&Rx, 0.01);
-            dhs_mul(&T2, &Td, &Rx);
-            to_frame(&T2, &T);
+            dhr_rotx(0.01, &Rx);
+            dhr_mul(&Td, &Rx, &T2);
+            dhs_to_frame_q(&T2, &T);
             DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, 0u, sol, &ns), DH_ERR_UNREACHABLE);
             DHT_EQ_INT(ns, 0);
         }
@@ -774,7 +575,7 @@ static void overflow(void)
         uint32_t ns = 9;
         int i;
         robot_mm(&d, ri == 0u ? &dhs_ur5_mm : &dhs_cobra600_mm);
-        build(&d, &r, &m, ri == 0u ? DH_IKC_PARALLEL_234 : DH_IKC_SCARA);
+        dhk_build_q(&d, ri == 0u ? DH_IKC_PARALLEL_234 : DH_IKC_SCARA, &r, &m);
         memset(&T, 0, sizeof T);
         for (i = 0; i < 3; i++) T.r[i][i] = (int32_t)1 << 30;
         if (ri == 1u) { /* tool axis down as the Cobra's */
@@ -863,13 +664,13 @@ static void detect_each(void)
         robot_mm(&d, &dhs_ur5_mm);
         d.name = "ur5, one twist mirrored";
         d.j[i].alpha_deg = dhs_mirror_twist(d.j[i].alpha_deg);
-        random_run(&d, DH_IKC_PARALLEL_234, DHT_ITER(400));
+        random_run(&d, DH_IKC_PARALLEL_234, DHT_ITER(400), NULL);
     }
     for (i = 0; i < 3u; i++) {
         robot_mm(&d, &dhs_cobra600_mm);
         d.name = "cobra600, one twist mirrored";
         d.j[i].alpha_deg = dhs_mirror_twist(d.j[i].alpha_deg);
-        random_run(&d, DH_IKC_SCARA, DHT_ITER(400));
+        random_run(&d, DH_IKC_SCARA, DHT_ITER(400), NULL);
     }
 }
 

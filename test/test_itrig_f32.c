@@ -187,7 +187,7 @@ static void atan2_status(void)
 static void atan2_random(void)
 {
     stats st = { 0, 0, 0.0 };
-    long i, n = DHT_ITER(4000000L);
+    long i, n = DHT_ITER(4000000L), negzero = 0;
     for (i = 0; i < n; i++) {
         float y, x, r;
         double a;
@@ -219,8 +219,11 @@ static void atan2_random(void)
         if (dht_f32_bits(x) == 0xFFFFFFFFu) continue;
         if (((dht_f32_bits(x) | dht_f32_bits(y)) & 0x7FFFFFFFu) == 0u) continue;
         if (((dht_f32_bits(x) & 0x7F800000u) == 0x7F800000u) || ((dht_f32_bits(y) & 0x7F800000u) == 0x7F800000u)) continue;
+        if (dht_f32_bits(y) == 0x80000000u && x < 0.0f) negzero++;
         check_atan2(&st, y, x);
     }
+    /* reach probe: how many inputs were atan2(-0, x < 0) */
+    dht_reach_max("atan2_random.negzero_negx", (double)negzero);
     report("atan2 random", &st);
 }
 

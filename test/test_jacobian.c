@@ -86,7 +86,7 @@ static void logmap(double R[3][3], double w[3])
     w[0] = qx / vn * ang; w[1] = qy / vn * ang; w[2] = qz / vn * ang;
 }
 
-static void rot_of(const dhs_mat4_d *T, double R[3][3])
+static void rot_of(const dhr_mat4 *T, double R[3][3])
 {
     int c, r;
     for (c = 0; c < 3; c++)
@@ -98,7 +98,7 @@ static void rot_of(const dhs_mat4_d *T, double R[3][3])
  * length units for prismatic joints). */
 static void ref_jacobian(const dh_robot *r, const double *q, double *Jd, double *R_end)
 {
-    dhs_mat4_d Tp, Tm, T0;
+    dhr_mat4 Tp, Tm, T0;
     double qq[DH_MAX_JOINTS], Rp[3][3], Rm[3][3], dR[3][3], w[3];
     uint32_t n = r->n, i, k;
     const double h = 1e-5;
@@ -148,7 +148,7 @@ static void check_fd(const dh_robot *r, int count, double *emax_v, double *emax_
     float J[6 * DH_MAX_JOINTS], Jt[6 * DH_MAX_JOINTS], qf[DH_MAX_JOINTS];
     double Jd[6 * DH_MAX_JOINTS], q[DH_MAX_JOINTS], Re[9];
     dh_mat4_f32 T, Tt;
-    dhs_mat4_d Tref;
+    dhr_mat4 Tref;
     uint32_t n = r->n, i, k;
     int it;
     *emax_v = *emax_w = *emax_tool = 0;

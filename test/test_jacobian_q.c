@@ -29,12 +29,12 @@
  * description d at the joint values q (deg / length). */
 static void ref_jac(const dhs_robot *d, const double *q, double *J, double R[3][3])
 {
-    dhs_mat4_d fr[DHS_MAX_JOINTS], T;
+    dhr_mat4 fr[DHS_MAX_JOINTS], T;
     const unsigned n = d->n;
     unsigned i, k;
     dhs_fk_desc(d, q, fr, &T);
     for (i = 0; i < n; i++) {
-        const dhs_mat4_d *F = (d->conv == DH_CONV_STANDARD) ? (i == 0 ? &d->base : &fr[i - 1]) : &fr[i];
+        const dhr_mat4 *F = (d->conv == DH_CONV_STANDARD) ? (i == 0 ? &d->base : &fr[i - 1]) : &fr[i];
         const double *z = F->m[2], *o = F->m[3];
         double dp[3];
         for (k = 0; k < 3; k++) dp[k] = T.m[3][k] - o[k];

@@ -132,9 +132,9 @@ static int check_inverse(const dh_mat4_f32 *T, const dh_mat4_f32 *X, inv_check *
 {
     dhr_mat4 D, Di, Dx, R;
     int i, j, k;
-    dhr_from_f32(&D, T);
-    if (!dhr_inv(&Di, &D)) return 0;
-    dhr_from_f32(&Dx, X);
+    dhr_from_f32(T, &D);
+    if (!dhr_inv(&D, &Di)) return 0;
+    dhr_from_f32(X, &Dx);
     for (i = 0; i < 4; i++)
         for (j = 0; j < 4; j++) {
             double s = (i == j) ? -1.0 : 0.0;
@@ -175,14 +175,14 @@ static void proj_1e35_inverts_at_every_scale(void)
         memset(&S, 0x5a, sizeof S);
         X = S;
         st = dh_mat4_inv_f32(&T, &X);
-        dhr_from_f32(&D, &T);
+        dhr_from_f32(&T, &D);
         if (dhr_max_abs(&D) < (double)FLT_MIN) {
             /* zero or denormal matrix */
             DHT_EQ_INT(st, DH_ERR_SINGULAR);
             DHT_TRUE(memcmp(&X, &S, sizeof X) == 0);
             continue;
         }
-        DHT_TRUE(dhr_inv(&Di, &D));
+        DHT_TRUE(dhr_inv(&D, &Di));
         if (dhr_max_abs(&Di) > (double)FLT_MAX) {
             /* the exact inverse does not fit a float */
             DHT_EQ_INT(st, DH_ERR_OVERFLOW);
@@ -363,7 +363,7 @@ static double ref_cond(const dh_mat4_f32 *T, dhr_mat4 *Ti, double tsum[2], doubl
             DHR_M4(&B, r, c) = v;
         }
     *go = g;
-    if (!dhr_inv(&Bi, &B)) return HUGE_VAL;
+    if (!dhr_inv(&B, &Bi)) return HUGE_VAL;
     if (Ti != NULL) {
         for (r = 0; r < 4; r++)
             for (c = 0; c < 4; c++) {
@@ -509,7 +509,7 @@ static void contract_one(const dh_mat4_f32 *T, int k, contract_stats *st)
                 (double)DH_MAT4_COND_MAX / 2.0);
         const double rb = INV_C * cond * U24; /* relative error bound */
         dhr_mat4 D;
-        dhr_from_f32(&D, T);
+        dhr_from_f32(T, &D);
         if (mt > (double)FLT_MAX * (1.0 + rb)) {
             CHECK_M(s == DH_ERR_OVERFLOW, T, "max|T^-1| %.6g > FLT_MAX: status %d, expected DH_ERR_OVERFLOW", mt,
                     (int)s);
@@ -681,8 +681,8 @@ static void extreme_magnitudes_sweep(void)
         memset(&S, 0x5a, sizeof S);
         X = S;
         st = dh_mat4_inv_f32(&T, &X);
-        dhr_from_f32(&D, &T);
-        if (!dhr_inv(&Di, &D)) {
+        dhr_from_f32(&T, &D);
+        if (!dhr_inv(&D, &Di)) {
             DHT_EQ_INT(st, DH_ERR_SINGULAR);
             n_sing++;
             continue;
@@ -784,8 +784,8 @@ static void persp_small_focal_every_scale(void)
 static int fits(const dh_mat4_f32 *T)
 {
     dhr_mat4 D, Di;
-    dhr_from_f32(&D, T);
-    return dhr_inv(&Di, &D) && dhr_max_abs(&Di) <= (double)FLT_MAX;
+    dhr_from_f32(T, &D);
+    return dhr_inv(&D, &Di) && dhr_max_abs(&Di) <= (double)FLT_MAX;
 }
 
 static void p_zero_magnitudes_sweep(void)
@@ -826,8 +826,8 @@ static void p_zero_magnitudes_sweep(void)
                 }
             if (in_range && fits(&T) && fits(&U)) DHT_EQ_INT(dh_mat4_inv_f32(&U, &Y), st);
         }
-        dhr_from_f32(&D, &T);
-        if (!dhr_inv(&Di, &D)) {
+        dhr_from_f32(&T, &D);
+        if (!dhr_inv(&D, &Di)) {
             DHT_EQ_INT(st, DH_ERR_SINGULAR);
             n_sing++;
             continue;
@@ -1023,7 +1023,7 @@ static void auto_near_rigid_within_bound(void)
         dh_mat4_f32 T, X, Y;
         double d[3][3], p1 = 0.0, err = 0.0;
         int r, c, k;
-        dhr_rand_rigid(&Q, 1000.0);
+        dhr_rand_rigid(1000.0, &Q);
         for (r = 0; r < 3; r++)
             for (c = 0; c <= r; c++) d[r][c] = d[c][r] = dht_rand_uniform(-0.5, 0.5) * (double)DH_MAT4_RIGID_TOL;
         D = Q;
@@ -1033,14 +1033,14 @@ static void auto_near_rigid_within_bound(void)
                 for (k = 0; k < 3; k++) v += DHR_M4(&Q, r, k) * d[k][c];
                 DHR_M4(&D, r, c) = v;
             }
-        dhr_to_f32(&T, &D);
+        dhr_to_f32(&D, &T);
         if (dh_mat4_check_rigid_f32(&T, DH_MAT4_RIGID_TOL) != DH_OK) continue;
         DHT_EQ_INT(dh_mat4_inv_auto_f32(&T, &X), DH_OK);
         /* the closed form was taken */
         dh_mat4_inv_rigid_f32(&T, &Y);
         CHECK_M(memcmp(&X, &Y, sizeof X) == 0, &T, "dh_mat4_inv_auto_f32 did not take the closed form");
-        dhr_from_f32(&D, &T);
-        DHT_TRUE(dhr_inv(&Di, &D));
+        dhr_from_f32(&T, &D);
+        DHT_TRUE(dhr_inv(&D, &Di));
         for (r = 0; r < 3; r++) p1 += fabs((double)DH_M4(&T, r, 3));
         err = dhr_max_abs_diff(&X, &Di);
         CHECK_M(err <= 3.1e-5 * (1.0 + p1), &T, "error %.6g > bound 3.1e-5 (1 + |p|_1) = %.6g", err,

@@ -24,15 +24,15 @@ static double dmax(double a, double b) { return a > b ? a : b; }
 static void rand_rigid_f(dh_mat4_f32 *T, double tmax)
 {
     dhr_mat4 D;
-    dhr_rand_rigid(&D, tmax);
-    dhr_to_f32(T, &D);
+    dhr_rand_rigid(tmax, &D);
+    dhr_to_f32(&D, T);
 }
 
 static void rand_general_f(dh_mat4_f32 *T)
 {
     dhr_mat4 D;
     dhr_rand_general(&D);
-    dhr_to_f32(T, &D);
+    dhr_to_f32(&D, T);
 }
 
 /* ---- constructors vs references --------------------------------------- */
@@ -48,13 +48,13 @@ static void rotations_match_reference(void)
         dhr_mat4 D;
         double k[3];
         DHT_EQ_INT(dh_mat4_rotx_f32(deg, &T), DH_OK);
-        dhr_rotx(&D, (double)deg);
+        dhr_rotx((double)deg, &D);
         emax_xyz = dmax(emax_xyz, dhr_max_abs_diff(&T, &D));
         DHT_EQ_INT(dh_mat4_roty_f32(deg, &T), DH_OK);
-        dhr_roty(&D, (double)deg);
+        dhr_roty((double)deg, &D);
         emax_xyz = dmax(emax_xyz, dhr_max_abs_diff(&T, &D));
         DHT_EQ_INT(dh_mat4_rotz_f32(deg, &T), DH_OK);
-        dhr_rotz(&D, (double)deg);
+        dhr_rotz((double)deg, &D);
         emax_xyz = dmax(emax_xyz, dhr_max_abs_diff(&T, &D));
         /* general axis: any length, reference built as C Rot(z) C^T */
         dhr_rand_unit3(k);
@@ -62,7 +62,7 @@ static void rotations_match_reference(void)
             const double len = pow(10.0, dht_rand_uniform(-30.0, 30.0));
             const float kx = (float)(k[0] * len), ky = (float)(k[1] * len), kz = (float)(k[2] * len);
             DHT_EQ_INT(dh_mat4_rot_axis_f32(kx, ky, kz, deg, &T), DH_OK);
-            DHT_TRUE(dhr_rot_axis(&D, (double)kx, (double)ky, (double)kz, (double)deg));
+            DHT_TRUE(dhr_rot_axis((double)kx, (double)ky, (double)kz, (double)deg, &D));
             emax_axis = dmax(emax_axis, dhr_max_abs_diff(&T, &D));
         }
     }
@@ -162,7 +162,7 @@ static void apply_matches_reference(void)
         double du[4], dv[4], mag;
         int i;
         rand_rigid_f(&T, 100.0);
-        dhr_from_f32(&D, &T);
+        dhr_from_f32(&T, &D);
         u.x = (float)dht_rand_uniform(-100, 100);
         u.y = (float)dht_rand_uniform(-100, 100);
         u.z = (float)dht_rand_uniform(-100, 100);
@@ -200,7 +200,7 @@ static void apply_matches_reference(void)
             dhr_mat4 DP;
             DHT_EQ_INT(dh_mat4_persp_f32(it % 3, (float)dht_rand_uniform(200, 400), &P), DH_OK);
             dh_mat4_mul_f32(&P, &T, &PT);
-            dhr_from_f32(&DP, &PT);
+            dhr_from_f32(&PT, &DP);
             h.x = u.x; h.y = u.y; h.z = u.z; h.w = 1.0f;
             du[0] = u.x; du[1] = u.y; du[2] = u.z; du[3] = 1.0;
             dhr_apply4(&DP, du, dv);
@@ -240,8 +240,8 @@ static void rigid_inverse_properties(void)
         DHT_EQ_INT(dh_mat4_check_rigid_f32(&T, DH_MAT4_RIGID_TOL), DH_OK);
         dh_mat4_inv_rigid_f32(&T, &Ti);
         /* vs the double inverse of the (float) input; scale = 1 + |p| */
-        dhr_from_f32(&D, &T);
-        DHT_TRUE(dhr_inv(&Di, &D));
+        dhr_from_f32(&T, &D);
+        DHT_TRUE(dhr_inv(&D, &Di));
         scale = 1.0 + fabs(DHR_M4(&D, 0, 3)) + fabs(DHR_M4(&D, 1, 3)) + fabs(DHR_M4(&D, 2, 3));
         w_ref = dmax(w_ref, dhr_max_abs_diff(&Ti, &Di) / (U24 * scale));
         /* T * T^-1 == I */
@@ -260,7 +260,7 @@ static void rigid_inverse_properties(void)
         dh_mat4_inv_rigid_f32(&Ti, &Tii);
         {
             dhr_mat4 DT;
-            dhr_from_f32(&DT, &T);
+            dhr_from_f32(&T, &DT);
             w_twice = dmax(w_twice, dhr_max_abs_diff(&Tii, &DT) / (U24 * scale));
         }
         /* rotation block of the rigid inverse is the exact transpose */
@@ -285,9 +285,9 @@ static void rand_conditioned(dhr_mat4 *D, double cond)
     double k[3];
     int i;
     dhr_rand_unit3(k);
-    dhr_rot_axis(&U, k[0], k[1], k[2], dht_rand_uniform(-180, 180));
+    dhr_rot_axis(k[0], k[1], k[2], dht_rand_uniform(-180, 180), &U);
     dhr_rand_unit3(k);
-    dhr_rot_axis(&V, k[0], k[1], k[2], dht_rand_uniform(-180, 180));
+    dhr_rot_axis(k[0], k[1], k[2], dht_rand_uniform(-180, 180), &V);
     /* mix the 4th dimension in too */
     {
         dhr_mat4 G;
@@ -295,17 +295,17 @@ static void rand_conditioned(dhr_mat4 *D, double cond)
         dhr_identity(&G);
         DHR_M4(&G, 0, 0) = cos(a); DHR_M4(&G, 0, 3) = -sin(a);
         DHR_M4(&G, 3, 0) = sin(a); DHR_M4(&G, 3, 3) = cos(a);
-        dhr_mul(&U, &U, &G);
+        dhr_mul(&U, &G, &U);
         DHR_M4(&G, 0, 0) = cos(2 * a); DHR_M4(&G, 0, 3) = sin(2 * a);
         DHR_M4(&G, 3, 0) = -sin(2 * a); DHR_M4(&G, 3, 3) = cos(2 * a);
-        dhr_mul(&V, &G, &V);
+        dhr_mul(&G, &V, &V);
     }
     dhr_identity(&S);
     for (i = 0; i < 4; i++) DHR_M4(&S, i, i) = pow(cond, -dht_rand_uniform(0.0, 1.0));
     DHR_M4(&S, 0, 0) = 1.0;
     DHR_M4(&S, 3, 3) = 1.0 / cond;
-    dhr_mul(D, &U, &S);
-    dhr_mul(D, D, &V);
+    dhr_mul(&U, &S, D);
+    dhr_mul(D, &V, D);
 }
 
 static void general_inverse_accuracy_and_scale_invariance(void)
@@ -320,15 +320,15 @@ static void general_inverse_accuracy_and_scale_invariance(void)
         rand_conditioned(&D, pow(10.0, dht_rand_uniform(0.0, 4.5)));
         for (c = 0; c < 4; c++)
             for (r = 0; r < 4; r++) D.m[c][r] *= scale;
-        dhr_to_f32(&T, &D);
-        dhr_from_f32(&D, &T);
-        DHT_TRUE(dhr_inv(&Di, &D));
+        dhr_to_f32(&D, &T);
+        dhr_from_f32(&T, &D);
+        DHT_TRUE(dhr_inv(&D, &Di));
         /* the library's criterion uses the 1-norm (= inf-norm of T^T) */
         {
             dhr_mat4 Dt, Dti;
             for (c = 0; c < 4; c++)
                 for (r = 0; r < 4; r++) Dt.m[c][r] = D.m[r][c];
-            DHT_TRUE(dhr_inv(&Dti, &Dt));
+            DHT_TRUE(dhr_inv(&Dt, &Dti));
             cond = dhr_norm_inf(&Dt) * dhr_norm_inf(&Dti);
         }
         DHT_TRUE_MSG(cond < DH_MAT4_COND_MAX / 2.0, "sample cond %g", cond);
@@ -337,8 +337,8 @@ static void general_inverse_accuracy_and_scale_invariance(void)
         /* relative error of the inverse in units of cond * u */
         worst = dmax(worst, dhr_max_abs_diff(&X, &Di) / dhr_max_abs(&Di) / (cond * U24));
         /* T * T^-1 == I, relative to cond */
-        dhr_from_f32(&DX, &X);
-        dhr_mul(&DX, &D, &DX);
+        dhr_from_f32(&X, &DX);
+        dhr_mul(&D, &DX, &DX);
         {
             dhr_mat4 I;
             dhr_identity(&I);
@@ -364,14 +364,14 @@ static void rand_affine_conditioned(dhr_mat4 *D, double cond, double pmax)
     dhr_mat4 U, V, S;
     double k[3];
     dhr_rand_unit3(k);
-    dhr_rot_axis(&U, k[0], k[1], k[2], dht_rand_uniform(-180, 180));
+    dhr_rot_axis(k[0], k[1], k[2], dht_rand_uniform(-180, 180), &U);
     dhr_rand_unit3(k);
-    dhr_rot_axis(&V, k[0], k[1], k[2], dht_rand_uniform(-180, 180));
+    dhr_rot_axis(k[0], k[1], k[2], dht_rand_uniform(-180, 180), &V);
     dhr_identity(&S);
     DHR_M4(&S, 1, 1) = pow(cond, -dht_rand_uniform(0.0, 1.0));
     DHR_M4(&S, 2, 2) = 1.0 / cond;
-    dhr_mul(D, &U, &S);
-    dhr_mul(D, D, &V);
+    dhr_mul(&U, &S, D);
+    dhr_mul(D, &V, D);
     DHR_M4(D, 0, 3) = dht_rand_uniform(-pmax, pmax);
     DHR_M4(D, 1, 3) = dht_rand_uniform(-pmax, pmax);
     DHR_M4(D, 2, 3) = dht_rand_uniform(-pmax, pmax);
@@ -388,7 +388,7 @@ static double cond1_rot(const dhr_mat4 *D)
         DHR_M4(&R, c, 3) = 0.0;
     }
     DHR_M4(&R, 3, 3) = 1.0;
-    DHT_TRUE(dhr_inv(&Ri, &R));
+    DHT_TRUE(dhr_inv(&R, &Ri));
     for (c = 0; c < 4; c++)
         for (r = 0; r < 4; r++) {
             Rt.m[c][r] = R.m[r][c];
@@ -417,9 +417,9 @@ static void general_inverse_fast_paths_accuracy(void)
         scale = pow(10.0, dht_rand_uniform(-20.0, 20.0));
         for (c = 0; c < 3; c++)
             for (r = 0; r < 3; r++) D.m[c][r] *= scale;
-        dhr_to_f32(&T, &D);
-        dhr_from_f32(&D, &T);
-        DHT_TRUE(dhr_inv(&Di, &D));
+        dhr_to_f32(&D, &T);
+        dhr_from_f32(&T, &D);
+        DHT_TRUE(dhr_inv(&D, &Di));
         cond = cond1_rot(&D);
         DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_OK);
         for (c = 0; c < 3; c++)
@@ -440,14 +440,14 @@ static void general_inverse_fast_paths_accuracy(void)
         scale = pow(10.0, dht_rand_uniform(-1.0, 1.0));
         for (c = 0; c < 4; c++)
             for (r = 0; r < 4; r++) D.m[c][r] *= scale;
-        dhr_to_f32(&T, &D);
-        dhr_from_f32(&D, &T);
-        DHT_TRUE(dhr_inv(&Di, &D));
+        dhr_to_f32(&D, &T);
+        dhr_from_f32(&T, &D);
+        DHT_TRUE(dhr_inv(&D, &Di));
         {
             dhr_mat4 Dt, Dti;
             for (c = 0; c < 4; c++)
                 for (r = 0; r < 4; r++) Dt.m[c][r] = D.m[r][c];
-            DHT_TRUE(dhr_inv(&Dti, &Dt));
+            DHT_TRUE(dhr_inv(&Dt, &Dti));
             cond = dhr_norm_inf(&Dt) * dhr_norm_inf(&Dti);
         }
         DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_OK);
@@ -480,13 +480,13 @@ static void general_inverse_decision_scale_invariant(void)
         int c, r;
         if (it & 1) {
             rand_conditioned(&D, cond);
-            dhr_to_f32(&T, &D);
+            dhr_to_f32(&D, &T);
             T2 = T;
             for (c = 0; c < 4; c++)
                 for (r = 0; r < 4; r++) T2.m[c][r] = ldexpf(T.m[c][r], k);
         } else {
             rand_affine_conditioned(&D, cond, 100.0);
-            dhr_to_f32(&T, &D);
+            dhr_to_f32(&D, &T);
             T2 = T;
             for (c = 0; c < 3; c++)
                 for (r = 0; r < 3; r++) T2.m[c][r] = ldexpf(T.m[c][r], k);
@@ -535,7 +535,7 @@ static void general_inverse_reports_rank_deficient(void)
                 }
             for (c = 0; c < 4; c++)
                 for (r = 0; r < 4; r++) D.m[c][r] *= scale;
-            dhr_to_f32(&T, &D);
+            dhr_to_f32(&D, &T);
             memset(&O, 0x5a, sizeof O);
             O0 = O;
             DHT_EQ_INT(dh_mat4_inv_f32(&T, &O), DH_ERR_SINGULAR);
@@ -602,7 +602,7 @@ static void plane_point_invariance(void)
 static double rebuild_err(const dh_mat4_f32 *R, const dh_vec3_f32 *k, float th)
 {
     dhr_mat4 D;
-    DHT_TRUE(dhr_rot_axis(&D, (double)k->x, (double)k->y, (double)k->z, (double)th));
+    DHT_TRUE(dhr_rot_axis((double)k->x, (double)k->y, (double)k->z, (double)th, &D));
     {
         dh_mat4_f32 R3 = *R;
         int i;
@@ -631,8 +631,8 @@ static void axis_angle_round_trips(void)
         else if (band == 1) th = dht_rand_uniform(0.0, 1e-3);          /* near 0 */
         else if (band == 2) th = 180.0 - dht_rand_uniform(0.0, 1e-3);  /* near 180 */
         else th = dht_rand_uniform(89.0, 91.0);                        /* branch switch */
-        DHT_TRUE(dhr_rot_axis(&D, kd[0], kd[1], kd[2], th));
-        dhr_to_f32(&R, &D);
+        DHT_TRUE(dhr_rot_axis(kd[0], kd[1], kd[2], th, &D));
+        dhr_to_f32(&D, &R);
         DHT_EQ_INT(dh_mat4_to_axis_angle_f32(&R, &k, &tho), DH_OK);
         DHT_TRUE(tho >= 0.0f && tho <= 180.0f);
         w_unit = dmax(w_unit, fabs(sqrt((double)k.x * k.x + (double)k.y * k.y + (double)k.z * k.z) - 1.0));

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "dht.h"
+#include "support_ref.h"
 #include "dhmath/rot.h"
 
 #define PI_D 3.14159265358979323846
@@ -17,17 +18,7 @@
 #define M2Q_TOL 2e-7   /* matrix -> quaternion components, measured 1.65e-7 */
 #define UNIT_TOL 2.4e-7 /* | |q| - 1 |, measured 1.3e-7 */
 
-typedef struct { double d[3][3]; } dm3;
 typedef struct { double w, x, y, z; } dq;
-
-/* R of a unit double quaternion (textbook formula) */
-static void d_q2m(dm3 *R, const dq *q)
-{
-    double w = q->w, x = q->x, y = q->y, z = q->z;
-    R->d[0][0] = 1 - 2 * (y * y + z * z); R->d[0][1] = 2 * (x * y - w * z); R->d[0][2] = 2 * (x * z + w * y);
-    R->d[1][0] = 2 * (x * y + w * z); R->d[1][1] = 1 - 2 * (x * x + z * z); R->d[1][2] = 2 * (y * z - w * x);
-    R->d[2][0] = 2 * (x * z - w * y); R->d[2][1] = 2 * (y * z + w * x); R->d[2][2] = 1 - 2 * (x * x + y * y);
-}
 
 static void d_normalize(dq *q)
 {
@@ -48,25 +39,6 @@ static void d_rand_q(dq *q)
     } while (n > 1.0 || n < 1e-4);
     d_normalize(q);
     if (q->w < 0) { q->w = -q->w; q->x = -q->x; q->y = -q->y; q->z = -q->z; }
-}
-
-static void to_f32(dh_mat3_f32 *R, const dm3 *D)
-{
-    int r, c;
-    for (r = 0; r < 3; r++)
-        for (c = 0; c < 3; c++) DH_M3(R, r, c) = (float)D->d[r][c];
-}
-
-static double max_diff(const dh_mat3_f32 *R, const dm3 *D)
-{
-    double m = 0.0;
-    int r, c;
-    for (r = 0; r < 3; r++)
-        for (c = 0; c < 3; c++) {
-            double e = fabs((double)DH_M3(R, r, c) - D->d[r][c]);
-            if (!(e <= m)) m = e;
-        }
-    return m;
 }
 
 static double q_diff(const dh_quat_f32 *q, const dq *r)
@@ -104,7 +76,7 @@ static void to_mat_vs_double(void)
         dq r, rf;
         dh_quat_f32 q, qs;
         dh_mat3_f32 R;
-        dm3 D;
+        dhr_mat3 D;
         double e, sc;
         d_rand_q(&r);
         if (it & 1) { r.w = -r.w; r.x = -r.x; r.y = -r.y; r.z = -r.z; } /* both signs */
@@ -112,9 +84,9 @@ static void to_mat_vs_double(void)
         /* reference: the rotation of the float quaternion actually passed */
         rf.w = q.w; rf.x = q.x; rf.y = q.y; rf.z = q.z;
         d_normalize(&rf);
-        d_q2m(&D, &rf);
+        dhr_mat3_from_quat(rf.w, rf.x, rf.y, rf.z, &D);
         DHT_EQ_INT(dh_quat_to_mat3_f32(&q, &R), DH_OK);
-        e = max_diff(&R, &D);
+        e = dhr_mat3_max_diff(&R, &D);
         if (e > worst) worst = e;
         DHT_TRUE_MSG(e <= Q2M_TOL, "entry error %.3g", e);
         /* a non-unit quaternion gives the rotation of q / |q| */
@@ -122,9 +94,9 @@ static void to_mat_vs_double(void)
         qs.w = (float)(q.w * sc); qs.x = (float)(q.x * sc); qs.y = (float)(q.y * sc); qs.z = (float)(q.z * sc);
         rf.w = qs.w; rf.x = qs.x; rf.y = qs.y; rf.z = qs.z;
         d_normalize(&rf);
-        d_q2m(&D, &rf);
+        dhr_mat3_from_quat(rf.w, rf.x, rf.y, rf.z, &D);
         DHT_EQ_INT(dh_quat_to_mat3_f32(&qs, &R), DH_OK);
-        e = max_diff(&R, &D);
+        e = dhr_mat3_max_diff(&R, &D);
         if (e > worst_scaled) worst_scaled = e;
         DHT_TRUE_MSG(e <= Q2M_TOL, "scale %g: entry error %.3g", sc, e);
     }
@@ -189,13 +161,13 @@ static void from_mat_random(void)
     double worst = 0.0, worst_n = 0.0;
     for (it = 0; it < n; it++) {
         dq r;
-        dm3 D;
+        dhr_mat3 D;
         dh_mat3_f32 R;
         dh_quat_f32 q;
         double e;
         d_rand_q(&r);
-        d_q2m(&D, &r);
-        to_f32(&R, &D);
+        dhr_mat3_from_quat(r.w, r.x, r.y, r.z, &D);
+        dhr_mat3_to_f32(&D, &R);
         DHT_EQ_INT(dh_mat3_to_quat_f32(&R, &q), DH_OK);
         check_canonical(&q);
         e = (r.w < 1e-6) ? q_diff_pm(&q, &r) : q_diff(&q, &r);
@@ -221,7 +193,7 @@ static void from_mat_branch_boundaries(void)
     for (it = 0; it < n; it++) {
         double c[4], nn;
         dq r;
-        dm3 D;
+        dhr_mat3 D;
         dh_mat3_f32 R;
         dh_quat_f32 q;
         double e;
@@ -247,8 +219,8 @@ static void from_mat_branch_boundaries(void)
         r.w = c[0]; r.x = c[1]; r.y = c[2]; r.z = c[3];
         d_normalize(&r);
         if (r.w < 0) { r.w = -r.w; r.x = -r.x; r.y = -r.y; r.z = -r.z; }
-        d_q2m(&D, &r);
-        to_f32(&R, &D);
+        dhr_mat3_from_quat(r.w, r.x, r.y, r.z, &D);
+        dhr_mat3_to_f32(&D, &R);
         DHT_EQ_INT(dh_mat3_to_quat_f32(&R, &q), DH_OK);
         check_canonical(&q);
         e = (r.w < 1e-6) ? q_diff_pm(&q, &r) : q_diff(&q, &r);
@@ -266,7 +238,7 @@ static void from_mat_180_sign(void)
     int it, k;
     for (it = 0; it < DHT_ITER(5000); it++) {
         dq r;
-        dm3 D;
+        dhr_mat3 D;
         dh_mat3_f32 R;
         dh_quat_f32 q;
         float diag[3], comp[3];
@@ -274,8 +246,8 @@ static void from_mat_180_sign(void)
         r.w = 0.0;
         r.x = dht_rand_uniform(-1, 1); r.y = dht_rand_uniform(-1, 1); r.z = dht_rand_uniform(-1, 1);
         d_normalize(&r);
-        d_q2m(&D, &r);
-        to_f32(&R, &D);
+        dhr_mat3_from_quat(r.w, r.x, r.y, r.z, &D);
+        dhr_mat3_to_f32(&D, &R);
         /* make it exactly symmetric, as an exact 180-degree rotation is */
         DH_M3(&R, 0, 1) = DH_M3(&R, 1, 0);
         DH_M3(&R, 0, 2) = DH_M3(&R, 2, 0);

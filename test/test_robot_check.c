@@ -47,7 +47,7 @@ static void hand_written_const_robot_is_reported(void)
     dhs_robot d = dhs_puma560_m;
     dh_robot built;
     dh_mat4_f32 T;
-    dhs_mat4_d R;
+    dhr_mat4 R;
     const float q[3] = { 30.0f, -40.0f, 50.0f };
     const double qd[3] = { 30.0, -40.0, 50.0 };
     d.n = 3u;

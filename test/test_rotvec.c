@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "dht.h"
+#include "support_ref.h"
 #include "dhmath/rot.h"
 #include "dhmath/mat4.h"
 #include "dhmath/trig.h"
@@ -29,35 +30,15 @@
 #define ORTHO_TOL 4e-7   /* max |(X^T X - I)_ij| after re-orthonormalisation (3.6e-7) */
 #define POLAR_TOL 3e-7   /* entry distance to the double polar factor (2.4e-7) */
 
-typedef struct { double d[3][3]; } dm3;
 
 /* Rodrigues in double for axis k (normalised here) and angle t in radians */
-static void d_rot(dm3 *R, double kx, double ky, double kz, double t)
+static void d_rot(double kx, double ky, double kz, double t, dhr_mat3 *R)
 {
     double n = sqrt(kx * kx + ky * ky + kz * kz), c = cos(t), s = sin(t), v = 1.0 - c;
     kx /= n; ky /= n; kz /= n;
     R->d[0][0] = c + v * kx * kx;      R->d[0][1] = v * kx * ky - s * kz; R->d[0][2] = v * kx * kz + s * ky;
     R->d[1][0] = v * kx * ky + s * kz; R->d[1][1] = c + v * ky * ky;      R->d[1][2] = v * ky * kz - s * kx;
     R->d[2][0] = v * kx * kz - s * ky; R->d[2][1] = v * ky * kz + s * kx; R->d[2][2] = c + v * kz * kz;
-}
-
-static void to_f32(dh_mat3_f32 *R, const dm3 *D)
-{
-    int r, c;
-    for (r = 0; r < 3; r++)
-        for (c = 0; c < 3; c++) DH_M3(R, r, c) = (float)D->d[r][c];
-}
-
-static double max_diff(const dh_mat3_f32 *R, const dm3 *D)
-{
-    double m = 0.0;
-    int r, c;
-    for (r = 0; r < 3; r++)
-        for (c = 0; c < 3; c++) {
-            double e = fabs((double)DH_M3(R, r, c) - D->d[r][c]);
-            if (!(e <= m)) m = e;
-        }
-    return m;
 }
 
 static void rand_axis(double k[3])
@@ -96,7 +77,7 @@ static void axis_angle_to_mat(void)
         double k[3], deg, e;
         dh_vec3_f32 a;
         dh_mat3_f32 R;
-        dm3 D;
+        dhr_mat3 D;
         rand_axis(k);
         a.x = (float)(k[0] * dht_rand_uniform(0.01, 100.0)); /* any length */
         a.y = (float)(k[1] * fabs(a.x / k[0]));
@@ -105,8 +86,8 @@ static void axis_angle_to_mat(void)
         deg = (float)dht_rand_uniform(-720.0, 720.0);
         if (it % 10 == 0) deg = (float)dht_rand_uniform(-1e-3, 1e-3);
         DHT_EQ_INT(dh_axis_angle_to_mat3_f32(&a, (float)deg, &R), DH_OK);
-        d_rot(&D, a.x, a.y, a.z, deg * PI_D / 180.0);
-        e = max_diff(&R, &D);
+        d_rot(a.x, a.y, a.z, deg * PI_D / 180.0, &D);
+        e = dhr_mat3_max_diff(&R, &D);
         if (e > worst) worst = e;
         DHT_TRUE_MSG(e <= A2M_TOL, "axis (%a, %a, %a), deg %.9g: entry error %.3g > bound %.3g",
                      (double)a.x, (double)a.y, (double)a.z, deg, e, A2M_TOL);
@@ -165,14 +146,14 @@ static void check_axis_angle_of(const dh_mat3_f32 *R, double *rep_err, double *a
 {
     dh_vec3_f32 k;
     float deg;
-    dm3 D;
+    dhr_mat3 D;
     double n, e;
     DHT_EQ_INT(dh_mat3_to_axis_angle_f32(R, &k, &deg), DH_OK);
     DHT_TRUE(deg >= 0.0f && deg <= 180.0f);
     n = sqrt((double)k.x * k.x + (double)k.y * k.y + (double)k.z * k.z);
     DHT_NEAR(n, 1.0, 2.4e-7);
-    d_rot(&D, k.x, k.y, k.z, deg * PI_D / 180.0);
-    e = max_diff(R, &D);
+    d_rot(k.x, k.y, k.z, deg * PI_D / 180.0, &D);
+    e = dhr_mat3_max_diff(R, &D);
     if (e > *rep_err) *rep_err = e;
     DHT_TRUE_MSG(e <= AXREP_TOL, "angle %.9g: reproduction %.3g", t_ref_deg, e);
     e = fabs(deg - t_ref_deg);
@@ -186,23 +167,23 @@ static void mat_to_axis_angle(void)
     double rep = 0.0, ang = 0.0, rep0 = 0.0, ang0 = 0.0, rep180 = 0.0, ang180 = 0.0;
     for (it = 0; it < n; it++) {
         double k[3], t;
-        dm3 D;
+        dhr_mat3 D;
         dh_mat3_f32 R;
         rand_axis(k);
         /* anywhere */
         t = dht_rand_uniform(0.0, 180.0);
-        d_rot(&D, k[0], k[1], k[2], t * PI_D / 180.0);
-        to_f32(&R, &D);
+        d_rot(k[0], k[1], k[2], t * PI_D / 180.0, &D);
+        dhr_mat3_to_f32(&D, &R);
         check_axis_angle_of(&R, &rep, &ang, t);
         /* near 0: 1e-9 .. 1e-3 deg */
         t = pow(10.0, dht_rand_uniform(-9.0, -3.0));
-        d_rot(&D, k[0], k[1], k[2], t * PI_D / 180.0);
-        to_f32(&R, &D);
+        d_rot(k[0], k[1], k[2], t * PI_D / 180.0, &D);
+        dhr_mat3_to_f32(&D, &R);
         check_axis_angle_of(&R, &rep0, &ang0, t);
         /* near and at 180 */
         t = (it % 4 == 0) ? 180.0 : 180.0 - pow(10.0, dht_rand_uniform(-9.0, -3.0));
-        d_rot(&D, k[0], k[1], k[2], t * PI_D / 180.0);
-        to_f32(&R, &D);
+        d_rot(k[0], k[1], k[2], t * PI_D / 180.0, &D);
+        dhr_mat3_to_f32(&D, &R);
         check_axis_angle_of(&R, &rep180, &ang180, t);
     }
     dht_printf("mat3 -> axis-angle: reproduction / angle error (deg): random %.3g / %.3g, "
@@ -229,10 +210,10 @@ static void mat_to_axis_angle_special(void)
     /* the same answer as the 4x4 function (shared algorithm) */
     for (it = 0; it < DHT_ITER(2000); it++) {
         double ax[3];
-        dm3 D;
+        dhr_mat3 D;
         rand_axis(ax);
-        d_rot(&D, ax[0], ax[1], ax[2], dht_rand_uniform(0.0, PI_D));
-        to_f32(&R, &D);
+        d_rot(ax[0], ax[1], ax[2], dht_rand_uniform(0.0, PI_D), &D);
+        dhr_mat3_to_f32(&D, &R);
         dh_mat4_identity_f32(&T);
         dh_mat4_set_rot_f32(&T, &R);
         DHT_EQ_INT(dh_mat3_to_axis_angle_f32(&R, &k, &deg), DH_OK);
@@ -269,7 +250,7 @@ static void exp_map(void)
         double k[3], t, e;
         dh_vec3_f32 p;
         dh_mat3_f32 R;
-        dm3 D;
+        dhr_mat3 D;
         rand_axis(k);
         if (it % 4 == 0) t = pow(10.0, dht_rand_uniform(-30.0, -2.0));
         else t = dht_rand_uniform(0.0, 4.0 * PI_D);
@@ -278,8 +259,8 @@ static void exp_map(void)
         /* reference: the float vector actually passed */
         t = sqrt((double)p.x * p.x + (double)p.y * p.y + (double)p.z * p.z);
         if (t == 0.0) continue;
-        d_rot(&D, p.x, p.y, p.z, t);
-        e = max_diff(&R, &D);
+        d_rot(p.x, p.y, p.z, t, &D);
+        e = dhr_mat3_max_diff(&R, &D);
         if (t <= PI_D) {
             if (e > worst) worst = e;
         } else if (e > worst_big) {
@@ -304,13 +285,13 @@ static void exp_length_rounding(void)
     for (i = 0; i < sizeof v / sizeof v[0]; i++) {
         dh_vec3_f32 p;
         dh_mat3_f32 R;
-        dm3 D;
+        dhr_mat3 D;
         double t, e;
         p.x = v[i][0]; p.y = v[i][1]; p.z = v[i][2];
         DHT_EQ_INT(dh_rotvec_to_mat3_f32(&p, &R), DH_OK);
         t = sqrt((double)p.x * p.x + (double)p.y * p.y + (double)p.z * p.z);
-        d_rot(&D, p.x, p.y, p.z, t);
-        e = max_diff(&R, &D);
+        d_rot(p.x, p.y, p.z, t, &D);
+        e = dhr_mat3_max_diff(&R, &D);
         DHT_TRUE_MSG(e <= EXP_TOL, "exp(%a, %a, %a), |phi| %.9g: entry error %.3g > bound %.3g",
                      (double)p.x, (double)p.y, (double)p.z, t, e, EXP_TOL);
     }
@@ -337,13 +318,13 @@ static void exp_special(void)
         int k;
         for (k = 2; k <= 127; k += 5) {
             float t = ldexpf(1.0f + (float)k / 128.0f, k);
-            dm3 D;
+            dhr_mat3 D;
             dh_vec3_f32 ph = { 0.0f, 0.0f, 0.0f };
             if (k % 3 == 0) ph.x = -t; else if (k % 3 == 1) ph.y = t; else ph.z = t;
             DHT_EQ_INT(dh_rotvec_to_mat3_f32(&ph, &R), DH_OK);
-            d_rot(&D, ph.x, ph.y, ph.z, (double)t);
-            DHT_TRUE_MSG(max_diff(&R, &D) <= EXP_TOL, "exp(%a, %a, %a): entry error %.3g > bound %.3g",
-                         (double)ph.x, (double)ph.y, (double)ph.z, max_diff(&R, &D), EXP_TOL);
+            d_rot(ph.x, ph.y, ph.z, (double)t, &D);
+            DHT_TRUE_MSG(dhr_mat3_max_diff(&R, &D) <= EXP_TOL, "exp(%a, %a, %a): entry error %.3g > bound %.3g",
+                         (double)ph.x, (double)ph.y, (double)ph.z, dhr_mat3_max_diff(&R, &D), EXP_TOL);
         }
     }
     p.x = 1e30f; p.y = -3e30f; p.z = 2e29f;
@@ -366,12 +347,12 @@ static void log_map(void)
         double k[3], t, e;
         dh_vec3_f32 p;
         dh_mat3_f32 R;
-        dm3 D;
+        dhr_mat3 D;
         rand_axis(k);
         /* away from pi: |phi - phi_exact| */
         t = (it % 3 == 0) ? pow(10.0, dht_rand_uniform(-12.0, -1.0)) : dht_rand_uniform(0.0, PI_D - 1e-3);
-        d_rot(&D, k[0], k[1], k[2], t);
-        to_f32(&R, &D);
+        d_rot(k[0], k[1], k[2], t, &D);
+        dhr_mat3_to_f32(&D, &R);
         DHT_EQ_INT(dh_mat3_to_rotvec_f32(&R, &p), DH_OK);
         e = fabs(p.x - k[0] * t);
         if (fabs(p.y - k[1] * t) > e) e = fabs(p.y - k[1] * t);
@@ -382,13 +363,13 @@ static void log_map(void)
                      "%.3g > bound %.3g", k[0], k[1], k[2], t, e, LOG_TOL);
         /* within 1e-3 rad of pi, and at pi: only the rotation is meaningful */
         t = (it % 5 == 0) ? PI_D : PI_D - pow(10.0, dht_rand_uniform(-9.0, -3.0));
-        d_rot(&D, k[0], k[1], k[2], t);
-        to_f32(&R, &D);
+        d_rot(k[0], k[1], k[2], t, &D);
+        dhr_mat3_to_f32(&D, &R);
         DHT_EQ_INT(dh_mat3_to_rotvec_f32(&R, &p), DH_OK);
         e = sqrt((double)p.x * p.x + (double)p.y * p.y + (double)p.z * p.z);
         DHT_TRUE(e <= PI_D + 1e-6);
-        d_rot(&D, p.x, p.y, p.z, e);
-        e = max_diff(&R, &D);
+        d_rot(p.x, p.y, p.z, e, &D);
+        e = dhr_mat3_max_diff(&R, &D);
         if (e > worst_pi) worst_pi = e;
         DHT_TRUE_MSG(e <= LOGREP_TOL, "log of R = float(Rot((%.17g, %.17g, %.17g), t %.17g)): reproduction "
                      "%.3g > bound %.3g", k[0], k[1], k[2], t, e, LOGREP_TOL);
@@ -469,12 +450,12 @@ static void angular_velocity(void)
     double worst = 0.0, worst_b = 0.0;
     for (it = 0; it < n; it++) {
         double ax[3], om[3], S[3][3], Rd[3][3], Rdb[3][3], omb[3], e, mag;
-        dm3 D;
+        dhr_mat3 D;
         dh_mat3_f32 R, Rdot, Rdotb;
         dh_vec3_f32 w, wb;
         rand_axis(ax);
-        d_rot(&D, ax[0], ax[1], ax[2], dht_rand_uniform(0.0, PI_D));
-        to_f32(&R, &D);
+        d_rot(ax[0], ax[1], ax[2], dht_rand_uniform(0.0, PI_D), &D);
+        dhr_mat3_to_f32(&D, &R);
         for (r = 0; r < 3; r++) for (c = 0; c < 3; c++) D.d[r][c] = DH_M3(&R, r, c); /* the float R exactly */
         mag = (it % 2) ? dht_rand_uniform(0.0, 10.0) : dht_rand_uniform(0.0, 1.0);
         om[0] = dht_rand_uniform(-1, 1) * mag; om[1] = dht_rand_uniform(-1, 1) * mag; om[2] = dht_rand_uniform(-1, 1) * mag;
@@ -563,7 +544,7 @@ static void check_rot(void)
 }
 
 /* double polar factor by Newton's iteration X <- (X + X^-T) / 2 */
-static void d_polar(dm3 *X)
+static void d_polar(dhr_mat3 *X)
 {
     int it, r, c;
     for (it = 0; it < 60; it++) {
@@ -588,10 +569,10 @@ static void orthonormalize(void)
     for (e_i = 0; e_i < 6; e_i++)
         for (it = 0; it < n; it++) {
             double ax[3], e;
-            dm3 D, P;
+            dhr_mat3 D, P;
             dh_mat3_f32 R, O, A;
             rand_axis(ax);
-            d_rot(&D, ax[0], ax[1], ax[2], dht_rand_uniform(0.0, PI_D));
+            d_rot(ax[0], ax[1], ax[2], dht_rand_uniform(0.0, PI_D), &D);
             for (r = 0; r < 3; r++)
                 for (c = 0; c < 3; c++) DH_M3(&R, r, c) = (float)(D.d[r][c] + dht_rand_uniform(-eps[e_i], eps[e_i]));
             for (r = 0; r < 3; r++) for (c = 0; c < 3; c++) P.d[r][c] = DH_M3(&R, r, c);
@@ -600,10 +581,10 @@ static void orthonormalize(void)
             e = ortho_dev(&O);
             if (e > worst_o) worst_o = e;
             DHT_TRUE_MSG(e <= ORTHO_TOL, "eps %g: orthonormality %.3g", eps[e_i], e);
-            e = max_diff(&O, &P);
+            e = dhr_mat3_max_diff(&O, &P);
             if (e > worst_p) worst_p = e;
             DHT_TRUE_MSG(e <= POLAR_TOL, "eps %g: distance to polar factor %.3g", eps[e_i], e);
-            e = max_diff(&O, &D);
+            e = dhr_mat3_max_diff(&O, &D);
             if (e > worst_orig[e_i]) worst_orig[e_i] = e;
             DHT_TRUE(e <= 3.0 * eps[e_i] + 3e-7); /* close to the rotation that was perturbed */
             /* in place */
@@ -620,7 +601,7 @@ static void orthonormalize(void)
 static void orthonormalize_edges(void)
 {
     dh_mat3_f32 R, O, Os;
-    dm3 P;
+    dhr_mat3 P;
     int r, c;
     /* uniformly scaled by 0.9 (deviation 0.19 < 0.25): converges to the rotation */
     for (r = 0; r < 3; r++) for (c = 0; c < 3; c++) DH_M3(&R, r, c) = 0.0f;
@@ -635,7 +616,7 @@ static void orthonormalize_edges(void)
     for (r = 0; r < 3; r++) for (c = 0; c < 3; c++) P.d[r][c] = DH_M3(&R, r, c);
     d_polar(&P);
     DHT_EQ_INT(dh_mat3_orthonormalize_f32(&R, &O), DH_OK);
-    DHT_TRUE(max_diff(&O, &P) <= POLAR_TOL);
+    DHT_TRUE(dhr_mat3_max_diff(&O, &P) <= POLAR_TOL);
     Os = O;
     /* too far (deviation 0.44), reflection, NaN: errors, O untouched */
     for (r = 0; r < 3; r++) for (c = 0; c < 3; c++) DH_M3(&R, r, c) = (r == c) ? 1.2f : 0.0f;

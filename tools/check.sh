@@ -55,7 +55,7 @@ small_suite() {
 
 # The committed regression seeds (test/regression_seeds.txt), once each
 regression_seeds() {
-  sed -e 's/#.*//' "$ROOT/test/regression_seeds.txt" | awk 'NF == 3 { print $2 }' | sort -u | tr '\n' ' '
+  sed -e 's/#.*//' "$ROOT/test/regression_seeds.txt" | awk 'NF >= 3 { print $2 }' | sort -u | tr '\n' ' '
 }
 
 # The examples: the host ones (README's C example, the C++ example) and the
