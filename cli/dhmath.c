@@ -859,8 +859,8 @@ static int cmd_ik(int argc, char **argv)
     double qd[DH_MAX_JOINTS];
     float q0[DH_MAX_JOINTS], q[DH_MAX_JOINTS];
     static float work[DH_IK_WORK_FLOATS(DH_MAX_JOINTS)];
-    dh_ik_params prm;
-    dh_ik_result res;
+    dh_ik_params_f32 prm;
+    dh_ik_result_f32 res;
     unsigned n, k;
     dh_status st;
     double L, x;
@@ -883,7 +883,7 @@ static int cmd_ik(int argc, char **argv)
                     "clamped to %.9g\n", o.q0 ? "--q0:" : "start (no --q0, all zeros):", k + 1, (double)q0[k],
                     (double)j->qmin, (double)j->qmax, (double)(q0[k] < j->qmin ? j->qmin : j->qmax));
     }
-    dh_ik_params_default(&r, &prm);     /* scaled to the robot's size */
+    dh_ik_params_default_f32(&r, &prm);     /* scaled to the robot's size */
     /* L names the robot's size in the messages: sum of |a| + |d| of the
      * joints and the base and tool offsets (the library's L, which has the
      * tool's length instead of its offsets and no base, is near it). The

@@ -3,7 +3,7 @@
 # DH_INSTALL is ON):
 #   <prefix>/include/dhmath/*.h                 public headers
 #   <prefix>/lib/libdhmath.a                    the library
-#   <prefix>/lib/cmake/dhmath/                  find_package(dhmath 0.2 CONFIG)
+#   <prefix>/lib/cmake/dhmath/                  find_package(dhmath 0.3 CONFIG)
 #                                               -> imported target dhmath::dhmath
 #   <prefix>/lib/cmake/dhmath/dhmathRobot.cmake  dhmath_add_robot() (with
 #                                               dhmathGen.cmake)

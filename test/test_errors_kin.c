@@ -211,9 +211,9 @@ static void kin_rot_pose_error_bad(void)
     }
 }
 
-static void ik_setup(const dh_robot *r, dh_ik_params *p, dh_ik_result *res)
+static void ik_setup(const dh_robot *r, dh_ik_params_f32 *p, dh_ik_result_f32 *res)
 {
-    dh_ik_params_default(r, p);
+    dh_ik_params_default_f32(r, p);
     memset(res, 0, sizeof *res);
 }
 
@@ -221,8 +221,8 @@ static void ik_setup(const dh_robot *r, dh_ik_params *p, dh_ik_result *res)
 static void kin_ik_bad_args(void)
 {
     dh_robot r, r2;
-    dh_ik_params p, pb;
-    dh_ik_result res;
+    dh_ik_params_f32 p, pb;
+    dh_ik_result_f32 res;
     dh_mat4_f32 target;
     float q0[NJ] = { 0.0f, -45.0f, 120.0f, 0.0f, 45.0f, 0.0f }; /* within the limits */
     float q[NJ];
@@ -384,8 +384,8 @@ static void kin_ik_bad_args(void)
 static void kin_ik_not_rigid(void)
 {
     dh_robot r;
-    dh_ik_params p, pp;
-    dh_ik_result res;
+    dh_ik_params_f32 p, pp;
+    dh_ik_result_f32 res;
     dh_mat4_f32 target;
     float q0[NJ] = { 0.0f, -45.0f, 120.0f, 0.0f, 45.0f, 0.0f };
     float q[NJ];
@@ -486,8 +486,8 @@ static double ref_pos_err(const dh_robot *r, const dh_mat4_f32 *target, const fl
 static void kin_ik_unreachable(void)
 {
     dh_robot r;
-    dh_ik_params p;
-    dh_ik_result res, res2;
+    dh_ik_params_f32 p;
+    dh_ik_result_f32 res, res2;
     float q0[NJ] = { 0.0f, -45.0f, 180.0f, 0.0f, 45.0f, 0.0f };
     float q[NJ], qa[NJ];
     unsigned it;
@@ -557,8 +557,8 @@ static void kin_ik_unreachable(void)
 static void kin_ik_status(void)
 {
     dh_robot r, r2;
-    dh_ik_params p;
-    dh_ik_result res;
+    dh_ik_params_f32 p;
+    dh_ik_result_f32 res;
     dh_mat4_f32 target;
     float q0[NJ] = { 0.0f, 30.0f, -60.0f, 0.0f, 45.0f, 0.0f };
     float q[NJ];

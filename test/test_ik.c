@@ -50,7 +50,7 @@ typedef struct {
 /* count targets: the double FK of random in-limit configurations (dht
  * generator, seeded by the caller) rounded to float, solved from home */
 static void run_rate(const char *name, const dhs_robot *desc, const float *home, double tol_p, double tol_r,
-                     const dh_ik_params *prm, int count, ik_stats *s)
+                     const dh_ik_params_f32 *prm, int count, ik_stats *s)
 {
     dh_robot r;
     int it;
@@ -60,7 +60,7 @@ static void run_rate(const char *name, const dhs_robot *desc, const float *home,
         double q[NJ], ep, er;
         float qo[NJ];
         dh_mat4_f32 T;
-        dh_ik_result res;
+        dh_ik_result_f32 res;
         dh_status st;
         dhs_random_q(desc, q);
         dhs_target_f32(&r, q, &T);
@@ -111,14 +111,14 @@ static void rate_case(const char *name, const dhs_robot *desc, const float *home
                       double tol_p, double tol_r, double w_rot, double need, unsigned nseeds)
 {
     dh_robot r;
-    dh_ik_params prm;
+    dh_ik_params_f32 prm;
     ik_stats s;
     const uint64_t s0 = dht_seed();
     uint64_t worst_seed = s0;
     int worst_ok = -1, worst_runs = 1;
     unsigned k;
     DHT_EQ_INT(dhs_build(desc, &r), DH_OK);
-    dh_ik_params_default(&r, &prm);
+    dh_ik_params_default_f32(&r, &prm);
     prm.mask = mask;
     prm.tol_pos = (float)tol_p;
     prm.tol_rot = (float)tol_r;
@@ -181,15 +181,15 @@ static void ik_rate_mm(void)
 static void ik_bad_arguments(void)
 {
     dh_robot r;
-    dh_ik_params p;
-    dh_ik_result res;
+    dh_ik_params_f32 p;
+    dh_ik_result_f32 res;
     dh_mat4_f32 T;
     float q[6], q0[6] = { 0, 30, -60, 0, 45, 0 };
     double qd[6] = { 10, 20, -30, 40, 50, 60 };
     int k;
     DHT_EQ_INT(dhs_build(&dhs_puma560_m, &r), DH_OK);
     dhs_target_f32(&r, qd, &T);
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     for (k = 0; k < 6; k++) q[k] = 99.0f;
     res.iterations = 77u;
 
@@ -199,21 +199,21 @@ static void ik_bad_arguments(void)
     /* bad parameters */
     p.max_iter = 0;
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_ARG);
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     p.mask = 0;
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_ARG);
     p.mask = 0x40u;
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_ARG);
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     p.tol_pos = -1.0f;
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_ARG);
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     p.tol_rot = NAN;
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_ARG);
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     p.w_rot = 0.0f;
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_ARG);
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     /* NaN target / NaN start */
     T.m[3][1] = NAN;
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_ERR_NAN);
@@ -230,7 +230,7 @@ static void ik_bad_arguments(void)
     /* ... which does not matter for position-only IK */
     p.mask = DH_IK_POSITION;
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_OK);
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     for (k = 0; k < 6; k++) q[k] = 99.0f;
     res.iterations = 77u;
     /* no joints */
@@ -247,14 +247,14 @@ static void ik_bad_arguments(void)
 static void ik_unreachable(void)
 {
     dh_robot r;
-    dh_ik_params p;
-    dh_ik_result res;
+    dh_ik_params_f32 p;
+    dh_ik_result_f32 res;
     dh_mat4_f32 T;
     float q[6];
     double ep, er;
     dh_status st;
     DHT_EQ_INT(dhs_build(&dhs_puma560_m, &r), DH_OK);
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     dh_mat4_identity_f32(&T);
     T.m[3][0] = 2.0f;
     T.m[3][1] = 0.5f;
@@ -303,8 +303,8 @@ static void ik_unreachable(void)
 static void ik_limits_respected(void)
 {
     dh_robot r;
-    dh_ik_params p;
-    dh_ik_result res;
+    dh_ik_params_f32 p;
+    dh_ik_result_f32 res;
     dh_mat4_f32 T;
     double qt[2] = { 35, -70 }, ep, er;
     float q0[2] = { 0, -10 }, q[2];
@@ -313,7 +313,7 @@ static void ik_limits_respected(void)
     DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, l1, 0), DH_OK);
     DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, l2, 0), DH_OK);
     dhs_target_f32(&r, qt, &T);
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     p.mask = DH_IK_PX | DH_IK_PY;
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_OK);
     DHT_NEAR(q[1], -70.0, 1e-3);            /* unconstrained: elbow down */
@@ -342,8 +342,8 @@ static void ik_limits_respected(void)
 static void ik_multiturn(void)
 {
     dh_robot r;
-    dh_ik_params p;
-    dh_ik_result res;
+    dh_ik_params_f32 p;
+    dh_ik_result_f32 res;
     dh_mat4_f32 T;
     double qt[6] = { 400, -80, 95, -100, -85, 700 }, ep, er;
     float q0[6] = { 395, -85, 90, -95, -90, 705 }, q[6];
@@ -351,7 +351,7 @@ static void ik_multiturn(void)
     DHT_EQ_INT(dhs_build(&dhs_ur5_m, &r), DH_OK);
     for (i = 0; i < 6; i++) DHT_EQ_INT(dh_robot_set_limits_f32(&r, i, -720.0f, 720.0f), DH_OK);
     dhs_target_f32(&r, qt, &T);
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_OK);
     for (i = 0; i < 6; i++) DHT_NEAR(q[i], qt[i], 1e-2);
     dhs_true_error_f32(&r, q, &T, &ep, &er);
@@ -363,7 +363,7 @@ static void ik_multiturn(void)
 static void ik_prismatic(void)
 {
     dh_robot cart, scara;
-    dh_ik_params p;
+    dh_ik_params_f32 p;
     int it, ok_c = 0, ok_s = 0, n = DHT_ITER(200);
     DHT_EQ_INT(dh_robot_init(&cart, DH_CONV_STANDARD), DH_OK);
     DHT_EQ_INT(dh_robot_add_joint_f32(&cart, DH_JOINT_PRISMATIC, 0, 0, 0, -90), DH_OK);
@@ -383,13 +383,13 @@ static void ik_prismatic(void)
     DHT_EQ_INT(dh_robot_set_limits_f32(&scara, 1, 5.0f, 145.0f), DH_OK);
     DHT_EQ_INT(dh_robot_set_limits_f32(&scara, 2, 0.0f, 0.3f), DH_OK);
     DHT_EQ_INT(dh_robot_set_limits_f32(&scara, 3, -360.0f, 360.0f), DH_OK);
-    dh_ik_params_default(&cart, &p);
+    dh_ik_params_default_f32(&cart, &p);
     p.tol_pos = 1e-6f;     /* the bound checked below, for both robots */
     for (it = 0; it < n; it++) {
         double qc[3], qs[4], ep, er;
         float q[4];
         dh_mat4_f32 T;
-        dh_ik_result res;
+        dh_ik_result_f32 res;
         dh_status st;
         uint32_t i;
         dhs_random_q_robot(&cart, qc);
@@ -423,8 +423,8 @@ static void ik_prismatic(void)
 static void ik_masked_deterministic(void)
 {
     dh_robot r;
-    dh_ik_params p;
-    dh_ik_result r1, r2;
+    dh_ik_params_f32 p;
+    dh_ik_result_f32 r1, r2;
     dh_mat4_f32 T;
     double qd[6] = { 20, 40, -50, 30, 60, -20 };
     float q1[6], q2[6];
@@ -434,7 +434,7 @@ static void ik_masked_deterministic(void)
     DHT_EQ_INT(dhs_build(&dhs_puma560_m, &r), DH_OK);
     dhs_target_f32(&r, qd, &T);
     T.m[3][1] += 0.3f;     /* y is not asked for */
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     p.mask = DH_IK_PX | DH_IK_PZ;
     DHT_EQ_INT(dh_ik_f32(&r, &T, puma_home, &p, g_work, sizeof g_work / sizeof g_work[0], q1, &r1), DH_OK);
     DHT_EQ_INT(dh_ik_f32(&r, &T, puma_home, &p, g_work, sizeof g_work / sizeof g_work[0], q2, &r2), DH_OK);
@@ -450,8 +450,8 @@ static void ik_masked_deterministic(void)
 static void ik_start_at_solution(void)
 {
     dh_robot r;
-    dh_ik_params p;
-    dh_ik_result res;
+    dh_ik_params_f32 p;
+    dh_ik_result_f32 res;
     dh_mat4_f32 T;
     double qd[7] = { 10, -30, 20, -100, 15, 80, 30 };
     float q0[7], q[7];
@@ -459,7 +459,7 @@ static void ik_start_at_solution(void)
     DHT_EQ_INT(dhs_build(&dhs_panda_m, &r), DH_OK);
     for (k = 0; k < 7; k++) q0[k] = (float)qd[k];
     dhs_target_f32(&r, qd, &T);
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     DHT_EQ_INT(dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res), DH_OK);
     for (k = 0; k < 7; k++) DHT_NEAR(q[k], qd[k], 1e-3);
     DHT_TRUE_MSG(res.iterations <= 3u, "%lu iterations, bound <= 3", (unsigned long)res.iterations);    /* only the refinement steps */
@@ -486,12 +486,12 @@ static void ik_params_default_scaled(void)
     static const dhs_robot *const robots[] = { &dhs_puma560_m, &dhs_puma560_mm, &dhs_ur5_m, &dhs_ur5_mm,
                                                 &dhs_panda_m, &dhs_panda_mm };
     dh_robot r;
-    dh_ik_params p;
+    dh_ik_params_f32 p;
     unsigned k;
     for (k = 0; k < 6u; k++) {
         const double L = robot_size(robots[k]);
         DHT_EQ_INT(dhs_build(robots[k], &r), DH_OK);
-        dh_ik_params_default(&r, &p);
+        dh_ik_params_default_f32(&r, &p);
         DHT_NEAR(p.tol_pos, 1e-6 * L, 1e-12 * L);
         DHT_NEAR(p.w_rot, 0.25 * L, 1e-6 * L);
         DHT_EQ_INT(p.max_iter, 2000);
@@ -500,11 +500,11 @@ static void ik_params_default_scaled(void)
         DHT_NEAR(p.tol_rot, 1e-5, 1e-12);
     }
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     DHT_NEAR(p.tol_pos, 1e-6, 1e-12);
     DHT_NEAR(p.w_rot, 0.25, 1e-7);
     DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, 0, 90), DH_OK);
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     DHT_NEAR(p.w_rot, 0.25, 1e-7);
 }
 
@@ -527,11 +527,11 @@ static void ik_weight_insensitive(void)
         for (k = 0; k < 9u; k++) {
             const double w = (k < 6u) ? factor[k] * size : absolute[k - 6u] * u;
             dh_robot r;
-            dh_ik_params prm;
+            dh_ik_params_f32 prm;
             ik_stats s;
             char name[48];
             DHT_EQ_INT(dhs_build(d, &r), DH_OK);
-            dh_ik_params_default(&r, &prm);
+            dh_ik_params_default_f32(&r, &prm);
             prm.tol_pos = (float)(1e-6 * u);
             prm.w_rot = (float)w;
             (void)snprintf(name, sizeof name, "%s w_rot %g", u > 1 ? "puma560 (mm)" : "puma560 (m)", w);
@@ -555,15 +555,15 @@ static void ik_ur5_hard_target(void)
     static const double qt[6] = { 299.51278838944893, 54.07958061836041, 60.844163601340369,
                                   -52.798711358032733, -186.32417516489036, -192.67032377374386 };
     dh_robot r;
-    dh_ik_params p;
-    dh_ik_result res;
+    dh_ik_params_f32 p;
+    dh_ik_result_f32 res;
     dh_mat4_f32 T;
     float q[6];
     double ep, er;
     dh_status st;
     DHT_EQ_INT(dhs_build(&dhs_ur5_m, &r), DH_OK);
     dhs_target_f32(&r, qt, &T);
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     p.tol_pos = 1e-6f;
     p.w_rot = 1.0f;
     st = dh_ik_f32(&r, &T, ur5_home, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
@@ -583,8 +583,8 @@ static void ik_ur5_hard_target(void)
 static void ik_prismatic_unlimited(void)
 {
     dh_robot r;
-    dh_ik_params p;
-    dh_ik_result res;
+    dh_ik_params_f32 p;
+    dh_ik_result_f32 res;
     dh_mat4_f32 T;
     float q0[3] = { 0, 0, 0 }, q[3];
     double ep, er;
@@ -594,7 +594,7 @@ static void ik_prismatic_unlimited(void)
     DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, 0, 0, 0, 0), DH_OK);
     dh_mat4_identity_f32(&T);
     T.m[3][2] = 100.0f;
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     st = dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
     dht_printf("P to z = 100: status %d after %lu iterations, q %.9g\n", (int)st, (unsigned long)res.iterations,
                (double)q[0]);
@@ -617,7 +617,7 @@ static void ik_prismatic_unlimited(void)
             dist += (double)tgt[k][i] * tgt[k][i];
         }
         dist = sqrt(dist);
-        dh_ik_params_default(&r, &p);
+        dh_ik_params_default_f32(&r, &p);
         p.mask = DH_IK_POSITION;
         p.tol_pos = (float)(1e-6 * dist);
         st = dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
@@ -640,8 +640,8 @@ static void ik_prismatic_unlimited(void)
 static void ik_normal_overflow(void)
 {
     dh_robot r;
-    dh_ik_params p;
-    dh_ik_result res;
+    dh_ik_params_f32 p;
+    dh_ik_result_f32 res;
     dh_mat4_f32 T;
     const float q0[2] = { 0.0f, 1e20f }, qt[2] = { 1e-3f, 1e20f };
     float q[2];
@@ -650,7 +650,7 @@ static void ik_normal_overflow(void)
     DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0, 0, 0, 90), DH_OK);
     DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_PRISMATIC, 0, 0, 0, 0), DH_OK);
     DHT_EQ_INT(dh_fk_f32(&r, qt, &T), DH_OK);
-    dh_ik_params_default(&r, &p);
+    dh_ik_params_default_f32(&r, &p);
     p.mask = DH_IK_POSITION;
     st = dh_ik_f32(&r, &T, q0, &p, g_work, sizeof g_work / sizeof g_work[0], q, &res);
     dht_printf("normal matrix overflow: status %d after %lu iterations, q %s, err_pos %.4g\n", (int)st,
@@ -674,10 +674,10 @@ static void ik_mm_defaults(void)
     unsigned k;
     for (k = 0; k < 3u; k++) {
         dh_robot r;
-        dh_ik_params prm;
+        dh_ik_params_f32 prm;
         ik_stats s;
         DHT_EQ_INT(dhs_build(robots[k], &r), DH_OK);
-        dh_ik_params_default(&r, &prm);
+        dh_ik_params_default_f32(&r, &prm);
         dht_reseed(0x5a17e0u + k);
         run_rate("mm defaults", robots[k], homes[k], (double)prm.tol_pos, (double)prm.tol_rot, &prm, count, &s);
         dht_printf("ik mm robot %u with its defaults (tol_pos %g mm, w_rot %g mm/rad): %d/%d, iterations mean %.2f\n",

@@ -236,7 +236,7 @@ static void ikc_completeness(void)
  * leaves open near the wrist singularity: stopped within tol_rot, y's
  * joints 4 and 6 may each be off by up to tol_rot / |sin t5| (only their
  * sum or difference is fixed at t5 = 0). */
-static double wrist_dist(const dh_robot *r, const dh_ik_params *p, const float *c, const double *y)
+static double wrist_dist(const dh_robot *r, const dh_ik_params_f32 *p, const float *c, const double *y)
 {
     const double s5 = fabs(sin((y[4] + (double)r->joint[4].theta_deg) * D2R));
     const double open = (double)p->tol_rot / D2R / fmax(s5, 1e-9);
@@ -262,13 +262,13 @@ static void ikc_numerical_completeness(void)
     for (k = 0; k < N_ROBOTS; k++) {
         dh_robot r;
         dh_ikc_model_f32 m;
-        dh_ik_params p;
+        dh_ik_params_f32 p;
         long t, st_i, found = 0, conv = 0, twins = 0;
         char probe[40], probe_s5[40];
         snprintf(probe_s5, sizeof probe_s5, "numerical.%s.s5", g_robots[k].name);
         DHT_EQ_INT(dhs_build(g_robots[k].desc, &r), DH_OK);
         DHT_EQ_INT(dh_ikc_analyse_f32(&r, &m), DH_OK);
-        dh_ik_params_default(&r, &p);
+        dh_ik_params_default_f32(&r, &p);
         p.restarts = 0u;
         p.max_iter = 100u;
         for (t = 0; t < targets; t++) {
@@ -290,7 +290,7 @@ static void ikc_numerical_completeness(void)
             for (st_i = 0; st_i < starts; st_i++) {
                 double q0d[NJ];
                 float q0[NJ], qs[NJ];
-                dh_ik_result res;
+                dh_ik_result_f32 res;
                 uint32_t i;
                 double best = 1e30;
                 int twin = 0;

@@ -674,11 +674,11 @@ static void ikc_vs_numerical(void)
         const dhs_robot *d = g_robots[ri];
         dh_robot r;
         dh_ikc_model_f32 m;
-        dh_ik_params p;
+        dh_ik_params_f32 p;
         long it, st_n, conv = 0, near = 0, derived = 0;
         double worst = 0, ratio_max = 0;
         build(d, &r, &m);
-        dh_ik_params_default(&r, &p);
+        dh_ik_params_default_f32(&r, &p);
         p.restarts = 0;
         p.max_iter = 60;
         if (d->n == 4u) p.mask = DH_IK_POSITION | DH_IK_RZ;
@@ -699,7 +699,7 @@ static void ikc_vs_numerical(void)
             for (st_n = 0; st_n < DHT_ITER(200); st_n++) {
                 double q0d[DHS_MAX_JOINTS], qn[DHS_MAX_JOINTS], best = 1e9, ep, er;
                 float q0[DHS_MAX_JOINTS], qo[DHS_MAX_JOINTS];
-                dh_ik_result res;
+                dh_ik_result_f32 res;
                 uint32_t i, s;
                 dhs_random_q(d, q0d);
                 for (i = 0; i < r.n; i++) q0[i] = (float)q0d[i];

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * test_itrig_f32.c - dh_atan2_deg_f32, dh_asin_deg_f32, dh_acos_deg_f32
+ * test_itrig_f32.c - dh_atan2_f32, dh_asin_f32, dh_acos_f32
  * against a correctly rounded reference: libm atan2l / asinl / acosl of the
  * float inputs (exact in long double) times 180/pi in long double, rounded
  * once to float (on targets where long double is double the reference has
@@ -75,7 +75,7 @@ static void check_atan2(stats *st, float y, float x)
 {
     float d = -1234.0f;
     long double ref;
-    DHT_EQ_INT(dh_atan2_deg_f32(y, x, &d), DH_OK);
+    DHT_EQ_INT(dh_atan2_f32(y, x, &d), DH_OK);
     DHT_TRUE_MSG(d > -180.0f && d <= 180.0f, "atan2(%a, %a) = %a outside (-180, 180]", (double)y,
                  (double)x, (double)d);
     ref = atan2l((long double)y, (long double)x) * R_LD;
@@ -85,9 +85,9 @@ static void check_atan2(stats *st, float y, float x)
 static void check_asin_acos(stats *sa, stats *sc, float s)
 {
     float d = -1234.0f;
-    DHT_EQ_INT(dh_asin_deg_f32(s, &d), DH_OK);
+    DHT_EQ_INT(dh_asin_f32(s, &d), DH_OK);
     check_one(sa, "asin", s, 0.0f, d, asinl((long double)s) * R_LD, 0);
-    DHT_EQ_INT(dh_acos_deg_f32(s, &d), DH_OK);
+    DHT_EQ_INT(dh_acos_f32(s, &d), DH_OK);
     check_one(sc, "acos", s, 0.0f, d, acosl((long double)s) * R_LD, 0);
 }
 
@@ -124,44 +124,44 @@ static void atan2_exact_values(void)
     float d;
     for (i = 0; i < sizeof mags / sizeof mags[0]; i++) {
         float v = mags[i];
-        DHT_EQ_INT(dh_atan2_deg_f32(pz, v, &d), DH_OK);
+        DHT_EQ_INT(dh_atan2_f32(pz, v, &d), DH_OK);
         DHT_EQ_F32_BITS(d, pz);
-        DHT_EQ_INT(dh_atan2_deg_f32(nz, v, &d), DH_OK);
+        DHT_EQ_INT(dh_atan2_f32(nz, v, &d), DH_OK);
         DHT_EQ_F32_BITS(d, nz);
-        DHT_EQ_INT(dh_atan2_deg_f32(pz, -v, &d), DH_OK);
+        DHT_EQ_INT(dh_atan2_f32(pz, -v, &d), DH_OK);
         DHT_EQ_F32_BITS(d, 180.0f);
-        DHT_EQ_INT(dh_atan2_deg_f32(nz, -v, &d), DH_OK);
+        DHT_EQ_INT(dh_atan2_f32(nz, -v, &d), DH_OK);
         DHT_EQ_F32_BITS(d, 180.0f);             /* not -180: the range is (-180, 180] */
-        DHT_EQ_INT(dh_atan2_deg_f32(v, pz, &d), DH_OK);
+        DHT_EQ_INT(dh_atan2_f32(v, pz, &d), DH_OK);
         DHT_EQ_F32_BITS(d, 90.0f);
-        DHT_EQ_INT(dh_atan2_deg_f32(v, nz, &d), DH_OK);
+        DHT_EQ_INT(dh_atan2_f32(v, nz, &d), DH_OK);
         DHT_EQ_F32_BITS(d, 90.0f);
-        DHT_EQ_INT(dh_atan2_deg_f32(-v, pz, &d), DH_OK);
+        DHT_EQ_INT(dh_atan2_f32(-v, pz, &d), DH_OK);
         DHT_EQ_F32_BITS(d, -90.0f);
-        DHT_EQ_INT(dh_atan2_deg_f32(-v, nz, &d), DH_OK);
+        DHT_EQ_INT(dh_atan2_f32(-v, nz, &d), DH_OK);
         DHT_EQ_F32_BITS(d, -90.0f);
-        DHT_EQ_INT(dh_atan2_deg_f32(v, v, &d), DH_OK);
+        DHT_EQ_INT(dh_atan2_f32(v, v, &d), DH_OK);
         DHT_EQ_F32_BITS(d, 45.0f);
-        DHT_EQ_INT(dh_atan2_deg_f32(-v, v, &d), DH_OK);
+        DHT_EQ_INT(dh_atan2_f32(-v, v, &d), DH_OK);
         DHT_EQ_F32_BITS(d, -45.0f);
-        DHT_EQ_INT(dh_atan2_deg_f32(v, -v, &d), DH_OK);
+        DHT_EQ_INT(dh_atan2_f32(v, -v, &d), DH_OK);
         DHT_EQ_F32_BITS(d, 135.0f);
-        DHT_EQ_INT(dh_atan2_deg_f32(-v, -v, &d), DH_OK);
+        DHT_EQ_INT(dh_atan2_f32(-v, -v, &d), DH_OK);
         DHT_EQ_F32_BITS(d, -135.0f);
     }
     /* y < 0 next to the negative x axis: -180 rounded, the float above */
-    DHT_EQ_INT(dh_atan2_deg_f32(-1e-30f, -1.0f, &d), DH_OK);
+    DHT_EQ_INT(dh_atan2_f32(-1e-30f, -1.0f, &d), DH_OK);
     DHT_EQ_F32_BITS(d, dht_f32_from_bits(0xC333FFFFu));
-    DHT_EQ_INT(dh_atan2_deg_f32(-1e-45f, -FLT_MAX, &d), DH_OK);
+    DHT_EQ_INT(dh_atan2_f32(-1e-45f, -FLT_MAX, &d), DH_OK);
     DHT_EQ_F32_BITS(d, dht_f32_from_bits(0xC333FFFFu));
-    DHT_EQ_INT(dh_atan2_deg_f32(1e-30f, -1.0f, &d), DH_OK);
+    DHT_EQ_INT(dh_atan2_f32(1e-30f, -1.0f, &d), DH_OK);
     DHT_EQ_F32_BITS(d, 180.0f);
     /* extreme ratios: a subnormal angle, an angle that rounds to 0 */
-    DHT_EQ_INT(dh_atan2_deg_f32(1e-45f, 1.0f, &d), DH_OK);
+    DHT_EQ_INT(dh_atan2_f32(1e-45f, 1.0f, &d), DH_OK);
     DHT_EQ_F32_BITS(d, (float)(atan2l((long double)1e-45f, 1.0L) * R_LD));
-    DHT_EQ_INT(dh_atan2_deg_f32(-1e-45f, FLT_MAX, &d), DH_OK);
+    DHT_EQ_INT(dh_atan2_f32(-1e-45f, FLT_MAX, &d), DH_OK);
     DHT_EQ_F32_BITS(d, -0.0f);
-    DHT_EQ_INT(dh_atan2_deg_f32(FLT_MAX, 1e-45f, &d), DH_OK);
+    DHT_EQ_INT(dh_atan2_f32(FLT_MAX, 1e-45f, &d), DH_OK);
     DHT_EQ_F32_BITS(d, 90.0f);
 }
 
@@ -171,15 +171,15 @@ static void atan2_status(void)
     const float bad[] = { inf, -inf, nan_, -nan_, dht_f32_from_bits(0x7F800001u) };
     unsigned i;
     float d = 12.5f;
-    DHT_EQ_INT(dh_atan2_deg_f32(0.0f, 0.0f, &d), DH_ERR_DOMAIN);
-    DHT_EQ_INT(dh_atan2_deg_f32(-0.0f, -0.0f, &d), DH_ERR_DOMAIN);
-    DHT_EQ_INT(dh_atan2_deg_f32(0.0f, -0.0f, &d), DH_ERR_DOMAIN);
+    DHT_EQ_INT(dh_atan2_f32(0.0f, 0.0f, &d), DH_ERR_DOMAIN);
+    DHT_EQ_INT(dh_atan2_f32(-0.0f, -0.0f, &d), DH_ERR_DOMAIN);
+    DHT_EQ_INT(dh_atan2_f32(0.0f, -0.0f, &d), DH_ERR_DOMAIN);
     DHT_EQ_F32_BITS(d, 12.5f);
     for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
-        DHT_EQ_INT(dh_atan2_deg_f32(bad[i], 1.0f, &d), DH_ERR_NAN);
-        DHT_EQ_INT(dh_atan2_deg_f32(1.0f, bad[i], &d), DH_ERR_NAN);
-        DHT_EQ_INT(dh_atan2_deg_f32(bad[i], bad[i], &d), DH_ERR_NAN);
-        DHT_EQ_INT(dh_atan2_deg_f32(0.0f, bad[i], &d), DH_ERR_NAN);
+        DHT_EQ_INT(dh_atan2_f32(bad[i], 1.0f, &d), DH_ERR_NAN);
+        DHT_EQ_INT(dh_atan2_f32(1.0f, bad[i], &d), DH_ERR_NAN);
+        DHT_EQ_INT(dh_atan2_f32(bad[i], bad[i], &d), DH_ERR_NAN);
+        DHT_EQ_INT(dh_atan2_f32(0.0f, bad[i], &d), DH_ERR_NAN);
     }
     DHT_EQ_F32_BITS(d, 12.5f);
 }
@@ -251,8 +251,8 @@ static void atan2_symmetry(void)
     for (i = 0; i < n; i++) {
         float y = rand_finite(), x = rand_finite(), a, b;
         if (((dht_f32_bits(x) | dht_f32_bits(y)) & 0x7FFFFFFFu) == 0u) continue;
-        DHT_EQ_INT(dh_atan2_deg_f32(y, x, &a), DH_OK);
-        DHT_EQ_INT(dh_atan2_deg_f32(-y, x, &b), DH_OK);
+        DHT_EQ_INT(dh_atan2_f32(y, x, &a), DH_OK);
+        DHT_EQ_INT(dh_atan2_f32(-y, x, &b), DH_OK);
         if (fabsf(a) < 180.0f && dht_f32_bits(a) != 0xC333FFFFu && dht_f32_bits(b) != 0xC333FFFFu) {
             DHT_EQ_F32_BITS(b, -a);
         }
@@ -262,27 +262,27 @@ static void atan2_symmetry(void)
 static void asin_acos_exact_values(void)
 {
     float d;
-    DHT_EQ_INT(dh_asin_deg_f32(0.0f, &d), DH_OK);
+    DHT_EQ_INT(dh_asin_f32(0.0f, &d), DH_OK);
     DHT_EQ_F32_BITS(d, 0.0f);
-    DHT_EQ_INT(dh_asin_deg_f32(-0.0f, &d), DH_OK);
+    DHT_EQ_INT(dh_asin_f32(-0.0f, &d), DH_OK);
     DHT_EQ_F32_BITS(d, -0.0f);
-    DHT_EQ_INT(dh_asin_deg_f32(1.0f, &d), DH_OK);
+    DHT_EQ_INT(dh_asin_f32(1.0f, &d), DH_OK);
     DHT_EQ_F32_BITS(d, 90.0f);
-    DHT_EQ_INT(dh_asin_deg_f32(-1.0f, &d), DH_OK);
+    DHT_EQ_INT(dh_asin_f32(-1.0f, &d), DH_OK);
     DHT_EQ_F32_BITS(d, -90.0f);
-    DHT_EQ_INT(dh_acos_deg_f32(1.0f, &d), DH_OK);
+    DHT_EQ_INT(dh_acos_f32(1.0f, &d), DH_OK);
     DHT_EQ_F32_BITS(d, 0.0f);
-    DHT_EQ_INT(dh_acos_deg_f32(-1.0f, &d), DH_OK);
+    DHT_EQ_INT(dh_acos_f32(-1.0f, &d), DH_OK);
     DHT_EQ_F32_BITS(d, 180.0f);
-    DHT_EQ_INT(dh_acos_deg_f32(0.0f, &d), DH_OK);
+    DHT_EQ_INT(dh_acos_f32(0.0f, &d), DH_OK);
     DHT_EQ_F32_BITS(d, 90.0f);
-    DHT_EQ_INT(dh_acos_deg_f32(-0.0f, &d), DH_OK);
+    DHT_EQ_INT(dh_acos_f32(-0.0f, &d), DH_OK);
     DHT_EQ_F32_BITS(d, 90.0f);
-    DHT_EQ_INT(dh_asin_deg_f32(0.5f, &d), DH_OK);     /* asin 1/2 = 30 exactly */
+    DHT_EQ_INT(dh_asin_f32(0.5f, &d), DH_OK);     /* asin 1/2 = 30 exactly */
     DHT_EQ_F32_BITS(d, 30.0f);
-    DHT_EQ_INT(dh_acos_deg_f32(0.5f, &d), DH_OK);
+    DHT_EQ_INT(dh_acos_f32(0.5f, &d), DH_OK);
     DHT_EQ_F32_BITS(d, 60.0f);
-    DHT_EQ_INT(dh_acos_deg_f32(-0.5f, &d), DH_OK);
+    DHT_EQ_INT(dh_acos_f32(-0.5f, &d), DH_OK);
     DHT_EQ_F32_BITS(d, 120.0f);
 }
 
@@ -292,24 +292,24 @@ static void asin_acos_clamp_and_status(void)
     const float inf = dht_f32_from_bits(0x7F800000u), nan_ = dht_f32_from_bits(0x7FC00000u);
     float d = 12.5f;
     /* 1.0000001 (a rotation matrix entry one ulp above 1): clamped */
-    DHT_EQ_INT(dh_asin_deg_f32(above1, &d), DH_OK);
+    DHT_EQ_INT(dh_asin_f32(above1, &d), DH_OK);
     DHT_EQ_F32_BITS(d, 90.0f);
-    DHT_EQ_INT(dh_asin_deg_f32(-tol, &d), DH_OK);
+    DHT_EQ_INT(dh_asin_f32(-tol, &d), DH_OK);
     DHT_EQ_F32_BITS(d, -90.0f);
-    DHT_EQ_INT(dh_acos_deg_f32(tol, &d), DH_OK);
+    DHT_EQ_INT(dh_acos_f32(tol, &d), DH_OK);
     DHT_EQ_F32_BITS(d, 0.0f);
-    DHT_EQ_INT(dh_acos_deg_f32(-above1, &d), DH_OK);
+    DHT_EQ_INT(dh_acos_f32(-above1, &d), DH_OK);
     DHT_EQ_F32_BITS(d, 180.0f);
     d = 12.5f;
-    DHT_EQ_INT(dh_asin_deg_f32(out, &d), DH_ERR_DOMAIN);
-    DHT_EQ_INT(dh_asin_deg_f32(-out, &d), DH_ERR_DOMAIN);
-    DHT_EQ_INT(dh_acos_deg_f32(out, &d), DH_ERR_DOMAIN);
-    DHT_EQ_INT(dh_acos_deg_f32(-2.0f, &d), DH_ERR_DOMAIN);
-    DHT_EQ_INT(dh_asin_deg_f32(FLT_MAX, &d), DH_ERR_DOMAIN);
-    DHT_EQ_INT(dh_asin_deg_f32(inf, &d), DH_ERR_NAN);
-    DHT_EQ_INT(dh_acos_deg_f32(-inf, &d), DH_ERR_NAN);
-    DHT_EQ_INT(dh_asin_deg_f32(nan_, &d), DH_ERR_NAN);
-    DHT_EQ_INT(dh_acos_deg_f32(-nan_, &d), DH_ERR_NAN);
+    DHT_EQ_INT(dh_asin_f32(out, &d), DH_ERR_DOMAIN);
+    DHT_EQ_INT(dh_asin_f32(-out, &d), DH_ERR_DOMAIN);
+    DHT_EQ_INT(dh_acos_f32(out, &d), DH_ERR_DOMAIN);
+    DHT_EQ_INT(dh_acos_f32(-2.0f, &d), DH_ERR_DOMAIN);
+    DHT_EQ_INT(dh_asin_f32(FLT_MAX, &d), DH_ERR_DOMAIN);
+    DHT_EQ_INT(dh_asin_f32(inf, &d), DH_ERR_NAN);
+    DHT_EQ_INT(dh_acos_f32(-inf, &d), DH_ERR_NAN);
+    DHT_EQ_INT(dh_asin_f32(nan_, &d), DH_ERR_NAN);
+    DHT_EQ_INT(dh_acos_f32(-nan_, &d), DH_ERR_NAN);
     DHT_EQ_F32_BITS(d, 12.5f);
 }
 
@@ -340,8 +340,8 @@ static void asin_odd(void)
     long i, n = DHT_ITER(200000L);
     for (i = 0; i < n; i++) {
         float s = dht_f32_from_bits(dht_rand_u32() % 0x3F800001u), a, b;
-        DHT_EQ_INT(dh_asin_deg_f32(s, &a), DH_OK);
-        DHT_EQ_INT(dh_asin_deg_f32(-s, &b), DH_OK);
+        DHT_EQ_INT(dh_asin_f32(s, &a), DH_OK);
+        DHT_EQ_INT(dh_asin_f32(-s, &b), DH_OK);
         DHT_EQ_F32_BITS(b, -a);
     }
 }

@@ -689,13 +689,13 @@ static union {
 
 static void bt_ik(void)
 {
-    dh_ik_params p;
-    dh_ik_result res;
+    dh_ik_params_f32 p;
+    dh_ik_result_f32 res;
     float qt[6], q0[6], q[6];
     dh_mat4_f32 target;
     uint64_t t0, t1, tnull;
     uint32_t k, j;
-    dh_ik_params_default(&bt_puma_m, &p);
+    dh_ik_params_default_f32(&bt_puma_m, &p);
     p.tol_pos = 1e-6f;
     t0 = bt_now();
     t1 = bt_now();

@@ -400,7 +400,7 @@ def main():
     w("## Inverse kinematics (`dh_ik_f32`, Puma 560 in metres)")
     w("")
     w("Per solve: target = `dh_fk_f32` of a random configuration within 80 % of the joint "
-      "limits, start 10-20 deg away on every joint, `dh_ik_params_default(robot)` with tol_pos set to 1e-6 m "
+      "limits, start 10-20 deg away on every joint, `dh_ik_params_default_f32(robot)` with tol_pos set to 1e-6 m "
       "(full pose, 1e-6 m / 1e-5 rad, w_rot L/4 = 0.43 m/rad). Instructions of the whole `dh_ik_f32` call.")
     w("")
     w("| core | solves | converged | iterations mean (min-max) | instructions per solve mean (min-max) | per iteration |")

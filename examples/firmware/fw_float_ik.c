@@ -75,8 +75,8 @@ int main(void)
     static const float q_start[6] = { 0.0f, 0.0f, 0.0f, 0.0f, 10.0f, 0.0f };
     dh_robot arm;
     dh_mat4_f32 T, target;
-    dh_ik_params par;
-    dh_ik_result res;
+    dh_ik_params_f32 par;
+    dh_ik_result_f32 res;
     float work[DH_IK_WORK_FLOATS(6)];
     float q[6];
     dh_status st;
@@ -103,7 +103,7 @@ int main(void)
     print_vec("ik_goal_q", q_goal, 6);
     print_pose("ik_target_p", NULL, &target);
     if (print_zyx("ik_target_zyx", &target) != DH_OK) return 1;
-    dh_ik_params_default(&arm, &par);
+    dh_ik_params_default_f32(&arm, &par);
     par.tol_pos = 1e-6f; /* 1 um (the default is 1e-6 of the arm's size) */
     st = dh_ik_f32(&arm, &target, q_start, &par, work, sizeof work / sizeof work[0], q, &res);
     printf("ik_status: %s\n", dh_status_str(st));

@@ -23,9 +23,9 @@
  *  tools/check.sh package checks library.json's against it.
  * @{ */
 #define DH_VERSION_MAJOR 0        /**< incompatible API changes */
-#define DH_VERSION_MINOR 2        /**< while MAJOR is 0: also incompatible */
+#define DH_VERSION_MINOR 3        /**< while MAJOR is 0: also incompatible */
 #define DH_VERSION_PATCH 0        /**< compatible fixes */
-#define DH_VERSION_STRING "0.2.0" /**< "MAJOR.MINOR.PATCH" */
+#define DH_VERSION_STRING "0.3.0" /**< "MAJOR.MINOR.PATCH" */
 /** @} */
 
 #ifdef DH_CONFIG_HEADER

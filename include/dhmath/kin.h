@@ -5,7 +5,7 @@
  *   dh_jacobian_q.c    dh_jacobian_q, dh_jacobian_tool_q
  *   dh_pose_error.c    dh_rot_error_f32, dh_pose_error_f32
  *   dh_pose_error_q.c  dh_rot_error_q
- *   dh_ik.c            dh_ik_params_default, dh_ik_f32
+ *   dh_ik.c            dh_ik_params_default_f32, dh_ik_f32
  *   dh_ik_q.c          dh_ik_params_default_q, dh_ik_q
  */
 /**
@@ -181,7 +181,7 @@ dh_status dh_rot_error_q(const dh_frame_q *F_target, const dh_frame_q *F, dh_dir
  */
 dh_status dh_pose_error_f32(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float e[6]);
 
-/** Task-space mask bit for dh_ik_params.mask: drive the x position error to 0. */
+/** Task-space mask bit for dh_ik_params_f32.mask: drive the x position error to 0. */
 #define DH_IK_PX 0x01u
 /** Mask bit: y position error. */
 #define DH_IK_PY 0x02u
@@ -198,7 +198,7 @@ dh_status dh_pose_error_f32(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, f
 /** Full pose. */
 #define DH_IK_FULL 0x3Fu
 
-/** IK parameters; fill with dh_ik_params_default() for the robot and adjust. */
+/** IK parameters; fill with dh_ik_params_default_f32() for the robot and adjust. */
 typedef struct {
     uint32_t max_iter;   /**< bound on the number of trial steps (FK + Jacobian evaluations after the first), >= 1 */
     uint32_t mask;       /**< DH_IK_* bits of the error components to drive to 0 (non-zero, within DH_IK_FULL) */
@@ -206,14 +206,14 @@ typedef struct {
     float tol_rot;       /**< orientation tolerance (rad), >= 0, on the norm of the masked rotation-vector components */
     float w_rot;         /**< weight of orientation vs position error (length unit per rad), > 0; at most L counts (dh_ik_f32) */
     uint32_t restarts;   /**< restarts from deterministic pseudo-random configurations after a stall (local minimum), within max_iter */
-} dh_ik_params;
+} dh_ik_params_f32;
 
 /** IK outcome figures (for the returned configuration). */
 typedef struct {
     uint32_t iterations; /**< trial steps taken (each one FK + Jacobian) */
     float err_pos;       /**< position error norm of the masked components (length unit) */
     float err_rot;       /**< orientation error norm of the masked components (rad) */
-} dh_ik_result;
+} dh_ik_result_f32;
 
 /**
  * Sugihara's constant damping bias, relative to the robot's characteristic
@@ -244,12 +244,12 @@ typedef struct {
  * restarts) for a tighter worst case, at some cost in success rate
  * (docs/accuracy_kin.md).
  */
-void dh_ik_params_default(const dh_robot *r, dh_ik_params *p);
+void dh_ik_params_default_f32(const dh_robot *r, dh_ik_params_f32 *p);
 
 /**
  * @brief Numerical IK, Levenberg-Marquardt with Sugihara 2011's damping:
  * minimises E = 1/2 (|e_pos|^2 + w^2 |e_rot|^2), w = min(w_rot, L) (L as in
- * dh_ik_params_default: a heavier weight drowns the position in the float
+ * dh_ik_params_default_f32: a heavier weight drowns the position in the float
  * rounding), over the masked components of dh_pose_error_f32(target,
  * FK(q)), q within the joint limits (qmin <= qmax; q0 clamped first; qmin >
  * qmax: free, no wrapping). An attempt stalls after 4 steps in a row with
@@ -276,8 +276,8 @@ void dh_ik_params_default(const dh_robot *r, dh_ik_params *p);
  *   DH_ERR_NOT_RIGID (target bottom row, driven target rotation, end
  *   rotation not one); DH_ERR_OVERFLOW (FK or E of the start).
  */
-dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q0, const dh_ik_params *p,
-                    float *work, size_t work_len, float *q, dh_ik_result *res);
+dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q0, const dh_ik_params_f32 *p,
+                    float *work, size_t work_len, float *q, dh_ik_result_f32 *res);
 
 /** DH_ROT_ERROR_TOL in Q2.30 for the fixed-point functions (1e-3 * 2^30). */
 #define DH_ROT_ERROR_TOL_Q 1073742
@@ -312,7 +312,7 @@ typedef struct {
  * rad), w_rot L / 4, restarts 50, where L = sum of |a_q|, |d_q|,
  * prismatic travel (limited joints) and |tool_q p| in dh_qpos (one length
  * unit if that is 0; saturated at INT32_MAX). Reads only r's fixed fields.
- * The step budget is a quarter of dh_ik_params_default's: it bounds the
+ * The step budget is a quarter of dh_ik_params_default_f32's: it bounds the
  * worst case (a step costs about 45,000 instructions on a Cortex-M0 for
  * the Puma 560, tools/target_bench.sh) at a small cost in success rate
  * for near-singular targets (docs/accuracy_kin.md).

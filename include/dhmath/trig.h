@@ -3,7 +3,7 @@
  * Index: the functions of trig.h by source file (src/trig/).
  *   dh_trig_f32.c   dh_sincos_f32, dh_sin_f32, dh_cos_f32
  *   dh_trig_q.c     dh_sincos_q, dh_sin_q, dh_cos_q
- *   dh_itrig_f32.c  dh_atan2_deg_f32, dh_asin_deg_f32, dh_acos_deg_f32
+ *   dh_itrig_f32.c  dh_atan2_f32, dh_asin_f32, dh_acos_f32
  *   dh_itrig_q.c    dh_atan2_q, dh_asin_q, dh_acos_q
  */
 /**
@@ -125,7 +125,7 @@ dh_q30 dh_cos_q(dh_q16 deg_q16);
  * @return DH_OK; DH_ERR_NAN if x or y is NaN or +-Inf; DH_ERR_DOMAIN for
  *         x == y == 0 (either sign). *deg is untouched on an error.
  */
-dh_status dh_atan2_deg_f32(float y, float x, float *deg);
+dh_status dh_atan2_f32(float y, float x, float *deg);
 
 /**
  * @brief asin(s) in degrees (float), in [-90, 90].
@@ -136,15 +136,15 @@ dh_status dh_atan2_deg_f32(float y, float x, float *deg);
  *
  * Error bound: within 1 ulp of the correctly rounded value; exact 0, +-90
  * at 0, +-1; asin(-s) == -asin(s) bit for bit. sqrt(1 - s^2) in hi + lo
- * float arithmetic, then the atan2 of dh_atan2_deg_f32().
+ * float arithmetic, then the atan2 of dh_atan2_f32().
  *
  * @return DH_OK; DH_ERR_NAN for NaN or +-Inf; DH_ERR_DOMAIN for
  *         |s| > 1 + 2^-21. *deg is untouched on an error.
  */
-dh_status dh_asin_deg_f32(float s, float *deg);
+dh_status dh_asin_f32(float s, float *deg);
 
 /**
- * @brief acos(c) in degrees (float), in [0, 180]; as dh_asin_deg_f32()
+ * @brief acos(c) in degrees (float), in [0, 180]; as dh_asin_f32()
  *        (same clamp just outside [-1, 1], same statuses, untouched *deg
  *        on an error, within 1 ulp of the correctly rounded value). Exact:
  *        0, 90, 180 at 1, 0, -1.
@@ -152,7 +152,7 @@ dh_status dh_asin_deg_f32(float s, float *deg);
  * @param deg  out: the angle. Must not be NULL (DH_ASSERT).
  * @return DH_OK, DH_ERR_NAN or DH_ERR_DOMAIN.
  */
-dh_status dh_acos_deg_f32(float c, float *deg);
+dh_status dh_acos_f32(float c, float *deg);
 
 /**
  * @brief atan2(y, x) of two int32 of any common scale, in Q16.16 degrees.

@@ -65,7 +65,7 @@ enum { A_STEP = 0, A_OVER, A_RETRY, A_BREAK, A_FAIL };
 typedef struct {
     const dh_robot *r;
     const dh_mat4_f32 *target;
-    const dh_ik_params *p;
+    const dh_ik_params_f32 *p;
     const float *q0;
     float *w;               /* workspace */
     uint32_t n;
@@ -93,7 +93,7 @@ static DH_NOINLINE float ik_length(const dh_robot *r)
     return L;
 }
 
-void dh_ik_params_default(const dh_robot *r, dh_ik_params *p)
+void dh_ik_params_default_f32(const dh_robot *r, dh_ik_params_f32 *p)
 {
     float L;
     DH_ASSERT(r != NULL);
@@ -147,7 +147,7 @@ static DH_NOINLINE dh_status ik_args(const ik_ctx *c, size_t work_len)
 {
     const dh_robot *r = c->r;
     const dh_mat4_f32 *target = c->target;
-    const dh_ik_params *p = c->p;
+    const dh_ik_params_f32 *p = c->p;
     const float *q0 = c->q0, *work = c->w;
     uint32_t i, n = r->n;
     if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
@@ -476,7 +476,7 @@ static DH_NOINLINE void ik_sample(ik_ctx *c)
     c->mode = (uint8_t)M_RESTART;
 }
 
-static int ik_met(const float *S, const dh_ik_params *p)
+static int ik_met(const float *S, const dh_ik_params_f32 *p)
 {
     return S[S_EP] <= p->tol_pos && S[S_ER] <= p->tol_rot;
 }
@@ -489,7 +489,7 @@ static int ik_met(const float *S, const dh_ik_params *p)
  * it, when it lowers E and still meets both tolerances. */
 static int ik_better(const ik_ctx *c, const float *S)
 {
-    const dh_ik_params *p = c->p;
+    const dh_ik_params_f32 *p = c->p;
     float a, b;
     if (c->conv) return (S[S_TE] < S[S_E] && S[S_TEP] <= p->tol_pos && S[S_TER] <= p->tol_rot) ? 1 : 0;
     if (S[S_TE] < S[S_E]) {
@@ -519,7 +519,7 @@ static void ik_take(ik_ctx *c, float *S)
 /* Accept or reject the evaluated point, update damping and counters. */
 static DH_NOINLINE unsigned ik_update(ik_ctx *c, int ev)
 {
-    const dh_ik_params *p = c->p;
+    const dh_ik_params_f32 *p = c->p;
     float *S = c->w + OFF_S(c->n);
     const int acc = (c->mode == M_TRIAL && ev == EV_OK) ? ik_better(c, S) : 0;
     if (c->mode == M_FIRST) {
@@ -596,7 +596,7 @@ static DH_NOINLINE int ik_record(ik_ctx *c)
 
 /* Start not evaluable: outputs untouched, except for a hopeless target
  * whose E overflows (UNREACHABLE, q = the clamped q0). */
-static DH_NOINLINE dh_status ik_start_failed(const ik_ctx *c, int ev, float *q, dh_ik_result *res)
+static DH_NOINLINE dh_status ik_start_failed(const ik_ctx *c, int ev, float *q, dh_ik_result_f32 *res)
 {
     const float *S = c->w + OFF_S(c->n);
     uint32_t i;
@@ -610,7 +610,7 @@ static DH_NOINLINE dh_status ik_start_failed(const ik_ctx *c, int ev, float *q, 
 }
 
 /* Outputs and status from the best attempt. */
-static DH_NOINLINE dh_status ik_finish(const ik_ctx *c, float *q, dh_ik_result *res)
+static DH_NOINLINE dh_status ik_finish(const ik_ctx *c, float *q, dh_ik_result_f32 *res)
 {
     const float *S = c->w + OFF_S(c->n);
     uint32_t i;
@@ -623,8 +623,8 @@ static DH_NOINLINE dh_status ik_finish(const ik_ctx *c, float *q, dh_ik_result *
     return DH_ERR_NO_CONVERGENCE;
 }
 
-dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q0, const dh_ik_params *p,
-                    float *work, size_t work_len, float *q, dh_ik_result *res)
+dh_status dh_ik_f32(const dh_robot *r, const dh_mat4_f32 *target, const float *q0, const dh_ik_params_f32 *p,
+                    float *work, size_t work_len, float *q, dh_ik_result_f32 *res)
 {
     ik_ctx c;
     dh_status st;

@@ -19,7 +19,7 @@
 #define DH_ITRIG_M180 0xC3340000u   /* -180.0f */
 #define DH_ITRIG_M180_UP 0xC333FFFFu /* the float just above -180 */
 
-dh_status dh_atan2_deg_f32(float y, float x, float *deg)
+dh_status dh_atan2_f32(float y, float x, float *deg)
 {
     uint32_t ax, ay, r;
 
@@ -49,7 +49,7 @@ static dh_status itrig_unit_arg(float *v)
     return DH_OK;
 }
 
-dh_status dh_asin_deg_f32(float s, float *deg)
+dh_status dh_asin_f32(float s, float *deg)
 {
     dh_status st;
 
@@ -60,7 +60,7 @@ dh_status dh_asin_deg_f32(float s, float *deg)
     return DH_OK;
 }
 
-dh_status dh_acos_deg_f32(float c, float *deg)
+dh_status dh_acos_f32(float c, float *deg)
 {
     dh_status st;
 

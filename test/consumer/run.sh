@@ -6,7 +6,7 @@
 #      with DH_WERROR ON; cmake --install puts headers, libdhmath.a, the CMake
 #      package (dhmathConfig.cmake + version file + dhmath_add_robot()),
 #      dhmath.pc, bin/dhmath and the licence under a prefix;
-#   2. find_package(dhmath 0.2 CONFIG REQUIRED) -> dhmath::dhmath, built and run;
+#   2. find_package(dhmath 0.3 CONFIG REQUIRED) -> dhmath::dhmath, built and run;
 #   3. a plain Makefile with pkg-config, built and run (no -lm); the .pc
 #      file names the licence and pkg-config --validate accepts it;
 #   4. configuration guard: the same program compiled with DH_MAX_JOINTS 6
@@ -100,7 +100,7 @@ fi
 # ---- 2. find_package
 if quiet "$B/find_package.log" bash -c "cmake -S '$T/installed' -B '$B/installed' -DCMAKE_PREFIX_PATH='$P' && \
       cmake --build '$B/installed' && '$B/installed/consumer'"; then
-  ok "find_package(dhmath 0.2 CONFIG REQUIRED): $(tail -1 "$B/find_package.log")"
+  ok "find_package(dhmath 0.3 CONFIG REQUIRED): $(tail -1 "$B/find_package.log")"
 else
   bad "installed find_package consumer"
 fi

@@ -32,7 +32,7 @@ typedef struct {
     dh_plane_f32 pl;
     dh_quat_f32 qt[2];
     dh_vec3_q vq;
-    dh_ik_params ikp;
+    dh_ik_params_f32 ikp;
     dh_ik_params_q ikpq;
     char str[8];
     const dh_robot *rob;     /* read-only robot (FK, Jacobian, IK, setters copy it) */
@@ -55,12 +55,12 @@ typedef struct {
     dh_mat4_f32 M;
     dh_frame_q F;
     dh_vec3_f32 pts[4];
-    dh_ik_params ikp;
+    dh_ik_params_f32 ikp;
     dh_ik_params_q ikpq;
     char str[32];            /* string results (the pointers differ between copies) */
     /* DIFF_OUT_SMALL */
     float q[DH_MAX_JOINTS];
-    dh_ik_result ikres;
+    dh_ik_result_f32 ikres;
     dh_ik_result_q ikresq;
     int32_t qi[DH_MAX_JOINTS];
     float J[6 * DH_MAX_JOINTS];
@@ -100,9 +100,9 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_sincos_q, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_sin_q, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_cos_q, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
-    X(dh_atan2_deg_f32, g_atan2_f, 1000000, DIFF_OUT_SMALL, C_BITS) \
-    X(dh_asin_deg_f32, g_unit_f, 1000000, DIFF_OUT_SMALL, C_BITS) \
-    X(dh_acos_deg_f32, g_unit_f, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_atan2_f32, g_atan2_f, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_asin_f32, g_unit_f, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_acos_f32, g_unit_f, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_atan2_q, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_asin_q, g_unit_q, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_acos_q, g_unit_q, 1000000, DIFF_OUT_SMALL, C_BITS) \
@@ -204,7 +204,7 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_quat_to_frame_q, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_frame_to_axis_angle_q, g_frames, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_pose_error_f32, g_check, 1000000, DIFF_OUT_SMALL, C_BITS) \
-    X(dh_ik_params_default, g_robot, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_ik_params_default_f32, g_robot, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_ik_f32, g_ik, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_ikc_analyse_f32, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_ikc_analyse_q, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \

@@ -718,7 +718,7 @@ static void g_ik(diff_in *in)
     if (dh_fk_f32(r, in->q, &T) != DH_OK || rn(8u) == 0u) mat4_gen(&T);
     in->M[0] = T;
     for (j = 0; j < DH_MAX_JOINTS; j++) in->q[j] = rn(2u) ? in->q[j] + (float)rd(-20.0, 20.0) : q_f32(r, j);
-    dh_ik_params_default(r, &in->ikp);
+    dh_ik_params_default_f32(r, &in->ikp);
     in->ikp.max_iter = 1u + rn(64u);
     in->ikp.restarts = rn(4u);
     if (rn(4u) == 0u) in->ikp.mask = rn(2u) ? DH_IK_POSITION : (rn(8u) ? rn(64u) : ru());
@@ -977,7 +977,7 @@ static void float_words_init(void)
     mark_floats(offsetof(diff_out, R), sizeof o.R + sizeof o.M);
     mark_floats(offsetof(diff_out, pts), sizeof o.pts);
     mark_floats(offsetof(diff_out, q), sizeof o.q);
-    mark_floats(offsetof(diff_out, ikres) + offsetof(dh_ik_result, err_pos), 2u * sizeof(float));
+    mark_floats(offsetof(diff_out, ikres) + offsetof(dh_ik_result_f32, err_pos), 2u * sizeof(float));
     mark_floats(offsetof(diff_out, J), sizeof o.J + sizeof o.Mf);
     for (k = 0; k < DH_IKC_MAX_SOL; k++) mark_floats(offsetof(diff_out, sol) + k * sizeof o.sol[0], sizeof o.sol[0].q);
     mark_floats(offsetof(diff_out, mf) + offsetof(dh_ikc_model_f32, a),
