@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Runs the seeded test suites (ctest label "seeded": every test/test_*.c
+# Runs the seeded test suites (ctest label "seeded": every test/<family>/test_*.c
 # that draws random inputs) for many values of DHT_SEED and reports the
 # failing suites per seed. Every bound in those suites must hold for ANY
 # seed, so any failure here is a bug (in the code or in the bound).

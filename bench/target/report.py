@@ -431,7 +431,7 @@ def main():
     w("Per solve: target = `dh_fk_q` of a random Q configuration within 80 % of the joint "
       "limits, start 10-20 deg away on every joint, `dh_ik_params_default_q(robot)` with tolerances "
       "0.9e-3 mm / 0.9e-5 rad (full pose, w_rot L/4; 0.9 of the 1e-3 mm / 1e-5 rad verified by "
-      "test/test_ik_q.c, room for the fixed FK's error). Instructions of the whole "
+      "test/kin/test_ik_q.c, room for the fixed FK's error). Instructions of the whole "
       "`dh_ik_q` call (integer only).")
     w("")
     w("| core | solves | converged | iterations mean (min-max) | instructions per solve mean (min-max) | per iteration |")

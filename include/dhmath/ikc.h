@@ -70,7 +70,7 @@
  * 0.5 mm from axis 2: 1.8 deg in the tests; docs/accuracy_kin.md). A joint limit that near may
  * drop such a solution (DH_ERR_LIMIT; DH_IKC_KEEP_OUT_OF_LIMITS keeps it).
  *
- * Accuracy (tests against double, test/test_ikc*.c; measured figures:
+ * Accuracy (tests against double, test/ikc/test_ikc*.c; measured figures:
  * docs/accuracy_kin.md): for every solution FK(q) matches the target within
  * 2e-6 m in position and 2e-6 rad in orientation for float robots in metres
  * of up to 2 m reach, and within 5e-3 mm and 5e-6 rad on the fixed path for

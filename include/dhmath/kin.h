@@ -102,7 +102,7 @@ dh_status dh_jacobian_tool_f32(const dh_robot *r, const float *q, float *J, dh_m
  * entries rounded once (<= 0.5 LSB). Against the exact robot, measured for the
  * Puma 560, UR5 and Panda in mm (DH_QPOS_FRAC 16): at least as accurate
  * as dh_jacobian_f32 on the same robot (measured 4.5e-5 mm against the
- * float path's 3.9e-4 mm, test/test_jacobian_q.c).
+ * float path's 3.9e-4 mm, test/kin/test_jacobian_q.c).
  *
  * @param r  robot (fixed path), conv standard or modified.
  * @param q  n joint values: dh_q16 degrees (R), dh_qpos (P), any int32
@@ -159,7 +159,7 @@ dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh
  * RADIANS (1.0 rad = 2^29; |w| <= pi), R_target = Rot(w) R; w = 0 for
  * dR = I; at exactly pi the sign of w is arbitrary. Accurate at every
  * angle: |w - w_ref| <= 6.3e-7 rad (the float path's bound; measured
- * against double in test/test_rot_q.c).
+ * against double in test/rot/test_rot_q.c).
  * @param F_target, F frames whose rotations are orthonormal within
  *        DH_ROT_ERROR_TOL_Q (dh_frame_ortho_error_q) with det > 0. May
  *        alias each other.

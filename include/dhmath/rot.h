@@ -492,7 +492,7 @@ typedef struct {
  *        third angle (in the order of the letters) is exactly 0 and the
  *        whole rotation about the locked axis is in the first.
  *
- * Error bounds (measured against double, test/test_rot_q.c): with the
+ * Error bounds (measured against double, test/rot/test_rot_q.c): with the
  * middle angle at least 1 deg from a pole, angles within 2e-5 deg of the
  * exact ones of the rotation; everywhere, the exact rotation of the
  * returned angles reproduces F within 6e-7 per entry; near a pole the

@@ -131,7 +131,7 @@ DH_INLINE float dh_wrap180_f32(float x)
  * float rounding of the target, T06 and the planar point takes up to about
  * tol / 2 of the band (UR10 stretched): a joint 5 point within tol / 4
  * (1e-7 L) beyond the workspace boundary is solved, one farther than
- * 3 tol (1.2e-6 L) beyond it is DH_ERR_UNREACHABLE (test/test_ikc_ur.c,
+ * 3 tol (1.2e-6 L) beyond it is DH_ERR_UNREACHABLE (test/ikc/test_ikc_ur.c,
  * ikc_ur_beyond: tol / 4 solved, 4 tol refused). */
 
 /* x reduced into (-180, 180] (|x| < 540). */

@@ -5,8 +5,8 @@
  * function on Cortex-M0+. No libm, heap, mutable data, recursion or double;
  * on Cortex-M0+ the only callees are libgcc's soft-float routines.
  * Requires IEEE binary32, round to nearest, no -ffast-math, no FMA
- * contraction (as dh_trig_f32.c). Tested by test/test_mathf.c and (the
- * degree functions, through the public API) test/test_itrig_f32.c.
+ * contraction (as dh_trig_f32.c). Tested by test/internal/test_mathf.c and (the
+ * degree functions, through the public API) test/trig/test_itrig_f32.c.
  */
 #ifndef DHMATH_SRC_DH_MATHF_H
 #define DHMATH_SRC_DH_MATHF_H

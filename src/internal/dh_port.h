@@ -17,7 +17,7 @@
  *
  * Everywhere else (Cortex-M0/M0+/M23, the host, DH_USE_INTRINSICS == 0) the
  * plain-C version is compiled. Both versions give bit-identical results for
- * every input (test/test_port.c checks the edge values on every target the
+ * every input (test/internal/test_port.c checks the edge values on every target the
  * suite runs on).
  *
  * Implementation-defined behaviour relied upon (checked at compile time
@@ -258,7 +258,7 @@ DH_PORT_INLINE dh_port_s16 dh_port_split_k(int32_t v)
  * exact; outside, it is an unspecified int32 (still no undefined
  * behaviour). Example: rotation entries of a row of norm <= 1.5001
  * (|x| + |y| <= 2.1215 * 2^30) times a sine/cosine pair (|c| + |s| <=
- * 1.4143 * 2^30). test/test_port.c checks it against the 64-bit sum.
+ * 1.4143 * 2^30). test/internal/test_port.c checks it against the 64-bit sum.
  * Cortex-M0, gcc -O2: about 30 instructions (8 MULS).
  */
 DH_PORT_INLINE int32_t dh_port_dot2r30_s16(dh_port_s16 c, dh_port_s16 x, dh_port_s16 s, dh_port_s16 y)

@@ -23,7 +23,7 @@
  * Error against the exact Jacobian of the exact robot: the FK frames'
  * error (dh_fk_q: a few LSB per rotation entry, about half an LSB of
  * position per joint plus the rotation error times the reach) carried
- * through one cross product; measured in test/test_jacobian_q.c against
+ * through one cross product; measured in test/kin/test_jacobian_q.c against
  * a double reference, next to the float Jacobian of the same robot.
  */
 #include "dhmath/kin.h"

@@ -7,7 +7,7 @@
  * fixed-point FK against the exact 64-bit sum on its whole domain.
  */
 #include "dht.h"
-#include "../src/internal/dh_port.h" /* private to the library: not on the test include path */
+#include "../../src/internal/dh_port.h" /* private to the library: not on the test include path */
 
 static const int32_t edges[] = {
     0, 1, -1, 2, -2, 3, INT32_MAX, INT32_MIN, INT32_MAX - 1, INT32_MIN + 1,

@@ -13,8 +13,8 @@
 #include "support_robots.h"
 #include "dhmath/kin.h"
 #include "dhmath/mat4.h"
-#include "../src/kin/kin_impl.h"
-#include "../src/internal/dh_mathf.h"
+#include "../../src/kin/kin_impl.h"
+#include "../../src/internal/dh_mathf.h"
 
 #include <float.h>
 #include <math.h>

@@ -15,7 +15,7 @@
 #include <string.h>
 
 #include "dht.h"
-#include "../src/internal/dh_mathf.h"
+#include "../../src/internal/dh_mathf.h"
 
 #define PI_D 3.14159265358979323846
 #define ULP_TOL 2.0  /* contract of dh_mathf.h (measured maxima printed) */
