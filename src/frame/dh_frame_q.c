@@ -270,15 +270,6 @@ dh_status dh_frame_rot_axis_q(dh_q30 kx, dh_q30 ky, dh_q30 kz, dh_q16 deg, dh_fr
  * high word fails the test too.
  */
 
-/* one output: row i of A times 3 contiguous values of B */
-#define DH_DOT3(dst, i, bcol) do { \
-        int64_t acc_ = dh_port_smlal(DH_Q_HALF30, A->r[0][i], (bcol)[0]); \
-        acc_ = dh_port_smlal(acc_, A->r[1][i], (bcol)[1]); \
-        acc_ = dh_port_smlal(acc_, A->r[2][i], (bcol)[2]); \
-        (dst) = dh_q_lo30(acc_); \
-        chk |= dh_q_hi_chk(acc_); \
-    } while (0)
-
 /* 2^29 + p 2^30: one SMLAL where the core has it, else two shifts */
 #if DH_PORT_MUL64_IS_CALL
 #define DH_HALF_PLUS_P(ap) \
@@ -287,29 +278,32 @@ dh_status dh_frame_rot_axis_q(dh_q30 kx, dh_q30 ky, dh_q30 kz, dh_q16 deg, dh_fr
 #define DH_HALF_PLUS_P(ap) dh_port_smlal(DH_Q_HALF30, (ap), DH_Q_ONE30)
 #endif
 
-/* output row i (rotation row i and p_i) */
-#define DH_MUL_ROW(i) do { \
-        DH_DOT3(tp->r[0][i], i, B->r[0]); \
-        DH_DOT3(tp->r[1][i], i, B->r[1]); \
-        DH_DOT3(tp->r[2][i], i, B->r[2]); \
-        { \
-            int64_t acc_ = DH_HALF_PLUS_P(A->p[i]); \
-            acc_ = dh_port_smlal(acc_, A->r[0][i], B->p[0]); \
-            acc_ = dh_port_smlal(acc_, A->r[1][i], B->p[1]); \
-            acc_ = dh_port_smlal(acc_, A->r[2][i], B->p[2]); \
-            tp->p[i] = dh_q_lo30(acc_); \
-            chk |= dh_q_hi_chk(acc_); \
-        } \
-    } while (0)
+/* acc + row i of A times the 3 contiguous values b, modulo 2^64 */
+DH_INLINE int64_t frame_q_dot3(int64_t acc, const dh_frame_q *A, unsigned i, const int32_t *b)
+{
+    acc = dh_port_smlal(acc, A->r[0][i], b[0]);
+    acc = dh_port_smlal(acc, A->r[1][i], b[1]);
+    return dh_port_smlal(acc, A->r[2][i], b[2]);
+}
 
-/* A B into *tp (never A or B); returns the check word. Rows unrolled by
- * hand: in a loop, compilers hoist the 12 values of B and spill them. */
+/* A B into *tp (never A or B); returns the check word. Written out row by
+ * row: in a loop, compilers hoist the 12 values of B and spill them. */
 static DH_NOINLINE uint32_t dh_mul_fast(dh_frame_q *tp, const dh_frame_q *A, const dh_frame_q *B)
 {
     uint32_t chk = 0u;
-    DH_MUL_ROW(0);
-    DH_MUL_ROW(1);
-    DH_MUL_ROW(2);
+    int64_t acc;
+    acc = frame_q_dot3(DH_Q_HALF30, A, 0u, B->r[0]); tp->r[0][0] = dh_q_lo30(acc); chk |= dh_q_hi_chk(acc);
+    acc = frame_q_dot3(DH_Q_HALF30, A, 0u, B->r[1]); tp->r[1][0] = dh_q_lo30(acc); chk |= dh_q_hi_chk(acc);
+    acc = frame_q_dot3(DH_Q_HALF30, A, 0u, B->r[2]); tp->r[2][0] = dh_q_lo30(acc); chk |= dh_q_hi_chk(acc);
+    acc = frame_q_dot3(DH_HALF_PLUS_P(A->p[0]), A, 0u, B->p); tp->p[0] = dh_q_lo30(acc); chk |= dh_q_hi_chk(acc);
+    acc = frame_q_dot3(DH_Q_HALF30, A, 1u, B->r[0]); tp->r[0][1] = dh_q_lo30(acc); chk |= dh_q_hi_chk(acc);
+    acc = frame_q_dot3(DH_Q_HALF30, A, 1u, B->r[1]); tp->r[1][1] = dh_q_lo30(acc); chk |= dh_q_hi_chk(acc);
+    acc = frame_q_dot3(DH_Q_HALF30, A, 1u, B->r[2]); tp->r[2][1] = dh_q_lo30(acc); chk |= dh_q_hi_chk(acc);
+    acc = frame_q_dot3(DH_HALF_PLUS_P(A->p[1]), A, 1u, B->p); tp->p[1] = dh_q_lo30(acc); chk |= dh_q_hi_chk(acc);
+    acc = frame_q_dot3(DH_Q_HALF30, A, 2u, B->r[0]); tp->r[0][2] = dh_q_lo30(acc); chk |= dh_q_hi_chk(acc);
+    acc = frame_q_dot3(DH_Q_HALF30, A, 2u, B->r[1]); tp->r[1][2] = dh_q_lo30(acc); chk |= dh_q_hi_chk(acc);
+    acc = frame_q_dot3(DH_Q_HALF30, A, 2u, B->r[2]); tp->r[2][2] = dh_q_lo30(acc); chk |= dh_q_hi_chk(acc);
+    acc = frame_q_dot3(DH_HALF_PLUS_P(A->p[2]), A, 2u, B->p); tp->p[2] = dh_q_lo30(acc); chk |= dh_q_hi_chk(acc);
     return chk;
 }
 
@@ -360,21 +354,30 @@ DH_GENERAL_FN unsigned dh_mul_gen(dh_frame_q *t, const dh_frame_q *A, const dh_f
     return st;
 }
 
-/* Computed into a local, so out may alias A and/or B. */
+/* Computed into a local, so out may alias A and/or B. Twin bodies: the
+ * default build tries dh_mul_fast first and takes the general path when
+ * its check word fails; the size-first build has the general path only. */
+#if DH_FAST_PATHS
 dh_status dh_frame_mul_q(const dh_frame_q *A, const dh_frame_q *B, dh_frame_q *out)
 {
     dh_frame_q t;
     unsigned st = 0u;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
-#if DH_FAST_PATHS
-    if ((dh_mul_fast(&t, A, B) >> 30) != 0u)
-#endif
-    {
-        st = dh_mul_gen(&t, A, B);
-    }
+    if ((dh_mul_fast(&t, A, B) >> 30) != 0u) st = dh_mul_gen(&t, A, B);
     *out = t;
     return (dh_status)st;
 }
+#else
+dh_status dh_frame_mul_q(const dh_frame_q *A, const dh_frame_q *B, dh_frame_q *out)
+{
+    dh_frame_q t;
+    unsigned st;
+    DH_ASSERT(out != NULL && A != NULL && B != NULL);
+    st = dh_mul_gen(&t, A, B);
+    *out = t;
+    return (dh_status)st;
+}
+#endif
 
 /* general path of dh_frame_inv_q: R' = R^T, p' = -R^T p (rows of R^T are
  * the columns of R), computed into a local (out may be F) */
@@ -389,44 +392,60 @@ DH_GENERAL_FN unsigned dh_inv_gen(dh_frame_q *out, const dh_frame_q *F)
     return st;
 }
 
+/* The default build computes p first (dh_inv_p_fast) and, when it fits,
+ * transposes R in place (also correct when out == F); otherwise, and
+ * always in the size-first build, the general path. */
+#if DH_FAST_PATHS
+dh_status dh_frame_inv_q(const dh_frame_q *F, dh_frame_q *out)
+{
+    int32_t p[3];
+    unsigned i, j;
+    DH_ASSERT(out != NULL && F != NULL);
+    if ((dh_inv_p_fast(F, p) >> 30) != 0u) return (dh_status)dh_inv_gen(out, F);
+    for (i = 0; i < 3u; i++) {
+        out->r[i][i] = F->r[i][i];
+        for (j = i + 1u; j < 3u; j++) {
+            int32_t x = F->r[i][j], y = F->r[j][i];
+            out->r[i][j] = y;
+            out->r[j][i] = x;
+        }
+        out->p[i] = p[i];
+    }
+    return DH_OK;
+}
+#else
 dh_status dh_frame_inv_q(const dh_frame_q *F, dh_frame_q *out)
 {
     DH_ASSERT(out != NULL && F != NULL);
-#if DH_FAST_PATHS
-    {
-        int32_t p[3];
-        unsigned i, j;
-        if ((dh_inv_p_fast(F, p) >> 30) == 0u) {
-            /* transpose in place (also correct when out == F) */
-            for (i = 0; i < 3u; i++) {
-                out->r[i][i] = F->r[i][i];
-                for (j = i + 1u; j < 3u; j++) {
-                    int32_t x = F->r[i][j], y = F->r[j][i];
-                    out->r[i][j] = y;
-                    out->r[j][i] = x;
-                }
-                out->p[i] = p[i];
-            }
-            return DH_OK;
-        }
-    }
-#endif
     return (dh_status)dh_inv_gen(out, F);
 }
+#endif
+
+/* o = R in (+ p for DH_COL_RP); returns the status word: dh_apply_fast,
+ * and the general dh_col when its check word fails (default build), or
+ * dh_col alone (size-first build) */
+#if DH_FAST_PATHS
+DH_INLINE unsigned frame_q_apply_in(const dh_frame_q *F, const int32_t *in, int32_t pm, int32_t *o)
+{
+    unsigned st = 0u;
+    if ((dh_apply_fast(F, in, pm, o) >> 30) != 0u) st = dh_col(o, F, in, pm);
+    return st;
+}
+#else
+DH_INLINE unsigned frame_q_apply_in(const dh_frame_q *F, const int32_t *in, int32_t pm, int32_t *o)
+{
+    return dh_col(o, F, in, pm);
+}
+#endif
 
 /* v = R u (+ p for DH_COL_RP) */
 static dh_status dh_frame_apply(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_q *v, int32_t pm)
 {
     int32_t in[3], o[3];
-    unsigned st = 0u;
+    unsigned st;
     DH_ASSERT(F != NULL && u != NULL && v != NULL);
     in[0] = u->x; in[1] = u->y; in[2] = u->z;
-#if DH_FAST_PATHS
-    if ((dh_apply_fast(F, in, pm, o) >> 30) != 0u)
-#endif
-    {
-        st = dh_col(o, F, in, pm);
-    }
+    st = frame_q_apply_in(F, in, pm, o);
     v->x = o[0]; v->y = o[1]; v->z = o[2];
     return (dh_status)st;
 }

@@ -396,17 +396,21 @@ void dh_sincosf_(float x, float *s, float *c)
 }
 
 /*
- * Correctly rounded square root in integers: x = m 2^ex, the root of
+ * Correctly rounded square root: VSQRT.F32 where the FPU has it
+ * (DH_MATHF_VSQRT), else in integers: x = m 2^ex, the root of
  * M = m 2^K (K = 26 or 25: ex - K even, M in [2^48, 2^50)) bit by bit, 25
  * bits, the last one rounds (a float's root is never exactly half-way).
  */
+#if DH_MATHF_VSQRT
 float dh_sqrtf_(float x)
 {
-#if DH_MATHF_VSQRT
     float r;
     __asm__("vsqrt.f32 %0, %1" : "=t"(r) : "t"(x));
     return r;
+}
 #else
+float dh_sqrtf_(float x)
+{
     uint32_t u = dh_f32_bits(x), m, e, rem = 0u, root = 0u, i;
     int32_t eb;
     if ((u & 0x7FFFFFFFu) == 0u || u == 0x7F800000u) return x;      /* +-0, +Inf */
@@ -444,5 +448,5 @@ float dh_sqrtf_(float x)
     eb = (eb / 2) - 1;
     e = (uint32_t)eb;
     return dh_f32_from_bits((e << 23) + m);
-#endif
 }
+#endif

@@ -64,13 +64,15 @@ void dh_mat4_trans_f32(float x, float y, float z, dh_mat4_f32 *T)
  * Rot(x|y|z, deg) is Rot(k, deg) about the coordinate axis k: the
  * normalisation of a unit axis is exact and every product with its zero
  * components is +-0, which the "+ 0.0f" of dh_mat4_rot_axis_f32 maps to +0.
+ * Twin bodies: the default build writes the matrix of a finite deg
+ * directly (the rotation in the plane (i, j) = (axis + 1, axis + 2) mod 3;
+ * 0 - s is never -0), the size-first build always goes through
+ * dh_mat4_rot_axis_f32.
  */
+#if DH_FAST_PATHS
 static dh_status dh_rotk(dh_mat4_f32 *T, float deg, int axis)
 {
     float k[3] = {0.0f, 0.0f, 0.0f};
-#if DH_FAST_PATHS
-    /* finite deg: the same matrix written directly, the rotation in the
-     * plane (i, j) = (axis + 1, axis + 2) mod 3; 0 - s is never -0 */
     if (dh_isfinite_f32(deg)) {
         const int i = (axis == 2) ? 0 : axis + 1, j = (i == 2) ? 0 : i + 1;
         float s, c;
@@ -85,10 +87,17 @@ static dh_status dh_rotk(dh_mat4_f32 *T, float deg, int axis)
         T->m[j][j] = c;
         return DH_OK;
     }
-#endif
     k[axis] = 1.0f;
     return dh_mat4_rot_axis_f32(k[0], k[1], k[2], deg, T);
 }
+#else
+static dh_status dh_rotk(dh_mat4_f32 *T, float deg, int axis)
+{
+    float k[3] = {0.0f, 0.0f, 0.0f};
+    k[axis] = 1.0f;
+    return dh_mat4_rot_axis_f32(k[0], k[1], k[2], deg, T);
+}
+#endif
 
 dh_status dh_mat4_rotx_f32(float deg, dh_mat4_f32 *T)
 {
@@ -115,56 +124,12 @@ static float dh_rot_diag(float ki2, float others2, float v, float c)
     return (ki2 >= 0.5f) ? 1.0f - others2 * v : ki2 * v + c;
 }
 
-dh_status dh_mat4_rot_axis_f32(float kx, float ky, float kz, float deg, dh_mat4_f32 *T)
+/* eq. 1.70 for any input: the classification (DH_ERR_NAN,
+ * DH_ERR_ZERO_AXIS) and the general loop over the three axes */
+static dh_status mat4_rot_axis_general(float kx, float ky, float kz, float deg, dh_mat4_f32 *T)
 {
     float k[4], m = 0.0f, len = 0.0f, s, c, v, z = 0.0f, x, y, w, p0;
     int i, j, a, b, t;
-    DH_ASSERT(T != NULL);
-#if DH_FAST_PATHS
-    /* finite input, non-zero axis: eq. 1.70 written out, same operations */
-    m = fabsf(kx);
-    if (fabsf(ky) > m) m = fabsf(ky);
-    if (fabsf(kz) > m) m = fabsf(kz);
-    if (dh_isfinite_f32(kx) && dh_isfinite_f32(ky) && dh_isfinite_f32(kz) &&
-        dh_isfinite_f32(deg) && m >= FLT_MIN) {
-        float x2, y2, z2, xyv, xzv, yzv;
-        x = kx / m;
-        y = ky / m;
-        w = kz / m;
-        len = dh_sqrtf_(x * x + y * y + w * w);
-        x /= len;
-        y /= len;
-        w /= len;
-        (void)dh_sincos_f32(deg, &s, &c);
-        s += 0.0f;
-        c += 0.0f;
-        v = 1.0f - c;
-        x2 = x * x;
-        y2 = y * y;
-        z2 = w * w;
-        xyv = x * y * v;
-        xzv = x * w * v;
-        yzv = y * w * v;
-        T->m[0][0] = dh_rot_diag(x2, y2 + z2, v, c);
-        T->m[0][1] = (xyv + w * s) + 0.0f;
-        T->m[0][2] = (xzv - y * s) + 0.0f;
-        T->m[0][3] = 0.0f;
-        T->m[1][0] = (xyv - w * s) + 0.0f;
-        T->m[1][1] = dh_rot_diag(y2, x2 + z2, v, c);
-        T->m[1][2] = (yzv + x * s) + 0.0f;
-        T->m[1][3] = 0.0f;
-        T->m[2][0] = (xzv + y * s) + 0.0f;
-        T->m[2][1] = (yzv - x * s) + 0.0f;
-        T->m[2][2] = dh_rot_diag(z2, x2 + y2, v, c);
-        T->m[2][3] = 0.0f;
-        T->m[3][0] = 0.0f;
-        T->m[3][1] = 0.0f;
-        T->m[3][2] = 0.0f;
-        T->m[3][3] = 1.0f;
-        return DH_OK;
-    }
-    m = 0.0f;
-#endif
     k[0] = kx;
     k[1] = ky;
     k[2] = kz;
@@ -210,6 +175,66 @@ dh_status dh_mat4_rot_axis_f32(float kx, float ky, float kz, float deg, dh_mat4_
     }
     return DH_OK;
 }
+
+
+/* The default build writes eq. 1.70 out for a finite input with a non-zero
+ * axis (the same operations) and leaves the rest to the general path; the
+ * size-first build has the general path only. */
+#if DH_FAST_PATHS
+dh_status dh_mat4_rot_axis_f32(float kx, float ky, float kz, float deg, dh_mat4_f32 *T)
+{
+    float m, len, s, c, v, x, y, w;
+    DH_ASSERT(T != NULL);
+    m = fabsf(kx);
+    if (fabsf(ky) > m) m = fabsf(ky);
+    if (fabsf(kz) > m) m = fabsf(kz);
+    if (dh_isfinite_f32(kx) && dh_isfinite_f32(ky) && dh_isfinite_f32(kz) &&
+        dh_isfinite_f32(deg) && m >= FLT_MIN) {
+        float x2, y2, z2, xyv, xzv, yzv;
+        x = kx / m;
+        y = ky / m;
+        w = kz / m;
+        len = dh_sqrtf_(x * x + y * y + w * w);
+        x /= len;
+        y /= len;
+        w /= len;
+        (void)dh_sincos_f32(deg, &s, &c);
+        s += 0.0f;
+        c += 0.0f;
+        v = 1.0f - c;
+        x2 = x * x;
+        y2 = y * y;
+        z2 = w * w;
+        xyv = x * y * v;
+        xzv = x * w * v;
+        yzv = y * w * v;
+        T->m[0][0] = dh_rot_diag(x2, y2 + z2, v, c);
+        T->m[0][1] = (xyv + w * s) + 0.0f;
+        T->m[0][2] = (xzv - y * s) + 0.0f;
+        T->m[0][3] = 0.0f;
+        T->m[1][0] = (xyv - w * s) + 0.0f;
+        T->m[1][1] = dh_rot_diag(y2, x2 + z2, v, c);
+        T->m[1][2] = (yzv + x * s) + 0.0f;
+        T->m[1][3] = 0.0f;
+        T->m[2][0] = (xzv + y * s) + 0.0f;
+        T->m[2][1] = (yzv - x * s) + 0.0f;
+        T->m[2][2] = dh_rot_diag(z2, x2 + y2, v, c);
+        T->m[2][3] = 0.0f;
+        T->m[3][0] = 0.0f;
+        T->m[3][1] = 0.0f;
+        T->m[3][2] = 0.0f;
+        T->m[3][3] = 1.0f;
+        return DH_OK;
+    }
+    return mat4_rot_axis_general(kx, ky, kz, deg, T);
+}
+#else
+dh_status dh_mat4_rot_axis_f32(float kx, float ky, float kz, float deg, dh_mat4_f32 *T)
+{
+    DH_ASSERT(T != NULL);
+    return mat4_rot_axis_general(kx, ky, kz, deg, T);
+}
+#endif
 
 void dh_mat4_scale_f32(float sx, float sy, float sz, dh_mat4_f32 *T)
 {
@@ -312,6 +337,7 @@ static void dh_lin(const dh_mat4_f32 *A, const float *in, float *o, int n)
     o[3] = o3;
 }
 
+#if !DH_FAST_PATHS
 /* dh_lin() of in = (x, y, z, 1): a point (n = 4; its p * 1 is p, exact) or
  * a direction (n = 3) */
 static void dh_lin3(const dh_mat4_f32 *A, float x, float y, float z, float *o, int n)
@@ -323,148 +349,26 @@ static void dh_lin3(const dh_mat4_f32 *A, float x, float y, float z, float *o, i
     in[3] = 1.0f;
     dh_lin(A, in, o, n);
 }
-
-#if DH_FAST_PATHS
-/* The register form below on scalar FPUs (Cortex-M4F/M7); the copy form
- * on 4-wide SIMD hosts (vectorised) and with soft float (where the
- * register form saves 2 % of the instructions for about 1 KiB of flash on
- * Cortex-M0+). */
-#if defined(__SSE__) || defined(__ARM_NEON) || defined(__ARM_NEON__) || defined(__ALTIVEC__) || DH_SOFT_FLOAT
-/*
- * Unrolled products: column c of A*B is the combination of the columns of
- * A (copied to a local first) with the weights of column c of B, read
- * before column c of out is written, so out may alias A and/or B. Each
- * 4-row statement is one vector multiply-add chain on 4-wide float SIMD
- * (SSE2, NEON) and scalar code with soft float.
- */
-#define DH_MUL_COL4(out, c, B)                                                          \
-    do {                                                                                \
-        const float x_ = (B)->m[c][0], y_ = (B)->m[c][1], z_ = (B)->m[c][2], w_ = (B)->m[c][3]; \
-        for (r = 0; r < 4; r++) (out)->m[c][r] = a.m[0][r] * x_ + a.m[1][r] * y_ + a.m[2][r] * z_ + a.m[3][r] * w_; \
-    } while (0)
-
-/* Rows the affine product computes before its bottom row is set to 0 0 0 1:
- * four where 4-wide SIMD makes a column one vector operation, the three
- * needed ones with soft float. */
-#if defined(__SSE__) || defined(__ARM_NEON) || defined(__ARM_NEON__) || defined(__ALTIVEC__)
-#define DH_AFFINE_ROWS 4
-#else
-#define DH_AFFINE_ROWS 3
-#endif
-
-#define DH_MUL_COL3(out, c, B)                                                          \
-    do {                                                                                \
-        const float x_ = (B)->m[c][0], y_ = (B)->m[c][1], z_ = (B)->m[c][2];             \
-        for (r = 0; r < DH_AFFINE_ROWS; r++) (out)->m[c][r] = a.m[0][r] * x_ + a.m[1][r] * y_ + a.m[2][r] * z_;  \
-    } while (0)
-
-/* The unrolled full (affine 0) or affine (affine 1, a constant) product. */
-DH_INLINE void dh_mul_unrolled(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int affine)
-{
-    dh_mat4_f32 a;
-    int r;
-    DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    a = *A;
-    if (!affine) {
-        DH_MUL_COL4(out, 0, B);
-        DH_MUL_COL4(out, 1, B);
-        DH_MUL_COL4(out, 2, B);
-        DH_MUL_COL4(out, 3, B);
-        return;
-    }
-    DH_MUL_COL3(out, 0, B);
-    DH_MUL_COL3(out, 1, B);
-    DH_MUL_COL3(out, 2, B);
-    {
-        const float x = B->m[3][0], y = B->m[3][1], z = B->m[3][2];
-        for (r = 0; r < DH_AFFINE_ROWS; r++) out->m[3][r] = a.m[0][r] * x + a.m[1][r] * y + a.m[2][r] * z + a.m[3][r];
-    }
-    out->m[0][3] = 0.0f;
-    out->m[1][3] = 0.0f;
-    out->m[2][3] = 0.0f;
-    out->m[3][3] = 1.0f;
-}
-#else
-/*
- * Unrolled products on scalar FPUs (Cortex-M4F/M7): every
- * element of A that the product uses is read into a local first (out may
- * alias A), then column c of out is computed from column c of B, read
- * before column c of out is written (out may alias B). Straight-line code
- * with no copy through memory: the locals are registers (the 16 of the
- * full product, the weights and the sums fit the 32 single registers of
- * FPv4/FPv5). Same sums in the same order as the general path.
- */
-#define DH_A_COL(k) \
-    const float a0##k = A->m[k][0], a1##k = A->m[k][1], a2##k = A->m[k][2]
-#define DH_ROWS3(c)                                                          \
-    do {                                                                     \
-        const float x_ = B->m[c][0], y_ = B->m[c][1], z_ = B->m[c][2];       \
-        out->m[c][0] = a00 * x_ + a01 * y_ + a02 * z_;                       \
-        out->m[c][1] = a10 * x_ + a11 * y_ + a12 * z_;                       \
-        out->m[c][2] = a20 * x_ + a21 * y_ + a22 * z_;                       \
-    } while (0)
-#define DH_ROWS4(c)                                                          \
-    do {                                                                     \
-        const float x_ = B->m[c][0], y_ = B->m[c][1], z_ = B->m[c][2], w_ = B->m[c][3]; \
-        out->m[c][0] = a00 * x_ + a01 * y_ + a02 * z_ + a03 * w_;            \
-        out->m[c][1] = a10 * x_ + a11 * y_ + a12 * z_ + a13 * w_;            \
-        out->m[c][2] = a20 * x_ + a21 * y_ + a22 * z_ + a23 * w_;            \
-        out->m[c][3] = a30 * x_ + a31 * y_ + a32 * z_ + a33 * w_;            \
-    } while (0)
-
-/* The unrolled full (affine 0) or affine (affine 1, a constant) product. */
-DH_INLINE void dh_mul_unrolled(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int affine)
-{
-    DH_ASSERT(out != NULL && A != NULL && B != NULL);
-    if (!affine) {
-        DH_A_COL(0);
-        DH_A_COL(1);
-        DH_A_COL(2);
-        DH_A_COL(3);
-        const float a30 = A->m[0][3], a31 = A->m[1][3], a32 = A->m[2][3], a33 = A->m[3][3];
-        DH_ROWS4(0);
-        DH_ROWS4(1);
-        DH_ROWS4(2);
-        DH_ROWS4(3);
-        return;
-    }
-    {
-        DH_A_COL(0);
-        DH_A_COL(1);
-        DH_A_COL(2);
-        DH_A_COL(3);
-        DH_ROWS3(0);
-        DH_ROWS3(1);
-        DH_ROWS3(2);
-        {
-            const float x = B->m[3][0], y = B->m[3][1], z = B->m[3][2];
-            out->m[3][0] = a00 * x + a01 * y + a02 * z + a03;
-            out->m[3][1] = a10 * x + a11 * y + a12 * z + a13;
-            out->m[3][2] = a20 * x + a21 * y + a22 * z + a23;
-        }
-        out->m[0][3] = 0.0f;
-        out->m[1][3] = 0.0f;
-        out->m[2][3] = 0.0f;
-        out->m[3][3] = 1.0f;
-    }
-}
-#endif
 #endif
 
 /*
- * out = A B (aff == 0), or the affine product (aff == 1): columns 0..2 of
- * R_A R_B, column 3 R_A p_B + p_A (the fourth term of a point), bottom row
- * 0 0 0 1; the bottom rows of A and B are not used. Built in a temporary,
- * so out may alias A and/or B.
+ * out = A B (aff == 0), or the affine product (aff == 1, a constant of each
+ * caller): columns 0..2 of R_A R_B, column 3 R_A p_B + p_A (the fourth term
+ * of a point), bottom row 0 0 0 1; the bottom rows of A and B are not used.
+ * out may alias A and/or B. Three whole bodies, chosen by the build:
+ *  - size-first build: the general loops (dh_lin) into a temporary;
+ *  - default build, 4-wide SIMD hosts and soft float: the copy form,
+ *    unrolled products from a local copy of A (vectorised; with soft float
+ *    the register form saves 2 % of the instructions for about 1 KiB of
+ *    flash on Cortex-M0+);
+ *  - default build, scalar FPUs (Cortex-M4F/M7): the register form.
+ * Every form computes the same sums in the same order.
  */
+#if !DH_FAST_PATHS
 DH_SPEED_INLINE void dh_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int aff)
 {
     dh_mat4_f32 t;
     int i;
-#if DH_FAST_PATHS
-    dh_mul_unrolled(A, B, out, aff);
-    return;
-#endif
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
     /* the columns of R_A R_B (aff) or of A B: B's columns read before out
      * is written */
@@ -479,6 +383,127 @@ DH_SPEED_INLINE void dh_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_
     }
     *out = t;
 }
+#elif defined(__SSE__) || defined(__ARM_NEON) || defined(__ARM_NEON__) || defined(__ALTIVEC__) || DH_SOFT_FLOAT
+/* Rows the affine product computes before its bottom row is set to 0 0 0 1:
+ * four where 4-wide SIMD makes a column one vector operation, the three
+ * needed ones with soft float. */
+#if defined(__SSE__) || defined(__ARM_NEON) || defined(__ARM_NEON__) || defined(__ALTIVEC__)
+#define DH_AFFINE_ROWS 4
+#else
+#define DH_AFFINE_ROWS 3
+#endif
+
+/* o = rows 0..3 (full) of the combination of the columns of a with the
+ * weights b[0..3] (b read before o is written); one vector multiply-add
+ * chain on 4-wide float SIMD (SSE2, NEON), scalar code with soft float */
+DH_INLINE void mat4_col4_copy(const dh_mat4_f32 *a, const float *b, float *o)
+{
+    const float x = b[0], y = b[1], z = b[2], w = b[3];
+    int r;
+    for (r = 0; r < 4; r++) o[r] = a->m[0][r] * x + a->m[1][r] * y + a->m[2][r] * z + a->m[3][r] * w;
+}
+
+/* the same with the three weights b[0..2] on the first DH_AFFINE_ROWS rows,
+ * plus column 3 of a (pt 1: a point) or not (pt 0) */
+DH_INLINE void mat4_col3_copy(const dh_mat4_f32 *a, const float *b, float *o, int pt)
+{
+    const float x = b[0], y = b[1], z = b[2];
+    int r;
+    if (pt) {
+        for (r = 0; r < DH_AFFINE_ROWS; r++) o[r] = a->m[0][r] * x + a->m[1][r] * y + a->m[2][r] * z + a->m[3][r];
+    } else {
+        for (r = 0; r < DH_AFFINE_ROWS; r++) o[r] = a->m[0][r] * x + a->m[1][r] * y + a->m[2][r] * z;
+    }
+}
+
+/* The copy form: column c of A*B is the combination of the columns of A
+ * (copied to a local first) with the weights of column c of B, read before
+ * column c of out is written. */
+DH_SPEED_INLINE void dh_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int aff)
+{
+    dh_mat4_f32 a;
+    DH_ASSERT(out != NULL && A != NULL && B != NULL);
+    a = *A;
+    if (!aff) {
+        mat4_col4_copy(&a, B->m[0], out->m[0]);
+        mat4_col4_copy(&a, B->m[1], out->m[1]);
+        mat4_col4_copy(&a, B->m[2], out->m[2]);
+        mat4_col4_copy(&a, B->m[3], out->m[3]);
+        return;
+    }
+    mat4_col3_copy(&a, B->m[0], out->m[0], 0);
+    mat4_col3_copy(&a, B->m[1], out->m[1], 0);
+    mat4_col3_copy(&a, B->m[2], out->m[2], 0);
+    mat4_col3_copy(&a, B->m[3], out->m[3], 1);
+    out->m[0][3] = 0.0f;
+    out->m[1][3] = 0.0f;
+    out->m[2][3] = 0.0f;
+    out->m[3][3] = 1.0f;
+}
+#else
+/* o = rows 0..3 of a_r0 x + a_r1 y + a_r2 z + a_r3 w for the weights
+ * b[0..3] (read before o is written) and the 16 elements a_rk of A held by
+ * the caller */
+DH_INLINE void mat4_col4_regs(const float *b, float *o, float a00, float a01, float a02, float a03,
+                              float a10, float a11, float a12, float a13, float a20, float a21,
+                              float a22, float a23, float a30, float a31, float a32, float a33)
+{
+    const float x = b[0], y = b[1], z = b[2], w = b[3];
+    o[0] = a00 * x + a01 * y + a02 * z + a03 * w;
+    o[1] = a10 * x + a11 * y + a12 * z + a13 * w;
+    o[2] = a20 * x + a21 * y + a22 * z + a23 * w;
+    o[3] = a30 * x + a31 * y + a32 * z + a33 * w;
+}
+
+/* rows 0..2 of a_r0 x + a_r1 y + a_r2 z (+ a_r3 when pt, a point) for the
+ * weights b[0..2] */
+DH_INLINE void mat4_col3_regs(const float *b, float *o, int pt, float a00, float a01, float a02,
+                              float a03, float a10, float a11, float a12, float a13, float a20,
+                              float a21, float a22, float a23)
+{
+    const float x = b[0], y = b[1], z = b[2];
+    if (pt) {
+        o[0] = a00 * x + a01 * y + a02 * z + a03;
+        o[1] = a10 * x + a11 * y + a12 * z + a13;
+        o[2] = a20 * x + a21 * y + a22 * z + a23;
+    } else {
+        o[0] = a00 * x + a01 * y + a02 * z;
+        o[1] = a10 * x + a11 * y + a12 * z;
+        o[2] = a20 * x + a21 * y + a22 * z;
+    }
+}
+
+/* The register form: every element of A that the product uses is read
+ * into a local first (out may alias A), then column c of out is computed
+ * from column c of B, read before column c of out is written (out may
+ * alias B). Straight-line code with no copy through memory: the locals are
+ * registers (the 16 of the full product, the weights and the sums fit the
+ * 32 single registers of FPv4/FPv5). */
+DH_SPEED_INLINE void dh_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int aff)
+{
+    const float a00 = A->m[0][0], a10 = A->m[0][1], a20 = A->m[0][2];
+    const float a01 = A->m[1][0], a11 = A->m[1][1], a21 = A->m[1][2];
+    const float a02 = A->m[2][0], a12 = A->m[2][1], a22 = A->m[2][2];
+    const float a03 = A->m[3][0], a13 = A->m[3][1], a23 = A->m[3][2];
+    DH_ASSERT(out != NULL && A != NULL && B != NULL);
+    if (!aff) {
+        const float a30 = A->m[0][3], a31 = A->m[1][3], a32 = A->m[2][3], a33 = A->m[3][3];
+        mat4_col4_regs(B->m[0], out->m[0], a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, a30, a31, a32, a33);
+        mat4_col4_regs(B->m[1], out->m[1], a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, a30, a31, a32, a33);
+        mat4_col4_regs(B->m[2], out->m[2], a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, a30, a31, a32, a33);
+        mat4_col4_regs(B->m[3], out->m[3], a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, a30, a31, a32, a33);
+        return;
+    }
+    mat4_col3_regs(B->m[0], out->m[0], 0, a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23);
+    mat4_col3_regs(B->m[1], out->m[1], 0, a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23);
+    mat4_col3_regs(B->m[2], out->m[2], 0, a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23);
+    mat4_col3_regs(B->m[3], out->m[3], 1, a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23);
+    out->m[0][3] = 0.0f;
+    out->m[1][3] = 0.0f;
+    out->m[2][3] = 0.0f;
+    out->m[3][3] = 1.0f;
+}
+#endif
 
 void dh_mat4_mul_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out)
 {
@@ -504,10 +529,13 @@ void dh_mat4_postmul_f32(dh_mat4_f32 *T, const dh_mat4_f32 *X)
 /* application                                                            */
 /* ---------------------------------------------------------------------- */
 
+/* v = rows 0..2 of the n-term combination of the columns of T with u, 1
+ * (n = 4: a point, n = 3: a direction; u, v may be the same object: u is
+ * read first). Twin bodies: R u (+ p) written out in the default build,
+ * ((a + b) + c) + d being the general path's order, and dh_lin3 in the
+ * size-first build. */
 #if DH_FAST_PATHS
-/* R u (+ p when point, a constant) written out; u is read first, so u and v
- * may be the same object. ((a + b) + c) + d is the general path's order. */
-DH_INLINE void dh_apply3_unrolled(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, int point)
+DH_SPEED_INLINE void dh_apply3(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, int n)
 {
     float x, y, z, rx, ry, rz;
     DH_ASSERT(T != NULL && u != NULL && v != NULL);
@@ -517,7 +545,7 @@ DH_INLINE void dh_apply3_unrolled(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh
     rx = T->m[0][0] * x + T->m[1][0] * y + T->m[2][0] * z;
     ry = T->m[0][1] * x + T->m[1][1] * y + T->m[2][1] * z;
     rz = T->m[0][2] * x + T->m[1][2] * y + T->m[2][2] * z;
-    if (point) {
+    if (n == 4) {
         rx += T->m[3][0];
         ry += T->m[3][1];
         rz += T->m[3][2];
@@ -526,23 +554,17 @@ DH_INLINE void dh_apply3_unrolled(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh
     v->y = ry;
     v->z = rz;
 }
-#endif
-
-/* v = rows 0..2 of the n-term combination of the columns of T with u, 1
- * (u, v may be the same object: u is read first) */
+#else
 DH_SPEED_INLINE void dh_apply3(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, int n)
 {
     float o[4];
-#if DH_FAST_PATHS
-    dh_apply3_unrolled(T, u, v, n == 4);
-    return;
-#endif
     DH_ASSERT(T != NULL && u != NULL && v != NULL);
     dh_lin3(T, u->x, u->y, u->z, o, n);
     v->x = o[0];
     v->y = o[1];
     v->z = o[2];
 }
+#endif
 
 void dh_mat4_apply_point_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
 {
@@ -555,28 +577,32 @@ void dh_mat4_apply_dir_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f
 }
 
 #if DH_FAST_PATHS
-/* rows 0..3 of T (x y z w)^T written out, for the fast paths */
-#define DH_VEC4_ROWS(T, x, y, z, w, o0, o1, o2, o3)                                       \
-    do {                                                                                  \
-        (o0) = (T)->m[0][0] * (x) + (T)->m[1][0] * (y) + (T)->m[2][0] * (z) + (T)->m[3][0] * (w); \
-        (o1) = (T)->m[0][1] * (x) + (T)->m[1][1] * (y) + (T)->m[2][1] * (z) + (T)->m[3][1] * (w); \
-        (o2) = (T)->m[0][2] * (x) + (T)->m[1][2] * (y) + (T)->m[2][2] * (z) + (T)->m[3][2] * (w); \
-        (o3) = (T)->m[0][3] * (x) + (T)->m[1][3] * (y) + (T)->m[2][3] * (z) + (T)->m[3][3] * (w); \
-    } while (0)
-#endif
+/* row r of T (x y z w)^T written out (the general path's order) */
+DH_INLINE float mat4_row4(const dh_mat4_f32 *T, int r, float x, float y, float z, float w)
+{
+    return T->m[0][r] * x + T->m[1][r] * y + T->m[2][r] * z + T->m[3][r] * w;
+}
 
+/* Twin bodies: the rows written out (default build) or dh_lin (size-first
+ * build); u is read first, so u and v may be the same object. */
 void dh_mat4_apply_vec4_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec4_f32 *v)
 {
-    float in[4], o[4];
+    float in[4];
     DH_ASSERT(T != NULL && u != NULL && v != NULL);
-#if DH_FAST_PATHS
     in[0] = u->x;
     in[1] = u->y;
     in[2] = u->z;
     in[3] = u->w;
-    DH_VEC4_ROWS(T, in[0], in[1], in[2], in[3], v->x, v->y, v->z, v->w);
-    return;
-#endif
+    v->x = mat4_row4(T, 0, in[0], in[1], in[2], in[3]);
+    v->y = mat4_row4(T, 1, in[0], in[1], in[2], in[3]);
+    v->z = mat4_row4(T, 2, in[0], in[1], in[2], in[3]);
+    v->w = mat4_row4(T, 3, in[0], in[1], in[2], in[3]);
+}
+#else
+void dh_mat4_apply_vec4_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec4_f32 *v)
+{
+    float in[4], o[4];
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
     in[0] = u->x;
     in[1] = u->y;
     in[2] = u->z;
@@ -587,6 +613,7 @@ void dh_mat4_apply_vec4_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec4_
     v->z = o[2];
     v->w = o[3];
 }
+#endif
 
 /* x * 0 is +-0 for finite x and NaN for NaN and +-Inf; a sum of +-0 is
  * never NaN */
@@ -601,27 +628,20 @@ int dh_mat4_isfinite_f32(const dh_mat4_f32 *T)
     return dh_feq_f32(z, z);
 }
 
-dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec3_f32 *v)
-{
-    float in[4], h[4], z = 0.0f, zi = 0.0f;
-    int i;
-    DH_ASSERT(T != NULL && u != NULL && v != NULL);
-    dh_load4(in, u->x, u->y, u->z, u->w);
+/*
+ * Twin bodies. The default build answers a finite h with w != 0 and finite
+ * quotients directly; the general path (mat4_point_h_general) recomputes
+ * the same h and classifies everything else. The size-first build is the
+ * general path alone, written in its body (the same lines as
+ * mat4_point_h_general: a separate call there costs flash in that build).
+ */
 #if DH_FAST_PATHS
-    /* finite h with w != 0 and finite quotients; the general path below
-     * recomputes the same h and classifies everything else */
-    DH_VEC4_ROWS(T, in[0], in[1], in[2], in[3], h[0], h[1], h[2], h[3]);
-    if (dh_isfinite_f32(h[0]) && dh_isfinite_f32(h[1]) && dh_isfinite_f32(h[2]) &&
-        dh_isfinite_f32(h[3]) && !dh_feq_f32(h[3], 0.0f)) {
-        const float x = h[0] / h[3], y = h[1] / h[3], w = h[2] / h[3];
-        if (dh_isfinite_f32(x) && dh_isfinite_f32(y) && dh_isfinite_f32(w)) {
-            v->x = x + 0.0f;
-            v->y = y + 0.0f;
-            v->z = w + 0.0f;
-            return DH_OK;
-        }
-    }
-#endif
+/* The general path for in = u: h = T in (h: the caller's scratch),
+ * classified (DH_ERR_OVERFLOW, DH_ERR_NAN, DH_ERR_DOMAIN) and divided. */
+DH_INLINE dh_status mat4_point_h_general(const dh_mat4_f32 *T, const float *in, float *h, dh_vec3_f32 *v)
+{
+    float z = 0.0f, zi = 0.0f;
+    int i;
     dh_lin(T, in, h, 4);
     for (i = 0; i < 4; i++) {
         z += h[i] * 0.0f;
@@ -640,20 +660,73 @@ dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, 
     return DH_OK;
 }
 
-/* Q_j = P . (column j of Tinv) */
+dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec3_f32 *v)
+{
+    float in[4], h[4];
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
+    dh_load4(in, u->x, u->y, u->z, u->w);
+    h[0] = mat4_row4(T, 0, in[0], in[1], in[2], in[3]);
+    h[1] = mat4_row4(T, 1, in[0], in[1], in[2], in[3]);
+    h[2] = mat4_row4(T, 2, in[0], in[1], in[2], in[3]);
+    h[3] = mat4_row4(T, 3, in[0], in[1], in[2], in[3]);
+    if (dh_isfinite_f32(h[0]) && dh_isfinite_f32(h[1]) && dh_isfinite_f32(h[2]) &&
+        dh_isfinite_f32(h[3]) && !dh_feq_f32(h[3], 0.0f)) {
+        const float x = h[0] / h[3], y = h[1] / h[3], w = h[2] / h[3];
+        if (dh_isfinite_f32(x) && dh_isfinite_f32(y) && dh_isfinite_f32(w)) {
+            v->x = x + 0.0f;
+            v->y = y + 0.0f;
+            v->z = w + 0.0f;
+            return DH_OK;
+        }
+    }
+    return mat4_point_h_general(T, in, h, v);
+}
+#else
+dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec3_f32 *v)
+{
+    float in[4], h[4], z = 0.0f, zi = 0.0f;
+    int i;
+    DH_ASSERT(T != NULL && u != NULL && v != NULL);
+    dh_load4(in, u->x, u->y, u->z, u->w);
+    dh_lin(T, in, h, 4);
+    for (i = 0; i < 4; i++) {
+        z += h[i] * 0.0f;
+        zi += in[i] * 0.0f;
+    }
+    if (!dh_feq_f32(z, z)) return (dh_mat4_isfinite_f32(T) && dh_feq_f32(zi, zi)) ? DH_ERR_OVERFLOW : DH_ERR_NAN;
+    if (dh_feq_f32(h[3], 0.0f)) return DH_ERR_DOMAIN;
+    for (i = 0; i < 3; i++) {
+        h[i] = h[i] / h[3] + 0.0f;
+        z += h[i] * 0.0f;
+    }
+    if (!dh_feq_f32(z, z)) return DH_ERR_OVERFLOW;
+    v->x = h[0];
+    v->y = h[1];
+    v->z = h[2];
+    return DH_OK;
+}
+#endif
+
+/* Q_j = P . (column j of Tinv). Twin bodies: written out (default build)
+ * or loops (size-first build), the same sums in the same order. */
+#if DH_FAST_PATHS
+void dh_plane_mul_f32(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv, dh_plane_f32 *Q)
+{
+    float p[4];
+    DH_ASSERT(P != NULL && Tinv != NULL && Q != NULL);
+    dh_load4(p, P->a, P->b, P->c, P->d);
+    Q->a = p[0] * Tinv->m[0][0] + p[1] * Tinv->m[0][1] + p[2] * Tinv->m[0][2] + p[3] * Tinv->m[0][3];
+    Q->b = p[0] * Tinv->m[1][0] + p[1] * Tinv->m[1][1] + p[2] * Tinv->m[1][2] + p[3] * Tinv->m[1][3];
+    Q->c = p[0] * Tinv->m[2][0] + p[1] * Tinv->m[2][1] + p[2] * Tinv->m[2][2] + p[3] * Tinv->m[2][3];
+    Q->d = p[0] * Tinv->m[3][0] + p[1] * Tinv->m[3][1] + p[2] * Tinv->m[3][2] + p[3] * Tinv->m[3][3];
+}
+#else
 void dh_plane_mul_f32(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv, dh_plane_f32 *Q)
 {
     float p[4], q[4];
     int j, k;
     DH_ASSERT(P != NULL && Tinv != NULL && Q != NULL);
     dh_load4(p, P->a, P->b, P->c, P->d);
-#if DH_FAST_PATHS
-    Q->a = p[0] * Tinv->m[0][0] + p[1] * Tinv->m[0][1] + p[2] * Tinv->m[0][2] + p[3] * Tinv->m[0][3];
-    Q->b = p[0] * Tinv->m[1][0] + p[1] * Tinv->m[1][1] + p[2] * Tinv->m[1][2] + p[3] * Tinv->m[1][3];
-    Q->c = p[0] * Tinv->m[2][0] + p[1] * Tinv->m[2][1] + p[2] * Tinv->m[2][2] + p[3] * Tinv->m[2][3];
-    Q->d = p[0] * Tinv->m[3][0] + p[1] * Tinv->m[3][1] + p[2] * Tinv->m[3][2] + p[3] * Tinv->m[3][3];
-    return;
-#endif
     for (j = 0; j < 4; j++) {
         float acc = p[0] * Tinv->m[j][0];
         for (k = 1; k < 4; k++) acc += p[k] * Tinv->m[j][k];
@@ -664,6 +737,7 @@ void dh_plane_mul_f32(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv, dh_plane_f
     Q->c = q[2];
     Q->d = q[3];
 }
+#endif
 
 void dh_mat4_apply_points_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, size_t count)
 {

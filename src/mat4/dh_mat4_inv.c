@@ -126,41 +126,41 @@ static DH_NOINLINE float dh_affine_t(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 }
 
 /* rows of the inverse are n, o, a; column p is -R^T p; every element is
- * read before the first write, so out may alias T */
+ * read before the first write, so out may alias T. Two bodies: the entries
+ * written out in registers (default build), or the same entries in the
+ * same order from loops over a copy (size-first build). */
+#if DH_FAST_PATHS
 void dh_mat4_inv_rigid_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 {
+    float nx, ny, nz, ox, oy, oz, ax, ay, az, px, py, pz;
     DH_ASSERT(out != NULL && T != NULL);
-#if DH_FAST_PATHS
-    {
-        /* written out, the entries in registers */
-        float nx, ny, nz, ox, oy, oz, ax, ay, az, px, py, pz;
-        nx = T->m[0][0]; ny = T->m[0][1]; nz = T->m[0][2];
-        ox = T->m[1][0]; oy = T->m[1][1]; oz = T->m[1][2];
-        ax = T->m[2][0]; ay = T->m[2][1]; az = T->m[2][2];
-        px = T->m[3][0]; py = T->m[3][1]; pz = T->m[3][2];
-        out->m[0][0] = nx; out->m[0][1] = ox; out->m[0][2] = ax; out->m[0][3] = 0.0f;
-        out->m[1][0] = ny; out->m[1][1] = oy; out->m[1][2] = ay; out->m[1][3] = 0.0f;
-        out->m[2][0] = nz; out->m[2][1] = oz; out->m[2][2] = az; out->m[2][3] = 0.0f;
-        out->m[3][0] = 0.0f - (px * nx + py * ny + pz * nz);
-        out->m[3][1] = 0.0f - (px * ox + py * oy + pz * oz);
-        out->m[3][2] = 0.0f - (px * ax + py * ay + pz * az);
-        out->m[3][3] = 1.0f;
-        return;
-    }
-#endif
-    {
-        /* the same entries in the same order, from loops over a copy */
-        dh_mat4_f32 t;
-        int c, r;
-        t = *T;
-        for (c = 0; c < 3; c++) {
-            for (r = 0; r < 3; r++) out->m[c][r] = t.m[r][c];
-            out->m[c][3] = 0.0f;
-            out->m[3][c] = 0.0f - (t.m[3][0] * t.m[c][0] + t.m[3][1] * t.m[c][1] + t.m[3][2] * t.m[c][2]);
-        }
-        out->m[3][3] = 1.0f;
-    }
+    nx = T->m[0][0]; ny = T->m[0][1]; nz = T->m[0][2];
+    ox = T->m[1][0]; oy = T->m[1][1]; oz = T->m[1][2];
+    ax = T->m[2][0]; ay = T->m[2][1]; az = T->m[2][2];
+    px = T->m[3][0]; py = T->m[3][1]; pz = T->m[3][2];
+    out->m[0][0] = nx; out->m[0][1] = ox; out->m[0][2] = ax; out->m[0][3] = 0.0f;
+    out->m[1][0] = ny; out->m[1][1] = oy; out->m[1][2] = ay; out->m[1][3] = 0.0f;
+    out->m[2][0] = nz; out->m[2][1] = oz; out->m[2][2] = az; out->m[2][3] = 0.0f;
+    out->m[3][0] = 0.0f - (px * nx + py * ny + pz * nz);
+    out->m[3][1] = 0.0f - (px * ox + py * oy + pz * oz);
+    out->m[3][2] = 0.0f - (px * ax + py * ay + pz * az);
+    out->m[3][3] = 1.0f;
 }
+#else
+void dh_mat4_inv_rigid_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out)
+{
+    dh_mat4_f32 t;
+    int c, r;
+    DH_ASSERT(out != NULL && T != NULL);
+    t = *T;
+    for (c = 0; c < 3; c++) {
+        for (r = 0; r < 3; r++) out->m[c][r] = t.m[r][c];
+        out->m[c][3] = 0.0f;
+        out->m[3][c] = 0.0f - (t.m[3][0] * t.m[c][0] + t.m[3][1] * t.m[c][1] + t.m[3][2] * t.m[c][2]);
+    }
+    out->m[3][3] = 1.0f;
+}
+#endif
 
 /* ---------------------------------------------------------------------- */
 /* general inverse                                                        */
@@ -589,37 +589,53 @@ static DH_NOINLINE int dh_inv_proj(dh_mat4_f32 *X, const dh_mat4_f32 *M)
 
 /*
  * General inverse into the scratch X (must not alias T; undefined on
- * error): the fast path for the input's shape, else the general path
- * (after dh_inv_general's affine attempt only an affine T that fails the
- * fast test again gets here).
+ * error): the fast path for the input's shape (default build), else the
+ * general path (after dh_inv_general's affine attempt only an affine T
+ * that fails the fast test again gets here). The size-first build has the
+ * general path only.
  */
+#if DH_FAST_PATHS
 DH_INLINE dh_status dh_inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
-#if DH_FAST_PATHS
     if (dh_is_affine(T)) {
         if (dh_inv_affine(X, T, 1.0f) || dh_inv_affine_scaled(X, T)) return DH_OK;
     } else {
         if (dh_inv_proj(X, T)) return DH_OK;
     }
-#endif
     return dh_inv_certified(T, X);
 }
+#else
+DH_INLINE dh_status dh_inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
+{
+    return dh_inv_certified(T, X);
+}
+#endif
 
 /* The public general inverse (out untouched on error, out may alias T),
- * inlined into its two callers: no extra frame on the general path. */
+ * inlined into its two callers: no extra frame on the general path. The
+ * default build tries the affine fast path straight into out first
+ * (dh_inv_affine reads T first). */
+#if DH_FAST_PATHS
 DH_INLINE dh_status dh_inv_general(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
     dh_mat4_f32 X;
     dh_status st;
-#if DH_FAST_PATHS
-    /* affine fast path straight into out (dh_inv_affine reads T first) */
     if (dh_is_affine(T) && (dh_inv_affine(out, T, 1.0f) || dh_inv_affine_scaled(out, T))) return DH_OK;
-#endif
     st = dh_inv_into(&X, T);
     if (st != DH_OK) return st;
     *out = X;
     return DH_OK;
 }
+#else
+DH_INLINE dh_status dh_inv_general(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+{
+    dh_mat4_f32 X;
+    const dh_status st = dh_inv_into(&X, T);
+    if (st != DH_OK) return st;
+    *out = X;
+    return DH_OK;
+}
+#endif
 
 dh_status dh_mat4_inv_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 {
@@ -732,16 +748,22 @@ static DH_FAST_NOINLINE int dh_plane_finite(const dh_plane_f32 *P)
     return dh_feq_f32(z, z);
 }
 
-/* T^-1 into X as dh_mat4_inv_auto_f32 takes it (the general inverse alone
- * gives the same statuses) */
+/* T^-1 into X as dh_mat4_inv_auto_f32 takes it: the rigid inverse when it
+ * applies (default build), else the general inverse, which alone gives the
+ * same statuses (size-first build) */
+#if DH_FAST_PATHS
 DH_INLINE dh_status dh_inv_auto_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
-#if DH_FAST_PATHS
     const dh_status st = dh_inv_rigid_chk(X, T);
     if (st != DH_ERR_NOT_RIGID) return st;
-#endif
     return dh_inv_into(X, T);
 }
+#else
+DH_INLINE dh_status dh_inv_auto_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
+{
+    return dh_inv_into(X, T);
+}
+#endif
 
 dh_status dh_mat4_apply_plane_f32(const dh_mat4_f32 *T, const dh_plane_f32 *P, dh_plane_f32 *Q)
 {

@@ -172,25 +172,32 @@ static DH_NOINLINE void link_direct(dh_mat4_f32 *A, unsigned mod, const float v[
     set_bottom(A);
 }
 
-/* fast_step() on row k of a frame held in the locals nK, oK, aK, pK (same
- * operations in the same order). */
-#define FK_ROW_STD(k)                                                     \
-    do {                                                                  \
-        const float n1_ = ct * n##k + st * o##k, u_ = ct * o##k - st * n##k; \
-        p##k = p##k + d * a##k + a * n1_;                                 \
-        n##k = n1_;                                                       \
-        o##k = ca * u_ + sa * a##k;                                       \
-        a##k = ca * a##k - sa * u_;                                       \
-    } while (0)
-#define FK_ROW_MOD(k)                                                     \
-    do {                                                                  \
-        const float o1_ = ca * o##k + sa * a##k, a1_ = ca * a##k - sa * o##k; \
-        p##k = p##k + a * n##k + d * a1_;                                 \
-        { const float n1_ = ct * n##k + st * o1_;                         \
-          o##k = ct * o1_ - st * n##k;                                    \
-          n##k = n1_; }                                                   \
-        a##k = a1_;                                                       \
-    } while (0)
+/* fast_step() on one row (n, o, a, p) of a frame held in the caller's
+ * locals, standard DH (same operations in the same order); joint values
+ * st, ct, sa, ca, d and the length len */
+DH_INLINE void fk_f32_row_std(float *n, float *o, float *a, float *p, float st, float ct, float sa, float ca,
+                              float d, float len)
+{
+    const float n1 = ct * *n + st * *o, u = ct * *o - st * *n;
+    *p = *p + d * *a + len * n1;
+    *n = n1;
+    *o = ca * u + sa * *a;
+    *a = ca * *a - sa * u;
+}
+
+/* the same for modified DH */
+DH_INLINE void fk_f32_row_mod(float *n, float *o, float *a, float *p, float st, float ct, float sa, float ca,
+                              float d, float len)
+{
+    const float o1 = ca * *o + sa * *a, a1 = ca * *a - sa * *o;
+    *p = *p + len * *n + d * a1;
+    {
+        const float n1 = ct * *n + st * o1;
+        *o = ct * o1 - st * *n;
+        *n = n1;
+    }
+    *a = a1;
+}
 
 /*
  * chain() into T alone (no frames), with the frame in locals: the 12
@@ -250,13 +257,13 @@ DH_INLINE int chain_regs(const dh_robot *r, const float *q, dh_mat4_f32 *T, cons
         {
             const float st = v[0], ct = v[1], sa = j->sa, ca = j->ca, d = v[4], a = j->a;
             if (conv == DH_CONV_STANDARD) {
-                FK_ROW_STD(0);
-                FK_ROW_STD(1);
-                FK_ROW_STD(2);
+                fk_f32_row_std(&n0, &o0, &a0, &p0, st, ct, sa, ca, d, a);
+                fk_f32_row_std(&n1, &o1, &a1, &p1, st, ct, sa, ca, d, a);
+                fk_f32_row_std(&n2, &o2, &a2, &p2, st, ct, sa, ca, d, a);
             } else {
-                FK_ROW_MOD(0);
-                FK_ROW_MOD(1);
-                FK_ROW_MOD(2);
+                fk_f32_row_mod(&n0, &o0, &a0, &p0, st, ct, sa, ca, d, a);
+                fk_f32_row_mod(&n1, &o1, &a1, &p1, st, ct, sa, ca, d, a);
+                fk_f32_row_mod(&n2, &o2, &a2, &p2, st, ct, sa, ca, d, a);
             }
         }
     }
@@ -292,6 +299,22 @@ static DH_SIZE_NOINLINE dh_status frame_finite(const dh_mat4_f32 *T)
     return dh_feq_f32(z, 0.0f) ? DH_OK : DH_ERR_OVERFLOW;
 }
 
+/* The link A from the joint values v of robot r: written out (link_direct)
+ * in the default build, step() on the identity in the size-first build (the
+ * same nonzero entries; a zero entry may have the other sign). */
+#if DH_FAST_PATHS
+DH_INLINE void fk_f32_link(dh_mat4_f32 *A, const dh_robot *r, const float v[6])
+{
+    link_direct(A, r->conv != DH_CONV_STANDARD, v);
+}
+#else
+DH_INLINE void fk_f32_link(dh_mat4_f32 *A, const dh_robot *r, const float v[6])
+{
+    dh_mat4_identity_f32(A);
+    step(A, r->conv, v);
+}
+#endif
+
 dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
 {
     float v[6];
@@ -301,17 +324,27 @@ dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
     if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_UNAVAILABLE;
     st = joint_values(&r->joint[i], q, v);
-    if (st == DH_OK) {
-#if DH_FAST_PATHS
-        link_direct(A, r->conv != DH_CONV_STANDARD, v);
-#else
-        /* the same nonzero entries; a zero entry may have the other sign */
-        dh_mat4_identity_f32(A);
-        step(A, r->conv, v);
-#endif
-    }
+    if (st == DH_OK) fk_f32_link(A, r, v);
     return st;
 }
+
+/* Joint j at *q (already checked) applied to T in place: fast_step in the
+ * default build, step in the size-first build. */
+#if DH_FAST_PATHS
+DH_INLINE void fk_f32_joint(dh_mat4_f32 *T, dh_convention conv, const dh_joint *j, const float *q)
+{
+    float v[6];
+    joint_checked(j, *q, v);
+    fast_step(T, conv, j, v);
+}
+#else
+DH_INLINE void fk_f32_joint(dh_mat4_f32 *T, dh_convention conv, const dh_joint *j, const float *q)
+{
+    float v[6];
+    /* DH_OK: q passed the check before the chain */
+    if (joint_values(j, *q, v) == DH_OK) step(T, conv, v);
+}
+#endif
 
 /* Joints i.. of the chain from src into frames[i..] (or dst); q already
  * checked. */
@@ -322,23 +355,20 @@ DH_INLINE void chain(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_
     dh_mat4_f32 *dst = dst0;
     uint32_t i;
     for (i = i0; i < r->n; i++) {
-        float v[6];
-        const dh_joint *j = &r->joint[i];
         if (frames) dst = &frames[i];
         copy(dst, src);
-#if DH_FAST_PATHS
-        joint_checked(j, q[i], v);
-        fast_step(dst, conv, j, v);
-#else
-        /* DH_OK: q[i] passed the check before the chain */
-        if (joint_values(j, q[i], v) == DH_OK) step(dst, conv, v);
-#endif
+        fk_f32_joint(dst, conv, &r->joint[i], &q[i]);
         src = dst;
     }
 }
 
 /* The chain, built in frames[] or in T_end (frames may be NULL, then T_end
- * is not NULL). Every q is checked before anything is written. */
+ * is not NULL). Every q is checked before anything is written. Twin
+ * bodies: the default build runs the chain without frames in registers
+ * (FK_REG_CHAIN, checked on the way; the loop gives the status when a
+ * joint value fails), writes the first link of an identity base out and
+ * has one chain loop per convention; the size-first build has one loop. */
+#if DH_FAST_PATHS
 static DH_NOINLINE dh_status fk_chain(const dh_robot *r, const float *q, dh_mat4_f32 *frames,
                                            dh_mat4_f32 *T_end)
 {
@@ -350,22 +380,16 @@ static DH_NOINLINE dh_status fk_chain(const dh_robot *r, const float *q, dh_mat4
     DH_ASSERT(q != NULL);
     if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_UNAVAILABLE;
-#if DH_FAST_PATHS
-    /* no frames: the chain in registers (FK_REG_CHAIN), checked on the
-     * way (the loop below gives the status when a joint value fails) */
     if (FK_REG_CHAIN && !frames) {
         /* one copy for both conventions (the test per joint is cheaper
          * than a second copy of the loop in flash) */
         if (!chain_regs(r, q, T_end, src, r->conv)) return DH_OK;
     }
-#endif
     for (i = 0u; i < r->n; i++) {
         st = joint_values(&r->joint[i], q[i], NULL);
         if (st != DH_OK) return st;
     }
     i = 0u;
-#if DH_FAST_PATHS
-    /* identity base: the first link written out; one loop per convention */
     if (r->flags & DH_ROBOT_BASE_ID_F32) {
         float v[6];
         if (frames) dst = frames;
@@ -376,11 +400,26 @@ static DH_NOINLINE dh_status fk_chain(const dh_robot *r, const float *q, dh_mat4
     }
     if (r->conv == DH_CONV_STANDARD) chain(r, q, frames, dst, src, i, DH_CONV_STANDARD);
     else chain(r, q, frames, dst, src, i, DH_CONV_MODIFIED);
-#else
-    chain(r, q, frames, dst, src, i, r->conv);
-#endif
     return DH_OK;
 }
+#else
+static DH_NOINLINE dh_status fk_chain(const dh_robot *r, const float *q, dh_mat4_f32 *frames,
+                                           dh_mat4_f32 *T_end)
+{
+    uint32_t i;
+    dh_status st;
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(q != NULL);
+    if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_UNAVAILABLE;
+    for (i = 0u; i < r->n; i++) {
+        st = joint_values(&r->joint[i], q[i], NULL);
+        if (st != DH_OK) return st;
+    }
+    chain(r, q, frames, T_end, &r->base, 0u, r->conv);
+    return DH_OK;
+}
+#endif
 
 /* The chain, then the bottom rows, the tool (T_end = last * tool when
  * T_end is not NULL) and the finiteness test of the result (or, without

@@ -212,10 +212,12 @@ typedef int32_t fkq_r;
 #define FAST_LENGTHS(a, d) 1
 #endif
 
-/* p + round((d z + a x) / 2^30), saturated (sets *ovf). */
+/* p + round((d z + a x) / 2^30), saturated (sets *ovf). One body per
+ * multiply: the split kernel (DH_PORT_USE_SPLIT16) with a 32-bit overflow
+ * test, or two SMLAL with the test on the high word. */
+#if DH_PORT_USE_SPLIT16
 DH_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_t x, int *ovf)
 {
-#if DH_PORT_USE_SPLIT16
     /* a zero length (most joints have one) drops its four products; a
      * zero split is the exact zero term, so the sum is the same */
     const fkq_k k0 = KQ(0);
@@ -230,7 +232,10 @@ DH_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_t x, 
         return fkq_sat_sign((uint32_t)p);
     }
     return (int32_t)s;
+}
 #else
+DH_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_t x, int *ovf)
+{
     /* p 2^30 + 2^29 + d z + a x modulo 2^64 (no wrap, file comment) */
     int64_t t = (int64_t)(DH_PORT_W64(p >> 2, (uint32_t)p << 30) + (uint64_t)HALF29);
     uint32_t hi;
@@ -241,8 +246,8 @@ DH_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_t x, 
         return fkq_sat_sign(hi);
     }
     return lo30(t);
-#endif
 }
+#endif
 
 /* (v ^ m) - m: v or -v for a mask m of all zeros or all ones; v !=
  * INT32_MIN on the fast path */
@@ -534,24 +539,60 @@ static DH_NOINLINE int mul_frame(dh_frame_q *out, const dh_frame_q *A, const dh_
     return ovf;
 }
 
+/* Twin bodies: the link written out (link_direct) in the default build,
+ * the general step on the identity in the size-first build. */
+#if DH_FAST_PATHS
+dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A)
+{
+    dh_q30 v[6];
+    int ovf;
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(A != NULL);
+    if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_UNAVAILABLE;
+    ovf = joint_values(&r->joint[i], q, v);
+    link_direct(A, r->conv != DH_CONV_STANDARD, v);
+    return (dh_status)ovf;
+}
+#else
 dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A)
 {
     DH_ASSERT(r != NULL);
     DH_ASSERT(A != NULL);
     if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_UNAVAILABLE;
-#if DH_FAST_PATHS
-    {
-        dh_q30 v[6];
-        const int ovf = joint_values(&r->joint[i], q, v);
-        link_direct(A, r->conv != DH_CONV_STANDARD, v);
-        return (dh_status)ovf;
-    }
-#else
     dh_frame_identity_q(A);
     return (dh_status)joint_step(A, r, i, q);
-#endif
 }
+#endif
+
+/* out = cur * A_i(q[i]) (out may be cur); DH_ERR_OVERFLOW when an entry
+ * or d + q saturated, else 0. The default build writes the first link of
+ * an identity base out, takes the fast step where its bounds hold (file
+ * comment) and the general step otherwise; the size-first build always
+ * takes the general step. */
+#if DH_FAST_PATHS
+DH_INLINE int fkq_chain_joint(const dh_robot *r, uint32_t i, const int32_t *q, const dh_frame_q *cur, dh_frame_q *out)
+{
+    dh_q30 v[6];
+    int ovf = joint_values(&r->joint[i], q[i], v);
+    if (i == 0u && (r->flags & DH_ROBOT_BASE_ID_Q) != 0u) {
+        link_direct(out, r->conv != DH_CONV_STANDARD, v);
+    } else if ((r->flags & DH_ROBOT_BASE_SMALL_Q) != 0u && FAST_LENGTHS(v[5], v[4])) {
+        ovf |= (r->conv == DH_CONV_STANDARD) ? fast_std(cur, out, v) : fast_mod(cur, out, v);
+    } else {
+        copy_frame(out, cur);
+        step(out, r->conv != DH_CONV_STANDARD, v, &ovf);
+    }
+    return ovf;
+}
+#else
+DH_INLINE int fkq_chain_joint(const dh_robot *r, uint32_t i, const int32_t *q, const dh_frame_q *cur, dh_frame_q *out)
+{
+    copy_frame(out, cur);
+    return joint_step(out, r, i, q[i]);
+}
+#endif
 
 /* The chain is built in the caller's memory (frames[i], or T_end), from
  * the base; nothing is written before the argument checks. */
@@ -566,25 +607,8 @@ static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, d
     if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_UNAVAILABLE;
     for (i = 0u; i < r->n; i++) {
-#if DH_FAST_PATHS
-        dh_q30 v[6];
-#endif
         if (frames) out = &frames[i];
-#if DH_FAST_PATHS
-        ovf |= joint_values(&r->joint[i], q[i], v);
-        if (i == 0u && (r->flags & DH_ROBOT_BASE_ID_Q) != 0u) {
-            /* identity base: the first link written out */
-            link_direct(out, r->conv != DH_CONV_STANDARD, v);
-        } else if ((r->flags & DH_ROBOT_BASE_SMALL_Q) != 0u && FAST_LENGTHS(v[5], v[4])) {
-            ovf |= (r->conv == DH_CONV_STANDARD) ? fast_std(cur, out, v) : fast_mod(cur, out, v);
-        } else {
-            copy_frame(out, cur);
-            step(out, r->conv != DH_CONV_STANDARD, v, &ovf);
-        }
-#else
-        copy_frame(out, cur);
-        ovf |= joint_step(out, r, i, q[i]);
-#endif
+        ovf |= fkq_chain_joint(r, i, q, cur, out);
         cur = out;
     }
     if (T_end) {

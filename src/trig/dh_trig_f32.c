@@ -94,16 +94,19 @@ static float dh_trig_big_deg(uint32_t mag)
  * arithmetic. A zero comes out +0 where the float table gives -0, which
  * does not change any result (step 4).
  */
+#if DH_FAST_PATHS
 static float dh_trig_tab_f32(uint32_t n, uint32_t neg)
 {
-#if DH_FAST_PATHS
     uint32_t b;
     float v;
     memcpy(&b, &dh_trig_sin_f32[n], sizeof b);
     b ^= neg << 31;
     memcpy(&v, &b, sizeof v);
     return v;
+}
 #else
+static float dh_trig_tab_f32(uint32_t n, uint32_t neg)
+{
     int32_t v = dh_trig_sin_q30[n];
     if (n == 1u) {
         v--;
@@ -116,8 +119,8 @@ static float dh_trig_tab_f32(uint32_t n, uint32_t neg)
         v = -v;
     }
     return (float)v * 0x1p-30f;
-#endif
 }
+#endif
 
 dh_status dh_sincos_f32(float deg, float *s, float *c)
 {

@@ -44,6 +44,17 @@ static int32_t dh_trig_u2i(uint32_t v)
     return (v & 0x80000000u) ? -(int32_t)(0u - v) : (int32_t)v;
 }
 
+/*
+ * sin(m + f) and cos(m + f) (Q2.30) for the whole degrees m in
+ * 0..89 and the fraction fr (f = fr / 65536 degree), steps 3 and 4 of the
+ * file comment up to the clamp (a value below 0 wraps to >= 2^31). One whole body per multiply: 16-bit partials where
+ * a 64-bit product is a call (DH_PORT_USE_SPLIT16, ARMv6-M), 32x32->64
+ * products elsewhere; the same values for every fr (exhaustive test).
+ */
+typedef struct {
+    uint32_t s, c;
+} trig_q_sc;
+
 #if DH_PORT_USE_SPLIT16
 /* a b = h 2^32 + m 2^16 + l (m, l < 2^16) from four 16x16 products, for
  * a <= 2^30 and b < 2^31.2 (the callers' factors): then ah bl + al bh +
@@ -61,38 +72,20 @@ DH_PORT_INLINE void trig_p16_mul(trig_p16 *r, uint32_t a, uint32_t b)
     r->m = c & 0xFFFFu;
     r->l = ll & 0xFFFFu;
 }
-#endif
 
-void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
+static trig_q_sc trig_q_add_frac(uint32_t m, uint32_t fr)
 {
-    uint32_t u, n, q, k, m, fr, sv, cv, t, h, h3, t3, t4, sf, cm, d;
+    trig_q_sc r;
+    const uint32_t sv = (uint32_t)dh_trig_sin_q30[m];       /* sin m, 0..2^30 */
+    const uint32_t cv = (uint32_t)dh_trig_sin_q30[90u - m]; /* cos m, 0..2^30 */
+    uint32_t t, h, h3, t3, t4, sf, cm, d;
 
-    DH_ASSERT(s_q30 != NULL);
-    DH_ASSERT(c_q30 != NULL);
-
-    /* (uint32_t)x is defined (modulo 2^32); 0u - that is the magnitude */
-    u = (deg_q16 < 0) ? (0u - (uint32_t)deg_q16) : (uint32_t)deg_q16;
-    n = u >> 16;                                /* 0..32768 whole degrees */
-    fr = u & 0xFFFFu;
-
-    q = (n * DH_TRIG_DIV90_32) >> 23;           /* floor(n / 90), exact */
-    m = n - 90u * q;                            /* 0..89 */
-    k = q & 3u;                                 /* quadrant: 90 * 4 = 360 */
-    k |= (uint32_t)(deg_q16 < 0) << 2;          /* and the input's sign (one value live) */
-    sv = (uint32_t)dh_trig_sin_q30[m];          /* sin m, 0..2^30 */
-    cv = (uint32_t)dh_trig_sin_q30[90u - m];    /* cos m, 0..2^30 */
-
-    /* f in radians, units 2^-37: T <= 65535 * KT / 2^16 < 2^31.2 */
-#if DH_PORT_USE_SPLIT16
-    /* fr < 2^16: the same value from two 32-bit products (exact: both
-     * partial products and the sum stay below 2^32) */
+    /* f in radians, units 2^-37: T <= 65535 * KT / 2^16 < 2^31.2. fr <
+     * 2^16: T from two 32-bit products (exact: both partial products and
+     * the sum stay below 2^32) */
     t  = fr * (DH_TRIG_KT >> 16) + ((fr * (DH_TRIG_KT & 0xFFFFu) + 0x8000u) >> 16);
-#else
-    t  = (uint32_t)((dh_trig_mul64(fr, DH_TRIG_KT) + 0x8000u) >> 16);
-#endif
-#if DH_PORT_USE_SPLIT16
-    /* The same four values without 64-bit products (no __aeabi_lmul, no
-     * out-of-line call): with the 16-bit halves th, tl of t (th < 2^15.2)
+    /* t^2/2, t^2/6, t^3/6, t^4/24 without 64-bit products (no __aeabi_lmul,
+     * no out-of-line call): with the 16-bit halves th, tl of t (th < 2^15.2)
      * and the small factors h < 2^24.4, h3 < 2^22.9 (gh = h3 >> 16 < 2^7),
      * each rounding by 2^k, k > 32, only needs the exact high word
      * H = floor(a b / 2^32) = ah bh + floor((ah bl + al bh + floor(al bl /
@@ -118,23 +111,10 @@ void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
         hl = h & 0xFFFFu;
         t4 = (hh * gh + ((hh * gl + hl * gh + ((hl * gl) >> 16)) >> 16) + 32u) >> 6;
     }
-#else
-    h  = (uint32_t)((dh_trig_mul64(t, t) + ((uint64_t)1 << 37)) >> 38);      /* t^2/2  */
-    /* the same value: INV3 = (2^32 - 1) / 3 exactly, so for h = 3 q + r
-     * the product rounds to q + (r == 2) while h / 2^32 < 1/6, i.e. for
-     * every h < 2^29 (here h < 2^24.5; also checked exhaustively below
-     * 2^26). A division by a constant compiles to a multiply-high where
-     * a 32x32->64 multiply exists; GCC expands the product by 0x55555555
-     * instead into a 20-instruction shift-add chain at -O2 on Cortex-M4. */
-    h3 = (h + 1u) / 3u;                                                     /* t^2/6  */
-    t3 = (uint32_t)((dh_trig_mul64(t, h3) + ((uint64_t)1 << 36)) >> 37);     /* t^3/6  */
-    t4 = (uint32_t)((dh_trig_mul64(h, h3) + ((uint64_t)1 << 37)) >> 38);     /* t^4/24 */
-#endif
     sf = t - t3;                                /* sin f,     0 .. 2^31.2 */
     cm = h - t4;                                /* 1 - cos f, 0 .. 2^24.4 */
 
-#if DH_PORT_USE_SPLIT16
-    /* The same two corrections from 16-bit partials (see trig_p16): for
+    /* The two corrections from 16-bit partials (see trig_p16): for
      * P = A - B or A + B (each split as H 2^32 + M 2^16 + L) the rounding
      * by 2^37 needs the high words, the middle halves and, from the low
      * halves, only the borrow / carry into the middle: X = floor(P / 2^16)
@@ -152,24 +132,73 @@ void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
         trig_p16_mul(&pa, cv, cm);
         trig_p16_mul(&pb, sv, sf);
         z = pa.m + pb.m + ((uint32_t)1 << 20) + ((pa.l + pb.l) >> 16);
-        sv = sv + d - ((uint32_t)1 << 25);      /* true value in [0, 2^30] */
-        cv = cv - ((pa.h + pb.h + (z >> 16)) >> 5);
+        r.s = sv + d - ((uint32_t)1 << 25);      /* true value in [0, 2^30] */
+        r.c = cv - ((pa.h + pb.h + (z >> 16)) >> 5);
     }
+    return r;
+}
 #else
+static trig_q_sc trig_q_add_frac(uint32_t m, uint32_t fr)
+{
+    trig_q_sc r;
+    const uint32_t sv = (uint32_t)dh_trig_sin_q30[m];       /* sin m, 0..2^30 */
+    const uint32_t cv = (uint32_t)dh_trig_sin_q30[90u - m]; /* cos m, 0..2^30 */
+    uint32_t t, h, h3, t3, t4, sf, cm, d;
+
+    /* f in radians, units 2^-37: T <= 65535 * KT / 2^16 < 2^31.2 */
+    t  = (uint32_t)((dh_trig_mul64(fr, DH_TRIG_KT) + 0x8000u) >> 16);
+    h  = (uint32_t)((dh_trig_mul64(t, t) + ((uint64_t)1 << 37)) >> 38);      /* t^2/2  */
+    /* the same value: INV3 = (2^32 - 1) / 3 exactly, so for h = 3 q + r
+     * the product rounds to q + (r == 2) while h / 2^32 < 1/6, i.e. for
+     * every h < 2^29 (here h < 2^24.5; also checked exhaustively below
+     * 2^26). A division by a constant compiles to a multiply-high where
+     * a 32x32->64 multiply exists; GCC expands the product by 0x55555555
+     * instead into a 20-instruction shift-add chain at -O2 on Cortex-M4. */
+    h3 = (h + 1u) / 3u;                                                     /* t^2/6  */
+    t3 = (uint32_t)((dh_trig_mul64(t, h3) + ((uint64_t)1 << 36)) >> 37);     /* t^3/6  */
+    t4 = (uint32_t)((dh_trig_mul64(h, h3) + ((uint64_t)1 << 37)) >> 38);     /* t^4/24 */
+    sf = t - t3;                                /* sin f,     0 .. 2^31.2 */
+    cm = h - t4;                                /* 1 - cos f, 0 .. 2^24.4 */
+
     /* sin(m+f) = S + (C sin f - S (1 - cos f)). The difference of the two
      * products (each < 2^61.2, units 2^-67) is biased by 2^62 so that it is
      * rounded by an unsigned shift (no signed right shift anywhere); the
      * bias 2^25 is taken off again in modular uint32 arithmetic. */
     d = (uint32_t)((dh_trig_mul64(cv, sf) - dh_trig_mul64(sv, cm)
                     + ((uint64_t)1 << 62) + ((uint64_t)1 << 36)) >> 37);
-    sv = sv + d - ((uint32_t)1 << 25);          /* true value in [0, 2^30] */
+    r.s = sv + d - ((uint32_t)1 << 25);          /* true value in [0, 2^30] */
     /* cos(m+f) = C - (C (1 - cos f) + S sin f) */
     {
         const uint64_t pc = dh_trig_mul64(cv, cm) + dh_trig_mul64((uint32_t)dh_trig_sin_q30[m], sf);
         d = (uint32_t)((pc + ((uint64_t)1 << 36)) >> 37);
-        cv = cv - d;                            /* true value in [0, 2^30] */
+        r.c = cv - d;                           /* true value in [0, 2^30] */
     }
+    return r;
+}
 #endif
+
+void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
+{
+    uint32_t u, n, q, k, m, fr, sv, cv;
+
+    DH_ASSERT(s_q30 != NULL);
+    DH_ASSERT(c_q30 != NULL);
+
+    /* (uint32_t)x is defined (modulo 2^32); 0u - that is the magnitude */
+    u = (deg_q16 < 0) ? (0u - (uint32_t)deg_q16) : (uint32_t)deg_q16;
+    n = u >> 16;                                /* 0..32768 whole degrees */
+    fr = u & 0xFFFFu;
+
+    q = (n * DH_TRIG_DIV90_32) >> 23;           /* floor(n / 90), exact */
+    m = n - 90u * q;                            /* 0..89 */
+    k = q & 3u;                                 /* quadrant: 90 * 4 = 360 */
+    k |= (uint32_t)(deg_q16 < 0) << 2;          /* and the input's sign (one value live) */
+    {
+        const trig_q_sc r = trig_q_add_frac(m, fr);
+        sv = r.s;
+        cv = r.c;
+    }
+
     /* clamp to [0, 2^30]: a result below 0 wrapped to >= 2^31 */
     sv = (sv > DH_TRIG_Q30) ? ((sv >= 0x80000000u) ? 0u : DH_TRIG_Q30) : sv;
     cv = (cv > DH_TRIG_Q30) ? ((cv >= 0x80000000u) ? 0u : DH_TRIG_Q30) : cv;
