@@ -153,23 +153,22 @@ static float dh_euler_clamp(float d, float lo, float hi)
  */
 static void dh_euler_solve(const dh_mat3_f32 *R, int i, int j, int k, int zero_first, float out[3])
 {
-#define RR(r, c) DH_M3(R, (r), (c))
     int proper = (i == k);
     int l = proper ? 3 - i - j : k;
     float s = (j == i + 1 || j == i - 2) ? 1.0f : -1.0f; /* cyclic: xy, yz, zx */
     float t = s, u = s, y, x, p2, q1, q2, n, b, f, g, cf, sf;
 
     if (!proper && !zero_first) {
-        y = -s * RR(i, j); x = RR(i, i); p2 = RR(j, i); q1 = RR(k, j); q2 = RR(k, i);
+        y = -s * DH_M3(R, i, j); x = DH_M3(R, i, i); p2 = DH_M3(R, j, i); q1 = DH_M3(R, k, j); q2 = DH_M3(R, k, i);
     } else if (!proper) {
-        y = -s * RR(j, k); x = RR(k, k); p2 = RR(k, j); q1 = RR(j, i); q2 = RR(k, i);
+        y = -s * DH_M3(R, j, k); x = DH_M3(R, k, k); p2 = DH_M3(R, k, j); q1 = DH_M3(R, j, i); q2 = DH_M3(R, k, i);
     } else if (!zero_first) {
-        y = RR(i, j); x = s * RR(i, l); p2 = RR(j, l); q1 = RR(l, j); q2 = RR(l, l); t = -s;
+        y = DH_M3(R, i, j); x = s * DH_M3(R, i, l); p2 = DH_M3(R, j, l); q1 = DH_M3(R, l, j); q2 = DH_M3(R, l, l); t = -s;
     } else {
-        y = RR(j, i); x = -s * RR(l, i); p2 = RR(l, j); q1 = RR(j, l); q2 = RR(l, l); u = -s;
+        y = DH_M3(R, j, i); x = -s * DH_M3(R, l, i); p2 = DH_M3(R, l, j); q1 = DH_M3(R, j, l); q2 = DH_M3(R, l, l); u = -s;
     }
     n = dh_sqrt_f32(x * x + y * y);           /* cos b (Tait-Bryan), sin b (proper) */
-    b = proper ? dh_euler_atan2_deg(n, RR(i, i)) : dh_euler_atan2_deg(s * RR(i, k), n);
+    b = proper ? dh_euler_atan2_deg(n, DH_M3(R, i, i)) : dh_euler_atan2_deg(s * DH_M3(R, i, k), n);
     if (n <= DH_EULER_POLE_TOL) {
         f = 0.0f; cf = 1.0f; sf = 0.0f;
     } else {
@@ -177,11 +176,10 @@ static void dh_euler_solve(const dh_mat3_f32 *R, int i, int j, int k, int zero_f
         cf = x / n;
         sf = y / n;
     }
-    g = dh_euler_atan2_deg(u * (cf * q1 + t * sf * q2), cf * RR(j, j) + t * sf * p2);
+    g = dh_euler_atan2_deg(u * (cf * q1 + t * sf * q2), cf * DH_M3(R, j, j) + t * sf * p2);
     out[0] = zero_first ? f : g;
     out[1] = b;
     out[2] = zero_first ? g : f;
-#undef RR
 }
 
 dh_status dh_mat3_to_euler_f32(const dh_mat3_f32 *R, dh_euler_seq seq, float ang_deg[3])
