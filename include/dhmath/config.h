@@ -118,7 +118,7 @@
 /**
  * @name Configuration check
  * The library defines one symbol per interface setting, named after the
- * value it was built with (src/dh_config.c), e.g.
+ * value it was built with (src/config/dh_config.c), e.g.
  * dhmath_config_mismatch_DH_MAX_JOINTS_is_8. Every translation unit that
  * includes this header (GCC 11 or later, Clang 13 or later, ELF targets)
  * references the symbols of ITS values from a 4-byte-aligned pair of

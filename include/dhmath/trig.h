@@ -83,7 +83,7 @@ float dh_cos_f32(float deg);
  * degrees: the correctly rounded Q2.30 value; multiples of 90: exactly 0
  * and +-0x40000000. sin(-x) == -sin(x), cos(-x) == cos(x) exactly
  * (INT32_MIN, -32768 degrees, gives sin(-8 deg)). No intermediate can
- * overflow for any int32 input (proof in src/dh_trig_q.c).
+ * overflow for any int32 input (proof in src/trig/dh_trig_q.c).
  *
  * Integer only: no float, no libm, no division. Cannot fail.
  */
@@ -120,7 +120,7 @@ dh_q30 dh_cos_q(dh_q16 deg_q16);
  * A value y < 0 whose angle rounds to -180 gives -179.99998 (the float
  * above -180). atan2(-y, x) == -atan2(y, x) bit for bit except at 180.
  * No libm, no double; the arithmetic is shared with the library's radian
- * atan2 (src/dh_mathf.c).
+ * atan2 (src/internal/dh_mathf.c).
  *
  * @return DH_OK; DH_ERR_NAN if x or y is NaN or +-Inf; DH_ERR_DOMAIN for
  *         x == y == 0 (either sign). *deg is untouched on an error.
@@ -164,7 +164,7 @@ dh_status dh_acos_f32(float c, float *deg);
  *                 -11796479 .. 11796480. Must not be NULL (DH_ASSERT).
  *
  * Error bound: |error| <= 1 LSB (2^-16 deg = 1.5e-5 deg) against the exact
- * angle (analysis 0.83 LSB, src/dh_itrig_q.c). Exact: 0, +-45, +-90,
+ * angle (analysis 0.83 LSB, src/trig/dh_itrig_q.c). Exact: 0, +-45, +-90,
  * +-135, 180 where |y| == |x| or one of them is 0; y == 0, x < 0 gives
  * +180; y < 0 whose angle rounds to -180 gives -180 + 1 LSB.
  * atan2(-y, x) == -atan2(y, x) except there. Integer only (CORDIC, a

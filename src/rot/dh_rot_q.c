@@ -376,7 +376,7 @@ static DH_NOINLINE dh_q16 rotq_middle(int32_t y, int32_t x)
     return d;
 }
 
-/* The float solver dh_euler_solve (src/dh_euler.c), division free: the
+/* The float solver dh_euler_solve (src/rot/dh_euler.c), division free: the
  * atan2 arguments of g carry the common factor n instead of dividing by it. */
 static DH_NOINLINE void rotq_solve(const dh_frame_q *F, unsigned i, unsigned j, unsigned k, int zero_first,
                                    dh_q16 *out)

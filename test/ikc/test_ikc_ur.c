@@ -448,7 +448,7 @@ static void ikc_ur_corner(void) { corner_run(0.0); }
  * elbow's planar point. */
 static void ikc_ur_corner_off(void) { corner_run(3e-4); }
 
-/* The float boundary bound of src/dh_ikc_ur.c: tol = 4e-7 L (L the sum of
+/* The float boundary bound of src/ikc/dh_ikc_par234.c: tol = 4e-7 L (L the sum of
  * the robot's |a| and |d|); solved within tol / 4 beyond the boundary (the
  * solver's own rounding takes up to about half of tol: UR10), refused
  * beyond 3 tol. The double parameters of the description

@@ -281,7 +281,7 @@ static void scara_shoulder_singular(void)
 
 /* ---- targets on and beyond the workspace boundary -------------------------- */
 
-/* B of src/dh_ikc_ur_q.c: 64 LSB of the position format, in length units */
+/* B of src/ikc/dh_ikc_par234_q.c: 64 LSB of the position format, in length units */
 #define BOUND ldexp(64.0, -DH_QPOS_FRAC)
 
 /* T translated by dist along the unit vector e */

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * test_mathf.c - the library's private float helpers (src/dh_mathf.h):
+ * test_mathf.c - the library's private float helpers (src/internal/dh_mathf.h):
  * dh_atan2f_ and dh_sincosf_ against double-precision libm atan2 / sin /
  * cos evaluated on the same float inputs (converted to double exactly).
  *

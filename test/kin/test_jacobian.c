@@ -478,7 +478,7 @@ static void pose_error_matches(void)
     }
 }
 
-/* The library's integer square root (src/dh_kin_impl.h) must equal the
+/* The library's integer square root (src/kin/kin_impl.h) must equal the
  * correctly rounded IEEE square root bit for bit: compared with the
  * double-precision root rounded to float (exactly the correctly rounded
  * float root: double has more than 2 * 24 + 2 bits), over random bit

@@ -275,7 +275,7 @@ static void exp_map(void)
 
 /* The float |phi| is off by up to 1.5 ulp; this vector's 1.2 ulp (2.9e-7
  * rad) put the entries 4.2e-7 away when |phi| was used as the angle: the
- * length is carried to about 2^-44 relative (src/dh_rotvec.c). */
+ * length is carried to about 2^-44 relative (src/rot/dh_rotvec.c). */
 static void exp_length_rounding(void)
 {
     static const float v[][3] = {
