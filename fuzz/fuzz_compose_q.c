@@ -16,7 +16,7 @@
  *    and |R^T R - I| <= 2 LSB (the contract's measured figures);
  *  - dh_frame_rotx/y/z_q: entries exactly the dh_sincos_q values;
  *  - dh_frame_ortho_error_q: equals the exact 128-bit value;
- *  - dh_frame_orthonormalize_chk_q: DH_ERR_NOT_RIGID leaves F untouched;
+ *  - dh_frame_orthonormalize_q: DH_ERR_NOT_RIGID leaves F untouched;
  *    DH_OK only within its documented domain (entries <= 1.25, error
  *    <= 1/8), never DH_ERR_OVERFLOW, and the error after one Newton step
  *    is at most 2.25 e^2 + 2.25 e^3 (from E' = -3/4 E^2 + 1/4 E^3 with
@@ -185,7 +185,7 @@ static void check_ortho(const dh_frame_q *F)
 
     FZ_CHECK(lib == (e > INT32_MAX ? INT32_MAX : (int32_t)e), "ortho_error %ld vs exact %.0f", (long)lib,
              (double)e);
-    st = dh_frame_orthonormalize_chk_q(&G);
+    st = dh_frame_orthonormalize_q(&G, &G);
     FZ_CHECK(st == DH_OK || st == DH_ERR_NOT_RIGID, "orthonormalize status %d", (int)st);
     for (i = 0; i < 3u; i++)
         for (j = 0; j < 3u; j++)

@@ -4,8 +4,8 @@
  *   dh_frame_q.c  dh_frame_identity_q, dh_frame_trans_q, dh_frame_rotx_q,
  *                 dh_frame_roty_q, dh_frame_rotz_q, dh_frame_rot_axis_q,
  *                 dh_frame_mul_q, dh_frame_inv_q, dh_frame_apply_point_q,
- *                 dh_frame_apply_dir_q, dh_frame_orthonormalize_chk_q,
- *                 dh_frame_orthonormalize_q, dh_frame_ortho_error_q
+ *                 dh_frame_apply_dir_q, dh_frame_orthonormalize_q,
+ *                 dh_frame_ortho_error_q
  */
 /**
  * @file frame.h
@@ -122,7 +122,7 @@ void dh_frame_rotz_q(dh_q16 deg, dh_frame_q *F);
  * int32 values including INT32_MIN (the unit axis is exact to about 2^-44;
  * only an INT32_MIN component costs the others their lowest bit). The
  * result is given one re-orthonormalisation step
- * (dh_frame_orthonormalize_chk_q()). Entries within 3 LSB of the exact
+ * (dh_frame_orthonormalize_q()). Entries within 3 LSB of the exact
  * formula (dh_sincos_q's error included; checked over 200 seeds of random
  * axes), dh_frame_ortho_error_q(F) <= 3 (derived in docs/design.md).
  *
@@ -171,27 +171,22 @@ dh_status dh_frame_apply_point_q(const dh_frame_q *F, const dh_vec3_q *u, dh_vec
 dh_status dh_frame_apply_dir_q(const dh_frame_q *F, const dh_vec3_q *u, dh_vec3_q *v);
 
 /**
- * @brief Re-orthonormalise the rotation part in place by one Newton step
- *        R <- R (3 I - R^T R) / 2 (position untouched).
+ * @brief out = F with its rotation part re-orthonormalised by one Newton
+ *        step R <- R (3 I - R^T R) / 2 (position copied), the fixed twin of
+ *        dh_mat3_orthonormalize_f32.
  *
  * The step is quadratically convergent: an input error e (largest
  * |R^T R - I| entry) becomes about 3/4 e^2 plus rounding, so frames
  * accumulated over many compositions stay within a few LSB of orthonormal
  * when this is called regularly (e.g. once every 64 compositions). Keeps
  * the sign of det R.
- * @return DH_OK; DH_ERR_NOT_RIGID (F untouched) if an entry exceeds 1.25 in
- *         magnitude or the error exceeds 1/8 (2^27 LSB), where a single
+ * @return DH_OK; DH_ERR_NOT_RIGID (out untouched) if an entry exceeds 1.25
+ *         in magnitude or the error exceeds 1/8 (2^27 LSB), where a single
  *         step would not be reliable. No other status: for the accepted
  *         inputs every entry of the step stays inside [-2, 2) (proved in
- *         the source), so it cannot saturate.
+ *         the source), so it cannot saturate. out may alias F.
  */
-dh_status dh_frame_orthonormalize_chk_q(dh_frame_q *F);
-
-/**
- * @brief dh_frame_orthonormalize_chk_q() without the status: F is left
- *        untouched when it is too far from orthonormal (see there).
- */
-void dh_frame_orthonormalize_q(dh_frame_q *F);
+dh_status dh_frame_orthonormalize_q(const dh_frame_q *F, dh_frame_q *out);
 
 /**
  * @brief Largest |(R^T R - I)_ij| in Q2.30 LSB (drift measure), exact up

@@ -11,7 +11,7 @@
  *                  dh_mat4_postmul_f32, dh_mat4_apply_point_f32,
  *                  dh_mat4_apply_dir_f32, dh_mat4_apply_vec4_f32,
  *                  dh_mat4_apply_point_h_f32, dh_plane_mul_f32,
- *                  dh_mat4_apply_points_f32, dh_mat4_isfinite_f32
+ *                  dh_mat4_apply_points_f32, dh_mat4_check_finite_f32
  *   dh_mat4_inv.c  dh_mat4_apply_plane_f32, dh_mat4_inv_rigid_f32,
  *                  dh_mat4_inv_f32, dh_mat4_check_rot_f32,
  *                  dh_mat4_check_rigid_f32, dh_mat4_inv_auto_f32
@@ -340,8 +340,12 @@ dh_status dh_mat4_check_rigid_f32(const dh_mat4_f32 *T, float tol);
 dh_status dh_mat4_inv_auto_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out);
 
 /* ---- misc ---- */
-/** @brief 1 if every element of T is finite, else 0. Cannot fail. */
-int dh_mat4_isfinite_f32(const dh_mat4_f32 *T);
+/**
+ * @brief Whether every element of T is finite.
+ * @return DH_OK if every element is finite; DH_ERR_NAN if one is NaN or
+ *         +-Inf. No other status.
+ */
+dh_status dh_mat4_check_finite_f32(const dh_mat4_f32 *T);
 
 #ifdef __cplusplus
 }

@@ -501,16 +501,14 @@ static DH_NOINLINE dh_status dh_ortho_chk(const dh_frame_q *F)
 }
 
 /* checks and step are separate calls: the stack depth is the larger of the two */
-dh_status dh_frame_orthonormalize_chk_q(dh_frame_q *F)
+dh_status dh_frame_orthonormalize_q(const dh_frame_q *F, dh_frame_q *out)
 {
     dh_status st;
-    DH_ASSERT(F != NULL);
+    DH_ASSERT(F != NULL && out != NULL);
     st = dh_ortho_chk(F);
-    if (st == DH_OK) dh_ortho_step(F);
+    if (st == DH_OK) {
+        *out = *F; /* exact overlap when out is F */
+        dh_ortho_step(out);
+    }
     return st;
-}
-
-void dh_frame_orthonormalize_q(dh_frame_q *F)
-{
-    (void)dh_frame_orthonormalize_chk_q(F);
 }

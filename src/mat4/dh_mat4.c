@@ -617,7 +617,7 @@ void dh_mat4_apply_vec4_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec4_
 
 /* x * 0 is +-0 for finite x and NaN for NaN and +-Inf; a sum of +-0 is
  * never NaN */
-int dh_mat4_isfinite_f32(const dh_mat4_f32 *T)
+dh_status dh_mat4_check_finite_f32(const dh_mat4_f32 *T)
 {
     float z = 0.0f;
     int c, r;
@@ -625,7 +625,7 @@ int dh_mat4_isfinite_f32(const dh_mat4_f32 *T)
     for (c = 0; c < 4; c++) {
         for (r = 0; r < 4; r++) z += T->m[c][r] * 0.0f;
     }
-    return dh_feq_f32(z, z);
+    return dh_feq_f32(z, z) ? DH_OK : DH_ERR_NAN;
 }
 
 /*
@@ -647,7 +647,7 @@ DH_INLINE dh_status mat4_point_h_general(const dh_mat4_f32 *T, const float *in, 
         z += h[i] * 0.0f;
         zi += in[i] * 0.0f;
     }
-    if (!dh_feq_f32(z, z)) return (dh_mat4_isfinite_f32(T) && dh_feq_f32(zi, zi)) ? DH_ERR_OVERFLOW : DH_ERR_NAN;
+    if (!dh_feq_f32(z, z)) return (dh_mat4_check_finite_f32(T) == DH_OK && dh_feq_f32(zi, zi)) ? DH_ERR_OVERFLOW : DH_ERR_NAN;
     if (dh_feq_f32(h[3], 0.0f)) return DH_ERR_DOMAIN;
     for (i = 0; i < 3; i++) {
         h[i] = h[i] / h[3] + 0.0f;
@@ -693,7 +693,7 @@ dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, 
         z += h[i] * 0.0f;
         zi += in[i] * 0.0f;
     }
-    if (!dh_feq_f32(z, z)) return (dh_mat4_isfinite_f32(T) && dh_feq_f32(zi, zi)) ? DH_ERR_OVERFLOW : DH_ERR_NAN;
+    if (!dh_feq_f32(z, z)) return (dh_mat4_check_finite_f32(T) == DH_OK && dh_feq_f32(zi, zi)) ? DH_ERR_OVERFLOW : DH_ERR_NAN;
     if (dh_feq_f32(h[3], 0.0f)) return DH_ERR_DOMAIN;
     for (i = 0; i < 3; i++) {
         h[i] = h[i] / h[3] + 0.0f;

@@ -686,7 +686,7 @@ dh_status dh_mat4_check_rigid_f32(const dh_mat4_f32 *T, float tol)
 {
     DH_ASSERT(T != NULL);
     if (!(tol >= 0.0f)) return DH_ERR_ARG;
-    if (!dh_mat4_isfinite_f32(T)) return DH_ERR_NAN;
+    if (dh_mat4_check_finite_f32(T) != DH_OK) return DH_ERR_NAN;
     if (!dh_is_affine(T)) return DH_ERR_NOT_RIGID;
     return dh_mat4_check_rot_f32(T, tol);
 }

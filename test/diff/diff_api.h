@@ -116,7 +116,6 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_frame_inv_q, g_frames, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_frame_apply_point_q, g_frames, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_frame_apply_dir_q, g_frames, 1000000, DIFF_OUT_SMALL, C_BITS) \
-    X(dh_frame_orthonormalize_chk_q, g_frames, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_frame_orthonormalize_q, g_frames, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_frame_ortho_error_q, g_frames, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_frame_from_mat4_q, g_mat1, 1000000, DIFF_OUT_SMALL, C_BITS) \
@@ -153,7 +152,7 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_mat4_check_rigid_f32, g_check, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_mat4_inv_auto_f32, g_inv, 1000000, DIFF_OUT_SMALL, C_INV) \
     X(dh_mat4_to_axis_angle_f32, g_rot, 1000000, DIFF_OUT_SMALL, C_BITS) \
-    X(dh_mat4_isfinite_f32, g_mat1, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_mat4_check_finite_f32, g_mat1, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_euler_parse, g_string, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_euler_name, g_ints, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_euler_to_mat3_f32, g_euler, 1000000, DIFF_OUT_SMALL, C_BITS) \

@@ -394,26 +394,28 @@ static void fixed_saturation_wrap_and_edges(void)
  * untouched, also by the void form); ortho_error saturates */
 static void fixed_orthonormalize_bad(void)
 {
-    dh_frame_q F, G;
+    dh_frame_q F, G, H, K;
     dh_frame_identity_q(&F);
     F.p[0] = 123;
     F.r[0][0] = (int32_t)(1.3 * TWO30); /* entry beyond 1.25 */
     G = F;
-    DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(dh_frame_orthonormalize_q(&F, &F), DH_ERR_NOT_RIGID);
     DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
-    dh_frame_orthonormalize_q(&F);
-    DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
+    dh_frame_identity_q(&H); /* out of place: out untouched too */
+    K = H;
+    DHT_EQ_INT(dh_frame_orthonormalize_q(&F, &H), DH_ERR_NOT_RIGID);
+    DHT_TRUE(memcmp(&H, &K, sizeof H) == 0);
     /* entries within 1.25 but R^T R - I beyond 1/8 (0.7 off the diagonal) */
     dh_frame_identity_q(&F);
     F.r[1][0] = (int32_t)(0.7 * TWO30);
     G = F;
-    DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(dh_frame_orthonormalize_q(&F, &F), DH_ERR_NOT_RIGID);
     DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
     /* a reflection is kept a reflection (det sign preserved, documented) */
     dh_frame_identity_q(&F);
     F.r[2][2] = -DH_Q30_ONE;
     F.r[0][0] = DH_Q30_ONE + 1000;
-    DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_OK);
+    DHT_EQ_INT(dh_frame_orthonormalize_q(&F, &F), DH_OK);
     DHT_TRUE(F.r[2][2] < 0);
     DHT_TRUE(dh_frame_ortho_error_q(&F) <= 2);
     /* saturation of the drift measure: every entry -2.0 */
@@ -424,7 +426,7 @@ static void fixed_orthonormalize_bad(void)
     }
     DHT_EQ_INT(dh_frame_ortho_error_q(&F), INT32_MAX);
     G = F;
-    DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(dh_frame_orthonormalize_q(&F, &F), DH_ERR_NOT_RIGID);
     DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
 }
 

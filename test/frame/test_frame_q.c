@@ -544,7 +544,7 @@ static void ortho_error_measure(void)
         int i, j;
         for (i = 0; i < 3; i++) for (j = 0; j < 3; j++) F.r[i][j] = INT32_MIN;
         DHT_EQ_INT(dh_frame_ortho_error_q(&F), INT32_MAX);
-        DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_ERR_NOT_RIGID);
+        DHT_EQ_INT(dh_frame_orthonormalize_q(&F, &F), DH_ERR_NOT_RIGID);
         DHT_EQ_INT(F.r[1][2], INT32_MIN); /* untouched */
     }
     {   /* a negative dot product beyond -2 saturates to INT32_MIN, whose
@@ -562,38 +562,40 @@ static void ortho_error_measure(void)
      * (c0 . c1 = -1/4), F untouched */
     dh_frame_identity_q(&F);
     F.r[0][0] = DH_Q30_ONE / 2;
-    DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(dh_frame_orthonormalize_q(&F, &F), DH_ERR_NOT_RIGID);
     DHT_EQ_INT(F.r[0][0], DH_Q30_ONE / 2);
     dh_frame_identity_q(&F);
     F.r[1][0] = -DH_Q30_ONE / 4;
-    DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(dh_frame_orthonormalize_q(&F, &F), DH_ERR_NOT_RIGID);
     DHT_EQ_INT(F.r[1][0], -DH_Q30_ONE / 4);
     DHT_EQ_INT(F.r[1][1], DH_Q30_ONE);
     /* just inside: c0 . c1 = -1/16 is repaired to about 3/4 (1/16)^2 =
      * 3.1e6 LSB (quadratic convergence), below 2^22 */
     F.r[1][0] = -DH_Q30_ONE / 16;
-    DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_OK);
+    DHT_EQ_INT(dh_frame_orthonormalize_q(&F, &F), DH_OK);
     DHT_TRUE_MSG(dh_frame_ortho_error_q(&F) < (1 << 22), "after one step from 1/16: %ld",
                  (long)dh_frame_ortho_error_q(&F));
     /* one step repairs a visibly perturbed rotation */
     DHT_EQ_INT(dh_frame_rot_axis_q(3, -4, 12, 77 * 65536, &F), DH_OK);
     F.r[0][0] += 10000; F.r[1][2] -= 8000; F.r[2][1] += 6000;
     DHT_TRUE(dh_frame_ortho_error_q(&F) > 10000);
-    {   /* the void form does the same step */
-        dh_frame_q G = F;
-        dh_frame_orthonormalize_q(&G);
-        DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_OK);
+    {   /* out of place: the same step */
+        dh_frame_q G;
+        DHT_EQ_INT(dh_frame_orthonormalize_q(&F, &G), DH_OK);
+        DHT_EQ_INT(dh_frame_orthonormalize_q(&F, &F), DH_OK);
         DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
     }
     DHT_TRUE_MSG(dh_frame_ortho_error_q(&F) <= 2, "after one step %ld", (long)dh_frame_ortho_error_q(&F));
-    /* far from orthonormal: refused, F untouched (also by the void form) */
+    /* far from orthonormal: refused, F untouched (in place and out of place) */
     F.r[0][0] = DH_Q30_ONE / 2;
     {
-        dh_frame_q G = F;
-        DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&F), DH_ERR_NOT_RIGID);
+        dh_frame_q G = F, H, K;
+        DHT_EQ_INT(dh_frame_orthonormalize_q(&F, &F), DH_ERR_NOT_RIGID);
         DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
-        dh_frame_orthonormalize_q(&F);
-        DHT_TRUE(memcmp(&F, &G, sizeof F) == 0);
+        dh_frame_identity_q(&H);
+        K = H;
+        DHT_EQ_INT(dh_frame_orthonormalize_q(&F, &H), DH_ERR_NOT_RIGID);
+        DHT_TRUE(memcmp(&H, &K, sizeof H) == 0);
     }
 }
 
@@ -615,7 +617,7 @@ static void drift_bounded_with_orthonormalisation(void)
         DHT_EQ_INT(dh_frame_mul_q(&Fa, s, &Fa), DH_OK);
         DHT_EQ_INT(dh_frame_mul_q(&Fb, s, &Fb), DH_OK);
         if ((k & 63) == 63) {
-            DHT_EQ_INT(dh_frame_orthonormalize_chk_q(&Fb), DH_OK);
+            DHT_EQ_INT(dh_frame_orthonormalize_q(&Fb, &Fb), DH_OK);
             i = dh_frame_ortho_error_q(&Fb);
             if (i > eb_max) eb_max = i;
         }

@@ -629,12 +629,12 @@ static void isfinite_all_positions(void)
     dh_mat4_f32 T;
     int i, j;
     dh_mat4_identity_f32(&T);
-    DHT_EQ_INT(dh_mat4_isfinite_f32(&T), 1);
+    DHT_EQ_INT(dh_mat4_check_finite_f32(&T), DH_OK);
     for (i = 0; i < 4; i++)
         for (j = 0; j < 4; j++) {
             dh_mat4_identity_f32(&T);
             DH_M4(&T, i, j) = ((i + j) & 1) ? NAN : -INFINITY;
-            DHT_EQ_INT(dh_mat4_isfinite_f32(&T), 0);
+            DHT_EQ_INT(dh_mat4_check_finite_f32(&T), DH_ERR_NAN);
             DHT_TRUE(dh_mat4_inv_f32(&T, &T) == DH_ERR_NAN);
         }
 }

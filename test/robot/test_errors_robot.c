@@ -318,7 +318,7 @@ static void robot_fk_f32_bad(void)
         q[2] = 0.0f;
         DHT_EQ_INT(dh_fk_f32(&r, q, &T), DH_ERR_OVERFLOW);
         DHT_TRUE(!is_canary(&T, sizeof T));
-        DHT_TRUE(!dh_mat4_isfinite_f32(&T));
+        DHT_EQ_INT(dh_mat4_check_finite_f32(&T), DH_ERR_NAN);
         DHT_EQ_F32_BITS(DH_M4(&T, 3, 3), 1.0f);
         DHT_EQ_INT(dh_fk_frames_f32(&r, q, frames, NULL), DH_ERR_OVERFLOW);
         DHT_EQ_INT(dh_fk_frames_f32(&r, q, frames, &T), DH_ERR_OVERFLOW);
