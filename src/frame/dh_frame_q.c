@@ -281,9 +281,9 @@ dh_status dh_frame_rot_axis_q(dh_q30 kx, dh_q30 ky, dh_q30 kz, dh_q16 deg, dh_fr
 /* acc + row i of A times the 3 contiguous values b, modulo 2^64 */
 DH_INLINE int64_t frame_q_dot3(int64_t acc, const dh_frame_q *A, unsigned i, const int32_t *b)
 {
-    acc = dh_port_smlal(acc, A->r[0][i], b[0]);
-    acc = dh_port_smlal(acc, A->r[1][i], b[1]);
-    return dh_port_smlal(acc, A->r[2][i], b[2]);
+    const int64_t s0 = dh_port_smlal(acc, A->r[0][i], b[0]);
+    const int64_t s1 = dh_port_smlal(s0, A->r[1][i], b[1]);
+    return dh_port_smlal(s1, A->r[2][i], b[2]);
 }
 
 /* A B into *tp (never A or B); returns the check word. Written out row by
