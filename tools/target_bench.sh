@@ -4,7 +4,7 @@
 # for Cortex-M0 (micro:bit), Cortex-M4F (mps2-an386) and Cortex-M7
 # (mps2-an500) at -O2, -Os and -Os with DH_SMALL=1 (size-first build), runs each image under QEMU with
 # -icount shift=0 (executed instructions counted exactly through SysTick)
-# and writes docs/performance_target.md.
+# and writes docs/generated/performance_target.md.
 #
 #   tools/target_bench.sh [output.md]
 #
@@ -18,7 +18,7 @@
 #                 of this commit instead of the working tree, e.g. HEAD: it is
 #                 exported with git archive to build/tbench-lib/ (the
 #                 firmware sources always come from the working tree). The
-#                 committed docs/performance_target.md is made this way, so
+#                 committed docs/generated/performance_target.md is made this way, so
 #                 its figures belong to the commit it names.
 # Build trees: build/tbench-<core>-<opt>/ ; logs: build/tbench-logs/.
 # Needs gcc-arm-none-eabi, libnewlib-arm-none-eabi, qemu-system-arm,
@@ -26,7 +26,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
-OUT=${1:-docs/performance_target.md}
+OUT=${1:-docs/generated/performance_target.md}
 CORES=${TBENCH_CORES:-m0 m4f m7}
 OPTS=${TBENCH_OPTS:-O2 Os Os-small}
 JOBS=${JOBS:-$(nproc)}

@@ -39,7 +39,7 @@
  * Accuracy is quoted per function in LSB: 1 LSB of a rotation entry is
  * 2^-30, 1 LSB of a position is 2^-DH_QPOS_FRAC units; equation numbers
  * are those of Paul 1981. Measured accuracy: docs/accuracy_fixed.md; cost
- * and stack: docs/performance_target.md, docs/footprint.md.
+ * and stack: docs/generated/performance_target.md, docs/generated/footprint.md.
  */
 #ifndef DHMATH_FRAME_H
 #define DHMATH_FRAME_H

@@ -27,8 +27,8 @@
  * caller's workspace). Pointers must not be NULL (DH_ASSERT).
  *
  * Methods: docs/design.md ("Kinematics"); measured accuracy and success
- * rates: docs/accuracy_kin.md; cost and stack: docs/performance_target.md,
- * docs/footprint.md.
+ * rates: docs/accuracy_kin.md; cost and stack: docs/generated/performance_target.md,
+ * docs/generated/footprint.md.
  */
 #ifndef DHMATH_KIN_H
 #define DHMATH_KIN_H

@@ -39,7 +39,7 @@
  *
  * Error bounds are against the exact result for the given float inputs;
  * measured accuracy: docs/accuracy_mat4.md; cost and stack:
- * docs/performance_target.md, docs/footprint.md; methods and proofs:
+ * docs/generated/performance_target.md, docs/generated/footprint.md; methods and proofs:
  * docs/design.md ("Float transforms and inverses"). All functions are
  * float-only, reentrant, use no heap and at most 256 bytes of stack.
  */

@@ -39,8 +39,8 @@
  * evaluates one sin/cos pair per joint (method: docs/design.md, "Forward
  * kinematics"). Error bounds: float FK as dh_fk_f32(), fixed FK as
  * dh_fk_q(); measured accuracy for the example robots:
- * docs/accuracy_fk.md; cost and stack: docs/performance_target.md,
- * docs/footprint.md (every function stays within 256 bytes of stack).
+ * docs/accuracy_fk.md; cost and stack: docs/generated/performance_target.md,
+ * docs/generated/footprint.md (every function stays within 256 bytes of stack).
  *
  * Description out of range: dh_robot is a plain caller-owned struct, so
  * its n may hold any value (a corrupted copy, or one made with a larger

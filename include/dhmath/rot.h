@@ -50,8 +50,8 @@
  * reentrant, use no heap and less than 256 bytes of stack. "Entry error"
  * means max |R_ij - R_ij(exact)| over the nine entries; bounds are against
  * the exact result for the given float inputs. Measured accuracy:
- * docs/accuracy_rot.md; cost and stack: docs/performance_target.md,
- * docs/footprint.md; methods: docs/design.md ("Rotations").
+ * docs/accuracy_rot.md; cost and stack: docs/generated/performance_target.md,
+ * docs/generated/footprint.md; methods: docs/design.md ("Rotations").
  */
 #ifndef DHMATH_ROT_H
 #define DHMATH_ROT_H
