@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 # footprint.sh - flash and stack of the library on Cortex-M0+ and Cortex-M4F
 # at -Os and -O2, and at -Os with DH_SMALL=1 (the size-first build), written
-# to docs/generated/footprint.md (tools/footprint.py).
+# to docs/generated/footprint.md (tools/footprint.py), stamped by tools/stamp.sh.
 # The report opens with the size goal's flash budget (the float + fixed core on
 # Cortex-M4F -Os against 8 KiB) and includes firmware profiles: entry tables
 # generated from the public headers, linked with --gc-sections, flash split
@@ -79,3 +79,4 @@ CMD="tools/footprint.sh${REV:+ --rev $REV}"
   "M4F -O2=$PREFIX-m4f-O2=$M4F -O2" \
   "M0+ -Os DH_SMALL=$PREFIX-m0plus-Os-small=$M0 -Os" \
   "M4F -Os DH_SMALL=$PREFIX-m4f-Os-small=$M4F -Os"
+tools/stamp.sh tools/footprint.sh "$OUT"

@@ -270,8 +270,9 @@ def main():
     summ = read_summary(os.path.join(data, "summary.csv"))
     fx_bins = np.array(read_cols(os.path.join(data, "trig_sweep.csv"))["fix16"], dtype=float)
     summ["fix16_bin_median"] = float(np.nanmedian(fx_bins)) if not np.all(np.isnan(fx_bins)) else 0.0
-    write_md(summ,
-             os.path.join(ROOT, "docs", "generated", "accuracy_plots.md"))
+    page = os.path.join(ROOT, "docs", "generated", "accuracy_plots.md")
+    write_md(summ, page)
+    run(["sh", os.path.join(ROOT, "tools", "stamp.sh"), "tools/plot_accuracy.py", page])
     print("wrote docs/generated/img/trig_sweep.png, docs/generated/img/trig_large.png, docs/generated/img/fk_error_hist.png, "
           "docs/generated/accuracy_plots.md")
     return 0

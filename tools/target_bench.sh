@@ -4,7 +4,7 @@
 # for Cortex-M0 (micro:bit), Cortex-M4F (mps2-an386) and Cortex-M7
 # (mps2-an500) at -O2, -Os and -Os with DH_SMALL=1 (size-first build), runs each image under QEMU with
 # -icount shift=0 (executed instructions counted exactly through SysTick)
-# and writes docs/generated/performance_target.md.
+# and writes docs/generated/performance_target.md, stamped by tools/stamp.sh.
 #
 #   tools/target_bench.sh [output.md]
 #
@@ -117,4 +117,5 @@ meta=$LOGS/meta.txt
 } >"$meta"
 
 $PY bench/target/report.py "$OUT" "$meta" "${logs[@]}"
+tools/stamp.sh tools/target_bench.sh "$OUT"
 echo "== wrote $OUT"
