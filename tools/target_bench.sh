@@ -14,7 +14,7 @@
 #                 -Os with -DDH_SMALL=ON)
 #   JOBS          parallel compile jobs (default: nproc)
 #   QEMU          emulator (default qemu-system-arm)
-#   TBENCH_LIB    benchmark the library (src/ include/ port/ CMakeLists.txt)
+#   TBENCH_LIB    benchmark the library (src/ include/ port/ cmake/ CMakeLists.txt)
 #                 of this commit instead of the working tree, e.g. HEAD: it is
 #                 exported with git archive to build/tbench-lib/ (the
 #                 firmware sources always come from the working tree). The
@@ -55,14 +55,14 @@ if [ -n "${TBENCH_LIB:-}" ]; then
   libroot=$ROOT/build/tbench-lib
   rm -rf "$libroot"
   mkdir -p "$libroot"
-  git archive "$libcommit" CMakeLists.txt src include port | tar -x -C "$libroot"
+  git archive "$libcommit" CMakeLists.txt cmake src include port | tar -x -C "$libroot"
   libdesc="$libcommit (exported with git archive)"
 else
   libcommit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
   libdesc="working tree at $libcommit"
-  if ! git diff --quiet HEAD -- CMakeLists.txt src include port 2>/dev/null ||
-     [ -n "$(git ls-files --others --exclude-standard -- src include port 2>/dev/null)" ]; then
-    libdesc="$libdesc with uncommitted changes in src/include/port"
+  if ! git diff --quiet HEAD -- CMakeLists.txt cmake src include port 2>/dev/null ||
+     [ -n "$(git ls-files --others --exclude-standard -- cmake src include port 2>/dev/null)" ]; then
+    libdesc="$libdesc with uncommitted changes in cmake/src/include/port"
   fi
 fi
 echo "== library: $libdesc"
