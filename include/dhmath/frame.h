@@ -103,7 +103,7 @@ void dh_frame_trans_q(dh_qpos x, dh_qpos y, dh_qpos z, dh_frame_q *F);
  *
  * Entries are exactly the dh_sincos_q() values (c, s, and -s), so whole
  * degrees are correctly rounded and multiples of 90 degrees are exact
- * (measured: within 0.99 LSB of the double values over 20000 angles).
+ * (test_frame_q asserts every entry within 2 LSB of the exact value).
  * @param[out] F frame to write.
  * @param deg angle in degrees, Q16.16, any int32 (full range of dh_sincos_q).
  */
