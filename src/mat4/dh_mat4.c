@@ -628,16 +628,11 @@ dh_status dh_mat4_check_finite_f32(const dh_mat4_f32 *T)
     return dh_feq_f32(z, z) ? DH_OK : DH_ERR_NAN;
 }
 
-/*
- * Twin bodies. The default build answers a finite h with w != 0 and finite
- * quotients directly; the general path (mat4_point_h_general) recomputes
- * the same h and classifies everything else. The size-first build is the
- * general path alone, written in its body (the same lines as
- * mat4_point_h_general: a separate call there costs flash in that build).
- */
-#if DH_FAST_PATHS
 /* The general path for in = u: h = T in (h: the caller's scratch),
- * classified (DH_ERR_OVERFLOW, DH_ERR_NAN, DH_ERR_DOMAIN) and divided. */
+ * classified (DH_ERR_OVERFLOW, DH_ERR_NAN, DH_ERR_DOMAIN) and divided.
+ * The default build answers a finite h with w != 0 and finite quotients
+ * before it; the size-first build is this path alone (inlined: a separate
+ * call there costs flash). */
 DH_INLINE dh_status mat4_point_h_general(const dh_mat4_f32 *T, const float *in, float *h, dh_vec3_f32 *v)
 {
     float z = 0.0f, zi = 0.0f;
@@ -660,6 +655,7 @@ DH_INLINE dh_status mat4_point_h_general(const dh_mat4_f32 *T, const float *in, 
     return DH_OK;
 }
 
+#if DH_FAST_PATHS
 dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec3_f32 *v)
 {
     float in[4], h[4];
@@ -684,26 +680,10 @@ dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, 
 #else
 dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec3_f32 *v)
 {
-    float in[4], h[4], z = 0.0f, zi = 0.0f;
-    int i;
+    float in[4], h[4];
     DH_ASSERT(T != NULL && u != NULL && v != NULL);
     mat4_load4(in, u->x, u->y, u->z, u->w);
-    mat4_lin(T, in, h, 4);
-    for (i = 0; i < 4; i++) {
-        z += h[i] * 0.0f;
-        zi += in[i] * 0.0f;
-    }
-    if (!dh_feq_f32(z, z)) return (dh_mat4_check_finite_f32(T) == DH_OK && dh_feq_f32(zi, zi)) ? DH_ERR_OVERFLOW : DH_ERR_NAN;
-    if (dh_feq_f32(h[3], 0.0f)) return DH_ERR_DOMAIN;
-    for (i = 0; i < 3; i++) {
-        h[i] = h[i] / h[3] + 0.0f;
-        z += h[i] * 0.0f;
-    }
-    if (!dh_feq_f32(z, z)) return DH_ERR_OVERFLOW;
-    v->x = h[0];
-    v->y = h[1];
-    v->z = h[2];
-    return DH_OK;
+    return mat4_point_h_general(T, in, h, v);
 }
 #endif
 
