@@ -292,6 +292,15 @@ static void puma_base_tool(dhs_robot *d)
     dhr_mul(&A, &B, &d->tool);
 }
 
+/* the Puma (base_tool: with puma_base_tool's base and tool), its integer
+ * robot and its closed-form model */
+static void puma_model(int base_tool, dhs_robot *d, dh_robot *r, dh_ikc_model_q *m)
+{
+    if (base_tool) puma_base_tool(d);
+    else puma(d);
+    dhk_build_q(d, DH_IKC_WRIST_RRR, r, m);
+}
+
 static void base_tool_random(void)
 {
     dhs_robot d, f;
@@ -328,8 +337,7 @@ static void singular_wrist(void)
     dh_ikc_model_q m;
     long it;
     long tested = 0;
-    puma(&P);
-    dhk_build_q(&P, DH_IKC_WRIST_RRR, &r, &m);
+    puma_model(0, &P, &r, &m);
     for (it = 0; it < DHT_ITER(500); it++) {
         double q[6];
         int32_t qq[6];
@@ -412,8 +420,7 @@ static void boundary_folded(void)
     dhr_mat4 Td;
     uint32_t ns, s;
     int i, j, k;
-    puma_base_tool(&d);
-    dhk_build_q(&d, DH_IKC_WRIST_RRR, &r, &m);
+    puma_model(1, &d, &r, &m);
     for (i = 0; i < 2; i++) {
         int32_t qq[6];
         dhs_q_from_double(&r, seen[i], qq);
@@ -450,8 +457,7 @@ static void boundary_beyond(void)
     dh_frame_q T;
     uint32_t ns, s;
     int i, far, folded;
-    puma(&P);
-    dhk_build_q(&P, DH_IKC_WRIST_RRR, &r, &m);
+    puma_model(0, &P, &r, &m);
     for (folded = 0; folded < 2; folded++) {
         double q[6] = {20.0, -30.0, 0.0, 40.0, 50.0, -60.0}, w[3], nw = 0.0, wz = 0.0;
         dhr_mat4 fr[6], Td;
@@ -534,8 +540,7 @@ static void limits_shift(void)
     uint32_t ns, idx;
     dhr_mat4 Td;
     int f;
-    puma(&P);
-    dhk_build_q(&P, DH_IKC_WRIST_RRR, &r, &m);
+    puma_model(0, &P, &r, &m);
     dhs_q_from_double(&r, q, qq);
     /* q_ref = the configuration: joints 4 and 6 shifted to 200 and -250 */
     memcpy(qref, qq, sizeof qref);
@@ -713,8 +718,7 @@ static void solve_errors(void)
     int32_t qq[6] = {0, 0, 0, 0, 30 << 16, 0}, qref[6];
     dhr_mat4 Td;
     unsigned i;
-    puma(&P);
-    dhk_build_q(&P, DH_IKC_WRIST_RRR, &r, &m);
+    puma_model(0, &P, &r, &m);
     dhs_fk_ref_q(&r, qq, NULL, &Td);
     dhs_to_frame_q(&Td, &T);
     memset(canary, 0xA5, sizeof canary);

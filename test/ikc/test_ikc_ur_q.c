@@ -615,7 +615,7 @@ static void detect(void)
 }
 
 /* not the family: each structural condition of the fixed detectors broken
- * on its own, as in the float suite */
+ * on its own, as in the float suite (twin: not_family of test_ikc_ur.c) */
 static void not_family(const dhs_robot *d, dh_ikc_kind kind)
 {
     dh_robot r;
