@@ -23,6 +23,11 @@
 /* lengths scaled by DHK_LS and the tolerances DHK_POS_TOL, DHK_ROT_TOL,
  * DHK_COMP_DEG: support_ikc.h */
 #define AWAY 1e-2     /* normalised distance from the singularities */
+/* shoulder part below which a target is in the shoulder band (the joint 5
+ * point within about 0.2 mm of the shoulder cylinder on the UR3): joint 1
+ * free by the target's rounding, which the solver's search along the
+ * shoulder's freedom must absorb when the elbow is near its boundary */
+#define SBAND 2e-4
 #define PI_D 3.14159265358979323846
 #define D2R (PI_D / 180.0)
 
@@ -48,7 +53,10 @@ static int scara_conditioned(const dhs_robot *d, const double *q)
 }
 
 /* probe (may be NULL): the prefix of the reach probes of the singular
- * distances drawn (dhk_reach_sing) */
+ * distances drawn (dhk_reach_sing), and, for the targets in the shoulder
+ * band (shoulder part below SBAND), "<probe>.sband_e" (their smallest
+ * elbow part) and "<probe>.sband_ew" (their smallest max of the elbow and
+ * wrist parts): the corners of the shoulder band and the elbow's boundary */
 static void random_run(const dhs_robot *d, dh_ikc_kind kind, long iters, const char *probe)
 {
     dh_robot r;
@@ -70,7 +78,16 @@ static void random_run(const dhs_robot *d, dh_ikc_kind kind, long iters, const c
         dhs_q_from_double(&r, q, qq);
         comp = dhk_sing_parts(d, q, part) >= AWAY &&
                (d->n == 4u ? scara_conditioned(d, q) : dhk_well_conditioned_q(d, q, 0.5 * DHK_COMP_DEG, 6));
-        if (probe) dhk_reach_sing(probe, part);
+        if (probe) {
+            dhk_reach_sing(probe, part);
+            if (part[0] < SBAND) {
+                char name[48];
+                snprintf(name, sizeof name, "%s.sband_e", probe);
+                dht_reach_min(name, part[1]);
+                snprintf(name, sizeof name, "%s.sband_ew", probe);
+                dht_reach_min(name, fmax(part[1], part[2]));
+            }
+        }
         dhs_fk_ref_q(&r, qq, NULL, &Td);
         dhs_to_frame_q(&Td, &T);
         rc = dh_ikc_q(&m, &T, NULL, 0u, sol, &ns);
