@@ -119,9 +119,12 @@ int dhk_check_sols_q(const dh_robot *r, const dhr_mat4 *Td, const dh_ikc_sol_q *
     return found;
 }
 
-int dhk_well_conditioned_q(const dhs_robot *d, const double *q, double tol, int nj)
+/* J (6 x 6, per degree / length unit of q, rows position then rotation)
+ * by central differences of the double FK of d at q, and Ji = J^-1 by
+ * Gauss-Jordan with partial pivoting. 0 when J is singular to 1e-12. */
+static int ikcs_jac_inv(const dhs_robot *d, const double *q, double J[6][6], double Ji[6][6])
 {
-    double J[6][6], A[6][12], qp[6], qm[6], dx[6];
+    double A[6][12], qp[6], qm[6];
     dhr_mat4 T0, Tp, Tm;
     const double h = 1e-4;
     int i, j, k, c;
@@ -168,6 +171,16 @@ int dhk_well_conditioned_q(const dhs_robot *d, const double *q, double tol, int 
             for (j = 0; j < 12; j++) A[i][j] -= f * A[c][j];
         }
     }
+    for (i = 0; i < 6; i++)
+        for (j = 0; j < 6; j++) Ji[i][j] = A[i][6 + j] / A[i][i];
+    return 1;
+}
+
+int dhk_well_conditioned_q(const dhs_robot *d, const double *q, double tol, int nj)
+{
+    double J[6][6], Ji[6][6], dx[6];
+    int i, j, k;
+    if (!ikcs_jac_inv(d, q, J, Ji)) return 0;
     for (i = 0; i < 6; i++) {
         dx[i] = (i < 3) ? ldexp(1.0, -DH_QPOS_FRAC) : ldexp(2.0, -30);
         for (k = 0; k < 3; k++)
@@ -175,9 +188,43 @@ int dhk_well_conditioned_q(const dhs_robot *d, const double *q, double tol, int 
     }
     for (i = 0; i < nj; i++) {
         double b = 0.0;
-        for (j = 0; j < 6; j++) b += fabs(A[i][6 + j] / A[i][i]) * dx[j];
+        for (j = 0; j < 6; j++) b += fabs(Ji[i][j]) * dx[j];
         if (d->j[i].type == DH_JOINT_PRISMATIC) b /= DHK_LS; /* as dhk_jdiff_q */
         if (b > tol) return 0;
     }
     return 1;
+}
+
+int dhk_first_order_match_q(const dhs_robot *d, const double *q, const dh_robot *r, const dhr_mat4 *Td,
+                            const dh_ikc_sol_q *sol, uint32_t ns, const int32_t *qgen)
+{
+    double J[6][6], Ji[6][6];
+    uint32_t s;
+    if (!ikcs_jac_inv(d, q, J, Ji)) return -1;
+    for (s = 0; s < ns; s++) {
+        dhr_mat4 Ts;
+        double e[6], W[3][3];
+        int i, j, c, ok = 1;
+        dhs_fk_ref_q(r, sol[s].q, NULL, &Ts);
+        for (i = 0; i < 3; i++) e[i] = Ts.m[3][i] - Td->m[3][i];
+        /* W = (Rs - Rd) Rd^T (m[col][row]): its skew part is the rotation */
+        for (i = 0; i < 3; i++)
+            for (j = 0; j < 3; j++) {
+                W[i][j] = 0.0;
+                for (c = 0; c < 3; c++) W[i][j] += (Ts.m[c][i] - Td->m[c][i]) * Td->m[c][j];
+            }
+        e[3] = 0.5 * (W[2][1] - W[1][2]);
+        e[4] = 0.5 * (W[0][2] - W[2][0]);
+        e[5] = 0.5 * (W[1][0] - W[0][1]);
+        for (i = 0; i < 6 && ok; i++) {
+            double b = 0.0;
+            for (j = 0; j < 6; j++) b += fabs(Ji[i][j]) * (fabs(e[j]) + ((j < 3) ? ldexp(1.0, -DH_QPOS_FRAC) : ldexp(2.0, -30)));
+            b *= 2.0; /* the second-order rest */
+            if (d->j[i].type == DH_JOINT_PRISMATIC) b /= DHK_LS; /* as dhk_jdiff_q */
+            if (b < DHK_COMP_DEG) b = DHK_COMP_DEG;
+            ok = dhk_jdiff_q(r, (uint32_t)i, sol[s].q[i], qgen[i]) <= b;
+        }
+        if (ok) return (int)s;
+    }
+    return -1;
 }
