@@ -119,18 +119,34 @@ int dhk_check_sols_q(const dh_robot *r, const dhr_mat4 *Td, const dh_ikc_sol_q *
     return found;
 }
 
+/* w = the skew part of W = (Ra - Rb) / div Rr^T (m[col][row]): the small
+ * rotation from Rb to Ra, or with Ra, Rb the two sides of a central
+ * difference and div = 2h, a Jacobian's rotation column. */
+static void ikcs_rot_diff(const dhr_mat4 *a, const dhr_mat4 *b, const dhr_mat4 *ref, double div, double w[3])
+{
+    double W[3][3];
+    int i, j, c;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) {
+            W[i][j] = 0.0;
+            for (c = 0; c < 3; c++) W[i][j] += (a->m[c][i] - b->m[c][i]) / div * ref->m[c][j];
+        }
+    w[0] = 0.5 * (W[2][1] - W[1][2]);
+    w[1] = 0.5 * (W[0][2] - W[2][0]);
+    w[2] = 0.5 * (W[1][0] - W[0][1]);
+}
+
 /* J (6 x 6, per degree / length unit of q, rows position then rotation)
  * by central differences of the double FK of d at q, and Ji = J^-1 by
  * Gauss-Jordan with partial pivoting. 0 when J is singular to 1e-12. */
 static int ikcs_jac_inv(const dhs_robot *d, const double *q, double J[6][6], double Ji[6][6])
 {
-    double A[6][12], qp[6], qm[6];
+    double A[6][12], qp[6], qm[6], w[3];
     dhr_mat4 T0, Tp, Tm;
     const double h = 1e-4;
     int i, j, k, c;
     dhs_fk_desc(d, q, NULL, &T0);
     for (k = 0; k < 6; k++) {
-        double W[3][3];
         memcpy(qp, q, sizeof qp);
         memcpy(qm, q, sizeof qm);
         qp[k] += h;
@@ -138,15 +154,8 @@ static int ikcs_jac_inv(const dhs_robot *d, const double *q, double J[6][6], dou
         dhs_fk_desc(d, qp, NULL, &Tp);
         dhs_fk_desc(d, qm, NULL, &Tm);
         for (i = 0; i < 3; i++) J[i][k] = (Tp.m[3][i] - Tm.m[3][i]) / (2.0 * h);
-        /* W = dR R^T (m[col][row]) */
-        for (i = 0; i < 3; i++)
-            for (j = 0; j < 3; j++) {
-                W[i][j] = 0.0;
-                for (c = 0; c < 3; c++) W[i][j] += (Tp.m[c][i] - Tm.m[c][i]) / (2.0 * h) * T0.m[c][j];
-            }
-        J[3][k] = 0.5 * (W[2][1] - W[1][2]);
-        J[4][k] = 0.5 * (W[0][2] - W[2][0]);
-        J[5][k] = 0.5 * (W[1][0] - W[0][1]);
+        ikcs_rot_diff(&Tp, &Tm, &T0, 2.0 * h, w);
+        for (i = 0; i < 3; i++) J[3 + i][k] = w[i];
     }
     for (i = 0; i < 6; i++) {
         for (j = 0; j < 6; j++) {
@@ -203,19 +212,11 @@ int dhk_first_order_match_q(const dhs_robot *d, const double *q, const dh_robot 
     if (!ikcs_jac_inv(d, q, J, Ji)) return -1;
     for (s = 0; s < ns; s++) {
         dhr_mat4 Ts;
-        double e[6], W[3][3];
-        int i, j, c, ok = 1;
+        double e[6];
+        int i, j, ok = 1;
         dhs_fk_ref_q(r, sol[s].q, NULL, &Ts);
         for (i = 0; i < 3; i++) e[i] = Ts.m[3][i] - Td->m[3][i];
-        /* W = (Rs - Rd) Rd^T (m[col][row]): its skew part is the rotation */
-        for (i = 0; i < 3; i++)
-            for (j = 0; j < 3; j++) {
-                W[i][j] = 0.0;
-                for (c = 0; c < 3; c++) W[i][j] += (Ts.m[c][i] - Td->m[c][i]) * Td->m[c][j];
-            }
-        e[3] = 0.5 * (W[2][1] - W[1][2]);
-        e[4] = 0.5 * (W[0][2] - W[2][0]);
-        e[5] = 0.5 * (W[1][0] - W[0][1]);
+        ikcs_rot_diff(&Ts, Td, Td, 1.0, e + 3);
         for (i = 0; i < 6 && ok; i++) {
             double b = 0.0;
             for (j = 0; j < 6; j++) b += fabs(Ji[i][j]) * (fabs(e[j]) + ((j < 3) ? ldexp(1.0, -DH_QPOS_FRAC) : ldexp(2.0, -30)));
