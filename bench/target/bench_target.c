@@ -190,6 +190,7 @@ static float bt_ang_f[BT_NANG];
 static dh_q16 bt_ang_q[BT_NANG];
 static float bt_s, bt_c;
 static dh_q30 bt_sq, bt_cq;
+static dh_q16 bt_aq;
 static float bt_qf[BT_NSET][6];
 static int32_t bt_qq[BT_NSET][6];
 static dh_robot bt_puma_m, bt_puma_mm;
@@ -347,6 +348,11 @@ static BT_NOIPA void z_sincos_q(dh_q16 deg, dh_q30 *s, dh_q30 *c)
 {
     (void)deg; (void)s; (void)c;
 }
+static BT_NOIPA dh_status z_atan2_q(int32_t y, int32_t x, dh_q16 *deg)
+{
+    (void)y; (void)x; (void)deg;
+    return DH_OK;
+}
 static BT_NOIPA void z_mat_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out)
 {
     (void)out; (void)A; (void)B;
@@ -426,6 +432,7 @@ static BT_NOIPA dh_status z_jacobian(const dh_robot *r, const float *q, float *J
 /* wrapper bodies, F = the function to call */
 #define B_sincos_f32(F) bt_status |= (uint32_t)F(bt_ang_f[i & (BT_NANG - 1u)], &bt_s, &bt_c)
 #define B_sincos_q(F) F(bt_ang_q[i & (BT_NANG - 1u)], &bt_sq, &bt_cq)
+#define B_atan2_q(F) bt_status |= (uint32_t)F(bt_ptq[BT_IA(i)].y, bt_ptq[BT_IA(i)].x, &bt_aq)
 #define B_mul_affine(F) F(&bt_A[BT_IA(i)], &bt_B[BT_IB(i)], &bt_out)
 #define B_mul(F) F(&bt_A[BT_IA(i)], &bt_B[BT_IB(i)], &bt_out)
 #define B_inv_rigid(F) F(&bt_A[BT_IA(i)], &bt_out)
@@ -454,6 +461,7 @@ static BT_NOIPA dh_status z_jacobian(const dh_robot *r, const float *q, float *J
 
 BT_PAIR(sincos_f32, dh_sincos_f32, z_sincos_f32)
 BT_PAIR(sincos_q, dh_sincos_q, z_sincos_q)
+BT_PAIR(atan2_q, dh_atan2_q, z_atan2_q)
 BT_PAIR(mul_affine, dh_mat4_mul_affine_f32, z_mat_mul)
 BT_PAIR(mul, dh_mat4_mul_f32, z_mat_mul)
 BT_PAIR(inv_rigid, dh_mat4_inv_rigid_f32, z_mat_inv_rigid)
@@ -486,6 +494,7 @@ static BT_NOINLINE void op_newlib_sincos(uint32_t i)
 static const bt_op bt_ops_dh[] = {
     BT_OPD("dh_sincos_f32", sincos_f32, "z_sincos_f32", 4096u),
     BT_OPD("dh_sincos_q", sincos_q, "z_sincos_q", 4096u),
+    BT_OPD("dh_atan2_q (points in +-1000 Q16.16)", atan2_q, "z_atan2_q", 1024u),
     BT_OPD("dh_mat4_mul_affine_f32", mul_affine, "z_mat_mul", 1024u),
     BT_OPD("dh_mat4_mul_f32", mul, "z_mat_mul", 1024u),
     BT_OPD("dh_mat4_inv_rigid_f32", inv_rigid, "z_mat_inv_rigid", 1024u),

@@ -164,11 +164,11 @@ dh_status dh_acos_f32(float c, float *deg);
  *                 -11796479 .. 11796480. Must not be NULL (DH_ASSERT).
  *
  * Error bound: |error| <= 1 LSB (2^-16 deg = 1.5e-5 deg) against the exact
- * angle (analysis 0.83 LSB, src/trig/dh_itrig_q.c). Exact: 0, +-45, +-90,
+ * angle (analysis 0.55 LSB, src/trig/dh_itrig_q.c). Exact: 0, +-45, +-90,
  * +-135, 180 where |y| == |x| or one of them is 0; y == 0, x < 0 gives
  * +180; y < 0 whose angle rounds to -180 gives -180 + 1 LSB.
- * atan2(-y, x) == -atan2(y, x) except there. Integer only (CORDIC, a
- * 116-byte table), no division.
+ * atan2(-y, x) == -atan2(y, x) except there. Integer only (a table-seeded
+ * reciprocal and Taylor cubics of atan, 1038 bytes of tables), no division.
  *
  * @return DH_OK; DH_ERR_DOMAIN for x == y == 0 (*deg_q16 untouched).
  */

@@ -14,7 +14,7 @@
  * matrix has every entry below 1.0005 in magnitude, which bounds every
  * 64-bit sum below (no INT32_MIN can reach a negation either).
  *
- * Angles come from dh_atan2_q (CORDIC, <= 0.83 LSB of Q16.16 against the
+ * Angles come from dh_atan2_q (<= 0.55 LSB of Q16.16 against the
  * exact angle of its integer arguments, which only the ratio enters), so
  * the extraction formulas of the float path are used in a division-free
  * form: the common positive factor 1/n of the float Euler solver is

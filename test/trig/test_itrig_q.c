@@ -10,9 +10,12 @@
  * a common power-of-two scale, odd symmetry, and the DH_ERR_DOMAIN cases
  * with the output untouched. Printed: the largest error in LSB. Host:
  * > 10^7 atan2 pairs (random at every scale, near the diagonals and the
- * axes, small integers, every pair of the int32 edge values) and > 10^7
- * asin/acos inputs (a strided pass over [-2^30, 2^30], the
- * neighbourhoods of 0, +-1/2 and +-1).
+ * axes, small integers, every pair of the int32 edge values), 3.7 x 10^5
+ * pairs at the method's table points (reciprocal seed bucket edges,
+ * Taylor segment centres and edges, tiny ratios, ratios next to 1),
+ * 2 x 10^7 pairs in dense sweeps, and > 10^7 asin/acos inputs (a
+ * strided pass over [-2^30, 2^30], the neighbourhoods of 0, +-1/2 and
+ * +-1).
  */
 #include <math.h>
 #include <stdint.h>
@@ -27,6 +30,7 @@
 #define DEG180 ((int32_t)180 << 16)
 
 static double worst_atan2, worst_atan2_m180, worst_asin, worst_acos;
+static long n_atan2;   /* pairs checked */
 
 static void check_atan2(int32_t y, int32_t x)
 {
@@ -35,6 +39,7 @@ static void check_atan2(int32_t y, int32_t x)
     DHT_EQ_INT(dh_atan2_q(y, x, &d), DH_OK);
     DHT_TRUE_MSG(d > -DEG180 && d <= DEG180, "atan2_q(%ld, %ld) = %ld outside (-180, 180]", (long)y,
                  (long)x, (long)d);
+    n_atan2++;
     ref = atan2((double)y, (double)x) * (180.0 / PI_D) * Q16_PER_DEG;
     e = fabs((double)d - ref);
     if (d == -DEG180 + 1) {
@@ -167,6 +172,116 @@ static void atan2_random(void)
                worst_atan2, worst_atan2_m180);
 }
 
+/* (+-ay, +-ax) and (+-ax, +-ay) for magnitudes <= 2^31 (2^31 only as
+ * INT32_MIN), not both 0 */
+static void check_mags(uint32_t ay, uint32_t ax)
+{
+    static const int sgn[2] = { 1, -1 };
+    unsigned a, b;
+    for (a = 0; a < 2u; a++) {
+        for (b = 0; b < 2u; b++) {
+            int64_t y = sgn[a] * (int64_t)ay, x = sgn[b] * (int64_t)ax;
+            if (y > INT32_MAX || x > INT32_MAX) continue;
+            check_atan2((int32_t)y, (int32_t)x);
+            check_atan2((int32_t)x, (int32_t)y);
+        }
+    }
+}
+
+/* a uniform draw in [0, n] (n < 2^32) */
+static uint32_t rand_upto(uint32_t n)
+{
+    uint64_t v = ((uint64_t)dht_rand_u32() << 32) | dht_rand_u32();
+    return (uint32_t)(v % ((uint64_t)n + 1u));
+}
+
+/* The method's table points (src/trig/dh_itrig_q.c): the larger magnitude
+ * normalised into [2^30, 2^31] picks its reciprocal seed by bits 23..30,
+ * and the ratio r = min / max its Taylor segment by rounding to k / 64.
+ * Asserted with the contract at and next to every seed bucket edge (at
+ * several scales, with the smaller magnitude 0, 1, just below the larger
+ * one and random), at and next to every segment centre k / 64 and every
+ * segment edge (2k + 1) / 128 for random larger magnitudes, tiny ratios,
+ * ratios next to 1 and larger magnitudes next to 2^n and 2^n - 1. */
+static void atan2_table_points(void)
+{
+    static const unsigned scales[] = { 0, 1, 7, 8, 15, 16, 22, 23 };
+    long i, n = DHT_ITER(2000L);
+    uint32_t j, k, sc, t;
+    worst_atan2 = 0.0;
+    n_atan2 = 0;
+    for (j = 0; j <= 128u; j++) {                 /* seed bucket edges */
+        for (sc = 0; sc < sizeof scales / sizeof scales[0]; sc++) {
+            for (t = 0; t < 3u; t++) {
+                uint32_t x = (((128u + j) << 23) - 1u + t) >> scales[sc];
+                if (x > 0x80000000u || x < 2u) continue;
+                check_mags(0u, x);
+                check_mags(1u, x);
+                check_mags(x - 1u, x);
+                check_mags(rand_upto(x), x);
+                check_mags(rand_upto(x >> 9), x);
+            }
+        }
+    }
+    for (i = 0; i < n; i++) {                     /* segment centres and edges */
+        uint32_t x = 0x40000000u + rand_upto(0x40000000u);
+        int32_t dy;
+        k = (uint32_t)(i % 64);
+        for (dy = -2; dy <= 2; dy++) {
+            uint64_t yc = ((uint64_t)x * k + 32u) >> 6;            /* r = k / 64 */
+            uint64_t ye = ((uint64_t)x * (2u * k + 1u) + 64u) >> 7;  /* (2k + 1) / 128 */
+            if ((int64_t)yc + dy >= 0) check_mags((uint32_t)((int64_t)yc + dy), x);
+            if ((int64_t)ye + dy < (int64_t)x) check_mags((uint32_t)((int64_t)ye + dy), x);
+        }
+        x &= ~(uint32_t)63u;                      /* r = k / 64 exactly */
+        check_mags((uint32_t)(((uint64_t)x * k) >> 6), x);
+        check_mags((uint32_t)(((uint64_t)(x >> (i % 31)) * k) >> 6) | 1u, x >> (i % 31));
+    }
+    for (i = 0; i < n; i++) {                     /* tiny ratios, ratios next to 1 */
+        uint32_t x = rand_upto(0x80000000u - 2000u) + 1000u;
+        uint32_t d = rand_upto(999u) + 1u;
+        check_mags(d, x);
+        check_mags(x - d, x);
+        check_mags(rand_upto(x >> 20), x);
+    }
+    for (k = 1; k <= 31u; k++) {                  /* larger magnitude next to 2^k */
+        uint32_t x = (uint32_t)1 << k;
+        for (i = 0; i < 8; i++) {
+            check_mags(rand_upto(x - 1u), x - 1u);
+            check_mags(rand_upto(x), x);
+            if (k < 31u) check_mags(rand_upto(x + 1u), x + 1u);
+        }
+        check_mags(x - 1u, x);
+        check_mags(x / 2u, x - 1u);
+    }
+    dht_printf("atan2_q: %ld pairs at the table points, max error %.4f LSB\n", n_atan2, worst_atan2);
+}
+
+/* Dense sweeps of the smaller magnitude over [0, x] for larger magnitudes
+ * in different seed buckets and scales: consecutive values at the start,
+ * around r = 1/2 and at the end, and a stride of about x / 2^18 from a
+ * random offset in between. */
+static void atan2_dense_sweep(void)
+{
+    static const uint32_t xs[] = { 0x80000000u, 0x7FFFFFFFu, 0x40000000u, 0x40000001u, 0x5A5A5A5Au,
+                                   0x6487ED51u, 12345678u, 1000003u, 65537u };
+    long span = DHT_ITER(20000L), steps = DHT_ITER(1L << 18);
+    unsigned m;
+    worst_atan2 = 0.0;
+    n_atan2 = 0;
+    for (m = 0; m < sizeof xs / sizeof xs[0]; m++) {
+        uint32_t x = xs[m], stride = x / (uint32_t)steps + 1u, y;
+        long i;
+        for (i = 0; i < span && (uint32_t)i <= x; i++) {
+            check_mags((uint32_t)i, x);
+            check_mags(x - (uint32_t)i, x);
+            check_mags(x / 2u - (uint32_t)(span / 2) + (uint32_t)i, x);
+        }
+        for (y = rand_upto(stride - 1u); y <= x - stride; y += stride) check_mags(y, x);
+    }
+    dht_printf("atan2_q: %ld pairs in dense sweeps, max error %.4f LSB\n", n_atan2, worst_atan2);
+}
+
 static void atan2_scale_and_symmetry(void)
 {
     long i, n = DHT_ITER(300000L);
@@ -254,6 +369,8 @@ static const dht_case cases[] = {
     DHT_CASE(atan2_domain),
     DHT_CASE(atan2_edge_pairs),
     DHT_CASE(atan2_random),
+    DHT_CASE(atan2_table_points),
+    DHT_CASE(atan2_dense_sweep),
     DHT_CASE(atan2_scale_and_symmetry),
     DHT_CASE(asin_acos_values),
     DHT_CASE(asin_acos_sweep),
