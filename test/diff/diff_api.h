@@ -213,7 +213,17 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_ikc_nearest_f32, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_ikc_nearest_q, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_ik_params_default_q, g_robot, 1000000, DIFF_OUT_SMALL, C_BITS) \
-    X(dh_ik_q, g_ikq, DIFF_IKQ_COUNT, DIFF_OUT_FRAMES, C_BITS)
+    X(dh_ik_q, g_ikq, DIFF_IKQ_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_slerp_f32, g_slerp, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_pose_interp_f32, g_pose, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_pose_angle_f32, g_pose, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_profile_trap_f32, g_motion, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_profile_scurve_f32, g_motion, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_profile_quintic_f32, g_motion, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_profile_stretch_f32, g_motion, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_profile_eval_f32, g_motion, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_joint_move_f32, g_motion, 1000000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_joint_move_eval_f32, g_motion, 1000000, DIFF_OUT_SMALL, C_BITS)
 
 /* enum of the table rows */
 #define DIFF_ENUM(name, gen, count, len, cmp) E_##name,
