@@ -7,6 +7,7 @@
  *   dh_pose_error_q.c  dh_rot_error_q
  *   dh_ik.c            dh_ik_params_default_f32, dh_ik_f32
  *   dh_ik_q.c          dh_ik_params_default_q, dh_ik_q
+ *   dh_dls_q.c         dh_manipulability_q, dh_dls_step_q
  */
 /**
  * @file kin.h
@@ -347,6 +348,72 @@ void dh_ik_params_default_q(const dh_robot *r, dh_ik_params_q *p);
  */
 dh_status dh_ik_q(const dh_robot *r, const dh_frame_q *target, const int32_t *q0, const dh_ik_params_q *p,
                   int32_t *work, size_t work_len, int32_t *q, dh_ik_result_q *res);
+
+/* ---- singularity measures and damped least squares, fixed point ---------- */
+
+/** Scratch of dh_manipulability_q and dh_dls_step_q (caller-owned, 132
+ *  + 2 DH_MAX_JOINTS bytes, so that both stay within the 256-byte stack budget); its contents
+ *  are unspecified between calls. */
+typedef struct {
+    int32_t L[21];  /**< equilibrated Gram matrix, then its factor (packed lower triangle) */
+    int32_t y[6];   /**< right-hand side and solution */
+    int16_t c[6];   /**< equilibration exponents */
+    int16_t ik[6];  /**< pivot reciprocal exponents */
+    int16_t ex[DH_MAX_JOINTS]; /**< exponents of the unscaled step */
+} dh_dls_work_q;
+
+/**
+ * @brief Singularity measures of a fixed-point Jacobian (integer only).
+ *
+ * J is dh_jacobian_q's (6 x n, row-major; a column whose angular rows are
+ * all 0 is read as prismatic: linear rows Q2.30, else revolute: linear
+ * rows dh_qpos per rad, angular rows Q2.30). G = J J^T for n >= 6, J^T J
+ * for n < 6, in J's units (length unit, rad).
+ * @param w  may be NULL; else log2 sqrt(det G), the manipulability's base-2
+ *           logarithm, in Q16.16 (a logarithm so that every robot and length
+ *           unit fits: a UR5 in mm has sqrt det G near 2^26), or INT32_MIN
+ *           when G is numerically singular (a pivot of the equilibrated G
+ *           below 2^-24). Error against double: docs/accuracy_kin.md,
+ *           test/kin/test_dls_q.c.
+ * @param sigma_min may be NULL; else a LOWER BOUND on the smallest singular
+ *           value of J in dh_qpos (DH_QPOS_FRAC fraction bits; saturated at
+ *           INT32_MAX), 0 near a singularity: 1 / sqrt(trace G^-1), at most
+ *           sqrt(6) (or sqrt(n)) below the true value, from a factor of the
+ *           equilibrated G lowered by 2^-21 of its diagonal, rounded down.
+ * @param work scratch (not NULL), overlapping nothing.
+ * @return DH_OK; DH_ERR_ARG for n == 0 or n > DH_MAX_JOINTS (outputs untouched).
+ */
+dh_status dh_manipulability_q(const int32_t *J, uint32_t n, dh_dls_work_q *work, int32_t *w, int32_t *sigma_min);
+
+/**
+ * @brief One damped-least-squares step, fixed point (integer only):
+ * dq = J^T (J J^T + lambda^2 I)^-1 e in joint units, scaled down uniformly
+ * so that |dq_i| <= dq_max[i].
+ *
+ * @param r      robot (fixed path); gives n and which columns are prismatic.
+ * @param J      dh_jacobian_q's Jacobian at the current configuration.
+ * @param e      pose error: e[0..2] position in dh_qpos, e[3..5] rotation
+ *               vector in Q3.29 rad (dh_rot_error_q's format), e.g. target
+ *               minus current.
+ * @param lambda damping, >= 0, in dh_qpos (the float step's lambda times
+ *               2^DH_QPOS_FRAC: the same number in the length unit / rad).
+ * @param dq_max NULL (no scaling) or n bounds >= 0 (dh_q16 deg / dh_qpos).
+ * @param work   scratch (not NULL), overlapping nothing.
+ * @param dq     n outputs: dh_q16 degrees (revolute), dh_qpos (prismatic).
+ *               With dq_max: every |dq_i| <= dq_max[i] exactly (the ratio
+ *               rounded down), the direction kept within 2^-29 relative.
+ *               Must not overlap the inputs.
+ * @return DH_OK; DH_ERR_ARG (n 0 or > DH_MAX_JOINTS, joint type, lambda < 0,
+ *         a dq_max entry < 0; dq untouched); DH_ERR_UNAVAILABLE (no fixed
+ *         path; dq untouched); DH_ERR_SINGULAR (lambda == 0 and J J^T
+ *         numerically singular: a pivot of the equilibrated matrix below
+ *         2^-24; dq zeros); DH_ERR_OVERFLOW (dq_max NULL and an entry
+ *         saturated at INT32_MIN / INT32_MAX with its sign; or the solve
+ *         could not be scaled into range, dq zeros).
+ *         Error against the exact step in double: test/kin/test_dls_q.c.
+ */
+dh_status dh_dls_step_q(const dh_robot *r, const int32_t *J, const int32_t e[6], int32_t lambda,
+                        const int32_t *dq_max, dh_dls_work_q *work, int32_t *dq);
 
 #ifdef __cplusplus
 }
