@@ -522,6 +522,9 @@ RF_ERRORS = [
     ('# only a comment\n', r'NAME:1: no .joint. lines'),
     ('', r'NAME:1: no .joint. lines'),
     ('joint R a=1\x00\n', r'NAME:1:11: joint: bad number .1\\x00.'),
+    ('joint R vmax=0\n', r'NAME:1:14: joint: .vmax. must be greater than 0'),
+    ('joint R vmax=10 amax=-5\n', r'NAME:1:22: joint: .amax. must be greater than 0'),
+    ('joint R vmax=1 vmax=2\n', r'NAME:1:16: joint: duplicate key .vmax.'),
 ]
 
 
@@ -584,6 +587,23 @@ def group_robotfile(seed, tmp):
         want = pat.replace('NAME', re.escape(path))
         check(rc == 2 and out == '' and re.search(want, err) is not None,
               'robot file %r: rc %d out %r err %r (want %r)' % (text, rc, out, err, want))
+    # rate limits: vmax=/amax= reach the robot (dhmath gen writes every
+    # field: the float value, its Q16.16 / dh_qpos copy, unlimited as
+    # INFINITY / INT32_MAX)
+    path = os.path.join(tmp, 'rates.dh')
+    with open(path, 'w') as f:
+        f.write('joint R a=0.5 vmax=180 amax=720\njoint P vmax=0.25\n')
+    rc, out, err = run(['gen', path, 'rates'])
+    check(rc == 0, 'gen with rates: rc %d %r' % (rc, err))
+    joints = re.findall(r'\[(\d)\] = \{ \.type(.*?)\}', out, re.S)
+    check(len(joints) == 2, 'gen with rates: %d joints' % len(joints))
+    if len(joints) == 2:
+        j1, j2 = joints[0][1], joints[1][1]
+        check('.vmax = 0x1.68p+7f' in j1 and '.amax = 0x1.68p+9f' in j1 and
+              '.vmax_q = %d' % (180 * 65536) in j1 and '.amax_q = %d' % (720 * 65536) in j1,
+              'gen joint 1 rates: %r' % j1)
+        check('.vmax = 0x1p-2f' in j2 and '.amax = INFINITY' in j2 and '.amax_q = 2147483647' in j2,
+              'gen joint 2 rates: %r' % j2)
     path = os.path.join(tmp, 'missing.dh')
     rc, out, err = run(['fk', path, '0'])
     check(rc == 2 and out == '' and 'cannot open' in err, 'missing robot file: %r' % err)

@@ -178,6 +178,8 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_robot_add_joint_q, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
     X(dh_robot_set_limits_f32, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
     X(dh_robot_set_limits_q, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
+    X(dh_robot_set_rates_f32, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
+    X(dh_robot_set_rates_q, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
     X(dh_robot_set_base_f32, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
     X(dh_robot_set_tool_f32, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
     X(dh_robot_set_base_q, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
