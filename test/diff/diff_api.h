@@ -196,6 +196,8 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_jacobian_f32, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_jacobian_tool_f32, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_rot_error_f32, g_rot, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_manipulability_f32, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_dls_step_f32, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_jacobian_q, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_jacobian_tool_q, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_rot_error_q, g_frames, 1000000, DIFF_OUT_FRAMES, C_BITS) \
