@@ -30,26 +30,31 @@
  */
 #include "dhmath/kin.h"
 #include "../internal/dh_floatops.h"
+#include "kin_impl.h"
 
 /* u = 2^-24, the unit roundoff of float */
 #define DLS_U 5.9604644775390625e-8f
 
+/* sum over k < len of a[k stride] b[k stride] */
+static DH_NOINLINE float dls_dot(const float *a, const float *b, uint32_t len, uint32_t stride)
+{
+    float s = 0.0f;
+    uint32_t k;
+    for (k = 0u; k < len; k++) s += a[k * stride] * b[k * stride];
+    return s;
+}
+
 /* A (packed lower) = J J^T (jjt != 0, 6 x 6) or J^T J (n x n); returns
  * its trace. */
-static float dls_normal(const float *J, uint32_t n, int jjt, float *A)
+static DH_NOINLINE float dls_normal(const float *J, uint32_t n, int jjt, float *A)
 {
     const uint32_t m = (jjt != 0) ? 6u : n;
-    uint32_t i, j, k, p = 0u;
+    uint32_t i, j, p = 0u;
     float tr = 0.0f;
     for (i = 0u; i < m; i++) {
         for (j = 0u; j <= i; j++) {
-            float s = 0.0f;
-            if (jjt != 0) {
-                for (k = 0u; k < n; k++) s += J[i * n + k] * J[j * n + k];
-            } else {
-                for (k = 0u; k < 6u; k++) s += J[k * n + i] * J[k * n + j];
-            }
-            A[p++] = s;
+            A[p] = (jjt != 0) ? dls_dot(&J[i * n], &J[j * n], n, 1u) : dls_dot(&J[i], &J[j], 6u, n);
+            p++;
         }
         tr += A[p - 1u];
     }
@@ -59,7 +64,7 @@ static float dls_normal(const float *J, uint32_t n, int jjt, float *A)
 /* In-place Cholesky of the packed m x m matrix A: L (lower, packed).
  * A pivot below floor is set to floor when floor > 0; returns 1 when a
  * pivot is <= 0 (L incomplete), else 0. */
-static int dls_chol(float *A, uint32_t m, float floor)
+static DH_NOINLINE int dls_chol(float *A, uint32_t m, float floor)
 {
     uint32_t i, j, k;
     for (i = 0u; i < m; i++) {
@@ -80,6 +85,57 @@ static int dls_chol(float *A, uint32_t m, float floor)
     return 0;
 }
 
+/* ||L^-1||_F^2 of the packed factor L (m x m), column c of L^-1 by
+ * forward substitution; *w = prod L_ii */
+static DH_NOINLINE float dls_inv_trace(const float *A, uint32_t m, float *w)
+{
+    uint32_t c, i, k;
+    float tinv = 0.0f, wv = 1.0f;
+    for (c = 0u; c < m; c++) {
+        float x[6];
+        for (i = c; i < m; i++) {
+            const float *Ri = &A[i * (i + 1u) / 2u];
+            float s = (i == c) ? 1.0f : 0.0f;
+            for (k = c; k < i; k++) s -= Ri[k] * x[k];
+            x[i] = s / Ri[i];
+            tinv += x[i] * x[i];
+        }
+        wv *= A[c * (c + 1u) / 2u + c];
+    }
+    *w = wv;
+    return tinv;
+}
+
+/* y = A^-1 e with the packed factor L of A (6 x 6): L z = e, L^T y = z */
+static DH_NOINLINE void dls_solve(const float *A, const float *e, float *y)
+{
+    uint32_t i, k;
+    for (i = 0u; i < 6u; i++) {
+        const float *Ri = &A[i * (i + 1u) / 2u];
+        float t = e[i];
+        for (k = 0u; k < i; k++) t -= Ri[k] * y[k];
+        y[i] = t / Ri[i];
+    }
+    for (i = 6u; i-- > 0u;) {
+        float t = y[i];
+        for (k = i + 1u; k < 6u; k++) t -= A[k * (k + 1u) / 2u + i] * y[k];
+        y[i] = t / A[i * (i + 1u) / 2u + i];
+    }
+}
+
+/* dq = J^T y in joint units (degrees for revolute joints) */
+static DH_NOINLINE void dls_joint(const dh_robot *r, const float *J, const float *y, float *dq)
+{
+    const uint32_t n = r->n;
+    uint32_t i, k;
+    for (k = 0u; k < n; k++) {
+        float v = 0.0f;
+        for (i = 0u; i < 6u; i++) v += J[i * n + k] * y[i];
+        if (r->joint[k].type == DH_JOINT_REVOLUTE) v *= DH_RAD2DEG_F;
+        dq[k] = v;
+    }
+}
+
 static int dls_finite(const float *x, uint32_t len)
 {
     uint32_t i;
@@ -88,11 +144,10 @@ static int dls_finite(const float *x, uint32_t len)
     return dh_feq_f32(s, 0.0f);
 }
 
-dh_status dh_manipulability_f32(const float *J, uint32_t n, float *w, float *sigma_min)
+dh_status dh_manipulability_ws_f32_(const float *J, uint32_t n, float *w, float *sigma_min, float *A)
 {
-    float A[21];
     float tr, wv = 1.0f, tinv = 0.0f, lb;
-    uint32_t m, i, k, c;
+    uint32_t m;
     DH_ASSERT(J != NULL);
     if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if (!dls_finite(J, 6u * n)) return DH_ERR_NAN;
@@ -103,18 +158,7 @@ dh_status dh_manipulability_f32(const float *J, uint32_t n, float *w, float *sig
         wv = 0.0f;
         lb = 0.0f;
     } else {
-        /* ||L^-1||_F^2, column c of L^-1 by forward substitution */
-        for (c = 0u; c < m; c++) {
-            float x[6];
-            for (i = c; i < m; i++) {
-                const float *Ri = &A[i * (i + 1u) / 2u];
-                float s = (i == c) ? 1.0f : 0.0f;
-                for (k = c; k < i; k++) s -= Ri[k] * x[k];
-                x[i] = s / Ri[i];
-                tinv += x[i] * x[i];
-            }
-            wv *= A[c * (c + 1u) / 2u + c];
-        }
+        tinv = dls_inv_trace(A, m, &wv);
         lb = (1.0f - 0.00390625f) / tinv - 32.0f * DLS_U * tr;
     }
     if (!dh_isfinite_f32(wv)) return DH_ERR_OVERFLOW;
@@ -123,10 +167,10 @@ dh_status dh_manipulability_f32(const float *J, uint32_t n, float *w, float *sig
     return DH_OK;
 }
 
-dh_status dh_dls_step_f32(const dh_robot *r, const float *J, const float e[6], float lambda, const float *dq_max,
-                          float *dq)
+dh_status dh_dls_step_ws_f32_(const dh_robot *r, const float *J, const float *e, float lambda, const float *dq_max,
+                              float *dq, float *ws)
 {
-    float A[21], y[6];
+    float *const A = ws, *const y = ws + 21;
     float tr, l2, s = 1.0f;
     uint32_t n, i, k;
     DH_ASSERT(r != NULL);
@@ -159,24 +203,8 @@ dh_status dh_dls_step_f32(const dh_robot *r, const float *J, const float e[6], f
             }
         }
     }
-    /* y = A^-1 e: L z = e, then L^T y = z */
-    for (i = 0u; i < 6u; i++) {
-        const float *Ri = &A[i * (i + 1u) / 2u];
-        float t = e[i];
-        for (k = 0u; k < i; k++) t -= Ri[k] * y[k];
-        y[i] = t / Ri[i];
-    }
-    for (i = 6u; i-- > 0u;) {
-        float t = y[i];
-        for (k = i + 1u; k < 6u; k++) t -= A[k * (k + 1u) / 2u + i] * y[k];
-        y[i] = t / A[i * (i + 1u) / 2u + i];
-    }
-    for (k = 0u; k < n; k++) {
-        float v = 0.0f;
-        for (i = 0u; i < 6u; i++) v += J[i * n + k] * y[i];
-        if (r->joint[k].type == DH_JOINT_REVOLUTE) v *= DH_RAD2DEG_F;
-        dq[k] = v;
-    }
+    dls_solve(A, e, y);
+    dls_joint(r, J, y, dq);
     if (!dls_finite(dq, n)) {
         for (k = 0u; k < n; k++) dq[k] = 0.0f;
         return DH_ERR_OVERFLOW;
@@ -195,4 +223,17 @@ dh_status dh_dls_step_f32(const dh_robot *r, const float *J, const float e[6], f
         }
     }
     return DH_OK;
+}
+
+dh_status dh_manipulability_f32(const float *J, uint32_t n, float *w, float *sigma_min)
+{
+    float A[21];
+    return dh_manipulability_ws_f32_(J, n, w, sigma_min, A);
+}
+
+dh_status dh_dls_step_f32(const dh_robot *r, const float *J, const float e[6], float lambda, const float *dq_max,
+                          float *dq)
+{
+    float ws[DH_DLS_WS_FLOATS];
+    return dh_dls_step_ws_f32_(r, J, e, lambda, dq_max, dq, ws);
 }

@@ -217,7 +217,9 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_ikc_nearest_f32, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_ikc_nearest_q, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_ik_params_default_q, g_robot, 1000000, DIFF_OUT_SMALL, C_BITS) \
-    X(dh_ik_q, g_ikq, DIFF_IKQ_COUNT, DIFF_OUT_FRAMES, C_BITS)
+    X(dh_ik_q, g_ikq, DIFF_IKQ_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_track_init_f32, g_robot, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_track_step_f32, g_robot, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS)
 
 /* enum of the table rows */
 #define DIFF_ENUM(name, gen, count, len, cmp) E_##name,
