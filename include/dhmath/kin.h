@@ -7,6 +7,7 @@
  *   dh_pose_error_q.c  dh_rot_error_q
  *   dh_ik.c            dh_ik_params_default_f32, dh_ik_f32
  *   dh_ik_q.c          dh_ik_params_default_q, dh_ik_q
+ *   dh_dls.c           dh_manipulability_f32, dh_dls_step_f32
  *   dh_dls_q.c         dh_manipulability_q, dh_dls_step_q
  */
 /**
@@ -150,6 +151,56 @@ dh_status dh_jacobian_tool_q(const dh_robot *r, const int32_t *q, int32_t *J, dh
  */
 dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh_vec3_f32 *w);
 
+/**
+ * @brief Singularity measures of a Jacobian: manipulability w = sqrt(det(J
+ * J^T)) (Yoshikawa 1985; sqrt(det(J^T J)) when n < 6) and a lower bound on
+ * the smallest singular value of J (the 6th for n >= 6, the n-th for n < 6).
+ *
+ * J is 6 x n row-major as dh_jacobian_f32 writes it (per radian for
+ * revolute columns, so both measures mix the length unit and radians as
+ * J does). sigma_min <= the smallest singular value of the J given (exact
+ * arithmetic on the float entries) on every input, at most sqrt(m) (m = 6
+ * or n) times below it plus the float resolution: below about
+ * sqrt(32 * 2^-24 * |J|_F^2) it is reported as 0. Method: src/kin/dh_dls.c.
+ * @param J   6 * n finite floats.
+ * @param n   joints, 1..DH_MAX_JOINTS.
+ * @param w   manipulability (>= 0; 0 when J J^T is numerically singular),
+ *            or NULL.
+ * @param sigma_min lower bound (>= 0), or NULL.
+ * @return DH_OK; DH_ERR_ARG n out of range; DH_ERR_NAN an entry of J not
+ *         finite; DH_ERR_OVERFLOW J J^T or w overflows float. Outputs
+ *         untouched on error.
+ */
+dh_status dh_manipulability_f32(const float *J, uint32_t n, float *w, float *sigma_min);
+
+/**
+ * @brief One damped least-squares step (Wampler 1986): dq = J^T (J J^T +
+ * lambda^2 I)^-1 e, in joint units, scaled to per-joint bounds.
+ *
+ * The step that reduces |e - J dq| most for its size (resolved-rate
+ * control, and the step dh_track_step_f32 takes). The solution per radian
+ * is converted to degrees for revolute joints (prismatic: length unit);
+ * then, when dq_max is given, the whole vector is scaled down by one factor
+ * so that |dq[i]| <= dq_max[i] for every joint (the direction is kept; a
+ * bound of 0 stops every joint).
+ * @param r      robot (joint types, n = r->n in 1..DH_MAX_JOINTS).
+ * @param J      6 x n Jacobian as dh_jacobian_f32 (per radian).
+ * @param e      task error: e[0..2] position (length unit), e[3..5]
+ *               rotation vector (rad), as dh_pose_error_f32(target, FK(q)).
+ * @param lambda damping (length unit, >= 0, finite); 0 gives the
+ *               pseudo-inverse step (a lambda whose square underflows
+ *               float, < 1e-19, counts as 0).
+ * @param dq_max n bounds (>= 0, +inf allowed), or NULL for no scaling.
+ * @param dq     n outputs (may not overlap the inputs).
+ * @return DH_OK; DH_ERR_SINGULAR lambda is 0 and J J^T is singular within
+ *   float rounding (dq zeros); DH_ERR_OVERFLOW the step overflows float (dq
+ *   zeros, or untouched when J J^T itself overflows). With dq untouched:
+ *   DH_ERR_ARG (n, lambda < 0 or infinite, a dq_max entry < 0 or NaN),
+ *   DH_ERR_NAN (lambda, J or e not finite).
+ */
+dh_status dh_dls_step_f32(const dh_robot *r, const float *J, const float e[6], float lambda, const float *dq_max,
+                          float *dq);
+
 /** DH_ROT_ERROR_TOL in Q2.30 LSB (1e-3 2^30), for dh_rot_error_q. */
 #define DH_ROT_ERROR_TOL_Q 1073742
 
@@ -258,13 +309,13 @@ void dh_ik_params_default_f32(const dh_robot *r, dh_ik_params_f32 *p);
  * tolerance) and restarts from a deterministic pseudo-random configuration
  * (p->restarts, within p->max_iter steps); the best attempt is returned
  * (converged first, then lowest E). Same inputs, bitwise same outputs.
- * Reach bound: (sum of |a|, |d|, prismatic travel, |p_tool|) * base norm *
- * (1 + 1e-4) + tol_pos. Method: docs/design.md ("Kinematics").
- * @param r      robot (float path), 1..DH_MAX_JOINTS joints.
- * @param target end frame, bottom row exactly 0 0 0 1; rotation (read only
- *               when the mask drives it) within DH_ROT_ERROR_TOL, det > 0.
- * @param q0,p   start (n finite values); parameters.
- * @param work,work_len >= DH_IK_WORK_FLOATS(n) floats, overlapping nothing; clobbered.
+ * Restarts can return DH_OK far from q0 (continuous motion: track.h). Reach
+ * bound: (sum of |a|, |d|, prismatic travel, |p_tool|) * base norm * (1 +
+ * 1e-4) + tol_pos. Method: docs/design.md ("Kinematics").
+ * @param r,target robot (float path), 1..DH_MAX_JOINTS joints; end frame,
+ *               bottom row 0 0 0 1, driven rotation within DH_ROT_ERROR_TOL, det > 0.
+ * @param q0,p,work,work_len start (n finite values); parameters; >=
+ *               DH_IK_WORK_FLOATS(n) floats, overlapping nothing, clobbered.
  * @param q,res  result (may alias q0); iterations and errors of q.
  * @return for the returned q (within the limits; res describes it): DH_OK
  *   both tolerances met; DH_ERR_NO_CONVERGENCE max_iter cut off an attempt

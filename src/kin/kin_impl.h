@@ -20,6 +20,15 @@
  * overlap. 1 when every entry of J and F is finite, else 0. */
 int dh_kin_jac_f32_(const dh_robot *r, const float *scd, float *J, float *F);
 
+/* dh_manipulability_f32 and dh_dls_step_f32 with their matrices in the
+ * caller's ws (21 and DH_DLS_WS_FLOATS floats, overlapping nothing): the
+ * tracker (src/track/) calls them on its state to stay within the stack
+ * budget. Same contracts. */
+#define DH_DLS_WS_FLOATS 27u
+dh_status dh_manipulability_ws_f32_(const float *J, uint32_t n, float *w, float *sigma_min, float *ws);
+dh_status dh_dls_step_ws_f32_(const dh_robot *r, const float *J, const float *e, float lambda, const float *dq_max,
+                              float *dq, float *ws);
+
 /* a(dR) of dh_rot_error_f32 for dR row-major, d[3 row + col], into w[0..2]
  * (d and w do not overlap). */
 void dh_kin_rotvec_f32_(const float *d, float *w);

@@ -1,0 +1,138 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * Index: the functions of track.h by source file (src/track/).
+ *   dh_track.c    dh_track_init_f32, dh_track_step_f32
+ */
+/**
+ * @file track.h
+ * @brief Tracking IK: one joint command per control period that never
+ *        jumps, with the target pose reached whenever the joint rate
+ *        limits allow it.
+ *
+ * The caller owns a dh_track_f32 (robot, closed-form model when the robot
+ * has one, current configuration, control period) and calls
+ * dh_track_step_f32 once per period with the next target frame.
+ *
+ * Guarantees of every step, whatever its status (float arithmetic on the
+ * values stored, as the tests check them in double):
+ * - |q_out[i] - q_prev[i]| <= t->dq_max[i] <= vmax[i] * dt (dh_robot_set_rates_f32);
+ * - q_out within the joint limits (joints with limits);
+ * - q_out finite;
+ * - with a finite amax[i]: |(q_out - q_prev) - (q_prev - q_prev2)| <=
+ *   amax[i] * dt^2 + 2 ulp(|q|) (the float resolution of the joint value),
+ *   and the joint can always stop before its limit: its velocity v after
+ *   the step satisfies v^2 <= 2 amax * (distance left to the limit ahead).
+ * DH_TRACK_OK is returned only when FK(q_out) is within t->pos_tol and
+ * t->rot_tol of the target.
+ *
+ * Method (docs/design.md, "Tracking"): for a closed-form robot, the
+ * solution of dh_ikc_f32 nearest the current configuration in time (the
+ * largest |q*_i - q_i| / vmax_i, then the sum of |q*_i - q_i|) is taken
+ * when every joint can reach it this period (status OK). Otherwise the
+ * damped least-squares step (dh_dls_step_f32, damping raised near
+ * singularities from the bound on the smallest singular value) is fitted
+ * into the period's step box; where it stalls (it removes less than a
+ * tenth of the error, against a limit or with the elbow stretched) or
+ * moves away from the nearest closed-form solution, the step heads at the
+ * bound straight for that solution (continuous: never a jump to another
+ * branch). Robots without a closed form (m NULL) use the damped step alone.
+ * No restarts, no randomness: same inputs, same outputs.
+ */
+#ifndef DHMATH_TRACK_H
+#define DHMATH_TRACK_H
+
+#include "dhmath/kin.h"
+#include "dhmath/ikc.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Outcome of one tracking step. */
+typedef enum {
+    DH_TRACK_OK = 0,          /**< target reached within pos_tol / rot_tol */
+    DH_TRACK_LAGGING = 1,     /**< reachable, but not this period (rate or acceleration bound, branch far away, singular neighbourhood) */
+    DH_TRACK_UNREACHABLE = 2  /**< no closed-form solution within the limits, or beyond the reach bound (no closed form) */
+} dh_track_state;
+
+/** What one step did (float). */
+typedef struct {
+    dh_track_state state;  /**< see dh_track_state */
+    float pos_err;         /**< |p_target - p(q_out)|, length unit */
+    float rot_err;         /**< rotation angle between target and FK(q_out), rad */
+    float manip;           /**< manipulability sqrt(det J J^T) at q_out (dh_manipulability_f32) */
+    float sigma_min;       /**< lower bound on the smallest singular value of J at q_out */
+    int near_singular;     /**< sigma_min < t->sing_threshold */
+} dh_track_report_f32;
+
+/** Tracker state (float); fill with dh_track_init_f32, then adjust lambda,
+ *  sing_threshold, pos_tol, rot_tol if wanted. */
+typedef struct {
+    const dh_robot *r;                 /**< robot (float path), not copied */
+    const dh_ikc_model_f32 *m;         /**< closed-form model, NULL: damped steps only */
+    float dt;                          /**< control period, s */
+    float q[DH_MAX_JOINTS];            /**< current configuration (the last output) */
+    float v[DH_MAX_JOINTS];            /**< last velocity (q - q_prev) / dt, joint unit / s */
+    float dq_max[DH_MAX_JOINTS];       /**< step bound: vmax * dt rounded down by 2^-20 relative (+inf: unlimited) */
+    float lambda;                      /**< largest damping of the DLS step (length unit; default 0.02 L) */
+    float sing_threshold;              /**< near-singular threshold on sigma_min (default 0.005 L) and where the damping starts */
+    float pos_tol, rot_tol;            /**< "reached" tolerances (defaults 2e-6 L, 2e-5 rad) */
+    /* private workspace (keeps the step's stack small); read-only for the caller */
+    float reach;                       /**< reach bound used for UNREACHABLE without a closed form */
+    float J[6 * DH_MAX_JOINTS];        /**< Jacobian at q */
+    float dq[DH_MAX_JOINTS];           /**< step being built */
+    float lo[DH_MAX_JOINTS];           /**< step box of this period, lower */
+    float hi[DH_MAX_JOINTS];           /**< step box of this period, upper */
+    float qs[DH_MAX_JOINTS];           /**< nearest closed-form solution */
+    float keep[DH_MAX_JOINTS];         /**< step so far (damped steps only) */
+    float e[6];                        /**< pose error at q */
+    float ws[27];                      /**< damped step's matrices */
+    float sg;                          /**< sigma_min bound at q */
+    float lam;                         /**< damping of this period's step */
+    uint32_t ns;                       /**< closed-form solutions found */
+    dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL]; /**< closed-form solutions */
+    dh_mat4_f32 T;                     /**< FK at q */
+} dh_track_f32;
+
+/**
+ * @brief Start tracking at q0: fills every field of t (defaults above with
+ * L = sum over joints of |a| + |d| + the prismatic travel + |p_tool|) and the
+ * Jacobian at q0.
+ * @param t  tracker (not NULL), written.
+ * @param r  robot (float path), 1..DH_MAX_JOINTS joints; rate limits from
+ *           dh_robot_set_rates_f32 (unlimited joints have no step bound).
+ * @param m  closed-form model from dh_ikc_analyse_f32 for r (kind not NONE),
+ *           or NULL for damped steps only.
+ * @param q0 n finite joint values within the limits.
+ * @param dt control period in seconds, finite, > 0.
+ * @return DH_OK; DH_ERR_ARG (dt, n, a model of another joint count or of
+ *         kind NONE); DH_ERR_NAN (q0 not finite); DH_ERR_LIMIT (q0 outside
+ *         the limits); DH_ERR_UNAVAILABLE (no float path); DH_ERR_OVERFLOW
+ *         (FK of q0). t is not usable after an error.
+ */
+dh_status dh_track_init_f32(dh_track_f32 *t, const dh_robot *r, const dh_ikc_model_f32 *m, const float *q0,
+                            float dt);
+
+/**
+ * @brief One control period: the next configuration towards target.
+ *
+ * Every status keeps the guarantees of the file comment; t->q and t->v
+ * become q_out and its velocity.
+ * @param t      tracker from dh_track_init_f32.
+ * @param target next target frame (bottom row 0 0 0 1, rotation within
+ *               DH_ROT_ERROR_TOL of orthonormal, det > 0).
+ * @param q_out  n joint values (may alias t->q).
+ * @param rep    report (not NULL).
+ * @return DH_OK (rep->state says whether the target was reached);
+ *   DH_ERR_NAN target not finite, DH_ERR_NOT_RIGID target not rigid: the
+ *   joints then brake (each velocity towards 0 within amax, stopping at
+ *   once when amax is unlimited), rep->state is DH_TRACK_UNREACHABLE with
+ *   pos_err and rot_err 0.
+ */
+dh_status dh_track_step_f32(dh_track_f32 *t, const dh_mat4_f32 *target, float *q_out, dh_track_report_f32 *rep);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DHMATH_TRACK_H */
