@@ -2,6 +2,7 @@
 /*
  * Index: the functions of track.h by source file (src/track/).
  *   dh_track.c    dh_track_init_f32, dh_track_step_f32
+ *   dh_track_q.c  dh_track_init_q, dh_track_step_q
  */
 /**
  * @file track.h
@@ -130,6 +131,87 @@ dh_status dh_track_init_f32(dh_track_f32 *t, const dh_robot *r, const dh_ikc_mod
  *   pos_err and rot_err 0.
  */
 dh_status dh_track_step_f32(dh_track_f32 *t, const dh_mat4_f32 *target, float *q_out, dh_track_report_f32 *rep);
+
+/* ---- fixed point (integer only) ----------------------------------------- */
+
+/** What one fixed-point step did. */
+typedef struct {
+    dh_track_state state;  /**< see dh_track_state */
+    int32_t pos_err;       /**< |p_target - p(q_out)|, dh_qpos (saturated at INT32_MAX) */
+    int32_t rot_err;       /**< rotation angle between target and FK(q_out), Q3.29 rad (dh_rot_error_q's format) */
+    int32_t manip;         /**< log2 of the manipulability at q_out, Q16.16 (dh_manipulability_q; INT32_MIN: singular) */
+    int32_t sigma_min;     /**< lower bound on the smallest singular value of J at q_out, dh_qpos */
+    int near_singular;     /**< sigma_min < t->sing_threshold */
+} dh_track_report_q;
+
+/** Tracker state (fixed point); fill with dh_track_init_q, then adjust
+ *  lambda, sing_threshold, pos_tol, rot_tol if wanted. */
+typedef struct {
+    const dh_robot *r;                  /**< robot (fixed path), not copied */
+    const dh_ikc_model_q *m;            /**< closed-form model, NULL: damped steps only */
+    uint32_t dt_us;                     /**< control period, microseconds (1..1000000) */
+    int32_t q[DH_MAX_JOINTS];           /**< current configuration (the last output): dh_q16 deg / dh_qpos */
+    int32_t v[DH_MAX_JOINTS];           /**< last STEP q - q_prev (per period, joint LSB) */
+    int32_t dq_max[DH_MAX_JOINTS];      /**< step bound floor(vmax_q dt_us / 10^6) (INT32_MAX: unlimited) */
+    int32_t dv_max[DH_MAX_JOINTS];      /**< bound on the change of step, floor(floor(amax_q dt_us / 10^6) dt_us / 10^6) (INT32_MAX: unlimited) */
+    int32_t lambda;                     /**< largest damping of the DLS step, dh_qpos (default 0.02 L) */
+    int32_t sing_threshold;             /**< near-singular threshold on sigma_min, dh_qpos (default 0.005 L), where the damping starts */
+    int32_t pos_tol;                    /**< "reached": position tolerance, dh_qpos (default 2^-19 L, at least 16 LSB) */
+    int32_t rot_tol;                    /**< "reached": rotation tolerance, Q3.29 rad (default 10737 = 2e-5 rad) */
+    /* private workspace (keeps the step's stack small); read-only for the caller */
+    int32_t reach;                      /**< reach bound (dh_qpos) for UNREACHABLE without a closed form */
+    int32_t J[6 * DH_MAX_JOINTS];       /**< Jacobian at q */
+    int32_t e[6];                       /**< pose error / residual */
+    int32_t dq[DH_MAX_JOINTS];          /**< step being built */
+    int32_t keep[DH_MAX_JOINTS];        /**< step kept between damped steps */
+    int32_t lo[DH_MAX_JOINTS];          /**< step box of this period, lower */
+    int32_t hi[DH_MAX_JOINTS];          /**< step box of this period, upper */
+    int32_t qs[DH_MAX_JOINTS];          /**< nearest closed-form solution */
+    dh_ikc_sol_q sol[DH_IKC_MAX_SOL];   /**< closed-form solutions */
+    dh_frame_q T;                       /**< FK at q */
+    dh_dls_work_q work;                 /**< scratch of the damped step */
+} dh_track_q;
+
+/**
+ * @brief Start tracking at q0 in fixed point (integer only): fills every
+ * field of t, with L = sum of |a_q|, |d_q|, the prismatic travel and
+ * |tool p| in dh_qpos, and the Jacobian at q0.
+ * @param t     tracker (not NULL), written.
+ * @param r     robot (fixed path), 1..DH_MAX_JOINTS joints; rate limits
+ *              from dh_robot_set_rates_q / _f32 (INT32_MAX: unlimited).
+ * @param m     model from dh_ikc_analyse_q for r (kind not NONE), or NULL.
+ * @param q0    n joint values within the limits (dh_q16 deg / dh_qpos).
+ * @param dt_us control period in microseconds, 1..1000000.
+ * @return DH_OK; DH_ERR_ARG (dt_us, n, a model of another joint count or
+ *         of kind NONE); DH_ERR_LIMIT (q0 outside the limits);
+ *         DH_ERR_UNAVAILABLE (no fixed path); DH_ERR_OVERFLOW (Jacobian
+ *         or FK of q0 saturated). t is not usable after an error.
+ */
+dh_status dh_track_init_q(dh_track_q *t, const dh_robot *r, const dh_ikc_model_q *m, const int32_t *q0,
+                          uint32_t dt_us);
+
+/**
+ * @brief One control period in fixed point: the next configuration
+ * towards target, with dh_track_step_f32's method and guarantees, exact in
+ * integers for every status: |q_out[i] - q_prev[i]| <= t->dq_max[i]
+ * (<= vmax_q dt); q_out within the joint limits; with an acceleration
+ * limit |(q_out - q_prev) - t->v[i]| <= t->dv_max[i] (<= amax_q dt^2) and
+ * the braking condition s^2 <= 2 A D (step s, A = dv_max, D the distance
+ * left to the limit ahead: v^2 <= 2 amax D) so that the bounds hold at the
+ * next call too.
+ * DH_TRACK_OK only when FK(q_out) (dh_fk_q) is within pos_tol and rot_tol
+ * of the target.
+ * @param t      tracker from dh_track_init_q.
+ * @param target next target frame; rotation orthonormal within
+ *               DH_ROT_ERROR_TOL_Q, det > 0.
+ * @param q_out  n joint values (may alias t->q).
+ * @param rep    report (not NULL).
+ * @return DH_OK (rep->state says whether the target was reached);
+ *   DH_ERR_NOT_RIGID target not rigid: the joints brake (each step towards
+ *   0 by at most dv_max, at once without an acceleration limit),
+ *   rep->state DH_TRACK_UNREACHABLE, pos_err and rot_err INT32_MAX.
+ */
+dh_status dh_track_step_q(dh_track_q *t, const dh_frame_q *target, int32_t *q_out, dh_track_report_q *rep);
 
 #ifdef __cplusplus
 }

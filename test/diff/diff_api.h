@@ -221,7 +221,9 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_track_init_f32, g_robot, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_track_step_f32, g_robot, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_manipulability_q, g_robot, 100000, DIFF_OUT_SMALL, C_BITS) \
-    X(dh_dls_step_q, g_robot, 100000, DIFF_OUT_SMALL, C_BITS)
+    X(dh_dls_step_q, g_robot, 100000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_track_init_q, g_robot, 100000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_track_step_q, g_robot, 20000, DIFF_OUT_FRAMES, C_BITS)
 
 /* enum of the table rows */
 #define DIFF_ENUM(name, gen, count, len, cmp) E_##name,
