@@ -1112,6 +1112,89 @@ static int track_vmax(const char *s, const dh_robot *r, float *vmax)
 
 static const char *const k_track_word[3] = { "ok", "lagging", "unreachable" };
 
+/* the next target line of track: 1 with T, 0 at the end of input, or an
+ * exit code (the error printed) */
+static int track_next(char *line, size_t cap, unsigned *lineno, dh_mat4_f32 *T)
+{
+    for (;;) {
+        size_t len, b = 0;
+        dh_expr_error e;
+        if (!fgets(line, (int)cap, stdin)) {
+            if (ferror(stdin)) return error_msg("reading the targets from standard input failed", NULL);
+            return 0;
+        }
+        len = strlen(line);
+        (*lineno)++;
+        if (len == cap - 1u && line[len - 1u] != '\n' && !feof(stdin)) {
+            fprintf(stderr, "dhmath: error: line %u: longer than %lu characters\n", *lineno,
+                    (unsigned long)(cap - 2u));
+            return EXIT_ERR;
+        }
+        while (len > 0u && (line[len - 1u] == '\n' || line[len - 1u] == '\r')) len--;
+        while (b < len && (line[b] == ' ' || line[b] == '\t')) b++;
+        if (b == len) continue; /* blank line */
+        if (dh_expr_eval_f32(line, len, T, &e)) {
+            fprintf(stderr, "dhmath: error: line %u: column %lu: %s\n", *lineno, (unsigned long)(e.pos + 1), e.msg);
+            return EXIT_ERR;
+        }
+        return 1;
+    }
+}
+
+/* track --fixed: the fixed-point tracker (dh_track_q) on the robot's fixed
+ * path, lengths in the robot file's unit; q0 rounded to Q16.16 degrees /
+ * dh_qpos, the period a whole number of microseconds, each target EXPR
+ * evaluated in float and rounded to a dh_frame_q. The rate limits are the
+ * fixed copies dh_robot_set_rates_f32 stored. */
+static int track_fixed(const dh_robot *r, const double *q0d, double dtd, outbuf *out)
+{
+    static dh_ikc_model_q m;
+    dh_mat4_f32 T_scratch;
+    static dh_track_q t;
+    int32_t q0[DH_MAX_JOINTS], q[DH_MAX_JOINTS];
+    const double us = dtd * 1e6, one = (double)((int32_t)1 << DH_QPOS_FRAC);
+    char line[4096], text[64];
+    unsigned i, lineno = 0;
+    int rc;
+    dh_status st;
+    const dh_ikc_model_q *mp = NULL;
+    if (!(us >= 1.0 && us <= 1e6) || fabs(us - floor(us + 0.5)) > 1e-6 * us)
+        return error_msg("--dt", "with --fixed the control period must be a whole number of microseconds, at most 1 s");
+    if ((r->flags & DH_ROBOT_HAS_Q) == 0u)
+        return error_msg("track --fixed", "the robot's constants do not fit the fixed-point formats");
+    for (i = 0; i < r->n; i++) {
+        const double v = q0d[i] * ((r->joint[i].type == DH_JOINT_REVOLUTE) ? 65536.0 : one);
+        if (!(fabs(v) < 2147483647.0)) return error_msg("--q0", "a joint value does not fit the fixed-point format");
+        q0[i] = (int32_t)floor(v + 0.5);
+    }
+    if (dh_ikc_analyse_q(r, &m) == DH_OK && m.kind != DH_IKC_NONE) mp = &m;
+    st = dh_track_init_q(&t, r, mp, q0, (uint32_t)floor(us + 0.5));
+    if (st == DH_ERR_LIMIT) return error_msg("--q0", "a joint value is outside its limits");
+    if (st != DH_OK) return error_msg("track", dh_status_str(st));
+    while ((rc = track_next(line, sizeof line, &lineno, &T_scratch)) == 1) {
+        dh_frame_q F;
+        dh_track_report_q rep;
+        if (dh_frame_from_mat4_q(&T_scratch, &F) != DH_OK) {
+            fprintf(stderr, "dhmath: error: line %u: target not representable in fixed point\n", lineno);
+            return EXIT_ERR;
+        }
+        st = dh_track_step_q(&t, &F, q, &rep);
+        if (st != DH_OK) {
+            fprintf(stderr, "dhmath: error: line %u: target not rigid (rotation not orthonormal)\n", lineno);
+            return EXIT_ERR;
+        }
+        for (i = 0; i < r->n; i++) {
+            const double v = q[i] / ((r->joint[i].type == DH_JOINT_REVOLUTE) ? 65536.0 : one);
+            (void)snprintf(text, sizeof text, "%.9g ", v == 0.0 ? 0.0 : v);
+            if (out_add(out, text)) return EXIT_ERR;
+        }
+        (void)snprintf(text, sizeof text, "%s %.9g %.9g\n", k_track_word[rep.state], rep.pos_err / one,
+                       rep.rot_err / 536870912.0);
+        if (out_add(out, text)) return EXIT_ERR;
+    }
+    return rc;
+}
+
 static int cmd_track(int argc, char **argv)
 {
     opts o;
@@ -1126,6 +1209,7 @@ static int cmd_track(int argc, char **argv)
     outbuf out = { NULL, 0u, 0u };
     int rc;
     dh_status st;
+    dh_mat4_f32 T;
     const dh_ikc_model_f32 *mp = NULL;
     if ((rc = parse_opts(argc, argv, &o, "fixed q0 dt vmax")) != 0) return rc;
     if (o.npos != 1) return usage_error("track takes ROBOT --q0 q1,... --dt SECONDS [--vmax V] [--fixed]", NULL);
@@ -1133,11 +1217,10 @@ static int cmd_track(int argc, char **argv)
         return usage_error("track reads its targets from standard input: the robot must be a file", NULL);
     if (!o.q0) return usage_error("track needs --q0 q1,... (the configuration at the first target)", NULL);
     if (!o.dt) return usage_error("track needs --dt SECONDS (the control period)", NULL);
-    if (o.fixed) return error_msg("track --fixed", "not built yet");
     if ((rc = parse_num_arg(o.dt, "--dt", &dtd)) != 0) return rc;
     if (!(dtd > 0.0) || !((float)dtd > 0.0f) || !isfinite((float)dtd))
         return error_msg("--dt", "the control period must be greater than 0 seconds");
-    if ((rc = load_robot(o.pos[0], 0, &r, &rf)) != 0) return rc;
+    if ((rc = load_robot(o.pos[0], o.fixed, &r, &rf)) != 0) return rc;
     if ((rc = parse_list(o.q0, r.n, q0d, "--q0")) != 0) return rc;
     for (i = 0; i < r.n; i++) q0[i] = (float)q0d[i];
     if (o.vmax) {
@@ -1156,30 +1239,18 @@ static int cmd_track(int argc, char **argv)
         st = dh_robot_set_rates_f32(&r, i, vmax[i], r.joint[i].amax);
         if (st != DH_OK) return error_msg("--vmax rejected by the library", dh_status_str(st));
     }
+    if (o.fixed) {
+        rc = track_fixed(&r, q0d, dtd, &out);
+        if (rc == 0 && out.len) fwrite(out.buf, 1, out.len, stdout);
+        free(out.buf);
+        return rc ? rc : finish();
+    }
     if (dh_ikc_analyse_f32(&r, &m) == DH_OK && m.kind != DH_IKC_NONE) mp = &m;
     st = dh_track_init_f32(&t, &r, mp, q0, (float)dtd);
     if (st == DH_ERR_LIMIT) return error_msg("--q0", "a joint value is outside its limits");
     if (st != DH_OK) return error_msg("track", dh_status_str(st));
-    while (fgets(line, sizeof line, stdin)) {
-        size_t len = strlen(line), b = 0;
-        dh_mat4_f32 T;
-        dh_expr_error e;
+    while ((rc = track_next(line, sizeof line, &lineno, &T)) == 1) {
         dh_track_report_f32 rep;
-        lineno++;
-        if (len == sizeof line - 1u && line[len - 1u] != '\n' && !feof(stdin)) {
-            fprintf(stderr, "dhmath: error: line %u: longer than %lu characters\n", lineno,
-                    (unsigned long)(sizeof line - 2u));
-            free(out.buf);
-            return EXIT_ERR;
-        }
-        while (len > 0u && (line[len - 1u] == '\n' || line[len - 1u] == '\r')) len--;
-        while (b < len && (line[b] == ' ' || line[b] == '\t')) b++;
-        if (b == len) continue; /* blank line */
-        if (dh_expr_eval_f32(line, len, &T, &e)) {
-            fprintf(stderr, "dhmath: error: line %u: column %lu: %s\n", lineno, (unsigned long)(e.pos + 1), e.msg);
-            free(out.buf);
-            return EXIT_ERR;
-        }
         st = dh_track_step_f32(&t, &T, q, &rep);
         if (st != DH_OK) {
             fprintf(stderr, "dhmath: error: line %u: target %s\n", lineno,
@@ -1195,9 +1266,9 @@ static int cmd_track(int argc, char **argv)
                        (double)rep.rot_err);
         if (out_add(&out, text)) { free(out.buf); return EXIT_ERR; }
     }
-    if (ferror(stdin)) {
+    if (rc != 0) {
         free(out.buf);
-        return error_msg("reading the targets from standard input failed", NULL);
+        return rc;
     }
     if (out.len) fwrite(out.buf, 1, out.len, stdout);
     free(out.buf);

@@ -1284,6 +1284,68 @@ def target_of_puma(q1):
     return to_expr(ref_fk(rob, [q1, -30, 40, 10, 30, 20]))
 
 
+def group_track_fixed(seed, tmp):
+    """dhmath track --fixed on the UR5 in mm: every step within vmax dt
+    (the fixed bound floor(vmax 2^16 dt_us / 10^6) LSB, printed exactly by
+    %.9g), OK only when the double FK of the printed joints is within the
+    fixed tolerances (2^-19 L, 2e-5 rad) plus the rounding of the printed
+    target, a jump approached without a jump, the period's errors."""
+    rng = random.Random(seed)
+    ur5 = os.path.join(ROOT, 'examples', 'robots', 'ur5_mm.dh')
+    rob = read_robot(open(ur5).read())
+    n = len(rob['joints'])
+    dt, vmax = 0.001, 180.0
+    bound = math.floor(vmax * 65536 * 1000 / 1e6) / 65536.0
+    qa = [10.0, -60.0, 70.0, 20.0, 40.0, 30.0]
+    qb = [q + rng.uniform(-20.0, 20.0) for q in qa]
+    steps = 400
+    targets = []
+    for k in range(1, steps + 1):
+        s = 0.5 - 0.5 * math.cos(math.pi * k / steps)
+        targets.append(to_expr(ref_fk(rob, [a + (b - a) * s for a, b in zip(qa, qb)])))
+    targets += [to_expr(ref_fk(rob, [q + 20.0 for q in qb]))] * 300
+    rc, out, err = run(['track', ur5, '--fixed', '--q0', ','.join('%.9g' % v for v in qa), '--dt', str(dt),
+                        '--vmax', str(vmax)], stdin=('\n'.join(targets) + '\n').encode())
+    check(rc == 0 and err == '', 'track --fixed ur5_mm: rc %d err %r' % (rc, err))
+    lines = out.strip('\n').split('\n') if out else []
+    check(len(lines) == len(targets), 'track --fixed: %d lines for %d targets' % (len(lines), len(targets)))
+    prev = [round(q * 65536) / 65536.0 for q in qa]
+    worst, words = 0.0, []
+    for k, (line, tgt) in enumerate(zip(lines, targets)):
+        tok = line.split()
+        check(len(tok) == n + 3 and tok[n] in ('ok', 'lagging', 'unreachable'), 'track --fixed line %d: %r' %
+              (k + 1, line))
+        if len(tok) != n + 3:
+            continue
+        q = [float(x) for x in tok[:n]]
+        words.append(tok[n])
+        step = max(abs(a - b) for a, b in zip(q, prev))
+        worst = max(worst, step)
+        check(step <= bound + 1e-12, 'track --fixed line %d: step %.9g beyond %.9g' % (k + 1, step, bound))
+        if tok[n] == 'ok':
+            T = ref_fk(rob, q)
+            R = ref_expr(tgt)
+            pe = math.sqrt(sum((T[i][3] - R[i][3]) ** 2 for i in range(3)))
+            # pos_tol (2^-19 L, L about 1.7e3 mm: 3.3e-3 mm) plus the fixed
+            # FK error and the Q16.16 rounding of the target (1e-4 mm)
+            check(pe <= 5e-3, 'track --fixed line %d: ok with position error %.3g mm' % (k + 1, pe))
+        prev = q
+    check(all(w == 'ok' for w in words[:steps]), 'track --fixed: the slow path not ok on every line: %r' %
+          [i for i, w in enumerate(words[:steps]) if w != 'ok'][:5])
+    check('lagging' in words[steps:steps + 5] and words[-1] == 'ok', 'track --fixed: the jump %r' %
+          words[steps:steps + 5])
+    first = steps + words[steps:].index('ok') if 'ok' in words[steps:] else -1
+    check(0 < first - steps <= 114, 'track --fixed: jump reached after %d lines' % (first - steps))
+    print('track --fixed: %d targets, largest step %.9g deg (bound %.9g), jump reached after %d lines' %
+          (len(lines), worst, bound, first - steps))
+    one = targets[0] + '\n'
+    for args, want in ((['--dt', '0.0000005'], 'whole number of microseconds'),
+                       (['--dt', '2'], 'whole number of microseconds')):
+        rc, out, err = run(['track', ur5, '--fixed', '--q0', ','.join(map(str, qa)), '--vmax', '180'] + args,
+                           stdin=one.encode())
+        check(rc == 2 and out == '' and want in err, 'track --fixed %r: rc %d out %r err %r' % (args, rc, out, err))
+
+
 def group_track(seed, tmp):
     """dhmath track: the step bound, OK only when reached (double FK here),
     a jump approached without a jump, --vmax forms, errors."""
@@ -1365,7 +1427,6 @@ def group_track(seed, tmp):
     bad_cases = [
         (['--q0', good, '--dt', '0.001', '--vmax', '180'], one + one + 'rotx(30) rotw(2)\n', 'line 3: column 10'),
         (['--q0', good, '--dt', '0.001', '--vmax', '180'], one + 'scale(2,1,1)\n', 'line 2: target not rigid'),
-        (['--q0', good, '--dt', '0.001', '--vmax', '180', '--fixed'], one, '--fixed: not built yet'),
         (['--q0', good, '--dt', '0', '--vmax', '180'], one, '--dt'),
         (['--q0', good, '--dt', '0.001', '--vmax', '-5'], one, 'greater than 0'),
         (['--q0', good, '--dt', '0.001', '--vmax', '1,2'], one, 'expected 6 values'),
@@ -1412,6 +1473,7 @@ def main():
             group_ikc(seed, tmp)
         elif group == 'track':
             group_track(seed, tmp)
+            group_track_fixed(seed, tmp)
         else:
             print('unknown group', group)
             return 2
