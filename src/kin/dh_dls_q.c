@@ -415,21 +415,6 @@ static DH_NOINLINE uint32_t dlsq_raw(const dlsq_ctx *c, const int32_t *y, int s,
     }
 }
 
-/* floor(a 2^30 / b), a, b in [2^30, 2^31): result in (2^29, 2^31). */
-static uint32_t dlsq_qdiv(uint32_t a, uint32_t b)
-{
-    uint32_t q = 0u, r = a, i;
-    for (i = 0u; i <= 30u; i++) {
-        q <<= 1;
-        if (r >= b) {
-            r -= b;
-            q |= 1u;
-        }
-        r <<= 1;
-    }
-    return q;
-}
-
 /* rho = min_i dq_max_i / |dq_i| as q 2^z (q in (2^29, 2^31) rounded down,
  * or q = 0: rho = 0), |dq_i| = m[i] 2^ex[i]; q = UINT32_MAX when no joint
  * moves. */
@@ -449,7 +434,7 @@ static DH_NOINLINE uint32_t dlsq_ratio(uint32_t n, const int32_t *m, const int16
         a = (uint32_t)dq_max[i];
         bl = 32u - dh_port_clz(a);
         a <<= 31u - bl;
-        q = dlsq_qdiv(a, (uint32_t)m[i]);
+        q = dh_q_ufloor30(a, (uint32_t)m[i]);   /* a, m in [2^30, 2^31) */
         qz = (int)bl - 31 - ex[i] - 30;
         if (best == UINT32_MAX || qz <= bz - 2 ||
             (qz <= bz + 2 && dlsq_shift((int64_t)q, qz - bz + 2) < dlsq_shift((int64_t)best, 2))) {

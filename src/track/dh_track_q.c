@@ -56,22 +56,6 @@ static int64_t trq_sh(int64_t x, int s)
     return (s >= 0) ? (int64_t)((uint64_t)x << (unsigned)s) : dh_q_rshr(x, (unsigned)(-s));
 }
 
-/* floor(a 2^30 / b) for 0 <= a <= b, b > 0 (a ratio in [0, 1] in Q2.30). */
-static uint32_t trq_ratio(uint32_t a, uint32_t b)
-{
-    uint64_t r = a;
-    uint32_t q = 0u, i;
-    for (i = 0u; i < 31u; i++) {
-        q <<= 1;
-        if (r >= b) {
-            r -= b;
-            q |= 1u;
-        }
-        r <<= 1;
-    }
-    return q;
-}
-
 /* Largest s >= 0 with s (s + 2A) <= 2 A D (rounded down), D >= 0, A > 0. */
 static int64_t trq_brake_max(int64_t A, int64_t D)
 {
@@ -198,7 +182,7 @@ static DH_NOINLINE void trq_fit(dh_track_q *t)
             const uint32_t ax = dh_q_abs_u32(x);
             const uint32_t lim = ((x > 0) == (b > 0)) ? dh_q_abs_u32(b) : 0u;
             if (lim < ax) {
-                const uint32_t r = trq_ratio(lim, ax);
+                const uint32_t r = dh_q_ufloor30(lim, ax);
                 if (r < s) s = r;
             }
         }
@@ -328,7 +312,7 @@ static uint64_t trq_enorm2(const int32_t *e, int32_t L)
 static DH_NOINLINE int32_t trq_damping(const dh_track_q *t, int32_t sg)
 {
     uint32_t x = (uint32_t)1 << 30, x2;
-    if (sg < t->sing_threshold) x = trq_ratio((uint32_t)(sg < 0 ? 0 : sg), (uint32_t)t->sing_threshold);
+    if (sg < t->sing_threshold) x = dh_q_ufloor30((uint32_t)(sg < 0 ? 0 : sg), (uint32_t)t->sing_threshold);
     x2 = (uint32_t)(((uint64_t)x * x) >> 30);
     return (int32_t)(((uint64_t)(uint32_t)t->lambda *
                       dh_q_sqrt_u64((uint64_t)(((uint32_t)1 << 30) - x2 + 1024u) << 30)) >> 30);
