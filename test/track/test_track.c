@@ -87,19 +87,19 @@ static dh_track_state step_checked(rig *g, dh_track_f32 *t, chk *c, const dh_mat
     for (i = 0; i < g->r.n; i++) {
         const dh_joint *j = &g->r.joint[i];
         const double s = (double)q[i] - (double)c->qp[i];
-        DHT_TRUE_MSG(isfinite(q[i]), "%s %s call %ld: joint %u not finite", g->d->name, what, c->calls, i);
+        DHT_TRUE_MSG(isfinite(q[i]), "%s %s call %ld: joint %u not finite", g->d->name, what, c->calls, (unsigned)i);
         DHT_TRUE_MSG(fabs(s) <= (double)t->dq_max[i] && fabs(s) <= (double)j->vmax * (double)DT,
-                     "%s %s call %ld: joint %u step %.9g beyond %.9g", g->d->name, what, c->calls, i, s,
+                     "%s %s call %ld: joint %u step %.9g beyond %.9g", g->d->name, what, c->calls, (unsigned)i, s,
                      (double)t->dq_max[i]);
         if (j->qmin <= j->qmax)
             DHT_TRUE_MSG(q[i] >= j->qmin && q[i] <= j->qmax, "%s %s call %ld: joint %u = %.9g outside [%g, %g]",
-                         g->d->name, what, c->calls, i, (double)q[i], (double)j->qmin, (double)j->qmax);
+                         g->d->name, what, c->calls, (unsigned)i, (double)q[i], (double)j->qmin, (double)j->qmax);
         if (isfinite(j->amax) && c->have_sp) {
             const double A = (double)j->amax * DT * DT;
             const double qm = fmax(fabs(q[i]), fabs(c->qp[i]));
             DHT_TRUE_MSG(fabs(s - c->sp[i]) <= A * (1 + 1e-6) + 4 * ulpf(qm),
                          "%s %s call %ld: joint %u step change %.9g beyond amax dt^2 %.9g", g->d->name, what,
-                         c->calls, i, fabs(s - c->sp[i]), A);
+                         c->calls, (unsigned)i, fabs(s - c->sp[i]), A);
         }
         c->sp[i] = (float)s;
         c->qp[i] = q[i];
