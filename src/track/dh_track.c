@@ -178,6 +178,13 @@ static DH_NOINLINE int track_pick(dh_track_f32 *t, dh_status st, int *unreach)
             const dh_joint *j = &t->r->joint[i];
             const float tol = (j->type == DH_JOINT_REVOLUTE) ? 1e-4f : 1e-7f * t->reach;
             float x = t->sol[k].q[i];
+            if (j->type == DH_JOINT_REVOLUTE && j->qmin <= j->qmax) {
+                /* the 360-degree shift nearest q when it is within the
+                 * limits up to the tolerance: dh_ikc_f32 shifts a value
+                 * just beyond a limit by 360 degrees into the range */
+                const float y = (x - t->q[i] > 180.0f) ? x - 360.0f : ((x - t->q[i] < -180.0f) ? x + 360.0f : x);
+                if (y >= j->qmin - tol && y <= j->qmax + tol) x = y;
+            }
             if (j->qmin <= j->qmax) {
                 if (x < j->qmin - tol || x > j->qmax + tol) in = 0;
                 x = track_clamp(x, j->qmin, j->qmax);
