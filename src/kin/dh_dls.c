@@ -127,7 +127,7 @@ static DH_NOINLINE float dls_inv_col(const float *A, uint32_t m, uint32_t c, flo
 }
 
 /* ||L^-1||_F^2: the columns' squares summed (scratch after the matrix) */
-static DH_NOINLINE float dls_inv_sum(float *A, uint32_t m)
+DH_INLINE float dls_inv_sum(float *A, uint32_t m)
 {
     uint32_t c;
     float t = 0.0f;
@@ -176,7 +176,8 @@ static int dls_finite(const float *x, uint32_t len)
     return dh_feq_f32(s, 0.0f);
 }
 
-dh_status dh_manipulability_ws_f32_(const float *J, uint32_t n, float *w, float *sigma_min, float *ws)
+/* the body of both entry points (inlined, as dls_step_body) */
+DH_INLINE dh_status dls_manip_body(const float *J, uint32_t n, float *w, float *sigma_min, float *ws)
 {
     float *const A = ws;
     float tr, wv, tinv, lb;
@@ -263,10 +264,15 @@ DH_INLINE dh_status dls_step_body(const dh_robot *r, const float *J, const float
     return DH_OK;
 }
 
+dh_status dh_manipulability_ws_f32_(const float *J, uint32_t n, float *w, float *sigma_min, float *ws)
+{
+    return dls_manip_body(J, n, w, sigma_min, ws);
+}
+
 dh_status dh_manipulability_f32(const float *J, uint32_t n, float *w, float *sigma_min)
 {
     float ws[DH_DLS_WS_FLOATS];
-    return dh_manipulability_ws_f32_(J, n, w, sigma_min, ws);
+    return dls_manip_body(J, n, w, sigma_min, ws);
 }
 
 dh_status dh_dls_step_ws_f32_(const dh_robot *r, const float *J, const float *e, float lambda, const float *dq_max,
