@@ -5,7 +5,10 @@
  *
  * Both work on the symmetric positive semidefinite normal matrix A (J J^T,
  * 6 x 6, or J^T J when n < 6), stored packed (lower triangle by rows, 21
- * floats on the stack) and factored A = L L^T by Cholesky.
+ * floats, and 6 of scratch: on the stack of the public functions, in the
+ * tracker's state for the _ws_ variants) and factored A = L L^T by
+ * Cholesky. The work is split into small functions (one entry of A, one
+ * column of L^-1 per call) so that no frame holds much beside the matrix.
  *
  * Manipulability (Yoshikawa 1985): w = sqrt(det A) = prod L_ii.
  *
@@ -35,30 +38,52 @@
 /* u = 2^-24, the unit roundoff of float */
 #define DLS_U 5.9604644775390625e-8f
 
-/* sum over k < len of a[k stride] b[k stride] */
-static DH_NOINLINE float dls_dot(const float *a, const float *b, uint32_t len, uint32_t stride)
+/* entry p of the packed lower triangle of J J^T (jjt != 0) or J^T J:
+ * row i, column j (j <= i) with p = i (i + 1) / 2 + j. One entry per call
+ * keeps the frames small on cores with few registers. */
+static DH_NOINLINE float dls_entry(const float *J, uint32_t n, int jjt, uint32_t p_in)
 {
+    uint32_t i = 0u, k, len, stride, p = p_in;
+    const float *a;
+    const float *b;
     float s = 0.0f;
-    uint32_t k;
+    while (p > i) {
+        i++;
+        p -= i;
+    }
+    if (jjt != 0) {
+        a = &J[i * n];
+        b = &J[p * n];
+        len = n;
+        stride = 1u;
+    } else {
+        a = &J[i];
+        b = &J[p];
+        len = 6u;
+        stride = n;
+    }
     for (k = 0u; k < len; k++) s += a[k * stride] * b[k * stride];
     return s;
 }
 
-/* A (packed lower) = J J^T (jjt != 0, 6 x 6) or J^T J (n x n); returns
- * its trace. */
-static DH_NOINLINE float dls_normal(const float *J, uint32_t n, int jjt, float *A)
+/* A (packed lower) = J J^T (jjt != 0, 6 x 6) or J^T J (n x n) */
+static DH_NOINLINE void dls_normal(const float *J, uint32_t n, int jjt, float *A)
 {
     const uint32_t m = (jjt != 0) ? 6u : n;
-    uint32_t i, j, p = 0u;
-    float tr = 0.0f;
+    uint32_t p;
+    for (p = 0u; p < m * (m + 1u) / 2u; p++) A[p] = dls_entry(J, n, jjt, p);
+}
+
+/* trace (d = 0) or product (d = 1) of the diagonal of the packed A */
+static DH_NOINLINE float dls_diag(const float *A, uint32_t m, int d)
+{
+    uint32_t i;
+    float v = (d != 0) ? 1.0f : 0.0f;
     for (i = 0u; i < m; i++) {
-        for (j = 0u; j <= i; j++) {
-            A[p] = (jjt != 0) ? dls_dot(&J[i * n], &J[j * n], n, 1u) : dls_dot(&J[i], &J[j], 6u, n);
-            p++;
-        }
-        tr += A[p - 1u];
+        const float x = A[i * (i + 3u) / 2u];
+        v = (d != 0) ? v * x : v + x;
     }
-    return tr;
+    return v;
 }
 
 /* In-place Cholesky of the packed m x m matrix A: L (lower, packed).
@@ -85,25 +110,29 @@ static DH_NOINLINE int dls_chol(float *A, uint32_t m, float floor)
     return 0;
 }
 
-/* ||L^-1||_F^2 of the packed factor L (m x m), column c of L^-1 by
- * forward substitution; *w = prod L_ii */
-static DH_NOINLINE float dls_inv_trace(const float *A, uint32_t m, float *w)
+/* squared norm of column c of L^-1 (L packed, m x m) by forward
+ * substitution, x (m floats) as scratch */
+static DH_NOINLINE float dls_inv_col(const float *A, uint32_t m, uint32_t c, float *x)
 {
-    uint32_t c, i, k;
-    float tinv = 0.0f, wv = 1.0f;
-    for (c = 0u; c < m; c++) {
-        float x[6];
-        for (i = c; i < m; i++) {
-            const float *Ri = &A[i * (i + 1u) / 2u];
-            float s = (i == c) ? 1.0f : 0.0f;
-            for (k = c; k < i; k++) s -= Ri[k] * x[k];
-            x[i] = s / Ri[i];
-            tinv += x[i] * x[i];
-        }
-        wv *= A[c * (c + 1u) / 2u + c];
+    uint32_t i, k;
+    float t = 0.0f;
+    for (i = c; i < m; i++) {
+        const float *Ri = &A[i * (i + 1u) / 2u];
+        float s = (i == c) ? 1.0f : 0.0f;
+        for (k = c; k < i; k++) s -= Ri[k] * x[k];
+        x[i] = s / Ri[i];
+        t += x[i] * x[i];
     }
-    *w = wv;
-    return tinv;
+    return t;
+}
+
+/* ||L^-1||_F^2: the columns' squares summed (scratch after the matrix) */
+DH_INLINE float dls_inv_sum(float *A, uint32_t m)
+{
+    uint32_t c;
+    float t = 0.0f;
+    for (c = 0u; c < m; c++) t += dls_inv_col(A, m, c, &A[21]);
+    return t;
 }
 
 /* y = A^-1 e with the packed factor L of A (6 x 6): L z = e, L^T y = z */
@@ -116,8 +145,11 @@ static DH_NOINLINE void dls_solve(const float *A, const float *e, float *y)
         for (k = 0u; k < i; k++) t -= Ri[k] * y[k];
         y[i] = t / Ri[i];
     }
-    for (i = 6u; i-- > 0u;) {
-        float t = y[i];
+    i = 6u;
+    while (i > 0u) {
+        float t;
+        i--;
+        t = y[i];
         for (k = i + 1u; k < 6u; k++) t -= A[k * (k + 1u) / 2u + i] * y[k];
         y[i] = t / A[i * (i + 1u) / 2u + i];
     }
@@ -144,21 +176,25 @@ static int dls_finite(const float *x, uint32_t len)
     return dh_feq_f32(s, 0.0f);
 }
 
-dh_status dh_manipulability_ws_f32_(const float *J, uint32_t n, float *w, float *sigma_min, float *A)
+/* the body of both entry points (inlined, as dls_step_body) */
+DH_INLINE dh_status dls_manip_body(const float *J, uint32_t n, float *w, float *sigma_min, float *ws)
 {
-    float tr, wv = 1.0f, tinv = 0.0f, lb;
+    float *const A = ws;
+    float tr, wv, tinv, lb;
     uint32_t m;
     DH_ASSERT(J != NULL);
     if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if (!dls_finite(J, 6u * n)) return DH_ERR_NAN;
     m = (n >= 6u) ? 6u : n;
-    tr = dls_normal(J, n, n >= 6u, A);
+    dls_normal(J, n, n >= 6u, A);
+    tr = dls_diag(A, m, 0);
     if (!dh_isfinite_f32(tr)) return DH_ERR_OVERFLOW;
     if (dls_chol(A, m, 0.0f) != 0) {
         wv = 0.0f;
         lb = 0.0f;
     } else {
-        tinv = dls_inv_trace(A, m, &wv);
+        tinv = dls_inv_sum(A, m);
+        wv = dls_diag(A, m, 1);
         lb = (1.0f - 0.00390625f) / tinv - 32.0f * DLS_U * tr;
     }
     if (!dh_isfinite_f32(wv)) return DH_ERR_OVERFLOW;
@@ -167,8 +203,10 @@ dh_status dh_manipulability_ws_f32_(const float *J, uint32_t n, float *w, float 
     return DH_OK;
 }
 
-dh_status dh_dls_step_ws_f32_(const dh_robot *r, const float *J, const float *e, float lambda, const float *dq_max,
-                              float *dq, float *ws)
+/* the body of both entry points (inlined: the public one keeps the matrix
+ * in its own frame, one call level less) */
+DH_INLINE dh_status dls_step_body(const dh_robot *r, const float *J, const float *e, float lambda, const float *dq_max,
+                                  float *dq, float *ws)
 {
     float *const A = ws, *const y = ws + 21;
     float tr, l2, s = 1.0f;
@@ -185,7 +223,8 @@ dh_status dh_dls_step_ws_f32_(const dh_robot *r, const float *J, const float *e,
         for (k = 0u; k < n; k++)
             if (!(dq_max[k] >= 0.0f)) return DH_ERR_ARG;
     if (!dls_finite(J, 6u * n) || !dls_finite(e, 6u)) return DH_ERR_NAN;
-    tr = dls_normal(J, n, 1, A);
+    dls_normal(J, n, 1, A);
+    tr = dls_diag(A, 6u, 0);
     l2 = lambda * lambda;
     for (i = 0u; i < 6u; i++) A[i * (i + 1u) / 2u + i] += l2;
     if (!dh_isfinite_f32(tr + l2 * 6.0f)) return DH_ERR_OVERFLOW;
@@ -225,15 +264,26 @@ dh_status dh_dls_step_ws_f32_(const dh_robot *r, const float *J, const float *e,
     return DH_OK;
 }
 
+dh_status dh_manipulability_ws_f32_(const float *J, uint32_t n, float *w, float *sigma_min, float *ws)
+{
+    return dls_manip_body(J, n, w, sigma_min, ws);
+}
+
 dh_status dh_manipulability_f32(const float *J, uint32_t n, float *w, float *sigma_min)
 {
-    float A[21];
-    return dh_manipulability_ws_f32_(J, n, w, sigma_min, A);
+    float ws[DH_DLS_WS_FLOATS];
+    return dls_manip_body(J, n, w, sigma_min, ws);
+}
+
+dh_status dh_dls_step_ws_f32_(const dh_robot *r, const float *J, const float *e, float lambda, const float *dq_max,
+                              float *dq, float *ws)
+{
+    return dls_step_body(r, J, e, lambda, dq_max, dq, ws);
 }
 
 dh_status dh_dls_step_f32(const dh_robot *r, const float *J, const float e[6], float lambda, const float *dq_max,
                           float *dq)
 {
     float ws[DH_DLS_WS_FLOATS];
-    return dh_dls_step_ws_f32_(r, J, e, lambda, dq_max, dq, ws);
+    return dls_step_body(r, J, e, lambda, dq_max, dq, ws);
 }

@@ -21,7 +21,7 @@
 int dh_kin_jac_f32_(const dh_robot *r, const float *scd, float *J, float *F);
 
 /* dh_manipulability_f32 and dh_dls_step_f32 with their matrices in the
- * caller's ws (21 and DH_DLS_WS_FLOATS floats, overlapping nothing): the
+ * caller's ws (DH_DLS_WS_FLOATS floats, overlapping nothing): the
  * tracker (src/track/) calls them on its state to stay within the stack
  * budget. Same contracts. */
 #define DH_DLS_WS_FLOATS 27u

@@ -20,8 +20,6 @@
  * float, and dq_max is vmax dt less 2^-20 relative, more than the
  * rounding of that float difference.
  */
-#include <string.h>
-
 #include "dhmath/track.h"
 #include "../internal/dh_floatops.h"
 #include "../kin/kin_impl.h"
@@ -51,8 +49,14 @@ static float track_toward(float x, float y)
 {
     uint32_t u = dh_f32_bits(x);
     if (x == 0.0f) return (y > 0.0f) ? dh_f32_from_bits(1u) : dh_f32_from_bits(0x80000001u);
-    if ((x < y) == (x > 0.0f)) u++;
-    else u--;
+    /* towards y: away from 0 (magnitude up) when y lies beyond x */
+    if (x > 0.0f) {
+        if (y > x) u++;
+        else u--;
+    } else {
+        if (y < x) u++;
+        else u--;
+    }
     return dh_f32_from_bits(u);
 }
 
@@ -80,7 +84,6 @@ dh_status dh_track_init_f32(dh_track_f32 *t, const dh_robot *r, const dh_ikc_mod
     if (m != NULL && (m->kind == DH_IKC_NONE || m->n != r->n)) return DH_ERR_ARG;
     st = dh_robot_check_limits_f32(r, q0);
     if (st != DH_OK) return st;
-    memset(t, 0, sizeof *t);
     t->r = r;
     t->m = m;
     t->dt = dt;
@@ -175,6 +178,13 @@ static DH_NOINLINE int track_pick(dh_track_f32 *t, dh_status st, int *unreach)
             const dh_joint *j = &t->r->joint[i];
             const float tol = (j->type == DH_JOINT_REVOLUTE) ? 1e-4f : 1e-7f * t->reach;
             float x = t->sol[k].q[i];
+            if (j->type == DH_JOINT_REVOLUTE && j->qmin <= j->qmax) {
+                /* the 360-degree shift nearest q when it is within the
+                 * limits up to the tolerance: dh_ikc_f32 shifts a value
+                 * just beyond a limit by 360 degrees into the range */
+                const float y = (x - t->q[i] > 180.0f) ? x - 360.0f : ((x - t->q[i] < -180.0f) ? x + 360.0f : x);
+                if (y >= j->qmin - tol && y <= j->qmax + tol) x = y;
+            }
             if (j->qmin <= j->qmax) {
                 if (x < j->qmin - tol || x > j->qmax + tol) in = 0;
                 x = track_clamp(x, j->qmin, j->qmax);
@@ -196,7 +206,8 @@ static DH_NOINLINE int track_pick(dh_track_f32 *t, dh_status st, int *unreach)
             found = 1;
         }
     }
-    *unreach = (st == DH_ERR_UNREACHABLE || (st == DH_OK && !found)) ? 1 : 0;
+    *unreach = 0;
+    if (st == DH_ERR_UNREACHABLE || (st == DH_OK && !found)) *unreach = 1;
     if (!found) return 0;
     for (i = 0u; i < n; i++) t->qs[i] = t->sol[best].q[i];
     return 1;
@@ -387,7 +398,8 @@ static DH_NOINLINE void track_fill(const dh_track_f32 *t, int fk, int unreach, d
     const float *const e = t->e;
     rep->pos_err = fk ? dh_sqrt_f32(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) : 0.0f;
     rep->rot_err = fk ? dh_sqrt_f32(e[3] * e[3] + e[4] * e[4] + e[5] * e[5]) : 0.0f;
-    rep->near_singular = (rep->sigma_min < t->sing_threshold) ? 1 : 0;
+    rep->near_singular = 0;
+    if (rep->sigma_min < t->sing_threshold) rep->near_singular = 1;
     if (fk && rep->pos_err <= t->pos_tol && rep->rot_err <= t->rot_tol)
         rep->state = DH_TRACK_OK;
     else
@@ -482,7 +494,7 @@ dh_status dh_track_step_f32(dh_track_f32 *t, const dh_mat4_f32 *target, float *q
     rep->sigma_min = 0.0f;
     if (dh_jacobian_f32(t->r, t->q, t->J, &t->T) == DH_OK) {
         (void)dh_manipulability_ws_f32_(t->J, t->r->n, &rep->manip, &rep->sigma_min, t->ws);
-        fk = (tst == DH_OK && dh_pose_error_f32(target, &t->T, t->e) == DH_OK) ? 1 : 0;
+        if (tst == DH_OK && dh_pose_error_f32(target, &t->T, t->e) == DH_OK) fk = 1;
     }
     track_fill(t, fk, unreach, rep);
     for (i = 0u; i < t->r->n; i++) q_out[i] = t->q[i];
