@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * accuracy_data.c - writes the CSV data behind the plots in docs/img/ and
- * docs/accuracy_plots.md (run by tools/plot_accuracy.py).
+ * accuracy_data.c - writes the CSV data behind the plots in docs/generated/img/ and
+ * docs/generated/accuracy_plots.md (run by tools/plot_accuracy.py).
  *
  * Usage: accuracy_data OUTDIR
  *
@@ -25,7 +25,7 @@
  *                  (end to end, includes the rounding of the DH constants);
  *                  err_impl_mm against the double FK of the constants as
  *                  the dh_robot stores them (the implementation error alone).
- *  summary.csv     key,value: the maxima quoted in docs/accuracy_plots.md.
+ *  summary.csv     key,value: the maxima quoted in docs/generated/accuracy_plots.md.
  *
  * References: libm sin/cos in double of the exactly reduced angle
  * (fmod(deg, 360) is exact), errors in units of 1.0.

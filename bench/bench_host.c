@@ -2,7 +2,7 @@
 /*
  * bench_host.c - host benchmark of dhmath against peer libraries
  * (the speed goals of docs/performance.md). Run through tools/bench.sh, which also collects the
- * callgrind instruction counts and writes docs/performance_host.md.
+ * callgrind instruction counts and writes docs/generated/performance_host.md.
  *
  * Usage:
  *   bench_host [--reps N] [--csv FILE]   time every operation: N (>= 11,

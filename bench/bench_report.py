@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: Apache-2.0
-"""Turns one tools/bench.sh run into docs/performance_host.md.
+"""Turns one tools/bench.sh run into docs/generated/performance_host.md.
 
 Inputs: the timing CSV of bench_host (--csv), the callgrind_annotate
 --inclusive=yes output of `bench_host --count N`, N, and the build directory
@@ -14,6 +14,8 @@ import os
 import platform
 import re
 import subprocess
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 PKGS = ["gcc", "g++", "libc6", "libcglm-dev", "libeigen3-dev", "liborocos-kdl-dev",
         "libfixmath-dev", "valgrind", "cmake"]
@@ -121,7 +123,7 @@ def main():
     a("```")
     a("")
     a("It configures `%s` with `-DDH_BUILD_BENCH=ON -DCMAKE_BUILD_TYPE=Release`,"
-      % os.path.relpath(args.build, os.path.dirname(os.path.dirname(os.path.abspath(args.out)))))
+      % os.path.relpath(args.build, ROOT))
     a("builds `bench_host`, times every operation, runs `bench_host --count N` under")
     a("`valgrind --tool=callgrind` and writes this file (bench/bench_report.py).")
     a("")
@@ -137,8 +139,7 @@ def main():
     a("* dhmath itself is additionally compiled with `-std=c99 -pedantic -Wall -Wextra -Wconversion"
       " -Wshadow -Wundef -Werror -ffunction-sections -fdata-sections` (its normal flags)")
     a("* %s" % (sh("cc --version | head -1") or "cc ?"))
-    root = os.path.dirname(os.path.dirname(os.path.abspath(args.out)))
-    dirty = sh("git -C %s status --porcelain --untracked-files=no -- src include | wc -l" % root)
+    dirty = sh("git -C %s status --porcelain --untracked-files=no -- src include | wc -l" % ROOT)
     a("* library sources: commit above%s" % (
         "" if dirty in ("", "0") else
         " plus %s uncommitted modified file(s) in src/ include/ of other engineers' work in progress" % dirty))

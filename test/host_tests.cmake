@@ -123,31 +123,6 @@ if(DH_BUILD_TOOLS)
   set_tests_properties(doc_snippets PROPERTIES TIMEOUT 600)
 endif()
 
-# test_ik_q's regression seeds still draw the targets they are there for:
-# the Puma misses among the first 100 / 1000 targets that a rate over that
-# few targets would fail on (a changed draw order fails here).
-foreach(_reach "0xe1b495523900276f|2 / 5" "0x1d0c2f87b8|0 / 11")
-  string(REPLACE "|" ";" _reach "${_reach}")
-  list(GET _reach 0 _seed)
-  list(GET _reach 1 _misses)
-  add_test(NAME test_ik_q_reach_${_seed}
-    COMMAND sh -c "out=$(DHT_SEED=$2 \"$1\" 2>&1); rc=$?; echo \"$out\"; [ $rc -eq 0 ] && echo \"$out\" | grep -q \"^ik_q puma560 (mm) *misses among the first 100 / 1000 targets: $3\$\""
-            sh $<TARGET_FILE:test_ik_q> ${_seed} ${_misses})
-  set_tests_properties(test_ik_q_reach_${_seed} PROPERTIES LABELS regression TIMEOUT 600)
-endforeach()
-
-# test_ikc's limit regression seeds still draw a numerical solution on or
-# just inside a joint limit whose closed-form twin lies a rounding beyond it.
-foreach(_reach "0x90b0f7f3|stanford" "0x31b0e8661574b52d|abb_irb140")
-  string(REPLACE "|" ";" _reach "${_reach}")
-  list(GET _reach 0 _seed)
-  list(GET _reach 1 _robot)
-  add_test(NAME test_ikc_reach_${_seed}
-    COMMAND sh -c "out=$(DHT_SEED=$2 \"$1\" 2>&1); rc=$?; echo \"$out\"; [ $rc -eq 0 ] && echo \"$out\" | grep -q \"^ikc $3: dh_ik_f32 from .*; [1-9][0-9]* results on or just inside a limit matched a twin beyond it\""
-            sh $<TARGET_FILE:test_ikc> ${_seed} ${_robot})
-  set_tests_properties(test_ikc_reach_${_seed} PROPERTIES LABELS regression TIMEOUT 600)
-endforeach()
-
 # test_builds_agree (not a seeded suite: its own counts, DHT_DIFF_ONLY) at
 # DHT_SEED=0xa3372da0 for the plane transform: input 561679 has d = 2^127
 # and a T whose inverse has a bottom-row entry the two builds' general

@@ -366,3 +366,25 @@ double dhr_ulp_f32(double x)
     (void)frexp(x, &e); /* x = f 2^e, f in [0.5, 1) */
     return ldexp(1.0, e - 24);
 }
+
+/* sin and cos of d degrees, the reduction exact (d with at most 53
+ * significant bits, any sign): the references of the sine tables */
+void dhr_sincos_deg(double d, double *s, double *c)
+{
+    double r = fmod(fabs(d), 360.0), s0, c0, t;
+    int k = 0;
+    while (r >= 90.0) {
+        r -= 90.0;
+        k++;
+    }
+    t = r * (DHR_PI / 180.0);
+    s0 = sin(t);
+    c0 = cos(t);
+    switch (k) {
+    case 0: *s = s0; *c = c0; break;
+    case 1: *s = c0; *c = -s0; break;
+    case 2: *s = -s0; *c = -c0; break;
+    default: *s = -c0; *c = s0; break;
+    }
+    if (d < 0) *s = -*s;
+}

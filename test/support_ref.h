@@ -93,5 +93,6 @@ double dhr_mat3_max_diff(const dh_mat3_f32 *R, const dhr_mat3 *D);
 
 /** Size of one float ulp at |x| (2^-149 for x == 0). */
 double dhr_ulp_f32(double x);
+void dhr_sincos_deg(double d, double *s, double *c);
 
 #endif /* SUPPORT_REF_H */

@@ -121,6 +121,7 @@ void dhs_to_frame_q(const dhr_mat4 *D, dh_frame_q *F)
     for (r = 0; r < 3; r++) F->p[r] = dhs_to_q(D->m[3][r], DH_QPOS_FRAC);
 }
 
+/* twin: dhs_build_q */
 dh_status dhs_build(const dhs_robot *d, dh_robot *r)
 {
     dh_mat4_f32 T;
@@ -146,6 +147,7 @@ dh_status dhs_build(const dhs_robot *d, dh_robot *r)
     return dh_robot_set_tool_f32(r, &T);
 }
 
+/* twin: dhs_build */
 dh_status dhs_build_q(const dhs_robot *d, dh_robot *r)
 {
     dh_frame_q F;

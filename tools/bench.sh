@@ -1,7 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: Apache-2.0
 # Host benchmark of dhmath against peer libraries (speed goals); writes
-# docs/performance_host.md.
+# docs/generated/performance_host.md.
 #
 #   tools/bench.sh
 #
@@ -13,8 +13,9 @@
 #   2. time every operation (bench_host --reps REPS --csv ...);
 #   3. count instructions: valgrind --tool=callgrind bench_host --count COUNT,
 #      callgrind_annotate --inclusive=yes (Ir of bw_<id> / COUNT);
-#   4. bench/bench_report.py writes docs/performance_host.md (table, flags,
-#      package versions, goals) and appends bench/performance_notes.md.
+#   4. bench/bench_report.py writes docs/generated/performance_host.md (table, flags,
+#      package versions, goals) and appends bench/performance_notes.md;
+#   5. tools/stamp.sh puts the stamp line (commit, date, machine) on top.
 # The accuracy plots are separate: /usr/bin/python3 tools/plot_accuracy.py
 set -eu
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -41,4 +42,5 @@ callgrind_annotate --inclusive=yes --threshold=100 "$BUILD/callgrind.out" >"$BUI
 
 /usr/bin/python3 "$ROOT/bench/bench_report.py" --times "$BUILD/bench_times.csv" \
   --callgrind "$BUILD/callgrind.txt" --count "$COUNT" --build "$BUILD" \
-  --stdout "$BUILD/bench_stdout.txt" --load "$LOAD0 / $LOAD1" --out "$ROOT/docs/performance_host.md"
+  --stdout "$BUILD/bench_stdout.txt" --load "$LOAD0 / $LOAD1" --out "$ROOT/docs/generated/performance_host.md"
+"$ROOT/tools/stamp.sh" tools/bench.sh "$ROOT/docs/generated/performance_host.md"

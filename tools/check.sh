@@ -47,7 +47,7 @@ target_suite() { # builddir, toolchain file, extra cmake args...
 }
 
 # DH_SMALL (size-first code, config.h) on the two cores it is for, at
-# the -Os it is measured with (docs/footprint.md)
+# the -Os it is measured with (docs/generated/footprint.md)
 small_suite() {
   target_suite build/m4f-small cortex-m4f.cmake -DDH_SMALL=ON -DCMAKE_BUILD_TYPE=MinSizeRel &&
   target_suite build/m0-small cortex-m0plus.cmake -DDH_SMALL=ON -DCMAKE_BUILD_TYPE=MinSizeRel

@@ -8,7 +8,7 @@
 #    CMakeLists.txt) and without the CLI/benchmark, builds it, runs ctest;
 # 2. runs gcovr over src/ only (tests, tools and headers excluded) and prints
 #    the line and branch percentages (per file and total);
-# 3. writes the summary to docs/coverage.md;
+# 3. writes the summary to docs/generated/coverage.md (stamped by tools/stamp.sh);
 # 4. exits non-zero if a test failed or coverage is below the thresholds:
 #    95 % of lines, 90 % of branches (override with DH_COV_MIN_LINES /
 #    DH_COV_MIN_BRANCHES in the environment).
@@ -78,7 +78,7 @@ echo "per file: $build/coverage_lines.txt (lines), $build/coverage_branches.txt 
 ok=$(awk -v l="$lines" -v b="$branches" -v ml="$min_lines" -v mb="$min_branches" \
      'BEGIN { print ((l + 0 >= ml + 0) && (b + 0 >= mb + 0)) ? 1 : 0 }')
 
-# docs/coverage.md: the summary plus the per-file table.
+# docs/generated/coverage.md: the summary plus the per-file table.
 {
     echo "# Test coverage of src/"
     echo
@@ -112,8 +112,9 @@ ok=$(awk -v l="$lines" -v b="$branches" -v ml="$min_lines" -v mb="$min_branches"
     echo '```'
     sed -n '/^File/,$p' "$build/coverage_branches.txt"
     echo '```'
-} > "$here/docs/coverage.md"
-echo "wrote docs/coverage.md"
+} > "$here/docs/generated/coverage.md"
+DH_STAMP_REV=${DH_COV_REV:-unknown} "$here/tools/stamp.sh" tools/coverage.sh "$here/docs/generated/coverage.md"
+echo "wrote docs/generated/coverage.md"
 
 if [ "$test_status" -ne 0 ]; then
     echo "coverage.sh: FAIL: ctest failed" >&2

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: Apache-2.0
-"""Writes docs/footprint.md: flash and stack of dhmath on Cortex-M0+ and
+"""Writes docs/generated/footprint.md: flash and stack of dhmath on Cortex-M0+ and
 Cortex-M4F at -Os and -O2 (driven by tools/footprint.sh, which builds the
 libraries).
 

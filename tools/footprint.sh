@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 # footprint.sh - flash and stack of the library on Cortex-M0+ and Cortex-M4F
 # at -Os and -O2, and at -Os with DH_SMALL=1 (the size-first build), written
-# to docs/footprint.md (tools/footprint.py).
+# to docs/generated/footprint.md (tools/footprint.py), stamped by tools/stamp.sh.
 # The report opens with the size goal's flash budget (the float + fixed core on
 # Cortex-M4F -Os against 8 KiB) and includes firmware profiles: entry tables
 # generated from the public headers, linked with --gc-sections, flash split
@@ -13,7 +13,7 @@
 # Default: measures the working tree, building the library alone in
 # build/guards-<cpu>-<opt> (the same configurations as tools/check_guards.sh,
 # so running both builds once). With --rev (e.g. --rev HEAD, as used for the
-# committed docs/footprint.md) it measures that commit instead: `git archive`
+# committed docs/generated/footprint.md) it measures that commit instead: `git archive`
 # into build/footprint-src, fresh builds in build/footprint-<cpu>-<opt>, so
 # uncommitted edits in the tree do not enter the figures.
 set -euo pipefail
@@ -24,7 +24,7 @@ if [ "${1:-}" = "--rev" ]; then
   REV=${2:?--rev needs a commit}
   shift 2
 fi
-OUT=${1:-docs/footprint.md}
+OUT=${1:-docs/generated/footprint.md}
 JOBS=${JOBS:-$(nproc)}
 
 if [ -n "$REV" ]; then
@@ -70,7 +70,7 @@ done
 M0="-mcpu=cortex-m0plus -mthumb -mfloat-abi=soft"
 M4F="-mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard"
 CMD="tools/footprint.sh${REV:+ --rev $REV}"
-[ "$OUT" = docs/footprint.md ] || CMD="$CMD $OUT"
+[ "$OUT" = docs/generated/footprint.md ] || CMD="$CMD $OUT"
 /usr/bin/python3 tools/footprint.py "$OUT" \
   "--src=$SRC" "--desc=$DESC" "--cmd=$CMD" \
   "M0+ -Os=$PREFIX-m0plus-Os=$M0 -Os" \
@@ -79,3 +79,4 @@ CMD="tools/footprint.sh${REV:+ --rev $REV}"
   "M4F -O2=$PREFIX-m4f-O2=$M4F -O2" \
   "M0+ -Os DH_SMALL=$PREFIX-m0plus-Os-small=$M0 -Os" \
   "M4F -Os DH_SMALL=$PREFIX-m4f-Os-small=$M4F -Os"
+tools/stamp.sh tools/footprint.sh "$OUT"

@@ -4,7 +4,7 @@
 # for Cortex-M0 (micro:bit), Cortex-M4F (mps2-an386) and Cortex-M7
 # (mps2-an500) at -O2, -Os and -Os with DH_SMALL=1 (size-first build), runs each image under QEMU with
 # -icount shift=0 (executed instructions counted exactly through SysTick)
-# and writes docs/performance_target.md.
+# and writes docs/generated/performance_target.md, stamped by tools/stamp.sh.
 #
 #   tools/target_bench.sh [output.md]
 #
@@ -14,11 +14,11 @@
 #                 -Os with -DDH_SMALL=ON)
 #   JOBS          parallel compile jobs (default: nproc)
 #   QEMU          emulator (default qemu-system-arm)
-#   TBENCH_LIB    benchmark the library (src/ include/ port/ CMakeLists.txt)
+#   TBENCH_LIB    benchmark the library (src/ include/ port/ cmake/ CMakeLists.txt)
 #                 of this commit instead of the working tree, e.g. HEAD: it is
 #                 exported with git archive to build/tbench-lib/ (the
 #                 firmware sources always come from the working tree). The
-#                 committed docs/performance_target.md is made this way, so
+#                 committed docs/generated/performance_target.md is made this way, so
 #                 its figures belong to the commit it names.
 # Build trees: build/tbench-<core>-<opt>/ ; logs: build/tbench-logs/.
 # Needs gcc-arm-none-eabi, libnewlib-arm-none-eabi, qemu-system-arm,
@@ -26,7 +26,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$(pwd)
-OUT=${1:-docs/performance_target.md}
+OUT=${1:-docs/generated/performance_target.md}
 CORES=${TBENCH_CORES:-m0 m4f m7}
 OPTS=${TBENCH_OPTS:-O2 Os Os-small}
 JOBS=${JOBS:-$(nproc)}
@@ -55,14 +55,14 @@ if [ -n "${TBENCH_LIB:-}" ]; then
   libroot=$ROOT/build/tbench-lib
   rm -rf "$libroot"
   mkdir -p "$libroot"
-  git archive "$libcommit" CMakeLists.txt src include port | tar -x -C "$libroot"
+  git archive "$libcommit" CMakeLists.txt cmake src include port | tar -x -C "$libroot"
   libdesc="$libcommit (exported with git archive)"
 else
   libcommit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
   libdesc="working tree at $libcommit"
-  if ! git diff --quiet HEAD -- CMakeLists.txt src include port 2>/dev/null ||
-     [ -n "$(git ls-files --others --exclude-standard -- src include port 2>/dev/null)" ]; then
-    libdesc="$libdesc with uncommitted changes in src/include/port"
+  if ! git diff --quiet HEAD -- CMakeLists.txt cmake src include port 2>/dev/null ||
+     [ -n "$(git ls-files --others --exclude-standard -- cmake src include port 2>/dev/null)" ]; then
+    libdesc="$libdesc with uncommitted changes in cmake/src/include/port"
   fi
 fi
 echo "== library: $libdesc"
@@ -117,4 +117,5 @@ meta=$LOGS/meta.txt
 } >"$meta"
 
 $PY bench/target/report.py "$OUT" "$meta" "${logs[@]}"
+tools/stamp.sh tools/target_bench.sh "$OUT"
 echo "== wrote $OUT"

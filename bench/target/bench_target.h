@@ -4,7 +4,7 @@
  * (bench_target.c: counter, inputs, dhmath and newlib operations;
  * bench_cglm.c: the cglm peer operations).
  *
- * Not part of the library. See docs/performance_target.md for the method.
+ * Not part of the library. See docs/generated/performance_target.md for the method.
  */
 #ifndef BENCH_TARGET_H
 #define BENCH_TARGET_H

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """report.py - turn the logs of the on-target benchmark firmware
 (bench/target/bench_target.c, run by tools/target_bench.sh) into
-docs/performance_target.md.
+docs/generated/performance_target.md.
 
 usage: report.py OUT.md META.txt LOG=ELF...
 

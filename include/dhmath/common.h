@@ -109,14 +109,20 @@ typedef struct {
     dh_qpos z; /**< z component */
 } dh_vec3_q;
 /**
- * Fixed-point 3-vector of dh_q30 words: unit-scale values in Q2.30 (e.g.
- * the axis of dh_frame_to_axis_angle_q), except where a function says
- * otherwise: dh_rot_error_q writes a rotation vector in Q3.29 radians.
+ * Fixed-point 3-vector of int32 words in one of two formats, fixed by the
+ * function that writes it:
+ * - Q2.30 (1.0 = 2^30, range [-2, 2)): unit-scale values, e.g. the unit
+ *   axis of dh_frame_to_axis_angle_q;
+ * - Q3.29 RADIANS (1.0 rad = 2^29 = 0x20000000, range [-4, 4) rad): the
+ *   rotation vector w that dh_rot_error_q writes: |w| <= pi within its
+ *   error bound (kin.h), so each component lies within about +-pi
+ *   (+-1686629713).
+ * Read a dh_rot_error_q result as Q3.29, never as Q2.30 (that would halve it).
  */
 typedef struct {
-    dh_q30 x; /**< x component */
-    dh_q30 y; /**< y component */
-    dh_q30 z; /**< z component */
+    dh_q30 x; /**< x component (Q2.30, or Q3.29 rad from dh_rot_error_q) */
+    dh_q30 y; /**< y component (Q2.30, or Q3.29 rad from dh_rot_error_q) */
+    dh_q30 z; /**< z component (Q2.30, or Q3.29 rad from dh_rot_error_q) */
 } dh_dir3_q;
 /**
  * Rigid frame in fixed point: rotation r (Q2.30, column-major r[col][row],

@@ -85,7 +85,7 @@
  * contract (same formats, same status codes, same accuracy bounds) but
  * is built from loops and a single general code path instead of the
  * unrolled code and the fast paths that the default build adds for speed.
- * For firmware where flash matters more than cycles (docs/footprint.md
+ * For firmware where flash matters more than cycles (docs/generated/footprint.md
  * gives both figures; docs/design.md lists which results may differ in
  * the last bit). Default 0. Range 0..1. PUBLIC: results may differ.
  */

@@ -29,8 +29,8 @@
  * caller's workspace). Pointers must not be NULL (DH_ASSERT).
  *
  * Methods: docs/design.md ("Kinematics"); measured accuracy and success
- * rates: docs/accuracy_kin.md; cost and stack: docs/performance_target.md,
- * docs/footprint.md.
+ * rates: docs/accuracy_kin.md; cost and stack: docs/generated/performance_target.md,
+ * docs/generated/footprint.md.
  */
 #ifndef DHMATH_KIN_H
 #define DHMATH_KIN_H
@@ -60,11 +60,11 @@ extern "C" {
  * - prismatic: [ z_i ; 0 ]                    per length unit of q_i,
  * where z_i / o_i are the z axis / origin of frame i-1 (standard DH) or of
  * frame i (modified DH), base included (Spong et al. 2006, ch. 4).
- * Measured entry error (metre-sized robots): <= 9.1e-7.
+ * Entry error vs double (test_jacobian: Puma 560, UR5, Panda in metres):
+ * <= 4.5e-7 linear rows, 5e-7 angular rows (measured: docs/accuracy_kin.md).
  *
  * @param r  robot (float path), conv standard or modified.
- * @param q  n joint values (deg / length), any finite values (limits are
- *           not checked).
+ * @param q  n joint values (deg / length), any finite (limits not checked).
  * @param J  6*n floats, output. Must not overlap q or r.
  * @param T_end may be NULL; else receives the end frame, bottom row exactly
  *           0 0 0 1 (the same value as dh_fk_f32 up to rounding: the
@@ -101,10 +101,10 @@ dh_status dh_jacobian_tool_f32(const dh_robot *r, const float *q, float *J, dh_m
  * angular rows z_i in Q2.30. Prismatic column: linear rows z_i in Q2.30
  * (length per length, dimensionless), angular rows 0.
  * Each linear entry is the exact cross product of the integer frame
- * entries rounded once (<= 0.5 LSB). Against the exact robot, measured for the
- * Puma 560, UR5 and Panda in mm (DH_QPOS_FRAC 16): at least as accurate
- * as dh_jacobian_f32 on the same robot (measured 4.5e-5 mm against the
- * float path's 3.9e-4 mm, test/kin/test_jacobian_q.c).
+ * entries rounded once (<= 0.5 LSB). Against the exact robot (Puma 560,
+ * UR5 and Panda in mm, DH_QPOS_FRAC 16) test_jacobian_q asserts its error
+ * at most dh_jacobian_f32's on the same robot (linear rows: or the
+ * position resolution); measured figures: docs/accuracy_kin.md.
  *
  * @param r  robot (fixed path), conv standard or modified.
  * @param q  n joint values: dh_q16 degrees (R), dh_qpos (P), any int32
@@ -147,7 +147,8 @@ dh_status dh_jacobian_tool_q(const dh_robot *r, const int32_t *q, int32_t *J, dh
  *         input is not orthonormal within DH_ROT_ERROR_TOL or is a
  *         reflection (w untouched on error).
  *
- * Measured: |w - w_ref| <= 6.3e-7 rad at all angles.
+ * Error: test_jacobian asserts |w - w_ref| <= 8e-7 rad against double in
+ * every angle band up to 180 degrees.
  */
 dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh_vec3_f32 *w);
 
@@ -209,9 +210,8 @@ dh_status dh_dls_step_f32(const dh_robot *r, const float *J, const float e[6], f
  * rotations (Q2.30; positions ignored): the fixed counterpart of
  * dh_rot_error_f32 (integer only). w is the rotation vector in Q3.29
  * RADIANS (1.0 rad = 2^29; |w| <= pi), R_target = Rot(w) R; w = 0 for
- * dR = I; at exactly pi the sign of w is arbitrary. Accurate at every
- * angle: |w - w_ref| <= 6.3e-7 rad (the float path's bound; measured
- * against double in test/rot/test_rot_q.c).
+ * dR = I; at exactly pi the sign of w is arbitrary. Error: test_rot_q
+ * asserts |w - w_ref| <= 6.3e-7 rad against double at every angle.
  * @param F_target, F frames whose rotations are orthonormal within
  *        DH_ROT_ERROR_TOL_Q (dh_frame_ortho_error_q) with det > 0. May
  *        alias each other.
@@ -365,9 +365,10 @@ typedef struct {
  * prismatic travel (limited joints) and |tool_q p| in dh_qpos (one length
  * unit if that is 0; saturated at INT32_MAX). Reads only r's fixed fields.
  * The step budget is a quarter of dh_ik_params_default_f32's: it bounds the
- * worst case (a step costs about 45,000 instructions on a Cortex-M0 for
- * the Puma 560, tools/target_bench.sh) at a small cost in success rate
- * for near-singular targets (docs/accuracy_kin.md).
+ * worst case (the cost of a step on a Cortex-M0, measured:
+ * docs/generated/performance_target.md, "Inverse kinematics in fixed
+ * point") at a small cost in success rate for near-singular targets
+ * (docs/accuracy_kin.md).
  */
 void dh_ik_params_default_q(const dh_robot *r, dh_ik_params_q *p);
 

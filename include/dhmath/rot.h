@@ -50,8 +50,8 @@
  * reentrant, use no heap and less than 256 bytes of stack. "Entry error"
  * means max |R_ij - R_ij(exact)| over the nine entries; bounds are against
  * the exact result for the given float inputs. Measured accuracy:
- * docs/accuracy_rot.md; cost and stack: docs/performance_target.md,
- * docs/footprint.md; methods: docs/design.md ("Rotations").
+ * docs/accuracy_rot.md; cost and stack: docs/generated/performance_target.md,
+ * docs/generated/footprint.md; methods: docs/design.md ("Rotations").
  */
 #ifndef DHMATH_ROT_H
 #define DHMATH_ROT_H
@@ -303,10 +303,11 @@ dh_status dh_quat_from_axis_angle_f32(const dh_vec3_f32 *axis, float deg, dh_qua
  * the one whose largest-diagonal component is positive is returned.
  * Example 1.1 (eq. 1.104) gives theta = 120 exactly and k = (1, 1, 1) *
  * 0.57735026 (1/sqrt(3) within 1 ulp).
- * Measured (float-rounded Rot(k, theta) as input): |theta error| <=
- * 1.5e-5 deg; |Rot(k_out, theta_out) - R| <= 8.3 * 2^-24 per entry; |k -
- * k_exact| <= 2.4e-7 for theta >= 1 deg (below, |k - k_exact| * theta_rad
- * <= 1.9e-9: the axis is ill defined); ||k| - 1| <= 1.6e-7.
+ * Bounds test_mat4_props asserts (float-rounded Rot(k, theta) as input):
+ * |theta error| <= 3e-5 deg; |Rot(k_out, theta_out) - R| <= 17 * 2^-24 per
+ * entry; |k - k_exact| <= 5e-7 for theta >= 1 deg (below, |k - k_exact| *
+ * theta_rad <= 4e-9: the axis is ill defined); ||k| - 1| <= 3.1e-7.
+ * Measured figures: docs/accuracy_mat4.md.
  *
  * @param T transform; only the rotation part is read.
  * @param k output unit axis.
@@ -492,7 +493,7 @@ typedef struct {
  *        third angle (in the order of the letters) is exactly 0 and the
  *        whole rotation about the locked axis is in the first.
  *
- * Error bounds (measured against double, test/rot/test_rot_q.c): with the
+ * Error bounds (asserted against double by test_rot_q): with the
  * middle angle at least 1 deg from a pole, angles within 2e-5 deg of the
  * exact ones of the rotation; everywhere, the exact rotation of the
  * returned angles reproduces F within 6e-7 per entry; near a pole the
@@ -520,8 +521,8 @@ dh_status dh_euler_to_frame_q(dh_euler_seq seq, const dh_q16 ang_deg[3], dh_fram
  * @brief Unit quaternion (Q2.30) of F's rotation (Shepperd 1978), the fixed
  *        counterpart of dh_mat3_to_quat_f32: normalised, w >= 0; at w == 0
  *        the component of the largest diagonal entry is positive.
- *        Components within 2e-7 of the exact unit quaternion (measured:
- *        a few LSB).
+ *        Components within 2e-7 of the exact unit quaternion (the bound
+ *        test_rot_q asserts).
  * @return DH_OK; DH_ERR_NOT_RIGID (see DH_ROT_TOL_Q; q untouched).
  */
 dh_status dh_frame_to_quat_q(const dh_frame_q *F, dh_quat_q *q);
@@ -530,7 +531,8 @@ dh_status dh_frame_to_quat_q(const dh_frame_q *F, dh_quat_q *q);
  * @brief F = rotation of q / |q| (position 0) for any non-zero q: the
  *        components are brought to a common scale (exact shifts), q is
  *        normalised in integer arithmetic, then R is formed with one
- *        rounding per entry: entry error <= 6e-7 (measured: a few LSB).
+ *        rounding per entry: entry error <= 6e-7 (the bound test_rot_q
+ *        asserts).
  *        INT32_MIN components are accepted (never negated).
  * @return DH_OK; DH_ERR_ZERO_AXIS when all four components are 0 (F
  *         untouched).

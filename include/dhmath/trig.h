@@ -20,7 +20,7 @@
  * builds give the same bits for every input. Thread-safe and reentrant (no
  * state; const tables only). Method and error derivation: docs/design.md
  * ("Lookup-table trigonometry"), docs/accuracy_trig.md. Measured cost and
- * stack: docs/performance_target.md, docs/footprint.md.
+ * stack: docs/generated/performance_target.md, docs/generated/footprint.md.
  */
 #ifndef DHMATH_TRIG_H
 #define DHMATH_TRIG_H

@@ -116,12 +116,7 @@ int dh_ikc_detect_par234_q_(dh_ikc_model_q *m)
     if (dh_ikc_abs64_q_(h) > (uint64_t)P234Q_POS_LIM) return 0;
     k[P_H] = (int32_t)h;
     k[P_E5] = k[P_SB] * m->d[4];
-    k[P_W] = m->a[5];
-    k[P_W + 1] = dh_ikc_r30_q_(dh_q_mul64(m->d[5], m->sa[5]));
-    k[P_W + 2] = dh_ikc_r30_q_(dh_q_mul64(m->d[5], m->ca[5]));
-    m->kind = DH_IKC_PARALLEL_234;
-    m->why = DH_IKC_WHY_NONE;
-    return 1;
+    return dh_ikc_accept_q_(m, DH_IKC_PARALLEL_234, 5u, &k[P_W]);
 }
 
 /* p05, x', z' from T06 (sol[0..1]) into sol[5] (px, py, pz, u, branch

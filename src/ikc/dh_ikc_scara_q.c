@@ -69,12 +69,7 @@ int dh_ikc_detect_scara_q_(dh_ikc_model_q *m)
     z0 = (int64_t)m->d[0] + k[S_S1] * (int64_t)m->d[1];
     if (dh_ikc_abs64_q_(z0) > (uint64_t)SCARAQ_POS_LIM) return 0;
     k[S_Z0] = (int32_t)z0;
-    k[S_P] = m->a[3];
-    k[S_P + 1] = dh_ikc_r30_q_(dh_q_mul64(m->d[3], m->sa[3]));
-    k[S_P + 2] = dh_ikc_r30_q_(dh_q_mul64(m->d[3], m->ca[3]));
-    m->kind = DH_IKC_SCARA;
-    m->why = DH_IKC_WHY_NONE;
-    return 1;
+    return dh_ikc_accept_q_(m, DH_IKC_SCARA, 3u, &k[S_P]);
 }
 
 /* x4 into sol[2].q[0..2], z' into sol[2].q[3..5], p3 into sol[3].q[0..2]

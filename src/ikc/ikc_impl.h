@@ -235,6 +235,19 @@ DH_INLINE int32_t dh_ikc_r30_q_(int64_t x)
     return dh_q_rnd30_fit(x);
 }
 
+/* The end of a detector that accepts m as kind: the tool offset of joint
+ * j in its own frame (a_j, d_j sin alpha_j, d_j cos alpha_j, Q16.16) into
+ * w[0..2], m->kind and m->why set; returns 1. */
+DH_INLINE int dh_ikc_accept_q_(dh_ikc_model_q *m, dh_ikc_kind kind, uint32_t j, int32_t *w)
+{
+    w[0] = m->a[j];
+    w[1] = dh_ikc_r30_q_(dh_q_mul64(m->d[j], m->sa[j]));
+    w[2] = dh_ikc_r30_q_(dh_q_mul64(m->d[j], m->ca[j]));
+    m->kind = kind;
+    m->why = DH_IKC_WHY_NONE;
+    return 1;
+}
+
 /* any int32 angle -> (-180, 180] (32-bit remainder, no negation of INT32_MIN) */
 static inline int32_t dh_ikc_reduce_q_(int32_t x)
 {

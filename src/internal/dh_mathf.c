@@ -40,18 +40,18 @@
  * angle = K pi/4 + (-1)^sneg (u + c), c = u z P(z) the polynomial's
  * correction, and (lo != 0) the tail ul of the reduced argument, u + ul
  * within ~2^-46 relative of the exact u. The tail needs the exact products
- * of dh_mf_two_prod, which the caller keeps in range (dh_atan2f_deg_ scales
+ * of mathf_two_prod, which the caller keeps in range (dh_atan2f_deg_ scales
  * max(|x|, |y|) into [1, 2) and leaves min/max >= 2^-61).
  */
 typedef struct {
     float u, c, ul;
     uint32_t k, sneg;
-} dh_mf_atan_parts;
+} mathf_atan_parts;
 
 /* a b = *hi + *lo exactly (Dekker's product: Veltkamp's split into 12-bit
  * halves, whose products are exact floats); |a|, |b| < 2^100, and the
  * products of the halves at least 2^-100 or zero. */
-static void dh_mf_two_prod(float a, float b, float *hi, float *lo)
+static void mathf_two_prod(float a, float b, float *hi, float *lo)
 {
     float t = 4097.0f * a, ah = t - (t - a), al = a - ah;
     float v = 4097.0f * b, bh = v - (v - b), bl = b - bh;
@@ -60,7 +60,7 @@ static void dh_mf_two_prod(float a, float b, float *hi, float *lo)
     *lo = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
 }
 
-DH_INLINE void dh_mf_atan2_parts(float y, float x, int lo, dh_mf_atan_parts *r)
+DH_INLINE void mathf_atan2_parts(float y, float x, int lo, mathf_atan_parts *r)
 {
     uint32_t xb = dh_f32_bits(x), yb = dh_f32_bits(y);
     uint32_t ax_b = xb & DH_MF_ABS, ay_b = yb & DH_MF_ABS;
@@ -97,7 +97,7 @@ DH_INLINE void dh_mf_atan2_parts(float y, float x, int lo, dh_mf_atan_parts *r)
             /* ul = (n - u (d + e)) / (d + e): n - u d exactly from the
              * product (n - ph exact: ph is within a few ulp of n) */
             float ph, pl;
-            dh_mf_two_prod(u, d, &ph, &pl);
+            mathf_two_prod(u, d, &ph, &pl);
             ul = (((n - ph) - pl) - u * e) / d;
         }
     } else {
@@ -105,7 +105,7 @@ DH_INLINE void dh_mf_atan2_parts(float y, float x, int lo, dh_mf_atan_parts *r)
         u = mn / mx;                   /* in [0, 1/2); mx > 0 here; 0 when mx is inf */
         if (lo) {
             float ph, pl;              /* ul = (mn - u mx) / mx, mn - ph exact */
-            dh_mf_two_prod(u, mx, &ph, &pl);
+            mathf_two_prod(u, mx, &ph, &pl);
             ul = ((mn - ph) - pl) / mx;
         }
     }
@@ -133,11 +133,11 @@ float dh_atan2f_(float y, float x)
         0.0f, -0x1.777a5cp-26f, -0x1.777a5cp-25f, -0x1.99bc5cp-28f, -0x1.777a5cp-24f
     };
     uint32_t ax_b = dh_f32_bits(x) & DH_MF_ABS, ay_b = dh_f32_bits(y) & DH_MF_ABS;
-    dh_mf_atan_parts pt;
+    mathf_atan_parts pt;
     float p, a;
 
     if (ax_b > DH_MF_INF || ay_b > DH_MF_INF) return x + y; /* NaN in, NaN out */
-    dh_mf_atan2_parts(y, x, 0, &pt);
+    mathf_atan2_parts(y, x, 0, &pt);
     p = pt.u + pt.c;
     if (pt.sneg) p = -p;
     {
@@ -156,7 +156,7 @@ float dh_atan2f_(float y, float x)
 
 /* (mantissa with the implicit bit, unbiased exponent) of a positive finite
  * float (bits b), subnormals normalised: b = m 2^(e - 23), m in [2^23, 2^24) */
-static uint32_t dh_mf_mant(uint32_t b, int32_t *e)
+static uint32_t mathf_mant(uint32_t b, int32_t *e)
 {
     int32_t ex = (int32_t)(b >> 23);
     uint32_t m = b & 0x007FFFFFu;
@@ -198,11 +198,11 @@ float dh_atan2f_deg_(float y, float x, float corr)
     uint32_t big = (ay_b > ax_b) ? ay_b : ax_b, sml = (ay_b > ax_b) ? ax_b : ay_b;
     uint32_t mb, ms, sb, ss, res;
     int32_t eb, es = 0, dexp;
-    dh_mf_atan_parts pt;
+    mathf_atan_parts pt;
     float a;
 
-    mb = dh_mf_mant(big, &eb);
-    ms = (sml != 0u) ? dh_mf_mant(sml, &es) : 0u;
+    mb = mathf_mant(big, &eb);
+    ms = (sml != 0u) ? mathf_mant(sml, &es) : 0u;
     dexp = (sml != 0u) ? eb - es : 255;
     sb = DH_MF_ONE | (mb & 0x007FFFFFu);                        /* big 2^-E */
     if (dexp <= 60 || ax_b > ay_b) {
@@ -211,9 +211,9 @@ float dh_atan2f_deg_(float y, float x, float corr)
          * of x matters (K = 0 or 4) */
         ss = (dexp <= 60) ? (((127u - (uint32_t)dexp) << 23) | (ms & 0x007FFFFFu)) : 0u;
         if (ay_b > ax_b) {
-            dh_mf_atan2_parts(dh_f32_from_bits(sb), dh_f32_from_bits(ss | (xb & DH_MF_SIGN)), 1, &pt);
+            mathf_atan2_parts(dh_f32_from_bits(sb), dh_f32_from_bits(ss | (xb & DH_MF_SIGN)), 1, &pt);
         } else {
-            dh_mf_atan2_parts(dh_f32_from_bits(ss), dh_f32_from_bits(sb | (xb & DH_MF_SIGN)), 1, &pt);
+            mathf_atan2_parts(dh_f32_from_bits(ss), dh_f32_from_bits(sb | (xb & DH_MF_SIGN)), 1, &pt);
         }
     } else {
         /* |y| >> |x|: 90 (the tiny part is below half an ulp of 90) */
@@ -227,16 +227,16 @@ float dh_atan2f_deg_(float y, float x, float corr)
         /* y tiny against x > 0: R q 2^-dexp */
         float fx = dh_f32_from_bits(sb), fy = dh_f32_from_bits(DH_MF_ONE | (ms & 0x007FFFFFu));
         float q = fy / fx, ph, pl, ql, v;
-        dh_mf_two_prod(q, fx, &ph, &pl);
+        mathf_two_prod(q, fx, &ph, &pl);
         ql = ((fy - ph) - pl) / fx;
-        dh_mf_two_prod(DH_MF_R_HI, q, &ph, &pl);
+        mathf_two_prod(DH_MF_R_HI, q, &ph, &pl);
         v = ph + (pl + (DH_MF_R_HI * ql + DH_MF_R_LO * q));         /* in [28, 115) */
         v *= 0x1.0p-60f;                                            /* exact */
         dexp -= 60;
         a = (dexp > 100) ? 0.0f : v * dh_f32_from_bits((127u - (uint32_t)dexp) << 23);
     } else {
         float ph, pl, tail, base = 45.0f * (float)pt.k, sum, err;
-        dh_mf_two_prod(DH_MF_R_HI, pt.u, &ph, &pl);
+        mathf_two_prod(DH_MF_R_HI, pt.u, &ph, &pl);
         tail = pl + (DH_MF_R_HI * (pt.ul + pt.c) + DH_MF_R_LO * pt.u);
         if (pt.sneg) {
             ph = -ph;
@@ -267,17 +267,17 @@ float dh_asinf_deg_(float v, unsigned want_acos)
 
     if (a >= 0.5f) {
         float p = 1.0f - a, qh = 1.0f + a, ql = a - (qh - 1.0f);
-        dh_mf_two_prod(p, qh, &th, &tl);
+        mathf_two_prod(p, qh, &th, &tl);
         tl += p * ql;
     } else {
         float sh, sl;
-        dh_mf_two_prod(a, a, &sh, &sl);
+        mathf_two_prod(a, a, &sh, &sl);
         th = 1.0f - sh;
         tl = ((1.0f - th) - sh) - sl;
     }
     r = dh_sqrtf_(th);
     if (!dh_feq_f32(th, 0.0f)) {
-        dh_mf_two_prod(r, r, &ph, &pl);
+        mathf_two_prod(r, r, &ph, &pl);
         rl = (((th - ph) - pl) + tl) / (r + r);
     }
     if (want_acos != 0u) {
@@ -292,7 +292,7 @@ float dh_asinf_deg_(float v, unsigned want_acos)
 /* v 2^-63 as a float, rounded to nearest even, for 0 <= v < 2^63 (by hand:
  * libgcc's __aeabi_ul2f is stack-hungry on Cortex-M0+). A rounding carry
  * into 2^24 carries into the exponent field, which is right. */
-static float dh_mf_q63_to_float(uint64_t v)
+static float mathf_q63_to_float(uint64_t v)
 {
     uint32_t e = 63u, mant;
     uint64_t rest;
@@ -319,7 +319,7 @@ static float dh_mf_q63_to_float(uint64_t v)
  * r = f pi/2 in fixed point, rounded once. The leading zero word makes the
  * window at s0 = e + 30 (6..134) need no special case.
  */
-static DH_NOINLINE float dh_mf_reduce(uint32_t mag, uint32_t *quad)
+static DH_NOINLINE float mathf_reduce(uint32_t mag, uint32_t *quad)
 {
     static const uint32_t two_over_pi[8] = {
         0x00000000u, 0xA2F9836Eu, 0x4E441529u, 0xFC2757D1u,
@@ -358,7 +358,7 @@ static DH_NOINLINE float dh_mf_reduce(uint32_t mag, uint32_t *quad)
     hl = fa * pb;
     t = ((fb * pb) >> 32) + (lh & 0xFFFFFFFFu) + (hl & 0xFFFFFFFFu);
     u = fa * pa + (lh >> 32) + (hl >> 32) + (t >> 32);
-    r = dh_mf_q63_to_float(u);          /* u < 2^63: r in [0, pi/4] */
+    r = mathf_q63_to_float(u);          /* u < 2^63: r in [0, pi/4] */
     *quad = q;
     return neg ? -r : r;
 }
@@ -380,7 +380,7 @@ void dh_sincosf_(float x, float *s, float *c)
     if (mag <= DH_MF_PIO4_BITS) {
         r = dh_f32_from_bits(mag);        /* |x|; the sign is applied at the end */
     } else {
-        r = dh_mf_reduce(mag, &q);
+        r = mathf_reduce(mag, &q);
     }
     z = r * r;
     sp = r + r * (z * (DH_MF_S1 + z * (DH_MF_S2 + z * DH_MF_S3)));

@@ -75,6 +75,7 @@ static void pose_delta(const float *const *ct, const float *const *cr, float *d)
         }
 }
 
+/* twin: dh_pose_error_f32 (kept whole: a shared helper costs 8 bytes of stack on the M0+, at the 256-byte guard) */
 dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh_vec3_f32 *w)
 {
     float d[9], v[3];
@@ -103,6 +104,7 @@ dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh
     return DH_OK;
 }
 
+/* twin: dh_rot_error_f32 */
 dh_status dh_pose_error_f32(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float e[6])
 {
     float d[9];

@@ -17,7 +17,7 @@
 #include "../internal/dh_floatops.h"
 #include "../internal/dh_mathf.h"
 
-static void dh_set_identity(dh_mat4_f32 *T)
+static void mat4_set_identity(dh_mat4_f32 *T)
 {
     int c, r;
     for (c = 0; c < 4; c++) {
@@ -33,11 +33,11 @@ static void dh_set_identity(dh_mat4_f32 *T)
 void dh_mat4_identity_f32(dh_mat4_f32 *T)
 {
     DH_ASSERT(T != NULL);
-    dh_set_identity(T);
+    mat4_set_identity(T);
 }
 
 /* o = (a, b, c, d): a 4-float struct as an array */
-DH_INLINE void dh_load4(float *o, float a, float b, float c, float d)
+DH_INLINE void mat4_load4(float *o, float a, float b, float c, float d)
 {
     o[0] = a;
     o[1] = b;
@@ -46,10 +46,10 @@ DH_INLINE void dh_load4(float *o, float a, float b, float c, float d)
 }
 
 /* The identity with (x, y, z) in column 3 (col 3) or on the diagonal (col -1). */
-static void dh_identity_xyz(dh_mat4_f32 *T, float x, float y, float z, int col)
+static void mat4_identity_xyz(dh_mat4_f32 *T, float x, float y, float z, int col)
 {
     DH_ASSERT(T != NULL);
-    dh_set_identity(T);
+    mat4_set_identity(T);
     T->m[(col < 0) ? 0 : col][0] = x;
     T->m[(col < 0) ? 1 : col][1] = y;
     T->m[(col < 0) ? 2 : col][2] = z;
@@ -57,7 +57,7 @@ static void dh_identity_xyz(dh_mat4_f32 *T, float x, float y, float z, int col)
 
 void dh_mat4_trans_f32(float x, float y, float z, dh_mat4_f32 *T)
 {
-    dh_identity_xyz(T, x, y, z, 3);
+    mat4_identity_xyz(T, x, y, z, 3);
 }
 
 /*
@@ -70,7 +70,7 @@ void dh_mat4_trans_f32(float x, float y, float z, dh_mat4_f32 *T)
  * dh_mat4_rot_axis_f32.
  */
 #if DH_FAST_PATHS
-static dh_status dh_rotk(dh_mat4_f32 *T, float deg, int axis)
+static dh_status mat4_rotk(dh_mat4_f32 *T, float deg, int axis)
 {
     float k[3] = {0.0f, 0.0f, 0.0f};
     if (dh_isfinite_f32(deg)) {
@@ -80,7 +80,7 @@ static dh_status dh_rotk(dh_mat4_f32 *T, float deg, int axis)
         (void)dh_sincos_f32(deg, &s, &c);
         s += 0.0f;
         c += 0.0f;
-        dh_set_identity(T);
+        mat4_set_identity(T);
         T->m[i][i] = c;
         T->m[i][j] = s;
         T->m[j][i] = 0.0f - s;
@@ -91,7 +91,7 @@ static dh_status dh_rotk(dh_mat4_f32 *T, float deg, int axis)
     return dh_mat4_rot_axis_f32(k[0], k[1], k[2], deg, T);
 }
 #else
-static dh_status dh_rotk(dh_mat4_f32 *T, float deg, int axis)
+static dh_status mat4_rotk(dh_mat4_f32 *T, float deg, int axis)
 {
     float k[3] = {0.0f, 0.0f, 0.0f};
     k[axis] = 1.0f;
@@ -101,17 +101,17 @@ static dh_status dh_rotk(dh_mat4_f32 *T, float deg, int axis)
 
 dh_status dh_mat4_rotx_f32(float deg, dh_mat4_f32 *T)
 {
-    return dh_rotk(T, deg, 0);
+    return mat4_rotk(T, deg, 0);
 }
 
 dh_status dh_mat4_roty_f32(float deg, dh_mat4_f32 *T)
 {
-    return dh_rotk(T, deg, 1);
+    return mat4_rotk(T, deg, 1);
 }
 
 dh_status dh_mat4_rotz_f32(float deg, dh_mat4_f32 *T)
 {
-    return dh_rotk(T, deg, 2);
+    return mat4_rotk(T, deg, 2);
 }
 
 /*
@@ -119,7 +119,7 @@ dh_status dh_mat4_rotz_f32(float deg, dh_mat4_f32 *T)
  * When k_i^2 is large the equivalent 1 - (k_j^2 + k_l^2) vers is used: more
  * accurate there and exactly 1 on a coordinate axis.
  */
-static float dh_rot_diag(float ki2, float others2, float v, float c)
+static float mat4_rot_diag(float ki2, float others2, float v, float c)
 {
     return (ki2 >= 0.5f) ? 1.0f - others2 * v : ki2 * v + c;
 }
@@ -151,7 +151,7 @@ static dh_status mat4_rot_axis_general(float kx, float ky, float kz, float deg, 
     s += 0.0f;
     c += 0.0f;
     v = 1.0f - c; /* vers */
-    dh_set_identity(T);
+    mat4_set_identity(T);
     /* eq. 1.70 by the axis j and the two others a, b in cyclic order: the
      * diagonal entry j, (column a, row b) = k_a k_b vers + k_j sin and
      * (column b, row a) = k_a k_b vers - k_j sin */
@@ -161,7 +161,7 @@ static dh_status mat4_rot_axis_general(float kx, float ky, float kz, float deg, 
     for (i = 0, j = 0, a = 1, b = 2; i < 3; i++) {
         const float uj = x / len, ua = y / len, ub = w / len; /* unit axis */
         const float p = ua * ub * v, q = uj * s;
-        T->m[j][j] = dh_rot_diag(uj * uj, ua * ua + ub * ub, v, c);
+        T->m[j][j] = mat4_rot_diag(uj * uj, ua * ua + ub * ub, v, c);
         T->m[a][b] = (p + q) + 0.0f;
         T->m[b][a] = (p - q) + 0.0f;
         t = j; /* (j, a, b) -> (a, b, j) */
@@ -208,17 +208,17 @@ dh_status dh_mat4_rot_axis_f32(float kx, float ky, float kz, float deg, dh_mat4_
         xyv = x * y * v;
         xzv = x * w * v;
         yzv = y * w * v;
-        T->m[0][0] = dh_rot_diag(x2, y2 + z2, v, c);
+        T->m[0][0] = mat4_rot_diag(x2, y2 + z2, v, c);
         T->m[0][1] = (xyv + w * s) + 0.0f;
         T->m[0][2] = (xzv - y * s) + 0.0f;
         T->m[0][3] = 0.0f;
         T->m[1][0] = (xyv - w * s) + 0.0f;
-        T->m[1][1] = dh_rot_diag(y2, x2 + z2, v, c);
+        T->m[1][1] = mat4_rot_diag(y2, x2 + z2, v, c);
         T->m[1][2] = (yzv + x * s) + 0.0f;
         T->m[1][3] = 0.0f;
         T->m[2][0] = (xzv + y * s) + 0.0f;
         T->m[2][1] = (yzv - x * s) + 0.0f;
-        T->m[2][2] = dh_rot_diag(z2, x2 + y2, v, c);
+        T->m[2][2] = mat4_rot_diag(z2, x2 + y2, v, c);
         T->m[2][3] = 0.0f;
         T->m[3][0] = 0.0f;
         T->m[3][1] = 0.0f;
@@ -238,7 +238,7 @@ dh_status dh_mat4_rot_axis_f32(float kx, float ky, float kz, float deg, dh_mat4_
 
 void dh_mat4_scale_f32(float sx, float sy, float sz, dh_mat4_f32 *T)
 {
-    dh_identity_xyz(T, sx, sy, sz, -1);
+    mat4_identity_xyz(T, sx, sy, sz, -1);
 }
 
 /* f = +-0 gives r = -+Inf, so the finiteness test of r is also f == 0 */
@@ -250,7 +250,7 @@ dh_status dh_mat4_persp_f32(int axis, float f, dh_mat4_f32 *T)
     if (!dh_isfinite_f32(f)) return DH_ERR_NAN;
     r = -1.0f / f;
     if (!dh_isfinite_f32(r)) return DH_ERR_DOMAIN;
-    dh_set_identity(T);
+    mat4_set_identity(T);
     T->m[axis][3] = r; /* bottom row, column of the axis (eq. 1.127) */
     return DH_OK;
 }
@@ -273,7 +273,7 @@ void dh_mat4_from_noap_f32(const dh_vec3_f32 *n, const dh_vec3_f32 *o, const dh_
 /* accessors                                                              */
 /* ---------------------------------------------------------------------- */
 
-static dh_vec3_f32 dh_col3(const dh_mat4_f32 *T, int c)
+static dh_vec3_f32 mat4_col3(const dh_mat4_f32 *T, int c)
 {
     dh_vec3_f32 v;
     DH_ASSERT(T != NULL);
@@ -283,10 +283,10 @@ static dh_vec3_f32 dh_col3(const dh_mat4_f32 *T, int c)
     return v;
 }
 
-dh_vec3_f32 dh_mat4_n_f32(const dh_mat4_f32 *T) { return dh_col3(T, 0); }
-dh_vec3_f32 dh_mat4_o_f32(const dh_mat4_f32 *T) { return dh_col3(T, 1); }
-dh_vec3_f32 dh_mat4_a_f32(const dh_mat4_f32 *T) { return dh_col3(T, 2); }
-dh_vec3_f32 dh_mat4_p_f32(const dh_mat4_f32 *T) { return dh_col3(T, 3); }
+dh_vec3_f32 dh_mat4_n_f32(const dh_mat4_f32 *T) { return mat4_col3(T, 0); }
+dh_vec3_f32 dh_mat4_o_f32(const dh_mat4_f32 *T) { return mat4_col3(T, 1); }
+dh_vec3_f32 dh_mat4_a_f32(const dh_mat4_f32 *T) { return mat4_col3(T, 2); }
+dh_vec3_f32 dh_mat4_p_f32(const dh_mat4_f32 *T) { return mat4_col3(T, 3); }
 
 void dh_mat4_get_rot_f32(const dh_mat4_f32 *T, dh_mat3_f32 *R)
 {
@@ -317,7 +317,7 @@ void dh_mat4_set_rot_f32(dh_mat4_f32 *T, const dh_mat3_f32 *R)
  * sums are kept in registers, one column of A per step; each still runs
  * k = 0, 1, ... .
  */
-static void dh_lin(const dh_mat4_f32 *A, const float *in, float *o, int n)
+static void mat4_lin(const dh_mat4_f32 *A, const float *in, float *o, int n)
 {
     float x = in[0];
     float o0 = A->m[0][0] * x, o1 = A->m[0][1] * x, o2 = A->m[0][2] * x, o3 = A->m[0][3] * x;
@@ -338,16 +338,16 @@ static void dh_lin(const dh_mat4_f32 *A, const float *in, float *o, int n)
 }
 
 #if !DH_FAST_PATHS
-/* dh_lin() of in = (x, y, z, 1): a point (n = 4; its p * 1 is p, exact) or
+/* mat4_lin() of in = (x, y, z, 1): a point (n = 4; its p * 1 is p, exact) or
  * a direction (n = 3) */
-static void dh_lin3(const dh_mat4_f32 *A, float x, float y, float z, float *o, int n)
+static void mat4_lin3(const dh_mat4_f32 *A, float x, float y, float z, float *o, int n)
 {
     float in[4];
     in[0] = x;
     in[1] = y;
     in[2] = z;
     in[3] = 1.0f;
-    dh_lin(A, in, o, n);
+    mat4_lin(A, in, o, n);
 }
 #endif
 
@@ -356,7 +356,7 @@ static void dh_lin3(const dh_mat4_f32 *A, float x, float y, float z, float *o, i
  * caller): columns 0..2 of R_A R_B, column 3 R_A p_B + p_A (the fourth term
  * of a point), bottom row 0 0 0 1; the bottom rows of A and B are not used.
  * out may alias A and/or B. Three whole bodies, chosen by the build:
- *  - size-first build: the general loops (dh_lin) into a temporary;
+ *  - size-first build: the general loops (mat4_lin) into a temporary;
  *  - default build, 4-wide SIMD hosts and soft float: the copy form,
  *    unrolled products from a local copy of A (vectorised; with soft float
  *    the register form saves 2 % of the instructions for about 1 KiB of
@@ -365,17 +365,17 @@ static void dh_lin3(const dh_mat4_f32 *A, float x, float y, float z, float *o, i
  * Every form computes the same sums in the same order.
  */
 #if !DH_FAST_PATHS
-DH_SPEED_INLINE void dh_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int aff)
+DH_SPEED_INLINE void mat4_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int aff)
 {
     dh_mat4_f32 t;
     int i;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
     /* the columns of R_A R_B (aff) or of A B: B's columns read before out
      * is written */
-    for (i = 0; i < 4 - aff; i++) dh_lin(A, B->m[i], &t.m[i][0], 4 - aff);
+    for (i = 0; i < 4 - aff; i++) mat4_lin(A, B->m[i], &t.m[i][0], 4 - aff);
     if (aff) {
         /* column 3: R_A p_B + p_A, A applied to the point p_B */
-        dh_lin3(A, B->m[3][0], B->m[3][1], B->m[3][2], t.m[3], 4);
+        mat4_lin3(A, B->m[3][0], B->m[3][1], B->m[3][2], t.m[3], 4);
         t.m[0][3] = 0.0f;
         t.m[1][3] = 0.0f;
         t.m[2][3] = 0.0f;
@@ -419,7 +419,7 @@ DH_INLINE void mat4_col3_copy(const dh_mat4_f32 *a, const float *b, float *o, in
 /* The copy form: column c of A*B is the combination of the columns of A
  * (copied to a local first) with the weights of column c of B, read before
  * column c of out is written. */
-DH_SPEED_INLINE void dh_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int aff)
+DH_SPEED_INLINE void mat4_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int aff)
 {
     dh_mat4_f32 a;
     DH_ASSERT(out != NULL && A != NULL && B != NULL);
@@ -479,7 +479,7 @@ DH_INLINE void mat4_col3_regs(const float *b, float *o, int pt, float a00, float
  * alias B). Straight-line code with no copy through memory: the locals are
  * registers (the 16 of the full product, the weights and the sums fit the
  * 32 single registers of FPv4/FPv5). */
-DH_SPEED_INLINE void dh_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int aff)
+DH_SPEED_INLINE void mat4_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out, int aff)
 {
     const float a00 = A->m[0][0], a10 = A->m[0][1], a20 = A->m[0][2];
     const float a01 = A->m[1][0], a11 = A->m[1][1], a21 = A->m[1][2];
@@ -507,12 +507,12 @@ DH_SPEED_INLINE void dh_mul(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_
 
 void dh_mat4_mul_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out)
 {
-    dh_mul(A, B, out, 0);
+    mat4_mul(A, B, out, 0);
 }
 
 void dh_mat4_mul_affine_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, dh_mat4_f32 *out)
 {
-    dh_mul(A, B, out, 1);
+    mat4_mul(A, B, out, 1);
 }
 
 void dh_mat4_premul_f32(dh_mat4_f32 *T, const dh_mat4_f32 *X)
@@ -532,10 +532,10 @@ void dh_mat4_postmul_f32(dh_mat4_f32 *T, const dh_mat4_f32 *X)
 /* v = rows 0..2 of the n-term combination of the columns of T with u, 1
  * (n = 4: a point, n = 3: a direction; u, v may be the same object: u is
  * read first). Twin bodies: R u (+ p) written out in the default build,
- * ((a + b) + c) + d being the general path's order, and dh_lin3 in the
+ * ((a + b) + c) + d being the general path's order, and mat4_lin3 in the
  * size-first build. */
 #if DH_FAST_PATHS
-DH_SPEED_INLINE void dh_apply3(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, int n)
+DH_SPEED_INLINE void mat4_apply3(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, int n)
 {
     float x, y, z, rx, ry, rz;
     DH_ASSERT(T != NULL && u != NULL && v != NULL);
@@ -555,11 +555,11 @@ DH_SPEED_INLINE void dh_apply3(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_ve
     v->z = rz;
 }
 #else
-DH_SPEED_INLINE void dh_apply3(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, int n)
+DH_SPEED_INLINE void mat4_apply3(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v, int n)
 {
     float o[4];
     DH_ASSERT(T != NULL && u != NULL && v != NULL);
-    dh_lin3(T, u->x, u->y, u->z, o, n);
+    mat4_lin3(T, u->x, u->y, u->z, o, n);
     v->x = o[0];
     v->y = o[1];
     v->z = o[2];
@@ -568,12 +568,12 @@ DH_SPEED_INLINE void dh_apply3(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_ve
 
 void dh_mat4_apply_point_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
 {
-    dh_apply3(T, u, v, 4);
+    mat4_apply3(T, u, v, 4);
 }
 
 void dh_mat4_apply_dir_f32(const dh_mat4_f32 *T, const dh_vec3_f32 *u, dh_vec3_f32 *v)
 {
-    dh_apply3(T, u, v, 3);
+    mat4_apply3(T, u, v, 3);
 }
 
 #if DH_FAST_PATHS
@@ -583,7 +583,7 @@ DH_INLINE float mat4_row4(const dh_mat4_f32 *T, int r, float x, float y, float z
     return T->m[0][r] * x + T->m[1][r] * y + T->m[2][r] * z + T->m[3][r] * w;
 }
 
-/* Twin bodies: the rows written out (default build) or dh_lin (size-first
+/* Twin bodies: the rows written out (default build) or mat4_lin (size-first
  * build); u is read first, so u and v may be the same object. */
 void dh_mat4_apply_vec4_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec4_f32 *v)
 {
@@ -607,7 +607,7 @@ void dh_mat4_apply_vec4_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec4_
     in[1] = u->y;
     in[2] = u->z;
     in[3] = u->w;
-    dh_lin(T, in, o, 4);
+    mat4_lin(T, in, o, 4);
     v->x = o[0];
     v->y = o[1];
     v->z = o[2];
@@ -628,21 +628,16 @@ dh_status dh_mat4_check_finite_f32(const dh_mat4_f32 *T)
     return dh_feq_f32(z, z) ? DH_OK : DH_ERR_NAN;
 }
 
-/*
- * Twin bodies. The default build answers a finite h with w != 0 and finite
- * quotients directly; the general path (mat4_point_h_general) recomputes
- * the same h and classifies everything else. The size-first build is the
- * general path alone, written in its body (the same lines as
- * mat4_point_h_general: a separate call there costs flash in that build).
- */
-#if DH_FAST_PATHS
 /* The general path for in = u: h = T in (h: the caller's scratch),
- * classified (DH_ERR_OVERFLOW, DH_ERR_NAN, DH_ERR_DOMAIN) and divided. */
+ * classified (DH_ERR_OVERFLOW, DH_ERR_NAN, DH_ERR_DOMAIN) and divided.
+ * The default build answers a finite h with w != 0 and finite quotients
+ * before it; the size-first build is this path alone (inlined: a separate
+ * call there costs flash). */
 DH_INLINE dh_status mat4_point_h_general(const dh_mat4_f32 *T, const float *in, float *h, dh_vec3_f32 *v)
 {
     float z = 0.0f, zi = 0.0f;
     int i;
-    dh_lin(T, in, h, 4);
+    mat4_lin(T, in, h, 4);
     for (i = 0; i < 4; i++) {
         z += h[i] * 0.0f;
         zi += in[i] * 0.0f;
@@ -660,11 +655,12 @@ DH_INLINE dh_status mat4_point_h_general(const dh_mat4_f32 *T, const float *in, 
     return DH_OK;
 }
 
+#if DH_FAST_PATHS
 dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec3_f32 *v)
 {
     float in[4], h[4];
     DH_ASSERT(T != NULL && u != NULL && v != NULL);
-    dh_load4(in, u->x, u->y, u->z, u->w);
+    mat4_load4(in, u->x, u->y, u->z, u->w);
     h[0] = mat4_row4(T, 0, in[0], in[1], in[2], in[3]);
     h[1] = mat4_row4(T, 1, in[0], in[1], in[2], in[3]);
     h[2] = mat4_row4(T, 2, in[0], in[1], in[2], in[3]);
@@ -684,26 +680,10 @@ dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, 
 #else
 dh_status dh_mat4_apply_point_h_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec3_f32 *v)
 {
-    float in[4], h[4], z = 0.0f, zi = 0.0f;
-    int i;
+    float in[4], h[4];
     DH_ASSERT(T != NULL && u != NULL && v != NULL);
-    dh_load4(in, u->x, u->y, u->z, u->w);
-    dh_lin(T, in, h, 4);
-    for (i = 0; i < 4; i++) {
-        z += h[i] * 0.0f;
-        zi += in[i] * 0.0f;
-    }
-    if (!dh_feq_f32(z, z)) return (dh_mat4_check_finite_f32(T) == DH_OK && dh_feq_f32(zi, zi)) ? DH_ERR_OVERFLOW : DH_ERR_NAN;
-    if (dh_feq_f32(h[3], 0.0f)) return DH_ERR_DOMAIN;
-    for (i = 0; i < 3; i++) {
-        h[i] = h[i] / h[3] + 0.0f;
-        z += h[i] * 0.0f;
-    }
-    if (!dh_feq_f32(z, z)) return DH_ERR_OVERFLOW;
-    v->x = h[0];
-    v->y = h[1];
-    v->z = h[2];
-    return DH_OK;
+    mat4_load4(in, u->x, u->y, u->z, u->w);
+    return mat4_point_h_general(T, in, h, v);
 }
 #endif
 
@@ -714,7 +694,7 @@ void dh_plane_mul_f32(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv, dh_plane_f
 {
     float p[4];
     DH_ASSERT(P != NULL && Tinv != NULL && Q != NULL);
-    dh_load4(p, P->a, P->b, P->c, P->d);
+    mat4_load4(p, P->a, P->b, P->c, P->d);
     Q->a = p[0] * Tinv->m[0][0] + p[1] * Tinv->m[0][1] + p[2] * Tinv->m[0][2] + p[3] * Tinv->m[0][3];
     Q->b = p[0] * Tinv->m[1][0] + p[1] * Tinv->m[1][1] + p[2] * Tinv->m[1][2] + p[3] * Tinv->m[1][3];
     Q->c = p[0] * Tinv->m[2][0] + p[1] * Tinv->m[2][1] + p[2] * Tinv->m[2][2] + p[3] * Tinv->m[2][3];
@@ -726,7 +706,7 @@ void dh_plane_mul_f32(const dh_plane_f32 *P, const dh_mat4_f32 *Tinv, dh_plane_f
     float p[4], q[4];
     int j, k;
     DH_ASSERT(P != NULL && Tinv != NULL && Q != NULL);
-    dh_load4(p, P->a, P->b, P->c, P->d);
+    mat4_load4(p, P->a, P->b, P->c, P->d);
     for (j = 0; j < 4; j++) {
         float acc = p[0] * Tinv->m[j][0];
         for (k = 1; k < 4; k++) acc += p[k] * Tinv->m[j][k];

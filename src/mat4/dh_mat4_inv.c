@@ -11,9 +11,9 @@
  * yields T^-1 with no transposition. Norms of M are the 1-norms of T, and
  * the residual X M - I is the right residual T X - I.
  *
- * General inverse (dh_inv_certified, compiled in every build). M is T, or
+ * General inverse (inv_certified, compiled in every build). M is T, or
  * blockdiag(R, 1) for T = [R p; 0 w] with w a power of two (affine, or
- * 2^k times affine: T^-1 = [R^-1, -R^-1 p / w; 0, 1 / w]). dh_scan scales
+ * 2^k times affine: T^-1 = [R^-1, -R^-1 p / w; 0, 1 / w]). inv_scan scales
  * M by the power of two s0 that brings max|M_ij| into [1, 2): A0 = s0 M is
  * the same float matrix for T and every exact 2^k T (each element is the
  * rounding of the same real number), and every decision below is taken on
@@ -101,7 +101,7 @@
 /* ---------------------------------------------------------------------- */
 
 /*
- * Affine completion of dh_inv_certified: with R^-1 (row view) in rows
+ * Affine completion of inv_certified: with R^-1 (row view) in rows
  * 0..2, columns 0..2 of X and the corner w of T (a power of two), writes
  * the translation and bottom row of T^-1 as those of the affine
  * T0 = [R, p r; 0 0 0 1], r = 1 / w, times diag(1, 1, 1, r):
@@ -109,7 +109,7 @@
  * For T = 2^k T0 (T0 affine) p r is T0's p, exactly. Returns NaN iff a
  * translation entry is NaN or Inf.
  */
-static DH_NOINLINE float dh_affine_t(dh_mat4_f32 *X, const dh_mat4_f32 *T)
+static DH_NOINLINE float inv_affine_t(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
     const float r = 1.0f / T->m[3][3];
     const float px = T->m[3][0] * r, py = T->m[3][1] * r, pz = T->m[3][2] * r;
@@ -168,7 +168,7 @@ void dh_mat4_inv_rigid_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 
 /* bits of w if the bottom row is exactly 0 0 0 w (+-0 on the bits: the
  * sign shifted out), else 0 */
-static DH_NOINLINE uint32_t dh_bottom_w(const dh_mat4_f32 *T)
+static DH_NOINLINE uint32_t inv_bottom_w(const dh_mat4_f32 *T)
 {
     uint32_t b, z = 0u;
     int i;
@@ -181,13 +181,13 @@ static DH_NOINLINE uint32_t dh_bottom_w(const dh_mat4_f32 *T)
 }
 
 /* bottom row exactly 0 0 0 1 */
-DH_INLINE int dh_is_affine(const dh_mat4_f32 *T) { return dh_bottom_w(T) == 0x3F800000u; }
+DH_INLINE int inv_is_affine(const dh_mat4_f32 *T) { return inv_bottom_w(T) == 0x3F800000u; }
 
 /* bottom row exactly 0 0 0 w, w a normal power of two: the affine type of
- * dh_inv_certified (out of line: no extra value in its frame) */
-static DH_NOINLINE DH_COLD int dh_affine_type(const dh_mat4_f32 *T)
+ * inv_certified (out of line: no extra value in its frame) */
+static DH_NOINLINE DH_COLD int inv_affine_type(const dh_mat4_f32 *T)
 {
-    const uint32_t b = dh_bottom_w(T);
+    const uint32_t b = inv_bottom_w(T);
     return (b & 0x007FFFFFu) == 0u && (b & 0x7F800000u) != 0u;
 }
 
@@ -195,7 +195,7 @@ static DH_NOINLINE DH_COLD int dh_affine_type(const dh_mat4_f32 *T)
  * Element (i, j) of the row-view matrix the general path works on: s M
  * (aff == 0), or blockdiag(s R, 1) for an affine T (aff != 0).
  */
-DH_INLINE float dh_at(const dh_mat4_f32 *M, int i, int j, float s, int aff)
+DH_INLINE float inv_at(const dh_mat4_f32 *M, int i, int j, float s, int aff)
 {
     if (!aff || (i < 3 && j < 3)) return M->m[i][j] * s;
     return (i == j) ? 1.0f : 0.0f;
@@ -203,26 +203,26 @@ DH_INLINE float dh_at(const dh_mat4_f32 *M, int i, int j, float s, int aff)
 
 /* element (i, j) of the row view weighted like D^-1 . D with w in place of
  * sg: column 3 of rows 0..2 times w, columns 0..2 of row 3 over w */
-static DH_NOINLINE DH_COLD float dh_wt(float q, int i, int j, float w)
+static DH_NOINLINE DH_COLD float inv_wt(float q, int i, int j, float w)
 {
     if (i < 3) return (j < 3) ? q : q * w;
     return (j < 3) ? q / w : q;
 }
 
 /*
- * The balanced norms (max row sum, weights dh_wt(., sg)) of the general
+ * The balanced norms (max row sum, weights inv_wt(., sg)) of the general
  * path in one loop; NaN if an element is NaN or Inf (t: a max alone would
  * drop a NaN row):
- *  - X != NULL: the residual ||X A - I||, A = dh_at(M, ., ., s, aff);
+ *  - X != NULL: the residual ||X A - I||, A = inv_at(M, ., ., s, aff);
  *  - X == NULL: ||A|| (0 + 1 * A_ij), and W != NULL receives
- *    dh_wt(A_ij, ., ., g): with M == W, s == 1, aff == 0 and g a normal
+ *    inv_wt(A_ij, ., ., g): with M == W, s == 1, aff == 0 and g a normal
  *    power of two this (re)balances W in place (q / g == q * (1 / g));
  *  - aff < 0 (W == M, g = 1 / s): the unscaling W = s M (+ 0 maps -0 to
  *    +0), returning the norm of what it lost, (s M) / s - M.
  * A zero stored as +0 instead of -0 changes no later sum, comparison or
  * unscaled value.
  */
-static DH_NOINLINE DH_COLD float dh_bnorm(const dh_mat4_f32 *X, const dh_mat4_f32 *M, float s, float sg, int aff,
+static DH_NOINLINE DH_COLD float inv_bnorm(const dh_mat4_f32 *X, const dh_mat4_f32 *M, float s, float sg, int aff,
                                           dh_mat4_f32 *W, float g)
 {
     float res = 0.0f, t = 0.0f;
@@ -241,13 +241,13 @@ static DH_NOINLINE DH_COLD float dh_bnorm(const dh_mat4_f32 *X, const dh_mat4_f3
                     float x = 1.0f;
                     if (X != NULL) x = X->m[i][k];
                     else if (k != i) continue;
-                    q += x * dh_at(M, k, j, s, aff);
+                    q += x * inv_at(M, k, j, s, aff);
                 }
                 if (j == i && X != NULL) q -= 1.0f;
-                q = dh_wt(q, i, j, g);
+                q = inv_wt(q, i, j, g);
                 if (W != NULL) W->m[i][j] = q;
             }
-            rs += dh_wt(fabsf(q), i, j, sg);
+            rs += inv_wt(fabsf(q), i, j, sg);
         }
         t += rs;
         res = (rs > res) ? rs : res;
@@ -258,7 +258,7 @@ static DH_NOINLINE DH_COLD float dh_bnorm(const dh_mat4_f32 *X, const dh_mat4_f3
 /* the four elements of X with the indices u + n st, n = 0..3, exchanged
  * with those at v + n st (element index 4 i + j for X->m[i][j]): rows
  * u / 4, v / 4 with st = 1, columns u, v with st = 4; u == v is a no-op */
-static DH_NOINLINE DH_COLD void dh_swap4(dh_mat4_f32 *X, unsigned u, unsigned v, unsigned st)
+static DH_NOINLINE DH_COLD void inv_swap4(dh_mat4_f32 *X, unsigned u, unsigned v, unsigned st)
 {
     unsigned a = u, b = v, n;
     for (n = 0u; n < 4u; n++) {
@@ -273,7 +273,7 @@ static DH_NOINLINE DH_COLD void dh_swap4(dh_mat4_f32 *X, unsigned u, unsigned v,
 /* One Gauss-Jordan step after the interchange: row k divided by its pivot
  * (as a multiplication by the reciprocal), column k eliminated from the
  * other rows */
-DH_INLINE void dh_gj_eliminate(dh_mat4_f32 *X, int k)
+DH_INLINE void inv_gj_eliminate(dh_mat4_f32 *X, int k)
 {
     float *rk = X->m[k];
     const float r = 1.0f / rk[k];
@@ -293,7 +293,7 @@ DH_INLINE void dh_gj_eliminate(dh_mat4_f32 *X, int k)
 /* In-place Gauss-Jordan with partial pivoting on the rows of X (the
  * columns of T): X becomes X^-1. Returns 0 on an exactly zero pivot (X
  * then undefined). */
-static DH_NOINLINE DH_COLD int dh_inv_gauss_jordan(dh_mat4_f32 *X)
+static DH_NOINLINE DH_COLD int inv_gauss_jordan(dh_mat4_f32 *X)
 {
     unsigned perm = 0u; /* pivot row of step k in bits 6 - 2k, 7 - 2k */
     int i, k;
@@ -304,12 +304,12 @@ static DH_NOINLINE DH_COLD int dh_inv_gauss_jordan(dh_mat4_f32 *X)
         }
         if (dh_feq_f32(X->m[p][k], 0.0f)) return 0;
         perm = perm * 4u + (unsigned)p;
-        dh_swap4(X, 4u * (unsigned)k, 4u * (unsigned)p, 1u);
-        dh_gj_eliminate(X, k);
+        inv_swap4(X, 4u * (unsigned)k, 4u * (unsigned)p, 1u);
+        inv_gj_eliminate(X, k);
     }
     /* undo the interchanges on the columns, last first */
     for (k = 3; k >= 0; k--) {
-        dh_swap4(X, (unsigned)k, perm & 3u, 4u);
+        inv_swap4(X, (unsigned)k, perm & 3u, 4u);
         perm >>= 2;
     }
     return 1;
@@ -327,7 +327,7 @@ static DH_NOINLINE DH_COLD int dh_inv_gauss_jordan(dh_mat4_f32 *X)
  * ([2, 4) for the top binade): A0 and s T are the same floats for T and
  * any exact 2^k T, so every later decision is too (unless s is clamped).
  */
-static DH_NOINLINE DH_COLD float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_f32 *X)
+static DH_NOINLINE DH_COLD float inv_scan(const dh_mat4_f32 *T, int aff, dh_mat4_f32 *X)
 {
     float s, cp = 0.0f, rq = 0.0f, m3 = 0.0f, sg = 1.0f, w;
     uint32_t u, ur = 0u, ub = 0u, e, b;
@@ -410,31 +410,31 @@ static DH_NOINLINE DH_COLD float dh_scan(const dh_mat4_f32 *T, int aff, dh_mat4_
 
 /* The general path (see the top of the file) into the scratch X (must not
  * alias T; undefined on error). */
-static DH_NOINLINE DH_COLD dh_status dh_inv_certified(const dh_mat4_f32 *T, dh_mat4_f32 *X)
+static DH_NOINLINE DH_COLD dh_status inv_certified(const dh_mat4_f32 *T, dh_mat4_f32 *X)
 {
-    const int aff = dh_affine_type(T);
-    const float s = dh_scan(T, aff, X), sg = X->m[0][0];
+    const int aff = inv_affine_type(T);
+    const float s = inv_scan(T, aff, X), sg = X->m[0][0];
     float na, z = 0.0f, f = sg * 1.41421356f;
     uint32_t b;
     if (!dh_feq_f32(s, s)) return DH_ERR_NAN;
     if (dh_feq_f32(s, 0.0f)) return DH_ERR_SINGULAR;
     /* X = A and its balanced norm */
-    na = dh_bnorm(NULL, T, s, sg, aff, X, 1.0f);
+    na = inv_bnorm(NULL, T, s, sg, aff, X, 1.0f);
     /* f: the power of two nearest to sg (within sqrt(2)), exact for sg in
      * [2^-60, 2^60]; eliminate on the balanced X (partial pivoting then
      * sees the magnitudes the balanced norms measure), unbalance */
     memcpy(&b, &f, sizeof b);
     b &= 0x7F800000u;
     memcpy(&f, &b, sizeof f);
-    (void)dh_bnorm(NULL, X, 1.0f, sg, 0, X, f);
-    if (!dh_inv_gauss_jordan(X)) return DH_ERR_SINGULAR;
-    if (!(na * dh_bnorm(NULL, X, 1.0f, sg, 0, X, 1.0f / f) < DH_MAT4_COND_MAX)) return DH_ERR_SINGULAR;
-    if (!(dh_bnorm(X, T, s, sg, dh_affine_type(T), NULL, 1.0f) <= 0.5f)) return DH_ERR_SINGULAR;
-    if (!(dh_bnorm(NULL, X, s, sg, -1, X, 1.0f / s) * na <= 0.0625f)) return DH_ERR_OVERFLOW;
+    (void)inv_bnorm(NULL, X, 1.0f, sg, 0, X, f);
+    if (!inv_gauss_jordan(X)) return DH_ERR_SINGULAR;
+    if (!(na * inv_bnorm(NULL, X, 1.0f, sg, 0, X, 1.0f / f) < DH_MAT4_COND_MAX)) return DH_ERR_SINGULAR;
+    if (!(inv_bnorm(X, T, s, sg, inv_affine_type(T), NULL, 1.0f) <= 0.5f)) return DH_ERR_SINGULAR;
+    if (!(inv_bnorm(NULL, X, s, sg, -1, X, 1.0f / s) * na <= 0.0625f)) return DH_ERR_OVERFLOW;
     /* X and T are finite here: the products commute bitwise. (The affine
      * type is asked again rather than kept across the calls: one value
      * less in this frame keeps the M0+ stack within its budget.) */
-    if (dh_affine_type(T)) z = dh_affine_t(X, T);
+    if (inv_affine_type(T)) z = inv_affine_t(X, T);
     if (!dh_feq_f32(z, z)) return DH_ERR_OVERFLOW;
     return DH_OK;
 }
@@ -459,7 +459,7 @@ static DH_NOINLINE DH_COLD dh_status dh_inv_certified(const dh_mat4_f32 *T, dh_m
  * R^-1 = s (s R)^-1. Writes out and returns 1, or returns 0 (out
  * untouched; out may alias T).
  */
-static DH_NOINLINE int dh_inv_affine(dh_mat4_f32 *out, const dh_mat4_f32 *T, float s)
+static DH_NOINLINE int inv_affine(dh_mat4_f32 *out, const dh_mat4_f32 *T, float s)
 {
     const float nx = T->m[0][0] * s, ny = T->m[0][1] * s, nz = T->m[0][2] * s;
     const float ox = T->m[1][0] * s, oy = T->m[1][1] * s, oz = T->m[1][2] * s;
@@ -490,10 +490,10 @@ static DH_NOINLINE int dh_inv_affine(dh_mat4_f32 *out, const dh_mat4_f32 *T, flo
     return 1;
 }
 
-/* dh_inv_affine with the power of two s that brings max|R_ij| into
+/* inv_affine with the power of two s that brings max|R_ij| into
  * [1, 2), after s = 1 failed (the decision is then invariant under any
  * scaling of R); 0 also for a zero, denormal or non-finite R */
-static DH_NOINLINE int dh_inv_affine_scaled(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+static DH_NOINLINE int inv_affine_scaled(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
     float mx = 0.0f, s;
     uint32_t e;
@@ -510,7 +510,7 @@ static DH_NOINLINE int dh_inv_affine_scaled(dh_mat4_f32 *out, const dh_mat4_f32 
     e = (e >= 254u) ? 1u : 254u - e;    /* exponent of 2^(127 - e) */
     e <<= 23;
     memcpy(&s, &e, sizeof s);
-    return dh_inv_affine(out, T, s);
+    return inv_affine(out, T, s);
 }
 
 /*
@@ -519,7 +519,7 @@ static DH_NOINLINE int dh_inv_affine_scaled(dh_mat4_f32 *out, const dh_mat4_f32 
  * Phase 1: the test, and columns 0, 1 of the inverse from the 2x2 minors
  * of rows 2, 3; returns 1 / det, or 0 if the test fails.
  */
-static DH_NOINLINE float dh_proj_phase1(dh_mat4_f32 *X, const dh_mat4_f32 *M)
+static DH_NOINLINE float inv_proj_phase1(dh_mat4_f32 *X, const dh_mat4_f32 *M)
 {
     const float a00 = M->m[0][0], a01 = M->m[0][1], a02 = M->m[0][2], a03 = M->m[0][3];
     const float a10 = M->m[1][0], a11 = M->m[1][1], a12 = M->m[1][2], a13 = M->m[1][3];
@@ -559,7 +559,7 @@ static DH_NOINLINE float dh_proj_phase1(dh_mat4_f32 *X, const dh_mat4_f32 *M)
 }
 
 /* phase 2: columns 2, 3 of the inverse from the 2x2 minors of rows 0, 1 */
-static DH_NOINLINE void dh_proj_phase2(dh_mat4_f32 *X, const dh_mat4_f32 *M, float f)
+static DH_NOINLINE void inv_proj_phase2(dh_mat4_f32 *X, const dh_mat4_f32 *M, float f)
 {
     const float a00 = M->m[0][0], a01 = M->m[0][1], a02 = M->m[0][2], a03 = M->m[0][3];
     const float a10 = M->m[1][0], a11 = M->m[1][1], a12 = M->m[1][2], a13 = M->m[1][3];
@@ -578,11 +578,11 @@ static DH_NOINLINE void dh_proj_phase2(dh_mat4_f32 *X, const dh_mat4_f32 *M, flo
 }
 
 /* X (must not alias M) = M^-1 and 1, or 0 (X partly written) */
-static DH_NOINLINE int dh_inv_proj(dh_mat4_f32 *X, const dh_mat4_f32 *M)
+static DH_NOINLINE int inv_proj(dh_mat4_f32 *X, const dh_mat4_f32 *M)
 {
-    const float f = dh_proj_phase1(X, M);
+    const float f = inv_proj_phase1(X, M);
     if (dh_feq_f32(f, 0.0f)) return 0;
-    dh_proj_phase2(X, M, f);
+    inv_proj_phase2(X, M, f);
     return 1;
 }
 #endif
@@ -590,47 +590,47 @@ static DH_NOINLINE int dh_inv_proj(dh_mat4_f32 *X, const dh_mat4_f32 *M)
 /*
  * General inverse into the scratch X (must not alias T; undefined on
  * error): the fast path for the input's shape (default build), else the
- * general path (after dh_inv_general's affine attempt only an affine T
+ * general path (after inv_general's affine attempt only an affine T
  * that fails the fast test again gets here). The size-first build has the
  * general path only.
  */
 #if DH_FAST_PATHS
-DH_INLINE dh_status dh_inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
+DH_INLINE dh_status inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
-    if (dh_is_affine(T)) {
-        if (dh_inv_affine(X, T, 1.0f) || dh_inv_affine_scaled(X, T)) return DH_OK;
+    if (inv_is_affine(T)) {
+        if (inv_affine(X, T, 1.0f) || inv_affine_scaled(X, T)) return DH_OK;
     } else {
-        if (dh_inv_proj(X, T)) return DH_OK;
+        if (inv_proj(X, T)) return DH_OK;
     }
-    return dh_inv_certified(T, X);
+    return inv_certified(T, X);
 }
 #else
-DH_INLINE dh_status dh_inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
+DH_INLINE dh_status inv_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
-    return dh_inv_certified(T, X);
+    return inv_certified(T, X);
 }
 #endif
 
 /* The public general inverse (out untouched on error, out may alias T),
  * inlined into its two callers: no extra frame on the general path. The
  * default build tries the affine fast path straight into out first
- * (dh_inv_affine reads T first). */
+ * (inv_affine reads T first). */
 #if DH_FAST_PATHS
-DH_INLINE dh_status dh_inv_general(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+DH_INLINE dh_status inv_general(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
     dh_mat4_f32 X;
     dh_status st;
-    if (dh_is_affine(T) && (dh_inv_affine(out, T, 1.0f) || dh_inv_affine_scaled(out, T))) return DH_OK;
-    st = dh_inv_into(&X, T);
+    if (inv_is_affine(T) && (inv_affine(out, T, 1.0f) || inv_affine_scaled(out, T))) return DH_OK;
+    st = inv_into(&X, T);
     if (st != DH_OK) return st;
     *out = X;
     return DH_OK;
 }
 #else
-DH_INLINE dh_status dh_inv_general(dh_mat4_f32 *out, const dh_mat4_f32 *T)
+DH_INLINE dh_status inv_general(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 {
     dh_mat4_f32 X;
-    const dh_status st = dh_inv_into(&X, T);
+    const dh_status st = inv_into(&X, T);
     if (st != DH_OK) return st;
     *out = X;
     return DH_OK;
@@ -640,7 +640,7 @@ DH_INLINE dh_status dh_inv_general(dh_mat4_f32 *out, const dh_mat4_f32 *T)
 dh_status dh_mat4_inv_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 {
     DH_ASSERT(out != NULL && T != NULL);
-    return dh_inv_general(out, T);
+    return inv_general(out, T);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -687,7 +687,7 @@ dh_status dh_mat4_check_rigid_f32(const dh_mat4_f32 *T, float tol)
     DH_ASSERT(T != NULL);
     if (!(tol >= 0.0f)) return DH_ERR_ARG;
     if (dh_mat4_check_finite_f32(T) != DH_OK) return DH_ERR_NAN;
-    if (!dh_is_affine(T)) return DH_ERR_NOT_RIGID;
+    if (!inv_is_affine(T)) return DH_ERR_NOT_RIGID;
     return dh_mat4_check_rot_f32(T, tol);
 }
 
@@ -697,7 +697,7 @@ dh_status dh_mat4_check_rigid_f32(const dh_mat4_f32 *T, float tol)
  * rigid T with |p| near FLT_MAX then gets DH_ERR_OVERFLOW like
  * dh_mat4_inv_f32 instead of an Inf.
  */
-static DH_NOINLINE int dh_rigid_t_ok(const dh_mat4_f32 *T)
+static DH_NOINLINE int inv_rigid_t_ok(const dh_mat4_f32 *T)
 {
     float z = 0.0f;
     int j;
@@ -716,11 +716,11 @@ static DH_NOINLINE int dh_rigid_t_ok(const dh_mat4_f32 *T)
  * and DH_OK if T is rigid, DH_ERR_NAN, DH_ERR_OVERFLOW, or DH_ERR_NOT_RIGID
  * (X untouched: the general inverse decides).
  */
-static DH_FAST_NOINLINE dh_status dh_inv_rigid_chk(dh_mat4_f32 *X, const dh_mat4_f32 *T)
+static DH_FAST_NOINLINE dh_status inv_rigid_chk(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
     const dh_status st = dh_mat4_check_rigid_f32(T, DH_MAT4_RIGID_TOL);
     if (st != DH_OK) return st;
-    if (!dh_rigid_t_ok(T)) return DH_ERR_OVERFLOW;
+    if (!inv_rigid_t_ok(T)) return DH_ERR_OVERFLOW;
     dh_mat4_inv_rigid_f32(T, X);
     return DH_OK;
 }
@@ -729,10 +729,10 @@ dh_status dh_mat4_inv_auto_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 {
     dh_status st;
     DH_ASSERT(out != NULL && T != NULL);
-    st = dh_inv_rigid_chk(out, T);
+    st = inv_rigid_chk(out, T);
     if (st == DH_OK) return DH_OK;
     if (st != DH_ERR_NOT_RIGID) return st;
-    return dh_inv_general(out, T);
+    return inv_general(out, T);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -742,7 +742,7 @@ dh_status dh_mat4_inv_auto_f32(const dh_mat4_f32 *T, dh_mat4_f32 *out)
 /* 1 iff every coefficient of P is finite (x * 0 is NaN exactly for a NaN
  * or Inf x); out of line in the default build: no value stays live in the
  * frame of dh_mat4_apply_plane_f32 (M0+ stack guard) */
-static DH_FAST_NOINLINE int dh_plane_finite(const dh_plane_f32 *P)
+static DH_FAST_NOINLINE int inv_plane_finite(const dh_plane_f32 *P)
 {
     const float z = P->a * 0.0f + P->b * 0.0f + P->c * 0.0f + P->d * 0.0f;
     return dh_feq_f32(z, z);
@@ -752,16 +752,16 @@ static DH_FAST_NOINLINE int dh_plane_finite(const dh_plane_f32 *P)
  * applies (default build), else the general inverse, which alone gives the
  * same statuses (size-first build) */
 #if DH_FAST_PATHS
-DH_INLINE dh_status dh_inv_auto_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
+DH_INLINE dh_status inv_auto_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
-    const dh_status st = dh_inv_rigid_chk(X, T);
+    const dh_status st = inv_rigid_chk(X, T);
     if (st != DH_ERR_NOT_RIGID) return st;
-    return dh_inv_into(X, T);
+    return inv_into(X, T);
 }
 #else
-DH_INLINE dh_status dh_inv_auto_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
+DH_INLINE dh_status inv_auto_into(dh_mat4_f32 *X, const dh_mat4_f32 *T)
 {
-    return dh_inv_into(X, T);
+    return inv_into(X, T);
 }
 #endif
 
@@ -770,8 +770,8 @@ dh_status dh_mat4_apply_plane_f32(const dh_mat4_f32 *T, const dh_plane_f32 *P, d
     dh_mat4_f32 X; /* T^-1 */
     dh_status st;
     DH_ASSERT(T != NULL && P != NULL && Q != NULL);
-    if (!dh_plane_finite(P)) return DH_ERR_NAN;
-    st = dh_inv_auto_into(&X, T);
+    if (!inv_plane_finite(P)) return DH_ERR_NAN;
+    st = inv_auto_into(&X, T);
     if (st != DH_OK) return st;
     dh_plane_mul_f32(P, &X, Q);
     return DH_OK;

@@ -28,7 +28,7 @@
 
 /* Rows updated per joint step. With 4-lane float SIMD the bottom row rides
  * along in the fourth lane, so each column is one vector and -O2
- * vectorises the step; it is rewritten by set_bottom() anyway. Scalar FPUs
+ * vectorises the step; it is rewritten by fk_set_bottom() anyway. Scalar FPUs
  * (Cortex-M) update only the 3 rows that matter. */
 #if defined(__SSE__) || defined(__ARM_NEON) || defined(__ARM_NEON__) || defined(__ALTIVEC__)
 #define FK_ROWS 4
@@ -36,7 +36,7 @@
 #define FK_ROWS 3
 #endif
 
-/* 1 where the chain without frames runs in registers (chain_regs): the
+/* 1 where the chain without frames runs in registers (fk_chain_regs): the
  * float ABI must keep 12 FPU registers across the dh_sincos_f32 calls, as
  * AAPCS-VFP does (s16-s31 callee-saved: Cortex-M4F/M7). Not with soft float
  * (the locals spill, and the Cortex-M0+ frame passes 256 bytes) nor on
@@ -52,7 +52,7 @@
  * step leaves the bottom row 0 0 0 1 only up to the sign of zero). */
 #define FK_BOTTOM_EACH (!DH_FAST_PATHS)
 
-static void set_bottom(dh_mat4_f32 *T)
+static void fk_set_bottom(dh_mat4_f32 *T)
 {
     T->m[0][3] = 0.0f;
     T->m[1][3] = 0.0f;
@@ -61,12 +61,12 @@ static void set_bottom(dh_mat4_f32 *T)
 }
 
 #if !DH_FAST_PATHS
-/* The general step. The default build's fast step (fast_step, below)
+/* The general step. The default build's fast step (fk_fast_step, below)
  * computes the same bits for every input, so it has no fallback to it. */
 
 /* Columns i and i + 1 of T turned by (s, c) on the first FK_ROWS rows:
  * x' = c x + s y, y' = c y - s x. */
-DH_SPEED_INLINE void turn(dh_mat4_f32 *T, unsigned i, const float *sc)
+DH_SPEED_INLINE void fk_turn(dh_mat4_f32 *T, unsigned i, const float *sc)
 {
     const float s = sc[0], c = sc[1];
     int k;
@@ -81,20 +81,20 @@ DH_SPEED_INLINE void turn(dh_mat4_f32 *T, unsigned i, const float *sc)
  * cos theta, sin alpha, cos alpha, d, a). Standard: theta on columns
  * (0, 1), then p + d a + a_len n, then alpha on (1, 2); modified: alpha
  * first, p + a_len n + d a, then theta. */
-DH_SPEED_INLINE void step(dh_mat4_f32 *T, dh_convention conv, const float v[6])
+DH_SPEED_INLINE void fk_step(dh_mat4_f32 *T, dh_convention conv, const float v[6])
 {
     const unsigned mod = conv != DH_CONV_STANDARD;
     const float *x1 = T->m[2u - 2u * mod], *x2 = T->m[2u * mod];
     int k;
-    turn(T, mod, v + 2u * mod);
+    fk_turn(T, mod, v + 2u * mod);
     for (k = 0; k < FK_ROWS; k++) T->m[3][k] = (T->m[3][k] + v[4u + mod] * x1[k]) + v[5u - mod] * x2[k];
-    turn(T, 1u - mod, v + 2u - 2u * mod);
-    if (FK_BOTTOM_EACH) set_bottom(T);
+    fk_turn(T, 1u - mod, v + 2u - 2u * mod);
+    if (FK_BOTTOM_EACH) fk_set_bottom(T);
 }
 #endif
 
 /* v = (sin theta, cos theta, sin alpha, cos alpha, d, a) of joint j. */
-DH_INLINE void joint_sincos(const dh_joint *j, float theta, float d, float v[6])
+DH_INLINE void fk_joint_sincos(const dh_joint *j, float theta, float d, float v[6])
 {
     (void)dh_sincos_f32(theta, &v[0], &v[1]);
     v[2] = j->sa;
@@ -105,32 +105,32 @@ DH_INLINE void joint_sincos(const dh_joint *j, float theta, float d, float v[6])
 
 /* Checks joint j's value q: DH_ERR_NAN when q is not finite,
  * DH_ERR_OVERFLOW when q + offset overflows, else DH_OK and, when v is
- * not NULL, the joint values v (joint_sincos) at q. */
-DH_SPEED_INLINE dh_status joint_values(const dh_joint *j, float q, float *v)
+ * not NULL, the joint values v (fk_joint_sincos) at q. */
+DH_SPEED_INLINE dh_status fk_joint_values(const dh_joint *j, float q, float *v)
 {
     const int prism = j->type != DH_JOINT_REVOLUTE;
     const float x = q + (prism ? j->d : j->theta_deg); /* q added to the joint's variable */
     if (!dh_isfinite_f32(q)) return DH_ERR_NAN;
     if (!dh_isfinite_f32(x)) return DH_ERR_OVERFLOW;
-    if (v) joint_sincos(j, prism ? j->theta_deg : x, prism ? x : j->d, v);
+    if (v) fk_joint_sincos(j, prism ? j->theta_deg : x, prism ? x : j->d, v);
     return DH_OK;
 }
 
 #if DH_FAST_PATHS
-/* joint_values() of a q already checked, without the checks. */
-DH_INLINE void joint_checked(const dh_joint *j, float q, float v[6])
+/* fk_joint_values() of a q already checked, without the checks. */
+DH_INLINE void fk_joint_checked(const dh_joint *j, float q, float v[6])
 {
-    if (j->type == DH_JOINT_REVOLUTE) joint_sincos(j, q + j->theta_deg, j->d, v);
-    else joint_sincos(j, j->theta_deg, q + j->d, v);
+    if (j->type == DH_JOINT_REVOLUTE) fk_joint_sincos(j, q + j->theta_deg, j->d, v);
+    else fk_joint_sincos(j, j->theta_deg, q + j->d, v);
 }
 
-/* step() on the first FK_ROWS rows, one row at a time, each row read
+/* fk_step() on the first FK_ROWS rows, one row at a time, each row read
  * completely before it is written (zero-distance dependences only, so the
  * compiler may vectorise over rows); conv is a constant of each caller.
- * The same operations in the same order as step(); the bottom row is left
+ * The same operations in the same order as fk_step(); the bottom row is left
  * to the caller. sin/cos(alpha) and a come from j itself (the values that
  * v holds), so they load straight into registers. */
-DH_INLINE void fast_step(dh_mat4_f32 *T, dh_convention conv, const dh_joint *j, const float v[6])
+DH_INLINE void fk_fast_step(dh_mat4_f32 *T, dh_convention conv, const dh_joint *j, const float v[6])
 {
     const float st = v[0], ct = v[1], sa = j->sa, ca = j->ca, d = v[4], a = j->a;
     int k;
@@ -152,10 +152,10 @@ DH_INLINE void fast_step(dh_mat4_f32 *T, dh_convention conv, const dh_joint *j, 
     }
 }
 
-/* The link matrix written out (what step() gives on the identity, with
+/* The link matrix written out (what fk_step() gives on the identity, with
  * the zeros of the definitions' signs). Out of line: its live products
  * would otherwise sit in the caller's frame while dh_sincos_f32 runs. */
-static DH_NOINLINE void link_direct(dh_mat4_f32 *A, unsigned mod, const float v[6])
+static DH_NOINLINE void fk_link_direct(dh_mat4_f32 *A, unsigned mod, const float v[6])
 {
     const float st = v[0], ct = v[1], sa = v[2], ca = v[3], d = v[4], a = v[5];
     if (mod == 0u) {
@@ -169,13 +169,13 @@ static DH_NOINLINE void link_direct(dh_mat4_f32 *A, unsigned mod, const float v[
         A->m[2][0] = 0.0f;     A->m[2][1] = -sa;      A->m[2][2] = ca;
         A->m[3][0] = a;        A->m[3][1] = -sa * d;  A->m[3][2] = ca * d;
     }
-    set_bottom(A);
+    fk_set_bottom(A);
 }
 
-/* fast_step() on one row (n, o, a, p) of a frame held in the caller's
+/* fk_fast_step() on one row (n, o, a, p) of a frame held in the caller's
  * locals, standard DH (same operations in the same order); joint values
  * st, ct, sa, ca, d and the length len */
-DH_INLINE void fk_f32_row_std(float *n, float *o, float *a, float *p, float st, float ct, float sa, float ca,
+DH_INLINE void fk_row_std(float *n, float *o, float *a, float *p, float st, float ct, float sa, float ca,
                               float d, float len)
 {
     const float n1 = ct * *n + st * *o, u = ct * *o - st * *n;
@@ -186,7 +186,7 @@ DH_INLINE void fk_f32_row_std(float *n, float *o, float *a, float *p, float st, 
 }
 
 /* the same for modified DH */
-DH_INLINE void fk_f32_row_mod(float *n, float *o, float *a, float *p, float st, float ct, float sa, float ca,
+DH_INLINE void fk_row_mod(float *n, float *o, float *a, float *p, float st, float ct, float sa, float ca,
                               float d, float len)
 {
     const float o1 = ca * *o + sa * *a, a1 = ca * *a - sa * *o;
@@ -200,35 +200,35 @@ DH_INLINE void fk_f32_row_mod(float *n, float *o, float *a, float *p, float st, 
 }
 
 /*
- * chain() into T alone (no frames), with the frame in locals: the 12
+ * fk_chain_from() into T alone (no frames), with the frame in locals: the 12
  * entries stay in registers across the joints and the dh_sincos_f32 calls
  * (callee-saved FPU registers) instead of 12 loads and 12 stores per
  * joint. The joint values are not checked first: their finiteness is
  * summed on the way (x - x is 0 for a finite x, NaN otherwise) and T is
  * written only when every one passed; returns 0 then, else 1 with T
  * untouched (the caller's checks then give the status). src may not be T.
- * An identity base starts from the first link as link_direct() writes it
+ * An identity base starts from the first link as fk_link_direct() writes it
  * (the frames path's bits, signs of zeros included).
  */
-/* joint_checked() on a q not checked yet; returns 0 when q and q plus
+/* fk_joint_checked() on a q not checked yet; returns 0 when q and q plus
  * the offset are finite, else NaN (x - x). */
-DH_INLINE float joint_unchecked(const dh_joint *j, float q, float v[6])
+DH_INLINE float fk_joint_unchecked(const dh_joint *j, float q, float v[6])
 {
     const float x = q + (j->type == DH_JOINT_REVOLUTE ? j->theta_deg : j->d);
-    if (j->type == DH_JOINT_REVOLUTE) joint_sincos(j, x, j->d, v);
-    else joint_sincos(j, j->theta_deg, x, v);
+    if (j->type == DH_JOINT_REVOLUTE) fk_joint_sincos(j, x, j->d, v);
+    else fk_joint_sincos(j, j->theta_deg, x, v);
     return (q - q) + (x - x);
 }
 
-DH_INLINE int chain_regs(const dh_robot *r, const float *q, dh_mat4_f32 *T, const dh_mat4_f32 *src,
+DH_INLINE int fk_chain_regs(const dh_robot *r, const float *q, dh_mat4_f32 *T, const dh_mat4_f32 *src,
                          dh_convention conv)
 {
     float n0, n1, n2, o0, o1, o2, a0, a1, a2, p0, p1, p2, z = 0.0f;
     uint32_t i = 0u;
     if (r->flags & DH_ROBOT_BASE_ID_F32) {
-        /* identity base: the first link as link_direct() writes it */
+        /* identity base: the first link as fk_link_direct() writes it */
         float v[6];
-        z = joint_unchecked(&r->joint[0], q[0], v);
+        z = fk_joint_unchecked(&r->joint[0], q[0], v);
         {
             const float st = v[0], ct = v[1], sa = v[2], ca = v[3], d = v[4], a = v[5];
             if (conv == DH_CONV_STANDARD) {
@@ -253,17 +253,17 @@ DH_INLINE int chain_regs(const dh_robot *r, const float *q, dh_mat4_f32 *T, cons
     for (; i < r->n; i++) {
         float v[6];
         const dh_joint *j = &r->joint[i];
-        z += joint_unchecked(j, q[i], v);
+        z += fk_joint_unchecked(j, q[i], v);
         {
             const float st = v[0], ct = v[1], sa = j->sa, ca = j->ca, d = v[4], a = j->a;
             if (conv == DH_CONV_STANDARD) {
-                fk_f32_row_std(&n0, &o0, &a0, &p0, st, ct, sa, ca, d, a);
-                fk_f32_row_std(&n1, &o1, &a1, &p1, st, ct, sa, ca, d, a);
-                fk_f32_row_std(&n2, &o2, &a2, &p2, st, ct, sa, ca, d, a);
+                fk_row_std(&n0, &o0, &a0, &p0, st, ct, sa, ca, d, a);
+                fk_row_std(&n1, &o1, &a1, &p1, st, ct, sa, ca, d, a);
+                fk_row_std(&n2, &o2, &a2, &p2, st, ct, sa, ca, d, a);
             } else {
-                fk_f32_row_mod(&n0, &o0, &a0, &p0, st, ct, sa, ca, d, a);
-                fk_f32_row_mod(&n1, &o1, &a1, &p1, st, ct, sa, ca, d, a);
-                fk_f32_row_mod(&n2, &o2, &a2, &p2, st, ct, sa, ca, d, a);
+                fk_row_mod(&n0, &o0, &a0, &p0, st, ct, sa, ca, d, a);
+                fk_row_mod(&n1, &o1, &a1, &p1, st, ct, sa, ca, d, a);
+                fk_row_mod(&n2, &o2, &a2, &p2, st, ct, sa, ca, d, a);
             }
         }
     }
@@ -277,19 +277,19 @@ DH_INLINE int chain_regs(const dh_robot *r, const float *q, dh_mat4_f32 *T, cons
 #endif
 
 /* dst = src unless they are the same frame. */
-DH_SPEED_INLINE void copy(dh_mat4_f32 *dst, const dh_mat4_f32 *src)
+DH_SPEED_INLINE void fk_copy(dh_mat4_f32 *dst, const dh_mat4_f32 *src)
 {
     if (dst != src) *dst = *src;
 }
 
-/* Rows summed by frame_finite(): the bottom row is 0 0 0 1 there, so 3 and
+/* Rows summed by fk_frame_finite(): the bottom row is 0 0 0 1 there, so 3 and
  * 4 give the same status; 4 is the shorter loop, 3 the faster. */
 #define FK_TEST_ROWS (DH_FAST_PATHS ? 3 : 4)
 
 /* DH_OK when the 3x4 part of T is finite (its bottom row is 0 0 0 1), else
  * DH_ERR_OVERFLOW: x - x is 0 for a finite x and NaN otherwise, and a NaN
  * stays in the sums (one branch instead of twelve). */
-static DH_SIZE_NOINLINE dh_status frame_finite(const dh_mat4_f32 *T)
+static DH_SIZE_NOINLINE dh_status fk_frame_finite(const dh_mat4_f32 *T)
 {
     float z = 0.0f;
     int c, k;
@@ -299,19 +299,19 @@ static DH_SIZE_NOINLINE dh_status frame_finite(const dh_mat4_f32 *T)
     return dh_feq_f32(z, 0.0f) ? DH_OK : DH_ERR_OVERFLOW;
 }
 
-/* The link A from the joint values v of robot r: written out (link_direct)
- * in the default build, step() on the identity in the size-first build (the
+/* The link A from the joint values v of robot r: written out (fk_link_direct)
+ * in the default build, fk_step() on the identity in the size-first build (the
  * same nonzero entries; a zero entry may have the other sign). */
 #if DH_FAST_PATHS
-DH_INLINE void fk_f32_link(dh_mat4_f32 *A, const dh_robot *r, const float v[6])
+DH_INLINE void fk_link(dh_mat4_f32 *A, const dh_robot *r, const float v[6])
 {
-    link_direct(A, r->conv != DH_CONV_STANDARD, v);
+    fk_link_direct(A, r->conv != DH_CONV_STANDARD, v);
 }
 #else
-DH_INLINE void fk_f32_link(dh_mat4_f32 *A, const dh_robot *r, const float v[6])
+DH_INLINE void fk_link(dh_mat4_f32 *A, const dh_robot *r, const float v[6])
 {
     dh_mat4_identity_f32(A);
-    step(A, r->conv, v);
+    fk_step(A, r->conv, v);
 }
 #endif
 
@@ -323,32 +323,32 @@ dh_status dh_link_f32(const dh_robot *r, uint32_t i, float q, dh_mat4_f32 *A)
     DH_ASSERT(A != NULL);
     if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_UNAVAILABLE;
-    st = joint_values(&r->joint[i], q, v);
-    if (st == DH_OK) fk_f32_link(A, r, v);
+    st = fk_joint_values(&r->joint[i], q, v);
+    if (st == DH_OK) fk_link(A, r, v);
     return st;
 }
 
-/* Joint j at *q (already checked) applied to T in place: fast_step in the
+/* Joint j at *q (already checked) applied to T in place: fk_fast_step in the
  * default build, step in the size-first build. */
 #if DH_FAST_PATHS
-DH_INLINE void fk_f32_joint(dh_mat4_f32 *T, dh_convention conv, const dh_joint *j, const float *q)
+DH_INLINE void fk_joint(dh_mat4_f32 *T, dh_convention conv, const dh_joint *j, const float *q)
 {
     float v[6];
-    joint_checked(j, *q, v);
-    fast_step(T, conv, j, v);
+    fk_joint_checked(j, *q, v);
+    fk_fast_step(T, conv, j, v);
 }
 #else
-DH_INLINE void fk_f32_joint(dh_mat4_f32 *T, dh_convention conv, const dh_joint *j, const float *q)
+DH_INLINE void fk_joint(dh_mat4_f32 *T, dh_convention conv, const dh_joint *j, const float *q)
 {
     float v[6];
     /* DH_OK: q passed the check before the chain */
-    if (joint_values(j, *q, v) == DH_OK) step(T, conv, v);
+    if (fk_joint_values(j, *q, v) == DH_OK) fk_step(T, conv, v);
 }
 #endif
 
 /* Joints i.. of the chain from src into frames[i..] (or dst); q already
  * checked. */
-DH_INLINE void chain(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *dst0,
+DH_INLINE void fk_chain_from(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_mat4_f32 *dst0,
                   const dh_mat4_f32 *src0, uint32_t i0, dh_convention conv)
 {
     const dh_mat4_f32 *src = src0;
@@ -356,8 +356,8 @@ DH_INLINE void chain(const dh_robot *r, const float *q, dh_mat4_f32 *frames, dh_
     uint32_t i;
     for (i = i0; i < r->n; i++) {
         if (frames) dst = &frames[i];
-        copy(dst, src);
-        fk_f32_joint(dst, conv, &r->joint[i], &q[i]);
+        fk_copy(dst, src);
+        fk_joint(dst, conv, &r->joint[i], &q[i]);
         src = dst;
     }
 }
@@ -383,23 +383,23 @@ static DH_NOINLINE dh_status fk_chain(const dh_robot *r, const float *q, dh_mat4
     if (FK_REG_CHAIN && !frames) {
         /* one copy for both conventions (the test per joint is cheaper
          * than a second copy of the loop in flash) */
-        if (!chain_regs(r, q, T_end, src, r->conv)) return DH_OK;
+        if (!fk_chain_regs(r, q, T_end, src, r->conv)) return DH_OK;
     }
     for (i = 0u; i < r->n; i++) {
-        st = joint_values(&r->joint[i], q[i], NULL);
+        st = fk_joint_values(&r->joint[i], q[i], NULL);
         if (st != DH_OK) return st;
     }
     i = 0u;
     if (r->flags & DH_ROBOT_BASE_ID_F32) {
         float v[6];
         if (frames) dst = frames;
-        joint_checked(&r->joint[0], q[0], v);
-        link_direct(dst, r->conv != DH_CONV_STANDARD, v);
+        fk_joint_checked(&r->joint[0], q[0], v);
+        fk_link_direct(dst, r->conv != DH_CONV_STANDARD, v);
         src = dst;
         i = 1u;
     }
-    if (r->conv == DH_CONV_STANDARD) chain(r, q, frames, dst, src, i, DH_CONV_STANDARD);
-    else chain(r, q, frames, dst, src, i, DH_CONV_MODIFIED);
+    if (r->conv == DH_CONV_STANDARD) fk_chain_from(r, q, frames, dst, src, i, DH_CONV_STANDARD);
+    else fk_chain_from(r, q, frames, dst, src, i, DH_CONV_MODIFIED);
     return DH_OK;
 }
 #else
@@ -413,10 +413,10 @@ static DH_NOINLINE dh_status fk_chain(const dh_robot *r, const float *q, dh_mat4
     if (r->n == 0u || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_F32) == 0u) return DH_ERR_UNAVAILABLE;
     for (i = 0u; i < r->n; i++) {
-        st = joint_values(&r->joint[i], q[i], NULL);
+        st = fk_joint_values(&r->joint[i], q[i], NULL);
         if (st != DH_OK) return st;
     }
-    chain(r, q, frames, T_end, &r->base, 0u, r->conv);
+    fk_chain_from(r, q, frames, T_end, &r->base, 0u, r->conv);
     return DH_OK;
 }
 #endif
@@ -434,18 +434,18 @@ static DH_NOINLINE dh_status fk_all(const dh_robot *r, const float *q, dh_mat4_f
     if (st != DH_OK) return st;
     if (frames) last = &frames[r->n - 1u];
     if (!FK_BOTTOM_EACH && frames) {
-        for (i = 0u; i < r->n; i++) set_bottom(&frames[i]);
+        for (i = 0u; i < r->n; i++) fk_set_bottom(&frames[i]);
     }
     if (T_end) {
         if (r->flags & DH_ROBOT_TOOL_ID_F32) {
-            copy(T_end, last);
-            if (!FK_BOTTOM_EACH) set_bottom(T_end);
+            fk_copy(T_end, last);
+            if (!FK_BOTTOM_EACH) fk_set_bottom(T_end);
         } else {
             dh_mat4_mul_affine_f32(last, &r->tool, T_end);
         }
         last = T_end;
     }
-    return frame_finite(last);
+    return fk_frame_finite(last);
 }
 
 dh_status dh_fk_f32(const dh_robot *r, const float *q, dh_mat4_f32 *T)

@@ -10,7 +10,7 @@
  * summed and rounded ONCE (half up); the intermediate rounded entries are
  * reused as the float code reuses its intermediate floats.
  *
- * General step (step): any base, any lengths, any twist; every entry is
+ * General step (fkq_step): any base, any lengths, any twist; every entry is
  * range checked and saturates (DH_ERR_OVERFLOW). The exact twists (0, +-90,
  * 180 degrees) need no branch: with c, s in {0, +-2^30} every product is
  * exact, so each entry comes out as y, z, or a negation, and -INT32_MIN
@@ -27,7 +27,7 @@
  * dh_port_dot2r30_s16() (eight 16x16 MULS, no 64-bit arithmetic) on
  * ARMv6-M, with the sine/cosine/length factors split once per joint. The
  * first link of an identity base (and dh_link_q) is written out
- * (link_direct): its entries cannot saturate.
+ * (fkq_link_direct): its entries cannot saturate.
  *
  * Why the fast path cannot overflow. Each joint multiplies the rows of the
  * rotation by Rz(theta) Rx(alpha) built from sines and cosines with
@@ -124,7 +124,7 @@ static DH_NOINLINE int32_t fkq_add_rnd30(int32_t p, int64_t x, int *ovf)
 
 /* Columns i and i + 1 of T turned by cs = (s, c): x' = c x + s y,
  * y' = c y - s x, each rounded once and saturated. */
-static DH_NOINLINE void turn(dh_frame_q *T, unsigned i, const dh_q30 *cs, int *ovf)
+static DH_NOINLINE void fkq_turn(dh_frame_q *T, unsigned i, const dh_q30 *cs, int *ovf)
 {
     const dh_q30 s = cs[0], c = cs[1];
     int k;
@@ -137,21 +137,21 @@ static DH_NOINLINE void turn(dh_frame_q *T, unsigned i, const dh_q30 *cs, int *o
 
 #if DH_FAST_PATHS
 /* bits 30..61 of t (t >> 30 when that fits int32), from the two words */
-DH_INLINE int32_t lo30(int64_t t)
+DH_INLINE int32_t fkq_lo30(int64_t t)
 {
     return (int32_t)(((uint32_t)((uint64_t)t & 0xFFFFFFFFu) >> 30) | ((uint32_t)((uint64_t)t >> 32) << 2));
 }
 
 /* round(x / 2^30) when the caller knows that it fits int32 (no check). */
-DH_INLINE int32_t rnd30_fit(int64_t x)
+DH_INLINE int32_t fkq_rnd30_fit(int64_t x)
 {
-    return lo30(x + HALF29);
+    return fkq_lo30(x + HALF29);
 }
 
 /*
  * A twist class is a set of bits: TW_NA / TW_NB negate the first / the
  * second value of the pair (standard DH: u, z; modified DH: the roles are
- * exchanged, see fast_prep), TW_SWAP exchanges columns 1 and 2, TW_GEN is
+ * exchanged, see fkq_fast_prep), TW_SWAP exchanges columns 1 and 2, TW_GEN is
  * the general twist (multiplications).
  */
 #define TW_NA 1u
@@ -166,7 +166,7 @@ DH_INLINE int32_t rnd30_fit(int64_t x)
 /* Exact classes need sa, ca both exact: alpha = 90 +- 1 LSB has sa
  * rounded to exactly 1 but ca != 0, and alpha = +-1 LSB has ca exactly 1
  * but sa != 0; those are general twists. */
-DH_PORT_INLINE unsigned twist_kind(dh_q30 sa, dh_q30 ca)
+DH_PORT_INLINE unsigned fkq_twist_kind(dh_q30 sa, dh_q30 ca)
 {
     unsigned kind = TW_GEN;
     if (sa == DH_Q30_ONE || sa == -DH_Q30_ONE) {
@@ -191,7 +191,7 @@ DH_PORT_INLINE unsigned twist_kind(dh_q30 sa, dh_q30 ca)
  */
 #if DH_PORT_USE_SPLIT16
 /* |x| as uint32 (x != INT32_MIN here: lengths went through fkq_len()) */
-DH_INLINE uint32_t abs_u(int32_t x)
+DH_INLINE uint32_t fkq_abs_u(int32_t x)
 {
     return x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
 }
@@ -202,13 +202,13 @@ typedef dh_port_s16 fkq_r;
 #define RQ(v) dh_port_split_row(v)
 #define DOT2(c, x, s, y) dh_port_dot2r30_s16((c), (x), (s), (y))
 /* the split kernel needs the lengths' factors small (see the file comment) */
-#define FAST_LENGTHS(a, d) (abs_u(a) + abs_u(d) <= 0x40000000u)
+#define FAST_LENGTHS(a, d) (fkq_abs_u(a) + fkq_abs_u(d) <= 0x40000000u)
 #else
 typedef int32_t fkq_k;
 typedef int32_t fkq_r;
 #define KQ(v) (v)
 #define RQ(v) (v)
-#define DOT2(c, x, s, y) lo30(dh_port_smlal(dh_port_smlal(HALF29, (c), (x)), (s), (y)))
+#define DOT2(c, x, s, y) fkq_lo30(dh_port_smlal(dh_port_smlal(HALF29, (c), (x)), (s), (y)))
 #define FAST_LENGTHS(a, d) 1
 #endif
 
@@ -216,7 +216,7 @@ typedef int32_t fkq_r;
  * multiply: the split kernel (DH_PORT_USE_SPLIT16) with a 32-bit overflow
  * test, or two SMLAL with the test on the high word. */
 #if DH_PORT_USE_SPLIT16
-DH_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_t x, int *ovf)
+DH_INLINE int32_t fkq_pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_t x, int *ovf)
 {
     /* a zero length (most joints have one) drops its four products; a
      * zero split is the exact zero term, so the sum is the same */
@@ -234,7 +234,7 @@ DH_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_t x, 
     return (int32_t)s;
 }
 #else
-DH_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_t x, int *ovf)
+DH_INLINE int32_t fkq_pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_t x, int *ovf)
 {
     /* p 2^30 + 2^29 + d z + a x modulo 2^64 (no wrap, file comment) */
     int64_t t = (int64_t)(DH_PORT_W64(p >> 2, (uint32_t)p << 30) + (uint64_t)HALF29);
@@ -245,7 +245,7 @@ DH_INLINE int32_t pos_fast(int32_t p, fkq_k kd, int32_t z, fkq_k ka, int32_t x, 
         *ovf = (int)DH_ERR_OVERFLOW;
         return fkq_sat_sign(hi);
     }
-    return lo30(t);
+    return fkq_lo30(t);
 }
 #endif
 
@@ -279,7 +279,7 @@ typedef struct {
  * the second value of the pair; fold: all ones when the first value's
  * sign goes into ks and kc1 (modified DH), else 0. Branch free: kind is
  * data, the other arguments are constants of the caller. */
-DH_INLINE void fast_prep(fkq_joint *J, dh_q30 st, dh_q30 ct, dh_qpos a, dh_qpos d, unsigned kind,
+DH_INLINE void fkq_fast_prep(fkq_joint *J, dh_q30 st, dh_q30 ct, dh_qpos a, dh_qpos d, unsigned kind,
                               unsigned sh1, unsigned sh2, uint32_t fold)
 {
     const uint32_t m1 = 0u - ((kind >> sh1) & 1u);
@@ -297,7 +297,7 @@ DH_INLINE void fast_prep(fkq_joint *J, dh_q30 st, dh_q30 ct, dh_qpos a, dh_qpos 
  * before row k of O is written). gen 0: an exact twist, whose rows are u and
  * z moved (swap 0 or 1) and negated; gen 1: a general twist. gen and swap
  * are constants. Returns DH_ERR_OVERFLOW when a position saturated, else 0. */
-DH_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int gen,
+DH_INLINE int fkq_fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int gen,
                             int swap)
 {
     int ovf = 0, k;
@@ -307,7 +307,7 @@ DH_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q 
         const int32_t z = I->r[2][k], p = I->p[k];
         const int32_t n1 = DOT2(J->kc, x, J->ks, y);
         const int32_t u = DOT2(J->kc, y, J->kns, x);
-        O->p[k] = haslen ? pos_fast(p, J->kd, z, J->ka, n1, &ovf) : p;
+        O->p[k] = haslen ? fkq_pos_fast(p, J->kd, z, J->ka, n1, &ovf) : p;
         O->r[0][k] = n1;
         if (gen) {
             const fkq_r U = RQ(u), Z = RQ(z);
@@ -322,7 +322,7 @@ DH_INLINE int fast_std_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q 
 }
 
 /* Rows of a modified DH joint with an exact twist (same contract). */
-DH_INLINE int fast_mod_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int swap)
+DH_INLINE int fkq_fast_mod_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen, int swap)
 {
     int ovf = 0, k;
     DH_UNROLL3
@@ -331,7 +331,7 @@ DH_INLINE int fast_mod_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q 
         const fkq_r x = RQ(xv);
         const fkq_r o = RQ(I->r[1 + swap][k]);
         const int32_t a1 = NEGM(I->r[2 - swap][k], J->m2);
-        O->p[k] = haslen ? pos_fast(p, J->ka, xv, J->kd, a1, &ovf) : p;
+        O->p[k] = haslen ? fkq_pos_fast(p, J->ka, xv, J->kd, a1, &ovf) : p;
         O->r[0][k] = DOT2(J->kc, x, J->ks, o);
         O->r[1][k] = DOT2(J->kc1, o, J->kns, x);
         O->r[2][k] = a1;
@@ -340,7 +340,7 @@ DH_INLINE int fast_mod_rows(const fkq_joint *J, const dh_frame_q *I, dh_frame_q 
 }
 
 /* Rows of a modified DH joint with a general twist (same contract). */
-DH_INLINE int fast_mod_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen)
+DH_INLINE int fkq_fast_mod_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh_frame_q *O, int haslen)
 {
     int ovf = 0, k;
     DH_UNROLL3
@@ -350,7 +350,7 @@ DH_INLINE int fast_mod_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh_fram
         const fkq_r Y = RQ(I->r[1][k]), Z = RQ(I->r[2][k]);
         const fkq_r o = RQ(DOT2(J->kca, Y, J->ksa, Z));
         const int32_t a1 = DOT2(J->kca, Z, J->knsa, Y);
-        O->p[k] = haslen ? pos_fast(p, J->ka, xv, J->kd, a1, &ovf) : p;
+        O->p[k] = haslen ? fkq_pos_fast(p, J->ka, xv, J->kd, a1, &ovf) : p;
         O->r[0][k] = DOT2(J->kc, x, J->ks, o);
         O->r[1][k] = DOT2(J->kc1, o, J->kns, x);
         O->r[2][k] = a1;
@@ -360,35 +360,35 @@ DH_INLINE int fast_mod_rows_gen(const fkq_joint *J, const dh_frame_q *I, dh_fram
 
 /* One joint by the fast path: O = I * A (O may be I); mod: 0 standard, 1
  * modified (a constant of each caller); v = (st, ct, sa, ca, d, a) from
- * joint_values. */
-DH_INLINE int fast_step(const dh_frame_q *I, dh_frame_q *O, unsigned mod, const dh_q30 *v)
+ * fkq_joint_values. */
+DH_INLINE int fkq_fast_step(const dh_frame_q *I, dh_frame_q *O, unsigned mod, const dh_q30 *v)
 {
     fkq_joint J;
-    const unsigned kind = twist_kind(v[2], v[3]);
+    const unsigned kind = fkq_twist_kind(v[2], v[3]);
     const int haslen = (v[4] | v[5]) != 0;
     const int swap = (kind & TW_SWAP) != 0u;
-    fast_prep(&J, v[0], v[1], v[5], v[4], kind, mod, mod ^ 1u, 0u - mod);
+    fkq_fast_prep(&J, v[0], v[1], v[5], v[4], kind, mod, mod ^ 1u, 0u - mod);
     if ((kind & TW_GEN) != 0u) {
         J.kca = KQ(v[3]);
         J.ksa = KQ(v[2]);
         J.knsa = KQ(-v[2]);
-        return mod ? fast_mod_rows_gen(&J, I, O, haslen) : fast_std_rows(&J, I, O, haslen, 1, 0);
+        return mod ? fkq_fast_mod_rows_gen(&J, I, O, haslen) : fkq_fast_std_rows(&J, I, O, haslen, 1, 0);
     }
-    if (mod) return swap ? fast_mod_rows(&J, I, O, haslen, 1) : fast_mod_rows(&J, I, O, haslen, 0);
-    return swap ? fast_std_rows(&J, I, O, haslen, 0, 1) : fast_std_rows(&J, I, O, haslen, 0, 0);
+    if (mod) return swap ? fkq_fast_mod_rows(&J, I, O, haslen, 1) : fkq_fast_mod_rows(&J, I, O, haslen, 0);
+    return swap ? fkq_fast_std_rows(&J, I, O, haslen, 0, 1) : fkq_fast_std_rows(&J, I, O, haslen, 0, 0);
 }
 
-/* fast_step() for each convention (one copy each, out of the caller's
+/* fkq_fast_step() for each convention (one copy each, out of the caller's
  * frame, the convention folded; they call nothing, so the joint's sine
  * and cosine are computed before, in the caller's smaller frame). */
-static DH_NOINLINE int fast_std(const dh_frame_q *I, dh_frame_q *O, const dh_q30 *v)
+static DH_NOINLINE int fkq_fast_std(const dh_frame_q *I, dh_frame_q *O, const dh_q30 *v)
 {
-    return fast_step(I, O, 0u, v);
+    return fkq_fast_step(I, O, 0u, v);
 }
 
-static DH_NOINLINE int fast_mod(const dh_frame_q *I, dh_frame_q *O, const dh_q30 *v)
+static DH_NOINLINE int fkq_fast_mod(const dh_frame_q *I, dh_frame_q *O, const dh_q30 *v)
 {
-    return fast_step(I, O, 1u, v);
+    return fkq_fast_step(I, O, 1u, v);
 }
 
 /* round(c x / 2^30) (half up) for |c| <= 2^30 and |x| < 2^31 - 2^15, no
@@ -399,9 +399,9 @@ static DH_NOINLINE int fast_mod(const dh_frame_q *I, dh_frame_q *O, const dh_q30
 /* the same for a length l (any int32 but INT32_MIN) and |x| <= 2^30: 0
  * for a zero length (common), the split kernel where |l| <= 2^31 - 2^16
  * (its constant-split domain), else the 64-bit product */
-#define MULR30L(l, x) ((l) == 0 ? 0 : abs_u(l) <= 0x7FFF0000u ? MULR30((l), (x)) : rnd30_fit(MUL((l), (x))))
+#define MULR30L(l, x) ((l) == 0 ? 0 : fkq_abs_u(l) <= 0x7FFF0000u ? MULR30((l), (x)) : fkq_rnd30_fit(MUL((l), (x))))
 #else
-#define MULR30(c, x) rnd30_fit(MUL((c), (x)))
+#define MULR30(c, x) fkq_rnd30_fit(MUL((c), (x)))
 #define MULR30L(l, x) ((l) == 0 ? 0 : MULR30((l), (x)))
 #endif
 /* MULR30 by a twist sine/cosine c; ex: the twist is exact (sa, ca in
@@ -409,10 +409,10 @@ static DH_NOINLINE int fast_mod(const dh_frame_q *I, dh_frame_q *O, const dh_q30
 #define MULR30T(c, x, ex) ((ex) ? ((c) == 0 ? 0 : ((c) > 0 ? (x) : -(x))) : MULR30((c), (x)))
 
 /* The link matrix of joint j (a step applied to the identity, written
- * out; v from joint_values). Cannot saturate: every entry is a
+ * out; v from fkq_joint_values). Cannot saturate: every entry is a
  * product of two sines/cosines (|.| <= 2^30) or of one and a length, which
  * rounds into int32 unchecked. */
-static DH_NOINLINE void link_direct(dh_frame_q *A, unsigned mod, const dh_q30 *v)
+static DH_NOINLINE void fkq_link_direct(dh_frame_q *A, unsigned mod, const dh_q30 *v)
 {
     const dh_q30 st = v[0], ct = v[1], sa = v[2], ca = v[3];
     const dh_qpos d = v[4], a = v[5];
@@ -452,7 +452,7 @@ static DH_NOINLINE void link_direct(dh_frame_q *A, unsigned mod, const dh_q30 *v
 #endif /* DH_FAST_PATHS */
 
 /* dst = src unless they are the same frame. */
-static DH_NOINLINE void copy_frame(dh_frame_q *dst, const dh_frame_q *src)
+static DH_NOINLINE void fkq_copy_frame(dh_frame_q *dst, const dh_frame_q *src)
 {
     if (dst != src) *dst = *src;
 }
@@ -462,7 +462,7 @@ static DH_NOINLINE void copy_frame(dh_frame_q *dst, const dh_frame_q *src)
  * -INT32_MAX (the documented one-LSB raise, not an overflow). theta = q +
  * offset is brought back into int32 by whole turns (exact). Returns
  * DH_ERR_OVERFLOW when d + q saturated, else 0. */
-DH_INLINE int joint_values(const dh_joint *j, int32_t q, dh_q30 *v)
+DH_INLINE int fkq_joint_values(const dh_joint *j, int32_t q, dh_q30 *v)
 {
     const uint32_t th = (uint32_t)j->theta_q;
     uint32_t qt = 0u, t;
@@ -487,34 +487,34 @@ DH_INLINE int joint_values(const dh_joint *j, int32_t q, dh_q30 *v)
 }
 
 /* T <- T * A in place, the general step, v = (st, ct, sa, ca, d, a) from
- * joint_values; mod: 0 standard, 1 modified. Sets *ovf to DH_ERR_OVERFLOW
+ * fkq_joint_values; mod: 0 standard, 1 modified. Sets *ovf to DH_ERR_OVERFLOW
  * when an entry saturated. Standard DH turns (n, o) by theta, moves p
  * by a n + d a, then twists (o, a) by alpha; modified DH twists first,
  * moves p by a n + d a with the twisted a, then turns. */
-DH_GENERAL_FN void step(dh_frame_q *T, unsigned mod, const dh_q30 *v, int *ovf)
+DH_GENERAL_FN void fkq_step(dh_frame_q *T, unsigned mod, const dh_q30 *v, int *ovf)
 {
     int k;
-    turn(T, mod, &v[2u * mod], ovf);
+    fkq_turn(T, mod, &v[2u * mod], ovf);
     for (k = 0; k < 3; k++)
         T->p[k] = fkq_add_rnd30(T->p[k], MLA(MUL(v[5], T->r[0][k]), v[4], T->r[2][k]), ovf);
-    turn(T, mod ^ 1u, &v[2u * (mod ^ 1u)], ovf);
+    fkq_turn(T, mod ^ 1u, &v[2u * (mod ^ 1u)], ovf);
 }
 
 #if !DH_FAST_PATHS
-/* step() for joint i of r at q (one copy for dh_link_q and the chain):
+/* fkq_step() for joint i of r at q (one copy for dh_link_q and the chain):
  * DH_ERR_OVERFLOW when d + q or an entry saturated, else 0. */
-static DH_NOINLINE int joint_step(dh_frame_q *T, const dh_robot *r, uint32_t i, int32_t q)
+static DH_NOINLINE int fkq_joint_step(dh_frame_q *T, const dh_robot *r, uint32_t i, int32_t q)
 {
     dh_q30 v[6];
-    int ovf = joint_values(&r->joint[i], q, v);
-    step(T, r->conv != DH_CONV_STANDARD, v, &ovf);
+    int ovf = fkq_joint_values(&r->joint[i], q, v);
+    fkq_step(T, r->conv != DH_CONV_STANDARD, v, &ovf);
     return ovf;
 }
 #endif
 
 /* a0 b[0]/2 + a1 b[1]/2 + a2 b[2]/2 (each product halved, floor), exact in
  * 64 bits (|each| <= 2^61). */
-static DH_NOINLINE int64_t dot3h(int32_t a0, int32_t a1, int32_t a2, const int32_t *b)
+static DH_NOINLINE int64_t fkq_dot3h(int32_t a0, int32_t a1, int32_t a2, const int32_t *b)
 {
     return (MUL(a0, b[0]) >> 1) + (MUL(a1, b[1]) >> 1) + (MUL(a2, b[2]) >> 1);
 }
@@ -524,7 +524,7 @@ static DH_NOINLINE int64_t dot3h(int32_t a0, int32_t a1, int32_t a2, const int32
  * so a different status at the int32 edge). out may be A (row k of A is
  * read before row k of out is written), not B. Returns DH_ERR_OVERFLOW
  * when an entry saturated, else 0. */
-static DH_NOINLINE int mul_frame(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B)
+static DH_NOINLINE int fkq_mul_frame(dh_frame_q *out, const dh_frame_q *A, const dh_frame_q *B)
 {
     int c, k, ovf = 0;
     for (k = 0; k < 3; k++) {
@@ -533,13 +533,13 @@ static DH_NOINLINE int mul_frame(dh_frame_q *out, const dh_frame_q *A, const dh_
             /* columns n, o, a, then p (plus the position of A) */
             const int32_t *b = c < 3 ? B->r[c] : B->p;
             int32_t *o = c < 3 ? &out->r[c][k] : &out->p[k];
-            *o = fkq_sat32((c < 3 ? 0 : p) + ((dot3h(a0, a1, a2, b) + HALF28) >> 29), &ovf);
+            *o = fkq_sat32((c < 3 ? 0 : p) + ((fkq_dot3h(a0, a1, a2, b) + HALF28) >> 29), &ovf);
         }
     }
     return ovf;
 }
 
-/* Twin bodies: the link written out (link_direct) in the default build,
+/* Twin bodies: the link written out (fkq_link_direct) in the default build,
  * the general step on the identity in the size-first build. */
 #if DH_FAST_PATHS
 dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A)
@@ -550,8 +550,8 @@ dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A)
     DH_ASSERT(A != NULL);
     if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_UNAVAILABLE;
-    ovf = joint_values(&r->joint[i], q, v);
-    link_direct(A, r->conv != DH_CONV_STANDARD, v);
+    ovf = fkq_joint_values(&r->joint[i], q, v);
+    fkq_link_direct(A, r->conv != DH_CONV_STANDARD, v);
     return (dh_status)ovf;
 }
 #else
@@ -562,7 +562,7 @@ dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A)
     if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_UNAVAILABLE;
     dh_frame_identity_q(A);
-    return (dh_status)joint_step(A, r, i, q);
+    return (dh_status)fkq_joint_step(A, r, i, q);
 }
 #endif
 
@@ -575,28 +575,28 @@ dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A)
 DH_INLINE int fkq_chain_joint(const dh_robot *r, uint32_t i, const int32_t *q, const dh_frame_q *cur, dh_frame_q *out)
 {
     dh_q30 v[6];
-    int ovf = joint_values(&r->joint[i], q[i], v);
+    int ovf = fkq_joint_values(&r->joint[i], q[i], v);
     if (i == 0u && (r->flags & DH_ROBOT_BASE_ID_Q) != 0u) {
-        link_direct(out, r->conv != DH_CONV_STANDARD, v);
+        fkq_link_direct(out, r->conv != DH_CONV_STANDARD, v);
     } else if ((r->flags & DH_ROBOT_BASE_SMALL_Q) != 0u && FAST_LENGTHS(v[5], v[4])) {
-        ovf |= (r->conv == DH_CONV_STANDARD) ? fast_std(cur, out, v) : fast_mod(cur, out, v);
+        ovf |= (r->conv == DH_CONV_STANDARD) ? fkq_fast_std(cur, out, v) : fkq_fast_mod(cur, out, v);
     } else {
-        copy_frame(out, cur);
-        step(out, r->conv != DH_CONV_STANDARD, v, &ovf);
+        fkq_copy_frame(out, cur);
+        fkq_step(out, r->conv != DH_CONV_STANDARD, v, &ovf);
     }
     return ovf;
 }
 #else
 DH_INLINE int fkq_chain_joint(const dh_robot *r, uint32_t i, const int32_t *q, const dh_frame_q *cur, dh_frame_q *out)
 {
-    copy_frame(out, cur);
-    return joint_step(out, r, i, q[i]);
+    fkq_copy_frame(out, cur);
+    return fkq_joint_step(out, r, i, q[i]);
 }
 #endif
 
 /* The chain is built in the caller's memory (frames[i], or T_end), from
  * the base; nothing is written before the argument checks. */
-static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, dh_frame_q *T_end)
+static dh_status fkq_all(const dh_robot *r, const int32_t *q, dh_frame_q *frames, dh_frame_q *T_end)
 {
     const dh_frame_q *cur = &r->base_q;
     dh_frame_q *out = T_end;
@@ -612,8 +612,8 @@ static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, d
         cur = out;
     }
     if (T_end) {
-        if ((r->flags & DH_ROBOT_TOOL_ID_Q) == 0u) ovf |= mul_frame(T_end, cur, &r->tool_q);
-        else copy_frame(T_end, cur);
+        if ((r->flags & DH_ROBOT_TOOL_ID_Q) == 0u) ovf |= fkq_mul_frame(T_end, cur, &r->tool_q);
+        else fkq_copy_frame(T_end, cur);
     }
     return (dh_status)ovf;
 }
@@ -621,27 +621,27 @@ static dh_status fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, d
 dh_status dh_fk_q(const dh_robot *r, const int32_t *q, dh_frame_q *T)
 {
     DH_ASSERT(T != NULL);
-    return fk_q(r, q, NULL, T);
+    return fkq_all(r, q, NULL, T);
 }
 
 dh_status dh_fk_frames_q(const dh_robot *r, const int32_t *q, dh_frame_q *frames, dh_frame_q *T_end)
 {
     DH_ASSERT(frames != NULL);
-    return fk_q(r, q, frames, T_end);
+    return fkq_all(r, q, frames, T_end);
 }
 
 /* ---- private blocks of the fixed Jacobian (dh_kin_impl.h) --------------- */
 
-/* joint_values of joint i of r at q into v[6] (sin theta, cos theta, sin
+/* fkq_joint_values of joint i of r at q into v[6] (sin theta, cos theta, sin
  * alpha, cos alpha, d, a; the lengths raised from INT32_MIN). */
 int dh_fk_values_q_(const dh_robot *r, uint32_t i, int32_t q, dh_q30 *v)
 {
-    return joint_values(&r->joint[i], q, v);
+    return fkq_joint_values(&r->joint[i], q, v);
 }
 
-/* T <- T * tool in place (nothing for an identity tool), as fk_q. */
+/* T <- T * tool in place (nothing for an identity tool), as fkq_all. */
 int dh_fk_tool_q_(const dh_robot *r, dh_frame_q *T)
 {
     if ((r->flags & DH_ROBOT_TOOL_ID_Q) != 0u) return 0;
-    return mul_frame(T, T, &r->tool_q);
+    return fkq_mul_frame(T, T, &r->tool_q);
 }

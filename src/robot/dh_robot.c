@@ -3,7 +3,7 @@
  * dh_robot.c - building a robot description from float parameters (init,
  * joints, limits, base/tool). Each float setter validates everything first
  * (r untouched on error), converts the fixed-point copy of each constant
- * with dh_f32_to_fix, lets the integer setters of dh_robot_q.c store it,
+ * with dh_robot_f32_to_fix_, lets the integer setters of dh_robot_q.c store it,
  * then stores the float half and corrects the bits that describe the float
  * path with dh_robot_flags_.
  */
@@ -16,7 +16,7 @@
 
 /* src converted to F (columns 0..2 rotation Q2.30, column 3 position
  * dh_qpos) and compared with the identity, for robot_set_frame and
- * robot_check_frame. Returns the dh_f32_to_fix results ORed (2 NaN/Inf, 1 does
+ * robot_check_frame. Returns the dh_robot_f32_to_fix_ results ORed (2 NaN/Inf, 1 does
  * not fit; F is complete only when 0); *bad = 1: not the identity, 2:
  * bottom row not 0 0 0 1. Inlined: the setter's code stays as it is. */
 DH_INLINE unsigned robot_frame_to_fix(const dh_mat4_f32 *src, dh_frame_q *F, unsigned *bad)
@@ -29,7 +29,7 @@ DH_INLINE unsigned robot_frame_to_fix(const dh_mat4_f32 *src, dh_frame_q *F, uns
         const unsigned c = e >> 2, k = e & 3u;
         const float x = src->m[c][k];
         int32_t *const col = (c < 3u) ? F->r[c] : F->p;
-        st |= dh_f32_to_fix(x, (c < 3u) ? 30u : (unsigned)DH_QPOS_FRAC, (k == 3u) ? &spare : &col[k]);
+        st |= dh_robot_f32_to_fix_(x, (c < 3u) ? 30u : (unsigned)DH_QPOS_FRAC, (k == 3u) ? &spare : &col[k]);
         if (!dh_feq_f32(x, (c == k) ? 1.0f : 0.0f)) b |= (k == 3u) ? 2u : 1u;
     }
     *bad = b;
@@ -40,7 +40,7 @@ DH_INLINE unsigned robot_frame_to_fix(const dh_mat4_f32 *src, dh_frame_q *F, uns
 static dh_status robot_set_frame(dh_robot *r, const dh_mat4_f32 *src, unsigned which)
 {
     dh_frame_q F;
-    unsigned st;  /* dh_f32_to_fix results ORed: 2 NaN/Inf, 1 does not fit */
+    unsigned st;  /* dh_robot_f32_to_fix_ results ORed: 2 NaN/Inf, 1 does not fit */
     unsigned bad; /* 1: not the identity, 2: bottom row not 0 0 0 1 */
     DH_ASSERT(r != NULL);
     DH_ASSERT(src != NULL);
@@ -116,7 +116,7 @@ dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float theta_de
     v[1] = d;
     v[2] = alpha_deg;
     v[3] = theta_deg;
-    for (k = 0; k < 4; k++) st |= dh_f32_to_fix(v[k], (k < 2) ? (unsigned)DH_QPOS_FRAC : 16u, &x[k]);
+    for (k = 0; k < 4; k++) st |= dh_robot_f32_to_fix_(v[k], (k < 2) ? (unsigned)DH_QPOS_FRAC : 16u, &x[k]);
     if (st & 2u) return DH_ERR_NAN;
     if (st != 0u) {
         /* fixed copy of an unavailable joint: zeros, sin/cos 0 and 1 */
@@ -152,8 +152,8 @@ dh_status dh_robot_set_limits_f32(dh_robot *r, uint32_t i, float qmin, float qma
     frac = (j->type == DH_JOINT_REVOLUTE) ? 16u : (unsigned)DH_QPOS_FRAC;
     j->qmin = qmin;
     j->qmax = qmax;
-    j->qmin_q = dh_f32_to_fix_sat(qmin, frac, &st);
-    j->qmax_q = dh_f32_to_fix_sat(qmax, frac, &st);
+    j->qmin_q = dh_robot_f32_to_fix_sat_(qmin, frac, &st);
+    j->qmax_q = dh_robot_f32_to_fix_sat_(qmax, frac, &st);
     return DH_OK;
 }
 
@@ -217,7 +217,7 @@ dh_status dh_robot_check_limits_f32(const dh_robot *r, const float *q)
  * (conv, n, type, a, d, alpha_deg, theta_deg, the limits, base, tool, the
  * fixed parameters and frames) determine up to the setter history recorded
  * in the reason bits. The check recomputes each derived field with the
- * setters' own code (dh_sincos_f32, dh_sincos_q, dh_f32_to_fix, the
+ * setters' own code (dh_sincos_f32, dh_sincos_q, dh_robot_f32_to_fix_, the
  * identity and small-rows tests) and compares bit for bit:
  *   joint: sa, ca = dh_sincos_f32(alpha_deg); sa_q, ca_q =
  *     dh_sincos_q(alpha_q); the float parameters finite; and one of: the
@@ -280,8 +280,8 @@ static DH_NOINLINE unsigned robot_check_joint(const dh_joint *j, uint32_t *need,
     int32_t x[4] = { 0, 0, 0, 0 };
     uint32_t zf, zq, dq;
     unsigned st;
-    st = dh_f32_to_fix(j->a, (unsigned)DH_QPOS_FRAC, &x[0]) | dh_f32_to_fix(j->d, (unsigned)DH_QPOS_FRAC, &x[1]) |
-         dh_f32_to_fix(j->alpha_deg, 16u, &x[2]) | dh_f32_to_fix(j->theta_deg, 16u, &x[3]);
+    st = dh_robot_f32_to_fix_(j->a, (unsigned)DH_QPOS_FRAC, &x[0]) | dh_robot_f32_to_fix_(j->d, (unsigned)DH_QPOS_FRAC, &x[1]) |
+         dh_robot_f32_to_fix_(j->alpha_deg, 16u, &x[2]) | dh_robot_f32_to_fix_(j->theta_deg, 16u, &x[3]);
     zf = dh_f32_bits(j->a) | dh_f32_bits(j->d) | dh_f32_bits(j->alpha_deg) | dh_f32_bits(j->theta_deg);
     if ((st & 2u) != 0u || !dh_isfinite_f32(j->qmin) || !dh_isfinite_f32(j->qmax)) return 1u;
     /* dq: used only when st == 0, i.e. all four converted */

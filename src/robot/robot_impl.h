@@ -59,7 +59,7 @@ int dh_fk_tool_q_(const dh_robot *r, dh_frame_q *T);
  * +-1 exactly when |rem| >= 0.5. The largest float below 2^31 is an
  * integer, so i + 1 cannot overflow.
  */
-static inline unsigned dh_f32_to_fix(float x, unsigned frac, int32_t *out)
+static inline unsigned dh_robot_f32_to_fix_(float x, unsigned frac, int32_t *out)
 {
     const uint32_t p = 1u << (frac & 31u), pl = 1u << (31u - frac);
     const float lim = (float)pl;
@@ -76,11 +76,11 @@ static inline unsigned dh_f32_to_fix(float x, unsigned frac, int32_t *out)
 }
 
 /** The same, saturated to the int32 range by the sign of x when out of
- *  range (finite x); *st |= the dh_f32_to_fix status. */
-static inline int32_t dh_f32_to_fix_sat(float x, unsigned frac, unsigned *st)
+ *  range (finite x); *st |= the dh_robot_f32_to_fix_ status. */
+static inline int32_t dh_robot_f32_to_fix_sat_(float x, unsigned frac, unsigned *st)
 {
     int32_t v;
-    const unsigned e = dh_f32_to_fix(x, frac, &v);
+    const unsigned e = dh_robot_f32_to_fix_(x, frac, &v);
     *st |= e;
     if (e == 0u) return v;
     return (x < 0.0f) ? INT32_MIN : INT32_MAX;

@@ -120,7 +120,7 @@ dh_status dh_axis_angle_to_mat3_f32(const dh_vec3_f32 *axis, float deg, dh_mat3_
     k[0] /= len;
     k[1] /= len;
     k[2] /= len;
-    dh_rot_rodrigues_f32(R, k, s, c, 1.0f - c);
+    dh_rot_rodrigues_f32_(R, k, s, c, 1.0f - c);
     return DH_OK;
 }
 

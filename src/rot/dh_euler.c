@@ -14,12 +14,12 @@
 
 
 /* axes of the 12 intrinsic sequences, in dh_euler_seq order (0 x, 1 y, 2 z) */
-static const unsigned char dh_euler_axes[12][3] = {
+static const unsigned char euler_axes[12][3] = {
     {0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0},
     {0, 1, 0}, {0, 2, 0}, {1, 0, 1}, {1, 2, 1}, {2, 0, 2}, {2, 1, 2}
 };
 
-static const char dh_euler_names[DH_EULER_COUNT][4] = {
+static const char euler_names[DH_EULER_COUNT][4] = {
     "XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX",
     "XYX", "XZX", "YXY", "YZY", "ZXZ", "ZYZ",
     "xyz", "xzy", "yxz", "yzx", "zxy", "zyx",
@@ -50,8 +50,8 @@ dh_status dh_euler_parse(const char *str, dh_euler_seq *seq)
     }
     if (str[3] != '\0') return DH_ERR_ARG;
     for (idx = 0; idx < 12; idx++) {
-        if (dh_euler_axes[idx][0] == ax[0] && dh_euler_axes[idx][1] == ax[1] &&
-            dh_euler_axes[idx][2] == ax[2]) {
+        if (euler_axes[idx][0] == ax[0] && euler_axes[idx][1] == ax[1] &&
+            euler_axes[idx][2] == ax[2]) {
             *seq = (dh_euler_seq)(idx + (lower ? 12 : 0));
             return DH_OK;
         }
@@ -63,11 +63,11 @@ const char *dh_euler_name(dh_euler_seq seq)
 {
     unsigned int u = (unsigned int)seq;
     if (u >= (unsigned int)DH_EULER_COUNT) return "???";
-    return dh_euler_names[u];
+    return euler_names[u];
 }
 
 /* M = M Rq(t), sine s, cosine c: only columns q+1 and q+2 (cyclic) change. */
-static void dh_euler_post_rot(dh_mat3_f32 *M, int q, float s, float c)
+static void euler_post_rot(dh_mat3_f32 *M, int q, float s, float c)
 {
     int u = (q == 2) ? 0 : q + 1, w = (q == 0) ? 2 : q - 1, r; /* no division (Cortex-M0) */
     for (r = 0; r < 3; r++) {
@@ -89,19 +89,19 @@ dh_status dh_euler_to_mat3_f32(dh_euler_seq seq, const float ang_deg[3], dh_mat3
         if (dh_sincos_f32(ang_deg[n], &sn[n], &cs[n]) != DH_OK) return DH_ERR_NAN;
     }
     if (u < 12u) {
-        for (n = 0; n < 3; n++) ax[n] = dh_euler_axes[u][n];
+        for (n = 0; n < 3; n++) ax[n] = euler_axes[u][n];
     } else {
         /* extrinsic (a, b, c) about l0, l1, l2 = intrinsic (c, b, a) about
          * l2, l1, l0: reverse the axes and the angles */
         float t;
-        for (n = 0; n < 3; n++) ax[n] = dh_euler_axes[u - 12u][2 - n];
+        for (n = 0; n < 3; n++) ax[n] = euler_axes[u - 12u][2 - n];
         t = sn[0]; sn[0] = sn[2]; sn[2] = t;
         t = cs[0]; cs[0] = cs[2]; cs[2] = t;
     }
     for (c = 0; c < 3; c++) {
         for (r = 0; r < 3; r++) M.m[c][r] = (r == c) ? 1.0f : 0.0f;
     }
-    for (n = 0; n < 3; n++) dh_euler_post_rot(&M, ax[n], sn[n], cs[n]);
+    for (n = 0; n < 3; n++) euler_post_rot(&M, ax[n], sn[n], cs[n]);
     for (c = 0; c < 3; c++) {
         for (r = 0; r < 3; r++) R->m[c][r] = M.m[c][r] + 0.0f; /* no -0 */
     }
@@ -112,7 +112,7 @@ dh_status dh_euler_to_mat3_f32(dh_euler_seq seq, const float ang_deg[3], dh_mat3
  * at most 45 deg, combined as phi, +-90 -+ phi, +-180 -+ phi, so the result
  * near +-90 and +-180 is limited only by the final rounding in degrees.
  * atan2(+-0, x < 0) is 180. */
-static float dh_euler_atan2_deg(float y, float x)
+static float euler_atan2_deg(float y, float x)
 {
     float ax = fabsf(x), ay = fabsf(y), d;
     if (dh_feq_f32(ax, 0.0f) && dh_feq_f32(ay, 0.0f)) {
@@ -132,7 +132,7 @@ static float dh_euler_atan2_deg(float y, float x)
     return d + 0.0f; /* no -0 */
 }
 
-static float dh_euler_clamp(float d, float lo, float hi)
+static float euler_clamp(float d, float lo, float hi)
 {
     if (d < lo) d = lo;
     if (d > hi) d = hi;
@@ -151,7 +151,7 @@ static float dh_euler_clamp(float d, float lo, float hi)
  *   proper (k == i): row i = cb e_i + sb sc e_j + s sb cc e_l,
  *     column i = cb e_i + sb sa e_j - s sb ca e_l.
  */
-static void dh_euler_solve(const dh_mat3_f32 *R, int i, int j, int k, int zero_first, float out[3])
+static void euler_solve(const dh_mat3_f32 *R, int i, int j, int k, int zero_first, float out[3])
 {
     int proper = (i == k);
     int l = proper ? 3 - i - j : k;
@@ -168,15 +168,15 @@ static void dh_euler_solve(const dh_mat3_f32 *R, int i, int j, int k, int zero_f
         y = DH_M3(R, j, i); x = -s * DH_M3(R, l, i); p2 = DH_M3(R, l, j); q1 = DH_M3(R, j, l); q2 = DH_M3(R, l, l); u = -s;
     }
     n = dh_sqrt_f32(x * x + y * y);           /* cos b (Tait-Bryan), sin b (proper) */
-    b = proper ? dh_euler_atan2_deg(n, DH_M3(R, i, i)) : dh_euler_atan2_deg(s * DH_M3(R, i, k), n);
+    b = proper ? euler_atan2_deg(n, DH_M3(R, i, i)) : euler_atan2_deg(s * DH_M3(R, i, k), n);
     if (n <= DH_EULER_POLE_TOL) {
         f = 0.0f; cf = 1.0f; sf = 0.0f;
     } else {
-        f = dh_euler_atan2_deg(y, x);
+        f = euler_atan2_deg(y, x);
         cf = x / n;
         sf = y / n;
     }
-    g = dh_euler_atan2_deg(u * (cf * q1 + t * sf * q2), cf * DH_M3(R, j, j) + t * sf * p2);
+    g = euler_atan2_deg(u * (cf * q1 + t * sf * q2), cf * DH_M3(R, j, j) + t * sf * p2);
     out[0] = zero_first ? f : g;
     out[1] = b;
     out[2] = zero_first ? g : f;
@@ -194,19 +194,19 @@ dh_status dh_mat3_to_euler_f32(const dh_mat3_f32 *R, dh_euler_seq seq, float ang
     st = dh_mat3_check_rot_f32(R, DH_ROT_TOL);
     if (st != DH_OK) return st;
     if (u < 12u) {
-        ax = dh_euler_axes[u];
-        dh_euler_solve(R, ax[0], ax[1], ax[2], 0, dg);
+        ax = euler_axes[u];
+        euler_solve(R, ax[0], ax[1], ax[2], 0, dg);
     } else {
         /* extrinsic (a, b, c) = intrinsic (c, b, a) of the reversed axes;
          * the letter-third angle c (intrinsic first) is 0 at the pole */
-        ax = dh_euler_axes[u - 12u];
-        dh_euler_solve(R, ax[2], ax[1], ax[0], 1, dg);
+        ax = euler_axes[u - 12u];
+        euler_solve(R, ax[2], ax[1], ax[0], 1, dg);
         t = dg[0]; dg[0] = dg[2]; dg[2] = t;
     }
     proper = (ax[0] == ax[2]);
     /* the clamps only guard the documented ranges of the middle angle */
     ang_deg[0] = dg[0];
-    ang_deg[1] = proper ? dh_euler_clamp(dg[1], 0.0f, 180.0f) : dh_euler_clamp(dg[1], -90.0f, 90.0f);
+    ang_deg[1] = proper ? euler_clamp(dg[1], 0.0f, 180.0f) : euler_clamp(dg[1], -90.0f, 90.0f);
     ang_deg[2] = dg[2];
     return DH_OK;
 }

@@ -67,7 +67,7 @@ dh_status dh_rotvec_to_mat3_f32(const dh_vec3_f32 *phi, dh_mat3_f32 *R)
         k[0] = 0.0f;
         k[1] = 0.0f;
         k[2] = 1.0f;
-        dh_rot_rodrigues_f32(R, k, 0.0f, 1.0f, 0.0f); /* exactly I */
+        dh_rot_rodrigues_f32_(R, k, 0.0f, 1.0f, 0.0f); /* exactly I */
         return DH_OK;
     }
     /* within 2^-63 .. 2^63 the squares neither overflow nor underflow:
@@ -108,7 +108,7 @@ dh_status dh_rotvec_to_mat3_f32(const dh_vec3_f32 *phi, dh_mat3_f32 *R)
     d = sh;
     sh = sh * cu + ch * su;
     ch = ch * cu - d * su;
-    dh_rot_rodrigues_f32(R, k, 2.0f * sh * ch, 1.0f - 2.0f * sh * sh, 2.0f * sh * sh);
+    dh_rot_rodrigues_f32_(R, k, 2.0f * sh * ch, 1.0f - 2.0f * sh * sh, 2.0f * sh * sh);
     return DH_OK;
 }
 

@@ -45,7 +45,7 @@ DH_INLINE void dh_rot_offdiag_f32(dh_mat3_f32 *R, float xy, float xz, float yz, 
 
 /* R = c I + s [k]x + v k k^T, unit k, v = 1 - c: the diagonal avoids
  * cancellation (exact for a coordinate axis); + 0.0f: no -0 off it. */
-static inline void dh_rot_rodrigues_f32(dh_mat3_f32 *R, const float k[3], float s, float c, float v)
+static inline void dh_rot_rodrigues_f32_(dh_mat3_f32 *R, const float k[3], float s, float c, float v)
 {
     float kx = k[0], ky = k[1], kz = k[2];
     float xx = kx * kx, yy = ky * ky, zz = kz * kz;

@@ -51,7 +51,7 @@
 static DH_NOINLINE uint32_t itrigq_atan2_u(uint32_t ay, uint32_t ax)
 {
     /* round(atan(2^-i) * 180/pi * 2^25), i = 1..29 */
-    static const uint32_t dh_itrig_atan_tab[DH_ITRIG_STEPS] = {
+    static const uint32_t itrigq_atan_tab[DH_ITRIG_STEPS] = {
         891375203u, 470978177u, 239075877u, 120001869u, 60059434u, 30037045u,
         15019439u, 7509834u, 3754931u, 1877468u, 938734u, 469367u, 234684u,
         117342u, 58671u, 29335u, 14668u, 7334u, 3667u, 1833u, 917u, 458u, 229u,
@@ -75,7 +75,7 @@ static DH_NOINLINE uint32_t itrigq_atan2_u(uint32_t ay, uint32_t ax)
 
     /* 2. vectoring: drive y to 0 */
     for (i = 1u; i <= DH_ITRIG_STEPS; i++) {
-        uint32_t tx = x >> i, a = dh_itrig_atan_tab[i - 1u];
+        uint32_t tx = x >> i, a = itrigq_atan_tab[i - 1u];
         x += y >> i;
         th = yneg ? th - (int32_t)a : th + (int32_t)a;
         if (y >= tx) {

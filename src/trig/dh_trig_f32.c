@@ -9,12 +9,12 @@
  *     spacing is 1, so its bit pattern minus that of 2^23 is i (0..2^23).
  *     t = sum - 2^23 is exact (Sterbenz) and so is f = a - t, in
  *     [-0.5, 0.5]. At or above 2^23 every float is an integer, replaced by
- *     its exact value mod 360 (dh_trig_big_deg), which then takes the same
+ *     its exact value mod 360 (trig_big_deg), which then takes the same
  *     path with f = 0: the error does not depend on the size of the angle.
  *  2. i = 180 h + r, r in 0..179, h = floor(i/180) by an exact
  *     multiply-shift. sin(i) = (-1)^h sin(r), cos(i) = (-1)^h cos(r), and
  *     with d = 90 - r (in -89..90): sin(r) = T[90 - |d|],
- *     cos(r) = sign(d) T[|d|] (dh_trig_tab_f32): S = +-sin i, C = +-cos i
+ *     cos(r) = sign(d) T[|d|] (trig_tab): S = +-sin i, C = +-cos i
  *     exactly.
  *  3. sin = S + (S (cos f - 1) + C sin f), cos = C + (C (cos f - 1) - S sin f)
  *     with sin f = A1 f + A3 f^3 and cos f - 1 = B2 f^2 (f in degrees,
@@ -54,7 +54,7 @@
  * at most 179/180) to the next integer. Checked exhaustively as well. */
 #define DH_TRIG_DIV180_64 23860930u
 
-static float dh_trig_nan_f32(void)
+static float trig_nan(void)
 {
     const uint32_t qnan = 0x7FC00000u;
     float r;
@@ -67,7 +67,7 @@ static float dh_trig_nan_f32(void)
  * of 24 + e bits, shifted in from the top while the remainder mod 360 is
  * doubled (binary long division: 2 i + 1 < 720, one conditional
  * subtraction per step; at most 128 steps on this rare path). */
-static float dh_trig_big_deg(uint32_t mag)
+static float trig_big_deg(uint32_t mag)
 {
     uint32_t k = (mag >> 23) - 126u;       /* 24 + e bits */
     uint32_t m = (mag << 8) | 0x80000000u; /* M, implicit bit at the top */
@@ -95,7 +95,7 @@ static float dh_trig_big_deg(uint32_t mag)
  * does not change any result (step 4).
  */
 #if DH_FAST_PATHS
-static float dh_trig_tab_f32(uint32_t n, uint32_t neg)
+static float trig_tab(uint32_t n, uint32_t neg)
 {
     uint32_t b;
     float v;
@@ -105,7 +105,7 @@ static float dh_trig_tab_f32(uint32_t n, uint32_t neg)
     return v;
 }
 #else
-static float dh_trig_tab_f32(uint32_t n, uint32_t neg)
+static float trig_tab(uint32_t n, uint32_t neg)
 {
     int32_t v = dh_trig_sin_q30[n];
     if (n == 1u) {
@@ -134,11 +134,11 @@ dh_status dh_sincos_f32(float deg, float *s, float *c)
     memcpy(&a, &mag, sizeof a);                /* a = |deg|, exact */
     if (mag >= 0x4B000000u) {                  /* a >= 2^23, Inf or NaN: rare */
         if (mag >= 0x7F800000u) {
-            *s = dh_trig_nan_f32();
+            *s = trig_nan();
             *c = *s;
             return DH_ERR_NAN;
         }
-        a = dh_trig_big_deg(mag);              /* same angle mod 360, < 360 */
+        a = trig_big_deg(mag);              /* same angle mod 360, < 360 */
     }
 
     /* i = round(a), f = a - i in [-0.5, 0.5] (step 1) */
@@ -154,8 +154,8 @@ dh_status dh_sincos_f32(float deg, float *s, float *c)
     du = 90u - r;
     neg = 0u - (du >> 31);
     ad = (du ^ neg) - neg;
-    s0 = dh_trig_tab_f32(90u - ad, h);
-    c0 = dh_trig_tab_f32(ad, h ^ (du >> 31));
+    s0 = trig_tab(90u - ad, h);
+    c0 = trig_tab(ad, h ^ (du >> 31));
 
     f2 = f * f;
     sf = f * (DH_TRIG_A1 + f2 * DH_TRIG_A3);   /* sin f */
@@ -171,7 +171,7 @@ dh_status dh_sincos_f32(float deg, float *s, float *c)
 
 /* dh_sincos_f32 writes the quiet NaN to both outputs when it fails, so its
  * sine (which 0) or cosine (which 1) is returned as it is. */
-static DH_NOINLINE float dh_trig_pick_f32(float deg, unsigned which)
+static DH_NOINLINE float trig_pick(float deg, unsigned which)
 {
     float sc[2];
     (void)dh_sincos_f32(deg, &sc[0], &sc[1]);
@@ -180,10 +180,10 @@ static DH_NOINLINE float dh_trig_pick_f32(float deg, unsigned which)
 
 float dh_sin_f32(float deg)
 {
-    return dh_trig_pick_f32(deg, 0u);
+    return trig_pick(deg, 0u);
 }
 
 float dh_cos_f32(float deg)
 {
-    return dh_trig_pick_f32(deg, 1u);
+    return trig_pick(deg, 1u);
 }

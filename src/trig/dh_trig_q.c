@@ -39,7 +39,7 @@
 
 /* uint32 holding the two's complement of a value in [-2^30, 2^30] -> int32,
  * without an implementation-defined out-of-range conversion. */
-static int32_t dh_trig_u2i(uint32_t v)
+static int32_t trigq_u2i(uint32_t v)
 {
     return (v & 0x80000000u) ? -(int32_t)(0u - v) : (int32_t)v;
 }
@@ -61,9 +61,9 @@ typedef struct {
  * (al bl >> 16) < 2^30 + 2^31.2 + 2^16 fits uint32, no carry word needed. */
 typedef struct {
     uint32_t h, m, l;
-} trig_p16;
+} trigq_p16;
 
-DH_PORT_INLINE void trig_p16_mul(trig_p16 *r, uint32_t a, uint32_t b)
+DH_PORT_INLINE void trigq_p16_mul(trigq_p16 *r, uint32_t a, uint32_t b)
 {
     const uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
     const uint32_t ll = al * bl;
@@ -73,7 +73,7 @@ DH_PORT_INLINE void trig_p16_mul(trig_p16 *r, uint32_t a, uint32_t b)
     r->l = ll & 0xFFFFu;
 }
 
-static trig_q_sc trig_q_add_frac(uint32_t m, uint32_t fr)
+static trig_q_sc trigq_add_frac(uint32_t m, uint32_t fr)
 {
     trig_q_sc r;
     const uint32_t sv = (uint32_t)dh_trig_sin_q30[m];       /* sin m, 0..2^30 */
@@ -114,7 +114,7 @@ static trig_q_sc trig_q_add_frac(uint32_t m, uint32_t fr)
     sf = t - t3;                                /* sin f,     0 .. 2^31.2 */
     cm = h - t4;                                /* 1 - cos f, 0 .. 2^24.4 */
 
-    /* The two corrections from 16-bit partials (see trig_p16): for
+    /* The two corrections from 16-bit partials (see trigq_p16): for
      * P = A - B or A + B (each split as H 2^32 + M 2^16 + L) the rounding
      * by 2^37 needs the high words, the middle halves and, from the low
      * halves, only the borrow / carry into the middle: X = floor(P / 2^16)
@@ -123,14 +123,14 @@ static trig_q_sc trig_q_add_frac(uint32_t m, uint32_t fr)
      * (HA -+ HB + (Z >> 16)) >> 5; the difference is biased by 2^30 (a
      * multiple of 32; the result 2^25 higher, as in the 64-bit form). */
     {
-        trig_p16 pa, pb;
+        trigq_p16 pa, pb;
         uint32_t z;
-        trig_p16_mul(&pa, cv, sf);
-        trig_p16_mul(&pb, sv, cm);
+        trigq_p16_mul(&pa, cv, sf);
+        trigq_p16_mul(&pb, sv, cm);
         z = pa.m - pb.m + ((uint32_t)1 << 20) - (uint32_t)(pa.l < pb.l);
         d = (pa.h - pb.h + (z >> 16) + ((uint32_t)1 << 30)) >> 5;
-        trig_p16_mul(&pa, cv, cm);
-        trig_p16_mul(&pb, sv, sf);
+        trigq_p16_mul(&pa, cv, cm);
+        trigq_p16_mul(&pb, sv, sf);
         z = pa.m + pb.m + ((uint32_t)1 << 20) + ((pa.l + pb.l) >> 16);
         r.s = sv + d - ((uint32_t)1 << 25);      /* true value in [0, 2^30] */
         r.c = cv - ((pa.h + pb.h + (z >> 16)) >> 5);
@@ -138,7 +138,7 @@ static trig_q_sc trig_q_add_frac(uint32_t m, uint32_t fr)
     return r;
 }
 #else
-static trig_q_sc trig_q_add_frac(uint32_t m, uint32_t fr)
+static trig_q_sc trigq_add_frac(uint32_t m, uint32_t fr)
 {
     trig_q_sc r;
     const uint32_t sv = (uint32_t)dh_trig_sin_q30[m];       /* sin m, 0..2^30 */
@@ -194,7 +194,7 @@ void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
     k = q & 3u;                                 /* quadrant: 90 * 4 = 360 */
     k |= (uint32_t)(deg_q16 < 0) << 2;          /* and the input's sign (one value live) */
     {
-        const trig_q_sc r = trig_q_add_frac(m, fr);
+        const trig_q_sc r = trigq_add_frac(m, fr);
         sv = r.s;
         cv = r.c;
     }
@@ -213,8 +213,8 @@ void dh_sincos_q(dh_q16 deg_q16, dh_q30 *s_q30, dh_q30 *c_q30)
     }
     if (((k >> 1) ^ (k >> 2)) & 1u) sv = 0u - sv;
     if ((k ^ (k >> 1)) & 1u) cv = 0u - cv;
-    *s_q30 = dh_trig_u2i(sv);
-    *c_q30 = dh_trig_u2i(cv);
+    *s_q30 = trigq_u2i(sv);
+    *c_q30 = trigq_u2i(cv);
 }
 
 dh_q30 dh_sin_q(dh_q16 deg_q16)

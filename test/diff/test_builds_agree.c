@@ -705,6 +705,7 @@ static void g_robot(diff_in *in)
     in->k[1] = q_q(r, (uint32_t)in->k[0]);
     in->sel = ru();
 }
+/* twin: g_ikq */
 static void g_ik(diff_in *in)
 {
     const dh_robot *r;
@@ -728,6 +729,7 @@ static void g_ik(diff_in *in)
     in->k[0] = (int32_t)rn(DIFF_IK_WORK + 1u);
     in->sel = ru() & (rn(16u) ? 1u : 3u);
 }
+/* twin: g_ik */
 static void g_ikq(diff_in *in)
 {
     const dh_robot *r;

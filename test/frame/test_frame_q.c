@@ -226,6 +226,7 @@ static void axis_rotation_vs_double(void)
             if (eo > worst_ortho) worst_ortho = eo;
         }
     }
+    dht_reach_max("rot_axis.ortho_reported", (double)worst_ortho); /* LSB: dh_frame_ortho_error_q, bound 3 */
     dht_printf("rot_axis: max entry error %.3f LSB, max |R^T R - I| %.3f LSB exact, %ld LSB reported, "
                "over %ld cases\n", worst, worst_exact, (long)worst_ortho, n);
 }
@@ -456,6 +457,7 @@ static void inverse_vs_double_and_identity(void)
             if (fabs((double)P.p[i]) > worst_pid) worst_pid = fabs((double)P.p[i]);
         }
     }
+    dht_reach_max("inv.rot_lsb", worst_rid); /* LSB: the largest rotation entry of T*T^-1 - I */
     dht_printf("inv: max p error %.4f LSB vs exact; T*T^-1: rotation max %.0f LSB, position max %.0f LSB "
                "(|p| <= 2^28 LSB); inputs' |R^T R - I| up to %.3f LSB (rotation bound 3e + 0.5, "
                "closest approach %.3f LSB)\n", worst_inv, worst_rid, worst_pid, worst_e, worst_slack);

@@ -292,6 +292,21 @@ static void puma_base_tool(dhs_robot *d)
     dhr_mul(&A, &B, &d->tool);
 }
 
+/* the Puma's description (d), integer robot (r) and closed-form model (m) */
+typedef struct {
+    dhs_robot d;
+    dh_robot r;
+    dh_ikc_model_q m;
+} puma_q;
+
+/* the Puma (base_tool: with puma_base_tool's base and tool) into *p */
+static void puma_model(int base_tool, puma_q *p)
+{
+    if (base_tool) puma_base_tool(&p->d);
+    else puma(&p->d);
+    dhk_build_q(&p->d, DH_IKC_WRIST_RRR, &p->r, &p->m);
+}
+
 static void base_tool_random(void)
 {
     dhs_robot d, f;
@@ -323,42 +338,39 @@ static void solve_q(const dh_robot *r, const dh_ikc_model_q *m, const int32_t *q
 
 static void singular_wrist(void)
 {
-    dhs_robot P;
-    dh_robot r;
-    dh_ikc_model_q m;
+    puma_q pm;
     long it;
     long tested = 0;
-    puma(&P);
-    dhk_build_q(&P, DH_IKC_WRIST_RRR, &r, &m);
+    puma_model(0, &pm);
     for (it = 0; it < DHT_ITER(500); it++) {
         double q[6];
         int32_t qq[6];
         dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
         uint32_t ns, s, hits = 0;
         dhr_mat4 Td;
-        dhs_random_q(&P, q);
+        dhs_random_q(&pm.d, q);
         /* a well-conditioned arm (elbow far from stretched and folded,
          * shoulder bent): its angles come out within a few LSB, so the
          * wrist sees less than the 2^-19 of its singular test */
         q[1] = dht_rand_uniform(-60.0, 60.0);
         q[2] = dht_rand_uniform(-40.0, 40.0);
         q[4] = 30.0;
-        if (!away_u(&P, q, 200.0)) continue;
+        if (!away_u(&pm.d, q, 200.0)) continue;
         tested++;
         q[4] = 0.0;
-        dhs_q_from_double(&r, q, qq);
-        solve_q(&r, &m, qq, qq, 0u, sol, &ns, &Td);
+        dhs_q_from_double(&pm.r, q, qq);
+        solve_q(&pm.r, &pm.m, qq, qq, 0u, sol, &ns, &Td);
         DHT_TRUE(ns >= 1u && ns <= 7u);
         for (s = 0; s < ns; s++) {
             /* the generating arm branch is singular (the others are not, in general) */
-            if (dhk_jdiff_q(&r, 0, sol[s].q[0], qq[0]) > DHK_COMP_DEG || dhk_jdiff_q(&r, 1, sol[s].q[1], qq[1]) > DHK_COMP_DEG ||
-                dhk_jdiff_q(&r, 2, sol[s].q[2], qq[2]) > DHK_COMP_DEG)
+            if (dhk_jdiff_q(&pm.r, 0, sol[s].q[0], qq[0]) > DHK_COMP_DEG || dhk_jdiff_q(&pm.r, 1, sol[s].q[1], qq[1]) > DHK_COMP_DEG ||
+                dhk_jdiff_q(&pm.r, 2, sol[s].q[2], qq[2]) > DHK_COMP_DEG)
                 continue;
             hits++;
             DHT_TRUE((sol[s].flags & DH_IKC_SING_WRIST) != 0u);
             DHT_TRUE((sol[s].flags & DH_IKC_WRIST_ALT) == 0u);
             /* joint 4 keeps the reference's value */
-            DHT_TRUE(dhk_jdiff_q(&r, 3, sol[s].q[3], qq[3]) == 0.0);
+            DHT_TRUE(dhk_jdiff_q(&pm.r, 3, sol[s].q[3], qq[3]) == 0.0);
         }
         DHT_EQ_INT(hits, 1);
     }
@@ -405,19 +417,16 @@ static void boundary_folded(void)
     const double t3 = atan2(e, a3) + PI_D; /* folded: t3 - phi = 180 deg */
     const double A = a2 + a3 * cos(t3) + e * sin(t3), B = a3 * sin(t3) - e * cos(t3);
     const double t2 = 90.0 - atan2(B, A) * 180.0 / PI_D; /* vx = 0 */
-    dhs_robot d;
-    dh_robot r;
-    dh_ikc_model_q m;
+    puma_q pm;
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
     dhr_mat4 Td;
     uint32_t ns, s;
     int i, j, k;
-    puma_base_tool(&d);
-    dhk_build_q(&d, DH_IKC_WRIST_RRR, &r, &m);
+    puma_model(1, &pm);
     for (i = 0; i < 2; i++) {
         int32_t qq[6];
-        dhs_q_from_double(&r, seen[i], qq);
-        solve_q(&r, &m, qq, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns, &Td);
+        dhs_q_from_double(&pm.r, seen[i], qq);
+        solve_q(&pm.r, &pm.m, qq, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns, &Td);
         DHT_TRUE(ns >= 1u);
         for (s = 0; s < ns; s++) DHT_TRUE((sol[s].flags & DH_IKC_SING_ELBOW) != 0u);
     }
@@ -426,9 +435,9 @@ static void boundary_folded(void)
             double q[6] = {-130.0, 0.0, 0.0, 40.0, 50.0, -60.0};
             int32_t qq[6];
             q[1] = t2 + 0.01 * j;
-            dhs_q_from_double(&r, q, qq);
+            dhs_q_from_double(&pm.r, q, qq);
             qq[2] = (int32_t)floor(t3 * 180.0 / PI_D * 65536.0 + 0.5) + k;
-            solve_q(&r, &m, qq, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns, &Td);
+            solve_q(&pm.r, &pm.m, qq, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns, &Td);
             DHT_TRUE(ns >= 1u);
         }
 }
@@ -443,22 +452,19 @@ static void boundary_beyond(void)
 {
     const double phi = atan2(-431.8, 20.3) * 180.0 / PI_D;
     const double rho = sqrt(20.3 * 20.3 + 431.8 * 431.8);
-    dhs_robot P;
-    dh_robot r;
-    dh_ikc_model_q m;
+    puma_q pm;
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
     dh_frame_q T;
     uint32_t ns, s;
     int i, far, folded;
-    puma(&P);
-    dhk_build_q(&P, DH_IKC_WRIST_RRR, &r, &m);
+    puma_model(0, &pm);
     for (folded = 0; folded < 2; folded++) {
         double q[6] = {20.0, -30.0, 0.0, 40.0, 50.0, -60.0}, w[3], nw = 0.0, wz = 0.0;
         dhr_mat4 fr[6], Td;
         int32_t qq[6];
         q[2] = folded ? phi + 180.0 : phi;
-        dhs_q_from_double(&r, q, qq);
-        dhs_fk_ref_q(&r, qq, fr, &Td);
+        dhs_q_from_double(&pm.r, q, qq);
+        dhs_fk_ref_q(&pm.r, qq, fr, &Td);
         /* from the joint 2 axis (frame 1) to the wrist centre (origin of
          * frame 4), normal to that axis: outward for stretched, inward for folded */
         for (i = 0; i < 3; i++) w[i] = fr[3].m[3][i] - fr[0].m[3][i];
@@ -475,17 +481,17 @@ static void boundary_beyond(void)
             for (i = 0; i < 3; i++) Tm.m[3][i] += dist * w[i] / nw;
             dhs_to_frame_q(&Tm, &T);
             if (far) {
-                DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_ERR_UNREACHABLE);
+                DHT_EQ_INT(dh_ikc_q(&pm.m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_ERR_UNREACHABLE);
                 DHT_EQ_INT(ns, 0);
             } else {
-                DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_OK);
+                DHT_EQ_INT(dh_ikc_q(&pm.m, &T, NULL, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_OK);
                 DHT_TRUE(ns >= 1u);
                 /* stretched: flagged; folded, the Puma's wrist centre lies
                  * within |delta| of the shoulder cylinder, where the
                  * target's rounding moves |v| by more than 2^5 LSB: the
                  * solutions may be the two branches of a point just inside */
                 for (s = 0; s < ns && !folded; s++) DHT_TRUE((sol[s].flags & DH_IKC_SING_ELBOW) != 0u);
-                (void)dhk_check_sols_q(&r, &Tm, sol, ns, NULL, NULL);
+                (void)dhk_check_sols_q(&pm.r, &Tm, sol, ns, NULL, NULL);
             }
         }
     }
@@ -525,44 +531,41 @@ static void singular_shoulder(void)
 
 static void limits_shift(void)
 {
-    dhs_robot P;
-    dh_robot r;
-    dh_ikc_model_q m;
+    puma_q pm;
     double q[6] = {10.0, -20.0, 30.0, 200.0, 40.0, -250.0};
     int32_t qq[6], qref[6];
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
     uint32_t ns, idx;
     dhr_mat4 Td;
     int f;
-    puma(&P);
-    dhk_build_q(&P, DH_IKC_WRIST_RRR, &r, &m);
-    dhs_q_from_double(&r, q, qq);
+    puma_model(0, &pm);
+    dhs_q_from_double(&pm.r, q, qq);
     /* q_ref = the configuration: joints 4 and 6 shifted to 200 and -250 */
     memcpy(qref, qq, sizeof qref);
-    solve_q(&r, &m, qq, qref, 0u, sol, &ns, &Td);
-    f = dhk_check_sols_q(&r, &Td, sol, ns, qq, NULL);
+    solve_q(&pm.r, &pm.m, qq, qref, 0u, sol, &ns, &Td);
+    f = dhk_check_sols_q(&pm.r, &Td, sol, ns, qq, NULL);
     DHT_TRUE(f >= 0);
     DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) - 200.0) < DHK_COMP_DEG);
     DHT_TRUE(fabs(ldexp((double)sol[f].q[5], -16) + 250.0) < DHK_COMP_DEG);
     DHT_EQ_INT(dh_ikc_nearest_q(sol, ns, qref, 6, &idx), DH_OK);
     DHT_EQ_INT(idx, f);
     /* q_ref zero: the values nearest 0, -160 and 110 */
-    solve_q(&r, &m, qq, NULL, 0u, sol, &ns, &Td);
-    f = dhk_check_sols_q(&r, &Td, sol, ns, qq, NULL);
+    solve_q(&pm.r, &pm.m, qq, NULL, 0u, sol, &ns, &Td);
+    f = dhk_check_sols_q(&pm.r, &Td, sol, ns, qq, NULL);
     DHT_TRUE(f >= 0);
     DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) + 160.0) < DHK_COMP_DEG);
     DHT_TRUE(fabs(ldexp((double)sol[f].q[5], -16) - 110.0) < DHK_COMP_DEG);
     /* wide limits (more than three turns): joint 4 shifted next to q_ref = 1000 */
-    DHT_EQ_INT(dh_robot_set_limits_q(&r, 3, -2000 * 65536, 2000 * 65536), DH_OK);
-    DHT_EQ_INT(dh_ikc_analyse_q(&r, &m), DH_OK);
+    DHT_EQ_INT(dh_robot_set_limits_q(&pm.r, 3, -2000 * 65536, 2000 * 65536), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_q(&pm.r, &pm.m), DH_OK);
     qref[3] = 1000 * 65536;
-    solve_q(&r, &m, qq, qref, 0u, sol, &ns, &Td);
-    f = dhk_check_sols_q(&r, &Td, sol, ns, qq, NULL);
+    solve_q(&pm.r, &pm.m, qq, qref, 0u, sol, &ns, &Td);
+    f = dhk_check_sols_q(&pm.r, &Td, sol, ns, qq, NULL);
     DHT_TRUE(f >= 0);
     DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) - 920.0) < DHK_COMP_DEG);
     qref[3] = -2000 * 65536;
-    solve_q(&r, &m, qq, qref, 0u, sol, &ns, &Td);
-    f = dhk_check_sols_q(&r, &Td, sol, ns, qq, NULL);
+    solve_q(&pm.r, &pm.m, qq, qref, 0u, sol, &ns, &Td);
+    f = dhk_check_sols_q(&pm.r, &Td, sol, ns, qq, NULL);
     DHT_TRUE(f >= 0);
     DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) + 1960.0) < DHK_COMP_DEG);
 }
@@ -704,18 +707,16 @@ static void no_closed_form(void)
 
 static void solve_errors(void)
 {
-    dhs_robot P;
-    dh_robot r;
-    dh_ikc_model_q m, bad;
+    puma_q pm;
+    dh_ikc_model_q bad;
     dh_frame_q T, X;
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL], canary[DH_IKC_MAX_SOL];
     uint32_t ns;
     int32_t qq[6] = {0, 0, 0, 0, 30 << 16, 0}, qref[6];
     dhr_mat4 Td;
     unsigned i;
-    puma(&P);
-    dhk_build_q(&P, DH_IKC_WRIST_RRR, &r, &m);
-    dhs_fk_ref_q(&r, qq, NULL, &Td);
+    puma_model(0, &pm);
+    dhs_fk_ref_q(&pm.r, qq, NULL, &Td);
     dhs_to_frame_q(&Td, &T);
     memset(canary, 0xA5, sizeof canary);
 #define EXPECT_UNTOUCHED(call, status)                                   \
@@ -726,64 +727,64 @@ static void solve_errors(void)
         DHT_EQ_INT(ns, 0);                                               \
         DHT_TRUE(memcmp(sol, canary, sizeof sol) == 0);                  \
     } while (0)
-    EXPECT_UNTOUCHED(dh_ikc_q(&m, &T, NULL, 2u, sol, &ns), DH_ERR_ARG);
-    bad = m;
+    EXPECT_UNTOUCHED(dh_ikc_q(&pm.m, &T, NULL, 2u, sol, &ns), DH_ERR_ARG);
+    bad = pm.m;
     bad.n = 5;
     EXPECT_UNTOUCHED(dh_ikc_q(&bad, &T, NULL, 0u, sol, &ns), DH_ERR_ARG);
-    bad = m;
+    bad = pm.m;
     bad.kind = (dh_ikc_kind)9;
     EXPECT_UNTOUCHED(dh_ikc_q(&bad, &T, NULL, 0u, sol, &ns), DH_ERR_ARG);
-    bad = m;
+    bad = pm.m;
     bad.off[2] = 200 * 65536; /* offsets are stored in (-180, 180] */
     EXPECT_UNTOUCHED(dh_ikc_q(&bad, &T, NULL, 0u, sol, &ns), DH_ERR_ARG);
-    bad = m;
+    bad = pm.m;
     bad.pre_inv.r[0][0] = INT32_MIN;
     EXPECT_UNTOUCHED(dh_ikc_q(&bad, &T, NULL, 0u, sol, &ns), DH_ERR_ARG);
-    bad = m;
+    bad = pm.m;
     bad.kind = DH_IKC_NONE;
     EXPECT_UNTOUCHED(dh_ikc_q(&bad, &T, NULL, 0u, sol, &ns), DH_ERR_UNAVAILABLE);
     /* not rigid: scaled, sheared, reflected, INT32_MIN entries */
     X = T;
     X.r[0][0] += (X.r[0][0] >= 0 ? 1 : -1) * (1 << 21);
-    EXPECT_UNTOUCHED(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_NOT_RIGID);
+    EXPECT_UNTOUCHED(dh_ikc_q(&pm.m, &X, NULL, 0u, sol, &ns), DH_ERR_NOT_RIGID);
     X = T;
     for (i = 0; i < 3; i++) X.r[2][i] = -X.r[2][i];
-    EXPECT_UNTOUCHED(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_NOT_RIGID);
+    EXPECT_UNTOUCHED(dh_ikc_q(&pm.m, &X, NULL, 0u, sol, &ns), DH_ERR_NOT_RIGID);
     X = T;
     X.r[1][1] = INT32_MIN;
-    EXPECT_UNTOUCHED(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_NOT_RIGID);
+    EXPECT_UNTOUCHED(dh_ikc_q(&pm.m, &X, NULL, 0u, sol, &ns), DH_ERR_NOT_RIGID);
     /* regression: every entry 1.09 (each below the 1.1 entry bound), so a
      * column's dot product, 3.56, lies above the int32 range of Q2.30 (it
      * was rounded to int32 and overflowed when 1 was subtracted) */
     for (i = 0; i < 9; i++) X.r[i / 3][i % 3] = (int32_t)(1.09 * 1073741824.0);
-    EXPECT_UNTOUCHED(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_NOT_RIGID);
+    EXPECT_UNTOUCHED(dh_ikc_q(&pm.m, &X, NULL, 0u, sol, &ns), DH_ERR_NOT_RIGID);
     for (i = 0; i < 9; i++) X.r[i / 3][i % 3] = (i % 2) ? -(int32_t)(1.09 * 1073741824.0) : (int32_t)(1.09 * 1073741824.0);
-    EXPECT_UNTOUCHED(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_NOT_RIGID);
+    EXPECT_UNTOUCHED(dh_ikc_q(&pm.m, &X, NULL, 0u, sol, &ns), DH_ERR_NOT_RIGID);
     /* far away: overflow (any coordinate, INT32_MIN and INT32_MAX included) */
     for (i = 0; i < 3; i++) {
         X = T;
         X.p[i] = dhs_to_q(20000.0 * DHK_LS, DH_QPOS_FRAC);
         ns = 77;
-        DHT_EQ_INT(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_OVERFLOW);
+        DHT_EQ_INT(dh_ikc_q(&pm.m, &X, NULL, 0u, sol, &ns), DH_ERR_OVERFLOW);
         DHT_EQ_INT(ns, 0);
         X.p[i] = INT32_MIN;
-        DHT_EQ_INT(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_OVERFLOW);
+        DHT_EQ_INT(dh_ikc_q(&pm.m, &X, NULL, 0u, sol, &ns), DH_ERR_OVERFLOW);
         X.p[i] = INT32_MAX;
-        DHT_EQ_INT(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_OVERFLOW);
+        DHT_EQ_INT(dh_ikc_q(&pm.m, &X, NULL, 0u, sol, &ns), DH_ERR_OVERFLOW);
         DHT_EQ_INT(ns, 0);
     }
     /* unreachable: 3000 mm away, rotation of the target */
     X = T;
     X.p[0] = dhs_to_q(3000.0 * DHK_LS, DH_QPOS_FRAC);
     ns = 77;
-    DHT_EQ_INT(dh_ikc_q(&m, &X, NULL, 0u, sol, &ns), DH_ERR_UNREACHABLE);
+    DHT_EQ_INT(dh_ikc_q(&pm.m, &X, NULL, 0u, sol, &ns), DH_ERR_UNREACHABLE);
     DHT_EQ_INT(ns, 0);
     /* extreme references: INT32_MIN / INT32_MAX in every joint */
     for (i = 0; i < 6; i++) qref[i] = (i & 1u) ? INT32_MAX : INT32_MIN;
-    DHT_EQ_INT(dh_ikc_q(&m, &T, qref, 0u, sol, &ns), DH_OK);
-    (void)dhk_check_sols_q(&r, &Td, sol, ns, NULL, NULL);
-    DHT_EQ_INT(dh_ikc_q(&m, &T, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_OK);
-    (void)dhk_check_sols_q(&r, &Td, sol, ns, NULL, NULL);
+    DHT_EQ_INT(dh_ikc_q(&pm.m, &T, qref, 0u, sol, &ns), DH_OK);
+    (void)dhk_check_sols_q(&pm.r, &Td, sol, ns, NULL, NULL);
+    DHT_EQ_INT(dh_ikc_q(&pm.m, &T, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_OK);
+    (void)dhk_check_sols_q(&pm.r, &Td, sol, ns, NULL, NULL);
 #undef EXPECT_UNTOUCHED
 }
 

@@ -675,7 +675,7 @@ static void ikc_vs_numerical(void)
         dh_robot r;
         dh_ikc_model_f32 m;
         dh_ik_params_f32 p;
-        long it, st_n, conv = 0, near = 0, derived = 0;
+        long it, st_n, conv = 0, near = 0, derived = 0, twins = 0;
         double worst = 0, ratio_max = 0;
         build(d, &r, &m);
         dh_ik_params_default_f32(&r, &p);
@@ -701,6 +701,7 @@ static void ikc_vs_numerical(void)
                 float q0[DHS_MAX_JOINTS], qo[DHS_MAX_JOINTS];
                 dh_ik_result_f32 res;
                 uint32_t i, s;
+                int by_twin = 0; /* the nearest is a limit twin beyond a limit */
                 dhs_random_q(d, q0d);
                 for (i = 0; i < r.n; i++) q0[i] = (float)q0d[i];
                 if (dh_ik_f32(&r, &T, q0, &p, work, sizeof work / sizeof work[0], qo, &res) != DH_OK) continue;
@@ -716,8 +717,12 @@ static void ikc_vs_numerical(void)
                     if ((sol[s].flags & DH_IKC_OUT_OF_LIMITS) != 0u &&
                         !dhs_limit_twin_f32(&r, sol[s].q, qo, MATCH_FLOOR, MATCH_FLOOR * 1e-3))
                         continue;
-                    if (dd < best) best = dd;
+                    if (dd < best) {
+                        best = dd;
+                        by_twin = (sol[s].flags & DH_IKC_OUT_OF_LIMITS) != 0u;
+                    }
                 }
+                if (by_twin && best <= MATCH_FLOOR) twins++;
                 if (best > MATCH_FLOOR) {
                     double bound;
                     const double ratio = numerical_ratio(&r, &T, sol, n, qo, ep, er, &bound);
@@ -733,9 +738,12 @@ static void ikc_vs_numerical(void)
                 if (best > worst) worst = best;
             }
         }
+        /* the results matched by a closed-form solution beyond a limit */
+        dht_reach_max("vs_numerical.twins", (double)twins);
         dht_printf("%s: %ld converged numerical solutions, all among the closed-form ones (nearest within %.3g "
-                   "deg; %ld beyond %g deg, distance / derived bound <= %.3g; not compared: %ld within 1e-2 of a "
-                   "singularity)\n", d->name, conv, worst, derived, MATCH_FLOOR, ratio_max, near);
+                   "deg, %ld of them a limit twin; %ld beyond %g deg, distance / derived bound <= %.3g; not compared: "
+                   "%ld within 1e-2 of a singularity)\n", d->name, conv, worst, twins, derived, MATCH_FLOOR, ratio_max,
+                   near);
     }
 }
 
@@ -967,7 +975,7 @@ static void ikc_detect(void)
 
 /* not the family: each structural condition of the detectors broken on its
  * own (a twist 1 degree off, a length that must be zero made non-zero, a
- * length that must be non-zero made zero) */
+ * length that must be non-zero made zero); twin: not_family of test_ikc_ur_q.c */
 static void not_family(const dhs_robot *d, dh_ikc_kind kind)
 {
     dh_robot r;

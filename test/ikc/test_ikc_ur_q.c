@@ -23,6 +23,11 @@
 /* lengths scaled by DHK_LS and the tolerances DHK_POS_TOL, DHK_ROT_TOL,
  * DHK_COMP_DEG: support_ikc.h */
 #define AWAY 1e-2     /* normalised distance from the singularities */
+/* shoulder part below which a target is in the shoulder band (the joint 5
+ * point within about 0.2 mm of the shoulder cylinder on the UR3): joint 1
+ * free by the target's rounding, which the solver's search along the
+ * shoulder's freedom must absorb when the elbow is near its boundary */
+#define SBAND 2e-4
 #define PI_D 3.14159265358979323846
 #define D2R (PI_D / 180.0)
 
@@ -48,7 +53,10 @@ static int scara_conditioned(const dhs_robot *d, const double *q)
 }
 
 /* probe (may be NULL): the prefix of the reach probes of the singular
- * distances drawn (dhk_reach_sing) */
+ * distances drawn (dhk_reach_sing), and, for the targets in the shoulder
+ * band (shoulder part below SBAND), "<probe>.sband_e" (their smallest
+ * elbow part) and "<probe>.sband_ew" (their smallest max of the elbow and
+ * wrist parts): the corners of the shoulder band and the elbow's boundary */
 static void random_run(const dhs_robot *d, dh_ikc_kind kind, long iters, const char *probe)
 {
     dh_robot r;
@@ -70,7 +78,16 @@ static void random_run(const dhs_robot *d, dh_ikc_kind kind, long iters, const c
         dhs_q_from_double(&r, q, qq);
         comp = dhk_sing_parts(d, q, part) >= AWAY &&
                (d->n == 4u ? scara_conditioned(d, q) : dhk_well_conditioned_q(d, q, 0.5 * DHK_COMP_DEG, 6));
-        if (probe) dhk_reach_sing(probe, part);
+        if (probe) {
+            dhk_reach_sing(probe, part);
+            if (part[0] < SBAND) {
+                char name[48];
+                snprintf(name, sizeof name, "%s.sband_e", probe);
+                dht_reach_min(name, part[1]);
+                snprintf(name, sizeof name, "%s.sband_ew", probe);
+                dht_reach_min(name, fmax(part[1], part[2]));
+            }
+        }
         dhs_fk_ref_q(&r, qq, NULL, &Td);
         dhs_to_frame_q(&Td, &T);
         rc = dh_ikc_q(&m, &T, NULL, 0u, sol, &ns);
@@ -146,113 +163,114 @@ static int among(const dh_robot *r, const dh_ikc_sol_q *sol, uint32_t ns, const 
 
 static const dhs_robot *const g_ur[3] = {&dhs_ur3_mm, &dhs_ur5_mm, &dhs_ur10_mm};
 
-/* q5 = 0 or 180: wrist singular, joint 6 from q_ref */
-static void ur_wrist_singular(void)
+/* one robot of these tests in mm: description, integer robot, model */
+typedef struct {
+    dhs_robot d;
+    dh_robot r;
+    dh_ikc_model_q m;
+} urq_case;
+
+/* body on each of the first count robots of UR3, UR5, UR10, Cobra 600 */
+static void urq_each(unsigned count, void (*body)(const urq_case *rc))
 {
-    unsigned ri;
-    for (ri = 0; ri < 3u; ri++) {
-        dhs_robot d;
-        dh_robot r;
-        dh_ikc_model_q m;
-        long it, n = 0;
-        robot_mm(&d, g_ur[ri]);
-        dhk_build_q(&d, DH_IKC_PARALLEL_234, &r, &m);
-        /* until DHT_ITER(500) targets pass the filter (at most 20 times as many tries) */
-        for (it = 0; it < 20L * DHT_ITER(500) && n < DHT_ITER(500); it++) {
-            double q[6], part[3];
-            int32_t qq[6], qref[6] = {0};
-            dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
-            uint32_t ns, fl;
-            dhs_random_q(&d, q);
-            q[4] = (it & 1) ? 180.0 : 0.0;
-            (void)dhk_sing_parts(&d, q, part);
-            if (part[0] < 0.1 || part[1] < 0.1) continue;
-            dhs_q_from_double(&r, q, qq);
-            qref[5] = qq[5];
-            ns = solve_q(&r, &m, qq, qref, sol, &fl);
-            DHT_TRUE_MSG((fl & DH_IKC_SING_WRIST) != 0u, "%s: q5 = %g not flagged", d.name, q[4]);
-            DHT_TRUE(ns <= 6u);
-            DHT_TRUE_MSG(among(&r, sol, ns, qq, 1e-2), "%s: q not found with qref6 = q6", d.name);
-            n++;
-        }
-        DHT_TRUE(n > 0);
+    unsigned i;
+    for (i = 0; i < count; i++) {
+        urq_case rc;
+        robot_mm(&rc.d, i < 3u ? g_ur[i] : &dhs_cobra600_mm);
+        dhk_build_q(&rc.d, i < 3u ? DH_IKC_PARALLEL_234 : DH_IKC_SCARA, &rc.r, &rc.m);
+        body(&rc);
     }
 }
+
+/* q5 = 0 or 180: wrist singular, joint 6 from q_ref */
+static void ur_wrist_singular_case(const urq_case *rc)
+{
+    long it, n = 0;
+    /* until DHT_ITER(500) targets pass the filter (at most 20 times as many tries) */
+    for (it = 0; it < 20L * DHT_ITER(500) && n < DHT_ITER(500); it++) {
+        double q[6], part[3];
+        int32_t qq[6], qref[6] = {0};
+        dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+        uint32_t ns, fl;
+        dhs_random_q(&rc->d, q);
+        q[4] = (it & 1) ? 180.0 : 0.0;
+        (void)dhk_sing_parts(&rc->d, q, part);
+        if (part[0] < 0.1 || part[1] < 0.1) continue;
+        dhs_q_from_double(&rc->r, q, qq);
+        qref[5] = qq[5];
+        ns = solve_q(&rc->r, &rc->m, qq, qref, sol, &fl);
+        DHT_TRUE_MSG((fl & DH_IKC_SING_WRIST) != 0u, "%s: q5 = %g not flagged", rc->d.name, q[4]);
+        DHT_TRUE(ns <= 6u);
+        DHT_TRUE_MSG(among(&rc->r, sol, ns, qq, 1e-2), "%s: q not found with qref6 = q6", rc->d.name);
+        n++;
+    }
+    DHT_TRUE(n > 0);
+}
+
+static void ur_wrist_singular(void) { urq_each(3u, ur_wrist_singular_case); }
 
 /* the joint 5 point on the cylinder u = 0: flagged, returned once; the
  * singular distances drawn are the reach probes "u0.<robot>" */
-static void ur_shoulder_singular(void)
+static void ur_shoulder_singular_case(const urq_case *rc)
 {
-    unsigned ri;
-    for (ri = 0; ri < 3u; ri++) {
-        dhs_robot d;
-        dh_robot r;
-        dh_ikc_model_q m;
-        long it;
-        int found = 0;
-        robot_mm(&d, g_ur[ri]);
-        dhk_build_q(&d, DH_IKC_PARALLEL_234, &r, &m);
-        for (it = 0; it < 20L * DHT_ITER(500) && found < DHT_ITER(500); it++) {
-            const double a2 = d.j[1].a, a3 = d.j[2].a, e5 = d.j[4].d;
-            double q[6], X, Y, R, c, phi;
-            int32_t qq[6];
-            dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
-            uint32_t ns, fl;
-            dhs_random_q(&d, q);
-            phi = (q[1] + q[2] + q[3]) * D2R;
-            X = a2 + a3 * cos(q[2] * D2R);
-            Y = a3 * sin(q[2] * D2R);
-            R = sqrt(X * X + Y * Y);
-            c = -e5 * sin(phi);
-            if (fabs(c) >= R) continue;
-            q[1] = (-atan2(Y, X) + ((it & 1) ? 1 : -1) * acos(c / R)) / D2R;
-            q[3] = phi / D2R - q[1] - q[2];
-            dhs_q_from_double(&r, q, qq);
-            {
-                double part[3];
-                char pre[40];
-                (void)dhk_sing_parts(&d, q, part);
-                snprintf(pre, sizeof pre, "u0.%s", d.name);
-                dhk_reach_sing(pre, part);
-            }
-            ns = solve_q(&r, &m, qq, NULL, sol, &fl);
-            DHT_TRUE_MSG((fl & DH_IKC_SING_SHOULDER) != 0u, "%s: u = 0 not flagged", d.name);
-            DHT_TRUE_MSG(ns <= 4u, "%s: %u solutions with the shoulder branches merged", d.name, (unsigned)ns);
-            found++;
+    long it;
+    int found = 0;
+    for (it = 0; it < 20L * DHT_ITER(500) && found < DHT_ITER(500); it++) {
+        const double a2 = rc->d.j[1].a, a3 = rc->d.j[2].a, e5 = rc->d.j[4].d;
+        double q[6], X, Y, R, c, phi;
+        int32_t qq[6];
+        dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+        uint32_t ns, fl;
+        dhs_random_q(&rc->d, q);
+        phi = (q[1] + q[2] + q[3]) * D2R;
+        X = a2 + a3 * cos(q[2] * D2R);
+        Y = a3 * sin(q[2] * D2R);
+        R = sqrt(X * X + Y * Y);
+        c = -e5 * sin(phi);
+        if (fabs(c) >= R) continue;
+        q[1] = (-atan2(Y, X) + ((it & 1) ? 1 : -1) * acos(c / R)) / D2R;
+        q[3] = phi / D2R - q[1] - q[2];
+        dhs_q_from_double(&rc->r, q, qq);
+        {
+            double part[3];
+            char pre[40];
+            (void)dhk_sing_parts(&rc->d, q, part);
+            snprintf(pre, sizeof pre, "u0.%s", rc->d.name);
+            dhk_reach_sing(pre, part);
         }
-        DHT_TRUE(found > 0);
+        ns = solve_q(&rc->r, &rc->m, qq, NULL, sol, &fl);
+        DHT_TRUE_MSG((fl & DH_IKC_SING_SHOULDER) != 0u, "%s: u = 0 not flagged", rc->d.name);
+        DHT_TRUE_MSG(ns <= 4u, "%s: %u solutions with the shoulder branches merged", rc->d.name, (unsigned)ns);
+        found++;
     }
+    DHT_TRUE(found > 0);
 }
 
+static void ur_shoulder_singular(void) { urq_each(3u, ur_shoulder_singular_case); }
+
 /* stretched or folded elbow: UR q3 = 0 / 180, SCARA q2 = 0 */
-static void elbow_singular(void)
+static void elbow_singular_case(const urq_case *rc)
 {
-    unsigned ri;
-    for (ri = 0; ri < 4u; ri++) {
-        dhs_robot d;
-        dh_robot r;
-        dh_ikc_model_q m;
-        long it, n = 0;
-        robot_mm(&d, ri < 3u ? g_ur[ri] : &dhs_cobra600_mm);
-        dhk_build_q(&d, ri < 3u ? DH_IKC_PARALLEL_234 : DH_IKC_SCARA, &r, &m);
-        for (it = 0; it < 20L * DHT_ITER(500) && n < DHT_ITER(500); it++) {
-            double q[6] = {0}, part[3];
-            int32_t qq[6] = {0};
-            dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
-            uint32_t ns, fl, j = (d.n == 4u) ? 1u : 2u;
-            dhs_random_q(&d, q);
-            q[j] = (d.n == 6u && (it & 1)) ? 180.0 : 0.0;
-            (void)dhk_sing_parts(&d, q, part);
-            if (part[0] < 0.1 || part[2] < 0.1) continue;
-            dhs_q_from_double(&r, q, qq);
-            ns = solve_q(&r, &m, qq, NULL, sol, &fl);
-            DHT_TRUE_MSG((fl & DH_IKC_SING_ELBOW) != 0u, "%s: q%u = %g not flagged", d.name, (unsigned)j + 1u, q[j]);
-            DHT_TRUE(ns <= (d.n == 4u ? 1u : 7u));
-            n++;
-        }
-        DHT_TRUE(n > 0);
+    long it, n = 0;
+    for (it = 0; it < 20L * DHT_ITER(500) && n < DHT_ITER(500); it++) {
+        double q[6] = {0}, part[3];
+        int32_t qq[6] = {0};
+        dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+        uint32_t ns, fl, j = (rc->d.n == 4u) ? 1u : 2u;
+        dhs_random_q(&rc->d, q);
+        q[j] = (rc->d.n == 6u && (it & 1)) ? 180.0 : 0.0;
+        (void)dhk_sing_parts(&rc->d, q, part);
+        if (part[0] < 0.1 || part[2] < 0.1) continue;
+        dhs_q_from_double(&rc->r, q, qq);
+        ns = solve_q(&rc->r, &rc->m, qq, NULL, sol, &fl);
+        DHT_TRUE_MSG((fl & DH_IKC_SING_ELBOW) != 0u, "%s: q%u = %g not flagged", rc->d.name, (unsigned)j + 1u, q[j]);
+        DHT_TRUE(ns <= (rc->d.n == 4u ? 1u : 7u));
+        n++;
     }
+    DHT_TRUE(n > 0);
 }
+
+static void elbow_singular(void) { urq_each(4u, elbow_singular_case); }
 
 /* SCARA with joint 3's frame origin on axis 1 (a1 = a2 folded is not the
  * Cobra; a test table with equal links): joint 1 from q_ref, flagged */
@@ -324,87 +342,81 @@ static double norm3(double *e)
  * configuration among the solutions, elbow flagged); by 4 B it is
  * unreachable. Folded (q3 = 180): moved by B / 2 into the elbow's hole the
  * generating branch is solved; by 4 B it is not among the solutions. */
-static void ur_boundary_elbow(void)
+static void ur_boundary_elbow_case(const urq_case *rc)
 {
-    unsigned ri;
-    for (ri = 0; ri < 3u; ri++) {
-        dhs_robot d;
-        dh_robot r;
-        dh_ikc_model_q m;
-        long it, n[2] = {0, 0};
-        robot_mm(&d, g_ur[ri]);
-        dhk_build_q(&d, DH_IKC_PARALLEL_234, &r, &m);
-        for (it = 0; it < 20L * DHT_ITER(200) && (n[0] < DHT_ITER(200) || n[1] < DHT_ITER(200)); it++) {
-            const int folded = (int)(it & 1);
-            const double L = fabs(d.j[1].a) + fabs(d.j[2].a), e5 = fabs(d.j[4].d);
-            const double h = d.j[1].d + d.j[2].d + d.j[3].d;
-            double q[6], part[3], e[3], R, best = -1.0;
-            int32_t qq[6];
-            dhr_mat4 F[DHS_MAX_JOINTS], Td, Ts;
-            dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
-            uint32_t ns, fl;
-            int k, i;
-            if (n[folded] >= DHT_ITER(200)) continue;
-            dhs_random_q(&d, q);
-            q[2] = folded ? 180.0 : 0.0;
-            for (k = 0; k < 2; k++) { /* q4 = +-90: the joint 5 point farther from the frame 1 origin */
-                double qt[6];
-                memcpy(qt, q, sizeof qt);
-                qt[3] = k ? -90.0 : 90.0;
-                dhs_fk_desc(&d, qt, F, NULL);
-                for (i = 0; i < 3; i++) e[i] = F[4].m[3][i] - F[0].m[3][i];
-                R = norm3(e);
-                if (R > best) {
-                    best = R;
-                    q[3] = qt[3];
-                }
+    long it, n[2] = {0, 0};
+    for (it = 0; it < 20L * DHT_ITER(200) && (n[0] < DHT_ITER(200) || n[1] < DHT_ITER(200)); it++) {
+        const int folded = (int)(it & 1);
+        const double L = fabs(rc->d.j[1].a) + fabs(rc->d.j[2].a), e5 = fabs(rc->d.j[4].d);
+        const double h = rc->d.j[1].d + rc->d.j[2].d + rc->d.j[3].d;
+        double q[6], part[3], e[3], R, best = -1.0;
+        int32_t qq[6];
+        dhr_mat4 F[DHS_MAX_JOINTS], Td, Ts;
+        dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+        uint32_t ns, fl;
+        int k, i;
+        if (n[folded] >= DHT_ITER(200)) continue;
+        dhs_random_q(&rc->d, q);
+        q[2] = folded ? 180.0 : 0.0;
+        for (k = 0; k < 2; k++) { /* q4 = +-90: the joint 5 point farther from the frame 1 origin */
+            double qt[6];
+            memcpy(qt, q, sizeof qt);
+            qt[3] = k ? -90.0 : 90.0;
+            dhs_fk_desc(&rc->d, qt, F, NULL);
+            for (i = 0; i < 3; i++) e[i] = F[4].m[3][i] - F[0].m[3][i];
+            R = norm3(e);
+            if (R > best) {
+                best = R;
+                q[3] = qt[3];
             }
-            /* UR10 folded: |u| <= |a2| - |a3| + |d5| = 0.09 L */
-            (void)dhk_sing_parts(&d, q, part);
-            if (part[0] < 0.05 || part[2] < 0.1) continue;
-            dhs_q_from_double(&r, q, qq);
-            dhs_fk_ref_q(&r, qq, F, &Td);
-            if (!folded) {
-                /* outward from the frame 1 origin, on the sphere of the
-                 * largest reach */
-                for (i = 0; i < 3; i++) e[i] = F[4].m[3][i] - F[0].m[3][i];
-                R = norm3(e);
-                DHT_TRUE_MSG(fabs(R - sqrt((L + e5) * (L + e5) + h * h)) <= 4.0 * ldexp(1.0, -DH_QPOS_FRAC),
-                             "%s: joint 5 point at %.9g from the frame 1 origin", d.name, R);
-            } else {
-                /* toward joint 2's axis in the arm's plane (normal z1):
-                 * the frame 3 origin less its z1 component */
-                double z[3], w[3], dz = 0.0;
-                for (i = 0; i < 3; i++) {
-                    z[i] = F[0].m[2][i];
-                    w[i] = F[2].m[3][i] - F[0].m[3][i];
-                    dz += w[i] * z[i];
-                }
-                for (i = 0; i < 3; i++) e[i] = -(w[i] - dz * z[i]);
-                R = norm3(e);
-                DHT_TRUE_MSG(fabs(R - fabs(fabs(d.j[1].a) - fabs(d.j[2].a))) <= 4.0 * ldexp(1.0, -DH_QPOS_FRAC),
-                             "%s: folded planar point at %.9g", d.name, R);
-            }
-            Ts = Td;
-            shift(&Ts, e, 0.5 * BOUND);
-            DHT_EQ_INT(solve_T(&r, &m, &Ts, sol, &ns, &fl), DH_OK);
-            DHT_TRUE_MSG((fl & DH_IKC_SING_ELBOW) != 0u, "%s: B / 2 beyond the elbow's reach not flagged", d.name);
-            DHT_TRUE_MSG(among(&r, sol, ns, qq, DHK_COMP_DEG), "%s: %s elbow B / 2 beyond: q not among %u solutions",
-                         d.name, folded ? "folded" : "stretched", (unsigned)ns);
-            Ts = Td;
-            shift(&Ts, e, 4.0 * BOUND);
-            if (!folded) {
-                DHT_EQ_INT(solve_T(&r, &m, &Ts, sol, &ns, &fl), DH_ERR_UNREACHABLE);
-                DHT_EQ_INT(ns, 0);
-            } else if (solve_T(&r, &m, &Ts, sol, &ns, &fl) == DH_OK) {
-                DHT_TRUE_MSG(!among(&r, sol, ns, qq, 0.1), "%s: folded elbow 4 B beyond: q among the solutions",
-                             d.name);
-            }
-            n[folded]++;
         }
-        DHT_TRUE(n[0] > 0 && n[1] > 0);
+        /* UR10 folded: |u| <= |a2| - |a3| + |d5| = 0.09 L */
+        (void)dhk_sing_parts(&rc->d, q, part);
+        if (part[0] < 0.05 || part[2] < 0.1) continue;
+        dhs_q_from_double(&rc->r, q, qq);
+        dhs_fk_ref_q(&rc->r, qq, F, &Td);
+        if (!folded) {
+            /* outward from the frame 1 origin, on the sphere of the
+             * largest reach */
+            for (i = 0; i < 3; i++) e[i] = F[4].m[3][i] - F[0].m[3][i];
+            R = norm3(e);
+            DHT_TRUE_MSG(fabs(R - sqrt((L + e5) * (L + e5) + h * h)) <= 4.0 * ldexp(1.0, -DH_QPOS_FRAC),
+                         "%s: joint 5 point at %.9g from the frame 1 origin", rc->d.name, R);
+        } else {
+            /* toward joint 2's axis in the arm's plane (normal z1):
+             * the frame 3 origin less its z1 component */
+            double z[3], w[3], dz = 0.0;
+            for (i = 0; i < 3; i++) {
+                z[i] = F[0].m[2][i];
+                w[i] = F[2].m[3][i] - F[0].m[3][i];
+                dz += w[i] * z[i];
+            }
+            for (i = 0; i < 3; i++) e[i] = -(w[i] - dz * z[i]);
+            R = norm3(e);
+            DHT_TRUE_MSG(fabs(R - fabs(fabs(rc->d.j[1].a) - fabs(rc->d.j[2].a))) <= 4.0 * ldexp(1.0, -DH_QPOS_FRAC),
+                         "%s: folded planar point at %.9g", rc->d.name, R);
+        }
+        Ts = Td;
+        shift(&Ts, e, 0.5 * BOUND);
+        DHT_EQ_INT(solve_T(&rc->r, &rc->m, &Ts, sol, &ns, &fl), DH_OK);
+        DHT_TRUE_MSG((fl & DH_IKC_SING_ELBOW) != 0u, "%s: B / 2 beyond the elbow's reach not flagged", rc->d.name);
+        DHT_TRUE_MSG(among(&rc->r, sol, ns, qq, DHK_COMP_DEG), "%s: %s elbow B / 2 beyond: q not among %u solutions",
+                     rc->d.name, folded ? "folded" : "stretched", (unsigned)ns);
+        Ts = Td;
+        shift(&Ts, e, 4.0 * BOUND);
+        if (!folded) {
+            DHT_EQ_INT(solve_T(&rc->r, &rc->m, &Ts, sol, &ns, &fl), DH_ERR_UNREACHABLE);
+            DHT_EQ_INT(ns, 0);
+        } else if (solve_T(&rc->r, &rc->m, &Ts, sol, &ns, &fl) == DH_OK) {
+            DHT_TRUE_MSG(!among(&rc->r, sol, ns, qq, 0.1), "%s: folded elbow 4 B beyond: q among the solutions",
+                         rc->d.name);
+        }
+        n[folded]++;
     }
+    DHT_TRUE(n[0] > 0 && n[1] > 0);
 }
+
+static void ur_boundary_elbow(void) { urq_each(3u, ur_boundary_elbow_case); }
 
 /* A configuration with the joint 5 point on the shoulder cylinder (u = 0,
  * as ur_shoulder_singular); elbow (q3 = 0 or 180) offset by `off` deg, or
@@ -434,133 +446,115 @@ static int u_zero_q(const dhs_robot *d, long it, double off, double s5min, doubl
  * joint 1 by 30 / |h| rad, which the wrist amplifies by 1 / |s5| <= 3.3);
  * 4 B into it: unreachable (no configuration puts the joint 5 point nearer
  * axis 1 than |h|). */
-static void ur_boundary_shoulder(void)
+static void ur_boundary_shoulder_case(const urq_case *rc)
 {
-    unsigned ri;
-    for (ri = 0; ri < 3u; ri++) {
-        dhs_robot d;
-        dh_robot r;
-        dh_ikc_model_q m;
-        long it, n = 0;
-        robot_mm(&d, g_ur[ri]);
-        dhk_build_q(&d, DH_IKC_PARALLEL_234, &r, &m);
-        for (it = 0; it < 20L * DHT_ITER(200) && n < DHT_ITER(200); it++) {
-            const double h = d.j[1].d + d.j[2].d + d.j[3].d;
-            double q[6], e[3], ez = 0.0, R;
-            int32_t qq[6];
-            dhr_mat4 F[DHS_MAX_JOINTS], Td, Ts;
-            dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
-            uint32_t ns, fl;
-            int i;
-            if (!u_zero_q(&d, it, -1.0, 0.3, q)) continue;
-            dhs_q_from_double(&r, q, qq);
-            dhs_fk_ref_q(&r, qq, F, &Td);
-            /* from axis 1 (base z through the base origin) to the joint 5 point */
-            for (i = 0; i < 3; i++) {
-                e[i] = F[4].m[3][i] - d.base.m[3][i];
-                ez += e[i] * d.base.m[2][i];
-            }
-            for (i = 0; i < 3; i++) e[i] -= ez * d.base.m[2][i];
-            R = norm3(e);
-            DHT_TRUE_MSG(fabs(R - fabs(h)) <= 4.0 * ldexp(1.0, -DH_QPOS_FRAC),
-                         "%s: joint 5 point at %.9g from axis 1, |h| = %.9g", d.name, R, fabs(h));
-            Ts = Td;
-            shift(&Ts, e, -0.5 * BOUND);
-            DHT_EQ_INT(solve_T(&r, &m, &Ts, sol, &ns, &fl), DH_OK);
-            DHT_TRUE_MSG((fl & DH_IKC_SING_SHOULDER) != 0u, "%s: B / 2 inside the cylinder not flagged", d.name);
-            DHT_TRUE_MSG(among(&r, sol, ns, qq, 1e-2), "%s: B / 2 inside the cylinder: q not among %u solutions",
-                         d.name, (unsigned)ns);
-            Ts = Td;
-            shift(&Ts, e, -4.0 * BOUND);
-            DHT_EQ_INT(solve_T(&r, &m, &Ts, sol, &ns, &fl), DH_ERR_UNREACHABLE);
-            DHT_EQ_INT(ns, 0);
-            n++;
+    long it, n = 0;
+    for (it = 0; it < 20L * DHT_ITER(200) && n < DHT_ITER(200); it++) {
+        const double h = rc->d.j[1].d + rc->d.j[2].d + rc->d.j[3].d;
+        double q[6], e[3], ez = 0.0, R;
+        int32_t qq[6];
+        dhr_mat4 F[DHS_MAX_JOINTS], Td, Ts;
+        dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+        uint32_t ns, fl;
+        int i;
+        if (!u_zero_q(&rc->d, it, -1.0, 0.3, q)) continue;
+        dhs_q_from_double(&rc->r, q, qq);
+        dhs_fk_ref_q(&rc->r, qq, F, &Td);
+        /* from axis 1 (base z through the base origin) to the joint 5 point */
+        for (i = 0; i < 3; i++) {
+            e[i] = F[4].m[3][i] - rc->d.base.m[3][i];
+            ez += e[i] * rc->d.base.m[2][i];
         }
-        DHT_TRUE(n > 0);
+        for (i = 0; i < 3; i++) e[i] -= ez * rc->d.base.m[2][i];
+        R = norm3(e);
+        DHT_TRUE_MSG(fabs(R - fabs(h)) <= 4.0 * ldexp(1.0, -DH_QPOS_FRAC),
+                     "%s: joint 5 point at %.9g from axis 1, |h| = %.9g", rc->d.name, R, fabs(h));
+        Ts = Td;
+        shift(&Ts, e, -0.5 * BOUND);
+        DHT_EQ_INT(solve_T(&rc->r, &rc->m, &Ts, sol, &ns, &fl), DH_OK);
+        DHT_TRUE_MSG((fl & DH_IKC_SING_SHOULDER) != 0u, "%s: B / 2 inside the cylinder not flagged", rc->d.name);
+        DHT_TRUE_MSG(among(&rc->r, sol, ns, qq, 1e-2), "%s: B / 2 inside the cylinder: q not among %u solutions",
+                     rc->d.name, (unsigned)ns);
+        Ts = Td;
+        shift(&Ts, e, -4.0 * BOUND);
+        DHT_EQ_INT(solve_T(&rc->r, &rc->m, &Ts, sol, &ns, &fl), DH_ERR_UNREACHABLE);
+        DHT_EQ_INT(ns, 0);
+        n++;
     }
+    DHT_TRUE(n > 0);
 }
+
+static void ur_boundary_shoulder(void) { urq_each(3u, ur_boundary_shoulder_case); }
 
 /* The joint 5 point on the shoulder cylinder and the elbow within 0.05 deg
  * of stretched or folded: the rounding of the target moves the exact
  * joint 1 by up to sqrt(2 |h| LSB) / |h| (3e-4 rad), which the wrist
  * amplifies into the planar point; every such target is solved. */
-static void ur_boundary_corner(void)
+static void ur_boundary_corner_case(const urq_case *rc)
 {
-    unsigned ri;
-    for (ri = 0; ri < 3u; ri++) {
-        dhs_robot d;
-        dh_robot r;
-        dh_ikc_model_q m;
-        long it, n = 0;
-        robot_mm(&d, g_ur[ri]);
-        dhk_build_q(&d, DH_IKC_PARALLEL_234, &r, &m);
-        for (it = 0; it < 20L * DHT_ITER(500) && n < DHT_ITER(500); it++) {
-            double q[6];
-            int32_t qq[6];
-            dhr_mat4 Td;
-            dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
-            uint32_t ns, fl;
-            if (!u_zero_q(&d, it, 0.05, 0.05, q)) continue;
-            dhs_q_from_double(&r, q, qq);
-            dhs_fk_ref_q(&r, qq, NULL, &Td);
-            DHT_TRUE_MSG(solve_T(&r, &m, &Td, sol, &ns, &fl) == DH_OK && ns >= 1u,
-                         "%s: corner target refused, q %.6f %.6f %.6f %.6f %.6f %.6f", d.name, q[0], q[1], q[2], q[3],
-                         q[4], q[5]);
-            n++;
-        }
-        DHT_TRUE(n > 0);
+    long it, n = 0;
+    for (it = 0; it < 20L * DHT_ITER(500) && n < DHT_ITER(500); it++) {
+        double q[6];
+        int32_t qq[6];
+        dhr_mat4 Td;
+        dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+        uint32_t ns, fl;
+        if (!u_zero_q(&rc->d, it, 0.05, 0.05, q)) continue;
+        dhs_q_from_double(&rc->r, q, qq);
+        dhs_fk_ref_q(&rc->r, qq, NULL, &Td);
+        DHT_TRUE_MSG(solve_T(&rc->r, &rc->m, &Td, sol, &ns, &fl) == DH_OK && ns >= 1u,
+                     "%s: corner target refused, q %.6f %.6f %.6f %.6f %.6f %.6f", rc->d.name, q[0], q[1], q[2], q[3],
+                     q[4], q[5]);
+        n++;
     }
+    DHT_TRUE(n > 0);
 }
+
+static void ur_boundary_corner(void) { urq_each(3u, ur_boundary_corner_case); }
 
 /* ---- unreachable and statuses --------------------------------------------- */
 
-static void unreachable(void)
+static void unreachable_case(const urq_case *rc)
 {
-    unsigned ri;
-    for (ri = 0; ri < 4u; ri++) {
-        dhs_robot d;
-        dh_robot r;
-        dh_ikc_model_q m;
-        long it;
-        robot_mm(&d, ri < 3u ? g_ur[ri] : &dhs_cobra600_mm);
-        dhk_build_q(&d, ri < 3u ? DH_IKC_PARALLEL_234 : DH_IKC_SCARA, &r, &m);
-        for (it = 0; it < DHT_ITER(200); it++) {
-            double q[6] = {0}, L = 0, sc, rxy;
-            int32_t qq[6] = {0};
-            dhr_mat4 Td;
-            dh_frame_q T;
-            dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
-            uint32_t ns = 9, i;
-            for (i = 0; i < d.n; i++) L += fabs(d.j[i].a) + fabs(d.j[i].d);
-            dhs_random_q(&d, q);
-            dhs_q_from_double(&r, q, qq);
-            dhs_fk_ref_q(&r, qq, NULL, &Td);
-            rxy = sqrt(Td.m[3][0] * Td.m[3][0] + Td.m[3][1] * Td.m[3][1]);
-            sc = dht_rand_uniform(1.2, 5.0) * L / (rxy > 1e-3 ? rxy : 1e-3);
-            Td.m[3][0] *= sc;
-            Td.m[3][1] *= sc;
-            dhs_to_frame_q(&Td, &T);
-            DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, 0u, sol, &ns), DH_ERR_UNREACHABLE);
-            DHT_EQ_INT(ns, 0);
-        }
-        if (d.n == 4u) {
-            /* a tool axis not parallel to the joint axes */
-            double q[6] = {10.0, 20.0, 100.0 * DHK_LS, 30.0, 0.0, 0.0};
-            int32_t qq[6] = {0};
-            dhr_mat4 Td, Rx, T2;
-            dh_frame_q T;
-            dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
-            uint32_t ns = 9;
-            dhs_q_from_double(&r, q, qq);
-            dhs_fk_ref_q(&r, qq, NULL, &Td);
-            dhr_rotx(0.01, &Rx);
-            dhr_mul(&Td, &Rx, &T2);
-            dhs_to_frame_q(&T2, &T);
-            DHT_EQ_INT(dh_ikc_q(&m, &T, NULL, 0u, sol, &ns), DH_ERR_UNREACHABLE);
-            DHT_EQ_INT(ns, 0);
-        }
+    long it;
+    for (it = 0; it < DHT_ITER(200); it++) {
+        double q[6] = {0}, L = 0, sc, rxy;
+        int32_t qq[6] = {0};
+        dhr_mat4 Td;
+        dh_frame_q T;
+        dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+        uint32_t ns = 9, i;
+        for (i = 0; i < rc->d.n; i++) L += fabs(rc->d.j[i].a) + fabs(rc->d.j[i].d);
+        dhs_random_q(&rc->d, q);
+        dhs_q_from_double(&rc->r, q, qq);
+        dhs_fk_ref_q(&rc->r, qq, NULL, &Td);
+        rxy = sqrt(Td.m[3][0] * Td.m[3][0] + Td.m[3][1] * Td.m[3][1]);
+        sc = dht_rand_uniform(1.2, 5.0) * L / (rxy > 1e-3 ? rxy : 1e-3);
+        Td.m[3][0] *= sc;
+        Td.m[3][1] *= sc;
+        dhs_to_frame_q(&Td, &T);
+        DHT_EQ_INT(dh_ikc_q(&rc->m, &T, NULL, 0u, sol, &ns), DH_ERR_UNREACHABLE);
+        DHT_EQ_INT(ns, 0);
+    }
+    if (rc->d.n == 4u) {
+        /* a tool axis not parallel to the joint axes */
+        double q[6] = {10.0, 20.0, 100.0 * DHK_LS, 30.0, 0.0, 0.0};
+        int32_t qq[6] = {0};
+        dhr_mat4 Td, Rx, T2;
+        dh_frame_q T;
+        dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+        uint32_t ns = 9;
+        dhs_q_from_double(&rc->r, q, qq);
+        dhs_fk_ref_q(&rc->r, qq, NULL, &Td);
+        dhr_rotx(0.01, &Rx);
+        dhr_mul(&Td, &Rx, &T2);
+        dhs_to_frame_q(&T2, &T);
+        DHT_EQ_INT(dh_ikc_q(&rc->m, &T, NULL, 0u, sol, &ns), DH_ERR_UNREACHABLE);
+        DHT_EQ_INT(ns, 0);
     }
 }
+
+static void unreachable(void) { urq_each(4u, unreachable_case); }
 
 /* the joint 5 point (UR) or joint 3 origin (SCARA) beyond 2^30 LSB: OVERFLOW */
 static void overflow(void)
@@ -615,7 +609,7 @@ static void detect(void)
 }
 
 /* not the family: each structural condition of the fixed detectors broken
- * on its own, as in the float suite */
+ * on its own, as in the float suite (twin: not_family of test_ikc_ur.c) */
 static void not_family(const dhs_robot *d, dh_ikc_kind kind)
 {
     dh_robot r;

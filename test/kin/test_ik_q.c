@@ -289,25 +289,34 @@ static void ikq_bad_arguments(void)
     DHT_EQ_INT(dh_ik_q(&r, &T, q0, &p, g_work, WORDS, q, &res), DH_OK);
 }
 
+/* dh_ik_q refuses the call with status want: q and the result untouched */
+static void ikq_refused(const dh_robot *r, const dh_frame_q *T, const int32_t *q0, const dh_ik_params_q *p,
+                        dh_status want)
+{
+    dh_ik_result_q res;
+    int32_t q[NJ];
+    uint32_t k;
+    for (k = 0; k < NJ; k++) q[k] = 99;
+    res.iterations = 77u;
+    DHT_EQ_INT(dh_ik_q(r, T, q0, p, g_work, WORDS, q, &res), want);
+    for (k = 0; k < NJ; k++) DHT_EQ_INT(q[k], 99);
+    DHT_EQ_INT(res.iterations, 77);
+}
+
 /* Non-rigid end rotation (scaled fixed base): NOT_RIGID at the start. */
 static void ikq_end_not_rigid(void)
 {
     dh_robot r;
     dh_ik_params_q p;
-    dh_ik_result_q res;
     dh_frame_q T, B;
     dhr_mat4 D;
-    int32_t q[6], q0[6];
+    int32_t q0[6];
     puma_case(&r, &T, &D, q0);
     dh_ik_params_default_q(&r, &p);
     dh_frame_identity_q(&B);
     B.r[0][0] = DH_Q30(1.5);
     DHT_EQ_INT(dh_robot_set_base_q(&r, &B), DH_OK);
-    q[0] = 99;
-    res.iterations = 77u;
-    DHT_EQ_INT(dh_ik_q(&r, &T, q0, &p, g_work, WORDS, q, &res), DH_ERR_NOT_RIGID);
-    DHT_EQ_INT(q[0], 99);
-    DHT_EQ_INT(res.iterations, 77);
+    ikq_refused(&r, &T, q0, &p, DH_ERR_NOT_RIGID);
 }
 
 /* FK of the start saturates (prismatic joint far beyond the dh_qpos range
@@ -316,19 +325,15 @@ static void ikq_start_overflow(void)
 {
     dh_robot r;
     dh_ik_params_q p;
-    dh_ik_result_q res;
     dh_frame_q T;
-    int32_t q0[2] = { 0, INT32_MAX }, q[2] = { 99, 99 };
+    const int32_t q0[2] = { 0, INT32_MAX };
     DHT_EQ_INT(dh_robot_init(&r, DH_CONV_STANDARD), DH_OK);
     DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, DH_QPOS_ONE, 0), DH_OK);
     DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_PRISMATIC, 0, INT32_MAX / 2, 0, 0), DH_OK);
     dh_frame_identity_q(&T);
     dh_ik_params_default_q(&r, &p);
     p.mask = DH_IK_POSITION;
-    res.iterations = 77u;
-    DHT_EQ_INT(dh_ik_q(&r, &T, q0, &p, g_work, WORDS, q, &res), DH_ERR_OVERFLOW);
-    DHT_EQ_INT(q[0], 99);
-    DHT_EQ_INT(res.iterations, 77);
+    ikq_refused(&r, &T, q0, &p, DH_ERR_OVERFLOW);
 }
 
 /* Beyond the reach bound: UNREACHABLE after a few attempts, q within the

@@ -665,6 +665,76 @@ static void inverse_contract_random(void)
     DHT_TRUE(st.n_ok > DHT_ITER(40000) / 2);
 }
 
+/* The counts of a magnitude sweep (sweep_judge) */
+typedef struct {
+    double worst_proof, min_sing_cond;
+    long n_ok, n_sing, n_sub, n_ovf, n_under;
+    contract_stats cs;
+} sweep_stats;
+
+static void sweep_start(sweep_stats *ss)
+{
+    memset(ss, 0, sizeof *ss);
+    ss->min_sing_cond = HUGE_VAL;
+}
+
+/*
+ * X = T^-1 with status st (S: what X held before the call) against the
+ * double reference: every DH_OK with a proof, the status and accuracy of
+ * the contract (contract_one, at 2^k T), the output untouched otherwise;
+ * DH_ERR_SINGULAR only when the reference is singular, T is below FLT_MIN
+ * or ill-conditioned (smallest condition number kept); with under_rule,
+ * DH_ERR_OVERFLOW for an inverse that fits only by the underflow rule.
+ */
+static void sweep_judge(const dh_mat4_f32 *T, const dh_mat4_f32 *X, const dh_mat4_f32 *S, dh_status st, int it,
+                        int under_rule, sweep_stats *ss)
+{
+    dhr_mat4 D, Di;
+    dhr_from_f32(T, &D);
+    if (!dhr_inv(&D, &Di)) {
+        DHT_EQ_INT(st, DH_ERR_SINGULAR);
+        ss->n_sing++;
+        return;
+    }
+    contract_one(T, (int)(dht_rand_u32() % 61u) - 30, &ss->cs);
+    if (st == DH_OK) {
+        inv_check k;
+        DHT_TRUE(check_inverse(T, X, &k));
+        CHECK_M(k.proof < 1.0, T, "DH_OK without proof: residual %.3g (it %d)", k.proof, it);
+        ss->worst_proof = fmax(ss->worst_proof, k.proof);
+        ss->n_ok++;
+        return;
+    }
+    DHT_TRUE(memcmp(X, S, sizeof *X) == 0);
+    if (st == DH_ERR_OVERFLOW) {
+        ss->n_ovf++;
+        if (under_rule && dhr_max_abs(&Di) <= (double)FLT_MAX) {
+            /* the underflow rule, only above 2^17 (in practice 2^100) */
+            DHT_TRUE(dhr_max_abs(&D) >= 0x1p100);
+            ss->n_under++;
+        }
+    } else {
+        double tsum[2] = {0.0, 0.0}, g = 1.0;
+        DHT_EQ_INT(st, DH_ERR_SINGULAR);
+        ss->n_sing++;
+        if (below_normal(T)) { /* the contract's max|T_ij| < FLT_MIN rule */
+            ss->n_sub++;
+            return;
+        }
+        ss->min_sing_cond = fmin(ss->min_sing_cond, ref_cond(T, NULL, tsum, &g));
+    }
+}
+
+/* the sweep's bounds: proofs, no DH_ERR_SINGULAR when well conditioned,
+ * a quarter of the matrices invertible */
+static void sweep_end(const sweep_stats *ss)
+{
+    DHT_TRUE_MSG(ss->worst_proof <= 0.09, "right residual %.3g > 0.09", ss->worst_proof);
+    DHT_TRUE_MSG(ss->min_sing_cond >= (double)DH_MAT4_COND_MAX / 2.0, "DH_ERR_SINGULAR at cond %.6g < %.6g",
+                 ss->min_sing_cond, (double)DH_MAT4_COND_MAX / 2.0);
+    DHT_TRUE(ss->n_ok > DHT_ITER(20000) / 4);
+}
+
 /* random float with a mantissa in (-1, 1) and exponent e */
 static float rand_at(int e) { return (float)ldexp(dht_rand_uniform(-1.0, 1.0), e); }
 
@@ -677,14 +747,11 @@ static float rand_at(int e) { return (float)ldexp(dht_rand_uniform(-1.0, 1.0), e
  */
 static void extreme_magnitudes_sweep(void)
 {
-    double worst_proof = 0.0, min_sing_cond = HUGE_VAL;
-    long n_ok = 0, n_sing = 0, n_sub = 0, n_ovf = 0, n_under = 0;
-    contract_stats cs;
+    sweep_stats ss;
     int it;
-    memset(&cs, 0, sizeof cs);
+    sweep_start(&ss);
     for (it = 0; it < DHT_ITER(20000); it++) {
         dh_mat4_f32 T, X, S;
-        dhr_mat4 D, Di;
         dh_status st;
         const int top = 60 + (int)(dht_rand_u32() % 68u);
         const int spread = (int)(dht_rand_u32() % 201u);
@@ -697,49 +764,13 @@ static void extreme_magnitudes_sweep(void)
         memset(&S, 0x5a, sizeof S);
         X = S;
         st = dh_mat4_inv_f32(&T, &X);
-        dhr_from_f32(&T, &D);
-        if (!dhr_inv(&D, &Di)) {
-            DHT_EQ_INT(st, DH_ERR_SINGULAR);
-            n_sing++;
-            continue;
-        }
-        /* status against the condition number, accuracy, 2^k T */
-        contract_one(&T, (int)(dht_rand_u32() % 61u) - 30, &cs);
-        if (st == DH_OK) {
-            inv_check k;
-            DHT_TRUE(check_inverse(&T, &X, &k));
-            CHECK_M(k.proof < 1.0, &T, "DH_OK without proof: residual %.3g (it %d)", k.proof, it);
-            worst_proof = fmax(worst_proof, k.proof);
-            n_ok++;
-        } else {
-            DHT_TRUE(memcmp(&X, &S, sizeof X) == 0);
-            if (st == DH_ERR_OVERFLOW) {
-                n_ovf++;
-                if (dhr_max_abs(&Di) <= (double)FLT_MAX) {
-                    /* the underflow rule, only above 2^17 (in practice 2^100) */
-                    DHT_TRUE(dhr_max_abs(&D) >= 0x1p100);
-                    n_under++;
-                }
-            } else {
-                double tsum[2] = {0.0, 0.0}, g = 1.0;
-                DHT_EQ_INT(st, DH_ERR_SINGULAR);
-                n_sing++;
-                if (below_normal(&T)) { /* the contract's max|T_ij| < FLT_MIN rule */
-                    n_sub++;
-                    continue;
-                }
-                min_sing_cond = fmin(min_sing_cond, ref_cond(&T, NULL, tsum, &g));
-            }
-        }
+        sweep_judge(&T, &X, &S, st, it, 1, &ss);
     }
     dht_printf("extreme magnitudes: %ld ok, %ld singular (%ld of them below FLT_MIN; smallest cond of the others "
                "%.3g), %ld overflow (%ld by the underflow rule); right residual <= %.3g, error / (cond u) <= %.3g (at "
-               "cond %.3g; bound %.1f)\n", n_ok, n_sing, n_sub, min_sing_cond, n_ovf, n_under, worst_proof, cs.worst,
-               cs.worst_cond, INV_C);
-    DHT_TRUE_MSG(worst_proof <= 0.09, "right residual %.3g > 0.09", worst_proof);
-    DHT_TRUE_MSG(min_sing_cond >= (double)DH_MAT4_COND_MAX / 2.0, "DH_ERR_SINGULAR at cond %.6g < %.6g",
-                 min_sing_cond, (double)DH_MAT4_COND_MAX / 2.0);
-    DHT_TRUE(n_ok > DHT_ITER(20000) / 4);
+               "cond %.3g; bound %.1f)\n", ss.n_ok, ss.n_sing, ss.n_sub, ss.min_sing_cond, ss.n_ovf, ss.n_under,
+               ss.worst_proof, ss.cs.worst, ss.cs.worst_cond, INV_C);
+    sweep_end(&ss);
 }
 
 /*
@@ -811,14 +842,11 @@ static int fits(const dh_mat4_f32 *T)
 
 static void p_zero_magnitudes_sweep(void)
 {
-    double worst_proof = 0.0, min_sing_cond = HUGE_VAL;
-    long n_ok = 0, n_sing = 0, n_sub = 0, n_ovf = 0;
-    contract_stats cs;
+    sweep_stats ss;
     int it;
-    memset(&cs, 0, sizeof cs);
+    sweep_start(&ss);
     for (it = 0; it < DHT_ITER(20000); it++) {
         dh_mat4_f32 T, X, S;
-        dhr_mat4 D, Di;
         dh_status st;
         const int top = (int)(dht_rand_u32() % 200u) - 100;
         const int spread = (int)(dht_rand_u32() % 90u);
@@ -847,44 +875,14 @@ static void p_zero_magnitudes_sweep(void)
                 }
             if (in_range && fits(&T) && fits(&U)) DHT_EQ_INT(dh_mat4_inv_f32(&U, &Y), st);
         }
-        dhr_from_f32(&T, &D);
-        if (!dhr_inv(&D, &Di)) {
-            DHT_EQ_INT(st, DH_ERR_SINGULAR);
-            n_sing++;
-            continue;
-        }
-        /* status against the condition number, accuracy, 2^k T */
-        contract_one(&T, (int)(dht_rand_u32() % 61u) - 30, &cs);
-        if (st == DH_OK) {
-            inv_check k;
-            DHT_TRUE(check_inverse(&T, &X, &k));
-            CHECK_M(k.proof < 1.0, &T, "DH_OK without proof: residual %.3g (it %d)", k.proof, it);
-            worst_proof = fmax(worst_proof, k.proof);
-            n_ok++;
-        } else {
-            DHT_TRUE(memcmp(&X, &S, sizeof X) == 0);
-            if (st == DH_ERR_OVERFLOW) {
-                n_ovf++;
-            } else {
-                double tsum[2] = {0.0, 0.0}, g = 1.0;
-                DHT_EQ_INT(st, DH_ERR_SINGULAR);
-                n_sing++;
-                if (below_normal(&T)) { /* the contract's max|T_ij| < FLT_MIN rule */
-                    n_sub++;
-                    continue;
-                }
-                min_sing_cond = fmin(min_sing_cond, ref_cond(&T, NULL, tsum, &g));
-            }
-        }
+        sweep_judge(&T, &X, &S, st, it, 0, &ss);
     }
-    dht_reach_max("p_zero.below_normal", (double)n_sub);
+    dht_reach_max("p_zero.below_normal", (double)ss.n_sub);
     dht_printf("p = 0 or q = 0: %ld ok, %ld singular (%ld of them below FLT_MIN; smallest cond of the others %.3g), "
                "%ld overflow; right residual <= %.3g, error / (cond u) <= %.3g (at cond %.3g; bound %.1f)\n",
-               n_ok, n_sing, n_sub, min_sing_cond, n_ovf, worst_proof, cs.worst, cs.worst_cond, INV_C);
-    DHT_TRUE_MSG(worst_proof <= 0.09, "right residual %.3g > 0.09", worst_proof);
-    DHT_TRUE_MSG(min_sing_cond >= (double)DH_MAT4_COND_MAX / 2.0, "DH_ERR_SINGULAR at cond %.6g < %.6g",
-                 min_sing_cond, (double)DH_MAT4_COND_MAX / 2.0);
-    DHT_TRUE(n_ok > DHT_ITER(20000) / 4);
+               ss.n_ok, ss.n_sing, ss.n_sub, ss.min_sing_cond, ss.n_ovf, ss.worst_proof, ss.cs.worst, ss.cs.worst_cond,
+               INV_C);
+    sweep_end(&ss);
 }
 
 

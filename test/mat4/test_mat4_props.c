@@ -308,6 +308,24 @@ static void rand_conditioned(dhr_mat4 *D, double cond)
     dhr_mul(D, &V, D);
 }
 
+/* D scaled by scale and rounded to float into T (D then holds T exactly),
+ * Di its double inverse; returns the condition number in the 1-norm of
+ * the library's criterion (= inf-norm of T^T) */
+static double scaled_to_f32(double scale, dhr_mat4 *D, dhr_mat4 *Di, dh_mat4_f32 *T)
+{
+    dhr_mat4 Dt, Dti;
+    int c, r;
+    for (c = 0; c < 4; c++)
+        for (r = 0; r < 4; r++) D->m[c][r] *= scale;
+    dhr_to_f32(D, T);
+    dhr_from_f32(T, D);
+    DHT_TRUE(dhr_inv(D, Di));
+    for (c = 0; c < 4; c++)
+        for (r = 0; r < 4; r++) Dt.m[c][r] = D->m[r][c];
+    DHT_TRUE(dhr_inv(&Dt, &Dti));
+    return dhr_norm_inf(&Dt) * dhr_norm_inf(&Dti);
+}
+
 static void general_inverse_accuracy_and_scale_invariance(void)
 {
     double worst = 0.0, worst_id = 0.0, max_acc_cond = 0.0;
@@ -316,21 +334,8 @@ static void general_inverse_accuracy_and_scale_invariance(void)
         dhr_mat4 D, Di, DX;
         dh_mat4_f32 T, X, XX;
         double cond, scale = pow(10.0, dht_rand_uniform(-20.0, 20.0));
-        int c, r;
         rand_conditioned(&D, pow(10.0, dht_rand_uniform(0.0, 4.5)));
-        for (c = 0; c < 4; c++)
-            for (r = 0; r < 4; r++) D.m[c][r] *= scale;
-        dhr_to_f32(&D, &T);
-        dhr_from_f32(&T, &D);
-        DHT_TRUE(dhr_inv(&D, &Di));
-        /* the library's criterion uses the 1-norm (= inf-norm of T^T) */
-        {
-            dhr_mat4 Dt, Dti;
-            for (c = 0; c < 4; c++)
-                for (r = 0; r < 4; r++) Dt.m[c][r] = D.m[r][c];
-            DHT_TRUE(dhr_inv(&Dt, &Dti));
-            cond = dhr_norm_inf(&Dt) * dhr_norm_inf(&Dti);
-        }
+        cond = scaled_to_f32(scale, &D, &Di, &T);
         DHT_TRUE_MSG(cond < DH_MAT4_COND_MAX / 2.0, "sample cond %g", cond);
         DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_OK);
         max_acc_cond = dmax(max_acc_cond, cond);
@@ -438,18 +443,7 @@ static void general_inverse_fast_paths_accuracy(void)
         /* projective, scale 0.1..10, cond 1..1e3 */
         rand_conditioned(&D, pow(10.0, dht_rand_uniform(0.0, 3.0)));
         scale = pow(10.0, dht_rand_uniform(-1.0, 1.0));
-        for (c = 0; c < 4; c++)
-            for (r = 0; r < 4; r++) D.m[c][r] *= scale;
-        dhr_to_f32(&D, &T);
-        dhr_from_f32(&T, &D);
-        DHT_TRUE(dhr_inv(&D, &Di));
-        {
-            dhr_mat4 Dt, Dti;
-            for (c = 0; c < 4; c++)
-                for (r = 0; r < 4; r++) Dt.m[c][r] = D.m[r][c];
-            DHT_TRUE(dhr_inv(&Dt, &Dti));
-            cond = dhr_norm_inf(&Dt) * dhr_norm_inf(&Dti);
-        }
+        cond = scaled_to_f32(scale, &D, &Di, &T);
         DHT_EQ_INT(dh_mat4_inv_f32(&T, &X), DH_OK);
         w_proj = dmax(w_proj, dhr_max_abs_diff(&X, &Di) / dhr_max_abs(&Di) / (cond * U24));
     }

@@ -313,6 +313,7 @@ static void robot_check_limits_bad(void)
 /* float FK: n == 0 -> ARG; NaN/Inf q -> NAN; q + offset overflowing ->
  * OVERFLOW (T untouched); float path unavailable -> UNAVAILABLE; huge prismatic
  * values whose frame is not finite -> OVERFLOW with T written */
+/* twin: robot_fk_q_bad */
 static void robot_fk_f32_bad(void)
 {
     dh_robot r;
@@ -422,6 +423,7 @@ static void robot_fk_f32_bad(void)
 
 /* fixed FK: n == 0 -> ARG; saturation of d + q and of positions ->
  * OVERFLOW with T written (saturated); every int32 revolute value is fine */
+/* twin: robot_fk_f32_bad */
 static void robot_fk_q_bad(void)
 {
     dh_robot r;

@@ -468,6 +468,7 @@ static void long_links(void)
     }
     dht_printf("fk_q long links (|a| + |d| > 2^30 LSB, %ld): max pos err %.3g x scale, max rot err %.3g LSB\n", n, ep,
                er);
+    dht_reach_max("long_links.rot_lsb", er); /* LSB: the two-joint rotation error, bound CHAIN2_ROT_LSB */
 }
 
 /* ---- angle reduction: q + offset beyond the int32 range ----------------- */

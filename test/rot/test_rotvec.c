@@ -374,6 +374,7 @@ static void log_map(void)
         DHT_TRUE_MSG(e <= LOGREP_TOL, "log of R = float(Rot((%.17g, %.17g, %.17g), t %.17g)): reproduction "
                      "%.3g > bound %.3g", k[0], k[1], k[2], t, e, LOGREP_TOL);
     }
+    dht_reach_max("log.err", worst); /* rad: |phi - phi_exact| for t in [0.1, pi - 1e-3], bound LOG_TOL */
     dht_printf("log (mat3 -> rotvec): |phi - phi_exact| %.3g (t in [0.1, pi - 1e-3]), %.3g (t < 0.1); "
                "reproduction near pi %.3g\n", worst, worst_small, worst_pi);
 }

@@ -335,6 +335,7 @@ static void asin_acos_sweep(void)
     report("acos", &sc);
 }
 
+/* twin: asin_odd of test_itrig_q.c */
 static void asin_odd(void)
 {
     long i, n = DHT_ITER(200000L);

@@ -237,6 +237,7 @@ static void asin_acos_sweep(void)
     dht_printf("asin_q / acos_q: max error %.4f / %.4f LSB\n", worst_asin, worst_acos);
 }
 
+/* twin: asin_odd of test_itrig_f32.c */
 static void asin_odd(void)
 {
     long i, n = DHT_ITER(200000L);

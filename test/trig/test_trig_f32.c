@@ -20,40 +20,15 @@
 #include <string.h>
 
 #include "dht.h"
+#include "support_ref.h"
 #include "dhmath/trig.h"
 
-#define PI_D 3.14159265358979323846
 #define DHT_F32_TOL 6.2e-8
-
-/* exact reduction of a non-negative double with <= 53 significant bits */
-static void ref_pos(double d, double *s, double *c)
-{
-    double r = fmod(d, 360.0), s0, c0, t;
-    int k = 0;
-    while (r >= 90.0) {
-        r -= 90.0;
-        k++;
-    }
-    t = r * (PI_D / 180.0);
-    s0 = sin(t);
-    c0 = cos(t);
-    switch (k) {
-    case 0: *s = s0; *c = c0; break;
-    case 1: *s = c0; *c = -s0; break;
-    case 2: *s = -s0; *c = -c0; break;
-    default: *s = -c0; *c = s0; break;
-    }
-}
 
 static void ref_f32(float x, double *s, double *c)
 {
     double d = (double)x;
-    if (d < 0) {
-        ref_pos(-d, s, c);
-        *s = -*s;
-    } else {
-        ref_pos(d, s, c);
-    }
+    dhr_sincos_deg(d, s, c);
 }
 
 typedef struct {
@@ -62,7 +37,7 @@ typedef struct {
     unsigned long n;
 } err_acc;
 
-/* checks one input, accumulates its error, fails above tol */
+/* checks one input, accumulates its error, fails above tol (twin: check_one of test_trig_q.c) */
 static void check_one(float x, err_acc *acc)
 {
     float s, c;

@@ -22,42 +22,18 @@
 #include <stdint.h>
 
 #include "dht.h"
+#include "support_ref.h"
 #include "dhmath/trig.h"
 
-#define PI_D 3.14159265358979323846
 #define Q30 1073741824.0
 #define DHT_Q_TOL_LSB 1.05
 #define TURN_Q16 (360L * 65536L)
-
-static void ref_pos(double d, double *s, double *c)
-{
-    double r = fmod(d, 360.0), s0, c0, t;
-    int k = 0;
-    while (r >= 90.0) {
-        r -= 90.0;
-        k++;
-    }
-    t = r * (PI_D / 180.0);
-    s0 = sin(t);
-    c0 = cos(t);
-    switch (k) {
-    case 0: *s = s0; *c = c0; break;
-    case 1: *s = c0; *c = -s0; break;
-    case 2: *s = -s0; *c = -c0; break;
-    default: *s = -c0; *c = s0; break;
-    }
-}
 
 /* reference in units of LSB of Q2.30 */
 static void ref_q(int32_t x, double *s, double *c)
 {
     double d = (double)x / 65536.0;  /* exact */
-    if (d < 0) {
-        ref_pos(-d, s, c);
-        *s = -*s;
-    } else {
-        ref_pos(d, s, c);
-    }
+    dhr_sincos_deg(d, s, c);
     *s *= Q30;
     *c *= Q30;
 }
@@ -68,6 +44,7 @@ typedef struct {
     unsigned long n;
 } err_acc;
 
+/* checks one input, accumulates its error in LSB (twin: check_one of test_trig_f32.c) */
 static void check_one(int32_t x, err_acc *acc)
 {
     int32_t s, c;
