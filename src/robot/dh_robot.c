@@ -164,7 +164,7 @@ static int32_t robot_rate_q(float x, unsigned frac)
 {
     int32_t v = INT32_MAX - 1;
     if (dh_f32_bits(x) == 0x7F800000u) return INT32_MAX;
-    if (dh_f32_to_fix(x, frac, &v) != 0u) return INT32_MAX - 1;
+    if (dh_robot_f32_to_fix_(x, frac, &v) != 0u) return INT32_MAX - 1;
     if (v == INT32_MAX) v = INT32_MAX - 1;
     return (v < 1) ? 1 : v;
 }
