@@ -94,7 +94,9 @@ typedef struct {
     float ws[27];                      /**< damped step's matrices */
     float sg;                          /**< sigma_min bound at q */
     float lam;                         /**< damping of this period's step */
-    uint32_t ns;                       /**< closed-form solutions found */
+    uint32_t ns;                       /**< closed-form solutions found (raw, then kept) */
+    dh_status ist;                     /**< closed form's argument status */
+    int unreach;                       /**< the target is unreachable this period */
     dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL]; /**< closed-form solutions */
     dh_mat4_f32 T;                     /**< FK at q */
 } dh_track_f32;

@@ -52,6 +52,26 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, con
                             dh_ikc_sol_f32 *sol);
 uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                            dh_ikc_sol_f32 *sol);
+/* dh_ikc_f32 in three calls (dh_ikc.c), for a caller that must not keep
+ * dh_ikc_f32's frame under its own (the tracker, src/track/): the
+ * argument checks (dh_ikc_f32's statuses before anything is written); the
+ * raw solutions of the model's solver into sol (their count, not yet
+ * clamped to DH_IKC_MAX_SOL; inline: no frame of its own); and the joint values,
+ * limits and count of dh_ikc_f32 from the raw count in *n_sol (*n_sol and
+ * status as dh_ikc_f32's). */
+dh_status dh_ikc_args_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, uint32_t opts);
+static inline uint32_t dh_ikc_raw_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
+                                       dh_ikc_sol_f32 *sol)
+{
+    switch (m->kind) {
+    case DH_IKC_WRIST_RRR:
+    case DH_IKC_WRIST_RRP: return dh_ikc_wrist_f32_(m, T, q_ref, sol);
+    case DH_IKC_PARALLEL_234: return dh_ikc_par234_f32_(m, T, q_ref, sol);
+    default: return dh_ikc_scara_f32_(m, T, q_ref, sol);
+    }
+}
+dh_status dh_ikc_finish_f32_(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t opts, dh_ikc_sol_f32 *sol,
+                             uint32_t *n_sol);
 
 /* ---- fixed, integer only (dh_ikc_wrist_q.c, dh_ikc_par234_q.c,
  * dh_ikc_scara_q.c; common helpers dh_ikc_common_q.c) ----

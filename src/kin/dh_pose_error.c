@@ -63,23 +63,23 @@ void dh_kin_rotvec_f32_(const float *d, float *w)
     pose_rotvec_big(d, w, tr, theta);
 }
 
-/* d = Rt R^T row-major; ct[c], cr[c] point to column c of Rt, R. */
-static void pose_delta(const float *const *ct, const float *const *cr, float *d)
+/* d = Rt R^T row-major; column c of Rt, R starts at ct[s c], cr[s c]
+ * (s: 3 for a dh_mat3_f32, 4 for a dh_mat4_f32). */
+static void pose_delta(const float *ct, const float *cr, uint32_t s, float *d)
 {
     uint32_t i, j, k;
     for (i = 0; i < 3u; i++)
         for (j = 0; j < 3u; j++) {
-            float s = 0.0f;
-            for (k = 0; k < 3u; k++) s += ct[k][i] * cr[k][j];
-            d[3u * i + j] = s;
+            float x = 0.0f;
+            for (k = 0; k < 3u; k++) x += ct[s * k + i] * cr[s * k + j];
+            d[3u * i + j] = x;
         }
 }
 
-/* twin: dh_pose_error_f32 (kept whole: a shared helper costs 8 bytes of stack on the M0+, at the 256-byte guard) */
+/* twin: dh_kin_pose_error_f32_ (kept whole: a shared helper costs 8 bytes of stack on the M0+, at the 256-byte guard) */
 dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh_vec3_f32 *w)
 {
     float d[9], v[3];
-    const float *ct[3], *cr[3];
     uint32_t i, j;
 
     DH_ASSERT(R_target != NULL);
@@ -92,11 +92,7 @@ dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh
     if (!dh_kin_rot_ok_f32_(R_target->m[0], R_target->m[1], R_target->m[2]) ||
         !dh_kin_rot_ok_f32_(R->m[0], R->m[1], R->m[2]))
         return DH_ERR_NOT_RIGID;
-    for (i = 0; i < 3u; i++) {
-        ct[i] = R_target->m[i];
-        cr[i] = R->m[i];
-    }
-    pose_delta(ct, cr, d);
+    pose_delta(&R_target->m[0][0], &R->m[0][0], 3u, d);
     dh_kin_rotvec_f32_(d, v);
     w->x = v[0];
     w->y = v[1];
@@ -105,15 +101,9 @@ dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh
 }
 
 /* twin: dh_rot_error_f32 */
-dh_status dh_pose_error_f32(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float e[6])
+dh_status dh_kin_pose_error_f32_(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float *e, float *d)
 {
-    float d[9];
-    const float *ct[3], *cr[3];
     uint32_t i, j;
-
-    DH_ASSERT(T_target != NULL);
-    DH_ASSERT(T != NULL);
-    DH_ASSERT(e != NULL);
 
     for (i = 0; i < 4u; i++)
         for (j = 0; j < 3u; j++)
@@ -121,12 +111,17 @@ dh_status dh_pose_error_f32(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, f
     if (!dh_kin_rot_ok_f32_(T_target->m[0], T_target->m[1], T_target->m[2]) ||
         !dh_kin_rot_ok_f32_(T->m[0], T->m[1], T->m[2]))
         return DH_ERR_NOT_RIGID;
-    for (i = 0; i < 3u; i++) {
-        ct[i] = T_target->m[i];
-        cr[i] = T->m[i];
-    }
-    pose_delta(ct, cr, d);
+    pose_delta(&T_target->m[0][0], &T->m[0][0], 4u, d);
     dh_kin_rotvec_f32_(d, e + 3);
     for (i = 0; i < 3u; i++) e[i] = T_target->m[3][i] - T->m[3][i];
     return DH_OK;
+}
+
+dh_status dh_pose_error_f32(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float e[6])
+{
+    float d[9];
+    DH_ASSERT(T_target != NULL);
+    DH_ASSERT(T != NULL);
+    DH_ASSERT(e != NULL);
+    return dh_kin_pose_error_f32_(T_target, T, e, d);
 }

@@ -20,6 +20,11 @@
  * overlap. 1 when every entry of J and F is finite, else 0. */
 int dh_kin_jac_f32_(const dh_robot *r, const float *scd, float *J, float *F);
 
+/* dh_jacobian_f32 with its scratch in the caller's w (15 floats,
+ * overlapping nothing else): the tracker keeps it in its workspace. Same
+ * contract. */
+dh_status dh_kin_jacobian_f32_(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end, float *w);
+
 /* dh_manipulability_f32 and dh_dls_step_f32 with their matrices in the
  * caller's ws (DH_DLS_WS_FLOATS floats, overlapping nothing): the
  * tracker (src/track/) calls them on its state to stay within the stack
@@ -28,6 +33,10 @@ int dh_kin_jac_f32_(const dh_robot *r, const float *scd, float *J, float *F);
 dh_status dh_manipulability_ws_f32_(const float *J, uint32_t n, float *w, float *sigma_min, float *ws);
 dh_status dh_dls_step_ws_f32_(const dh_robot *r, const float *J, const float *e, float lambda, const float *dq_max,
                               float *dq, float *ws);
+
+/* dh_pose_error_f32 with dR in the caller's d (9 floats, overlapping
+ * nothing): the tracker keeps it in its workspace. Same contract. */
+dh_status dh_kin_pose_error_f32_(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float *e, float *d);
 
 /* a(dR) of dh_rot_error_f32 for dR row-major, d[3 row + col], into w[0..2]
  * (d and w do not overlap). */

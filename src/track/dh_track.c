@@ -23,6 +23,7 @@
 #include "dhmath/track.h"
 #include "../internal/dh_floatops.h"
 #include "../kin/kin_impl.h"
+#include "../ikc/ikc_impl.h"
 
 #define TRACK_INF_BITS 0x7F800000u
 
@@ -389,7 +390,7 @@ static DH_NOINLINE dh_status track_target_ok(dh_track_f32 *t, const dh_mat4_f32 
     if (!dh_feq_f32(target->m[0][3], 0.0f) || !dh_feq_f32(target->m[1][3], 0.0f) ||
         !dh_feq_f32(target->m[2][3], 0.0f) || !dh_feq_f32(target->m[3][3], 1.0f))
         return DH_ERR_NOT_RIGID;
-    return (dh_pose_error_f32(target, target, e) == DH_OK) ? DH_OK : DH_ERR_NOT_RIGID;
+    return (dh_kin_pose_error_f32_(target, target, e, t->ws) == DH_OK) ? DH_OK : DH_ERR_NOT_RIGID;
 }
 
 /* the report from t->e (pose error at q_out) */
@@ -417,14 +418,12 @@ static DH_NOINLINE void track_move(dh_track_f32 *t)
     }
 }
 
-/* One damped step from the Jacobian and FK in t->J, t->T into t->dq,
- * fitted into the box; 1 when it stalls. The library calls are made from
- * here, one level below dh_track_step_f32, and the arithmetic is in the
- * leaves above, so the stack stays the deepest callee plus two frames. */
-static DH_NOINLINE int track_damped(dh_track_f32 *t, const dh_mat4_f32 *target)
+/* One damped step from the Jacobian in t->J and the pose error in t->e
+ * (ok: 0 when it could not be computed) into t->dq, fitted into the box;
+ * 1 when it stalls. */
+static DH_NOINLINE int track_damped(dh_track_f32 *t, int ok)
 {
-    if (dh_pose_error_f32(target, &t->T, t->e) != DH_OK ||
-        dh_manipulability_ws_f32_(t->J, t->r->n, NULL, &t->sg, t->ws) != DH_OK) {
+    if (!ok || dh_manipulability_ws_f32_(t->J, t->r->n, NULL, &t->sg, t->ws) != DH_OK) {
         track_zero(t);
         track_fit(t);
         return 1;
@@ -440,11 +439,85 @@ static DH_NOINLINE int track_damped(dh_track_f32 *t, const dh_mat4_f32 *target)
     return track_stalls(t);
 }
 
+/* 1 when the pose error of the target from t->T is in t->e */
+static int track_err(dh_track_f32 *t, const dh_mat4_f32 *target)
+{
+    return (dh_kin_pose_error_f32_(target, &t->T, t->e, t->ws) == DH_OK) ? 1 : 0;
+}
+
+/* 1 when the closed form's argument checks pass (their status in t->ist) */
+static DH_NOINLINE int track_ikc_args(dh_track_f32 *t, const dh_mat4_f32 *target)
+{
+    t->ist = dh_ikc_args_f32_(t->m, target, t->q, DH_IKC_KEEP_OUT_OF_LIMITS);
+    return (t->ist == DH_OK) ? 1 : 0;
+}
+
+/* The step towards a valid target, the closed form's raw solutions (if
+ * any) in t->sol, t->ns: the solution nearest in time if the box holds
+ * it; else, away from singularities, straight for it at the bound; near
+ * them the damped step, unless it stalls or moves away from it; without a
+ * solution the damped step. 1 when there is no closed form (track_more
+ * follows). */
+static DH_NOINLINE int track_chase(dh_track_f32 *t, const dh_mat4_f32 *target)
+{
+    int have = 0;
+    t->unreach = 0;
+    if (t->m != NULL) {
+        const dh_status st = (t->ist != DH_OK) ? t->ist
+                                               : dh_ikc_finish_f32_(t->m, t->q, DH_IKC_KEEP_OUT_OF_LIMITS, t->sol,
+                                                                    &t->ns);
+        have = track_pick(t, st, &t->unreach);
+    }
+    if (have && track_reached(t)) return 0;
+    /* sigma_min at q (t->J is the Jacobian at q) */
+    if (dh_manipulability_ws_f32_(t->J, t->r->n, NULL, &t->sg, t->ws) != DH_OK) t->sg = 0.0f;
+    if (have) {
+        if (t->sg < t->sing_threshold && !track_damped(t, track_err(t, target)) && !track_away(t)) return 0;
+        track_head(t);
+        return 0;
+    }
+    (void)track_damped(t, track_err(t, target));
+    return (t->m == NULL) ? 1 : 0;
+}
+
+/* Without a closed form: two more damped steps from the point reached, in
+ * what is left of the box. */
+static DH_NOINLINE void track_more(dh_track_f32 *t, const dh_mat4_f32 *target)
+{
+    int it;
+    for (it = 0; it < 2; it++) {
+        track_shift(t, 1);
+        if (dh_kin_jacobian_f32_(t->r, t->qs, t->J, &t->T, t->ws) != DH_OK) {
+            track_zero(t);
+            track_shift(t, -1);
+            break;
+        }
+        (void)track_damped(t, track_err(t, target));
+        track_shift(t, -1);
+    }
+    t->unreach = track_beyond(t, target);
+}
+
+/* The report at q_out (t->J, t->T recomputed there) */
+static DH_NOINLINE void track_end(dh_track_f32 *t, const dh_mat4_f32 *target, dh_status tst, dh_track_report_f32 *rep)
+{
+    int fk = 0;
+    rep->manip = 0.0f;
+    rep->sigma_min = 0.0f;
+    if (dh_kin_jacobian_f32_(t->r, t->q, t->J, &t->T, t->ws) == DH_OK) {
+        (void)dh_manipulability_ws_f32_(t->J, t->r->n, &rep->manip, &rep->sigma_min, t->ws);
+        if (tst == DH_OK && dh_kin_pose_error_f32_(target, &t->T, t->e, t->ws) == DH_OK) fk = 1;
+    }
+    track_fill(t, fk, t->unreach, rep);
+}
+
+/* The library calls are made one level below this function at most, the
+ * closed-form solver's from here (dh_ikc_raw_f32_ has no frame), so the
+ * stack stays the deepest callee plus two small frames. */
 dh_status dh_track_step_f32(dh_track_f32 *t, const dh_mat4_f32 *target, float *q_out, dh_track_report_f32 *rep)
 {
     dh_status tst;
     uint32_t i;
-    int unreach = 1, have = 0, fk = 0;
     DH_ASSERT(t != NULL);
     DH_ASSERT(t->r != NULL);
     DH_ASSERT(q_out != NULL);
@@ -452,51 +525,16 @@ dh_status dh_track_step_f32(dh_track_f32 *t, const dh_mat4_f32 *target, float *q
     DH_ASSERT(t->r->n >= 1u && t->r->n <= (uint32_t)DH_MAX_JOINTS);
     tst = track_target_ok(t, target);
     track_box(t);
+    t->unreach = 1;
+    t->ns = 0u;
     if (tst != DH_OK) {
         track_brake(t);
     } else {
-        unreach = 0;
-        if (t->m != NULL)
-            have = track_pick(t, dh_ikc_f32(t->m, target, t->q, DH_IKC_KEEP_OUT_OF_LIMITS, t->sol, &t->ns),
-                              &unreach);
-        if (!have || !track_reached(t)) {
-            /* sigma_min at q (t->J is the Jacobian at q) */
-            if (dh_manipulability_ws_f32_(t->J, t->r->n, NULL, &t->sg, t->ws) != DH_OK) t->sg = 0.0f;
-            if (have && !(t->sg < t->sing_threshold)) {
-                /* away from singularities: straight for the solution */
-                track_head(t);
-            } else if (have) {
-                /* near them: the damped step, unless it stalls or moves away */
-                if (track_damped(t, target) || track_away(t)) track_head(t);
-            } else {
-                (void)track_damped(t, target);
-                if (t->m == NULL) {
-                    /* two more damped steps from the point reached, in what
-                     * is left of the box */
-                    int it;
-                    for (it = 0; it < 2; it++) {
-                        track_shift(t, 1);
-                        if (dh_jacobian_f32(t->r, t->qs, t->J, &t->T) != DH_OK) {
-                            track_zero(t);
-                            track_shift(t, -1);
-                            break;
-                        }
-                        (void)track_damped(t, target);
-                        track_shift(t, -1);
-                    }
-                    unreach = track_beyond(t, target);
-                }
-            }
-        }
+        if (t->m != NULL && track_ikc_args(t, target)) t->ns = dh_ikc_raw_f32_(t->m, target, t->q, t->sol);
+        if (track_chase(t, target)) track_more(t, target);
     }
     track_move(t);
-    rep->manip = 0.0f;
-    rep->sigma_min = 0.0f;
-    if (dh_jacobian_f32(t->r, t->q, t->J, &t->T) == DH_OK) {
-        (void)dh_manipulability_ws_f32_(t->J, t->r->n, &rep->manip, &rep->sigma_min, t->ws);
-        if (tst == DH_OK && dh_pose_error_f32(target, &t->T, t->e) == DH_OK) fk = 1;
-    }
-    track_fill(t, fk, unreach, rep);
+    track_end(t, target, tst, rep);
     for (i = 0u; i < t->r->n; i++) q_out[i] = t->q[i];
     return tst;
 }
