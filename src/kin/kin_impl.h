@@ -50,6 +50,10 @@ int dh_kin_rot_ok_f32_(const float *c0, const float *c1, const float *c2);
  * frame F supplied by the caller; nonzero when an entry saturated. */
 int dh_kin_jac_q_(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *F);
 
+/* The argument checks of dh_jacobian_q (they depend on the robot alone):
+ * DH_OK, DH_ERR_ARG or DH_ERR_UNAVAILABLE as dh_jacobian_q returns them. */
+dh_status dh_kin_jac_check_q_(const dh_robot *r);
+
 /* dh_rot_error_q's body (dh_pose_error_q.c) without its rigidity checks (the
  * caller's): s->w = a(Rt R^T), Q3.29 rad; s->D (dR) and s->q scratch, in
  * the caller's memory (dh_ik_q keeps them off the stack: 19 words). */

@@ -21,6 +21,7 @@
 #include "dhmath/track.h"
 #include "dhmath/frame.h"
 #include "../internal/dh_qmath.h"
+#include "../kin/kin_impl.h"
 
 #define TRQ_NONE INT32_MAX   /* no acceleration limit */
 #define TRQ_STEP_CAP (((int32_t)1 << 30) - 1)
@@ -126,8 +127,10 @@ dh_status dh_track_init_q(dh_track_q *t, const dh_robot *r, const dh_ikc_model_q
     t->pos_tol = (int32_t)(((int64_t)L * 2) >> 20);           /* 2e-6 L (1.9e-6) */
     if (t->pos_tol < 16) t->pos_tol = 16;
     t->rot_tol = 10737;                                        /* 2e-5 rad, Q3.29 */
-    st = dh_jacobian_q(r, t->q, t->J, &t->T);
-    return (st == DH_OK) ? DH_OK : DH_ERR_OVERFLOW;
+    /* dh_jacobian_q in two private calls (its checks once here, then its
+     * body writing FK straight into t->T), as in every step */
+    if (dh_kin_jac_check_q_(r) != DH_OK || dh_kin_jac_q_(r, t->q, t->J, &t->T) != 0) return DH_ERR_OVERFLOW;
+    return DH_OK;
 }
 
 /* ---- the step box ------------------------------------------------------ */
@@ -438,7 +441,7 @@ static DH_NOINLINE void trq_more(dh_track_q *t, const dh_frame_q *target)
             t->keep[i] = t->dq[i];
             t->qs[i] = t->q[i] + t->dq[i];
         }
-        if (dh_jacobian_q(t->r, t->qs, t->J, &t->T) != DH_OK) {
+        if (dh_kin_jac_q_(t->r, t->qs, t->J, &t->T) != 0) {
             for (i = 0u; i < n; i++) t->dq[i] = t->keep[i];
             return;
         }
@@ -513,7 +516,7 @@ static DH_NOINLINE int trq_report(dh_track_q *t, const dh_frame_q *target, int t
     rep->sigma_min = 0;
     rep->pos_err = INT32_MAX;
     rep->rot_err = INT32_MAX;
-    if (dh_jacobian_q(t->r, t->q, t->J, &t->T) != DH_OK) return 0;
+    if (dh_kin_jac_q_(t->r, t->q, t->J, &t->T) != 0) return 0;
     (void)dh_manipulability_q(t->J, t->r->n, &t->work, &rep->manip, &rep->sigma_min);
     if (!target_ok || !trq_error(t, target, t->e)) return 0;
     for (k = 0u; k < 3u; k++) {
