@@ -160,7 +160,8 @@ const char *dh_ikc_why_str(dh_ikc_why why)
 /* ---- solving ------------------------------------------------------------------ */
 
 /* Every check of dh_ikc_f32 made before anything is written. */
-DH_NOINLINE dh_status dh_ikc_args_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, uint32_t opts)
+static DH_NOINLINE dh_status ikc_args(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
+                                      uint32_t opts)
 {
     if ((opts & ~(uint32_t)DH_IKC_KEEP_OUT_OF_LIMITS) != 0u) return DH_ERR_ARG;
     if (m->kind == DH_IKC_NONE) return DH_ERR_UNAVAILABLE;
@@ -269,8 +270,13 @@ static DH_NOINLINE dh_status ikc_finish(const dh_ikc_model_f32 *m, const float *
     return (out == 0u) ? DH_ERR_LIMIT : DH_OK;
 }
 
-DH_NOINLINE dh_status dh_ikc_finish_f32_(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t opts,
-                                         dh_ikc_sol_f32 *sol, uint32_t *n_sol)
+dh_status dh_ikc_args_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, uint32_t opts)
+{
+    return ikc_args(m, T, q_ref, opts);
+}
+
+dh_status dh_ikc_finish_f32_(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t opts, dh_ikc_sol_f32 *sol,
+                             uint32_t *n_sol)
 {
     uint32_t raw = *n_sol;
     *n_sol = 0;
@@ -282,17 +288,19 @@ DH_NOINLINE dh_status dh_ikc_finish_f32_(const dh_ikc_model_f32 *m, const float 
 dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const float *q_ref, uint32_t opts,
                      dh_ikc_sol_f32 *sol, uint32_t *n_sol)
 {
+    uint32_t raw;
     dh_status st;
     DH_ASSERT(m != NULL);
     DH_ASSERT(target != NULL);
     DH_ASSERT(sol != NULL);
     DH_ASSERT(n_sol != NULL);
     *n_sol = 0;
-    st = dh_ikc_args_f32_(m, target, q_ref, opts);
+    st = ikc_args(m, target, q_ref, opts);
     if (st != DH_OK) return st;
-    /* the raw count goes through *n_sol */
-    *n_sol = dh_ikc_raw_f32_(m, target, q_ref, sol);
-    return dh_ikc_finish_f32_(m, q_ref, opts, sol, n_sol);
+    raw = dh_ikc_raw_f32_(m, target, q_ref, sol);
+    if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;
+    if (raw == 0u) return DH_ERR_UNREACHABLE;
+    return ikc_finish(m, q_ref, opts, sol, raw, n_sol);
 }
 
 dh_status dh_ikc_nearest_f32(const dh_ikc_sol_f32 *sol, uint32_t n_sol, const float *q_ref, uint32_t n,
