@@ -119,15 +119,34 @@ int dhk_check_sols_q(const dh_robot *r, const dhr_mat4 *Td, const dh_ikc_sol_q *
     return found;
 }
 
-int dhk_well_conditioned_q(const dhs_robot *d, const double *q, double tol, int nj)
+/* w = the skew part of W = (Ra - Rb) / div Rr^T (m[col][row]): the small
+ * rotation from Rb to Ra, or with Ra, Rb the two sides of a central
+ * difference and div = 2h, a Jacobian's rotation column. */
+static void ikcs_rot_diff(const dhr_mat4 *a, const dhr_mat4 *b, const dhr_mat4 *ref, double div, double w[3])
 {
-    double J[6][6], A[6][12], qp[6], qm[6], dx[6];
+    double W[3][3];
+    int i, j, c;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) {
+            W[i][j] = 0.0;
+            for (c = 0; c < 3; c++) W[i][j] += (a->m[c][i] - b->m[c][i]) / div * ref->m[c][j];
+        }
+    w[0] = 0.5 * (W[2][1] - W[1][2]);
+    w[1] = 0.5 * (W[0][2] - W[2][0]);
+    w[2] = 0.5 * (W[1][0] - W[0][1]);
+}
+
+/* J (6 x 6, per degree / length unit of q, rows position then rotation)
+ * by central differences of the double FK of d at q, and Ji = J^-1 by
+ * Gauss-Jordan with partial pivoting. 0 when J is singular to 1e-12. */
+static int ikcs_jac_inv(const dhs_robot *d, const double *q, double J[6][6], double Ji[6][6])
+{
+    double A[6][12], qp[6], qm[6], w[3];
     dhr_mat4 T0, Tp, Tm;
     const double h = 1e-4;
     int i, j, k, c;
     dhs_fk_desc(d, q, NULL, &T0);
     for (k = 0; k < 6; k++) {
-        double W[3][3];
         memcpy(qp, q, sizeof qp);
         memcpy(qm, q, sizeof qm);
         qp[k] += h;
@@ -135,15 +154,8 @@ int dhk_well_conditioned_q(const dhs_robot *d, const double *q, double tol, int 
         dhs_fk_desc(d, qp, NULL, &Tp);
         dhs_fk_desc(d, qm, NULL, &Tm);
         for (i = 0; i < 3; i++) J[i][k] = (Tp.m[3][i] - Tm.m[3][i]) / (2.0 * h);
-        /* W = dR R^T (m[col][row]) */
-        for (i = 0; i < 3; i++)
-            for (j = 0; j < 3; j++) {
-                W[i][j] = 0.0;
-                for (c = 0; c < 3; c++) W[i][j] += (Tp.m[c][i] - Tm.m[c][i]) / (2.0 * h) * T0.m[c][j];
-            }
-        J[3][k] = 0.5 * (W[2][1] - W[1][2]);
-        J[4][k] = 0.5 * (W[0][2] - W[2][0]);
-        J[5][k] = 0.5 * (W[1][0] - W[0][1]);
+        ikcs_rot_diff(&Tp, &Tm, &T0, 2.0 * h, w);
+        for (i = 0; i < 3; i++) J[3 + i][k] = w[i];
     }
     for (i = 0; i < 6; i++) {
         for (j = 0; j < 6; j++) {
@@ -168,6 +180,16 @@ int dhk_well_conditioned_q(const dhs_robot *d, const double *q, double tol, int 
             for (j = 0; j < 12; j++) A[i][j] -= f * A[c][j];
         }
     }
+    for (i = 0; i < 6; i++)
+        for (j = 0; j < 6; j++) Ji[i][j] = A[i][6 + j] / A[i][i];
+    return 1;
+}
+
+int dhk_well_conditioned_q(const dhs_robot *d, const double *q, double tol, int nj)
+{
+    double J[6][6], Ji[6][6], dx[6];
+    int i, j, k;
+    if (!ikcs_jac_inv(d, q, J, Ji)) return 0;
     for (i = 0; i < 6; i++) {
         dx[i] = (i < 3) ? ldexp(1.0, -DH_QPOS_FRAC) : ldexp(2.0, -30);
         for (k = 0; k < 3; k++)
@@ -175,9 +197,35 @@ int dhk_well_conditioned_q(const dhs_robot *d, const double *q, double tol, int 
     }
     for (i = 0; i < nj; i++) {
         double b = 0.0;
-        for (j = 0; j < 6; j++) b += fabs(A[i][6 + j] / A[i][i]) * dx[j];
+        for (j = 0; j < 6; j++) b += fabs(Ji[i][j]) * dx[j];
         if (d->j[i].type == DH_JOINT_PRISMATIC) b /= DHK_LS; /* as dhk_jdiff_q */
         if (b > tol) return 0;
     }
     return 1;
+}
+
+int dhk_first_order_match_q(const dhs_robot *d, const double *q, const dh_robot *r, const dhr_mat4 *Td,
+                            const dh_ikc_sol_q *sol, uint32_t ns, const int32_t *qgen)
+{
+    double J[6][6], Ji[6][6];
+    uint32_t s;
+    if (!ikcs_jac_inv(d, q, J, Ji)) return -1;
+    for (s = 0; s < ns; s++) {
+        dhr_mat4 Ts;
+        double e[6];
+        int i, j, ok = 1;
+        dhs_fk_ref_q(r, sol[s].q, NULL, &Ts);
+        for (i = 0; i < 3; i++) e[i] = Ts.m[3][i] - Td->m[3][i];
+        ikcs_rot_diff(&Ts, Td, Td, 1.0, e + 3);
+        for (i = 0; i < 6 && ok; i++) {
+            double b = 0.0;
+            for (j = 0; j < 6; j++) b += fabs(Ji[i][j]) * (fabs(e[j]) + ((j < 3) ? ldexp(1.0, -DH_QPOS_FRAC) : ldexp(2.0, -30)));
+            b *= 2.0; /* the second-order rest */
+            if (d->j[i].type == DH_JOINT_PRISMATIC) b /= DHK_LS; /* as dhk_jdiff_q */
+            if (b < DHK_COMP_DEG) b = DHK_COMP_DEG;
+            ok = dhk_jdiff_q(r, (uint32_t)i, sol[s].q[i], qgen[i]) <= b;
+        }
+        if (ok) return (int)s;
+    }
+    return -1;
 }

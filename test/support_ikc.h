@@ -79,4 +79,16 @@ int dhk_check_sols_q(const dh_robot *r, const dhr_mat4 *Td, const dh_ikc_sol_q *
  *  at 1e-2 from each. */
 int dhk_well_conditioned_q(const dhs_robot *d, const double *q, double tol, int nj);
 
+/** Index of the first of sol[0..ns) that is the configuration q (qgen in
+ *  Q16.16) to first order: on every joint within 2 x sum_j |J^-1_ij| x
+ *  (|e_j| + rounding of the target), at least DHK_COMP_DEG, where e is the
+ *  measured pose error of that solution against Td (double FK) and J the
+ *  Jacobian of the description d at q; the factor 2 covers the
+ *  second-order rest. A solution whose residual is within tolerance but
+ *  whose joints sit on an ill-conditioned direction (an elbow near
+ *  stretched and a wrist near singular at once) is then the same branch,
+ *  not a missing one. -1 when none is. */
+int dhk_first_order_match_q(const dhs_robot *d, const double *q, const dh_robot *r, const dhr_mat4 *Td,
+                            const dh_ikc_sol_q *sol, uint32_t ns, const int32_t *qgen);
+
 #endif /* SUPPORT_IKC_H */

@@ -615,17 +615,24 @@ void dh_mat4_apply_vec4_f32(const dh_mat4_f32 *T, const dh_vec4_f32 *u, dh_vec4_
 }
 #endif
 
-/* x * 0 is +-0 for finite x and NaN for NaN and +-Inf; a sum of +-0 is
- * never NaN */
-dh_status dh_mat4_check_finite_f32(const dh_mat4_f32 *T)
+/* 1 when every entry of T is finite, else 0: x * 0 is +-0 for finite x
+ * and NaN for NaN and +-Inf; a sum of +-0 is never NaN. The general path
+ * of dh_mat4_apply_point_h_f32 tests this directly, so a firmware that
+ * does not call dh_mat4_check_finite_f32 does not link its status form. */
+static DH_NOINLINE int mat4_all_finite(const dh_mat4_f32 *T)
 {
     float z = 0.0f;
     int c, r;
-    DH_ASSERT(T != NULL);
     for (c = 0; c < 4; c++) {
         for (r = 0; r < 4; r++) z += T->m[c][r] * 0.0f;
     }
-    return dh_feq_f32(z, z) ? DH_OK : DH_ERR_NAN;
+    return dh_feq_f32(z, z);
+}
+
+dh_status dh_mat4_check_finite_f32(const dh_mat4_f32 *T)
+{
+    DH_ASSERT(T != NULL);
+    return mat4_all_finite(T) ? DH_OK : DH_ERR_NAN;
 }
 
 /* The general path for in = u: h = T in (h: the caller's scratch),
@@ -635,17 +642,18 @@ dh_status dh_mat4_check_finite_f32(const dh_mat4_f32 *T)
  * call there costs flash). */
 DH_INLINE dh_status mat4_point_h_general(const dh_mat4_f32 *T, const float *in, float *h, dh_vec3_f32 *v)
 {
-    float z = 0.0f, zi = 0.0f;
+    float z = 0.0f, zi = 0.0f, w;
     int i;
     mat4_lin(T, in, h, 4);
     for (i = 0; i < 4; i++) {
         z += h[i] * 0.0f;
         zi += in[i] * 0.0f;
     }
-    if (!dh_feq_f32(z, z)) return (dh_mat4_check_finite_f32(T) == DH_OK && dh_feq_f32(zi, zi)) ? DH_ERR_OVERFLOW : DH_ERR_NAN;
+    if (!dh_feq_f32(z, z)) return (mat4_all_finite(T) && dh_feq_f32(zi, zi)) ? DH_ERR_OVERFLOW : DH_ERR_NAN;
     if (dh_feq_f32(h[3], 0.0f)) return DH_ERR_DOMAIN;
+    w = h[3]; /* in a local: through the pointer h, each store h[i] would reload it */
     for (i = 0; i < 3; i++) {
-        h[i] = h[i] / h[3] + 0.0f;
+        h[i] = h[i] / w + 0.0f;
         z += h[i] * 0.0f;
     }
     if (!dh_feq_f32(z, z)) return DH_ERR_OVERFLOW;

@@ -566,31 +566,34 @@ dh_status dh_link_q(const dh_robot *r, uint32_t i, int32_t q, dh_frame_q *A)
 }
 #endif
 
-/* out = cur * A_i(q[i]) (out may be cur); DH_ERR_OVERFLOW when an entry
- * or d + q saturated, else 0. The default build writes the first link of
- * an identity base out, takes the fast step where its bounds hold (file
- * comment) and the general step otherwise; the size-first build always
- * takes the general step. */
+/* out = cur * A_i(q[i]) (out may be cur); sets *ovf, the chain's flag, to
+ * DH_ERR_OVERFLOW when an entry or d + q saturated (the inlined step
+ * updates that flag in place: a flag of its own, returned and ORed in,
+ * costs the Puma chain instructions on Cortex-M0 and M4). The default
+ * build writes the first link of an identity base out, takes the fast
+ * step where its bounds hold (file comment) and the general step
+ * otherwise; the size-first build always takes the general step. */
 #if DH_FAST_PATHS
-DH_INLINE int fkq_chain_joint(const dh_robot *r, uint32_t i, const int32_t *q, const dh_frame_q *cur, dh_frame_q *out)
+DH_INLINE void fkq_chain_joint(const dh_robot *r, uint32_t i, const int32_t *q, const dh_frame_q *cur, dh_frame_q *out,
+                               int *ovf)
 {
     dh_q30 v[6];
-    int ovf = fkq_joint_values(&r->joint[i], q[i], v);
+    *ovf |= fkq_joint_values(&r->joint[i], q[i], v);
     if (i == 0u && (r->flags & DH_ROBOT_BASE_ID_Q) != 0u) {
         fkq_link_direct(out, r->conv != DH_CONV_STANDARD, v);
     } else if ((r->flags & DH_ROBOT_BASE_SMALL_Q) != 0u && FAST_LENGTHS(v[5], v[4])) {
-        ovf |= (r->conv == DH_CONV_STANDARD) ? fkq_fast_std(cur, out, v) : fkq_fast_mod(cur, out, v);
+        *ovf |= (r->conv == DH_CONV_STANDARD) ? fkq_fast_std(cur, out, v) : fkq_fast_mod(cur, out, v);
     } else {
         fkq_copy_frame(out, cur);
-        fkq_step(out, r->conv != DH_CONV_STANDARD, v, &ovf);
+        fkq_step(out, r->conv != DH_CONV_STANDARD, v, ovf);
     }
-    return ovf;
 }
 #else
-DH_INLINE int fkq_chain_joint(const dh_robot *r, uint32_t i, const int32_t *q, const dh_frame_q *cur, dh_frame_q *out)
+DH_INLINE void fkq_chain_joint(const dh_robot *r, uint32_t i, const int32_t *q, const dh_frame_q *cur, dh_frame_q *out,
+                               int *ovf)
 {
     fkq_copy_frame(out, cur);
-    return fkq_joint_step(out, r, i, q[i]);
+    *ovf |= fkq_joint_step(out, r, i, q[i]);
 }
 #endif
 
@@ -608,7 +611,7 @@ static dh_status fkq_all(const dh_robot *r, const int32_t *q, dh_frame_q *frames
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_UNAVAILABLE;
     for (i = 0u; i < r->n; i++) {
         if (frames) out = &frames[i];
-        ovf |= fkq_chain_joint(r, i, q, cur, out);
+        fkq_chain_joint(r, i, q, cur, out, &ovf);
         cur = out;
     }
     if (T_end) {

@@ -154,13 +154,14 @@ static int well_conditioned(const dhs_robot *d, const double *q)
  * stretched or folded elbow of f (deg), "<name>.kept", the ill-conditioned
  * targets solved only with the out-of-limit solutions kept, and
  * "<name>.near_limit", the generating configurations found only among
- * those (stats.near_limit). */
+ * those (stats.near_limit), "<name>.first_order", those found only by
+ * dhk_first_order_match_q. */
 static void random_run(const dhs_robot *d, const dhs_robot *f, dh_ikc_kind kind, long iters)
 {
     dh_robot r;
     dh_ikc_model_q m;
     dhk_stats st;
-    long it, kept = 0;
+    long it, kept = 0, first_order = 0;
     char probe[48];
     memset(&st, 0, sizeof st);
     dhk_build_q(d, kind, &r, &m);
@@ -204,6 +205,12 @@ static void random_run(const dhs_robot *d, const dhs_robot *f, dh_ikc_kind kind,
             found = dhk_check_sols_q(&r, &Td, sol, ns, qq, NULL);
             st.near_limit++;
         }
+        if (comp && found < 0) {
+            /* beyond DHK_COMP_DEG: the same branch when the solution's own
+             * residual explains the distance to first order */
+            found = dhk_first_order_match_q(d, q, &r, &Td, sol, ns, qq);
+            if (found >= 0) first_order++;
+        }
         if (comp) {
             st.comp++;
             DHT_TRUE_MSG(found >= 0, "%s: generating configuration %.6f %.6f %.6f %.6f %.6f %.6f not among %u solutions",
@@ -212,6 +219,8 @@ static void random_run(const dhs_robot *d, const dhs_robot *f, dh_ikc_kind kind,
     }
     snprintf(probe, sizeof probe, "%s.kept", d->name);
     dht_reach_max(probe, (double)kept);
+    snprintf(probe, sizeof probe, "%s.first_order", d->name);
+    dht_reach_max(probe, (double)first_order);
     snprintf(probe, sizeof probe, "%s.near_limit", d->name);
     dht_reach_max(probe, (double)st.near_limit);
     dht_printf("%s: %ld targets (%ld completeness), %ld solutions, max err %.3g mm, %.3g\n", d->name, st.targets,
