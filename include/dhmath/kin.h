@@ -403,15 +403,23 @@ dh_status dh_ik_q(const dh_robot *r, const dh_frame_q *target, const int32_t *q0
 
 /* ---- singularity measures and damped least squares, fixed point ---------- */
 
-/** Scratch of dh_manipulability_q and dh_dls_step_q (caller-owned, 132
- *  + 2 DH_MAX_JOINTS bytes, so that both stay within the 256-byte stack budget); its contents
- *  are unspecified between calls. */
+/** Scratch of dh_manipulability_q and dh_dls_step_q (caller-owned, about
+ *  156 + 2 DH_MAX_JOINTS bytes, so that both stay within the 256-byte stack
+ *  budget): the call's state and matrices; its contents are unspecified
+ *  between calls. */
 typedef struct {
     int32_t L[21];  /**< equilibrated Gram matrix, then its factor (packed lower triangle) */
     int32_t y[6];   /**< right-hand side and solution */
     int16_t c[6];   /**< equilibration exponents */
     int16_t ik[6];  /**< pivot reciprocal exponents */
     int16_t ex[DH_MAX_JOINTS]; /**< exponents of the unscaled step */
+    const int32_t *J;          /**< the call's Jacobian */
+    const int32_t *dq_max;     /**< the call's step bounds (NULL: none) */
+    uint32_t pris;             /**< bit i: column i is prismatic */
+    uint8_t n;                 /**< columns of J */
+    uint8_t m;                 /**< Gram order: 6 (rows) or n (columns) */
+    uint8_t cols;              /**< 1: G = B^T B, 0: G = B B^T */
+    int16_t g[2];              /**< formats of the linear and angular rows */
 } dh_dls_work_q;
 
 /**

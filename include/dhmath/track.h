@@ -160,8 +160,8 @@ typedef struct {
     int32_t v[DH_MAX_JOINTS];           /**< last STEP q - q_prev (per period, joint LSB) */
     int32_t dq_max[DH_MAX_JOINTS];      /**< step bound floor(vmax_q dt_us / 10^6) (INT32_MAX: unlimited) */
     int32_t dv_max[DH_MAX_JOINTS];      /**< bound on the change of step, floor(floor(amax_q dt_us / 10^6) dt_us / 10^6) (INT32_MAX: unlimited) */
-    int32_t lambda;                     /**< largest damping of the DLS step, dh_qpos (default 0.02 L) */
-    int32_t sing_threshold;             /**< near-singular threshold on sigma_min, dh_qpos (default 0.005 L), where the damping starts */
+    int32_t lambda;                     /**< largest damping of the DLS step, dh_qpos (default 0.02 in J's units, not scaled by L) */
+    int32_t sing_threshold;             /**< near-singular threshold on sigma_min, dh_qpos (default 0.005, not scaled by L), where the damping starts */
     int32_t pos_tol;                    /**< "reached": position tolerance, dh_qpos (default 2^-19 L, at least 16 LSB) */
     int32_t rot_tol;                    /**< "reached": rotation tolerance, Q3.29 rad (default 10737 = 2e-5 rad) */
     /* private workspace (keeps the step's stack small); read-only for the caller */
@@ -176,6 +176,19 @@ typedef struct {
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];   /**< closed-form solutions */
     dh_frame_q T;                       /**< FK at q */
     dh_dls_work_q work;                 /**< scratch of the damped step */
+    dh_frame_q rD;                      /**< scratch of the rotation error: dR */
+    dh_dir3_q rw;                       /**< the rotation error */
+    int32_t rq[4];                      /**< scratch of the rotation error: its quaternion */
+    int32_t sg;                         /**< bound on the smallest singular value at the point of the step */
+    int32_t lam;                        /**< damping of the step */
+    uint32_t ns;                        /**< closed-form solution count */
+    uint32_t pris;                      /**< bit i: joint i prismatic */
+    dh_status ist;                      /**< closed form's status */
+    dh_status tst;                      /**< the step's status */
+    int have, unreach, stall;           /**< the step's decisions */
+    const dh_frame_q *tgt;              /**< the step's target */
+    int32_t *out;                       /**< the step's q_out */
+    dh_track_report_q *rep;             /**< the step's report */
 } dh_track_q;
 
 /**

@@ -96,6 +96,23 @@ dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_
 dh_status dh_ikc_par234_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count);
 dh_status dh_ikc_scara_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count);
 
+/* dh_ikc_q in three calls, for a caller that must not keep dh_ikc_q's
+ * frame under its own (the tracker, src/track/): the argument checks and
+ * T06 into sol (dh_ikc_q's statuses before a solver runs; dh_ikc_q calls
+ * it too); the model's solver (inline: no frame of its own; the raw count
+ * in *count); and the joint values, limits and count of dh_ikc_q with
+ * DH_IKC_KEEP_OUT_OF_LIMITS from the raw count in *n_sol (*n_sol and
+ * status as dh_ikc_q's). */
+dh_status dh_ikc_args_q_(const dh_ikc_model_q *m, const dh_frame_q *target, uint32_t opts, dh_ikc_sol_q *sol);
+static inline dh_status dh_ikc_raw_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol,
+                                      uint32_t *count)
+{
+    if (m->kind == DH_IKC_PARALLEL_234) return dh_ikc_par234_q_(m, q_ref, sol, count);
+    if (m->kind == DH_IKC_SCARA) return dh_ikc_scara_q_(m, q_ref, sol, count);
+    return dh_ikc_wrist_q_(m, q_ref, sol, count);
+}
+dh_status dh_ikc_finish_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *n_sol);
+
 /* Shared fixed helpers (defined in dh_ikc_common_q.c). */
 #define DH_IKC_Q16_180 ((int32_t)11796480)
 #define DH_IKC_Q16_360 ((int32_t)23592960)

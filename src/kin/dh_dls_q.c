@@ -48,19 +48,12 @@
 #define DLSQ_DSING_FB 36u                 /* undamped pivot below 2^-24: singular */
 #define DLSQ_DELTA30 512                  /* delta of the singular-value factor, 2^-21 in Q2.30 */
 
-/* The call's state: inputs and formats here, the matrices in the caller's
- * dh_dls_work_q (L: A' then its factor, packed lower triangle by rows, the
- * diagonal holding the pivots' reciprocal roots iy: 1 / L_jj = iy 2^-ik
- * in Q2.30; c: D = diag(2^(c + 15)); y: the right-hand side and solution). */
-typedef struct {
-    const int32_t *J;
-    dh_dls_work_q *w;
-    uint32_t pris;       /* bit i: column i is prismatic */
-    uint8_t n;           /* columns of J */
-    uint8_t m;           /* Gram order: 6 (rows) or n (columns) */
-    uint8_t cols;        /* 1: G = B^T B, 0: G = B B^T */
-    int16_t g[2];        /* format of B's linear and angular rows, Q(g) */
-} dlsq_ctx;
+/* The call's state and matrices: the caller's dh_dls_work_q (kin.h; L: A'
+ * then its factor, packed lower triangle by rows, the diagonal holding the
+ * pivots' reciprocal roots iy: 1 / L_jj = iy 2^-ik in Q2.30; c: D =
+ * diag(2^(c + 15)); y: the right-hand side and solution), so that no
+ * frame of these functions holds more than a few scalars. */
+typedef dh_dls_work_q dlsq_ctx;
 
 typedef char dlsq_work_fits[(sizeof(((dh_dls_work_q *)0)->L) == DLSQ_TRI * sizeof(int32_t)) ? 1 : -1];
 
@@ -132,15 +125,15 @@ static DH_NOINLINE void dlsq_equil(dlsq_ctx *c, int32_t lam, int32_t shift)
         const int32_t la = (int32_t)dlsq_shift(lam, dlsq_ga(c, a) - DH_QPOS_FRAC);
         const int64_t h = dlsq_gram(c, a, a) + dh_q_mul64(la, la);
         if (h == 0) {
-            c->w->c[a] = 0;
-            c->w->L[dlsq_tri(a, a)] = DH_Q_ONE30;
+            c->c[a] = 0;
+            c->L[dlsq_tri(a, a)] = DH_Q_ONE30;
         } else {
             const int ca = ((int)dh_q_bitlen64((uint64_t)h) - 29) >> 1;
-            c->w->c[a] = (int16_t)ca;
-            c->w->L[dlsq_tri(a, a)] = (int32_t)dlsq_shift(h, -2 * ca) - shift;
+            c->c[a] = (int16_t)ca;
+            c->L[dlsq_tri(a, a)] = (int32_t)dlsq_shift(h, -2 * ca) - shift;
         }
         for (b = 0; b < a; b++)
-            c->w->L[dlsq_tri(a, b)] = (int32_t)dlsq_shift(dlsq_gram(c, a, b), -(c->w->c[a] + c->w->c[b]));
+            c->L[dlsq_tri(a, b)] = (int32_t)dlsq_shift(dlsq_gram(c, a, b), -(c->c[a] + c->c[b]));
     }
 }
 
@@ -161,7 +154,7 @@ static int32_t dlsq_div(const dlsq_ctx *c, uint32_t j, int64_t s, unsigned lb, i
         *bad = 1;
         return 0;
     }
-    x = dh_q_rshr(dh_q_mul64((int32_t)s30, c->w->L[dlsq_tri(j, j)]), (unsigned)c->w->ik[j]);
+    x = dh_q_rshr(dh_q_mul64((int32_t)s30, c->L[dlsq_tri(j, j)]), (unsigned)c->ik[j]);
     if (dlsq_out_of(x, lb)) {
         *bad = 1;
         return 0;
@@ -170,34 +163,34 @@ static int32_t dlsq_div(const dlsq_ctx *c, uint32_t j, int64_t s, unsigned lb, i
 }
 
 /* Pivot j (Q60, > 0): its reciprocal root iy 2^-ik on the diagonal. */
-static DH_NOINLINE void dlsq_pivot(const dlsq_ctx *c, uint32_t j, int64_t d)
+static DH_NOINLINE void dlsq_pivot(dlsq_ctx *c, uint32_t j, int64_t d)
 {
     int32_t mant;
     int t;
     dh_q_norm_even((uint64_t)d, &mant, &t);
-    c->w->L[dlsq_tri(j, j)] = dh_q_rsqrt29(mant, 3u);
-    c->w->ik[j] = (int16_t)(14 + t / 2);
+    c->L[dlsq_tri(j, j)] = dh_q_rsqrt29(mant, 3u);
+    c->ik[j] = (int16_t)(14 + t / 2);
 }
 
 /* Cholesky of A' in place (the diagonal receives the pivots' reciprocal
  * roots). Pivots below 2^fb (Q60) are raised to it when raise is set;
  * otherwise the factorization stops: returns 1. */
-static DH_NOINLINE int dlsq_chol(const dlsq_ctx *c, unsigned fb, int raise)
+static DH_NOINLINE int dlsq_chol(dlsq_ctx *c, unsigned fb, int raise)
 {
     uint32_t i, j, k;
     for (j = 0; j < c->m; j++) {
-        int64_t d = (int64_t)((uint64_t)(int64_t)c->w->L[dlsq_tri(j, j)] << 30);
+        int64_t d = (int64_t)((uint64_t)(int64_t)c->L[dlsq_tri(j, j)] << 30);
         int bad = 0;
-        for (k = 0; k < j; k++) d -= dh_q_mul64(c->w->L[dlsq_tri(j, k)], c->w->L[dlsq_tri(j, k)]);
+        for (k = 0; k < j; k++) d -= dh_q_mul64(c->L[dlsq_tri(j, k)], c->L[dlsq_tri(j, k)]);
         if (d < 0 || (d >> fb) == 0) {
             if (!raise) return 1;
             d = (int64_t)1 << fb;
         }
         dlsq_pivot(c, j, d);
         for (i = j + 1u; i < c->m; i++) {
-            int64_t s = (int64_t)((uint64_t)(int64_t)c->w->L[dlsq_tri(i, j)] << 30);
-            for (k = 0; k < j; k++) s -= dh_q_mul64(c->w->L[dlsq_tri(i, k)], c->w->L[dlsq_tri(j, k)]);
-            c->w->L[dlsq_tri(i, j)] = dlsq_div(c, j, s, 31u, &bad);
+            int64_t s = (int64_t)((uint64_t)(int64_t)c->L[dlsq_tri(i, j)] << 30);
+            for (k = 0; k < j; k++) s -= dh_q_mul64(c->L[dlsq_tri(i, k)], c->L[dlsq_tri(j, k)]);
+            c->L[dlsq_tri(i, j)] = dlsq_div(c, j, s, 31u, &bad);
         }
         if (bad) return 1;
     }
@@ -233,12 +226,12 @@ static DH_NOINLINE int32_t dlsq_logdet(const dlsq_ctx *c)
     uint32_t P = 0x40000000u, j;
     int32_t e = 0;
     for (j = 0; j < c->m; j++) {
-        const uint32_t v = (uint32_t)c->w->L[dlsq_tri(j, j)];
+        const uint32_t v = (uint32_t)c->L[dlsq_tri(j, j)];
         const unsigned bl = 32u - dh_port_clz(v);
         const uint32_t mant = (bl >= 31u) ? (v >> (bl - 31u)) : (v << (31u - bl));
         uint64_t p = ((uint64_t)P * mant) >> 30;
         /* log2 v = bl - 1 + log2(mant / 2^30) */
-        e += c->w->c[j] + 15 - dlsq_ga(c, j) + c->w->ik[j] - ((int32_t)bl - 1);
+        e += c->c[j] + 15 - dlsq_ga(c, j) + c->ik[j] - ((int32_t)bl - 1);
         if (p >= ((uint64_t)1 << 31)) {
             p >>= 1;
             e--;
@@ -254,26 +247,26 @@ static DH_NOINLINE int32_t dlsq_logdet(const dlsq_ctx *c)
  * rounded up, the root rounded down, then lowered by 2^-10 relative and
  * 1 LSB for the rounding of L^-1. 0 when an entry of L^-1 reaches 2^11
  * (lambda_min(A' - delta I) below about 2^-22). */
-static DH_NOINLINE int32_t dlsq_sigma(const dlsq_ctx *c)
+static DH_NOINLINE int32_t dlsq_sigma(dlsq_ctx *c)
 {
-    int32_t *u = c->w->y, y, mant;
+    int32_t *u = c->y, y, mant;
     uint64_t acc = 0u;
     uint32_t i, k, t;
     int bad = 0, cmin = 64, sh, te;
     int64_t v;
     for (k = 0; k < c->m; k++)
-        if (c->w->c[k] - dlsq_ga(c, k) < cmin) cmin = c->w->c[k] - dlsq_ga(c, k);
+        if (c->c[k] - dlsq_ga(c, k) < cmin) cmin = c->c[k] - dlsq_ga(c, k);
     for (k = 0; k < c->m; k++) {
         uint64_t s2 = 0u;
         for (i = k; i < c->m; i++) {
             int64_t s = (int64_t)(i == k) << 48;   /* u in Q18 */
-            for (t = k; t < i; t++) s -= dh_q_mul64(c->w->L[dlsq_tri(i, t)], u[t]);
+            for (t = k; t < i; t++) s -= dh_q_mul64(c->L[dlsq_tri(i, t)], u[t]);
             u[i] = dlsq_div(c, i, s, 29u, &bad);
             if (bad) return 0;
             s2 += (uint64_t)dh_q_mul64(u[i], u[i]) + ((uint64_t)dh_q_abs_u32(u[i]) << 3) + 16u;
         }
         /* s2 < 2^63 (m terms below 2^60 + 2^34); /16 then 2^-2(c_k - cmin), up */
-        sh = 4 + 2 * (c->w->c[k] - dlsq_ga(c, k) - cmin);
+        sh = 4 + 2 * (c->c[k] - dlsq_ga(c, k) - cmin);
         acc += (sh >= 63) ? 1u : ((s2 >> (unsigned)sh) + 1u);
     }
     /* T = acc 2^(4 + 2g - 60 - 2 cmin - 30) (D_k = 2^(c_k + 15)), so
@@ -291,30 +284,35 @@ static DH_NOINLINE int32_t dlsq_sigma(const dlsq_ctx *c)
     return (v < 0) ? 0 : (int32_t)v;
 }
 
+void dh_kin_manip_q_(dh_dls_work_q *c, int32_t *w, int32_t *sigma_min)
+{
+    uint32_t i;
+    const uint32_t n = c->n;
+    const int32_t *const J = c->J;
+    c->pris = 0u;
+    for (i = 0; i < n; i++)
+        if (J[3u * n + i] == 0 && J[4u * n + i] == 0 && J[5u * n + i] == 0) c->pris |= 1u << i;
+    c->cols = (n < 6u) ? 1u : 0u;
+    c->m = (uint8_t)(c->cols ? n : 6u);
+    dlsq_format(c, 0);
+    if (w != NULL) {
+        dlsq_equil(c, 0, 0);
+        *w = dlsq_chol(c, DLSQ_DSING_FB, 0) ? INT32_MIN : dlsq_logdet(c);
+    }
+    if (sigma_min != NULL) {
+        dlsq_equil(c, 0, DLSQ_DELTA30);
+        *sigma_min = dlsq_chol(c, 0u, 0) ? 0 : dlsq_sigma(c);
+    }
+}
+
 dh_status dh_manipulability_q(const int32_t *J, uint32_t n, dh_dls_work_q *work, int32_t *w, int32_t *sigma_min)
 {
-    dlsq_ctx c;
-    uint32_t i;
     DH_ASSERT(J != NULL);
     DH_ASSERT(work != NULL);
     if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
-    c.J = J;
-    c.w = work;
-    c.n = (uint8_t)n;
-    c.pris = 0u;
-    for (i = 0; i < n; i++)
-        if (J[3u * n + i] == 0 && J[4u * n + i] == 0 && J[5u * n + i] == 0) c.pris |= 1u << i;
-    c.cols = (n < 6u) ? 1u : 0u;
-    c.m = (uint8_t)(c.cols ? n : 6u);
-    dlsq_format(&c, 0);
-    if (w != NULL) {
-        dlsq_equil(&c, 0, 0);
-        *w = dlsq_chol(&c, DLSQ_DSING_FB, 0) ? INT32_MIN : dlsq_logdet(&c);
-    }
-    if (sigma_min != NULL) {
-        dlsq_equil(&c, 0, DLSQ_DELTA30);
-        *sigma_min = dlsq_chol(&c, 0u, 0) ? 0 : dlsq_sigma(&c);
-    }
+    work->J = J;
+    work->n = (uint8_t)n;
+    dh_kin_manip_q_(work, w, sigma_min);
     return DH_OK;
 }
 
@@ -330,7 +328,7 @@ static DH_NOINLINE int dlsq_rhs(const dlsq_ctx *c, const int32_t *e, int down, i
         const uint32_t a = dh_q_abs_u32(e[k]);
         if (a != 0u) {
             const int f = (k < 3u) ? DH_QPOS_FRAC : 29;
-            const int sk = 27 - (int)(32u - dh_port_clz(a)) + f + c->w->c[k] - c->g[k >= 3u];
+            const int sk = 27 - (int)(32u - dh_port_clz(a)) + f + c->c[k] - c->g[k >= 3u];
             if (sk < s) s = sk;
         }
     }
@@ -338,7 +336,7 @@ static DH_NOINLINE int dlsq_rhs(const dlsq_ctx *c, const int32_t *e, int down, i
     s -= down;
     for (k = 0; k < 6u; k++) {
         const int f = (k < 3u) ? DH_QPOS_FRAC : 29;
-        y[k] = (int32_t)dlsq_shift(e[k], s + c->g[k >= 3u] - f - c->w->c[k]);
+        y[k] = (int32_t)dlsq_shift(e[k], s + c->g[k >= 3u] - f - c->c[k]);
     }
     return s;
 }
@@ -348,7 +346,7 @@ static DH_NOINLINE int dlsq_rhs(const dlsq_ctx *c, const int32_t *e, int down, i
 static int dlsq_excess(const dlsq_ctx *c, uint32_t i, int64_t s)
 {
     const uint64_t a = (s < 0) ? 0u - (uint64_t)s : (uint64_t)s;
-    const int x = (int)dh_q_bitlen64(a) - 30 + 31 - c->w->ik[i] - 27;
+    const int x = (int)dh_q_bitlen64(a) - 30 + 31 - c->ik[i] - 27;
     return (x < 1) ? 1 : x;
 }
 
@@ -360,13 +358,13 @@ static DH_NOINLINE int dlsq_solve(const dlsq_ctx *c, int32_t *y)
     int bad = 0;
     for (i = 0; i < 6u; i++) {
         int64_t s = (int64_t)((uint64_t)(int64_t)y[i] << 30);
-        for (k = 0; k < i; k++) s -= dh_q_mul64(c->w->L[dlsq_tri(i, k)], y[k]);
+        for (k = 0; k < i; k++) s -= dh_q_mul64(c->L[dlsq_tri(i, k)], y[k]);
         y[i] = dlsq_div(c, i, s, 29u, &bad);
         if (bad) return dlsq_excess(c, i, s);
     }
     for (i = 6u; i-- > 0u;) {
         int64_t s = (int64_t)((uint64_t)(int64_t)y[i] << 30);
-        for (k = i + 1u; k < 6u; k++) s -= dh_q_mul64(c->w->L[dlsq_tri(k, i)], y[k]);
+        for (k = i + 1u; k < 6u; k++) s -= dh_q_mul64(c->L[dlsq_tri(k, i)], y[k]);
         y[i] = dlsq_div(c, i, s, 29u, &bad);
         if (bad) return dlsq_excess(c, i, s);
     }
@@ -384,8 +382,8 @@ static DH_NOINLINE uint32_t dlsq_raw(const dlsq_ctx *c, const int32_t *y, int s,
     int cmin = 64, x;
     unsigned bl;
     for (k = 0; k < 6u; k++)
-        if (c->w->c[k] < cmin) cmin = c->w->c[k];
-    for (k = 0; k < 6u; k++) t += dh_q_rshr(dh_q_mul64(dlsq_b(c, k, i), y[k]), (unsigned)(c->w->c[k] - cmin + 3));
+        if (c->c[k] < cmin) cmin = c->c[k];
+    for (k = 0; k < 6u; k++) t += dh_q_rshr(dh_q_mul64(dlsq_b(c, k, i), y[k]), (unsigned)(c->c[k] - cmin + 3));
     *neg = t < 0;
     a = (t < 0) ? 0u - (uint64_t)t : (uint64_t)t;
     bl = dh_q_bitlen64(a);
@@ -489,14 +487,14 @@ static DH_NOINLINE dh_status dlsq_check(const dh_robot *r, int32_t lambda, const
 
 /* A' y = D^-1 S e 2^s into w->y, scaled down until the substitutions fit:
  * returns s, INT32_MIN for e = 0, INT32_MAX when no scale fits. */
-static DH_NOINLINE int dlsq_solve_all(const dlsq_ctx *c, const int32_t *e)
+static DH_NOINLINE int dlsq_solve_all(dlsq_ctx *c, const int32_t *e)
 {
     int s, down = 0, tries;
     for (tries = 0; tries < 8; tries++) {
         int more;
-        s = dlsq_rhs(c, e, down, c->w->y);
+        s = dlsq_rhs(c, e, down, c->y);
         if (s == INT32_MIN) return s;
-        more = dlsq_solve(c, c->w->y);
+        more = dlsq_solve(c, c->y);
         if (more == 0) return s;
         down += more;
     }
@@ -504,35 +502,56 @@ static DH_NOINLINE int dlsq_solve_all(const dlsq_ctx *c, const int32_t *e)
 }
 
 /* The joint step from the solution (scale s), scaled to dq_max. */
-static DH_NOINLINE dh_status dlsq_emit(const dlsq_ctx *c, int s, const int32_t *dq_max, int32_t *dq)
+static DH_NOINLINE dh_status dlsq_emit(dlsq_ctx *c, int s, const int32_t *dq_max, int32_t *dq)
 {
     uint32_t i, q = UINT32_MAX, negs = 0u;
     int z = 0, ovf = 0;
     /* |dq_i| = dq[i] 2^ex[i] first (mantissas in dq), then scaled */
     for (i = 0; i < c->n; i++) {
         int ex = 0, neg = 0;
-        dq[i] = (int32_t)dlsq_raw(c, c->w->y, s, i, &ex, &neg);
-        c->w->ex[i] = (int16_t)((ex > 100) ? 100 : ((ex < -100) ? -100 : ex));
+        dq[i] = (int32_t)dlsq_raw(c, c->y, s, i, &ex, &neg);
+        c->ex[i] = (int16_t)((ex > 100) ? 100 : ((ex < -100) ? -100 : ex));
         if (neg) negs |= (uint32_t)1 << i;
     }
     if (dq_max != NULL) {
-        q = dlsq_ratio(c->n, dq, c->w->ex, dq_max, &z);
+        q = dlsq_ratio(c->n, dq, c->ex, dq_max, &z);
         if (q != UINT32_MAX && q != 0u && (z >= 0 || (z > -32 && (q >> (unsigned)(-z)) != 0u)))
             q = UINT32_MAX;   /* rho >= 1 */
     }
     for (i = 0; i < c->n; i++)
-        dq[i] = dlsq_out((uint32_t)dq[i], c->w->ex[i], (int)((negs >> i) & 1u), q, z, dq_max, i, &ovf);
+        dq[i] = dlsq_out((uint32_t)dq[i], c->ex[i], (int)((negs >> i) & 1u), q, z, dq_max, i, &ovf);
     return ovf ? DH_ERR_OVERFLOW : DH_OK;
+}
+
+dh_status dh_kin_dls_q_(dh_dls_work_q *c, const int32_t *e, int32_t lambda, int32_t *dq)
+{
+    uint32_t i;
+    int s;
+    c->m = 6u;
+    c->cols = 0;
+    dlsq_format(c, lambda);
+    dlsq_equil(c, lambda, 0);
+    for (i = 0; i < c->n; i++) dq[i] = 0;
+    if (dlsq_chol(c, (lambda != 0) ? DLSQ_DMIN_FB : DLSQ_DSING_FB, lambda != 0))
+        return (lambda != 0) ? DH_ERR_OVERFLOW : DH_ERR_SINGULAR;
+    s = dlsq_solve_all(c, e);
+    if (s == INT32_MIN) return DH_OK;
+    if (s == INT32_MAX) return DH_ERR_OVERFLOW;
+    return dlsq_emit(c, s, c->dq_max, dq);
+}
+
+uint32_t dh_kin_pris_q_(const dh_robot *r)
+{
+    uint32_t i, pris = 0u;
+    for (i = 0; i < r->n; i++)
+        if (r->joint[i].type == DH_JOINT_PRISMATIC) pris |= 1u << i;
+    return pris;
 }
 
 dh_status dh_dls_step_q(const dh_robot *r, const int32_t *J, const int32_t e[6], int32_t lambda,
                         const int32_t *dq_max, dh_dls_work_q *work, int32_t *dq)
 {
-    dlsq_ctx c;
-    uint32_t i;
-    int s;
     dh_status st;
-
     DH_ASSERT(r != NULL);
     DH_ASSERT(J != NULL);
     DH_ASSERT(e != NULL);
@@ -540,21 +559,9 @@ dh_status dh_dls_step_q(const dh_robot *r, const int32_t *J, const int32_t e[6],
     DH_ASSERT(work != NULL);
     st = dlsq_check(r, lambda, dq_max);
     if (st != DH_OK) return st;
-    c.J = J;
-    c.w = work;
-    c.n = (uint8_t)r->n;
-    c.m = 6u;
-    c.cols = 0;
-    c.pris = 0u;
-    for (i = 0; i < c.n; i++)
-        if (r->joint[i].type == DH_JOINT_PRISMATIC) c.pris |= 1u << i;
-    dlsq_format(&c, lambda);
-    dlsq_equil(&c, lambda, 0);
-    for (i = 0; i < c.n; i++) dq[i] = 0;
-    if (dlsq_chol(&c, (lambda != 0) ? DLSQ_DMIN_FB : DLSQ_DSING_FB, lambda != 0))
-        return (lambda != 0) ? DH_ERR_OVERFLOW : DH_ERR_SINGULAR;
-    s = dlsq_solve_all(&c, e);
-    if (s == INT32_MIN) return DH_OK;
-    if (s == INT32_MAX) return DH_ERR_OVERFLOW;
-    return dlsq_emit(&c, s, dq_max, dq);
+    work->J = J;
+    work->n = (uint8_t)r->n;
+    work->dq_max = dq_max;
+    work->pris = dh_kin_pris_q_(r);
+    return dh_kin_dls_q_(work, e, lambda, dq);
 }

@@ -63,5 +63,20 @@ typedef struct {
     int32_t q[4];
 } dh_kin_rot_scratch_q;
 void dh_kin_rot_error_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_kin_rot_scratch_q *s);
+/* dh_rot_error_q with its scratch D (dR) and q (4 words) in the caller's
+ * memory (the tracker's): same checks, status and w. */
+dh_status dh_kin_rot_error_chk_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_frame_q *D, dh_dir3_q *w,
+                                  int32_t *q);
+
+/* The bodies of dh_manipulability_q and dh_dls_step_q (dh_dls_q.c) on
+ * the state in c, for a caller that keeps c between calls (the tracker):
+ * dh_kin_manip_q_ reads c->J and c->n (1..DH_MAX_JOINTS); dh_kin_dls_q_
+ * reads c->J, c->n, c->dq_max and c->pris (dh_kin_pris_q_ of the robot)
+ * after dh_dls_step_q's argument checks (the caller's). Same results and
+ * statuses. */
+void dh_kin_manip_q_(dh_dls_work_q *c, int32_t *w, int32_t *sigma_min);
+dh_status dh_kin_dls_q_(dh_dls_work_q *c, const int32_t *e, int32_t lambda, int32_t *dq);
+/* bit i set when joint i of r is prismatic */
+uint32_t dh_kin_pris_q_(const dh_robot *r);
 
 #endif /* DHMATH_SRC_KIN_IMPL_H */

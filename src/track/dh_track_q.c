@@ -22,6 +22,7 @@
 #include "dhmath/frame.h"
 #include "../internal/dh_qmath.h"
 #include "../kin/kin_impl.h"
+#include "../ikc/ikc_impl.h"
 
 #define TRQ_NONE INT32_MAX   /* no acceleration limit */
 #define TRQ_STEP_CAP (((int32_t)1 << 30) - 1)
@@ -130,47 +131,52 @@ dh_status dh_track_init_q(dh_track_q *t, const dh_robot *r, const dh_ikc_model_q
     /* dh_jacobian_q in two private calls (its checks once here, then its
      * body writing FK straight into t->T), as in every step */
     if (dh_kin_jac_check_q_(r) != DH_OK || dh_kin_jac_q_(r, t->q, t->J, &t->T) != 0) return DH_ERR_OVERFLOW;
+    t->pris = dh_kin_pris_q_(r);
     return DH_OK;
 }
 
 /* ---- the step box ------------------------------------------------------ */
 
+/* The step box of joint i into t->lo[i], t->hi[i]. */
+static DH_NOINLINE void trq_box1(dh_track_q *t, uint32_t i)
+{
+    const dh_joint *j = &t->r->joint[i];
+    const int64_t q = t->q[i], A = t->dv_max[i];
+    const int lim = j->qmin_q <= j->qmax_q;
+    /* a step is at most 2^30 - 1 LSB, and q + s stays within
+     * [-INT32_MAX, INT32_MAX] */
+    const int64_t cap = (t->dq_max[i] < TRQ_STEP_CAP) ? t->dq_max[i] : TRQ_STEP_CAP;
+    int64_t lo = -cap, hi = cap;
+    if ((int64_t)INT32_MAX - q < hi) hi = (int64_t)INT32_MAX - q;
+    if (-(int64_t)INT32_MAX - q > lo) lo = -(int64_t)INT32_MAX - q;
+    if (A != TRQ_NONE) {
+        lo = (t->v[i] - A > lo) ? t->v[i] - A : lo;
+        hi = (t->v[i] + A < hi) ? t->v[i] + A : hi;
+        if (lim && A > 0) {
+            const int64_t bh = trq_brake_max(A, (int64_t)j->qmax_q - q);
+            const int64_t bl = -trq_brake_max(A, q - j->qmin_q);
+            hi = (bh < hi) ? bh : hi;
+            lo = (bl > lo) ? bl : lo;
+        }
+    }
+    if (lim) {
+        hi = ((int64_t)j->qmax_q - q < hi) ? (int64_t)j->qmax_q - q : hi;
+        lo = ((int64_t)j->qmin_q - q > lo) ? (int64_t)j->qmin_q - q : lo;
+    }
+    if (lo > hi) {
+        /* not reached (the braking step lies in the box); kept safe:
+         * the previous velocity braked, within every bound it meets */
+        lo = trq_clamp64(t->v[i] - trq_clamp64(t->v[i], -A, A), lo, hi);
+        hi = lo;
+    }
+    t->lo[i] = (int32_t)lo;
+    t->hi[i] = (int32_t)hi;
+}
+
 static DH_NOINLINE void trq_box(dh_track_q *t)
 {
     uint32_t i;
-    for (i = 0u; i < t->r->n; i++) {
-        const dh_joint *j = &t->r->joint[i];
-        const int64_t q = t->q[i], A = t->dv_max[i];
-        const int lim = j->qmin_q <= j->qmax_q;
-        /* a step is at most 2^30 - 1 LSB, and q + s stays within
-         * [-INT32_MAX, INT32_MAX] */
-        const int64_t cap = (t->dq_max[i] < TRQ_STEP_CAP) ? t->dq_max[i] : TRQ_STEP_CAP;
-        int64_t lo = -cap, hi = cap;
-        if ((int64_t)INT32_MAX - q < hi) hi = (int64_t)INT32_MAX - q;
-        if (-(int64_t)INT32_MAX - q > lo) lo = -(int64_t)INT32_MAX - q;
-        if (A != TRQ_NONE) {
-            lo = (t->v[i] - A > lo) ? t->v[i] - A : lo;
-            hi = (t->v[i] + A < hi) ? t->v[i] + A : hi;
-            if (lim && A > 0) {
-                const int64_t bh = trq_brake_max(A, (int64_t)j->qmax_q - q);
-                const int64_t bl = -trq_brake_max(A, q - j->qmin_q);
-                hi = (bh < hi) ? bh : hi;
-                lo = (bl > lo) ? bl : lo;
-            }
-        }
-        if (lim) {
-            hi = ((int64_t)j->qmax_q - q < hi) ? (int64_t)j->qmax_q - q : hi;
-            lo = ((int64_t)j->qmin_q - q > lo) ? (int64_t)j->qmin_q - q : lo;
-        }
-        if (lo > hi) {
-            /* not reached (the braking step lies in the box); kept safe:
-             * the previous velocity braked, within every bound it meets */
-            lo = trq_clamp64(t->v[i] - trq_clamp64(t->v[i], -A, A), lo, hi);
-            hi = lo;
-        }
-        t->lo[i] = (int32_t)lo;
-        t->hi[i] = (int32_t)hi;
-    }
+    for (i = 0u; i < t->r->n; i++) trq_box1(t, i);
 }
 
 /* t->dq scaled by one factor in [0, 1] so that each entry stays within
@@ -216,16 +222,16 @@ static int trq_onto_limits(const dh_track_q *t, dh_ikc_sol_q *sol)
 }
 
 /* The solution nearest t->q in time (largest |q*_i - q_i| / vmax_i, then
- * the sum of |q*_i - q_i|) within the limits into t->qs: 1 when there is
- * one; *unreach when there is no solution or none within the limits. */
-static DH_NOINLINE int trq_nearest(dh_track_q *t, const dh_frame_q *target, int *unreach)
+ * the sum of |q*_i - q_i|) among the st's t->ns solutions within the
+ * limits into t->qs: 1 when there is one; t->unreach when there is no
+ * solution or none within the limits. */
+static DH_NOINLINE int trq_nearest(dh_track_q *t, dh_status st)
 {
     const uint32_t n = t->r->n;
-    uint32_t ns = 0u, k, i, best = 0u;
+    uint32_t ns = t->ns, k, i, best = 0u;
     int64_t bs = 0;
     uint32_t btn = 0u, btd = 1u;   /* best time as a ratio btn / btd */
     int found = 0;
-    const dh_status st = dh_ikc_q(t->m, target, t->q, DH_IKC_KEEP_OUT_OF_LIMITS, t->sol, &ns);
     if (st != DH_OK) ns = 0u;
     for (k = 0u; k < ns; k++) {
         uint32_t tn = 0u, td = 1u;
@@ -252,10 +258,40 @@ static DH_NOINLINE int trq_nearest(dh_track_q *t, const dh_frame_q *target, int 
             found = 1;
         }
     }
-    *unreach = (st == DH_ERR_UNREACHABLE || (st == DH_OK && !found)) ? 1 : 0;
+    t->unreach = (st == DH_ERR_UNREACHABLE || (st == DH_OK && !found)) ? 1 : 0;
     if (!found) return 0;
     for (i = 0u; i < n; i++) t->qs[i] = t->sol[best].q[i];
     return 1;
+}
+
+/* 1 when the closed form's argument checks pass and T06 is in t->sol (the
+ * status in t->ist) */
+static DH_NOINLINE int trq_ikc_args(dh_track_q *t)
+{
+    if (t->m == NULL) return 0;
+    t->ist = dh_ikc_args_q_(t->m, t->tgt, DH_IKC_KEEP_OUT_OF_LIMITS, t->sol);
+    return (t->ist == DH_OK) ? 1 : 0;
+}
+
+/* The closed form's solution nearest in time (t->ist, t->ns: dh_ikc_q's
+ * status and count) in t->qs (t->have, t->unreach) and the step towards
+ * it clamped into the box: 1 when the box does not hold it (the target is
+ * chased). */
+static DH_NOINLINE int trq_pick(dh_track_q *t)
+{
+    uint32_t i;
+    int reached = 0;
+    if (t->m == NULL) return 1;
+    t->have = trq_nearest(t, t->ist);
+    if (t->have) {
+        reached = 1;
+        for (i = 0u; i < t->r->n; i++) {
+            const int64_t s = (int64_t)t->qs[i] - t->q[i];
+            if (s < t->lo[i] || s > t->hi[i]) reached = 0;
+            t->dq[i] = (int32_t)trq_clamp64(s, t->lo[i], t->hi[i]);
+        }
+    }
+    return !reached;
 }
 
 /* The step towards t->qs at the bound, each joint braking so as to stop
@@ -278,22 +314,28 @@ static DH_NOINLINE void trq_head(dh_track_q *t)
 
 /* ---- damped steps ---------------------------------------------------------- */
 
+/* e[0..2] = position error of the target from t->T (dh_qpos), e[3..5]
+ * the rotation error in t->rw; 0 when a component does not fit. */
+static DH_NOINLINE int trq_epos(dh_track_q *t)
+{
+    uint32_t k;
+    for (k = 0u; k < 3u; k++) {
+        const int64_t d = (int64_t)t->tgt->p[k] - t->T.p[k];
+        if (d > INT32_MAX || d < -(int64_t)INT32_MAX) return 0;
+        t->e[k] = (int32_t)d;
+    }
+    t->e[3] = t->rw.x;
+    t->e[4] = t->rw.y;
+    t->e[5] = t->rw.z;
+    return 1;
+}
+
 /* e = pose error of the target from t->T: position dh_qpos, rotation
  * Q3.29 rad; 0 when a component does not fit. */
-static DH_NOINLINE int trq_error(const dh_track_q *t, const dh_frame_q *target, int32_t *e)
+static DH_NOINLINE int trq_error(dh_track_q *t)
 {
-    dh_dir3_q w;
-    uint32_t k;
-    if (dh_rot_error_q(target, &t->T, &w) != DH_OK) return 0;
-    for (k = 0u; k < 3u; k++) {
-        const int64_t d = (int64_t)target->p[k] - t->T.p[k];
-        if (d > INT32_MAX || d < -(int64_t)INT32_MAX) return 0;
-        e[k] = (int32_t)d;
-    }
-    e[3] = w.x;
-    e[4] = w.y;
-    e[5] = w.z;
-    return 1;
+    if (dh_kin_rot_error_chk_q_(t->tgt, &t->T, &t->rD, &t->rw, t->rq) != DH_OK) return 0;
+    return trq_epos(t);
 }
 
 /* |e|^2 / 2^8 with the rotation weighed by L (dh_qpos), each component
@@ -341,51 +383,60 @@ static DH_NOINLINE void trq_residual(dh_track_q *t)
     }
 }
 
-/* The damped step fitted into the box; 1 when it stalls (the linearised
- * error drops by less than a tenth). */
-static DH_NOINLINE int trq_dls(dh_track_q *t, const dh_frame_q *target, int32_t sg)
+/* The pose error into t->e and the damping into t->lam (from t->sg): 1
+ * when the error could be computed. */
+static DH_NOINLINE int trq_prep(dh_track_q *t)
+{
+    if (!trq_error(t)) return 0;
+    t->lam = trq_damping(t, t->sg);
+    if (t->lam < 1) t->lam = 1;
+    return 1;
+}
+
+/* The damped step (dh_dls_step_q without a bound) into t->dq. */
+static DH_NOINLINE dh_status trq_solve(dh_track_q *t)
+{
+    t->work.J = t->J;
+    t->work.n = (uint8_t)t->r->n;
+    t->work.dq_max = NULL;
+    t->work.pris = t->pris;
+    return dh_kin_dls_q_(&t->work, t->e, t->lam, t->dq);
+}
+
+/* A joint that cannot move the way the step wants (against a limit, or
+ * braking) leaves the solve: its column is cleared (t->J is recomputed at
+ * q_out). 1 when one did (the step is solved again for the others). */
+static DH_NOINLINE int trq_block(dh_track_q *t)
 {
     const uint32_t n = t->r->n;
-    int32_t lam;
     uint32_t i, k;
-    uint64_t e2;
     int blocked = 0;
-    if (!trq_error(t, target, t->e)) {
-        for (i = 0u; i < n; i++) t->dq[i] = 0;
-        trq_fit(t);
-        return 1;
-    }
-    lam = trq_damping(t, sg);
-    if (lam < 1) lam = 1;
-    if (dh_dls_step_q(t->r, t->J, t->e, lam, NULL, &t->work, t->dq) != DH_OK) {
-        for (i = 0u; i < n; i++) t->dq[i] = 0;
-        trq_fit(t);
-        return 1;
-    }
-    /* a joint that cannot move the way the step wants (against a limit, or
-     * braking) leaves the solve: its column is cleared (t->J is recomputed
-     * at q_out) and the step solved again for the others */
     for (i = 0u; i < n; i++)
         if ((t->dq[i] > 0 && t->hi[i] <= 0) || (t->dq[i] < 0 && t->lo[i] >= 0)) {
             for (k = 0u; k < 6u; k++) t->J[k * n + i] = 0;
             blocked = 1;
         }
-    if (blocked && dh_dls_step_q(t->r, t->J, t->e, lam, NULL, &t->work, t->dq) != DH_OK) {
-        for (i = 0u; i < n; i++) t->dq[i] = 0;
-        trq_fit(t);
-        return 1;
-    }
+    return blocked;
+}
+
+/* The damped step fitted into the box; 1 when it stalls (the linearised
+ * error drops by less than a tenth). */
+static DH_NOINLINE int trq_settle(dh_track_q *t)
+{
+    uint64_t e2;
     trq_fit(t);
     e2 = trq_enorm2(t->e, t->reach);
     trq_residual(t);
     return (trq_enorm2(t->e, t->reach) * 100u > e2 * 81u) ? 1 : 0;
 }
 
-/* q + dq within the limits and within the box (exact integers). */
-static int32_t trq_put(const dh_track_q *t, uint32_t i)
+/* No damped step: zero, fitted into the box; stalls. */
+static DH_NOINLINE int trq_none(dh_track_q *t)
 {
-    const int64_t s = trq_clamp64(t->dq[i], t->lo[i], t->hi[i]);
-    return (int32_t)((int64_t)t->q[i] + s);
+    uint32_t i;
+    for (i = 0u; i < t->r->n; i++) t->dq[i] = 0;
+    trq_fit(t);
+    return 1;
 }
 
 /* Braking: each step towards 0 by at most A (at once without an
@@ -399,6 +450,7 @@ static DH_NOINLINE void trq_brake(dh_track_q *t)
         if (A != TRQ_NONE) s = (p > A) ? p - A : ((p < -A) ? p + A : 0);
         t->dq[i] = (int32_t)trq_clamp64(s, t->lo[i], t->hi[i]);
     }
+    t->unreach = 1;
 }
 
 /* Largest |qs_i - q_i - a dq_i| / w_i over the joints (a = 0 or 1) as
@@ -428,40 +480,43 @@ static DH_NOINLINE int trq_away(const dh_track_q *t)
     return (uint64_t)an * bd >= (uint64_t)bn * ad;
 }
 
-/* Two more damped steps from the point reached, within what is left of
- * the box (no closed form). */
-static DH_NOINLINE void trq_more(dh_track_q *t, const dh_frame_q *target)
+/* The next damped step starts from the point reached (no closed form):
+ * t->J and t->T there, the box less the step so far (kept in t->keep). 0
+ * when the Jacobian there saturates (the step so far is kept). */
+static DH_NOINLINE int trq_shift(dh_track_q *t)
 {
     const uint32_t n = t->r->n;
     uint32_t i;
-    int it;
-    for (it = 0; it < 2; it++) {
-        int32_t sg = 0;
-        for (i = 0u; i < n; i++) {
-            t->keep[i] = t->dq[i];
-            t->qs[i] = t->q[i] + t->dq[i];
-        }
-        if (dh_kin_jac_q_(t->r, t->qs, t->J, &t->T) != 0) {
-            for (i = 0u; i < n; i++) t->dq[i] = t->keep[i];
-            return;
-        }
-        (void)dh_manipulability_q(t->J, n, &t->work, NULL, &sg);
-        for (i = 0u; i < n; i++) {
-            t->lo[i] -= t->keep[i];
-            t->hi[i] -= t->keep[i];
-        }
-        (void)trq_dls(t, target, sg);
-        for (i = 0u; i < n; i++) {
-            t->lo[i] += t->keep[i];
-            t->hi[i] += t->keep[i];
-            t->dq[i] += t->keep[i];
-        }
+    for (i = 0u; i < n; i++) {
+        t->keep[i] = t->dq[i];
+        t->qs[i] = t->q[i] + t->dq[i];
+    }
+    if (dh_kin_jac_q_(t->r, t->qs, t->J, &t->T) != 0) {
+        for (i = 0u; i < n; i++) t->dq[i] = t->keep[i];
+        return 0;
+    }
+    for (i = 0u; i < n; i++) {
+        t->lo[i] -= t->keep[i];
+        t->hi[i] -= t->keep[i];
+    }
+    return 1;
+}
+
+/* The box and the step back from the point reached. */
+static DH_NOINLINE void trq_unshift(dh_track_q *t)
+{
+    uint32_t i;
+    for (i = 0u; i < t->r->n; i++) {
+        t->lo[i] += t->keep[i];
+        t->hi[i] += t->keep[i];
+        t->dq[i] += t->keep[i];
     }
 }
 
 /* 1 when the target's position is beyond the reach bound from the base. */
-static DH_NOINLINE int trq_beyond(const dh_track_q *t, const dh_frame_q *target)
+static DH_NOINLINE int trq_beyond(const dh_track_q *t)
 {
+    const dh_frame_q *const target = t->tgt;
     uint64_t s = 0u;
     uint32_t k;
     for (k = 0u; k < 3u; k++) {
@@ -472,101 +527,146 @@ static DH_NOINLINE int trq_beyond(const dh_track_q *t, const dh_frame_q *target)
     return s > (uint64_t)dh_q_mul64(t->reach, t->reach);
 }
 
-/* Not reachable this period: away from singularities straight for the
- * closed-form solution at the bound; near them the damped step, unless it
- * stalls or moves away from that solution. Without a closed form, up to
- * three damped steps within the box (each on the Jacobian at the point
- * reached). */
-static DH_NOINLINE void trq_chase(dh_track_q *t, const dh_frame_q *target, int have, int *unreach)
+/* dh_manipulability_q of t->J */
+static DH_NOINLINE void trq_manip(dh_track_q *t, int32_t *w, int32_t *sigma_min)
 {
-    const uint32_t n = t->r->n;
-    int32_t sg = 0;
-    (void)dh_manipulability_q(t->J, n, &t->work, NULL, &sg);
-    if (have && sg >= t->sing_threshold) {
-        trq_head(t);
-        return;
-    }
-    if (have) {
-        const int stall = trq_dls(t, target, sg);
-        if (stall || trq_away(t)) trq_head(t);
-        return;
-    }
-    (void)trq_dls(t, target, sg);
-    if (t->m == NULL) {
-        trq_more(t, target);
-        if (trq_beyond(t, target)) *unreach = 1;
+    t->work.J = t->J;
+    t->work.n = (uint8_t)t->r->n;
+    dh_kin_manip_q_(&t->work, w, sigma_min);
+}
+
+/* Away from singularities with a closed-form solution: straight for it
+ * at the bound (1); else 0 (damped steps follow). */
+static DH_NOINLINE int trq_straight(dh_track_q *t)
+{
+    if (!t->have || t->sg < t->sing_threshold) return 0;
+    trq_head(t);
+    return 1;
+}
+
+/* After the damped steps: with a closed-form solution, straight for it
+ * when the step stalls or moves away from it; without a closed form,
+ * UNREACHABLE beyond the reach bound. */
+static DH_NOINLINE void trq_settled(dh_track_q *t)
+{
+    if (t->have) {
+        if (t->stall || trq_away(t)) trq_head(t);
+    } else {
+        if (t->m == NULL && trq_beyond(t)) t->unreach = 1;
     }
 }
 
-/* DH_OK for a rigid target (rotation orthonormal within
- * DH_ROT_ERROR_TOL_Q, det > 0), else DH_ERR_NOT_RIGID. */
-static DH_NOINLINE dh_status trq_target_ok(const dh_frame_q *target)
+/* The step's arguments and state into t; t->tst DH_OK for a rigid target
+ * (rotation orthonormal within DH_ROT_ERROR_TOL_Q, det > 0), else
+ * DH_ERR_NOT_RIGID. */
+static DH_NOINLINE void trq_begin(dh_track_q *t, const dh_frame_q *target, int32_t *q_out, dh_track_report_q *rep)
 {
-    dh_dir3_q w;
-    return (dh_rot_error_q(target, target, &w) == DH_OK) ? DH_OK : DH_ERR_NOT_RIGID;
+    t->tgt = target;
+    t->out = q_out;
+    t->rep = rep;
+    t->have = 0;
+    t->unreach = 0;
+    t->ns = 0u;
+    t->ist = DH_ERR_UNAVAILABLE;
+    t->tst = dh_kin_rot_error_chk_q_(target, target, &t->rD, &t->rw, t->rq);
 }
 
-/* The report at q_out (t->J, t->T recomputed there); 1 when FK(q_out) is
- * within the tolerances. */
-static DH_NOINLINE int trq_report(dh_track_q *t, const dh_frame_q *target, int target_ok, dh_track_report_q *rep)
+/* q_out into t->q, t->v and q_out (the step clamped into the box) */
+static DH_NOINLINE void trq_move(dh_track_q *t)
 {
-    uint64_t p2 = 0u, r2 = 0u;
-    uint32_t k;
+    uint32_t i;
+    for (i = 0u; i < t->r->n; i++) {
+        const int64_t s = trq_clamp64(t->dq[i], t->lo[i], t->hi[i]);
+        const int32_t x = (int32_t)((int64_t)t->q[i] + s);
+        t->v[i] = x - t->q[i];
+        t->q[i] = x;
+        t->out[i] = x;
+    }
+}
+
+/* The report's defaults, t->J and t->T at q_out: 1 when they fit. */
+static DH_NOINLINE int trq_at_out(dh_track_q *t)
+{
+    dh_track_report_q *const rep = t->rep;
     rep->manip = INT32_MIN;
     rep->sigma_min = 0;
     rep->pos_err = INT32_MAX;
     rep->rot_err = INT32_MAX;
-    if (dh_kin_jac_q_(t->r, t->q, t->J, &t->T) != 0) return 0;
-    (void)dh_manipulability_q(t->J, t->r->n, &t->work, &rep->manip, &rep->sigma_min);
-    if (!target_ok || !trq_error(t, target, t->e)) return 0;
-    for (k = 0u; k < 3u; k++) {
-        p2 += (uint64_t)dh_q_mul64(t->e[k], t->e[k]);
-        r2 += (uint64_t)dh_q_mul64(t->e[k + 3u], t->e[k + 3u]);
-    }
-    rep->pos_err = (int32_t)trq_clamp64(dh_q_sqrt_u64(p2), 0, INT32_MAX);
-    rep->rot_err = (int32_t)trq_clamp64(dh_q_sqrt_u64(r2), 0, INT32_MAX);
-    return p2 <= (uint64_t)dh_q_mul64(t->pos_tol, t->pos_tol) && r2 <= (uint64_t)dh_q_mul64(t->rot_tol, t->rot_tol);
+    return (dh_kin_jac_q_(t->r, t->q, t->J, &t->T) == 0) ? 1 : 0;
 }
 
+/* The report from the pose error at q_out in t->e (ok: 0 when there is
+ * none): OK when within the tolerances. */
+static DH_NOINLINE void trq_fill(const dh_track_q *t, int ok)
+{
+    dh_track_report_q *const rep = t->rep;
+    const dh_status tst = t->tst;
+    uint64_t p2 = 0u, r2 = 0u;
+    uint32_t k;
+    int in = 0;
+    if (ok) {
+        for (k = 0u; k < 3u; k++) {
+            p2 += (uint64_t)dh_q_mul64(t->e[k], t->e[k]);
+            r2 += (uint64_t)dh_q_mul64(t->e[k + 3u], t->e[k + 3u]);
+        }
+        rep->pos_err = (int32_t)trq_clamp64(dh_q_sqrt_u64(p2), 0, INT32_MAX);
+        rep->rot_err = (int32_t)trq_clamp64(dh_q_sqrt_u64(r2), 0, INT32_MAX);
+        in = p2 <= (uint64_t)dh_q_mul64(t->pos_tol, t->pos_tol) && r2 <= (uint64_t)dh_q_mul64(t->rot_tol, t->rot_tol);
+    }
+    if (in)
+        rep->state = DH_TRACK_OK;
+    else
+        rep->state = (t->unreach || tst != DH_OK) ? DH_TRACK_UNREACHABLE : DH_TRACK_LAGGING;
+    rep->near_singular = (rep->sigma_min < t->sing_threshold) ? 1 : 0;
+}
+
+/* The stages are called one after the other from here, each library call
+ * at most one small frame below this function (the closed-form solver's
+ * and its finish from here: dh_ikc_raw_q_ has no frame), with the state
+ * in t, so the stack stays the deepest library call plus two small
+ * frames. */
 dh_status dh_track_step_q(dh_track_q *t, const dh_frame_q *target, int32_t *q_out, dh_track_report_q *rep)
 {
-    dh_status tst;
-    uint32_t n, i;
-    int have = 0, unreach = 0, reached = 0;
+    int k = 0;
     DH_ASSERT(t != NULL);
     DH_ASSERT(t->r != NULL);
     DH_ASSERT(target != NULL);
     DH_ASSERT(q_out != NULL);
     DH_ASSERT(rep != NULL);
-    n = t->r->n;
-    DH_ASSERT(n >= 1u && n <= (uint32_t)DH_MAX_JOINTS);
-    tst = trq_target_ok(target);
+    DH_ASSERT(t->r->n >= 1u && t->r->n <= (uint32_t)DH_MAX_JOINTS);
+    trq_begin(t, target, q_out, rep);
     trq_box(t);
-    if (tst != DH_OK) {
+    if (t->tst != DH_OK) {
         trq_brake(t);
-        unreach = 1;
     } else {
-        if (t->m != NULL) have = trq_nearest(t, target, &unreach);
-        if (have) {
-            reached = 1;
-            for (i = 0u; i < n; i++) {
-                const int64_t s = (int64_t)t->qs[i] - t->q[i];
-                if (s < t->lo[i] || s > t->hi[i]) reached = 0;
-                t->dq[i] = (int32_t)trq_clamp64(s, t->lo[i], t->hi[i]);
+        if (trq_ikc_args(t)) {
+            t->ist = dh_ikc_raw_q_(t->m, t->q, t->sol, &t->ns);
+            if (t->ist == DH_OK) t->ist = dh_ikc_finish_q_(t->m, t->q, t->sol, &t->ns);
+        }
+        if (trq_pick(t)) {
+            trq_manip(t, NULL, &t->sg);
+            if (!trq_straight(t)) {
+                /* damped steps: one, or up to three without a closed form,
+                 * each on the Jacobian of the point reached */
+                for (;;) {
+                    if (trq_prep(t) && trq_solve(t) == DH_OK && (!trq_block(t) || trq_solve(t) == DH_OK))
+                        t->stall = trq_settle(t);
+                    else
+                        t->stall = trq_none(t);
+                    if (k > 0) trq_unshift(t);
+                    if (t->m != NULL || ++k > 2 || !trq_shift(t)) break;
+                    trq_manip(t, NULL, &t->sg);
+                }
+                trq_settled(t);
             }
         }
-        if (!reached) trq_chase(t, target, have, &unreach);
     }
-    for (i = 0u; i < n; i++) {
-        const int32_t x = trq_put(t, i);
-        t->v[i] = x - t->q[i];
-        t->q[i] = x;
-        q_out[i] = x;
+    trq_move(t);
+    k = trq_at_out(t);
+    if (k) {
+        trq_manip(t, &t->rep->manip, &t->rep->sigma_min);
+        k = (t->tst == DH_OK) ? trq_error(t) : 0;
     }
-    if (trq_report(t, target, tst == DH_OK, rep))
-        rep->state = DH_TRACK_OK;
-    else
-        rep->state = (unreach || tst != DH_OK) ? DH_TRACK_UNREACHABLE : DH_TRACK_LAGGING;
-    rep->near_singular = (rep->sigma_min < t->sing_threshold) ? 1 : 0;
-    return tst;
+    trq_fill(t, k);
+    return t->tst;
 }
