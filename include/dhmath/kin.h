@@ -403,10 +403,10 @@ dh_status dh_ik_q(const dh_robot *r, const dh_frame_q *target, const int32_t *q0
 
 /* ---- singularity measures and damped least squares, fixed point ---------- */
 
-/** Scratch of dh_manipulability_q and dh_dls_step_q (caller-owned, about
- *  156 + 2 DH_MAX_JOINTS bytes, so that both stay within the 256-byte stack
- *  budget): the call's state and matrices; its contents are unspecified
- *  between calls. */
+/** Scratch of dh_manipulability_q and dh_dls_step_q (caller-owned, 152
+ *  + 2 DH_MAX_JOINTS bytes on a 32-bit target, so that both stay within the
+ *  256-byte stack budget): the call's state and matrices; its contents are
+ *  unspecified between calls. */
 typedef struct {
     int32_t L[21];  /**< equilibrated Gram matrix, then its factor (packed lower triangle) */
     int32_t y[6];   /**< right-hand side and solution */
