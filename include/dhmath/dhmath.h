@@ -20,6 +20,7 @@
 #include "dhmath/rot.h"
 #include "dhmath/ikc.h"
 #include "dhmath/motion.h"
+#include "dhmath/track.h"
 
 /** Library major version: DH_VERSION_MAJOR (config.h, where the version is defined). */
 #define DHMATH_VERSION_MAJOR DH_VERSION_MAJOR
