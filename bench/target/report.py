@@ -176,8 +176,17 @@ class Run:
         m = re.search(r"^[0-9a-f]+ <%s>:\n((?:.+\n)+?)\n" % re.escape(sym), self.disasm, re.M)
         if not m:
             fail("%s: no symbol %s in %s" % (self.path, sym, self.elf))
-        ins = [ln.split("\t")[2].split()[0] for ln in m.group(1).splitlines()
-               if ln.count("\t") >= 2 and not ln.split("\t")[2].startswith(".")]
+        ins = []
+        for ln in m.group(1).splitlines():
+            f = ln.split("\t")
+            if len(f) < 3 or f[2].startswith("."):
+                continue
+            mn = f[2].split()[0]
+            # a load of pc from the stack is the return (GCC's form of
+            # pop {pc} after stack arguments: ldr.w pc, [sp], #4)
+            if mn.startswith("ldr") and len(f) > 3 and f[3].replace(" ", "").startswith("pc,[sp]"):
+                mn = "pop"
+            ins.append(mn)
         while ins and ins[-1] == "nop":     # alignment padding after the return
             ins.pop()
         # straight line: calls (bl) allowed, no other branch before the return
