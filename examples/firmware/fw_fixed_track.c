@@ -1,9 +1,11 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fw_fixed_track.c - firmware example for a core without FPU (Cortex-M0+):
- * a 1 kHz control loop that tracks a straight line of UR5 poses through
- * the neighbourhood of the wrist singularity in fixed point, integer only
- * (no float routine linked: examples/firmware/no_float.cmake).
+ * a control loop with a 1 ms period (1 kHz) that tracks a straight line of
+ * UR5 poses through the neighbourhood of the wrist singularity in fixed
+ * point, integer only (no float routine linked:
+ * examples/firmware/no_float.cmake). Whether one period's call fits in 1 ms
+ * on a given core: docs/generated/performance_target.md ("Tracking").
  *
  * The UR5 table lives in flash (`dhmath gen examples/robots/ur5_mm.dh
  * dhg_ur5_mm`, run by the build); the firmware copies it to RAM once and
