@@ -1449,34 +1449,24 @@ def main():
     EXE, ROOT, group = sys.argv[1], sys.argv[2], sys.argv[3]
     seed = int(sys.argv[5]) if len(sys.argv) > 5 and sys.argv[4] == '--seed' else 20261124
     with tempfile.TemporaryDirectory() as tmp:
-        if group == 'seed':
-            group_seed()
-        elif group == 'errors':
-            group_errors()
-        elif group == 'random':
-            group_random(seed)
-        elif group == 'robotfile':
-            group_robotfile(seed, tmp)
-        elif group == 'examples':
-            group_examples()
-        elif group == 'rot':
-            group_rot(seed)
-        elif group == 'fixed':
-            group_fixed(seed, tmp)
-        elif group == 'help':
-            group_help()
-        elif group == 'numbers':
-            group_numbers()
-        elif group == 'messages':
-            group_messages(tmp)
-        elif group == 'ikc':
-            group_ikc(seed, tmp)
-        elif group == 'track':
-            group_track(seed, tmp)
-            group_track_fixed(seed, tmp)
-        else:
+        groups = {
+            'seed': group_seed,
+            'errors': group_errors,
+            'random': lambda: group_random(seed),
+            'robotfile': lambda: group_robotfile(seed, tmp),
+            'examples': group_examples,
+            'rot': lambda: group_rot(seed),
+            'fixed': lambda: group_fixed(seed, tmp),
+            'help': group_help,
+            'numbers': group_numbers,
+            'messages': lambda: group_messages(tmp),
+            'ikc': lambda: group_ikc(seed, tmp),
+            'track': lambda: (group_track(seed, tmp), group_track_fixed(seed, tmp)),
+        }
+        if group not in groups:
             print('unknown group', group)
             return 2
+        groups[group]()
     print('%s: %d checks, %d failures' % (group, CHECKS[0], len(FAILS)))
     return 1 if FAILS else 0
 

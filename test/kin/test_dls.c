@@ -29,42 +29,6 @@ static const dhs_robot *const robots[] = { &dhs_puma560_m, &dhs_puma560_mm, &dhs
                                            &dhs_panda_mm };
 #define N_ROBOTS (sizeof robots / sizeof robots[0])
 
-/* eigenvalues of the symmetric m x m matrix A (row-major, destroyed) by
- * cyclic Jacobi rotations */
-static void jacobi_eig(double *A, int m, double *ev)
-{
-    int sweep, p, q, k;
-    for (sweep = 0; sweep < 60; sweep++) {
-        double off = 0.0, dia = 0.0;
-        for (p = 0; p < m; p++)
-            for (q = 0; q < m; q++) {
-                if (p != q) off += A[p * m + q] * A[p * m + q];
-                else dia += A[p * m + q] * A[p * m + q];
-            }
-        if (off <= 1e-34 * dia || off == 0.0) break;
-        for (p = 0; p < m; p++)
-            for (q = p + 1; q < m; q++) {
-                double apq = A[p * m + q], th, t, c, s;
-                if (apq == 0.0) continue;
-                th = (A[q * m + q] - A[p * m + p]) / (2.0 * apq);
-                t = (th >= 0 ? 1.0 : -1.0) / (fabs(th) + sqrt(th * th + 1.0));
-                c = 1.0 / sqrt(t * t + 1.0);
-                s = t * c;
-                for (k = 0; k < m; k++) { /* columns p, q */
-                    double akp = A[k * m + p], akq = A[k * m + q];
-                    A[k * m + p] = c * akp - s * akq;
-                    A[k * m + q] = s * akp + c * akq;
-                }
-                for (k = 0; k < m; k++) { /* rows p, q */
-                    double apk = A[p * m + k], aqk = A[q * m + k];
-                    A[p * m + k] = c * apk - s * aqk;
-                    A[q * m + k] = s * apk + c * aqk;
-                }
-            }
-    }
-    for (p = 0; p < m; p++) ev[p] = A[p * m + p];
-}
-
 /* J J^T (n >= 6) or J^T J in double from the float entries (each product
  * exact in double); returns m and its trace */
 static int normal_ref(const float *J, unsigned n, double *A, double *tr)
@@ -123,7 +87,7 @@ static void manipulability_against_double(void)
         DHT_EQ_INT(dh_jacobian_f32(&r, qf, J, NULL), DH_OK);
         DHT_EQ_INT(dh_manipulability_f32(J, r.n, &w, &sg), DH_OK);
         m = normal_ref(J, r.n, A, &tr);
-        jacobi_eig(A, m, ev);
+        dhr_sym_eig(A, m, ev);
         eps = 16.0 * U * tr;
         lmin = ev[0];
         for (i = 0; i < m; i++) {
@@ -154,7 +118,7 @@ static void manipulability_against_double(void)
 }
 
 /* (J J^T + l^2 I) y = e in double, Gaussian elimination with partial
- * pivoting; returns lambda_min of the matrix through jacobi_eig */
+ * pivoting; returns lambda_min of the matrix through dhr_sym_eig */
 static double dls_ref(const float *J, unsigned n, const float *e, double l2, double *y)
 {
     double A[36], B[36], b[6], lmin, ev[6];
@@ -185,7 +149,7 @@ static double dls_ref(const float *J, unsigned n, const float *e, double l2, dou
         for (j = i + 1; j < 6; j++) s -= A[i * 6 + j] * y[j];
         y[i] = s / A[i * 6 + i];
     }
-    jacobi_eig(B, 6, ev);
+    dhr_sym_eig(B, 6, ev);
     lmin = ev[0];
     for (i = 1; i < 6; i++) if (ev[i] < lmin) lmin = ev[i];
     return lmin;

@@ -83,6 +83,7 @@ static double ulpf(double x)
 /* one call with every guarantee checked; returns the state */
 static int last_near_singular; /* the last call's rep.near_singular */
 
+/* twin: step_checked of test_track_q.c */
 static dh_track_state step_checked(rig *g, dh_track_f32 *t, chk *c, const dh_mat4_f32 *target, const char *what)
 {
     float q[DH_MAX_JOINTS];
@@ -131,7 +132,7 @@ static dh_track_state step_checked(rig *g, dh_track_f32 *t, chk *c, const dh_mat
 /* the target held after a path: OK again, after the last call in the
  * singular neighbourhood (rep.near_singular), within the time the step
  * bound allows for the distance left from there (plus 2 calls); then OK
- * every call */
+ * every call (twin: hold_until_ok of test_track_q.c) */
 static void hold_until_ok(rig *g, dh_track_f32 *t, chk *c, const dh_mat4_f32 *target, const char *what, long max_calls)
 {
     float q_mark[DH_MAX_JOINTS];
@@ -172,8 +173,8 @@ static int reachable(rig *g, const dh_mat4_f32 *T, const float *q_ref)
 static double sigma_true(rig *g, const float *q)
 {
     float J[6 * DH_MAX_JOINTS];
-    double A[36], mn;
-    int i, j, k, p, s;
+    double A[36], ev[6], mn;
+    int i, j, k;
     const int n = (int)g->r.n;
     (void)dh_jacobian_f32(&g->r, q, J, NULL);
     for (i = 0; i < 6; i++)
@@ -182,28 +183,9 @@ static double sigma_true(rig *g, const float *q)
             for (k = 0; k < n; k++) v += (double)J[i * n + k] * J[j * n + k];
             A[i * 6 + j] = v;
         }
-    for (s = 0; s < 40; s++)
-        for (p = 0; p < 6; p++)
-            for (k = p + 1; k < 6; k++) {
-                double apq = A[p * 6 + k], th, tt, cc, ss;
-                if (fabs(apq) < 1e-300) continue;
-                th = (A[k * 6 + k] - A[p * 6 + p]) / (2 * apq);
-                tt = (th >= 0 ? 1.0 : -1.0) / (fabs(th) + sqrt(th * th + 1));
-                cc = 1 / sqrt(tt * tt + 1);
-                ss = tt * cc;
-                for (i = 0; i < 6; i++) {
-                    double a = A[i * 6 + p], b = A[i * 6 + k];
-                    A[i * 6 + p] = cc * a - ss * b;
-                    A[i * 6 + k] = ss * a + cc * b;
-                }
-                for (i = 0; i < 6; i++) {
-                    double a = A[p * 6 + i], b = A[k * 6 + i];
-                    A[p * 6 + i] = cc * a - ss * b;
-                    A[k * 6 + i] = ss * a + cc * b;
-                }
-            }
-    mn = A[0];
-    for (i = 1; i < 6; i++) mn = fmin(mn, A[i * 6 + i]);
+    dhr_sym_eig(A, 6, ev);
+    mn = ev[0];
+    for (i = 1; i < 6; i++) mn = fmin(mn, ev[i]);
     return sqrt(fmax(mn, 0.0));
 }
 
@@ -301,18 +283,6 @@ static void line_target(const dh_mat4_f32 *Ts, const double *off, const double *
     for (k = 0; k < 3; k++) T->m[3][k] = (float)(Ts->m[3][k] + off[k] + u[k] * h * (2 * s - 1));
 }
 
-static void rand_unit(double *u)
-{
-    double n;
-    do {
-        u[0] = dht_rand_uniform(-1, 1);
-        u[1] = dht_rand_uniform(-1, 1);
-        u[2] = dht_rand_uniform(-1, 1);
-        n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    } while (n < 0.2 || n > 1);
-    u[0] /= n; u[1] /= n; u[2] /= n;
-}
-
 /* tracker started on the solution of the first target nearest q_near */
 static int start_at(rig *g, dh_track_f32 *t, chk *c, const dh_mat4_f32 *T0, const float *q_near)
 {
@@ -348,7 +318,7 @@ static void singular_lines(void)
             random_q(&g, qs);
             if (!shoulder) {
                 qs[4] = 0.0f; /* wrist singular */
-                rand_unit(off);
+                dhr_rand_unit3(off);
                 for (k3 = 0; k3 < 3; k3++) off[k3] *= 1e-3 * g.d->unit_per_m;
             } else {
                 /* shoulder: move joint 2/3 until the wrist centre is over
@@ -358,7 +328,7 @@ static void singular_lines(void)
                 off[0] = off[1] = off[2] = 0.0;
             }
             target_of(&g, qs, &Ts);
-            rand_unit(u);
+            dhr_rand_unit3(u);
             if (shoulder) {
                 /* horizontal line through the base axis at the target's height */
                 const double r0 = sqrt((double)Ts.m[3][0] * Ts.m[3][0] + (double)Ts.m[3][1] * Ts.m[3][1]);
@@ -386,7 +356,7 @@ static void singular_lines(void)
     }
 }
 
-/* out of the workspace and back */
+/* out of the workspace and back (twin: leaving_the_workspace of test_track_q.c) */
 static void leaving_the_workspace(void)
 {
     size_t ri;
@@ -496,7 +466,7 @@ static void target_jumps(void)
         }
 }
 
-/* bad targets: the joints brake, the status says why */
+/* bad targets: the joints brake, the status says why (twin: bad_targets_brake of test_track_q.c) */
 static void bad_targets_brake(void)
 {
     rig g;

@@ -73,6 +73,7 @@ static dh_track_report_q last_rep;   /* the last call's report */
 static rig the_rig;
 static dh_track_q the_trk;
 
+/* one call with every guarantee checked; returns the state (twin: step_checked of test_track.c) */
 static dh_track_state step_checked(rig *g, dh_track_q *t, chk *c, const dh_frame_q *target, const char *what)
 {
     int32_t q[DH_MAX_JOINTS];
@@ -125,7 +126,7 @@ static dh_track_state step_checked(rig *g, dh_track_q *t, chk *c, const dh_frame
 
 /* the target held: OK again, after the last call in the singular
  * neighbourhood, within the time the step bound allows for the distance
- * left from there (plus 2 calls); then OK every call */
+ * left from there (plus 2 calls); then OK every call (twin: hold_until_ok of test_track.c) */
 static void hold_until_ok(rig *g, dh_track_q *t, chk *c, const dh_frame_q *target, const char *what, long max_calls)
 {
     int32_t q_mark[DH_MAX_JOINTS];
@@ -179,8 +180,8 @@ static int reachable(rig *g, const dh_frame_q *T, const int32_t *q_ref)
 static double sigma_true(rig *g, const int32_t *q)
 {
     int32_t J[6 * DH_MAX_JOINTS];
-    double A[36], mn;
-    int i, j, k, p, s;
+    double A[36], ev[6], mn;
+    int i, j, k;
     const int n = (int)g->r.n;
     (void)dh_jacobian_q(&g->r, q, J, NULL);
     for (i = 0; i < 6; i++)
@@ -194,28 +195,9 @@ static double sigma_true(rig *g, const int32_t *q)
             }
             A[i * 6 + j] = v;
         }
-    for (s = 0; s < 40; s++)
-        for (p = 0; p < 6; p++)
-            for (k = p + 1; k < 6; k++) {
-                double apq = A[p * 6 + k], th, tt, cc, ss;
-                if (fabs(apq) < 1e-300) continue;
-                th = (A[k * 6 + k] - A[p * 6 + p]) / (2 * apq);
-                tt = (th >= 0 ? 1.0 : -1.0) / (fabs(th) + sqrt(th * th + 1));
-                cc = 1 / sqrt(tt * tt + 1);
-                ss = tt * cc;
-                for (i = 0; i < 6; i++) {
-                    double a = A[i * 6 + p], b = A[i * 6 + k];
-                    A[i * 6 + p] = cc * a - ss * b;
-                    A[i * 6 + k] = ss * a + cc * b;
-                }
-                for (i = 0; i < 6; i++) {
-                    double a = A[p * 6 + i], b = A[k * 6 + i];
-                    A[p * 6 + i] = cc * a - ss * b;
-                    A[k * 6 + i] = ss * a + cc * b;
-                }
-            }
-    mn = A[0];
-    for (i = 1; i < 6; i++) mn = fmin(mn, A[i * 6 + i]);
+    dhr_sym_eig(A, 6, ev);
+    mn = ev[0];
+    for (i = 1; i < 6; i++) mn = fmin(mn, ev[i]);
     return sqrt(fmax(mn, 0.0));
 }
 
@@ -277,20 +259,6 @@ static void smooth_paths_every_call_ok(void)
     }
 }
 
-static void rand_unit(double *u)
-{
-    double n;
-    do {
-        u[0] = dht_rand_uniform(-1, 1);
-        u[1] = dht_rand_uniform(-1, 1);
-        u[2] = dht_rand_uniform(-1, 1);
-        n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    } while (n < 0.2 || n > 1);
-    u[0] /= n;
-    u[1] /= n;
-    u[2] /= n;
-}
-
 /* a line of length 2h (mm) through p_s + off, orientation fixed */
 static void line_target(const dh_frame_q *Ts, const double *off, const double *u, double h, double s, dh_frame_q *T)
 {
@@ -332,13 +300,13 @@ static void singular_lines(void)
             random_q(gp, qs);
             if (!shoulder) {
                 qs[4] = 0;
-                rand_unit(off);
+                dhr_rand_unit3(off);
                 for (k3 = 0; k3 < 3; k3++) off[k3] *= 1.0;   /* 1 mm */
             } else {
                 off[0] = off[1] = off[2] = 0.0;
             }
             target_of(gp, qs, &Ts);
-            rand_unit(u);
+            dhr_rand_unit3(u);
             if (shoulder) {
                 const double x = Ts.p[0] / QPOS, y = Ts.p[1] / QPOS, r0 = sqrt(x * x + y * y);
                 u[0] = x / r0;
@@ -365,7 +333,7 @@ static void singular_lines(void)
     }
 }
 
-/* out of the workspace and back */
+/* out of the workspace and back (twin: leaving_the_workspace of test_track.c) */
 static void leaving_the_workspace(void)
 {
     size_t ri;
@@ -465,7 +433,7 @@ static void target_jumps(void)
         }
 }
 
-/* bad targets: the joints brake; init errors */
+/* bad targets: the joints brake; init errors (twin: bad_targets_brake of test_track.c) */
 static void bad_targets_brake(void)
 {
     rig *const gp = &the_rig;
