@@ -32,16 +32,17 @@
  * when every joint can reach it this period (status OK). Otherwise the
  * damped least-squares step (dh_dls_step_f32, damping raised near
  * singularities from the bound on the smallest singular value) is fitted
- * into the period's step box; where it stalls (it removes less than a
- * tenth of the error, against a limit or with the elbow stretched) or
- * moves away from the nearest closed-form solution, the step heads at the
- * bound straight for that solution (continuous: never a jump to another
- * branch). Robots without a closed form (m NULL) use the damped step alone.
- * No restarts, no randomness: same inputs, same outputs.
+ * into the period's step box; where it stalls (it removes less than 19 %
+ * of the linearised error, against a limit or with the elbow stretched)
+ * or moves away from the nearest closed-form solution, the step heads at
+ * the bound straight for that solution (continuous: never a jump to
+ * another branch), unless the current configuration already reaches the
+ * target, where the damped step is kept. Robots without a closed form
+ * (m NULL) use the damped step alone. No restarts, no randomness: same
+ * inputs, same outputs.
  *
- * Stack: within the 256 B guard on cores with an FPU (Cortex-M4F); on a
- * soft-float core (Cortex-M0+) dh_track_step_f32 needs about 340 B, as
- * dh_ikc_f32 alone takes 256 B there (measured: tools/check_guards.sh).
+ * Stack: within the 256 B guard (tools/check_guards.sh, Cortex-M0+ and
+ * M4F).
  */
 #ifndef DHMATH_TRACK_H
 #define DHMATH_TRACK_H
@@ -185,7 +186,7 @@ typedef struct {
     uint32_t pris;                      /**< bit i: joint i prismatic */
     dh_status ist;                      /**< closed form's status */
     dh_status tst;                      /**< the step's status */
-    int have, unreach, stall;           /**< the step's decisions */
+    int have, unreach, stall, at;       /**< the step's decisions (at: q reaches the target) */
     const dh_frame_q *tgt;              /**< the step's target */
     int32_t *out;                       /**< the step's q_out */
     dh_track_report_q *rep;             /**< the step's report */

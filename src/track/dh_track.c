@@ -299,6 +299,15 @@ static DH_NOINLINE int track_stalls(const dh_track_f32 *t)
     return (r2 > 0.81f * e2) ? 1 : 0;
 }
 
+/* 1 when the pose error in t->e is within pos_tol and rot_tol */
+static DH_NOINLINE int track_within(const dh_track_f32 *t)
+{
+    const float *const e = t->e;
+    const float p2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+    const float r2 = e[3] * e[3] + e[4] * e[4] + e[5] * e[5];
+    return (p2 <= t->pos_tol * t->pos_tol && r2 <= t->rot_tol * t->rot_tol) ? 1 : 0;
+}
+
 /* 1 when t->dq does not bring q nearer t->qs in time */
 static DH_NOINLINE int track_away(const dh_track_f32 *t)
 {
@@ -472,7 +481,13 @@ static DH_NOINLINE int track_chase(dh_track_f32 *t, const dh_mat4_f32 *target)
     /* sigma_min at q (t->J is the Jacobian at q) */
     if (dh_manipulability_ws_f32_(t->J, t->r->n, NULL, &t->sg, t->ws) != DH_OK) t->sg = 0.0f;
     if (have) {
-        if (t->sg < t->sing_threshold && !track_damped(t, track_err(t, target)) && !track_away(t)) return 0;
+        if (t->sg < t->sing_threshold) {
+            const int ok = track_err(t, target);
+            if (!track_damped(t, ok) && !track_away(t)) return 0;
+            /* q already reaches the target: its damped step, not a run
+             * at the bound for a solution outside the box */
+            if (ok && track_within(t)) return 0;
+        }
         track_head(t);
         return 0;
     }

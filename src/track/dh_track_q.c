@@ -383,11 +383,29 @@ static DH_NOINLINE void trq_residual(dh_track_q *t)
     }
 }
 
-/* The pose error into t->e and the damping into t->lam (from t->sg): 1
- * when the error could be computed. */
+/* 1 when the pose error in t->e is within pos_tol and rot_tol; its
+ * squared position and rotation parts into *p2, *r2 */
+static int trq_within(const dh_track_q *t, uint64_t *p2, uint64_t *r2)
+{
+    uint32_t k;
+    *p2 = 0u;
+    *r2 = 0u;
+    for (k = 0u; k < 3u; k++) {
+        *p2 += (uint64_t)dh_q_mul64(t->e[k], t->e[k]);
+        *r2 += (uint64_t)dh_q_mul64(t->e[k + 3u], t->e[k + 3u]);
+    }
+    return (*p2 <= (uint64_t)dh_q_mul64(t->pos_tol, t->pos_tol) &&
+            *r2 <= (uint64_t)dh_q_mul64(t->rot_tol, t->rot_tol)) ? 1 : 0;
+}
+
+/* The pose error into t->e, whether it is within the tolerances into
+ * t->at, and the damping into t->lam (from t->sg): 1 when the error could
+ * be computed. */
 static DH_NOINLINE int trq_prep(dh_track_q *t)
 {
+    uint64_t p2, r2;
     if (!trq_error(t)) return 0;
+    t->at = trq_within(t, &p2, &r2);
     t->lam = trq_damping(t, t->sg);
     if (t->lam < 1) t->lam = 1;
     return 1;
@@ -550,7 +568,8 @@ static DH_NOINLINE int trq_straight(dh_track_q *t)
 static DH_NOINLINE void trq_settled(dh_track_q *t)
 {
     if (t->have) {
-        if (t->stall || trq_away(t)) trq_head(t);
+        /* q already reaching the target keeps its damped step */
+        if ((t->stall || trq_away(t)) && !t->at) trq_head(t);
     } else {
         if (t->m == NULL && trq_beyond(t)) t->unreach = 1;
     }
@@ -565,6 +584,7 @@ static DH_NOINLINE void trq_begin(dh_track_q *t, const dh_frame_q *target, int32
     t->out = q_out;
     t->rep = rep;
     t->have = 0;
+    t->at = 0;
     t->unreach = 0;
     t->ns = 0u;
     t->ist = DH_ERR_UNAVAILABLE;
@@ -602,16 +622,11 @@ static DH_NOINLINE void trq_fill(const dh_track_q *t, int ok)
     dh_track_report_q *const rep = t->rep;
     const dh_status tst = t->tst;
     uint64_t p2 = 0u, r2 = 0u;
-    uint32_t k;
     int in = 0;
     if (ok) {
-        for (k = 0u; k < 3u; k++) {
-            p2 += (uint64_t)dh_q_mul64(t->e[k], t->e[k]);
-            r2 += (uint64_t)dh_q_mul64(t->e[k + 3u], t->e[k + 3u]);
-        }
+        in = trq_within(t, &p2, &r2);
         rep->pos_err = (int32_t)trq_clamp64(dh_q_sqrt_u64(p2), 0, INT32_MAX);
         rep->rot_err = (int32_t)trq_clamp64(dh_q_sqrt_u64(r2), 0, INT32_MAX);
-        in = p2 <= (uint64_t)dh_q_mul64(t->pos_tol, t->pos_tol) && r2 <= (uint64_t)dh_q_mul64(t->rot_tol, t->rot_tol);
     }
     if (in)
         rep->state = DH_TRACK_OK;

@@ -11,11 +11,15 @@
  * eigenvalues of J J^T by cyclic Jacobi rotations, the DLS solution by
  * Gaussian elimination with partial pivoting. Every tolerance is derived
  * per input from float's unit roundoff u = 2^-24 and the conditioning of
- * the input (below), never a fixed number fitted to a run.
+ * the input (below), never a fixed number fitted to a run. The entry
+ * points the tracker calls (kin_impl.h: the same bodies with their matrix
+ * in the caller's workspace) must give the public functions' statuses
+ * and bits on every input.
  */
 #include "dht.h"
 #include "support_robots.h"
 #include "dhmath/kin.h"
+#include "../../src/kin/kin_impl.h" /* the tracker's entry points: private, not on the include path */
 
 #include <math.h>
 #include <stdio.h>
@@ -293,11 +297,75 @@ static void dls_bad_input(void)
     for (k = 0; k < 6u; k++) DHT_TRUE(dq[k] == 0.0f);
 }
 
+/* the public step and the tracker's entry point: same status, same bits */
+static void dls_both(const dh_robot *r, const float *J, const float *e, float lambda, const float *dqm)
+{
+    float a[DH_MAX_JOINTS], b[DH_MAX_JOINTS], ws[DH_DLS_WS_FLOATS];
+    unsigned k;
+    for (k = 0; k < DH_MAX_JOINTS; k++) a[k] = b[k] = 7.0f;
+    DHT_EQ_INT(dh_dls_step_ws_f32_(r, J, e, lambda, dqm, b, ws), dh_dls_step_f32(r, J, e, lambda, dqm, a));
+    DHT_TRUE(memcmp(a, b, sizeof a) == 0);
+}
+
+/* the public measures and the tracker's entry point: same status, same bits */
+static void manip_both(const float *J, uint32_t n)
+{
+    float wa = 5.0f, sa = 5.0f, wb = 5.0f, sb = 5.0f, ws[DH_DLS_WS_FLOATS];
+    DHT_EQ_INT(dh_manipulability_ws_f32_(J, n, &wb, &sb, ws), dh_manipulability_f32(J, n, &wa, &sa));
+    DHT_TRUE(memcmp(&wa, &wb, sizeof wa) == 0 && memcmp(&sa, &sb, sizeof sa) == 0);
+}
+
+/* the entry points agree on the inputs of dls_singular and dls_bad_input */
+static void ws_entry_points_agree(void)
+{
+    dh_robot r, r3;
+    float q[6] = { 10.0f, -30.0f, 40.0f, 20.0f, 0.0f, 15.0f }, J[6 * DH_MAX_JOINTS], dqm[6];
+    float e[6] = { 1e-3f, -2e-3f, 0.0f, 0.01f, 0.0f, -0.01f };
+    const float nan = dht_f32_from_bits(0x7FC00000u), inf = dht_f32_from_bits(0x7F800000u);
+    unsigned k;
+    DHT_EQ_INT(dhs_build(&dhs_puma560_m, &r), DH_OK);
+    DHT_EQ_INT(dh_jacobian_f32(&r, q, J, NULL), DH_OK); /* wrist singular */
+    dls_both(&r, J, e, 0.0f, NULL);
+    dls_both(&r, J, e, 1e-2f, NULL);
+    manip_both(J, 6u);
+    q[4] = 30.0f;
+    DHT_EQ_INT(dh_jacobian_f32(&r, q, J, NULL), DH_OK);
+    dls_both(&r, J, e, 0.0f, NULL);
+    manip_both(J, 6u);
+    manip_both(J, 0u);
+    manip_both(J, DH_MAX_JOINTS + 1u);
+    for (k = 0; k < 6u; k++) dqm[k] = (k == 2u) ? 0.0f : 1e-3f;
+    dls_both(&r, J, e, 0.1f, dqm);
+    dls_both(&r, J, e, -1.0f, NULL);
+    dls_both(&r, J, e, inf, NULL);
+    dls_both(&r, J, e, nan, NULL);
+    dqm[3] = -1.0f;
+    dls_both(&r, J, e, 0.1f, dqm);
+    e[4] = inf;
+    dls_both(&r, J, e, 0.1f, NULL);
+    e[4] = 0.0f;
+    J[17] = nan;
+    dls_both(&r, J, e, 0.1f, NULL);
+    manip_both(J, 6u);
+    J[17] = 1e30f;
+    dls_both(&r, J, e, 0.1f, NULL);
+    manip_both(J, 6u);
+    r3 = r;
+    r3.n = 3u;
+    DHT_EQ_INT(dh_jacobian_f32(&r3, q, J, NULL), DH_OK);
+    dls_both(&r3, J, e, 0.0f, NULL);
+    dls_both(&r3, J, e, 1e-3f, NULL);
+    manip_both(J, 3u);
+    r3.n = 0u;
+    dls_both(&r3, J, e, 0.1f, NULL);
+}
+
 static const dht_case cases[] = {
     DHT_CASE(manipulability_against_double),
     DHT_CASE(dls_against_double),
     DHT_CASE(dls_singular),
     DHT_CASE(dls_bad_input),
+    DHT_CASE(ws_entry_points_agree),
 };
 
 DHT_MAIN(cases)

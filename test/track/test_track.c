@@ -129,6 +129,22 @@ static dh_track_state step_checked(rig *g, dh_track_f32 *t, chk *c, const dh_mat
     return rep.state;
 }
 
+/* at the tracker's q: the smallest over the closed-form solutions of the
+ * target of max_i |solution_i - q_i| / dq_max_i (> 1: none in the step box) */
+static double box_ratio(rig *g, const dh_track_f32 *t, const dh_mat4_f32 *target)
+{
+    dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+    uint32_t ns = 0, k, i;
+    double best = 1e30;
+    if (dh_ikc_f32(&g->m, target, t->q, 0u, sol, &ns) != DH_OK) return 0.0;
+    for (k = 0; k < ns; k++) {
+        double r = 0.0;
+        for (i = 0; i < g->r.n; i++) r = fmax(r, fabs((double)sol[k].q[i] - t->q[i]) / (double)t->dq_max[i]);
+        best = fmin(best, r);
+    }
+    return best;
+}
+
 /* the target held after a path: OK again, after the last call in the
  * singular neighbourhood (rep.near_singular), within the time the step
  * bound allows for the distance left from there (plus 2 calls); then OK
@@ -143,6 +159,9 @@ static void hold_until_ok(rig *g, dh_track_f32 *t, chk *c, const dh_mat4_f32 *ta
     for (k = 0; k < max_calls; k++) {
         const dh_track_state s = step_checked(g, t, c, target, what);
         if (s == DH_TRACK_OK && first_ok < 0) first_ok = k;
+        /* the target reached while sigma_min is below the threshold, the
+         * nearest closed-form solution maybe outside the step box: q stays */
+        if (s == DH_TRACK_OK && last_near_singular && g->closed) dht_reach_max("hold.ok_box_ratio", box_ratio(g, t, target));
         if (s != DH_TRACK_OK && last_near_singular) {
             mark = k + 1;
             memcpy(q_mark, t->q, sizeof q_mark);
