@@ -24,6 +24,7 @@
 #include "../kin/kin_impl.h"
 #include "../ikc/ikc_impl.h"
 
+#define TRQ_DEG180 ((int32_t)180 << 16)   /* 180 deg, Q16.16 */
 #define TRQ_NONE INT32_MAX   /* no acceleration limit */
 #define TRQ_STEP_CAP (((int32_t)1 << 30) - 1)
 
@@ -205,14 +206,31 @@ static DH_NOINLINE void trq_fit(dh_track_q *t)
 
 /* ---- closed form ---------------------------------------------------------- */
 
+/* x shifted by 360 deg towards q when it is more than 180 deg from q and
+ * the shifted value lies within j's limits widened by 8 LSB; else x
+ * (values beyond 2^29 LSB, 8192 deg, are left as they are). */
+static int32_t trq_turn(int32_t x, int32_t q, const dh_joint *j)
+{
+    const int32_t big = (int32_t)1 << 29;
+    int32_t y = x;
+    if (x > big || x < -big || q > big || q < -big) return x;
+    if (x - q > TRQ_DEG180) y = x - 2 * TRQ_DEG180;
+    if (x - q < -TRQ_DEG180) y = x + 2 * TRQ_DEG180;
+    return (y + 8 >= j->qmin_q && y - 8 <= j->qmax_q) ? y : x;
+}
+
 /* 1 when the solution is within the limits, a value beyond one by at most
- * 8 LSB (the closed form's rounding, 1.2e-4 deg) put on it; else 0. */
+ * 8 LSB (the closed form's rounding, 1.2e-4 deg) put on it; else 0. A
+ * revolute value more than 180 deg from q is first shifted by 360 deg
+ * towards q when that lands within the limits so widened (trq_turn):
+ * dh_ikc_q shifts a value just beyond a limit by 360 deg into the range. */
 static int trq_onto_limits(const dh_track_q *t, dh_ikc_sol_q *sol)
 {
     uint32_t i;
     for (i = 0u; i < t->r->n; i++) {
         const dh_joint *j = &t->r->joint[i];
         if (j->qmin_q <= j->qmax_q) {
+            if (j->type == DH_JOINT_REVOLUTE) sol->q[i] = trq_turn(sol->q[i], t->q[i], j);
             if ((int64_t)sol->q[i] < (int64_t)j->qmin_q - 8 || (int64_t)sol->q[i] > (int64_t)j->qmax_q + 8) return 0;
             if (sol->q[i] < j->qmin_q) sol->q[i] = j->qmin_q;
             if (sol->q[i] > j->qmax_q) sol->q[i] = j->qmax_q;

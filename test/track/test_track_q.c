@@ -247,6 +247,16 @@ static void smooth_paths_every_call_ok(void)
                 dh_frame_q Tg;
                 for (i = 0; i < gp->r.n; i++) q[i] = qa[i] + (int32_t)floor((double)(qb[i] - qa[i]) * s + 0.5);
                 target_of(gp, q, &Tg);
+                /* a target on a limit that a 360-degree shift keeps in range:
+                 * the closed form may return the shifted value */
+                for (i = 0; i < gp->r.n; i++) {
+                    const dh_joint *j = &gp->r.joint[i];
+                    const int64_t turn = (int64_t)360 << 16;
+                    if (gp->closed && j->type == DH_JOINT_REVOLUTE && j->qmin_q <= j->qmax_q &&
+                        ((q[i] >= j->qmax_q - 8 && q[i] - turn >= j->qmin_q) ||
+                         (q[i] <= j->qmin_q + 8 && q[i] + turn <= j->qmax_q)))
+                        dht_reach_max("smooth.limit_turn", 1.0);
+                }
                 if (step_checked(gp, tp, &c, &Tg, "smooth") != DH_TRACK_OK) {
                     DHT_TRUE_MSG(!gp->closed, "%s smooth path %ld call %ld: state %d, errors %ld LSB / %ld (Q29 rad)",
                                  gp->d->name, path, k, (int)last_rep.state, (long)last_rep.pos_err, (long)last_rep.rot_err);
