@@ -1006,6 +1006,7 @@ static void bt_track_print(const char *op, const char *robot, const char *unit, 
            (unsigned long)states[0], (unsigned long)states[1], (unsigned long)states[2], (unsigned long)st);
 }
 
+/* twin: bt_track_f32 (the same timed loop on the fixed types and calls) */
 static BT_NOINLINE void bt_track_q(const bt_move *mv, dh_robot *r, const bt_acc *null)
 {
     dh_track_q *const t = &bt_mem.t.tq;
@@ -1050,6 +1051,7 @@ static BT_NOINLINE void bt_track_q(const bt_move *mv, dh_robot *r, const bt_acc 
 }
 
 #if BT_IKC_FLOAT
+/* twin: bt_track_q */
 static BT_NOINLINE void bt_track_f32(const bt_move *mv, dh_robot *r, const bt_acc *null)
 {
     dh_track_f32 *const t = &bt_mem.t.tf;
