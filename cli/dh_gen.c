@@ -40,9 +40,12 @@ const char *dh_gen_name_problem(const char *name)
     return NULL;
 }
 
+/* +inf (an unlimited rate) as C99's INFINITY of <math.h>, a constant
+ * expression of type float */
 static void put_f(FILE *out, float x)
 {
-    fprintf(out, "%af", (double)x);
+    if (x > 3.4028235e38f) fputs("INFINITY", out);
+    else fprintf(out, "%af", (double)x);
 }
 
 static void put_i(FILE *out, int32_t v)
@@ -54,18 +57,21 @@ static void put_i(FILE *out, int32_t v)
 /* nl: the line break, " \\\n" inside a macro; four members per line */
 static void put_joint(FILE *out, const dh_joint *j, const char *nl)
 {
-    static const char *const fname[8] = { "a", "d", "alpha_deg", "theta_deg", "qmin", "qmax", "sa", "ca" };
-    static const char *const iname[8] = { "a_q", "d_q", "alpha_q", "theta_q", "sa_q", "ca_q", "qmin_q", "qmax_q" };
-    const float fv[8] = { j->a, j->d, j->alpha_deg, j->theta_deg, j->qmin, j->qmax, j->sa, j->ca };
-    const int32_t iv[8] = { j->a_q, j->d_q, j->alpha_q, j->theta_q, j->sa_q, j->ca_q, j->qmin_q, j->qmax_q };
+    static const char *const fname[10] = { "a", "d", "alpha_deg", "theta_deg", "qmin", "qmax", "sa", "ca",
+                                           "vmax", "amax" };
+    static const char *const iname[10] = { "a_q", "d_q", "alpha_q", "theta_q", "sa_q", "ca_q", "qmin_q", "qmax_q",
+                                           "vmax_q", "amax_q" };
+    const float fv[10] = { j->a, j->d, j->alpha_deg, j->theta_deg, j->qmin, j->qmax, j->sa, j->ca, j->vmax, j->amax };
+    const int32_t iv[10] = { j->a_q, j->d_q, j->alpha_q, j->theta_q, j->sa_q, j->ca_q, j->qmin_q, j->qmax_q,
+                             j->vmax_q, j->amax_q };
     unsigned k;
     fprintf(out, "{ .type = %s,", j->type == DH_JOINT_PRISMATIC ? "DH_JOINT_PRISMATIC" : "DH_JOINT_REVOLUTE");
-    for (k = 0; k < 16u; k++) {
+    for (k = 0; k < 20u; k++) {
         fprintf(out, (k % 4u == 0u) ? "%s          .%s = " : ", .%s%s = ", (k % 4u == 0u) ? nl : "",
-                (k < 8u) ? fname[k] : iname[k - 8u]);
-        if (k < 8u) put_f(out, fv[k]);
-        else put_i(out, iv[k - 8u]);
-        if (k % 4u == 3u && k < 15u) fputc(',', out);
+                (k < 10u) ? fname[k] : iname[k - 10u]);
+        if (k < 10u) put_f(out, fv[k]);
+        else put_i(out, iv[k - 10u]);
+        if (k % 4u == 3u && k < 19u) fputc(',', out);
     }
     fputs(" }", out);
 }
@@ -140,13 +146,14 @@ void dh_gen_write(FILE *out, const dh_robot *r, const char *name, const char *sr
     for (p = base; *p; p++) /* printable, and no end of comment */
         fputc((*p >= ' ' && *p <= '~' && !(p[0] == '*' && p[1] == '/')) ? *p : '?', out);
     fprintf(out, ": the dh_robot\n"
-                 " * that dh_robot_init, dh_robot_add_joint_f32, dh_robot_set_limits_f32 and\n"
-                 " * dh_robot_set_base_f32 / dh_robot_set_tool_f32 build from it, every field\n"
+                 " * that dh_robot_init, dh_robot_add_joint_f32, dh_robot_set_limits_f32,\n"
+                 " * dh_robot_set_rates_f32 and dh_robot_set_base_f32 / dh_robot_set_tool_f32\n"
+                 " * build from it, every field\n"
                  " * written out exactly, so that %s lives in flash (.rodata), needs no\n"
                  " * setter at run time, passes dh_robot_check() and gives the same FK, bit for\n"
                  " * bit, as the robot built at run time. Regenerate instead of editing.\n"
                  " */\n", name);
-    fputs("#include \"dhmath/dhmath.h\"\n\n", out);
+    fputs("#include <math.h> /* INFINITY: unlimited rates */\n\n#include \"dhmath/dhmath.h\"\n\n", out);
     fprintf(out, "#if DH_QPOS_FRAC != %d\n"
                  "#error \"generated for DH_QPOS_FRAC %d: the fixed-point constants differ\"\n"
                  "#endif\n", DH_QPOS_FRAC, DH_QPOS_FRAC);

@@ -5,6 +5,7 @@
  */
 #include "dh_robotfile.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -64,9 +65,9 @@ static size_t next_tok(const char *line, size_t n, size_t *i, size_t *s)
 static int parse_joint(const ctx *c, dh_robotfile *rf, const char *line, size_t n, size_t i,
                        unsigned lineno, size_t kw_col)
 {
-    static const char *const keys[] = { "a", "d", "alpha", "theta", "min", "max" };
-    int seen[6] = { 0, 0, 0, 0, 0, 0 };
-    double val[6] = { 0, 0, 0, 0, 0, 0 };
+    static const char *const keys[] = { "a", "d", "alpha", "theta", "min", "max", "vmax", "amax" };
+    int seen[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+    double val[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
     size_t s, tl;
     dh_rf_joint *j;
     char q[160];
@@ -84,7 +85,7 @@ static int parse_joint(const ctx *c, dh_robotfile *rf, const char *line, size_t 
         return fail(c, lineno, s + 1, "joint: type must be R or P, not '%s'", q);
     }
     for (;;) {
-        size_t eq, k, key = 6;
+        size_t eq, k, key = 8;
         const char *why;
         tl = next_tok(line, n, &i, &s);
         if (tl == 0) break;
@@ -93,11 +94,11 @@ static int parse_joint(const ctx *c, dh_robotfile *rf, const char *line, size_t 
             dh_expr_quote(q, sizeof q, line + s, tl, 32u);
             return fail(c, lineno, s + 1, "joint: expected key=value, got '%s'", q);
         }
-        for (k = 0; k < 6u; k++)
+        for (k = 0; k < 8u; k++)
             if (tok_is(line + s, eq, keys[k])) key = k;
-        if (key == 6u) {
+        if (key == 8u) {
             dh_expr_quote(q, sizeof q, line + s, eq, 32u);
-            return fail(c, lineno, s + 1, "joint: unknown key '%s' (keys: a d alpha theta min max)", q);
+            return fail(c, lineno, s + 1, "joint: unknown key '%s' (keys: a d alpha theta min max vmax amax)", q);
         }
         if (seen[key]) return fail(c, lineno, s + 1, "joint: duplicate key '%s'", keys[key]);
         seen[key] = 1;
@@ -106,6 +107,8 @@ static int parse_joint(const ctx *c, dh_robotfile *rf, const char *line, size_t 
             dh_expr_quote(q, sizeof q, line + s + eq + 1, tl - eq - 1, 32u);
             return fail(c, lineno, s + eq + 2, "joint: bad number '%s' for '%s': %s", q, keys[key], why);
         }
+        if (key >= 6u && !(val[key] > 0.0))
+            return fail(c, lineno, s + eq + 2, "joint: '%s' must be greater than 0, not %.9g", keys[key], val[key]);
     }
     if (seen[4] != seen[5])
         return fail(c, lineno, kw_col, "joint: '%s' given without '%s'", seen[4] ? "min" : "max",
@@ -119,6 +122,8 @@ static int parse_joint(const ctx *c, dh_robotfile *rf, const char *line, size_t 
     j->qmin = val[4];
     j->qmax = val[5];
     j->has_limits = seen[4];
+    j->vmax = seen[6] ? val[6] : 0.0;
+    j->amax = seen[7] ? val[7] : 0.0;
     j->line = lineno;
     rf->n++;
     return 0;
@@ -285,6 +290,14 @@ int dh_robotfile_build(const char *name, const dh_robotfile *rf, int fixed, dh_r
             st = dh_robot_set_limits_f32(r, k, (float)j->qmin, (float)j->qmax);
             if (st != DH_OK)
                 return fail(&c, j->line, 0, "joint limits rejected by the library: %s", dh_status_str(st));
+        }
+        if (j->vmax > 0.0 || j->amax > 0.0) {
+            /* an absent key is unlimited */
+            const float inf = (float)HUGE_VAL;
+            st = dh_robot_set_rates_f32(r, k, j->vmax > 0.0 ? (float)j->vmax : inf,
+                                        j->amax > 0.0 ? (float)j->amax : inf);
+            if (st != DH_OK)
+                return fail(&c, j->line, 0, "joint rate limits rejected by the library: %s", dh_status_str(st));
         }
     }
     if (build_frame(&c, &rf->base, "base", fixed, r)) return -1;

@@ -40,6 +40,7 @@ typedef struct {
     double a, d, alpha, theta;   /**< lengths; alpha/theta in degrees */
     double qmin, qmax;           /**< limits when has_limits */
     int has_limits;
+    double vmax, amax;           /**< rate limits (deg/s, deg/s^2 or length unit/s, /s^2); 0 = not given (unlimited) */
     unsigned line;               /**< 1-based line number in the file */
 } dh_rf_joint;
 

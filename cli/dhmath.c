@@ -23,6 +23,7 @@
 #include "dhmath/mat4.h"
 #include "dhmath/robot.h"
 #include "dhmath/rot.h"
+#include "dhmath/track.h"
 #include "dhmath/dhmath.h"
 
 #define EXIT_USAGE 2
@@ -59,6 +60,12 @@ static const char k_usage[] =
     "                                  Rot(z,c)), xyz extrinsic; 24 sequences\n"
     "  quat [--fixed] EXPR             unit quaternion of EXPR's rotation: w x y z (w >= 0)\n"
     "  gen ROBOT NAME                  C source defining const dh_robot NAME (flash)\n"
+    "  track ROBOT --q0 q1,... --dt SECONDS [--vmax V] [--fixed]\n"
+    "                                  tracking IK: one target EXPR per line on stdin,\n"
+    "                                  one line per target: n joint values, ok|lagging|\n"
+    "                                  unreachable, position error, rotation error (rad);\n"
+    "                                  V: deg/s (length unit/s), one value or n values;\n"
+    "                                  default the robot file's vmax=\n"
     "  help                            this text\n"
     "  --version                       program and library version\n"
     "\n"
@@ -156,7 +163,7 @@ static int finish(void)
 typedef struct {
     int fixed, frames, position, expr, all;
     const char *q0;
-    const char *tol_pos, *tol_rot, *w_rot, *max_iter;
+    const char *tol_pos, *tol_rot, *w_rot, *max_iter, *dt, *vmax;
     const char *pos[8];
     int npos;
     int nstdin;               /* positional "-" arguments (standard input) */
@@ -185,8 +192,9 @@ static int parse_opts(int argc, char **argv, opts *o, const char *allowed)
                 *flag = 1;
             } else {
                 /* options with a value: --name VALUE or --name=VALUE */
-                static const char *const valued[] = { "q0", "tol-pos", "tol-rot", "w-rot", "max-iter" };
-                const char **slot[5];
+                static const char *const valued[] = { "q0", "tol-pos", "tol-rot", "w-rot", "max-iter", "dt",
+                                                      "vmax" };
+                const char **slot[7];
                 size_t v, nl;
                 const char *eq = strchr(name, '=');
                 slot[0] = &o->q0;
@@ -194,11 +202,13 @@ static int parse_opts(int argc, char **argv, opts *o, const char *allowed)
                 slot[2] = &o->tol_rot;
                 slot[3] = &o->w_rot;
                 slot[4] = &o->max_iter;
+                slot[5] = &o->dt;
+                slot[6] = &o->vmax;
                 nl = eq ? (size_t)(eq - name) : strlen(name);
-                for (v = 0; v < 5u; v++)
+                for (v = 0; v < 7u; v++)
                     if (strlen(valued[v]) == nl && strncmp(name, valued[v], nl) == 0 && strstr(allowed, valued[v]))
                         break;
-                if (v == 5u) return usage_error("unknown or inapplicable option '%s'", a);
+                if (v == 7u) return usage_error("unknown or inapplicable option '%s'", a);
                 if (*slot[v]) return usage_error("option '%s' given more than once", a);
                 if (eq) *slot[v] = eq + 1;
                 else if (k + 1 < argc) *slot[v] = argv[++k];
@@ -1051,6 +1061,220 @@ static int cmd_gen(int argc, char **argv)
     return finish();
 }
 
+/* ---- track ---------------------------------------------------------------- */
+
+/* output of track, kept until the last target (nothing on stdout when a
+ * line is bad) */
+typedef struct {
+    char *buf;
+    size_t len, cap;
+} outbuf;
+
+static int out_add(outbuf *b, const char *text)
+{
+    const size_t n = strlen(text);
+    if (b->len + n + 1u > b->cap) {
+        size_t cap = b->cap ? b->cap * 2u : 4096u;
+        char *p;
+        while (cap < b->len + n + 1u) cap *= 2u;
+        p = (char *)realloc(b->buf, cap);
+        if (!p) return error_msg("out of memory", NULL);
+        b->buf = p;
+        b->cap = cap;
+    }
+    memcpy(b->buf + b->len, text, n + 1u);
+    b->len += n;
+    return 0;
+}
+
+/* --vmax: one value for every joint or n values, each > 0 */
+static int track_vmax(const char *s, const dh_robot *r, float *vmax)
+{
+    double v[DH_MAX_JOINTS];
+    unsigned i, commas = 0;
+    const char *p;
+    for (p = s; *p; p++) commas += (*p == ',');
+    if (commas == 0u) {
+        if (parse_num_arg(s, "--vmax", &v[0])) return EXIT_ERR;
+        for (i = 1; i < r->n; i++) v[i] = v[0];
+    } else if (parse_list(s, r->n, v, "--vmax")) {
+        return EXIT_ERR;
+    }
+    for (i = 0; i < r->n; i++) {
+        if (!(v[i] > 0.0) || !((float)v[i] > 0.0f)) {
+            fprintf(stderr, "dhmath: error: --vmax: joint %u value %.9g must be greater than 0\n", i + 1u, v[i]);
+            return EXIT_ERR;
+        }
+        vmax[i] = (float)v[i];
+    }
+    return 0;
+}
+
+static const char *const k_track_word[3] = { "ok", "lagging", "unreachable" };
+
+/* the next target line of track: 1 with T, 0 at the end of input, or an
+ * exit code (the error printed) */
+static int track_next(char *line, size_t cap, unsigned *lineno, dh_mat4_f32 *T)
+{
+    for (;;) {
+        size_t len, b = 0;
+        dh_expr_error e;
+        if (!fgets(line, (int)cap, stdin)) {
+            if (ferror(stdin)) return error_msg("reading the targets from standard input failed", NULL);
+            return 0;
+        }
+        len = strlen(line);
+        (*lineno)++;
+        if (len == cap - 1u && line[len - 1u] != '\n' && !feof(stdin)) {
+            fprintf(stderr, "dhmath: error: line %u: longer than %lu characters\n", *lineno,
+                    (unsigned long)(cap - 2u));
+            return EXIT_ERR;
+        }
+        while (len > 0u && (line[len - 1u] == '\n' || line[len - 1u] == '\r')) len--;
+        while (b < len && (line[b] == ' ' || line[b] == '\t')) b++;
+        if (b == len) continue; /* blank line */
+        if (dh_expr_eval_f32(line, len, T, &e)) {
+            fprintf(stderr, "dhmath: error: line %u: column %lu: %s\n", *lineno, (unsigned long)(e.pos + 1), e.msg);
+            return EXIT_ERR;
+        }
+        return 1;
+    }
+}
+
+/* track --fixed: the fixed-point tracker (dh_track_q) on the robot's fixed
+ * path, lengths in the robot file's unit; q0 rounded to Q16.16 degrees /
+ * dh_qpos, the period a whole number of microseconds, each target EXPR
+ * evaluated in float and rounded to a dh_frame_q. The rate limits are the
+ * fixed copies dh_robot_set_rates_f32 stored. */
+static int track_fixed(const dh_robot *r, const double *q0d, double dtd, outbuf *out)
+{
+    static dh_ikc_model_q m;
+    dh_mat4_f32 T_scratch;
+    static dh_track_q t;
+    int32_t q0[DH_MAX_JOINTS], q[DH_MAX_JOINTS];
+    const double us = dtd * 1e6, one = (double)((int32_t)1 << DH_QPOS_FRAC);
+    char line[4096], text[64];
+    unsigned i, lineno = 0;
+    int rc;
+    dh_status st;
+    const dh_ikc_model_q *mp = NULL;
+    if (!(us >= 1.0 && us <= 1e6) || fabs(us - floor(us + 0.5)) > 1e-6 * us)
+        return error_msg("--dt", "with --fixed the control period must be a whole number of microseconds, at most 1 s");
+    if ((r->flags & DH_ROBOT_HAS_Q) == 0u)
+        return error_msg("track --fixed", "the robot's constants do not fit the fixed-point formats");
+    for (i = 0; i < r->n; i++) {
+        const double v = q0d[i] * ((r->joint[i].type == DH_JOINT_REVOLUTE) ? 65536.0 : one);
+        if (!(fabs(v) < 2147483647.0)) return error_msg("--q0", "a joint value does not fit the fixed-point format");
+        q0[i] = (int32_t)floor(v + 0.5);
+    }
+    if (dh_ikc_analyse_q(r, &m) == DH_OK && m.kind != DH_IKC_NONE) mp = &m;
+    st = dh_track_init_q(&t, r, mp, q0, (uint32_t)floor(us + 0.5));
+    if (st == DH_ERR_LIMIT) return error_msg("--q0", "a joint value is outside its limits");
+    if (st != DH_OK) return error_msg("track", dh_status_str(st));
+    while ((rc = track_next(line, sizeof line, &lineno, &T_scratch)) == 1) {
+        dh_frame_q F;
+        dh_track_report_q rep;
+        if (dh_frame_from_mat4_q(&T_scratch, &F) != DH_OK) {
+            fprintf(stderr, "dhmath: error: line %u: target not representable in fixed point\n", lineno);
+            return EXIT_ERR;
+        }
+        st = dh_track_step_q(&t, &F, q, &rep);
+        if (st != DH_OK) {
+            fprintf(stderr, "dhmath: error: line %u: target not rigid (rotation not orthonormal)\n", lineno);
+            return EXIT_ERR;
+        }
+        for (i = 0; i < r->n; i++) {
+            const double v = q[i] / ((r->joint[i].type == DH_JOINT_REVOLUTE) ? 65536.0 : one);
+            (void)snprintf(text, sizeof text, "%.9g ", v == 0.0 ? 0.0 : v);
+            if (out_add(out, text)) return EXIT_ERR;
+        }
+        (void)snprintf(text, sizeof text, "%s %.9g %.9g\n", k_track_word[rep.state], rep.pos_err / one,
+                       rep.rot_err / 536870912.0);
+        if (out_add(out, text)) return EXIT_ERR;
+    }
+    return rc;
+}
+
+static int cmd_track(int argc, char **argv)
+{
+    opts o;
+    dh_robot r;
+    static dh_robotfile rf;
+    static dh_ikc_model_f32 m;
+    static dh_track_f32 t;
+    double q0d[DH_MAX_JOINTS], dtd = 0.0;
+    float q0[DH_MAX_JOINTS], vmax[DH_MAX_JOINTS], q[DH_MAX_JOINTS];
+    char line[4096], text[64];
+    unsigned i, lineno = 0;
+    outbuf out = { NULL, 0u, 0u };
+    int rc;
+    dh_status st;
+    dh_mat4_f32 T;
+    const dh_ikc_model_f32 *mp = NULL;
+    if ((rc = parse_opts(argc, argv, &o, "fixed q0 dt vmax")) != 0) return rc;
+    if (o.npos != 1) return usage_error("track takes ROBOT --q0 q1,... --dt SECONDS [--vmax V] [--fixed]", NULL);
+    if (strcmp(o.pos[0], "-") == 0)
+        return usage_error("track reads its targets from standard input: the robot must be a file", NULL);
+    if (!o.q0) return usage_error("track needs --q0 q1,... (the configuration at the first target)", NULL);
+    if (!o.dt) return usage_error("track needs --dt SECONDS (the control period)", NULL);
+    if ((rc = parse_num_arg(o.dt, "--dt", &dtd)) != 0) return rc;
+    if (!(dtd > 0.0) || !((float)dtd > 0.0f) || !isfinite((float)dtd))
+        return error_msg("--dt", "the control period must be greater than 0 seconds");
+    if ((rc = load_robot(o.pos[0], o.fixed, &r, &rf)) != 0) return rc;
+    if ((rc = parse_list(o.q0, r.n, q0d, "--q0")) != 0) return rc;
+    for (i = 0; i < r.n; i++) q0[i] = (float)q0d[i];
+    if (o.vmax) {
+        if ((rc = track_vmax(o.vmax, &r, vmax)) != 0) return rc;
+    } else {
+        for (i = 0; i < r.n; i++) {
+            if (!isfinite(r.joint[i].vmax)) {
+                fprintf(stderr, "dhmath: error: track: no --vmax and joint %u has no vmax= in the robot file\n",
+                        i + 1u);
+                return EXIT_ERR;
+            }
+            vmax[i] = r.joint[i].vmax;
+        }
+    }
+    for (i = 0; i < r.n; i++) {
+        st = dh_robot_set_rates_f32(&r, i, vmax[i], r.joint[i].amax);
+        if (st != DH_OK) return error_msg("--vmax rejected by the library", dh_status_str(st));
+    }
+    if (o.fixed) {
+        rc = track_fixed(&r, q0d, dtd, &out);
+        if (rc == 0 && out.len) fwrite(out.buf, 1, out.len, stdout);
+        free(out.buf);
+        return rc ? rc : finish();
+    }
+    if (dh_ikc_analyse_f32(&r, &m) == DH_OK && m.kind != DH_IKC_NONE) mp = &m;
+    st = dh_track_init_f32(&t, &r, mp, q0, (float)dtd);
+    if (st == DH_ERR_LIMIT) return error_msg("--q0", "a joint value is outside its limits");
+    if (st != DH_OK) return error_msg("track", dh_status_str(st));
+    while ((rc = track_next(line, sizeof line, &lineno, &T)) == 1) {
+        dh_track_report_f32 rep;
+        st = dh_track_step_f32(&t, &T, q, &rep);
+        if (st != DH_OK) {
+            fprintf(stderr, "dhmath: error: line %u: target %s\n", lineno,
+                    st == DH_ERR_NAN ? "not finite" : "not rigid (rotation not orthonormal or bottom row not 0 0 0 1)");
+            free(out.buf);
+            return EXIT_ERR;
+        }
+        for (i = 0; i < r.n; i++) {
+            (void)snprintf(text, sizeof text, "%.9g ", q[i] == 0.0f ? 0.0 : (double)q[i]);
+            if (out_add(&out, text)) { free(out.buf); return EXIT_ERR; }
+        }
+        (void)snprintf(text, sizeof text, "%s %.9g %.9g\n", k_track_word[rep.state], (double)rep.pos_err,
+                       (double)rep.rot_err);
+        if (out_add(&out, text)) { free(out.buf); return EXIT_ERR; }
+    }
+    if (rc != 0) {
+        free(out.buf);
+        return rc;
+    }
+    if (out.len) fwrite(out.buf, 1, out.len, stdout);
+    free(out.buf);
+    return finish();
+}
+
 int main(int argc, char **argv)
 {
     const char *cmd;
@@ -1078,5 +1302,6 @@ int main(int argc, char **argv)
     if (strcmp(cmd, "euler") == 0) return cmd_euler(argc, argv);
     if (strcmp(cmd, "quat") == 0) return cmd_quat(argc, argv);
     if (strcmp(cmd, "gen") == 0) return cmd_gen(argc, argv);
+    if (strcmp(cmd, "track") == 0) return cmd_track(argc, argv);
     return usage_error("unknown command '%s'", cmd);
 }

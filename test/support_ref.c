@@ -388,3 +388,39 @@ void dhr_sincos_deg(double d, double *s, double *c)
     }
     if (d < 0) *s = -*s;
 }
+
+/* eigenvalues of the symmetric m x m matrix A (row-major, destroyed) by
+ * cyclic Jacobi rotations */
+void dhr_sym_eig(double *A, int m, double *ev)
+{
+    int sweep, p, q, k;
+    for (sweep = 0; sweep < 60; sweep++) {
+        double off = 0.0, dia = 0.0;
+        for (p = 0; p < m; p++)
+            for (q = 0; q < m; q++) {
+                if (p != q) off += A[p * m + q] * A[p * m + q];
+                else dia += A[p * m + q] * A[p * m + q];
+            }
+        if (off <= 1e-34 * dia || off == 0.0) break;
+        for (p = 0; p < m; p++)
+            for (q = p + 1; q < m; q++) {
+                double apq = A[p * m + q], th, t, c, s;
+                if (apq == 0.0) continue;
+                th = (A[q * m + q] - A[p * m + p]) / (2.0 * apq);
+                t = (th >= 0 ? 1.0 : -1.0) / (fabs(th) + sqrt(th * th + 1.0));
+                c = 1.0 / sqrt(t * t + 1.0);
+                s = t * c;
+                for (k = 0; k < m; k++) { /* columns p, q */
+                    double akp = A[k * m + p], akq = A[k * m + q];
+                    A[k * m + p] = c * akp - s * akq;
+                    A[k * m + q] = s * akp + c * akq;
+                }
+                for (k = 0; k < m; k++) { /* rows p, q */
+                    double apk = A[p * m + k], aqk = A[q * m + k];
+                    A[p * m + k] = c * apk - s * aqk;
+                    A[q * m + k] = s * apk + c * aqk;
+                }
+            }
+    }
+    for (p = 0; p < m; p++) ev[p] = A[p * m + p];
+}

@@ -71,6 +71,10 @@ double dhr_rot_diff(const dhr_mat4 *A, const dhr_mat4 *B);
 
 /** Random unit 3-vector (uniform on the sphere) from dht_rand_uniform. */
 void dhr_rand_unit3(double k[3]);
+
+/** Eigenvalues of the symmetric m x m matrix A (row-major, destroyed) by
+ * cyclic Jacobi rotations into ev[0..m-1], unordered. */
+void dhr_sym_eig(double *A, int m, double *ev);
 /** Random rigid transform: rotation about a random axis by an angle in
  *  [-180, 180) deg, translation components uniform in [-tmax, tmax). */
 void dhr_rand_rigid(double tmax, dhr_mat4 *T);

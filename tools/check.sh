@@ -70,7 +70,7 @@ examples_suite() {
   for b in m0:cortex-m0plus.cmake m4f:cortex-m4f.cmake; do
     tc=${b#*:}; b=build/${b%%:*}
     cmake -S "$ROOT" -B "$b" -DCMAKE_TOOLCHAIN_FILE="$ROOT/port/$tc" -DCMAKE_BUILD_TYPE=Release >/dev/null &&
-    cmake --build "$b" -j"$JOBS" --target fw_fixed_fk fw_float_ik fw_fixed_kin >/dev/null &&
+    cmake --build "$b" -j"$JOBS" --target fw_fixed_fk fw_float_ik fw_fixed_kin fw_fixed_track >/dev/null &&
     ctest --test-dir "$b" --output-on-failure -R '^example_' || return 1
   done
 }

@@ -230,18 +230,25 @@ static dh_q16 bt_to_q16(float deg)
 #define BT_JOINT(type, a, d, alpha, theta, qmin, qmax) \
     { (float)(a), (float)(d), (float)(alpha), (float)(qmin), (float)(qmax) },
 static const float bt_puma_tab[6][5] = { DHR_PUMA560_JOINTS(BT_JOINT) };
+/* UR5 (CB3), standard DH, metres: examples/robots/ur5.dh */
+static const float bt_ur5_tab[6][5] = { DHR_UR5_JOINTS(BT_JOINT) };
 
-static uint32_t bt_robot(dh_robot *r, float scale)
+static uint32_t bt_robot_of(dh_robot *r, const float (*tab)[5], float scale)
 {
     uint32_t st;
     uint32_t j;
     st = (uint32_t)dh_robot_init(r, DH_CONV_STANDARD);
     for (j = 0; j < 6u; j++) {
-        st |= (uint32_t)dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, 0.0f,
-                                               bt_puma_tab[j][1] * scale, bt_puma_tab[j][0] * scale, bt_puma_tab[j][2]);
-        st |= (uint32_t)dh_robot_set_limits_f32(r, j, bt_puma_tab[j][3], bt_puma_tab[j][4]);
+        st |= (uint32_t)dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, 0.0f, tab[j][1] * scale, tab[j][0] * scale,
+                                               tab[j][2]);
+        st |= (uint32_t)dh_robot_set_limits_f32(r, j, tab[j][3], tab[j][4]);
     }
     return st;
+}
+
+static uint32_t bt_robot(dh_robot *r, float scale)
+{
+    return bt_robot_of(r, bt_puma_tab, scale);
 }
 
 /* Random rigid transform: axis uniform in the cube (not tiny), angle in
@@ -671,6 +678,7 @@ static void bt_measure(const bt_op *op)
 #define BT_NIK 16u
 
 #define BT_NIKC (BT_NSET == 8u ? 4u : BT_NSET)
+#define BT_NDLS 4u
 
 #if defined(__ARM_FP) || !defined(__arm__)
 #define BT_IKC_FLOAT 1
@@ -693,6 +701,27 @@ static union {
         dh_ikc_sol_f32 solf[DH_IKC_MAX_SOL];
 #endif
     } c;
+    struct {   /* damped least-squares steps (bt_dls) */
+        float J[BT_NDLS][36];
+        float e[BT_NDLS][6];
+        int32_t Jq[BT_NDLS][36];
+        int32_t eq[BT_NDLS][6];
+        dh_dls_work_q w;
+    } d;
+    int32_t ikq_work[DH_IK_WORK_Q(6u)];   /* bt_ik_q */
+    struct {   /* trackers (bt_track; their robots in bt_puma_m / bt_puma_mm) */
+        dh_ikc_model_q mq;
+        dh_track_q tq;
+        dh_ikc_sol_q solq[DH_IKC_MAX_SOL];
+        int32_t Jq[36];
+        dh_dls_work_q w;
+#if BT_IKC_FLOAT
+        dh_ikc_model_f32 mf;
+        dh_track_f32 tf;
+        dh_ikc_sol_f32 solf[DH_IKC_MAX_SOL];
+        float J[36];
+#endif
+    } t;
 } bt_mem;
 #define bt_ik_work bt_mem.ik_work
 
@@ -741,10 +770,10 @@ static void bt_ik(void)
 /* As bt_ik on the Puma 560 in mm, all integer: target = dh_fk_q of a random
  * Q configuration within 80 % of the limits, start 10..20 deg away on every
  * joint, dh_ik_params_default_q with tolerances 0.9e-3 mm and 0.9e-5 rad (full pose).
- * The workspace is on the stack: the micro:bit's RAM has no room for it in .bss. */
+ * The workspace shares bt_mem with the other sections (the micro:bit's RAM). */
 static BT_NOINLINE void bt_ik_q(void)
 {
-    int32_t bt_ikq_work[DH_IK_WORK_Q(6u)];
+    int32_t *const bt_ikq_work = bt_mem.ikq_work;
     dh_ik_params_q p;
     dh_ik_result_q res;
     int32_t qt[6], q0[6], q[6];
@@ -772,8 +801,8 @@ static BT_NOINLINE void bt_ik_q(void)
             continue;
         }
         t0 = bt_now();
-        st = dh_ik_q(&bt_puma_mm, &target, q0, &p, bt_ikq_work, sizeof bt_ikq_work / sizeof bt_ikq_work[0], q,
-                     &res);
+        st = dh_ik_q(&bt_puma_mm, &target, q0, &p, bt_ikq_work, sizeof bt_mem.ikq_work / sizeof bt_mem.ikq_work[0],
+                     q, &res);
         t1 = bt_now();
         printf("BT ikq|%lu|%d|%lu|%llu|%llu|%ld\n", (unsigned long)k, (int)st, (unsigned long)res.iterations,
                (unsigned long long)(t1 - t0), (unsigned long long)tnull, (long)res.err_pos);
@@ -849,6 +878,247 @@ static void bt_ikc(void)
     printf("BT ikc|dh_ikc_q (Puma 560, mm, all solutions)|%lu|%llu|%llu|%lu|%lu\n", (unsigned long)BT_NIKC,
            (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total, (unsigned long)st);
     bt_status |= st;
+}
+
+/* ---- damped least-squares steps (6 joints) ------------------------------- */
+
+/* Inputs: the Jacobians of the Puma 560 at BT_NDLS of the FK configurations
+ * (metres / mm) and pose errors of up to 1 mm and 1e-3 rad per component,
+ * what a tracker sees between two periods; damping the trackers' defaults
+ * (float 0.02 L, L the robot's length sum; fixed 0.02 in J's units), step
+ * bounds 180 deg/s x 1 ms. */
+static float bt_dls_lam, bt_dls_max[6], bt_dls_dq[6];
+static int32_t bt_dls_maxq[6], bt_dls_dqq[6];
+
+static uint32_t bt_inputs_dls(void)
+{
+    uint32_t st = 0u, k, j;
+    dh_mat4_f32 T;
+    const uint32_t saved = bt_rng;
+    bt_rng = 0x27D4EB2Fu;
+    for (k = 0; k < BT_NDLS; k++) {
+        st |= (uint32_t)dh_jacobian_f32(&bt_puma_m, bt_qf[k], bt_mem.d.J[k], &T);
+        st |= (uint32_t)dh_jacobian_q(&bt_puma_mm, bt_qq[k], bt_mem.d.Jq[k], &bt_Fout);
+        for (j = 0; j < 6u; j++) {
+            const float x = bt_uniform(-1e-3f, 1e-3f);   /* m or rad */
+            bt_mem.d.e[k][j] = x;
+            /* mm in dh_qpos, rad in Q3.29 */
+            bt_mem.d.eq[k][j] = j < 3u ? bt_to_q16(x * 1000.0f) : (int32_t)(x * 536870912.0f);
+        }
+    }
+    bt_rng = saved;
+    bt_dls_lam = 0.0f;
+    for (j = 0; j < 6u; j++) {
+        bt_dls_lam += bt_puma_tab[j][0] + bt_puma_tab[j][1];
+        bt_dls_max[j] = 0.18f;
+        bt_dls_maxq[j] = 11796;   /* floor(180 x 2^16 x 1e-3) */
+    }
+    bt_dls_lam *= 0.02f;
+    return st;
+}
+
+static BT_NOIPA dh_status z_dls_f32(const dh_robot *r, const float *J, const float e[6], float lambda,
+                                   const float *dq_max, float *dq)
+{
+    (void)r; (void)J; (void)e; (void)lambda; (void)dq_max; (void)dq;
+    return DH_OK;
+}
+static BT_NOIPA dh_status z_dls_q(const dh_robot *r, const int32_t *J, const int32_t e[6], int32_t lambda,
+                                 const int32_t *dq_max, dh_dls_work_q *work, int32_t *dq)
+{
+    (void)r; (void)J; (void)e; (void)lambda; (void)dq_max; (void)work; (void)dq;
+    return DH_OK;
+}
+#define B_dls_f32(F) \
+    bt_status |= (uint32_t)F(&bt_puma_m, bt_mem.d.J[i & (BT_NDLS - 1u)], bt_mem.d.e[i & (BT_NDLS - 1u)], \
+                             bt_dls_lam, bt_dls_max, bt_dls_dq)
+#define B_dls_q(F)                                                                                          \
+    bt_status |= (uint32_t)F(&bt_puma_mm, bt_mem.d.Jq[i & (BT_NDLS - 1u)], bt_mem.d.eq[i & (BT_NDLS - 1u)], \
+                             DH_QPOS(0.02), bt_dls_maxq, &bt_mem.d.w, bt_dls_dqq)
+BT_PAIR(dls_f32, dh_dls_step_f32, z_dls_f32)
+BT_PAIR(dls_q, dh_dls_step_q, z_dls_q)
+
+static const bt_op bt_ops_dls[] = {
+    BT_OPD("dh_dls_step_f32 (Puma 560, m)", dls_f32, "z_dls_f32", 64u),
+    BT_OPD("dh_dls_step_q (Puma 560, mm)", dls_q, "z_dls_q", 64u),
+};
+
+/* ---- tracking along a smooth move ------------------------------------------
+ *
+ * One tracker call per period of a move: the targets are the FK of a
+ * minimum-jerk joint move (10 s^3 - 15 s^4 + 6 s^5) of BT_NTRK periods of
+ * 1 ms, 12-20 deg per joint, peak speed below the 180 deg/s limit on every
+ * joint (the UR5's published joint speed, set on both robots): consecutive
+ * targets a tracker follows, not one target repeated. Each call is timed
+ * on its own (the counter's own cost is measured over as many empty
+ * intervals), and so are, per period, the closed-form solve of the same
+ * target with the tracker's configuration as q_ref (what the tracker solves
+ * inside) and the public Jacobian and singularity measures at the
+ * tracker's output (what its report computes): each line gives the sum and
+ * the largest single call. */
+#define BT_NTRK 256u
+
+typedef struct {
+    const char *robot;
+    const float (*tab)[5];
+    float qa[6];    /* start of the move, deg */
+    float dq[6];    /* displacement, deg */
+} bt_move;
+
+static const bt_move bt_moves[2] = {
+    { "UR5", bt_ur5_tab, { 20.0f, -110.0f, 95.0f, -75.0f, 60.0f, 30.0f },
+      { 15.0f, 18.0f, -20.0f, 12.0f, -15.0f, 20.0f } },
+    { "Puma 560", bt_puma_tab, { 10.0f, -40.0f, 30.0f, 20.0f, 45.0f, -30.0f },
+      { 15.0f, 18.0f, -20.0f, 12.0f, -15.0f, 20.0f } },
+};
+
+typedef struct {
+    uint64_t sum, max;
+} bt_acc;
+
+static void bt_acc_add(bt_acc *a, uint64_t t0, uint64_t t1)
+{
+    const uint64_t d = t1 - t0;
+    a->sum += d;
+    if (d > a->max) {
+        a->max = d;
+    }
+}
+
+/* joint values of period k of the move */
+static void bt_move_q(const bt_move *mv, uint32_t k, float *q)
+{
+    const float s = (float)k / (float)BT_NTRK;
+    const float p = s * s * s * (10.0f + s * (-15.0f + 6.0f * s));
+    uint32_t j;
+    for (j = 0; j < 6u; j++) {
+        q[j] = mv->qa[j] + p * mv->dq[j];
+    }
+}
+
+/* the move's robot in r (lengths times scale) with the rate limit on every joint */
+static uint32_t bt_move_robot(const bt_move *mv, dh_robot *r, float scale)
+{
+    uint32_t j, st = bt_robot_of(r, mv->tab, scale);
+    for (j = 0; j < 6u; j++) {
+        st |= (uint32_t)dh_robot_set_rates_f32(r, j, 180.0f, INFINITY);
+    }
+    return st;
+}
+
+/* BT track|name|calls|ticks|ticks of as many empty intervals|largest call|ok|lagging|unreachable|status */
+static void bt_track_print(const char *op, const char *robot, const char *unit, const bt_acc *a,
+                           const bt_acc *null, const uint32_t *states, uint32_t st)
+{
+    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|%lu|%lu|%lu|%lu\n", op, robot, unit, (unsigned long)BT_NTRK,
+           (unsigned long long)a->sum, (unsigned long long)null->sum, (unsigned long long)a->max,
+           (unsigned long)states[0], (unsigned long)states[1], (unsigned long)states[2], (unsigned long)st);
+}
+
+/* twin: bt_track_f32 (the same timed loop on the fixed types and calls) */
+static BT_NOINLINE void bt_track_q(const bt_move *mv, dh_robot *r, const bt_acc *null)
+{
+    dh_track_q *const t = &bt_mem.t.tq;
+    dh_track_report_q rep;
+    dh_frame_q T;
+    bt_acc aik = { 0u, 0u }, atr = { 0u, 0u }, ams = { 0u, 0u };
+    uint32_t states[3] = { 0u, 0u, 0u }, none[3] = { 0u, 0u, 0u };
+    uint32_t st, k, j, ns;
+    uint64_t t0, t1;
+    float qf[6];
+    int32_t q[6], w, sg;
+    st = bt_move_robot(mv, r, 1000.0f);
+    for (j = 0; j < 6u; j++) {
+        q[j] = bt_to_q16(mv->qa[j]);
+    }
+    st |= (uint32_t)dh_ikc_analyse_q(r, &bt_mem.t.mq);
+    st |= (uint32_t)dh_track_init_q(t, r, &bt_mem.t.mq, q, 1000u);
+    for (k = 1; k <= BT_NTRK && st == 0u; k++) {
+        bt_move_q(mv, k, qf);
+        for (j = 0; j < 6u; j++) {
+            q[j] = bt_to_q16(qf[j]);
+        }
+        st |= (uint32_t)dh_fk_q(r, q, &T);
+        t0 = bt_now();
+        st |= (uint32_t)dh_ikc_q(&bt_mem.t.mq, &T, t->q, 0u, bt_mem.t.solq, &ns);
+        t1 = bt_now();
+        bt_acc_add(&aik, t0, t1);
+        t0 = bt_now();
+        st |= (uint32_t)dh_track_step_q(t, &T, q, &rep);
+        t1 = bt_now();
+        bt_acc_add(&atr, t0, t1);
+        states[rep.state]++;
+        t0 = bt_now();
+        st |= (uint32_t)dh_jacobian_q(r, q, bt_mem.t.Jq, &T);
+        st |= (uint32_t)dh_manipulability_q(bt_mem.t.Jq, 6u, &bt_mem.t.w, &w, &sg);
+        t1 = bt_now();
+        bt_acc_add(&ams, t0, t1);
+    }
+    bt_track_print("dh_track_step_q", mv->robot, "mm", &atr, null, states, st);
+    bt_track_print("dh_ikc_q", mv->robot, "mm", &aik, null, none, st);
+    bt_track_print("dh_jacobian_q + dh_manipulability_q", mv->robot, "mm", &ams, null, none, st);
+}
+
+#if BT_IKC_FLOAT
+/* twin: bt_track_q */
+static BT_NOINLINE void bt_track_f32(const bt_move *mv, dh_robot *r, const bt_acc *null)
+{
+    dh_track_f32 *const t = &bt_mem.t.tf;
+    dh_track_report_f32 rep;
+    dh_mat4_f32 T;
+    bt_acc aik = { 0u, 0u }, atr = { 0u, 0u }, ams = { 0u, 0u };
+    uint32_t states[3] = { 0u, 0u, 0u }, none[3] = { 0u, 0u, 0u };
+    uint32_t st, k, ns;
+    uint64_t t0, t1;
+    float q[6], w, sg;
+    st = bt_move_robot(mv, r, 1.0f);
+    st |= (uint32_t)dh_ikc_analyse_f32(r, &bt_mem.t.mf);
+    st |= (uint32_t)dh_track_init_f32(t, r, &bt_mem.t.mf, mv->qa, 1e-3f);
+    for (k = 1; k <= BT_NTRK && st == 0u; k++) {
+        bt_move_q(mv, k, q);
+        st |= (uint32_t)dh_fk_f32(r, q, &T);
+        t0 = bt_now();
+        st |= (uint32_t)dh_ikc_f32(&bt_mem.t.mf, &T, t->q, 0u, bt_mem.t.solf, &ns);
+        t1 = bt_now();
+        bt_acc_add(&aik, t0, t1);
+        t0 = bt_now();
+        st |= (uint32_t)dh_track_step_f32(t, &T, q, &rep);
+        t1 = bt_now();
+        bt_acc_add(&atr, t0, t1);
+        states[rep.state]++;
+        t0 = bt_now();
+        st |= (uint32_t)dh_jacobian_f32(r, q, bt_mem.t.J, &T);
+        st |= (uint32_t)dh_manipulability_f32(bt_mem.t.J, 6u, &w, &sg);
+        t1 = bt_now();
+        bt_acc_add(&ams, t0, t1);
+    }
+    bt_track_print("dh_track_step_f32", mv->robot, "m", &atr, null, states, st);
+    bt_track_print("dh_ikc_f32", mv->robot, "m", &aik, null, none, st);
+    bt_track_print("dh_jacobian_f32 + dh_manipulability_f32", mv->robot, "m", &ams, null, none, st);
+}
+#endif
+
+/* Runs after the sanity checks: the micro:bit's RAM has no room for more
+ * robots, so each move's robot is built in the storage of bt_puma_m (float,
+ * metres) and bt_puma_mm (fixed, mm), which nothing uses afterwards. A
+ * status other than DH_OK is printed on the line (report.py fails on it). */
+static void bt_track(void)
+{
+    bt_acc null = { 0u, 0u };
+    uint64_t t0, t1;
+    uint32_t m, k;
+    /* the counter's own cost, summed over as many intervals as calls */
+    for (k = 0; k < BT_NTRK; k++) {
+        t0 = bt_now();
+        t1 = bt_now();
+        bt_acc_add(&null, t0, t1);
+    }
+    for (m = 0; m < 2u; m++) {
+#if BT_IKC_FLOAT
+        bt_track_f32(&bt_moves[m], &bt_puma_m, &null);
+#endif
+        bt_track_q(&bt_moves[m], &bt_puma_mm, &null);
+    }
 }
 
 /* ---- sanity checks (the numbers mean something only if these pass) -------- */
@@ -946,7 +1216,15 @@ int main(void)
     bt_ik();
     bt_ik_q();
     bt_ikc();
+    if (bt_inputs_dls() != 0u) {
+        printf("BT error|damped least-squares inputs returned a status\n");
+        return 1;
+    }
+    for (k = 0; k < sizeof bt_ops_dls / sizeof bt_ops_dls[0]; k++) {
+        bt_measure(&bt_ops_dls[k]);
+    }
     fail = bt_checks();
+    bt_track();
     printf("BT stack|%lu|%lu\n", (unsigned long)bt_stack_used(),
            (unsigned long)((uintptr_t)__stack_top__ - (uintptr_t)__stack_limit__));
     printf("BT end|%d\n", fail);

@@ -24,11 +24,25 @@ CORES = [("m0", "Cortex-M0 (microbit)"), ("m4f", "Cortex-M4F (mps2-an386)"),
 OPTS = ["O2", "Os", "Os-small"]
 OPT_LABEL = {"O2": "-O2", "Os": "-Os", "Os-small": "-Os DH_SMALL"}
 
-# Puma 560 FK targets (speed goals): (core key, op name, limit, label)
+# Speed goals with a fixed limit (docs/performance.md): (core key, op name, limit, label)
 TARGETS = [
     ("m4f", "dh_fk_q (Puma 560, mm)", 1500, "6-joint Puma FK, fixed, Cortex-M4"),
     ("m4f", "dh_fk_f32 (Puma 560, m)", 1000, "6-joint Puma FK, float, Cortex-M4F"),
     ("m0", "dh_fk_q (Puma 560, mm)", 5000, "6-joint Puma FK, fixed, Cortex-M0"),
+    ("m4f", "dh_dls_step_f32 (Puma 560, m)", 6000, "6-joint damped least-squares step, float, Cortex-M4F"),
+    ("m0", "dh_dls_step_q (Puma 560, mm)", 40000, "6-joint damped least-squares step, fixed, Cortex-M0"),
+]
+
+# Tracking goals (docs/performance.md): (core key, tracker, limit, label); the
+# limit is a number of instructions, or the name of the closed-form solve
+# measured on the same targets in the same run plus TRACK_MARGIN
+TRACK_MARGIN = 1000
+TRACK_TARGETS = [
+    ("m4f", "dh_track_step_f32 (UR5, m)", "dh_ikc_f32 (UR5, m)", "tracker call, float, UR5, Cortex-M4F"),
+    ("m4f", "dh_track_step_f32 (Puma 560, m)", "dh_ikc_f32 (Puma 560, m)",
+     "tracker call, float, Puma 560, Cortex-M4F"),
+    ("m0", "dh_track_step_q (UR5, mm)", 40000, "tracker call, fixed, UR5, Cortex-M0"),
+    ("m0", "dh_track_step_q (Puma 560, mm)", 40000, "tracker call, fixed, Puma 560, Cortex-M0"),
 ]
 
 # dhmath operation -> peer operation
@@ -60,6 +74,7 @@ class Run:
         self.ik = []         # (k, status, iterations, instructions, err_nm)
         self.ikq = []        # (k, status, iterations, instructions, err_pos LSB)
         self.ikc = []        # (name, instructions per call, solutions per call)
+        self.track = {}      # name -> (calls, mean per call, largest call, ok, lagging, unreachable)
         self.checks = []
         self.core = self.opt = self.gcc = self.counter = self.unit = "?"
         self.scale = None
@@ -114,6 +129,13 @@ class Run:
                     if int(p[6]) != 0:
                         fail("%s: %s returned status %s" % (path, p[1], p[6]))
                     self.ikc.append((p[1], float(ticks * self.scale) / n, int(p[5]) / n))
+                elif kind == "track":
+                    n, ticks, null, mx = int(p[2]), int(p[3]), int(p[4]), int(p[5])
+                    if int(p[9]) != 0:
+                        fail("%s: %s returned status %s" % (path, p[1], p[9]))
+                    per_null = float(null * self.scale) / n
+                    self.track[p[1]] = (n, float((ticks - null) * self.scale) / n,
+                                        float(mx * self.scale) - per_null, int(p[6]), int(p[7]), int(p[8]))
                 elif kind == "check":
                     self.checks.append((p[1], p[2]))
                 elif kind == "stack":
@@ -154,8 +176,17 @@ class Run:
         m = re.search(r"^[0-9a-f]+ <%s>:\n((?:.+\n)+?)\n" % re.escape(sym), self.disasm, re.M)
         if not m:
             fail("%s: no symbol %s in %s" % (self.path, sym, self.elf))
-        ins = [ln.split("\t")[2].split()[0] for ln in m.group(1).splitlines()
-               if ln.count("\t") >= 2 and not ln.split("\t")[2].startswith(".")]
+        ins = []
+        for ln in m.group(1).splitlines():
+            f = ln.split("\t")
+            if len(f) < 3 or f[2].startswith("."):
+                continue
+            mn = f[2].split()[0]
+            # a load of pc from the stack is the return (GCC's form of
+            # pop {pc} after stack arguments: ldr.w pc, [sp], #4)
+            if mn.startswith("ldr") and len(f) > 3 and f[3].replace(" ", "").startswith("pc,[sp]"):
+                mn = "pop"
+            ins.append(mn)
         while ins and ins[-1] == "nop":     # alignment padding after the return
             ins.pop()
         # straight line: calls (bl) allowed, no other branch before the return
@@ -397,6 +428,66 @@ def main():
         for name, ins, ns in r.ikc:
             w("| %s -%s | `%s` | %.0f | %.2f |" % (core_name[c], o, name, ins, ns))
     w("")
+    w("## Tracking")
+    w("")
+    w("One tracker call per control period of 1 ms along a smooth move: the targets are the FK of "
+      "a minimum-jerk joint move of 256 periods (12-20 deg per joint, peak speed below the rate "
+      "limit of 180 deg/s set on every joint, the UR5's published joint speed) from "
+      "(20, -110, 95, -75, 60, 30) deg on the UR5 and (10, -40, 30, 20, 45, -30) deg on the "
+      "Puma 560, computed untimed between the calls; consecutive targets as a controller "
+      "sends them, not one target repeated. Each call is timed on its own: the counter "
+      "around it minus its own cost (the same number of empty intervals). Beside each tracker, "
+      "the closed-form solve of the same targets (`dh_ikc_*` with the tracker's configuration "
+      "as q_ref, as the tracker calls it) and the public Jacobian and singularity measures "
+      "at the tracker's output (`dh_jacobian_*` + `dh_manipulability_*`, what the tracker's "
+      "report computes on every call), in the same run. Float trackers on the FPU cores "
+      "only; the trackers' settings are the defaults of `dh_track_init_*`.")
+    w("")
+    w("| goal | limit | -O2 | -Os | -Os DH_SMALL | met at -O2 (mean) | met at -O2 (largest call) |")
+    w("|---|---|---:|---:|---:|---|---|")
+
+    def track_get(c, o, name):
+        r = runs.get("%s-%s" % (c, o))
+        return r.track.get(name) if r else None
+
+    def verdict(v, lim):
+        if v is None or lim is None:
+            return "-"
+        return ("yes (%.0f %% of the limit)" % (100.0 * v / lim) if v <= lim
+                else "**no** (+%.0f %%)" % (100.0 * (v / lim - 1)))
+
+    for c, name, ref, label in TRACK_TARGETS:
+        cells, lim2 = [], None
+        for o in OPTS:
+            t = track_get(c, o, name)
+            if isinstance(ref, str):
+                rr = track_get(c, o, ref)
+                lim = None if rr is None else rr[1] + TRACK_MARGIN
+            else:
+                lim = ref
+            if o == "O2":
+                lim2 = lim
+            cells.append("-" if t is None else ("%s (limit %s)" % (fmt(t[1]), fmt(lim))
+                                                 if isinstance(ref, str) and lim is not None else fmt(t[1])))
+        t2 = track_get(c, "O2", name)
+        lim_txt = ("`%s` + %d" % (ref.split()[0], TRACK_MARGIN)) if isinstance(ref, str) else "%d" % ref
+        w("| %s (`%s`) | %s | %s | %s | %s |" % (label, name.split()[0], lim_txt, " | ".join(cells),
+                                                verdict(None if t2 is None else t2[1], lim2),
+                                                verdict(None if t2 is None else t2[2], lim2)))
+    w("")
+    w("Figures: mean instructions per call over the move (the closed-form limits: the mean of "
+      "`dh_ikc_*` on the same targets plus %d). \"largest call\": the most expensive single call "
+      "of the move, which bounds the period a control loop must allow (+-1 counter tick, 40 or "
+      "62.5 instructions)." % TRACK_MARGIN)
+    w("")
+    w("| core | operation | calls | mean per call | largest call | ok / lagging / unreachable |")
+    w("|---|---|---:|---:|---:|---|")
+    for c, o in cols:
+        r = runs["%s-%s" % (c, o)]
+        for name, (n, mean, mx, ok, lag, unr) in r.track.items():
+            st = "%d / %d / %d" % (ok, lag, unr) if name.startswith("dh_track") else ""
+            w("| %s -%s | `%s` | %d | %.0f | %.0f | %s |" % (core_name[c], o, name, n, mean, mx, st))
+    w("")
     w("## Inverse kinematics (`dh_ik_f32`, Puma 560 in metres)")
     w("")
     w("Per solve: target = `dh_fk_f32` of a random configuration within 80 % of the joint "
@@ -486,7 +577,7 @@ def main():
     w("* **micro:bit counter.** QEMU 7.2's `microbit` machine (nRF51, Cortex-M0) has the "
       "ARMv6-M SysTick on the 16 MHz system clock, so the same counter works there "
       "(62.5 instructions per tick, confirmed by the calibration); no nRF51 timer is "
-      "needed. Its 16 KiB of RAM hold the inputs with a 3 KiB stack reserve "
+      "needed. Its 16 KiB of RAM hold the inputs with a 2 KiB stack reserve "
       "(`bench/target/microbit_bench.ld`); the high-water mark is in the table above.")
     w("* **Re-running.** `tools/target_bench.sh [output.md]` rebuilds the firmware for "
       "every core at -O2, -Os and -Os with `DH_SMALL` (`Os-small`) in `build/tbench-<core>-<opt>/`, runs it and rewrites this "

@@ -3,7 +3,7 @@
 """Runs a firmware example (under QEMU) and checks its output against an
 independent double-precision computation with numpy.
 
-  check_output.py --robot ROBOT.dh --kind fixed|fixedkin|float [--qpos-frac N] -- CMD...
+  check_output.py --robot ROBOT.dh --kind fixed|fixedkin|fixedtrack|float [--qpos-frac N] -- CMD...
 
 The reference never uses the library: the robot is read from its .dh file
 (the published DH table), the FK is the product of standard DH link
@@ -36,6 +36,15 @@ IK_TOL_ROT = 1e-5
 IKC_Q_TOL_MM = 5e-3
 IKC_Q_TOL_RAD = 5e-6
 IKC_Q_TOL_DEG = 2e-3
+# dh_rot_error_q (include/dhmath/kin.h): within 6.3e-7 rad of the exact
+# rotation vector of the frames given
+ROT_ERROR_Q_TOL_RAD = 6.3e-7
+# fw_fixed_track: the UR5's joint speed (Universal Robots, UR5 technical
+# specification), every joint, and the control period
+TRACK_VMAX_DEG_S = 180.0
+TRACK_DT_US = 1000
+# its line passes within this distance of the singular configuration's position
+TRACK_SING_DIST_MM = 1.0
 # dh_frame_to_euler_q (include/dhmath/rot.h): 2e-5 deg (middle angle >= 1
 # deg from a pole) plus 1 LSB of Q16.16
 EULER_Q_TOL_DEG = 2e-5 + 1.0 / 65536.0
@@ -81,8 +90,11 @@ def zyx_deg(R):
 
 
 def rot_angle(Ra, Rb):
-    c = (np.trace(Ra.T @ Rb) - 1.0) / 2.0
-    return math.acos(max(-1.0, min(1.0, c)))
+    """Angle of Ra^T Rb: atan2 of its skew and symmetric parts (acos of the
+    trace alone loses the angles below about 1e-7 rad)."""
+    M = Ra.T @ Rb
+    s = math.sqrt((M[2, 1] - M[1, 2]) ** 2 + (M[0, 2] - M[2, 0]) ** 2 + (M[1, 0] - M[0, 1]) ** 2)
+    return math.atan2(s, np.trace(M) - 1.0)
 
 
 class Checker:
@@ -179,6 +191,100 @@ def check_fixed_kin(rows, lines, frac, c):
             tol_pos + 2.0 * FIXED_TOL_MM, tol_rot + 2.0 * fk_rad)
 
 
+def line_dist(a, b, p):
+    """Distance from point p to the segment a-b."""
+    ab, ap = b - a, p - a
+    t = max(0.0, min(1.0, float(ap @ ab) / float(ab @ ab)))
+    return float(np.linalg.norm(ap - t * ab))
+
+
+def check_fixed_track(rows, lines, frac, c):
+    """fw_fixed_track: every step within its bound (recomputed here from the
+    trace), every OK period within the tolerances of the double FK, the
+    line near the wrist singularity, the last target reached."""
+    one_pos, one_rot, one_deg = float(1 << frac), float(1 << 30), 65536.0
+    d, trace = {}, []
+    for key, vals in lines:
+        if key == 'k':
+            trace.append([int(v) for v in vals])
+        else:
+            d[key] = [int(v) for v in vals]
+    need = ['dt_us', 'vmax_q16', 'bound_q16', 'sing_q16', 'sing_p_qpos', 'line_r_q30', 'line_off_qpos',
+            'line_step_qpos', 'line_n', 'max_step_q16', 'periods', 'final']
+    missing = [k for k in need if k not in d]
+    c.true('every output line present (missing: %s)' % (missing or 'none'), not missing)
+    if missing or not trace:
+        return
+    n = len(rows)
+    c.true('control period %d us' % d['dt_us'][0], d['dt_us'][0] == TRACK_DT_US)
+    vmax_q = [int(round(TRACK_VMAX_DEG_S * one_deg))] * n
+    c.true('vmax %g deg/s on every joint (Q16.16 %s)' % (TRACK_VMAX_DEG_S, d['vmax_q16']), d['vmax_q16'] == vmax_q)
+    bound = [v * TRACK_DT_US // 1000000 for v in vmax_q]
+    c.true('step bound floor(vmax dt) = %s LSB (%.6f deg)' % (bound, bound[0] / one_deg), d['bound_q16'] == bound)
+    # the path: Ts = FK(QS), a line through Ts.p + off with Ts's rotation
+    qs = [v / one_deg for v in d['sing_q16']]
+    Ts = fk(rows, qs)
+    c.near('FK of the configuration near the singularity (mm)', [v / one_pos for v in d['sing_p_qpos']],
+           Ts[:3, 3], FIXED_TOL_MM)
+    R = np.array(d['line_r_q30'], float).reshape(3, 3) / one_rot
+    c.near('rotation of the targets (Q2.30 LSB)', R.reshape(9) * one_rot, Ts[:3, :3].reshape(9) * one_rot,
+           FIXED_TOL_Q30_LSB)
+    N = d['line_n'][0]
+    base = np.array(d['sing_p_qpos'], float) + np.array(d['line_off_qpos'], float)
+    step = np.array(d['line_step_qpos'], float)
+
+    def target(k):
+        return (base + (min(k, N) - N // 2) * step) / one_pos
+    q0 = list(qs)
+    q0[4] = 0.0
+    S = fk(rows, q0)
+    dist = line_dist(target(0), target(N), S[:3, 3])
+    c.true('joint 5 of QS %.3g deg from 0' % qs[4], abs(qs[4]) <= 0.5)
+    c.true('the line passes %.3f mm (<= %g) from the position of QS with joint 5 at 0 (the wrist '
+           'singularity), rotation %.3g deg from it' % (dist, TRACK_SING_DIST_MM,
+                                                         math.degrees(rot_angle(R, S[:3, :3]))),
+           dist <= TRACK_SING_DIST_MM)
+    # the trace: periods 0, 1, ... consecutive
+    c.true('periods numbered 0..%d in order' % (len(trace) - 1),
+           [t[0] for t in trace] == list(range(len(trace))))
+    c.true('the line\'s %d periods all run' % N, len(trace) >= N + 1)
+    qk = [[v for v in t[2:]] for t in trace]
+    steps = np.abs(np.diff(np.array(qk, dtype=np.int64), axis=0)).max(axis=0).tolist()
+    c.true('largest step per joint %s LSB = the printed %s' % (steps, d['max_step_q16']),
+           steps == d['max_step_q16'])
+    c.true('largest step %d LSB (%.6f deg) <= bound %d LSB (vmax dt)' % (max(steps), max(steps) / one_deg,
+                                                                        bound[0]),
+           all(s_ <= b for s_, b in zip(steps, bound)))
+    c.true('every configuration within the joint limits of the .dh file',
+           all(row['min'] <= v / one_deg <= row['max'] for q in qk for row, v in zip(rows, q)))
+    states = [t[1] for t in trace[1:]]
+    counts = [states.count(0), states.count(1), states.count(2)]
+    c.true('ok / lagging / unreachable periods %s = the printed %s' % (counts, d['periods'][:3]),
+           counts == d['periods'][:3])
+    q5min = min(abs(q[4]) for q in qk) / one_deg
+    c.true('joint 5 passes %.4f deg from 0 (<= |QS joint 5|)' % q5min, q5min <= abs(qs[4]))
+    pos_tol, rot_tol = d['final'][3] / one_pos, d['final'][4] / float(1 << 29)
+    fk_rad = 2.0 * FIXED_TOL_Q30_LSB / one_rot
+    worst_p = worst_r = 0.0
+    for k, (t, q) in enumerate(zip(trace, qk)):
+        if t[1] != 0:
+            continue
+        T = fk(rows, [v / one_deg for v in q])
+        worst_p = max(worst_p, float(np.linalg.norm(T[:3, 3] - target(k))))
+        worst_r = max(worst_r, rot_angle(R, T[:3, :3]))
+    c.true('every OK period reaches its target in double: position %.2e mm (tol %.2e), rotation %.2e rad '
+           '(tol %.2e)' % (worst_p, pos_tol + FIXED_TOL_MM, worst_r, rot_tol + fk_rad),
+           worst_p <= pos_tol + FIXED_TOL_MM and worst_r <= rot_tol + fk_rad)
+    # the end: the last target reached, the reported errors the double FK's
+    c.true('final state OK (got %d), the last period\'s' % d['final'][0],
+           d['final'][0] == 0 and trace[-1][1] == 0)
+    T = fk(rows, [v / one_deg for v in qk[-1]])
+    c.near('final position error (mm) against the double FK', [d['final'][1] / one_pos],
+           [float(np.linalg.norm(T[:3, 3] - target(len(trace) - 1)))], FIXED_TOL_MM + 1.0 / one_pos)
+    c.near('final rotation error (rad) against the double FK', [d['final'][2] / float(1 << 29)],
+           [rot_angle(R, T[:3, :3])], fk_rad + ROT_ERROR_Q_TOL_RAD + 1.0 / (1 << 29))
+
+
 def check_float(rows, lines, c):
     d = {}
     for key, vals in lines:
@@ -216,7 +322,7 @@ def check_float(rows, lines, c):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--robot', required=True)
-    ap.add_argument('--kind', choices=['fixed', 'fixedkin', 'float'], required=True)
+    ap.add_argument('--kind', choices=['fixed', 'fixedkin', 'fixedtrack', 'float'], required=True)
     ap.add_argument('--qpos-frac', type=int, default=16)
     ap.add_argument('cmd', nargs=argparse.REMAINDER)
     a = ap.parse_args()
@@ -235,6 +341,8 @@ def main():
         check_fixed(rows, lines, a.qpos_frac, c)
     elif a.kind == 'fixedkin':
         check_fixed_kin(rows, lines, a.qpos_frac, c)
+    elif a.kind == 'fixedtrack':
+        check_fixed_track(rows, lines, a.qpos_frac, c)
     else:
         check_float(rows, lines, c)
     print('%d of %d checks passed' % (c.checks - c.failures, c.checks))

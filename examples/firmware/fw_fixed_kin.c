@@ -17,7 +17,7 @@
  *   closed-form IK              dh_ikc_analyse_q once, dh_ikc_q per target
  *   numerical IK                dh_ik_q (workspace DH_IK_WORK_Q(6) words)
  * Output: raw fixed-point integers, written with an integer formatter
- * (printf would link newlib's floating-point conversion):
+ * (fw_print.c; printf would link newlib's floating-point conversion):
  *   q_q16 / p_qpos / r_q30     three FK configurations
  *   euler_zyx_q16: <a b c>     of the FK of the second configuration
  *   ikc_sol_q16: <6 values>    every closed-form solution for that pose
@@ -26,9 +26,8 @@
  * examples/firmware/check_output.py recomputes everything in double
  * precision from examples/robots/puma560_mm.dh.
  */
-#include <stdio.h>
-
 #include "dhmath/dhmath.h"
+#include "fw_print.h"
 
 /* Puma 560 in mm (examples/robots/puma560_mm.dh), generated into .rodata by
  * `dhmath gen examples/robots/puma560_mm.dh dhg_puma560_mm` at build time
@@ -47,35 +46,6 @@ static dh_robot robot;
 static int32_t work[DH_IK_WORK_Q(6u)];
 static dh_ikc_model_q model;
 static dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
-
-static void put_line(const char *key, const int32_t *v, unsigned n)
-{
-    char buf[16];
-    unsigned i;
-    fputs(key, stdout);
-    for (i = 0; i < n; i++) {
-        uint32_t u = v[i] < 0 ? 0u - (uint32_t)v[i] : (uint32_t)v[i];
-        int k = (int)sizeof buf - 1;
-        buf[k] = '\0';
-        do {
-            buf[--k] = (char)('0' + u % 10u);
-            u /= 10u;
-        } while (u != 0u);
-        if (v[i] < 0) buf[--k] = '-';
-        buf[--k] = ' ';
-        fputs(buf + k, stdout);
-    }
-    fputs("\n", stdout);
-}
-
-static int fail(const char *what, dh_status st)
-{
-    fputs(what, stdout);
-    fputs(": ", stdout);
-    fputs(dh_status_str(st), stdout);
-    fputs("\n", stdout);
-    return 1;
-}
 
 /* robot from the fixed-point fields of the table g, integer only */
 static dh_status build_robot(const dh_robot *g, dh_robot *r)
@@ -103,43 +73,43 @@ int main(void)
     uint32_t i, j, n_sol, best;
     dh_status st = build_robot(&dhg_puma560_mm, &robot);
 
-    if (st != DH_OK) return fail("build_robot", st);
+    if (st != DH_OK) return fw_fail("build_robot", st);
     for (i = 0; i < 3u; i++) {
         st = dh_fk_q(r, configs[i], &T);
-        if (st != DH_OK) return fail("dh_fk_q", st);
-        put_line("q_q16:", configs[i], 6u);
-        put_line("p_qpos:", T.p, 3u);
+        if (st != DH_OK) return fw_fail("dh_fk_q", st);
+        fw_put_line("q_q16:", configs[i], 6u);
+        fw_put_line("p_qpos:", T.p, 3u);
         for (j = 0; j < 9u; j++) v[j] = T.r[j % 3u][j / 3u];
-        put_line("r_q30:", v, 9u);
+        fw_put_line("r_q30:", v, 9u);
         if (i == 1u) target = T;
     }
 
     st = dh_frame_to_euler_q(&target, DH_EULER_ZYX, eul);
-    if (st != DH_OK) return fail("dh_frame_to_euler_q", st);
-    put_line("euler_zyx_q16:", eul, 3u);
+    if (st != DH_OK) return fw_fail("dh_frame_to_euler_q", st);
+    fw_put_line("euler_zyx_q16:", eul, 3u);
 
     st = dh_ikc_analyse_q(r, &model);
-    if (st != DH_OK) return fail("dh_ikc_analyse_q", st);
+    if (st != DH_OK) return fw_fail("dh_ikc_analyse_q", st);
     st = dh_ikc_q(&model, &target, NULL, 0u, sol, &n_sol);
-    if (st != DH_OK) return fail("dh_ikc_q", st);
-    for (i = 0; i < n_sol; i++) put_line("ikc_sol_q16:", sol[i].q, 6u);
+    if (st != DH_OK) return fw_fail("dh_ikc_q", st);
+    for (i = 0; i < n_sol; i++) fw_put_line("ikc_sol_q16:", sol[i].q, 6u);
     st = dh_ikc_nearest_q(sol, n_sol, configs[1], 6u, &best);
-    if (st != DH_OK) return fail("dh_ikc_nearest_q", st);
+    if (st != DH_OK) return fw_fail("dh_ikc_nearest_q", st);
     st32 = (int32_t)best;
-    put_line("ikc_nearest:", &st32, 1u);
+    fw_put_line("ikc_nearest:", &st32, 1u);
 
     /* numerical IK from 10 degrees off on every joint (a tracking step) */
     for (j = 0; j < 6u; j++) q[j] = configs[1][j] + DH_Q16(10.0);
-    put_line("ikq_start_q16:", q, 6u);
+    fw_put_line("ikq_start_q16:", q, 6u);
     dh_ik_params_default_q(r, &p);
     st = dh_ik_q(r, &target, q, &p, work, sizeof work / sizeof work[0], q, &res);
     st32 = (int32_t)st;
-    put_line("ikq_status:", &st32, 1u);
-    put_line("ikq_q16:", q, 6u);
+    fw_put_line("ikq_status:", &st32, 1u);
+    fw_put_line("ikq_q16:", q, 6u);
     st32 = (int32_t)res.iterations;
-    put_line("ikq_iter:", &st32, 1u);
+    fw_put_line("ikq_iter:", &st32, 1u);
     v[0] = p.tol_pos;
     v[1] = p.tol_rot;
-    put_line("ikq_tol:", v, 2u);
+    fw_put_line("ikq_tol:", v, 2u);
     return st == DH_OK ? 0 : 1;
 }

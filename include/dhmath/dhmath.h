@@ -19,6 +19,8 @@
 #include "dhmath/kin.h"
 #include "dhmath/rot.h"
 #include "dhmath/ikc.h"
+#include "dhmath/motion.h"
+#include "dhmath/track.h"
 
 /** Library major version: DH_VERSION_MAJOR (config.h, where the version is defined). */
 #define DHMATH_VERSION_MAJOR DH_VERSION_MAJOR

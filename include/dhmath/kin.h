@@ -7,6 +7,8 @@
  *   dh_pose_error_q.c  dh_rot_error_q
  *   dh_ik.c            dh_ik_params_default_f32, dh_ik_f32
  *   dh_ik_q.c          dh_ik_params_default_q, dh_ik_q
+ *   dh_dls.c           dh_manipulability_f32, dh_dls_step_f32
+ *   dh_dls_q.c         dh_manipulability_q, dh_dls_step_q
  */
 /**
  * @file kin.h
@@ -150,6 +152,56 @@ dh_status dh_jacobian_tool_q(const dh_robot *r, const int32_t *q, int32_t *J, dh
  */
 dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh_vec3_f32 *w);
 
+/**
+ * @brief Singularity measures of a Jacobian: manipulability w = sqrt(det(J
+ * J^T)) (Yoshikawa 1985; sqrt(det(J^T J)) when n < 6) and a lower bound on
+ * the smallest singular value of J (the 6th for n >= 6, the n-th for n < 6).
+ *
+ * J is 6 x n row-major as dh_jacobian_f32 writes it (per radian for
+ * revolute columns, so both measures mix the length unit and radians as
+ * J does). sigma_min <= the smallest singular value of the J given (exact
+ * arithmetic on the float entries) on every input, at most sqrt(m) (m = 6
+ * or n) times below it plus the float resolution: below about
+ * sqrt(32 * 2^-24 * |J|_F^2) it is reported as 0. Method: src/kin/dh_dls.c.
+ * @param J   6 * n finite floats.
+ * @param n   joints, 1..DH_MAX_JOINTS.
+ * @param w   manipulability (>= 0; 0 when J J^T is numerically singular),
+ *            or NULL.
+ * @param sigma_min lower bound (>= 0), or NULL.
+ * @return DH_OK; DH_ERR_ARG n out of range; DH_ERR_NAN an entry of J not
+ *         finite; DH_ERR_OVERFLOW J J^T or w overflows float. Outputs
+ *         untouched on error.
+ */
+dh_status dh_manipulability_f32(const float *J, uint32_t n, float *w, float *sigma_min);
+
+/**
+ * @brief One damped least-squares step (Wampler 1986): dq = J^T (J J^T +
+ * lambda^2 I)^-1 e, in joint units, scaled to per-joint bounds.
+ *
+ * The step that reduces |e - J dq| most for its size (resolved-rate
+ * control, and the step dh_track_step_f32 takes). The solution per radian
+ * is converted to degrees for revolute joints (prismatic: length unit);
+ * then, when dq_max is given, the whole vector is scaled down by one factor
+ * so that |dq[i]| <= dq_max[i] for every joint (the direction is kept; a
+ * bound of 0 stops every joint).
+ * @param r      robot (joint types, n = r->n in 1..DH_MAX_JOINTS).
+ * @param J      6 x n Jacobian as dh_jacobian_f32 (per radian).
+ * @param e      task error: e[0..2] position (length unit), e[3..5]
+ *               rotation vector (rad), as dh_pose_error_f32(target, FK(q)).
+ * @param lambda damping (length unit, >= 0, finite); 0 gives the
+ *               pseudo-inverse step (a lambda whose square underflows
+ *               float, < 1e-19, counts as 0).
+ * @param dq_max n bounds (>= 0, +inf allowed), or NULL for no scaling.
+ * @param dq     n outputs (may not overlap the inputs).
+ * @return DH_OK; DH_ERR_SINGULAR lambda is 0 and J J^T is singular within
+ *   float rounding (dq zeros); DH_ERR_OVERFLOW the step overflows float (dq
+ *   zeros, or untouched when J J^T itself overflows). With dq untouched:
+ *   DH_ERR_ARG (n, lambda < 0 or infinite, a dq_max entry < 0 or NaN),
+ *   DH_ERR_NAN (lambda, J or e not finite).
+ */
+dh_status dh_dls_step_f32(const dh_robot *r, const float *J, const float e[6], float lambda, const float *dq_max,
+                          float *dq);
+
 /** DH_ROT_ERROR_TOL in Q2.30 LSB (1e-3 2^30), for dh_rot_error_q. */
 #define DH_ROT_ERROR_TOL_Q 1073742
 
@@ -257,13 +309,13 @@ void dh_ik_params_default_f32(const dh_robot *r, dh_ik_params_f32 *p);
  * tolerance) and restarts from a deterministic pseudo-random configuration
  * (p->restarts, within p->max_iter steps); the best attempt is returned
  * (converged first, then lowest E). Same inputs, bitwise same outputs.
- * Reach bound: (sum of |a|, |d|, prismatic travel, |p_tool|) * base norm *
- * (1 + 1e-4) + tol_pos. Method: docs/design.md ("Kinematics").
- * @param r      robot (float path), 1..DH_MAX_JOINTS joints.
- * @param target end frame, bottom row exactly 0 0 0 1; rotation (read only
- *               when the mask drives it) within DH_ROT_ERROR_TOL, det > 0.
- * @param q0,p   start (n finite values); parameters.
- * @param work,work_len >= DH_IK_WORK_FLOATS(n) floats, overlapping nothing; clobbered.
+ * Restarts can return DH_OK far from q0 (continuous motion: track.h). Reach
+ * bound: (sum of |a|, |d|, prismatic travel, |p_tool|) * base norm * (1 +
+ * 1e-4) + tol_pos. Method: docs/design.md ("Kinematics").
+ * @param r,target robot (float path), 1..DH_MAX_JOINTS joints; end frame,
+ *               bottom row 0 0 0 1, driven rotation within DH_ROT_ERROR_TOL, det > 0.
+ * @param q0,p,work,work_len start (n finite values); parameters; >=
+ *               DH_IK_WORK_FLOATS(n) floats, overlapping nothing, clobbered.
  * @param q,res  result (may alias q0); iterations and errors of q.
  * @return for the returned q (within the limits; res describes it): DH_OK
  *   both tolerances met; DH_ERR_NO_CONVERGENCE max_iter cut off an attempt
@@ -348,6 +400,80 @@ void dh_ik_params_default_q(const dh_robot *r, dh_ik_params_q *p);
  */
 dh_status dh_ik_q(const dh_robot *r, const dh_frame_q *target, const int32_t *q0, const dh_ik_params_q *p,
                   int32_t *work, size_t work_len, int32_t *q, dh_ik_result_q *res);
+
+/* ---- singularity measures and damped least squares, fixed point ---------- */
+
+/** Scratch of dh_manipulability_q and dh_dls_step_q (caller-owned, 152
+ *  + 2 DH_MAX_JOINTS bytes on a 32-bit target, so that both stay within the
+ *  256-byte stack budget): the call's state and matrices; its contents are
+ *  unspecified between calls. */
+typedef struct {
+    int32_t L[21];  /**< equilibrated Gram matrix, then its factor (packed lower triangle) */
+    int32_t y[6];   /**< right-hand side and solution */
+    int16_t c[6];   /**< equilibration exponents */
+    int16_t ik[6];  /**< pivot reciprocal exponents */
+    int16_t ex[DH_MAX_JOINTS]; /**< exponents of the unscaled step */
+    const int32_t *J;          /**< the call's Jacobian */
+    const int32_t *dq_max;     /**< the call's step bounds (NULL: none) */
+    uint32_t pris;             /**< bit i: column i is prismatic */
+    uint8_t n;                 /**< columns of J */
+    uint8_t m;                 /**< Gram order: 6 (rows) or n (columns) */
+    uint8_t cols;              /**< 1: G = B^T B, 0: G = B B^T */
+    int16_t g[2];              /**< formats of the linear and angular rows */
+} dh_dls_work_q;
+
+/**
+ * @brief Singularity measures of a fixed-point Jacobian (integer only).
+ *
+ * J is dh_jacobian_q's (6 x n, row-major; a column whose angular rows are
+ * all 0 is read as prismatic: linear rows Q2.30, else revolute: linear
+ * rows dh_qpos per rad, angular rows Q2.30). G = J J^T for n >= 6, J^T J
+ * for n < 6, in J's units (length unit, rad).
+ * @param w  may be NULL; else log2 sqrt(det G), the manipulability's base-2
+ *           logarithm, in Q16.16 (a logarithm so that every robot and length
+ *           unit fits: a UR5 in mm has sqrt det G near 2^26), or INT32_MIN
+ *           when G is numerically singular (a pivot of the equilibrated G
+ *           below 2^-24). Error against double: docs/accuracy_kin.md,
+ *           test/kin/test_dls_q.c.
+ * @param sigma_min may be NULL; else a LOWER BOUND on the smallest singular
+ *           value of J in dh_qpos (DH_QPOS_FRAC fraction bits; saturated at
+ *           INT32_MAX), 0 near a singularity: 1 / sqrt(trace G^-1), at most
+ *           sqrt(6) (or sqrt(n)) below the true value, from a factor of the
+ *           equilibrated G lowered by 2^-21 of its diagonal, rounded down.
+ * @param work scratch (not NULL), overlapping nothing.
+ * @return DH_OK; DH_ERR_ARG for n == 0 or n > DH_MAX_JOINTS (outputs untouched).
+ */
+dh_status dh_manipulability_q(const int32_t *J, uint32_t n, dh_dls_work_q *work, int32_t *w, int32_t *sigma_min);
+
+/**
+ * @brief One damped-least-squares step, fixed point (integer only):
+ * dq = J^T (J J^T + lambda^2 I)^-1 e in joint units, scaled down uniformly
+ * so that |dq_i| <= dq_max[i].
+ *
+ * @param r      robot (fixed path); gives n and which columns are prismatic.
+ * @param J      dh_jacobian_q's Jacobian at the current configuration.
+ * @param e      pose error: e[0..2] position in dh_qpos, e[3..5] rotation
+ *               vector in Q3.29 rad (dh_rot_error_q's format), e.g. target
+ *               minus current.
+ * @param lambda damping, >= 0, in dh_qpos (the float step's lambda times
+ *               2^DH_QPOS_FRAC: the same number in the length unit / rad).
+ * @param dq_max NULL (no scaling) or n bounds >= 0 (dh_q16 deg / dh_qpos).
+ * @param work   scratch (not NULL), overlapping nothing.
+ * @param dq     n outputs: dh_q16 degrees (revolute), dh_qpos (prismatic).
+ *               With dq_max: every |dq_i| <= dq_max[i] exactly (the ratio
+ *               rounded down), the direction kept within 2^-29 relative.
+ *               Must not overlap the inputs.
+ * @return DH_OK; DH_ERR_ARG (n 0 or > DH_MAX_JOINTS, joint type, lambda < 0,
+ *         a dq_max entry < 0; dq untouched); DH_ERR_UNAVAILABLE (no fixed
+ *         path; dq untouched); DH_ERR_SINGULAR (lambda == 0 and J J^T
+ *         numerically singular: a pivot of the equilibrated matrix below
+ *         2^-24; dq zeros); DH_ERR_OVERFLOW (dq_max NULL and an entry
+ *         saturated at INT32_MIN / INT32_MAX with its sign; or the solve
+ *         could not be scaled into range, dq zeros).
+ *         Error against the exact step in double: test/kin/test_dls_q.c.
+ */
+dh_status dh_dls_step_q(const dh_robot *r, const int32_t *J, const int32_t e[6], int32_t lambda,
+                        const int32_t *dq_max, dh_dls_work_q *work, int32_t *dq);
 
 #ifdef __cplusplus
 }

@@ -2,10 +2,12 @@
 /*
  * Index: the functions of robot.h by source file (src/robot/).
  *   dh_robot.c    dh_robot_init, dh_robot_add_joint_f32,
- *                 dh_robot_set_limits_f32, dh_robot_set_base_f32,
+ *                 dh_robot_set_limits_f32, dh_robot_set_rates_f32,
+ *                 dh_robot_set_base_f32,
  *                 dh_robot_set_tool_f32, dh_robot_check_limits_f32,
  *                 dh_robot_check
  *   dh_robot_q.c  dh_robot_add_joint_q, dh_robot_set_limits_q,
+ *                 dh_robot_set_rates_q,
  *                 dh_robot_set_base_q, dh_robot_set_tool_q,
  *                 dh_robot_check_limits_q
  *   dh_fk_f32.c   dh_link_f32, dh_fk_f32, dh_fk_frames_f32
@@ -119,6 +121,10 @@ typedef struct {
     dh_q30 ca_q;                        /**< fixed-path cos(alpha) */
     int32_t qmin_q;                     /**< fixed-path lower limit (dh_q16 deg for R, dh_qpos for P) */
     int32_t qmax_q;                     /**< fixed-path upper limit; qmin_q > qmax_q = no limits */
+    float vmax;                         /**< velocity limit, deg/s (R) or length unit/s (P); +inf = unlimited */
+    float amax;                         /**< acceleration limit, deg/s^2 or length unit/s^2; +inf = unlimited */
+    int32_t vmax_q;                     /**< fixed-path velocity limit, dh_q16 deg/s or dh_qpos/s; INT32_MAX = unlimited */
+    int32_t amax_q;                     /**< fixed-path acceleration limit, dh_q16 deg/s^2 or dh_qpos/s^2; INT32_MAX = unlimited */
 } dh_joint;
 
 /** Robot description. Initialise with dh_robot_init(); caller owns it. */
@@ -204,6 +210,32 @@ dh_status dh_robot_set_limits_f32(dh_robot *r, uint32_t i, float qmin, float qma
 dh_status dh_robot_set_limits_q(dh_robot *r, uint32_t i, int32_t qmin, int32_t qmax);
 
 /**
+ * @brief Velocity and acceleration limits of joint i (0-based), both paths.
+ *
+ * vmax in deg/s (R) or length unit/s (P), amax in deg/s^2 or length
+ * unit/s^2; +inf means unlimited (the default of every joint). The
+ * tracker (track.h) keeps every joint within them. The fixed-path copies
+ * (vmax_q, amax_q: dh_q16 per s / s^2 for R, dh_qpos per s / s^2 for P)
+ * are the values rounded to nearest; +inf becomes INT32_MAX (unlimited); a
+ * finite value is stored as at least 1 LSB and at most INT32_MAX - 1 (a
+ * limit beyond the Q range is clamped, never made unlimited).
+ * @return DH_OK; DH_ERR_ARG when i >= n, n > DH_MAX_JOINTS or a value is
+ *         <= 0 (or -inf); DH_ERR_NAN for a NaN. On error r is untouched.
+ */
+dh_status dh_robot_set_rates_f32(dh_robot *r, uint32_t i, float vmax, float amax);
+/**
+ * @brief Velocity and acceleration limits of joint i from fixed-point values
+ *        (dh_q16 deg/s and deg/s^2 for R, dh_qpos per s and s^2 for P);
+ *        INT32_MAX means unlimited. Integer only: the float copies are
+ *        the values divided by 2^16 (R) or 2^DH_QPOS_FRAC (P), rounded to
+ *        nearest float (exact below 2^24 LSB) with INT32_MAX -> +inf, built
+ *        as bit patterns (no soft float is linked).
+ * @return DH_OK; DH_ERR_ARG when i >= n, n > DH_MAX_JOINTS or a value is
+ *         <= 0 (r untouched).
+ */
+dh_status dh_robot_set_rates_q(dh_robot *r, uint32_t i, int32_t vmax_q, int32_t amax_q);
+
+/**
  * @brief Base frame (pre-multiplies the chain), float.
  *
  * The bottom row must be exactly 0 0 0 1; the 3x3 part is used as given
@@ -263,8 +295,9 @@ dh_status dh_robot_check_limits_q(const dh_robot *r, const int32_t *q);
  *         DH_MAX_JOINTS or the type of a joint 0..n-1 is unknown;
  *         DH_ERR_INCONSISTENT when a derived field, a flag bit or the
  *         pairing of a float constant with its fixed copy is not what the
- *         setters leave (also for NaN/Inf float constants or limits, or a
- *         float base/tool with bottom row not 0 0 0 1).
+ *         setters leave (also for NaN/Inf float constants or limits, a
+ *         rate limit not > 0 or not paired with its fixed copy as a rate
+ *         setter leaves it, or a float base/tool with bottom row not 0 0 0 1).
  */
 dh_status dh_robot_check(const dh_robot *r);
 

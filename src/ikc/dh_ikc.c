@@ -270,10 +270,25 @@ static DH_NOINLINE dh_status ikc_finish(const dh_ikc_model_f32 *m, const float *
     return (out == 0u) ? DH_ERR_LIMIT : DH_OK;
 }
 
+dh_status dh_ikc_args_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, uint32_t opts)
+{
+    return ikc_args(m, T, q_ref, opts);
+}
+
+dh_status dh_ikc_finish_f32_(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t opts, dh_ikc_sol_f32 *sol,
+                             uint32_t *n_sol)
+{
+    uint32_t raw = *n_sol;
+    *n_sol = 0;
+    if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;
+    if (raw == 0u) return DH_ERR_UNREACHABLE;
+    return ikc_finish(m, q_ref, opts, sol, raw, n_sol);
+}
+
 dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const float *q_ref, uint32_t opts,
                      dh_ikc_sol_f32 *sol, uint32_t *n_sol)
 {
-    uint32_t raw = 0;
+    uint32_t raw;
     dh_status st;
     DH_ASSERT(m != NULL);
     DH_ASSERT(target != NULL);
@@ -282,12 +297,7 @@ dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const
     *n_sol = 0;
     st = ikc_args(m, target, q_ref, opts);
     if (st != DH_OK) return st;
-    switch (m->kind) {
-    case DH_IKC_WRIST_RRR:
-    case DH_IKC_WRIST_RRP: raw = dh_ikc_wrist_f32_(m, target, q_ref, sol); break;
-    case DH_IKC_PARALLEL_234: raw = dh_ikc_par234_f32_(m, target, q_ref, sol); break;
-    default: raw = dh_ikc_scara_f32_(m, target, q_ref, sol); break;
-    }
+    raw = dh_ikc_raw_f32_(m, target, q_ref, sol);
     if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;
     if (raw == 0u) return DH_ERR_UNREACHABLE;
     return ikc_finish(m, q_ref, opts, sol, raw, n_sol);

@@ -362,6 +362,25 @@ static DH_NOINLINE int ikcq_t06(const dh_ikc_model_q *m, const dh_frame_q *T, dh
     return ovf;
 }
 
+dh_status dh_ikc_args_q_(const dh_ikc_model_q *m, const dh_frame_q *target, uint32_t opts, dh_ikc_sol_q *sol)
+{
+    if (m->kind == DH_IKC_NONE) return DH_ERR_UNAVAILABLE;
+    if ((opts & ~DH_IKC_KEEP_OUT_OF_LIMITS) != 0u || !ikcq_model_ok(m)) return DH_ERR_ARG;
+    if (!ikcq_rigid(target)) return DH_ERR_NOT_RIGID;
+    return ikcq_t06(m, target, sol) ? DH_ERR_OVERFLOW : DH_OK;
+}
+
+dh_status dh_ikc_finish_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *n_sol)
+{
+    uint32_t raw = *n_sol;
+    *n_sol = 0;
+    if (raw == 0u) return DH_ERR_UNREACHABLE;
+    raw = ikcq_finish(m, q_ref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, raw);
+    if (raw == IKCQ_FINISH_OVF) return DH_ERR_OVERFLOW;
+    *n_sol = raw;
+    return raw != 0u ? DH_OK : DH_ERR_LIMIT;
+}
+
 dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int32_t *q_ref, uint32_t opts,
                    dh_ikc_sol_q *sol, uint32_t *n_sol)
 {
@@ -370,17 +389,10 @@ dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int3
 
     DH_ASSERT(m != NULL && target != NULL && sol != NULL && n_sol != NULL);
     *n_sol = 0;
-    if (m->kind == DH_IKC_NONE) return DH_ERR_UNAVAILABLE;
-    if ((opts & ~DH_IKC_KEEP_OUT_OF_LIMITS) != 0u || !ikcq_model_ok(m)) return DH_ERR_ARG;
-    if (!ikcq_rigid(target)) return DH_ERR_NOT_RIGID;
-    if (ikcq_t06(m, target, sol)) return DH_ERR_OVERFLOW;
+    st = dh_ikc_args_q_(m, target, opts, sol);
+    if (st != DH_OK) return st;
     /* the raw count goes through *n_sol (no addressable local here) */
-    if (m->kind == DH_IKC_PARALLEL_234)
-        st = dh_ikc_par234_q_(m, q_ref, sol, n_sol);
-    else if (m->kind == DH_IKC_SCARA)
-        st = dh_ikc_scara_q_(m, q_ref, sol, n_sol);
-    else
-        st = dh_ikc_wrist_q_(m, q_ref, sol, n_sol);
+    st = dh_ikc_raw_q_(m, q_ref, sol, n_sol);
     raw = *n_sol;
     *n_sol = 0;
     if (st != DH_OK) return st;

@@ -52,6 +52,26 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, con
                             dh_ikc_sol_f32 *sol);
 uint32_t dh_ikc_scara_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                            dh_ikc_sol_f32 *sol);
+/* dh_ikc_f32 in three calls (dh_ikc.c), for a caller that must not keep
+ * dh_ikc_f32's frame under its own (the tracker, src/track/): the
+ * argument checks (dh_ikc_f32's statuses before anything is written); the
+ * raw solutions of the model's solver into sol (their count, not yet
+ * clamped to DH_IKC_MAX_SOL; inline: no frame of its own); and the joint values,
+ * limits and count of dh_ikc_f32 from the raw count in *n_sol (*n_sol and
+ * status as dh_ikc_f32's). */
+dh_status dh_ikc_args_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, uint32_t opts);
+static inline uint32_t dh_ikc_raw_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
+                                       dh_ikc_sol_f32 *sol)
+{
+    switch (m->kind) {
+    case DH_IKC_WRIST_RRR:
+    case DH_IKC_WRIST_RRP: return dh_ikc_wrist_f32_(m, T, q_ref, sol);
+    case DH_IKC_PARALLEL_234: return dh_ikc_par234_f32_(m, T, q_ref, sol);
+    default: return dh_ikc_scara_f32_(m, T, q_ref, sol);
+    }
+}
+dh_status dh_ikc_finish_f32_(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t opts, dh_ikc_sol_f32 *sol,
+                             uint32_t *n_sol);
 
 /* ---- fixed, integer only (dh_ikc_wrist_q.c, dh_ikc_par234_q.c,
  * dh_ikc_scara_q.c; common helpers dh_ikc_common_q.c) ----
@@ -75,6 +95,23 @@ int dh_ikc_detect_scara_q_(dh_ikc_model_q *m);
 dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count);
 dh_status dh_ikc_par234_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count);
 dh_status dh_ikc_scara_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *count);
+
+/* dh_ikc_q in three calls, for a caller that must not keep dh_ikc_q's
+ * frame under its own (the tracker, src/track/): the argument checks and
+ * T06 into sol (dh_ikc_q's statuses before a solver runs; dh_ikc_q calls
+ * it too); the model's solver (inline: no frame of its own; the raw count
+ * in *count); and the joint values, limits and count of dh_ikc_q with
+ * DH_IKC_KEEP_OUT_OF_LIMITS from the raw count in *n_sol (*n_sol and
+ * status as dh_ikc_q's). */
+dh_status dh_ikc_args_q_(const dh_ikc_model_q *m, const dh_frame_q *target, uint32_t opts, dh_ikc_sol_q *sol);
+static inline dh_status dh_ikc_raw_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol,
+                                      uint32_t *count)
+{
+    if (m->kind == DH_IKC_PARALLEL_234) return dh_ikc_par234_q_(m, q_ref, sol, count);
+    if (m->kind == DH_IKC_SCARA) return dh_ikc_scara_q_(m, q_ref, sol, count);
+    return dh_ikc_wrist_q_(m, q_ref, sol, count);
+}
+dh_status dh_ikc_finish_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *n_sol);
 
 /* Shared fixed helpers (defined in dh_ikc_common_q.c). */
 #define DH_IKC_Q16_180 ((int32_t)11796480)

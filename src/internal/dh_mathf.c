@@ -13,12 +13,6 @@
 #include "dh_mathf.h"
 #include "dh_floatops.h"
 
-#define DH_MF_S1 (-0.16666654603f)
-#define DH_MF_S2 0.0083321603364f
-#define DH_MF_S3 (-1.9515224212e-4f)
-#define DH_MF_C1 0.041666645671f
-#define DH_MF_C2 (-0.0013887315639f)
-#define DH_MF_C3 2.4433085206e-5f
 #define DH_MF_T1 (-0.33333326912f)
 #define DH_MF_T2 0.19999488967f
 #define DH_MF_T3 (-0.14272060333f)
@@ -366,7 +360,7 @@ static DH_NOINLINE float mathf_reduce(uint32_t mag, uint32_t *quad)
 void dh_sincosf_(float x, float *s, float *c)
 {
     uint32_t xb, mag, q = 0u, sb, cb, swap;
-    float r, z, sp, cp;
+    float r, sp, cp;
 
     DH_ASSERT(s != NULL);
     DH_ASSERT(c != NULL);
@@ -382,9 +376,7 @@ void dh_sincosf_(float x, float *s, float *c)
     } else {
         r = mathf_reduce(mag, &q);
     }
-    z = r * r;
-    sp = r + r * (z * (DH_MF_S1 + z * (DH_MF_S2 + z * DH_MF_S3)));
-    cp = 1.0f - (0.5f * z - z * (z * (DH_MF_C1 + z * (DH_MF_C2 + z * DH_MF_C3))));
+    dh_sincosf_pio4_(r, &sp, &cp);
     /* quadrant q: (sin, cos) = (S, C), (C, -S), (-S, -C), (-C, S) */
     swap = q & 1u;
     sb = dh_f32_bits(swap ? cp : sp);

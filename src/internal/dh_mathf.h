@@ -12,6 +12,7 @@
 #define DHMATH_SRC_DH_MATHF_H
 
 #include "dhmath/common.h"
+#include "dh_build.h"
 
 /**
  * atan2f(y, x) in RADIANS without libm, with the C99 Annex F special cases
@@ -50,6 +51,27 @@ float dh_asinf_deg_(float v, unsigned want_acos);
  * bit.
  */
 void dh_sincosf_(float x, float *s, float *c);
+
+/* The minimax coefficients of sin and cos on [-pi/4, pi/4] (dh_mathf.c). */
+#define DH_MF_S1 (-0.16666654603f)
+#define DH_MF_S2 0.0083321603364f
+#define DH_MF_S3 (-1.9515224212e-4f)
+#define DH_MF_C1 0.041666645671f
+#define DH_MF_C2 (-0.0013887315639f)
+#define DH_MF_C3 2.4433085206e-5f
+
+/**
+ * sin r and cos r (RADIANS) for |r| <= pi/4 (a few ulp beyond is fine):
+ * the polynomials of dh_sincosf_ without its argument reduction, so a
+ * caller whose argument is known to be small has none of the reduction's
+ * stack.
+ */
+DH_INLINE void dh_sincosf_pio4_(float r, float *s, float *c)
+{
+    float z = r * r;
+    *s = r + r * (z * (DH_MF_S1 + z * (DH_MF_S2 + z * DH_MF_S3)));
+    *c = 1.0f - (0.5f * z - z * (z * (DH_MF_C1 + z * (DH_MF_C2 + z * DH_MF_C3))));
+}
 
 /* VSQRT.F32 (single-precision FPU) gives the bits of the integer version. */
 #if defined(__GNUC__) && defined(__arm__) && defined(__ARM_FP) && ((__ARM_FP & 4) != 0) && !defined(__SOFTFP__)

@@ -207,4 +207,21 @@ static inline uint32_t dh_q_udiv(uint32_t n, uint32_t d, unsigned frac)
     return (q >> 1) + (q & 1u);
 }
 
+/** floor(a 2^30 / b) for b > 0 and a < 2 b (result below 2^31): one
+ *  quotient bit per step, the remainder below 2 b in 64 bits. No division. */
+static inline uint32_t dh_q_ufloor30(uint32_t a, uint32_t b)
+{
+    uint64_t r = a;
+    uint32_t q = 0u, i;
+    for (i = 0u; i < 31u; i++) {
+        q <<= 1;
+        if (r >= b) {
+            r -= b;
+            q |= 1u;
+        }
+        r <<= 1;
+    }
+    return q;
+}
+
 #endif /* DHMATH_SRC_INTERNAL_DH_QMATH_H */

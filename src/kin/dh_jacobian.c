@@ -195,10 +195,11 @@ static DH_NOINLINE void jac_store(const float *F, dh_mat4_f32 *T_end)
     }
 }
 
-/* Shared body of the two public Jacobians (tool != 0: tool frame). */
-DH_INLINE dh_status jac_run(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end, int tool)
+/* Shared body of the Jacobians (tool != 0: tool frame); w: 15 floats of
+ * scratch (the end frame F, then one joint's sin, cos, d). */
+DH_INLINE dh_status jac_run(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end, int tool, float *w)
 {
-    float F[12], t[3];
+    float *const F = w, *const t = w + 12;
     uint32_t i;
     int fin;
     dh_status st;
@@ -224,10 +225,17 @@ DH_INLINE dh_status jac_run(const dh_robot *r, const float *q, float *J, dh_mat4
 
 dh_status dh_jacobian_f32(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end)
 {
-    return jac_run(r, q, J, T_end, 0);
+    float w[15];
+    return jac_run(r, q, J, T_end, 0, w);
 }
 
 dh_status dh_jacobian_tool_f32(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end)
 {
-    return jac_run(r, q, J, T_end, 1);
+    float w[15];
+    return jac_run(r, q, J, T_end, 1, w);
+}
+
+dh_status dh_kin_jacobian_f32_(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end, float *w)
+{
+    return jac_run(r, q, J, T_end, 0, w);
 }

@@ -139,7 +139,7 @@ static DH_NOINLINE int jacq_to_tool(const dh_frame_q *F, int32_t *J, uint32_t n)
 }
 
 /* Argument checks of the public Jacobians (nothing written). */
-static DH_NOINLINE dh_status jacq_check(const dh_robot *r)
+DH_NOINLINE dh_status dh_kin_jac_check_q_(const dh_robot *r)
 {
     uint32_t i, n = r->n;
     if (n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
@@ -238,7 +238,7 @@ DH_INLINE dh_status jacq_run(const dh_robot *r, const int32_t *q, int32_t *J, dh
     DH_ASSERT(q != NULL);
     DH_ASSERT(J != NULL);
 
-    st = jacq_check(r);
+    st = dh_kin_jac_check_q_(r);
     if (st != DH_OK) return st;
     ovf = jacq_body(r, q, J, &F);
     if (tool) ovf |= jacq_to_tool(&F, J, r->n);

@@ -80,7 +80,7 @@ static void pose_delta(const float *ct, const float *cr, uint32_t s, float *d)
  * rows 0..2 the rotation's columns, rows 3..nrow-1 (nrow 3 or 4) the
  * translation. DH_ERR_NAN when an entry is not finite, DH_ERR_NOT_RIGID
  * when a rotation is not one (within DH_ROT_ERROR_TOL), else DH_OK. */
-static dh_status pose_check(const float *a, const float *b, uint32_t s, uint32_t nrow)
+DH_INLINE dh_status pose_check(const float *a, const float *b, uint32_t s, uint32_t nrow)
 {
     uint32_t i, j;
     for (i = 0; i < nrow; i++)
@@ -110,20 +110,25 @@ dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh
     return DH_OK;
 }
 
-dh_status dh_pose_error_f32(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float e[6])
+/* The body of dh_pose_error_f32 with dR's scratch d[9] in the caller's
+ * memory (the tracker keeps it off the stack). */
+dh_status dh_kin_pose_error_f32_(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float *e, float *d)
 {
-    float d[9];
-    dh_status st;
     uint32_t i;
+    const dh_status st = pose_check(&T_target->m[0][0], &T->m[0][0], 4u, 4u);
 
-    DH_ASSERT(T_target != NULL);
-    DH_ASSERT(T != NULL);
-    DH_ASSERT(e != NULL);
-
-    st = pose_check(&T_target->m[0][0], &T->m[0][0], 4u, 4u);
     if (st != DH_OK) return st;
     pose_delta(&T_target->m[0][0], &T->m[0][0], 4u, d);
     dh_kin_rotvec_f32_(d, e + 3);
     for (i = 0; i < 3u; i++) e[i] = T_target->m[3][i] - T->m[3][i];
     return DH_OK;
+}
+
+dh_status dh_pose_error_f32(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float e[6])
+{
+    float d[9];
+    DH_ASSERT(T_target != NULL);
+    DH_ASSERT(T != NULL);
+    DH_ASSERT(e != NULL);
+    return dh_kin_pose_error_f32_(T_target, T, e, d);
 }

@@ -20,6 +20,24 @@
  * overlap. 1 when every entry of J and F is finite, else 0. */
 int dh_kin_jac_f32_(const dh_robot *r, const float *scd, float *J, float *F);
 
+/* dh_jacobian_f32 with its scratch in the caller's w (15 floats,
+ * overlapping nothing else): the tracker keeps it in its workspace. Same
+ * contract. */
+dh_status dh_kin_jacobian_f32_(const dh_robot *r, const float *q, float *J, dh_mat4_f32 *T_end, float *w);
+
+/* dh_manipulability_f32 and dh_dls_step_f32 with their matrices in the
+ * caller's ws (DH_DLS_WS_FLOATS floats, overlapping nothing): the
+ * tracker (src/track/) calls them on its state to stay within the stack
+ * budget. Same contracts. */
+#define DH_DLS_WS_FLOATS 27u
+dh_status dh_manipulability_ws_f32_(const float *J, uint32_t n, float *w, float *sigma_min, float *ws);
+dh_status dh_dls_step_ws_f32_(const dh_robot *r, const float *J, const float *e, float lambda, const float *dq_max,
+                              float *dq, float *ws);
+
+/* dh_pose_error_f32 with dR in the caller's d (9 floats, overlapping
+ * nothing): the tracker keeps it in its workspace. Same contract. */
+dh_status dh_kin_pose_error_f32_(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float *e, float *d);
+
 /* a(dR) of dh_rot_error_f32 for dR row-major, d[3 row + col], into w[0..2]
  * (d and w do not overlap). */
 void dh_kin_rotvec_f32_(const float *d, float *w);
@@ -32,6 +50,10 @@ int dh_kin_rot_ok_f32_(const float *c0, const float *c1, const float *c2);
  * frame F supplied by the caller; nonzero when an entry saturated. */
 int dh_kin_jac_q_(const dh_robot *r, const int32_t *q, int32_t *J, dh_frame_q *F);
 
+/* The argument checks of dh_jacobian_q (they depend on the robot alone):
+ * DH_OK, DH_ERR_ARG or DH_ERR_UNAVAILABLE as dh_jacobian_q returns them. */
+dh_status dh_kin_jac_check_q_(const dh_robot *r);
+
 /* dh_rot_error_q's body (dh_pose_error_q.c) without its rigidity checks (the
  * caller's): s->w = a(Rt R^T), Q3.29 rad; s->D (dR) and s->q scratch, in
  * the caller's memory (dh_ik_q keeps them off the stack: 19 words). */
@@ -41,5 +63,20 @@ typedef struct {
     int32_t q[4];
 } dh_kin_rot_scratch_q;
 void dh_kin_rot_error_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_kin_rot_scratch_q *s);
+/* dh_rot_error_q with its scratch D (dR) and q (4 words) in the caller's
+ * memory (the tracker's): same checks, status and w. */
+dh_status dh_kin_rot_error_chk_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_frame_q *D, dh_dir3_q *w,
+                                  int32_t *q);
+
+/* The bodies of dh_manipulability_q and dh_dls_step_q (dh_dls_q.c) on
+ * the state in c, for a caller that keeps c between calls (the tracker):
+ * dh_kin_manip_q_ reads c->J and c->n (1..DH_MAX_JOINTS); dh_kin_dls_q_
+ * reads c->J, c->n, c->dq_max and c->pris (dh_kin_pris_q_ of the robot)
+ * after dh_dls_step_q's argument checks (the caller's). Same results and
+ * statuses. */
+void dh_kin_manip_q_(dh_dls_work_q *c, int32_t *w, int32_t *sigma_min);
+dh_status dh_kin_dls_q_(dh_dls_work_q *c, const int32_t *e, int32_t lambda, int32_t *dq);
+/* bit i set when joint i of r is prismatic */
+uint32_t dh_kin_pris_q_(const dh_robot *r);
 
 #endif /* DHMATH_SRC_KIN_IMPL_H */

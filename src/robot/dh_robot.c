@@ -157,6 +157,46 @@ dh_status dh_robot_set_limits_f32(dh_robot *r, uint32_t i, float qmin, float qma
     return DH_OK;
 }
 
+/* The fixed copy of a valid float rate limit x (> 0, not NaN) as
+ * dh_robot_set_rates_f32 stores it: +inf -> INT32_MAX (unlimited), else
+ * rounded to nearest and clamped to [1, INT32_MAX - 1]. */
+static int32_t robot_rate_q(float x, unsigned frac)
+{
+    int32_t v = INT32_MAX - 1;
+    if (dh_f32_bits(x) == 0x7F800000u) return INT32_MAX;
+    if (dh_robot_f32_to_fix_(x, frac, &v) != 0u) return INT32_MAX - 1;
+    if (v == INT32_MAX) v = INT32_MAX - 1;
+    return (v < 1) ? 1 : v;
+}
+
+dh_status dh_robot_set_rates_f32(dh_robot *r, uint32_t i, float vmax, float amax)
+{
+    dh_joint *j;
+    unsigned frac;
+    DH_ASSERT(r != NULL);
+    if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    if (vmax != vmax || amax != amax) return DH_ERR_NAN;
+    if (!(vmax > 0.0f) || !(amax > 0.0f)) return DH_ERR_ARG;
+    j = &r->joint[i];
+    frac = (j->type == DH_JOINT_REVOLUTE) ? 16u : (unsigned)DH_QPOS_FRAC;
+    j->vmax = vmax;
+    j->amax = amax;
+    j->vmax_q = robot_rate_q(vmax, frac);
+    j->amax_q = robot_rate_q(amax, frac);
+    return DH_OK;
+}
+
+/* 0 when a rate limit pair is what one of the setters leaves: the float
+ * one > 0 (+inf allowed, no NaN), the fixed one > 0, and either the fixed
+ * one is the float one converted (dh_robot_set_rates_f32) or the float one
+ * is the fixed one converted (dh_robot_set_rates_q). */
+static unsigned robot_check_rate(float x, int32_t xq, unsigned frac)
+{
+    if (!(x > 0.0f) || xq <= 0) return 1u;
+    if (robot_rate_q(x, frac) == xq) return 0u;
+    return (dh_robot_rate_bits_(xq, frac) == dh_f32_bits(x)) ? 0u : 1u;
+}
+
 dh_status dh_robot_check_limits_f32(const dh_robot *r, const float *q)
 {
     uint32_t i;
@@ -187,6 +227,8 @@ dh_status dh_robot_check_limits_f32(const dh_robot *r, const float *q)
  *     then DH_ROBOT_F32_NO_JOINT is set). Each of those two bits is set
  *     only when a joint of its kind exists. Limits are independent fields
  *     (dh_robot_set_limits_q sets the fixed ones alone): only finiteness.
+ *     Rate limits: each pair as one of the rate setters leaves it (see
+ *     robot_check_rate).
  *   base and tool: see robot_check_frame.
  *   flags: no unknown bit, the summary bits as dh_robot_flags_ makes them. */
 
@@ -248,6 +290,11 @@ static DH_NOINLINE unsigned robot_check_joint(const dh_joint *j, uint32_t *need,
     zq = (uint32_t)j->a_q | (uint32_t)j->d_q | (uint32_t)j->alpha_q | (uint32_t)j->theta_q;
     (void)dh_sincos_f32(j->alpha_deg, &sa, &ca);
     dh_sincos_q(j->alpha_q, &sq, &cq);
+    {
+        const unsigned frac = (j->type == DH_JOINT_REVOLUTE) ? 16u : (unsigned)DH_QPOS_FRAC;
+        if ((robot_check_rate(j->vmax, j->vmax_q, frac) | robot_check_rate(j->amax, j->amax_q, frac)) != 0u)
+            return 1u;
+    }
     if (dh_f32_bits(sa) != dh_f32_bits(j->sa) || dh_f32_bits(ca) != dh_f32_bits(j->ca) || sq != j->sa_q ||
         cq != j->ca_q)
         return 1u;

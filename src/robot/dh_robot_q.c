@@ -14,6 +14,7 @@
 /* Bit patterns of float constants, stored as integers: no float
  * arithmetic. */
 #define DH_F32_BITS_ONE 0x3F800000u
+#define DH_F32_BITS_INF 0x7F800000u
 
 static void robotq_put_f32_bits(float *dst, uint32_t bits)
 {
@@ -70,6 +71,10 @@ dh_status dh_robot_add_joint_q(dh_robot *r, dh_joint_type type, dh_q16 theta_deg
     robotq_put_f32_bits(&j->qmax, 0u);
     robotq_put_f32_bits(&j->sa, 0u);
     robotq_put_f32_bits(&j->ca, DH_F32_BITS_ONE);
+    j->vmax_q = INT32_MAX;
+    j->amax_q = INT32_MAX;
+    robotq_put_f32_bits(&j->vmax, DH_F32_BITS_INF);
+    robotq_put_f32_bits(&j->amax, DH_F32_BITS_INF);
     r->n++;
     dh_robot_flags_(r, 0u, DH_ROBOT_F32_NO_JOINT);
     return DH_OK;
@@ -81,6 +86,45 @@ dh_status dh_robot_set_limits_q(dh_robot *r, uint32_t i, int32_t qmin, int32_t q
     if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS || qmin > qmax) return DH_ERR_ARG;
     r->joint[i].qmin_q = qmin;
     r->joint[i].qmax_q = qmax;
+    return DH_OK;
+}
+
+/* The float bits of v / 2^frac (v > 0, frac 0..30), rounded to nearest,
+ * ties to even; INT32_MAX gives +inf. Integer only: the leading bit at p
+ * gives the exponent p - frac (normal for every v and frac here), the 23
+ * bits below it the mantissa; a carry out of the rounding moves into the
+ * exponent field by the addition itself. */
+uint32_t dh_robot_rate_bits_(int32_t v, unsigned frac)
+{
+    uint32_t u = (uint32_t)v, m, bits;
+    unsigned p = 0u;
+    if (v == INT32_MAX) return DH_F32_BITS_INF;
+    while ((u >> p) > 1u) p++;
+    if (p <= 23u) {
+        m = u << (23u - p);
+    } else {
+        const unsigned sh = p - 23u;
+        const uint32_t rest = u & ((1u << sh) - 1u), half = 1u << (sh - 1u);
+        m = u >> sh;
+        if (rest > half || (rest == half && (m & 1u) != 0u)) m++;
+    }
+    /* m holds the leading 1 at bit 23 (or 1 << 24 after a carry) */
+    bits = ((uint32_t)(p + 127u - frac - 1u) << 23) + m;
+    return bits;
+}
+
+dh_status dh_robot_set_rates_q(dh_robot *r, uint32_t i, int32_t vmax_q, int32_t amax_q)
+{
+    dh_joint *j;
+    unsigned frac;
+    DH_ASSERT(r != NULL);
+    if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS || vmax_q <= 0 || amax_q <= 0) return DH_ERR_ARG;
+    j = &r->joint[i];
+    frac = (j->type == DH_JOINT_REVOLUTE) ? 16u : (unsigned)DH_QPOS_FRAC;
+    j->vmax_q = vmax_q;
+    j->amax_q = amax_q;
+    robotq_put_f32_bits(&j->vmax, dh_robot_rate_bits_(vmax_q, frac));
+    robotq_put_f32_bits(&j->amax, dh_robot_rate_bits_(amax_q, frac));
     return DH_OK;
 }
 

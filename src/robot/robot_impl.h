@@ -32,6 +32,10 @@ static inline uint32_t dh_robot_summary_(uint32_t flags)
  * DH_ROBOT_HAS_F32 / DH_ROBOT_HAS_Q recomputed from the reason bits. */
 void dh_robot_flags_(dh_robot *r, uint32_t clear, uint32_t set);
 
+/* Float bits of a fixed rate limit v > 0 with frac fraction bits, as
+ * dh_robot_set_rates_q stores it (INT32_MAX: +inf). Integer only. */
+uint32_t dh_robot_rate_bits_(int32_t v, unsigned frac);
+
 /* dh_robot_set_base_q (which 0) and dh_robot_set_tool_q (which 1). */
 dh_status dh_robot_frame_q_(dh_robot *r, const dh_frame_q *src, unsigned which);
 

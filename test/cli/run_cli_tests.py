@@ -522,6 +522,9 @@ RF_ERRORS = [
     ('# only a comment\n', r'NAME:1: no .joint. lines'),
     ('', r'NAME:1: no .joint. lines'),
     ('joint R a=1\x00\n', r'NAME:1:11: joint: bad number .1\\x00.'),
+    ('joint R vmax=0\n', r'NAME:1:14: joint: .vmax. must be greater than 0'),
+    ('joint R vmax=10 amax=-5\n', r'NAME:1:22: joint: .amax. must be greater than 0'),
+    ('joint R vmax=1 vmax=2\n', r'NAME:1:16: joint: duplicate key .vmax.'),
 ]
 
 
@@ -584,6 +587,23 @@ def group_robotfile(seed, tmp):
         want = pat.replace('NAME', re.escape(path))
         check(rc == 2 and out == '' and re.search(want, err) is not None,
               'robot file %r: rc %d out %r err %r (want %r)' % (text, rc, out, err, want))
+    # rate limits: vmax=/amax= reach the robot (dhmath gen writes every
+    # field: the float value, its Q16.16 / dh_qpos copy, unlimited as
+    # INFINITY / INT32_MAX)
+    path = os.path.join(tmp, 'rates.dh')
+    with open(path, 'w') as f:
+        f.write('joint R a=0.5 vmax=180 amax=720\njoint P vmax=0.25\n')
+    rc, out, err = run(['gen', path, 'rates'])
+    check(rc == 0, 'gen with rates: rc %d %r' % (rc, err))
+    joints = re.findall(r'\[(\d)\] = \{ \.type(.*?)\}', out, re.S)
+    check(len(joints) == 2, 'gen with rates: %d joints' % len(joints))
+    if len(joints) == 2:
+        j1, j2 = joints[0][1], joints[1][1]
+        check('.vmax = 0x1.68p+7f' in j1 and '.amax = 0x1.68p+9f' in j1 and
+              '.vmax_q = %d' % (180 * 65536) in j1 and '.amax_q = %d' % (720 * 65536) in j1,
+              'gen joint 1 rates: %r' % j1)
+        check('.vmax = 0x1p-2f' in j2 and '.amax = INFINITY' in j2 and '.amax_q = 2147483647' in j2,
+              'gen joint 2 rates: %r' % j2)
     path = os.path.join(tmp, 'missing.dh')
     rc, out, err = run(['fk', path, '0'])
     check(rc == 2 and out == '' and 'cannot open' in err, 'missing robot file: %r' % err)
@@ -1264,6 +1284,163 @@ def target_of_puma(q1):
     return to_expr(ref_fk(rob, [q1, -30, 40, 10, 30, 20]))
 
 
+def group_track_fixed(seed, tmp):
+    """dhmath track --fixed on the UR5 in mm: every step within vmax dt
+    (the fixed bound floor(vmax 2^16 dt_us / 10^6) LSB, printed exactly by
+    %.9g), OK only when the double FK of the printed joints is within the
+    fixed tolerances (2^-19 L, 2e-5 rad) plus the rounding of the printed
+    target, a jump approached without a jump, the period's errors."""
+    rng = random.Random(seed)
+    ur5 = os.path.join(ROOT, 'examples', 'robots', 'ur5_mm.dh')
+    rob = read_robot(open(ur5).read())
+    n = len(rob['joints'])
+    dt, vmax = 0.001, 180.0
+    bound = math.floor(vmax * 65536 * 1000 / 1e6) / 65536.0
+    qa = [10.0, -60.0, 70.0, 20.0, 40.0, 30.0]
+    qb = [q + rng.uniform(-20.0, 20.0) for q in qa]
+    steps = 400
+    targets = []
+    for k in range(1, steps + 1):
+        s = 0.5 - 0.5 * math.cos(math.pi * k / steps)
+        targets.append(to_expr(ref_fk(rob, [a + (b - a) * s for a, b in zip(qa, qb)])))
+    targets += [to_expr(ref_fk(rob, [q + 20.0 for q in qb]))] * 300
+    rc, out, err = run(['track', ur5, '--fixed', '--q0', ','.join('%.9g' % v for v in qa), '--dt', str(dt),
+                        '--vmax', str(vmax)], stdin=('\n'.join(targets) + '\n').encode())
+    check(rc == 0 and err == '', 'track --fixed ur5_mm: rc %d err %r' % (rc, err))
+    lines = out.strip('\n').split('\n') if out else []
+    check(len(lines) == len(targets), 'track --fixed: %d lines for %d targets' % (len(lines), len(targets)))
+    prev = [round(q * 65536) / 65536.0 for q in qa]
+    worst, words = 0.0, []
+    for k, (line, tgt) in enumerate(zip(lines, targets)):
+        tok = line.split()
+        check(len(tok) == n + 3 and tok[n] in ('ok', 'lagging', 'unreachable'), 'track --fixed line %d: %r' %
+              (k + 1, line))
+        if len(tok) != n + 3:
+            continue
+        q = [float(x) for x in tok[:n]]
+        words.append(tok[n])
+        step = max(abs(a - b) for a, b in zip(q, prev))
+        worst = max(worst, step)
+        check(step <= bound + 1e-12, 'track --fixed line %d: step %.9g beyond %.9g' % (k + 1, step, bound))
+        if tok[n] == 'ok':
+            T = ref_fk(rob, q)
+            R = ref_expr(tgt)
+            pe = math.sqrt(sum((T[i][3] - R[i][3]) ** 2 for i in range(3)))
+            # pos_tol (2^-19 L, L about 1.7e3 mm: 3.3e-3 mm) plus the fixed
+            # FK error and the Q16.16 rounding of the target (1e-4 mm)
+            check(pe <= 5e-3, 'track --fixed line %d: ok with position error %.3g mm' % (k + 1, pe))
+        prev = q
+    check(all(w == 'ok' for w in words[:steps]), 'track --fixed: the slow path not ok on every line: %r' %
+          [i for i, w in enumerate(words[:steps]) if w != 'ok'][:5])
+    check('lagging' in words[steps:steps + 5] and words[-1] == 'ok', 'track --fixed: the jump %r' %
+          words[steps:steps + 5])
+    first = steps + words[steps:].index('ok') if 'ok' in words[steps:] else -1
+    check(0 < first - steps <= 114, 'track --fixed: jump reached after %d lines' % (first - steps))
+    print('track --fixed: %d targets, largest step %.9g deg (bound %.9g), jump reached after %d lines' %
+          (len(lines), worst, bound, first - steps))
+    one = targets[0] + '\n'
+    for args, want in ((['--dt', '0.0000005'], 'whole number of microseconds'),
+                       (['--dt', '2'], 'whole number of microseconds')):
+        rc, out, err = run(['track', ur5, '--fixed', '--q0', ','.join(map(str, qa)), '--vmax', '180'] + args,
+                           stdin=one.encode())
+        check(rc == 2 and out == '' and want in err, 'track --fixed %r: rc %d out %r err %r' % (args, rc, out, err))
+
+
+def group_track(seed, tmp):
+    """dhmath track: the step bound, OK only when reached (double FK here),
+    a jump approached without a jump, --vmax forms, errors."""
+    rng = random.Random(seed)
+    ur5 = os.path.join(ROOT, 'examples', 'robots', 'ur5.dh')
+    rob = read_robot(open(ur5).read())
+    n = len(rob['joints'])
+    dt, vmax = 0.001, 180.0
+    qa = [10.0, -60.0, 70.0, 20.0, 40.0, 30.0]
+    qb = [q + rng.uniform(-20.0, 20.0) for q in qa]
+    steps = 400  # peak rate pi/2 * 20 deg / 0.4 s = 79 deg/s < vmax / 2
+    targets, qs = [], []
+    for k in range(1, steps + 1):
+        s = 0.5 - 0.5 * math.cos(math.pi * k / steps)
+        q = [a + (b - a) * s for a, b in zip(qa, qb)]
+        qs.append(q)
+        targets.append(to_expr(ref_fk(rob, q)))
+    # a jump: 30 more lines at a pose 20 deg away on every joint
+    qj = [q + 20.0 for q in qb]
+    targets += [to_expr(ref_fk(rob, qj))] * 300
+    rc, out, err = run(['track', ur5, '--q0', ','.join('%.9g' % v for v in qa), '--dt', str(dt), '--vmax',
+                        str(vmax)], stdin=('\n'.join(targets) + '\n').encode())
+    check(rc == 0 and err == '', 'track ur5: rc %d err %r' % (rc, err))
+    lines = out.strip('\n').split('\n') if out else []
+    check(len(lines) == len(targets), 'track: %d lines for %d targets' % (len(lines), len(targets)))
+    prev, worst, words = qa, 0.0, []
+    for k, (line, tgt) in enumerate(zip(lines, targets)):
+        tok = line.split()
+        check(len(tok) == n + 3 and tok[n] in ('ok', 'lagging', 'unreachable'), 'track line %d: %r' % (k + 1, line))
+        if len(tok) != n + 3:
+            continue
+        q = [float(x) for x in tok[:n]]
+        words.append(tok[n])
+        step = max(abs(a - b) for a, b in zip(q, prev))
+        worst = max(worst, step)
+        # the bound is vmax dt; %.9g of a float reads back exactly
+        check(step <= vmax * dt, 'track line %d: step %.9g beyond %.9g' % (k + 1, step, vmax * dt))
+        T = ref_fk(rob, q)
+        R = ref_expr(tgt)
+        pe = math.sqrt(sum((T[i][3] - R[i][3]) ** 2 for i in range(3)))
+        if tok[n] == 'ok':
+            # 2e-6 L (L about 1.3 m) plus the float FK error
+            check(pe <= 5e-6, 'track line %d: ok with position error %.3g' % (k + 1, pe))
+        check(abs(float(tok[n + 1]) - pe) <= 1e-6 + 1e-5 * pe, 'track line %d: reported %s, true %.3g' %
+              (k + 1, tok[n + 1], pe))
+        prev = q
+    check(all(w == 'ok' for w in words[:steps]), 'track: the slow path not ok on every line: %r' %
+          [i for i, w in enumerate(words[:steps]) if w != 'ok'][:5])
+    check('lagging' in words[steps:steps + 5] and words[-1] == 'ok', 'track: the jump %r' % words[steps:steps + 5])
+    # 20 deg at 0.18 deg per period: about 112 periods, ok from then on
+    first = steps + words[steps:].index('ok') if 'ok' in words[steps:] else -1
+    check(0 < first - steps <= 114, 'track: jump reached after %d lines' % (first - steps))
+    print('track: %d targets, largest step %.6g deg (bound %.6g), jump reached after %d lines' %
+          (len(lines), worst, vmax * dt, first - steps))
+    # --vmax forms: n values; from the robot file; neither
+    one = targets[0] + '\n'
+    rc, out, err = run(['track', ur5, '--q0', ','.join(map(str, qa)), '--dt', '0.001', '--vmax',
+                        '180,180,180,90,90,90'], stdin=one.encode())
+    check(rc == 0 and len(out.split()) == n + 3, 'track --vmax list: rc %d %r %r' % (rc, out, err))
+    path = os.path.join(tmp, 'ur5_rates.dh')
+    with open(path, 'w') as f:
+        f.write(open(ur5).read().replace('min=', 'vmax=180 min='))
+    rc, out, err = run(['track', path, '--q0', ','.join(map(str, qa)), '--dt', '0.001'], stdin=one.encode())
+    check(rc == 0 and out.split()[n] == 'ok', 'track with vmax= in the robot file: rc %d %r %r' % (rc, out, err))
+    rc, out, err = run(['track', ur5, '--q0', ','.join(map(str, qa)), '--dt', '0.001'], stdin=one.encode())
+    check(rc == 2 and out == '' and 'no --vmax' in err, 'track without vmax: rc %d %r' % (rc, err))
+    # the Panda (no closed form): damped steps
+    panda = os.path.join(ROOT, 'examples', 'robots', 'panda.dh')
+    prob = read_robot(open(panda).read())
+    pq = [0.0, -30.0, 0.0, -120.0, 0.0, 90.0, 45.0]
+    pt = to_expr(ref_fk(prob, [v + 0.05 for v in pq]))
+    rc, out, err = run(['track', panda, '--q0', ','.join(map(str, pq)), '--dt', '0.001', '--vmax', '150'],
+                       stdin=((pt + '\n') * 20).encode())
+    plines = out.strip('\n').split('\n') if rc == 0 else []
+    check(rc == 0 and len(plines) == 20 and plines[-1].split()[7] == 'ok', 'track panda: rc %d %r %r' %
+          (rc, out[-200:], err))
+    # errors: exit 2, nothing on stdout, the line named
+    good = ','.join(map(str, qa))
+    bad_cases = [
+        (['--q0', good, '--dt', '0.001', '--vmax', '180'], one + one + 'rotx(30) rotw(2)\n', 'line 3: column 10'),
+        (['--q0', good, '--dt', '0.001', '--vmax', '180'], one + 'scale(2,1,1)\n', 'line 2: target not rigid'),
+        (['--q0', good, '--dt', '0', '--vmax', '180'], one, '--dt'),
+        (['--q0', good, '--dt', '0.001', '--vmax', '-5'], one, 'greater than 0'),
+        (['--q0', good, '--dt', '0.001', '--vmax', '1,2'], one, 'expected 6 values'),
+        (['--q0', '10,20', '--dt', '0.001', '--vmax', '180'], one, 'expected 6 values'),
+        (['--q0', '10,-60,70,20,40,400', '--dt', '0.001', '--vmax', '180'], one, 'outside its limits'),
+        (['--dt', '0.001', '--vmax', '180'], one, 'needs --q0'),
+        (['--q0', good, '--vmax', '180'], one, 'needs --dt'),
+    ]
+    for args, stdin, want in bad_cases:
+        rc, out, err = run(['track', ur5] + args, stdin=stdin.encode())
+        check(rc == 2 and out == '' and want in err, 'track %r: rc %d out %r err %r (want %r)' %
+              (args, rc, out[:80], err, want))
+
+
 def main():
     global EXE, ROOT
     if len(sys.argv) < 4:
@@ -1272,31 +1449,24 @@ def main():
     EXE, ROOT, group = sys.argv[1], sys.argv[2], sys.argv[3]
     seed = int(sys.argv[5]) if len(sys.argv) > 5 and sys.argv[4] == '--seed' else 20261124
     with tempfile.TemporaryDirectory() as tmp:
-        if group == 'seed':
-            group_seed()
-        elif group == 'errors':
-            group_errors()
-        elif group == 'random':
-            group_random(seed)
-        elif group == 'robotfile':
-            group_robotfile(seed, tmp)
-        elif group == 'examples':
-            group_examples()
-        elif group == 'rot':
-            group_rot(seed)
-        elif group == 'fixed':
-            group_fixed(seed, tmp)
-        elif group == 'help':
-            group_help()
-        elif group == 'numbers':
-            group_numbers()
-        elif group == 'messages':
-            group_messages(tmp)
-        elif group == 'ikc':
-            group_ikc(seed, tmp)
-        else:
+        groups = {
+            'seed': group_seed,
+            'errors': group_errors,
+            'random': lambda: group_random(seed),
+            'robotfile': lambda: group_robotfile(seed, tmp),
+            'examples': group_examples,
+            'rot': lambda: group_rot(seed),
+            'fixed': lambda: group_fixed(seed, tmp),
+            'help': group_help,
+            'numbers': group_numbers,
+            'messages': lambda: group_messages(tmp),
+            'ikc': lambda: group_ikc(seed, tmp),
+            'track': lambda: (group_track(seed, tmp), group_track_fixed(seed, tmp)),
+        }
+        if group not in groups:
             print('unknown group', group)
             return 2
+        groups[group]()
     print('%s: %d checks, %d failures' % (group, CHECKS[0], len(FAILS)))
     return 1 if FAILS else 0
 

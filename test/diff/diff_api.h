@@ -178,6 +178,8 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_robot_add_joint_q, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
     X(dh_robot_set_limits_f32, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
     X(dh_robot_set_limits_q, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
+    X(dh_robot_set_rates_f32, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
+    X(dh_robot_set_rates_q, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
     X(dh_robot_set_base_f32, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
     X(dh_robot_set_tool_f32, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
     X(dh_robot_set_base_q, g_setter, 1000000, DIFF_OUT_ALL, C_BITS) \
@@ -194,6 +196,8 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_jacobian_f32, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_jacobian_tool_f32, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_rot_error_f32, g_rot, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_manipulability_f32, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_dls_step_f32, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_jacobian_q, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_jacobian_tool_q, g_robot, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_rot_error_q, g_frames, 1000000, DIFF_OUT_FRAMES, C_BITS) \
@@ -213,7 +217,23 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_ikc_nearest_f32, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_ikc_nearest_q, g_ikc, DIFF_IKC_COUNT, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_ik_params_default_q, g_robot, 1000000, DIFF_OUT_SMALL, C_BITS) \
-    X(dh_ik_q, g_ikq, DIFF_IKQ_COUNT, DIFF_OUT_FRAMES, C_BITS)
+    X(dh_ik_q, g_ikq, DIFF_IKQ_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_slerp_f32, g_slerp, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_pose_interp_f32, g_pose, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_pose_angle_f32, g_pose, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_profile_trap_f32, g_motion, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_profile_scurve_f32, g_motion, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_profile_quintic_f32, g_motion, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_profile_stretch_f32, g_motion, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_profile_eval_f32, g_motion, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_joint_move_f32, g_motion, 1000000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_joint_move_eval_f32, g_motion, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_track_init_f32, g_robot, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_track_step_f32, g_robot, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_manipulability_q, g_robot, 100000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_dls_step_q, g_robot, 100000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_track_init_q, g_robot, 100000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_track_step_q, g_robot, 20000, DIFF_OUT_FRAMES, C_BITS)
 
 /* enum of the table rows */
 #define DIFF_ENUM(name, gen, count, len, cmp) E_##name,

@@ -757,6 +757,63 @@ static void g_ikq(diff_in *in)
 
 /* closed-form IK: a target from FK of a random configuration (a singular
  * wrist at times), else a random matrix; q_ref near it or arbitrary */
+/* motion.h: a path parameter, a positive limit of any scale, a fraction */
+static float s_gen(void)
+{
+    switch (rn(16u)) {
+    case 0: return f_edge();
+    case 1: return 0.0f;
+    case 2: return 1.0f;
+    case 3: return 0.5f;
+    default: return (float)rd(0.0, 1.0);
+    }
+}
+static float lim_gen(void)
+{
+    switch (rn(16u)) {
+    case 0: return f_edge();
+    case 1: return f_gen(1.0);
+    default: return (float)ldexp(rd(0.5, 1.0), (int)rn(40u) - 20);
+    }
+}
+static float frac_gen(void)
+{
+    switch (rn(16u)) {
+    case 0: return f_edge();
+    case 1: return (float)rd(-0.1, 1.1);
+    case 2: return 1.0f;
+    default: return (float)rd(0.0, 1.0);
+    }
+}
+static void g_slerp(diff_in *in)
+{
+    quat_gen(&in->qt[0]);
+    if (rn(4u)) in->qt[1] = in->qt[0];
+    quat_gen(&in->qt[1]);
+    in->f[0] = s_gen();
+    in->sel = ru();
+}
+static void g_pose(diff_in *in)
+{
+    if (rn(4u)) mat4_rigid(&in->M[0]); else mat4_gen(&in->M[0]);
+    if (rn(4u)) mat4_rigid(&in->M[1]); else mat4_gen(&in->M[1]);
+    in->f[0] = s_gen();
+    in->sel = ru();
+}
+static void g_motion(diff_in *in)
+{
+    int i;
+    for (i = 0; i < 4; i++) in->f[i] = rn(8u) ? (float)ldexp(rd(-1.0, 1.0), (int)rn(40u) - 20) : f_gen(10.0);
+    for (i = 4; i < 8; i++) in->f[i] = lim_gen();
+    for (i = 0; i < DH_MAX_JOINTS; i++) in->q[i] = lim_gen();
+    /* for the profiles: f[1..3] limits, f[4] a duration, f[5] a stretch
+     * factor, f[6] the time as a fraction of the duration */
+    in->f[1] = lim_gen();
+    in->f[5] = rn(8u) ? (float)(1.0 + ldexp(rd(0.0, 1.0), (int)rn(10u) - 5)) : frac_gen();
+    in->f[6] = frac_gen();
+    in->q[2 % DH_MAX_JOINTS] = frac_gen();
+    in->sel = ru();
+}
 static void g_ikc(diff_in *in)
 {
     const dh_robot *r = &ikc_pool[rn(IKC_POOL_N)];

@@ -166,6 +166,59 @@ static void robot_set_limits_bad(void)
                                       ? INT32_MAX : (int32_t)(40000.0 * ldexp(1.0, DH_QPOS_FRAC)));
 }
 
+/* rate limits: i >= n or <= 0 -> ARG, NaN -> NAN, r untouched; +inf is
+ * unlimited (INT32_MAX); finite values round to nearest, clamp to [1,
+ * INT32_MAX - 1]; the fixed setter's float copy is the value / 2^frac
+ * rounded to nearest (checked against double) */
+static void robot_set_rates_bad_and_exact(void)
+{
+    dh_robot r, copy;
+    const float inf = f32_bits(0x7F800000u);
+    int32_t k;
+    small_robot(&r, DH_CONV_STANDARD);
+    copy = r;
+    DHT_EQ_INT(dh_robot_set_rates_f32(&r, 3, 1.0f, 1.0f), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_set_rates_f32(&r, 0, 0.0f, 1.0f), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_set_rates_f32(&r, 0, 1.0f, -2.0f), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_set_rates_f32(&r, 0, -inf, 1.0f), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_set_rates_f32(&r, 0, bad_value_nan(0), 1.0f), DH_ERR_NAN);
+    DHT_EQ_INT(dh_robot_set_rates_f32(&r, 0, 1.0f, bad_value_nan(3)), DH_ERR_NAN);
+    DHT_EQ_INT(dh_robot_set_rates_q(&r, 3, 1, 1), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_set_rates_q(&r, 0, 0, 1), DH_ERR_ARG);
+    DHT_EQ_INT(dh_robot_set_rates_q(&r, 0, 1, INT32_MIN), DH_ERR_ARG);
+    DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
+    /* defaults: unlimited on both paths */
+    DHT_TRUE(r.joint[2].vmax == inf && r.joint[2].amax == inf);
+    DHT_EQ_INT(r.joint[2].vmax_q, INT32_MAX);
+    DHT_EQ_INT(r.joint[2].amax_q, INT32_MAX);
+    DHT_EQ_INT(dh_robot_set_rates_f32(&r, 0, 180.0f, inf), DH_OK);
+    DHT_EQ_INT(r.joint[0].vmax_q, 180 * 65536);
+    DHT_EQ_INT(r.joint[0].amax_q, INT32_MAX);
+    DHT_EQ_INT(dh_robot_set_rates_f32(&r, 1, 1e-30f, 1e30f), DH_OK); /* prismatic */
+    DHT_EQ_INT(r.joint[1].vmax_q, 1);
+    DHT_EQ_INT(r.joint[1].amax_q, INT32_MAX - 1);
+    DHT_EQ_INT(dh_robot_set_rates_f32(&r, 2, 0.25f, 32767.0f), DH_OK);
+    DHT_EQ_INT(r.joint[2].vmax_q, 16384);
+    DHT_EQ_INT(r.joint[2].amax_q, 32767 * 65536);
+    DHT_EQ_INT(dh_robot_check(&r), DH_OK);
+    /* fixed setter: float copies against double, every bit length */
+    for (k = 1; k > 0 && k < INT32_MAX; k = (k < 0x40000000) ? k * 2 + (k & 5) : INT32_MAX - 1) {
+        const int32_t vals[3] = { k, k < INT32_MAX - 1 ? k + 1 : k, (int32_t)((uint32_t)k | 0x55u) == INT32_MAX ? k : (int32_t)((uint32_t)k | 0x55u) };
+        unsigned m;
+        for (m = 0; m < 3u; m++) {
+            DHT_EQ_INT(dh_robot_set_rates_q(&r, 2, vals[m], INT32_MAX), DH_OK);
+            DHT_TRUE_MSG(r.joint[2].vmax == (float)ldexp((double)vals[m], -16), "vmax_q %ld: %a", (long)vals[m],
+                         (double)r.joint[2].vmax);
+            DHT_TRUE(r.joint[2].amax == inf);
+            DHT_EQ_INT(dh_robot_set_rates_q(&r, 1, 3, vals[m]), DH_OK);
+            DHT_TRUE_MSG(r.joint[1].amax == (float)ldexp((double)vals[m], -DH_QPOS_FRAC), "amax_q %ld: %a",
+                         (long)vals[m], (double)r.joint[1].amax);
+            DHT_EQ_INT(dh_robot_check(&r), DH_OK);
+        }
+        if (k == INT32_MAX - 1) break;
+    }
+}
+
 /* base/tool: NaN/Inf -> NAN, bottom row not 0 0 0 1 -> NOT_RIGID, r
  * untouched; not representable in Q -> OK with the fixed path off */
 static void robot_base_tool_bad(void)
@@ -757,6 +810,7 @@ static const dht_case cases[] = {
     DHT_CASE(robot_add_joint_bad),
     DHT_CASE(robot_unrepresentable_fixed_constants),
     DHT_CASE(robot_set_limits_bad),
+    DHT_CASE(robot_set_rates_bad_and_exact),
     DHT_CASE(robot_base_tool_bad),
     DHT_CASE(robot_check_limits_bad),
     DHT_CASE(robot_fk_f32_bad),

@@ -10,6 +10,7 @@
  * expected poses come from the double reference of support_robots.c, never
  * from the code under test.
  */
+#include <math.h>
 #include <string.h>
 
 #include "dht.h"
@@ -73,7 +74,17 @@ static void hand_written_const_robot_is_reported(void)
             /* the fixed copies (written above for DH_QPOS_FRAC 16) */
             fixed.joint[i].a_q = built.joint[i].a_q;
             fixed.joint[i].d_q = built.joint[i].d_q;
+            /* rate limits: zero (left out) is no valid limit */
+            fixed.joint[i].vmax = built.joint[i].vmax;
+            fixed.joint[i].amax = built.joint[i].amax;
+            fixed.joint[i].vmax_q = built.joint[i].vmax_q;
+            fixed.joint[i].amax_q = built.joint[i].amax_q;
         }
+        fixed.flags = built.flags;
+        DHT_EQ_INT(dh_robot_check(&fixed), DH_OK);
+        fixed.joint[1].vmax_q = 0;
+        DHT_EQ_INT(dh_robot_check(&fixed), DH_ERR_INCONSISTENT);
+        fixed.joint[1].vmax_q = built.joint[1].vmax_q;
         fixed.flags = built.flags;
         DHT_EQ_INT(dh_robot_check(&fixed), DH_OK);
     }
@@ -134,6 +145,12 @@ static void corrupted_fields_are_reported(void)
             c = r; make_nonfinite(&c.joint[i].qmin, 0u); EXPECT_BAD(c, "qmin Inf");
             c = r; make_nonfinite(&c.joint[i].qmax, 0x400000u); EXPECT_BAD(c, "qmax NaN");
             c = r; make_nonfinite(&c.joint[i].d, 1u); EXPECT_BAD(c, "d NaN");
+            /* rate limits: a pair neither setter leaves */
+            c = r; c.joint[i].vmax = 0.0f; EXPECT_BAD(c, "vmax 0");
+            c = r; make_nonfinite(&c.joint[i].amax, 0x400000u); EXPECT_BAD(c, "amax NaN");
+            c = r; c.joint[i].amax_q = -5; EXPECT_BAD(c, "amax_q < 0");
+            c = r; (void)dh_robot_set_rates_f32(&c, i, 90.0f, 400.0f); c.joint[i].vmax_q += 65536; EXPECT_BAD(c, "vmax_q");
+            c = r; (void)dh_robot_set_rates_q(&c, i, 1000, 77777); c.joint[i].amax *= 1.5f; EXPECT_BAD(c, "amax");
         }
         for (b = 0; b < 16u; b++) {
             c = r; c.base.m[b >> 2][b & 3u] += 0.5f; EXPECT_BAD(c, "base");
@@ -216,7 +233,7 @@ static void setter_sequences_pass(void)
         DHT_EQ_INT(dh_robot_init(&r, (dh_convention)(dht_rand_u32() & 1u)), DH_OK);
         DHT_EQ_INT(dh_robot_check(&r), DH_OK);
         for (step = 0; step < steps; step++) {
-            const unsigned op = dht_rand_u32() % 8u;
+            const unsigned op = dht_rand_u32() % 10u;
             const dh_joint_type t = (dht_rand_u32() & 1u) ? DH_JOINT_PRISMATIC : DH_JOINT_REVOLUTE;
             const uint32_t i = (r.n > 0u) ? dht_rand_u32() % r.n : 0u;
             dh_mat4_f32 M;
@@ -242,6 +259,20 @@ static void setter_sequences_pass(void)
                 break;
             case 4:
                 if (r.n > 0u) (void)dh_robot_set_limits_q(&r, i, rnd_i() >> 1, (int32_t)(dht_rand_u32() >> 1));
+                break;
+            case 8:
+                if (r.n > 0u) {
+                    const float inf = (float)HUGE_VAL;
+                    const float v = (dht_rand_u32() & 1u) ? inf : (float)ldexp(rnd_f(0.5, 1.0), (int)(dht_rand_u32() % 80u) - 40);
+                    const float a = (dht_rand_u32() & 1u) ? inf : (float)ldexp(rnd_f(0.5, 1.0), (int)(dht_rand_u32() % 80u) - 40);
+                    DHT_EQ_INT(dh_robot_set_rates_f32(&r, i, v, a), DH_OK);
+                }
+                break;
+            case 9:
+                if (r.n > 0u)
+                    DHT_EQ_INT(dh_robot_set_rates_q(&r, i, (int32_t)(dht_rand_u32() >> (1u + dht_rand_u32() % 31u)) | 1,
+                                                    (dht_rand_u32() & 1u) ? INT32_MAX : (int32_t)(dht_rand_u32() >> 1) | 1),
+                               DH_OK);
                 break;
             case 5:
                 rnd_frame(&M);
@@ -294,13 +325,16 @@ static void init_is_the_setter_sequence(void)
                                 DH_ROBOT_BASE_ID_Q | DH_ROBOT_TOOL_ID_Q | DH_ROBOT_BASE_SMALL_Q);
         for (i = 0u; i < (uint32_t)DH_MAX_JOINTS; i++) {
             const dh_joint *x = &a.joint[i], *y = &b.joint[i];
-            const float fx[8] = { x->a, x->d, x->alpha_deg, x->theta_deg, x->qmin, x->qmax, x->sa, x->ca };
-            const float fy[8] = { y->a, y->d, y->alpha_deg, y->theta_deg, y->qmin, y->qmax, y->sa, y->ca };
-            const int32_t ix[8] = { x->a_q, x->d_q, x->alpha_q, x->theta_q, x->sa_q, x->ca_q, x->qmin_q, x->qmax_q };
-            const int32_t iy[8] = { y->a_q, y->d_q, y->alpha_q, y->theta_q, y->sa_q, y->ca_q, y->qmin_q, y->qmax_q };
+            const float fx[10] = { x->a, x->d, x->alpha_deg, x->theta_deg, x->qmin, x->qmax, x->sa, x->ca, x->vmax, x->amax };
+            const float fy[10] = { y->a, y->d, y->alpha_deg, y->theta_deg, y->qmin, y->qmax, y->sa, y->ca, y->vmax, y->amax };
+            const int32_t ix[10] = { x->a_q, x->d_q, x->alpha_q, x->theta_q, x->sa_q, x->ca_q, x->qmin_q, x->qmax_q,
+                                     x->vmax_q, x->amax_q };
+            const int32_t iy[10] = { y->a_q, y->d_q, y->alpha_q, y->theta_q, y->sa_q, y->ca_q, y->qmin_q, y->qmax_q,
+                                     y->vmax_q, y->amax_q };
             DHT_EQ_INT(x->type, DH_JOINT_REVOLUTE);
             DHT_TRUE(x->qmin > x->qmax && x->qmin_q > x->qmax_q); /* no limits */
             DHT_TRUE(x->ca == 1.0f && x->ca_q == DH_Q30_ONE && x->sa_q == 0);
+            DHT_TRUE(x->vmax > 3.4e38f && x->amax > 3.4e38f && x->vmax_q == INT32_MAX && x->amax_q == INT32_MAX);
             DHT_EQ_INT(x->type, y->type);
             DHT_TRUE_MSG(memcmp(fx, fy, sizeof fx) == 0, "joint %u: float fields differ", (unsigned)i);
             DHT_TRUE_MSG(memcmp(ix, iy, sizeof ix) == 0, "joint %u: fixed fields differ", (unsigned)i);

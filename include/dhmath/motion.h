@@ -1,0 +1,247 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * Index: the functions of motion.h by source file (src/motion/).
+ *   dh_interp.c      dh_slerp_f32, dh_pose_interp_f32, dh_pose_angle_f32
+ *   dh_profile.c     dh_profile_trap_f32, dh_profile_scurve_f32,
+ *                    dh_profile_quintic_f32, dh_profile_stretch_f32,
+ *                    dh_profile_eval_f32
+ *   dh_joint_move.c  dh_joint_move_f32, dh_joint_move_eval_f32
+ */
+/**
+ * @file motion.h
+ * @brief Motion primitives: pose interpolation (position linear,
+ *        orientation along the shortest great arc), rest-to-rest time
+ *        scaling (trapezoidal, jerk-limited seven-phase, quintic) and the
+ *        synchronised point-to-point joint move.
+ *
+ * Conventions:
+ * - a path parameter s is in [0, 1]; angles at the API are in DEGREES;
+ * - a profile moves a scalar from 0 to a signed distance d (any length or
+ *   angle unit u) in a time T (any time unit, s below); velocity is in u/s,
+ *   acceleration u/s^2, jerk u/s^3. Limits are magnitudes (> 0) and hold
+ *   for either sign of d;
+ * - every profile is rest to rest: zero velocity and acceleration at t = 0
+ *   and t = T, symmetric in time (v(T - t) = v(t), a(T - t) = -a(t)), and
+ *   evaluated from its nearer end, so that p(0) = 0 and p(T) = d exactly.
+ *
+ * Pointers must not be NULL (checked with DH_ASSERT). On a non-OK status
+ * every output is left untouched. All functions are float only (no double,
+ * no libm), reentrant, use no heap and less than 256 bytes of stack.
+ * Methods: docs/design.md ("Motion").
+ */
+#ifndef DHMATH_MOTION_H
+#define DHMATH_MOTION_H
+
+#include "dhmath/common.h"
+#include "dhmath/rot.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ======================================================================
+ * Pose interpolation
+ * ==================================================================== */
+
+/**
+ * @brief Spherical linear interpolation (Shoemake 1985) along the SHORTEST
+ *        great arc from a to b: out = a (a* b)^s, b replaced by -b when
+ *        a . b < 0 (q and -q are the same rotation).
+ * @param a, b quaternions with finite components and a normal largest
+ *        component (normalised here, as dh_quat_normalize_f32).
+ * @param s path parameter in [0, 1].
+ * @param out unit quaternion: s == 0 gives a / |a| and s == 1 gives
+ *        +-b / |b| (the sign of the shortest arc) bit for bit as
+ *        dh_quat_normalize_f32 returns them. The rotation angle from a to
+ *        out is s times the angle from a to b (uniform angular speed).
+ * At exactly 180 degrees (a . b == 0) both arcs are equally short; b is
+ * taken as given (not negated), so the rotation axis of the path is that
+ * of a* b. Near 180 degrees the path flips to the other arc when the sign
+ * of a . b changes: inherent to a shortest-arc rule.
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf component or s; DH_ERR_ARG for s
+ *         outside [0, 1]; DH_ERR_ZERO_AXIS for a zero or denormal a or b.
+ *         out may alias a or b.
+ * Components within 1e-6 of the exact interpolation of a/|a| and b/|b|.
+ */
+dh_status dh_slerp_f32(const dh_quat_f32 *a, const dh_quat_f32 *b, float s, dh_quat_f32 *out);
+
+/**
+ * @brief T = the pose at s between the rigid frames A and B: position
+ *        p_A + s (p_B - p_A), rotation along the shortest great arc from
+ *        R_A to R_B at uniform angular speed (dh_slerp_f32 of their unit
+ *        quaternions, dh_mat3_to_quat_f32).
+ * @param A, B rigid frames: accepted by dh_mat4_check_rigid_f32(., DH_ROT_TOL).
+ * @param s path parameter in [0, 1]; s == 0 gives T == A and s == 1 gives
+ *        T == B bit for bit.
+ * @param T output frame (bottom row 0 0 0 1). At 180 degrees between R_A
+ *        and R_B the arc is chosen as in dh_slerp_f32.
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf entry or s; DH_ERR_NOT_RIGID if
+ *         A or B is not a rigid frame; DH_ERR_ARG for s outside [0, 1];
+ *         DH_ERR_OVERFLOW when p_B - p_A overflows. T untouched on error;
+ *         T may alias A or B.
+ * Rotation entries within 2e-6 of the exact interpolation of the input
+ * rotations; position within 2 ulp of the largest position magnitude.
+ */
+dh_status dh_pose_interp_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, float s, dh_mat4_f32 *T);
+
+/**
+ * @brief deg = the angle in [0, 180] degrees of the rotation R_A^T R_B
+ *        that takes frame A's orientation to frame B's (the length of the
+ *        shortest arc of dh_pose_interp_f32).
+ * @param A, B rigid frames (dh_mat4_check_rigid_f32(., DH_ROT_TOL)).
+ * @param deg output angle: atan2(|vee(M - M^T)|, tr M - 1) with
+ *        M = R_A^T R_B (2 sin t and 2 cos t), no acos near +-1, so small
+ *        angles and those near 180 degrees are accurate.
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf entry; DH_ERR_NOT_RIGID if A or
+ *         B is not a rigid frame. deg untouched on error.
+ * Error <= 1e-4 degrees against the angle of the float rotations.
+ */
+dh_status dh_pose_angle_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, float *deg);
+
+/* ======================================================================
+ * Time scaling (rest-to-rest profiles)
+ * ==================================================================== */
+
+/** @brief The form of a dh_profile_f32. */
+typedef enum {
+    DH_PROFILE_TRAP = 0,   /**< trapezoidal velocity: acceleration +-a or 0 */
+    DH_PROFILE_SCURVE = 1, /**< seven phases: jerk +-j or 0 */
+    DH_PROFILE_QUINTIC = 2 /**< quintic polynomial d (10 x^3 - 15 x^4 + 6 x^5), x = t / T */
+} dh_profile_kind;
+
+/**
+ * @brief A rest-to-rest profile from 0 to d, written by the dh_profile_*
+ *        initialisers and read by dh_profile_eval_f32 (read-only for the
+ *        user). Phases of the trapezoid and the seven-phase profile:
+ *        jerk +j for tj, accel +a for ta - 2 tj, jerk -j for tj, cruise
+ *        at v for tv, then the mirror image; T = 2 ta + tv.
+ */
+typedef struct {
+    float d;  /**< signed distance (u) */
+    float T;  /**< duration (s); 0 when d == 0 and nothing stretched it */
+    float tj; /**< duration of each jerk phase (0 for the trapezoid and the quintic) */
+    float ta; /**< duration of the acceleration phase, jerk phases included (0 for the quintic) */
+    float tv; /**< duration of the cruise phase (0 for the quintic) */
+    float v;  /**< peak |velocity| (u/s) */
+    float a;  /**< peak |acceleration| (u/s^2) */
+    float j;  /**< peak |jerk| (u/s^3); 0 for the trapezoid (unbounded) */
+    uint32_t kind; /**< form of the profile: a dh_profile_kind value (a word, so no padding) */
+} dh_profile_f32;
+
+/**
+ * @brief p = the time-optimal trapezoidal profile for |d| within vmax and
+ *        amax: T = |d|/vmax + vmax/amax when |d| >= vmax^2/amax (vmax is
+ *        reached), else T = 2 sqrt(|d|/amax) (a triangle).
+ * @param p output profile (kind DH_PROFILE_TRAP, j = 0).
+ * @param d signed distance, any finite value (0 gives T = 0).
+ * @param vmax, amax limits, finite and > 0.
+ * p->v <= vmax and p->a <= amax exactly (the peaks are recomputed from the
+ * rounded phase times and then held to the limits); T within 4 float
+ * roundings of the formula.
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf argument; DH_ERR_ARG for a limit
+ *         <= 0; DH_ERR_OVERFLOW when the duration or a peak is not a
+ *         positive finite float (d and the limits too far apart for float).
+ *         p untouched on error.
+ */
+dh_status dh_profile_trap_f32(dh_profile_f32 *p, float d, float vmax, float amax);
+
+/**
+ * @brief p = the time-optimal seven-phase (jerk-limited, "double S")
+ *        rest-to-rest profile for |d| within vmax, amax and jmax
+ *        (Biagiotti & Melchiorri 2008, 3.4): the jerk is +-jmax or 0, and
+ *        the cruise and the constant-acceleration phases appear only when
+ *        |d| is long enough to reach vmax and amax (both, one or neither).
+ * @param p output profile (kind DH_PROFILE_SCURVE).
+ * @param d signed distance, any finite value (0 gives T = 0).
+ * @param vmax, amax, jmax limits, finite and > 0.
+ * p->v <= vmax, p->a <= amax and p->j <= jmax exactly; T within 8 float
+ * roundings of the minimum (docs/design.md, "Motion").
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf argument; DH_ERR_ARG for a limit
+ *         <= 0; DH_ERR_OVERFLOW when the duration or a peak is not a
+ *         positive finite float. p untouched on error.
+ */
+dh_status dh_profile_scurve_f32(dh_profile_f32 *p, float d, float vmax, float amax, float jmax);
+
+/**
+ * @brief p = the quintic d (10 x^3 - 15 x^4 + 6 x^5), x = t / T, of the
+ *        given duration: zero velocity and acceleration at both ends; peaks
+ *        v = 1.875 |d| / T, a = 5.7735 |d| / T^2, j = 60 |d| / T^3.
+ * @param p output profile (kind DH_PROFILE_QUINTIC, tj = ta = tv = 0).
+ * @param d signed distance, any finite value.
+ * @param T duration, finite and > 0.
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf argument; DH_ERR_ARG for T <= 0;
+ *         DH_ERR_OVERFLOW when a peak is not finite. p untouched on error.
+ */
+dh_status dh_profile_quintic_f32(dh_profile_f32 *p, float d, float T);
+
+/**
+ * @brief Stretches p to the longer duration T by uniform time scaling,
+ *        p(t) -> p(t / k), k = T / p->T >= 1: the same distance, every
+ *        phase k times longer, peaks v / k, a / k^2, j / k^3, so the
+ *        profile stays within any limits it met (a profile with d == 0
+ *        only takes the new T).
+ * @param p profile from a dh_profile_* initialiser, modified in place.
+ * @param T new duration, finite and >= p->T (T == p->T leaves p as it is).
+ * The new peaks never exceed the old ones.
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf T; DH_ERR_ARG for T < p->T;
+ *         DH_ERR_OVERFLOW when a new peak or phase time is not a positive
+ *         finite float (k so large that it underflows). p untouched on error.
+ */
+dh_status dh_profile_stretch_f32(dh_profile_f32 *p, float T);
+
+/**
+ * @brief Position, velocity and acceleration of the profile p at time t.
+ * @param p profile from a dh_profile_* function.
+ * @param t time (s), any value but NaN: clamped to [0, p->T] (t <= 0 gives
+ *        0, 0, 0; t >= p->T gives d, 0, 0 exactly).
+ * @param pos, vel, acc outputs; |vel| <= p->v and |acc| <= p->a always.
+ * For t > T/2 the mirror image of the first half is evaluated (from d
+ * back), so both ends are exact; the two halves meet within 2 ulp of |d|.
+ * @return DH_OK; DH_ERR_NAN for a NaN t (outputs untouched).
+ */
+dh_status dh_profile_eval_f32(const dh_profile_f32 *p, float t, float *pos, float *vel, float *acc);
+
+/* ======================================================================
+ * Synchronised joint move
+ * ==================================================================== */
+
+/**
+ * @brief Point-to-point move of n joints from q0 to q1 that brings every
+ *        joint to rest at the same time T, each within its own limits,
+ *        with T as short as the slowest joint allows: each joint's
+ *        time-optimal profile (dh_profile_scurve_f32, or
+ *        dh_profile_trap_f32 when jmax is NULL), then every profile
+ *        stretched to the longest duration by dh_profile_stretch_f32.
+ * @param prof output: n profiles of q1[i] - q0[i], all with prof[i].T == T.
+ * @param n number of joints, >= 1.
+ * @param q0, q1 start and end positions (n each, finite).
+ * @param vmax, amax, jmax per-joint limits (n each, finite, > 0); jmax may
+ *        be NULL (trapezoids).
+ * @return DH_OK; DH_ERR_ARG for n == 0 or a limit <= 0; DH_ERR_NAN for a
+ *         NaN/Inf value; DH_ERR_OVERFLOW when q1[i] - q0[i] or a profile
+ *         overflows or its stretch underflows (as dh_profile_trap_f32,
+ *         _scurve_f32, _stretch_f32). On error every prof[i] is all zero:
+ *         no move and duration 0, so evaluating it keeps the joints at q0.
+ */
+dh_status dh_joint_move_f32(dh_profile_f32 *prof, uint32_t n, const float *q0, const float *q1,
+                            const float *vmax, const float *amax, const float *jmax);
+
+/**
+ * @brief Joint positions, velocities and accelerations of a joint move at
+ *        time t: q = q0 + p_i(t) for t <= T/2, q1 - (d_i - p_i(t)) after,
+ *        so t <= 0 gives q0 and t >= T gives q1 bit for bit; a joint whose
+ *        profile has d_i == 0 stays at q0 (the no move of a failed call).
+ * @param prof, n, q0, q1 the move of dh_joint_move_f32 and its endpoints.
+ * @param t time (s), any value but NaN (clamped as dh_profile_eval_f32).
+ * @param q, qd, qdd outputs (n each).
+ * @return DH_OK; DH_ERR_ARG for n == 0; DH_ERR_NAN for a NaN t. Outputs
+ *         untouched on error.
+ */
+dh_status dh_joint_move_eval_f32(const dh_profile_f32 *prof, uint32_t n, const float *q0, const float *q1,
+                                 float t, float *q, float *qd, float *qdd);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DHMATH_MOTION_H */

@@ -1,0 +1,705 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * dh_track_q.c - tracking IK in fixed point (integer only: no float, no
+ * libm, no 64-bit division): dh_track_init_q, dh_track_step_q.
+ *
+ * The float tracker's method (dh_track.c, docs/design.md "Tracking") on
+ * integers, with every bound exact:
+ * - step box of joint i for this period: |s| <= dq_max = floor(vmax_q
+ *   dt_us / 10^6); with an acceleration limit |s - v| <= A, A =
+ *   floor(floor(amax_q dt_us / 10^6) dt_us / 10^6) (v the previous step);
+ *   within the limits; and, with A, the braking condition: a step s
+ *   towards a limit at distance D (before the step) satisfies
+ *   s (s + 2 A) <= 2 A D, i.e. s <= isqrt(A^2 + 2 A D) - A (rounded down),
+ *   which is s^2 <= 2 A (D - s): v^2 <= 2 amax (distance left), and the
+ *   steps s - A, s - 2A, ... then stop the joint before the limit.
+ *   The previous step braked by A keeps all of these, so the box is never
+ *   empty.
+ * - every step is clamped into the box in integers, so the bounds hold
+ *   exactly, for every status.
+ */
+#include "dhmath/track.h"
+#include "dhmath/frame.h"
+#include "../internal/dh_qmath.h"
+#include "../kin/kin_impl.h"
+#include "../ikc/ikc_impl.h"
+
+#define TRQ_DEG180 ((int32_t)180 << 16)   /* 180 deg, Q16.16 */
+#define TRQ_NONE INT32_MAX   /* no acceleration limit */
+#define TRQ_STEP_CAP (((int32_t)1 << 30) - 1)
+
+/* ---- integer helpers ----------------------------------------------------- */
+
+/* floor(x / 10^6) for x < 2^63, by 32-bit divisions of 8-bit chunks. */
+static uint64_t trq_div1e6(uint64_t x)
+{
+    uint64_t q = 0u;
+    uint32_t r = 0u;
+    int b;
+    for (b = 56; b >= 0; b -= 8) {
+        const uint32_t cur = (r << 8) | (uint32_t)((x >> (unsigned)b) & 0xFFu);
+        q = (q << 8) | (cur / 1000000u);
+        r = cur % 1000000u;
+    }
+    return q;
+}
+
+/* floor(x dt_us / 10^6) for 0 <= x < 2^31, saturated below INT32_MAX. */
+static int32_t trq_per(int32_t x, uint32_t dt_us)
+{
+    const uint64_t v = trq_div1e6((uint64_t)(uint32_t)x * dt_us);
+    return (v >= (uint64_t)INT32_MAX) ? INT32_MAX - 1 : (int32_t)v;
+}
+
+static int64_t trq_clamp64(int64_t x, int64_t lo, int64_t hi) { return (x < lo) ? lo : ((x > hi) ? hi : x); }
+
+/* x 2^s, rounded (s < 0) or exact (s >= 0, small s). */
+static int64_t trq_sh(int64_t x, int s)
+{
+    return (s >= 0) ? (int64_t)((uint64_t)x << (unsigned)s) : dh_q_rshr(x, (unsigned)(-s));
+}
+
+/* Largest s >= 0 with s (s + 2A) <= 2 A D (rounded down), D >= 0, A > 0. */
+static int64_t trq_brake_max(int64_t A, int64_t D)
+{
+    const uint64_t a2 = (uint64_t)A * (uint64_t)A, ad = (uint64_t)A * (uint64_t)D;   /* < 2^62, < 2^63 */
+    unsigned k = 0u;
+    uint64_t x;
+    for (;;) {
+        /* each term below 2^61 before the sum: no wrap-around */
+        const unsigned sh = 2u * k;
+        const uint64_t u = a2 >> sh, w = ad >> sh;
+        x = ((u >> 61) == 0u && (w >> 61) == 0u) ? u + (w << 1) : UINT64_MAX;
+        if (x < ((uint64_t)1 << 62)) break;
+        k++;
+    }
+    return ((int64_t)dh_q_isqrt62(x) << k) - A;
+}
+
+/* ---- setup ------------------------------------------------------------- */
+
+/* Characteristic length L in dh_qpos: sum of |a|, |d|, the prismatic
+ * travel (limited joints) and |tool p| (saturated at 2^30). */
+static DH_NOINLINE int32_t trq_length(const dh_robot *r)
+{
+    int64_t L = 0;
+    uint32_t i, k;
+    for (i = 0u; i < r->n; i++) {
+        const dh_joint *j = &r->joint[i];
+        L += (int64_t)dh_q_abs_u32(j->a_q);
+        L += (int64_t)dh_q_abs_u32(j->d_q);
+        if (j->type == DH_JOINT_PRISMATIC && j->qmin_q <= j->qmax_q) L += (int64_t)j->qmax_q - j->qmin_q;
+    }
+    for (k = 0u; k < 3u; k++) L += (int64_t)dh_q_abs_u32(r->tool_q.p[k]);
+    if (L < DH_QPOS_ONE) L = DH_QPOS_ONE;
+    return (L > ((int64_t)1 << 30)) ? ((int32_t)1 << 30) : (int32_t)L;
+}
+
+dh_status dh_track_init_q(dh_track_q *t, const dh_robot *r, const dh_ikc_model_q *m, const int32_t *q0,
+                          uint32_t dt_us)
+{
+    uint32_t i, n;
+    int32_t L;
+    dh_status st;
+    DH_ASSERT(t != NULL);
+    DH_ASSERT(r != NULL);
+    DH_ASSERT(q0 != NULL);
+    n = r->n;
+    if (n == 0u || n > (uint32_t)DH_MAX_JOINTS || dt_us == 0u || dt_us > 1000000u) return DH_ERR_ARG;
+    if ((r->flags & DH_ROBOT_HAS_Q) == 0u) return DH_ERR_UNAVAILABLE;
+    if (m != NULL && (m->kind == DH_IKC_NONE || m->n != n)) return DH_ERR_ARG;
+    st = dh_robot_check_limits_q(r, q0);
+    if (st != DH_OK) return st;
+    t->r = r;
+    t->m = m;
+    t->dt_us = dt_us;
+    for (i = 0u; i < n; i++) {
+        const dh_joint *j = &r->joint[i];
+        t->q[i] = q0[i];
+        t->v[i] = 0;
+        t->dq_max[i] = (j->vmax_q >= INT32_MAX) ? INT32_MAX : trq_per(j->vmax_q, dt_us);
+        t->dv_max[i] = (j->amax_q >= INT32_MAX) ? TRQ_NONE : trq_per(trq_per(j->amax_q, dt_us), dt_us);
+    }
+    L = trq_length(r);
+    t->reach = L + (L >> 13);
+    /* in J's units (length unit, rad), not scaled by L: the angular rows
+     * do not grow with the length unit */
+    t->lambda = (int32_t)(((int64_t)DH_QPOS_ONE * 1311) >> 16);          /* 0.02 */
+    t->sing_threshold = (int32_t)(((int64_t)DH_QPOS_ONE * 328) >> 16);   /* 0.005 */
+    t->pos_tol = (int32_t)(((int64_t)L * 2) >> 20);           /* 2e-6 L (1.9e-6) */
+    if (t->pos_tol < 16) t->pos_tol = 16;
+    t->rot_tol = 10737;                                        /* 2e-5 rad, Q3.29 */
+    /* dh_jacobian_q in two private calls (its checks once here, then its
+     * body writing FK straight into t->T), as in every step */
+    if (dh_kin_jac_check_q_(r) != DH_OK || dh_kin_jac_q_(r, t->q, t->J, &t->T) != 0) return DH_ERR_OVERFLOW;
+    t->pris = dh_kin_pris_q_(r);
+    return DH_OK;
+}
+
+/* ---- the step box ------------------------------------------------------ */
+
+/* The step box of joint i into t->lo[i], t->hi[i]. */
+static DH_NOINLINE void trq_box1(dh_track_q *t, uint32_t i)
+{
+    const dh_joint *j = &t->r->joint[i];
+    const int64_t q = t->q[i], A = t->dv_max[i];
+    const int lim = j->qmin_q <= j->qmax_q;
+    /* a step is at most 2^30 - 1 LSB, and q + s stays within
+     * [-INT32_MAX, INT32_MAX] */
+    const int64_t cap = (t->dq_max[i] < TRQ_STEP_CAP) ? t->dq_max[i] : TRQ_STEP_CAP;
+    int64_t lo = -cap, hi = cap;
+    if ((int64_t)INT32_MAX - q < hi) hi = (int64_t)INT32_MAX - q;
+    if (-(int64_t)INT32_MAX - q > lo) lo = -(int64_t)INT32_MAX - q;
+    if (A != TRQ_NONE) {
+        lo = (t->v[i] - A > lo) ? t->v[i] - A : lo;
+        hi = (t->v[i] + A < hi) ? t->v[i] + A : hi;
+        if (lim && A > 0) {
+            const int64_t bh = trq_brake_max(A, (int64_t)j->qmax_q - q);
+            const int64_t bl = -trq_brake_max(A, q - j->qmin_q);
+            hi = (bh < hi) ? bh : hi;
+            lo = (bl > lo) ? bl : lo;
+        }
+    }
+    if (lim) {
+        hi = ((int64_t)j->qmax_q - q < hi) ? (int64_t)j->qmax_q - q : hi;
+        lo = ((int64_t)j->qmin_q - q > lo) ? (int64_t)j->qmin_q - q : lo;
+    }
+    if (lo > hi) {
+        /* not reached (the braking step lies in the box); kept safe:
+         * the previous velocity braked, within every bound it meets */
+        lo = trq_clamp64(t->v[i] - trq_clamp64(t->v[i], -A, A), lo, hi);
+        hi = lo;
+    }
+    t->lo[i] = (int32_t)lo;
+    t->hi[i] = (int32_t)hi;
+}
+
+static DH_NOINLINE void trq_box(dh_track_q *t)
+{
+    uint32_t i;
+    for (i = 0u; i < t->r->n; i++) trq_box1(t, i);
+}
+
+/* t->dq scaled by one factor in [0, 1] so that each entry stays within
+ * its side of the box, then clamped into the box. */
+static DH_NOINLINE void trq_fit(dh_track_q *t)
+{
+    uint32_t i, s = (uint32_t)1 << 30;
+    for (i = 0u; i < t->r->n; i++) {
+        const int32_t x = t->dq[i];
+        if (x != 0) {
+            const int32_t b = (x > 0) ? t->hi[i] : t->lo[i];
+            const uint32_t ax = dh_q_abs_u32(x);
+            const uint32_t lim = ((x > 0) == (b > 0)) ? dh_q_abs_u32(b) : 0u;
+            if (lim < ax) {
+                const uint32_t r = dh_q_ufloor30(lim, ax);
+                if (r < s) s = r;
+            }
+        }
+    }
+    for (i = 0u; i < t->r->n; i++) {
+        const int64_t p = dh_q_mul64(t->dq[i], (int32_t)s);
+        const int64_t v = (p < 0) ? -((-p) >> 30) : (p >> 30);   /* toward 0 */
+        t->dq[i] = (int32_t)trq_clamp64(v, t->lo[i], t->hi[i]);
+    }
+}
+
+/* ---- closed form ---------------------------------------------------------- */
+
+/* x shifted by 360 deg towards q when it is more than 180 deg from q and
+ * the shifted value lies within j's limits widened by 8 LSB; else x
+ * (values beyond 2^29 LSB, 8192 deg, are left as they are). */
+static int32_t trq_turn(int32_t x, int32_t q, const dh_joint *j)
+{
+    const int32_t big = (int32_t)1 << 29;
+    int32_t y = x;
+    if (x > big || x < -big || q > big || q < -big) return x;
+    if (x - q > TRQ_DEG180) y = x - 2 * TRQ_DEG180;
+    if (x - q < -TRQ_DEG180) y = x + 2 * TRQ_DEG180;
+    return (y + 8 >= j->qmin_q && y - 8 <= j->qmax_q) ? y : x;
+}
+
+/* 1 when the solution is within the limits, a value beyond one by at most
+ * 8 LSB (the closed form's rounding, 1.2e-4 deg) put on it; else 0. A
+ * revolute value more than 180 deg from q is first shifted by 360 deg
+ * towards q when that lands within the limits so widened (trq_turn):
+ * dh_ikc_q shifts a value just beyond a limit by 360 deg into the range. */
+static int trq_onto_limits(const dh_track_q *t, dh_ikc_sol_q *sol)
+{
+    uint32_t i;
+    for (i = 0u; i < t->r->n; i++) {
+        const dh_joint *j = &t->r->joint[i];
+        if (j->qmin_q <= j->qmax_q) {
+            if (j->type == DH_JOINT_REVOLUTE) sol->q[i] = trq_turn(sol->q[i], t->q[i], j);
+            if ((int64_t)sol->q[i] < (int64_t)j->qmin_q - 8 || (int64_t)sol->q[i] > (int64_t)j->qmax_q + 8) return 0;
+            if (sol->q[i] < j->qmin_q) sol->q[i] = j->qmin_q;
+            if (sol->q[i] > j->qmax_q) sol->q[i] = j->qmax_q;
+        }
+    }
+    return 1;
+}
+
+/* The solution nearest t->q in time (largest |q*_i - q_i| / vmax_i, then
+ * the sum of |q*_i - q_i|) among the st's t->ns solutions within the
+ * limits into t->qs: 1 when there is one; t->unreach when there is no
+ * solution or none within the limits. */
+static DH_NOINLINE int trq_nearest(dh_track_q *t, dh_status st)
+{
+    const uint32_t n = t->r->n;
+    uint32_t ns = t->ns, k, i, best = 0u;
+    int64_t bs = 0;
+    uint32_t btn = 0u, btd = 1u;   /* best time as a ratio btn / btd */
+    int found = 0;
+    if (st != DH_OK) ns = 0u;
+    for (k = 0u; k < ns; k++) {
+        uint32_t tn = 0u, td = 1u;
+        int64_t sm = 0;
+        if (!trq_onto_limits(t, &t->sol[k])) continue;
+        for (i = 0u; i < n; i++) {
+            const int64_t d64 = (int64_t)t->sol[k].q[i] - t->q[i];
+            const uint32_t d = (d64 < 0) ? (uint32_t)(-d64 > INT32_MAX ? INT32_MAX : -d64)
+                                         : (uint32_t)(d64 > INT32_MAX ? INT32_MAX : d64);
+            const uint32_t v = (uint32_t)t->r->joint[i].vmax_q;
+            sm += (int64_t)d;
+            /* time d / v > tn / td ? (v INT32_MAX: unlimited, time 0) */
+            if (v < (uint32_t)INT32_MAX && (uint64_t)d * td > (uint64_t)tn * v) {
+                tn = d;
+                td = v;
+            }
+        }
+        if (!found || (uint64_t)tn * btd < (uint64_t)btn * td ||
+            ((uint64_t)tn * btd == (uint64_t)btn * td && sm < bs)) {
+            best = k;
+            btn = tn;
+            btd = td;
+            bs = sm;
+            found = 1;
+        }
+    }
+    t->unreach = (st == DH_ERR_UNREACHABLE || (st == DH_OK && !found)) ? 1 : 0;
+    if (!found) return 0;
+    for (i = 0u; i < n; i++) t->qs[i] = t->sol[best].q[i];
+    return 1;
+}
+
+/* 1 when the closed form's argument checks pass and T06 is in t->sol (the
+ * status in t->ist) */
+static DH_NOINLINE int trq_ikc_args(dh_track_q *t)
+{
+    if (t->m == NULL) return 0;
+    t->ist = dh_ikc_args_q_(t->m, t->tgt, DH_IKC_KEEP_OUT_OF_LIMITS, t->sol);
+    return (t->ist == DH_OK) ? 1 : 0;
+}
+
+/* The closed form's solution nearest in time (t->ist, t->ns: dh_ikc_q's
+ * status and count) in t->qs (t->have, t->unreach) and the step towards
+ * it clamped into the box: 1 when the box does not hold it (the target is
+ * chased). */
+static DH_NOINLINE int trq_pick(dh_track_q *t)
+{
+    uint32_t i;
+    int reached = 0;
+    if (t->m == NULL) return 1;
+    t->have = trq_nearest(t, t->ist);
+    if (t->have) {
+        reached = 1;
+        for (i = 0u; i < t->r->n; i++) {
+            const int64_t s = (int64_t)t->qs[i] - t->q[i];
+            if (s < t->lo[i] || s > t->hi[i]) reached = 0;
+            t->dq[i] = (int32_t)trq_clamp64(s, t->lo[i], t->hi[i]);
+        }
+    }
+    return !reached;
+}
+
+/* The step towards t->qs at the bound, each joint braking so as to stop
+ * at its target value. */
+static DH_NOINLINE void trq_head(dh_track_q *t)
+{
+    uint32_t i;
+    for (i = 0u; i < t->r->n; i++) {
+        const int64_t D = (int64_t)t->qs[i] - t->q[i], A = t->dv_max[i];
+        int64_t s = D;
+        if (A != TRQ_NONE && A > 0) {
+            const int64_t b = trq_brake_max(A, D < 0 ? -D : D);
+            if (s > b) s = b;
+            if (s < -b) s = -b;
+        }
+        t->dq[i] = (int32_t)trq_clamp64(s, INT32_MIN + 1, INT32_MAX);
+    }
+    trq_fit(t);
+}
+
+/* ---- damped steps ---------------------------------------------------------- */
+
+/* e[0..2] = position error of the target from t->T (dh_qpos), e[3..5]
+ * the rotation error in t->rw; 0 when a component does not fit. */
+static DH_NOINLINE int trq_epos(dh_track_q *t)
+{
+    uint32_t k;
+    for (k = 0u; k < 3u; k++) {
+        const int64_t d = (int64_t)t->tgt->p[k] - t->T.p[k];
+        if (d > INT32_MAX || d < -(int64_t)INT32_MAX) return 0;
+        t->e[k] = (int32_t)d;
+    }
+    t->e[3] = t->rw.x;
+    t->e[4] = t->rw.y;
+    t->e[5] = t->rw.z;
+    return 1;
+}
+
+/* e = pose error of the target from t->T: position dh_qpos, rotation
+ * Q3.29 rad; 0 when a component does not fit. */
+static DH_NOINLINE int trq_error(dh_track_q *t)
+{
+    if (dh_kin_rot_error_chk_q_(t->tgt, &t->T, &t->rD, &t->rw, t->rq) != DH_OK) return 0;
+    return trq_epos(t);
+}
+
+/* |e|^2 / 2^8 with the rotation weighed by L (dh_qpos), each component
+ * clamped to 2^31: below 2^57. */
+static uint64_t trq_enorm2(const int32_t *e, int32_t L)
+{
+    uint64_t s = 0u;
+    uint32_t k;
+    for (k = 0u; k < 6u; k++) {
+        int64_t x = (k < 3u) ? (int64_t)e[k] : (dh_q_mul64(e[k], L) >> 29);
+        x = trq_clamp64(x, -(int64_t)INT32_MAX, INT32_MAX) >> 4;
+        s += (uint64_t)(x * x);
+    }
+    return s;
+}
+
+/* Damping lambda sqrt(1 - x^2 + 2^-20), x = sigma / threshold clamped to
+ * [0, 1]: full damping at a singularity, 2^-10 lambda away from one. */
+static DH_NOINLINE int32_t trq_damping(const dh_track_q *t, int32_t sg)
+{
+    uint32_t x = (uint32_t)1 << 30, x2;
+    if (sg < t->sing_threshold) x = dh_q_ufloor30((uint32_t)(sg < 0 ? 0 : sg), (uint32_t)t->sing_threshold);
+    x2 = (uint32_t)(((uint64_t)x * x) >> 30);
+    return (int32_t)(((uint64_t)(uint32_t)t->lambda *
+                      dh_q_sqrt_u64((uint64_t)(((uint32_t)1 << 30) - x2 + 1024u) << 30)) >> 30);
+}
+
+/* r = e - J dq (the linearised residual of the step), into t->e. */
+static DH_NOINLINE void trq_residual(dh_track_q *t)
+{
+    const uint32_t n = t->r->n;
+    uint32_t i, k;
+    for (k = 0u; k < 6u; k++) {
+        int64_t s = 0;
+        for (i = 0u; i < n; i++) {
+            const int rev = t->r->joint[i].type == DH_JOINT_REVOLUTE;
+            /* x: the step in rad or length units times 2^20 */
+            const int32_t x = rev ? (int32_t)(dh_q_mul64(t->dq[i], 18740330) >> 26)     /* pi/180 in Q30 */
+                                  : (int32_t)trq_sh(t->dq[i], 20 - DH_QPOS_FRAC);
+            const int64_t p = dh_q_mul64(t->J[k * n + i], x);
+            /* linear revolute: dh_qpos 2^20; angular: Q30 2^20 -> Q29; linear prismatic: Q30 2^20 -> dh_qpos */
+            s += dh_q_rshr(p, (unsigned)((k < 3u) ? (rev ? 20 : 50 - DH_QPOS_FRAC) : 21));
+        }
+        t->e[k] = (int32_t)trq_clamp64((int64_t)t->e[k] - s, -(int64_t)INT32_MAX, INT32_MAX);
+    }
+}
+
+/* 1 when the pose error in t->e is within pos_tol and rot_tol; its
+ * squared position and rotation parts into *p2, *r2 */
+static int trq_within(const dh_track_q *t, uint64_t *p2, uint64_t *r2)
+{
+    uint32_t k;
+    *p2 = 0u;
+    *r2 = 0u;
+    for (k = 0u; k < 3u; k++) {
+        *p2 += (uint64_t)dh_q_mul64(t->e[k], t->e[k]);
+        *r2 += (uint64_t)dh_q_mul64(t->e[k + 3u], t->e[k + 3u]);
+    }
+    return (*p2 <= (uint64_t)dh_q_mul64(t->pos_tol, t->pos_tol) &&
+            *r2 <= (uint64_t)dh_q_mul64(t->rot_tol, t->rot_tol)) ? 1 : 0;
+}
+
+/* The pose error into t->e, whether it is within the tolerances into
+ * t->at, and the damping into t->lam (from t->sg): 1 when the error could
+ * be computed. */
+static DH_NOINLINE int trq_prep(dh_track_q *t)
+{
+    uint64_t p2, r2;
+    if (!trq_error(t)) return 0;
+    t->at = trq_within(t, &p2, &r2);
+    t->lam = trq_damping(t, t->sg);
+    if (t->lam < 1) t->lam = 1;
+    return 1;
+}
+
+/* The damped step (dh_dls_step_q without a bound) into t->dq. */
+static DH_NOINLINE dh_status trq_solve(dh_track_q *t)
+{
+    t->work.J = t->J;
+    t->work.n = (uint8_t)t->r->n;
+    t->work.dq_max = NULL;
+    t->work.pris = t->pris;
+    return dh_kin_dls_q_(&t->work, t->e, t->lam, t->dq);
+}
+
+/* A joint that cannot move the way the step wants (against a limit, or
+ * braking) leaves the solve: its column is cleared (t->J is recomputed at
+ * q_out). 1 when one did (the step is solved again for the others). */
+static DH_NOINLINE int trq_block(dh_track_q *t)
+{
+    const uint32_t n = t->r->n;
+    uint32_t i, k;
+    int blocked = 0;
+    for (i = 0u; i < n; i++)
+        if ((t->dq[i] > 0 && t->hi[i] <= 0) || (t->dq[i] < 0 && t->lo[i] >= 0)) {
+            for (k = 0u; k < 6u; k++) t->J[k * n + i] = 0;
+            blocked = 1;
+        }
+    return blocked;
+}
+
+/* The damped step fitted into the box; 1 when it stalls (the linearised
+ * error drops by less than a tenth). */
+static DH_NOINLINE int trq_settle(dh_track_q *t)
+{
+    uint64_t e2;
+    trq_fit(t);
+    e2 = trq_enorm2(t->e, t->reach);
+    trq_residual(t);
+    return (trq_enorm2(t->e, t->reach) * 100u > e2 * 81u) ? 1 : 0;
+}
+
+/* No damped step: zero, fitted into the box; stalls. */
+static DH_NOINLINE int trq_none(dh_track_q *t)
+{
+    uint32_t i;
+    for (i = 0u; i < t->r->n; i++) t->dq[i] = 0;
+    trq_fit(t);
+    return 1;
+}
+
+/* Braking: each step towards 0 by at most A (at once without an
+ * acceleration limit). */
+static DH_NOINLINE void trq_brake(dh_track_q *t)
+{
+    uint32_t i;
+    for (i = 0u; i < t->r->n; i++) {
+        const int64_t A = t->dv_max[i], p = t->v[i];
+        int64_t s = 0;
+        if (A != TRQ_NONE) s = (p > A) ? p - A : ((p < -A) ? p + A : 0);
+        t->dq[i] = (int32_t)trq_clamp64(s, t->lo[i], t->hi[i]);
+    }
+    t->unreach = 1;
+}
+
+/* Largest |qs_i - q_i - a dq_i| / w_i over the joints (a = 0 or 1) as
+ * *num / *den, w_i = vmax_q (65536 when unlimited). */
+static void trq_tmax(const dh_track_q *t, int a, uint32_t *num, uint32_t *den)
+{
+    uint32_t i, tn = 0u, td = 1u;
+    for (i = 0u; i < t->r->n; i++) {
+        const int64_t d64 = (int64_t)t->qs[i] - t->q[i] - (a ? t->dq[i] : 0);
+        const uint32_t d = (uint32_t)trq_clamp64(d64 < 0 ? -d64 : d64, 0, INT32_MAX);
+        const uint32_t w = (t->r->joint[i].vmax_q >= INT32_MAX) ? 65536u : (uint32_t)t->r->joint[i].vmax_q;
+        if ((uint64_t)d * td > (uint64_t)tn * w) {
+            tn = d;
+            td = w;
+        }
+    }
+    *num = tn;
+    *den = td;
+}
+
+/* 1 when t->dq does not bring q nearer t->qs in time. */
+static DH_NOINLINE int trq_away(const dh_track_q *t)
+{
+    uint32_t bn, bd, an, ad;
+    trq_tmax(t, 0, &bn, &bd);
+    trq_tmax(t, 1, &an, &ad);
+    return (uint64_t)an * bd >= (uint64_t)bn * ad;
+}
+
+/* The next damped step starts from the point reached (no closed form):
+ * t->J and t->T there, the box less the step so far (kept in t->keep). 0
+ * when the Jacobian there saturates (the step so far is kept). */
+static DH_NOINLINE int trq_shift(dh_track_q *t)
+{
+    const uint32_t n = t->r->n;
+    uint32_t i;
+    for (i = 0u; i < n; i++) {
+        t->keep[i] = t->dq[i];
+        t->qs[i] = t->q[i] + t->dq[i];
+    }
+    if (dh_kin_jac_q_(t->r, t->qs, t->J, &t->T) != 0) {
+        for (i = 0u; i < n; i++) t->dq[i] = t->keep[i];
+        return 0;
+    }
+    for (i = 0u; i < n; i++) {
+        t->lo[i] -= t->keep[i];
+        t->hi[i] -= t->keep[i];
+    }
+    return 1;
+}
+
+/* The box and the step back from the point reached. */
+static DH_NOINLINE void trq_unshift(dh_track_q *t)
+{
+    uint32_t i;
+    for (i = 0u; i < t->r->n; i++) {
+        t->lo[i] += t->keep[i];
+        t->hi[i] += t->keep[i];
+        t->dq[i] += t->keep[i];
+    }
+}
+
+/* 1 when the target's position is beyond the reach bound from the base. */
+static DH_NOINLINE int trq_beyond(const dh_track_q *t)
+{
+    const dh_frame_q *const target = t->tgt;
+    uint64_t s = 0u;
+    uint32_t k;
+    for (k = 0u; k < 3u; k++) {
+        const int64_t d = (int64_t)target->p[k] - t->r->base_q.p[k];
+        if (d > t->reach || d < -(int64_t)t->reach) return 1;
+        s += (uint64_t)(d * d);
+    }
+    return s > (uint64_t)dh_q_mul64(t->reach, t->reach);
+}
+
+/* dh_manipulability_q of t->J */
+static DH_NOINLINE void trq_manip(dh_track_q *t, int32_t *w, int32_t *sigma_min)
+{
+    t->work.J = t->J;
+    t->work.n = (uint8_t)t->r->n;
+    dh_kin_manip_q_(&t->work, w, sigma_min);
+}
+
+/* Away from singularities with a closed-form solution: straight for it
+ * at the bound (1); else 0 (damped steps follow). */
+static DH_NOINLINE int trq_straight(dh_track_q *t)
+{
+    if (!t->have || t->sg < t->sing_threshold) return 0;
+    trq_head(t);
+    return 1;
+}
+
+/* After the damped steps: with a closed-form solution, straight for it
+ * when the step stalls or moves away from it; without a closed form,
+ * UNREACHABLE beyond the reach bound. */
+static DH_NOINLINE void trq_settled(dh_track_q *t)
+{
+    if (t->have) {
+        /* q already reaching the target keeps its damped step */
+        if ((t->stall || trq_away(t)) && !t->at) trq_head(t);
+    } else {
+        if (t->m == NULL && trq_beyond(t)) t->unreach = 1;
+    }
+}
+
+/* The step's arguments and state into t; t->tst DH_OK for a rigid target
+ * (rotation orthonormal within DH_ROT_ERROR_TOL_Q, det > 0), else
+ * DH_ERR_NOT_RIGID. */
+static DH_NOINLINE void trq_begin(dh_track_q *t, const dh_frame_q *target, int32_t *q_out, dh_track_report_q *rep)
+{
+    t->tgt = target;
+    t->out = q_out;
+    t->rep = rep;
+    t->have = 0;
+    t->at = 0;
+    t->unreach = 0;
+    t->ns = 0u;
+    t->ist = DH_ERR_UNAVAILABLE;
+    t->tst = dh_kin_rot_error_chk_q_(target, target, &t->rD, &t->rw, t->rq);
+}
+
+/* q_out into t->q, t->v and q_out (the step clamped into the box) */
+static DH_NOINLINE void trq_move(dh_track_q *t)
+{
+    uint32_t i;
+    for (i = 0u; i < t->r->n; i++) {
+        const int64_t s = trq_clamp64(t->dq[i], t->lo[i], t->hi[i]);
+        const int32_t x = (int32_t)((int64_t)t->q[i] + s);
+        t->v[i] = x - t->q[i];
+        t->q[i] = x;
+        t->out[i] = x;
+    }
+}
+
+/* The report's defaults, t->J and t->T at q_out: 1 when they fit. */
+static DH_NOINLINE int trq_at_out(dh_track_q *t)
+{
+    dh_track_report_q *const rep = t->rep;
+    rep->manip = INT32_MIN;
+    rep->sigma_min = 0;
+    rep->pos_err = INT32_MAX;
+    rep->rot_err = INT32_MAX;
+    return (dh_kin_jac_q_(t->r, t->q, t->J, &t->T) == 0) ? 1 : 0;
+}
+
+/* The report from the pose error at q_out in t->e (ok: 0 when there is
+ * none): OK when within the tolerances. */
+static DH_NOINLINE void trq_fill(const dh_track_q *t, int ok)
+{
+    dh_track_report_q *const rep = t->rep;
+    const dh_status tst = t->tst;
+    uint64_t p2 = 0u, r2 = 0u;
+    int in = 0;
+    if (ok) {
+        in = trq_within(t, &p2, &r2);
+        rep->pos_err = (int32_t)trq_clamp64(dh_q_sqrt_u64(p2), 0, INT32_MAX);
+        rep->rot_err = (int32_t)trq_clamp64(dh_q_sqrt_u64(r2), 0, INT32_MAX);
+    }
+    if (in)
+        rep->state = DH_TRACK_OK;
+    else
+        rep->state = (t->unreach || tst != DH_OK) ? DH_TRACK_UNREACHABLE : DH_TRACK_LAGGING;
+    rep->near_singular = (rep->sigma_min < t->sing_threshold) ? 1 : 0;
+}
+
+/* The stages are called one after the other from here, each library call
+ * at most one small frame below this function (the closed-form solver's
+ * and its finish from here: dh_ikc_raw_q_ has no frame), with the state
+ * in t, so the stack stays the deepest library call plus two small
+ * frames. */
+dh_status dh_track_step_q(dh_track_q *t, const dh_frame_q *target, int32_t *q_out, dh_track_report_q *rep)
+{
+    int k = 0;
+    DH_ASSERT(t != NULL);
+    DH_ASSERT(t->r != NULL);
+    DH_ASSERT(target != NULL);
+    DH_ASSERT(q_out != NULL);
+    DH_ASSERT(rep != NULL);
+    DH_ASSERT(t->r->n >= 1u && t->r->n <= (uint32_t)DH_MAX_JOINTS);
+    trq_begin(t, target, q_out, rep);
+    trq_box(t);
+    if (t->tst != DH_OK) {
+        trq_brake(t);
+    } else {
+        if (trq_ikc_args(t)) {
+            t->ist = dh_ikc_raw_q_(t->m, t->q, t->sol, &t->ns);
+            if (t->ist == DH_OK) t->ist = dh_ikc_finish_q_(t->m, t->q, t->sol, &t->ns);
+        }
+        if (trq_pick(t)) {
+            trq_manip(t, NULL, &t->sg);
+            if (!trq_straight(t)) {
+                /* damped steps: one, or up to three without a closed form,
+                 * each on the Jacobian of the point reached */
+                for (;;) {
+                    if (trq_prep(t) && trq_solve(t) == DH_OK && (!trq_block(t) || trq_solve(t) == DH_OK))
+                        t->stall = trq_settle(t);
+                    else
+                        t->stall = trq_none(t);
+                    if (k > 0) trq_unshift(t);
+                    if (t->m != NULL || ++k > 2 || !trq_shift(t)) break;
+                    trq_manip(t, NULL, &t->sg);
+                }
+                trq_settled(t);
+            }
+        }
+    }
+    trq_move(t);
+    k = trq_at_out(t);
+    if (k) {
+        trq_manip(t, &t->rep->manip, &t->rep->sigma_min);
+        k = (t->tst == DH_OK) ? trq_error(t) : 0;
+    }
+    trq_fill(t, k);
+    return t->tst;
+}
