@@ -219,7 +219,8 @@ dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const
  *        (rotation within 2^-10 of orthonormal, det > 0; else
  *        DH_ERR_NOT_RIGID), q_ref in Q16.16 degrees / dh_qpos (NULL: zeros).
  *        DH_ERR_OVERFLOW (*n_sol = 0) when an intermediate would saturate
- *        (a target more than 2^14 length units from the base).
+ *        (a wrist centre more than 2^30 dh_qpos LSB from the base:
+ *        2^(30 - DH_QPOS_FRAC) length units, 16384 at the default 16).
  */
 dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int32_t *q_ref, uint32_t opts,
                    dh_ikc_sol_q *sol, uint32_t *n_sol);

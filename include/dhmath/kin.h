@@ -429,6 +429,8 @@ typedef struct {
  * all 0 is read as prismatic: linear rows Q2.30, else revolute: linear
  * rows dh_qpos per rad, angular rows Q2.30). G = J J^T for n >= 6, J^T J
  * for n < 6, in J's units (length unit, rad).
+ * @param J  6 x n Jacobian (not NULL), as above.
+ * @param n  columns of J, 1..DH_MAX_JOINTS.
  * @param w  may be NULL; else log2 sqrt(det G), the manipulability's base-2
  *           logarithm, in Q16.16 (a logarithm so that every robot and length
  *           unit fits: a UR5 in mm has sqrt det G near 2^26), or INT32_MIN

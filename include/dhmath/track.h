@@ -82,7 +82,8 @@ typedef struct {
     float dq_max[DH_MAX_JOINTS];       /**< step bound: vmax * dt rounded down by 2^-20 relative (+inf: unlimited) */
     float lambda;                      /**< largest damping of the DLS step (length unit; default 0.02 L) */
     float sing_threshold;              /**< near-singular threshold on sigma_min (default 0.005 L) and where the damping starts */
-    float pos_tol, rot_tol;            /**< "reached" tolerances (defaults 2e-6 L, 2e-5 rad) */
+    float pos_tol;                     /**< "reached": position tolerance, length unit (default 2e-6 L) */
+    float rot_tol;                     /**< "reached": rotation tolerance, rad (default 2e-5) */
     /* private workspace (keeps the step's stack small); read-only for the caller */
     float reach;                       /**< reach bound used for UNREACHABLE without a closed form */
     float J[6 * DH_MAX_JOINTS];        /**< Jacobian at q */
@@ -186,7 +187,10 @@ typedef struct {
     uint32_t pris;                      /**< bit i: joint i prismatic */
     dh_status ist;                      /**< closed form's status */
     dh_status tst;                      /**< the step's status */
-    int have, unreach, stall, at;       /**< the step's decisions (at: q reaches the target) */
+    int have;                           /**< the step has a closed-form solution to run for */
+    int unreach;                        /**< the target is unreachable this period */
+    int stall;                          /**< the damped step stalls */
+    int at;                             /**< q already reaches the target */
     const dh_frame_q *tgt;              /**< the step's target */
     int32_t *out;                       /**< the step's q_out */
     dh_track_report_q *rep;             /**< the step's report */

@@ -217,7 +217,7 @@ DH_INLINE dh_status dls_step_body(const dh_robot *r, const float *J, const float
     DH_ASSERT(dq != NULL);
     n = r->n;
     if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
-    if (lambda != lambda) return DH_ERR_NAN;
+    if (!dh_feq_f32(lambda, lambda)) return DH_ERR_NAN;
     if (!(lambda >= 0.0f) || !dh_isfinite_f32(lambda)) return DH_ERR_ARG;
     if (dq_max != NULL)
         for (k = 0u; k < n; k++)

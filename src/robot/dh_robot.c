@@ -175,7 +175,7 @@ dh_status dh_robot_set_rates_f32(dh_robot *r, uint32_t i, float vmax, float amax
     unsigned frac;
     DH_ASSERT(r != NULL);
     if (i >= r->n || r->n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
-    if (vmax != vmax || amax != amax) return DH_ERR_NAN;
+    if (!dh_feq_f32(vmax, vmax) || !dh_feq_f32(amax, amax)) return DH_ERR_NAN;
     if (!(vmax > 0.0f) || !(amax > 0.0f)) return DH_ERR_ARG;
     j = &r->joint[i];
     frac = (j->type == DH_JOINT_REVOLUTE) ? 16u : (unsigned)DH_QPOS_FRAC;

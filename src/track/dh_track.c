@@ -49,7 +49,7 @@ static float track_clamp(float x, float lo, float hi)
 static float track_toward(float x, float y)
 {
     uint32_t u = dh_f32_bits(x);
-    if (x == 0.0f) return (y > 0.0f) ? dh_f32_from_bits(1u) : dh_f32_from_bits(0x80000001u);
+    if (dh_feq_f32(x, 0.0f)) return (y > 0.0f) ? dh_f32_from_bits(1u) : dh_f32_from_bits(0x80000001u);
     /* towards y: away from 0 (magnitude up) when y lies beyond x */
     if (x > 0.0f) {
         if (y > x) u++;
@@ -152,7 +152,7 @@ static DH_NOINLINE void track_fit(dh_track_f32 *t)
     for (i = 0u; i < n; i++) {
         const float x = t->dq[i];
         const float b = (x > 0.0f) ? t->hi[i] : t->lo[i];
-        if (x != 0.0f) {
+        if (!dh_feq_f32(x, 0.0f)) {
             const float lim = (x > 0.0f) ? ((b > 0.0f) ? b : 0.0f) : ((b < 0.0f) ? b : 0.0f);
             if (x * s > lim && x > 0.0f) s = lim / x;
             if (x * s < lim && x < 0.0f) s = lim / x;
@@ -369,7 +369,7 @@ static DH_NOINLINE float track_put(const dh_track_f32 *t, uint32_t i)
     float x = q + t->dq[i];
     int guard;
     if (j->qmin <= j->qmax) x = track_clamp(x, j->qmin, j->qmax);
-    for (guard = 0; guard < 64 && x != q && track_abs(x - q) > d; guard++) x = track_toward(x, q);
+    for (guard = 0; guard < 64 && !dh_feq_f32(x, q) && track_abs(x - q) > d; guard++) x = track_toward(x, q);
     if (!dh_isfinite_f32(x) || track_abs(x - q) > d) x = q;
     return x;
 }

@@ -15,7 +15,10 @@
  * lines 1 mm from the wrist singularity and through the shoulder
  * singularity then held (OK again within the time the step bound allows),
  * a line leaving the workspace and coming back, a target that jumps (with
- * and without amax).
+ * and without amax). The closed form is used only for a robot whose reach
+ * fits its range (ikc.h: 2^30 LSB, 2^(30 - DH_QPOS_FRAC) mm): with
+ * DH_QPOS_FRAC 20 (1024 mm) the robots in mm are tracked by damped steps
+ * only, and the line leaving the workspace stops within the format.
  */
 #include "dht.h"
 #include "support_robots.h"
@@ -38,6 +41,21 @@ typedef struct {
     int64_t dqm[DH_MAX_JOINTS], A[DH_MAX_JOINTS];   /* the bounds, computed here */
 } rig;
 
+/* a bound on the distance of the tool from the base, mm: the lengths, the
+ * prismatic travel, the base and tool offsets */
+static double reach_mm(const dhs_robot *d)
+{
+    double L = 0.0;
+    unsigned i;
+    for (i = 0; i < d->n; i++) {
+        const dhs_joint_desc *j = &d->j[i];
+        L += fabs(j->a) + fabs(j->d);
+        if (j->type == DH_JOINT_PRISMATIC) L += fmax(fabs(j->qmin), fabs(j->qmax));
+    }
+    for (i = 0; i < 3; i++) L += fabs(DHR_M4(&d->base, i, 3)) + fabs(DHR_M4(&d->tool, i, 3));
+    return L;
+}
+
 static void rig_make(rig *g, const dhs_robot *d, int acc)
 {
     uint32_t i;
@@ -51,7 +69,8 @@ static void rig_make(rig *g, const dhs_robot *d, int acc)
         g->dqm[i] = ((int64_t)v * DT_US) / 1000000;
         g->A[i] = acc ? ((((int64_t)a * DT_US) / 1000000) * DT_US) / 1000000 : -1;
     }
-    g->closed = dh_ikc_analyse_q(&g->r, &g->m) == DH_OK && g->m.kind != DH_IKC_NONE;
+    g->closed = dh_ikc_analyse_q(&g->r, &g->m) == DH_OK && g->m.kind != DH_IKC_NONE &&
+                reach_mm(d) <= ldexp(1.0, 30 - DH_QPOS_FRAC);
 }
 
 typedef struct {
@@ -296,6 +315,11 @@ static void singular_lines(void)
         rig *const gp = &the_rig;
         long line, n_line = DHT_ITER(8), lag = 0, calls = 0;
         rig_make(gp, robots[ri], 0);
+        if (reach_mm(robots[ri]) > ldexp(1.0, 30 - DH_QPOS_FRAC)) {
+            dht_printf("%s: reach beyond the closed form's range at DH_QPOS_FRAC %d, no singular lines\n",
+                       gp->d->name, DH_QPOS_FRAC);
+            continue;
+        }
         DHT_TRUE(gp->closed);
         for (line = 0; line < n_line; line++) {
             int32_t qs[DH_MAX_JOINTS];
@@ -349,12 +373,13 @@ static void leaving_the_workspace(void)
     size_t ri;
     for (ri = 0; ri < N_ROBOTS; ri++) {
         rig *const gp = &the_rig;
-        long line, n_line = DHT_ITER(4), unr = 0, back = 0;
+        long line, n_line = DHT_ITER(4), unr = 0, back = 0, short_of = 0;
         rig_make(gp, robots[ri], 0);
         for (line = 0; line < n_line; line++) {
             int32_t qs[DH_MAX_JOINTS];
             dh_frame_q Ts, T;
             double u[3], r0, h;
+            int outside;
             const double speed = 200.0;
             long k, N;
             dh_track_q *const tp = &the_trk;
@@ -363,7 +388,12 @@ static void leaving_the_workspace(void)
             target_of(gp, qs, &Ts);
             r0 = sqrt((double)Ts.p[0] * Ts.p[0] + (double)Ts.p[1] * Ts.p[1] + (double)Ts.p[2] * Ts.p[2]) / QPOS;
             for (k = 0; k < 3; k++) u[k] = Ts.p[k] / QPOS / r0;
-            h = 2000.0;
+            /* 2 m out, or as far as the format represents (3 % short of
+             * 2^31 LSB: with DH_QPOS_FRAC 20 the KR5's reach is beyond it,
+             * and only the per-call guarantees are checked) */
+            h = fmin(2000.0, 0.97 * ldexp(1.0, 31 - DH_QPOS_FRAC) - r0);
+            outside = r0 + h > 1.01 * reach_mm(gp->d);
+            if (!outside) short_of++;
             N = (long)(h / speed * 1e6 / DT_US);
             DHT_EQ_INT(dh_track_init_q(tp, &gp->r, gp->closed ? &gp->m : NULL, qs, DT_US), DH_OK);
             chk_start(&c, qs, gp->r.n);
@@ -374,7 +404,8 @@ static void leaving_the_workspace(void)
                 for (j = 0; j < 3; j++) T.p[j] = Ts.p[j] + (int32_t)floor(u[j] * h * s * QPOS + 0.5);
                 (void)step_checked(gp, tp, &c, &T, "workspace line");
             }
-            DHT_TRUE_MSG(c.unr > 0, "%s: a target 2 m outside never UNREACHABLE", gp->d->name);
+            DHT_TRUE_MSG(c.unr > 0 || !outside, "%s: a target %.0f mm outside the reach never UNREACHABLE",
+                         gp->d->name, r0 + h - reach_mm(gp->d));
             if (gp->closed) {
                 hold_until_ok(gp, tp, &c, &Ts, "workspace line end", 40000);
             } else {
@@ -386,8 +417,8 @@ static void leaving_the_workspace(void)
             }
             unr += c.unr;
         }
-        dht_printf("%s: %ld lines out of the workspace, %ld calls UNREACHABLE%s", gp->d->name, n_line, unr,
-                   gp->closed ? "\n" : "");
+        dht_printf("%s: %ld lines out of the workspace (%ld ending within the reach: the format's range), "
+                   "%ld calls UNREACHABLE%s", gp->d->name, n_line, short_of, unr, gp->closed ? "\n" : "");
         if (!gp->closed) dht_printf(", %ld reached again by damped steps only\n", back);
     }
 }
