@@ -266,6 +266,8 @@ typedef struct {
     float u0[3];     /**< arc: p_A - centre (0 for a line) */
     float u1[3];     /**< arc: p_B - centre (0 for a line) */
     float n[3];      /**< arc: unit normal; the arc turns counterclockwise about it (0 for a line) */
+    dh_quat_f32 qa;  /**< unit quaternion of R_A (dh_mat3_to_quat_f32) */
+    dh_quat_f32 qb;  /**< unit quaternion of R_B, of the sign with qa . qb >= 0 (the shorter arc) */
     float length;    /**< position length of the path (the user's length unit) */
     float angle;     /**< rotation angle from R_A to R_B, degrees in [0, 180] (dh_pose_angle_f32) */
     float radius;    /**< arc radius (0 for a line) */
@@ -311,14 +313,15 @@ dh_status dh_path_arc_f32(dh_path_f32 *p, const dh_mat4_f32 *A, const float via[
 /**
  * @brief T = the frame of the path p at s: position at the fraction s of
  *        the length along the line or arc, rotation at the fraction s of
- *        p->angle along the shortest arc (dh_pose_interp_f32).
+ *        p->angle along the shortest arc (the slerp of dh_pose_interp_f32).
  * @param p path from dh_path_line_f32 or dh_path_arc_f32.
  * @param s path parameter, any value but NaN: clamped to [0, 1]; s <= 0
  *        gives T == p->A and s >= 1 gives T == p->B bit for bit.
  * @param T output frame (must not alias p).
  * The arc is evaluated from its nearer end (p_A + (cos phi - 1) u0 +
  * sin phi n x u0, phi = s sweep, and the mirror image from p_B).
- * @return DH_OK; DH_ERR_NAN for a NaN s (T untouched).
+ * @return DH_OK; DH_ERR_NAN for a NaN s; DH_ERR_ARG when p holds no path
+ *         (quaternions not unit: e.g. all zero). T untouched on error.
  * Position within 4 FLT_EPSILON S of the exact line, within 3 E (see
  * dh_path_arc_f32) of the exact arc at s; rotation as dh_pose_interp_f32.
  */
@@ -367,7 +370,8 @@ dh_status dh_path_move_f32(dh_profile_f32 *prof, const dh_path_f32 *p, const dh_
  *        t <= 0 gives p->A and t >= prof->T gives p->B bit for bit; a
  *        profile with d == 0 (no motion, or a failed call) keeps p->A.
  * @param T output frame (must not alias p); v output speed.
- * @return DH_OK; DH_ERR_NAN for a NaN t (T and v untouched).
+ * @return DH_OK; DH_ERR_NAN for a NaN t; DH_ERR_ARG when p holds no path
+ *         (as dh_path_eval_f32). T and v untouched on error.
  */
 dh_status dh_path_move_eval_f32(const dh_profile_f32 *prof, const dh_path_f32 *p, float t, dh_mat4_f32 *T,
                                 float *v);

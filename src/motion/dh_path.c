@@ -3,9 +3,11 @@
  * dh_path.c - Cartesian paths (line, circular arc) between two frames and
  * their time-optimal trapezoidal moves.
  *
- * Orientation of every path: dh_pose_interp_f32 from A to B (slerp along
- * the shortest arc, angle proportional to s). Position of a line: that of
- * dh_pose_interp_f32 (p_A + s (p_B - p_A)). Position of an arc: the circle
+ * Orientation of every path: that of dh_pose_interp_f32 from A to B (the
+ * slerp of the unit quaternions of R_A and R_B along the shortest arc,
+ * angle proportional to s), from the quaternions the path keeps, so that
+ * an evaluation converts no matrix and checks no rotation. Position of a
+ * line: p_A + s (p_B - p_A) from the nearer end. Position of an arc: the circle
  * through p_A, the via point V and p_B. With a = V - p_A, b = p_B - p_A
  * (both divided by the longest side L of the triangle, so no square or
  * cube of a length overflows or underflows) and n = a x b, the centre is
@@ -43,6 +45,7 @@
 #include "dhmath/motion.h"
 #include "dhmath/mat4.h"
 #include "../internal/dh_floatops.h"
+#include "motion_impl.h"
 
 #define PATH_2PI 6.283185307179586f
 #define PATH_THIN 9.765625e-4f        /* 2^-10: the thinnest triangle of an arc */
@@ -73,83 +76,110 @@ static void path_cross(const float a[3], const float b[3], float out[3])
     out[2] = z;
 }
 
-/* The checks shared by both paths: A and B rigid frames, d = p_B - p_A
- * finite, *deg the angle from R_A to R_B */
-static dh_status path_ends(const dh_mat4_f32 *A, const dh_mat4_f32 *B, float d[3], float *deg)
+/* *q = dh_mat3_to_quat_f32 of T's rotation (the matrix copy kept out of
+ * the callers' frames) */
+static DH_NOINLINE dh_status path_quat(const dh_mat4_f32 *T, dh_quat_f32 *q)
+{
+    dh_mat3_f32 R;
+    dh_mat4_get_rot_f32(T, &R);
+    return dh_mat3_to_quat_f32(&R, q);
+}
+
+/* the rotation check of dh_mat3_to_quat_f32 on T's rotation */
+static DH_NOINLINE dh_status path_rot_check(const dh_mat4_f32 *T)
+{
+    dh_mat3_f32 R;
+    dh_mat4_get_rot_f32(T, &R);
+    return dh_mat3_check_rot_f32(&R, DH_ROT_TOL);
+}
+
+/* The checks shared by both paths: A and B rigid frames whose rotations
+ * dh_mat3_to_quat_f32 accepts, p_B - p_A and (via != NULL) via - p_A
+ * finite; via's entries finite. */
+static dh_status path_check(const dh_mat4_f32 *A, const dh_mat4_f32 *B, const float *via)
 {
     dh_status st = dh_mat4_check_rigid_f32(A, DH_ROT_TOL);
     int i;
     if (st == DH_OK) st = dh_mat4_check_rigid_f32(B, DH_ROT_TOL);
-    if (st != DH_OK) return st;
-    for (i = 0; i < 3; i++) {
-        d[i] = DH_M4(B, i, 3) - DH_M4(A, i, 3);
-        if (!dh_isfinite_f32(d[i])) return DH_ERR_OVERFLOW;
+    if (st == DH_OK) st = path_rot_check(A);
+    if (st == DH_OK) st = path_rot_check(B);
+    if (st == DH_OK && via != NULL && !dh_allfinite_f32(via, 3u)) st = DH_ERR_NAN;
+    for (i = 0; i < 3 && st == DH_OK; i++) {
+        if (!dh_isfinite_f32(DH_M4(B, i, 3) - DH_M4(A, i, 3))) st = DH_ERR_OVERFLOW;
+        if (via != NULL && !dh_isfinite_f32(via[i] - DH_M4(A, i, 3))) st = DH_ERR_OVERFLOW;
     }
-    return dh_pose_angle_f32(A, B, deg);
+    return st;
 }
 
-/* The circle of an arc (the arc's fields of dh_path_f32) */
-typedef struct {
-    float u0[3], u1[3], n[3], radius, sweep, length;
-} path_circle_t;
-
-/* p = the path of kind k from A to B with the angle deg and the circle c
- * (all zero for a line) */
-static void path_store(dh_path_f32 *p, const dh_mat4_f32 *A, const dh_mat4_f32 *B, float deg,
-                       const path_circle_t *c, dh_path_kind k)
+/* p's ends, their quaternions (on the shorter arc), the angle deg and the
+ * kind k, after path_check accepted A and B (so the conversions, whose
+ * rotation check it made, succeed) */
+static void path_finish(dh_path_f32 *p, const dh_mat4_f32 *A, const dh_mat4_f32 *B, float deg, dh_path_kind k)
 {
-    int i;
+    (void)path_quat(A, &p->qa);
+    (void)path_quat(B, &p->qb);
+    dh_motion_shorter_f32_(&p->qa, &p->qb);
     p->A = *A;
     p->B = *B;
-    for (i = 0; i < 3; i++) {
-        p->u0[i] = c->u0[i];
-        p->u1[i] = c->u1[i];
-        p->n[i] = c->n[i];
-    }
-    p->length = c->length;
     p->angle = deg;
-    p->radius = c->radius;
-    p->sweep = c->sweep;
     p->kind = (uint32_t)k;
+}
+
+/* |p_B - p_A| (+Inf when it overflows) */
+static DH_NOINLINE float path_length(const dh_mat4_f32 *A, const dh_mat4_f32 *B)
+{
+    float d[3];
+    int i;
+    for (i = 0; i < 3; i++) d[i] = DH_M4(B, i, 3) - DH_M4(A, i, 3);
+    return path_norm(d);
 }
 
 dh_status dh_path_line_f32(dh_path_f32 *p, const dh_mat4_f32 *A, const dh_mat4_f32 *B)
 {
-    static const path_circle_t line = { { 0.0f, 0.0f, 0.0f }, { 0.0f, 0.0f, 0.0f }, { 0.0f, 0.0f, 0.0f },
-                                        0.0f, 0.0f, 0.0f };
-    path_circle_t c;
-    float d[3], deg;
+    float len, deg;
     dh_status st;
+    int i;
     DH_ASSERT(p != NULL && A != NULL && B != NULL);
-    st = path_ends(A, B, d, &deg);
+    st = path_check(A, B, NULL);
     if (st != DH_OK) return st;
-    c = line;
-    c.length = path_norm(d);
-    if (!dh_isfinite_f32(c.length)) return DH_ERR_OVERFLOW;
-    path_store(p, A, B, deg, &c, DH_PATH_LINE);
+    len = path_length(A, B);
+    if (!dh_isfinite_f32(len)) return DH_ERR_OVERFLOW;
+    st = dh_pose_angle_f32(A, B, &deg);
+    if (st != DH_OK) return st;
+    for (i = 0; i < 3; i++) {
+        p->u0[i] = 0.0f;
+        p->u1[i] = 0.0f;
+        p->n[i] = 0.0f;
+    }
+    p->length = len;
+    p->radius = 0.0f;
+    p->sweep = 0.0f;
+    path_finish(p, A, B, deg, DH_PATH_LINE);
     return DH_OK;
 }
 
-/* The circle q of the arc from a = via - p_A and b = p_B - p_A (both
- * modified). DH_ERR_OVERFLOW for a side that overflows, DH_ERR_SINGULAR
- * for a thin triangle. */
-static DH_NOINLINE dh_status path_circle(path_circle_t *q, float a[3], float b[3])
+/* The circle of the arc from p_A through via to p_B into p's u0, u1, n,
+ * radius, sweep and length, written only on success. DH_ERR_OVERFLOW for
+ * a side or a length that overflows, DH_ERR_SINGULAR for a thin triangle. */
+static DH_NOINLINE dh_status path_circle(dh_path_f32 *p, const dh_mat4_f32 *A, const float via[3],
+                                         const dh_mat4_f32 *B)
 {
-    float e[3], n[3], c[3], t[3], L, la, lb, ln, sa, sb, w;
+    float a[3], b[3], n[3], c[3], L, la, lb, ln, w, r;
     int i;
     for (i = 0; i < 3; i++) {
-        e[i] = b[i] - a[i];
-        if (!dh_isfinite_f32(e[i])) return DH_ERR_OVERFLOW;
+        a[i] = via[i] - DH_M4(A, i, 3);
+        b[i] = DH_M4(B, i, 3) - DH_M4(A, i, 3);
+        c[i] = b[i] - a[i];
+        if (!dh_isfinite_f32(c[i])) return DH_ERR_OVERFLOW;
     }
     L = path_norm(a);
     la = path_norm(b);
     if (la > L) L = la;
-    la = path_norm(e);
+    la = path_norm(c);
     if (la > L) L = la;
     if (!dh_isfinite_f32(L)) return DH_ERR_OVERFLOW;
     if (!(L > 0.0f)) return DH_ERR_SINGULAR;
     for (i = 0; i < 3; i++) {
-        e[i] = b[i];                 /* b unscaled, for u1 */
         a[i] /= L;
         b[i] /= L;
     }
@@ -159,43 +189,39 @@ static DH_NOINLINE dh_status path_circle(path_circle_t *q, float a[3], float b[3
     la = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
     lb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
     path_cross(b, n, c);
-    path_cross(n, a, t);
+    path_cross(n, a, a);
     w = 0.5f / (ln * ln);
     for (i = 0; i < 3; i++) {
-        c[i] = (la * c[i] + lb * t[i]) * w;   /* centre - p_A, over L */
-        q->n[i] = n[i] / ln;
-        q->u0[i] = -L * c[i];
-        q->u1[i] = e[i] - L * c[i];
-        b[i] -= c[i];                         /* u1 / L */
+        c[i] = (la * c[i] + lb * a[i]) * w;   /* centre - p_A, over L */
+        n[i] /= ln;
+        b[i] -= c[i];                         /* p_B - centre, over L */
     }
     /* the sweep from u0 = -c to u1 = b - c about n, in (0, 2 pi) */
-    path_cross(c, b, t);
-    sa = -(t[0] * q->n[0] + t[1] * q->n[1] + t[2] * q->n[2]);
-    sb = -(c[0] * b[0] + c[1] * b[1] + c[2] * b[2]);
-    w = dh_atan2f_(sa, sb);
+    path_cross(c, b, a);
+    w = dh_atan2f_(-(a[0] * n[0] + a[1] * n[1] + a[2] * n[2]), -(c[0] * b[0] + c[1] * b[1] + c[2] * b[2]));
     if (w < 0.0f) w += PATH_2PI;
-    q->radius = L * dh_sqrt_f32(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-    q->sweep = w * DH_RAD2DEG_F;
-    q->length = q->radius * w;
-    return dh_isfinite_f32(q->length) ? DH_OK : DH_ERR_OVERFLOW;
+    r = L * dh_sqrt_f32(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    if (!dh_isfinite_f32(r * w)) return DH_ERR_OVERFLOW;
+    for (i = 0; i < 3; i++) {
+        p->n[i] = n[i];
+        p->u0[i] = -L * c[i];
+        p->u1[i] = (DH_M4(B, i, 3) - DH_M4(A, i, 3)) - L * c[i];
+    }
+    p->radius = r;
+    p->sweep = w * DH_RAD2DEG_F;
+    p->length = r * w;
+    return DH_OK;
 }
 
 dh_status dh_path_arc_f32(dh_path_f32 *p, const dh_mat4_f32 *A, const float via[3], const dh_mat4_f32 *B)
 {
-    path_circle_t c;
-    float a[3], b[3], deg;
+    float deg;
     dh_status st;
-    int i;
     DH_ASSERT(p != NULL && A != NULL && via != NULL && B != NULL);
-    st = path_ends(A, B, b, &deg);
-    if (st == DH_OK && !dh_allfinite_f32(via, 3u)) st = DH_ERR_NAN;
-    if (st != DH_OK) return st;
-    for (i = 0; i < 3; i++) {
-        a[i] = via[i] - DH_M4(A, i, 3);
-        if (!dh_isfinite_f32(a[i])) return DH_ERR_OVERFLOW;
-    }
-    st = path_circle(&c, a, b);
-    if (st == DH_OK) path_store(p, A, B, deg, &c, DH_PATH_ARC);
+    st = path_check(A, B, via);
+    if (st == DH_OK) st = dh_pose_angle_f32(A, B, &deg);
+    if (st == DH_OK) st = path_circle(p, A, via, B);
+    if (st == DH_OK) path_finish(p, A, B, deg, DH_PATH_ARC);
     return st;
 }
 
@@ -217,18 +243,63 @@ static DH_NOINLINE void path_arc_point(const dh_path_f32 *p, float s, dh_mat4_f3
     for (i = 0; i < 3; i++) DH_M4(T, i, 3) = DH_M4(E, i, 3) + (cm * u[i] + sn * t[i]);
 }
 
+/* T's rotation = that of the unit quaternion q */
+static DH_NOINLINE void path_rot_set(const dh_quat_f32 *q, dh_mat4_f32 *T)
+{
+    dh_mat3_f32 R;
+    (void)dh_quat_to_mat3_f32(q, &R);
+    dh_mat4_set_rot_f32(T, &R);
+}
+
+/* The rotation of p at 0 < s < 1 into T, with the bottom row */
+static DH_NOINLINE void path_rot(const dh_path_f32 *p, float s, dh_mat4_f32 *T)
+{
+    dh_quat_f32 q;
+    int i;
+    dh_motion_slerp_f32_(&p->qa, &p->qb, s, &q);
+    path_rot_set(&q, T);
+    for (i = 0; i < 3; i++) DH_M4(T, 3, i) = 0.0f;
+    DH_M4(T, 3, 3) = 1.0f;
+}
+
+/* The position of the line of p at 0 < s < 1 into T, from the nearer end
+ * (as dh_pose_interp_f32) */
+static DH_NOINLINE void path_line_point(const dh_path_f32 *p, float s, dh_mat4_f32 *T)
+{
+    float dp;
+    int i;
+    for (i = 0; i < 3; i++) {
+        dp = DH_M4(&p->B, i, 3) - DH_M4(&p->A, i, 3);
+        DH_M4(T, i, 3) = (s > 0.5f) ? DH_M4(&p->B, i, 3) - (1.0f - s) * dp : DH_M4(&p->A, i, 3) + s * dp;
+    }
+}
+
+/* 1 when p holds a path: its quaternions are unit within rounding (an
+ * all-zero or NaN struct is not) */
+static int path_ok(const dh_path_f32 *p)
+{
+    const dh_quat_f32 *a = &p->qa, *b = &p->qb;
+    float na = a->w * a->w + a->x * a->x + a->y * a->y + a->z * a->z;
+    float nb = b->w * b->w + b->x * b->x + b->y * b->y + b->z * b->z;
+    return na > 0.5f && na < 2.0f && nb > 0.5f && nb < 2.0f;
+}
+
 dh_status dh_path_eval_f32(const dh_path_f32 *p, float s, dh_mat4_f32 *T)
 {
-    dh_status st;
     DH_ASSERT(p != NULL && T != NULL);
     if (isunordered(s, s)) return DH_ERR_NAN;
+    if (!path_ok(p)) return DH_ERR_ARG;
     if (!(s > 0.0f) || !(s < 1.0f)) {
         *T = (s > 0.0f) ? p->B : p->A;
         return DH_OK;
     }
-    st = dh_pose_interp_f32(&p->A, &p->B, s, T);
-    if (st == DH_OK && p->kind == (uint32_t)DH_PATH_ARC) path_arc_point(p, s, T);
-    return st;
+    path_rot(p, s, T);
+    if (p->kind == (uint32_t)DH_PATH_ARC) {
+        path_arc_point(p, s, T);
+    } else {
+        path_line_point(p, s, T);
+    }
+    return DH_OK;
 }
 
 /* *sl = min(*sl, num / den) for den > 0 (*sl == 0: no bound yet); a
@@ -290,12 +361,12 @@ dh_status dh_path_move_f32(dh_profile_f32 *prof, const dh_path_f32 *p, const dh_
 dh_status dh_path_move_eval_f32(const dh_profile_f32 *prof, const dh_path_f32 *p, float t, dh_mat4_f32 *T,
                                 float *v)
 {
-    float s, sd, sdd;
-    dh_status st;
     DH_ASSERT(prof != NULL && p != NULL && T != NULL && v != NULL);
     if (isunordered(t, t)) return DH_ERR_NAN;
-    (void)dh_profile_eval_f32(prof, t, &s, &sd, &sdd);
-    st = dh_path_eval_f32(p, s, T);
-    if (st == DH_OK) *v = p->length * sd;
-    return st;
+    if (!path_ok(p)) return DH_ERR_ARG;
+    /* s, s' and s'' in T's position column (no locals beside the path's
+     * evaluation: stack), which dh_path_eval_f32 then overwrites */
+    (void)dh_profile_eval_f32(prof, t, &DH_M4(T, 0, 3), &DH_M4(T, 1, 3), &DH_M4(T, 2, 3));
+    *v = p->length * DH_M4(T, 1, 3);
+    return dh_path_eval_f32(p, DH_M4(T, 0, 3), T);
 }

@@ -274,6 +274,9 @@ static void motion_path_bad(void)
     CANARY(T);
     DHT_EQ_INT(dh_path_eval_f32(&good, bad_value(0), &T), DH_ERR_NAN);
     DHT_EQ_INT(dh_path_eval_f32(&good, bad_value(3), &T), DH_ERR_NAN);
+    memset(&good, 0, sizeof good);              /* no constructor wrote it */
+    DHT_EQ_INT(dh_path_eval_f32(&good, 0.5f, &T), DH_ERR_ARG);
+    DHT_EQ_INT(dh_path_eval_f32(&good, 0.0f, &T), DH_ERR_ARG);
     UNTOUCHED(T);
 }
 
@@ -337,6 +340,8 @@ static void motion_path_move_bad(void)
     CANARY(T);
     CANARY(v);
     DHT_EQ_INT(dh_path_move_eval_f32(&prof, &p, bad_value(0), &T, &v), DH_ERR_NAN);
+    memset(&p, 0, sizeof p);                    /* no constructor wrote it */
+    DHT_EQ_INT(dh_path_move_eval_f32(&prof, &p, 0.5f, &T, &v), DH_ERR_ARG);
     UNTOUCHED(T);
     UNTOUCHED(v);
 }
