@@ -255,10 +255,10 @@ typedef enum {
 /**
  * @brief A Cartesian path from frame A to frame B, written by
  *        dh_path_line_f32 / dh_path_arc_f32 and read by dh_path_eval_f32
- *        (read-only for the user except length, angle, radius and sweep,
- *        which the user may read). Position advances along the line or arc
- *        in proportion to s, orientation along the shortest arc from R_A
- *        to R_B in proportion to s (dh_pose_interp_f32).
+ *        (read-only for the user, who reads length, angle, radius and
+ *        sweep). Position advances along the line or arc in proportion to
+ *        s, orientation along the shortest arc from R_A to R_B in
+ *        proportion to s (as dh_pose_interp_f32).
  */
 typedef struct {
     dh_mat4_f32 A;   /**< start frame (s = 0) */
@@ -306,7 +306,7 @@ dh_status dh_path_line_f32(dh_path_f32 *p, const dh_mat4_f32 *A, const dh_mat4_f
  *         coincident points (the thin triangle above). p untouched on error.
  * radius within E = 16 FLT_EPSILON (S + R + L) / (|a x b| / L^2) of the
  * circle through the three points (S the largest of |p_A|, |via|, |p_B|),
- * sweep within 2 E / R radians, length within 9 E.
+ * sweep within 2 E / R + 2 FLT_EPSILON sweep (radians), length within 9 E.
  */
 dh_status dh_path_arc_f32(dh_path_f32 *p, const dh_mat4_f32 *A, const float via[3], const dh_mat4_f32 *B);
 
@@ -369,7 +369,8 @@ dh_status dh_path_move_f32(dh_profile_f32 *prof, const dh_path_f32 *p, const dh_
  * @param t time (s), any value but NaN (clamped as dh_profile_eval_f32):
  *        t <= 0 gives p->A and t >= prof->T gives p->B bit for bit; a
  *        profile with d == 0 (no motion, or a failed call) keeps p->A.
- * @param T output frame (must not alias p); v output speed.
+ * @param T output frame (must not alias p).
+ * @param v output: the tool point's speed (length unit / s).
  * @return DH_OK; DH_ERR_NAN for a NaN t; DH_ERR_ARG when p holds no path
  *         (as dh_path_eval_f32). T and v untouched on error.
  */
