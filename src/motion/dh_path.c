@@ -35,9 +35,9 @@
  * acceleration length * s'' and, on an arc of radius R, centripetal
  * acceleration (length s')^2 / R; the rotation turns at angle * s' about a
  * fixed axis (angular acceleration angle * s''). On an arc the speed is
- * held to V = sqrt(amax R / sqrt 2), so the centripetal acceleration is at
- * most amax / sqrt 2, and the tangential one to sqrt(amax^2 - (V^2/R)^2):
- * the total stays within amax.
+ * held to V = min(vmax, sqrt(amax R / sqrt 2)), so the centripetal
+ * acceleration is at most amax / sqrt 2, and the tangential one to
+ * sqrt(amax^2 - (V^2/R)^2): the total stays within amax.
  */
 #include <float.h>
 #include <math.h>
