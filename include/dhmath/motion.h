@@ -6,6 +6,8 @@
  *                    dh_profile_quintic_f32, dh_profile_stretch_f32,
  *                    dh_profile_eval_f32
  *   dh_joint_move.c  dh_joint_move_f32, dh_joint_move_eval_f32
+ *   dh_path.c        dh_path_line_f32, dh_path_arc_f32, dh_path_eval_f32,
+ *                    dh_path_move_f32, dh_path_move_eval_f32
  */
 /**
  * @file motion.h
@@ -239,6 +241,141 @@ dh_status dh_joint_move_f32(dh_profile_f32 *prof, uint32_t n, const float *q0, c
  */
 dh_status dh_joint_move_eval_f32(const dh_profile_f32 *prof, uint32_t n, const float *q0, const float *q1,
                                  float t, float *q, float *qd, float *qdd);
+
+/* ======================================================================
+ * Cartesian paths and moves
+ * ==================================================================== */
+
+/** @brief The form of a dh_path_f32. */
+typedef enum {
+    DH_PATH_LINE = 0, /**< straight line from p_A to p_B */
+    DH_PATH_ARC = 1   /**< circular arc from p_A through a via point to p_B */
+} dh_path_kind;
+
+/**
+ * @brief A Cartesian path from frame A to frame B, written by
+ *        dh_path_line_f32 / dh_path_arc_f32 and read by dh_path_eval_f32
+ *        (read-only for the user, who reads length, angle, radius and
+ *        sweep). Position advances along the line or arc in proportion to
+ *        s, orientation along the shortest arc from R_A to R_B in
+ *        proportion to s (as dh_pose_interp_f32).
+ */
+typedef struct {
+    dh_mat4_f32 A;   /**< start frame (s = 0) */
+    dh_mat4_f32 B;   /**< end frame (s = 1) */
+    float u0[3];     /**< arc: p_A - centre (0 for a line) */
+    float u1[3];     /**< arc: p_B - centre (0 for a line) */
+    float n[3];      /**< arc: unit normal; the arc turns counterclockwise about it (0 for a line) */
+    dh_quat_f32 qa;  /**< unit quaternion of R_A (dh_mat3_to_quat_f32) */
+    dh_quat_f32 qb;  /**< unit quaternion of R_B, of the sign with qa . qb >= 0 (the shorter arc) */
+    float length;    /**< position length of the path (the user's length unit) */
+    float angle;     /**< rotation angle from R_A to R_B, degrees in [0, 180] (dh_pose_angle_f32) */
+    float radius;    /**< arc radius (0 for a line) */
+    float sweep;     /**< arc angle about the centre, degrees in (0, 360) (0 for a line) */
+    uint32_t kind;   /**< a dh_path_kind value */
+} dh_path_f32;
+
+/**
+ * @brief p = the straight line from frame A to frame B: position
+ *        p_A + s (p_B - p_A), orientation slerped along the shortest arc.
+ * @param p output path (kind DH_PATH_LINE); p->length = |p_B - p_A| (no
+ *        overflow of the squares), p->angle as dh_pose_angle_f32.
+ * @param A, B rigid frames (dh_mat4_check_rigid_f32(., DH_ROT_TOL)); equal
+ *        positions are fine (a pure rotation, length 0).
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf entry; DH_ERR_NOT_RIGID if A or
+ *         B is not a rigid frame; DH_ERR_OVERFLOW when p_B - p_A or its
+ *         length overflows. p untouched on error.
+ * length within 4 FLT_EPSILON length, angle as dh_pose_angle_f32 (1e-4 degrees).
+ */
+dh_status dh_path_line_f32(dh_path_f32 *p, const dh_mat4_f32 *A, const dh_mat4_f32 *B);
+
+/**
+ * @brief p = the circular arc from p_A through the point via to p_B (the
+ *        circle through the three points, traversed p_A -> via -> p_B),
+ *        orientation slerped along the shortest arc from R_A to R_B.
+ * @param p output path (kind DH_PATH_ARC): radius, sweep (degrees),
+ *        length = radius * sweep in radians, angle as dh_pose_angle_f32.
+ * @param A, B rigid frames (dh_mat4_check_rigid_f32(., DH_ROT_TOL)).
+ * @param via a point on the arc (3 floats, the position unit of A and B).
+ * The triangle p_A, via, p_B must not be thin: |a x b| > 2^-10 L^2 with
+ * a = via - p_A, b = p_B - p_A and L its longest side, so the radius is
+ * at most 512 L (a flatter arc is a line).
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf entry or via; DH_ERR_NOT_RIGID
+ *         if A or B is not a rigid frame; DH_ERR_OVERFLOW when a side of
+ *         the triangle overflows; DH_ERR_SINGULAR for collinear or
+ *         coincident points (the thin triangle above). p untouched on error.
+ * radius within E = 16 FLT_EPSILON (S + R + L) / (|a x b| / L^2) of the
+ * circle through the three points (S the largest of |p_A|, |via|, |p_B|),
+ * sweep within 2 E / R + 2 FLT_EPSILON sweep (radians), length within 9 E.
+ */
+dh_status dh_path_arc_f32(dh_path_f32 *p, const dh_mat4_f32 *A, const float via[3], const dh_mat4_f32 *B);
+
+/**
+ * @brief T = the frame of the path p at s: position at the fraction s of
+ *        the length along the line or arc, rotation at the fraction s of
+ *        p->angle along the shortest arc (the slerp of dh_pose_interp_f32).
+ * @param p path from dh_path_line_f32 or dh_path_arc_f32.
+ * @param s path parameter, any value but NaN: clamped to [0, 1]; s <= 0
+ *        gives T == p->A and s >= 1 gives T == p->B bit for bit.
+ * @param T output frame (must not alias p).
+ * The arc is evaluated from its nearer end (p_A + (cos phi - 1) u0 +
+ * sin phi n x u0, phi = s sweep, and the mirror image from p_B).
+ * @return DH_OK; DH_ERR_NAN for a NaN s; DH_ERR_ARG when p holds no path
+ *         (quaternions not unit: e.g. all zero). T untouched on error.
+ * Position within 4 FLT_EPSILON S of the exact line, within 3 E (see
+ * dh_path_arc_f32) of the exact arc at s; rotation as dh_pose_interp_f32.
+ */
+dh_status dh_path_eval_f32(const dh_path_f32 *p, float s, dh_mat4_f32 *T);
+
+/**
+ * @brief Cartesian limits of a move: magnitudes of the tool point's speed
+ *        and TOTAL acceleration (tangential and centripetal) and of the
+ *        tool's angular speed and acceleration.
+ */
+typedef struct {
+    float vmax; /**< linear speed (length unit / s) */
+    float amax; /**< linear acceleration, total: |d^2 p / dt^2| (length unit / s^2) */
+    float wmax; /**< angular speed (deg/s) */
+    float wdmax; /**< angular acceleration (deg/s^2) */
+} dh_cart_limits_f32;
+
+/**
+ * @brief prof = the time-optimal trapezoidal profile of s from 0 to 1
+ *        along the path p within lim: s' <= min(V / length, wmax / angle),
+ *        s'' <= min(At / length, wdmax / angle) (terms of length or angle
+ *        0 left out), V and At the speed and tangential acceleration of
+ *        the tool point: on a line V = vmax, At = amax; on an arc of
+ *        radius R, V = min(vmax, sqrt(amax R / sqrt 2)) and
+ *        At = sqrt(amax^2 - (V^2 / R)^2), so the centripetal acceleration
+ *        is at most amax / sqrt 2 and the total at most amax.
+ * @param prof output (dh_profile_trap_f32 of d = 1, or of d = 0 when
+ *        length and angle are 0: T = 0).
+ * @param p path from dh_path_line_f32 or dh_path_arc_f32.
+ * @param lim limits, each finite and > 0.
+ * Speed, acceleration and angular rates within their limits up to float
+ * rounding (1e-6 relative).
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf limit; DH_ERR_ARG for a limit
+ *         <= 0; DH_ERR_OVERFLOW when a limit of s or the profile is not
+ *         a positive finite float. On error *prof is all zero: no move,
+ *         duration 0, so dh_path_move_eval_f32 keeps the frame at p->A.
+ */
+dh_status dh_path_move_f32(dh_profile_f32 *prof, const dh_path_f32 *p, const dh_cart_limits_f32 *lim);
+
+/**
+ * @brief T = the frame of the move (prof, p) at time t: dh_path_eval_f32
+ *        at s = the profile's position; v = the tool point's speed
+ *        p->length * ds/dt (>= 0).
+ * @param prof, p the move of dh_path_move_f32 and its path.
+ * @param t time (s), any value but NaN (clamped as dh_profile_eval_f32):
+ *        t <= 0 gives p->A and t >= prof->T gives p->B bit for bit; a
+ *        profile with d == 0 (no motion, or a failed call) keeps p->A.
+ * @param T output frame (must not alias p).
+ * @param v output: the tool point's speed (length unit / s).
+ * @return DH_OK; DH_ERR_NAN for a NaN t; DH_ERR_ARG when p holds no path
+ *         (as dh_path_eval_f32). T and v untouched on error.
+ */
+dh_status dh_path_move_eval_f32(const dh_profile_f32 *prof, const dh_path_f32 *p, float t, dh_mat4_f32 *T,
+                                float *v);
 
 #ifdef __cplusplus
 }

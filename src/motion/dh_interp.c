@@ -21,9 +21,9 @@
 #include "dhmath/motion.h"
 #include "dhmath/mat4.h"
 #include "../internal/dh_floatops.h"
+#include "motion_impl.h"
 
-/* qb replaced by -qb when qa . qb < 0: the shorter of the two arcs */
-static void interp_shorter(const dh_quat_f32 *qa, dh_quat_f32 *qb)
+void dh_motion_shorter_f32_(const dh_quat_f32 *qa, dh_quat_f32 *qb)
 {
     if (qa->w * qb->w + qa->x * qb->x + qa->y * qb->y + qa->z * qb->z < 0.0f) {
         qb->w = -qb->w;
@@ -33,11 +33,10 @@ static void interp_shorter(const dh_quat_f32 *qa, dh_quat_f32 *qb)
     }
 }
 
-/* The slerp of the unit quaternions qa, qb (qa . qb >= 0) at s into *out;
- * s == 0 and s == 1 (and no rotation between them) copy the nearer end.
+/* dh_motion_slerp_f32_ (motion_impl.h).
  * The argument s h or (1 - s) h is at most pi/4 (h <= pi/2 since r.w >= 0,
  * up to rounding), so the sine and cosine need no argument reduction. */
-static DH_NOINLINE void interp_arc(const dh_quat_f32 *qa, const dh_quat_f32 *qb, float s, dh_quat_f32 *out)
+DH_NOINLINE void dh_motion_slerp_f32_(const dh_quat_f32 *qa, const dh_quat_f32 *qb, float s, dh_quat_f32 *out)
 {
     dh_quat_f32 r;
     float n, h, sn, cs;
@@ -77,8 +76,8 @@ dh_status dh_slerp_f32(const dh_quat_f32 *a, const dh_quat_f32 *b, float s, dh_q
     if (st == DH_OK) st = dh_quat_normalize_f32(b, &qb);
     if (st != DH_OK) return st;
     if (s < 0.0f || s > 1.0f) return DH_ERR_ARG;
-    interp_shorter(&qa, &qb);
-    interp_arc(&qa, &qb, s, out);
+    dh_motion_shorter_f32_(&qa, &qb);
+    dh_motion_slerp_f32_(&qa, &qb, s, out);
     return DH_OK;
 }
 
@@ -115,8 +114,8 @@ dh_status dh_pose_interp_f32(const dh_mat4_f32 *A, const dh_mat4_f32 *B, float s
     dh_mat4_get_rot_f32(B, &R);
     st = dh_mat3_to_quat_f32(&R, &qb);
     if (st != DH_OK) return st;
-    interp_shorter(&qa, &qb);
-    interp_arc(&qa, &qb, s, &qa);
+    dh_motion_shorter_f32_(&qa, &qb);
+    dh_motion_slerp_f32_(&qa, &qb, s, &qa);
     (void)dh_quat_to_mat3_f32(&qa, &R);
     /* element i of the position reads only element i of A's and B's, so
      * T may alias either */

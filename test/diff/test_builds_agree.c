@@ -814,6 +814,18 @@ static void g_motion(diff_in *in)
     in->q[2 % DH_MAX_JOINTS] = frac_gen();
     in->sel = ru();
 }
+/* a path: frames M[0], M[1] (g_pose), via f[0..2], s f[3], Cartesian
+ * limits f[4..7], the time as a fraction of the duration q[2] */
+static void g_path(diff_in *in)
+{
+    int i;
+    double s = len_scale();
+    g_pose(in);
+    for (i = 0; i < 3; i++) in->f[i] = rn(16u) ? (float)rd(-s, s) : f_gen(s);
+    in->f[3] = s_gen();
+    for (i = 4; i < 8; i++) in->f[i] = lim_gen();
+    in->q[2 % DH_MAX_JOINTS] = frac_gen();
+}
 static void g_ikc(diff_in *in)
 {
     const dh_robot *r = &ikc_pool[rn(IKC_POOL_N)];

@@ -192,10 +192,166 @@ static void motion_joint_move_bad(void)
     UNTOUCHED(qdd);
 }
 
+/* a path's frames: A at (1, 0, 0), B at (0, 1, 0), via on their circle about the origin */
+static void path_frames(dh_mat4_f32 *A, dh_mat4_f32 *B, float via[3])
+{
+    rigid(A, 1.0f);
+    rigid(B, 0.0f);
+    DH_M4(B, 1, 3) = 1.0f;
+    via[0] = 0.70710678f;
+    via[1] = 0.70710678f;
+    via[2] = 0.0f;
+}
+
+static void motion_path_bad(void)
+{
+    dh_mat4_f32 A, B, bad, T;
+    dh_path_f32 p, good;
+    float via[3], v3[3];
+    unsigned k;
+    path_frames(&A, &B, via);
+    for (k = 0; k < 4u; k++) {
+        CANARY(p);
+        bad = B;
+        DH_M4(&bad, 2, 1) = bad_value(k);
+        DHT_EQ_INT(dh_path_line_f32(&p, &A, &bad), DH_ERR_NAN);
+        DHT_EQ_INT(dh_path_arc_f32(&p, &bad, via, &B), DH_ERR_NAN);
+        bad = A;
+        DH_M4(&bad, 0, 3) = bad_value(k);
+        DHT_EQ_INT(dh_path_line_f32(&p, &bad, &B), DH_ERR_NAN);
+        DHT_EQ_INT(dh_path_arc_f32(&p, &A, via, &bad), DH_ERR_NAN);
+        memcpy(v3, via, sizeof v3);
+        v3[2] = bad_value(k);
+        DHT_EQ_INT(dh_path_arc_f32(&p, &A, v3, &B), DH_ERR_NAN);
+        UNTOUCHED(p);
+    }
+    bad = B;
+    DH_M4(&bad, 1, 1) *= 1.001f;                /* scaled */
+    DHT_EQ_INT(dh_path_line_f32(&p, &A, &bad), DH_ERR_NOT_RIGID);
+    DHT_EQ_INT(dh_path_arc_f32(&p, &bad, via, &B), DH_ERR_NOT_RIGID);
+    bad = A;
+    DH_M4(&bad, 3, 2) = 1e-6f;                  /* bottom row */
+    DHT_EQ_INT(dh_path_arc_f32(&p, &bad, via, &B), DH_ERR_NOT_RIGID);
+    /* p_B - p_A, a side or the line's length overflow */
+    rigid(&bad, -FLT_MAX);
+    rigid(&T, FLT_MAX);
+    DHT_EQ_INT(dh_path_line_f32(&p, &bad, &T), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(dh_path_arc_f32(&p, &bad, via, &T), DH_ERR_OVERFLOW);
+    rigid(&bad, 0.0f);
+    rigid(&T, 3e38f);
+    DH_M4(&T, 1, 3) = 3e38f;
+    DHT_EQ_INT(dh_path_line_f32(&p, &bad, &T), DH_ERR_OVERFLOW);
+    v3[0] = -3e38f;                             /* via - p_B overflows */
+    v3[1] = 0.0f;
+    v3[2] = 0.0f;
+    DHT_EQ_INT(dh_path_arc_f32(&p, &bad, v3, &T), DH_ERR_OVERFLOW);
+    rigid(&bad, FLT_MAX);                       /* via - p_A overflows */
+    rigid(&T, FLT_MAX);
+    DH_M4(&T, 1, 3) = 1.0f;
+    v3[0] = -FLT_MAX;
+    DHT_EQ_INT(dh_path_arc_f32(&p, &bad, v3, &T), DH_ERR_OVERFLOW);
+    /* collinear, coincident and thin: no circle */
+    v3[0] = 0.5f;
+    v3[1] = 0.5f;
+    v3[2] = 0.0f;
+    DHT_EQ_INT(dh_path_arc_f32(&p, &A, v3, &B), DH_ERR_SINGULAR);   /* on the chord */
+    v3[0] = 2.0f;
+    v3[1] = -1.0f;
+    DHT_EQ_INT(dh_path_arc_f32(&p, &A, v3, &B), DH_ERR_SINGULAR);   /* on the line beyond A */
+    v3[0] = 1.0f;
+    v3[1] = 0.0f;
+    DHT_EQ_INT(dh_path_arc_f32(&p, &A, v3, &B), DH_ERR_SINGULAR);   /* via == p_A */
+    DHT_EQ_INT(dh_path_arc_f32(&p, &A, via, &A), DH_ERR_SINGULAR);  /* p_B == p_A */
+    v3[0] = 0.5f + 3e-4f;                        /* sagitta 4.2e-4 of a chord 1.41: |a x b| < 2^-10 L^2 */
+    v3[1] = 0.5f + 3e-4f;
+    DHT_EQ_INT(dh_path_arc_f32(&p, &A, v3, &B), DH_ERR_SINGULAR);
+    v3[0] = 0.5f + 1e-3f;                        /* sagitta 1.41e-3: a circle */
+    v3[1] = 0.5f + 1e-3f;
+    DHT_EQ_INT(dh_path_arc_f32(&good, &A, v3, &B), DH_OK);
+    UNTOUCHED(p);
+    /* eval: NaN s (Inf is clamped) */
+    DHT_EQ_INT(dh_path_arc_f32(&good, &A, via, &B), DH_OK);
+    CANARY(T);
+    DHT_EQ_INT(dh_path_eval_f32(&good, bad_value(0), &T), DH_ERR_NAN);
+    DHT_EQ_INT(dh_path_eval_f32(&good, bad_value(3), &T), DH_ERR_NAN);
+    memset(&good, 0, sizeof good);              /* no constructor wrote it */
+    DHT_EQ_INT(dh_path_eval_f32(&good, 0.5f, &T), DH_ERR_ARG);
+    DHT_EQ_INT(dh_path_eval_f32(&good, 0.0f, &T), DH_ERR_ARG);
+    UNTOUCHED(T);
+}
+
+/* lim with its limit i (vmax, amax, wmax, wdmax) set to x */
+static dh_cart_limits_f32 lim_with(dh_cart_limits_f32 lim, unsigned i, float x)
+{
+    switch (i) {
+    case 0u: lim.vmax = x; break;
+    case 1u: lim.amax = x; break;
+    case 2u: lim.wmax = x; break;
+    default: lim.wdmax = x; break;
+    }
+    return lim;
+}
+
+static void motion_path_move_bad(void)
+{
+    static const dh_profile_f32 zero;
+    dh_mat4_f32 A, B, T;
+    dh_path_f32 p;
+    dh_profile_f32 prof;
+    dh_cart_limits_f32 lim = { 1.0f, 1.0f, 1.0f, 1.0f }, l;
+    float via[3], v;
+    unsigned k, i;
+    path_frames(&A, &B, via);
+    DHT_EQ_INT(dh_path_arc_f32(&p, &A, via, &B), DH_OK);
+    for (k = 0; k < 4u; k++) {
+        for (i = 0; i < 4u; i++) {
+            l = lim_with(lim, i, bad_value(k));
+            CANARY(prof);
+            DHT_EQ_INT(dh_path_move_f32(&prof, &p, &l), DH_ERR_NAN);
+            DHT_TRUE(memcmp(&prof, &zero, sizeof prof) == 0);
+        }
+    }
+    for (i = 0; i < 4u; i++) {
+        l = lim_with(lim, i, (i & 1u) ? -1.0f : 0.0f);
+        CANARY(prof);
+        DHT_EQ_INT(dh_path_move_f32(&prof, &p, &l), DH_ERR_ARG);
+        DHT_TRUE(memcmp(&prof, &zero, sizeof prof) == 0);
+    }
+    /* 1e-30 / length underflows; the duration overflows */
+    l = lim;
+    l.vmax = 1e-30f;
+    l.amax = 1e-30f;
+    rigid(&B, 3e38f);
+    DHT_EQ_INT(dh_path_line_f32(&p, &A, &B), DH_OK);
+    CANARY(prof);
+    DHT_EQ_INT(dh_path_move_f32(&prof, &p, &l), DH_ERR_OVERFLOW);
+    DHT_TRUE(memcmp(&prof, &zero, sizeof prof) == 0);
+    l.vmax = 1e-20f;
+    l.amax = 1e20f;
+    rigid(&B, 1e20f);
+    DHT_EQ_INT(dh_path_line_f32(&p, &A, &B), DH_OK);
+    CANARY(prof);
+    DHT_EQ_INT(dh_path_move_f32(&prof, &p, &l), DH_ERR_OVERFLOW);
+    DHT_TRUE(memcmp(&prof, &zero, sizeof prof) == 0);
+    /* the move of a failed call keeps the frame at A */
+    DHT_EQ_INT(dh_path_move_eval_f32(&prof, &p, 0.5f, &T, &v), DH_OK);
+    DHT_TRUE(memcmp(&T, &A, sizeof T) == 0 && v == 0.0f);
+    DHT_EQ_INT(dh_path_move_f32(&prof, &p, &lim), DH_OK);
+    CANARY(T);
+    CANARY(v);
+    DHT_EQ_INT(dh_path_move_eval_f32(&prof, &p, bad_value(0), &T, &v), DH_ERR_NAN);
+    memset(&p, 0, sizeof p);                    /* no constructor wrote it */
+    DHT_EQ_INT(dh_path_move_eval_f32(&prof, &p, 0.5f, &T, &v), DH_ERR_ARG);
+    UNTOUCHED(T);
+    UNTOUCHED(v);
+}
+
 static const dht_case cases[] = {
     DHT_CASE(motion_slerp_bad),
     DHT_CASE(motion_pose_bad),
     DHT_CASE(motion_profile_bad),
     DHT_CASE(motion_joint_move_bad),
+    DHT_CASE(motion_path_bad),
+    DHT_CASE(motion_path_move_bad),
 };
 DHT_MAIN(cases)
