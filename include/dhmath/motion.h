@@ -8,13 +8,19 @@
  *   dh_joint_move.c  dh_joint_move_f32, dh_joint_move_eval_f32
  *   dh_path.c        dh_path_line_f32, dh_path_arc_f32, dh_path_eval_f32,
  *                    dh_path_move_f32, dh_path_move_eval_f32
+ *   dh_move.c        dh_move_joint_f32, dh_move_joint_step_f32,
+ *                    dh_move_path_f32, dh_move_target_f32,
+ *                    dh_move_advance_f32
  */
 /**
  * @file motion.h
  * @brief Motion primitives: pose interpolation (position linear,
  *        orientation along the shortest great arc), rest-to-rest time
  *        scaling (trapezoidal, jerk-limited seven-phase, quintic) and the
- *        synchronised point-to-point joint move.
+ *        synchronised point-to-point joint move, Cartesian paths and
+ *        their moves, and the move executor that runs a joint move, or a
+ *        Cartesian move through the caller's tracker, one control period
+ *        per call.
  *
  * Conventions:
  * - a path parameter s is in [0, 1]; angles at the API are in DEGREES;
@@ -36,6 +42,7 @@
 
 #include "dhmath/common.h"
 #include "dhmath/rot.h"
+#include "dhmath/track.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -376,6 +383,145 @@ dh_status dh_path_move_f32(dh_profile_f32 *prof, const dh_path_f32 *p, const dh_
  */
 dh_status dh_path_move_eval_f32(const dh_profile_f32 *prof, const dh_path_f32 *p, float t, dh_mat4_f32 *T,
                                 float *v);
+
+/* ======================================================================
+ * Move executor (one call per control period)
+ * ==================================================================== */
+
+/** @brief The form of a dh_move_f32 (0: no move). */
+typedef enum {
+    DH_MOVE_NONE = 0,  /**< no move: written by a failed constructor, or by none (all zero) */
+    DH_MOVE_JOINT = 1, /**< synchronised joint move (dh_move_joint_f32) */
+    DH_MOVE_PATH = 2   /**< Cartesian path move (dh_move_path_f32) */
+} dh_move_kind;
+
+/**
+ * @brief One move being executed, written by dh_move_joint_f32 /
+ *        dh_move_path_f32 and advanced once per control period by
+ *        dh_move_joint_step_f32 / dh_move_advance_f32 (read-only for the
+ *        user, who reads dur and clock).
+ */
+typedef struct {
+    dh_profile_f32 prof[DH_MAX_JOINTS]; /**< joint move: one per joint; path move: prof[0], of s */
+    dh_path_f32 path;                   /**< path move: a copy of the path */
+    float q0[DH_MAX_JOINTS];            /**< joint move: start configuration */
+    float q1[DH_MAX_JOINTS];            /**< joint move: end configuration */
+    float ws[2][DH_MAX_JOINTS];         /**< joint move: workspace (planning limits, velocity, acceleration) */
+    float dur;                          /**< duration of the move (s) */
+    float clock;                        /**< time into the move (s), in [0, dur] */
+    uint32_t n;                         /**< joint move: number of joints */
+    uint32_t kind;                      /**< a dh_move_kind value */
+} dh_move_f32;
+
+/** @brief What one period of a move did. */
+typedef struct {
+    float clock; /**< time into the move after this period (s) */
+    int held;    /**< path move: 1 when the clock held (the tracker was not OK); joint move: 0 */
+    int done;    /**< 1 when the move is complete (see dh_move_advance_f32, dh_move_joint_step_f32) */
+} dh_move_report_f32;
+
+/**
+ * @brief Starts a synchronised joint move of n joints from q0 to q1,
+ *        sampled once per period by dh_move_joint_step_f32 (no tracker:
+ *        the samples are within the limits by construction).
+ * @param mv output move (kind DH_MOVE_JOINT, clock 0, dur the move's T).
+ * @param n number of joints, 1..DH_MAX_JOINTS.
+ * @param q0, q1 start and end positions (n each, finite; may alias).
+ * @param vmax, amax, jmax per-joint limits (n each, finite, > 0); jmax may
+ *        be NULL (trapezoids). The move is planned by dh_joint_move_f32
+ *        within vmax and amax lowered by 2^-10 (jmax as given), a margin
+ *        for the rounding of the sampled steps (dh_move_joint_step_f32).
+ * @return DH_OK; DH_ERR_ARG for n outside 1..DH_MAX_JOINTS or a limit
+ *         <= 0; DH_ERR_NAN for a NaN/Inf value; DH_ERR_OVERFLOW as
+ *         dh_joint_move_f32. On error mv holds no move (kind
+ *         DH_MOVE_NONE): the step functions return DH_ERR_ARG on it, so a
+ *         failed start never resumes an older move.
+ */
+dh_status dh_move_joint_f32(dh_move_f32 *mv, uint32_t n, const float *q0, const float *q1, const float *vmax,
+                            const float *amax, const float *jmax);
+
+/**
+ * @brief One control period of a joint move: the clock advances by dt
+ *        (capped at dur) and q = the move at the new clock
+ *        (dh_joint_move_eval_f32).
+ * Let c, c' be the clock before and after the call (c' - c <= dt up to
+ * the rounding of the sum). Each joint's step q(c') - q(c) is within
+ * vmax_i (1 - 2^-10) (c' - c) + e_i and its change of step within
+ * amax_i (1 - 2^-10) dt^2 + 2 e_i, e_i = vmax_i 2 ulp(dur) +
+ * 4 ulp(max(|q0_i|, |q1_i|)) + 4 ulp(|q1_i - q0_i|) the rounding of the
+ * clock and of q (changes of step for equal periods); so each step is
+ * within vmax_i dt itself wherever e_i + vmax_i ulp(dur) <= 2^-10
+ * vmax_i dt.
+ * @param mv move from dh_move_joint_f32.
+ * @param dt control period (s), finite, > 0 (may differ between calls).
+ * @param q output: n joint values (must not alias mv); q == q1 bit for
+ *        bit once the clock is at dur.
+ * @param rep report: clock c'; held 0; done 1 when c' == dur (then
+ *        q == q1; every later call returns q1 and done again).
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf dt; DH_ERR_ARG for dt <= 0 or an
+ *         mv that holds no joint move (written by no constructor, a failed
+ *         one, or dh_move_path_f32). On error mv, q and rep are untouched.
+ */
+dh_status dh_move_joint_step_f32(dh_move_f32 *mv, float dt, float *q, dh_move_report_f32 *rep);
+
+/**
+ * @brief Starts a Cartesian move along the path p within lim
+ *        (dh_path_move_f32), executed by the caller's tracker: each
+ *        period dh_move_target_f32 gives the frame to track, the caller
+ *        calls dh_track_step_f32 on it, and dh_move_advance_f32 advances
+ *        the clock with the tracker's state.
+ * Start: the move does not check where the robot is. Its first target is
+ * p->A; the clock holds until the tracker reports OK there, so a tool
+ * away from p->A is brought onto it by the tracker within the tracker's
+ * rate and acceleration bounds, and the move starts from there.
+ * @param mv output move (kind DH_MOVE_PATH, clock 0, dur the profile's T;
+ *        p copied).
+ * @param p path from dh_path_line_f32 or dh_path_arc_f32.
+ * @param lim Cartesian limits, each finite and > 0.
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf limit; DH_ERR_ARG for a limit
+ *         <= 0 or a p that holds no path (as dh_path_eval_f32);
+ *         DH_ERR_OVERFLOW as dh_path_move_f32. On error mv holds no move
+ *         (as dh_move_joint_f32).
+ */
+dh_status dh_move_path_f32(dh_move_f32 *mv, const dh_path_f32 *p, const dh_cart_limits_f32 *lim);
+
+/**
+ * @brief T = the frame to track this period: the path's frame at the
+ *        move's clock (dh_path_move_eval_f32), p->A at clock 0, p->B bit
+ *        for bit once the clock is at dur.
+ * Between two advances of the clock by dt, the target moves by at most
+ * lim->vmax dt in position and lim->wmax dt in rotation (up to the path's
+ * and the profile's rounding, motion.h above), and while the clock holds
+ * it does not move: the target is never more than one period of the move
+ * beyond the last frame the tracker reported OK at.
+ * @param mv move from dh_move_path_f32.
+ * @param T output frame.
+ * @return DH_OK; DH_ERR_ARG for an mv that holds no path move (written by
+ *         no constructor, a failed one, or dh_move_joint_f32): T untouched.
+ */
+dh_status dh_move_target_f32(const dh_move_f32 *mv, dh_mat4_f32 *T);
+
+/**
+ * @brief Ends a control period of a path move: state is the tracker's
+ *        report (dh_track_report_f32.state) of its step towards this
+ *        period's dh_move_target_f32.
+ * - state OK, clock < dur: the clock advances to min(clock + dt, dur).
+ * - state OK, clock == dur: done (the tracker reached p->B within its
+ *   pos_tol and rot_tol); the clock stays at dur.
+ * - state LAGGING or UNREACHABLE: the clock holds (held 1), so the target
+ *   stays where the tracker did not reach it and does not run away from
+ *   the robot; a stretch the joints cannot follow at the move's speed is
+ *   covered in bursts, and an unreachable one stops the move there (the
+ *   caller sees held, and the clock not advancing, every period).
+ * @param mv move from dh_move_path_f32.
+ * @param dt control period (s), finite, > 0 (the tracker's dt).
+ * @param state the tracker's state this period, a dh_track_state value.
+ * @param rep report: clock after the call, held, done.
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf dt; DH_ERR_ARG for dt <= 0, a
+ *         state that is no dh_track_state, or an mv that holds no path
+ *         move. On error mv and rep are untouched.
+ */
+dh_status dh_move_advance_f32(dh_move_f32 *mv, float dt, dh_track_state state, dh_move_report_f32 *rep);
 
 #ifdef __cplusplus
 }

@@ -276,7 +276,7 @@ static DH_NOINLINE void path_line_point(const dh_path_f32 *p, float s, dh_mat4_f
 
 /* 1 when p holds a path: its quaternions are unit within rounding (an
  * all-zero or NaN struct is not) */
-static int path_ok(const dh_path_f32 *p)
+int dh_motion_path_ok_f32_(const dh_path_f32 *p)
 {
     const dh_quat_f32 *a = &p->qa, *b = &p->qb;
     float na = a->w * a->w + a->x * a->x + a->y * a->y + a->z * a->z;
@@ -288,7 +288,7 @@ dh_status dh_path_eval_f32(const dh_path_f32 *p, float s, dh_mat4_f32 *T)
 {
     DH_ASSERT(p != NULL && T != NULL);
     if (isunordered(s, s)) return DH_ERR_NAN;
-    if (!path_ok(p)) return DH_ERR_ARG;
+    if (!dh_motion_path_ok_f32_(p)) return DH_ERR_ARG;
     if (!(s > 0.0f) || !(s < 1.0f)) {
         *T = (s > 0.0f) ? p->B : p->A;
         return DH_OK;
@@ -363,7 +363,7 @@ dh_status dh_path_move_eval_f32(const dh_profile_f32 *prof, const dh_path_f32 *p
 {
     DH_ASSERT(prof != NULL && p != NULL && T != NULL && v != NULL);
     if (isunordered(t, t)) return DH_ERR_NAN;
-    if (!path_ok(p)) return DH_ERR_ARG;
+    if (!dh_motion_path_ok_f32_(p)) return DH_ERR_ARG;
     /* s, s' and s'' in T's position column (no locals beside the path's
      * evaluation: stack), which dh_path_eval_f32 then overwrites */
     (void)dh_profile_eval_f32(prof, t, &DH_M4(T, 0, 3), &DH_M4(T, 1, 3), &DH_M4(T, 2, 3));

@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * motion_impl.h - PRIVATE slerp steps of the motion family (src/motion/,
- * not installed): the Cartesian paths (dh_path.c) keep the unit
- * quaternions of their end frames and call the slerp of dh_interp.c
- * directly, without dh_pose_interp_f32's checks and conversions, to stay
- * within the 256 B stack budget.
+ * motion_impl.h - PRIVATE helpers of the motion family (src/motion/, not
+ * installed): the Cartesian paths (dh_path.c) keep the unit quaternions of
+ * their end frames and call the slerp of dh_interp.c directly, without
+ * dh_pose_interp_f32's checks and conversions, to stay within the 256 B
+ * stack budget; the move executor (dh_move.c) checks a path with the
+ * test of dh_path.c.
  */
 #ifndef DHMATH_SRC_MOTION_IMPL_H
 #define DHMATH_SRC_MOTION_IMPL_H
@@ -18,5 +19,10 @@ void dh_motion_shorter_f32_(const dh_quat_f32 *qa, dh_quat_f32 *qb);
  * into *out (which may alias qa or qb); s == 0 and s == 1 (and no rotation
  * between them) copy the nearer end. */
 void dh_motion_slerp_f32_(const dh_quat_f32 *qa, const dh_quat_f32 *qb, float s, dh_quat_f32 *out);
+
+/* 1 when p holds a path (its quaternions unit within a factor 2, as
+ * dh_path_line_f32 / dh_path_arc_f32 write them), 0 when not (e.g. all
+ * zero); the test of dh_path_eval_f32's DH_ERR_ARG (dh_path.c) */
+int dh_motion_path_ok_f32_(const dh_path_f32 *p);
 
 #endif /* DHMATH_SRC_MOTION_IMPL_H */

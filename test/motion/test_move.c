@@ -1,0 +1,870 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * test_move.c - the move executor (motion.h: dh_move_joint_f32,
+ * dh_move_joint_step_f32, dh_move_path_f32, dh_move_target_f32,
+ * dh_move_advance_f32) on the UR5 in metres with joint rates set, at
+ * 1 kHz, seeded random moves.
+ *
+ * Cartesian moves run the firmware loop of motion.h with the real tracker
+ * (target, dh_track_step_f32, advance). Every output is checked against
+ * the tracker's guarantees (track.h) in double: the step within the float
+ * dq_max and vmax dt, the change of step within amax dt^2 (1 + 1e-6) + 4
+ * ulp of q, the joint limits, finiteness. Lines and arcs run between two
+ * configurations of a region away from the singularities, every point of
+ * the path with a closed-form solution whose smallest singular value bound
+ * is at least twice the tracker's threshold. The target is the path's
+ * point at the move's clock (the path's own bound, motion.h: 4 FLT_EPSILON
+ * S on a line, 3 E on an arc); at every OK period the tool (double
+ * reference FK of the output) is at the target's path point within the
+ * tracker's tolerances plus the float FK bound (3e-7 m, 1e-6 rad) plus
+ * the path's bound, and the clock advances by dt; over windows of OK
+ * periods the finite differences of the tool's position and rotation are
+ * within vmax, amax and wmax times 1 + 1e-3. The tool's error is at most
+ * ERR = pos_tol + 3e-7 at each sample (ERR_R = rot_tol + 1e-6 in
+ * rotation), so each window is the least number of periods w for which
+ * that noise is at most 2.5e-4 of the limit: 2 ERR / (w dt) for a speed,
+ * 4 ERR / (w dt)^2 for an acceleration. While the tracker is not OK the
+ * clock and the target hold (the target bit for bit), and the target is
+ * never farther from the tool's position at the last OK period than
+ * vmax dt (1 + 1e-3) + ERR + 2 path bounds (before any OK period the
+ * target is A bit for bit). done comes only with the clock at the
+ * duration and the tool at B.
+ *
+ * A move that starts with the tool away from A (a few degrees per joint):
+ * the clock holds at 0 until the tracker is OK at A, then the move runs as
+ * above.
+ *
+ * Joint moves: each step within vmax (1 - 2^-10) times the clock's advance
+ * plus the rounding of motion.h (vmax 2 ulp(duration) + 4 ulp of q and of
+ * q1 - q0), each change of step within amax (1 - 2^-10) dt^2 plus twice
+ * that rounding, done only at the end with q == q1 bit for bit; then a
+ * line from there with a tracker started at q1.
+ *
+ * A line through the axis of joint 1 (the UR5 cannot bring its wrist
+ * within d4 of that axis): not OK there, the clock held, the target held
+ * within the bound above, done never reported.
+ *
+ * Every status of the five functions for bad inputs, with the outputs and
+ * the move untouched.
+ */
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "dht.h"
+#include "support_ref.h"
+#include "support_robots.h"
+#include "dhmath/motion.h"
+#include "dhmath/track.h"
+
+#define DT 1e-3f
+#define VMAX_R 180.0f  /* deg/s */
+#define AMAX_R 3000.0f /* deg/s^2 */
+#define EPS ((double)FLT_EPSILON)
+#define REL_FD 1e-3
+#define NOISE_FRAC 2.5e-4
+#define RING 512
+
+static const double Q_HOME[DH_MAX_JOINTS] = { 0, -90, 90, 0, 90, 0 };
+
+static const dh_cart_limits_f32 LIM = { 0.25f, 2.0f, 45.0f, 360.0f };
+
+typedef struct {
+    dh_robot r;
+    dh_ikc_model_f32 m;
+} rig;
+
+static void rig_make(rig *g)
+{
+    uint32_t i;
+    DHT_EQ_INT(dhs_build(&dhs_ur5_m, &g->r), DH_OK);
+    for (i = 0; i < g->r.n; i++) DHT_EQ_INT(dh_robot_set_rates_f32(&g->r, i, VMAX_R, AMAX_R), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_f32(&g->r, &g->m), DH_OK);
+}
+
+static double ulpf(double x)
+{
+    int e;
+    (void)frexp(fabs(x) > 1e-30 ? fabs(x) : 1e-30, &e);
+    return ldexp(1.0, e - 24);
+}
+
+/* the guarantees of track.h for one output q after qp (previous step sp,
+ * have_sp: sp known) within vmax, amax (joint unit / s, / s^2) */
+static void check_step(const rig *g, const dh_track_f32 *t, const float *q, float *qp, float *sp, int *have_sp,
+                       const float *vmax, const float *amax, const double *slack, long call)
+{
+    uint32_t i;
+    for (i = 0; i < g->r.n; i++) {
+        const dh_joint *j = &g->r.joint[i];
+        const double s = (double)q[i] - (double)qp[i];
+        const double A = (double)amax[i] * DT * DT;
+        DHT_TRUE_MSG(isfinite(q[i]), "call %ld: joint %u not finite", call, (unsigned)i);
+        DHT_TRUE_MSG(fabs(s) <= (double)t->dq_max[i] && fabs(s) <= (double)vmax[i] * (double)DT,
+                     "call %ld: joint %u step %.9g beyond %.9g", call, (unsigned)i, s, (double)t->dq_max[i]);
+        DHT_TRUE_MSG(q[i] >= j->qmin && q[i] <= j->qmax, "call %ld: joint %u outside its limits", call, (unsigned)i);
+        if (*have_sp)
+            DHT_TRUE_MSG(fabs(s - sp[i]) <= A * (1 + 1e-6) + 4 * ulpf(fmax(fabs(q[i]), fabs(qp[i]))) + (slack ? slack[i] : 0.0),
+                         "call %ld: joint %u step change %.9g beyond amax dt^2 %.9g q %.9g qp %.9g sl %g", call, (unsigned)i,
+                         fabs(s - sp[i]), A, (double)q[i], (double)qp[i], slack ? slack[i] : 0.0);
+        sp[i] = (float)s;
+        qp[i] = q[i];
+    }
+    *have_sp = 1;
+}
+
+static void fk_d(const rig *g, const float *q, dhr_mat4 *T)
+{
+    double qd[DH_MAX_JOINTS];
+    uint32_t i;
+    for (i = 0; i < g->r.n; i++) qd[i] = q[i];
+    dhs_fk_ref_f32(&g->r, qd, NULL, T);
+}
+
+/* rotation angle (rad) of A^T B */
+static double rot_between(const dhr_mat4 *A, const dhr_mat4 *B)
+{
+    double R[3][3];
+    int c, k, l;
+    for (c = 0; c < 3; c++)
+        for (k = 0; k < 3; k++) {
+            R[c][k] = 0.0;
+            for (l = 0; l < 3; l++) R[c][k] += A->m[k][l] * B->m[c][l];
+        }
+    return dhs_rot_angle(R);
+}
+
+static double dist3(const double *a, const double *b)
+{
+    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+static double dist3f(const float *a, const float *b)
+{
+    const double d[3] = { (double)a[0] - b[0], (double)a[1] - b[1], (double)a[2] - b[2] };
+    return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
+/* a configuration of the UR5 away from its singularities (elbow bent,
+ * wrist joint 5 away from 0 and 180, shoulder lifted) */
+static void safe_q(double *q)
+{
+    int k;
+    for (k = 0; k < DH_MAX_JOINTS; k++) q[k] = 0.0;
+    q[0] = dht_rand_uniform(-170.0, 170.0);
+    q[1] = dht_rand_uniform(-140.0, -40.0);
+    q[2] = dht_rand_uniform(55.0, 125.0) * (dht_rand_uniform(0.0, 1.0) < 0.5 ? -1.0 : 1.0);
+    q[3] = dht_rand_uniform(-170.0, 170.0);
+    q[4] = dht_rand_uniform(45.0, 135.0) * (dht_rand_uniform(0.0, 1.0) < 0.5 ? -1.0 : 1.0);
+    q[5] = dht_rand_uniform(-170.0, 170.0);
+}
+
+/* double reference of a path: the line, or the circle through p_A, via,
+ * p_B (centre c, radius R, unit normal n, sweep) */
+typedef struct {
+    double pa[3], pb[3], c[3], n[3], u0[3], R, sweep, E;
+    int arc;
+} ref_path;
+
+static void ref_make(ref_path *rp, const dh_mat4_f32 *A, const dh_mat4_f32 *B, const float *via)
+{
+    double a[3], b[3], x[3], a2, b2, x2, w[3], u1[3], cr[3], S, L;
+    int k;
+    memset(rp, 0, sizeof *rp);
+    for (k = 0; k < 3; k++) {
+        rp->pa[k] = A->m[3][k];
+        rp->pb[k] = B->m[3][k];
+    }
+    rp->arc = via != NULL;
+    if (!rp->arc) {
+        rp->E = 4.0 * EPS * fmax(sqrt(rp->pa[0] * rp->pa[0] + rp->pa[1] * rp->pa[1] + rp->pa[2] * rp->pa[2]),
+                                 sqrt(rp->pb[0] * rp->pb[0] + rp->pb[1] * rp->pb[1] + rp->pb[2] * rp->pb[2]));
+        return;
+    }
+    for (k = 0; k < 3; k++) {
+        a[k] = via[k] - rp->pa[k];
+        b[k] = rp->pb[k] - rp->pa[k];
+    }
+    x[0] = a[1] * b[2] - a[2] * b[1];
+    x[1] = a[2] * b[0] - a[0] * b[2];
+    x[2] = a[0] * b[1] - a[1] * b[0];
+    a2 = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+    b2 = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+    x2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+    /* centre - p_A = (|a|^2 b - |b|^2 a) x (a x b) / (2 |a x b|^2) */
+    for (k = 0; k < 3; k++) w[k] = a2 * b[k] - b2 * a[k];
+    cr[0] = w[1] * x[2] - w[2] * x[1];
+    cr[1] = w[2] * x[0] - w[0] * x[2];
+    cr[2] = w[0] * x[1] - w[1] * x[0];
+    for (k = 0; k < 3; k++) {
+        rp->c[k] = rp->pa[k] + cr[k] / (2.0 * x2);
+        rp->n[k] = x[k] / sqrt(x2);
+        rp->u0[k] = rp->pa[k] - rp->c[k];
+        u1[k] = rp->pb[k] - rp->c[k];
+    }
+    rp->R = sqrt(rp->u0[0] * rp->u0[0] + rp->u0[1] * rp->u0[1] + rp->u0[2] * rp->u0[2]);
+    {
+        const double cx = rp->u0[1] * u1[2] - rp->u0[2] * u1[1], cy = rp->u0[2] * u1[0] - rp->u0[0] * u1[2],
+                     cz = rp->u0[0] * u1[1] - rp->u0[1] * u1[0];
+        double sw = atan2(cx * rp->n[0] + cy * rp->n[1] + cz * rp->n[2],
+                          rp->u0[0] * u1[0] + rp->u0[1] * u1[1] + rp->u0[2] * u1[2]);
+        rp->sweep = (sw < 0.0) ? sw + 2.0 * DHR_PI : sw;
+    }
+    L = sqrt(fmax(fmax(a2, b2), (rp->pb[0] - via[0]) * (rp->pb[0] - via[0]) +
+                                    (rp->pb[1] - via[1]) * (rp->pb[1] - via[1]) +
+                                    (rp->pb[2] - via[2]) * (rp->pb[2] - via[2])));
+    S = fmax(fmax(sqrt(rp->pa[0] * rp->pa[0] + rp->pa[1] * rp->pa[1] + rp->pa[2] * rp->pa[2]),
+                  sqrt(rp->pb[0] * rp->pb[0] + rp->pb[1] * rp->pb[1] + rp->pb[2] * rp->pb[2])),
+             sqrt((double)via[0] * via[0] + (double)via[1] * via[1] + (double)via[2] * via[2]));
+    /* motion.h: a point of the arc at s within 3 E, E = 16 EPS (S + R + L) / (|a x b| / L^2) */
+    rp->E = 3.0 * 16.0 * EPS * (S + rp->R + L) / (sqrt(x2) / (L * L));
+}
+
+/* the reference point at s */
+static void ref_point(const ref_path *rp, double s, double *p)
+{
+    int k;
+    if (!rp->arc) {
+        for (k = 0; k < 3; k++) p[k] = rp->pa[k] + s * (rp->pb[k] - rp->pa[k]);
+        return;
+    }
+    {
+        const double ph = s * rp->sweep, c = cos(ph), sn = sin(ph);
+        const double v[3] = { rp->n[1] * rp->u0[2] - rp->n[2] * rp->u0[1], rp->n[2] * rp->u0[0] - rp->n[0] * rp->u0[2],
+                              rp->n[0] * rp->u0[1] - rp->n[1] * rp->u0[0] };
+        for (k = 0; k < 3; k++) p[k] = rp->c[k] + c * rp->u0[k] + sn * v[k];
+    }
+}
+
+/* 1 when the branch of the closed-form solutions that starts nearest q
+ * (into q: the solution at A) runs along the path within the robot's
+ * rates: at each of 129 points the solution nearest the previous one is
+ * within 4 degrees of it per joint, has a smallest singular value bound of
+ * at least twice the tracker's threshold, and the joint rates and
+ * accelerations of the move (s' <= prof.v, |s''| <= prof.a) estimated
+ * from the differences are within half the robot's (test input selection) */
+#define NPT 128
+static int path_good(const rig *g, const dh_path_f32 *p, float thr, float *q)
+{
+    dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+    float J[6 * DH_MAX_JOINTS], w, sg, qr[DH_MAX_JOINTS], qm[DH_MAX_JOINTS];
+    dh_profile_f32 prof;
+    dh_mat4_f32 T;
+    uint32_t ns, k, i;
+    int it;
+    if (dh_path_move_f32(&prof, p, &LIM) != DH_OK) return 0;
+    memcpy(qr, q, sizeof qr);
+    for (it = 0; it <= NPT; it++) {
+        double best = 1e30;
+        uint32_t kb = 0;
+        if (dh_path_eval_f32(p, (float)it / (float)NPT, &T) != DH_OK) return 0;
+        ns = 0;
+        if (dh_ikc_f32(&g->m, &T, qr, 0u, sol, &ns) != DH_OK || ns == 0) return 0;
+        for (k = 0; k < ns; k++) {
+            double d = 0.0;
+            for (i = 0; i < g->r.n; i++) d = fmax(d, fabs((double)sol[k].q[i] - qr[i]));
+            if (d < best) {
+                best = d;
+                kb = k;
+            }
+        }
+        if (best > 4.0) return 0;
+        if (dh_jacobian_f32(&g->r, sol[kb].q, J, NULL) != DH_OK) return 0;
+        if (dh_manipulability_f32(J, g->r.n, &w, &sg) != DH_OK || sg < 2.0f * thr) return 0;
+        for (i = 0; it > 0 && i < g->r.n; i++) {
+            const double d1 = ((double)sol[kb].q[i] - qr[i]) * NPT;
+            const double d2 = it > 1 ? ((double)sol[kb].q[i] - 2.0 * qr[i] + qm[i]) * NPT * NPT : 0.0;
+            if (fabs(d1) * prof.v > 0.5 * g->r.joint[i].vmax) return 0;
+            if (fabs(d2) * prof.v * prof.v + fabs(d1) * prof.a > 0.5 * g->r.joint[i].amax) return 0;
+        }
+        memcpy(qm, qr, sizeof qm);
+        memcpy(qr, sol[kb].q, g->r.n * sizeof(float));
+        if (it == 0) memcpy(q, qr, g->r.n * sizeof(float));
+    }
+    return 1;
+}
+
+/* ring of the tool's frames of the last RING periods and their states */
+typedef struct {
+    dhr_mat4 T[RING];
+    long n;   /* samples so far */
+    long run; /* OK samples in a row up to the last */
+} ring;
+
+static const dhr_mat4 *ring_at(const ring *rg, long back)
+{
+    return &rg->T[(rg->n - 1 - back) % RING];
+}
+
+/* the finite-difference checks of the windows that end at the last sample */
+static void ring_check(const ring *rg, const dh_cart_limits_f32 *lim, long wv, long wa, long ww)
+{
+    const double dt = (double)DT;
+    if (rg->run > wv) {
+        const double d = dist3(&ring_at(rg, 0)->m[3][0], &ring_at(rg, wv)->m[3][0]) / (wv * dt);
+        DHT_TRUE_MSG(d <= lim->vmax * (1.0 + REL_FD), "speed %.9g x vmax (window %ld)", d / lim->vmax, wv);
+    }
+    if (rg->run > 2 * wa) {
+        const dhr_mat4 *a = ring_at(rg, 0), *b = ring_at(rg, wa), *c = ring_at(rg, 2 * wa);
+        double acc = 0.0;
+        int k;
+        for (k = 0; k < 3; k++) {
+            const double x = (a->m[3][k] - 2.0 * b->m[3][k] + c->m[3][k]) / ((wa * dt) * (wa * dt));
+            acc += x * x;
+        }
+        acc = sqrt(acc);
+        DHT_TRUE_MSG(acc <= lim->amax * (1.0 + REL_FD), "acceleration %.9g x amax (window %ld)", acc / lim->amax, wa);
+    }
+    if (rg->run > ww) {
+        const double w = rot_between(ring_at(rg, 0), ring_at(rg, ww)) * (180.0 / DHR_PI) / (ww * dt);
+        DHT_TRUE_MSG(w <= lim->wmax * (1.0 + REL_FD), "angular speed %.9g x wmax (window %ld)", w / lim->wmax, ww);
+    }
+}
+
+static ring g_ring;
+
+/* the tool's position (double FK of the tracker's q) into p */
+static void tool_at(const rig *g, const float *q, double *p)
+{
+    dhr_mat4 T;
+    int k;
+    fk_d(g, q, &T);
+    for (k = 0; k < 3; k++) p[k] = T.m[3][k];
+}
+
+/* One Cartesian move (path p, reference rp) run by the firmware loop of
+ * motion.h with the tracker t from its q, every period checked; returns
+ * the periods held at clock 0 before the first OK. */
+static long run_path(rig *g, dh_track_f32 *t, const dh_path_f32 *p, const ref_path *rp, const dh_cart_limits_f32 *lim)
+{
+    dh_move_f32 mv;
+    dh_move_report_f32 mrep;
+    dh_track_report_f32 rep;
+    dh_mat4_f32 F, Fp;
+    float q[DH_MAX_JOINTS], qp[DH_MAX_JOINTS], sp[DH_MAX_JOINTS], vmax[DH_MAX_JOINTS], amax[DH_MAX_JOINTS];
+    const double err = (double)t->pos_tol + 3e-7, err_r = (double)t->rot_tol + 1e-6;
+    const double away = (double)lim->vmax * DT * (1.0 + REL_FD) + err + 2.0 * rp->E;
+    const long wv = (long)ceil(2.0 * err / (NOISE_FRAC * lim->vmax * DT));
+    const long wa = (long)ceil(sqrt(4.0 * err / (NOISE_FRAC * lim->amax * DT * DT)));
+    const long ww = (long)ceil(2.0 * err_r * (180.0 / DHR_PI) / (NOISE_FRAC * lim->wmax * DT));
+    double last_ok[3];
+    long call, max_calls, dones = 0, notok = 0, start_held = 0;
+    int have_sp = 0, any_ok = 0, held = 0;
+    uint32_t i;
+    DHT_TRUE(2 * wa < RING && wv < RING && ww < RING);
+    for (i = 0; i < g->r.n; i++) {
+        vmax[i] = g->r.joint[i].vmax;
+        amax[i] = g->r.joint[i].amax;
+    }
+    memcpy(qp, t->q, sizeof qp);
+    tool_at(g, t->q, last_ok);
+    DHT_EQ_INT(dh_move_path_f32(&mv, p, lim), DH_OK);
+    DHT_TRUE(mv.clock == 0.0f && mv.dur > 0.0f);
+    max_calls = (long)ceil(mv.dur / DT) + 3000;
+    memset(&g_ring, 0, sizeof g_ring);
+    memset(&Fp, 0, sizeof Fp);
+    for (call = 0; call < max_calls && dones < 3; call++) {
+        dhr_mat4 *T = &g_ring.T[g_ring.n % RING];
+        const float c = mv.clock;
+        double pr[3], tgt[3];
+        float s, sv, sa;
+        int k;
+        DHT_EQ_INT(dh_move_target_f32(&mv, &F), DH_OK);
+        for (k = 0; k < 3; k++) tgt[k] = F.m[3][k];
+        /* the target is the path's point at the clock */
+        DHT_EQ_INT(dh_profile_eval_f32(&mv.prof[0], c, &s, &sv, &sa), DH_OK);
+        ref_point(rp, s, pr);
+        DHT_TRUE_MSG(dist3(tgt, pr) <= rp->E, "call %ld: target %.3g from the path's point", call, dist3(tgt, pr));
+        if (!any_ok) DHT_TRUE(c == 0.0f && memcmp(&F, &p->A, sizeof F) == 0);
+        if (held) DHT_TRUE(memcmp(&F, &Fp, sizeof F) == 0);
+        /* the target does not run away from the robot */
+        DHT_TRUE_MSG(!any_ok || dist3(tgt, last_ok) <= away, "call %ld: target %.3g m from the last OK tool (bound %.3g)",
+                     call, dist3(tgt, last_ok), away);
+        DHT_EQ_INT(dh_track_step_f32(t, &F, q, &rep), DH_OK);
+        check_step(g, t, q, qp, sp, &have_sp, vmax, amax, NULL, call);
+        fk_d(g, q, T);
+        g_ring.n++;
+        g_ring.run = (rep.state == DH_TRACK_OK) ? g_ring.run + 1 : 0;
+        DHT_EQ_INT(dh_move_advance_f32(&mv, DT, rep.state, &mrep), DH_OK);
+        DHT_TRUE(mrep.clock == mv.clock && mrep.clock >= 0.0f && mrep.clock <= mv.dur);
+        if (rep.state == DH_TRACK_OK) {
+            const float cn = (c + DT < mv.dur) ? c + DT : mv.dur;
+            DHT_TRUE_MSG(dist3(&T->m[3][0], pr) <= err + rp->E, "call %ld: tool %.3g from the path's point", call,
+                         dist3(&T->m[3][0], pr));
+            DHT_TRUE(!mrep.held && mrep.clock == ((c < mv.dur) ? cn : mv.dur));
+            DHT_TRUE(mrep.done == !(c < mv.dur));
+            ring_check(&g_ring, lim, wv, wa, ww);
+            for (k = 0; k < 3; k++) last_ok[k] = T->m[3][k];
+            any_ok = 1;
+        } else {
+            notok++;
+            if (!any_ok) start_held++;
+            DHT_TRUE(mrep.held && mrep.clock == c && !mrep.done);
+        }
+        held = mrep.held;
+        if (mrep.done) {
+            double ep, er;
+            DHT_TRUE(c == mv.dur && rep.state == DH_TRACK_OK);
+            dhs_true_error_f32(&g->r, q, &p->B, &ep, &er);
+            DHT_TRUE_MSG(ep <= err && er <= err_r, "done with the tool %.3g m, %.3g rad from B", ep, er);
+            DHT_TRUE(memcmp(&F, &p->B, sizeof F) == 0);
+            dones++;
+        }
+        Fp = F;
+    }
+    DHT_TRUE_MSG(dones == 3, "no done in %ld calls (duration %g s, %ld not OK)", max_calls, (double)mv.dur, notok);
+    dht_reach_max("move.path_not_ok", (double)notok);
+    return start_held;
+}
+static void frames_of(const rig *g, const double *qa, const double *qb, dh_mat4_f32 *A, dh_mat4_f32 *B)
+{
+    dhs_target_f32(&g->r, qa, A);
+    dhs_target_f32(&g->r, qb, B);
+}
+
+static void start_tracker(rig *g, dh_track_f32 *t, const double *q0)
+{
+    float qf[DH_MAX_JOINTS];
+    uint32_t i;
+    for (i = 0; i < g->r.n; i++) qf[i] = (float)q0[i];
+    DHT_EQ_INT(dh_track_init_f32(t, &g->r, &g->m, qf, DT), DH_OK);
+}
+
+
+/* a line or an arc (arc != 0) between two configurations of the safe
+ * region, accepted by path_good */
+static void draw_path(rig *g, const dh_track_f32 *t, int arc, float *q0, dh_path_f32 *p, float *via,
+                      dh_mat4_f32 *A, dh_mat4_f32 *B)
+{
+    double qa[DH_MAX_JOINTS];
+    int tries, k;
+    for (tries = 0; tries < 2000; tries++) {
+        double qb[DH_MAX_JOINTS], e[3], d[3], h;
+        safe_q(qa);
+        for (k = 0; k < 6; k++) qb[k] = qa[k] + dht_rand_uniform(-15.0, 15.0);
+        if (fabs(qb[4]) < 45.0 || fabs(qb[4]) > 135.0 || fabs(qb[2]) < 55.0 || fabs(qb[2]) > 125.0) continue;
+        frames_of(g, qa, qb, A, B);
+        if (arc) {
+            for (k = 0; k < 3; k++) d[k] = B->m[3][k] - A->m[3][k];
+            dhr_rand_unit3(e);
+            h = (e[0] * d[0] + e[1] * d[1] + e[2] * d[2]) / (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            for (k = 0; k < 3; k++) e[k] -= h * d[k];
+            h = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+            if (h < 0.1) continue;
+            for (k = 0; k < 3; k++)
+                via[k] = (float)(0.5 * (A->m[3][k] + B->m[3][k]) +
+                                 dht_rand_uniform(0.2, 0.5) * dist3f(&A->m[3][0], &B->m[3][0]) * e[k] / h);
+            if (dh_path_arc_f32(p, A, via, B) != DH_OK) continue;
+        } else if (dh_path_line_f32(p, A, B) != DH_OK) {
+            continue;
+        }
+        if (p->length < 0.02f) continue;
+        for (k = 0; k < DH_MAX_JOINTS; k++) q0[k] = (float)qa[k];
+        if (path_good(g, p, t->sing_threshold, q0)) return;
+    }
+    DHT_TRUE_MSG(0, "no path drawn in 2000 tries");
+}
+
+
+static void cart_moves(int arc, int offset)
+{
+    rig g;
+    dh_track_f32 t;
+    int it, n = (int)DHT_ITER(12);
+    rig_make(&g);
+    for (it = 0; it < n; it++) {
+        float q0[DH_MAX_JOINTS];
+        dh_mat4_f32 A, B;
+        dh_path_f32 p;
+        float via[3];
+        ref_path rp;
+        long start_held;
+        /* the thresholds of a tracker at any configuration */
+        start_tracker(&g, &t, Q_HOME);
+        draw_path(&g, &t, arc, q0, &p, via, &A, &B);
+        ref_make(&rp, &A, &B, arc ? via : NULL);
+        /* the tracker starts at the branch's solution of A, or a few
+         * degrees per joint away from it */
+        if (offset) {
+            uint32_t i;
+            for (i = 0; i < g.r.n; i++) q0[i] += (float)dht_rand_uniform(-2.0, 2.0);
+        }
+        DHT_EQ_INT(dh_track_init_f32(&t, &g.r, &g.m, q0, DT), DH_OK);
+        start_held = run_path(&g, &t, &p, &rp, &LIM);
+        /* 2 degrees at 180 deg/s take 11 periods at least */
+        if (offset) DHT_TRUE(start_held > 0);
+    }
+}
+
+static void lines(void)
+{
+    cart_moves(0, 0);
+}
+
+static void arcs(void)
+{
+    cart_moves(1, 0);
+}
+
+static void offset_start(void)
+{
+    cart_moves(0, 1);
+}
+
+/* joint moves within random limits, then a line from where each ends */
+static void joint_moves(void)
+{
+    rig g;
+    dh_track_f32 t;
+    int it, n = (int)DHT_ITER(8);
+    long strict = 0;
+    rig_make(&g);
+    for (it = 0; it < n; it++) {
+        double q0[DH_MAX_JOINTS], qb[DH_MAX_JOINTS], rnd[DH_MAX_JOINTS];
+        float qa[DH_MAX_JOINTS], q1[DH_MAX_JOINTS], vmax[DH_MAX_JOINTS], amax[DH_MAX_JOINTS], jmax[DH_MAX_JOINTS];
+        float q[DH_MAX_JOINTS], qp[DH_MAX_JOINTS];
+        double sp[DH_MAX_JOINTS];
+        const int jerk = it & 1;
+        dh_move_f32 mv;
+        dh_move_report_f32 rep;
+        dh_mat4_f32 A, B;
+        dh_path_f32 p;
+        ref_path rp;
+        long call, max_calls, dones = 0;
+        float c = 0.0f;
+        uint32_t i;
+        safe_q(q0);
+        safe_q(qb);
+        for (i = 0; i < 6; i++) {
+            qa[i] = (float)q0[i];
+            q1[i] = (float)qb[i];
+            vmax[i] = (float)dht_rand_uniform(20.0, 250.0);
+            amax[i] = (float)dht_rand_uniform(100.0, 5000.0);
+            jmax[i] = (float)dht_rand_uniform(2000.0, 100000.0);
+        }
+        DHT_EQ_INT(dh_move_joint_f32(&mv, 6u, qa, q1, vmax, amax, jerk ? jmax : NULL), DH_OK);
+        DHT_TRUE(mv.clock == 0.0f && mv.dur > 0.0f);
+        /* motion.h: the rounding of the clock and of q */
+        for (i = 0; i < 6; i++)
+            rnd[i] = (double)vmax[i] * 2.0 * ulpf(mv.dur) + 4.0 * ulpf(fmax(fabs(q0[i]), fabs(qb[i]))) +
+                     4.0 * ulpf((double)q1[i] - qa[i]);
+        memcpy(qp, qa, sizeof qp);
+        max_calls = (long)ceil(mv.dur / DT);
+        for (call = 0; call < max_calls + 3; call++) {
+            DHT_EQ_INT(dh_move_joint_step_f32(&mv, DT, q, &rep), DH_OK);
+            DHT_TRUE(rep.clock == mv.clock && !rep.held);
+            for (i = 0; i < 6; i++) {
+                const double s = (double)q[i] - qp[i], dc = (double)rep.clock - c;
+                const double m = 1.0 - 1.0 / 1024.0;
+                DHT_TRUE(isfinite(q[i]));
+                DHT_TRUE(dc >= 0.0 && dc <= (double)DT * (1.0 + 1e-3));
+                DHT_TRUE_MSG(fabs(s) <= vmax[i] * m * dc + rnd[i], "call %ld: joint %u step %.9g beyond %.9g", call,
+                             (unsigned)i, fabs(s), vmax[i] * m * dc + rnd[i]);
+                /* where the margin covers the rounding: within vmax dt itself */
+                if (rnd[i] + (double)vmax[i] * ulpf(mv.dur) <= (double)vmax[i] * DT / 1024.0) {
+                    DHT_TRUE_MSG(fabs(s) <= (double)vmax[i] * DT, "call %ld: joint %u step beyond vmax dt", call,
+                                 (unsigned)i);
+                    strict++;
+                }
+                if (call > 0)
+                    DHT_TRUE_MSG(fabs(s - sp[i]) <= amax[i] * m * (double)DT * DT + 2.0 * rnd[i],
+                                 "call %ld: joint %u step change %.9g beyond %.9g", call, (unsigned)i, fabs(s - sp[i]),
+                                 amax[i] * m * (double)DT * DT + 2.0 * rnd[i]);
+                sp[i] = s;
+                qp[i] = q[i];
+            }
+            c = rep.clock;
+            if (rep.done) {
+                DHT_TRUE(rep.clock == mv.dur && memcmp(q, q1, 6u * sizeof(float)) == 0);
+                /* no earlier than the clock's steps allow (each within dt (1 + 1e-3), above) */
+                DHT_TRUE((double)(call + 1) * DT * (1.0 + 1e-3) >= (double)mv.dur);
+                dones++;
+            } else {
+                DHT_TRUE(rep.clock < mv.dur);
+            }
+        }
+        DHT_TRUE_MSG(dones >= 3, "joint move: %ld done within %ld calls (duration %g s)", dones, max_calls + 3,
+                     (double)mv.dur);
+        /* a line from where the move ended, the tracker started there */
+        for (i = 0; i < 6; i++) qb[i] = (double)q1[i] + dht_rand_uniform(-5.0, 5.0);
+        {
+            double qe[DH_MAX_JOINTS];
+            for (i = 0; i < 6; i++) qe[i] = q1[i];
+            frames_of(&g, qe, qb, &A, &B);
+        }
+        DHT_EQ_INT(dh_path_line_f32(&p, &A, &B), DH_OK);
+        ref_make(&rp, &A, &B, NULL);
+        DHT_EQ_INT(dh_track_init_f32(&t, &g.r, &g.m, q1, DT), DH_OK);
+        memcpy(qp, q1, sizeof qp);
+        if (path_good(&g, &p, t.sing_threshold, qp)) (void)run_path(&g, &t, &p, &rp, &LIM);
+    }
+    /* the strict bound was checked */
+    DHT_TRUE(strict > 0);
+}
+
+/* a line through the axis of joint 1, tool pointing down: the middle is
+ * unreachable, the clock holds there and the move never ends */
+static void unreachable_middle(void)
+{
+    rig g;
+    dh_track_f32 t;
+    int it, n = (int)DHT_ITER(4);
+    rig_make(&g);
+    for (it = 0; it < n; it++) {
+        const double th = dht_rand_uniform(-180.0, 180.0), rho = dht_rand_uniform(0.35, 0.5),
+                     z = dht_rand_uniform(0.1, 0.4);
+        dhr_mat4 D, Rz, Rx;
+        dh_mat4_f32 A, B, F, Fp;
+        dh_path_f32 p;
+        dh_move_f32 mv;
+        dh_move_report_f32 mrep;
+        dh_track_report_f32 rep;
+        ref_path rp;
+        dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+        float q[DH_MAX_JOINTS], qp[DH_MAX_JOINTS], sp[DH_MAX_JOINTS], vmax[DH_MAX_JOINTS], amax[DH_MAX_JOINTS];
+        uint32_t ns = 0, i;
+        long call, calls, notok = 0;
+        int have_sp = 0, held = 0;
+        double last_ok[3], far = 0.0, away;
+        dhr_rotz(th, &Rz);
+        dhr_rotx(180.0, &Rx);
+        dhr_mul(&Rz, &Rx, &D);
+        D.m[3][0] = rho * cos(th * DHR_PI / 180.0);
+        D.m[3][1] = rho * sin(th * DHR_PI / 180.0);
+        D.m[3][2] = z;
+        dhr_to_f32(&D, &A);
+        D.m[3][0] = -D.m[3][0];
+        D.m[3][1] = -D.m[3][1];
+        dhr_to_f32(&D, &B);
+        DHT_EQ_INT(dh_path_line_f32(&p, &A, &B), DH_OK);
+        ref_make(&rp, &A, &B, NULL);
+        DHT_EQ_INT(dh_ikc_f32(&g.m, &A, NULL, 0u, sol, &ns), DH_OK);
+        DHT_TRUE(ns > 0u);
+        DHT_EQ_INT(dh_track_init_f32(&t, &g.r, &g.m, sol[0].q, DT), DH_OK);
+        away = (double)LIM.vmax * DT * (1.0 + REL_FD) + (double)t.pos_tol + 3e-7 + 2.0 * rp.E;
+        for (i = 0; i < g.r.n; i++) {
+            vmax[i] = g.r.joint[i].vmax;
+            amax[i] = g.r.joint[i].amax;
+        }
+        memcpy(qp, t.q, sizeof qp);
+        tool_at(&g, t.q, last_ok);
+        DHT_EQ_INT(dh_move_path_f32(&mv, &p, &LIM), DH_OK);
+        calls = (long)ceil(mv.dur / DT) + 2000;
+        memset(&Fp, 0, sizeof Fp);
+        for (call = 0; call < calls; call++) {
+            const float c = mv.clock;
+            double tgt[3], tool[3];
+            int k;
+            DHT_EQ_INT(dh_move_target_f32(&mv, &F), DH_OK);
+            for (k = 0; k < 3; k++) tgt[k] = F.m[3][k];
+            if (held) DHT_TRUE(memcmp(&F, &Fp, sizeof F) == 0);
+            DHT_TRUE_MSG(dist3(tgt, last_ok) <= away, "call %ld: target %.3g m from the last OK tool", call,
+                         dist3(tgt, last_ok));
+            DHT_EQ_INT(dh_track_step_f32(&t, &F, q, &rep), DH_OK);
+            check_step(&g, &t, q, qp, sp, &have_sp, vmax, amax, NULL, call);
+            DHT_EQ_INT(dh_move_advance_f32(&mv, DT, rep.state, &mrep), DH_OK);
+            DHT_TRUE(!mrep.done && mrep.clock < mv.dur);
+            tool_at(&g, q, tool);
+            if (rep.state != DH_TRACK_OK) {
+                notok++;
+                DHT_TRUE(mrep.held && mrep.clock == c);
+            } else {
+                DHT_TRUE(!mrep.held && mrep.clock > c);
+                memcpy(last_ok, tool, sizeof last_ok);
+            }
+            held = mrep.held;
+            Fp = F;
+            far = fmax(far, dist3(tool, tgt));
+        }
+        /* the move stopped at the unreachable stretch: held at the end */
+        DHT_TRUE(notok > 0 && held);
+        /* measured, not bounded: the tool's distance from the target */
+        dht_reach_max("move.unreachable_tool_target_over_vdt", far / ((double)LIM.vmax * DT));
+    }
+}
+
+/* the five calls on an mv that holds no move of their kind (path: 1 for
+ * a path move's calls): DH_ERR_ARG, outputs and mv untouched */
+static void no_move(dh_move_f32 *mv, int path, int joint)
+{
+    float q[DH_MAX_JOINTS], q2[DH_MAX_JOINTS];
+    dh_move_report_f32 rep, rep2;
+    dh_mat4_f32 F, F2;
+    dh_move_f32 keep = *mv;
+    memset(q, 0x5a, sizeof q);
+    memset(&rep, 0x5a, sizeof rep);
+    memset(&F, 0x5a, sizeof F);
+    memcpy(q2, q, sizeof q);
+    rep2 = rep;
+    F2 = F;
+    if (joint) DHT_EQ_INT(dh_move_joint_step_f32(mv, DT, q, &rep), DH_ERR_ARG);
+    if (path) {
+        DHT_EQ_INT(dh_move_target_f32(mv, &F), DH_ERR_ARG);
+        DHT_EQ_INT(dh_move_advance_f32(mv, DT, DH_TRACK_OK, &rep), DH_ERR_ARG);
+    }
+    DHT_TRUE(memcmp(q, q2, sizeof q) == 0 && memcmp(&rep, &rep2, sizeof rep) == 0);
+    DHT_TRUE(memcmp(&F, &F2, sizeof F) == 0 && memcmp(mv, &keep, sizeof keep) == 0);
+}
+
+/* a bad period on a valid move: status st, outputs and mv untouched */
+static void bad_dt(dh_move_f32 *mv, float dt, dh_status st)
+{
+    float q[DH_MAX_JOINTS], q2[DH_MAX_JOINTS];
+    dh_move_report_f32 rep, rep2;
+    dh_move_f32 keep = *mv;
+    memset(q, 0x5a, sizeof q);
+    memset(&rep, 0x5a, sizeof rep);
+    memcpy(q2, q, sizeof q);
+    rep2 = rep;
+    if (mv->kind == (uint32_t)DH_MOVE_JOINT)
+        DHT_EQ_INT(dh_move_joint_step_f32(mv, dt, q, &rep), st);
+    else
+        DHT_EQ_INT(dh_move_advance_f32(mv, dt, DH_TRACK_OK, &rep), st);
+    DHT_TRUE(memcmp(q, q2, sizeof q) == 0 && memcmp(&rep, &rep2, sizeof rep) == 0);
+    DHT_TRUE(memcmp(mv, &keep, sizeof keep) == 0);
+}
+
+static void bad_periods(dh_move_f32 *mv)
+{
+    bad_dt(mv, (float)NAN, DH_ERR_NAN);
+    bad_dt(mv, (float)INFINITY, DH_ERR_NAN);
+    bad_dt(mv, -(float)INFINITY, DH_ERR_NAN);
+    bad_dt(mv, 0.0f, DH_ERR_ARG);
+    bad_dt(mv, -1e-3f, DH_ERR_ARG);
+}
+
+static void move_bad(void)
+{
+    rig g;
+    dh_move_f32 mv, keep;
+    dh_move_report_f32 rep;
+    dh_path_f32 p;
+    dh_mat4_f32 A, B;
+    dh_cart_limits_f32 lim;
+    float q0[DH_MAX_JOINTS], q1[DH_MAX_JOINTS], v[DH_MAX_JOINTS], a[DH_MAX_JOINTS], j[DH_MAX_JOINTS];
+    double qb[DH_MAX_JOINTS];
+    const float nan = (float)NAN, inf = (float)INFINITY;
+    uint32_t i;
+    int k;
+    rig_make(&g);
+    for (i = 0; i < 6; i++) {
+        q0[i] = (float)Q_HOME[i];
+        q1[i] = (float)Q_HOME[i] + 10.0f;
+        v[i] = 90.0f;
+        a[i] = 900.0f;
+        j[i] = 9000.0f;
+    }
+    /* a move written by no constructor */
+    memset(&mv, 0, sizeof mv);
+    no_move(&mv, 1, 1);
+    /* a valid start, then each bad argument in turn */
+    DHT_EQ_INT(dh_move_joint_f32(&mv, 6u, q0, q1, v, a, j), DH_OK);
+    bad_periods(&mv);
+    no_move(&mv, 1, 0); /* a joint move given to the path calls */
+    for (k = 0; k < 2; k++) {
+        const float bad = k ? inf : nan;
+        q1[2] = bad;
+        DHT_EQ_INT(dh_move_joint_f32(&mv, 6u, q0, q1, v, a, j), DH_ERR_NAN);
+        no_move(&mv, 1, 1);
+        q1[2] = (float)Q_HOME[2] + 10.0f;
+        q0[3] = bad;
+        DHT_EQ_INT(dh_move_joint_f32(&mv, 6u, q0, q1, v, a, j), DH_ERR_NAN);
+        q0[3] = (float)Q_HOME[3];
+        v[1] = bad;
+        DHT_EQ_INT(dh_move_joint_f32(&mv, 6u, q0, q1, v, a, j), DH_ERR_NAN);
+        v[1] = 90.0f;
+        a[4] = bad;
+        DHT_EQ_INT(dh_move_joint_f32(&mv, 6u, q0, q1, v, a, j), DH_ERR_NAN);
+        a[4] = 900.0f;
+        j[5] = bad;
+        DHT_EQ_INT(dh_move_joint_f32(&mv, 6u, q0, q1, v, a, j), DH_ERR_NAN);
+        no_move(&mv, 1, 1);
+        j[5] = 9000.0f;
+    }
+    DHT_EQ_INT(dh_move_joint_f32(&mv, 0u, q0, q1, v, a, j), DH_ERR_ARG);
+    DHT_EQ_INT(dh_move_joint_f32(&mv, (uint32_t)DH_MAX_JOINTS + 1u, q0, q1, v, a, j), DH_ERR_ARG);
+    no_move(&mv, 1, 1);
+    v[0] = 0.0f;
+    DHT_EQ_INT(dh_move_joint_f32(&mv, 6u, q0, q1, v, a, NULL), DH_ERR_ARG);
+    v[0] = 90.0f;
+    a[3] = -1.0f;
+    DHT_EQ_INT(dh_move_joint_f32(&mv, 6u, q0, q1, v, a, NULL), DH_ERR_ARG);
+    a[3] = 900.0f;
+    j[0] = 0.0f;
+    DHT_EQ_INT(dh_move_joint_f32(&mv, 6u, q0, q1, v, a, j), DH_ERR_ARG);
+    no_move(&mv, 1, 1);
+    j[0] = 9000.0f;
+    /* the duration overflows: 3e38 degrees at the smallest speed */
+    q1[1] = 3e38f;
+    v[1] = 1e-30f;
+    DHT_EQ_INT(dh_move_joint_f32(&mv, 6u, q0, q1, v, a, NULL), DH_ERR_OVERFLOW);
+    no_move(&mv, 1, 1);
+    q1[1] = (float)Q_HOME[1] + 10.0f;
+    v[1] = 90.0f;
+    /* a clock that no call wrote: beyond the duration, NaN */
+    DHT_EQ_INT(dh_move_joint_f32(&mv, 6u, q0, q1, v, a, j), DH_OK);
+    keep = mv;
+    mv.clock = mv.dur * 2.0f;
+    no_move(&mv, 1, 1);
+    mv.clock = nan;
+    no_move(&mv, 1, 1);
+    mv = keep;
+    mv.n = 0u;
+    no_move(&mv, 1, 1);
+    mv = keep;
+    mv.kind = 7u;
+    no_move(&mv, 1, 1);
+
+    /* path moves */
+    dhs_target_f32(&g.r, Q_HOME, &A);
+    for (i = 0; i < 6; i++) qb[i] = Q_HOME[i] + 5.0;
+    dhs_target_f32(&g.r, qb, &B);
+    DHT_EQ_INT(dh_path_line_f32(&p, &A, &B), DH_OK);
+    DHT_EQ_INT(dh_move_path_f32(&mv, &p, &LIM), DH_OK);
+    bad_periods(&mv);
+    no_move(&mv, 0, 1); /* a path move given to the joint step */
+    /* a state that is no dh_track_state */
+    keep = mv;
+    memset(&rep, 0x5a, sizeof rep);
+    {
+        dh_move_report_f32 rep2 = rep;
+        DHT_EQ_INT(dh_move_advance_f32(&mv, DT, (dh_track_state)3, &rep), DH_ERR_ARG);
+        DHT_EQ_INT(dh_move_advance_f32(&mv, DT, (dh_track_state)-1, &rep), DH_ERR_ARG);
+        DHT_TRUE(memcmp(&rep, &rep2, sizeof rep) == 0 && memcmp(&mv, &keep, sizeof mv) == 0);
+    }
+    for (k = 0; k < 8; k++) {
+        float *f;
+        lim = LIM;
+        f = (k & 3) == 0 ? &lim.vmax : (k & 3) == 1 ? &lim.amax : (k & 3) == 2 ? &lim.wmax : &lim.wdmax;
+        *f = (k < 4) ? nan : inf;
+        DHT_EQ_INT(dh_move_path_f32(&mv, &p, &lim), DH_ERR_NAN);
+        no_move(&mv, 1, 1);
+        *f = (k < 4) ? 0.0f : -1.0f;
+        DHT_EQ_INT(dh_move_path_f32(&mv, &p, &lim), DH_ERR_ARG);
+        no_move(&mv, 1, 1);
+    }
+    /* a path written by no constructor */
+    DHT_EQ_INT(dh_move_path_f32(&mv, &p, &LIM), DH_OK);
+    memset(&p, 0, sizeof p);
+    DHT_EQ_INT(dh_move_path_f32(&mv, &p, &LIM), DH_ERR_ARG);
+    no_move(&mv, 1, 1);
+    /* the duration overflows: a line to 3e38 at 1e-30 m/s */
+    B = A;
+    B.m[3][0] = 3e38f;
+    DHT_EQ_INT(dh_path_line_f32(&p, &A, &B), DH_OK);
+    lim = LIM;
+    lim.vmax = 1e-30f;
+    lim.amax = 1e-30f;
+    DHT_EQ_INT(dh_move_path_f32(&mv, &p, &lim), DH_ERR_OVERFLOW);
+    no_move(&mv, 1, 1);
+}
+
+static const dht_case cases[] = {
+    DHT_CASE(lines),
+    DHT_CASE(arcs),
+    DHT_CASE(offset_start),
+    DHT_CASE(joint_moves),
+    DHT_CASE(unreachable_middle),
+    DHT_CASE(move_bad),
+};
+DHT_MAIN(cases)
