@@ -542,6 +542,21 @@ static void joint_moves(void)
             amax[i] = (float)dht_rand_uniform(100.0, 5000.0);
             jmax[i] = (float)dht_rand_uniform(2000.0, 100000.0);
         }
+        if (it == 0) {
+            /* a fixed first move on which the strict bound applies to every
+             * joint whatever the seed: fast joints, |q| < 128 deg, 30 deg
+             * moves, a short duration (the rounding terms below the margin) */
+            static const float fa[6] = { 10.0f, -60.0f, 80.0f, -70.0f, -90.0f, 20.0f };
+            static const float fb[6] = { 40.0f, -90.0f, 50.0f, -100.0f, -60.0f, 50.0f };
+            for (i = 0; i < 6; i++) {
+                qa[i] = fa[i];
+                q1[i] = fb[i];
+                q0[i] = fa[i];
+                qb[i] = fb[i];
+                vmax[i] = 250.0f;
+                amax[i] = 2000.0f;
+            }
+        }
         DHT_EQ_INT(dh_move_joint_f32(&mv, 6u, qa, q1, vmax, amax, jerk ? jmax : NULL), DH_OK);
         DHT_TRUE(mv.clock == 0.0f && mv.dur > 0.0f);
         /* motion.h: the rounding of the clock and of q */
@@ -598,8 +613,8 @@ static void joint_moves(void)
         memcpy(qp, q1, sizeof qp);
         if (path_good(&g, &p, t.sing_threshold, qp)) (void)run_path(&g, &t, &p, &rp, &LIM);
     }
-    /* the strict bound was checked */
-    DHT_TRUE(strict > 0);
+    /* the strict bound was checked (on every joint of the fixed first move) */
+    DHT_TRUE(strict >= 6);
 }
 
 /* a line through the axis of joint 1, tool pointing down: the middle is
@@ -676,8 +691,11 @@ static void unreachable_middle(void)
             Fp = F;
             far = fmax(far, dist3(tool, tgt));
         }
-        /* the move stopped at the unreachable stretch: held at the end */
-        DHT_TRUE(notok > 0 && held);
+        /* the move met the unreachable stretch (every call above: never
+         * done, the clock short of the end); at the stretch's edge the
+         * tracker can reach a held target and advance the clock a period
+         * before it lags again, so the last call may be OK or held */
+        DHT_TRUE(notok > 0);
         /* measured, not bounded: the tool's distance from the target */
         dht_reach_max("move.unreachable_tool_target_over_vdt", far / ((double)LIM.vmax * DT));
     }
