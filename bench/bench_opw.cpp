@@ -58,21 +58,16 @@ int bench_opw_setup(const float (*T)[16], bench_op *o, int max)
         o_Tf[i].matrix() = M;
         o_Td[i].matrix() = M.cast<double>();
     }
-    if (n < max) {
-        o[n].id = "opw_inverse_f32";
-        o[n].group = "ikc_kr6";
-        o[n].lib = "opw";
-        o[n].desc = "opw_kinematics::inverse<float>, KUKA KR6 R700 sixx (m), 8 solutions (NaN where none), no limits";
-        o[n].fn = bw_opw_inverse_f32;
-        n++;
-    }
-    if (n < max) {
-        o[n].id = "opw_inverse_f64";
-        o[n].group = "ikc_kr6";
-        o[n].lib = "opw";
-        o[n].desc = "opw_kinematics::inverse<double>, same targets (for information: dhmath's float path beside opw's double)";
-        o[n].fn = bw_opw_inverse_f64;
-        n++;
+    static const bench_op rows[] = {
+        { "opw_inverse_f32", "ikc_kr6", "opw",
+          "opw_kinematics::inverse<float>, KUKA KR6 R700 sixx (m), 8 solutions (NaN where none), no limits",
+          bw_opw_inverse_f32 },
+        { "opw_inverse_f64", "ikc_kr6", "opw",
+          "opw_kinematics::inverse<double>, same targets (for information: dhmath's float path beside opw's double)",
+          bw_opw_inverse_f64 },
+    };
+    for (const bench_op &r : rows) {
+        if (n < max) o[n++] = r;
     }
     return n;
 }
