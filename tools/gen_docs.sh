@@ -16,7 +16,9 @@
 # run, so every page it writes names the same commit (that of HEAD); commit
 # the pages afterwards. Runs the generators one after the other under nice,
 # JOBS (default 2) compile jobs each. Needs what each generator needs
-# (tools/README.md).
+# (tools/README.md). OPW_DIR (a clone of opw_kinematics, never copied into
+# this repository) is passed on to bench.sh and target_bench.sh, which then
+# measure opw beside dh_ikc_* (docs/performance.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 PAGES=${*:-"host target footprint plots coverage"}
