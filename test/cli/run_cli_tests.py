@@ -1583,7 +1583,11 @@ def group_move(seed, tmp):
     rB = [rng.uniform(-1, 1) for _ in range(3)] + [rng.uniform(-20.0, 20.0)]
     endB = 'trans(%.6f,%.6f,%.6f) %s rot(%.6f,%.6f,%.6f,%.6f)' % tuple(pB + [to_expr(A).split(' ', 1)[1]] + rB)
     B = ref_expr(endB)
-    via = [p0[r] + 0.5 * dp[r] + (0.05 if r == 2 else 0.0) for r in range(3)]
+    # the via point 5 cm from the chord's middle, across the chord (a short arc)
+    ax = [0.0, 0.0, 1.0] if abs(dp[2]) < 0.9 * math.sqrt(sum(d * d for d in dp)) else [1.0, 0.0, 0.0]
+    nv = [dp[1] * ax[2] - dp[2] * ax[1], dp[2] * ax[0] - dp[0] * ax[2], dp[0] * ax[1] - dp[1] * ax[0]]
+    nn = math.sqrt(sum(v * v for v in nv))
+    via = [p0[r] + 0.5 * dp[r] + 0.05 * nv[r] / nn for r in range(3)]
     viaC = 'trans(%.6f,%.6f,%.6f)' % tuple(via)
     endC = to_expr(A)
     speed, accel, rsp, racc = 0.25, 1.0, 60.0, 240.0
