@@ -3,7 +3,9 @@
  * dhmath.c - host command-line tool over the dhmath library.
  *
  * Exit status: 0 success, 2 any error (usage, EXPR, robot file, numbers,
- * library status), 3 `ik` did not converge (best joint values printed).
+ * library status), 3 `ik` did not converge (best joint values printed),
+ * `ik --all` found no solution, or `move` had periods not ok or met its
+ * period cap (the periods run are printed).
  * On status 2 nothing is written to stdout: every result is computed and
  * checked before the first byte is printed.
  * See docs/cli.md for the reference.
@@ -78,7 +80,8 @@ static const char k_usage_tail[] =
     "'-' as EXPR or ROBOT reads it from standard input (once per command).\n"
     "--fixed: the integer-only fixed-point path (angles Q16.16 degrees, rotations Q2.30,\n"
     "lengths with DH_QPOS_FRAC fraction bits), printed in the same units as without it.\n"
-    "Numbers are printed with %.9g. Exit status: 0 ok, 2 error, 3 ik not converged or no solution.\n";
+    "Numbers are printed with %.9g. Exit status: 0 ok, 2 error, 3 ik not converged or no solution,\n"
+    "move lagging, unreachable or not completed.\n";
 
 /* ---- messages ----------------------------------------------------------- */
 
