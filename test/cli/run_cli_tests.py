@@ -1493,10 +1493,11 @@ def trap_T(d, v, a):
     return 2.0 * math.sqrt(d / a)
 
 
-def check_joint_limits(what, q0, rows, vmax, amax, dt, eps):
+def check_joint_limits(what, q0, rows, vmax, amax, dt, eps, at_rest=True):
     """every step within vmax dt and every change of step within amax dt^2
     (finite differences here), q0 the configuration before the first row,
-    at rest; eps[i]: the rounding allowance of joint i."""
+    at rest; eps[i]: the rounding allowance of joint i. at_rest: the last
+    row is at rest too (holding it next period keeps the bound)."""
     prev, step0 = q0, [0.0] * len(q0)
     worst_v = worst_a = 0.0
     for k, row in enumerate(rows):
@@ -1515,6 +1516,10 @@ def check_joint_limits(what, q0, rows, vmax, amax, dt, eps):
                 return worst_v, worst_a
             step0[i] = st
         prev = q
+    if at_rest:
+        for i in range(len(q0)):
+            check(abs(step0[i]) <= amax[i] * dt * dt + 2.0 * eps[i], '%s: not at rest at the end: joint %d last step '
+                  '%.9g' % (what, i + 1, step0[i]))
     check(True, what)
     return worst_v, worst_a
 
@@ -1662,7 +1667,8 @@ def group_move(seed, tmp):
         check(head == head_want and abs(len(frows) - cap) <= 2, 'move beyond reach: %d periods, cap %d' %
               (len(frows), cap))
         check(frows[-1][2] == 'unreachable', 'move beyond reach: last %r' % (frows[-1][2],))
-        check_joint_limits('move beyond reach', qa, frows, [vm] * n, [am] * n, dt, [4 * f32_ulp(360.0)] * n)
+        check_joint_limits('move beyond reach', qa, frows, [vm] * n, [am] * n, dt, [4 * f32_ulp(360.0)] * n,
+                           at_rest=False)
 
     # 5. every bad argument: exit 2, nothing on stdout, the message naming it
     q0 = ['--q0', ','.join(map(str, qa))]
