@@ -31,7 +31,10 @@
  * jmax and R), the seven-phase profile's minimum duration for them
  * (Biagiotti & Melchiorri 2008, 3.4), and the same finite differences
  * plus the third ones (8 samples' noise) of the position vector (the
- * TOTAL jerk) and of the rotation angle against jmax and wjmax.
+ * TOTAL jerk) and of the rotation angle against jmax and wjmax. Without
+ * jerk limits the functions are the trapezoid's bit for bit; the executor
+ * (dh_move_path_jerk_f32) targets the move's frame at its clock; every
+ * status of a bad jerk limit empties the profile and the move.
  */
 #include <float.h>
 #include <math.h>
@@ -551,30 +554,11 @@ static void move_run(const dh_profile_f32 *prof, const dh_path_f32 *p, const dh_
 
 static double rlog(double lo, double hi) { return pow(10.0, dht_rand_uniform(lo, hi)); }
 
-static void moves_within_limits(void)
+/* n random lines and arcs moved within limits spread so that each of the
+ * speed, acceleration, centripetal and (jerk) jerk bounds binds in some */
+static void random_moves(int n, int jerk)
 {
-    int it, n = DHT_ITER(60);
-    for (it = 0; it < n; it++) {
-        dh_path_f32 p;
-        ref_path r;
-        dh_cart_limits_f32 lim;
-        double t0 = dht_rand_uniform(0.3, 1.5), deg = (it % 4 == 0) ? 0.0 : dht_rand_uniform(5.0, 175.0);
-        rand_path(&p, &r, it % 2, rlog(-1.0, 3.0), deg);
-        lim.vmax = (float)(r.len / t0 * rlog(-0.5, 0.5));
-        lim.amax = (float)(lim.vmax / t0 * rlog(0.0, 1.0));
-        lim.wmax = (float)((deg > 0.0 ? deg : 90.0) / t0 * rlog(-0.5, 0.5));
-        lim.wdmax = (float)(lim.wmax / t0 * rlog(0.0, 1.0));
-        move_check(&p, &r, &lim, NULL);
-    }
-    dht_printf("moves: worst speed %.6f, acceleration %.6f, angular speed %.6f, angular acceleration %.6f of the limits\n",
-               fd_worst[0], fd_worst[1], fd_worst[3], fd_worst[4]);
-}
-
-/* jerk-limited moves: random lines and arcs, limits spread so that each
- * of the speed, acceleration, jerk and centripetal bounds binds in some */
-static void jerk_moves_within_limits(void)
-{
-    int it, n = DHT_ITER(40);
+    int it;
     for (it = 0; it < n; it++) {
         dh_path_f32 p;
         ref_path r;
@@ -586,67 +570,69 @@ static void jerk_moves_within_limits(void)
         lim.amax = (float)(lim.vmax / t0 * rlog(0.0, 1.0));
         lim.wmax = (float)((deg > 0.0 ? deg : 90.0) / t0 * rlog(-0.5, 0.5));
         lim.wdmax = (float)(lim.wmax / t0 * rlog(0.0, 1.0));
-        jk.jmax = (float)(lim.amax / t0 * rlog(-0.5, 1.5));
-        jk.wjmax = (float)(lim.wdmax / t0 * rlog(-0.5, 1.5));
-        move_check(&p, &r, &lim, &jk);
+        if (jerk) {
+            jk.jmax = (float)(lim.amax / t0 * rlog(-0.5, 1.5));
+            jk.wjmax = (float)(lim.wdmax / t0 * rlog(-0.5, 1.5));
+        }
+        move_check(&p, &r, &lim, jerk ? &jk : NULL);
     }
-    dht_printf("jerk moves: worst speed %.6f, acceleration %.6f, jerk %.6f, angular %.6f %.6f %.6f of the limits\n",
-               fd_worst[0], fd_worst[1], fd_worst[2], fd_worst[3], fd_worst[4], fd_worst[5]);
+    dht_printf("%s: worst speed %.6f, acceleration %.6f, jerk %.6f, angular %.6f %.6f %.6f of the limits\n",
+               jerk ? "jerk-limited moves" : "moves", fd_worst[0], fd_worst[1], fd_worst[2], fd_worst[3],
+               fd_worst[4], fd_worst[5]);
 }
 
-/* an arc of radius 5 mm at 500 mm/s, 1000 mm/s^2: the centripetal term
- * binds (V = sqrt(1000 * 5 / sqrt 2) = 59.5 mm/s) */
+static void moves_within_limits(void) { random_moves(DHT_ITER(60), 0); }
+static void jerk_moves_within_limits(void) { random_moves(DHT_ITER(40), 1); }
+
+/* an arc of radius 5 mm, sweep 5 rad, turning 30 degrees, into p and its
+ * reference r; limits 500 mm/s, 1000 mm/s^2, 1000 deg/s, 10000 deg/s^2 */
+static void small_arc(dh_path_f32 *p, ref_path *r, dh_cart_limits_f32 *lim)
+{
+    dh_mat4_f32 A, B;
+    double pa[3], pb[3];
+    float via[3];
+    arc_points(5.0, 100.0, 5.0, 0.5, pa, via, pb);
+    frames(pa, pb, 30.0, &A, &B);
+    DHT_EQ_INT(dh_path_arc_f32(p, &A, via, &B), DH_OK);
+    ref_make(r, &A, via, &B, 1);
+    lim->vmax = 500.0f;
+    lim->amax = 1000.0f;
+    lim->wmax = 1000.0f;
+    lim->wdmax = 10000.0f;
+}
+
+/* the small arc: the centripetal term binds (V = sqrt(1000 * 5 / sqrt 2)
+ * = 59.5 mm/s) */
 static void small_radius_binds(void)
 {
     dh_path_f32 p;
     ref_path r;
     dh_profile_f32 prof;
     dh_cart_limits_f32 lim;
-    dh_mat4_f32 A, B;
-    double pa[3], pb[3];
-    float via[3];
-    arc_points(5.0, 100.0, 5.0, 0.5, pa, via, pb);
-    frames(pa, pb, 30.0, &A, &B);
-    DHT_EQ_INT(dh_path_arc_f32(&p, &A, via, &B), DH_OK);
-    ref_make(&r, &A, via, &B, 1);
-    lim.vmax = 500.0f;
-    lim.amax = 1000.0f;
-    lim.wmax = 1000.0f;
-    lim.wdmax = 10000.0f;
+    small_arc(&p, &r, &lim);
     DHT_EQ_INT(dh_path_move_f32(&prof, &p, &lim), DH_OK);
     DHT_TRUE(prof.v * p.length < 60.0f && prof.v * p.length > 59.0f);
     move_check(&p, &r, &lim, NULL);
 }
 
-/* the same arc with jmax = 2000 mm/s^3: the jerk's centripetal terms bind
- * (V = cbrt(2000 * 25 / 4) = 23.2 mm/s, At = 2000 * 5 / (12 V) = 35.9
- * mm/s^2); the executor runs the move through its targets */
+/* the small arc with jmax = 2000 mm/s^3: the jerk's centripetal terms
+ * bind (V = cbrt(2000 * 25 / 4) = 23.2 mm/s, At = 2000 * 5 / (12 V) =
+ * 35.9 mm/s^2); the executor runs the move through its targets */
 static void small_radius_jerk_binds(void)
 {
     dh_path_f32 p;
     ref_path r;
     dh_profile_f32 prof;
     dh_cart_limits_f32 lim;
-    dh_cart_jerk_f32 jk;
-    dh_mat4_f32 A, B;
-    double pa[3], pb[3];
-    float via[3];
-    arc_points(5.0, 100.0, 5.0, 0.5, pa, via, pb);
-    frames(pa, pb, 30.0, &A, &B);
-    DHT_EQ_INT(dh_path_arc_f32(&p, &A, via, &B), DH_OK);
-    ref_make(&r, &A, via, &B, 1);
-    lim.vmax = 500.0f;
-    lim.amax = 1000.0f;
-    lim.wmax = 1000.0f;
-    lim.wdmax = 10000.0f;
-    jk.jmax = 2000.0f;
-    jk.wjmax = 1e6f;
+    const dh_cart_jerk_f32 jk = { 2000.0f, 1e6f };
+    const double V = cbrt(12500.0), At = 10000.0 / (12.0 * V);
+    small_arc(&p, &r, &lim);
     DHT_EQ_INT(dh_path_move_jerk_f32(&prof, &p, &lim, &jk), DH_OK);
     DHT_EQ_INT((int)prof.kind, DH_PROFILE_SCURVE);
-    DHT_TRUE_MSG(fabs(prof.v * p.length - cbrt(12500.0)) <= 1e-4 * cbrt(12500.0), "speed %.9g",
-                 (double)(prof.v * p.length));
-    DHT_TRUE_MSG(fabs(prof.a * p.length - 10000.0 / (12.0 * cbrt(12500.0))) <= 1e-4 * 35.9, "acceleration %.9g",
-                 (double)(prof.a * p.length));
+    DHT_TRUE_MSG(fabs(prof.v * p.length - V) <= 1e-4 * V, "speed %.9g vs %.9g", (double)(prof.v * p.length), V);
+    DHT_TRUE_MSG(fabs(prof.a * p.length - At) <= 1e-4 * At, "acceleration %.9g vs %.9g", (double)(prof.a * p.length),
+                 At);
+    DHT_TRUE_MSG(fabs(prof.j * p.length - 1000.0) <= 1e-4 * 1000.0, "jerk %.9g", (double)(prof.j * p.length));
     move_check(&p, &r, &lim, &jk);
     move_run(&prof, &p, &lim, &jk);
 }
