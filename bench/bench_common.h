@@ -40,6 +40,9 @@ extern "C" {
 #define BENCH_TRIG_MASK (BENCH_NIN_TRIG - 1u)
 #define BENCH_NIN_FK 4096u
 #define BENCH_FK_MASK (BENCH_NIN_FK - 1u)
+/** Closed-form IK targets (FK of random configurations, computed untimed). */
+#define BENCH_NIN_IKC 256u
+#define BENCH_IKC_MASK (BENCH_NIN_IKC - 1u)
 
 typedef void (*bench_fn)(uint32_t i);
 
@@ -73,6 +76,11 @@ typedef struct {
 extern const bench_dh_robot bench_puma560;
 extern const bench_dh_robot bench_ur5;
 extern const bench_dh_robot bench_kr5;
+/** KUKA KR6 R700 sixx (bench_host.c): the robot of opw_kinematics' example,
+ *  joint limits +-170 deg on every joint (the benchmark's choice), and the
+ *  sign from opw's joint values to the table's: q_dh = sign * q_opw. */
+extern const bench_dh_robot bench_kr6;
+extern const double bench_kr6_sign[6];
 
 /**
  * Plain double-precision standard-DH forward kinematics (no base/tool):
@@ -117,6 +125,17 @@ int bench_cpp_setup(const float (*A)[16], const float (*B)[16], const double (*q
 /** Position of the KDL Puma 560 FK for joint set i (metres), for a sanity
  *  check against the double reference. Returns 0 when KDL is absent. */
 int bench_cpp_kdl_fk_pos(uint32_t i, double p[3]);
+
+/* ---- opw_kinematics peer (bench_opw.cpp); absent without OPW_DIR ------- */
+
+/** Prepare the opw inputs from BENCH_NIN_IKC KR6 R700 targets (column-major
+ *  16 floats, metres) and write its ops (at most max). Returns their number,
+ *  or -1 when the benchmark was built without opw_kinematics. */
+int bench_opw_setup(const float (*T)[16], bench_op *ops, int max);
+/** Solve target i with opw (dbl: inverse<double>, else <float>) and write
+ *  its finite solutions as the DH table's joint values in degrees (not
+ *  wrapped). Returns their number (0..8). */
+int bench_opw_solutions(uint32_t i, int dbl, double q_dh_deg[8][6]);
 
 #ifdef __cplusplus
 }

@@ -68,13 +68,32 @@ static dh_status out_st[BENCH_NIN_FK];
 
 /* closed-form IK: models of robots with their joint limits, targets = FK of
  * random in-limit configurations (computed untimed) */
-#define BENCH_NIN_IKC 256u
-#define BENCH_IKC_MASK (BENCH_NIN_IKC - 1u)
-static dh_robot ikc_puma_r, ikc_puma_mm_r, ikc_kr5_r;
-static dh_ikc_model_f32 ikc_puma, ikc_kr5;
-static dh_ikc_model_q ikc_puma_q;
-static dh_mat4_f32 in_T_puma[BENCH_NIN_IKC], in_T_kr5[BENCH_NIN_IKC];
-static dh_frame_q in_T_puma_q[BENCH_NIN_IKC];
+static dh_robot ikc_puma_r, ikc_puma_mm_r, ikc_kr5_r, ikc_kr6_r, ikc_kr6_mm_r;
+static dh_ikc_model_f32 ikc_puma, ikc_kr5, ikc_kr6;
+static dh_ikc_model_q ikc_puma_q, ikc_kr6_q;
+static dh_mat4_f32 in_T_puma[BENCH_NIN_IKC], in_T_kr5[BENCH_NIN_IKC], in_T_kr6[BENCH_NIN_IKC];
+static dh_frame_q in_T_puma_q[BENCH_NIN_IKC], in_T_kr6_q[BENCH_NIN_IKC];
+
+/* KUKA KR6 R700 sixx in standard DH (a, d in m; alpha, theta offset in deg):
+ * the robot of opw_kinematics' example makeKukaKR6_R700_sixx
+ * (include/opw_kinematics/opw_parameters_examples.h: a1 0.025, a2 -0.035,
+ * b 0, c1 0.4, c2 0.315, c3 0.365, c4 0.08, joint 2 offset -pi/2, joints
+ * 1, 4, 6 sign -1) written as a DH table with the same base and flange
+ * frames; limits +-170 deg on every joint are this benchmark's choice (the
+ * targets' configurations are drawn within them). */
+const bench_dh_robot bench_kr6 = {
+    "KUKA KR6 R700 sixx", 6u,
+    { { 0.025, 0.4, -90.0, 0.0, -170.0, 170.0 },
+      { 0.315, 0.0, 0.0, 0.0, -170.0, 170.0 },
+      { -0.035, 0.0, 90.0, 90.0, -170.0, 170.0 },
+      { 0.0, 0.365, -90.0, 0.0, -170.0, 170.0 },
+      { 0.0, 0.0, 90.0, 0.0, -170.0, 170.0 },
+      { 0.0, 0.08, 0.0, 0.0, -170.0, 170.0 } }
+};
+const double bench_kr6_sign[6] = { -1.0, 1.0, 1.0, -1.0, 1.0, -1.0 };
+/* q_ref of the KR6 rows: the robot's home (0, -90, 90, 0, 0, 0) deg */
+static const float kr6_qref[6] = { 0.0f, -90.0f, 90.0f, 0.0f, 0.0f, 0.0f };
+static const int32_t kr6_qref_q[6] = { 0, -90 * 65536, 90 * 65536, 0, 0, 0 };
 static dh_ikc_sol_f32 out_sol[DH_IKC_MAX_SOL];
 static dh_ikc_sol_q out_sol_q[DH_IKC_MAX_SOL];
 static uint32_t out_nsol;
@@ -208,6 +227,21 @@ BENCH_NOINLINE void bw_dh_ikc_kr5(uint32_t i)
     bench_sink_f = out_sol[0].q[0];
 }
 
+/* the KR6 rows solve as a controller would: joint limits and a q_ref */
+BENCH_NOINLINE void bw_dh_ikc_kr6(uint32_t i)
+{
+    i &= BENCH_IKC_MASK;
+    out_st[i] = dh_ikc_f32(&ikc_kr6, &in_T_kr6[i], kr6_qref, 0u, out_sol, &out_nsol);
+    bench_sink_f = out_sol[0].q[0];
+}
+
+BENCH_NOINLINE void bw_dh_ikc_q_kr6(uint32_t i)
+{
+    i &= BENCH_IKC_MASK;
+    out_st[i] = dh_ikc_q(&ikc_kr6_q, &in_T_kr6_q[i], kr6_qref_q, 0u, out_sol_q, &out_nsol);
+    bench_sink_i = out_sol_q[0].q[0];
+}
+
 BENCH_NOINLINE void bw_dh_ikc_puma(uint32_t i)
 {
     i &= BENCH_IKC_MASK;
@@ -285,6 +319,20 @@ int bench_cpp_setup(const float (*A)[16], const float (*B)[16], const double (*q
 int bench_cpp_kdl_fk_pos(uint32_t i, double p[3])
 {
     (void)i; (void)p;
+    return 0;
+}
+#endif
+
+#if !BENCH_HAVE_OPW
+int bench_opw_setup(const float (*T)[16], bench_op *o, int max)
+{
+    (void)T; (void)o; (void)max;
+    return -1;
+}
+
+int bench_opw_solutions(uint32_t i, int dbl, double q_dh_deg[8][6])
+{
+    (void)i; (void)dbl; (void)q_dh_deg;
     return 0;
 }
 #endif
@@ -395,6 +443,25 @@ static int make_ikc_inputs(void)
         !build_limited(&ikc_kr5_r, &bench_kr5, 1.0) || dh_ikc_analyse_f32(&ikc_puma_r, &ikc_puma) != DH_OK ||
         dh_ikc_analyse_f32(&ikc_kr5_r, &ikc_kr5) != DH_OK || dh_ikc_analyse_q(&ikc_puma_mm_r, &ikc_puma_q) != DH_OK)
         return 0;
+    if (!build_limited(&ikc_kr6_r, &bench_kr6, 1.0) || !build_limited(&ikc_kr6_mm_r, &bench_kr6, 1000.0) ||
+        dh_ikc_analyse_f32(&ikc_kr6_r, &ikc_kr6) != DH_OK || dh_ikc_analyse_q(&ikc_kr6_mm_r, &ikc_kr6_q) != DH_OK)
+        return 0;
+    {
+        /* KR6 targets from a generator of their own, so the other inputs
+         * stay those of the runs without the KR6 rows */
+        uint64_t rng6 = 0xD1B54A32D192ED03ULL;
+        for (i = 0; i < BENCH_NIN_IKC; i++) {
+            float q6[6];
+            int32_t q6q[6];
+            for (k = 0; k < 6; k++) {
+                const bench_dh_row *j = &bench_kr6.j[k];
+                q6[k] = (float)bench_rand(&rng6, j->qmin, j->qmax);
+                q6q[k] = round_q((double)q6[k], 16);
+            }
+            if (dh_fk_f32(&ikc_kr6_r, q6, &in_T_kr6[i]) != DH_OK || dh_fk_q(&ikc_kr6_mm_r, q6q, &in_T_kr6_q[i]) != DH_OK)
+                return 0;
+        }
+    }
     for (i = 0; i < BENCH_NIN_IKC; i++) {
         float qp[6], qk[6];
         int32_t qq[6];
@@ -450,6 +517,9 @@ static void make_inputs(void)
 }
 
 /* ---- sanity checks: every peer computes the same thing --------------------- */
+
+static int opw_on; /* the opw rows are in this build */
+static void opw_check(int dbl);
 
 #if BENCH_HAVE_CGLM
 static double max_diff16(const float *x, const float *y)
@@ -517,11 +587,17 @@ static int sanity(void)
             bad_ikc += out_st[i] != DH_OK;
             bw_dh_ikc_q_puma(i);
             bad_ikc += out_st[i] != DH_OK;
+            bw_dh_ikc_kr6(i);
+            bad_ikc += out_st[i] != DH_OK;
+            bw_dh_ikc_q_kr6(i);
+            bad_ikc += out_st[i] != DH_OK;
         }
         printf("sanity: closed-form IK calls without a solution: %u of %u\n", (unsigned)bad_ikc,
-               3u * BENCH_NIN_IKC);
+               5u * BENCH_NIN_IKC);
         if (bad_ikc != 0u) bad = 1;
     }
+    opw_check(1);
+    opw_check(0);
     printf("sanity: Puma FK |dp| dhmath f32 vs double ref %.2e m, dhmath q vs ref %.2e mm, "
            "KDL vs ref %.2e m, dhmath vs cglm products/inverses %.2e\n",
            e_fk, e_fkq, e_kdl, e_cg);
@@ -534,6 +610,69 @@ static int sanity(void)
     for (i = 0; i < BENCH_NIN; i++) memcpy(cg_T[i], in_A[i].m, sizeof(mat4));
 #endif
     return bad;
+}
+
+/* ---- opw_kinematics against dh_ikc_f32 ------------------------------------ */
+
+static double wrap180(double x)
+{
+    x = fmod(x, 360.0);
+    if (x > 180.0) x -= 360.0;
+    if (x <= -180.0) x += 360.0;
+    return x;
+}
+
+/* Solution sets of opw and dh_ikc_f32 (KR6, limits, q_ref) on every KR6
+ * target: opw's finite solutions as DH joint values, wrapped to
+ * (-180, 180] and kept where within the +-170 deg limits, must be as many
+ * as dhmath's, each matched by one of dhmath's within 1e-3 deg on every
+ * joint. Reported, not fatal: the lines go into the generated page. */
+static void opw_check(int dbl)
+{
+    uint32_t i, n_count = 0u, n_sol = 0u, n_unmatched = 0u, shown = 0u;
+    double worst = 0.0;
+    const char *name = dbl ? "inverse<double>" : "inverse<float>";
+    if (!opw_on) return;
+    for (i = 0; i < BENCH_NIN_IKC; i++) {
+        double qo[8][6];
+        int no = bench_opw_solutions(i, dbl, qo), s, t, j;
+        uint32_t kept = 0u;
+        bw_dh_ikc_kr6(i);
+        for (s = 0; s < no; s++) {
+            int in = 1;
+            double best = 1e300;
+            for (j = 0; j < 6; j++) {
+                qo[s][j] = wrap180(qo[s][j]);
+                in = in && fabs(qo[s][j]) <= 170.0;
+            }
+            if (!in) continue;
+            kept++;
+            for (t = 0; t < (int)out_nsol; t++) {
+                double d = 0.0;
+                for (j = 0; j < 6; j++) d = fmax(d, fabs(wrap180(qo[s][j] - (double)out_sol[t].q[j])));
+                best = fmin(best, d);
+            }
+            n_sol++;
+            if (best < 1e300 && best > worst) worst = best;
+            if (!(best <= 1e-3)) {
+                n_unmatched++;
+                if (shown++ < 4u)
+                    printf("sanity: opw %s target %u solution (%.4f %.4f %.4f %.4f %.4f %.4f) deg: nearest dh_ikc_f32 "
+                           "solution %.2e deg away\n", name, (unsigned)i, qo[s][0], qo[s][1], qo[s][2], qo[s][3],
+                           qo[s][4], qo[s][5], best);
+            }
+        }
+        if (kept != out_nsol) {
+            n_count++;
+            if (shown++ < 4u)
+                printf("sanity: opw %s target %u: %u solutions within the limits, dh_ikc_f32 %u\n", name,
+                       (unsigned)i, (unsigned)kept, (unsigned)out_nsol);
+        }
+    }
+    printf("sanity: opw_kinematics %s vs dh_ikc_f32 (KR6 R700, %u targets, opw's solutions within the limits): "
+           "%u targets with a different solution count, %u of %u opw solutions without a dh_ikc_f32 one within "
+           "1e-3 deg, largest joint difference to the nearest %.2e deg\n",
+           name, (unsigned)BENCH_NIN_IKC, (unsigned)n_count, (unsigned)n_unmatched, (unsigned)n_sol, worst);
 }
 
 /* ---- timing ---------------------------------------------------------------- */
@@ -635,6 +774,8 @@ int main(int argc, char **argv)
     add_op("dh_ikc_kr5", "ikc", "dhmath", "dh_ikc_f32, KUKA KR5 (m), all solutions, targets FK of in-limit configurations", bw_dh_ikc_kr5);
     add_op("dh_ikc_puma", "ikc", "dhmath", "dh_ikc_f32, Puma 560 (m), all solutions", bw_dh_ikc_puma);
     add_op("dh_ikc_q_puma", "ikc", "dhmath", "dh_ikc_q, Puma 560 (mm), all solutions", bw_dh_ikc_q_puma);
+    add_op("dh_ikc_kr6", "ikc_kr6", "dhmath", "dh_ikc_f32, KUKA KR6 R700 sixx (m), all solutions within +-170 deg limits, q_ref home", bw_dh_ikc_kr6);
+    add_op("dh_ikc_q_kr6", "ikc_kr6", "dhmath", "dh_ikc_q, KUKA KR6 R700 sixx (mm), same limits and q_ref (for information, fixed point)", bw_dh_ikc_q_kr6);
     add_op("ref_fk_double", "fk_puma", "ref", "plain double DH FK (libm sin+cos of theta, sin/cos alpha precomputed, 4x4 products)", bw_ref_fk_double);
     {
         int got = bench_cpp_setup((const float (*)[16])(const void *)in_A, (const float (*)[16])(const void *)in_B,
@@ -643,6 +784,14 @@ int main(int argc, char **argv)
             printf("skipped: Eigen and Orocos KDL (no C++ compiler or packages at configure time)\n");
         } else {
             n_ops += got;
+        }
+        got = bench_opw_setup((const float (*)[16])(const void *)in_T_kr6, &ops[n_ops], MAX_OPS - n_ops);
+        if (got < 0) {
+            printf("skipped: opw_kinematics (not in this build: git clone --branch 0.5.5 "
+                   "https://github.com/Jmeyer1292/opw_kinematics and run OPW_DIR=<that clone> tools/bench.sh)\n");
+        } else {
+            n_ops += got;
+            opw_on = 1;
         }
     }
 

@@ -23,7 +23,7 @@ PKGS = ["gcc", "g++", "libc6", "libcglm-dev", "libeigen3-dev", "liborocos-kdl-de
 # group -> dhmath row that peers in the group are compared with
 PRIMARY = {"sincos_f32": "dh_sincos_f32", "sincos_loop": "dh_sincos_f32_loop", "sincos_q": "dh_sincos_q", "compose": "dh_mul_affine",
            "mul4": "dh_mul", "inv_rigid": "dh_inv_rigid", "inv_general": "dh_inv",
-           "fk_puma": "dh_fk_f32"}
+           "fk_puma": "dh_fk_f32", "ikc_kr6": "dh_ikc_kr6"}
 
 # (title, dhmath id, peer id, kind, target, peer figure given with the goal)
 #  kind "speedup": peer_time / dh_time must be >= target
@@ -84,6 +84,22 @@ def flags_of(build):
     return out
 
 
+def opw_version(d):
+    """Version of the opw_kinematics clone: its package.xml and git commit."""
+    if not d:
+        return "not given (OPW_DIR unset: rows skipped)"
+    v = "?"
+    try:
+        with open(os.path.join(d, "package.xml")) as f:
+            m = re.search(r"<version>([^<]+)</version>", f.read())
+            if m:
+                v = m.group(1)
+    except OSError:
+        pass
+    c = sh("git -C '%s' describe --tags --always 2>/dev/null" % d) if os.path.exists(os.path.join(d, ".git")) else ""
+    return "%s (package.xml)%s" % (v, ", git " + c if c else "")
+
+
 def fmt(x, nd=2):
     return "-" if x is None else ("%.*f" % (nd, x))
 
@@ -96,6 +112,7 @@ def main():
     ap.add_argument("--build", required=True)
     ap.add_argument("--stdout", required=True, help="bench_host's own output (sanity and skip lines)")
     ap.add_argument("--load", default="", help="load average before/after the run")
+    ap.add_argument("--opw", default="", help="the opw_kinematics clone the bench was built with (OPW_DIR)")
     ap.add_argument("--out", required=True)
     args = ap.parse_args()
 
@@ -149,6 +166,7 @@ def main():
     for p in PKGS:
         v = sh("dpkg-query -W -f='${Version}' %s 2>/dev/null" % p)
         a("| %s | %s |" % (p, v or "not installed"))
+    a("| opw_kinematics (no Debian package; the user's clone) | %s |" % opw_version(args.opw))
     a("")
     a("## Method")
     a("")
@@ -173,6 +191,20 @@ def main():
     a("  `deg * (float)(pi/180)` computed in the wrapper, as a caller with degrees")
     a("  would. KDL works in double, the others in float.")
     a("* Ratio: dhmath time / peer time within a group (below 1: dhmath faster).")
+    a("* Closed-form IK against opw_kinematics (group `ikc_kr6`): the KUKA KR6 R700 sixx of")
+    a("  opw's own example (`makeKukaKR6_R700_sixx`, include/opw_kinematics/opw_parameters_examples.h)")
+    a("  as a standard-DH table with the same base and flange frames (bench/bench_host.c), 256")
+    a("  targets = FK of random configurations within +-170 deg on every joint (seeded). dhmath")
+    a("  returns the solutions within those limits with q_ref = (0, -90, 90, 0, 0, 0) deg;")
+    a("  opw_kinematics::inverse returns its 8 raw solutions (NaN where none) and applies no")
+    a("  limits. The sanity lines compare the solution sets on every target: opw's finite")
+    a("  solutions mapped to the DH joint values (q_dh = (-1, 1, 1, -1, 1, -1) * q_opw, in")
+    a("  degrees), wrapped to (-180, 180] and kept within the limits, against dhmath's: the")
+    a("  count, and each matched by a dhmath solution within 1e-3 deg on every joint.")
+    if not args.opw:
+        a("  This run had no opw_kinematics: `git clone --branch 0.5.5")
+        a("  https://github.com/Jmeyer1292/opw_kinematics /path/to/opw` and run")
+        a("  `OPW_DIR=/path/to/opw tools/bench.sh` for its rows.")
     a("")
     for n in notes:
         a("`%s`" % n)

@@ -3,7 +3,9 @@
  * dhmath.c - host command-line tool over the dhmath library.
  *
  * Exit status: 0 success, 2 any error (usage, EXPR, robot file, numbers,
- * library status), 3 `ik` did not converge (best joint values printed).
+ * library status), 3 `ik` did not converge (best joint values printed),
+ * `ik --all` found no solution, or `move` had periods not ok or met its
+ * period cap (the periods run are printed).
  * On status 2 nothing is written to stdout: every result is computed and
  * checked before the first byte is printed.
  * See docs/cli.md for the reference.
@@ -14,7 +16,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "dh_cli.h"
 #include "dh_expr.h"
+#include "dh_move_cmd.h"
 #include "dh_gen.h"
 #include "dh_robotfile.h"
 #include "dhmath/frame.h"
@@ -26,10 +30,6 @@
 #include "dhmath/track.h"
 #include "dhmath/dhmath.h"
 
-#define EXIT_USAGE 2
-#define EXIT_ERR 2
-#define EXIT_NOCONV 3
-#define MAX_ROBOT_FILE (1024L * 1024L)
 
 static const char k_usage[] =
     "usage: dhmath COMMAND [options] ARGS\n"
@@ -66,6 +66,9 @@ static const char k_usage[] =
     "                                  unreachable, position error, rotation error (rad);\n"
     "                                  V: deg/s (length unit/s), one value or n values;\n"
     "                                  default the robot file's vmax=\n"
+    ;
+
+static const char k_usage_tail[] =
     "  help                            this text\n"
     "  --version                       program and library version\n"
     "\n"
@@ -77,29 +80,13 @@ static const char k_usage[] =
     "'-' as EXPR or ROBOT reads it from standard input (once per command).\n"
     "--fixed: the integer-only fixed-point path (angles Q16.16 degrees, rotations Q2.30,\n"
     "lengths with DH_QPOS_FRAC fraction bits), printed in the same units as without it.\n"
-    "Numbers are printed with %.9g. Exit status: 0 ok, 2 error, 3 ik not converged or no solution.\n";
+    "Numbers are printed with %.9g. Exit status: 0 ok, 2 error, 3 ik not converged or no solution,\n"
+    "move lagging, unreachable or not completed.\n";
 
 /* ---- messages ----------------------------------------------------------- */
 
-static int usage_error(const char *fmt, const char *arg)
-{
-    fputs("dhmath: usage error: ", stderr);
-    fprintf(stderr, fmt, arg ? arg : "");
-    fputs("\n(run 'dhmath help' for usage)\n", stderr);
-    return EXIT_USAGE;
-}
 
-static int expr_error(const dh_expr_error *e)
-{
-    fprintf(stderr, "dhmath: error at column %lu of EXPR: %s\n", (unsigned long)(e->pos + 1), e->msg);
-    return EXIT_ERR;
-}
 
-static int error_msg(const char *what, const char *detail)
-{
-    fprintf(stderr, "dhmath: error: %s%s%s\n", what, detail ? ": " : "", detail ? detail : "");
-    return EXIT_ERR;
-}
 
 /* ---- output ------------------------------------------------------------- */
 
@@ -149,14 +136,6 @@ static int rows_finite(const rows4 *R)
     return 1;
 }
 
-static int finish(void)
-{
-    if (fflush(stdout) != 0 || ferror(stdout)) {
-        fputs("dhmath: error: writing to stdout failed\n", stderr);
-        return EXIT_ERR;
-    }
-    return 0;
-}
 
 /* ---- argument helpers --------------------------------------------------- */
 
@@ -188,7 +167,7 @@ static int parse_opts(int argc, char **argv, opts *o, const char *allowed)
             else if (strcmp(name, "expr") == 0 && strstr(allowed, "expr")) flag = &o->expr;
             else if (strcmp(name, "all") == 0 && strstr(allowed, "all")) flag = &o->all;
             if (flag) {
-                if (*flag) return usage_error("option '%s' given more than once", a);
+                if (*flag) return cli_usage_error("option '%s' given more than once", a);
                 *flag = 1;
             } else {
                 /* options with a value: --name VALUE or --name=VALUE */
@@ -208,61 +187,27 @@ static int parse_opts(int argc, char **argv, opts *o, const char *allowed)
                 for (v = 0; v < 7u; v++)
                     if (strlen(valued[v]) == nl && strncmp(name, valued[v], nl) == 0 && strstr(allowed, valued[v]))
                         break;
-                if (v == 7u) return usage_error("unknown or inapplicable option '%s'", a);
-                if (*slot[v]) return usage_error("option '%s' given more than once", a);
+                if (v == 7u) return cli_usage_error("unknown or inapplicable option '%s'", a);
+                if (*slot[v]) return cli_usage_error("option '%s' given more than once", a);
                 if (eq) *slot[v] = eq + 1;
                 else if (k + 1 < argc) *slot[v] = argv[++k];
-                else return usage_error("option '%s' needs a value", a);
+                else return cli_usage_error("option '%s' needs a value", a);
             }
             continue;
         }
         if (!only_pos && a[0] == '-' && a[1] != '\0' && a[1] != '.' && (a[1] < '0' || a[1] > '9'))
-            return usage_error("unknown option '%s'", a);
+            return cli_usage_error("unknown option '%s'", a);
         if (o->npos >= (int)(sizeof o->pos / sizeof o->pos[0]))
-            return usage_error("too many arguments (at '%s')", a);
+            return cli_usage_error("too many arguments (at '%s')", a);
         if (strcmp(a, "-") == 0 && o->nstdin++)
-            return usage_error("'%s' (standard input) given more than once", a);
+            return cli_usage_error("'%s' (standard input) given more than once", a);
         o->pos[o->npos++] = a;
     }
     return 0;
 }
 
-/* All of f (at most MAX_ROBOT_FILE bytes) into a malloc'd *buf (caller frees). */
-static int read_all(FILE *f, const char *what, char **buf, size_t *len)
-{
-    *buf = (char *)malloc((size_t)MAX_ROBOT_FILE + 1u);
-    if (!*buf) return error_msg("out of memory", NULL);
-    *len = fread(*buf, 1, (size_t)MAX_ROBOT_FILE + 1u, f);
-    if (ferror(f) || *len > (size_t)MAX_ROBOT_FILE) {
-        fprintf(stderr, "dhmath: error: %s: %s\n", what, ferror(f) ? "cannot read it" : "larger than 1 MiB");
-        free(*buf);
-        *buf = NULL;
-        return EXIT_ERR;
-    }
-    return 0;
-}
 
-/* EXPR argument s ("-": standard input) in float (fixed == 0, into T) or on
- * the fixed-point path (into F) */
-static int eval_expr_arg(const char *s, int fixed, dh_mat4_f32 *T, dh_frame_q *F)
-{
-    dh_expr_error e;
-    char *in = NULL;
-    size_t len = strlen(s);
-    int bad, rc;
-    if (strcmp(s, "-") == 0) {
-        if ((rc = read_all(stdin, "EXPR from standard input", &in, &len)) != 0) return rc;
-        s = in;
-    }
-    bad = fixed ? dh_expr_eval_q(s, len, F, &e) : dh_expr_eval_f32(s, len, T, &e);
-    free(in);
-    return bad ? expr_error(&e) : 0;
-}
 
-static int eval_expr(const char *s, dh_mat4_f32 *T)
-{
-    return eval_expr_arg(s, 0, T, NULL);
-}
 
 /* A projective EXPR (bottom row not 0 0 0 1, e.g. persp) has no rotation:
  * the error for axis, euler and quat (ik rejects such a target too). */
@@ -276,71 +221,8 @@ static int projective_error(const char *cmd, const dh_mat4_f32 *T)
     return EXIT_ERR;
 }
 
-static int parse_num_arg(const char *s, const char *what, double *v)
-{
-    const char *why = dh_expr_parse_number(s, strlen(s), v);
-    if (why) {
-        fprintf(stderr, "dhmath: error: bad number '%s' for %s: %s\n", s, what, why);
-        return EXIT_ERR;
-    }
-    return 0;
-}
 
-/* comma-separated list of exactly n numbers */
-static int parse_list(const char *s, unsigned n, double *v, const char *what)
-{
-    unsigned count = 0;
-    const char *p = s;
-    if (*s == '\0') {
-        fprintf(stderr, "dhmath: error: %s: expected %u values, got none\n", what, n);
-        return EXIT_ERR;
-    }
-    for (;;) {
-        const char *e = strchr(p, ',');
-        size_t len = e ? (size_t)(e - p) : strlen(p);
-        double x = 0.0;
-        const char *why = dh_expr_parse_number(p, len, &x);
-        if (why) {
-            fprintf(stderr, "dhmath: error: %s: value %u '%.*s' (column %lu): %s\n", what, count + 1,
-                    (int)(len > 40 ? 40 : len), p, (unsigned long)(p - s + 1), why);
-            return EXIT_ERR;
-        }
-        if (count < n) v[count] = x;
-        count++;
-        if (!e) break;
-        p = e + 1;
-    }
-    if (count != n) {
-        fprintf(stderr, "dhmath: error: %s: expected %u values (one per joint), got %u\n", what, n, count);
-        return EXIT_ERR;
-    }
-    return 0;
-}
 
-/* robot file path ("-": standard input, named <stdin> in messages) */
-static int load_robot(const char *path, int fixed, dh_robot *r, dh_robotfile *rf)
-{
-    const int in = strcmp(path, "-") == 0;
-    FILE *f = in ? stdin : fopen(path, "rb");
-    char *buf;
-    size_t len;
-    dh_rf_error e;
-    int rc;
-    char what[300];
-    if (!f) {
-        fprintf(stderr, "dhmath: error: cannot open robot file '%s'\n", path);
-        return EXIT_ERR;
-    }
-    if (in) path = "<stdin>";
-    (void)snprintf(what, sizeof what, "robot file %s", path);
-    rc = read_all(f, what, &buf, &len);
-    if (!in) fclose(f);
-    if (rc) return rc;
-    if (dh_robotfile_parse(path, buf, len, rf, &e)) rc = error_msg(e.msg, NULL);
-    if (!rc && dh_robotfile_build(path, rf, fixed, r, &e)) rc = error_msg(e.msg, NULL);
-    free(buf);
-    return rc;
-}
 
 /* ---- commands ----------------------------------------------------------- */
 
@@ -350,19 +232,19 @@ static int cmd_eval(int argc, char **argv)
     rows4 M;
     int rc = parse_opts(argc, argv, &o, "fixed");
     if (rc) return rc;
-    if (o.npos != 1) return usage_error("eval takes one EXPR (quote it): dhmath eval [--fixed] EXPR", NULL);
+    if (o.npos != 1) return cli_usage_error("eval takes one EXPR (quote it): dhmath eval [--fixed] EXPR", NULL);
     if (o.fixed) {
         dh_frame_q F;
-        if ((rc = eval_expr_arg(o.pos[0], 1, NULL, &F)) != 0) return rc;
+        if ((rc = cli_eval_expr_arg(o.pos[0], 1, NULL, &F)) != 0) return rc;
         frame_to_rows(&F, &M);
     } else {
         dh_mat4_f32 T;
-        if ((rc = eval_expr(o.pos[0], &T)) != 0) return rc;
+        if ((rc = cli_eval_expr(o.pos[0], &T)) != 0) return rc;
         mat_to_rows(&T, &M);
     }
-    if (!rows_finite(&M)) return error_msg("result is not finite", NULL);
+    if (!rows_finite(&M)) return cli_error("result is not finite", NULL);
     print_rows(&M);
-    return finish();
+    return cli_finish();
 }
 
 static int cmd_axis(int argc, char **argv)
@@ -374,29 +256,29 @@ static int cmd_axis(int argc, char **argv)
     dh_status st;
     int rc = parse_opts(argc, argv, &o, "");
     if (rc) return rc;
-    if (o.npos != 1) return usage_error("axis takes one EXPR: dhmath axis EXPR", NULL);
-    if ((rc = eval_expr(o.pos[0], &T)) != 0) return rc;
+    if (o.npos != 1) return cli_usage_error("axis takes one EXPR: dhmath axis EXPR", NULL);
+    if ((rc = cli_eval_expr(o.pos[0], &T)) != 0) return rc;
     if ((rc = projective_error("axis", &T)) != 0) return rc;
     st = dh_mat4_to_axis_angle_f32(&T, &k, &th);
-    if (st != DH_OK) return error_msg("axis: the rotation part of EXPR has no axis/angle", dh_status_str(st));
+    if (st != DH_OK) return cli_error("axis: the rotation part of EXPR has no axis/angle", dh_status_str(st));
     if (!isfinite(k.x) || !isfinite(k.y) || !isfinite(k.z) || !isfinite(th))
-        return error_msg("axis: result is not finite", NULL);
+        return cli_error("axis: result is not finite", NULL);
     put_num(k.x, 0);
     put_num(k.y, 0);
     put_num(k.z, 0);
     put_num(th, 1);
-    return finish();
+    return cli_finish();
 }
 
 /* Prints a, b, c, d on one line and finishes; the message when one is not finite. */
 static int put_four(float a, float b, float c, float d, const char *not_finite)
 {
-    if (!isfinite(a) || !isfinite(b) || !isfinite(c) || !isfinite(d)) return error_msg(not_finite, NULL);
+    if (!isfinite(a) || !isfinite(b) || !isfinite(c) || !isfinite(d)) return cli_error(not_finite, NULL);
     put_num(a, 0);
     put_num(b, 0);
     put_num(c, 0);
     put_num(d, 1);
-    return finish();
+    return cli_finish();
 }
 
 static int cmd_point(int argc, char **argv)
@@ -408,10 +290,10 @@ static int cmd_point(int argc, char **argv)
     static const char *const names[4] = { "x", "y", "z", "w" };
     int rc = parse_opts(argc, argv, &o, ""), k;
     if (rc) return rc;
-    if (o.npos != 4 && o.npos != 5) return usage_error("point takes EXPR x y z [w]", NULL);
-    if ((rc = eval_expr(o.pos[0], &T)) != 0) return rc;
+    if (o.npos != 4 && o.npos != 5) return cli_usage_error("point takes EXPR x y z [w]", NULL);
+    if ((rc = cli_eval_expr(o.pos[0], &T)) != 0) return rc;
     for (k = 0; k + 1 < o.npos; k++)
-        if ((rc = parse_num_arg(o.pos[k + 1], names[k], &x[k])) != 0) return rc;
+        if ((rc = cli_parse_num(o.pos[k + 1], names[k], &x[k])) != 0) return rc;
     u.x = (float)x[0];
     u.y = (float)x[1];
     u.z = (float)x[2];
@@ -430,18 +312,18 @@ static int cmd_plane(int argc, char **argv)
     dh_status st;
     int rc = parse_opts(argc, argv, &o, ""), k;
     if (rc) return rc;
-    if (o.npos != 5) return usage_error("plane takes EXPR a b c d", NULL);
-    if ((rc = eval_expr(o.pos[0], &T)) != 0) return rc;
+    if (o.npos != 5) return cli_usage_error("plane takes EXPR a b c d", NULL);
+    if ((rc = cli_eval_expr(o.pos[0], &T)) != 0) return rc;
     for (k = 0; k < 4; k++)
-        if ((rc = parse_num_arg(o.pos[k + 1], names[k], &x[k])) != 0) return rc;
+        if ((rc = cli_parse_num(o.pos[k + 1], names[k], &x[k])) != 0) return rc;
     P.a = (float)x[0];
     P.b = (float)x[1];
     P.c = (float)x[2];
     P.d = (float)x[3];
     st = dh_mat4_apply_plane_f32(&T, &P, &Q);
     if (st == DH_ERR_SINGULAR)
-        return error_msg("plane: EXPR is singular (a plane transforms with the inverse)", NULL);
-    if (st != DH_OK) return error_msg("plane", dh_status_str(st));
+        return cli_error("plane: EXPR is singular (a plane transforms with the inverse)", NULL);
+    if (st != DH_OK) return cli_error("plane", dh_status_str(st));
     return put_four(Q.a, Q.b, Q.c, Q.d, "plane: result is not finite (float overflow)");
 }
 
@@ -512,11 +394,11 @@ static int cmd_fk(int argc, char **argv)
     dh_status st;
     int rc = parse_opts(argc, argv, &o, "fixed frames expr");
     if (rc) return rc;
-    if (o.npos != 2) return usage_error("fk takes ROBOTFILE q1,q2,...", NULL);
-    if (o.expr && o.fixed) return usage_error("fk: --expr and --fixed cannot be combined", NULL);
-    if ((rc = load_robot(o.pos[0], o.fixed, &r, &rf)) != 0) return rc;
+    if (o.npos != 2) return cli_usage_error("fk takes ROBOTFILE q1,q2,...", NULL);
+    if (o.expr && o.fixed) return cli_usage_error("fk: --expr and --fixed cannot be combined", NULL);
+    if ((rc = cli_load_robot(o.pos[0], o.fixed, &r, &rf)) != 0) return rc;
     n = r.n;
-    if ((rc = parse_list(o.pos[1], n, qd, "joint values")) != 0) return rc;
+    if ((rc = cli_parse_list(o.pos[1], n, qd, "joint values")) != 0) return rc;
     if (o.fixed) {
         int32_t q[DH_MAX_JOINTS];
         dh_frame_q frames[DH_MAX_JOINTS], Tend;
@@ -524,7 +406,7 @@ static int cmd_fk(int argc, char **argv)
         if (o.frames) st = dh_fk_frames_q(&r, q, frames, &Tend);
         else st = dh_fk_q(&r, q, &Tend);
         if (st == DH_ERR_UNAVAILABLE)
-            return error_msg("fk --fixed: a constant of the robot does not fit the fixed-point formats", NULL);
+            return cli_error("fk --fixed: a constant of the robot does not fit the fixed-point formats", NULL);
         if (st == DH_ERR_OVERFLOW) {
             fprintf(stderr, "dhmath: error: overflow: fk --fixed: an entry of a frame of the chain saturates "
                     "(positions must lie in the fixed-point length format Q%d.%d, |x| < %ld length units; rotation "
@@ -532,7 +414,7 @@ static int cmd_fk(int argc, char **argv)
                     1L << (31 - DH_QPOS_FRAC));
             return EXIT_ERR;
         }
-        if (st != DH_OK) return error_msg("fk --fixed", dh_status_str(st));
+        if (st != DH_OK) return cli_error("fk --fixed", dh_status_str(st));
         nout = 0;
         if (o.frames)
             for (k = 0; k < n; k++) frame_to_rows(&frames[k], &M[nout++]);
@@ -543,7 +425,7 @@ static int cmd_fk(int argc, char **argv)
         for (k = 0; k < n; k++) q[k] = (float)qd[k];
         if (o.frames) st = dh_fk_frames_f32(&r, q, frames, &Tend);
         else st = dh_fk_f32(&r, q, &Tend);
-        if (st != DH_OK) return error_msg("fk", dh_status_str(st));
+        if (st != DH_OK) return cli_error("fk", dh_status_str(st));
         nout = 0;
         if (o.frames)
             for (k = 0; k < n; k++) mat_to_rows(&frames[k], &M[nout++]);
@@ -551,20 +433,20 @@ static int cmd_fk(int argc, char **argv)
         warn_limits(&r, q);
     }
     for (k = 0; k < nout; k++)
-        if (!rows_finite(&M[k])) return error_msg("fk: result is not finite", NULL);
+        if (!rows_finite(&M[k])) return cli_error("fk: result is not finite", NULL);
     if (o.expr) {
         /* each frame as an EXPR that reproduces it: trans(p) rot(k, theta) */
         char line[DH_MAX_JOINTS + 1][200];
         for (k = 0; k < nout; k++)
-            if (frame_expr(&M[k], line[k], sizeof line[k])) return error_msg("fk --expr: frame is not rigid", NULL);
+            if (frame_expr(&M[k], line[k], sizeof line[k])) return cli_error("fk --expr: frame is not rigid", NULL);
         for (k = 0; k < nout; k++) puts(line[k]);
-        return finish();
+        return cli_finish();
     }
     for (k = 0; k < nout; k++) {
         if (k) putchar('\n');
         print_rows(&M[k]);
     }
-    return finish();
+    return cli_finish();
 }
 
 /* jacobian --fixed: dh_jacobian_q on the robot's fixed path, printed in
@@ -581,7 +463,7 @@ static int jacobian_fixed(const dh_robot *r, const double *qd)
     if (rc) return rc;
     st = dh_jacobian_q(r, q, J, NULL);
     if (st == DH_ERR_UNAVAILABLE)
-        return error_msg("jacobian --fixed: a constant of the robot does not fit the fixed-point formats", NULL);
+        return cli_error("jacobian --fixed: a constant of the robot does not fit the fixed-point formats", NULL);
     if (st == DH_ERR_OVERFLOW) {
         fprintf(stderr, "dhmath: error: overflow: jacobian --fixed: an entry of the chain or of the Jacobian "
                 "saturates (lengths and lever arms must lie in the fixed-point length format Q%d.%d, |x| < %ld "
@@ -589,13 +471,13 @@ static int jacobian_fixed(const dh_robot *r, const double *qd)
                 1L << (31 - DH_QPOS_FRAC));
         return EXIT_ERR;
     }
-    if (st != DH_OK) return error_msg("jacobian --fixed", dh_status_str(st));
+    if (st != DH_OK) return cli_error("jacobian --fixed", dh_status_str(st));
     for (row = 0; row < 6u; row++)
         for (k = 0; k < n; k++) {
             const int lin = row < 3u && r->joint[k].type == DH_JOINT_REVOLUTE;
             put_num((double)J[row * n + k] / (lin ? pscale : 1073741824.0), k + 1 == n);
         }
-    return finish();
+    return cli_finish();
 }
 
 static int cmd_jacobian(int argc, char **argv)
@@ -609,10 +491,10 @@ static int cmd_jacobian(int argc, char **argv)
     dh_status st;
     int rc = parse_opts(argc, argv, &o, "fixed");
     if (rc) return rc;
-    if (o.npos != 2) return usage_error("jacobian takes ROBOTFILE q1,q2,...", NULL);
-    if ((rc = load_robot(o.pos[0], o.fixed, &r, &rf)) != 0) return rc;
+    if (o.npos != 2) return cli_usage_error("jacobian takes ROBOTFILE q1,q2,...", NULL);
+    if ((rc = cli_load_robot(o.pos[0], o.fixed, &r, &rf)) != 0) return rc;
     n = r.n;
-    if ((rc = parse_list(o.pos[1], n, qd, "joint values")) != 0) return rc;
+    if ((rc = cli_parse_list(o.pos[1], n, qd, "joint values")) != 0) return rc;
     for (k = 0; k < n; k++) q[k] = (float)qd[k];
     if (o.fixed) {
         rc = jacobian_fixed(&r, qd);
@@ -620,13 +502,13 @@ static int cmd_jacobian(int argc, char **argv)
         return rc;
     }
     st = dh_jacobian_f32(&r, q, J, NULL);
-    if (st != DH_OK) return error_msg("jacobian", dh_status_str(st));
+    if (st != DH_OK) return cli_error("jacobian", dh_status_str(st));
     for (k = 0; k < 6u * n; k++)
-        if (!isfinite(J[k])) return error_msg("jacobian: result is not finite", NULL);
+        if (!isfinite(J[k])) return cli_error("jacobian: result is not finite", NULL);
     for (row = 0; row < 6u; row++)
         for (k = 0; k < n; k++) put_num(J[row * n + k], k + 1 == n);
     warn_limits(&r, q);
-    return finish();
+    return cli_finish();
 }
 
 /* characteristic length: sum of |a| + |d| of the joints plus the base and tool offsets */
@@ -660,7 +542,7 @@ static int ik_not_rigid(const char *path, const dh_robot *r, const dh_robotfile 
     if (strcmp(path, "-") == 0) path = "<stdin>";
     if (projective_error("ik", target)) return EXIT_ERR;
     if ((mask & (DH_IK_RX | DH_IK_RY | DH_IK_RZ)) != 0u && dh_pose_error_f32(target, target, e) != DH_OK)
-        return error_msg("ik: the rotation part of the target EXPR is not a rotation (not orthonormal with det +1; "
+        return cli_error("ik: the rotation part of the target EXPR is not a rotation (not orthonormal with det +1; "
                          "--position ignores it)", NULL);
     if (dh_pose_error_f32(&r->base, &r->base, e) != DH_OK) {
         fprintf(stderr, "dhmath: error: ik: the robot's base (%s:%u) is not rigid: its 3x3 part is not a rotation, "
@@ -672,7 +554,7 @@ static int ik_not_rigid(const char *path, const dh_robot *r, const dh_robotfile 
                 "so the end frame has no orientation to match (--position ignores it)\n", path, rf->tool.line);
         return EXIT_ERR;
     }
-    return error_msg("ik: the end frame of the robot is not rigid (its rotation part is not a rotation)", NULL);
+    return cli_error("ik: the end frame of the robot is not rigid (its rotation part is not a rotation)", NULL);
 }
 
 /* ik --all --fixed: every closed-form solution on the robot's fixed path
@@ -696,7 +578,7 @@ static int ik_all_q(const opts *o, const dh_robot *r, const dh_mat4_f32 *target,
         return EXIT_ERR;
     }
     for (k = 0; k < DH_IKC_JOINTS; k++) qd[k] = 0.0;
-    if (o->q0 && (rc = parse_list(o->q0, r->n, qd, "--q0")) != 0) return rc;
+    if (o->q0 && (rc = cli_parse_list(o->q0, r->n, qd, "--q0")) != 0) return rc;
     for (k = 0; k < DH_IKC_JOINTS; k++) {
         const double v = floor(qd[k] * ((k < r->n && r->joint[k].type == DH_JOINT_PRISMATIC) ? pscale : 65536.0) + 0.5);
         if (v > 2147483647.0 || v < -2147483648.0) {
@@ -713,10 +595,10 @@ static int ik_all_q(const opts *o, const dh_robot *r, const dh_mat4_f32 *target,
                 (long)1 << (31 - DH_QPOS_FRAC));
         return EXIT_ERR;
     }
-    if (st != DH_OK) return error_msg("ik --all --fixed: the target EXPR", dh_status_str(st));
+    if (st != DH_OK) return cli_error("ik --all --fixed: the target EXPR", dh_status_str(st));
     st = dh_ikc_q(&m, &F, qref, 0u, sol, &n_sol);
     if (st == DH_ERR_NOT_RIGID)
-        return error_msg("ik --all --fixed: the rotation part of the target EXPR is not a rotation within 2^-10 "
+        return cli_error("ik --all --fixed: the rotation part of the target EXPR is not a rotation within 2^-10 "
                          "(orthonormal with det +1)", NULL);
     if (st == DH_ERR_OVERFLOW) {
         fprintf(stderr, "dhmath: error: overflow: ik --all --fixed: the target is more than 2^30 LSB (%ld length "
@@ -732,11 +614,11 @@ static int ik_all_q(const opts *o, const dh_robot *r, const dh_mat4_f32 *target,
         fprintf(stderr, "ik --all --fixed: no solution within the joint limits (%u outside)\n", (unsigned)n_all);
         return EXIT_NOCONV;
     }
-    if (st != DH_OK) return error_msg("ik --all --fixed", dh_status_str(st));
+    if (st != DH_OK) return cli_error("ik --all --fixed", dh_status_str(st));
     for (s = 0; s < n_sol; s++)
         for (k = 0; k < r->n; k++)
             put_num((double)sol[s].q[k] / (r->joint[k].type == DH_JOINT_PRISMATIC ? pscale : 65536.0), k + 1 == r->n);
-    rc = finish();
+    rc = cli_finish();
     (void)dh_ikc_q(&m, &F, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_all);
     fprintf(stderr, "ik --all --fixed: %u closed-form solution%s within the limits (%u outside)\n", (unsigned)n_sol,
             n_sol == 1u ? "" : "s", (unsigned)(n_all - n_sol));
@@ -756,7 +638,7 @@ static int ik_all(const opts *o, const dh_robot *r, const dh_robotfile *rf, cons
     dh_status st;
     int rc;
     if (o->position || o->tol_pos || o->tol_rot || o->w_rot || o->max_iter)
-        return usage_error("ik --all takes only --q0 (the closed form has no tolerances, weights or iterations)", NULL);
+        return cli_usage_error("ik --all takes only --q0 (the closed form has no tolerances, weights or iterations)", NULL);
     if (o->fixed) return ik_all_q(o, r, target, path);
     st = dh_ikc_analyse_f32(r, &m);
     if (st != DH_OK) {
@@ -765,7 +647,7 @@ static int ik_all(const opts *o, const dh_robot *r, const dh_robotfile *rf, cons
         return EXIT_ERR;
     }
     for (k = 0; k < DH_IKC_JOINTS; k++) qd[k] = 0.0;
-    if (o->q0 && (rc = parse_list(o->q0, r->n, qd, "--q0")) != 0) return rc;
+    if (o->q0 && (rc = cli_parse_list(o->q0, r->n, qd, "--q0")) != 0) return rc;
     for (k = 0; k < DH_IKC_JOINTS; k++) qref[k] = (float)qd[k];
     st = dh_ikc_f32(&m, target, qref, 0u, sol, &n_sol);
     if (st == DH_ERR_NOT_RIGID) return ik_not_rigid(o->pos[0], r, rf, target, DH_IK_FULL);
@@ -778,10 +660,10 @@ static int ik_all(const opts *o, const dh_robot *r, const dh_robotfile *rf, cons
         fprintf(stderr, "ik --all: no solution within the joint limits (%u outside)\n", (unsigned)n_all);
         return EXIT_NOCONV;
     }
-    if (st != DH_OK) return error_msg("ik --all", dh_status_str(st));
+    if (st != DH_OK) return cli_error("ik --all", dh_status_str(st));
     for (s = 0; s < n_sol; s++)
         for (k = 0; k < r->n; k++) put_num(sol[s].q[k], k + 1 == r->n);
-    rc = finish();
+    rc = cli_finish();
     (void)dh_ikc_f32(&m, target, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_all);
     fprintf(stderr, "ik --all: %u closed-form solution%s within the limits (%u outside)\n", (unsigned)n_sol,
             n_sol == 1u ? "" : "s", (unsigned)(n_all - n_sol));
@@ -805,42 +687,42 @@ static int ik_fixed(const opts *o, const dh_robot *r, const dh_mat4_f32 *target)
     dh_status st;
     int rc;
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u)
-        return error_msg("ik --fixed: a constant of the robot does not fit the fixed-point formats", NULL);
+        return cli_error("ik --fixed: a constant of the robot does not fit the fixed-point formats", NULL);
     if (dh_frame_from_mat4_q(target, &F) != DH_OK) {
         fprintf(stderr, "dhmath: error: ik --fixed: the target EXPR is not a rigid frame in the fixed-point formats "
                 "(rotation entries in Q2.30, position |x| < %ld length units)\n", 1L << (31 - DH_QPOS_FRAC));
         return EXIT_ERR;
     }
     for (k = 0; k < r->n; k++) qd[k] = 0.0;
-    if (o->q0 && (rc = parse_list(o->q0, r->n, qd, "--q0")) != 0) return rc;
+    if (o->q0 && (rc = cli_parse_list(o->q0, r->n, qd, "--q0")) != 0) return rc;
     if ((rc = joints_to_q(r, qd, q0)) != 0) return rc;
     dh_ik_params_default_q(r, &prm);
     if (o->position) prm.mask = DH_IK_POSITION;
     if (o->tol_pos) {
-        if ((rc = parse_num_arg(o->tol_pos, "--tol-pos", &x)) != 0) return rc;
-        if (!(x >= 0.0 && x * pscale < 2147483647.0)) return error_msg("--tol-pos must be >= 0 and fit the fixed length format", NULL);
+        if ((rc = cli_parse_num(o->tol_pos, "--tol-pos", &x)) != 0) return rc;
+        if (!(x >= 0.0 && x * pscale < 2147483647.0)) return cli_error("--tol-pos must be >= 0 and fit the fixed length format", NULL);
         prm.tol_pos = (int32_t)floor(x * pscale + 0.5);
     }
     if (o->tol_rot) {
-        if ((rc = parse_num_arg(o->tol_rot, "--tol-rot", &x)) != 0) return rc;
-        if (!(x >= 0.0 && x < 2.0)) return error_msg("--tol-rot must be in [0, 2) rad with --fixed", NULL);
+        if ((rc = cli_parse_num(o->tol_rot, "--tol-rot", &x)) != 0) return rc;
+        if (!(x >= 0.0 && x < 2.0)) return cli_error("--tol-rot must be in [0, 2) rad with --fixed", NULL);
         prm.tol_rot = (int32_t)floor(x * 1073741824.0 + 0.5);
     }
     if (o->w_rot) {
-        if ((rc = parse_num_arg(o->w_rot, "--w-rot", &x)) != 0) return rc;
+        if ((rc = cli_parse_num(o->w_rot, "--w-rot", &x)) != 0) return rc;
         if (!(x > 0.0 && x * pscale < 2147483647.0 && floor(x * pscale + 0.5) >= 1.0))
-            return error_msg("--w-rot must be > 0 and fit the fixed length format", NULL);
+            return cli_error("--w-rot must be > 0 and fit the fixed length format", NULL);
         prm.w_rot = (int32_t)floor(x * pscale + 0.5);
     }
     if (o->max_iter) {
-        if ((rc = parse_num_arg(o->max_iter, "--max-iter", &x)) != 0) return rc;
-        if (!(x >= 1.0 && x <= 1e6 && floor(x) == x)) return error_msg("--max-iter must be an integer in 1..1000000", NULL);
+        if ((rc = cli_parse_num(o->max_iter, "--max-iter", &x)) != 0) return rc;
+        if (!(x >= 1.0 && x <= 1e6 && floor(x) == x)) return cli_error("--max-iter must be an integer in 1..1000000", NULL);
         prm.max_iter = (uint32_t)x;
     }
     memset(&res, 0, sizeof res);
     st = dh_ik_q(r, &F, q0, &prm, work, sizeof work / sizeof work[0], q, &res);
     if (st == DH_ERR_NOT_RIGID)
-        return error_msg("ik --fixed: the target's rotation, or the robot's end rotation at the start, is not a "
+        return cli_error("ik --fixed: the target's rotation, or the robot's end rotation at the start, is not a "
                          "rotation (not orthonormal with det +1)", NULL);
     if (st == DH_ERR_OVERFLOW) {
         fprintf(stderr, "dhmath: error: overflow: ik --fixed: the forward kinematics or the pose error at the start "
@@ -849,10 +731,10 @@ static int ik_fixed(const opts *o, const dh_robot *r, const dh_mat4_f32 *target)
         return EXIT_ERR;
     }
     if (st != DH_OK && st != DH_ERR_NO_CONVERGENCE && st != DH_ERR_UNREACHABLE)
-        return error_msg("ik --fixed", dh_status_str(st));
+        return cli_error("ik --fixed", dh_status_str(st));
     for (k = 0; k < r->n; k++)
         put_num((double)q[k] / (r->joint[k].type == DH_JOINT_REVOLUTE ? 65536.0 : pscale), k + 1 == r->n);
-    rc = finish();
+    rc = cli_finish();
     fprintf(stderr, "ik --fixed: %s (%s), %lu iterations, position error %.3g, orientation error %.3g rad\n",
             st == DH_OK ? "converged" : "not converged", dh_status_str(st), (unsigned long)res.iterations,
             (double)res.err_pos / pscale, (double)res.err_rot / 1073741824.0);
@@ -876,15 +758,15 @@ static int cmd_ik(int argc, char **argv)
     double L, x;
     int rc = parse_opts(argc, argv, &o, "q0 position tol-pos tol-rot w-rot max-iter all fixed");
     if (rc) return rc;
-    if (o.npos != 2) return usage_error("ik takes ROBOTFILE EXPR [--q0 q1,...] [--position] [--tol-pos X] "
+    if (o.npos != 2) return cli_usage_error("ik takes ROBOTFILE EXPR [--q0 q1,...] [--position] [--tol-pos X] "
                                         "[--tol-rot X] [--w-rot X] [--max-iter N] [--fixed], or --all [--fixed] [--q0 q1,...]", NULL);
-    if ((rc = load_robot(o.pos[0], o.fixed, &r, &rf)) != 0) return rc;
-    if ((rc = eval_expr(o.pos[1], &target)) != 0) return rc;
+    if ((rc = cli_load_robot(o.pos[0], o.fixed, &r, &rf)) != 0) return rc;
+    if ((rc = cli_eval_expr(o.pos[1], &target)) != 0) return rc;
     if (o.all) return ik_all(&o, &r, &rf, &target);
     if (o.fixed) return ik_fixed(&o, &r, &target);
     n = r.n;
     for (k = 0; k < n; k++) qd[k] = 0.0;
-    if (o.q0 && (rc = parse_list(o.q0, n, qd, "--q0")) != 0) return rc;
+    if (o.q0 && (rc = cli_parse_list(o.q0, n, qd, "--q0")) != 0) return rc;
     for (k = 0; k < n; k++) {
         const dh_joint *j = &r.joint[k];
         q0[k] = (float)qd[k];
@@ -908,18 +790,18 @@ static int cmd_ik(int argc, char **argv)
     }
     if (o.position) prm.mask = DH_IK_POSITION;
     if (o.tol_pos) {
-        if ((rc = parse_num_arg(o.tol_pos, "--tol-pos", &x)) != 0) return rc;
-        if (!(x >= 0.0)) return error_msg("--tol-pos must be >= 0", NULL);
+        if ((rc = cli_parse_num(o.tol_pos, "--tol-pos", &x)) != 0) return rc;
+        if (!(x >= 0.0)) return cli_error("--tol-pos must be >= 0", NULL);
         prm.tol_pos = (float)x;
     }
     if (o.tol_rot) {
-        if ((rc = parse_num_arg(o.tol_rot, "--tol-rot", &x)) != 0) return rc;
-        if (!(x >= 0.0)) return error_msg("--tol-rot must be >= 0", NULL);
+        if ((rc = cli_parse_num(o.tol_rot, "--tol-rot", &x)) != 0) return rc;
+        if (!(x >= 0.0)) return cli_error("--tol-rot must be >= 0", NULL);
         prm.tol_rot = (float)x;
     }
     if (o.w_rot) {
-        if ((rc = parse_num_arg(o.w_rot, "--w-rot", &x)) != 0) return rc;
-        if (!(x > 0.0)) return error_msg("--w-rot must be > 0", NULL);
+        if ((rc = cli_parse_num(o.w_rot, "--w-rot", &x)) != 0) return rc;
+        if (!(x > 0.0)) return cli_error("--w-rot must be > 0", NULL);
         if (!ik_weight_ok(x)) {
             fprintf(stderr, "dhmath: error: --w-rot %s is too large: dh_ik_f32 needs w_rot^2 finite in float "
                     "(w_rot <= 4.6e18)\n", o.w_rot);
@@ -928,8 +810,8 @@ static int cmd_ik(int argc, char **argv)
         prm.w_rot = (float)x;
     }
     if (o.max_iter) {
-        if ((rc = parse_num_arg(o.max_iter, "--max-iter", &x)) != 0) return rc;
-        if (!(x >= 1.0 && x <= 1e6 && floor(x) == x)) return error_msg("--max-iter must be an integer in 1..1000000", NULL);
+        if ((rc = cli_parse_num(o.max_iter, "--max-iter", &x)) != 0) return rc;
+        if (!(x >= 1.0 && x <= 1e6 && floor(x) == x)) return cli_error("--max-iter must be an integer in 1..1000000", NULL);
         prm.max_iter = (uint32_t)x;
     }
     memset(&res, 0, sizeof res);
@@ -941,11 +823,11 @@ static int cmd_ik(int argc, char **argv)
         return EXIT_ERR;
     }
     if (st != DH_OK && st != DH_ERR_NO_CONVERGENCE && st != DH_ERR_UNREACHABLE && st != DH_ERR_SINGULAR)
-        return error_msg("ik", dh_status_str(st));
+        return cli_error("ik", dh_status_str(st));
     for (k = 0; k < n; k++)
-        if (!isfinite(q[k])) return error_msg("ik: result is not finite", NULL);
+        if (!isfinite(q[k])) return cli_error("ik: result is not finite", NULL);
     for (k = 0; k < n; k++) put_num(q[k], k + 1 == n);
-    rc = finish();
+    rc = cli_finish();
     fprintf(stderr, "ik: %s (%s), %lu iterations, position error %.3g, orientation error %.3g rad\n",
             st == DH_OK ? "converged" : "not converged", dh_status_str(st), (unsigned long)res.iterations,
             (double)res.err_pos, (double)res.err_rot);
@@ -956,7 +838,7 @@ static int cmd_ik(int argc, char **argv)
 static int rotation_of(const char *cmd, const char *expr, dh_mat3_f32 *R)
 {
     dh_mat4_f32 T;
-    int rc = eval_expr(expr, &T);
+    int rc = cli_eval_expr(expr, &T);
     if (rc) return rc;
     if ((rc = projective_error(cmd, &T)) != 0) return rc;
     dh_mat4_get_rot_f32(&T, R);
@@ -982,30 +864,30 @@ static int cmd_euler(int argc, char **argv)
     int rc = parse_opts(argc, argv, &o, "fixed");
     if (rc) return rc;
     if (o.npos != 2)
-        return usage_error("euler takes SEQ EXPR, e.g. dhmath euler [--fixed] XYZ \"rotx(10) roty(20)\"", NULL);
+        return cli_usage_error("euler takes SEQ EXPR, e.g. dhmath euler [--fixed] XYZ \"rotx(10) roty(20)\"", NULL);
     if (dh_euler_parse(o.pos[0], &seq) != DH_OK)
-        return usage_error("unknown Euler sequence '%s' (three axis letters, uppercase intrinsic, "
+        return cli_usage_error("unknown Euler sequence '%s' (three axis letters, uppercase intrinsic, "
                            "lowercase extrinsic, no two equal neighbours: XYZ, ZYX, ZYZ, xyz, ...)", o.pos[0]);
     if (o.fixed) {
         /* EXPR on the fixed-point path, angles Q16.16 degrees */
         dh_frame_q F;
         dh_q16 aq[3];
-        if ((rc = eval_expr_arg(o.pos[1], 1, NULL, &F)) != 0) return rc;
+        if ((rc = cli_eval_expr_arg(o.pos[1], 1, NULL, &F)) != 0) return rc;
         st = dh_frame_to_euler_q(&F, seq, aq);
         if (st != DH_OK) return rot_error("euler --fixed", st);
         put_num(aq[0] / 65536.0, 0);
         put_num(aq[1] / 65536.0, 0);
         put_num(aq[2] / 65536.0, 1);
-        return finish();
+        return cli_finish();
     }
     if ((rc = rotation_of("euler", o.pos[1], &R)) != 0) return rc;
     st = dh_mat3_to_euler_f32(&R, seq, a);
     if (st != DH_OK) return rot_error("euler", st);
-    if (!isfinite(a[0]) || !isfinite(a[1]) || !isfinite(a[2])) return error_msg("euler: result is not finite", NULL);
+    if (!isfinite(a[0]) || !isfinite(a[1]) || !isfinite(a[2])) return cli_error("euler: result is not finite", NULL);
     put_num(a[0], 0);
     put_num(a[1], 0);
     put_num(a[2], 1);
-    return finish();
+    return cli_finish();
 }
 
 static int cmd_quat(int argc, char **argv)
@@ -1016,30 +898,30 @@ static int cmd_quat(int argc, char **argv)
     dh_status st;
     int rc = parse_opts(argc, argv, &o, "fixed");
     if (rc) return rc;
-    if (o.npos != 1) return usage_error("quat takes one EXPR: dhmath quat [--fixed] EXPR", NULL);
+    if (o.npos != 1) return cli_usage_error("quat takes one EXPR: dhmath quat [--fixed] EXPR", NULL);
     if (o.fixed) {
         /* EXPR on the fixed-point path, components Q2.30 */
         dh_frame_q F;
         dh_quat_q qq;
-        if ((rc = eval_expr_arg(o.pos[0], 1, NULL, &F)) != 0) return rc;
+        if ((rc = cli_eval_expr_arg(o.pos[0], 1, NULL, &F)) != 0) return rc;
         st = dh_frame_to_quat_q(&F, &qq);
         if (st != DH_OK) return rot_error("quat --fixed", st);
         put_num(qq.w / 1073741824.0, 0);
         put_num(qq.x / 1073741824.0, 0);
         put_num(qq.y / 1073741824.0, 0);
         put_num(qq.z / 1073741824.0, 1);
-        return finish();
+        return cli_finish();
     }
     if ((rc = rotation_of("quat", o.pos[0], &R)) != 0) return rc;
     st = dh_mat3_to_quat_f32(&R, &q);
     if (st != DH_OK) return rot_error("quat", st);
     if (!isfinite(q.w) || !isfinite(q.x) || !isfinite(q.y) || !isfinite(q.z))
-        return error_msg("quat: result is not finite", NULL);
+        return cli_error("quat: result is not finite", NULL);
     put_num(q.w, 0);
     put_num(q.x, 0);
     put_num(q.y, 0);
     put_num(q.z, 1);
-    return finish();
+    return cli_finish();
 }
 
 static int cmd_gen(int argc, char **argv)
@@ -1050,65 +932,21 @@ static int cmd_gen(int argc, char **argv)
     const char *why;
     int rc = parse_opts(argc, argv, &o, "");
     if (rc) return rc;
-    if (o.npos != 2) return usage_error("gen takes ROBOTFILE NAME, e.g. dhmath gen puma560.dh puma560", NULL);
+    if (o.npos != 2) return cli_usage_error("gen takes ROBOTFILE NAME, e.g. dhmath gen puma560.dh puma560", NULL);
     if ((why = dh_gen_name_problem(o.pos[1])) != NULL) {
         fprintf(stderr, "dhmath: error: gen: NAME '%.80s' is not a usable C identifier: %s\n", o.pos[1], why);
         return EXIT_ERR;
     }
-    if ((rc = load_robot(o.pos[0], 0, &r, &rf)) != 0) return rc;
-    if (dh_robot_check(&r) != DH_OK) return error_msg("gen: the built robot fails dh_robot_check", NULL);
+    if ((rc = cli_load_robot(o.pos[0], 0, &r, &rf)) != 0) return rc;
+    if (dh_robot_check(&r) != DH_OK) return cli_error("gen: the built robot fails dh_robot_check", NULL);
     dh_gen_write(stdout, &r, o.pos[1], o.pos[0]);
-    return finish();
+    return cli_finish();
 }
 
 /* ---- track ---------------------------------------------------------------- */
 
-/* output of track, kept until the last target (nothing on stdout when a
- * line is bad) */
-typedef struct {
-    char *buf;
-    size_t len, cap;
-} outbuf;
 
-static int out_add(outbuf *b, const char *text)
-{
-    const size_t n = strlen(text);
-    if (b->len + n + 1u > b->cap) {
-        size_t cap = b->cap ? b->cap * 2u : 4096u;
-        char *p;
-        while (cap < b->len + n + 1u) cap *= 2u;
-        p = (char *)realloc(b->buf, cap);
-        if (!p) return error_msg("out of memory", NULL);
-        b->buf = p;
-        b->cap = cap;
-    }
-    memcpy(b->buf + b->len, text, n + 1u);
-    b->len += n;
-    return 0;
-}
 
-/* --vmax: one value for every joint or n values, each > 0 */
-static int track_vmax(const char *s, const dh_robot *r, float *vmax)
-{
-    double v[DH_MAX_JOINTS];
-    unsigned i, commas = 0;
-    const char *p;
-    for (p = s; *p; p++) commas += (*p == ',');
-    if (commas == 0u) {
-        if (parse_num_arg(s, "--vmax", &v[0])) return EXIT_ERR;
-        for (i = 1; i < r->n; i++) v[i] = v[0];
-    } else if (parse_list(s, r->n, v, "--vmax")) {
-        return EXIT_ERR;
-    }
-    for (i = 0; i < r->n; i++) {
-        if (!(v[i] > 0.0) || !((float)v[i] > 0.0f)) {
-            fprintf(stderr, "dhmath: error: --vmax: joint %u value %.9g must be greater than 0\n", i + 1u, v[i]);
-            return EXIT_ERR;
-        }
-        vmax[i] = (float)v[i];
-    }
-    return 0;
-}
 
 static const char *const k_track_word[3] = { "ok", "lagging", "unreachable" };
 
@@ -1120,7 +958,7 @@ static int track_next(char *line, size_t cap, unsigned *lineno, dh_mat4_f32 *T)
         size_t len, b = 0;
         dh_expr_error e;
         if (!fgets(line, (int)cap, stdin)) {
-            if (ferror(stdin)) return error_msg("reading the targets from standard input failed", NULL);
+            if (ferror(stdin)) return cli_error("reading the targets from standard input failed", NULL);
             return 0;
         }
         len = strlen(line);
@@ -1146,7 +984,7 @@ static int track_next(char *line, size_t cap, unsigned *lineno, dh_mat4_f32 *T)
  * dh_qpos, the period a whole number of microseconds, each target EXPR
  * evaluated in float and rounded to a dh_frame_q. The rate limits are the
  * fixed copies dh_robot_set_rates_f32 stored. */
-static int track_fixed(const dh_robot *r, const double *q0d, double dtd, outbuf *out)
+static int track_fixed(const dh_robot *r, const double *q0d, double dtd, cli_outbuf *out)
 {
     static dh_ikc_model_q m;
     dh_mat4_f32 T_scratch;
@@ -1159,18 +997,18 @@ static int track_fixed(const dh_robot *r, const double *q0d, double dtd, outbuf 
     dh_status st;
     const dh_ikc_model_q *mp = NULL;
     if (!(us >= 1.0 && us <= 1e6) || fabs(us - floor(us + 0.5)) > 1e-6 * us)
-        return error_msg("--dt", "with --fixed the control period must be a whole number of microseconds, at most 1 s");
+        return cli_error("--dt", "with --fixed the control period must be a whole number of microseconds, at most 1 s");
     if ((r->flags & DH_ROBOT_HAS_Q) == 0u)
-        return error_msg("track --fixed", "the robot's constants do not fit the fixed-point formats");
+        return cli_error("track --fixed", "the robot's constants do not fit the fixed-point formats");
     for (i = 0; i < r->n; i++) {
         const double v = q0d[i] * ((r->joint[i].type == DH_JOINT_REVOLUTE) ? 65536.0 : one);
-        if (!(fabs(v) < 2147483647.0)) return error_msg("--q0", "a joint value does not fit the fixed-point format");
+        if (!(fabs(v) < 2147483647.0)) return cli_error("--q0", "a joint value does not fit the fixed-point format");
         q0[i] = (int32_t)floor(v + 0.5);
     }
     if (dh_ikc_analyse_q(r, &m) == DH_OK && m.kind != DH_IKC_NONE) mp = &m;
     st = dh_track_init_q(&t, r, mp, q0, (uint32_t)floor(us + 0.5));
-    if (st == DH_ERR_LIMIT) return error_msg("--q0", "a joint value is outside its limits");
-    if (st != DH_OK) return error_msg("track", dh_status_str(st));
+    if (st == DH_ERR_LIMIT) return cli_error("--q0", "a joint value is outside its limits");
+    if (st != DH_OK) return cli_error("track", dh_status_str(st));
     while ((rc = track_next(line, sizeof line, &lineno, &T_scratch)) == 1) {
         dh_frame_q F;
         dh_track_report_q rep;
@@ -1186,11 +1024,11 @@ static int track_fixed(const dh_robot *r, const double *q0d, double dtd, outbuf 
         for (i = 0; i < r->n; i++) {
             const double v = q[i] / ((r->joint[i].type == DH_JOINT_REVOLUTE) ? 65536.0 : one);
             (void)snprintf(text, sizeof text, "%.9g ", v == 0.0 ? 0.0 : v);
-            if (out_add(out, text)) return EXIT_ERR;
+            if (cli_out_add(out, text)) return EXIT_ERR;
         }
         (void)snprintf(text, sizeof text, "%s %.9g %.9g\n", k_track_word[rep.state], rep.pos_err / one,
                        rep.rot_err / 536870912.0);
-        if (out_add(out, text)) return EXIT_ERR;
+        if (cli_out_add(out, text)) return EXIT_ERR;
     }
     return rc;
 }
@@ -1206,49 +1044,32 @@ static int cmd_track(int argc, char **argv)
     float q0[DH_MAX_JOINTS], vmax[DH_MAX_JOINTS], q[DH_MAX_JOINTS];
     char line[4096], text[64];
     unsigned i, lineno = 0;
-    outbuf out = { NULL, 0u, 0u };
+    cli_outbuf out = { NULL, 0u, 0u };
     int rc;
     dh_status st;
     dh_mat4_f32 T;
-    const dh_ikc_model_f32 *mp = NULL;
     if ((rc = parse_opts(argc, argv, &o, "fixed q0 dt vmax")) != 0) return rc;
-    if (o.npos != 1) return usage_error("track takes ROBOT --q0 q1,... --dt SECONDS [--vmax V] [--fixed]", NULL);
+    if (o.npos != 1) return cli_usage_error("track takes ROBOT --q0 q1,... --dt SECONDS [--vmax V] [--fixed]", NULL);
     if (strcmp(o.pos[0], "-") == 0)
-        return usage_error("track reads its targets from standard input: the robot must be a file", NULL);
-    if (!o.q0) return usage_error("track needs --q0 q1,... (the configuration at the first target)", NULL);
-    if (!o.dt) return usage_error("track needs --dt SECONDS (the control period)", NULL);
-    if ((rc = parse_num_arg(o.dt, "--dt", &dtd)) != 0) return rc;
-    if (!(dtd > 0.0) || !((float)dtd > 0.0f) || !isfinite((float)dtd))
-        return error_msg("--dt", "the control period must be greater than 0 seconds");
-    if ((rc = load_robot(o.pos[0], o.fixed, &r, &rf)) != 0) return rc;
-    if ((rc = parse_list(o.q0, r.n, q0d, "--q0")) != 0) return rc;
+        return cli_usage_error("track reads its targets from standard input: the robot must be a file", NULL);
+    if (!o.q0) return cli_usage_error("track needs --q0 q1,... (the configuration at the first target)", NULL);
+    if (!o.dt) return cli_usage_error("track needs --dt SECONDS (the control period)", NULL);
+    if ((rc = cli_parse_dt(o.dt, &dtd)) != 0) return rc;
+    if ((rc = cli_load_robot(o.pos[0], o.fixed, &r, &rf)) != 0) return rc;
+    if ((rc = cli_parse_list(o.q0, r.n, q0d, "--q0")) != 0) return rc;
     for (i = 0; i < r.n; i++) q0[i] = (float)q0d[i];
-    if (o.vmax) {
-        if ((rc = track_vmax(o.vmax, &r, vmax)) != 0) return rc;
-    } else {
-        for (i = 0; i < r.n; i++) {
-            if (!isfinite(r.joint[i].vmax)) {
-                fprintf(stderr, "dhmath: error: track: no --vmax and joint %u has no vmax= in the robot file\n",
-                        i + 1u);
-                return EXIT_ERR;
-            }
-            vmax[i] = r.joint[i].vmax;
-        }
-    }
+    if ((rc = cli_joint_rates("track", "--vmax", o.vmax, &r, vmax)) != 0) return rc;
     for (i = 0; i < r.n; i++) {
         st = dh_robot_set_rates_f32(&r, i, vmax[i], r.joint[i].amax);
-        if (st != DH_OK) return error_msg("--vmax rejected by the library", dh_status_str(st));
+        if (st != DH_OK) return cli_error("--vmax rejected by the library", dh_status_str(st));
     }
     if (o.fixed) {
         rc = track_fixed(&r, q0d, dtd, &out);
         if (rc == 0 && out.len) fwrite(out.buf, 1, out.len, stdout);
         free(out.buf);
-        return rc ? rc : finish();
+        return rc ? rc : cli_finish();
     }
-    if (dh_ikc_analyse_f32(&r, &m) == DH_OK && m.kind != DH_IKC_NONE) mp = &m;
-    st = dh_track_init_f32(&t, &r, mp, q0, (float)dtd);
-    if (st == DH_ERR_LIMIT) return error_msg("--q0", "a joint value is outside its limits");
-    if (st != DH_OK) return error_msg("track", dh_status_str(st));
+    if ((rc = cli_track_start("track", &r, &m, q0, (float)dtd, &t)) != 0) return rc;
     while ((rc = track_next(line, sizeof line, &lineno, &T)) == 1) {
         dh_track_report_f32 rep;
         st = dh_track_step_f32(&t, &T, q, &rep);
@@ -1260,11 +1081,11 @@ static int cmd_track(int argc, char **argv)
         }
         for (i = 0; i < r.n; i++) {
             (void)snprintf(text, sizeof text, "%.9g ", q[i] == 0.0f ? 0.0 : (double)q[i]);
-            if (out_add(&out, text)) { free(out.buf); return EXIT_ERR; }
+            if (cli_out_add(&out, text)) { free(out.buf); return EXIT_ERR; }
         }
         (void)snprintf(text, sizeof text, "%s %.9g %.9g\n", k_track_word[rep.state], (double)rep.pos_err,
                        (double)rep.rot_err);
-        if (out_add(&out, text)) { free(out.buf); return EXIT_ERR; }
+        if (cli_out_add(&out, text)) { free(out.buf); return EXIT_ERR; }
     }
     if (rc != 0) {
         free(out.buf);
@@ -1272,23 +1093,25 @@ static int cmd_track(int argc, char **argv)
     }
     if (out.len) fwrite(out.buf, 1, out.len, stdout);
     free(out.buf);
-    return finish();
+    return cli_finish();
 }
 
 int main(int argc, char **argv)
 {
     const char *cmd;
-    if (argc < 2) return usage_error("no COMMAND given (eval, axis, point, plane, fk, jacobian, ik, "
-                                     "euler, quat, help, --version)", NULL);
+    if (argc < 2) return cli_usage_error("no COMMAND given (eval, axis, point, plane, fk, jacobian, ik, "
+                                     "euler, quat, gen, track, move, help, --version)", NULL);
     cmd = argv[1];
     if (strcmp(cmd, "help") == 0 || strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0) {
         fputs(k_usage, stdout);
-        return finish();
+        fputs(cli_move_usage, stdout);
+        fputs(k_usage_tail, stdout);
+        return cli_finish();
     }
     if (strcmp(cmd, "--version") == 0) {
-        if (argc > 2) return usage_error("--version takes no arguments", NULL);
+        if (argc > 2) return cli_usage_error("--version takes no arguments", NULL);
         printf("dhmath %d.%d.%d\n", DHMATH_VERSION_MAJOR, DHMATH_VERSION_MINOR, DHMATH_VERSION_PATCH);
-        return finish();
+        return cli_finish();
     }
     argc -= 2;
     argv += 2;
@@ -1303,5 +1126,6 @@ int main(int argc, char **argv)
     if (strcmp(cmd, "quat") == 0) return cmd_quat(argc, argv);
     if (strcmp(cmd, "gen") == 0) return cmd_gen(argc, argv);
     if (strcmp(cmd, "track") == 0) return cmd_track(argc, argv);
-    return usage_error("unknown command '%s'", cmd);
+    if (strcmp(cmd, "move") == 0) return cli_cmd_move(argc, argv);
+    return cli_usage_error("unknown command '%s'", cmd);
 }

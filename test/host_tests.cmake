@@ -9,7 +9,7 @@ if(DH_BUILD_TOOLS)
   if(NOT DHMATH_CLI_PYTHON3)
     find_program(DHMATH_CLI_PYTHON3 NAMES python3 REQUIRED)
   endif()
-  foreach(group seed errors random robotfile rot fixed examples help numbers messages ikc track)
+  foreach(group seed errors random robotfile rot fixed examples help numbers messages ikc track move)
     add_test(NAME cli_${group}
       COMMAND ${DHMATH_CLI_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/cli/run_cli_tests.py
               $<TARGET_FILE:dhmath_cli> ${PROJECT_SOURCE_DIR} ${group})

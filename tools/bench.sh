@@ -3,10 +3,13 @@
 # Host benchmark of dhmath against peer libraries (speed goals); writes
 # docs/generated/performance_host.md.
 #
-#   tools/bench.sh
+#   tools/bench.sh [output.md]      (default docs/generated/performance_host.md)
 #
 # Environment: BUILD (default build-bench-host), REPS (timing repetitions,
-# >= 11, default 31), COUNT (iterations per op under callgrind, default 10000).
+# >= 11, default 31), COUNT (iterations per op under callgrind, default 10000),
+# OPW_DIR (a clone of opw_kinematics for its rows: git clone --branch 0.5.5
+# https://github.com/Jmeyer1292/opw_kinematics; unset: the rows are skipped and
+# the page says how to get it; never copied into this repository).
 # Steps:
 #   1. configure BUILD with -DDH_BUILD_BENCH=ON -DCMAKE_BUILD_TYPE=Release and
 #      -O2 (no -march) for C and C++, build bench_host;
@@ -22,10 +25,22 @@ ROOT=$(cd "$(dirname "$0")/.." && pwd)
 BUILD=${BUILD:-$ROOT/build-bench-host}
 REPS=${REPS:-31}
 COUNT=${COUNT:-10000}
+OUT=${1:-$ROOT/docs/generated/performance_host.md}
+OPW_DIR=${OPW_DIR:-}
+if [ -n "$OPW_DIR" ]; then
+  OPW_DIR=$(cd "$OPW_DIR" && pwd)
+  if [ ! -f "$OPW_DIR/include/opw_kinematics/opw_kinematics.h" ]; then
+    echo "bench.sh: OPW_DIR=$OPW_DIR holds no include/opw_kinematics/opw_kinematics.h" >&2
+    exit 2
+  fi
+else
+  echo "bench.sh: OPW_DIR not set, the opw_kinematics rows are skipped (git clone --branch 0.5.5 https://github.com/Jmeyer1292/opw_kinematics, then OPW_DIR=<clone> tools/bench.sh)"
+fi
 OPT="-O2 -DNDEBUG"
 
 cmake -S "$ROOT" -B "$BUILD" -DDH_BUILD_BENCH=ON -DDH_BUILD_TESTS=OFF -DDH_BUILD_TOOLS=OFF \
-  -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_FLAGS_RELEASE="$OPT" -DCMAKE_CXX_FLAGS_RELEASE="$OPT" >/dev/null
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_FLAGS_RELEASE="$OPT" -DCMAKE_CXX_FLAGS_RELEASE="$OPT" \
+  -DBENCH_OPW_DIR="$OPW_DIR" >/dev/null
 cmake --build "$BUILD" --target bench_host -j2
 
 LOAD0=$(cut -d' ' -f1-3 /proc/loadavg)
@@ -42,5 +57,5 @@ callgrind_annotate --inclusive=yes --threshold=100 "$BUILD/callgrind.out" >"$BUI
 
 /usr/bin/python3 "$ROOT/bench/bench_report.py" --times "$BUILD/bench_times.csv" \
   --callgrind "$BUILD/callgrind.txt" --count "$COUNT" --build "$BUILD" \
-  --stdout "$BUILD/bench_stdout.txt" --load "$LOAD0 / $LOAD1" --out "$ROOT/docs/generated/performance_host.md"
-"$ROOT/tools/stamp.sh" tools/bench.sh "$ROOT/docs/generated/performance_host.md"
+  --stdout "$BUILD/bench_stdout.txt" --load "$LOAD0 / $LOAD1" --opw "$OPW_DIR" --out "$OUT"
+"$ROOT/tools/stamp.sh" tools/bench.sh "$OUT"

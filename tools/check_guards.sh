@@ -17,7 +17,10 @@
 #   4. no recursion, no dynamic or unbounded stack (VLA, alloca, indirect
 #      calls), and the worst-case stack of every public function, including
 #      the libgcc/libm/libc functions it calls, is <= 256 bytes
-#      (tools/dh_stack.py).
+#      (tools/dh_stack.py);
+#   5. the size goal: the float + fixed core (profile (k) of
+#      tools/footprint.py) fits in 8192 bytes of flash on Cortex-M4F at
+#      -Os with DH_SMALL=1.
 # Exit status 0 when every guard holds. Build dirs: build/guards-<cpu>-<opt>
 # (and build/guards-<cpu>-Os-small for DH_SMALL=1 at -Os).
 #   tools/check_guards.sh              all six configurations
@@ -79,6 +82,11 @@ check_config() { # cpu opt [small]
   else
     bad "cortex-$cpu -$opt: stack guard (limit $LIMIT bytes incl. libgcc/libm; full list $dir/stack.txt):"
     grep -E 'OVER LIMIT|ERROR' "$dir/stack.txt" | sed 's/^/    /'
+  fi
+
+  # 5. the size goal: the float + fixed core on Cortex-M4F, size-first -Os
+  if [ "$cpu" = m4f ] && [ "$opt" = Os ] && [ -n "$small" ]; then
+    $PY "$ROOT/tools/footprint.py" --budget "$dir" "$flags -Os" || bad "cortex-m4f -Os DH_SMALL: size-first core over its flash budget"
   fi
 }
 

@@ -20,6 +20,12 @@
 #                 firmware sources always come from the working tree). The
 #                 committed docs/generated/performance_target.md is made this way, so
 #                 its figures belong to the commit it names.
+#   OPW_DIR       a clone of opw_kinematics (git clone --branch 0.5.5
+#                 https://github.com/Jmeyer1292/opw_kinematics; never copied into
+#                 this repository): its inverse<float> is measured beside
+#                 dh_ikc_f32 / dh_ikc_q on the cores with an FPU (needs
+#                 libeigen3-dev and libstdc++-arm-none-eabi-newlib). Unset: no
+#                 opw row, and the page says how to get it.
 # Build trees: build/tbench-<core>-<opt>/ ; logs: build/tbench-logs/.
 # Needs gcc-arm-none-eabi, libnewlib-arm-none-eabi, qemu-system-arm,
 # python3; libcglm-dev for the cglm peer rows (omitted without it).
@@ -33,6 +39,16 @@ JOBS=${JOBS:-$(nproc)}
 QEMU=${QEMU:-qemu-system-arm}
 PY=/usr/bin/python3
 LOGS=build/tbench-logs
+OPW_DIR=${OPW_DIR:-}
+if [ -n "$OPW_DIR" ]; then
+  OPW_DIR=$(cd "$OPW_DIR" && pwd)
+  if [ ! -f "$OPW_DIR/include/opw_kinematics/opw_kinematics.h" ]; then
+    echo "target_bench.sh: OPW_DIR=$OPW_DIR holds no include/opw_kinematics/opw_kinematics.h" >&2
+    exit 2
+  fi
+else
+  echo "target_bench.sh: OPW_DIR not set, no opw_kinematics row (git clone --branch 0.5.5 https://github.com/Jmeyer1292/opw_kinematics, then OPW_DIR=<clone> tools/target_bench.sh)"
+fi
 mkdir -p "$LOGS"
 rm -f "$LOGS"/*.log
 
@@ -77,7 +93,7 @@ for core in $CORES; do
     dir=build/tbench-$core-$opt
     echo "== $core -$opt: build ($dir)"
     cmake -S bench/target -B "$dir" -DCMAKE_TOOLCHAIN_FILE="$ROOT/$(toolchain "$core")" \
-          -DCMAKE_BUILD_TYPE=$bt -DBENCH_LIB_ROOT="$libroot" $extra >"$dir.configure.log" 2>&1 ||
+          -DCMAKE_BUILD_TYPE=$bt -DBENCH_LIB_ROOT="$libroot" -DBENCH_OPW_DIR="$OPW_DIR" $extra >"$dir.configure.log" 2>&1 ||
       { cat "$dir.configure.log"; exit 1; }
     cmake --build "$dir" -j"$JOBS" >"$dir.build.log" 2>&1 ||
       { tail -40 "$dir.build.log"; exit 1; }
@@ -108,6 +124,14 @@ meta=$LOGS/meta.txt
   v=$(dpkg-query -W -f='${Version}' libcglm-dev 2>/dev/null || true)
   [ -n "$v" ] && echo "cglm=libcglm-dev $v (Debian)"
   echo "library=$libdesc"
+  if [ -n "$OPW_DIR" ]; then
+    v=$(sed -n 's:.*<version>\(.*\)</version>.*:\1:p' "$OPW_DIR/package.xml" 2>/dev/null | head -1)
+    g=
+    [ -e "$OPW_DIR/.git" ] && g=", git $(git -C "$OPW_DIR" describe --tags --always 2>/dev/null)"
+    s=$(dpkg-query -W -f='${Version}' libstdc++-arm-none-eabi-newlib 2>/dev/null || true)
+    e=$(dpkg-query -W -f='${Version}' libeigen3-dev 2>/dev/null || true)
+    echo "opw=version ${v:-?} (package.xml$g), the user's clone; libstdc++-arm-none-eabi-newlib ${s:-?}, libeigen3-dev ${e:-?}"
+  fi
   echo "qemu-cmd=$QEMU -machine <board> -cpu <cpu> -icount shift=0 -semihosting-config enable=on,target=native -nographic -monitor none -serial none -kernel bench_target.elf"
   for core in $CORES; do
     f=flags_$core

@@ -722,6 +722,18 @@ static union {
         float J[36];
 #endif
     } t;
+#if BT_IKC_FLOAT
+    struct {   /* closed-form IK against opw_kinematics (bt_opw) */
+        dh_robot rf, rq;
+        dh_ikc_model_f32 mf;
+        dh_ikc_model_q mq;
+        dh_mat4_f32 Tf[BT_NOPW];
+        dh_frame_q Tq[BT_NOPW];
+        dh_ikc_sol_f32 solf[DH_IKC_MAX_SOL];
+        dh_ikc_sol_q solq[DH_IKC_MAX_SOL];
+        float qo[8][6];
+    } o;
+#endif
 } bt_mem;
 #define bt_ik_work bt_mem.ik_work
 
@@ -879,6 +891,193 @@ static void bt_ikc(void)
            (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total, (unsigned long)st);
     bt_status |= st;
 }
+
+/* ---- closed-form inverse kinematics against opw_kinematics ------------------ */
+
+#if !BENCH_HAVE_OPW
+/* stand-ins: the firmware was built without opw_kinematics */
+uint32_t bt_opw_setup(const dh_mat4_f32 *T, uint32_t n)
+{
+    (void)T;
+    (void)n;
+    return 0u;
+}
+
+void bt_opw_solve(uint32_t k)
+{
+    (void)k;
+}
+
+uint32_t bt_opw_solutions(float q_dh_deg[8][6])
+{
+    (void)q_dh_deg;
+    return 0u;
+}
+#endif
+
+#if BT_IKC_FLOAT
+/* KUKA KR6 R700 sixx, standard DH, metres: the robot of opw_kinematics'
+ * example makeKukaKR6_R700_sixx (include/opw_kinematics/
+ * opw_parameters_examples.h: a1 0.025, a2 -0.035, b 0, c1 0.4, c2 0.315,
+ * c3 0.365, c4 0.08, joint 2 offset -pi/2, joints 1, 4, 6 sign -1) as a DH
+ * table with the same base and flange frames. Columns: a, d, alpha, theta
+ * offset (deg). Limits +-170 deg on every joint are this benchmark's choice
+ * (the targets' configurations are drawn within them); q_ref is the home
+ * (0, -90, 90, 0, 0, 0) deg, as a controller would pass its last position. */
+static const float bt_kr6_tab[6][4] = {
+    { 0.025f, 0.4f, -90.0f, 0.0f }, { 0.315f, 0.0f, 0.0f, 0.0f },  { -0.035f, 0.0f, 90.0f, 90.0f },
+    { 0.0f, 0.365f, -90.0f, 0.0f }, { 0.0f, 0.0f, 90.0f, 0.0f },   { 0.0f, 0.08f, 0.0f, 0.0f }
+};
+static const float bt_kr6_qref[6] = { 0.0f, -90.0f, 90.0f, 0.0f, 0.0f, 0.0f };
+static const int32_t bt_kr6_qref_q[6] = { 0, -90 * 65536, 90 * 65536, 0, 0, 0 };
+
+static uint32_t bt_kr6(dh_robot *r, float scale)
+{
+    uint32_t st, j;
+    st = (uint32_t)dh_robot_init(r, DH_CONV_STANDARD);
+    for (j = 0; j < 6u; j++) {
+        st |= (uint32_t)dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, bt_kr6_tab[j][3], bt_kr6_tab[j][1] * scale,
+                                               bt_kr6_tab[j][0] * scale, bt_kr6_tab[j][2]);
+        st |= (uint32_t)dh_robot_set_limits_f32(r, j, -170.0f, 170.0f);
+    }
+    return st;
+}
+
+static float bt_wrap180(float x)
+{
+    x = fmodf(x, 360.0f);
+    if (x > 180.0f) {
+        x -= 360.0f;
+    }
+    if (x <= -180.0f) {
+        x += 360.0f;
+    }
+    return x;
+}
+
+/* Solution sets of the last opw solve and of dh_ikc_f32 (nsol solutions in
+ * bt_mem.o.solf) for one target: opw's finite solutions wrapped to
+ * (-180, 180] and kept within the limits must be as many as dhmath's, each
+ * matched by one of dhmath's within 1e-3 deg on every joint. Adds to the
+ * counts; worst: largest distance of an opw solution to its nearest. */
+static void bt_opw_match(uint32_t nsol, uint32_t *kept_all, uint32_t *count_bad, uint32_t *unmatched, float *worst)
+{
+    uint32_t no = bt_opw_solutions(bt_mem.o.qo), s, t, j, kept = 0u;
+    for (s = 0; s < no; s++) {
+        float best = 1e30f;
+        int in = 1;
+        for (j = 0; j < 6u; j++) {
+            bt_mem.o.qo[s][j] = bt_wrap180(bt_mem.o.qo[s][j]);
+            in = in && fabsf(bt_mem.o.qo[s][j]) <= 170.0f;
+        }
+        if (!in) {
+            continue;
+        }
+        kept++;
+        for (t = 0; t < nsol; t++) {
+            float d = 0.0f;
+            for (j = 0; j < 6u; j++) {
+                d = fmaxf(d, fabsf(bt_wrap180(bt_mem.o.qo[s][j] - bt_mem.o.solf[t].q[j])));
+            }
+            best = fminf(best, d);
+        }
+        if (best < 1e30f && best > *worst) {
+            *worst = best;
+        }
+        if (!(best <= 1e-3f)) {
+            *unmatched += 1u;
+        }
+    }
+    *kept_all += kept;
+    if (kept != nsol) {
+        *count_bad += 1u;
+    }
+}
+
+/* dh_ikc_f32 and dh_ikc_q (limits, q_ref) and opw_kinematics::inverse<float>
+ * on the same KR6 targets (FK of random configurations within the limits,
+ * untimed); each loop of BT_NOPW solves timed as a whole, minus the same
+ * loop without the call. */
+static void bt_opw(void)
+{
+    uint32_t k, j, nsol, total, st = 0u, nopw, kept = 0u, count_bad = 0u, unmatched = 0u;
+    uint64_t t0, t1, tl;
+    float worst = 0.0f;
+    const uint32_t saved = bt_rng;
+    st |= bt_kr6(&bt_mem.o.rf, 1.0f);
+    st |= bt_kr6(&bt_mem.o.rq, 1000.0f);
+    st |= (uint32_t)dh_ikc_analyse_f32(&bt_mem.o.rf, &bt_mem.o.mf);
+    st |= (uint32_t)dh_ikc_analyse_q(&bt_mem.o.rq, &bt_mem.o.mq);
+    bt_rng = 0x68E31DA4u;
+    for (k = 0; k < BT_NOPW; k++) {
+        float q[6];
+        int32_t qq[6];
+        for (j = 0; j < 6u; j++) {
+            q[j] = bt_uniform(-170.0f, 170.0f);
+            qq[j] = bt_to_q16(q[j]);
+        }
+        st |= (uint32_t)dh_fk_f32(&bt_mem.o.rf, q, &bt_mem.o.Tf[k]);
+        st |= (uint32_t)dh_fk_q(&bt_mem.o.rq, qq, &bt_mem.o.Tq[k]);
+    }
+    bt_rng = saved;
+    if (st != 0u) {
+        printf("BT error|KR6 R700 set-up returned status %lu\n", (unsigned long)st);
+        bt_status |= st;
+        return;
+    }
+    nopw = bt_opw_setup(bt_mem.o.Tf, BT_NOPW);
+    t0 = bt_now();
+    for (k = 0; k < BT_NOPW; k++) {
+        bt_sink = k;
+    }
+    t1 = bt_now();
+    tl = t1 - t0;
+    total = 0u;
+    t0 = bt_now();
+    for (k = 0; k < BT_NOPW; k++) {
+        st |= (uint32_t)dh_ikc_f32(&bt_mem.o.mf, &bt_mem.o.Tf[k], bt_kr6_qref, 0u, bt_mem.o.solf, &nsol);
+        total += nsol;
+    }
+    t1 = bt_now();
+    printf("BT opw|dh_ikc_f32 (KR6 R700, m, solutions within the limits, q_ref)|%lu|%llu|%llu|%lu|%lu\n",
+           (unsigned long)BT_NOPW, (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total,
+           (unsigned long)st);
+    total = 0u;
+    t0 = bt_now();
+    for (k = 0; k < BT_NOPW; k++) {
+        st |= (uint32_t)dh_ikc_q(&bt_mem.o.mq, &bt_mem.o.Tq[k], bt_kr6_qref_q, 0u, bt_mem.o.solq, &nsol);
+        total += nsol;
+    }
+    t1 = bt_now();
+    printf("BT opw|dh_ikc_q (KR6 R700, mm, solutions within the limits, q_ref)|%lu|%llu|%llu|%lu|%lu\n",
+           (unsigned long)BT_NOPW, (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total,
+           (unsigned long)st);
+    bt_status |= st;
+    if (nopw != BT_NOPW) {
+        printf("BT opwpeer|absent\n");
+        return;
+    }
+    t0 = bt_now();
+    for (k = 0; k < BT_NOPW; k++) {
+        bt_opw_solve(k);
+    }
+    t1 = bt_now();
+    /* untimed: the solutions, and the check against dh_ikc_f32 */
+    total = 0u;
+    for (k = 0; k < BT_NOPW; k++) {
+        st |= (uint32_t)dh_ikc_f32(&bt_mem.o.mf, &bt_mem.o.Tf[k], bt_kr6_qref, 0u, bt_mem.o.solf, &nsol);
+        bt_opw_solve(k);
+        total += bt_opw_solutions(bt_mem.o.qo);
+        bt_opw_match(nsol, &kept, &count_bad, &unmatched, &worst);
+    }
+    printf("BT opw|opw_kinematics::inverse<float> (KR6 R700, m, 8 raw solutions, no limits)|%lu|%llu|%llu|%lu|%lu\n",
+           (unsigned long)BT_NOPW, (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total,
+           (unsigned long)st);
+    printf("BT opwcheck|%lu|%lu|%lu|%lu|%lu\n", (unsigned long)BT_NOPW, (unsigned long)count_bad,
+           (unsigned long)unmatched, (unsigned long)kept, (unsigned long)(worst * 1e6f + 0.5f));
+    bt_status |= st;
+}
+#endif
 
 /* ---- damped least-squares steps (6 joints) ------------------------------- */
 
@@ -1216,6 +1415,9 @@ int main(void)
     bt_ik();
     bt_ik_q();
     bt_ikc();
+#if BT_IKC_FLOAT
+    bt_opw();
+#endif
     if (bt_inputs_dls() != 0u) {
         printf("BT error|damped least-squares inputs returned a status\n");
         return 1;

@@ -70,4 +70,24 @@ void bt_cglm_setup(void);
 /** Sanity check: cglm affine product of bt_A[0] bt_B[1] vs dhmath's (1 = agree). */
 int bt_cglm_check(void);
 
+/*
+ * opw_kinematics peer (bench_opw.cpp, FPU cores, only when built with a
+ * clone of opw: BENCH_HAVE_OPW; bench_target.c has the stand-ins
+ * otherwise). bt_opw_setup stores up to BT_NOPW targets and returns how many
+ * (0 without opw); bt_opw_solve(k) runs opw_kinematics::inverse<float> on
+ * target k; bt_opw_solutions writes the last solve's finite solutions as
+ * the DH table's joint values in degrees (not wrapped) and returns their
+ * number.
+ */
+#define BT_NOPW 16u
+#ifdef __cplusplus
+extern "C" {
+#endif
+uint32_t bt_opw_setup(const dh_mat4_f32 *T, uint32_t n);
+void bt_opw_solve(uint32_t k);
+uint32_t bt_opw_solutions(float q_dh_deg[8][6]);
+#ifdef __cplusplus
+}
+#endif
+
 #endif /* BENCH_TARGET_H */

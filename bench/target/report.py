@@ -74,6 +74,9 @@ class Run:
         self.ik = []         # (k, status, iterations, instructions, err_nm)
         self.ikq = []        # (k, status, iterations, instructions, err_pos LSB)
         self.ikc = []        # (name, instructions per call, solutions per call)
+        self.opw = []        # KR6 R700: (name, instructions per call, solutions per call)
+        self.opw_peer = None # True: opw row present; False: built without opw; None: no KR6 section (M0)
+        self.opw_check = None  # (targets, count mismatches, unmatched, opw solutions in limits, worst deg)
         self.track = {}      # name -> (calls, mean per call, largest call, ok, lagging, unreachable)
         self.checks = []
         self.core = self.opt = self.gcc = self.counter = self.unit = "?"
@@ -123,12 +126,22 @@ class Run:
                     ticks = int(p[4]) - int(p[5])
                     self.ikq.append((int(p[1]), int(p[2]), int(p[3]),
                                      float(ticks * self.scale), int(p[6])))
-                elif kind == "ikc":
+                elif kind in ("ikc", "opw"):
+                    # name|calls|ticks|empty-loop ticks|solutions|status
                     n = int(p[2])
                     ticks = int(p[3]) - int(p[4])
                     if int(p[6]) != 0:
                         fail("%s: %s returned status %s" % (path, p[1], p[6]))
-                    self.ikc.append((p[1], float(ticks * self.scale) / n, int(p[5]) / n))
+                    (self.ikc if kind == "ikc" else self.opw).append(
+                        (p[1], float(ticks * self.scale) / n, int(p[5]) / n))
+                    if kind == "opw" and p[1].startswith("opw_kinematics"):
+                        self.opw_peer = True
+                    elif kind == "opw" and self.opw_peer is None:
+                        self.opw_peer = False
+                elif kind == "opwpeer":
+                    self.opw_peer = False
+                elif kind == "opwcheck":
+                    self.opw_check = (int(p[1]), int(p[2]), int(p[3]), int(p[4]), int(p[5]) * 1e-6)
                 elif kind == "track":
                     n, ticks, null, mx = int(p[2]), int(p[3]), int(p[4]), int(p[5])
                     if int(p[9]) != 0:
@@ -274,7 +287,7 @@ def main():
     w("")
     w("| item | value |")
     w("|---|---|")
-    for k in ("library", "compiler", "newlib", "qemu", "cglm"):
+    for k in ("library", "compiler", "newlib", "qemu", "cglm", "opw"):
         if k in meta:
             w("| %s | %s |" % (k, meta[k]))
     w("| library flags | as in a normal build: `-std=c99 -ffunction-sections -fdata-sections` plus "
@@ -428,6 +441,49 @@ def main():
         for name, ins, ns in r.ikc:
             w("| %s -%s | `%s` | %.0f | %.2f |" % (core_name[c], o, name, ins, ns))
     w("")
+    w("## Closed-form inverse kinematics against opw_kinematics (KUKA KR6 R700 sixx)")
+    w("")
+    w("Per call, on the cores with an FPU: `dh_ikc_f32` (metres) and `dh_ikc_q` (mm), every solution "
+      "within joint limits of +-170 deg with q_ref = (0, -90, 90, 0, 0, 0) deg, and "
+      "`opw_kinematics::inverse<float>` (its 8 raw solutions, NaN where none, no limits; the "
+      "parameters of opw's example `makeKukaKR6_R700_sixx`, include/opw_kinematics/"
+      "opw_parameters_examples.h; C++ gnu++17 with Eigen and newlib's libstdc++, NDEBUG, "
+      "-ffp-contract=off) on the same %d targets: FK of random configurations within the limits, "
+      "computed untimed (`bt_opw` in bench/target/bench_target.c, bench/target/bench_opw.cpp). "
+      "Each loop over the targets is timed as a whole, minus the same loop without the call. "
+      "Check (untimed): opw's finite solutions, mapped to the DH table's joint values "
+      "(q_dh = (-1, 1, 1, -1, 1, -1) * q_opw, degrees), wrapped to (-180, 180] and kept within "
+      "the limits, against dhmath's float ones: the count per target, and each matched by one "
+      "within 1e-3 deg on every joint. opw_kinematics: %s."
+      % (16, meta.get("opw", "not given")))
+    w("")
+    opw_rows = [(c, o) for c, o in cols if runs["%s-%s" % (c, o)].opw_peer is not None]
+    if not any(runs["%s-%s" % (c, o)].opw_peer for c, o in opw_rows):
+        w("This run had no opw_kinematics: `git clone --branch 0.5.5 "
+          "https://github.com/Jmeyer1292/opw_kinematics /path/to/opw`, then "
+          "`OPW_DIR=/path/to/opw tools/target_bench.sh` (needs libeigen3-dev and "
+          "libstdc++-arm-none-eabi-newlib).")
+        w("")
+    w("| core | operation | instructions per call | solutions per call | dhmath / opw |")
+    w("|---|---|---:|---:|---:|")
+    for c, o in opw_rows:
+        r = runs["%s-%s" % (c, o)]
+        peer = [ins for name, ins, ns in r.opw if name.startswith("opw_kinematics")]
+        for name, ins, ns in r.opw:
+            ratio = "-"
+            if peer and not name.startswith("opw_kinematics") and peer[0] > 0:
+                ratio = "%.2f" % (ins / peer[0])
+            w("| %s -%s | `%s` | %.0f | %.2f | %s |" % (core_name[c], o, name, ins, ns, ratio))
+    w("")
+    checks = [(c, o, runs["%s-%s" % (c, o)].opw_check) for c, o in opw_rows
+              if runs["%s-%s" % (c, o)].opw_check is not None]
+    if checks:
+        w("| core | targets | with a different solution count | opw solutions in the limits | "
+          "without a dhmath one within 1e-3 deg | largest joint difference to the nearest (deg) |")
+        w("|---|---:|---:|---:|---:|---:|")
+        for c, o, k in checks:
+            w("| %s -%s | %d | %d | %d | %d | %.2e |" % (core_name[c], o, k[0], k[1], k[3], k[2], k[4]))
+        w("")
     w("## Tracking")
     w("")
     w("One tracker call per control period of 1 ms along a smooth move: the targets are the FK of "

@@ -169,8 +169,9 @@ dh_status dh_robot_init(dh_robot *r, dh_convention conv);
  * @param d     link offset (length unit; offset added to q for P joints)
  * @param a     link length (length unit)
  * @param alpha_deg link twist (degrees)
- * @return DH_OK; DH_ERR_ARG when n == DH_MAX_JOINTS or type is unknown;
- *         DH_ERR_NAN when a parameter is NaN or infinite. On error r is untouched.
+ * @return DH_OK; DH_ERR_NAN when a parameter is NaN or infinite (tested
+ *         first); DH_ERR_ARG when n == DH_MAX_JOINTS or type is unknown. On
+ *         error r is untouched.
  */
 dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float theta_deg, float d,
                                  float a, float alpha_deg);

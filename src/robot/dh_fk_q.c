@@ -597,6 +597,23 @@ DH_INLINE void fkq_chain_joint(const dh_robot *r, uint32_t i, const int32_t *q, 
 }
 #endif
 
+/* T_end = cur * tool; returns the overflow flag. The default build copies
+ * for an identity tool; the size-first build always multiplies (by the
+ * identity: every entry exact, no overflow, the same bits as the copy). */
+#if DH_FAST_PATHS
+DH_INLINE int fkq_tool(const dh_robot *r, const dh_frame_q *cur, dh_frame_q *T_end)
+{
+    if ((r->flags & DH_ROBOT_TOOL_ID_Q) == 0u) return fkq_mul_frame(T_end, cur, &r->tool_q);
+    fkq_copy_frame(T_end, cur);
+    return 0;
+}
+#else
+DH_INLINE int fkq_tool(const dh_robot *r, const dh_frame_q *cur, dh_frame_q *T_end)
+{
+    return fkq_mul_frame(T_end, cur, &r->tool_q);
+}
+#endif
+
 /* The chain is built in the caller's memory (frames[i], or T_end), from
  * the base; nothing is written before the argument checks. */
 static dh_status fkq_all(const dh_robot *r, const int32_t *q, dh_frame_q *frames, dh_frame_q *T_end)
@@ -614,10 +631,7 @@ static dh_status fkq_all(const dh_robot *r, const int32_t *q, dh_frame_q *frames
         fkq_chain_joint(r, i, q, cur, out, &ovf);
         cur = out;
     }
-    if (T_end) {
-        if ((r->flags & DH_ROBOT_TOOL_ID_Q) == 0u) ovf |= fkq_mul_frame(T_end, cur, &r->tool_q);
-        else fkq_copy_frame(T_end, cur);
-    }
+    if (T_end) ovf |= fkq_tool(r, cur, T_end);
     return (dh_status)ovf;
 }
 

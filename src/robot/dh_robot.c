@@ -109,9 +109,8 @@ dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float theta_de
     int k;
     unsigned st = 0u;
     uint32_t f;
+    dh_status s;
     DH_ASSERT(r != NULL);
-    if (r->n >= (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
-    if (type != DH_JOINT_REVOLUTE && type != DH_JOINT_PRISMATIC) return DH_ERR_ARG;
     v[0] = a;
     v[1] = d;
     v[2] = alpha_deg;
@@ -122,12 +121,14 @@ dh_status dh_robot_add_joint_f32(dh_robot *r, dh_joint_type type, float theta_de
         /* fixed copy of an unavailable joint: zeros, sin/cos 0 and 1 */
         for (k = 0; k < 4; k++) x[k] = 0;
     }
-    /* nothing fails from here on: the fixed half (which also writes the
-     * slot's float fields as for a joint without them, no limits among
-     * them), then the float parameters and sin/cos of alpha */
+    /* the fixed half checks n and type (DH_ERR_ARG, r untouched) and
+     * writes the slot's float fields as for a joint without them, no
+     * limits among them; nothing fails after it: the float parameters
+     * and sin/cos of alpha */
     f = r->flags;
-    j = &r->joint[r->n];
-    (void)dh_robot_add_joint_q(r, type, x[3], x[1], x[0], x[2]);
+    s = dh_robot_add_joint_q(r, type, x[3], x[1], x[0], x[2]);
+    if (s != DH_OK) return s;
+    j = &r->joint[r->n - 1u]; /* the slot just written */
     j->a = v[0];
     j->d = v[1];
     j->alpha_deg = v[2];

@@ -26,6 +26,14 @@ Groups:
             reason for a robot without a closed form; ik --all --fixed on
             puma560_mm and ur5_mm (the fixed path, within 5e-3 mm), its
             exit 3 and exit 2 cases
+  move      move: a joint move (trapezoids and --jerk), a line, an arc and
+            a joint move back on the UR5, a Puma line: the header, the
+            period count against the planned duration (computed here), every
+            step within vmax dt and every change of step within amax dt^2 by
+            finite differences here, the tool on the line and within one
+            period's travel, each end reached (double FK here); exit 3 and
+            the period cap for a line beyond reach; exit 2, empty stdout and
+            the message for each bad argument
   messages  the messages that name a cause: ik robot size and --w-rot,
             non-rigid tool/base/target, fk --fixed constants, projective
             EXPR in axis/euler/quat, --q0 clamping, '-' for stdin
@@ -1441,6 +1449,282 @@ def group_track(seed, tmp):
               (args, rc, out[:80], err, want))
 
 
+# ---- move ------------------------------------------------------------------
+
+def f32_ulp(x):
+    """ulp of |x| as a float (the spacing of floats at x)."""
+    x = abs(float(struct.unpack('f', struct.pack('f', x))[0]))
+    if x < 1.1754944e-38:
+        return 2.0 ** -149
+    return 2.0 ** (math.floor(math.log2(x)) - 23)
+
+
+def f32(x):
+    return struct.unpack('f', struct.pack('f', x))[0]
+
+
+def read_csv(out, n):
+    """header and rows (t, q list, status) of a move's CSV."""
+    lines = out.strip('\n').split('\n') if out else []
+    head = lines[0] if lines else ''
+    rows = []
+    for line in lines[1:]:
+        tok = line.split(',')
+        if len(tok) != n + 2:
+            rows.append(None)
+            continue
+        rows.append((float(tok[0]), [f32(float(x)) for x in tok[1:n + 1]], tok[n + 1]))
+    return head, rows
+
+
+def rot_angle(A, B):
+    """angle (rad) of R_A^T R_B"""
+    tr = sum(A[k][r] * B[k][r] for r in range(3) for k in range(3))
+    return math.acos(max(-1.0, min(1.0, (tr - 1.0) / 2.0)))
+
+
+def trap_T(d, v, a):
+    """duration of the time-optimal rest-to-rest trapezoid over |d| (double)"""
+    d = abs(d)
+    if d == 0.0:
+        return 0.0
+    if d >= v * v / a:
+        return d / v + v / a
+    return 2.0 * math.sqrt(d / a)
+
+
+def check_joint_limits(what, q0, rows, vmax, amax, dt, eps, at_rest=True):
+    """every step within vmax dt and every change of step within amax dt^2
+    (finite differences here), q0 the configuration before the first row,
+    at rest; eps[i]: the rounding allowance of joint i. at_rest: the last
+    row is at rest too (holding it next period keeps the bound)."""
+    prev, step0 = q0, [0.0] * len(q0)
+    worst_v = worst_a = 0.0
+    for k, row in enumerate(rows):
+        q = row[1]
+        for i in range(len(q)):
+            st = q[i] - prev[i]
+            worst_v = max(worst_v, abs(st) / (vmax[i] * dt))
+            worst_a = max(worst_a, abs(st - step0[i]) / (amax[i] * dt * dt))
+            if abs(st) > vmax[i] * dt + eps[i]:
+                check(False, '%s: period %d joint %d step %.9g beyond vmax dt %.9g' % (what, k + 1, i + 1, st,
+                                                                                        vmax[i] * dt))
+                return worst_v, worst_a
+            if abs(st - step0[i]) > amax[i] * dt * dt + 2.0 * eps[i]:
+                check(False, '%s: period %d joint %d change of step %.9g beyond amax dt^2 %.9g' %
+                      (what, k + 1, i + 1, st - step0[i], amax[i] * dt * dt))
+                return worst_v, worst_a
+            step0[i] = st
+        prev = q
+    if at_rest:
+        for i in range(len(q0)):
+            check(abs(step0[i]) <= amax[i] * dt * dt + 2.0 * eps[i], '%s: not at rest at the end: joint %d last step '
+                  '%.9g' % (what, i + 1, step0[i]))
+    check(True, what)
+    return worst_v, worst_a
+
+
+def move_robot(tmp, name, src, vmax, amax):
+    """a copy of the robot file src with vmax= and amax= on every joint"""
+    out = []
+    for line in open(src).read().split('\n'):
+        if line.startswith('joint '):
+            line = '%s vmax=%g amax=%g' % (line, vmax, amax)
+        out.append(line)
+    path = os.path.join(tmp, name)
+    with open(path, 'w') as f:
+        f.write('\n'.join(out))
+    return path
+
+
+def group_move(seed, tmp):
+    """dhmath move: header and period count, limits by finite differences,
+    the end of every segment, exit 3 beyond reach, exit 2 per bad argument."""
+    rng = random.Random(seed)
+    ur5 = os.path.join(ROOT, 'examples', 'robots', 'ur5.dh')
+    rob = read_robot(open(ur5).read())
+    n = len(rob['joints'])
+    vm, am, dt = 180.0, 720.0, 0.004
+    path = move_robot(tmp, 'ur5_rates.dh', ur5, vm, am)
+    qa = [10.0, -60.0, 70.0, 20.0, 40.0, 30.0]
+    qb = [f32(round(q + rng.uniform(-40.0, 40.0), 3)) for q in qa]
+    head_want = 't,' + ','.join('q%d' % (i + 1) for i in range(n)) + ',status'
+
+    # 1. a joint move (trapezoids): periods, limits within the contract's
+    # rounding, the last line q1 bit for bit, t = k dt
+    rc, out, err = run(['move', path, '--q0', ','.join(map(str, qa)), '--dt', str(dt),
+                        '--joint', ','.join('%.9g' % q for q in qb)])
+    check(rc == 0 and err == '', 'move --joint: rc %d err %r' % (rc, err))
+    head, rows = read_csv(out, n)
+    check(head == head_want, 'move --joint: header %r' % head)
+    check(rows and None not in rows and all(r[2] == 'ok' for r in rows), 'move --joint: rows %r' % rows[:3])
+    if rows and None not in rows:
+        lo = 1.0 - 2.0 ** -10
+        T = max(trap_T(b - a, vm * lo, am * lo) for a, b in zip(qa, qb))
+        check(abs(len(rows) - math.ceil(T / dt)) <= 1, 'move --joint: %d periods for T %.6g s' % (len(rows), T))
+        eps = [vm * 2 * f32_ulp(T) + 4 * f32_ulp(max(abs(a), abs(b))) + 4 * f32_ulp(b - a) for a, b in zip(qa, qb)]
+        wv, wa = check_joint_limits('move --joint', qa, rows, [vm] * n, [am] * n, dt, eps)
+        check(rows[-1][1] == qb, 'move --joint: last line %r, not %r' % (rows[-1][1], qb))
+        check(all(abs(r[0] - (k + 1) * dt) <= 1e-9 * (k + 1) * dt for k, r in enumerate(rows)), 'move --joint: t')
+        print('move --joint: %d periods (T %.6g s), largest step %.6f of vmax dt, change %.6f of amax dt^2' %
+              (len(rows), T, wv, wa))
+        # --jerk: the seven-phase profiles, slower than the trapezoids, same limits and end
+        rc, out, err = run(['move', path, '--q0', ','.join(map(str, qa)), '--dt', str(dt), '--jerk', '4000',
+                            '--joint', ','.join('%.9g' % q for q in qb)])
+        head, jrows = read_csv(out, n)
+        check(rc == 0 and head == head_want and jrows and None not in jrows, 'move --jerk: rc %d %r' % (rc, err))
+        if jrows and None not in jrows:
+            check(len(jrows) > len(rows), 'move --jerk: %d periods, trapezoids %d' % (len(jrows), len(rows)))
+            check_joint_limits('move --jerk', qa, jrows, [vm] * n, [am] * n, dt, eps)
+            check(jrows[-1][1] == qb, 'move --jerk: last line %r' % (jrows[-1][1],))
+
+    # 2. a line, an arc and a joint move back (tracked segments): every
+    # period ok, the tracker's limits, the tool on the line and within one
+    # period's travel of the previous, each segment's end reached
+    A = ref_fk(rob, qa)
+    p0 = [A[r][3] for r in range(3)]
+    dp = [rng.uniform(-0.08, 0.08) for _ in range(3)]
+    pB = [p0[r] + dp[r] for r in range(3)]
+    rB = [rng.uniform(-1, 1) for _ in range(3)] + [rng.uniform(-20.0, 20.0)]
+    endB = 'trans(%.6f,%.6f,%.6f) %s rot(%.6f,%.6f,%.6f,%.6f)' % tuple(pB + [to_expr(A).split(' ', 1)[1]] + rB)
+    B = ref_expr(endB)
+    # the via point 5 cm from the chord's middle, across the chord (a short arc)
+    ax = [0.0, 0.0, 1.0] if abs(dp[2]) < 0.9 * math.sqrt(sum(d * d for d in dp)) else [1.0, 0.0, 0.0]
+    nv = [dp[1] * ax[2] - dp[2] * ax[1], dp[2] * ax[0] - dp[0] * ax[2], dp[0] * ax[1] - dp[1] * ax[0]]
+    nn = math.sqrt(sum(v * v for v in nv))
+    via = [p0[r] + 0.5 * dp[r] + 0.05 * nv[r] / nn for r in range(3)]
+    viaC = 'trans(%.6f,%.6f,%.6f)' % tuple(via)
+    endC = to_expr(A)
+    speed, accel, rsp, racc = 0.25, 1.0, 60.0, 240.0
+    rc, out, err = run(['move', path, '--q0', ','.join(map(str, qa)), '--dt', str(dt), '--speed', str(speed),
+                        '--accel', str(accel), '--rspeed', str(rsp), '--raccel', str(racc), '--line', endB,
+                        '--arc', viaC, endC, '--joint', ','.join('%.9g' % q for q in qb)])
+    check(rc == 0 and err == '', 'move line/arc/joint: rc %d err %r' % (rc, err))
+    head, rows = read_csv(out, n)
+    check(head == head_want and rows and None not in rows, 'move line/arc/joint: header %r' % head)
+    if rows and None not in rows:
+        check(all(r[2] == 'ok' for r in rows), 'move line/arc/joint: not ok: %r' %
+              [r for r in rows if r[2] != 'ok'][:2])
+        eps = [4 * f32_ulp(360.0)] * n
+        wv, wa = check_joint_limits('move line/arc/joint', qa, rows, [vm] * n, [am] * n, dt, eps)
+        check(rows[-1][1] == qb, 'move line/arc/joint: last line %r, not %r' % (rows[-1][1], qb))
+        # the line: its periods are the first ones; the tool on the segment
+        L = math.sqrt(sum(d * d for d in dp))
+        ang = math.degrees(rot_angle(A, B))
+        Tl = trap_T(1.0, min(speed / L, rsp / ang), min(accel / L, racc / ang))
+        on_line, reached, prev = 0.0, None, p0
+        for k, r in enumerate(rows):
+            F = ref_fk(rob, r[1])
+            p = [F[i][3] for i in range(3)]
+            stepl = math.sqrt(sum((a - b) ** 2 for a, b in zip(p, prev)))
+            check(stepl <= speed * dt * (1 + 1e-3) + 1e-5, 'move line: period %d tool step %.9g beyond speed dt' %
+                  (k + 1, stepl))
+            prev = p
+            s = sum((p[i] - p0[i]) * dp[i] for i in range(3)) / (L * L)
+            foot = [p0[i] + s * dp[i] for i in range(3)]
+            on_line = max(on_line, math.sqrt(sum((a - b) ** 2 for a, b in zip(p, foot))))
+            if max(abs(p[i] - pB[i]) for i in range(3)) <= 5e-6 and rot_angle(F, B) <= 5e-5:
+                reached = k + 1
+                break
+        check(reached is not None, 'move line: the end frame never reached')
+        if reached is not None:
+            check(abs(reached - (math.ceil(Tl / dt) + 1)) <= 2, 'move line: end reached at period %d, planned %d' %
+                  (reached, math.ceil(Tl / dt) + 1))
+        check(on_line <= 1e-5, 'move line: the tool %.3g off the line' % on_line)
+        print('move line/arc/joint: %d periods, line %d (planned T %.4g s), tool off the line %.3g, largest step '
+              '%.4f of vmax dt, change %.4f of amax dt^2' % (len(rows), reached or 0, Tl, on_line, wv, wa))
+
+    # 3. a Puma 560 line ending at rest on its end frame
+    puma = move_robot(tmp, 'puma_rates.dh', os.path.join(ROOT, 'examples', 'robots', 'puma560.dh'), 150.0, 600.0)
+    prob = read_robot(open(puma).read())
+    pq = [10.0, -30.0, 45.0, 20.0, 35.0, -60.0]
+    P = ref_fk(prob, pq)
+    endP = 'trans(%.6f,%.6f,%.6f) %s' % (P[0][3] + 0.2, P[1][3] + 0.07, P[2][3] + 0.12, to_expr(P).split(' ', 1)[1])
+    rc, out, err = run(['move', puma, '--q0', ','.join(map(str, pq)), '--dt', '0.002', '--speed', '0.3', '--accel',
+                        '1.5', '--rspeed', '90', '--raccel', '360', '--line', endP])
+    head, prows = read_csv(out, 6)
+    check(rc == 0 and prows and None not in prows and all(r[2] == 'ok' for r in prows), 'move puma: rc %d %r' %
+          (rc, err))
+    if prows and None not in prows:
+        check_joint_limits('move puma', pq, prows, [150.0] * 6, [600.0] * 6, 0.002, [4 * f32_ulp(360.0)] * 6)
+        F, E = ref_fk(prob, prows[-1][1]), ref_expr(endP)
+        pe = max(abs(F[i][3] - E[i][3]) for i in range(3))
+        check(pe <= 5e-6 and rot_angle(F, E) <= 5e-5, 'move puma: last line %.3g, %.3g rad from the end' %
+              (pe, rot_angle(F, E)))
+
+    # 4. a line beyond reach: exit 3, the cap, unreachable periods, limits kept
+    far = 'trans(-1.2,-0.35,0.35) ' + to_expr(A).split(' ', 1)[1]
+    rc, out, err = run(['move', path, '--q0', ','.join(map(str, qa)), '--dt', str(dt), '--speed', str(speed),
+                        '--accel', str(accel), '--rspeed', str(rsp), '--raccel', str(racc), '--line', far,
+                        '--joint', ','.join('%.9g' % q for q in qb)])
+    head, frows = read_csv(out, n)
+    check(rc == 3 and 'segment 1 (--line) did not complete within' in err, 'move beyond reach: rc %d err %r' %
+          (rc, err))
+    if frows and None not in frows:
+        Lf = math.sqrt(sum((a - b) ** 2 for a, b in zip(p0, [-1.2, -0.35, 0.35])))
+        Tf = trap_T(1.0, speed / Lf, accel / Lf)
+        cap = math.ceil((4.0 * Tf + 1.0) / dt)
+        check(head == head_want and abs(len(frows) - cap) <= 2, 'move beyond reach: %d periods, cap %d' %
+              (len(frows), cap))
+        check(frows[-1][2] == 'unreachable', 'move beyond reach: last %r' % (frows[-1][2],))
+        check_joint_limits('move beyond reach', qa, frows, [vm] * n, [am] * n, dt, [4 * f32_ulp(360.0)] * n,
+                           at_rest=False)
+
+    # 5. every bad argument: exit 2, nothing on stdout, the message naming it
+    q0 = ['--q0', ','.join(map(str, qa))]
+    cart = ['--speed', '0.2', '--accel', '1', '--rspeed', '60', '--raccel', '240']
+    jt = ['--joint', '0,0,0,0,0,0']
+    ln = ['--line', to_expr(A)]
+    no_amax = os.path.join(tmp, 'ur5_vmax_only.dh')
+    with open(no_amax, 'w') as f:
+        f.write(open(ur5).read().replace('max=360\n', 'max=360 vmax=100\n'))
+    cases = [
+        ([path, '--dt', '0.01'] + jt, 'move needs --q0'),
+        ([path] + q0 + jt, 'move needs --dt'),
+        ([path] + q0 + ['--dt', '0.01'], 'move needs at least one segment'),
+        (q0 + ['--dt', '0.01'] + jt, 'move needs a ROBOT'),
+        ([path, path] + q0 + ['--dt', '0.01'] + jt, 'extra argument'),
+        ([path] + q0 + ['--dt', '0'] + jt, '--dt'),
+        ([path] + q0 + ['--dt', 'x'] + jt, "bad number 'x' for --dt"),
+        ([path, '--q0', '1,2'] + ['--dt', '0.01'] + jt, '--q0: expected 6 values'),
+        ([path, '--q0', '400,0,0,0,0,0'] + ['--dt', '0.01'] + jt, '--q0: a joint value is outside its limits'),
+        ([path] + q0 + ['--dt', '0.01', '--vmax', '0'] + jt, '--vmax: joint 1 value 0'),
+        ([path] + q0 + ['--dt', '0.01', '--vmax', '1,2'] + jt, '--vmax: expected 6 values'),
+        ([path] + q0 + ['--dt', '0.01', '--amax', '-5'] + jt, '--amax: joint 1 value -5'),
+        ([ur5] + q0 + ['--dt', '0.01'] + jt, 'move: no --vmax and joint 1 has no vmax='),
+        ([no_amax] + q0 + ['--dt', '0.01'] + jt, 'move: no --amax and joint 1 has no amax='),
+        ([path] + q0 + ['--dt', '0.01', '--joint', '1,2,3'], 'segment 1 (--joint): expected 6 values'),
+        ([path] + q0 + ['--dt', '0.01'] + jt + ['--joint', '0,0,0,0,0,361'], 'segment 2 (--joint): a joint value is '
+                                                                              'outside its limits'),
+        ([path] + q0 + ['--dt', '0.01'] + ln, 'a --line or --arc segment needs --speed'),
+        ([path] + q0 + ['--dt', '0.01', '--speed', '0.2', '--accel', '1', '--rspeed', '60'] + ln, 'needs --raccel'),
+        ([path] + q0 + ['--dt', '0.01', '--speed', '0', '--accel', '1', '--rspeed', '60', '--raccel', '1'] + ln,
+         '--speed: 0 must be'),
+        ([path] + q0 + ['--dt', '0.01'] + cart + jt + ['--line', 'trans(1,2'], 'segment 2 (--line): end frame EXPR, '
+                                                                               'column'),
+        ([path] + q0 + ['--dt', '0.01'] + cart + ['--line', 'scale(2,1,1)'], 'segment 1 (--line): end frame: not a '
+                                                                             'rigid frame'),
+        ([path] + q0 + ['--dt', '0.01'] + cart + ['--arc', 'trans(%r,%r,%r)' % tuple(p0), to_expr(B)],
+         'segment 1 (--arc): no path from the previous segment\'s end: the start, via and end points are collinear'),
+        ([path] + q0 + ['--dt', '0.01'] + cart + ['--arc', 'ident'], "'--arc' needs two values"),
+        ([path] + q0 + ['--dt', '0.01', '--jerk', '0'] + jt, '--jerk: 0 must be'),
+        ([path] + q0 + ['--dt', '0.01', '--jerk', '1000'] + cart + ln, 'move --jerk: with a --line or --arc segment '
+                                                                       'needs the Cartesian jerk limits'),
+        ([path] + q0 + ['--dt', '0.01', '--blend', '0.01'] + cart + ln + ln, 'move --blend: needs blended corners'),
+        ([path] + q0 + ['--dt', '0.01', '--fixed'] + jt, 'move --fixed: needs a fixed-point motion API'),
+        ([path] + q0 + ['--dt', '0.01', '--dt', '0.02'] + jt, "option '--dt' given more than once"),
+        ([path] + q0 + ['--dt', '0.01', '--frames'] + jt, "unknown or inapplicable option '--frames'"),
+        ([path] + q0 + ['--dt', '0.01', '--joint'], "option '--joint' needs a value"),
+        ([path] + q0 + ['--dt', '1e-7', '--joint', '300,0,0,0,0,0'], 'more than 1000000 control periods'),
+        (['-'] + q0 + ['--dt', '0.01'] + cart + ['--line', '-'], "'-' (standard input) given more than once"),
+        ([os.path.join(tmp, 'none.dh')] + q0 + ['--dt', '0.01'] + jt, 'cannot open robot file'),
+    ]
+    for args, want in cases:
+        rc, out, err = run(['move'] + args)
+        check(rc == 2 and out == '' and want in err and err.startswith('dhmath: '),
+              'move %r: rc %d out %r err %r (want %r)' % (args, rc, out[:80], err, want))
+
+
 def main():
     global EXE, ROOT
     if len(sys.argv) < 4:
@@ -1462,6 +1746,7 @@ def main():
             'messages': lambda: group_messages(tmp),
             'ikc': lambda: group_ikc(seed, tmp),
             'track': lambda: (group_track(seed, tmp), group_track_fixed(seed, tmp)),
+            'move': lambda: group_move(seed, tmp),
         }
         if group not in groups:
             print('unknown group', group)

@@ -79,6 +79,8 @@ static void robot_add_joint_bad(void)
     copy = r;
     DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.1f, 0.0f), DH_ERR_ARG);
     DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, 1, 0), DH_ERR_ARG);
+    /* the parameters are tested first: NaN on a full robot is DH_ERR_NAN */
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, bad_value_nan(0), 0.1f, 0.0f), DH_ERR_NAN);
     DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
 }
 
@@ -522,6 +524,8 @@ static void robot_n_beyond_capacity(void)
     DHT_EQ_INT(dh_robot_set_limits_q(&r, DH_MAX_JOINTS, -1, 1), DH_ERR_ARG);
     DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, 0.0f, 0.1f, 0.0f), DH_ERR_ARG);
     DHT_EQ_INT(dh_robot_add_joint_q(&r, DH_JOINT_REVOLUTE, 0, 0, 1, 0), DH_ERR_ARG);
+    /* the parameters are tested first: NaN on a full robot is DH_ERR_NAN */
+    DHT_EQ_INT(dh_robot_add_joint_f32(&r, DH_JOINT_REVOLUTE, 0.0f, bad_value_nan(0), 0.1f, 0.0f), DH_ERR_NAN);
     DHT_TRUE(memcmp(&r, &copy, sizeof r) == 0);
 }
 

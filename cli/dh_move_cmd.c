@@ -1,0 +1,462 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * dh_move_cmd.c - `dhmath move`: a sequence of joint, line and arc
+ * segments run by the move executor of motion.h, one CSV line per control
+ * period (docs/cli.md, "move").
+ *
+ * Every segment is planned before the first period runs (EXPRs, joint
+ * lists, limits, paths and their profiles), so that a bad argument exits
+ * with status 2 and nothing on stdout. A line or arc segment starts at the
+ * frame where the previous one was planned to end (the first at FK(q0));
+ * a joint segment starts at the configuration the robot is in when it
+ * begins. Joint segments are sampled by dh_move_joint_step_f32; line and
+ * arc segments are tracked by the float tracker of track.h (set up as for
+ * `track`, by cli_track_start) between dh_move_target_f32 and
+ * dh_move_advance_f32. The output is kept in memory until the move ends.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "dh_cli.h"
+#include "dh_move_cmd.h"
+#include "dhmath/mat4.h"
+#include "dhmath/motion.h"
+#include "dhmath/robot.h"
+
+/** Most segments on one command line. */
+#define MOVE_MAX_SEG 64
+/** Most control periods of one move (the output is kept in memory). */
+#define MOVE_MAX_PERIODS 1000000.0
+/** The cap on the periods of a line or arc segment: MOVE_CAP_FACTOR times
+ *  its planned duration plus MOVE_CAP_EXTRA seconds, in periods. */
+#define MOVE_CAP_FACTOR 4.0
+#define MOVE_CAP_EXTRA 1.0
+
+const char cli_move_usage[] =
+    "  move ROBOT --q0 q1,... --dt SECONDS SEGMENT... [--speed S] [--accel A]\n"
+    "       [--rspeed DEG_S] [--raccel DEG_S2] [--jerk J] [--blend R] [--vmax V] [--amax V] [--fixed]\n"
+    "                                  SEGMENT: --line EXPR | --arc VIA_EXPR END_EXPR |\n"
+    "                                  --joint q1,...; CSV on stdout: t,q1,...,qn,status\n"
+    "                                  per control period (ok|lagging|unreachable);\n"
+    "                                  exit 0 all ok, 3 lagging/unreachable or not\n"
+    "                                  completed, 2 error\n";
+
+enum { SEG_LINE = 0, SEG_ARC = 1, SEG_JOINT = 2 };
+static const char *const k_seg_opt[3] = { "--line", "--arc", "--joint" };
+static const char *const k_state_word[3] = { "ok", "lagging", "unreachable" };
+
+typedef struct {
+    int kind;
+    const char *a, *b; /* line: EXPR; arc: VIA_EXPR, END_EXPR; joint: the list */
+} move_seg;
+
+typedef struct {
+    const char *robot, *q0, *dt, *speed, *accel, *rspeed, *raccel, *jerk, *blend, *vmax, *amax;
+    int fixed, nstdin;
+    unsigned nseg;
+    move_seg seg[MOVE_MAX_SEG];
+} move_args;
+
+/* Everything the periods need, planned before the first one. */
+typedef struct {
+    dh_robot r;
+    dh_robotfile rf;
+    dh_ikc_model_f32 m;
+    dh_track_f32 t;
+    dh_move_f32 mv;
+    dh_path_f32 path[MOVE_MAX_SEG];      /* line and arc segments */
+    float q1[MOVE_MAX_SEG][DH_MAX_JOINTS]; /* joint segments */
+    float q0[DH_MAX_JOINTS], vmax[DH_MAX_JOINTS], amax[DH_MAX_JOINTS], jmax[DH_MAX_JOINTS];
+    dh_cart_limits_f32 lim;
+    double dt;
+    int jerk;
+    cli_outbuf out;
+    double periods;   /* periods printed so far */
+    double bad;       /* periods not ok */
+} move_plan;
+
+/* ---- arguments ------------------------------------------------------------ */
+
+static int move_value(const char *name, const char **slot, const char *v)
+{
+    if (*slot) return cli_usage_error("option '--%s' given more than once", name);
+    *slot = v;
+    return 0;
+}
+
+/* one valued option at argv[*k] (--name VALUE or --name=VALUE): 1 when
+ * name is not one of move's, else 0 or an exit status */
+static int move_valued(move_args *a, int argc, char **argv, int *k, int *rc)
+{
+    static const char *const names[11] = { "q0", "dt", "speed", "accel", "rspeed", "raccel", "jerk", "blend", "vmax",
+                                           "amax", "line" };
+    const char **slot[11];
+    const char *name = argv[*k] + 2, *eq = strchr(name, '=');
+    const size_t nl = eq ? (size_t)(eq - name) : strlen(name);
+    unsigned v;
+    slot[0] = &a->q0;
+    slot[1] = &a->dt;
+    slot[2] = &a->speed;
+    slot[3] = &a->accel;
+    slot[4] = &a->rspeed;
+    slot[5] = &a->raccel;
+    slot[6] = &a->jerk;
+    slot[7] = &a->blend;
+    slot[8] = &a->vmax;
+    slot[9] = &a->amax;
+    slot[10] = NULL;
+    for (v = 0; v < 11u; v++)
+        if (strlen(names[v]) == nl && strncmp(name, names[v], nl) == 0) break;
+    if (v == 11u) return 1;
+    if (!eq && *k + 1 >= argc) {
+        *rc = cli_usage_error("option '%s' needs a value", argv[*k]);
+        return 0;
+    }
+    eq = eq ? eq + 1 : argv[++*k];
+    if (v < 10u) {
+        *rc = move_value(names[v], slot[v], eq);
+        return 0;
+    }
+    if (a->nseg >= MOVE_MAX_SEG) {
+        *rc = cli_usage_error("more than 64 segments (at '%s')", argv[*k]);
+        return 0;
+    }
+    a->seg[a->nseg].kind = SEG_LINE;
+    a->seg[a->nseg].a = eq;
+    a->seg[a->nseg++].b = NULL;
+    *rc = 0;
+    return 0;
+}
+
+/* --arc VIA END and --joint LIST (no '=' form for --arc) */
+static int move_segment(move_args *a, int argc, char **argv, int *k)
+{
+    const char *arg = argv[*k];
+    const int arc = strcmp(arg, "--arc") == 0;
+    const int need = arc ? 2 : 1;
+    move_seg *s;
+    if (a->nseg >= MOVE_MAX_SEG) return cli_usage_error("more than 64 segments (at '%s')", arg);
+    s = &a->seg[a->nseg];
+    if (!arc && strncmp(arg, "--joint=", 8) == 0) {
+        s->kind = SEG_JOINT;
+        s->a = arg + 8;
+        s->b = NULL;
+        a->nseg++;
+        return 0;
+    }
+    if (*k + need >= argc)
+        return cli_usage_error(arc ? "'%s' needs two values: VIA_EXPR END_EXPR" : "option '%s' needs a value", arg);
+    s->kind = arc ? SEG_ARC : SEG_JOINT;
+    s->a = argv[++*k];
+    s->b = arc ? argv[++*k] : NULL;
+    a->nseg++;
+    return 0;
+}
+
+static int move_parse(int argc, char **argv, move_args *a)
+{
+    int k, rc = 0;
+    unsigned s;
+    memset(a, 0, sizeof *a);
+    for (k = 0; k < argc; k++) {
+        const char *arg = argv[k];
+        if (arg[0] == '-' && arg[1] == '-') {
+            if (strcmp(arg, "--fixed") == 0) {
+                if (a->fixed++) return cli_usage_error("option '%s' given more than once", arg);
+            } else if (strcmp(arg, "--arc") == 0 || strcmp(arg, "--joint") == 0 || strncmp(arg, "--joint=", 8) == 0) {
+                if ((rc = move_segment(a, argc, argv, &k)) != 0) return rc;
+            } else if (move_valued(a, argc, argv, &k, &rc)) {
+                return cli_usage_error("unknown or inapplicable option '%s'", arg);
+            } else if (rc) {
+                return rc;
+            }
+            continue;
+        }
+        if (arg[0] == '-' && arg[1] != '\0') return cli_usage_error("unknown option '%s'", arg);
+        if (a->robot) return cli_usage_error("move takes one ROBOT (extra argument '%s')", arg);
+        a->robot = arg;
+    }
+    if (!a->robot) return cli_usage_error("move needs a ROBOT file", NULL);
+    if (!a->q0) return cli_usage_error("move needs --q0 q1,... (the configuration at the start)", NULL);
+    if (!a->dt) return cli_usage_error("move needs --dt SECONDS (the control period)", NULL);
+    if (a->nseg == 0u) return cli_usage_error("move needs at least one segment: --line EXPR, --arc VIA END or --joint q1,...", NULL);
+    /* '-' (standard input) once, for the robot or one EXPR */
+    a->nstdin = strcmp(a->robot, "-") == 0;
+    for (s = 0; s < a->nseg; s++) {
+        a->nstdin += a->seg[s].kind != SEG_JOINT && strcmp(a->seg[s].a, "-") == 0;
+        a->nstdin += a->seg[s].kind == SEG_ARC && strcmp(a->seg[s].b, "-") == 0;
+    }
+    if (a->nstdin > 1) return cli_usage_error("'-' (standard input) given more than once%s", "");
+    return 0;
+}
+
+/* a Cartesian limit: finite and > 0 in float */
+static int move_limit(const char *opt, const char *s, const char *unit, float *v)
+{
+    double x = 0.0;
+    int rc;
+    if (!s) {
+        fprintf(stderr, "dhmath: error: move: a --line or --arc segment needs %s (%s)\n", opt, unit);
+        return EXIT_ERR;
+    }
+    if ((rc = cli_parse_num(s, opt, &x)) != 0) return rc;
+    if (!(x > 0.0) || !((float)x > 0.0f) || !isfinite((float)x)) {
+        fprintf(stderr, "dhmath: error: %s: %.9g must be a finite number greater than 0\n", opt, x);
+        return EXIT_ERR;
+    }
+    *v = (float)x;
+    return 0;
+}
+
+static int seg_error(unsigned i, const move_seg *s, const char *what, const char *detail)
+{
+    fprintf(stderr, "dhmath: error: segment %u (%s): %s%s%s\n", i + 1u, k_seg_opt[s->kind], what,
+            detail ? ": " : "", detail ? detail : "");
+    return EXIT_ERR;
+}
+
+/* an EXPR of segment i ("-": standard input): a rigid frame */
+static int seg_frame(unsigned i, const move_seg *s, const char *expr, const char *which, dh_mat4_f32 *T)
+{
+    dh_expr_error e;
+    if (strcmp(expr, "-") == 0) {
+        const int rc = cli_eval_expr(expr, T);
+        if (rc) return rc;
+    } else if (dh_expr_eval_f32(expr, strlen(expr), T, &e)) {
+        fprintf(stderr, "dhmath: error: segment %u (%s): %s EXPR, column %lu: %s\n", i + 1u, k_seg_opt[s->kind],
+                which, (unsigned long)(e.pos + 1), e.msg);
+        return EXIT_ERR;
+    }
+    if (dh_mat4_check_rigid_f32(T, DH_ROT_TOL) != DH_OK)
+        return seg_error(i, s, which, "not a rigid frame (rotation not orthonormal or bottom row not 0 0 0 1)");
+    return 0;
+}
+
+static const char *path_why(dh_status st)
+{
+    switch (st) {
+    case DH_ERR_SINGULAR: return "the start, via and end points are collinear or too close to it (a flatter arc is a line)";
+    case DH_ERR_OVERFLOW: return "the path or its profile overflows float (points or limits too far apart)";
+    default: return dh_status_str(st);
+    }
+}
+
+/* Plans every segment: joint lists within the limits, paths from the
+ * planned end of the previous segment, profiles within the limits. */
+static int move_plan_segments(const move_args *a, move_plan *p)
+{
+    dh_mat4_f32 F, B;
+    float qs[DH_MAX_JOINTS];
+    unsigned i, j;
+    int known = 1, rc;
+    dh_status st;
+    memcpy(qs, p->q0, sizeof qs);
+    if ((st = dh_fk_f32(&p->r, p->q0, &F)) != DH_OK) return cli_error("move: FK of --q0", dh_status_str(st));
+    for (i = 0; i < a->nseg; i++) {
+        const move_seg *s = &a->seg[i];
+        if (s->kind == SEG_JOINT) {
+            double v[DH_MAX_JOINTS];
+            char what[64];
+            (void)snprintf(what, sizeof what, "segment %u (--joint)", i + 1u);
+            if ((rc = cli_parse_list(s->a, p->r.n, v, what)) != 0) return rc;
+            for (j = 0; j < p->r.n; j++) p->q1[i][j] = (float)v[j];
+            st = dh_robot_check_limits_f32(&p->r, p->q1[i]);
+            if (st == DH_ERR_NAN) return seg_error(i, s, "a joint value is not finite in float", NULL);
+            if (st != DH_OK) return seg_error(i, s, "a joint value is outside its limits", NULL);
+            if (known) {
+                st = dh_move_joint_f32(&p->mv, p->r.n, qs, p->q1[i], p->vmax, p->amax, p->jerk ? p->jmax : NULL);
+                if (st != DH_OK) return seg_error(i, s, "the joint move cannot be planned", dh_status_str(st));
+            }
+            memcpy(qs, p->q1[i], sizeof qs);
+            known = 1;
+            if ((st = dh_fk_f32(&p->r, qs, &F)) != DH_OK) return seg_error(i, s, "FK of the end", dh_status_str(st));
+            continue;
+        }
+        if (s->kind == SEG_LINE) {
+            if ((rc = seg_frame(i, s, s->a, "end frame", &B)) != 0) return rc;
+            st = dh_path_line_f32(&p->path[i], &F, &B);
+        } else {
+            dh_mat4_f32 V;
+            float via[3];
+            if ((rc = seg_frame(i, s, s->a, "via frame", &V)) != 0) return rc;
+            if ((rc = seg_frame(i, s, s->b, "end frame", &B)) != 0) return rc;
+            via[0] = DH_M4(&V, 0, 3);
+            via[1] = DH_M4(&V, 1, 3);
+            via[2] = DH_M4(&V, 2, 3);
+            st = dh_path_arc_f32(&p->path[i], &F, via, &B);
+        }
+        if (st != DH_OK) return seg_error(i, s, "no path from the previous segment's end", path_why(st));
+        st = dh_move_path_f32(&p->mv, &p->path[i], &p->lim);
+        if (st != DH_OK) return seg_error(i, s, "the move along the path cannot be planned", path_why(st));
+        F = B;
+        known = 0;
+    }
+    return 0;
+}
+
+/* ---- periods ---------------------------------------------------------------- */
+
+static int move_line(move_plan *p, const float *q, int state)
+{
+    char text[64];
+    unsigned j;
+    if (p->periods >= MOVE_MAX_PERIODS) {
+        fprintf(stderr, "dhmath: error: move: more than %.0f control periods; use a larger --dt\n", MOVE_MAX_PERIODS);
+        return EXIT_ERR;
+    }
+    p->periods += 1.0;
+    if (state != DH_TRACK_OK) p->bad += 1.0;
+    (void)snprintf(text, sizeof text, "%.9g", p->periods * p->dt);
+    if (cli_out_add(&p->out, text)) return EXIT_ERR;
+    for (j = 0; j < p->r.n; j++) {
+        (void)snprintf(text, sizeof text, ",%.9g", q[j] == 0.0f ? 0.0 : (double)q[j]);
+        if (cli_out_add(&p->out, text)) return EXIT_ERR;
+    }
+    (void)snprintf(text, sizeof text, ",%s\n", k_state_word[state]);
+    return cli_out_add(&p->out, text);
+}
+
+/* the cap on the periods of a segment of planned duration dur */
+static double move_cap(const move_plan *p, float dur)
+{
+    return ceil((MOVE_CAP_FACTOR * (double)dur + MOVE_CAP_EXTRA) / p->dt);
+}
+
+static int cap_reached(unsigned i, const move_seg *s, double cap)
+{
+    fprintf(stderr, "dhmath: move: segment %u (%s) did not complete within %.0f control periods (%g times its "
+            "planned duration plus %g s): stopped there\n", i + 1u, k_seg_opt[s->kind], cap, MOVE_CAP_FACTOR,
+            MOVE_CAP_EXTRA);
+    return EXIT_NOCONV;
+}
+
+/* joint segment i from the configuration q (updated) */
+static int run_joint(move_plan *p, unsigned i, const move_seg *s, float *q)
+{
+    dh_move_report_f32 rep;
+    double cap, k = 0.0;
+    int rc;
+    dh_status st = dh_move_joint_f32(&p->mv, p->r.n, q, p->q1[i], p->vmax, p->amax, p->jerk ? p->jmax : NULL);
+    if (st != DH_OK) return seg_error(i, s, "the joint move cannot be planned", dh_status_str(st));
+    cap = move_cap(p, p->mv.dur);
+    do {
+        if (k >= cap) return cap_reached(i, s, cap);
+        k += 1.0;
+        st = dh_move_joint_step_f32(&p->mv, (float)p->dt, q, &rep);
+        if (st != DH_OK) return seg_error(i, s, "dh_move_joint_step_f32", dh_status_str(st));
+        if ((rc = move_line(p, q, DH_TRACK_OK)) != 0) return rc;
+    } while (!rep.done);
+    return 0;
+}
+
+/* line or arc segment i, tracked from the tracker's configuration */
+static int run_path(move_plan *p, unsigned i, const move_seg *s, float *q)
+{
+    dh_move_report_f32 rep;
+    dh_track_report_f32 trep;
+    dh_mat4_f32 T;
+    double cap, k = 0.0;
+    int rc;
+    dh_status st = dh_move_path_f32(&p->mv, &p->path[i], &p->lim);
+    if (st != DH_OK) return seg_error(i, s, "the move along the path cannot be planned", path_why(st));
+    cap = move_cap(p, p->mv.dur);
+    do {
+        if (k >= cap) return cap_reached(i, s, cap);
+        k += 1.0;
+        if ((st = dh_move_target_f32(&p->mv, &T)) == DH_OK) st = dh_track_step_f32(&p->t, &T, q, &trep);
+        if (st == DH_OK) st = dh_move_advance_f32(&p->mv, (float)p->dt, trep.state, &rep);
+        if (st != DH_OK) return seg_error(i, s, "a control period failed", dh_status_str(st));
+        if ((rc = move_line(p, q, (int)trep.state)) != 0) return rc;
+    } while (!rep.done);
+    return 0;
+}
+
+static int move_run(const move_args *a, move_plan *p)
+{
+    float q[DH_MAX_JOINTS];
+    unsigned i;
+    int tracking = 0, rc = 0;
+    memcpy(q, p->q0, sizeof q);
+    for (i = 0; i < p->r.n; i++) {
+        char text[32];
+        (void)snprintf(text, sizeof text, i == 0u ? "t,q%u" : ",q%u", i + 1u);
+        if (cli_out_add(&p->out, text)) return EXIT_ERR;
+    }
+    if (cli_out_add(&p->out, ",status\n")) return EXIT_ERR;
+    for (i = 0; i < a->nseg && rc == 0; i++) {
+        const move_seg *s = &a->seg[i];
+        if (s->kind == SEG_JOINT) {
+            rc = run_joint(p, i, s, q);
+            tracking = 0;
+            continue;
+        }
+        /* the tracker starts (again) where the robot is at rest */
+        if (!tracking && (rc = cli_track_start("move", &p->r, &p->m, q, (float)p->dt, &p->t)) != 0) return rc;
+        tracking = 1;
+        rc = run_path(p, i, s, q);
+    }
+    return rc;
+}
+
+int cli_cmd_move(int argc, char **argv)
+{
+    static move_args a;
+    static move_plan p;
+    double q0d[DH_MAX_JOINTS];
+    unsigned i, cart = 0;
+    int rc;
+    dh_status st;
+    if ((rc = move_parse(argc, argv, &a)) != 0) return rc;
+    if (a.fixed)
+        return cli_error("move --fixed", "needs a fixed-point motion API (joint moves, paths and the move executor in "
+                         "fixed point), which this library does not have yet; run move without --fixed");
+    if (a.blend)
+        return cli_error("move --blend", "needs blended corners between segments, which this library's motion.h "
+                         "does not offer yet; run move without --blend (every segment then ends at rest)");
+    for (i = 0; i < a.nseg; i++) cart += a.seg[i].kind != SEG_JOINT;
+    if (a.jerk && cart)
+        return cli_error("move --jerk", "with a --line or --arc segment needs the Cartesian jerk limits (linear and "
+                         "angular, dh_path_move_jerk_f32), for which move has no option yet; --jerk applies to "
+                         "--joint segments only");
+    memset(&p, 0, sizeof p);
+    if ((rc = cli_parse_dt(a.dt, &p.dt)) != 0) return rc;
+    if ((rc = cli_load_robot(a.robot, 0, &p.r, &p.rf)) != 0) return rc;
+    if ((rc = cli_parse_list(a.q0, p.r.n, q0d, "--q0")) != 0) return rc;
+    for (i = 0; i < p.r.n; i++) p.q0[i] = (float)q0d[i];
+    st = dh_robot_check_limits_f32(&p.r, p.q0);
+    if (st == DH_ERR_NAN) return cli_error("--q0", "a joint value is not finite in float");
+    if (st != DH_OK) return cli_error("--q0", "a joint value is outside its limits");
+    if ((rc = cli_joint_rates("move", "--vmax", a.vmax, &p.r, p.vmax)) != 0) return rc;
+    if ((rc = cli_joint_rates("move", "--amax", a.amax, &p.r, p.amax)) != 0) return rc;
+    for (i = 0; i < p.r.n; i++) {
+        st = dh_robot_set_rates_f32(&p.r, i, p.vmax[i], p.amax[i]);
+        if (st != DH_OK) return cli_error("--vmax/--amax rejected by the library", dh_status_str(st));
+    }
+    if (a.jerk) {
+        float j;
+        if ((rc = move_limit("--jerk", a.jerk, "deg/s^3", &j)) != 0) return rc;
+        for (i = 0; i < p.r.n; i++) p.jmax[i] = j;
+        p.jerk = 1;
+    }
+    if (cart) {
+        if ((rc = move_limit("--speed", a.speed, "length unit/s", &p.lim.vmax)) != 0) return rc;
+        if ((rc = move_limit("--accel", a.accel, "length unit/s^2", &p.lim.amax)) != 0) return rc;
+        if ((rc = move_limit("--rspeed", a.rspeed, "deg/s", &p.lim.wmax)) != 0) return rc;
+        if ((rc = move_limit("--raccel", a.raccel, "deg/s^2", &p.lim.wdmax)) != 0) return rc;
+    }
+    if ((rc = move_plan_segments(&a, &p)) != 0) return rc;
+    rc = move_run(&a, &p);
+    if (rc == EXIT_ERR || rc == EXIT_USAGE) {
+        free(p.out.buf);
+        return rc;
+    }
+    if (rc == 0 && p.bad > 0.0)
+        fprintf(stderr, "dhmath: move: completed with %.0f of %.0f control periods lagging or unreachable\n", p.bad,
+                p.periods);
+    if (p.out.len) fwrite(p.out.buf, 1, p.out.len, stdout);
+    free(p.out.buf);
+    if (cli_finish()) return EXIT_ERR;
+    return (rc != 0 || p.bad > 0.0) ? EXIT_NOCONV : 0;
+}
