@@ -417,8 +417,9 @@ int cli_cmd_move(int argc, char **argv)
                          "does not offer yet; run move without --blend (every segment then ends at rest)");
     for (i = 0; i < a.nseg; i++) cart += a.seg[i].kind != SEG_JOINT;
     if (a.jerk && cart)
-        return cli_error("move --jerk", "with a --line or --arc segment needs jerk-limited Cartesian moves, which "
-                         "this library's motion.h does not offer yet; --jerk applies to --joint segments only");
+        return cli_error("move --jerk", "with a --line or --arc segment needs the Cartesian jerk limits (linear and "
+                         "angular, dh_path_move_jerk_f32), for which move has no option yet; --jerk applies to "
+                         "--joint segments only");
     memset(&p, 0, sizeof p);
     if ((rc = cli_parse_dt(a.dt, &p.dt)) != 0) return rc;
     if ((rc = cli_load_robot(a.robot, 0, &p.r, &p.rf)) != 0) return rc;

@@ -7,10 +7,11 @@
  *                    dh_profile_eval_f32
  *   dh_joint_move.c  dh_joint_move_f32, dh_joint_move_eval_f32
  *   dh_path.c        dh_path_line_f32, dh_path_arc_f32, dh_path_eval_f32,
- *                    dh_path_move_f32, dh_path_move_eval_f32
+ *                    dh_path_move_f32, dh_path_move_jerk_f32,
+ *                    dh_path_move_eval_f32
  *   dh_move.c        dh_move_joint_f32, dh_move_joint_step_f32,
- *                    dh_move_path_f32, dh_move_target_f32,
- *                    dh_move_advance_f32
+ *                    dh_move_path_f32, dh_move_path_jerk_f32,
+ *                    dh_move_target_f32, dh_move_advance_f32
  */
 /**
  * @file motion.h
@@ -369,10 +370,48 @@ typedef struct {
 dh_status dh_path_move_f32(dh_profile_f32 *prof, const dh_path_f32 *p, const dh_cart_limits_f32 *lim);
 
 /**
+ * @brief Jerk limits of a Cartesian move (dh_path_move_jerk_f32):
+ *        magnitudes of the tool point's TOTAL jerk |d^3 p / dt^3| and of
+ *        the tool's angular jerk.
+ */
+typedef struct {
+    float jmax;  /**< linear jerk, total: |d^3 p / dt^3| (length unit / s^3) */
+    float wjmax; /**< angular jerk (deg/s^3) */
+} dh_cart_jerk_f32;
+
+/**
+ * @brief prof = the time-optimal scaling of s from 0 to 1 along the path p
+ *        within lim and the jerk limits jerk: the seven-phase profile
+ *        (dh_profile_scurve_f32 of d = 1) with s' and s'' bounded as in
+ *        dh_path_move_f32 and s''' <= min(Jt / length, wjmax / angle).
+ *        On a line V, At as dh_path_move_f32 and Jt = jmax. On an arc of
+ *        radius R the tool point's jerk is (x''' - x'^3 / R^2) t +
+ *        (3 x' x'' / R) n (x the arc length), so V = min(vmax,
+ *        sqrt(amax R / sqrt 2), cbrt(jmax R^2 / 4)), At = min(
+ *        sqrt(amax^2 - (V^2 / R)^2), jmax R / (12 V)), Jt = jmax / 2: the
+ *        TOTAL jerk is at most jmax and the total acceleration at most amax.
+ * @param prof output (kind DH_PROFILE_SCURVE; d = 0 and T = 0 when length
+ *        and angle are 0).
+ * @param p path from dh_path_line_f32 or dh_path_arc_f32.
+ * @param lim limits, each finite and > 0.
+ * @param jerk jerk limits, each finite and > 0; NULL: no jerk limit, prof
+ *        is that of dh_path_move_f32 (a trapezoid) bit for bit.
+ * Speed, acceleration, jerk and angular rates within their limits up to
+ * float rounding (1e-6 relative).
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf limit; DH_ERR_ARG for a limit
+ *         <= 0; DH_ERR_OVERFLOW when a limit of s or the profile is not
+ *         a positive finite float. On error *prof is all zero (as
+ *         dh_path_move_f32).
+ */
+dh_status dh_path_move_jerk_f32(dh_profile_f32 *prof, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                const dh_cart_jerk_f32 *jerk);
+
+/**
  * @brief T = the frame of the move (prof, p) at time t: dh_path_eval_f32
  *        at s = the profile's position; v = the tool point's speed
  *        p->length * ds/dt (>= 0).
- * @param prof, p the move of dh_path_move_f32 and its path.
+ * @param prof, p the move of dh_path_move_f32 or dh_path_move_jerk_f32
+ *        and its path.
  * @param t time (s), any value but NaN (clamped as dh_profile_eval_f32):
  *        t <= 0 gives p->A and t >= prof->T gives p->B bit for bit; a
  *        profile with d == 0 (no motion, or a failed call) keeps p->A.
@@ -486,6 +525,25 @@ dh_status dh_move_joint_step_f32(dh_move_f32 *mv, float dt, float *q, dh_move_re
 dh_status dh_move_path_f32(dh_move_f32 *mv, const dh_path_f32 *p, const dh_cart_limits_f32 *lim);
 
 /**
+ * @brief Starts a jerk-limited Cartesian move along the path p within lim
+ *        and jerk (dh_path_move_jerk_f32), executed as a move of
+ *        dh_move_path_f32 (dh_move_target_f32, dh_move_advance_f32; the
+ *        same start and holding of the clock).
+ * @param mv output move (kind DH_MOVE_PATH, clock 0, dur the profile's T;
+ *        p copied).
+ * @param p path from dh_path_line_f32 or dh_path_arc_f32.
+ * @param lim Cartesian limits, each finite and > 0.
+ * @param jerk jerk limits, each finite and > 0; NULL: the move of
+ *        dh_move_path_f32.
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf limit; DH_ERR_ARG for a limit
+ *         <= 0 or a p that holds no path (as dh_path_eval_f32);
+ *         DH_ERR_OVERFLOW as dh_path_move_jerk_f32. On error mv holds no
+ *         move (as dh_move_joint_f32).
+ */
+dh_status dh_move_path_jerk_f32(dh_move_f32 *mv, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                const dh_cart_jerk_f32 *jerk);
+
+/**
  * @brief T = the frame to track this period: the path's frame at the
  *        move's clock (dh_path_move_eval_f32), p->A at clock 0, p->B bit
  *        for bit once the clock is at dur.
@@ -494,7 +552,7 @@ dh_status dh_move_path_f32(dh_move_f32 *mv, const dh_path_f32 *p, const dh_cart_
  * and the profile's rounding, motion.h above), and while the clock holds
  * it does not move: the target is never more than one period of the move
  * beyond the last frame the tracker reported OK at.
- * @param mv move from dh_move_path_f32.
+ * @param mv move from dh_move_path_f32 or dh_move_path_jerk_f32.
  * @param T output frame.
  * @return DH_OK; DH_ERR_ARG for an mv that holds no path move (written by
  *         no constructor, a failed one, or dh_move_joint_f32): T untouched.
@@ -513,7 +571,7 @@ dh_status dh_move_target_f32(const dh_move_f32 *mv, dh_mat4_f32 *T);
  *   the robot; a stretch the joints cannot follow at the move's speed is
  *   covered in bursts, and an unreachable one stops the move there (the
  *   caller sees held, and the clock not advancing, every period).
- * @param mv move from dh_move_path_f32.
+ * @param mv move from dh_move_path_f32 or dh_move_path_jerk_f32.
  * @param dt control period (s), finite, > 0 (the tracker's dt).
  * @param state the tracker's state this period, a dh_track_state value.
  * @param rep report: clock after the call, held, done.

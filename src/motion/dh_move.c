@@ -93,12 +93,13 @@ dh_status dh_move_joint_step_f32(dh_move_f32 *mv, float dt, float *q, dh_move_re
     return DH_OK;
 }
 
-dh_status dh_move_path_f32(dh_move_f32 *mv, const dh_path_f32 *p, const dh_cart_limits_f32 *lim)
+dh_status dh_move_path_jerk_f32(dh_move_f32 *mv, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                const dh_cart_jerk_f32 *jerk)
 {
     dh_status st;
     DH_ASSERT(mv != NULL && p != NULL && lim != NULL);
     mv->kind = (uint32_t)DH_MOVE_NONE;
-    st = dh_path_move_f32(&mv->prof[0], p, lim);
+    st = dh_path_move_jerk_f32(&mv->prof[0], p, lim, jerk);
     if (st != DH_OK) return st;
     if (!dh_motion_path_ok_f32_(p)) return DH_ERR_ARG;
     mv->path = *p;
@@ -107,6 +108,12 @@ dh_status dh_move_path_f32(dh_move_f32 *mv, const dh_path_f32 *p, const dh_cart_
     mv->clock = 0.0f;
     mv->kind = (uint32_t)DH_MOVE_PATH;
     return DH_OK;
+}
+
+dh_status dh_move_path_f32(dh_move_f32 *mv, const dh_path_f32 *p, const dh_cart_limits_f32 *lim)
+{
+    DH_ASSERT(mv != NULL && p != NULL && lim != NULL);
+    return dh_move_path_jerk_f32(mv, p, lim, NULL);
 }
 
 /* dh_path_move_eval_f32's frame at the clock, from its two steps (the

@@ -38,6 +38,20 @@
  * held to V = min(vmax, sqrt(amax R / sqrt 2)), so the centripetal
  * acceleration is at most amax / sqrt 2, and the tangential one to
  * sqrt(amax^2 - (V^2/R)^2): the total stays within amax.
+ *
+ * A jerk-limited move scales s by one seven-phase profile
+ * (dh_profile_scurve_f32) whose jerk bound is also held. On a line the
+ * tool point's jerk is length * s''' and the tool's angular jerk
+ * angle * s''' (the rotation turns about a fixed axis). On an arc, with
+ * the arc length x = length * s, the tool point's jerk is
+ * (x''' - x'^3 / R^2) t + (3 x' x'' / R) n (t the unit tangent, n the unit
+ * normal towards the centre), so its magnitude is at most
+ * |x'''| + x'^3 / R^2 + 3 x' |x''| / R. The speed is further held to
+ * V <= cbrt(jmax R^2 / 4) (then x'^3 / R^2 <= jmax / 4), the tangential
+ * acceleration At, taken from that V as above, to At <= jmax R / (12 V)
+ * (then 3 x' |x''| / R <= jmax / 4) and the tangential jerk to jmax / 2:
+ * the total jerk stays within jmax, and the total acceleration within
+ * amax as before.
  */
 #include <float.h>
 #include <math.h>
@@ -50,6 +64,7 @@
 #define PATH_2PI 6.283185307179586f
 #define PATH_THIN 9.765625e-4f        /* 2^-10: the thinnest triangle of an arc */
 #define PATH_RSQRT2 0.70710678118654752f
+#define PATH_TWELFTH 0.0833333358f     /* 1/12: an arc's 3 V At / R held to jmax / 4 */
 
 /* |v| without overflow or underflow of the squares: max |v_i| times the
  * norm of v / max |v_i| (0 for v == 0; +Inf when |v| overflows) */
@@ -315,47 +330,92 @@ static dh_status path_bound(float *sl, float num, float den)
     return DH_OK;
 }
 
-/* The speed and acceleration bounds of s for the path p within lim */
-static dh_status path_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, float *vs, float *as)
+/* The speed and tangential acceleration of the arc p's tool point within
+ * lim (and within jk's jmax when jk is not NULL), lowering *V and setting
+ * *At; with jk, the tangential jerk bound into *Jt */
+static void path_arc_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk,
+                           float *V, float *At, float *Jt)
 {
-    float V = lim->vmax, At = lim->amax, r;
-    dh_status st;
-    if (p->kind == (uint32_t)DH_PATH_ARC && p->radius > 0.0f) {
-        r = dh_sqrt_f32(lim->amax * PATH_RSQRT2 * p->radius);
-        if (r < V) V = r;
-        r = (V / lim->amax) * (V / p->radius);   /* centripetal / amax <= 1/sqrt 2 */
-        At = lim->amax * dh_sqrt_f32(1.0f - r * r);
+    float R = p->radius, r;
+    r = dh_sqrt_f32(lim->amax * PATH_RSQRT2 * R);
+    if (r < *V) *V = r;
+    if (jk != NULL) {
+        r = dh_motion_root_f32_(0.25f * jk->jmax, R, 1) * R;   /* cbrt(jmax R^2 / 4) */
+        if (r < *V) *V = r;
     }
-    *vs = 0.0f;
-    *as = 0.0f;
-    st = path_bound(vs, V, p->length);
-    if (st == DH_OK) st = path_bound(vs, lim->wmax, p->angle);
-    if (st == DH_OK) st = path_bound(as, At, p->length);
-    if (st == DH_OK) st = path_bound(as, lim->wdmax, p->angle);
-    if (st == DH_OK && (!(*vs > 0.0f) || !(*as > 0.0f))) st = DH_ERR_OVERFLOW;
+    r = (*V / lim->amax) * (*V / R);   /* centripetal / amax <= 1/sqrt 2 */
+    *At = lim->amax * dh_sqrt_f32(1.0f - r * r);
+    if (jk != NULL) {
+        r = (jk->jmax * PATH_TWELFTH) * (R / *V);
+        if (r < *At) *At = r;
+        *Jt = 0.5f * jk->jmax;
+    }
+}
+
+/* The speed, acceleration and (jk != NULL) jerk bounds of s for the path
+ * p within lim and jk, into b[0], b[1], b[2] */
+static dh_status path_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk,
+                            float b[3])
+{
+    float V = lim->vmax, At = lim->amax, Jt = (jk != NULL) ? jk->jmax : 0.0f;
+    dh_status st;
+    if (p->kind == (uint32_t)DH_PATH_ARC && p->radius > 0.0f) path_arc_rates(p, lim, jk, &V, &At, &Jt);
+    b[0] = 0.0f;
+    b[1] = 0.0f;
+    b[2] = 0.0f;
+    st = path_bound(&b[0], V, p->length);
+    if (st == DH_OK) st = path_bound(&b[0], lim->wmax, p->angle);
+    if (st == DH_OK) st = path_bound(&b[1], At, p->length);
+    if (st == DH_OK) st = path_bound(&b[1], lim->wdmax, p->angle);
+    if (st == DH_OK && (!(b[0] > 0.0f) || !(b[1] > 0.0f))) st = DH_ERR_OVERFLOW;
+    if (jk != NULL) {
+        if (st == DH_OK) st = path_bound(&b[2], Jt, p->length);
+        if (st == DH_OK) st = path_bound(&b[2], jk->wjmax, p->angle);
+        if (st == DH_OK && !(b[2] > 0.0f)) st = DH_ERR_OVERFLOW;
+    }
+    return st;
+}
+
+/* the status of the limits lim and jk (NULL: none): DH_ERR_NAN for a
+ * NaN/Inf one, DH_ERR_ARG for one <= 0 */
+static dh_status path_limits_ok(const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk)
+{
+    if (!dh_isfinite_f32(lim->vmax) || !dh_isfinite_f32(lim->amax) || !dh_isfinite_f32(lim->wmax) ||
+        !dh_isfinite_f32(lim->wdmax)) {
+        return DH_ERR_NAN;
+    }
+    if (jk != NULL && (!dh_isfinite_f32(jk->jmax) || !dh_isfinite_f32(jk->wjmax))) return DH_ERR_NAN;
+    if (!(lim->vmax > 0.0f) || !(lim->amax > 0.0f) || !(lim->wmax > 0.0f) || !(lim->wdmax > 0.0f)) {
+        return DH_ERR_ARG;
+    }
+    if (jk != NULL && (!(jk->jmax > 0.0f) || !(jk->wjmax > 0.0f))) return DH_ERR_ARG;
+    return DH_OK;
+}
+
+dh_status dh_path_move_jerk_f32(dh_profile_f32 *prof, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                const dh_cart_jerk_f32 *jerk)
+{
+    static const dh_profile_f32 no_move = { 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0u };
+    float b[3] = { 1.0f, 1.0f, 1.0f }, d = 1.0f;
+    dh_status st;
+    DH_ASSERT(prof != NULL && p != NULL && lim != NULL);
+    st = path_limits_ok(lim, jerk);
+    if (st == DH_OK && (p->length > 0.0f || p->angle > 0.0f)) {
+        st = path_rates(p, lim, jerk, b);
+    } else {
+        d = 0.0f;                     /* length and angle 0 (or an error): T = 0 */
+    }
+    if (st == DH_OK && jerk != NULL) st = dh_profile_scurve_f32(prof, d, b[0], b[1], b[2]);
+    if (st == DH_OK && jerk == NULL) st = dh_profile_trap_f32(prof, d, b[0], b[1]);
+    /* on error the frame stays at A: no move, duration 0 */
+    if (st != DH_OK) *prof = no_move;
     return st;
 }
 
 dh_status dh_path_move_f32(dh_profile_f32 *prof, const dh_path_f32 *p, const dh_cart_limits_f32 *lim)
 {
-    static const dh_profile_f32 no_move = { 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0u };
-    float vs = 1.0f, as = 1.0f, d = 1.0f;
-    dh_status st = DH_OK;
     DH_ASSERT(prof != NULL && p != NULL && lim != NULL);
-    if (!dh_isfinite_f32(lim->vmax) || !dh_isfinite_f32(lim->amax) || !dh_isfinite_f32(lim->wmax) ||
-        !dh_isfinite_f32(lim->wdmax)) {
-        st = DH_ERR_NAN;
-    } else if (!(lim->vmax > 0.0f) || !(lim->amax > 0.0f) || !(lim->wmax > 0.0f) || !(lim->wdmax > 0.0f)) {
-        st = DH_ERR_ARG;
-    } else if (p->length > 0.0f || p->angle > 0.0f) {
-        st = path_rates(p, lim, &vs, &as);
-    } else {
-        d = 0.0f;                     /* length and angle 0: T = 0 */
-    }
-    if (st == DH_OK) st = dh_profile_trap_f32(prof, d, vs, as);
-    /* on error the frame stays at A: no move, duration 0 */
-    if (st != DH_OK) *prof = no_move;
-    return st;
+    return dh_path_move_jerk_f32(prof, p, lim, NULL);
 }
 
 dh_status dh_path_move_eval_f32(const dh_profile_f32 *prof, const dh_path_f32 *p, float t, dh_mat4_f32 *T,

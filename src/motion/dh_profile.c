@@ -29,6 +29,7 @@
 
 #include "dhmath/motion.h"
 #include "../internal/dh_floatops.h"
+#include "motion_impl.h"
 
 /* v (> 0, finite) brought into [2^-60, 2^60] by at most two exact factors
  * 2^+-60 (float spans 2^-149 .. 2^128), *f multiplied by r for each
@@ -58,7 +59,7 @@ static float profile_scale(float v, float r, float *f)
  * then a normal float. The cube root: a first guess from the exponent bits
  * (within 4 %), four Newton steps y <- (2y + x/y^2)/3, each of which
  * squares the relative error. */
-static float profile_root(float n, float m, int cube)
+float dh_motion_root_f32_(float n, float m, int cube)
 {
     const float s = cube ? 1048576.0f : 1073741824.0f;   /* 2^20 or 2^30 */
     float f = 1.0f, x, y;
@@ -137,7 +138,7 @@ dh_status dh_profile_trap_f32(dh_profile_f32 *p, float d, float vmax, float amax
     if (D / vmax >= ta) {   /* |d| >= vmax^2 / amax: vmax reached */
         tv = D / vmax - ta;
     } else {
-        ta = profile_root(D, amax, 0);
+        ta = dh_motion_root_f32_(D, amax, 0);
         tv = 0.0f;
     }
     return profile_finish(p, d, 0.0f, ta, tv, 2.0f * ta + tv, vmax, amax, 0.0f, DH_PROFILE_TRAP);
@@ -161,7 +162,7 @@ dh_status dh_profile_scurve_f32(dh_profile_f32 *p, float d, float vmax, float am
         tj = tA;
         ta = tj + vmax / amax;
     } else {
-        tj = profile_root(vmax, jmax, 0);
+        tj = dh_motion_root_f32_(vmax, jmax, 0);
         ta = 2.0f * tj;
     }
     tv = D / vmax - ta;
@@ -171,7 +172,7 @@ dh_status dh_profile_scurve_f32(dh_profile_f32 *p, float d, float vmax, float am
             tj = tA;
             ta = 0.5f * tj + dh_sqrt_f32(0.25f * tj * tj + D / amax);
         } else {
-            tj = 0.7937005259840998f * profile_root(D, jmax, 1); /* cbrt(1/2) */
+            tj = 0.7937005259840998f * dh_motion_root_f32_(D, jmax, 1); /* cbrt(1/2) */
             ta = 2.0f * tj;
         }
     }

@@ -5,7 +5,8 @@
  * their end frames and call the slerp of dh_interp.c directly, without
  * dh_pose_interp_f32's checks and conversions, to stay within the 256 B
  * stack budget; the move executor (dh_move.c) checks a path with the
- * test of dh_path.c.
+ * test of dh_path.c; the jerk bound of an arc (dh_path.c) takes the
+ * profiles' cube root.
  */
 #ifndef DHMATH_SRC_MOTION_IMPL_H
 #define DHMATH_SRC_MOTION_IMPL_H
@@ -24,5 +25,10 @@ void dh_motion_slerp_f32_(const dh_quat_f32 *qa, const dh_quat_f32 *qb, float s,
  * dh_path_line_f32 / dh_path_arc_f32 write them), 0 when not (e.g. all
  * zero); the test of dh_path_eval_f32's DH_ERR_ARG (dh_path.c) */
 int dh_motion_path_ok_f32_(const dh_path_f32 *p);
+
+/* The square root (cube == 0) or the cube root (cube == 1) of n / m for
+ * finite n >= 0, m > 0 (0 for n == 0), without underflow or overflow of
+ * the quotient (dh_profile.c); the jerk bound of an arc (dh_path.c) */
+float dh_motion_root_f32_(float n, float m, int cube);
 
 #endif /* DHMATH_SRC_MOTION_IMPL_H */

@@ -1709,7 +1709,7 @@ def group_move(seed, tmp):
         ([path] + q0 + ['--dt', '0.01'] + cart + ['--arc', 'ident'], "'--arc' needs two values"),
         ([path] + q0 + ['--dt', '0.01', '--jerk', '0'] + jt, '--jerk: 0 must be'),
         ([path] + q0 + ['--dt', '0.01', '--jerk', '1000'] + cart + ln, 'move --jerk: with a --line or --arc segment '
-                                                                       'needs jerk-limited Cartesian moves'),
+                                                                       'needs the Cartesian jerk limits'),
         ([path] + q0 + ['--dt', '0.01', '--blend', '0.01'] + cart + ln + ln, 'move --blend: needs blended corners'),
         ([path] + q0 + ['--dt', '0.01', '--fixed'] + jt, 'move --fixed: needs a fixed-point motion API'),
         ([path] + q0 + ['--dt', '0.01', '--dt', '0.02'] + jt, "option '--dt' given more than once"),

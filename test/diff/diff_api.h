@@ -232,10 +232,12 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_path_arc_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_path_eval_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_path_move_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_path_move_jerk_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_path_move_eval_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_move_joint_f32, g_motion, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_move_joint_step_f32, g_motion, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_move_path_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_move_path_jerk_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_move_target_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_move_advance_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_track_init_f32, g_robot, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS) \

@@ -824,6 +824,8 @@ static void g_path(diff_in *in)
     for (i = 0; i < 3; i++) in->f[i] = rn(16u) ? (float)rd(-s, s) : f_gen(s);
     in->f[3] = s_gen();
     for (i = 4; i < 8; i++) in->f[i] = lim_gen();
+    in->q[0] = lim_gen();                    /* jerk limits */
+    in->q[1 % DH_MAX_JOINTS] = lim_gen();
     in->q[2 % DH_MAX_JOINTS] = frac_gen();
 }
 static void g_ikc(diff_in *in)

@@ -26,6 +26,15 @@
  * least number of periods for which that rounding is at most 2.5e-4 of
  * the limit, and the difference must stay within the limit times
  * 1 + 1e-3.
+ * Jerk-limited moves (dh_path_move_jerk_f32): the bounds of s written
+ * here in double from motion.h's formulas (an arc's V, At, Jt from amax,
+ * jmax and R), the seven-phase profile's minimum duration for them
+ * (Biagiotti & Melchiorri 2008, 3.4), and the same finite differences
+ * plus the third ones (8 samples' noise) of the position vector (the
+ * TOTAL jerk) and of the rotation angle against jmax and wjmax. Without
+ * jerk limits the functions are the trapezoid's bit for bit; the executor
+ * (dh_move_path_jerk_f32) targets the move's frame at its clock; every
+ * status of a bad jerk limit empties the profile and the move.
  */
 #include <float.h>
 #include <math.h>
@@ -332,40 +341,88 @@ static double trap_tmin(double d, double v, double a)
     return (d >= v * v / a) ? d / v + v / a : 2.0 * sqrt(d / a);
 }
 
-/* the documented bounds of s for the reference path r within lim, in
- * double; *rel the relative error of the float path's length, radius and
- * angle they inherit */
-static void ref_rates(const ref_path *r, const dh_cart_limits_f32 *lim, double *vs, double *as, double *rel)
+/* the seven-phase profile's minimum duration for distance d within v, a, j */
+static double scurve_tmin(double d, double v, double a, double j)
 {
-    double V = lim->vmax, At = lim->amax, q;
-    *vs = HUGE_VAL;
-    *as = HUGE_VAL;
+    double tj, ta, tv;
+    if (v * j >= a * a) {            /* amax reached on the way to vmax */
+        tj = a / j;
+        ta = tj + v / a;
+    } else {
+        tj = sqrt(v / j);
+        ta = 2.0 * tj;
+    }
+    tv = d / v - ta;
+    if (tv < 0.0) {                  /* vmax not reached */
+        tv = 0.0;
+        if (d >= 2.0 * a * a * a / (j * j)) {
+            tj = a / j;
+            ta = 0.5 * tj + sqrt(0.25 * tj * tj + d / a);
+        } else {
+            tj = cbrt(d / (2.0 * j));
+            ta = 2.0 * tj;
+        }
+    }
+    return 2.0 * ta + tv;
+}
+
+/* the documented bounds of s (b[0] speed, b[1] acceleration, b[2] jerk,
+ * HUGE_VAL without jk) for the reference path r within lim and jk (NULL:
+ * no jerk limit), in double; *rel the relative error of the float path's
+ * length, radius and angle they inherit */
+static void ref_rates(const ref_path *r, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk, double b[3],
+                      double *rel)
+{
+    double V = lim->vmax, At = lim->amax, Jt = jk ? jk->jmax : HUGE_VAL, q;
+    int i;
+    for (i = 0; i < 3; i++) b[i] = HUGE_VAL;
     *rel = 16.0 * EPS;
     if (r->arc) {
         q = sqrt(lim->amax * r->R / sqrt(2.0));
         if (q < V) V = q;
+        if (jk) {
+            q = cbrt(jk->jmax * r->R * r->R / 4.0);
+            if (q < V) V = q;
+        }
         q = V * V / r->R / lim->amax;
         At = lim->amax * sqrt(1.0 - q * q);
+        if (jk) {
+            q = jk->jmax * r->R / (12.0 * V);
+            if (q < At) At = q;
+            Jt = 0.5 * jk->jmax;
+        }
         *rel += r->E / r->R;
     }
     if (r->len > 0.0) {
-        *vs = V / r->len;
-        *as = At / r->len;
+        b[0] = V / r->len;
+        b[1] = At / r->len;
+        b[2] = Jt / r->len;
         *rel += 9.0 * r->E / r->len;
     }
     if (r->theta > 0.0) {
-        if (lim->wmax / r->theta < *vs) *vs = lim->wmax / r->theta;
-        if (lim->wdmax / r->theta < *as) *as = lim->wdmax / r->theta;
+        if (lim->wmax / r->theta < b[0]) b[0] = lim->wmax / r->theta;
+        if (lim->wdmax / r->theta < b[1]) b[1] = lim->wdmax / r->theta;
+        if (jk && jk->wjmax / r->theta < b[2]) b[2] = jk->wjmax / r->theta;
         *rel += 1e-4 / r->theta;
     }
 }
 
+/* the finite difference of the given order (1 to 3) of the samples y[0..order] */
+static double fd_of(const double *y, int order)
+{
+    switch (order) {
+    case 1: return y[1] - y[0];
+    case 2: return y[2] - 2.0 * y[1] + y[0];
+    default: return y[3] - 3.0 * y[2] + 3.0 * y[1] - y[0];
+    }
+}
+
 /* the largest ratio of a finite difference to its limit over windows of w
- * periods: order 1 (speed) or 2 (acceleration) of the position (ang 0) or
- * of the rotation angle from A (ang 1) */
+ * periods: order 1 (speed), 2 (acceleration) or 3 (jerk) of the position
+ * (ang 0) or of the rotation angle from A (ang 1) */
 static double fd_ratio(const dh_profile_f32 *prof, const dh_path_f32 *p, int order, int ang, long w, double lim)
 {
-    double worst = 0.0, h = 1.0 / HZ, x[3][3], th[3], f, d;
+    double worst = 0.0, h = 1.0 / HZ, x[3][4], th[4], f, d;
     long k, kend = (long)ceil((double)prof->T * HZ) + 2;
     int j, i;
     for (k = -w; k <= kend; k++) {
@@ -373,20 +430,20 @@ static double fd_ratio(const dh_profile_f32 *prof, const dh_path_f32 *p, int ord
             dh_mat4_f32 T;
             float v;
             DHT_EQ_INT(dh_path_move_eval_f32(prof, p, (float)((double)(k + j * w) * h), &T, &v), DH_OK);
-            for (i = 0; i < 3; i++) x[j][i] = DH_M4(&T, i, 3);
+            for (i = 0; i < 3; i++) x[i][j] = DH_M4(&T, i, 3);
             th[j] = ang ? rot_angle(&p->A, &T) : 0.0;
         }
         f = 0.0;
         if (ang) {
-            f = (order == 1) ? fabs(th[1] - th[0]) : fabs(th[2] - 2.0 * th[1] + th[0]);
+            f = fabs(fd_of(th, order));
         } else {
             for (i = 0; i < 3; i++) {
-                d = (order == 1) ? x[1][i] - x[0][i] : x[2][i] - 2.0 * x[1][i] + x[0][i];
+                d = fd_of(x[i], order);
                 f += d * d;
             }
             f = sqrt(f);
         }
-        f /= (order == 1) ? (double)w * h : ((double)w * h) * ((double)w * h);
+        f /= pow((double)w * h, order);
         if (f / lim > worst) worst = f / lim;
     }
     return worst;
@@ -397,29 +454,38 @@ static double fd_ratio(const dh_profile_f32 *prof, const dh_path_f32 *p, int ord
  * NOISE_FRAC of lim */
 static long fd_window(double noise, int order, double lim)
 {
-    double wh = (order == 1) ? 2.0 * noise / (NOISE_FRAC * lim) : sqrt(4.0 * noise / (NOISE_FRAC * lim));
+    /* the difference of order k sums 2^k samples' noise */
+    double wh = pow(ldexp(noise, order) / (NOISE_FRAC * lim), 1.0 / order);
     long w = (long)ceil(wh * HZ);
     return (w < 2) ? 2 : w;
 }
 
-/* the largest finite-difference ratios seen: speed, acceleration, angular speed, angular acceleration */
-static double fd_worst[4];
+/* the largest finite-difference ratios seen: speed, acceleration, jerk,
+ * angular speed, angular acceleration, angular jerk */
+static double fd_worst[6];
 
 static void fd_note(int i, double wr)
 {
     if (wr > fd_worst[i]) fd_worst[i] = wr;
 }
 
-static void move_check(const dh_path_f32 *p, const ref_path *r, const dh_cart_limits_f32 *lim)
+/* a move (jerk-limited when jk != NULL) of p against its reference r:
+ * the minimum duration, exact ends, the limits by finite differences */
+static void move_check(const dh_path_f32 *p, const ref_path *r, const dh_cart_limits_f32 *lim,
+                       const dh_cart_jerk_f32 *jk)
 {
     dh_profile_f32 prof;
     dh_mat4_f32 T;
-    double vs, as, rel, Tref, noise, wr;
+    double b[3], rel, Tref, noise, wr, plim[3], alim[3];
     float v;
     long w;
-    DHT_EQ_INT(dh_path_move_f32(&prof, p, lim), DH_OK);
-    ref_rates(r, lim, &vs, &as, &rel);
-    Tref = trap_tmin(1.0, vs, as);
+    int k, top = jk ? 3 : 2;
+    DHT_EQ_INT(dh_path_move_jerk_f32(&prof, p, lim, jk), DH_OK);
+    DHT_EQ_INT((int)prof.kind, jk ? DH_PROFILE_SCURVE : DH_PROFILE_TRAP);
+    ref_rates(r, lim, jk, b, &rel);
+    /* the seven-phase profile adds 8 roundings of its own (motion.h) */
+    if (jk) rel += 8.0 * EPS;
+    Tref = jk ? scurve_tmin(1.0, b[0], b[1], b[2]) : trap_tmin(1.0, b[0], b[1]);
     DHT_TRUE_MSG(fabs(prof.T - Tref) <= rel * Tref, "T %.9g vs the minimum %.9g (rel %.3g)", (double)prof.T, Tref, rel);
     /* exact ends, at rest */
     DHT_EQ_INT(dh_path_move_eval_f32(&prof, p, 0.0f, &T, &v), DH_OK);
@@ -429,74 +495,223 @@ static void move_check(const dh_path_f32 *p, const ref_path *r, const dh_cart_li
     DHT_EQ_INT(dh_path_move_eval_f32(&prof, p, 0.5f * prof.T, &T, &v), DH_OK);
     DHT_TRUE(v > 0.0f || r->len == 0.0);
     DHT_TRUE(v <= lim->vmax * (1.0f + 1e-6f));
-    /* limits by finite differences */
+    /* limits by finite differences: speed, TOTAL acceleration, TOTAL jerk */
+    plim[0] = lim->vmax;
+    plim[1] = lim->amax;
+    plim[2] = jk ? jk->jmax : 0.0;
+    alim[0] = lim->wmax;
+    alim[1] = lim->wdmax;
+    alim[2] = jk ? jk->wjmax : 0.0;
     noise = 4.0 * dhr_ulp_f32(fmax(r->S, 2.0 * r->R));
-    if (r->len > 0.0) {
-        w = fd_window(noise, 1, lim->vmax);
-        wr = fd_ratio(&prof, p, 1, 0, w, lim->vmax);
-        fd_note(0, wr);
-        DHT_TRUE_MSG(wr <= 1.0 + REL_FD, "speed %.9g x vmax (window %ld ms)", wr, w);
-        w = fd_window(noise, 2, lim->amax);
-        wr = fd_ratio(&prof, p, 2, 0, w, lim->amax);
-        fd_note(1, wr);
-        DHT_TRUE_MSG(wr <= 1.0 + REL_FD, "acceleration %.9g x amax (window %ld ms)", wr, w);
+    for (k = 1; k <= top && r->len > 0.0; k++) {
+        w = fd_window(noise, k, plim[k - 1]);
+        wr = fd_ratio(&prof, p, k, 0, w, plim[k - 1]);
+        fd_note(k - 1, wr);
+        DHT_TRUE_MSG(wr <= 1.0 + REL_FD, "linear derivative %d: %.9g x its limit (window %ld ms)", k, wr, w);
     }
-    if (r->theta > 0.0) {
-        noise = 3.4e-4;
-        w = fd_window(noise, 1, lim->wmax);
-        wr = fd_ratio(&prof, p, 1, 1, w, lim->wmax);
-        fd_note(2, wr);
-        DHT_TRUE_MSG(wr <= 1.0 + REL_FD, "angular speed %.9g x wmax (window %ld ms)", wr, w);
-        w = fd_window(noise, 2, lim->wdmax);
-        wr = fd_ratio(&prof, p, 2, 1, w, lim->wdmax);
-        fd_note(3, wr);
-        DHT_TRUE_MSG(wr <= 1.0 + REL_FD, "angular acceleration %.9g x wdmax (window %ld ms)", wr, w);
+    for (k = 1; k <= top && r->theta > 0.0; k++) {
+        w = fd_window(3.4e-4, k, alim[k - 1]);
+        wr = fd_ratio(&prof, p, k, 1, w, alim[k - 1]);
+        fd_note(k + 2, wr);
+        DHT_TRUE_MSG(wr <= 1.0 + REL_FD, "angular derivative %d: %.9g x its limit (window %ld ms)", k, wr, w);
     }
+}
+
+/* the executor on the move (prof, p): dh_move_path_jerk_f32 holds prof;
+ * each period's target is the move's frame at the clock bit for bit; a
+ * LAGGING period every 7th holds the clock and the target; done only at
+ * the end, with the target at B */
+static void move_run(const dh_profile_f32 *prof, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                     const dh_cart_jerk_f32 *jk)
+{
+    dh_move_f32 mv;
+    dh_move_report_f32 rep;
+    dh_mat4_f32 T, E;
+    float v, c;
+    long k, oks = 0, nmax = (long)ceil((double)prof->T * HZ) + 1;
+    DHT_EQ_INT(dh_move_path_jerk_f32(&mv, p, lim, jk), DH_OK);
+    DHT_TRUE(memcmp(&mv.prof[0], prof, sizeof *prof) == 0 && mv.dur == prof->T && mv.clock == 0.0f);
+    for (k = 0; k < 2 * nmax; k++) {
+        DHT_EQ_INT(dh_move_target_f32(&mv, &T), DH_OK);
+        DHT_EQ_INT(dh_path_move_eval_f32(prof, p, mv.clock, &E, &v), DH_OK);
+        DHT_TRUE(memcmp(&T, &E, sizeof T) == 0);
+        c = mv.clock;
+        if (k % 7 == 3) {
+            DHT_EQ_INT(dh_move_advance_f32(&mv, (float)(1.0 / HZ), DH_TRACK_LAGGING, &rep), DH_OK);
+            DHT_TRUE(rep.held == 1 && rep.done == 0 && rep.clock == c && mv.clock == c);
+            continue;
+        }
+        DHT_EQ_INT(dh_move_advance_f32(&mv, (float)(1.0 / HZ), DH_TRACK_OK, &rep), DH_OK);
+        DHT_TRUE(rep.held == 0);
+        if (rep.done) break;
+        oks++;
+    }
+    /* the clock reaches dur after about T / dt OK periods (its float sum
+     * may take one more or one less) */
+    DHT_TRUE_MSG(rep.done == 1 && oks >= nmax - 2 && oks <= nmax, "%ld OK periods for T %.9g", oks, (double)prof->T);
+    DHT_TRUE(memcmp(&T, &p->B, sizeof T) == 0 && mv.clock == mv.dur);
 }
 
 static double rlog(double lo, double hi) { return pow(10.0, dht_rand_uniform(lo, hi)); }
 
-static void moves_within_limits(void)
+/* n random lines and arcs moved within limits spread so that each of the
+ * speed, acceleration, centripetal and (jerk) jerk bounds binds in some */
+static void random_moves(int n, int jerk)
 {
-    int it, n = DHT_ITER(60);
+    int it;
     for (it = 0; it < n; it++) {
         dh_path_f32 p;
         ref_path r;
         dh_cart_limits_f32 lim;
+        dh_cart_jerk_f32 jk;
         double t0 = dht_rand_uniform(0.3, 1.5), deg = (it % 4 == 0) ? 0.0 : dht_rand_uniform(5.0, 175.0);
         rand_path(&p, &r, it % 2, rlog(-1.0, 3.0), deg);
         lim.vmax = (float)(r.len / t0 * rlog(-0.5, 0.5));
         lim.amax = (float)(lim.vmax / t0 * rlog(0.0, 1.0));
         lim.wmax = (float)((deg > 0.0 ? deg : 90.0) / t0 * rlog(-0.5, 0.5));
         lim.wdmax = (float)(lim.wmax / t0 * rlog(0.0, 1.0));
-        move_check(&p, &r, &lim);
+        if (jerk) {
+            jk.jmax = (float)(lim.amax / t0 * rlog(-0.5, 1.5));
+            jk.wjmax = (float)(lim.wdmax / t0 * rlog(-0.5, 1.5));
+        }
+        move_check(&p, &r, &lim, jerk ? &jk : NULL);
     }
-    dht_printf("moves: worst speed %.6f, acceleration %.6f, angular speed %.6f, angular acceleration %.6f of the limits\n",
-               fd_worst[0], fd_worst[1], fd_worst[2], fd_worst[3]);
+    dht_printf("%s: worst speed %.6f, acceleration %.6f, jerk %.6f, angular %.6f %.6f %.6f of the limits\n",
+               jerk ? "jerk-limited moves" : "moves", fd_worst[0], fd_worst[1], fd_worst[2], fd_worst[3],
+               fd_worst[4], fd_worst[5]);
 }
 
-/* an arc of radius 5 mm at 500 mm/s, 1000 mm/s^2: the centripetal term
- * binds (V = sqrt(1000 * 5 / sqrt 2) = 59.5 mm/s) */
+static void moves_within_limits(void) { random_moves(DHT_ITER(60), 0); }
+static void jerk_moves_within_limits(void) { random_moves(DHT_ITER(40), 1); }
+
+/* an arc of radius 5 mm, sweep 5 rad, turning 30 degrees, into p and its
+ * reference r; limits 500 mm/s, 1000 mm/s^2, 1000 deg/s, 10000 deg/s^2 */
+static void small_arc(dh_path_f32 *p, ref_path *r, dh_cart_limits_f32 *lim)
+{
+    dh_mat4_f32 A, B;
+    double pa[3], pb[3];
+    float via[3];
+    arc_points(5.0, 100.0, 5.0, 0.5, pa, via, pb);
+    frames(pa, pb, 30.0, &A, &B);
+    DHT_EQ_INT(dh_path_arc_f32(p, &A, via, &B), DH_OK);
+    ref_make(r, &A, via, &B, 1);
+    lim->vmax = 500.0f;
+    lim->amax = 1000.0f;
+    lim->wmax = 1000.0f;
+    lim->wdmax = 10000.0f;
+}
+
+/* the small arc: the centripetal term binds (V = sqrt(1000 * 5 / sqrt 2)
+ * = 59.5 mm/s) */
 static void small_radius_binds(void)
 {
     dh_path_f32 p;
     ref_path r;
     dh_profile_f32 prof;
     dh_cart_limits_f32 lim;
-    dh_mat4_f32 A, B;
-    double pa[3], pb[3];
-    float via[3];
-    arc_points(5.0, 100.0, 5.0, 0.5, pa, via, pb);
-    frames(pa, pb, 30.0, &A, &B);
-    DHT_EQ_INT(dh_path_arc_f32(&p, &A, via, &B), DH_OK);
-    ref_make(&r, &A, via, &B, 1);
-    lim.vmax = 500.0f;
-    lim.amax = 1000.0f;
-    lim.wmax = 1000.0f;
-    lim.wdmax = 10000.0f;
+    small_arc(&p, &r, &lim);
     DHT_EQ_INT(dh_path_move_f32(&prof, &p, &lim), DH_OK);
     DHT_TRUE(prof.v * p.length < 60.0f && prof.v * p.length > 59.0f);
-    move_check(&p, &r, &lim);
+    move_check(&p, &r, &lim, NULL);
+}
+
+/* the small arc with jmax = 2000 mm/s^3: the jerk's centripetal terms
+ * bind (V = cbrt(2000 * 25 / 4) = 23.2 mm/s, At = 2000 * 5 / (12 V) =
+ * 35.9 mm/s^2); the executor runs the move through its targets */
+static void small_radius_jerk_binds(void)
+{
+    dh_path_f32 p;
+    ref_path r;
+    dh_profile_f32 prof;
+    dh_cart_limits_f32 lim;
+    const dh_cart_jerk_f32 jk = { 2000.0f, 1e6f };
+    const double V = cbrt(12500.0), At = 10000.0 / (12.0 * V);
+    small_arc(&p, &r, &lim);
+    DHT_EQ_INT(dh_path_move_jerk_f32(&prof, &p, &lim, &jk), DH_OK);
+    DHT_EQ_INT((int)prof.kind, DH_PROFILE_SCURVE);
+    DHT_TRUE_MSG(fabs(prof.v * p.length - V) <= 1e-4 * V, "speed %.9g vs %.9g", (double)(prof.v * p.length), V);
+    DHT_TRUE_MSG(fabs(prof.a * p.length - At) <= 1e-4 * At, "acceleration %.9g vs %.9g", (double)(prof.a * p.length),
+                 At);
+    DHT_TRUE_MSG(fabs(prof.j * p.length - 1000.0) <= 1e-4 * 1000.0, "jerk %.9g", (double)(prof.j * p.length));
+    move_check(&p, &r, &lim, &jk);
+    move_run(&prof, &p, &lim, &jk);
+}
+
+/* without jerk limits dh_path_move_jerk_f32 is dh_path_move_f32 bit for
+ * bit, and dh_move_path_jerk_f32 dh_move_path_f32 */
+static void jerk_null_is_trapezoid(void)
+{
+    int it, n = DHT_ITER(50);
+    for (it = 0; it < n; it++) {
+        dh_path_f32 p;
+        ref_path r;
+        dh_profile_f32 a, b;
+        dh_move_f32 ma, mb;
+        dh_cart_limits_f32 lim;
+        rand_path(&p, &r, it % 2, rlog(-1.0, 3.0), draw_deg(it));
+        lim.vmax = (float)rlog(-1.0, 2.0);
+        lim.amax = (float)rlog(-1.0, 2.0);
+        lim.wmax = (float)rlog(0.0, 3.0);
+        lim.wdmax = (float)rlog(0.0, 3.0);
+        DHT_EQ_INT(dh_path_move_f32(&a, &p, &lim), DH_OK);
+        memset(&b, 0x55, sizeof b);
+        DHT_EQ_INT(dh_path_move_jerk_f32(&b, &p, &lim, NULL), DH_OK);
+        DHT_TRUE(memcmp(&a, &b, sizeof a) == 0);
+        DHT_EQ_INT((int)a.kind, DH_PROFILE_TRAP);
+        DHT_EQ_INT(dh_move_path_f32(&ma, &p, &lim), DH_OK);
+        DHT_EQ_INT(dh_move_path_jerk_f32(&mb, &p, &lim, NULL), DH_OK);
+        DHT_TRUE(memcmp(&ma.prof[0], &a, sizeof a) == 0 && memcmp(&mb.prof[0], &a, sizeof a) == 0);
+        DHT_TRUE(ma.dur == mb.dur && ma.kind == mb.kind && mb.kind == (uint32_t)DH_MOVE_PATH);
+    }
+}
+
+/* the statuses of the jerk limits: NaN/Inf, <= 0; prof all zero and the
+ * move emptied on error */
+static void jerk_bad_limits(void)
+{
+    static const dh_profile_f32 zero = { 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0u };
+    const float bad[5] = { NAN, INFINITY, 0.0f, -1.0f, -INFINITY };
+    const int want[5] = { DH_ERR_NAN, DH_ERR_NAN, DH_ERR_ARG, DH_ERR_ARG, DH_ERR_NAN };
+    dh_cart_limits_f32 lim = { 1.0f, 2.0f, 30.0f, 60.0f };
+    dh_mat4_f32 A, B;
+    dh_path_f32 p;
+    dh_profile_f32 prof;
+    dh_move_f32 mv;
+    int i, k;
+    dh_mat4_trans_f32(0.1f, 0.2f, 0.3f, &A);
+    dh_mat4_rotz_f32(40.0f, &B);
+    DH_M4(&B, 0, 3) = 10.0f;
+    DHT_EQ_INT(dh_path_line_f32(&p, &A, &B), DH_OK);
+    for (i = 0; i < 5; i++) {
+        for (k = 0; k < 2; k++) {
+            const dh_cart_jerk_f32 good = { 5.0f, 100.0f };
+            dh_cart_jerk_f32 jk = good;
+            if (k == 0) jk.jmax = bad[i];
+            else jk.wjmax = bad[i];
+            memset(&prof, 0x55, sizeof prof);
+            DHT_EQ_INT(dh_path_move_jerk_f32(&prof, &p, &lim, &jk), want[i]);
+            DHT_TRUE(memcmp(&prof, &zero, sizeof prof) == 0);
+            /* a failed start empties a running move */
+            DHT_EQ_INT(dh_move_path_jerk_f32(&mv, &p, &lim, &good), DH_OK);
+            DHT_EQ_INT(dh_move_path_jerk_f32(&mv, &p, &lim, &jk), want[i]);
+            DHT_EQ_INT((int)mv.kind, DH_MOVE_NONE);
+            DHT_EQ_INT(dh_move_target_f32(&mv, &A), DH_ERR_ARG);
+        }
+    }
+    /* a bad Cartesian limit with good jerk limits */
+    {
+        dh_cart_jerk_f32 jk = { 5.0f, 100.0f };
+        lim.amax = 0.0f;
+        DHT_EQ_INT(dh_path_move_jerk_f32(&prof, &p, &lim, &jk), DH_ERR_ARG);
+        DHT_TRUE(memcmp(&prof, &zero, sizeof prof) == 0);
+        lim.amax = NAN;
+        DHT_EQ_INT(dh_path_move_jerk_f32(&prof, &p, &lim, &jk), DH_ERR_NAN);
+        /* a jerk limit too small for float: s''' or the profile underflows */
+        lim.amax = 2.0f;
+        jk.jmax = 1e-45f;   /* the least denormal, over a length of 10 */
+        DHT_EQ_INT(dh_path_move_jerk_f32(&prof, &p, &lim, &jk), DH_ERR_OVERFLOW);
+        DHT_TRUE(memcmp(&prof, &zero, sizeof prof) == 0);
+    }
 }
 
 /* no length and no angle: duration 0, the frame stays at A */
@@ -531,5 +746,9 @@ static const dht_case cases[] = {
     DHT_CASE(moves_within_limits),
     DHT_CASE(small_radius_binds),
     DHT_CASE(zero_move),
+    DHT_CASE(jerk_moves_within_limits),
+    DHT_CASE(small_radius_jerk_binds),
+    DHT_CASE(jerk_null_is_trapezoid),
+    DHT_CASE(jerk_bad_limits),
 };
 DHT_MAIN(cases)
