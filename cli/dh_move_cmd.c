@@ -14,6 +14,7 @@
  * `track`, by cli_track_start) between dh_move_target_f32 and
  * dh_move_advance_f32. The output is kept in memory until the move ends.
  */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -70,6 +71,7 @@ typedef struct {
     float q1[MOVE_MAX_SEG][DH_MAX_JOINTS]; /* joint segments */
     float q0[DH_MAX_JOINTS], vmax[DH_MAX_JOINTS], amax[DH_MAX_JOINTS], jmax[DH_MAX_JOINTS];
     dh_cart_limits_f32 lim;
+    dh_cart_jerk_f32 cj;   /* with --jerk: the Cartesian segments' jerk limits */
     double dt;
     int jerk;
     cli_outbuf out;
@@ -288,7 +290,7 @@ static int move_plan_segments(const move_args *a, move_plan *p)
             st = dh_path_arc_f32(&p->path[i], &F, via, &B);
         }
         if (st != DH_OK) return seg_error(i, s, "no path from the previous segment's end", path_why(st));
-        st = dh_move_path_f32(&p->mv, &p->path[i], &p->lim);
+        st = dh_move_path_jerk_f32(&p->mv, &p->path[i], &p->lim, p->jerk ? &p->cj : NULL);
         if (st != DH_OK) return seg_error(i, s, "the move along the path cannot be planned", path_why(st));
         F = B;
         known = 0;
@@ -359,7 +361,7 @@ static int run_path(move_plan *p, unsigned i, const move_seg *s, float *q)
     dh_mat4_f32 T;
     double cap, k = 0.0;
     int rc;
-    dh_status st = dh_move_path_f32(&p->mv, &p->path[i], &p->lim);
+    dh_status st = dh_move_path_jerk_f32(&p->mv, &p->path[i], &p->lim, p->jerk ? &p->cj : NULL);
     if (st != DH_OK) return seg_error(i, s, "the move along the path cannot be planned", path_why(st));
     cap = move_cap(p, p->mv.dur);
     do {
@@ -416,10 +418,6 @@ int cli_cmd_move(int argc, char **argv)
         return cli_error("move --blend", "needs blended corners between segments, which this library's motion.h "
                          "does not offer yet; run move without --blend (every segment then ends at rest)");
     for (i = 0; i < a.nseg; i++) cart += a.seg[i].kind != SEG_JOINT;
-    if (a.jerk && cart)
-        return cli_error("move --jerk", "with a --line or --arc segment needs the Cartesian jerk limits (linear and "
-                         "angular, dh_path_move_jerk_f32), for which move has no option yet; --jerk applies to "
-                         "--joint segments only");
     memset(&p, 0, sizeof p);
     if ((rc = cli_parse_dt(a.dt, &p.dt)) != 0) return rc;
     if ((rc = cli_load_robot(a.robot, 0, &p.r, &p.rf)) != 0) return rc;
@@ -445,6 +443,15 @@ int cli_cmd_move(int argc, char **argv)
         if ((rc = move_limit("--accel", a.accel, "length unit/s^2", &p.lim.amax)) != 0) return rc;
         if ((rc = move_limit("--rspeed", a.rspeed, "deg/s", &p.lim.wmax)) != 0) return rc;
         if ((rc = move_limit("--raccel", a.raccel, "deg/s^2", &p.lim.wdmax)) != 0) return rc;
+        if (p.jerk) {
+            /* J is the tool's linear jerk; the angular jerk limit gives the
+             * rotation the same jerk time as the translation:
+             * raccel / wjmax = accel / J */
+            if ((rc = move_limit("--jerk", a.jerk, "length unit/s^3", &p.cj.jmax)) != 0) return rc;
+            p.cj.wjmax = (float)((double)p.cj.jmax * (double)p.lim.wdmax / (double)p.lim.amax);
+            if (!(p.cj.wjmax > 0.0f) || p.cj.wjmax > FLT_MAX)
+                return cli_error("move --jerk", "the angular jerk limit J * raccel / accel is not a positive float");
+        }
     }
     if ((rc = move_plan_segments(&a, &p)) != 0) return rc;
     rc = move_run(&a, &p);

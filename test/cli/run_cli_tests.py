@@ -1634,6 +1634,39 @@ def group_move(seed, tmp):
         print('move line/arc/joint: %d periods, line %d (planned T %.4g s), tool off the line %.3g, largest step '
               '%.4f of vmax dt, change %.4f of amax dt^2' % (len(rows), reached or 0, Tl, on_line, wv, wa))
 
+    # 2b. the same line jerk-limited (--jerk: the tool's linear jerk, the
+    # angular one J raccel / accel): every period ok, slower than the
+    # trapezoid, the tool on the line, its jerk by third differences over
+    # windows of 10 periods within J, the end frame reached
+    jerk = 5.0
+    rc, out, err = run(['move', path, '--q0', ','.join(map(str, qa)), '--dt', str(dt), '--speed', str(speed),
+                        '--accel', str(accel), '--rspeed', str(rsp), '--raccel', str(racc), '--jerk', str(jerk),
+                        '--line', endB])
+    check(rc == 0 and err == '', 'move --jerk line: rc %d err %r' % (rc, err))
+    head, jl = read_csv(out, n)
+    check(head == head_want and jl and None not in jl, 'move --jerk line: header %r' % head)
+    if jl and None not in jl and rows and None not in rows:
+        check(all(r[2] == 'ok' for r in jl), 'move --jerk line: not ok: %r' % [r for r in jl if r[2] != 'ok'][:2])
+        check_joint_limits('move --jerk line', qa, jl, [vm] * n, [am] * n, dt, [4 * f32_ulp(360.0)] * n)
+        pts = [p0] + [[F[i][3] for i in range(3)] for F in (ref_fk(rob, r[1]) for r in jl)]
+        L = math.sqrt(sum(d * d for d in dp))
+        off = max(math.sqrt(sum((p[i] - p0[i] - sum((p[k] - p0[k]) * dp[k] for k in range(3)) / (L * L) * dp[i]) ** 2
+                                for i in range(3))) for p in pts)
+        check(off <= 1e-5, 'move --jerk line: the tool %.3g off the line' % off)
+        w, jw = 10, 0.0
+        for k in range(len(pts) - 3 * w):
+            d3 = [pts[k + 3 * w][i] - 3 * pts[k + 2 * w][i] + 3 * pts[k + w][i] - pts[k][i] for i in range(3)]
+            jw = max(jw, math.sqrt(sum(x * x for x in d3)) / (w * dt) ** 3)
+        check(jw <= jerk * (1 + 1e-3), 'move --jerk line: jerk %.6g over %d periods beyond %g' % (jw, w, jerk))
+        F, E = ref_fk(rob, jl[-1][1]), B
+        pe = max(abs(F[i][3] - E[i][3]) for i in range(3))
+        check(pe <= 5e-6 and rot_angle(F, E) <= 5e-5, 'move --jerk line: last line %.3g, %.3g rad from the end' %
+              (pe, rot_angle(F, E)))
+        line_periods = reached if reached is not None else len(rows)
+        check(len(jl) > line_periods, 'move --jerk line: %d periods, the trapezoid %d' % (len(jl), line_periods))
+        print('move --jerk line: %d periods (trapezoid %d), jerk <= %.4g of %g over %d periods, tool off the line '
+              '%.3g' % (len(jl), line_periods, jw, jerk, w, off))
+
     # 3. a Puma 560 line ending at rest on its end frame
     puma = move_robot(tmp, 'puma_rates.dh', os.path.join(ROOT, 'examples', 'robots', 'puma560.dh'), 150.0, 600.0)
     prob = read_robot(open(puma).read())
@@ -1708,8 +1741,9 @@ def group_move(seed, tmp):
          'segment 1 (--arc): no path from the previous segment\'s end: the start, via and end points are collinear'),
         ([path] + q0 + ['--dt', '0.01'] + cart + ['--arc', 'ident'], "'--arc' needs two values"),
         ([path] + q0 + ['--dt', '0.01', '--jerk', '0'] + jt, '--jerk: 0 must be'),
-        ([path] + q0 + ['--dt', '0.01', '--jerk', '1000'] + cart + ln, 'move --jerk: with a --line or --arc segment '
-                                                                       'needs the Cartesian jerk limits'),
+        ([path] + q0 + ['--dt', '0.01', '--jerk', '1e38', '--speed', '0.2', '--accel', '1e-30', '--rspeed', '60',
+                        '--raccel', '240'] + ln, 'move --jerk: the angular jerk limit J * raccel / accel is not a '
+                                                 'positive float'),
         ([path] + q0 + ['--dt', '0.01', '--blend', '0.01'] + cart + ln + ln, 'move --blend: needs blended corners'),
         ([path] + q0 + ['--dt', '0.01', '--fixed'] + jt, 'move --fixed: needs a fixed-point motion API'),
         ([path] + q0 + ['--dt', '0.01', '--dt', '0.02'] + jt, "option '--dt' given more than once"),
