@@ -542,11 +542,11 @@ typedef enum {
  * @brief One queued move as its constructor takes it (read-only for the
  *        user): a joint move to q1 (dh_move_joint_f32 without q0: it
  *        starts where the robot is when it starts) or a path move
- *        (dh_move_path_f32).
+ *        (dh_move_path_f32, planned when appended).
  */
 typedef struct {
     dh_path_f32 path;              /**< path move: the path */
-    dh_cart_limits_f32 lim;        /**< path move: its limits */
+    dh_profile_f32 prof;           /**< path move: its profile of s (dh_path_move_f32) */
     float q1[DH_MAX_JOINTS];       /**< joint move: end configuration */
     float vmax[DH_MAX_JOINTS];     /**< joint move: velocity limits */
     float amax[DH_MAX_JOINTS];     /**< joint move: acceleration limits */

@@ -152,7 +152,7 @@ dh_status dh_queue_add_path_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh
     if (qu->count >= qu->cap) return DH_ERR_LIMIT;
     it = queue_slot(qu, qu->count);
     it->path = *p;
-    it->lim = *lim;
+    it->prof = prof;
     it->jerk = 0u;
     it->n = 0u;
     it->kind = (uint32_t)DH_MOVE_PATH;
@@ -162,12 +162,12 @@ dh_status dh_queue_add_path_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh
 
 /* ---- brake of one coordinate ------------------------------------------ */
 
-static float queue_brake_dist(const dh_queue_f32 *qu, uint32_t i, float tau);
+static DH_NOINLINE float queue_brake_dist(const dh_queue_f32 *qu, uint32_t i, float tau);
 
 /* the brake of coordinate i from x (position), v, a (signed) within the
  * deceleration A and jerk j (0: none), never beyond rem along the travel
  * (rem >= 0); its duration */
-static float queue_brake_plan(dh_queue_f32 *qu, uint32_t i, float x, float v, float a, float A, float j, float rem)
+static DH_NOINLINE float queue_brake_plan(dh_queue_f32 *qu, uint32_t i, float x, float v, float a, float A, float j, float rem)
 {
     float s, vp, ap, pk, t1 = 0.0f, t2 = 0.0f, t3 = 0.0f, d = 0.0f;
     s = (v > 0.0f) ? 1.0f : ((v < 0.0f) ? -1.0f : 0.0f);
@@ -211,7 +211,7 @@ static float queue_brake_plan(dh_queue_f32 *qu, uint32_t i, float x, float v, fl
 }
 
 /* distance of coordinate i's brake at time tau (>= 0), before the cap */
-static float queue_brake_dist(const dh_queue_f32 *qu, uint32_t i, float tau)
+static DH_NOINLINE float queue_brake_dist(const dh_queue_f32 *qu, uint32_t i, float tau)
 {
     const float j = qu->bj[i], pk = qu->bap[i];
     const float t1 = qu->bt[0][i], t2 = qu->bt[1][i], t3 = qu->bt[2][i];
@@ -237,7 +237,7 @@ static float queue_brake_dist(const dh_queue_f32 *qu, uint32_t i, float tau)
 
 /* coordinate i's position at brake time tau: within [0, bx] of the start
  * along the travel, bx exactly from the end of the brake on */
-static float queue_brake_at(const dh_queue_f32 *qu, uint32_t i, float tau)
+static DH_NOINLINE float queue_brake_at(const dh_queue_f32 *qu, uint32_t i, float tau)
 {
     float x = qu->bx[i];
     if (tau < qu->tbend) {
@@ -262,7 +262,7 @@ static float queue_path_s(const dh_queue_f32 *qu, float c, float *sd, float *sdd
 }
 
 /* s where the path move is now: on its brake after a stop, else at its clock */
-static float queue_path_now(const dh_queue_f32 *qu)
+static DH_NOINLINE float queue_path_now(const dh_queue_f32 *qu)
 {
     float sd, sdd;
     if (qu->braked != 0u) return queue_brake_at(qu, 0u, qu->tb);
@@ -279,98 +279,124 @@ static int queue_at_rest(const dh_track_f32 *t, const dh_queue_item_f32 *it, flo
     return 1;
 }
 
-/* plans the path move it: s from s0 (where a brake left it, or 0) to 1 */
+/* plans the path move it, from its profile of s (made when appended), or
+ * from where a brake left it to 1 within that profile's rates of s */
 static DH_NOINLINE dh_status queue_start_path(dh_queue_f32 *qu, const dh_queue_item_f32 *it)
 {
-    dh_status st = dh_move_path_f32(&qu->mv, &it->path, &it->lim);
-    if (st != DH_OK) return st;
-    qu->vs = qu->mv.prof[0].v;
-    qu->as = qu->mv.prof[0].a;
-    qu->s0 = 0.0f;
-    if (qu->braked != 0u) {
-        const float s0 = qu->bq[0] + qu->bx[0];
-        qu->s0 = (s0 < 1.0f) ? s0 : 1.0f;
-        if (qu->s0 > 0.0f && qu->vs > 0.0f && qu->as > 0.0f) {
-            st = dh_profile_trap_f32(&qu->mv.prof[0], 1.0f - qu->s0, qu->vs, qu->as);
-            if (st != DH_OK) return st;
-            qu->mv.dur = qu->mv.prof[0].T;
-        } else {
-            qu->s0 = 0.0f;
-        }
+    dh_move_f32 *mv = &qu->mv;
+    dh_status st;
+    float s0 = 0.0f;
+    if (qu->braked != 0u) s0 = qu->bq[0] + qu->bx[0];
+    qu->vs = it->prof.v;
+    qu->as = it->prof.a;
+    mv->kind = (uint32_t)DH_MOVE_NONE;
+    mv->prof[0] = it->prof;
+    if (s0 > 0.0f && qu->vs > 0.0f && qu->as > 0.0f) {
+        st = dh_profile_trap_f32(&mv->prof[0], (s0 < 1.0f) ? 1.0f - s0 : 0.0f, qu->vs, qu->as);
+        if (st != DH_OK) return st;
+    } else {
+        s0 = 0.0f;
     }
+    qu->s0 = (s0 < 1.0f) ? s0 : 1.0f;
+    mv->path = it->path;
+    mv->n = 0u;
+    mv->dur = mv->prof[0].T;
+    mv->clock = 0.0f;
+    mv->kind = (uint32_t)DH_MOVE_PATH;
     return DH_OK;
 }
 
-/* starts the move at the head: 1 when it started, 0 when a joint move
- * waits for the tracker to come to rest; the status of its planning */
-static DH_NOINLINE int queue_start(dh_queue_f32 *qu, const dh_track_f32 *t, float dt, dh_status *st)
+/* the distance of joint i of the joint move it from q0 into *d (and the
+ * endpoints into the plan); DH_ERR_OVERFLOW when it is not finite */
+static DH_NOINLINE dh_status queue_joint_d(dh_move_f32 *mv, const dh_queue_item_f32 *it, uint32_t i, float q0, float *d)
+{
+    *d = it->q1[i] - q0;
+    mv->q0[i] = q0;
+    mv->q1[i] = it->q1[i];
+    return dh_isfinite_f32(*d) ? DH_OK : DH_ERR_OVERFLOW;
+}
+
+/* the joint plan's end: every profile stretched to T (longest) */
+static DH_NOINLINE void queue_joint_end(dh_queue_f32 *qu, uint32_t n, float T)
+{
+    qu->mv.n = n;
+    qu->mv.dur = T;
+    qu->mv.clock = 0.0f;
+    qu->mv.kind = (uint32_t)DH_MOVE_JOINT;
+}
+
+/* 1 when the head move is due to start this period (a joint move after a
+ * plan waits for the tracker to be at rest); DH_ERR_ARG into *st for a
+ * joint move of another joint count than the tracker's */
+static DH_NOINLINE int queue_due(const dh_queue_f32 *qu, const dh_track_f32 *t, float dt, dh_status *st)
 {
     const dh_queue_item_f32 *it = &qu->items[qu->head];
     *st = DH_OK;
-    if (it->kind == (uint32_t)DH_MOVE_JOINT) {
-        if (it->n != t->r->n) {
-            *st = DH_ERR_ARG;
-            return 0;
-        }
-        if (qu->mv.kind != (uint32_t)DH_MOVE_NONE && !queue_at_rest(t, it, dt)) return 0;
-        *st = dh_move_joint_f32(&qu->mv, it->n, t->q, it->q1, it->vmax, it->amax, (it->jerk != 0u) ? it->jmax : NULL);
-    } else {
-        *st = queue_start_path(qu, it);
+    if (qu->phase != (uint32_t)DH_QUEUE_RUN || qu->count == 0u || qu->started != 0u) return 0;
+    if (it->kind != (uint32_t)DH_MOVE_JOINT) return 1;
+    if (it->n != t->r->n) {
+        *st = DH_ERR_ARG;
+        return 0;
     }
-    if (*st != DH_OK) return 0;
-    qu->started = 1u;
-    qu->braked = 0u;
-    return 1;
+    return (qu->mv.kind == (uint32_t)DH_MOVE_NONE) || queue_at_rest(t, it, dt);
 }
 
-/* what this period does (QUEUE_*), starting the head move when due */
-static DH_NOINLINE uint32_t queue_what(dh_queue_f32 *qu, const dh_track_f32 *t, float dt, dh_status *st)
+/* Plans the joint move it from q0 as dh_move_joint_f32 does: each joint's
+ * time-optimal profile within the limits less 2^-10, all stretched to the
+ * longest. The profile calls are made from here, one frame above them. */
+static DH_NOINLINE dh_status queue_start_joint(dh_queue_f32 *qu, const dh_queue_item_f32 *it, const float *q0)
 {
-    *st = DH_OK;
+    dh_status st = DH_OK;
+    float T = 0.0f, d = 0.0f;
+    uint32_t i;
+    qu->mv.kind = (uint32_t)DH_MOVE_NONE;
+    for (i = 0u; i < it->n && st == DH_OK; i++) {
+        st = queue_joint_d(&qu->mv, it, i, q0[i], &d);
+        if (st == DH_OK && it->jerk != 0u)
+            st = dh_profile_scurve_f32(&qu->mv.prof[i], d, it->vmax[i] * QUEUE_MARGIN, it->amax[i] * QUEUE_MARGIN,
+                                       it->jmax[i]);
+        else if (st == DH_OK)
+            st = dh_profile_trap_f32(&qu->mv.prof[i], d, it->vmax[i] * QUEUE_MARGIN, it->amax[i] * QUEUE_MARGIN);
+        if (st == DH_OK && qu->mv.prof[i].T > T) T = qu->mv.prof[i].T;
+    }
+    for (i = 0u; i < it->n && st == DH_OK; i++) st = dh_profile_stretch_f32(&qu->mv.prof[i], T);
+    if (st == DH_OK) queue_joint_end(qu, it->n, T);
+    return st;
+}
+
+/* what this period does (QUEUE_*) */
+static uint32_t queue_what(const dh_queue_f32 *qu)
+{
     if (qu->phase == (uint32_t)DH_QUEUE_BRAKE)
         return (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) ? QUEUE_BJOINT : QUEUE_BPATH;
-    if (qu->phase != (uint32_t)DH_QUEUE_RUN || qu->count == 0u) return QUEUE_HOLD;
-    if (qu->started == 0u && !queue_start(qu, t, dt, st)) return QUEUE_HOLD;
+    if (qu->phase != (uint32_t)DH_QUEUE_RUN || qu->count == 0u || qu->started == 0u) return QUEUE_HOLD;
     return (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) ? QUEUE_JOINT : QUEUE_PATH;
 }
 
-/* the command of this period for what */
-static DH_NOINLINE void queue_command(dh_queue_f32 *qu, const dh_track_f32 *t, uint32_t what, float dt,
-                                      dh_queue_cmd_f32 *cmd)
+/* the joint command of this period for what (a joint plan, or none) */
+static DH_NOINLINE void queue_joint_cmd(dh_queue_f32 *qu, const dh_track_f32 *t, uint32_t what, float dt,
+                                        dh_queue_cmd_f32 *cmd)
 {
-    const uint32_t n = t->r->n;
     uint32_t i;
-    float s;
     qu->next = 0.0f;
+    cmd->kind = (uint32_t)DH_MOVE_JOINT;
     if (what == QUEUE_JOINT) {
         qu->next = (qu->mv.clock + dt < qu->mv.dur) ? qu->mv.clock + dt : qu->mv.dur;
-        cmd->kind = (uint32_t)DH_MOVE_JOINT;
         (void)dh_joint_move_eval_f32(qu->mv.prof, qu->mv.n, qu->mv.q0, qu->mv.q1, qu->next, cmd->q, qu->mv.ws[0],
                                      qu->mv.ws[1]);
-        return;
-    }
-    if (what == QUEUE_BJOINT) {
+    } else if (what == QUEUE_BJOINT) {
         qu->next = (qu->tb + dt < qu->tbend) ? qu->tb + dt : qu->tbend;
-        cmd->kind = (uint32_t)DH_MOVE_JOINT;
         for (i = 0u; i < qu->mv.n; i++) cmd->q[i] = queue_brake_at(qu, i, qu->next);
-        return;
-    }
-    if (qu->mv.kind == (uint32_t)DH_MOVE_PATH) {
-        /* the path's frame now (running, braking, or held at rest) */
-        s = queue_path_now(qu);
-        cmd->kind = (uint32_t)DH_MOVE_PATH;
-        (void)dh_path_eval_f32(&qu->mv.path, s, &cmd->T);
-        return;
-    }
-    if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) {
+    } else if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) {
         /* held after a joint move: the tracker's configuration again */
-        cmd->kind = (uint32_t)DH_MOVE_JOINT;
-        for (i = 0u; i < n; i++) cmd->q[i] = t->q[i];
-        return;
+        for (i = 0u; i < t->r->n; i++) cmd->q[i] = t->q[i];
+    } else {
+        cmd->kind = (uint32_t)DH_MOVE_NONE;
     }
-    cmd->kind = (uint32_t)DH_MOVE_NONE;
 }
 
+/* The planning (queue_start_*) and the path's frame (dh_path_eval_f32) are
+ * called from here directly, one small frame above them. */
 dh_status dh_queue_target_f32(dh_queue_f32 *qu, const dh_track_f32 *t, float dt, dh_queue_cmd_f32 *cmd)
 {
     dh_status st;
@@ -380,9 +406,24 @@ dh_status dh_queue_target_f32(dh_queue_f32 *qu, const dh_track_f32 *t, float dt,
     if (qu->pend != 0u) return DH_ERR_ARG;
     if (!dh_isfinite_f32(dt) || !queue_finite(t->q, t->r->n)) return DH_ERR_NAN;
     if (!(dt > 0.0f)) return DH_ERR_ARG;
-    what = queue_what(qu, t, dt, &st);
+    if (queue_due(qu, t, dt, &st)) {
+        const dh_queue_item_f32 *it = &qu->items[qu->head];
+        st = (it->kind == (uint32_t)DH_MOVE_JOINT) ? queue_start_joint(qu, it, t->q) : queue_start_path(qu, it);
+        if (st == DH_OK) {
+            qu->started = 1u;
+            qu->braked = 0u;
+        }
+    }
     if (st != DH_OK) return st;
-    queue_command(qu, t, what, dt, cmd);
+    what = queue_what(qu);
+    if (qu->mv.kind == (uint32_t)DH_MOVE_PATH && what != QUEUE_JOINT && what != QUEUE_BJOINT) {
+        /* the path's frame now: running, braking, or held at rest */
+        qu->next = 0.0f;
+        cmd->kind = (uint32_t)DH_MOVE_PATH;
+        (void)dh_path_eval_f32(&qu->mv.path, queue_path_now(qu), &cmd->T);
+    } else {
+        queue_joint_cmd(qu, t, what, dt, cmd);
+    }
     qu->pend = what;
     qu->dt = dt;
     qu->n = t->r->n;
@@ -461,16 +502,15 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, const dh_track_f32 *t, dh_track
     return DH_OK;
 }
 
-/* plans the brake of the running move from its state at its clock; its
- * duration */
+/* plans the brake of the running move from its state at its clock (a
+ * joint move's: position, velocity, acceleration in bq, ws[0], ws[1]);
+ * its duration */
 static DH_NOINLINE float queue_brake(dh_queue_f32 *qu)
 {
     const dh_queue_item_f32 *it = &qu->items[qu->head];
     float d = 0.0f, e, sd, sdd, s;
     uint32_t i;
     if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) {
-        (void)dh_joint_move_eval_f32(qu->mv.prof, qu->mv.n, qu->mv.q0, qu->mv.q1, qu->mv.clock, qu->bq, qu->mv.ws[0],
-                                     qu->mv.ws[1]);
         for (i = 0u; i < qu->mv.n; i++) {
             const float v = qu->mv.ws[0][i], x = qu->bq[i];
             const float rem = queue_abs(qu->mv.q1[i] - x);
@@ -495,6 +535,9 @@ dh_status dh_queue_stop_f32(dh_queue_f32 *qu)
         qu->phase = (uint32_t)DH_QUEUE_STOPPED;
         return DH_OK;
     }
+    if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT)
+        (void)dh_joint_move_eval_f32(qu->mv.prof, qu->mv.n, qu->mv.q0, qu->mv.q1, qu->mv.clock, qu->bq, qu->mv.ws[0],
+                                     qu->mv.ws[1]);
     qu->tb = 0.0f;
     qu->tbend = queue_brake(qu);
     qu->braked = 1u;
