@@ -660,11 +660,12 @@ dh_status dh_queue_add_path_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh
  *   kind JOINT: dh_track_sync_f32(t, cmd.q), state = DH_TRACK_OK;
  *   kind PATH:  dh_track_step_f32(t, &cmd.T, q, &trep), state = trep.state;
  *   dh_queue_advance_f32(qu, state, &rep).
- * A joint move starts from t->q once the tracker is at rest: every
- * |t->v[i]| <= amax_i dt / 2 (amax of the move), so its first step differs
- * from the tracker's last by at most amax_i dt^2. Until then (after a
- * path move) the last path move's B is the target again. A path move
- * starts as dh_move_path_f32's. Joint commands are within the move's
+ * A joint move after another move starts from t->q once the tracker is
+ * at rest: every |t->v[i]| <= amax_i dt / 2 (amax of the move), so its
+ * first step differs from the tracker's last by at most amax_i dt^2; until
+ * then the last move's command at rest is repeated (a path's B, or t->q).
+ * The first move starts at once from t->q. A path move starts as
+ * dh_move_path_f32's. Joint commands are within the move's
  * limits as dh_move_joint_step_f32's; targets as dh_move_target_f32's.
  * With no move to run (empty queue, or stopped at a move not started)
  * kind is DH_MOVE_NONE and the caller commands nothing new; stopped
@@ -675,7 +676,11 @@ dh_status dh_queue_add_path_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh
  * @return DH_OK; DH_ERR_NAN for a NaN/Inf dt or a t->q that is not
  *         finite; DH_ERR_ARG for dt <= 0, a target call already pending,
  *         or a joint move for another number of joints than t's robot
- *         has. On error qu and cmd are untouched.
+ *         has: qu and cmd untouched. DH_ERR_OVERFLOW (or another status
+ *         of dh_profile_scurve_f32, _trap_f32, _stretch_f32) when a joint
+ *         move cannot be planned from t->q: it stays queued, unstarted,
+ *         the last plan is dropped (the hold command becomes
+ *         DH_MOVE_NONE) and cmd is untouched.
  */
 dh_status dh_queue_target_f32(dh_queue_f32 *qu, const dh_track_f32 *t, float dt, dh_queue_cmd_f32 *cmd);
 
@@ -708,7 +713,8 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, const dh_track_f32 *t, dh_track
  * - joint move: each joint decelerates from its velocity and acceleration
  *   at amax_i (1 - 2^-10) (with jmax: jerk +-jmax_i, acceleration ramped
  *   to -a_p and back, a_p <= amax_i (1 - 2^-10)) and stops within
- *   |v| / a + 3 a / j (|v| / a without jmax) of the stop; never beyond q1;
+ *   v1 / a + 3 a / j, v1 = |v| + a^2 / (2 j) (|v| / a without jmax) of the
+ *   stop, a = amax_i (1 - 2^-10), j = jmax_i; never beyond q1;
  * - path move: s decelerates at the acceleration of its plan (within
  *   lim) and stops within s' / s'' of the stop, never beyond B; the brake
  *   time advances only when the tracker is OK, as the clock.
