@@ -101,6 +101,21 @@ static void check_fd(uint32_t n, const float *vmax, const float *amax, const flo
     }
 }
 
+static dh_queue_f32 keep;
+static dh_queue_item_f32 keep_items[CAP];
+
+static void same(void)
+{
+    DHT_TRUE(memcmp(&keep, &qu, sizeof qu) == 0);
+    DHT_TRUE(memcmp(keep_items, items, sizeof items) == 0);
+}
+
+static void save(void)
+{
+    memcpy(&keep, &qu, sizeof qu);
+    memcpy(keep_items, items, sizeof items);
+}
+
 /* ---- joint queues ------------------------------------------------------ */
 
 typedef struct {
@@ -155,7 +170,6 @@ static void joint_queue_on(const dhs_robot *d)
     float qs[DH_MAX_JOINTS], qstop[DH_MAX_JOINTS], vstop[DH_MAX_JOINTS];
     dh_queue_cmd_f32 cmd;
     dh_queue_report_f32 rep;
-    dh_queue_f32 before;
     uint32_t i;
     float stop_frac;
     long call, stopped_at = -1, resume_at = -1, stop_call = -1;
@@ -169,9 +183,9 @@ static void joint_queue_on(const dhs_robot *d)
     for (k = 0; k < NMOVE; k++)
         DHT_EQ_INT(dh_queue_add_joint_f32(&qu, rob.n, jp.q1[k], jp.vmax, jp.amax, jp.jerk ? jp.jmax : NULL), DH_OK);
     /* full: reported, nothing overwritten */
-    memcpy(&before, &qu, sizeof qu);
+    save();
     DHT_EQ_INT(dh_queue_add_joint_f32(&qu, rob.n, qs, jp.vmax, jp.amax, NULL), DH_ERR_LIMIT);
-    DHT_TRUE(memcmp(&before, &qu, sizeof qu) == 0);
+    same();
     DHT_TRUE(memcmp(items[0].q1, jp.q1[0], rob.n * sizeof(float)) == 0);
     /* a stop at a random time of a random move (the time a fraction of
      * the move's duration, read from the queue: input selection) */
@@ -334,8 +348,8 @@ static void path_queue(void)
     double qa[DH_MAX_JOINTS], qb[DH_MAX_JOINTS], qc[DH_MAX_JOINTS];
     float q0[DH_MAX_JOINTS], qp[DH_MAX_JOINTS], sp[DH_MAX_JOINTS], qcf[DH_MAX_JOINTS], vmax[DH_MAX_JOINTS],
         amax[DH_MAX_JOINTS];
-    dh_mat4_f32 A, B, C, D, Tstop;
-    dh_path_f32 p1, p2;
+    static dh_mat4_f32 A, B, C, D, Tstop; /* off the micro:bit's stack */
+    static dh_path_f32 p1, p2;
     dh_queue_cmd_f32 cmd;
     dh_queue_report_f32 rep;
     dh_track_report_f32 trep;
@@ -443,21 +457,6 @@ static void path_queues(void)
 }
 
 /* ---- errors --------------------------------------------------------------- */
-
-static dh_queue_f32 keep;
-static dh_queue_item_f32 keep_items[CAP];
-
-static void same(void)
-{
-    DHT_TRUE(memcmp(&keep, &qu, sizeof qu) == 0);
-    DHT_TRUE(memcmp(keep_items, items, sizeof items) == 0);
-}
-
-static void save(void)
-{
-    memcpy(&keep, &qu, sizeof qu);
-    memcpy(keep_items, items, sizeof items);
-}
 
 static void queue_bad(void)
 {
