@@ -589,6 +589,7 @@ typedef struct {
     float bj[DH_MAX_JOINTS];       /**< brake: jerk (0: none) */
     float bt[3][DH_MAX_JOINTS];    /**< brake: durations of its three phases */
     float bx[DH_MAX_JOINTS];       /**< brake: distance to rest, at most the distance left */
+    float bend[DH_MAX_JOINTS];     /**< brake: the move's end (q1, or s = 1), never passed */
 } dh_queue_f32;
 
 /** @brief What the caller does this period (dh_queue_target_f32). */

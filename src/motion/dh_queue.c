@@ -165,10 +165,11 @@ dh_status dh_queue_add_path_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh
 static DH_NOINLINE float queue_brake_dist(const dh_queue_f32 *qu, uint32_t i, float tau);
 
 /* the brake of coordinate i from x (position), v, a (signed) within the
- * deceleration A and jerk j (0: none), never beyond rem along the travel
- * (rem >= 0); its duration */
-static DH_NOINLINE float queue_brake_plan(dh_queue_f32 *qu, uint32_t i, float x, float v, float a, float A, float j, float rem)
+ * deceleration A and jerk j (0: none), never beyond end (ahead along the
+ * travel); its duration */
+static DH_NOINLINE float queue_brake_plan(dh_queue_f32 *qu, uint32_t i, float x, float v, float a, float A, float j, float end)
 {
+    const float rem = (end > x) ? end - x : x - end;
     float s, vp, ap, pk, t1 = 0.0f, t2 = 0.0f, t3 = 0.0f, d = 0.0f;
     s = (v > 0.0f) ? 1.0f : ((v < 0.0f) ? -1.0f : 0.0f);
     vp = s * v;
@@ -200,6 +201,7 @@ static DH_NOINLINE float queue_brake_plan(dh_queue_f32 *qu, uint32_t i, float x,
     qu->bt[1][i] = t2;
     qu->bt[2][i] = t3;
     qu->bx[i] = 0.0f;
+    qu->bend[i] = end;
     if (!dh_feq_f32(s, 0.0f)) {
         float e;
         d = t1 + t2 + t3;
@@ -239,13 +241,16 @@ static DH_NOINLINE float queue_brake_dist(const dh_queue_f32 *qu, uint32_t i, fl
  * along the travel, bx exactly from the end of the brake on */
 static DH_NOINLINE float queue_brake_at(const dh_queue_f32 *qu, uint32_t i, float tau)
 {
-    float x = qu->bx[i];
+    float x = qu->bx[i], q;
     if (tau < qu->tbend) {
         x = queue_brake_dist(qu, i, tau);
         if (!(x >= 0.0f)) x = 0.0f;
         if (x > qu->bx[i]) x = qu->bx[i];
     }
-    return qu->bq[i] + qu->bs[i] * x;
+    q = qu->bq[i] + qu->bs[i] * x;
+    /* the rounding of the sum never passes the end */
+    if ((qu->bs[i] > 0.0f && q > qu->bend[i]) || (qu->bs[i] < 0.0f && q < qu->bend[i])) q = qu->bend[i];
+    return q;
 }
 
 /* ---- the running move ----------------------------------------------- */
@@ -512,15 +517,13 @@ static DH_NOINLINE float queue_brake(dh_queue_f32 *qu)
     uint32_t i;
     if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) {
         for (i = 0u; i < qu->mv.n; i++) {
-            const float v = qu->mv.ws[0][i], x = qu->bq[i];
-            const float rem = queue_abs(qu->mv.q1[i] - x);
-            e = queue_brake_plan(qu, i, x, v, qu->mv.ws[1][i], it->amax[i] * QUEUE_MARGIN,
-                                 (it->jerk != 0u) ? it->jmax[i] : 0.0f, rem);
+            e = queue_brake_plan(qu, i, qu->bq[i], qu->mv.ws[0][i], qu->mv.ws[1][i], it->amax[i] * QUEUE_MARGIN,
+                                 (it->jerk != 0u) ? it->jmax[i] : 0.0f, qu->mv.q1[i]);
             if (e > d) d = e;
         }
     } else {
         s = queue_path_s(qu, qu->mv.clock, &sd, &sdd);
-        d = queue_brake_plan(qu, 0u, s, sd, sdd, qu->as, 0.0f, 1.0f - s);
+        d = queue_brake_plan(qu, 0u, s, sd, sdd, qu->as, 0.0f, 1.0f);
     }
     return d;
 }

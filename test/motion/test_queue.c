@@ -4,9 +4,9 @@
  * dh_queue_*) and the tracker's sync (track.h: dh_track_sync_f32), at
  * 1 kHz, seeded random queues.
  *
- * Joint queues on the Puma 560, UR5 and Panda: four joint moves of up to
+ * Joint queues on the Puma 560, UR5 and Panda: three joint moves of up to
  * 30 degrees per joint within random limits (all with jerk limits, or
- * none), run through the caller's loop (target, sync, advance), a fifth
+ * none), run through the caller's loop (target, sync, advance), a fourth
  * append reported full with the queue untouched. Every command is checked
  * by finite differences: each step within vmax dt (plus 2 ulp of q), over
  * windows of W periods the second difference within amax (W dt)^2 and,
@@ -49,11 +49,11 @@
 #include "dhmath/track.h"
 
 #define DT 1e-3f
-#define W 8           /* window of the joint finite differences */
+#define W 5           /* window of the joint finite differences */
 #define NH (3 * W + 1) /* samples kept */
-#define W2 16          /* window of the target's second differences */
-#define CAP 4
-#define NMOVE 4
+#define W2 10          /* window of the target's second differences */
+#define CAP 2
+#define NMOVE 3
 
 static double ulpf(double x)
 {
@@ -62,10 +62,15 @@ static double ulpf(double x)
     return ldexp(1.0, e - 24);
 }
 
-/* state kept off the micro:bit's small stack */
-static dh_robot rob;
-static dh_ikc_model_f32 model;
-static dh_track_f32 trk;
+/* the robot, its model and the tracker live on the stack of each case
+ * (G points at them); the queue and the history are static: the
+ * micro:bit's 16 KiB of RAM hold both only so divided */
+typedef struct {
+    dh_robot r;
+    dh_ikc_model_f32 m;
+    dh_track_f32 t;
+} rig;
+static rig *G;
 static dh_queue_f32 qu;
 static dh_queue_item_f32 items[CAP];
 static float hist[NH][DH_MAX_JOINTS]; /* hist[m]: the command m periods ago */
@@ -101,26 +106,39 @@ static void check_fd(uint32_t n, const float *vmax, const float *amax, const flo
     }
 }
 
-static dh_queue_f32 keep;
-static dh_queue_item_f32 keep_items[CAP];
+/* FNV-1a hash of n bytes: the state before an error, compared after it
+ * (a copy of the queue and its items does not fit the micro:bit's RAM) */
+static uint64_t hash_bytes(const void *p, size_t n)
+{
+    const unsigned char *b = (const unsigned char *)p;
+    uint64_t h = 14695981039346656037ull;
+    size_t i;
+    for (i = 0; i < n; i++) h = (h ^ b[i]) * 1099511628211ull;
+    return h;
+}
+
+static uint64_t keep;
+
+static uint64_t state_hash(void)
+{
+    return hash_bytes(&qu, sizeof qu) ^ (hash_bytes(items, sizeof items) * 31u);
+}
 
 static void same(void)
 {
-    DHT_TRUE(memcmp(&keep, &qu, sizeof qu) == 0);
-    DHT_TRUE(memcmp(keep_items, items, sizeof items) == 0);
+    DHT_TRUE(state_hash() == keep);
 }
 
 static void save(void)
 {
-    memcpy(&keep, &qu, sizeof qu);
-    memcpy(keep_items, items, sizeof items);
+    keep = state_hash();
 }
 
 /* ---- joint queues ------------------------------------------------------ */
 
 typedef struct {
     float q1[NMOVE][DH_MAX_JOINTS];
-    float q0[NMOVE][DH_MAX_JOINTS]; /* where each move started (its first period's q before) */
+    float q0[DH_MAX_JOINTS]; /* where the running move started */
     float vmax[DH_MAX_JOINTS], amax[DH_MAX_JOINTS], jmax[DH_MAX_JOINTS];
     int jerk;
 } jplan;
@@ -135,7 +153,7 @@ static void draw_joint_queue(const dh_robot *r, const float *qs)
     for (i = 0; i < r->n; i++) {
         jp.vmax[i] = (float)dht_rand_uniform(60.0, 250.0);
         jp.amax[i] = (float)dht_rand_uniform(100.0, 5000.0);
-        jp.jmax[i] = (float)dht_rand_uniform(2000.0, 100000.0);
+        jp.jmax[i] = (float)dht_rand_uniform(10000.0, 100000.0);
     }
     for (k = 0; k < NMOVE; k++)
         for (i = 0; i < r->n; i++) {
@@ -174,38 +192,39 @@ static void joint_queue_on(const dhs_robot *d)
     float stop_frac;
     long call, stopped_at = -1, resume_at = -1, stop_call = -1;
     int next = 0, stop_move, resume_in_brake, k;
-    DHT_EQ_INT(dhs_build(d, &rob), DH_OK);
-    dhs_random_q_robot(&rob, qd);
-    for (i = 0; i < rob.n; i++) qs[i] = (float)qd[i];
-    DHT_EQ_INT(dh_track_init_f32(&trk, &rob, NULL, qs, DT), DH_OK);
-    draw_joint_queue(&rob, qs);
+    DHT_EQ_INT(dhs_build(d, &G->r), DH_OK);
+    dhs_random_q_robot(&G->r, qd);
+    for (i = 0; i < G->r.n; i++) qs[i] = (float)qd[i];
+    DHT_EQ_INT(dh_track_init_f32(&G->t, &G->r, NULL, qs, DT), DH_OK);
+    draw_joint_queue(&G->r, qs);
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
-    for (k = 0; k < NMOVE; k++)
-        DHT_EQ_INT(dh_queue_add_joint_f32(&qu, rob.n, jp.q1[k], jp.vmax, jp.amax, jp.jerk ? jp.jmax : NULL), DH_OK);
-    /* full: reported, nothing overwritten */
+    for (k = 0; k < CAP; k++)
+        DHT_EQ_INT(dh_queue_add_joint_f32(&qu, G->r.n, jp.q1[k], jp.vmax, jp.amax, jp.jerk ? jp.jmax : NULL), DH_OK);
+    /* full: reported, nothing overwritten (the rest is appended as the
+     * queue runs) */
     save();
-    DHT_EQ_INT(dh_queue_add_joint_f32(&qu, rob.n, qs, jp.vmax, jp.amax, NULL), DH_ERR_LIMIT);
+    DHT_EQ_INT(dh_queue_add_joint_f32(&qu, G->r.n, qs, jp.vmax, jp.amax, NULL), DH_ERR_LIMIT);
     same();
-    DHT_TRUE(memcmp(items[0].q1, jp.q1[0], rob.n * sizeof(float)) == 0);
+    DHT_TRUE(memcmp(items[0].q1, jp.q1[0], G->r.n * sizeof(float)) == 0);
     /* a stop at a random time of a random move (the time a fraction of
      * the move's duration, read from the queue: input selection) */
     stop_move = (int)(dht_rand_u32() % NMOVE);
     stop_frac = (float)dht_rand_uniform(0.02, 0.98);
     resume_in_brake = dht_rand_uniform(0.0, 1.0) < 0.3;
     nhist = 0;
-    hist_push(qs, rob.n);
-    memcpy(jp.q0[0], qs, sizeof qs);
+    hist_push(qs, G->r.n);
+    memcpy(jp.q0, qs, sizeof qs);
     for (call = 0; call < 200000; call++) {
-        DHT_EQ_INT(dh_queue_target_f32(&qu, &trk, DT, &cmd), DH_OK);
+        DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, DT, &cmd), DH_OK);
         DHT_EQ_INT(cmd.kind, DH_MOVE_JOINT);
-        DHT_EQ_INT(dh_track_sync_f32(&trk, cmd.q), DH_OK);
-        DHT_EQ_INT(dh_queue_advance_f32(&qu, &trk, DH_TRACK_OK, &rep), DH_OK);
-        hist_push(cmd.q, rob.n);
-        check_fd(rob.n, jp.vmax, jp.amax, jp.jerk ? jp.jmax : NULL, call);
+        DHT_EQ_INT(dh_track_sync_f32(&G->t, cmd.q), DH_OK);
+        DHT_EQ_INT(dh_queue_advance_f32(&qu, &G->t, DH_TRACK_OK, &rep), DH_OK);
+        hist_push(cmd.q, G->r.n);
+        check_fd(G->r.n, jp.vmax, jp.amax, jp.jerk ? jp.jmax : NULL, call);
         DHT_TRUE_MSG((int)rep.seq == next, "call %ld: move %u runs, %d expected", call, (unsigned)rep.seq, next);
         if (stopped_at >= 0 && resume_at < 0) {
             /* still while stopped */
-            for (i = 0; i < rob.n; i++) DHT_EQ_F32_BITS(cmd.q[i], qstop[i]);
+            for (i = 0; i < G->r.n; i++) DHT_EQ_F32_BITS(cmd.q[i], qstop[i]);
             if (call >= stopped_at + 5) {
                 DHT_EQ_INT(dh_queue_resume_f32(&qu), DH_OK);
                 resume_at = call;
@@ -214,30 +233,35 @@ static void joint_queue_on(const dhs_robot *d)
         if (rep.stopped && stopped_at < 0) {
             double T = 0.0;
             stopped_at = call;
-            for (i = 0; i < rob.n; i++) {
+            for (i = 0; i < G->r.n; i++) {
                 double tb, xb;
-                const double dir = (double)jp.q1[next][i] - jp.q0[next][i];
+                const double dir = (double)jp.q1[next][i] - jp.q0[i];
                 stop_bound(i, vstop[i], &tb, &xb);
                 if (tb > T) T = tb;
                 DHT_TRUE_MSG(fabs((double)cmd.q[i] - qstop[i]) <= xb + 4 * ulpf(180.0),
                              "joint %u stopped %.9g from the stop, bound %.9g", (unsigned)i,
                              fabs((double)cmd.q[i] - qstop[i]), xb);
-                DHT_TRUE_MSG(((double)jp.q1[next][i] - cmd.q[i]) * dir >= 0.0, "joint %u beyond q1", (unsigned)i);
+                DHT_TRUE_MSG(((double)jp.q1[next][i] - cmd.q[i]) * dir >= 0.0, "joint %u beyond q1: q0 %.9g q1 %.9g stop %.9g rest %.9g", (unsigned)i, (double)jp.q0[i], (double)jp.q1[next][i], (double)qstop[i], (double)cmd.q[i]);
                 qstop[i] = cmd.q[i];
             }
             DHT_TRUE_MSG((double)(call - stop_call) * DT <= T + 2.0 * DT, "rest after %ld periods, bound %.9g s",
                          call - stop_call, T);
         }
         if (rep.done) {
-            for (i = 0; i < rob.n; i++) DHT_EQ_F32_BITS(cmd.q[i], jp.q1[next][i]);
+            for (i = 0; i < G->r.n; i++) DHT_EQ_F32_BITS(cmd.q[i], jp.q1[next][i]);
             next++;
-            if (next < NMOVE) memcpy(jp.q0[next], cmd.q, sizeof cmd.q);
+            if (next < NMOVE) memcpy(jp.q0, cmd.q, sizeof jp.q0);
+            if (k < NMOVE) {
+                DHT_EQ_INT(dh_queue_add_joint_f32(&qu, G->r.n, jp.q1[k], jp.vmax, jp.amax, jp.jerk ? jp.jmax : NULL),
+                           DH_OK);
+                k++;
+            }
             DHT_EQ_INT(rep.last, next == NMOVE);
             if (next == NMOVE) break;
         }
         if (next == stop_move && stop_call < 0 && !rep.done && rep.clock >= stop_frac * qu.mv.dur) {
             stop_call = call;
-            for (i = 0; i < rob.n; i++) {
+            for (i = 0; i < G->r.n; i++) {
                 qstop[i] = cmd.q[i];
                 vstop[i] = (float)(((double)hist[0][i] - hist[1][i]) / DT);
             }
@@ -258,7 +282,10 @@ static void joint_queues(void)
 {
     static const dhs_robot *const robots[3] = { &dhs_puma560_m, &dhs_ur5_m, &dhs_panda_m };
     int it, n = (int)DHT_ITER(15);
+    rig g;
+    G = &g;
     for (it = 0; it < n; it++) joint_queue_on(robots[it % 3]);
+    G = NULL;
 }
 
 /* ---- path queues on the UR5 ------------------------------------------- */
@@ -282,7 +309,7 @@ static void safe_q(double *q)
 
 static void frame_of(const double *q, dh_mat4_f32 *T)
 {
-    dhs_target_f32(&rob, q, T);
+    dhs_target_f32(&G->r, q, T);
 }
 
 static double dist3f(const float *a, const float *b)
@@ -307,7 +334,7 @@ static double axis_dist(const dh_mat4_f32 *A, const dh_mat4_f32 *B)
 static void check_track(const float *q, float *qp, float *sp, int *have, long call)
 {
     uint32_t i;
-    for (i = 0; i < rob.n; i++) {
+    for (i = 0; i < G->r.n; i++) {
         const double s = (double)q[i] - qp[i], A = (double)AMAX_R * DT * DT;
         DHT_TRUE_MSG(fabs(s) <= (double)VMAX_R * DT, "call %ld: joint %u step %.9g", call, (unsigned)i, s);
         if (*have)
@@ -373,33 +400,33 @@ static void path_queue(void)
     } while (axis_dist(&A, &B) < 0.3 || axis_dist(&C, &D) < 0.3);
     DHT_EQ_INT(dh_path_line_f32(&p1, &A, &B), DH_OK);
     DHT_EQ_INT(dh_path_line_f32(&p2, &C, &D), DH_OK);
-    for (i = 0; i < rob.n; i++) {
+    for (i = 0; i < G->r.n; i++) {
         q0[i] = (float)qa[i];
         qp[i] = q0[i];
         qcf[i] = (float)qc[i];
         vmax[i] = VMAX_R;
         amax[i] = AMAX_R;
     }
-    DHT_EQ_INT(dh_track_init_f32(&trk, &rob, &model, q0, DT), DH_OK);
+    DHT_EQ_INT(dh_track_init_f32(&G->t, &G->r, &G->m, q0, DT), DH_OK);
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
     DHT_EQ_INT(dh_queue_add_path_f32(&qu, &p1, &LIM), DH_OK);
-    DHT_EQ_INT(dh_queue_add_joint_f32(&qu, rob.n, qcf, vmax, amax, NULL), DH_OK);
-    DHT_EQ_INT(dh_queue_add_path_f32(&qu, &p2, &LIM), DH_OK);
+    DHT_EQ_INT(dh_queue_add_joint_f32(&qu, G->r.n, qcf, vmax, amax, NULL), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_f32(&qu, &p2, &LIM), DH_ERR_LIMIT);
     ntp = 0;
     for (call = 0; call < 100000; call++) {
         dh_track_state st = DH_TRACK_OK;
         const dh_path_f32 *pp = (next == 0) ? &p1 : &p2;
-        DHT_EQ_INT(dh_queue_target_f32(&qu, &trk, DT, &cmd), DH_OK);
+        DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, DT, &cmd), DH_OK);
         if (cmd.kind == DH_MOVE_JOINT) {
-            DHT_EQ_INT(dh_track_sync_f32(&trk, cmd.q), DH_OK);
+            DHT_EQ_INT(dh_track_sync_f32(&G->t, cmd.q), DH_OK);
             ntp = 0;
         } else {
             DHT_EQ_INT(cmd.kind, DH_MOVE_PATH);
-            DHT_EQ_INT(dh_track_step_f32(&trk, &cmd.T, trk.q, &trep), DH_OK);
+            DHT_EQ_INT(dh_track_step_f32(&G->t, &cmd.T, G->t.q, &trep), DH_OK);
             st = trep.state;
         }
-        DHT_EQ_INT(dh_queue_advance_f32(&qu, &trk, st, &rep), DH_OK);
-        check_track(trk.q, qp, sp, &have, call);
+        DHT_EQ_INT(dh_queue_advance_f32(&qu, &G->t, st, &rep), DH_OK);
+        check_track(G->t.q, qp, sp, &have, call);
         if (cmd.kind == DH_MOVE_PATH && st == DH_TRACK_OK && !rep.held)
             check_target(&cmd.T, call);
         else if (cmd.kind == DH_MOVE_PATH)
@@ -419,8 +446,10 @@ static void path_queue(void)
         }
         if (rep.done) {
             if (cmd.kind == DH_MOVE_PATH) DHT_TRUE(memcmp(&cmd.T, &pp->B, sizeof cmd.T) == 0);
-            else for (i = 0; i < rob.n; i++) DHT_EQ_F32_BITS(cmd.q[i], qcf[i]);
+            else for (i = 0; i < G->r.n; i++) DHT_EQ_F32_BITS(cmd.q[i], qcf[i]);
             next++;
+            /* the second line appended while the queue runs */
+            if (next == 1) DHT_EQ_INT(dh_queue_add_path_f32(&qu, &p2, &LIM), DH_OK);
             DHT_EQ_INT(rep.last, next == 3);
             if (next == 3) break;
         }
@@ -450,10 +479,13 @@ static void path_queue(void)
 static void path_queues(void)
 {
     int it, n = (int)DHT_ITER(10);
-    DHT_EQ_INT(dhs_build(&dhs_ur5_m, &rob), DH_OK);
-    for (it = 0; it < 6; it++) DHT_EQ_INT(dh_robot_set_rates_f32(&rob, (uint32_t)it, VMAX_R, AMAX_R), DH_OK);
-    DHT_EQ_INT(dh_ikc_analyse_f32(&rob, &model), DH_OK);
+    rig g;
+    G = &g;
+    DHT_EQ_INT(dhs_build(&dhs_ur5_m, &G->r), DH_OK);
+    for (it = 0; it < 6; it++) DHT_EQ_INT(dh_robot_set_rates_f32(&G->r, (uint32_t)it, VMAX_R, AMAX_R), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_f32(&G->r, &G->m), DH_OK);
     for (it = 0; it < n; it++) path_queue();
+    G = NULL;
 }
 
 /* ---- errors --------------------------------------------------------------- */
@@ -467,16 +499,18 @@ static void queue_bad(void)
     dh_mat4_f32 A, B;
     dh_cart_limits_f32 lim = LIM;
     double qd[DH_MAX_JOINTS] = { 10, -80, 80, 10, 80, 10 };
-    static dh_track_f32 tkeep;
+    uint64_t tkeep;
     uint32_t i;
+    rig g;
+    G = &g;
     memset(items, 0, sizeof items);
-    DHT_EQ_INT(dhs_build(&dhs_ur5_m, &rob), DH_OK);
+    DHT_EQ_INT(dhs_build(&dhs_ur5_m, &G->r), DH_OK);
     for (i = 0; i < 6; i++) {
         q[i] = (float)qd[i];
         v[i] = 100.0f;
         a[i] = 1000.0f;
     }
-    DHT_EQ_INT(dh_track_init_f32(&trk, &rob, NULL, q, DT), DH_OK);
+    DHT_EQ_INT(dh_track_init_f32(&G->t, &G->r, NULL, q, DT), DH_OK);
     memset(&qu, 0x5a, sizeof qu);
     save();
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, 0), DH_ERR_ARG);
@@ -497,9 +531,9 @@ static void queue_bad(void)
     bad[2] = -INFINITY;
     DHT_EQ_INT(dh_queue_add_joint_f32(&qu, 6, q, v, a, bad), DH_ERR_NAN);
     same();
-    dhs_target_f32(&rob, qd, &A);
+    dhs_target_f32(&G->r, qd, &A);
     qd[0] += 5.0;
-    dhs_target_f32(&rob, qd, &B);
+    dhs_target_f32(&G->r, qd, &B);
     DHT_EQ_INT(dh_path_line_f32(&p, &A, &B), DH_OK);
     memset(&none, 0, sizeof none);
     DHT_EQ_INT(dh_queue_add_path_f32(&qu, &none, &LIM), DH_ERR_ARG);
@@ -509,70 +543,71 @@ static void queue_bad(void)
     DHT_EQ_INT(dh_queue_add_path_f32(&qu, &p, &lim), DH_ERR_NAN);
     same();
     /* period calls */
-    DHT_EQ_INT(dh_queue_advance_f32(&qu, &trk, DH_TRACK_OK, &rep), DH_ERR_ARG);
-    DHT_EQ_INT(dh_queue_target_f32(&qu, &trk, 0.0f, &cmd), DH_ERR_ARG);
-    DHT_EQ_INT(dh_queue_target_f32(&qu, &trk, -DT, &cmd), DH_ERR_ARG);
-    DHT_EQ_INT(dh_queue_target_f32(&qu, &trk, NAN, &cmd), DH_ERR_NAN);
-    DHT_EQ_INT(dh_queue_target_f32(&qu, &trk, INFINITY, &cmd), DH_ERR_NAN);
+    DHT_EQ_INT(dh_queue_advance_f32(&qu, &G->t, DH_TRACK_OK, &rep), DH_ERR_ARG);
+    DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, 0.0f, &cmd), DH_ERR_ARG);
+    DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, -DT, &cmd), DH_ERR_ARG);
+    DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, NAN, &cmd), DH_ERR_NAN);
+    DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, INFINITY, &cmd), DH_ERR_NAN);
     same();
     /* an empty queue: nothing to command */
-    DHT_EQ_INT(dh_queue_target_f32(&qu, &trk, DT, &cmd), DH_OK);
+    DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, DT, &cmd), DH_OK);
     DHT_EQ_INT(cmd.kind, DH_MOVE_NONE);
     save();
-    DHT_EQ_INT(dh_queue_target_f32(&qu, &trk, DT, &cmd), DH_ERR_ARG);
+    DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, DT, &cmd), DH_ERR_ARG);
     DHT_EQ_INT(dh_queue_stop_f32(&qu), DH_ERR_ARG);
     DHT_EQ_INT(dh_queue_resume_f32(&qu), DH_ERR_ARG);
-    DHT_EQ_INT(dh_queue_advance_f32(&qu, &trk, (dh_track_state)3, &rep), DH_ERR_ARG);
+    DHT_EQ_INT(dh_queue_advance_f32(&qu, &G->t, (dh_track_state)3, &rep), DH_ERR_ARG);
     same();
-    DHT_EQ_INT(dh_queue_advance_f32(&qu, &trk, DH_TRACK_OK, &rep), DH_OK);
+    DHT_EQ_INT(dh_queue_advance_f32(&qu, &G->t, DH_TRACK_OK, &rep), DH_OK);
     DHT_EQ_INT(rep.last, 1);
     DHT_EQ_INT(rep.done, 0);
     /* a joint move for 5 joints on a 6-joint robot */
     DHT_EQ_INT(dh_queue_add_joint_f32(&qu, 5, q, v, a, NULL), DH_OK);
     save();
-    DHT_EQ_INT(dh_queue_target_f32(&qu, &trk, DT, &cmd), DH_ERR_ARG);
+    DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, DT, &cmd), DH_ERR_ARG);
     same();
     /* a tracker configuration that is not finite */
-    memcpy(&tkeep, &trk, sizeof trk);
-    trk.q[1] = NAN;
-    DHT_EQ_INT(dh_queue_target_f32(&qu, &trk, DT, &cmd), DH_ERR_NAN);
+    tkeep = hash_bytes(&G->t, sizeof G->t);
+    G->t.q[1] = NAN;
+    DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, DT, &cmd), DH_ERR_NAN);
     same();
-    memcpy(&trk, &tkeep, sizeof trk);
+    G->t.q[1] = q[1];
     /* sync: not finite, outside the limits: the tracker untouched */
     memcpy(bad, q, sizeof bad);
     bad[3] = NAN;
-    DHT_EQ_INT(dh_track_sync_f32(&trk, bad), DH_ERR_NAN);
-    DHT_TRUE(memcmp(&tkeep, &trk, sizeof trk) == 0);
-    bad[3] = rob.joint[3].qmax + 1.0f;
-    DHT_EQ_INT(dh_track_sync_f32(&trk, bad), DH_ERR_LIMIT);
-    DHT_TRUE(memcmp(&tkeep, &trk, sizeof trk) == 0);
+    DHT_EQ_INT(dh_track_sync_f32(&G->t, bad), DH_ERR_NAN);
+    DHT_TRUE(hash_bytes(&G->t, sizeof G->t) == tkeep);
+    bad[3] = G->r.joint[3].qmax + 1.0f;
+    DHT_EQ_INT(dh_track_sync_f32(&G->t, bad), DH_ERR_LIMIT);
+    DHT_TRUE(hash_bytes(&G->t, sizeof G->t) == tkeep);
     /* sync: the velocity from the last configuration, FK at the new one */
     memcpy(bad, q, sizeof bad);
     bad[0] += 0.01f;
-    DHT_EQ_INT(dh_track_sync_f32(&trk, bad), DH_OK);
-    DHT_NEAR(trk.v[0], ((double)bad[0] - q[0]) / DT, 1e-4);
-    DHT_EQ_F32_BITS(trk.v[1], 0.0f);
-    DHT_EQ_F32_BITS(trk.q[0], bad[0]);
+    DHT_EQ_INT(dh_track_sync_f32(&G->t, bad), DH_OK);
+    DHT_NEAR(G->t.v[0], ((double)bad[0] - q[0]) / DT, 1e-4);
+    DHT_EQ_F32_BITS(G->t.v[1], 0.0f);
+    DHT_EQ_F32_BITS(G->t.q[0], bad[0]);
     {
         dhr_mat4 R;
         double qq[DH_MAX_JOINTS];
         for (i = 0; i < 6; i++) qq[i] = bad[i];
-        dhs_fk_ref_f32(&rob, qq, NULL, &R);
-        for (i = 0; i < 3; i++) DHT_NEAR(trk.T.m[3][i], R.m[3][i], 1e-5);
+        dhs_fk_ref_f32(&G->r, qq, NULL, &R);
+        for (i = 0; i < 3; i++) DHT_NEAR(G->t.T.m[3][i], R.m[3][i], 1e-5);
     }
     /* a stop with nothing running is immediate; resume runs again */
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
     DHT_EQ_INT(dh_queue_stop_f32(&qu), DH_OK);
     DHT_EQ_INT(qu.phase, DH_QUEUE_STOPPED);
     DHT_EQ_INT(dh_queue_add_joint_f32(&qu, 6, q, v, a, NULL), DH_OK);
-    DHT_EQ_INT(dh_queue_target_f32(&qu, &trk, DT, &cmd), DH_OK);
+    DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, DT, &cmd), DH_OK);
     DHT_EQ_INT(cmd.kind, DH_MOVE_NONE);
-    DHT_EQ_INT(dh_queue_advance_f32(&qu, &trk, DH_TRACK_OK, &rep), DH_OK);
+    DHT_EQ_INT(dh_queue_advance_f32(&qu, &G->t, DH_TRACK_OK, &rep), DH_OK);
     DHT_EQ_INT(rep.stopped, 1);
     DHT_EQ_INT(dh_queue_resume_f32(&qu), DH_OK);
     DHT_EQ_INT(qu.phase, DH_QUEUE_RUN);
-    DHT_EQ_INT(dh_queue_target_f32(&qu, &trk, DT, &cmd), DH_OK);
+    DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, DT, &cmd), DH_OK);
     DHT_EQ_INT(cmd.kind, DH_MOVE_JOINT);
+    G = NULL;
 }
 
 static const dht_case cases[] = {
