@@ -576,7 +576,8 @@ typedef struct {
     uint32_t braked;               /**< 1 when the running move's state is its brake's (after a stop) */
     dh_move_f32 mv;                /**< plan of the running move (or of the last one completed) */
     float s0;                      /**< path move: s at the plan's start (its profile runs from s0 to 1) */
-    float vs, as;                  /**< path move: limits of ds/dt, d2s/dt2 of its first plan */
+    float vs;                      /**< path move: limit of ds/dt (its first plan's peak) */
+    float as;                      /**< path move: limit of d2s/dt2 (its first plan's peak) */
     float tb;                      /**< time into the brake (s) */
     float tbend;                   /**< duration of the brake (s) */
     float dt;                      /**< control period of the pending target call (s) */
@@ -656,22 +657,18 @@ dh_status dh_queue_add_path_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh
  * @brief Begins a control period: the command of the running move after
  *        this period (joint move) or the frame to track this period (path
  *        move), starting the next queued move when the last one is done.
- * The period, in the caller's loop:
- *   dh_queue_target_f32(qu, t, dt, &cmd);
- *   kind JOINT: dh_track_sync_f32(t, cmd.q), state = DH_TRACK_OK;
- *   kind PATH:  dh_track_step_f32(t, &cmd.T, q, &trep), state = trep.state;
- *   dh_queue_advance_f32(qu, state, &rep).
- * A joint move after another move starts from t->q once the tracker is
- * at rest: every |t->v[i]| <= amax_i dt / 2 (amax of the move), so its
- * first step differs from the tracker's last by at most amax_i dt^2; until
- * then the last move's command at rest is repeated (a path's B, or t->q).
- * The first move starts at once from t->q. A path move starts as
- * dh_move_path_f32's. Joint commands are within the move's
- * limits as dh_move_joint_step_f32's; targets as dh_move_target_f32's.
- * With no move to run (empty queue, or stopped at a move not started)
- * kind is DH_MOVE_NONE and the caller commands nothing new; stopped
- * within a move, the move's command at rest is repeated.
- * @param qu queue; t the caller's tracker (read only: q, v, r->n).
+ * A period: this call; for kind JOINT dh_track_sync_f32(t, cmd.q) (state
+ * OK), for kind PATH dh_track_step_f32(t, &cmd.T, ...) (its state); then
+ * dh_queue_advance_f32(qu, t, state, &rep). A joint move after another
+ * move starts from t->q once every |t->v[i]| <= amax_i dt / 2 (so its
+ * first step is within amax_i dt^2 of the last); until then, and while
+ * stopped or with nothing queued, the last move's command at rest is
+ * repeated (a path's frame, or t->q after a joint move; DH_MOVE_NONE
+ * before any move). The first move starts at once from t->q, a path move
+ * as dh_move_path_f32's. Commands keep the move's limits as
+ * dh_move_joint_step_f32's and dh_move_target_f32's do.
+ * @param qu queue.
+ * @param t the caller's tracker (read only: q, v, r->n).
  * @param dt control period (s), finite, > 0 (the tracker's dt).
  * @param cmd output command.
  * @return DH_OK; DH_ERR_NAN for a NaN/Inf dt or a t->q that is not
