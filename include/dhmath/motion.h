@@ -659,7 +659,7 @@ dh_status dh_queue_add_path_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh
  *        move), starting the next queued move when the last one is done.
  * A period: this call; for kind JOINT dh_track_sync_f32(t, cmd.q) (state
  * OK), for kind PATH dh_track_step_f32(t, &cmd.T, ...) (its state); then
- * dh_queue_advance_f32(qu, t, state, &rep). A joint move after another
+ * dh_queue_advance_f32(qu, state, &rep). A joint move after another
  * move starts from t->q once every |t->v[i]| <= amax_i dt / 2 (so its
  * first step is within amax_i dt^2 of the last); until then, and while
  * stopped or with nothing queued, the last move's command at rest is
@@ -694,14 +694,12 @@ dh_status dh_queue_target_f32(dh_queue_f32 *qu, const dh_track_f32 *t, float dt,
  * rest sets phase DH_QUEUE_STOPPED (stopped 1), or resumes at once when
  * dh_queue_resume_f32 was called during it.
  * @param qu queue with a pending target call.
- * @param t the caller's tracker after this period's step or sync.
  * @param state a dh_track_state value.
  * @param rep report of the period.
  * @return DH_OK; DH_ERR_ARG for no pending target call or a state that is
  *         no dh_track_state. On error qu and rep are untouched.
  */
-dh_status dh_queue_advance_f32(dh_queue_f32 *qu, const dh_track_f32 *t, dh_track_state state,
-                               dh_queue_report_f32 *rep);
+dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_report_f32 *rep);
 
 /**
  * @brief Stops: brings the running move to rest along its own path and

@@ -486,12 +486,11 @@ static void queue_period(dh_queue_f32 *qu, uint32_t what, dh_track_state state, 
     }
 }
 
-dh_status dh_queue_advance_f32(dh_queue_f32 *qu, const dh_track_f32 *t, dh_track_state state,
-                               dh_queue_report_f32 *rep)
+dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_report_f32 *rep)
 {
     uint32_t what;
     int held, done;
-    DH_ASSERT(qu != NULL && t != NULL && rep != NULL);
+    DH_ASSERT(qu != NULL && rep != NULL);
     if (qu->pend == 0u) return DH_ERR_ARG;
     if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
     what = qu->pend;

@@ -218,7 +218,7 @@ static void joint_queue_on(const dhs_robot *d)
         DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, DT, &cmd), DH_OK);
         DHT_EQ_INT(cmd.kind, DH_MOVE_JOINT);
         DHT_EQ_INT(dh_track_sync_f32(&G->t, cmd.q), DH_OK);
-        DHT_EQ_INT(dh_queue_advance_f32(&qu, &G->t, DH_TRACK_OK, &rep), DH_OK);
+        DHT_EQ_INT(dh_queue_advance_f32(&qu, DH_TRACK_OK, &rep), DH_OK);
         hist_push(cmd.q, G->r.n);
         check_fd(G->r.n, jp.vmax, jp.amax, jp.jerk ? jp.jmax : NULL, call);
         DHT_TRUE_MSG((int)rep.seq == next, "call %ld: move %u runs, %d expected", call, (unsigned)rep.seq, next);
@@ -425,7 +425,7 @@ static void path_queue(void)
             DHT_EQ_INT(dh_track_step_f32(&G->t, &cmd.T, G->t.q, &trep), DH_OK);
             st = trep.state;
         }
-        DHT_EQ_INT(dh_queue_advance_f32(&qu, &G->t, st, &rep), DH_OK);
+        DHT_EQ_INT(dh_queue_advance_f32(&qu, st, &rep), DH_OK);
         check_track(G->t.q, qp, sp, &have, call);
         if (cmd.kind == DH_MOVE_PATH && st == DH_TRACK_OK && !rep.held)
             check_target(&cmd.T, call);
@@ -543,7 +543,7 @@ static void queue_bad(void)
     DHT_EQ_INT(dh_queue_add_path_f32(&qu, &p, &lim), DH_ERR_NAN);
     same();
     /* period calls */
-    DHT_EQ_INT(dh_queue_advance_f32(&qu, &G->t, DH_TRACK_OK, &rep), DH_ERR_ARG);
+    DHT_EQ_INT(dh_queue_advance_f32(&qu, DH_TRACK_OK, &rep), DH_ERR_ARG);
     DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, 0.0f, &cmd), DH_ERR_ARG);
     DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, -DT, &cmd), DH_ERR_ARG);
     DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, NAN, &cmd), DH_ERR_NAN);
@@ -556,9 +556,9 @@ static void queue_bad(void)
     DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, DT, &cmd), DH_ERR_ARG);
     DHT_EQ_INT(dh_queue_stop_f32(&qu), DH_ERR_ARG);
     DHT_EQ_INT(dh_queue_resume_f32(&qu), DH_ERR_ARG);
-    DHT_EQ_INT(dh_queue_advance_f32(&qu, &G->t, (dh_track_state)3, &rep), DH_ERR_ARG);
+    DHT_EQ_INT(dh_queue_advance_f32(&qu, (dh_track_state)3, &rep), DH_ERR_ARG);
     same();
-    DHT_EQ_INT(dh_queue_advance_f32(&qu, &G->t, DH_TRACK_OK, &rep), DH_OK);
+    DHT_EQ_INT(dh_queue_advance_f32(&qu, DH_TRACK_OK, &rep), DH_OK);
     DHT_EQ_INT(rep.last, 1);
     DHT_EQ_INT(rep.done, 0);
     /* a joint move for 5 joints on a 6-joint robot */
@@ -601,7 +601,7 @@ static void queue_bad(void)
     DHT_EQ_INT(dh_queue_add_joint_f32(&qu, 6, q, v, a, NULL), DH_OK);
     DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, DT, &cmd), DH_OK);
     DHT_EQ_INT(cmd.kind, DH_MOVE_NONE);
-    DHT_EQ_INT(dh_queue_advance_f32(&qu, &G->t, DH_TRACK_OK, &rep), DH_OK);
+    DHT_EQ_INT(dh_queue_advance_f32(&qu, DH_TRACK_OK, &rep), DH_OK);
     DHT_EQ_INT(rep.stopped, 1);
     DHT_EQ_INT(dh_queue_resume_f32(&qu), DH_OK);
     DHT_EQ_INT(qu.phase, DH_QUEUE_RUN);
