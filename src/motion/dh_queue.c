@@ -132,7 +132,8 @@ dh_status dh_queue_add_joint_f32(dh_queue_f32 *qu, uint32_t n, const float *q1, 
     }
     it->path.kind = (uint32_t)DH_PATH_LINE;
     it->path.length = 0.0f;
-    it->jerk = (jmax != NULL) ? 1u : 0u;
+    it->jerk = 0u;
+    if (jmax != NULL) it->jerk = 1u;
     it->n = n;
     it->kind = (uint32_t)DH_MOVE_JOINT;
     qu->count++;
@@ -217,22 +218,22 @@ static DH_NOINLINE float queue_brake_dist(const dh_queue_f32 *qu, uint32_t i, fl
 {
     const float j = qu->bj[i], pk = qu->bap[i];
     const float t1 = qu->bt[0][i], t2 = qu->bt[1][i], t3 = qu->bt[2][i];
-    float x = 0.0f, v = qu->bv[i], a = qu->ba[i], u;
+    float x = 0.0f, v = qu->bv[i], a = qu->ba[i], u, r = tau;
     if (dh_feq_f32(qu->bs[i], 0.0f)) return 0.0f;
     /* phase 1: jerk -j from a to -pk */
-    u = (tau < t1) ? tau : t1;
+    u = (r < t1) ? r : t1;
     x = v * u + 0.5f * a * u * u - j * u * u * u / 6.0f;
-    if (tau <= t1) return x;
+    if (r <= t1) return x;
     v = v + a * t1 - 0.5f * j * t1 * t1;
-    tau -= t1;
+    r -= t1;
     /* phase 2: -pk */
-    u = (tau < t2) ? tau : t2;
+    u = (r < t2) ? r : t2;
     x += v * u - 0.5f * pk * u * u;
-    if (tau <= t2) return x;
+    if (r <= t2) return x;
     v -= pk * t2;
-    tau -= t2;
+    r -= t2;
     /* phase 3: jerk +j from -pk to 0 */
-    u = (tau < t3) ? tau : t3;
+    u = (r < t3) ? r : t3;
     x += v * u - 0.5f * pk * u * u + j * u * u * u / 6.0f;
     return x;
 }
@@ -357,11 +358,13 @@ static DH_NOINLINE dh_status queue_start_joint(dh_queue_f32 *qu, const dh_queue_
     qu->mv.kind = (uint32_t)DH_MOVE_NONE;
     for (i = 0u; i < it->n && st == DH_OK; i++) {
         st = queue_joint_d(&qu->mv, it, i, q0[i], &d);
-        if (st == DH_OK && it->jerk != 0u)
-            st = dh_profile_scurve_f32(&qu->mv.prof[i], d, it->vmax[i] * QUEUE_MARGIN, it->amax[i] * QUEUE_MARGIN,
-                                       it->jmax[i]);
-        else if (st == DH_OK)
-            st = dh_profile_trap_f32(&qu->mv.prof[i], d, it->vmax[i] * QUEUE_MARGIN, it->amax[i] * QUEUE_MARGIN);
+        if (st == DH_OK) {
+            if (it->jerk != 0u)
+                st = dh_profile_scurve_f32(&qu->mv.prof[i], d, it->vmax[i] * QUEUE_MARGIN,
+                                           it->amax[i] * QUEUE_MARGIN, it->jmax[i]);
+            else
+                st = dh_profile_trap_f32(&qu->mv.prof[i], d, it->vmax[i] * QUEUE_MARGIN, it->amax[i] * QUEUE_MARGIN);
+        }
         if (st == DH_OK && qu->mv.prof[i].T > T) T = qu->mv.prof[i].T;
     }
     for (i = 0u; i < it->n && st == DH_OK; i++) st = dh_profile_stretch_f32(&qu->mv.prof[i], T);
@@ -460,7 +463,8 @@ static void queue_rest(dh_queue_f32 *qu)
 /* advances the pending period what; sets *held and *done */
 static void queue_period(dh_queue_f32 *qu, uint32_t what, dh_track_state state, int *held, int *done)
 {
-    const int ok = (state == DH_TRACK_OK) ? 1 : 0;
+    int ok = 0;
+    if (state == DH_TRACK_OK) ok = 1;
     *held = 0;
     *done = 0;
     if (what == QUEUE_JOINT) {
@@ -501,8 +505,10 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
     if (done != 0) queue_pop(qu);
     rep->held = held;
     rep->done = done;
-    rep->last = (qu->count == 0u) ? 1 : 0;
-    rep->stopped = (qu->phase == (uint32_t)DH_QUEUE_STOPPED) ? 1 : 0;
+    rep->last = 0;
+    if (qu->count == 0u) rep->last = 1;
+    rep->stopped = 0;
+    if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) rep->stopped = 1;
     return DH_OK;
 }
 
@@ -556,6 +562,8 @@ dh_status dh_queue_resume_f32(dh_queue_f32 *qu)
     } else if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) {
         qu->phase = (uint32_t)DH_QUEUE_RUN;
         if (qu->braked != 0u) qu->started = 0u;
+    } else {
+        /* running: nothing to resume */
     }
     return DH_OK;
 }
