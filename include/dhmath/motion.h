@@ -12,6 +12,10 @@
  *   dh_move.c        dh_move_joint_f32, dh_move_joint_step_f32,
  *                    dh_move_path_f32, dh_move_path_jerk_f32,
  *                    dh_move_target_f32, dh_move_advance_f32
+ *   dh_queue.c       dh_queue_init_f32, dh_queue_add_joint_f32,
+ *                    dh_queue_add_path_f32, dh_queue_target_f32,
+ *                    dh_queue_advance_f32, dh_queue_stop_f32,
+ *                    dh_queue_resume_f32
  */
 /**
  * @file motion.h
@@ -580,6 +584,218 @@ dh_status dh_move_target_f32(const dh_move_f32 *mv, dh_mat4_f32 *T);
  *         move. On error mv and rep are untouched.
  */
 dh_status dh_move_advance_f32(dh_move_f32 *mv, float dt, dh_track_state state, dh_move_report_f32 *rep);
+
+/* ======================================================================
+ * Move queue, stop and resume (one call pair per control period)
+ * ==================================================================== */
+
+/** @brief The state of a dh_queue_f32 (its phase field). */
+typedef enum {
+    DH_QUEUE_RUN = 0,     /**< moves run (or the queue is empty and the next one appended starts) */
+    DH_QUEUE_BRAKE = 1,   /**< the running move is being brought to rest after dh_queue_stop_f32 */
+    DH_QUEUE_STOPPED = 2  /**< at rest after a stop; dh_queue_resume_f32 continues */
+} dh_queue_phase;
+
+/**
+ * @brief One queued move as its constructor takes it (read-only for the
+ *        user): a joint move to q1 (dh_move_joint_f32 without q0: it
+ *        starts where the robot is when it starts) or a path move
+ *        (dh_move_path_f32, planned when appended).
+ */
+typedef struct {
+    dh_path_f32 path;              /**< path move: the path */
+    dh_profile_f32 prof;           /**< path move: its profile of s (dh_path_move_f32) */
+    float q1[DH_MAX_JOINTS];       /**< joint move: end configuration */
+    float vmax[DH_MAX_JOINTS];     /**< joint move: velocity limits */
+    float amax[DH_MAX_JOINTS];     /**< joint move: acceleration limits */
+    float jmax[DH_MAX_JOINTS];     /**< joint move: jerk limits (when jerk is 1) */
+    uint32_t jerk;                 /**< joint move: 1 when jmax was given */
+    uint32_t n;                    /**< joint move: number of joints */
+    uint32_t kind;                 /**< DH_MOVE_JOINT or DH_MOVE_PATH */
+} dh_queue_item_f32;
+
+/**
+ * @brief A queue of moves in a caller-owned array of items, and the move
+ *        it is running (read-only for the user, who reads count, seq and
+ *        phase). Written by dh_queue_init_f32.
+ */
+typedef struct {
+    dh_queue_item_f32 *items;      /**< the caller's array (ring buffer) */
+    uint32_t cap;                  /**< its number of items */
+    uint32_t head;                 /**< index of the oldest queued move (the running one) */
+    uint32_t count;                /**< queued moves, the running one included */
+    uint32_t seq;                  /**< moves completed since dh_queue_init_f32: the running move's number */
+    uint32_t phase;                /**< a dh_queue_phase value */
+    uint32_t started;              /**< 1 when mv holds the running move's plan */
+    uint32_t last;                 /**< kind of the last move completed (DH_MOVE_NONE before any) */
+    uint32_t resume;               /**< 1 when a resume waits for the brake to reach rest */
+    uint32_t pend;                 /**< 1 between dh_queue_target_f32 and dh_queue_advance_f32 */
+    uint32_t n;                    /**< joints of the robot (tracker) of the last target call */
+    uint32_t braked;               /**< 1 when the running move's state is its brake's (after a stop) */
+    dh_move_f32 mv;                /**< plan of the running move (or of the last one completed) */
+    float s0;                      /**< path move: s at the plan's start (its profile runs from s0 to 1) */
+    float vs;                      /**< path move: limit of ds/dt (its first plan's peak) */
+    float as;                      /**< path move: limit of d2s/dt2 (its first plan's peak) */
+    float tb;                      /**< time into the brake (s) */
+    float tbend;                   /**< duration of the brake (s) */
+    float dt;                      /**< control period of the pending target call (s) */
+    float next;                    /**< the clock, or brake time, the pending period advances to */
+    float bq[DH_MAX_JOINTS];       /**< brake: joint (path move: [0] is s) at its start */
+    float bs[DH_MAX_JOINTS];       /**< brake: direction of travel (+1, -1; 0 at rest) */
+    float bv[DH_MAX_JOINTS];       /**< brake: |velocity| at its start */
+    float ba[DH_MAX_JOINTS];       /**< brake: acceleration at its start, along the travel */
+    float bap[DH_MAX_JOINTS];      /**< brake: peak deceleration */
+    float bj[DH_MAX_JOINTS];       /**< brake: jerk (0: none) */
+    float bt[3][DH_MAX_JOINTS];    /**< brake: durations of its three phases */
+    float bx[DH_MAX_JOINTS];       /**< brake: distance to rest, at most the distance left */
+    float bend[DH_MAX_JOINTS];     /**< brake: the move's end (q1, or s = 1), never passed */
+} dh_queue_f32;
+
+/** @brief What the caller does this period (dh_queue_target_f32). */
+typedef struct {
+    uint32_t kind;              /**< DH_MOVE_JOINT: command q (then dh_track_sync_f32); DH_MOVE_PATH: track T; DH_MOVE_NONE: nothing to do */
+    float q[DH_MAX_JOINTS];     /**< joint command (n joints) */
+    dh_mat4_f32 T;              /**< frame to track */
+} dh_queue_cmd_f32;
+
+/** @brief What one period of the queue did. */
+typedef struct {
+    uint32_t seq;   /**< number of the move that ran this period (moves completed before it) */
+    float clock;    /**< its clock after the period (s); the brake's time while braking */
+    int held;       /**< 1 when the clock held (path move, tracker not OK, or waiting for rest) */
+    int done;       /**< 1 when the move completed this period */
+    int last;       /**< 1 when the queue is empty after this period (the last move done) */
+    int stopped;    /**< 1 when at rest after a stop (phase DH_QUEUE_STOPPED) */
+} dh_queue_report_f32;
+
+/**
+ * @brief Starts an empty queue over the caller's array of cap items
+ *        (phase DH_QUEUE_RUN, seq 0, nothing planned).
+ * @param qu output queue.
+ * @param items the caller's array (not copied; owned by the queue until
+ *        it is initialised again).
+ * @param cap its number of items, >= 1.
+ * @return DH_OK; DH_ERR_ARG for cap == 0 (qu untouched).
+ */
+dh_status dh_queue_init_f32(dh_queue_f32 *qu, dh_queue_item_f32 *items, uint32_t cap);
+
+/**
+ * @brief Appends a joint move of n joints to q1 within vmax, amax (and
+ *        jmax when not NULL), as dh_move_joint_f32 plans it when it
+ *        starts: from the tracker's configuration then (the previous
+ *        move's end: q1 of a joint move, the configuration the tracker
+ *        reached at a path move's B).
+ * @param qu queue from dh_queue_init_f32.
+ * @param n number of joints, 1..DH_MAX_JOINTS (the tracker's robot's).
+ * @param q1 end configuration (n, finite, within the robot's limits: the
+ *        tracker's configuration is synchronised to every command).
+ * @param vmax, amax, jmax limits (n each, finite, > 0); jmax may be NULL.
+ * @return DH_OK; DH_ERR_ARG for n outside 1..DH_MAX_JOINTS or a limit
+ *         <= 0; DH_ERR_NAN for a NaN/Inf value; DH_ERR_LIMIT when the
+ *         queue holds cap moves already (the queue's limit: nothing is
+ *         overwritten). On error qu and its items are untouched.
+ */
+dh_status dh_queue_add_joint_f32(dh_queue_f32 *qu, uint32_t n, const float *q1, const float *vmax,
+                                 const float *amax, const float *jmax);
+
+/**
+ * @brief Appends a Cartesian move along p within lim (dh_move_path_f32):
+ *        it starts at p->A (the clock holds until the tracker is OK
+ *        there).
+ * @param qu queue from dh_queue_init_f32.
+ * @param p path from dh_path_line_f32 or dh_path_arc_f32 (copied).
+ * @param lim Cartesian limits, each finite and > 0 (copied).
+ * @return DH_OK; DH_ERR_NAN, DH_ERR_ARG, DH_ERR_OVERFLOW as
+ *         dh_move_path_f32; DH_ERR_LIMIT when the queue is full. On error
+ *         qu and its items are untouched.
+ */
+dh_status dh_queue_add_path_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim);
+
+/**
+ * @brief Begins a control period: the command of the running move after
+ *        this period (joint move) or the frame to track this period (path
+ *        move), starting the next queued move when the last one is done.
+ * A period: this call; for kind JOINT dh_track_sync_f32(t, cmd.q) (state
+ * OK), for kind PATH dh_track_step_f32(t, &cmd.T, ...) (its state); then
+ * dh_queue_advance_f32(qu, state, &rep). A joint move after another
+ * move starts from t->q once every |t->v[i]| <= amax_i dt / 2 (so its
+ * first step is within amax_i dt^2 of the last); until then, and while
+ * stopped or with nothing queued, the last move's command at rest is
+ * repeated (a path's frame, or t->q after a joint move; DH_MOVE_NONE
+ * before any move). The first move starts at once from t->q, a path move
+ * as dh_move_path_f32's. Commands keep the move's limits as
+ * dh_move_joint_step_f32's and dh_move_target_f32's do.
+ * @param qu queue.
+ * @param t the caller's tracker (read only: q, v, r->n).
+ * @param dt control period (s), finite, > 0 (the tracker's dt).
+ * @param cmd output command.
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf dt or a t->q that is not
+ *         finite; DH_ERR_ARG for dt <= 0, a target call already pending,
+ *         or a joint move for another number of joints than t's robot
+ *         has: qu and cmd untouched. DH_ERR_OVERFLOW (or another status
+ *         of dh_profile_scurve_f32, _trap_f32, _stretch_f32) when a joint
+ *         move cannot be planned from t->q: it stays queued, unstarted,
+ *         the last plan is dropped (the hold command becomes
+ *         DH_MOVE_NONE) and cmd is untouched.
+ */
+dh_status dh_queue_target_f32(dh_queue_f32 *qu, const dh_track_f32 *t, float dt, dh_queue_cmd_f32 *cmd);
+
+/**
+ * @brief Ends the control period begun by dh_queue_target_f32: state is
+ *        the tracker's state of this period (DH_TRACK_OK after a joint
+ *        command or DH_MOVE_NONE; it is read for path moves only).
+ * Joint move: its clock (or brake) advances to the commanded time. Path
+ * move: as dh_move_advance_f32 (the clock advances only on OK, so a
+ * lagging tracker holds it; the brake's time likewise). A move is done
+ * when its clock reached its duration (a path move: and the tracker OK at
+ * B), and is then removed from the queue (seq + 1); a brake that reached
+ * rest sets phase DH_QUEUE_STOPPED (stopped 1), or resumes at once when
+ * dh_queue_resume_f32 was called during it.
+ * @param qu queue with a pending target call.
+ * @param state a dh_track_state value.
+ * @param rep report of the period.
+ * @return DH_OK; DH_ERR_ARG for no pending target call or a state that is
+ *         no dh_track_state. On error qu and rep are untouched.
+ */
+dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_report_f32 *rep);
+
+/**
+ * @brief Stops: brings the running move to rest along its own path and
+ *        within its own limits, from the state it has after the last
+ *        period (no jump in position, velocity, and with jerk limits in
+ *        acceleration):
+ * - joint move: each joint decelerates from its velocity and acceleration
+ *   at amax_i (1 - 2^-10) (with jmax: jerk +-jmax_i, acceleration ramped
+ *   to -a_p and back, a_p <= amax_i (1 - 2^-10)) and stops within
+ *   v1 / a + 3 a / j, v1 = |v| + a^2 / (2 j) (|v| / a without jmax) of the
+ *   stop, a = amax_i (1 - 2^-10), j = jmax_i; never beyond q1;
+ * - path move: s decelerates at the acceleration of its plan (within
+ *   lim) and stops within s' / s'' of the stop, never beyond B; the brake
+ *   time advances only when the tracker is OK, as the clock.
+ * A move not started, held at its start (clock 0) or at its end, or no
+ * move at all, is at rest: the stop is immediate (phase STOPPED). A stop
+ * while braking or stopped changes nothing. Queued moves stay queued and
+ * do not start until dh_queue_resume_f32; moves appended while stopped
+ * are queued likewise.
+ * @param qu queue from dh_queue_init_f32 (not between target and advance).
+ * @return DH_OK; DH_ERR_ARG for a call between dh_queue_target_f32 and
+ *         dh_queue_advance_f32 (qu untouched).
+ */
+dh_status dh_queue_stop_f32(dh_queue_f32 *qu);
+
+/**
+ * @brief Resumes after a stop: the stopped move is planned again from
+ *        rest where it stopped to its end within the same limits (a joint
+ *        move by dh_move_joint_f32 to q1, a path move by a trapezoid of s
+ *        to 1 within the first plan's rates of s), so it ends exactly at
+ *        its end (q1 bit for bit; B), and then the rest of the queue runs.
+ * Called while braking, the move resumes when the brake reaches rest;
+ * called while running, it changes nothing.
+ * @param qu queue from dh_queue_init_f32 (not between target and advance).
+ * @return DH_OK; DH_ERR_ARG for a call between dh_queue_target_f32 and
+ *         dh_queue_advance_f32 (qu untouched).
+ */
+dh_status dh_queue_resume_f32(dh_queue_f32 *qu);
 
 #ifdef __cplusplus
 }

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Index: the functions of track.h by source file (src/track/).
- *   dh_track.c    dh_track_init_f32, dh_track_step_f32
+ *   dh_track.c    dh_track_init_f32, dh_track_step_f32, dh_track_sync_f32
  *   dh_track_q.c  dh_track_init_q, dh_track_step_q
  */
 /**
@@ -139,6 +139,23 @@ dh_status dh_track_init_f32(dh_track_f32 *t, const dh_robot *r, const dh_ikc_mod
  *   pos_err and rot_err 0.
  */
 dh_status dh_track_step_f32(dh_track_f32 *t, const dh_mat4_f32 *target, float *q_out, dh_track_report_f32 *rep);
+
+/**
+ * @brief Sets the tracker's configuration to q, commanded by something
+ *        else this period (a joint move): t->v = (q - t->q) / t->dt (its
+ *        velocity from the last configuration), t->q = q, and the Jacobian
+ *        and FK at q, so that the next dh_track_step_f32 continues from q
+ *        with its guarantees (rate, acceleration, braking) measured from
+ *        this velocity.
+ * It checks no rate or acceleration: the command's own limits are the
+ * caller's (dh_move_joint_step_f32, dh_queue_target_f32 keep them).
+ * @param t tracker from dh_track_init_f32.
+ * @param q n joint values within the joint limits (may alias t->q).
+ * @return DH_OK; DH_ERR_NAN (q not finite); DH_ERR_LIMIT (q outside the
+ *         limits); DH_ERR_OVERFLOW (FK of q overflows). On error t->q and
+ *         t->v are untouched and the Jacobian and FK stay at t->q.
+ */
+dh_status dh_track_sync_f32(dh_track_f32 *t, const float *q);
 
 /* ---- fixed point (integer only) ----------------------------------------- */
 

@@ -553,3 +553,30 @@ dh_status dh_track_step_f32(dh_track_f32 *t, const dh_mat4_f32 *target, float *q
     for (i = 0u; i < t->r->n; i++) q_out[i] = t->q[i];
     return tst;
 }
+
+/* The checks come before any write, and t->J and t->T are recomputed at
+ * the new configuration (the step reads them at t->q); a failed Jacobian
+ * recomputes them at the old one, which init or a step had computed. The
+ * old configuration is kept in t->lo, which every step writes first. */
+dh_status dh_track_sync_f32(dh_track_f32 *t, const float *q)
+{
+    uint32_t i;
+    dh_status st;
+    DH_ASSERT(t != NULL);
+    DH_ASSERT(t->r != NULL);
+    DH_ASSERT(q != NULL);
+    DH_ASSERT(t->r->n >= 1u && t->r->n <= (uint32_t)DH_MAX_JOINTS);
+    st = dh_robot_check_limits_f32(t->r, q);
+    if (st != DH_OK) return st;
+    for (i = 0u; i < t->r->n; i++) t->lo[i] = t->q[i];
+    if (dh_kin_jacobian_f32_(t->r, q, t->J, &t->T, t->ws) != DH_OK) {
+        (void)dh_kin_jacobian_f32_(t->r, t->q, t->J, &t->T, t->ws);
+        return DH_ERR_OVERFLOW;
+    }
+    for (i = 0u; i < t->r->n; i++) {
+        const float v = (q[i] - t->lo[i]) / t->dt;
+        t->v[i] = dh_isfinite_f32(v) ? v : 0.0f;
+        t->q[i] = q[i];
+    }
+    return DH_OK;
+}

@@ -240,8 +240,16 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_move_path_jerk_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_move_target_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_move_advance_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_queue_init_f32, g_path, 100000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_queue_add_joint_f32, g_path, 100000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_queue_add_path_f32, g_path, 100000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_queue_target_f32, g_path, 100000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_queue_advance_f32, g_path, 100000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_queue_stop_f32, g_path, 100000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_queue_resume_f32, g_path, 100000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_track_init_f32, g_robot, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_track_step_f32, g_robot, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_track_sync_f32, g_robot, DIFF_IK_COUNT, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_manipulability_q, g_robot, 100000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_dls_step_q, g_robot, 100000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_track_init_q, g_robot, 100000, DIFF_OUT_FRAMES, C_BITS) \

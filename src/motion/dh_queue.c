@@ -1,0 +1,569 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * dh_queue.c - a queue of moves in the caller's array, run one control
+ * period at a time, with stop and resume (contract in motion.h, method in
+ * docs/design.md, "Motion").
+ *
+ * Ring. items[head] is the running move; appending writes
+ * items[(head + count) % cap] and never overwrites a queued move. A move
+ * is planned when it starts (into qu->mv, which keeps the plan of the
+ * last move after it completes, for the hold command below): a joint
+ * move by dh_move_joint_f32 from the tracker's configuration, a path move
+ * by dh_move_path_f32, whose s runs from s0 (0, or where a stop left it)
+ * to 1 along a trapezoid of s.
+ *
+ * Rest between moves. Every move is rest to rest. A joint move starts
+ * only when the tracker's last velocity is within amax dt / 2 per joint,
+ * so its first step is within amax dt^2 of the last one; until then the
+ * last plan's command at rest is repeated (the path's frame, or the
+ * tracker's own configuration after a joint move), which brings the
+ * tracker to rest within its own bounds.
+ *
+ * Brake. Each coordinate (a joint, or s of a path) brakes from its
+ * velocity v and acceleration a (taken along the travel, v >= 0) in three
+ * phases: jerk -j until the acceleration is -ap, -ap held, jerk +j back
+ * to 0 exactly as the velocity reaches 0, where
+ * ap = min(A, sqrt(j v + a^2 / 2)) is the least peak deceleration that
+ * stops in time (the shortest stop within A and j). Without a jerk limit
+ * the deceleration A is applied at once (v / A, distance v^2 / (2 A)).
+ * The distance is at most the one the plan had left (the plan itself is
+ * one way to stop within the same limits), and is capped there against
+ * rounding, so a brake never passes the move's end.
+ */
+#include "dhmath/motion.h"
+#include "../internal/dh_build.h"
+#include "../internal/dh_floatops.h"
+#include "motion_impl.h"
+
+/* 1 - 2^-10: dh_move_joint_f32's planning margin */
+#define QUEUE_MARGIN 0.9990234375f
+
+/* what the pending period does (dh_queue_f32.pend - 1) */
+#define QUEUE_HOLD 1u
+#define QUEUE_JOINT 2u
+#define QUEUE_PATH 3u
+#define QUEUE_BJOINT 4u
+#define QUEUE_BPATH 5u
+
+static float queue_abs(float x)
+{
+    return (x < 0.0f) ? -x : x;
+}
+
+/* 1 when every x[i] (i < n) is finite and > 0 */
+static int queue_positive(const float *x, uint32_t n)
+{
+    uint32_t i;
+    for (i = 0u; i < n; i++)
+        if (!(x[i] > 0.0f)) return 0;
+    return 1;
+}
+
+/* 1 when every x[i] (i < n) is finite */
+static int queue_finite(const float *x, uint32_t n)
+{
+    uint32_t i;
+    for (i = 0u; i < n; i++)
+        if (!dh_isfinite_f32(x[i])) return 0;
+    return 1;
+}
+
+/* the status of a joint move's values: NaN/Inf first, then the limits */
+static dh_status queue_joint_args(uint32_t n, const float *q1, const float *vmax, const float *amax,
+                                  const float *jmax)
+{
+    if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    if (!queue_finite(q1, n) || !queue_finite(vmax, n) || !queue_finite(amax, n)) return DH_ERR_NAN;
+    if (jmax != NULL && !queue_finite(jmax, n)) return DH_ERR_NAN;
+    if (!queue_positive(vmax, n) || !queue_positive(amax, n)) return DH_ERR_ARG;
+    return (jmax == NULL || queue_positive(jmax, n)) ? DH_OK : DH_ERR_ARG;
+}
+
+static dh_queue_item_f32 *queue_slot(dh_queue_f32 *qu, uint32_t k)
+{
+    return &qu->items[(qu->head + k) % qu->cap];
+}
+
+dh_status dh_queue_init_f32(dh_queue_f32 *qu, dh_queue_item_f32 *items, uint32_t cap)
+{
+    DH_ASSERT(qu != NULL && items != NULL);
+    if (cap == 0u) return DH_ERR_ARG;
+    qu->items = items;
+    qu->cap = cap;
+    qu->head = 0u;
+    qu->count = 0u;
+    qu->seq = 0u;
+    qu->phase = (uint32_t)DH_QUEUE_RUN;
+    qu->started = 0u;
+    qu->last = (uint32_t)DH_MOVE_NONE;
+    qu->resume = 0u;
+    qu->pend = 0u;
+    qu->n = 0u;
+    qu->mv.kind = (uint32_t)DH_MOVE_NONE;
+    qu->mv.clock = 0.0f;
+    qu->mv.dur = 0.0f;
+    qu->s0 = 0.0f;
+    qu->vs = 0.0f;
+    qu->as = 0.0f;
+    qu->tb = 0.0f;
+    qu->tbend = 0.0f;
+    qu->dt = 0.0f;
+    qu->next = 0.0f;
+    qu->braked = 0u;
+    return DH_OK;
+}
+
+dh_status dh_queue_add_joint_f32(dh_queue_f32 *qu, uint32_t n, const float *q1, const float *vmax,
+                                 const float *amax, const float *jmax)
+{
+    dh_queue_item_f32 *it;
+    uint32_t i;
+    dh_status st;
+    DH_ASSERT(qu != NULL && q1 != NULL && vmax != NULL && amax != NULL);
+    st = queue_joint_args(n, q1, vmax, amax, jmax);
+    if (st != DH_OK) return st;
+    if (qu->count >= qu->cap) return DH_ERR_LIMIT;
+    it = queue_slot(qu, qu->count);
+    for (i = 0u; i < n; i++) {
+        it->q1[i] = q1[i];
+        it->vmax[i] = vmax[i];
+        it->amax[i] = amax[i];
+        it->jmax[i] = (jmax != NULL) ? jmax[i] : 0.0f;
+    }
+    it->path.kind = (uint32_t)DH_PATH_LINE;
+    it->path.length = 0.0f;
+    it->jerk = 0u;
+    if (jmax != NULL) it->jerk = 1u;
+    it->n = n;
+    it->kind = (uint32_t)DH_MOVE_JOINT;
+    qu->count++;
+    return DH_OK;
+}
+
+dh_status dh_queue_add_path_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim)
+{
+    dh_queue_item_f32 *it;
+    dh_profile_f32 prof;
+    dh_status st;
+    DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
+    /* the checks of dh_move_path_f32 */
+    st = dh_path_move_f32(&prof, p, lim);
+    if (st != DH_OK) return st;
+    if (!dh_motion_path_ok_f32_(p)) return DH_ERR_ARG;
+    if (qu->count >= qu->cap) return DH_ERR_LIMIT;
+    it = queue_slot(qu, qu->count);
+    it->path = *p;
+    it->prof = prof;
+    it->jerk = 0u;
+    it->n = 0u;
+    it->kind = (uint32_t)DH_MOVE_PATH;
+    qu->count++;
+    return DH_OK;
+}
+
+/* ---- brake of one coordinate ------------------------------------------ */
+
+static DH_NOINLINE float queue_brake_dist(const dh_queue_f32 *qu, uint32_t i, float tau);
+
+/* the brake of coordinate i from x (position), v, a (signed) within the
+ * deceleration A and jerk j (0: none), never beyond end (ahead along the
+ * travel); its duration */
+static DH_NOINLINE float queue_brake_plan(dh_queue_f32 *qu, uint32_t i, float x, float v, float a, float A, float j, float end)
+{
+    const float rem = (end > x) ? end - x : x - end;
+    float s, vp, ap, pk, t1 = 0.0f, t2 = 0.0f, t3 = 0.0f, d = 0.0f;
+    s = (v > 0.0f) ? 1.0f : ((v < 0.0f) ? -1.0f : 0.0f);
+    vp = s * v;
+    ap = s * a;
+    pk = 0.0f;
+    if (!dh_feq_f32(s, 0.0f) && A > 0.0f) {
+        if (j > 0.0f) {
+            float v1;
+            pk = dh_sqrt_f32(j * vp + 0.5f * ap * ap);
+            if (pk > A) pk = A;
+            if (pk < -ap) pk = -ap; /* only by rounding: the plan never decelerates faster than it can stop */
+            t1 = (ap + pk) / j;
+            v1 = vp + ap * t1 - 0.5f * j * t1 * t1;
+            t2 = (v1 - 0.5f * pk * pk / j) / pk;
+            if (!(t2 > 0.0f)) t2 = 0.0f;
+            t3 = pk / j;
+        } else {
+            pk = A;
+            t2 = vp / A;
+        }
+    }
+    qu->bq[i] = x;
+    qu->bs[i] = s;
+    qu->bv[i] = vp;
+    qu->ba[i] = ap;
+    qu->bap[i] = pk;
+    qu->bj[i] = j;
+    qu->bt[0][i] = t1;
+    qu->bt[1][i] = t2;
+    qu->bt[2][i] = t3;
+    qu->bx[i] = 0.0f;
+    qu->bend[i] = end;
+    if (!dh_feq_f32(s, 0.0f)) {
+        float e;
+        d = t1 + t2 + t3;
+        e = queue_brake_dist(qu, i, d);
+        if (!(e >= 0.0f)) e = 0.0f;
+        qu->bx[i] = (e < rem) ? e : rem;
+    }
+    return d;
+}
+
+/* distance of coordinate i's brake at time tau (>= 0), before the cap */
+static DH_NOINLINE float queue_brake_dist(const dh_queue_f32 *qu, uint32_t i, float tau)
+{
+    const float j = qu->bj[i], pk = qu->bap[i];
+    const float t1 = qu->bt[0][i], t2 = qu->bt[1][i], t3 = qu->bt[2][i];
+    float x = 0.0f, v = qu->bv[i], a = qu->ba[i], u, r = tau;
+    if (dh_feq_f32(qu->bs[i], 0.0f)) return 0.0f;
+    /* phase 1: jerk -j from a to -pk */
+    u = (r < t1) ? r : t1;
+    x = v * u + 0.5f * a * u * u - j * u * u * u / 6.0f;
+    if (r <= t1) return x;
+    v = v + a * t1 - 0.5f * j * t1 * t1;
+    r -= t1;
+    /* phase 2: -pk */
+    u = (r < t2) ? r : t2;
+    x += v * u - 0.5f * pk * u * u;
+    if (r <= t2) return x;
+    v -= pk * t2;
+    r -= t2;
+    /* phase 3: jerk +j from -pk to 0 */
+    u = (r < t3) ? r : t3;
+    x += v * u - 0.5f * pk * u * u + j * u * u * u / 6.0f;
+    return x;
+}
+
+/* coordinate i's position at brake time tau: within [0, bx] of the start
+ * along the travel, bx exactly from the end of the brake on */
+static DH_NOINLINE float queue_brake_at(const dh_queue_f32 *qu, uint32_t i, float tau)
+{
+    float x = qu->bx[i], q;
+    if (tau < qu->tbend) {
+        x = queue_brake_dist(qu, i, tau);
+        if (!(x >= 0.0f)) x = 0.0f;
+        if (x > qu->bx[i]) x = qu->bx[i];
+    }
+    q = qu->bq[i] + qu->bs[i] * x;
+    /* the rounding of the sum never passes the end */
+    if ((qu->bs[i] > 0.0f && q > qu->bend[i]) || (qu->bs[i] < 0.0f && q < qu->bend[i])) q = qu->bend[i];
+    return q;
+}
+
+/* ---- the running move ----------------------------------------------- */
+
+/* s of the path plan at clock c (s0 + the profile, 1 at the end of a plan
+ * that moves), with its rate and acceleration */
+static float queue_path_s(const dh_queue_f32 *qu, float c, float *sd, float *sdd)
+{
+    float p, s;
+    (void)dh_profile_eval_f32(&qu->mv.prof[0], c, &p, sd, sdd);
+    s = qu->s0 + p;
+    if ((c >= qu->mv.dur && !dh_feq_f32(qu->mv.prof[0].d, 0.0f)) || s > 1.0f) s = 1.0f;
+    return s;
+}
+
+/* s where the path move is now: on its brake after a stop, else at its clock */
+static DH_NOINLINE float queue_path_now(const dh_queue_f32 *qu)
+{
+    float sd, sdd;
+    if (qu->braked != 0u) return queue_brake_at(qu, 0u, qu->tb);
+    return queue_path_s(qu, qu->mv.clock, &sd, &sdd);
+}
+
+/* 1 when the tracker is at rest for the joint move it: every
+ * |v_i| <= amax_i dt / 2 */
+static int queue_at_rest(const dh_track_f32 *t, const dh_queue_item_f32 *it, float dt)
+{
+    uint32_t i;
+    for (i = 0u; i < it->n; i++)
+        if (!(queue_abs(t->v[i]) <= 0.5f * it->amax[i] * dt)) return 0;
+    return 1;
+}
+
+/* plans the path move it, from its profile of s (made when appended), or
+ * from where a brake left it to 1 within that profile's rates of s */
+static DH_NOINLINE dh_status queue_start_path(dh_queue_f32 *qu, const dh_queue_item_f32 *it)
+{
+    dh_move_f32 *mv = &qu->mv;
+    dh_status st;
+    float s0 = 0.0f;
+    if (qu->braked != 0u) s0 = qu->bq[0] + qu->bx[0];
+    qu->vs = it->prof.v;
+    qu->as = it->prof.a;
+    mv->kind = (uint32_t)DH_MOVE_NONE;
+    mv->prof[0] = it->prof;
+    if (s0 > 0.0f && qu->vs > 0.0f && qu->as > 0.0f) {
+        st = dh_profile_trap_f32(&mv->prof[0], (s0 < 1.0f) ? 1.0f - s0 : 0.0f, qu->vs, qu->as);
+        if (st != DH_OK) return st;
+    } else {
+        s0 = 0.0f;
+    }
+    qu->s0 = (s0 < 1.0f) ? s0 : 1.0f;
+    mv->path = it->path;
+    mv->n = 0u;
+    mv->dur = mv->prof[0].T;
+    mv->clock = 0.0f;
+    mv->kind = (uint32_t)DH_MOVE_PATH;
+    return DH_OK;
+}
+
+/* the distance of joint i of the joint move it from q0 into *d (and the
+ * endpoints into the plan); DH_ERR_OVERFLOW when it is not finite */
+static DH_NOINLINE dh_status queue_joint_d(dh_move_f32 *mv, const dh_queue_item_f32 *it, uint32_t i, float q0, float *d)
+{
+    *d = it->q1[i] - q0;
+    mv->q0[i] = q0;
+    mv->q1[i] = it->q1[i];
+    return dh_isfinite_f32(*d) ? DH_OK : DH_ERR_OVERFLOW;
+}
+
+/* the joint plan's end: every profile stretched to T (longest) */
+static DH_NOINLINE void queue_joint_end(dh_queue_f32 *qu, uint32_t n, float T)
+{
+    qu->mv.n = n;
+    qu->mv.dur = T;
+    qu->mv.clock = 0.0f;
+    qu->mv.kind = (uint32_t)DH_MOVE_JOINT;
+}
+
+/* 1 when the head move is due to start this period (a joint move after a
+ * plan waits for the tracker to be at rest); DH_ERR_ARG into *st for a
+ * joint move of another joint count than the tracker's */
+static DH_NOINLINE int queue_due(const dh_queue_f32 *qu, const dh_track_f32 *t, float dt, dh_status *st)
+{
+    const dh_queue_item_f32 *it = &qu->items[qu->head];
+    *st = DH_OK;
+    if (qu->phase != (uint32_t)DH_QUEUE_RUN || qu->count == 0u || qu->started != 0u) return 0;
+    if (it->kind != (uint32_t)DH_MOVE_JOINT) return 1;
+    if (it->n != t->r->n) {
+        *st = DH_ERR_ARG;
+        return 0;
+    }
+    return (qu->mv.kind == (uint32_t)DH_MOVE_NONE) || queue_at_rest(t, it, dt);
+}
+
+/* Plans the joint move it from q0 as dh_move_joint_f32 does: each joint's
+ * time-optimal profile within the limits less 2^-10, all stretched to the
+ * longest. The profile calls are made from here, one frame above them. */
+static DH_NOINLINE dh_status queue_start_joint(dh_queue_f32 *qu, const dh_queue_item_f32 *it, const float *q0)
+{
+    dh_status st = DH_OK;
+    float T = 0.0f, d = 0.0f;
+    uint32_t i;
+    qu->mv.kind = (uint32_t)DH_MOVE_NONE;
+    for (i = 0u; i < it->n && st == DH_OK; i++) {
+        st = queue_joint_d(&qu->mv, it, i, q0[i], &d);
+        if (st == DH_OK) {
+            if (it->jerk != 0u)
+                st = dh_profile_scurve_f32(&qu->mv.prof[i], d, it->vmax[i] * QUEUE_MARGIN,
+                                           it->amax[i] * QUEUE_MARGIN, it->jmax[i]);
+            else
+                st = dh_profile_trap_f32(&qu->mv.prof[i], d, it->vmax[i] * QUEUE_MARGIN, it->amax[i] * QUEUE_MARGIN);
+        }
+        if (st == DH_OK && qu->mv.prof[i].T > T) T = qu->mv.prof[i].T;
+    }
+    for (i = 0u; i < it->n && st == DH_OK; i++) st = dh_profile_stretch_f32(&qu->mv.prof[i], T);
+    if (st == DH_OK) queue_joint_end(qu, it->n, T);
+    return st;
+}
+
+/* what this period does (QUEUE_*) */
+static uint32_t queue_what(const dh_queue_f32 *qu)
+{
+    if (qu->phase == (uint32_t)DH_QUEUE_BRAKE)
+        return (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) ? QUEUE_BJOINT : QUEUE_BPATH;
+    if (qu->phase != (uint32_t)DH_QUEUE_RUN || qu->count == 0u || qu->started == 0u) return QUEUE_HOLD;
+    return (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) ? QUEUE_JOINT : QUEUE_PATH;
+}
+
+/* the joint command of this period for what (a joint plan, or none) */
+static DH_NOINLINE void queue_joint_cmd(dh_queue_f32 *qu, const dh_track_f32 *t, uint32_t what, float dt,
+                                        dh_queue_cmd_f32 *cmd)
+{
+    uint32_t i;
+    qu->next = 0.0f;
+    cmd->kind = (uint32_t)DH_MOVE_JOINT;
+    if (what == QUEUE_JOINT) {
+        qu->next = (qu->mv.clock + dt < qu->mv.dur) ? qu->mv.clock + dt : qu->mv.dur;
+        (void)dh_joint_move_eval_f32(qu->mv.prof, qu->mv.n, qu->mv.q0, qu->mv.q1, qu->next, cmd->q, qu->mv.ws[0],
+                                     qu->mv.ws[1]);
+    } else if (what == QUEUE_BJOINT) {
+        qu->next = (qu->tb + dt < qu->tbend) ? qu->tb + dt : qu->tbend;
+        for (i = 0u; i < qu->mv.n; i++) cmd->q[i] = queue_brake_at(qu, i, qu->next);
+    } else if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) {
+        /* held after a joint move: the tracker's configuration again */
+        for (i = 0u; i < t->r->n; i++) cmd->q[i] = t->q[i];
+    } else {
+        cmd->kind = (uint32_t)DH_MOVE_NONE;
+    }
+}
+
+/* The planning (queue_start_*) and the path's frame (dh_path_eval_f32) are
+ * called from here directly, one small frame above them. */
+dh_status dh_queue_target_f32(dh_queue_f32 *qu, const dh_track_f32 *t, float dt, dh_queue_cmd_f32 *cmd)
+{
+    dh_status st;
+    uint32_t what;
+    DH_ASSERT(qu != NULL && t != NULL && t->r != NULL && cmd != NULL);
+    DH_ASSERT(t->r->n >= 1u && t->r->n <= (uint32_t)DH_MAX_JOINTS);
+    if (qu->pend != 0u) return DH_ERR_ARG;
+    if (!dh_isfinite_f32(dt) || !queue_finite(t->q, t->r->n)) return DH_ERR_NAN;
+    if (!(dt > 0.0f)) return DH_ERR_ARG;
+    if (queue_due(qu, t, dt, &st)) {
+        const dh_queue_item_f32 *it = &qu->items[qu->head];
+        st = (it->kind == (uint32_t)DH_MOVE_JOINT) ? queue_start_joint(qu, it, t->q) : queue_start_path(qu, it);
+        if (st == DH_OK) {
+            qu->started = 1u;
+            qu->braked = 0u;
+        }
+    }
+    if (st != DH_OK) return st;
+    what = queue_what(qu);
+    if (qu->mv.kind == (uint32_t)DH_MOVE_PATH && what != QUEUE_JOINT && what != QUEUE_BJOINT) {
+        /* the path's frame now: running, braking, or held at rest */
+        qu->next = 0.0f;
+        cmd->kind = (uint32_t)DH_MOVE_PATH;
+        (void)dh_path_eval_f32(&qu->mv.path, queue_path_now(qu), &cmd->T);
+    } else {
+        queue_joint_cmd(qu, t, what, dt, cmd);
+    }
+    qu->pend = what;
+    qu->dt = dt;
+    qu->n = t->r->n;
+    return DH_OK;
+}
+
+/* the move at the head is complete: removed from the queue */
+static void queue_pop(dh_queue_f32 *qu)
+{
+    qu->last = qu->items[qu->head].kind;
+    qu->head = (qu->head + 1u) % qu->cap;
+    qu->count--;
+    qu->seq++;
+    qu->started = 0u;
+}
+
+/* the brake reached rest: stopped, or the move planned again at once
+ * when a resume came during the brake */
+static void queue_rest(dh_queue_f32 *qu)
+{
+    qu->phase = (uint32_t)DH_QUEUE_STOPPED;
+    if (qu->resume != 0u) {
+        qu->resume = 0u;
+        qu->phase = (uint32_t)DH_QUEUE_RUN;
+        qu->started = 0u;
+    }
+}
+
+/* advances the pending period what; sets *held and *done */
+static void queue_period(dh_queue_f32 *qu, uint32_t what, dh_track_state state, int *held, int *done)
+{
+    int ok = 0;
+    if (state == DH_TRACK_OK) ok = 1;
+    *held = 0;
+    *done = 0;
+    if (what == QUEUE_JOINT) {
+        qu->mv.clock = qu->next;
+        if (!(qu->next < qu->mv.dur)) *done = 1;
+    } else if (what == QUEUE_PATH) {
+        if (ok == 0)
+            *held = 1;
+        else if (qu->mv.clock < qu->mv.dur)
+            qu->mv.clock = (qu->mv.clock + qu->dt < qu->mv.dur) ? qu->mv.clock + qu->dt : qu->mv.dur;
+        else
+            *done = 1;
+    } else if (what == QUEUE_BJOINT || what == QUEUE_BPATH) {
+        if (what == QUEUE_BJOINT)
+            qu->tb = qu->next;
+        else if (ok == 0)
+            *held = 1;
+        else
+            qu->tb = (qu->tb + qu->dt < qu->tbend) ? qu->tb + qu->dt : qu->tbend;
+        if (!(qu->tb < qu->tbend)) queue_rest(qu);
+    } else {
+        *held = 1;
+    }
+}
+
+dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_report_f32 *rep)
+{
+    uint32_t what;
+    int held, done;
+    DH_ASSERT(qu != NULL && rep != NULL);
+    if (qu->pend == 0u) return DH_ERR_ARG;
+    if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
+    what = qu->pend;
+    qu->pend = 0u;
+    rep->seq = qu->seq;
+    queue_period(qu, what, state, &held, &done);
+    rep->clock = (what == QUEUE_BJOINT || what == QUEUE_BPATH) ? qu->tb : qu->mv.clock;
+    if (done != 0) queue_pop(qu);
+    rep->held = held;
+    rep->done = done;
+    rep->last = 0;
+    if (qu->count == 0u) rep->last = 1;
+    rep->stopped = 0;
+    if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) rep->stopped = 1;
+    return DH_OK;
+}
+
+/* plans the brake of the running move from its state at its clock (a
+ * joint move's: position, velocity, acceleration in bq, ws[0], ws[1]);
+ * its duration */
+static DH_NOINLINE float queue_brake(dh_queue_f32 *qu)
+{
+    const dh_queue_item_f32 *it = &qu->items[qu->head];
+    float d = 0.0f, e, sd, sdd, s;
+    uint32_t i;
+    if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) {
+        for (i = 0u; i < qu->mv.n; i++) {
+            e = queue_brake_plan(qu, i, qu->bq[i], qu->mv.ws[0][i], qu->mv.ws[1][i], it->amax[i] * QUEUE_MARGIN,
+                                 (it->jerk != 0u) ? it->jmax[i] : 0.0f, qu->mv.q1[i]);
+            if (e > d) d = e;
+        }
+    } else {
+        s = queue_path_s(qu, qu->mv.clock, &sd, &sdd);
+        d = queue_brake_plan(qu, 0u, s, sd, sdd, qu->as, 0.0f, 1.0f);
+    }
+    return d;
+}
+
+dh_status dh_queue_stop_f32(dh_queue_f32 *qu)
+{
+    DH_ASSERT(qu != NULL);
+    if (qu->pend != 0u) return DH_ERR_ARG;
+    if (qu->phase != (uint32_t)DH_QUEUE_RUN) return DH_OK;
+    qu->resume = 0u;
+    if (qu->count == 0u || qu->started == 0u || !(qu->mv.clock > 0.0f) || !(qu->mv.clock < qu->mv.dur)) {
+        qu->phase = (uint32_t)DH_QUEUE_STOPPED;
+        return DH_OK;
+    }
+    if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT)
+        (void)dh_joint_move_eval_f32(qu->mv.prof, qu->mv.n, qu->mv.q0, qu->mv.q1, qu->mv.clock, qu->bq, qu->mv.ws[0],
+                                     qu->mv.ws[1]);
+    qu->tb = 0.0f;
+    qu->tbend = queue_brake(qu);
+    qu->braked = 1u;
+    qu->phase = (qu->tbend > 0.0f) ? (uint32_t)DH_QUEUE_BRAKE : (uint32_t)DH_QUEUE_STOPPED;
+    return DH_OK;
+}
+
+dh_status dh_queue_resume_f32(dh_queue_f32 *qu)
+{
+    DH_ASSERT(qu != NULL);
+    if (qu->pend != 0u) return DH_ERR_ARG;
+    if (qu->phase == (uint32_t)DH_QUEUE_BRAKE) {
+        qu->resume = 1u;
+    } else if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) {
+        qu->phase = (uint32_t)DH_QUEUE_RUN;
+        if (qu->braked != 0u) qu->started = 0u;
+    } else {
+        /* running: nothing to resume */
+    }
+    return DH_OK;
+}
