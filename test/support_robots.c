@@ -196,6 +196,18 @@ void dhs_random_q_robot(const dh_robot *r, double *q)
     }
 }
 
+void dhs_ur5_safe_q(double margin, double *q)
+{
+    int k;
+    for (k = 0; k < DH_MAX_JOINTS; k++) q[k] = 0.0;
+    q[0] = dht_rand_uniform(-170.0, 170.0);
+    q[1] = dht_rand_uniform(-140.0 + margin, -40.0 - margin);
+    q[2] = dht_rand_uniform(55.0 + margin, 125.0 - margin) * (dht_rand_uniform(0.0, 1.0) < 0.5 ? -1.0 : 1.0);
+    q[3] = dht_rand_uniform(-170.0, 170.0);
+    q[4] = dht_rand_uniform(45.0 + margin, 135.0 - margin) * (dht_rand_uniform(0.0, 1.0) < 0.5 ? -1.0 : 1.0);
+    q[5] = dht_rand_uniform(-170.0, 170.0);
+}
+
 void dhs_target_f32(const dh_robot *r, const double *q, dh_mat4_f32 *T)
 {
     dhr_mat4 D;

@@ -67,6 +67,11 @@ dh_status dhs_build_q(const dhs_robot *d, dh_robot *r);
 void dhs_random_q(const dhs_robot *d, double *q);
 /** Same, from the limits stored in a dh_robot (float limits). */
 void dhs_random_q_robot(const dh_robot *r, double *q);
+/** A UR5 configuration away from its singularities, margin deg (0..20)
+ *  inside the widest bands: joint 2 in [-140, -40], |joint 3| in
+ *  [55, 125] (elbow bent), |joint 5| in [45, 135] (wrist away from 0 and
+ *  180), joints 1, 4, 6 in [-170, 170]; q[6..] = 0. */
+void dhs_ur5_safe_q(double margin, double *q);
 
 /** Link matrix of one joint (standard or modified convention) at value q. */
 void dhs_link(dh_convention conv, dh_joint_type type, double a, double d,

@@ -392,30 +392,52 @@ static dh_status path_limits_ok(const dh_cart_limits_f32 *lim, const dh_cart_jer
     return DH_OK;
 }
 
-dh_status dh_path_move_jerk_f32(dh_profile_f32 *prof, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
-                                const dh_cart_jerk_f32 *jerk)
+/* the bounds of s (b: the bounds of its first, second and third
+ * derivatives) for lim and jerk (NULL: none) and the distance *d (0 when
+ * length and angle are 0, or on error) */
+static DH_NOINLINE dh_status path_plan(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jerk,
+                                       float *b, float *d)
 {
-    static const dh_profile_f32 no_move = { 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0u };
-    float b[3] = { 1.0f, 1.0f, 1.0f }, d = 1.0f;
-    dh_status st;
-    DH_ASSERT(prof != NULL && p != NULL && lim != NULL);
-    st = path_limits_ok(lim, jerk);
+    const dh_status st = path_limits_ok(lim, jerk);
+    b[0] = 1.0f;
+    b[1] = 1.0f;
+    b[2] = 1.0f;
+    *d = 0.0f; /* length and angle 0 (or an error): T = 0 */
     if (st == DH_OK && (p->length > 0.0f || p->angle > 0.0f)) {
-        st = path_rates(p, lim, jerk, b);
-    } else {
-        d = 0.0f;                     /* length and angle 0 (or an error): T = 0 */
+        *d = 1.0f;
+        return path_rates(p, lim, jerk, b);
     }
-    if (st == DH_OK && jerk != NULL) st = dh_profile_scurve_f32(prof, d, b[0], b[1], b[2]);
-    if (st == DH_OK && jerk == NULL) st = dh_profile_trap_f32(prof, d, b[0], b[1]);
-    /* on error the frame stays at A: no move, duration 0 */
-    if (st != DH_OK) *prof = no_move;
     return st;
 }
 
+/* on error the frame stays at A: no move, duration 0 */
+static const dh_profile_f32 path_no_move = { 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0u };
+
+/* The trapezoid and the seven-phase profile are planned by separate
+ * functions, so a caller of dh_path_move_f32 does not link (nor count in
+ * its stack) the seven-phase profile. */
 dh_status dh_path_move_f32(dh_profile_f32 *prof, const dh_path_f32 *p, const dh_cart_limits_f32 *lim)
 {
+    float b[3], d;
+    dh_status st;
     DH_ASSERT(prof != NULL && p != NULL && lim != NULL);
-    return dh_path_move_jerk_f32(prof, p, lim, NULL);
+    st = path_plan(p, lim, NULL, b, &d);
+    if (st == DH_OK) st = dh_profile_trap_f32(prof, d, b[0], b[1]);
+    if (st != DH_OK) *prof = path_no_move;
+    return st;
+}
+
+dh_status dh_path_move_jerk_f32(dh_profile_f32 *prof, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                const dh_cart_jerk_f32 *jerk)
+{
+    float b[3], d;
+    dh_status st;
+    DH_ASSERT(prof != NULL && p != NULL && lim != NULL);
+    if (jerk == NULL) return dh_path_move_f32(prof, p, lim);
+    st = path_plan(p, lim, jerk, b, &d);
+    if (st == DH_OK) st = dh_profile_scurve_f32(prof, d, b[0], b[1], b[2]);
+    if (st != DH_OK) *prof = path_no_move;
+    return st;
 }
 
 dh_status dh_path_move_eval_f32(const dh_profile_f32 *prof, const dh_path_f32 *p, float t, dh_mat4_f32 *T,

@@ -146,20 +146,6 @@ static double dist3f(const float *a, const float *b)
     return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 
-/* a configuration of the UR5 away from its singularities (elbow bent,
- * wrist joint 5 away from 0 and 180, shoulder lifted) */
-static void safe_q(double *q)
-{
-    int k;
-    for (k = 0; k < DH_MAX_JOINTS; k++) q[k] = 0.0;
-    q[0] = dht_rand_uniform(-170.0, 170.0);
-    q[1] = dht_rand_uniform(-140.0, -40.0);
-    q[2] = dht_rand_uniform(55.0, 125.0) * (dht_rand_uniform(0.0, 1.0) < 0.5 ? -1.0 : 1.0);
-    q[3] = dht_rand_uniform(-170.0, 170.0);
-    q[4] = dht_rand_uniform(45.0, 135.0) * (dht_rand_uniform(0.0, 1.0) < 0.5 ? -1.0 : 1.0);
-    q[5] = dht_rand_uniform(-170.0, 170.0);
-}
-
 /* double reference of a path: the line, or the circle through p_A, via,
  * p_B (centre c, radius R, unit normal n, sweep) */
 typedef struct {
@@ -453,7 +439,7 @@ static void draw_path(rig *g, const dh_track_f32 *t, int arc, float *q0, dh_path
     int tries, k;
     for (tries = 0; tries < 2000; tries++) {
         double qb[DH_MAX_JOINTS], e[3], d[3], h;
-        safe_q(qa);
+        dhs_ur5_safe_q(0.0, qa);
         for (k = 0; k < 6; k++) qb[k] = qa[k] + dht_rand_uniform(-15.0, 15.0);
         if (fabs(qb[4]) < 45.0 || fabs(qb[4]) > 135.0 || fabs(qb[2]) < 55.0 || fabs(qb[2]) > 125.0) continue;
         frames_of(g, qa, qb, A, B);
@@ -546,8 +532,8 @@ static void joint_moves(void)
         long call, max_calls, dones = 0;
         float c = 0.0f;
         uint32_t i;
-        safe_q(q0);
-        safe_q(qb);
+        dhs_ur5_safe_q(0.0, q0);
+        dhs_ur5_safe_q(0.0, qb);
         for (i = 0; i < 6; i++) {
             qa[i] = (float)q0[i];
             q1[i] = (float)qb[i];

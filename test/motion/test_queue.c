@@ -294,19 +294,6 @@ static void joint_queues(void)
 #define AMAX_R 3000.0f
 static const dh_cart_limits_f32 LIM = { 0.1f, 1.0f, 30.0f, 300.0f };
 
-/* a configuration of the UR5 away from its singularities */
-static void safe_q(double *q)
-{
-    int k;
-    for (k = 0; k < DH_MAX_JOINTS; k++) q[k] = 0.0;
-    q[0] = dht_rand_uniform(-170.0, 170.0);
-    q[1] = dht_rand_uniform(-130.0, -50.0);
-    q[2] = dht_rand_uniform(65.0, 115.0) * (dht_rand_uniform(0.0, 1.0) < 0.5 ? -1.0 : 1.0);
-    q[3] = dht_rand_uniform(-170.0, 170.0);
-    q[4] = dht_rand_uniform(55.0, 125.0) * (dht_rand_uniform(0.0, 1.0) < 0.5 ? -1.0 : 1.0);
-    q[5] = dht_rand_uniform(-170.0, 170.0);
-}
-
 static void frame_of(const double *q, dh_mat4_f32 *T)
 {
     dhs_target_f32(&G->r, q, T);
@@ -387,7 +374,7 @@ static void path_queue(void)
     double tbound = 0.0;
     memset(&Tstop, 0, sizeof Tstop);
     do {
-        safe_q(qa);
+        dhs_ur5_safe_q(10.0, qa);
         for (k = 0; k < 6; k++) {
             qb[k] = qa[k] + dht_rand_uniform(-5.0, 5.0);
             qc[k] = qb[k] + dht_rand_uniform(-5.0, 5.0);
