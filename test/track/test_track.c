@@ -516,12 +516,64 @@ static void bad_targets_brake(void)
     DHT_EQ_INT(dh_track_init_f32(&t, &g.r, &g.m, q0, DT), DH_ERR_NAN);
 }
 
+/* dh_track_sync_f32: joint commands made elsewhere (a ramp at constant
+ * velocity) set the tracker's q and v exactly; the tracker then continues
+ * from that velocity: the next targets, on the same ramp, are reached with
+ * every step and change of step within the bounds measured from the synced
+ * steps. Errors leave the tracker untouched. */
+static void sync_continues(void)
+{
+    rig g;
+    dh_track_f32 t;
+    static dh_track_f32 keep; /* off the stack: a 16 KB target runs this suite */
+    chk c;
+    float q0[6] = { 10, -60, 70, 20, 40, 30 }, q[6], bad[6];
+    const float d[6] = { 0.002f, -0.0015f, 0.001f, 0.0025f, -0.002f, 0.001f }; /* deg per period */
+    dh_mat4_f32 T;
+    uint32_t i;
+    int k;
+    rig_make(&g, &dhs_ur5_m, 3000.0f);
+    DHT_EQ_INT(dh_track_init_f32(&t, &g.r, &g.m, q0, DT), DH_OK);
+    memcpy(q, q0, sizeof q);
+    for (k = 1; k <= 20; k++) {
+        float qn[6];
+        for (i = 0; i < 6u; i++) qn[i] = q0[i] + (float)k * d[i];
+        DHT_EQ_INT(dh_track_sync_f32(&t, qn), DH_OK);
+        for (i = 0; i < 6u; i++) {
+            DHT_TRUE(t.q[i] == qn[i]);
+            DHT_TRUE(fabs((double)t.v[i] - ((double)qn[i] - (double)q[i]) / (double)DT) <=
+                     4.0 * ulpf(q[i]) / (double)DT);
+        }
+        memcpy(q, qn, sizeof q);
+    }
+    /* on along the ramp through the tracker */
+    chk_start(&c, q, 6u);
+    for (i = 0; i < 6u; i++) c.sp[i] = (float)((double)q[i] - (double)(q0[i] + 19.0f * d[i])); /* the last synced step */
+    c.have_sp = 1;
+    for (k = 21; k <= 60; k++) {
+        float qn[6];
+        for (i = 0; i < 6u; i++) qn[i] = q0[i] + (float)k * d[i];
+        target_of(&g, qn, &T);
+        DHT_EQ_INT(step_checked(&g, &t, &c, &T, "sync ramp"), DH_TRACK_OK);
+    }
+    /* errors: tracker untouched */
+    keep = t;
+    memcpy(bad, q, sizeof bad);
+    bad[2] = NAN;
+    DHT_EQ_INT(dh_track_sync_f32(&t, bad), DH_ERR_NAN);
+    DHT_TRUE(memcmp(&t, &keep, sizeof t) == 0);
+    bad[2] = 1000.0f;
+    DHT_EQ_INT(dh_track_sync_f32(&t, bad), DH_ERR_LIMIT);
+    DHT_TRUE(memcmp(&t, &keep, sizeof t) == 0);
+}
+
 static const dht_case cases[] = {
     DHT_CASE(bad_targets_brake),
     DHT_CASE(smooth_paths_every_call_ok),
     DHT_CASE(singular_lines),
     DHT_CASE(leaving_the_workspace),
     DHT_CASE(target_jumps),
+    DHT_CASE(sync_continues),
 };
 
 DHT_MAIN(cases)
