@@ -26,16 +26,8 @@ BUILD=${BUILD:-$ROOT/build-bench-host}
 REPS=${REPS:-31}
 COUNT=${COUNT:-10000}
 OUT=${1:-$ROOT/docs/generated/performance_host.md}
-OPW_DIR=${OPW_DIR:-}
-if [ -n "$OPW_DIR" ]; then
-  OPW_DIR=$(cd "$OPW_DIR" && pwd)
-  if [ ! -f "$OPW_DIR/include/opw_kinematics/opw_kinematics.h" ]; then
-    echo "bench.sh: OPW_DIR=$OPW_DIR holds no include/opw_kinematics/opw_kinematics.h" >&2
-    exit 2
-  fi
-else
-  echo "bench.sh: OPW_DIR not set, the opw_kinematics rows are skipped (git clone --branch 0.5.5 https://github.com/Jmeyer1292/opw_kinematics, then OPW_DIR=<clone> tools/bench.sh)"
-fi
+. "$ROOT/tools/opw_dir.sh"
+opw_dir_check bench.sh
 OPT="-O2 -DNDEBUG"
 
 cmake -S "$ROOT" -B "$BUILD" -DDH_BUILD_BENCH=ON -DDH_BUILD_TESTS=OFF -DDH_BUILD_TOOLS=OFF \

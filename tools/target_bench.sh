@@ -39,16 +39,8 @@ JOBS=${JOBS:-$(nproc)}
 QEMU=${QEMU:-qemu-system-arm}
 PY=/usr/bin/python3
 LOGS=build/tbench-logs
-OPW_DIR=${OPW_DIR:-}
-if [ -n "$OPW_DIR" ]; then
-  OPW_DIR=$(cd "$OPW_DIR" && pwd)
-  if [ ! -f "$OPW_DIR/include/opw_kinematics/opw_kinematics.h" ]; then
-    echo "target_bench.sh: OPW_DIR=$OPW_DIR holds no include/opw_kinematics/opw_kinematics.h" >&2
-    exit 2
-  fi
-else
-  echo "target_bench.sh: OPW_DIR not set, no opw_kinematics row (git clone --branch 0.5.5 https://github.com/Jmeyer1292/opw_kinematics, then OPW_DIR=<clone> tools/target_bench.sh)"
-fi
+. "$ROOT/tools/opw_dir.sh"
+opw_dir_check target_bench.sh
 mkdir -p "$LOGS"
 rm -f "$LOGS"/*.log
 
