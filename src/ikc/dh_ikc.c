@@ -209,65 +209,104 @@ static int ikc_shift(float *v, float lo, float hi, float ref)
     return 1;
 }
 
-/* Raw canonical solution -> joint values; 1 when within the limits.
- * Common case first: the revolute value already in (-180, 180] and within
- * its limits with no nearer shift (|ref - v| <= 180), left as it is. */
-static DH_NOINLINE int ikc_to_joints(const dh_ikc_model_f32 *m, const float *q_ref, float *q)
+/* A revolute value outside (-180, 180] (v = raw - offset, any finite)
+ * wrapped into it. */
+static DH_NOINLINE float ikc_wrap_any(float v)
 {
-    uint32_t i;
-    int in = 1;
-    for (i = 0; i < m->n; i++) {
-        const float lo = m->qmin[i], hi = m->qmax[i], ref = (q_ref != NULL) ? q_ref[i] : 0.0f;
-        float v;
-        if ((m->prismatic >> i) & 1u) {
-            q[i] -= m->d[i];
-            if (lo <= hi && (q[i] < lo || q[i] > hi)) in = 0;
-            continue;
-        }
-        v = q[i] - m->off[i];
-        if (!(v > -180.0f && v <= 180.0f)) {
-            if (!(fabsf(v) <= 540.0f)) {
-                /* a theta offset beyond +-360 deg: whole turns off first */
-                const float x = v * (1.0f / 360.0f);
-                if (fabsf(x) < 8388608.0f) v -= 360.0f * (float)(int32_t)x;
-            }
-            v = dh_ikc_wrap_f32_(dh_ikc_wrap_f32_(v));
-        }
-        q[i] = v;
-        /* (with q_ref NULL, ref = 0 and |v| <= 180: no nearer shift) */
-        if (lo <= hi && !(v >= lo && v <= hi && (q_ref == NULL || fabsf(ref - v) <= 180.0f))) {
-            if (!ikc_shift(&v, lo, hi, ref)) in = 0;
-            q[i] = v;
-        }
+    if (!(fabsf(v) <= 540.0f)) {
+        /* a theta offset beyond +-360 deg: whole turns off first */
+        const float x = v * (1.0f / 360.0f);
+        if (fabsf(x) < 8388608.0f) v -= 360.0f * (float)(int32_t)x;
     }
-    return in;
+    return dh_ikc_wrap_f32_(dh_ikc_wrap_f32_(v));
+}
+
+/* Joint i of the raw solutions sol[s] with bit s set in live (s < ns) to
+ * its joint value. Returns live with the bits cleared of the solutions
+ * whose value is outside the limits (lim: into *out instead) and of those
+ * whose value is not finite (also cleared in *fin). The joint's constants
+ * are read once for all solutions. Common case first: the revolute value
+ * in (-180, 180] (so finite) and within its limits with no nearer shift
+ * (limits less than a turn apart, or |ref - v| <= 180; with q_ref NULL,
+ * ref = 0 and that always holds), left as it is. */
+static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i, dh_ikc_sol_f32 *sol,
+                          uint32_t ns, uint32_t live, uint32_t *fin, uint32_t *out)
+{
+    const int lim = m->qmin[i] <= m->qmax[i];
+    /* no limits: every value in (-180, 180] stays, as one within limits
+     * [-180, 180] less than a turn apart would */
+    const float lo = lim ? m->qmin[i] : -180.0f, hi = lim ? m->qmax[i] : 180.0f, off = m->off[i];
+    const float ref = (q_ref != NULL) ? q_ref[i] : 0.0f;
+    /* limits less than a turn apart: a value within them is the only
+     * shifted one within them, so the nearest to ref */
+    const int narrow = !lim || hi - lo < 360.0f;
+    uint32_t s;
+    if ((m->prismatic >> i) & 1u) {
+        for (s = 0; s < ns; s++) {
+            const uint32_t bit = 1u << s;
+            const float v = sol[s].q[i] - m->d[i];
+            if ((live & bit) == 0u) continue;
+            sol[s].q[i] = v;
+            if (!dh_isfinite_f32(v)) {
+                *fin &= ~bit;
+                live &= ~bit;
+            } else if (lim && !(v >= m->qmin[i] && v <= m->qmax[i])) {
+                *out |= bit;
+            }
+        }
+        return live;
+    }
+    for (s = 0; s < ns; s++) {
+        const uint32_t bit = 1u << s;
+        float v;
+        if ((live & bit) == 0u) continue;
+        v = sol[s].q[i] - off;
+        if (!(v > -180.0f && v <= 180.0f)) {
+            if (!dh_isfinite_f32(v)) {
+                *fin &= ~bit;
+                live &= ~bit;
+                continue;
+            }
+            v = ikc_wrap_any(v);
+        }
+        if (!(v >= lo && v <= hi && (narrow || fabsf(ref - v) <= 180.0f)) && !ikc_shift(&v, lo, hi, ref))
+            *out |= bit;
+        sol[s].q[i] = v;
+    }
+    return live;
 }
 
 /* The raw solutions sol[0..raw-1] to joint values: non-finite branches (a
  * target far beyond the reach overflows the squares of the position
  * solution) are no solutions; limits per opts; kept ones packed to the
- * front. Out of line: its frame is not on top of a solver's. */
+ * front, in order. Joint by joint (ikc_joint): a solution found outside
+ * the limits is not converted further unless opts keeps it. Out of line:
+ * its frame is not on top of a solver's. */
 static DH_NOINLINE dh_status ikc_finish(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t opts,
                                         dh_ikc_sol_f32 *sol, uint32_t raw, uint32_t *n_sol)
 {
-    uint32_t i, j, out = 0, finite = 0;
-    for (i = 0; i < raw; i++) {
-        if (!dh_allfinite_f32(sol[i].q, m->n)) continue;
-        finite++;
-        if (!ikc_to_joints(m, q_ref, sol[i].q)) {
-            if ((opts & DH_IKC_KEEP_OUT_OF_LIMITS) == 0u) continue;
-            sol[i].flags |= DH_IKC_OUT_OF_LIMITS;
-        }
-        if (out != i) {
-            for (j = 0; j < DH_IKC_JOINTS; j++) sol[out].q[j] = sol[i].q[j];
-            sol[out].flags = sol[i].flags;
-        }
-        out++;
+    const int keep = (opts & DH_IKC_KEEP_OUT_OF_LIMITS) != 0u;
+    uint32_t i, s, n = 0, fin = (1u << raw) - 1u, live = fin, outl = 0u;
+    for (i = 0; i < m->n; i++) {
+        live = ikc_joint(m, q_ref, i, sol, raw, live, &fin, &outl);
+        if (!keep) live &= ~outl;
     }
-    for (i = out; i < raw; i++) sol[i].flags = 0u;
-    *n_sol = out;
-    if (finite == 0u) return DH_ERR_UNREACHABLE;
-    return (out == 0u) ? DH_ERR_LIMIT : DH_OK;
+    for (s = 0; s < raw; s++) {
+        const uint32_t bit = 1u << s;
+        if ((live & bit) == 0u) continue;
+        if ((outl & bit) != 0u) sol[s].flags |= DH_IKC_OUT_OF_LIMITS;
+        if (n != s) sol[n] = sol[s];
+        n++;
+    }
+    for (s = n; s < raw; s++) sol[s].flags = 0u;
+    *n_sol = n;
+    if (n != 0u) return DH_OK;
+    /* none kept: unreachable unless a solution is finite in every joint
+     * (the conversion keeps a value finite exactly when it was, so the
+     * joints left unconverted after a limit answer the same) */
+    for (s = 0; s < raw; s++)
+        if (((fin >> s) & 1u) != 0u && !dh_allfinite_f32(sol[s].q, m->n)) fin &= ~(1u << s);
+    return (fin == 0u) ? DH_ERR_UNREACHABLE : DH_ERR_LIMIT;
 }
 
 dh_status dh_ikc_args_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, uint32_t opts)

@@ -7,8 +7,12 @@
  * positions the wrist centre, the wrist the orientation); derivations:
  * docs/design.md ("Closed-form inverse kinematics").
  *
- * Stack: the solver keeps one 3x3 and a few scalars and writes its raw
- * solutions straight into sol.
+ * Two whole solvers, chosen by WRIST_ONE_PASS below: with an FPU, one
+ * pass writes each solution into its final slot and takes the cosines and
+ * sines of joints 1-3 from the normalised atan2 arguments (no sincos);
+ * with soft float, the caller's solution array is the scratch (arms,
+ * compactions, sincos of joints 1-3), which keeps the Cortex-M0+ frames
+ * within the 256-byte stack budget.
  */
 #include "dhmath/ikc.h"
 #include "dhmath/trig.h"
@@ -41,10 +45,16 @@ enum {
     KW_C3,
     KW_PRE,        /* 1: pre_inv is not the identity (its product is needed) */
     KW_POST,       /* 1: post_inv is not the identity */
+    KW_CPHI,       /* cos, sin of KW_PHI: a3 / rho, e / rho (RRR) */
+    KW_SPHI,
     KW_COUNT
 };
 
 typedef char dh_ikc_k_fits_[(KW_COUNT <= (int)DH_IKC_K) ? 1 : -1];
+
+/* 1: the one-pass solver (its frame keeps the vectors of T06, 36 bytes
+ * more than the in-place one); 0: the in-place solver (soft float). */
+#define WRIST_ONE_PASS (!DH_SOFT_FLOAT)
 
 /* Wrist singular when axis 6 is within this angle (rad) of axis 4: the
  * orientation error of the q_ref split is at most that angle. */
@@ -63,6 +73,39 @@ DH_INLINE float wrist_atan2(float y, float x, float fallback)
     return dh_atan2f_(y, x) * DH_RAD2DEG_F;
 }
 
+
+/* A cosine that wrist_cs leaves for its caller to fill (no cosine is). */
+#define WRIST_CS_NONE 2.0f
+
+/* cs = (x, y) / |(x, y)|, the cosine and sine of atan2(y, x); cs[0] =
+ * WRIST_CS_NONE when both are zero (wrist_atan2 takes its fallback: the
+ * one-pass solver takes that angle's sincos, out of the frames that call
+ * wrist_cs). Inlined, no call. */
+DH_INLINE void wrist_cs(float y, float x, float *cs)
+{
+    float r2 = x * x + y * y, ir;
+    if (!(r2 >= 1e-30f && r2 <= 1e30f)) {
+        /* squares out of range (or zero): scaled by the larger magnitude */
+        const float ax = fabsf(x), ay = fabsf(y), mx = (ax > ay) ? ax : ay;
+        if (!(mx > 0.0f)) {
+            cs[0] = WRIST_CS_NONE;
+            return;
+        }
+        x /= mx;
+        y /= mx;
+        r2 = x * x + y * y;
+    }
+    ir = 1.0f / dh_sqrt_f32(r2);
+    cs[0] = x * ir;
+    cs[1] = y * ir;
+}
+
+/* 1: the second elbow branch of an arm two slots after the first (one
+ * pass: the first's wrist solutions in between); 0: the next slot. */
+#define WRIST_ARM1 (WRIST_ONE_PASS ? 2u : 1u)
+
+/* flags of a slot that holds no solution (a singular wrist's second) */
+#define IKC_GAP 0xFFFFFFFFu
 
 /* ---- spherical-wrist families ------------------------------------------------- */
 
@@ -88,6 +131,8 @@ int dh_ikc_detect_wrist_f32_(dh_ikc_model_f32 *m)
         k[KW_SIGMA] = m->ca[1];
         k[KW_H] = m->d[1] + m->ca[1] * (m->d[2] + m->ca[2] * m->d[3]);
         k[KW_PHI] = dh_atan2f_deg_(e, a3, 0.0f);
+        k[KW_CPHI] = a3 / rho;
+        k[KW_SPHI] = e / rho;
         k[KW_A2RHO] = a2 * a2 + rho * rho;
         k[KW_D] = 2.0f * a2 * rho;
         k[KW_SA23] = m->ca[1] * m->sa[2];
@@ -130,46 +175,30 @@ static void wrist_rzrx_t(float *a, float *b, float c, float s, float sa, float c
     }
 }
 
-/* Layout of sol while the wrist families solve (the caller's array is the
- * scratch, so that no frame below the atan2 calls holds vectors):
- * sol[7].q[3..5] = R06 e_x, sol[6].q[3..5] = R06 Rx(alpha6)^T e_z (the
- * columns M is made of), sol[5].q[3..5] = the wrist centre; arm solutions
- * use q[0..2] and flags only. */
-#define IKC_RN(sol) (&(sol)[7].q[3])
-#define IKC_RA(sol) (&(sol)[6].q[3])
-#define IKC_P(sol) (&(sol)[5].q[3])
-#define IKC_GAP 0xFFFFFFFFu
-
-/* Wrist, phase A, for the arm solution in *arm: the arm values and flags
- * into out[0]; M's third and first columns (R03^T of R06's two columns)
- * into out[0].q[3..5] and out[1].q[3..5] (for the last arm these are
- * where R06's columns are, so they are read in place). Wrist singular
- * (axis 6 in frame 3 on the z axis, joint 4's axis): flagged, and joint 4
- * from q_ref with its sine and cosine into out[1].q[2], q[0], q[1]. */
-static DH_NOINLINE void wrist_a(const dh_ikc_model_f32 *m, const float *q_ref, const dh_ikc_sol_f32 *arm,
-                                    dh_ikc_sol_f32 *out, const float *rn, const float *ra)
+/* Wrist, phase A, for the arm solution in out[0] (values and flags),
+ * with cs = cos, sin of joint 1, cos, sin of joint 2 (RRR: of theta2 +
+ * sigma theta3): M's third and first columns (R03^T of R06's two columns
+ * ra, rn) into out[0].q[3..5] and out[1].q[3..5] (rn, ra may be those
+ * places: they are read in place). Wrist singular (axis 6 in frame 3 on
+ * the z axis, joint 4's axis): flagged, and joint 4 from q_ref with its
+ * sine and cosine into out[1].q[2], q[0], q[1]. Inlined into its one
+ * caller (no frame of its own under the Cortex-M0+ budget). */
+DH_INLINE void wrist_m(const dh_ikc_model_f32 *m, const float *q_ref, dh_ikc_sol_f32 *out, const float *rn,
+                       const float *ra, const float *cs)
 {
     const float *k = m->k;
-    const float t1 = arm->q[0], t2 = arm->q[1], t3 = arm->q[2];
     float *mz = &out[0].q[3], *mx = &out[1].q[3];
-    float c, s;
+    float c;
     uint32_t i;
-    out[0].flags = arm->flags;
     for (i = 0; i < 3u; i++) {
         mx[i] = rn[i];
         mz[i] = ra[i];
     }
-    out[0].q[0] = t1;
-    out[0].q[1] = t2;
-    out[0].q[2] = t3;
-    (void)dh_sincos_f32(t1, &s, &c);
-    wrist_rzrx_t(mz, mx, c, s, m->sa[0], m->ca[0]);
+    wrist_rzrx_t(mz, mx, cs[0], cs[1], m->sa[0], m->ca[0]);
     if (m->kind == DH_IKC_WRIST_RRR) {
-        (void)dh_sincos_f32(t2 + k[KW_SIGMA] * t3, &s, &c);
-        wrist_rzrx_t(mz, mx, c, s, k[KW_SA23], k[KW_CA23]);
+        wrist_rzrx_t(mz, mx, cs[2], cs[3], k[KW_SA23], k[KW_CA23]);
     } else {
-        (void)dh_sincos_f32(t2, &s, &c);
-        wrist_rzrx_t(mz, mx, c, s, m->sa[1], m->ca[1]);
+        wrist_rzrx_t(mz, mx, cs[2], cs[3], m->sa[1], m->ca[1]);
         wrist_rzrx_t(mz, mx, k[KW_C3], k[KW_S3], m->sa[2], m->ca[2]);
     }
     if (mz[0] * mz[0] + mz[1] * mz[1] < IKC_SING_WRIST * IKC_SING_WRIST) {
@@ -243,13 +272,18 @@ static DH_NOINLINE void wrist_c(dh_ikc_sol_f32 *out)
     out[1].flags = out[0].flags | DH_IKC_WRIST_ALT;
 }
 
-/* Joints 2, 3 of the RRR arm for one shoulder branch: sol[0] holds theta1,
+/* Joints 2, 3 of the RRR arm for one shoulder branch: sh holds theta1,
  * (vx, vy) (the wrist centre in the plane of the arm) in q[0..2] and the
- * flags; writes sol[0] and maybe sol[1] (q[0..2], flags). Returns 0, 1, 2. */
-static DH_NOINLINE uint32_t wrist_elbow_rrr(const dh_ikc_model_f32 *m, float cref2, dh_ikc_sol_f32 *sol)
+ * flags; writes the arms (q[0..2], flags) into arm[0] and maybe
+ * arm[WRIST_ARM1] (arm may be sh). One pass: cos, sin of theta2 + sigma
+ * theta3 into their q[3..4] (q[3] WRIST_CS_NONE: theta2 fell back to
+ * cref2).
+ * Returns 0, 1, 2. */
+static DH_NOINLINE uint32_t wrist_elbow_rrr(const dh_ikc_model_f32 *m, float cref2, const dh_ikc_sol_f32 *sh,
+                                            dh_ikc_sol_f32 *arm)
 {
     const float *k = m->k;
-    const float vx = sol->q[1], vy = sol->q[2];
+    const float t1 = sh->q[0], vx = sh->q[1], vy = sh->q[2];
     const float v2 = vx * vx + vy * vy, v = dh_sqrt_f32(v2), D = k[KW_D], Kp = v2 - k[KW_A2RHO];
     const float aD = fabsf(D), KD = (D < 0.0f) ? -Kp : Kp;
     /* dK = |D| - |K'| from |v| (no cancellation of the squares against the
@@ -259,56 +293,77 @@ static DH_NOINLINE uint32_t wrist_elbow_rrr(const dh_ikc_model_f32 *m, float cre
     const float dK = (KD >= 0.0f) ? (k[KW_CPLUS] - v) * (k[KW_CPLUS] + v) : (v - k[KW_CMINUS]) * (v + k[KW_CMINUS]);
     const float tol = 2.0f * k[KW_EPS] * v;
     const float A = m->a[1] + Kp * k[KW_INV2A2];
-    float sq = 0.0f, psi, B;
+    uint32_t fl = sh->flags;
+    float sq = 0.0f, psi, cpsi[2] = { 1.0f, 0.0f }, B;
     uint32_t b, nb = 2u;
     if (dK < -tol) return 0u;
     if (dK <= tol) {
         nb = 1u;
-        sol->flags |= DH_IKC_SING_ELBOW;
+        fl |= DH_IKC_SING_ELBOW;
     } else {
         /* D^2 - K'^2 = dK (|D| + |K'|) */
         sq = dh_sqrt_f32(dK * (2.0f * aD - dK));
     }
     psi = wrist_atan2(sq, KD, 0.0f);
+    if (WRIST_ONE_PASS) wrist_cs(sq, KD, cpsi);
     for (b = nb; b-- > 0u;) {
+        dh_ikc_sol_f32 *a = &arm[b * WRIST_ARM1];
         const float sg = (b == 0u) ? 1.0f : -1.0f;
-        if (b == 1u) {
-            sol[1].q[0] = sol[0].q[0];
-            sol[1].flags = sol[0].flags | DH_IKC_ELBOW_ALT;
-        }
+        float y, x;
         /* a3 s3 - e c3 = rho sin(theta3 - phi) = +-sqrt(D^2 - K'^2) / (2 |a2|) */
         B = k[KW_SIGMA] * sg * sq * fabsf(k[KW_INV2A2]);
-        sol[b].q[2] = dh_ikc_wrap_f32_(k[KW_PHI] + sg * psi);
-        sol[b].q[1] = wrist_atan2(A * vy - B * vx, A * vx + B * vy, cref2);
+        y = A * vy - B * vx;
+        x = A * vx + B * vy;
+        a->q[0] = t1;
+        a->q[2] = dh_ikc_wrap_f32_(k[KW_PHI] + sg * psi);
+        a->q[1] = wrist_atan2(y, x, cref2);
+        a->flags = (b == 0u) ? fl : (fl | DH_IKC_ELBOW_ALT);
+        if (WRIST_ONE_PASS) {
+            /* theta3 = phi + sg psi; theta2 + sigma theta3 */
+            const float sps = sg * cpsi[1], sig = k[KW_SIGMA];
+            const float c3 = k[KW_CPHI] * cpsi[0] - k[KW_SPHI] * sps, s3 = k[KW_SPHI] * cpsi[0] + k[KW_CPHI] * sps;
+            float c2, s2;
+            wrist_cs(y, x, &a->q[3]);
+            c2 = a->q[3];
+            s2 = a->q[4];
+            if (!(c2 > 1.5f)) {
+                a->q[3] = c2 * c3 - sig * s2 * s3;
+                a->q[4] = s2 * c3 + sig * c2 * s3;
+            }
+        }
     }
     return nb;
 }
 
-/* Joints 2, 3 of the RRP arm (the prismatic extension z3 = +-sqrt(.)). */
-static DH_NOINLINE uint32_t wrist_elbow_rrp(const dh_ikc_model_f32 *m, float cref2, dh_ikc_sol_f32 *sol)
+/* Joints 2, 3 of the RRP arm (the prismatic extension z3 = +-sqrt(.)), as
+ * wrist_elbow_rrr (one pass: cos, sin of theta2 in q[3..4]). */
+static DH_NOINLINE uint32_t wrist_elbow_rrp(const dh_ikc_model_f32 *m, float cref2, const dh_ikc_sol_f32 *sh,
+                                            dh_ikc_sol_f32 *arm)
 {
     const float *k = m->k;
-    const float vx = sol->q[1], vy = sol->q[2];
+    const float t1 = sh->q[0], vx = sh->q[1], vy = sh->q[2];
     const float W = k[KW_W], eps = k[KW_EPS], tau2 = m->sa[1];
     const float v = dh_sqrt_f32(vx * vx + vy * vy), r = (v - fabsf(W)) * (v + fabsf(W));
     const float tol = eps * (2.0f * fabsf(W) + eps);
+    uint32_t fl = sh->flags;
     float z = 0.0f;
     uint32_t b, nb = 2u;
     if (r < -tol) return 0u;
     if (r <= tol) {
         nb = 1u;
-        sol->flags |= DH_IKC_SING_ELBOW;
+        fl |= DH_IKC_SING_ELBOW;
     } else {
         z = dh_sqrt_f32(r);
     }
     for (b = nb; b-- > 0u;) {
+        dh_ikc_sol_f32 *a = &arm[b * WRIST_ARM1];
         const float zb = (b == 0u) ? z : -z;
-        if (b == 1u) {
-            sol[1].q[0] = sol[0].q[0];
-            sol[1].flags = sol[0].flags | DH_IKC_ELBOW_ALT;
-        }
-        sol[b].q[1] = wrist_atan2(tau2 * zb * vx + W * vy, W * vx - tau2 * zb * vy, cref2);
-        sol[b].q[2] = zb - k[KW_Z3C];
+        const float y = tau2 * zb * vx + W * vy, x = W * vx - tau2 * zb * vy;
+        a->q[0] = t1;
+        a->q[1] = wrist_atan2(y, x, cref2);
+        a->q[2] = zb - k[KW_Z3C];
+        a->flags = (b == 0u) ? fl : (fl | DH_IKC_ELBOW_ALT);
+        if (WRIST_ONE_PASS) wrist_cs(y, x, &a->q[3]);
     }
     return nb;
 }
@@ -350,13 +405,14 @@ static DH_NOINLINE float wrist_reach(const dh_ikc_model_f32 *m, uint32_t b, floa
     return best;
 }
 
-/* Shoulder: u = +-sqrt(px^2 + py^2 - h^2) of the wrist centre p (read
- * from IKC_P), each moved onto the arm's reach by wrist_reach, theta1; per
- * branch sol[b] gets theta1, vx, vy and its flags. Returns the number of
- * branches (0, 1 or 2). */
-static DH_NOINLINE uint32_t wrist_shoulder(const dh_ikc_model_f32 *m, float cref1, dh_ikc_sol_f32 *sol)
+/* Shoulder: u = +-sqrt(px^2 + py^2 - h^2) of the wrist centre p, each
+ * moved onto the arm's reach by wrist_reach, theta1; per branch sol[b]
+ * gets theta1, vx, vy and its flags (one pass: cos, sin of theta1 into
+ * q[3..4], q[3] WRIST_CS_NONE when theta1 is cref1). Returns the number of branches (0, 1 or 2). */
+static DH_NOINLINE uint32_t wrist_shoulder(const dh_ikc_model_f32 *m, float cref1, const float *p,
+                                           dh_ikc_sol_f32 *sol)
 {
-    const float *k = m->k, *p = IKC_P(sol);
+    const float *k = m->k;
     const float h = k[KW_H], eps = k[KW_EPS], tau = m->sa[0];
     const float px = p[0], py = p[1], pz = p[2], vy = tau * (pz - m->d[0]);
     float rad, tol, u = 0.0f;
@@ -376,11 +432,13 @@ static DH_NOINLINE uint32_t wrist_shoulder(const dh_ikc_model_f32 *m, float cref
         if (sing) {
             s->q[0] = cref1;
             s->flags = DH_IKC_SING_SHOULDER;
+            s->q[3] = WRIST_CS_NONE;
         } else {
             ub = wrist_reach(m, b, ub, vy, fabsf(px) + fabsf(py));
             if (b != 0u && !(u > 0.0f) && !(ub < 0.0f)) continue; /* both branches at u = 0: one */
             s->q[0] = wrist_atan2(tau * h * px + ub * py, ub * px - tau * h * py, cref1);
             s->flags = (b == 0u) ? 0u : DH_IKC_SHOULDER_ALT;
+            if (WRIST_ONE_PASS) wrist_cs(tau * h * px + ub * py, ub * px - tau * h * py, &s->q[3]);
         }
         s->q[1] = ub - m->a[0];
         s->q[2] = vy;
@@ -389,13 +447,14 @@ static DH_NOINLINE uint32_t wrist_shoulder(const dh_ikc_model_f32 *m, float cref
     return nu;
 }
 
-/* The vectors of T06 the wrist families need, into the scratch of sol.
- * T06 = pre_inv T post_inv; the products with an identity pre_inv or
- * post_inv (flagged at analysis) are left out. */
-static DH_NOINLINE void wrist_prepare(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol)
+/* The vectors of T06 the wrist families need: R06 e_x into rn, R06
+ * Rx(alpha6)^T e_z into ra, the wrist centre into p. T06 = pre_inv T
+ * post_inv; the products with an identity pre_inv or post_inv (flagged at
+ * analysis) are left out. */
+static DH_NOINLINE void wrist_prepare(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, float *rn, float *ra,
+                                      float *p)
 {
     const int pre = !dh_feq_f32(m->k[KW_PRE], 0.0f), post = !dh_feq_f32(m->k[KW_POST], 0.0f);
-    float *rn = IKC_RN(sol), *ra = IKC_RA(sol), *p = IKC_P(sol);
     uint32_t i;
     /* in the frame of T's columns: e_x, Rx(alpha6)^T e_z and the wrist
      * centre o5 = (-a6, -d6 sin alpha6, -d6 cos alpha6) */
@@ -420,6 +479,83 @@ static DH_NOINLINE void wrist_prepare(const dh_ikc_model_f32 *m, const dh_mat4_f
         dh_ikc_xform_f32_(&m->pre_inv, ra, 0.0f, ra);
         dh_ikc_xform_f32_(&m->pre_inv, p, 1.0f, p);
     }
+}
+
+#if WRIST_ONE_PASS
+
+/* The wrist solutions of the arm in a[0] (cos, sin of its joints 1 and 2
+ * in v[6..9], or WRIST_CS_NONE: from dh_sincos_f32 here) into a[0] and
+ * a[1]. */
+static DH_NOINLINE void wrist_arm(const dh_ikc_model_f32 *m, const float *q_ref, dh_ikc_sol_f32 *a, float *v)
+{
+    if (v[6] > 1.5f) (void)dh_sincos_f32(a->q[0], &v[7], &v[6]);
+    if (v[8] > 1.5f) {
+        const float t2 = (m->kind == DH_IKC_WRIST_RRR) ? a->q[1] + m->k[KW_SIGMA] * a->q[2] : a->q[1];
+        (void)dh_sincos_f32(t2, &v[9], &v[8]);
+    }
+    wrist_m(m, q_ref, a, v, v + 3, v + 6);
+    wrist_b(m, a);
+    wrist_c(a);
+}
+
+/* One pass: the shoulder branches into sol[6] and sol[7] (read before any
+ * solution reaches them), each arm into its solution's final slot
+ * (elbow branch 1 two slots on, moved down when branch 0's wrist is
+ * singular), its wrist solutions there and in the next slot. */
+uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, dh_ikc_sol_f32 *sol)
+{
+    /* R06 e_x, R06 Rx(alpha6)^T e_z, the wrist centre; after the
+     * shoulder v[6..9] = cos, sin of joint 1 and of joint 2 (RRR: of
+     * theta2 + sigma theta3) for wrist_m */
+    float v[10];
+    const float cref2 = dh_ikc_cref_f32_(m, q_ref, 1u);
+    uint32_t b, e, ns, ne, n = 0u;
+    wrist_prepare(m, T, v, v + 3, v + 6);
+    ns = wrist_shoulder(m, dh_ikc_cref_f32_(m, q_ref, 0u), v + 6, &sol[6]);
+    for (b = 0; b < ns; b++) {
+        const dh_ikc_sol_f32 *sh = &sol[6u + b];
+        const uint32_t n0 = n;
+        ne = (m->kind == DH_IKC_WRIST_RRR) ? wrist_elbow_rrr(m, cref2, sh, &sol[n]) : wrist_elbow_rrp(m, cref2, sh, &sol[n]);
+        for (e = 0; e < ne; e++) {
+            dh_ikc_sol_f32 *a = &sol[n];
+            if (e != 0u && n != n0 + 2u) *a = sol[n0 + 2u]; /* branch 0's wrist singular */
+            v[6] = sh->q[3]; /* sh is written only by the last wrist_arm */
+            v[7] = sh->q[4];
+            v[8] = a->q[3];
+            v[9] = a->q[4];
+            wrist_arm(m, q_ref, a, v);
+            n += (a[1].flags == IKC_GAP) ? 1u : 2u;
+        }
+    }
+    return n;
+}
+
+#else
+
+/* Layout of sol while the wrist families solve (the caller's array is the
+ * scratch, so that no frame below the atan2 calls holds vectors):
+ * sol[7].q[3..5] = R06 e_x, sol[6].q[3..5] = R06 Rx(alpha6)^T e_z (the
+ * columns M is made of), sol[5].q[3..5] = the wrist centre; arm solutions
+ * use q[0..2] and flags only. */
+#define IKC_RN(sol) (&(sol)[7].q[3])
+#define IKC_RA(sol) (&(sol)[6].q[3])
+#define IKC_P(sol) (&(sol)[5].q[3])
+
+/* wrist_m for the arm solution in *arm, copied into out[0] first, the
+ * cosines and sines of its joints 1 and 2 (RRR: theta2 + sigma theta3)
+ * from dh_sincos_f32. */
+static DH_NOINLINE void wrist_a(const dh_ikc_model_f32 *m, const float *q_ref, const dh_ikc_sol_f32 *arm,
+                                dh_ikc_sol_f32 *out, const float *rn, const float *ra)
+{
+    float cs[4];
+    const float t2 = (m->kind == DH_IKC_WRIST_RRR) ? arm->q[1] + m->k[KW_SIGMA] * arm->q[2] : arm->q[1];
+    out[0].flags = arm->flags;
+    out[0].q[0] = arm->q[0];
+    out[0].q[1] = arm->q[1];
+    out[0].q[2] = arm->q[2];
+    (void)dh_sincos_f32(out[0].q[0], &cs[1], &cs[0]);
+    (void)dh_sincos_f32(t2, &cs[3], &cs[2]);
+    wrist_m(m, q_ref, out, rn, ra, cs);
 }
 
 /* Arm values and flags (q[0..2]) of src into dst, q[3..5] left alone. */
@@ -451,16 +587,17 @@ uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, cons
 {
     uint32_t i, na, base;
     float c4;
-    wrist_prepare(m, T, sol);
+    wrist_prepare(m, T, IKC_RN(sol), IKC_RA(sol), IKC_P(sol));
     /* shoulder branches in sol[0..1], each -> elbow branches at 2b, 2b+1
      * (from the last: nothing unread is overwritten) */
-    na = wrist_shoulder(m, dh_ikc_cref_f32_(m, q_ref, 0u), sol);
+    na = wrist_shoulder(m, dh_ikc_cref_f32_(m, q_ref, 0u), IKC_P(sol), sol);
     for (i = na; i-- > 0u;) {
         uint32_t ne;
         if (i != 0u) wrist_copy_arm(&sol[2u * i], &sol[i]);
         sol[2u * i + 1u].flags = IKC_GAP;
         c4 = dh_ikc_cref_f32_(m, q_ref, 1u);
-        ne = (m->kind == DH_IKC_WRIST_RRR) ? wrist_elbow_rrr(m, c4, &sol[2u * i]) : wrist_elbow_rrp(m, c4, &sol[2u * i]);
+        ne = (m->kind == DH_IKC_WRIST_RRR) ? wrist_elbow_rrr(m, c4, &sol[2u * i], &sol[2u * i])
+                                           : wrist_elbow_rrp(m, c4, &sol[2u * i], &sol[2u * i]);
         if (ne == 0u) sol[2u * i].flags = IKC_GAP;
     }
     na = wrist_compact(sol, 2u * na, 1);
@@ -475,3 +612,5 @@ uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, cons
     }
     return wrist_compact(sol, 2u * na, 0);
 }
+
+#endif /* WRIST_ONE_PASS */
