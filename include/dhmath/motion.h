@@ -452,6 +452,9 @@ typedef struct {
     float ws[2][DH_MAX_JOINTS];         /**< joint move: workspace (planning limits, velocity, acceleration) */
     float dur;                          /**< duration of the move (s) */
     float clock;                        /**< time into the move (s), in [0, dur] */
+    float feed;                         /**< path move: feed override r in [0, 1], d clock / dt (1 otherwise) */
+    float fcap;                         /**< path move: ceiling of r, in [0, 1] (dh_move_advance_f32) */
+    uint32_t lag;                       /**< path move: 1 when the last period was not OK */
     uint32_t n;                         /**< joint move: number of joints */
     uint32_t kind;                      /**< a dh_move_kind value */
 } dh_move_f32;
@@ -459,7 +462,8 @@ typedef struct {
 /** @brief What one period of a move did. */
 typedef struct {
     float clock; /**< time into the move after this period (s) */
-    int held;    /**< path move: 1 when the clock held (the tracker was not OK); joint move: 0 */
+    float feed;  /**< path move: the feed override r after this period, in [0, 1]; joint move: 1 */
+    int held;    /**< path move: 1 when the tracker was not OK this period (r falls); joint move: 0 */
     int done;    /**< 1 when the move is complete (see dh_move_advance_f32, dh_move_joint_step_f32) */
 } dh_move_report_f32;
 
@@ -662,6 +666,7 @@ typedef struct {
 typedef struct {
     uint32_t seq;   /**< number of the move that ran this period (moves completed before it) */
     float clock;    /**< its clock after the period (s); the brake's time while braking */
+    float feed;     /**< path move: its feed override r after the period (dh_move_report_f32); else 1 */
     int held;       /**< 1 when the clock held (path move, tracker not OK, or waiting for rest) */
     int done;       /**< 1 when the move completed this period */
     int last;       /**< 1 when the queue is empty after this period (the last move done) */
