@@ -354,6 +354,7 @@ typedef struct {
     double s[2 * SW + 1];
     long n;
 } sring;
+static sring g_sr;
 
 /* s (ref_s at the clock after a period) appended, and the finite
  * differences over SW periods that end there checked against the profile's
@@ -432,7 +433,6 @@ static long run_path(rig *g, dh_track_f32 *t, const dh_path_f32 *p, const ref_pa
     long call, max_calls, dones = 0, notok = 0, start_held = 0;
     int have_sp = 0, any_ok = 0, all_ok = 1, ep_state = 0;
     float fprev = 1.0f;
-    static sring sr;
     uint32_t i;
     DHT_TRUE(2 * wa < RING * RING_STEP && wv < RING * RING_STEP && ww < RING * RING_STEP);
     for (i = 0; i < g->r.n; i++) {
@@ -440,7 +440,7 @@ static long run_path(rig *g, dh_track_f32 *t, const dh_path_f32 *p, const ref_pa
         amax[i] = g->r.joint[i].amax;
     }
     memcpy(qp, t->q, sizeof qp);
-    memset(&sr, 0, sizeof sr);
+    memset(&g_sr, 0, sizeof g_sr);
     DHT_EQ_INT(dh_move_path_f32(&mv, p, lim), DH_OK);
     DHT_TRUE(mv.feed == 1.0f);
     DHT_TRUE(mv.clock == 0.0f && mv.dur > 0.0f);
@@ -472,7 +472,7 @@ static long run_path(rig *g, dh_track_f32 *t, const dh_path_f32 *p, const ref_pa
         g_ring.run = (rep.state == DH_TRACK_OK) ? g_ring.run + 1 : 0;
         DHT_EQ_INT(dh_move_advance_f32(&mv, DT, rep.state, &mrep), DH_OK);
         DHT_TRUE(mrep.clock >= 0.0f && mrep.clock <= mv.dur);
-        check_period(&mv, c, &mrep, rep.state == DH_TRACK_OK, &sr, call);
+        check_period(&mv, c, &mrep, rep.state == DH_TRACK_OK, &g_sr, call);
         if (rep.state == DH_TRACK_OK) {
             DHT_TRUE_MSG(dist3(&T->m[3][0], pr) <= err + rp->E, "call %ld: tool %.3g from the path's point", call,
                          dist3(&T->m[3][0], pr));
@@ -738,7 +738,6 @@ static void unreachable_middle(void)
         int have_sp = 0;
         float fprev = 1.0f;
         float c10 = 0.0f;
-        static sring sr;
         double far = 0.0;
         dhr_rotz(th, &Rz);
         dhr_rotx(180.0, &Rx);
@@ -760,7 +759,7 @@ static void unreachable_middle(void)
             amax[i] = g.r.joint[i].amax;
         }
         memcpy(qp, t.q, sizeof qp);
-        memset(&sr, 0, sizeof sr);
+        memset(&g_sr, 0, sizeof g_sr);
         DHT_EQ_INT(dh_move_path_f32(&mv, &p, &LIM), DH_OK);
         calls = (long)ceil(mv.dur / DT) + 2000;
         memset(&Fp, 0, sizeof Fp);
@@ -775,7 +774,7 @@ static void unreachable_middle(void)
             check_step(&g, &t, q, qp, sp, &have_sp, vmax, amax, NULL, call);
             DHT_EQ_INT(dh_move_advance_f32(&mv, DT, rep.state, &mrep), DH_OK);
             DHT_TRUE(!mrep.done && mrep.clock < mv.dur);
-            check_period(&mv, c, &mrep, rep.state == DH_TRACK_OK, &sr, call);
+            check_period(&mv, c, &mrep, rep.state == DH_TRACK_OK, &g_sr, call);
             tool_at(&g, q, tool);
             if (rep.state != DH_TRACK_OK) notok++;
             if (call == calls - calls / 10) c10 = mrep.clock;
@@ -804,21 +803,20 @@ static void unreachable_middle(void)
  * tracker at q0 under a clock that advances by dt on OK periods only and
  * holds otherwise (the executor without a feed override), within the
  * bound of run_path; the move's frames from dh_move_target_f32. */
-static long hold_clock_notok(rig *g, const float *q0, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
-                             long *periods)
+static long hold_clock_notok(rig *g, dh_track_f32 *t, const float *q0, const dh_path_f32 *p,
+                             const dh_cart_limits_f32 *lim, long *periods)
 {
-    static dh_track_f32 t;
     dh_move_f32 mv;
     dh_track_report_f32 rep;
     dh_mat4_f32 F;
     float q[DH_MAX_JOINTS];
     long call, max_calls, notok = 0;
-    DHT_EQ_INT(dh_track_init_f32(&t, &g->r, &g->m, q0, DT), DH_OK);
+    DHT_EQ_INT(dh_track_init_f32(t, &g->r, &g->m, q0, DT), DH_OK);
     DHT_EQ_INT(dh_move_path_f32(&mv, p, lim), DH_OK);
     max_calls = (long)ceil((10.0 * mv.dur + 5.0) / DT) + 3;
     for (call = 0; call < max_calls; call++) {
         DHT_EQ_INT(dh_move_target_f32(&mv, &F), DH_OK);
-        DHT_EQ_INT(dh_track_step_f32(&t, &F, q, &rep), DH_OK);
+        DHT_EQ_INT(dh_track_step_f32(t, &F, q, &rep), DH_OK);
         if (rep.state != DH_TRACK_OK) {
             notok++;
         } else if (mv.clock < mv.dur) {
@@ -874,7 +872,7 @@ static void infeasible_puma(void)
         B.m[3][2] = 1.0f + ((it == 0) ? 0.0f : (float)dht_rand_uniform(-0.01, 0.01));
         DHT_EQ_INT(dh_path_line_f32(&p, &A, &B), DH_OK);
         ref_make(&rp, &A, &B, NULL);
-        old_notok = hold_clock_notok(&g, q0, &p, &PLIM, &old_periods);
+        old_notok = hold_clock_notok(&g, &t, q0, &p, &PLIM, &old_periods);
         DHT_EQ_INT(dh_track_init_f32(&t, &g.r, &g.m, q0, DT), DH_OK);
         (void)run_path(&g, &t, &p, &rp, &PLIM, &rs);
         DHT_TRUE_MSG(rs.notok > 0 && 4 * rs.notok <= old_notok,
