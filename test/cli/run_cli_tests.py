@@ -1685,8 +1685,8 @@ def group_move(seed, tmp):
         check(pe <= 5e-6 and rot_angle(F, E) <= 5e-5, 'move puma: last line %.3g, %.3g rad from the end' %
               (pe, rot_angle(F, E)))
 
-    # 3b. the infeasible Puma 560 line of docs/motion.md (the wrist asked for
-    # more than its rates): it slows down and completes (exit 3), lagging on
+    # 3b. docs/motion.md's Puma 560 line ending in the base's orientation (the
+    # wrist asked for more than its rates): it slows down and completes (exit 3), lagging on
     # at most a quarter of its periods, every joint step within the limits,
     # at rest on its end frame
     endI = 'trans(0.5,-0.03,1.0)'

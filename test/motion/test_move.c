@@ -48,10 +48,10 @@
  * within the profile's rates (over the last tenth of the run its clock
  * advances by less than 1 % of the time), done never reported.
  *
- * The infeasible Puma 560 line of docs/motion.md (the wrist asked for more
- * than its rates): completes, with at most a quarter of the not-OK periods
- * of a clock that holds on them, and after the first episode of not-OK
- * periods at most as many as in it.
+ * A Puma 560 line the wrist cannot follow at its speed (docs/motion.md's
+ * Puma line, ending in the base's orientation): completes, with at most a
+ * quarter of the not-OK periods of a clock that holds on them, and after
+ * the first episode of not-OK periods at most as many as in it.
  *
  * Every status of the five functions for bad inputs, with the outputs and
  * the move untouched.
@@ -832,8 +832,9 @@ static long hold_clock_notok(rig *g, dh_track_f32 *t, const float *q0, const dh_
 /* The Puma 560 (metres) with joint rates 150 deg/s and 600 deg/s^2, a line
  * at 0.3 m/s and 1.5 m/s^2 from near q = (10, -30, 45, 20, 35, -60) to
  * near (0.5, -0.03, 1.0) with the base's orientation: the wrist is asked
- * for more than its rates (the infeasible move of docs/motion.md; the
- * first draw exactly that). The run of run_path (every joint step within vmax dt and its change within
+ * for more than its rates (docs/motion.md's Puma line with the base's
+ * orientation at its end; the first draw exactly that). The run of
+ * run_path (every joint step within vmax dt and its change within
  * amax dt^2, s' and s'' within the profile's peaks by finite differences,
  * the tool's speed and acceleration over OK windows, done at B) completes
  * within its bound, with at most a quarter of the not-OK periods of the
