@@ -207,6 +207,11 @@ static DH_NOINLINE float move_feed_next(dh_move_f32 *mv, float dt, int ok)
 {
     const float r = mv->feed;
     float up, dn, goal, c = mv->fcap;
+    if (ok != 0 && r >= 1.0f && c >= 1.0f) {
+        /* at full feed and ceiling: r stays 1, no bound needed */
+        mv->lag = 0u;
+        return 1.0f;
+    }
     move_feed_bounds(mv, dt, &up, &dn);
     if (ok != 0) {
         if (r >= c) c += MOVE_CREEP * c * dt;
