@@ -844,7 +844,7 @@ static void infeasible_puma(void)
 {
     static const double QP[6] = { 10.0, -30.0, 45.0, 20.0, 35.0, -60.0 };
     static const dh_cart_limits_f32 PLIM = { 0.3f, 1.5f, 90.0f, 360.0f };
-    static dh_track_f32 t;
+    dh_track_f32 t;
     rig g;
     uint32_t i;
     int it, n = (int)DHT_ITER(3);

@@ -487,7 +487,7 @@ static void path_queues(void)
 static uint64_t puma_run(int queue, const float *q0, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
                          long *periods, long *notok)
 {
-    static dh_move_f32 mv;
+    dh_move_f32 *const mv = &qu.mv; /* the executor's move in the unused queue's (RAM) */
     dh_move_report_f32 mrep;
     dh_queue_report_f32 rep;
     dh_queue_cmd_f32 cmd;
@@ -500,7 +500,7 @@ static uint64_t puma_run(int queue, const float *q0, const dh_path_f32 *p, const
         DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
         DHT_EQ_INT(dh_queue_add_path_f32(&qu, p, lim), DH_OK);
     } else {
-        DHT_EQ_INT(dh_move_path_f32(&mv, p, lim), DH_OK);
+        DHT_EQ_INT(dh_move_path_f32(mv, p, lim), DH_OK);
     }
     *notok = 0;
     for (call = 0; call < 40000; call++) {
@@ -509,7 +509,7 @@ static uint64_t puma_run(int queue, const float *q0, const dh_path_f32 *p, const
             DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, DT, &cmd), DH_OK);
             DHT_EQ_INT(cmd.kind, DH_MOVE_PATH);
         } else {
-            DHT_EQ_INT(dh_move_target_f32(&mv, &cmd.T), DH_OK);
+            DHT_EQ_INT(dh_move_target_f32(mv, &cmd.T), DH_OK);
         }
         DHT_EQ_INT(dh_track_step_f32(&G->t, &cmd.T, G->t.q, &trep), DH_OK);
         if (trep.state != DH_TRACK_OK) (*notok)++;
@@ -520,7 +520,7 @@ static uint64_t puma_run(int queue, const float *q0, const dh_path_f32 *p, const
             c[1] = rep.feed;
             done = rep.done;
         } else {
-            DHT_EQ_INT(dh_move_advance_f32(&mv, DT, trep.state, &mrep), DH_OK);
+            DHT_EQ_INT(dh_move_advance_f32(mv, DT, trep.state, &mrep), DH_OK);
             c[0] = mrep.clock;
             c[1] = mrep.feed;
             done = mrep.done;
