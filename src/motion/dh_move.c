@@ -231,12 +231,15 @@ static DH_NOINLINE float move_feed_next(dh_move_f32 *mv, float dt, int ok)
 dh_status dh_move_advance_f32(dh_move_f32 *mv, float dt, dh_track_state state, dh_move_report_f32 *rep)
 {
     dh_status st;
-    int done = 0, ok = 0;
+    int done = 0, ok = 0, held = 1;
     DH_ASSERT(mv != NULL && rep != NULL);
     st = move_period_ok(mv, (uint32_t)DH_MOVE_PATH, dt);
     if (st != DH_OK) return st;
     if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
-    if (state == DH_TRACK_OK) ok = 1;
+    if (state == DH_TRACK_OK) {
+        ok = 1;
+        held = 0;
+    }
     if (ok != 0 && !(mv->clock < mv->dur)) {
         done = 1;
     } else {
@@ -245,7 +248,7 @@ dh_status dh_move_advance_f32(dh_move_f32 *mv, float dt, dh_track_state state, d
     }
     rep->clock = mv->clock;
     rep->feed = mv->feed;
-    rep->held = (ok != 0) ? 0 : 1;
+    rep->held = held;
     rep->done = done;
     return DH_OK;
 }
