@@ -177,7 +177,7 @@ static float move_feed_rise(float k, float p, float A, float r)
  * by its values at their ends and at the clock (the trapezoid's s'' falls
  * monotonically; the profile's first and last phases, clamped to 0 by the
  * evaluation, are taken at +-A). 1 (no bound) where s' is 0. */
-static DH_NOINLINE void move_feed_bounds(const dh_move_f32 *mv, float dt, float *up, float *dn)
+static void move_feed_bounds(const dh_move_f32 *mv, float dt, float *up, float *dn)
 {
     const dh_profile_f32 *pr = &mv->prof[0];
     const float A = pr->a, r = mv->feed, tb = mv->clock - r * dt, tf = mv->clock + dt;
