@@ -845,24 +845,27 @@ typedef struct {
  *        p1(t) + (p2(t - t0) - corner) and the rotation
  *        Exp(s2 w2) R1(t) (w2 the second line's rotation vector in the
  *        world frame), elsewhere that of the one move running, exactly.
- *        Each move is a trapezoid of s within lim (as dh_path_move_f32)
- *        except in the overlap, where its acceleration is at most
- *        amax / 2 and (3/8) wdmax and tb is held so that the sums of both
- *        moves stay within lim (speed, TOTAL acceleration, angular speed
- *        and acceleration, the cross term of the two rotations included)
- *        and the tool point stays within radius of the corner. Method and
- *        proofs: docs/design.md ("Blended corners").
+ *        Each move is a trapezoid of s within lim (the bounds of
+ *        dh_path_move_f32) whose part in the overlap (the first move's
+ *        last tb, the second's first tb) accelerates at a reduced rate:
+ *        L_i s_i'' <= amax / max(1, |d2 - d1|) (d_i the unit directions)
+ *        and th1 s1'' + th2 s2'' <= (63/64) wdmax, and tb is held so that
+ *        the sums of both moves stay within lim (speed, TOTAL
+ *        acceleration, angular speed and acceleration, the cross term of
+ *        the two rotations included) and the tool point within radius of
+ *        the corner. Method and proofs: docs/design.md ("Blended
+ *        corners").
  * @param bl output.
  * @param p1, p2 lines (dh_path_line_f32; arcs are refused), p2->A equal
  *        to p1->B (every entry within DH_ROT_TOL, position entries
  *        relative to max(1, |p1->B's position|)). Straight
  *        continuations, pure rotations and moves of length 0 are fine.
  * @param lim limits, each finite and > 0.
- * @param radius blend radius (length unit), finite and >= 0; 0 (or a
- *        move without motion) gives tb = 0: the two moves back to back,
- *        each a rest-to-rest trapezoid of dh_path_move_f32's limits.
- * bl->T is at most the sum of the two rest-to-rest moves' durations
- * (less by at least tb / 2 up to rounding).
+ * @param radius blend radius (length unit), finite and >= 0.
+ * tb = 0 (the two moves back to back, each the rest-to-rest trapezoid of
+ * dh_path_move_f32's bounds, at rest at the corner) when radius is 0, a
+ * move has no motion, or the blend would not be shorter than that;
+ * otherwise bl->T is less than the back-to-back duration.
  * Limits met up to float rounding (1e-6 relative); bl->dev <= radius.
  * @return DH_OK; DH_ERR_NAN for a NaN/Inf limit or radius; DH_ERR_ARG for
  *         a limit <= 0, radius < 0, p1 or p2 not a line (an arc, or no

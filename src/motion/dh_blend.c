@@ -5,26 +5,33 @@
  * Each move scales s from 0 to 1 with a trapezoid of s' <= V and
  * |s''| <= a (the bounds of dh_path_move_f32 on a line: V = min(vmax / L,
  * wmax / angle), a = min(amax / L, wdmax / angle)), except that its last
- * tb (first move) or first tb (second move) runs at the reduced
- * acceleration b = min(amax / (2 L), (3/8) wdmax / angle): the tail, from
- * the speed u = b tb to rest over e = b tb^2 / 2. The second move is the
- * time mirror of such a profile (its tail at its start). The tails
- * overlap: on [t0, t0 + tb], t0 = T1 - tb, the position is
- * p1(s1) + s2 (p_B2 - p_A2) and the rotation q2(s2) q_A2* q1(s1), i.e.
- * Exp(s2 w2) R1(s1) with w2 the second line's fixed world rotation vector.
+ * tb (first move) or first tb (second move) runs at a reduced
+ * acceleration b <= a: the tail, from the speed u = b tb to rest over
+ * e = b tb^2 / 2. The second move is the time mirror of such a profile
+ * (its tail at its start). The tails overlap: on [t0, t0 + tb],
+ * t0 = T1 - tb, the position is p1(s1) + s2 (p_B2 - p_A2) and the
+ * rotation q2(s2) q_A2* q1(s1), i.e. Exp(s2 w2) R1(s1) with w2 the second
+ * line's fixed world rotation vector.
+ *
+ * The tails' accelerations (blend_share): L_i b_i <= c = amax /
+ * max(1, |d2 - d1|); in the overlap the tool point's acceleration is the
+ * constant L2 b2 d2 - L1 b1 d1, whose norm is convex in (L1 b1, L2 b2)
+ * and so at most its largest value at a corner of [0, c]^2: c or
+ * c |d2 - d1|, both <= amax. Then th1 b1 + th2 b2 <= (63/64) wdmax.
  *
  * tb = (1 - 2^-10) min(V_i / b_i, sqrt(2 / (b_i (1 + b_i / a_i))),
- * sqrt(2 R / (L1 b1 + L2 b2)), sqrt((180/pi) wdmax / (th1 b1 th2 b2)))
+ * sqrt(2 R / (L1 b1 + L2 b2)), sqrt((180/pi) wdmax / (16 th1 b1 th2 b2)))
  * (terms with a zero denominator left out), so that (docs/design.md,
  * "Blended corners"): u_i <= V_i (the tail starts below the cruise speed),
  * the tail fits the move (u^2 / (2 a) + e <= 1), the tool point stays
  * within R of the corner (L1 e1 + L2 e2 <= R), and the cross term
- * |w1| |w2| (pi/180) <= (pi/180) th1 b1 th2 b2 tb^2 / 4 <= wdmax / 4 of the
- * angular acceleration of the composed rotation. In the overlap the speeds
- * are linear in time, one falling to 0 and one rising from 0, so their
- * sum is at most the larger end value L_i u_i <= vmax (th_i u_i <= wmax);
- * the accelerations add to at most amax / 2 + amax / 2 and
- * (3/8 + 3/8 + 1/4) wdmax.
+ * |w1| |w2| (pi/180) <= (pi/180) th1 b1 th2 b2 tb^2 / 4 <= wdmax / 64 of
+ * the angular acceleration of the composed rotation. In the overlap the
+ * speeds are linear in time, one falling to 0 and one rising from 0, so
+ * their sum is at most the larger end value L_i u_i <= vmax
+ * (th_i u_i <= wmax). When the pair so planned is not shorter than the
+ * two rest-to-rest trapezoids back to back (tails much gentler than a),
+ * tb is 0 and the moves run back to back.
  */
 #include <float.h>
 #include <math.h>
@@ -204,84 +211,96 @@ static DH_NOINLINE dh_status blend_prof(dh_blend_prof_f32 *m, const float r[3], 
     return (dh_isfinite_f32(m->T) && m->T > 0.0f && dh_isfinite_f32(v * v)) ? DH_OK : DH_ERR_OVERFLOW;
 }
 
-/* m1, m2 = the scalings of the two moves with the rates r1, r2 and the
- * overlap tb */
-static DH_NOINLINE dh_status blend_pair(dh_blend_prof_f32 *m1, dh_blend_prof_f32 *m2, const float r1[3],
-                                        const float r2[3], float tb)
+/* *T = the duration of the scaling of one move with the rates r and the
+ * overlap tb (blend_prof's status) */
+static DH_NOINLINE dh_status blend_dur(const float r[3], float tb, float *T)
 {
-    dh_status st = blend_prof(m1, r1, tb);
-    if (st == DH_OK) st = blend_prof(m2, r2, tb);
+    dh_blend_prof_f32 m;
+    dh_status st = blend_prof(&m, r, tb);
+    *T = m.T;
     return st;
 }
 
 dh_status dh_blend_plan_f32(dh_blend_f32 *bl, const dh_path_f32 *p1, const dh_path_f32 *p2,
                             const dh_cart_limits_f32 *lim, float radius)
 {
-    dh_blend_prof_f32 m1, m2;
-    float r1[3], r2[3], tb, T;
+    float r1[3], r2[3], tb, T1, T2, U1, U2;
     dh_status st;
     DH_ASSERT(bl != NULL && p1 != NULL && p2 != NULL && lim != NULL);
     st = blend_check(p1, p2, lim, radius);
     if (st == DH_OK) st = blend_rates(p1, lim, r1);
     if (st == DH_OK) st = blend_rates(p2, lim, r2);
-    if (st != DH_OK) return st;
     /* the rest-to-rest pair, then the blend when it is shorter */
-    st = blend_pair(&m1, &m2, r1, r2, 0.0f);
+    if (st == DH_OK) st = blend_dur(r1, 0.0f, &T1);
+    if (st == DH_OK) st = blend_dur(r2, 0.0f, &T2);
     if (st != DH_OK) return st;
-    T = m1.T + m2.T;
     blend_share(p1, p2, r1, r2, lim);
     tb = blend_overlap(p1, p2, r1, r2, lim, radius);
-    if (tb > 0.0f && blend_pair(&m1, &m2, r1, r2, tb) == DH_OK && (m1.T - tb) + m2.T < T) {
-        bl->dev = 0.5f * tb * tb * (p1->length * r1[2] + p2->length * r2[2]);
-    } else {
+    if (tb > 0.0f && (blend_dur(r1, tb, &U1) != DH_OK || blend_dur(r2, tb, &U2) != DH_OK ||
+                      !((U1 - tb) + U2 < T1 + T2))) {
         tb = 0.0f;
-        (void)blend_pair(&m1, &m2, r1, r2, 0.0f);
-        bl->dev = 0.0f;
     }
+    /* as planned above: no error */
+    (void)blend_prof(&bl->m1, r1, tb);
+    (void)blend_prof(&bl->m2, r2, tb);
     bl->p1 = *p1;
     bl->p2 = *p2;
-    bl->m1 = m1;
-    bl->m2 = m2;
     bl->tb = tb;
-    bl->t0 = m1.T - tb;
-    bl->T = bl->t0 + m2.T;
+    bl->t0 = bl->m1.T - tb;
+    bl->T = bl->t0 + bl->m2.T;
+    bl->dev = 0.5f * tb * tb * (p1->length * r1[2] + p2->length * r2[2]);
     return DH_OK;
 }
 
-/* s and 1 - s (into *s, *rest, each accurate near its own 0) of the
+/* s (rest 0) or 1 - s (rest 1), each accurate near its own 0, of the
  * scaling m at time t, clamped to [0, m->T] */
-static void blend_prof_eval(const dh_blend_prof_f32 *m, float t, float *s, float *rest)
+static float blend_prof_eval(const dh_blend_prof_f32 *m, float t, int rest)
 {
-    float r;
-    if (!(t > 0.0f)) {
-        *s = 0.0f;
-        *rest = 1.0f;
-    } else if (!(t < m->T)) {
-        *s = 1.0f;
-        *rest = 0.0f;
-    } else if (t >= m->T - m->tb) {
+    float r, x;
+    if (!(t > 0.0f)) return rest ? 1.0f : 0.0f;
+    if (!(t < m->T)) return rest ? 0.0f : 1.0f;
+    if (t >= m->T - m->tb) {
         r = m->T - t;
-        *rest = 0.5f * m->b * r * r;
-        *s = 1.0f - *rest;
+        x = 0.5f * m->b * r * r;
     } else if (t >= m->t1 + m->tv) {
         r = (m->T - m->tb) - t;
-        *rest = m->e + r * (m->u + 0.5f * m->a * r);
-        *s = 1.0f - *rest;
+        x = m->e + r * (m->u + 0.5f * m->a * r);
     } else {
-        *s = (t >= m->t1) ? m->v * (0.5f * m->t1 + (t - m->t1)) : 0.5f * m->a * t * t;
-        *rest = 1.0f - *s;
+        x = (t >= m->t1) ? m->v * (0.5f * m->t1 + (t - m->t1)) : 0.5f * m->a * t * t;
+        return rest ? 1.0f - x : x;
     }
+    return rest ? x : 1.0f - x;
 }
 
-/* T's rotation and bottom row in the overlap: q2(s2) q_A2* q1(s1) */
-static DH_NOINLINE void blend_overlap_rot(const dh_blend_f32 *bl, float s1, float s2, dh_mat4_f32 *T)
+/* column c of T = the slerp of the path p at s (a quaternion w, x, y, z
+ * kept in T until blend_compose: the slerp's stack apart from the
+ * composition's) */
+static DH_NOINLINE void blend_slerp(const dh_path_f32 *p, float s, dh_mat4_f32 *T, int c)
+{
+    dh_quat_f32 q;
+    dh_motion_slerp_f32_(&p->qa, &p->qb, s, &q);
+    DH_M4(T, 0, c) = q.w;
+    DH_M4(T, 1, c) = q.x;
+    DH_M4(T, 2, c) = q.y;
+    DH_M4(T, 3, c) = q.z;
+}
+
+/* T's rotation and bottom row in the overlap: q2 q_A2* q1, with q1 in
+ * T's column 0 and q2 in its column 1 (blend_slerp) */
+static DH_NOINLINE void blend_compose(const dh_quat_f32 *qa2, dh_mat4_f32 *T)
 {
     dh_quat_f32 q1, q2, c;
     dh_mat3_f32 R;
     int i;
-    dh_motion_slerp_f32_(&bl->p1.qa, &bl->p1.qb, s1, &q1);
-    dh_motion_slerp_f32_(&bl->p2.qa, &bl->p2.qb, s2, &q2);
-    dh_quat_conj_f32(&bl->p2.qa, &c);
+    q1.w = DH_M4(T, 0, 0);
+    q1.x = DH_M4(T, 1, 0);
+    q1.y = DH_M4(T, 2, 0);
+    q1.z = DH_M4(T, 3, 0);
+    q2.w = DH_M4(T, 0, 1);
+    q2.x = DH_M4(T, 1, 1);
+    q2.y = DH_M4(T, 2, 1);
+    q2.z = DH_M4(T, 3, 1);
+    dh_quat_conj_f32(qa2, &c);
     dh_quat_mul_f32(&c, &q1, &q1);
     dh_quat_mul_f32(&q2, &q1, &q1);
     (void)dh_quat_to_mat3_f32(&q1, &R);
@@ -292,23 +311,22 @@ static DH_NOINLINE void blend_overlap_rot(const dh_blend_f32 *bl, float s1, floa
 
 dh_status dh_blend_eval_f32(const dh_blend_f32 *bl, float t, dh_mat4_f32 *T)
 {
-    float s1, r1, s2, r2;
+    float t2;
     int i;
     DH_ASSERT(bl != NULL && T != NULL);
     if (isunordered(t, t)) return DH_ERR_NAN;
     if (!dh_motion_path_ok_f32_(&bl->p1) || !dh_motion_path_ok_f32_(&bl->p2)) return DH_ERR_ARG;
-    if (!(t > bl->t0)) {
-        blend_prof_eval(&bl->m1, t, &s1, &r1);
-        return dh_path_eval_f32(&bl->p1, s1, T);
-    }
-    /* the second move runs its scaling backwards: s2 is the rest */
-    blend_prof_eval(&bl->m2, (t < bl->T) ? bl->m2.T - (t - bl->t0) : 0.0f, &r2, &s2);
-    if (!(t < bl->t0 + bl->tb)) return dh_path_eval_f32(&bl->p2, s2, T);
-    blend_prof_eval(&bl->m1, t, &s1, &r1);
-    blend_overlap_rot(bl, s1, s2, T);
+    if (!(t > bl->t0)) return dh_path_eval_f32(&bl->p1, blend_prof_eval(&bl->m1, t, 0), T);
+    /* the second move runs its scaling backwards: its s is the rest */
+    t2 = (t < bl->T) ? bl->m2.T - (t - bl->t0) : 0.0f;
+    if (!(t < bl->t0 + bl->tb)) return dh_path_eval_f32(&bl->p2, blend_prof_eval(&bl->m2, t2, 1), T);
+    blend_slerp(&bl->p1, blend_prof_eval(&bl->m1, t, 0), T, 0);
+    blend_slerp(&bl->p2, blend_prof_eval(&bl->m2, t2, 1), T, 1);
+    blend_compose(&bl->p2.qa, T);
     for (i = 0; i < 3; i++) {
-        DH_M4(T, i, 3) = DH_M4(&bl->p1.B, i, 3) - r1 * (DH_M4(&bl->p1.B, i, 3) - DH_M4(&bl->p1.A, i, 3)) +
-                         s2 * (DH_M4(&bl->p2.B, i, 3) - DH_M4(&bl->p2.A, i, 3));
+        DH_M4(T, i, 3) = DH_M4(&bl->p1.B, i, 3) -
+                         blend_prof_eval(&bl->m1, t, 1) * (DH_M4(&bl->p1.B, i, 3) - DH_M4(&bl->p1.A, i, 3)) +
+                         blend_prof_eval(&bl->m2, t2, 1) * (DH_M4(&bl->p2.B, i, 3) - DH_M4(&bl->p2.A, i, 3));
     }
     return DH_OK;
 }
