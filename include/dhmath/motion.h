@@ -841,32 +841,29 @@ typedef struct {
 
 /**
  * @brief bl = two line moves p1 then p2 blended at their corner by
- *        superposition: for t in the overlap [t0, t0 + tb] the position is
- *        p1(t) + (p2(t - t0) - corner) and the rotation
- *        Exp(s2 w2) R1(t) (w2 the second line's rotation vector in the
- *        world frame), elsewhere that of the one move running, exactly.
- *        Each move is a trapezoid of s within lim (the bounds of
- *        dh_path_move_f32) whose part in the overlap (the first move's
- *        last tb, the second's first tb) accelerates at a reduced rate:
- *        L_i s_i'' <= amax / max(1, |d2 - d1|) (d_i the unit directions)
- *        and th1 s1'' + th2 s2'' <= (63/64) wdmax, and tb is held so that
- *        the sums of both moves stay within lim (speed, TOTAL
- *        acceleration, angular speed and acceleration, the cross term of
- *        the two rotations included) and the tool point within radius of
- *        the corner. Method and proofs: docs/design.md ("Blended
- *        corners").
+ *        superposition: in the overlap [t0, t0 + tb] the position is
+ *        p1(t) + (p2(t - t0) - corner) and the rotation Exp(s2 w2) R1(t)
+ *        (w2 the second line's world rotation vector); elsewhere exactly
+ *        that of the one move running. Each move is a trapezoid of s
+ *        within lim (dh_path_move_f32's bounds) whose part in the overlap
+ *        accelerates gently enough (L_i s_i'' <= amax / max(1, |d2 - d1|),
+ *        d_i the directions; th1 s1'' + th2 s2'' <= (63/64) wdmax), with tb
+ *        held so that the sums of both moves (speed, TOTAL acceleration,
+ *        angular speed and acceleration with the cross term of the two
+ *        rotations) stay within lim and the tool point within radius of
+ *        the corner. Method and proofs: docs/design.md ("Blended corners").
  * @param bl output.
- * @param p1, p2 lines (dh_path_line_f32; arcs are refused), p2->A equal
- *        to p1->B (every entry within DH_ROT_TOL, position entries
- *        relative to max(1, |p1->B's position|)). Straight
- *        continuations, pure rotations and moves of length 0 are fine.
+ * @param p1, p2 lines (dh_path_line_f32; arcs are refused); p2->A equal to
+ *        p1->B within DH_ROT_TOL (position entries relative to
+ *        max(1, |p1->B's position|)). Straight continuations, pure
+ *        rotations and moves of length 0 are fine.
  * @param lim limits, each finite and > 0.
  * @param radius blend radius (length unit), finite and >= 0.
- * tb = 0 (the two moves back to back, each the rest-to-rest trapezoid of
- * dh_path_move_f32's bounds, at rest at the corner) when radius is 0, a
- * move has no motion, or the blend would not be shorter than that;
- * otherwise bl->T is less than the back-to-back duration.
- * Limits met up to float rounding (1e-6 relative); bl->dev <= radius.
+ * tb = 0 (the moves back to back, each dh_path_move_f32's rest-to-rest
+ * trapezoid, at rest at the corner) when radius is 0, a move has no
+ * motion, or the blend would not be shorter; otherwise bl->T is less than
+ * the back-to-back duration. Limits met up to float rounding (1e-6
+ * relative); bl->dev <= radius.
  * @return DH_OK; DH_ERR_NAN for a NaN/Inf limit or radius; DH_ERR_ARG for
  *         a limit <= 0, radius < 0, p1 or p2 not a line (an arc, or no
  *         path) or p2->A not p1->B; DH_ERR_OVERFLOW when a rate or a
