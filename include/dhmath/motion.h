@@ -814,6 +814,98 @@ dh_status dh_queue_stop_f32(dh_queue_f32 *qu);
  */
 dh_status dh_queue_resume_f32(dh_queue_f32 *qu);
 
+/* ======================================================================
+ * Blended corner between two Cartesian line moves (dh_blend.c)
+ * ==================================================================== */
+
+/**
+ * @brief The time scaling of s from 0 to 1 of one move of a blend
+ *        (read-only for the user): acceleration +-a, cruise at v, and at
+ *        the corner's end a tail of duration tb at the reduced
+ *        acceleration b (from speed u = b tb to rest, over the distance
+ *        e = b tb^2 / 2). The first move runs it forwards (the tail
+ *        ends at the corner), the second backwards in time (its tail
+ *        starts at the corner).
+ */
+typedef struct {
+    float v;  /**< peak ds/dt (1/s) */
+    float a;  /**< |d2s/dt2| outside the tail (1/s^2) */
+    float b;  /**< |d2s/dt2| in the tail (1/s^2), <= a */
+    float u;  /**< ds/dt at the start of the tail: b tb */
+    float e;  /**< s covered by the tail: b tb^2 / 2 */
+    float t1; /**< duration of the acceleration from rest to v */
+    float tv; /**< duration of the cruise at v */
+    float t3; /**< duration of the deceleration from v to u at a */
+    float tb; /**< duration of the tail (the overlap) */
+    float T;  /**< duration of the move: t1 + tv + t3 + tb (0: no motion) */
+} dh_blend_prof_f32;
+
+/**
+ * @brief Two consecutive line moves blended at their corner (written by
+ *        dh_blend_plan_f32, read by dh_blend_eval_f32; read-only for the
+ *        user, who reads t0, tb, T and dev).
+ */
+typedef struct {
+    dh_path_f32 p1;         /**< first line (a copy) */
+    dh_path_f32 p2;         /**< second line (a copy), starting at p1's end frame */
+    dh_blend_prof_f32 m1;   /**< scaling of the first line, tail at its end */
+    dh_blend_prof_f32 m2;   /**< scaling of the second line, evaluated backwards (tail at its start) */
+    float t0;               /**< start of the overlap on the pair's clock (= the first move's): m1.T - tb */
+    float tb;               /**< duration of the overlap (s); 0: the moves run back to back */
+    float T;                /**< duration of the pair: t0 + m2.T */
+    float dev;              /**< bound on the distance of the tool point from the corner during the overlap */
+} dh_blend_f32;
+
+/**
+ * @brief bl = two line moves p1 then p2 blended at their corner by
+ *        superposition: in the overlap [t0, t0 + tb] the position is
+ *        p1(t) + (p2(t - t0) - corner) and the rotation Exp(s2 w2) R1(t)
+ *        (w2 the second line's world rotation vector); elsewhere exactly
+ *        that of the one move running. Each move is a trapezoid of s
+ *        within lim (dh_path_move_f32's bounds) whose part in the overlap
+ *        accelerates gently enough (L_i s_i'' <= amax / max(1, |d2 - d1|),
+ *        d_i the directions; th1 s1'' + th2 s2'' <= (63/64) wdmax), with tb
+ *        held so that the sums of both moves (speed, TOTAL acceleration,
+ *        angular speed and acceleration with the cross term of the two
+ *        rotations) stay within lim and the tool point within radius of
+ *        the corner. Method and proofs: docs/design.md ("Blended corners").
+ * @param bl output.
+ * @param p1, p2 lines (dh_path_line_f32; arcs are refused); p2->A equal to
+ *        p1->B within DH_ROT_TOL (position entries relative to
+ *        max(1, |p1->B's position|)). Straight continuations, pure
+ *        rotations and moves of length 0 are fine.
+ * @param lim limits, each finite and > 0.
+ * @param radius blend radius (length unit), finite and >= 0.
+ * tb = 0 (the moves back to back, each dh_path_move_f32's rest-to-rest
+ * trapezoid, at rest at the corner) when radius is 0, a move has no
+ * motion, or the blend would not be shorter; otherwise bl->T is less than
+ * the back-to-back duration. Limits met up to float rounding (1e-6
+ * relative); bl->dev <= radius.
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf limit or radius; DH_ERR_ARG for
+ *         a limit <= 0, radius < 0, p1 or p2 not a line (an arc, or no
+ *         path) or p2->A not p1->B; DH_ERR_OVERFLOW when a rate or a
+ *         duration is not a positive finite float. bl untouched on error.
+ */
+dh_status dh_blend_plan_f32(dh_blend_f32 *bl, const dh_path_f32 *p1, const dh_path_f32 *p2,
+                            const dh_cart_limits_f32 *lim, float radius);
+
+/**
+ * @brief T = the frame of the blended pair bl at time t (s, the first
+ *        move's clock): the first line's frame for t <= t0, the second's
+ *        at t - t0 for t >= t0 + tb, their superposition in between.
+ * @param bl pair from dh_blend_plan_f32.
+ * @param t time, any value but NaN: clamped to [0, bl->T]; t <= 0 gives
+ *        p1->A and t >= bl->T gives p2->B bit for bit.
+ * @param T output frame (must not alias bl).
+ * Outside the overlap the position is dh_path_eval_f32's (within 4
+ * FLT_EPSILON S of the line); inside, within bl->dev of the corner up to
+ * 8 FLT_EPSILON S (S the largest position magnitude of the lines).
+ * @return DH_OK; DH_ERR_NAN for a NaN t; DH_ERR_ARG when bl holds no
+ *         blend (its paths not unit quaternions: e.g. all zero). T
+ *         untouched on error.
+ */
+dh_status dh_blend_eval_f32(const dh_blend_f32 *bl, float t, dh_mat4_f32 *T);
+
 #ifdef __cplusplus
 }
 #endif
