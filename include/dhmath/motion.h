@@ -9,6 +9,7 @@
  *   dh_path.c        dh_path_line_f32, dh_path_arc_f32, dh_path_eval_f32,
  *                    dh_path_move_f32, dh_path_move_jerk_f32,
  *                    dh_path_move_eval_f32
+ *   dh_blend.c       dh_blend_plan_f32, dh_blend_eval_f32
  *   dh_move.c        dh_move_joint_f32, dh_move_joint_step_f32,
  *                    dh_move_path_f32, dh_move_path_jerk_f32,
  *                    dh_move_target_f32, dh_move_advance_f32
