@@ -39,6 +39,8 @@
 #define IKCQ_RIGID_TOL ((int32_t)1 << 20)
 /* canonical lengths and intermediate lengths, raw */
 #define IKCQ_LEN_LIM ((int32_t)1 << 29)
+/* 540 degrees, Q16.16: limits within (-540, 540] take ikcq_shift's int32 path */
+#define IKCQ_Q16_540 ((int32_t)35389440)
 
 static const dh_frame_q ikcq_identity = {
     {{DH_Q_ONE30, 0, 0}, {0, DH_Q_ONE30, 0}, {0, 0, DH_Q_ONE30}}, {0, 0, 0}};
@@ -252,6 +254,26 @@ static DH_NOINLINE int32_t ikcq_shift(int32_t q, int32_t lo, int32_t hi, int32_t
 
     *in = 1;
     if (lo > hi) return q;
+    if (lo > -IKCQ_Q16_540 && hi <= IKCQ_Q16_540) {
+        /* limits within (-540, 540]: the candidates are q - 360, q and
+         * q + 360 (q -+ 720 lie outside), all in int32; the distances to
+         * ref (|.| < 2^32) are taken in uint32 */
+        int32_t c = q - DH_IKC_Q16_360, best = q;
+        uint32_t bd = 0u, dd;
+        unsigned i;
+        int found = 0;
+        for (i = 0; i < 3u; i++, c += DH_IKC_Q16_360) {
+            if (c < lo || c > hi) continue;
+            dd = (c >= ref) ? (uint32_t)c - (uint32_t)ref : (uint32_t)ref - (uint32_t)c;
+            if (!found || dd < bd) {
+                best = c;
+                bd = dd;
+                found = 1;
+            }
+        }
+        *in = found;
+        return best;
+    }
     if ((int64_t)hi - lo < 3 * (int64_t)P) {
         /* up to three candidates: no division */
         int32_t best;
@@ -294,19 +316,34 @@ static DH_NOINLINE int32_t ikcq_shift(int32_t q, int32_t lo, int32_t hi, int32_t
 static DH_NOINLINE uint32_t ikcq_finish(const dh_ikc_model_q *m, const int32_t *q_ref, uint32_t opts,
                                        dh_ikc_sol_q *sol, uint32_t raw)
 {
+    const uint32_t n = m->n, prismatic = m->prismatic;
     uint32_t s, i, kept = 0;
     int ovf = 0;
     for (s = 0; s < raw; s++) {
         dh_ikc_sol_q *t = &sol[s];
         int all_in = 1;
-        for (i = 0; i < m->n; i++) {
+        for (i = 0; i < n; i++) {
+            const int32_t lo = m->qmin[i], hi = m->qmax[i];
             int in = 1;
-            if ((m->prismatic >> i) & 1u) {
+            if ((prismatic >> i) & 1u) {
                 t->q[i] = dh_q_sat32((int64_t)t->q[i] - m->d[i], &ovf);
-                if (m->qmin[i] <= m->qmax[i]) in = (t->q[i] >= m->qmin[i] && t->q[i] <= m->qmax[i]);
+                if (lo <= hi) in = (t->q[i] >= lo && t->q[i] <= hi);
             } else {
-                t->q[i] = ikcq_shift(dh_ikc_wrap180_q_(t->q[i] - m->off[i]), m->qmin[i], m->qmax[i],
-                                    (q_ref != NULL) ? q_ref[i] : 0, &in);
+                const int32_t v = dh_ikc_wrap180_q_(t->q[i] - m->off[i]);
+                if (lo > -IKCQ_Q16_540 && hi <= IKCQ_Q16_540 && lo <= hi && hi - lo < DH_IKC_Q16_360) {
+                    /* one candidate at most (ikcq_shift's result without
+                     * the search): the least v + 360 k >= lo (k in -1..1,
+                     * v in (-180, 180]), inside when <= hi */
+                    int32_t c = v;
+                    if (v - DH_IKC_Q16_360 >= lo)
+                        c = v - DH_IKC_Q16_360;
+                    else if (v < lo)
+                        c = v + DH_IKC_Q16_360;
+                    in = (c >= lo && c <= hi);
+                    t->q[i] = in ? c : v;
+                } else {
+                    t->q[i] = ikcq_shift(v, lo, hi, (q_ref != NULL) ? q_ref[i] : 0, &in);
+                }
             }
             if (!in) all_in = 0;
         }
