@@ -11,13 +11,16 @@
 #include "../internal/dh_qmath.h"
 
 /* atan2 of two int64 of a common scale (|.| < 2^63): both rounded by the
- * same shift below 2^30 + 1 (the bit length of |y| | |x| above 30), then
- * dh_atan2_q; (0, 0) gives 0 */
+ * same shift below 2^30 + 1, then dh_atan2_q; (0, 0) gives 0 */
 DH_NOINLINE int32_t dh_ikc_atan2_q_(int64_t y, int64_t x)
 {
-    const unsigned b = dh_q_bitlen64(dh_ikc_abs64_q_(y) | dh_ikc_abs64_q_(x));
-    const unsigned s = (b > 30u) ? b - 30u : 0u;
+    uint32_t hi = (uint32_t)((dh_ikc_abs64_q_(y) | dh_ikc_abs64_q_(x)) >> 30);
+    unsigned s = 0u;
     dh_q16 a = 0;
+    while (hi != 0u) {
+        hi >>= 1;
+        s++;
+    }
     if (s != 0u) {
         y = dh_q_rshr(y, s);
         x = dh_q_rshr(x, s);

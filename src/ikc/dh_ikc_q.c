@@ -245,7 +245,7 @@ static DH_NOINLINE int ikcq_model_ok(const dh_ikc_model_q *m)
 
 /* q (in (-180, 180]) shifted by a multiple of 360 into [lo, hi], nearest
  * ref (ties: the lower); *in = 0 when no shift is inside (q returned) */
-static DH_NOINLINE int32_t ikcq_shift(int32_t q, int32_t lo, int32_t hi, int32_t ref, int *in)
+static int32_t ikcq_shift(int32_t q, int32_t lo, int32_t hi, int32_t ref, int *in)
 {
     const int64_t d = (int64_t)q - lo;
     const uint32_t P = (uint32_t)DH_IKC_Q16_360;
@@ -310,6 +310,16 @@ static DH_NOINLINE int32_t ikcq_shift(int32_t q, int32_t lo, int32_t hi, int32_t
     return (int32_t)(first + (int64_t)kk * P);
 }
 
+/* *q (in (-180, 180]) <- ikcq_shift(*q, ...) in place; 1 when inside the
+ * limits (the solver's slot holds the value: no addressable local in
+ * ikcq_finish, whose frame is on the deepest chain) */
+static DH_NOINLINE int ikcq_shift_at(int32_t *q, int32_t lo, int32_t hi, int32_t ref)
+{
+    int in = 1;
+    *q = ikcq_shift(*q, lo, hi, ref, &in);
+    return in;
+}
+
 /* raw canonical solutions -> joint values, shifts, limits, compaction;
  * the count kept, or IKCQ_FINISH_OVF when a prismatic value saturated.
  * Joint by joint (the limits, offset and reference loaded once), a mask
@@ -358,10 +368,9 @@ static DH_NOINLINE uint32_t ikcq_finish(const dh_ikc_model_q *m, const int32_t *
             const int32_t off = m->off[i], ref = (q_ref != NULL) ? q_ref[i] : 0;
             for (s = 0; s < raw; s++) {
                 int32_t *q = &sol[s].q[i];
-                int in = 1;
                 if (keep == 0u && ((out >> s) & 1u) != 0u) continue;
-                *q = ikcq_shift(dh_ikc_wrap180_q_(*q - off), lo, hi, ref, &in);
-                if (!in) out |= 1u << s;
+                *q = dh_ikc_wrap180_q_(*q - off);
+                if (!ikcq_shift_at(q, lo, hi, ref)) out |= 1u << s;
             }
         }
     }
