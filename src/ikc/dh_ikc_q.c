@@ -42,9 +42,6 @@
 /* 540 degrees, Q16.16: limits within (-540, 540] take ikcq_shift's int32 path */
 #define IKCQ_Q16_540 ((int32_t)35389440)
 
-static const dh_frame_q ikcq_identity = {
-    {{DH_Q_ONE30, 0, 0}, {0, DH_Q_ONE30, 0}, {0, 0, DH_Q_ONE30}}, {0, 0, 0}};
-
 /* ---- analysis ----------------------------------------------------------- */
 
 /* 1 when the columns c0, c1, c2 (Q2.30) are within 2^-10 of orthonormal
@@ -194,6 +191,8 @@ static DH_NOINLINE void ikcq_classify(dh_ikc_model_q *m)
 
 dh_status dh_ikc_analyse_q(const dh_robot *r, dh_ikc_model_q *m)
 {
+    static const dh_frame_q ikcq_identity = {
+        {{DH_Q_ONE30, 0, 0}, {0, DH_Q_ONE30, 0}, {0, 0, DH_Q_ONE30}}, {0, 0, 0}};
     uint32_t i;
     dh_status st;
 
@@ -262,14 +261,16 @@ static int32_t ikcq_shift(int32_t q, int32_t lo, int32_t hi, int32_t ref, int *i
         uint32_t bd = 0u, dd;
         unsigned i;
         int found = 0;
-        for (i = 0; i < 3u; i++, c += DH_IKC_Q16_360) {
-            if (c < lo || c > hi) continue;
-            dd = (c >= ref) ? (uint32_t)c - (uint32_t)ref : (uint32_t)ref - (uint32_t)c;
-            if (!found || dd < bd) {
-                best = c;
-                bd = dd;
-                found = 1;
+        for (i = 0; i < 3u; i++) {
+            if (c >= lo && c <= hi) {
+                dd = (c >= ref) ? (uint32_t)c - (uint32_t)ref : (uint32_t)ref - (uint32_t)c;
+                if (!found || dd < bd) {
+                    best = c;
+                    bd = dd;
+                    found = 1;
+                }
             }
+            c += DH_IKC_Q16_360;
         }
         *in = found;
         return best;
@@ -351,12 +352,15 @@ static DH_NOINLINE uint32_t ikcq_finish(const dh_ikc_model_q *m, const int32_t *
             for (s = 0; s < raw; s++) {
                 int32_t *q = &sol[s].q[i];
                 const int32_t v = dh_ikc_wrap180_q_(*q - off);
-                int32_t c = v;
+                int32_t c;
                 if (keep == 0u && ((out >> s) & 1u) != 0u) continue;
-                if (v - DH_IKC_Q16_360 >= lo)
+                if (v - DH_IKC_Q16_360 >= lo) {
                     c = v - DH_IKC_Q16_360;
-                else if (v < lo)
+                } else if (v < lo) {
                     c = v + DH_IKC_Q16_360;
+                } else {
+                    c = v;
+                }
                 if (c >= lo && c <= hi) {
                     *q = c;
                 } else {
@@ -413,7 +417,7 @@ static DH_NOINLINE int ikcq_row_apply(const dh_frame_q *F, dh_ikc_sol_q *sol, un
 }
 
 /* 1 when F is the identity frame, word by word (the same answer as a
- * memcmp with ikcq_identity: no padding; a fraction of its cost on the
+ * memcmp with the identity frame: no padding; a fraction of its cost on the
  * cores whose memcmp goes byte by byte) */
 static int ikcq_is_identity(const dh_frame_q *F)
 {
