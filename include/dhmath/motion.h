@@ -9,6 +9,7 @@
  *   dh_path.c        dh_path_line_f32, dh_path_arc_f32, dh_path_eval_f32,
  *                    dh_path_move_f32, dh_path_move_jerk_f32,
  *                    dh_path_move_eval_f32
+ *   dh_blend.c       dh_blend_plan_f32, dh_blend_eval_f32
  *   dh_move.c        dh_move_joint_f32, dh_move_joint_step_f32,
  *                    dh_move_path_f32, dh_move_path_jerk_f32,
  *                    dh_move_target_f32, dh_move_advance_f32
@@ -452,6 +453,9 @@ typedef struct {
     float ws[2][DH_MAX_JOINTS];         /**< joint move: workspace (planning limits, velocity, acceleration) */
     float dur;                          /**< duration of the move (s) */
     float clock;                        /**< time into the move (s), in [0, dur] */
+    float feed;                         /**< path move: feed override r in [0, 1], d clock / dt (1 otherwise) */
+    float fcap;                         /**< path move: ceiling of r, in [0, 1] (dh_move_advance_f32) */
+    uint32_t lag;                       /**< path move: 1 when the last period was not OK */
     uint32_t n;                         /**< joint move: number of joints */
     uint32_t kind;                      /**< a dh_move_kind value */
 } dh_move_f32;
@@ -459,7 +463,8 @@ typedef struct {
 /** @brief What one period of a move did. */
 typedef struct {
     float clock; /**< time into the move after this period (s) */
-    int held;    /**< path move: 1 when the clock held (the tracker was not OK); joint move: 0 */
+    float feed;  /**< path move: the feed override r after this period, in [0, 1]; joint move: 1 */
+    int held;    /**< path move: 1 when the tracker was not OK this period (r falls); joint move: 0 */
     int done;    /**< 1 when the move is complete (see dh_move_advance_f32, dh_move_joint_step_f32) */
 } dh_move_report_f32;
 
@@ -516,7 +521,8 @@ dh_status dh_move_joint_step_f32(dh_move_f32 *mv, float dt, float *q, dh_move_re
  * Start: the move does not check where the robot is. Its first target is
  * p->A; the clock holds until the tracker reports OK there, so a tool
  * away from p->A is brought onto it by the tracker within the tracker's
- * rate and acceleration bounds, and the move starts from there.
+ * rate and acceleration bounds, and the move starts from there. The feed
+ * override r starts at 1 (dh_move_advance_f32).
  * @param mv output move (kind DH_MOVE_PATH, clock 0, dur the profile's T;
  *        p copied).
  * @param p path from dh_path_line_f32 or dh_path_arc_f32.
@@ -551,11 +557,10 @@ dh_status dh_move_path_jerk_f32(dh_move_f32 *mv, const dh_path_f32 *p, const dh_
  * @brief T = the frame to track this period: the path's frame at the
  *        move's clock (dh_path_move_eval_f32), p->A at clock 0, p->B bit
  *        for bit once the clock is at dur.
- * Between two advances of the clock by dt, the target moves by at most
- * lim->vmax dt in position and lim->wmax dt in rotation (up to the path's
- * and the profile's rounding, motion.h above), and while the clock holds
- * it does not move: the target is never more than one period of the move
- * beyond the last frame the tracker reported OK at.
+ * Between two periods the clock advances by r dt (dh_move_advance_f32),
+ * so the target moves by at most r lim->vmax dt in position and
+ * r lim->wmax dt in rotation (up to the path's and the profile's rounding,
+ * motion.h above), and at r == 0 it does not move.
  * @param mv move from dh_move_path_f32 or dh_move_path_jerk_f32.
  * @param T output frame.
  * @return DH_OK; DH_ERR_ARG for an mv that holds no path move (written by
@@ -566,19 +571,29 @@ dh_status dh_move_target_f32(const dh_move_f32 *mv, dh_mat4_f32 *T);
 /**
  * @brief Ends a control period of a path move: state is the tracker's
  *        report (dh_track_report_f32.state) of its step towards this
- *        period's dh_move_target_f32.
- * - state OK, clock < dur: the clock advances to min(clock + dt, dur).
+ *        period's dh_move_target_f32; the clock advances by r dt (capped
+ *        at dur), r in [0, 1] the move's feed override.
  * - state OK, clock == dur: done (the tracker reached p->B within its
  *   pos_tol and rot_tol); the clock stays at dur.
- * - state LAGGING or UNREACHABLE: the clock holds (held 1), so the target
- *   stays where the tracker did not reach it and does not run away from
- *   the robot; a stretch the joints cannot follow at the move's speed is
- *   covered in bursts, and an unreachable one stops the move there (the
- *   caller sees held, and the clock not advancing, every period).
+ * - state OK, clock < dur: r rises towards its ceiling (1 until the
+ *   tracker lagged); with r at 1 the clock advances by dt exactly, so a
+ *   move the tracker follows runs its profile bit for bit.
+ * - state LAGGING or UNREACHABLE (held 1): r falls towards 0, where the
+ *   clock and the target hold; the move slows down on its own schedule
+ *   instead of jumping, and stops at a stretch that stays unreachable.
+ *   A stretch of such periods while the path moves lowers the ceiling to
+ *   7/8 of r at its start; the ceiling rises by 2 r per second of OK
+ *   periods at it (relative), so the move settles below the speed the
+ *   joints could not follow and speeds up again where they can.
+ * r changes each period by at most what keeps the commanded s' r and
+ * d(s' r)/dt within the profile's peaks prof[0].v and prof[0].a, so the
+ * target's speed, acceleration and angular rates stay within lim (not
+ * the jerk of dh_move_path_jerk_f32 while r changes; docs/design.md).
+ * At clock 0 (s' = 0) r falls to 0 and rises back at once.
  * @param mv move from dh_move_path_f32 or dh_move_path_jerk_f32.
  * @param dt control period (s), finite, > 0 (the tracker's dt).
  * @param state the tracker's state this period, a dh_track_state value.
- * @param rep report: clock after the call, held, done.
+ * @param rep report: clock and r after the call, held, done.
  * @return DH_OK; DH_ERR_NAN for a NaN/Inf dt; DH_ERR_ARG for dt <= 0, a
  *         state that is no dh_track_state, or an mv that holds no path
  *         move. On error mv and rep are untouched.
@@ -662,6 +677,7 @@ typedef struct {
 typedef struct {
     uint32_t seq;   /**< number of the move that ran this period (moves completed before it) */
     float clock;    /**< its clock after the period (s); the brake's time while braking */
+    float feed;     /**< path move: its feed override r after the period (dh_move_report_f32); else 1 */
     int held;       /**< 1 when the clock held (path move, tracker not OK, or waiting for rest) */
     int done;       /**< 1 when the move completed this period */
     int last;       /**< 1 when the queue is empty after this period (the last move done) */
@@ -745,8 +761,9 @@ dh_status dh_queue_target_f32(dh_queue_f32 *qu, const dh_track_f32 *t, float dt,
  *        the tracker's state of this period (DH_TRACK_OK after a joint
  *        command or DH_MOVE_NONE; it is read for path moves only).
  * Joint move: its clock (or brake) advances to the commanded time. Path
- * move: as dh_move_advance_f32 (the clock advances only on OK, so a
- * lagging tracker holds it; the brake's time likewise). A move is done
+ * move: dh_move_advance_f32 itself (the clock advances by r dt, its feed
+ * override r falling while the tracker is not OK and rising while it is;
+ * rep->feed is r); a path's brake time advances only on OK. A move is done
  * when its clock reached its duration (a path move: and the tracker OK at
  * B), and is then removed from the queue (seq + 1); a brake that reached
  * rest sets phase DH_QUEUE_STOPPED (stopped 1), or resumes at once when
@@ -769,9 +786,10 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
  *   to -a_p and back, a_p <= amax_i (1 - 2^-10)) and stops within
  *   v1 / a + 3 a / j, v1 = |v| + a^2 / (2 j) (|v| / a without jmax) of the
  *   stop, a = amax_i (1 - 2^-10), j = jmax_i; never beyond q1;
- * - path move: s decelerates at the acceleration of its plan (within
- *   lim) and stops within s' / s'' of the stop, never beyond B; the brake
- *   time advances only when the tracker is OK, as the clock.
+ * - path move: s decelerates from its rate s' r (r the feed override) at
+ *   the acceleration of its plan (within lim) and stops within s' r / s''
+ *   of the stop, never beyond B; the brake time advances only when the
+ *   tracker is OK.
  * A move not started, held at its start (clock 0) or at its end, or no
  * move at all, is at rest: the stop is immediate (phase STOPPED). A stop
  * while braking or stopped changes nothing. Queued moves stay queued and
@@ -796,6 +814,98 @@ dh_status dh_queue_stop_f32(dh_queue_f32 *qu);
  *         dh_queue_advance_f32 (qu untouched).
  */
 dh_status dh_queue_resume_f32(dh_queue_f32 *qu);
+
+/* ======================================================================
+ * Blended corner between two Cartesian line moves (dh_blend.c)
+ * ==================================================================== */
+
+/**
+ * @brief The time scaling of s from 0 to 1 of one move of a blend
+ *        (read-only for the user): acceleration +-a, cruise at v, and at
+ *        the corner's end a tail of duration tb at the reduced
+ *        acceleration b (from speed u = b tb to rest, over the distance
+ *        e = b tb^2 / 2). The first move runs it forwards (the tail
+ *        ends at the corner), the second backwards in time (its tail
+ *        starts at the corner).
+ */
+typedef struct {
+    float v;  /**< peak ds/dt (1/s) */
+    float a;  /**< |d2s/dt2| outside the tail (1/s^2) */
+    float b;  /**< |d2s/dt2| in the tail (1/s^2), <= a */
+    float u;  /**< ds/dt at the start of the tail: b tb */
+    float e;  /**< s covered by the tail: b tb^2 / 2 */
+    float t1; /**< duration of the acceleration from rest to v */
+    float tv; /**< duration of the cruise at v */
+    float t3; /**< duration of the deceleration from v to u at a */
+    float tb; /**< duration of the tail (the overlap) */
+    float T;  /**< duration of the move: t1 + tv + t3 + tb (0: no motion) */
+} dh_blend_prof_f32;
+
+/**
+ * @brief Two consecutive line moves blended at their corner (written by
+ *        dh_blend_plan_f32, read by dh_blend_eval_f32; read-only for the
+ *        user, who reads t0, tb, T and dev).
+ */
+typedef struct {
+    dh_path_f32 p1;         /**< first line (a copy) */
+    dh_path_f32 p2;         /**< second line (a copy), starting at p1's end frame */
+    dh_blend_prof_f32 m1;   /**< scaling of the first line, tail at its end */
+    dh_blend_prof_f32 m2;   /**< scaling of the second line, evaluated backwards (tail at its start) */
+    float t0;               /**< start of the overlap on the pair's clock (= the first move's): m1.T - tb */
+    float tb;               /**< duration of the overlap (s); 0: the moves run back to back */
+    float T;                /**< duration of the pair: t0 + m2.T */
+    float dev;              /**< bound on the distance of the tool point from the corner during the overlap */
+} dh_blend_f32;
+
+/**
+ * @brief bl = two line moves p1 then p2 blended at their corner by
+ *        superposition: in the overlap [t0, t0 + tb] the position is
+ *        p1(t) + (p2(t - t0) - corner) and the rotation Exp(s2 w2) R1(t)
+ *        (w2 the second line's world rotation vector); elsewhere exactly
+ *        that of the one move running. Each move is a trapezoid of s
+ *        within lim (dh_path_move_f32's bounds) whose part in the overlap
+ *        accelerates gently enough (L_i s_i'' <= amax / max(1, |d2 - d1|),
+ *        d_i the directions; th1 s1'' + th2 s2'' <= (63/64) wdmax), with tb
+ *        held so that the sums of both moves (speed, TOTAL acceleration,
+ *        angular speed and acceleration with the cross term of the two
+ *        rotations) stay within lim and the tool point within radius of
+ *        the corner. Method and proofs: docs/design.md ("Blended corners").
+ * @param bl output.
+ * @param p1, p2 lines (dh_path_line_f32; arcs are refused); p2->A equal to
+ *        p1->B within DH_ROT_TOL (position entries relative to
+ *        max(1, |p1->B's position|)). Straight continuations, pure
+ *        rotations and moves of length 0 are fine.
+ * @param lim limits, each finite and > 0.
+ * @param radius blend radius (length unit), finite and >= 0.
+ * tb = 0 (the moves back to back, each dh_path_move_f32's rest-to-rest
+ * trapezoid, at rest at the corner) when radius is 0, a move has no
+ * motion, or the blend would not be shorter; otherwise bl->T is less than
+ * the back-to-back duration. Limits met up to float rounding (1e-6
+ * relative); bl->dev <= radius.
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf limit or radius; DH_ERR_ARG for
+ *         a limit <= 0, radius < 0, p1 or p2 not a line (an arc, or no
+ *         path) or p2->A not p1->B; DH_ERR_OVERFLOW when a rate or a
+ *         duration is not a positive finite float. bl untouched on error.
+ */
+dh_status dh_blend_plan_f32(dh_blend_f32 *bl, const dh_path_f32 *p1, const dh_path_f32 *p2,
+                            const dh_cart_limits_f32 *lim, float radius);
+
+/**
+ * @brief T = the frame of the blended pair bl at time t (s, the first
+ *        move's clock): the first line's frame for t <= t0, the second's
+ *        at t - t0 for t >= t0 + tb, their superposition in between.
+ * @param bl pair from dh_blend_plan_f32.
+ * @param t time, any value but NaN: clamped to [0, bl->T]; t <= 0 gives
+ *        p1->A and t >= bl->T gives p2->B bit for bit.
+ * @param T output frame (must not alias bl).
+ * Outside the overlap the position is dh_path_eval_f32's (within 4
+ * FLT_EPSILON S of the line); inside, within bl->dev of the corner up to
+ * 8 FLT_EPSILON S (S the largest position magnitude of the lines).
+ * @return DH_OK; DH_ERR_NAN for a NaN t; DH_ERR_ARG when bl holds no
+ *         blend (its paths not unit quaternions: e.g. all zero). T
+ *         untouched on error.
+ */
+dh_status dh_blend_eval_f32(const dh_blend_f32 *bl, float t, dh_mat4_f32 *T);
 
 #ifdef __cplusplus
 }

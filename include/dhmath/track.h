@@ -29,15 +29,16 @@
  * Method (docs/design.md, "Tracking"): for a closed-form robot, the
  * solution of dh_ikc_f32 nearest the current configuration in time (the
  * largest |q*_i - q_i| / vmax_i, then the sum of |q*_i - q_i|) is taken
- * when every joint can reach it this period (status OK). Otherwise the
+ * when every joint can reach it this period (status OK). Otherwise, when
+ * the current configuration already reaches the target, the joints keep
+ * their place (the zero step fitted into the step box). Otherwise the
  * damped least-squares step (dh_dls_step_f32, damping raised near
  * singularities from the bound on the smallest singular value) is fitted
  * into the period's step box; where it stalls (it removes less than 19 %
  * of the linearised error, against a limit or with the elbow stretched)
  * or moves away from the nearest closed-form solution, the step heads at
  * the bound straight for that solution (continuous: never a jump to
- * another branch), unless the current configuration already reaches the
- * target, where the damped step is kept. Robots without a closed form
+ * another branch). Robots without a closed form
  * (m NULL) use the damped step alone. No restarts, no randomness: same
  * inputs, same outputs.
  *

@@ -43,13 +43,8 @@ DH_NOINLINE int64_t dh_ikc_mla_q_(int64_t acc, int32_t c, int32_t v)
 /* shift of a non-negative int64 below 2^31 */
 unsigned dh_ikc_fit31_q_(int64_t v)
 {
-    uint32_t hi = (uint32_t)((uint64_t)v >> 31);
-    unsigned s = 0u;
-    while (hi != 0u) {
-        hi >>= 1;
-        s++;
-    }
-    return s;
+    const unsigned b = dh_q_bitlen64((uint64_t)v);
+    return (b > 31u) ? b - 31u : 0u;
 }
 
 int32_t dh_ikc_cref_q_(const dh_ikc_model_q *m, const int32_t *q_ref, uint32_t i)

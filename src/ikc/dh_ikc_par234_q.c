@@ -26,9 +26,8 @@
  *
  * Cost (all 8 UR solutions): atan2 2 (joint 1) + 3 per shoulder (phi, t5,
  * t6) + 3 per wrist record (elbow pair, two t2) = 20; sin/cos 2 (t1) + 2
- * (phi) + 8 (t3) = 12; 2 + 4 integer square roots. Measured under QEMU on
- * Cortex-M0 (-O2, bench/target harness, 4 UR5 targets in mm): 36,300
- * instructions per call.
+ * (phi) + 8 (t3) = 12; 2 + 4 integer square roots. The measured cost per
+ * call is in docs/generated/performance_target.md.
  *
  * Boundary: a wrist record whose planar point is beyond the 2R's reach
  * is searched for along the shoulder's freedom within the bound B

@@ -39,9 +39,8 @@
 #define IKCQ_RIGID_TOL ((int32_t)1 << 20)
 /* canonical lengths and intermediate lengths, raw */
 #define IKCQ_LEN_LIM ((int32_t)1 << 29)
-
-static const dh_frame_q ikcq_identity = {
-    {{DH_Q_ONE30, 0, 0}, {0, DH_Q_ONE30, 0}, {0, 0, DH_Q_ONE30}}, {0, 0, 0}};
+/* 540 degrees, Q16.16: limits within (-540, 540] take ikcq_shift's int32 path */
+#define IKCQ_Q16_540 ((int32_t)35389440)
 
 /* ---- analysis ----------------------------------------------------------- */
 
@@ -192,6 +191,8 @@ static DH_NOINLINE void ikcq_classify(dh_ikc_model_q *m)
 
 dh_status dh_ikc_analyse_q(const dh_robot *r, dh_ikc_model_q *m)
 {
+    static const dh_frame_q ikcq_identity = {
+        {{DH_Q_ONE30, 0, 0}, {0, DH_Q_ONE30, 0}, {0, 0, DH_Q_ONE30}}, {0, 0, 0}};
     uint32_t i;
     dh_status st;
 
@@ -243,7 +244,7 @@ static DH_NOINLINE int ikcq_model_ok(const dh_ikc_model_q *m)
 
 /* q (in (-180, 180]) shifted by a multiple of 360 into [lo, hi], nearest
  * ref (ties: the lower); *in = 0 when no shift is inside (q returned) */
-static DH_NOINLINE int32_t ikcq_shift(int32_t q, int32_t lo, int32_t hi, int32_t ref, int *in)
+static int32_t ikcq_shift(int32_t q, int32_t lo, int32_t hi, int32_t ref, int *in)
 {
     const int64_t d = (int64_t)q - lo;
     const uint32_t P = (uint32_t)DH_IKC_Q16_360;
@@ -252,6 +253,28 @@ static DH_NOINLINE int32_t ikcq_shift(int32_t q, int32_t lo, int32_t hi, int32_t
 
     *in = 1;
     if (lo > hi) return q;
+    if (lo > -IKCQ_Q16_540 && hi <= IKCQ_Q16_540) {
+        /* limits within (-540, 540]: the candidates are q - 360, q and
+         * q + 360 (q -+ 720 lie outside), all in int32; the distances to
+         * ref (|.| < 2^32) are taken in uint32 */
+        int32_t c = q - DH_IKC_Q16_360, best = q;
+        uint32_t bd = 0u, dd;
+        unsigned i;
+        int found = 0;
+        for (i = 0; i < 3u; i++) {
+            if (c >= lo && c <= hi) {
+                dd = (c >= ref) ? (uint32_t)c - (uint32_t)ref : (uint32_t)ref - (uint32_t)c;
+                if (!found || dd < bd) {
+                    best = c;
+                    bd = dd;
+                    found = 1;
+                }
+            }
+            c += DH_IKC_Q16_360;
+        }
+        *in = found;
+        return best;
+    }
     if ((int64_t)hi - lo < 3 * (int64_t)P) {
         /* up to three candidates: no division */
         int32_t best;
@@ -288,33 +311,79 @@ static DH_NOINLINE int32_t ikcq_shift(int32_t q, int32_t lo, int32_t hi, int32_t
     return (int32_t)(first + (int64_t)kk * P);
 }
 
+/* *q (in (-180, 180]) <- ikcq_shift(*q, ...) in place; 1 when inside the
+ * limits (the solver's slot holds the value: no addressable local in
+ * ikcq_finish, whose frame is on the deepest chain) */
+static DH_NOINLINE int ikcq_shift_at(int32_t *q, int32_t lo, int32_t hi, int32_t ref)
+{
+    int in = 1;
+    *q = ikcq_shift(*q, lo, hi, ref, &in);
+    return in;
+}
+
 /* raw canonical solutions -> joint values, shifts, limits, compaction;
- * the count kept, or IKCQ_FINISH_OVF when a prismatic value saturated */
+ * the count kept, or IKCQ_FINISH_OVF when a prismatic value saturated.
+ * Joint by joint (the limits, offset and reference loaded once), a mask
+ * of the solutions outside a limit (raw <= DH_IKC_MAX_SOL < 32); without
+ * DH_IKC_KEEP_OUT_OF_LIMITS a solution already outside is not converted
+ * further (it is dropped) */
 #define IKCQ_FINISH_OVF 0xFFFFFFFFu
 static DH_NOINLINE uint32_t ikcq_finish(const dh_ikc_model_q *m, const int32_t *q_ref, uint32_t opts,
                                        dh_ikc_sol_q *sol, uint32_t raw)
 {
-    uint32_t s, i, kept = 0;
+    const uint32_t n = m->n, prismatic = m->prismatic;
+    const uint32_t keep = opts & DH_IKC_KEEP_OUT_OF_LIMITS;
+    uint32_t s, i, kept = 0, out = 0;
     int ovf = 0;
-    for (s = 0; s < raw; s++) {
-        dh_ikc_sol_q *t = &sol[s];
-        int all_in = 1;
-        for (i = 0; i < m->n; i++) {
-            int in = 1;
-            if ((m->prismatic >> i) & 1u) {
-                t->q[i] = dh_q_sat32((int64_t)t->q[i] - m->d[i], &ovf);
-                if (m->qmin[i] <= m->qmax[i]) in = (t->q[i] >= m->qmin[i] && t->q[i] <= m->qmax[i]);
-            } else {
-                t->q[i] = ikcq_shift(dh_ikc_wrap180_q_(t->q[i] - m->off[i]), m->qmin[i], m->qmax[i],
-                                    (q_ref != NULL) ? q_ref[i] : 0, &in);
+    for (i = 0; i < n; i++) {
+        const int32_t lo = m->qmin[i], hi = m->qmax[i];
+        if ((prismatic >> i) & 1u) {
+            const int32_t d = m->d[i];
+            for (s = 0; s < raw; s++) {
+                int32_t *q = &sol[s].q[i];
+                *q = dh_q_sat32((int64_t)*q - d, &ovf);
+                if (lo <= hi && (*q < lo || *q > hi)) out |= 1u << s;
             }
-            if (!in) all_in = 0;
+        } else if (lo > -IKCQ_Q16_540 && hi <= IKCQ_Q16_540 && lo <= hi && hi - lo < DH_IKC_Q16_360) {
+            /* one candidate at most (ikcq_shift's result without the
+             * search): the least v + 360 k >= lo (k in -1..1, v in
+             * (-180, 180]), inside when <= hi */
+            const int32_t off = m->off[i];
+            for (s = 0; s < raw; s++) {
+                int32_t *q = &sol[s].q[i];
+                const int32_t v = dh_ikc_wrap180_q_(*q - off);
+                int32_t c;
+                if (keep == 0u && ((out >> s) & 1u) != 0u) continue;
+                if (v - DH_IKC_Q16_360 >= lo) {
+                    c = v - DH_IKC_Q16_360;
+                } else if (v < lo) {
+                    c = v + DH_IKC_Q16_360;
+                } else {
+                    c = v;
+                }
+                if (c >= lo && c <= hi) {
+                    *q = c;
+                } else {
+                    *q = v;
+                    out |= 1u << s;
+                }
+            }
+        } else {
+            const int32_t off = m->off[i], ref = (q_ref != NULL) ? q_ref[i] : 0;
+            for (s = 0; s < raw; s++) {
+                int32_t *q = &sol[s].q[i];
+                if (keep == 0u && ((out >> s) & 1u) != 0u) continue;
+                *q = dh_ikc_wrap180_q_(*q - off);
+                if (!ikcq_shift_at(q, lo, hi, ref)) out |= 1u << s;
+            }
         }
-        if (!all_in) {
-            if ((opts & DH_IKC_KEEP_OUT_OF_LIMITS) == 0u) continue;
-            t->flags |= DH_IKC_OUT_OF_LIMITS;
+    }
+    for (s = 0; s < raw; s++) {
+        if ((out >> s) & 1u) {
+            if (keep == 0u) continue;
+            sol[s].flags |= DH_IKC_OUT_OF_LIMITS;
         }
-        if (kept != s) sol[kept] = *t;
+        if (kept != s) sol[kept] = sol[s];
         kept++;
     }
     return ovf ? IKCQ_FINISH_OVF : kept;
@@ -347,6 +416,20 @@ static DH_NOINLINE int ikcq_row_apply(const dh_frame_q *F, dh_ikc_sol_q *sol, un
     return ovf;
 }
 
+/* 1 when F is the identity frame, word by word (the same answer as a
+ * memcmp with the identity frame: no padding; a fraction of its cost on the
+ * cores whose memcmp goes byte by byte) */
+static int ikcq_is_identity(const dh_frame_q *F)
+{
+    unsigned c, i;
+    for (c = 0; c < 3u; c++) {
+        for (i = 0; i < 3u; i++)
+            if (F->r[c][i] != ((c == i) ? DH_Q_ONE30 : 0)) return 0;
+        if (F->p[c] != 0) return 0;
+    }
+    return 1;
+}
+
 /* T06 = pre_inv T post_inv into the scratch of sol, identity products
  * skipped; 1 on overflow */
 static DH_NOINLINE int ikcq_t06(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_sol_q *sol)
@@ -355,9 +438,9 @@ static DH_NOINLINE int ikcq_t06(const dh_ikc_model_q *m, const dh_frame_q *T, dh
     int ovf = 0;
     for (c = 0; c < 4u; c++)
         for (i = 0; i < 3u; i++) DH_IKC_T06_COL_(sol, c)[i] = (c < 3u) ? T->r[c][i] : T->p[i];
-    if (memcmp(&m->pre_inv, &ikcq_identity, sizeof ikcq_identity) != 0)
+    if (!ikcq_is_identity(&m->pre_inv))
         for (c = 0; c < 4u; c++) ovf |= ikcq_col_apply(&m->pre_inv, DH_IKC_T06_COL_(sol, c), c == 3u);
-    if (memcmp(&m->post_inv, &ikcq_identity, sizeof ikcq_identity) != 0)
+    if (!ikcq_is_identity(&m->post_inv))
         for (i = 0; i < 3u; i++) ovf |= ikcq_row_apply(&m->post_inv, sol, i);
     return ovf;
 }

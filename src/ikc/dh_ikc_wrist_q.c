@@ -53,7 +53,6 @@
  * sin/cos of t1 (2), t3 (4), tb and t4 (2 per arm branch, 8): 14;
  * 3 integer square roots (u, two elbow radicands); about 250 products.
  * Factors 0 and +-1 (exact twists, zero tool offsets) are not multiplied.
- * Measured under QEMU on Cortex-M0 (-O2): 43,900 instructions per call.
  */
 #include "dhmath/ikc.h"
 #include "dhmath/frame.h"
@@ -106,12 +105,26 @@ static DH_NOINLINE int32_t wristq_div_rnd(int64_t n, uint64_t d)
     return n < 0 ? -(int32_t)qt : (int32_t)qt;
 }
 
-/* v <- Rz(t)^T v in the plane (x, y): (c x + s y, c y - s x) */
+/* v <- Rz(t)^T v in the plane (x, y): (c x + s y, c y - s x). A quarter
+ * turn (c = 0, s = +-1: twists of +-90 deg) swaps without products (the
+ * rounded products are +-a, +-b exactly, modulo 2^32); otherwise the
+ * products that skip exact factors when c is 0 or +-1, the plain ones when
+ * it is not (the same sums) */
 static DH_NOINLINE void wristq_rot2(int32_t *x, int32_t *y, int32_t c, int32_t s)
 {
     const int32_t a = *x, b = *y;
-    *x = dh_ikc_r30_q_(dh_ikc_mla_q_(dh_ikc_mla_q_(0, c, a), s, b));
-    *y = dh_ikc_r30_q_(dh_ikc_mla_q_(dh_ikc_mla_q_(0, c, b), -s, a));
+    if (c == 0 && (s == DH_Q_ONE30 || s == -DH_Q_ONE30)) {
+        *x = (int32_t)(s > 0 ? (uint32_t)b : 0u - (uint32_t)b);
+        *y = (int32_t)(s > 0 ? 0u - (uint32_t)a : (uint32_t)a);
+        return;
+    }
+    if (c == 0 || c == DH_Q_ONE30 || c == -DH_Q_ONE30) {
+        *x = dh_ikc_r30_q_(dh_ikc_mla_q_(dh_ikc_mla_q_(0, c, a), s, b));
+        *y = dh_ikc_r30_q_(dh_ikc_mla_q_(dh_ikc_mla_q_(0, c, b), -s, a));
+        return;
+    }
+    *x = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(c, a), s, b));
+    *y = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(c, b), -s, a));
 }
 
 /* ---- wrist families: detector ------------------------------------------- */
@@ -228,11 +241,29 @@ int dh_ikc_detect_wrist_q_(dh_ikc_model_q *m)
 #define WRISTQ_EMPTY 0xFFFFFFFFu
 #define WRISTQ_ABSENT ((int32_t)-1)
 
-/* C^T v, C row-major (column i of C dotted with v) */
+/* c v / 2^30 modulo 2^32 for c in {0, 2^30, -2^30} */
+DH_INLINE uint32_t wristq_exact_term(int32_t c, int32_t v)
+{
+    if (c == 0) return 0u;
+    return c > 0 ? (uint32_t)v : 0u - (uint32_t)v;
+}
+
+/* C^T v, C row-major (column i of C dotted with v). When every entry of C
+ * is 0 or +-1 (exact twists, the usual case) the sums of +-v terms are
+ * taken modulo 2^32: the same bits as the rounded products (the int64 sum
+ * is a multiple of 2^30, and its rounding keeps its bits 30..61) */
 static DH_NOINLINE void wristq_ct(const int32_t *C, int32_t *v)
 {
     const int32_t x = v[0], y = v[1], z = v[2];
     unsigned i;
+    for (i = 0; i < 9u; i++)
+        if (C[i] != 0 && C[i] != DH_Q_ONE30 && C[i] != -DH_Q_ONE30) break;
+    if (i == 9u) {
+        for (i = 0; i < 3u; i++)
+            v[i] = (int32_t)(wristq_exact_term(C[i], x) + wristq_exact_term(C[3u + i], y) +
+                             wristq_exact_term(C[6u + i], z));
+        return;
+    }
     for (i = 0; i < 3u; i++) v[i] = dh_ikc_r30_q_(dh_ikc_mla_q_(dh_ikc_mla_q_(dh_ikc_mla_q_(0, C[i], x), C[3u + i], y), C[6u + i], z));
 }
 

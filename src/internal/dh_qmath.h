@@ -108,24 +108,40 @@ DH_INLINE uint32_t dh_q_abs_u32(int32_t x)
     return x < 0 ? 0u - (uint32_t)x : (uint32_t)x;
 }
 
-/** floor(sqrt(v)) for v < 2^62, digit by digit (31 bit pairs; the
- *  remainder stays below 2 root + 1 <= 2^31 + 1). Integer only, no division. */
+/** floor(sqrt(v)) for v < 2^62, digit by digit (31 bit pairs), in uint32:
+ *  after j digits the remainder is at most 2 root < 2^(j+1), so the shifted
+ *  remainder fits 32 bits for the first 30 digits; at the 31st a remainder
+ *  >= 2^30 shifted is >= 2^32 > the trial 4 root + 1, a digit 1. Leading
+ *  zero pairs of the high word are skipped (digits 0, remainder 0). Integer
+ *  only, no division. */
 static inline uint32_t dh_q_isqrt62(uint64_t v)
 {
-    uint64_t rem = 0u;
-    uint32_t root = 0u, i;
+    const uint32_t hi = (uint32_t)(v >> 32) & 0x3FFFFFFFu, lo = (uint32_t)v;
+    uint32_t rem = 0u, root = 0u, trial;
+    int i;
 
-    for (i = 0u; i < 31u; i++) {
-        uint64_t trial;
-        rem = (rem << 2) | (v >> 60);
-        v = (v << 2) & (((uint64_t)1 << 62) - 1u);
+    if (hi != 0u)
+        for (i = (int)((31u - dh_port_clz(hi)) & ~1u); i >= 0; i -= 2) {
+            rem = (rem << 2) | ((hi >> i) & 3u);
+            root <<= 1;
+            trial = (root << 1) | 1u;
+            if (rem >= trial) {
+                rem -= trial;
+                root |= 1u;
+            }
+        }
+    for (i = 30; i >= 2; i -= 2) {
+        rem = (rem << 2) | ((lo >> i) & 3u);
         root <<= 1;
-        trial = ((uint64_t)root << 1) | 1u;
+        trial = (root << 1) | 1u;
         if (rem >= trial) {
             rem -= trial;
             root |= 1u;
         }
     }
+    root <<= 1;
+    trial = (root << 1) | 1u;
+    if ((rem >> 30) != 0u || ((rem << 2) | (lo & 3u)) >= trial) root |= 1u;
     return root;
 }
 

@@ -9,11 +9,23 @@
  *
  * Clock. A move's clock runs from 0 to its duration and is capped there,
  * so the end is reached exactly (the joint move's q1 and the path's B bit
- * for bit). A joint move's clock advances every period. A path move's
- * clock advances only when the tracker reported OK at the frame of the
- * current clock: the target is then never more than one period of the
- * move beyond the last frame reached, and a tool away from the path's
- * start is first brought onto it (the clock holds at 0).
+ * for bit). A joint move's clock advances by dt every period. A path
+ * move's clock advances by r dt, r in [0, 1] its feed override (time
+ * scaling: the target's path parameter is s(clock), so its rate is
+ * s'(clock) r): r falls while the tracker is not OK and rises again while
+ * it is, each period by at most what keeps the target's acceleration
+ * along the path within the profile's peak (move_feed_bounds). While the
+ * tracker is OK with r at 1 the clock advances by dt exactly, as r dt is
+ * dt: a move the tracker follows runs its profile bit for bit.
+ *
+ * Ceiling. Each stretch of not-OK periods (an episode) that begins while
+ * the path moves sets the ceiling of r to MOVE_CEIL times the r it began
+ * at, so r settles below the rate the joints could not follow instead of
+ * rising into it again; the ceiling rises by MOVE_CREEP times r's largest
+ * rise in every OK period with r at it, so the move speeds up again where
+ * the joints can follow. A tool away from the path's start is brought onto
+ * it with the clock at 0 (s' = 0 there: r falls to 0 and rises back to
+ * its ceiling in one period each, and the ceiling is not lowered).
  */
 #include "dhmath/motion.h"
 #include "../internal/dh_build.h"
@@ -23,12 +35,19 @@
 /* 1 - 2^-10: the joint move's planning margin under the caller's limits */
 #define MOVE_MARGIN 0.9990234375f
 
-/* 1 when mv holds a move of the given kind with a consistent clock */
+/* the ceiling of r after an episode of not-OK periods begun at r */
+#define MOVE_CEIL 0.875f
+/* the ceiling's relative rise per second of OK periods at it (1/s) */
+#define MOVE_CREEP 2.0f
+
+/* 1 when mv holds a move of the given kind with a consistent clock and
+ * override */
 static int move_holds(const dh_move_f32 *mv, uint32_t kind)
 {
     if (mv->kind != kind) return 0;
     if (!dh_isfinite_f32(mv->dur) || !(mv->dur >= 0.0f)) return 0;
     if (!(mv->clock >= 0.0f) || !(mv->clock <= mv->dur)) return 0;
+    if (!(mv->feed >= 0.0f) || !(mv->feed <= 1.0f) || !(mv->fcap >= 0.0f) || !(mv->fcap <= 1.0f)) return 0;
     return (kind != (uint32_t)DH_MOVE_JOINT) || (mv->n >= 1u && mv->n <= (uint32_t)DH_MAX_JOINTS);
 }
 
@@ -46,6 +65,14 @@ static float move_next_clock(const dh_move_f32 *mv, float dt)
 {
     const float c = mv->clock + dt;
     return (c < mv->dur) ? c : mv->dur;
+}
+
+/* the override at its start: r = its ceiling = 1 */
+static void move_feed_init(dh_move_f32 *mv)
+{
+    mv->feed = 1.0f;
+    mv->fcap = 1.0f;
+    mv->lag = 0u;
 }
 
 dh_status dh_move_joint_f32(dh_move_f32 *mv, uint32_t n, const float *q0, const float *q1, const float *vmax,
@@ -72,6 +99,7 @@ dh_status dh_move_joint_f32(dh_move_f32 *mv, uint32_t n, const float *q0, const 
     mv->n = n;
     mv->dur = mv->prof[0].T;
     mv->clock = 0.0f;
+    move_feed_init(mv);
     mv->kind = (uint32_t)DH_MOVE_JOINT;
     return DH_OK;
 }
@@ -88,6 +116,7 @@ dh_status dh_move_joint_step_f32(dh_move_f32 *mv, float dt, float *q, dh_move_re
     if (st != DH_OK) return st;
     mv->clock = c;
     rep->clock = c;
+    rep->feed = 1.0f;
     rep->held = 0;
     rep->done = !(c < mv->dur);
     return DH_OK;
@@ -106,6 +135,7 @@ dh_status dh_move_path_jerk_f32(dh_move_f32 *mv, const dh_path_f32 *p, const dh_
     mv->n = 0u;
     mv->dur = mv->prof[0].T;
     mv->clock = 0.0f;
+    move_feed_init(mv);
     mv->kind = (uint32_t)DH_MOVE_PATH;
     return DH_OK;
 }
@@ -127,21 +157,97 @@ dh_status dh_move_target_f32(const dh_move_f32 *mv, dh_mat4_f32 *T)
     return dh_path_eval_f32(&mv->path, s, T);
 }
 
+/* The largest rise of r this period within the acceleration A of s:
+ * k = s'(clock) / dt > 0, p >= 0 the largest s'' near the clock. The
+ * target's second difference over the period is at most
+ * k (r' - r) + p r'^2, held to A: the root of
+ * p x^2 + (k + 2 p r) x - (A - p r^2) = 0 in its cancellation-free form. */
+static float move_feed_rise(float k, float p, float A, float r)
+{
+    const float b = k + 2.0f * p * r, c = A - p * r * r;
+    float den;
+    if (!(c > 0.0f)) return 0.0f;
+    den = b + dh_sqrt_f32(b * b + 4.0f * p * c);
+    return (den > 0.0f) ? 2.0f * c / den : 0.0f;
+}
+
+/* The largest rise (*up) and fall (*dn) of r this period that keep the
+ * target's acceleration along the path within the profile's peak A (docs/
+ * design.md, "Motion"): s'' is bounded over the last and the next period
+ * by its values at their ends and at the clock (the trapezoid's s'' falls
+ * monotonically; the profile's first and last phases, clamped to 0 by the
+ * evaluation, are taken at +-A). 1 (no bound) where s' is 0. */
+static void move_feed_bounds(const dh_move_f32 *mv, float dt, float *up, float *dn)
+{
+    const dh_profile_f32 *pr = &mv->prof[0];
+    const float A = pr->a, r = mv->feed, tb = mv->clock - r * dt, tf = mv->clock + dt;
+    float s, sd, a0, hi, lo, k;
+    *up = 1.0f;
+    *dn = 1.0f;
+    (void)dh_profile_eval_f32(pr, tb, &s, &sd, &hi);
+    lo = hi;
+    if (!(tb > 0.0f)) hi = A;
+    (void)dh_profile_eval_f32(pr, tf, &s, &sd, &a0);
+    if (!(tf < mv->dur)) a0 = -A;
+    if (a0 > hi) hi = a0;
+    if (a0 < lo) lo = a0;
+    (void)dh_profile_eval_f32(pr, mv->clock, &s, &sd, &a0);
+    if (a0 > hi) hi = a0;
+    if (a0 < lo) lo = a0;
+    if (!(sd > 0.0f)) return;
+    k = sd / dt;
+    *up = move_feed_rise(k, (hi > 0.0f) ? hi : 0.0f, A, r);
+    *dn = (A + ((lo < 0.0f) ? lo : 0.0f) * r * r) / k;
+    if (!(*dn > 0.0f)) *dn = 0.0f;
+}
+
+/* r after a period whose tracker state was OK (ok 1) or not, and the
+ * ceiling's update (the file's comment) */
+static DH_NOINLINE float move_feed_next(dh_move_f32 *mv, float dt, int ok)
+{
+    const float r = mv->feed;
+    float up, dn, goal, c = mv->fcap;
+    if (ok != 0 && r >= 1.0f && c >= 1.0f) {
+        /* at full feed and ceiling: r stays 1, no bound needed */
+        mv->lag = 0u;
+        return 1.0f;
+    }
+    move_feed_bounds(mv, dt, &up, &dn);
+    if (ok != 0) {
+        if (r >= c) c += MOVE_CREEP * c * dt;
+        if (c > 1.0f) c = 1.0f;
+        goal = c;
+        mv->lag = 0u;
+    } else {
+        if (mv->lag == 0u && mv->clock > 0.0f && r > 0.0f) c = MOVE_CEIL * r;
+        goal = 0.0f;
+        mv->lag = 1u;
+    }
+    mv->fcap = c;
+    if (goal > r) return (r + up < goal) ? r + up : goal;
+    return (r - dn > goal) ? r - dn : goal;
+}
+
 dh_status dh_move_advance_f32(dh_move_f32 *mv, float dt, dh_track_state state, dh_move_report_f32 *rep)
 {
     dh_status st;
-    int done = 0, held = 0;
+    int done = 0, ok = 0, held = 1;
     DH_ASSERT(mv != NULL && rep != NULL);
     st = move_period_ok(mv, (uint32_t)DH_MOVE_PATH, dt);
     if (st != DH_OK) return st;
     if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
-    if (state != DH_TRACK_OK)
-        held = 1;
-    else if (mv->clock < mv->dur)
-        mv->clock = move_next_clock(mv, dt);
-    else
+    if (state == DH_TRACK_OK) {
+        ok = 1;
+        held = 0;
+    }
+    if (ok != 0 && !(mv->clock < mv->dur)) {
         done = 1;
+    } else {
+        mv->feed = move_feed_next(mv, dt, ok);
+        mv->clock = move_next_clock(mv, mv->feed * dt);
+    }
     rep->clock = mv->clock;
+    rep->feed = mv->feed;
     rep->held = held;
     rep->done = done;
     return DH_OK;

@@ -102,6 +102,8 @@ dh_status dh_queue_init_f32(dh_queue_f32 *qu, dh_queue_item_f32 *items, uint32_t
     qu->mv.kind = (uint32_t)DH_MOVE_NONE;
     qu->mv.clock = 0.0f;
     qu->mv.dur = 0.0f;
+    qu->mv.feed = 1.0f;
+    qu->mv.fcap = 1.0f;
     qu->s0 = 0.0f;
     qu->vs = 0.0f;
     qu->as = 0.0f;
@@ -308,6 +310,9 @@ static DH_NOINLINE dh_status queue_start_path(dh_queue_f32 *qu, const dh_queue_i
     mv->n = 0u;
     mv->dur = mv->prof[0].T;
     mv->clock = 0.0f;
+    mv->feed = 1.0f;
+    mv->fcap = 1.0f;
+    mv->lag = 0u;
     mv->kind = (uint32_t)DH_MOVE_PATH;
     return DH_OK;
 }
@@ -328,6 +333,8 @@ static DH_NOINLINE void queue_joint_end(dh_queue_f32 *qu, uint32_t n, float T)
     qu->mv.n = n;
     qu->mv.dur = T;
     qu->mv.clock = 0.0f;
+    qu->mv.feed = 1.0f;
+    qu->mv.fcap = 1.0f;
     qu->mv.kind = (uint32_t)DH_MOVE_JOINT;
 }
 
@@ -471,12 +478,11 @@ static void queue_period(dh_queue_f32 *qu, uint32_t what, dh_track_state state, 
         qu->mv.clock = qu->next;
         if (!(qu->next < qu->mv.dur)) *done = 1;
     } else if (what == QUEUE_PATH) {
-        if (ok == 0)
-            *held = 1;
-        else if (qu->mv.clock < qu->mv.dur)
-            qu->mv.clock = (qu->mv.clock + qu->dt < qu->mv.dur) ? qu->mv.clock + qu->dt : qu->mv.dur;
-        else
-            *done = 1;
+        dh_move_report_f32 mrep;
+        /* the executor's period: clock and feed override (dh_move.c) */
+        (void)dh_move_advance_f32(&qu->mv, qu->dt, state, &mrep);
+        *held = mrep.held;
+        *done = mrep.done;
     } else if (what == QUEUE_BJOINT || what == QUEUE_BPATH) {
         if (what == QUEUE_BJOINT)
             qu->tb = qu->next;
@@ -502,6 +508,7 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
     rep->seq = qu->seq;
     queue_period(qu, what, state, &held, &done);
     rep->clock = (what == QUEUE_BJOINT || what == QUEUE_BPATH) ? qu->tb : qu->mv.clock;
+    rep->feed = (what == QUEUE_PATH) ? qu->mv.feed : 1.0f;
     if (done != 0) queue_pop(qu);
     rep->held = held;
     rep->done = done;
@@ -527,8 +534,9 @@ static DH_NOINLINE float queue_brake(dh_queue_f32 *qu)
             if (e > d) d = e;
         }
     } else {
+        /* s's rate and acceleration under the feed override r: s' r, s'' r^2 */
         s = queue_path_s(qu, qu->mv.clock, &sd, &sdd);
-        d = queue_brake_plan(qu, 0u, s, sd, sdd, qu->as, 0.0f, 1.0f);
+        d = queue_brake_plan(qu, 0u, s, sd * qu->mv.feed, sdd * qu->mv.feed * qu->mv.feed, qu->as, 0.0f, 1.0f);
     }
     return d;
 }

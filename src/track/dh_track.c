@@ -463,13 +463,14 @@ static DH_NOINLINE int track_ikc_args(dh_track_f32 *t, const dh_mat4_f32 *target
 
 /* The step towards a valid target, the closed form's raw solutions (if
  * any) in t->sol, t->ns: the solution nearest in time if the box holds
- * it; else, away from singularities, straight for it at the bound; near
- * them the damped step, unless it stalls or moves away from it; without a
- * solution the damped step. 1 when there is no closed form (track_more
- * follows). */
+ * it; else, where q already reaches the target, no step; else, away from
+ * singularities, straight for that solution at the bound; near them the
+ * damped step, unless it stalls or moves away from it; without a solution
+ * the damped step. 1 when there is no closed form and q does not reach
+ * the target (track_more follows). */
 static DH_NOINLINE int track_chase(dh_track_f32 *t, const dh_mat4_f32 *target)
 {
-    int have = 0;
+    int have = 0, ok;
     t->unreach = 0;
     if (t->m != NULL) {
         const dh_status st = (t->ist != DH_OK) ? t->ist
@@ -478,20 +479,23 @@ static DH_NOINLINE int track_chase(dh_track_f32 *t, const dh_mat4_f32 *target)
         have = track_pick(t, st, &t->unreach);
     }
     if (have && track_reached(t)) return 0;
+    /* q already reaches the target (the pose error from t->T, FK at q):
+     * it keeps its place (the zero step fitted into the box), never a run
+     * for a solution outside the box that would lose the reached pose */
+    ok = track_err(t, target);
+    if (ok && track_within(t)) {
+        track_zero(t);
+        track_fit(t);
+        return 0;
+    }
     /* sigma_min at q (t->J is the Jacobian at q) */
     if (dh_manipulability_ws_f32_(t->J, t->r->n, NULL, &t->sg, t->ws) != DH_OK) t->sg = 0.0f;
     if (have) {
-        if (t->sg < t->sing_threshold) {
-            const int ok = track_err(t, target);
-            if (!track_damped(t, ok) && !track_away(t)) return 0;
-            /* q already reaches the target: its damped step, not a run
-             * at the bound for a solution outside the box */
-            if (ok && track_within(t)) return 0;
-        }
+        if (t->sg < t->sing_threshold && !track_damped(t, ok) && !track_away(t)) return 0;
         track_head(t);
         return 0;
     }
-    (void)track_damped(t, track_err(t, target));
+    (void)track_damped(t, ok);
     return (t->m == NULL) ? 1 : 0;
 }
 

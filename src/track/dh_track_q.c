@@ -586,8 +586,7 @@ static DH_NOINLINE int trq_straight(dh_track_q *t)
 static DH_NOINLINE void trq_settled(dh_track_q *t)
 {
     if (t->have) {
-        /* q already reaching the target keeps its damped step */
-        if ((t->stall || trq_away(t)) && !t->at) trq_head(t);
+        if (t->stall || trq_away(t)) trq_head(t);
     } else {
         if (t->m == NULL && trq_beyond(t)) t->unreach = 1;
     }
@@ -678,7 +677,12 @@ dh_status dh_track_step_q(dh_track_q *t, const dh_frame_q *target, int32_t *q_ou
         }
         if (trq_pick(t)) {
             trq_manip(t, NULL, &t->sg);
-            if (!trq_straight(t)) {
+            /* q already reaching the target keeps its place (the zero
+             * step fitted into the box): no run for a solution outside
+             * the box that would lose the reached pose */
+            if (trq_prep(t) && t->at) {
+                (void)trq_none(t);
+            } else if (!trq_straight(t)) {
                 /* damped steps: one, or up to three without a closed form,
                  * each on the Jacobian of the point reached */
                 for (;;) {
@@ -691,6 +695,8 @@ dh_status dh_track_step_q(dh_track_q *t, const dh_frame_q *target, int32_t *q_ou
                     trq_manip(t, NULL, &t->sg);
                 }
                 trq_settled(t);
+            } else {
+                /* straight for the closed-form solution (trq_straight) */
             }
         }
     }

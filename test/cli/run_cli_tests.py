@@ -1685,6 +1685,28 @@ def group_move(seed, tmp):
         check(pe <= 5e-6 and rot_angle(F, E) <= 5e-5, 'move puma: last line %.3g, %.3g rad from the end' %
               (pe, rot_angle(F, E)))
 
+    # 3b. docs/motion.md's Puma 560 line ending in the base's orientation (the
+    # wrist asked for more than its rates): it slows down and completes (exit 3), lagging on
+    # at most a quarter of its periods, every joint step within the limits,
+    # at rest on its end frame
+    endI = 'trans(0.5,-0.03,1.0)'
+    rc, out, err = run(['move', puma, '--q0', ','.join(map(str, pq)), '--dt', '0.002', '--speed', '0.3', '--accel',
+                        '1.5', '--rspeed', '90', '--raccel', '360', '--line', endI])
+    head, irows = read_csv(out, 6)
+    check(rc == 3 and 'completed with' in err and irows and None not in irows, 'move puma infeasible: rc %d %r' %
+          (rc, err))
+    if irows and None not in irows:
+        lag = sum(1 for r in irows if r[2] == 'lagging')
+        check(0 < lag <= len(irows) // 4 and irows[-1][2] == 'ok', 'move puma infeasible: %d of %d periods lagging' %
+              (lag, len(irows)))
+        check_joint_limits('move puma infeasible', pq, irows, [150.0] * 6, [600.0] * 6, 0.002,
+                           [4 * f32_ulp(360.0)] * 6)
+        F, E = ref_fk(prob, irows[-1][1]), ref_expr(endI)
+        pe = max(abs(F[i][3] - E[i][3]) for i in range(3))
+        check(pe <= 5e-6 and rot_angle(F, E) <= 5e-5, 'move puma infeasible: last line %.3g, %.3g rad from the end' %
+              (pe, rot_angle(F, E)))
+        print('move puma infeasible: %d periods, %d lagging' % (len(irows), lag))
+
     # 4. a line beyond reach: exit 3, the cap, unreachable periods, limits kept
     far = 'trans(-1.2,-0.35,0.35) ' + to_expr(A).split(' ', 1)[1]
     rc, out, err = run(['move', path, '--q0', ','.join(map(str, qa)), '--dt', str(dt), '--speed', str(speed),

@@ -33,7 +33,8 @@
  * plus the third ones (8 samples' noise) of the position vector (the
  * TOTAL jerk) and of the rotation angle against jmax and wjmax. Without
  * jerk limits the functions are the trapezoid's bit for bit; the executor
- * (dh_move_path_jerk_f32) targets the move's frame at its clock; every
+ * (dh_move_path_jerk_f32) targets the move's frame at its clock (its feed
+ * override 1 until a lagging stretch, falling in it); every
  * status of a bad jerk limit empties the profile and the move.
  */
 #include <float.h>
@@ -518,37 +519,42 @@ static void move_check(const dh_path_f32 *p, const ref_path *r, const dh_cart_li
 }
 
 /* the executor on the move (prof, p): dh_move_path_jerk_f32 holds prof;
- * each period's target is the move's frame at the clock bit for bit; a
- * LAGGING period every 7th holds the clock and the target; done only at
- * the end, with the target at B */
+ * each period's target is the move's frame at the clock bit for bit; up
+ * to a stretch of 5 LAGGING periods at a third of the move the feed
+ * override stays 1 and the clock advances by dt bit for bit; in the
+ * stretch r falls (held 1, the clock advancing by r dt); done only at the
+ * end, with the target at B, within the duration plus 1 s */
 static void move_run(const dh_profile_f32 *prof, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
                      const dh_cart_jerk_f32 *jk)
 {
     dh_move_f32 mv;
     dh_move_report_f32 rep;
     dh_mat4_f32 T, E;
-    float v, c;
-    long k, oks = 0, nmax = (long)ceil((double)prof->T * HZ) + 1;
+    float v, c, r = 1.0f;
+    const float dt = (float)(1.0 / HZ);
+    long k, nmax = (long)ceil((double)prof->T * HZ) + 1, lag0 = nmax / 3;
     DHT_EQ_INT(dh_move_path_jerk_f32(&mv, p, lim, jk), DH_OK);
     DHT_TRUE(memcmp(&mv.prof[0], prof, sizeof *prof) == 0 && mv.dur == prof->T && mv.clock == 0.0f);
-    for (k = 0; k < 2 * nmax; k++) {
+    DHT_TRUE(mv.feed == 1.0f);
+    rep.done = 0;
+    for (k = 0; k < 2 * nmax + (long)HZ; k++) {
+        const int lag = (k >= lag0 && k < lag0 + 5);
         DHT_EQ_INT(dh_move_target_f32(&mv, &T), DH_OK);
         DHT_EQ_INT(dh_path_move_eval_f32(prof, p, mv.clock, &E, &v), DH_OK);
         DHT_TRUE(memcmp(&T, &E, sizeof T) == 0);
         c = mv.clock;
-        if (k % 7 == 3) {
-            DHT_EQ_INT(dh_move_advance_f32(&mv, (float)(1.0 / HZ), DH_TRACK_LAGGING, &rep), DH_OK);
-            DHT_TRUE(rep.held == 1 && rep.done == 0 && rep.clock == c && mv.clock == c);
-            continue;
-        }
-        DHT_EQ_INT(dh_move_advance_f32(&mv, (float)(1.0 / HZ), DH_TRACK_OK, &rep), DH_OK);
-        DHT_TRUE(rep.held == 0);
+        DHT_EQ_INT(dh_move_advance_f32(&mv, dt, lag ? DH_TRACK_LAGGING : DH_TRACK_OK, &rep), DH_OK);
+        DHT_TRUE(rep.held == lag && rep.clock == mv.clock && rep.feed == mv.feed);
+        DHT_TRUE(rep.feed >= 0.0f && rep.feed <= 1.0f);
+        if (lag) DHT_TRUE(rep.feed <= r && !rep.done);
+        if (k < lag0) DHT_TRUE(rep.feed == 1.0f && (rep.done || rep.clock == ((c + dt < mv.dur) ? c + dt : mv.dur)));
+        if (!rep.done)
+            DHT_TRUE(fabs((double)rep.clock - fmin((double)c + (double)rep.feed * dt, (double)mv.dur)) <=
+                     2.0 * (double)FLT_EPSILON * (double)mv.dur);
+        r = rep.feed;
         if (rep.done) break;
-        oks++;
     }
-    /* the clock reaches dur after about T / dt OK periods (its float sum
-     * may take one more or one less) */
-    DHT_TRUE_MSG(rep.done == 1 && oks >= nmax - 2 && oks <= nmax, "%ld OK periods for T %.9g", oks, (double)prof->T);
+    DHT_TRUE_MSG(rep.done == 1, "no done within %ld periods for T %.9g", k, (double)prof->T);
     DHT_TRUE(memcmp(&T, &p->B, sizeof T) == 0 && mv.clock == mv.dur);
 }
 

@@ -34,6 +34,10 @@
  * time, on the line between the stop and B; it resumes and ends at B bit
  * for bit.
  *
+ * The feed override: the Puma 560 line that its wrist cannot follow at
+ * speed, run by a queue, gives every period's frame, clock and override of
+ * the executor (dh_move_advance_f32) bit for bit, and completes.
+ *
  * Every status of the seven functions and of dh_track_sync_f32 for bad
  * inputs, with the queue, the items and the tracker untouched.
  */
@@ -475,6 +479,98 @@ static void path_queues(void)
     G = NULL;
 }
 
+/* ---- the feed override: a queue's path move is the executor's ------------ */
+
+/* the hash of every period's frame, clock and override of the infeasible
+ * Puma line (test_move.c) run from q0 by the executor (queue 0) or by a
+ * queue (queue 1), up to done; the periods into *periods */
+static uint64_t puma_run(int queue, const float *q0, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                         long *periods, long *notok)
+{
+    dh_move_f32 *const mv = &qu.mv; /* the executor's move in the unused queue's (RAM) */
+    dh_move_report_f32 mrep;
+    dh_queue_report_f32 rep;
+    dh_queue_cmd_f32 cmd;
+    dh_track_report_f32 trep;
+    uint64_t h = 0u;
+    long call;
+    float c[2];
+    DHT_EQ_INT(dh_track_init_f32(&G->t, &G->r, &G->m, q0, DT), DH_OK);
+    if (queue) {
+        DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
+        DHT_EQ_INT(dh_queue_add_path_f32(&qu, p, lim), DH_OK);
+    } else {
+        DHT_EQ_INT(dh_move_path_f32(mv, p, lim), DH_OK);
+    }
+    *notok = 0;
+    for (call = 0; call < 40000; call++) {
+        int done;
+        if (queue) {
+            DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, DT, &cmd), DH_OK);
+            DHT_EQ_INT(cmd.kind, DH_MOVE_PATH);
+        } else {
+            DHT_EQ_INT(dh_move_target_f32(mv, &cmd.T), DH_OK);
+        }
+        DHT_EQ_INT(dh_track_step_f32(&G->t, &cmd.T, G->t.q, &trep), DH_OK);
+        if (trep.state != DH_TRACK_OK) (*notok)++;
+        if (queue) {
+            DHT_EQ_INT(dh_queue_advance_f32(&qu, trep.state, &rep), DH_OK);
+            DHT_TRUE(rep.held == (trep.state != DH_TRACK_OK) && rep.feed == qu.mv.feed);
+            c[0] = rep.clock;
+            c[1] = rep.feed;
+            done = rep.done;
+        } else {
+            DHT_EQ_INT(dh_move_advance_f32(mv, DT, trep.state, &mrep), DH_OK);
+            c[0] = mrep.clock;
+            c[1] = mrep.feed;
+            done = mrep.done;
+        }
+        h ^= hash_bytes(&cmd.T, sizeof cmd.T) + 31u * hash_bytes(c, sizeof c) + (uint64_t)call;
+        h *= 1099511628211ull;
+        if (done) break;
+    }
+    *periods = call + 1;
+    return h;
+}
+
+/* The Puma 560 line of test_move.c that the wrist cannot follow at its
+ * speed, from near q = (10, -30, 45, 20, 35, -60): run by the queue, every
+ * period's frame, clock and feed override are those of the executor bit
+ * for bit, the move lags (the override acts) and completes in both. */
+static void queue_feed(void)
+{
+    static const double QP[6] = { 10.0, -30.0, 45.0, 20.0, 35.0, -60.0 };
+    static const dh_cart_limits_f32 PLIM = { 0.3f, 1.5f, 90.0f, 360.0f };
+    dh_path_f32 p;
+    dh_mat4_f32 A, B;
+    double qa[DH_MAX_JOINTS];
+    float q0[DH_MAX_JOINTS];
+    long pe, pq, ne, nq;
+    uint64_t he, hq;
+    uint32_t i;
+    rig g;
+    G = &g;
+    DHT_EQ_INT(dhs_build(&dhs_puma560_m, &G->r), DH_OK);
+    for (i = 0; i < 6u; i++) DHT_EQ_INT(dh_robot_set_rates_f32(&G->r, i, 150.0f, 600.0f), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_f32(&G->r, &G->m), DH_OK);
+    for (i = 0; i < 6u; i++) {
+        qa[i] = QP[i] + dht_rand_uniform(-2.0, 2.0);
+        q0[i] = (float)qa[i];
+    }
+    dhs_target_f32(&G->r, qa, &A);
+    memset(&B, 0, sizeof B);
+    for (i = 0; i < 4u; i++) B.m[i][i] = 1.0f;
+    B.m[3][0] = 0.5f;
+    B.m[3][1] = -0.03f;
+    B.m[3][2] = 1.0f;
+    DHT_EQ_INT(dh_path_line_f32(&p, &A, &B), DH_OK);
+    he = puma_run(0, q0, &p, &PLIM, &pe, &ne);
+    hq = puma_run(1, q0, &p, &PLIM, &pq, &nq);
+    DHT_TRUE_MSG(pe < 40000 && pe == pq && ne == nq && ne > 0 && he == hq,
+                 "executor %ld periods (%ld not OK), queue %ld (%ld)", pe, ne, pq, nq);
+    G = NULL;
+}
+
 /* ---- errors --------------------------------------------------------------- */
 
 static void queue_bad(void)
@@ -600,6 +696,7 @@ static void queue_bad(void)
 static const dht_case cases[] = {
     DHT_CASE(joint_queues),
     DHT_CASE(path_queues),
+    DHT_CASE(queue_feed),
     DHT_CASE(queue_bad),
 };
 DHT_MAIN(cases)

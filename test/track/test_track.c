@@ -162,6 +162,10 @@ static void hold_until_ok(rig *g, dh_track_f32 *t, chk *c, const dh_mat4_f32 *ta
         /* the target reached while sigma_min is below the threshold, the
          * nearest closed-form solution maybe outside the step box: q stays */
         if (s == DH_TRACK_OK && last_near_singular && g->closed) dht_reach_max("hold.ok_box_ratio", box_ratio(g, t, target));
+        /* the same away from the singular neighbourhood (sigma_min at or
+         * above the threshold): the tracker holds the reached pose */
+        if (s == DH_TRACK_OK && !last_near_singular && g->closed)
+            dht_reach_max("hold.ok_far_box_ratio", box_ratio(g, t, target));
         if (s != DH_TRACK_OK && last_near_singular) {
             mark = k + 1;
             memcpy(q_mark, t->q, sizeof q_mark);

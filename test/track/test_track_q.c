@@ -143,6 +143,23 @@ static dh_track_state step_checked(rig *g, dh_track_q *t, chk *c, const dh_frame
     return rep.state;
 }
 
+/* at the tracker's q: the smallest over the closed-form solutions of the
+ * target of max_i |solution_i - q_i| / dq_max_i (> 1: none in the step
+ * box; twin: box_ratio of test_track.c) */
+static double box_ratio(rig *g, const dh_track_q *t, const dh_frame_q *target)
+{
+    dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+    uint32_t ns = 0, k, i;
+    double best = 1e30;
+    if (dh_ikc_q(&g->m, target, t->q, 0u, sol, &ns) != DH_OK) return 0.0;
+    for (k = 0; k < ns; k++) {
+        double r = 0.0;
+        for (i = 0; i < g->r.n; i++) r = fmax(r, fabs((double)sol[k].q[i] - t->q[i]) / (double)g->dqm[i]);
+        best = fmin(best, r);
+    }
+    return best;
+}
+
 /* the target held: OK again, after the last call in the singular
  * neighbourhood, within the time the step bound allows for the distance
  * left from there (plus 2 calls); then OK every call (twin: hold_until_ok of test_track.c) */
@@ -156,6 +173,10 @@ static void hold_until_ok(rig *g, dh_track_q *t, chk *c, const dh_frame_q *targe
     for (k = 0; k < max_calls; k++) {
         const dh_track_state s = step_checked(g, t, c, target, what);
         if (s == DH_TRACK_OK && first_ok < 0) first_ok = k;
+        /* the target reached, the nearest closed-form solution maybe
+         * outside the step box: q stays */
+        if (s == DH_TRACK_OK && g->closed)
+            dht_reach_max(last_near_singular ? "hold.ok_box_ratio" : "hold.ok_far_box_ratio", box_ratio(g, t, target));
         if (s != DH_TRACK_OK && last_near_singular) {
             mark = k + 1;
             memcpy(q_mark, t->q, sizeof q_mark);

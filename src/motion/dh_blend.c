@@ -1,0 +1,332 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * dh_blend.c - two line moves blended at their corner by superposition.
+ *
+ * Each move scales s from 0 to 1 with a trapezoid of s' <= V and
+ * |s''| <= a (the bounds of dh_path_move_f32 on a line: V = min(vmax / L,
+ * wmax / angle), a = min(amax / L, wdmax / angle)), except that its last
+ * tb (first move) or first tb (second move) runs at a reduced
+ * acceleration b <= a: the tail, from the speed u = b tb to rest over
+ * e = b tb^2 / 2. The second move is the time mirror of such a profile
+ * (its tail at its start). The tails overlap: on [t0, t0 + tb],
+ * t0 = T1 - tb, the position is p1(s1) + s2 (p_B2 - p_A2) and the
+ * rotation q2(s2) q_A2* q1(s1), i.e. Exp(s2 w2) R1(s1) with w2 the second
+ * line's fixed world rotation vector.
+ *
+ * The tails' accelerations (blend_share): L_i b_i <= c = amax /
+ * max(1, |d2 - d1|); in the overlap the tool point's acceleration is the
+ * constant L2 b2 d2 - L1 b1 d1, whose norm is convex in (L1 b1, L2 b2)
+ * and so at most its largest value at a corner of [0, c]^2: c or
+ * c |d2 - d1|, both <= amax. Then th1 b1 + th2 b2 <= (63/64) wdmax.
+ *
+ * tb = (1 - 2^-10) min(V_i / b_i, sqrt(2 / (b_i (1 + b_i / a_i))),
+ * sqrt(2 R / (L1 b1 + L2 b2)), sqrt((180/pi) wdmax / (16 th1 b1 th2 b2)))
+ * (terms with a zero denominator left out), so that (docs/design.md,
+ * "Blended corners"): u_i <= V_i (the tail starts below the cruise speed),
+ * the tail fits the move (u^2 / (2 a) + e <= 1), the tool point stays
+ * within R of the corner (L1 e1 + L2 e2 <= R), and the cross term
+ * |w1| |w2| (pi/180) <= (pi/180) th1 b1 th2 b2 tb^2 / 4 <= wdmax / 64 of
+ * the angular acceleration of the composed rotation. In the overlap the
+ * speeds are linear in time, one falling to 0 and one rising from 0, so
+ * their sum is at most the larger end value L_i u_i <= vmax
+ * (th_i u_i <= wmax). When the pair so planned is not shorter than the
+ * two rest-to-rest trapezoids back to back (tails much gentler than a),
+ * tb is 0 and the moves run back to back.
+ */
+#include <float.h>
+#include <math.h>
+
+#include "dhmath/motion.h"
+#include "dhmath/mat4.h"
+#include "../internal/dh_floatops.h"
+#include "motion_impl.h"
+
+#define BLEND_RAD2DEG 57.295779513082321f
+#define BLEND_MARGIN 0.9990234375f    /* 1 - 2^-10: the rounding of the bounds */
+#define BLEND_WSHARE 0.984375f        /* 63/64 of wdmax for the tails, 1/64 for the cross term */
+
+/* *sl = min(*sl, num / den) for den > 0 (*sl == 0: no bound yet); a
+ * quotient of +Inf bounds nothing. DH_ERR_OVERFLOW when it underflows to
+ * 0 or is NaN. */
+static dh_status blend_bound(float *sl, float num, float den)
+{
+    float r;
+    if (!(den > 0.0f)) return DH_OK;
+    r = num / den;
+    if (!(r > 0.0f)) return DH_ERR_OVERFLOW;
+    if (dh_isfinite_f32(r) && (!(*sl > 0.0f) || r < *sl)) *sl = r;
+    return DH_OK;
+}
+
+/* The checks of dh_blend_plan_f32's arguments, in the order of its
+ * statuses */
+static dh_status blend_check(const dh_path_f32 *p1, const dh_path_f32 *p2, const dh_cart_limits_f32 *lim,
+                             float radius)
+{
+    const float x[5] = { lim->vmax, lim->amax, lim->wmax, lim->wdmax, radius };
+    float sc = 1.0f, d;
+    int i, j;
+    for (i = 0; i < 5; i++) {
+        if (!dh_isfinite_f32(x[i])) return DH_ERR_NAN;
+    }
+    for (i = 0; i < 4; i++) {
+        if (!(x[i] > 0.0f)) return DH_ERR_ARG;
+    }
+    if (radius < 0.0f || !dh_motion_path_ok_f32_(p1) || !dh_motion_path_ok_f32_(p2) ||
+        p1->kind != (uint32_t)DH_PATH_LINE || p2->kind != (uint32_t)DH_PATH_LINE) {
+        return DH_ERR_ARG;
+    }
+    for (i = 0; i < 3; i++) {
+        if (fabsf(DH_M4(&p1->B, i, 3)) > sc) sc = fabsf(DH_M4(&p1->B, i, 3));
+    }
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 4; j++) {
+            d = fabsf(DH_M4(&p1->B, i, j) - DH_M4(&p2->A, i, j));
+            if (!(d <= DH_ROT_TOL * ((j == 3) ? sc : 1.0f))) return DH_ERR_ARG;
+        }
+    }
+    return DH_OK;
+}
+
+/* The bounds r[0] = V, r[1] = a of s for the line p within lim, and
+ * r[2] = a (lowered by blend_share); all 0 when p has no length and no
+ * angle: no motion */
+static dh_status blend_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, float r[3])
+{
+    dh_status st;
+    r[0] = 0.0f;
+    r[1] = 0.0f;
+    st = blend_bound(&r[0], lim->vmax, p->length);
+    if (st == DH_OK) st = blend_bound(&r[0], lim->wmax, p->angle);
+    if (st == DH_OK) st = blend_bound(&r[1], lim->amax, p->length);
+    if (st == DH_OK) st = blend_bound(&r[1], lim->wdmax, p->angle);
+    if (st == DH_OK && (p->length > 0.0f || p->angle > 0.0f) && (!(r[0] > 0.0f) || !(r[1] > 0.0f))) {
+        st = DH_ERR_OVERFLOW;
+    }
+    r[2] = r[1];
+    return st;
+}
+
+/* |d2 - d1| of the unit directions of two lines of length > 0 */
+static float blend_turn(const dh_path_f32 *p1, const dh_path_f32 *p2)
+{
+    float d, g = 0.0f;
+    int i;
+    for (i = 0; i < 3; i++) {
+        d = (DH_M4(&p2->B, i, 3) - DH_M4(&p2->A, i, 3)) / p2->length -
+            (DH_M4(&p1->B, i, 3) - DH_M4(&p1->A, i, 3)) / p1->length;
+        g += d * d;
+    }
+    return dh_sqrtf_(g);
+}
+
+/* The tails' accelerations r1[2], r2[2] of s: L_i b_i <= c = amax /
+ * max(1, |d2 - d1|) (so |L2 b2 d2 - L1 b1 d1| <= amax), then both scaled
+ * so that th1 b1 + th2 b2 <= (63/64) wdmax (the cross term of the
+ * rotations gets the last 1/64 through tb) */
+static DH_NOINLINE void blend_share(const dh_path_f32 *p1, const dh_path_f32 *p2, float r1[3], float r2[3],
+                                    const dh_cart_limits_f32 *lim)
+{
+    float c = lim->amax * BLEND_MARGIN, g, w;
+    if (p1->length > 0.0f && p2->length > 0.0f) {
+        g = blend_turn(p1, p2);
+        if (g > 1.0f) c /= g;
+        if (p1->length * r1[2] > c) r1[2] = c / p1->length;
+        if (p2->length * r2[2] > c) r2[2] = c / p2->length;
+    }
+    w = p1->angle * r1[2] + p2->angle * r2[2];
+    if (w > BLEND_WSHARE * lim->wdmax) {
+        w = (BLEND_WSHARE * lim->wdmax) / w;
+        r1[2] *= w;
+        r2[2] *= w;
+    }
+}
+
+/* *m = min(*m, sqrt(n / d)) for d > 0 */
+static void blend_min_sqrt(float *m, float n, float d)
+{
+    float r;
+    if (!(d > 0.0f)) return;
+    r = dh_sqrtf_(n / d);
+    if (r < *m) *m = r;
+}
+
+/* The overlap tb of the lines p1, p2 with the rates r1, r2 (each V, a,
+ * b) within lim and radius; 0 when a move has no motion or radius is 0 */
+static DH_NOINLINE float blend_overlap(const dh_path_f32 *p1, const dh_path_f32 *p2, const float r1[3],
+                                       const float r2[3], const dh_cart_limits_f32 *lim, float radius)
+{
+    float tb;
+    if (!(r1[2] > 0.0f) || !(r2[2] > 0.0f) || !(radius > 0.0f)) return 0.0f;
+    tb = r1[0] / r1[2];
+    if (r2[0] / r2[2] < tb) tb = r2[0] / r2[2];
+    blend_min_sqrt(&tb, 2.0f, r1[2] * (1.0f + r1[2] / r1[1]));
+    blend_min_sqrt(&tb, 2.0f, r2[2] * (1.0f + r2[2] / r2[1]));
+    blend_min_sqrt(&tb, 2.0f * radius, p1->length * r1[2] + p2->length * r2[2]);
+    blend_min_sqrt(&tb, BLEND_RAD2DEG * 0.0625f * lim->wdmax, (p1->angle * r1[2]) * (p2->angle * r2[2]));
+    tb *= BLEND_MARGIN;
+    return (tb > 0.0f && dh_isfinite_f32(tb)) ? tb : 0.0f;
+}
+
+/* m = the scaling of one move with the rates r (V, a, b; all 0: no
+ * motion, m all zero) and its tail of duration tb. DH_ERR_OVERFLOW when a
+ * time or a rate is not finite. */
+static DH_NOINLINE dh_status blend_prof(dh_blend_prof_f32 *m, const float r[3], float tb)
+{
+    const float V = r[0], a = r[1];
+    float u, e, v, tv, x;
+    m->v = 0.0f;
+    m->a = 0.0f;
+    m->b = 0.0f;
+    m->u = 0.0f;
+    m->e = 0.0f;
+    m->t1 = 0.0f;
+    m->tv = 0.0f;
+    m->t3 = 0.0f;
+    m->tb = 0.0f;
+    m->T = 0.0f;
+    if (!(a > 0.0f)) return DH_OK;
+    u = r[2] * tb;
+    e = 0.5f * u * tb;
+    x = (V * V - 0.5f * u * u) / a + e;   /* s covered when cruising at V for no time */
+    if (x >= 1.0f) {
+        v = dh_sqrtf_(a * (1.0f - e) + 0.5f * u * u);
+        if (v < u) v = u;
+        if (v > V) v = V;
+        tv = 0.0f;
+    } else {
+        v = V;
+        tv = (1.0f - x) / V;
+    }
+    m->v = v;
+    m->a = a;
+    m->b = r[2];
+    m->u = u;
+    m->e = e;
+    m->t1 = v / a;
+    m->tv = tv;
+    m->t3 = (v - u) / a;
+    m->tb = tb;
+    m->T = m->t1 + tv + m->t3 + tb;
+    return (dh_isfinite_f32(m->T) && m->T > 0.0f && dh_isfinite_f32(v * v)) ? DH_OK : DH_ERR_OVERFLOW;
+}
+
+/* *T = the duration of the scaling of one move with the rates r and the
+ * overlap tb (blend_prof's status) */
+static DH_NOINLINE dh_status blend_dur(const float r[3], float tb, float *T)
+{
+    dh_blend_prof_f32 m;
+    dh_status st = blend_prof(&m, r, tb);
+    *T = m.T;
+    return st;
+}
+
+dh_status dh_blend_plan_f32(dh_blend_f32 *bl, const dh_path_f32 *p1, const dh_path_f32 *p2,
+                            const dh_cart_limits_f32 *lim, float radius)
+{
+    float r1[3], r2[3], tb, T1, T2, U1, U2;
+    dh_status st;
+    DH_ASSERT(bl != NULL && p1 != NULL && p2 != NULL && lim != NULL);
+    st = blend_check(p1, p2, lim, radius);
+    if (st == DH_OK) st = blend_rates(p1, lim, r1);
+    if (st == DH_OK) st = blend_rates(p2, lim, r2);
+    /* the rest-to-rest pair, then the blend when it is shorter */
+    if (st == DH_OK) st = blend_dur(r1, 0.0f, &T1);
+    if (st == DH_OK) st = blend_dur(r2, 0.0f, &T2);
+    if (st != DH_OK) return st;
+    blend_share(p1, p2, r1, r2, lim);
+    tb = blend_overlap(p1, p2, r1, r2, lim, radius);
+    if (tb > 0.0f && (blend_dur(r1, tb, &U1) != DH_OK || blend_dur(r2, tb, &U2) != DH_OK ||
+                      !((U1 - tb) + U2 < T1 + T2))) {
+        tb = 0.0f;
+    }
+    /* as planned above: no error */
+    (void)blend_prof(&bl->m1, r1, tb);
+    (void)blend_prof(&bl->m2, r2, tb);
+    bl->p1 = *p1;
+    bl->p2 = *p2;
+    bl->tb = tb;
+    bl->t0 = bl->m1.T - tb;
+    bl->T = bl->t0 + bl->m2.T;
+    bl->dev = 0.5f * tb * tb * (p1->length * r1[2] + p2->length * r2[2]);
+    return DH_OK;
+}
+
+/* s (rest 0) or 1 - s (rest 1), each accurate near its own 0, of the
+ * scaling m at time t, clamped to [0, m->T] */
+static float blend_prof_eval(const dh_blend_prof_f32 *m, float t, int rest)
+{
+    float r, x;
+    if (!(t > 0.0f)) return rest ? 1.0f : 0.0f;
+    if (!(t < m->T)) return rest ? 0.0f : 1.0f;
+    if (t >= m->T - m->tb) {
+        r = m->T - t;
+        x = 0.5f * m->b * r * r;
+    } else if (t >= m->t1 + m->tv) {
+        r = (m->T - m->tb) - t;
+        x = m->e + r * (m->u + 0.5f * m->a * r);
+    } else {
+        x = (t >= m->t1) ? m->v * (0.5f * m->t1 + (t - m->t1)) : 0.5f * m->a * t * t;
+        return rest ? 1.0f - x : x;
+    }
+    return rest ? x : 1.0f - x;
+}
+
+/* column c of T = the slerp of the path p at s (a quaternion w, x, y, z
+ * kept in T until blend_compose: the slerp's stack apart from the
+ * composition's) */
+static DH_NOINLINE void blend_slerp(const dh_path_f32 *p, float s, dh_mat4_f32 *T, int c)
+{
+    dh_quat_f32 q;
+    dh_motion_slerp_f32_(&p->qa, &p->qb, s, &q);
+    DH_M4(T, 0, c) = q.w;
+    DH_M4(T, 1, c) = q.x;
+    DH_M4(T, 2, c) = q.y;
+    DH_M4(T, 3, c) = q.z;
+}
+
+/* T's rotation and bottom row in the overlap: q2 q_A2* q1, with q1 in
+ * T's column 0 and q2 in its column 1 (blend_slerp) */
+static DH_NOINLINE void blend_compose(const dh_quat_f32 *qa2, dh_mat4_f32 *T)
+{
+    dh_quat_f32 q1, q2, c;
+    dh_mat3_f32 R;
+    int i;
+    q1.w = DH_M4(T, 0, 0);
+    q1.x = DH_M4(T, 1, 0);
+    q1.y = DH_M4(T, 2, 0);
+    q1.z = DH_M4(T, 3, 0);
+    q2.w = DH_M4(T, 0, 1);
+    q2.x = DH_M4(T, 1, 1);
+    q2.y = DH_M4(T, 2, 1);
+    q2.z = DH_M4(T, 3, 1);
+    dh_quat_conj_f32(qa2, &c);
+    dh_quat_mul_f32(&c, &q1, &q1);
+    dh_quat_mul_f32(&q2, &q1, &q1);
+    (void)dh_quat_to_mat3_f32(&q1, &R);
+    dh_mat4_set_rot_f32(T, &R);
+    for (i = 0; i < 3; i++) DH_M4(T, 3, i) = 0.0f;
+    DH_M4(T, 3, 3) = 1.0f;
+}
+
+dh_status dh_blend_eval_f32(const dh_blend_f32 *bl, float t, dh_mat4_f32 *T)
+{
+    float t2;
+    int i;
+    DH_ASSERT(bl != NULL && T != NULL);
+    if (isunordered(t, t)) return DH_ERR_NAN;
+    if (!dh_motion_path_ok_f32_(&bl->p1) || !dh_motion_path_ok_f32_(&bl->p2)) return DH_ERR_ARG;
+    if (!(t > bl->t0)) return dh_path_eval_f32(&bl->p1, blend_prof_eval(&bl->m1, t, 0), T);
+    /* the second move runs its scaling backwards: its s is the rest */
+    t2 = (t < bl->T) ? bl->m2.T - (t - bl->t0) : 0.0f;
+    if (!(t < bl->t0 + bl->tb)) return dh_path_eval_f32(&bl->p2, blend_prof_eval(&bl->m2, t2, 1), T);
+    blend_slerp(&bl->p1, blend_prof_eval(&bl->m1, t, 0), T, 0);
+    blend_slerp(&bl->p2, blend_prof_eval(&bl->m2, t2, 1), T, 1);
+    blend_compose(&bl->p2.qa, T);
+    for (i = 0; i < 3; i++) {
+        DH_M4(T, i, 3) = DH_M4(&bl->p1.B, i, 3) -
+                         blend_prof_eval(&bl->m1, t, 1) * (DH_M4(&bl->p1.B, i, 3) - DH_M4(&bl->p1.A, i, 3)) +
+                         blend_prof_eval(&bl->m2, t2, 1) * (DH_M4(&bl->p2.B, i, 3) - DH_M4(&bl->p2.A, i, 3));
+    }
+    return DH_OK;
+}

@@ -1,0 +1,415 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * test_blend.c - two line moves blended at their corner
+ * (dh_blend_plan_f32, dh_blend_eval_f32) against references computed here
+ * in double from the float inputs: the distance of the tool point from
+ * each segment and from the corner, the rotation vector between two
+ * sampled rotations, the rest-to-rest trapezoids' minimum durations.
+ *
+ * Random corners on UR5-scale distances (segments 0.05 to 0.6 m, the
+ * corner within 0.5 m of the base, angles between the directions 1 to 179
+ * degrees), each line turning the tool by up to 60 degrees about its own
+ * axis, sampled at 1 kHz:
+ * - outside the overlap the position is on its segment within 1e-6 m,
+ *   inside it within the radius (and bl.dev) of the corner, plus 1e-6 m;
+ * - speed, TOTAL acceleration, angular speed and angular acceleration by
+ *   finite differences within their limits times 1 + 1e-3, over the least
+ *   window for which the rounding of the samples (8 ulp of the largest
+ *   position, 6e-4 degrees of rotation) is at most 2.5e-4 of the limit;
+ *   the angular ones from rotation vectors log(R(t +- w) R(t)^T) about the
+ *   middle sample (their sum over w^2 is the angular acceleration, with no
+ *   cubic term of the composed rotations);
+ * - the pose steps by at most one period of the speed limits (plus the
+ *   samples' rounding) everywhere;
+ * - the pair is shorter than the two rest-to-rest trapezoids, whose
+ *   minimum durations are computed here from the lines' lengths and
+ *   angles.
+ */
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "dht.h"
+#include "support_ref.h"
+#include "dhmath/motion.h"
+#include "dhmath/mat4.h"
+
+#define HZ 1000.0
+#define REL_FD 1e-3
+#define NOISE_FRAC 2.5e-4
+#define POS_TOL 1e-6   /* m */
+#define ANG_NOISE 6e-4 /* degrees */
+
+static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* distance of x from the segment [a, b] */
+static double seg_dist(const double a[3], const double b[3], const double x[3])
+{
+    double d[3], r[3], dd, s, e[3];
+    int i;
+    for (i = 0; i < 3; i++) {
+        d[i] = b[i] - a[i];
+        r[i] = x[i] - a[i];
+    }
+    dd = dot3(d, d);
+    s = (dd > 0.0) ? dot3(r, d) / dd : 0.0;
+    if (s < 0.0) s = 0.0;
+    if (s > 1.0) s = 1.0;
+    for (i = 0; i < 3; i++) e[i] = r[i] - s * d[i];
+    return sqrt(dot3(e, e));
+}
+
+/* the rotation vector (degrees, world frame) of R_Y R_X^T */
+static void rot_vec(const dh_mat4_f32 *X, const dh_mat4_f32 *Y, double rv[3])
+{
+    double M[3][3], v[3], sn, cs, th, f;
+    int i, j, k;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) {
+            M[i][j] = 0.0;
+            for (k = 0; k < 3; k++) M[i][j] += (double)DH_M4(Y, i, k) * DH_M4(X, j, k);
+        }
+    v[0] = M[2][1] - M[1][2];
+    v[1] = M[0][2] - M[2][0];
+    v[2] = M[1][0] - M[0][1];
+    sn = 0.5 * sqrt(dot3(v, v));
+    cs = 0.5 * (M[0][0] + M[1][1] + M[2][2] - 1.0);
+    th = atan2(sn, cs);
+    f = (sn > 1e-12) ? th / (2.0 * sn) : 0.5;
+    for (i = 0; i < 3; i++) rv[i] = dhr_rad2deg(f * v[i]);
+}
+
+static double trap_tmin(double v, double a)
+{
+    return (1.0 >= v * v / a) ? 1.0 / v + v / a : 2.0 * sqrt(1.0 / a);
+}
+
+/* the rest-to-rest trapezoid's minimum duration of a line of length L and
+ * angle th (degrees) within lim */
+static double line_tmin(double L, double th, const dh_cart_limits_f32 *lim)
+{
+    double v = 1e300, a = 1e300;
+    if (L > 0.0) {
+        v = fmin(v, lim->vmax / L);
+        a = fmin(a, lim->amax / L);
+    }
+    if (th > 0.0) {
+        v = fmin(v, lim->wmax / th);
+        a = fmin(a, lim->wdmax / th);
+    }
+    return (L > 0.0 || th > 0.0) ? trap_tmin(v, a) : 0.0;
+}
+
+typedef struct {
+    dh_path_f32 p1, p2;
+    double a[3], c[3], b[3];  /* the float positions */
+    double S;                 /* the largest position magnitude */
+    double th1, th2;          /* the lines' rotation angles (degrees) from the float rotations */
+} corner;
+
+static void pos_of(const dh_mat4_f32 *T, double p[3])
+{
+    int i;
+    for (i = 0; i < 3; i++) p[i] = DH_M4(T, i, 3);
+}
+
+/* a corner of angle deg between the directions, segments L1, L2, the
+ * tool turning by up to rmax degrees along each */
+static void make_corner(corner *k, double deg, double L1, double L2, double rmax)
+{
+    dhr_mat4 RA, RC, RB, X;
+    dh_mat4_f32 A, C, B;
+    double d1[3], n[3], d2[3], c[3], ax[3], t, cs, sn;
+    int i;
+    dhr_rand_unit3(d1);
+    do {
+        dhr_rand_unit3(n);
+        t = dot3(n, d1);
+        for (i = 0; i < 3; i++) n[i] -= t * d1[i];
+    } while (dot3(n, n) < 0.01);
+    t = sqrt(dot3(n, n));
+    dhr_sincos_deg(deg, &sn, &cs);
+    for (i = 0; i < 3; i++) {
+        n[i] /= t;
+        d2[i] = cs * d1[i] + sn * n[i];
+        c[i] = dht_rand_uniform(-0.3, 0.3);
+    }
+    dhr_rand_rigid(0.0, &RA);
+    dhr_rand_unit3(ax);
+    dhr_rot_axis(ax[0], ax[1], ax[2], dht_rand_uniform(0.0, rmax), &X);
+    dhr_mul(&X, &RA, &RC);
+    dhr_rand_unit3(ax);
+    dhr_rot_axis(ax[0], ax[1], ax[2], dht_rand_uniform(0.0, rmax), &X);
+    dhr_mul(&X, &RC, &RB);
+    for (i = 0; i < 3; i++) {
+        DHR_M4(&RA, i, 3) = c[i] - L1 * d1[i];
+        DHR_M4(&RC, i, 3) = c[i];
+        DHR_M4(&RB, i, 3) = c[i] + L2 * d2[i];
+    }
+    dhr_to_f32(&RA, &A);
+    dhr_to_f32(&RC, &C);
+    dhr_to_f32(&RB, &B);
+    DHT_EQ_INT(dh_path_line_f32(&k->p1, &A, &C), DH_OK);
+    DHT_EQ_INT(dh_path_line_f32(&k->p2, &C, &B), DH_OK);
+    pos_of(&A, k->a);
+    pos_of(&C, k->c);
+    pos_of(&B, k->b);
+    k->S = 0.0;
+    for (i = 0; i < 3; i++) k->S = fmax(k->S, fmax(fabs(k->a[i]), fmax(fabs(k->b[i]), fabs(k->c[i]))));
+    rot_vec(&A, &C, ax);
+    k->th1 = sqrt(dot3(ax, ax));
+    rot_vec(&C, &B, ax);
+    k->th2 = sqrt(dot3(ax, ax));
+}
+
+static void eval_at(const dh_blend_f32 *bl, double t, dh_mat4_f32 *T)
+{
+    DHT_EQ_INT(dh_blend_eval_f32(bl, (float)t, T), DH_OK);
+}
+
+/* the least window (periods) over which a per-sample noise perturbs the
+ * finite difference of the given order by at most NOISE_FRAC of lim */
+static long fd_window(double noise, int order, double lim)
+{
+    double wh = pow(ldexp(noise, order) / (NOISE_FRAC * lim), 1.0 / order);
+    long w = (long)ceil(wh * HZ);
+    return (w < 2) ? 2 : w;
+}
+
+/* the largest ratio to lim of the finite difference of the given order
+ * (1 speed, 2 acceleration) of the position (ang 0) or of the rotation
+ * (ang 1) over windows of w periods */
+static double fd_ratio(const dh_blend_f32 *bl, int order, int ang, long w, double lim)
+{
+    double worst = 0.0, h = 1.0 / HZ, x[3][3], ra[3], rb[3], f, d;
+    long k, kend = (long)ceil((double)bl->T * HZ) + 2;
+    int i, j;
+    dh_mat4_f32 T[3];
+    for (k = -2 * w; k <= kend; k++) {
+        for (j = 0; j <= order; j++) {
+            eval_at(bl, (double)(k + j * w) * h, &T[j]);
+            for (i = 0; i < 3; i++) x[i][j] = DH_M4(&T[j], i, 3);
+        }
+        f = 0.0;
+        if (ang && order == 1) {
+            rot_vec(&T[0], &T[1], ra);
+            f = sqrt(dot3(ra, ra));
+        } else if (ang) {
+            rot_vec(&T[1], &T[0], ra);
+            rot_vec(&T[1], &T[2], rb);
+            for (i = 0; i < 3; i++) rb[i] += ra[i];
+            f = sqrt(dot3(rb, rb));
+        } else {
+            for (i = 0; i < 3; i++) {
+                d = (order == 1) ? x[i][1] - x[i][0] : x[i][2] - 2.0 * x[i][1] + x[i][0];
+                f += d * d;
+            }
+            f = sqrt(f);
+        }
+        f /= pow((double)w * h, order);
+        if (f / lim > worst) worst = f / lim;
+    }
+    return worst;
+}
+
+/* every sample on its segment outside the overlap and near the corner
+ * inside; every step within one period of the speed limits */
+static void path_check(const dh_blend_f32 *bl, const corner *k, const dh_cart_limits_f32 *lim, double radius)
+{
+    double h = 1.0 / HZ, t, p[3], q[3], e, dp, rv[3], posn = 8.0 * dhr_ulp_f32(k->S);
+    long i, n = (long)ceil((double)bl->T * HZ) + 1;
+    int j;
+    dh_mat4_f32 T, P;
+    eval_at(bl, 0.0, &P);
+    for (i = 1; i <= n; i++) {
+        t = (double)i * h;
+        eval_at(bl, t, &T);
+        pos_of(&T, p);
+        if ((float)t <= bl->t0) {
+            e = seg_dist(k->a, k->c, p);
+            DHT_TRUE_MSG(e <= POS_TOL, "t %.9g (t0 %.9g): %.3g m off the first line", t, (double)bl->t0, e);
+        } else if ((float)t >= bl->t0 + bl->tb) {
+            e = seg_dist(k->c, k->b, p);
+            DHT_TRUE_MSG(e <= POS_TOL, "t %.9g: %.3g m off the second line", t, e);
+        } else {
+            for (j = 0; j < 3; j++) q[j] = p[j] - k->c[j];
+            e = sqrt(dot3(q, q));
+            DHT_TRUE_MSG(e <= radius + POS_TOL && e <= (double)bl->dev + POS_TOL,
+                         "t %.9g: %.9g m from the corner (radius %.9g, dev %.9g)", t, e, radius, (double)bl->dev);
+            dht_reach_max("overlap.dev_frac", e / radius);
+        }
+        pos_of(&P, q);
+        for (j = 0; j < 3; j++) q[j] -= p[j];
+        dp = sqrt(dot3(q, q));
+        DHT_TRUE_MSG(dp <= lim->vmax * h * (1.0 + REL_FD) + 2.0 * posn, "t %.9g: step %.3g m", t, dp);
+        rot_vec(&P, &T, rv);
+        dp = sqrt(dot3(rv, rv));
+        DHT_TRUE_MSG(dp <= lim->wmax * h * (1.0 + REL_FD) + 2.0 * ANG_NOISE, "t %.9g: step %.3g deg", t, dp);
+        P = T;
+    }
+    DHT_TRUE(memcmp(&T, &k->p2.B, sizeof T) == 0);
+}
+
+static void limits_check(const dh_blend_f32 *bl, const corner *k, const dh_cart_limits_f32 *lim)
+{
+    double plim[2], alim[2], wr, posn = 8.0 * dhr_ulp_f32(k->S);
+    long w;
+    int o;
+    plim[0] = lim->vmax;
+    plim[1] = lim->amax;
+    alim[0] = lim->wmax;
+    alim[1] = lim->wdmax;
+    for (o = 1; o <= 2; o++) {
+        w = fd_window(posn, o, plim[o - 1]);
+        wr = fd_ratio(bl, o, 0, w, plim[o - 1]);
+        DHT_TRUE_MSG(wr <= 1.0 + REL_FD, "linear derivative %d: %.9g x its limit (window %ld ms)", o, wr, w);
+        dht_reach_max(o == 1 ? "lin.v" : "lin.a", wr);
+        if (k->th1 > 0.0 || k->th2 > 0.0) {
+            w = fd_window(ANG_NOISE, o, alim[o - 1]);
+            wr = fd_ratio(bl, o, 1, w, alim[o - 1]);
+            DHT_TRUE_MSG(wr <= 1.0 + REL_FD, "angular derivative %d: %.9g x its limit (window %ld ms)", o, wr, w);
+            dht_reach_max(o == 1 ? "ang.v" : "ang.a", wr);
+        }
+    }
+}
+
+static void random_corners(void)
+{
+    int it, n = DHT_ITER(40);
+    for (it = 0; it < n; it++) {
+        corner k;
+        dh_blend_f32 bl;
+        dh_cart_limits_f32 lim;
+        dh_mat4_f32 T;
+        double deg = (it == 0) ? 1.0 : (it == 1) ? 179.0 : dht_rand_uniform(1.0, 179.0);
+        double radius = pow(10.0, dht_rand_uniform(-3.0, -1.0)), Trr;
+        make_corner(&k, deg, dht_rand_uniform(0.05, 0.6), dht_rand_uniform(0.05, 0.6), 60.0);
+        lim.vmax = (float)dht_rand_uniform(0.1, 1.0);
+        lim.amax = (float)dht_rand_uniform(1.0, 10.0);
+        lim.wmax = (float)dht_rand_uniform(30.0, 90.0);
+        lim.wdmax = (float)dht_rand_uniform(300.0, 2000.0);
+        DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &k.p2, &lim, (float)radius), DH_OK);
+        DHT_TRUE(bl.t0 >= 0.0f && (double)bl.dev <= radius);
+        dht_reach_min("tb", (double)bl.tb);
+        /* exact ends */
+        eval_at(&bl, 0.0, &T);
+        DHT_TRUE(memcmp(&T, &k.p1.A, sizeof T) == 0);
+        eval_at(&bl, -1.0, &T);
+        DHT_TRUE(memcmp(&T, &k.p1.A, sizeof T) == 0);
+        eval_at(&bl, (double)bl.T, &T);
+        DHT_TRUE(memcmp(&T, &k.p2.B, sizeof T) == 0);
+        eval_at(&bl, (double)bl.T + 1.0, &T);
+        DHT_TRUE(memcmp(&T, &k.p2.B, sizeof T) == 0);
+        /* shorter than the two rest-to-rest moves */
+        Trr = line_tmin(sqrt((k.c[0] - k.a[0]) * (k.c[0] - k.a[0]) + (k.c[1] - k.a[1]) * (k.c[1] - k.a[1]) +
+                             (k.c[2] - k.a[2]) * (k.c[2] - k.a[2])), k.th1, &lim) +
+              line_tmin(sqrt((k.b[0] - k.c[0]) * (k.b[0] - k.c[0]) + (k.b[1] - k.c[1]) * (k.b[1] - k.c[1]) +
+                             (k.b[2] - k.c[2]) * (k.b[2] - k.c[2])), k.th2, &lim);
+        /* a blend that would not be shorter is not made (tb 0: back to back) */
+        DHT_TRUE_MSG((bl.tb > 0.0f) ? (double)bl.T < Trr : (double)bl.T <= Trr * (1.0 + 1e-6),
+                     "blended %.9g s (tb %.9g), rest to rest %.9g s", (double)bl.T, (double)bl.tb, Trr);
+        dht_reach_max("saving_frac", (Trr - (double)bl.T) / Trr);
+        path_check(&bl, &k, &lim, radius);
+        limits_check(&bl, &k, &lim);
+    }
+}
+
+/* a straight continuation stays on the line; radius 0 runs the moves back
+ * to back, each at rest at the corner */
+static void straight_and_zero_radius(void)
+{
+    corner k;
+    dh_blend_f32 bl;
+    dh_cart_limits_f32 lim = { 0.5f, 2.0f, 60.0f, 500.0f };
+    dh_mat4_f32 T;
+    double p[3], e, t, Trr;
+    long i, n;
+    make_corner(&k, 0.0, 0.3, 0.2, 0.0);
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &k.p2, &lim, 0.05f), DH_OK);
+    DHT_TRUE(bl.tb > 0.0f);
+    n = (long)ceil((double)bl.T * HZ) + 1;
+    for (i = 0; i <= n; i++) {
+        eval_at(&bl, (double)i / HZ, &T);
+        pos_of(&T, p);
+        e = seg_dist(k.a, k.b, p);
+        DHT_TRUE_MSG(e <= POS_TOL, "straight: %.3g m off the line", e);
+    }
+    limits_check(&bl, &k, &lim);
+    make_corner(&k, 90.0, 0.3, 0.2, 30.0);
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &k.p2, &lim, 0.0f), DH_OK);
+    DHT_TRUE(bl.tb == 0.0f && bl.dev == 0.0f && bl.t0 == bl.m1.T);
+    Trr = line_tmin(0.3, k.th1, &lim) + line_tmin(0.2, k.th2, &lim);
+    DHT_TRUE_MSG(fabs((double)bl.T - Trr) <= 1e-5 * Trr, "back to back %.9g s vs %.9g s", (double)bl.T, Trr);
+    for (i = 0; i <= 100; i++) {
+        t = (double)i * (double)bl.T / 100.0;
+        eval_at(&bl, t, &T);
+        pos_of(&T, p);
+        e = fmin(seg_dist(k.a, k.c, p), seg_dist(k.c, k.b, p));
+        DHT_TRUE(e <= POS_TOL);
+    }
+    eval_at(&bl, (double)bl.t0, &T);
+    DHT_TRUE(memcmp(&T, &k.p1.B, sizeof T) == 0);
+    limits_check(&bl, &k, &lim);
+}
+
+/* every status, and nothing written on error */
+static void blend_errors(void)
+{
+    corner k;
+    dh_blend_f32 bl, zero, copy;
+    dh_cart_limits_f32 lim = { 0.5f, 2.0f, 60.0f, 500.0f };
+    dh_path_f32 arc, moved;
+    dh_mat4_f32 T;
+    const float via[3] = { 0.1f, 0.2f, 0.3f };
+    memset(&zero, 0, sizeof zero);
+    make_corner(&k, 60.0, 0.3, 0.2, 30.0);
+    bl = zero;
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &k.p2, &lim, NAN), DH_ERR_NAN);
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &k.p2, &lim, INFINITY), DH_ERR_NAN);
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &k.p2, &lim, -1e-3f), DH_ERR_ARG);
+    lim.amax = NAN;
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &k.p2, &lim, 0.01f), DH_ERR_NAN);
+    lim.amax = 0.0f;
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &k.p2, &lim, 0.01f), DH_ERR_ARG);
+    lim.amax = 2.0f;
+    lim.wdmax = -1.0f;
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &k.p2, &lim, 0.01f), DH_ERR_ARG);
+    lim.wdmax = 500.0f;
+    /* an arc, a second line that does not start at the first's end, no path */
+    DHT_EQ_INT(dh_path_arc_f32(&arc, &k.p1.B, via, &k.p2.B), DH_OK);
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &arc, &lim, 0.01f), DH_ERR_ARG);
+    DHT_EQ_INT(dh_path_arc_f32(&arc, &k.p1.A, via, &k.p1.B), DH_OK);
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &arc, &k.p2, &lim, 0.01f), DH_ERR_ARG);
+    T = k.p2.A;
+    DH_M4(&T, 0, 3) += 1e-3f;
+    DHT_EQ_INT(dh_path_line_f32(&moved, &T, &k.p2.B), DH_OK);
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &moved, &lim, 0.01f), DH_ERR_ARG);
+    memset(&moved, 0, sizeof moved);
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &moved, &lim, 0.01f), DH_ERR_ARG);
+    /* limits too small for float: s' underflows */
+    lim.vmax = 1e-45f;
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &k.p2, &lim, 0.01f), DH_ERR_OVERFLOW);
+    lim.vmax = 0.5f;
+    DHT_TRUE(memcmp(&bl, &zero, sizeof bl) == 0);
+    /* evaluation: no blend, NaN time */
+    T = k.p1.A;
+    DHT_EQ_INT(dh_blend_eval_f32(&zero, 0.5f, &T), DH_ERR_ARG);
+    DHT_TRUE(memcmp(&T, &k.p1.A, sizeof T) == 0);
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &k.p2, &lim, 0.01f), DH_OK);
+    copy = bl;
+    DHT_EQ_INT(dh_blend_eval_f32(&bl, NAN, &T), DH_ERR_NAN);
+    DHT_TRUE(memcmp(&T, &k.p1.A, sizeof T) == 0 && memcmp(&bl, &copy, sizeof bl) == 0);
+    /* a move without motion: no overlap */
+    DHT_EQ_INT(dh_path_line_f32(&moved, &k.p1.B, &k.p1.B), DH_OK);
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &moved, &lim, 0.01f), DH_OK);
+    DHT_TRUE(bl.tb == 0.0f && bl.m2.T == 0.0f && bl.T == bl.m1.T);
+    eval_at(&bl, (double)bl.T, &T);
+    DHT_TRUE(memcmp(&T, &k.p1.B, sizeof T) == 0);
+}
+
+static const dht_case cases[] = {
+    DHT_CASE(random_corners),
+    DHT_CASE(straight_and_zero_radius),
+    DHT_CASE(blend_errors),
+};
+DHT_MAIN(cases)
