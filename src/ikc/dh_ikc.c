@@ -221,8 +221,8 @@ static DH_NOINLINE float ikc_wrap_any(float v)
     return dh_ikc_wrap_f32_(dh_ikc_wrap_f32_(v));
 }
 
-/* Joint i of the raw solutions sol[s] with bit s set in live (s < ns) to
- * its joint value. Returns live with the bits cleared of the solutions
+/* Joint i of the raw solutions sol[s] with bit s set in live_in (s < ns) to
+ * its joint value. Returns live_in with the bits cleared of the solutions
  * whose value is outside the limits (lim: into *out instead) and of those
  * whose value is not finite (also cleared in *fin). The joint's constants
  * are read once for all solutions. Common case first: the revolute value
@@ -230,8 +230,9 @@ static DH_NOINLINE float ikc_wrap_any(float v)
  * (limits less than a turn apart, or |ref - v| <= 180; with q_ref NULL,
  * ref = 0 and that always holds), left as it is. */
 static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i, dh_ikc_sol_f32 *sol,
-                          uint32_t ns, uint32_t live, uint32_t *fin, uint32_t *out)
+                          uint32_t ns, uint32_t live_in, uint32_t *fin, uint32_t *out)
 {
+    uint32_t live = live_in;
     const int lim = m->qmin[i] <= m->qmax[i];
     /* no limits: every value in (-180, 180] stays, as one within limits
      * [-180, 180] less than a turn apart would */
@@ -252,6 +253,8 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
                 live &= ~bit;
             } else if (lim && !(v >= m->qmin[i] && v <= m->qmax[i])) {
                 *out |= bit;
+            } else {
+                /* finite and within the limits: kept as it is */
             }
         }
         return live;
@@ -286,7 +289,9 @@ static DH_NOINLINE dh_status ikc_finish(const dh_ikc_model_f32 *m, const float *
                                         dh_ikc_sol_f32 *sol, uint32_t raw, uint32_t *n_sol)
 {
     const int keep = (opts & DH_IKC_KEEP_OUT_OF_LIMITS) != 0u;
-    uint32_t i, s, n = 0, fin = (1u << raw) - 1u, live = fin, outl = 0u;
+    uint32_t i, s, n = 0, fin = 0u, live, outl = 0u;
+    for (s = 0; s < raw; s++) fin |= 1u << s;
+    live = fin;
     for (i = 0; i < m->n; i++) {
         live = ikc_joint(m, q_ref, i, sol, raw, live, &fin, &outl);
         if (!keep) live &= ~outl;

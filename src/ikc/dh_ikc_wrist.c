@@ -83,7 +83,7 @@ DH_INLINE float wrist_atan2(float y, float x, float fallback)
  * wrist_cs). Inlined, no call. */
 DH_INLINE void wrist_cs(float y, float x, float *cs)
 {
-    float r2 = x * x + y * y, ir;
+    float xs = x, ys = y, r2 = x * x + y * y, ir;
     if (!(r2 >= 1e-30f && r2 <= 1e30f)) {
         /* squares out of range (or zero): scaled by the larger magnitude */
         const float ax = fabsf(x), ay = fabsf(y), mx = (ax > ay) ? ax : ay;
@@ -91,13 +91,13 @@ DH_INLINE void wrist_cs(float y, float x, float *cs)
             cs[0] = WRIST_CS_NONE;
             return;
         }
-        x /= mx;
-        y /= mx;
-        r2 = x * x + y * y;
+        xs = x / mx;
+        ys = y / mx;
+        r2 = xs * xs + ys * ys;
     }
     ir = 1.0f / dh_sqrt_f32(r2);
-    cs[0] = x * ir;
-    cs[1] = y * ir;
+    cs[0] = xs * ir;
+    cs[1] = ys * ir;
 }
 
 /* 1: the second elbow branch of an arm two slots after the first (one
@@ -493,7 +493,7 @@ static DH_NOINLINE void wrist_arm(const dh_ikc_model_f32 *m, const float *q_ref,
         const float t2 = (m->kind == DH_IKC_WRIST_RRR) ? a->q[1] + m->k[KW_SIGMA] * a->q[2] : a->q[1];
         (void)dh_sincos_f32(t2, &v[9], &v[8]);
     }
-    wrist_m(m, q_ref, a, v, v + 3, v + 6);
+    wrist_m(m, q_ref, a, v, &v[3], &v[6]);
     wrist_b(m, a);
     wrist_c(a);
 }
@@ -510,8 +510,8 @@ uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, cons
     float v[10];
     const float cref2 = dh_ikc_cref_f32_(m, q_ref, 1u);
     uint32_t b, e, ns, ne, n = 0u;
-    wrist_prepare(m, T, v, v + 3, v + 6);
-    ns = wrist_shoulder(m, dh_ikc_cref_f32_(m, q_ref, 0u), v + 6, &sol[6]);
+    wrist_prepare(m, T, v, &v[3], &v[6]);
+    ns = wrist_shoulder(m, dh_ikc_cref_f32_(m, q_ref, 0u), &v[6], &sol[6]);
     for (b = 0; b < ns; b++) {
         const dh_ikc_sol_f32 *sh = &sol[6u + b];
         const uint32_t n0 = n;
