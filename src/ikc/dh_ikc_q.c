@@ -246,7 +246,7 @@ static DH_NOINLINE int ikcq_model_ok(const dh_ikc_model_q *m)
  * ref (ties: the lower); *in = 0 when no shift is inside (q returned) */
 static int32_t ikcq_shift(int32_t q, int32_t lo, int32_t hi, int32_t ref, int *in)
 {
-    const int64_t d = (int64_t)q - lo;
+    const int64_t d = (int64_t)q - lo, span = (int64_t)hi - lo;
     const uint32_t P = (uint32_t)DH_IKC_Q16_360;
     uint32_t rem, kmax, kk;
     int64_t first, c0;
@@ -275,7 +275,7 @@ static int32_t ikcq_shift(int32_t q, int32_t lo, int32_t hi, int32_t ref, int *i
         *in = found;
         return best;
     }
-    if ((int64_t)hi - lo < 3 * (int64_t)P) {
+    if (span < 3 * (int64_t)P) {
         /* up to three candidates: no division */
         int32_t best;
         int64_t cand = q;
