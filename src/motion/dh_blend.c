@@ -45,19 +45,6 @@
 #define BLEND_MARGIN 0.9990234375f    /* 1 - 2^-10: the rounding of the bounds */
 #define BLEND_WSHARE 0.984375f        /* 63/64 of wdmax for the tails, 1/64 for the cross term */
 
-/* *sl = min(*sl, num / den) for den > 0 (*sl == 0: no bound yet); a
- * quotient of +Inf bounds nothing. DH_ERR_OVERFLOW when it underflows to
- * 0 or is NaN. */
-static dh_status blend_bound(float *sl, float num, float den)
-{
-    float r;
-    if (!(den > 0.0f)) return DH_OK;
-    r = num / den;
-    if (!(r > 0.0f)) return DH_ERR_OVERFLOW;
-    if (dh_isfinite_f32(r) && (!(*sl > 0.0f) || r < *sl)) *sl = r;
-    return DH_OK;
-}
-
 /* The checks of dh_blend_plan_f32's arguments, in the order of its
  * statuses */
 static dh_status blend_check(const dh_path_f32 *p1, const dh_path_f32 *p2, const dh_cart_limits_f32 *lim,
@@ -96,10 +83,10 @@ static dh_status blend_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim
     dh_status st;
     r[0] = 0.0f;
     r[1] = 0.0f;
-    st = blend_bound(&r[0], lim->vmax, p->length);
-    if (st == DH_OK) st = blend_bound(&r[0], lim->wmax, p->angle);
-    if (st == DH_OK) st = blend_bound(&r[1], lim->amax, p->length);
-    if (st == DH_OK) st = blend_bound(&r[1], lim->wdmax, p->angle);
+    st = dh_motion_bound_f32_(&r[0], lim->vmax, p->length);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[0], lim->wmax, p->angle);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], lim->amax, p->length);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], lim->wdmax, p->angle);
     if (st == DH_OK && (p->length > 0.0f || p->angle > 0.0f) && (!(r[0] > 0.0f) || !(r[1] > 0.0f))) {
         st = DH_ERR_OVERFLOW;
     }

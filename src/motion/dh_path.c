@@ -317,10 +317,8 @@ dh_status dh_path_eval_f32(const dh_path_f32 *p, float s, dh_mat4_f32 *T)
     return DH_OK;
 }
 
-/* *sl = min(*sl, num / den) for den > 0 (*sl == 0: no bound yet); a
- * quotient of +Inf bounds nothing. DH_ERR_OVERFLOW when it underflows to
- * 0 or is NaN. */
-static dh_status path_bound(float *sl, float num, float den)
+/* motion_impl.h */
+dh_status dh_motion_bound_f32_(float *sl, float num, float den)
 {
     float r;
     if (!(den > 0.0f)) return DH_OK;
@@ -363,14 +361,14 @@ static dh_status path_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
     b[0] = 0.0f;
     b[1] = 0.0f;
     b[2] = 0.0f;
-    st = path_bound(&b[0], V, p->length);
-    if (st == DH_OK) st = path_bound(&b[0], lim->wmax, p->angle);
-    if (st == DH_OK) st = path_bound(&b[1], At, p->length);
-    if (st == DH_OK) st = path_bound(&b[1], lim->wdmax, p->angle);
+    st = dh_motion_bound_f32_(&b[0], V, p->length);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&b[0], lim->wmax, p->angle);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&b[1], At, p->length);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&b[1], lim->wdmax, p->angle);
     if (st == DH_OK && (!(b[0] > 0.0f) || !(b[1] > 0.0f))) st = DH_ERR_OVERFLOW;
     if (jk != NULL) {
-        if (st == DH_OK) st = path_bound(&b[2], Jt, p->length);
-        if (st == DH_OK) st = path_bound(&b[2], jk->wjmax, p->angle);
+        if (st == DH_OK) st = dh_motion_bound_f32_(&b[2], Jt, p->length);
+        if (st == DH_OK) st = dh_motion_bound_f32_(&b[2], jk->wjmax, p->angle);
         if (st == DH_OK && !(b[2] > 0.0f)) st = DH_ERR_OVERFLOW;
     }
     return st;

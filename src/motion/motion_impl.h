@@ -26,6 +26,12 @@ void dh_motion_slerp_f32_(const dh_quat_f32 *qa, const dh_quat_f32 *qb, float s,
  * zero); the test of dh_path_eval_f32's DH_ERR_ARG (dh_path.c) */
 int dh_motion_path_ok_f32_(const dh_path_f32 *p);
 
+/* *sl = min(*sl, num / den) for den > 0 (*sl == 0: no bound yet); a
+ * quotient of +Inf bounds nothing. DH_ERR_OVERFLOW when it underflows to
+ * 0 or is NaN (dh_path.c); the rate bounds of a path move (dh_path.c) and
+ * of a blend's tails (dh_blend.c) */
+dh_status dh_motion_bound_f32_(float *sl, float num, float den);
+
 /* The square root (cube == 0) or the cube root (cube == 1) of n / m for
  * finite n >= 0, m > 0 (0 for n == 0), without underflow or overflow of
  * the quotient (dh_profile.c); the jerk bound of an arc (dh_path.c) */
