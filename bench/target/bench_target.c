@@ -720,6 +720,8 @@ static union {
         dh_track_f32 tf;
         dh_ikc_sol_f32 solf[DH_IKC_MAX_SOL];
         float J[36];
+        dh_move_f32 mv;
+        dh_path_f32 path;
 #endif
     } t;
 #if BT_IKC_FLOAT
@@ -1297,6 +1299,74 @@ static BT_NOINLINE void bt_track_f32(const bt_move *mv, dh_robot *r, const bt_ac
 }
 #endif
 
+#if BT_IKC_FLOAT
+/* ---- one period of a Cartesian move ----------------------------------------
+ *
+ * A line move from the FK of the tracker move's start to the FK of its
+ * middle (dq / 2), within 0.25 m/s, 2 m/s^2, 90 deg/s and 360 deg/s^2,
+ * executed as a firmware does it: per period of 1 ms, dh_move_target_f32,
+ * dh_track_step_f32 on that frame, dh_move_advance_f32 with the tracker's
+ * state, timed together. Beside it, untimed for the period, the
+ * closed-form solve of the same frame with the tracker's configuration as
+ * q_ref (the limit's reference). */
+static BT_NOINLINE void bt_period_f32(const bt_move *mv, dh_robot *r)
+{
+    dh_track_f32 *const t = &bt_mem.t.tf;
+    dh_move_f32 *const m = &bt_mem.t.mv;
+    const dh_cart_limits_f32 lim = { 0.25f, 2.0f, 90.0f, 360.0f };
+    dh_track_report_f32 rep;
+    dh_move_report_f32 mrep;
+    dh_mat4_f32 A, B, T;
+    bt_acc aik = { 0u, 0u }, aper = { 0u, 0u }, nul = { 0u, 0u };
+    uint32_t states[3] = { 0u, 0u, 0u };
+    uint32_t st, n = 0u, ns, j;
+    uint64_t t0, t1;
+    float q[6];
+    st = bt_move_robot(mv, r, 1.0f);
+    st |= (uint32_t)dh_ikc_analyse_f32(r, &bt_mem.t.mf);
+    st |= (uint32_t)dh_fk_f32(r, mv->qa, &A);
+    for (j = 0; j < 6u; j++) {
+        q[j] = mv->qa[j] + 0.5f * mv->dq[j];
+    }
+    st |= (uint32_t)dh_fk_f32(r, q, &B);
+    st |= (uint32_t)dh_path_line_f32(&bt_mem.t.path, &A, &B);
+    st |= (uint32_t)dh_move_path_f32(m, &bt_mem.t.path, &lim);
+    st |= (uint32_t)dh_track_init_f32(t, r, &bt_mem.t.mf, mv->qa, 1e-3f);
+    mrep.done = 0;
+    while (st == 0u && mrep.done == 0 && n < 4u * BT_NTRK) {
+        st |= (uint32_t)dh_move_target_f32(m, &T);
+        t0 = bt_now();
+        st |= (uint32_t)dh_ikc_f32(&bt_mem.t.mf, &T, t->q, 0u, bt_mem.t.solf, &ns);
+        t1 = bt_now();
+        bt_acc_add(&aik, t0, t1);
+        t0 = bt_now();
+        st |= (uint32_t)dh_move_target_f32(m, &T);
+        st |= (uint32_t)dh_track_step_f32(t, &T, q, &rep);
+        st |= (uint32_t)dh_move_advance_f32(m, 1e-3f, rep.state, &mrep);
+        t1 = bt_now();
+        bt_acc_add(&aper, t0, t1);
+        states[rep.state]++;
+        n++;
+    }
+    if (mrep.done == 0) {
+        st |= 0x100u;   /* the move did not finish within 4 x BT_NTRK periods */
+    }
+    /* the counter's own cost over as many intervals as periods */
+    for (j = 0; j < n; j++) {
+        t0 = bt_now();
+        t1 = bt_now();
+        bt_acc_add(&nul, t0, t1);
+    }
+    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|%lu|%lu|%lu|%lu\n", "move period f32", mv->robot, "m",
+           (unsigned long)n, (unsigned long long)aper.sum, (unsigned long long)nul.sum,
+           (unsigned long long)aper.max, (unsigned long)states[0], (unsigned long)states[1],
+           (unsigned long)states[2], (unsigned long)st);
+    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|0|0|0|%lu\n", "dh_ikc_f32 line", mv->robot, "m",
+           (unsigned long)n, (unsigned long long)aik.sum, (unsigned long long)nul.sum,
+           (unsigned long long)aik.max, (unsigned long)st);
+}
+#endif
+
 /* Runs after the sanity checks: the micro:bit's RAM has no room for more
  * robots, so each move's robot is built in the storage of bt_puma_m (float,
  * metres) and bt_puma_mm (fixed, mm), which nothing uses afterwards. A
@@ -1315,6 +1385,7 @@ static void bt_track(void)
     for (m = 0; m < 2u; m++) {
 #if BT_IKC_FLOAT
         bt_track_f32(&bt_moves[m], &bt_puma_m, &null);
+        bt_period_f32(&bt_moves[m], &bt_puma_m);
 #endif
         bt_track_q(&bt_moves[m], &bt_puma_mm, &null);
     }

@@ -33,16 +33,22 @@ TARGETS = [
     ("m0", "dh_dls_step_q (Puma 560, mm)", 40000, "6-joint damped least-squares step, fixed, Cortex-M0"),
 ]
 
-# Tracking goals (docs/performance.md): (core key, tracker, limit, label); the
-# limit is a number of instructions, or the name of the closed-form solve
-# measured on the same targets in the same run plus TRACK_MARGIN
+# Tracking and motion goals (docs/performance.md): (core key, timed call, limit,
+# label); the limit is a number of instructions, or (the name of the
+# closed-form solve measured on the same targets in the same run, margin)
 TRACK_MARGIN = 1000
+PERIOD_MARGIN = 1500
 TRACK_TARGETS = [
-    ("m4f", "dh_track_step_f32 (UR5, m)", "dh_ikc_f32 (UR5, m)", "tracker call, float, UR5, Cortex-M4F"),
-    ("m4f", "dh_track_step_f32 (Puma 560, m)", "dh_ikc_f32 (Puma 560, m)",
+    ("m4f", "dh_track_step_f32 (UR5, m)", ("dh_ikc_f32 (UR5, m)", TRACK_MARGIN),
+     "tracker call, float, UR5, Cortex-M4F"),
+    ("m4f", "dh_track_step_f32 (Puma 560, m)", ("dh_ikc_f32 (Puma 560, m)", TRACK_MARGIN),
      "tracker call, float, Puma 560, Cortex-M4F"),
     ("m0", "dh_track_step_q (UR5, mm)", 40000, "tracker call, fixed, UR5, Cortex-M0"),
     ("m0", "dh_track_step_q (Puma 560, mm)", 40000, "tracker call, fixed, Puma 560, Cortex-M0"),
+    ("m4f", "move period f32 (UR5, m)", ("dh_ikc_f32 line (UR5, m)", PERIOD_MARGIN),
+     "period of a line move, float, UR5, Cortex-M4F"),
+    ("m4f", "move period f32 (Puma 560, m)", ("dh_ikc_f32 line (Puma 560, m)", PERIOD_MARGIN),
+     "period of a line move, float, Puma 560, Cortex-M4F"),
 ]
 
 # dhmath operation -> peer operation
@@ -497,7 +503,12 @@ def main():
       "as q_ref, as the tracker calls it) and the public Jacobian and singularity measures "
       "at the tracker's output (`dh_jacobian_*` + `dh_manipulability_*`, what the tracker's "
       "report computes on every call), in the same run. Float trackers on the FPU cores "
-      "only; the trackers' settings are the defaults of `dh_track_init_*`.")
+      "only; the trackers' settings are the defaults of `dh_track_init_*`. "
+      "The move periods: a line move (`dh_move_path_f32`, 0.25 m/s, 2 m/s^2, 90 deg/s, "
+      "360 deg/s^2) from the FK of the same start to the FK of the tracking move's middle, "
+      "run to its end; each period timed whole (`dh_move_target_f32`, `dh_track_step_f32` on "
+      "its frame, `dh_move_advance_f32` with the tracker's state), beside the closed-form "
+      "solve of the period's frame (`dh_ikc_f32 line`).")
     w("")
     w("| goal | limit | -O2 | -Os | -Os DH_SMALL | met at -O2 (mean) | met at -O2 (largest call) |")
     w("|---|---|---:|---:|---:|---|---|")
@@ -516,32 +527,35 @@ def main():
         cells, lim2 = [], None
         for o in OPTS:
             t = track_get(c, o, name)
-            if isinstance(ref, str):
-                rr = track_get(c, o, ref)
-                lim = None if rr is None else rr[1] + TRACK_MARGIN
+            if isinstance(ref, tuple):
+                rr = track_get(c, o, ref[0])
+                lim = None if rr is None else rr[1] + ref[1]
             else:
                 lim = ref
             if o == "O2":
                 lim2 = lim
             cells.append("-" if t is None else ("%s (limit %s)" % (fmt(t[1]), fmt(lim))
-                                                 if isinstance(ref, str) and lim is not None else fmt(t[1])))
+                                                 if isinstance(ref, tuple) and lim is not None else fmt(t[1])))
         t2 = track_get(c, "O2", name)
-        lim_txt = ("`%s` + %d" % (ref.split()[0], TRACK_MARGIN)) if isinstance(ref, str) else "%d" % ref
-        w("| %s (`%s`) | %s | %s | %s | %s |" % (label, name.split()[0], lim_txt, " | ".join(cells),
+        lim_txt = ("`%s` + %d" % (ref[0].split()[0], ref[1])) if isinstance(ref, tuple) else "%d" % ref
+        code = (name.split()[0] if name.startswith("dh_")
+                else "dh_move_target_f32` + `dh_track_step_f32` + `dh_move_advance_f32")
+        w("| %s (`%s`) | %s | %s | %s | %s |" % (label, code, lim_txt, " | ".join(cells),
                                                 verdict(None if t2 is None else t2[1], lim2),
                                                 verdict(None if t2 is None else t2[2], lim2)))
     w("")
     w("Figures: mean instructions per call over the move (the closed-form limits: the mean of "
-      "`dh_ikc_*` on the same targets plus %d). \"largest call\": the most expensive single call "
+      "`dh_ikc_*` on the same targets plus %d for a tracker call, %d for a move period). "
+      "\"largest call\": the most expensive single call "
       "of the move, which bounds the period a control loop must allow (+-1 counter tick, 40 or "
-      "62.5 instructions)." % TRACK_MARGIN)
+      "62.5 instructions)." % (TRACK_MARGIN, PERIOD_MARGIN))
     w("")
     w("| core | operation | calls | mean per call | largest call | ok / lagging / unreachable |")
     w("|---|---|---:|---:|---:|---|")
     for c, o in cols:
         r = runs["%s-%s" % (c, o)]
         for name, (n, mean, mx, ok, lag, unr) in r.track.items():
-            st = "%d / %d / %d" % (ok, lag, unr) if name.startswith("dh_track") else ""
+            st = "%d / %d / %d" % (ok, lag, unr) if name.startswith(("dh_track", "move period")) else ""
             w("| %s -%s | `%s` | %d | %.0f | %.0f | %s |" % (core_name[c], o, name, n, mean, mx, st))
     w("")
     w("## Inverse kinematics (`dh_ik_f32`, Puma 560 in metres)")
