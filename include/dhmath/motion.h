@@ -9,7 +9,8 @@
  *   dh_path.c        dh_path_line_f32, dh_path_arc_f32, dh_path_eval_f32,
  *                    dh_path_move_f32, dh_path_move_jerk_f32,
  *                    dh_path_move_eval_f32
- *   dh_blend.c       dh_blend_plan_f32, dh_blend_eval_f32
+ *   dh_blend.c       dh_blend_plan_f32, dh_blend_eval_f32,
+ *                    dh_blend_seq_plan_f32, dh_blend_seq_eval_f32
  *   dh_move.c        dh_move_joint_f32, dh_move_joint_step_f32,
  *                    dh_move_path_f32, dh_move_path_jerk_f32,
  *                    dh_move_target_f32, dh_move_advance_f32
@@ -906,6 +907,104 @@ dh_status dh_blend_plan_f32(dh_blend_f32 *bl, const dh_path_f32 *p1, const dh_pa
  *         untouched on error.
  */
 dh_status dh_blend_eval_f32(const dh_blend_f32 *bl, float t, dh_mat4_f32 *T);
+
+/* ======================================================================
+ * Blended sequence of Cartesian line moves (dh_blend.c)
+ * ==================================================================== */
+
+/**
+ * @brief The time scaling of s from 0 to 1 of one line of a blended
+ *        sequence and its place on the sequence's clock (read-only for
+ *        the user, who reads t0, T and dev): a tail at each end at a
+ *        reduced acceleration (from rest at b0 for tb0, reaching u0 over
+ *        e0; the mirror image at the end: b1, tb1, u1, e1; a tail of
+ *        duration 0 is a rest), between them acceleration +-a and a
+ *        cruise at v (from u0 up to v at a for t1, cruise tv, down to u1
+ *        at a for t3).
+ */
+typedef struct {
+    float v;   /**< peak ds/dt (1/s) */
+    float a;   /**< |d2s/dt2| outside the tails (1/s^2) */
+    float b0;  /**< |d2s/dt2| in the start tail, <= a */
+    float u0;  /**< ds/dt at the end of the start tail: b0 tb0 */
+    float e0;  /**< s covered by the start tail: b0 tb0^2 / 2 */
+    float tb0; /**< duration of the start tail: the overlap with the line before (0: none) */
+    float b1;  /**< |d2s/dt2| in the end tail, <= a */
+    float u1;  /**< ds/dt at the start of the end tail: b1 tb1 */
+    float e1;  /**< s covered by the end tail: b1 tb1^2 / 2 */
+    float tb1; /**< duration of the end tail: the overlap with the line after (0: none) */
+    float t1;  /**< duration of the acceleration from u0 to v */
+    float tv;  /**< duration of the cruise at v */
+    float t3;  /**< duration of the deceleration from v to u1 */
+    float T;   /**< duration of the line: tb0 + t1 + tv + t3 + tb1 (0: no motion) */
+    float t0;  /**< its start on the sequence's clock (s) */
+    float dev; /**< bound on the distance of the tool point from its END corner during that overlap */
+} dh_blend_seg_f32;
+
+/**
+ * @brief A sequence of n line moves blended at their corners, over the
+ *        caller's lines and array of n scalings (written by
+ *        dh_blend_seq_plan_f32, read by dh_blend_seq_eval_f32; read-only
+ *        for the user, who reads n and T). Neither array is copied: both
+ *        must stay unchanged while the sequence is used.
+ */
+typedef struct {
+    const dh_path_f32 *p;  /**< the caller's lines */
+    dh_blend_seg_f32 *seg; /**< the caller's scalings, one per line */
+    uint32_t n;            /**< number of lines */
+    float T;               /**< duration of the sequence (s) */
+} dh_blend_seq_f32;
+
+/**
+ * @brief sq = the n lines p[0..n-1] run one after the other, each corner k
+ *        (between p[k] and p[k+1]) blended within radius[k] as by
+ *        dh_blend_plan_f32 (superposed in the overlap, exactly one line's
+ *        pose elsewhere), each tail within half of its line so that a line
+ *        between two blended corners has one at each end.
+ *        Method and proofs: docs/design.md ("Blended sequences").
+ * @param sq output sequence.
+ * @param seg the caller's array of n scalings (written; owned by sq).
+ * @param p the caller's n lines (dh_path_line_f32; arcs are refused),
+ *        p[k+1].A equal to p[k].B as dh_blend_plan_f32 requires (not
+ *        copied: owned by sq). Lines of length 0, pure rotations and
+ *        straight continuations are fine.
+ * @param n number of lines, >= 1.
+ * @param radius n - 1 blend radii (length unit), finite and >= 0 (NULL
+ *        allowed when n == 1).
+ * @param lim limits, each finite and > 0.
+ * A corner is run at rest (tb 0 at both sides) when its radius is 0, a
+ * line next to it has no motion, or its blend alone would not shorten
+ * the pair; and every corner is, when the whole sequence so planned
+ * would not be shorter than its lines' rest-to-rest trapezoids back to
+ * back. Otherwise sq->T is less than that. Speed, TOTAL acceleration,
+ * angular speed and acceleration within lim up to float rounding (1e-6
+ * relative), seg[k].dev <= radius[k].
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf limit or radius; DH_ERR_ARG for
+ *         n == 0, a limit <= 0, a radius < 0, a p[k] that is not a line
+ *         (an arc, or no path) or a p[k+1].A that is not p[k].B;
+ *         DH_ERR_OVERFLOW when a rate or a duration is not a positive
+ *         finite float. sq and seg untouched on error.
+ */
+dh_status dh_blend_seq_plan_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t n,
+                                const float *radius, const dh_cart_limits_f32 *lim);
+
+/**
+ * @brief T = the frame of the blended sequence sq at time t (s, on the
+ *        sequence's clock): the frame of line k at its own time
+ *        t - seg[k].t0 where one line runs, the superposition of lines k
+ *        and k+1 in their overlap.
+ * @param sq sequence from dh_blend_seq_plan_f32.
+ * @param t time, any value but NaN: clamped to [0, sq->T]; t <= 0 gives
+ *        p[0].A and t >= sq->T gives p[n-1].B bit for bit.
+ * @param T output frame (must not alias the lines).
+ * Outside the overlaps the position is dh_path_eval_f32's (within 4
+ * FLT_EPSILON S of its line); inside, within seg[k].dev of corner k up to
+ * 8 FLT_EPSILON S (S the largest position magnitude of the lines).
+ * @return DH_OK; DH_ERR_NAN for a NaN t; DH_ERR_ARG when sq holds no
+ *         sequence (n 0, or a line that holds no path). T untouched on
+ *         error.
+ */
+dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32 *T);
 
 #ifdef __cplusplus
 }

@@ -45,33 +45,53 @@
 #define BLEND_MARGIN 0.9990234375f    /* 1 - 2^-10: the rounding of the bounds */
 #define BLEND_WSHARE 0.984375f        /* 63/64 of wdmax for the tails, 1/64 for the cross term */
 
-/* The checks of dh_blend_plan_f32's arguments, in the order of its
- * statuses */
-static dh_status blend_check(const dh_path_f32 *p1, const dh_path_f32 *p2, const dh_cart_limits_f32 *lim,
-                             float radius)
+/* The limits and a radius: DH_ERR_NAN for a NaN/Inf one, then
+ * DH_ERR_ARG for a limit <= 0 */
+static dh_status blend_check_lim(const dh_cart_limits_f32 *lim, float radius)
 {
     const float x[5] = { lim->vmax, lim->amax, lim->wmax, lim->wdmax, radius };
-    float sc = 1.0f, d;
-    int i, j;
+    int i;
     for (i = 0; i < 5; i++) {
         if (!dh_isfinite_f32(x[i])) return DH_ERR_NAN;
     }
     for (i = 0; i < 4; i++) {
         if (!(x[i] > 0.0f)) return DH_ERR_ARG;
     }
-    if (radius < 0.0f || !dh_motion_path_ok_f32_(p1) || !dh_motion_path_ok_f32_(p2) ||
-        p1->kind != (uint32_t)DH_PATH_LINE || p2->kind != (uint32_t)DH_PATH_LINE) {
-        return DH_ERR_ARG;
-    }
+    return DH_OK;
+}
+
+/* 1 when p holds a line */
+static int blend_is_line(const dh_path_f32 *p)
+{
+    return dh_motion_path_ok_f32_(p) && p->kind == (uint32_t)DH_PATH_LINE;
+}
+
+/* 1 when p2->A equals p1->B within DH_ROT_TOL (positions relative to
+ * max(1, |p1->B's position|)) */
+static int blend_joins(const dh_path_f32 *p1, const dh_path_f32 *p2)
+{
+    float sc = 1.0f, d;
+    int i, j;
     for (i = 0; i < 3; i++) {
         if (fabsf(DH_M4(&p1->B, i, 3)) > sc) sc = fabsf(DH_M4(&p1->B, i, 3));
     }
     for (i = 0; i < 3; i++) {
         for (j = 0; j < 4; j++) {
             d = fabsf(DH_M4(&p1->B, i, j) - DH_M4(&p2->A, i, j));
-            if (!(d <= DH_ROT_TOL * ((j == 3) ? sc : 1.0f))) return DH_ERR_ARG;
+            if (!(d <= DH_ROT_TOL * ((j == 3) ? sc : 1.0f))) return 0;
         }
     }
+    return 1;
+}
+
+/* The checks of dh_blend_plan_f32's arguments, in the order of its
+ * statuses */
+static dh_status blend_check(const dh_path_f32 *p1, const dh_path_f32 *p2, const dh_cart_limits_f32 *lim,
+                             float radius)
+{
+    dh_status st = blend_check_lim(lim, radius);
+    if (st != DH_OK) return st;
+    if (radius < 0.0f || !blend_is_line(p1) || !blend_is_line(p2) || !blend_joins(p1, p2)) return DH_ERR_ARG;
     return DH_OK;
 }
 
@@ -139,16 +159,18 @@ static void blend_min_sqrt(float *m, float n, float d)
 }
 
 /* The overlap tb of the lines p1, p2 with the rates r1, r2 (each V, a,
- * b) within lim and radius; 0 when a move has no motion or radius is 0 */
+ * b) within lim and radius, each tail within fit / 2 of its line's s
+ * (fit 2: the whole line, 1: half of it); 0 when a move has no motion or
+ * radius is 0 */
 static DH_NOINLINE float blend_overlap(const dh_path_f32 *p1, const dh_path_f32 *p2, const float r1[3],
-                                       const float r2[3], const dh_cart_limits_f32 *lim, float radius)
+                                       const float r2[3], const dh_cart_limits_f32 *lim, float radius, float fit)
 {
     float tb;
     if (!(r1[2] > 0.0f) || !(r2[2] > 0.0f) || !(radius > 0.0f)) return 0.0f;
     tb = r1[0] / r1[2];
     if (r2[0] / r2[2] < tb) tb = r2[0] / r2[2];
-    blend_min_sqrt(&tb, 2.0f, r1[2] * (1.0f + r1[2] / r1[1]));
-    blend_min_sqrt(&tb, 2.0f, r2[2] * (1.0f + r2[2] / r2[1]));
+    blend_min_sqrt(&tb, fit, r1[2] * (1.0f + r1[2] / r1[1]));
+    blend_min_sqrt(&tb, fit, r2[2] * (1.0f + r2[2] / r2[1]));
     blend_min_sqrt(&tb, 2.0f * radius, p1->length * r1[2] + p2->length * r2[2]);
     blend_min_sqrt(&tb, BLEND_RAD2DEG * 0.0625f * lim->wdmax, (p1->angle * r1[2]) * (p2->angle * r2[2]));
     tb *= BLEND_MARGIN;
@@ -222,7 +244,7 @@ dh_status dh_blend_plan_f32(dh_blend_f32 *bl, const dh_path_f32 *p1, const dh_pa
     if (st == DH_OK) st = blend_dur(r2, 0.0f, &T2);
     if (st != DH_OK) return st;
     blend_share(p1, p2, r1, r2, lim);
-    tb = blend_overlap(p1, p2, r1, r2, lim, radius);
+    tb = blend_overlap(p1, p2, r1, r2, lim, radius, 2.0f);
     if (tb > 0.0f && (blend_dur(r1, tb, &U1) != DH_OK || blend_dur(r2, tb, &U2) != DH_OK ||
                       !((U1 - tb) + U2 < T1 + T2))) {
         tb = 0.0f;
@@ -315,5 +337,263 @@ dh_status dh_blend_eval_f32(const dh_blend_f32 *bl, float t, dh_mat4_f32 *T)
                          blend_prof_eval(&bl->m1, t, 1) * (DH_M4(&bl->p1.B, i, 3) - DH_M4(&bl->p1.A, i, 3)) +
                          blend_prof_eval(&bl->m2, t2, 1) * (DH_M4(&bl->p2.B, i, 3) - DH_M4(&bl->p2.A, i, 3));
     }
+    return DH_OK;
+}
+
+/* ---- blended sequences ---------------------------------------------- */
+
+/* The checks of dh_blend_seq_plan_f32's arguments (n >= 1), in the order
+ * of its statuses */
+static DH_NOINLINE dh_status seq_check(const dh_path_f32 *p, uint32_t n, const float *radius,
+                                       const dh_cart_limits_f32 *lim)
+{
+    const dh_status st = blend_check_lim(lim, 0.0f);
+    uint32_t k;
+    for (k = 0u; k + 1u < n; k++) {
+        if (!dh_isfinite_f32(radius[k])) return DH_ERR_NAN;
+    }
+    if (st != DH_OK) return st;
+    for (k = 0u; k < n; k++) {
+        if (!blend_is_line(&p[k])) return DH_ERR_ARG;
+        if (k + 1u < n && (radius[k] < 0.0f || !blend_joins(&p[k], &p[k + 1u]))) return DH_ERR_ARG;
+    }
+    return DH_OK;
+}
+
+/* *T = the sum of the lines' rest-to-rest durations (blend_rates' and
+ * blend_dur's statuses: every DH_ERR_OVERFLOW of the planning) */
+static DH_NOINLINE dh_status seq_rest(const dh_path_f32 *p, uint32_t n, const dh_cart_limits_f32 *lim, float *T)
+{
+    float r[3], d = 0.0f;
+    uint32_t k;
+    dh_status st = DH_OK;
+    *T = 0.0f;
+    for (k = 0u; k < n && st == DH_OK; k++) {
+        st = blend_rates(&p[k], lim, r);
+        if (st == DH_OK) st = blend_dur(r, 0.0f, &d);
+        *T += d;
+    }
+    if (st == DH_OK && !dh_isfinite_f32(*T)) st = DH_ERR_OVERFLOW;
+    return st;
+}
+
+/* The corner between the lines p[0] and p[1] (rates checked by seq_rest):
+ * the end tail of g[0] and the start tail of g[1] (b, tb) and g[0].dev,
+ * as dh_blend_plan_f32 plans them but each tail within half its line */
+static DH_NOINLINE void seq_corner(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                   float radius)
+{
+    float r1[3], r2[3], tb;
+    (void)blend_rates(&p[0], lim, r1);
+    (void)blend_rates(&p[1], lim, r2);
+    blend_share(&p[0], &p[1], r1, r2, lim);
+    tb = blend_overlap(&p[0], &p[1], r1, r2, lim, radius, 1.0f);
+    if (!(tb > 0.0f)) {
+        tb = 0.0f;
+        r1[2] = 0.0f;
+        r2[2] = 0.0f;
+    }
+    g[0].b1 = r1[2];
+    g[0].tb1 = tb;
+    g[1].b0 = r2[2];
+    g[1].tb0 = tb;
+    g[0].dev = 0.5f * tb * tb * (p[0].length * r1[2] + p[1].length * r2[2]);
+}
+
+/* the duration a tail of g's b and the overlap tb add to the rest-to-rest
+ * scaling of the line p (the two as blend_dur plans them; +Inf when one
+ * cannot be planned) */
+static DH_NOINLINE float seq_cost(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, float b, float tb)
+{
+    float r[3], T, U;
+    (void)blend_rates(p, lim, r);
+    r[2] = b;
+    if (blend_dur(r, 0.0f, &T) != DH_OK || blend_dur(r, tb, &U) != DH_OK) return INFINITY;
+    return U - T;
+}
+
+/* the corner g[0] | g[1] at rest (no tails) */
+static void seq_at_rest(dh_blend_seg_f32 *g)
+{
+    g[0].b1 = 0.0f;
+    g[0].tb1 = 0.0f;
+    g[1].b0 = 0.0f;
+    g[1].tb0 = 0.0f;
+    g[0].dev = 0.0f;
+}
+
+/* g's scaling from its line's rates r (V, a; a == 0: no motion) and its
+ * tails (b0, tb0, b1, tb1): the cruise time from the distance
+ * e0 + (v^2 - u0^2) / (2 a) + v tv + (v^2 - u1^2) / (2 a) + e1 = 1, or no
+ * cruise and v = sqrt(a (1 - e0 - e1) + (u0^2 + u1^2) / 2) */
+static DH_NOINLINE void seq_prof(dh_blend_seg_f32 *g, const float r[3])
+{
+    const float V = r[0], a = r[1];
+    float x, v = 0.0f, tv = 0.0f, hi;
+    g->u0 = g->b0 * g->tb0;
+    g->e0 = 0.5f * g->u0 * g->tb0;
+    g->u1 = g->b1 * g->tb1;
+    g->e1 = 0.5f * g->u1 * g->tb1;
+    g->a = (a > 0.0f) ? a : 0.0f;
+    g->t1 = 0.0f;
+    g->t3 = 0.0f;
+    g->T = 0.0f;
+    if (a > 0.0f) {
+        x = g->e0 + g->e1 + (V * V - 0.5f * (g->u0 * g->u0 + g->u1 * g->u1)) / a;
+        if (x >= 1.0f) {
+            v = dh_sqrtf_(a * (1.0f - g->e0 - g->e1) + 0.5f * (g->u0 * g->u0 + g->u1 * g->u1));
+            hi = (g->u0 > g->u1) ? g->u0 : g->u1;
+            if (v < hi) v = hi;
+            if (v > V) v = V;
+        } else {
+            v = V;
+            tv = (1.0f - x) / V;
+        }
+        g->t1 = (v - g->u0) / a;
+        g->t3 = (v - g->u1) / a;
+        g->T = g->tb0 + g->t1 + tv + g->t3 + g->tb1;
+    }
+    g->v = v;
+    g->tv = tv;
+}
+
+/* every line's scaling from its rates and tails, and its start t0 on the
+ * sequence's clock; the sequence's duration */
+static DH_NOINLINE float seq_build(dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t n,
+                                   const dh_cart_limits_f32 *lim)
+{
+    float r[3], T = 0.0f;
+    uint32_t k;
+    for (k = 0u; k < n; k++) {
+        (void)blend_rates(&p[k], lim, r);
+        seq_prof(&seg[k], r);
+        seg[k].t0 = T;
+        T = seg[k].t0 + (seg[k].T - seg[k].tb1);
+    }
+    return T;
+}
+
+dh_status dh_blend_seq_plan_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t n,
+                                const float *radius, const dh_cart_limits_f32 *lim)
+{
+    float Trr = 0.0f, T = 0.0f;
+    uint32_t k;
+    int pass;
+    dh_status st;
+    DH_ASSERT(sq != NULL && seg != NULL && p != NULL && lim != NULL && (n <= 1u || radius != NULL));
+    if (n == 0u) return DH_ERR_ARG;
+    st = seq_check(p, n, radius, lim);
+    if (st == DH_OK) st = seq_rest(p, n, lim, &Trr);
+    if (st != DH_OK) return st;
+    /* the blended corners, then all at rest when that is not shorter */
+    for (pass = 0; pass < 2; pass++) {
+        seg[0].b0 = 0.0f;
+        seg[0].tb0 = 0.0f;
+        seg[n - 1u].b1 = 0.0f;
+        seg[n - 1u].tb1 = 0.0f;
+        seg[n - 1u].dev = 0.0f;
+        for (k = 0u; k + 1u < n; k++) {
+            /* blended when shorter: (U1 - T1) + (U2 - T2) < tb */
+            seq_corner(&seg[k], &p[k], lim, (pass == 0) ? radius[k] : 0.0f);
+            if (seg[k].tb1 > 0.0f && !(seq_cost(&p[k], lim, seg[k].b1, seg[k].tb1) +
+                                           seq_cost(&p[k + 1u], lim, seg[k + 1u].b0, seg[k].tb1) <
+                                       seg[k].tb1)) {
+                seq_at_rest(&seg[k]);
+            }
+        }
+        T = seq_build(seg, p, n, lim);
+        if (T < Trr) break;
+    }
+    sq->p = p;
+    sq->seg = seg;
+    sq->n = n;
+    sq->T = T;
+    return DH_OK;
+}
+
+/* s (rest 0) or 1 - s (rest 1), each accurate near its own 0, of the
+ * scaling g at its time t, clamped to [0, g->T]: the first half from the
+ * start, the second from the end */
+static float seq_prof_eval(const dh_blend_seg_f32 *g, float t, int rest)
+{
+    float r, x;
+    if (!(t > 0.0f)) return rest ? 1.0f : 0.0f;
+    if (!(t < g->T)) return rest ? 0.0f : 1.0f;
+    if (t < g->tb0 + g->t1 + 0.5f * g->tv) {
+        if (t < g->tb0) {
+            x = 0.5f * g->b0 * t * t;
+        } else if (t < g->tb0 + g->t1) {
+            r = t - g->tb0;
+            x = g->e0 + r * (g->u0 + 0.5f * g->a * r);
+        } else {
+            x = g->e0 + 0.5f * g->t1 * (g->u0 + g->v) + g->v * (t - g->tb0 - g->t1);
+        }
+        return rest ? 1.0f - x : x;
+    }
+    r = g->T - t;
+    if (r < g->tb1) {
+        x = 0.5f * g->b1 * r * r;
+    } else if (r < g->tb1 + g->t3) {
+        r -= g->tb1;
+        x = g->e1 + r * (g->u1 + 0.5f * g->a * r);
+    } else {
+        x = g->e1 + 0.5f * g->t3 * (g->u1 + g->v) + g->v * (r - g->tb1 - g->t3);
+    }
+    return rest ? x : 1.0f - x;
+}
+
+/* s of line k of sq at the sequence's time t */
+static DH_NOINLINE float seq_s(const dh_blend_seq_f32 *sq, uint32_t k, float t)
+{
+    return seq_prof_eval(&sq->seg[k], t - sq->seg[k].t0, 0);
+}
+
+/* column c of T = the slerp of line k of sq at the sequence's time t
+ * (blend_slerp) */
+static DH_NOINLINE void seq_slerp(const dh_blend_seq_f32 *sq, uint32_t k, float t, dh_mat4_f32 *T, int c)
+{
+    blend_slerp(&sq->p[k], seq_s(sq, k, t), T, c);
+}
+
+/* T's position in the overlap of lines k - 1 and k of sq at the
+ * sequence's time t: line k - 1's end less what its s has left, plus
+ * what line k's s has covered */
+static DH_NOINLINE void seq_position(const dh_blend_seq_f32 *sq, uint32_t k, float t, dh_mat4_f32 *T)
+{
+    const dh_path_f32 *p = &sq->p[k - 1u];
+    const dh_blend_seg_f32 *g = &sq->seg[k - 1u];
+    const float x1 = seq_prof_eval(&g[0], t - g[0].t0, 1), x2 = seq_prof_eval(&g[1], t - g[1].t0, 0);
+    int i;
+    for (i = 0; i < 3; i++) {
+        DH_M4(T, i, 3) = DH_M4(&p[0].B, i, 3) - x1 * (DH_M4(&p[0].B, i, 3) - DH_M4(&p[0].A, i, 3)) +
+                         x2 * (DH_M4(&p[1].B, i, 3) - DH_M4(&p[1].A, i, 3));
+    }
+}
+
+/* the index of the last line of sq with t0 <= t */
+static DH_NOINLINE uint32_t seq_find(const dh_blend_seq_f32 *sq, float t)
+{
+    uint32_t k = 0u;
+    while (k + 1u < sq->n && !(t < sq->seg[k + 1u].t0)) k++;
+    return k;
+}
+
+/* The overlap's rotation is composed as dh_blend_eval_f32's, called from
+ * here directly (one small frame above the slerp and the composition) */
+dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32 *T)
+{
+    uint32_t k;
+    DH_ASSERT(sq != NULL && T != NULL);
+    if (isunordered(t, t)) return DH_ERR_NAN;
+    if (sq->n == 0u || sq->p == NULL || sq->seg == NULL) return DH_ERR_ARG;
+    if (!(t > 0.0f)) return dh_path_eval_f32(&sq->p[0], 0.0f, T);
+    if (!(t < sq->T)) return dh_path_eval_f32(&sq->p[sq->n - 1u], 1.0f, T);
+    k = seq_find(sq, t);
+    if (k == 0u || !(t - sq->seg[k].t0 < sq->seg[k].tb0)) return dh_path_eval_f32(&sq->p[k], seq_s(sq, k, t), T);
+    if (!dh_motion_path_ok_f32_(&sq->p[k - 1u]) || !dh_motion_path_ok_f32_(&sq->p[k])) return DH_ERR_ARG;
+    seq_slerp(sq, k - 1u, t, T, 0);
+    seq_slerp(sq, k, t, T, 1);
+    blend_compose(&sq->p[k].qa, T);
+    seq_position(sq, k, t, T);
     return DH_OK;
 }

@@ -167,6 +167,25 @@ static void eval_at(const dh_blend_f32 *bl, double t, dh_mat4_f32 *T)
     DHT_EQ_INT(dh_blend_eval_f32(bl, (float)t, T), DH_OK);
 }
 
+/* what the finite differences sample: a pair (bl) or a sequence (sq) */
+typedef struct {
+    const dh_blend_f32 *bl;
+    const dh_blend_seq_f32 *sq;
+} source;
+
+static void src_at(const source *src, double t, dh_mat4_f32 *T)
+{
+    if (src->sq != NULL)
+        DHT_EQ_INT(dh_blend_seq_eval_f32(src->sq, (float)t, T), DH_OK);
+    else
+        eval_at(src->bl, t, T);
+}
+
+static double src_T(const source *src)
+{
+    return (src->sq != NULL) ? (double)src->sq->T : (double)src->bl->T;
+}
+
 /* the least window (periods) over which a per-sample noise perturbs the
  * finite difference of the given order by at most NOISE_FRAC of lim */
 static long fd_window(double noise, int order, double lim)
@@ -179,15 +198,15 @@ static long fd_window(double noise, int order, double lim)
 /* the largest ratio to lim of the finite difference of the given order
  * (1 speed, 2 acceleration) of the position (ang 0) or of the rotation
  * (ang 1) over windows of w periods */
-static double fd_ratio(const dh_blend_f32 *bl, int order, int ang, long w, double lim)
+static double fd_ratio(const source *src, int order, int ang, long w, double lim)
 {
     double worst = 0.0, h = 1.0 / HZ, x[3][3], ra[3], rb[3], f, d;
-    long k, kend = (long)ceil((double)bl->T * HZ) + 2;
+    long k, kend = (long)ceil(src_T(src) * HZ) + 2;
     int i, j;
     dh_mat4_f32 T[3];
     for (k = -2 * w; k <= kend; k++) {
         for (j = 0; j <= order; j++) {
-            eval_at(bl, (double)(k + j * w) * h, &T[j]);
+            src_at(src, (double)(k + j * w) * h, &T[j]);
             for (i = 0; i < 3; i++) x[i][j] = DH_M4(&T[j], i, 3);
         }
         f = 0.0;
@@ -250,9 +269,11 @@ static void path_check(const dh_blend_f32 *bl, const corner *k, const dh_cart_li
     DHT_TRUE(memcmp(&T, &k->p2.B, sizeof T) == 0);
 }
 
-static void limits_check(const dh_blend_f32 *bl, const corner *k, const dh_cart_limits_f32 *lim)
+/* speed and acceleration, linear and (ang 1) angular, of src within lim by
+ * finite differences; S the largest position magnitude */
+static void src_limits(const source *src, double S, int ang, const dh_cart_limits_f32 *lim)
 {
-    double plim[2], alim[2], wr, posn = 8.0 * dhr_ulp_f32(k->S);
+    double plim[2], alim[2], wr, posn = 8.0 * dhr_ulp_f32(S);
     long w;
     int o;
     plim[0] = lim->vmax;
@@ -261,16 +282,24 @@ static void limits_check(const dh_blend_f32 *bl, const corner *k, const dh_cart_
     alim[1] = lim->wdmax;
     for (o = 1; o <= 2; o++) {
         w = fd_window(posn, o, plim[o - 1]);
-        wr = fd_ratio(bl, o, 0, w, plim[o - 1]);
+        wr = fd_ratio(src, o, 0, w, plim[o - 1]);
         DHT_TRUE_MSG(wr <= 1.0 + REL_FD, "linear derivative %d: %.9g x its limit (window %ld ms)", o, wr, w);
         dht_reach_max(o == 1 ? "lin.v" : "lin.a", wr);
-        if (k->th1 > 0.0 || k->th2 > 0.0) {
+        if (ang) {
             w = fd_window(ANG_NOISE, o, alim[o - 1]);
-            wr = fd_ratio(bl, o, 1, w, alim[o - 1]);
+            wr = fd_ratio(src, o, 1, w, alim[o - 1]);
             DHT_TRUE_MSG(wr <= 1.0 + REL_FD, "angular derivative %d: %.9g x its limit (window %ld ms)", o, wr, w);
             dht_reach_max(o == 1 ? "ang.v" : "ang.a", wr);
         }
     }
+}
+
+static void limits_check(const dh_blend_f32 *bl, const corner *k, const dh_cart_limits_f32 *lim)
+{
+    source src;
+    src.bl = bl;
+    src.sq = NULL;
+    src_limits(&src, k->S, k->th1 > 0.0 || k->th2 > 0.0, lim);
 }
 
 static void random_corners(void)
@@ -407,9 +436,264 @@ static void blend_errors(void)
     DHT_TRUE(memcmp(&T, &k.p1.B, sizeof T) == 0);
 }
 
+
+/* ---- blended sequences (dh_blend_seq_plan_f32, dh_blend_seq_eval_f32) -- */
+
+#define NSEQ 5
+
+typedef struct {
+    dh_path_f32 p[NSEQ];
+    double x[NSEQ + 1][3]; /* the float positions of the corners, x[0] the start, x[n] the end */
+    double L[NSEQ], th[NSEQ];
+    double S;
+    int n;
+} chain;
+
+/* n lines of 0.05 to 0.4 m in random directions (the second straight on
+ * when straight, the third reversed when reverse), each turning the tool
+ * by up to rmax degrees */
+static void make_chain(chain *c, int n, double rmax, int straight, int reverse)
+{
+    dhr_mat4 R0, R1, X;
+    dh_mat4_f32 F0, F1;
+    double d[3], pd[3] = { 0.0, 0.0, 0.0 }, ax[3], pos[3];
+    int k, i;
+    dhr_rand_rigid(0.0, &R0);
+    for (i = 0; i < 3; i++) {
+        pos[i] = dht_rand_uniform(-0.3, 0.3);
+        DHR_M4(&R0, i, 3) = pos[i];
+    }
+    dhr_to_f32(&R0, &F0);
+    pos_of(&F0, c->x[0]);
+    c->S = 0.0;
+    c->n = n;
+    for (k = 0; k < n; k++) {
+        dhr_rand_unit3(d);
+        for (i = 0; i < 3; i++) {
+            if (k == 1 && straight) d[i] = pd[i];
+            if (k == 2 && reverse) d[i] = -pd[i];
+        }
+        c->L[k] = dht_rand_uniform(0.05, 0.4);
+        dhr_rand_unit3(ax);
+        dhr_rot_axis(ax[0], ax[1], ax[2], dht_rand_uniform(0.0, rmax), &X);
+        dhr_mul(&X, &R0, &R1);
+        for (i = 0; i < 3; i++) {
+            pos[i] += c->L[k] * d[i];
+            DHR_M4(&R1, i, 3) = pos[i];
+            pd[i] = d[i];
+        }
+        dhr_to_f32(&R1, &F1);
+        DHT_EQ_INT(dh_path_line_f32(&c->p[k], &F0, &F1), DH_OK);
+        pos_of(&F1, c->x[k + 1]);
+        rot_vec(&F0, &F1, ax);
+        c->th[k] = sqrt(dot3(ax, ax));
+        for (i = 0; i < 3; i++) d[i] = c->x[k + 1][i] - c->x[k][i];
+        c->L[k] = sqrt(dot3(d, d));
+        R0 = R1;
+        F0 = F1;
+    }
+    for (k = 0; k <= n; k++)
+        for (i = 0; i < 3; i++) c->S = fmax(c->S, fabs(c->x[k][i]));
+}
+
+/* every sample on its line outside the overlaps, within the radius and
+ * dev of its corner inside; every step within one period of the speed
+ * limits; the end exact */
+static void seq_path_check(const dh_blend_seq_f32 *sq, const chain *c, const float *radius,
+                           const dh_cart_limits_f32 *lim)
+{
+    const dh_blend_seg_f32 *g = sq->seg;
+    double h = 1.0 / HZ, t, p[3], q[3], e, dp, rv[3], posn = 8.0 * dhr_ulp_f32(c->S);
+    long i, ns = (long)ceil((double)sq->T * HZ) + 1;
+    int j, k;
+    float tau;
+    dh_mat4_f32 T, P;
+    DHT_EQ_INT(dh_blend_seq_eval_f32(sq, 0.0f, &P), DH_OK);
+    DHT_TRUE(memcmp(&P, &c->p[0].A, sizeof P) == 0);
+    for (i = 1; i <= ns; i++) {
+        t = (double)i * h;
+        DHT_EQ_INT(dh_blend_seq_eval_f32(sq, (float)t, &T), DH_OK);
+        pos_of(&T, p);
+        k = 0;
+        while (k + 1 < c->n && !((float)t < g[k + 1].t0)) k++;
+        tau = (float)t - g[k].t0;
+        if (k > 0 && tau < g[k].tb0) {
+            for (j = 0; j < 3; j++) q[j] = p[j] - c->x[k][j];
+            e = sqrt(dot3(q, q));
+            DHT_TRUE_MSG(e <= (double)radius[k - 1] + POS_TOL && e <= (double)g[k - 1].dev + POS_TOL,
+                         "t %.9g: %.9g m from corner %d (radius %.9g, dev %.9g)", t, e, k - 1,
+                         (double)radius[k - 1], (double)g[k - 1].dev);
+            dht_reach_max("seq.dev_frac", e / (double)radius[k - 1]);
+        } else {
+            e = seg_dist(c->x[k], c->x[k + 1], p);
+            DHT_TRUE_MSG(e <= POS_TOL, "t %.9g: %.3g m off line %d", t, e, k);
+            dht_reach_max("seq.line_err", e);
+        }
+        pos_of(&P, q);
+        for (j = 0; j < 3; j++) q[j] -= p[j];
+        dp = sqrt(dot3(q, q));
+        DHT_TRUE_MSG(dp <= lim->vmax * h * (1.0 + REL_FD) + 2.0 * posn, "t %.9g: step %.3g m", t, dp);
+        rot_vec(&P, &T, rv);
+        dp = sqrt(dot3(rv, rv));
+        DHT_TRUE_MSG(dp <= lim->wmax * h * (1.0 + REL_FD) + 2.0 * ANG_NOISE, "t %.9g: step %.3g deg", t, dp);
+        P = T;
+    }
+    DHT_TRUE(memcmp(&T, &c->p[c->n - 1].B, sizeof T) == 0);
+    DHT_EQ_INT(dh_blend_seq_eval_f32(sq, sq->T + 1.0f, &T), DH_OK);
+    DHT_TRUE(memcmp(&T, &c->p[c->n - 1].B, sizeof T) == 0);
+    DHT_EQ_INT(dh_blend_seq_eval_f32(sq, -1.0f, &T), DH_OK);
+    DHT_TRUE(memcmp(&T, &c->p[0].A, sizeof T) == 0);
+}
+
+/* the sum of the lines' rest-to-rest minimum durations */
+static double chain_trr(const chain *c, const dh_cart_limits_f32 *lim)
+{
+    double T = 0.0;
+    int k;
+    for (k = 0; k < c->n; k++) T += line_tmin(c->L[k], c->th[k], lim);
+    return T;
+}
+
+static void seq_check_all(const chain *c, const float *radius, const dh_cart_limits_f32 *lim,
+                          const dh_blend_seq_f32 *sq)
+{
+    source src;
+    double Trr = chain_trr(c, lim), ang = 0.0;
+    int k, blended = 0;
+    for (k = 0; k < c->n; k++) {
+        ang += c->th[k];
+        if (k + 1 < c->n) {
+            DHT_TRUE(sq->seg[k].tb1 == sq->seg[k + 1].tb0 && sq->seg[k].dev <= radius[k]);
+            if (sq->seg[k].tb1 > 0.0f) blended = 1;
+        }
+    }
+    DHT_TRUE(sq->seg[0].tb0 == 0.0f && sq->seg[c->n - 1].tb1 == 0.0f);
+    DHT_TRUE_MSG(blended ? (double)sq->T < Trr : (double)sq->T <= Trr * (1.0 + 1e-5),
+                 "sequence %.9g s (blended %d), rest to rest %.9g s", (double)sq->T, blended, Trr);
+    if (blended) dht_reach_max("seq.saving_frac", (Trr - (double)sq->T) / Trr);
+    seq_path_check(sq, c, radius, lim);
+    src.bl = NULL;
+    src.sq = sq;
+    src_limits(&src, c->S, ang > 0.0, lim);
+}
+
+static void random_sequences(void)
+{
+    int it, k, n = DHT_ITER(20);
+    for (it = 0; it < n; it++) {
+        chain c;
+        dh_blend_seg_f32 seg[NSEQ];
+        dh_blend_seq_f32 sq;
+        dh_cart_limits_f32 lim;
+        float radius[NSEQ - 1];
+        int nl = 2 + (int)(dht_rand_u32() % (NSEQ - 1));
+        make_chain(&c, nl, 60.0, it % 4 == 1, it % 4 == 2);
+        for (k = 0; k + 1 < nl; k++)
+            radius[k] = (dht_rand_u32() % 5u == 0u) ? 0.0f : (float)pow(10.0, dht_rand_uniform(-3.0, -1.0));
+        lim.vmax = (float)dht_rand_uniform(0.1, 1.0);
+        lim.amax = (float)dht_rand_uniform(1.0, 10.0);
+        lim.wmax = (float)dht_rand_uniform(30.0, 90.0);
+        lim.wdmax = (float)dht_rand_uniform(300.0, 2000.0);
+        DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, (uint32_t)nl, radius, &lim), DH_OK);
+        DHT_TRUE(sq.n == (uint32_t)nl && sq.seg == seg && sq.p == c.p);
+        seq_check_all(&c, radius, &lim, &sq);
+    }
+}
+
+/* one line is its rest-to-rest trapezoid; radius 0 everywhere runs the
+ * lines back to back, exactly at each corner between them */
+static void seq_single_and_rest(void)
+{
+    chain c;
+    dh_blend_seg_f32 seg[NSEQ];
+    dh_blend_seq_f32 sq;
+    dh_cart_limits_f32 lim = { 0.5f, 2.0f, 60.0f, 500.0f };
+    const float zero[NSEQ - 1] = { 0.0f, 0.0f, 0.0f, 0.0f };
+    dh_mat4_f32 T;
+    double Trr;
+    int k;
+    make_chain(&c, 1, 30.0, 0, 0);
+    DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 1u, NULL, &lim), DH_OK);
+    Trr = chain_trr(&c, &lim);
+    DHT_TRUE_MSG(fabs((double)sq.T - Trr) <= 1e-5 * Trr, "one line %.9g s vs %.9g s", (double)sq.T, Trr);
+    seq_check_all(&c, zero, &lim, &sq);
+    make_chain(&c, NSEQ, 30.0, 1, 1);
+    DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, NSEQ, zero, &lim), DH_OK);
+    Trr = chain_trr(&c, &lim);
+    DHT_TRUE_MSG(fabs((double)sq.T - Trr) <= 1e-5 * Trr, "back to back %.9g s vs %.9g s", (double)sq.T, Trr);
+    for (k = 1; k < NSEQ; k++) {
+        DHT_TRUE(seg[k].tb0 == 0.0f && seg[k - 1].dev == 0.0f);
+        DHT_EQ_INT(dh_blend_seq_eval_f32(&sq, seg[k].t0, &T), DH_OK);
+        DHT_TRUE(memcmp(&T, &c.p[k].A, sizeof T) == 0);
+    }
+    seq_check_all(&c, zero, &lim, &sq);
+}
+
+/* every status, and nothing written on error */
+static void seq_errors(void)
+{
+    chain c;
+    dh_blend_seg_f32 seg[3], segz[3];
+    dh_blend_seq_f32 sq, sqz;
+    dh_cart_limits_f32 lim = { 0.5f, 2.0f, 60.0f, 500.0f };
+    float radius[2] = { 0.01f, 0.01f };
+    dh_path_f32 keep;
+    dh_mat4_f32 T, T0;
+    const float via[3] = { 0.1f, 0.2f, 0.3f };
+    memset(segz, 0, sizeof segz);
+    memset(&sqz, 0, sizeof sqz);
+    memcpy(seg, segz, sizeof seg);
+    sq = sqz;
+    make_chain(&c, 3, 30.0, 0, 0);
+    DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 0u, radius, &lim), DH_ERR_ARG);
+    radius[1] = NAN;
+    DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 3u, radius, &lim), DH_ERR_NAN);
+    radius[1] = -1e-3f;
+    DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 3u, radius, &lim), DH_ERR_ARG);
+    radius[1] = 0.01f;
+    lim.wmax = INFINITY;
+    DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 3u, radius, &lim), DH_ERR_NAN);
+    lim.wmax = 0.0f;
+    DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 3u, radius, &lim), DH_ERR_ARG);
+    lim.wmax = 60.0f;
+    /* an arc, a gap, no path */
+    keep = c.p[1];
+    DHT_EQ_INT(dh_path_arc_f32(&c.p[1], &keep.A, via, &keep.B), DH_OK);
+    DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 3u, radius, &lim), DH_ERR_ARG);
+    T = keep.A;
+    DH_M4(&T, 1, 3) += 1e-3f;
+    DHT_EQ_INT(dh_path_line_f32(&c.p[1], &T, &keep.B), DH_OK);
+    DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 3u, radius, &lim), DH_ERR_ARG);
+    memset(&c.p[1], 0, sizeof c.p[1]);
+    DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 3u, radius, &lim), DH_ERR_ARG);
+    c.p[1] = keep;
+    /* limits too small for float */
+    lim.vmax = 1e-45f;
+    DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 3u, radius, &lim), DH_ERR_OVERFLOW);
+    lim.vmax = 0.5f;
+    DHT_TRUE(memcmp(seg, segz, sizeof seg) == 0 && memcmp(&sq, &sqz, sizeof sq) == 0);
+    /* evaluation: no sequence, NaN time */
+    T0 = c.p[0].A;
+    T = T0;
+    DHT_EQ_INT(dh_blend_seq_eval_f32(&sqz, 0.5f, &T), DH_ERR_ARG);
+    DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 3u, radius, &lim), DH_OK);
+    DHT_EQ_INT(dh_blend_seq_eval_f32(&sq, NAN, &T), DH_ERR_NAN);
+    DHT_TRUE(memcmp(&T, &T0, sizeof T) == 0);
+    /* a line without motion in the middle: both its corners at rest */
+    DHT_EQ_INT(dh_path_line_f32(&c.p[1], &c.p[0].B, &c.p[0].B), DH_OK);
+    DHT_EQ_INT(dh_path_line_f32(&c.p[2], &c.p[0].B, &keep.B), DH_OK);
+    DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 3u, radius, &lim), DH_OK);
+    DHT_TRUE(seg[1].T == 0.0f && seg[0].tb1 == 0.0f && seg[2].tb0 == 0.0f);
+    DHT_EQ_INT(dh_blend_seq_eval_f32(&sq, sq.T, &T), DH_OK);
+    DHT_TRUE(memcmp(&T, &keep.B, sizeof T) == 0);
+}
+
 static const dht_case cases[] = {
     DHT_CASE(random_corners),
     DHT_CASE(straight_and_zero_radius),
     DHT_CASE(blend_errors),
+    DHT_CASE(random_sequences),
+    DHT_CASE(seq_single_and_rest),
+    DHT_CASE(seq_errors),
 };
 DHT_MAIN(cases)
