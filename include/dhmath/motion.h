@@ -17,6 +17,7 @@
  *                    dh_queue_add_path_f32, dh_queue_target_f32,
  *                    dh_queue_advance_f32, dh_queue_stop_f32,
  *                    dh_queue_resume_f32
+ *   dh_interp_q.c    dh_slerp_q, dh_pose_interp_q, dh_pose_angle_q
  */
 /**
  * @file motion.h
@@ -39,8 +40,9 @@
  *   evaluated from its nearer end, so that p(0) = 0 and p(T) = d exactly.
  *
  * Pointers must not be NULL (checked with DH_ASSERT). On a non-OK status
- * every output is left untouched. All functions are float only (no double,
- * no libm), reentrant, use no heap and less than 256 bytes of stack.
+ * every output is left untouched. The float functions use float only (no
+ * double, no libm); the fixed ones (section "Fixed point") integers only.
+ * All are reentrant, use no heap and less than 256 bytes of stack.
  * Methods: docs/design.md ("Motion").
  */
 #ifndef DHMATH_MOTION_H
@@ -906,6 +908,67 @@ dh_status dh_blend_plan_f32(dh_blend_f32 *bl, const dh_path_f32 *p1, const dh_pa
  *         untouched on error.
  */
 dh_status dh_blend_eval_f32(const dh_blend_f32 *bl, float t, dh_mat4_f32 *T);
+
+/* ======================================================================
+ * Fixed point (integer only: no float, no libm, no 64-bit division)
+ *
+ * Formats: quaternions and rotations Q2.30 (dh_quat_q, dh_frame_q), path
+ * parameters s Q2.30 in [0, 0x40000000] (0 .. 1), angles Q16.16 degrees,
+ * positions dh_qpos (DH_QPOS_FRAC fraction bits, the user's length unit).
+ * Pointers must not be NULL (DH_ASSERT); on a non-OK status every output
+ * is left untouched.
+ * ==================================================================== */
+
+/**
+ * @brief Fixed twin of dh_slerp_f32: out = a (a* b)^s along the SHORTEST
+ *        great arc (b replaced by -b when a . b < 0), through the degree
+ *        trig (dh_atan2_q, dh_sincos_q), integer only.
+ * @param a, b quaternions, any int32 components (INT32_MIN included), not
+ *        all zero: each is normalised first (exact shifts to a common
+ *        scale, an integer square root).
+ * @param s path parameter, Q2.30 in [0, 0x40000000].
+ * @param out unit quaternion (Q2.30): s == 0 gives a normalised and
+ *        s == 0x40000000 gives +-b normalised (the sign of the shorter
+ *        arc), both exactly as normalised here. At a . b == 0 (180
+ *        degrees) b is taken as given.
+ * @return DH_OK; DH_ERR_ZERO_AXIS for a or b all zero; DH_ERR_ARG for s
+ *         outside [0, 0x40000000]. out may alias a or b.
+ * Components within 4e-7 of the exact slerp of a / |a| and b / |b|
+ * (dh_atan2_q's 1 LSB of Q16.16 degrees and the rounding of s h dominate).
+ */
+dh_status dh_slerp_q(const dh_quat_q *a, const dh_quat_q *b, dh_q30 s, dh_quat_q *out);
+
+/**
+ * @brief Fixed twin of dh_pose_interp_f32: T = the pose at s between the
+ *        fixed frames A and B: position p_A + s (p_B - p_A) rounded once
+ *        (from p_B for s > 1/2), rotation dh_slerp_q of the unit
+ *        quaternions of R_A and R_B (dh_frame_to_quat_q), as a rotation
+ *        by dh_quat_to_frame_q.
+ * @param A, B frames with orthonormal rotations (dh_frame_ortho_error_q
+ *        <= DH_ROT_TOL_Q, det > 0); positions any int32.
+ * @param s path parameter, Q2.30 in [0, 0x40000000]; s == 0 gives T == A
+ *        and s == 0x40000000 gives T == B bit for bit.
+ * @param T output frame; its position lies between p_A and p_B
+ *        component by component (no overflow for any positions).
+ * @return DH_OK; DH_ERR_NOT_RIGID if A or B is not a rotation as above;
+ *         DH_ERR_ARG for s outside [0, 0x40000000]. T may alias A or B.
+ * Position within 0.5 LSB of the exact value; rotation entries within
+ * 1.5e-6 of the exact interpolation of the rotations of A and B.
+ */
+dh_status dh_pose_interp_q(const dh_frame_q *A, const dh_frame_q *B, dh_q30 s, dh_frame_q *T);
+
+/**
+ * @brief Fixed twin of dh_pose_angle_f32: deg = the angle in [0, 180]
+ *        degrees of R_A^T R_B: atan2(|vee(M - M^T)|, tr M - 1) of
+ *        M = R_A^T R_B from exact 64-bit dot products, each term rounded
+ *        once to Q3.29, accurate at 0 and 180 degrees alike.
+ * @param A, B frames with orthonormal rotations (as dh_pose_interp_q).
+ * @param deg output, Q16.16 degrees in [0, 180 * 65536].
+ * @return DH_OK; DH_ERR_NOT_RIGID if A or B is not a rotation (deg untouched).
+ * Within 2e-5 degrees of the angle between the exact rotations that A and
+ * B round (dh_atan2_q's 1 LSB, 1.5e-5 degrees, dominates).
+ */
+dh_status dh_pose_angle_q(const dh_frame_q *A, const dh_frame_q *B, dh_q16 *deg);
 
 #ifdef __cplusplus
 }

@@ -37,4 +37,23 @@ dh_status dh_motion_bound_f32_(float *sl, float num, float den);
  * the quotient (dh_profile.c); the jerk bound of an arc (dh_path.c) */
 float dh_motion_root_f32_(float n, float m, int cube);
 
+/* ---- fixed point (dh_interp_q.c) ---- */
+
+/* v = q normalised to a unit quaternion in Q2.30 (w, x, y, z); 0 when q is
+ * all zero (v then holds q's components). */
+int dh_motion_quat_q_(const dh_quat_q *q, int32_t *v);
+
+/* qb (4 components) replaced by -qb when qa . qb < 0: the shorter arc;
+ * unit inputs (no INT32_MIN to negate). */
+void dh_motion_shorter_q_(const int32_t *qa, int32_t *qb);
+
+/* The slerp of the unit Q2.30 quaternions qa, qb (qa . qb >= 0) at s in
+ * [0, 2^30] into out (4 components, may alias qa or qb); s == 0 and
+ * s == 2^30 (and no rotation between them) copy the nearer end. */
+void dh_motion_slerp_q_(const int32_t *qa, const int32_t *qb, dh_q30 s, int32_t *out);
+
+/* pa + round(s (pb - pa) / 2^30) for s in [0, 2^30], from pb for
+ * s > 2^29: between pa and pb, exact at both ends, cannot overflow. */
+int32_t dh_motion_lerp_q_(int32_t pa, int32_t pb, dh_q30 s);
+
 #endif /* DHMATH_SRC_MOTION_IMPL_H */
