@@ -70,78 +70,107 @@ static DH_NOINLINE int interpq_unit(int32_t *v, unsigned len)
 }
 
 /* o = a b (Hamilton), or a* b when conj_a; each component a four-term
- * exact sum rounded once (unit inputs: |o_i| <= 2^30 + 2). */
-static DH_NOINLINE void interpq_mul(const int32_t *a, const int32_t *b, int conj_a, int32_t *o)
+ * exact sum rounded once (unit inputs: |o_i| <= 2^30 + 2). o may alias a
+ * (read first), not b. */
+static DH_NOINLINE void interpq_mul(const dh_quat_q *a, const dh_quat_q *b, int conj_a, dh_quat_q *o)
 {
     const int32_t sg = conj_a ? -1 : 1;
-    const int32_t w = a[0], x = sg * a[1], y = sg * a[2], z = sg * a[3];
-    int64_t t[4];
-    unsigned k;
-    t[0] = dh_q_mul64(w, b[0]) - dh_q_mul64(x, b[1]) - dh_q_mul64(y, b[2]) - dh_q_mul64(z, b[3]);
-    t[1] = dh_q_mul64(w, b[1]) + dh_q_mul64(x, b[0]) + dh_q_mul64(y, b[3]) - dh_q_mul64(z, b[2]);
-    t[2] = dh_q_mul64(w, b[2]) - dh_q_mul64(x, b[3]) + dh_q_mul64(y, b[0]) + dh_q_mul64(z, b[1]);
-    t[3] = dh_q_mul64(w, b[3]) + dh_q_mul64(x, b[2]) - dh_q_mul64(y, b[1]) + dh_q_mul64(z, b[0]);
-    for (k = 0; k < 4u; k++) o[k] = (int32_t)dh_q_rshr(t[k], 30u);
+    const int32_t w = a->w, x = sg * a->x, y = sg * a->y, z = sg * a->z;
+    o->w = (int32_t)dh_q_rshr(dh_q_mul64(w, b->w) - dh_q_mul64(x, b->x) - dh_q_mul64(y, b->y) - dh_q_mul64(z, b->z), 30u);
+    o->x = (int32_t)dh_q_rshr(dh_q_mul64(w, b->x) + dh_q_mul64(x, b->w) + dh_q_mul64(y, b->z) - dh_q_mul64(z, b->y), 30u);
+    o->y = (int32_t)dh_q_rshr(dh_q_mul64(w, b->y) - dh_q_mul64(x, b->z) + dh_q_mul64(y, b->w) + dh_q_mul64(z, b->x), 30u);
+    o->z = (int32_t)dh_q_rshr(dh_q_mul64(w, b->z) + dh_q_mul64(x, b->y) - dh_q_mul64(y, b->x) + dh_q_mul64(z, b->w), 30u);
 }
 
-/* dh_motion_slerp_q_ (motion_impl.h) */
-DH_NOINLINE void dh_motion_slerp_q_(const int32_t *qa, const int32_t *qb, dh_q30 s, int32_t *out)
+/* q normalised in place (interpq_unit on its components); 0 when all zero */
+static DH_NOINLINE int interpq_unit_quat(dh_quat_q *q)
 {
-    int32_t r[4], sn, cs;
-    uint32_t n;
-    dh_q16 h = 0;
-    unsigned k;
-    const int back = s > (DH_Q30_ONE / 2);
-    const int32_t *e = back ? qb : qa;
-    interpq_mul(qa, qb, 1, r);
-    n = dh_q_isqrt62((uint64_t)dh_q_mul64(r[1], r[1]) + (uint64_t)dh_q_mul64(r[2], r[2]) +
-                     (uint64_t)dh_q_mul64(r[3], r[3]));
-    (void)dh_atan2_q((int32_t)n, r[0], &h);   /* n == r[0] == 0 is no unit r: h stays 0 */
-    if (s <= 0 || s >= DH_Q30_ONE || !interpq_unit(&r[1], 3u)) {
-        for (k = 0; k < 4u; k++) out[k] = e[k];
-        return;
-    }
-    h = (dh_q16)dh_q_rshr(dh_q_mul64(back ? DH_Q30_ONE - s : s, h), 30u);
-    dh_sincos_q(h, &sn, &cs);
-    if (back) sn = -sn;
-    r[0] = cs;
-    for (k = 1; k < 4u; k++) r[k] = (int32_t)dh_q_rshr(dh_q_mul64(r[k], sn), 30u);
-    interpq_mul(e, r, 0, out);
-    (void)interpq_unit(out, 4u);
-}
-
-/* dh_motion_quat_q_ (motion_impl.h) */
-DH_NOINLINE int dh_motion_quat_q_(const dh_quat_q *q, int32_t *v)
-{
+    int32_t v[4];
+    int ok;
     v[0] = q->w;
     v[1] = q->x;
     v[2] = q->y;
     v[3] = q->z;
-    return interpq_unit(v, 4u);
+    ok = interpq_unit(v, 4u);
+    q->w = v[0];
+    q->x = v[1];
+    q->y = v[2];
+    q->z = v[3];
+    return ok;
+}
+
+/* The angle f h, Q16.16 degrees, of the rotor (cos f h, sin f h k) of
+ * r = a* b = (cos h, sin h k): f = s, or 1 - s when back; -1 when r has
+ * no vector part. */
+static DH_NOINLINE dh_q16 interpq_angle(const dh_quat_q *r, dh_q30 s, int back)
+{
+    const uint32_t n = dh_q_isqrt62((uint64_t)dh_q_mul64(r->x, r->x) + (uint64_t)dh_q_mul64(r->y, r->y) +
+                                    (uint64_t)dh_q_mul64(r->z, r->z));
+    dh_q16 h = 0;
+    if (r->x == 0 && r->y == 0 && r->z == 0) return -1;
+    (void)dh_atan2_q((int32_t)n, r->w, &h);   /* n >= 1 here */
+    return (dh_q16)dh_q_rshr(dh_q_mul64(back ? DH_Q30_ONE - s : s, h), 30u);
+}
+
+/* r = (cs, sn k), k the unit vector of r's vector part (not zero) */
+static DH_NOINLINE void interpq_rotor(dh_quat_q *r, int32_t sn, int32_t cs)
+{
+    int32_t v[3];
+    unsigned k;
+    v[0] = r->x;
+    v[1] = r->y;
+    v[2] = r->z;
+    (void)interpq_unit(v, 3u);
+    for (k = 0; k < 3u; k++) v[k] = (int32_t)dh_q_rshr(dh_q_mul64(v[k], sn), 30u);
+    r->w = cs;
+    r->x = v[0];
+    r->y = v[1];
+    r->z = v[2];
+}
+
+/* dh_motion_slerp_q_ (motion_impl.h) */
+DH_NOINLINE void dh_motion_slerp_q_(const dh_quat_q *qa, const dh_quat_q *qb, dh_q30 s, dh_quat_q *out)
+{
+    dh_quat_q r;
+    int32_t sn, cs;
+    dh_q16 h;
+    const int back = s > (DH_Q30_ONE / 2);
+    const dh_quat_q *e = back ? qb : qa;
+    interpq_mul(qa, qb, 1, &r);
+    h = interpq_angle(&r, s, back);
+    if (s <= 0 || s >= DH_Q30_ONE || h < 0) {
+        *out = *e;
+        return;
+    }
+    dh_sincos_q(h, &sn, &cs);
+    interpq_rotor(&r, back ? -sn : sn, cs);
+    interpq_mul(e, &r, 0, out);
+    (void)interpq_unit_quat(out);
 }
 
 /* dh_motion_shorter_q_ (motion_impl.h) */
-DH_NOINLINE void dh_motion_shorter_q_(const int32_t *qa, int32_t *qb)
+DH_NOINLINE void dh_motion_shorter_q_(const dh_quat_q *qa, dh_quat_q *qb)
 {
-    unsigned k;
-    int64_t d = 0;
-    for (k = 0; k < 4u; k++) d += dh_q_mul64(qa[k], qb[k]);
-    if (d < 0)
-        for (k = 0; k < 4u; k++) qb[k] = -qb[k];
+    const int64_t d = dh_q_mul64(qa->w, qb->w) + dh_q_mul64(qa->x, qb->x) + dh_q_mul64(qa->y, qb->y) +
+                      dh_q_mul64(qa->z, qb->z);
+    if (d < 0) {
+        qb->w = -qb->w;
+        qb->x = -qb->x;
+        qb->y = -qb->y;
+        qb->z = -qb->z;
+    }
 }
 
 dh_status dh_slerp_q(const dh_quat_q *a, const dh_quat_q *b, dh_q30 s, dh_quat_q *out)
 {
-    int32_t qa[4], qb[4];
+    dh_quat_q qa, qb;
     DH_ASSERT(a != NULL && b != NULL && out != NULL);
-    if (!dh_motion_quat_q_(a, qa) || !dh_motion_quat_q_(b, qb)) return DH_ERR_ZERO_AXIS;
+    qa = *a;
+    qb = *b;
+    if (!interpq_unit_quat(&qa) || !interpq_unit_quat(&qb)) return DH_ERR_ZERO_AXIS;
     if (s < 0 || s > DH_Q30_ONE) return DH_ERR_ARG;
-    dh_motion_shorter_q_(qa, qb);
-    dh_motion_slerp_q_(qa, qb, s, qa);
-    out->w = qa[0];
-    out->x = qa[1];
-    out->y = qa[2];
-    out->z = qa[3];
+    dh_motion_shorter_q_(&qa, &qb);
+    dh_motion_slerp_q_(&qa, &qb, s, out);
     return DH_OK;
 }
 
@@ -160,8 +189,8 @@ DH_NOINLINE int32_t dh_motion_lerp_q_(int32_t pa, int32_t pb, dh_q30 s)
 
 dh_status dh_pose_interp_q(const dh_frame_q *A, const dh_frame_q *B, dh_q30 s, dh_frame_q *T)
 {
-    dh_quat_q q;
-    int32_t qa[4], qb[4], p[3];
+    dh_quat_q qa, qb;
+    int32_t p[3];
     unsigned i;
     dh_status st;
     DH_ASSERT(A != NULL && B != NULL && T != NULL);
@@ -173,17 +202,13 @@ dh_status dh_pose_interp_q(const dh_frame_q *A, const dh_frame_q *B, dh_q30 s, d
     }
     for (i = 0; i < 3u; i++) p[i] = dh_motion_lerp_q_(A->p[i], B->p[i], s);
     /* checked frames: the conversions cannot fail */
-    (void)dh_frame_to_quat_q(A, &q);
-    (void)dh_motion_quat_q_(&q, qa);
-    (void)dh_frame_to_quat_q(B, &q);
-    (void)dh_motion_quat_q_(&q, qb);
-    dh_motion_shorter_q_(qa, qb);
-    dh_motion_slerp_q_(qa, qb, s, qa);
-    q.w = qa[0];
-    q.x = qa[1];
-    q.y = qa[2];
-    q.z = qa[3];
-    st = dh_quat_to_frame_q(&q, T);   /* unit q: cannot fail; writes p = 0 */
+    (void)dh_frame_to_quat_q(A, &qa);
+    (void)dh_frame_to_quat_q(B, &qb);
+    (void)interpq_unit_quat(&qa);
+    (void)interpq_unit_quat(&qb);
+    dh_motion_shorter_q_(&qa, &qb);
+    dh_motion_slerp_q_(&qa, &qb, s, &qa);
+    st = dh_quat_to_frame_q(&qa, T);   /* unit qa: cannot fail; writes p = 0 */
     for (i = 0; i < 3u; i++) T->p[i] = p[i];
     return st;
 }

@@ -39,18 +39,14 @@ float dh_motion_root_f32_(float n, float m, int cube);
 
 /* ---- fixed point (dh_interp_q.c) ---- */
 
-/* v = q normalised to a unit quaternion in Q2.30 (w, x, y, z); 0 when q is
- * all zero (v then holds q's components). */
-int dh_motion_quat_q_(const dh_quat_q *q, int32_t *v);
-
-/* qb (4 components) replaced by -qb when qa . qb < 0: the shorter arc;
- * unit inputs (no INT32_MIN to negate). */
-void dh_motion_shorter_q_(const int32_t *qa, int32_t *qb);
+/* qb replaced by -qb when qa . qb < 0: the shorter arc; unit inputs (no
+ * INT32_MIN to negate). */
+void dh_motion_shorter_q_(const dh_quat_q *qa, dh_quat_q *qb);
 
 /* The slerp of the unit Q2.30 quaternions qa, qb (qa . qb >= 0) at s in
- * [0, 2^30] into out (4 components, may alias qa or qb); s == 0 and
- * s == 2^30 (and no rotation between them) copy the nearer end. */
-void dh_motion_slerp_q_(const int32_t *qa, const int32_t *qb, dh_q30 s, int32_t *out);
+ * [0, 2^30] into out (may alias qa or qb); s == 0 and s == 2^30 (and no
+ * rotation between them) copy the nearer end. */
+void dh_motion_slerp_q_(const dh_quat_q *qa, const dh_quat_q *qb, dh_q30 s, dh_quat_q *out);
 
 /* pa + round(s (pb - pa) / 2^30) for s in [0, 2^30], from pb for
  * s > 2^29: between pa and pb, exact at both ends, cannot overflow. */
