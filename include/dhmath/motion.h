@@ -18,6 +18,9 @@
  *                    dh_queue_advance_f32, dh_queue_stop_f32,
  *                    dh_queue_resume_f32
  *   dh_interp_q.c    dh_slerp_q, dh_pose_interp_q, dh_pose_angle_q
+ *   dh_profile_q.c   dh_profile_trap_q, dh_profile_scurve_q,
+ *                    dh_profile_quintic_q, dh_profile_stretch_q,
+ *                    dh_profile_eval_q
  */
 /**
  * @file motion.h
@@ -969,6 +972,100 @@ dh_status dh_pose_interp_q(const dh_frame_q *A, const dh_frame_q *B, dh_q30 s, d
  * B round (dh_atan2_q's 1 LSB, 1.5e-5 degrees, dominates).
  */
 dh_status dh_pose_angle_q(const dh_frame_q *A, const dh_frame_q *B, dh_q16 *deg);
+
+/**
+ * @brief A fixed-point rest-to-rest profile from 0 to d (the fixed twin of
+ *        dh_profile_f32), written by the dh_profile_*_q initialisers and
+ *        read by dh_profile_eval_q (read-only for the user).
+ * Units: positions in position LSB of any fixed format (Q16.16 degrees for
+ * joints, dh_qpos for lengths), time in whole microseconds (uint32, below
+ * 2^31: 35.8 minutes), rates in the same LSB per second, per second^2,
+ * per second^3 (int32: Q16.16 degrees give up to 32767 deg/s, deg/s^2,
+ * deg/s^3). The shape is stored as the ratios of its phase times to T, so
+ * stretching (dh_profile_stretch_q) only changes T and the peaks.
+ */
+typedef struct {
+    int32_t d;     /**< signed distance (LSB) */
+    uint32_t T;    /**< duration (us); 0 when d == 0 and nothing stretched it */
+    dh_q30 xj;     /**< tj / T, each jerk phase (0 for the trapezoid and the quintic) */
+    dh_q30 xa;     /**< ta / T, the acceleration phase with its jerk phases (0 for the quintic); cruise 1 - 2 xa */
+    int32_t v;     /**< peak |velocity| (LSB/s), >= 1 when d != 0 */
+    int32_t a;     /**< peak |acceleration| (LSB/s^2) */
+    int32_t j;     /**< peak |jerk| (LSB/s^3); 0 for the trapezoid */
+    uint32_t kind; /**< a dh_profile_kind value */
+} dh_profile_q;
+
+/**
+ * @brief Fixed twin of dh_profile_trap_f32: the time-optimal trapezoid for
+ *        |d| within vmax and amax, T = |d|/vmax + vmax/amax when
+ *        |d| >= vmax^2/amax, else 2 sqrt(|d|/amax), rounded UP to whole
+ *        microseconds (the profile stretched to it).
+ * @param p output profile (kind DH_PROFILE_TRAP, xj = 0, j = 0).
+ * @param d signed distance (LSB), any int32 (0 gives T = 0).
+ * @param vmax, amax limits (LSB/s, LSB/s^2), > 0.
+ * T >= the analytic minimum and below it plus 1 us + 2^-26 T; p->v <= vmax
+ * and p->a <= amax, and the motion of the held shape (its rounded ratios)
+ * within them up to 1e-8 relative (the ratios are rounded toward lower rates).
+ * @return DH_OK; DH_ERR_ARG for a limit <= 0; DH_ERR_OVERFLOW when T would
+ *         reach 2^31 us, or a phase is shorter than 2^-30 T. p untouched
+ *         on error.
+ */
+dh_status dh_profile_trap_q(dh_profile_q *p, int32_t d, int32_t vmax, int32_t amax);
+
+/**
+ * @brief Fixed twin of dh_profile_scurve_f32: the time-optimal seven-phase
+ *        (jerk-limited) profile for |d| within vmax, amax and jmax, the
+ *        duration rounded UP to whole microseconds as dh_profile_trap_q.
+ * @param p output profile (kind DH_PROFILE_SCURVE).
+ * @param d signed distance (LSB), any int32 (0 gives T = 0).
+ * @param vmax, amax, jmax limits (LSB/s, /s^2, /s^3), > 0.
+ * T >= the minimum of the float twin's closed forms and below it plus
+ * 1 us + 2^-26 T; peaks within the limits, and the motion of the held
+ * shape within them up to 1e-8 relative (as dh_profile_trap_q).
+ * @return DH_OK; DH_ERR_ARG for a limit <= 0; DH_ERR_OVERFLOW when T would
+ *         reach 2^31 us or a phase is shorter than 2^-30 T. p untouched
+ *         on error.
+ */
+dh_status dh_profile_scurve_q(dh_profile_q *p, int32_t d, int32_t vmax, int32_t amax, int32_t jmax);
+
+/**
+ * @brief Fixed twin of dh_profile_quintic_f32: d (10 x^3 - 15 x^4 + 6 x^5),
+ *        x = t / T, of the given duration; peaks 1.875 |d|/T,
+ *        5.7735 |d|/T^2, 60 |d|/T^3 (T in s), each rounded up.
+ * @param p output profile (kind DH_PROFILE_QUINTIC, xj = xa = 0).
+ * @param d signed distance (LSB), any int32.
+ * @param T duration (us), 1 .. 2^31 - 1.
+ * @return DH_OK; DH_ERR_ARG for T outside 1 .. 2^31 - 1; DH_ERR_OVERFLOW
+ *         when a peak does not fit int32. p untouched on error.
+ */
+dh_status dh_profile_quintic_q(dh_profile_q *p, int32_t d, uint32_t T);
+
+/**
+ * @brief Fixed twin of dh_profile_stretch_f32: p stretched to the longer
+ *        duration T by uniform time scaling (the same ratios, peaks
+ *        recomputed for T and never above the old ones).
+ * @param p profile from a dh_profile_*_q initialiser, modified in place.
+ * @param T new duration (us), p->T <= T < 2^31 (T == p->T changes nothing).
+ * @return DH_OK; DH_ERR_ARG for T < p->T or T >= 2^31; DH_ERR_OVERFLOW
+ *         when a new peak rounds to 0 (T too long for the LSB of the
+ *         rates). p untouched on error.
+ */
+dh_status dh_profile_stretch_q(dh_profile_q *p, uint32_t T);
+
+/**
+ * @brief Position, velocity and acceleration of p at time t (us), integer
+ *        only: t == 0 gives 0, 0, 0 and t >= p->T gives d, 0, 0 exactly;
+ *        for t > T/2 the mirror image of the first half is taken from d.
+ * @param p profile from a dh_profile_*_q function (or one with d == 0).
+ * @param t time (us), any uint32.
+ * @param pos, vel, acc outputs (LSB, LSB/s, LSB/s^2); |vel| <= p->v and
+ *        |acc| <= p->a always.
+ * Position within 4 + 2^-27 |d| LSB of the exact shape of p's ratios at t
+ * (the halves meet within that at T/2).
+ * @return DH_OK; DH_ERR_ARG when p (with d != 0) holds no profile: its T,
+ *         peaks, kind or ratios out of range (outputs untouched).
+ */
+dh_status dh_profile_eval_q(const dh_profile_q *p, uint32_t t, int32_t *pos, int32_t *vel, int32_t *acc);
 
 #ifdef __cplusplus
 }
