@@ -87,9 +87,20 @@ static profq_x profq_u(uint32_t v)
     return profq_make(v, 0);
 }
 
+/* a b exactly from four 16-bit partial products (no 64-bit multiply
+ * call on cores without one: a leaf on the planners' deepest chains) */
+static uint64_t profq_umul(uint32_t a, uint32_t b)
+{
+    const uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    const uint32_t ll = al * bl, lh = al * bh, hl = ah * bl;
+    const uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu);
+    const uint32_t hi = ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16);
+    return ((uint64_t)hi << 32) | ((mid << 16) | (ll & 0xFFFFu));
+}
+
 static DH_NOINLINE profq_x profq_mul(profq_x a, profq_x b)
 {
-    return profq_make((uint64_t)profq_m(a) * profq_m(b), profq_e(a) + profq_e(b));
+    return profq_make(profq_umul(profq_m(a), profq_m(b)), profq_e(a) + profq_e(b));
 }
 
 /* a / b, b != 0: floor(a.m 2^32 / b.m) (< 2^33): the integer bit, then
@@ -199,45 +210,44 @@ static uint32_t profq_peak(profq_x x, int32_t lim, int *ovf)
 
 /* num / (ts r 2^-30): a rate over a phase of the ratio r (Q2.30, > 0) of
  * the duration ts (seconds) */
-static profq_x profq_rate(profq_x num, profq_x ts, int32_t r)
+DH_INLINE profq_x profq_rate(profq_x num, profq_x ts, int32_t r)
 {
     return profq_div(num, profq_mul(ts, profq_make((uint32_t)r, -30)));
 }
 
-/* Writes the profile of distance d, duration r[0] = T (us, > 0), ratios
- * r[1] = xj, r[2] = xa (Q2.30):
- * its peaks from the ratios, each held to its limit lim[0..2] (the
- * rounding of the normalised format can put one an ulp above).
- * DH_ERR_OVERFLOW (p untouched) when a ratio is 0 where its phase exists
- * or a peak rounds to 0. */
-static DH_NOINLINE dh_status profq_finish(dh_profile_q *p, int32_t d, const profq_x *r, const int32_t *lim,
-                                          uint32_t kind)
+/* The peaks of the profile of distance D (> 0), duration r[0] = T (us,
+ * > 0) and ratios r[1] = xj, r[2] = xa (Q2.30) written over the limits
+ * lim[0..2] they are held to (the rounding of the normalised format can
+ * put one an ulp above); lim[2] is the jerk only for jerk != 0.
+ * DH_ERR_OVERFLOW (lim partly written) when a ratio is 0 where its phase
+ * exists or a peak rounds to 0. */
+static DH_NOINLINE dh_status profq_peaks(uint32_t D, const profq_x *r, int32_t *lim, int jerk)
 {
-    const uint32_t T = (uint32_t)r[0];
-    const dh_q30 xj = (dh_q30)r[1], xa = (dh_q30)r[2];
     int ovf = 0;
-    const profq_x ts = profq_div(profq_u(T), PROFQ_US);   /* T in seconds */
+    const dh_q30 xj = (dh_q30)r[1], xa = (dh_q30)r[2];
+    const profq_x ts = profq_div(profq_u((uint32_t)r[0]), PROFQ_US);   /* T in seconds */
     profq_x x;
-    uint32_t iv, ia, ij = 0u;
-    if (xa <= xj || (kind == (uint32_t)DH_PROFILE_SCURVE && xj <= 0)) return DH_ERR_OVERFLOW;
-    x = profq_rate(profq_u(profq_abs(d)), ts, DH_Q30_ONE - xa);   /* v = |d| / (T (1 - xa)) */
-    iv = profq_peak(x, lim[0], &ovf);
-    x = profq_rate(x, ts, xa - xj);                              /* a = v / (T (xa - xj)) */
-    ia = profq_peak(x, lim[1], &ovf);
-    if (kind == (uint32_t)DH_PROFILE_SCURVE) {
-        ij = profq_peak(profq_rate(x, ts, xj), lim[2], &ovf);    /* j = a / (T xj) */
-        if (ij == 0u) ovf = 1;
-    }
-    if (ovf || iv == 0u || ia == 0u) return DH_ERR_OVERFLOW;
+    if (xa <= xj || (jerk && xj <= 0)) return DH_ERR_OVERFLOW;
+    x = profq_rate(profq_u(D), ts, DH_Q30_ONE - xa);    /* v = |d| / (T (1 - xa)) */
+    lim[0] = (int32_t)profq_peak(x, lim[0], &ovf);
+    x = profq_rate(x, ts, xa - xj);                     /* a = v / (T (xa - xj)) */
+    lim[1] = (int32_t)profq_peak(x, lim[1], &ovf);
+    lim[2] = jerk ? (int32_t)profq_peak(profq_rate(x, ts, xj), lim[2], &ovf) : 0;   /* j = a / (T xj) */
+    return (ovf || lim[0] == 0 || lim[1] == 0 || (jerk && lim[2] == 0)) ? DH_ERR_OVERFLOW : DH_OK;
+}
+
+/* p = the profile of distance d, r (T, xj, xa as profq_peaks) and the
+ * peaks pk */
+static void profq_write(dh_profile_q *p, int32_t d, const profq_x *r, const int32_t *pk, uint32_t kind)
+{
     p->d = d;
-    p->T = T;
-    p->xj = xj;
-    p->xa = xa;
-    p->v = (int32_t)iv;
-    p->a = (int32_t)ia;
-    p->j = (int32_t)ij;
+    p->T = (uint32_t)r[0];
+    p->xj = (dh_q30)r[1];
+    p->xa = (dh_q30)r[2];
+    p->v = pk[0];
+    p->a = pk[1];
+    p->j = pk[2];
     p->kind = kind;
-    return DH_OK;
 }
 
 /* p = no motion (d == 0): duration 0, ratios and peaks 0 */
@@ -350,7 +360,9 @@ static DH_NOINLINE dh_status profq_init(dh_profile_q *p, int32_t d, int32_t vmax
     }
     cruise = profq_plan(t, profq_abs(d), lim, jmax != 0);
     st = profq_times(t, cruise, kind);
-    return (st == DH_OK) ? profq_finish(p, d, t, lim, kind) : st;
+    if (st == DH_OK) st = profq_peaks(profq_abs(d), t, lim, jmax != 0);
+    if (st == DH_OK) profq_write(p, d, t, lim, kind);
+    return st;
 }
 
 dh_status dh_profile_trap_q(dh_profile_q *p, int32_t d, int32_t vmax, int32_t amax)
@@ -399,6 +411,7 @@ dh_status dh_profile_stretch_q(dh_profile_q *p, uint32_t T)
 {
     profq_x r[3];
     int32_t lim[3];
+    dh_status st;
     DH_ASSERT(p != NULL);
     if (T < p->T || T >= 0x80000000u) return DH_ERR_ARG;
     if (T == p->T) return DH_OK;
@@ -414,7 +427,9 @@ dh_status dh_profile_stretch_q(dh_profile_q *p, uint32_t T)
     r[0] = T;
     r[1] = (uint32_t)p->xj;
     r[2] = (uint32_t)p->xa;
-    return profq_finish(p, p->d, r, lim, p->kind);
+    st = profq_peaks(profq_abs(p->d), r, lim, p->kind == (uint32_t)DH_PROFILE_SCURVE);
+    if (st == DH_OK) profq_write(p, p->d, r, lim, p->kind);
+    return st;
 }
 
 /* ---- evaluation ---------------------------------------------------------- */
