@@ -21,6 +21,7 @@
  *   dh_profile_q.c   dh_profile_trap_q, dh_profile_scurve_q,
  *                    dh_profile_quintic_q, dh_profile_stretch_q,
  *                    dh_profile_eval_q
+ *   dh_joint_move_q.c dh_joint_move_q, dh_joint_move_eval_q
  */
 /**
  * @file motion.h
@@ -1066,6 +1067,44 @@ dh_status dh_profile_stretch_q(dh_profile_q *p, uint32_t T);
  *         peaks, kind or ratios out of range (outputs untouched).
  */
 dh_status dh_profile_eval_q(const dh_profile_q *p, uint32_t t, int32_t *pos, int32_t *vel, int32_t *acc);
+
+/**
+ * @brief Fixed twin of dh_joint_move_f32: n joints from q0 to q1, every
+ *        joint at rest at the same time T (whole microseconds), each
+ *        within its own limits, T as short as the slowest joint allows:
+ *        each joint's dh_profile_scurve_q (dh_profile_trap_q when jmax is
+ *        NULL), then every profile stretched to the longest duration.
+ * @param prof output: n profiles of q1[i] - q0[i], all with prof[i].T == T.
+ * @param n number of joints, >= 1.
+ * @param q0, q1 start and end positions (n each; Q16.16 degrees, or
+ *        dh_qpos for prismatic joints: any fixed format, the LSB of d).
+ * @param vmax, amax, jmax per-joint limits (n each, > 0, in LSB per
+ *        second^k as dh_profile_q); jmax may be NULL (trapezoids).
+ * T is the longest of the joints' rounded-up optimal durations (within
+ * 1 us + 2^-26 T of the slowest joint's minimum).
+ * @return DH_OK; DH_ERR_ARG for n == 0 or a limit <= 0; DH_ERR_OVERFLOW
+ *         when q1[i] - q0[i] does not fit int32, or a profile or its
+ *         stretch overflows (as dh_profile_trap_q, _scurve_q, _stretch_q).
+ *         On error every prof[i] is all zero: no move, duration 0, so
+ *         evaluating it keeps the joints at q0.
+ */
+dh_status dh_joint_move_q(dh_profile_q *prof, uint32_t n, const int32_t *q0, const int32_t *q1,
+                          const int32_t *vmax, const int32_t *amax, const int32_t *jmax);
+
+/**
+ * @brief Fixed twin of dh_joint_move_eval_f32: joint positions,
+ *        velocities and accelerations of a joint move at time t (us):
+ *        q = q0 + p_i(t) for t <= T/2, q1 - (d_i - p_i(t)) after, so t == 0
+ *        gives q0 and t >= T gives q1 exactly; a joint whose profile has
+ *        d_i == 0 stays at q0 (the no move of a failed call).
+ * @param prof, n, q0, q1 the move of dh_joint_move_q and its endpoints.
+ * @param t time (us), any uint32.
+ * @param q, qd, qdd outputs (n each; LSB, LSB/s, LSB/s^2).
+ * @return DH_OK; DH_ERR_ARG for n == 0 or a profile that holds none (as
+ *         dh_profile_eval_q). Outputs untouched on error.
+ */
+dh_status dh_joint_move_eval_q(const dh_profile_q *prof, uint32_t n, const int32_t *q0, const int32_t *q1,
+                               uint32_t t, int32_t *q, int32_t *qd, int32_t *qdd);
 
 #ifdef __cplusplus
 }

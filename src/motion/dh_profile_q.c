@@ -32,6 +32,7 @@
  */
 #include "dhmath/motion.h"
 #include "../internal/dh_qmath.h"
+#include "motion_impl.h"
 
 /* ---- normalised integer format: m 2^e, m in [2^31, 2^32) or 0 ------------ */
 
@@ -341,40 +342,59 @@ static DH_NOINLINE int profq_plan(profq_x *t, uint32_t D, const int32_t *lim, in
     return 0;
 }
 
-/* the initialisers' common body: checks, d == 0, plan, ratios, peaks;
- * jmax == 0 plans the trapezoid */
-static DH_NOINLINE dh_status profq_init(dh_profile_q *p, int32_t d, int32_t vmax, int32_t amax, int32_t jmax)
+/* dh_motion_profile_q_ (motion_impl.h): the initialisers' common body,
+ * in place: checks, d == 0, plan, ratios, peaks */
+DH_NOINLINE dh_status dh_motion_profile_q_(dh_profile_q *p)
 {
     profq_x t[3];
     int32_t lim[3];
-    const uint32_t kind = (jmax != 0) ? (uint32_t)DH_PROFILE_SCURVE : (uint32_t)DH_PROFILE_TRAP;
+    const int32_t d = p->d;
+    const int jerk = p->j != 0;
+    const uint32_t kind = jerk ? (uint32_t)DH_PROFILE_SCURVE : (uint32_t)DH_PROFILE_TRAP;
     int cruise;
     dh_status st;
-    lim[0] = vmax;
-    lim[1] = amax;
-    lim[2] = (jmax != 0) ? jmax : 1;
+    lim[0] = p->v;
+    lim[1] = p->a;
+    lim[2] = jerk ? p->j : 1;
     if (profq_bad(lim, 3u)) return DH_ERR_ARG;
     if (d == 0) {
         profq_zero(p, kind);
         return DH_OK;
     }
-    cruise = profq_plan(t, profq_abs(d), lim, jmax != 0);
+    cruise = profq_plan(t, profq_abs(d), lim, jerk);
     st = profq_times(t, cruise, kind);
-    if (st == DH_OK) st = profq_peaks(profq_abs(d), t, lim, jmax != 0);
+    if (st == DH_OK) st = profq_peaks(profq_abs(d), t, lim, jerk);
     if (st == DH_OK) profq_write(p, d, t, lim, kind);
     return st;
 }
 
 dh_status dh_profile_trap_q(dh_profile_q *p, int32_t d, int32_t vmax, int32_t amax)
 {
+    dh_profile_q w;
+    dh_status st;
     DH_ASSERT(p != NULL);
-    return profq_init(p, d, vmax, amax, 0);
+    w.d = d;
+    w.v = vmax;
+    w.a = amax;
+    w.j = 0;
+    st = dh_motion_profile_q_(&w);
+    if (st == DH_OK) *p = w;
+    return st;
 }
 
 dh_status dh_profile_scurve_q(dh_profile_q *p, int32_t d, int32_t vmax, int32_t amax, int32_t jmax)
 {
+    dh_profile_q w;
+    dh_status st;
     DH_ASSERT(p != NULL);
-    return (jmax > 0) ? profq_init(p, d, vmax, amax, jmax) : DH_ERR_ARG;
+    if (jmax <= 0) return DH_ERR_ARG;
+    w.d = d;
+    w.v = vmax;
+    w.a = amax;
+    w.j = jmax;
+    st = dh_motion_profile_q_(&w);
+    if (st == DH_OK) *p = w;
+    return st;
 }
 
 /* the quintic's peaks for d and T (us, > 0) into p, rounded up (so they

@@ -52,4 +52,13 @@ void dh_motion_slerp_q_(const dh_quat_q *qa, const dh_quat_q *qb, dh_q30 s, dh_q
  * s > 2^29: between pa and pb, exact at both ends, cannot overflow. */
 int32_t dh_motion_lerp_q_(int32_t pa, int32_t pb, dh_q30 s);
 
+/* ---- fixed point (dh_profile_q.c) ---- */
+
+/* In place: p->d, p->v = vmax, p->a = amax, p->j = jmax (0: the
+ * trapezoid) replaced by the time-optimal profile of d within them
+ * (dh_profile_trap_q, dh_profile_scurve_q), with their statuses; p holds
+ * no profile on error. The initialisers (through a copy) and the joint
+ * move (dh_joint_move_q.c, in its output) call it. */
+dh_status dh_motion_profile_q_(dh_profile_q *p);
+
 #endif /* DHMATH_SRC_MOTION_IMPL_H */

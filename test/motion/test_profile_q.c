@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "dht.h"
+#include "support_ref.h"
 #include "dhmath/motion.h"
 
 /* The duration quantum of the contracts: T within [Tmin, Tmin + 1 us +
@@ -184,6 +185,9 @@ static void run_plans(int jerk)
         DHT_TRUE_MSG(p.T >= Tmin && p.T <= Tmin + 1.0 + pow(2.0, -26) * Tmin, "T %lu us vs minimum %.6f us",
                      (unsigned long)p.T, Tmin);
         if (p.T - Tmin > over) over = p.T - Tmin;
+        /* the planner's case split (ref_plan) against the least duration of
+         * the feasible regimes (support_ref.c) */
+        DHT_NEAR(Tmin, 1e6 * (jerk ? dhr_scurve_tmin(d, V, A, J) : dhr_trap_tmin(d, V, A)), 1e-9 * Tmin);
         DHT_TRUE(p.v <= V && p.a <= A && p.j <= J && p.d == d);
         DHT_EQ_INT(p.kind, jerk ? DH_PROFILE_SCURVE : DH_PROFILE_TRAP);
         check_profile(&p, &r, V, A, jerk ? (double)J : 0.0, worst);
