@@ -178,13 +178,16 @@ dh_status dh_slerp_q(const dh_quat_q *a, const dh_quat_q *b, dh_q30 s, dh_quat_q
 DH_NOINLINE int32_t dh_motion_lerp_q_(int32_t pa, int32_t pb, dh_q30 s)
 {
     const int64_t d = (int64_t)pb - pa;
-    const int32_t hd = (int32_t)(d >> 1), ld = (int32_t)(d & 1);
+    const int neg = d < 0;
+    const uint64_t ud = neg ? 0u - (uint64_t)d : (uint64_t)d;   /* < 2^32 */
+    const uint32_t hd = (uint32_t)(ud >> 1), ld = (uint32_t)(ud & 1u);
     const int back = s > (DH_Q30_ONE / 2);
     const int32_t f = back ? DH_Q30_ONE - s : s;
-    /* f d = 2 f hd + f ld exactly; |f d| < 2^62 */
-    const int64_t x = 2 * dh_q_mul64(f, hd) + ((ld != 0) ? (int64_t)f : 0);
+    /* f |d| = 2 f hd + f ld exactly (hd < 2^31); below 2^62 */
+    const int64_t x = 2 * dh_q_mul64(f, (int32_t)hd) + ((ld != 0u) ? (int64_t)f : 0);
     const int64_t r = dh_q_rshr(x, 30u);
-    return back ? (int32_t)((int64_t)pb - r) : (int32_t)((int64_t)pa + r);
+    const int64_t m = (neg != 0) ? -r : r;   /* s (pb - pa) or (1 - s) (pb - pa), rounded in magnitude */
+    return back ? (int32_t)((int64_t)pb - m) : (int32_t)((int64_t)pa + m);
 }
 
 dh_status dh_pose_interp_q(const dh_frame_q *A, const dh_frame_q *B, dh_q30 s, dh_frame_q *T)
@@ -240,7 +243,7 @@ dh_status dh_pose_angle_q(const dh_frame_q *A, const dh_frame_q *B, dh_q16 *deg)
     v[1] = interpq_q29(interpq_dot(A, B, 0u, 2u) - interpq_dot(A, B, 2u, 0u));
     v[2] = interpq_q29(interpq_dot(A, B, 1u, 0u) - interpq_dot(A, B, 0u, 1u));
     c = interpq_q29(interpq_dot(A, B, 0u, 0u) + interpq_dot(A, B, 1u, 1u) + interpq_dot(A, B, 2u, 2u) -
-                    ((int64_t)1 << 60));
+                    (int64_t)1152921504606846976);   /* 1 in Q4.60 */
     n = dh_q_isqrt62((uint64_t)dh_q_mul64(v[0], v[0]) + (uint64_t)dh_q_mul64(v[1], v[1]) +
                      (uint64_t)dh_q_mul64(v[2], v[2]));
     /* n == c == 0 is not a rotation (|vee|^2 + (tr - 1)^2 = 4): d stays 0 */

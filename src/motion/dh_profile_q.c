@@ -48,7 +48,15 @@ static uint32_t profq_m(profq_x a)
 static int32_t profq_e(profq_x a)
 {
     const uint32_t w = (uint32_t)a;
-    return (w >= 0x80000000u) ? -(int32_t)(0xFFFFFFFFu - w) - 1 : (int32_t)w;
+    const uint32_t u = w - 0x80000000u;
+    int32_t e = (int32_t)u;   /* w - 2^31, in range for w >= 2^31 */
+    if (w < 0x80000000u) {
+        e = (int32_t)w;
+    } else {
+        e -= INT32_MAX;
+        e -= 1;
+    }
+    return e;
 }
 
 static profq_x profq_pack(uint32_t m, int32_t e)
@@ -66,21 +74,24 @@ static profq_x profq_ldexp(profq_x a, int32_t k)
  * planners' deepest chains) */
 DH_INLINE profq_x profq_make(uint64_t v, int32_t e)
 {
+    uint64_t x = v;
     uint32_t m;
+    int32_t k;
     unsigned n;
-    if (v == 0u) return 0u;
-    n = 64u - dh_q_bitlen64(v);
-    v <<= n;
-    m = (uint32_t)(v >> 32);
-    e = e - (int32_t)n + 32;
-    if ((v & 0x80000000u) != 0u) {
-        m++;
-        if (m == 0u) {
+    if (x == 0u) return 0u;
+    n = 64u - dh_q_bitlen64(x);
+    x <<= n;
+    m = (uint32_t)(x >> 32);
+    k = e - (int32_t)n + 32;
+    if ((x & 0x80000000u) != 0u) {   /* round to nearest */
+        if (m == 0xFFFFFFFFu) {
             m = 0x80000000u;
-            e++;
+            k++;
+        } else {
+            m++;
         }
     }
-    return profq_pack(m, e);
+    return profq_pack(m, k);
 }
 
 static profq_x profq_u(uint32_t v)
@@ -110,9 +121,11 @@ static DH_NOINLINE profq_x profq_mul(profq_x a, profq_x b)
 static DH_NOINLINE profq_x profq_div(profq_x a, profq_x b)
 {
     const uint32_t bm = profq_m(b);
-    uint32_t r = profq_m(a), q = 0u, c, i;
-    const uint32_t top = (r >= bm) ? 1u : 0u;
-    if (top != 0u) r -= bm;
+    uint32_t r = profq_m(a), q = 0u, c, i, top = 0u;
+    if (r >= bm) {
+        top = 1u;
+        r -= bm;
+    }
     for (i = 0; i < 32u; i++) {
         c = r >> 31;
         r <<= 1;
@@ -128,17 +141,18 @@ static DH_NOINLINE profq_x profq_div(profq_x a, profq_x b)
 /* a + b, both >= 0 */
 static DH_NOINLINE profq_x profq_add(profq_x a, profq_x b)
 {
-    uint32_t d;
+    profq_x x = a, y = b;
+    int32_t de;
     if (profq_m(b) == 0u) return a;
     if (profq_m(a) == 0u) return b;
     if (profq_e(a) < profq_e(b)) {
-        const profq_x t = a;
-        a = b;
-        b = t;
+        x = b;
+        y = a;
     }
-    d = (uint32_t)(profq_e(a) - profq_e(b));
-    return profq_make(((uint64_t)profq_m(a) << 31) + ((d < 63u) ? (((uint64_t)profq_m(b) << 31) >> d) : 0u),
-                      profq_e(a) - 31);
+    de = profq_e(x) - profq_e(y);
+    return profq_make(((uint64_t)profq_m(x) << 31) +
+                          (((uint32_t)de < 63u) ? (((uint64_t)profq_m(y) << 31) >> (uint32_t)de) : 0u),
+                      profq_e(x) - 31);
 }
 
 /* 1 when a < b (both >= 0, normalised) */
@@ -153,7 +167,9 @@ static DH_NOINLINE profq_x profq_sqrt(profq_x a)
 {
     /* m 2^e = (m 2^k) 2^(e - k), k (29 or 30) of e's parity, m 2^k < 2^62 */
     const int32_t e = profq_e(a);
-    const unsigned k = ((e & 1) != 0) ? 29u : 30u;
+    const uint32_t ue = (uint32_t)e;
+    unsigned k = 30u;
+    if ((ue & 1u) != 0u) k = 29u;
     if (profq_m(a) == 0u) return a;
     return profq_make(dh_q_isqrt62((uint64_t)profq_m(a) << k), (e - (int32_t)k) / 2);
 }
@@ -370,13 +386,12 @@ DH_NOINLINE dh_status dh_motion_profile_q_(dh_profile_q *p)
 
 dh_status dh_profile_trap_q(dh_profile_q *p, int32_t d, int32_t vmax, int32_t amax)
 {
-    dh_profile_q w;
+    dh_profile_q w = { 0, 0u, 0, 0, 0, 0, 0, 0u };
     dh_status st;
     DH_ASSERT(p != NULL);
     w.d = d;
     w.v = vmax;
     w.a = amax;
-    w.j = 0;
     st = dh_motion_profile_q_(&w);
     if (st == DH_OK) *p = w;
     return st;
@@ -384,7 +399,7 @@ dh_status dh_profile_trap_q(dh_profile_q *p, int32_t d, int32_t vmax, int32_t am
 
 dh_status dh_profile_scurve_q(dh_profile_q *p, int32_t d, int32_t vmax, int32_t amax, int32_t jmax)
 {
-    dh_profile_q w;
+    dh_profile_q w = { 0, 0u, 0, 0, 0, 0, 0, 0u };
     dh_status st;
     DH_ASSERT(p != NULL);
     if (jmax <= 0) return DH_ERR_ARG;
@@ -473,7 +488,8 @@ static DH_NOINLINE int32_t profq_mulr(int32_t a, int32_t b, unsigned sh)
 static DH_NOINLINE void profq_shape(const dh_profile_q *p, int32_t x, int32_t *f)
 {
     const int32_t xj = p->xj, xa = p->xa, ua = xa - xj;
-    const int32_t h = (int32_t)dh_q_udiv(0x20000000u, (uint32_t)(DH_Q30_ONE - xa), 30u); /* v^ / 2 */
+    const int32_t ca = DH_Q30_ONE - xa;
+    const int32_t h = (int32_t)dh_q_udiv(0x20000000u, (uint32_t)ca, 30u); /* v^ / 2 */
     int32_t g, k, m, u, S;
     if (x < xj) {                          /* jerk +: S = x^3 / (6 xj ua) */
         g = profq_ratio(x, ua);
@@ -530,12 +546,14 @@ static int profq_valid(const dh_profile_q *p)
     if (p->kind == (uint32_t)DH_PROFILE_QUINTIC) return 1;
     if (p->kind != (uint32_t)DH_PROFILE_TRAP && p->kind != (uint32_t)DH_PROFILE_SCURVE) return 0;
     if (p->xj < 0 || p->xj > 0x10000000 || p->xa < 2 * p->xj || p->xa <= p->xj || p->xa > 0x20000000) return 0;
-    return (p->kind == (uint32_t)DH_PROFILE_SCURVE) ? (p->xj > 0 && p->j > 0) : (p->xj == 0);
+    if (p->kind == (uint32_t)DH_PROFILE_SCURVE) return (p->xj > 0) && (p->j > 0);
+    return p->xj == 0;
 }
 
 dh_status dh_profile_eval_q(const dh_profile_q *p, uint32_t t, int32_t *pos, int32_t *vel, int32_t *acc)
 {
     int32_t f[3], x, pm, vm, am;
+    uint64_t pu;
     uint32_t tt;
     int back;
     DH_ASSERT(p != NULL && pos != NULL && vel != NULL && acc != NULL);
@@ -554,7 +572,8 @@ dh_status dh_profile_eval_q(const dh_profile_q *p, uint32_t t, int32_t *pos, int
     } else {
         profq_shape(p, x, f);
     }
-    pm = (int32_t)dh_q_rshr((int64_t)((uint64_t)profq_abs(p->d) * (uint32_t)f[0]), 30u);
+    pu = (uint64_t)profq_abs(p->d) * (uint32_t)f[0];   /* below 2^61 */
+    pm = (int32_t)dh_q_rshr((int64_t)pu, 30u);
     vm = profq_mulr(p->v, f[1], 30u);
     am = profq_mulr(p->a, f[2], 30u);
     if (vm > p->v) vm = p->v;
