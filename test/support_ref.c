@@ -424,3 +424,30 @@ void dhr_sym_eig(double *A, int m, double *ev)
     }
     for (p = 0; p < m; p++) ev[p] = A[p * m + p];
 }
+
+double dhr_trap_tmin(double d, double v, double a)
+{
+    d = fabs(d);
+    return (d >= v * v / a) ? d / v + v / a : 2.0 * sqrt(d / a);
+}
+
+/* the seven-phase minimum: the least duration among the feasible regimes
+ * (test_profile.c derives the same four) */
+double dhr_scurve_tmin(double d, double V, double A, double J)
+{
+    double best = HUGE_VAL, tj, ta, sl = 1e-12;
+    d = fabs(d);
+    if (d == 0.0) return 0.0;
+    tj = A / J;
+    ta = tj + V / A;
+    if (V * J >= A * A * (1 - sl) && d >= V * ta * (1 - sl) && d / V + ta < best) best = d / V + ta;
+    tj = sqrt(V / J);
+    ta = 2 * tj;
+    if (J * tj <= A * (1 + sl) && d >= V * ta * (1 - sl) && d / V + ta < best) best = d / V + ta;
+    tj = A / J;
+    ta = 0.5 * tj + sqrt(0.25 * tj * tj + d / A);
+    if (ta >= 2 * tj * (1 - sl) && A * (ta - tj) <= V * (1 + sl) && 2 * ta < best) best = 2 * ta;
+    tj = cbrt(d / (2 * J));
+    if (J * tj <= A * (1 + sl) && J * tj * tj <= V * (1 + sl) && 4 * tj < best) best = 4 * tj;
+    return best;
+}

@@ -99,4 +99,11 @@ double dhr_mat3_max_diff(const dh_mat3_f32 *R, const dhr_mat3 *D);
 double dhr_ulp_f32(double x);
 void dhr_sincos_deg(double d, double *s, double *c);
 
+/** The minimum rest-to-rest duration of the distance |d| within V, A
+ *  (trapezoid: |d|/V + V/A when |d| >= V^2/A, else 2 sqrt(|d|/A)). */
+double dhr_trap_tmin(double d, double V, double A);
+/** The same within V, A, J (seven phases): the least duration among the
+ *  four regimes that are feasible for |d| (not a planner's case split). */
+double dhr_scurve_tmin(double d, double V, double A, double J);
+
 #endif /* SUPPORT_REF_H */

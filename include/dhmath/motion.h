@@ -18,6 +18,11 @@
  *                    dh_queue_add_path_f32, dh_queue_target_f32,
  *                    dh_queue_advance_f32, dh_queue_stop_f32,
  *                    dh_queue_resume_f32
+ *   dh_interp_q.c    dh_slerp_q, dh_pose_interp_q, dh_pose_angle_q
+ *   dh_profile_q.c   dh_profile_trap_q, dh_profile_scurve_q,
+ *                    dh_profile_quintic_q, dh_profile_stretch_q,
+ *                    dh_profile_eval_q
+ *   dh_joint_move_q.c dh_joint_move_q, dh_joint_move_eval_q
  */
 /**
  * @file motion.h
@@ -40,8 +45,9 @@
  *   evaluated from its nearer end, so that p(0) = 0 and p(T) = d exactly.
  *
  * Pointers must not be NULL (checked with DH_ASSERT). On a non-OK status
- * every output is left untouched. All functions are float only (no double,
- * no libm), reentrant, use no heap and less than 256 bytes of stack.
+ * every output is left untouched. The float functions use float only (no
+ * double, no libm); the fixed ones (section "Fixed point") integers only.
+ * All are reentrant, use no heap and less than 256 bytes of stack.
  * Methods: docs/design.md ("Motion").
  */
 #ifndef DHMATH_MOTION_H
@@ -1005,6 +1011,199 @@ dh_status dh_blend_seq_plan_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, con
  *         error.
  */
 dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32 *T);
+
+/* ======================================================================
+ * Fixed point (integer only: no float, no libm, no 64-bit division)
+ *
+ * Formats: quaternions and rotations Q2.30 (dh_quat_q, dh_frame_q), path
+ * parameters s Q2.30 in [0, 0x40000000] (0 .. 1), angles Q16.16 degrees,
+ * positions dh_qpos (DH_QPOS_FRAC fraction bits, the user's length unit).
+ * Pointers must not be NULL (DH_ASSERT); on a non-OK status every output
+ * is left untouched.
+ * ==================================================================== */
+
+/**
+ * @brief Fixed twin of dh_slerp_f32: out = a (a* b)^s along the SHORTEST
+ *        great arc (b replaced by -b when a . b < 0), through the degree
+ *        trig (dh_atan2_q, dh_sincos_q), integer only.
+ * @param a, b quaternions, any int32 components (INT32_MIN included), not
+ *        all zero: each is normalised first (exact shifts to a common
+ *        scale, an integer square root).
+ * @param s path parameter, Q2.30 in [0, 0x40000000].
+ * @param out unit quaternion (Q2.30): s == 0 gives a normalised and
+ *        s == 0x40000000 gives +-b normalised (the sign of the shorter
+ *        arc), both exactly as normalised here. At a . b == 0 (180
+ *        degrees) b is taken as given.
+ * @return DH_OK; DH_ERR_ZERO_AXIS for a or b all zero; DH_ERR_ARG for s
+ *         outside [0, 0x40000000]. out may alias a or b.
+ * Components within 4e-7 of the exact slerp of a / |a| and b / |b|
+ * (dh_atan2_q's 1 LSB of Q16.16 degrees and the rounding of s h dominate).
+ */
+dh_status dh_slerp_q(const dh_quat_q *a, const dh_quat_q *b, dh_q30 s, dh_quat_q *out);
+
+/**
+ * @brief Fixed twin of dh_pose_interp_f32: T = the pose at s between the
+ *        fixed frames A and B: position p_A + s (p_B - p_A) rounded once
+ *        (from p_B for s > 1/2), rotation dh_slerp_q of the unit
+ *        quaternions of R_A and R_B (dh_frame_to_quat_q), as a rotation
+ *        by dh_quat_to_frame_q.
+ * @param A, B frames with orthonormal rotations (dh_frame_ortho_error_q
+ *        <= DH_ROT_TOL_Q, det > 0); positions any int32.
+ * @param s path parameter, Q2.30 in [0, 0x40000000]; s == 0 gives T == A
+ *        and s == 0x40000000 gives T == B bit for bit.
+ * @param T output frame; its position lies between p_A and p_B
+ *        component by component (no overflow for any positions).
+ * @return DH_OK; DH_ERR_NOT_RIGID if A or B is not a rotation as above;
+ *         DH_ERR_ARG for s outside [0, 0x40000000]. T may alias A or B.
+ * Position within 0.5 LSB of the exact value; rotation entries within
+ * 1.5e-6 of the exact interpolation of the rotations of A and B.
+ */
+dh_status dh_pose_interp_q(const dh_frame_q *A, const dh_frame_q *B, dh_q30 s, dh_frame_q *T);
+
+/**
+ * @brief Fixed twin of dh_pose_angle_f32: deg = the angle in [0, 180]
+ *        degrees of R_A^T R_B: atan2(|vee(M - M^T)|, tr M - 1) of
+ *        M = R_A^T R_B from exact 64-bit dot products, each term rounded
+ *        once to Q3.29, accurate at 0 and 180 degrees alike.
+ * @param A, B frames with orthonormal rotations (as dh_pose_interp_q).
+ * @param deg output, Q16.16 degrees in [0, 180 * 65536].
+ * @return DH_OK; DH_ERR_NOT_RIGID if A or B is not a rotation (deg untouched).
+ * Within 2e-5 degrees of the angle between the exact rotations that A and
+ * B round (dh_atan2_q's 1 LSB, 1.5e-5 degrees, dominates).
+ */
+dh_status dh_pose_angle_q(const dh_frame_q *A, const dh_frame_q *B, dh_q16 *deg);
+
+/**
+ * @brief A fixed-point rest-to-rest profile from 0 to d (the fixed twin of
+ *        dh_profile_f32), written by the dh_profile_*_q initialisers and
+ *        read by dh_profile_eval_q (read-only for the user).
+ * Units: positions in position LSB of any fixed format (Q16.16 degrees for
+ * joints, dh_qpos for lengths), time in whole microseconds (uint32, below
+ * 2^31: 35.8 minutes), rates in the same LSB per second, per second^2,
+ * per second^3 (int32: Q16.16 degrees give up to 32767 deg/s, deg/s^2,
+ * deg/s^3). The shape is stored as the ratios of its phase times to T, so
+ * stretching (dh_profile_stretch_q) only changes T and the peaks.
+ */
+typedef struct {
+    int32_t d;     /**< signed distance (LSB) */
+    uint32_t T;    /**< duration (us); 0 when d == 0 and nothing stretched it */
+    dh_q30 xj;     /**< tj / T, each jerk phase (0 for the trapezoid and the quintic) */
+    dh_q30 xa;     /**< ta / T, the acceleration phase with its jerk phases (0 for the quintic); cruise 1 - 2 xa */
+    int32_t v;     /**< peak |velocity| (LSB/s), >= 1 when d != 0 */
+    int32_t a;     /**< peak |acceleration| (LSB/s^2) */
+    int32_t j;     /**< peak |jerk| (LSB/s^3); 0 for the trapezoid */
+    uint32_t kind; /**< a dh_profile_kind value */
+} dh_profile_q;
+
+/**
+ * @brief Fixed twin of dh_profile_trap_f32: the time-optimal trapezoid for
+ *        |d| within vmax and amax, T = |d|/vmax + vmax/amax when
+ *        |d| >= vmax^2/amax, else 2 sqrt(|d|/amax), rounded UP to whole
+ *        microseconds (the profile stretched to it).
+ * @param p output profile (kind DH_PROFILE_TRAP, xj = 0, j = 0).
+ * @param d signed distance (LSB), any int32 (0 gives T = 0).
+ * @param vmax, amax limits (LSB/s, LSB/s^2), > 0.
+ * T >= the analytic minimum and below it plus 1 us + 2^-26 T; p->v <= vmax
+ * and p->a <= amax, and the motion of the held shape (its rounded ratios)
+ * within them up to 1e-8 relative (the ratios are rounded toward lower rates).
+ * @return DH_OK; DH_ERR_ARG for a limit <= 0; DH_ERR_OVERFLOW when T would
+ *         reach 2^31 us, or a phase is shorter than 2^-30 T. p untouched
+ *         on error.
+ */
+dh_status dh_profile_trap_q(dh_profile_q *p, int32_t d, int32_t vmax, int32_t amax);
+
+/**
+ * @brief Fixed twin of dh_profile_scurve_f32: the time-optimal seven-phase
+ *        (jerk-limited) profile for |d| within vmax, amax and jmax, the
+ *        duration rounded UP to whole microseconds as dh_profile_trap_q.
+ * @param p output profile (kind DH_PROFILE_SCURVE).
+ * @param d signed distance (LSB), any int32 (0 gives T = 0).
+ * @param vmax, amax, jmax limits (LSB/s, /s^2, /s^3), > 0.
+ * T >= the minimum of the float twin's closed forms and below it plus
+ * 1 us + 2^-26 T; peaks within the limits, and the motion of the held
+ * shape within them up to 1e-8 relative (as dh_profile_trap_q).
+ * @return DH_OK; DH_ERR_ARG for a limit <= 0; DH_ERR_OVERFLOW when T would
+ *         reach 2^31 us or a phase is shorter than 2^-30 T. p untouched
+ *         on error.
+ */
+dh_status dh_profile_scurve_q(dh_profile_q *p, int32_t d, int32_t vmax, int32_t amax, int32_t jmax);
+
+/**
+ * @brief Fixed twin of dh_profile_quintic_f32: d (10 x^3 - 15 x^4 + 6 x^5),
+ *        x = t / T, of the given duration; peaks 1.875 |d|/T,
+ *        5.7735 |d|/T^2, 60 |d|/T^3 (T in s), each rounded up.
+ * @param p output profile (kind DH_PROFILE_QUINTIC, xj = xa = 0).
+ * @param d signed distance (LSB), any int32.
+ * @param T duration (us), 1 .. 2^31 - 1.
+ * @return DH_OK; DH_ERR_ARG for T outside 1 .. 2^31 - 1; DH_ERR_OVERFLOW
+ *         when a peak does not fit int32. p untouched on error.
+ */
+dh_status dh_profile_quintic_q(dh_profile_q *p, int32_t d, uint32_t T);
+
+/**
+ * @brief Fixed twin of dh_profile_stretch_f32: p stretched to the longer
+ *        duration T by uniform time scaling (the same ratios, peaks
+ *        recomputed for T and never above the old ones).
+ * @param p profile from a dh_profile_*_q initialiser, modified in place.
+ * @param T new duration (us), p->T <= T < 2^31 (T == p->T changes nothing).
+ * @return DH_OK; DH_ERR_ARG for T < p->T or T >= 2^31; DH_ERR_OVERFLOW
+ *         when a new peak rounds to 0 (T too long for the LSB of the
+ *         rates). p untouched on error.
+ */
+dh_status dh_profile_stretch_q(dh_profile_q *p, uint32_t T);
+
+/**
+ * @brief Position, velocity and acceleration of p at time t (us), integer
+ *        only: t == 0 gives 0, 0, 0 and t >= p->T gives d, 0, 0 exactly;
+ *        for t > T/2 the mirror image of the first half is taken from d.
+ * @param p profile from a dh_profile_*_q function (or one with d == 0).
+ * @param t time (us), any uint32.
+ * @param pos, vel, acc outputs (LSB, LSB/s, LSB/s^2); |vel| <= p->v and
+ *        |acc| <= p->a always.
+ * Position within 4 + 2^-27 |d| LSB of the exact shape of p's ratios at t
+ * (the halves meet within that at T/2).
+ * @return DH_OK; DH_ERR_ARG when p (with d != 0) holds no profile: its T,
+ *         peaks, kind or ratios out of range (outputs untouched).
+ */
+dh_status dh_profile_eval_q(const dh_profile_q *p, uint32_t t, int32_t *pos, int32_t *vel, int32_t *acc);
+
+/**
+ * @brief Fixed twin of dh_joint_move_f32: n joints from q0 to q1, every
+ *        joint at rest at the same time T (whole microseconds), each
+ *        within its own limits, T as short as the slowest joint allows:
+ *        each joint's dh_profile_scurve_q (dh_profile_trap_q when jmax is
+ *        NULL), then every profile stretched to the longest duration.
+ * @param prof output: n profiles of q1[i] - q0[i], all with prof[i].T == T.
+ * @param n number of joints, >= 1.
+ * @param q0, q1 start and end positions (n each; Q16.16 degrees, or
+ *        dh_qpos for prismatic joints: any fixed format, the LSB of d).
+ * @param vmax, amax, jmax per-joint limits (n each, > 0, in LSB per
+ *        second^k as dh_profile_q); jmax may be NULL (trapezoids).
+ * T is the longest of the joints' rounded-up optimal durations (within
+ * 1 us + 2^-26 T of the slowest joint's minimum).
+ * @return DH_OK; DH_ERR_ARG for n == 0 or a limit <= 0; DH_ERR_OVERFLOW
+ *         when q1[i] - q0[i] does not fit int32, or a profile or its
+ *         stretch overflows (as dh_profile_trap_q, _scurve_q, _stretch_q).
+ *         On error every prof[i] is all zero: no move, duration 0, so
+ *         evaluating it keeps the joints at q0.
+ */
+dh_status dh_joint_move_q(dh_profile_q *prof, uint32_t n, const int32_t *q0, const int32_t *q1,
+                          const int32_t *vmax, const int32_t *amax, const int32_t *jmax);
+
+/**
+ * @brief Fixed twin of dh_joint_move_eval_f32: joint positions,
+ *        velocities and accelerations of a joint move at time t (us):
+ *        q = q0 + p_i(t) for t <= T/2, q1 - (d_i - p_i(t)) after, so t == 0
+ *        gives q0 and t >= T gives q1 exactly; a joint whose profile has
+ *        d_i == 0 stays at q0 (the no move of a failed call).
+ * @param prof, n, q0, q1 the move of dh_joint_move_q and its endpoints.
+ * @param t time (us), any uint32.
+ * @param q, qd, qdd outputs (n each; LSB, LSB/s, LSB/s^2).
+ * @return DH_OK; DH_ERR_ARG for n == 0 or a profile that holds none (as
+ *         dh_profile_eval_q). Outputs untouched on error.
+ */
+dh_status dh_joint_move_eval_q(const dh_profile_q *prof, uint32_t n, const int32_t *q0, const int32_t *q1,
+                               uint32_t t, int32_t *q, int32_t *qd, int32_t *qdd);
 
 #ifdef __cplusplus
 }

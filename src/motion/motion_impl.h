@@ -37,4 +37,28 @@ dh_status dh_motion_bound_f32_(float *sl, float num, float den);
  * the quotient (dh_profile.c); the jerk bound of an arc (dh_path.c) */
 float dh_motion_root_f32_(float n, float m, int cube);
 
+/* ---- fixed point (dh_interp_q.c) ---- */
+
+/* qb replaced by -qb when qa . qb < 0: the shorter arc; unit inputs (no
+ * INT32_MIN to negate). */
+void dh_motion_shorter_q_(const dh_quat_q *qa, dh_quat_q *qb);
+
+/* The slerp of the unit Q2.30 quaternions qa, qb (qa . qb >= 0) at s in
+ * [0, 2^30] into out (may alias qa or qb); s == 0 and s == 2^30 (and no
+ * rotation between them) copy the nearer end. */
+void dh_motion_slerp_q_(const dh_quat_q *qa, const dh_quat_q *qb, dh_q30 s, dh_quat_q *out);
+
+/* pa + round(s (pb - pa) / 2^30) for s in [0, 2^30], from pb for
+ * s > 2^29: between pa and pb, exact at both ends, cannot overflow. */
+int32_t dh_motion_lerp_q_(int32_t pa, int32_t pb, dh_q30 s);
+
+/* ---- fixed point (dh_profile_q.c) ---- */
+
+/* In place: p->d, p->v = vmax, p->a = amax, p->j = jmax (0: the
+ * trapezoid) replaced by the time-optimal profile of d within them
+ * (dh_profile_trap_q, dh_profile_scurve_q), with their statuses; p holds
+ * no profile on error. The initialisers (through a copy) and the joint
+ * move (dh_joint_move_q.c, in its output) call it. */
+dh_status dh_motion_profile_q_(dh_profile_q *p);
+
 #endif /* DHMATH_SRC_MOTION_IMPL_H */

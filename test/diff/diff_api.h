@@ -257,7 +257,17 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_manipulability_q, g_robot, 100000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_dls_step_q, g_robot, 100000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_track_init_q, g_robot, 100000, DIFF_OUT_FRAMES, C_BITS) \
-    X(dh_track_step_q, g_robot, 20000, DIFF_OUT_FRAMES, C_BITS)
+    X(dh_track_step_q, g_robot, 20000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_slerp_q, g_ints, 100000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_pose_interp_q, g_frames, 100000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_pose_angle_q, g_frames, 100000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_profile_trap_q, g_ints, 100000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_profile_scurve_q, g_ints, 100000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_profile_quintic_q, g_ints, 100000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_profile_stretch_q, g_ints, 100000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_profile_eval_q, g_ints, 100000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_joint_move_q, g_ints, 100000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_joint_move_eval_q, g_ints, 100000, DIFF_OUT_SMALL, C_BITS)
 
 /* enum of the table rows */
 #define DIFF_ENUM(name, gen, count, len, cmp) E_##name,

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "dht.h"
+#include "support_ref.h"
 #include "dhmath/motion.h"
 
 #define NJ 8
@@ -22,33 +23,6 @@
 #define REL_FD 2e-3
 
 static double rlog(double lo, double hi) { return pow(10.0, dht_rand_uniform(lo, hi)); }
-
-static double trap_tmin(double d, double v, double a)
-{
-    d = fabs(d);
-    return (d >= v * v / a) ? d / v + v / a : 2.0 * sqrt(d / a);
-}
-
-/* the seven-phase minimum: the least duration among the feasible regimes
- * (test_profile.c derives the same four) */
-static double scurve_tmin(double d, double V, double A, double J)
-{
-    double best = HUGE_VAL, tj, ta, sl = 1e-12;
-    d = fabs(d);
-    if (d == 0.0) return 0.0;
-    tj = A / J;
-    ta = tj + V / A;
-    if (V * J >= A * A * (1 - sl) && d >= V * ta * (1 - sl) && d / V + ta < best) best = d / V + ta;
-    tj = sqrt(V / J);
-    ta = 2 * tj;
-    if (J * tj <= A * (1 + sl) && d >= V * ta * (1 - sl) && d / V + ta < best) best = d / V + ta;
-    tj = A / J;
-    ta = 0.5 * tj + sqrt(0.25 * tj * tj + d / A);
-    if (ta >= 2 * tj * (1 - sl) && A * (ta - tj) <= V * (1 + sl) && 2 * ta < best) best = 2 * ta;
-    tj = cbrt(d / (2 * J));
-    if (J * tj <= A * (1 + sl) && J * tj * tj <= V * (1 + sl) && 4 * tj < best) best = 4 * tj;
-    return best;
-}
 
 static void moves(int jerk)
 {
@@ -68,8 +42,8 @@ static void moves(int jerk)
             vm[i] = (float)rlog(-1.0, 1.0);
             am[i] = (float)rlog(-1.0, 2.0);
             jm[i] = (float)rlog(0.0, 3.0);
-            ti = jerk ? scurve_tmin((double)q1[i] - q0[i], vm[i], am[i], jm[i])
-                      : trap_tmin((double)q1[i] - q0[i], vm[i], am[i]);
+            ti = jerk ? dhr_scurve_tmin((double)q1[i] - q0[i], vm[i], am[i], jm[i])
+                      : dhr_trap_tmin((double)q1[i] - q0[i], vm[i], am[i]);
             if (ti > Tref) Tref = ti;
         }
         DHT_EQ_INT(dh_joint_move_f32(prof, nj, q0, q1, vm, am, jerk ? jm : NULL), DH_OK);
