@@ -74,6 +74,11 @@ void dh_kin_rot_error_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_kin
     poseq_err_core(F_target, F, &s->D, &s->w, s->q);
 }
 
+int dh_kin_rot_ok_q_(const dh_frame_q *F)
+{
+    return dh_rot_ok_q_(F, DH_ROT_ERROR_TOL_Q);
+}
+
 dh_status dh_kin_rot_error_chk_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_frame_q *D, dh_dir3_q *w,
                                   int32_t *q)
 {

@@ -63,6 +63,9 @@ typedef struct {
     int32_t q[4];
 } dh_kin_rot_scratch_q;
 void dh_kin_rot_error_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_kin_rot_scratch_q *s);
+/* dh_rot_ok_q_ with DH_ROT_ERROR_TOL_Q: the checks of dh_rot_error_q on
+ * one frame (1 when they pass). */
+int dh_kin_rot_ok_q_(const dh_frame_q *F);
 /* dh_rot_error_q with its scratch D (dR) and q (4 words) in the caller's
  * memory (the tracker's): same checks, status and w. */
 dh_status dh_kin_rot_error_chk_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_frame_q *D, dh_dir3_q *w,
@@ -73,8 +76,11 @@ dh_status dh_kin_rot_error_chk_q_(const dh_frame_q *F_target, const dh_frame_q *
  * dh_kin_manip_q_ reads c->J and c->n (1..DH_MAX_JOINTS); dh_kin_dls_q_
  * reads c->J, c->n, c->dq_max and c->pris (dh_kin_pris_q_ of the robot)
  * after dh_dls_step_q's argument checks (the caller's). Same results and
- * statuses. */
-void dh_kin_manip_q_(dh_dls_work_q *c, int32_t *w, int32_t *sigma_min);
+ * statuses. With both w and sigma_min, save (DH_DLS_SAVE_Q words, or
+ * NULL) keeps the equilibrated Gram matrix for the second factorization,
+ * which is then not formed twice. */
+#define DH_DLS_SAVE_Q 21u
+void dh_kin_manip_q_(dh_dls_work_q *c, int32_t *w, int32_t *sigma_min, int32_t *save);
 dh_status dh_kin_dls_q_(dh_dls_work_q *c, const int32_t *e, int32_t lambda, int32_t *dq);
 /* bit i set when joint i of r is prismatic */
 uint32_t dh_kin_pris_q_(const dh_robot *r);

@@ -563,12 +563,14 @@ static DH_NOINLINE int trq_beyond(const dh_track_q *t)
     return s > (uint64_t)dh_q_mul64(t->reach, t->reach);
 }
 
+typedef char trq_gs_fits[(sizeof(((dh_track_q *)0)->gs) == DH_DLS_SAVE_Q * sizeof(int32_t)) ? 1 : -1];
+
 /* dh_manipulability_q of t->J */
 static DH_NOINLINE void trq_manip(dh_track_q *t, int32_t *w, int32_t *sigma_min)
 {
     t->work.J = t->J;
     t->work.n = (uint8_t)t->r->n;
-    dh_kin_manip_q_(&t->work, w, sigma_min);
+    dh_kin_manip_q_(&t->work, w, sigma_min, t->gs);
 }
 
 /* Away from singularities with a closed-form solution: straight for it
@@ -605,7 +607,7 @@ static DH_NOINLINE void trq_begin(dh_track_q *t, const dh_frame_q *target, int32
     t->unreach = 0;
     t->ns = 0u;
     t->ist = DH_ERR_UNAVAILABLE;
-    t->tst = dh_kin_rot_error_chk_q_(target, target, &t->rD, &t->rw, t->rq);
+    t->tst = dh_kin_rot_ok_q_(target) ? DH_OK : DH_ERR_NOT_RIGID;
 }
 
 /* q_out into t->q, t->v and q_out (the step clamped into the box) */
