@@ -67,17 +67,28 @@ static int64_t dlsq_shift(int64_t x, int s)
     return dh_q_rshr(x, (unsigned)(-s));
 }
 
-/* B_ki in Q(g): J_ki 2^s, rounded ties up (s < 0) or exact (s >= 0: the
- * formats keep it below 2^28), in 32 bits: floor(x 2^s) plus the bit
- * below the point is dlsq_shift's rounding, and 0 from 32 bits down. */
+/* x 2^s as dlsq_shift gives it for a result known to fit 32 bits (the
+ * formats keep B below 2^28), in 32 bits from 30 bits down to any shift
+ * up: rounded ties up (s < 0: floor plus the bit below the point) or
+ * exact. */
+DH_INLINE int32_t dlsq_cv(int32_t x, int s)
+{
+    if (s >= 0) return (int32_t)((uint32_t)x << (unsigned)s);
+    if (s < -30) return (int32_t)dlsq_shift(x, s);
+    return (x >> (unsigned)(-s)) + ((x >> (unsigned)(-s - 1)) & 1);
+}
+
+/* Format of J's entries in row k: dh_qpos for linear revolute ones, else
+ * Q2.30 (prismatic columns' linear rows, angular rows). */
+DH_INLINE int dlsq_from(const dlsq_ctx *c, uint32_t k, uint32_t i)
+{
+    return (k < 3u && ((c->pris >> i) & 1u) == 0u) ? DH_QPOS_FRAC : 30;
+}
+
+/* B_ki in Q(g). */
 static int32_t dlsq_b(const dlsq_ctx *c, uint32_t k, uint32_t i)
 {
-    const int32_t x = c->J[k * c->n + i];
-    const int from = (k < 3u && ((c->pris >> i) & 1u) == 0u) ? DH_QPOS_FRAC : 30;
-    const int s = c->g[k >= 3u] - from;
-    if (s >= 0) return (int32_t)((uint32_t)x << (unsigned)s);
-    if (s <= -32) return 0;
-    return (x >> (unsigned)(-s)) + ((x >> (unsigned)(-s - 1)) & 1);
+    return dlsq_cv(c->J[k * c->n + i], c->g[k >= 3u] - dlsq_from(c, k, i));
 }
 
 /* Format of Gram row a. */
@@ -91,7 +102,11 @@ static DH_NOINLINE int64_t dlsq_gram(const dlsq_ctx *c, uint32_t a, uint32_t b)
     if (c->cols) {
         for (t = 0; t < 6u; t++) s = dh_q_mla64(s, dlsq_b(c, t, a), dlsq_b(c, t, b));
     } else {
-        for (t = 0; t < c->n; t++) s = dh_q_mla64(s, dlsq_b(c, a, t), dlsq_b(c, b, t));
+        /* rows a and b of B, their formats' shifts set once */
+        const int32_t *const ra = &c->J[a * c->n], *const rb = &c->J[b * c->n];
+        const int ga = c->g[a >= 3u], gb = c->g[b >= 3u];
+        for (t = 0; t < c->n; t++)
+            s = dh_q_mla64(s, dlsq_cv(ra[t], ga - dlsq_from(c, a, t)), dlsq_cv(rb[t], gb - dlsq_from(c, b, t)));
     }
     return s;
 }

@@ -37,6 +37,10 @@ dh_status dh_dls_step_ws_f32_(const dh_robot *r, const float *J, const float *e,
 /* dh_pose_error_f32 with dR in the caller's d (9 floats, overlapping
  * nothing): the tracker keeps it in its workspace. Same contract. */
 dh_status dh_kin_pose_error_f32_(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float *e, float *d);
+/* The same for a target that has passed these checks already (finite,
+ * rotation within DH_ROT_ERROR_TOL, det > 0): T's checks alone, the same
+ * status and e. */
+dh_status dh_kin_pose_error_to_f32_(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float *e, float *d);
 
 /* a(dR) of dh_rot_error_f32 for dR row-major, d[3 row + col], into w[0..2]
  * (d and w do not overlap). */
@@ -67,9 +71,10 @@ void dh_kin_rot_error_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_kin
  * one frame (1 when they pass). */
 int dh_kin_rot_ok_q_(const dh_frame_q *F);
 /* dh_rot_error_q with its scratch D (dR) and q (4 words) in the caller's
- * memory (the tracker's): same checks, status and w. */
-dh_status dh_kin_rot_error_chk_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_frame_q *D, dh_dir3_q *w,
-                                  int32_t *q);
+ * memory (the tracker's), for a target F_target that has passed
+ * dh_kin_rot_ok_q_ already: F's check alone, the same status and w. */
+dh_status dh_kin_rot_error_to_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_frame_q *D, dh_dir3_q *w,
+                                 int32_t *q);
 
 /* The bodies of dh_manipulability_q and dh_dls_step_q (dh_dls_q.c) on
  * the state in c, for a caller that keeps c between calls (the tracker):

@@ -527,7 +527,8 @@ static DH_NOINLINE void track_end(dh_track_f32 *t, const dh_mat4_f32 *target, dh
     rep->sigma_min = 0.0f;
     if (dh_kin_jacobian_f32_(t->r, t->q, t->J, &t->T, t->ws) == DH_OK) {
         (void)dh_manipulability_ws_f32_(t->J, t->r->n, &rep->manip, &rep->sigma_min, t->ws);
-        if (tst == DH_OK && dh_kin_pose_error_f32_(target, &t->T, t->e, t->ws) == DH_OK) fk = 1;
+        /* the target passed its checks (tst): T's alone */
+        if (tst == DH_OK && dh_kin_pose_error_to_f32_(target, &t->T, t->e, t->ws) == DH_OK) fk = 1;
     }
     track_fill(t, fk, t->unreach, rep);
 }
