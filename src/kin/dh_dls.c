@@ -7,7 +7,7 @@
  * 6 x 6, or J^T J when n < 6), stored packed (lower triangle by rows, 21
  * floats, and 6 of scratch: on the stack of the public functions, in the
  * tracker's state for the _ws_ variants) and factored A = L L^T by
- * Cholesky. The work is split into small functions (A, the factor, one
+ * Cholesky. The work is split into small functions (one entry of A, one
  * column of L^-1 per call) so that no frame holds much beside the matrix.
  *
  * Manipulability (Yoshikawa 1985): w = sqrt(det A) = prod L_ii.
@@ -38,24 +38,40 @@
 /* u = 2^-24, the unit roundoff of float */
 #define DLS_U 5.9604644775390625e-8f
 
-/* A (packed lower triangle by rows: row i, column j <= i at i (i + 1) / 2
- * + j) = J J^T (jjt != 0, 6 x 6) or J^T J (n x n), each entry a sum over
- * k in increasing order */
+/* entry p of the packed lower triangle of J J^T (jjt != 0) or J^T J:
+ * row i, column j (j <= i) with p = i (i + 1) / 2 + j. One entry per call
+ * keeps the frames small on cores with few registers. */
+static DH_NOINLINE float dls_entry(const float *J, uint32_t n, int jjt, uint32_t p_in)
+{
+    uint32_t i = 0u, k, len, stride, p = p_in;
+    const float *a;
+    const float *b;
+    float s = 0.0f;
+    while (p > i) {
+        i++;
+        p -= i;
+    }
+    if (jjt != 0) {
+        a = &J[i * n];
+        b = &J[p * n];
+        len = n;
+        stride = 1u;
+    } else {
+        a = &J[i];
+        b = &J[p];
+        len = 6u;
+        stride = n;
+    }
+    for (k = 0u; k < len; k++) s += a[k * stride] * b[k * stride];
+    return s;
+}
+
+/* A (packed lower) = J J^T (jjt != 0, 6 x 6) or J^T J (n x n) */
 static DH_NOINLINE void dls_normal(const float *J, uint32_t n, int jjt, float *A)
 {
-    const uint32_t m = (jjt != 0) ? 6u : n, len = (jjt != 0) ? n : 6u;
-    const uint32_t stride = (jjt != 0) ? 1u : n, step = (jjt != 0) ? n : 1u;
-    uint32_t i, j, k, p = 0u;
-    for (i = 0u; i < m; i++) {
-        const float *const a = &J[i * step];
-        for (j = 0u; j <= i; j++) {
-            const float *const b = &J[j * step];
-            float s = 0.0f;
-            for (k = 0u; k < len; k++) s += a[k * stride] * b[k * stride];
-            A[p] = s;
-            p++;
-        }
-    }
+    const uint32_t m = (jjt != 0) ? 6u : n;
+    uint32_t p;
+    for (p = 0u; p < m * (m + 1u) / 2u; p++) A[p] = dls_entry(J, n, jjt, p);
 }
 
 /* trace (d = 0) or product (d = 1) of the diagonal of the packed A */

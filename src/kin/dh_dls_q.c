@@ -60,7 +60,7 @@ typedef char dlsq_work_fits[(sizeof(((dh_dls_work_q *)0)->L) == DLSQ_TRI * sizeo
 DH_INLINE uint32_t dlsq_tri(uint32_t i, uint32_t j) { return (i * (i + 1u)) / 2u + j; }
 
 /* x 2^s, rounded (s < 0) or exact (s >= 0, |x 2^s| known to fit). */
-static int64_t dlsq_shift(int64_t x, int s)
+static DH_NOINLINE int64_t dlsq_shift(int64_t x, int s)
 {
     if (s >= 0) return (int64_t)((uint64_t)x << (unsigned)s);
     if (s < -62) return 0;
@@ -68,13 +68,14 @@ static int64_t dlsq_shift(int64_t x, int s)
 }
 
 /* x 2^s as dlsq_shift gives it for a result known to fit 32 bits (the
- * formats keep B below 2^28), in 32 bits from 30 bits down to any shift
- * up: rounded ties up (s < 0: floor plus the bit below the point) or
- * exact. */
+ * formats keep B below 2^28), in 32 bits: rounded ties up (s < 0: floor
+ * plus the bit below the point; by 31 bits -1 exactly for x < -2^30, by
+ * more always 0) or exact. */
 DH_INLINE int32_t dlsq_cv(int32_t x, int s)
 {
     if (s >= 0) return (int32_t)((uint32_t)x << (unsigned)s);
-    if (s < -30) return (int32_t)dlsq_shift(x, s);
+    if (s < -31) return 0;
+    if (s == -31) return (x < -0x40000000) ? -1 : 0;
     return (x >> (unsigned)(-s)) + ((x >> (unsigned)(-s - 1)) & 1);
 }
 
@@ -94,19 +95,20 @@ static int32_t dlsq_b(const dlsq_ctx *c, uint32_t k, uint32_t i)
 /* Format of Gram row a. */
 static int dlsq_ga(const dlsq_ctx *c, uint32_t a) { return c->cols ? c->g[0] : c->g[a >= 3u]; }
 
-/* G_ab, exact. */
+/* G_ab, exact; with revolute columns only and G = B B^T, one shift per
+ * row of B. */
 static DH_NOINLINE int64_t dlsq_gram(const dlsq_ctx *c, uint32_t a, uint32_t b)
 {
     int64_t s = 0;
     uint32_t t;
     if (c->cols) {
         for (t = 0; t < 6u; t++) s = dh_q_mla64(s, dlsq_b(c, t, a), dlsq_b(c, t, b));
+    } else if (c->pris != 0u) {
+        for (t = 0; t < c->n; t++) s = dh_q_mla64(s, dlsq_b(c, a, t), dlsq_b(c, b, t));
     } else {
-        /* rows a and b of B, their formats' shifts set once */
-        const int32_t *const ra = &c->J[a * c->n], *const rb = &c->J[b * c->n];
-        const int ga = c->g[a >= 3u], gb = c->g[b >= 3u];
-        for (t = 0; t < c->n; t++)
-            s = dh_q_mla64(s, dlsq_cv(ra[t], ga - dlsq_from(c, a, t)), dlsq_cv(rb[t], gb - dlsq_from(c, b, t)));
+        const int32_t *const pa = &c->J[a * c->n], *const pb = &c->J[b * c->n];
+        const int sa = c->g[a >= 3u] - dlsq_from(c, a, 0u), sb = c->g[b >= 3u] - dlsq_from(c, b, 0u);
+        for (t = 0; t < c->n; t++) s = dh_q_mla64(s, dlsq_cv(pa[t], sa), dlsq_cv(pb[t], sb));
     }
     return s;
 }

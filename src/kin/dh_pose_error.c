@@ -117,8 +117,9 @@ dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh
     return DH_OK;
 }
 
-/* e from two checked frames, dR in d */
-static void pose_error_body(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float *e, float *d)
+/* e from two checked frames, dR in d (inlined: no frame of its own below
+ * the callers') */
+DH_INLINE void pose_error_body(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float *e, float *d)
 {
     uint32_t i;
     pose_delta(&T_target->m[0][0], &T->m[0][0], 4u, d);

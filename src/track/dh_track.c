@@ -199,6 +199,7 @@ static DH_NOINLINE int track_pick(dh_track_f32 *t, dh_status st, int *unreach)
             const float ti = dh_isfinite_f32(v) ? d / v : 0.0f;
             tm = (ti > tm) ? ti : tm;
             sm += d;
+            if (found && tm > bt) break;   /* slower than the best: out */
         }
         if (!found || tm < bt || (tm <= bt && sm < bs)) {
             best = k;
