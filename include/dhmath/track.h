@@ -196,6 +196,7 @@ typedef struct {
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];   /**< closed-form solutions */
     dh_frame_q T;                       /**< FK at q */
     dh_dls_work_q work;                 /**< scratch of the damped step */
+    int32_t gs[21];                     /**< scratch of the singularity measures: the equilibrated Gram matrix */
     dh_frame_q rD;                      /**< scratch of the rotation error: dR */
     dh_dir3_q rw;                       /**< the rotation error */
     int32_t rq[4];                      /**< scratch of the rotation error: its quaternion */

@@ -60,33 +60,55 @@ typedef char dlsq_work_fits[(sizeof(((dh_dls_work_q *)0)->L) == DLSQ_TRI * sizeo
 DH_INLINE uint32_t dlsq_tri(uint32_t i, uint32_t j) { return (i * (i + 1u)) / 2u + j; }
 
 /* x 2^s, rounded (s < 0) or exact (s >= 0, |x 2^s| known to fit). */
-static int64_t dlsq_shift(int64_t x, int s)
+static DH_NOINLINE int64_t dlsq_shift(int64_t x, int s)
 {
     if (s >= 0) return (int64_t)((uint64_t)x << (unsigned)s);
     if (s < -62) return 0;
     return dh_q_rshr(x, (unsigned)(-s));
 }
 
+/* x 2^s as dlsq_shift gives it for a result known to fit 32 bits (the
+ * formats keep B below 2^28), in 32 bits: rounded ties up (s < 0: floor
+ * plus the bit below the point; by 31 bits -1 exactly for x < -2^30, by
+ * more always 0) or exact. */
+DH_INLINE int32_t dlsq_cv(int32_t x, int s)
+{
+    if (s >= 0) return (int32_t)((uint32_t)x << (unsigned)s);
+    if (s < -31) return 0;
+    if (s == -31) return (x < -0x40000000) ? -1 : 0;
+    return (x >> (unsigned)(-s)) + ((x >> (unsigned)(-s - 1)) & 1);
+}
+
+/* Format of J's entries in row k: dh_qpos for linear revolute ones, else
+ * Q2.30 (prismatic columns' linear rows, angular rows). */
+DH_INLINE int dlsq_from(const dlsq_ctx *c, uint32_t k, uint32_t i)
+{
+    return (k < 3u && ((c->pris >> i) & 1u) == 0u) ? DH_QPOS_FRAC : 30;
+}
+
 /* B_ki in Q(g). */
 static int32_t dlsq_b(const dlsq_ctx *c, uint32_t k, uint32_t i)
 {
-    const int32_t x = c->J[k * c->n + i];
-    const int from = (k < 3u && ((c->pris >> i) & 1u) == 0u) ? DH_QPOS_FRAC : 30;
-    return (int32_t)dlsq_shift(x, c->g[k >= 3u] - from);
+    return dlsq_cv(c->J[k * c->n + i], c->g[k >= 3u] - dlsq_from(c, k, i));
 }
 
 /* Format of Gram row a. */
 static int dlsq_ga(const dlsq_ctx *c, uint32_t a) { return c->cols ? c->g[0] : c->g[a >= 3u]; }
 
-/* G_ab, exact. */
+/* G_ab, exact; with revolute columns only and G = B B^T, one shift per
+ * row of B. */
 static DH_NOINLINE int64_t dlsq_gram(const dlsq_ctx *c, uint32_t a, uint32_t b)
 {
     int64_t s = 0;
     uint32_t t;
     if (c->cols) {
         for (t = 0; t < 6u; t++) s = dh_q_mla64(s, dlsq_b(c, t, a), dlsq_b(c, t, b));
-    } else {
+    } else if (c->pris != 0u) {
         for (t = 0; t < c->n; t++) s = dh_q_mla64(s, dlsq_b(c, a, t), dlsq_b(c, b, t));
+    } else {
+        const int32_t *const pa = &c->J[a * c->n], *const pb = &c->J[b * c->n];
+        const int sa = c->g[a >= 3u] - dlsq_from(c, a, 0u), sb = c->g[b >= 3u] - dlsq_from(c, b, 0u);
+        for (t = 0; t < c->n; t++) s = dh_q_mla64(s, dlsq_cv(pa[t], sa), dlsq_cv(pb[t], sb));
     }
     return s;
 }
@@ -117,16 +139,17 @@ static DH_NOINLINE void dlsq_format(dlsq_ctx *c, int32_t lam)
 
 /* A' = D^-1 (G + lam^2 I) D^-1 - shift I into c->L and c->c (lam in
  * dh_qpos, below 2^28 in every row's format); a zero row of B gives a
- * unit row. */
-static DH_NOINLINE void dlsq_equil(dlsq_ctx *c, int32_t lam, int32_t shift)
+ * unit row (not shifted). Returns the zero rows, bit a for row a. */
+static DH_NOINLINE uint32_t dlsq_equil(dlsq_ctx *c, int32_t lam, int32_t shift)
 {
-    uint32_t a, b;
+    uint32_t a, b, zero = 0u;
     for (a = 0; a < c->m; a++) {
         const int32_t la = (int32_t)dlsq_shift(lam, dlsq_ga(c, a) - DH_QPOS_FRAC);
         const int64_t h = dlsq_gram(c, a, a) + dh_q_mul64(la, la);
         if (h == 0) {
             c->c[a] = 0;
             c->L[dlsq_tri(a, a)] = DH_Q_ONE30;
+            zero |= 1u << a;
         } else {
             const int ca = ((int)dh_q_bitlen64((uint64_t)h) - 29) >> 1;
             c->c[a] = (int16_t)ca;
@@ -135,6 +158,17 @@ static DH_NOINLINE void dlsq_equil(dlsq_ctx *c, int32_t lam, int32_t shift)
         for (b = 0; b < a; b++)
             c->L[dlsq_tri(a, b)] = (int32_t)dlsq_shift(dlsq_gram(c, a, b), -(c->c[a] + c->c[b]));
     }
+    return zero;
+}
+
+/* c->L = A' from save (dlsq_equil's, unshifted), less shift on the
+ * diagonal of the rows not in zero: what dlsq_equil(c, 0, shift) writes. */
+static DH_NOINLINE void dlsq_restore(dlsq_ctx *c, const int32_t *save, uint32_t zero, int32_t shift)
+{
+    uint32_t a, p;
+    for (p = 0; p < dlsq_tri(c->m, 0); p++) c->L[p] = save[p];
+    for (a = 0; a < c->m; a++)
+        if (((zero >> a) & 1u) == 0u) c->L[dlsq_tri(a, a)] -= shift;
 }
 
 /* 1 unless -2^lb < x < 2^lb (no 64-bit constant: shifts only). */
@@ -284,9 +318,9 @@ static DH_NOINLINE int32_t dlsq_sigma(dlsq_ctx *c)
     return (v < 0) ? 0 : (int32_t)v;
 }
 
-void dh_kin_manip_q_(dh_dls_work_q *c, int32_t *w, int32_t *sigma_min)
+void dh_kin_manip_q_(dh_dls_work_q *c, int32_t *w, int32_t *sigma_min, int32_t *save)
 {
-    uint32_t i;
+    uint32_t i, zero = 0u, p;
     const uint32_t n = c->n;
     const int32_t *const J = c->J;
     c->pris = 0u;
@@ -296,11 +330,16 @@ void dh_kin_manip_q_(dh_dls_work_q *c, int32_t *w, int32_t *sigma_min)
     c->m = (uint8_t)(c->cols ? n : 6u);
     dlsq_format(c, 0);
     if (w != NULL) {
-        dlsq_equil(c, 0, 0);
+        zero = dlsq_equil(c, 0, 0);
+        if (save != NULL)
+            for (p = 0; p < dlsq_tri(c->m, 0); p++) save[p] = c->L[p];
         *w = dlsq_chol(c, DLSQ_DSING_FB, 0) ? INT32_MIN : dlsq_logdet(c);
     }
     if (sigma_min != NULL) {
-        dlsq_equil(c, 0, DLSQ_DELTA30);
+        if (w != NULL && save != NULL)
+            dlsq_restore(c, save, zero, DLSQ_DELTA30);
+        else
+            (void)dlsq_equil(c, 0, DLSQ_DELTA30);
         *sigma_min = dlsq_chol(c, 0u, 0) ? 0 : dlsq_sigma(c);
     }
 }
@@ -312,7 +351,7 @@ dh_status dh_manipulability_q(const int32_t *J, uint32_t n, dh_dls_work_q *work,
     if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     work->J = J;
     work->n = (uint8_t)n;
-    dh_kin_manip_q_(work, w, sigma_min);
+    dh_kin_manip_q_(work, w, sigma_min, NULL);
     return DH_OK;
 }
 
@@ -530,7 +569,7 @@ dh_status dh_kin_dls_q_(dh_dls_work_q *c, const int32_t *e, int32_t lambda, int3
     c->m = 6u;
     c->cols = 0;
     dlsq_format(c, lambda);
-    dlsq_equil(c, lambda, 0);
+    (void)dlsq_equil(c, lambda, 0);
     for (i = 0; i < c->n; i++) dq[i] = 0;
     if (dlsq_chol(c, (lambda != 0) ? DLSQ_DMIN_FB : DLSQ_DSING_FB, lambda != 0))
         return (lambda != 0) ? DH_ERR_OVERFLOW : DH_ERR_SINGULAR;

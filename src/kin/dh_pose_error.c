@@ -76,16 +76,23 @@ static void pose_delta(const float *ct, const float *cr, uint32_t s, float *d)
         }
 }
 
+/* 1 when the entries (i, j), i < nrow, j < 3, at a[s i + j] are finite */
+DH_INLINE int pose_finite(const float *a, uint32_t s, uint32_t nrow)
+{
+    uint32_t i, j;
+    for (i = 0; i < nrow; i++)
+        for (j = 0; j < 3u; j++)
+            if (!dh_isfinite_f32(a[s * i + j])) return 0;
+    return 1;
+}
+
 /* Checks of two frames whose entries (i, j) sit at a[s i + j], b[s i + j]:
  * rows 0..2 the rotation's columns, rows 3..nrow-1 (nrow 3 or 4) the
  * translation. DH_ERR_NAN when an entry is not finite, DH_ERR_NOT_RIGID
  * when a rotation is not one (within DH_ROT_ERROR_TOL), else DH_OK. */
 DH_INLINE dh_status pose_check(const float *a, const float *b, uint32_t s, uint32_t nrow)
 {
-    uint32_t i, j;
-    for (i = 0; i < nrow; i++)
-        for (j = 0; j < 3u; j++)
-            if (!dh_isfinite_f32(a[s * i + j]) || !dh_isfinite_f32(b[s * i + j])) return DH_ERR_NAN;
+    if (!pose_finite(a, s, nrow) || !pose_finite(b, s, nrow)) return DH_ERR_NAN;
     if (!dh_kin_rot_ok_f32_(a, a + s, a + 2u * s) || !dh_kin_rot_ok_f32_(b, b + s, b + 2u * s))
         return DH_ERR_NOT_RIGID;
     return DH_OK;
@@ -110,17 +117,34 @@ dh_status dh_rot_error_f32(const dh_mat3_f32 *R_target, const dh_mat3_f32 *R, dh
     return DH_OK;
 }
 
+/* e from two checked frames, dR in d (inlined: no frame of its own below
+ * the callers') */
+DH_INLINE void pose_error_body(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float *e, float *d)
+{
+    uint32_t i;
+    pose_delta(&T_target->m[0][0], &T->m[0][0], 4u, d);
+    dh_kin_rotvec_f32_(d, e + 3);
+    for (i = 0; i < 3u; i++) e[i] = T_target->m[3][i] - T->m[3][i];
+}
+
 /* The body of dh_pose_error_f32 with dR's scratch d[9] in the caller's
  * memory (the tracker keeps it off the stack). */
 dh_status dh_kin_pose_error_f32_(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float *e, float *d)
 {
-    uint32_t i;
     const dh_status st = pose_check(&T_target->m[0][0], &T->m[0][0], 4u, 4u);
 
     if (st != DH_OK) return st;
-    pose_delta(&T_target->m[0][0], &T->m[0][0], 4u, d);
-    dh_kin_rotvec_f32_(d, e + 3);
-    for (i = 0; i < 3u; i++) e[i] = T_target->m[3][i] - T->m[3][i];
+    pose_error_body(T_target, T, e, d);
+    return DH_OK;
+}
+
+dh_status dh_kin_pose_error_to_f32_(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float *e, float *d)
+{
+    const float *const b = &T->m[0][0];
+
+    if (!pose_finite(b, 4u, 4u)) return DH_ERR_NAN;
+    if (!dh_kin_rot_ok_f32_(b, b + 4u, b + 8u)) return DH_ERR_NOT_RIGID;
+    pose_error_body(T_target, T, e, d);
     return DH_OK;
 }
 

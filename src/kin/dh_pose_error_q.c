@@ -74,10 +74,15 @@ void dh_kin_rot_error_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_kin
     poseq_err_core(F_target, F, &s->D, &s->w, s->q);
 }
 
-dh_status dh_kin_rot_error_chk_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_frame_q *D, dh_dir3_q *w,
-                                  int32_t *q)
+int dh_kin_rot_ok_q_(const dh_frame_q *F)
 {
-    if (!dh_rot_ok_q_(F_target, DH_ROT_ERROR_TOL_Q) || !dh_rot_ok_q_(F, DH_ROT_ERROR_TOL_Q)) return DH_ERR_NOT_RIGID;
+    return dh_rot_ok_q_(F, DH_ROT_ERROR_TOL_Q);
+}
+
+dh_status dh_kin_rot_error_to_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_frame_q *D, dh_dir3_q *w,
+                                 int32_t *q)
+{
+    if (!dh_rot_ok_q_(F, DH_ROT_ERROR_TOL_Q)) return DH_ERR_NOT_RIGID;
     poseq_err_core(F_target, F, D, w, q);
     return DH_OK;
 }

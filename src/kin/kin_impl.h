@@ -37,6 +37,10 @@ dh_status dh_dls_step_ws_f32_(const dh_robot *r, const float *J, const float *e,
 /* dh_pose_error_f32 with dR in the caller's d (9 floats, overlapping
  * nothing): the tracker keeps it in its workspace. Same contract. */
 dh_status dh_kin_pose_error_f32_(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float *e, float *d);
+/* The same for a target that has passed these checks already (finite,
+ * rotation within DH_ROT_ERROR_TOL, det > 0): T's checks alone, the same
+ * status and e. */
+dh_status dh_kin_pose_error_to_f32_(const dh_mat4_f32 *T_target, const dh_mat4_f32 *T, float *e, float *d);
 
 /* a(dR) of dh_rot_error_f32 for dR row-major, d[3 row + col], into w[0..2]
  * (d and w do not overlap). */
@@ -63,18 +67,25 @@ typedef struct {
     int32_t q[4];
 } dh_kin_rot_scratch_q;
 void dh_kin_rot_error_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_kin_rot_scratch_q *s);
+/* dh_rot_ok_q_ with DH_ROT_ERROR_TOL_Q: the checks of dh_rot_error_q on
+ * one frame (1 when they pass). */
+int dh_kin_rot_ok_q_(const dh_frame_q *F);
 /* dh_rot_error_q with its scratch D (dR) and q (4 words) in the caller's
- * memory (the tracker's): same checks, status and w. */
-dh_status dh_kin_rot_error_chk_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_frame_q *D, dh_dir3_q *w,
-                                  int32_t *q);
+ * memory (the tracker's), for a target F_target that has passed
+ * dh_kin_rot_ok_q_ already: F's check alone, the same status and w. */
+dh_status dh_kin_rot_error_to_q_(const dh_frame_q *F_target, const dh_frame_q *F, dh_frame_q *D, dh_dir3_q *w,
+                                 int32_t *q);
 
 /* The bodies of dh_manipulability_q and dh_dls_step_q (dh_dls_q.c) on
  * the state in c, for a caller that keeps c between calls (the tracker):
  * dh_kin_manip_q_ reads c->J and c->n (1..DH_MAX_JOINTS); dh_kin_dls_q_
  * reads c->J, c->n, c->dq_max and c->pris (dh_kin_pris_q_ of the robot)
  * after dh_dls_step_q's argument checks (the caller's). Same results and
- * statuses. */
-void dh_kin_manip_q_(dh_dls_work_q *c, int32_t *w, int32_t *sigma_min);
+ * statuses. With both w and sigma_min, save (DH_DLS_SAVE_Q words, or
+ * NULL) keeps the equilibrated Gram matrix for the second factorization,
+ * which is then not formed twice. */
+#define DH_DLS_SAVE_Q 21u
+void dh_kin_manip_q_(dh_dls_work_q *c, int32_t *w, int32_t *sigma_min, int32_t *save);
 dh_status dh_kin_dls_q_(dh_dls_work_q *c, const int32_t *e, int32_t lambda, int32_t *dq);
 /* bit i set when joint i of r is prismatic */
 uint32_t dh_kin_pris_q_(const dh_robot *r);

@@ -199,6 +199,7 @@ static DH_NOINLINE int track_pick(dh_track_f32 *t, dh_status st, int *unreach)
             const float ti = dh_isfinite_f32(v) ? d / v : 0.0f;
             tm = (ti > tm) ? ti : tm;
             sm += d;
+            if (found && tm > bt) break;   /* slower than the best: out */
         }
         if (!found || tm < bt || (tm <= bt && sm < bs)) {
             best = k;
@@ -389,17 +390,19 @@ static DH_NOINLINE void track_brake(dh_track_f32 *t)
     }
 }
 
-static DH_NOINLINE dh_status track_target_ok(dh_track_f32 *t, const dh_mat4_f32 *target)
+/* DH_OK for a finite rigid target (bottom row 0 0 0 1, rotation within
+ * DH_ROT_ERROR_TOL of orthonormal, det > 0), else DH_ERR_NAN or
+ * DH_ERR_NOT_RIGID */
+static DH_NOINLINE dh_status track_target_ok(const dh_mat4_f32 *target)
 {
     uint32_t c, k;
-    float *const e = t->e;
     for (c = 0u; c < 4u; c++)
         for (k = 0u; k < 4u; k++)
             if (!dh_isfinite_f32(target->m[c][k])) return DH_ERR_NAN;
     if (!dh_feq_f32(target->m[0][3], 0.0f) || !dh_feq_f32(target->m[1][3], 0.0f) ||
         !dh_feq_f32(target->m[2][3], 0.0f) || !dh_feq_f32(target->m[3][3], 1.0f))
         return DH_ERR_NOT_RIGID;
-    return (dh_kin_pose_error_f32_(target, target, e, t->ws) == DH_OK) ? DH_OK : DH_ERR_NOT_RIGID;
+    return dh_kin_rot_ok_f32_(&target->m[0][0], &target->m[1][0], &target->m[2][0]) ? DH_OK : DH_ERR_NOT_RIGID;
 }
 
 /* the report from t->e (pose error at q_out) */
@@ -525,7 +528,8 @@ static DH_NOINLINE void track_end(dh_track_f32 *t, const dh_mat4_f32 *target, dh
     rep->sigma_min = 0.0f;
     if (dh_kin_jacobian_f32_(t->r, t->q, t->J, &t->T, t->ws) == DH_OK) {
         (void)dh_manipulability_ws_f32_(t->J, t->r->n, &rep->manip, &rep->sigma_min, t->ws);
-        if (tst == DH_OK && dh_kin_pose_error_f32_(target, &t->T, t->e, t->ws) == DH_OK) fk = 1;
+        /* the target passed its checks (tst): T's alone */
+        if (tst == DH_OK && dh_kin_pose_error_to_f32_(target, &t->T, t->e, t->ws) == DH_OK) fk = 1;
     }
     track_fill(t, fk, t->unreach, rep);
 }
@@ -542,7 +546,7 @@ dh_status dh_track_step_f32(dh_track_f32 *t, const dh_mat4_f32 *target, float *q
     DH_ASSERT(q_out != NULL);
     DH_ASSERT(rep != NULL);
     DH_ASSERT(t->r->n >= 1u && t->r->n <= (uint32_t)DH_MAX_JOINTS);
-    tst = track_target_ok(t, target);
+    tst = track_target_ok(target);
     track_box(t);
     t->unreach = 1;
     t->ns = 0u;

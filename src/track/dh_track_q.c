@@ -239,6 +239,12 @@ static int trq_onto_limits(const dh_track_q *t, dh_ikc_sol_q *sol)
     return 1;
 }
 
+/* a b exactly for a, b below 2^31 (a 32-bit multiply on every core) */
+static int64_t trq_mul(uint32_t a, uint32_t b)
+{
+    return dh_q_mul64((int32_t)a, (int32_t)b);
+}
+
 /* The solution nearest t->q in time (largest |q*_i - q_i| / vmax_i, then
  * the sum of |q*_i - q_i|) among the st's t->ns solutions within the
  * limits into t->qs: 1 when there is one; t->unreach when there is no
@@ -261,14 +267,14 @@ static DH_NOINLINE int trq_nearest(dh_track_q *t, dh_status st)
                                          : (uint32_t)(d64 > INT32_MAX ? INT32_MAX : d64);
             const uint32_t v = (uint32_t)t->r->joint[i].vmax_q;
             sm += (int64_t)d;
-            /* time d / v > tn / td ? (v INT32_MAX: unlimited, time 0) */
-            if (v < (uint32_t)INT32_MAX && (uint64_t)d * td > (uint64_t)tn * v) {
+            /* time d / v > tn / td ? (v INT32_MAX: unlimited, time 0);
+             * every factor below 2^31: exact signed products */
+            if (v < (uint32_t)INT32_MAX && trq_mul(d, td) > trq_mul(tn, v)) {
                 tn = d;
                 td = v;
             }
         }
-        if (!found || (uint64_t)tn * btd < (uint64_t)btn * td ||
-            ((uint64_t)tn * btd == (uint64_t)btn * td && sm < bs)) {
+        if (!found || trq_mul(tn, btd) < trq_mul(btn, td) || (trq_mul(tn, btd) == trq_mul(btn, td) && sm < bs)) {
             best = k;
             btn = tn;
             btd = td;
@@ -352,7 +358,9 @@ static DH_NOINLINE int trq_epos(dh_track_q *t)
  * Q3.29 rad; 0 when a component does not fit. */
 static DH_NOINLINE int trq_error(dh_track_q *t)
 {
-    if (dh_kin_rot_error_chk_q_(t->tgt, &t->T, &t->rD, &t->rw, t->rq) != DH_OK) return 0;
+    /* the target passed its check in trq_begin (every caller runs with
+     * t->tst == DH_OK) */
+    if (dh_kin_rot_error_to_q_(t->tgt, &t->T, &t->rD, &t->rw, t->rq) != DH_OK) return 0;
     return trq_epos(t);
 }
 
@@ -563,12 +571,14 @@ static DH_NOINLINE int trq_beyond(const dh_track_q *t)
     return s > (uint64_t)dh_q_mul64(t->reach, t->reach);
 }
 
+typedef char trq_gs_fits[(sizeof(((dh_track_q *)0)->gs) == DH_DLS_SAVE_Q * sizeof(int32_t)) ? 1 : -1];
+
 /* dh_manipulability_q of t->J */
 static DH_NOINLINE void trq_manip(dh_track_q *t, int32_t *w, int32_t *sigma_min)
 {
     t->work.J = t->J;
     t->work.n = (uint8_t)t->r->n;
-    dh_kin_manip_q_(&t->work, w, sigma_min);
+    dh_kin_manip_q_(&t->work, w, sigma_min, t->gs);
 }
 
 /* Away from singularities with a closed-form solution: straight for it
@@ -605,7 +615,7 @@ static DH_NOINLINE void trq_begin(dh_track_q *t, const dh_frame_q *target, int32
     t->unreach = 0;
     t->ns = 0u;
     t->ist = DH_ERR_UNAVAILABLE;
-    t->tst = dh_kin_rot_error_chk_q_(target, target, &t->rD, &t->rw, t->rq);
+    t->tst = dh_kin_rot_ok_q_(target) ? DH_OK : DH_ERR_NOT_RIGID;
 }
 
 /* q_out into t->q, t->v and q_out (the step clamped into the box) */
