@@ -228,7 +228,9 @@ static DH_NOINLINE float ikc_wrap_any(float v)
  * are read once for all solutions. Common case first: the revolute value
  * in (-180, 180] (so finite) and within its limits with no nearer shift
  * (limits less than a turn apart, or |ref - v| <= 180; with q_ref NULL,
- * ref = 0 and that always holds), left as it is. */
+ * ref = 0 and that always holds), left as it is: two comparisons against
+ * the window [flo, fhi] = [lo, hi] within (-180, 180] (v > -180 is v >=
+ * -180 + 2^-16, the next float), which a NaN fails. */
 static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i, dh_ikc_sol_f32 *sol,
                           uint32_t ns, uint32_t live_in, uint32_t *fin, uint32_t *out)
 {
@@ -241,6 +243,9 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
     /* limits less than a turn apart: a value within them is the only
      * shifted one within them, so the nearest to ref */
     const int narrow = !lim || hi - lo < 360.0f;
+    /* the distance to ref decides only with wide limits and a q_ref */
+    const int by_ref = !narrow && q_ref != NULL;
+    const float flo = (lo > -180.0f) ? lo : (-180.0f + 0x1p-16f), fhi = (hi < 180.0f) ? hi : 180.0f;
     uint32_t s;
     if ((m->prismatic >> i) & 1u) {
         for (s = 0; s < ns; s++) {
@@ -264,6 +269,10 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
         float v;
         if ((live & bit) == 0u) continue;
         v = sol[s].q[i] - off;
+        if (v >= flo && v <= fhi && (!by_ref || fabsf(ref - v) <= 180.0f)) {
+            sol[s].q[i] = v;
+            continue;
+        }
         if (!(v > -180.0f && v <= 180.0f)) {
             if (!dh_isfinite_f32(v)) {
                 *fin &= ~bit;
