@@ -415,7 +415,7 @@ static DH_NOINLINE uint32_t wrist_shoulder(const dh_ikc_model_f32 *m, float cref
     const float *k = m->k;
     const float h = k[KW_H], eps = k[KW_EPS], tau = m->sa[0];
     const float px = p[0], py = p[1], pz = p[2], vy = tau * (pz - m->d[0]);
-    float rad, tol, u = 0.0f;
+    float rad, tol, u = 0.0f, ub0 = 0.0f;
     uint32_t b, nb, nu = 0u;
     int sing;
     rad = dh_sqrt_f32(px * px + py * py);
@@ -436,9 +436,21 @@ static DH_NOINLINE uint32_t wrist_shoulder(const dh_ikc_model_f32 *m, float cref
         } else {
             ub = wrist_reach(m, b, ub, vy, fabsf(px) + fabsf(py));
             if (b != 0u && !(u > 0.0f) && !(ub < 0.0f)) continue; /* both branches at u = 0: one */
-            s->q[0] = wrist_atan2(tau * h * px + ub * py, ub * px - tau * h * py, cref1);
             s->flags = (b == 0u) ? 0u : DH_IKC_SHOULDER_ALT;
-            if (WRIST_ONE_PASS) wrist_cs(tau * h * px + ub * py, ub * px - tau * h * py, &s->q[3]);
+            if (b != 0u && nu != 0u && dh_feq_f32(h, 0.0f) && dh_feq_f32(ub, -ub0) && !dh_feq_f32(ub0, 0.0f)) {
+                /* h = 0 and u -> -u: the arguments of branch 0 negated,
+                 * theta1 + 180 (its cosine and sine negated) */
+                const float t0 = sol[0].q[0];
+                s->q[0] = (t0 > 0.0f) ? t0 - 180.0f : t0 + 180.0f;
+                if (WRIST_ONE_PASS) {
+                    s->q[3] = -sol[0].q[3];
+                    s->q[4] = -sol[0].q[4];
+                }
+            } else {
+                s->q[0] = wrist_atan2(tau * h * px + ub * py, ub * px - tau * h * py, cref1);
+                if (WRIST_ONE_PASS) wrist_cs(tau * h * px + ub * py, ub * px - tau * h * py, &s->q[3]);
+            }
+            ub0 = ub;
         }
         s->q[1] = ub - m->a[0];
         s->q[2] = vy;
