@@ -159,10 +159,23 @@ const char *dh_ikc_why_str(dh_ikc_why why)
 
 /* ---- solving ------------------------------------------------------------------ */
 
-/* Every check of dh_ikc_f32 made before anything is written. */
+/* Every check of dh_ikc_f32 made before anything is written. The common
+ * case first: a rotation that passes dh_rot_cols_ok_f32 has finite
+ * entries (a NaN or infinity fails its comparisons), and the bottom row
+ * equal to 0 0 0 1 is finite, so with the translation and q_ref finite
+ * the target passes every check; any other target goes through them in
+ * the order of the statuses. */
 static DH_NOINLINE dh_status ikc_args(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                                       uint32_t opts)
 {
+    if (opts == 0u &&
+        ((m->n == 6u && (m->kind == DH_IKC_WRIST_RRR || m->kind == DH_IKC_WRIST_RRP ||
+                         m->kind == DH_IKC_PARALLEL_234)) ||
+         (m->n == 4u && m->kind == DH_IKC_SCARA)) &&
+        dh_rot_cols_ok_f32(T->m[0], T->m[1], T->m[2], DH_ROT_ERROR_TOL) && dh_allfinite_f32(T->m[3], 3u) &&
+        dh_feq_f32(T->m[0][3], 0.0f) && dh_feq_f32(T->m[1][3], 0.0f) && dh_feq_f32(T->m[2][3], 0.0f) &&
+        dh_feq_f32(T->m[3][3], 1.0f) && (q_ref == NULL || dh_allfinite_f32(q_ref, m->n)))
+        return DH_OK;
     if ((opts & ~(uint32_t)DH_IKC_KEEP_OUT_OF_LIMITS) != 0u) return DH_ERR_ARG;
     if (m->kind == DH_IKC_NONE) return DH_ERR_UNAVAILABLE;
     switch (m->kind) {
