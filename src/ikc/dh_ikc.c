@@ -243,7 +243,9 @@ static DH_NOINLINE float ikc_wrap_any(float v)
  * (limits less than a turn apart, or |ref - v| <= 180; with q_ref NULL,
  * ref = 0 and that always holds), left as it is: two comparisons against
  * the window [flo, fhi] = [lo, hi] within (-180, 180] (v > -180 is v >=
- * -180 + 2^-16, the next float), which a NaN fails. */
+ * -180 + 2^-16, the next float) and, when ref decides, within 179.5 deg of
+ * ref; a NaN fails them. A value outside the window takes the general
+ * path, which decides exactly. */
 static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i, dh_ikc_sol_f32 *sol,
                           uint32_t ns, uint32_t live_in, uint32_t *fin, uint32_t *out)
 {
@@ -256,10 +258,16 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
     /* limits less than a turn apart: a value within them is the only
      * shifted one within them, so the nearest to ref */
     const int narrow = !lim || hi - lo < 360.0f;
-    /* the distance to ref decides only with wide limits and a q_ref */
-    const int by_ref = !narrow && q_ref != NULL;
-    const float flo = (lo > -180.0f) ? lo : (-180.0f + 0x1p-16f), fhi = (hi < 180.0f) ? hi : 180.0f;
+    float flo = (lo > -180.0f) ? lo : (-180.0f + 0x1p-16f), fhi = (hi < 180.0f) ? hi : 180.0f;
     uint32_t s;
+    if (!narrow && q_ref != NULL) {
+        /* the distance to ref decides: the window narrowed to within 179.5
+         * deg of ref, inside |ref - v| <= 180 after rounding (|ref| < 2^20,
+         * ulp <= 1/8; a larger ref leaves no value in (-180, 180] in it) */
+        const float rlo = ref - 179.5f, rhi = ref + 179.5f;
+        if (rlo > flo) flo = rlo;
+        if (rhi < fhi) fhi = rhi;
+    }
     if ((m->prismatic >> i) & 1u) {
         for (s = 0; s < ns; s++) {
             const uint32_t bit = 1u << s;
@@ -282,7 +290,7 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
         float v;
         if ((live & bit) == 0u) continue;
         v = sol[s].q[i] - off;
-        if (v >= flo && v <= fhi && (!by_ref || fabsf(ref - v) <= 180.0f)) {
+        if (v >= flo && v <= fhi) {
             sol[s].q[i] = v;
             continue;
         }
