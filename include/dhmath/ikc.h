@@ -145,6 +145,10 @@ typedef struct {
     float k[DH_IKC_K];           /**< family constants */
     dh_mat4_f32 pre_inv;         /**< inverse of the frame before the canonical chain (base and MDH first link) */
     dh_mat4_f32 post_inv;        /**< inverse of the frame after it (tool) */
+    /* Precomputed for the joint conversion of dh_ikc_f32 (from qmin, qmax): */
+    float win_lo[DH_IKC_JOINTS]; /**< a revolute value v with win_lo <= v <= win_hi lies in (-180, 180] and within the limits */
+    float win_hi[DH_IKC_JOINTS]; /**< upper end of that window */
+    uint32_t wide;               /**< bit i set: joint i's limits are a turn or more apart (q_ref picks among the shifts) */
 } dh_ikc_model_f32;
 
 /** Fixed-point model (fill with dh_ikc_analyse_q); lengths dh_qpos, sin/cos Q2.30, angles Q16.16. */

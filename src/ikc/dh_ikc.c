@@ -89,6 +89,20 @@ static void ikc_inv_rigid(dh_mat4_f32 *F)
     for (i = 0; i < 3u; i++) F->m[3][i] = 0.0f - (F->m[0][i] * p0 + F->m[1][i] * p1 + F->m[2][i] * p2);
 }
 
+/* The conversion windows of m's joints from their limits (ikc_joint). */
+static void ikc_windows(dh_ikc_model_f32 *m)
+{
+    uint32_t i;
+    for (i = 0; i < m->n; i++) {
+        const int lim = m->qmin[i] <= m->qmax[i];
+        const float lo = lim ? m->qmin[i] : -180.0f, hi = lim ? m->qmax[i] : 180.0f;
+        /* v > -180 is v >= -180 + 2^-16, the next float */
+        m->win_lo[i] = (lo > -180.0f) ? lo : (-180.0f + 0x1p-16f);
+        m->win_hi[i] = (hi < 180.0f) ? hi : 180.0f;
+        if (lim && !(hi - lo < 360.0f)) m->wide |= 1u << i;
+    }
+}
+
 /* Why the canonical chain of m has no closed form (every detector said no). */
 static dh_ikc_why ikc_why(const dh_ikc_model_f32 *m)
 {
@@ -125,6 +139,7 @@ dh_status dh_ikc_analyse_f32(const dh_robot *r, dh_ikc_model_f32 *m)
     if (r->n == 0u || r->n > DH_IKC_JOINTS) return ikc_none(m, DH_IKC_WHY_JOINTS, DH_ERR_UNAVAILABLE);
     m->n = r->n;
     ikc_canonical(r, m);
+    ikc_windows(m);
     ikc_inv_rigid(&m->pre_inv);
     m->post_inv = r->tool;
     ikc_inv_rigid(&m->post_inv);
@@ -159,10 +174,23 @@ const char *dh_ikc_why_str(dh_ikc_why why)
 
 /* ---- solving ------------------------------------------------------------------ */
 
-/* Every check of dh_ikc_f32 made before anything is written. */
+/* Every check of dh_ikc_f32 made before anything is written. The common
+ * case first: a rotation that passes dh_rot_cols_ok_f32 has finite
+ * entries (a NaN or infinity fails its comparisons), and the bottom row
+ * equal to 0 0 0 1 is finite, so with the translation and q_ref finite
+ * the target passes every check; any other target goes through them in
+ * the order of the statuses. */
 static DH_NOINLINE dh_status ikc_args(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                                       uint32_t opts)
 {
+    if (opts == 0u &&
+        ((m->n == 6u && (m->kind == DH_IKC_WRIST_RRR || m->kind == DH_IKC_WRIST_RRP ||
+                         m->kind == DH_IKC_PARALLEL_234)) ||
+         (m->n == 4u && m->kind == DH_IKC_SCARA)) &&
+        dh_rot_cols_ok_f32(T->m[0], T->m[1], T->m[2], DH_ROT_ERROR_TOL) && dh_allfinite_f32(T->m[3], 3u) &&
+        dh_feq_f32(T->m[0][3], 0.0f) && dh_feq_f32(T->m[1][3], 0.0f) && dh_feq_f32(T->m[2][3], 0.0f) &&
+        dh_feq_f32(T->m[3][3], 1.0f) && (q_ref == NULL || dh_allfinite_f32(q_ref, m->n)))
+        return DH_OK;
     if ((opts & ~(uint32_t)DH_IKC_KEEP_OUT_OF_LIMITS) != 0u) return DH_ERR_ARG;
     if (m->kind == DH_IKC_NONE) return DH_ERR_UNAVAILABLE;
     switch (m->kind) {
@@ -228,20 +256,30 @@ static DH_NOINLINE float ikc_wrap_any(float v)
  * are read once for all solutions. Common case first: the revolute value
  * in (-180, 180] (so finite) and within its limits with no nearer shift
  * (limits less than a turn apart, or |ref - v| <= 180; with q_ref NULL,
- * ref = 0 and that always holds), left as it is. */
+ * ref = 0 and that always holds), left as it is: two comparisons against
+ * the window [flo, fhi] = [lo, hi] within (-180, 180] (v > -180 is v >=
+ * -180 + 2^-16, the next float) and, when ref decides, within 179.5 deg of
+ * ref; a NaN fails them. A value outside the window takes the general
+ * path, which decides exactly. */
 static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i, dh_ikc_sol_f32 *sol,
                           uint32_t ns, uint32_t live_in, uint32_t *fin, uint32_t *out)
 {
     uint32_t live = live_in;
     const int lim = m->qmin[i] <= m->qmax[i];
-    /* no limits: every value in (-180, 180] stays, as one within limits
-     * [-180, 180] less than a turn apart would */
-    const float lo = lim ? m->qmin[i] : -180.0f, hi = lim ? m->qmax[i] : 180.0f, off = m->off[i];
-    const float ref = (q_ref != NULL) ? q_ref[i] : 0.0f;
-    /* limits less than a turn apart: a value within them is the only
-     * shifted one within them, so the nearest to ref */
-    const int narrow = !lim || hi - lo < 360.0f;
+    /* limits less than a turn apart (or none): a value within them is the
+     * only shifted one within them, so the nearest to ref */
+    const int narrow = ((m->wide >> i) & 1u) == 0u;
+    const float off = m->off[i], ref = (q_ref != NULL) ? q_ref[i] : 0.0f;
+    float flo = m->win_lo[i], fhi = m->win_hi[i];
     uint32_t s;
+    if (!narrow && q_ref != NULL) {
+        /* the distance to ref decides: the window narrowed to within 179.5
+         * deg of ref, inside |ref - v| <= 180 after rounding (|ref| < 2^20,
+         * ulp <= 1/8; a larger ref leaves no value in (-180, 180] in it) */
+        const float rlo = ref - 179.5f, rhi = ref + 179.5f;
+        if (rlo > flo) flo = rlo;
+        if (rhi < fhi) fhi = rhi;
+    }
     if ((m->prismatic >> i) & 1u) {
         for (s = 0; s < ns; s++) {
             const uint32_t bit = 1u << s;
@@ -261,9 +299,17 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
     }
     for (s = 0; s < ns; s++) {
         const uint32_t bit = 1u << s;
-        float v;
+        float v, lo, hi;
         if ((live & bit) == 0u) continue;
         v = sol[s].q[i] - off;
+        if (v >= flo && v <= fhi) {
+            sol[s].q[i] = v;
+            continue;
+        }
+        /* no limits: every value in (-180, 180] stays, as one within limits
+         * [-180, 180] less than a turn apart would */
+        lo = lim ? m->qmin[i] : -180.0f;
+        hi = lim ? m->qmax[i] : 180.0f;
         if (!(v > -180.0f && v <= 180.0f)) {
             if (!dh_isfinite_f32(v)) {
                 *fin &= ~bit;
@@ -279,6 +325,9 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
     return live;
 }
 
+/* ikc_finish's raw_mask lists the masks for up to eight solutions */
+typedef char ikc_raw_mask_fits_[(DH_IKC_MAX_SOL == 8u) ? 1 : -1];
+
 /* The raw solutions sol[0..raw-1] to joint values: non-finite branches (a
  * target far beyond the reach overflows the squares of the position
  * solution) are no solutions; limits per opts; kept ones packed to the
@@ -288,9 +337,10 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
 static DH_NOINLINE dh_status ikc_finish(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t opts,
                                         dh_ikc_sol_f32 *sol, uint32_t raw, uint32_t *n_sol)
 {
+    /* the mask of the first raw solutions (raw <= DH_IKC_MAX_SOL) */
+    static const uint8_t raw_mask[DH_IKC_MAX_SOL + 1u] = { 0x00u, 0x01u, 0x03u, 0x07u, 0x0Fu, 0x1Fu, 0x3Fu, 0x7Fu, 0xFFu };
     const int keep = (opts & DH_IKC_KEEP_OUT_OF_LIMITS) != 0u;
-    uint32_t i, s, n = 0, fin = 0u, live, outl = 0u;
-    for (s = 0; s < raw; s++) fin |= 1u << s;
+    uint32_t i, s, n = 0, fin = raw_mask[raw], live, outl = 0u;
     live = fin;
     for (i = 0; i < m->n; i++) {
         live = ikc_joint(m, q_ref, i, sol, raw, live, &fin, &outl);

@@ -176,10 +176,11 @@ static void wrist_rzrx_t(float *a, float *b, float c, float s, float sa, float c
 }
 
 /* Wrist, phase A, for the arm solution in out[0] (values and flags),
- * with cs = cos, sin of joint 1, cos, sin of joint 2 (RRR: of theta2 +
- * sigma theta3): M's third and first columns (R03^T of R06's two columns
- * ra, rn) into out[0].q[3..5] and out[1].q[3..5] (rn, ra may be those
- * places: they are read in place). Wrist singular (axis 6 in frame 3 on
+ * with rn, ra = R01^T of R06's columns n and a (joint 1 applied; shared
+ * by the arm's elbow branches) and cs = cos, sin of joint 2 (RRR: of
+ * theta2 + sigma theta3): M's third and first columns (R03^T of R06's
+ * two columns) into out[0].q[3..5] and out[1].q[3..5] (rn, ra may be
+ * those places: they are read in place). Wrist singular (axis 6 in frame 3 on
  * the z axis, joint 4's axis): flagged, and joint 4 from q_ref with its
  * sine and cosine into out[1].q[2], q[0], q[1]. Inlined into its one
  * caller (no frame of its own under the Cortex-M0+ budget). */
@@ -194,11 +195,10 @@ DH_INLINE void wrist_m(const dh_ikc_model_f32 *m, const float *q_ref, dh_ikc_sol
         mx[i] = rn[i];
         mz[i] = ra[i];
     }
-    wrist_rzrx_t(mz, mx, cs[0], cs[1], m->sa[0], m->ca[0]);
     if (m->kind == DH_IKC_WRIST_RRR) {
-        wrist_rzrx_t(mz, mx, cs[2], cs[3], k[KW_SA23], k[KW_CA23]);
+        wrist_rzrx_t(mz, mx, cs[0], cs[1], k[KW_SA23], k[KW_CA23]);
     } else {
-        wrist_rzrx_t(mz, mx, cs[2], cs[3], m->sa[1], m->ca[1]);
+        wrist_rzrx_t(mz, mx, cs[0], cs[1], m->sa[1], m->ca[1]);
         wrist_rzrx_t(mz, mx, k[KW_C3], k[KW_S3], m->sa[2], m->ca[2]);
     }
     if (mz[0] * mz[0] + mz[1] * mz[1] < IKC_SING_WRIST * IKC_SING_WRIST) {
@@ -436,9 +436,21 @@ static DH_NOINLINE uint32_t wrist_shoulder(const dh_ikc_model_f32 *m, float cref
         } else {
             ub = wrist_reach(m, b, ub, vy, fabsf(px) + fabsf(py));
             if (b != 0u && !(u > 0.0f) && !(ub < 0.0f)) continue; /* both branches at u = 0: one */
-            s->q[0] = wrist_atan2(tau * h * px + ub * py, ub * px - tau * h * py, cref1);
             s->flags = (b == 0u) ? 0u : DH_IKC_SHOULDER_ALT;
-            if (WRIST_ONE_PASS) wrist_cs(tau * h * px + ub * py, ub * px - tau * h * py, &s->q[3]);
+            if (WRIST_ONE_PASS && b != 0u && nu != 0u && dh_feq_f32(h, 0.0f) && dh_feq_f32(ub, -sol[0].q[5]) &&
+                !dh_feq_f32(sol[0].q[5], 0.0f)) {
+                /* h = 0 and u -> -u: the arguments of branch 0 negated,
+                 * theta1 + 180 (its cosine and sine negated; one pass
+                 * only: the in-place solver's frame has no room) */
+                const float t0 = sol[0].q[0];
+                s->q[0] = (t0 > 0.0f) ? t0 - 180.0f : t0 + 180.0f;
+                s->q[3] = -sol[0].q[3];
+                s->q[4] = -sol[0].q[4];
+            } else {
+                s->q[0] = wrist_atan2(tau * h * px + ub * py, ub * px - tau * h * py, cref1);
+                if (WRIST_ONE_PASS) wrist_cs(tau * h * px + ub * py, ub * px - tau * h * py, &s->q[3]);
+            }
+            if (WRIST_ONE_PASS) s->q[5] = ub; /* u of this branch, for the next one */
         }
         s->q[1] = ub - m->a[0];
         s->q[2] = vy;
@@ -483,17 +495,17 @@ static DH_NOINLINE void wrist_prepare(const dh_ikc_model_f32 *m, const dh_mat4_f
 
 #if WRIST_ONE_PASS
 
-/* The wrist solutions of the arm in a[0] (cos, sin of its joints 1 and 2
- * in v[6..9], or WRIST_CS_NONE: from dh_sincos_f32 here) into a[0] and
- * a[1]. */
-static DH_NOINLINE void wrist_arm(const dh_ikc_model_f32 *m, const float *q_ref, dh_ikc_sol_f32 *a, float *v)
+/* The wrist solutions of the arm in a[0] (R01^T of R06's columns n and a
+ * in rot->q[3..5] and rot->q[0..2]; cos, sin of its joint 2 in v[8..9],
+ * or WRIST_CS_NONE: from dh_sincos_f32 here) into a[0] and a[1]. */
+static DH_NOINLINE void wrist_arm(const dh_ikc_model_f32 *m, const float *q_ref, dh_ikc_sol_f32 *a, float *v,
+                                  const dh_ikc_sol_f32 *rot)
 {
-    if (v[6] > 1.5f) (void)dh_sincos_f32(a->q[0], &v[7], &v[6]);
     if (v[8] > 1.5f) {
         const float t2 = (m->kind == DH_IKC_WRIST_RRR) ? a->q[1] + m->k[KW_SIGMA] * a->q[2] : a->q[1];
         (void)dh_sincos_f32(t2, &v[9], &v[8]);
     }
-    wrist_m(m, q_ref, a, v, &v[3], &v[6]);
+    wrist_m(m, q_ref, a, &rot->q[3], &rot->q[0], &v[8]);
     wrist_b(m, a);
     wrist_c(a);
 }
@@ -501,29 +513,43 @@ static DH_NOINLINE void wrist_arm(const dh_ikc_model_f32 *m, const float *q_ref,
 /* One pass: the shoulder branches into sol[6] and sol[7] (read before any
  * solution reaches them), each arm into its solution's final slot
  * (elbow branch 1 two slots on, moved down when branch 0's wrist is
- * singular), its wrist solutions there and in the next slot. */
+ * singular), its wrist solutions there and in the next slot. R01^T of
+ * R06's columns a and n, shared by a shoulder branch's arms, waits in
+ * q[0..2] and q[3..5] of the fourth slot from its first arm (n0 + 3 <= 7:
+ * written last, by the second arm's flipped wrist solution, which reads
+ * the column n in place). */
 uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, dh_ikc_sol_f32 *sol)
 {
     /* R06 e_x, R06 Rx(alpha6)^T e_z, the wrist centre; after the
-     * shoulder v[6..9] = cos, sin of joint 1 and of joint 2 (RRR: of
+     * shoulder v[6..7] = cos, sin of joint 1, v[8..9] of joint 2 (RRR: of
      * theta2 + sigma theta3) for wrist_m */
     float v[10];
     const float cref2 = dh_ikc_cref_f32_(m, q_ref, 1u);
-    uint32_t b, e, ns, ne, n = 0u;
+    uint32_t b, e, i, ns, ne, n = 0u;
     wrist_prepare(m, T, v, &v[3], &v[6]);
     ns = wrist_shoulder(m, dh_ikc_cref_f32_(m, q_ref, 0u), &v[6], &sol[6]);
     for (b = 0; b < ns; b++) {
         const dh_ikc_sol_f32 *sh = &sol[6u + b];
         const uint32_t n0 = n;
         ne = (m->kind == DH_IKC_WRIST_RRR) ? wrist_elbow_rrr(m, cref2, sh, &sol[n]) : wrist_elbow_rrp(m, cref2, sh, &sol[n]);
+        if (ne != 0u) {
+            /* joint 1 of both elbow branches (the arms keep theta1 in q[0]) */
+            float *rot = sol[n0 + 3u].q;
+            v[6] = sh->q[3]; /* sh is not read after this */
+            v[7] = sh->q[4];
+            if (v[6] > 1.5f) (void)dh_sincos_f32(sol[n].q[0], &v[7], &v[6]);
+            for (i = 0; i < 3u; i++) {
+                rot[i] = v[3u + i];
+                rot[3u + i] = v[i];
+            }
+            wrist_rzrx_t(&rot[0], &rot[3], v[6], v[7], m->sa[0], m->ca[0]);
+        }
         for (e = 0; e < ne; e++) {
             dh_ikc_sol_f32 *a = &sol[n];
             if (e != 0u && n != n0 + 2u) *a = sol[n0 + 2u]; /* branch 0's wrist singular */
-            v[6] = sh->q[3]; /* sh is written only by the last wrist_arm */
-            v[7] = sh->q[4];
             v[8] = a->q[3];
             v[9] = a->q[4];
-            wrist_arm(m, q_ref, a, v);
+            wrist_arm(m, q_ref, a, v, &sol[n0 + 3u]);
             n += (a[1].flags == IKC_GAP) ? 1u : 2u;
         }
     }
@@ -548,6 +574,8 @@ static DH_NOINLINE void wrist_a(const dh_ikc_model_f32 *m, const float *q_ref, c
                                 dh_ikc_sol_f32 *out, const float *rn, const float *ra)
 {
     float cs[4];
+    float *mz = &out[0].q[3], *mx = &out[1].q[3];
+    uint32_t i;
     const float t2 = (m->kind == DH_IKC_WRIST_RRR) ? arm->q[1] + m->k[KW_SIGMA] * arm->q[2] : arm->q[1];
     out[0].flags = arm->flags;
     out[0].q[0] = arm->q[0];
@@ -555,7 +583,12 @@ static DH_NOINLINE void wrist_a(const dh_ikc_model_f32 *m, const float *q_ref, c
     out[0].q[2] = arm->q[2];
     (void)dh_sincos_f32(out[0].q[0], &cs[1], &cs[0]);
     (void)dh_sincos_f32(t2, &cs[3], &cs[2]);
-    wrist_m(m, q_ref, out, rn, ra, cs);
+    for (i = 0; i < 3u; i++) {
+        mx[i] = rn[i];
+        mz[i] = ra[i];
+    }
+    wrist_rzrx_t(mz, mx, cs[0], cs[1], m->sa[0], m->ca[0]);
+    wrist_m(m, q_ref, out, mx, mz, &cs[2]);
 }
 
 /* Arm values and flags (q[0..2]) of src into dst, q[3..5] left alone. */
