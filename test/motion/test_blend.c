@@ -231,11 +231,29 @@ static double fd_ratio(const source *src, int order, int ang, long w, double lim
     return worst;
 }
 
+/* the step from P to T (T's position p) within one period of the linear
+ * and angular speed limits, up to the finite differences' allowance and
+ * the samples' rounding (posn in position, ANG_NOISE in angle) */
+static void step_check(const dh_mat4_f32 *P, const dh_mat4_f32 *T, const double p[3], const dh_cart_limits_f32 *lim,
+                       double posn, double t)
+{
+    const double h = 1.0 / HZ;
+    double q[3], rv[3], dp;
+    int j;
+    pos_of(P, q);
+    for (j = 0; j < 3; j++) q[j] -= p[j];
+    dp = sqrt(dot3(q, q));
+    DHT_TRUE_MSG(dp <= lim->vmax * h * (1.0 + REL_FD) + 2.0 * posn, "t %.9g: step %.3g m", t, dp);
+    rot_vec(P, T, rv);
+    dp = sqrt(dot3(rv, rv));
+    DHT_TRUE_MSG(dp <= lim->wmax * h * (1.0 + REL_FD) + 2.0 * ANG_NOISE, "t %.9g: step %.3g deg", t, dp);
+}
+
 /* every sample on its segment outside the overlap and near the corner
  * inside; every step within one period of the speed limits */
 static void path_check(const dh_blend_f32 *bl, const corner *k, const dh_cart_limits_f32 *lim, double radius)
 {
-    double h = 1.0 / HZ, t, p[3], q[3], e, dp, rv[3], posn = 8.0 * dhr_ulp_f32(k->S);
+    double h = 1.0 / HZ, t, p[3], q[3], e, posn = 8.0 * dhr_ulp_f32(k->S);
     long i, n = (long)ceil((double)bl->T * HZ) + 1;
     int j;
     dh_mat4_f32 T, P;
@@ -257,13 +275,7 @@ static void path_check(const dh_blend_f32 *bl, const corner *k, const dh_cart_li
                          "t %.9g: %.9g m from the corner (radius %.9g, dev %.9g)", t, e, radius, (double)bl->dev);
             dht_reach_max("overlap.dev_frac", e / radius);
         }
-        pos_of(&P, q);
-        for (j = 0; j < 3; j++) q[j] -= p[j];
-        dp = sqrt(dot3(q, q));
-        DHT_TRUE_MSG(dp <= lim->vmax * h * (1.0 + REL_FD) + 2.0 * posn, "t %.9g: step %.3g m", t, dp);
-        rot_vec(&P, &T, rv);
-        dp = sqrt(dot3(rv, rv));
-        DHT_TRUE_MSG(dp <= lim->wmax * h * (1.0 + REL_FD) + 2.0 * ANG_NOISE, "t %.9g: step %.3g deg", t, dp);
+        step_check(&P, &T, p, lim, posn, t);
         P = T;
     }
     DHT_TRUE(memcmp(&T, &k->p2.B, sizeof T) == 0);
@@ -503,7 +515,7 @@ static void seq_path_check(const dh_blend_seq_f32 *sq, const chain *c, const flo
                            const dh_cart_limits_f32 *lim)
 {
     const dh_blend_seg_f32 *g = sq->seg;
-    double h = 1.0 / HZ, t, p[3], q[3], e, dp, rv[3], posn = 8.0 * dhr_ulp_f32(c->S);
+    double h = 1.0 / HZ, t, p[3], q[3], e, posn = 8.0 * dhr_ulp_f32(c->S);
     long i, ns = (long)ceil((double)sq->T * HZ) + 1;
     int j, k;
     float tau;
@@ -529,13 +541,7 @@ static void seq_path_check(const dh_blend_seq_f32 *sq, const chain *c, const flo
             DHT_TRUE_MSG(e <= POS_TOL, "t %.9g: %.3g m off line %d", t, e, k);
             dht_reach_max("seq.line_err", e);
         }
-        pos_of(&P, q);
-        for (j = 0; j < 3; j++) q[j] -= p[j];
-        dp = sqrt(dot3(q, q));
-        DHT_TRUE_MSG(dp <= lim->vmax * h * (1.0 + REL_FD) + 2.0 * posn, "t %.9g: step %.3g m", t, dp);
-        rot_vec(&P, &T, rv);
-        dp = sqrt(dot3(rv, rv));
-        DHT_TRUE_MSG(dp <= lim->wmax * h * (1.0 + REL_FD) + 2.0 * ANG_NOISE, "t %.9g: step %.3g deg", t, dp);
+        step_check(&P, &T, p, lim, posn, t);
         P = T;
     }
     DHT_TRUE(memcmp(&T, &c->p[c->n - 1].B, sizeof T) == 0);
