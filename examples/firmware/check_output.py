@@ -3,7 +3,7 @@
 """Runs a firmware example (under QEMU) and checks its output against an
 independent double-precision computation with numpy.
 
-  check_output.py --robot ROBOT.dh --kind fixed|fixedkin|fixedtrack|float [--qpos-frac N] -- CMD...
+  check_output.py --robot ROBOT.dh --kind fixed|fixedkin|fixedtrack|float|floatmotion [--qpos-frac N] -- CMD...
 
 The reference never uses the library: the robot is read from its .dh file
 (the published DH table), the FK is the product of standard DH link
@@ -319,10 +319,94 @@ def check_float(rows, lines, c):
     c.true('IK solution within the joint limits of the .dh file', inside)
 
 
+# fw_float_motion: the path's own error (dh_path_eval_f32, dh_blend_seq_eval_f32:
+# within 4 FLT_EPSILON S of the line, S the largest position magnitude, here
+# below 1 m), the acceleration window (periods) the firmware prints
+MOTION_PATH_TOL = 4.0 * 2.0 ** -23
+MOTION_W = 4
+
+
+def check_float_motion(rows, lines, c):
+    """fw_float_motion: every period's configuration, FK in double."""
+    one, qs, corners, ovl = {}, [], {}, []
+    for key, vals in lines:
+        if key == 'q':
+            qs.append((int(vals[0]), int(vals[1]), [float(v) for v in vals[2:]]))
+        elif key == 'corner':
+            corners[int(vals[0])] = np.array([float(v) for v in vals[1:]])
+        elif key == 'overlap':
+            ovl.append((int(vals[0]), int(vals[1]), int(vals[2])))
+        else:
+            one[key] = vals
+    need = ['dt', 'vmax', 'amax', 'pos_tol', 'lim', 'radius', 'q0', 'p0', 'circle', 'square_end', 'line_dev',
+            'blend_dev', 'circle_dev', 'peak_rate', 'peak_accel', 'periods']
+    missing = [k for k in need if k not in one]
+    c.true('every summary line present (missing: %s)' % (missing or 'none'), not missing)
+    c.true('corners 0..4 and three overlaps printed', sorted(corners) == [0, 1, 2, 3, 4] and len(ovl) == 3)
+    if missing or len(corners) != 5 or len(ovl) != 3:
+        return
+    f = {k: [float(v) for v in one[k]] for k in need}
+    dt, vmax, amax, pos_tol, radius = f['dt'][0], f['vmax'][0], f['amax'][0], f['pos_tol'][0], f['radius'][0]
+    c.true('periods numbered 0, 1, 2, ... (%d printed)' % len(qs), [k for k, _, _ in qs] == list(range(len(qs))))
+    c.true('every period ok (periods: %s)' % ' '.join(one['periods']),
+           all(s == 0 for _, s, _ in qs) and f['periods'] == [len(qs), 0, 0])
+    q = np.array([v for _, _, v in qs])
+    c.near('period 0 is q0', q[0], f['q0'], 0.0)
+    p = np.array([fk(rows, qi)[:3, 3] for qi in q])
+    c.near('p0 is the FK of q0 (m)', f['p0'], p[0], FLOAT_FK_TOL)
+    p0 = np.array(f['p0'])
+    side = float(corners[1][0] - corners[0][0])
+    want = [p0 + np.array(o) for o in ((0, 0, 0), (side, 0, 0), (side, side, 0), (0, side, 0), (0, 0, 0))]
+    c.near('the corners: a square of side %.9g m from p0' % side, [corners[i] for i in range(5)], want, 1e-7)
+    # tracked within the tracker's tolerance (against its float FK), which is
+    # within FLOAT_FK_TOL of this exact FK, of a path point within MOTION_PATH_TOL
+    tol = pos_tol + FLOAT_FK_TOL + MOTION_PATH_TOL
+    end = int(f['square_end'][0])
+    inside = {}
+    for i, k0, k1 in ovl:
+        for k in range(k0, k1 + 1):
+            inside[k] = i
+    line_dev = blend_dev = circle_dev = 0.0
+    for k in range(1, end + 1):
+        if k in inside:
+            blend_dev = max(blend_dev, float(np.linalg.norm(p[k] - corners[inside[k]])))
+        else:
+            line_dev = max(line_dev, min(line_dist(corners[i], corners[i + 1], p[k]) for i in range(4)))
+    ctr, rad = np.array(f['circle'][:3]), f['circle'][3]
+    c.near('the circle: centre p0 + (R, 0, 0) (m)', ctr, p0 + np.array([rad, 0.0, 0.0]), 1e-7)
+    for k in range(end + 1, len(qs)):
+        u = p[k] - ctr
+        circle_dev = max(circle_dev, math.hypot(math.hypot(u[0], u[1]) - rad, u[2]))
+    c.near('square outside the overlaps: on its outline (m)', [line_dev], [0.0], tol)
+    c.true('square inside the overlaps: within the blend radius of the corner (%.3g m <= %.3g m + %.3g m)'
+           % (blend_dev, radius, tol), blend_dev <= radius + tol)
+    c.near('circle: on it (m)', [circle_dev], [0.0], tol)
+    c.near('the end: back at p0 (m)', p[-1], p0, tol)
+    # the firmware's own figures (float FK) against these (double FK)
+    c.near('printed line_dev, blend_dev, circle_dev against the double FK (m)',
+           [f['line_dev'][0], f['blend_dev'][0], f['circle_dev'][0]], [line_dev, blend_dev, circle_dev],
+           2.0 * FLOAT_FK_TOL)
+    # rates: every step within vmax dt; acceleration over windows of
+    # MOTION_W periods within amax, plus what the rounding of the float
+    # joints (half an ulp each, at most 2W of them) adds to the window's
+    # second difference
+    dq = np.abs(np.diff(q, axis=0))
+    rate = float(np.max(dq)) / dt
+    c.true('peak joint rate %.6g deg/s within vmax %.6g deg/s' % (rate, vmax), rate <= vmax * (1.0 + 1e-6))
+    c.near('printed peak_rate (deg/s)', [f['peak_rate'][0]], [rate], 1e-5 * vmax)
+    w = MOTION_W
+    acc = np.abs(q[2 * w:] - 2.0 * q[w:-w] + q[:-2 * w]) / (w * dt) ** 2
+    ulp = 2.0 ** (math.floor(math.log2(float(np.max(np.abs(q))))) - 23)
+    peak = float(np.max(acc))
+    c.true('peak joint acceleration %.6g deg/s^2 (windows of %d periods) within amax %.6g deg/s^2 + rounding %.3g'
+           % (peak, w, amax, ulp / (w * dt * dt)), peak <= amax * (1.0 + 1e-6) + ulp / (w * dt * dt))
+    c.near('printed peak_accel (deg/s^2)', [f['peak_accel'][0]], [peak], 1e-4 * amax)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--robot', required=True)
-    ap.add_argument('--kind', choices=['fixed', 'fixedkin', 'fixedtrack', 'float'], required=True)
+    ap.add_argument('--kind', choices=['fixed', 'fixedkin', 'fixedtrack', 'float', 'floatmotion'], required=True)
     ap.add_argument('--qpos-frac', type=int, default=16)
     ap.add_argument('cmd', nargs=argparse.REMAINDER)
     a = ap.parse_args()
@@ -343,6 +427,8 @@ def main():
         check_fixed_kin(rows, lines, a.qpos_frac, c)
     elif a.kind == 'fixedtrack':
         check_fixed_track(rows, lines, a.qpos_frac, c)
+    elif a.kind == 'floatmotion':
+        check_float_motion(rows, lines, c)
     else:
         check_float(rows, lines, c)
     print('%d of %d checks passed' % (c.checks - c.failures, c.checks))
