@@ -231,20 +231,39 @@ static void ikc_completeness(void)
 #define LIMIT_SLACK_M 1e-5
 
 
+/* Distance (deg) within which a dh_ik_f32 result matches a closed-form
+ * solution */
+#define MATCH_DEG 0.05
+
 /* q_dist of a dh_ik_f32 result y from a closed-form solution c, where
  * joints 4 and 6 count only beyond what the solver's orientation tolerance
  * leaves open near the wrist singularity: stopped within tol_rot, y's
  * joints 4 and 6 may each be off by up to tol_rot / |sin t5| (only their
- * sum or difference is fixed at t5 = 0). */
+ * sum or difference is fixed at t5 = 0). Where that is not below
+ * MATCH_DEG, the tolerance does not fix joints 4 and 6 one by one to the
+ * match distance at all (the other joints take up part of a move along
+ * the singular direction, so the open part may exceed tol_rot / |sin t5|):
+ * there the combination the orientation fixes, q4 + sigma q6 (sigma =
+ * cos(alpha4 + alpha5): z6 = sigma z4 at t5 = 0), counts instead. */
 static double wrist_dist(const dh_robot *r, const dh_ik_params_f32 *p, const float *c, const double *y)
 {
     const double s5 = fabs(sin((y[4] + (double)r->joint[4].theta_deg) * D2R));
     const double open = (double)p->tol_rot / D2R / fmax(s5, 1e-9);
-    double w = 0.0;
+    const double sigma = (cos(((double)r->joint[3].alpha_deg + (double)r->joint[4].alpha_deg) * D2R) > 0.0) ? 1.0 : -1.0;
+    double w = 0.0, comb;
     uint32_t i;
     for (i = 0; i < r->n; i++) {
         const double d = dhs_joint_dist(r, i, c[i], y[i]);
-        w = fmax(w, (i == 3u || i == 5u) ? fmax(d - open, 0.0) : d);
+        if (i == 3u || i == 5u)
+            w = fmax(w, (open < MATCH_DEG) ? fmax(d - open, 0.0) : 0.0);
+        else
+            w = fmax(w, d);
+    }
+    if (open >= MATCH_DEG) {
+        comb = fmod(((double)c[3] + sigma * (double)c[5]) - (y[3] + sigma * y[5]), 360.0);
+        if (comb > 180.0) comb -= 360.0;
+        if (comb < -180.0) comb += 360.0;
+        w = fmax(w, fabs(comb));
     }
     return w;
 }
@@ -310,9 +329,9 @@ static void ikc_numerical_completeness(void)
                         best = dq;
                         twin = (sol[s].flags & DH_IKC_OUT_OF_LIMITS) != 0u;
                     }
-                    if (dq <= 0.05) hit |= 1u << s;
+                    if (dq <= MATCH_DEG) hit |= 1u << s;
                 }
-                DHT_TRUE_MSG(best <= 0.05, "%s: target of q = %s: dh_ik_f32 found %s, not among the %u closed-form "
+                DHT_TRUE_MSG(best <= MATCH_DEG, "%s: target of q = %s: dh_ik_f32 found %s, not among the %u closed-form "
                              "solutions (nearest %.3g away)", g_robots[k].name, dhs_q_str(q, r.n, 0),
                              dhs_qf_str(qs, r.n, 1), (unsigned)n_sol, best);
                 if (twin) twins++;
