@@ -508,3 +508,47 @@ dh_status dh_ikc_par234_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc
     *count = cnt;
     return DH_OK;
 }
+
+/* ======================================================================
+ * DH_IKC_PARALLEL_234: |det J|. With w the common direction of axes 2-4,
+ * the columns 3 - 2 and 4 - 3 have no angular part (w x (p2 - p3), w x
+ * (p3 - p4)), and with the reference point at the joint 5 point P (on
+ * axes 5 and 6: a5 = 0) columns 5 and 6 have no linear part; a Laplace
+ * expansion along those four columns leaves det J = +-[w . ((p2 - p3) x
+ * (p3 - p4))] [(P - p1) . (w x z1)] [w . (z5 x z6)] = +-(a2 a3 s3) u s5,
+ * u = a1 + a2 c2 + a3 cos(t2 + s2 t3) + a4 cos phi + sb d5 sin phi (the
+ * joint 5 point's distance from the plane of axes 1 and 2, phi = t2 +
+ * s2 t3 + s23 t4 as above).
+ * ====================================================================== */
+
+static int32_t par234q_theta(const dh_ikc_model_q *m, const int32_t *q, uint32_t i)
+{
+    return (int32_t)((uint32_t)q[i] + (uint32_t)m->off[i]);
+}
+
+uint32_t dh_ikc_par234_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int *ex)
+{
+    const int32_t *k = m->k;
+    const int32_t t2 = par234q_theta(m, q, 1u), t3 = par234q_theta(m, q, 2u), t4 = par234q_theta(m, q, 3u);
+    const uint32_t t23 = (uint32_t)t2 + (k[P_S2] > 0 ? (uint32_t)t3 : 0u - (uint32_t)t3);
+    const uint32_t phi = t23 + (k[P_S23] > 0 ? (uint32_t)t4 : 0u - (uint32_t)t4);
+    int32_t s, c, s2, c2, s3, c3;
+    uint32_t f[5];
+    static const int8_t fb[5] = { DH_QPOS_FRAC, DH_QPOS_FRAC, 30, 30, DH_QPOS_FRAC };
+    int64_t u;
+    f[0] = dh_q_abs_u32(m->a[1]);
+    f[1] = dh_q_abs_u32(m->a[2]);
+    dh_sincos_q(t3, &s3, &c3);
+    f[2] = dh_ikc_lows_q_(s3);
+    dh_sincos_q(par234q_theta(m, q, 4u), &s, &c);
+    f[3] = dh_ikc_lows_q_(s);
+    dh_sincos_q(t2, &s2, &c2);
+    dh_sincos_q((int32_t)phi, &s, &c);
+    /* a3 cos(t2 + s2 t3) = a3 (c2 c3 - s2 sin(s2 t3)), the product rounded */
+    u = dh_q_mul64(c2, c3) - dh_q_mul64(s2, k[P_S2] > 0 ? s3 : -s3);
+    u = ((int64_t)m->a[0] << 30) + dh_q_mul64(m->a[1], c2) + dh_q_mul64(m->a[2], dh_ikc_r30_q_(u));
+    u = dh_q_mla64(dh_q_mla64(u, m->a[3], c), k[P_E5], s);
+    f[4] = dh_ikc_low_q_(u, (uint64_t)dh_q_abs_u32(m->a[0]) + dh_q_abs_u32(m->a[1]) + 2u * dh_q_abs_u32(m->a[2]) +
+                                dh_q_abs_u32(m->a[3]) + dh_q_abs_u32(k[P_E5]));
+    return dh_ikc_prod_q_(f, fb, 5u, ex);
+}
