@@ -198,6 +198,7 @@ typedef struct {
     int tight;                          /**< the target's rotation is orthonormal within 2^-22 */
     int clamp;                          /**< the nearest solution was moved onto a limit */
     int uni;                            /**< every joint has the same vmax_q */
+    int cf;                             /**< q_out is the nearest closed-form solution (in the step box) */
     int32_t J[6 * DH_MAX_JOINTS];       /**< Jacobian at q (when jt) */
     int32_t e[6];                       /**< pose error / residual */
     int32_t dq[DH_MAX_JOINTS];          /**< step being built */
@@ -259,22 +260,13 @@ dh_status dh_track_init_q(dh_track_q *t, const dh_robot *r, const dh_ikc_model_q
  * next call too.
  * DH_TRACK_OK only when FK(q_out) (dh_fk_q) is within pos_tol and rot_tol
  * of the target.
- *
- * Report. When the nearest closed-form solution lies in the step box, q_out
- * is that solution of this target; then, if pos_tol >= t->cf_pos, rot_tol
- * >= DH_TRACK_CF_ROT_Q (the defaults), the target's rotation is orthonormal
- * within 2^-22 and no value was moved onto a limit, the errors are not
- * measured: rep->measured is 0, pos_err and rot_err hold the closed form's
- * contract bounds (ikc.h) t->cf_pos and DH_TRACK_CF_ROT_Q, state OK. In
- * every other case rep->measured is 1 and the errors are FK's at q_out.
- * Singularity measures: for a 6-joint robot with a spherical-wrist or
- * PARALLEL_234 model, when the lower bound |det J| K (det J from the
- * family's formula, K a per-robot constant of dh_track_init_q;
- * docs/design.md "Tracking in fixed point: the closed-form period without
- * J") proves sigma_min >= sing_threshold on such an unmeasured report,
- * manip is log2 |det J| and sigma_min that bound, near_singular 0;
- * otherwise (and for every other robot, model or report) manip and
- * sigma_min are dh_manipulability_q's of the Jacobian at q_out.
+ * When q_out is the nearest closed-form solution (in the step box), with
+ * pos_tol >= t->cf_pos and rot_tol >= DH_TRACK_CF_ROT_Q (the defaults), a
+ * target orthonormal within 2^-22, no value put on a limit, and the bound
+ * |det J| K (docs/design.md "Tracking in fixed point") >= sing_threshold:
+ * state OK, measured 0, pos_err and rot_err the closed form's bounds
+ * (ikc.h), manip log2 |det J| and sigma_min |det J| K. Otherwise measured
+ * 1, errors by FK and manip, sigma_min dh_manipulability_q's at q_out.
  * @param t      tracker from dh_track_init_q.
  * @param target next target frame; rotation orthonormal within
  *               DH_ROT_ERROR_TOL_Q, det > 0.

@@ -110,25 +110,20 @@ uint32_t dh_ikc_lows_q_(int32_t s)
     return (a > 256u) ? a - 256u : 0u;
 }
 
-uint32_t dh_ikc_prod_q_(const uint32_t *f, const int8_t *fb, unsigned k, int *ex)
+uint32_t dh_ikc_pmul_q_(uint32_t p, uint32_t f, int fb, int32_t *ex)
 {
-    uint64_t p = f[0];
-    int e = -fb[0];
-    unsigned i, b;
-    if (p == 0u) return 0u;
-    for (i = 1u; i < k; i++) {
-        if (f[i] == 0u) return 0u;
-        p = (uint64_t)dh_q_mul64((int32_t)p, (int32_t)f[i]);   /* both below 2^31 */
-        e -= fb[i];
-        b = dh_q_bitlen64(p);
-        if (b > 31u) {
-            p >>= b - 31u;
-            e += (int)(b - 31u);
-        }
+    uint64_t x;
+    unsigned b;
+    if (p == 0u || f == 0u) return 0u;
+    x = (uint64_t)dh_q_mul64((int32_t)p, (int32_t)f);   /* both below 2^31 */
+    b = dh_q_bitlen64(x);
+    *ex -= fb;
+    if (b > 31u) {
+        x >>= b - 31u;
+        *ex += (int32_t)(b - 31u);
+    } else {
+        x <<= 31u - b;
+        *ex -= (int32_t)(31u - b);
     }
-    b = dh_q_bitlen64(p);
-    p <<= 31u - b;
-    e -= (int)(31u - b);
-    *ex = e;
-    return (uint32_t)p;
+    return (uint32_t)x;
 }

@@ -526,29 +526,31 @@ static int32_t par234q_theta(const dh_ikc_model_q *m, const int32_t *q, uint32_t
     return (int32_t)((uint32_t)q[i] + (uint32_t)m->off[i]);
 }
 
-uint32_t dh_ikc_par234_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int *ex)
+uint32_t dh_ikc_par234_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t *ex)
 {
     const int32_t *k = m->k;
     const int32_t t2 = par234q_theta(m, q, 1u), t3 = par234q_theta(m, q, 2u), t4 = par234q_theta(m, q, 3u);
     const uint32_t t23 = (uint32_t)t2 + (k[P_S2] > 0 ? (uint32_t)t3 : 0u - (uint32_t)t3);
     const uint32_t phi = t23 + (k[P_S23] > 0 ? (uint32_t)t4 : 0u - (uint32_t)t4);
-    int32_t s, c, s2, c2, s3, c3;
-    uint32_t f[5];
-    static const int8_t fb[5] = { DH_QPOS_FRAC, DH_QPOS_FRAC, 30, 30, DH_QPOS_FRAC };
+    int32_t s, c, s3, c3;
+    uint32_t p;
     int64_t u;
-    f[0] = dh_q_abs_u32(m->a[1]);
-    f[1] = dh_q_abs_u32(m->a[2]);
-    dh_sincos_q(t3, &s3, &c3);
-    f[2] = dh_ikc_lows_q_(s3);
+    /* one sine or cosine pair at a time (a small frame) */
+    *ex = -30;
     dh_sincos_q(par234q_theta(m, q, 4u), &s, &c);
-    f[3] = dh_ikc_lows_q_(s);
-    dh_sincos_q(t2, &s2, &c2);
+    p = dh_ikc_pmul_q_((uint32_t)1 << 30, dh_ikc_lows_q_(s), 30, ex);
+    dh_sincos_q(t3, &s3, &c3);
+    p = dh_ikc_pmul_q_(p, dh_ikc_lows_q_(s3), 30, ex);
+    p = dh_ikc_pmul_q_(p, dh_q_abs_u32(m->a[1]), DH_QPOS_FRAC, ex);
+    p = dh_ikc_pmul_q_(p, dh_q_abs_u32(m->a[2]), DH_QPOS_FRAC, ex);
     dh_sincos_q((int32_t)phi, &s, &c);
+    u = ((int64_t)m->a[0] << 30) + dh_q_mla64(dh_q_mul64(m->a[3], c), k[P_E5], s);
+    dh_sincos_q(t2, &s, &c);
     /* a3 cos(t2 + s2 t3) = a3 (c2 c3 - s2 sin(s2 t3)), the product rounded */
-    u = dh_q_mul64(c2, c3) - dh_q_mul64(s2, k[P_S2] > 0 ? s3 : -s3);
-    u = ((int64_t)m->a[0] << 30) + dh_q_mul64(m->a[1], c2) + dh_q_mul64(m->a[2], dh_ikc_r30_q_(u));
-    u = dh_q_mla64(dh_q_mla64(u, m->a[3], c), k[P_E5], s);
-    f[4] = dh_ikc_low_q_(u, (uint64_t)dh_q_abs_u32(m->a[0]) + dh_q_abs_u32(m->a[1]) + 2u * dh_q_abs_u32(m->a[2]) +
-                                dh_q_abs_u32(m->a[3]) + dh_q_abs_u32(k[P_E5]));
-    return dh_ikc_prod_q_(f, fb, 5u, ex);
+    u += dh_q_mul64(m->a[1], c) +
+         dh_q_mul64(m->a[2], dh_ikc_r30_q_(dh_q_mul64(c, c3) - dh_q_mul64(s, k[P_S2] > 0 ? s3 : -s3)));
+    return dh_ikc_pmul_q_(p, dh_ikc_low_q_(u, (uint64_t)dh_q_abs_u32(m->a[0]) + dh_q_abs_u32(m->a[1]) +
+                                                 2u * dh_q_abs_u32(m->a[2]) + dh_q_abs_u32(m->a[3]) +
+                                                 dh_q_abs_u32(k[P_E5])),
+                          DH_QPOS_FRAC, ex);
 }

@@ -364,9 +364,9 @@ unsigned dh_ikc_elbow_q_(int32_t l1, int32_t l2, int32_t vx, int32_t vy, int32_t
  * wrist and PARALLEL_234 families (method: the family's function);
  * 0 (no bound) for SCARA, a factor within its rounding margin of 0, or a
  * prismatic value beyond 2^30 LSB. Integer only. */
-uint32_t dh_ikc_wrist_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int *ex);
-uint32_t dh_ikc_par234_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int *ex);
-static inline uint32_t dh_ikc_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int *ex)
+uint32_t dh_ikc_wrist_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t *ex);
+uint32_t dh_ikc_par234_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t *ex);
+static inline uint32_t dh_ikc_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t *ex)
 {
     if (m->kind == DH_IKC_PARALLEL_234) return dh_ikc_par234_detj_q_(m, q, ex);
     if (m->kind == DH_IKC_WRIST_RRR || m->kind == DH_IKC_WRIST_RRP) return dh_ikc_wrist_detj_q_(m, q, ex);
@@ -374,10 +374,11 @@ static inline uint32_t dh_ikc_detj_q_(const dh_ikc_model_q *m, const int32_t *q,
 }
 /* Helpers of the two (dh_ikc_common_q.c): lower bounds on |x| 2^-30 in
  * dh_qpos (x a sum of products of lengths and sines, sum the magnitudes of
- * its lengths) and on |s| (a sine, Q2.30); the product of k such bounds
- * (fb[i] fraction bits each) as mant 2^*ex, rounded down (0: a factor 0). */
+ * its lengths) and on |s| (a sine, Q2.30); p 2^*ex times f 2^-fb as a
+ * mantissa in [2^30, 2^31) (returned) and *ex, rounded down (0 when p or
+ * f is 0; p below 2^31). */
 uint32_t dh_ikc_low_q_(int64_t x, uint64_t sum);
 uint32_t dh_ikc_lows_q_(int32_t s);
-uint32_t dh_ikc_prod_q_(const uint32_t *f, const int8_t *fb, unsigned k, int *ex);
+uint32_t dh_ikc_pmul_q_(uint32_t p, uint32_t f, int fb, int32_t *ex);
 
 #endif /* DHMATH_SRC_IKC_IMPL_H */

@@ -112,17 +112,17 @@ static DH_NOINLINE int32_t trq_length(const dh_robot *r)
  * k is the best of four, R_i 2^-k from at most 1 to at most 8; every
  * step rounded towards a smaller bound. hp_k 0: no bound (no model with
  * a |det J| formula, or a prismatic joint without limits). */
-static uint32_t trq_hp_try(const uint64_t *R, uint32_t pris, int k, int *e)
+static uint32_t trq_hp_try(const uint32_t *R, uint32_t *c, uint32_t pris, int sh, int k, int32_t *e)
 {
-    uint64_t c[6], sum = 0u;
-    const int sh = k + DH_QPOS_FRAC - 4;   /* R / 2^sh: R 2^-k in Q4 */
+    uint64_t sum = 0u;
     uint32_t i, j;
     if (k < -3) return 0u;
     for (i = 0u; i < 6u; i++) {
         if ((pris >> i) & 1u) {
-            c[i] = (k >= 4) ? 1u : ((uint64_t)1 << (unsigned)(8 - 2 * k));   /* 2^-2k in Q8, up */
+            c[i] = (k >= 4) ? 1u : ((uint32_t)1 << (unsigned)(8 - 2 * k));   /* 2^-2k in Q8, up */
         } else {
-            const uint64_t x = (sh >= 0) ? ((R[i] + (((uint64_t)1 << sh) - 1u)) >> sh) : (R[i] << (unsigned)(-sh));
+            const uint32_t x = (sh >= 0) ? (uint32_t)(((uint64_t)R[i] + (((uint64_t)1 << sh) - 1u)) >> sh)
+                                         : ((R[i] >> (unsigned)(31 + sh)) != 0u ? 0xFFFFFFFFu : R[i] << (unsigned)(-sh));
             if (x > 128u) return 0u;   /* R 2^-k beyond 8 */
             c[i] = 256u + x * x;       /* Q8, below 2^15 */
         }
@@ -130,7 +130,11 @@ static uint32_t trq_hp_try(const uint64_t *R, uint32_t pris, int k, int *e)
     for (j = 0u; j < 6u; j++) {
         uint64_t p = 256u;
         for (i = 0u; i < 6u; i++)
-            if (i != j) p = (p * c[i] + 255u) >> 8;   /* below 2^8 65^5 < 2^39 */
+            if (i != j) {
+                /* p c rounded up, p below 2^8 65^5 < 2^39 and c below 2^15: in two halves */
+                const uint64_t lo = (uint64_t)((uint32_t)p & 0xFFFFFFu) * c[i], hi = (p >> 24) * c[i];
+                p = ((hi << 24) + lo + 255u) >> 8;
+            }
         sum += p;
     }
     *e = -3 * k + ((k < 0) ? k : 0);
@@ -138,32 +142,68 @@ static uint32_t trq_hp_try(const uint64_t *R, uint32_t pris, int k, int *e)
     return dh_q_ufloor30(256u, dh_q_isqrt62(sum << 8) + 1u);
 }
 
-static DH_NOINLINE void trq_hp_init(dh_track_q *t)
+/* The chain lengths R_i (dh_qpos: sums of magnitudes) divided by 2^s0
+ * rounded up, s0 the least shift that brings R_0 (the largest) below 2^31,
+ * into t->gs[0..5] (the measures' scratch, free here); joint i prismatic:
+ * bit i of *pris. Returns s0, or -1 for no bound (a prismatic joint
+ * without limits). */
+static uint64_t trq_hp_len(const dh_robot *r, uint32_t i)
+{
+    const dh_joint *j = &r->joint[i];
+    uint64_t x = (uint64_t)dh_q_abs_u32(j->a_q) + dh_q_abs_u32(j->d_q);
+    if (j->type == DH_JOINT_PRISMATIC)
+        x += (dh_q_abs_u32(j->qmin_q) > dh_q_abs_u32(j->qmax_q)) ? dh_q_abs_u32(j->qmin_q) : dh_q_abs_u32(j->qmax_q);
+    return x;
+}
+
+static DH_NOINLINE int trq_hp_chain(dh_track_q *t, uint32_t *pris)
 {
     const dh_robot *const r = t->r;
-    uint64_t R[6], acc, mx = 0u;
-    uint32_t i, pris = 0u;
-    int k, k0;
+    const uint64_t tool = (uint64_t)dh_q_abs_u32(r->tool_q.p[0]) + dh_q_abs_u32(r->tool_q.p[1]) +
+                          dh_q_abs_u32(r->tool_q.p[2]);
+    uint64_t acc = tool;
+    uint32_t i;
+    int s0 = 0;
+    *pris = 0u;
+    for (i = 0u; i < 6u; i++) {
+        if (r->joint[i].type == DH_JOINT_PRISMATIC) {
+            if (r->joint[i].qmin_q > r->joint[i].qmax_q) return -1;
+            *pris |= 1u << i;
+        }
+        acc += trq_hp_len(r, i);
+    }
+    while ((acc >> s0) >= ((uint64_t)1 << 31)) s0++;
+    acc = tool;
+    for (i = 6u; i-- > 0u;) {
+        acc += trq_hp_len(r, i);
+        t->gs[i] = (int32_t)(uint32_t)((acc + (((uint64_t)1 << s0) - 1u)) >> s0);
+    }
+    return s0;
+}
+
+/* The rest of dh_track_init_q after the Jacobian at q0: t->jt, t->pris,
+ * t->uni and the singularity bound's factor t->hp_k, t->hp_e. */
+static DH_NOINLINE void trq_hp_init(dh_track_q *t)
+{
+    uint32_t pris = 0u, i;
+    int k, k0, s0;
+    t->jt = 1;
+    t->pris = dh_kin_pris_q_(t->r);
+    t->uni = 1;
+    for (i = 1u; i < t->r->n; i++)
+        if (t->r->joint[i].vmax_q != t->r->joint[0].vmax_q) t->uni = 0;
     t->hp_k = 0u;
     t->hp_e = 0;
-    if (t->m == NULL || r->n != 6u || t->m->kind == DH_IKC_SCARA) return;
-    acc = (uint64_t)dh_q_abs_u32(r->tool_q.p[0]) + dh_q_abs_u32(r->tool_q.p[1]) + dh_q_abs_u32(r->tool_q.p[2]);
-    for (i = 6u; i-- > 0u;) {
-        const dh_joint *j = &r->joint[i];
-        acc += (uint64_t)dh_q_abs_u32(j->a_q) + dh_q_abs_u32(j->d_q);
-        if (j->type == DH_JOINT_PRISMATIC) {
-            if (j->qmin_q > j->qmax_q) return;
-            acc += (dh_q_abs_u32(j->qmin_q) > dh_q_abs_u32(j->qmax_q)) ? dh_q_abs_u32(j->qmin_q) : dh_q_abs_u32(j->qmax_q);
-            pris |= 1u << i;
-        }
-        R[i] = acc;
-        if (acc > mx) mx = acc;
-    }
-    /* k0: the smallest k with every R_i <= 2^k */
-    k0 = (int)dh_q_bitlen64(mx) - DH_QPOS_FRAC;
+    if (t->m == NULL || t->r->n != 6u || t->m->kind == DH_IKC_SCARA) return;
+    s0 = trq_hp_chain(t, &pris);
+    if (s0 < 0) return;
+    /* k0: the smallest k with every R_i <= 2^k (R_0 the largest) */
+    k0 = (int)dh_q_bitlen64((uint64_t)(uint32_t)t->gs[0]) + s0 - DH_QPOS_FRAC;
     for (k = k0 - 3; k <= k0; k++) {
-        int e = 0;
-        const uint32_t v = trq_hp_try(R, pris, k, &e);
+        int32_t e = 0;
+        /* R 2^-k in Q4: R' / 2^(k + F - 4 - s0) */
+        const uint32_t v = trq_hp_try((const uint32_t *)t->gs, (uint32_t *)&t->gs[6], pris,
+                                      k + DH_QPOS_FRAC - 4 - s0, k, &e);
         /* v 2^e above hp_k 2^hp_e? (both in [2^23, 2^30]: compare by shifts) */
         if (v != 0u && (t->hp_k == 0u || (e >= t->hp_e ? ((uint64_t)v << (unsigned)(e - t->hp_e > 40 ? 40 : e - t->hp_e)) > t->hp_k
                                                         : v > ((uint64_t)t->hp_k << (unsigned)(t->hp_e - e > 40 ? 40 : t->hp_e - e))))) {
@@ -211,11 +251,6 @@ dh_status dh_track_init_q(dh_track_q *t, const dh_robot *r, const dh_ikc_model_q
     /* dh_jacobian_q in two private calls (its checks once here, then its
      * body writing FK straight into t->T), as in every step */
     if (dh_kin_jac_check_q_(r) != DH_OK || dh_kin_jac_q_(r, t->q, t->J, &t->T) != 0) return DH_ERR_OVERFLOW;
-    t->jt = 1;
-    t->pris = dh_kin_pris_q_(r);
-    t->uni = 1;
-    for (i = 1u; i < n; i++)
-        if (r->joint[i].vmax_q != r->joint[0].vmax_q) t->uni = 0;
     trq_hp_init(t);
     return DH_OK;
 }
@@ -715,6 +750,7 @@ static DH_NOINLINE void trq_begin(dh_track_q *t, const dh_frame_q *target, int32
     t->ns = 0u;
     t->ist = DH_ERR_UNAVAILABLE;
     t->clamp = 0;
+    t->cf = 0;
     t->tight = dh_rot_ok_q_(target, TRQ_TIGHT);
     t->tst = (t->tight || dh_kin_rot_ok_q_(target)) ? DH_OK : DH_ERR_NOT_RIGID;
 }
@@ -772,8 +808,8 @@ static DH_NOINLINE void trq_fill(const dh_track_q *t, int ok)
     rep->near_singular = (rep->sigma_min < t->sing_threshold) ? 1 : 0;
 }
 
-/* q_out (t->q) is the nearest closed-form solution of the target: 1 when
- * the report is complete without J or FK (the report filled: state OK,
+/* When q_out (t->q) is the nearest closed-form solution of the target
+ * (t->cf): 1 when the report is complete without J or FK (the report filled: state OK,
  * the closed form's error bounds, the singularity bound without J). That
  * needs tolerances no tighter than the closed form's bounds, a target
  * orthonormal within 2^-22 and no value moved onto a limit (the closed
@@ -783,9 +819,10 @@ static DH_NOINLINE int trq_cf_done(dh_track_q *t)
 {
     dh_track_report_q *const rep = t->rep;
     uint32_t mant;
-    int ex, sh;
+    int32_t ex;
+    int sh;
     int64_t v;
-    if (!t->tight || t->clamp || t->hp_k == 0u || t->pos_tol < t->cf_pos || t->rot_tol < DH_TRACK_CF_ROT_Q) return 0;
+    if (!t->cf || !t->tight || t->clamp || t->hp_k == 0u || t->pos_tol < t->cf_pos || t->rot_tol < DH_TRACK_CF_ROT_Q) return 0;
     mant = dh_ikc_detj_q_(t->m, t->q, &ex);
     if (mant == 0u) return 0;
     /* sigma = mant 2^ex hp_k 2^(hp_e - 30) in dh_qpos, rounded down */
@@ -814,7 +851,7 @@ static DH_NOINLINE int trq_cf_done(dh_track_q *t)
  * frames. */
 dh_status dh_track_step_q(dh_track_q *t, const dh_frame_q *target, int32_t *q_out, dh_track_report_q *rep)
 {
-    int k = 0, cf = 0;
+    int k = 0;
     DH_ASSERT(t != NULL);
     DH_ASSERT(t->r != NULL);
     DH_ASSERT(target != NULL);
@@ -831,7 +868,7 @@ dh_status dh_track_step_q(dh_track_q *t, const dh_frame_q *target, int32_t *q_ou
             if (t->ist == DH_OK) t->ist = dh_ikc_finish_q_(t->m, t->q, t->sol, &t->ns);
         }
         if (!trq_pick(t)) {
-            cf = 1;
+            t->cf = 1;
         } else {
             trq_need_j(t);
             trq_manip(t, NULL, &t->sg);
@@ -860,7 +897,7 @@ dh_status dh_track_step_q(dh_track_q *t, const dh_frame_q *target, int32_t *q_ou
     }
     trq_move(t);
     t->jt = 0;
-    if (cf && trq_cf_done(t)) return DH_OK;
+    if (trq_cf_done(t)) return DH_OK;
     k = trq_at_out(t);
     if (k) {
         trq_manip(t, &t->rep->manip, &t->rep->sigma_min);
