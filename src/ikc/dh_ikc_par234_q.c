@@ -521,15 +521,10 @@ dh_status dh_ikc_par234_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc
  * s2 t3 + s23 t4 as above).
  * ====================================================================== */
 
-static int32_t par234q_theta(const dh_ikc_model_q *m, const int32_t *q, uint32_t i)
-{
-    return (int32_t)((uint32_t)q[i] + (uint32_t)m->off[i]);
-}
-
 uint32_t dh_ikc_par234_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t *ex)
 {
     const int32_t *k = m->k;
-    const int32_t t2 = par234q_theta(m, q, 1u), t3 = par234q_theta(m, q, 2u), t4 = par234q_theta(m, q, 3u);
+    const int32_t t2 = dh_ikc_theta_q_(m, q, 1u), t3 = dh_ikc_theta_q_(m, q, 2u), t4 = dh_ikc_theta_q_(m, q, 3u);
     const uint32_t t23 = (uint32_t)t2 + (k[P_S2] > 0 ? (uint32_t)t3 : 0u - (uint32_t)t3);
     const uint32_t phi = t23 + (k[P_S23] > 0 ? (uint32_t)t4 : 0u - (uint32_t)t4);
     int32_t s, c, s3, c3;
@@ -537,7 +532,7 @@ uint32_t dh_ikc_par234_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_
     int64_t u;
     /* one sine or cosine pair at a time (a small frame) */
     *ex = -30;
-    dh_sincos_q(par234q_theta(m, q, 4u), &s, &c);
+    dh_sincos_q(dh_ikc_theta_q_(m, q, 4u), &s, &c);
     p = dh_ikc_pmul_q_((uint32_t)1 << 30, dh_ikc_lows_q_(s), 30, ex);
     dh_sincos_q(t3, &s3, &c3);
     p = dh_ikc_pmul_q_(p, dh_ikc_lows_q_(s3), 30, ex);

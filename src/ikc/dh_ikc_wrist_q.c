@@ -627,13 +627,6 @@ dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_
 
 /* ---- wrist families: |det J| -------------------------------------------- */
 
-/* canonical angle of revolute joint i at q (mod 2^32 LSB: 65536 deg, a
- * whole number of turns) */
-static int32_t wristq_theta(const dh_ikc_model_q *m, const int32_t *q, uint32_t i)
-{
-    return (int32_t)((uint32_t)q[i] + (uint32_t)m->off[i]);
-}
-
 /*
  * With the reference point at the wrist centre o, J = [J11 0; J21 J22]
  * (the wrist's columns have no linear part), so det J = det J11 det J22
@@ -655,19 +648,19 @@ uint32_t dh_ikc_wrist_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t
     int64_t u;
     /* one sine or cosine pair at a time (a small frame) */
     *ex = -30;
-    dh_sincos_q(wristq_theta(m, q, 4u), &s, &c);
+    dh_sincos_q(dh_ikc_theta_q_(m, q, 4u), &s, &c);
     p = dh_ikc_pmul_q_((uint32_t)1 << 30, dh_ikc_lows_q_(s), 30, ex);
     if (m->kind == DH_IKC_WRIST_RRR) {
         const int32_t e = k[K_E];
         const uint64_t l3 = (uint64_t)dh_q_abs_u32(m->a[2]) + dh_q_abs_u32(e);
         int64_t bb;
-        dh_sincos_q(wristq_theta(m, q, 2u), &s, &c);
+        dh_sincos_q(dh_ikc_theta_q_(m, q, 2u), &s, &c);
         bb = dh_q_mul64(m->a[2], s) - dh_q_mul64(e, c);   /* B sigma, Q30 */
         A = dh_ikc_r30_q_(((int64_t)m->a[1] << 30) + dh_q_mla64(dh_q_mul64(m->a[2], c), e, s));
         B = dh_ikc_r30_q_(k[K_SIG] > 0 ? bb : -bb);
         p = dh_ikc_pmul_q_(p, dh_q_abs_u32(m->a[1]), DH_QPOS_FRAC, ex);
         p = dh_ikc_pmul_q_(p, dh_ikc_low_q_(bb, l3), DH_QPOS_FRAC, ex);
-        dh_sincos_q(wristq_theta(m, q, 1u), &s, &c);
+        dh_sincos_q(dh_ikc_theta_q_(m, q, 1u), &s, &c);
         u = ((int64_t)m->a[0] << 30) + dh_q_mul64(A, c) - dh_q_mul64(B, s);
         sum = (uint64_t)dh_q_abs_u32(m->a[0]) + dh_q_abs_u32(m->a[1]) + 2u * l3;
     } else {
@@ -675,7 +668,7 @@ uint32_t dh_ikc_wrist_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t
         const int64_t L = (int64_t)q[2] + m->d[2] + k[K_LOFF];
         if (L >= ((int64_t)1 << 30) || L <= -((int64_t)1 << 30)) return 0u;
         p = dh_ikc_pmul_q_(p, dh_ikc_low_q_(L << 30, 0u), DH_QPOS_FRAC, ex);
-        dh_sincos_q(wristq_theta(m, q, 1u), &s, &c);
+        dh_sincos_q(dh_ikc_theta_q_(m, q, 1u), &s, &c);
         u = ((int64_t)m->a[0] << 30) + dh_q_mul64(k[K_E], c) + dh_q_mul64(k[K_SIG] > 0 ? (int32_t)L : -(int32_t)L, s);
         sum = (uint64_t)dh_q_abs_u32(m->a[0]) + dh_q_abs_u32(k[K_E]) + dh_ikc_abs64_q_(L);
     }

@@ -365,6 +365,12 @@ unsigned dh_ikc_elbow_q_(int32_t l1, int32_t l2, int32_t vx, int32_t vy, int32_t
  * 0 (no bound) for SCARA, a factor within its rounding margin of 0, or a
  * prismatic value beyond 2^30 LSB. Integer only. */
 uint32_t dh_ikc_wrist_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t *ex);
+/* canonical angle of revolute joint i at the robot's value q[i] (modulo
+ * 2^32 LSB: 65536 deg, a whole number of turns) */
+DH_INLINE int32_t dh_ikc_theta_q_(const dh_ikc_model_q *m, const int32_t *q, uint32_t i)
+{
+    return (int32_t)((uint32_t)q[i] + (uint32_t)m->off[i]);
+}
 uint32_t dh_ikc_par234_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t *ex);
 static inline uint32_t dh_ikc_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t *ex)
 {

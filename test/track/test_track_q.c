@@ -640,6 +640,35 @@ static void detj_against_double(void)
     }
 }
 
+/* The defaults: pos_tol is the closed form's bound (328 LSB, 5e-3 mm for
+ * the robots in mm, at least ikc.h's bound), so that a reached closed-form
+ * solution is reported without FK; a tighter pos_tol or rot_tol, or a
+ * target orthonormal only within DH_ROT_ERROR_TOL_Q, is measured by FK
+ * (and still OK only within the tolerances: step_checked) */
+static void defaults_and_measured(void)
+{
+    rig *const gp = &the_rig;
+    dh_track_q *const tp = &the_trk;
+    const int32_t q0[6] = { DH_Q16(10.0), DH_Q16(-60.0), DH_Q16(70.0), DH_Q16(20.0), DH_Q16(40.0), DH_Q16(30.0) };
+    int variant;
+    rig_make(gp, &dhs_ur5_mm, 0);
+    if (!gp->closed) return;
+    for (variant = 0; variant < 4; variant++) {
+        dh_frame_q T;
+        chk c;
+        DHT_EQ_INT(dh_track_init_q(tp, &gp->r, &gp->m, q0, DT_US), DH_OK);
+        DHT_EQ_INT(tp->pos_tol, tp->cf_pos);
+        DHT_TRUE(tp->cf_pos >= (int32_t)ceil(5e-3 * 65536.0) && tp->rot_tol >= DH_TRACK_CF_ROT_Q);
+        target_of(gp, q0, &T);
+        if (variant == 1) tp->pos_tol = tp->cf_pos - 1;
+        if (variant == 2) tp->rot_tol = DH_TRACK_CF_ROT_Q - 1;
+        if (variant == 3) T.r[0][0] += 4096;   /* 3.8e-6 from orthonormal: rigid, not tight */
+        chk_start(&c, q0, 6u);
+        DHT_EQ_INT(step_checked(gp, tp, &c, &T, "defaults"), DH_TRACK_OK);
+        DHT_EQ_INT(last_rep.measured, variant == 0 ? 0 : 1);
+    }
+}
+
 /* bad targets: the joints brake; init errors (twin: bad_targets_brake of test_track.c) */
 static void bad_targets_brake(void)
 {
@@ -665,6 +694,7 @@ static void bad_targets_brake(void)
 static const dht_case cases[] = {
     DHT_CASE(bad_targets_brake),
     DHT_CASE(detj_against_double),
+    DHT_CASE(defaults_and_measured),
     DHT_CASE(smooth_paths_every_call_ok),
     DHT_CASE(singular_lines),
     DHT_CASE(leaving_the_workspace),
