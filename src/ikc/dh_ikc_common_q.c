@@ -86,7 +86,6 @@ DH_NOINLINE unsigned dh_ikc_elbow_q_(int32_t l1, int32_t l2, int32_t vx, int32_t
     return (S == 0u) ? 1u : 2u;
 }
 
-
 /* ---- |det J| of the canonical chain (the tracker's singularity bound) ---- */
 
 /* A lower bound on |x| 2^-30 (x a sum of products of lengths, dh_qpos, and
@@ -119,11 +118,13 @@ uint32_t dh_ikc_pmul_q_(uint32_t p, uint32_t f, int fb, int32_t *ex)
     b = dh_q_bitlen64(x);
     *ex -= fb;
     if (b > 31u) {
-        x >>= b - 31u;
-        *ex += (int32_t)(b - 31u);
+        const unsigned d = b - 31u;
+        x >>= d;
+        *ex += (int32_t)d;
     } else {
-        x <<= 31u - b;
-        *ex -= (int32_t)(31u - b);
+        const unsigned d = 31u - b;
+        x <<= d;
+        *ex -= (int32_t)d;
     }
     return (uint32_t)x;
 }

@@ -667,7 +667,7 @@ uint32_t dh_ikc_wrist_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t
         /* L = d3 + c_alpha3 d4, d3 = q3 + the d offset */
         const int64_t L = (int64_t)q[2] + m->d[2] + k[K_LOFF];
         if (L >= ((int64_t)1 << 30) || L <= -((int64_t)1 << 30)) return 0u;
-        p = dh_ikc_pmul_q_(p, dh_ikc_low_q_(L << 30, 0u), DH_QPOS_FRAC, ex);
+        p = dh_ikc_pmul_q_(p, dh_ikc_low_q_((int64_t)(dh_ikc_abs64_q_(L) << 30), 0u), DH_QPOS_FRAC, ex);
         dh_sincos_q(dh_ikc_theta_q_(m, q, 1u), &s, &c);
         u = ((int64_t)m->a[0] << 30) + dh_q_mul64(k[K_E], c) + dh_q_mul64(k[K_SIG] > 0 ? (int32_t)L : -(int32_t)L, s);
         sum = (uint64_t)dh_q_abs_u32(m->a[0]) + dh_q_abs_u32(k[K_E]) + dh_ikc_abs64_q_(L);

@@ -369,7 +369,8 @@ uint32_t dh_ikc_wrist_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t
  * 2^32 LSB: 65536 deg, a whole number of turns) */
 DH_INLINE int32_t dh_ikc_theta_q_(const dh_ikc_model_q *m, const int32_t *q, uint32_t i)
 {
-    return (int32_t)((uint32_t)q[i] + (uint32_t)m->off[i]);
+    const uint32_t t = (uint32_t)q[i] + (uint32_t)m->off[i];
+    return (int32_t)t;
 }
 uint32_t dh_ikc_par234_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t *ex);
 static inline uint32_t dh_ikc_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t *ex)

@@ -174,9 +174,10 @@ static DH_NOINLINE int trq_hp_chain(dh_track_q *t, uint32_t *pris)
     }
     while ((acc >> s0) >= ((uint64_t)1 << 31)) s0++;
     acc = tool;
-    for (i = 6u; i-- > 0u;) {
-        acc += trq_hp_len(r, i);
-        t->gs[i] = (int32_t)(uint32_t)((acc + (((uint64_t)1 << s0) - 1u)) >> s0);
+    for (i = 0u; i < 6u; i++) {
+        const uint32_t j = 5u - i;
+        acc += trq_hp_len(r, j);
+        t->gs[j] = (int32_t)(uint32_t)((acc + (((uint64_t)1 << s0) - 1u)) >> s0);
     }
     return s0;
 }
@@ -383,22 +384,31 @@ static DH_NOINLINE int trq_nearest(dh_track_q *t, dh_status st)
     for (k = 0u; k < ns; k++) {
         uint32_t tn = 0u, td = 1u;
         int64_t sm = 0;
-        for (i = 0u; i < n; i++) {
+        /* joint by joint; a solution already slower than the best (one
+         * rate) is left: it loses whatever its other joints */
+        for (i = 0u; i < n && !(found && t->uni && tn > btn); i++) {
+            uint32_t du, d, v;
+            int later;
             if (!trq_onto1(t, &t->sol[k], i)) break;
             /* |q*_i - q_i| exact in uint32, saturated at INT32_MAX */
-            const int32_t a = t->sol[k].q[i], b = t->q[i];
-            const uint32_t du = (a >= b) ? (uint32_t)a - (uint32_t)b : (uint32_t)b - (uint32_t)a;
-            const uint32_t d = (du > (uint32_t)INT32_MAX) ? (uint32_t)INT32_MAX : du;
-            const uint32_t v = (uint32_t)t->r->joint[i].vmax_q;
+            du = (t->sol[k].q[i] >= t->q[i]) ? (uint32_t)t->sol[k].q[i] - (uint32_t)t->q[i]
+                                             : (uint32_t)t->q[i] - (uint32_t)t->sol[k].q[i];
+            d = (du > (uint32_t)INT32_MAX) ? (uint32_t)INT32_MAX : du;
+            v = (uint32_t)t->r->joint[i].vmax_q;
             sm += (int64_t)d;
             /* time d / v > tn / td ? (v INT32_MAX: unlimited, time 0);
              * every factor below 2^31: exact signed products; with one
              * rate for every joint (t->uni) the times compare as d */
-            if (v < (uint32_t)INT32_MAX && (t->uni ? d > tn : trq_mul(d, td) > trq_mul(tn, v))) {
+            if (v >= (uint32_t)INT32_MAX) {
+                later = 0;
+            } else if (t->uni) {
+                later = (d > tn) ? 1 : 0;
+            } else {
+                later = (trq_mul(d, td) > trq_mul(tn, v)) ? 1 : 0;
+            }
+            if (later) {
                 tn = d;
                 td = t->uni ? 1u : v;
-                /* already slower than the best (one rate): it loses */
-                if (found && t->uni && tn > btn) break;
             }
         }
         if (i < n) continue;   /* beyond a limit, or slower */
@@ -829,7 +839,7 @@ static DH_NOINLINE int trq_cf_done(dh_track_q *t)
     v = dh_q_mul64((int32_t)mant, (int32_t)t->hp_k);
     sh = ex + t->hp_e - 30 + DH_QPOS_FRAC;
     if (sh >= 0)
-        v = (sh >= 2) ? INT32_MAX : (v << sh);   /* v >= 2^60: saturated */
+        v = (sh >= 2) ? INT32_MAX : (v << sh);   /* v >= 2^30: shifted by 2 or more it saturates */
     else
         v = (sh <= -63) ? 0 : (v >> -sh);
     if (v > INT32_MAX) v = INT32_MAX;
