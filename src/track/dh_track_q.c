@@ -388,7 +388,6 @@ static DH_NOINLINE int trq_nearest(dh_track_q *t, dh_status st)
          * rate) is left: it loses whatever its other joints */
         for (i = 0u; i < n && !(found && t->uni && tn > btn); i++) {
             uint32_t du, d, v;
-            int later;
             if (!trq_onto1(t, &t->sol[k], i)) break;
             /* |q*_i - q_i| exact in uint32, saturated at INT32_MAX */
             du = (t->sol[k].q[i] >= t->q[i]) ? (uint32_t)t->sol[k].q[i] - (uint32_t)t->q[i]
@@ -399,16 +398,13 @@ static DH_NOINLINE int trq_nearest(dh_track_q *t, dh_status st)
             /* time d / v > tn / td ? (v INT32_MAX: unlimited, time 0);
              * every factor below 2^31: exact signed products; with one
              * rate for every joint (t->uni) the times compare as d */
-            if (v >= (uint32_t)INT32_MAX) {
-                later = 0;
-            } else if (t->uni) {
-                later = (d > tn) ? 1 : 0;
-            } else {
-                later = (trq_mul(d, td) > trq_mul(tn, v)) ? 1 : 0;
-            }
-            if (later) {
-                tn = d;
-                td = t->uni ? 1u : v;
+            if (v < (uint32_t)INT32_MAX) {
+                const int64_t now = t->uni ? (int64_t)d : trq_mul(d, td);
+                const int64_t was = t->uni ? (int64_t)tn : trq_mul(tn, v);
+                if (now > was) {
+                    tn = d;
+                    td = t->uni ? 1u : v;
+                }
             }
         }
         if (i < n) continue;   /* beyond a limit, or slower */

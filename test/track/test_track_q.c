@@ -601,7 +601,7 @@ static void detj_against_double(void)
             int32_t q[DH_MAX_JOINTS], qo[DH_MAX_JOINTS];
             double det, sg, lo;
             uint32_t mant;
-            int ex;
+            int32_t ex;
             dh_frame_q T;
             dh_track_report_q rep;
             random_q(gp, q);
