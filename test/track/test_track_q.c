@@ -15,7 +15,11 @@
  * lines 1 mm from the wrist singularity and through the shoulder
  * singularity then held (OK again within the time the step bound allows),
  * a line leaving the workspace and coming back, a target that jumps (with
- * and without amax). The closed form is used only for a robot whose reach
+ * and without amax). A report without FK (measured 0) must hold the closed
+ * form's bounds with state OK and a singularity bound at most the smallest
+ * singular value of the double Jacobian; |det J| without J is checked
+ * against double near each singularity (detj_against_double), the
+ * defaults and the measured cases in defaults_and_measured. The closed form is used only for a robot whose reach
  * fits its range (ikc.h: 2^30 LSB, 2^(30 - DH_QPOS_FRAC) mm): with
  * DH_QPOS_FRAC 20 (1024 mm) the robots in mm are tracked by damped steps
  * only, and the line leaving the workspace stops within the format.
