@@ -251,11 +251,6 @@ static int32_t dlsq_log2_frac(uint32_t x0)
     return (int32_t)f;
 }
 
-int32_t dh_kin_log2_q_(uint32_t mant, int ex)
-{
-    return (ex + 30) * 65536 + dlsq_log2_frac(mant);
-}
-
 /* log2 sqrt det G in Q16.16 from the factor of A': G = D A' D with
  * D = diag(2^(c_k + 15)) in Q(g_k) units (A' read as a real), L_jj =
  * 2^ik_j / iy_j, so log2 sqrt det G = sum (c_j + 15 - g_j + ik_j -

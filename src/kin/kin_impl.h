@@ -87,9 +87,6 @@ dh_status dh_kin_rot_error_to_q_(const dh_frame_q *F_target, const dh_frame_q *F
 #define DH_DLS_SAVE_Q 21u
 void dh_kin_manip_q_(dh_dls_work_q *c, int32_t *w, int32_t *sigma_min, int32_t *save);
 dh_status dh_kin_dls_q_(dh_dls_work_q *c, const int32_t *e, int32_t lambda, int32_t *dq);
-/* floor(65536 log2(mant 2^ex)), mant in [2^30, 2^31) (dh_manipulability_q's
- * logarithm, Q16.16); |ex + 31| below 2^15. */
-int32_t dh_kin_log2_q_(uint32_t mant, int ex);
 /* bit i set when joint i of r is prismatic */
 uint32_t dh_kin_pris_q_(const dh_robot *r);
 

@@ -814,6 +814,24 @@ static DH_NOINLINE void trq_fill(const dh_track_q *t, int ok)
     rep->near_singular = (rep->sigma_min < t->sing_threshold) ? 1 : 0;
 }
 
+/* 65536 log2(mant 2^ex), mant in [2^30, 2^31), from the top 16 bits of
+ * mant by 16 squarings in 32 bits (x in Q15), each rounded down: below the
+ * exact value by less than 8 LSB (the mantissa's truncation 2^-15 and the
+ * squarings' add 2^-15 / ln 2 and at most as much again to the log). */
+static int32_t trq_log2(uint32_t mant, int32_t ex)
+{
+    uint32_t x = mant >> 15, f = 0u, b;
+    for (b = 0u; b < 16u; b++) {
+        x = (x * x) >> 15;   /* x below 2^16: the square below 2^32 */
+        f <<= 1;
+        if (x >= 0x10000u) {
+            x >>= 1;
+            f |= 1u;
+        }
+    }
+    return (ex + 30) * 65536 + (int32_t)f;
+}
+
 /* When q_out (t->q) is the nearest closed-form solution of the target
  * (t->cf): 1 when the report is complete without J or FK (the report filled: state OK,
  * the closed form's error bounds, the singularity bound without J). That
@@ -843,7 +861,7 @@ static DH_NOINLINE int trq_cf_done(dh_track_q *t)
     rep->state = DH_TRACK_OK;
     rep->pos_err = t->cf_pos;
     rep->rot_err = DH_TRACK_CF_ROT_Q;
-    rep->manip = dh_kin_log2_q_(mant, ex);
+    rep->manip = trq_log2(mant, ex);
     rep->sigma_min = (int32_t)v;
     rep->near_singular = 0;
     rep->measured = 0;

@@ -631,6 +631,10 @@ static void detj_against_double(void)
             DHT_EQ_INT(dh_track_step_q(tp, &T, qo, &rep), DH_OK);
             DHT_EQ_INT(rep.state, DH_TRACK_OK);
             if (!rep.measured) {
+                /* manip: log2 of the bound lo, less than 8 LSB below (trq_log2) */
+                const double lg = 65536.0 * log2(lo);
+                DHT_TRUE_MSG(rep.manip <= lg + 1e-6 && rep.manip > lg - 8.0, "%s: manip %ld, 65536 log2 |det J| %.3f",
+                             gp->d->name, (long)rep.manip, lg);
                 cfs++;
                 DHT_TRUE_MSG(rep.sigma_min / QPOS <= sg && rep.sigma_min >= tp->sing_threshold,
                              "%s: sigma bound %.6g, true %.6g", gp->d->name, rep.sigma_min / QPOS, sg);
