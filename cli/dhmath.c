@@ -984,6 +984,22 @@ static int track_next(char *line, size_t cap, unsigned *lineno, dh_mat4_f32 *T)
  * dh_qpos, the period a whole number of microseconds, each target EXPR
  * evaluated in float and rounded to a dh_frame_q. The rate limits are the
  * fixed copies dh_robot_set_rates_f32 stored. */
+/* The report's errors measured by FK at q when the tracker gave the closed
+ * form's bounds instead (rep->measured 0): dh_fk_q, the position distance
+ * and dh_rot_error_q's angle, rounded to the report's formats. */
+static void track_fixed_measure(const dh_robot *r, const dh_frame_q *F, const int32_t *q, dh_track_report_q *rep)
+{
+    dh_frame_q T;
+    dh_dir3_q w;
+    double p2 = 0.0;
+    unsigned k;
+    if (rep->measured || dh_fk_q(r, q, &T) != DH_OK || dh_rot_error_q(F, &T, &w) != DH_OK) return;
+    for (k = 0; k < 3u; k++) p2 += ((double)F->p[k] - T.p[k]) * ((double)F->p[k] - T.p[k]);
+    rep->pos_err = (int32_t)fmin(floor(sqrt(p2) + 0.5), 2147483647.0);
+    rep->rot_err = (int32_t)fmin(floor(sqrt((double)w.x * w.x + (double)w.y * w.y + (double)w.z * w.z) + 0.5), 2147483647.0);
+    rep->measured = 1;
+}
+
 static int track_fixed(const dh_robot *r, const double *q0d, double dtd, cli_outbuf *out)
 {
     static dh_ikc_model_q m;
@@ -1021,6 +1037,7 @@ static int track_fixed(const dh_robot *r, const double *q0d, double dtd, cli_out
             fprintf(stderr, "dhmath: error: line %u: target not rigid (rotation not orthonormal)\n", lineno);
             return EXIT_ERR;
         }
+        track_fixed_measure(r, &F, q, &rep);
         for (i = 0; i < r->n; i++) {
             const double v = q[i] / ((r->joint[i].type == DH_JOINT_REVOLUTE) ? 65536.0 : one);
             (void)snprintf(text, sizeof text, "%.9g ", v == 0.0 ? 0.0 : v);

@@ -279,10 +279,18 @@ def check_fixed_track(rows, lines, frac, c):
     c.true('final state OK (got %d), the last period\'s' % d['final'][0],
            d['final'][0] == 0 and trace[-1][1] == 0)
     T = fk(rows, [v / one_deg for v in qk[-1]])
-    c.near('final position error (mm) against the double FK', [d['final'][1] / one_pos],
-           [float(np.linalg.norm(T[:3, 3] - target(len(trace) - 1)))], FIXED_TOL_MM + 1.0 / one_pos)
-    c.near('final rotation error (rad) against the double FK', [d['final'][2] / float(1 << 29)],
-           [rot_angle(R, T[:3, :3])], fk_rad + ROT_ERROR_Q_TOL_RAD + 1.0 / (1 << 29))
+    ep, er = float(np.linalg.norm(T[:3, 3] - target(len(trace) - 1))), rot_angle(R, T[:3, :3])
+    if len(d['final']) > 5 and d['final'][5] == 0:
+        # not measured: the closed form's bounds (track.h), which the double FK keeps
+        c.true('final errors are the closed form\'s bounds %.2e mm, %.2e rad (not measured), the double FK\'s '
+               '%.2e mm, %.2e rad within them' % (d['final'][1] / one_pos, d['final'][2] / float(1 << 29), ep, er),
+               d['final'][2] == 2685 and ep <= d['final'][1] / one_pos + FIXED_TOL_MM and
+               er <= d['final'][2] / float(1 << 29) + fk_rad)
+    else:
+        c.near('final position error (mm) against the double FK', [d['final'][1] / one_pos], [ep],
+               FIXED_TOL_MM + 1.0 / one_pos)
+        c.near('final rotation error (rad) against the double FK', [d['final'][2] / float(1 << 29)], [er],
+               fk_rad + ROT_ERROR_Q_TOL_RAD + 1.0 / (1 << 29))
 
 
 def check_float(rows, lines, c):

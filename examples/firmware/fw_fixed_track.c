@@ -38,6 +38,7 @@
  *   max_step_q16: <per joint the largest |q_k - q_(k-1)|>
  *   periods: <ok> <lagging> <unreachable> <near_singular>
  *   final: <state> <pos_err dh_qpos> <rot_err Q3.29 rad> <pos_tol> <rot_tol>
+ *          <measured: 1 errors by FK, 0 the closed form's bounds>
  * examples/firmware/check_output.py recomputes the targets, the FK of
  * every configuration and the step bounds in double precision from
  * examples/robots/ur5_mm.dh and the printed integers.
@@ -150,6 +151,7 @@ int main(void)
     v[2] = rep.rot_err;
     v[3] = trk.pos_tol;
     v[4] = trk.rot_tol;
-    fw_put_line("final:", v, 5u);
+    v[5] = rep.measured;
+    fw_put_line("final:", v, 6u);
     return rep.state == DH_TRACK_OK ? 0 : 1;
 }

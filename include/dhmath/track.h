@@ -163,12 +163,17 @@ dh_status dh_track_sync_f32(dh_track_f32 *t, const float *q);
 /** What one fixed-point step did. */
 typedef struct {
     dh_track_state state;  /**< see dh_track_state */
-    int32_t pos_err;       /**< |p_target - p(q_out)|, dh_qpos (saturated at INT32_MAX) */
-    int32_t rot_err;       /**< rotation angle between target and FK(q_out), Q3.29 rad (dh_rot_error_q's format) */
-    int32_t manip;         /**< log2 of the manipulability at q_out, Q16.16 (dh_manipulability_q; INT32_MIN: singular) */
-    int32_t sigma_min;     /**< lower bound on the smallest singular value of J at q_out, dh_qpos */
+    int32_t pos_err;       /**< |p_target - p(q_out)|, dh_qpos (saturated at INT32_MAX); measured 0: the closed form's bound t->cf_pos */
+    int32_t rot_err;       /**< rotation angle between target and FK(q_out), Q3.29 rad (dh_rot_error_q's format); measured 0: DH_TRACK_CF_ROT_Q */
+    int32_t manip;         /**< log2 of the manipulability at q_out, Q16.16 (dh_manipulability_q; INT32_MIN: singular); see dh_track_step_q for which */
+    int32_t sigma_min;     /**< lower bound on the smallest singular value of J at q_out, dh_qpos; see dh_track_step_q for which */
     int near_singular;     /**< sigma_min < t->sing_threshold */
+    int measured;          /**< 1: pos_err, rot_err from FK at q_out (dh_fk_q); 0: the closed form's contract bounds (state OK, q_out a closed-form solution of this target) */
 } dh_track_report_q;
+
+/** The fixed closed form's bound on the rotation error of its solutions
+ *  (ikc.h: 5e-6 rad), Q3.29 rad: rot_err of a report with measured 0. */
+#define DH_TRACK_CF_ROT_Q 2685
 
 /** Tracker state (fixed point); fill with dh_track_init_q, then adjust
  *  lambda, sing_threshold, pos_tol, rot_tol if wanted. */
@@ -182,11 +187,19 @@ typedef struct {
     int32_t dv_max[DH_MAX_JOINTS];      /**< bound on the change of step, floor(floor(amax_q dt_us / 10^6) dt_us / 10^6) (INT32_MAX: unlimited) */
     int32_t lambda;                     /**< largest damping of the DLS step, dh_qpos (default 0.02 in J's units, not scaled by L) */
     int32_t sing_threshold;             /**< near-singular threshold on sigma_min, dh_qpos (default 0.005, not scaled by L), where the damping starts */
-    int32_t pos_tol;                    /**< "reached": position tolerance, dh_qpos (default 2^-19 L, at least 16 LSB) */
+    int32_t pos_tol;                    /**< "reached": position tolerance, dh_qpos (default cf_pos) */
     int32_t rot_tol;                    /**< "reached": rotation tolerance, Q3.29 rad (default 10737 = 2e-5 rad) */
     /* private workspace (keeps the step's stack small); read-only for the caller */
+    int32_t cf_pos;                     /**< the closed form's FK position bound, dh_qpos: 328 LSB (5e-3 units at DH_QPOS_FRAC 16, ikc.h) times ceil(L / 2^27 LSB) */
     int32_t reach;                      /**< reach bound (dh_qpos) for UNREACHABLE without a closed form */
-    int32_t J[6 * DH_MAX_JOINTS];       /**< Jacobian at q */
+    uint32_t hp_k;                      /**< singularity bound without J: the factor of |det J| (Q2.30; 0: none for this robot) */
+    int32_t hp_e;                       /**< and its power of two */
+    int jt;                             /**< J and T hold the Jacobian and FK at q */
+    int tight;                          /**< the target's rotation is orthonormal within 2^-22 */
+    int clamp;                          /**< the nearest solution was moved onto a limit */
+    int uni;                            /**< every joint has the same vmax_q */
+    int cf;                             /**< q_out is the nearest closed-form solution (in the step box) */
+    int32_t J[6 * DH_MAX_JOINTS];       /**< Jacobian at q (when jt) */
     int32_t e[6];                       /**< pose error / residual */
     int32_t dq[DH_MAX_JOINTS];          /**< step being built */
     int32_t keep[DH_MAX_JOINTS];        /**< step kept between damped steps */
@@ -194,7 +207,7 @@ typedef struct {
     int32_t hi[DH_MAX_JOINTS];          /**< step box of this period, upper */
     int32_t qs[DH_MAX_JOINTS];          /**< nearest closed-form solution */
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];   /**< closed-form solutions */
-    dh_frame_q T;                       /**< FK at q */
+    dh_frame_q T;                       /**< FK at q (when jt) */
     dh_dls_work_q work;                 /**< scratch of the damped step */
     int32_t gs[21];                     /**< scratch of the singularity measures: the equilibrated Gram matrix */
     dh_frame_q rD;                      /**< scratch of the rotation error: dR */
@@ -218,7 +231,10 @@ typedef struct {
 /**
  * @brief Start tracking at q0 in fixed point (integer only): fills every
  * field of t, with L = sum of |a_q|, |d_q|, the prismatic travel and
- * |tool p| in dh_qpos, and the Jacobian at q0.
+ * |tool p| in dh_qpos, the closed form's position bound cf_pos = 328
+ * ceil(L / 2^27) LSB (5e-3 units at DH_QPOS_FRAC 16 for robots within
+ * 2048 units: ikc.h's bound for robots in mm), pos_tol = cf_pos, and the
+ * Jacobian at q0.
  * @param t     tracker (not NULL), written.
  * @param r     robot (fixed path), 1..DH_MAX_JOINTS joints; rate limits
  *              from dh_robot_set_rates_q / _f32 (INT32_MAX: unlimited).
@@ -244,6 +260,13 @@ dh_status dh_track_init_q(dh_track_q *t, const dh_robot *r, const dh_ikc_model_q
  * next call too.
  * DH_TRACK_OK only when FK(q_out) (dh_fk_q) is within pos_tol and rot_tol
  * of the target.
+ * When q_out is the nearest closed-form solution (in the step box), with
+ * pos_tol >= t->cf_pos and rot_tol >= DH_TRACK_CF_ROT_Q (the defaults), a
+ * target orthonormal within 2^-22, no value put on a limit, and the bound
+ * |det J| K (docs/design.md "Tracking in fixed point") >= sing_threshold:
+ * state OK, measured 0, pos_err and rot_err the closed form's bounds
+ * (ikc.h), manip log2 |det J| and sigma_min |det J| K. Otherwise measured
+ * 1, errors by FK and manip, sigma_min dh_manipulability_q's at q_out.
  * @param t      tracker from dh_track_init_q.
  * @param target next target frame; rotation orthonormal within
  *               DH_ROT_ERROR_TOL_Q, det > 0.

@@ -86,3 +86,45 @@ DH_NOINLINE unsigned dh_ikc_elbow_q_(int32_t l1, int32_t l2, int32_t vx, int32_t
     return (S == 0u) ? 1u : 2u;
 }
 
+/* ---- |det J| of the canonical chain (the tracker's singularity bound) ---- */
+
+/* A lower bound on |x| 2^-30 (x a sum of products of lengths, dh_qpos, and
+ * sines or cosines, Q2.30, or lengths times 2^30) in dh_qpos, below 2^31:
+ * |x| less 2^-22 of sum (the magnitudes of the lengths in the sum: the
+ * sines' error of 1.05 LSB, the products' rounding and twists within
+ * DH_IKC_TOL_ALPHA of +-90 deg) and 4 LSB (the roundings to dh_qpos),
+ * rounded down; 0 when that is not positive. */
+uint32_t dh_ikc_low_q_(int64_t x, uint64_t sum)
+{
+    const uint64_t a = dh_ikc_abs64_q_(x), mg = (sum << 8) + ((uint64_t)4 << 30);
+    const uint64_t v = (a > mg) ? (a - mg) >> 30 : 0u;
+    return (v >= 0x80000000u) ? 0x7FFFFFFFu : (uint32_t)v;
+}
+
+/* A lower bound on |s| for a sine or cosine s (Q2.30): less 2^-22 (as
+ * dh_ikc_low_q_), 0 when not positive. */
+uint32_t dh_ikc_lows_q_(int32_t s)
+{
+    const uint32_t a = dh_q_abs_u32(s);
+    return (a > 256u) ? a - 256u : 0u;
+}
+
+uint32_t dh_ikc_pmul_q_(uint32_t p, uint32_t f, int fb, int32_t *ex)
+{
+    uint64_t x;
+    unsigned b;
+    if (p == 0u || f == 0u) return 0u;
+    x = (uint64_t)dh_q_mul64((int32_t)p, (int32_t)f);   /* both below 2^31 */
+    b = dh_q_bitlen64(x);
+    *ex -= fb;
+    if (b > 31u) {
+        const unsigned d = b - 31u;
+        x >>= d;
+        *ex += (int32_t)d;
+    } else {
+        const unsigned d = 31u - b;
+        x <<= d;
+        *ex -= (int32_t)d;
+    }
+    return (uint32_t)x;
+}

@@ -508,3 +508,44 @@ dh_status dh_ikc_par234_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc
     *count = cnt;
     return DH_OK;
 }
+
+/* ======================================================================
+ * DH_IKC_PARALLEL_234: |det J|. With w the common direction of axes 2-4,
+ * the columns 3 - 2 and 4 - 3 have no angular part (w x (p2 - p3), w x
+ * (p3 - p4)), and with the reference point at the joint 5 point P (on
+ * axes 5 and 6: a5 = 0) columns 5 and 6 have no linear part; a Laplace
+ * expansion along those four columns leaves det J = +-[w . ((p2 - p3) x
+ * (p3 - p4))] [(P - p1) . (w x z1)] [w . (z5 x z6)] = +-(a2 a3 s3) u s5,
+ * u = a1 + a2 c2 + a3 cos(t2 + s2 t3) + a4 cos phi + sb d5 sin phi (the
+ * joint 5 point's distance from the plane of axes 1 and 2, phi = t2 +
+ * s2 t3 + s23 t4 as above).
+ * ====================================================================== */
+
+uint32_t dh_ikc_par234_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t *ex)
+{
+    const int32_t *k = m->k;
+    const int32_t t2 = dh_ikc_theta_q_(m, q, 1u), t3 = dh_ikc_theta_q_(m, q, 2u), t4 = dh_ikc_theta_q_(m, q, 3u);
+    const uint32_t t23 = (uint32_t)t2 + (k[P_S2] > 0 ? (uint32_t)t3 : 0u - (uint32_t)t3);
+    const uint32_t phi = t23 + (k[P_S23] > 0 ? (uint32_t)t4 : 0u - (uint32_t)t4);
+    int32_t s, c, s3, c3;
+    uint32_t p;
+    int64_t u;
+    /* one sine or cosine pair at a time (a small frame) */
+    *ex = -30;
+    dh_sincos_q(dh_ikc_theta_q_(m, q, 4u), &s, &c);
+    p = dh_ikc_pmul_q_((uint32_t)1 << 30, dh_ikc_lows_q_(s), 30, ex);
+    dh_sincos_q(t3, &s3, &c3);
+    p = dh_ikc_pmul_q_(p, dh_ikc_lows_q_(s3), 30, ex);
+    p = dh_ikc_pmul_q_(p, dh_q_abs_u32(m->a[1]), DH_QPOS_FRAC, ex);
+    p = dh_ikc_pmul_q_(p, dh_q_abs_u32(m->a[2]), DH_QPOS_FRAC, ex);
+    dh_sincos_q((int32_t)phi, &s, &c);
+    u = ((int64_t)m->a[0] << 30) + dh_q_mla64(dh_q_mul64(m->a[3], c), k[P_E5], s);
+    dh_sincos_q(t2, &s, &c);
+    /* a3 cos(t2 + s2 t3) = a3 (c2 c3 - s2 sin(s2 t3)), the product rounded */
+    u += dh_q_mul64(m->a[1], c) +
+         dh_q_mul64(m->a[2], dh_ikc_r30_q_(dh_q_mul64(c, c3) - dh_q_mul64(s, k[P_S2] > 0 ? s3 : -s3)));
+    return dh_ikc_pmul_q_(p, dh_ikc_low_q_(u, (uint64_t)dh_q_abs_u32(m->a[0]) + dh_q_abs_u32(m->a[1]) +
+                                                 2u * dh_q_abs_u32(m->a[2]) + dh_q_abs_u32(m->a[3]) +
+                                                 dh_q_abs_u32(k[P_E5])),
+                          DH_QPOS_FRAC, ex);
+}

@@ -453,6 +453,13 @@ dh_status dh_ikc_args_q_(const dh_ikc_model_q *m, const dh_frame_q *target, uint
     return ikcq_t06(m, target, sol) ? DH_ERR_OVERFLOW : DH_OK;
 }
 
+dh_status dh_ikc_args_rigid_q_(const dh_ikc_model_q *m, const dh_frame_q *target, dh_ikc_sol_q *sol)
+{
+    if (m->kind == DH_IKC_NONE) return DH_ERR_UNAVAILABLE;
+    if (!ikcq_model_ok(m)) return DH_ERR_ARG;
+    return ikcq_t06(m, target, sol) ? DH_ERR_OVERFLOW : DH_OK;
+}
+
 dh_status dh_ikc_finish_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *n_sol)
 {
     uint32_t raw = *n_sol;

@@ -624,3 +624,53 @@ dh_status dh_ikc_wrist_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_
     *count = cnt;
     return DH_OK;
 }
+
+/* ---- wrist families: |det J| -------------------------------------------- */
+
+/*
+ * With the reference point at the wrist centre o, J = [J11 0; J21 J22]
+ * (the wrist's columns have no linear part), so det J = det J11 det J22
+ * with J22 = [z4 z5 z6]: det J22 = +-sin alpha4 sin alpha5 s5 = +-s5.
+ * J11's columns are z_i x (o - p_i) (revolute) or z_i (prismatic), and
+ * with z2 = +-z3 (RRR) det J11 = [(z1 x (o - p1)) . z2] [z2 . ((p3 - p2) x
+ * (o - p3))]: the first factor is +-u (the wrist centre's distance from
+ * the plane of axes 1 and 2: (px, py) = Rz(t1) (u, -tau h), u = a1 + A c2 -
+ * B s2 in the notation at the top), the second +-a2 B. RRR: |det J| =
+ * |a2| |a3 s3 - e c3| |a1 + A c2 - B s2| |s5|. RRP: (z2 x (o - p2)) x z3 =
+ * -L z2 in frame 1, so |det J| = |L| |a1 + X2 c2 + tau2 L s2| |s5|.
+ */
+uint32_t dh_ikc_wrist_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t *ex)
+{
+    const int32_t *k = m->k;
+    int32_t s, c, A, B;
+    uint32_t p;
+    uint64_t sum;
+    int64_t u;
+    /* one sine or cosine pair at a time (a small frame) */
+    *ex = -30;
+    dh_sincos_q(dh_ikc_theta_q_(m, q, 4u), &s, &c);
+    p = dh_ikc_pmul_q_((uint32_t)1 << 30, dh_ikc_lows_q_(s), 30, ex);
+    if (m->kind == DH_IKC_WRIST_RRR) {
+        const int32_t e = k[K_E];
+        const uint64_t l3 = (uint64_t)dh_q_abs_u32(m->a[2]) + dh_q_abs_u32(e);
+        int64_t bb;
+        dh_sincos_q(dh_ikc_theta_q_(m, q, 2u), &s, &c);
+        bb = dh_q_mul64(m->a[2], s) - dh_q_mul64(e, c);   /* B sigma, Q30 */
+        A = dh_ikc_r30_q_(((int64_t)m->a[1] << 30) + dh_q_mla64(dh_q_mul64(m->a[2], c), e, s));
+        B = dh_ikc_r30_q_(k[K_SIG] > 0 ? bb : -bb);
+        p = dh_ikc_pmul_q_(p, dh_q_abs_u32(m->a[1]), DH_QPOS_FRAC, ex);
+        p = dh_ikc_pmul_q_(p, dh_ikc_low_q_(bb, l3), DH_QPOS_FRAC, ex);
+        dh_sincos_q(dh_ikc_theta_q_(m, q, 1u), &s, &c);
+        u = ((int64_t)m->a[0] << 30) + dh_q_mul64(A, c) - dh_q_mul64(B, s);
+        sum = (uint64_t)dh_q_abs_u32(m->a[0]) + dh_q_abs_u32(m->a[1]) + 2u * l3;
+    } else {
+        /* L = d3 + c_alpha3 d4, d3 = q3 + the d offset */
+        const int64_t L = (int64_t)q[2] + m->d[2] + k[K_LOFF];
+        if (L >= ((int64_t)1 << 30) || L <= -((int64_t)1 << 30)) return 0u;
+        p = dh_ikc_pmul_q_(p, dh_ikc_low_q_((int64_t)(dh_ikc_abs64_q_(L) << 30), 0u), DH_QPOS_FRAC, ex);
+        dh_sincos_q(dh_ikc_theta_q_(m, q, 1u), &s, &c);
+        u = ((int64_t)m->a[0] << 30) + dh_q_mul64(k[K_E], c) + dh_q_mul64(k[K_SIG] > 0 ? (int32_t)L : -(int32_t)L, s);
+        sum = (uint64_t)dh_q_abs_u32(m->a[0]) + dh_q_abs_u32(k[K_E]) + dh_ikc_abs64_q_(L);
+    }
+    return dh_ikc_pmul_q_(p, dh_ikc_low_q_(u, sum), DH_QPOS_FRAC, ex);
+}

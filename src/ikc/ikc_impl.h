@@ -104,6 +104,9 @@ dh_status dh_ikc_scara_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_
  * DH_IKC_KEEP_OUT_OF_LIMITS from the raw count in *n_sol (*n_sol and
  * status as dh_ikc_q's). */
 dh_status dh_ikc_args_q_(const dh_ikc_model_q *m, const dh_frame_q *target, uint32_t opts, dh_ikc_sol_q *sol);
+/* dh_ikc_args_q_ (opts 0) for a target whose rigidity the caller has
+ * checked at least as tightly (dh_rot_ok_q_ within 2^-10, det > 0). */
+dh_status dh_ikc_args_rigid_q_(const dh_ikc_model_q *m, const dh_frame_q *target, dh_ikc_sol_q *sol);
 static inline dh_status dh_ikc_raw_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol,
                                       uint32_t *count)
 {
@@ -353,5 +356,36 @@ DH_INLINE uint32_t dh_ikc_ldif_q_(int32_t l1, int32_t l2)
  * into out[0..1]; returns 0 unreachable, 1 stretched or folded, 2 two
  * branches. */
 unsigned dh_ikc_elbow_q_(int32_t l1, int32_t l2, int32_t vx, int32_t vy, int32_t *out);
+
+/* |det J| of the model's canonical chain at the robot's joint values q (the
+ * 6 x 6 geometric Jacobian, per rad, lengths in the robot's unit; the same
+ * for the robot: base, tool and the reference point do not change it), as
+ * a lower bound mant 2^*ex with mant in [2^30, 2^31) for the spherical
+ * wrist and PARALLEL_234 families (method: the family's function);
+ * 0 (no bound) for SCARA, a factor within its rounding margin of 0, or a
+ * prismatic value beyond 2^30 LSB. Integer only. */
+uint32_t dh_ikc_wrist_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t *ex);
+/* canonical angle of revolute joint i at the robot's value q[i] (modulo
+ * 2^32 LSB: 65536 deg, a whole number of turns) */
+DH_INLINE int32_t dh_ikc_theta_q_(const dh_ikc_model_q *m, const int32_t *q, uint32_t i)
+{
+    const uint32_t t = (uint32_t)q[i] + (uint32_t)m->off[i];
+    return (int32_t)t;
+}
+uint32_t dh_ikc_par234_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t *ex);
+static inline uint32_t dh_ikc_detj_q_(const dh_ikc_model_q *m, const int32_t *q, int32_t *ex)
+{
+    if (m->kind == DH_IKC_PARALLEL_234) return dh_ikc_par234_detj_q_(m, q, ex);
+    if (m->kind == DH_IKC_WRIST_RRR || m->kind == DH_IKC_WRIST_RRP) return dh_ikc_wrist_detj_q_(m, q, ex);
+    return 0u;
+}
+/* Helpers of the two (dh_ikc_common_q.c): lower bounds on |x| 2^-30 in
+ * dh_qpos (x a sum of products of lengths and sines, sum the magnitudes of
+ * its lengths) and on |s| (a sine, Q2.30); p 2^*ex times f 2^-fb as a
+ * mantissa in [2^30, 2^31) (returned) and *ex, rounded down (0 when p or
+ * f is 0; p below 2^31). */
+uint32_t dh_ikc_low_q_(int64_t x, uint64_t sum);
+uint32_t dh_ikc_lows_q_(int32_t s);
+uint32_t dh_ikc_pmul_q_(uint32_t p, uint32_t f, int fb, int32_t *ex);
 
 #endif /* DHMATH_SRC_IKC_IMPL_H */

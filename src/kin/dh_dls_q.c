@@ -239,7 +239,7 @@ static int32_t dlsq_log2_frac(uint32_t x0)
     uint32_t x = x0, f = 0u;
     unsigned b;
     for (b = 0; b < 16u; b++) {
-        const uint64_t s = ((uint64_t)x * x) >> 30;
+        const uint64_t s = (uint64_t)dh_q_mul64((int32_t)x, (int32_t)x) >> 30;   /* x < 2^31 */
         f <<= 1;
         if (s >= ((uint64_t)1 << 31)) {
             x = (uint32_t)(s >> 1);

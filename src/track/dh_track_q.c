@@ -23,10 +23,14 @@
 #include "../internal/dh_qmath.h"
 #include "../kin/kin_impl.h"
 #include "../ikc/ikc_impl.h"
+#include "../rot/rot_impl.h"
 
 #define TRQ_DEG180 ((int32_t)180 << 16)   /* 180 deg, Q16.16 */
 #define TRQ_NONE INT32_MAX   /* no acceleration limit */
 #define TRQ_STEP_CAP (((int32_t)1 << 30) - 1)
+#define TRQ_CF_POS 328        /* the closed form's FK bound, 5e-3 units at DH_QPOS_FRAC 16 (ikc.h), robots within 2^27 LSB */
+#define TRQ_TIGHT 256         /* rotation orthonormal within 2^-22 (Q2.30): the closed form's bounds hold */
+#define TRQ_CLAMPED 0x100u    /* private flag of t->sol: a value was moved onto a limit */
 
 /* ---- integer helpers ----------------------------------------------------- */
 
@@ -95,6 +99,121 @@ static DH_NOINLINE int32_t trq_length(const dh_robot *r)
     return (L > ((int64_t)1 << 30)) ? ((int32_t)1 << 30) : (int32_t)L;
 }
 
+/* The factor of the singularity bound without J (docs/design.md,
+ * "Tracking in fixed point"): with D = diag(2^-k I3, I3) and M = D J,
+ * sigma_min(J) >= min(1, 2^k) sigma_min(M), and sigma_min(M) = 1 /
+ * |M^-1| >= |det M| / |adj M|_F, where row j of adj M (the cofactors of
+ * column j) has the norm of the other five columns' volume, at most the
+ * product of their norms (Hadamard): sigma_min(J) >= |det J| 2^-3k
+ * min(1, 2^k) / sqrt(sum_j prod_{i != j} c_i), c_i >= |column i of M|^2 =
+ * 1 + 2^-2k |linear part|^2 (revolute; the linear part at most the chain
+ * after the axis long, R_i = sum over j >= i of |a_j| + |d_j| (+ the
+ * prismatic travel) + |tool p| (each component)) or 2^-2k (prismatic).
+ * k is the best of four, R_i 2^-k from at most 1 to at most 8; every
+ * step rounded towards a smaller bound. hp_k 0: no bound (no model with
+ * a |det J| formula, or a prismatic joint without limits). */
+static uint32_t trq_hp_try(const uint32_t *R, uint32_t *c, uint32_t pris, int sh, int k, int32_t *e)
+{
+    uint64_t sum = 0u;
+    uint32_t i, j;
+    if (k < -3) return 0u;
+    for (i = 0u; i < 6u; i++) {
+        if ((pris >> i) & 1u) {
+            c[i] = (k >= 4) ? 1u : ((uint32_t)1 << (unsigned)(8 - 2 * k));   /* 2^-2k in Q8, up */
+        } else {
+            const uint32_t x = (sh >= 0) ? (uint32_t)(((uint64_t)R[i] + (((uint64_t)1 << sh) - 1u)) >> sh)
+                                         : ((R[i] >> (unsigned)(31 + sh)) != 0u ? 0xFFFFFFFFu : R[i] << (unsigned)(-sh));
+            if (x > 128u) return 0u;   /* R 2^-k beyond 8 */
+            c[i] = 256u + x * x;       /* Q8, below 2^15 */
+        }
+    }
+    for (j = 0u; j < 6u; j++) {
+        uint64_t p = 256u;
+        for (i = 0u; i < 6u; i++)
+            if (i != j) {
+                /* p c rounded up, p below 2^8 65^5 < 2^39 and c below 2^15: in two halves */
+                const uint64_t lo = (uint64_t)((uint32_t)p & 0xFFFFFFu) * c[i], hi = (p >> 24) * c[i];
+                p = ((hi << 24) + lo + 255u) >> 8;
+            }
+        sum += p;
+    }
+    *e = -3 * k + ((k < 0) ? k : 0);
+    /* 1 / sqrt(sum) in Q30: the root in Q8 rounded up */
+    return dh_q_ufloor30(256u, dh_q_isqrt62(sum << 8) + 1u);
+}
+
+/* The chain lengths R_i (dh_qpos: sums of magnitudes) divided by 2^s0
+ * rounded up, s0 the least shift that brings R_0 (the largest) below 2^31,
+ * into t->gs[0..5] (the measures' scratch, free here); joint i prismatic:
+ * bit i of *pris. Returns s0, or -1 for no bound (a prismatic joint
+ * without limits). */
+static uint64_t trq_hp_len(const dh_robot *r, uint32_t i)
+{
+    const dh_joint *j = &r->joint[i];
+    uint64_t x = (uint64_t)dh_q_abs_u32(j->a_q) + dh_q_abs_u32(j->d_q);
+    if (j->type == DH_JOINT_PRISMATIC)
+        x += (dh_q_abs_u32(j->qmin_q) > dh_q_abs_u32(j->qmax_q)) ? dh_q_abs_u32(j->qmin_q) : dh_q_abs_u32(j->qmax_q);
+    return x;
+}
+
+static DH_NOINLINE int trq_hp_chain(dh_track_q *t, uint32_t *pris)
+{
+    const dh_robot *const r = t->r;
+    const uint64_t tool = (uint64_t)dh_q_abs_u32(r->tool_q.p[0]) + dh_q_abs_u32(r->tool_q.p[1]) +
+                          dh_q_abs_u32(r->tool_q.p[2]);
+    uint64_t acc = tool;
+    uint32_t i;
+    int s0 = 0;
+    *pris = 0u;
+    for (i = 0u; i < 6u; i++) {
+        if (r->joint[i].type == DH_JOINT_PRISMATIC) {
+            if (r->joint[i].qmin_q > r->joint[i].qmax_q) return -1;
+            *pris |= 1u << i;
+        }
+        acc += trq_hp_len(r, i);
+    }
+    while ((acc >> s0) >= ((uint64_t)1 << 31)) s0++;
+    acc = tool;
+    for (i = 0u; i < 6u; i++) {
+        const uint32_t j = 5u - i;
+        acc += trq_hp_len(r, j);
+        t->gs[j] = (int32_t)(uint32_t)((acc + (((uint64_t)1 << s0) - 1u)) >> s0);
+    }
+    return s0;
+}
+
+/* The rest of dh_track_init_q after the Jacobian at q0: t->jt, t->pris,
+ * t->uni and the singularity bound's factor t->hp_k, t->hp_e. */
+static DH_NOINLINE void trq_hp_init(dh_track_q *t)
+{
+    uint32_t pris = 0u, i;
+    int k, k0, s0;
+    t->jt = 1;
+    t->pris = dh_kin_pris_q_(t->r);
+    t->uni = 1;
+    for (i = 1u; i < t->r->n; i++)
+        if (t->r->joint[i].vmax_q != t->r->joint[0].vmax_q) t->uni = 0;
+    t->hp_k = 0u;
+    t->hp_e = 0;
+    if (t->m == NULL || t->r->n != 6u || t->m->kind == DH_IKC_SCARA) return;
+    s0 = trq_hp_chain(t, &pris);
+    if (s0 < 0) return;
+    /* k0: the smallest k with every R_i <= 2^k (R_0 the largest) */
+    k0 = (int)dh_q_bitlen64((uint64_t)(uint32_t)t->gs[0]) + s0 - DH_QPOS_FRAC;
+    for (k = k0 - 3; k <= k0; k++) {
+        int32_t e = 0;
+        /* R 2^-k in Q4: R' / 2^(k + F - 4 - s0) */
+        const uint32_t v = trq_hp_try((const uint32_t *)t->gs, (uint32_t *)&t->gs[6], pris,
+                                      k + DH_QPOS_FRAC - 4 - s0, k, &e);
+        /* v 2^e above hp_k 2^hp_e? (both in [2^23, 2^30]: compare by shifts) */
+        if (v != 0u && (t->hp_k == 0u || (e >= t->hp_e ? ((uint64_t)v << (unsigned)(e - t->hp_e > 40 ? 40 : e - t->hp_e)) > t->hp_k
+                                                        : v > ((uint64_t)t->hp_k << (unsigned)(t->hp_e - e > 40 ? 40 : t->hp_e - e))))) {
+            t->hp_k = v;
+            t->hp_e = e;
+        }
+    }
+}
+
 dh_status dh_track_init_q(dh_track_q *t, const dh_robot *r, const dh_ikc_model_q *m, const int32_t *q0,
                           uint32_t dt_us)
 {
@@ -126,13 +245,14 @@ dh_status dh_track_init_q(dh_track_q *t, const dh_robot *r, const dh_ikc_model_q
      * do not grow with the length unit */
     t->lambda = (int32_t)(((int64_t)DH_QPOS_ONE * 1311) >> 16);          /* 0.02 */
     t->sing_threshold = (int32_t)(((int64_t)DH_QPOS_ONE * 328) >> 16);   /* 0.005 */
-    t->pos_tol = (int32_t)(((int64_t)L * 2) >> 20);           /* 2e-6 L (1.9e-6) */
-    if (t->pos_tol < 16) t->pos_tol = 16;
+    /* the closed form's bound (at least 2^-19 L): OK without FK by default */
+    t->cf_pos = TRQ_CF_POS * (int32_t)(((uint32_t)L + ((uint32_t)1 << 27) - 1u) >> 27);
+    t->pos_tol = t->cf_pos;
     t->rot_tol = 10737;                                        /* 2e-5 rad, Q3.29 */
     /* dh_jacobian_q in two private calls (its checks once here, then its
      * body writing FK straight into t->T), as in every step */
     if (dh_kin_jac_check_q_(r) != DH_OK || dh_kin_jac_q_(r, t->q, t->J, &t->T) != 0) return DH_ERR_OVERFLOW;
-    t->pris = dh_kin_pris_q_(r);
+    trq_hp_init(t);
     return DH_OK;
 }
 
@@ -219,23 +339,26 @@ static int32_t trq_turn(int32_t x, int32_t q, const dh_joint *j)
     return (y + 8 >= j->qmin_q && y - 8 <= j->qmax_q) ? y : x;
 }
 
-/* 1 when the solution is within the limits, a value beyond one by at most
- * 8 LSB (the closed form's rounding, 1.2e-4 deg) put on it; else 0. A
- * revolute value more than 180 deg from q is first shifted by 360 deg
- * towards q when that lands within the limits so widened (trq_turn):
- * dh_ikc_q shifts a value just beyond a limit by 360 deg into the range. */
-static int trq_onto_limits(const dh_track_q *t, dh_ikc_sol_q *sol)
+/* 1 when value i of the solution is within the limits, a value beyond one
+ * by at most 8 LSB (the closed form's rounding, 1.2e-4 deg) put on it
+ * (flagged TRQ_CLAMPED); else 0. A revolute value more than 180 deg from
+ * q is first shifted by 360 deg towards q when that lands within the
+ * limits so widened (trq_turn): dh_ikc_q shifts a value just beyond a
+ * limit by 360 deg into the range. */
+static int trq_onto1(const dh_track_q *t, dh_ikc_sol_q *sol, uint32_t i)
 {
-    uint32_t i;
-    for (i = 0u; i < t->r->n; i++) {
-        const dh_joint *j = &t->r->joint[i];
-        if (j->qmin_q <= j->qmax_q) {
-            if (j->type == DH_JOINT_REVOLUTE) sol->q[i] = trq_turn(sol->q[i], t->q[i], j);
-            if ((int64_t)sol->q[i] < (int64_t)j->qmin_q - 8 || (int64_t)sol->q[i] > (int64_t)j->qmax_q + 8) return 0;
-            if (sol->q[i] < j->qmin_q) sol->q[i] = j->qmin_q;
-            if (sol->q[i] > j->qmax_q) sol->q[i] = j->qmax_q;
-        }
+    const dh_joint *j = &t->r->joint[i];
+    const int32_t lo = j->qmin_q, hi = j->qmax_q;
+    int32_t x = sol->q[i];
+    if (lo > hi) return 1;
+    if (j->type == DH_JOINT_REVOLUTE) x = trq_turn(x, t->q[i], j);
+    /* beyond a limit by more than 8 LSB (exact unsigned distances) */
+    if (x < lo || x > hi) {
+        if ((x < lo ? (uint32_t)lo - (uint32_t)x : (uint32_t)x - (uint32_t)hi) > 8u) return 0;
+        x = (x < lo) ? lo : hi;
+        sol->flags |= TRQ_CLAMPED;
     }
+    sol->q[i] = x;
     return 1;
 }
 
@@ -247,7 +370,8 @@ static int64_t trq_mul(uint32_t a, uint32_t b)
 
 /* The solution nearest t->q in time (largest |q*_i - q_i| / vmax_i, then
  * the sum of |q*_i - q_i|) among the st's t->ns solutions within the
- * limits into t->qs: 1 when there is one; t->unreach when there is no
+ * limits (trq_onto1, joint by joint; a solution already slower than the
+ * best is left there) into t->qs: 1 when there is one; t->unreach when there is no
  * solution or none within the limits. */
 static DH_NOINLINE int trq_nearest(dh_track_q *t, dh_status st)
 {
@@ -260,31 +384,45 @@ static DH_NOINLINE int trq_nearest(dh_track_q *t, dh_status st)
     for (k = 0u; k < ns; k++) {
         uint32_t tn = 0u, td = 1u;
         int64_t sm = 0;
-        if (!trq_onto_limits(t, &t->sol[k])) continue;
-        for (i = 0u; i < n; i++) {
-            const int64_t d64 = (int64_t)t->sol[k].q[i] - t->q[i];
-            const uint32_t d = (d64 < 0) ? (uint32_t)(-d64 > INT32_MAX ? INT32_MAX : -d64)
-                                         : (uint32_t)(d64 > INT32_MAX ? INT32_MAX : d64);
-            const uint32_t v = (uint32_t)t->r->joint[i].vmax_q;
+        /* joint by joint; a solution already slower than the best (one
+         * rate) is left: it loses whatever its other joints */
+        for (i = 0u; i < n && !(found && t->uni && tn > btn); i++) {
+            uint32_t du, d, v;
+            if (!trq_onto1(t, &t->sol[k], i)) break;
+            /* |q*_i - q_i| exact in uint32, saturated at INT32_MAX */
+            du = (t->sol[k].q[i] >= t->q[i]) ? (uint32_t)t->sol[k].q[i] - (uint32_t)t->q[i]
+                                             : (uint32_t)t->q[i] - (uint32_t)t->sol[k].q[i];
+            d = (du > (uint32_t)INT32_MAX) ? (uint32_t)INT32_MAX : du;
+            v = (uint32_t)t->r->joint[i].vmax_q;
             sm += (int64_t)d;
             /* time d / v > tn / td ? (v INT32_MAX: unlimited, time 0);
-             * every factor below 2^31: exact signed products */
-            if (v < (uint32_t)INT32_MAX && trq_mul(d, td) > trq_mul(tn, v)) {
-                tn = d;
-                td = v;
+             * every factor below 2^31: exact signed products; with one
+             * rate for every joint (t->uni) the times compare as d */
+            if (v < (uint32_t)INT32_MAX) {
+                const int64_t now = t->uni ? (int64_t)d : trq_mul(d, td);
+                const int64_t was = t->uni ? (int64_t)tn : trq_mul(tn, v);
+                if (now > was) {
+                    tn = d;
+                    td = t->uni ? 1u : v;
+                }
             }
         }
-        if (!found || trq_mul(tn, btd) < trq_mul(btn, td) || (trq_mul(tn, btd) == trq_mul(btn, td) && sm < bs)) {
-            best = k;
-            btn = tn;
-            btd = td;
-            bs = sm;
-            found = 1;
+        if (i < n) continue;   /* beyond a limit, or slower */
+        if (found) {
+            /* tn / td against btn / btd, then the sums */
+            const int64_t x = t->uni ? (int64_t)tn : trq_mul(tn, btd), y = t->uni ? (int64_t)btn : trq_mul(btn, td);
+            if (x > y || (x == y && sm >= bs)) continue;
         }
+        best = k;
+        btn = tn;
+        btd = td;
+        bs = sm;
+        found = 1;
     }
     t->unreach = (st == DH_ERR_UNREACHABLE || (st == DH_OK && !found)) ? 1 : 0;
     if (!found) return 0;
     for (i = 0u; i < n; i++) t->qs[i] = t->sol[best].q[i];
+    t->clamp = (t->sol[best].flags & TRQ_CLAMPED) != 0u;
     return 1;
 }
 
@@ -293,7 +431,9 @@ static DH_NOINLINE int trq_nearest(dh_track_q *t, dh_status st)
 static DH_NOINLINE int trq_ikc_args(dh_track_q *t)
 {
     if (t->m == NULL) return 0;
-    t->ist = dh_ikc_args_q_(t->m, t->tgt, DH_IKC_KEEP_OUT_OF_LIMITS, t->sol);
+    /* a tight target passes the closed form's own rigidity check */
+    t->ist = t->tight ? dh_ikc_args_rigid_q_(t->m, t->tgt, t->sol)
+                      : dh_ikc_args_q_(t->m, t->tgt, DH_IKC_KEEP_OUT_OF_LIMITS, t->sol);
     return (t->ist == DH_OK) ? 1 : 0;
 }
 
@@ -615,7 +755,17 @@ static DH_NOINLINE void trq_begin(dh_track_q *t, const dh_frame_q *target, int32
     t->unreach = 0;
     t->ns = 0u;
     t->ist = DH_ERR_UNAVAILABLE;
-    t->tst = dh_kin_rot_ok_q_(target) ? DH_OK : DH_ERR_NOT_RIGID;
+    t->clamp = 0;
+    t->cf = 0;
+    t->tight = dh_rot_ok_q_(target, TRQ_TIGHT);
+    t->tst = (t->tight || dh_kin_rot_ok_q_(target)) ? DH_OK : DH_ERR_NOT_RIGID;
+}
+
+/* J and T at q when a closed-form step left them at an earlier q */
+static DH_NOINLINE void trq_need_j(dh_track_q *t)
+{
+    if (!t->jt) (void)dh_kin_jac_q_(t->r, t->q, t->J, &t->T);
+    t->jt = 1;
 }
 
 /* q_out into t->q, t->v and q_out (the step clamped into the box) */
@@ -639,6 +789,8 @@ static DH_NOINLINE int trq_at_out(dh_track_q *t)
     rep->sigma_min = 0;
     rep->pos_err = INT32_MAX;
     rep->rot_err = INT32_MAX;
+    rep->measured = 1;
+    t->jt = 1;
     return (dh_kin_jac_q_(t->r, t->q, t->J, &t->T) == 0) ? 1 : 0;
 }
 
@@ -660,6 +812,60 @@ static DH_NOINLINE void trq_fill(const dh_track_q *t, int ok)
     else
         rep->state = (t->unreach || tst != DH_OK) ? DH_TRACK_UNREACHABLE : DH_TRACK_LAGGING;
     rep->near_singular = (rep->sigma_min < t->sing_threshold) ? 1 : 0;
+}
+
+/* 65536 log2(mant 2^ex), mant in [2^30, 2^31), from the top 16 bits of
+ * mant by 16 squarings in 32 bits (x in Q15), each rounded down: below the
+ * exact value by less than 8 LSB (the mantissa's truncation 2^-15 and the
+ * squarings' add 2^-15 / ln 2 and at most as much again to the log). */
+static int32_t trq_log2(uint32_t mant, int32_t ex)
+{
+    uint32_t x = mant >> 15, f = 0u, b;
+    for (b = 0u; b < 16u; b++) {
+        x = (x * x) >> 15;   /* x below 2^16: the square below 2^32 */
+        f <<= 1;
+        if (x >= 0x10000u) {
+            x >>= 1;
+            f |= 1u;
+        }
+    }
+    return (ex + 30) * 65536 + (int32_t)f;
+}
+
+/* When q_out (t->q) is the nearest closed-form solution of the target
+ * (t->cf): 1 when the report is complete without J or FK (the report filled: state OK,
+ * the closed form's error bounds, the singularity bound without J). That
+ * needs tolerances no tighter than the closed form's bounds, a target
+ * orthonormal within 2^-22 and no value moved onto a limit (the closed
+ * form's bounds are those of its own solutions), and a |det J| bound that
+ * proves sigma_min >= sing_threshold. */
+static DH_NOINLINE int trq_cf_done(dh_track_q *t)
+{
+    dh_track_report_q *const rep = t->rep;
+    uint32_t mant;
+    int32_t ex;
+    int sh;
+    int64_t v;
+    if (!t->cf || !t->tight || t->clamp || t->hp_k == 0u || t->pos_tol < t->cf_pos || t->rot_tol < DH_TRACK_CF_ROT_Q) return 0;
+    mant = dh_ikc_detj_q_(t->m, t->q, &ex);
+    if (mant == 0u) return 0;
+    /* sigma = mant 2^ex hp_k 2^(hp_e - 30) in dh_qpos, rounded down */
+    v = dh_q_mul64((int32_t)mant, (int32_t)t->hp_k);
+    sh = ex + t->hp_e - 30 + DH_QPOS_FRAC;
+    if (sh >= 0)
+        v = (sh >= 2) ? INT32_MAX : (v << sh);   /* v >= 2^30: shifted by 2 or more it saturates */
+    else
+        v = (sh <= -63) ? 0 : (v >> -sh);
+    if (v > INT32_MAX) v = INT32_MAX;
+    if (v < t->sing_threshold) return 0;
+    rep->state = DH_TRACK_OK;
+    rep->pos_err = t->cf_pos;
+    rep->rot_err = DH_TRACK_CF_ROT_Q;
+    rep->manip = trq_log2(mant, ex);
+    rep->sigma_min = (int32_t)v;
+    rep->near_singular = 0;
+    rep->measured = 0;
+    return 1;
 }
 
 /* The stages are called one after the other from here, each library call
@@ -685,7 +891,10 @@ dh_status dh_track_step_q(dh_track_q *t, const dh_frame_q *target, int32_t *q_ou
             t->ist = dh_ikc_raw_q_(t->m, t->q, t->sol, &t->ns);
             if (t->ist == DH_OK) t->ist = dh_ikc_finish_q_(t->m, t->q, t->sol, &t->ns);
         }
-        if (trq_pick(t)) {
+        if (!trq_pick(t)) {
+            t->cf = 1;
+        } else {
+            trq_need_j(t);
             trq_manip(t, NULL, &t->sg);
             /* q already reaching the target keeps its place (the zero
              * step fitted into the box): no run for a solution outside
@@ -711,6 +920,8 @@ dh_status dh_track_step_q(dh_track_q *t, const dh_frame_q *target, int32_t *q_ou
         }
     }
     trq_move(t);
+    t->jt = 0;
+    if (trq_cf_done(t)) return DH_OK;
     k = trq_at_out(t);
     if (k) {
         trq_manip(t, &t->rep->manip, &t->rep->sigma_min);

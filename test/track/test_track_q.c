@@ -15,7 +15,11 @@
  * lines 1 mm from the wrist singularity and through the shoulder
  * singularity then held (OK again within the time the step bound allows),
  * a line leaving the workspace and coming back, a target that jumps (with
- * and without amax). The closed form is used only for a robot whose reach
+ * and without amax). A report without FK (measured 0) must hold the closed
+ * form's bounds with state OK and a singularity bound at most the smallest
+ * singular value of the double Jacobian; |det J| without J is checked
+ * against double near each singularity (detj_against_double), the
+ * defaults and the measured cases in defaults_and_measured. The closed form is used only for a robot whose reach
  * fits its range (ikc.h: 2^30 LSB, 2^(30 - DH_QPOS_FRAC) mm): with
  * DH_QPOS_FRAC 20 (1024 mm) the robots in mm are tracked by damped steps
  * only, and the line leaving the workspace stops within the format.
@@ -24,6 +28,7 @@
 #include "support_robots.h"
 #include "dhmath/track.h"
 #include "dhmath/frame.h"
+#include "../../src/ikc/ikc_impl.h"   /* dh_ikc_detj_q_ against double */
 
 #include <math.h>
 #include <string.h>
@@ -76,7 +81,7 @@ static void rig_make(rig *g, const dhs_robot *d, int acc)
 typedef struct {
     int32_t qp[DH_MAX_JOINTS];
     int64_t sp[DH_MAX_JOINTS];
-    long calls, ok, lag, unr;
+    long calls, ok, lag, unr, cf;   /* cf: OK reports without FK (measured 0) */
 } chk;
 
 static void chk_start(chk *c, const int32_t *q0, uint32_t n)
@@ -87,6 +92,66 @@ static void chk_start(chk *c, const int32_t *q0, uint32_t n)
 
 static int last_near_singular;
 static dh_track_report_q last_rep;   /* the last call's report */
+
+/* the Jacobian of the fixed robot's parameters at q in double (linear
+ * rows in the robot's unit per rad, reference point the tool point) from
+ * the reference FK's frames: |det J| (6 joints) and its smallest singular
+ * value into *sg */
+static double jac_double(const dh_robot *r, const int32_t *q, double *sg)
+{
+    dhr_mat4 F[DHS_MAX_JOINTS], T, B;
+    double J[36], A[36], ev[6], det = 1.0;
+    int i, j, k;
+    dhs_fk_ref_q(r, q, F, &T);
+    dhr_from_q(&r->base_q, &B);
+    for (i = 0; i < 6; i++) {
+        const dhr_mat4 *Z = (r->conv == DH_CONV_STANDARD) ? (i == 0 ? &B : &F[i - 1]) : &F[i];
+        double z[3], d[3];
+        for (k = 0; k < 3; k++) {
+            z[k] = DHR_M4(Z, k, 2);
+            d[k] = DHR_M4(&T, k, 3) - DHR_M4(Z, k, 3);
+        }
+        for (k = 0; k < 3; k++) {
+            const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+            if (r->joint[i].type == DH_JOINT_REVOLUTE) {
+                J[k * 6 + i] = z[k1] * d[k2] - z[k2] * d[k1];
+                J[(k + 3) * 6 + i] = z[k];
+            } else {
+                J[k * 6 + i] = z[k];
+                J[(k + 3) * 6 + i] = 0.0;
+            }
+        }
+    }
+    for (i = 0; i < 6; i++)
+        for (j = 0; j < 6; j++) {
+            double v = 0.0;
+            for (k = 0; k < 6; k++) v += J[i * 6 + k] * J[j * 6 + k];
+            A[i * 6 + j] = v;
+        }
+    dhr_sym_eig(A, 6, ev);
+    *sg = ev[0];
+    for (i = 1; i < 6; i++) *sg = fmin(*sg, ev[i]);
+    *sg = sqrt(fmax(*sg, 0.0));
+    /* |det J| by elimination with partial pivoting */
+    for (k = 0; k < 6; k++) {
+        int p = k;
+        for (i = k + 1; i < 6; i++)
+            if (fabs(J[i * 6 + k]) > fabs(J[p * 6 + k])) p = i;
+        if (J[p * 6 + k] == 0.0) return 0.0;
+        if (p != k)
+            for (j = 0; j < 6; j++) {
+                const double x = J[k * 6 + j];
+                J[k * 6 + j] = J[p * 6 + j];
+                J[p * 6 + j] = x;
+            }
+        det *= J[k * 6 + k];
+        for (i = k + 1; i < 6; i++) {
+            const double f = J[i * 6 + k] / J[k * 6 + k];
+            for (j = k; j < 6; j++) J[i * 6 + j] -= f * J[k * 6 + j];
+        }
+    }
+    return fabs(det);
+}
 
 /* one robot and one tracker for every case (the M0 target has 16 KB of RAM) */
 static rig the_rig;
@@ -137,6 +202,25 @@ static dh_track_state step_checked(rig *g, dh_track_q *t, chk *c, const dh_frame
         c->unr++;
     }
     DHT_TRUE(rep.sigma_min >= 0);
+    DHT_TRUE(rep.measured == 0 || rep.measured == 1);
+    if (!rep.measured) {
+        /* the closed form's bounds, and a singularity bound without J:
+         * at most the smallest singular value (every 8th call: double
+         * eigenvalues are slow on the M0) */
+        DHT_EQ_INT(rep.state, DH_TRACK_OK);
+        DHT_EQ_INT(rep.pos_err, t->cf_pos);
+        DHT_EQ_INT(rep.rot_err, DH_TRACK_CF_ROT_Q);
+        DHT_TRUE(rep.near_singular == 0 && rep.sigma_min >= t->sing_threshold);
+        if ((c->cf & 7) == 0) {
+            double sg;
+            (void)jac_double(&g->r, q, &sg);
+            DHT_TRUE_MSG(rep.sigma_min / QPOS <= sg, "%s %s call %ld: sigma bound %.6g above sigma_min %.6g",
+                         g->d->name, what, c->calls, rep.sigma_min / QPOS, sg);
+        }
+        c->cf++;
+    } else {
+        DHT_EQ_INT(rep.near_singular, rep.sigma_min < t->sing_threshold);
+    }
     last_near_singular = rep.near_singular;
     last_rep = rep;
     c->calls++;
@@ -251,7 +335,7 @@ static void smooth_paths_every_call_ok(void)
     size_t ri;
     for (ri = 0; ri < N_ROBOTS; ri++) {
         rig *const gp = &the_rig;
-        long path, n_path = DHT_ITER(8), calls = 0, not_ok = 0;
+        long path, n_path = DHT_ITER(8), calls = 0, not_ok = 0, cf = 0;
         rig_make(gp, robots[ri], 0);
         for (path = 0; path < n_path; path++) {
             int32_t qa[DH_MAX_JOINTS], qb[DH_MAX_JOINTS], q[DH_MAX_JOINTS];
@@ -304,8 +388,10 @@ static void smooth_paths_every_call_ok(void)
                 }
             }
             calls += c.calls;
+            cf += c.cf;
         }
-        dht_printf("%s: %ld smooth paths, %ld calls, %ld not OK\n", gp->d->name, n_path, calls, not_ok);
+        dht_printf("%s: %ld smooth paths, %ld calls, %ld not OK, %ld OK without FK\n", gp->d->name, n_path, calls,
+                   not_ok, cf);
     }
 }
 
@@ -495,6 +581,102 @@ static void target_jumps(void)
         }
 }
 
+/* |det J| of the closed form's model (dh_ikc_detj_q_, the tracker's
+ * singularity bound without J) against double on random configurations
+ * and near each singularity (joint 5 and 3 near 0 and 180 deg, the wrist
+ * centre near axis 1): a lower bound, within 2^-20 relative and 2^-20
+ * L^3 of the true value; then the tracker at such configurations: its
+ * report without J only where its bound proves sigma_min >= threshold,
+ * and a bound at most the true smallest singular value */
+static void detj_against_double(void)
+{
+    size_t ri;
+    for (ri = 0; ri < 4u; ri++) {
+        rig *const gp = &the_rig;
+        dh_track_q *const tp = &the_trk;
+        long k, n = DHT_ITER(400), cfs = 0, near = 0;
+        double L = 0.0, worst = 0.0;
+        uint32_t i;
+        rig_make(gp, robots[ri], 0);
+        if (!gp->closed) continue;
+        for (i = 0; i < 6u; i++) L += fabs(ldexp(gp->r.joint[i].a_q, -DH_QPOS_FRAC)) + fabs(ldexp(gp->r.joint[i].d_q, -DH_QPOS_FRAC));
+        L += reach_mm(gp->d);
+        for (k = 0; k < n; k++) {
+            int32_t q[DH_MAX_JOINTS], qo[DH_MAX_JOINTS];
+            double det, sg, lo;
+            uint32_t mant;
+            int32_t ex;
+            dh_frame_q T;
+            dh_track_report_q rep;
+            random_q(gp, q);
+            if (k % 4 == 1) {
+                /* joint 5, or the elbow, or joint 1's lever near 0: up to 1e-3 deg from a zero of its factor */
+                const uint32_t j = (k % 12 == 1) ? 4u : 2u;
+                const double z = dht_rand_uniform(-1e-3, 1e-3) + ((k % 8 == 1) ? 180.0 : 0.0);
+                if (gp->r.joint[j].type == DH_JOINT_REVOLUTE) {
+                    const double v = z - ldexp(gp->m.off[j], -16);
+                    if (v * 65536.0 >= gp->r.joint[j].qmin_q && v * 65536.0 <= gp->r.joint[j].qmax_q) q[j] = (int32_t)floor(v * 65536.0);
+                }
+            }
+            det = jac_double(&gp->r, q, &sg);
+            mant = dh_ikc_detj_q_(&gp->m, q, &ex);
+            lo = ldexp((double)mant, ex);
+            DHT_TRUE_MSG(lo <= det * (1.0 + 1e-12), "%s: |det J| bound %.9g above %.9g", gp->d->name, lo, det);
+            DHT_TRUE_MSG(det - lo <= ldexp(det, -20) + ldexp(L * L * L, -20), "%s: |det J| bound %.9g, true %.9g",
+                         gp->d->name, lo, det);
+            if (det > 0.0) worst = fmax(worst, (det - lo) / (det + L * L * L));
+            /* the tracker at q, the target FK(q): a zero step, OK */
+            DHT_EQ_INT(dh_track_init_q(tp, &gp->r, &gp->m, q, DT_US), DH_OK);
+            target_of(gp, q, &T);
+            DHT_EQ_INT(dh_track_step_q(tp, &T, qo, &rep), DH_OK);
+            DHT_EQ_INT(rep.state, DH_TRACK_OK);
+            if (!rep.measured) {
+                /* manip: log2 of the bound lo, less than 8 LSB below (trq_log2) */
+                const double lg = 65536.0 * log2(lo);
+                DHT_TRUE_MSG(rep.manip <= lg + 1e-6 && rep.manip > lg - 8.0, "%s: manip %ld, 65536 log2 |det J| %.3f",
+                             gp->d->name, (long)rep.manip, lg);
+                cfs++;
+                DHT_TRUE_MSG(rep.sigma_min / QPOS <= sg && rep.sigma_min >= tp->sing_threshold,
+                             "%s: sigma bound %.6g, true %.6g", gp->d->name, rep.sigma_min / QPOS, sg);
+                DHT_TRUE(!rep.near_singular);
+            } else if (rep.near_singular) {
+                near++;
+            }
+        }
+        dht_printf("%s: |det J| against double, %ld configurations, worst %.3g (relative to |det J| + L^3), "
+                   "%ld reports without J, %ld near-singular\n", gp->d->name, n, worst, cfs, near);
+    }
+}
+
+/* The defaults: pos_tol is the closed form's bound (328 LSB, 5e-3 mm for
+ * the robots in mm, at least ikc.h's bound), so that a reached closed-form
+ * solution is reported without FK; a tighter pos_tol or rot_tol, or a
+ * target orthonormal only within DH_ROT_ERROR_TOL_Q, is measured by FK
+ * (and still OK only within the tolerances: step_checked) */
+static void defaults_and_measured(void)
+{
+    rig *const gp = &the_rig;
+    dh_track_q *const tp = &the_trk;
+    const int32_t q0[6] = { DH_Q16(10.0), DH_Q16(-60.0), DH_Q16(70.0), DH_Q16(20.0), DH_Q16(40.0), DH_Q16(30.0) };
+    int variant;
+    rig_make(gp, &dhs_ur5_mm, 0);
+    if (!gp->closed) return;
+    for (variant = 0; variant < 4; variant++) {
+        dh_frame_q T;
+        chk c;
+        DHT_EQ_INT(dh_track_init_q(tp, &gp->r, &gp->m, q0, DT_US), DH_OK);
+        DHT_EQ_INT(tp->pos_tol, tp->cf_pos);
+        DHT_TRUE(tp->cf_pos >= (int32_t)ceil(5e-3 * 65536.0) && tp->rot_tol >= DH_TRACK_CF_ROT_Q);
+        target_of(gp, q0, &T);
+        if (variant == 1) tp->pos_tol = tp->cf_pos - 1;
+        if (variant == 2) tp->rot_tol = DH_TRACK_CF_ROT_Q - 1;
+        if (variant == 3) T.r[0][0] += 4096;   /* 3.8e-6 from orthonormal: rigid, not tight */
+        chk_start(&c, q0, 6u);
+        DHT_EQ_INT(step_checked(gp, tp, &c, &T, "defaults"), DH_TRACK_OK);
+        DHT_EQ_INT(last_rep.measured, variant == 0 ? 0 : 1);
+    }
+}
+
 /* bad targets: the joints brake; init errors (twin: bad_targets_brake of test_track.c) */
 static void bad_targets_brake(void)
 {
@@ -519,6 +701,8 @@ static void bad_targets_brake(void)
 
 static const dht_case cases[] = {
     DHT_CASE(bad_targets_brake),
+    DHT_CASE(detj_against_double),
+    DHT_CASE(defaults_and_measured),
     DHT_CASE(smooth_paths_every_call_ok),
     DHT_CASE(singular_lines),
     DHT_CASE(leaving_the_workspace),
