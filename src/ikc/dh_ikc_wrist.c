@@ -64,13 +64,14 @@ typedef char dh_ikc_k_fits_[(KW_COUNT <= (int)DH_IKC_K) ? 1 : -1];
 
 /* ---- small helpers --------------------------------------------------------- */
 
-/* atan2 in degrees, fallback when both arguments are zero (free angle).
- * The radian atan2 (<= 2 ulp) scaled: a third of the stack of the degree
- * version (dh_atan2f_deg_), which no solver frame could afford on top. */
+/* atan2 in degrees, (-180, 180], fallback when both arguments are zero
+ * (free angle). dh_atan2f_dg_ (3 ulp): a third of the stack of the
+ * correctly rounded degree version (dh_atan2f_deg_), which no solver frame
+ * could afford on top. */
 DH_INLINE float wrist_atan2(float y, float x, float fallback)
 {
     if (dh_feq_f32(y, 0.0f) && dh_feq_f32(x, 0.0f)) return fallback;
-    return dh_atan2f_(y, x) * DH_RAD2DEG_F;
+    return dh_atan2f_dg_(y, x);
 }
 
 

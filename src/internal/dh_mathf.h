@@ -36,6 +36,24 @@ float dh_atan2f_(float y, float x);
 float dh_atan2f_deg_(float y, float x, float corr);
 
 /**
+ * atan2(y, x) in DEGREES, in (-180, 180] (y = +-0 with x < 0 gives 180),
+ * within 3 ulp (results below 2^-100: 3 ulp of 2^-100; ratios that small
+ * underflow), for finite (y, x) not both zero (both zero give 45; a NaN
+ * in gives NaN out): the reduction of dh_atan2f_ in plain float (no bit
+ * tests, no special cases), 45 K degrees exact and atan(u) scaled by
+ * 180/pi. For the closed-form solvers, whose callers take (0, 0) apart.
+ */
+float dh_atan2f_dg_(float y, float x);
+
+/* The minimax coefficients of atan on [-1/3, 1/2] (dh_mathf.c). */
+#define DH_MF_T1 (-0.33333326912f)
+#define DH_MF_T2 0.19999488967f
+#define DH_MF_T3 (-0.14272060333f)
+#define DH_MF_T4 0.10940818909f
+#define DH_MF_T5 (-0.079834060236f)
+#define DH_MF_T6 0.03871351284f
+
+/**
  * asin v (want_acos 0, in [-90, 90], odd bit for bit) or acos v (want_acos
  * 1, in [0, 180]) in DEGREES for |v| <= 1 (not NaN), within 1 ulp of the
  * correctly rounded value: sqrt(1 - v^2) in double-float and
