@@ -270,7 +270,7 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
      * only shifted one within them, so the nearest to ref */
     const int narrow = ((m->wide >> i) & 1u) == 0u;
     const float off = m->off[i], ref = (q_ref != NULL) ? q_ref[i] : 0.0f;
-    float flo = m->win_lo[i], fhi = m->win_hi[i];
+    float flo = m->win_lo[i], fhi = m->win_hi[i], slo, shi, ctr = 0.0f;
     uint32_t s;
     if (!narrow && q_ref != NULL) {
         /* the distance to ref decides: the window narrowed to within 179.5
@@ -279,6 +279,15 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
         const float rlo = ref - 179.5f, rhi = ref + 179.5f;
         if (rlo > flo) flo = rlo;
         if (rhi < fhi) fhi = rhi;
+        /* one turn towards ref: kept when within the limits and 179.5 deg
+         * of ref (the one shift within 180 deg of ref) */
+        slo = (rlo > m->qmin[i]) ? rlo : m->qmin[i];
+        shi = (rhi < m->qmax[i]) ? rhi : m->qmax[i];
+        ctr = ref;
+    } else {
+        /* one turn towards 0: kept when in the window (the wrapped value) */
+        slo = flo;
+        shi = fhi;
     }
     if ((m->prismatic >> i) & 1u) {
         for (s = 0; s < ns; s++) {
@@ -306,6 +315,13 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
             sol[s].q[i] = v;
             continue;
         }
+        /* one turn towards ctr, rounded as ikc_wrap_any and ikc_shift
+         * round it: when in [slo, shi], their result */
+        lo = (v > ctr) ? v - 360.0f : v + 360.0f;
+        if (lo >= slo && lo <= shi) {
+            sol[s].q[i] = lo;
+            continue;
+        }
         /* no limits: every value in (-180, 180] stays, as one within limits
          * [-180, 180] less than a turn apart would */
         lo = lim ? m->qmin[i] : -180.0f;
@@ -318,7 +334,10 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
             }
             v = ikc_wrap_any(v);
         }
-        if (!(v >= lo && v <= hi && (narrow || fabsf(ref - v) <= 180.0f)) && !ikc_shift(&v, lo, hi, ref))
+        /* limits less than a turn apart within (-180, 180]: no shift of a
+         * value of (-180, 180] outside them enters them */
+        if (!(v >= lo && v <= hi && (narrow || fabsf(ref - v) <= 180.0f)) &&
+            ((narrow && lo > -180.0f && hi <= 180.0f) || !ikc_shift(&v, lo, hi, ref)))
             *out |= bit;
         sol[s].q[i] = v;
     }
