@@ -271,7 +271,7 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
     const int narrow = ((m->wide >> i) & 1u) == 0u;
     const float off = m->off[i], ref = (q_ref != NULL) ? q_ref[i] : 0.0f;
     float flo = m->win_lo[i], fhi = m->win_hi[i], slo, shi, ctr = 0.0f;
-    uint32_t s;
+    uint32_t s, rest;
     if (!narrow && q_ref != NULL) {
         /* the distance to ref decides: the window narrowed to within 179.5
          * deg of ref, inside |ref - v| <= 180 after rounding (|ref| < 2^20,
@@ -306,10 +306,11 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
         }
         return live;
     }
-    for (s = 0; s < ns; s++) {
-        const uint32_t bit = 1u << s;
+    /* the live solutions only: rest holds the bits from s on */
+    for (s = 0, rest = live; rest != 0u; s++, rest >>= 1) {
+        uint32_t bit;
         float v, lo, hi;
-        if ((live & bit) == 0u) continue;
+        if ((rest & 1u) == 0u) continue;
         v = sol[s].q[i] - off;
         if (v >= flo && v <= fhi) {
             sol[s].q[i] = v;
@@ -322,6 +323,7 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
             sol[s].q[i] = lo;
             continue;
         }
+        bit = 1u << s;
         /* no limits: every value in (-180, 180] stays, as one within limits
          * [-180, 180] less than a turn apart would */
         lo = lim ? m->qmin[i] : -180.0f;
