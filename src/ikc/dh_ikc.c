@@ -270,7 +270,7 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
      * only shifted one within them, so the nearest to ref */
     const int narrow = ((m->wide >> i) & 1u) == 0u;
     const float off = m->off[i], ref = (q_ref != NULL) ? q_ref[i] : 0.0f;
-    float flo = m->win_lo[i], fhi = m->win_hi[i], slo, shi, ctr = 0.0f;
+    float flo = m->win_lo[i], fhi = m->win_hi[i], slo, shi;
     uint32_t s, rest;
     if (!narrow && q_ref != NULL) {
         /* the distance to ref decides: the window narrowed to within 179.5
@@ -283,9 +283,8 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
          * of ref (the one shift within 180 deg of ref) */
         slo = (rlo > m->qmin[i]) ? rlo : m->qmin[i];
         shi = (rhi < m->qmax[i]) ? rhi : m->qmax[i];
-        ctr = ref;
     } else {
-        /* one turn towards 0: kept when in the window (the wrapped value) */
+        /* one turn: kept when in the window (the wrapped value) */
         slo = flo;
         shi = fhi;
     }
@@ -316,9 +315,10 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
             sol[s].q[i] = v;
             continue;
         }
-        /* one turn towards ctr, rounded as ikc_wrap_any and ikc_shift
-         * round it: when in [slo, shi], their result */
-        lo = (v > ctr) ? v - 360.0f : v + 360.0f;
+        /* one turn towards ref, rounded as ikc_wrap_any and ikc_shift
+         * round it: when in [slo, shi], their result (the other way, or a
+         * value beyond one turn, fails the test) */
+        lo = (v > ref) ? v - 360.0f : v + 360.0f;
         if (lo >= slo && lo <= shi) {
             sol[s].q[i] = lo;
             continue;
