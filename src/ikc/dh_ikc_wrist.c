@@ -67,11 +67,12 @@ typedef char dh_ikc_k_fits_[(KW_COUNT <= (int)DH_IKC_K) ? 1 : -1];
 /* atan2 in degrees, (-180, 180], fallback when both arguments are zero
  * (free angle). dh_atan2f_dg_ (3 ulp): a third of the stack of the
  * correctly rounded degree version (dh_atan2f_deg_), which no solver frame
- * could afford on top. */
+ * could afford on top; inlined by the one-pass solver (FPU builds) unless
+ * optimised for size (DH_HOT_INLINE). */
 DH_INLINE float wrist_atan2(float y, float x, float fallback)
 {
     if (dh_feq_f32(y, 0.0f) && dh_feq_f32(x, 0.0f)) return fallback;
-    return dh_atan2f_dg_(y, x);
+    return (WRIST_ONE_PASS && DH_HOT_INLINE) ? dh_atan2f_dg_inl_(y, x) : dh_atan2f_dg_(y, x);
 }
 
 

@@ -140,44 +140,7 @@ float dh_atan2f_(float y, float x)
 
 float dh_atan2f_dg_(float y, float x)
 {
-    const float ax = fabsf(x), ay = fabsf(y);
-    const uint32_t w = (ay > ax) ? 1u : 0u;  /* reflected about the diagonal */
-    const uint32_t xn = (x < 0.0f) ? 1u : 0u; /* the left half-plane */
-    float mx = w ? ay : ax, mn = w ? ax : ay, u, z, p, a;
-    uint32_t b, k, sneg;
-    if (!(mn < mx)) {
-        /* equal magnitudes (or a NaN): 45 degrees off an axis; mn - mx
-         * is 0, or NaN for a NaN */
-        b = 1u;
-        u = mn - mx;
-    } else if (mn + mn >= mx) {
-        /* ratio in [1/2, 1): 45 + atan(u), u = (mn - mx) / (mn + mx) in
-         * [-1/3, 0), the denominator's rounding error divided out, as in
-         * mathf_atan2_parts; scaled by 1/4 near the top against overflow */
-        float n, d, e;
-        if (mx > 0x1.0p+126f) {
-            mx *= 0.25f;
-            mn *= 0.25f;
-        }
-        b = 1u;
-        n = mn - mx;
-        d = mx + mn;
-        e = mn - (d - mx);
-        u = n / d;
-        u = u - u * (e / d);
-    } else {
-        b = 0u;
-        u = mn / mx; /* in [0, 1/2); mx > 0 here */
-    }
-    z = u * u;
-    p = (u + u * (z * (DH_MF_T1 + z * (DH_MF_T2 + z * (DH_MF_T3 + z * (DH_MF_T4 + z * (DH_MF_T5 + z * DH_MF_T6))))))) *
-        DH_RAD2DEG_F;
-    /* angle = 45 K + s atan(u) degrees, K and s as in mathf_atan2_parts */
-    sneg = w ^ xn;
-    k = w ? 2u : (xn ? 4u : 0u);
-    k = sneg ? k - b : k + b;
-    a = 45.0f * (float)k + (sneg ? -p : p); /* in [0, 180] */
-    return (y < 0.0f && a < 180.0f) ? -a : a;
+    return dh_atan2f_dg_inl_(y, x);
 }
 
 /* 180 / pi = DH_MF_R_HI + DH_MF_R_LO (+ 2.0e-15) */

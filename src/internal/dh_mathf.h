@@ -11,6 +11,9 @@
 #ifndef DHMATH_SRC_DH_MATHF_H
 #define DHMATH_SRC_DH_MATHF_H
 
+#include <math.h>
+#include <stdint.h>
+
 #include "dhmath/common.h"
 #include "dh_build.h"
 
@@ -52,6 +55,53 @@ float dh_atan2f_dg_(float y, float x);
 #define DH_MF_T4 0.10940818909f
 #define DH_MF_T5 (-0.079834060236f)
 #define DH_MF_T6 0.03871351284f
+/* 180 / pi rounded to float (DH_RAD2DEG_F) */
+#define DH_MF_RAD2DEG 57.295779513082320876798f
+
+/* dh_atan2f_dg_'s body, inlined by a caller that has the code space and
+ * the registers for it (the FPU builds' closed-form wrist solver). */
+DH_INLINE float dh_atan2f_dg_inl_(float y, float x)
+{
+    const float ax = fabsf(x), ay = fabsf(y);
+    const uint32_t w = (ay > ax) ? 1u : 0u;  /* reflected about the diagonal */
+    const uint32_t xn = (x < 0.0f) ? 1u : 0u; /* the left half-plane */
+    float mx = w ? ay : ax, mn = w ? ax : ay, u, z, p, a;
+    uint32_t b, k, sneg;
+    if (!(mn < mx)) {
+        /* equal magnitudes (or a NaN): 45 degrees off an axis; mn - mx
+         * is 0, or NaN for a NaN */
+        b = 1u;
+        u = mn - mx;
+    } else if (mn + mn >= mx) {
+        /* ratio in [1/2, 1): 45 + atan(u), u = (mn - mx) / (mn + mx) in
+         * [-1/3, 0), the denominator's rounding error divided out, as in
+         * mathf_atan2_parts; scaled by 1/4 near the top against overflow */
+        float n, d, e;
+        if (mx > 0x1.0p+126f) {
+            mx *= 0.25f;
+            mn *= 0.25f;
+        }
+        b = 1u;
+        n = mn - mx;
+        d = mx + mn;
+        e = mn - (d - mx);
+        u = n / d;
+        u = u - u * (e / d);
+    } else {
+        b = 0u;
+        u = mn / mx; /* in [0, 1/2); mx > 0 here */
+    }
+    z = u * u;
+    p = (u + u * (z * (DH_MF_T1 + z * (DH_MF_T2 + z * (DH_MF_T3 + z * (DH_MF_T4 + z * (DH_MF_T5 + z * DH_MF_T6))))))) *
+        DH_MF_RAD2DEG;
+    /* angle = 45 K + s atan(u) degrees, K and s as in mathf_atan2_parts */
+    sneg = w ^ xn;
+    k = w ? 2u : (xn ? 4u : 0u);
+    k = sneg ? k - b : k + b;
+    a = 45.0f * (float)k + (sneg ? -p : p); /* in [0, 180] */
+    return (y < 0.0f && a < 180.0f) ? -a : a;
+}
+
 
 /**
  * asin v (want_acos 0, in [-90, 90], odd bit for bit) or acos v (want_acos
