@@ -259,7 +259,8 @@ static DH_NOINLINE float ikc_wrap_any(float v)
  * ref = 0 and that always holds), left as it is: two comparisons against
  * the window [flo, fhi] = [lo, hi] within (-180, 180] (v > -180 is v >=
  * -180 + 2^-16, the next float) and, when ref decides, within 179.5 deg of
- * ref; a NaN fails them. A value outside the window takes the general
+ * ref; a NaN fails them. A value outside the window is tried one turn
+ * towards ref against the window of that shift, then takes the general
  * path, which decides exactly. */
 static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i, dh_ikc_sol_f32 *sol,
                           uint32_t ns, uint32_t live_in, uint32_t *fin, uint32_t *out)
