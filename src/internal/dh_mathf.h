@@ -63,10 +63,14 @@ float dh_atan2f_dg_(float y, float x);
 DH_INLINE float dh_atan2f_dg_inl_(float y, float x)
 {
     const float ax = fabsf(x), ay = fabsf(y);
-    const uint32_t w = (ay > ax) ? 1u : 0u;  /* reflected about the diagonal */
-    const uint32_t xn = (x < 0.0f) ? 1u : 0u; /* the left half-plane */
-    float mx = w ? ay : ax, mn = w ? ax : ay, u, z, p, a;
-    uint32_t b, k, sneg;
+    float mx, mn, u, z, p, a;
+    uint32_t w, xn, b, k, sneg;
+    w = 0u; /* 1: reflected about the diagonal */
+    if (ay > ax) w = 1u;
+    xn = 0u; /* 1: the left half-plane */
+    if (x < 0.0f) xn = 1u;
+    mx = w ? ay : ax;
+    mn = w ? ax : ay;
     if (!(mn < mx)) {
         /* equal magnitudes (or a NaN): 45 degrees off an axis; mn - mx
          * is 0, or NaN for a NaN */
