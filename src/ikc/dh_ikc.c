@@ -259,7 +259,8 @@ static DH_NOINLINE float ikc_wrap_any(float v)
  * ref = 0 and that always holds), left as it is: two comparisons against
  * the window [flo, fhi] = [lo, hi] within (-180, 180] (v > -180 is v >=
  * -180 + 2^-16, the next float) and, when ref decides, within 179.5 deg of
- * ref; a NaN fails them. A value outside the window takes the general
+ * ref; a NaN fails them. A value outside the window is tried one turn
+ * towards ref against the window of that shift, then takes the general
  * path, which decides exactly. */
 static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i, dh_ikc_sol_f32 *sol,
                           uint32_t ns, uint32_t live_in, uint32_t *fin, uint32_t *out)
@@ -270,8 +271,8 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
      * only shifted one within them, so the nearest to ref */
     const int narrow = ((m->wide >> i) & 1u) == 0u;
     const float off = m->off[i], ref = (q_ref != NULL) ? q_ref[i] : 0.0f;
-    float flo = m->win_lo[i], fhi = m->win_hi[i];
-    uint32_t s;
+    float flo = m->win_lo[i], fhi = m->win_hi[i], slo, shi;
+    uint32_t s, rest;
     if (!narrow && q_ref != NULL) {
         /* the distance to ref decides: the window narrowed to within 179.5
          * deg of ref, inside |ref - v| <= 180 after rounding (|ref| < 2^20,
@@ -279,6 +280,14 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
         const float rlo = ref - 179.5f, rhi = ref + 179.5f;
         if (rlo > flo) flo = rlo;
         if (rhi < fhi) fhi = rhi;
+        /* one turn towards ref: kept when within the limits and 179.5 deg
+         * of ref (the one shift within 180 deg of ref) */
+        slo = (rlo > m->qmin[i]) ? rlo : m->qmin[i];
+        shi = (rhi < m->qmax[i]) ? rhi : m->qmax[i];
+    } else {
+        /* one turn: kept when in the window (the wrapped value) */
+        slo = flo;
+        shi = fhi;
     }
     if ((m->prismatic >> i) & 1u) {
         for (s = 0; s < ns; s++) {
@@ -297,15 +306,25 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
         }
         return live;
     }
-    for (s = 0; s < ns; s++) {
-        const uint32_t bit = 1u << s;
+    /* the live solutions only: rest holds the bits from s on */
+    for (s = 0, rest = live; rest != 0u; s++, rest >>= 1) {
+        uint32_t bit;
         float v, lo, hi;
-        if ((live & bit) == 0u) continue;
+        if ((rest & 1u) == 0u) continue;
         v = sol[s].q[i] - off;
         if (v >= flo && v <= fhi) {
             sol[s].q[i] = v;
             continue;
         }
+        /* one turn towards ref, rounded as ikc_wrap_any and ikc_shift
+         * round it: when in [slo, shi], their result (the other way, or a
+         * value beyond one turn, fails the test) */
+        lo = (v > ref) ? v - 360.0f : v + 360.0f;
+        if (lo >= slo && lo <= shi) {
+            sol[s].q[i] = lo;
+            continue;
+        }
+        bit = 1u << s;
         /* no limits: every value in (-180, 180] stays, as one within limits
          * [-180, 180] less than a turn apart would */
         lo = lim ? m->qmin[i] : -180.0f;
@@ -318,7 +337,10 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
             }
             v = ikc_wrap_any(v);
         }
-        if (!(v >= lo && v <= hi && (narrow || fabsf(ref - v) <= 180.0f)) && !ikc_shift(&v, lo, hi, ref))
+        /* limits less than a turn apart within (-180, 180]: no shift of a
+         * value of (-180, 180] outside them enters them */
+        if (!(v >= lo && v <= hi && (narrow || fabsf(ref - v) <= 180.0f)) &&
+            ((narrow && lo > -180.0f && hi <= 180.0f) || !ikc_shift(&v, lo, hi, ref)))
             *out |= bit;
         sol[s].q[i] = v;
     }

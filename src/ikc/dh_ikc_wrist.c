@@ -64,13 +64,15 @@ typedef char dh_ikc_k_fits_[(KW_COUNT <= (int)DH_IKC_K) ? 1 : -1];
 
 /* ---- small helpers --------------------------------------------------------- */
 
-/* atan2 in degrees, fallback when both arguments are zero (free angle).
- * The radian atan2 (<= 2 ulp) scaled: a third of the stack of the degree
- * version (dh_atan2f_deg_), which no solver frame could afford on top. */
+/* atan2 in degrees, (-180, 180], fallback when both arguments are zero
+ * (free angle). dh_atan2f_dg_ (3 ulp): a third of the stack of the
+ * correctly rounded degree version (dh_atan2f_deg_), which no solver frame
+ * could afford on top; inlined by the one-pass solver (FPU builds) unless
+ * optimised for size (DH_HOT_INLINE). */
 DH_INLINE float wrist_atan2(float y, float x, float fallback)
 {
     if (dh_feq_f32(y, 0.0f) && dh_feq_f32(x, 0.0f)) return fallback;
-    return dh_atan2f_(y, x) * DH_RAD2DEG_F;
+    return (WRIST_ONE_PASS && DH_HOT_INLINE) ? dh_atan2f_dg_inl_(y, x) : dh_atan2f_dg_(y, x);
 }
 
 
@@ -161,14 +163,16 @@ int dh_ikc_detect_wrist_f32_(dh_ikc_model_f32 *m)
     return 1;
 }
 
-/* v <- Rx(alpha)^T Rz(theta)^T v for the two 3-vectors at a and b (c, s
- * of theta). */
-static void wrist_rzrx_t(float *a, float *b, float c, float s, float sa, float ca)
+/* a <- Rx(alpha)^T Rz(theta)^T xa and b <- the same of xb (c, s of
+ * theta); each may be its source (each vector is read before it is
+ * written; a must not overlap xb). */
+static void wrist_rzrx_t(const float *xa, const float *xb, float *a, float *b, float c, float s, float sa, float ca)
 {
     uint32_t k;
     for (k = 0; k < 2u; k++) {
+        const float *u = (k == 0u) ? xa : xb;
         float *v = (k == 0u) ? a : b;
-        const float x = c * v[0] + s * v[1], y = c * v[1] - s * v[0], z = v[2];
+        const float x = c * u[0] + s * u[1], y = c * u[1] - s * u[0], z = u[2];
         v[0] = x;
         v[1] = ca * y + sa * z;
         v[2] = ca * z - sa * y;
@@ -190,16 +194,11 @@ DH_INLINE void wrist_m(const dh_ikc_model_f32 *m, const float *q_ref, dh_ikc_sol
     const float *k = m->k;
     float *mz = &out[0].q[3], *mx = &out[1].q[3];
     float c;
-    uint32_t i;
-    for (i = 0; i < 3u; i++) {
-        mx[i] = rn[i];
-        mz[i] = ra[i];
-    }
     if (m->kind == DH_IKC_WRIST_RRR) {
-        wrist_rzrx_t(mz, mx, cs[0], cs[1], k[KW_SA23], k[KW_CA23]);
+        wrist_rzrx_t(ra, rn, mz, mx, cs[0], cs[1], k[KW_SA23], k[KW_CA23]);
     } else {
-        wrist_rzrx_t(mz, mx, cs[0], cs[1], m->sa[1], m->ca[1]);
-        wrist_rzrx_t(mz, mx, k[KW_C3], k[KW_S3], m->sa[2], m->ca[2]);
+        wrist_rzrx_t(ra, rn, mz, mx, cs[0], cs[1], m->sa[1], m->ca[1]);
+        wrist_rzrx_t(mz, mx, mz, mx, k[KW_C3], k[KW_S3], m->sa[2], m->ca[2]);
     }
     if (mz[0] * mz[0] + mz[1] * mz[1] < IKC_SING_WRIST * IKC_SING_WRIST) {
         out[0].flags |= DH_IKC_SING_WRIST;
@@ -229,12 +228,11 @@ static DH_NOINLINE void wrist_b(const dh_ikc_model_f32 *m, dh_ikc_sol_f32 *out)
     } else {
         float r;
         s5 = dh_sqrt_f32(m0 * m0 + m1 * m1);
-        /* (c4, s4) proportional to (X' m13, X' m23), X' = sin a5 s5 */
-        c4 = sa5 * m0;
-        s4 = sa5 * m1;
-        r = 1.0f / dh_sqrt_f32(c4 * c4 + s4 * s4);
-        c4 *= r;
-        s4 *= r;
+        /* (c4, s4) = (X' m13, X' m23) / |X' (m13, m23)|, X' = sin a5 s5:
+         * sin a5 = +-1 (cos a5 = 0), so the norm is s5 */
+        r = sa5 / s5;
+        c4 = m0 * r;
+        s4 = m1 * r;
     }
     mpx = c4 * out[1].q[3] + s4 * out[1].q[4];
     mpy = c4 * out[1].q[4] - s4 * out[1].q[3];
@@ -256,7 +254,7 @@ static DH_NOINLINE void wrist_c(dh_ikc_sol_f32 *out)
     const float t4 = sing ? out[1].q[2] : wrist_atan2(out[0].q[3], out[0].q[4], 0.0f);
     const float t5 = wrist_atan2(out[0].q[5], out[1].q[3], 0.0f);
     const float t6 = wrist_atan2(out[1].q[4], out[1].q[5], 0.0f);
-    out[0].q[3] = dh_ikc_wrap_f32_(t4);
+    out[0].q[3] = sing ? dh_ikc_wrap_f32_(t4) : t4;
     out[0].q[4] = t5;
     out[0].q[5] = t6;
     if (sing) {
@@ -525,7 +523,7 @@ uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, cons
      * theta2 + sigma theta3) for wrist_m */
     float v[10];
     const float cref2 = dh_ikc_cref_f32_(m, q_ref, 1u);
-    uint32_t b, e, i, ns, ne, n = 0u;
+    uint32_t b, e, ns, ne, n = 0u;
     wrist_prepare(m, T, v, &v[3], &v[6]);
     ns = wrist_shoulder(m, dh_ikc_cref_f32_(m, q_ref, 0u), &v[6], &sol[6]);
     for (b = 0; b < ns; b++) {
@@ -538,11 +536,7 @@ uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, cons
             v[6] = sh->q[3]; /* sh is not read after this */
             v[7] = sh->q[4];
             if (v[6] > 1.5f) (void)dh_sincos_f32(sol[n].q[0], &v[7], &v[6]);
-            for (i = 0; i < 3u; i++) {
-                rot[i] = v[3u + i];
-                rot[3u + i] = v[i];
-            }
-            wrist_rzrx_t(&rot[0], &rot[3], v[6], v[7], m->sa[0], m->ca[0]);
+            wrist_rzrx_t(&v[3], &v[0], &rot[0], &rot[3], v[6], v[7], m->sa[0], m->ca[0]);
         }
         for (e = 0; e < ne; e++) {
             dh_ikc_sol_f32 *a = &sol[n];
@@ -575,7 +569,6 @@ static DH_NOINLINE void wrist_a(const dh_ikc_model_f32 *m, const float *q_ref, c
 {
     float cs[4];
     float *mz = &out[0].q[3], *mx = &out[1].q[3];
-    uint32_t i;
     const float t2 = (m->kind == DH_IKC_WRIST_RRR) ? arm->q[1] + m->k[KW_SIGMA] * arm->q[2] : arm->q[1];
     out[0].flags = arm->flags;
     out[0].q[0] = arm->q[0];
@@ -583,11 +576,7 @@ static DH_NOINLINE void wrist_a(const dh_ikc_model_f32 *m, const float *q_ref, c
     out[0].q[2] = arm->q[2];
     (void)dh_sincos_f32(out[0].q[0], &cs[1], &cs[0]);
     (void)dh_sincos_f32(t2, &cs[3], &cs[2]);
-    for (i = 0; i < 3u; i++) {
-        mx[i] = rn[i];
-        mz[i] = ra[i];
-    }
-    wrist_rzrx_t(mz, mx, cs[0], cs[1], m->sa[0], m->ca[0]);
+    wrist_rzrx_t(ra, rn, mz, mx, cs[0], cs[1], m->sa[0], m->ca[0]);
     wrist_m(m, q_ref, out, mx, mz, &cs[2]);
 }
 

@@ -217,13 +217,13 @@ DH_INLINE float dh_ikc_sign_f32_(float x)
     return x < 0.0f ? -1.0f : 1.0f;
 }
 
-/* atan2 in degrees, (-180, 180]; (0, 0) gives 0. The radian atan2 (2 ulp)
- * times 180/pi: the degree version's double-float arithmetic needs 80
+/* atan2 in degrees, (-180, 180]; (0, 0) gives 0. dh_atan2f_dg_ (3 ulp):
+ * the correctly rounded degree version's double-float arithmetic needs 80
  * more bytes of stack on Cortex-M0+, more than the budget leaves. */
 DH_INLINE float dh_ikc_atan2_f32_(float y, float x)
 {
     if (dh_feq_f32(y, 0.0f) && dh_feq_f32(x, 0.0f)) return 0.0f;
-    return dh_wrap180_f32(dh_atan2f_(y, x) * DH_RAD2DEG_F);
+    return dh_atan2f_dg_(y, x);
 }
 
 /* A reference angle (any finite degrees) in (-180, 180]. */

@@ -85,6 +85,15 @@
 #define DH_SPEED_INLINE static DH_NOINLINE
 #endif
 
+/** 1: a small hot leaf shared by several callers is inlined into them
+ *  (speed over code size); 0 when optimising for size (-Os) and in the
+ *  size-first build, which keep its one out-of-line copy. */
+#if DH_FAST_PATHS && !defined(__OPTIMIZE_SIZE__)
+#define DH_HOT_INLINE 1
+#else
+#define DH_HOT_INLINE 0
+#endif
+
 /** Unrolls the next loop 3 / 4 times with GCC when not optimising for
  *  size (constant offsets, no loop counter); nothing otherwise. */
 #if defined(__GNUC__) && !defined(__clang__) && !defined(__OPTIMIZE_SIZE__)

@@ -13,12 +13,6 @@
 #include "dh_mathf.h"
 #include "dh_floatops.h"
 
-#define DH_MF_T1 (-0.33333326912f)
-#define DH_MF_T2 0.19999488967f
-#define DH_MF_T3 (-0.14272060333f)
-#define DH_MF_T4 0.10940818909f
-#define DH_MF_T5 (-0.079834060236f)
-#define DH_MF_T6 0.03871351284f
 
 #define DH_MF_SIGN 0x80000000u
 #define DH_MF_ABS 0x7FFFFFFFu
@@ -142,6 +136,11 @@ float dh_atan2f_(float y, float x)
         a = sum + (err + pio4_lo[pt.k]); /* >= 0 */
     }
     return dh_f32_from_bits(dh_f32_bits(a) ^ (dh_f32_bits(y) & DH_MF_SIGN));
+}
+
+float dh_atan2f_dg_(float y, float x)
+{
+    return dh_atan2f_dg_inl_(y, x);
 }
 
 /* 180 / pi = DH_MF_R_HI + DH_MF_R_LO (+ 2.0e-15) */

@@ -11,6 +11,9 @@
 #ifndef DHMATH_SRC_DH_MATHF_H
 #define DHMATH_SRC_DH_MATHF_H
 
+#include <math.h>
+#include <stdint.h>
+
 #include "dhmath/common.h"
 #include "dh_build.h"
 
@@ -34,6 +37,75 @@ float dh_atan2f_(float y, float x);
  * |corr| <= 2^-20 |result|; corr is dropped where min/max < 2^-60.
  */
 float dh_atan2f_deg_(float y, float x, float corr);
+
+/**
+ * atan2(y, x) in DEGREES, in (-180, 180] (y = +-0 with x < 0 gives 180),
+ * within 3 ulp (results below 2^-100: 3 ulp of 2^-100; ratios that small
+ * underflow), for finite (y, x) not both zero (both zero give 45; a NaN
+ * in gives NaN out): the reduction of dh_atan2f_ in plain float (no bit
+ * tests, no special cases), 45 K degrees exact and atan(u) scaled by
+ * 180/pi. For the closed-form solvers, whose callers take (0, 0) apart.
+ */
+float dh_atan2f_dg_(float y, float x);
+
+/* The minimax coefficients of atan on [-1/3, 1/2] (dh_mathf.c). */
+#define DH_MF_T1 (-0.33333326912f)
+#define DH_MF_T2 0.19999488967f
+#define DH_MF_T3 (-0.14272060333f)
+#define DH_MF_T4 0.10940818909f
+#define DH_MF_T5 (-0.079834060236f)
+#define DH_MF_T6 0.03871351284f
+/* 180 / pi rounded to float (DH_RAD2DEG_F) */
+#define DH_MF_RAD2DEG 57.295779513082320876798f
+
+/* dh_atan2f_dg_'s body, inlined by a caller that has the code space and
+ * the registers for it (the FPU builds' closed-form wrist solver). */
+DH_INLINE float dh_atan2f_dg_inl_(float y, float x)
+{
+    const float ax = fabsf(x), ay = fabsf(y);
+    float mx, mn, u, z, p, a;
+    uint32_t w, xn, b, k, sneg;
+    w = 0u; /* 1: reflected about the diagonal */
+    if (ay > ax) w = 1u;
+    xn = 0u; /* 1: the left half-plane */
+    if (x < 0.0f) xn = 1u;
+    mx = w ? ay : ax;
+    mn = w ? ax : ay;
+    if (!(mn < mx)) {
+        /* equal magnitudes (or a NaN): 45 degrees off an axis; mn - mx
+         * is 0, or NaN for a NaN */
+        b = 1u;
+        u = mn - mx;
+    } else if (mn + mn >= mx) {
+        /* ratio in [1/2, 1): 45 + atan(u), u = (mn - mx) / (mn + mx) in
+         * [-1/3, 0), the denominator's rounding error divided out, as in
+         * mathf_atan2_parts; scaled by 1/4 near the top against overflow */
+        float n, d, e;
+        if (mx > 0x1.0p+126f) {
+            mx *= 0.25f;
+            mn *= 0.25f;
+        }
+        b = 1u;
+        n = mn - mx;
+        d = mx + mn;
+        e = mn - (d - mx);
+        u = n / d;
+        u = u - u * (e / d);
+    } else {
+        b = 0u;
+        u = mn / mx; /* in [0, 1/2); mx > 0 here */
+    }
+    z = u * u;
+    p = (u + u * (z * (DH_MF_T1 + z * (DH_MF_T2 + z * (DH_MF_T3 + z * (DH_MF_T4 + z * (DH_MF_T5 + z * DH_MF_T6))))))) *
+        DH_MF_RAD2DEG;
+    /* angle = 45 K + s atan(u) degrees, K and s as in mathf_atan2_parts */
+    sneg = w ^ xn;
+    k = w ? 2u : (xn ? 4u : 0u);
+    k = sneg ? k - b : k + b;
+    a = 45.0f * (float)k + (sneg ? -p : p); /* in [0, 180] */
+    return (y < 0.0f && a < 180.0f) ? -a : a;
+}
+
 
 /**
  * asin v (want_acos 0, in [-90, 90], odd bit for bit) or acos v (want_acos

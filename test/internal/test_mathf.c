@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_mathf.c - the library's private float helpers (src/internal/dh_mathf.h):
- * dh_atan2f_ and dh_sincosf_ against double-precision libm atan2 / sin /
+ * dh_atan2f_, dh_atan2f_dg_ and dh_sincosf_ against double-precision libm atan2 / sin /
  * cos evaluated on the same float inputs (converted to double exactly).
  *
  * Error measure: |f - ref| in units of the last place of the float nearest
@@ -19,6 +19,7 @@
 
 #define PI_D 3.14159265358979323846
 #define ULP_TOL 2.0  /* contract of dh_mathf.h (measured maxima printed) */
+#define ULP_TOL_DG 3.0 /* dh_atan2f_dg_'s */
 
 /* ulp of a float of magnitude |v| (v the exact value, double) */
 static double ulp_of(double v)
@@ -48,15 +49,28 @@ static float rand_float_exp(int emin, int emax)
 /* ---- atan2 ---------------------------------------------------------------- */
 
 static double worst_atan2 = 0.0;
+/* 1: the sweeps check dh_atan2f_dg_ (degrees, (-180, 180], 3 ulp, of
+ * 2^-100 for results below it) */
+static int atan2_deg = 0;
 
 static void check_atan2(float y, float x)
 {
-    float a = dh_atan2f_(y, x);
-    double ref = atan2((double)y, (double)x);
-    double e = ulp_err(a, ref);
+    float a;
+    double ref = atan2((double)y, (double)x), e;
+    if (atan2_deg) {
+        /* modulo 360: the float nearest a reference just above -180 may be
+         * -180, which the range (-180, 180] gives as 180 */
+        a = dh_atan2f_dg_(y, x);
+        ref *= 180.0 / PI_D;
+        DHT_TRUE_MSG(a > -180.0f && a <= 180.0f, "atan2 deg(%.9g, %.9g) = %.9g", (double)y, (double)x, (double)a);
+        e = fabs(remainder((double)a - ref, 360.0)) / ulp_of(fmax(fabs(ref), 0x1p-100));
+    } else {
+        a = dh_atan2f_(y, x);
+        e = ulp_err(a, ref);
+    }
     if (e > worst_atan2) worst_atan2 = e;
-    DHT_TRUE_MSG(e <= ULP_TOL, "atan2(%.9g, %.9g) = %.9g, ref %.17g: %.3g ulp",
-                 (double)y, (double)x, (double)a, ref, e);
+    DHT_TRUE_MSG(e <= (atan2_deg ? ULP_TOL_DG : ULP_TOL), "atan2%s(%.9g, %.9g) = %.9g, ref %.17g: %.3g ulp",
+                 atan2_deg ? " deg" : "", (double)y, (double)x, (double)a, ref, e);
 }
 
 static void atan2_sweep_angles(void)
@@ -259,11 +273,35 @@ static void sincos_special(void)
     }
 }
 
+/* dh_atan2f_dg_: the three sweeps in degrees (finite arguments, not both
+ * zero), then its conventions */
+static void atan2_deg_sweeps(void)
+{
+    atan2_deg = 1;
+    atan2_sweep_angles();
+    atan2_sweep_octant_edges();
+    atan2_extreme_magnitudes();
+    atan2_deg = 0;
+    DHT_EQ_F32_BITS(dh_atan2f_dg_(0.0f, -1.0f), 180.0f);
+    DHT_EQ_F32_BITS(dh_atan2f_dg_(-0.0f, -1.0f), 180.0f);
+    DHT_EQ_F32_BITS(dh_atan2f_dg_(-1e-30f, -1.0f), 180.0f);
+    DHT_EQ_F32_BITS(dh_atan2f_dg_(0.0f, 2.0f), 0.0f);
+    DHT_EQ_F32_BITS(dh_atan2f_dg_(2.0f, 0.0f), 90.0f);
+    DHT_EQ_F32_BITS(dh_atan2f_dg_(-2.0f, -0.0f), -90.0f);
+    DHT_EQ_F32_BITS(dh_atan2f_dg_(7.0f, 7.0f), 45.0f);
+    DHT_EQ_F32_BITS(dh_atan2f_dg_(-FLT_MAX, -FLT_MAX), -135.0f);
+    DHT_EQ_F32_BITS(dh_atan2f_dg_(0.0f, 0.0f), 45.0f);
+    DHT_TRUE(isnan(dh_atan2f_dg_(NAN, 1.0f)));
+    DHT_TRUE(isnan(dh_atan2f_dg_(1.0f, NAN)));
+    DHT_TRUE(isnan(dh_atan2f_dg_(NAN, NAN)));
+}
+
 static const dht_case cases[] = {
     DHT_CASE(atan2_sweep_angles),
     DHT_CASE(atan2_sweep_octant_edges),
     DHT_CASE(atan2_extreme_magnitudes),
     DHT_CASE(atan2_special),
+    DHT_CASE(atan2_deg_sweeps),
     DHT_CASE(sincos_dense),
     DHT_CASE(sincos_whole_range),
     DHT_CASE(sincos_special),
