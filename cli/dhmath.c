@@ -652,7 +652,8 @@ static int ik_all(const opts *o, const dh_robot *r, const dh_robotfile *rf, cons
     st = dh_ikc_f32(&m, target, qref, 0u, sol, &n_sol);
     if (st == DH_ERR_NOT_RIGID) return ik_not_rigid(o->pos[0], r, rf, target, DH_IK_FULL);
     if (st == DH_ERR_UNREACHABLE) {
-        fprintf(stderr, "ik --all: no solution: the target is out of reach\n");
+        fprintf(stderr, "ik --all: no solution: the target is out of reach%s\n",
+                m.calibrated ? " (or no branch of the idealised closed form converged on the calibrated chain)" : "");
         return EXIT_NOCONV;
     }
     if (st == DH_ERR_LIMIT) {
@@ -665,8 +666,10 @@ static int ik_all(const opts *o, const dh_robot *r, const dh_robotfile *rf, cons
         for (k = 0; k < r->n; k++) put_num(sol[s].q[k], k + 1 == r->n);
     rc = cli_finish();
     (void)dh_ikc_f32(&m, target, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_all);
-    fprintf(stderr, "ik --all: %u closed-form solution%s within the limits (%u outside)\n", (unsigned)n_sol,
-            n_sol == 1u ? "" : "s", (unsigned)(n_all - n_sol));
+    fprintf(stderr, "ik --all: %u closed-form solution%s within the limits (%u outside)%s\n", (unsigned)n_sol,
+            n_sol == 1u ? "" : "s", (unsigned)(n_all - n_sol),
+            m.calibrated ? ", refined by Newton steps on the calibrated chain (the robot is within the calibration "
+                           "tolerance of a closed-form family)" : "");
     return rc;
 }
 

@@ -120,10 +120,36 @@ typedef enum {
 #define DH_IKC_SHOULDER_ALT 0x01u  /**< second shoulder branch */
 #define DH_IKC_ELBOW_ALT 0x02u     /**< second elbow branch */
 #define DH_IKC_WRIST_ALT 0x04u     /**< second wrist branch (wrist flipped) */
+#define DH_IKC_REFINED 0x08u       /**< calibrated model: refined on the exact chain, converged (see below) */
 #define DH_IKC_OUT_OF_LIMITS 0x10u /**< a joint value is outside its limits (kept with DH_IKC_KEEP_OUT_OF_LIMITS) */
 #define DH_IKC_SING_WRIST 0x20u    /**< wrist singular: joint 4 (PARALLEL_234: joint 6) taken from q_ref */
 #define DH_IKC_SING_SHOULDER 0x40u /**< shoulder singular: joint 1 taken from q_ref */
 #define DH_IKC_SING_ELBOW 0x80u    /**< elbow stretched: the two elbow branches coincide (returned once) */
+/** @} */
+
+/** @name Calibration tolerance (dh_ikc_analyse_f32)
+ * A six-revolute robot that no family fits exactly but that is within these
+ * of DH_IKC_PARALLEL_234 is a calibrated robot of that family
+ * (model.calibrated = 1): every twist within DH_IKC_CAL_ANGLE_DEG of a
+ * multiple of 90 degrees is taken as that multiple and a5 of the canonical
+ * chain within DH_IKC_CAL_OFFSET_REL of the sum of the chain's |a| and |d|
+ * as 0 (the idealised chain). dh_ikc_f32 solves the idealised chain in
+ * closed form and refines every branch on the exact chain by at most
+ * DH_IKC_CAL_STEPS simplified Newton steps; a branch is returned (flagged
+ * DH_IKC_REFINED) only when its residual on the exact chain is within
+ * 4e-7 L in position (L: the sum of |a| and |d|) and 8e-7 rad, and left
+ * out otherwise (none left: DH_ERR_UNREACHABLE); the accuracy bounds below
+ * hold for it. A branch exists only where the idealised chain has it: a
+ * configuration whose joint 5 point lies within the deviations' shift
+ * (about 1.3e-2 L for 2 mm and 0.5 deg) of the elbow's boundary, or one at
+ * a singularity of the idealised blocks (s5, shoulder, elbow), may be
+ * missing. Beyond the tolerance: no closed form (DH_ERR_UNAVAILABLE, why
+ * as for any robot). The spherical-wrist and SCARA families, and the fixed
+ * path (dh_ikc_analyse_q), recognise exact robots only.
+ * @{ */
+#define DH_IKC_CAL_ANGLE_DEG 1.0f   /**< twist deviation, degrees */
+#define DH_IKC_CAL_OFFSET_REL 0.01f /**< structure-breaking length, fraction of the reach */
+#define DH_IKC_CAL_STEPS 12u        /**< Newton steps per branch at most */
 /** @} */
 
 /** Option bit for dh_ikc_f32 / dh_ikc_q: keep solutions outside the limits, flagged. */
@@ -149,6 +175,15 @@ typedef struct {
     float win_lo[DH_IKC_JOINTS]; /**< a revolute value v with win_lo <= v <= win_hi lies in (-180, 180] and within the limits */
     float win_hi[DH_IKC_JOINTS]; /**< upper end of that window */
     uint32_t wide;               /**< bit i set: joint i's limits are a turn or more apart (q_ref picks among the shifts) */
+    uint32_t calibrated;         /**< 1: within the calibration tolerance of kind, not on it: a..ca hold the
+                                      idealised chain, xa..xca the exact one, solutions refined; 0: exact */
+    float xa[DH_IKC_JOINTS];     /**< exact canonical a (calibrated; 0 otherwise) */
+    float xd[DH_IKC_JOINTS];     /**< exact canonical d */
+    float xsa[DH_IKC_JOINTS];    /**< exact canonical sin(alpha) */
+    float xca[DH_IKC_JOINTS];    /**< exact canonical cos(alpha) */
+    float xlen;                  /**< sum of the exact chain's |a| and |d| (calibrated) */
+    float xw5[3];                /**< the exact chain's joint 5 point in the tool frame (calibrated) */
+    uint32_t xframes;            /**< bit 0: a base frame (pre_inv not the identity), bit 1: a tool frame */
 } dh_ikc_model_f32;
 
 /** Fixed-point model (fill with dh_ikc_analyse_q); lengths dh_qpos, sin/cos Q2.30, angles Q16.16. */

@@ -157,6 +157,10 @@ dh_status dh_ikc_analyse_f32(const dh_robot *r, dh_ikc_model_f32 *m)
         m->why = DH_IKC_WHY_NONE;
         return DH_OK;
     }
+    if (dh_ikc_calibrate_f32_(m)) {
+        m->why = DH_IKC_WHY_NONE;
+        return DH_OK;
+    }
     return ikc_none(m, ikc_why(m), DH_ERR_UNAVAILABLE);
 }
 
@@ -356,9 +360,12 @@ typedef char ikc_raw_mask_fits_[(DH_IKC_MAX_SOL == 8u) ? 1 : -1];
  * front, in order. Joint by joint (ikc_joint): a solution found outside
  * the limits is not converted further unless opts keeps it. Out of line:
  * its frame is not on top of a solver's. */
-static DH_NOINLINE dh_status ikc_finish(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t opts,
-                                        dh_ikc_sol_f32 *sol, uint32_t raw, uint32_t *n_sol)
+static DH_NOINLINE dh_status ikc_finish(const dh_ikc_model_f32 *m, const float *q_ref, dh_ikc_sol_f32 *sol,
+                                        uint32_t *n_sol)
 {
+    /* *n_sol on entry: the raw count (1..DH_IKC_MAX_SOL) in bits 0..3, opts
+     * above (four arguments: no stack arguments in the callers' frames) */
+    const uint32_t opts = *n_sol >> 4, raw = *n_sol & 0xFu;
     /* the mask of the first raw solutions (raw <= DH_IKC_MAX_SOL) */
     static const uint8_t raw_mask[DH_IKC_MAX_SOL + 1u] = { 0x00u, 0x01u, 0x03u, 0x07u, 0x0Fu, 0x1Fu, 0x3Fu, 0x7Fu, 0xFFu };
     const int keep = (opts & DH_IKC_KEEP_OUT_OF_LIMITS) != 0u;
@@ -388,7 +395,9 @@ static DH_NOINLINE dh_status ikc_finish(const dh_ikc_model_f32 *m, const float *
 
 dh_status dh_ikc_args_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, uint32_t opts)
 {
-    return ikc_args(m, T, q_ref, opts);
+    const dh_status st = ikc_args(m, T, q_ref, opts);
+    /* the refinement of a calibrated model runs in dh_ikc_f32 only */
+    return (st == DH_OK && m->calibrated != 0u) ? DH_ERR_UNAVAILABLE : st;
 }
 
 dh_status dh_ikc_finish_f32_(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t opts, dh_ikc_sol_f32 *sol,
@@ -398,7 +407,8 @@ dh_status dh_ikc_finish_f32_(const dh_ikc_model_f32 *m, const float *q_ref, uint
     *n_sol = 0;
     if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;
     if (raw == 0u) return DH_ERR_UNREACHABLE;
-    return ikc_finish(m, q_ref, opts, sol, raw, n_sol);
+    *n_sol = raw | (opts << 4);
+    return ikc_finish(m, q_ref, sol, n_sol);
 }
 
 dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const float *q_ref, uint32_t opts,
@@ -413,10 +423,22 @@ dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const
     *n_sol = 0;
     st = ikc_args(m, target, q_ref, opts);
     if (st != DH_OK) return st;
+    /* opts waits in *n_sol while the solver runs: one value fewer kept
+     * across it, so that the target can be (the refinement of a calibrated
+     * model reads it) within the same frame */
+    *n_sol = opts << 4;
     raw = dh_ikc_raw_f32_(m, target, q_ref, sol);
+    if (m->calibrated != 0u) {
+        dh_ikc_refine_f32_(m, target, sol, raw);
+        raw = dh_ikc_pack_f32_(sol, raw);
+    }
     if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;
-    if (raw == 0u) return DH_ERR_UNREACHABLE;
-    return ikc_finish(m, q_ref, opts, sol, raw, n_sol);
+    if (raw == 0u) {
+        *n_sol = 0;
+        return DH_ERR_UNREACHABLE;
+    }
+    *n_sol |= raw;
+    return ikc_finish(m, q_ref, sol, n_sol);
 }
 
 dh_status dh_ikc_nearest_f32(const dh_ikc_sol_f32 *sol, uint32_t n_sol, const float *q_ref, uint32_t n,

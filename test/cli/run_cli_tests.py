@@ -23,9 +23,10 @@ Groups:
   ikc       ik --all (closed form) on the shipped wrist robots: every line a
             solution (double FK here), the generating configuration among
             them, exit 3 unreachable / outside the limits, exit 2 and the
-            reason for a robot without a closed form; ik --all --fixed on
-            puma560_mm and ur5_mm (the fixed path, within 5e-3 mm), its
-            exit 3 and exit 2 cases
+            reason for a robot without a closed form; a calibrated UR5
+            (its summary says the solutions were refined); ik --all
+            --fixed on puma560_mm and ur5_mm (the fixed path, within 5e-3
+            mm), its exit 3 and exit 2 cases
   move      move: a joint move (trapezoids and --jerk), a line, an arc and
             a joint move back on the UR5, a Puma line: the header, the
             period count against the planned duration (computed here), every
@@ -1214,7 +1215,49 @@ def group_ikc(seed, tmp):
               'ik --all error %r: rc %d out %r err %r' % (args, rc, out, err))
 
 
+    group_ikc_calibrated(rng, tmp, rdir)
     group_ikc_fixed(rng, tmp, rdir)
+
+
+# A UR5 as a calibration could give it: lengths off by up to 1.8 mm, twists
+# by up to 0.4 deg, a joint 5 length of 1.5 mm (ur5.dh with these values).
+UR5_CALIBRATED = """convention standard
+joint R a=0.0011    d=0.089859 alpha=90.3   min=-360 max=360
+joint R a=-0.4262   d=0.0014   alpha=-0.2   min=-360 max=360
+joint R a=-0.39105  d=-0.0009  alpha=0.4    min=-360 max=360
+joint R a=-0.0007   d=0.10835  alpha=89.8   min=-360 max=360
+joint R a=0.0015    d=0.09545  alpha=-90.25 min=-360 max=360
+joint R a=0         d=0.0829   alpha=0.1    min=-360 max=360
+"""
+
+
+def group_ikc_calibrated(rng, tmp, rdir):
+    """ik --all on a calibrated UR5: unchanged command line, the summary says
+    the solutions were refined, every printed solution reaches the target
+    (double reference FK of the calibrated table), the generating
+    configuration (away from the singularities) is printed."""
+    path = write(tmp, 'ur5_calibrated.dh', UR5_CALIBRATED)
+    rob = read_robot(UR5_CALIBRATED)
+    js = rob['joints']
+    nsol = 0
+    for it in range(10):
+        q = [rng.uniform(-170, 170), rng.uniform(-130, -50), rng.choice((-1, 1)) * rng.uniform(65, 115),
+             rng.uniform(-170, 170), rng.choice((-1, 1)) * rng.uniform(55, 125), rng.uniform(-170, 170)]
+        T = ref_fk(rob, q)
+        rc, out, err = run(['ik', '--all', path, to_expr(T)])
+        lines = err.splitlines()
+        rows = nums(out)
+        check(rc == 0 and len(lines) == 1 and re.match(
+            r'ik --all: %d closed-form solutions? within the limits \(0 outside\), refined by Newton steps on the '
+            r'calibrated chain' % len(rows), lines[0]) is not None, 'ik --all calibrated ur5: rc %d err %r' % (rc, err))
+        best = 1e30
+        for row in rows:
+            d = maxdiff(ref_fk(rob, row), T)
+            check(d <= 2e-5, 'ik --all calibrated ur5: solution %r misses the target by %.3g' % (row, d))
+            best = min(best, max(ang_diff(a, b) for a, b in zip(row, q)))
+        check(best <= 1e-2, 'ik --all calibrated ur5: generating q %r not printed (nearest %.3g)\n%s' % (q, best, out))
+        nsol += len(rows)
+    print('ik --all calibrated ur5: %d solutions printed' % nsol)
 
 
 def group_ikc_fixed(rng, tmp, rdir):

@@ -1,0 +1,419 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * dh_ikc_refine.c - closed-form IK of calibrated robots, float: the
+ * recognition of a six-revolute chain within the calibration tolerance of
+ * DH_IKC_PARALLEL_234 (dh_ikc_calibrate_f32_, called by dh_ikc_analyse_f32
+ * after the exact detectors) and the refinement of the idealised closed
+ * form's raw solutions on the exact chain (dh_ikc_refine_f32_, called by
+ * dh_ikc_raw_f32_ after the family solver has returned); interface in
+ * ikc_impl.h. Method and convergence argument: docs/design.md
+ * ("Calibrated robots").
+ *
+ * Refinement of one branch: simplified Newton steps with the idealised
+ * chain's Jacobian in the frame-1 split of the family (the errors in the
+ * basis of frame 1: the position error of the joint 5 point along axis 2
+ * and the rotation error across it depend on joints 1, 5, 6 only; the
+ * planar position error and the rotation about axis 2 on joints 2, 3, 4
+ * once those are known), each step one exact forward kinematics.
+ *
+ * Stack: the entry keeps 24 floats (the cosines and sines of the branch's
+ * joints, and the exact frame or the errors); every helper runs from the
+ * entry in sequence, none below another, and only the trigonometry helper
+ * calls dh_sincos_f32.
+ */
+#include "dhmath/ikc.h"
+#include "dhmath/trig.h"
+#include "ikc_impl.h"
+#include "../internal/dh_floatops.h"
+
+#include <math.h>
+
+/* sin of DH_IKC_CAL_ANGLE_DEG (1 degree) */
+#define REF_SIN_TOL 0.0174524064f
+/* Converged: position error of the joint 5 point at most REF_POS_REL L (L:
+ * the sum of the exact chain's |a| and |d|) and rotation error at most
+ * REF_ROT rad. */
+#define REF_POS_REL 4e-7f
+#define REF_ROT 8e-7f
+/* Largest joint step (rad): a larger Newton step is scaled down to it. */
+#define REF_MAX_STEP 0.2f
+/* |sin theta5| or a planar determinant below this (relative): the branch
+ * is at a singularity of the idealised Jacobian and is not refined. */
+#define REF_SING 1e-6f
+/* Two refined solutions this close on every joint (deg) are one. */
+/* A step count past the last: the branch is done. */
+#define REF_DONE (DH_IKC_CAL_STEPS + 1u)
+#define REF_SAME_DEG 1e-3f
+
+/* m->k layout of DH_IKC_PARALLEL_234 (dh_ikc_par234.c), the entries read here */
+enum { RK_TAU = 0, RK_S2 = 1, RK_S23 = 2, RK_SB = 3, RK_W5 = 4 };
+
+/* ---- analysis -------------------------------------------------------------------- */
+
+/* The twists of m snapped to the nearest multiple of 90 degrees where within
+ * 1 degree of it. */
+static void ref_snap_twists(dh_ikc_model_f32 *m)
+{
+    uint32_t i;
+    for (i = 0; i < 6u; i++) {
+        if (fabsf(m->sa[i]) <= REF_SIN_TOL) {
+            m->sa[i] = 0.0f;
+            m->ca[i] = dh_ikc_sign_f32_(m->ca[i]);
+        } else if (fabsf(m->ca[i]) <= REF_SIN_TOL) {
+            m->ca[i] = 0.0f;
+            m->sa[i] = dh_ikc_sign_f32_(m->sa[i]);
+        } else {
+            /* a general twist: kept */
+        }
+    }
+}
+
+/* the exact chain of m (a..ca) copied to xa..xca (to 1) or back, xa..xca
+ * cleared (to 0) */
+static void ref_keep(dh_ikc_model_f32 *m, int to)
+{
+    uint32_t i;
+    for (i = 0; i < DH_IKC_JOINTS; i++) {
+        if (to) {
+            m->xa[i] = m->a[i];
+            m->xd[i] = m->d[i];
+            m->xsa[i] = m->sa[i];
+            m->xca[i] = m->ca[i];
+        } else {
+            m->a[i] = m->xa[i];
+            m->d[i] = m->xd[i];
+            m->sa[i] = m->xsa[i];
+            m->ca[i] = m->xca[i];
+            m->xa[i] = 0.0f;
+            m->xd[i] = 0.0f;
+            m->xsa[i] = 0.0f;
+            m->xca[i] = 0.0f;
+        }
+    }
+}
+
+int dh_ikc_calibrate_f32_(dh_ikc_model_f32 *m)
+{
+    if (m->n != 6u || m->prismatic != 0u) return 0;
+    ref_keep(m, 1);
+    ref_snap_twists(m);
+    if (fabsf(m->a[4]) <= DH_IKC_CAL_OFFSET_REL * dh_ikc_len_scale_f32_(m, 6u)) m->a[4] = 0.0f;
+    if (dh_ikc_detect_par234_f32_(m)) {
+        uint32_t i;
+        m->calibrated = 1u;
+        m->xlen = 0.0f;
+        for (i = 0; i < 6u; i++) m->xlen += fabsf(m->xa[i]) + fabsf(m->xd[i]);
+        if (!(m->xlen > 0.0f)) m->xlen = 1.0f;
+        /* post^-1 (-a6, -d6 sa6, -d6 ca6): frame 5's origin seen from the tool */
+        m->xw5[0] = -m->xa[5];
+        m->xw5[1] = -m->xd[5] * m->xsa[5];
+        m->xw5[2] = -m->xd[5] * m->xca[5];
+        dh_ikc_xform_f32_(&m->post_inv, m->xw5, 1.0f, m->xw5);
+        m->xframes = (dh_ikc_is_identity_f32_(&m->pre_inv) ? 0u : 1u) | (dh_ikc_is_identity_f32_(&m->post_inv) ? 0u : 2u);
+        return 1;
+    }
+    ref_keep(m, 0);
+    m->kind = DH_IKC_NONE;
+    return 0;
+}
+
+/* ---- refinement ------------------------------------------------------------------ */
+
+/* Work data of one call: cs the cosines and sines of the branch's canonical
+ * joint values (c1, s1, ..., c6, s6); u the exact chain's end frame
+ * (columns x, y, z and the joint 5 point), then the errors and the joint
+ * 5 point (ref_rot, ref_pos, ref_frame1), then the steps (ref_a, ref_b);
+ * m the model, T the target. */
+typedef struct {
+    float cs[12];
+    float u[12];
+    const dh_ikc_model_f32 *m;
+    const dh_mat4_f32 *T;
+} ref_work;
+
+/* cs of the canonical values q (of the joint values being refined, so
+ * that the verdict is on them) */
+static DH_NOINLINE void ref_trig(const float *q, ref_work *w)
+{
+    uint32_t i;
+    for (i = 0; i < 12u; i += 2u) (void)dh_sincos_f32(q[i >> 1], &w->cs[i + 1u], &w->cs[i]);
+}
+
+/* The exact chain's T06 from cs into u, per joint the turn about z, the
+ * offsets, the twist, each a pass over the three rows; then p moved to the
+ * joint 5 point, T06 (-a6, -d6 sa6, -d6 ca6). */
+static DH_NOINLINE void ref_fk(ref_work *w)
+{
+    const dh_ikc_model_f32 *m = w->m;
+    float *u = w->u;
+    uint32_t i, r;
+    for (r = 0; r < 12u; r++) u[r] = ((r & 3u) == 0u && r < 9u) ? 1.0f : 0.0f;
+    for (i = 0; i < 6u; i++) {
+        const float *cs = &w->cs[2u * i];
+        for (r = 0; r < 3u; r++) {
+            const float x = u[r];
+            u[r] = cs[0] * x + cs[1] * u[3u + r];
+            u[3u + r] = cs[0] * u[3u + r] - cs[1] * x;
+            u[9u + r] += m->xd[i] * u[6u + r] + m->xa[i] * u[r];
+        }
+        for (r = 0; r < 3u; r++) {
+            const float y = u[3u + r];
+            u[3u + r] = m->xca[i] * y + m->xsa[i] * u[6u + r];
+            u[6u + r] = m->xca[i] * u[6u + r] - m->xsa[i] * y;
+        }
+    }
+    for (r = 0; r < 3u; r++) u[9u + r] -= m->xa[5] * u[r] + m->xd[5] * (m->xsa[5] * u[3u + r] + m->xca[5] * u[6u + r]);
+}
+
+/* u's rotation times the tool frame's (post = post_inv^-1, rotation S^T),
+ * when there is one */
+static DH_NOINLINE void ref_tool(ref_work *w)
+{
+    const dh_mat4_f32 *P = &w->m->post_inv;
+    float *u = w->u;
+    uint32_t c, r;
+    if ((w->m->xframes & 2u) == 0u) return;
+    for (r = 0; r < 3u; r++) {
+        const float x = u[r], y = u[3u + r], z = u[6u + r];
+        for (c = 0; c < 3u; c++) u[3u * c + r] = x * P->m[0][c] + y * P->m[1][c] + z * P->m[2][c];
+    }
+}
+
+/* u <- pre u (pre = pre_inv^-1 = (R^T, -R^T p): each column v to R^T v,
+ * the point to R^T (v - p)), when there is a base frame */
+static DH_NOINLINE void ref_base(ref_work *w)
+{
+    const dh_mat4_f32 *P = &w->m->pre_inv;
+    float *u = w->u;
+    uint32_t c, r;
+    if ((w->m->xframes & 1u) == 0u) return;
+    for (r = 0; r < 3u; r++) u[9u + r] -= P->m[3][r];
+    for (c = 0; c < 4u; c++) {
+        float *v = &u[3u * c];
+        const float x = v[0], y = v[1], z = v[2];
+        for (r = 0; r < 3u; r++) v[r] = P->m[r][0] * x + P->m[r][1] * y + P->m[r][2] * z;
+    }
+}
+
+/* The rotation error (x x xt + y x yt + z x zt) / 2 (rad) of u (the exact
+ * chain's end frame) against the target into u[3..5] (the rotation is not
+ * read after it; its first two components pass through cs[10], cs[11],
+ * which the forward kinematics has used). */
+static DH_NOINLINE void ref_rot(ref_work *w)
+{
+    const dh_mat4_f32 *T = w->T;
+    float *u = w->u;
+    uint32_t k;
+    w->cs[10] = 0.0f;
+    w->cs[11] = 0.0f;
+    for (k = 0; k < 3u; k++) w->cs[10] += u[3u * k + 1u] * T->m[k][2] - u[3u * k + 2u] * T->m[k][1];
+    for (k = 0; k < 3u; k++) w->cs[11] += u[3u * k + 2u] * T->m[k][0] - u[3u * k] * T->m[k][2];
+    u[5] = 0.5f * ((u[0] * T->m[0][1] - u[1] * T->m[0][0]) + (u[3] * T->m[1][1] - u[4] * T->m[1][0]) +
+                   (u[6] * T->m[2][1] - u[7] * T->m[2][0]));
+    u[3] = 0.5f * w->cs[10];
+    u[4] = 0.5f * w->cs[11];
+}
+
+/* The position error of the joint 5 point (u[9..11]) against the target
+ * into u[0..2], the point into u[6..8]; then the verdict on branch b after
+ * it steps: converged (|position error| <= tp = REF_POS_REL L and
+ * |rotation error| <= REF_ROT, in the sum of their squares over the
+ * squared bounds): b flagged DH_IKC_REFINED, REF_DONE returned; an error
+ * not finite: REF_DONE; else it + 1 (REF_DONE after DH_IKC_CAL_STEPS). */
+static DH_NOINLINE uint32_t ref_pos(ref_work *w, dh_ikc_sol_f32 *b, uint32_t it)
+{
+    const dh_mat4_f32 *T = w->T;
+    const float *p = w->m->xw5;
+    float *u = w->u;
+    float ep = 0.0f, tp;
+    uint32_t k;
+    for (k = 0; k < 3u; k++) {
+        u[k] = T->m[3][k] + T->m[0][k] * p[0] + T->m[1][k] * p[1] + T->m[2][k] * p[2] - u[9u + k];
+        ep += u[k] * u[k];
+        u[6u + k] = u[9u + k];
+    }
+    tp = REF_POS_REL * w->m->xlen;
+    ep = ep / (tp * tp) + (u[3] * u[3] + u[4] * u[4] + u[5] * u[5]) * (1.0f / (REF_ROT * REF_ROT));
+    if (ep <= 1.0f) {
+        b->flags |= DH_IKC_REFINED;
+        return REF_DONE;
+    }
+    return (ep <= 1e30f) ? (it + 1u) : REF_DONE;
+}
+
+/* The start of branch b: its DH_IKC_REFINED flag cleared; the step count 0,
+ * or REF_DONE when b is not finite. */
+static DH_NOINLINE uint32_t ref_begin(dh_ikc_sol_f32 *b)
+{
+    b->flags &= ~(uint32_t)DH_IKC_REFINED;
+    return dh_allfinite_f32(b->q, 6u) ? 0u : REF_DONE;
+}
+
+/* ref_pos's errors and point into the basis of the idealised frame 1, in
+ * place: pre^-1 (skipped when the identity), then Rz(theta1)^T,
+ * Rx(alpha1)^T; the point from frame 1's origin (a1 c1, a1 s1, d1). */
+static DH_NOINLINE void ref_frame1(ref_work *w)
+{
+    const dh_ikc_model_f32 *m = w->m;
+    const dh_mat4_f32 *P = &m->pre_inv;
+    float *u = w->u;
+    uint32_t k, r;
+    if ((m->xframes & 1u) != 0u)
+        for (k = 0; k < 3u; k++) {
+            float *v = &u[3u * k];
+            const float x = v[0], y = v[1], z = v[2];
+            for (r = 0; r < 3u; r++) v[r] = P->m[0][r] * x + P->m[1][r] * y + P->m[2][r] * z + ((k == 2u) ? P->m[3][r] : 0.0f);
+        }
+    u[6] -= m->a[0] * w->cs[0];
+    u[7] -= m->a[0] * w->cs[1];
+    u[8] -= m->d[0];
+    for (k = 0; k < 3u; k++) {
+        float *v = &u[3u * k];
+        const float x = v[0];
+        v[0] = w->cs[0] * x + w->cs[1] * v[1];
+        v[1] = w->cs[0] * v[1] - w->cs[1] * x;
+    }
+    for (k = 0; k < 3u; k++) {
+        float *v = &u[3u * k];
+        const float y = v[1];
+        v[1] = m->ca[0] * y + m->sa[0] * v[2];
+        v[2] = m->ca[0] * v[2] - m->sa[0] * y;
+    }
+}
+
+/* cos and sin of phi = theta2 + s2 theta3 (with4 0) or + s23 theta4 into
+ * cp[0], cp[1] */
+static void ref_phi(const dh_ikc_model_f32 *m, const float *cs, int with4, float *cp)
+{
+    const float s2 = m->k[RK_S2];
+    cp[0] = cs[2] * cs[4] - s2 * cs[3] * cs[5];
+    cp[1] = cs[3] * cs[4] + s2 * cs[2] * cs[5];
+    if (with4) {
+        const float s23 = m->k[RK_S23], c = cp[0], s = cp[1];
+        cp[0] = c * cs[6] - s23 * s * cs[7];
+        cp[1] = s * cs[6] + s23 * c * cs[7];
+    }
+}
+
+/* Joints 1, 5, 6 (rad) from the errors along axis 2 and the rotation error
+ * across it (rows lin_z, ang_x, ang_y of the idealised Jacobian in frame 1:
+ * joint 1 (-tau (px + a1), 0, tau), joint 5 (0, sb sphi, -sb cphi), joint 6
+ * (0, w5 s5 cphi, w5 s5 sphi)) into u[9..11]; 0 at a singularity. */
+static DH_NOINLINE int ref_a(ref_work *w)
+{
+    const dh_ikc_model_f32 *m = w->m;
+    float *u = w->u;
+    float d1, r2;
+    if (!(fabsf(u[6] + m->a[0]) > REF_SING * (fabsf(u[6]) + fabsf(u[7]) + fabsf(m->a[0]))) ||
+        !(fabsf(w->cs[9]) > REF_SING))
+        return 0;
+    d1 = -m->k[RK_TAU] * u[2] / (u[6] + m->a[0]);
+    r2 = u[4] - m->k[RK_TAU] * d1;
+    ref_phi(m, w->cs, 1, &u[9]);
+    u[11] = m->k[RK_W5] * (u[9] * u[3] + u[10] * r2) / w->cs[9];
+    u[10] = m->k[RK_SB] * (u[10] * u[3] - u[9] * r2);
+    u[9] = d1;
+    return 1;
+}
+
+/* Joints 2, 3, 4 (rad) into u[6..8] from the planar errors and the
+ * rotation about axis 2 less the parts of joints 1 and 6 (u[9], u[11]):
+ * rows lin_x, lin_y, ang_z of the idealised Jacobian in frame 1, a planar
+ * 3R (o2 u3 + o3 u4 = p om - (ey, -ex) with u3 = s2 dtheta3, u4 = s23
+ * dtheta4, om their sum with dtheta2; o2, o3 the origins of frames 2, 3).
+ * 0 at a singularity (elbow stretched or folded). */
+static DH_NOINLINE int ref_b(ref_work *w)
+{
+    const dh_ikc_model_f32 *m = w->m;
+    float *u = w->u;
+    float cp[2], det, om, gx, gy, u3;
+    ref_phi(m, w->cs, 0, cp);
+    /* o3 = a2 (c2, s2) + a3 (cos, sin)(theta2 + s2 theta3) into cp */
+    cp[0] = m->a[1] * w->cs[2] + m->a[2] * cp[0];
+    cp[1] = m->a[1] * w->cs[3] + m->a[2] * cp[1];
+    det = m->a[1] * (w->cs[2] * cp[1] - w->cs[3] * cp[0]);
+    if (!(fabsf(det) > REF_SING * fabsf(m->a[1] * m->a[2]))) return 0;
+    om = u[5] + m->k[RK_SB] * m->k[RK_W5] * w->cs[8] * u[11];
+    gx = u[6] * om - u[1];
+    gy = u[7] * om + (u[0] - m->k[RK_TAU] * u[8] * u[9]);
+    u3 = (gx * cp[1] - gy * cp[0]) / det;
+    gx = m->a[1] * (w->cs[2] * gy - w->cs[3] * gx) / det;
+    u[6] = om - u3 - gx;
+    u[7] = m->k[RK_S2] * u3;
+    u[8] = m->k[RK_S23] * gx;
+    return 1;
+}
+
+/* The steps (rad; joints 1, 5, 6 in u[9..11], 2, 3, 4 in u[6..8]),
+ * scaled to at most REF_MAX_STEP, added to q (degrees, wrapped); 0 when
+ * not finite. */
+static DH_NOINLINE int ref_apply(ref_work *w, float *q)
+{
+    float *u = w->u;
+    float big = 0.0f, f = 1.0f, t;
+    uint32_t i;
+    /* joint order: 1, 2, 3, 4, 5, 6 from u[9], u[6], u[7], u[8], u[10], u[11] */
+    t = u[8];
+    u[8] = u[7];
+    u[7] = u[6];
+    u[6] = u[9];
+    u[9] = t;
+    for (i = 6u; i < 12u; i++)
+        if (fabsf(u[i]) > big) big = fabsf(u[i]);
+    if (!(big <= 1e30f)) return 0;
+    if (big > REF_MAX_STEP) f = REF_MAX_STEP / big;
+    for (i = 0; i < 6u; i++) {
+        u[6u + i] *= f;
+        q[i] = dh_wrap180_f32(q[i] + DH_RAD2DEG_F * u[6u + i]);
+    }
+    return 1;
+}
+
+uint32_t dh_ikc_pack_f32_(dh_ikc_sol_f32 *sol, uint32_t raw)
+{
+    uint32_t s, k, i, n = 0;
+    if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;
+    for (s = 0; s < raw; s++) {
+        int keep = (sol[s].flags & DH_IKC_REFINED) != 0u;
+        for (k = 0; keep && k < n; k++) {
+            for (i = 0; i < 6u; i++) {
+                float d = fabsf(sol[k].q[i] - sol[s].q[i]);
+                if (d > 180.0f) d = 360.0f - d;
+                if (!(d <= REF_SAME_DEG)) break;
+            }
+            if (i == 6u) keep = 0;
+        }
+        if (!keep) continue;
+        if (n != s) sol[n] = sol[s];
+        n++;
+    }
+    for (s = n; s < raw; s++) sol[s].flags = 0u;
+    return n;
+}
+
+/* Each branch, last to first: at most DH_IKC_CAL_STEPS steps, each one
+ * exact forward kinematics; the helpers run in sequence from here, with
+ * only sol, the branch's index and the step count live across them. */
+void dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol, uint32_t raw)
+{
+    ref_work w;
+    uint32_t s = (raw > DH_IKC_MAX_SOL) ? DH_IKC_MAX_SOL : raw, it;
+    w.m = m;
+    w.T = T;
+    while (s > 0u) {
+        s--;
+        it = ref_begin(&sol[s]);
+        while (it < REF_DONE) {
+            ref_trig(sol[s].q, &w);
+            ref_fk(&w);
+            ref_tool(&w);
+            ref_base(&w);
+            ref_rot(&w);
+            it = ref_pos(&w, &sol[s], it);
+            if (it < REF_DONE) {
+                ref_frame1(&w);
+                if (!ref_a(&w) || !ref_b(&w) || !ref_apply(&w, sol[s].q)) it = REF_DONE;
+            }
+        }
+    }
+}
