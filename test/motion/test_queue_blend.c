@@ -7,7 +7,8 @@
  * Queues of 2 to 6 lines on the Puma 560, UR5 and Panda (the lines join
  * the FK frames of configurations a few degrees apart, so the tool also
  * turns), each with a random radius (0 in a fifth of them; up to 5 cm),
- * random Cartesian limits, most lines queued at the start and the rest
+ * random Cartesian limits, in a queue of three items: up to three lines
+ * queued at the start (in a third of the queues fewer), the others
  * appended as moves complete (a corner whose successor is not queued when
  * the line starts runs at rest). Every period's target (the queue's
  * command) is checked:
@@ -15,10 +16,12 @@
  *   1e-6 m, inside one within the corner's radius of the corner (plus
  *   8 FLT_EPSILON of the positions' scale);
  * - speed, TOTAL acceleration, angular speed and angular acceleration by
- *   finite differences over windows of W periods within the limits times
- *   1 + 1e-3 (plus the samples' rounding, at most 2.5e-4 of the bound
- *   with W = 50), from the start of the queue to its end, stops and
- *   tracker lags included; the angular ones from rotation vectors
+ *   finite differences within the limits times 1 + 1e-3, over windows of
+ *   WS = 10 periods every period (plus 8 ulp of the positions' scale, at
+ *   most a few percent of the bound: a short stretch beyond the limits
+ *   shows there) and of W = 50 periods every 10 (the rounding at most
+ *   2.5e-4 of the bound), from the start of the queue to its end, stops
+ *   and tracker lags included; the angular ones from rotation vectors
  *   log(R(t +- w) R(t)^T) about the middle sample (test_blend.c);
  * - each period's step within one period at the speed limits (plus the
  *   rounding), so no jump hides in a window.
@@ -45,10 +48,13 @@
 #include "dhmath/track.h"
 
 #define DT 1e-3f
-#define NMAX 6
-#define W 50             /* window of the finite differences (periods) */
-#define NH (2 * W + 1)   /* samples kept */
-#define WS 10            /* the short window (periods) */
+#define NMAX 6           /* lines of a queue */
+#define CAP 3            /* the queue's items: a line, the next, and the one after */
+#define WS 10            /* the short window (periods), every period */
+#define WD 10            /* the long window's sampling (periods) */
+#define W (5 * WD)       /* the long window (periods) */
+#define NS (2 * WS + 1)  /* samples kept, every period */
+#define NL (2 * W / WD + 1) /* samples kept, every WD periods */
 #define REL 1e-3
 #define ANG_NOISE 1e-4   /* degrees: rounding of a sampled rotation */
 #define MAXCALL 200000L
@@ -63,11 +69,12 @@ typedef struct {
 
 /* static: the micro:bit's RAM holds them beside the rig on the stack */
 static dh_queue_f32 qu;
-static dh_queue_item_f32 items[NMAX];
-static dh_path_f32 lines[NMAX];
+static dh_queue_item_f32 items[CAP];
+static dh_path_f32 line;              /* the line being appended */
+static float qc[NMAX + 1][DH_MAX_JOINTS]; /* the corners' configurations */
+static float cp[NMAX + 1][3];         /* the corners' positions (line k: cp[k] to cp[k + 1]) */
 static float radius[NMAX];
-static float hp[NH][3]; /* hp[m], hq[m]: the target m periods ago */
-static double hq[NH][4];
+static float sp[NS][7], lp[NL][7];    /* position and unit quaternion of the target m periods (m WD periods) ago */
 static long nh;
 
 static double dist3(const double a[3], const double b[3])
@@ -76,14 +83,14 @@ static double dist3(const double a[3], const double b[3])
     return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 
-/* distance of x from the segment of the line p */
-static double seg_dist(const dh_path_f32 *p, const double x[3])
+/* distance of x from the segment of line k */
+static double seg_dist(uint32_t k, const double x[3])
 {
     double a[3], d[3], r[3], dd = 0.0, s = 0.0, e[3];
     int i;
     for (i = 0; i < 3; i++) {
-        a[i] = p->A.m[3][i];
-        d[i] = (double)p->B.m[3][i] - a[i];
+        a[i] = cp[k][i];
+        d[i] = (double)cp[k + 1u][i] - a[i];
         r[i] = x[i] - a[i];
         dd += d[i] * d[i];
         s += r[i] * d[i];
@@ -132,80 +139,79 @@ static void quat_of(const dh_mat4_f32 *T, double q[4])
 }
 
 /* v = the rotation vector (degrees) of Rb Ra^T, from quaternions */
-static void rotvec(const double qa[4], const double qb[4], double v[3])
+static void rotvec(const float *qa, const float *qb, double v[3])
 {
     /* qb * conj(qa) */
-    const double w = qb[0] * qa[0] + qb[1] * qa[1] + qb[2] * qa[2] + qb[3] * qa[3];
+    const double w = (double)qb[0] * qa[0] + (double)qb[1] * qa[1] + (double)qb[2] * qa[2] + (double)qb[3] * qa[3];
     double x[3], n, th;
     int i;
-    x[0] = -qb[0] * qa[1] + qb[1] * qa[0] - qb[2] * qa[3] + qb[3] * qa[2];
-    x[1] = -qb[0] * qa[2] + qb[1] * qa[3] + qb[2] * qa[0] - qb[3] * qa[1];
-    x[2] = -qb[0] * qa[3] - qb[1] * qa[2] + qb[2] * qa[1] + qb[3] * qa[0];
+    x[0] = -(double)qb[0] * qa[1] + (double)qb[1] * qa[0] - (double)qb[2] * qa[3] + (double)qb[3] * qa[2];
+    x[1] = -(double)qb[0] * qa[2] + (double)qb[1] * qa[3] + (double)qb[2] * qa[0] - (double)qb[3] * qa[1];
+    x[2] = -(double)qb[0] * qa[3] - (double)qb[1] * qa[2] + (double)qb[2] * qa[1] + (double)qb[3] * qa[0];
     n = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
     th = 2.0 * atan2(n, fabs(w));
     for (i = 0; i < 3; i++) v[i] = (n > 0.0) ? ((w < 0.0) ? -1.0 : 1.0) * th * x[i] / n * RAD2DEG : 0.0;
 }
 
-/* every target's finite differences within lim (the file's comment) */
-static void check_fd(const dh_mat4_f32 *T, const dh_cart_limits_f32 *lim, double S, long call)
+/* the acceleration (linear, angular) of the samples h[0], h[w], h[2 w]
+ * times (w dt)^2 within lim (h: NS or NL rows of 7) */
+static void check_acc(const float (*h)[7], int w, double hdt, const dh_cart_limits_f32 *lim, double ulp, long call)
 {
-    const double h = (double)W * DT, ulp = S * FLT_EPSILON;
-    double p0[3], p1[3], pw[3], p2w[3], a[3], b[3], x;
-    int m, k;
-    for (m = NH - 1; m > 0; m--) {
-        memcpy(hp[m], hp[m - 1], sizeof hp[0]);
-        memcpy(hq[m], hq[m - 1], sizeof hq[0]);
-    }
-    for (k = 0; k < 3; k++) hp[0][k] = T->m[3][k];
-    quat_of(T, hq[0]);
-    nh++;
-    for (k = 0; k < 3; k++) {
-        p0[k] = hp[0][k];
-        p1[k] = hp[1][k];
-        pw[k] = hp[W][k];
-        p2w[k] = hp[2 * W][k];
-    }
-    if (nh >= 2) {
-        x = dist3(p0, p1);
-        DHT_TRUE_MSG(x <= (double)lim->vmax * DT * (1.0 + REL) + 4.0 * ulp, "call %ld: step %.9g over %.9g", call, x,
-                     (double)lim->vmax * DT);
-        rotvec(hq[1], hq[0], a);
-        x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-        DHT_TRUE_MSG(x <= (double)lim->wmax * DT * (1.0 + REL) + ANG_NOISE, "call %ld: turn %.9g over %.9g", call, x,
-                     (double)lim->wmax * DT);
-    }
-    if (nh >= 2 * WS + 1) {
-        /* a short window (the rounding a larger share of its bound) */
-        const double hs = (double)WS * DT;
-        for (k = 0; k < 3; k++) a[k] = p0[k] - 2.0 * hp[WS][k] + hp[2 * WS][k];
-        x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-        DHT_TRUE_MSG(x <= (double)lim->amax * hs * hs * (1.0 + REL) + 8.0 * ulp,
-                     "call %ld: acceleration %.9g over %.9g (%d periods)", call, x / (hs * hs), (double)lim->amax, WS);
-        rotvec(hq[WS], hq[0], a);
-        rotvec(hq[WS], hq[2 * WS], b);
-        for (k = 0; k < 3; k++) a[k] += b[k];
-        x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-        DHT_TRUE_MSG(x <= (double)lim->wdmax * hs * hs * (1.0 + REL) + 2.0 * ANG_NOISE,
-                     "call %ld: angular acceleration %.9g over %.9g (%d periods)", call, x / (hs * hs),
-                     (double)lim->wdmax, WS);
-    }
-    if (nh < NH) return;
-    x = dist3(p0, pw);
-    DHT_TRUE_MSG(x <= (double)lim->vmax * h * (1.0 + REL) + 4.0 * ulp, "call %ld: speed %.9g over %.9g", call, x / h,
-                 (double)lim->vmax);
-    for (k = 0; k < 3; k++) a[k] = p0[k] - 2.0 * pw[k] + p2w[k];
+    double a[3], b[3], x;
+    int k;
+    for (k = 0; k < 3; k++) a[k] = (double)h[0][k] - 2.0 * h[w][k] + h[2 * w][k];
     x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    DHT_TRUE_MSG(x <= (double)lim->amax * h * h * (1.0 + REL) + 8.0 * ulp, "call %ld: acceleration %.9g over %.9g",
-                 call, x / (h * h), (double)lim->amax);
-    rotvec(hq[W], hq[0], a);
-    x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    DHT_TRUE_MSG(x <= (double)lim->wmax * h * (1.0 + REL) + ANG_NOISE, "call %ld: angular speed %.9g over %.9g", call,
-                 x / h, (double)lim->wmax);
-    rotvec(hq[W], hq[2 * W], b);
+    DHT_TRUE_MSG(x <= (double)lim->amax * hdt * hdt * (1.0 + REL) + 8.0 * ulp,
+                 "call %ld: acceleration %.9g over %.9g (%.3g s)", call, x / (hdt * hdt), (double)lim->amax, hdt);
+    rotvec(&h[w][3], &h[0][3], a);
+    rotvec(&h[w][3], &h[2 * w][3], b);
     for (k = 0; k < 3; k++) a[k] += b[k];
     x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    DHT_TRUE_MSG(x <= (double)lim->wdmax * h * h * (1.0 + REL) + 2.0 * ANG_NOISE,
-                 "call %ld: angular acceleration %.9g over %.9g", call, x / (h * h), (double)lim->wdmax);
+    DHT_TRUE_MSG(x <= (double)lim->wdmax * hdt * hdt * (1.0 + REL) + 2.0 * ANG_NOISE,
+                 "call %ld: angular acceleration %.9g over %.9g (%.3g s)", call, x / (hdt * hdt), (double)lim->wdmax,
+                 hdt);
+}
+
+/* the speed (linear, angular) between the samples h0 and h1, hdt apart */
+static void check_speed(const float *h0, const float *h1, double hdt, const dh_cart_limits_f32 *lim, double ulp,
+                        long call)
+{
+    double p0[3], p1[3], a[3], x;
+    int k;
+    for (k = 0; k < 3; k++) {
+        p0[k] = h0[k];
+        p1[k] = h1[k];
+    }
+    x = dist3(p0, p1);
+    DHT_TRUE_MSG(x <= (double)lim->vmax * hdt * (1.0 + REL) + 4.0 * ulp, "call %ld: speed %.9g over %.9g (%.3g s)",
+                 call, x / hdt, (double)lim->vmax, hdt);
+    rotvec(&h1[3], &h0[3], a);
+    x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    DHT_TRUE_MSG(x <= (double)lim->wmax * hdt * (1.0 + REL) + ANG_NOISE, "call %ld: angular speed %.9g over %.9g",
+                 call, x / hdt, (double)lim->wmax);
+}
+
+/* every target's finite differences within lim (the file's comment):
+ * each period's step, windows of WS periods every period and of W
+ * periods every WD periods */
+static void check_fd(const dh_mat4_f32 *T, const dh_cart_limits_f32 *lim, double S, long call)
+{
+    const double ulp = S * FLT_EPSILON;
+    double q[4];
+    int m, k;
+    for (m = NS - 1; m > 0; m--) memcpy(sp[m], sp[m - 1], sizeof sp[0]);
+    quat_of(T, q);
+    for (k = 0; k < 3; k++) sp[0][k] = T->m[3][k];
+    for (k = 0; k < 4; k++) sp[0][3 + k] = (float)q[k];
+    nh++;
+    if (nh >= 2) check_speed(sp[0], sp[1], DT, lim, ulp, call);
+    if (nh >= NS) check_acc((const float (*)[7])sp, WS, (double)WS * DT, lim, ulp, call);
+    if ((nh - 1) % WD != 0) return;
+    for (m = NL - 1; m > 0; m--) memcpy(lp[m], lp[m - 1], sizeof lp[0]);
+    memcpy(lp[0], sp[0], sizeof lp[0]);
+    if (nh < (long)(NL - 1) * WD + 1) return;
+    check_speed(lp[0], lp[W / WD], (double)W * DT, lim, ulp, call);
+    check_acc((const float (*)[7])lp, W / WD, (double)W * DT, lim, ulp, call);
 }
 
 /* the target on its line outside an overlap, within the corner's radius
@@ -218,7 +224,7 @@ static int check_path(const dh_mat4_f32 *T, uint32_t n, double S, long call)
     int i;
     for (i = 0; i < 3; i++) {
         x[i] = T->m[3][i];
-        c[i] = lines[k].B.m[3][i];
+        c[i] = cp[k + 1u][i];
     }
     if (qu.bmode == 2u) {
         d = dist3(x, c);
@@ -226,31 +232,47 @@ static int check_path(const dh_mat4_f32 *T, uint32_t n, double S, long call)
                      (unsigned)k, (double)radius[k]);
         return 1;
     }
-    d = seg_dist(&lines[k], x);
+    d = seg_dist(k, x);
     DHT_TRUE_MSG(d <= 1e-6, "call %ld: %.9g off line %u", call, d, (unsigned)k);
     return 0;
 }
 
-/* a random queue of n lines from the configuration qa (float) */
-static void draw_lines(rig *g, const double *qa, uint32_t n, double step)
+/* the frame of corner k (FK of its configuration) */
+static void corner(const rig *g, uint32_t k, dh_mat4_f32 *T)
 {
-    double q[DH_MAX_JOINTS], qn[DH_MAX_JOINTS];
+    double q[DH_MAX_JOINTS];
+    uint32_t i;
+    for (i = 0; i < g->r.n; i++) q[i] = qc[k][i];
+    dhs_target_f32(&g->r, q, T);
+}
+
+/* line k appended with its radius */
+static void append(const rig *g, uint32_t k, const dh_cart_limits_f32 *lim)
+{
     dh_mat4_f32 A, B;
+    corner(g, k, &A);
+    corner(g, k + 1u, &B);
+    DHT_EQ_INT(dh_path_line_f32(&line, &A, &B), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, lim, radius[k]), DH_OK);
+}
+
+/* a random queue of n lines from the configuration qa: the corners'
+ * configurations a few degrees apart, their positions, the radii */
+static void draw_lines(const rig *g, const double *qa, uint32_t n, double step)
+{
+    dh_mat4_f32 T;
     uint32_t k, i;
-    memcpy(q, qa, sizeof q);
-    dhs_target_f32(&g->r, q, &A);
-    for (k = 0; k < n; k++) {
-        for (i = 0; i < g->r.n; i++) {
+    for (i = 0; i < g->r.n; i++) qc[0][i] = (float)qa[i];
+    for (k = 0; k <= n; k++) {
+        for (i = 0; k > 0 && i < g->r.n; i++) {
             const dh_joint *j = &g->r.joint[i];
-            double v = q[i] + dht_rand_uniform(-step, step);
+            double v = qc[k - 1u][i] + dht_rand_uniform(-step, step);
             if (j->qmin <= j->qmax) v = fmin(fmax(v, j->qmin + 5.0), j->qmax - 5.0);
-            qn[i] = v;
+            qc[k][i] = (float)v;
         }
-        dhs_target_f32(&g->r, qn, &B);
-        DHT_EQ_INT(dh_path_line_f32(&lines[k], &A, &B), DH_OK);
-        radius[k] = (dht_rand_u32() % 5u == 0u) ? 0.0f : (float)dht_rand_uniform(1e-3, 0.05);
-        A = B;
-        memcpy(q, qn, sizeof q);
+        corner(g, k, &T);
+        for (i = 0; i < 3u; i++) cp[k][i] = T.m[3][i];
+        if (k < n) radius[k] = (dht_rand_u32() % 5u == 0u) ? 0.0f : (float)dht_rand_uniform(1e-3, 0.05);
     }
 }
 
@@ -274,19 +296,18 @@ static void blend_queue(rig *g, const double *q_nom, long *overlap_periods)
     int stopped = 0, in_ov;
     for (i = 0; i < g->r.n; i++) qa[i] = q_nom[i] + dht_rand_uniform(-5.0, 5.0);
     draw_lines(g, qa, n, 8.0);
-    for (i = 0; i < n; i++) {
+    for (i = 0; i <= n; i++) {
         int k;
-        for (k = 0; k < 3; k++) S = fmax(S, fabs((double)lines[i].B.m[3][k]));
+        for (k = 0; k < 3; k++) S = fmax(S, fabs((double)cp[i][k]));
     }
     lim.vmax = (float)dht_rand_uniform(0.05, 0.2);
     lim.amax = (float)dht_rand_uniform(0.3, 2.0);
     lim.wmax = (float)dht_rand_uniform(15.0, 60.0);
     lim.wdmax = (float)dht_rand_uniform(60.0, 600.0);
-    for (i = 0; i < g->r.n; i++) q0[i] = (float)qa[i];
+    for (i = 0; i < g->r.n; i++) q0[i] = qc[0][i];
     DHT_EQ_INT(dh_track_init_f32(&g->t, &g->r, g->closed ? &g->m : NULL, q0, DT), DH_OK);
-    DHT_EQ_INT(dh_queue_init_f32(&qu, items, NMAX), DH_OK);
-    for (added = 0; added < n0; added++)
-        DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &lines[added], &lim, radius[added]), DH_OK);
+    DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
+    for (added = 0; added < n0 && added < CAP; added++) append(g, added, &lim);
     nh = 0;
     for (call = 0; call < MAXCALL && done < n; call++) {
         dh_track_state st;
@@ -314,10 +335,7 @@ static void blend_queue(rig *g, const double *q_nom, long *overlap_periods)
         if (rep.done) {
             done++;
             DHT_EQ_INT(rep.last, done == added);
-            if (added < n) {
-                DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &lines[added], &lim, radius[added]), DH_OK);
-                added++;
-            }
+            if (added < n) append(g, added++, &lim);
         }
         /* the stop inside an overlap (the head line's tail and the next's) */
         if (stop_in && stop_call < 0 && qu.bmode == 2u && qu.bl[1].T > 0.0f && qu.phase == (uint32_t)DH_QUEUE_RUN &&
@@ -329,7 +347,11 @@ static void blend_queue(rig *g, const double *q_nom, long *overlap_periods)
         }
     }
     DHT_TRUE_MSG(done == n, "%u of %u moves done in %ld periods", (unsigned)done, (unsigned)n, call);
-    DHT_TRUE(memcmp(&cmd.T, &lines[n - 1u].B, sizeof cmd.T) == 0);
+    {
+        dh_mat4_f32 B;
+        corner(g, n, &B);
+        DHT_TRUE(memcmp(&cmd.T, &B, sizeof cmd.T) == 0);
+    }
     if (stop_call >= 0) DHT_TRUE(stopped);
 }
 
@@ -379,7 +401,7 @@ static uint64_t queue_hash(void)
 static void blend_bad(void)
 {
     static const dh_cart_limits_f32 lim = { 0.1f, 1.0f, 30.0f, 300.0f };
-    static dh_path_f32 arc;
+    dh_path_f32 arc;
     dh_mat4_f32 A, B;
     const float via[3] = { 0.3f, 0.1f, 0.2f };
     uint64_t keep;
@@ -389,17 +411,17 @@ static void blend_bad(void)
     A.m[3][0] = 0.2f;
     B.m[3][0] = 0.4f;
     B.m[3][1] = 0.2f;
-    DHT_EQ_INT(dh_path_line_f32(&lines[0], &A, &B), DH_OK);
+    DHT_EQ_INT(dh_path_line_f32(&line, &A, &B), DH_OK);
     DHT_EQ_INT(dh_path_arc_f32(&arc, &A, via, &B), DH_OK);
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, 1), DH_OK);
     keep = queue_hash();
-    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &lines[0], &lim, NAN), DH_ERR_NAN);
-    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &lines[0], &lim, INFINITY), DH_ERR_NAN);
-    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &lines[0], &lim, -1e-3f), DH_ERR_ARG);
+    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, &lim, NAN), DH_ERR_NAN);
+    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, &lim, INFINITY), DH_ERR_NAN);
+    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, &lim, -1e-3f), DH_ERR_ARG);
     DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &arc, &lim, 1e-3f), DH_ERR_ARG);
     DHT_TRUE(queue_hash() == keep);
     DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &arc, &lim, 0.0f), DH_OK);
-    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &lines[0], &lim, 1e-3f), DH_ERR_LIMIT);
+    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, &lim, 1e-3f), DH_ERR_LIMIT);
     DHT_EQ_INT(qu.count, 1);
     DHT_TRUE(items[0].radius == 0.0f && items[0].path.kind == (uint32_t)DH_PATH_ARC);
 }
