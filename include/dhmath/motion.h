@@ -776,37 +776,29 @@ dh_status dh_queue_add_path_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh
 /**
  * @brief Appends a Cartesian move along p within lim, as
  *        dh_queue_add_path_f32, whose corner with the NEXT move is blended
- *        within radius: the tool passes the corner without stopping and
- *        leaves the lines only inside the ball of that radius about it.
- * Lines only: a corner is blended when both moves are lines
- * (dh_path_line_f32) with motion, with equal limits, the next one starts
- * at p->B (within DH_ROT_TOL, as dh_blend_plan_f32), is queued when this
- * one starts (from rest, or in the overlap with the move before it;
- * again when it resumes after a stop), and the blend is shorter than
- * stopping there. Otherwise the corner runs at rest, as do corners with
- * a joint move, an arc or radius 0. A blended corner superposes the end
- * of this move on the start of the next (dh_blend_plan_f32's method, each
- * tail within half its line, the tails' linear accelerations summing to
- * at most amax; docs/design.md, "Blended corners in the queue"). The
- * target's speed, TOTAL acceleration, angular speed and acceleration stay
- * within lim up to float rounding (1e-6 relative) at every period, with
- * the feed override (it holds inside an overlap and changes outside it,
- * as dh_move_advance_f32's) and through a stop (inside an overlap each
- * line brakes at its tail's acceleration, never past its end, within the
- * radius) and resume (from rest: the first line to its end, then the
- * next). Outside the overlaps the target is on the line as
- * dh_path_eval_f32's.
- * @param qu queue from dh_queue_init_f32.
- * @param p path from dh_path_line_f32 or dh_path_arc_f32 (copied).
- * @param lim Cartesian limits, each finite and > 0 (copied).
+ *        within radius: passed without stopping, the lines left only
+ *        inside the ball of that radius about the corner.
+ * Blended when both moves are lines with motion and equal limits, the
+ * next starts at p->B (as dh_blend_plan_f32 requires), is queued when
+ * this one starts (from rest, in the overlap with the move before, or
+ * resuming) and the blend is shorter; else at rest (as with a joint move,
+ * an arc, radius 0). Method: dh_blend_plan_f32's superposition, each tail
+ * within half its line, the tails' linear accelerations summing to at
+ * most amax (docs/design.md, "Blended corners in the queue"). Speed, TOTAL
+ * acceleration, angular speed and acceleration within lim up to float
+ * rounding (1e-6 relative) at every period, with the feed override (held
+ * inside an overlap), a stop (inside an overlap each line brakes at its
+ * tail's acceleration, within the radius) and a resume (from rest: the
+ * first line to its end, then the next). Outside the overlaps the target
+ * is on its line as dh_path_eval_f32's.
+ * @param qu, p, lim as dh_queue_add_path_f32 (p and lim copied).
  * @param radius blend radius (p's length unit), finite and >= 0; an arc
- *        takes radius 0 only. Jerk-limited path moves are not queued (the
- *        queue's path moves are trapezoids of s), so none is blended.
+ *        takes 0 only. The queue's path moves are trapezoids (no jerk
+ *        limit), so no jerk-limited move is blended.
  * @return DH_OK; DH_ERR_NAN for a NaN/Inf radius; DH_ERR_ARG for
- *         radius < 0 or a radius > 0 on a path that is no line; then
- *         DH_ERR_NAN, DH_ERR_ARG, DH_ERR_OVERFLOW as dh_move_path_f32;
- *         DH_ERR_LIMIT when the queue is full. On error qu and its items
- *         are untouched.
+ *         radius < 0 or > 0 on a path that is no line; then the statuses
+ *         of dh_queue_add_path_f32. On error qu and its items are
+ *         untouched.
  */
 dh_status dh_queue_add_path_blend_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
                                       float radius);
