@@ -149,6 +149,8 @@ static DH_NOINLINE void blend_share(const dh_path_f32 *p1, const dh_path_f32 *p2
         if (g > 1.0f) c /= g;
         if (p1->length * r1[2] > c) r1[2] = c / p1->length;
         if (p2->length * r2[2] > c) r2[2] = c / p2->length;
+    } else {
+        /* a move without length: its tail adds no linear acceleration */
     }
     w = p1->angle * r1[2] + p2->angle * r2[2];
     if (w > BLEND_WSHARE * lim->wdmax) {

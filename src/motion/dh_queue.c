@@ -536,9 +536,10 @@ static DH_NOINLINE void queue_blend_bounds(const dh_queue_f32 *qu, float *up, fl
 /* the head line is done and the next one runs on: it becomes the head's
  * scaling, on its own clock (the report's clock, the head's end, into
  * qu->next) */
-static DH_NOINLINE void queue_blend_shift(dh_queue_f32 *qu, float c)
+static DH_NOINLINE void queue_blend_shift(dh_queue_f32 *qu, float clock)
 {
     const float t01 = qu->bl[0].T - qu->bl[0].tb1;
+    float c = clock - t01;
     qu->next = qu->bl[0].T;
     qu->bl[0] = qu->bl[1];
     qu->bo[0] = qu->bo[1];
@@ -547,7 +548,6 @@ static DH_NOINLINE void queue_blend_shift(dh_queue_f32 *qu, float c)
     qu->bmode = QB_ONE;
     qu->mv.path = queue_at(qu, 1u)->path;
     qu->mv.dur = qu->bl[0].T;
-    c -= t01;
     if (!(c > 0.0f)) c = 0.0f;
     qu->mv.clock = (c < qu->mv.dur) ? c : qu->mv.dur;
 }
@@ -783,10 +783,13 @@ dh_status dh_queue_target_f32(dh_queue_f32 *qu, const dh_track_f32 *t, float dt,
         /* the path's frame now: running, braking, or held at rest */
         qu->next = 0.0f;
         cmd->kind = (uint32_t)DH_MOVE_PATH;
-        if (qu->bmode == QB_NONE)
+        if (qu->bmode == QB_NONE) {
             (void)dh_path_eval_f32(&qu->mv.path, queue_path_now(qu), &cmd->T);
-        else if (queue_blend_pose(qu, what, &cmd->T) == 0)
+        } else if (queue_blend_pose(qu, what, &cmd->T) == 0) {
             (void)dh_path_eval_f32(&qu->mv.path, queue_blend_s(qu), &cmd->T);
+        } else {
+            /* the superposition of two lines, written by queue_blend_pose */
+        }
     } else {
         queue_joint_cmd(qu, t, what, dt, cmd);
     }
@@ -868,7 +871,8 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
     /* blended: the next line runs on */
     if (done == 2) qu->started = 1u;
     rep->held = held;
-    rep->done = (done != 0) ? 1 : 0;
+    rep->done = 0;
+    if (done != 0) rep->done = 1;
     rep->last = 0;
     if (qu->count == 0u) rep->last = 1;
     rep->stopped = 0;
