@@ -72,6 +72,9 @@ typedef struct {
     float q0[DH_MAX_JOINTS], vmax[DH_MAX_JOINTS], amax[DH_MAX_JOINTS], jmax[DH_MAX_JOINTS];
     dh_cart_limits_f32 lim;
     dh_cart_jerk_f32 cj;   /* with --jerk: the Cartesian segments' jerk limits */
+    float blend;           /* --blend R: the radius of every corner between Cartesian segments (-1: none) */
+    dh_queue_f32 qu;       /* with --blend: the queue that runs consecutive Cartesian segments */
+    dh_queue_item_f32 items[MOVE_MAX_SEG];
     double dt;
     int jerk;
     cli_outbuf out;
@@ -191,6 +194,23 @@ static int move_parse(int argc, char **argv, move_args *a)
         a->nstdin += a->seg[s].kind == SEG_ARC && strcmp(a->seg[s].b, "-") == 0;
     }
     if (a->nstdin > 1) return cli_usage_error("'-' (standard input) given more than once%s", "");
+    return 0;
+}
+
+/* --blend R: a radius finite and >= 0 in float; refused with --jerk */
+static int move_blend(const move_args *a, float *r)
+{
+    double x = 0.0;
+    int rc;
+    if (a->jerk)
+        return cli_error("move --blend", "blended corners are not jerk-limited (a blend superposes two trapezoids of "
+                         "constant acceleration); run with --jerk or with --blend, not both");
+    if ((rc = cli_parse_num(a->blend, "--blend", &x)) != 0) return rc;
+    if (!(x >= 0.0) || !isfinite((float)x)) {
+        fprintf(stderr, "dhmath: error: --blend: %.9g must be a finite radius >= 0 (length unit)\n", x);
+        return EXIT_ERR;
+    }
+    *r = (float)x;
     return 0;
 }
 
@@ -375,6 +395,40 @@ static int run_path(move_plan *p, unsigned i, const move_seg *s, float *q)
     return 0;
 }
 
+/* Cartesian segments i0..i1-1 run by one queue with their corners
+ * blended within --blend (lines; an arc's corners at rest), tracked from
+ * the tracker's configuration */
+static int run_blend(move_plan *p, const move_args *a, unsigned i0, unsigned i1, float *q)
+{
+    dh_queue_report_f32 rep;
+    dh_queue_cmd_f32 cmd;
+    dh_track_report_f32 trep;
+    double k = 0.0;
+    unsigned i = i0;
+    int rc;
+    dh_status st = dh_queue_init_f32(&p->qu, p->items, MOVE_MAX_SEG);
+    for (; i < i1 && st == DH_OK; i++) {
+        const float r = (p->path[i].kind == (uint32_t)DH_PATH_LINE) ? p->blend : 0.0f;
+        st = dh_queue_add_path_blend_f32(&p->qu, &p->path[i], &p->lim, r);
+        if (st != DH_OK) return seg_error(i, &a->seg[i], "the blended move cannot be planned", path_why(st));
+    }
+    for (i = i0; i < i1;) {
+        const double cap = move_cap(p, p->qu.items[p->qu.head].prof.T);
+        if (k >= cap) return cap_reached(i, &a->seg[i], cap);
+        k += 1.0;
+        st = dh_queue_target_f32(&p->qu, &p->t, (float)p->dt, &cmd);
+        if (st == DH_OK) st = dh_track_step_f32(&p->t, &cmd.T, q, &trep);
+        if (st == DH_OK) st = dh_queue_advance_f32(&p->qu, trep.state, &rep);
+        if (st != DH_OK) return seg_error(i, &a->seg[i], "a control period failed", dh_status_str(st));
+        if ((rc = move_line(p, q, (int)trep.state)) != 0) return rc;
+        if (rep.done) {
+            i++;
+            k = 0.0;
+        }
+    }
+    return 0;
+}
+
 static int move_run(const move_args *a, move_plan *p)
 {
     float q[DH_MAX_JOINTS];
@@ -397,7 +451,15 @@ static int move_run(const move_args *a, move_plan *p)
         /* the tracker starts (again) where the robot is at rest */
         if (!tracking && (rc = cli_track_start("move", &p->r, &p->m, q, (float)p->dt, &p->t)) != 0) return rc;
         tracking = 1;
-        rc = run_path(p, i, s, q);
+        if (p->blend >= 0.0f) {
+            /* with --blend: this segment and the Cartesian ones after it */
+            unsigned e = i + 1u;
+            while (e < a->nseg && a->seg[e].kind != SEG_JOINT) e++;
+            rc = run_blend(p, a, i, e, q);
+            i = e - 1u;
+        } else {
+            rc = run_path(p, i, s, q);
+        }
     }
     return rc;
 }
@@ -414,11 +476,10 @@ int cli_cmd_move(int argc, char **argv)
     if (a.fixed)
         return cli_error("move --fixed", "needs a fixed-point motion API (joint moves, paths and the move executor in "
                          "fixed point), which this library does not have yet; run move without --fixed");
-    if (a.blend)
-        return cli_error("move --blend", "needs blended corners between segments, which this library's motion.h "
-                         "does not offer yet; run move without --blend (every segment then ends at rest)");
     for (i = 0; i < a.nseg; i++) cart += a.seg[i].kind != SEG_JOINT;
     memset(&p, 0, sizeof p);
+    p.blend = -1.0f;
+    if (a.blend && (rc = move_blend(&a, &p.blend)) != 0) return rc;
     if ((rc = cli_parse_dt(a.dt, &p.dt)) != 0) return rc;
     if ((rc = cli_load_robot(a.robot, 0, &p.r, &p.rf)) != 0) return rc;
     if ((rc = cli_parse_list(a.q0, p.r.n, q0d, "--q0")) != 0) return rc;

@@ -15,7 +15,8 @@
  *                    dh_move_path_f32, dh_move_path_jerk_f32,
  *                    dh_move_target_f32, dh_move_advance_f32
  *   dh_queue.c       dh_queue_init_f32, dh_queue_add_joint_f32,
- *                    dh_queue_add_path_f32, dh_queue_target_f32,
+ *                    dh_queue_add_path_f32, dh_queue_add_path_blend_f32,
+ *                    dh_queue_target_f32,
  *                    dh_queue_advance_f32, dh_queue_stop_f32,
  *                    dh_queue_resume_f32
  *   dh_interp_q.c    dh_slerp_q, dh_pose_interp_q, dh_pose_angle_q
@@ -607,6 +608,35 @@ dh_status dh_move_target_f32(const dh_move_f32 *mv, dh_mat4_f32 *T);
  */
 dh_status dh_move_advance_f32(dh_move_f32 *mv, float dt, dh_track_state state, dh_move_report_f32 *rep);
 
+/**
+ * @brief The time scaling of s from 0 to 1 of one line of a blended
+ *        sequence and its place on the sequence's clock (read-only for
+ *        the user, who reads t0, T and dev): a tail at each end at a
+ *        reduced acceleration (from rest at b0 for tb0, reaching u0 over
+ *        e0; the mirror image at the end: b1, tb1, u1, e1; a tail of
+ *        duration 0 is a rest), between them acceleration +-a and a
+ *        cruise at v (from u0 up to v at a for t1, cruise tv, down to u1
+ *        at a for t3).
+ */
+typedef struct {
+    float v;   /**< peak ds/dt (1/s) */
+    float a;   /**< |d2s/dt2| outside the tails (1/s^2) */
+    float b0;  /**< |d2s/dt2| in the start tail, <= a */
+    float u0;  /**< ds/dt at the end of the start tail: b0 tb0 */
+    float e0;  /**< s covered by the start tail: b0 tb0^2 / 2 */
+    float tb0; /**< duration of the start tail: the overlap with the line before (0: none) */
+    float b1;  /**< |d2s/dt2| in the end tail, <= a */
+    float u1;  /**< ds/dt at the start of the end tail: b1 tb1 */
+    float e1;  /**< s covered by the end tail: b1 tb1^2 / 2 */
+    float tb1; /**< duration of the end tail: the overlap with the line after (0: none) */
+    float t1;  /**< duration of the acceleration from u0 to v */
+    float tv;  /**< duration of the cruise at v */
+    float t3;  /**< duration of the deceleration from v to u1 */
+    float T;   /**< duration of the line: tb0 + t1 + tv + t3 + tb1 (0: no motion) */
+    float t0;  /**< its start on the sequence's clock (s) */
+    float dev; /**< bound on the distance of the tool point from its END corner during that overlap */
+} dh_blend_seg_f32;
+
 /* ======================================================================
  * Move queue, stop and resume (one call pair per control period)
  * ==================================================================== */
@@ -634,6 +664,10 @@ typedef struct {
     uint32_t jerk;                 /**< joint move: 1 when jmax was given */
     uint32_t n;                    /**< joint move: number of joints */
     uint32_t kind;                 /**< DH_MOVE_JOINT or DH_MOVE_PATH */
+    dh_cart_limits_f32 lim;        /**< path move: its limits */
+    float radius;                  /**< path move: blend radius of its corner with the next move (0: at rest) */
+    float ctb;                     /**< path move: overlap of that corner (s; 0: at rest), planned when the next is appended */
+    float cb[2];                   /**< path move: the corner's tail accelerations of s, its own and the next move's */
 } dh_queue_item_f32;
 
 /**
@@ -671,6 +705,9 @@ typedef struct {
     float bt[3][DH_MAX_JOINTS];    /**< brake: durations of its three phases */
     float bx[DH_MAX_JOINTS];       /**< brake: distance to rest, at most the distance left */
     float bend[DH_MAX_JOINTS];     /**< brake: the move's end (q1, or s = 1), never passed */
+    dh_blend_seg_f32 bl[2];        /**< blended lines: scaling of the running line [0] and of the next [1] in their overlap */
+    float bo[2];                   /**< blended lines: s where each scaling starts (0, or where a stop left the line) */
+    uint32_t bmode;                /**< blended lines: 0 none; 1 the running line; 2 and the next; 3 the next starts at bo[0] */
 } dh_queue_f32;
 
 /** @brief What the caller does this period (dh_queue_target_f32). */
@@ -724,7 +761,9 @@ dh_status dh_queue_add_joint_f32(dh_queue_f32 *qu, uint32_t n, const float *q1, 
 /**
  * @brief Appends a Cartesian move along p within lim (dh_move_path_f32):
  *        it starts at p->A (the clock holds until the tracker is OK
- *        there).
+ *        there). Its corner with the next move runs at rest; the corner
+ *        of the move before it is blended when that one was appended
+ *        with a radius (dh_queue_add_path_blend_f32).
  * @param qu queue from dh_queue_init_f32.
  * @param p path from dh_path_line_f32 or dh_path_arc_f32 (copied).
  * @param lim Cartesian limits, each finite and > 0 (copied).
@@ -733,6 +772,36 @@ dh_status dh_queue_add_joint_f32(dh_queue_f32 *qu, uint32_t n, const float *q1, 
  *         qu and its items are untouched.
  */
 dh_status dh_queue_add_path_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim);
+
+/**
+ * @brief Appends a Cartesian move along p within lim, as
+ *        dh_queue_add_path_f32, whose corner with the NEXT move is blended
+ *        within radius: passed without stopping, the lines left only
+ *        inside the ball of that radius about the corner.
+ * Blended when both moves are lines with motion and equal limits, the
+ * next starts at p->B (as dh_blend_plan_f32 requires), is queued when
+ * this one starts (from rest, in the overlap with the move before, or
+ * resuming) and the blend is shorter; else at rest (as with a joint move,
+ * an arc, radius 0). Method: dh_blend_plan_f32's superposition, each tail
+ * within half its line, the tails' linear accelerations summing to at
+ * most amax (docs/design.md, "Blended corners in the queue"). Speed, TOTAL
+ * acceleration, angular speed and acceleration within lim up to float
+ * rounding (1e-6 relative) at every period, with the feed override (held
+ * inside an overlap), a stop (inside an overlap each line brakes at its
+ * tail's acceleration, within the radius) and a resume (from rest: the
+ * first line to its end, then the next). Outside the overlaps the target
+ * is on its line as dh_path_eval_f32's.
+ * @param qu, p, lim as dh_queue_add_path_f32 (p and lim copied).
+ * @param radius blend radius (p's length unit), finite and >= 0; an arc
+ *        takes 0 only. The queue's path moves are trapezoids (no jerk
+ *        limit), so no jerk-limited move is blended.
+ * @return DH_OK; DH_ERR_NAN for a NaN/Inf radius; DH_ERR_ARG for
+ *         radius < 0 or > 0 on a path that is no line; then the statuses
+ *         of dh_queue_add_path_f32. On error qu and its items are
+ *         untouched.
+ */
+dh_status dh_queue_add_path_blend_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                      float radius);
 
 /**
  * @brief Begins a control period: the command of the running move after
@@ -918,34 +987,6 @@ dh_status dh_blend_eval_f32(const dh_blend_f32 *bl, float t, dh_mat4_f32 *T);
  * Blended sequence of Cartesian line moves (dh_blend.c)
  * ==================================================================== */
 
-/**
- * @brief The time scaling of s from 0 to 1 of one line of a blended
- *        sequence and its place on the sequence's clock (read-only for
- *        the user, who reads t0, T and dev): a tail at each end at a
- *        reduced acceleration (from rest at b0 for tb0, reaching u0 over
- *        e0; the mirror image at the end: b1, tb1, u1, e1; a tail of
- *        duration 0 is a rest), between them acceleration +-a and a
- *        cruise at v (from u0 up to v at a for t1, cruise tv, down to u1
- *        at a for t3).
- */
-typedef struct {
-    float v;   /**< peak ds/dt (1/s) */
-    float a;   /**< |d2s/dt2| outside the tails (1/s^2) */
-    float b0;  /**< |d2s/dt2| in the start tail, <= a */
-    float u0;  /**< ds/dt at the end of the start tail: b0 tb0 */
-    float e0;  /**< s covered by the start tail: b0 tb0^2 / 2 */
-    float tb0; /**< duration of the start tail: the overlap with the line before (0: none) */
-    float b1;  /**< |d2s/dt2| in the end tail, <= a */
-    float u1;  /**< ds/dt at the start of the end tail: b1 tb1 */
-    float e1;  /**< s covered by the end tail: b1 tb1^2 / 2 */
-    float tb1; /**< duration of the end tail: the overlap with the line after (0: none) */
-    float t1;  /**< duration of the acceleration from u0 to v */
-    float tv;  /**< duration of the cruise at v */
-    float t3;  /**< duration of the deceleration from v to u1 */
-    float T;   /**< duration of the line: tb0 + t1 + tv + t3 + tb1 (0: no motion) */
-    float t0;  /**< its start on the sequence's clock (s) */
-    float dev; /**< bound on the distance of the tool point from its END corner during that overlap */
-} dh_blend_seg_f32;
 
 /**
  * @brief A sequence of n line moves blended at their corners, over the

@@ -128,18 +128,29 @@ static float blend_turn(const dh_path_f32 *p1, const dh_path_f32 *p2)
 }
 
 /* The tails' accelerations r1[2], r2[2] of s: L_i b_i <= c = amax /
- * max(1, |d2 - d1|) (so |L2 b2 d2 - L1 b1 d1| <= amax), then both scaled
+ * max(1, |d2 - d1|) (so |L2 b2 d2 - L1 b1 d1| <= amax), or with sum 1
+ * L1 b1 + L2 b2 <= amax (the queue's: any signs of the two), then both scaled
  * so that th1 b1 + th2 b2 <= (63/64) wdmax (the cross term of the
  * rotations gets the last 1/64 through tb) */
 static DH_NOINLINE void blend_share(const dh_path_f32 *p1, const dh_path_f32 *p2, float r1[3], float r2[3],
-                                    const dh_cart_limits_f32 *lim)
+                                    const dh_cart_limits_f32 *lim, int sum)
 {
     float c = lim->amax * BLEND_MARGIN, g, w;
-    if (p1->length > 0.0f && p2->length > 0.0f) {
+    if (sum != 0) {
+        /* the queue's corners: L1 b1 + L2 b2 <= amax */
+        w = p1->length * r1[2] + p2->length * r2[2];
+        if (w > c) {
+            w = c / w;
+            r1[2] *= w;
+            r2[2] *= w;
+        }
+    } else if (p1->length > 0.0f && p2->length > 0.0f) {
         g = blend_turn(p1, p2);
         if (g > 1.0f) c /= g;
         if (p1->length * r1[2] > c) r1[2] = c / p1->length;
         if (p2->length * r2[2] > c) r2[2] = c / p2->length;
+    } else {
+        /* a move without length: its tail adds no linear acceleration */
     }
     w = p1->angle * r1[2] + p2->angle * r2[2];
     if (w > BLEND_WSHARE * lim->wdmax) {
@@ -160,10 +171,12 @@ static void blend_min_sqrt(float *m, float n, float d)
 
 /* The overlap tb of the lines p1, p2 with the rates r1, r2 (each V, a,
  * b) within lim and radius, each tail within fit / 2 of its line's s
- * (fit 2: the whole line, 1: half of it); 0 when a move has no motion or
- * radius is 0 */
+ * (fit 2: the whole line, 1: half of it), the radius held by
+ * (L1 b1 + w L2 b2) tb^2 / 2 (w 1; the queue's 2: the second line may
+ * brake to twice its s); 0 when a move has no motion or radius is 0 */
 static DH_NOINLINE float blend_overlap(const dh_path_f32 *p1, const dh_path_f32 *p2, const float r1[3],
-                                       const float r2[3], const dh_cart_limits_f32 *lim, float radius, float fit)
+                                       const float r2[3], const dh_cart_limits_f32 *lim, float radius, float fit,
+                                       float w)
 {
     float tb;
     if (!(r1[2] > 0.0f) || !(r2[2] > 0.0f) || !(radius > 0.0f)) return 0.0f;
@@ -171,10 +184,32 @@ static DH_NOINLINE float blend_overlap(const dh_path_f32 *p1, const dh_path_f32 
     if (r2[0] / r2[2] < tb) tb = r2[0] / r2[2];
     blend_min_sqrt(&tb, fit, r1[2] * (1.0f + r1[2] / r1[1]));
     blend_min_sqrt(&tb, fit, r2[2] * (1.0f + r2[2] / r2[1]));
-    blend_min_sqrt(&tb, 2.0f * radius, p1->length * r1[2] + p2->length * r2[2]);
+    blend_min_sqrt(&tb, 2.0f * radius, p1->length * r1[2] + w * (p2->length * r2[2]));
     blend_min_sqrt(&tb, BLEND_RAD2DEG * 0.0625f * lim->wdmax, (p1->angle * r1[2]) * (p2->angle * r2[2]));
     tb *= BLEND_MARGIN;
     return (tb > 0.0f && dh_isfinite_f32(tb)) ? tb : 0.0f;
+}
+
+/* The peak v (*vo), cruise time (*tvo) and duration of one move with
+ * the rates r (V, a, b; a > 0) and its tail of duration tb */
+static DH_NOINLINE float blend_T(const float r[3], float tb, float *vo, float *tvo)
+{
+    const float V = r[0], a = r[1];
+    const float u = r[2] * tb, e = 0.5f * u * tb;
+    const float x = (V * V - 0.5f * u * u) / a + e; /* s covered when cruising at V for no time */
+    float v, tv;
+    if (x >= 1.0f) {
+        v = dh_sqrtf_(a * (1.0f - e) + 0.5f * u * u);
+        if (v < u) v = u;
+        if (v > V) v = V;
+        tv = 0.0f;
+    } else {
+        v = V;
+        tv = (1.0f - x) / V;
+    }
+    *vo = v;
+    *tvo = tv;
+    return v / a + tv + (v - u) / a + tb;
 }
 
 /* m = the scaling of one move with the rates r (V, a, b; all 0: no
@@ -182,8 +217,8 @@ static DH_NOINLINE float blend_overlap(const dh_path_f32 *p1, const dh_path_f32 
  * time or a rate is not finite. */
 static DH_NOINLINE dh_status blend_prof(dh_blend_prof_f32 *m, const float r[3], float tb)
 {
-    const float V = r[0], a = r[1];
-    float u, e, v, tv, x;
+    const float a = r[1];
+    float v, tv;
     m->v = 0.0f;
     m->a = 0.0f;
     m->b = 0.0f;
@@ -195,39 +230,28 @@ static DH_NOINLINE dh_status blend_prof(dh_blend_prof_f32 *m, const float r[3], 
     m->tb = 0.0f;
     m->T = 0.0f;
     if (!(a > 0.0f)) return DH_OK;
-    u = r[2] * tb;
-    e = 0.5f * u * tb;
-    x = (V * V - 0.5f * u * u) / a + e;   /* s covered when cruising at V for no time */
-    if (x >= 1.0f) {
-        v = dh_sqrtf_(a * (1.0f - e) + 0.5f * u * u);
-        if (v < u) v = u;
-        if (v > V) v = V;
-        tv = 0.0f;
-    } else {
-        v = V;
-        tv = (1.0f - x) / V;
-    }
+    m->T = blend_T(r, tb, &v, &tv);
     m->v = v;
     m->a = a;
     m->b = r[2];
-    m->u = u;
-    m->e = e;
+    m->u = r[2] * tb;
+    m->e = 0.5f * m->u * tb;
     m->t1 = v / a;
     m->tv = tv;
-    m->t3 = (v - u) / a;
+    m->t3 = (v - m->u) / a;
     m->tb = tb;
-    m->T = m->t1 + tv + m->t3 + tb;
     return (dh_isfinite_f32(m->T) && m->T > 0.0f && dh_isfinite_f32(v * v)) ? DH_OK : DH_ERR_OVERFLOW;
 }
 
 /* *T = the duration of the scaling of one move with the rates r and the
- * overlap tb (blend_prof's status) */
+ * overlap tb (blend_prof's status, without its scaling) */
 static DH_NOINLINE dh_status blend_dur(const float r[3], float tb, float *T)
 {
-    dh_blend_prof_f32 m;
-    dh_status st = blend_prof(&m, r, tb);
-    *T = m.T;
-    return st;
+    float v = 0.0f, tv = 0.0f;
+    *T = 0.0f;
+    if (!(r[1] > 0.0f)) return DH_OK;
+    *T = blend_T(r, tb, &v, &tv);
+    return (dh_isfinite_f32(*T) && *T > 0.0f && dh_isfinite_f32(v * v)) ? DH_OK : DH_ERR_OVERFLOW;
 }
 
 dh_status dh_blend_plan_f32(dh_blend_f32 *bl, const dh_path_f32 *p1, const dh_path_f32 *p2,
@@ -243,8 +267,8 @@ dh_status dh_blend_plan_f32(dh_blend_f32 *bl, const dh_path_f32 *p1, const dh_pa
     if (st == DH_OK) st = blend_dur(r1, 0.0f, &T1);
     if (st == DH_OK) st = blend_dur(r2, 0.0f, &T2);
     if (st != DH_OK) return st;
-    blend_share(p1, p2, r1, r2, lim);
-    tb = blend_overlap(p1, p2, r1, r2, lim, radius, 2.0f);
+    blend_share(p1, p2, r1, r2, lim, 0);
+    tb = blend_overlap(p1, p2, r1, r2, lim, radius, 2.0f, 1.0f);
     if (tb > 0.0f && (blend_dur(r1, tb, &U1) != DH_OK || blend_dur(r2, tb, &U2) != DH_OK ||
                       !((U1 - tb) + U2 < T1 + T2))) {
         tb = 0.0f;
@@ -282,7 +306,7 @@ static float blend_prof_eval(const dh_blend_prof_f32 *m, float t, int rest)
 }
 
 /* column c of T = the slerp of the path p at s (a quaternion w, x, y, z
- * kept in T until blend_compose: the slerp's stack apart from the
+ * kept in T until dh_blend_compose_f32_: the slerp's stack apart from the
  * composition's) */
 static DH_NOINLINE void blend_slerp(const dh_path_f32 *p, float s, dh_mat4_f32 *T, int c)
 {
@@ -295,25 +319,34 @@ static DH_NOINLINE void blend_slerp(const dh_path_f32 *p, float s, dh_mat4_f32 *
 }
 
 /* T's rotation and bottom row in the overlap: q2 q_A2* q1, with q1 in
- * T's column 0 and q2 in its column 1 (blend_slerp) */
-static DH_NOINLINE void blend_compose(const dh_quat_f32 *qa2, dh_mat4_f32 *T)
+ * T's column 0 and q2 in its column 1 (blend_slerp); the temporaries in
+ * blocks of their own, so that they may share the stack */
+void dh_blend_compose_f32_(const dh_quat_f32 *qa2, dh_mat4_f32 *T)
 {
-    dh_quat_f32 q1, q2, c;
-    dh_mat3_f32 R;
+    dh_quat_f32 q1;
     int i;
     q1.w = DH_M4(T, 0, 0);
     q1.x = DH_M4(T, 1, 0);
     q1.y = DH_M4(T, 2, 0);
     q1.z = DH_M4(T, 3, 0);
-    q2.w = DH_M4(T, 0, 1);
-    q2.x = DH_M4(T, 1, 1);
-    q2.y = DH_M4(T, 2, 1);
-    q2.z = DH_M4(T, 3, 1);
-    dh_quat_conj_f32(qa2, &c);
-    dh_quat_mul_f32(&c, &q1, &q1);
-    dh_quat_mul_f32(&q2, &q1, &q1);
-    (void)dh_quat_to_mat3_f32(&q1, &R);
-    dh_mat4_set_rot_f32(T, &R);
+    {
+        dh_quat_f32 c;
+        dh_quat_conj_f32(qa2, &c);
+        dh_quat_mul_f32(&c, &q1, &q1);
+    }
+    {
+        dh_quat_f32 q2;
+        q2.w = DH_M4(T, 0, 1);
+        q2.x = DH_M4(T, 1, 1);
+        q2.y = DH_M4(T, 2, 1);
+        q2.z = DH_M4(T, 3, 1);
+        dh_quat_mul_f32(&q2, &q1, &q1);
+    }
+    {
+        dh_mat3_f32 R;
+        (void)dh_quat_to_mat3_f32(&q1, &R);
+        dh_mat4_set_rot_f32(T, &R);
+    }
     for (i = 0; i < 3; i++) DH_M4(T, 3, i) = 0.0f;
     DH_M4(T, 3, 3) = 1.0f;
 }
@@ -331,7 +364,7 @@ dh_status dh_blend_eval_f32(const dh_blend_f32 *bl, float t, dh_mat4_f32 *T)
     if (!(t < bl->t0 + bl->tb)) return dh_path_eval_f32(&bl->p2, blend_prof_eval(&bl->m2, t2, 1), T);
     blend_slerp(&bl->p1, blend_prof_eval(&bl->m1, t, 0), T, 0);
     blend_slerp(&bl->p2, blend_prof_eval(&bl->m2, t2, 1), T, 1);
-    blend_compose(&bl->p2.qa, T);
+    dh_blend_compose_f32_(&bl->p2.qa, T);
     for (i = 0; i < 3; i++) {
         DH_M4(T, i, 3) = DH_M4(&bl->p1.B, i, 3) -
                          blend_prof_eval(&bl->m1, t, 1) * (DH_M4(&bl->p1.B, i, 3) - DH_M4(&bl->p1.A, i, 3)) +
@@ -386,8 +419,8 @@ static DH_NOINLINE void seq_corner(dh_blend_seg_f32 *g, const dh_path_f32 *p, co
     float r1[3], r2[3], tb;
     (void)blend_rates(&p[0], lim, r1);
     (void)blend_rates(&p[1], lim, r2);
-    blend_share(&p[0], &p[1], r1, r2, lim);
-    tb = blend_overlap(&p[0], &p[1], r1, r2, lim, radius, 1.0f);
+    blend_share(&p[0], &p[1], r1, r2, lim, 0);
+    tb = blend_overlap(&p[0], &p[1], r1, r2, lim, radius, 1.0f, 1.0f);
     if (!(tb > 0.0f)) {
         tb = 0.0f;
         r1[2] = 0.0f;
@@ -422,14 +455,16 @@ static void seq_at_rest(dh_blend_seg_f32 *g)
     g[0].dev = 0.0f;
 }
 
-/* g's scaling from its line's rates r (V, a; a == 0: no motion) and its
- * tails (b0, tb0, b1, tb1): the cruise time from the distance
- * e0 + (v^2 - u0^2) / (2 a) + v tv + (v^2 - u1^2) / (2 a) + e1 = 1, or no
- * cruise and v = sqrt(a (1 - e0 - e1) + (u0^2 + u1^2) / 2) */
-static DH_NOINLINE void seq_prof(dh_blend_seg_f32 *g, const float r[3])
+/* g's scaling of s over the distance D from its line's rates r (V, a;
+ * a == 0: no motion) and its tails (b0, tb0, b1, tb1): the cruise time
+ * from e0 + (v^2 - u0^2) / (2 a) + v tv + (v^2 - u1^2) / (2 a) + e1 = D,
+ * or no cruise and v = sqrt(a (D - e0 - e1) + (u0^2 + u1^2) / 2). 1 when
+ * the tails fit (v >= u0, u1 without the clamp below), else 0. */
+static DH_NOINLINE int seq_prof(dh_blend_seg_f32 *g, const float r[3], float D)
 {
     const float V = r[0], a = r[1];
     float x, v = 0.0f, tv = 0.0f, hi;
+    int fit = 1;
     g->u0 = g->b0 * g->tb0;
     g->e0 = 0.5f * g->u0 * g->tb0;
     g->u1 = g->b1 * g->tb1;
@@ -440,14 +475,15 @@ static DH_NOINLINE void seq_prof(dh_blend_seg_f32 *g, const float r[3])
     g->T = 0.0f;
     if (a > 0.0f) {
         x = g->e0 + g->e1 + (V * V - 0.5f * (g->u0 * g->u0 + g->u1 * g->u1)) / a;
-        if (x >= 1.0f) {
-            v = dh_sqrtf_(a * (1.0f - g->e0 - g->e1) + 0.5f * (g->u0 * g->u0 + g->u1 * g->u1));
+        if (x >= D) {
+            v = dh_sqrtf_(a * (D - g->e0 - g->e1) + 0.5f * (g->u0 * g->u0 + g->u1 * g->u1));
             hi = (g->u0 > g->u1) ? g->u0 : g->u1;
+            if (!(v >= hi)) fit = 0;
             if (v < hi) v = hi;
             if (v > V) v = V;
         } else {
             v = V;
-            tv = (1.0f - x) / V;
+            tv = (D - x) / V;
         }
         g->t1 = (v - g->u0) / a;
         g->t3 = (v - g->u1) / a;
@@ -455,6 +491,7 @@ static DH_NOINLINE void seq_prof(dh_blend_seg_f32 *g, const float r[3])
     }
     g->v = v;
     g->tv = tv;
+    return fit;
 }
 
 /* every line's scaling from its rates and tails, and its start t0 on the
@@ -466,7 +503,7 @@ static DH_NOINLINE float seq_build(dh_blend_seg_f32 *seg, const dh_path_f32 *p, 
     uint32_t k;
     for (k = 0u; k < n; k++) {
         (void)blend_rates(&p[k], lim, r);
-        seq_prof(&seg[k], r);
+        (void)seq_prof(&seg[k], r, 1.0f);
         seg[k].t0 = T;
         T = seg[k].t0 + (seg[k].T - seg[k].tb1);
     }
@@ -511,35 +548,44 @@ dh_status dh_blend_seq_plan_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, con
     return DH_OK;
 }
 
+/* the distance x of the scaling g at its time t in (0, g->T) covered
+ * from its start (returns 0: the first half) or left to its end (returns
+ * 1) */
+DH_INLINE int seg_eval(const dh_blend_seg_f32 *g, float t, float *x)
+{
+    float r;
+    if (t < g->tb0 + g->t1 + 0.5f * g->tv) {
+        if (t < g->tb0) {
+            *x = 0.5f * g->b0 * t * t;
+        } else if (t < g->tb0 + g->t1) {
+            r = t - g->tb0;
+            *x = g->e0 + r * (g->u0 + 0.5f * g->a * r);
+        } else {
+            *x = g->e0 + 0.5f * g->t1 * (g->u0 + g->v) + g->v * (t - g->tb0 - g->t1);
+        }
+        return 0;
+    }
+    r = g->T - t;
+    if (r < g->tb1) {
+        *x = 0.5f * g->b1 * r * r;
+    } else if (r < g->tb1 + g->t3) {
+        r -= g->tb1;
+        *x = g->e1 + r * (g->u1 + 0.5f * g->a * r);
+    } else {
+        *x = g->e1 + 0.5f * g->t3 * (g->u1 + g->v) + g->v * (r - g->tb1 - g->t3);
+    }
+    return 1;
+}
+
 /* s (rest 0) or 1 - s (rest 1), each accurate near its own 0, of the
  * scaling g at its time t, clamped to [0, g->T]: the first half from the
  * start, the second from the end */
 static float seq_prof_eval(const dh_blend_seg_f32 *g, float t, int rest)
 {
-    float r, x;
+    float x;
     if (!(t > 0.0f)) return rest ? 1.0f : 0.0f;
     if (!(t < g->T)) return rest ? 0.0f : 1.0f;
-    if (t < g->tb0 + g->t1 + 0.5f * g->tv) {
-        if (t < g->tb0) {
-            x = 0.5f * g->b0 * t * t;
-        } else if (t < g->tb0 + g->t1) {
-            r = t - g->tb0;
-            x = g->e0 + r * (g->u0 + 0.5f * g->a * r);
-        } else {
-            x = g->e0 + 0.5f * g->t1 * (g->u0 + g->v) + g->v * (t - g->tb0 - g->t1);
-        }
-        return rest ? 1.0f - x : x;
-    }
-    r = g->T - t;
-    if (r < g->tb1) {
-        x = 0.5f * g->b1 * r * r;
-    } else if (r < g->tb1 + g->t3) {
-        r -= g->tb1;
-        x = g->e1 + r * (g->u1 + 0.5f * g->a * r);
-    } else {
-        x = g->e1 + 0.5f * g->t3 * (g->u1 + g->v) + g->v * (r - g->tb1 - g->t3);
-    }
-    return rest ? x : 1.0f - x;
+    return (rest != seg_eval(g, t, &x)) ? 1.0f - x : x;
 }
 
 /* s of line k of sq at the sequence's time t */
@@ -593,7 +639,96 @@ dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32
     if (!dh_motion_path_ok_f32_(&sq->p[k - 1u]) || !dh_motion_path_ok_f32_(&sq->p[k])) return DH_ERR_ARG;
     seq_slerp(sq, k - 1u, t, T, 0);
     seq_slerp(sq, k, t, T, 1);
-    blend_compose(&sq->p[k].qa, T);
+    dh_blend_compose_f32_(&sq->p[k].qa, T);
     seq_position(sq, k, t, T);
     return DH_OK;
+}
+
+/* ---- the queue's blended lines (dh_queue.c, motion_impl.h) ---------- */
+
+float dh_blend_corner_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, const dh_cart_limits_f32 *lim, float radius,
+                           float b[2])
+{
+    float r1[3], r2[3], tb, g, h, v, tv;
+    b[0] = 0.0f;
+    b[1] = 0.0f;
+    if (!blend_is_line(p1) || !blend_is_line(p2) || !blend_joins(p1, p2) || !(radius > 0.0f)) return 0.0f;
+    if (blend_rates(p1, lim, r1) != DH_OK || blend_rates(p2, lim, r2) != DH_OK) return 0.0f;
+    blend_share(p1, p2, r1, r2, lim, 1);
+    tb = blend_overlap(p1, p2, r1, r2, lim, radius, 1.0f, 2.0f);
+    if (!(tb > 0.0f)) return 0.0f;
+    /* blended when shorter: (U1 - T1) + (U2 - T2) < tb, as seq_cost (a
+     * duration that is not finite: at rest) */
+    g = blend_T(r1, tb, &v, &tv);
+    g -= blend_T(r1, 0.0f, &v, &tv);
+    h = blend_T(r2, tb, &v, &tv);
+    h -= blend_T(r2, 0.0f, &v, &tv);
+    if (!(g + h < tb)) return 0.0f;
+    b[0] = r1[2];
+    b[1] = r2[2];
+    return tb;
+}
+
+int dh_blend_seg_plan_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim, float D)
+{
+    float r[3];
+    (void)blend_rates(p, lim, r);
+    g->t0 = 0.0f;
+    g->dev = 0.0f;
+    return seq_prof(g, r, D);
+}
+
+float dh_blend_seg_s_f32_(const dh_blend_seg_f32 *g, float s0, float t)
+{
+    float x;
+    if (!(t > 0.0f) || !(g->T > 0.0f)) return s0;
+    if (!(t < g->T)) return 1.0f;
+    if (seg_eval(g, t, &x) != 0) return 1.0f - x;
+    x += s0;
+    return (x < 1.0f) ? x : 1.0f;
+}
+
+float dh_blend_seg_rate_f32_(const dh_blend_seg_f32 *g, float t, float *sdd)
+{
+    float r = g->T - t;
+    *sdd = 0.0f;
+    if (!(t > 0.0f) || !(t < g->T)) return 0.0f;
+    if (t < g->tb0) {
+        *sdd = g->b0;
+        return g->b0 * t;
+    }
+    if (t < g->tb0 + g->t1) {
+        *sdd = g->a;
+        return g->u0 + g->a * (t - g->tb0);
+    }
+    if (r < g->tb1) {
+        *sdd = -g->b1;
+        return g->b1 * r;
+    }
+    if (r < g->tb1 + g->t3) {
+        *sdd = -g->a;
+        return g->u1 + g->a * (r - g->tb1);
+    }
+    return g->v;
+}
+
+void dh_blend_pose_rot_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat4_f32 *T)
+{
+    dh_quat_f32 q;
+    int c, i;
+    for (c = 0; c < 2; c++) {
+        const dh_path_f32 *p = (c == 0) ? p1 : p2;
+        dh_motion_slerp_f32_(&p->qa, &p->qb, DH_M4(T, c, 3), &q);
+        for (i = 0; i < 4; i++) DH_M4(T, i, c) = (i == 0) ? q.w : ((i == 1) ? q.x : ((i == 2) ? q.y : q.z));
+    }
+}
+
+void dh_blend_pose_pos_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat4_f32 *T)
+{
+    const float s1 = DH_M4(T, 0, 3), s2 = DH_M4(T, 1, 3);
+    int i;
+    for (i = 0; i < 3; i++) {
+        DH_M4(T, i, 3) = DH_M4(&p1->B, i, 3) - (1.0f - s1) * (DH_M4(&p1->B, i, 3) - DH_M4(&p1->A, i, 3)) +
+                         s2 * (DH_M4(&p2->B, i, 3) - DH_M4(&p2->A, i, 3));
+    }
 }

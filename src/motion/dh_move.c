@@ -162,7 +162,7 @@ dh_status dh_move_target_f32(const dh_move_f32 *mv, dh_mat4_f32 *T)
  * target's second difference over the period is at most
  * k (r' - r) + p r'^2, held to A: the root of
  * p x^2 + (k + 2 p r) x - (A - p r^2) = 0 in its cancellation-free form. */
-static float move_feed_rise(float k, float p, float A, float r)
+float dh_motion_feed_rise_f32_(float k, float p, float A, float r)
 {
     const float b = k + 2.0f * p * r, c = A - p * r * r;
     float den;
@@ -196,7 +196,7 @@ static void move_feed_bounds(const dh_move_f32 *mv, float dt, float *up, float *
     if (a0 < lo) lo = a0;
     if (!(sd > 0.0f)) return;
     k = sd / dt;
-    *up = move_feed_rise(k, (hi > 0.0f) ? hi : 0.0f, A, r);
+    *up = dh_motion_feed_rise_f32_(k, (hi > 0.0f) ? hi : 0.0f, A, r);
     *dn = (A + ((lo < 0.0f) ? lo : 0.0f) * r * r) / k;
     if (!(*dn > 0.0f)) *dn = 0.0f;
 }
@@ -205,14 +205,20 @@ static void move_feed_bounds(const dh_move_f32 *mv, float dt, float *up, float *
  * ceiling's update (the file's comment) */
 static DH_NOINLINE float move_feed_next(dh_move_f32 *mv, float dt, int ok)
 {
-    const float r = mv->feed;
-    float up, dn, goal, c = mv->fcap;
-    if (ok != 0 && r >= 1.0f && c >= 1.0f) {
+    float up, dn;
+    if (ok != 0 && mv->feed >= 1.0f && mv->fcap >= 1.0f) {
         /* at full feed and ceiling: r stays 1, no bound needed */
         mv->lag = 0u;
         return 1.0f;
     }
     move_feed_bounds(mv, dt, &up, &dn);
+    return dh_motion_feed_goal_f32_(mv, dt, ok, up, dn);
+}
+
+float dh_motion_feed_goal_f32_(dh_move_f32 *mv, float dt, int ok, float up, float dn)
+{
+    const float r = mv->feed;
+    float goal, c = mv->fcap;
     if (ok != 0) {
         if (r >= c) c += MOVE_CREEP * c * dt;
         if (c > 1.0f) c = 1.0f;

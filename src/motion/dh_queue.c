@@ -45,6 +45,12 @@
 #define QUEUE_BJOINT 4u
 #define QUEUE_BPATH 5u
 
+/* dh_queue_f32.bmode: the running move's blended lines */
+#define QB_NONE 0u  /* not blended (a plain path move, a joint move, or none) */
+#define QB_ONE 1u   /* a blended line: bl[0] on the clock */
+#define QB_TWO 2u   /* and the next line: bl[1] from bl[0].T - bl[0].tb1 on, at bo[1] while bl[1].T is 0 */
+#define QB_NEXT 3u  /* the head line, not started, starts at s = bo[0] */
+
 static float queue_abs(float x)
 {
     return (x < 0.0f) ? -x : x;
@@ -112,6 +118,7 @@ dh_status dh_queue_init_f32(dh_queue_f32 *qu, dh_queue_item_f32 *items, uint32_t
     qu->dt = 0.0f;
     qu->next = 0.0f;
     qu->braked = 0u;
+    qu->bmode = QB_NONE;
     return DH_OK;
 }
 
@@ -134,6 +141,8 @@ dh_status dh_queue_add_joint_f32(dh_queue_f32 *qu, uint32_t n, const float *q1, 
     }
     it->path.kind = (uint32_t)DH_PATH_LINE;
     it->path.length = 0.0f;
+    it->radius = 0.0f;
+    it->ctb = 0.0f;
     it->jerk = 0u;
     if (jmax != NULL) it->jerk = 1u;
     it->n = n;
@@ -142,25 +151,85 @@ dh_status dh_queue_add_joint_f32(dh_queue_f32 *qu, uint32_t n, const float *q1, 
     return DH_OK;
 }
 
-dh_status dh_queue_add_path_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim)
+/* the radius of the last queued move, and the corner of the last two
+ * (dh_blend_corner_f32_, when both are path moves with equal limits)
+ * into the first one's ctb, cb */
+static DH_NOINLINE void queue_add_corner(dh_queue_f32 *qu, float radius)
+{
+    dh_queue_item_f32 *i1, *i2;
+    queue_slot(qu, qu->count - 1u)->radius = radius;
+    if (qu->count < 2u) return;
+    i1 = queue_slot(qu, qu->count - 2u);
+    i2 = queue_slot(qu, qu->count - 1u);
+    i1->ctb = 0.0f;
+    i1->cb[0] = 0.0f;
+    i1->cb[1] = 0.0f;
+    if (i1->kind != (uint32_t)DH_MOVE_PATH || i2->kind != (uint32_t)DH_MOVE_PATH) return;
+    if (!dh_feq_f32(i1->lim.vmax, i2->lim.vmax) || !dh_feq_f32(i1->lim.amax, i2->lim.amax) ||
+        !dh_feq_f32(i1->lim.wmax, i2->lim.wmax) || !dh_feq_f32(i1->lim.wdmax, i2->lim.wdmax))
+        return;
+    i1->ctb = dh_blend_corner_f32_(&i1->path, &i2->path, &i1->lim, i1->radius, i1->cb);
+}
+
+/* the radius's status */
+static DH_NOINLINE dh_status queue_radius(const dh_path_f32 *p, float radius)
+{
+    if (!dh_isfinite_f32(radius)) return DH_ERR_NAN;
+    return (radius < 0.0f || (radius > 0.0f && p->kind != (uint32_t)DH_PATH_LINE)) ? DH_ERR_ARG : DH_OK;
+}
+
+/* The rest of the checks of a path move with the profile prof (the
+ * path, room in the queue) and its item (radius 0): the status, the move
+ * queued on DH_OK */
+static DH_NOINLINE dh_status queue_add_item(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                            const dh_profile_f32 *prof)
 {
     dh_queue_item_f32 *it;
-    dh_profile_f32 prof;
-    dh_status st;
-    DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
-    /* the checks of dh_move_path_f32 */
-    st = dh_path_move_f32(&prof, p, lim);
-    if (st != DH_OK) return st;
     if (!dh_motion_path_ok_f32_(p)) return DH_ERR_ARG;
     if (qu->count >= qu->cap) return DH_ERR_LIMIT;
     it = queue_slot(qu, qu->count);
     it->path = *p;
-    it->prof = prof;
+    it->prof = *prof;
+    it->lim = *lim;
+    it->radius = 0.0f;
+    it->ctb = 0.0f;
     it->jerk = 0u;
     it->n = 0u;
     it->kind = (uint32_t)DH_MOVE_PATH;
     qu->count++;
     return DH_OK;
+}
+
+/* A path move appended (the radius's checks, then dh_move_path_f32's:
+ * its profile, in this frame only) */
+static DH_NOINLINE dh_status queue_add_path(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                            float radius)
+{
+    dh_profile_f32 prof;
+    dh_status st = queue_radius(p, radius);
+    if (st == DH_OK) st = dh_path_move_f32(&prof, p, lim);
+    if (st == DH_OK) st = queue_add_item(qu, p, lim, &prof);
+    return st;
+}
+
+/* The corner is planned here, apart from the checks' deeper calls. */
+dh_status dh_queue_add_path_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim)
+{
+    dh_status st;
+    DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
+    st = queue_add_path(qu, p, lim, 0.0f);
+    if (st == DH_OK) queue_add_corner(qu, 0.0f);
+    return st;
+}
+
+dh_status dh_queue_add_path_blend_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                      float radius)
+{
+    dh_status st;
+    DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
+    st = queue_add_path(qu, p, lim, radius);
+    if (st == DH_OK) queue_add_corner(qu, radius);
+    return st;
 }
 
 /* ---- brake of one coordinate ------------------------------------------ */
@@ -277,6 +346,272 @@ static DH_NOINLINE float queue_path_now(const dh_queue_f32 *qu)
     return queue_path_s(qu, qu->mv.clock, &sd, &sdd);
 }
 
+/* ---- blended lines ------------------------------------------------------ */
+
+static const dh_queue_item_f32 *queue_at(const dh_queue_f32 *qu, uint32_t k)
+{
+    return &qu->items[(qu->head + k) % qu->cap];
+}
+
+/* the corner after queued move k (0: the running one), as planned when
+ * the move after it was appended: its overlap tb (0: at rest; also when
+ * k is the last queued) and the tails' accelerations b */
+static float queue_corner(const dh_queue_f32 *qu, uint32_t k, float b[2])
+{
+    const dh_queue_item_f32 *i1 = queue_at(qu, k);
+    b[0] = 0.0f;
+    b[1] = 0.0f;
+    if (k + 1u >= qu->count || !(i1->ctb > 0.0f)) return 0.0f;
+    b[0] = i1->cb[0];
+    b[1] = i1->cb[1];
+    return i1->ctb;
+}
+
+/* the plan of the blended head line in mv (the executor's fields: path,
+ * clock 0, duration, feed override at 1) */
+static void queue_blend_mv(dh_queue_f32 *qu)
+{
+    qu->mv.path = queue_at(qu, 0u)->path;
+    qu->mv.n = 0u;
+    qu->mv.dur = qu->bl[0].T;
+    qu->mv.clock = 0.0f;
+    qu->mv.feed = 1.0f;
+    qu->mv.fcap = 1.0f;
+    qu->mv.lag = 0u;
+    qu->mv.kind = (uint32_t)DH_MOVE_PATH;
+}
+
+/* g = no scaling (a line at rest) */
+static void queue_seg_rest(dh_blend_seg_f32 *g)
+{
+    g->b0 = 0.0f;
+    g->tb0 = 0.0f;
+    g->b1 = 0.0f;
+    g->tb1 = 0.0f;
+    g->T = 0.0f;
+}
+
+/* Plans the head line from rest at s = s0 with its corner after it
+ * blended when it can be and its tail fits the distance left; 0 (nothing
+ * planned) when s0 is 0 and the corner runs at rest: a plain path move. */
+static DH_NOINLINE int queue_blend_from(dh_queue_f32 *qu, float s0)
+{
+    const dh_queue_item_f32 *it = queue_at(qu, 0u);
+    dh_blend_seg_f32 *g = &qu->bl[0];
+    float b[2];
+    queue_seg_rest(g);
+    g->tb1 = queue_corner(qu, 0u, b);
+    g->b1 = b[0];
+    if (!(s0 > 0.0f) && !(g->tb1 > 0.0f)) return 0;
+    if (!dh_blend_seg_plan_f32_(g, &it->path, &it->lim, 1.0f - s0)) {
+        /* the tail does not fit what a stop left of the line: at rest */
+        queue_seg_rest(g);
+        (void)dh_blend_seg_plan_f32_(g, &it->path, &it->lim, 1.0f - s0);
+    }
+    queue_seg_rest(&qu->bl[1]);
+    qu->bo[0] = s0;
+    qu->bo[1] = 0.0f;
+    qu->bmode = QB_ONE;
+    queue_blend_mv(qu);
+    return 1;
+}
+
+/* Resumes two blended lines (in an overlap) from where their brake left
+ * them: the first from s0 to its end at rest, the second held at s1 (it
+ * starts from there when the first is done: QB_NEXT) */
+static DH_NOINLINE void queue_blend_two(dh_queue_f32 *qu, float s0, float s1)
+{
+    const dh_queue_item_f32 *it = queue_at(qu, 0u);
+    queue_seg_rest(&qu->bl[0]);
+    (void)dh_blend_seg_plan_f32_(&qu->bl[0], &it->path, &it->lim, 1.0f - s0);
+    queue_seg_rest(&qu->bl[1]);
+    qu->bo[0] = s0;
+    qu->bo[1] = s1;
+    queue_blend_mv(qu);
+}
+
+/* the next line joins in its overlap: its scaling, with its start tail
+ * the corner's (the same as planned for the head's end tail) and its own
+ * corner after it blended when it can be */
+static DH_NOINLINE void queue_blend_next(dh_queue_f32 *qu)
+{
+    const dh_queue_item_f32 *it = queue_at(qu, 1u);
+    dh_blend_seg_f32 *g = &qu->bl[1];
+    float b[2];
+    (void)queue_corner(qu, 0u, b);
+    g->b0 = b[1];
+    g->tb0 = qu->bl[0].tb1;
+    g->tb1 = queue_corner(qu, 1u, b);
+    g->b1 = b[0];
+    /* each tail within half the line: it fits */
+    (void)dh_blend_seg_plan_f32_(g, &it->path, &it->lim, 1.0f);
+    qu->bo[1] = 0.0f;
+    qu->bmode = QB_TWO;
+}
+
+/* the s of the blended lines now: on their brake after a stop, else at
+ * the clock (the next line's from its start on the head's clock) */
+static DH_NOINLINE void queue_blend_now(const dh_queue_f32 *qu, float s[2])
+{
+    const dh_blend_seg_f32 *g = qu->bl;
+    s[1] = 0.0f;
+    if (qu->bmode == QB_NEXT) {
+        s[0] = qu->bo[0];
+    } else if (qu->braked != 0u) {
+        s[0] = queue_brake_at(qu, 0u, qu->tb);
+        if (qu->bmode == QB_TWO) s[1] = queue_brake_at(qu, 1u, qu->tb);
+    } else {
+        s[0] = dh_blend_seg_s_f32_(&g[0], qu->bo[0], qu->mv.clock);
+        if (qu->bmode == QB_TWO) s[1] = dh_blend_seg_s_f32_(&g[1], qu->bo[1], qu->mv.clock - (g[0].T - g[0].tb1));
+    }
+}
+
+/* s of the one blended line now (not QB_TWO) */
+static DH_NOINLINE float queue_blend_s(const dh_queue_f32 *qu)
+{
+    float s[2];
+    queue_blend_now(qu, s);
+    return s[0];
+}
+
+/* the s of two blended lines now into T's column 3 (rows 0 and 1), for
+ * dh_blend_pose_rot_f32_ */
+static DH_NOINLINE void queue_blend_s2(const dh_queue_f32 *qu, dh_mat4_f32 *T)
+{
+    float s[2];
+    queue_blend_now(qu, s);
+    DH_M4(T, 0, 3) = s[0];
+    DH_M4(T, 1, 3) = s[1];
+}
+
+/* The frame of blended lines this period (what): the next line joins
+ * when the head's clock passed its overlap's start; T = the
+ * superposition of two (its steps called from here) and 1, or 0 for one
+ * line (the caller evaluates it at queue_blend_s) */
+static DH_NOINLINE int queue_blend_pose(dh_queue_f32 *qu, uint32_t what, dh_mat4_f32 *T)
+{
+    if (what == QUEUE_PATH && qu->bmode == QB_ONE && qu->bl[0].tb1 > 0.0f &&
+        qu->mv.clock > qu->bl[0].T - qu->bl[0].tb1)
+        queue_blend_next(qu); /* the overlap begins */
+    if (qu->bmode != QB_TWO) return 0;
+    queue_blend_s2(qu, T);
+    dh_blend_pose_rot_f32_(&queue_at(qu, 0u)->path, &queue_at(qu, 1u)->path, T);
+    dh_blend_compose_f32_(&queue_at(qu, 1u)->path.qa, T);
+    dh_blend_pose_pos_f32_(&queue_at(qu, 0u)->path, &queue_at(qu, 1u)->path, T);
+    return 1;
+}
+
+/* The largest rise (*up) and fall (*dn) of the feed override this period
+ * (dh_move.c's rule on the head line's scaling): 0 (r holds) when the
+ * period's clocks reach into a tail (an overlap), 1 where s' is 0. */
+static DH_NOINLINE void queue_blend_bounds(const dh_queue_f32 *qu, float *up, float *dn)
+{
+    const dh_blend_seg_f32 *g = &qu->bl[0];
+    const float A = g->a, r = qu->mv.feed, c = qu->mv.clock, tb = c - r * qu->dt, tf = c + qu->dt;
+    float sd, a0, hi, lo, k;
+    *up = 0.0f;
+    *dn = 0.0f;
+    if ((qu->bmode == QB_TWO && qu->bl[1].T > 0.0f) || (g->tb0 > 0.0f && tb < g->tb0) ||
+        (g->tb1 > 0.0f && tf > g->T - g->tb1))
+        return;
+    *up = 1.0f;
+    *dn = 1.0f;
+    (void)dh_blend_seg_rate_f32_(g, tb, &hi);
+    lo = hi;
+    if (!(tb > 0.0f)) hi = A;
+    (void)dh_blend_seg_rate_f32_(g, tf, &a0);
+    if (!(tf < g->T)) a0 = -A;
+    if (a0 > hi) hi = a0;
+    if (a0 < lo) lo = a0;
+    sd = dh_blend_seg_rate_f32_(g, c, &a0);
+    if (a0 > hi) hi = a0;
+    if (a0 < lo) lo = a0;
+    if (!(sd > 0.0f)) return;
+    k = sd / qu->dt;
+    *up = dh_motion_feed_rise_f32_(k, (hi > 0.0f) ? hi : 0.0f, A, r);
+    *dn = (A + ((lo < 0.0f) ? lo : 0.0f) * r * r) / k;
+    if (!(*dn > 0.0f)) *dn = 0.0f;
+}
+
+/* the head line is done and the next one runs on: it becomes the head's
+ * scaling, on its own clock (the report's clock, the head's end, into
+ * qu->next) */
+static DH_NOINLINE void queue_blend_shift(dh_queue_f32 *qu, float clock)
+{
+    const float t01 = qu->bl[0].T - qu->bl[0].tb1;
+    float c = clock - t01;
+    qu->next = qu->bl[0].T;
+    qu->bl[0] = qu->bl[1];
+    qu->bo[0] = qu->bo[1];
+    queue_seg_rest(&qu->bl[1]);
+    qu->bo[1] = 0.0f;
+    qu->bmode = QB_ONE;
+    qu->mv.path = queue_at(qu, 1u)->path;
+    qu->mv.dur = qu->bl[0].T;
+    if (!(c > 0.0f)) c = 0.0f;
+    qu->mv.clock = (c < qu->mv.dur) ? c : qu->mv.dur;
+}
+
+/* A period of blended lines (QB_ONE, QB_TWO): the feed override as
+ * dh_move_advance_f32's, held in an overlap; the clock advances by r dt,
+ * past the head's end only into the next line's overlap. 1 when the head
+ * is done at rest (the tracker OK at its end), 2 when it is done and the
+ * next line runs on (the head's clock past its end in their overlap). */
+static DH_NOINLINE int queue_blend_period(dh_queue_f32 *qu, int ok)
+{
+    dh_move_f32 *mv = &qu->mv;
+    const dh_blend_seg_f32 *g = qu->bl;
+    float up = 0.0f, dn = 0.0f, c;
+    if (!(g[0].tb1 > 0.0f) && !(mv->clock < mv->dur) && ok != 0) {
+        qu->next = mv->clock;
+        if (qu->bmode == QB_TWO) {
+            /* the next line starts where it is held */
+            qu->bo[0] = qu->bo[1];
+            qu->bmode = QB_NEXT;
+            mv->path = queue_at(qu, 1u)->path;
+        }
+        return 1;
+    }
+    if (ok != 0 && mv->feed >= 1.0f && mv->fcap >= 1.0f) {
+        mv->lag = 0u;
+    } else {
+        queue_blend_bounds(qu, &up, &dn);
+        mv->feed = dh_motion_feed_goal_f32_(mv, qu->dt, ok, up, dn);
+    }
+    c = mv->clock + mv->feed * qu->dt;
+    if (qu->bmode == QB_TWO && g[1].T > 0.0f && !(c < mv->dur)) {
+        queue_blend_shift(qu, c);
+        return 2;
+    }
+    mv->clock = (c < mv->dur || g[0].tb1 > 0.0f) ? c : mv->dur;
+    return 0;
+}
+
+/* 1 when the blended lines move (a stop brakes them) */
+static int queue_blend_moving(const dh_queue_f32 *qu)
+{
+    const dh_blend_seg_f32 *g = qu->bl;
+    if (qu->bmode == QB_TWO && g[1].T > 0.0f) return 1;
+    return (qu->mv.clock > 0.0f || g[0].tb0 > 0.0f) && (qu->mv.clock < qu->mv.dur || g[0].tb1 > 0.0f);
+}
+
+/* the brake's start of blended line i (0: the head, 1: the next in an
+ * overlap): x = s, its rate and acceleration under the feed override r
+ * (s' r, s'' r^2) and the deceleration, its tail's in an overlap, its
+ * line's own alone */
+static DH_NOINLINE void queue_blend_state(const dh_queue_f32 *qu, uint32_t i, float x[4])
+{
+    const dh_blend_seg_f32 *g = &qu->bl[i];
+    const float r = qu->mv.feed, t = (i == 0u) ? qu->mv.clock : qu->mv.clock - (qu->bl[0].T - qu->bl[0].tb1);
+    float sdd;
+    x[0] = dh_blend_seg_s_f32_(g, qu->bo[i], t);
+    x[1] = dh_blend_seg_rate_f32_(g, t, &sdd) * r;
+    x[2] = sdd * r * r;
+    x[3] = g->a;
+    if (i == 1u) x[3] = g->b0;
+    if (i == 0u && g->tb1 > 0.0f && qu->bmode == QB_TWO) x[3] = g->b1;
+}
+
 /* 1 when the tracker is at rest for the joint move it: every
  * |v_i| <= amax_i dt / 2 */
 static int queue_at_rest(const dh_track_f32 *t, const dh_queue_item_f32 *it, float dt)
@@ -294,6 +629,18 @@ static DH_NOINLINE dh_status queue_start_path(dh_queue_f32 *qu, const dh_queue_i
     dh_move_f32 *mv = &qu->mv;
     dh_status st;
     float s0 = 0.0f;
+    /* blended lines: resumed where the brake left them (one line, or two
+     * in an overlap), started where the last resume held it, or starting
+     * with a blended corner (0 from queue_blend_from: a plain move) */
+    if (qu->braked != 0u && qu->bmode == QB_TWO) {
+        queue_blend_two(qu, queue_brake_at(qu, 0u, qu->tbend), queue_brake_at(qu, 1u, qu->tbend));
+        return DH_OK;
+    }
+    if (qu->braked != 0u && qu->bmode == QB_ONE) s0 = queue_brake_at(qu, 0u, qu->tbend);
+    if (qu->bmode == QB_NEXT) s0 = qu->bo[0];
+    if (!(qu->braked != 0u && qu->bmode == QB_NONE) && queue_blend_from(qu, s0) != 0) return DH_OK;
+    s0 = 0.0f;
+    qu->bmode = QB_NONE;
     if (qu->braked != 0u) s0 = qu->bq[0] + qu->bx[0];
     qu->vs = it->prof.v;
     qu->as = it->prof.a;
@@ -363,6 +710,7 @@ static DH_NOINLINE dh_status queue_start_joint(dh_queue_f32 *qu, const dh_queue_
     float T = 0.0f, d = 0.0f;
     uint32_t i;
     qu->mv.kind = (uint32_t)DH_MOVE_NONE;
+    qu->bmode = QB_NONE;
     for (i = 0u; i < it->n && st == DH_OK; i++) {
         st = queue_joint_d(&qu->mv, it, i, q0[i], &d);
         if (st == DH_OK) {
@@ -435,7 +783,13 @@ dh_status dh_queue_target_f32(dh_queue_f32 *qu, const dh_track_f32 *t, float dt,
         /* the path's frame now: running, braking, or held at rest */
         qu->next = 0.0f;
         cmd->kind = (uint32_t)DH_MOVE_PATH;
-        (void)dh_path_eval_f32(&qu->mv.path, queue_path_now(qu), &cmd->T);
+        if (qu->bmode == QB_NONE) {
+            (void)dh_path_eval_f32(&qu->mv.path, queue_path_now(qu), &cmd->T);
+        } else if (queue_blend_pose(qu, what, &cmd->T) == 0) {
+            (void)dh_path_eval_f32(&qu->mv.path, queue_blend_s(qu), &cmd->T);
+        } else {
+            /* the superposition of two lines, written by queue_blend_pose */
+        }
     } else {
         queue_joint_cmd(qu, t, what, dt, cmd);
     }
@@ -477,6 +831,9 @@ static void queue_period(dh_queue_f32 *qu, uint32_t what, dh_track_state state, 
     if (what == QUEUE_JOINT) {
         qu->mv.clock = qu->next;
         if (!(qu->next < qu->mv.dur)) *done = 1;
+    } else if (what == QUEUE_PATH && qu->bmode != QB_NONE) {
+        *held = 1 - ok;
+        *done = queue_blend_period(qu, ok);
     } else if (what == QUEUE_PATH) {
         dh_move_report_f32 mrep;
         /* the executor's period: clock and feed override (dh_move.c) */
@@ -508,10 +865,14 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
     rep->seq = qu->seq;
     queue_period(qu, what, state, &held, &done);
     rep->clock = (what == QUEUE_BJOINT || what == QUEUE_BPATH) ? qu->tb : qu->mv.clock;
+    if (done == 2) rep->clock = qu->next;
     rep->feed = (what == QUEUE_PATH) ? qu->mv.feed : 1.0f;
     if (done != 0) queue_pop(qu);
+    /* blended: the next line runs on */
+    if (done == 2) qu->started = 1u;
     rep->held = held;
-    rep->done = done;
+    rep->done = 0;
+    if (done != 0) rep->done = 1;
     rep->last = 0;
     if (qu->count == 0u) rep->last = 1;
     rep->stopped = 0;
@@ -525,12 +886,19 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
 static DH_NOINLINE float queue_brake(dh_queue_f32 *qu)
 {
     const dh_queue_item_f32 *it = &qu->items[qu->head];
-    float d = 0.0f, e, sd, sdd, s;
+    float d = 0.0f, e, sd, sdd, s, x[4];
     uint32_t i;
     if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) {
         for (i = 0u; i < qu->mv.n; i++) {
             e = queue_brake_plan(qu, i, qu->bq[i], qu->mv.ws[0][i], qu->mv.ws[1][i], it->amax[i] * QUEUE_MARGIN,
                                  (it->jerk != 0u) ? it->jmax[i] : 0.0f, qu->mv.q1[i]);
+            if (e > d) d = e;
+        }
+    } else if (qu->bmode == QB_ONE || qu->bmode == QB_TWO) {
+        /* each line (two in an overlap) from its state */
+        for (i = 0u; i < ((qu->bmode == QB_TWO) ? 2u : 1u); i++) {
+            queue_blend_state(qu, i, x);
+            e = queue_brake_plan(qu, i, x[0], x[1], x[2], x[3], 0.0f, 1.0f);
             if (e > d) d = e;
         }
     } else {
@@ -547,7 +915,9 @@ dh_status dh_queue_stop_f32(dh_queue_f32 *qu)
     if (qu->pend != 0u) return DH_ERR_ARG;
     if (qu->phase != (uint32_t)DH_QUEUE_RUN) return DH_OK;
     qu->resume = 0u;
-    if (qu->count == 0u || qu->started == 0u || !(qu->mv.clock > 0.0f) || !(qu->mv.clock < qu->mv.dur)) {
+    if (qu->count == 0u || qu->started == 0u ||
+        ((qu->bmode == QB_ONE || qu->bmode == QB_TWO) ? !queue_blend_moving(qu)
+                                                       : (!(qu->mv.clock > 0.0f) || !(qu->mv.clock < qu->mv.dur)))) {
         qu->phase = (uint32_t)DH_QUEUE_STOPPED;
         return DH_OK;
     }

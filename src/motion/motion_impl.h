@@ -37,6 +37,55 @@ dh_status dh_motion_bound_f32_(float *sl, float num, float den);
  * the quotient (dh_profile.c); the jerk bound of an arc (dh_path.c) */
 float dh_motion_root_f32_(float n, float m, int cube);
 
+/* The feed override r after a period of the path move mv (dh_move.c):
+ * ok 1 when the tracker was OK; up and dn the largest rise and fall of r
+ * that keep the target within its limits this period (1: no bound). r
+ * moves towards its ceiling (ok) or 0 (not ok) by at most them, and the
+ * ceiling and mv->lag are updated (dh_move_advance_f32's rule). The
+ * queue's blended lines (dh_queue.c) take it with their own bounds. */
+float dh_motion_feed_goal_f32_(dh_move_f32 *mv, float dt, int ok, float up, float dn);
+
+/* The largest rise of r within the acceleration A of s: k = s' / dt > 0,
+ * p >= 0 the largest s'' near the clock (dh_move.c) */
+float dh_motion_feed_rise_f32_(float k, float p, float A, float r);
+
+/* ---- the queue's blended lines (dh_blend.c, called by dh_queue.c) ---- */
+
+/* The corner of the lines p1 then p2 within lim and radius as the queue
+ * blends it (docs/design.md, "Blended corners in the queue"): the
+ * overlap tb, b[0] the end tail's |s''| of p1 and b[1] the start tail's
+ * of p2 (L1 b1 + L2 b2 <= amax, each tail within half its line); 0 (and
+ * b 0) when the corner runs at rest: not two lines with motion, p2 not
+ * starting at p1's end, radius 0, or a blend not shorter. */
+float dh_blend_corner_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, const dh_cart_limits_f32 *lim, float radius,
+                           float b[2]);
+
+/* g = the scaling of s over the distance D (s from 1 - D to 1) of the
+ * line p within lim, with the tails g->b0, tb0, b1, tb1 as set by the
+ * caller (a tail of duration 0 is a rest); 1 when the tails fit the
+ * distance, 0 when not (then g is no valid scaling). */
+int dh_blend_seg_plan_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim, float D);
+
+/* s of the scaling g started at s0, at its time t (clamped to [0, T]:
+ * s0 before, 1 after when T > 0) */
+float dh_blend_seg_s_f32_(const dh_blend_seg_f32 *g, float s0, float t);
+
+/* s' of the scaling g at its time t, and s'' into *sdd (both 0 outside
+ * (0, T)) */
+float dh_blend_seg_rate_f32_(const dh_blend_seg_f32 *g, float t, float *sdd);
+
+/* T = the superposition of line p1 at s1 and line p2 at s2 (the
+ * overlap of dh_blend_eval_f32), s1 and s2 given in T's column 3 (rows 0
+ * and 1), in three calls made one after the other (each call's stack
+ * apart): dh_blend_pose_rot_f32_ puts the slerps q1(s1) and q2(s2) into
+ * T's columns 0 and 1;
+ * dh_blend_compose_f32_ (with p2's qa) makes T's rotation
+ * q2(s2) q_A2* q1(s1) and bottom row; dh_blend_pose_pos_f32_ its position,
+ * p1's B less (1 - s1) of p1 plus s2 of p2. */
+void dh_blend_pose_rot_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat4_f32 *T);
+void dh_blend_compose_f32_(const dh_quat_f32 *qa2, dh_mat4_f32 *T);
+void dh_blend_pose_pos_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat4_f32 *T);
+
 /* ---- fixed point (dh_interp_q.c) ---- */
 
 /* qb replaced by -qb when qa . qb < 0: the shorter arc; unit inputs (no

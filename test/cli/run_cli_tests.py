@@ -1774,7 +1774,56 @@ def group_move(seed, tmp):
         check_joint_limits('move beyond reach', qa, frows, [vm] * n, [am] * n, dt, [4 * f32_ulp(360.0)] * n,
                            at_rest=False)
 
-    # 5. every bad argument: exit 2, nothing on stdout, the message naming it
+    # 5. a blended square (--blend): shorter than the square at rest at
+    # its corners, every period ok, the joints within the tracker's limits,
+    # the tool's speed and acceleration within --speed and --accel by
+    # finite differences over 20 periods (1e-3 relative), the tool on the
+    # square's sides or within R of a corner (and off the sides somewhere)
+    side, R = 0.1, 0.02
+    rot = to_expr(A).split(' ', 1)[1]
+    sq = [[p0[0] + side, p0[1], p0[2]], [p0[0] + side, p0[1] + side, p0[2]], [p0[0], p0[1] + side, p0[2]], p0]
+    sq_args = ['move', path, '--q0', ','.join(map(str, qa)), '--dt', str(dt), '--speed', str(speed), '--accel',
+               str(accel), '--rspeed', str(rsp), '--raccel', str(racc)]
+    for c in sq:
+        sq_args += ['--line', 'trans(%.6f,%.6f,%.6f) %s' % (c[0], c[1], c[2], rot)]
+    rc0, out0, err0 = run(sq_args)
+    rc, out, err = run(sq_args + ['--blend', str(R)])
+    head0, rows0 = read_csv(out0, n)
+    head, brows = read_csv(out, n)
+    check(rc0 == 0 and rc == 0 and err == '' and head == head_want and brows and None not in brows and
+          all(r[2] == 'ok' for r in brows), 'move --blend square: rc %d %d err %r' % (rc0, rc, err))
+    if brows and None not in brows and rows0:
+        check(len(brows) < len(rows0), 'move --blend square: %d periods, at rest %d' % (len(brows), len(rows0)))
+        check_joint_limits('move --blend square', qa, brows, [vm] * n, [am] * n, dt, [4 * f32_ulp(360.0)] * n)
+        pts = [p0] + [[F[i][3] for i in range(3)] for F in (ref_fk(rob, r[1]) for r in brows)]
+        corners = [p0] + sq
+
+        def side_dist(p, a, b):
+            d = [b[i] - a[i] for i in range(3)]
+            u = max(0.0, min(1.0, sum((p[i] - a[i]) * d[i] for i in range(3)) / sum(x * x for x in d)))
+            return math.sqrt(sum((p[i] - a[i] - u * d[i]) ** 2 for i in range(3)))
+        worst, off = 0.0, 0.0
+        for p in pts:
+            ds = min(side_dist(p, corners[k], corners[k + 1]) for k in range(4))
+            dc = min(math.sqrt(sum((p[i] - c[i]) ** 2 for i in range(3))) for c in sq[:3])
+            off = max(off, ds)
+            if ds > 1e-5:
+                worst = max(worst, dc)
+        check(worst <= R + 1e-5 and off > 1e-3, 'move --blend square: off the sides %.3g, %.6g from a corner '
+              '(radius %g)' % (off, worst, R))
+        w, vw, aw = 20, 0.0, 0.0
+        for k in range(len(pts) - 2 * w):
+            d1 = [pts[k + w][i] - pts[k][i] for i in range(3)]
+            d2 = [pts[k + 2 * w][i] - 2 * pts[k + w][i] + pts[k][i] for i in range(3)]
+            vw = max(vw, math.sqrt(sum(x * x for x in d1)) / (w * dt))
+            aw = max(aw, math.sqrt(sum(x * x for x in d2)) / (w * dt) ** 2)
+        check(vw <= speed * (1 + 1e-3) + 4e-6 / (w * dt) and aw <= accel * (1 + 1e-3) + 8e-6 / (w * dt) ** 2,
+              'move --blend square: speed %.6g, acceleration %.6g over %d periods' % (vw, aw, w))
+        print('move --blend square: %d periods (at rest at the corners %d), off the sides %.4g m, within %.6g m of '
+              'a corner there (radius %g), speed %.6g, acceleration %.6g over %d periods' %
+              (len(brows), len(rows0), off, worst, R, vw, aw, w))
+
+    # 6. every bad argument: exit 2, nothing on stdout, the message naming it
     q0 = ['--q0', ','.join(map(str, qa))]
     cart = ['--speed', '0.2', '--accel', '1', '--rspeed', '60', '--raccel', '240']
     jt = ['--joint', '0,0,0,0,0,0']
@@ -1815,7 +1864,10 @@ def group_move(seed, tmp):
         ([path] + q0 + ['--dt', '0.01', '--jerk', '1e38', '--speed', '0.2', '--accel', '1e-30', '--rspeed', '60',
                         '--raccel', '240'] + ln, 'move --jerk: the angular jerk limit J * raccel / accel is not a '
                                                  'positive float'),
-        ([path] + q0 + ['--dt', '0.01', '--blend', '0.01'] + cart + ln + ln, 'move --blend: needs blended corners'),
+        ([path] + q0 + ['--dt', '0.01', '--blend', '0.01', '--jerk', '100'] + cart + ln + ln,
+         'move --blend: blended corners are not jerk-limited'),
+        ([path] + q0 + ['--dt', '0.01', '--blend', '-0.01'] + cart + ln + ln, '--blend: -0.01 must be a finite radius'),
+        ([path] + q0 + ['--dt', '0.01', '--blend', 'r'] + cart + ln + ln, "bad number 'r' for --blend"),
         ([path] + q0 + ['--dt', '0.01', '--fixed'] + jt, 'move --fixed: needs a fixed-point motion API'),
         ([path] + q0 + ['--dt', '0.01', '--dt', '0.02'] + jt, "option '--dt' given more than once"),
         ([path] + q0 + ['--dt', '0.01', '--frames'] + jt, "unknown or inapplicable option '--frames'"),
