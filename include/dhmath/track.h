@@ -26,6 +26,21 @@
  * DH_TRACK_OK is returned only when FK(q_out) is within t->pos_tol and
  * t->rot_tol of the target.
  *
+ * Report (rep->measured): 1 (every path but the one below) when pos_err,
+ * rot_err are the errors of FK(q_out) and manip, sigma_min
+ * dh_manipulability_f32's of the Jacobian at q_out. 0 when q_out is the
+ * nearest closed-form solution as dh_ikc_f32 returned it, t->pos_tol >=
+ * t->cfp and t->rot_tol >= 2e-6 (the closed form's residual bounds of
+ * ikc.h, scaled to the robot: cfp = 1e-6 (reach + |p_base|); the
+ * defaults qualify while |p_base| < L) and, for the spherical-wrist and
+ * axes-2-3-4 families, the bound on sigma_min from |det J| proves it at
+ * or above t->sing_threshold: then state OK, pos_err = t->cfp, rot_err =
+ * 2e-6, manip = |det J| by the family's closed form, sigma_min = Hong and
+ * Pan's bound |det J| (5 / F)^(5/2) (F >= ||J||_F^2 for the robot),
+ * near_singular 0, and no FK or Jacobian is computed. Rejected targets
+ * and an FK overflow at q_out: measured 0 with the errors 0 (state
+ * UNREACHABLE).
+ *
  * Method (docs/design.md, "Tracking"): for a closed-form robot, the
  * solution of dh_ikc_f32 nearest the current configuration in time (the
  * largest |q*_i - q_i| / vmax_i, then the sum of |q*_i - q_i|) is taken

@@ -145,11 +145,14 @@ dh_status dh_track_init_f32(dh_track_f32 *t, const dh_robot *r, const dh_ikc_mod
     return (st == DH_OK) ? DH_OK : DH_ERR_OVERFLOW;
 }
 
-/* the step box of this period (t->lo, t->hi), see the file comment */
-static DH_NOINLINE void track_box(dh_track_f32 *t)
+/* the step box of this period (t->lo, t->hi), see the file comment; with
+ * a closed-form solution (t->have) also t->dq = t->qs - t->q and 1 when the
+ * box holds that step, else 0 */
+static DH_NOINLINE int track_box(dh_track_f32 *t)
 {
     const uint32_t n = t->r->n;
     uint32_t i;
+    int in = t->have;
     for (i = 0u; i < n; i++) {
         const dh_joint *j = &t->r->joint[i];
         /* below the bound of track_put by 2^-21: rounding never pushes a
@@ -180,7 +183,13 @@ static DH_NOINLINE void track_box(dh_track_f32 *t)
         }
         t->lo[i] = lo;
         t->hi[i] = hi;
+        if (t->have) {
+            const float s = t->qs[i] - q;
+            if (!(s >= lo && s <= hi)) in = 0;
+            t->dq[i] = s;
+        }
     }
+    return in;
 }
 
 /* t->dq scaled by one factor in [0, 1] so that each entry stays on its
@@ -225,23 +234,24 @@ static DH_NOINLINE int track_limit(const dh_track_f32 *t, uint32_t i, float *xp)
     return in;
 }
 
-/* 1 when joint i of solution k takes longer than bt to reach, wherever
- * track_limit takes its value: |x - q| less a shift by 360 degrees and
- * its rounding, less a clamp within the tolerance, is a lower bound on
- * the distance track_pick computes */
-static int track_slower(const dh_track_f32 *t, uint32_t k, uint32_t i, float bt)
+/* A distance from q_i beyond which joint i's value of a solution takes
+ * longer than bt to reach wherever track_limit takes it: bt vmax (1 +
+ * 1e-6) plus the tolerance of a clamp and the rounding of a shift by 360
+ * degrees and of the differences (|values| at most 180 + |qmin| + |qmax|);
+ * +inf for an unlimited rate */
+static DH_NOINLINE float track_thr(const dh_track_f32 *t, uint32_t i, float bt)
 {
     const dh_joint *j = &t->r->joint[i];
-    const float x = t->sol[k].q[i], q = t->q[i];
-    float d = track_abs(x - q), m = 2.4e-7f * (track_abs(x) + track_abs(q));
-    if (j->type == DH_JOINT_REVOLUTE) {
-        const float e = track_abs(360.0f - d);
-        d = (e < d) ? e : d;
-        m += 2e-4f + 2.4e-7f * 360.0f;
-    } else {
-        m += 2e-7f * t->reach;
-    }
-    return ((d - m) / j->vmax > bt) ? 1 : 0;
+    const float X = 180.0f + ((j->qmin <= j->qmax) ? track_abs(j->qmin) + track_abs(j->qmax) : 0.0f);
+    return bt * j->vmax * (1.0f + 1e-6f) + 2e-4f + 2e-7f * t->reach + 2.4e-7f * (X + track_abs(t->q[i]) + 360.0f);
+}
+
+/* 1 when a value dd from q_i, or after a shift by 360 degrees, lies
+ * beyond th */
+static int track_far(float dd, float th)
+{
+    const float d = track_abs(dd);
+    return (d > th && track_abs(360.0f - d) > th) ? 1 : 0;
 }
 
 /* the closed-form solution (of t->sol, t->ns, from dh_ikc_f32 with
@@ -253,7 +263,7 @@ static DH_NOINLINE int track_pick(dh_track_f32 *t, dh_status st, int *unreach)
 {
     const uint32_t n = t->r->n;
     uint32_t ns = (st == DH_OK) ? t->ns : 0u, k, i, best = 0u, moved = 0u, first = 0u, c;
-    float bt = 0.0f, bs = 0.0f;
+    float bt = 0.0f, bs = 0.0f, th4 = 0.0f, th2 = 0.0f;
     int found = 0;
     /* the solution on the branch of the last one first: the others then
      * leave at their first slower joint (the result does not depend on
@@ -269,7 +279,9 @@ static DH_NOINLINE int track_pick(dh_track_f32 *t, dh_status st, int *unreach)
         k = (c == 0u) ? first : ((c <= first) ? c - 1u : c);
         /* joint 5 or 3 alone slower than the best: out (the branches
          * differ there first) */
-        if (found && n == 6u && (track_slower(t, k, 4u, bt) || track_slower(t, k, 2u, bt))) continue;
+        if (found && n == 6u &&
+            (track_far(t->sol[k].q[4] - t->q[4], th4) || track_far(t->sol[k].q[2] - t->q[2], th2)))
+            continue;
         for (i = 0u; i < n && in; i++) {
             const dh_joint *j = &t->r->joint[i];
             float *const x = &t->sol[k].q[i];
@@ -291,6 +303,10 @@ static DH_NOINLINE int track_pick(dh_track_f32 *t, dh_status st, int *unreach)
             bt = tm;
             bs = sm;
             found = 1;
+            if (n == 6u) {
+                th4 = track_thr(t, 4u, bt);
+                th2 = track_thr(t, 2u, bt);
+            }
         }
     }
     *unreach = 0;
@@ -300,20 +316,6 @@ static DH_NOINLINE int track_pick(dh_track_f32 *t, dh_status st, int *unreach)
     t->cf = ((moved >> best) & 1u) ? 0 : 1;
     t->br = t->sol[best].flags;
     return 1;
-}
-
-/* 1 when the step to t->qs lies in the box (t->dq set to it) */
-static DH_NOINLINE int track_reached(dh_track_f32 *t)
-{
-    const uint32_t n = t->r->n;
-    uint32_t i;
-    int in = 1;
-    for (i = 0u; i < n; i++) {
-        const float s = t->qs[i] - t->q[i];
-        if (!(s >= t->lo[i] && s <= t->hi[i])) in = 0;
-        t->dq[i] = s;
-    }
-    return in;
 }
 
 /* the step towards t->qs at the bound: straight in joint space, each joint
@@ -509,13 +511,17 @@ static DH_NOINLINE void track_fill(const dh_track_f32 *t, int fk, int unreach, d
 }
 
 /* q_out into t->q and t->v; the closed-form solution itself (t->cf) when
- * its step is within the bound as the box made it (track_put otherwise) */
+ * its step is within the bound as the box made it (track_put otherwise;
+ * t->cf 0 when that moved it) */
 static DH_NOINLINE void track_move(dh_track_f32 *t)
 {
     uint32_t i;
     for (i = 0u; i < t->r->n; i++) {
         float x = t->qs[i];
-        if (!t->cf || !(track_abs(x - t->q[i]) <= t->dq_max[i] * (1.0f - 4.76837158203125e-7f))) x = track_put(t, i);
+        if (!t->cf || !(track_abs(x - t->q[i]) <= t->dq_max[i] * (1.0f - 4.76837158203125e-7f))) {
+            x = track_put(t, i);
+            if (!dh_feq_f32(x, t->qs[i])) t->cf = 0;
+        }
         t->v[i] = (x - t->q[i]) / t->dt;
         t->q[i] = x;
     }
@@ -565,8 +571,8 @@ static DH_NOINLINE dh_status track_check(dh_track_f32 *t, const dh_mat4_f32 *tar
 
 /* The step towards a valid target, the closed form's raw solutions (if
  * any) in t->sol, t->ns: the solution nearest in time (t->have: there is
- * one within the limits); 1 when the box holds it (t->dq the step to it,
- * t->cf kept only then), else 0 (track_chase follows). */
+ * one within the limits) and the step box; 1 when the box holds it (t->dq
+ * the step to it, t->cf kept only then), else 0 (track_chase follows). */
 static DH_NOINLINE int track_nearest(dh_track_f32 *t)
 {
     t->unreach = 0;
@@ -577,7 +583,7 @@ static DH_NOINLINE int track_nearest(dh_track_f32 *t)
                                                                     &t->ns);
         t->have = track_pick(t, st, &t->unreach);
     }
-    if (t->have && track_reached(t)) return 1;
+    if (track_box(t)) return 1;
     t->cf = 0;
     return 0;
 }
@@ -731,11 +737,8 @@ static DH_NOINLINE float track_det_five(const dh_track_f32 *t, float lb, float *
  * were, t->jq 0); else 0 (track_end follows). */
 static DH_NOINLINE int track_cheap(dh_track_f32 *t, dh_track_report_f32 *rep)
 {
-    uint32_t i;
     float w = 0.0f, lb;
     if (!t->cf || !(t->hpg > 0.0f) || !(t->pos_tol >= t->cfp) || !(t->rot_tol >= TRACK_CF_ROT)) return 0;
-    for (i = 0u; i < t->r->n; i++)
-        if (!dh_feq_f32(t->q[i], t->qs[i])) return 0;
     lb = (t->m->kind == DH_IKC_PARALLEL_234) ? track_det_par(t, &w) : track_det_wrist(t, &w);
     /* 1e-5: the products' rounding and the model's copy of the table */
     lb = track_det_five(t, lb, &w) * t->hpg * (1.0f - 1e-5f);
@@ -779,11 +782,12 @@ dh_status dh_track_step_f32(dh_track_f32 *t, const dh_mat4_f32 *target, float *q
     DH_ASSERT(rep != NULL);
     DH_ASSERT(t->r->n >= 1u && t->r->n <= (uint32_t)DH_MAX_JOINTS);
     tst = track_check(t, target);
-    track_box(t);
     t->unreach = 1;
     t->ns = 0u;
     t->cf = 0;
     if (tst != DH_OK) {
+        t->have = 0;
+        (void)track_box(t);
         track_brake(t);
     } else {
         if (t->ist == DH_OK) t->ns = dh_ikc_raw_f32_(t->m, target, t->q, t->sol);
