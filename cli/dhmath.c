@@ -948,6 +948,19 @@ static int cmd_gen(int argc, char **argv)
 
 /* ---- track ---------------------------------------------------------------- */
 
+/* The errors of FK(q) against T into rep (the report holds the closed
+ * form's bounds when the tracker did not measure them): the command prints
+ * measured errors. */
+static void track_measure(const dh_robot *r, const float *q, const dh_mat4_f32 *T, dh_track_report_f32 *rep)
+{
+    dh_mat4_f32 F;
+    float e[6];
+    if (dh_fk_f32(r, q, &F) != DH_OK || dh_pose_error_f32(T, &F, e) != DH_OK) return;
+    rep->pos_err = sqrtf(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    rep->rot_err = sqrtf(e[3] * e[3] + e[4] * e[4] + e[5] * e[5]);
+    rep->measured = 1;
+}
+
 
 
 
@@ -1103,6 +1116,7 @@ static int cmd_track(int argc, char **argv)
             (void)snprintf(text, sizeof text, "%.9g ", q[i] == 0.0f ? 0.0 : (double)q[i]);
             if (cli_out_add(&out, text)) { free(out.buf); return EXIT_ERR; }
         }
+        if (!rep.measured) track_measure(&r, q, &T, &rep);
         (void)snprintf(text, sizeof text, "%s %.9g %.9g\n", k_track_word[rep.state], (double)rep.pos_err,
                        (double)rep.rot_err);
         if (cli_out_add(&out, text)) { free(out.buf); return EXIT_ERR; }

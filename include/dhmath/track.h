@@ -26,6 +26,21 @@
  * DH_TRACK_OK is returned only when FK(q_out) is within t->pos_tol and
  * t->rot_tol of the target.
  *
+ * Report (rep->measured): 1 (every path but the one below) when pos_err,
+ * rot_err are the errors of FK(q_out) and manip, sigma_min
+ * dh_manipulability_f32's of the Jacobian at q_out. 0 when q_out is the
+ * nearest closed-form solution as dh_ikc_f32 returned it, t->pos_tol >=
+ * t->cfp and t->rot_tol >= 2e-6 (the closed form's residual bounds of
+ * ikc.h, scaled to the robot: cfp = 1e-6 (reach + |p_base|); the
+ * defaults qualify while |p_base| < L) and, for the spherical-wrist and
+ * axes-2-3-4 families, the bound on sigma_min from |det J| proves it at
+ * or above t->sing_threshold: then state OK, pos_err = t->cfp, rot_err =
+ * 2e-6, manip = |det J| by the family's closed form, sigma_min = Hong and
+ * Pan's bound |det J| (5 / F)^(5/2) (F >= ||J||_F^2 for the robot),
+ * near_singular 0, and no FK or Jacobian is computed. Rejected targets
+ * and an FK overflow at q_out: measured 0 with the errors 0 (state
+ * UNREACHABLE).
+ *
  * Method (docs/design.md, "Tracking"): for a closed-form robot, the
  * solution of dh_ikc_f32 nearest the current configuration in time (the
  * largest |q*_i - q_i| / vmax_i, then the sum of |q*_i - q_i|) is taken
@@ -65,11 +80,12 @@ typedef enum {
 /** What one step did (float). */
 typedef struct {
     dh_track_state state;  /**< see dh_track_state */
-    float pos_err;         /**< |p_target - p(q_out)|, length unit */
-    float rot_err;         /**< rotation angle between target and FK(q_out), rad */
-    float manip;           /**< manipulability sqrt(det J J^T) at q_out (dh_manipulability_f32) */
-    float sigma_min;       /**< lower bound on the smallest singular value of J at q_out */
+    float pos_err;         /**< |p_target - p(q_out)|, length unit (measured 1), or its bound t->cfp (measured 0, OK) */
+    float rot_err;         /**< rotation angle between target and FK(q_out), rad (measured 1), or its bound 2e-6 (measured 0, OK) */
+    float manip;           /**< manipulability sqrt(det J J^T) at q_out: dh_manipulability_f32 (measured 1), |det J| by the family's closed form (measured 0) */
+    float sigma_min;       /**< lower bound on the smallest singular value of J at q_out (see measured) */
     int near_singular;     /**< sigma_min < t->sing_threshold */
+    int measured;          /**< 1: pos_err, rot_err from FK(q_out), manip, sigma_min from J at q_out; 0: closed-form bounds (state OK), or 0 errors (target rejected, FK overflow) */
 } dh_track_report_f32;
 
 /** Tracker state (float); fill with dh_track_init_f32, then adjust lambda,
@@ -87,7 +103,7 @@ typedef struct {
     float rot_tol;                     /**< "reached": rotation tolerance, rad (default 2e-5) */
     /* private workspace (keeps the step's stack small); read-only for the caller */
     float reach;                       /**< reach bound used for UNREACHABLE without a closed form */
-    float J[6 * DH_MAX_JOINTS];        /**< Jacobian at q */
+    float J[6 * DH_MAX_JOINTS];        /**< Jacobian at q (when jq) */
     float dq[DH_MAX_JOINTS];           /**< step being built */
     float lo[DH_MAX_JOINTS];           /**< step box of this period, lower */
     float hi[DH_MAX_JOINTS];           /**< step box of this period, upper */
@@ -101,7 +117,13 @@ typedef struct {
     dh_status ist;                     /**< closed form's argument status */
     int unreach;                       /**< the target is unreachable this period */
     dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL]; /**< closed-form solutions */
-    dh_mat4_f32 T;                     /**< FK at q */
+    dh_mat4_f32 T;                     /**< FK at q (when jq) */
+    float cfp;                         /**< closed form's position residual bound, 1e-6 (reach + |p_base|) */
+    float hpg;                         /**< Hong-Pan factor (5 / F)^(5/2), F >= ||J||_F^2; 0: no closed-form det J */
+    int jq;                            /**< J and T hold the Jacobian and FK at q */
+    int cf;                            /**< this step's q_out is the nearest closed-form solution as it is */
+    int have;                          /**< a closed-form solution within the limits this step */
+    uint32_t br;                       /**< flags of the last closed-form solution taken (its branch is tried first) */
 } dh_track_f32;
 
 /**

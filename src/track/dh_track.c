@@ -21,11 +21,14 @@
  * rounding of that float difference.
  */
 #include "dhmath/track.h"
+#include "dhmath/trig.h"
 #include "../internal/dh_floatops.h"
 #include "../kin/kin_impl.h"
 #include "../ikc/ikc_impl.h"
 
 #define TRACK_INF_BITS 0x7F800000u
+/* the branch bits of a closed-form solution's flags */
+#define TRACK_BRANCH (DH_IKC_SHOULDER_ALT | DH_IKC_ELBOW_ALT | DH_IKC_WRIST_ALT)
 
 
 static float track_inf(void)
@@ -70,6 +73,41 @@ static DH_NOINLINE float track_length(const dh_robot *r)
     return 4.0f * p.w_rot;
 }
 
+/* The closed form's residual bound in the robot's unit (t->cfp, the
+ * contract of ikc.h scaled: 2e-6 m for reach 2 m, so 1e-6 of the reach
+ * bound plus the base offset) and the factor of the Hong-Pan bound
+ * (t->hpg = (5 / F)^(5/2), F >= ||J||_F^2 for every configuration: 6 unit
+ * axes plus, per revolute joint i, the square of a bound on the distance
+ * from its axis to the tool point: |p_tool| + |a_i| + the sum over k > i of
+ * |a_k| + |d_k| + prismatic travel, since d_i lies along the axis in
+ * either convention and a_i of a modified table before it); hpg 0 where
+ * the closed form of |det J| does not apply */
+static DH_NOINLINE void track_bounds(dh_track_f32 *t)
+{
+    const dh_robot *r = t->r;
+    const float *pb = &r->base.m[3][0], *pt = &r->tool.m[3][0];
+    float R = dh_sqrt_f32(pt[0] * pt[0] + pt[1] * pt[1] + pt[2] * pt[2]), F = 0.0f, x;
+    uint32_t i = r->n;
+    t->cfp = 1e-6f * (t->reach + dh_sqrt_f32(pb[0] * pb[0] + pb[1] * pb[1] + pb[2] * pb[2]));
+    while (i > 0u) {
+        const dh_joint *j = &r->joint[--i];
+        /* joint i's own d (and travel) lies along its axis */
+        F += 1.0f + ((j->type == DH_JOINT_REVOLUTE) ? (R + track_abs(j->a)) * (R + track_abs(j->a)) : 0.0f);
+        R += track_abs(j->a) + track_abs(j->d);
+        if (j->type != DH_JOINT_REVOLUTE)
+            R += (j->qmin <= j->qmax) ? ((track_abs(j->qmin) > track_abs(j->qmax)) ? track_abs(j->qmin)
+                                                                                  : track_abs(j->qmax))
+                                      : track_inf();
+    }
+    t->hpg = 0.0f;
+    if (t->m != NULL && t->m->n == 6u &&
+        (t->m->kind == DH_IKC_WRIST_RRR || t->m->kind == DH_IKC_WRIST_RRP || t->m->kind == DH_IKC_PARALLEL_234) &&
+        dh_isfinite_f32(F)) {
+        x = 5.0f / F;
+        t->hpg = x * x * dh_sqrt_f32(x) * (1.0f - 1e-5f);
+    }
+}
+
 dh_status dh_track_init_f32(dh_track_f32 *t, const dh_robot *r, const dh_ikc_model_f32 *m, const float *q0,
                             float dt)
 {
@@ -100,15 +138,21 @@ dh_status dh_track_init_f32(dh_track_f32 *t, const dh_robot *r, const dh_ikc_mod
     t->pos_tol = 2e-6f * L;
     t->rot_tol = 2e-5f;
     t->reach = L * 1.0001f;
+    track_bounds(t);
+    t->jq = 1;
+    t->br = 0u;
     st = dh_jacobian_f32(r, t->q, t->J, &t->T);
     return (st == DH_OK) ? DH_OK : DH_ERR_OVERFLOW;
 }
 
-/* the step box of this period (t->lo, t->hi), see the file comment */
-static DH_NOINLINE void track_box(dh_track_f32 *t)
+/* the step box of this period (t->lo, t->hi), see the file comment; with
+ * a closed-form solution (t->have) also t->dq = t->qs - t->q and 1 when the
+ * box holds that step, else 0 */
+static DH_NOINLINE int track_box(dh_track_f32 *t)
 {
     const uint32_t n = t->r->n;
     uint32_t i;
+    int in = t->have;
     for (i = 0u; i < n; i++) {
         const dh_joint *j = &t->r->joint[i];
         /* below the bound of track_put by 2^-21: rounding never pushes a
@@ -139,7 +183,13 @@ static DH_NOINLINE void track_box(dh_track_f32 *t)
         }
         t->lo[i] = lo;
         t->hi[i] = hi;
+        if (t->have) {
+            const float s = t->qs[i] - q;
+            if (!(s >= lo && s <= hi)) in = 0;
+            t->dq[i] = s;
+        }
     }
+    return in;
 }
 
 /* t->dq scaled by one factor in [0, 1] so that each entry stays on its
@@ -161,72 +211,111 @@ static DH_NOINLINE void track_fit(dh_track_f32 *t)
     for (i = 0u; i < n; i++) t->dq[i] = track_clamp(t->dq[i] * s, t->lo[i], t->hi[i]);
 }
 
+/* joint i's value *x of a closed-form solution, for a joint with limits:
+ * shifted by 360 degrees and clamped onto the limits as track_pick takes
+ * it; 1 when it is within the limits up to the tolerance */
+static DH_NOINLINE int track_limit(const dh_track_f32 *t, uint32_t i, float *xp)
+{
+    /* a solution on a limit may come out beyond it by rounding: within
+     * 1e-4 deg (or 1e-7 L) it is put on the limit */
+    const dh_joint *j = &t->r->joint[i];
+    const float tol = (j->type == DH_JOINT_REVOLUTE) ? 1e-4f : 1e-7f * t->reach;
+    float x = *xp;
+    int in = 1;
+    if (j->type == DH_JOINT_REVOLUTE) {
+        /* the 360-degree shift nearest q when it is within the limits up
+         * to the tolerance: dh_ikc_f32 shifts a value just beyond a limit
+         * by 360 degrees into the range */
+        const float y = (x - t->q[i] > 180.0f) ? x - 360.0f : ((x - t->q[i] < -180.0f) ? x + 360.0f : x);
+        if (y >= j->qmin - tol && y <= j->qmax + tol) x = y;
+    }
+    if (x < j->qmin - tol || x > j->qmax + tol) in = 0;
+    *xp = track_clamp(x, j->qmin, j->qmax);
+    return in;
+}
+
+/* A distance from q_i beyond which joint i's value of a solution takes
+ * longer than bt to reach wherever track_limit takes it: bt vmax (1 +
+ * 1e-6) plus the tolerance of a clamp and the rounding of a shift by 360
+ * degrees and of the differences (|values| at most 180 + |qmin| + |qmax|);
+ * +inf for an unlimited rate */
+static DH_NOINLINE float track_thr(const dh_track_f32 *t, uint32_t i, float bt)
+{
+    const dh_joint *j = &t->r->joint[i];
+    const float X = 180.0f + ((j->qmin <= j->qmax) ? track_abs(j->qmin) + track_abs(j->qmax) : 0.0f);
+    return bt * j->vmax * (1.0f + 1e-6f) + 2e-4f + 2e-7f * t->reach + 2.4e-7f * (X + track_abs(t->q[i]) + 360.0f);
+}
+
+/* 1 when a value dd from q_i, or after a shift by 360 degrees, lies
+ * beyond th */
+static int track_far(float dd, float th)
+{
+    const float d = track_abs(dd);
+    return (d > th && track_abs(360.0f - d) > th) ? 1 : 0;
+}
+
 /* the closed-form solution (of t->sol, t->ns, from dh_ikc_f32 with
  * status st) nearest t->q in time into t->qs; 1 when there is one within
- * the limits, else 0 (*unreach: none at all or none within the limits) */
+ * the limits, else 0 (*unreach: none at all or none within the limits);
+ * t->cf = 1 when t->qs holds that solution's values unchanged (no limit
+ * clamp or shift by 360 degrees here) */
 static DH_NOINLINE int track_pick(dh_track_f32 *t, dh_status st, int *unreach)
 {
     const uint32_t n = t->r->n;
-    uint32_t ns = (st == DH_OK) ? t->ns : 0u, k, i, best = 0u;
-    float bt = 0.0f, bs = 0.0f;
+    uint32_t ns = (st == DH_OK) ? t->ns : 0u, k, i, best = 0u, moved = 0u, first = 0u, c;
+    float bt = 0.0f, bs = 0.0f, th4 = 0.0f, th2 = 0.0f;
     int found = 0;
-    for (k = 0u; k < ns; k++) {
+    /* the solution on the branch of the last one first: the others then
+     * leave at their first slower joint (the result does not depend on
+     * the order: the first index wins among equals) */
+    for (k = 0u; k < ns; k++)
+        if (((t->sol[k].flags ^ t->br) & TRACK_BRANCH) == 0u) {
+            first = k;
+            break;
+        }
+    for (c = 0u; c < ns; c++) {
         float tm = 0.0f, sm = 0.0f;
         int in = 1;
-        for (i = 0u; i < n; i++) {
-            /* a solution on a limit may come out beyond it by rounding:
-             * within 1e-4 deg (or 1e-7 L) it is put on the limit */
+        k = (c == 0u) ? first : ((c <= first) ? c - 1u : c);
+        /* joint 5 or 3 alone slower than the best: out (the branches
+         * differ there first) */
+        if (found && n == 6u &&
+            (track_far(t->sol[k].q[4] - t->q[4], th4) || track_far(t->sol[k].q[2] - t->q[2], th2)))
+            continue;
+        for (i = 0u; i < n && in; i++) {
             const dh_joint *j = &t->r->joint[i];
-            const float tol = (j->type == DH_JOINT_REVOLUTE) ? 1e-4f : 1e-7f * t->reach;
-            float x = t->sol[k].q[i];
-            if (j->type == DH_JOINT_REVOLUTE && j->qmin <= j->qmax) {
-                /* the 360-degree shift nearest q when it is within the
-                 * limits up to the tolerance: dh_ikc_f32 shifts a value
-                 * just beyond a limit by 360 degrees into the range */
-                const float y = (x - t->q[i] > 180.0f) ? x - 360.0f : ((x - t->q[i] < -180.0f) ? x + 360.0f : x);
-                if (y >= j->qmin - tol && y <= j->qmax + tol) x = y;
+            float *const x = &t->sol[k].q[i];
+            const float x0 = *x, dd = x0 - t->q[i];
+            float d;
+            /* within the limits and half a turn of q: no shift, no clamp */
+            if (j->qmin <= j->qmax && !(x0 >= j->qmin && x0 <= j->qmax && dd <= 180.0f && dd >= -180.0f)) {
+                if (!track_limit(t, i, x)) in = 0;
+                if (!dh_feq_f32(*x, x0)) moved |= 1u << k;
             }
-            if (j->qmin <= j->qmax) {
-                if (x < j->qmin - tol || x > j->qmax + tol) in = 0;
-                x = track_clamp(x, j->qmin, j->qmax);
-                t->sol[k].q[i] = x;
-            }
-        }
-        if (!in) continue;
-        for (i = 0u; i < n; i++) {
-            const float d = track_abs(t->sol[k].q[i] - t->q[i]);
-            const float v = t->r->joint[i].vmax;
-            const float ti = dh_isfinite_f32(v) ? d / v : 0.0f;
-            tm = (ti > tm) ? ti : tm;
+            /* the time: vmax > 0, +inf for an unlimited joint (d / inf = 0) */
+            d = track_abs(*x - t->q[i]);
+            tm = (d / j->vmax > tm) ? d / j->vmax : tm;
             sm += d;
-            if (found && tm > bt) break;   /* slower than the best: out */
+            if (found && tm > bt) in = 0;   /* slower than the best: out */
         }
-        if (!found || tm < bt || (tm <= bt && sm < bs)) {
+        if (in && (!found || tm < bt || (tm <= bt && (sm < bs || (sm <= bs && k < best))))) {
             best = k;
             bt = tm;
             bs = sm;
             found = 1;
+            if (n == 6u) {
+                th4 = track_thr(t, 4u, bt);
+                th2 = track_thr(t, 2u, bt);
+            }
         }
     }
     *unreach = 0;
     if (st == DH_ERR_UNREACHABLE || (st == DH_OK && !found)) *unreach = 1;
     if (!found) return 0;
     for (i = 0u; i < n; i++) t->qs[i] = t->sol[best].q[i];
+    t->cf = ((moved >> best) & 1u) ? 0 : 1;
+    t->br = t->sol[best].flags;
     return 1;
-}
-
-/* 1 when the step to t->qs lies in the box (t->dq set to it) */
-static DH_NOINLINE int track_reached(dh_track_f32 *t)
-{
-    const uint32_t n = t->r->n;
-    uint32_t i;
-    int in = 1;
-    for (i = 0u; i < n; i++) {
-        const float s = t->qs[i] - t->q[i];
-        if (!(s >= t->lo[i] && s <= t->hi[i])) in = 0;
-        t->dq[i] = s;
-    }
-    return in;
 }
 
 /* the step towards t->qs at the bound: straight in joint space, each joint
@@ -367,7 +456,8 @@ static DH_NOINLINE float track_put(const dh_track_f32 *t, uint32_t i)
     const dh_joint *j = &t->r->joint[i];
     /* the float difference is within 2^-24 of the exact one */
     const float q = t->q[i], d = t->dq_max[i] * (1.0f - 4.76837158203125e-7f);
-    float x = q + t->dq[i];
+    /* the closed-form solution itself when the step is the one to it */
+    float x = t->cf ? t->qs[i] : q + t->dq[i];
     int guard;
     if (j->qmin <= j->qmax) x = track_clamp(x, j->qmin, j->qmax);
     for (guard = 0; guard < 64 && !dh_feq_f32(x, q) && track_abs(x - q) > d; guard++) x = track_toward(x, q);
@@ -411,6 +501,7 @@ static DH_NOINLINE void track_fill(const dh_track_f32 *t, int fk, int unreach, d
     const float *const e = t->e;
     rep->pos_err = fk ? dh_sqrt_f32(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) : 0.0f;
     rep->rot_err = fk ? dh_sqrt_f32(e[3] * e[3] + e[4] * e[4] + e[5] * e[5]) : 0.0f;
+    rep->measured = fk;
     rep->near_singular = 0;
     if (rep->sigma_min < t->sing_threshold) rep->near_singular = 1;
     if (fk && rep->pos_err <= t->pos_tol && rep->rot_err <= t->rot_tol)
@@ -419,12 +510,18 @@ static DH_NOINLINE void track_fill(const dh_track_f32 *t, int fk, int unreach, d
         rep->state = (unreach || !fk) ? DH_TRACK_UNREACHABLE : DH_TRACK_LAGGING;
 }
 
-/* q_out into t->q and t->v */
+/* q_out into t->q and t->v; the closed-form solution itself (t->cf) when
+ * its step is within the bound as the box made it (track_put otherwise;
+ * t->cf 0 when that moved it) */
 static DH_NOINLINE void track_move(dh_track_f32 *t)
 {
     uint32_t i;
     for (i = 0u; i < t->r->n; i++) {
-        const float x = track_put(t, i);
+        float x = t->qs[i];
+        if (!t->cf || !(track_abs(x - t->q[i]) <= t->dq_max[i] * (1.0f - 4.76837158203125e-7f))) {
+            x = track_put(t, i);
+            if (!dh_feq_f32(x, t->qs[i])) t->cf = 0;
+        }
         t->v[i] = (x - t->q[i]) / t->dt;
         t->q[i] = x;
     }
@@ -457,31 +554,58 @@ static int track_err(dh_track_f32 *t, const dh_mat4_f32 *target)
     return (dh_kin_pose_error_f32_(target, &t->T, t->e, t->ws) == DH_OK) ? 1 : 0;
 }
 
-/* 1 when the closed form's argument checks pass (their status in t->ist) */
-static DH_NOINLINE int track_ikc_args(dh_track_f32 *t, const dh_mat4_f32 *target)
+/* The target's status (track_target_ok's) and, with a closed form, the
+ * closed form's argument checks in t->ist (DH_ERR_UNAVAILABLE without
+ * one). Those checks include track_target_ok's, in its order (q is finite):
+ * their DH_OK, DH_ERR_NAN and DH_ERR_NOT_RIGID are the target's status. */
+static DH_NOINLINE dh_status track_check(dh_track_f32 *t, const dh_mat4_f32 *target)
 {
+    if (t->m == NULL) {
+        t->ist = DH_ERR_UNAVAILABLE;
+        return track_target_ok(target);
+    }
     t->ist = dh_ikc_args_f32_(t->m, target, t->q, DH_IKC_KEEP_OUT_OF_LIMITS);
-    return (t->ist == DH_OK) ? 1 : 0;
+    if (t->ist == DH_OK || t->ist == DH_ERR_NAN || t->ist == DH_ERR_NOT_RIGID) return t->ist;
+    return track_target_ok(target);
 }
 
 /* The step towards a valid target, the closed form's raw solutions (if
- * any) in t->sol, t->ns: the solution nearest in time if the box holds
- * it; else, where q already reaches the target, no step; else, away from
- * singularities, straight for that solution at the bound; near them the
- * damped step, unless it stalls or moves away from it; without a solution
- * the damped step. 1 when there is no closed form and q does not reach
- * the target (track_more follows). */
-static DH_NOINLINE int track_chase(dh_track_f32 *t, const dh_mat4_f32 *target)
+ * any) in t->sol, t->ns: the solution nearest in time (t->have: there is
+ * one within the limits) and the step box; 1 when the box holds it (t->dq
+ * the step to it, t->cf kept only then), else 0 (track_chase follows). */
+static DH_NOINLINE int track_nearest(dh_track_f32 *t)
 {
-    int have = 0, ok;
     t->unreach = 0;
+    t->have = 0;
     if (t->m != NULL) {
         const dh_status st = (t->ist != DH_OK) ? t->ist
                                                : dh_ikc_finish_f32_(t->m, t->q, DH_IKC_KEEP_OUT_OF_LIMITS, t->sol,
                                                                     &t->ns);
-        have = track_pick(t, st, &t->unreach);
+        t->have = track_pick(t, st, &t->unreach);
     }
-    if (have && track_reached(t)) return 0;
+    if (track_box(t)) return 1;
+    t->cf = 0;
+    return 0;
+}
+
+/* t->J and t->T at t->q (a step that took the closed-form solution as it
+ * is left them elsewhere: t->jq 0) */
+static DH_NOINLINE void track_at(dh_track_f32 *t)
+{
+    if (!t->jq) (void)dh_kin_jacobian_f32_(t->r, t->q, t->J, &t->T, t->ws);
+    t->jq = 1;
+}
+
+/* The step when the box does not hold the nearest solution (track_nearest
+ * 0; t->J and t->T at q): where q already reaches the target, no step;
+ * else, away from singularities, straight for that solution at the bound;
+ * near them the damped step, unless it stalls or moves away from it;
+ * without a solution the damped step. 1 when there is no closed form and
+ * q does not reach the target (track_more follows). */
+static DH_NOINLINE int track_chase(dh_track_f32 *t, const dh_mat4_f32 *target)
+{
+    const int have = t->have;
+    int ok;
     /* q already reaches the target (the pose error from t->T, FK at q):
      * it keeps its place (the zero step fitted into the box), never a run
      * for a solution outside the box that would lose the reached pose */
@@ -520,12 +644,123 @@ static DH_NOINLINE void track_more(dh_track_f32 *t, const dh_mat4_f32 *target)
     t->unreach = track_beyond(t, target);
 }
 
+/* The closed form's rotation residual bound (ikc.h: 2e-6 rad). */
+#define TRACK_CF_ROT 2e-6f
+
+/* the error bound of a dh_sincos_f32 value (6.2e-8) of an angle that float
+ * sums of total magnitude x degrees have rounded (2^-24 x each, 1.04e-9 x
+ * in radians), with room: 1.3e-7 + 5e-9 x */
+static float track_dtrig(float x)
+{
+    return 1.3e-7f + 5e-9f * x;
+}
+
+/* |v| less its error bound d, at least 0 */
+static float track_low(float v, float d)
+{
+    const float x = track_abs(v) - d;
+    return (x > 0.0f) ? x : 0.0f;
+}
+
+/* |det J| of the arm and wrist of the spherical-wrist families without
+ * joint 5's factor (docs/design.md, "Tracking": |a2 v g| for R-R-R, |h g|
+ * for R-R-P): its value into *w, a lower bound on the exact one returned */
+static DH_NOINLINE float track_det_wrist(const dh_track_f32 *t, float *w)
+{
+    const dh_ikc_model_f32 *m = t->m;
+    const float *a = m->a, t2 = t->q[1] + m->off[1], e = m->sa[2] * m->d[3];
+    const float ae = track_abs(a[2]) + track_abs(e), d2 = track_dtrig(track_abs(t2));
+    float s2, c2, s3, c3, h, dh, g, dg;
+    (void)dh_sincos_f32(t2, &s2, &c2);
+    if (m->kind == DH_IKC_WRIST_RRR) {
+        const float t3 = t->q[2] + m->off[2], d3 = track_dtrig(track_abs(t3));
+        (void)dh_sincos_f32(t3, &s3, &c3);
+        h = a[2] * s3 - e * c3;
+        dh = ae * (d3 + 2.4e-7f);
+        g = a[0] + c2 * (a[1] + a[2] * c3 + e * s3) - m->ca[1] * s2 * h;
+        dg = (track_abs(a[0]) + track_abs(a[1]) + 2.0f * ae) * (d2 + d3 + 6e-7f);
+        *w = track_abs(a[1] * h * g);
+        return track_abs(a[1]) * track_low(h, dh) * track_low(g, dg);
+    }
+    /* R-R-P: theta3 fixed, d3 = q3 + its offset */
+    (void)dh_sincos_f32(m->off[2], &s3, &c3);
+    h = t->q[2] + m->d[2] + m->d[3] * m->ca[2];
+    dh = 2.4e-7f * (track_abs(t->q[2]) + track_abs(m->d[2]) + track_abs(m->d[3]));
+    g = a[0] + c2 * (a[1] + a[2] * c3 + e * s3) + m->sa[1] * s2 * h;
+    dg = (track_abs(a[0]) + track_abs(a[1]) + ae + track_abs(h) + dh) *
+             (d2 + track_dtrig(track_abs(m->off[2])) + 6e-7f) + dh;
+    *w = track_abs(h * g);
+    return track_low(h, dh) * track_low(g, dg);
+}
+
+/* The same for axes 2, 3, 4 parallel: |a2 a3 s3 g| */
+static DH_NOINLINE float track_det_par(const dh_track_f32 *t, float *w)
+{
+    const dh_ikc_model_f32 *m = t->m;
+    const float *a = m->a, *q = t->q;
+    const float s2 = dh_ikc_sign_f32_(m->ca[1]), s23 = s2 * dh_ikc_sign_f32_(m->ca[2]);
+    const float t2 = q[1] + m->off[1], t3 = q[2] + m->off[2], t4 = q[3] + m->off[3];
+    float sn2, c2, s3, c3, s4, c4, x, y, g, dg;
+    (void)dh_sincos_f32(t2, &sn2, &c2);
+    (void)dh_sincos_f32(t3, &s3, &c3);
+    (void)dh_sincos_f32(t4, &s4, &c4);
+    /* cos, sin of theta2 + s2 theta3 (x, y), then of + s23 theta4 */
+    x = c2 * c3 - s2 * sn2 * s3;
+    y = sn2 * c3 + s2 * c2 * s3;
+    g = a[0] + a[1] * c2 + a[2] * x + a[3] * (x * c4 - s23 * y * s4) + s23 * m->sa[3] * m->d[4] * (y * c4 + s23 * x * s4);
+    /* each sine or cosine of a sum within twice its terms' bounds and
+     * 3e-7 of rounding; 4e-6: the twists the family takes as 0 or 90
+     * degrees within 1e-6 */
+    dg = (track_abs(a[0]) + track_abs(a[1]) + track_abs(a[2]) + track_abs(a[3]) + track_abs(m->d[4])) *
+         (2.0f * (track_dtrig(track_abs(t2)) + track_dtrig(track_abs(t3)) + track_dtrig(track_abs(t4))) + 4.3e-6f);
+    *w = track_abs(a[1] * a[2] * s3 * g);
+    return track_abs(a[1] * a[2]) * track_low(s3, track_dtrig(track_abs(t3))) * track_low(g, dg);
+}
+
+/* joint 5's factor |sin(alpha4) sin(alpha5) sin(theta5)|: its value times
+ * *w into *w, a lower bound on it times lb returned */
+static DH_NOINLINE float track_det_five(const dh_track_f32 *t, float lb, float *w)
+{
+    const dh_ikc_model_f32 *m = t->m;
+    const float t5 = t->q[4] + m->off[4], k = track_abs(m->sa[3] * m->sa[4]);
+    float s5, c5;
+    (void)dh_sincos_f32(t5, &s5, &c5);
+    *w *= k * track_abs(s5);
+    return lb * k * track_low(s5, track_dtrig(track_abs(t5)));
+}
+
+/* The report of a step that took the nearest closed-form solution as it
+ * is (t->cf, q_out == t->qs), without FK or Jacobian, when the closed
+ * form's residual bounds are within pos_tol and rot_tol and the Hong-Pan
+ * bound from |det J| (closed form per family) proves sigma_min at or
+ * above the threshold: 1 (rep written; t->J and t->T stay where they
+ * were, t->jq 0); else 0 (track_end follows). */
+static DH_NOINLINE int track_cheap(dh_track_f32 *t, dh_track_report_f32 *rep)
+{
+    float w = 0.0f, lb;
+    if (!t->cf || !(t->hpg > 0.0f) || !(t->pos_tol >= t->cfp) || !(t->rot_tol >= TRACK_CF_ROT)) return 0;
+    lb = (t->m->kind == DH_IKC_PARALLEL_234) ? track_det_par(t, &w) : track_det_wrist(t, &w);
+    /* 1e-5: the products' rounding and the model's copy of the table */
+    lb = track_det_five(t, lb, &w) * t->hpg * (1.0f - 1e-5f);
+    if (!(lb >= t->sing_threshold) || !dh_isfinite_f32(w)) return 0;
+    rep->state = DH_TRACK_OK;
+    rep->pos_err = t->cfp;
+    rep->rot_err = TRACK_CF_ROT;
+    rep->manip = w;
+    rep->sigma_min = lb;
+    rep->near_singular = 0;
+    rep->measured = 0;
+    t->jq = 0;
+    return 1;
+}
+
 /* The report at q_out (t->J, t->T recomputed there) */
 static DH_NOINLINE void track_end(dh_track_f32 *t, const dh_mat4_f32 *target, dh_status tst, dh_track_report_f32 *rep)
 {
     int fk = 0;
     rep->manip = 0.0f;
     rep->sigma_min = 0.0f;
+    t->jq = 1;
     if (dh_kin_jacobian_f32_(t->r, t->q, t->J, &t->T, t->ws) == DH_OK) {
         (void)dh_manipulability_ws_f32_(t->J, t->r->n, &rep->manip, &rep->sigma_min, t->ws);
         /* the target passed its checks (tst): T's alone */
@@ -546,18 +781,23 @@ dh_status dh_track_step_f32(dh_track_f32 *t, const dh_mat4_f32 *target, float *q
     DH_ASSERT(q_out != NULL);
     DH_ASSERT(rep != NULL);
     DH_ASSERT(t->r->n >= 1u && t->r->n <= (uint32_t)DH_MAX_JOINTS);
-    tst = track_target_ok(target);
-    track_box(t);
+    tst = track_check(t, target);
     t->unreach = 1;
     t->ns = 0u;
+    t->cf = 0;
     if (tst != DH_OK) {
+        t->have = 0;
+        (void)track_box(t);
         track_brake(t);
     } else {
-        if (t->m != NULL && track_ikc_args(t, target)) t->ns = dh_ikc_raw_f32_(t->m, target, t->q, t->sol);
-        if (track_chase(t, target)) track_more(t, target);
+        if (t->ist == DH_OK) t->ns = dh_ikc_raw_f32_(t->m, target, t->q, t->sol);
+        if (!track_nearest(t)) {
+            track_at(t);
+            if (track_chase(t, target)) track_more(t, target);
+        }
     }
     track_move(t);
-    track_end(t, target, tst, rep);
+    if (!track_cheap(t, rep)) track_end(t, target, tst, rep);
     for (i = 0u; i < t->r->n; i++) q_out[i] = t->q[i];
     return tst;
 }
@@ -577,6 +817,7 @@ dh_status dh_track_sync_f32(dh_track_f32 *t, const float *q)
     st = dh_robot_check_limits_f32(t->r, q);
     if (st != DH_OK) return st;
     for (i = 0u; i < t->r->n; i++) t->lo[i] = t->q[i];
+    t->jq = 1;
     if (dh_kin_jacobian_f32_(t->r, q, t->J, &t->T, t->ws) != DH_OK) {
         (void)dh_kin_jacobian_f32_(t->r, t->q, t->J, &t->T, t->ws);
         return DH_ERR_OVERFLOW;

@@ -124,6 +124,15 @@ static dh_track_state step_checked(rig *g, dh_track_f32 *t, chk *c, const dh_mat
         c->unr++;
     }
     DHT_TRUE(isfinite(rep.manip) && rep.sigma_min >= 0.0f);
+    /* not measured: OK by the closed form, its bounds within the
+     * tolerances (FK checked above all the same), sigma_min proved at or
+     * above the threshold */
+    if (!rep.measured)
+        DHT_TRUE_MSG(rep.state == DH_TRACK_OK && rep.pos_err == t->cfp && rep.rot_err == 2e-6f &&
+                         rep.pos_err <= t->pos_tol && rep.rot_err <= t->rot_tol && !rep.near_singular &&
+                         rep.sigma_min >= t->sing_threshold,
+                     "%s %s call %ld: unmeasured report state %d, %.3g / %.3g, sigma_min %.3g", g->d->name, what,
+                     c->calls, (int)rep.state, (double)rep.pos_err, (double)rep.rot_err, (double)rep.sigma_min);
     last_near_singular = rep.near_singular;
     c->calls++;
     return rep.state;
@@ -571,6 +580,167 @@ static void sync_continues(void)
     DHT_TRUE(memcmp(&t, &keep, sizeof t) == 0);
 }
 
+/* |det J| at q in double: the Jacobian of the double reference FK of the
+ * robot's stored parameters (dhs_fk_ref_f32), then LU with partial
+ * pivoting */
+static double det_true(rig *g, const float *q)
+{
+    static dhr_mat4 F[DH_MAX_JOINTS]; /* off the stack: a 16 KB target runs this suite */
+    dhr_mat4 T;
+    double qd[DH_MAX_JOINTS], A[36], det = 1.0;
+    int i, j, k;
+    for (i = 0; i < 6; i++) qd[i] = q[i];
+    dhs_fk_ref_f32(&g->r, qd, F, &T);
+    for (i = 0; i < 6; i++) {
+        /* joint i's axis: frame i - 1 (standard; the base for i = 0) or
+         * frame i (modified) */
+        const dhr_mat4 *B = (g->r.conv == DH_CONV_MODIFIED) ? &F[i] : (i == 0 ? NULL : &F[i - 1]);
+        double z[3], o[3];
+        for (k = 0; k < 3; k++) {
+            z[k] = B ? B->m[2][k] : (double)g->r.base.m[2][k];
+            o[k] = B ? B->m[3][k] : (double)g->r.base.m[3][k];
+        }
+        if (g->r.joint[i].type == DH_JOINT_REVOLUTE) {
+            const double r0 = T.m[3][0] - o[0], r1 = T.m[3][1] - o[1], r2 = T.m[3][2] - o[2];
+            A[0 * 6 + i] = z[1] * r2 - z[2] * r1;
+            A[1 * 6 + i] = z[2] * r0 - z[0] * r2;
+            A[2 * 6 + i] = z[0] * r1 - z[1] * r0;
+            for (k = 0; k < 3; k++) A[(3 + k) * 6 + i] = z[k];
+        } else {
+            for (k = 0; k < 3; k++) {
+                A[k * 6 + i] = z[k];
+                A[(3 + k) * 6 + i] = 0.0;
+            }
+        }
+    }
+    for (k = 0; k < 6; k++) {
+        int p = k;
+        for (i = k + 1; i < 6; i++)
+            if (fabs(A[i * 6 + k]) > fabs(A[p * 6 + k])) p = i;
+        if (p != k)
+            for (j = 0; j < 6; j++) {
+                const double x = A[k * 6 + j];
+                A[k * 6 + j] = A[p * 6 + j];
+                A[p * 6 + j] = x;
+            }
+        det *= A[k * 6 + k];
+        if (A[k * 6 + k] == 0.0) return 0.0;
+        for (i = k + 1; i < 6; i++) {
+            const double f = A[i * 6 + k] / A[k * 6 + k];
+            for (j = k; j < 6; j++) A[i * 6 + j] -= f * A[k * 6 + j];
+        }
+    }
+    return fabs(det);
+}
+
+/* The singularity measures of a step that reaches the target by the closed
+ * form, on random configurations of every closed-form family and near
+ * their singularities (joint 5's sine, UR joint 3's sine, down to 0):
+ * - sing_threshold 0: the report holds the family's closed form of
+ *   |det J| (measured 0) for every closed-form step: against |det J|
+ *   of the Jacobian in double, and sigma_min below the true smallest
+ *   singular value;
+ * - the default threshold: not measured only where the bound proves
+ *   sigma_min at or above it (so never where the true one is below);
+ *   measured, the report's measures are dh_manipulability_f32's at q_out
+ *   and near_singular its flag;
+ * - pos_tol below the closed form's residual bound: the errors measured. */
+static void closed_form_measures(void)
+{
+    static const dhs_robot *const fam[] = { &dhs_puma560_m, &dhs_ur5_m,     &dhs_kuka_kr5_m, &dhs_stanford_m,
+                                            &dhs_ur3_m,     &dhs_ur10_m,    &dhs_abb_irb140_m, &dhs_puma560_mm,
+                                            &dhs_ur5_mm,    &dhs_stanford_mm };
+    size_t ri;
+    for (ri = 0; ri < sizeof fam / sizeof fam[0]; ri++) {
+        rig g;
+        long k, n = DHT_ITER(400), cheap[2] = { 0, 0 }, total[2] = { 0, 0 };
+        double worst = 0.0;
+        char probe[64];
+        rig_make(&g, fam[ri], INFINITY);
+        DHT_TRUE(g.closed);
+        for (k = 0; k < n; k++) {
+            float q[DH_MAX_JOINTS], qo[DH_MAX_JOINTS], J[36], w, sg;
+            dh_mat4_f32 T;
+            dh_track_f32 t;
+            dh_track_report_f32 rep;
+            const int kind = (int)(k % 3);
+            int tiny;
+            random_q(&g, q);
+            if (kind != 0) { /* near a singularity: 10^-6 .. 10 deg */
+                const double dlt = pow(10.0, dht_rand_uniform(-6.0, 1.0)) * ((dht_rand_u32() & 1u) ? 1 : -1);
+                const uint32_t jn = (kind == 2 && g.m.kind == DH_IKC_PARALLEL_234) ? 2u : 4u;
+                q[jn] = (float)(-g.r.joint[jn].theta_deg + dlt);
+                if (g.r.joint[jn].qmin <= g.r.joint[jn].qmax &&
+                    (q[jn] < g.r.joint[jn].qmin || q[jn] > g.r.joint[jn].qmax))
+                    continue;
+            }
+            target_of(&g, q, &T);
+            for (tiny = 0; tiny < 2; tiny++) {
+                DHT_EQ_INT(dh_track_init_f32(&t, &g.r, &g.m, q, DT), DH_OK);
+                if (tiny) t.sing_threshold = 0.0f;
+                DHT_EQ_INT(dh_track_step_f32(&t, &T, qo, &rep), DH_OK);
+                if (rep.state != DH_TRACK_OK) continue;
+                total[tiny]++;
+                DHT_EQ_INT(dh_jacobian_f32(&g.r, qo, J, NULL), DH_OK);
+                DHT_EQ_INT(dh_manipulability_f32(J, 6u, &w, &sg), DH_OK);
+                if (rep.measured) {
+                    DHT_TRUE(rep.manip == w && rep.sigma_min == sg && rep.near_singular == (sg < t.sing_threshold));
+                    DHT_TRUE_MSG(tiny || sigma_true(&g, qo) >= t.sing_threshold || rep.near_singular ||
+                                     sg >= t.sing_threshold,
+                                 "%s: measured flag", g.d->name);
+                } else {
+                    const double dt = det_true(&g, qo), st = sigma_true(&g, qo);
+                    const double L3 = pow(t.reach, 3.0);
+                    /* relative, and near a singularity absolute: the
+                     * cancellation of a factor's terms in float, 1e-7 L^3 */
+                    const double err = fabs((double)rep.manip - dt) / (dt + 1e-3 * L3);
+                    cheap[tiny]++;
+                    worst = fmax(worst, err);
+                    DHT_TRUE_MSG(err <= 1e-4, "%s q %s: |det J| %.9g by the closed form, %.9g in double",
+                                 g.d->name, dhs_qf_str(qo, 6u, 0), (double)rep.manip, dt);
+                    DHT_TRUE_MSG((double)rep.sigma_min <= st + 1e-6 * t.reach,
+                                 "%s q %s: sigma_min bound %.9g above the true %.9g", g.d->name,
+                                 dhs_qf_str(qo, 6u, 0), (double)rep.sigma_min, st);
+                    DHT_TRUE(rep.sigma_min >= t.sing_threshold && !rep.near_singular);
+                    if (!tiny) DHT_TRUE(st >= t.sing_threshold);
+                }
+            }
+        }
+        /* every family's closed form is exercised */
+        DHT_TRUE_MSG(total[1] > 0 && 2 * cheap[1] >= total[1], "%s: %ld of %ld by the closed form of det J",
+                     g.d->name, cheap[1], total[1]);
+        snprintf(probe, sizeof probe, "detj.%s", g.d->name);
+        dht_reach_max(probe, worst);
+        printf("%s: %ld / %ld OK steps by the closed form of det J (default threshold), %ld / %ld (threshold "
+               "0), worst relative error %.3g\n",
+               g.d->name, cheap[0], total[0], cheap[1], total[1], worst);
+    }
+    /* pos_tol below the closed form's bound: the errors are measured */
+    {
+        rig g;
+        dh_track_f32 t;
+        dh_track_report_f32 rep;
+        float q0[6] = { 10, -60, 70, 20, 40, 30 }, q[6];
+        dh_mat4_f32 T;
+        double ep, er;
+        rig_make(&g, &dhs_ur5_m, INFINITY);
+        target_of(&g, q0, &T);
+        DHT_EQ_INT(dh_track_init_f32(&t, &g.r, &g.m, q0, DT), DH_OK);
+        DHT_EQ_INT(dh_track_step_f32(&t, &T, q, &rep), DH_OK);
+        DHT_TRUE(rep.state == DH_TRACK_OK && !rep.measured);
+        DHT_EQ_INT(dh_track_init_f32(&t, &g.r, &g.m, q0, DT), DH_OK);
+        t.pos_tol = 0.5f * t.cfp;
+        DHT_EQ_INT(dh_track_step_f32(&t, &T, q, &rep), DH_OK);
+        DHT_TRUE(rep.measured);
+        dhs_true_error_f32(&g.r, q, &T, &ep, &er);
+        DHT_TRUE(rep.state != DH_TRACK_OK || (ep <= t.pos_tol + 3e-7 && er <= t.rot_tol + 1e-6));
+        DHT_EQ_INT(dh_track_init_f32(&t, &g.r, &g.m, q0, DT), DH_OK);
+        t.rot_tol = 1e-6f;
+        DHT_EQ_INT(dh_track_step_f32(&t, &T, q, &rep), DH_OK);
+        DHT_TRUE(rep.measured);
+    }
+}
+
 static const dht_case cases[] = {
     DHT_CASE(bad_targets_brake),
     DHT_CASE(smooth_paths_every_call_ok),
@@ -578,6 +748,7 @@ static const dht_case cases[] = {
     DHT_CASE(leaving_the_workspace),
     DHT_CASE(target_jumps),
     DHT_CASE(sync_continues),
+    DHT_CASE(closed_form_measures),
 };
 
 DHT_MAIN(cases)
