@@ -1428,10 +1428,12 @@ dh_status dh_move_joint_step_q(dh_move_q *mv, uint32_t dt, int32_t *q, dh_move_r
  *        clock holds until the tracker is OK there.
  * @param mv output move (kind DH_MOVE_PATH, clock 0, dur the profile's T;
  *        p copied).
- * @param p path from dh_path_line_q or dh_path_arc_q.
+ * @param p path from dh_path_line_q or dh_path_arc_q; may be &mv->path
+ *        (a path built in place saves its copy's RAM).
  * @param lim Cartesian limits, each > 0.
  * @return DH_OK; DH_ERR_ARG for a limit <= 0 or a p that holds no path;
- *         DH_ERR_OVERFLOW as dh_path_move_q. On error mv holds no move.
+ *         DH_ERR_OVERFLOW as dh_path_move_q. On error mv holds no move
+ *         (its path as it was).
  */
 dh_status dh_move_path_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_limits_q *lim);
 

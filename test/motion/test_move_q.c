@@ -530,6 +530,10 @@ static void move_q_errors(void)
     DHT_TRUE(rep.held == 1 && rep.done == 0 && rep.clock == 0u && rep.feed == 0);
     DHT_EQ_INT(dh_move_advance_q(mv, DT_US, DH_TRACK_OK, &rep), DH_OK);
     DHT_TRUE(rep.held == 0 && rep.feed == DH_Q30_ONE);
+    /* a path built in place (p == &mv->path) */
+    DHT_EQ_INT(dh_path_line_q(&mv->path, &A, &B), DH_OK);
+    DHT_EQ_INT(dh_move_path_q(mv, &mv->path, &LIM), DH_OK);
+    DHT_TRUE(mv->dur > 0u && memcmp(&mv->path, &p, sizeof p) == 0);
     /* a corrupted copy of the path is no move */
     mv->path.qa.w = 0;
     mv->path.qa.x = 0;
