@@ -1227,6 +1227,8 @@ typedef struct {
     dh_frame_q B;      /**< end frame (s = 1) */
     dh_quat_q qa;      /**< unit quaternion of R_A (Q2.30) */
     dh_quat_q qb;      /**< unit quaternion of R_B, of the sign with qa . qb >= 0 */
+    dh_q30 k[3];       /**< unit axis of qa* qb (Q2.30; 0 without rotation) */
+    dh_q16 h;          /**< half the angle of qa* qb, Q16.16 degrees in [0, 90] */
     dh_qpos u0[3];     /**< arc: p_A - centre (0 for a line) */
     dh_qpos w0[3];     /**< arc: u0 turned a quarter turn along the motion (0 for a line) */
     dh_qpos u1[3];     /**< arc: p_B - centre (0 for a line) */
@@ -1282,7 +1284,8 @@ dh_status dh_path_arc_q(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3],
  * @brief Fixed twin of dh_path_eval_f32: T = the frame of the path p at s:
  *        position at the fraction s of the line or the sweep of the arc,
  *        rotation at the fraction s of p->angle along the shortest arc
- *        (dh_slerp_q of the path's quaternions, as dh_pose_interp_q).
+ *        (the slerp of dh_pose_interp_q: qa (cos s h, sin s h k) about
+ *        the path's fixed axis k, from qb for s > 1/2).
  * @param p path from dh_path_line_q or dh_path_arc_q.
  * @param s path parameter, Q2.30, any int32: clamped to [0, 0x40000000];
  *        s <= 0 gives T == p->A and s >= 0x40000000 gives T == p->B

@@ -6,8 +6,10 @@
  * 64-bit division (32x32->64 products, bit-serial quotients).
  *
  * Orientation: the slerp of the unit quaternions of R_A and R_B along the
- * shorter arc (dh_motion_slerp_q_, as dh_pose_interp_q), kept in the path
- * so that an evaluation converts no rotation and checks nothing.
+ * shorter arc (as dh_pose_interp_q), qa (cos s h, sin s h k) with the axis
+ * k and half angle h of qa* qb found once, when the path is made: an
+ * evaluation is one dh_sincos_q, one quaternion product and the unit
+ * quaternion's matrix (no normalisation, no atan2), from qb for s > 1/2.
  * Line: p_A + round(s (p_B - p_A) / 2^30) from the nearer end
  * (dh_motion_lerp_q_): within 0.5 LSB of the exact line.
  *
@@ -155,6 +157,32 @@ int dh_motion_path_ok_q_(const dh_path_q *p)
     return pathq_ok(p);
 }
 
+/* The axis k and half angle h of r = qa* qb (qa . qb >= 0): r's vector
+ * part exact in 64 bits, k its integer normalisation, h = atan2(|v|, w)
+ * of the parts rounded to Q2.30 (dh_atan2_q, in [0, 90] degrees) */
+static DH_NOINLINE void pathq_axis(dh_path_q *p)
+{
+    const dh_quat_q *a = &p->qa, *b = &p->qb;
+    int64_t v[3];
+    int32_t vq[3], w;
+    uint32_t n;
+    unsigned i;
+    w = (int32_t)dh_q_rshr(dh_q_mul64(a->w, b->w) + dh_q_mul64(a->x, b->x) + dh_q_mul64(a->y, b->y) +
+                           dh_q_mul64(a->z, b->z), 30u);
+    v[0] = dh_q_mul64(a->w, b->x) - dh_q_mul64(b->w, a->x) - dh_q_mul64(a->y, b->z) + dh_q_mul64(a->z, b->y);
+    v[1] = dh_q_mul64(a->w, b->y) - dh_q_mul64(b->w, a->y) - dh_q_mul64(a->z, b->x) + dh_q_mul64(a->x, b->z);
+    v[2] = dh_q_mul64(a->w, b->z) - dh_q_mul64(b->w, a->z) - dh_q_mul64(a->x, b->y) + dh_q_mul64(a->y, b->x);
+    for (i = 0; i < 3u; i++) {
+        p->k[i] = 0;
+        vq[i] = (int32_t)dh_q_rshr(v[i], 30u);
+    }
+    p->h = 0;
+    n = dh_q_isqrt62((uint64_t)dh_q_mul64(vq[0], vq[0]) + (uint64_t)dh_q_mul64(vq[1], vq[1]) +
+                     (uint64_t)dh_q_mul64(vq[2], vq[2]));
+    if (n == 0u || !pathq_unit(v, p->k)) return;   /* no rotation to 2^-30 */
+    (void)dh_atan2_q((int32_t)n, (w < 0) ? 0 : w, &p->h);
+}
+
 /* p's ends, their unit quaternions on the shorter arc, angle and kind
  * (frames accepted by dh_rot_ok_q_: the conversions cannot fail; the
  * slerp at 0 returns its first argument normalised) */
@@ -166,6 +194,7 @@ static DH_NOINLINE void pathq_finish(dh_path_q *p, const dh_frame_q *A, const dh
     (void)dh_slerp_q(&p->qa, &p->qa, 0, &p->qa);
     (void)dh_slerp_q(&p->qb, &p->qb, 0, &p->qb);
     dh_motion_shorter_q_(&p->qa, &p->qb);
+    pathq_axis(p);
     p->A = *A;
     p->B = *B;
     p->angle = deg;
@@ -373,9 +402,41 @@ static DH_NOINLINE void pathq_arc_point(const dh_path_q *p, dh_q30 s, dh_qpos po
         pos[k] = (dh_qpos)((int64_t)E->p[k] + dh_q_rshr(cm * u[k] + dh_q_mul64(sn, w[k]), 30u));
 }
 
+/* T's rotation at 0 < s < 2^30: e (cos f h, +-sin f h k) from the nearer
+ * end e (qa, or qb backwards with f = 1 - s), the quaternion product
+ * rounded once per component and turned into a matrix by the unit
+ * quaternion's formula (both factors unit within a few LSB, so no
+ * normalisation: the entries move by a few 2^-30) */
+static DH_NOINLINE void pathq_rot(const dh_path_q *p, dh_q30 s, dh_frame_q *T)
+{
+    const int back = s > (DH_Q30_ONE / 2);
+    const dh_quat_q *e = back ? &p->qb : &p->qa;
+    const int32_t f = back ? DH_Q30_ONE - s : s;
+    const int64_t one = (int64_t)1 << 60;
+    int32_t sn, cs, r0, r1, r2, w, x, y, z;
+    dh_sincos_q((dh_q16)dh_q_rshr(dh_q_mul64(f, p->h), 30u), &sn, &cs);
+    if (back) sn = -sn;
+    r0 = (int32_t)dh_q_rshr(dh_q_mul64(sn, p->k[0]), 30u);
+    r1 = (int32_t)dh_q_rshr(dh_q_mul64(sn, p->k[1]), 30u);
+    r2 = (int32_t)dh_q_rshr(dh_q_mul64(sn, p->k[2]), 30u);
+    w = (int32_t)dh_q_rshr(dh_q_mul64(e->w, cs) - dh_q_mul64(e->x, r0) - dh_q_mul64(e->y, r1) - dh_q_mul64(e->z, r2), 30u);
+    x = (int32_t)dh_q_rshr(dh_q_mul64(e->w, r0) + dh_q_mul64(e->x, cs) + dh_q_mul64(e->y, r2) - dh_q_mul64(e->z, r1), 30u);
+    y = (int32_t)dh_q_rshr(dh_q_mul64(e->w, r1) - dh_q_mul64(e->x, r2) + dh_q_mul64(e->y, cs) + dh_q_mul64(e->z, r0), 30u);
+    z = (int32_t)dh_q_rshr(dh_q_mul64(e->w, r2) + dh_q_mul64(e->x, r1) - dh_q_mul64(e->y, r0) + dh_q_mul64(e->z, cs), 30u);
+    /* r[col][row] */
+    T->r[0][0] = (dh_q30)dh_q_rshr(one - 2 * (dh_q_mul64(y, y) + dh_q_mul64(z, z)), 30u);
+    T->r[1][1] = (dh_q30)dh_q_rshr(one - 2 * (dh_q_mul64(x, x) + dh_q_mul64(z, z)), 30u);
+    T->r[2][2] = (dh_q30)dh_q_rshr(one - 2 * (dh_q_mul64(x, x) + dh_q_mul64(y, y)), 30u);
+    T->r[1][0] = (dh_q30)dh_q_rshr(dh_q_mul64(x, y) - dh_q_mul64(w, z), 29u);
+    T->r[0][1] = (dh_q30)dh_q_rshr(dh_q_mul64(x, y) + dh_q_mul64(w, z), 29u);
+    T->r[2][0] = (dh_q30)dh_q_rshr(dh_q_mul64(x, z) + dh_q_mul64(w, y), 29u);
+    T->r[0][2] = (dh_q30)dh_q_rshr(dh_q_mul64(x, z) - dh_q_mul64(w, y), 29u);
+    T->r[2][1] = (dh_q30)dh_q_rshr(dh_q_mul64(y, z) - dh_q_mul64(w, x), 29u);
+    T->r[1][2] = (dh_q30)dh_q_rshr(dh_q_mul64(y, z) + dh_q_mul64(w, x), 29u);
+}
+
 dh_status dh_path_eval_q(const dh_path_q *p, dh_q30 s, dh_frame_q *T)
 {
-    dh_quat_q q;
     dh_qpos pos[3];
     unsigned i;
     DH_ASSERT(p != NULL && T != NULL);
@@ -389,8 +450,7 @@ dh_status dh_path_eval_q(const dh_path_q *p, dh_q30 s, dh_frame_q *T)
     } else {
         for (i = 0; i < 3u; i++) pos[i] = dh_motion_lerp_q_(p->A.p[i], p->B.p[i], s);
     }
-    dh_motion_slerp_q_(&p->qa, &p->qb, s, &q);
-    (void)dh_quat_to_frame_q(&q, T);   /* unit q: cannot fail; writes p = 0 */
+    pathq_rot(p, s, T);
     for (i = 0; i < 3u; i++) T->p[i] = pos[i];
     return DH_OK;
 }
