@@ -1252,7 +1252,7 @@ typedef struct {
  *        <= DH_ROT_TOL_Q, det > 0); equal positions are fine (length 0).
  * @return DH_OK; DH_ERR_NOT_RIGID if A or B is not a rotation as above;
  *         DH_ERR_OVERFLOW when a component of p_B - p_A or the length
- *         does not fit int32. p untouched on error.
+ *         does not fit int32. p untouched on error; p must not alias A or B.
  */
 dh_status dh_path_line_q(dh_path_q *p, const dh_frame_q *A, const dh_frame_q *B);
 
@@ -1274,7 +1274,7 @@ dh_status dh_path_line_q(dh_path_q *p, const dh_frame_q *A, const dh_frame_q *B)
  *         DH_ERR_OVERFLOW when a side, the radius, the length or the
  *         circle is beyond the range above; DH_ERR_SINGULAR for
  *         collinear or coincident points (the thin triangle above). p
- *         untouched on error.
+ *         untouched on error; p must not alias A, B or via.
  * The evaluated points lie within 4 LSB + 2^-26 R of the circle through
  * the three points (docs/design.md, "Fixed-point paths and moves").
  */

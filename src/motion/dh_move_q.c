@@ -36,13 +36,15 @@
 /* the longest control period (us) */
 #define MOVEQ_DT_MAX 1000000u
 
-/* 1 when mv holds a move of the given kind with a consistent clock and override */
+/* 1 when mv holds a move of the given kind with a consistent clock and
+ * override (a path move's path is checked where it is read: by
+ * dh_path_eval_q in dh_move_target_q, once per period) */
 static int moveq_holds(const dh_move_q *mv, uint32_t kind)
 {
     if (mv->kind != kind) return 0;
     if (mv->dur > (uint32_t)INT32_MAX || mv->clock > mv->dur || mv->cfrac >= (uint32_t)DH_Q30_ONE) return 0;
     if (mv->feed < 0 || mv->feed > DH_Q30_ONE || mv->fcap < 0 || mv->fcap > DH_Q30_ONE) return 0;
-    if (kind == (uint32_t)DH_MOVE_PATH) return mv->e <= 30u && dh_motion_path_ok_q_(&mv->path);
+    if (kind == (uint32_t)DH_MOVE_PATH) return mv->e <= 30u;
     return mv->n >= 1u && mv->n <= (uint32_t)DH_MAX_JOINTS;
 }
 

@@ -151,12 +151,6 @@ static int pathq_ok(const dh_path_q *p)
     return na > lo && na < hi && nb > lo && nb < hi;
 }
 
-/* motion_impl.h */
-int dh_motion_path_ok_q_(const dh_path_q *p)
-{
-    return pathq_ok(p);
-}
-
 /* The axis k and half angle h of r = qa* qb (qa . qb >= 0): r's vector
  * part exact in 64 bits, k its integer normalisation, h = atan2(|v|, w)
  * of the parts rounded to Q2.30 (dh_atan2_q, in [0, 90] degrees) */
@@ -340,6 +334,13 @@ static DH_NOINLINE dh_status pathq_circle(dh_path_q *p, const dh_frame_q *A, con
     X = (uint64_t)R * sw;
     X = ((X >> 31) * PATHQ_DEG2RAD31 + ((((X & 0x7FFFFFFFu) * PATHQ_DEG2RAD31) >> 31)) + ((uint64_t)1 << 22)) >> 23;
     if (X > (uint64_t)INT32_MAX) return DH_ERR_OVERFLOW;
+    /* the whole circle within int32: centre +- R, with room for rounding */
+    for (k = 0; k < 3u; k++) {
+        const int64_t c = (int64_t)A->p[k] -
+                          dh_q_rshr(-dh_q_mul64(xyl[2], e1[k]) - 2 * dh_q_mul64(yc, e2[k]), 31u + f);
+        if (c + R + 64 > INT32_MAX || c - R - 64 < INT32_MIN) return DH_ERR_OVERFLOW;
+    }
+    /* p written from here on only */
     for (k = 0; k < 3u; k++) {
         const int64_t he = dh_q_mul64(xyl[2], e1[k]), ye = 2 * dh_q_mul64(yc, e2[k]);
         const int64_t hf = dh_q_mul64(xyl[2], e2[k]), yf = 2 * dh_q_mul64(yc, e1[k]);
@@ -348,11 +349,6 @@ static DH_NOINLINE dh_status pathq_circle(dh_path_q *p, const dh_frame_q *A, con
         p->w0[k] = (dh_qpos)dh_q_rshr(hf - yf, 31u + f);
         p->w1[k] = (dh_qpos)dh_q_rshr(-hf - yf, 31u + f);
     }
-    /* the whole circle within int32: centre +- R, with room for rounding */
-    for (k = 0; k < 3u; k++) {
-        const int64_t c = (int64_t)A->p[k] - p->u0[k];
-        if (c + R + 64 > INT32_MAX || c - R - 64 < INT32_MIN) return DH_ERR_OVERFLOW;
-    }
     p->radius = (dh_qpos)R;
     p->sw = sw;
     p->sweep = (dh_q16)((sw + 64u) >> 7);
@@ -360,20 +356,19 @@ static DH_NOINLINE dh_status pathq_circle(dh_path_q *p, const dh_frame_q *A, con
     return DH_OK;
 }
 
+/* pathq_circle writes p only on success, and then with pathq_finish every
+ * field: no copy of the path on the stack */
 dh_status dh_path_arc_q(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3], const dh_frame_q *B)
 {
-    dh_path_q w;
     dh_q16 deg = 0;
     dh_status st;
     DH_ASSERT(p != NULL && A != NULL && via != NULL && B != NULL);
     st = pathq_check(A, B);
     if (st != DH_OK) return st;
-    memset(&w, 0, sizeof w);
-    st = pathq_circle(&w, A, via, B);
+    st = pathq_circle(p, A, via, B);
     if (st != DH_OK) return st;
     (void)dh_pose_angle_q(A, B, &deg);
-    pathq_finish(&w, A, B, deg, DH_PATH_ARC);
-    *p = w;
+    pathq_finish(p, A, B, deg, DH_PATH_ARC);
     return DH_OK;
 }
 

@@ -61,11 +61,4 @@ int32_t dh_motion_lerp_q_(int32_t pa, int32_t pb, dh_q30 s);
  * move (dh_joint_move_q.c, in its output) call it. */
 dh_status dh_motion_profile_q_(dh_profile_q *p);
 
-/* ---- fixed point (dh_path_q.c) ---- */
-
-/* 1 when p holds a path (a kind, unit quaternions within a factor 2), 0
- * when not (e.g. all zero): the test of dh_path_eval_q's DH_ERR_ARG; the
- * executor (dh_move_q.c) checks its copy with it */
-int dh_motion_path_ok_q_(const dh_path_q *p);
-
 #endif /* DHMATH_SRC_MOTION_IMPL_H */
