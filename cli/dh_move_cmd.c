@@ -300,10 +300,11 @@ static int move_plan_segments(const move_args *a, move_plan *p)
 
 /* ---- periods ---------------------------------------------------------------- */
 
-static int move_line(move_plan *p, const float *q, int state)
+/* a period's line up to its joint values: the cap on the periods, the
+ * count of periods not ok, the time */
+static int move_line_start(move_plan *p, int state)
 {
     char text[64];
-    unsigned j;
     if (p->periods >= MOVE_MAX_PERIODS) {
         fprintf(stderr, "dhmath: error: move: more than %.0f control periods; use a larger --dt\n", MOVE_MAX_PERIODS);
         return EXIT_ERR;
@@ -311,7 +312,14 @@ static int move_line(move_plan *p, const float *q, int state)
     p->periods += 1.0;
     if (state != DH_TRACK_OK) p->bad += 1.0;
     (void)snprintf(text, sizeof text, "%.9g", p->periods * p->dt);
-    if (cli_out_add(&p->out, text)) return EXIT_ERR;
+    return cli_out_add(&p->out, text);
+}
+
+static int move_line(move_plan *p, const float *q, int state)
+{
+    char text[64];
+    unsigned j;
+    if (move_line_start(p, state)) return EXIT_ERR;
     for (j = 0; j < p->r.n; j++) {
         (void)snprintf(text, sizeof text, ",%.9g", q[j] == 0.0f ? 0.0 : (double)q[j]);
         if (cli_out_add(&p->out, text)) return EXIT_ERR;
@@ -422,14 +430,7 @@ static int move_line_q(move_plan *p, const int32_t *q, int state)
     const double one = (double)((int32_t)1 << DH_QPOS_FRAC);
     char text[64];
     unsigned j;
-    if (p->periods >= MOVE_MAX_PERIODS) {
-        fprintf(stderr, "dhmath: error: move: more than %.0f control periods; use a larger --dt\n", MOVE_MAX_PERIODS);
-        return EXIT_ERR;
-    }
-    p->periods += 1.0;
-    if (state != DH_TRACK_OK) p->bad += 1.0;
-    (void)snprintf(text, sizeof text, "%.9g", p->periods * p->dt);
-    if (cli_out_add(&p->out, text)) return EXIT_ERR;
+    if (move_line_start(p, state)) return EXIT_ERR;
     for (j = 0; j < p->r.n; j++) {
         const double v = q[j] / ((p->r.joint[j].type == DH_JOINT_REVOLUTE) ? 65536.0 : one);
         (void)snprintf(text, sizeof text, ",%.9g", v == 0.0 ? 0.0 : v);

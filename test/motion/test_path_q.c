@@ -58,22 +58,17 @@ static void rot_set(dh_frame_q *F, const double *q)
         for (j = 0; j < 3; j++) F->r[j][i] = (dh_q30)llround(R[i][j] * Q30);
 }
 
-/* q turned by deg about a random axis */
+/* q turned by deg about a uniformly random axis (polar angle from a
+ * uniform cosine, azimuth uniform): b = a r */
 static void rot_turn(const double *a, double deg, double *b)
 {
-    double r[4], n;
-    do {
-        r[1] = dht_rand_uniform(-1.0, 1.0);
-        r[2] = dht_rand_uniform(-1.0, 1.0);
-        r[3] = dht_rand_uniform(-1.0, 1.0);
-        n = sqrt(r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
-    } while (n < 0.05 || n > 1.0);
-    r[0] = cos(deg * PI_D / 360.0);
-    n = sin(deg * PI_D / 360.0) / n;
-    b[0] = a[0] * r[0] - a[1] * r[1] * n - a[2] * r[2] * n - a[3] * r[3] * n;
-    b[1] = a[0] * r[1] * n + a[1] * r[0] + a[2] * r[3] * n - a[3] * r[2] * n;
-    b[2] = a[0] * r[2] * n - a[1] * r[3] * n + a[2] * r[0] + a[3] * r[1] * n;
-    b[3] = a[0] * r[3] * n + a[1] * r[2] * n - a[2] * r[1] * n + a[3] * r[0];
+    const double ct = dht_rand_uniform(-1.0, 1.0), ph = dht_rand_uniform(-PI_D, PI_D);
+    const double h = deg * PI_D / 360.0, st = sqrt(1.0 - ct * ct) * sin(h);
+    const double r[4] = { cos(h), st * cos(ph), st * sin(ph), ct * sin(h) };
+    b[0] = a[0] * r[0] - a[1] * r[1] - a[2] * r[2] - a[3] * r[3];
+    b[1] = a[0] * r[1] + a[1] * r[0] + a[2] * r[3] - a[3] * r[2];
+    b[2] = a[0] * r[2] - a[1] * r[3] + a[2] * r[0] + a[3] * r[1];
+    b[3] = a[0] * r[3] + a[1] * r[2] - a[2] * r[1] + a[3] * r[0];
 }
 
 /* rotation angle (rad) between the Q2.30 rotations of F and G */
