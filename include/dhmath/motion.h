@@ -1273,8 +1273,9 @@ dh_status dh_path_line_q(dh_path_q *p, const dh_frame_q *A, const dh_frame_q *B)
  * @return DH_OK; DH_ERR_NOT_RIGID if A or B is not a rotation;
  *         DH_ERR_OVERFLOW when a side, the radius, the length or the
  *         circle is beyond the range above; DH_ERR_SINGULAR for
- *         collinear or coincident points (the thin triangle above). p
- *         untouched on error; p must not alias A, B or via.
+ *         collinear or coincident points (the thin triangle above). On
+ *         error *p is all zero (it holds no path: its fields are the
+ *         planning's scratch); p must not alias A, B or via.
  * The evaluated points lie within 4 LSB + 2^-26 R of the circle through
  * the three points (docs/design.md, "Fixed-point paths and moves").
  */

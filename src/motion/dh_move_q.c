@@ -82,21 +82,36 @@ static void moveq_tick(dh_move_q *mv, dh_q30 r, uint32_t dt)
     }
 }
 
+/* The joint move is planned here as dh_joint_move_q plans it (each
+ * joint's time-optimal profile in place, dh_motion_profile_q_, then every
+ * profile stretched to the longest), on limits lowered by 2^-10: one
+ * call level less than through dh_joint_move_q (the 256 B guard). */
 dh_status dh_move_joint_q(dh_move_q *mv, uint32_t n, const int32_t *q0, const int32_t *q1, const int32_t *vmax,
                           const int32_t *amax, const int32_t *jmax)
 {
-    int32_t v[DH_MAX_JOINTS], a[DH_MAX_JOINTS];
-    uint32_t i;
-    dh_status st;
+    uint32_t i, T = 0u;
+    dh_status st = DH_OK;
     DH_ASSERT(mv != NULL && q0 != NULL && q1 != NULL && vmax != NULL && amax != NULL);
     mv->kind = (uint32_t)DH_MOVE_NONE;
     if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
-    /* the limits lowered by 2^-10 (<= 0 stays so: dh_joint_move_q reports it) */
-    for (i = 0u; i < n; i++) {
-        v[i] = (vmax[i] > 0) ? vmax[i] - (vmax[i] >> 10) : vmax[i];
-        a[i] = (amax[i] > 0) ? amax[i] - (amax[i] >> 10) : amax[i];
+    for (i = 0u; i < n && st == DH_OK; i++) {
+        dh_profile_q *const pr = &mv->prof[i];
+        const int64_t d = (int64_t)q1[i] - q0[i];
+        const int32_t j = (jmax != NULL) ? jmax[i] : 1;
+        if (d > INT32_MAX || d < INT32_MIN) {
+            st = DH_ERR_OVERFLOW;
+        } else if (vmax[i] <= 0 || amax[i] <= 0 || j <= 0) {
+            st = DH_ERR_ARG;
+        } else {
+            pr->d = (int32_t)d;
+            pr->v = vmax[i] - (vmax[i] >> 10);
+            pr->a = amax[i] - (amax[i] >> 10);
+            pr->j = (jmax != NULL) ? j : 0;
+            st = dh_motion_profile_q_(pr);
+            if (st == DH_OK && pr->T > T) T = pr->T;
+        }
     }
-    st = dh_joint_move_q(mv->prof, n, q0, q1, v, a, jmax);
+    for (i = 0u; i < n && st == DH_OK; i++) st = dh_profile_stretch_q(&mv->prof[i], T);
     if (st != DH_OK) return st;
     for (i = 0u; i < n; i++) {
         const int32_t x = q0[i], y = q1[i];
@@ -105,23 +120,27 @@ dh_status dh_move_joint_q(dh_move_q *mv, uint32_t n, const int32_t *q0, const in
     }
     mv->n = n;
     mv->e = 0u;
-    moveq_start(mv, mv->prof[0].T);
+    moveq_start(mv, T);
     mv->kind = (uint32_t)DH_MOVE_JOINT;
     return DH_OK;
 }
 
+/* each joint on its own (n = 1): no velocity and acceleration arrays on
+ * the stack */
 dh_status dh_move_joint_step_q(dh_move_q *mv, uint32_t dt, int32_t *q, dh_move_report_q *rep)
 {
-    int32_t qd[DH_MAX_JOINTS], qdd[DH_MAX_JOINTS];
+    int32_t qd, qdd;
     uint64_t c;
+    uint32_t i;
     dh_status st;
     DH_ASSERT(mv != NULL && q != NULL && rep != NULL);
     st = moveq_period_ok(mv, (uint32_t)DH_MOVE_JOINT, dt);
-    if (st != DH_OK) return st;
+    for (i = 0u; i < mv->n && st == DH_OK; i++) st = dh_profile_eval_q(&mv->prof[i], 0u, &qd, &qd, &qdd);
+    if (st != DH_OK) return DH_ERR_ARG;
     c = (uint64_t)mv->clock + dt;
     if (c > mv->dur) c = mv->dur;
-    st = dh_joint_move_eval_q(mv->prof, mv->n, mv->q0, mv->q1, (uint32_t)c, q, qd, qdd);
-    if (st != DH_OK) return st;
+    for (i = 0u; i < mv->n; i++)
+        (void)dh_joint_move_eval_q(&mv->prof[i], 1u, &mv->q0[i], &mv->q1[i], (uint32_t)c, &q[i], &qd, &qdd);
     mv->clock = (uint32_t)c;
     rep->clock = mv->clock;
     rep->feed = DH_Q30_ONE;
@@ -178,47 +197,59 @@ static uint64_t moveq_r2(int64_t x, dh_q30 r)
     return (xr * (uint32_t)r + 0x3FFFFFFFu) >> 30;
 }
 
-/* The largest rise (*up) and fall (*dn) of r this period that keep the
- * commanded acceleration of s within the profile's peak (file comment);
- * 2^30 (no bound) where s' is 0 */
-static DH_NOINLINE void moveq_feed_bounds(const dh_move_q *mv, uint32_t dt, dh_q30 *up, dh_q30 *dn)
+/* s'' near the clock: its largest (ps[0]) and smallest (ps[1]) value at
+ * the ends of the last and the next period and at the clock (the
+ * profile's first and last phases, clamped to 0 by the evaluation, taken
+ * at +-A), and s' at the clock (ps[2]). Called from dh_move_advance_q
+ * itself, so the profile's evaluations are one level below it (the 256 B
+ * guard). */
+static DH_NOINLINE void moveq_feed_sample(const dh_move_q *mv, uint32_t dt, int32_t ps[3])
 {
     const dh_profile_q *pr = &mv->prof[0];
-    const int64_t A = pr->a, r = mv->feed;
-    const uint64_t back = ((uint64_t)(uint32_t)r * dt) >> 30;
+    const uint64_t back = ((uint64_t)(uint32_t)mv->feed * dt) >> 30;
     const uint32_t tb = (back < mv->clock) ? mv->clock - (uint32_t)back : 0u;
     const uint64_t tf = (uint64_t)mv->clock + dt;
     int32_t s, sd, a0;
-    int64_t hi, lo;
+    (void)dh_profile_eval_q(pr, tb, &s, &sd, &a0);
+    ps[0] = (tb > 0u) ? a0 : pr->a;
+    ps[1] = a0;
+    (void)dh_profile_eval_q(pr, (tf < mv->dur) ? (uint32_t)tf : mv->dur, &s, &sd, &a0);
+    if (tf >= mv->dur) a0 = -pr->a;
+    if (a0 > ps[0]) ps[0] = a0;
+    if (a0 < ps[1]) ps[1] = a0;
+    (void)dh_profile_eval_q(pr, mv->clock, &s, &sd, &a0);
+    if (a0 > ps[0]) ps[0] = a0;
+    if (a0 < ps[1]) ps[1] = a0;
+    ps[2] = sd;
+}
+
+/* ceil(sd 10^6 / dt): k = s' / dt in LSB/s^2, bit-serial (below 2^51) */
+static uint64_t moveq_k(int32_t sd, uint32_t dt)
+{
+    uint64_t nn = (uint64_t)sd * MOVEQ_DT_MAX, k = 0u;   /* < 2^51 */
+    uint32_t bit;
+    for (bit = 52u; bit-- > 0u;) {
+        if ((nn >> bit) >= dt) {
+            nn -= (uint64_t)dt << bit;
+            k |= (uint64_t)1 << bit;
+        }
+    }
+    return (nn != 0u) ? k + 1u : k;
+}
+
+/* The largest rise (*up) and fall (*dn) of r this period that keep the
+ * commanded acceleration of s within the profile's peak (file comment),
+ * from the sample ps of moveq_feed_sample; 2^30 (no bound) where s' is 0 */
+static DH_NOINLINE void moveq_feed_bounds(const dh_move_q *mv, uint32_t dt, const int32_t ps[3], dh_q30 *up,
+                                          dh_q30 *dn)
+{
+    const int64_t A = mv->prof[0].a, r = mv->feed;
+    const int64_t hi = (ps[0] > 0) ? ps[0] : 0, lo = ps[1];
     uint64_t k, num, den;
     *up = DH_Q30_ONE;
     *dn = DH_Q30_ONE;
-    (void)dh_profile_eval_q(pr, tb, &s, &sd, &a0);
-    hi = (tb > 0u) ? a0 : A;
-    lo = a0;
-    (void)dh_profile_eval_q(pr, (tf < mv->dur) ? (uint32_t)tf : mv->dur, &s, &sd, &a0);
-    if (tf >= mv->dur) a0 = -(int32_t)A;
-    if (a0 > hi) hi = a0;
-    if (a0 < lo) lo = a0;
-    (void)dh_profile_eval_q(pr, mv->clock, &s, &sd, &a0);
-    if (a0 > hi) hi = a0;
-    if (a0 < lo) lo = a0;
-    if (sd <= 0) return;
-    /* k = s' / dt (LSB/s^2), rounded up */
-    k = 0u;
-    {
-        uint64_t nn = (uint64_t)sd * MOVEQ_DT_MAX;   /* < 2^51 */
-        uint32_t bit;
-        /* ceil(nn / dt), bit-serial (quotient below 2^51) */
-        for (bit = 52u; bit-- > 0u;) {
-            if ((nn >> bit) >= dt) {
-                nn -= (uint64_t)dt << bit;
-                k |= (uint64_t)1 << bit;
-            }
-        }
-        if (nn != 0u) k++;
-    }
-    if (hi < 0) hi = 0;
+    if (ps[2] <= 0) return;
+    k = moveq_k(ps[2], dt);
     num = moveq_r2(hi, (dh_q30)r);
     /* (A - p r^2) / (k + 2 p r + p), the denominator rounded up */
     den = k + ((((uint64_t)hi * (uint32_t)r) >> 29) + 1u) + (uint64_t)hi;
@@ -228,16 +259,12 @@ static DH_NOINLINE void moveq_feed_bounds(const dh_move_q *mv, uint32_t dt, dh_q
 }
 
 /* r after a period whose tracker state was OK (ok 1) or not, and the
- * ceiling's update (dh_move.c's method) */
-static DH_NOINLINE dh_q30 moveq_feed_next(dh_move_q *mv, uint32_t dt, int ok)
+ * ceiling's update (dh_move.c's method), with the sample ps */
+static DH_NOINLINE dh_q30 moveq_feed_next(dh_move_q *mv, uint32_t dt, int ok, const int32_t ps[3])
 {
     const dh_q30 r = mv->feed;
     dh_q30 up, dn, goal, c = mv->fcap;
-    if (ok != 0 && r >= DH_Q30_ONE && c >= DH_Q30_ONE) {
-        mv->lag = 0u;
-        return DH_Q30_ONE;
-    }
-    moveq_feed_bounds(mv, dt, &up, &dn);
+    moveq_feed_bounds(mv, dt, ps, &up, &dn);
     if (ok != 0) {
         if (r >= c) {
             const uint64_t inc = ((((uint64_t)(uint32_t)c * dt) >> 10) * MOVEQ_CREEP) >> 22;
@@ -266,8 +293,13 @@ dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh
     ok = state == DH_TRACK_OK;
     if (ok != 0 && mv->clock >= mv->dur) {
         done = 1;
+    } else if (ok != 0 && mv->feed >= DH_Q30_ONE && mv->fcap >= DH_Q30_ONE) {
+        mv->lag = 0u;   /* at full feed and ceiling: r stays 1, no bound needed */
+        moveq_tick(mv, DH_Q30_ONE, dt);
     } else {
-        mv->feed = moveq_feed_next(mv, dt, ok);
+        int32_t ps[3];
+        moveq_feed_sample(mv, dt, ps);
+        mv->feed = moveq_feed_next(mv, dt, ok, ps);
         moveq_tick(mv, mv->feed, dt);
     }
     rep->clock = mv->clock;

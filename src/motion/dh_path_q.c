@@ -102,38 +102,40 @@ static uint32_t pathq_isqrt64(uint64_t v)
     return dh_q_isqrt62(v >> 2) << 1;
 }
 
-/* v normalised to a unit vector in Q2.30: the components shifted (exact to
- * the left, rounded to the right: below 2^-30 of the largest) so that the
- * largest lies in [2^29, 2^30), the norm an integer square root of the
- * exact sum of squares, each component round(c 2^30 / norm). 0 when v is 0. */
-static DH_NOINLINE int pathq_unit(const int64_t v[3], dh_q30 u[3])
+/* v (len 3 or 4 components, not all 0) normalised to a unit vector in
+ * Q2.30 in u, v overwritten by the magnitudes: the components shifted
+ * (exact to the left, rounded to the right: below 2^-30 of the largest) so
+ * that the largest lies in [2^29, 2^30), the norm an integer square root
+ * of the exact sum of squares, each component round(c 2^30 / norm). 0 when
+ * v is 0 (in place: the callers' frames stay small, the 256 B guard). */
+static DH_NOINLINE int pathq_unit(int64_t *v, unsigned len, dh_q30 *u)
 {
-    uint64_t mx = 0u, m[3], s = 0u;
+    uint64_t mx = 0u, s = 0u;
     uint32_t nrm;
     unsigned k, sh = 0u;
-    for (k = 0; k < 3u; k++) {
-        m[k] = (v[k] < 0) ? 0u - (uint64_t)v[k] : (uint64_t)v[k];
-        if (m[k] > mx) mx = m[k];
+    for (k = 0; k < len; k++) {
+        u[k] = (v[k] < 0) ? -1 : 1;
+        v[k] = (v[k] < 0) ? (int64_t)(0u - (uint64_t)v[k]) : v[k];
+        if ((uint64_t)v[k] > mx) mx = (uint64_t)v[k];
     }
     if (mx == 0u) return 0;
     while ((mx >> sh) >= 0x40000000u) sh++;
-    for (k = 0; k < 3u; k++) {
-        if (sh != 0u) m[k] = (m[k] + ((uint64_t)1 << (sh - 1u))) >> sh;
-        if (m[k] > 0x3FFFFFFFu) m[k] = 0x3FFFFFFFu;
+    mx = 0u;
+    for (k = 0; k < len; k++) {
+        uint64_t m = (uint64_t)v[k];
+        if (sh != 0u) m = (m + ((uint64_t)1 << (sh - 1u))) >> sh;
+        if (m > 0x3FFFFFFFu) m = 0x3FFFFFFFu;
+        v[k] = (int64_t)m;
+        if (m > mx) mx = m;
     }
-    mx = m[0];
-    for (k = 1; k < 3u; k++)
-        if (m[k] > mx) mx = m[k];
-    while (mx < 0x20000000u) {
-        mx <<= 1;
-        for (k = 0; k < 3u; k++) m[k] <<= 1;
+    for (sh = 0u; (mx << sh) < 0x20000000u; sh++) {
     }
-    for (k = 0; k < 3u; k++) s += m[k] * m[k];
+    for (k = 0; k < len; k++) {
+        v[k] <<= sh;
+        s += (uint64_t)v[k] * (uint64_t)v[k];
+    }
     nrm = dh_q_isqrt62(s);
-    for (k = 0; k < 3u; k++) {
-        const int32_t c = (int32_t)dh_q_udiv((uint32_t)m[k], nrm, 30u);
-        u[k] = (v[k] < 0) ? -c : c;
-    }
+    for (k = 0; k < len; k++) u[k] *= (int32_t)dh_q_udiv((uint32_t)v[k], nrm, 30u);
     return 1;
 }
 
@@ -173,20 +175,35 @@ static DH_NOINLINE void pathq_axis(dh_path_q *p)
     p->h = 0;
     n = dh_q_isqrt62((uint64_t)dh_q_mul64(vq[0], vq[0]) + (uint64_t)dh_q_mul64(vq[1], vq[1]) +
                      (uint64_t)dh_q_mul64(vq[2], vq[2]));
-    if (n == 0u || !pathq_unit(v, p->k)) return;   /* no rotation to 2^-30 */
+    if (n == 0u || !pathq_unit(v, 3u, p->k)) return;   /* no rotation to 2^-30 */
     (void)dh_atan2_q((int32_t)n, (w < 0) ? 0 : w, &p->h);
 }
 
-/* p's ends, their unit quaternions on the shorter arc, angle and kind
- * (frames accepted by dh_rot_ok_q_: the conversions cannot fail; the
- * slerp at 0 returns its first argument normalised) */
+/* *q = the unit quaternion of F's rotation (an accepted frame: the
+ * conversion cannot fail), normalised by pathq_unit */
+static DH_NOINLINE void pathq_quat(const dh_frame_q *F, dh_quat_q *q)
+{
+    int64_t v[4];
+    dh_q30 u[4];
+    (void)dh_frame_to_quat_q(F, q);
+    v[0] = q->w;
+    v[1] = q->x;
+    v[2] = q->y;
+    v[3] = q->z;
+    if (!pathq_unit(v, 4u, u)) return;
+    q->w = u[0];
+    q->x = u[1];
+    q->y = u[2];
+    q->z = u[3];
+}
+
+/* p's ends, their unit quaternions on the shorter arc, the axis and half
+ * angle between them, angle and kind */
 static DH_NOINLINE void pathq_finish(dh_path_q *p, const dh_frame_q *A, const dh_frame_q *B, dh_q16 deg,
                                      dh_path_kind k)
 {
-    (void)dh_frame_to_quat_q(A, &p->qa);
-    (void)dh_frame_to_quat_q(B, &p->qb);
-    (void)dh_slerp_q(&p->qa, &p->qa, 0, &p->qa);
-    (void)dh_slerp_q(&p->qb, &p->qb, 0, &p->qb);
+    pathq_quat(A, &p->qa);
+    pathq_quat(B, &p->qb);
     dh_motion_shorter_q_(&p->qa, &p->qb);
     pathq_axis(p);
     p->A = *A;
@@ -226,46 +243,60 @@ dh_status dh_path_line_q(dh_path_q *p, const dh_frame_q *A, const dh_frame_q *B)
     return DH_OK;
 }
 
-/* The plane of the arc: e1 = b / |b|, e2 = e1 x n (n the unit normal of
- * a x b) and *M2 the square of the longest side. DH_ERR_OVERFLOW for a
- * side of 2^30 LSB or more, DH_ERR_SINGULAR for coincident points. */
-static DH_NOINLINE dh_status pathq_plane(const int32_t a[3], const int32_t b[3], dh_q30 e1[3], dh_q30 e2[3],
-                                         uint64_t *M2)
+/* Planning an arc uses the output path as its scratch (no copy on the
+ * stack: the 256 B guard), all overwritten by the circle or zeroed on
+ * error: a = via - p_A in u0, b = p_B - p_A in u1, e1 in w0, e2 in w1,
+ * the plane's x, y, L in k, yc in h. */
+
+/* the squares of |b| (*lb) and of the longest side (returned), from a, b */
+static uint64_t pathq_sides(const dh_path_q *p, uint64_t *lb)
 {
-    int64_t v[3];
-    dh_q30 n[3];
-    uint64_t la = 0u, lb = 0u, lc = 0u;
+    uint64_t la = 0u, lc = 0u;
     unsigned k;
+    *lb = 0u;
     for (k = 0; k < 3u; k++) {
-        const int64_t c = (int64_t)b[k] - a[k];
-        if (c >= PATHQ_LIM || c <= -PATHQ_LIM) return DH_ERR_OVERFLOW;
-        la += (uint64_t)dh_q_mul64(a[k], a[k]);
-        lb += (uint64_t)dh_q_mul64(b[k], b[k]);
+        const int64_t c = (int64_t)p->u1[k] - p->u0[k];
+        la += (uint64_t)dh_q_mul64(p->u0[k], p->u0[k]);
+        *lb += (uint64_t)dh_q_mul64(p->u1[k], p->u1[k]);
         lc += (uint64_t)(c * c);
     }
-    *M2 = (la > lb) ? ((la > lc) ? la : lc) : ((lb > lc) ? lb : lc);
-    if (*M2 >= (uint64_t)1 << 60) return DH_ERR_OVERFLOW;   /* the longest side below 2^30 */
+    return (la > *lb) ? ((la > lc) ? la : lc) : ((*lb > lc) ? *lb : lc);
+}
+
+/* The plane of the arc: e1 = b / |b|, e2 = e1 x n (n the unit normal of
+ * a x b, exact in 64 bits). DH_ERR_OVERFLOW for a side of 2^30 LSB or
+ * more, DH_ERR_SINGULAR for collinear or coincident points. */
+static DH_NOINLINE dh_status pathq_plane(dh_path_q *p)
+{
+    const int32_t *a = p->u0, *b = p->u1;
+    int64_t v[3];
+    dh_q30 n[3];
+    uint64_t lb;
+    unsigned k;
+    if (pathq_sides(p, &lb) >= (uint64_t)1 << 60) return DH_ERR_OVERFLOW;   /* the longest side below 2^30 */
     v[0] = dh_q_mul64(a[1], b[2]) - dh_q_mul64(a[2], b[1]);
     v[1] = dh_q_mul64(a[2], b[0]) - dh_q_mul64(a[0], b[2]);
     v[2] = dh_q_mul64(a[0], b[1]) - dh_q_mul64(a[1], b[0]);
-    if (!pathq_unit(v, n)) return DH_ERR_SINGULAR;
+    if (!pathq_unit(v, 3u, n)) return DH_ERR_SINGULAR;
     for (k = 0; k < 3u; k++) v[k] = b[k];
-    if (!pathq_unit(v, e1)) return DH_ERR_SINGULAR;
-    e2[0] = (dh_q30)dh_q_rshr(dh_q_mul64(e1[1], n[2]) - dh_q_mul64(e1[2], n[1]), 30u);
-    e2[1] = (dh_q30)dh_q_rshr(dh_q_mul64(e1[2], n[0]) - dh_q_mul64(e1[0], n[2]), 30u);
-    e2[2] = (dh_q30)dh_q_rshr(dh_q_mul64(e1[0], n[1]) - dh_q_mul64(e1[1], n[0]), 30u);
+    if (!pathq_unit(v, 3u, p->w0)) return DH_ERR_SINGULAR;
+    p->w1[0] = (dh_q30)dh_q_rshr(dh_q_mul64(p->w0[1], n[2]) - dh_q_mul64(p->w0[2], n[1]), 30u);
+    p->w1[1] = (dh_q30)dh_q_rshr(dh_q_mul64(p->w0[2], n[0]) - dh_q_mul64(p->w0[0], n[2]), 30u);
+    p->w1[2] = (dh_q30)dh_q_rshr(dh_q_mul64(p->w0[0], n[1]) - dh_q_mul64(p->w0[1], n[0]), 30u);
     return DH_OK;
 }
 
 /* The triangle in the plane at the scale 2^f (f fraction bits below the
- * LSB): xyl = x = a . e1, y = a . e2, L = |b|, and *yc the centre's
- * coordinate. DH_ERR_SINGULAR for a thin triangle; 1 in *big when |yc|
- * reaches 2^30 at this scale (nothing else is then meaningful). */
-static DH_NOINLINE dh_status pathq_scaled_tri(const int32_t a[3], const dh_q30 e1[3], const dh_q30 e2[3],
-                                              uint64_t lb, uint64_t M2, unsigned f, int32_t xyl[3], int32_t *yc,
-                                              int *big)
+ * LSB): x = a . e1, y = a . e2, L = |b| into k, yc into h. DH_ERR_SINGULAR
+ * for a thin triangle; 1 in *big when |yc| reaches 2^30 at this scale. */
+static DH_NOINLINE dh_status pathq_tri(dh_path_q *p, unsigned f, int *big)
 {
+    const int32_t *a = p->u0;
+    const dh_q30 *e1 = p->w0, *e2 = p->w1;
+    int32_t *xyl = p->k;
     const unsigned sh = 30u - f;
+    uint64_t lb;
+    const uint64_t M2 = pathq_sides(p, &lb);
     int64_t num;
     *big = 0;
     xyl[0] = (int32_t)dh_q_rshr(dh_q_mul64(a[0], e1[0]) + dh_q_mul64(a[1], e1[1]) + dh_q_mul64(a[2], e1[2]), sh);
@@ -279,51 +310,33 @@ static DH_NOINLINE dh_status pathq_scaled_tri(const int32_t a[3], const dh_q30 e
         *big = 1;
         return DH_OK;
     }
-    *yc = pathq_sdiv64(num, (uint64_t)xyl[1] * 2u);
+    p->h = pathq_sdiv64(num, (uint64_t)xyl[1] * 2u);
     return DH_OK;
 }
 
-/* The circle of the arc from p_A through via to p_B into p (written only
- * on success): u0, w0, u1, w1, radius, sweep and length. The plane's
- * coordinates are taken at the finest scale 2^-f LSB at which the longest
- * side and yc stay below 2^30 (f <= 29), so that their rounding does not
- * grow with the conditioning of the circle (a via point near an end). */
-static DH_NOINLINE dh_status pathq_circle(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3],
-                                          const dh_frame_q *B)
+/* The circle at the scale 2^f from the plane (e1, e2) and L, yc: radius,
+ * sweep, length and u0, w0, u1, w1 into p (from the plane's scratch) */
+static DH_NOINLINE dh_status pathq_circle(dh_path_q *p, const dh_frame_q *A, unsigned f)
 {
-    int32_t a[3], b[3], xyl[3], sn, cs, yc = 0, d;
-    dh_q30 e1[3], e2[3];
+    dh_q30 e[6];   /* e1, e2 */
+    const int32_t L = p->k[2], yc = p->h;
+    int32_t sn, cs, d;
     int64_t hx;
     uint32_t R, Rf, sw;
-    uint64_t X, M2 = 0u, lb = 0u;
-    unsigned k, f = 0u;
+    uint64_t X;
     dh_q16 h = 0;
-    dh_status st;
-    int big = 1;
+    unsigned k;
     for (k = 0; k < 3u; k++) {
-        const int64_t da = (int64_t)via[k] - A->p[k], db = (int64_t)B->p[k] - A->p[k];
-        if (da >= PATHQ_LIM || da <= -PATHQ_LIM || db >= PATHQ_LIM || db <= -PATHQ_LIM) return DH_ERR_OVERFLOW;
-        a[k] = (int32_t)da;
-        b[k] = (int32_t)db;
-        lb += (uint64_t)(db * db);
+        e[k] = p->w0[k];
+        e[k + 3u] = p->w1[k];
     }
-    st = pathq_plane(a, b, e1, e2, &M2);
-    if (st != DH_OK) return st;
-    while (f < 29u && (M2 << (2u * f + 2u)) < ((uint64_t)1 << 60)) f++;
-    for (;;) {
-        st = pathq_scaled_tri(a, e1, e2, lb, M2, f, xyl, &yc, &big);
-        if (st != DH_OK) return st;
-        if (big == 0) break;
-        if (f == 0u) return DH_ERR_OVERFLOW;   /* the radius reaches 2^30 LSB */
-        f--;
-    }
-    Rf = dh_q_isqrt62(((uint64_t)dh_q_mul64(xyl[2], xyl[2]) + 4u * (uint64_t)dh_q_mul64(yc, yc)) >> 2);
+    Rf = dh_q_isqrt62(((uint64_t)dh_q_mul64(L, L) + 4u * (uint64_t)dh_q_mul64(yc, yc)) >> 2);
     R = (uint32_t)(((uint64_t)Rf + ((uint64_t)1 << f >> 1)) >> f);
     if (R >= (uint32_t)PATHQ_LIM || R == 0u) return DH_ERR_OVERFLOW;
     /* half sweep: atan2(L, -2 yc), one Newton step to 2^-23 degrees */
-    (void)dh_atan2_q(xyl[2], -2 * yc, &h);
+    (void)dh_atan2_q(L, -2 * yc, &h);
     dh_sincos_q(h, &sn, &cs);
-    hx = dh_q_mul64(xyl[2], cs) + 2 * dh_q_mul64(yc, sn);   /* 2 R delta 2^30 (delta in rad) */
+    hx = dh_q_mul64(L, cs) + 2 * dh_q_mul64(yc, sn);   /* 2 R delta 2^30 (delta in rad) */
     if (hx > ((int64_t)1 << 41)) hx = (int64_t)1 << 41;
     if (hx < -((int64_t)1 << 41)) hx = -((int64_t)1 << 41);
     d = pathq_sdiv64(hx * PATHQ_RAD2DEG7, ((uint64_t)Rf * 2u) << 20);   /* delta, 2^-23 deg */
@@ -336,14 +349,12 @@ static DH_NOINLINE dh_status pathq_circle(dh_path_q *p, const dh_frame_q *A, con
     if (X > (uint64_t)INT32_MAX) return DH_ERR_OVERFLOW;
     /* the whole circle within int32: centre +- R, with room for rounding */
     for (k = 0; k < 3u; k++) {
-        const int64_t c = (int64_t)A->p[k] -
-                          dh_q_rshr(-dh_q_mul64(xyl[2], e1[k]) - 2 * dh_q_mul64(yc, e2[k]), 31u + f);
+        const int64_t c = (int64_t)A->p[k] - dh_q_rshr(-dh_q_mul64(L, e[k]) - 2 * dh_q_mul64(yc, e[k + 3u]), 31u + f);
         if (c + R + 64 > INT32_MAX || c - R - 64 < INT32_MIN) return DH_ERR_OVERFLOW;
     }
-    /* p written from here on only */
     for (k = 0; k < 3u; k++) {
-        const int64_t he = dh_q_mul64(xyl[2], e1[k]), ye = 2 * dh_q_mul64(yc, e2[k]);
-        const int64_t hf = dh_q_mul64(xyl[2], e2[k]), yf = 2 * dh_q_mul64(yc, e1[k]);
+        const int64_t he = dh_q_mul64(L, e[k]), ye = 2 * dh_q_mul64(yc, e[k + 3u]);
+        const int64_t hf = dh_q_mul64(L, e[k + 3u]), yf = 2 * dh_q_mul64(yc, e[k]);
         p->u0[k] = (dh_qpos)dh_q_rshr(-he - ye, 31u + f);
         p->u1[k] = (dh_qpos)dh_q_rshr(he - ye, 31u + f);
         p->w0[k] = (dh_qpos)dh_q_rshr(hf - yf, 31u + f);
@@ -356,17 +367,55 @@ static DH_NOINLINE dh_status pathq_circle(dh_path_q *p, const dh_frame_q *A, con
     return DH_OK;
 }
 
-/* pathq_circle writes p only on success, and then with pathq_finish every
- * field: no copy of the path on the stack */
+/* The arc's circle (pathq_plane, pathq_tri, pathq_circle) into p, on the
+ * scratch of its fields. The plane's coordinates are taken at the finest
+ * scale 2^-f LSB at which the longest side and yc stay below 2^30
+ * (f <= 29), so that their rounding does not grow with the conditioning
+ * of the circle (a via point near an end). */
+static DH_NOINLINE dh_status pathq_arc_plan(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3],
+                                            const dh_frame_q *B)
+{
+    uint64_t lb, M2;
+    unsigned k, f = 0u;
+    dh_status st;
+    int big = 1;
+    for (k = 0; k < 3u; k++) {
+        const int64_t da = (int64_t)via[k] - A->p[k], db = (int64_t)B->p[k] - A->p[k];
+        if (da >= PATHQ_LIM || da <= -PATHQ_LIM || db >= PATHQ_LIM || db <= -PATHQ_LIM) return DH_ERR_OVERFLOW;
+        p->u0[k] = (int32_t)da;
+        p->u1[k] = (int32_t)db;
+    }
+    st = pathq_plane(p);
+    if (st != DH_OK) return st;
+    M2 = pathq_sides(p, &lb);
+    while (f < 29u && (M2 << (2u * f + 2u)) < ((uint64_t)1 << 60)) f++;
+    for (;;) {
+        st = pathq_tri(p, f, &big);
+        if (st != DH_OK) return st;
+        if (big == 0) break;
+        if (f == 0u) return DH_ERR_OVERFLOW;   /* the radius reaches 2^30 LSB */
+        f--;
+    }
+    return pathq_circle(p, A, f);
+}
+
+/* on error p holds no path (all zero): its fields were the planning's scratch */
 dh_status dh_path_arc_q(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3], const dh_frame_q *B)
 {
     dh_q16 deg = 0;
     dh_status st;
     DH_ASSERT(p != NULL && A != NULL && via != NULL && B != NULL);
+    memset(p, 0, sizeof *p);
     st = pathq_check(A, B);
-    if (st != DH_OK) return st;
-    st = pathq_circle(p, A, via, B);
-    if (st != DH_OK) return st;
+    if (st == DH_OK) st = pathq_arc_plan(p, A, via, B);
+    if (st != DH_OK) {
+        memset(p, 0, sizeof *p);
+        return st;
+    }
+    p->k[0] = 0;
+    p->k[1] = 0;
+    p->k[2] = 0;
+    p->h = 0;
     (void)dh_pose_angle_q(A, B, &deg);
     pathq_finish(p, A, B, deg, DH_PATH_ARC);
     return DH_OK;
@@ -500,16 +549,24 @@ static uint32_t pathq_scaled(const pathq_rate *b, unsigned e)
     return pathq_udiv64(b->num << e, b->den);
 }
 
-/* the trapezoid of s along p within lim (file comment) */
-static DH_NOINLINE dh_status pathq_move(dh_profile_q *prof, uint32_t *e, const dh_path_q *p, const dh_cart_limits_q *lim)
+/* The rates of s along p within lim into prof's d = 2^e, v and a (j = 0:
+ * the trapezoid) and *e (file comment), for dh_motion_profile_q_ to plan
+ * in place: the planner one call level below dh_path_move_q (the 256 B
+ * guard) */
+static DH_NOINLINE dh_status pathq_rates(dh_profile_q *prof, uint32_t *e, const dh_path_q *p,
+                                         const dh_cart_limits_q *lim)
 {
     pathq_rate bv = { 0u, 0u }, ba = { 0u, 0u };
-    uint32_t V, At, sv, sa;
+    uint32_t V, At;
     int k;
     if (lim->vmax <= 0 || lim->amax <= 0 || lim->wmax <= 0 || lim->wdmax <= 0) return DH_ERR_ARG;
     if (!pathq_ok(p)) return DH_ERR_ARG;
     *e = 30u;
-    if (p->length <= 0 && p->angle <= 0) return dh_profile_trap_q(prof, 0, 1, 1);
+    prof->d = 0;
+    prof->v = 1;
+    prof->a = 1;
+    prof->j = 0;
+    if (p->length <= 0 && p->angle <= 0) return DH_OK;
     V = (uint32_t)lim->vmax;
     At = (uint32_t)lim->amax;
     if (p->kind == (uint32_t)DH_PATH_ARC) pathq_arc_rates((uint32_t)p->radius, lim, &V, &At);
@@ -526,18 +583,20 @@ static DH_NOINLINE dh_status pathq_move(dh_profile_q *prof, uint32_t *e, const d
         if ((bv.num << k) < (uint64_t)INT32_MAX * bv.den && (ba.num << k) < (uint64_t)INT32_MAX * ba.den) break;
     }
     if (k < 0) return DH_ERR_OVERFLOW;
-    sv = pathq_scaled(&bv, (unsigned)k);
-    sa = pathq_scaled(&ba, (unsigned)k);
-    if (sv == 0u || sa == 0u) return DH_ERR_OVERFLOW;
+    prof->v = (int32_t)pathq_scaled(&bv, (unsigned)k);
+    prof->a = (int32_t)pathq_scaled(&ba, (unsigned)k);
+    if (prof->v == 0 || prof->a == 0) return DH_ERR_OVERFLOW;
+    prof->d = (int32_t)1 << k;
     *e = (uint32_t)k;
-    return dh_profile_trap_q(prof, (int32_t)1 << k, (int32_t)sv, (int32_t)sa);
+    return DH_OK;
 }
 
 dh_status dh_path_move_q(dh_profile_q *prof, uint32_t *e, const dh_path_q *p, const dh_cart_limits_q *lim)
 {
     dh_status st;
     DH_ASSERT(prof != NULL && e != NULL && p != NULL && lim != NULL);
-    st = pathq_move(prof, e, p, lim);
+    st = pathq_rates(prof, e, p, lim);
+    if (st == DH_OK) st = dh_motion_profile_q_(prof);
     if (st != DH_OK) {
         memset(prof, 0, sizeof *prof);
         *e = 30u;

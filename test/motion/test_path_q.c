@@ -457,16 +457,22 @@ static void paths_q_errors(void)
     p = keep;
     DHT_EQ_INT(dh_path_line_q(&p, &bad, &B), DH_ERR_NOT_RIGID);
     DHT_EQ_INT(dh_path_line_q(&p, &A, &bad), DH_ERR_NOT_RIGID);
+    DHT_TRUE(memcmp(&p, &keep, sizeof p) == 0);
     for (k = 0; k < 3; k++) via[k] = (A.p[k] / 2) + (B.p[k] / 2);   /* on the chord: collinear */
     DHT_EQ_INT(dh_path_arc_q(&p, &A, via, &B), DH_ERR_SINGULAR);
     DHT_EQ_INT(dh_path_arc_q(&p, &A, A.p, &B), DH_ERR_SINGULAR);
+    DHT_EQ_INT(dh_path_arc_q(&p, &bad, via, &B), DH_ERR_NOT_RIGID);
+    p = keep;
     bad = B;
     bad.p[0] = INT32_MAX;
     A.p[0] = INT32_MIN;
     DHT_EQ_INT(dh_path_line_q(&p, &A, &bad), DH_ERR_OVERFLOW);
+    DHT_TRUE(memcmp(&p, &keep, sizeof p) == 0);   /* a line: untouched */
     via[1] += 1 << 20;
     DHT_EQ_INT(dh_path_arc_q(&p, &A, via, &bad), DH_ERR_OVERFLOW);
+    memset(&keep, 0, sizeof keep);   /* an arc: all zero, no path */
     DHT_TRUE(memcmp(&p, &keep, sizeof p) == 0);
+    DHT_EQ_INT(dh_path_eval_q(&p, 5, &B), DH_ERR_ARG);
     /* a path that holds none */
     memset(&p, 0, sizeof p);
     DHT_EQ_INT(dh_path_eval_q(&p, 5, &A), DH_ERR_ARG);
