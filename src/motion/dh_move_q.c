@@ -82,65 +82,80 @@ static void moveq_tick(dh_move_q *mv, dh_q30 r, uint32_t dt)
     }
 }
 
+/* mv->prof[i] = joint i's distance q1 - q0 (its stored q0, q1) and its
+ * limits vmax and amax lowered by 2^-10, jmax as given (NULL: 0, the
+ * trapezoid), checked in the order of dh_joint_move_q: DH_ERR_OVERFLOW
+ * for a distance beyond int32, DH_ERR_ARG for a limit <= 0 */
+static DH_NOINLINE dh_status moveq_joint_fill(dh_move_q *mv, const int32_t *vmax, const int32_t *amax,
+                                              const int32_t *jmax)
+{
+    uint32_t i;
+    for (i = 0u; i < mv->n; i++) {
+        dh_profile_q *const pr = &mv->prof[i];
+        const int64_t d = (int64_t)mv->q1[i] - mv->q0[i];
+        if (d > INT32_MAX || d < INT32_MIN) return DH_ERR_OVERFLOW;
+        if (vmax[i] <= 0 || amax[i] <= 0 || (jmax != NULL && jmax[i] <= 0)) return DH_ERR_ARG;
+        pr->d = (int32_t)d;
+        pr->v = vmax[i] - (vmax[i] >> 10);
+        pr->a = amax[i] - (amax[i] >> 10);
+        pr->j = (jmax != NULL) ? jmax[i] : 0;
+    }
+    return DH_OK;
+}
+
 /* The joint move is planned here as dh_joint_move_q plans it (each
  * joint's time-optimal profile in place, dh_motion_profile_q_, then every
- * profile stretched to the longest), on limits lowered by 2^-10: one
- * call level less than through dh_joint_move_q (the 256 B guard). */
+ * profile stretched to the longest), on its stored ends and the lowered
+ * limits: one call level less than through dh_joint_move_q (the 256 B
+ * guard). */
 dh_status dh_move_joint_q(dh_move_q *mv, uint32_t n, const int32_t *q0, const int32_t *q1, const int32_t *vmax,
                           const int32_t *amax, const int32_t *jmax)
 {
     uint32_t i, T = 0u;
-    dh_status st = DH_OK;
+    dh_status st;
     DH_ASSERT(mv != NULL && q0 != NULL && q1 != NULL && vmax != NULL && amax != NULL);
     mv->kind = (uint32_t)DH_MOVE_NONE;
     if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
-    for (i = 0u; i < n && st == DH_OK; i++) {
-        dh_profile_q *const pr = &mv->prof[i];
-        const int64_t d = (int64_t)q1[i] - q0[i];
-        const int32_t j = (jmax != NULL) ? jmax[i] : 1;
-        if (d > INT32_MAX || d < INT32_MIN) {
-            st = DH_ERR_OVERFLOW;
-        } else if (vmax[i] <= 0 || amax[i] <= 0 || j <= 0) {
-            st = DH_ERR_ARG;
-        } else {
-            pr->d = (int32_t)d;
-            pr->v = vmax[i] - (vmax[i] >> 10);
-            pr->a = amax[i] - (amax[i] >> 10);
-            pr->j = (jmax != NULL) ? j : 0;
-            st = dh_motion_profile_q_(pr);
-            if (st == DH_OK && pr->T > T) T = pr->T;
-        }
-    }
-    for (i = 0u; i < n && st == DH_OK; i++) st = dh_profile_stretch_q(&mv->prof[i], T);
-    if (st != DH_OK) return st;
+    /* index by index, so q0 and q1 may alias mv->q0 and mv->q1 */
     for (i = 0u; i < n; i++) {
         const int32_t x = q0[i], y = q1[i];
         mv->q0[i] = x;
         mv->q1[i] = y;
     }
     mv->n = n;
+    st = moveq_joint_fill(mv, vmax, amax, jmax);
+    for (i = 0u; i < n && st == DH_OK; i++) {
+        st = dh_motion_profile_q_(&mv->prof[i]);
+        if (st == DH_OK && mv->prof[i].T > T) T = mv->prof[i].T;
+    }
+    for (i = 0u; i < n && st == DH_OK; i++) st = dh_profile_stretch_q(&mv->prof[i], T);
+    if (st != DH_OK) return st;
     mv->e = 0u;
     moveq_start(mv, T);
     mv->kind = (uint32_t)DH_MOVE_JOINT;
     return DH_OK;
 }
 
-/* each joint on its own (n = 1): no velocity and acceleration arrays on
- * the stack */
+/* each joint's profile evaluated here, from the nearer end as
+ * dh_joint_move_eval_q does (one call level less: the 256 B guard) */
 dh_status dh_move_joint_step_q(dh_move_q *mv, uint32_t dt, int32_t *q, dh_move_report_q *rep)
 {
-    int32_t qd, qdd;
+    int32_t p, qd, qdd;
     uint64_t c;
     uint32_t i;
     dh_status st;
     DH_ASSERT(mv != NULL && q != NULL && rep != NULL);
     st = moveq_period_ok(mv, (uint32_t)DH_MOVE_JOINT, dt);
-    for (i = 0u; i < mv->n && st == DH_OK; i++) st = dh_profile_eval_q(&mv->prof[i], 0u, &qd, &qd, &qdd);
+    for (i = 0u; i < mv->n && st == DH_OK; i++) st = dh_profile_eval_q(&mv->prof[i], 0u, &p, &qd, &qdd);
     if (st != DH_OK) return DH_ERR_ARG;
     c = (uint64_t)mv->clock + dt;
     if (c > mv->dur) c = mv->dur;
-    for (i = 0u; i < mv->n; i++)
-        (void)dh_joint_move_eval_q(&mv->prof[i], 1u, &mv->q0[i], &mv->q1[i], (uint32_t)c, &q[i], &qd, &qdd);
+    for (i = 0u; i < mv->n; i++) {
+        const dh_profile_q *pr = &mv->prof[i];
+        (void)dh_profile_eval_q(pr, (uint32_t)c, &p, &qd, &qdd);
+        q[i] = ((c >= pr->T || c > pr->T - c) && pr->d != 0) ? (int32_t)((int64_t)mv->q1[i] - ((int64_t)pr->d - p))
+                                                         : (int32_t)((int64_t)mv->q0[i] + p);
+    }
     mv->clock = (uint32_t)c;
     rep->clock = mv->clock;
     rep->feed = DH_Q30_ONE;
@@ -197,30 +212,15 @@ static uint64_t moveq_r2(int64_t x, dh_q30 r)
     return (xr * (uint32_t)r + 0x3FFFFFFFu) >> 30;
 }
 
-/* s'' near the clock: its largest (ps[0]) and smallest (ps[1]) value at
- * the ends of the last and the next period and at the clock (the
- * profile's first and last phases, clamped to 0 by the evaluation, taken
- * at +-A), and s' at the clock (ps[2]). Called from dh_move_advance_q
- * itself, so the profile's evaluations are one level below it (the 256 B
- * guard). */
-static DH_NOINLINE void moveq_feed_sample(const dh_move_q *mv, uint32_t dt, int32_t ps[3])
+/* the times of the feed's sample: the start of the last period (r dt
+ * back), the end of the next one (capped at the duration) and the clock */
+static void moveq_sample_times(const dh_move_q *mv, uint32_t dt, uint32_t t[3])
 {
-    const dh_profile_q *pr = &mv->prof[0];
     const uint64_t back = ((uint64_t)(uint32_t)mv->feed * dt) >> 30;
-    const uint32_t tb = (back < mv->clock) ? mv->clock - (uint32_t)back : 0u;
     const uint64_t tf = (uint64_t)mv->clock + dt;
-    int32_t s, sd, a0;
-    (void)dh_profile_eval_q(pr, tb, &s, &sd, &a0);
-    ps[0] = (tb > 0u) ? a0 : pr->a;
-    ps[1] = a0;
-    (void)dh_profile_eval_q(pr, (tf < mv->dur) ? (uint32_t)tf : mv->dur, &s, &sd, &a0);
-    if (tf >= mv->dur) a0 = -pr->a;
-    if (a0 > ps[0]) ps[0] = a0;
-    if (a0 < ps[1]) ps[1] = a0;
-    (void)dh_profile_eval_q(pr, mv->clock, &s, &sd, &a0);
-    if (a0 > ps[0]) ps[0] = a0;
-    if (a0 < ps[1]) ps[1] = a0;
-    ps[2] = sd;
+    t[0] = (back < mv->clock) ? mv->clock - (uint32_t)back : 0u;
+    t[1] = (tf < mv->dur) ? (uint32_t)tf : mv->dur;
+    t[2] = mv->clock;
 }
 
 /* ceil(sd 10^6 / dt): k = s' / dt in LSB/s^2, bit-serial (below 2^51) */
@@ -239,7 +239,7 @@ static uint64_t moveq_k(int32_t sd, uint32_t dt)
 
 /* The largest rise (*up) and fall (*dn) of r this period that keep the
  * commanded acceleration of s within the profile's peak (file comment),
- * from the sample ps of moveq_feed_sample; 2^30 (no bound) where s' is 0 */
+ * from the sample ps of dh_move_advance_q; 2^30 (no bound) where s' is 0 */
 static DH_NOINLINE void moveq_feed_bounds(const dh_move_q *mv, uint32_t dt, const int32_t ps[3], dh_q30 *up,
                                           dh_q30 *dn)
 {
@@ -297,8 +297,25 @@ dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh
         mv->lag = 0u;   /* at full feed and ceiling: r stays 1, no bound needed */
         moveq_tick(mv, DH_Q30_ONE, dt);
     } else {
-        int32_t ps[3];
-        moveq_feed_sample(mv, dt, ps);
+        /* s'' near the clock: its largest (ps[0]) and smallest (ps[1])
+         * value at the times of moveq_sample_times (the profile's first
+         * and last phases, clamped to 0 by the evaluation, taken at +-A),
+         * and s' at the clock (ps[2]); the evaluations here, one call level
+         * below (the 256 B guard) */
+        const dh_profile_q *pr = &mv->prof[0];
+        int32_t ps[3], s, sd, a0;
+        uint32_t t[3], i;
+        moveq_sample_times(mv, dt, t);
+        ps[0] = -pr->a;
+        ps[1] = pr->a;
+        for (i = 0u; i < 3u; i++) {
+            (void)dh_profile_eval_q(pr, t[i], &s, &sd, &a0);
+            if (i == 1u && t[1] >= mv->dur) a0 = -pr->a;
+            if (a0 > ps[0]) ps[0] = a0;
+            if (a0 < ps[1]) ps[1] = a0;
+            if (i == 0u && t[0] == 0u) ps[0] = pr->a;
+        }
+        ps[2] = sd;
         mv->feed = moveq_feed_next(mv, dt, ok, ps);
         moveq_tick(mv, mv->feed, dt);
     }

@@ -153,30 +153,50 @@ static int pathq_ok(const dh_path_q *p)
     return na > lo && na < hi && nb > lo && nb < hi;
 }
 
-/* The axis k and half angle h of r = qa* qb (qa . qb >= 0): r's vector
- * part exact in 64 bits, k its integer normalisation, h = atan2(|v|, w)
- * of the parts rounded to Q2.30 (dh_atan2_q, in [0, 90] degrees) */
-static DH_NOINLINE void pathq_axis(dh_path_q *p)
+/* Component c (0: w, 1..3: x, y, z) of r = qa* qb, exact in 64 bits: the
+ * axis and half angle of the path's rotation (pathq_axis, pathq_half) */
+static int64_t pathq_rv(const dh_path_q *p, unsigned c)
 {
     const dh_quat_q *a = &p->qa, *b = &p->qb;
-    int64_t v[3];
-    int32_t vq[3], w;
+    if (c == 0u)
+        return dh_q_mul64(a->w, b->w) + dh_q_mul64(a->x, b->x) + dh_q_mul64(a->y, b->y) + dh_q_mul64(a->z, b->z);
+    if (c == 1u)
+        return dh_q_mul64(a->w, b->x) - dh_q_mul64(b->w, a->x) - dh_q_mul64(a->y, b->z) + dh_q_mul64(a->z, b->y);
+    if (c == 2u)
+        return dh_q_mul64(a->w, b->y) - dh_q_mul64(b->w, a->y) - dh_q_mul64(a->z, b->x) + dh_q_mul64(a->x, b->z);
+    return dh_q_mul64(a->w, b->z) - dh_q_mul64(b->w, a->z) - dh_q_mul64(a->x, b->y) + dh_q_mul64(a->y, b->x);
+}
+
+/* The half angle h of r = qa* qb (qa . qb >= 0): atan2(|v|, w) of its
+ * parts rounded to Q2.30 (dh_atan2_q, in [0, 90] degrees); 0 when v
+ * rounds to 0 (no rotation to 2^-30) */
+static DH_NOINLINE void pathq_half(dh_path_q *p)
+{
+    const int32_t w = (int32_t)dh_q_rshr(pathq_rv(p, 0u), 30u);
+    uint64_t s = 0u;
     uint32_t n;
-    unsigned i;
-    w = (int32_t)dh_q_rshr(dh_q_mul64(a->w, b->w) + dh_q_mul64(a->x, b->x) + dh_q_mul64(a->y, b->y) +
-                           dh_q_mul64(a->z, b->z), 30u);
-    v[0] = dh_q_mul64(a->w, b->x) - dh_q_mul64(b->w, a->x) - dh_q_mul64(a->y, b->z) + dh_q_mul64(a->z, b->y);
-    v[1] = dh_q_mul64(a->w, b->y) - dh_q_mul64(b->w, a->y) - dh_q_mul64(a->z, b->x) + dh_q_mul64(a->x, b->z);
-    v[2] = dh_q_mul64(a->w, b->z) - dh_q_mul64(b->w, a->z) - dh_q_mul64(a->x, b->y) + dh_q_mul64(a->y, b->x);
-    for (i = 0; i < 3u; i++) {
-        p->k[i] = 0;
-        vq[i] = (int32_t)dh_q_rshr(v[i], 30u);
+    unsigned c;
+    for (c = 1u; c <= 3u; c++) {
+        const int32_t x = (int32_t)dh_q_rshr(pathq_rv(p, c), 30u);
+        s += (uint64_t)dh_q_mul64(x, x);
     }
+    n = dh_q_isqrt62(s);
     p->h = 0;
-    n = dh_q_isqrt62((uint64_t)dh_q_mul64(vq[0], vq[0]) + (uint64_t)dh_q_mul64(vq[1], vq[1]) +
-                     (uint64_t)dh_q_mul64(vq[2], vq[2]));
-    if (n == 0u || !pathq_unit(v, 3u, p->k)) return;   /* no rotation to 2^-30 */
-    (void)dh_atan2_q((int32_t)n, (w < 0) ? 0 : w, &p->h);
+    if (n != 0u) (void)dh_atan2_q((int32_t)n, (w < 0) ? 0 : w, &p->h);
+}
+
+/* The unit axis k of r = qa* qb: its vector part exact in 64 bits,
+ * normalised (0 without rotation) */
+static DH_NOINLINE void pathq_axis(dh_path_q *p)
+{
+    int64_t v[3];
+    unsigned c;
+    for (c = 0u; c < 3u; c++) {
+        v[c] = pathq_rv(p, c + 1u);
+        p->k[c] = 0;
+    }
+    if (!pathq_unit(v, 3u, p->k))
+        for (c = 0u; c < 3u; c++) p->k[c] = 0;
 }
 
 /* *q = the unit quaternion of F's rotation (an accepted frame: the
@@ -200,16 +220,20 @@ static DH_NOINLINE void pathq_quat(const dh_frame_q *F, dh_quat_q *q)
 /* p's ends, their unit quaternions on the shorter arc, the axis and half
  * angle between them, angle and kind */
 static DH_NOINLINE void pathq_finish(dh_path_q *p, const dh_frame_q *A, const dh_frame_q *B, dh_q16 deg,
-                                     dh_path_kind k)
+                                     dh_path_kind kind)
 {
+    unsigned k;
     pathq_quat(A, &p->qa);
     pathq_quat(B, &p->qb);
     dh_motion_shorter_q_(&p->qa, &p->qb);
+    pathq_half(p);
     pathq_axis(p);
+    if (p->h == 0)
+        for (k = 0; k < 3u; k++) p->k[k] = 0;
     p->A = *A;
     p->B = *B;
     p->angle = deg;
-    p->kind = (uint32_t)k;
+    p->kind = (uint32_t)kind;
 }
 
 /* The checks of both paths: rotations accepted (DH_ERR_NOT_RIGID) */
@@ -219,23 +243,33 @@ static dh_status pathq_check(const dh_frame_q *A, const dh_frame_q *B)
     return DH_OK;
 }
 
-dh_status dh_path_line_q(dh_path_q *p, const dh_frame_q *A, const dh_frame_q *B)
+/* |p_B - p_A| into *len (floor of the root); DH_ERR_OVERFLOW when a
+ * component or the length does not fit int32 */
+static DH_NOINLINE dh_status pathq_line_len(const dh_frame_q *A, const dh_frame_q *B, int32_t *len)
 {
     uint64_t s = 0u;
-    uint32_t len;
-    dh_q16 deg = 0;
-    dh_status st;
+    uint32_t l;
     unsigned i;
-    DH_ASSERT(p != NULL && A != NULL && B != NULL);
-    st = pathq_check(A, B);
-    if (st != DH_OK) return st;
     for (i = 0; i < 3u; i++) {
         const int64_t d = (int64_t)B->p[i] - A->p[i];
         if (d > INT32_MAX || d < -INT32_MAX) return DH_ERR_OVERFLOW;
         s += (uint64_t)(d * d);
     }
-    len = pathq_isqrt64(s);
-    if (len > (uint32_t)INT32_MAX) return DH_ERR_OVERFLOW;
+    l = pathq_isqrt64(s);
+    if (l > (uint32_t)INT32_MAX) return DH_ERR_OVERFLOW;
+    *len = (int32_t)l;
+    return DH_OK;
+}
+
+dh_status dh_path_line_q(dh_path_q *p, const dh_frame_q *A, const dh_frame_q *B)
+{
+    int32_t len = 0;
+    dh_q16 deg = 0;
+    dh_status st;
+    DH_ASSERT(p != NULL && A != NULL && B != NULL);
+    st = pathq_check(A, B);
+    if (st == DH_OK) st = pathq_line_len(A, B, &len);
+    if (st != DH_OK) return st;
     (void)dh_pose_angle_q(A, B, &deg);
     memset(p, 0, sizeof *p);
     p->length = (dh_qpos)len;
@@ -314,22 +348,16 @@ static DH_NOINLINE dh_status pathq_tri(dh_path_q *p, unsigned f, int *big)
     return DH_OK;
 }
 
-/* The circle at the scale 2^f from the plane (e1, e2) and L, yc: radius,
- * sweep, length and u0, w0, u1, w1 into p (from the plane's scratch) */
-static DH_NOINLINE dh_status pathq_circle(dh_path_q *p, const dh_frame_q *A, unsigned f)
+/* The circle's radius, sweep and length at the scale 2^f from L and yc
+ * (the plane's scratch in k[2], h) into p */
+static DH_NOINLINE dh_status pathq_sweep(dh_path_q *p, unsigned f)
 {
-    dh_q30 e[6];   /* e1, e2 */
     const int32_t L = p->k[2], yc = p->h;
     int32_t sn, cs, d;
     int64_t hx;
     uint32_t R, Rf, sw;
     uint64_t X;
     dh_q16 h = 0;
-    unsigned k;
-    for (k = 0; k < 3u; k++) {
-        e[k] = p->w0[k];
-        e[k + 3u] = p->w1[k];
-    }
     Rf = dh_q_isqrt62(((uint64_t)dh_q_mul64(L, L) + 4u * (uint64_t)dh_q_mul64(yc, yc)) >> 2);
     R = (uint32_t)(((uint64_t)Rf + ((uint64_t)1 << f >> 1)) >> f);
     if (R >= (uint32_t)PATHQ_LIM || R == 0u) return DH_ERR_OVERFLOW;
@@ -347,19 +375,6 @@ static DH_NOINLINE dh_status pathq_circle(dh_path_q *p, const dh_frame_q *A, uns
     X = (uint64_t)R * sw;
     X = ((X >> 31) * PATHQ_DEG2RAD31 + ((((X & 0x7FFFFFFFu) * PATHQ_DEG2RAD31) >> 31)) + ((uint64_t)1 << 22)) >> 23;
     if (X > (uint64_t)INT32_MAX) return DH_ERR_OVERFLOW;
-    /* the whole circle within int32: centre +- R, with room for rounding */
-    for (k = 0; k < 3u; k++) {
-        const int64_t c = (int64_t)A->p[k] - dh_q_rshr(-dh_q_mul64(L, e[k]) - 2 * dh_q_mul64(yc, e[k + 3u]), 31u + f);
-        if (c + R + 64 > INT32_MAX || c - R - 64 < INT32_MIN) return DH_ERR_OVERFLOW;
-    }
-    for (k = 0; k < 3u; k++) {
-        const int64_t he = dh_q_mul64(L, e[k]), ye = 2 * dh_q_mul64(yc, e[k + 3u]);
-        const int64_t hf = dh_q_mul64(L, e[k + 3u]), yf = 2 * dh_q_mul64(yc, e[k]);
-        p->u0[k] = (dh_qpos)dh_q_rshr(-he - ye, 31u + f);
-        p->u1[k] = (dh_qpos)dh_q_rshr(he - ye, 31u + f);
-        p->w0[k] = (dh_qpos)dh_q_rshr(hf - yf, 31u + f);
-        p->w1[k] = (dh_qpos)dh_q_rshr(-hf - yf, 31u + f);
-    }
     p->radius = (dh_qpos)R;
     p->sw = sw;
     p->sweep = (dh_q16)((sw + 64u) >> 7);
@@ -367,16 +382,37 @@ static DH_NOINLINE dh_status pathq_circle(dh_path_q *p, const dh_frame_q *A, uns
     return DH_OK;
 }
 
-/* The arc's circle (pathq_plane, pathq_tri, pathq_circle) into p, on the
- * scratch of its fields. The plane's coordinates are taken at the finest
- * scale 2^-f LSB at which the longest side and yc stay below 2^30
- * (f <= 29), so that their rounding does not grow with the conditioning
- * of the circle (a via point near an end). */
+/* u0, w0, u1, w1 at the scale 2^f from the plane (e1 in w0, e2 in w1, each
+ * index read before it is overwritten) and L, yc; DH_ERR_OVERFLOW when the
+ * circle (centre +- R, with room for rounding) leaves int32 */
+static DH_NOINLINE dh_status pathq_vectors(dh_path_q *p, const dh_frame_q *A, unsigned f)
+{
+    const int32_t L = p->k[2], yc = p->h;
+    const int64_t R = p->radius;
+    unsigned k;
+    for (k = 0; k < 3u; k++) {
+        const int64_t he = dh_q_mul64(L, p->w0[k]), ye = 2 * dh_q_mul64(yc, p->w1[k]);
+        const int64_t hf = dh_q_mul64(L, p->w1[k]), yf = 2 * dh_q_mul64(yc, p->w0[k]);
+        int64_t c;
+        p->u0[k] = (dh_qpos)dh_q_rshr(-he - ye, 31u + f);
+        p->u1[k] = (dh_qpos)dh_q_rshr(he - ye, 31u + f);
+        p->w0[k] = (dh_qpos)dh_q_rshr(hf - yf, 31u + f);
+        p->w1[k] = (dh_qpos)dh_q_rshr(-hf - yf, 31u + f);
+        c = (int64_t)A->p[k] - p->u0[k];
+        if (c + R + 64 > INT32_MAX || c - R - 64 < INT32_MIN) return DH_ERR_OVERFLOW;
+    }
+    return DH_OK;
+}
+
+/* a = via - p_A into u0, b = p_B - p_A into u1 (DH_ERR_OVERFLOW beyond
+ * 2^30), the plane, and the finest scale f at which the triangle's
+ * coordinates and yc stay below 2^30 (f <= 29: their rounding does not
+ * grow with the conditioning of the circle, a via point near an end) */
 static DH_NOINLINE dh_status pathq_arc_plan(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3],
-                                            const dh_frame_q *B)
+                                            const dh_frame_q *B, unsigned *f)
 {
     uint64_t lb, M2;
-    unsigned k, f = 0u;
+    unsigned k;
     dh_status st;
     int big = 1;
     for (k = 0; k < 3u; k++) {
@@ -388,26 +424,30 @@ static DH_NOINLINE dh_status pathq_arc_plan(dh_path_q *p, const dh_frame_q *A, c
     st = pathq_plane(p);
     if (st != DH_OK) return st;
     M2 = pathq_sides(p, &lb);
-    while (f < 29u && (M2 << (2u * f + 2u)) < ((uint64_t)1 << 60)) f++;
-    for (;;) {
-        st = pathq_tri(p, f, &big);
-        if (st != DH_OK) return st;
-        if (big == 0) break;
-        if (f == 0u) return DH_ERR_OVERFLOW;   /* the radius reaches 2^30 LSB */
-        f--;
+    for (*f = 0u; *f < 29u && (M2 << (2u * *f + 2u)) < ((uint64_t)1 << 60); (*f)++) {
     }
-    return pathq_circle(p, A, f);
+    for (;;) {
+        st = pathq_tri(p, *f, &big);
+        if (st != DH_OK || big == 0) return st;
+        if (*f == 0u) return DH_ERR_OVERFLOW;   /* the radius reaches 2^30 LSB */
+        (*f)--;
+    }
 }
 
-/* on error p holds no path (all zero): its fields were the planning's scratch */
+/* on error p holds no path (all zero): its fields were the planning's
+ * scratch (pathq_arc_plan, pathq_sweep, pathq_vectors one after the
+ * other, one call level each) */
 dh_status dh_path_arc_q(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3], const dh_frame_q *B)
 {
     dh_q16 deg = 0;
     dh_status st;
+    unsigned f = 0u;
     DH_ASSERT(p != NULL && A != NULL && via != NULL && B != NULL);
     memset(p, 0, sizeof *p);
     st = pathq_check(A, B);
-    if (st == DH_OK) st = pathq_arc_plan(p, A, via, B);
+    if (st == DH_OK) st = pathq_arc_plan(p, A, via, B, &f);
+    if (st == DH_OK) st = pathq_sweep(p, f);
+    if (st == DH_OK) st = pathq_vectors(p, A, f);
     if (st != DH_OK) {
         memset(p, 0, sizeof *p);
         return st;
