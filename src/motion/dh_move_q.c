@@ -65,6 +65,9 @@ static void moveq_start(dh_move_q *mv, uint32_t dur)
     mv->feed = DH_Q30_ONE;
     mv->fcap = DH_Q30_ONE;
     mv->lag = 0u;
+    mv->ps[0] = 0;
+    mv->ps[1] = 0;
+    mv->ps[2] = 0;
 }
 
 /* the clock advanced by r dt (r Q2.30 in [0, 1]) with its fraction,
@@ -212,15 +215,32 @@ static uint64_t moveq_r2(int64_t x, dh_q30 r)
     return (xr * (uint32_t)r + 0x3FFFFFFFu) >> 30;
 }
 
-/* the times of the feed's sample: the start of the last period (r dt
- * back), the end of the next one (capped at the duration) and the clock */
-static void moveq_sample_times(const dh_move_q *mv, uint32_t dt, uint32_t t[3])
+/* s'' near the clock into mv->ps: its largest (ps[0]) and smallest
+ * (ps[1]) value at the start of the last period (r dt back), the end of
+ * the next one (capped at the duration) and the clock (the profile's
+ * first and last phases, clamped to 0 by the evaluation, taken at +-A),
+ * and s' at the clock (ps[2]). Called by dh_move_advance_q itself and
+ * kept in mv, so the evaluations are two call levels below it (the 256 B
+ * guard). */
+static DH_NOINLINE void moveq_sample(dh_move_q *mv, uint32_t dt)
 {
-    const uint64_t back = ((uint64_t)(uint32_t)mv->feed * dt) >> 30;
-    const uint64_t tf = (uint64_t)mv->clock + dt;
-    t[0] = (back < mv->clock) ? mv->clock - (uint32_t)back : 0u;
-    t[1] = (tf < mv->dur) ? (uint32_t)tf : mv->dur;
-    t[2] = mv->clock;
+    const dh_profile_q *pr = &mv->prof[0];
+    int32_t s, sd, a0;
+    uint32_t i, t;
+    mv->ps[0] = -pr->a;
+    mv->ps[1] = pr->a;
+    for (i = 0u; i < 3u; i++) {
+        const uint64_t back = ((uint64_t)(uint32_t)mv->feed * dt) >> 30, tf = (uint64_t)mv->clock + dt;
+        if (i == 0u) t = (back < mv->clock) ? mv->clock - (uint32_t)back : 0u;
+        else if (i == 1u) t = (tf < mv->dur) ? (uint32_t)tf : mv->dur;
+        else t = mv->clock;
+        (void)dh_profile_eval_q(pr, t, &s, &sd, &a0);
+        if (i == 1u && t >= mv->dur) a0 = -pr->a;
+        if (a0 > mv->ps[0]) mv->ps[0] = a0;
+        if (a0 < mv->ps[1]) mv->ps[1] = a0;
+        if (i == 0u && t == 0u) mv->ps[0] = pr->a;
+    }
+    mv->ps[2] = sd;
 }
 
 /* ceil(sd 10^6 / dt): k = s' / dt in LSB/s^2, bit-serial (below 2^51) */
@@ -239,10 +259,10 @@ static uint64_t moveq_k(int32_t sd, uint32_t dt)
 
 /* The largest rise (*up) and fall (*dn) of r this period that keep the
  * commanded acceleration of s within the profile's peak (file comment),
- * from the sample ps of dh_move_advance_q; 2^30 (no bound) where s' is 0 */
-static DH_NOINLINE void moveq_feed_bounds(const dh_move_q *mv, uint32_t dt, const int32_t ps[3], dh_q30 *up,
-                                          dh_q30 *dn)
+ * from the sample in mv->ps (moveq_sample); 2^30 (no bound) where s' is 0 */
+static DH_NOINLINE void moveq_feed_bounds(const dh_move_q *mv, uint32_t dt, dh_q30 *up, dh_q30 *dn)
 {
+    const int32_t *ps = mv->ps;
     const int64_t A = mv->prof[0].a, r = mv->feed;
     const int64_t hi = (ps[0] > 0) ? ps[0] : 0, lo = ps[1];
     uint64_t k, num, den;
@@ -259,12 +279,12 @@ static DH_NOINLINE void moveq_feed_bounds(const dh_move_q *mv, uint32_t dt, cons
 }
 
 /* r after a period whose tracker state was OK (ok 1) or not, and the
- * ceiling's update (dh_move.c's method), with the sample ps */
-static DH_NOINLINE dh_q30 moveq_feed_next(dh_move_q *mv, uint32_t dt, int ok, const int32_t ps[3])
+ * ceiling's update (dh_move.c's method), with the sample in mv->ps */
+static DH_NOINLINE dh_q30 moveq_feed_next(dh_move_q *mv, uint32_t dt, int ok)
 {
     const dh_q30 r = mv->feed;
     dh_q30 up, dn, goal, c = mv->fcap;
-    moveq_feed_bounds(mv, dt, ps, &up, &dn);
+    moveq_feed_bounds(mv, dt, &up, &dn);
     if (ok != 0) {
         if (r >= c) {
             const uint64_t inc = ((((uint64_t)(uint32_t)c * dt) >> 10) * MOVEQ_CREEP) >> 22;
@@ -297,26 +317,8 @@ dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh
         mv->lag = 0u;   /* at full feed and ceiling: r stays 1, no bound needed */
         moveq_tick(mv, DH_Q30_ONE, dt);
     } else {
-        /* s'' near the clock: its largest (ps[0]) and smallest (ps[1])
-         * value at the times of moveq_sample_times (the profile's first
-         * and last phases, clamped to 0 by the evaluation, taken at +-A),
-         * and s' at the clock (ps[2]); the evaluations here, one call level
-         * below (the 256 B guard) */
-        const dh_profile_q *pr = &mv->prof[0];
-        int32_t ps[3], s, sd, a0;
-        uint32_t t[3], i;
-        moveq_sample_times(mv, dt, t);
-        ps[0] = -pr->a;
-        ps[1] = pr->a;
-        for (i = 0u; i < 3u; i++) {
-            (void)dh_profile_eval_q(pr, t[i], &s, &sd, &a0);
-            if (i == 1u && t[1] >= mv->dur) a0 = -pr->a;
-            if (a0 > ps[0]) ps[0] = a0;
-            if (a0 < ps[1]) ps[1] = a0;
-            if (i == 0u && t[0] == 0u) ps[0] = pr->a;
-        }
-        ps[2] = sd;
-        mv->feed = moveq_feed_next(mv, dt, ok, ps);
+        moveq_sample(mv, dt);
+        mv->feed = moveq_feed_next(mv, dt, ok);
         moveq_tick(mv, mv->feed, dt);
     }
     rep->clock = mv->clock;

@@ -199,13 +199,11 @@ static DH_NOINLINE void pathq_axis(dh_path_q *p)
         for (c = 0u; c < 3u; c++) p->k[c] = 0;
 }
 
-/* *q = the unit quaternion of F's rotation (an accepted frame: the
- * conversion cannot fail), normalised by pathq_unit */
-static DH_NOINLINE void pathq_quat(const dh_frame_q *F, dh_quat_q *q)
+/* q (from dh_frame_to_quat_q) normalised in place by pathq_unit */
+static DH_NOINLINE void pathq_quat(dh_quat_q *q)
 {
     int64_t v[4];
     dh_q30 u[4];
-    (void)dh_frame_to_quat_q(F, q);
     v[0] = q->w;
     v[1] = q->x;
     v[2] = q->y;
@@ -217,14 +215,13 @@ static DH_NOINLINE void pathq_quat(const dh_frame_q *F, dh_quat_q *q)
     q->z = u[3];
 }
 
-/* p's ends, their unit quaternions on the shorter arc, the axis and half
- * angle between them, angle and kind */
+/* p's ends, their unit quaternions (pathq_quat, made by the caller: one
+ * call level less) on the shorter arc, the axis and half angle between
+ * them, angle and kind */
 static DH_NOINLINE void pathq_finish(dh_path_q *p, const dh_frame_q *A, const dh_frame_q *B, dh_q16 deg,
                                      dh_path_kind kind)
 {
     unsigned k;
-    pathq_quat(A, &p->qa);
-    pathq_quat(B, &p->qb);
     dh_motion_shorter_q_(&p->qa, &p->qb);
     pathq_half(p);
     pathq_axis(p);
@@ -273,6 +270,11 @@ dh_status dh_path_line_q(dh_path_q *p, const dh_frame_q *A, const dh_frame_q *B)
     (void)dh_pose_angle_q(A, B, &deg);
     memset(p, 0, sizeof *p);
     p->length = (dh_qpos)len;
+    /* accepted frames: the conversions cannot fail */
+    (void)dh_frame_to_quat_q(A, &p->qa);
+    (void)dh_frame_to_quat_q(B, &p->qb);
+    pathq_quat(&p->qa);
+    pathq_quat(&p->qb);
     pathq_finish(p, A, B, deg, DH_PATH_LINE);
     return DH_OK;
 }
@@ -298,16 +300,14 @@ static uint64_t pathq_sides(const dh_path_q *p, uint64_t *lb)
 }
 
 /* The plane of the arc: e1 = b / |b|, e2 = e1 x n (n the unit normal of
- * a x b, exact in 64 bits). DH_ERR_OVERFLOW for a side of 2^30 LSB or
- * more, DH_ERR_SINGULAR for collinear or coincident points. */
+ * a x b, exact in 64 bits). DH_ERR_SINGULAR for collinear or coincident
+ * points. */
 static DH_NOINLINE dh_status pathq_plane(dh_path_q *p)
 {
     const int32_t *a = p->u0, *b = p->u1;
     int64_t v[3];
     dh_q30 n[3];
-    uint64_t lb;
     unsigned k;
-    if (pathq_sides(p, &lb) >= (uint64_t)1 << 60) return DH_ERR_OVERFLOW;   /* the longest side below 2^30 */
     v[0] = dh_q_mul64(a[1], b[2]) - dh_q_mul64(a[2], b[1]);
     v[1] = dh_q_mul64(a[2], b[0]) - dh_q_mul64(a[0], b[2]);
     v[2] = dh_q_mul64(a[0], b[1]) - dh_q_mul64(a[1], b[0]);
@@ -321,16 +321,15 @@ static DH_NOINLINE dh_status pathq_plane(dh_path_q *p)
 }
 
 /* The triangle in the plane at the scale 2^f (f fraction bits below the
- * LSB): x = a . e1, y = a . e2, L = |b| into k, yc into h. DH_ERR_SINGULAR
+ * LSB), lb = |b|^2 and M2 the longest side squared: x = a . e1,
+ * y = a . e2, L = |b| into k, yc into h. DH_ERR_SINGULAR
  * for a thin triangle; 1 in *big when |yc| reaches 2^30 at this scale. */
-static DH_NOINLINE dh_status pathq_tri(dh_path_q *p, unsigned f, int *big)
+static DH_NOINLINE dh_status pathq_tri(dh_path_q *p, unsigned f, uint64_t lb, uint64_t M2, int *big)
 {
     const int32_t *a = p->u0;
     const dh_q30 *e1 = p->w0, *e2 = p->w1;
     int32_t *xyl = p->k;
     const unsigned sh = 30u - f;
-    uint64_t lb;
-    const uint64_t M2 = pathq_sides(p, &lb);
     int64_t num;
     *big = 0;
     xyl[0] = (int32_t)dh_q_rshr(dh_q_mul64(a[0], e1[0]) + dh_q_mul64(a[1], e1[1]) + dh_q_mul64(a[2], e1[2]), sh);
@@ -404,30 +403,35 @@ static DH_NOINLINE dh_status pathq_vectors(dh_path_q *p, const dh_frame_q *A, un
     return DH_OK;
 }
 
-/* a = via - p_A into u0, b = p_B - p_A into u1 (DH_ERR_OVERFLOW beyond
- * 2^30), the plane, and the finest scale f at which the triangle's
- * coordinates and yc stay below 2^30 (f <= 29: their rounding does not
- * grow with the conditioning of the circle, a via point near an end) */
-static DH_NOINLINE dh_status pathq_arc_plan(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3],
-                                            const dh_frame_q *B, unsigned *f)
+/* a = via - p_A into u0, b = p_B - p_A into u1: DH_ERR_OVERFLOW for a
+ * side of 2^30 LSB or more */
+static DH_NOINLINE dh_status pathq_arc_init(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3],
+                                            const dh_frame_q *B)
 {
-    uint64_t lb, M2;
+    uint64_t lb;
     unsigned k;
-    dh_status st;
-    int big = 1;
     for (k = 0; k < 3u; k++) {
         const int64_t da = (int64_t)via[k] - A->p[k], db = (int64_t)B->p[k] - A->p[k];
         if (da >= PATHQ_LIM || da <= -PATHQ_LIM || db >= PATHQ_LIM || db <= -PATHQ_LIM) return DH_ERR_OVERFLOW;
         p->u0[k] = (int32_t)da;
         p->u1[k] = (int32_t)db;
     }
-    st = pathq_plane(p);
-    if (st != DH_OK) return st;
-    M2 = pathq_sides(p, &lb);
+    return (pathq_sides(p, &lb) >= (uint64_t)1 << 60) ? DH_ERR_OVERFLOW : DH_OK;
+}
+
+/* The triangle's coordinates at the finest scale 2^-f LSB at which they
+ * and yc stay below 2^30 (f <= 29: their rounding does not grow with the
+ * conditioning of the circle, a via point near an end), by pathq_tri */
+static DH_NOINLINE dh_status pathq_arc_fit(dh_path_q *p, unsigned *f)
+{
+    uint64_t lb;
+    const uint64_t M2 = pathq_sides(p, &lb);
+    dh_status st;
+    int big = 1;
     for (*f = 0u; *f < 29u && (M2 << (2u * *f + 2u)) < ((uint64_t)1 << 60); (*f)++) {
     }
     for (;;) {
-        st = pathq_tri(p, *f, &big);
+        st = pathq_tri(p, *f, lb, M2, &big);
         if (st != DH_OK || big == 0) return st;
         if (*f == 0u) return DH_ERR_OVERFLOW;   /* the radius reaches 2^30 LSB */
         (*f)--;
@@ -435,8 +439,8 @@ static DH_NOINLINE dh_status pathq_arc_plan(dh_path_q *p, const dh_frame_q *A, c
 }
 
 /* on error p holds no path (all zero): its fields were the planning's
- * scratch (pathq_arc_plan, pathq_sweep, pathq_vectors one after the
- * other, one call level each) */
+ * scratch (pathq_arc_init, pathq_plane, pathq_arc_fit, pathq_sweep and
+ * pathq_vectors one after the other, one call level each) */
 dh_status dh_path_arc_q(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3], const dh_frame_q *B)
 {
     dh_q16 deg = 0;
@@ -445,7 +449,9 @@ dh_status dh_path_arc_q(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3],
     DH_ASSERT(p != NULL && A != NULL && via != NULL && B != NULL);
     memset(p, 0, sizeof *p);
     st = pathq_check(A, B);
-    if (st == DH_OK) st = pathq_arc_plan(p, A, via, B, &f);
+    if (st == DH_OK) st = pathq_arc_init(p, A, via, B);
+    if (st == DH_OK) st = pathq_plane(p);
+    if (st == DH_OK) st = pathq_arc_fit(p, &f);
     if (st == DH_OK) st = pathq_sweep(p, f);
     if (st == DH_OK) st = pathq_vectors(p, A, f);
     if (st != DH_OK) {
@@ -457,6 +463,10 @@ dh_status dh_path_arc_q(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3],
     p->k[2] = 0;
     p->h = 0;
     (void)dh_pose_angle_q(A, B, &deg);
+    (void)dh_frame_to_quat_q(A, &p->qa);
+    (void)dh_frame_to_quat_q(B, &p->qb);
+    pathq_quat(&p->qa);
+    pathq_quat(&p->qb);
     pathq_finish(p, A, B, deg, DH_PATH_ARC);
     return DH_OK;
 }
