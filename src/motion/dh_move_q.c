@@ -215,32 +215,15 @@ static uint64_t moveq_r2(int64_t x, dh_q30 r)
     return (xr * (uint32_t)r + 0x3FFFFFFFu) >> 30;
 }
 
-/* s'' near the clock into mv->ps: its largest (ps[0]) and smallest
- * (ps[1]) value at the start of the last period (r dt back), the end of
- * the next one (capped at the duration) and the clock (the profile's
- * first and last phases, clamped to 0 by the evaluation, taken at +-A),
- * and s' at the clock (ps[2]). Called by dh_move_advance_q itself and
- * kept in mv, so the evaluations are two call levels below it (the 256 B
- * guard). */
-static DH_NOINLINE void moveq_sample(dh_move_q *mv, uint32_t dt)
+/* the times of the feed's sample: the start of the last period (r dt
+ * back), the end of the next one (capped at the duration) and the clock */
+static DH_NOINLINE void moveq_sample_times(const dh_move_q *mv, uint32_t dt, uint32_t t[3])
 {
-    const dh_profile_q *pr = &mv->prof[0];
-    int32_t s, sd, a0;
-    uint32_t i, t;
-    mv->ps[0] = -pr->a;
-    mv->ps[1] = pr->a;
-    for (i = 0u; i < 3u; i++) {
-        const uint64_t back = ((uint64_t)(uint32_t)mv->feed * dt) >> 30, tf = (uint64_t)mv->clock + dt;
-        if (i == 0u) t = (back < mv->clock) ? mv->clock - (uint32_t)back : 0u;
-        else if (i == 1u) t = (tf < mv->dur) ? (uint32_t)tf : mv->dur;
-        else t = mv->clock;
-        (void)dh_profile_eval_q(pr, t, &s, &sd, &a0);
-        if (i == 1u && t >= mv->dur) a0 = -pr->a;
-        if (a0 > mv->ps[0]) mv->ps[0] = a0;
-        if (a0 < mv->ps[1]) mv->ps[1] = a0;
-        if (i == 0u && t == 0u) mv->ps[0] = pr->a;
-    }
-    mv->ps[2] = sd;
+    const uint64_t back = ((uint64_t)(uint32_t)mv->feed * dt) >> 30;
+    const uint64_t tf = (uint64_t)mv->clock + dt;
+    t[0] = (back < mv->clock) ? mv->clock - (uint32_t)back : 0u;
+    t[1] = (tf < mv->dur) ? (uint32_t)tf : mv->dur;
+    t[2] = mv->clock;
 }
 
 /* ceil(sd 10^6 / dt): k = s' / dt in LSB/s^2, bit-serial (below 2^51) */
@@ -259,7 +242,7 @@ static uint64_t moveq_k(int32_t sd, uint32_t dt)
 
 /* The largest rise (*up) and fall (*dn) of r this period that keep the
  * commanded acceleration of s within the profile's peak (file comment),
- * from the sample in mv->ps (moveq_sample); 2^30 (no bound) where s' is 0 */
+ * from the sample in mv->ps (dh_move_advance_q); 2^30 (no bound) where s' is 0 */
 static DH_NOINLINE void moveq_feed_bounds(const dh_move_q *mv, uint32_t dt, dh_q30 *up, dh_q30 *dn)
 {
     const int32_t *ps = mv->ps;
@@ -278,13 +261,13 @@ static DH_NOINLINE void moveq_feed_bounds(const dh_move_q *mv, uint32_t dt, dh_q
     *dn = (dh_q30)(((uint64_t)A > num) ? moveq_ratio((uint64_t)A - num, k) : 0u);
 }
 
-/* r after a period whose tracker state was OK (ok 1) or not, and the
- * ceiling's update (dh_move.c's method), with the sample in mv->ps */
-static DH_NOINLINE dh_q30 moveq_feed_next(dh_move_q *mv, uint32_t dt, int ok)
+/* r after a period whose tracker state was OK (ok 1) or not, within its
+ * largest rise up and fall dn, and the ceiling's update (dh_move.c's
+ * method) */
+static DH_NOINLINE dh_q30 moveq_feed_next(dh_move_q *mv, uint32_t dt, int ok, dh_q30 up, dh_q30 dn)
 {
     const dh_q30 r = mv->feed;
-    dh_q30 up, dn, goal, c = mv->fcap;
-    moveq_feed_bounds(mv, dt, &up, &dn);
+    dh_q30 goal, c = mv->fcap;
     if (ok != 0) {
         if (r >= c) {
             const uint64_t inc = ((((uint64_t)(uint32_t)c * dt) >> 10) * MOVEQ_CREEP) >> 22;
@@ -317,8 +300,28 @@ dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh
         mv->lag = 0u;   /* at full feed and ceiling: r stays 1, no bound needed */
         moveq_tick(mv, DH_Q30_ONE, dt);
     } else {
-        moveq_sample(mv, dt);
-        mv->feed = moveq_feed_next(mv, dt, ok);
+        /* s'' near the clock into mv->ps: its largest (ps[0]) and
+         * smallest (ps[1]) value at the times of moveq_sample_times (the
+         * profile's first and last phases, clamped to 0 by the evaluation,
+         * taken at +-A), and s' at the clock (ps[2]); the evaluations and
+         * the bounds called from here, one level down (the 256 B guard) */
+        const dh_profile_q *pr = &mv->prof[0];
+        int32_t s, sd, a0;
+        uint32_t t[3], i;
+        dh_q30 up, dn;
+        moveq_sample_times(mv, dt, t);
+        mv->ps[0] = -pr->a;
+        mv->ps[1] = pr->a;
+        for (i = 0u; i < 3u; i++) {
+            (void)dh_profile_eval_q(pr, t[i], &s, &sd, &a0);
+            if (i == 1u && t[1] >= mv->dur) a0 = -pr->a;
+            if (a0 > mv->ps[0]) mv->ps[0] = a0;
+            if (a0 < mv->ps[1]) mv->ps[1] = a0;
+            if (i == 0u && t[0] == 0u) mv->ps[0] = pr->a;
+        }
+        mv->ps[2] = sd;
+        moveq_feed_bounds(mv, dt, &up, &dn);
+        mv->feed = moveq_feed_next(mv, dt, ok, up, dn);
         moveq_tick(mv, mv->feed, dt);
     }
     rep->clock = mv->clock;
