@@ -21,7 +21,7 @@
  * vmax dt and its rotation within wmax dt (plus noise); held reported
  * exactly for the not-OK periods, the clock advanced by at most dt, the
  * feed override in [0, 1]. Over windows of w periods (ring of target
- * positions) the target's speed within vmax and its total acceleration
+ * positions, one every DEC periods) the target's speed within vmax and its total acceleration
  * within amax times 1 + 1e-3 plus the noise terms 2 N / (w dt) and
  * 4 N / (w dt)^2, N the target's position noise (the path's bound, the
  * profile's 4 + 2^-27 2^e LSB of its distance 2^e, the clock's 1 us at
@@ -61,7 +61,8 @@
 #define PATH_TOL 5e-3  /* mm */
 #define REL_FD 1e-3
 #define NOISE_FRAC 2.5e-4
-#define RING 128
+#define DEC 5      /* one position kept every DEC periods (the micro:bit's RAM) */
+#define RING 30    /* positions kept: the longest window (2 w for an acceleration) plus one, in DEC periods */
 #define ROT_NOISE 3e-6  /* rad: the rotation of two targets (dh_pose_interp_q's 1.5e-6 each) */
 
 typedef struct {
@@ -74,8 +75,8 @@ typedef struct {
 static rig the_rig;
 static dh_track_q the_trk;
 static dh_move_q the_mv;
-static int32_t ring[RING][3];   /* target positions, one per period */
-static double ring_tool[RING][3];   /* tool positions (mm) of OK periods */
+static int32_t ring[RING][3];   /* target positions, one every DEC periods */
+static int32_t ring_tool[RING][3];  /* tool positions (LSB, rounded) of OK periods, one every DEC periods */
 
 static void rig_make(rig *g, const dhs_robot *d, double vdeg, double adeg)
 {
@@ -211,7 +212,7 @@ static void run_path(rig *g, dh_track_q *t, dh_move_q *mv, const ref_path *rp, c
     const double pbound = (rp->arc ? 4.0 + ldexp(rp->R * QPOS, -26) : 0.87) / QPOS;   /* line: 0.5 LSB per component */
     const double N = pbound + mv->path.length / QPOS * (5.0 * ldexp(1.0, -(int)mv->e) + ldexp(1.0, -27)) + V * 1e-6 +
                      1.0 / QPOS;
-    const double Nt = N + t->pos_tol / QPOS + 4.0 * g->r.n / QPOS + 1e-6;
+    const double Nt = N + t->pos_tol / QPOS + (4.0 * g->r.n + 0.5) / QPOS + 1e-6;   /* the tool kept to 0.5 LSB */
     long wv = (long)ceil(2.0 * N / (NOISE_FRAC * V * DT)), wa = (long)ceil(sqrt(4.0 * N / (NOISE_FRAC * Ac)) / DT);
     long wt = (long)ceil(2.0 * Nt / (NOISE_FRAC * V * DT));
     const long limit = (long)((10.0 * mv->dur * 1e-6 + 5.0) / DT);
@@ -219,9 +220,11 @@ static void run_path(rig *g, dh_track_q *t, dh_move_q *mv, const ref_path *rp, c
     long k, okrun = 0;
     uint32_t clock0;
     int32_t q[DH_MAX_JOINTS];
-    if (wv < 1) wv = 1;
-    if (wa < 1) wa = 1;
-    DHT_TRUE(2 * wa < RING && wv < RING && wt < RING);
+    /* windows in whole multiples of DEC periods */
+    wv = DEC * ((wv + DEC - 1) / DEC + (wv < 1));
+    wa = DEC * ((wa + DEC - 1) / DEC + (wa < 1));
+    wt = DEC * ((wt + DEC - 1) / DEC + (wt < 1));
+    DHT_TRUE_MSG(2 * wa < DEC * RING && wv < DEC * RING && wt < DEC * RING, "%s: windows %ld %ld %ld periods", what, wv, wa, wt);
     memset(rs, 0, sizeof *rs);
     for (k = 0; k < limit && !rs->done; k++) {
         dh_track_report_q tr;
@@ -243,7 +246,7 @@ static void run_path(rig *g, dh_track_q *t, dh_move_q *mv, const ref_path *rp, c
                          k, rot_between(&T, &Tp));
         }
         Tp = T;
-        memcpy(ring[k % RING], T.p, sizeof ring[0]);
+        if (k % DEC == 0) memcpy(ring[(k / DEC) % RING], T.p, sizeof ring[0]);
         DHT_EQ_INT(dh_track_step_q(t, &T, q, &tr), DH_OK);
         if (tr.state == DH_TRACK_OK) {
             tool_mm(g, q, pq, &F);
@@ -252,10 +255,16 @@ static void run_path(rig *g, dh_track_q *t, dh_move_q *mv, const ref_path *rp, c
                          what, k, d);
             d = ref_dist(rp, pq);
             DHT_TRUE_MSG(d <= PATH_TOL, "%s period %ld: tool %.3g mm off the path", what, k, d);
-            memcpy(ring_tool[k % RING], pq, sizeof ring_tool[0]);
+            if (k % DEC == 0)
+                for (c = 0; c < 3; c++) ring_tool[(k / DEC) % RING][c] = (int32_t)floor(pq[c] * QPOS + 0.5);
             okrun++;
-            if (okrun > wt) {
-                const double sp = dist3(pq, ring_tool[(k - wt) % RING]) / (wt * DT);
+            if (okrun > wt && k % DEC == 0) {
+                double sp = 0.0, x;
+                for (c = 0; c < 3; c++) {
+                    x = ((double)ring_tool[(k / DEC) % RING][c] - ring_tool[((k - wt) / DEC) % RING][c]) / QPOS;
+                    sp += x * x;
+                }
+                sp = sqrt(sp) / (wt * DT);
                 DHT_TRUE_MSG(sp <= V * (1 + REL_FD) + 2.0 * Nt / (wt * DT), "%s period %ld: tool speed %.6g > %.6g mm/s",
                              what, k, sp, V);
             }
@@ -273,8 +282,9 @@ static void run_path(rig *g, dh_track_q *t, dh_move_q *mv, const ref_path *rp, c
             rs->done_at = k;
         }
         /* finite differences of the target over windows ending here */
-        if (k >= 2 * wa) {
-            const int32_t *a0 = ring[(k - 2 * wa) % RING], *a1 = ring[(k - wa) % RING], *a2 = ring[k % RING];
+        if (k >= 2 * wa && k % DEC == 0) {
+            const int32_t *a0 = ring[((k - 2 * wa) / DEC) % RING], *a1 = ring[((k - wa) / DEC) % RING];
+            const int32_t *a2 = ring[(k / DEC) % RING];
             double acc = 0.0, x;
             for (c = 0; c < 3; c++) {
                 x = ((double)a2[c] - 2.0 * a1[c] + a0[c]) / QPOS;
@@ -284,8 +294,8 @@ static void run_path(rig *g, dh_track_q *t, dh_move_q *mv, const ref_path *rp, c
             DHT_TRUE_MSG(acc <= Ac * (1 + REL_FD) + 4.0 * N / ((wa * DT) * (wa * DT)),
                          "%s period %ld: acceleration %.6g > %.6g mm/s^2", what, k, acc, Ac);
         }
-        if (k >= wv) {
-            const int32_t *a0 = ring[(k - wv) % RING], *a1 = ring[k % RING];
+        if (k >= wv && k % DEC == 0) {
+            const int32_t *a0 = ring[((k - wv) / DEC) % RING], *a1 = ring[(k / DEC) % RING];
             double sp = 0.0, x;
             for (c = 0; c < 3; c++) {
                 x = ((double)a1[c] - a0[c]) / QPOS;
