@@ -195,13 +195,14 @@ dh_status dh_move_target_q(const dh_move_q *mv, dh_frame_q *T)
  * bit per step (no division) */
 static uint32_t moveq_ratio(uint64_t n, uint64_t d)
 {
+    uint64_t r = n;
     uint32_t q = 0u, k;
-    if (n >= d) return (uint32_t)DH_Q30_ONE;
+    if (r >= d) return (uint32_t)DH_Q30_ONE;
     for (k = 0u; k < 30u; k++) {
-        n <<= 1;
+        r <<= 1;
         q <<= 1;
-        if (n >= d) {
-            n -= d;
+        if (r >= d) {
+            r -= d;
             q |= 1u;
         }
     }
@@ -230,8 +231,9 @@ static DH_NOINLINE void moveq_sample_times(const dh_move_q *mv, uint32_t dt, uin
 static uint64_t moveq_k(int32_t sd, uint32_t dt)
 {
     uint64_t nn = (uint64_t)sd * MOVEQ_DT_MAX, k = 0u;   /* < 2^51 */
-    uint32_t bit;
-    for (bit = 52u; bit-- > 0u;) {
+    uint32_t bit = 52u;
+    while (bit > 0u) {
+        bit--;
         if ((nn >> bit) >= dt) {
             nn -= (uint64_t)dt << bit;
             k |= (uint64_t)1 << bit;

@@ -76,11 +76,12 @@
  * remainder below 2 d in 64 bits (d < 2^62). No division. */
 static DH_NOINLINE uint32_t pathq_udiv64(uint64_t n, uint64_t d)
 {
+    uint64_t r = n;
     uint32_t q = 0u;
     int k;
     for (k = 31; k >= 0; k--) {
-        if ((n >> (unsigned)k) >= d) {
-            n -= d << (unsigned)k;
+        if ((r >> (unsigned)k) >= d) {
+            r -= d << (unsigned)k;
             q |= 1u << (unsigned)k;
         }
     }
@@ -123,7 +124,10 @@ static DH_NOINLINE int pathq_unit(int64_t *v, unsigned len, dh_q30 *u)
     mx = 0u;
     for (k = 0; k < len; k++) {
         uint64_t m = (uint64_t)v[k];
-        if (sh != 0u) m = (m + ((uint64_t)1 << (sh - 1u))) >> sh;
+        if (sh != 0u) {
+            const unsigned h = sh - 1u;
+            m = (m + ((uint64_t)1 << h)) >> sh;
+        }
         if (m > 0x3FFFFFFFu) m = 0x3FFFFFFFu;
         v[k] = (int64_t)m;
         if (m > mx) mx = m;
@@ -268,7 +272,7 @@ dh_status dh_path_line_q(dh_path_q *p, const dh_frame_q *A, const dh_frame_q *B)
     if (st == DH_OK) st = pathq_line_len(A, B, &len);
     if (st != DH_OK) return st;
     (void)dh_pose_angle_q(A, B, &deg);
-    memset(p, 0, sizeof *p);
+    (void)memset(p, 0, sizeof *p);
     p->length = (dh_qpos)len;
     /* accepted frames: the conversions cannot fail */
     (void)dh_frame_to_quat_q(A, &p->qa);
@@ -329,14 +333,14 @@ static DH_NOINLINE dh_status pathq_tri(dh_path_q *p, unsigned f, uint64_t lb, ui
     const int32_t *a = p->u0;
     const dh_q30 *e1 = p->w0, *e2 = p->w1;
     int32_t *xyl = p->k;
-    const unsigned sh = 30u - f;
+    const unsigned sh = 30u - f, f2 = 2u * f;
     int64_t num;
     *big = 0;
     xyl[0] = (int32_t)dh_q_rshr(dh_q_mul64(a[0], e1[0]) + dh_q_mul64(a[1], e1[1]) + dh_q_mul64(a[2], e1[2]), sh);
     xyl[1] = (int32_t)dh_q_rshr(dh_q_mul64(a[0], e2[0]) + dh_q_mul64(a[1], e2[1]) + dh_q_mul64(a[2], e2[2]), sh);
-    xyl[2] = (int32_t)dh_q_isqrt62(lb << (2u * f));
+    xyl[2] = (int32_t)dh_q_isqrt62(lb << f2);
     /* y L (twice the area) against M^2 / 1024, both at the scale 2^2f */
-    if (xyl[1] <= 0 || (uint64_t)dh_q_mul64(xyl[1], xyl[2]) <= ((M2 << (2u * f)) >> 10)) return DH_ERR_SINGULAR;
+    if (xyl[1] <= 0 || (uint64_t)dh_q_mul64(xyl[1], xyl[2]) <= ((M2 << f2) >> 10)) return DH_ERR_SINGULAR;
     /* yc = (x (x - L) + y^2) / (2 y): |x|, y, L < 2^30, |x - L| < 2^31 */
     num = dh_q_mul64(xyl[0], (int32_t)((int64_t)xyl[0] - xyl[2])) + dh_q_mul64(xyl[1], xyl[1]);
     if ((num < 0 ? -num : num) >= (int64_t)xyl[1] * 2 * (PATHQ_LIM - 1)) {
@@ -447,7 +451,7 @@ dh_status dh_path_arc_q(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3],
     dh_status st;
     unsigned f = 0u;
     DH_ASSERT(p != NULL && A != NULL && via != NULL && B != NULL);
-    memset(p, 0, sizeof *p);
+    (void)memset(p, 0, sizeof *p);
     st = pathq_check(A, B);
     if (st == DH_OK) st = pathq_arc_init(p, A, via, B);
     if (st == DH_OK) st = pathq_plane(p);
@@ -455,7 +459,7 @@ dh_status dh_path_arc_q(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3],
     if (st == DH_OK) st = pathq_sweep(p, f);
     if (st == DH_OK) st = pathq_vectors(p, A, f);
     if (st != DH_OK) {
-        memset(p, 0, sizeof *p);
+        (void)memset(p, 0, sizeof *p);
         return st;
     }
     p->k[0] = 0;
@@ -648,7 +652,7 @@ dh_status dh_path_move_q(dh_profile_q *prof, uint32_t *e, const dh_path_q *p, co
     st = pathq_rates(prof, e, p, lim);
     if (st == DH_OK) st = dh_motion_profile_q_(prof);
     if (st != DH_OK) {
-        memset(prof, 0, sizeof *prof);
+        (void)memset(prof, 0, sizeof *prof);
         *e = 30u;
     }
     return st;
