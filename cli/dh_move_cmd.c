@@ -320,10 +320,11 @@ static int move_plan_segments(const move_args *a, move_plan *p)
 
 /* ---- periods ---------------------------------------------------------------- */
 
-static int move_line(move_plan *p, const float *q, int state)
+/* a period's line up to its joint values: the cap on the periods, the
+ * count of periods not ok, the time */
+static int move_line_start(move_plan *p, int state)
 {
     char text[64];
-    unsigned j;
     if (p->periods >= MOVE_MAX_PERIODS) {
         fprintf(stderr, "dhmath: error: move: more than %.0f control periods; use a larger --dt\n", MOVE_MAX_PERIODS);
         return EXIT_ERR;
@@ -331,7 +332,14 @@ static int move_line(move_plan *p, const float *q, int state)
     p->periods += 1.0;
     if (state != DH_TRACK_OK) p->bad += 1.0;
     (void)snprintf(text, sizeof text, "%.9g", p->periods * p->dt);
-    if (cli_out_add(&p->out, text)) return EXIT_ERR;
+    return cli_out_add(&p->out, text);
+}
+
+static int move_line(move_plan *p, const float *q, int state)
+{
+    char text[64];
+    unsigned j;
+    if (move_line_start(p, state)) return EXIT_ERR;
     for (j = 0; j < p->r.n; j++) {
         (void)snprintf(text, sizeof text, ",%.9g", q[j] == 0.0f ? 0.0 : (double)q[j]);
         if (cli_out_add(&p->out, text)) return EXIT_ERR;
@@ -464,6 +472,207 @@ static int move_run(const move_args *a, move_plan *p)
     return rc;
 }
 
+/* ---- --fixed: the fixed-point executor and tracker ---------------------------- */
+
+/* --fixed with an option the fixed-point motion API does not offer: exit 2 */
+static int move_fixed_check(const move_args *a)
+{
+    if (a->blend)
+        return cli_error("move --fixed --blend", "blended corners are not in the fixed-point motion API; run --blend "
+                         "without --fixed");
+    if (a->jerk)
+        return cli_error("move --fixed --jerk", "jerk-limited moves are not in the fixed-point executor; run --jerk "
+                         "without --fixed");
+    return 0;
+}
+
+/* one CSV line of fixed joint values (Q16.16 degrees, dh_qpos lengths) */
+static int move_line_q(move_plan *p, const int32_t *q, int state)
+{
+    const double one = (double)((int32_t)1 << DH_QPOS_FRAC);
+    char text[64];
+    unsigned j;
+    if (move_line_start(p, state)) return EXIT_ERR;
+    for (j = 0; j < p->r.n; j++) {
+        const double v = q[j] / ((p->r.joint[j].type == DH_JOINT_REVOLUTE) ? 65536.0 : one);
+        (void)snprintf(text, sizeof text, ",%.9g", v == 0.0 ? 0.0 : v);
+        if (cli_out_add(&p->out, text)) return EXIT_ERR;
+    }
+    (void)snprintf(text, sizeof text, ",%s\n", k_state_word[state]);
+    return cli_out_add(&p->out, text);
+}
+
+/* n joint values in degrees / length units into Q16.16 / dh_qpos */
+static int move_to_q(const dh_robot *r, const double *v, const char *what, int32_t *q)
+{
+    const double one = (double)((int32_t)1 << DH_QPOS_FRAC);
+    unsigned i;
+    for (i = 0; i < r->n; i++) {
+        const double x = floor(v[i] * ((r->joint[i].type == DH_JOINT_REVOLUTE) ? 65536.0 : one) + 0.5);
+        if (!(fabs(x) < 2147483647.0)) return cli_error(what, "a joint value does not fit the fixed-point format");
+        q[i] = (int32_t)x;
+    }
+    return 0;
+}
+
+/* a Cartesian limit scaled to its fixed format: at least 1 LSB, below 2^31 */
+static int move_lim_q(const char *opt, float v, double scale, int32_t *out)
+{
+    const double x = floor((double)v * scale);
+    if (!(x >= 1.0 && x < 2147483647.0))
+        return cli_error(opt, "out of the fixed-point range (1 LSB .. 32767 units per second^k at Q16.16)");
+    *out = (int32_t)x;
+    return 0;
+}
+
+/* The fixed-point set-up: dt in whole microseconds, the robot's fixed path,
+ * q0 and the limits in their formats, the closed-form model (*mp) */
+static int move_fixed_setup(const move_args *a, move_plan *p, uint32_t *us, int32_t *q, dh_cart_limits_q *lim,
+                            dh_ikc_model_q *m, const dh_ikc_model_q **mp)
+{
+    const double u = p->dt * 1e6, one = (double)((int32_t)1 << DH_QPOS_FRAC);
+    double q0d[DH_MAX_JOINTS];
+    int rc;
+    if (!(u >= 1.0 && u <= 1e6) || fabs(u - floor(u + 0.5)) > 1e-6 * u)
+        return cli_error("--dt", "with --fixed the control period must be a whole number of microseconds, at most 1 s");
+    *us = (uint32_t)floor(u + 0.5);
+    if ((p->r.flags & DH_ROBOT_HAS_Q) == 0u)
+        return cli_error("move --fixed", "the robot's constants do not fit the fixed-point formats");
+    if ((rc = cli_parse_list(a->q0, p->r.n, q0d, "--q0")) != 0) return rc;
+    if ((rc = move_to_q(&p->r, q0d, "--q0", q)) != 0) return rc;
+    memset(lim, 0, sizeof *lim);
+    if (p->lim.vmax > 0.0f) {
+        if ((rc = move_lim_q("--speed", p->lim.vmax, one, &lim->vmax)) != 0) return rc;
+        if ((rc = move_lim_q("--accel", p->lim.amax, one, &lim->amax)) != 0) return rc;
+        if ((rc = move_lim_q("--rspeed", p->lim.wmax, 65536.0, &lim->wmax)) != 0) return rc;
+        if ((rc = move_lim_q("--raccel", p->lim.wdmax, 65536.0, &lim->wdmax)) != 0) return rc;
+    }
+    *mp = (dh_ikc_analyse_q(&p->r, m) == DH_OK && m->kind != DH_IKC_NONE) ? m : NULL;
+    return 0;
+}
+
+/* joint segment i (fixed) from q (updated) */
+static int run_joint_q(move_plan *p, unsigned i, const move_seg *s, dh_move_q *mv, uint32_t us, int32_t *q)
+{
+    int32_t q1[DH_MAX_JOINTS], vq[DH_MAX_JOINTS], aq[DH_MAX_JOINTS];
+    double v[DH_MAX_JOINTS], cap, k = 0.0;
+    dh_move_report_q rep;
+    unsigned j;
+    int rc;
+    dh_status st;
+    if ((rc = cli_parse_list(s->a, p->r.n, v, "--joint")) != 0) return rc;
+    if ((rc = move_to_q(&p->r, v, "--joint", q1)) != 0) return rc;
+    for (j = 0; j < p->r.n; j++) {
+        vq[j] = p->r.joint[j].vmax_q;
+        aq[j] = p->r.joint[j].amax_q;
+    }
+    st = dh_move_joint_q(mv, p->r.n, q, q1, vq, aq, NULL);
+    if (st != DH_OK) return seg_error(i, s, "the fixed-point joint move cannot be planned", dh_status_str(st));
+    cap = move_cap(p, (float)(mv->dur * 1e-6));
+    do {
+        if (k >= cap) return cap_reached(i, s, cap);
+        k += 1.0;
+        st = dh_move_joint_step_q(mv, us, q, &rep);
+        if (st != DH_OK) return seg_error(i, s, "dh_move_joint_step_q", dh_status_str(st));
+        if ((rc = move_line_q(p, q, DH_TRACK_OK)) != 0) return rc;
+    } while (!rep.done);
+    return 0;
+}
+
+/* the fixed path of line or arc segment i from F: its end from the float
+ * plan's end frame, an arc's via point its float arc's midpoint */
+static int plan_path_q(move_plan *p, unsigned i, const move_seg *s, const dh_frame_q *F, dh_path_q *path,
+                       dh_frame_q *B)
+{
+    dh_mat4_f32 M;
+    dh_qpos via[3];
+    unsigned k;
+    dh_status st;
+    if (dh_frame_from_mat4_q(&p->path[i].B, B) != DH_OK)
+        return seg_error(i, s, "the end frame is not representable in fixed point", NULL);
+    if (s->kind == SEG_LINE) {
+        st = dh_path_line_q(path, F, B);
+    } else {
+        (void)dh_path_eval_f32(&p->path[i], 0.5f, &M);
+        for (k = 0; k < 3u; k++) {
+            const double x = floor((double)DH_M4(&M, k, 3) * (double)((int32_t)1 << DH_QPOS_FRAC) + 0.5);
+            if (!(fabs(x) < 2147483647.0)) return seg_error(i, s, "the arc is not representable in fixed point", NULL);
+            via[k] = (dh_qpos)x;
+        }
+        st = dh_path_arc_q(path, F, via, B);
+    }
+    if (st != DH_OK) return seg_error(i, s, "no fixed-point path from the previous segment's end", path_why(st));
+    return 0;
+}
+
+/* line or arc segment i (fixed), tracked from the tracker's configuration */
+static int run_path_q(move_plan *p, unsigned i, const move_seg *s, dh_move_q *mv, const dh_path_q *path,
+                      const dh_cart_limits_q *lim, dh_track_q *t, int32_t *q)
+{
+    dh_move_report_q rep;
+    dh_track_report_q trep;
+    dh_frame_q T;
+    double cap, k = 0.0;
+    int rc;
+    dh_status st = dh_move_path_q(mv, path, lim);
+    if (st != DH_OK) return seg_error(i, s, "the fixed-point move along the path cannot be planned", path_why(st));
+    cap = move_cap(p, (float)(mv->dur * 1e-6));
+    do {
+        if (k >= cap) return cap_reached(i, s, cap);
+        k += 1.0;
+        if ((st = dh_move_target_q(mv, &T)) == DH_OK) st = dh_track_step_q(t, &T, q, &trep);
+        if (st == DH_OK) st = dh_move_advance_q(mv, t->dt_us, trep.state, &rep);
+        if (st != DH_OK) return seg_error(i, s, "a control period failed", dh_status_str(st));
+        if ((rc = move_line_q(p, q, (int)trep.state)) != 0) return rc;
+    } while (!rep.done);
+    return 0;
+}
+
+/* move --fixed: every segment through the fixed executor and tracker */
+static int move_run_fixed(const move_args *a, move_plan *p)
+{
+    static dh_ikc_model_q m;
+    static dh_track_q t;
+    static dh_move_q mv;
+    static dh_path_q path;
+    const dh_ikc_model_q *mp = NULL;
+    int32_t q[DH_MAX_JOINTS];
+    dh_cart_limits_q lim;
+    dh_frame_q F, B;
+    uint32_t us = 0u;
+    unsigned i;
+    int tracking = 0, rc;
+    dh_status st;
+    if ((rc = move_fixed_setup(a, p, &us, q, &lim, &m, &mp)) != 0) return rc;
+    for (i = 0; i < p->r.n; i++) {
+        char text[32];
+        (void)snprintf(text, sizeof text, i == 0u ? "t,q%u" : ",q%u", i + 1u);
+        if (cli_out_add(&p->out, text)) return EXIT_ERR;
+    }
+    if (cli_out_add(&p->out, ",status\n")) return EXIT_ERR;
+    if ((st = dh_fk_q(&p->r, q, &F)) != DH_OK) return cli_error("move --fixed: FK of --q0", dh_status_str(st));
+    for (i = 0; i < a->nseg; i++) {
+        const move_seg *s = &a->seg[i];
+        if (s->kind == SEG_JOINT) {
+            if ((rc = run_joint_q(p, i, s, &mv, us, q)) != 0) return rc;
+            if ((st = dh_fk_q(&p->r, q, &F)) != DH_OK) return seg_error(i, s, "FK of the end", dh_status_str(st));
+            tracking = 0;
+            continue;
+        }
+        if ((rc = plan_path_q(p, i, s, &F, &path, &B)) != 0) return rc;
+        /* the tracker starts (again) where the robot is at rest */
+        if (!tracking) {
+            st = dh_track_init_q(&t, &p->r, mp, q, us);
+            if (st == DH_ERR_LIMIT) return cli_error("--q0", "a joint value is outside its limits");
+            if (st != DH_OK) return cli_error("move --fixed: the tracker", dh_status_str(st));
+        }
+        tracking = 1;
+        if ((rc = run_path_q(p, i, s, &mv, &path, &lim, &t, q)) != 0) return rc;
+        F = B;
+    }
+    return 0;
+}
+
 int cli_cmd_move(int argc, char **argv)
 {
     static move_args a;
@@ -473,15 +682,13 @@ int cli_cmd_move(int argc, char **argv)
     int rc;
     dh_status st;
     if ((rc = move_parse(argc, argv, &a)) != 0) return rc;
-    if (a.fixed)
-        return cli_error("move --fixed", "needs a fixed-point motion API (joint moves, paths and the move executor in "
-                         "fixed point), which this library does not have yet; run move without --fixed");
+    if (a.fixed && (rc = move_fixed_check(&a)) != 0) return rc;
     for (i = 0; i < a.nseg; i++) cart += a.seg[i].kind != SEG_JOINT;
     memset(&p, 0, sizeof p);
     p.blend = -1.0f;
     if (a.blend && (rc = move_blend(&a, &p.blend)) != 0) return rc;
     if ((rc = cli_parse_dt(a.dt, &p.dt)) != 0) return rc;
-    if ((rc = cli_load_robot(a.robot, 0, &p.r, &p.rf)) != 0) return rc;
+    if ((rc = cli_load_robot(a.robot, a.fixed, &p.r, &p.rf)) != 0) return rc;
     if ((rc = cli_parse_list(a.q0, p.r.n, q0d, "--q0")) != 0) return rc;
     for (i = 0; i < p.r.n; i++) p.q0[i] = (float)q0d[i];
     st = dh_robot_check_limits_f32(&p.r, p.q0);
@@ -515,7 +722,7 @@ int cli_cmd_move(int argc, char **argv)
         }
     }
     if ((rc = move_plan_segments(&a, &p)) != 0) return rc;
-    rc = move_run(&a, &p);
+    rc = a.fixed ? move_run_fixed(&a, &p) : move_run(&a, &p);
     if (rc == EXIT_ERR || rc == EXIT_USAGE) {
         free(p.out.buf);
         return rc;

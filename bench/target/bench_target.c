@@ -712,9 +712,14 @@ static union {
     struct {   /* trackers (bt_track; their robots in bt_puma_m / bt_puma_mm) */
         dh_ikc_model_q mq;
         dh_track_q tq;
-        dh_ikc_sol_q solq[DH_IKC_MAX_SOL];
-        int32_t Jq[36];
-        dh_dls_work_q w;
+        union {   /* bt_track_q's, then bt_period_q's */
+            struct {
+                dh_ikc_sol_q solq[DH_IKC_MAX_SOL];
+                int32_t Jq[36];
+                dh_dls_work_q w;
+            } k;
+            dh_move_q mvq;   /* its path built in place: mvq.path */
+        } u;
 #if BT_IKC_FLOAT
         dh_ikc_model_f32 mf;
         dh_track_f32 tf;
@@ -1241,7 +1246,7 @@ static BT_NOINLINE void bt_track_q(const bt_move *mv, dh_robot *r, const bt_acc 
         }
         st |= (uint32_t)dh_fk_q(r, q, &T);
         t0 = bt_now();
-        st |= (uint32_t)dh_ikc_q(&bt_mem.t.mq, &T, t->q, 0u, bt_mem.t.solq, &ns);
+        st |= (uint32_t)dh_ikc_q(&bt_mem.t.mq, &T, t->q, 0u, bt_mem.t.u.k.solq, &ns);
         t1 = bt_now();
         bt_acc_add(&aik, t0, t1);
         t0 = bt_now();
@@ -1250,8 +1255,8 @@ static BT_NOINLINE void bt_track_q(const bt_move *mv, dh_robot *r, const bt_acc 
         bt_acc_add(&atr, t0, t1);
         states[rep.state]++;
         t0 = bt_now();
-        st |= (uint32_t)dh_jacobian_q(r, q, bt_mem.t.Jq, &T);
-        st |= (uint32_t)dh_manipulability_q(bt_mem.t.Jq, 6u, &bt_mem.t.w, &w, &sg);
+        st |= (uint32_t)dh_jacobian_q(r, q, bt_mem.t.u.k.Jq, &T);
+        st |= (uint32_t)dh_manipulability_q(bt_mem.t.u.k.Jq, 6u, &bt_mem.t.u.k.w, &w, &sg);
         t1 = bt_now();
         bt_acc_add(&ams, t0, t1);
     }
@@ -1367,6 +1372,68 @@ static BT_NOINLINE void bt_period_f32(const bt_move *mv, dh_robot *r)
 }
 #endif
 
+/* twin: bt_period_f32 on the fixed types and calls, the robot in mm
+ * (0.25 m/s and 2 m/s^2 as 250 mm/s and 2000 mm/s^2): the period timed
+ * whole, and within it the tracker call on its own ("dh_track_step_q
+ * line": the rest of the period is the move's target and advance) */
+static BT_NOINLINE void bt_period_q(const bt_move *mv, dh_robot *r)
+{
+    dh_track_q *const t = &bt_mem.t.tq;
+    dh_move_q *const m = &bt_mem.t.u.mvq;
+    const dh_cart_limits_q lim = { 250 << 16, 2000 << 16, 90 << 16, 360 << 16 };
+    dh_track_report_q rep;
+    dh_move_report_q mrep;
+    dh_frame_q A, B, T;
+    bt_acc atr = { 0u, 0u }, aper = { 0u, 0u }, nul = { 0u, 0u };
+    uint32_t states[3] = { 0u, 0u, 0u };
+    uint32_t st, n = 0u, j;
+    uint64_t t0, t1, t2, t3;
+    int32_t q[6];
+    st = bt_move_robot(mv, r, 1000.0f);
+    st |= (uint32_t)dh_ikc_analyse_q(r, &bt_mem.t.mq);
+    for (j = 0; j < 6u; j++) {
+        q[j] = bt_to_q16(mv->qa[j] + 0.5f * mv->dq[j]);
+    }
+    st |= (uint32_t)dh_fk_q(r, q, &B);
+    for (j = 0; j < 6u; j++) {
+        q[j] = bt_to_q16(mv->qa[j]);
+    }
+    st |= (uint32_t)dh_fk_q(r, q, &A);
+    st |= (uint32_t)dh_path_line_q(&m->path, &A, &B);
+    st |= (uint32_t)dh_move_path_q(m, &m->path, &lim);
+    st |= (uint32_t)dh_track_init_q(t, r, &bt_mem.t.mq, q, 1000u);
+    mrep.done = 0;
+    while (st == 0u && mrep.done == 0 && n < 4u * BT_NTRK) {
+        t0 = bt_now();
+        st |= (uint32_t)dh_move_target_q(m, &T);
+        t1 = bt_now();
+        st |= (uint32_t)dh_track_step_q(t, &T, q, &rep);
+        t2 = bt_now();
+        st |= (uint32_t)dh_move_advance_q(m, 1000u, rep.state, &mrep);
+        t3 = bt_now();
+        bt_acc_add(&aper, t0, t3);
+        bt_acc_add(&atr, t1, t2);
+        states[rep.state]++;
+        n++;
+    }
+    if (mrep.done == 0) {
+        st |= 0x100u;   /* the move did not finish within 4 x BT_NTRK periods */
+    }
+    /* the counter's own cost over as many intervals as periods */
+    for (j = 0; j < n; j++) {
+        t0 = bt_now();
+        t1 = bt_now();
+        bt_acc_add(&nul, t0, t1);
+    }
+    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|%lu|%lu|%lu|%lu\n", "move period q", mv->robot, "mm",
+           (unsigned long)n, (unsigned long long)aper.sum, (unsigned long long)nul.sum,
+           (unsigned long long)aper.max, (unsigned long)states[0], (unsigned long)states[1],
+           (unsigned long)states[2], (unsigned long)st);
+    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|0|0|0|%lu\n", "dh_track_step_q line", mv->robot, "mm",
+           (unsigned long)n, (unsigned long long)atr.sum, (unsigned long long)nul.sum,
+           (unsigned long long)atr.max, (unsigned long)st);
+}
+
 /* Runs after the sanity checks: the micro:bit's RAM has no room for more
  * robots, so each move's robot is built in the storage of bt_puma_m (float,
  * metres) and bt_puma_mm (fixed, mm), which nothing uses afterwards. A
@@ -1388,6 +1455,7 @@ static void bt_track(void)
         bt_period_f32(&bt_moves[m], &bt_puma_m);
 #endif
         bt_track_q(&bt_moves[m], &bt_puma_mm, &null);
+        bt_period_q(&bt_moves[m], &bt_puma_mm);
     }
 }
 

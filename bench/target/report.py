@@ -49,6 +49,8 @@ TRACK_TARGETS = [
      "period of a line move, float, UR5, Cortex-M4F"),
     ("m4f", "move period f32 (Puma 560, m)", ("dh_ikc_f32 line (Puma 560, m)", PERIOD_MARGIN),
      "period of a line move, float, Puma 560, Cortex-M4F"),
+    ("m0", "move period q (UR5, mm)", 45000, "period of a line move, fixed, UR5, Cortex-M0"),
+    ("m0", "move period q (Puma 560, mm)", 45000, "period of a line move, fixed, Puma 560, Cortex-M0"),
 ]
 
 # dhmath operation -> peer operation
@@ -508,7 +510,10 @@ def main():
       "360 deg/s^2) from the FK of the same start to the FK of the tracking move's middle, "
       "run to its end; each period timed whole (`dh_move_target_f32`, `dh_track_step_f32` on "
       "its frame, `dh_move_advance_f32` with the tracker's state), beside the closed-form "
-      "solve of the period's frame (`dh_ikc_f32 line`).")
+      "solve of the period's frame (`dh_ikc_f32 line`). Its fixed twin on every core "
+      "(`dh_move_path_q`, the robots in mm: 250 mm/s, 2000 mm/s^2), each period timed whole "
+      "(`dh_move_target_q`, `dh_track_step_q`, `dh_move_advance_q`) and its tracker call on its "
+      "own in the same periods (`dh_track_step_q line`).")
     w("")
     w("| goal | limit | -O2 | -Os | -Os DH_SMALL | met at -O2 (mean) | met at -O2 (largest call) |")
     w("|---|---|---:|---:|---:|---|---|")
@@ -539,7 +544,8 @@ def main():
         t2 = track_get(c, "O2", name)
         lim_txt = ("`%s` + %d" % (ref[0].split()[0], ref[1])) if isinstance(ref, tuple) else "%d" % ref
         code = (name.split()[0] if name.startswith("dh_")
-                else "dh_move_target_f32` + `dh_track_step_f32` + `dh_move_advance_f32")
+                else "dh_move_target_f32` + `dh_track_step_f32` + `dh_move_advance_f32" if " f32 " in name
+                else "dh_move_target_q` + `dh_track_step_q` + `dh_move_advance_q")
         w("| %s (`%s`) | %s | %s | %s | %s |" % (label, code, lim_txt, " | ".join(cells),
                                                 verdict(None if t2 is None else t2[1], lim2),
                                                 verdict(None if t2 is None else t2[2], lim2)))
@@ -555,7 +561,8 @@ def main():
     for c, o in cols:
         r = runs["%s-%s" % (c, o)]
         for name, (n, mean, mx, ok, lag, unr) in r.track.items():
-            st = "%d / %d / %d" % (ok, lag, unr) if name.startswith(("dh_track", "move period")) else ""
+            st = ("%d / %d / %d" % (ok, lag, unr) if name.startswith(("dh_track", "move period")) and " line (" not in name
+                  else "")
             w("| %s -%s | `%s` | %d | %.0f | %.0f | %s |" % (core_name[c], o, name, n, mean, mx, st))
     w("")
     w("## Inverse kinematics (`dh_ik_f32`, Puma 560 in metres)")

@@ -24,6 +24,10 @@
  *                    dh_profile_quintic_q, dh_profile_stretch_q,
  *                    dh_profile_eval_q
  *   dh_joint_move_q.c dh_joint_move_q, dh_joint_move_eval_q
+ *   dh_path_q.c      dh_path_line_q, dh_path_arc_q, dh_path_eval_q,
+ *                    dh_path_move_q, dh_path_move_eval_q
+ *   dh_move_q.c      dh_move_joint_q, dh_move_joint_step_q, dh_move_path_q,
+ *                    dh_move_target_q, dh_move_advance_q
  */
 /**
  * @file motion.h
@@ -1245,6 +1249,274 @@ dh_status dh_joint_move_q(dh_profile_q *prof, uint32_t n, const int32_t *q0, con
  */
 dh_status dh_joint_move_eval_q(const dh_profile_q *prof, uint32_t n, const int32_t *q0, const int32_t *q1,
                                uint32_t t, int32_t *q, int32_t *qd, int32_t *qdd);
+
+/* ======================================================================
+ * Fixed-point Cartesian paths, moves and the move executor
+ * (integer only: no float, no 64-bit division)
+ * ==================================================================== */
+
+/**
+ * @brief A fixed-point Cartesian path from frame A to frame B (the twin of
+ *        dh_path_f32), written by dh_path_line_q / dh_path_arc_q and read
+ *        by dh_path_eval_q (read-only for the user, who reads length,
+ *        angle, radius and sweep): position along the line or arc in
+ *        proportion to s, orientation along the shortest arc from R_A to
+ *        R_B in proportion to s (as dh_pose_interp_q).
+ */
+typedef struct {
+    dh_frame_q A;      /**< start frame (s = 0) */
+    dh_frame_q B;      /**< end frame (s = 1) */
+    dh_quat_q qa;      /**< unit quaternion of R_A (Q2.30) */
+    dh_quat_q qb;      /**< unit quaternion of R_B, of the sign with qa . qb >= 0 */
+    dh_q30 k[3];       /**< unit axis of qa* qb (Q2.30; 0 without rotation) */
+    dh_q16 h;          /**< half the angle of qa* qb, Q16.16 degrees in [0, 90] */
+    dh_qpos u0[3];     /**< arc: p_A - centre (0 for a line) */
+    dh_qpos w0[3];     /**< arc: u0 turned a quarter turn along the motion (0 for a line) */
+    dh_qpos u1[3];     /**< arc: p_B - centre (0 for a line) */
+    dh_qpos w1[3];     /**< arc: u1 turned a quarter turn along the motion (0 for a line) */
+    dh_qpos length;    /**< position length of the path (dh_qpos) */
+    dh_q16 angle;      /**< rotation angle from R_A to R_B, Q16.16 degrees in [0, 180] (dh_pose_angle_q) */
+    dh_qpos radius;    /**< arc radius (0 for a line) */
+    dh_q16 sweep;      /**< arc angle about the centre, Q16.16 degrees in (0, 360) (0 for a line) */
+    uint32_t sw;       /**< arc: the sweep in 2^-23 degrees (what the evaluation uses) */
+    uint32_t kind;     /**< a dh_path_kind value */
+} dh_path_q;
+
+/**
+ * @brief Fixed twin of dh_path_line_f32: p = the straight line from A to
+ *        B, position p_A + s (p_B - p_A), orientation slerped along the
+ *        shortest arc.
+ * @param p output path (kind DH_PATH_LINE); p->length = |p_B - p_A|
+ *        (floor of the exact root, within 1 LSB), p->angle as
+ *        dh_pose_angle_q.
+ * @param A, B frames with orthonormal rotations (dh_frame_ortho_error_q
+ *        <= DH_ROT_TOL_Q, det > 0); equal positions are fine (length 0).
+ * @return DH_OK; DH_ERR_NOT_RIGID if A or B is not a rotation as above;
+ *         DH_ERR_OVERFLOW when a component of p_B - p_A or the length
+ *         does not fit int32. p untouched on error; p must not alias A or B.
+ */
+dh_status dh_path_line_q(dh_path_q *p, const dh_frame_q *A, const dh_frame_q *B);
+
+/**
+ * @brief Fixed twin of dh_path_arc_f32: p = the circular arc from p_A
+ *        through the point via to p_B, orientation slerped along the
+ *        shortest arc from R_A to R_B. Method: src/motion/dh_path_q.c.
+ * @param p output path (kind DH_PATH_ARC): radius (dh_qpos), sweep (Q16.16
+ *        degrees; the evaluation uses sw, 2^-23 degrees), length = radius
+ *        times the sweep in radians, angle as dh_pose_angle_q.
+ * @param A, B frames with orthonormal rotations (as dh_path_line_q).
+ * @param via a point on the arc (3 dh_qpos).
+ * Every side of the triangle p_A, via, p_B, the radius and the length must
+ * be below 2^30 LSB (16384 units at Q16.16) and the whole circle within
+ * int32; the triangle must not be thin: y L > M^2 / 1024 (y the distance
+ * of via from the chord p_A p_B of length L, M the longest side; the
+ * float twin's |a x b| > 2^-10 M^2), so the radius is at most 512 M.
+ * @return DH_OK; DH_ERR_NOT_RIGID if A or B is not a rotation;
+ *         DH_ERR_OVERFLOW when a side, the radius, the length or the
+ *         circle is beyond the range above; DH_ERR_SINGULAR for
+ *         collinear or coincident points (the thin triangle above). On
+ *         error *p is all zero (it holds no path: its fields are the
+ *         planning's scratch); p must not alias A, B or via.
+ * The evaluated points lie within 4 LSB + 2^-26 R of the circle through
+ * the three points (docs/design.md, "Fixed-point paths and moves").
+ */
+dh_status dh_path_arc_q(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3], const dh_frame_q *B);
+
+/**
+ * @brief Fixed twin of dh_path_eval_f32: T = the frame of the path p at s:
+ *        position at the fraction s of the line or the sweep of the arc,
+ *        rotation at the fraction s of p->angle along the shortest arc
+ *        (the slerp of dh_pose_interp_q: qa (cos s h, sin s h k) about
+ *        the path's fixed axis k, from qb for s > 1/2).
+ * @param p path from dh_path_line_q or dh_path_arc_q.
+ * @param s path parameter, Q2.30, any int32: clamped to [0, 0x40000000];
+ *        s <= 0 gives T == p->A and s >= 0x40000000 gives T == p->B
+ *        exactly.
+ * @param T output frame (must not alias p).
+ * Both evaluated from the nearer end. Line: position within 0.5 LSB of
+ * p_A + s (p_B - p_A). Arc: angle s sweep to 2^-23 degrees, position
+ * within 4 LSB + 2^-26 R of the circle. Rotation entries as
+ * dh_pose_interp_q (1.5e-6).
+ * @return DH_OK; DH_ERR_ARG when p holds no path (all zero, or quaternions
+ *         not unit). T untouched on error.
+ */
+dh_status dh_path_eval_q(const dh_path_q *p, dh_q30 s, dh_frame_q *T);
+
+/**
+ * @brief Cartesian limits of a fixed-point move (the twin of
+ *        dh_cart_limits_f32): magnitudes of the tool point's speed and
+ *        TOTAL acceleration and of the tool's angular speed and
+ *        acceleration, each > 0.
+ */
+typedef struct {
+    int32_t vmax;  /**< linear speed, dh_qpos per s (32767 units/s at Q16.16) */
+    int32_t amax;  /**< linear acceleration, total, dh_qpos per s^2 */
+    int32_t wmax;  /**< angular speed, Q16.16 deg/s */
+    int32_t wdmax; /**< angular acceleration, Q16.16 deg/s^2 */
+} dh_cart_limits_q;
+
+/**
+ * @brief Fixed twin of dh_path_move_f32: prof = the time-optimal
+ *        trapezoid of the path parameter along p within lim, on the
+ *        distance D = 2^e LSB (s = position 2^(30 - e), Q2.30 exact).
+ * Rates of s as the float twin: s' <= min(V / length, wmax / angle),
+ * s'' <= min(At / length, wdmax / angle) (terms of length or angle 0 left
+ * out); on a line V = vmax, At = amax; on an arc of radius R
+ * V = min(vmax, sqrt(amax R / sqrt 2)) and At = amax sqrt(1 - (V^2 /
+ * (amax R))^2), both rounded down. e is the largest exponent <= 30 for
+ * which both rates times 2^e fit int32, and each is floor(rate 2^e) (never
+ * above the float rate): the profile's rate cap of 32767 units/s^k does
+ * not apply to the tool's speed, and the position resolution of the
+ * profile is 2^-e of the path.
+ * @param prof output (dh_profile_trap_q of d = 2^e; d = 0 and T = 0 when
+ *        length and angle are 0).
+ * @param e output exponent, 0..30 (30 for no motion).
+ * @param p path from dh_path_line_q or dh_path_arc_q.
+ * @param lim limits, each > 0.
+ * Speed, acceleration and angular rates of the profile's motion within
+ * lim up to 1e-8 relative (the profile's held shape, dh_profile_trap_q,
+ * and the rounding of the length); T within the rounding of the rates
+ * (1 LSB of the smaller of prof->v, prof->a) of the float twin's.
+ * @return DH_OK; DH_ERR_ARG for a limit <= 0 or a p that holds no path;
+ *         DH_ERR_OVERFLOW when a rate of s does not fit int32 at e = 0 or
+ *         rounds to 0, or as dh_profile_trap_q (T reaching 2^31 us). On
+ *         error *prof is all zero and *e is 30 (no move: the frame stays
+ *         at p->A).
+ */
+dh_status dh_path_move_q(dh_profile_q *prof, uint32_t *e, const dh_path_q *p, const dh_cart_limits_q *lim);
+
+/**
+ * @brief Fixed twin of dh_path_move_eval_f32: T = the frame of the move
+ *        (prof, e, p) at time t (us): dh_path_eval_q at s = the profile's
+ *        position times 2^(30 - e); t == 0 gives p->A and t >= prof->T
+ *        gives p->B exactly; a profile with d == 0 keeps p->A.
+ * @param prof, e, p the move of dh_path_move_q and its path.
+ * @param t time (us), any uint32.
+ * @param T output frame (must not alias p).
+ * @return DH_OK; DH_ERR_ARG when p holds no path, e > 30, or prof is not
+ *         a profile of d 0 or 2^e (T untouched).
+ */
+dh_status dh_path_move_eval_q(const dh_profile_q *prof, uint32_t e, const dh_path_q *p, uint32_t t, dh_frame_q *T);
+
+/**
+ * @brief One fixed-point move being executed (the twin of dh_move_f32),
+ *        written by dh_move_joint_q / dh_move_path_q and advanced once
+ *        per control period by dh_move_joint_step_q / dh_move_advance_q
+ *        (read-only for the user, who reads dur and clock).
+ */
+typedef struct {
+    dh_profile_q prof[DH_MAX_JOINTS]; /**< joint move: one per joint; path move: prof[0], of s on 2^e */
+    dh_path_q path;                   /**< path move: a copy of the path */
+    int32_t q0[DH_MAX_JOINTS];        /**< joint move: start configuration */
+    int32_t q1[DH_MAX_JOINTS];        /**< joint move: end configuration */
+    uint32_t dur;                     /**< duration of the move (us) */
+    uint32_t clock;                   /**< time into the move (us), in [0, dur] */
+    uint32_t cfrac;                   /**< path move: fraction of a us of the clock, Q2.30 */
+    dh_q30 feed;                      /**< path move: feed override r, Q2.30 in [0, 1] (1 otherwise) */
+    dh_q30 fcap;                      /**< path move: ceiling of r, Q2.30 in [0, 1] */
+    uint32_t e;                       /**< path move: the profile's distance is 2^e (dh_path_move_q) */
+    uint32_t lag;                     /**< path move: 1 when the last period was not OK */
+    int32_t ps[3];                    /**< path move: workspace of dh_move_advance_q (s'' high and low near the clock, s') */
+    uint32_t n;                       /**< joint move: number of joints */
+    uint32_t kind;                    /**< a dh_move_kind value */
+} dh_move_q;
+
+/** @brief What one period of a fixed-point move did. */
+typedef struct {
+    uint32_t clock; /**< time into the move after this period (us) */
+    dh_q30 feed;    /**< path move: the feed override r after this period (Q2.30); joint move: 1 */
+    int held;       /**< path move: 1 when the tracker was not OK this period (r falls); joint move: 0 */
+    int done;       /**< 1 when the move is complete */
+} dh_move_report_q;
+
+/**
+ * @brief Fixed twin of dh_move_joint_f32: starts a synchronised joint
+ *        move of n joints from q0 to q1 (dh_joint_move_q within vmax and
+ *        amax each lowered by floor(x / 1024), jmax as given), sampled
+ *        once per period by dh_move_joint_step_q.
+ * @param mv output move (kind DH_MOVE_JOINT, clock 0, dur the move's T).
+ * @param n number of joints, 1..DH_MAX_JOINTS.
+ * @param q0, q1 start and end (n each; Q16.16 degrees or dh_qpos; may
+ *        alias each other or mv->q0, mv->q1).
+ * @param vmax, amax, jmax per-joint limits (LSB/s^k, > 0); jmax may be
+ *        NULL (trapezoids).
+ * @return DH_OK; DH_ERR_ARG for n outside 1..DH_MAX_JOINTS or a limit
+ *         <= 0; DH_ERR_OVERFLOW as dh_joint_move_q. On error mv holds no
+ *         move (kind DH_MOVE_NONE): the step functions return DH_ERR_ARG.
+ */
+dh_status dh_move_joint_q(dh_move_q *mv, uint32_t n, const int32_t *q0, const int32_t *q1, const int32_t *vmax,
+                          const int32_t *amax, const int32_t *jmax);
+
+/**
+ * @brief Fixed twin of dh_move_joint_step_f32: one control period of a
+ *        joint move: the clock advances by dt (capped at dur) and q = the
+ *        move at the new clock (dh_joint_move_eval_q).
+ * Each step q(c') - q(c) is within vmax_i (1 - 2^-10) (c' - c) + 2 e_i and
+ * each change of step within amax_i (1 - 2^-10) dt^2 + 4 e_i,
+ * e_i = 4 + 2^-27 |q1_i - q0_i| LSB (dh_profile_eval_q's position bound).
+ * @param mv move from dh_move_joint_q.
+ * @param dt control period (us), 1..10^6 (may differ between calls).
+ * @param q output: n joint values (must not alias mv); q == q1 exactly
+ *        once the clock is at dur.
+ * @param rep report: clock, feed 1, held 0, done 1 when the clock is at
+ *        dur (every later call returns q1 and done again).
+ * @return DH_OK; DH_ERR_ARG for dt outside 1..10^6 or an mv that holds no
+ *         joint move. On error mv, q and rep are untouched.
+ */
+dh_status dh_move_joint_step_q(dh_move_q *mv, uint32_t dt, int32_t *q, dh_move_report_q *rep);
+
+/**
+ * @brief Fixed twin of dh_move_path_f32: starts a Cartesian move along p
+ *        within lim (dh_path_move_q), executed by the caller's tracker:
+ *        each period dh_move_target_q gives the frame to track, the caller
+ *        calls dh_track_step_q on it, and dh_move_advance_q advances the
+ *        clock with the tracker's state. The first target is p->A; the
+ *        clock holds until the tracker is OK there.
+ * @param mv output move (kind DH_MOVE_PATH, clock 0, dur the profile's T;
+ *        p copied).
+ * @param p path from dh_path_line_q or dh_path_arc_q; may be &mv->path
+ *        (a path built in place saves its copy's RAM).
+ * @param lim Cartesian limits, each > 0.
+ * @return DH_OK; DH_ERR_ARG for a limit <= 0 or a p that holds no path;
+ *         DH_ERR_OVERFLOW as dh_path_move_q. On error mv holds no move
+ *         (its path as it was).
+ */
+dh_status dh_move_path_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_limits_q *lim);
+
+/**
+ * @brief Fixed twin of dh_move_target_f32: T = the frame to track this
+ *        period, the path's frame at the move's clock (dh_path_move_eval_q):
+ *        p->A at clock 0, p->B exactly once the clock is at dur; at r == 0
+ *        it does not move.
+ * @param mv move from dh_move_path_q.
+ * @param T output frame.
+ * @return DH_OK; DH_ERR_ARG for an mv that holds no path move (T untouched).
+ */
+dh_status dh_move_target_q(const dh_move_q *mv, dh_frame_q *T);
+
+/**
+ * @brief Fixed twin of dh_move_advance_f32: ends a control period of a
+ *        path move; state is the tracker's report (dh_track_report_q.state)
+ *        of its step towards this period's target. The clock advances by
+ *        r dt (us, its fraction kept in cfrac), capped at dur.
+ * - state OK, clock == dur: done; the clock stays at dur.
+ * - state OK, clock < dur: r rises towards its ceiling; at r == 1 the
+ *   clock advances by dt exactly.
+ * - state LAGGING or UNREACHABLE (held 1): r falls towards 0, where the
+ *   clock and the target hold: the move slows down instead of jumping.
+ *   The ceiling after such a stretch and its recovery as the float twin
+ *   (7/8 of r at its start, rising by 2 r per second of OK periods).
+ * r changes each period by at most what keeps the commanded s' r and
+ * d(s' r)/dt within the profile's peaks (src/motion/dh_move_q.c).
+ * @param mv move from dh_move_path_q.
+ * @param dt control period (us), 1..10^6 (the tracker's dt_us).
+ * @param state the tracker's state this period, a dh_track_state value.
+ * @param rep report: clock and r after the call, held, done.
+ * @return DH_OK; DH_ERR_ARG for dt outside 1..10^6, a state that is no
+ *         dh_track_state, or an mv that holds no path move. On error mv
+ *         and rep are untouched.
+ */
+dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh_move_report_q *rep);
 
 #ifdef __cplusplus
 }

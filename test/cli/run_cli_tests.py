@@ -1868,7 +1868,9 @@ def group_move(seed, tmp):
          'move --blend: blended corners are not jerk-limited'),
         ([path] + q0 + ['--dt', '0.01', '--blend', '-0.01'] + cart + ln + ln, '--blend: -0.01 must be a finite radius'),
         ([path] + q0 + ['--dt', '0.01', '--blend', 'r'] + cart + ln + ln, "bad number 'r' for --blend"),
-        ([path] + q0 + ['--dt', '0.01', '--fixed'] + jt, 'move --fixed: needs a fixed-point motion API'),
+        ([path] + q0 + ['--dt', '0.01', '--fixed', '--blend', '0.01'] + cart + ln + ln,
+         'move --fixed --blend: blended corners are not in the fixed-point motion API'),
+        ([path] + q0 + ['--dt', '0.01', '--fixed', '--jerk', '10'] + jt, 'move --fixed --jerk: jerk-limited moves'),
         ([path] + q0 + ['--dt', '0.01', '--dt', '0.02'] + jt, "option '--dt' given more than once"),
         ([path] + q0 + ['--dt', '0.01', '--frames'] + jt, "unknown or inapplicable option '--frames'"),
         ([path] + q0 + ['--dt', '0.01', '--joint'], "option '--joint' needs a value"),
@@ -1880,6 +1882,89 @@ def group_move(seed, tmp):
         rc, out, err = run(['move'] + args)
         check(rc == 2 and out == '' and want in err and err.startswith('dhmath: '),
               'move %r: rc %d out %r err %r (want %r)' % (args, rc, out[:80], err, want))
+
+
+def group_move_fixed(seed, tmp):
+    """dhmath move --fixed on the UR5 in mm: a line, an arc and a joint move
+    through the fixed executor and tracker; the rows against the float
+    run's (the same periods, every tool position within the two trackers'
+    tolerances, 2^-19 L each, and the two paths' rounding of each other);
+    every step within the fixed bound floor(vmax 2^16 dt_us / 10^6) LSB and
+    every change of step within the fixed amax bound (finite differences of
+    the printed values, which %.9g prints exactly); the tool on the line
+    within 5e-3 mm; the joint move's end exact; --fixed with --blend or
+    --jerk and a --dt that is no whole number of microseconds: exit 2."""
+    rng = random.Random(seed)
+    ur5 = os.path.join(ROOT, 'examples', 'robots', 'ur5_mm.dh')
+    rob = read_robot(open(ur5).read())
+    n = len(rob['joints'])
+    vm, am, dt = 180.0, 720.0, 0.004
+    path = move_robot(tmp, 'ur5_mm_rates.dh', ur5, vm, am)
+    qa = [10.0, -60.0, 70.0, 20.0, 40.0, 30.0]
+    qb = [round(q + rng.uniform(-30.0, 30.0), 3) for q in qa]
+    A = ref_fk(rob, qa)
+    p0 = [A[r][3] for r in range(3)]
+    dp = [rng.uniform(-80.0, 80.0) for _ in range(3)]
+    pB = [p0[r] + dp[r] for r in range(3)]
+    rB = [rng.uniform(-1, 1) for _ in range(3)] + [rng.uniform(-20.0, 20.0)]
+    endB = 'trans(%.6f,%.6f,%.6f) %s rot(%.6f,%.6f,%.6f,%.6f)' % tuple(pB + [to_expr(A).split(' ', 1)[1]] + rB)
+    ax = [0.0, 0.0, 1.0] if abs(dp[2]) < 0.9 * math.sqrt(sum(d * d for d in dp)) else [1.0, 0.0, 0.0]
+    nv = [dp[1] * ax[2] - dp[2] * ax[1], dp[2] * ax[0] - dp[0] * ax[2], dp[0] * ax[1] - dp[1] * ax[0]]
+    nn = math.sqrt(sum(v * v for v in nv))
+    via = [p0[r] + 0.5 * dp[r] + 50.0 * nv[r] / nn for r in range(3)]
+    args = [path, '--q0', ','.join(map(str, qa)), '--dt', str(dt), '--speed', '250', '--accel', '1000', '--rspeed',
+            '60', '--raccel', '240', '--line', endB, '--arc', 'trans(%.6f,%.6f,%.6f)' % tuple(via), to_expr(A),
+            '--joint', ','.join('%.9g' % q for q in qb)]
+    rc, out, err = run(['move'] + args + ['--fixed'])
+    check(rc == 0 and err == '', 'move --fixed: rc %d err %r' % (rc, err))
+    head, rows = read_csv(out, n)
+    rc2, out2, err2 = run(['move'] + args)
+    head2, frows = read_csv(out2, n)
+    check(rc2 == 0 and head == head2 and rows and None not in rows, 'move --fixed: header %r' % head)
+    if not rows or None in rows or not frows or None in frows:
+        return
+    check(all(r[2] == 'ok' for r in rows), 'move --fixed: not ok: %r' % [r for r in rows if r[2] != 'ok'][:2])
+    check(len(rows) == len(frows), 'move --fixed: %d periods, the float run %d' % (len(rows), len(frows)))
+    L = sum(abs(j[1]) + abs(j[2]) for j in ((0, 89.159, 0), (0, 425, 0), (0, 392.25, 0), (0, 109.15, 0),
+                                            (0, 94.65, 0), (0, 82.3, 0)))
+    tol = 2.0 * 2.0 ** -19 * L + 1e-3
+    worst = 0.0
+    for r, f in zip(rows, frows):
+        F, G = ref_fk(rob, r[1]), ref_fk(rob, f[1])
+        worst = max(worst, math.sqrt(sum((F[i][3] - G[i][3]) ** 2 for i in range(3))))
+    check(worst <= tol, 'move --fixed: tool %.3g mm from the float run (bound %.3g)' % (worst, tol))
+    # the fixed bounds: floor(vmax 2^16 dt_us / 10^6) LSB per step and
+    # floor(floor(amax 2^16 dt_us / 10^6) dt_us / 10^6) per change of step
+    us = round(dt * 1e6)
+    vb = math.floor(vm * 65536 * us / 1e6) / 65536.0
+    ab = math.floor(math.floor(am * 65536 * us / 1e6) * us / 1e6) / 65536.0
+    check_joint_limits('move --fixed', qa, rows, [vb / dt] * n, [ab / (dt * dt)] * n, dt, [4 * f32_ulp(360.0)] * n)
+    check(rows[-1][1] == [f32(math.floor(q * 65536 + 0.5) / 65536.0) for q in qb],
+          'move --fixed: last line %r, not %r' % (rows[-1][1], qb))
+    L1 = math.sqrt(sum(d * d for d in dp))
+    off = 0.0
+    for r in rows:
+        F = ref_fk(rob, r[1])
+        p = [F[i][3] for i in range(3)]
+        s = max(0.0, min(1.0, sum((p[i] - p0[i]) * dp[i] for i in range(3)) / (L1 * L1)))
+        d = math.sqrt(sum((p[i] - p0[i] - s * dp[i]) ** 2 for i in range(3)))
+        if max(abs(p[i] - pB[i]) for i in range(3)) <= 5e-3:
+            break
+        off = max(off, d)
+    check(off <= 5e-3, 'move --fixed: the tool %.3g mm off the line' % off)
+    print('move --fixed: %d periods (float %d), tool within %.3g mm of the float run, %.3g mm off the line' %
+          (len(rows), len(frows), worst, off))
+    q0 = ['--q0', ','.join(map(str, qa))]
+    cart = ['--speed', '200', '--accel', '1000', '--rspeed', '60', '--raccel', '240']
+    ln = ['--line', to_expr(A)]
+    for extra, want in ((['--blend', '1'] + ln + ln, 'move --fixed --blend: blended corners are not in the fixed'),
+                        (['--jerk', '100'] + ln, 'move --fixed --jerk: jerk-limited moves are not in the fixed'),
+                        (['--speed', '40000'] + cart[2:] + ln, '--speed: out of the fixed-point range')):
+        a = [path] + q0 + ['--dt', '0.004', '--fixed'] + (cart if '--speed' not in extra else []) + extra
+        rc, out, err = run(['move'] + a)
+        check(rc == 2 and out == '' and want in err, 'move %r: rc %d err %r (want %r)' % (a, rc, err, want))
+    rc, out, err = run(['move', path] + q0 + ['--dt', '0.0000015', '--fixed', '--joint', '0,0,0,0,0,0'])
+    check(rc == 2 and out == '' and 'whole number of microseconds' in err, 'move --fixed --dt: rc %d %r' % (rc, err))
 
 
 def main():
@@ -1903,7 +1988,7 @@ def main():
             'messages': lambda: group_messages(tmp),
             'ikc': lambda: group_ikc(seed, tmp),
             'track': lambda: (group_track(seed, tmp), group_track_fixed(seed, tmp)),
-            'move': lambda: group_move(seed, tmp),
+            'move': lambda: (group_move(seed, tmp), group_move_fixed(seed, tmp)),
         }
         if group not in groups:
             print('unknown group', group)

@@ -1,0 +1,334 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * dh_move_q.c - the fixed-point move executor, the twin of dh_move.c: a
+ * joint move sampled once per control period, and a Cartesian path move
+ * whose frames the caller's tracker (dh_track_step_q) follows. Integer
+ * only: no float, no 64-bit division (bit-serial quotients).
+ *
+ * Clock: whole microseconds from 0 to the move's duration, capped there,
+ * plus a Q2.30 fraction of a microsecond that carries the rest of r dt
+ * from period to period (r the feed override, Q2.30 in [0, 1]); at r == 1
+ * the clock advances by dt exactly and the fraction is unchanged, so a
+ * move the tracker follows runs its profile sample for sample.
+ *
+ * Feed override and its ceiling as the float twin (dh_move.c): r falls
+ * while the tracker is not OK and rises while it is, each period by at
+ * most what keeps the commanded acceleration of s within the profile's
+ * peak A, with the profile's s'' taken at the period's ends and at the
+ * clock (low and high values lo, p). The rise is the root x of
+ * p x^2 + (k + 2 p r) x = A - p r^2 (k = s' / dt) in the float twin; here
+ * its lower bound (A - p r^2) / (k + 2 p r + p), which meets the
+ * inequality for x <= 1 (p x^2 <= p x) without a square root. The fall is
+ * (A + lo r^2) / k as in the float twin. Every quotient is rounded towards
+ * the smaller change (k up, numerators down) and taken bit-serially.
+ */
+#include <string.h>
+
+#include "dhmath/motion.h"
+#include "../internal/dh_build.h"
+#include "../internal/dh_qmath.h"
+#include "motion_impl.h"
+
+/* the ceiling of r after an episode of not-OK periods begun at r: 7/8 (Q2.30) */
+#define MOVEQ_CEIL 0x38000000
+/* 2^32 2 / 10^6, rounded: the ceiling's relative rise, 2 per second */
+#define MOVEQ_CREEP 8590
+/* the longest control period (us) */
+#define MOVEQ_DT_MAX 1000000u
+
+/* 1 when mv holds a move of the given kind with a consistent clock and
+ * override (a path move's path is checked where it is read: by
+ * dh_path_eval_q in dh_move_target_q, once per period) */
+static int moveq_holds(const dh_move_q *mv, uint32_t kind)
+{
+    if (mv->kind != kind) return 0;
+    if (mv->dur > (uint32_t)INT32_MAX || mv->clock > mv->dur || mv->cfrac >= (uint32_t)DH_Q30_ONE) return 0;
+    if (mv->feed < 0 || mv->feed > DH_Q30_ONE || mv->fcap < 0 || mv->fcap > DH_Q30_ONE) return 0;
+    if (kind == (uint32_t)DH_MOVE_PATH) return mv->e <= 30u;
+    return mv->n >= 1u && mv->n <= (uint32_t)DH_MAX_JOINTS;
+}
+
+/* the period's status: DH_ERR_ARG for dt outside 1..10^6 us or an mv that
+ * holds no move of the kind */
+static dh_status moveq_period_ok(const dh_move_q *mv, uint32_t kind, uint32_t dt)
+{
+    if (!moveq_holds(mv, kind)) return DH_ERR_ARG;
+    return (dt >= 1u && dt <= MOVEQ_DT_MAX) ? DH_OK : DH_ERR_ARG;
+}
+
+/* the clock, its fraction, override and ceiling at the start of a move */
+static void moveq_start(dh_move_q *mv, uint32_t dur)
+{
+    mv->dur = dur;
+    mv->clock = 0u;
+    mv->cfrac = 0u;
+    mv->feed = DH_Q30_ONE;
+    mv->fcap = DH_Q30_ONE;
+    mv->lag = 0u;
+    mv->ps[0] = 0;
+    mv->ps[1] = 0;
+    mv->ps[2] = 0;
+}
+
+/* the clock advanced by r dt (r Q2.30 in [0, 1]) with its fraction,
+ * capped at the duration */
+static void moveq_tick(dh_move_q *mv, dh_q30 r, uint32_t dt)
+{
+    const uint64_t adv = (uint64_t)(uint32_t)r * dt + mv->cfrac;
+    const uint64_t c = (uint64_t)mv->clock + (adv >> 30);
+    if (c >= mv->dur) {
+        mv->clock = mv->dur;
+        mv->cfrac = 0u;
+    } else {
+        mv->clock = (uint32_t)c;
+        mv->cfrac = (uint32_t)(adv & 0x3FFFFFFFu);
+    }
+}
+
+/* mv->prof[i] = joint i's distance q1 - q0 (its stored q0, q1) and its
+ * limits vmax and amax lowered by 2^-10, jmax as given (NULL: 0, the
+ * trapezoid), checked in the order of dh_joint_move_q: DH_ERR_OVERFLOW
+ * for a distance beyond int32, DH_ERR_ARG for a limit <= 0 */
+static DH_NOINLINE dh_status moveq_joint_fill(dh_move_q *mv, const int32_t *vmax, const int32_t *amax,
+                                              const int32_t *jmax)
+{
+    uint32_t i;
+    for (i = 0u; i < mv->n; i++) {
+        dh_profile_q *const pr = &mv->prof[i];
+        const int64_t d = (int64_t)mv->q1[i] - mv->q0[i];
+        if (d > INT32_MAX || d < INT32_MIN) return DH_ERR_OVERFLOW;
+        if (vmax[i] <= 0 || amax[i] <= 0 || (jmax != NULL && jmax[i] <= 0)) return DH_ERR_ARG;
+        pr->d = (int32_t)d;
+        pr->v = vmax[i] - (vmax[i] >> 10);
+        pr->a = amax[i] - (amax[i] >> 10);
+        pr->j = (jmax != NULL) ? jmax[i] : 0;
+    }
+    return DH_OK;
+}
+
+/* The joint move is planned here as dh_joint_move_q plans it (each
+ * joint's time-optimal profile in place, dh_motion_profile_q_, then every
+ * profile stretched to the longest), on its stored ends and the lowered
+ * limits: one call level less than through dh_joint_move_q (the 256 B
+ * guard). */
+dh_status dh_move_joint_q(dh_move_q *mv, uint32_t n, const int32_t *q0, const int32_t *q1, const int32_t *vmax,
+                          const int32_t *amax, const int32_t *jmax)
+{
+    uint32_t i, T = 0u;
+    dh_status st;
+    DH_ASSERT(mv != NULL && q0 != NULL && q1 != NULL && vmax != NULL && amax != NULL);
+    mv->kind = (uint32_t)DH_MOVE_NONE;
+    if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    /* index by index, so q0 and q1 may alias mv->q0 and mv->q1 */
+    for (i = 0u; i < n; i++) {
+        const int32_t x = q0[i], y = q1[i];
+        mv->q0[i] = x;
+        mv->q1[i] = y;
+    }
+    mv->n = n;
+    st = moveq_joint_fill(mv, vmax, amax, jmax);
+    for (i = 0u; i < n && st == DH_OK; i++) {
+        st = dh_motion_profile_q_(&mv->prof[i]);
+        if (st == DH_OK && mv->prof[i].T > T) T = mv->prof[i].T;
+    }
+    for (i = 0u; i < n && st == DH_OK; i++) st = dh_profile_stretch_q(&mv->prof[i], T);
+    if (st != DH_OK) return st;
+    mv->e = 0u;
+    moveq_start(mv, T);
+    mv->kind = (uint32_t)DH_MOVE_JOINT;
+    return DH_OK;
+}
+
+/* each joint's profile evaluated here, from the nearer end as
+ * dh_joint_move_eval_q does (one call level less: the 256 B guard) */
+dh_status dh_move_joint_step_q(dh_move_q *mv, uint32_t dt, int32_t *q, dh_move_report_q *rep)
+{
+    int32_t p, qd, qdd;
+    uint64_t c;
+    uint32_t i;
+    dh_status st;
+    DH_ASSERT(mv != NULL && q != NULL && rep != NULL);
+    st = moveq_period_ok(mv, (uint32_t)DH_MOVE_JOINT, dt);
+    for (i = 0u; i < mv->n && st == DH_OK; i++) st = dh_profile_eval_q(&mv->prof[i], 0u, &p, &qd, &qdd);
+    if (st != DH_OK) return DH_ERR_ARG;
+    c = (uint64_t)mv->clock + dt;
+    if (c > mv->dur) c = mv->dur;
+    for (i = 0u; i < mv->n; i++) {
+        const dh_profile_q *pr = &mv->prof[i];
+        (void)dh_profile_eval_q(pr, (uint32_t)c, &p, &qd, &qdd);
+        q[i] = ((c >= pr->T || c > pr->T - c) && pr->d != 0) ? (int32_t)((int64_t)mv->q1[i] - ((int64_t)pr->d - p))
+                                                         : (int32_t)((int64_t)mv->q0[i] + p);
+    }
+    mv->clock = (uint32_t)c;
+    rep->clock = mv->clock;
+    rep->feed = DH_Q30_ONE;
+    rep->held = 0;
+    rep->done = mv->clock >= mv->dur;
+    return DH_OK;
+}
+
+dh_status dh_move_path_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_limits_q *lim)
+{
+    dh_status st;
+    DH_ASSERT(mv != NULL && p != NULL && lim != NULL);
+    mv->kind = (uint32_t)DH_MOVE_NONE;
+    st = dh_path_move_q(&mv->prof[0], &mv->e, p, lim);
+    if (st != DH_OK) return st;
+    mv->path = *p;
+    mv->n = 0u;
+    moveq_start(mv, mv->prof[0].T);
+    mv->kind = (uint32_t)DH_MOVE_PATH;
+    return DH_OK;
+}
+
+dh_status dh_move_target_q(const dh_move_q *mv, dh_frame_q *T)
+{
+    int32_t s = 0, sd, sdd;
+    DH_ASSERT(mv != NULL && T != NULL);
+    if (!moveq_holds(mv, (uint32_t)DH_MOVE_PATH)) return DH_ERR_ARG;
+    if (dh_profile_eval_q(&mv->prof[0], mv->clock, &s, &sd, &sdd) != DH_OK) return DH_ERR_ARG;
+    if (s < 0 || (uint32_t)s > (1u << mv->e)) return DH_ERR_ARG;
+    return dh_path_eval_q(&mv->path, (dh_q30)((uint32_t)s << (30u - mv->e)), T);
+}
+
+/* min(floor(n 2^30 / d), 2^30) for d > 0, n >= 0 below 2^62: one quotient
+ * bit per step (no division) */
+static uint32_t moveq_ratio(uint64_t n, uint64_t d)
+{
+    uint64_t r = n;
+    uint32_t q = 0u, k;
+    if (r >= d) return (uint32_t)DH_Q30_ONE;
+    for (k = 0u; k < 30u; k++) {
+        r <<= 1;
+        q <<= 1;
+        if (r >= d) {
+            r -= d;
+            q |= 1u;
+        }
+    }
+    return q;
+}
+
+/* x r^2 (LSB/s^2, x >= 0 below 2^31, r Q2.30 in [0, 1]), rounded up */
+static uint64_t moveq_r2(int64_t x, dh_q30 r)
+{
+    const uint64_t xr = ((uint64_t)x * (uint32_t)r + 0x3FFFFFFFu) >> 30;
+    return (xr * (uint32_t)r + 0x3FFFFFFFu) >> 30;
+}
+
+/* the times of the feed's sample: the start of the last period (r dt
+ * back), the end of the next one (capped at the duration) and the clock */
+static DH_NOINLINE void moveq_sample_times(const dh_move_q *mv, uint32_t dt, uint32_t t[3])
+{
+    const uint64_t back = ((uint64_t)(uint32_t)mv->feed * dt) >> 30;
+    const uint64_t tf = (uint64_t)mv->clock + dt;
+    t[0] = (back < mv->clock) ? mv->clock - (uint32_t)back : 0u;
+    t[1] = (tf < mv->dur) ? (uint32_t)tf : mv->dur;
+    t[2] = mv->clock;
+}
+
+/* ceil(sd 10^6 / dt): k = s' / dt in LSB/s^2, bit-serial (below 2^51) */
+static uint64_t moveq_k(int32_t sd, uint32_t dt)
+{
+    uint64_t nn = (uint64_t)sd * MOVEQ_DT_MAX, k = 0u;   /* < 2^51 */
+    uint32_t bit = 52u;
+    while (bit > 0u) {
+        bit--;
+        if ((nn >> bit) >= dt) {
+            nn -= (uint64_t)dt << bit;
+            k |= (uint64_t)1 << bit;
+        }
+    }
+    return (nn != 0u) ? k + 1u : k;
+}
+
+/* The largest rise (*up) and fall (*dn) of r this period that keep the
+ * commanded acceleration of s within the profile's peak (file comment),
+ * from the sample in mv->ps (dh_move_advance_q); 2^30 (no bound) where s' is 0 */
+static DH_NOINLINE void moveq_feed_bounds(const dh_move_q *mv, uint32_t dt, dh_q30 *up, dh_q30 *dn)
+{
+    const int32_t *ps = mv->ps;
+    const int64_t A = mv->prof[0].a, r = mv->feed;
+    const int64_t hi = (ps[0] > 0) ? ps[0] : 0, lo = ps[1];
+    uint64_t k, num, den;
+    *up = DH_Q30_ONE;
+    *dn = DH_Q30_ONE;
+    if (ps[2] <= 0) return;
+    k = moveq_k(ps[2], dt);
+    num = moveq_r2(hi, (dh_q30)r);
+    /* (A - p r^2) / (k + 2 p r + p), the denominator rounded up */
+    den = k + ((((uint64_t)hi * (uint32_t)r) >> 29) + 1u) + (uint64_t)hi;
+    *up = (dh_q30)(((uint64_t)A > num) ? moveq_ratio((uint64_t)A - num, den) : 0u);
+    num = (lo < 0) ? moveq_r2(-lo, (dh_q30)r) : 0u;
+    *dn = (dh_q30)(((uint64_t)A > num) ? moveq_ratio((uint64_t)A - num, k) : 0u);
+}
+
+/* r after a period whose tracker state was OK (ok 1) or not, within its
+ * largest rise up and fall dn, and the ceiling's update (dh_move.c's
+ * method) */
+static DH_NOINLINE dh_q30 moveq_feed_next(dh_move_q *mv, uint32_t dt, int ok, dh_q30 up, dh_q30 dn)
+{
+    const dh_q30 r = mv->feed;
+    dh_q30 goal, c = mv->fcap;
+    if (ok != 0) {
+        if (r >= c) {
+            const uint64_t inc = ((((uint64_t)(uint32_t)c * dt) >> 10) * MOVEQ_CREEP) >> 22;
+            c = (inc + (uint32_t)c >= (uint64_t)DH_Q30_ONE) ? DH_Q30_ONE : (dh_q30)(c + (int32_t)inc);
+        }
+        goal = c;
+        mv->lag = 0u;
+    } else {
+        if (mv->lag == 0u && mv->clock > 0u && r > 0) c = (dh_q30)dh_q_rshr(dh_q_mul64(MOVEQ_CEIL, r), 30u);
+        goal = 0;
+        mv->lag = 1u;
+    }
+    mv->fcap = c;
+    if (goal > r) return ((int64_t)r + up < goal) ? r + up : goal;
+    return ((int64_t)r - dn > goal) ? r - dn : goal;
+}
+
+dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh_move_report_q *rep)
+{
+    dh_status st;
+    int done = 0, ok = 0;
+    DH_ASSERT(mv != NULL && rep != NULL);
+    st = moveq_period_ok(mv, (uint32_t)DH_MOVE_PATH, dt);
+    if (st != DH_OK) return st;
+    if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
+    ok = state == DH_TRACK_OK;
+    if (ok != 0 && mv->clock >= mv->dur) {
+        done = 1;
+    } else if (ok != 0 && mv->feed >= DH_Q30_ONE && mv->fcap >= DH_Q30_ONE) {
+        mv->lag = 0u;   /* at full feed and ceiling: r stays 1, no bound needed */
+        moveq_tick(mv, DH_Q30_ONE, dt);
+    } else {
+        /* s'' near the clock into mv->ps: its largest (ps[0]) and
+         * smallest (ps[1]) value at the times of moveq_sample_times (the
+         * profile's first and last phases, clamped to 0 by the evaluation,
+         * taken at +-A), and s' at the clock (ps[2]); the evaluations and
+         * the bounds called from here, one level down (the 256 B guard) */
+        const dh_profile_q *pr = &mv->prof[0];
+        int32_t s, sd, a0;
+        uint32_t t[3], i;
+        dh_q30 up, dn;
+        moveq_sample_times(mv, dt, t);
+        mv->ps[0] = -pr->a;
+        mv->ps[1] = pr->a;
+        for (i = 0u; i < 3u; i++) {
+            (void)dh_profile_eval_q(pr, t[i], &s, &sd, &a0);
+            if (i == 1u && t[1] >= mv->dur) a0 = -pr->a;
+            if (a0 > mv->ps[0]) mv->ps[0] = a0;
+            if (a0 < mv->ps[1]) mv->ps[1] = a0;
+            if (i == 0u && t[0] == 0u) mv->ps[0] = pr->a;
+        }
+        mv->ps[2] = sd;
+        moveq_feed_bounds(mv, dt, &up, &dn);
+        mv->feed = moveq_feed_next(mv, dt, ok, up, dn);
+        moveq_tick(mv, mv->feed, dt);
+    }
+    rep->clock = mv->clock;
+    rep->feed = mv->feed;
+    rep->held = !ok;
+    rep->done = done;
+    return DH_OK;
+}
