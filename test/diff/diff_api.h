@@ -268,7 +268,17 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_profile_stretch_q, g_ints, 100000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_profile_eval_q, g_ints, 100000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_joint_move_q, g_ints, 100000, DIFF_OUT_SMALL, C_BITS) \
-    X(dh_joint_move_eval_q, g_ints, 100000, DIFF_OUT_SMALL, C_BITS)
+    X(dh_joint_move_eval_q, g_ints, 100000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_path_line_q, g_fpath, 100000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_path_arc_q, g_fpath, 100000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_path_eval_q, g_fpath, 100000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_path_move_q, g_fpath, 50000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_path_move_eval_q, g_fpath, 50000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_move_joint_q, g_fpath, 50000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_move_joint_step_q, g_fpath, 50000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_move_path_q, g_fpath, 50000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_move_target_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_move_advance_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS)
 
 /* enum of the table rows */
 #define DIFF_ENUM(name, gen, count, len, cmp) E_##name,

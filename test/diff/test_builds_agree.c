@@ -553,6 +553,27 @@ static void g_frames(diff_in *in)
     in->vq.x = i_gen(); in->vq.y = i_gen(); in->vq.z = i_gen();
     in->sel = ru();
 }
+/* two fixed frames and a via point: half of the time rigid frames with
+ * positions within +-2^26 LSB and the via point near their middle (paths
+ * and moves that plan), else of any kind; integer limits and a selector */
+static void g_fpath(diff_in *in)
+{
+    int i, r;
+    g_frames(in);
+    for (i = 0; i < 8; i++) in->k[i] = i_gen();
+    if (rn(2u)) {
+        const uint32_t span = 1u << (10u + rn(17u));
+        int32_t mid[3];
+        for (i = 0; i < 2; i++) {
+            if (dh_frame_rot_axis_q(i_gen(), i_gen(), i_gen(), i_gen(), &in->F[i]) != DH_OK) dh_frame_identity_q(&in->F[i]);
+            for (r = 0; r < 3; r++) in->F[i].p[r] = (int32_t)rn(2u * span + 1u) - (int32_t)span;
+        }
+        for (r = 0; r < 3; r++) mid[r] = in->F[0].p[r] / 2 + in->F[1].p[r] / 2;
+        in->vq.x = mid[0] + (int32_t)rn(span + 1u) - (int32_t)(span / 2u);
+        in->vq.y = mid[1] + (int32_t)rn(span + 1u) - (int32_t)(span / 2u);
+        in->vq.z = mid[2] + (int32_t)rn(span + 1u) - (int32_t)(span / 2u);
+    }
+}
 /* one matrix, vectors, a plane and floats */
 static void g_mat1(diff_in *in)
 {
