@@ -62,7 +62,7 @@
 #define REL_FD 1e-3
 #define NOISE_FRAC 2.5e-4
 #define DEC 5      /* one position kept every DEC periods (the micro:bit's RAM) */
-#define RING 30    /* positions kept: the longest window (2 w for an acceleration) plus one, in DEC periods */
+#define RING 40    /* positions kept: the longest window (2 w for an acceleration) plus one, in DEC periods */
 #define ROT_NOISE 3e-6  /* rad: the rotation of two targets (dh_pose_interp_q's 1.5e-6 each) */
 
 typedef struct {
