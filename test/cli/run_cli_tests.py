@@ -1653,11 +1653,19 @@ def group_move(seed, tmp):
         off = max(math.sqrt(sum((p[i] - p0[i] - sum((p[k] - p0[k]) * dp[k] for k in range(3)) / (L * L) * dp[i]) ** 2
                                 for i in range(3))) for p in pts)
         check(off <= 1e-5, 'move --jerk line: the tool %.3g off the line' % off)
-        w, jw = 10, 0.0
+        # each tool point is within e of its path point: the tracker's
+        # default tolerance 2e-6 L (L the sum of |a| and |d|) plus the float
+        # FK's error it is measured with (1e-6); a third difference of four
+        # such points carries up to 8 e of them, so the windows are long
+        # enough (25 periods) for that to be a small part of J
+        e = 2e-6 * sum(abs(j['a']) + abs(j['d']) for j in rob['joints']) + 1e-6
+        w, jw = 25, 0.0
         for k in range(len(pts) - 3 * w):
             d3 = [pts[k + 3 * w][i] - 3 * pts[k + 2 * w][i] + 3 * pts[k + w][i] - pts[k][i] for i in range(3)]
             jw = max(jw, math.sqrt(sum(x * x for x in d3)) / (w * dt) ** 3)
-        check(jw <= jerk * (1 + 1e-3), 'move --jerk line: jerk %.6g over %d periods beyond %g' % (jw, w, jerk))
+        slack = 8.0 * e / (w * dt) ** 3
+        check(jw <= jerk * (1 + 1e-3) + slack, 'move --jerk line: jerk %.6g over %d periods beyond %g + %.3g' %
+              (jw, w, jerk, slack))
         F, E = ref_fk(rob, jl[-1][1]), B
         pe = max(abs(F[i][3] - E[i][3]) for i in range(3))
         check(pe <= 5e-6 and rot_angle(F, E) <= 5e-5, 'move --jerk line: last line %.3g, %.3g rad from the end' %
