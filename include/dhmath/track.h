@@ -228,6 +228,9 @@ typedef struct {
     int32_t lo[DH_MAX_JOINTS];          /**< step box of this period, lower */
     int32_t hi[DH_MAX_JOINTS];          /**< step box of this period, upper */
     int32_t qs[DH_MAX_JOINTS];          /**< nearest closed-form solution */
+    int32_t qu[DH_MAX_JOINTS];          /**< its motion since the last period (when quv) */
+    int qsv;                            /**< qs holds the last period's nearest closed-form solution */
+    int quv;                            /**< qu holds its motion, each joint within dq_max */
     dh_ikc_sol_q sol[DH_IKC_MAX_SOL];   /**< closed-form solutions */
     dh_frame_q T;                       /**< FK at q (when jt) */
     dh_dls_work_q work;                 /**< scratch of the damped step */

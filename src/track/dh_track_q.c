@@ -249,6 +249,8 @@ dh_status dh_track_init_q(dh_track_q *t, const dh_robot *r, const dh_ikc_model_q
     t->cf_pos = TRQ_CF_POS * (int32_t)(((uint32_t)L + ((uint32_t)1 << 27) - 1u) >> 27);
     t->pos_tol = t->cf_pos;
     t->rot_tol = 10737;                                        /* 2e-5 rad, Q3.29 */
+    t->qsv = 0;
+    t->quv = 0;
     /* dh_jacobian_q in two private calls (its checks once here, then its
      * body writing FK straight into t->T), as in every step */
     if (dh_kin_jac_check_q_(r) != DH_OK || dh_kin_jac_q_(r, t->q, t->J, &t->T) != 0) return DH_ERR_OVERFLOW;
@@ -368,6 +370,22 @@ static int64_t trq_mul(uint32_t a, uint32_t b)
     return dh_q_mul64((int32_t)a, (int32_t)b);
 }
 
+/* The motion of the nearest solution since the last period, qn - t->qs,
+ * into t->qu (t->quv 1) when t->qs holds the last period's (t->qsv) and
+ * no joint of it moved more than its step bound; else t->quv 0. */
+static void trq_motion(dh_track_q *t, const int32_t *qn)
+{
+    uint32_t i;
+    int ok = t->qsv;
+    for (i = 0u; i < t->r->n && ok; i++) {
+        const int64_t u = (int64_t)qn[i] - t->qs[i];
+        if (u > t->dq_max[i] || -u > t->dq_max[i]) ok = 0;
+        else t->qu[i] = (int32_t)u;
+    }
+    t->quv = ok;
+    t->qsv = 1;
+}
+
 /* The solution nearest t->q in time (largest |q*_i - q_i| / vmax_i, then
  * the sum of |q*_i - q_i|) among the st's t->ns solutions within the
  * limits (trq_onto1, joint by joint; a solution already slower than the
@@ -420,7 +438,11 @@ static DH_NOINLINE int trq_nearest(dh_track_q *t, dh_status st)
         found = 1;
     }
     t->unreach = (st == DH_ERR_UNREACHABLE || (st == DH_OK && !found)) ? 1 : 0;
-    if (!found) return 0;
+    if (!found) {
+        t->qsv = 0;
+        return 0;
+    }
+    trq_motion(t, t->sol[best].q);
     for (i = 0u; i < n; i++) t->qs[i] = t->sol[best].q[i];
     t->clamp = (t->sol[best].flags & TRQ_CLAMPED) != 0u;
     return 1;
@@ -459,21 +481,27 @@ static DH_NOINLINE int trq_pick(dh_track_q *t)
 }
 
 /* The step towards t->qs at the bound, each joint braking so as to stop
- * at its target value. */
+ * at its target value. When the solution moves from period to period
+ * (t->quv: by t->qu, within the step bound), the braking is relative to
+ * that motion: the step is u + w, w braking towards the distance left
+ * after u, and each joint is clamped into its box, so that a solution
+ * moving at a steady rate is caught instead of followed at a constant
+ * lag. */
 static DH_NOINLINE void trq_head(dh_track_q *t)
 {
     uint32_t i;
     for (i = 0u; i < t->r->n; i++) {
-        const int64_t D = (int64_t)t->qs[i] - t->q[i], A = t->dv_max[i];
+        const int64_t u = t->quv ? t->qu[i] : 0, D = (int64_t)t->qs[i] - t->q[i] - u, A = t->dv_max[i];
         int64_t s = D;
         if (A != TRQ_NONE && A > 0) {
             const int64_t b = trq_brake_max(A, D < 0 ? -D : D);
             if (s > b) s = b;
             if (s < -b) s = -b;
         }
-        t->dq[i] = (int32_t)trq_clamp64(s, INT32_MIN + 1, INT32_MAX);
+        s += u;
+        t->dq[i] = (int32_t)(t->quv ? trq_clamp64(s, t->lo[i], t->hi[i]) : trq_clamp64(s, INT32_MIN + 1, INT32_MAX));
     }
-    trq_fit(t);
+    if (!t->quv) trq_fit(t);
 }
 
 /* ---- damped steps ---------------------------------------------------------- */
@@ -886,6 +914,7 @@ dh_status dh_track_step_q(dh_track_q *t, const dh_frame_q *target, int32_t *q_ou
     trq_box(t);
     if (t->tst != DH_OK) {
         trq_brake(t);
+        t->qsv = 0;
     } else {
         if (trq_ikc_args(t)) {
             t->ist = dh_ikc_raw_q_(t->m, t->q, t->sol, &t->ns);

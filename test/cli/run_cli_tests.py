@@ -1337,8 +1337,8 @@ def target_of_puma(q1):
 
 def group_track_fixed(seed, tmp):
     """dhmath track --fixed on the UR5 in mm: every step within vmax dt
-    (the fixed bound floor(vmax 2^16 dt_us / 10^6) LSB, printed exactly by
-    %.9g), OK only when the double FK of the printed joints is within the
+    (the fixed bound floor(vmax 2^16 dt_us / 10^6) LSB, the printed values
+    rounded back to Q16.16), OK only when the double FK of the printed joints is within the
     fixed tolerances (2^-19 L, 2e-5 rad) plus the rounding of the printed
     target, a jump approached without a jump, the period's errors."""
     rng = random.Random(seed)
@@ -1368,7 +1368,9 @@ def group_track_fixed(seed, tmp):
               (k + 1, line))
         if len(tok) != n + 3:
             continue
-        q = [float(x) for x in tok[:n]]
+        # the Q16.16 values back from %.9g (within 5e-7 of them, below
+        # half an LSB for |q| < 1000 deg)
+        q = [round(float(x) * 65536) / 65536.0 for x in tok[:n]]
         words.append(tok[n])
         step = max(abs(a - b) for a, b in zip(q, prev))
         worst = max(worst, step)

@@ -14,7 +14,8 @@
  * the line segment, and the circle through p_A, via, p_B (its centre from
  * the plane of the three points and the two bisector planes, Cramer's
  * rule). Every period: the target on the path within PATH_TOL =
- * 5e-3 mm (the issue's bound; the path's own bound is far below it,
+ * 5e-3 mm (the issue's bound, at DH_QPOS_FRAC 16; 328 LSB in another
+ * format, with the robots in units of LS mm; the path's own bound is far below it,
  * test_path_q.c); at every OK period the tool (double reference FK of the
  * output) within the tracker's pos_tol plus the fixed FK's 4 n LSB of the
  * target, and within PATH_TOL of the path; the target's step within
@@ -58,7 +59,15 @@
 #define Q16 65536.0
 #define Q30 1073741824.0
 #define PI_D 3.14159265358979323846
-#define PATH_TOL 5e-3  /* mm */
+/* Length unit per mm: 1, or 2^(16 - DH_QPOS_FRAC) in a finer format, whose
+ * range (ikc.h: 2^(30 - DH_QPOS_FRAC) units for the closed form) does not
+ * hold the robots in mm: the robots and paths then have the same lengths
+ * in LSB as at DH_QPOS_FRAC 16. */
+#define LS (DH_QPOS_FRAC > 16 ? ldexp(1.0, 16 - DH_QPOS_FRAC) : 1.0)
+/* length unit: the issue's 5e-3 mm at DH_QPOS_FRAC 16, 328 LSB (the
+ * tracker's default pos_tol, the closed form's bound, is 328 LSB in every
+ * format), so 2^(16 - DH_QPOS_FRAC) times that in another format */
+#define PATH_TOL (5e-3 * ldexp(1.0, 16 - DH_QPOS_FRAC))
 #define REL_FD 1e-3
 #define NOISE_FRAC 2.5e-4
 #define DEC 5      /* one position kept every DEC periods (the micro:bit's RAM) */
@@ -78,11 +87,29 @@ static dh_move_q the_mv;
 static int32_t ring[RING][3];   /* target positions, one every DEC periods */
 static int32_t ring_tool[RING][3];  /* tool positions (LSB, rounded) of OK periods, one every DEC periods */
 
+/* d in units of LS mm: the same lengths in LSB in every format */
+static dhs_robot the_fmt;
+
 static void rig_make(rig *g, const dhs_robot *d, double vdeg, double adeg)
 {
     uint32_t i;
+    int k;
     g->d = d;
-    DHT_EQ_INT(dhs_build_q(d, &g->r), DH_OK);
+    the_fmt = *d;
+    for (i = 0; i < d->n; i++) {
+        the_fmt.j[i].a *= LS;
+        the_fmt.j[i].d *= LS;
+        if (d->j[i].type == DH_JOINT_PRISMATIC) {
+            the_fmt.j[i].qmin *= LS;
+            the_fmt.j[i].qmax *= LS;
+        }
+    }
+    for (k = 0; k < 3; k++) {
+        DHR_M4(&the_fmt.base, k, 3) *= LS;
+        DHR_M4(&the_fmt.tool, k, 3) *= LS;
+    }
+    the_fmt.unit_per_m *= LS;
+    DHT_EQ_INT(dhs_build_q(&the_fmt, &g->r), DH_OK);
     for (i = 0; i < g->r.n; i++)
         DHT_EQ_INT(dh_robot_set_rates_q(&g->r, i, (int32_t)(vdeg * Q16), (int32_t)(adeg * Q16)), DH_OK);
     DHT_EQ_INT(dh_ikc_analyse_q(&g->r, &g->m), DH_OK);
@@ -467,9 +494,9 @@ static void lagging_puma_q(void)
         dhs_q_from_double(&g->r, qa, ia);
         target_of(g, ia, &A);
         dh_frame_identity_q(&B);
-        B.p[0] = (int32_t)((500.0 + ((it == 0) ? 0.0 : dht_rand_uniform(-10.0, 10.0))) * QPOS);
-        B.p[1] = (int32_t)((-30.0 + ((it == 0) ? 0.0 : dht_rand_uniform(-10.0, 10.0))) * QPOS);
-        B.p[2] = (int32_t)((1000.0 + ((it == 0) ? 0.0 : dht_rand_uniform(-10.0, 10.0))) * QPOS);
+        B.p[0] = (int32_t)((500.0 + ((it == 0) ? 0.0 : dht_rand_uniform(-10.0, 10.0))) * LS * QPOS);
+        B.p[1] = (int32_t)((-30.0 + ((it == 0) ? 0.0 : dht_rand_uniform(-10.0, 10.0))) * LS * QPOS);
+        B.p[2] = (int32_t)((1000.0 + ((it == 0) ? 0.0 : dht_rand_uniform(-10.0, 10.0))) * LS * QPOS);
         DHT_EQ_INT(dh_path_line_q(&p, &A, &B), DH_OK);
         ref_make(&rp, &p, NULL);
         DHT_EQ_INT(dh_move_path_q(&the_mv, &p, &PLIM), DH_OK);

@@ -33,6 +33,10 @@
 #define REL_FD 1e-3
 #define NOISE_FRAC 2.5e-4
 #define ROT_NOISE 3e-6 /* rad: two rotations of dh_pose_interp_q's 1.5e-6 */
+/* length unit per mm of the random geometry: 1, or 2^(16 - DH_QPOS_FRAC)
+ * in a finer format, whose range (2^(31 - DH_QPOS_FRAC) units) is smaller:
+ * the same magnitudes in LSB as at DH_QPOS_FRAC 16 */
+#define LS (DH_QPOS_FRAC > 16 ? ldexp(1.0, 16 - DH_QPOS_FRAC) : 1.0)
 
 /* a uniformly random unit quaternion (two planar angles) */
 static void rot_rand(double *q)
@@ -173,8 +177,8 @@ static void frames_rand(dh_frame_q *A, dh_frame_q *B, double *angle_deg)
     rot_set(A, qa);
     rot_set(B, qb);
     for (k = 0; k < 3; k++) {
-        A->p[k] = (int32_t)llround(dht_rand_uniform(-600.0, 600.0) * QPOS);
-        B->p[k] = (int32_t)llround(dht_rand_uniform(-600.0, 600.0) * QPOS);
+        A->p[k] = (int32_t)llround(dht_rand_uniform(-600.0, 600.0) * LS * QPOS);
+        B->p[k] = (int32_t)llround(dht_rand_uniform(-600.0, 600.0) * LS * QPOS);
     }
 }
 
@@ -200,10 +204,10 @@ static void arc_rand(dh_frame_q *A, dh_frame_q *B, dh_qpos via[3])
     nn = sqrt(dot3(e1, e1));
     for (k = 0; k < 3; k++) e1[k] /= nn;
     cross3(n, e1, e2);
-    R = exp(dht_rand_uniform(log(0.5), log(600.0)));
+    R = exp(dht_rand_uniform(log(0.5), log(600.0))) * LS;
     tb = dht_rand_uniform(15.0, 345.0) * PI_D / 180.0;
     tv = tb * dht_rand_uniform(0.15, 0.85);
-    for (k = 0; k < 3; k++) c[k] = dht_rand_uniform(-400.0, 400.0);
+    for (k = 0; k < 3; k++) c[k] = dht_rand_uniform(-400.0, 400.0) * LS;
     for (k = 0; k < 3; k++) {
         A->p[k] = (int32_t)llround((c[k] + R * e1[k]) * QPOS);
         via[k] = (int32_t)llround((c[k] + R * (cos(tv) * e1[k] + sin(tv) * e2[k])) * QPOS);
@@ -402,8 +406,8 @@ static void moves_q_within_limits(void)
         } else {
             DHT_EQ_INT(dh_path_line_q(&p, &A, &B), DH_OK);
         }
-        lim.vmax = (int32_t)(dht_rand_uniform(20.0, 1000.0) * QPOS);
-        lim.amax = (int32_t)(dht_rand_uniform(100.0, 5000.0) * QPOS);
+        lim.vmax = (int32_t)(dht_rand_uniform(20.0, 1000.0) * LS * QPOS);
+        lim.amax = (int32_t)(dht_rand_uniform(100.0, 5000.0) * LS * QPOS);
         lim.wmax = (int32_t)(dht_rand_uniform(20.0, 180.0) * 65536.0);
         lim.wdmax = (int32_t)(dht_rand_uniform(100.0, 1000.0) * 65536.0);
         DHT_EQ_INT(dh_path_move_q(&pr, &e, &p, &lim), DH_OK);

@@ -631,8 +631,11 @@ static void detj_against_double(void)
             DHT_EQ_INT(dh_track_step_q(tp, &T, qo, &rep), DH_OK);
             DHT_EQ_INT(rep.state, DH_TRACK_OK);
             if (!rep.measured) {
-                /* manip: log2 of the bound lo, less than 8 LSB below (trq_log2) */
-                const double lg = 65536.0 * log2(lo);
+                /* manip: log2 of the bound at q_out (the closed-form
+                 * solution of FK(q), q up to rounding), less than 8 LSB
+                 * below (trq_log2); sigma_min at most the true one at q_out */
+                const double lg = 65536.0 * log2(ldexp((double)dh_ikc_detj_q_(&gp->m, qo, &ex), ex));
+                (void)jac_double(&gp->r, qo, &sg);
                 DHT_TRUE_MSG(rep.manip <= lg + 1e-6 && rep.manip > lg - 8.0, "%s: manip %ld, 65536 log2 |det J| %.3f",
                              gp->d->name, (long)rep.manip, lg);
                 cfs++;
