@@ -70,8 +70,8 @@
 #define PATH_TOL (5e-3 * ldexp(1.0, 16 - DH_QPOS_FRAC))
 #define REL_FD 1e-3
 #define NOISE_FRAC 2.5e-4
-#define DEC 5      /* one position kept every DEC periods (the micro:bit's RAM) */
-#define RING 40    /* positions kept: the longest window (2 w for an acceleration) plus one, in DEC periods */
+#define DEC 6      /* one position kept every DEC periods (the micro:bit's RAM) */
+#define RING 35    /* positions kept: the longest window (2 w for an acceleration) plus one, in DEC periods */
 #define ROT_NOISE 3e-6  /* rad: the rotation of two targets (dh_pose_interp_q's 1.5e-6 each) */
 
 typedef struct {
@@ -87,29 +87,27 @@ static dh_move_q the_mv;
 static int32_t ring[RING][3];   /* target positions, one every DEC periods */
 static int32_t ring_tool[RING][3];  /* tool positions (LSB, rounded) of OK periods, one every DEC periods */
 
-/* d in units of LS mm: the same lengths in LSB in every format */
-static dhs_robot the_fmt;
-
 static void rig_make(rig *g, const dhs_robot *d, double vdeg, double adeg)
 {
+    dhs_robot fmt;   /* d in units of LS mm: the same lengths in LSB in every format (on the stack: the micro:bit's RAM) */
     uint32_t i;
     int k;
     g->d = d;
-    the_fmt = *d;
+    fmt = *d;
     for (i = 0; i < d->n; i++) {
-        the_fmt.j[i].a *= LS;
-        the_fmt.j[i].d *= LS;
+        fmt.j[i].a *= LS;
+        fmt.j[i].d *= LS;
         if (d->j[i].type == DH_JOINT_PRISMATIC) {
-            the_fmt.j[i].qmin *= LS;
-            the_fmt.j[i].qmax *= LS;
+            fmt.j[i].qmin *= LS;
+            fmt.j[i].qmax *= LS;
         }
     }
     for (k = 0; k < 3; k++) {
-        DHR_M4(&the_fmt.base, k, 3) *= LS;
-        DHR_M4(&the_fmt.tool, k, 3) *= LS;
+        DHR_M4(&fmt.base, k, 3) *= LS;
+        DHR_M4(&fmt.tool, k, 3) *= LS;
     }
-    the_fmt.unit_per_m *= LS;
-    DHT_EQ_INT(dhs_build_q(&the_fmt, &g->r), DH_OK);
+    fmt.unit_per_m *= LS;
+    DHT_EQ_INT(dhs_build_q(&fmt, &g->r), DH_OK);
     for (i = 0; i < g->r.n; i++)
         DHT_EQ_INT(dh_robot_set_rates_q(&g->r, i, (int32_t)(vdeg * Q16), (int32_t)(adeg * Q16)), DH_OK);
     DHT_EQ_INT(dh_ikc_analyse_q(&g->r, &g->m), DH_OK);
