@@ -569,6 +569,54 @@ static DH_NOINLINE dh_status track_check(dh_track_f32 *t, const dh_mat4_f32 *tar
     return track_target_ok(target);
 }
 
+/* The window of this period's pruned solve (dh_ikc_raw_win_f32_) in
+ * t->ws[0..11], for a 6-joint wrist or PARALLEL_234 model: joint i's
+ * canonical centre, q_i plus its offset in (-180, 180], and the distance
+ *   th_i = vmax_i dt (1 + 1e-5) + 2e-4 + 4.8e-7 (|q_i| + |off_i| + |qmin_i|
+ *          + |qmax_i| + 720)
+ * (+inf for a prismatic joint or an unlimited rate); 1 when some th_i is
+ * finite (the window can leave a solution out), else 0 (no window).
+ *
+ * Why the pruned solve gives the step of the full one whenever the box
+ * holds its pick. track_pick returns the lexicographic minimum of (time,
+ * sum, index) over the solutions within the limits; the pruned solve
+ * returns a subset S of the full set, the same values in the same order,
+ * so the same minimum whenever it is in S. Let P' be S's pick, in the box:
+ * each step |s_i| <= dq_max_i < vmax_i dt, so its time is at most dt (1 +
+ * 2^-22); the full pick P* is no slower, so each of its joints moves by at
+ * most vmax_i dt (1 + 2^-21) from q_i after track_limit (whose clamp moves
+ * a value by at most 1e-4). Its canonical value c_i differs from that
+ * value by a whole number of turns, the offset and the roundings of the
+ * conversion, track_limit and the centre (each within 2^-24 of at most the
+ * terms summed above, 8 of them), so c_i is within th_i of the centre
+ * modulo 360 and P* is in S: P' = P*, with the same values and flags, and
+ * the step, its status and its report are those of the full solve. When
+ * the box does not hold S's pick (or S is empty), the full solve follows:
+ * the step is the full solve's in every case. */
+static DH_NOINLINE int track_window(dh_track_f32 *t)
+{
+    const dh_ikc_model_f32 *m = t->m;
+    float *const w = t->ws;
+    uint32_t i;
+    int any = 0;
+    if (m->n != 6u || !(m->kind == DH_IKC_WRIST_RRR || m->kind == DH_IKC_WRIST_RRP ||
+                        m->kind == DH_IKC_PARALLEL_234))
+        return 0;
+    for (i = 0u; i < 6u; i++) {
+        const dh_joint *j = &t->r->joint[i];
+        const float lim = (j->qmin <= j->qmax) ? track_abs(j->qmin) + track_abs(j->qmax) : 0.0f;
+        const float th = j->vmax * t->dt * (1.0f + 1e-5f) + 2e-4f +
+                         4.8e-7f * (track_abs(t->q[i]) + track_abs(m->off[i]) + lim + 720.0f);
+        w[i] = dh_ikc_ref_f32_(t->q[i] + m->off[i]);
+        w[6u + i] = track_inf();
+        if (j->type == DH_JOINT_REVOLUTE && dh_isfinite_f32(th)) {
+            w[6u + i] = th;
+            any = 1;
+        }
+    }
+    return any;
+}
+
 /* The step towards a valid target, the closed form's raw solutions (if
  * any) in t->sol, t->ns: the solution nearest in time (t->have: there is
  * one within the limits) and the step box; 1 when the box holds it (t->dq
@@ -790,10 +838,22 @@ dh_status dh_track_step_f32(dh_track_f32 *t, const dh_mat4_f32 *target, float *q
         (void)track_box(t);
         track_brake(t);
     } else {
-        if (t->ist == DH_OK) t->ns = dh_ikc_raw_f32_(t->m, target, t->q, t->sol);
-        if (!track_nearest(t)) {
-            track_at(t);
-            if (track_chase(t, target)) track_more(t, target);
+        int near = 0;
+        /* the solutions within this period's window first: when the box
+         * holds the nearest of them, it is the nearest of all (the
+         * window's comment); else every solution as before */
+        if (t->ist == DH_OK && track_window(t)) {
+            const uint32_t br = t->br;
+            t->ns = dh_ikc_raw_win_f32_(t->m, target, t->q, t->ws, t->sol);
+            near = track_nearest(t);
+            if (!near) t->br = br;
+        }
+        if (!near) {
+            if (t->ist == DH_OK) t->ns = dh_ikc_raw_f32_(t->m, target, t->q, t->sol);
+            if (!track_nearest(t)) {
+                track_at(t);
+                if (track_chase(t, target)) track_more(t, target);
+            }
         }
     }
     track_move(t);
