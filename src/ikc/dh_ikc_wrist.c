@@ -520,6 +520,12 @@ static DH_NOINLINE void wrist_arm(const dh_ikc_model_f32 *m, const float *q_ref,
  * lies outside it is left before its next stage; the branches kept are
  * computed by the same operations as without it, so they come out the
  * same, in the same order. */
+/* 1 when the arm's joint 2 or (RRR) 3 lies outside the window win */
+static DH_NOINLINE int wrist_left(const dh_ikc_model_f32 *m, const float *win, const dh_ikc_sol_f32 *arm)
+{
+    return dh_ikc_out_f32_(win, 1u, arm->q[1]) || (m->kind == DH_IKC_WRIST_RRR && dh_ikc_out_f32_(win, 2u, arm->q[2]));
+}
+
 DH_INLINE uint32_t wrist_solve(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                                const float *win, dh_ikc_sol_f32 *sol)
 {
@@ -546,10 +552,7 @@ DH_INLINE uint32_t wrist_solve(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, 
         }
         for (e = 0; e < ne; e++) {
             dh_ikc_sol_f32 *a = &sol[n];
-            const dh_ikc_sol_f32 *src = &sol[n0 + e * 2u];
-            if (win != NULL && (dh_ikc_out_f32_(win, 1u, src->q[1]) ||
-                                (m->kind == DH_IKC_WRIST_RRR && dh_ikc_out_f32_(win, 2u, src->q[2]))))
-                continue;
+            if (win != NULL && wrist_left(m, win, &sol[n0 + e * 2u])) continue;
             if (e != 0u && n != n0 + 2u) *a = sol[n0 + 2u]; /* branch 0's wrist singular or left */
             v[8] = a->q[3];
             v[9] = a->q[4];
