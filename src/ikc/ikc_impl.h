@@ -109,7 +109,10 @@ static inline uint32_t dh_ikc_raw_win_f32_(const dh_ikc_model_f32 *m, const dh_m
 {
     switch (m->kind) {
     case DH_IKC_WRIST_RRR:
-    case DH_IKC_WRIST_RRP: return dh_ikc_wrist_win_f32_(m, T, q_ref, win, sol);
+    /* soft float: the in-place wrist solver, which leaves no branch (no
+     * frame of the window's entry on the stack) */
+    case DH_IKC_WRIST_RRP:
+        return DH_SOFT_FLOAT ? dh_ikc_wrist_f32_(m, T, q_ref, sol) : dh_ikc_wrist_win_f32_(m, T, q_ref, win, sol);
     case DH_IKC_PARALLEL_234: return dh_ikc_par234_win_f32_(m, T, q_ref, win, sol);
     default: return dh_ikc_scara_f32_(m, T, q_ref, sol);
     }

@@ -570,7 +570,7 @@ static DH_NOINLINE dh_status track_check(dh_track_f32 *t, const dh_mat4_f32 *tar
 }
 
 /* The window of this period's pruned solve (dh_ikc_raw_win_f32_) in
- * t->ws[0..11], for a 6-joint wrist or PARALLEL_234 model: joint i's
+ * t->ws[0..11], for a 6-joint wrist (with an FPU) or PARALLEL_234 model: joint i's
  * canonical centre, q_i plus its offset in (-180, 180], and the distance
  *   th_i = vmax_i dt (1 + 1e-5) + 2e-4 + 4.8e-7 (|q_i| + |off_i| + |qmin_i|
  *          + |qmax_i| + 720)
@@ -599,8 +599,10 @@ static DH_NOINLINE int track_window(dh_track_f32 *t)
     float *const w = t->ws;
     uint32_t i;
     int any = 0;
-    if (m->n != 6u || !(m->kind == DH_IKC_WRIST_RRR || m->kind == DH_IKC_WRIST_RRP ||
-                        m->kind == DH_IKC_PARALLEL_234))
+    /* soft float: the wrist families solve every branch (ikc_impl.h) */
+    if (m->n != 6u ||
+        !(((m->kind == DH_IKC_WRIST_RRR || m->kind == DH_IKC_WRIST_RRP) && !DH_SOFT_FLOAT) ||
+          m->kind == DH_IKC_PARALLEL_234))
         return 0;
     for (i = 0u; i < 6u; i++) {
         const dh_joint *j = &t->r->joint[i];

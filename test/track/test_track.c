@@ -85,7 +85,7 @@ static double ulpf(double x)
 static int last_near_singular; /* the last call's rep.near_singular */
 static long cf_checked;        /* steps checked by cf_is_nearest */
 
-/* A step that took the closed-form solution as it is (OK, not measured),
+/* A step that took the closed-form solution as it is (OK, t->cf),
  * against the full solve of the target from the tracker's q before the
  * step (dh_ikc_f32, every solution, the same q_ref): q_out is one of its
  * solutions bit for bit, and no solution within the limits (after the
@@ -136,7 +136,7 @@ static dh_track_state step_checked(rig *g, dh_track_f32 *t, chk *c, const dh_mat
     memcpy(qp, t->q, sizeof qp);
     st = dh_track_step_f32(t, target, q, &rep);
     DHT_EQ_INT(st, DH_OK);
-    if (g->closed && rep.state == DH_TRACK_OK && !rep.measured) cf_is_nearest(g, qp, target, q, what, c->calls);
+    if (g->closed && rep.state == DH_TRACK_OK && t->cf) cf_is_nearest(g, qp, target, q, what, c->calls);
     for (i = 0; i < g->r.n; i++) {
         const dh_joint *j = &g->r.joint[i];
         const double s = (double)q[i] - (double)c->qp[i];
