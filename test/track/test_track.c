@@ -89,7 +89,7 @@ static long cf_checked;        /* steps checked by cf_is_nearest */
  * against the full solve of the target from the tracker's q before the
  * step (dh_ikc_f32, every solution, the same q_ref): q_out is one of its
  * solutions bit for bit, and no solution within the limits (after the
- * 360-degree shift nearest q, with track_limit's 1e-4 deg) is faster to
+ * 360-degree shift nearest q, with track_limit's 1e-4 deg and clamp) is faster to
  * reach (max |dq_i| / vmax_i) beyond the float rounding of the times. */
 static void cf_is_nearest(rig *g, const float *qp, const dh_mat4_f32 *target, const float *q, const char *what,
                           long call)
@@ -109,8 +109,9 @@ static void cf_is_nearest(rig *g, const float *qp, const dh_mat4_f32 *target, co
             int c;
             for (c = -1; c <= 1; c++) {
                 const double y = x + 360.0 * c;
+                const double z = lim ? fmin(fmax(y, j->qmin), j->qmax) : y; /* track_limit's clamp */
                 if ((c != 0 && (!rev || !lim)) || (lim && (y < j->qmin - tol || y > j->qmax + tol))) continue;
-                if (fabs(y - qp[i]) < best) best = fabs(y - qp[i]);
+                if (fabs(z - qp[i]) < best) best = fabs(z - qp[i]);
             }
             if (best > 1e29) tm[k] = -1.0; /* outside the limits: not a candidate */
             else tm[k] = fmax(tm[k], best / (double)j->vmax);
