@@ -471,7 +471,7 @@ static DH_NOINLINE void par234_window(const float *win, uint32_t s, dh_ikc_sol_f
             sol[r + 1u].flags = IKC_EMPTY;
 }
 
-/* The solver; win (dh_ikc_raw_win_f32_; NULL: none): the records whose
+/* The solver; win (wq + 6 of dh_ikc_raw_win_f32_; NULL: none): the records whose
  * joint 1, 5 or 6 lies outside it are dropped before pass 2, the elbow
  * solutions whose joint 2, 3 or 4 does after it; the records and solutions
  * kept are computed by the same operations as without it, so they come out
@@ -529,8 +529,8 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, con
     return par234_solve(m, T, q_ref, NULL, sol);
 }
 
-uint32_t dh_ikc_par234_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
-                                const float *win, dh_ikc_sol_f32 *sol)
+uint32_t dh_ikc_par234_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *wq,
+                                dh_ikc_sol_f32 *sol)
 {
-    return par234_solve(m, T, q_ref, win, sol);
+    return par234_solve(m, T, wq, wq + 6, sol);
 }

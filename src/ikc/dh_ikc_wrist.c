@@ -515,7 +515,7 @@ static DH_NOINLINE void wrist_arm(const dh_ikc_model_f32 *m, const float *q_ref,
  * the next slot. R01^T of R06's columns a and n, shared by a shoulder
  * branch's arms, waits in q[0..2] and q[3..5] of the fourth slot from its
  * first arm (n0 + 3 <= 7: written last, by the second arm's flipped wrist
- * solution, which reads the column n in place). win (dh_ikc_raw_win_f32_;
+ * solution, which reads the column n in place). win (wq + 6 of dh_ikc_raw_win_f32_;
  * NULL: none): a shoulder branch whose joint 1, an arm whose joint 2 or 3
  * lies outside it is left before its next stage; the branches kept are
  * computed by the same operations as without it, so they come out the
@@ -568,10 +568,10 @@ uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, cons
     return wrist_solve(m, T, q_ref, NULL, sol);
 }
 
-uint32_t dh_ikc_wrist_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
-                               const float *win, dh_ikc_sol_f32 *sol)
+uint32_t dh_ikc_wrist_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *wq,
+                               dh_ikc_sol_f32 *sol)
 {
-    return wrist_solve(m, T, q_ref, win, sol);
+    return wrist_solve(m, T, wq, wq + 6, sol);
 }
 
 #else
@@ -660,12 +660,12 @@ uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, cons
 }
 
 /* The in-place solver leaves no branch early: every solution (a window
- * only narrows the set a caller may need, dh_ikc_raw_win_f32_). */
-uint32_t dh_ikc_wrist_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
-                               const float *win, dh_ikc_sol_f32 *sol)
+ * only narrows the set a caller may need; dh_ikc_raw_win_f32_ calls
+ * dh_ikc_wrist_f32_ directly in these builds). */
+uint32_t dh_ikc_wrist_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *wq,
+                               dh_ikc_sol_f32 *sol)
 {
-    (void)win;
-    return dh_ikc_wrist_f32_(m, T, q_ref, sol);
+    return dh_ikc_wrist_f32_(m, T, wq, sol);
 }
 
 #endif /* WRIST_ONE_PASS */

@@ -570,10 +570,11 @@ static DH_NOINLINE dh_status track_check(dh_track_f32 *t, const dh_mat4_f32 *tar
 }
 
 /* The window of this period's pruned solve (dh_ikc_raw_win_f32_) in
- * t->ws[0..11], for a 6-joint wrist (with an FPU) or PARALLEL_234 model: joint i's
- * canonical centre, q_i plus its offset in (-180, 180], and the distance
- *   th_i = vmax_i dt (1 + 1e-5) + 2e-4 + 4.8e-7 (|q_i| + |off_i| + |qmin_i|
- *          + |qmax_i| + 720)
+ * t->ws[0..17], for a 6-joint wrist (with an FPU) or PARALLEL_234 model:
+ * the reference q, joint i's canonical centre (q_i plus its offset in
+ * (-180, 180]) and the distance
+ *   th_i = tau vmax_i (1 + 1e-5) + 2e-4 + 4.8e-7 (|q_i| + |off_i| + |qmin_i|
+ *          + |qmax_i| + 720),   tau = max_j dq_max_j / vmax_j (about dt)
  * (+inf for a prismatic joint or an unlimited rate); 1 when some th_i is
  * finite (the window can leave a solution out), else 0 (no window).
  *
@@ -582,11 +583,11 @@ static DH_NOINLINE dh_status track_check(dh_track_f32 *t, const dh_mat4_f32 *tar
  * sum, index) over the solutions within the limits; the pruned solve
  * returns a subset S of the full set, the same values in the same order,
  * so the same minimum whenever it is in S. Let P' be S's pick, in the box:
- * each step |s_i| <= dq_max_i < vmax_i dt, so its time is at most dt (1 +
- * 2^-22); the full pick P* is no slower, so each of its joints moves by at
- * most vmax_i dt (1 + 2^-21) from q_i after track_limit (whose clamp moves
- * a value by at most 1e-4). Its canonical value c_i differs from that
- * value by a whole number of turns, the offset and the roundings of the
+ * each step |s_i| <= dq_max_i, so its time is at most tau (1 + 2^-23); the
+ * full pick P* is no slower, so each of its joints moves by at most
+ * tau vmax_i (1 + 2^-21) from q_i after track_limit (whose clamp moves a
+ * value by at most 1e-4). Its canonical value c_i differs from that value
+ * by a whole number of turns, the offset and the roundings of the
  * conversion, track_limit and the centre (each within 2^-24 of at most the
  * terms summed above, 8 of them), so c_i is within th_i of the centre
  * modulo 360 and P* is in S: P' = P*, with the same values and flags, and
@@ -597,6 +598,7 @@ static DH_NOINLINE int track_window(dh_track_f32 *t)
 {
     const dh_ikc_model_f32 *m = t->m;
     float *const w = t->ws;
+    float tau = 0.0f;
     uint32_t i;
     int any = 0;
     /* soft float: the wrist families solve every branch (ikc_impl.h) */
@@ -605,14 +607,21 @@ static DH_NOINLINE int track_window(dh_track_f32 *t)
           m->kind == DH_IKC_PARALLEL_234))
         return 0;
     for (i = 0u; i < 6u; i++) {
+        /* an unlimited rate (inf) adds no time; a finite rate with an
+         * unbounded step makes tau inf (no window) */
+        const float v = t->r->joint[i].vmax;
+        if (dh_isfinite_f32(v) && !(t->dq_max[i] / v <= tau)) tau = t->dq_max[i] / v;
+    }
+    for (i = 0u; i < 6u; i++) {
         const dh_joint *j = &t->r->joint[i];
         const float lim = (j->qmin <= j->qmax) ? track_abs(j->qmin) + track_abs(j->qmax) : 0.0f;
-        const float th = j->vmax * t->dt * (1.0f + 1e-5f) + 2e-4f +
+        const float th = tau * j->vmax * (1.0f + 1e-5f) + 2e-4f +
                          4.8e-7f * (track_abs(t->q[i]) + track_abs(m->off[i]) + lim + 720.0f);
-        w[i] = dh_ikc_ref_f32_(t->q[i] + m->off[i]);
-        w[6u + i] = track_inf();
+        w[i] = t->q[i];
+        w[6u + i] = dh_ikc_ref_f32_(t->q[i] + m->off[i]);
+        w[12u + i] = track_inf();
         if (j->type == DH_JOINT_REVOLUTE && dh_isfinite_f32(th)) {
-            w[6u + i] = th;
+            w[12u + i] = th;
             any = 1;
         }
     }
@@ -846,7 +855,7 @@ dh_status dh_track_step_f32(dh_track_f32 *t, const dh_mat4_f32 *target, float *q
          * window's comment); else every solution as before */
         if (t->ist == DH_OK && track_window(t)) {
             const uint32_t br = t->br;
-            t->ns = dh_ikc_raw_win_f32_(t->m, target, t->q, t->ws, t->sol);
+            t->ns = dh_ikc_raw_win_f32_(t->m, target, t->ws, t->sol);
             near = track_nearest(t);
             if (!near) t->br = br;
         }

@@ -814,7 +814,7 @@ static void pruned_solve_is_full(void)
         DHT_TRUE(g.closed);
         for (k = 0; k < n; k++) {
             dh_ikc_sol_f32 full[DH_IKC_MAX_SOL], part[DH_IKC_MAX_SOL];
-            float q[DH_MAX_JOINTS], qr[DH_MAX_JOINTS], win[12];
+            float q[DH_MAX_JOINTS], wq[18], *const qr = wq, *const win = wq + 6;
             dh_mat4_f32 T;
             uint32_t nf, np, i, j, p = 0;
             const int kind = (int)(k % 4);
@@ -836,7 +836,7 @@ static void pruned_solve_is_full(void)
             }
             DHT_EQ_INT(dh_ikc_args_f32_(&g.m, &T, qr, DH_IKC_KEEP_OUT_OF_LIMITS), DH_OK);
             nf = dh_ikc_raw_f32_(&g.m, &T, qr, full);
-            np = dh_ikc_raw_win_f32_(&g.m, &T, qr, win, part);
+            np = dh_ikc_raw_win_f32_(&g.m, &T, wq, part);
             DHT_TRUE(nf <= DH_IKC_MAX_SOL && np <= nf);
             for (j = 0; j < nf; j++) {
                 if (p < np && memcmp(&full[j], &part[p], sizeof full[j]) == 0) {
