@@ -508,6 +508,14 @@ static DH_NOINLINE void wrist_arm(const dh_ikc_model_f32 *m, const float *q_ref,
     wrist_c(a);
 }
 
+/* 1 when the arm's joint 2 or (RRR) 3 lies outside the window of wq
+ * (dh_ikc_raw_win_f32_) */
+static DH_NOINLINE int wrist_left(const dh_ikc_model_f32 *m, const float *wq, const dh_ikc_sol_f32 *arm)
+{
+    const float *const win = wq + 6;
+    return dh_ikc_out_f32_(win, 1u, arm->q[1]) || (m->kind == DH_IKC_WRIST_RRR && dh_ikc_out_f32_(win, 2u, arm->q[2]));
+}
+
 /* One pass: the shoulder branches into sol[6] and sol[7] (read before any
  * solution reaches them), each arm into its solution's final slot
  * (elbow branch 1 two slots on, moved down when branch 0's wrist is
@@ -515,19 +523,14 @@ static DH_NOINLINE void wrist_arm(const dh_ikc_model_f32 *m, const float *q_ref,
  * the next slot. R01^T of R06's columns a and n, shared by a shoulder
  * branch's arms, waits in q[0..2] and q[3..5] of the fourth slot from its
  * first arm (n0 + 3 <= 7: written last, by the second arm's flipped wrist
- * solution, which reads the column n in place). win (wq + 6 of dh_ikc_raw_win_f32_;
- * NULL: none): a shoulder branch whose joint 1, an arm whose joint 2 or 3
- * lies outside it is left before its next stage; the branches kept are
- * computed by the same operations as without it, so they come out the
- * same, in the same order. */
-/* 1 when the arm's joint 2 or (RRR) 3 lies outside the window win */
-static DH_NOINLINE int wrist_left(const dh_ikc_model_f32 *m, const float *win, const dh_ikc_sol_f32 *arm)
-{
-    return dh_ikc_out_f32_(win, 1u, arm->q[1]) || (m->kind == DH_IKC_WRIST_RRR && dh_ikc_out_f32_(win, 2u, arm->q[2]));
-}
-
+ * solution, which reads the column n in place). win 1: q_ref is the wq
+ * of dh_ikc_raw_win_f32_ (0: no window); a shoulder branch whose joint 1
+ * lies outside the window is left before its elbow, an arm whose joint 2
+ * or 3 does before its wrist; the branches kept are computed by the same
+ * operations as without it, so they come out the same, in the same
+ * order. */
 DH_INLINE uint32_t wrist_solve(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
-                               const float *win, dh_ikc_sol_f32 *sol)
+                               int win, dh_ikc_sol_f32 *sol)
 {
     /* R06 e_x, R06 Rx(alpha6)^T e_z, the wrist centre; after the
      * shoulder v[6..7] = cos, sin of joint 1, v[8..9] of joint 2 (RRR: of
@@ -540,7 +543,7 @@ DH_INLINE uint32_t wrist_solve(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, 
     for (b = 0; b < ns; b++) {
         const dh_ikc_sol_f32 *sh = &sol[6u + b];
         const uint32_t n0 = n;
-        if (win != NULL && dh_ikc_out_f32_(win, 0u, sh->q[0])) continue;
+        if (win && dh_ikc_out_f32_(q_ref + 6, 0u, sh->q[0])) continue;
         ne = (m->kind == DH_IKC_WRIST_RRR) ? wrist_elbow_rrr(m, cref2, sh, &sol[n]) : wrist_elbow_rrp(m, cref2, sh, &sol[n]);
         if (ne != 0u) {
             /* joint 1 of both elbow branches (the arms keep theta1 in q[0]) */
@@ -552,7 +555,7 @@ DH_INLINE uint32_t wrist_solve(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, 
         }
         for (e = 0; e < ne; e++) {
             dh_ikc_sol_f32 *a = &sol[n];
-            if (win != NULL && wrist_left(m, win, &sol[n0 + e * 2u])) continue;
+            if (win && wrist_left(m, q_ref, &sol[n0 + e * 2u])) continue;
             if (e != 0u && n != n0 + 2u) *a = sol[n0 + 2u]; /* branch 0's wrist singular or left */
             v[8] = a->q[3];
             v[9] = a->q[4];
@@ -565,13 +568,13 @@ DH_INLINE uint32_t wrist_solve(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, 
 
 uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, dh_ikc_sol_f32 *sol)
 {
-    return wrist_solve(m, T, q_ref, NULL, sol);
+    return wrist_solve(m, T, q_ref, 0, sol);
 }
 
 uint32_t dh_ikc_wrist_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *wq,
                                dh_ikc_sol_f32 *sol)
 {
-    return wrist_solve(m, T, wq, wq + 6, sol);
+    return wrist_solve(m, T, wq, 1, sol);
 }
 
 #else

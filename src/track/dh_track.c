@@ -629,11 +629,12 @@ static DH_NOINLINE int track_window(dh_track_f32 *t)
 }
 
 /* The step towards a valid target, the closed form's raw solutions (if
- * any) in t->sol, t->ns: the solution nearest in time (t->have: there is
+ * any) in t->sol, raw of them (into t->ns): the solution nearest in time (t->have: there is
  * one within the limits) and the step box; 1 when the box holds it (t->dq
  * the step to it, t->cf kept only then), else 0 (track_chase follows). */
-static DH_NOINLINE int track_nearest(dh_track_f32 *t)
+static DH_NOINLINE int track_nearest(dh_track_f32 *t, uint32_t raw)
 {
+    t->ns = raw;
     t->unreach = 0;
     t->have = 0;
     if (t->m != NULL) {
@@ -848,24 +849,14 @@ dh_status dh_track_step_f32(dh_track_f32 *t, const dh_mat4_f32 *target, float *q
         t->have = 0;
         (void)track_box(t);
         track_brake(t);
-    } else {
-        int near = 0;
+    } else if (!(t->ist == DH_OK && track_window(t) &&
+                 track_nearest(t, dh_ikc_raw_win_f32_(t->m, target, t->ws, t->sol))) &&
+               !track_nearest(t, (t->ist == DH_OK) ? dh_ikc_raw_f32_(t->m, target, t->q, t->sol) : 0u)) {
         /* the solutions within this period's window first: when the box
-         * holds the nearest of them, it is the nearest of all (the
-         * window's comment); else every solution as before */
-        if (t->ist == DH_OK && track_window(t)) {
-            const uint32_t br = t->br;
-            t->ns = dh_ikc_raw_win_f32_(t->m, target, t->ws, t->sol);
-            near = track_nearest(t);
-            if (!near) t->br = br;
-        }
-        if (!near) {
-            if (t->ist == DH_OK) t->ns = dh_ikc_raw_f32_(t->m, target, t->q, t->sol);
-            if (!track_nearest(t)) {
-                track_at(t);
-                if (track_chase(t, target)) track_more(t, target);
-            }
-        }
+         * holds the nearest of them, it is the nearest of all
+         * (track_window); else every solution. Neither box holds one. */
+        track_at(t);
+        if (track_chase(t, target)) track_more(t, target);
     }
     track_move(t);
     if (!track_cheap(t, rep)) track_end(t, target, tst, rep);
