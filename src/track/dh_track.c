@@ -582,8 +582,9 @@ static DH_NOINLINE dh_status track_check(dh_track_f32 *t, const dh_mat4_f32 *tar
  * holds its pick. track_pick returns the lexicographic minimum of (time,
  * sum, index) over the solutions within the limits; the pruned solve
  * returns a subset S of the full set, the same values in the same order,
- * so the same minimum whenever it is in S. Let P' be S's pick, in the box:
- * each step |s_i| <= dq_max_i, so its time is at most tau (1 + 2^-23); the
+ * so the same minimum whenever it is in S. Let P' be S's pick, in the box
+ * with each step |s_i| <= dq_max_i (track_bound: the box is within it
+ * unless its sides cross), so its time is at most tau; the
  * full pick P* is no slower, so each of its joints moves by at most
  * tau vmax_i (1 + 2^-21) from q_i after track_limit (whose clamp moves a
  * value by at most 1e-4). Its canonical value c_i differs from that value
@@ -626,6 +627,17 @@ static DH_NOINLINE int track_window(dh_track_f32 *t)
         }
     }
     return any;
+}
+
+/* 1 when every joint of the step t->dq is within its bound dq_max (the
+ * box's sides cross beyond it only after dh_track_sync_f32 left a velocity
+ * above the rate, with an acceleration limit) */
+static DH_NOINLINE int track_bound(const dh_track_f32 *t)
+{
+    uint32_t i;
+    for (i = 0u; i < t->r->n; i++)
+        if (!(track_abs(t->dq[i]) <= t->dq_max[i])) return 0;
+    return 1;
 }
 
 /* The step towards a valid target, the closed form's raw solutions (if
@@ -850,7 +862,7 @@ dh_status dh_track_step_f32(dh_track_f32 *t, const dh_mat4_f32 *target, float *q
         (void)track_box(t);
         track_brake(t);
     } else if (!(t->ist == DH_OK && track_window(t) &&
-                 track_nearest(t, dh_ikc_raw_win_f32_(t->m, target, t->ws, t->sol))) &&
+                 track_nearest(t, dh_ikc_raw_win_f32_(t->m, target, t->ws, t->sol)) && track_bound(t)) &&
                !track_nearest(t, (t->ist == DH_OK) ? dh_ikc_raw_f32_(t->m, target, t->q, t->sol) : 0u)) {
         /* the solutions within this period's window first: when the box
          * holds the nearest of them, it is the nearest of all
