@@ -641,9 +641,10 @@ static DH_NOINLINE int track_bound(const dh_track_f32 *t)
 }
 
 /* The step towards a valid target, the closed form's raw solutions (if
- * any) in t->sol, raw of them (into t->ns): the solution nearest in time (t->have: there is
- * one within the limits) and the step box; 1 when the box holds it (t->dq
- * the step to it, t->cf kept only then), else 0 (track_chase follows). */
+ * any) in t->sol, raw of them (into t->ns): the solution nearest in time
+ * (t->have: there is one within the limits) and the step box; 1 when the
+ * box holds it (t->dq the step to it, t->cf kept only then), else 0
+ * (track_chase follows). */
 static DH_NOINLINE int track_nearest(dh_track_f32 *t, uint32_t raw)
 {
     t->ns = raw;
