@@ -463,7 +463,7 @@ static DH_NOINLINE uint32_t par234_p05(const dh_ikc_model_f32 *m, const dh_mat4_
  * (their slot pair marked IKC_EMPTY). */
 static DH_NOINLINE void par234_window(const float *wq, uint32_t s, dh_ikc_sol_f32 *sol)
 {
-    const float *const win = wq + 6;
+    const float *const win = &wq[6];
     uint32_t r;
     for (r = 4u * s; r < 4u * s + 4u; r += 2u)
         if (sol[r + 1u].flags != IKC_EMPTY &&
@@ -476,7 +476,7 @@ static DH_NOINLINE void par234_window(const float *wq, uint32_t s, dh_ikc_sol_f3
  * outside the window of wq are dropped (flags IKC_EMPTY). */
 static DH_NOINLINE void par234_window_elbow(const float *wq, uint32_t ne, dh_ikc_sol_f32 *sol)
 {
-    const float *const win = wq + 6;
+    const float *const win = &wq[6];
     uint32_t e;
     for (e = 0u; e < ne; e++)
         if (dh_ikc_out_f32_(win, 1u, sol[e].q[1]) || dh_ikc_out_f32_(win, 2u, sol[e].q[2]) ||

@@ -512,7 +512,7 @@ static DH_NOINLINE void wrist_arm(const dh_ikc_model_f32 *m, const float *q_ref,
  * (dh_ikc_raw_win_f32_) */
 static DH_NOINLINE int wrist_left(const dh_ikc_model_f32 *m, const float *wq, const dh_ikc_sol_f32 *arm)
 {
-    const float *const win = wq + 6;
+    const float *const win = &wq[6];
     return dh_ikc_out_f32_(win, 1u, arm->q[1]) || (m->kind == DH_IKC_WRIST_RRR && dh_ikc_out_f32_(win, 2u, arm->q[2]));
 }
 
@@ -543,7 +543,7 @@ DH_INLINE uint32_t wrist_solve(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, 
     for (b = 0; b < ns; b++) {
         const dh_ikc_sol_f32 *sh = &sol[6u + b];
         const uint32_t n0 = n;
-        if (win && dh_ikc_out_f32_(q_ref + 6, 0u, sh->q[0])) continue;
+        if (win && dh_ikc_out_f32_(&q_ref[6], 0u, sh->q[0])) continue;
         ne = (m->kind == DH_IKC_WRIST_RRR) ? wrist_elbow_rrr(m, cref2, sh, &sol[n]) : wrist_elbow_rrp(m, cref2, sh, &sol[n]);
         if (ne != 0u) {
             /* joint 1 of both elbow branches (the arms keep theta1 in q[0]) */

@@ -90,7 +90,8 @@ static DH_NOINLINE void track_bounds(dh_track_f32 *t)
     uint32_t i = r->n;
     t->cfp = 1e-6f * (t->reach + dh_sqrt_f32(pb[0] * pb[0] + pb[1] * pb[1] + pb[2] * pb[2]));
     while (i > 0u) {
-        const dh_joint *j = &r->joint[--i];
+        const dh_joint *j = &r->joint[i - 1u];
+        i--;
         /* joint i's own d (and travel) lies along its axis */
         F += 1.0f + ((j->type == DH_JOINT_REVOLUTE) ? (R + track_abs(j->a)) * (R + track_abs(j->a)) : 0.0f);
         R += track_abs(j->a) + track_abs(j->d);
@@ -870,6 +871,8 @@ dh_status dh_track_step_f32(dh_track_f32 *t, const dh_mat4_f32 *target, float *q
          * (track_window); else every solution. Neither box holds one. */
         track_at(t);
         if (track_chase(t, target)) track_more(t, target);
+    } else {
+        /* a closed-form solution in the box: t->dq is the step to it */
     }
     track_move(t);
     if (!track_cheap(t, rep)) track_end(t, target, tst, rep);
