@@ -110,7 +110,7 @@ typedef struct {
     float qs[DH_MAX_JOINTS];           /**< nearest closed-form solution */
     float keep[DH_MAX_JOINTS];         /**< step so far (damped steps only) */
     float e[6];                        /**< pose error at q */
-    float ws[27];                      /**< damped step's matrices */
+    float ws[27];                      /**< damped step's matrices; the window of the pruned closed-form solve */
     float sg;                          /**< sigma_min bound at q */
     float lam;                         /**< damping of this period's step */
     uint32_t ns;                       /**< closed-form solutions found (raw, then kept) */

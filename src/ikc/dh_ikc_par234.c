@@ -458,8 +458,39 @@ static DH_NOINLINE uint32_t par234_p05(const dh_ikc_model_f32 *m, const dh_mat4_
     return 2u;
 }
 
-uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
-                            dh_ikc_sol_f32 *sol)
+/* The records of shoulder branch s (after par234_angles) whose joint 1, 5
+ * or 6 lies outside the window of wq (dh_ikc_raw_win_f32_) are dropped
+ * (their slot pair marked IKC_EMPTY). */
+static DH_NOINLINE void par234_window(const float *wq, uint32_t s, dh_ikc_sol_f32 *sol)
+{
+    const float *const win = &wq[6];
+    uint32_t r;
+    for (r = 4u * s; r < 4u * s + 4u; r += 2u)
+        if (sol[r + 1u].flags != IKC_EMPTY &&
+            (dh_ikc_out_f32_(win, 0u, sol[r].q[0]) || dh_ikc_out_f32_(win, 4u, sol[r].q[1]) ||
+             dh_ikc_out_f32_(win, 5u, sol[r].q[2])))
+            sol[r + 1u].flags = IKC_EMPTY;
+}
+
+/* The elbow solutions sol[0..ne-1] of a record whose joint 2, 3 or 4 lies
+ * outside the window of wq are dropped (flags IKC_EMPTY). */
+static DH_NOINLINE void par234_window_elbow(const float *wq, uint32_t ne, dh_ikc_sol_f32 *sol)
+{
+    const float *const win = &wq[6];
+    uint32_t e;
+    for (e = 0u; e < ne; e++)
+        if (dh_ikc_out_f32_(win, 1u, sol[e].q[1]) || dh_ikc_out_f32_(win, 2u, sol[e].q[2]) ||
+            dh_ikc_out_f32_(win, 3u, sol[e].q[3]))
+            sol[e].flags = IKC_EMPTY;
+}
+
+/* The solver; win 1: q_ref is the wq of dh_ikc_raw_win_f32_ (0: no window): the records whose
+ * joint 1, 5 or 6 lies outside it are dropped before pass 2, the elbow
+ * solutions whose joint 2, 3 or 4 does after it; the records and solutions
+ * kept are computed by the same operations as without it, so they come out
+ * the same, in the same order. */
+DH_INLINE uint32_t par234_solve(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, int win,
+                                dh_ikc_sol_f32 *sol)
 {
     float *pw = &sol[1].q[1]; /* px, py, pz, u, px^2 + py^2 (slot 1 is free until pass 2) */
     const uint32_t ns = par234_p05(m, T, pw, sol[6].q);
@@ -478,6 +509,7 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, con
         par234_shoulder(m, q_ref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
         par234_wrist(m, q_ref, fs | (s ? DH_IKC_SHOULDER_ALT : 0u), sol);
         par234_angles(&sol[4u * s]);
+        if (win) par234_window(q_ref, s, sol);
     }
     for (s = 0u; s < 8u; s += 2u) {
         uint32_t ne = 0u, e;
@@ -485,6 +517,7 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, con
         if (ne == 0u) sol[s].flags = IKC_EMPTY;
         sol[s + 1u].flags = IKC_EMPTY;
         for (e = 0u; e < ne; e++) par234_elbow(m, q_ref, e, &sol[s]);
+        if (win) par234_window_elbow(q_ref, ne, &sol[s]);
     }
     for (s = 0u; s < 8u; s++) {
         uint32_t i;
@@ -496,4 +529,16 @@ uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, con
         cnt++;
     }
     return cnt;
+}
+
+uint32_t dh_ikc_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
+                            dh_ikc_sol_f32 *sol)
+{
+    return par234_solve(m, T, q_ref, 0, sol);
+}
+
+uint32_t dh_ikc_par234_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *wq,
+                                dh_ikc_sol_f32 *sol)
+{
+    return par234_solve(m, T, wq, 1, sol);
 }

@@ -90,6 +90,44 @@ static inline uint32_t dh_ikc_raw_f32_(const dh_ikc_model_f32 *m, const dh_mat4_
 }
 dh_status dh_ikc_finish_f32_(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t opts, dh_ikc_sol_f32 *sol,
                              uint32_t *n_sol);
+/* The raw solutions of dh_ikc_raw_f32_ that can lie within a window of
+ * joint values (the tracker's step, src/track/), for a 6-joint model:
+ * wq[0..5] is the reference (q_ref, not NULL), wq[6 + i] joint i's
+ * canonical centre in (-180, 180] and wq[12 + i] a distance in degrees
+ * (+inf: no bound; a prismatic joint's is not read). A solver may leave a
+ * branch as soon as one of its revolute canonical values c is outside the
+ * window (dh_ikc_out_f32_(wq + 6, i, c)); every solution it returns is one
+ * of dh_ikc_raw_f32_'s with q_ref = wq (the same operations on the same
+ * inputs: the same values and flags), in their order, and it returns each
+ * of those within the window on every joint. The wrist families with an
+ * FPU and PARALLEL_234 leave branches; the others return every solution
+ * (soft float: the in-place wrist solver). Four arguments, as the solvers
+ * (no argument on the stack). */
+uint32_t dh_ikc_wrist_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *wq,
+                               dh_ikc_sol_f32 *sol);
+uint32_t dh_ikc_par234_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *wq,
+                                dh_ikc_sol_f32 *sol);
+static inline uint32_t dh_ikc_raw_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *wq,
+                                           dh_ikc_sol_f32 *sol)
+{
+    switch (m->kind) {
+    case DH_IKC_WRIST_RRR:
+    case DH_IKC_WRIST_RRP:
+        return DH_SOFT_FLOAT ? dh_ikc_wrist_f32_(m, T, wq, sol) : dh_ikc_wrist_win_f32_(m, T, wq, sol);
+    case DH_IKC_PARALLEL_234: return dh_ikc_par234_win_f32_(m, T, wq, sol);
+    default: return dh_ikc_scara_f32_(m, T, wq, sol);
+    }
+}
+/* 1 when the canonical value c of revolute joint i lies outside the window
+ * w (centres w[0..5], distances w[6..11]; wq + 6 of dh_ikc_raw_win_f32_):
+ * c and the centre are both in (-180, 180] (or c a reference value a whole
+ * number of turns from the centre, which stays), so their distance modulo
+ * 360 degrees is d or 360 - d; a NaN stays. */
+DH_INLINE int dh_ikc_out_f32_(const float *w, uint32_t i, float c)
+{
+    const float d = fabsf(c - w[i]), th = w[6u + i];
+    return d > th && 360.0f - d > th;
+}
 
 /* ---- fixed, integer only (dh_ikc_wrist_q.c, dh_ikc_par234_q.c,
  * dh_ikc_scara_q.c; common helpers dh_ikc_common_q.c) ----

@@ -90,7 +90,8 @@ static DH_NOINLINE void track_bounds(dh_track_f32 *t)
     uint32_t i = r->n;
     t->cfp = 1e-6f * (t->reach + dh_sqrt_f32(pb[0] * pb[0] + pb[1] * pb[1] + pb[2] * pb[2]));
     while (i > 0u) {
-        const dh_joint *j = &r->joint[--i];
+        const dh_joint *j = &r->joint[i - 1u];
+        i--;
         /* joint i's own d (and travel) lies along its axis */
         F += 1.0f + ((j->type == DH_JOINT_REVOLUTE) ? (R + track_abs(j->a)) * (R + track_abs(j->a)) : 0.0f);
         R += track_abs(j->a) + track_abs(j->d);
@@ -569,12 +570,85 @@ static DH_NOINLINE dh_status track_check(dh_track_f32 *t, const dh_mat4_f32 *tar
     return track_target_ok(target);
 }
 
-/* The step towards a valid target, the closed form's raw solutions (if
- * any) in t->sol, t->ns: the solution nearest in time (t->have: there is
- * one within the limits) and the step box; 1 when the box holds it (t->dq
- * the step to it, t->cf kept only then), else 0 (track_chase follows). */
-static DH_NOINLINE int track_nearest(dh_track_f32 *t)
+/* The window of this period's pruned solve (dh_ikc_raw_win_f32_) in
+ * t->ws[0..17], for a 6-joint wrist (with an FPU) or PARALLEL_234 model:
+ * the reference q, joint i's canonical centre (q_i plus its offset in
+ * (-180, 180]) and the distance
+ *   th_i = tau vmax_i (1 + 1e-5) + 2e-4 + 4.8e-7 (|q_i| + |off_i| + |qmin_i|
+ *          + |qmax_i| + 720),   tau = max_j dq_max_j / vmax_j (about dt)
+ * (+inf for a prismatic joint or an unlimited rate); 1 when some th_i is
+ * finite (the window can leave a solution out), else 0 (no window).
+ *
+ * Why the pruned solve gives the step of the full one whenever the box
+ * holds its pick. track_pick returns the lexicographic minimum of (time,
+ * sum, index) over the solutions within the limits; the pruned solve
+ * returns a subset S of the full set, the same values in the same order,
+ * so the same minimum whenever it is in S. Let P' be S's pick, in the box
+ * with each step |s_i| <= dq_max_i (track_bound: the box is within it
+ * unless its sides cross), so its time is at most tau; the
+ * full pick P* is no slower, so each of its joints moves by at most
+ * tau vmax_i (1 + 2^-21) from q_i after track_limit (whose clamp moves a
+ * value by at most 1e-4). Its canonical value c_i differs from that value
+ * by a whole number of turns, the offset and the roundings of the
+ * conversion, track_limit and the centre (each within 2^-24 of at most the
+ * terms summed above, 8 of them), so c_i is within th_i of the centre
+ * modulo 360 and P* is in S: P' = P*, with the same values and flags, and
+ * the step, its status and its report are those of the full solve. When
+ * the box does not hold S's pick (or S is empty), the full solve follows:
+ * the step is the full solve's in every case. */
+static DH_NOINLINE int track_window(dh_track_f32 *t)
 {
+    const dh_ikc_model_f32 *m = t->m;
+    float *const w = t->ws;
+    float tau = 0.0f;
+    uint32_t i;
+    int any = 0;
+    /* soft float: the wrist families solve every branch (ikc_impl.h) */
+    if (m->n != 6u ||
+        !(((m->kind == DH_IKC_WRIST_RRR || m->kind == DH_IKC_WRIST_RRP) && !DH_SOFT_FLOAT) ||
+          m->kind == DH_IKC_PARALLEL_234))
+        return 0;
+    for (i = 0u; i < 6u; i++) {
+        /* an unlimited rate (inf) adds no time; a finite rate with an
+         * unbounded step makes tau inf (no window) */
+        const float v = t->r->joint[i].vmax;
+        if (dh_isfinite_f32(v) && !(t->dq_max[i] / v <= tau)) tau = t->dq_max[i] / v;
+    }
+    for (i = 0u; i < 6u; i++) {
+        const dh_joint *j = &t->r->joint[i];
+        const float lim = (j->qmin <= j->qmax) ? track_abs(j->qmin) + track_abs(j->qmax) : 0.0f;
+        const float th = tau * j->vmax * (1.0f + 1e-5f) + 2e-4f +
+                         4.8e-7f * (track_abs(t->q[i]) + track_abs(m->off[i]) + lim + 720.0f);
+        w[i] = t->q[i];
+        w[6u + i] = dh_ikc_ref_f32_(t->q[i] + m->off[i]);
+        w[12u + i] = track_inf();
+        if (j->type == DH_JOINT_REVOLUTE && dh_isfinite_f32(th)) {
+            w[12u + i] = th;
+            any = 1;
+        }
+    }
+    return any;
+}
+
+/* 1 when every joint of the step t->dq is within its bound dq_max (the
+ * box's sides cross beyond it only after dh_track_sync_f32 left a velocity
+ * above the rate, with an acceleration limit) */
+static DH_NOINLINE int track_bound(const dh_track_f32 *t)
+{
+    uint32_t i;
+    for (i = 0u; i < t->r->n; i++)
+        if (!(track_abs(t->dq[i]) <= t->dq_max[i])) return 0;
+    return 1;
+}
+
+/* The step towards a valid target, the closed form's raw solutions (if
+ * any) in t->sol, raw of them (into t->ns): the solution nearest in time
+ * (t->have: there is one within the limits) and the step box; 1 when the
+ * box holds it (t->dq the step to it, t->cf kept only then), else 0
+ * (track_chase follows). */
+static DH_NOINLINE int track_nearest(dh_track_f32 *t, uint32_t raw)
+{
+    t->ns = raw;
     t->unreach = 0;
     t->have = 0;
     if (t->m != NULL) {
@@ -789,12 +863,16 @@ dh_status dh_track_step_f32(dh_track_f32 *t, const dh_mat4_f32 *target, float *q
         t->have = 0;
         (void)track_box(t);
         track_brake(t);
+    } else if (!(t->ist == DH_OK && track_window(t) &&
+                 track_nearest(t, dh_ikc_raw_win_f32_(t->m, target, t->ws, t->sol)) && track_bound(t)) &&
+               !track_nearest(t, (t->ist == DH_OK) ? dh_ikc_raw_f32_(t->m, target, t->q, t->sol) : 0u)) {
+        /* the solutions within this period's window first: when the box
+         * holds the nearest of them, it is the nearest of all
+         * (track_window); else every solution. Neither box holds one. */
+        track_at(t);
+        if (track_chase(t, target)) track_more(t, target);
     } else {
-        if (t->ist == DH_OK) t->ns = dh_ikc_raw_f32_(t->m, target, t->q, t->sol);
-        if (!track_nearest(t)) {
-            track_at(t);
-            if (track_chase(t, target)) track_more(t, target);
-        }
+        /* a closed-form solution in the box: t->dq is the step to it */
     }
     track_move(t);
     if (!track_cheap(t, rep)) track_end(t, target, tst, rep);

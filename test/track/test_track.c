@@ -30,6 +30,7 @@
 #include "dht.h"
 #include "support_robots.h"
 #include "dhmath/track.h"
+#include "../../src/ikc/ikc_impl.h" /* the pruned solve against the full one */
 
 #include <math.h>
 #include <stdio.h>
@@ -82,15 +83,65 @@ static double ulpf(double x)
 
 /* one call with every guarantee checked; returns the state */
 static int last_near_singular; /* the last call's rep.near_singular */
+static long cf_checked;        /* steps checked by cf_is_nearest */
+static long cf_unmeasured;     /* of those, reported without FK (measured 0) */
+
+/* A step that took the closed-form solution as it is (OK, t->cf),
+ * against the full solve of the target from the tracker's q before the
+ * step (dh_ikc_f32, every solution, the same q_ref): q_out is one of its
+ * solutions bit for bit, and no solution within the limits (after the
+ * 360-degree shift nearest q, with track_limit's 1e-4 deg and clamp) is faster to
+ * reach (max |dq_i| / vmax_i) beyond the float rounding of the times. */
+static void cf_is_nearest(rig *g, const float *qp, const dh_mat4_f32 *target, const float *q, const char *what,
+                          long call)
+{
+    dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+    uint32_t ns = 0, k, i, hit = DH_IKC_MAX_SOL;
+    double tm[DH_IKC_MAX_SOL];
+    DHT_EQ_INT(dh_ikc_f32(&g->m, target, qp, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns), DH_OK);
+    for (k = 0; k < ns; k++) {
+        tm[k] = 0.0;
+        if (hit == DH_IKC_MAX_SOL && memcmp(sol[k].q, q, g->r.n * sizeof(float)) == 0) hit = k;
+        for (i = 0; i < g->r.n && tm[k] >= 0.0; i++) {
+            const dh_joint *j = &g->r.joint[i];
+            const int lim = j->qmin <= j->qmax, rev = j->type == DH_JOINT_REVOLUTE;
+            const double tol = rev ? 1e-4 : 1e-7 * 4.0 * g->d->unit_per_m;
+            double x = sol[k].q[i], best = 1e30;
+            int c;
+            for (c = -1; c <= 1; c++) {
+                const double y = x + 360.0 * c;
+                const double z = lim ? fmin(fmax(y, j->qmin), j->qmax) : y; /* track_limit's clamp */
+                if ((c != 0 && (!rev || !lim)) || (lim && (y < j->qmin - tol || y > j->qmax + tol))) continue;
+                if (fabs(z - qp[i]) < best) best = fabs(z - qp[i]);
+            }
+            if (best > 1e29) tm[k] = -1.0; /* outside the limits: not a candidate */
+            else tm[k] = fmax(tm[k], best / (double)j->vmax);
+        }
+    }
+    DHT_TRUE_MSG(hit < ns, "%s %s call %ld: q_out is none of the full solve's %u solutions", g->d->name, what, call,
+                 (unsigned)ns);
+    for (k = 0; k < ns; k++)
+        if (tm[k] >= 0.0)
+            DHT_TRUE_MSG(tm[k] >= tm[hit] * (1.0 - 1e-6),
+                         "%s %s call %ld: solution %u reached in %.9g s, q_out's in %.9g s", g->d->name, what, call,
+                         (unsigned)k, tm[k], tm[hit]);
+    cf_checked++;
+}
 
 /* twin: step_checked of test_track_q.c */
 static dh_track_state step_checked(rig *g, dh_track_f32 *t, chk *c, const dh_mat4_f32 *target, const char *what)
 {
-    float q[DH_MAX_JOINTS];
+    float q[DH_MAX_JOINTS], qp[DH_MAX_JOINTS];
     dh_track_report_f32 rep;
     uint32_t i;
-    const dh_status st = dh_track_step_f32(t, target, q, &rep);
+    dh_status st;
+    memcpy(qp, t->q, sizeof qp);
+    st = dh_track_step_f32(t, target, q, &rep);
     DHT_EQ_INT(st, DH_OK);
+    if (g->closed && rep.state == DH_TRACK_OK && t->cf) {
+        cf_is_nearest(g, qp, target, q, what, c->calls);
+        if (!rep.measured) cf_unmeasured++;
+    }
     for (i = 0; i < g->r.n; i++) {
         const dh_joint *j = &g->r.joint[i];
         const double s = (double)q[i] - (double)c->qp[i];
@@ -303,6 +354,13 @@ static void smooth_paths_every_call_ok(void)
             calls += c.calls;
         }
         printf("%s: %ld smooth paths, %ld calls, %ld not OK\n", g.d->name, n_path, calls, not_ok);
+        /* the closed-form steps were compared with the full solve, also
+         * where every report was measured (the bound on sigma_min below
+         * the threshold on the whole path) */
+        DHT_TRUE(!g.closed || cf_checked > 0);
+        dht_reach_max("smooth.cf_all_measured", (g.closed && cf_unmeasured == 0) ? 1.0 : 0.0);
+        cf_checked = 0;
+        cf_unmeasured = 0;
     }
 }
 
@@ -741,6 +799,81 @@ static void closed_form_measures(void)
     }
 }
 
+/* The pruned solve (dh_ikc_raw_win_f32_, the tracker's first solve)
+ * against the full one (dh_ikc_raw_f32_) on random and near-singular
+ * targets (joint 5, and joint 3 of PARALLEL_234, within 10^-6 .. 10 deg of
+ * its singular value, or on it), with windows of 0.05 deg to unbounded per
+ * joint about references near the target's configuration: every pruned
+ * solution is one of the full solve's, bit for bit with its flags, in the
+ * same order, and every full solution left out lies outside the window on
+ * some revolute joint (in double, less the float rounding of the
+ * solver's distance to the centre, 2^-24 of 360 deg). */
+static void pruned_solve_is_full(void)
+{
+    static const dhs_robot *const fam[] = { &dhs_puma560_m, &dhs_ur5_m, &dhs_kuka_kr5_m, &dhs_stanford_m,
+                                            &dhs_ur3_m,     &dhs_ur10_m, &dhs_abb_irb140_m };
+    static const float ths[] = { 0.05f, 0.2f, 1.0f, 10.0f, 90.0f, INFINITY };
+    size_t ri;
+    long left = 0;
+    for (ri = 0; ri < sizeof fam / sizeof fam[0]; ri++) {
+        rig g;
+        long k, n = DHT_ITER(300), kept = 0, all = 0;
+        rig_make(&g, fam[ri], INFINITY);
+        DHT_TRUE(g.closed);
+        for (k = 0; k < n; k++) {
+            dh_ikc_sol_f32 full[DH_IKC_MAX_SOL], part[DH_IKC_MAX_SOL];
+            float q[DH_MAX_JOINTS], wq[18], *const qr = wq, *const win = wq + 6;
+            dh_mat4_f32 T;
+            uint32_t nf, np, i, j, p = 0;
+            const int kind = (int)(k % 4);
+            const double spread = pow(10.0, dht_rand_uniform(-3.0, 1.5));
+            random_q(&g, q);
+            if (kind == 1 || kind == 2) { /* near a singularity, or on it */
+                const double dlt = (dht_rand_u32() & 3u) ? pow(10.0, dht_rand_uniform(-6.0, 1.0)) *
+                                                               ((dht_rand_u32() & 1u) ? 1 : -1)
+                                                         : 0.0;
+                const uint32_t jn = (kind == 2 && g.m.kind == DH_IKC_PARALLEL_234) ? 2u : 4u;
+                q[jn] = (float)(-g.r.joint[jn].theta_deg + dlt);
+            }
+            target_of(&g, q, &T);
+            for (i = 0; i < 6u; i++) {
+                const int rev = g.r.joint[i].type == DH_JOINT_REVOLUTE;
+                qr[i] = (float)(q[i] + (rev ? dht_rand_uniform(-spread, spread) : 0.0));
+                win[i] = dh_ikc_ref_f32_(qr[i] + g.m.off[i]);
+                win[6u + i] = rev ? ths[dht_rand_u32() % 6u] : INFINITY;
+            }
+            DHT_EQ_INT(dh_ikc_args_f32_(&g.m, &T, qr, DH_IKC_KEEP_OUT_OF_LIMITS), DH_OK);
+            nf = dh_ikc_raw_f32_(&g.m, &T, qr, full);
+            np = dh_ikc_raw_win_f32_(&g.m, &T, wq, part);
+            DHT_TRUE(nf <= DH_IKC_MAX_SOL && np <= nf);
+            for (j = 0; j < nf; j++) {
+                if (p < np && memcmp(&full[j], &part[p], sizeof full[j]) == 0) {
+                    p++;
+                    continue;
+                }
+                /* left out: outside the window on some revolute joint */
+                {
+                    int out = 0;
+                    for (i = 0; i < 6u; i++) {
+                        const double d = fmod(fabs((double)full[j].q[i] - win[i]), 360.0);
+                        if (fmin(d, 360.0 - d) > (double)win[6u + i] - 2.2e-5) out = 1;
+                    }
+                    DHT_TRUE_MSG(out, "%s q %s: full solution %u left out within the window", g.d->name,
+                                 dhs_qf_str(q, 6u, 0), (unsigned)j);
+                }
+                left++;
+            }
+            DHT_TRUE_MSG(p == np, "%s q %s: pruned solution %u is none of the full solve's in order", g.d->name,
+                         dhs_qf_str(q, 6u, 0), (unsigned)p);
+            kept += np;
+            all += nf;
+        }
+        printf("%s: %ld targets, %ld of %ld solutions within the windows\n", g.d->name, n, kept, all);
+    }
+    /* the windows left solutions out */
+    DHT_TRUE(left > 0);
+}
+
 static const dht_case cases[] = {
     DHT_CASE(bad_targets_brake),
     DHT_CASE(smooth_paths_every_call_ok),
@@ -749,6 +882,7 @@ static const dht_case cases[] = {
     DHT_CASE(target_jumps),
     DHT_CASE(sync_continues),
     DHT_CASE(closed_form_measures),
+    DHT_CASE(pruned_solve_is_full),
 };
 
 DHT_MAIN(cases)
