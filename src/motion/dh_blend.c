@@ -60,10 +60,17 @@ static dh_status blend_check_lim(const dh_cart_limits_f32 *lim, float radius)
     return DH_OK;
 }
 
-/* 1 when p holds a line */
-static int blend_is_line(const dh_path_f32 *p)
+/* 1 when p holds a line or an arc */
+static int blend_is_path(const dh_path_f32 *p)
 {
-    return dh_motion_path_ok_f32_(p) && p->kind == (uint32_t)DH_PATH_LINE;
+    return dh_motion_path_ok_f32_(p) && (p->kind == (uint32_t)DH_PATH_LINE || p->kind == (uint32_t)DH_PATH_ARC);
+}
+
+/* 1 when p is an arc of radius > 0 (its tool point has a centripetal
+ * acceleration) */
+static int blend_is_arc(const dh_path_f32 *p)
+{
+    return p->kind == (uint32_t)DH_PATH_ARC && p->radius > 0.0f;
 }
 
 /* 1 when p2->A equals p1->B within DH_ROT_TOL (positions relative to
@@ -91,25 +98,20 @@ static dh_status blend_check(const dh_path_f32 *p1, const dh_path_f32 *p2, const
 {
     dh_status st = blend_check_lim(lim, radius);
     if (st != DH_OK) return st;
-    if (radius < 0.0f || !blend_is_line(p1) || !blend_is_line(p2) || !blend_joins(p1, p2)) return DH_ERR_ARG;
+    if (radius < 0.0f || !blend_is_path(p1) || !blend_is_path(p2) || !blend_joins(p1, p2)) return DH_ERR_ARG;
     return DH_OK;
 }
 
-/* The bounds r[0] = V, r[1] = a of s for the line p within lim, and
- * r[2] = a (lowered by blend_share); all 0 when p has no length and no
- * angle: no motion */
+/* The bounds r[0] = V, r[1] = a of s for the path p within lim (those
+ * of dh_path_move_f32: on an arc V and a leave room for its centripetal
+ * acceleration), and r[2] = a (lowered by blend_share); all 0 when p has
+ * no length and no angle: no motion */
 static dh_status blend_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, float r[3])
 {
-    dh_status st;
+    dh_status st = DH_OK;
     r[0] = 0.0f;
     r[1] = 0.0f;
-    st = dh_motion_bound_f32_(&r[0], lim->vmax, p->length);
-    if (st == DH_OK) st = dh_motion_bound_f32_(&r[0], lim->wmax, p->angle);
-    if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], lim->amax, p->length);
-    if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], lim->wdmax, p->angle);
-    if (st == DH_OK && (p->length > 0.0f || p->angle > 0.0f) && (!(r[0] > 0.0f) || !(r[1] > 0.0f))) {
-        st = DH_ERR_OVERFLOW;
-    }
+    if (p->length > 0.0f || p->angle > 0.0f) st = dh_motion_path_rates_f32_(p, lim, r);
     r[2] = r[1];
     return st;
 }
@@ -129,15 +131,20 @@ static float blend_turn(const dh_path_f32 *p1, const dh_path_f32 *p2)
 
 /* The tails' accelerations r1[2], r2[2] of s: L_i b_i <= c = amax /
  * max(1, |d2 - d1|) (so |L2 b2 d2 - L1 b1 d1| <= amax), or with sum 1
- * L1 b1 + L2 b2 <= amax (the queue's: any signs of the two), then both scaled
- * so that th1 b1 + th2 b2 <= (63/64) wdmax (the cross term of the
- * rotations gets the last 1/64 through tb) */
+ * L1 b1 + L2 b2 <= amax (the queue's: any signs of the two), or at a
+ * corner with an arc L1 b1 + L2 b2 <= sh amax (the tangents turn; the
+ * rest, (1 - sh) amax, is the arcs' centripetal accelerations, held by
+ * blend_overlap), then both scaled so that th1 b1 + th2 b2 <=
+ * (63/64) wdmax (the cross term of the rotations gets the last 1/64
+ * through tb) */
 static DH_NOINLINE void blend_share(const dh_path_f32 *p1, const dh_path_f32 *p2, float r1[3], float r2[3],
-                                    const dh_cart_limits_f32 *lim, int sum)
+                                    const dh_cart_limits_f32 *lim, int sum, float sh)
 {
+    const int arc = blend_is_arc(p1) || blend_is_arc(p2);
     float c = lim->amax * BLEND_MARGIN, g, w;
-    if (sum != 0) {
-        /* the queue's corners: L1 b1 + L2 b2 <= amax */
+    if (arc != 0) c *= sh;
+    if (sum != 0 || arc != 0) {
+        /* the queue's corners and those with an arc: L1 b1 + L2 b2 <= c */
         w = p1->length * r1[2] + p2->length * r2[2];
         if (w > c) {
             w = c / w;
@@ -169,14 +176,25 @@ static void blend_min_sqrt(float *m, float n, float d)
     if (r < *m) *m = r;
 }
 
-/* The overlap tb of the lines p1, p2 with the rates r1, r2 (each V, a,
- * b) within lim and radius, each tail within fit / 2 of its line's s
- * (fit 2: the whole line, 1: half of it), the radius held by
- * (L1 b1 + w L2 b2) tb^2 / 2 (w 1; the queue's 2: the second line may
- * brake to twice its s); 0 when a move has no motion or radius is 0 */
+/* *m = min(*m, sqrt(ac rho) / (L b)) for an arc p (length L, radius
+ * rho) with the tail acceleration b: the tail's speed L b tb at most
+ * gives the centripetal acceleration (L b tb)^2 / rho <= ac */
+static void blend_arc_tb(float *m, const dh_path_f32 *p, float b, float ac)
+{
+    const float d = p->length * b;
+    if (blend_is_arc(p) && d > 0.0f) blend_min_sqrt(m, ac * (p->radius / d), d);
+}
+
+/* The overlap tb of the paths p1, p2 with the rates r1, r2 (each V, a,
+ * b) within lim and radius, each tail within fit / 2 of its path's s
+ * (fit 2: the whole path, 1: half of it), the radius held by
+ * (L1 b1 + w L2 b2) tb^2 / 2 (w 1; the queue's 2: the second path may
+ * brake to twice its s), an arc's centripetal acceleration in its tail
+ * within (1 - sh) amax by blend_arc_tb; 0 when a move has no motion or
+ * radius is 0 */
 static DH_NOINLINE float blend_overlap(const dh_path_f32 *p1, const dh_path_f32 *p2, const float r1[3],
                                        const float r2[3], const dh_cart_limits_f32 *lim, float radius, float fit,
-                                       float w)
+                                       float w, float sh)
 {
     float tb;
     if (!(r1[2] > 0.0f) || !(r2[2] > 0.0f) || !(radius > 0.0f)) return 0.0f;
@@ -186,6 +204,8 @@ static DH_NOINLINE float blend_overlap(const dh_path_f32 *p1, const dh_path_f32 
     blend_min_sqrt(&tb, fit, r2[2] * (1.0f + r2[2] / r2[1]));
     blend_min_sqrt(&tb, 2.0f * radius, p1->length * r1[2] + w * (p2->length * r2[2]));
     blend_min_sqrt(&tb, BLEND_RAD2DEG * 0.0625f * lim->wdmax, (p1->angle * r1[2]) * (p2->angle * r2[2]));
+    blend_arc_tb(&tb, p1, r1[2], (1.0f - sh) * lim->amax);
+    blend_arc_tb(&tb, p2, r2[2], (1.0f - sh) * lim->amax);
     tb *= BLEND_MARGIN;
     return (tb > 0.0f && dh_isfinite_f32(tb)) ? tb : 0.0f;
 }
@@ -210,6 +230,51 @@ static DH_NOINLINE float blend_T(const float r[3], float tb, float *vo, float *t
     *vo = v;
     *tvo = tv;
     return v / a + tv + (v - u) / a + tb;
+}
+
+/* the duration the tails of r1, r2 (each V, a, b; a > 0) and the
+ * overlap tb add to the two rest-to-rest scalings, less tb (+Inf when
+ * not finite): < 0 when the pair so planned is shorter */
+static DH_NOINLINE float blend_gain(const float r1[3], const float r2[3], float tb)
+{
+    float v, tv, g;
+    g = blend_T(r1, tb, &v, &tv) - blend_T(r1, 0.0f, &v, &tv);
+    g += blend_T(r2, tb, &v, &tv) - blend_T(r2, 0.0f, &v, &tv);
+    g -= tb;
+    return dh_isfinite_f32(g) ? g : INFINITY;
+}
+
+/* The tails r1[2], r2[2] (from r_i[2] = a_i) and the overlap tb of the
+ * corner p1 | p2 (blend_share's sum, blend_overlap's fit and w); at a
+ * corner with an arc, of the shares sh of amax in blend_corner_sh the one
+ * with the shortest pair (blend_gain; b 0 when no tb > 0) */
+static const float blend_corner_sh[3] = { 0.5f, 0.75f, 0.9375f };
+static DH_NOINLINE float blend_corner(const dh_path_f32 *p1, const dh_path_f32 *p2, float r1[3], float r2[3],
+                                      const dh_cart_limits_f32 *lim, float radius, float fit, float w, int sum)
+{
+    const float a1 = r1[2], a2 = r2[2];
+    float tb, g, best = 0.0f, gb = INFINITY, b1 = 0.0f, b2 = 0.0f;
+    int i;
+    if (!blend_is_arc(p1) && !blend_is_arc(p2)) {
+        blend_share(p1, p2, r1, r2, lim, sum, 1.0f);
+        return blend_overlap(p1, p2, r1, r2, lim, radius, fit, w, 1.0f);
+    }
+    for (i = 0; i < 3; i++) {
+        r1[2] = a1;
+        r2[2] = a2;
+        blend_share(p1, p2, r1, r2, lim, sum, blend_corner_sh[i]);
+        tb = blend_overlap(p1, p2, r1, r2, lim, radius, fit, w, blend_corner_sh[i]);
+        g = (tb > 0.0f) ? blend_gain(r1, r2, tb) : INFINITY;
+        if (g < gb) {
+            gb = g;
+            best = tb;
+            b1 = r1[2];
+            b2 = r2[2];
+        }
+    }
+    r1[2] = b1;
+    r2[2] = b2;
+    return best;
 }
 
 /* m = the scaling of one move with the rates r (V, a, b; all 0: no
@@ -267,8 +332,7 @@ dh_status dh_blend_plan_f32(dh_blend_f32 *bl, const dh_path_f32 *p1, const dh_pa
     if (st == DH_OK) st = blend_dur(r1, 0.0f, &T1);
     if (st == DH_OK) st = blend_dur(r2, 0.0f, &T2);
     if (st != DH_OK) return st;
-    blend_share(p1, p2, r1, r2, lim, 0);
-    tb = blend_overlap(p1, p2, r1, r2, lim, radius, 2.0f, 1.0f);
+    tb = blend_corner(p1, p2, r1, r2, lim, radius, 2.0f, 1.0f, 0);
     if (tb > 0.0f && (blend_dur(r1, tb, &U1) != DH_OK || blend_dur(r2, tb, &U2) != DH_OK ||
                       !((U1 - tb) + U2 < T1 + T2))) {
         tb = 0.0f;
@@ -351,10 +415,23 @@ void dh_blend_compose_f32_(const dh_quat_f32 *qa2, dh_mat4_f32 *T)
     DH_M4(T, 3, 3) = 1.0f;
 }
 
+/* T's position in an overlap: p1's end plus p1's point at the distance
+ * x1 of s from its end less that end, plus p2's point at s = x2 less its
+ * start (dh_motion_path_off_f32_; on lines p_B1 - x1 (p_B1 - p_A1) +
+ * x2 (p_B2 - p_A2)) */
+DH_INLINE void blend_position(const dh_path_f32 *p1, const dh_path_f32 *p2, float x1, float x2, dh_mat4_f32 *T)
+{
+    float o[3];
+    int i;
+    dh_motion_path_off_f32_(p2, x2, 0, T);
+    for (i = 0; i < 3; i++) o[i] = DH_M4(T, i, 3);
+    dh_motion_path_off_f32_(p1, x1, 1, T);
+    for (i = 0; i < 3; i++) DH_M4(T, i, 3) = (DH_M4(&p1->B, i, 3) + DH_M4(T, i, 3)) + o[i];
+}
+
 dh_status dh_blend_eval_f32(const dh_blend_f32 *bl, float t, dh_mat4_f32 *T)
 {
     float t2;
-    int i;
     DH_ASSERT(bl != NULL && T != NULL);
     if (isunordered(t, t)) return DH_ERR_NAN;
     if (!dh_motion_path_ok_f32_(&bl->p1) || !dh_motion_path_ok_f32_(&bl->p2)) return DH_ERR_ARG;
@@ -365,11 +442,7 @@ dh_status dh_blend_eval_f32(const dh_blend_f32 *bl, float t, dh_mat4_f32 *T)
     blend_slerp(&bl->p1, blend_prof_eval(&bl->m1, t, 0), T, 0);
     blend_slerp(&bl->p2, blend_prof_eval(&bl->m2, t2, 1), T, 1);
     dh_blend_compose_f32_(&bl->p2.qa, T);
-    for (i = 0; i < 3; i++) {
-        DH_M4(T, i, 3) = DH_M4(&bl->p1.B, i, 3) -
-                         blend_prof_eval(&bl->m1, t, 1) * (DH_M4(&bl->p1.B, i, 3) - DH_M4(&bl->p1.A, i, 3)) +
-                         blend_prof_eval(&bl->m2, t2, 1) * (DH_M4(&bl->p2.B, i, 3) - DH_M4(&bl->p2.A, i, 3));
-    }
+    blend_position(&bl->p1, &bl->p2, blend_prof_eval(&bl->m1, t, 1), blend_prof_eval(&bl->m2, t2, 1), T);
     return DH_OK;
 }
 
@@ -387,7 +460,7 @@ static DH_NOINLINE dh_status seq_check(const dh_path_f32 *p, uint32_t n, const f
     }
     if (st != DH_OK) return st;
     for (k = 0u; k < n; k++) {
-        if (!blend_is_line(&p[k])) return DH_ERR_ARG;
+        if (!blend_is_path(&p[k])) return DH_ERR_ARG;
         if (k + 1u < n && (radius[k] < 0.0f || !blend_joins(&p[k], &p[k + 1u]))) return DH_ERR_ARG;
     }
     return DH_OK;
@@ -419,8 +492,7 @@ static DH_NOINLINE void seq_corner(dh_blend_seg_f32 *g, const dh_path_f32 *p, co
     float r1[3], r2[3], tb;
     (void)blend_rates(&p[0], lim, r1);
     (void)blend_rates(&p[1], lim, r2);
-    blend_share(&p[0], &p[1], r1, r2, lim, 0);
-    tb = blend_overlap(&p[0], &p[1], r1, r2, lim, radius, 1.0f, 1.0f);
+    tb = blend_corner(&p[0], &p[1], r1, r2, lim, radius, 1.0f, 1.0f, 0);
     if (!(tb > 0.0f)) {
         tb = 0.0f;
         r1[2] = 0.0f;
@@ -608,12 +680,7 @@ static DH_NOINLINE void seq_position(const dh_blend_seq_f32 *sq, uint32_t k, flo
 {
     const dh_path_f32 *p = &sq->p[k - 1u];
     const dh_blend_seg_f32 *g = &sq->seg[k - 1u];
-    const float x1 = seq_prof_eval(&g[0], t - g[0].t0, 1), x2 = seq_prof_eval(&g[1], t - g[1].t0, 0);
-    int i;
-    for (i = 0; i < 3; i++) {
-        DH_M4(T, i, 3) = DH_M4(&p[0].B, i, 3) - x1 * (DH_M4(&p[0].B, i, 3) - DH_M4(&p[0].A, i, 3)) +
-                         x2 * (DH_M4(&p[1].B, i, 3) - DH_M4(&p[1].A, i, 3));
-    }
+    blend_position(&p[0], &p[1], seq_prof_eval(&g[0], t - g[0].t0, 1), seq_prof_eval(&g[1], t - g[1].t0, 0), T);
 }
 
 /* the index of the last line of sq with t0 <= t */
@@ -652,10 +719,9 @@ float dh_blend_corner_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, const d
     float r1[3], r2[3], tb, g, h, v, tv;
     b[0] = 0.0f;
     b[1] = 0.0f;
-    if (!blend_is_line(p1) || !blend_is_line(p2) || !blend_joins(p1, p2) || !(radius > 0.0f)) return 0.0f;
+    if (!blend_is_path(p1) || !blend_is_path(p2) || !blend_joins(p1, p2) || !(radius > 0.0f)) return 0.0f;
     if (blend_rates(p1, lim, r1) != DH_OK || blend_rates(p2, lim, r2) != DH_OK) return 0.0f;
-    blend_share(p1, p2, r1, r2, lim, 1);
-    tb = blend_overlap(p1, p2, r1, r2, lim, radius, 1.0f, 2.0f);
+    tb = blend_corner(p1, p2, r1, r2, lim, radius, 1.0f, 2.0f, 1);
     if (!(tb > 0.0f)) return 0.0f;
     /* blended when shorter: (U1 - T1) + (U2 - T2) < tb, as seq_cost (a
      * duration that is not finite: at rest) */
@@ -725,10 +791,5 @@ void dh_blend_pose_rot_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat
 
 void dh_blend_pose_pos_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat4_f32 *T)
 {
-    const float s1 = DH_M4(T, 0, 3), s2 = DH_M4(T, 1, 3);
-    int i;
-    for (i = 0; i < 3; i++) {
-        DH_M4(T, i, 3) = DH_M4(&p1->B, i, 3) - (1.0f - s1) * (DH_M4(&p1->B, i, 3) - DH_M4(&p1->A, i, 3)) +
-                         s2 * (DH_M4(&p2->B, i, 3) - DH_M4(&p2->A, i, 3));
-    }
+    blend_position(p1, p2, 1.0f - DH_M4(T, 0, 3), DH_M4(T, 1, 3), T);
 }

@@ -240,22 +240,51 @@ dh_status dh_path_arc_f32(dh_path_f32 *p, const dh_mat4_f32 *A, const float via[
     return st;
 }
 
-/* The position of the arc of p at 0 < s < 1 into T, from the nearer end */
-static DH_NOINLINE void path_arc_point(const dh_path_f32 *p, float s, dh_mat4_f32 *T)
+/* T's position column = the arc p's point at the distance 0 <= x <= 1/2
+ * of s from its end (end 0: p_A, s = x; end 1: p_B, s = 1 - x) less that
+ * end */
+DH_INLINE void path_arc_off(const dh_path_f32 *p, float x, int end, dh_mat4_f32 *T)
 {
-    const dh_mat4_f32 *E = (s > 0.5f) ? &p->B : &p->A;
-    const float *u = (s > 0.5f) ? p->u1 : p->u0;
-    float x = ((s > 0.5f) ? 1.0f - s : s) * (p->sweep * DH_DEG2RAD_F);
+    const float *u = (end != 0) ? p->u1 : p->u0;
     float s4, c4, sh, ch, sn, cm, t[3];
     int i;
-    dh_sincosf_pio4_(0.25f * x, &s4, &c4);
+    dh_sincosf_pio4_(0.25f * (x * (p->sweep * DH_DEG2RAD_F)), &s4, &c4);
     sh = 2.0f * s4 * c4;
     ch = (c4 - s4) * (c4 + s4);
     sn = 2.0f * sh * ch;
     cm = -2.0f * sh * sh;
-    if (s > 0.5f) sn = -sn;          /* back from p_B: clockwise */
+    if (end != 0) sn = -sn;          /* back from p_B: clockwise */
     path_cross(p->n, u, t);
-    for (i = 0; i < 3; i++) DH_M4(T, i, 3) = DH_M4(E, i, 3) + (cm * u[i] + sn * t[i]);
+    for (i = 0; i < 3; i++) DH_M4(T, i, 3) = cm * u[i] + sn * t[i];
+}
+
+/* The position of the arc of p at 0 < s < 1 into T, from the nearer end */
+static DH_NOINLINE void path_arc_point(const dh_path_f32 *p, float s, dh_mat4_f32 *T)
+{
+    const int end = (s > 0.5f) ? 1 : 0;
+    const dh_mat4_f32 *E = (end != 0) ? &p->B : &p->A;
+    int i;
+    path_arc_off(p, (end != 0) ? 1.0f - s : s, end, T);
+    for (i = 0; i < 3; i++) DH_M4(T, i, 3) = DH_M4(E, i, 3) + DH_M4(T, i, 3);
+}
+
+/* motion_impl.h */
+void dh_motion_path_off_f32_(const dh_path_f32 *p, float x, int end, dh_mat4_f32 *T)
+{
+    const dh_mat4_f32 *E = (end != 0) ? &p->B : &p->A, *F = (end != 0) ? &p->A : &p->B;
+    float dp;
+    int i;
+    if (p->kind != (uint32_t)DH_PATH_ARC) {
+        for (i = 0; i < 3; i++) {
+            dp = DH_M4(&p->B, i, 3) - DH_M4(&p->A, i, 3);
+            DH_M4(T, i, 3) = (end != 0) ? -(x * dp) : x * dp;
+        }
+    } else if (x <= 0.5f) {
+        path_arc_off(p, x, end, T);
+    } else {
+        path_arc_off(p, 1.0f - x, (end != 0) ? 0 : 1, T);
+        for (i = 0; i < 3; i++) DH_M4(T, i, 3) = (DH_M4(F, i, 3) - DH_M4(E, i, 3)) + DH_M4(T, i, 3);
+    }
 }
 
 /* T's rotation = that of the unit quaternion q */
@@ -371,6 +400,16 @@ static dh_status path_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
         if (st == DH_OK) st = dh_motion_bound_f32_(&b[2], jk->wjmax, p->angle);
         if (st == DH_OK && !(b[2] > 0.0f)) st = DH_ERR_OVERFLOW;
     }
+    return st;
+}
+
+/* motion_impl.h */
+dh_status dh_motion_path_rates_f32_(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, float b[2])
+{
+    float r[3];
+    const dh_status st = path_rates(p, lim, NULL, r);
+    b[0] = r[0];
+    b[1] = r[1];
     return st;
 }
 

@@ -172,10 +172,10 @@ static DH_NOINLINE void queue_add_corner(dh_queue_f32 *qu, float radius)
 }
 
 /* the radius's status */
-static DH_NOINLINE dh_status queue_radius(const dh_path_f32 *p, float radius)
+static DH_NOINLINE dh_status queue_radius(float radius)
 {
     if (!dh_isfinite_f32(radius)) return DH_ERR_NAN;
-    return (radius < 0.0f || (radius > 0.0f && p->kind != (uint32_t)DH_PATH_LINE)) ? DH_ERR_ARG : DH_OK;
+    return (radius < 0.0f) ? DH_ERR_ARG : DH_OK;
 }
 
 /* The rest of the checks of a path move with the profile prof (the
@@ -206,7 +206,7 @@ static DH_NOINLINE dh_status queue_add_path(dh_queue_f32 *qu, const dh_path_f32 
                                             float radius)
 {
     dh_profile_f32 prof;
-    dh_status st = queue_radius(p, radius);
+    dh_status st = queue_radius(radius);
     if (st == DH_OK) st = dh_path_move_f32(&prof, p, lim);
     if (st == DH_OK) st = queue_add_item(qu, p, lim, &prof);
     return st;

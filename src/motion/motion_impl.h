@@ -5,7 +5,8 @@
  * their end frames and call the slerp of dh_interp.c directly, without
  * dh_pose_interp_f32's checks and conversions, to stay within the 256 B
  * stack budget; the move executor (dh_move.c) checks a path with the
- * test of dh_path.c; the jerk bound of an arc (dh_path.c) takes the
+ * test of dh_path.c; the blends take a path's rates and its points
+ * relative to an end from dh_path.c; the jerk bound of an arc (dh_path.c) takes the
  * profiles' cube root.
  */
 #ifndef DHMATH_SRC_MOTION_IMPL_H
@@ -31,6 +32,18 @@ int dh_motion_path_ok_f32_(const dh_path_f32 *p);
  * 0 or is NaN (dh_path.c); the rate bounds of a path move (dh_path.c) and
  * of a blend's tails (dh_blend.c) */
 dh_status dh_motion_bound_f32_(float *sl, float num, float den);
+
+/* The bounds b[0] of s' and b[1] of s'' of a trapezoidal move of the
+ * path p within lim, as dh_path_move_f32 takes them (an arc's speed and
+ * tangential acceleration within its centripetal acceleration); p has
+ * length or angle > 0. DH_ERR_OVERFLOW when a bound is not a positive
+ * float (dh_path.c); the blends' rates (dh_blend.c) */
+dh_status dh_motion_path_rates_f32_(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, float b[2]);
+
+/* T's position column (rows 0-2) = p(s) less p's end (end 0: p_A,
+ * s = x; end 1: p_B, s = 1 - x) for x in [0, 1], an arc from its nearer
+ * end (dh_path.c); the superposition of blends (dh_blend.c) */
+void dh_motion_path_off_f32_(const dh_path_f32 *p, float x, int end, dh_mat4_f32 *T);
 
 /* The square root (cube == 0) or the cube root (cube == 1) of n / m for
  * finite n >= 0, m > 0 (0 for n == 0), without underflow or overflow of

@@ -4,17 +4,22 @@
  * (dh_queue_add_path_blend_f32), run through the tracker as `dhmath move
  * --blend` runs them, at 1 kHz, seeded random queues.
  *
- * Queues of 2 to 6 lines on the Puma 560, UR5 and Panda (the lines join
- * the FK frames of configurations a few degrees apart, so the tool also
- * turns), each with a random radius (0 in a fifth of them; up to 5 cm),
+ * Queues of 2 to 6 segments on the Puma 560, UR5 and Panda, each a line
+ * or (in half of them) an arc through a via point off its chord by 0.1
+ * to 0.4 of it (the segments join the FK frames of configurations a few
+ * degrees apart, so the tool also turns), each with a random radius (0 in
+ * a fifth of them; up to 5 cm),
  * random Cartesian limits, in a queue of three items: up to three lines
  * queued at the start (in a third of the queues fewer), the others
  * appended as moves complete (a corner whose successor is not queued when
  * the line starts runs at rest). Every period's target (the queue's
  * command) is checked:
- * - outside an overlap (the queue's bmode is not 2) on its line within
- *   1e-6 m, inside one within the corner's radius of the corner (plus
- *   8 FLT_EPSILON of the positions' scale);
+ * - outside an overlap (the queue's bmode is not 2) on its segment within
+ *   1e-6 m (an arc: the circle of the path dh_path_arc_f32 made, centre
+ *   p_A - u0, and within its sweep; test_path.c bounds that circle
+ *   against the double one through the three points), inside one within
+ *   the corner's radius of the corner (plus 8 FLT_EPSILON of the
+ *   positions' scale);
  * - speed, TOTAL acceleration, angular speed and angular acceleration by
  *   finite differences within the limits times 1 + 1e-3, over windows of
  *   WS = 10 periods every period (plus 8 ulp of the positions' scale, at
@@ -37,7 +42,7 @@
  * complete in order, the last target is the last line's B bit for bit.
  *
  * Statuses of dh_queue_add_path_blend_f32: a NaN radius, a negative one,
- * an arc with a radius > 0 (a radius 0 is accepted), the queue untouched.
+ * the queue untouched; an arc with a radius > 0 is accepted.
  */
 #include <float.h>
 #include <math.h>
@@ -76,8 +81,12 @@ static dh_path_f32 line;              /* the line being appended */
 static float qc[NMAX + 1][DH_MAX_JOINTS]; /* the corners' configurations */
 static float cp[NMAX + 1][3];         /* the corners' positions (line k: cp[k] to cp[k + 1]) */
 static float radius[NMAX];
+static unsigned char isarc[NMAX];      /* segment k is an arc */
+static float via[NMAX][3];            /* its via point */
+static float au0[NMAX][3], an[NMAX][3], asw[NMAX]; /* its path's u0, unit normal n and sweep (degrees) */
 static float sp[NS][7], lp[NL][7];    /* position and unit quaternion of the target m periods (m WD periods) ago */
 static long nh;
+static long arc_ov;                   /* periods in overlaps at a corner with an arc */
 
 static double dist3(const double a[3], const double b[3])
 {
@@ -101,6 +110,40 @@ static double seg_dist(uint32_t k, const double x[3])
     s = fmin(fmax(s, 0.0), 1.0);
     for (i = 0; i < 3; i++) e[i] = r[i] - s * d[i];
     return sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+}
+
+/* distance of x from the arc of segment k: from the circle of centre
+ * p_A - u0, radius |u0| in the plane of normal n, and beyond the sweep
+ * the distance from the nearer end */
+static double arc_dist(uint32_t k, const double x[3])
+{
+    double r[3], n[3], u[3], w[3], z = 0.0, nn = 0.0, rho = 0.0, rr = 0.0, ph, e[2];
+    int i;
+    for (i = 0; i < 3; i++) nn += (double)an[k][i] * an[k][i];
+    for (i = 0; i < 3; i++) {
+        n[i] = an[k][i] / sqrt(nn);
+        u[i] = au0[k][i];
+        r[i] = x[i] - ((double)cp[k][i] - u[i]);
+        z += r[i] * n[i];
+        rho += u[i] * u[i];
+    }
+    rho = sqrt(rho);
+    for (i = 0; i < 3; i++) {
+        r[i] -= z * n[i];
+        rr += r[i] * r[i];
+    }
+    w[0] = n[1] * u[2] - n[2] * u[1];
+    w[1] = n[2] * u[0] - n[0] * u[2];
+    w[2] = n[0] * u[1] - n[1] * u[0];
+    ph = atan2(r[0] * w[0] + r[1] * w[1] + r[2] * w[2], r[0] * u[0] + r[1] * u[1] + r[2] * u[2]);
+    if (ph < -0.5 * (2.0 * 3.14159265358979323846 - (double)asw[k] / RAD2DEG)) ph += 2.0 * 3.14159265358979323846;
+    if (ph >= 0.0 && ph <= (double)asw[k] / RAD2DEG) {
+        e[0] = z;
+        e[1] = sqrt(rr) - rho;
+        return sqrt(e[0] * e[0] + e[1] * e[1]);
+    }
+    for (i = 0; i < 3; i++) r[i] = x[i] - cp[(ph < 0.0) ? k : k + 1u][i];
+    return sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
 }
 
 /* unit quaternion (w, x, y, z) of T's rotation, in double (Shepperd) */
@@ -232,10 +275,11 @@ static int check_path(const dh_mat4_f32 *T, uint32_t n, double S, long call)
         d = dist3(x, c);
         DHT_TRUE_MSG(k + 1u < n && d <= (double)radius[k] + tol, "call %ld: %.9g from corner %u, radius %.9g", call, d,
                      (unsigned)k, (double)radius[k]);
+        if (isarc[k] || (k + 1u < n && isarc[k + 1u])) arc_ov++;
         return 1;
     }
-    d = seg_dist(k, x);
-    DHT_TRUE_MSG(d <= 1e-6, "call %ld: %.9g off line %u", call, d, (unsigned)k);
+    d = isarc[k] ? arc_dist(k, x) : seg_dist(k, x);
+    DHT_TRUE_MSG(d <= 1e-6, "call %ld: %.9g off %s %u", call, d, isarc[k] ? "arc" : "line", (unsigned)k);
     return 0;
 }
 
@@ -248,14 +292,52 @@ static void corner(const rig *g, uint32_t k, dh_mat4_f32 *T)
     dhs_target_f32(&g->r, q, T);
 }
 
-/* line k appended with its radius */
+/* segment k appended with its radius (an arc: its circle kept for
+ * arc_dist) */
 static void append(const rig *g, uint32_t k, const dh_cart_limits_f32 *lim)
 {
     dh_mat4_f32 A, B;
+    int i;
     corner(g, k, &A);
     corner(g, k + 1u, &B);
-    DHT_EQ_INT(dh_path_line_f32(&line, &A, &B), DH_OK);
+    if (isarc[k]) {
+        DHT_EQ_INT(dh_path_arc_f32(&line, &A, via[k], &B), DH_OK);
+        for (i = 0; i < 3; i++) {
+            au0[k][i] = line.u0[i];
+            an[k][i] = line.n[i];
+        }
+        asw[k] = line.sweep;
+    } else {
+        DHT_EQ_INT(dh_path_line_f32(&line, &A, &B), DH_OK);
+    }
     DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, lim, radius[k]), DH_OK);
+}
+
+/* segment k an arc (in half the segments, of a chord of 1 cm at least):
+ * its via point off the chord's middle by 0.1 to 0.4 of the chord, in a
+ * random direction across it */
+static void draw_arc(uint32_t k)
+{
+    double d[3], e[3], h = 0.0, c = 0.0, x;
+    int i;
+    for (i = 0; i < 3; i++) {
+        d[i] = (double)cp[k + 1u][i] - cp[k][i];
+        c += d[i] * d[i];
+    }
+    isarc[k] = 0;
+    if (dht_rand_u32() % 2u == 0u || c < 1e-4) return;
+    do {
+        for (i = 0; i < 3; i++) e[i] = dht_rand_uniform(-1.0, 1.0);
+        x = (e[0] * d[0] + e[1] * d[1] + e[2] * d[2]) / c;
+        h = 0.0;
+        for (i = 0; i < 3; i++) {
+            e[i] -= x * d[i];
+            h += e[i] * e[i];
+        }
+    } while (h < 0.01);
+    x = dht_rand_uniform(0.1, 0.4) * sqrt(c / h);
+    for (i = 0; i < 3; i++) via[k][i] = (float)(0.5 * ((double)cp[k][i] + cp[k + 1u][i]) + x * e[i]);
+    isarc[k] = 1;
 }
 
 /* a random queue of n lines from the configuration qa: the corners'
@@ -276,6 +358,7 @@ static void draw_lines(const rig *g, const double *qa, uint32_t n, double step)
         for (i = 0; i < 3u; i++) cp[k][i] = T.m[3][i];
         if (k < n) radius[k] = (dht_rand_u32() % 5u == 0u) ? 0.0f : (float)dht_rand_uniform(1e-3, 0.05);
     }
+    for (k = 0; k < n; k++) draw_arc(k);
 }
 
 /* one random queue on the rig's robot from about q_nom (the file's comment) */
@@ -374,8 +457,9 @@ static void run_robot(const dhs_robot *d, const double *q_nom, int closed)
     for (i = 0; i < g.r.n; i++) DHT_EQ_INT(dh_robot_set_rates_f32(&g.r, i, 180.0f, 3000.0f), DH_OK);
     g.closed = closed;
     if (closed) DHT_EQ_INT(dh_ikc_analyse_f32(&g.r, &g.m), DH_OK);
+    arc_ov = 0;
     for (it = 0; it < nq; it++) blend_queue(&g, q_nom, &ov);
-    printf("%s: %ld queues, %ld periods in overlaps\n", d->name, nq, ov);
+    printf("%s: %ld queues, %ld periods in overlaps, %ld at corners with an arc\n", d->name, nq, ov, arc_ov);
 }
 
 static void queues_puma(void)
@@ -412,7 +496,7 @@ static void blend_bad(void)
     static const dh_cart_limits_f32 lim = { 0.1f, 1.0f, 30.0f, 300.0f };
     dh_path_f32 arc;
     dh_mat4_f32 A, B;
-    const float via[3] = { 0.3f, 0.1f, 0.2f };
+    const float v[3] = { 0.3f, 0.1f, 0.2f };
     uint64_t keep;
     memset(&A, 0, sizeof A);
     A.m[0][0] = A.m[1][1] = A.m[2][2] = A.m[3][3] = 1.0f;
@@ -421,18 +505,17 @@ static void blend_bad(void)
     B.m[3][0] = 0.4f;
     B.m[3][1] = 0.2f;
     DHT_EQ_INT(dh_path_line_f32(&line, &A, &B), DH_OK);
-    DHT_EQ_INT(dh_path_arc_f32(&arc, &A, via, &B), DH_OK);
+    DHT_EQ_INT(dh_path_arc_f32(&arc, &A, v, &B), DH_OK);
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, 1), DH_OK);
     keep = queue_hash();
     DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, &lim, NAN), DH_ERR_NAN);
     DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, &lim, INFINITY), DH_ERR_NAN);
     DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, &lim, -1e-3f), DH_ERR_ARG);
-    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &arc, &lim, 1e-3f), DH_ERR_ARG);
     DHT_TRUE(queue_hash() == keep);
-    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &arc, &lim, 0.0f), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &arc, &lim, 1e-3f), DH_OK);
     DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, &lim, 1e-3f), DH_ERR_LIMIT);
     DHT_EQ_INT(qu.count, 1);
-    DHT_TRUE(items[0].radius == 0.0f && items[0].path.kind == (uint32_t)DH_PATH_ARC);
+    DHT_TRUE(items[0].radius == 1e-3f && items[0].path.kind == (uint32_t)DH_PATH_ARC);
 }
 
 static const dht_case cases[] = {
