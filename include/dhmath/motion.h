@@ -672,6 +672,7 @@ typedef struct {
     float radius;                  /**< path move: blend radius of its corner with the next move (0: at rest) */
     float ctb;                     /**< path move: overlap of that corner (s; 0: at rest), planned when the next is appended */
     float cb[2];                   /**< path move: the corner's tail accelerations of s, its own and the next move's */
+    float rate[2];                 /**< path move: the bounds of s' and s'' of its blended scalings (arcs: beside the centripetal acceleration) */
 } dh_queue_item_f32;
 
 /**

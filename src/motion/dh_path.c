@@ -246,16 +246,18 @@ dh_status dh_path_arc_f32(dh_path_f32 *p, const dh_mat4_f32 *A, const float via[
 DH_INLINE void path_arc_off(const dh_path_f32 *p, float x, int end, dh_mat4_f32 *T)
 {
     const float *u = (end != 0) ? p->u1 : p->u0;
-    float s4, c4, sh, ch, sn, cm, t[3];
-    int i;
+    const float *n = p->n;
+    float s4, c4, sh, ch, sn, cm;
     dh_sincosf_pio4_(0.25f * (x * (p->sweep * DH_DEG2RAD_F)), &s4, &c4);
     sh = 2.0f * s4 * c4;
     ch = (c4 - s4) * (c4 + s4);
     sn = 2.0f * sh * ch;
     cm = -2.0f * sh * sh;
     if (end != 0) sn = -sn;          /* back from p_B: clockwise */
-    path_cross(p->n, u, t);
-    for (i = 0; i < 3; i++) DH_M4(T, i, 3) = cm * u[i] + sn * t[i];
+    /* + sn (n x u), the cross product written out (no frame of its own) */
+    DH_M4(T, 0, 3) = cm * u[0] + sn * (n[1] * u[2] - n[2] * u[1]);
+    DH_M4(T, 1, 3) = cm * u[1] + sn * (n[2] * u[0] - n[0] * u[2]);
+    DH_M4(T, 2, 3) = cm * u[2] + sn * (n[0] * u[1] - n[1] * u[0]);
 }
 
 /* The position of the arc of p at 0 < s < 1 into T, from the nearer end */
@@ -357,6 +359,24 @@ dh_status dh_motion_bound_f32_(float *sl, float num, float den)
     return DH_OK;
 }
 
+/* *V lowered to sqrt(amax R / sqrt 2) for the arc p (radius R) and *At
+ * = the tangential acceleration that leaves room for the centripetal
+ * acceleration V^2 / R within amax */
+DH_INLINE void path_arc_va(const dh_path_f32 *p, float amax, float *V, float *At)
+{
+    const float R = p->radius;
+    float r = dh_sqrt_f32(amax * PATH_RSQRT2 * R);
+    if (r < *V) *V = r;
+    r = (*V / amax) * (*V / R);   /* centripetal / amax <= 1/sqrt 2 */
+    *At = amax * dh_sqrt_f32(1.0f - r * r);
+}
+
+/* motion_impl.h */
+void dh_motion_arc_rates_f32_(const dh_path_f32 *p, float amax, float *V, float *At)
+{
+    path_arc_va(p, amax, V, At);
+}
+
 /* The speed and tangential acceleration of the arc p's tool point within
  * lim (and within jk's jmax when jk is not NULL), lowering *V and setting
  * *At; with jk, the tangential jerk bound into *Jt */
@@ -364,14 +384,11 @@ static void path_arc_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, 
                            float *V, float *At, float *Jt)
 {
     float R = p->radius, r;
-    r = dh_sqrt_f32(lim->amax * PATH_RSQRT2 * R);
-    if (r < *V) *V = r;
     if (jk != NULL) {
         r = dh_motion_root_f32_(0.25f * jk->jmax, R, 1) * R;   /* cbrt(jmax R^2 / 4) */
         if (r < *V) *V = r;
     }
-    r = (*V / lim->amax) * (*V / R);   /* centripetal / amax <= 1/sqrt 2 */
-    *At = lim->amax * dh_sqrt_f32(1.0f - r * r);
+    path_arc_va(p, lim->amax, V, At);
     if (jk != NULL) {
         r = (jk->jmax * PATH_TWELFTH) * (R / *V);
         if (r < *At) *At = r;
@@ -400,16 +417,6 @@ static dh_status path_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
         if (st == DH_OK) st = dh_motion_bound_f32_(&b[2], jk->wjmax, p->angle);
         if (st == DH_OK && !(b[2] > 0.0f)) st = DH_ERR_OVERFLOW;
     }
-    return st;
-}
-
-/* motion_impl.h */
-dh_status dh_motion_path_rates_f32_(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, float b[2])
-{
-    float r[3];
-    const dh_status st = path_rates(p, lim, NULL, r);
-    b[0] = r[0];
-    b[1] = r[1];
     return st;
 }
 
