@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * dh_blend.c - two line moves blended at their corner by superposition.
+ * dh_blend.c - two path moves (lines or arcs) blended at their corner by
+ * superposition.
  *
  * Each move scales s from 0 to 1 with a trapezoid of s' <= V and
  * |s''| <= a (the bounds of dh_path_move_f32 on a line: V = min(vmax / L,
@@ -9,22 +10,32 @@
  * acceleration b <= a: the tail, from the speed u = b tb to rest over
  * e = b tb^2 / 2. The second move is the time mirror of such a profile
  * (its tail at its start). The tails overlap: on [t0, t0 + tb],
- * t0 = T1 - tb, the position is p1(s1) + s2 (p_B2 - p_A2) and the
- * rotation q2(s2) q_A2* q1(s1), i.e. Exp(s2 w2) R1(s1) with w2 the second
- * line's fixed world rotation vector.
+ * t0 = T1 - tb, the position is p1(s1) + (p2(s2) - p_A2) (on lines
+ * p1(s1) + s2 (p_B2 - p_A2)) and the rotation q2(s2) q_A2* q1(s1), i.e.
+ * Exp(s2 w2) R1(s1) with w2 the second path's fixed world rotation
+ * vector.
  *
  * The tails' accelerations (blend_share): L_i b_i <= c = amax /
  * max(1, |d2 - d1|); in the overlap the tool point's acceleration is the
  * constant L2 b2 d2 - L1 b1 d1, whose norm is convex in (L1 b1, L2 b2)
  * and so at most its largest value at a corner of [0, c]^2: c or
  * c |d2 - d1|, both <= amax. Then th1 b1 + th2 b2 <= (63/64) wdmax.
+ * At a corner with an arc (radius rho) the tangents turn and the arc adds
+ * its centripetal acceleration (L s')^2 / rho: the tails share amax,
+ * L1 b1 + L2 b2 <= sh amax (any directions) and each arc's tail speed
+ * L b tb <= sqrt((1 - sh) amax rho), so the sum is within amax; of the
+ * shares sh = 1/2, 3/4, 15/16 the planner keeps the one with the largest
+ * lower bound tb (b1 / a1 + b2 / a2 - 1) of the time saved
+ * (blend_arc_overlap). An arc's V and a are dh_path_move_f32's (speed and
+ * tangential acceleration beside its own centripetal acceleration).
  *
  * tb = (1 - 2^-10) min(V_i / b_i, sqrt(2 / (b_i (1 + b_i / a_i))),
  * sqrt(2 R / (L1 b1 + L2 b2)), sqrt((180/pi) wdmax / (16 th1 b1 th2 b2)))
  * (terms with a zero denominator left out), so that (docs/design.md,
  * "Blended corners"): u_i <= V_i (the tail starts below the cruise speed),
  * the tail fits the move (u^2 / (2 a) + e <= 1), the tool point stays
- * within R of the corner (L1 e1 + L2 e2 <= R), and the cross term
+ * within R of the corner (L1 e1 + L2 e2 <= R: a chord is at most its
+ * arc), and the cross term
  * |w1| |w2| (pi/180) <= (pi/180) th1 b1 th2 b2 tb^2 / 4 <= wdmax / 64 of
  * the angular acceleration of the composed rotation. In the overlap the
  * speeds are linear in time, one falling to 0 and one rising from 0, so
