@@ -229,11 +229,6 @@ DH_INLINE float blend_tb(const dh_path_f32 *p1, const dh_path_f32 *p2, const flo
     return (tb > 0.0f && dh_isfinite_f32(tb)) ? tb : 0.0f;
 }
 
-/* The shares sh of amax tried at a corner with an arc: the tails'
- * tangential accelerations within sh amax (L1 b1 + L2 b2), the arcs'
- * centripetal ones within (1 - sh) amax */
-static const float blend_arc_sh[3] = { 0.5f, 0.75f, 0.9375f };
-
 /* The overlap tb of the lines p1, p2 with the rates r1, r2 (each V, a,
  * b; blend_share's b) within lim and radius (blend_tb's fit and w); 0
  * when a move has no motion or radius is 0 */
@@ -254,6 +249,10 @@ static DH_NOINLINE float blend_overlap(const dh_path_f32 *p1, const dh_path_f32 
 static DH_NOINLINE float blend_arc_overlap(const dh_path_f32 *p1, const dh_path_f32 *p2, float r1[3], float r2[3],
                                            const dh_cart_limits_f32 *lim, float radius, float fit, float w)
 {
+    /* the shares sh of amax: the tails' tangential accelerations within
+     * sh amax (L1 b1 + L2 b2), the arcs' centripetal ones within
+     * (1 - sh) amax */
+    static const float blend_arc_sh[3] = { 0.5f, 0.75f, 0.9375f };
     float b[2], tb, x, best = 0.0f, tbest = 0.0f;
     int i;
     r1[2] = 0.0f;

@@ -263,10 +263,15 @@ DH_INLINE void path_arc_off(const dh_path_f32 *p, float x, int end, dh_mat4_f32 
 /* The position of the arc of p at 0 < s < 1 into T, from the nearer end */
 static DH_NOINLINE void path_arc_point(const dh_path_f32 *p, float s, dh_mat4_f32 *T)
 {
-    const int end = (s > 0.5f) ? 1 : 0;
-    const dh_mat4_f32 *E = (end != 0) ? &p->B : &p->A;
-    int i;
-    path_arc_off(p, (end != 0) ? 1.0f - s : s, end, T);
+    const dh_mat4_f32 *E = &p->A;
+    float x = s;
+    int i, end = 0;
+    if (s > 0.5f) {
+        E = &p->B;
+        x = 1.0f - s;
+        end = 1;
+    }
+    path_arc_off(p, x, end, T);
     for (i = 0; i < 3; i++) DH_M4(T, i, 3) = DH_M4(E, i, 3) + DH_M4(T, i, 3);
 }
 
