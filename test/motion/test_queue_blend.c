@@ -87,6 +87,7 @@ static float au0[NMAX][3], an[NMAX][3], asw[NMAX]; /* its path's u0, unit normal
 static float sp[NS][7], lp[NL][7];    /* position and unit quaternion of the target m periods (m WD periods) ago */
 static long nh;
 static long arc_ov;                   /* periods in overlaps at a corner with an arc */
+static long arc_stops;                /* stops inside such an overlap */
 
 static double dist3(const double a[3], const double b[3])
 {
@@ -432,6 +433,7 @@ static void blend_queue(rig *g, const double *q_nom, long *overlap_periods)
              (stop_mode == 2 && call == stop_at))) {
             stop_call = call;
             tb_stop = qu.bl[0].tb1;
+            if (stop_mode == 1 && (isarc[qu.seq] || isarc[qu.seq + 1u])) arc_stops++;
             DHT_EQ_INT(dh_queue_stop_f32(&qu), DH_OK);
             if (stop_mode == 1) DHT_EQ_INT(qu.phase, DH_QUEUE_BRAKE);
         }
@@ -458,8 +460,10 @@ static void run_robot(const dhs_robot *d, const double *q_nom, int closed)
     g.closed = closed;
     if (closed) DHT_EQ_INT(dh_ikc_analyse_f32(&g.r, &g.m), DH_OK);
     arc_ov = 0;
+    arc_stops = 0;
     for (it = 0; it < nq; it++) blend_queue(&g, q_nom, &ov);
-    printf("%s: %ld queues, %ld periods in overlaps, %ld at corners with an arc\n", d->name, nq, ov, arc_ov);
+    printf("%s: %ld queues, %ld periods in overlaps, %ld at corners with an arc (%ld stops there)\n", d->name, nq,
+           ov, arc_ov, arc_stops);
 }
 
 static void queues_puma(void)
