@@ -81,9 +81,7 @@ static dh_path_f32 line;              /* the line being appended */
 static float qc[NMAX + 1][DH_MAX_JOINTS]; /* the corners' configurations */
 static float cp[NMAX + 1][3];         /* the corners' positions (line k: cp[k] to cp[k + 1]) */
 static float radius[NMAX];
-static unsigned char isarc[NMAX];      /* segment k is an arc */
-static float via[NMAX][3];            /* its via point */
-static float au0[NMAX][3], an[NMAX][3], asw[NMAX]; /* its path's u0, unit normal n and sweep (degrees) */
+static unsigned char isarc[NMAX];      /* segment k is an arc (drawn when appended) */
 static float sp[NS][7], lp[NL][7];    /* position and unit quaternion of the target m periods (m WD periods) ago */
 static long nh;
 static long arc_ov;                   /* periods in overlaps at a corner with an arc */
@@ -113,17 +111,35 @@ static double seg_dist(uint32_t k, const double x[3])
     return sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
 }
 
-/* distance of x from the arc of segment k: from the circle of centre
- * p_A - u0, radius |u0| in the plane of normal n, and beyond the sweep
- * the distance from the nearer end */
+/* the path of segment k in the queue's ring: the item from corner k to
+ * corner k + 1 (NULL when none) */
+static const dh_path_f32 *seg_path(uint32_t k)
+{
+    uint32_t i;
+    for (i = 0; i < CAP; i++) {
+        const dh_path_f32 *p = &items[i].path;
+        if (items[i].kind == (uint32_t)DH_MOVE_PATH && memcmp(&p->A.m[3][0], cp[k], sizeof cp[k]) == 0 &&
+            memcmp(&p->B.m[3][0], cp[k + 1u], sizeof cp[k]) == 0)
+            return p;
+    }
+    return NULL;
+}
+
+/* distance of x from the arc of segment k (its path in the queue's ring):
+ * from the circle of centre p_A - u0, radius |u0| in the plane of normal
+ * n, and beyond the sweep the distance from the nearer end */
 static double arc_dist(uint32_t k, const double x[3])
 {
-    double r[3], n[3], u[3], w[3], z = 0.0, nn = 0.0, rho = 0.0, rr = 0.0, ph, e[2];
+    const dh_path_f32 *p = seg_path(k);
+    double r[3], n[3], u[3], w[3], z = 0.0, nn = 0.0, rho = 0.0, rr = 0.0, ph, e[2], sw;
     int i;
-    for (i = 0; i < 3; i++) nn += (double)an[k][i] * an[k][i];
+    DHT_TRUE(p != NULL && p->kind == (uint32_t)DH_PATH_ARC);
+    if (p == NULL) return INFINITY;
+    sw = (double)p->sweep / RAD2DEG;
+    for (i = 0; i < 3; i++) nn += (double)p->n[i] * p->n[i];
     for (i = 0; i < 3; i++) {
-        n[i] = an[k][i] / sqrt(nn);
-        u[i] = au0[k][i];
+        n[i] = p->n[i] / sqrt(nn);
+        u[i] = p->u0[i];
         r[i] = x[i] - ((double)cp[k][i] - u[i]);
         z += r[i] * n[i];
         rho += u[i] * u[i];
@@ -137,8 +153,8 @@ static double arc_dist(uint32_t k, const double x[3])
     w[1] = n[2] * u[0] - n[0] * u[2];
     w[2] = n[0] * u[1] - n[1] * u[0];
     ph = atan2(r[0] * w[0] + r[1] * w[1] + r[2] * w[2], r[0] * u[0] + r[1] * u[1] + r[2] * u[2]);
-    if (ph < -0.5 * (2.0 * 3.14159265358979323846 - (double)asw[k] / RAD2DEG)) ph += 2.0 * 3.14159265358979323846;
-    if (ph >= 0.0 && ph <= (double)asw[k] / RAD2DEG) {
+    if (ph < -0.5 * (2.0 * 3.14159265358979323846 - sw)) ph += 2.0 * 3.14159265358979323846;
+    if (ph >= 0.0 && ph <= sw) {
         e[0] = z;
         e[1] = sqrt(rr) - rho;
         return sqrt(e[0] * e[0] + e[1] * e[1]);
@@ -293,31 +309,10 @@ static void corner(const rig *g, uint32_t k, dh_mat4_f32 *T)
     dhs_target_f32(&g->r, q, T);
 }
 
-/* segment k appended with its radius (an arc: its circle kept for
- * arc_dist) */
-static void append(const rig *g, uint32_t k, const dh_cart_limits_f32 *lim)
-{
-    dh_mat4_f32 A, B;
-    int i;
-    corner(g, k, &A);
-    corner(g, k + 1u, &B);
-    if (isarc[k]) {
-        DHT_EQ_INT(dh_path_arc_f32(&line, &A, via[k], &B), DH_OK);
-        for (i = 0; i < 3; i++) {
-            au0[k][i] = line.u0[i];
-            an[k][i] = line.n[i];
-        }
-        asw[k] = line.sweep;
-    } else {
-        DHT_EQ_INT(dh_path_line_f32(&line, &A, &B), DH_OK);
-    }
-    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, lim, radius[k]), DH_OK);
-}
-
-/* segment k an arc (in half the segments, of a chord of 1 cm at least):
- * its via point off the chord's middle by 0.1 to 0.4 of the chord, in a
- * random direction across it */
-static void draw_arc(uint32_t k)
+/* segment k an arc (in half the segments, of a chord of 1 cm at least;
+ * 0 when not): its via point off the chord's middle by 0.1 to 0.4 of the
+ * chord, in a random direction across it */
+static int draw_arc(uint32_t k, float via[3])
 {
     double d[3], e[3], h = 0.0, c = 0.0, x;
     int i;
@@ -325,8 +320,7 @@ static void draw_arc(uint32_t k)
         d[i] = (double)cp[k + 1u][i] - cp[k][i];
         c += d[i] * d[i];
     }
-    isarc[k] = 0;
-    if (dht_rand_u32() % 2u == 0u || c < 1e-4) return;
+    if (dht_rand_u32() % 2u == 0u || c < 1e-4) return 0;
     do {
         for (i = 0; i < 3; i++) e[i] = dht_rand_uniform(-1.0, 1.0);
         x = (e[0] * d[0] + e[1] * d[1] + e[2] * d[2]) / c;
@@ -337,8 +331,23 @@ static void draw_arc(uint32_t k)
         }
     } while (h < 0.01);
     x = dht_rand_uniform(0.1, 0.4) * sqrt(c / h);
-    for (i = 0; i < 3; i++) via[k][i] = (float)(0.5 * ((double)cp[k][i] + cp[k + 1u][i]) + x * e[i]);
-    isarc[k] = 1;
+    for (i = 0; i < 3; i++) via[i] = (float)(0.5 * ((double)cp[k][i] + cp[k + 1u][i]) + x * e[i]);
+    return 1;
+}
+
+/* segment k appended with its radius: a line, or an arc (draw_arc) */
+static void append(const rig *g, uint32_t k, const dh_cart_limits_f32 *lim)
+{
+    dh_mat4_f32 A, B;
+    float via[3];
+    corner(g, k, &A);
+    corner(g, k + 1u, &B);
+    isarc[k] = (unsigned char)draw_arc(k, via);
+    if (isarc[k])
+        DHT_EQ_INT(dh_path_arc_f32(&line, &A, via, &B), DH_OK);
+    else
+        DHT_EQ_INT(dh_path_line_f32(&line, &A, &B), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, lim, radius[k]), DH_OK);
 }
 
 /* a random queue of n lines from the configuration qa: the corners'
@@ -359,7 +368,6 @@ static void draw_lines(const rig *g, const double *qa, uint32_t n, double step)
         for (i = 0; i < 3u; i++) cp[k][i] = T.m[3][i];
         if (k < n) radius[k] = (dht_rand_u32() % 5u == 0u) ? 0.0f : (float)dht_rand_uniform(1e-3, 0.05);
     }
-    for (k = 0; k < n; k++) draw_arc(k);
 }
 
 /* one random queue on the rig's robot from about q_nom (the file's comment) */
