@@ -203,8 +203,8 @@ static int move_blend(const move_args *a, float *r)
     double x = 0.0;
     int rc;
     if (a->jerk)
-        return cli_error("move --blend", "blended corners are not jerk-limited (a blend superposes two trapezoids of "
-                         "constant acceleration); run with --jerk or with --blend, not both");
+        return cli_error("move --blend", "blended corners are not jerk-limited (a blend superposes two trapezoidal "
+                         "scalings, whose acceleration steps); run with --jerk or with --blend, not both");
     if ((rc = cli_parse_num(a->blend, "--blend", &x)) != 0) return rc;
     if (!(x >= 0.0) || !isfinite((float)x)) {
         fprintf(stderr, "dhmath: error: --blend: %.9g must be a finite radius >= 0 (length unit)\n", x);
@@ -403,9 +403,9 @@ static int run_path(move_plan *p, unsigned i, const move_seg *s, float *q)
     return 0;
 }
 
-/* Cartesian segments i0..i1-1 run by one queue with their corners
- * blended within --blend (lines; an arc's corners at rest), tracked from
- * the tracker's configuration */
+/* Cartesian segments i0..i1-1 (lines and arcs) run by one queue with
+ * their corners blended within --blend, tracked from the tracker's
+ * configuration */
 static int run_blend(move_plan *p, const move_args *a, unsigned i0, unsigned i1, float *q)
 {
     dh_queue_report_f32 rep;
@@ -416,8 +416,7 @@ static int run_blend(move_plan *p, const move_args *a, unsigned i0, unsigned i1,
     int rc;
     dh_status st = dh_queue_init_f32(&p->qu, p->items, MOVE_MAX_SEG);
     for (; i < i1 && st == DH_OK; i++) {
-        const float r = (p->path[i].kind == (uint32_t)DH_PATH_LINE) ? p->blend : 0.0f;
-        st = dh_queue_add_path_blend_f32(&p->qu, &p->path[i], &p->lim, r);
+        st = dh_queue_add_path_blend_f32(&p->qu, &p->path[i], &p->lim, p->blend);
         if (st != DH_OK) return seg_error(i, &a->seg[i], "the blended move cannot be planned", path_why(st));
     }
     for (i = i0; i < i1;) {

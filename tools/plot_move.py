@@ -65,6 +65,11 @@ EXAMPLES = [
      [UR5, "--q0", UR5_Q0] + UR5_LIMITS + UR5_CART + ["--blend", "0.03"] +
      [a for c in ("-0.408,-0.273", "-0.408,-0.123", "-0.558,-0.123", "-0.558,-0.273")
       for a in ("--line", "trans(%s,0.281) %s" % (c, UR5_ROT))]),
+    ("move_ur5_blend_arc", "UR5: a line, an arc and a line, their corners blended within 3 cm (--blend 0.03)",
+     [UR5, "--q0", UR5_Q0] + UR5_LIMITS + UR5_CART + ["--blend", "0.03",
+      "--line", "trans(-0.408,-0.273,0.281) " + UR5_ROT, "--line", "trans(-0.408,-0.123,0.281) " + UR5_ROT,
+      "--arc", "trans(-0.483,-0.07,0.281)", "trans(-0.558,-0.123,0.281) " + UR5_ROT,
+      "--line", "trans(-0.558,-0.273,0.281) " + UR5_ROT]),
     ("move_puma_line_joint", "Puma 560: a line, then a joint move back",
      [PUMA, "--q0", "10,-30,45,20,35,-60", "--dt", "0.002", "--vmax", "150", "--amax", "600",
       "--speed", "0.3", "--accel", "1.5", "--rspeed", "90", "--raccel", "360",

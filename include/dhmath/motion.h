@@ -613,7 +613,7 @@ dh_status dh_move_target_f32(const dh_move_f32 *mv, dh_mat4_f32 *T);
 dh_status dh_move_advance_f32(dh_move_f32 *mv, float dt, dh_track_state state, dh_move_report_f32 *rep);
 
 /**
- * @brief The time scaling of s from 0 to 1 of one line of a blended
+ * @brief The time scaling of s from 0 to 1 of one path of a blended
  *        sequence and its place on the sequence's clock (read-only for
  *        the user, who reads t0, T and dev): a tail at each end at a
  *        reduced acceleration (from rest at b0 for tb0, reaching u0 over
@@ -672,6 +672,7 @@ typedef struct {
     float radius;                  /**< path move: blend radius of its corner with the next move (0: at rest) */
     float ctb;                     /**< path move: overlap of that corner (s; 0: at rest), planned when the next is appended */
     float cb[2];                   /**< path move: the corner's tail accelerations of s, its own and the next move's */
+    float rate[2];                 /**< path move: the bounds of s' and s'' of its blended scalings (arcs: beside the centripetal acceleration) */
 } dh_queue_item_f32;
 
 /**
@@ -782,27 +783,28 @@ dh_status dh_queue_add_path_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh
  *        dh_queue_add_path_f32, whose corner with the NEXT move is blended
  *        within radius: passed without stopping, the lines left only
  *        inside the ball of that radius about the corner.
- * Blended when both moves are lines with motion and equal limits, the
- * next starts at p->B (as dh_blend_plan_f32 requires), is queued when
- * this one starts (from rest, in the overlap with the move before, or
- * resuming) and the blend is shorter; else at rest (as with a joint move,
- * an arc, radius 0). Method: dh_blend_plan_f32's superposition, each tail
- * within half its line, the tails' linear accelerations summing to at
- * most amax (docs/design.md, "Blended corners in the queue"). Speed, TOTAL
+ * Blended when both moves are paths (lines or arcs) with motion and equal
+ * limits, the next starts at p->B (as dh_blend_plan_f32 requires), is
+ * queued when this one starts (from rest, in the overlap with the move
+ * before, or resuming) and the blend is shorter; else at rest (as with a
+ * joint move, radius 0). Method: dh_blend_plan_f32's superposition, each
+ * tail within half its path, the tails' tangential accelerations summing
+ * to at most amax (at a corner with an arc a share of it, the rest for
+ * the arcs' centripetal accelerations) (docs/design.md, "Blended corners
+ * in the queue"). Speed, TOTAL
  * acceleration, angular speed and acceleration within lim up to float
  * rounding (1e-6 relative) at every period, with the feed override (held
  * inside an overlap), a stop (inside an overlap each line brakes at its
  * tail's acceleration, within the radius) and a resume (from rest: the
  * first line to its end, then the next). Outside the overlaps the target
- * is on its line as dh_path_eval_f32's.
+ * is on its path as dh_path_eval_f32's.
  * @param qu, p, lim as dh_queue_add_path_f32 (p and lim copied).
- * @param radius blend radius (p's length unit), finite and >= 0; an arc
- *        takes 0 only. The queue's path moves are trapezoids (no jerk
- *        limit), so no jerk-limited move is blended.
+ * @param radius blend radius (p's length unit), finite and >= 0. The
+ *        queue's path moves are trapezoids of s, whose acceleration steps:
+ *        no jerk limit holds in a blend, so none is jerk-limited.
  * @return DH_OK; DH_ERR_NAN for a NaN/Inf radius; DH_ERR_ARG for
- *         radius < 0 or > 0 on a path that is no line; then the statuses
- *         of dh_queue_add_path_f32. On error qu and its items are
- *         untouched.
+ *         radius < 0; then the statuses of dh_queue_add_path_f32. On
+ *         error qu and its items are untouched.
  */
 dh_status dh_queue_add_path_blend_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
                                       float radius);
@@ -896,7 +898,7 @@ dh_status dh_queue_stop_f32(dh_queue_f32 *qu);
 dh_status dh_queue_resume_f32(dh_queue_f32 *qu);
 
 /* ======================================================================
- * Blended corner between two Cartesian line moves (dh_blend.c)
+ * Blended corner between two Cartesian moves, lines or arcs (dh_blend.c)
  * ==================================================================== */
 
 /**
@@ -922,13 +924,13 @@ typedef struct {
 } dh_blend_prof_f32;
 
 /**
- * @brief Two consecutive line moves blended at their corner (written by
+ * @brief Two consecutive path moves blended at their corner (written by
  *        dh_blend_plan_f32, read by dh_blend_eval_f32; read-only for the
  *        user, who reads t0, tb, T and dev).
  */
 typedef struct {
-    dh_path_f32 p1;         /**< first line (a copy) */
-    dh_path_f32 p2;         /**< second line (a copy), starting at p1's end frame */
+    dh_path_f32 p1;         /**< first path (a copy) */
+    dh_path_f32 p2;         /**< second path (a copy), starting at p1's end frame */
     dh_blend_prof_f32 m1;   /**< scaling of the first line, tail at its end */
     dh_blend_prof_f32 m2;   /**< scaling of the second line, evaluated backwards (tail at its start) */
     float t0;               /**< start of the overlap on the pair's clock (= the first move's): m1.T - tb */
@@ -938,23 +940,23 @@ typedef struct {
 } dh_blend_f32;
 
 /**
- * @brief bl = two line moves p1 then p2 blended at their corner by
- *        superposition: in the overlap [t0, t0 + tb] the position is
- *        p1(t) + (p2(t - t0) - corner) and the rotation Exp(s2 w2) R1(t)
- *        (w2 the second line's world rotation vector); elsewhere exactly
- *        that of the one move running. Each move is a trapezoid of s
- *        within lim (dh_path_move_f32's bounds) whose part in the overlap
- *        accelerates gently enough (L_i s_i'' <= amax / max(1, |d2 - d1|),
- *        d_i the directions; th1 s1'' + th2 s2'' <= (63/64) wdmax), with tb
- *        held so that the sums of both moves (speed, TOTAL acceleration,
- *        angular speed and acceleration with the cross term of the two
- *        rotations) stay within lim and the tool point within radius of
- *        the corner. Method and proofs: docs/design.md ("Blended corners").
+ * @brief bl = path moves p1 then p2 (lines or arcs) blended at their
+ *        corner by superposition: in the overlap [t0, t0 + tb] the
+ *        position is p1(t) + (p2(t - t0) - corner), the rotation
+ *        Exp(s2 w2) R1(t) (w2 p2's world rotation vector); elsewhere that
+ *        of the one move running. Each move is a trapezoid of s within
+ *        dh_path_move_f32's bounds whose part in the overlap accelerates
+ *        gently (two lines: L_i s_i'' <= amax / max(1, |d2 - d1|), d_i the
+ *        directions; with an arc: L1 s1'' + L2 s2'' <= sh amax and its
+ *        speed within sqrt((1 - sh) amax rho); th1 s1'' + th2 s2'' <=
+ *        (63/64) wdmax), tb held so that the sums of both moves (speed,
+ *        TOTAL acceleration, angular speed and acceleration) stay within
+ *        lim and the tool within radius of the corner (docs/design.md,
+ *        "Blended corners").
  * @param bl output.
- * @param p1, p2 lines (dh_path_line_f32; arcs are refused); p2->A equal to
- *        p1->B within DH_ROT_TOL (position entries relative to
- *        max(1, |p1->B's position|)). Straight continuations, pure
- *        rotations and moves of length 0 are fine.
+ * @param p1, p2 lines or arcs; p2->A equal to p1->B within DH_ROT_TOL
+ *        (positions relative to max(1, |p1->B's position|)). Straight
+ *        continuations, pure rotations and moves of length 0 are fine.
  * @param lim limits, each finite and > 0.
  * @param radius blend radius (length unit), finite and >= 0.
  * tb = 0 (the moves back to back, each dh_path_move_f32's rest-to-rest
@@ -963,8 +965,8 @@ typedef struct {
  * the back-to-back duration. Limits met up to float rounding (1e-6
  * relative); bl->dev <= radius.
  * @return DH_OK; DH_ERR_NAN for a NaN/Inf limit or radius; DH_ERR_ARG for
- *         a limit <= 0, radius < 0, p1 or p2 not a line (an arc, or no
- *         path) or p2->A not p1->B; DH_ERR_OVERFLOW when a rate or a
+ *         a limit <= 0, radius < 0, p1 or p2 no path (neither a line nor
+ *         an arc) or p2->A not p1->B; DH_ERR_OVERFLOW when a rate or a
  *         duration is not a positive finite float. bl untouched on error.
  */
 dh_status dh_blend_plan_f32(dh_blend_f32 *bl, const dh_path_f32 *p1, const dh_path_f32 *p2,
@@ -978,9 +980,10 @@ dh_status dh_blend_plan_f32(dh_blend_f32 *bl, const dh_path_f32 *p1, const dh_pa
  * @param t time, any value but NaN: clamped to [0, bl->T]; t <= 0 gives
  *        p1->A and t >= bl->T gives p2->B bit for bit.
  * @param T output frame (must not alias bl).
- * Outside the overlap the position is dh_path_eval_f32's (within 4
- * FLT_EPSILON S of the line); inside, within bl->dev of the corner up to
- * 8 FLT_EPSILON S (S the largest position magnitude of the lines).
+ * Outside the overlap the position is dh_path_eval_f32's; inside, within
+ * bl->dev of the corner up to 8 FLT_EPSILON (S + rho) (S the largest
+ * position magnitude of the paths, rho the largest arc radius, 0 for
+ * lines).
  * @return DH_OK; DH_ERR_NAN for a NaN t; DH_ERR_ARG when bl holds no
  *         blend (its paths not unit quaternions: e.g. all zero). T
  *         untouched on error.
@@ -988,51 +991,51 @@ dh_status dh_blend_plan_f32(dh_blend_f32 *bl, const dh_path_f32 *p1, const dh_pa
 dh_status dh_blend_eval_f32(const dh_blend_f32 *bl, float t, dh_mat4_f32 *T);
 
 /* ======================================================================
- * Blended sequence of Cartesian line moves (dh_blend.c)
+ * Blended sequence of Cartesian moves, lines and arcs (dh_blend.c)
  * ==================================================================== */
 
 
 /**
- * @brief A sequence of n line moves blended at their corners, over the
- *        caller's lines and array of n scalings (written by
+ * @brief A sequence of n path moves blended at their corners, over the
+ *        caller's paths and array of n scalings (written by
  *        dh_blend_seq_plan_f32, read by dh_blend_seq_eval_f32; read-only
  *        for the user, who reads n and T). Neither array is copied: both
  *        must stay unchanged while the sequence is used.
  */
 typedef struct {
-    const dh_path_f32 *p;  /**< the caller's lines */
-    dh_blend_seg_f32 *seg; /**< the caller's scalings, one per line */
-    uint32_t n;            /**< number of lines */
+    const dh_path_f32 *p;  /**< the caller's paths */
+    dh_blend_seg_f32 *seg; /**< the caller's scalings, one per path */
+    uint32_t n;            /**< number of paths */
     float T;               /**< duration of the sequence (s) */
 } dh_blend_seq_f32;
 
 /**
- * @brief sq = the n lines p[0..n-1] run one after the other, each corner k
- *        (between p[k] and p[k+1]) blended within radius[k] as by
- *        dh_blend_plan_f32 (superposed in the overlap, exactly one line's
- *        pose elsewhere), each tail within half of its line so that a line
- *        between two blended corners has one at each end.
+ * @brief sq = the n paths p[0..n-1] (lines or arcs) one after the other,
+ *        each corner k (p[k] to p[k+1]) blended within radius[k] as by
+ *        dh_blend_plan_f32 (superposed in the overlap, one path's pose
+ *        elsewhere), each tail within half its path (so a path between
+ *        two blended corners has one at each end).
  *        Method and proofs: docs/design.md ("Blended sequences").
  * @param sq output sequence.
  * @param seg the caller's array of n scalings (written; owned by sq).
- * @param p the caller's n lines (dh_path_line_f32; arcs are refused),
+ * @param p the caller's n paths (dh_path_line_f32, dh_path_arc_f32),
  *        p[k+1].A equal to p[k].B as dh_blend_plan_f32 requires (not
  *        copied: owned by sq). Lines of length 0, pure rotations and
  *        straight continuations are fine.
- * @param n number of lines, >= 1.
+ * @param n number of paths, >= 1.
  * @param radius n - 1 blend radii (length unit), finite and >= 0 (NULL
  *        allowed when n == 1).
  * @param lim limits, each finite and > 0.
  * A corner is run at rest (tb 0 at both sides) when its radius is 0, a
- * line next to it has no motion, or its blend alone would not shorten
+ * path next to it has no motion, or its blend alone would not shorten
  * the pair; and every corner is, when the whole sequence so planned
- * would not be shorter than its lines' rest-to-rest trapezoids back to
+ * would not be shorter than its paths' rest-to-rest trapezoids back to
  * back. Otherwise sq->T is less than that. Speed, TOTAL acceleration,
  * angular speed and acceleration within lim up to float rounding (1e-6
  * relative), seg[k].dev <= radius[k].
  * @return DH_OK; DH_ERR_NAN for a NaN/Inf limit or radius; DH_ERR_ARG for
- *         n == 0, a limit <= 0, a radius < 0, a p[k] that is not a line
- *         (an arc, or no path) or a p[k+1].A that is not p[k].B;
+ *         n == 0, a limit <= 0, a radius < 0, a p[k] that is no path
+ *         (neither a line nor an arc) or a p[k+1].A that is not p[k].B;
  *         DH_ERR_OVERFLOW when a rate or a duration is not a positive
  *         finite float. sq and seg untouched on error.
  */
@@ -1041,18 +1044,19 @@ dh_status dh_blend_seq_plan_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, con
 
 /**
  * @brief T = the frame of the blended sequence sq at time t (s, on the
- *        sequence's clock): the frame of line k at its own time
- *        t - seg[k].t0 where one line runs, the superposition of lines k
+ *        sequence's clock): the frame of path k at its own time
+ *        t - seg[k].t0 where one path runs, the superposition of paths k
  *        and k+1 in their overlap.
  * @param sq sequence from dh_blend_seq_plan_f32.
  * @param t time, any value but NaN: clamped to [0, sq->T]; t <= 0 gives
  *        p[0].A and t >= sq->T gives p[n-1].B bit for bit.
  * @param T output frame (must not alias the lines).
- * Outside the overlaps the position is dh_path_eval_f32's (within 4
- * FLT_EPSILON S of its line); inside, within seg[k].dev of corner k up to
- * 8 FLT_EPSILON S (S the largest position magnitude of the lines).
+ * Outside the overlaps the position is dh_path_eval_f32's; inside, within
+ * seg[k].dev of corner k up to 8 FLT_EPSILON (S + rho) (S the largest
+ * position magnitude of the paths, rho the largest arc radius, 0 for
+ * lines).
  * @return DH_OK; DH_ERR_NAN for a NaN t; DH_ERR_ARG when sq holds no
- *         sequence (n 0, or a line that holds no path). T untouched on
+ *         sequence (n 0, or an entry that holds no path). T untouched on
  *         error.
  */
 dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32 *T);

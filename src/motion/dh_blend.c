@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * dh_blend.c - two line moves blended at their corner by superposition.
+ * dh_blend.c - two path moves (lines or arcs) blended at their corner by
+ * superposition.
  *
  * Each move scales s from 0 to 1 with a trapezoid of s' <= V and
  * |s''| <= a (the bounds of dh_path_move_f32 on a line: V = min(vmax / L,
@@ -9,22 +10,32 @@
  * acceleration b <= a: the tail, from the speed u = b tb to rest over
  * e = b tb^2 / 2. The second move is the time mirror of such a profile
  * (its tail at its start). The tails overlap: on [t0, t0 + tb],
- * t0 = T1 - tb, the position is p1(s1) + s2 (p_B2 - p_A2) and the
- * rotation q2(s2) q_A2* q1(s1), i.e. Exp(s2 w2) R1(s1) with w2 the second
- * line's fixed world rotation vector.
+ * t0 = T1 - tb, the position is p1(s1) + (p2(s2) - p_A2) (on lines
+ * p1(s1) + s2 (p_B2 - p_A2)) and the rotation q2(s2) q_A2* q1(s1), i.e.
+ * Exp(s2 w2) R1(s1) with w2 the second path's fixed world rotation
+ * vector.
  *
  * The tails' accelerations (blend_share): L_i b_i <= c = amax /
  * max(1, |d2 - d1|); in the overlap the tool point's acceleration is the
  * constant L2 b2 d2 - L1 b1 d1, whose norm is convex in (L1 b1, L2 b2)
  * and so at most its largest value at a corner of [0, c]^2: c or
  * c |d2 - d1|, both <= amax. Then th1 b1 + th2 b2 <= (63/64) wdmax.
+ * At a corner with an arc (radius rho) the tangents turn and the arc adds
+ * its centripetal acceleration (L s')^2 / rho: the tails share amax,
+ * L1 b1 + L2 b2 <= sh amax (any directions) and each arc's tail speed
+ * L b tb <= sqrt((1 - sh) amax rho), so the sum is within amax; of the
+ * shares sh = 1/2, 3/4, 15/16 the planner keeps the one with the largest
+ * lower bound tb (b1 / a1 + b2 / a2 - 1) of the time saved
+ * (blend_arc_overlap). An arc's V and a are dh_path_move_f32's (speed and
+ * tangential acceleration beside its own centripetal acceleration).
  *
  * tb = (1 - 2^-10) min(V_i / b_i, sqrt(2 / (b_i (1 + b_i / a_i))),
  * sqrt(2 R / (L1 b1 + L2 b2)), sqrt((180/pi) wdmax / (16 th1 b1 th2 b2)))
  * (terms with a zero denominator left out), so that (docs/design.md,
  * "Blended corners"): u_i <= V_i (the tail starts below the cruise speed),
  * the tail fits the move (u^2 / (2 a) + e <= 1), the tool point stays
- * within R of the corner (L1 e1 + L2 e2 <= R), and the cross term
+ * within R of the corner (L1 e1 + L2 e2 <= R: a chord is at most its
+ * arc), and the cross term
  * |w1| |w2| (pi/180) <= (pi/180) th1 b1 th2 b2 tb^2 / 4 <= wdmax / 64 of
  * the angular acceleration of the composed rotation. In the overlap the
  * speeds are linear in time, one falling to 0 and one rising from 0, so
@@ -60,10 +71,17 @@ static dh_status blend_check_lim(const dh_cart_limits_f32 *lim, float radius)
     return DH_OK;
 }
 
-/* 1 when p holds a line */
-static int blend_is_line(const dh_path_f32 *p)
+/* 1 when p holds a line or an arc */
+static int blend_is_path(const dh_path_f32 *p)
 {
-    return dh_motion_path_ok_f32_(p) && p->kind == (uint32_t)DH_PATH_LINE;
+    return dh_motion_path_ok_f32_(p) && (p->kind == (uint32_t)DH_PATH_LINE || p->kind == (uint32_t)DH_PATH_ARC);
+}
+
+/* 1 when p is an arc of radius > 0 (its tool point has a centripetal
+ * acceleration) */
+static int blend_is_arc(const dh_path_f32 *p)
+{
+    return p->kind == (uint32_t)DH_PATH_ARC && p->radius > 0.0f;
 }
 
 /* 1 when p2->A equals p1->B within DH_ROT_TOL (positions relative to
@@ -91,21 +109,24 @@ static dh_status blend_check(const dh_path_f32 *p1, const dh_path_f32 *p2, const
 {
     dh_status st = blend_check_lim(lim, radius);
     if (st != DH_OK) return st;
-    if (radius < 0.0f || !blend_is_line(p1) || !blend_is_line(p2) || !blend_joins(p1, p2)) return DH_ERR_ARG;
+    if (radius < 0.0f || !blend_is_path(p1) || !blend_is_path(p2) || !blend_joins(p1, p2)) return DH_ERR_ARG;
     return DH_OK;
 }
 
-/* The bounds r[0] = V, r[1] = a of s for the line p within lim, and
- * r[2] = a (lowered by blend_share); all 0 when p has no length and no
- * angle: no motion */
+/* The bounds r[0] = V, r[1] = a of s for the path p within lim (those
+ * of dh_path_move_f32: on an arc V and a leave room for its centripetal
+ * acceleration), and r[2] = a (lowered by blend_share); all 0 when p has
+ * no length and no angle: no motion */
 static dh_status blend_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, float r[3])
 {
+    float V = lim->vmax, A = lim->amax;
     dh_status st;
     r[0] = 0.0f;
     r[1] = 0.0f;
-    st = dh_motion_bound_f32_(&r[0], lim->vmax, p->length);
+    if (blend_is_arc(p)) dh_motion_arc_rates_f32_(p, lim->amax, &V, &A);
+    st = dh_motion_bound_f32_(&r[0], V, p->length);
     if (st == DH_OK) st = dh_motion_bound_f32_(&r[0], lim->wmax, p->angle);
-    if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], lim->amax, p->length);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], A, p->length);
     if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], lim->wdmax, p->angle);
     if (st == DH_OK && (p->length > 0.0f || p->angle > 0.0f) && (!(r[0] > 0.0f) || !(r[1] > 0.0f))) {
         st = DH_ERR_OVERFLOW;
@@ -113,6 +134,8 @@ static dh_status blend_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim
     r[2] = r[1];
     return st;
 }
+
+
 
 /* |d2 - d1| of the unit directions of two lines of length > 0 */
 static float blend_turn(const dh_path_f32 *p1, const dh_path_f32 *p2)
@@ -127,41 +150,48 @@ static float blend_turn(const dh_path_f32 *p1, const dh_path_f32 *p2)
     return dh_sqrtf_(g);
 }
 
-/* The tails' accelerations r1[2], r2[2] of s: L_i b_i <= c = amax /
- * max(1, |d2 - d1|) (so |L2 b2 d2 - L1 b1 d1| <= amax), or with sum 1
- * L1 b1 + L2 b2 <= amax (the queue's: any signs of the two), then both scaled
- * so that th1 b1 + th2 b2 <= (63/64) wdmax (the cross term of the
- * rotations gets the last 1/64 through tb) */
+/* *b1, *b2 (tail accelerations of s) scaled together so that
+ * L1 b1 + L2 b2 <= c (c > 0; c 0: no such bound) and
+ * th1 b1 + th2 b2 <= (63/64) wd (the cross term of the rotations gets the
+ * last 1/64 through tb) */
+DH_INLINE void blend_scale(const dh_path_f32 *p1, const dh_path_f32 *p2, float *b1, float *b2, float c, float wd)
+{
+    float x = p1->length * *b1 + p2->length * *b2;
+    if (c > 0.0f && x > c) {
+        x = c / x;
+        *b1 *= x;
+        *b2 *= x;
+    }
+    x = p1->angle * *b1 + p2->angle * *b2;
+    if (x > BLEND_WSHARE * wd) {
+        x = (BLEND_WSHARE * wd) / x;
+        *b1 *= x;
+        *b2 *= x;
+    }
+}
+
+/* The tails' accelerations r1[2], r2[2] of s at a corner of two lines:
+ * L_i b_i <= c = amax / max(1, |d2 - d1|) (so |L2 b2 d2 - L1 b1 d1| <=
+ * amax), or with sum 1 L1 b1 + L2 b2 <= amax (the queue's: any signs of
+ * the two), then blend_scale's angular rule. At a corner with an arc
+ * they stay a (blend_overlap shares amax). */
 static DH_NOINLINE void blend_share(const dh_path_f32 *p1, const dh_path_f32 *p2, float r1[3], float r2[3],
                                     const dh_cart_limits_f32 *lim, int sum)
 {
-    float c = lim->amax * BLEND_MARGIN, g, w;
-    if (sum != 0) {
-        /* the queue's corners: L1 b1 + L2 b2 <= amax */
-        w = p1->length * r1[2] + p2->length * r2[2];
-        if (w > c) {
-            w = c / w;
-            r1[2] *= w;
-            r2[2] *= w;
-        }
-    } else if (p1->length > 0.0f && p2->length > 0.0f) {
+    float c = lim->amax * BLEND_MARGIN, g;
+    if (blend_is_arc(p1) || blend_is_arc(p2)) return;
+    if (sum == 0 && p1->length > 0.0f && p2->length > 0.0f) {
         g = blend_turn(p1, p2);
         if (g > 1.0f) c /= g;
         if (p1->length * r1[2] > c) r1[2] = c / p1->length;
         if (p2->length * r2[2] > c) r2[2] = c / p2->length;
-    } else {
-        /* a move without length: its tail adds no linear acceleration */
     }
-    w = p1->angle * r1[2] + p2->angle * r2[2];
-    if (w > BLEND_WSHARE * lim->wdmax) {
-        w = (BLEND_WSHARE * lim->wdmax) / w;
-        r1[2] *= w;
-        r2[2] *= w;
-    }
+    /* a move without length: its tail adds no linear acceleration */
+    blend_scale(p1, p2, &r1[2], &r2[2], (sum != 0) ? c : 0.0f, lim->wdmax);
 }
 
 /* *m = min(*m, sqrt(n / d)) for d > 0 */
-static void blend_min_sqrt(float *m, float n, float d)
+DH_INLINE void blend_min_sqrt(float *m, float n, float d)
 {
     float r;
     if (!(d > 0.0f)) return;
@@ -169,25 +199,87 @@ static void blend_min_sqrt(float *m, float n, float d)
     if (r < *m) *m = r;
 }
 
+/* *m = min(*m, sqrt(ac rho) / (L b)) for an arc p (length L, radius
+ * rho) with the tail acceleration b: the tail's speed L b tb at most
+ * gives the centripetal acceleration (L b tb)^2 / rho <= ac */
+DH_INLINE void blend_arc_tb(float *m, const dh_path_f32 *p, float b, float ac)
+{
+    const float d = p->length * b;
+    if (blend_is_arc(p) && d > 0.0f) blend_min_sqrt(m, ac * (p->radius / d), d);
+}
+
+/* The overlap tb of the paths p1, p2 with the rates r1, r2 (each V, a)
+ * and the tails b1, b2 within lim and radius, each tail within fit / 2
+ * of its path's s (fit 2: the whole path, 1: half of it), the radius held
+ * by (L1 b1 + w L2 b2) tb^2 / 2 (w 1; the queue's 2: the second path may
+ * brake to twice its s), an arc's centripetal acceleration in its tail
+ * within ac (blend_arc_tb); 0 when not positive and finite */
+DH_INLINE float blend_tb(const dh_path_f32 *p1, const dh_path_f32 *p2, const float r1[3], const float r2[3],
+                         float b1, float b2, const dh_cart_limits_f32 *lim, float radius, float fit, float w, float ac)
+{
+    float tb = r1[0] / b1;
+    if (r2[0] / b2 < tb) tb = r2[0] / b2;
+    blend_min_sqrt(&tb, fit, b1 * (1.0f + b1 / r1[1]));
+    blend_min_sqrt(&tb, fit, b2 * (1.0f + b2 / r2[1]));
+    blend_min_sqrt(&tb, 2.0f * radius, p1->length * b1 + w * (p2->length * b2));
+    blend_min_sqrt(&tb, BLEND_RAD2DEG * 0.0625f * lim->wdmax, (p1->angle * b1) * (p2->angle * b2));
+    blend_arc_tb(&tb, p1, b1, ac);
+    blend_arc_tb(&tb, p2, b2, ac);
+    tb *= BLEND_MARGIN;
+    return (tb > 0.0f && dh_isfinite_f32(tb)) ? tb : 0.0f;
+}
+
 /* The overlap tb of the lines p1, p2 with the rates r1, r2 (each V, a,
- * b) within lim and radius, each tail within fit / 2 of its line's s
- * (fit 2: the whole line, 1: half of it), the radius held by
- * (L1 b1 + w L2 b2) tb^2 / 2 (w 1; the queue's 2: the second line may
- * brake to twice its s); 0 when a move has no motion or radius is 0 */
+ * b; blend_share's b) within lim and radius (blend_tb's fit and w); 0
+ * when a move has no motion or radius is 0 */
 static DH_NOINLINE float blend_overlap(const dh_path_f32 *p1, const dh_path_f32 *p2, const float r1[3],
                                        const float r2[3], const dh_cart_limits_f32 *lim, float radius, float fit,
                                        float w)
 {
-    float tb;
     if (!(r1[2] > 0.0f) || !(r2[2] > 0.0f) || !(radius > 0.0f)) return 0.0f;
-    tb = r1[0] / r1[2];
-    if (r2[0] / r2[2] < tb) tb = r2[0] / r2[2];
-    blend_min_sqrt(&tb, fit, r1[2] * (1.0f + r1[2] / r1[1]));
-    blend_min_sqrt(&tb, fit, r2[2] * (1.0f + r2[2] / r2[1]));
-    blend_min_sqrt(&tb, 2.0f * radius, p1->length * r1[2] + w * (p2->length * r2[2]));
-    blend_min_sqrt(&tb, BLEND_RAD2DEG * 0.0625f * lim->wdmax, (p1->angle * r1[2]) * (p2->angle * r2[2]));
-    tb *= BLEND_MARGIN;
-    return (tb > 0.0f && dh_isfinite_f32(tb)) ? tb : 0.0f;
+    return blend_tb(p1, p2, r1, r2, r1[2], r2[2], lim, radius, fit, w, 0.0f);
+}
+
+/* blend_overlap at a corner with an arc, the tails r1[2], r2[2] set
+ * here: from a, for each share sh of blend_arc_sh within sh amax by
+ * blend_scale, the one whose lower bound of the time saved,
+ * tb (b1 / a1 + b2 / a2 - 1) (a tail at b costs at most
+ * u (1 / b - 1 / a) = tb (1 - b / a), docs/design.md), is the largest
+ * (b 0 when no share gives an overlap) */
+static DH_NOINLINE float blend_arc_overlap(const dh_path_f32 *p1, const dh_path_f32 *p2, float r1[3], float r2[3],
+                                           const dh_cart_limits_f32 *lim, float radius, float fit, float w)
+{
+    /* the shares sh of amax: the tails' tangential accelerations within
+     * sh amax (L1 b1 + L2 b2), the arcs' centripetal ones within
+     * (1 - sh) amax */
+    static const float blend_arc_sh[3] = { 0.5f, 0.75f, 0.9375f };
+    float b[2], tb, x, best = 0.0f, tbest = 0.0f;
+    int i;
+    r1[2] = 0.0f;
+    r2[2] = 0.0f;
+    for (i = 0; i < 3 && radius > 0.0f && r1[1] > 0.0f && r2[1] > 0.0f; i++) {
+        b[0] = r1[1];
+        b[1] = r2[1];
+        blend_scale(p1, p2, &b[0], &b[1], blend_arc_sh[i] * (lim->amax * BLEND_MARGIN), lim->wdmax);
+        tb = blend_tb(p1, p2, r1, r2, b[0], b[1], lim, radius, fit, w, (1.0f - blend_arc_sh[i]) * lim->amax);
+        x = tb * (b[0] / r1[1] + b[1] / r2[1] - 1.0f);
+        if (tb > 0.0f && (!(tbest > 0.0f) || x > best)) {
+            best = x;
+            tbest = tb;
+            r1[2] = b[0];
+            r2[2] = b[1];
+        }
+    }
+    return tbest;
+}
+
+/* the overlap of the corner p1 | p2: blend_overlap, or blend_arc_overlap
+ * at a corner with an arc (each called from the caller's frame) */
+DH_INLINE float blend_corner_tb(const dh_path_f32 *p1, const dh_path_f32 *p2, float r1[3], float r2[3],
+                                const dh_cart_limits_f32 *lim, float radius, float fit, float w)
+{
+    if (blend_is_arc(p1) || blend_is_arc(p2)) return blend_arc_overlap(p1, p2, r1, r2, lim, radius, fit, w);
+    return blend_overlap(p1, p2, r1, r2, lim, radius, fit, w);
 }
 
 /* The peak v (*vo), cruise time (*tvo) and duration of one move with
@@ -210,6 +302,18 @@ static DH_NOINLINE float blend_T(const float r[3], float tb, float *vo, float *t
     *vo = v;
     *tvo = tv;
     return v / a + tv + (v - u) / a + tb;
+}
+
+/* the duration the tails of r1, r2 (each V, a, b; a > 0) and the
+ * overlap tb add to the two rest-to-rest scalings, less tb (+Inf when
+ * not finite): < 0 when the pair so planned is shorter */
+static DH_NOINLINE float blend_gain(const float r1[3], const float r2[3], float tb)
+{
+    float v, tv, g;
+    g = blend_T(r1, tb, &v, &tv) - blend_T(r1, 0.0f, &v, &tv);
+    g += blend_T(r2, tb, &v, &tv) - blend_T(r2, 0.0f, &v, &tv);
+    g -= tb;
+    return dh_isfinite_f32(g) ? g : INFINITY;
 }
 
 /* m = the scaling of one move with the rates r (V, a, b; all 0: no
@@ -268,7 +372,7 @@ dh_status dh_blend_plan_f32(dh_blend_f32 *bl, const dh_path_f32 *p1, const dh_pa
     if (st == DH_OK) st = blend_dur(r2, 0.0f, &T2);
     if (st != DH_OK) return st;
     blend_share(p1, p2, r1, r2, lim, 0);
-    tb = blend_overlap(p1, p2, r1, r2, lim, radius, 2.0f, 1.0f);
+    tb = blend_corner_tb(p1, p2, r1, r2, lim, radius, 2.0f, 1.0f);
     if (tb > 0.0f && (blend_dur(r1, tb, &U1) != DH_OK || blend_dur(r2, tb, &U2) != DH_OK ||
                       !((U1 - tb) + U2 < T1 + T2))) {
         tb = 0.0f;
@@ -351,10 +455,23 @@ void dh_blend_compose_f32_(const dh_quat_f32 *qa2, dh_mat4_f32 *T)
     DH_M4(T, 3, 3) = 1.0f;
 }
 
+/* T's position in an overlap: p1's end plus p1's point at the distance
+ * x1 of s from its end less that end, plus p2's point at s = x2 less its
+ * start (dh_motion_path_off_f32_; on lines p_B1 - x1 (p_B1 - p_A1) +
+ * x2 (p_B2 - p_A2)) */
+void dh_blend_pose_pos_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, float x1, float x2, dh_mat4_f32 *T)
+{
+    float o[3];
+    int i;
+    dh_motion_path_off_f32_(p2, x2, 0, T);
+    for (i = 0; i < 3; i++) o[i] = DH_M4(T, i, 3);
+    dh_motion_path_off_f32_(p1, x1, 1, T);
+    for (i = 0; i < 3; i++) DH_M4(T, i, 3) = (DH_M4(&p1->B, i, 3) + DH_M4(T, i, 3)) + o[i];
+}
+
 dh_status dh_blend_eval_f32(const dh_blend_f32 *bl, float t, dh_mat4_f32 *T)
 {
     float t2;
-    int i;
     DH_ASSERT(bl != NULL && T != NULL);
     if (isunordered(t, t)) return DH_ERR_NAN;
     if (!dh_motion_path_ok_f32_(&bl->p1) || !dh_motion_path_ok_f32_(&bl->p2)) return DH_ERR_ARG;
@@ -365,11 +482,7 @@ dh_status dh_blend_eval_f32(const dh_blend_f32 *bl, float t, dh_mat4_f32 *T)
     blend_slerp(&bl->p1, blend_prof_eval(&bl->m1, t, 0), T, 0);
     blend_slerp(&bl->p2, blend_prof_eval(&bl->m2, t2, 1), T, 1);
     dh_blend_compose_f32_(&bl->p2.qa, T);
-    for (i = 0; i < 3; i++) {
-        DH_M4(T, i, 3) = DH_M4(&bl->p1.B, i, 3) -
-                         blend_prof_eval(&bl->m1, t, 1) * (DH_M4(&bl->p1.B, i, 3) - DH_M4(&bl->p1.A, i, 3)) +
-                         blend_prof_eval(&bl->m2, t2, 1) * (DH_M4(&bl->p2.B, i, 3) - DH_M4(&bl->p2.A, i, 3));
-    }
+    dh_blend_pose_pos_f32_(&bl->p1, &bl->p2, blend_prof_eval(&bl->m1, t, 1), blend_prof_eval(&bl->m2, t2, 1), T);
     return DH_OK;
 }
 
@@ -387,7 +500,7 @@ static DH_NOINLINE dh_status seq_check(const dh_path_f32 *p, uint32_t n, const f
     }
     if (st != DH_OK) return st;
     for (k = 0u; k < n; k++) {
-        if (!blend_is_line(&p[k])) return DH_ERR_ARG;
+        if (!blend_is_path(&p[k])) return DH_ERR_ARG;
         if (k + 1u < n && (radius[k] < 0.0f || !blend_joins(&p[k], &p[k + 1u]))) return DH_ERR_ARG;
     }
     return DH_OK;
@@ -420,7 +533,7 @@ static DH_NOINLINE void seq_corner(dh_blend_seg_f32 *g, const dh_path_f32 *p, co
     (void)blend_rates(&p[0], lim, r1);
     (void)blend_rates(&p[1], lim, r2);
     blend_share(&p[0], &p[1], r1, r2, lim, 0);
-    tb = blend_overlap(&p[0], &p[1], r1, r2, lim, radius, 1.0f, 1.0f);
+    tb = blend_corner_tb(&p[0], &p[1], r1, r2, lim, radius, 1.0f, 1.0f);
     if (!(tb > 0.0f)) {
         tb = 0.0f;
         r1[2] = 0.0f;
@@ -460,7 +573,7 @@ static void seq_at_rest(dh_blend_seg_f32 *g)
  * from e0 + (v^2 - u0^2) / (2 a) + v tv + (v^2 - u1^2) / (2 a) + e1 = D,
  * or no cruise and v = sqrt(a (D - e0 - e1) + (u0^2 + u1^2) / 2). 1 when
  * the tails fit (v >= u0, u1 without the clamp below), else 0. */
-static DH_NOINLINE int seq_prof(dh_blend_seg_f32 *g, const float r[3], float D)
+static DH_NOINLINE int seq_prof(dh_blend_seg_f32 *g, const float *r, float D)
 {
     const float V = r[0], a = r[1];
     float x, v = 0.0f, tv = 0.0f, hi;
@@ -608,12 +721,7 @@ static DH_NOINLINE void seq_position(const dh_blend_seq_f32 *sq, uint32_t k, flo
 {
     const dh_path_f32 *p = &sq->p[k - 1u];
     const dh_blend_seg_f32 *g = &sq->seg[k - 1u];
-    const float x1 = seq_prof_eval(&g[0], t - g[0].t0, 1), x2 = seq_prof_eval(&g[1], t - g[1].t0, 0);
-    int i;
-    for (i = 0; i < 3; i++) {
-        DH_M4(T, i, 3) = DH_M4(&p[0].B, i, 3) - x1 * (DH_M4(&p[0].B, i, 3) - DH_M4(&p[0].A, i, 3)) +
-                         x2 * (DH_M4(&p[1].B, i, 3) - DH_M4(&p[1].A, i, 3));
-    }
+    dh_blend_pose_pos_f32_(&p[0], &p[1], seq_prof_eval(&g[0], t - g[0].t0, 1), seq_prof_eval(&g[1], t - g[1].t0, 0), T);
 }
 
 /* the index of the last line of sq with t0 <= t */
@@ -649,30 +757,32 @@ dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32
 float dh_blend_corner_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, const dh_cart_limits_f32 *lim, float radius,
                            float b[2])
 {
-    float r1[3], r2[3], tb, g, h, v, tv;
+    float r1[3], r2[3], tb;
     b[0] = 0.0f;
     b[1] = 0.0f;
-    if (!blend_is_line(p1) || !blend_is_line(p2) || !blend_joins(p1, p2) || !(radius > 0.0f)) return 0.0f;
+    if (!blend_is_path(p1) || !blend_is_path(p2) || !blend_joins(p1, p2) || !(radius > 0.0f)) return 0.0f;
     if (blend_rates(p1, lim, r1) != DH_OK || blend_rates(p2, lim, r2) != DH_OK) return 0.0f;
     blend_share(p1, p2, r1, r2, lim, 1);
-    tb = blend_overlap(p1, p2, r1, r2, lim, radius, 1.0f, 2.0f);
+    tb = blend_corner_tb(p1, p2, r1, r2, lim, radius, 1.0f, 2.0f);
     if (!(tb > 0.0f)) return 0.0f;
     /* blended when shorter: (U1 - T1) + (U2 - T2) < tb, as seq_cost (a
      * duration that is not finite: at rest) */
-    g = blend_T(r1, tb, &v, &tv);
-    g -= blend_T(r1, 0.0f, &v, &tv);
-    h = blend_T(r2, tb, &v, &tv);
-    h -= blend_T(r2, 0.0f, &v, &tv);
-    if (!(g + h < tb)) return 0.0f;
+    if (!(blend_gain(r1, r2, tb) < 0.0f)) return 0.0f;
     b[0] = r1[2];
     b[1] = r2[2];
     return tb;
 }
 
-int dh_blend_seg_plan_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim, float D)
+void dh_blend_rates_f32_(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, float r[2])
 {
-    float r[3];
-    (void)blend_rates(p, lim, r);
+    float x[3];
+    (void)blend_rates(p, lim, x);
+    r[0] = x[0];
+    r[1] = x[1];
+}
+
+int dh_blend_seg_plan_f32_(dh_blend_seg_f32 *g, const float r[2], float D)
+{
     g->t0 = 0.0f;
     g->dev = 0.0f;
     return seq_prof(g, r, D);
@@ -723,12 +833,4 @@ void dh_blend_pose_rot_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat
     }
 }
 
-void dh_blend_pose_pos_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat4_f32 *T)
-{
-    const float s1 = DH_M4(T, 0, 3), s2 = DH_M4(T, 1, 3);
-    int i;
-    for (i = 0; i < 3; i++) {
-        DH_M4(T, i, 3) = DH_M4(&p1->B, i, 3) - (1.0f - s1) * (DH_M4(&p1->B, i, 3) - DH_M4(&p1->A, i, 3)) +
-                         s2 * (DH_M4(&p2->B, i, 3) - DH_M4(&p2->A, i, 3));
-    }
-}
+

@@ -240,22 +240,58 @@ dh_status dh_path_arc_f32(dh_path_f32 *p, const dh_mat4_f32 *A, const float via[
     return st;
 }
 
-/* The position of the arc of p at 0 < s < 1 into T, from the nearer end */
-static DH_NOINLINE void path_arc_point(const dh_path_f32 *p, float s, dh_mat4_f32 *T)
+/* T's position column = the arc p's point at the distance 0 <= x <= 1/2
+ * of s from its end (end 0: p_A, s = x; end 1: p_B, s = 1 - x) less that
+ * end */
+DH_INLINE void path_arc_off(const dh_path_f32 *p, float x, int end, dh_mat4_f32 *T)
 {
-    const dh_mat4_f32 *E = (s > 0.5f) ? &p->B : &p->A;
-    const float *u = (s > 0.5f) ? p->u1 : p->u0;
-    float x = ((s > 0.5f) ? 1.0f - s : s) * (p->sweep * DH_DEG2RAD_F);
-    float s4, c4, sh, ch, sn, cm, t[3];
-    int i;
-    dh_sincosf_pio4_(0.25f * x, &s4, &c4);
+    const float *u = (end != 0) ? p->u1 : p->u0;
+    const float *n = p->n;
+    float s4, c4, sh, ch, sn, cm;
+    dh_sincosf_pio4_(0.25f * (x * (p->sweep * DH_DEG2RAD_F)), &s4, &c4);
     sh = 2.0f * s4 * c4;
     ch = (c4 - s4) * (c4 + s4);
     sn = 2.0f * sh * ch;
     cm = -2.0f * sh * sh;
-    if (s > 0.5f) sn = -sn;          /* back from p_B: clockwise */
-    path_cross(p->n, u, t);
-    for (i = 0; i < 3; i++) DH_M4(T, i, 3) = DH_M4(E, i, 3) + (cm * u[i] + sn * t[i]);
+    if (end != 0) sn = -sn;          /* back from p_B: clockwise */
+    /* + sn (n x u), the cross product written out (no frame of its own) */
+    DH_M4(T, 0, 3) = cm * u[0] + sn * (n[1] * u[2] - n[2] * u[1]);
+    DH_M4(T, 1, 3) = cm * u[1] + sn * (n[2] * u[0] - n[0] * u[2]);
+    DH_M4(T, 2, 3) = cm * u[2] + sn * (n[0] * u[1] - n[1] * u[0]);
+}
+
+/* The position of the arc of p at 0 < s < 1 into T, from the nearer end */
+static DH_NOINLINE void path_arc_point(const dh_path_f32 *p, float s, dh_mat4_f32 *T)
+{
+    const dh_mat4_f32 *E = &p->A;
+    float x = s;
+    int i, end = 0;
+    if (s > 0.5f) {
+        E = &p->B;
+        x = 1.0f - s;
+        end = 1;
+    }
+    path_arc_off(p, x, end, T);
+    for (i = 0; i < 3; i++) DH_M4(T, i, 3) = DH_M4(E, i, 3) + DH_M4(T, i, 3);
+}
+
+/* motion_impl.h */
+void dh_motion_path_off_f32_(const dh_path_f32 *p, float x, int end, dh_mat4_f32 *T)
+{
+    const dh_mat4_f32 *E = (end != 0) ? &p->B : &p->A, *F = (end != 0) ? &p->A : &p->B;
+    float dp;
+    int i;
+    if (p->kind != (uint32_t)DH_PATH_ARC) {
+        for (i = 0; i < 3; i++) {
+            dp = DH_M4(&p->B, i, 3) - DH_M4(&p->A, i, 3);
+            DH_M4(T, i, 3) = (end != 0) ? -(x * dp) : x * dp;
+        }
+    } else if (x <= 0.5f) {
+        path_arc_off(p, x, end, T);
+    } else {
+        path_arc_off(p, 1.0f - x, (end != 0) ? 0 : 1, T);
+        for (i = 0; i < 3; i++) DH_M4(T, i, 3) = (DH_M4(F, i, 3) - DH_M4(E, i, 3)) + DH_M4(T, i, 3);
+    }
 }
 
 /* T's rotation = that of the unit quaternion q */
@@ -328,6 +364,24 @@ dh_status dh_motion_bound_f32_(float *sl, float num, float den)
     return DH_OK;
 }
 
+/* *V lowered to sqrt(amax R / sqrt 2) for the arc p (radius R) and *At
+ * = the tangential acceleration that leaves room for the centripetal
+ * acceleration V^2 / R within amax */
+DH_INLINE void path_arc_va(const dh_path_f32 *p, float amax, float *V, float *At)
+{
+    const float R = p->radius;
+    float r = dh_sqrt_f32(amax * PATH_RSQRT2 * R);
+    if (r < *V) *V = r;
+    r = (*V / amax) * (*V / R);   /* centripetal / amax <= 1/sqrt 2 */
+    *At = amax * dh_sqrt_f32(1.0f - r * r);
+}
+
+/* motion_impl.h */
+void dh_motion_arc_rates_f32_(const dh_path_f32 *p, float amax, float *V, float *At)
+{
+    path_arc_va(p, amax, V, At);
+}
+
 /* The speed and tangential acceleration of the arc p's tool point within
  * lim (and within jk's jmax when jk is not NULL), lowering *V and setting
  * *At; with jk, the tangential jerk bound into *Jt */
@@ -335,14 +389,11 @@ static void path_arc_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, 
                            float *V, float *At, float *Jt)
 {
     float R = p->radius, r;
-    r = dh_sqrt_f32(lim->amax * PATH_RSQRT2 * R);
-    if (r < *V) *V = r;
     if (jk != NULL) {
         r = dh_motion_root_f32_(0.25f * jk->jmax, R, 1) * R;   /* cbrt(jmax R^2 / 4) */
         if (r < *V) *V = r;
     }
-    r = (*V / lim->amax) * (*V / R);   /* centripetal / amax <= 1/sqrt 2 */
-    *At = lim->amax * dh_sqrt_f32(1.0f - r * r);
+    path_arc_va(p, lim->amax, V, At);
     if (jk != NULL) {
         r = (jk->jmax * PATH_TWELFTH) * (R / *V);
         if (r < *At) *At = r;

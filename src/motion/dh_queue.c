@@ -172,10 +172,10 @@ static DH_NOINLINE void queue_add_corner(dh_queue_f32 *qu, float radius)
 }
 
 /* the radius's status */
-static DH_NOINLINE dh_status queue_radius(const dh_path_f32 *p, float radius)
+static DH_NOINLINE dh_status queue_radius(float radius)
 {
     if (!dh_isfinite_f32(radius)) return DH_ERR_NAN;
-    return (radius < 0.0f || (radius > 0.0f && p->kind != (uint32_t)DH_PATH_LINE)) ? DH_ERR_ARG : DH_OK;
+    return (radius < 0.0f) ? DH_ERR_ARG : DH_OK;
 }
 
 /* The rest of the checks of a path move with the profile prof (the
@@ -191,6 +191,7 @@ static DH_NOINLINE dh_status queue_add_item(dh_queue_f32 *qu, const dh_path_f32 
     it->path = *p;
     it->prof = *prof;
     it->lim = *lim;
+    dh_blend_rates_f32_(p, lim, it->rate);
     it->radius = 0.0f;
     it->ctb = 0.0f;
     it->jerk = 0u;
@@ -206,7 +207,7 @@ static DH_NOINLINE dh_status queue_add_path(dh_queue_f32 *qu, const dh_path_f32 
                                             float radius)
 {
     dh_profile_f32 prof;
-    dh_status st = queue_radius(p, radius);
+    dh_status st = queue_radius(radius);
     if (st == DH_OK) st = dh_path_move_f32(&prof, p, lim);
     if (st == DH_OK) st = queue_add_item(qu, p, lim, &prof);
     return st;
@@ -403,10 +404,10 @@ static DH_NOINLINE int queue_blend_from(dh_queue_f32 *qu, float s0)
     g->tb1 = queue_corner(qu, 0u, b);
     g->b1 = b[0];
     if (!(s0 > 0.0f) && !(g->tb1 > 0.0f)) return 0;
-    if (!dh_blend_seg_plan_f32_(g, &it->path, &it->lim, 1.0f - s0)) {
+    if (!dh_blend_seg_plan_f32_(g, it->rate, 1.0f - s0)) {
         /* the tail does not fit what a stop left of the line: at rest */
         queue_seg_rest(g);
-        (void)dh_blend_seg_plan_f32_(g, &it->path, &it->lim, 1.0f - s0);
+        (void)dh_blend_seg_plan_f32_(g, it->rate, 1.0f - s0);
     }
     queue_seg_rest(&qu->bl[1]);
     qu->bo[0] = s0;
@@ -423,7 +424,7 @@ static DH_NOINLINE void queue_blend_two(dh_queue_f32 *qu, float s0, float s1)
 {
     const dh_queue_item_f32 *it = queue_at(qu, 0u);
     queue_seg_rest(&qu->bl[0]);
-    (void)dh_blend_seg_plan_f32_(&qu->bl[0], &it->path, &it->lim, 1.0f - s0);
+    (void)dh_blend_seg_plan_f32_(&qu->bl[0], it->rate, 1.0f - s0);
     queue_seg_rest(&qu->bl[1]);
     qu->bo[0] = s0;
     qu->bo[1] = s1;
@@ -444,7 +445,7 @@ static DH_NOINLINE void queue_blend_next(dh_queue_f32 *qu)
     g->tb1 = queue_corner(qu, 1u, b);
     g->b1 = b[0];
     /* each tail within half the line: it fits */
-    (void)dh_blend_seg_plan_f32_(g, &it->path, &it->lim, 1.0f);
+    (void)dh_blend_seg_plan_f32_(g, it->rate, 1.0f);
     qu->bo[1] = 0.0f;
     qu->bmode = QB_TWO;
 }
@@ -497,7 +498,7 @@ static DH_NOINLINE int queue_blend_pose(dh_queue_f32 *qu, uint32_t what, dh_mat4
     queue_blend_s2(qu, T);
     dh_blend_pose_rot_f32_(&queue_at(qu, 0u)->path, &queue_at(qu, 1u)->path, T);
     dh_blend_compose_f32_(&queue_at(qu, 1u)->path.qa, T);
-    dh_blend_pose_pos_f32_(&queue_at(qu, 0u)->path, &queue_at(qu, 1u)->path, T);
+    dh_blend_pose_pos_f32_(&queue_at(qu, 0u)->path, &queue_at(qu, 1u)->path, 1.0f - DH_M4(T, 0, 3), DH_M4(T, 1, 3), T);
     return 1;
 }
 

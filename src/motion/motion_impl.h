@@ -5,7 +5,8 @@
  * their end frames and call the slerp of dh_interp.c directly, without
  * dh_pose_interp_f32's checks and conversions, to stay within the 256 B
  * stack budget; the move executor (dh_move.c) checks a path with the
- * test of dh_path.c; the jerk bound of an arc (dh_path.c) takes the
+ * test of dh_path.c; the blends take an arc's rates and a path's points
+ * relative to an end from dh_path.c; the jerk bound of an arc (dh_path.c) takes the
  * profiles' cube root.
  */
 #ifndef DHMATH_SRC_MOTION_IMPL_H
@@ -32,6 +33,17 @@ int dh_motion_path_ok_f32_(const dh_path_f32 *p);
  * of a blend's tails (dh_blend.c) */
 dh_status dh_motion_bound_f32_(float *sl, float num, float den);
 
+/* For the arc p (radius > 0) within amax: *V (the speed bound so far)
+ * lowered to sqrt(amax R / sqrt 2), *At = amax sqrt(1 - (V^2 / (R amax))^2)
+ * the tangential acceleration beside the centripetal one, as
+ * dh_path_move_f32 takes them (dh_path.c); the blends' rates (dh_blend.c) */
+void dh_motion_arc_rates_f32_(const dh_path_f32 *p, float amax, float *V, float *At);
+
+/* T's position column (rows 0-2) = p(s) less p's end (end 0: p_A,
+ * s = x; end 1: p_B, s = 1 - x) for x in [0, 1], an arc from its nearer
+ * end (dh_path.c); the superposition of blends (dh_blend.c) */
+void dh_motion_path_off_f32_(const dh_path_f32 *p, float x, int end, dh_mat4_f32 *T);
+
 /* The square root (cube == 0) or the cube root (cube == 1) of n / m for
  * finite n >= 0, m > 0 (0 for n == 0), without underflow or overflow of
  * the quotient (dh_profile.c); the jerk bound of an arc (dh_path.c) */
@@ -51,20 +63,27 @@ float dh_motion_feed_rise_f32_(float k, float p, float A, float r);
 
 /* ---- the queue's blended lines (dh_blend.c, called by dh_queue.c) ---- */
 
-/* The corner of the lines p1 then p2 within lim and radius as the queue
+/* The corner of the paths p1 then p2 within lim and radius as the queue
  * blends it (docs/design.md, "Blended corners in the queue"): the
  * overlap tb, b[0] the end tail's |s''| of p1 and b[1] the start tail's
- * of p2 (L1 b1 + L2 b2 <= amax, each tail within half its line); 0 (and
- * b 0) when the corner runs at rest: not two lines with motion, p2 not
+ * of p2 (L1 b1 + L2 b2 <= amax, or a share of it at a corner with an arc,
+ * each tail within half its path); 0 (and b 0) when the corner runs at
+ * rest: not two paths with motion, p2 not
  * starting at p1's end, radius 0, or a blend not shorter. */
 float dh_blend_corner_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, const dh_cart_limits_f32 *lim, float radius,
                            float b[2]);
 
-/* g = the scaling of s over the distance D (s from 1 - D to 1) of the
- * line p within lim, with the tails g->b0, tb0, b1, tb1 as set by the
- * caller (a tail of duration 0 is a rest); 1 when the tails fit the
- * distance, 0 when not (then g is no valid scaling). */
-int dh_blend_seg_plan_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim, float D);
+/* r = the bounds V of s' and a of s'' of the path p (length or angle
+ * > 0, as dh_path_move_f32 accepted it) within lim, as its blended
+ * scalings take them (an arc's beside its centripetal acceleration); the
+ * queue keeps them in its item when a path move is appended */
+void dh_blend_rates_f32_(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, float r[2]);
+
+/* g = the scaling of s over the distance D (s from 1 - D to 1) of a path
+ * with the bounds r (dh_blend_rates_f32_), with the tails g->b0, tb0, b1,
+ * tb1 as set by the caller (a tail of duration 0 is a rest); 1 when the
+ * tails fit the distance, 0 when not (then g is no valid scaling). */
+int dh_blend_seg_plan_f32_(dh_blend_seg_f32 *g, const float r[2], float D);
 
 /* s of the scaling g started at s0, at its time t (clamped to [0, T]:
  * s0 before, 1 after when T > 0) */
@@ -74,17 +93,18 @@ float dh_blend_seg_s_f32_(const dh_blend_seg_f32 *g, float s0, float t);
  * (0, T)) */
 float dh_blend_seg_rate_f32_(const dh_blend_seg_f32 *g, float t, float *sdd);
 
-/* T = the superposition of line p1 at s1 and line p2 at s2 (the
+/* T = the superposition of path p1 at s1 and path p2 at s2 (the
  * overlap of dh_blend_eval_f32), s1 and s2 given in T's column 3 (rows 0
  * and 1), in three calls made one after the other (each call's stack
  * apart): dh_blend_pose_rot_f32_ puts the slerps q1(s1) and q2(s2) into
  * T's columns 0 and 1;
  * dh_blend_compose_f32_ (with p2's qa) makes T's rotation
- * q2(s2) q_A2* q1(s1) and bottom row; dh_blend_pose_pos_f32_ its position,
- * p1's B less (1 - s1) of p1 plus s2 of p2. */
+ * q2(s2) q_A2* q1(s1) and bottom row; dh_blend_pose_pos_f32_ its position
+ * from x1 = 1 - s1 and x2 = s2: p1's B plus p1(s1) - p1's B plus
+ * p2(s2) - p2's A (dh_motion_path_off_f32_). */
 void dh_blend_pose_rot_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat4_f32 *T);
 void dh_blend_compose_f32_(const dh_quat_f32 *qa2, dh_mat4_f32 *T);
-void dh_blend_pose_pos_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat4_f32 *T);
+void dh_blend_pose_pos_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, float x1, float x2, dh_mat4_f32 *T);
 
 /* ---- fixed point (dh_interp_q.c) ---- */
 

@@ -1833,6 +1833,69 @@ def group_move(seed, tmp):
               'a corner there (radius %g), speed %.6g, acceleration %.6g over %d periods' %
               (len(brows), len(rows0), off, worst, R, vw, aw, w))
 
+    # 5b. a blended line, arc, line (--blend with an arc): shorter than at
+    # rest at its corners, every period ok, the joints within the tracker's
+    # limits, the tool's speed and acceleration (the arc's centripetal one
+    # included) within --speed and --accel by finite differences over 20
+    # periods (1e-3 relative), the tool on its line or arc (1e-5 m: the
+    # tracker's tolerance and the float FK) or within R of a corner (and
+    # off the path by more than 10 times that somewhere)
+    c1 = [p0[0] + side, p0[1], p0[2]]
+    c2 = [p0[0] + side, p0[1] + side, p0[2]]
+    c3 = [p0[0], p0[1] + side, p0[2]]
+    via = [p0[0] + 1.3 * side, p0[1] + 0.5 * side, p0[2]]
+    tr = lambda c: 'trans(%.6f,%.6f,%.6f) %s' % (c[0], c[1], c[2], rot)
+    la_args = sq_args[:sq_args.index('--line')] + ['--line', tr(c1), '--arc', 'trans(%.6f,%.6f,%.6f)' % tuple(via),
+                                                   tr(c2), '--line', tr(c3)]
+    rc0, out0, err0 = run(la_args)
+    rc, out, err = run(la_args + ['--blend', str(R)])
+    head0, rows0 = read_csv(out0, n)
+    head, lrows = read_csv(out, n)
+    check(rc0 == 0 and rc == 0 and err == '' and head == head_want and lrows and None not in lrows and
+          all(r[2] == 'ok' for r in lrows), 'move --blend line-arc-line: rc %d %d err %r' % (rc0, rc, err))
+    if lrows and None not in lrows and rows0:
+        check(len(lrows) < len(rows0), 'move --blend line-arc-line: %d periods, at rest %d' %
+              (len(lrows), len(rows0)))
+        check_joint_limits('move --blend line-arc-line', qa, lrows, [vm] * n, [am] * n, dt, [4 * f32_ulp(360.0)] * n)
+        pts = [p0] + [[F[i][3] for i in range(3)] for F in (ref_fk(rob, r[1]) for r in lrows)]
+        # the circle through c1, via, c2 (all at height p0[2]): centre in the plane
+        (ax, ay), (bx, by), (vx, vy) = c1[:2], c2[:2], via[:2]
+        dd = 2.0 * (ax * (vy - by) + vx * (by - ay) + bx * (ay - vy))
+        ux = ((ax * ax + ay * ay) * (vy - by) + (vx * vx + vy * vy) * (by - ay) + (bx * bx + by * by) * (ay - vy)) / dd
+        uy = ((ax * ax + ay * ay) * (bx - vx) + (vx * vx + vy * vy) * (ax - bx) + (bx * bx + by * by) * (vx - ax)) / dd
+        rho = math.hypot(ax - ux, ay - uy)
+
+        def seg_dist(p, a, b):
+            d = [b[i] - a[i] for i in range(3)]
+            u = max(0.0, min(1.0, sum((p[i] - a[i]) * d[i] for i in range(3)) / sum(x * x for x in d)))
+            return math.sqrt(sum((p[i] - a[i] - u * d[i]) ** 2 for i in range(3)))
+
+        def arc_dist(p):
+            # the arc is the part of the circle on the via point's side of the chord c1 c2 (x >= c1's)
+            if p[0] < c1[0]:
+                return min(math.sqrt(sum((p[i] - c[i]) ** 2 for i in range(3))) for c in (c1, c2))
+            return math.hypot(p[2] - p0[2], math.hypot(p[0] - ux, p[1] - uy) - rho)
+        worst, off, onp = 0.0, 0.0, 0.0
+        for p in pts:
+            ds = min(seg_dist(p, p0, c1), arc_dist(p), seg_dist(p, c2, c3))
+            dc = min(math.sqrt(sum((p[i] - c[i]) ** 2 for i in range(3))) for c in (c1, c2))
+            off = max(off, ds)
+            if ds > 1e-5:
+                worst = max(worst, dc)
+        check(worst <= R + 1e-5 and off > 1e-4, 'move --blend line-arc-line: off the path %.3g, %.6g from a corner '
+              '(radius %g)' % (off, worst, R))
+        w, vw, aw = 20, 0.0, 0.0
+        for k in range(len(pts) - 2 * w):
+            d1 = [pts[k + w][i] - pts[k][i] for i in range(3)]
+            d2 = [pts[k + 2 * w][i] - 2 * pts[k + w][i] + pts[k][i] for i in range(3)]
+            vw = max(vw, math.sqrt(sum(x * x for x in d1)) / (w * dt))
+            aw = max(aw, math.sqrt(sum(x * x for x in d2)) / (w * dt) ** 2)
+        check(vw <= speed * (1 + 1e-3) + 4e-6 / (w * dt) and aw <= accel * (1 + 1e-3) + 8e-6 / (w * dt) ** 2,
+              'move --blend line-arc-line: speed %.6g, acceleration %.6g over %d periods' % (vw, aw, w))
+        print('move --blend line-arc-line: %d periods (at rest at the corners %d), off the path %.4g m, within %.6g m '
+              'of a corner there (radius %g), speed %.6g, acceleration %.6g over %d periods' %
+              (len(lrows), len(rows0), off, worst, R, vw, aw, w))
+
     # 6. every bad argument: exit 2, nothing on stdout, the message naming it
     q0 = ['--q0', ','.join(map(str, qa))]
     cart = ['--speed', '0.2', '--accel', '1', '--rspeed', '60', '--raccel', '240']

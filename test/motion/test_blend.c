@@ -24,6 +24,15 @@
  * - the pair is shorter than the two rest-to-rest trapezoids, whose
  *   minimum durations are computed here from the lines' lengths and
  *   angles.
+ * The same for corners where either or both moves are arcs (through a via
+ * point off the chord's middle by 0.1 to 0.4 of the chord, across it in a
+ * random direction): on the arc within 1e-6 m means on the circle of the
+ * path dh_path_arc_f32 made (centre p_A - u0, normal n) and within its
+ * sweep (test_path.c bounds that circle against the double one through
+ * the three points); the durations are compared with the two moves'
+ * dh_path_move_f32 trapezoids (an arc's own rest-to-rest minimum under
+ * its centripetal acceleration, test_path.c); the finite differences
+ * include the arcs' centripetal accelerations.
  */
 #include <float.h>
 #include <math.h>
@@ -41,6 +50,67 @@
 #define ANG_NOISE 6e-4 /* degrees */
 
 static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* distance of x from the path p: from its segment (a line), from the
+ * circle of centre p_A - u0 and radius |u0| in the plane of normal n
+ * within the sweep, else from the nearer end (an arc) */
+static double seg_dist(const double a[3], const double b[3], const double x[3]);
+static double path_dist(const dh_path_f32 *p, const double x[3])
+{
+    double a[3], b[3], r[3], n[3], u[3], w[3], z, nn = 0.0, rho, ph, sw = (double)p->sweep / 57.29577951308232;
+    int i;
+    for (i = 0; i < 3; i++) {
+        a[i] = DH_M4(&p->A, i, 3);
+        b[i] = DH_M4(&p->B, i, 3);
+    }
+    if (p->kind != (uint32_t)DH_PATH_ARC) return seg_dist(a, b, x);
+    for (i = 0; i < 3; i++) nn += (double)p->n[i] * p->n[i];
+    for (i = 0; i < 3; i++) {
+        n[i] = p->n[i] / sqrt(nn);
+        u[i] = p->u0[i];
+        r[i] = x[i] - (a[i] - u[i]);
+    }
+    z = dot3(r, n);
+    rho = sqrt(dot3(u, u));
+    for (i = 0; i < 3; i++) r[i] -= z * n[i];
+    w[0] = n[1] * u[2] - n[2] * u[1];
+    w[1] = n[2] * u[0] - n[0] * u[2];
+    w[2] = n[0] * u[1] - n[1] * u[0];
+    ph = atan2(dot3(r, w), dot3(r, u));
+    if (ph < -0.5 * (2.0 * 3.14159265358979323846 - sw)) ph += 2.0 * 3.14159265358979323846;
+    if (ph >= 0.0 && ph <= sw) return sqrt(z * z + (sqrt(dot3(r, r)) - rho) * (sqrt(dot3(r, r)) - rho));
+    for (i = 0; i < 3; i++) r[i] = x[i] - ((ph < 0.0) ? a[i] : b[i]);
+    return sqrt(dot3(r, r));
+}
+
+/* p (a line) replaced by the arc between its frames through a via point
+ * off the chord's middle by 0.1 to 0.4 of the chord, across it */
+static void arc_of(dh_path_f32 *p)
+{
+    const dh_mat4_f32 A = p->A, B = p->B;
+    double d[3], e[3], c, x, h;
+    float via[3];
+    int i;
+    for (i = 0; i < 3; i++) d[i] = (double)DH_M4(&B, i, 3) - DH_M4(&A, i, 3);
+    c = dot3(d, d);
+    do {
+        dhr_rand_unit3(e);
+        x = dot3(e, d) / c;
+        for (i = 0; i < 3; i++) e[i] -= x * d[i];
+        h = dot3(e, e);
+    } while (h < 0.01);
+    x = dht_rand_uniform(0.1, 0.4) * sqrt(c / h);
+    for (i = 0; i < 3; i++) via[i] = (float)(0.5 * ((double)DH_M4(&A, i, 3) + DH_M4(&B, i, 3)) + x * e[i]);
+    DHT_EQ_INT(dh_path_arc_f32(p, &A, via, &B), DH_OK);
+}
+
+/* the duration of p's rest-to-rest trapezoid within lim (dh_path_move_f32) */
+static double path_trr(const dh_path_f32 *p, const dh_cart_limits_f32 *lim)
+{
+    dh_profile_f32 prof;
+    DHT_EQ_INT(dh_path_move_f32(&prof, p, lim), DH_OK);
+    return (double)prof.T;
+}
 
 /* distance of x from the segment [a, b] */
 static double seg_dist(const double a[3], const double b[3], const double x[3])
@@ -263,10 +333,10 @@ static void path_check(const dh_blend_f32 *bl, const corner *k, const dh_cart_li
         eval_at(bl, t, &T);
         pos_of(&T, p);
         if ((float)t <= bl->t0) {
-            e = seg_dist(k->a, k->c, p);
+            e = path_dist(&k->p1, p);
             DHT_TRUE_MSG(e <= POS_TOL, "t %.9g (t0 %.9g): %.3g m off the first line", t, (double)bl->t0, e);
         } else if ((float)t >= bl->t0 + bl->tb) {
-            e = seg_dist(k->c, k->b, p);
+            e = path_dist(&k->p2, p);
             DHT_TRUE_MSG(e <= POS_TOL, "t %.9g: %.3g m off the second line", t, e);
         } else {
             for (j = 0; j < 3; j++) q[j] = p[j] - k->c[j];
@@ -314,45 +384,63 @@ static void limits_check(const dh_blend_f32 *bl, const corner *k, const dh_cart_
     src_limits(&src, k->S, k->th1 > 0.0 || k->th2 > 0.0, lim);
 }
 
-static void random_corners(void)
+/* one random corner (the file's comment); arcs: 0 two lines, else bit 0
+ * the first move and bit 1 the second an arc */
+static void corner_case(int it, int arcs)
 {
-    int it, n = DHT_ITER(40);
-    for (it = 0; it < n; it++) {
-        corner k;
-        dh_blend_f32 bl;
-        dh_cart_limits_f32 lim;
-        dh_mat4_f32 T;
-        double deg = (it == 0) ? 1.0 : (it == 1) ? 179.0 : dht_rand_uniform(1.0, 179.0);
-        double radius = pow(10.0, dht_rand_uniform(-3.0, -1.0)), Trr;
-        make_corner(&k, deg, dht_rand_uniform(0.05, 0.6), dht_rand_uniform(0.05, 0.6), 60.0);
-        lim.vmax = (float)dht_rand_uniform(0.1, 1.0);
-        lim.amax = (float)dht_rand_uniform(1.0, 10.0);
-        lim.wmax = (float)dht_rand_uniform(30.0, 90.0);
-        lim.wdmax = (float)dht_rand_uniform(300.0, 2000.0);
-        DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &k.p2, &lim, (float)radius), DH_OK);
-        DHT_TRUE(bl.t0 >= 0.0f && (double)bl.dev <= radius);
-        dht_reach_min("tb", (double)bl.tb);
-        /* exact ends */
-        eval_at(&bl, 0.0, &T);
-        DHT_TRUE(memcmp(&T, &k.p1.A, sizeof T) == 0);
-        eval_at(&bl, -1.0, &T);
-        DHT_TRUE(memcmp(&T, &k.p1.A, sizeof T) == 0);
-        eval_at(&bl, (double)bl.T, &T);
-        DHT_TRUE(memcmp(&T, &k.p2.B, sizeof T) == 0);
-        eval_at(&bl, (double)bl.T + 1.0, &T);
-        DHT_TRUE(memcmp(&T, &k.p2.B, sizeof T) == 0);
-        /* shorter than the two rest-to-rest moves */
+    corner k;
+    dh_blend_f32 bl;
+    dh_cart_limits_f32 lim;
+    dh_mat4_f32 T;
+    double deg = (it == 0) ? 1.0 : (it == 1) ? 179.0 : dht_rand_uniform(1.0, 179.0);
+    double radius = pow(10.0, dht_rand_uniform(-3.0, -1.0)), Trr;
+    make_corner(&k, deg, dht_rand_uniform(0.05, 0.6), dht_rand_uniform(0.05, 0.6), 60.0);
+    lim.vmax = (float)dht_rand_uniform(0.1, 1.0);
+    lim.amax = (float)dht_rand_uniform(1.0, 10.0);
+    lim.wmax = (float)dht_rand_uniform(30.0, 90.0);
+    lim.wdmax = (float)dht_rand_uniform(300.0, 2000.0);
+    if (arcs & 1) arc_of(&k.p1);
+    if (arcs & 2) arc_of(&k.p2);
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &k.p2, &lim, (float)radius), DH_OK);
+    DHT_TRUE(bl.t0 >= 0.0f && (double)bl.dev <= radius);
+    dht_reach_min(arcs ? "arc.tb" : "tb", (double)bl.tb);
+    /* exact ends */
+    eval_at(&bl, 0.0, &T);
+    DHT_TRUE(memcmp(&T, &k.p1.A, sizeof T) == 0);
+    eval_at(&bl, -1.0, &T);
+    DHT_TRUE(memcmp(&T, &k.p1.A, sizeof T) == 0);
+    eval_at(&bl, (double)bl.T, &T);
+    DHT_TRUE(memcmp(&T, &k.p2.B, sizeof T) == 0);
+    eval_at(&bl, (double)bl.T + 1.0, &T);
+    DHT_TRUE(memcmp(&T, &k.p2.B, sizeof T) == 0);
+    /* shorter than the two rest-to-rest moves */
+    if (arcs) {
+        Trr = path_trr(&k.p1, &lim) + path_trr(&k.p2, &lim);
+    } else {
         Trr = line_tmin(sqrt((k.c[0] - k.a[0]) * (k.c[0] - k.a[0]) + (k.c[1] - k.a[1]) * (k.c[1] - k.a[1]) +
                              (k.c[2] - k.a[2]) * (k.c[2] - k.a[2])), k.th1, &lim) +
               line_tmin(sqrt((k.b[0] - k.c[0]) * (k.b[0] - k.c[0]) + (k.b[1] - k.c[1]) * (k.b[1] - k.c[1]) +
                              (k.b[2] - k.c[2]) * (k.b[2] - k.c[2])), k.th2, &lim);
-        /* a blend that would not be shorter is not made (tb 0: back to back) */
-        DHT_TRUE_MSG((bl.tb > 0.0f) ? (double)bl.T < Trr : (double)bl.T <= Trr * (1.0 + 1e-6),
-                     "blended %.9g s (tb %.9g), rest to rest %.9g s", (double)bl.T, (double)bl.tb, Trr);
-        dht_reach_max("saving_frac", (Trr - (double)bl.T) / Trr);
-        path_check(&bl, &k, &lim, radius);
-        limits_check(&bl, &k, &lim);
     }
+    /* a blend that would not be shorter is not made (tb 0: back to back) */
+    DHT_TRUE_MSG((bl.tb > 0.0f) ? (double)bl.T < Trr : (double)bl.T <= Trr * (1.0 + 1e-6),
+                 "blended %.9g s (tb %.9g), rest to rest %.9g s", (double)bl.T, (double)bl.tb, Trr);
+    dht_reach_max(arcs ? "arc.saving_frac" : "saving_frac", (Trr - (double)bl.T) / Trr);
+    path_check(&bl, &k, &lim, radius);
+    limits_check(&bl, &k, &lim);
+}
+
+static void random_corners(void)
+{
+    int it, n = DHT_ITER(40);
+    for (it = 0; it < n; it++) corner_case(it, 0);
+}
+
+/* corners with an arc: the first move, the second or both */
+static void random_arc_corners(void)
+{
+    int it, n = DHT_ITER(40);
+    for (it = 0; it < n; it++) corner_case(it, 1 + (int)(dht_rand_u32() % 3u));
 }
 
 /* a straight continuation stays on the line; radius 0 runs the moves back
@@ -416,13 +504,11 @@ static void blend_errors(void)
     lim.wdmax = -1.0f;
     DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &k.p2, &lim, 0.01f), DH_ERR_ARG);
     lim.wdmax = 500.0f;
-    /* an arc, a second line that does not start at the first's end, no path */
-    DHT_EQ_INT(dh_path_arc_f32(&arc, &k.p1.B, via, &k.p2.B), DH_OK);
-    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &arc, &lim, 0.01f), DH_ERR_ARG);
-    DHT_EQ_INT(dh_path_arc_f32(&arc, &k.p1.A, via, &k.p1.B), DH_OK);
-    DHT_EQ_INT(dh_blend_plan_f32(&bl, &arc, &k.p2, &lim, 0.01f), DH_ERR_ARG);
+    /* a second arc or line that does not start at the first's end, no path */
     T = k.p2.A;
     DH_M4(&T, 0, 3) += 1e-3f;
+    DHT_EQ_INT(dh_path_arc_f32(&arc, &T, via, &k.p2.B), DH_OK);
+    DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &arc, &lim, 0.01f), DH_ERR_ARG);
     DHT_EQ_INT(dh_path_line_f32(&moved, &T, &k.p2.B), DH_OK);
     DHT_EQ_INT(dh_blend_plan_f32(&bl, &k.p1, &moved, &lim, 0.01f), DH_ERR_ARG);
     memset(&moved, 0, sizeof moved);
@@ -537,8 +623,8 @@ static void seq_path_check(const dh_blend_seq_f32 *sq, const chain *c, const flo
                          (double)radius[k - 1], (double)g[k - 1].dev);
             dht_reach_max("seq.dev_frac", e / (double)radius[k - 1]);
         } else {
-            e = seg_dist(c->x[k], c->x[k + 1], p);
-            DHT_TRUE_MSG(e <= POS_TOL, "t %.9g: %.3g m off line %d", t, e, k);
+            e = path_dist(&c->p[k], p);
+            DHT_TRUE_MSG(e <= POS_TOL, "t %.9g: %.3g m off segment %d", t, e, k);
             dht_reach_max("seq.line_err", e);
         }
         step_check(&P, &T, p, lim, posn, t);
@@ -551,12 +637,14 @@ static void seq_path_check(const dh_blend_seq_f32 *sq, const chain *c, const flo
     DHT_TRUE(memcmp(&T, &c->p[0].A, sizeof T) == 0);
 }
 
-/* the sum of the lines' rest-to-rest minimum durations */
+/* the sum of the segments' rest-to-rest minimum durations (an arc's:
+ * dh_path_move_f32's) */
 static double chain_trr(const chain *c, const dh_cart_limits_f32 *lim)
 {
     double T = 0.0;
     int k;
-    for (k = 0; k < c->n; k++) T += line_tmin(c->L[k], c->th[k], lim);
+    for (k = 0; k < c->n; k++)
+        T += (c->p[k].kind == (uint32_t)DH_PATH_ARC) ? path_trr(&c->p[k], lim) : line_tmin(c->L[k], c->th[k], lim);
     return T;
 }
 
@@ -583,7 +671,9 @@ static void seq_check_all(const chain *c, const float *radius, const dh_cart_lim
     src_limits(&src, c->S, ang > 0.0, lim);
 }
 
-static void random_sequences(void)
+/* random chains of lines (arcs 0) or of lines and arcs (arcs 1: each
+ * segment an arc with probability 1/2) */
+static void sequences(int arcs)
 {
     int it, k, n = DHT_ITER(20);
     for (it = 0; it < n; it++) {
@@ -600,10 +690,23 @@ static void random_sequences(void)
         lim.amax = (float)dht_rand_uniform(1.0, 10.0);
         lim.wmax = (float)dht_rand_uniform(30.0, 90.0);
         lim.wdmax = (float)dht_rand_uniform(300.0, 2000.0);
+        for (k = 0; arcs && k < nl; k++) {
+            if (dht_rand_u32() % 2u == 0u) arc_of(&c.p[k]);
+        }
         DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, (uint32_t)nl, radius, &lim), DH_OK);
         DHT_TRUE(sq.n == (uint32_t)nl && sq.seg == seg && sq.p == c.p);
         seq_check_all(&c, radius, &lim, &sq);
     }
+}
+
+static void random_sequences(void)
+{
+    sequences(0);
+}
+
+static void random_arc_sequences(void)
+{
+    sequences(1);
 }
 
 /* one line is its rest-to-rest trapezoid; radius 0 everywhere runs the
@@ -662,12 +765,12 @@ static void seq_errors(void)
     lim.wmax = 0.0f;
     DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 3u, radius, &lim), DH_ERR_ARG);
     lim.wmax = 60.0f;
-    /* an arc, a gap, no path */
+    /* a gap (an arc's, a line's), no path */
     keep = c.p[1];
-    DHT_EQ_INT(dh_path_arc_f32(&c.p[1], &keep.A, via, &keep.B), DH_OK);
-    DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 3u, radius, &lim), DH_ERR_ARG);
     T = keep.A;
     DH_M4(&T, 1, 3) += 1e-3f;
+    DHT_EQ_INT(dh_path_arc_f32(&c.p[1], &T, via, &keep.B), DH_OK);
+    DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 3u, radius, &lim), DH_ERR_ARG);
     DHT_EQ_INT(dh_path_line_f32(&c.p[1], &T, &keep.B), DH_OK);
     DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 3u, radius, &lim), DH_ERR_ARG);
     memset(&c.p[1], 0, sizeof c.p[1]);
@@ -701,5 +804,7 @@ static const dht_case cases[] = {
     DHT_CASE(random_sequences),
     DHT_CASE(seq_single_and_rest),
     DHT_CASE(seq_errors),
+    DHT_CASE(random_arc_corners),
+    DHT_CASE(random_arc_sequences),
 };
 DHT_MAIN(cases)

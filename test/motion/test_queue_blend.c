@@ -4,17 +4,22 @@
  * (dh_queue_add_path_blend_f32), run through the tracker as `dhmath move
  * --blend` runs them, at 1 kHz, seeded random queues.
  *
- * Queues of 2 to 6 lines on the Puma 560, UR5 and Panda (the lines join
- * the FK frames of configurations a few degrees apart, so the tool also
- * turns), each with a random radius (0 in a fifth of them; up to 5 cm),
+ * Queues of 2 to 6 segments on the Puma 560, UR5 and Panda, each a line
+ * or (in half of them) an arc through a via point off its chord by 0.1
+ * to 0.4 of it (the segments join the FK frames of configurations a few
+ * degrees apart, so the tool also turns), each with a random radius (0 in
+ * a fifth of them; up to 5 cm),
  * random Cartesian limits, in a queue of three items: up to three lines
  * queued at the start (in a third of the queues fewer), the others
  * appended as moves complete (a corner whose successor is not queued when
  * the line starts runs at rest). Every period's target (the queue's
  * command) is checked:
- * - outside an overlap (the queue's bmode is not 2) on its line within
- *   1e-6 m, inside one within the corner's radius of the corner (plus
- *   8 FLT_EPSILON of the positions' scale);
+ * - outside an overlap (the queue's bmode is not 2) on its segment within
+ *   1e-6 m (an arc: the circle of the path dh_path_arc_f32 made, centre
+ *   p_A - u0, and within its sweep; test_path.c bounds that circle
+ *   against the double one through the three points), inside one within
+ *   the corner's radius of the corner (plus 8 FLT_EPSILON of the
+ *   positions' scale);
  * - speed, TOTAL acceleration, angular speed and angular acceleration by
  *   finite differences within the limits times 1 + 1e-3, over windows of
  *   WS = 10 periods every period (plus 8 ulp of the positions' scale, at
@@ -37,7 +42,7 @@
  * complete in order, the last target is the last line's B bit for bit.
  *
  * Statuses of dh_queue_add_path_blend_f32: a NaN radius, a negative one,
- * an arc with a radius > 0 (a radius 0 is accepted), the queue untouched.
+ * the queue untouched; an arc with a radius > 0 is accepted.
  */
 #include <float.h>
 #include <math.h>
@@ -76,8 +81,11 @@ static dh_path_f32 line;              /* the line being appended */
 static float qc[NMAX + 1][DH_MAX_JOINTS]; /* the corners' configurations */
 static float cp[NMAX + 1][3];         /* the corners' positions (line k: cp[k] to cp[k + 1]) */
 static float radius[NMAX];
+static unsigned char isarc[NMAX];      /* segment k is an arc (drawn when appended) */
 static float sp[NS][7], lp[NL][7];    /* position and unit quaternion of the target m periods (m WD periods) ago */
 static long nh;
+static long arc_ov;                   /* periods in overlaps at a corner with an arc */
+static long arc_stops;                /* stops inside such an overlap */
 
 static double dist3(const double a[3], const double b[3])
 {
@@ -101,6 +109,58 @@ static double seg_dist(uint32_t k, const double x[3])
     s = fmin(fmax(s, 0.0), 1.0);
     for (i = 0; i < 3; i++) e[i] = r[i] - s * d[i];
     return sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+}
+
+/* the path of segment k in the queue's ring: the item from corner k to
+ * corner k + 1 (NULL when none) */
+static const dh_path_f32 *seg_path(uint32_t k)
+{
+    uint32_t i;
+    for (i = 0; i < CAP; i++) {
+        const dh_path_f32 *p = &items[i].path;
+        if (items[i].kind == (uint32_t)DH_MOVE_PATH && memcmp(&p->A.m[3][0], cp[k], sizeof cp[k]) == 0 &&
+            memcmp(&p->B.m[3][0], cp[k + 1u], sizeof cp[k]) == 0)
+            return p;
+    }
+    return NULL;
+}
+
+/* distance of x from the arc of segment k (its path in the queue's ring):
+ * from the circle of centre p_A - u0, radius |u0| in the plane of normal
+ * n, and beyond the sweep the distance from the nearer end */
+static double arc_dist(uint32_t k, const double x[3])
+{
+    const dh_path_f32 *p = seg_path(k);
+    double r[3], n[3], u[3], w[3], z = 0.0, nn = 0.0, rho = 0.0, rr = 0.0, ph, e[2], sw;
+    int i;
+    DHT_TRUE(p != NULL && p->kind == (uint32_t)DH_PATH_ARC);
+    if (p == NULL) return INFINITY;
+    sw = (double)p->sweep / RAD2DEG;
+    for (i = 0; i < 3; i++) nn += (double)p->n[i] * p->n[i];
+    for (i = 0; i < 3; i++) {
+        n[i] = p->n[i] / sqrt(nn);
+        u[i] = p->u0[i];
+        r[i] = x[i] - ((double)cp[k][i] - u[i]);
+        z += r[i] * n[i];
+        rho += u[i] * u[i];
+    }
+    rho = sqrt(rho);
+    for (i = 0; i < 3; i++) {
+        r[i] -= z * n[i];
+        rr += r[i] * r[i];
+    }
+    w[0] = n[1] * u[2] - n[2] * u[1];
+    w[1] = n[2] * u[0] - n[0] * u[2];
+    w[2] = n[0] * u[1] - n[1] * u[0];
+    ph = atan2(r[0] * w[0] + r[1] * w[1] + r[2] * w[2], r[0] * u[0] + r[1] * u[1] + r[2] * u[2]);
+    if (ph < -0.5 * (2.0 * 3.14159265358979323846 - sw)) ph += 2.0 * 3.14159265358979323846;
+    if (ph >= 0.0 && ph <= sw) {
+        e[0] = z;
+        e[1] = sqrt(rr) - rho;
+        return sqrt(e[0] * e[0] + e[1] * e[1]);
+    }
+    for (i = 0; i < 3; i++) r[i] = x[i] - cp[(ph < 0.0) ? k : k + 1u][i];
+    return sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
 }
 
 /* unit quaternion (w, x, y, z) of T's rotation, in double (Shepperd) */
@@ -232,10 +292,11 @@ static int check_path(const dh_mat4_f32 *T, uint32_t n, double S, long call)
         d = dist3(x, c);
         DHT_TRUE_MSG(k + 1u < n && d <= (double)radius[k] + tol, "call %ld: %.9g from corner %u, radius %.9g", call, d,
                      (unsigned)k, (double)radius[k]);
+        if (isarc[k] || (k + 1u < n && isarc[k + 1u])) arc_ov++;
         return 1;
     }
-    d = seg_dist(k, x);
-    DHT_TRUE_MSG(d <= 1e-6, "call %ld: %.9g off line %u", call, d, (unsigned)k);
+    d = isarc[k] ? arc_dist(k, x) : seg_dist(k, x);
+    DHT_TRUE_MSG(d <= 1e-6, "call %ld: %.9g off %s %u", call, d, isarc[k] ? "arc" : "line", (unsigned)k);
     return 0;
 }
 
@@ -248,13 +309,44 @@ static void corner(const rig *g, uint32_t k, dh_mat4_f32 *T)
     dhs_target_f32(&g->r, q, T);
 }
 
-/* line k appended with its radius */
+/* segment k an arc (in half the segments, of a chord of 1 cm at least;
+ * 0 when not): its via point off the chord's middle by 0.1 to 0.4 of the
+ * chord, in a random direction across it */
+static int draw_arc(uint32_t k, float via[3])
+{
+    double d[3], e[3], h = 0.0, c = 0.0, x;
+    int i;
+    for (i = 0; i < 3; i++) {
+        d[i] = (double)cp[k + 1u][i] - cp[k][i];
+        c += d[i] * d[i];
+    }
+    if (dht_rand_u32() % 2u == 0u || c < 1e-4) return 0;
+    do {
+        for (i = 0; i < 3; i++) e[i] = dht_rand_uniform(-1.0, 1.0);
+        x = (e[0] * d[0] + e[1] * d[1] + e[2] * d[2]) / c;
+        h = 0.0;
+        for (i = 0; i < 3; i++) {
+            e[i] -= x * d[i];
+            h += e[i] * e[i];
+        }
+    } while (h < 0.01);
+    x = dht_rand_uniform(0.1, 0.4) * sqrt(c / h);
+    for (i = 0; i < 3; i++) via[i] = (float)(0.5 * ((double)cp[k][i] + cp[k + 1u][i]) + x * e[i]);
+    return 1;
+}
+
+/* segment k appended with its radius: a line, or an arc (draw_arc) */
 static void append(const rig *g, uint32_t k, const dh_cart_limits_f32 *lim)
 {
     dh_mat4_f32 A, B;
+    float via[3];
     corner(g, k, &A);
     corner(g, k + 1u, &B);
-    DHT_EQ_INT(dh_path_line_f32(&line, &A, &B), DH_OK);
+    isarc[k] = (unsigned char)draw_arc(k, via);
+    if (isarc[k])
+        DHT_EQ_INT(dh_path_arc_f32(&line, &A, via, &B), DH_OK);
+    else
+        DHT_EQ_INT(dh_path_line_f32(&line, &A, &B), DH_OK);
     DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, lim, radius[k]), DH_OK);
 }
 
@@ -349,6 +441,7 @@ static void blend_queue(rig *g, const double *q_nom, long *overlap_periods)
              (stop_mode == 2 && call == stop_at))) {
             stop_call = call;
             tb_stop = qu.bl[0].tb1;
+            if (stop_mode == 1 && (isarc[qu.seq] || isarc[qu.seq + 1u])) arc_stops++;
             DHT_EQ_INT(dh_queue_stop_f32(&qu), DH_OK);
             if (stop_mode == 1) DHT_EQ_INT(qu.phase, DH_QUEUE_BRAKE);
         }
@@ -374,8 +467,11 @@ static void run_robot(const dhs_robot *d, const double *q_nom, int closed)
     for (i = 0; i < g.r.n; i++) DHT_EQ_INT(dh_robot_set_rates_f32(&g.r, i, 180.0f, 3000.0f), DH_OK);
     g.closed = closed;
     if (closed) DHT_EQ_INT(dh_ikc_analyse_f32(&g.r, &g.m), DH_OK);
+    arc_ov = 0;
+    arc_stops = 0;
     for (it = 0; it < nq; it++) blend_queue(&g, q_nom, &ov);
-    printf("%s: %ld queues, %ld periods in overlaps\n", d->name, nq, ov);
+    printf("%s: %ld queues, %ld periods in overlaps, %ld at corners with an arc (%ld stops there)\n", d->name, nq,
+           ov, arc_ov, arc_stops);
 }
 
 static void queues_puma(void)
@@ -412,7 +508,7 @@ static void blend_bad(void)
     static const dh_cart_limits_f32 lim = { 0.1f, 1.0f, 30.0f, 300.0f };
     dh_path_f32 arc;
     dh_mat4_f32 A, B;
-    const float via[3] = { 0.3f, 0.1f, 0.2f };
+    const float v[3] = { 0.3f, 0.1f, 0.2f };
     uint64_t keep;
     memset(&A, 0, sizeof A);
     A.m[0][0] = A.m[1][1] = A.m[2][2] = A.m[3][3] = 1.0f;
@@ -421,18 +517,17 @@ static void blend_bad(void)
     B.m[3][0] = 0.4f;
     B.m[3][1] = 0.2f;
     DHT_EQ_INT(dh_path_line_f32(&line, &A, &B), DH_OK);
-    DHT_EQ_INT(dh_path_arc_f32(&arc, &A, via, &B), DH_OK);
+    DHT_EQ_INT(dh_path_arc_f32(&arc, &A, v, &B), DH_OK);
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, 1), DH_OK);
     keep = queue_hash();
     DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, &lim, NAN), DH_ERR_NAN);
     DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, &lim, INFINITY), DH_ERR_NAN);
     DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, &lim, -1e-3f), DH_ERR_ARG);
-    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &arc, &lim, 1e-3f), DH_ERR_ARG);
     DHT_TRUE(queue_hash() == keep);
-    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &arc, &lim, 0.0f), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &arc, &lim, 1e-3f), DH_OK);
     DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, &lim, 1e-3f), DH_ERR_LIMIT);
     DHT_EQ_INT(qu.count, 1);
-    DHT_TRUE(items[0].radius == 0.0f && items[0].path.kind == (uint32_t)DH_PATH_ARC);
+    DHT_TRUE(items[0].radius == 1e-3f && items[0].path.kind == (uint32_t)DH_PATH_ARC);
 }
 
 static const dht_case cases[] = {
