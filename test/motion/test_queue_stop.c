@@ -31,12 +31,16 @@
 #define MAXCALL 20000L
 #define RAD2DEG 57.29577951308232
 
+typedef struct {
+    dh_robot r;
+    dh_ikc_model_f32 m;
+    dh_track_f32 t;
+} rig;
+
 /* static: the micro:bit's RAM holds them beside the rig on the stack */
 static dh_queue_f32 qu;
 static dh_queue_item_f32 items[CAP];
-static dh_robot rob;
-static dh_ikc_model_f32 mod;
-static dh_track_f32 trk;
+static rig *G;
 
 static const dh_cart_limits_f32 LIM = { 0.1f, 1.0f, 30.0f, 300.0f };
 static const double Q0[6] = { 30.0, -80.0, 90.0, -100.0, -90.0, 20.0 };
@@ -65,7 +69,7 @@ static void corner(uint32_t k, double *q, dh_mat4_f32 *T)
     for (i = 0; i < 6u; i++) q[i] = Q0[i];
     for (c = 0; c < k; c++)
         for (i = 0; i < 6u; i++) q[i] += STEP[c][i];
-    dhs_target_f32(&rob, q, T);
+    dhs_target_f32(&G->r, q, T);
 }
 
 /* rotation angle (deg) between the rotations of A and B: of R = R_A^T R_B
@@ -118,7 +122,7 @@ static void run(int mode)
     int have = 0, resumed = 0;
     corner(0u, q, &A);
     for (k = 0; k < 6u; k++) q0[k] = (float)q[k];
-    DHT_EQ_INT(dh_track_init_f32(&trk, &rob, &mod, q0, DT), DH_OK);
+    DHT_EQ_INT(dh_track_init_f32(&G->t, &G->r, &G->m, q0, DT), DH_OK);
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
     /* no move at all: immediate; resume while running: nothing */
     stop_twice((uint32_t)DH_QUEUE_STOPPED);
@@ -140,7 +144,7 @@ static void run(int mode)
     DHT_EQ_INT(dh_queue_resume_f32(&qu), DH_OK);
     DHT_EQ_INT(qu.phase, DH_QUEUE_RUN);
     for (call = 0; call < MAXCALL && done < NL; call++) {
-        DHT_EQ_INT(dh_queue_target_f32(&qu, &trk, DT, &cmd), DH_OK);
+        DHT_EQ_INT(dh_queue_target_f32(&qu, &G->t, DT, &cmd), DH_OK);
         DHT_EQ_INT(cmd.kind, DH_MOVE_PATH);
         if (have) {
             double d = 0.0;
@@ -152,7 +156,7 @@ static void run(int mode)
         }
         prev = cmd.T;
         have = 1;
-        DHT_EQ_INT(dh_track_step_f32(&trk, &cmd.T, trk.q, &trep), DH_OK);
+        DHT_EQ_INT(dh_track_step_f32(&G->t, &cmd.T, G->t.q, &trep), DH_OK);
         DHT_EQ_INT(dh_queue_advance_f32(&qu, trep.state, &rep), DH_OK);
         if (rep.done) {
             done++;
@@ -194,9 +198,11 @@ static void run(int mode)
 static void queue_stop_states(void)
 {
     uint32_t i;
-    DHT_EQ_INT(dhs_build(&dhs_ur5_m, &rob), DH_OK);
-    for (i = 0; i < rob.n; i++) DHT_EQ_INT(dh_robot_set_rates_f32(&rob, i, 180.0f, 3000.0f), DH_OK);
-    DHT_EQ_INT(dh_ikc_analyse_f32(&rob, &mod), DH_OK);
+    rig g;
+    G = &g;
+    DHT_EQ_INT(dhs_build(&dhs_ur5_m, &g.r), DH_OK);
+    for (i = 0; i < g.r.n; i++) DHT_EQ_INT(dh_robot_set_rates_f32(&g.r, i, 180.0f, 3000.0f), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_f32(&g.r, &g.m), DH_OK);
     run(0);
     run(1);
     run(2);
