@@ -163,28 +163,30 @@ static void path_move_q_rates_beyond_int32(void)
  * moved 1000 units towards the origin fits. */
 static void arc_q_circle_beyond_int32(void)
 {
+    /* the two mirror images: x of A and B, x of via, the shift towards 0 */
+    static const int32_t ax[2] = { -Q16(25000), Q16(25000) }, vx[2] = { -Q16(32000), Q16(32000) };
+    static const int32_t sh[2] = { Q16(1000), -Q16(1000) };
     dh_frame_q A, B;
     dh_qpos via[3];
     dh_path_q p;
-    double cx, R;
-    int sign;
-    for (sign = -1; sign <= 1; sign += 2) {
-        frame_rotz(&A, 0, sign * Q16(25000), 0);
-        frame_rotz(&B, 0, sign * Q16(25000), Q16(10000));
-        via[0] = sign * Q16(32000);
+    unsigned k;
+    for (k = 0; k < 2u; k++) {
+        frame_rotz(&A, 0, ax[k], 0);
+        frame_rotz(&B, 0, ax[k], Q16(10000));
+        via[0] = vx[k];
         via[1] = Q16(8000);
         via[2] = 0;
         memset(&p, 0x5A, sizeof p);
         DHT_EQ_INT(dh_path_arc_q(&p, &A, via, &B), DH_ERR_OVERFLOW);
         DHT_TRUE(all_zero(&p, sizeof p));
-        A.p[0] -= sign * Q16(1000);
-        B.p[0] -= sign * Q16(1000);
-        via[0] -= sign * Q16(1000);
+        A.p[0] += sh[k];
+        B.p[0] += sh[k];
+        via[0] += sh[k];
         DHT_EQ_INT(dh_path_arc_q(&p, &A, via, &B), DH_OK);
-        /* circle through (0, 0), (0, 10000), (7000, 8000) relative to A */
-        cx = (7000.0 * 7000.0 + 8000.0 * 8000.0 - 10000.0 * 8000.0) / (2.0 * 7000.0);
-        R = sqrt(cx * cx + 5000.0 * 5000.0);
-        DHT_NEAR((double)p.radius / 65536.0, R, 1e-3);
+        /* the circle through (0, 0), (0, 10000), (7000, 8000) relative to
+         * A: centre x cx = 33e6 / 14000, radius sqrt(cx^2 + 5000^2) =
+         * 5527.759261 units = 362267230.9 LSB, within 66 LSB (1e-3) */
+        DHT_TRUE_MSG(p.radius >= 362267231 - 66 && p.radius <= 362267231 + 66, "radius %ld LSB", (long)p.radius);
     }
 }
 
