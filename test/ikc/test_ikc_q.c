@@ -740,6 +740,9 @@ static void no_closed_form(void)
     d = P;
     d.j[1].a = ldexp(1.0, 29 - DH_QPOS_FRAC) + DHK_LS;
     analyse_why(&d, DH_IKC_WHY_PATH);
+    d = P;
+    d.j[2].d = -ldexp(1.0, 29 - DH_QPOS_FRAC) - DHK_LS;
+    analyse_why(&d, DH_IKC_WHY_PATH);
     /* base not rigid (fixed path only), tool a reflection */
     DHT_EQ_INT(dhs_build(&P, &r), DH_OK);
     dh_frame_identity_q(&F);

@@ -195,6 +195,49 @@ static void run(int mode)
     DHT_EQ_INT(qu.phase, DH_QUEUE_RUN);
 }
 
+/* A corner is blended only between two lines of equal limits (motion.h,
+ * dh_queue_add_path_blend_f32): the first line's overlap ctb > 0 with the
+ * same limits, 0 (at rest) when the next line differs in any one of them
+ * or the move before is a joint move. */
+static void queue_blend_needs_equal_limits(void)
+{
+    dh_mat4_f32 A, B, C;
+    dh_path_f32 l1, l2;
+    dh_cart_limits_f32 lim;
+    double q[6];
+    float q1[6], v[6], a[6];
+    unsigned k;
+    rig g;
+    G = &g;
+    DHT_EQ_INT(dhs_build(&dhs_ur5_m, &g.r), DH_OK);
+    corner(0u, q, &A);
+    corner(1u, q, &B);
+    corner(2u, q, &C);
+    DHT_EQ_INT(dh_path_line_f32(&l1, &A, &B), DH_OK);
+    DHT_EQ_INT(dh_path_line_f32(&l2, &B, &C), DH_OK);
+    for (k = 0; k <= 4u; k++) {
+        lim = LIM;
+        if (k == 1u) lim.vmax *= 0.5f;
+        if (k == 2u) lim.amax *= 0.5f;
+        if (k == 3u) lim.wmax *= 0.5f;
+        if (k == 4u) lim.wdmax *= 0.5f;
+        DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
+        DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &l1, &LIM, 0.02f), DH_OK);
+        DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &l2, &lim, 0.0f), DH_OK);
+        DHT_TRUE_MSG((k == 0u) == (items[0].ctb > 0.0f), "limits %u: overlap %.9g", k, (double)items[0].ctb);
+    }
+    for (k = 0; k < 6u; k++) {
+        q1[k] = (float)q[k];
+        v[k] = 90.0f;
+        a[k] = 900.0f;
+    }
+    DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
+    DHT_EQ_INT(dh_queue_add_joint_f32(&qu, 6u, q1, v, a, NULL), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &l2, &LIM, 0.02f), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &l2, &LIM, 0.0f), DH_OK);
+    DHT_TRUE(items[0].ctb == 0.0f);
+}
+
 static void queue_stop_states(void)
 {
     uint32_t i;
@@ -211,6 +254,7 @@ static void queue_stop_states(void)
 }
 
 static const dht_case cases[] = {
+    DHT_CASE(queue_blend_needs_equal_limits),
     DHT_CASE(queue_stop_states),
 };
 
