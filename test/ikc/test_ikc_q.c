@@ -689,6 +689,46 @@ static void analyse_why(const dhs_robot *d, dh_ikc_why why)
     DHT_EQ_INT(m.why, why);
 }
 
+/* A model whose fields are out of range (ikc.h, dh_ikc_q: DH_ERR_ARG, no
+ * solution, sol untouched): a frame entry beyond 1.1, a revolute offset
+ * at -180 (outside (-180, 180]), a joint count not the family's, an
+ * unknown kind; and a robot without joints has no closed form. */
+static void model_out_of_range(void)
+{
+    puma_q pm;
+    dh_ikc_model_q bad;
+    dh_ikc_sol_q sol[DH_IKC_MAX_SOL], keep[DH_IKC_MAX_SOL];
+    double q[6] = {10.0, -20.0, 30.0, 40.0, 50.0, 60.0};
+    int32_t qq[6];
+    uint32_t ns, k;
+    dhr_mat4 Td;
+    dh_frame_q T;
+    dh_robot r0;
+    puma_model(0, &pm);
+    dhs_q_from_double(&pm.r, q, qq);
+    dhs_fk_ref_q(&pm.r, qq, NULL, &Td);
+    dhs_to_frame_q(&Td, &T);
+    DHT_EQ_INT(dh_ikc_q(&pm.m, &T, NULL, 0u, sol, &ns), DH_OK);
+    memset(keep, 0x5A, sizeof keep);
+    for (k = 0; k < 6u; k++) {
+        bad = pm.m;
+        if (k == 0u) bad.post_inv.r[1][2] = DH_Q30(1.2);
+        if (k == 1u) bad.pre_inv.r[0][0] = -DH_Q30(1.2);
+        if (k == 2u) bad.off[1] = -180 * 65536;
+        if (k == 3u) bad.n = 4u;
+        if (k == 4u) bad.kind = DH_IKC_SCARA;
+        if (k == 5u) bad.kind = (dh_ikc_kind)77;
+        memcpy(sol, keep, sizeof sol);
+        ns = 99u;
+        DHT_EQ_INT(dh_ikc_q(&bad, &T, NULL, 0u, sol, &ns), DH_ERR_ARG);
+        DHT_EQ_INT(ns, 0u);
+        DHT_TRUE(memcmp(sol, keep, sizeof sol) == 0);
+    }
+    DHT_EQ_INT(dh_robot_init(&r0, DH_CONV_STANDARD), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_q(&r0, &bad), DH_ERR_UNAVAILABLE);
+    DHT_EQ_INT(bad.kind, DH_IKC_NONE);
+}
+
 static void no_closed_form(void)
 {
     dhs_robot P, d;
@@ -897,6 +937,7 @@ static const dht_case cases[] = {
     DHT_CASE(limits_shift),
     DHT_CASE(limits_shift_beyond_540),
     DHT_CASE(limits_drop_keep),
+    DHT_CASE(model_out_of_range),
     DHT_CASE(no_closed_form),
     DHT_CASE(solve_errors),
     DHT_CASE(nearest),
