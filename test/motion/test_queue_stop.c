@@ -197,15 +197,15 @@ static void run(int mode)
 
 /* A corner is blended only between two lines of equal limits (motion.h,
  * dh_queue_add_path_blend_f32): the first line's overlap ctb > 0 with the
- * same limits, 0 (at rest) when the next line differs in any one of them
- * or the move before is a joint move. */
+ * same limits, 0 (at rest) when the next line differs in any one of them,
+ * when either move is an arc, or the move before is a joint move. */
 static void queue_blend_needs_equal_limits(void)
 {
     dh_mat4_f32 A, B, C;
-    dh_path_f32 l1, l2;
+    dh_path_f32 l1, l2, arc;
     dh_cart_limits_f32 lim;
     double q[6];
-    float q1[6], v[6], a[6];
+    float q1[6], v[6], a[6], via[3];
     unsigned k;
     rig g;
     G = &g;
@@ -226,6 +226,19 @@ static void queue_blend_needs_equal_limits(void)
         DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &l2, &lim, 0.0f), DH_OK);
         DHT_TRUE_MSG((k == 0u) == (items[0].ctb > 0.0f), "limits %u: overlap %.9g", k, (double)items[0].ctb);
     }
+    /* an arc after the line, or the line after an arc (its radius 0) */
+    for (k = 0; k < 3u; k++) via[k] = 0.5f * (DH_M4(&B, k, 3) + DH_M4(&C, k, 3)) + ((k == 2u) ? 0.01f : 0.0f);
+    DHT_EQ_INT(dh_path_arc_f32(&arc, &B, via, &C), DH_OK);
+    DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &l1, &LIM, 0.02f), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &arc, &LIM, 0.0f), DH_OK);
+    DHT_TRUE(items[0].ctb == 0.0f);
+    for (k = 0; k < 3u; k++) via[k] = 0.5f * (DH_M4(&A, k, 3) + DH_M4(&B, k, 3)) + ((k == 2u) ? 0.01f : 0.0f);
+    DHT_EQ_INT(dh_path_arc_f32(&arc, &A, via, &B), DH_OK);
+    DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &arc, &LIM, 0.0f), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &l2, &LIM, 0.02f), DH_OK);
+    DHT_TRUE(items[0].ctb == 0.0f);
     for (k = 0; k < 6u; k++) {
         q1[k] = (float)q[k];
         v[k] = 90.0f;
