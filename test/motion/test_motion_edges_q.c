@@ -5,7 +5,7 @@
  * a trapezoid whose distance is exactly vmax^2 / amax (the cruise of length
  * 0), the quintic's acceleration at its peak (|acc| <= p->a), a pure
  * rotation moved at the angular limits, rates of s beyond int32 at e = 0,
- * and arcs whose circle leaves int32.
+ * arcs whose circle leaves int32, and the arc of one LSB.
  */
 #include <math.h>
 #include <string.h>
@@ -190,12 +190,39 @@ static void arc_q_circle_beyond_int32(void)
     }
 }
 
+/* The smallest arc: p_A (0, 0), via (1, 0), p_B (1, 1) LSB (the finest
+ * scale of the planning, 2^-29 LSB): the circle's radius 0.707 LSB rounds
+ * to 1, and every evaluated point lies within 4 LSB + 2^-26 R of that
+ * circle (centre (0.5, 0.5)), the ends exact. */
+static void arc_q_of_one_lsb(void)
+{
+    dh_frame_q A, B, T;
+    dh_qpos via[3] = { 1, 0, 0 };
+    dh_path_q p;
+    int k;
+    frame_rotz(&A, 0, 0, 0);
+    frame_rotz(&B, 0, 1, 1);
+    DHT_EQ_INT(dh_path_arc_q(&p, &A, via, &B), DH_OK);
+    DHT_EQ_INT(p.radius, 1);
+    for (k = 0; k <= 8; k++) {
+        double dx, dy;
+        DHT_EQ_INT(dh_path_eval_q(&p, (dh_q30)(k * (DH_Q30_ONE / 8)), &T), DH_OK);
+        dx = (double)T.p[0] - 0.5;
+        dy = (double)T.p[1] - 0.5;
+        DHT_TRUE_MSG(fabs(sqrt(dx * dx + dy * dy) - sqrt(0.5)) <= 4.0, "s %d/8: (%ld, %ld)", k, (long)T.p[0], (long)T.p[1]);
+        DHT_EQ_INT(T.p[2], 0);
+    }
+    DHT_EQ_INT(dh_path_eval_q(&p, DH_Q30_ONE, &T), DH_OK);
+    DHT_TRUE(memcmp(&T, &B, sizeof T) == 0);
+}
+
 static const dht_case cases[] = {
     DHT_CASE(trap_q_cruise_of_zero_length),
     DHT_CASE(quintic_q_acceleration_peak),
     DHT_CASE(path_move_q_pure_rotation),
     DHT_CASE(path_move_q_rates_beyond_int32),
     DHT_CASE(arc_q_circle_beyond_int32),
+    DHT_CASE(arc_q_of_one_lsb),
 };
 
 DHT_MAIN(cases)
