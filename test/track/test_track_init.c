@@ -1,17 +1,18 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_track_init.c - the trackers' start (track.h: dh_track_init_f32,
- * dh_track_init_q) with the models they refuse, and the fixed tracker on a
- * robot with a prismatic joint and a closed form (the Stanford arm in mm,
- * DH_IKC_WRIST_RRP), with and without limits on that joint:
+ * dh_track_init_q) with the models they refuse, and the trackers with the
+ * closed forms of robots with a prismatic joint: the Stanford arm in mm
+ * (DH_IKC_WRIST_RRP, fixed), with and without limits on that joint, and
+ * the Cobra 600 (DH_IKC_SCARA, fixed and float):
  * - DH_ERR_ARG for a model of another joint count (the Cobra 600's SCARA
  *   for the UR5), a model of kind NONE (the Panda's), and a control
  *   period that is not finite and > 0 (float) or outside 1..10^6 us;
- * - the Stanford arm started at q and given FK(q) (the double reference)
- *   as its target: state OK in one step, the output within pos_tol and
- *   rot_tol of the target by the double reference, q_out within the
- *   limits; a target 1 mm away reached OK within its rate bound's steps,
- *   every step within dq_max.
+ * - started at q and given FK(q) (the double reference) as its target:
+ *   state OK in one step, the output within pos_tol and rot_tol of the
+ *   target by the double reference, within the limits; a target moved by
+ *   1 length unit on the prismatic joint and 0.5 deg on the others reached
+ *   OK the same way, every step within dq_max.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -98,13 +99,11 @@ static void check_reached(const int32_t *q, const dhr_mat4 *D)
                  dhs_rot_err_q(&T, D), (long)trk.q.rot_tol);
 }
 
-static void stanford_run(void)
+/* the fixed tracker with its closed form (kind) on rob at the n
+ * configurations qs: FK(q) reached in one step, then the target of q moved
+ * by 1 length unit on the prismatic joint and 0.5 deg on the others */
+static void fixed_run(dh_ikc_kind kind, const double (*qs)[6], uint32_t nq)
 {
-    static const double qs[3][6] = {
-        { 20.0, -30.0, 600.0, 40.0, 50.0, -60.0 },
-        { -100.0, 60.0, 400.0, -120.0, -30.0, 150.0 },
-        { 150.0, -150.0, 1100.0, 10.0, 80.0, 0.0 },
-    };
     int32_t q[6], qo[6];
     dh_frame_q T;
     dhr_mat4 D;
@@ -112,22 +111,21 @@ static void stanford_run(void)
     uint32_t k, i;
     long step;
     DHT_EQ_INT(dh_ikc_analyse_q(&rob, &mdl.q), DH_OK);
-    DHT_EQ_INT(mdl.q.kind, DH_IKC_WRIST_RRP);
-    for (k = 0; k < 3u; k++) {
+    DHT_EQ_INT(mdl.q.kind, kind);
+    for (k = 0; k < nq; k++) {
         dhs_q_from_double(&rob, qs[k], q);
         DHT_EQ_INT(dh_track_init_q(&trk.q, &rob, &mdl.q, q, DT_US), DH_OK);
         target_of(q, &T, &D);
         DHT_EQ_INT(dh_track_step_q(&trk.q, &T, qo, &rep), DH_OK);
         DHT_EQ_INT(rep.state, DH_TRACK_OK);
         check_reached(qo, &D);
-        /* 1 mm along the prismatic joint and 0.5 deg on the others */
-        for (i = 0; i < 6u; i++) q[i] += (i == 2u) ? (int32_t)QPOS : 32768;
+        for (i = 0; i < rob.n; i++) q[i] += (rob.joint[i].type == DH_JOINT_PRISMATIC) ? (int32_t)QPOS : 32768;
         target_of(q, &T, &D);
         for (step = 0; step < 100; step++) {
             int32_t prev[6];
             memcpy(prev, trk.q.q, sizeof prev);
             DHT_EQ_INT(dh_track_step_q(&trk.q, &T, qo, &rep), DH_OK);
-            for (i = 0; i < 6u; i++) DHT_TRUE(labs((long)qo[i] - (long)prev[i]) <= (long)trk.q.dq_max[i]);
+            for (i = 0; i < rob.n; i++) DHT_TRUE(labs((long)qo[i] - (long)prev[i]) <= (long)trk.q.dq_max[i]);
             if (rep.state == DH_TRACK_OK) break;
         }
         DHT_TRUE_MSG(rep.state == DH_TRACK_OK, "configuration %u: state %d after %ld steps", (unsigned)k, (int)rep.state,
@@ -136,32 +134,88 @@ static void stanford_run(void)
     }
 }
 
-static void track_q_prismatic_closed_form(void)
+/* rob's rates: 90 deg/s and 900 deg/s^2, 500 and 5000 mm/s^k */
+static void set_rates(void)
 {
-    dhs_robot d = dhs_stanford_mm;
     uint32_t i;
-    DHT_EQ_INT(dhs_build_q(&d, &rob), DH_OK);
-    for (i = 0; i < 6u; i++) {
+    for (i = 0; i < rob.n; i++) {
         const int rev = rob.joint[i].type == DH_JOINT_REVOLUTE;
         DHT_EQ_INT(dh_robot_set_rates_q(&rob, i, rev ? 90 * 65536 : (int32_t)(500.0 * QPOS),
                                         rev ? 900 * 65536 : (int32_t)(5000.0 * QPOS)), DH_OK);
     }
-    stanford_run();
+}
+
+static void track_q_prismatic_closed_form(void)
+{
+    static const double qs[3][6] = {
+        { 20.0, -30.0, 600.0, 40.0, 50.0, -60.0 },
+        { -100.0, 60.0, 400.0, -120.0, -30.0, 150.0 },
+        { 150.0, -150.0, 1100.0, 10.0, 80.0, 0.0 },
+    };
+    dhs_robot d = dhs_stanford_mm;
+    DHT_EQ_INT(dhs_build_q(&d, &rob), DH_OK);
+    set_rates();
+    fixed_run(DH_IKC_WRIST_RRP, qs, 3u);
     /* the prismatic joint without limits */
     d.j[2].qmin = 1.0;
     d.j[2].qmax = -1.0;
     DHT_EQ_INT(dhs_build_q(&d, &rob), DH_OK);
-    for (i = 0; i < 6u; i++) {
-        const int rev = rob.joint[i].type == DH_JOINT_REVOLUTE;
-        DHT_EQ_INT(dh_robot_set_rates_q(&rob, i, rev ? 90 * 65536 : (int32_t)(500.0 * QPOS),
-                                        rev ? 900 * 65536 : (int32_t)(5000.0 * QPOS)), DH_OK);
+    set_rates();
+    fixed_run(DH_IKC_WRIST_RRP, qs, 3u);
+}
+
+/* The SCARA (Cobra 600, DH_IKC_SCARA) with its closed form in both
+ * trackers: FK(q) reached in one step (float: the output within pos_tol
+ * and rot_tol of the target by the double reference), a nearby target
+ * within the steps' bounds. */
+static void track_scara_closed_form(void)
+{
+    static const double qs[2][6] = { { 20.0, -40.0, 100.0, 30.0 }, { -35.0, 70.0, 50.0, -200.0 } };
+    float q[4], qo[4], prev[4];
+    dh_mat4_f32 T;
+    dh_track_report_f32 rep;
+    double ep, er;
+    uint32_t k, i;
+    long step;
+    DHT_EQ_INT(dhs_build_q(&dhs_cobra600_mm, &rob), DH_OK);
+    set_rates();
+    fixed_run(DH_IKC_SCARA, qs, 2u);
+    DHT_EQ_INT(dhs_build(&dhs_cobra600_m, &rob), DH_OK);
+    for (i = 0; i < 4u; i++)
+        DHT_EQ_INT(dh_robot_set_rates_f32(&rob, i, rob.joint[i].type == DH_JOINT_REVOLUTE ? 90.0f : 0.5f,
+                                          rob.joint[i].type == DH_JOINT_REVOLUTE ? 900.0f : 5.0f), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_f32(&rob, &mdl.f), DH_OK);
+    DHT_EQ_INT(mdl.f.kind, DH_IKC_SCARA);
+    for (k = 0; k < 2u; k++) {
+        double qd[6];
+        for (i = 0; i < 4u; i++) {
+            qd[i] = qs[k][i] * ((rob.joint[i].type == DH_JOINT_REVOLUTE) ? 1.0 : 1e-3);
+            q[i] = (float)qd[i];
+        }
+        DHT_EQ_INT(dh_track_init_f32(&trk.f, &rob, &mdl.f, q, 1e-3f), DH_OK);
+        dhs_target_f32(&rob, qd, &T);
+        DHT_EQ_INT(dh_track_step_f32(&trk.f, &T, qo, &rep), DH_OK);
+        DHT_EQ_INT(rep.state, DH_TRACK_OK);
+        dhs_true_error_f32(&rob, qo, &T, &ep, &er);
+        DHT_TRUE_MSG(ep <= (double)trk.f.pos_tol && er <= (double)trk.f.rot_tol, "%.3g m, %.3g rad", ep, er);
+        for (i = 0; i < 4u; i++) qd[i] += (rob.joint[i].type == DH_JOINT_PRISMATIC) ? 1e-3 : 0.5;
+        dhs_target_f32(&rob, qd, &T);
+        for (step = 0; step < 100; step++) {
+            memcpy(prev, trk.f.q, sizeof prev);
+            DHT_EQ_INT(dh_track_step_f32(&trk.f, &T, qo, &rep), DH_OK);
+            for (i = 0; i < 4u; i++) DHT_TRUE(fabsf(qo[i] - prev[i]) <= trk.f.dq_max[i]);
+            if (rep.state == DH_TRACK_OK) break;
+        }
+        DHT_EQ_INT(rep.state, DH_TRACK_OK);
+        dhs_true_error_f32(&rob, qo, &T, &ep, &er);
+        DHT_TRUE_MSG(ep <= (double)trk.f.pos_tol && er <= (double)trk.f.rot_tol, "%.3g m, %.3g rad", ep, er);
     }
-    stanford_run();
 }
 
 static const dht_case cases[] = {
     DHT_CASE(track_init_refused),
     DHT_CASE(track_q_prismatic_closed_form),
+    DHT_CASE(track_scara_closed_form),
 };
 
 DHT_MAIN(cases)
