@@ -212,10 +212,73 @@ static void track_scara_closed_form(void)
     }
 }
 
+/* The closed form's bounds stand for the errors (measured 0) only while
+ * pos_tol and rot_tol are at least those bounds (track.h, "Report"): the
+ * UR5 at q given FK(q), with the default tolerances, with pos_tol below
+ * the bound, with rot_tol below 2e-6 (float; the fixed twin likewise):
+ * state OK every time, measured 1 and the errors within the tolerances
+ * once one is tightened. A float target whose bottom row is not 0 0 0 1
+ * is not rigid: DH_ERR_NOT_RIGID, state UNREACHABLE, errors 0, and the
+ * joints at rest stay where they are. */
+static void track_closed_form_bounds(void)
+{
+    const double qd[6] = { 30.0, -80.0, 90.0, -100.0, -90.0, 20.0 };
+    float q[6], qo[6];
+    int32_t qq[6], qqo[6];
+    dh_mat4_f32 T, bad;
+    dh_frame_q Tq;
+    dhr_mat4 D;
+    dh_track_report_f32 rep;
+    dh_track_report_q repq;
+    unsigned k, i;
+    DHT_EQ_INT(dhs_build(&dhs_ur5_m, &rob), DH_OK);
+    for (i = 0; i < 6u; i++) {
+        DHT_EQ_INT(dh_robot_set_rates_f32(&rob, i, 90.0f, 900.0f), DH_OK);
+        q[i] = (float)qd[i];
+    }
+    DHT_EQ_INT(dh_ikc_analyse_f32(&rob, &mdl.f), DH_OK);
+    dhs_target_f32(&rob, qd, &T);
+    for (k = 0; k < 3u; k++) {
+        DHT_EQ_INT(dh_track_init_f32(&trk.f, &rob, &mdl.f, q, 1e-3f), DH_OK);
+        if (k == 1u) trk.f.pos_tol = 0.5f * trk.f.cfp;
+        if (k == 2u) trk.f.rot_tol = 1e-6f;
+        DHT_EQ_INT(dh_track_step_f32(&trk.f, &T, qo, &rep), DH_OK);
+        DHT_EQ_INT(rep.state, DH_TRACK_OK);
+        DHT_EQ_INT(rep.measured, k != 0u);
+        DHT_TRUE(rep.pos_err <= trk.f.pos_tol && rep.rot_err <= trk.f.rot_tol);
+    }
+    for (k = 0; k < 3u; k++) {
+        DHT_EQ_INT(dh_track_init_f32(&trk.f, &rob, &mdl.f, q, 1e-3f), DH_OK);
+        bad = T;
+        DH_M4(&bad, 3, k) = 1e-3f;
+        memset(&rep, 0x5A, sizeof rep);
+        DHT_EQ_INT(dh_track_step_f32(&trk.f, &bad, qo, &rep), DH_ERR_NOT_RIGID);
+        DHT_EQ_INT(rep.state, DH_TRACK_UNREACHABLE);
+        DHT_TRUE(rep.pos_err == 0.0f && rep.rot_err == 0.0f);
+        DHT_TRUE(memcmp(qo, q, sizeof qo) == 0);
+    }
+    /* fixed */
+    DHT_EQ_INT(dhs_build_q(&dhs_ur5_mm, &rob), DH_OK);
+    set_rates();
+    DHT_EQ_INT(dh_ikc_analyse_q(&rob, &mdl.q), DH_OK);
+    dhs_q_from_double(&rob, qd, qq);
+    target_of(qq, &Tq, &D);
+    for (k = 0; k < 3u; k++) {
+        DHT_EQ_INT(dh_track_init_q(&trk.q, &rob, &mdl.q, qq, DT_US), DH_OK);
+        if (k == 1u) trk.q.pos_tol = trk.q.cf_pos - 1;
+        if (k == 2u) trk.q.rot_tol = DH_TRACK_CF_ROT_Q - 1;
+        DHT_EQ_INT(dh_track_step_q(&trk.q, &Tq, qqo, &repq), DH_OK);
+        DHT_EQ_INT(repq.state, DH_TRACK_OK);
+        DHT_EQ_INT(repq.measured, k != 0u);
+        DHT_TRUE(repq.pos_err <= trk.q.pos_tol && repq.rot_err <= trk.q.rot_tol);
+    }
+}
+
 static const dht_case cases[] = {
     DHT_CASE(track_init_refused),
     DHT_CASE(track_q_prismatic_closed_form),
     DHT_CASE(track_scara_closed_form),
+    DHT_CASE(track_closed_form_bounds),
 };
 
 DHT_MAIN(cases)
