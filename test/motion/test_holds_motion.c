@@ -34,9 +34,35 @@ static void profq_refused(const dh_profile_q *p)
     UNTOUCHED(acc);
 }
 
+/* one field of a profile set out of range: the profile it starts from
+ * (0 trapezoid, 1 seven-phase, 2 quintic), the field, its value, and xa
+ * when not 0 */
+enum { F_T, F_V, F_A, F_J, F_XJ, F_XA, F_KIND };
+typedef struct {
+    int base, field;
+    int32_t v, xa;
+} profq_bad;
+
+static const profq_bad bad[] = {
+    { 2, F_T, 0, 0 },
+    { 0, F_T, INT32_MIN, 0 },
+    { 1, F_V, 0, 0 },
+    { 2, F_A, -1, 0 },
+    { 0, F_KIND, 7, 0 },
+    { 0, F_XJ, -1, 0 },
+    { 1, F_XJ, 0x10000001, 0x20000000 },
+    { 1, F_XJ, 0x01000000, 0x01FFFFFF },
+    { 0, F_XA, 0, 0 },
+    { 0, F_XA, 0x20000001, 0 },
+    { 1, F_XJ, 0, 0 },
+    { 1, F_J, 0, 0 },
+    { 0, F_XJ, 0x00100000, 0 },
+};
+
 static void profile_q_holds_none(void)
 {
     dh_profile_q tr, sc, qu, p;
+    unsigned k;
     int32_t pos, vel, acc, q[2], qd[2], qdd[2];
     const int32_t q0[2] = { 0, Q16(10) }, q1[2] = { Q16(90), Q16(10) };
     dh_profile_q jm[2];
@@ -50,51 +76,24 @@ static void profile_q_holds_none(void)
     DHT_EQ_INT(pos, Q16(90));
     DHT_EQ_INT(dh_profile_eval_q(&qu, qu.T, &pos, &vel, &acc), DH_OK);
     DHT_EQ_INT(pos, Q16(90));
-    /* T out of 1 .. 2^31 - 1, peaks <= 0: every kind */
-    p = qu;
-    p.T = 0u;
-    profq_refused(&p);
-    p = tr;
-    p.T = 0x80000000u;
-    profq_refused(&p);
-    p = sc;
-    p.v = 0;
-    profq_refused(&p);
-    p = qu;
-    p.a = -1;
-    profq_refused(&p);
-    p = tr;
-    p.kind = 7u;
-    profq_refused(&p);
-    /* ratios out of range: xj < 0, xj > 1/4, xa < 2 xj, xa <= xj, xa > 1/2 */
-    p = tr;
-    p.xj = -1;
-    profq_refused(&p);
-    p = sc;
-    p.xj = 0x10000001;
-    p.xa = 0x20000000;
-    profq_refused(&p);
-    p = sc;
-    p.xj = 0x01000000;
-    p.xa = 0x01FFFFFF;
-    profq_refused(&p);
-    p = tr;
-    p.xa = 0;
-    profq_refused(&p);
-    p = tr;
-    p.xa = 0x20000001;
-    profq_refused(&p);
-    /* a seven-phase profile without jerk phases or without jerk; a
-     * trapezoid with jerk phases */
-    p = sc;
-    p.xj = 0;
-    profq_refused(&p);
-    p = sc;
-    p.j = 0;
-    profq_refused(&p);
-    p = tr;
-    p.xj = 0x00100000;
-    profq_refused(&p);
+    /* T out of 1 .. 2^31 - 1, peaks <= 0 (every kind); ratios out of
+     * range: xj < 0, xj > 1/4, xa < 2 xj, xa <= xj, xa > 1/2; a
+     * seven-phase profile without jerk phases or without jerk; a
+     * trapezoid with jerk phases; an unknown kind */
+    for (k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        p = (bad[k].base == 0) ? tr : ((bad[k].base == 1) ? sc : qu);
+        switch (bad[k].field) {
+        case F_T: p.T = (uint32_t)bad[k].v; break;
+        case F_V: p.v = bad[k].v; break;
+        case F_A: p.a = bad[k].v; break;
+        case F_J: p.j = bad[k].v; break;
+        case F_XJ: p.xj = bad[k].v; break;
+        case F_XA: p.xa = bad[k].v; break;
+        default: p.kind = (uint32_t)bad[k].v; break;
+        }
+        if (bad[k].xa != 0) p.xa = bad[k].xa;
+        profq_refused(&p);
+    }
     /* d == 0 holds the no move whatever the rest */
     p = tr;
     p.d = 0;
