@@ -288,8 +288,64 @@ static void ikc_calib_tolerance(void)
     expect_none(&d, DH_IKC_WHY_AXES, "puma alpha2 1.1");
 }
 
+/* ---- singular configurations ------------------------------------------------ */
+
+/* A calibrated UR5 (fixed deviations; the last twist 179.6 deg, taken as
+ * 180) at configurations on the idealised chain's singularities, where the
+ * refinement's Jacobian is singular: wrist (q5 0 or 180), elbow stretched
+ * (q3 0) and both, and near them. The contract (ikc.h, calibration
+ * tolerance): a branch there may be missing, but every branch returned is
+ * refined and within the bounds on the exact chain; none left is
+ * DH_ERR_UNREACHABLE. */
+static void ikc_calib_singular(void)
+{
+    static const double qs[][6] = {
+        { 30.0, -60.0, 80.0, -40.0, 0.0, 20.0 },    { -120.0, -100.0, 45.0, 10.0, 180.0, -70.0 },
+        { 60.0, -45.0, 0.0, 30.0, 50.0, 10.0 },     { 10.0, -90.0, 0.0, -90.0, 0.0, 0.0 },
+        { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 },           { 45.0, -30.0, 60.0, 15.0, 1e-4, -15.0 },
+        { -45.0, -150.0, 1e-4, 100.0, -90.0, 5.0 }, { 90.0, -90.0, 90.0, -90.0, -90.0, 0.0 },
+    };
+    dhs_robot d = dhs_ur5_m;
+    dh_robot r;
+    dh_ikc_model_f32 m;
+    dh_mat4_f32 T;
+    dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+    uint32_t k, n, s, found = 0;
+    open_limits(&d);
+    d.j[1].a += 0.0015;
+    d.j[3].d -= 0.001;
+    d.j[1].alpha_deg += 0.4;
+    d.j[3].alpha_deg += 0.3;
+    d.j[2].theta_deg += 0.3;
+    d.j[5].alpha_deg = 179.6;
+    DHT_EQ_INT(dhs_build(&d, &r), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_f32(&r, &m), DH_OK);
+    DHT_EQ_INT(m.kind, DH_IKC_PARALLEL_234);
+    DHT_EQ_INT(m.calibrated, 1);
+    for (k = 0; k < sizeof qs / sizeof qs[0]; k++) {
+        dh_status st;
+        dhs_target_f32(&r, qs[k], &T);
+        n = 99u;
+        st = dh_ikc_f32(&m, &T, NULL, 0u, sol, &n);
+        DHT_TRUE_MSG(st == DH_OK || st == DH_ERR_UNREACHABLE, "q %s: status %d", dhs_q_str(qs[k], 6u, 0), (int)st);
+        if (st != DH_OK) DHT_EQ_INT(n, 0);
+        for (s = 0; s < n; s++) {
+            double ep, er;
+            DHT_TRUE((sol[s].flags & DH_IKC_REFINED) != 0u);
+            dhs_true_error_f32(&r, sol[s].q, &T, &ep, &er);
+            DHT_TRUE_MSG(ep <= TOL_POS && er <= TOL_ROT, "q %s: solution %u (flags 0x%x) %s: %.3g m, %.3g rad",
+                         dhs_q_str(qs[k], 6u, 0), (unsigned)s, (unsigned)sol[s].flags, dhs_qf_str(sol[s].q, 6u, 1),
+                         ep, er);
+        }
+        found += n;
+    }
+    /* the singular targets are not all lost */
+    DHT_TRUE(found > 0u);
+}
+
 static const dht_case cases[] = {
     DHT_CASE(ikc_calib_tolerance),
+    DHT_CASE(ikc_calib_singular),
     DHT_CASE(ikc_calib_ur5),
 };
 DHT_MAIN(cases)

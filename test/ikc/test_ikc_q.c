@@ -579,6 +579,61 @@ static void limits_shift(void)
     DHT_TRUE(fabs(ldexp((double)sol[f].q[3], -16) + 1960.0) < DHK_COMP_DEG);
 }
 
+/* The contract's shift, in double: the value v + 360 k in [lo, hi]
+ * nearest ref (ties: the lower), or v when there is none */
+static double shift_ref(double v, double lo, double hi, double ref)
+{
+    double best = v, bd = 1e300, c;
+    int k;
+    for (k = -10; k <= 10; k++) {
+        c = v + 360.0 * k;
+        if (c >= lo && c <= hi && fabs(c - ref) < bd) {
+            best = c;
+            bd = fabs(c - ref);
+        }
+    }
+    return best;
+}
+
+/* Limits of joint 4 reaching beyond +-540 deg, less than three turns apart
+ * ([-900, 0], [600, 1000], [600, 700]: the candidates searched one by one)
+ * or more ([100, 2000]: the first shift inside by a remainder, q_ref beyond
+ * the upper limit): joint 4 of the generating solution (200 deg, in
+ * (-180, 180] -160) is the shift nearest q_ref inside the limits
+ * (shift_ref), or outside them kept, flagged and in (-180, 180]. */
+static void limits_shift_beyond_540(void)
+{
+    static const double lim[][3] = {
+        { -900.0, 0.0, -600.0 }, { -900.0, 0.0, -1000.0 }, { -900.0, 0.0, -700.0 }, { 600.0, 1000.0, 0.0 },
+        { 600.0, 700.0, 0.0 },   { 100.0, 2000.0, 5000.0 }, { 100.0, 2000.0, 700.0 }, { 100.0, 2000.0, -3000.0 },
+    };
+    puma_q pm;
+    double q[6] = {10.0, -20.0, 30.0, 200.0, 40.0, -50.0};
+    int32_t qq[6], qref[6];
+    dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
+    uint32_t ns;
+    dhr_mat4 Td;
+    unsigned k;
+    int f;
+    puma_model(0, &pm);
+    dhs_q_from_double(&pm.r, q, qq);
+    for (k = 0; k < sizeof lim / sizeof lim[0]; k++) {
+        const double want = shift_ref(-160.0, lim[k][0], lim[k][1], lim[k][2]);
+        const int inside = want >= lim[k][0] && want <= lim[k][1];
+        memcpy(qref, qq, sizeof qref);
+        qref[3] = (int32_t)(lim[k][2] * 65536.0);
+        DHT_EQ_INT(dh_robot_set_limits_q(&pm.r, 3, (int32_t)(lim[k][0] * 65536.0), (int32_t)(lim[k][1] * 65536.0)),
+                   DH_OK);
+        DHT_EQ_INT(dh_ikc_analyse_q(&pm.r, &pm.m), DH_OK);
+        solve_q(&pm.r, &pm.m, qq, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &ns, &Td);
+        f = dhk_check_sols_q(&pm.r, &Td, sol, ns, qq, NULL);
+        DHT_TRUE(f >= 0);
+        DHT_TRUE_MSG(fabs(ldexp((double)sol[f].q[3], -16) - want) < DHK_COMP_DEG, "limits [%g, %g], q_ref %g: %.6f, want %g",
+                     lim[k][0], lim[k][1], lim[k][2], ldexp((double)sol[f].q[3], -16), want);
+        DHT_EQ_INT((sol[f].flags & DH_IKC_OUT_OF_LIMITS) != 0u, !inside);
+    }
+}
+
 static void limits_drop_keep(void)
 {
     dhs_robot P, d, dn;
@@ -634,6 +689,46 @@ static void analyse_why(const dhs_robot *d, dh_ikc_why why)
     DHT_EQ_INT(m.why, why);
 }
 
+/* A model whose fields are out of range (ikc.h, dh_ikc_q: DH_ERR_ARG, no
+ * solution, sol untouched): a frame entry beyond 1.1, a revolute offset
+ * at -180 (outside (-180, 180]), a joint count not the family's, an
+ * unknown kind; and a robot without joints has no closed form. */
+static void model_out_of_range(void)
+{
+    puma_q pm;
+    dh_ikc_model_q bad;
+    dh_ikc_sol_q sol[DH_IKC_MAX_SOL], keep[DH_IKC_MAX_SOL];
+    double q[6] = {10.0, -20.0, 30.0, 40.0, 50.0, 60.0};
+    int32_t qq[6];
+    uint32_t ns, k;
+    dhr_mat4 Td;
+    dh_frame_q T;
+    dh_robot r0;
+    puma_model(0, &pm);
+    dhs_q_from_double(&pm.r, q, qq);
+    dhs_fk_ref_q(&pm.r, qq, NULL, &Td);
+    dhs_to_frame_q(&Td, &T);
+    DHT_EQ_INT(dh_ikc_q(&pm.m, &T, NULL, 0u, sol, &ns), DH_OK);
+    memset(keep, 0x5A, sizeof keep);
+    for (k = 0; k < 6u; k++) {
+        bad = pm.m;
+        if (k == 0u) bad.post_inv.r[1][2] = DH_Q30(1.2);
+        if (k == 1u) bad.pre_inv.r[0][0] = -DH_Q30(1.2);
+        if (k == 2u) bad.off[1] = -180 * 65536;
+        if (k == 3u) bad.n = 4u;
+        if (k == 4u) bad.kind = DH_IKC_SCARA;
+        if (k == 5u) bad.kind = (dh_ikc_kind)77;
+        memcpy(sol, keep, sizeof sol);
+        ns = 99u;
+        DHT_EQ_INT(dh_ikc_q(&bad, &T, NULL, 0u, sol, &ns), DH_ERR_ARG);
+        DHT_EQ_INT(ns, 0u);
+        DHT_TRUE(memcmp(sol, keep, sizeof sol) == 0);
+    }
+    DHT_EQ_INT(dh_robot_init(&r0, DH_CONV_STANDARD), DH_OK);
+    DHT_EQ_INT(dh_ikc_analyse_q(&r0, &bad), DH_ERR_UNAVAILABLE);
+    DHT_EQ_INT(bad.kind, DH_IKC_NONE);
+}
+
 static void no_closed_form(void)
 {
     dhs_robot P, d;
@@ -684,6 +779,9 @@ static void no_closed_form(void)
     /* representable, but beyond the solver's 2^29-unit range */
     d = P;
     d.j[1].a = ldexp(1.0, 29 - DH_QPOS_FRAC) + DHK_LS;
+    analyse_why(&d, DH_IKC_WHY_PATH);
+    d = P;
+    d.j[2].d = -ldexp(1.0, 29 - DH_QPOS_FRAC) - DHK_LS;
     analyse_why(&d, DH_IKC_WHY_PATH);
     /* base not rigid (fixed path only), tool a reflection */
     DHT_EQ_INT(dhs_build(&P, &r), DH_OK);
@@ -837,7 +935,9 @@ static const dht_case cases[] = {
     DHT_CASE(boundary_folded),
     DHT_CASE(boundary_beyond),
     DHT_CASE(limits_shift),
+    DHT_CASE(limits_shift_beyond_540),
     DHT_CASE(limits_drop_keep),
+    DHT_CASE(model_out_of_range),
     DHT_CASE(no_closed_form),
     DHT_CASE(solve_errors),
     DHT_CASE(nearest),

@@ -897,6 +897,41 @@ static void ikc_limits(void)
     }
 }
 
+/* The 360-degree shifts towards q_ref (ikc.h: the shifted value nearest
+ * q_ref inside the limits) on the UR5, limits +-360: the generating
+ * solution's joints 1 and 6 (10 and -50 deg) with q_ref -250 and 300 are
+ * -350 and 310; with q_ref the configuration, unshifted. */
+static void ikc_shift_to_q_ref(void)
+{
+    const double q[6] = { 10.0, -20.0, 30.0, 40.0, 50.0, -50.0 };
+    float ref[6];
+    dh_robot r;
+    dh_ikc_model_f32 m;
+    dh_ikc_sol_f32 sol[DH_IKC_MAX_SOL];
+    dh_mat4_f32 T;
+    uint32_t n, s, i, k, found;
+    build(&dhs_ur5_m, &r, &m);
+    dhs_target_f32(&r, q, &T);
+    for (k = 0; k < 2u; k++) {
+        for (i = 0; i < 6u; i++) ref[i] = (float)q[i];
+        if (k == 1u) {
+            ref[0] = -250.0f;
+            ref[5] = 300.0f;
+        }
+        DHT_EQ_INT(dh_ikc_f32(&m, &T, ref, 0u, sol, &n), DH_OK);
+        found = 0;
+        for (s = 0; s < n; s++) {
+            double dmax = 0.0;
+            for (i = 0; i < 6u; i++) dmax = fmax(dmax, dhs_joint_dist(&r, i, (double)sol[s].q[i], q[i]));
+            if (dmax > 0.05) continue;
+            found++;
+            DHT_NEAR(sol[s].q[0], (k == 1u) ? -350.0 : 10.0, 0.05);
+            DHT_NEAR(sol[s].q[5], (k == 1u) ? 310.0 : -50.0, 0.05);
+        }
+        DHT_EQ_INT(found, 1u);
+    }
+}
+
 /* statuses of unreachable targets */
 static void ikc_unreachable_status(void)
 {
@@ -1039,6 +1074,7 @@ static void ikc_detect_each(void)
 
 static const dht_case cases[] = {
     DHT_CASE(ikc_complete),
+    DHT_CASE(ikc_shift_to_q_ref),
     DHT_CASE(ikc_ur_wrist_singular),
     DHT_CASE(ikc_ur_shoulder_singular),
     DHT_CASE(ikc_ur_corner),

@@ -250,6 +250,26 @@ static void motion_path_bad(void)
     DH_M4(&T, 1, 3) = 1.0f;
     v3[0] = -FLT_MAX;
     DHT_EQ_INT(dh_path_arc_f32(&p, &bad, v3, &T), DH_ERR_OVERFLOW);
+    /* every difference finite, a side's length beyond float: |via - p_A| 4.2e38 */
+    rigid(&bad, 0.0f);
+    rigid(&T, 3e38f);
+    v3[0] = 3e38f;
+    v3[1] = 3e38f;
+    v3[2] = 0.0f;
+    DHT_EQ_INT(dh_path_arc_f32(&p, &bad, v3, &T), DH_ERR_OVERFLOW);
+    /* every side finite, the arc's length beyond float: the circle through
+     * (0, 0), (2e38, 0), (1e38, 1.2e38) has the radius 1.0167e38, the arc
+     * over its top 3.5 rad */
+    rigid(&T, 2e38f);
+    v3[0] = 1e38f;
+    v3[1] = 1.2e38f;
+    DHT_EQ_INT(dh_path_arc_f32(&p, &bad, v3, &T), DH_ERR_OVERFLOW);
+    /* a hundredth of it fits: radius sqrt(1 + 0.18333^2) 1e36 */
+    rigid(&T, 2e36f);
+    v3[0] = 1e36f;
+    v3[1] = 1.2e36f;
+    DHT_EQ_INT(dh_path_arc_f32(&good, &bad, v3, &T), DH_OK);
+    DHT_NEAR(good.radius / 1e36, sqrt(1.0 + (0.44 / 2.4) * (0.44 / 2.4)), 1e-5);
     /* collinear, coincident and thin: no circle */
     v3[0] = 0.5f;
     v3[1] = 0.5f;
