@@ -335,6 +335,23 @@ MOTION_PATH_TOL = 4.0 * 2.0 ** -23
 MOTION_W = 4
 
 
+def square_devs(p, corners, ovl, end):
+    """the largest distances of the tool points p[1..end] from the square's
+    outline outside the overlaps ovl (corner, first, last period) and from
+    the corner inside them"""
+    inside = {}
+    for i, k0, k1 in ovl:
+        for k in range(k0, k1 + 1):
+            inside[k] = i
+    line_dev = blend_dev = 0.0
+    for k in range(1, end + 1):
+        if k in inside:
+            blend_dev = max(blend_dev, float(np.linalg.norm(p[k] - corners[inside[k]])))
+        else:
+            line_dev = max(line_dev, min(line_dist(corners[i], corners[i + 1], p[k]) for i in range(4)))
+    return line_dev, blend_dev
+
+
 def check_float_motion(rows, lines, c):
     """fw_float_motion: every period's configuration, FK in double."""
     one, qs, corners, ovl = {}, [], {}, []
@@ -371,16 +388,8 @@ def check_float_motion(rows, lines, c):
     # within FLOAT_FK_TOL of this exact FK, of a path point within MOTION_PATH_TOL
     tol = pos_tol + FLOAT_FK_TOL + MOTION_PATH_TOL
     end = int(f['square_end'][0])
-    inside = {}
-    for i, k0, k1 in ovl:
-        for k in range(k0, k1 + 1):
-            inside[k] = i
-    line_dev = blend_dev = circle_dev = 0.0
-    for k in range(1, end + 1):
-        if k in inside:
-            blend_dev = max(blend_dev, float(np.linalg.norm(p[k] - corners[inside[k]])))
-        else:
-            line_dev = max(line_dev, min(line_dist(corners[i], corners[i + 1], p[k]) for i in range(4)))
+    line_dev, blend_dev = square_devs(p, corners, ovl, end)
+    circle_dev = 0.0
     ctr, rad = np.array(f['circle'][:3]), f['circle'][3]
     c.near('the circle: centre p0 + (R, 0, 0) (m)', ctr, p0 + np.array([rad, 0.0, 0.0]), 1e-7)
     for k in range(end + 1, len(qs)):
@@ -467,16 +476,8 @@ def check_fixed_motion(rows, lines, frac, c):
     # FIXED_TOL_MM of this exact FK) of a path point within the path's error
     tol = pos_tol + FIXED_TOL_MM + FIXED_MOTION_PATH_TOL_MM
     end = one['square_end'][0]
-    inside = {}
-    for i, k0, k1 in ovl:
-        for k in range(k0, k1 + 1):
-            inside[k] = i
-    line_dev = blend_dev = circle_dev = 0.0
-    for k in range(1, end + 1):
-        if k in inside:
-            blend_dev = max(blend_dev, float(np.linalg.norm(p[k] - corners[inside[k]])))
-        else:
-            line_dev = max(line_dev, min(line_dist(corners[i], corners[i + 1], p[k]) for i in range(4)))
+    line_dev, blend_dev = square_devs(p, corners, ovl, end)
+    circle_dev = 0.0
     ctr, rad = np.array(one['circle'][:3], float) / one_pos, one['circle'][3] / one_pos
     c.near('the circle: centre p0 + (R, 0, 0) (mm)', ctr, p0 + np.array([rad, 0.0, 0.0]), 0.0)
     for k in range(end + 1, len(qs)):
