@@ -65,7 +65,13 @@ DH_INLINE uint32_t bq_m(bq_f a)
 DH_INLINE int32_t bq_e(bq_f a)
 {
     const uint32_t w = (uint32_t)a;
-    return (w >= BQ_BIAS) ? (int32_t)(w - BQ_BIAS) : -(int32_t)(BQ_BIAS - w);
+    uint32_t d;
+    if (w >= BQ_BIAS) {
+        d = w - BQ_BIAS;
+        return (int32_t)d;
+    }
+    d = BQ_BIAS - w;
+    return -(int32_t)d;
 }
 
 DH_INLINE bq_f bq_pack(uint32_t m, int32_t e)
@@ -77,10 +83,19 @@ DH_INLINE bq_f bq_pack(uint32_t m, int32_t e)
 DH_INLINE bq_f bq_make(uint64_t v, int32_t e)
 {
     unsigned n;
+    int32_t sh;
     if (v == 0u) return bq_pack(0u, 0);
     n = dh_q_bitlen64(v);
-    if (n > 32u) return bq_pack((uint32_t)(v >> (n - 32u)), e + (int32_t)(n - 32u));
-    return bq_pack((uint32_t)(v << (32u - n)), e - (int32_t)(32u - n));
+    sh = (int32_t)n;
+    sh -= 32;
+    if (n > 32u) {
+        const unsigned r = n - 32u;
+        return bq_pack((uint32_t)(v >> r), e + sh);
+    }
+    {
+        const unsigned l = 32u - n;
+        return bq_pack((uint32_t)(v << l), e + sh);
+    }
 }
 
 /* a b: the 64-bit product of the mantissas from 16-bit halves (no
@@ -89,8 +104,9 @@ static DH_NOINLINE bq_f bq_mul(bq_f a, bq_f b)
 {
     const uint32_t x = bq_m(a), y = bq_m(b);
     const uint32_t x0 = x & 0xFFFFu, x1 = x >> 16, y0 = y & 0xFFFFu, y1 = y >> 16;
-    const uint64_t mid = (uint64_t)(x0 * y1) + (x1 * y0);
-    return bq_make(((uint64_t)(x1 * y1) << 32) + (mid << 16) + (x0 * y0), bq_e(a) + bq_e(b));
+    const uint32_t p00 = x0 * y0, p01 = x0 * y1, p10 = x1 * y0, p11 = x1 * y1;
+    const uint64_t mid = (uint64_t)p01 + p10;
+    return bq_make(((uint64_t)p11 << 32) + (mid << 16) + p00, bq_e(a) + bq_e(b));
 }
 
 /* a / b for b != 0: floor(a.m 2^32 / b.m) (< 2^33): the integer bit,
@@ -119,7 +135,8 @@ static DH_NOINLINE bq_f bq_div(bq_f a, bq_f b)
 static DH_NOINLINE bq_f bq_sqrt(bq_f a)
 {
     const int32_t e = bq_e(a);
-    const unsigned k = (((uint32_t)e & 1u) != 0u) ? 29u : 30u;
+    unsigned k = 30u;
+    if (((uint32_t)e & 1u) != 0u) k = 29u;
     if (bq_m(a) == 0u) return a;
     return bq_make(dh_q_isqrt62((uint64_t)bq_m(a) << k), (e - (int32_t)k) / 2);
 }
@@ -130,6 +147,7 @@ static DH_NOINLINE bq_f bq_addsub(bq_f a, bq_f b, int sub)
 {
     bq_f x = a, y = b;
     uint64_t u, v;
+    int32_t de;
     uint32_t d;
     if (bq_m(b) == 0u) return a;
     if (bq_m(a) == 0u) return (sub != 0) ? a : b;
@@ -138,7 +156,8 @@ static DH_NOINLINE bq_f bq_addsub(bq_f a, bq_f b, int sub)
         x = b;
         y = a;
     }
-    d = (uint32_t)(bq_e(x) - bq_e(y));
+    de = bq_e(x) - bq_e(y);
+    d = (uint32_t)de;
     u = (uint64_t)bq_m(x) << 30;
     v = (d < 62u) ? ((uint64_t)bq_m(y) << 30) >> d : 0u;
     if (sub == 0) return bq_make(u + v, bq_e(x) - 30);
@@ -193,8 +212,8 @@ static DH_NOINLINE uint32_t bq_int(bq_f a, int32_t k, int up)
 /* round(a 2^30) for 0 <= a < 2 */
 DH_INLINE int32_t bq_q30(bq_f a)
 {
-    const uint32_t r = bq_int(a, 31, 0);
-    return (int32_t)((r >> 1) + (r & 1u));
+    const uint32_t r = bq_int(a, 31, 0), h = (r >> 1) + (r & 1u);
+    return (int32_t)h;
 }
 
 DH_INLINE bq_f bq_u(uint32_t v)
