@@ -259,6 +259,21 @@ static double nearest_ratio(const dh_robot *r, const dh_mat4_f32 *T, const dh_ik
     return best;
 }
 
+/* 1 when a joint of q lies within the solver's rounding of a limit
+ * (MATCH_FLOOR for a revolute joint, 1e-6 length units for a prismatic
+ * one): the solution's value may then fall just outside, and ikc.h leaves
+ * such a solution out */
+static int near_limit(const dh_robot *r, const double *q)
+{
+    uint32_t i;
+    for (i = 0; i < r->n; i++) {
+        const dh_joint *j = &r->joint[i];
+        const double tol = (j->type == DH_JOINT_REVOLUTE) ? MATCH_FLOOR : 1e-6;
+        if (j->qmin <= j->qmax && (fabs(q[i] - (double)j->qmin) < tol || fabs(q[i] - (double)j->qmax) < tol)) return 1;
+    }
+    return 0;
+}
+
 static void ikc_complete(void)
 {
     unsigned ri;
@@ -278,6 +293,10 @@ static void ikc_complete(void)
             dhs_random_q(d, q);
             sd = sing_dist(d, q);
             if (sd < 1e-2) continue;
+            if (near_limit(&r, q)) {
+                dht_reach_max("complete.near_limit", 1.0);
+                continue;
+            }
             used++;
             dhs_target_f32(&r, q, &T);
             n = solve(&r, &m, &T, qref, sol);
