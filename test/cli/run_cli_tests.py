@@ -64,6 +64,24 @@ def run(args, stdin=None):
     return p.returncode, p.stdout.decode('utf-8', 'replace'), p.stderr.decode('utf-8', 'replace')
 
 
+def seg_dist(p, a, b):
+    """distance of point p from the segment a b"""
+    d = [b[i] - a[i] for i in range(3)]
+    u = max(0.0, min(1.0, sum((p[i] - a[i]) * d[i] for i in range(3)) / sum(x * x for x in d)))
+    return math.sqrt(sum((p[i] - a[i] - u * d[i]) ** 2 for i in range(3)))
+
+
+def window_rates(pts, w, dt):
+    """largest speed and acceleration of the points by finite differences over w periods of dt"""
+    vw, aw = 0.0, 0.0
+    for k in range(len(pts) - 2 * w):
+        d1 = [pts[k + w][i] - pts[k][i] for i in range(3)]
+        d2 = [pts[k + 2 * w][i] - 2 * pts[k + w][i] + pts[k][i] for i in range(3)]
+        vw = max(vw, math.sqrt(sum(x * x for x in d1)) / (w * dt))
+        aw = max(aw, math.sqrt(sum(x * x for x in d2)) / (w * dt) ** 2)
+    return vw, aw
+
+
 def check(cond, what):
     CHECKS[0] += 1
     if not cond:
@@ -1808,25 +1826,17 @@ def group_move(seed, tmp):
         pts = [p0] + [[F[i][3] for i in range(3)] for F in (ref_fk(rob, r[1]) for r in brows)]
         corners = [p0] + sq
 
-        def side_dist(p, a, b):
-            d = [b[i] - a[i] for i in range(3)]
-            u = max(0.0, min(1.0, sum((p[i] - a[i]) * d[i] for i in range(3)) / sum(x * x for x in d)))
-            return math.sqrt(sum((p[i] - a[i] - u * d[i]) ** 2 for i in range(3)))
         worst, off = 0.0, 0.0
         for p in pts:
-            ds = min(side_dist(p, corners[k], corners[k + 1]) for k in range(4))
+            ds = min(seg_dist(p, corners[k], corners[k + 1]) for k in range(4))
             dc = min(math.sqrt(sum((p[i] - c[i]) ** 2 for i in range(3))) for c in sq[:3])
             off = max(off, ds)
             if ds > 1e-5:
                 worst = max(worst, dc)
         check(worst <= R + 1e-5 and off > 1e-3, 'move --blend square: off the sides %.3g, %.6g from a corner '
               '(radius %g)' % (off, worst, R))
-        w, vw, aw = 20, 0.0, 0.0
-        for k in range(len(pts) - 2 * w):
-            d1 = [pts[k + w][i] - pts[k][i] for i in range(3)]
-            d2 = [pts[k + 2 * w][i] - 2 * pts[k + w][i] + pts[k][i] for i in range(3)]
-            vw = max(vw, math.sqrt(sum(x * x for x in d1)) / (w * dt))
-            aw = max(aw, math.sqrt(sum(x * x for x in d2)) / (w * dt) ** 2)
+        w = 20
+        vw, aw = window_rates(pts, w, dt)
         check(vw <= speed * (1 + 1e-3) + 4e-6 / (w * dt) and aw <= accel * (1 + 1e-3) + 8e-6 / (w * dt) ** 2,
               'move --blend square: speed %.6g, acceleration %.6g over %d periods' % (vw, aw, w))
         print('move --blend square: %d periods (at rest at the corners %d), off the sides %.4g m, within %.6g m of '
@@ -1865,11 +1875,6 @@ def group_move(seed, tmp):
         uy = ((ax * ax + ay * ay) * (bx - vx) + (vx * vx + vy * vy) * (ax - bx) + (bx * bx + by * by) * (vx - ax)) / dd
         rho = math.hypot(ax - ux, ay - uy)
 
-        def seg_dist(p, a, b):
-            d = [b[i] - a[i] for i in range(3)]
-            u = max(0.0, min(1.0, sum((p[i] - a[i]) * d[i] for i in range(3)) / sum(x * x for x in d)))
-            return math.sqrt(sum((p[i] - a[i] - u * d[i]) ** 2 for i in range(3)))
-
         def arc_dist(p):
             # the arc is the part of the circle on the via point's side of the chord c1 c2 (x >= c1's)
             if p[0] < c1[0]:
@@ -1884,12 +1889,8 @@ def group_move(seed, tmp):
                 worst = max(worst, dc)
         check(worst <= R + 1e-5 and off > 1e-4, 'move --blend line-arc-line: off the path %.3g, %.6g from a corner '
               '(radius %g)' % (off, worst, R))
-        w, vw, aw = 20, 0.0, 0.0
-        for k in range(len(pts) - 2 * w):
-            d1 = [pts[k + w][i] - pts[k][i] for i in range(3)]
-            d2 = [pts[k + 2 * w][i] - 2 * pts[k + w][i] + pts[k][i] for i in range(3)]
-            vw = max(vw, math.sqrt(sum(x * x for x in d1)) / (w * dt))
-            aw = max(aw, math.sqrt(sum(x * x for x in d2)) / (w * dt) ** 2)
+        w = 20
+        vw, aw = window_rates(pts, w, dt)
         check(vw <= speed * (1 + 1e-3) + 4e-6 / (w * dt) and aw <= accel * (1 + 1e-3) + 8e-6 / (w * dt) ** 2,
               'move --blend line-arc-line: speed %.6g, acceleration %.6g over %d periods' % (vw, aw, w))
         print('move --blend line-arc-line: %d periods (at rest at the corners %d), off the path %.4g m, within %.6g m '
