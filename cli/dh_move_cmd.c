@@ -476,9 +476,6 @@ static int move_run(const move_args *a, move_plan *p)
 /* --fixed with an option the fixed-point motion API does not offer: exit 2 */
 static int move_fixed_check(const move_args *a)
 {
-    if (a->blend)
-        return cli_error("move --fixed --blend", "blended corners are not in the fixed-point motion API; run --blend "
-                         "without --fixed");
     if (a->jerk)
         return cli_error("move --fixed --jerk", "jerk-limited moves are not in the fixed-point executor; run --jerk "
                          "without --fixed");
@@ -627,6 +624,52 @@ static int run_path_q(move_plan *p, unsigned i, const move_seg *s, dh_move_q *mv
     return 0;
 }
 
+/* Line segments i0 .. i1 - 1 (fixed) from F (updated to the last end) as
+ * one sequence blended within --blend at every corner
+ * (dh_blend_seq_plan_q), tracked from the tracker's configuration: the
+ * clock holds at 0 until the tracker is ok at the first line's start,
+ * then advances by dt every period (the sequence has no feed override: a
+ * lagging tracker is reported, not slowed down), and the run ends when
+ * the tracker is ok at the last line's end. */
+static int run_blend_q(move_plan *p, const move_args *a, unsigned i0, unsigned i1, dh_frame_q *F,
+                       const dh_cart_limits_q *lim, dh_track_q *t, int32_t *q)
+{
+    static dh_path_q lines[MOVE_MAX_SEG];
+    static dh_blend_seg_q seg[MOVE_MAX_SEG];
+    static dh_qpos radius[MOVE_MAX_SEG];
+    const double R = floor((double)p->blend * (double)((int32_t)1 << DH_QPOS_FRAC) + 0.5);
+    dh_blend_seq_q sq;
+    dh_track_report_q trep;
+    dh_frame_q T, B;
+    double cap, k = 0.0;
+    uint32_t clock = 0u;
+    unsigned i;
+    int rc, started = 0;
+    dh_status st;
+    if (!(R < 2147483647.0)) return cli_error("--blend", "the radius does not fit the fixed-point length format");
+    for (i = i0; i < i1; i++) {
+        if ((rc = plan_path_q(p, i, &a->seg[i], F, &lines[i - i0], &B)) != 0) return rc;
+        radius[i - i0] = (dh_qpos)R;
+        *F = B;
+    }
+    st = dh_blend_seq_plan_q(&sq, seg, lines, i1 - i0, radius, lim);
+    if (st != DH_OK) return seg_error(i0, &a->seg[i0], "the blended fixed-point lines cannot be planned", path_why(st));
+    cap = move_cap(p, (float)(sq.T * 1e-6));
+    for (;;) {
+        if (k >= cap) return cap_reached(i0, &a->seg[i0], cap);
+        k += 1.0;
+        if ((st = dh_blend_seq_eval_q(&sq, clock, &T)) == DH_OK) st = dh_track_step_q(t, &T, q, &trep);
+        if (st != DH_OK) return seg_error(i0, &a->seg[i0], "a control period failed", dh_status_str(st));
+        if ((rc = move_line_q(p, q, (int)trep.state)) != 0) return rc;
+        if (trep.state == DH_TRACK_OK) {
+            if (clock >= sq.T) break;
+            started = 1;
+        }
+        if (started) clock = (sq.T - clock > t->dt_us) ? clock + t->dt_us : sq.T;
+    }
+    return 0;
+}
+
 /* move --fixed: every segment through the fixed executor and tracker */
 static int move_run_fixed(const move_args *a, move_plan *p)
 {
@@ -658,7 +701,6 @@ static int move_run_fixed(const move_args *a, move_plan *p)
             tracking = 0;
             continue;
         }
-        if ((rc = plan_path_q(p, i, s, &F, &path, &B)) != 0) return rc;
         /* the tracker starts (again) where the robot is at rest */
         if (!tracking) {
             st = dh_track_init_q(&t, &p->r, mp, q, us);
@@ -666,6 +708,15 @@ static int move_run_fixed(const move_args *a, move_plan *p)
             if (st != DH_OK) return cli_error("move --fixed: the tracker", dh_status_str(st));
         }
         tracking = 1;
+        if (s->kind == SEG_LINE && p->blend >= 0.0f) {
+            /* with --blend: this line and the lines right after it, blended */
+            unsigned e = i + 1u;
+            while (e < a->nseg && a->seg[e].kind == SEG_LINE) e++;
+            if ((rc = run_blend_q(p, a, i, e, &F, &lim, &t, q)) != 0) return rc;
+            i = e - 1u;
+            continue;
+        }
+        if ((rc = plan_path_q(p, i, s, &F, &path, &B)) != 0) return rc;
         if ((rc = run_path_q(p, i, s, &mv, &path, &lim, &t, q)) != 0) return rc;
         F = B;
     }

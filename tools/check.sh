@@ -69,7 +69,7 @@ examples_suite() {
   ctest --test-dir build/host --output-on-failure -R '^(readme_example|readme_example_in_sync|cpp_example)$' || return 1
   for b in m0:cortex-m0plus.cmake m4f:cortex-m4f.cmake; do
     tc=${b#*:}; b=build/${b%%:*}
-    fw="fw_fixed_fk fw_float_ik fw_fixed_kin fw_fixed_track"
+    fw="fw_fixed_fk fw_float_ik fw_fixed_kin fw_fixed_track fw_fixed_motion"
     [ "$tc" = cortex-m4f.cmake ] && fw="$fw fw_float_motion"   # float motion: FPU cores only
     cmake -S "$ROOT" -B "$b" -DCMAKE_TOOLCHAIN_FILE="$ROOT/port/$tc" -DCMAKE_BUILD_TYPE=Release >/dev/null &&
     cmake --build "$b" -j"$JOBS" --target $fw >/dev/null &&

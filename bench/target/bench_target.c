@@ -719,6 +719,10 @@ static union {
                 dh_dls_work_q w;
             } k;
             dh_move_q mvq;   /* its path built in place: mvq.path */
+            struct {               /* bt_blend_q's two lines and their scalings */
+                dh_path_q lines[2];
+                dh_blend_seg_q seg[2];
+            } b;
         } u;
 #if BT_IKC_FLOAT
         dh_ikc_model_f32 mf;
@@ -1434,6 +1438,64 @@ static BT_NOINLINE void bt_period_q(const bt_move *mv, dh_robot *r)
            (unsigned long long)atr.max, (unsigned long)st);
 }
 
+/* bt_period_q's move as two lines blended at its middle (FK(qa) to
+ * FK(qa + dq / 2) to FK(qa + dq), radius 20 mm, the same limits): a
+ * period is dh_blend_seq_eval_q at its time and dh_track_step_q on that
+ * frame, timed whole ("blend period q"); the tracker starts on the first
+ * frame and the clock advances by 1 ms every period */
+static BT_NOINLINE void bt_blend_q(const bt_move *mv, dh_robot *r)
+{
+    dh_track_q *const t = &bt_mem.t.tq;
+    const dh_cart_limits_q lim = { 250 << 16, 2000 << 16, 90 << 16, 360 << 16 };
+    const dh_qpos radius[1] = { 20 << 16 };
+    dh_track_report_q rep;
+    dh_frame_q F, T;
+    dh_blend_seq_q sq;
+    bt_acc aper = { 0u, 0u }, nul = { 0u, 0u };
+    uint32_t states[3] = { 0u, 0u, 0u };
+    uint32_t st, n = 0u, j, k, clock = 0u;
+    uint64_t t0, t1;
+    int32_t q[6];
+    st = bt_move_robot(mv, r, 1000.0f);
+    st |= (uint32_t)dh_ikc_analyse_q(r, &bt_mem.t.mq);
+    /* FK(qa + dq) into T, FK(qa + dq / 2) into F: the second line; then
+     * FK(qa) into T: the first (q ends at qa, the tracker's start) */
+    for (k = 3u; k > 0u; k--) {
+        for (j = 0; j < 6u; j++) {
+            q[j] = bt_to_q16(mv->qa[j] + 0.5f * (float)(k - 1u) * mv->dq[j]);
+        }
+        st |= (uint32_t)dh_fk_q(r, q, (k == 2u) ? &F : &T);
+        if (k == 2u) {
+            st |= (uint32_t)dh_path_line_q(&bt_mem.t.u.b.lines[1], &F, &T);
+        }
+    }
+    st |= (uint32_t)dh_path_line_q(&bt_mem.t.u.b.lines[0], &T, &F);
+    st |= (uint32_t)dh_blend_seq_plan_q(&sq, bt_mem.t.u.b.seg, bt_mem.t.u.b.lines, 2u, radius, &lim);
+    st |= (uint32_t)dh_track_init_q(t, r, &bt_mem.t.mq, q, 1000u);
+    while (st == 0u && n < 16u * BT_NTRK && (clock < sq.T || n == 0u)) {
+        clock = (sq.T - clock > 1000u) ? clock + 1000u : sq.T;
+        t0 = bt_now();
+        st |= (uint32_t)dh_blend_seq_eval_q(&sq, clock, &T);
+        st |= (uint32_t)dh_track_step_q(t, &T, q, &rep);
+        t1 = bt_now();
+        bt_acc_add(&aper, t0, t1);
+        states[rep.state]++;
+        n++;
+    }
+    if (clock < sq.T) {
+        st |= 0x100u;   /* the sequence did not finish within 16 x BT_NTRK periods */
+    }
+    for (j = 0; j < n; j++) {
+        t0 = bt_now();
+        t1 = bt_now();
+        bt_acc_add(&nul, t0, t1);
+    }
+    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|%lu|%lu|%lu|%lu\n", "blend period q", mv->robot, "mm",
+           (unsigned long)n, (unsigned long long)aper.sum, (unsigned long long)nul.sum,
+           (unsigned long long)aper.max, (unsigned long)states[0], (unsigned long)states[1],
+           (unsigned long)states[2], (unsigned long)st);
+}
+
 /* Runs after the sanity checks: the micro:bit's RAM has no room for more
  * robots, so each move's robot is built in the storage of bt_puma_m (float,
  * metres) and bt_puma_mm (fixed, mm), which nothing uses afterwards. A
@@ -1456,6 +1518,7 @@ static void bt_track(void)
 #endif
         bt_track_q(&bt_moves[m], &bt_puma_mm, &null);
         bt_period_q(&bt_moves[m], &bt_puma_mm);
+        bt_blend_q(&bt_moves[m], &bt_puma_mm);
     }
 }
 

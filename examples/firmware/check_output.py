@@ -3,7 +3,8 @@
 """Runs a firmware example (under QEMU) and checks its output against an
 independent double-precision computation with numpy.
 
-  check_output.py --robot ROBOT.dh --kind fixed|fixedkin|fixedtrack|float|floatmotion [--qpos-frac N] -- CMD...
+  check_output.py --robot ROBOT.dh --kind fixed|fixedkin|fixedtrack|fixedmotion|float|floatmotion [--qpos-frac N]
+                  -- CMD...
 
 The reference never uses the library: the robot is read from its .dh file
 (the published DH table), the FK is the product of standard DH link
@@ -334,6 +335,23 @@ MOTION_PATH_TOL = 4.0 * 2.0 ** -23
 MOTION_W = 4
 
 
+def square_devs(p, corners, ovl, end):
+    """the largest distances of the tool points p[1..end] from the square's
+    outline outside the overlaps ovl (corner, first, last period) and from
+    the corner inside them"""
+    inside = {}
+    for i, k0, k1 in ovl:
+        for k in range(k0, k1 + 1):
+            inside[k] = i
+    line_dev = blend_dev = 0.0
+    for k in range(1, end + 1):
+        if k in inside:
+            blend_dev = max(blend_dev, float(np.linalg.norm(p[k] - corners[inside[k]])))
+        else:
+            line_dev = max(line_dev, min(line_dist(corners[i], corners[i + 1], p[k]) for i in range(4)))
+    return line_dev, blend_dev
+
+
 def check_float_motion(rows, lines, c):
     """fw_float_motion: every period's configuration, FK in double."""
     one, qs, corners, ovl = {}, [], {}, []
@@ -370,16 +388,8 @@ def check_float_motion(rows, lines, c):
     # within FLOAT_FK_TOL of this exact FK, of a path point within MOTION_PATH_TOL
     tol = pos_tol + FLOAT_FK_TOL + MOTION_PATH_TOL
     end = int(f['square_end'][0])
-    inside = {}
-    for i, k0, k1 in ovl:
-        for k in range(k0, k1 + 1):
-            inside[k] = i
-    line_dev = blend_dev = circle_dev = 0.0
-    for k in range(1, end + 1):
-        if k in inside:
-            blend_dev = max(blend_dev, float(np.linalg.norm(p[k] - corners[inside[k]])))
-        else:
-            line_dev = max(line_dev, min(line_dist(corners[i], corners[i + 1], p[k]) for i in range(4)))
+    line_dev, blend_dev = square_devs(p, corners, ovl, end)
+    circle_dev = 0.0
     ctr, rad = np.array(f['circle'][:3]), f['circle'][3]
     c.near('the circle: centre p0 + (R, 0, 0) (m)', ctr, p0 + np.array([rad, 0.0, 0.0]), 1e-7)
     for k in range(end + 1, len(qs)):
@@ -411,10 +421,103 @@ def check_float_motion(rows, lines, c):
     c.near('printed peak_accel (deg/s^2)', [f['peak_accel'][0]], [peak], 1e-4 * amax)
 
 
+# fw_fixed_motion: the fixed paths' own error (dh_blend_seq_eval_q: 1 LSB off
+# its line, 2 LSB + 32 2^-30 (L_k + L_k+1) beyond the plan's dev in an
+# overlap; dh_path_eval_q on the arc: 4 LSB + 2^-26 R), at most this in mm
+# for these moves (lines of 100 mm, a circle of 50 mm) at Q16.16 and finer
+FIXED_MOTION_PATH_TOL_MM = 1e-3
+# the acceleration window (periods) the firmware prints
+FIXED_MOTION_W = 4
+
+
+def check_fixed_motion(rows, lines, frac, c):
+    """fw_fixed_motion: every period's configuration, FK in double."""
+    one_pos, one_deg = float(1 << frac), 65536.0
+    one, qs, corners, ovl, devs = {}, [], {}, [], {}
+    for key, vals in lines:
+        v = [int(x) for x in vals]
+        if key == 'q':
+            qs.append((v[0], v[1], [x / one_deg for x in v[2:]], v[2:]))
+        elif key == 'corner':
+            corners[v[0]] = np.array(v[1:], float) / one_pos
+        elif key == 'overlap':
+            ovl.append((v[0], v[1], v[2]))
+        elif key == 'dev_qpos':
+            devs[v[0]] = v[1] / one_pos
+        else:
+            one[key] = v
+    need = ['dt_us', 'vmax_q16', 'amax_q16', 'bound_q16', 'pos_tol_qpos', 'lim_qpos', 'radius_qpos', 'q0_q16',
+            'p0_qpos', 'circle', 'square_end', 'line_dev_qpos', 'blend_dev_qpos', 'circle_dev_qpos', 'peak_step_q16',
+            'peak_acc_q16', 'periods']
+    missing = [k for k in need if k not in one]
+    c.true('every summary line present (missing: %s)' % (missing or 'none'), not missing)
+    c.true('corners 0..4, three overlaps and their dev printed',
+           sorted(corners) == [0, 1, 2, 3, 4] and len(ovl) == 3 and sorted(devs) == [1, 2, 3])
+    if missing or len(corners) != 5 or len(ovl) != 3 or sorted(devs) != [1, 2, 3]:
+        return
+    dt = one['dt_us'][0] * 1e-6
+    vmax, amax = one['vmax_q16'][0] / one_deg, one['amax_q16'][0] / one_deg
+    radius, pos_tol = one['radius_qpos'][0] / one_pos, one['pos_tol_qpos'][0] / one_pos
+    c.true('periods numbered 0, 1, 2, ... (%d printed)' % len(qs), [k for k, _, _, _ in qs] == list(range(len(qs))))
+    c.true('every period ok (periods: %s)' % one['periods'],
+           all(s_ == 0 for _, s_, _, _ in qs) and one['periods'] == [len(qs), 0, 0])
+    qi = np.array([r for _, _, _, r in qs], dtype=np.int64)
+    q = np.array([r for _, _, r, _ in qs])
+    c.true('period 0 is q0', list(qi[0]) == one['q0_q16'])
+    p = np.array([fk(rows, x)[:3, 3] for x in q])
+    p0 = np.array(one['p0_qpos'], float) / one_pos
+    c.near('p0 is the FK of q0 (mm)', p0, p[0], FIXED_TOL_MM)
+    side = float(corners[1][0] - corners[0][0])
+    want = [p0 + np.array(o) for o in ((0, 0, 0), (side, 0, 0), (side, side, 0), (0, side, 0), (0, 0, 0))]
+    c.near('the corners: a square of side %.9g mm from p0' % side, [corners[i] for i in range(5)], want, 0.0)
+    c.true('each corner\'s planned deviation within the radius (%s mm <= %g mm)' %
+           ([devs[i] for i in (1, 2, 3)], radius), all(devs[i] <= radius for i in (1, 2, 3)))
+    # tracked within the tracker's tolerance (against its fixed FK, within
+    # FIXED_TOL_MM of this exact FK) of a path point within the path's error
+    tol = pos_tol + FIXED_TOL_MM + FIXED_MOTION_PATH_TOL_MM
+    end = one['square_end'][0]
+    line_dev, blend_dev = square_devs(p, corners, ovl, end)
+    circle_dev = 0.0
+    ctr, rad = np.array(one['circle'][:3], float) / one_pos, one['circle'][3] / one_pos
+    c.near('the circle: centre p0 + (R, 0, 0) (mm)', ctr, p0 + np.array([rad, 0.0, 0.0]), 0.0)
+    for k in range(end + 1, len(qs)):
+        u = p[k] - ctr
+        circle_dev = max(circle_dev, math.hypot(math.hypot(u[0], u[1]) - rad, u[2]))
+    c.near('square outside the overlaps: on its outline (mm)', [line_dev], [0.0], tol)
+    c.true('square inside the overlaps: within the blend radius of the corner (%.4g mm <= %.4g mm + %.3g mm)'
+           % (blend_dev, radius, tol), blend_dev <= radius + tol)
+    c.near('circle: on it (mm)', [circle_dev], [0.0], tol)
+    c.near('the end: back at p0 (mm)', p[-1], p0, tol)
+    # the firmware's own figures (fixed FK, integer square roots rounded up)
+    c.near('printed line_dev, blend_dev, circle_dev against the double FK (mm)',
+           [one['line_dev_qpos'][0] / one_pos, one['blend_dev_qpos'][0] / one_pos,
+            one['circle_dev_qpos'][0] / one_pos], [line_dev, blend_dev, circle_dev], 2.0 * FIXED_TOL_MM)
+    # rates: every step within the tracker's bound floor(vmax dt); the
+    # acceleration over windows of W periods within amax (the fixed
+    # tracker's acceleration bound per period, floor(floor(amax dt) dt),
+    # holds each period; a window's second difference is the sum of W
+    # periods' changes of step, so also within amax (W dt)^2)
+    bound = one['bound_q16']
+    steps = np.abs(np.diff(qi, axis=0))
+    peak = int(steps.max())
+    c.true('peak step %d LSB (%.6g deg/s) within the bound %d LSB = floor(vmax dt) (vmax %.6g deg/s)'
+           % (peak, peak / one_deg / dt, bound[0], vmax), all(int(steps[:, j].max()) <= bound[j] for j in range(6))
+           and bound[0] <= vmax * one_deg * dt)
+    c.true('printed peak_step %d LSB = the largest step' % one['peak_step_q16'][0], one['peak_step_q16'][0] == peak)
+    w = FIXED_MOTION_W
+    acc = np.abs(qi[2 * w:] - 2 * qi[w:-w] + qi[:-2 * w])
+    pa = int(acc.max())
+    c.true('peak joint acceleration %.6g deg/s^2 (windows of %d periods) within amax %.6g deg/s^2'
+           % (pa / one_deg / (w * dt) ** 2, w, amax), pa / one_deg <= amax * (w * dt) ** 2)
+    c.true('printed peak_acc %d LSB = the largest windowed second difference' % one['peak_acc_q16'][0],
+           one['peak_acc_q16'][0] == pa)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--robot', required=True)
-    ap.add_argument('--kind', choices=['fixed', 'fixedkin', 'fixedtrack', 'float', 'floatmotion'], required=True)
+    ap.add_argument('--kind', choices=['fixed', 'fixedkin', 'fixedtrack', 'fixedmotion', 'float', 'floatmotion'],
+                    required=True)
     ap.add_argument('--qpos-frac', type=int, default=16)
     ap.add_argument('cmd', nargs=argparse.REMAINDER)
     a = ap.parse_args()
@@ -437,6 +540,8 @@ def main():
         check_fixed_track(rows, lines, a.qpos_frac, c)
     elif a.kind == 'floatmotion':
         check_float_motion(rows, lines, c)
+    elif a.kind == 'fixedmotion':
+        check_fixed_motion(rows, lines, a.qpos_frac, c)
     else:
         check_float(rows, lines, c)
     print('%d of %d checks passed' % (c.checks - c.failures, c.checks))

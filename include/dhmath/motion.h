@@ -28,6 +28,7 @@
  *                    dh_path_move_q, dh_path_move_eval_q
  *   dh_move_q.c      dh_move_joint_q, dh_move_joint_step_q, dh_move_path_q,
  *                    dh_move_target_q, dh_move_advance_q
+ *   dh_blend_q.c     dh_blend_seq_plan_q, dh_blend_seq_eval_q
  */
 /**
  * @file motion.h
@@ -1521,6 +1522,98 @@ dh_status dh_move_target_q(const dh_move_q *mv, dh_frame_q *T);
  *         and rep are untouched.
  */
 dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh_move_report_q *rep);
+
+/* ======================================================================
+ * Fixed-point blended sequence of Cartesian line moves (dh_blend_q.c)
+ * ==================================================================== */
+
+/**
+ * @brief The time scaling of s from 0 to 1 of one line of a fixed-point
+ *        blended sequence and its place on the sequence's clock (the twin
+ *        of dh_blend_seg_f32; read-only for the user, who reads t0, T,
+ *        dur[0] and dur[4] (the overlaps) and dev). Five phases of constant
+ *        s'': the start tail (from rest, at the reduced acceleration of
+ *        the overlap with the line before; duration 0: at rest there), the
+ *        acceleration to the cruise, the cruise, the deceleration, the end
+ *        tail (to rest, in the overlap with the line after). Phase k holds
+ *        s = s[k] + P[k] x + Q[k] x^2 at x = (time into the phase) / dur[k].
+ */
+typedef struct {
+    uint32_t t0;     /**< start of the line on the sequence's clock (us) */
+    uint32_t T;      /**< duration of the line: the sum of dur (us; 0: no motion) */
+    uint32_t dur[5]; /**< phase durations (us): start tail, acceleration, cruise, deceleration, end tail */
+    int32_t s[5];    /**< s at each phase's start (Q2.30); the last phase ends at 0x40000000 exactly */
+    int32_t P[5];    /**< s' dur at each phase's start (Q2.30) */
+    int32_t Q[5];    /**< s'' dur^2 / 2 of each phase (Q2.30, signed) */
+    dh_qpos dev;     /**< bound on the distance of the tool point from the END corner during that overlap */
+} dh_blend_seg_q;
+
+/**
+ * @brief A fixed-point sequence of n line moves blended at their corners
+ *        over the caller's lines and array of n scalings (the twin of
+ *        dh_blend_seq_f32; written by dh_blend_seq_plan_q, read by
+ *        dh_blend_seq_eval_q; read-only for the user, who reads n and T).
+ *        Neither array is copied: both must stay unchanged while the
+ *        sequence is used.
+ */
+typedef struct {
+    const dh_path_q *p;    /**< the caller's lines */
+    dh_blend_seg_q *seg;   /**< the caller's scalings, one per line */
+    uint32_t n;            /**< number of lines */
+    uint32_t T;            /**< duration of the sequence (us) */
+} dh_blend_seq_q;
+
+/**
+ * @brief Fixed twin of dh_blend_seq_plan_f32: sq = the n lines p[0..n-1]
+ *        run one after the other, each corner k (between p[k] and p[k+1])
+ *        blended within radius[k] by superposition (the last part of p[k]
+ *        at a reduced deceleration overlapping the first part of p[k+1] at
+ *        a reduced acceleration), each tail within half its line. Integer
+ *        only. Method, proofs and rounding: docs/design.md ("Blended
+ *        corners, fixed point").
+ * @param sq output sequence.
+ * @param seg the caller's array of n scalings (written; owned by sq).
+ * @param p the caller's n lines (dh_path_line_q; arcs are refused), each
+ *        p[k+1].A equal to p[k].B (every entry; not copied: owned by sq);
+ *        lengths 0, pure rotations and straight continuations are fine.
+ * @param n number of lines, >= 1.
+ * @param radius n - 1 blend radii (dh_qpos), >= 0 (NULL allowed when n == 1).
+ * @param lim limits, each > 0.
+ * A corner runs at rest (dur[4] of p[k], dur[0] of p[k+1] 0) when its
+ * radius is 0, a line next to it has no motion, or its blend alone would
+ * not shorten the pair; and every corner does when the sequence so planned
+ * would not be shorter than its lines' rest-to-rest scalings back to back.
+ * The planned motion (the phases as held) keeps the tool point's speed,
+ * TOTAL acceleration, angular speed and angular acceleration within lim
+ * (the plan's margin of 2^-10 covers the planning's integer rounding);
+ * seg[k].dev <= radius[k].
+ * @return DH_OK; DH_ERR_ARG for n == 0, a limit <= 0, a radius < 0, a p[k]
+ *         that is not a line (an arc, or no path) or a p[k+1].A that is
+ *         not p[k].B; DH_ERR_OVERFLOW when a rate of s does not fit the
+ *         planning's range or a duration reaches 2^31 us. sq untouched
+ *         on error; seg's contents are then unspecified.
+ */
+dh_status dh_blend_seq_plan_q(dh_blend_seq_q *sq, dh_blend_seg_q *seg, const dh_path_q *p, uint32_t n,
+                              const dh_qpos *radius, const dh_cart_limits_q *lim);
+
+/**
+ * @brief Fixed twin of dh_blend_seq_eval_f32: T = the frame of the blended
+ *        sequence sq at time t (us, on the sequence's clock): line k's
+ *        frame (dh_path_eval_q at its s) where it runs alone, in an overlap
+ *        the superposition of lines k and k+1: position p_k(s_k) +
+ *        (p_k+1(s_k+1) - corner), rotation R_k+1(s_k+1) R_corner^T R_k(s_k).
+ * @param sq sequence from dh_blend_seq_plan_q.
+ * @param t time (us), any uint32: t == 0 gives p[0].A and t >= sq->T gives
+ *        p[n-1].B exactly.
+ * @param T output frame (must not alias the lines).
+ * Outside the overlaps the position is on line k within 1 LSB (as
+ * dh_path_eval_q's); inside, within seg[k].dev of corner k plus 2 LSB +
+ * 32 2^-30 (L_k + L_k+1) (the rounding of the held scalings). Rotation
+ * entries as dh_path_eval_q's (1.5e-6) plus a few 2^-30.
+ * @return DH_OK; DH_ERR_ARG when sq holds no sequence (n 0, a line that
+ *         holds no path, or a scaling out of range). T untouched on error.
+ */
+dh_status dh_blend_seq_eval_q(const dh_blend_seq_q *sq, uint32_t t, dh_frame_q *T);
 
 #ifdef __cplusplus
 }

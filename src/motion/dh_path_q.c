@@ -157,6 +157,12 @@ static int pathq_ok(const dh_path_q *p)
     return na > lo && na < hi && nb > lo && nb < hi;
 }
 
+/* dh_motion_path_ok_q_ (motion_impl.h) */
+int dh_motion_path_ok_q_(const dh_path_q *p)
+{
+    return pathq_ok(p);
+}
+
 /* Component c (0: w, 1..3: x, y, z) of r = qa* qb, exact in 64 bits: the
  * axis and half angle of the path's rotation (pathq_axis, pathq_half) */
 static int64_t pathq_rv(const dh_path_q *p, unsigned c)

@@ -121,6 +121,13 @@ void dh_motion_slerp_q_(const dh_quat_q *qa, const dh_quat_q *qb, dh_q30 s, dh_q
  * s > 2^29: between pa and pb, exact at both ends, cannot overflow. */
 int32_t dh_motion_lerp_q_(int32_t pa, int32_t pb, dh_q30 s);
 
+/* ---- fixed point (dh_path_q.c) ---- */
+
+/* 1 when p holds a path (a kind, unit quaternions within a factor 2), 0
+ * when not (e.g. all zero): the test of dh_path_eval_q's DH_ERR_ARG; the
+ * blended sequences (dh_blend_q.c) check their lines with it */
+int dh_motion_path_ok_q_(const dh_path_q *p);
+
 /* ---- fixed point (dh_profile_q.c) ---- */
 
 /* In place: p->d, p->v = vmax, p->a = amax, p->j = jmax (0: the

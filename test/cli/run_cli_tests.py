@@ -1942,8 +1942,6 @@ def group_move(seed, tmp):
          'move --blend: blended corners are not jerk-limited'),
         ([path] + q0 + ['--dt', '0.01', '--blend', '-0.01'] + cart + ln + ln, '--blend: -0.01 must be a finite radius'),
         ([path] + q0 + ['--dt', '0.01', '--blend', 'r'] + cart + ln + ln, "bad number 'r' for --blend"),
-        ([path] + q0 + ['--dt', '0.01', '--fixed', '--blend', '0.01'] + cart + ln + ln,
-         'move --fixed --blend: blended corners are not in the fixed-point motion API'),
         ([path] + q0 + ['--dt', '0.01', '--fixed', '--jerk', '10'] + jt, 'move --fixed --jerk: jerk-limited moves'),
         ([path] + q0 + ['--dt', '0.01', '--dt', '0.02'] + jt, "option '--dt' given more than once"),
         ([path] + q0 + ['--dt', '0.01', '--frames'] + jt, "unknown or inapplicable option '--frames'"),
@@ -1966,8 +1964,9 @@ def group_move_fixed(seed, tmp):
     every step within the fixed bound floor(vmax 2^16 dt_us / 10^6) LSB and
     every change of step within the fixed amax bound (finite differences of
     the printed values, which %.9g prints exactly); the tool on the line
-    within 5e-3 mm; the joint move's end exact; --fixed with --blend or
-    --jerk and a --dt that is no whole number of microseconds: exit 2."""
+    within 5e-3 mm; the joint move's end exact; --fixed with --jerk and a
+    --dt that is no whole number of microseconds: exit 2; a blended square
+    (move_fixed_blend)."""
     rng = random.Random(seed)
     ur5 = os.path.join(ROOT, 'examples', 'robots', 'ur5_mm.dh')
     rob = read_robot(open(ur5).read())
@@ -2031,14 +2030,73 @@ def group_move_fixed(seed, tmp):
     q0 = ['--q0', ','.join(map(str, qa))]
     cart = ['--speed', '200', '--accel', '1000', '--rspeed', '60', '--raccel', '240']
     ln = ['--line', to_expr(A)]
-    for extra, want in ((['--blend', '1'] + ln + ln, 'move --fixed --blend: blended corners are not in the fixed'),
-                        (['--jerk', '100'] + ln, 'move --fixed --jerk: jerk-limited moves are not in the fixed'),
+    for extra, want in ((['--jerk', '100'] + ln, 'move --fixed --jerk: jerk-limited moves are not in the fixed'),
                         (['--speed', '40000'] + cart[2:] + ln, '--speed: out of the fixed-point range')):
         a = [path] + q0 + ['--dt', '0.004', '--fixed'] + (cart if '--speed' not in extra else []) + extra
         rc, out, err = run(['move'] + a)
         check(rc == 2 and out == '' and want in err, 'move %r: rc %d err %r (want %r)' % (a, rc, err, want))
     rc, out, err = run(['move', path] + q0 + ['--dt', '0.0000015', '--fixed', '--joint', '0,0,0,0,0,0'])
     check(rc == 2 and out == '' and 'whole number of microseconds' in err, 'move --fixed --dt: rc %d %r' % (rc, err))
+    move_fixed_blend(rob, n, path, qa, A, p0)
+
+
+def move_fixed_blend(rob, n, path, qa, A, p0):
+    """move --fixed --blend: a blended square (100 mm sides, radius 20 mm)
+    through the fixed blended sequence and tracker: shorter than the
+    square at rest at its corners (--fixed without --blend), every period
+    ok; the tool (double FK of the printed joints, within the fixed
+    tracker's 5e-3 mm of its target) on the square's sides within 5e-3 mm
+    or within R + 5e-3 mm of a corner, and off the sides somewhere; its
+    speed and acceleration by finite differences over 25 periods within
+    --speed and --accel times 1 + 1e-3 plus the tracker's noise (2 and 4
+    times 5e-3 mm over the window and its square); every joint step within
+    the robot's rates (check_joint_limits)."""
+    side, R, dt, w = 100.0, 20.0, 0.002, 25
+    speed, accel = 200.0, 1000.0
+    rot = to_expr(A).split(' ', 1)[1]
+    sq = [[p0[0] + side, p0[1], p0[2]], [p0[0] + side, p0[1] + side, p0[2]], [p0[0], p0[1] + side, p0[2]], p0]
+    args = ['move', path, '--q0', ','.join(map(str, qa)), '--dt', str(dt), '--speed', str(speed), '--accel',
+            str(accel), '--rspeed', '60', '--raccel', '240', '--fixed']
+    for c in sq:
+        args += ['--line', 'trans(%.6f,%.6f,%.6f) %s' % (c[0], c[1], c[2], rot)]
+    rc0, out0, err0 = run(args)
+    rc, out, err = run(args + ['--blend', str(R)])
+    head0, rows0 = read_csv(out0, n)
+    head, rows = read_csv(out, n)
+    check(rc0 == 0 and rc == 0 and err == '' and rows and None not in rows and all(r[2] == 'ok' for r in rows),
+          'move --fixed --blend square: rc %d %d err %r' % (rc0, rc, err))
+    if not rows or None in rows or not rows0:
+        return
+    check(len(rows) < len(rows0), 'move --fixed --blend square: %d periods, at rest %d' % (len(rows), len(rows0)))
+    check_joint_limits('move --fixed --blend square', qa, rows, [180.0] * n, [720.0] * n, dt,
+                       [4 * f32_ulp(360.0)] * n)
+    pts = [p0] + [[F[i][3] for i in range(3)] for F in (ref_fk(rob, r[1]) for r in rows)]
+    corners = [p0] + sq
+
+    def side_dist(p, a, b):
+        d = [b[i] - a[i] for i in range(3)]
+        u = max(0.0, min(1.0, sum((p[i] - a[i]) * d[i] for i in range(3)) / sum(x * x for x in d)))
+        return math.sqrt(sum((p[i] - a[i] - u * d[i]) ** 2 for i in range(3)))
+    worst, off = 0.0, 0.0
+    for p in pts:
+        ds = min(side_dist(p, corners[k], corners[k + 1]) for k in range(4))
+        dc = min(math.sqrt(sum((p[i] - c[i]) ** 2 for i in range(3))) for c in sq[:3])
+        off = max(off, ds)
+        if ds > 5e-3:
+            worst = max(worst, dc)
+    check(worst <= R + 5e-3 and off > 1.0, 'move --fixed --blend square: off the sides %.3g, %.6g from a corner '
+          '(radius %g)' % (off, worst, R))
+    vw, aw, noise = 0.0, 0.0, 5e-3
+    for k in range(len(pts) - 2 * w):
+        d1 = [pts[k + w][i] - pts[k][i] for i in range(3)]
+        d2 = [pts[k + 2 * w][i] - 2 * pts[k + w][i] + pts[k][i] for i in range(3)]
+        vw = max(vw, math.sqrt(sum(x * x for x in d1)) / (w * dt))
+        aw = max(aw, math.sqrt(sum(x * x for x in d2)) / (w * dt) ** 2)
+    check(vw <= speed * (1 + 1e-3) + 2 * noise / (w * dt) and aw <= accel * (1 + 1e-3) + 4 * noise / (w * dt) ** 2,
+          'move --fixed --blend square: speed %.6g, acceleration %.6g over %d periods' % (vw, aw, w))
+    print('move --fixed --blend square: %d periods (at rest at the corners %d), off the sides %.4g mm, within '
+          '%.6g mm of a corner there (radius %g), speed %.6g, acceleration %.6g over %d periods' %
+          (len(rows), len(rows0), off, worst, R, vw, aw, w))
 
 
 def main():

@@ -278,7 +278,9 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_move_joint_step_q, g_fpath, 50000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_move_path_q, g_fpath, 50000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_move_target_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
-    X(dh_move_advance_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS)
+    X(dh_move_advance_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_blend_seq_plan_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_blend_seq_eval_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS)
 
 /* enum of the table rows */
 #define DIFF_ENUM(name, gen, count, len, cmp) E_##name,
