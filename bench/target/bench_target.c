@@ -687,9 +687,11 @@ static void bt_measure(const bt_op *op)
 #endif
 
 /* The numerical IK's work array and the closed-form IK's models, targets
- * and solutions share memory (used one after the other): the Cortex-M0's
- * 16 KiB hold both this way. */
+ * and solutions share memory (used one after the other), and so does
+ * main's list of cglm operations (measured before bt_ik): the Cortex-M0's
+ * 16 KiB hold them all this way. */
 static union {
+    bt_op cglm_ops[12];
     float ik_work[DH_IK_WORK_FLOATS(6u)];
     struct {
         dh_ikc_model_q mq;
@@ -1584,7 +1586,7 @@ static uint32_t bt_stack_used(void)
 
 int main(void)
 {
-    static bt_op ops[12];
+    bt_op *const ops = bt_mem.cglm_ops;
     uint32_t n, k, st;
     int fail;
     bt_stack_paint();
@@ -1610,7 +1612,7 @@ int main(void)
     for (k = 0; k < sizeof bt_ops_kinq / sizeof bt_ops_kinq[0]; k++) {
         bt_measure(&bt_ops_kinq[k]);
     }
-    n = bt_cglm_ops(ops, (uint32_t)(sizeof ops / sizeof ops[0]));
+    n = bt_cglm_ops(ops, (uint32_t)(sizeof bt_mem.cglm_ops / sizeof bt_mem.cglm_ops[0]));
     for (k = 0; k < n; k++) {
         bt_measure(&ops[k]);
     }

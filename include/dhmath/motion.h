@@ -1580,18 +1580,18 @@ typedef struct {
  * @param radius n - 1 blend radii (dh_qpos), >= 0 (NULL allowed when n == 1).
  * @param lim limits, each > 0.
  * A corner runs at rest (dur[4] of p[k], dur[0] of p[k+1] 0) when its
- * radius is 0, a line next to it has no motion, or its blend alone would
- * not shorten the pair; and every corner does when the sequence so planned
- * would not be shorter than its lines' rest-to-rest scalings back to back.
+ * radius is 0, a line next to it has no motion, it is within radius[k] + 4
+ * LSB of the int32 range, or its blend would not shorten the pair; every
+ * corner does when blending would not shorten the whole sequence.
  * The planned motion (the phases as held) keeps the tool point's speed,
  * TOTAL acceleration, angular speed and angular acceleration within lim
  * (the plan's margin of 2^-10 covers the planning's integer rounding);
  * seg[k].dev <= radius[k].
  * @return DH_OK; DH_ERR_ARG for n == 0, a limit <= 0, a radius < 0, a p[k]
  *         that is not a line (an arc, or no path) or a p[k+1].A that is
- *         not p[k].B; DH_ERR_OVERFLOW when a rate of s does not fit the
- *         planning's range or a duration reaches 2^31 us. sq untouched
- *         on error; seg's contents are then unspecified.
+ *         not p[k].B; DH_ERR_OVERFLOW when a phase of a line reaches
+ *         2^28 us (268 s) or the lines at rest 2^31 us. sq untouched on
+ *         error; seg's contents are then unspecified.
  */
 dh_status dh_blend_seq_plan_q(dh_blend_seq_q *sq, dh_blend_seg_q *seg, const dh_path_q *p, uint32_t n,
                               const dh_qpos *radius, const dh_cart_limits_q *lim);
@@ -1611,7 +1611,10 @@ dh_status dh_blend_seq_plan_q(dh_blend_seq_q *sq, dh_blend_seg_q *seg, const dh_
  * 32 2^-30 (L_k + L_k+1) (the rounding of the held scalings). Rotation
  * entries as dh_path_eval_q's (1.5e-6) plus a few 2^-30.
  * @return DH_OK; DH_ERR_ARG when sq holds no sequence (n 0, a line that
- *         holds no path, or a scaling out of range). T untouched on error.
+ *         holds no path, or a scaling out of range; T untouched);
+ *         DH_ERR_OVERFLOW when an overlap's position leaves the int32
+ *         range, T then holding it saturated (only for lines or scalings
+ *         changed after planning: the plan keeps every blend inside).
  */
 dh_status dh_blend_seq_eval_q(const dh_blend_seq_q *sq, uint32_t t, dh_frame_q *T);
 

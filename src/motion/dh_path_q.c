@@ -514,19 +514,31 @@ static DH_NOINLINE void pathq_arc_point(const dh_path_q *p, dh_q30 s, dh_qpos po
 static DH_NOINLINE void pathq_rot(const dh_path_q *p, dh_q30 s, dh_frame_q *T)
 {
     const int back = s > (DH_Q30_ONE / 2);
-    const dh_quat_q *e = back ? &p->qb : &p->qa;
     const int32_t f = back ? DH_Q30_ONE - s : s;
-    const int64_t one = (int64_t)1 << 60;
-    int32_t sn, cs, r0, r1, r2, w, x, y, z;
+    int32_t sn, cs;
+    dh_quat_q q;
     dh_sincos_q((dh_q16)dh_q_rshr(dh_q_mul64(f, p->h), 30u), &sn, &cs);
-    if (back) sn = -sn;
-    r0 = (int32_t)dh_q_rshr(dh_q_mul64(sn, p->k[0]), 30u);
-    r1 = (int32_t)dh_q_rshr(dh_q_mul64(sn, p->k[1]), 30u);
-    r2 = (int32_t)dh_q_rshr(dh_q_mul64(sn, p->k[2]), 30u);
-    w = (int32_t)dh_q_rshr(dh_q_mul64(e->w, cs) - dh_q_mul64(e->x, r0) - dh_q_mul64(e->y, r1) - dh_q_mul64(e->z, r2), 30u);
-    x = (int32_t)dh_q_rshr(dh_q_mul64(e->w, r0) + dh_q_mul64(e->x, cs) + dh_q_mul64(e->y, r2) - dh_q_mul64(e->z, r1), 30u);
-    y = (int32_t)dh_q_rshr(dh_q_mul64(e->w, r1) - dh_q_mul64(e->x, r2) + dh_q_mul64(e->y, cs) + dh_q_mul64(e->z, r0), 30u);
-    z = (int32_t)dh_q_rshr(dh_q_mul64(e->w, r2) + dh_q_mul64(e->x, r1) - dh_q_mul64(e->y, r0) + dh_q_mul64(e->z, cs), 30u);
+    dh_motion_turn_q_(back ? &p->qb : &p->qa, cs, back ? -sn : sn, p->k, &q);
+    dh_motion_quat_rot_q_(&q, T);
+}
+
+/* dh_motion_turn_q_ (motion_impl.h) */
+DH_NOINLINE void dh_motion_turn_q_(const dh_quat_q *e, int32_t cs, int32_t sn, const int32_t k[3], dh_quat_q *out)
+{
+    const int32_t r0 = (int32_t)dh_q_rshr(dh_q_mul64(sn, k[0]), 30u);
+    const int32_t r1 = (int32_t)dh_q_rshr(dh_q_mul64(sn, k[1]), 30u);
+    const int32_t r2 = (int32_t)dh_q_rshr(dh_q_mul64(sn, k[2]), 30u);
+    out->w = (int32_t)dh_q_rshr(dh_q_mul64(e->w, cs) - dh_q_mul64(e->x, r0) - dh_q_mul64(e->y, r1) - dh_q_mul64(e->z, r2), 30u);
+    out->x = (int32_t)dh_q_rshr(dh_q_mul64(e->w, r0) + dh_q_mul64(e->x, cs) + dh_q_mul64(e->y, r2) - dh_q_mul64(e->z, r1), 30u);
+    out->y = (int32_t)dh_q_rshr(dh_q_mul64(e->w, r1) - dh_q_mul64(e->x, r2) + dh_q_mul64(e->y, cs) + dh_q_mul64(e->z, r0), 30u);
+    out->z = (int32_t)dh_q_rshr(dh_q_mul64(e->w, r2) + dh_q_mul64(e->x, r1) - dh_q_mul64(e->y, r0) + dh_q_mul64(e->z, cs), 30u);
+}
+
+/* dh_motion_quat_rot_q_ (motion_impl.h) */
+DH_NOINLINE void dh_motion_quat_rot_q_(const dh_quat_q *q, dh_frame_q *T)
+{
+    const int64_t one = (int64_t)1 << 60;
+    const int32_t w = q->w, x = q->x, y = q->y, z = q->z;
     /* r[col][row] */
     T->r[0][0] = (dh_q30)dh_q_rshr(one - 2 * (dh_q_mul64(y, y) + dh_q_mul64(z, z)), 30u);
     T->r[1][1] = (dh_q30)dh_q_rshr(one - 2 * (dh_q_mul64(x, x) + dh_q_mul64(z, z)), 30u);

@@ -128,6 +128,16 @@ int32_t dh_motion_lerp_q_(int32_t pa, int32_t pb, dh_q30 s);
  * blended sequences (dh_blend_q.c) check their lines with it */
 int dh_motion_path_ok_q_(const dh_path_q *p);
 
+/* out = e (cs, sn k) (Q2.30: e a unit quaternion, cs and sn the cosine
+ * and sine of a half angle, k a unit axis; each product rounded once);
+ * out must not alias e. A path's slerp from an end quaternion (dh_path_eval_q)
+ * and the blended sequences' overlaps (dh_blend_q.c) */
+void dh_motion_turn_q_(const dh_quat_q *e, int32_t cs, int32_t sn, const int32_t k[3], dh_quat_q *out);
+
+/* T->r = the rotation of the unit quaternion q (Q2.30, each entry rounded
+ * once); T->p untouched */
+void dh_motion_quat_rot_q_(const dh_quat_q *q, dh_frame_q *T);
+
 /* ---- fixed point (dh_profile_q.c) ---- */
 
 /* In place: p->d, p->v = vmax, p->a = amax, p->j = jmax (0: the
