@@ -75,24 +75,14 @@ DH_INLINE bq_f bq_pack(uint32_t m, int32_t e)
     return ((uint64_t)m << 32) | (uint32_t)((uint32_t)e + BQ_BIAS);
 }
 
-/* v 2^e, truncated to a 32-bit mantissa (inlined into bq_addsub only:
- * the other operations normalise by one bit) */
-DH_INLINE bq_f bq_make(uint64_t v, int32_t e)
+/* v 2^e, truncated to a 32-bit mantissa (for bq_addsub: the other
+ * operations normalise by one bit) */
+static DH_NOINLINE bq_f bq_make(uint64_t v, int32_t e)
 {
-    unsigned n;
-    int32_t sh;
+    const unsigned n = dh_q_bitlen64(v);
     if (v == 0u) return bq_pack(0u, 0);
-    n = dh_q_bitlen64(v);
-    sh = (int32_t)n;
-    sh -= 32;
-    if (n > 32u) {
-        const unsigned r = n - 32u;
-        return bq_pack((uint32_t)(v >> r), e + sh);
-    }
-    {
-        const unsigned l = 32u - n;
-        return bq_pack((uint32_t)(v << l), e + sh);
-    }
+    /* the top bit to bit 63 (1 <= n <= 64), then the high word */
+    return bq_pack((uint32_t)((v << (64u - n)) >> 32), e + (int32_t)n - 32);
 }
 
 /* v (exact; clz(0) is 32: m 0) */
@@ -146,18 +136,19 @@ static DH_NOINLINE bq_f bq_sqrt(bq_f a)
     return bq_pack(dh_q_isqrt62((uint64_t)bq_m(a) << k) << 1, (e - (int32_t)k) / 2 - 1);
 }
 
-/* the key that orders values: 0 for 0, else the biased exponent above
- * the mantissa */
-DH_INLINE uint64_t bq_key(bq_f a)
+/* 1 when a < b: by the biased exponent (0 for the value 0, below every
+ * other's), then the mantissa */
+DH_INLINE uint32_t bq_less(bq_f a, bq_f b)
 {
-    const uint64_t nz = 0u - (uint64_t)(bq_m(a) != 0u);
-    return (((uint64_t)((uint32_t)a & 0x7FFFFFFFu) << 32) | bq_m(a)) & nz;
+    const uint32_t ka = ((uint32_t)a & 0x7FFFFFFFu) & (0u - (uint32_t)(bq_m(a) != 0u));
+    const uint32_t kb = ((uint32_t)b & 0x7FFFFFFFu) & (0u - (uint32_t)(bq_m(b) != 0u));
+    return (uint32_t)(ka < kb) | ((uint32_t)(ka == kb) & (uint32_t)(bq_m(a) < bq_m(b)));
 }
 
 /* 1 when a < b */
 static DH_NOINLINE int bq_lt(bq_f a, bq_f b)
 {
-    return bq_key(a) < bq_key(b);
+    return (int)bq_less(a, b);
 }
 
 /* a + b (sub 0) or max(a - b, 0) (sub 1), the smaller aligned to the
@@ -167,14 +158,13 @@ static DH_NOINLINE bq_f bq_addsub(bq_f a, bq_f b, int sub)
     bq_f x = a, y = b;
     uint64_t u, v;
     uint32_t d, lt;
-    const uint32_t neg = (uint32_t)(bq_key(a) < bq_key(b));
-    if (bq_m(b) == 0u) return a;
+    const uint32_t neg = bq_less(a, b);
     if (neg != 0u) {
         /* a + b = b + a; a - b is below 0 (0 below) */
         x = b;
         y = a;
     }
-    /* x >= y: e(x) >= e(y), or y is 0 (v 0 whatever d) */
+    /* x >= y: e(x) >= e(y), or y is 0 (v 0 whatever d: x + 0 is x) */
     d = (uint32_t)(bq_e(x) - bq_e(y));
     lt = (uint32_t)(d < 63u);
     d = d * lt + 63u * (1u - lt);
@@ -402,39 +392,51 @@ DH_INLINE int bq_us(bq_f t, uint32_t *us)
     return *us < BQ_DUR_MAX;
 }
 
-/* the middle durations (us, rounded up) of the float twin's closed forms
- * for g's rates into g->dur[1..3], and v; 0 when one is out of range.
- * The tails' speeds are below V (bq_overlap's first bound). */
-static DH_NOINLINE int bq_middle(dh_blend_seg_q *g)
+/* The cruise of the float twin's closed forms for g's rates: v and the
+ * cruise's duration (us, rounded up) into g->dur[2]; 0 when it is out of
+ * range. The tails' speeds are below V (bq_overlap's first bound). */
+static DH_NOINLINE int bq_cruise(dh_blend_seg_q *g)
 {
-    bq_f t = BQ_ZERO;
+    int ok = 1;
     /* (u0^2 + u1^2) / 2, then the s to reach V from u0 and come down to
      * u1 (bq_need), in v's state (the planners' frames stay small) */
     bq_put(g, BQ_V, bq_half(bq_add(bq_mul(bq_get(g, BQ_U0), bq_get(g, BQ_U0)), bq_mul(bq_get(g, BQ_U1), bq_get(g, BQ_U1)))));
     bq_put(g, BQ_V, bq_div(bq_sub(bq_mul(bq_get(g, BQ_RV), bq_get(g, BQ_RV)), bq_get(g, BQ_V)), bq_get(g, BQ_RA)));
+    g->dur[2] = 0u;
     if (!bq_lt(bq_get(g, BQ_EE), bq_get(g, BQ_V))) {
-        t = bq_div(bq_sub(bq_get(g, BQ_EE), bq_get(g, BQ_V)), bq_get(g, BQ_RV));
+        ok = bq_us(bq_div(bq_sub(bq_get(g, BQ_EE), bq_get(g, BQ_V)), bq_get(g, BQ_RV)), &g->dur[2]);
         bq_put(g, BQ_V, bq_get(g, BQ_RV));
     } else {
         bq_put(g, BQ_V, bq_half(bq_add(bq_mul(bq_get(g, BQ_U0), bq_get(g, BQ_U0)), bq_mul(bq_get(g, BQ_U1), bq_get(g, BQ_U1)))));
         bq_put(g, BQ_V, bq_sqrt(bq_add(bq_mul(bq_get(g, BQ_RA), bq_get(g, BQ_EE)), bq_get(g, BQ_V))));
     }
-    return bq_us(t, &g->dur[2]) &
-           bq_us(bq_div(bq_sub(bq_get(g, BQ_V), bq_get(g, BQ_U0)), bq_get(g, BQ_RA)), &g->dur[1]) &
-           bq_us(bq_div(bq_sub(bq_get(g, BQ_V), bq_get(g, BQ_U1)), bq_get(g, BQ_RA)), &g->dur[3]);
+    return ok;
+}
+
+/* the duration (us, rounded up) of phase k (1 or 3) at a between v and
+ * the tail's speed (state u) into g->dur[k]; 0 when it is out of range */
+static DH_NOINLINE int bq_ramp(dh_blend_seg_q *g, unsigned k, unsigned u)
+{
+    return bq_us(bq_div(bq_sub(bq_get(g, BQ_V), bq_get(g, u)), bq_get(g, BQ_RA)), &g->dur[k]);
+}
+
+/* t1 / 2 + tv + t3 / 2 (s) of g's middle durations into v's state (the
+ * planners' frames stay small): bq_resolve's divisor */
+static DH_NOINLINE void bq_middle_time(dh_blend_seg_q *g)
+{
+    bq_put(g, BQ_V, bq_add(bq_half(bq_add(bq_sec(g->dur[1]), bq_sec(g->dur[3]))), bq_sec(g->dur[2])));
 }
 
 /* v solved again from the distance with the rounded durations:
  * (E - u0 t1 / 2 - u1 t3 / 2) / (t1 / 2 + tv + t3 / 2) (the divisor is
- * positive: v > u0 makes dur[1] at least 1 us); 0 when it is below a
- * tail's speed (the rounding took the phase's room) */
+ * positive: v > u0 makes dur[1] at least 1 us; in v's state from
+ * bq_middle_time; the dividend in E's, its last use); 0 when it is below
+ * a tail's speed (the rounding took the phase's room) */
 static DH_NOINLINE int bq_resolve(dh_blend_seg_q *g)
 {
-    bq_f n;
-    /* the divisor in v's state (the planners' frames stay small) */
-    bq_put(g, BQ_V, bq_add(bq_half(bq_add(bq_sec(g->dur[1]), bq_sec(g->dur[3]))), bq_sec(g->dur[2])));
-    n = bq_half(bq_add(bq_mul(bq_get(g, BQ_U0), bq_sec(g->dur[1])), bq_mul(bq_get(g, BQ_U1), bq_sec(g->dur[3]))));
-    bq_put(g, BQ_V, bq_div(bq_sub(bq_get(g, BQ_EE), n), bq_get(g, BQ_V)));
+    bq_put(g, BQ_EE, bq_sub(bq_get(g, BQ_EE), bq_half(bq_add(bq_mul(bq_get(g, BQ_U0), bq_sec(g->dur[1])),
+                                                            bq_mul(bq_get(g, BQ_U1), bq_sec(g->dur[3]))))));
+    bq_put(g, BQ_V, bq_div(bq_get(g, BQ_EE), bq_get(g, BQ_V)));
     return (!bq_lt(bq_get(g, BQ_V), bq_get(g, BQ_U0))) & (!bq_lt(bq_get(g, BQ_V), bq_get(g, BQ_U1)));
 }
 
@@ -495,7 +497,11 @@ static DH_NOINLINE int bq_seg(dh_blend_seg_q *g)
         return 1;
     }
     bq_tails(g);
-    if (!bq_middle(g)) return 0;
+    ok = bq_cruise(g);
+    ok &= bq_ramp(g, 1u, BQ_U0);
+    ok &= bq_ramp(g, 3u, BQ_U1);
+    if (ok == 0) return 0;
+    bq_middle_time(g);
     ok = bq_resolve(g);
     bq_phase(g, 1u, bq_get(g, BQ_U0), bq_get(g, BQ_V));
     bq_phase(g, 0u, BQ_ZERO, bq_get(g, BQ_U0));
