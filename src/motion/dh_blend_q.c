@@ -437,7 +437,7 @@ static DH_NOINLINE int bq_resolve(dh_blend_seg_q *g)
     bq_put(g, BQ_EE, bq_sub(bq_get(g, BQ_EE), bq_half(bq_add(bq_mul(bq_get(g, BQ_U0), bq_sec(g->dur[1])),
                                                             bq_mul(bq_get(g, BQ_U1), bq_sec(g->dur[3]))))));
     bq_put(g, BQ_V, bq_div(bq_get(g, BQ_EE), bq_get(g, BQ_V)));
-    return (!bq_lt(bq_get(g, BQ_V), bq_get(g, BQ_U0))) & (!bq_lt(bq_get(g, BQ_V), bq_get(g, BQ_U1)));
+    return (bq_lt(bq_get(g, BQ_V), bq_get(g, BQ_U0)) | bq_lt(bq_get(g, BQ_V), bq_get(g, BQ_U1))) == 0;
 }
 
 /* phase k's P = w dur and Q = +-|dw| dur / 2 (Q2.30) from its start
