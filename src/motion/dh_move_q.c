@@ -14,8 +14,10 @@
  * Feed override and its ceiling as the float twin (dh_move.c): r falls
  * while the tracker is not OK and rises while it is, each period by at
  * most what keeps the commanded acceleration of s within the profile's
- * peak A, with the profile's s'' taken at the period's ends and at the
- * clock (low and high values lo, p). The rise is the root x of
+ * peak A, with the profile's s'' bounded over the last and the next
+ * period (low and high values lo, p; dh_motion_feed_bounds_q_, which the
+ * fixed queue, dh_queue_q.c, uses for its joint moves too). The rise is
+ * the root x of
  * p x^2 + (k + 2 p r) x = A - p r^2 (k = s' / dt) in the float twin; here
  * its lower bound (A - p r^2) / (k + 2 p r + p), which meets the
  * inequality for x <= 1 (p x^2 <= p x) without a square root. The fall is
@@ -216,51 +218,68 @@ static uint64_t moveq_r2(int64_t x, dh_q30 r)
     return (xr * (uint32_t)r + 0x3FFFFFFFu) >> 30;
 }
 
-/* the times of the feed's sample: the start of the last period (r dt
- * back), the end of the next one (capped at the duration) and the clock */
-static DH_NOINLINE void moveq_sample_times(const dh_move_q *mv, uint32_t dt, uint32_t t[3])
+/* ceil(n / d) for d > 0, n below 2^63: one quotient bit per step (no
+ * division) */
+static uint64_t moveq_cdiv(uint64_t n, uint32_t d)
 {
-    const uint64_t back = ((uint64_t)(uint32_t)mv->feed * dt) >> 30;
-    const uint64_t tf = (uint64_t)mv->clock + dt;
-    t[0] = (back < mv->clock) ? mv->clock - (uint32_t)back : 0u;
-    t[1] = (tf < mv->dur) ? (uint32_t)tf : mv->dur;
-    t[2] = mv->clock;
-}
-
-/* ceil(sd 10^6 / dt): k = s' / dt in LSB/s^2, bit-serial (below 2^51) */
-static uint64_t moveq_k(int32_t sd, uint32_t dt)
-{
-    uint64_t nn = (uint64_t)sd * MOVEQ_DT_MAX, k = 0u;   /* < 2^51 */
-    uint32_t bit = 52u;
+    uint64_t q = 0u;
+    uint32_t bit = 63u;
     while (bit > 0u) {
         bit--;
-        if ((nn >> bit) >= dt) {
-            nn -= (uint64_t)dt << bit;
-            k |= (uint64_t)1 << bit;
+        if ((n >> bit) >= d) {
+            n -= (uint64_t)d << bit;
+            q |= (uint64_t)1 << bit;
         }
     }
-    return (nn != 0u) ? k + 1u : k;
+    return (n != 0u) ? q + 1u : q;
 }
 
-/* The largest rise (*up) and fall (*dn) of r this period that keep the
- * commanded acceleration of s within the profile's peak (file comment),
- * from the sample in mv->ps (dh_move_advance_q); 2^30 (no bound) where s' is 0 */
-static DH_NOINLINE void moveq_feed_bounds(const dh_move_q *mv, uint32_t dt, dh_q30 *up, dh_q30 *dn)
+/* s'' of the trapezoid pr along the travel at time t (us; before 0 it
+ * counts as +a, after T as -a), its acceleration phases ta long */
+static int32_t moveq_acc(const dh_profile_q *pr, uint32_t ta, int64_t t)
 {
-    const int32_t *ps = mv->ps;
-    const int64_t A = mv->prof[0].a, r = mv->feed;
-    const int64_t hi = (ps[0] > 0) ? ps[0] : 0, lo = ps[1];
-    uint64_t k, num, den;
-    *up = DH_Q30_ONE;
-    *dn = DH_Q30_ONE;
-    if (ps[2] <= 0) return;
-    k = moveq_k(ps[2], dt);
-    num = moveq_r2(hi, (dh_q30)r);
+    if (t < (int64_t)ta) return pr->a;
+    if (t > (int64_t)pr->T - (int64_t)ta) return -pr->a;
+    return 0;
+}
+
+/* The largest rise (ps[0]) and fall (ps[1]) of r this period that keep
+ * the commanded acceleration of the profile pr (along the travel) within
+ * A (file comment), r the warp of the last period; 2^30 (no bound) where
+ * s' is 0 (at rest at the clock). The profiles run here are trapezoids,
+ * whose s'' falls monotonically (+a, 0, -a): over the last period and the
+ * next, [clock - r dt, clock + dt], it lies between its values 2 us before
+ * and after them (the margin covers the rounding of the phase times ta),
+ * hi and lo. s' at the clock is bounded above by a u (u the time to the
+ * nearer end plus 1 us, within ta of it) and by the peak v; k = s' / dt
+ * (LSB/s^2) rounded up. A larger k and hi and a smaller lo only lower the
+ * bounds; another profile kind takes s'' within +-a and s' at v. */
+DH_NOINLINE void dh_motion_feed_bounds_q_(const dh_profile_q *pr, int32_t A, uint32_t clock, dh_q30 r, uint32_t dt,
+                                          int32_t ps[2])
+{
+    const uint64_t back = ((uint64_t)(uint32_t)r * dt) >> 30;
+    const uint32_t ta = (uint32_t)(((uint64_t)(uint32_t)pr->xa * pr->T) >> 30);
+    const uint32_t u = (clock < pr->T) ? ((clock < pr->T - clock) ? clock : pr->T - clock) : 0u;
+    uint64_t k = moveq_cdiv((uint64_t)pr->v * MOVEQ_DT_MAX, dt), num, den, hi = (uint64_t)pr->a;
+    int64_t lo = -pr->a;
+    ps[0] = DH_Q30_ONE;
+    ps[1] = DH_Q30_ONE;
+    if (u == 0u) return;
+    if (pr->kind == (uint32_t)DH_PROFILE_TRAP) {
+        const int32_t h = moveq_acc(pr, ta, (int64_t)clock - (int64_t)back - 2);
+        if (u <= ta) {
+            const uint64_t ku = moveq_cdiv((uint64_t)pr->a * (u + 1u), dt);
+            if (ku < k) k = ku;
+        }
+        hi = (h > 0) ? (uint64_t)h : 0u;
+        lo = moveq_acc(pr, ta, (int64_t)clock + dt + 2);
+    }
+    num = moveq_r2((int64_t)hi, r);
     /* (A - p r^2) / (k + 2 p r + p), the denominator rounded up */
-    den = k + ((((uint64_t)hi * (uint32_t)r) >> 29) + 1u) + (uint64_t)hi;
-    *up = (dh_q30)(((uint64_t)A > num) ? moveq_ratio((uint64_t)A - num, den) : 0u);
-    num = (lo < 0) ? moveq_r2(-lo, (dh_q30)r) : 0u;
-    *dn = (dh_q30)(((uint64_t)A > num) ? moveq_ratio((uint64_t)A - num, k) : 0u);
+    den = k + (((hi * (uint32_t)r) >> 29) + 1u) + hi;
+    ps[0] = (int32_t)(((int64_t)A > (int64_t)num) ? moveq_ratio((uint64_t)A - num, den) : 0u);
+    num = (lo < 0) ? moveq_r2(-lo, r) : 0u;
+    ps[1] = (int32_t)(((int64_t)A > (int64_t)num) ? moveq_ratio((uint64_t)A - num, k) : 0u);
 }
 
 /* r after a period whose tracker state was OK (ok 1) or not, within its
@@ -302,28 +321,10 @@ dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh
         mv->lag = 0u;   /* at full feed and ceiling: r stays 1, no bound needed */
         moveq_tick(mv, DH_Q30_ONE, dt);
     } else {
-        /* s'' near the clock into mv->ps: its largest (ps[0]) and
-         * smallest (ps[1]) value at the times of moveq_sample_times (the
-         * profile's first and last phases, clamped to 0 by the evaluation,
-         * taken at +-A), and s' at the clock (ps[2]); the evaluations and
-         * the bounds called from here, one level down (the 256 B guard) */
-        const dh_profile_q *pr = &mv->prof[0];
-        int32_t s, sd, a0;
-        uint32_t t[3], i;
-        dh_q30 up, dn;
-        moveq_sample_times(mv, dt, t);
-        mv->ps[0] = -pr->a;
-        mv->ps[1] = pr->a;
-        for (i = 0u; i < 3u; i++) {
-            (void)dh_profile_eval_q(pr, t[i], &s, &sd, &a0);
-            if (i == 1u && t[1] >= mv->dur) a0 = -pr->a;
-            if (a0 > mv->ps[0]) mv->ps[0] = a0;
-            if (a0 < mv->ps[1]) mv->ps[1] = a0;
-            if (i == 0u && t[0] == 0u) mv->ps[0] = pr->a;
-        }
-        mv->ps[2] = sd;
-        moveq_feed_bounds(mv, dt, &up, &dn);
-        mv->feed = moveq_feed_next(mv, dt, ok, up, dn);
+        /* the bounds and r's update called from here, one level down,
+         * with mv->ps their workspace (the 256 B guard) */
+        dh_motion_feed_bounds_q_(&mv->prof[0], mv->prof[0].a, mv->clock, mv->feed, dt, mv->ps);
+        mv->feed = moveq_feed_next(mv, dt, ok, mv->ps[0], mv->ps[1]);
         moveq_tick(mv, mv->feed, dt);
     }
     rep->clock = mv->clock;

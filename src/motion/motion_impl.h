@@ -137,4 +137,13 @@ int dh_motion_path_ok_q_(const dh_path_q *p);
  * move (dh_joint_move_q.c, in its output) call it. */
 dh_status dh_motion_profile_q_(dh_profile_q *p);
 
+/* ---- fixed point (dh_move_q.c) ---- */
+
+/* ps[0] the largest rise and ps[1] the largest fall (Q2.30) of the time
+ * warp r of the profile pr (a trapezoid; r that of the last period, dt
+ * its length in us) at clock this period that keep the commanded
+ * acceleration within A (dh_move_q.c); 2^30 where s' is 0 */
+void dh_motion_feed_bounds_q_(const dh_profile_q *pr, int32_t A, uint32_t clock, dh_q30 r, uint32_t dt,
+                              int32_t ps[2]);
+
 #endif /* DHMATH_SRC_MOTION_IMPL_H */
