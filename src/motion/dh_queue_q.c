@@ -305,7 +305,9 @@ dh_status dh_queue_target_q(dh_queue_q *qu, const dh_track_q *t, dh_queue_cmd_q 
         qu->sync = 0u;
     } else if (kind == (uint32_t)DH_MOVE_JOINT) {
         if (qu->started != 0u) {
-            if (qu->phase == (uint32_t)DH_QUEUE_BRAKE || qu->r < DH_Q30_ONE) queueq_warp(qu, t->dt_us);
+            if (qu->phase == (uint32_t)DH_QUEUE_BRAKE ||
+                (qu->phase == (uint32_t)DH_QUEUE_RUN && qu->r < DH_Q30_ONE))
+                queueq_warp(qu, t->dt_us);
             queueq_joint_step(qu, t->dt_us, cmd->q);
         } else {
             memcpy(cmd->q, qu->hq, sizeof cmd->q);
@@ -329,6 +331,16 @@ static int queueq_at_rest(const dh_queue_q *qu)
     return mv->clock == 0u || mv->clock >= mv->dur || r == 0;
 }
 
+/* 1 when the braking move's next command is this period's: its warp at
+ * 0, or a path move's clock at its end already at the start of this
+ * period (c0; its frame then stays B until the tracker is OK there) */
+static int queueq_still(const dh_queue_q *qu, uint32_t c0)
+{
+    const dh_move_q *mv = &qu->mv;
+    if (mv->kind == (uint32_t)DH_MOVE_PATH) return mv->feed == 0 || c0 >= mv->dur;
+    return qu->r == 0;
+}
+
 /* the running move completed: removed from the queue, its end held */
 static void queueq_done(dh_queue_q *qu)
 {
@@ -343,6 +355,7 @@ static void queueq_done(dh_queue_q *qu)
 dh_status dh_queue_advance_q(dh_queue_q *qu, dh_track_state state, dh_queue_report_q *rep)
 {
     dh_move_q *const mv = &qu->mv;
+    const uint32_t c0 = mv->clock;
     int done = 0, held = 1;
     DH_ASSERT(qu != NULL && rep != NULL);
     if (qu->pend == 0u) return DH_ERR_ARG;
@@ -369,7 +382,7 @@ dh_status dh_queue_advance_q(dh_queue_q *qu, dh_track_state state, dh_queue_repo
     rep->clock = (qu->started != 0u) ? mv->clock : 0u;
     if (done != 0)
         queueq_done(qu);
-    else if (qu->phase == (uint32_t)DH_QUEUE_BRAKE && qu->started != 0u && queueq_at_rest(qu) && mv->clock > 0u)
+    else if (qu->phase == (uint32_t)DH_QUEUE_BRAKE && qu->started != 0u && queueq_still(qu, c0))
         qu->phase = (uint32_t)DH_QUEUE_STOPPED;
     rep->held = held;
     rep->done = done;
