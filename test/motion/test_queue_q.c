@@ -8,13 +8,15 @@
  * Random queues (seeded): joint moves to configurations of the robot's
  * region (support_motion_q.c) and line and arc moves between such
  * configurations' tool frames, appended to a queue of CAP items as it
- * drains, run by the firmware loop (target, dh_track_init_q when
+ * drains (every end near a configuration of the region), run by the
+ * firmware loop (target, dh_track_init_q when
  * cmd.sync, dh_track_step_q for path commands, advance), one stop in each
  * queue inside a move, at a random period or else in its last move (some
  * resumed while braking, the others after a random rest). Checked every period against references
  * computed here in double: a path move's target on its path within
  * PATH_TOL = 5e-3 mm (the issue's bound at DH_QPOS_FRAC 16) and the tool
- * at every OK period within PATH_TOL of it; over windows of w periods (a
+ * at every OK period within the tracker's pos_tol (plus the fixed FK's
+ * 4 n LSB) of the target; over windows of w periods (a
  * ring of positions, one every DEC periods) the target's speed within
  * vmax and its total acceleration within amax times 1 + 1e-3 plus the
  * noise terms 2 N / (w dt) and 4 N / (w dt)^2 (N the target's position
@@ -130,12 +132,13 @@ static void gen_next(const dhsm_rig *g, gen_state *gs)
         return;
     }
     while (!ok && tries++ < 50) {
-        /* near the last end, or from a fresh configuration of the region */
-        if (tries > 10) dhsm_region_q(g, qa);
+        /* B 4 to 12 degrees per joint from the last end, each towards a
+         * fresh configuration of the region (a free walk would drift
+         * towards the singularities) */
+        dhsm_region_q(g, qa);
         for (i = 0; i < NJ; i++) {
-            const double dlt = dht_rand_uniform(4.0, 12.0) * (dht_rand_uniform(0.0, 1.0) < 0.5 ? -1.0 : 1.0);
-            const double q0 = (tries > 10) ? qa[i] : gs->q[i] / Q16;
-            qb[i] = q0 + dlt;
+            const double dlt = dht_rand_uniform(4.0, 12.0) * (qa[i] < gs->q[i] / Q16 ? -1.0 : 1.0);
+            qb[i] = gs->q[i] / Q16 + dlt;
             qm[i] = 0.5 * (gs->q[i] / Q16 + qb[i]) + dht_rand_uniform(-4.0, 4.0);
         }
         dhs_q_from_double(&g->r, qb, ib);
@@ -263,11 +266,15 @@ static void run_queue(const dhsm_rig *g, gen_state *gs, long stop_at, int early,
                 d = dhsm_ref_dist(rp, pt);
                 DHT_TRUE_MSG(d <= PATH_TOL, "%s period %ld: target %.3g mm off the path", what, k, d);
                 if (state == DH_TRACK_OK) {
+                    /* the tool within the tracker's tolerance of the target */
+                    const double tol = t->pos_tol / QPOS + 4.0 * NJ / QPOS + 1e-6;
                     dhr_mat4 F;
-                    double pq[3];
+                    double pq[3], dt;
                     dhsm_tool_mm(g, q, pq, &F);
-                    d = dhsm_ref_dist(rp, pq);
-                    DHT_TRUE_MSG(d <= PATH_TOL, "%s period %ld: tool %.3g mm off the path", what, k, d);
+                    dt = dhsm_dist3(pq, pt);
+                    DHT_TRUE_MSG(dt <= tol, "%s period %ld: tool %.3g mm from the target", what, k, dt);
+                    DHT_TRUE_MSG(dhsm_ref_dist(rp, pq) <= d + tol, "%s period %ld: tool off the path", what, k);
+                    dht_reach_max("queue_q.tool_path_mm", dhsm_ref_dist(rp, pq) / ldexp(1.0, 16 - DH_QPOS_FRAC));
                 }
                 if (cn % DEC == 0) memcpy(cring[(cn / DEC) % RING], cmd.T.p, sizeof cring[0]);
                 if (cn % DEC == 0) ring_rates(&cring[0][0], 3, 1.0 / QPOS, cn, cn, NP, V, A, wv, wa, what);
