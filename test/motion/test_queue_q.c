@@ -62,12 +62,10 @@
 #define RING 40    /* positions kept: the longest window (2 w) plus one, in DEC periods */
 #define NJ 6u
 
-/* one robot, one tracker, one queue (the M0 target has 16 KB of RAM) */
-static dhsm_rig the_rig;
+/* one tracker, one queue (the M0 target has 16 KB of RAM: the robot, the
+ * queue's items and the paths' references live on the cases' stacks) */
 static dh_track_q the_trk;
 static dh_queue_q the_qu;
-static dh_queue_item_q the_items[CAP];
-static dhsm_ref refs[CAP];                 /* each queued path move's reference, by item */
 static int32_t jring[RING][NJ];            /* joint positions, one every DEC periods */
 static int32_t cring[RING][3];             /* targets of the running path move, one every DEC periods */
 
@@ -77,6 +75,7 @@ typedef struct {
     dh_frame_q F;       /* its tool frame (a path's B, or the FK of a joint move's q1) */
     long left;          /* moves still to append */
     int lag;            /* 1: the Puma's lagging line, joint back, line again */
+    dhsm_ref *refs;     /* each queued path move's reference, by item (CAP) */
     int32_t q0[NJ];     /* lag: the configuration the line starts from */
 } gen_state;
 
@@ -125,7 +124,7 @@ static void gen_next(const dhsm_rig *g, gen_state *gs)
         B.p[1] = (int32_t)(-30.0 * LS * QPOS);
         B.p[2] = (int32_t)(1000.0 * LS * QPOS);
         DHT_EQ_INT(dh_path_line_q(&p, &gs->F, &B), DH_OK);
-        dhsm_ref_make(&refs[slot], &p, NULL);
+        dhsm_ref_make(&gs->refs[slot], &p, NULL);
         DHT_EQ_INT(dh_queue_add_path_q(qu, &p, &PLIM), DH_OK);
         gs->F = B;
         gs->left--;
@@ -153,7 +152,7 @@ static void gen_next(const dhsm_rig *g, gen_state *gs)
         ok = dhsm_path_reachable(g, &p, gs->q);
     }
     DHT_TRUE(ok);
-    dhsm_ref_make(&refs[slot], &p, kind == 2 ? Mf.p : NULL);
+    dhsm_ref_make(&gs->refs[slot], &p, kind == 2 ? Mf.p : NULL);
     DHT_EQ_INT(dh_queue_add_path_q(qu, &p, &LIM), DH_OK);
     memcpy(gs->q, ib, sizeof ib);
     gs->F = B;
@@ -242,7 +241,7 @@ static void run_queue(const dhsm_rig *g, gen_state *gs, long stop_at, int early,
         /* a new path move: its windows and a fresh ring */
         if (qu->started && qu->mv.kind == DH_MOVE_PATH && (qu->seq != seq || runkind != DH_MOVE_PATH || qu->mv.clock == 0u)) {
             const dh_move_q *mv = &qu->mv;
-            const dhsm_ref *rp = &refs[head];
+            const dhsm_ref *rp = &gs->refs[head];
             const dh_cart_limits_q *lim = &qu->items[head].lim;
             const double pb = (rp->arc ? 4.0 + ldexp(rp->R * QPOS, -26) : 0.87) / QPOS;
             V = lim->vmax / QPOS;
@@ -260,7 +259,7 @@ static void run_queue(const dhsm_rig *g, gen_state *gs, long stop_at, int early,
             DHT_EQ_INT(dh_track_step_q(t, &cmd.T, q, &tr), DH_OK);
             state = tr.state;
             if (qu->started) {
-                const dhsm_ref *rp = &refs[head];
+                const dhsm_ref *rp = &gs->refs[head];
                 double d;
                 for (c = 0; c < 3; c++) pt[c] = cmd.T.p[c] / QPOS;
                 d = dhsm_ref_dist(rp, pt);
@@ -351,7 +350,10 @@ static void random_queues_q(void)
 {
     size_t ri;
     for (ri = 0; ri < sizeof robots / sizeof robots[0]; ri++) {
-        dhsm_rig *const g = &the_rig;
+        dhsm_rig rig;
+        dh_queue_item_q items[CAP];
+        dhsm_ref refs[CAP];
+        dhsm_rig *const g = &rig;
         long it, n = DHT_ITER(4), periods = 0, notok = 0, stops = 0;
         dhsm_rig_make(g, robots[ri], 180.0, 720.0);
         for (it = 0; it < n; it++) {
@@ -360,13 +362,14 @@ static void random_queues_q(void)
             gen_state gs;
             run_stats rs;
             memset(&gs, 0, sizeof gs);
+            gs.refs = refs;
             dhsm_region_q(g, qa);
             dhs_q_from_double(&g->r, qa, ia);
             memcpy(gs.q, ia, sizeof ia);
             dhsm_target_of(g, ia, &gs.F);
             gs.left = 3 + (long)(dht_rand_u32() % 4u);
             DHT_EQ_INT(dh_track_init_q(&the_trk, &g->r, &g->m, ia, DT_US), DH_OK);
-            DHT_EQ_INT(dh_queue_init_q(&the_qu, the_items, CAP), DH_OK);
+            DHT_EQ_INT(dh_queue_init_q(&the_qu, items, CAP), DH_OK);
             run_queue(g, &gs, (long)(dht_rand_u32() % 1500u), (dht_rand_u32() % 3u) == 0u, (long)(dht_rand_u32() % 200u),
                       &rs, g->d->name);
             periods += rs.periods;
@@ -383,7 +386,10 @@ static void random_queues_q(void)
 static void lagging_queue_q(void)
 {
     static const double QP[6] = { 10.0, -30.0, 45.0, 20.0, 35.0, -60.0 };
-    dhsm_rig *const g = &the_rig;
+    dhsm_rig rig;
+    dh_queue_item_q items[CAP];
+    dhsm_ref refs[CAP];
+    dhsm_rig *const g = &rig;
     double qa[NJ];
     int32_t ia[NJ];
     gen_state gs;
@@ -393,13 +399,14 @@ static void lagging_queue_q(void)
     for (k = 0; k < 6; k++) qa[k] = QP[k];
     dhs_q_from_double(&g->r, qa, ia);
     memset(&gs, 0, sizeof gs);
+    gs.refs = refs;
     memcpy(gs.q, ia, sizeof ia);
     memcpy(gs.q0, ia, sizeof ia);
     dhsm_target_of(g, ia, &gs.F);
     gs.left = 3;
     gs.lag = 1;
     DHT_EQ_INT(dh_track_init_q(&the_trk, &g->r, &g->m, ia, DT_US), DH_OK);
-    DHT_EQ_INT(dh_queue_init_q(&the_qu, the_items, CAP), DH_OK);
+    DHT_EQ_INT(dh_queue_init_q(&the_qu, items, CAP), DH_OK);
     run_queue(g, &gs, 150 + (long)(dht_rand_u32() % 300u), 0, 50, &rs, "Puma lagging queue");
     DHT_TRUE_MSG(rs.notok > 0, "the Puma queue: no lagging period");
     DHT_TRUE(rs.minfeed < DH_Q30_ONE);
@@ -411,7 +418,9 @@ static void lagging_queue_q(void)
 static void queue_q_errors(void)
 {
     dh_queue_q *const qu = &the_qu;
-    dhsm_rig *const g = &the_rig;
+    dhsm_rig rig;
+    dh_queue_item_q items[CAP];
+    dhsm_rig *const g = &rig;
     dh_queue_cmd_q cmd, keep_cmd;
     dh_queue_report_q rep, keep_rep;
     dh_frame_q A, B;
@@ -429,8 +438,8 @@ static void queue_q_errors(void)
     memset(&keep_rep, 0x5a, sizeof keep_rep);
     cmd = keep_cmd;
     rep = keep_rep;
-    DHT_EQ_INT(dh_queue_init_q(qu, the_items, 0u), DH_ERR_ARG);
-    DHT_EQ_INT(dh_queue_init_q(qu, the_items, 1u), DH_OK);
+    DHT_EQ_INT(dh_queue_init_q(qu, items, 0u), DH_ERR_ARG);
+    DHT_EQ_INT(dh_queue_init_q(qu, items, 1u), DH_OK);
     /* nothing queued: no command, and a stop is immediate */
     DHT_EQ_INT(dh_queue_advance_q(qu, DH_TRACK_OK, &rep), DH_ERR_ARG);
     DHT_TRUE(memcmp(&rep, &keep_rep, sizeof rep) == 0);
@@ -465,13 +474,13 @@ static void queue_q_errors(void)
     DHT_EQ_INT(dh_queue_add_path_q(qu, &p, &LIM), DH_ERR_LIMIT);
     DHT_EQ_INT(qu->count, 1u);
     /* a joint move for another number of joints than the robot's */
-    DHT_EQ_INT(dh_queue_init_q(qu, the_items, CAP), DH_OK);
+    DHT_EQ_INT(dh_queue_init_q(qu, items, CAP), DH_OK);
     DHT_EQ_INT(dh_queue_add_joint_q(qu, 5u, ia, v, a), DH_OK);
     cmd = keep_cmd;
     DHT_EQ_INT(dh_queue_target_q(qu, &the_trk, &cmd), DH_ERR_ARG);
     DHT_TRUE(memcmp(&cmd, &keep_cmd, sizeof cmd) == 0);
     /* path moves: bad limits, no path */
-    DHT_EQ_INT(dh_queue_init_q(qu, the_items, CAP), DH_OK);
+    DHT_EQ_INT(dh_queue_init_q(qu, items, CAP), DH_OK);
     lim.wdmax = 0;
     DHT_EQ_INT(dh_queue_add_path_q(qu, &p, &lim), DH_ERR_ARG);
     memset(&p, 0, sizeof p);
