@@ -1731,24 +1731,21 @@ dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_
  *        running move after this period (joint move) or the frame to
  *        track this period (path move), starting the next queued move
  *        when the last one is done.
- * A period: this call; for kind JOINT the caller commands cmd.q (the
- * joints go there; no tracker call); for kind PATH, when cmd.sync is 1
- * dh_track_init_q(t, ..., cmd.q, ...) first (the fixed tracker restarts
- * at rest at the last joint command, where a joint move ends at rest),
- * then dh_track_step_q(t, &cmd.T, ...) (its state); then
- * dh_queue_advance_q(qu, state, &rep). A joint move starts from the last
- * joint command, or after a path move from t->q once every 2 |t->v[i]| <=
- * floor(floor(amax_i dt / 10^6) dt / 10^6) (its first step within amax_i
- * dt^2 of the last); until then, while stopped and with nothing queued,
- * the command at rest is repeated (the last joint command, or the last
- * path move's frame; DH_MOVE_NONE before any move). A path move starts at
- * once, as dh_move_path_q's.
- * Commands keep the move's limits: a joint move's commands are those of
- * dh_move_joint_step_q at a clock that advances by r dt (r = 1 but after
- * dh_queue_stop_q and dh_queue_resume_q, r changing by at most what keeps
- * every joint's commanded acceleration within amax_i (1 - 2^-10)), a path
- * move's frames those of dh_move_target_q (dh_move_advance_q's feed
- * override). Method and proof: docs/design.md ("Fixed-point queue").
+ * A period: this call; kind JOINT: the caller commands cmd.q (no tracker
+ * call); kind PATH: with cmd.sync 1 dh_track_init_q(t, ..., cmd.q, ...)
+ * first (the tracker restarts at the last joint command, at rest), then
+ * dh_track_step_q(t, &cmd.T, ...); then dh_queue_advance_q(qu, state,
+ * &rep). A joint move starts from the last joint command, or after a
+ * path move from t->q once every 2 |t->v[i]| <= floor(floor(amax_i dt /
+ * 10^6) dt / 10^6); until then, while stopped and with nothing queued, the
+ * command at rest is repeated (the last joint command or path frame;
+ * DH_MOVE_NONE before any move). A path move starts at once.
+ * Commands keep the move's limits: a joint move's are dh_move_joint_step_q's
+ * at a clock advancing by r dt (r = 1 but after dh_queue_stop_q and
+ * dh_queue_resume_q, r changing by at most what keeps every joint's
+ * acceleration within amax_i (1 - 2^-10)), a path move's dh_move_target_q's
+ * (dh_move_advance_q's feed override). Method and proof: docs/design.md
+ * ("Fixed-point queue").
  * @param qu queue.
  * @param t the caller's tracker (read only: q, v, dt_us, r->n).
  * @param cmd output command.

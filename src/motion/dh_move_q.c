@@ -58,8 +58,9 @@ static dh_status moveq_period_ok(const dh_move_q *mv, uint32_t kind, uint32_t dt
     return (dt >= 1u && dt <= MOVEQ_DT_MAX) ? DH_OK : DH_ERR_ARG;
 }
 
-/* the clock, its fraction, override and ceiling at the start of a move */
-static void moveq_start(dh_move_q *mv, uint32_t dur)
+/* the clock, its fraction, override and ceiling at the start of a move
+ * (the fixed queue's moves start so too) */
+void dh_motion_start_q_(dh_move_q *mv, uint32_t dur)
 {
     mv->dur = dur;
     mv->clock = 0u;
@@ -136,7 +137,7 @@ dh_status dh_move_joint_q(dh_move_q *mv, uint32_t n, const int32_t *q0, const in
     for (i = 0u; i < n && st == DH_OK; i++) st = dh_profile_stretch_q(&mv->prof[i], T);
     if (st != DH_OK) return st;
     mv->e = 0u;
-    moveq_start(mv, T);
+    dh_motion_start_q_(mv, T);
     mv->kind = (uint32_t)DH_MOVE_JOINT;
     return DH_OK;
 }
@@ -178,7 +179,7 @@ dh_status dh_move_path_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_limits
     if (st != DH_OK) return st;
     mv->path = *p;
     mv->n = 0u;
-    moveq_start(mv, mv->prof[0].T);
+    dh_motion_start_q_(mv, mv->prof[0].T);
     mv->kind = (uint32_t)DH_MOVE_PATH;
     return DH_OK;
 }
@@ -193,18 +194,32 @@ dh_status dh_move_target_q(const dh_move_q *mv, dh_frame_q *T)
     return dh_path_eval_q(&mv->path, (dh_q30)((uint32_t)s << (30u - mv->e)), T);
 }
 
-/* min(floor(n 2^30 / d), 2^30) for d > 0, n >= 0 below 2^62: one quotient
- * bit per step (no division) */
+/* min(floor(n 2^30 / d), 2^30) or up to 2^-29 of it less, for d > 0 and
+ * n >= 0 below 2^63: d scaled below 2^31 (rounded up, n down, so the
+ * quotient never exceeds the exact one), then one quotient bit per step in
+ * 32-bit words (no division) */
 static uint32_t moveq_ratio(uint64_t n, uint64_t d)
 {
-    uint64_t r = n;
-    uint32_t q = 0u, k;
-    if (r >= d) return (uint32_t)DH_Q30_ONE;
+    static const unsigned char sh[4] = { 16u, 8u, 4u, 2u };
+    uint32_t r, dd, q = 0u, k;
+    if (n >= d) return (uint32_t)DH_Q30_ONE;
+    for (k = 0u; k < 4u; k++) {
+        if ((d >> (31u + sh[k])) != 0u) {
+            n >>= sh[k];
+            d = (d >> sh[k]) + 1u;
+        }
+    }
+    while ((d >> 31) != 0u) {
+        n >>= 1;
+        d = (d >> 1) + 1u;
+    }
+    r = (uint32_t)n;
+    dd = (uint32_t)d;
     for (k = 0u; k < 30u; k++) {
         r <<= 1;
         q <<= 1;
-        if (r >= d) {
-            r -= d;
+        if (r >= dd) {
+            r -= dd;
             q |= 1u;
         }
     }
@@ -216,22 +231,6 @@ static uint64_t moveq_r2(int64_t x, dh_q30 r)
 {
     const uint64_t xr = ((uint64_t)x * (uint32_t)r + 0x3FFFFFFFu) >> 30;
     return (xr * (uint32_t)r + 0x3FFFFFFFu) >> 30;
-}
-
-/* ceil(n / d) for d > 0, n below 2^63: one quotient bit per step (no
- * division) */
-static uint64_t moveq_cdiv(uint64_t n, uint32_t d)
-{
-    uint64_t q = 0u;
-    uint32_t bit = 63u;
-    while (bit > 0u) {
-        bit--;
-        if ((n >> bit) >= d) {
-            n -= (uint64_t)d << bit;
-            q |= (uint64_t)1 << bit;
-        }
-    }
-    return (n != 0u) ? q + 1u : q;
 }
 
 /* s'' of the trapezoid pr along the travel at time t (us; before 0 it
@@ -251,16 +250,18 @@ static int32_t moveq_acc(const dh_profile_q *pr, uint32_t ta, int64_t t)
  * next, [clock - r dt, clock + dt], it lies between its values 2 us before
  * and after them (the margin covers the rounding of the phase times ta),
  * hi and lo. s' at the clock is bounded above by a u (u the time to the
- * nearer end plus 1 us, within ta of it) and by the peak v; k = s' / dt
- * (LSB/s^2) rounded up. A larger k and hi and a smaller lo only lower the
- * bounds; another profile kind takes s'' within +-a and s' at v. */
+ * nearer end plus 1 us, within ta of it) and by the peak v: K = 10^6 s'
+ * (LSB us/s^2, below 2^61), k = K / dt, and the quotients of the file
+ * comment multiplied through by dt (no quotient for k). A larger K and hi
+ * and a smaller lo only lower the bounds; another profile kind takes s''
+ * within +-a and s' at v. */
 DH_NOINLINE void dh_motion_feed_bounds_q_(const dh_profile_q *pr, int32_t A, uint32_t clock, dh_q30 r, uint32_t dt,
                                           int32_t ps[2])
 {
     const uint64_t back = ((uint64_t)(uint32_t)r * dt) >> 30;
     const uint32_t ta = (uint32_t)(((uint64_t)(uint32_t)pr->xa * pr->T) >> 30);
     const uint32_t u = (clock < pr->T) ? ((clock < pr->T - clock) ? clock : pr->T - clock) : 0u;
-    uint64_t k = moveq_cdiv((uint64_t)pr->v * MOVEQ_DT_MAX, dt), num, den, hi = (uint64_t)pr->a;
+    uint64_t K = (uint64_t)pr->v * MOVEQ_DT_MAX, num, den, hi = (uint64_t)pr->a;
     int64_t lo = -pr->a;
     ps[0] = DH_Q30_ONE;
     ps[1] = DH_Q30_ONE;
@@ -268,18 +269,18 @@ DH_NOINLINE void dh_motion_feed_bounds_q_(const dh_profile_q *pr, int32_t A, uin
     if (pr->kind == (uint32_t)DH_PROFILE_TRAP) {
         const int32_t h = moveq_acc(pr, ta, (int64_t)clock - (int64_t)back - 2);
         if (u <= ta) {
-            const uint64_t ku = moveq_cdiv((uint64_t)pr->a * (u + 1u), dt);
-            if (ku < k) k = ku;
+            const uint64_t ku = (uint64_t)pr->a * (u + 1u);
+            if (ku < K) K = ku;
         }
         hi = (h > 0) ? (uint64_t)h : 0u;
         lo = moveq_acc(pr, ta, (int64_t)clock + dt + 2);
     }
     num = moveq_r2((int64_t)hi, r);
-    /* (A - p r^2) / (k + 2 p r + p), the denominator rounded up */
-    den = k + (((hi * (uint32_t)r) >> 29) + 1u) + hi;
-    ps[0] = (int32_t)(((int64_t)A > (int64_t)num) ? moveq_ratio((uint64_t)A - num, den) : 0u);
+    /* (A - p r^2) dt / (K + (2 p r + p) dt), the denominator rounded up */
+    den = K + ((((hi * (uint32_t)r) >> 29) + 1u) + hi) * dt;
+    ps[0] = (int32_t)(((int64_t)A > (int64_t)num) ? moveq_ratio(((uint64_t)A - num) * dt, den) : 0u);
     num = (lo < 0) ? moveq_r2(-lo, r) : 0u;
-    ps[1] = (int32_t)(((int64_t)A > (int64_t)num) ? moveq_ratio((uint64_t)A - num, k) : 0u);
+    ps[1] = (int32_t)(((int64_t)A > (int64_t)num) ? moveq_ratio(((uint64_t)A - num) * dt, K) : 0u);
 }
 
 /* r after a period whose tracker state was OK (ok 1) or not, within its

@@ -121,20 +121,10 @@ dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_
     return DH_OK;
 }
 
-/* mv's clock, its fraction, feed override and ceiling at the start of a
- * move of duration dur (as dh_move_q.c starts one) */
+/* the running move's clock and warp at its start (dh_move_q.c's rule) */
 static void queueq_clock0(dh_queue_q *qu, uint32_t dur)
 {
-    dh_move_q *const mv = &qu->mv;
-    mv->dur = dur;
-    mv->clock = 0u;
-    mv->cfrac = 0u;
-    mv->feed = DH_Q30_ONE;
-    mv->fcap = DH_Q30_ONE;
-    mv->lag = 0u;
-    mv->ps[0] = 0;
-    mv->ps[1] = 0;
-    mv->ps[2] = 0;
+    dh_motion_start_q_(&qu->mv, dur);
     qu->r = DH_Q30_ONE;
     qu->rfrac = 0u;
     qu->started = 1u;

@@ -139,6 +139,10 @@ dh_status dh_motion_profile_q_(dh_profile_q *p);
 
 /* ---- fixed point (dh_move_q.c) ---- */
 
+/* mv's clock, its fraction, feed override and ceiling at the start of a
+ * move of duration dur (dh_move_q.c; the fixed queue starts its moves so) */
+void dh_motion_start_q_(dh_move_q *mv, uint32_t dur);
+
 /* ps[0] the largest rise and ps[1] the largest fall (Q2.30) of the time
  * warp r of the profile pr (a trapezoid; r that of the last period, dt
  * its length in us) at clock this period that keep the commanded
