@@ -1421,7 +1421,7 @@ typedef struct {
     dh_q30 fcap;                      /**< path move: ceiling of r, Q2.30 in [0, 1] */
     uint32_t e;                       /**< path move: the profile's distance is 2^e (dh_path_move_q) */
     uint32_t lag;                     /**< path move: 1 when the last period was not OK */
-    int32_t ps[3];                    /**< path move: workspace of dh_move_advance_q (its feed override's sample and bounds) */
+    int32_t ps[3];                    /**< scratch of the fixed queue's evaluations (dh_queue_q.c); unused by the executor */
     uint32_t n;                       /**< joint move: number of joints */
     uint32_t kind;                    /**< a dh_move_kind value */
 } dh_move_q;

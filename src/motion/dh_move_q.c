@@ -15,7 +15,7 @@
  * while the tracker is not OK and rises while it is, each period by at
  * most what keeps the commanded acceleration of s within the profile's
  * peak A, with the profile's s'' bounded over the last and the next
- * period (low and high values lo, p; dh_motion_feed_bounds_q_, which the
+ * period (low and high values lo, p; dh_motion_feed_bound_q_, which the
  * fixed queue, dh_queue_q.c, uses for its joint moves too). The rise is
  * the root x of
  * p x^2 + (k + 2 p r) x = A - p r^2 (k = s' / dt) in the float twin; here
@@ -242,7 +242,7 @@ static int32_t moveq_acc(const dh_profile_q *pr, uint32_t ta, int64_t t)
     return 0;
 }
 
-/* The largest rise (ps[0]) and fall (ps[1]) of r this period that keep
+/* The largest rise (rise 1) or fall (rise 0) of r this period that keeps
  * the commanded acceleration of the profile pr (along the travel) within
  * A (file comment), r the warp of the last period; 2^30 (no bound) where
  * s' is 0 (at rest at the clock). The profiles run here are trapezoids,
@@ -255,38 +255,39 @@ static int32_t moveq_acc(const dh_profile_q *pr, uint32_t ta, int64_t t)
  * comment multiplied through by dt (no quotient for k). A larger K and hi
  * and a smaller lo only lower the bounds; another profile kind takes s''
  * within +-a and s' at v. */
-DH_NOINLINE void dh_motion_feed_bounds_q_(const dh_profile_q *pr, int32_t A, uint32_t clock, dh_q30 r, uint32_t dt,
-                                          int32_t ps[2])
+DH_NOINLINE int32_t dh_motion_feed_bound_q_(const dh_profile_q *pr, int32_t A, uint32_t clock, dh_q30 r, uint32_t dt,
+                                            int rise)
 {
     const uint64_t back = ((uint64_t)(uint32_t)r * dt) >> 30;
     const uint32_t ta = (uint32_t)(((uint64_t)(uint32_t)pr->xa * pr->T) >> 30);
     const uint32_t u = (clock < pr->T) ? ((clock < pr->T - clock) ? clock : pr->T - clock) : 0u;
-    uint64_t K = (uint64_t)pr->v * MOVEQ_DT_MAX, num, den, hi = (uint64_t)pr->a;
-    int64_t lo = -pr->a;
-    ps[0] = DH_Q30_ONE;
-    ps[1] = DH_Q30_ONE;
-    if (u == 0u) return;
+    uint64_t K = (uint64_t)pr->v * MOVEQ_DT_MAX, num, den;
+    int64_t hi = pr->a, lo = -pr->a;
+    if (u == 0u) return DH_Q30_ONE;
     if (pr->kind == (uint32_t)DH_PROFILE_TRAP) {
-        const int32_t h = moveq_acc(pr, ta, (int64_t)clock - (int64_t)back - 2);
         if (u <= ta) {
             const uint64_t ku = (uint64_t)pr->a * (u + 1u);
             if (ku < K) K = ku;
         }
-        hi = (h > 0) ? (uint64_t)h : 0u;
+        hi = moveq_acc(pr, ta, (int64_t)clock - (int64_t)back - 2);
         lo = moveq_acc(pr, ta, (int64_t)clock + dt + 2);
     }
-    num = moveq_r2((int64_t)hi, r);
-    /* (A - p r^2) dt / (K + (2 p r + p) dt), the denominator rounded up */
-    den = K + ((((hi * (uint32_t)r) >> 29) + 1u) + hi) * dt;
-    ps[0] = (int32_t)(((int64_t)A > (int64_t)num) ? moveq_ratio(((uint64_t)A - num) * dt, den) : 0u);
-    num = (lo < 0) ? moveq_r2(-lo, r) : 0u;
-    ps[1] = (int32_t)(((int64_t)A > (int64_t)num) ? moveq_ratio(((uint64_t)A - num) * dt, K) : 0u);
+    if (rise != 0) {
+        /* (A - p r^2) dt / (K + (2 p r + p) dt), p = max(hi, 0), the denominator rounded up */
+        const uint64_t p = (hi > 0) ? (uint64_t)hi : 0u;
+        num = moveq_r2((int64_t)p, r);
+        den = K + ((((p * (uint32_t)r) >> 29) + 1u) + p) * dt;
+    } else {
+        /* (A + lo r^2) dt / K */
+        num = (lo < 0) ? moveq_r2(-lo, r) : 0u;
+        den = K;
+    }
+    return (int32_t)(((int64_t)A > (int64_t)num) ? moveq_ratio(((uint64_t)A - num) * dt, den) : 0u);
 }
 
-/* r after a period whose tracker state was OK (ok 1) or not, within its
- * largest rise up and fall dn, and the ceiling's update (dh_move.c's
- * method) */
-static DH_NOINLINE dh_q30 moveq_feed_next(dh_move_q *mv, uint32_t dt, int ok, dh_q30 up, dh_q30 dn)
+/* the goal of r after a period whose tracker state was OK (ok 1) or not,
+ * and the ceiling's update (dh_move.c's method) */
+static DH_NOINLINE dh_q30 moveq_feed_goal(dh_move_q *mv, uint32_t dt, int ok)
 {
     const dh_q30 r = mv->feed;
     dh_q30 goal, c = mv->fcap;
@@ -303,8 +304,7 @@ static DH_NOINLINE dh_q30 moveq_feed_next(dh_move_q *mv, uint32_t dt, int ok, dh
         mv->lag = 1u;
     }
     mv->fcap = c;
-    if (goal > r) return ((int64_t)r + up < goal) ? r + up : goal;
-    return ((int64_t)r - dn > goal) ? r - dn : goal;
+    return goal;
 }
 
 dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh_move_report_q *rep)
@@ -322,10 +322,14 @@ dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh
         mv->lag = 0u;   /* at full feed and ceiling: r stays 1, no bound needed */
         moveq_tick(mv, DH_Q30_ONE, dt);
     } else {
-        /* the bounds and r's update called from here, one level down,
-         * with mv->ps their workspace (the 256 B guard) */
-        dh_motion_feed_bounds_q_(&mv->prof[0], mv->prof[0].a, mv->clock, mv->feed, dt, mv->ps);
-        mv->feed = moveq_feed_next(mv, dt, ok, mv->ps[0], mv->ps[1]);
+        /* the goal, the bound of the change towards it and r's update
+         * called from here, one level down (the 256 B guard) */
+        const dh_q30 goal = moveq_feed_goal(mv, dt, ok), r = mv->feed;
+        const int32_t x = dh_motion_feed_bound_q_(&mv->prof[0], mv->prof[0].a, mv->clock, r, dt, goal > r);
+        if (goal > r)
+            mv->feed = ((int64_t)r + x < goal) ? r + x : goal;
+        else
+            mv->feed = ((int64_t)r - x > goal) ? r - x : goal;
         moveq_tick(mv, mv->feed, dt);
     }
     rep->clock = mv->clock;

@@ -23,7 +23,7 @@
  * queue's own (1 but during a stop or a resume). The commanded velocity
  * is X' r (within the plan's, so within its limits) and the acceleration
  * X'' r^2 + X' r', which r keeps within the limit A by changing each
- * period by at most the bounds of dh_motion_feed_bounds_q_ (dh_move_q.c:
+ * period by at most the bound of dh_motion_feed_bound_q_ (dh_move_q.c:
  * the plan's s'' sampled over the last and the next period, taken along
  * the travel). A joint move takes the least bound over its joints, each
  * with its own A = amax_i - floor(amax_i / 1024), the planning's limit.
@@ -207,24 +207,25 @@ static DH_NOINLINE dh_status queueq_joint_plan(dh_queue_q *qu)
 
 /* A joint move's time warp r after a stop or a resume: towards 0 while
  * braking, else towards 1, by at most the least bound over its joints
- * (the file comment); mv->ps is the sample's workspace */
+ * (the file comment) */
 static DH_NOINLINE void queueq_warp(dh_queue_q *qu, uint32_t dt)
 {
-    dh_move_q *const mv = &qu->mv;
+    const dh_move_q *mv = &qu->mv;
     const dh_queue_item_q *it = &qu->items[qu->head];
     const dh_q30 r = qu->r;
-    dh_q30 up = DH_Q30_ONE, dn = DH_Q30_ONE;
+    const int rise = qu->phase != (uint32_t)DH_QUEUE_BRAKE;
+    int32_t x = DH_Q30_ONE;
     uint32_t i;
     for (i = 0u; i < mv->n; i++) {
+        int32_t b;
         if (mv->prof[i].d == 0) continue;
-        dh_motion_feed_bounds_q_(&mv->prof[i], it->amax[i] - (it->amax[i] >> 10), mv->clock, r, dt, mv->ps);
-        if (mv->ps[0] < up) up = mv->ps[0];
-        if (mv->ps[1] < dn) dn = mv->ps[1];
+        b = dh_motion_feed_bound_q_(&mv->prof[i], it->amax[i] - (it->amax[i] >> 10), mv->clock, r, dt, rise);
+        if (b < x) x = b;
     }
-    if (qu->phase == (uint32_t)DH_QUEUE_BRAKE)
-        qu->r = (r > dn) ? r - dn : 0;
+    if (rise == 0)
+        qu->r = (r > x) ? r - x : 0;
     else
-        qu->r = (DH_Q30_ONE - r > up) ? r + up : DH_Q30_ONE;
+        qu->r = (DH_Q30_ONE - r > x) ? r + x : DH_Q30_ONE;
 }
 
 /* One period of the running joint move: its clock advanced by r dt (the
