@@ -345,13 +345,15 @@ static void queueq_done(dh_queue_q *qu)
 
 dh_status dh_queue_advance_q(dh_queue_q *qu, dh_track_state state, dh_queue_report_q *rep)
 {
-    dh_move_q *const mv = &qu->mv;
-    const uint32_t c0 = mv->clock;
+    dh_move_q *mv;
+    uint32_t c0;
+    dh_q30 feed = DH_Q30_ONE;
     int done = 0, held = 1;
     DH_ASSERT(qu != NULL && rep != NULL);
     if (qu->pend == 0u) return DH_ERR_ARG;
     if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
-    rep->feed = DH_Q30_ONE;
+    mv = &qu->mv;
+    c0 = mv->clock;
     if (qu->started != 0u && mv->kind == (uint32_t)DH_MOVE_PATH) {
         if (qu->phase != (uint32_t)DH_QUEUE_STOPPED) {
             /* braking: the feed override falls as if the tracker lagged,
@@ -362,13 +364,14 @@ dh_status dh_queue_advance_q(dh_queue_q *qu, dh_track_state state, dh_queue_repo
             done = qu->mrep.done;
         }
         held = state != DH_TRACK_OK || qu->phase == (uint32_t)DH_QUEUE_STOPPED;
-        rep->feed = mv->feed;
+        feed = mv->feed;
     } else if (qu->started != 0u) {
         done = mv->clock >= mv->dur;
         held = qu->phase == (uint32_t)DH_QUEUE_STOPPED;
-        rep->feed = qu->r;
+        feed = qu->r;
     }
     qu->pend = 0u;
+    rep->feed = feed;
     rep->seq = qu->seq;
     rep->clock = (qu->started != 0u) ? mv->clock : 0u;
     if (done != 0)
