@@ -34,7 +34,9 @@ Groups:
             finite differences here, the tool on the line and within one
             period's travel, each end reached (double FK here); exit 3 and
             the period cap for a line beyond reach; exit 2, empty stdout and
-            the message for each bad argument
+            the message for each bad argument; move --fixed (the fixed
+            queue): the UR5 against the float run, a blended square, the
+            Puma's lagging line and a joint move back (exit 3)
   messages  the messages that name a cause: ik robot size and --w-rot,
             non-rigid tool/base/target, fk --fixed constants, projective
             EXPR in axis/euler/quat, --q0 clamping, '-' for stdin
