@@ -201,20 +201,21 @@ dh_status dh_move_target_q(const dh_move_q *mv, dh_frame_q *T)
 static uint32_t moveq_ratio(uint64_t n, uint64_t d)
 {
     static const unsigned char sh[4] = { 16u, 8u, 4u, 2u };
+    uint64_t nn = n, de = d;
     uint32_t r, dd, q = 0u, k;
-    if (n >= d) return (uint32_t)DH_Q30_ONE;
+    if (nn >= de) return (uint32_t)DH_Q30_ONE;
     for (k = 0u; k < 4u; k++) {
-        if ((d >> (31u + sh[k])) != 0u) {
-            n >>= sh[k];
-            d = (d >> sh[k]) + 1u;
+        if ((de >> (31u + sh[k])) != 0u) {
+            nn >>= sh[k];
+            de = (de >> sh[k]) + 1u;
         }
     }
-    while ((d >> 31) != 0u) {
-        n >>= 1;
-        d = (d >> 1) + 1u;
+    while ((de >> 31) != 0u) {
+        nn >>= 1;
+        de = (de >> 1) + 1u;
     }
-    r = (uint32_t)n;
-    dd = (uint32_t)d;
+    r = (uint32_t)nn;
+    dd = (uint32_t)de;
     for (k = 0u; k < 30u; k++) {
         r <<= 1;
         q <<= 1;
@@ -266,7 +267,8 @@ DH_NOINLINE int32_t dh_motion_feed_bound_q_(const dh_profile_q *pr, int32_t A, u
     if (u == 0u) return DH_Q30_ONE;
     if (pr->kind == (uint32_t)DH_PROFILE_TRAP) {
         if (u <= ta) {
-            const uint64_t ku = (uint64_t)pr->a * (u + 1u);
+            const uint32_t u1 = u + 1u;
+            const uint64_t ku = (uint64_t)pr->a * u1;
             if (ku < K) K = ku;
         }
         hi = moveq_acc(pr, ta, (int64_t)clock - (int64_t)back - 2);

@@ -72,7 +72,7 @@ dh_status dh_queue_init_q(dh_queue_q *qu, dh_queue_item_q *items, uint32_t cap)
 {
     DH_ASSERT(qu != NULL && items != NULL);
     if (cap == 0u) return DH_ERR_ARG;
-    memset(qu, 0, sizeof *qu);
+    (void)memset(qu, 0, sizeof *qu);
     qu->items = items;
     qu->cap = cap;
     qu->phase = (uint32_t)DH_QUEUE_RUN;
@@ -176,8 +176,8 @@ static DH_NOINLINE dh_status queueq_joint_fill(dh_queue_q *qu, const int32_t *q0
         mv->q0[i] = q0[i];
         mv->q1[i] = it->q1[i];
         mv->prof[i].d = (int32_t)d;
-        mv->prof[i].v = it->vmax[i] - (it->vmax[i] >> 10);
-        mv->prof[i].a = it->amax[i] - (it->amax[i] >> 10);
+        mv->prof[i].v = it->vmax[i] - (int32_t)((uint32_t)it->vmax[i] >> 10);
+        mv->prof[i].a = it->amax[i] - (int32_t)((uint32_t)it->amax[i] >> 10);
         mv->prof[i].j = 0;
     }
     mv->n = it->n;
@@ -217,9 +217,10 @@ static DH_NOINLINE void queueq_warp(dh_queue_q *qu, uint32_t dt)
     int32_t x = DH_Q30_ONE;
     uint32_t i;
     for (i = 0u; i < mv->n; i++) {
-        int32_t b;
+        int32_t b, A;
         if (mv->prof[i].d == 0) continue;
-        b = dh_motion_feed_bound_q_(&mv->prof[i], it->amax[i] - (it->amax[i] >> 10), mv->clock, r, dt, rise);
+        A = it->amax[i] - (int32_t)((uint32_t)it->amax[i] >> 10);
+        b = dh_motion_feed_bound_q_(&mv->prof[i], A, mv->clock, r, dt, rise);
         if (b < x) x = b;
     }
     if (rise == 0)
@@ -257,10 +258,12 @@ static DH_NOINLINE void queueq_joint_step(dh_queue_q *qu, uint32_t dt, int32_t *
  * range (dh_queue_target_q refuses it) */
 static DH_NOINLINE int32_t queueq_s(dh_move_q *mv)
 {
+    uint32_t s;
     if (mv->e > 30u || mv->clock > mv->dur) return -1;
     if (dh_profile_eval_q(&mv->prof[0], mv->clock, &mv->ps[0], &mv->ps[1], &mv->ps[2]) != DH_OK) return -1;
     if (mv->ps[0] < 0 || (uint32_t)mv->ps[0] > (1u << mv->e)) return -1;
-    return (int32_t)((uint32_t)mv->ps[0] << (30u - mv->e));
+    s = (uint32_t)mv->ps[0] << (30u - mv->e);
+    return (int32_t)s;
 }
 
 dh_status dh_queue_target_q(dh_queue_q *qu, const dh_track_q *t, dh_queue_cmd_q *cmd)
@@ -292,7 +295,7 @@ dh_status dh_queue_target_q(dh_queue_q *qu, const dh_track_q *t, dh_queue_cmd_q 
         st = dh_path_eval_q(&qu->mv.path, s, &cmd->T);
         if (st != DH_OK) return st;
         cmd->sync = qu->sync;
-        if (qu->sync != 0u) memcpy(cmd->q, qu->hq, sizeof cmd->q);
+        if (qu->sync != 0u) (void)memcpy(cmd->q, qu->hq, sizeof cmd->q);
         qu->sync = 0u;
     } else if (kind == (uint32_t)DH_MOVE_JOINT) {
         if (qu->started != 0u) {
@@ -301,7 +304,7 @@ dh_status dh_queue_target_q(dh_queue_q *qu, const dh_track_q *t, dh_queue_cmd_q 
                 queueq_warp(qu, t->dt_us);
             queueq_joint_step(qu, t->dt_us, cmd->q);
         } else {
-            memcpy(cmd->q, qu->hq, sizeof cmd->q);
+            (void)memcpy(cmd->q, qu->hq, sizeof cmd->q);
         }
         cmd->sync = 0u;
     } else {
@@ -369,14 +372,15 @@ dh_status dh_queue_advance_q(dh_queue_q *qu, dh_track_state state, dh_queue_repo
         done = mv->clock >= mv->dur;
         held = qu->phase == (uint32_t)DH_QUEUE_STOPPED;
         feed = qu->r;
+    } else {
+        held = 1;   /* nothing running: the command at rest */
     }
     qu->pend = 0u;
     rep->feed = feed;
     rep->seq = qu->seq;
     rep->clock = (qu->started != 0u) ? mv->clock : 0u;
-    if (done != 0)
-        queueq_done(qu);
-    else if (qu->phase == (uint32_t)DH_QUEUE_BRAKE && qu->started != 0u && queueq_still(qu, c0))
+    if (done != 0) queueq_done(qu);
+    if (done == 0 && qu->phase == (uint32_t)DH_QUEUE_BRAKE && qu->started != 0u && queueq_still(qu, c0))
         qu->phase = (uint32_t)DH_QUEUE_STOPPED;
     rep->held = held;
     rep->done = done;
