@@ -28,6 +28,8 @@
 
 /** Most segments on one command line. */
 #define MOVE_MAX_SEG 64
+/* items of the fixed queue (move --fixed): segments are appended as it drains */
+#define MOVE_QUEUE_CAP 4u
 /** Most control periods of one move (the output is kept in memory). */
 #define MOVE_MAX_PERIODS 1000000.0
 /** The cap on the periods of a line or arc segment: MOVE_CAP_FACTOR times
@@ -547,34 +549,6 @@ static int move_fixed_setup(const move_args *a, move_plan *p, uint32_t *us, int3
     return 0;
 }
 
-/* joint segment i (fixed) from q (updated) */
-static int run_joint_q(move_plan *p, unsigned i, const move_seg *s, dh_move_q *mv, uint32_t us, int32_t *q)
-{
-    int32_t q1[DH_MAX_JOINTS], vq[DH_MAX_JOINTS], aq[DH_MAX_JOINTS];
-    double v[DH_MAX_JOINTS], cap, k = 0.0;
-    dh_move_report_q rep;
-    unsigned j;
-    int rc;
-    dh_status st;
-    if ((rc = cli_parse_list(s->a, p->r.n, v, "--joint")) != 0) return rc;
-    if ((rc = move_to_q(&p->r, v, "--joint", q1)) != 0) return rc;
-    for (j = 0; j < p->r.n; j++) {
-        vq[j] = p->r.joint[j].vmax_q;
-        aq[j] = p->r.joint[j].amax_q;
-    }
-    st = dh_move_joint_q(mv, p->r.n, q, q1, vq, aq, NULL);
-    if (st != DH_OK) return seg_error(i, s, "the fixed-point joint move cannot be planned", dh_status_str(st));
-    cap = move_cap(p, (float)(mv->dur * 1e-6));
-    do {
-        if (k >= cap) return cap_reached(i, s, cap);
-        k += 1.0;
-        st = dh_move_joint_step_q(mv, us, q, &rep);
-        if (st != DH_OK) return seg_error(i, s, "dh_move_joint_step_q", dh_status_str(st));
-        if ((rc = move_line_q(p, q, DH_TRACK_OK)) != 0) return rc;
-    } while (!rep.done);
-    return 0;
-}
-
 /* the fixed path of line or arc segment i from F: its end from the float
  * plan's end frame, an arc's via point its float arc's midpoint */
 static int plan_path_q(move_plan *p, unsigned i, const move_seg *s, const dh_frame_q *F, dh_path_q *path,
@@ -601,26 +575,88 @@ static int plan_path_q(move_plan *p, unsigned i, const move_seg *s, const dh_fra
     return 0;
 }
 
-/* line or arc segment i (fixed), tracked from the tracker's configuration */
-static int run_path_q(move_plan *p, unsigned i, const move_seg *s, dh_move_q *mv, const dh_path_q *path,
-                      const dh_cart_limits_q *lim, dh_track_q *t, int32_t *q)
+/* segment i (fixed, a joint move or a line or arc) appended to the fixed
+ * queue qu, from F (updated to its end: B, or the FK of a joint move's
+ * end) */
+static int queue_add_q(move_plan *p, unsigned i, const move_seg *s, dh_queue_q *qu, const dh_cart_limits_q *lim,
+                       dh_frame_q *F)
 {
-    dh_move_report_q rep;
-    dh_track_report_q trep;
-    dh_frame_q T;
-    double cap, k = 0.0;
+    static dh_path_q path;
+    int32_t q1[DH_MAX_JOINTS], vq[DH_MAX_JOINTS], aq[DH_MAX_JOINTS];
+    double v[DH_MAX_JOINTS];
+    dh_frame_q B;
+    unsigned j;
     int rc;
-    dh_status st = dh_move_path_q(mv, path, lim);
+    dh_status st;
+    if (s->kind == SEG_JOINT) {
+        if ((rc = cli_parse_list(s->a, p->r.n, v, "--joint")) != 0) return rc;
+        if ((rc = move_to_q(&p->r, v, "--joint", q1)) != 0) return rc;
+        for (j = 0; j < p->r.n; j++) {
+            vq[j] = p->r.joint[j].vmax_q;
+            aq[j] = p->r.joint[j].amax_q;
+        }
+        st = dh_queue_add_joint_q(qu, p->r.n, q1, vq, aq);
+        if (st != DH_OK) return seg_error(i, s, "the fixed-point joint move cannot be queued", dh_status_str(st));
+        if ((st = dh_fk_q(&p->r, q1, F)) != DH_OK) return seg_error(i, s, "FK of the end", dh_status_str(st));
+        return 0;
+    }
+    if ((rc = plan_path_q(p, i, s, F, &path, &B)) != 0) return rc;
+    st = dh_queue_add_path_q(qu, &path, lim);
     if (st != DH_OK) return seg_error(i, s, "the fixed-point move along the path cannot be planned", path_why(st));
-    cap = move_cap(p, (float)(mv->dur * 1e-6));
-    do {
-        if (k >= cap) return cap_reached(i, s, cap);
+    *F = B;
+    return 0;
+}
+
+/* Segments i0 .. i1 - 1 (fixed; joint moves, and lines and arcs not
+ * blended) run by the fixed queue (dh_queue_q), appended as it drains:
+ * joint commands go to the robot as they are, path frames through the
+ * tracker t (started again at the last joint command when the queue says
+ * so), whose lagging periods slow the move down (its feed override). F is
+ * where the first starts (updated to the last end); t and q end at the
+ * last move's end, the tracker started there after a joint move. */
+static int run_queue_q(move_plan *p, const move_args *a, unsigned i0, unsigned i1, dh_frame_q *F,
+                       const dh_cart_limits_q *lim, dh_track_q *t, const dh_ikc_model_q *mp, int32_t *q)
+{
+    static dh_queue_item_q items[MOVE_QUEUE_CAP];
+    static dh_queue_q qu;
+    dh_queue_cmd_q cmd;
+    dh_queue_report_q rep;
+    dh_track_report_q trep;
+    double cap, k = 0.0;
+    unsigned next = i0, at;
+    uint32_t seq = 0u;
+    int rc;
+    dh_status st = dh_queue_init_q(&qu, items, MOVE_QUEUE_CAP);
+    if (st != DH_OK) return cli_error("move --fixed: the queue", dh_status_str(st));
+    for (;;) {
+        dh_track_state state = DH_TRACK_OK;
+        while (next < i1 && qu.count < qu.cap) {
+            if ((rc = queue_add_q(p, next, &a->seg[next], &qu, lim, F)) != 0) return rc;
+            next++;
+        }
+        if (qu.count == 0u) break;
+        at = i0 + qu.seq;
+        if (qu.seq != seq) k = 0.0;
+        seq = qu.seq;
+        cap = move_cap(p, qu.started ? (float)(qu.mv.dur * 1e-6) : 0.0f);
+        if (k >= cap) return cap_reached(at, &a->seg[at], cap);
         k += 1.0;
-        if ((st = dh_move_target_q(mv, &T)) == DH_OK) st = dh_track_step_q(t, &T, q, &trep);
-        if (st == DH_OK) st = dh_move_advance_q(mv, t->dt_us, trep.state, &rep);
-        if (st != DH_OK) return seg_error(i, s, "a control period failed", dh_status_str(st));
-        if ((rc = move_line_q(p, q, (int)trep.state)) != 0) return rc;
-    } while (!rep.done);
+        st = dh_queue_target_q(&qu, t, &cmd);
+        if (st != DH_OK) return seg_error(at, &a->seg[at], "the fixed-point queue cannot start it", dh_status_str(st));
+        if (cmd.kind == DH_MOVE_PATH) {
+            if (cmd.sync) st = dh_track_init_q(t, &p->r, mp, cmd.q, t->dt_us);
+            if (st == DH_OK) st = dh_track_step_q(t, &cmd.T, q, &trep);
+            state = trep.state;
+        } else if (cmd.kind == DH_MOVE_JOINT) {
+            memcpy(q, cmd.q, p->r.n * sizeof q[0]);
+        }
+        if (st == DH_OK) st = dh_queue_advance_q(&qu, state, &rep);
+        if (st != DH_OK) return seg_error(at, &a->seg[at], "a control period failed", dh_status_str(st));
+        if ((rc = move_line_q(p, q, (int)state)) != 0) return rc;
+    }
+    /* after a joint move the tracker starts again at its end, at rest */
+    if (qu.hold == DH_MOVE_JOINT && (st = dh_track_init_q(t, &p->r, mp, q, t->dt_us)) != DH_OK)
+        return cli_error("move --fixed: the tracker", dh_status_str(st));
     return 0;
 }
 
@@ -670,20 +706,19 @@ static int run_blend_q(move_plan *p, const move_args *a, unsigned i0, unsigned i
     return 0;
 }
 
-/* move --fixed: every segment through the fixed executor and tracker */
+/* move --fixed: every segment through the fixed queue and tracker, runs
+ * of lines with --blend through the fixed blended sequence */
 static int move_run_fixed(const move_args *a, move_plan *p)
 {
     static dh_ikc_model_q m;
     static dh_track_q t;
-    static dh_move_q mv;
-    static dh_path_q path;
     const dh_ikc_model_q *mp = NULL;
     int32_t q[DH_MAX_JOINTS];
     dh_cart_limits_q lim;
-    dh_frame_q F, B;
+    dh_frame_q F;
     uint32_t us = 0u;
-    unsigned i;
-    int tracking = 0, rc;
+    unsigned i, e;
+    int rc;
     dh_status st;
     if ((rc = move_fixed_setup(a, p, &us, q, &lim, &m, &mp)) != 0) return rc;
     for (i = 0; i < p->r.n; i++) {
@@ -693,32 +728,19 @@ static int move_run_fixed(const move_args *a, move_plan *p)
     }
     if (cli_out_add(&p->out, ",status\n")) return EXIT_ERR;
     if ((st = dh_fk_q(&p->r, q, &F)) != DH_OK) return cli_error("move --fixed: FK of --q0", dh_status_str(st));
-    for (i = 0; i < a->nseg; i++) {
-        const move_seg *s = &a->seg[i];
-        if (s->kind == SEG_JOINT) {
-            if ((rc = run_joint_q(p, i, s, &mv, us, q)) != 0) return rc;
-            if ((st = dh_fk_q(&p->r, q, &F)) != DH_OK) return seg_error(i, s, "FK of the end", dh_status_str(st));
-            tracking = 0;
-            continue;
-        }
-        /* the tracker starts (again) where the robot is at rest */
-        if (!tracking) {
-            st = dh_track_init_q(&t, &p->r, mp, q, us);
-            if (st == DH_ERR_LIMIT) return cli_error("--q0", "a joint value is outside its limits");
-            if (st != DH_OK) return cli_error("move --fixed: the tracker", dh_status_str(st));
-        }
-        tracking = 1;
-        if (s->kind == SEG_LINE && p->blend >= 0.0f) {
+    st = dh_track_init_q(&t, &p->r, mp, q, us);
+    if (st == DH_ERR_LIMIT) return cli_error("--q0", "a joint value is outside its limits");
+    if (st != DH_OK) return cli_error("move --fixed: the tracker", dh_status_str(st));
+    for (i = 0; i < a->nseg; i = e) {
+        e = i + 1u;
+        if (a->seg[i].kind == SEG_LINE && p->blend >= 0.0f) {
             /* with --blend: this line and the lines right after it, blended */
-            unsigned e = i + 1u;
             while (e < a->nseg && a->seg[e].kind == SEG_LINE) e++;
             if ((rc = run_blend_q(p, a, i, e, &F, &lim, &t, q)) != 0) return rc;
-            i = e - 1u;
             continue;
         }
-        if ((rc = plan_path_q(p, i, s, &F, &path, &B)) != 0) return rc;
-        if ((rc = run_path_q(p, i, s, &mv, &path, &lim, &t, q)) != 0) return rc;
-        F = B;
+        while (e < a->nseg && !(a->seg[e].kind == SEG_LINE && p->blend >= 0.0f)) e++;
+        if ((rc = run_queue_q(p, a, i, e, &F, &lim, &t, mp, q)) != 0) return rc;
     }
     return 0;
 }

@@ -193,7 +193,15 @@ static dh_q30 bt_sq, bt_cq;
 static dh_q16 bt_aq;
 static float bt_qf[BT_NSET][6];
 static int32_t bt_qq[BT_NSET][6];
-static dh_robot bt_puma_m, bt_puma_mm;
+static dh_robot bt_puma_mm;
+/* the float robot, whose storage bt_queue_q's queue takes once the float
+ * benchmarks of a move are done (bt_track: nothing reads the float robot
+ * after them until the next move builds it again) */
+static union {
+    dh_robot r;
+    dh_queue_q qu;
+} bt_puma_m_u;
+#define bt_puma_m (bt_puma_m_u.r)
 static float bt_J[36];
 static uint32_t bt_status;   /* OR of every status returned in the timed loops */
 static dh_vec4_f32 bt_p4[BT_NSET], bt_v4out;   /* homogeneous points, w in [0.5, 2) */
@@ -725,6 +733,7 @@ static union {
                 dh_path_q lines[2];
                 dh_blend_seg_q seg[2];
             } b;
+            dh_queue_item_q qit[1];   /* bt_queue_q's item (its queue in bt_puma_m_u) */
         } u;
 #if BT_IKC_FLOAT
         dh_ikc_model_f32 mf;
@@ -1378,6 +1387,25 @@ static BT_NOINLINE void bt_period_f32(const bt_move *mv, dh_robot *r)
 }
 #endif
 
+/* the fixed robot of mv in mm and its closed-form model, the line's ends
+ * A = FK(qa) and B = FK(qa + dq / 2), and q = qa (the tracker's start);
+ * the statuses or'ed */
+static uint32_t bt_line_q(const bt_move *mv, dh_robot *r, dh_frame_q *A, dh_frame_q *B, int32_t *q)
+{
+    uint32_t st, j;
+    st = bt_move_robot(mv, r, 1000.0f);
+    st |= (uint32_t)dh_ikc_analyse_q(r, &bt_mem.t.mq);
+    for (j = 0; j < 6u; j++) {
+        q[j] = bt_to_q16(mv->qa[j] + 0.5f * mv->dq[j]);
+    }
+    st |= (uint32_t)dh_fk_q(r, q, B);
+    for (j = 0; j < 6u; j++) {
+        q[j] = bt_to_q16(mv->qa[j]);
+    }
+    st |= (uint32_t)dh_fk_q(r, q, A);
+    return st;
+}
+
 /* twin: bt_period_f32 on the fixed types and calls, the robot in mm
  * (0.25 m/s and 2 m/s^2 as 250 mm/s and 2000 mm/s^2): the period timed
  * whole, and within it the tracker call on its own ("dh_track_step_q
@@ -1395,16 +1423,7 @@ static BT_NOINLINE void bt_period_q(const bt_move *mv, dh_robot *r)
     uint32_t st, n = 0u, j;
     uint64_t t0, t1, t2, t3;
     int32_t q[6];
-    st = bt_move_robot(mv, r, 1000.0f);
-    st |= (uint32_t)dh_ikc_analyse_q(r, &bt_mem.t.mq);
-    for (j = 0; j < 6u; j++) {
-        q[j] = bt_to_q16(mv->qa[j] + 0.5f * mv->dq[j]);
-    }
-    st |= (uint32_t)dh_fk_q(r, q, &B);
-    for (j = 0; j < 6u; j++) {
-        q[j] = bt_to_q16(mv->qa[j]);
-    }
-    st |= (uint32_t)dh_fk_q(r, q, &A);
+    st = bt_line_q(mv, r, &A, &B, q);
     st |= (uint32_t)dh_path_line_q(&m->path, &A, &B);
     st |= (uint32_t)dh_move_path_q(m, &m->path, &lim);
     st |= (uint32_t)dh_track_init_q(t, r, &bt_mem.t.mq, q, 1000u);
@@ -1498,6 +1517,74 @@ static BT_NOINLINE void bt_blend_q(const bt_move *mv, dh_robot *r)
            (unsigned long)states[2], (unsigned long)st);
 }
 
+/* the "BT track" line of n periods timed in *a with the tracker's states
+ * (robot in mm), the counter's own cost measured over as many intervals */
+static void bt_track_row(const char *name, const char *robot, uint32_t n, const bt_acc *a, const uint32_t states[3],
+                         uint32_t st)
+{
+    bt_acc nul = { 0u, 0u };
+    uint64_t t0, t1;
+    uint32_t j;
+    for (j = 0; j < n; j++) {
+        t0 = bt_now();
+        t1 = bt_now();
+        bt_acc_add(&nul, t0, t1);
+    }
+    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|%lu|%lu|%lu|%lu\n", name, robot, "mm", (unsigned long)n,
+           (unsigned long long)a->sum, (unsigned long long)nul.sum, (unsigned long long)a->max,
+           (unsigned long)states[0], (unsigned long)states[1], (unsigned long)states[2], (unsigned long)st);
+}
+
+/* bt_period_q's line through the fixed queue (dh_queue_q): a period is
+ * dh_queue_target_q, dh_track_step_q on its frame and dh_queue_advance_q,
+ * timed whole ("queue period q"); the queue is stopped at the 100th period
+ * and resumed once at rest, so the periods of the brake and of the resume
+ * (the feed override's bounds each period) are among those timed */
+static BT_NOINLINE void bt_queue_q(const bt_move *mv, dh_robot *r)
+{
+    dh_track_q *const t = &bt_mem.t.tq;
+    dh_queue_q *const qu = &bt_puma_m_u.qu;
+    const dh_cart_limits_q lim = { 250 << 16, 2000 << 16, 90 << 16, 360 << 16 };
+    dh_track_report_q rep;
+    dh_queue_report_q qrep;
+    dh_queue_cmd_q cmd;
+    dh_frame_q A, B;
+    bt_acc aper = { 0u, 0u };
+    uint32_t states[3] = { 0u, 0u, 0u };
+    uint32_t st, n = 0u;
+    uint64_t t0, t1;
+    int32_t q[6];
+    st = bt_line_q(mv, r, &A, &B, q);
+    st |= (uint32_t)dh_queue_init_q(qu, bt_mem.t.u.qit, 1u);
+    st |= (uint32_t)dh_path_line_q(&qu->mv.path, &A, &B);
+    st |= (uint32_t)dh_queue_add_path_q(qu, &qu->mv.path, &lim);
+    st |= (uint32_t)dh_track_init_q(t, r, &bt_mem.t.mq, q, 1000u);
+    qrep.last = 0;
+    while (st == 0u && qrep.last == 0 && n < 4u * BT_NTRK) {
+        if (n == 100u) {
+            st |= (uint32_t)dh_queue_stop_q(qu);
+        }
+        if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) {
+            st |= (uint32_t)dh_queue_resume_q(qu);
+        }
+        t0 = bt_now();
+        st |= (uint32_t)dh_queue_target_q(qu, t, &cmd);
+        rep.state = DH_TRACK_OK;
+        if (cmd.kind == (uint32_t)DH_MOVE_PATH) {
+            st |= (uint32_t)dh_track_step_q(t, &cmd.T, q, &rep);
+        }
+        st |= (uint32_t)dh_queue_advance_q(qu, rep.state, &qrep);
+        t1 = bt_now();
+        bt_acc_add(&aper, t0, t1);
+        states[rep.state]++;
+        n++;
+    }
+    if (qrep.last == 0) {
+        st |= 0x100u;   /* the queue did not finish within 4 x BT_NTRK periods */
+    }
+    bt_track_row("queue period q", mv->robot, n, &aper, states, st);
+}
+
 /* Runs after the sanity checks: the micro:bit's RAM has no room for more
  * robots, so each move's robot is built in the storage of bt_puma_m (float,
  * metres) and bt_puma_mm (fixed, mm), which nothing uses afterwards. A
@@ -1521,6 +1608,7 @@ static void bt_track(void)
         bt_track_q(&bt_moves[m], &bt_puma_mm, &null);
         bt_period_q(&bt_moves[m], &bt_puma_mm);
         bt_blend_q(&bt_moves[m], &bt_puma_mm);
+        bt_queue_q(&bt_moves[m], &bt_puma_mm);
     }
 }
 

@@ -51,6 +51,9 @@ TRACK_TARGETS = [
      "period of a line move, float, Puma 560, Cortex-M4F"),
     ("m0", "move period q (UR5, mm)", 45000, "period of a line move, fixed, UR5, Cortex-M0"),
     ("m0", "move period q (Puma 560, mm)", 45000, "period of a line move, fixed, Puma 560, Cortex-M0"),
+    ("m0", "queue period q (UR5, mm)", 45000, "period of a queued line, stopped and resumed, fixed, UR5, Cortex-M0"),
+    ("m0", "queue period q (Puma 560, mm)", 45000,
+     "period of a queued line, stopped and resumed, fixed, Puma 560, Cortex-M0"),
 ]
 
 # dhmath operation -> peer operation
@@ -545,6 +548,7 @@ def main():
         lim_txt = ("`%s` + %d" % (ref[0].split()[0], ref[1])) if isinstance(ref, tuple) else "%d" % ref
         code = (name.split()[0] if name.startswith("dh_")
                 else "dh_move_target_f32` + `dh_track_step_f32` + `dh_move_advance_f32" if " f32 " in name
+                else "dh_queue_target_q` + `dh_track_step_q` + `dh_queue_advance_q" if name.startswith("queue ")
                 else "dh_move_target_q` + `dh_track_step_q` + `dh_move_advance_q")
         w("| %s (`%s`) | %s | %s | %s | %s |" % (label, code, lim_txt, " | ".join(cells),
                                                 verdict(None if t2 is None else t2[1], lim2),

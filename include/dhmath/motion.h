@@ -1421,7 +1421,7 @@ typedef struct {
     dh_q30 fcap;                      /**< path move: ceiling of r, Q2.30 in [0, 1] */
     uint32_t e;                       /**< path move: the profile's distance is 2^e (dh_path_move_q) */
     uint32_t lag;                     /**< path move: 1 when the last period was not OK */
-    int32_t ps[3];                    /**< path move: workspace of dh_move_advance_q (s'' high and low near the clock, s') */
+    int32_t ps[3];                    /**< scratch of the fixed queue's evaluations (dh_queue_q.c); unused by the executor */
     uint32_t n;                       /**< joint move: number of joints */
     uint32_t kind;                    /**< a dh_move_kind value */
 } dh_move_q;
@@ -1617,6 +1617,199 @@ dh_status dh_blend_seq_plan_q(dh_blend_seq_q *sq, dh_blend_seg_q *seg, const dh_
  *         changed after planning: the plan keeps every blend inside).
  */
 dh_status dh_blend_seq_eval_q(const dh_blend_seq_q *sq, uint32_t t, dh_frame_q *T);
+
+/* ======================================================================
+ * Fixed-point move queue, stop and resume (dh_queue_q.c)
+ * ==================================================================== */
+
+/**
+ * @brief One queued fixed-point move as its constructor takes it (the
+ *        twin of dh_queue_item_f32; read-only for the user): a joint move
+ *        to q1 (dh_move_joint_q without q0: it starts where the robot is
+ *        when it starts; trapezoids) or a path move (dh_move_path_q, its
+ *        plan checked when appended and made when it starts).
+ */
+typedef struct {
+    dh_path_q path;              /**< path move: the path */
+    dh_cart_limits_q lim;        /**< path move: its limits */
+    dh_profile_q prof;           /**< path move: its profile of s on 2^e (dh_path_move_q) */
+    uint32_t e;                  /**< path move: the profile's exponent */
+    int32_t q1[DH_MAX_JOINTS];   /**< joint move: end configuration */
+    int32_t vmax[DH_MAX_JOINTS]; /**< joint move: velocity limits (LSB/s) */
+    int32_t amax[DH_MAX_JOINTS]; /**< joint move: acceleration limits (LSB/s^2) */
+    uint32_t n;                  /**< joint move: number of joints */
+    uint32_t kind;               /**< DH_MOVE_JOINT or DH_MOVE_PATH */
+} dh_queue_item_q;
+
+/**
+ * @brief A fixed-point queue of moves in a caller-owned array of items and
+ *        the move it is running (the twin of dh_queue_f32; read-only for
+ *        the user, who reads count, seq and phase). Written by
+ *        dh_queue_init_q.
+ */
+typedef struct {
+    dh_queue_item_q *items;      /**< the caller's array (ring buffer) */
+    uint32_t cap;                /**< its number of items */
+    uint32_t head;               /**< index of the oldest queued move (the running one) */
+    uint32_t count;              /**< queued moves, the running one included */
+    uint32_t seq;                /**< moves completed since dh_queue_init_q: the running move's number */
+    uint32_t phase;              /**< a dh_queue_phase value */
+    uint32_t started;            /**< 1 when mv holds the running move's plan */
+    uint32_t hold;               /**< the command repeated at rest: DH_MOVE_NONE, DH_MOVE_JOINT (hq), DH_MOVE_PATH (mv's frame) */
+    uint32_t sync;               /**< 1 when the next path command follows joint commands (dh_queue_cmd_q.sync) */
+    uint32_t pend;               /**< 1 between dh_queue_target_q and dh_queue_advance_q */
+    uint32_t dt;                 /**< control period of the pending target call (us) */
+    dh_q30 r;                    /**< joint move: its time warp d clock / dt, Q2.30 in [0, 1] (path move: mv.feed) */
+    uint32_t rfrac;              /**< joint move: fraction of a us of its warped clock, Q2.30 */
+    dh_q30 fcap;                 /**< path move: the ceiling of its feed override when the stop began */
+    int32_t hq[DH_MAX_JOINTS];   /**< the last joint command */
+    dh_move_report_q mrep;       /**< workspace: the running path move's report */
+    dh_move_q mv;                /**< plan of the running move (or of the last one completed) */
+} dh_queue_q;
+
+/** @brief What the caller does this period (dh_queue_target_q). */
+typedef struct {
+    uint32_t kind;             /**< DH_MOVE_JOINT: command q; DH_MOVE_PATH: track T (dh_track_step_q); DH_MOVE_NONE: nothing to do */
+    uint32_t sync;             /**< kind PATH after joint commands: 1 once, re-initialise the tracker at q (dh_track_init_q) first */
+    int32_t q[DH_MAX_JOINTS];  /**< joint command (n joints); with sync, the last joint command */
+    dh_frame_q T;              /**< frame to track */
+} dh_queue_cmd_q;
+
+/** @brief What one period of the fixed-point queue did. */
+typedef struct {
+    uint32_t seq;   /**< number of the move that ran this period (moves completed before it) */
+    uint32_t clock; /**< its clock after the period (us) */
+    dh_q30 feed;    /**< its time warp r after the period (path move: its feed override), Q2.30 in [0, 1] */
+    int held;       /**< 1 when the clock held (path move, tracker not OK; or waiting for rest, or stopped) */
+    int done;       /**< 1 when the move completed this period */
+    int last;       /**< 1 when the queue is empty after this period (the last move done) */
+    int stopped;    /**< 1 when at rest after a stop (phase DH_QUEUE_STOPPED) */
+} dh_queue_report_q;
+
+/**
+ * @brief Fixed twin of dh_queue_init_f32: an empty queue over the
+ *        caller's array of cap items (phase DH_QUEUE_RUN, seq 0, nothing
+ *        planned, no command to hold).
+ * @param qu output queue.
+ * @param items the caller's array (not copied; owned by the queue until
+ *        it is initialised again).
+ * @param cap its number of items, >= 1.
+ * @return DH_OK; DH_ERR_ARG for cap == 0 (qu untouched).
+ */
+dh_status dh_queue_init_q(dh_queue_q *qu, dh_queue_item_q *items, uint32_t cap);
+
+/**
+ * @brief Appends a joint move of n joints to q1 within vmax and amax
+ *        (trapezoids: the fixed queue has no jerk-limited joint move), as
+ *        dh_move_joint_q plans it when it starts: from the last joint
+ *        command, or after a path move from the tracker's configuration.
+ * @param qu queue from dh_queue_init_q.
+ * @param n number of joints, 1..DH_MAX_JOINTS (the tracker's robot's).
+ * @param q1 end configuration (n; Q16.16 degrees or dh_qpos), within the
+ *        robot's limits.
+ * @param vmax, amax limits (n each, LSB/s and LSB/s^2, > 0).
+ * @return DH_OK; DH_ERR_ARG for n outside 1..DH_MAX_JOINTS or a limit
+ *         <= 0; DH_ERR_LIMIT when the queue holds cap moves already
+ *         (nothing is overwritten). On error qu and its items are untouched.
+ */
+dh_status dh_queue_add_joint_q(dh_queue_q *qu, uint32_t n, const int32_t *q1, const int32_t *vmax,
+                               const int32_t *amax);
+
+/**
+ * @brief Appends a Cartesian move along p within lim (dh_move_path_q):
+ *        it starts at p->A (its clock holds until the tracker is OK
+ *        there) and ends at rest at p->B.
+ * @param qu queue from dh_queue_init_q.
+ * @param p path from dh_path_line_q or dh_path_arc_q (copied).
+ * @param lim Cartesian limits, each > 0 (copied).
+ * @return DH_OK; DH_ERR_LIMIT when the queue is full (checked first);
+ *         DH_ERR_ARG, DH_ERR_OVERFLOW as dh_move_path_q (its profile of s
+ *         is planned here, into the free item). On error qu and its
+ *         queued items are untouched.
+ */
+dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim);
+
+/**
+ * @brief Begins a control period of dt = t->dt_us: the command of the
+ *        running move after this period (joint move) or the frame to
+ *        track this period (path move), starting the next queued move
+ *        when the last one is done.
+ * A period: this call; kind JOINT: the caller commands cmd.q (no tracker
+ * call); kind PATH: with cmd.sync 1 dh_track_init_q(t, ..., cmd.q, ...)
+ * first (the tracker restarts at the last joint command, at rest), then
+ * dh_track_step_q(t, &cmd.T, ...); then dh_queue_advance_q(qu, state,
+ * &rep). A joint move starts from the last joint command, or after a
+ * path move from t->q once every 2 |t->v[i]| <= floor(floor(amax_i dt /
+ * 10^6) dt / 10^6); until then, while stopped and with nothing queued, the
+ * command at rest is repeated (the last joint command or path frame;
+ * DH_MOVE_NONE before any move). A path move starts at once.
+ * Commands keep the move's limits: a joint move's are dh_move_joint_step_q's
+ * at a clock advancing by r dt (r = 1 but after dh_queue_stop_q and
+ * dh_queue_resume_q, r changing by at most what keeps every joint's
+ * acceleration within amax_i (1 - 2^-10)), a path move's dh_move_target_q's
+ * (dh_move_advance_q's feed override). Method and proof: docs/design.md
+ * ("Fixed-point queue").
+ * @param qu queue.
+ * @param t the caller's tracker (read only: q, v, dt_us, r->n).
+ * @param cmd output command.
+ * @return DH_OK; DH_ERR_ARG for a target call already pending or a joint
+ *         move for another number of joints than t's robot has: qu and
+ *         cmd untouched. A status of dh_move_joint_q or dh_move_path_q
+ *         when the running move cannot be planned: it stays queued,
+ *         unstarted, and cmd is untouched.
+ */
+dh_status dh_queue_target_q(dh_queue_q *qu, const dh_track_q *t, dh_queue_cmd_q *cmd);
+
+/**
+ * @brief Ends the control period begun by dh_queue_target_q: state is the
+ *        tracker's state of this period (DH_TRACK_OK after a joint command
+ *        or DH_MOVE_NONE; it is read for path moves only).
+ * Joint move: its clock advanced in dh_queue_target_q. Path move:
+ * dh_move_advance_q (its feed override r falls while the tracker is not
+ * OK and rises while it is; while braking after dh_queue_stop_q it falls
+ * whatever the state). A move is done when its clock reached its
+ * duration (a path move: and the tracker OK at B) and is then removed
+ * from the queue (seq + 1). A brake that reached rest (r 0, or the move
+ * done) sets phase DH_QUEUE_STOPPED.
+ * @param qu queue with a pending target call.
+ * @param state a dh_track_state value.
+ * @param rep report of the period.
+ * @return DH_OK; DH_ERR_ARG for no pending target call or a state that is
+ *         no dh_track_state. On error qu and rep are untouched.
+ */
+dh_status dh_queue_advance_q(dh_queue_q *qu, dh_track_state state, dh_queue_report_q *rep);
+
+/**
+ * @brief Stops: brings the running move to rest along its own path within
+ *        its own limits by the time warp r of its clock falling to 0 (no
+ *        jump in position or velocity): a joint move's r falls by at most
+ *        what keeps every joint's acceleration within amax_i (1 - 2^-10),
+ *        a path move's feed override as when its tracker lags (within the
+ *        profile's peaks, so within lim). Where the plan already
+ *        decelerates at its limit r cannot fall and the move comes to rest
+ *        at its end instead. A move not started, held at its start (clock
+ *        0), at its end or at r == 0, or no move, is at rest: the stop is
+ *        immediate (phase STOPPED). A stop while braking or stopped
+ *        changes nothing. Queued moves stay queued and do not start until
+ *        dh_queue_resume_q.
+ * @param qu queue from dh_queue_init_q (not between target and advance).
+ * @return DH_OK; DH_ERR_ARG for a call between dh_queue_target_q and
+ *         dh_queue_advance_q (qu untouched).
+ */
+dh_status dh_queue_stop_q(dh_queue_q *qu);
+
+/**
+ * @brief Resumes after (or during) a stop: r rises again from where it is
+ *        towards 1 (a path move: towards the ceiling its feed override had
+ *        when the stop began), within the same bounds as its fall, so the
+ *        move continues along its own plan and ends exactly at its end (q1;
+ *        B), and then the rest of the queue runs. Called while running, it
+ *        changes nothing.
+ * @param qu queue from dh_queue_init_q (not between target and advance).
+ * @return DH_OK; DH_ERR_ARG for a call between dh_queue_target_q and
+ *         dh_queue_advance_q (qu untouched).
+ */
+dh_status dh_queue_resume_q(dh_queue_q *qu);
 
 #ifdef __cplusplus
 }

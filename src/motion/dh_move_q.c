@@ -14,8 +14,10 @@
  * Feed override and its ceiling as the float twin (dh_move.c): r falls
  * while the tracker is not OK and rises while it is, each period by at
  * most what keeps the commanded acceleration of s within the profile's
- * peak A, with the profile's s'' taken at the period's ends and at the
- * clock (low and high values lo, p). The rise is the root x of
+ * peak A, with the profile's s'' bounded over the last and the next
+ * period (low and high values lo, p; dh_motion_feed_bound_q_, which the
+ * fixed queue, dh_queue_q.c, uses for its joint moves too). The rise is
+ * the root x of
  * p x^2 + (k + 2 p r) x = A - p r^2 (k = s' / dt) in the float twin; here
  * its lower bound (A - p r^2) / (k + 2 p r + p), which meets the
  * inequality for x <= 1 (p x^2 <= p x) without a square root. The fall is
@@ -56,8 +58,9 @@ static dh_status moveq_period_ok(const dh_move_q *mv, uint32_t kind, uint32_t dt
     return (dt >= 1u && dt <= MOVEQ_DT_MAX) ? DH_OK : DH_ERR_ARG;
 }
 
-/* the clock, its fraction, override and ceiling at the start of a move */
-static void moveq_start(dh_move_q *mv, uint32_t dur)
+/* the clock, its fraction, override and ceiling at the start of a move
+ * (the fixed queue's moves start so too) */
+void dh_motion_start_q_(dh_move_q *mv, uint32_t dur)
 {
     mv->dur = dur;
     mv->clock = 0u;
@@ -134,7 +137,7 @@ dh_status dh_move_joint_q(dh_move_q *mv, uint32_t n, const int32_t *q0, const in
     for (i = 0u; i < n && st == DH_OK; i++) st = dh_profile_stretch_q(&mv->prof[i], T);
     if (st != DH_OK) return st;
     mv->e = 0u;
-    moveq_start(mv, T);
+    dh_motion_start_q_(mv, T);
     mv->kind = (uint32_t)DH_MOVE_JOINT;
     return DH_OK;
 }
@@ -176,7 +179,7 @@ dh_status dh_move_path_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_limits
     if (st != DH_OK) return st;
     mv->path = *p;
     mv->n = 0u;
-    moveq_start(mv, mv->prof[0].T);
+    dh_motion_start_q_(mv, mv->prof[0].T);
     mv->kind = (uint32_t)DH_MOVE_PATH;
     return DH_OK;
 }
@@ -191,18 +194,33 @@ dh_status dh_move_target_q(const dh_move_q *mv, dh_frame_q *T)
     return dh_path_eval_q(&mv->path, (dh_q30)((uint32_t)s << (30u - mv->e)), T);
 }
 
-/* min(floor(n 2^30 / d), 2^30) for d > 0, n >= 0 below 2^62: one quotient
- * bit per step (no division) */
+/* min(floor(n 2^30 / d), 2^30) or up to 2^-29 of it less, for d > 0 and
+ * n >= 0 below 2^63: d scaled below 2^31 (rounded up, n down, so the
+ * quotient never exceeds the exact one), then one quotient bit per step in
+ * 32-bit words (no division) */
 static uint32_t moveq_ratio(uint64_t n, uint64_t d)
 {
-    uint64_t r = n;
-    uint32_t q = 0u, k;
-    if (r >= d) return (uint32_t)DH_Q30_ONE;
+    static const unsigned char sh[4] = { 16u, 8u, 4u, 2u };
+    uint64_t nn = n, de = d;
+    uint32_t r, dd, q = 0u, k;
+    if (nn >= de) return (uint32_t)DH_Q30_ONE;
+    for (k = 0u; k < 4u; k++) {
+        if ((de >> (31u + sh[k])) != 0u) {
+            nn >>= sh[k];
+            de = (de >> sh[k]) + 1u;
+        }
+    }
+    while ((de >> 31) != 0u) {
+        nn >>= 1;
+        de = (de >> 1) + 1u;
+    }
+    r = (uint32_t)nn;
+    dd = (uint32_t)de;
     for (k = 0u; k < 30u; k++) {
         r <<= 1;
         q <<= 1;
-        if (r >= d) {
-            r -= d;
+        if (r >= dd) {
+            r -= dd;
             q |= 1u;
         }
     }
@@ -216,57 +234,62 @@ static uint64_t moveq_r2(int64_t x, dh_q30 r)
     return (xr * (uint32_t)r + 0x3FFFFFFFu) >> 30;
 }
 
-/* the times of the feed's sample: the start of the last period (r dt
- * back), the end of the next one (capped at the duration) and the clock */
-static DH_NOINLINE void moveq_sample_times(const dh_move_q *mv, uint32_t dt, uint32_t t[3])
+/* s'' of the trapezoid pr along the travel at time t (us; before 0 it
+ * counts as +a, after T as -a), its acceleration phases ta long */
+static int32_t moveq_acc(const dh_profile_q *pr, uint32_t ta, int64_t t)
 {
-    const uint64_t back = ((uint64_t)(uint32_t)mv->feed * dt) >> 30;
-    const uint64_t tf = (uint64_t)mv->clock + dt;
-    t[0] = (back < mv->clock) ? mv->clock - (uint32_t)back : 0u;
-    t[1] = (tf < mv->dur) ? (uint32_t)tf : mv->dur;
-    t[2] = mv->clock;
+    if (t < (int64_t)ta) return pr->a;
+    if (t > (int64_t)pr->T - (int64_t)ta) return -pr->a;
+    return 0;
 }
 
-/* ceil(sd 10^6 / dt): k = s' / dt in LSB/s^2, bit-serial (below 2^51) */
-static uint64_t moveq_k(int32_t sd, uint32_t dt)
+/* The largest rise (rise 1) or fall (rise 0) of r this period that keeps
+ * the commanded acceleration of the profile pr (along the travel) within
+ * A (file comment), r the warp of the last period; 2^30 (no bound) where
+ * s' is 0 (at rest at the clock). The profiles run here are trapezoids,
+ * whose s'' falls monotonically (+a, 0, -a): over the last period and the
+ * next, [clock - r dt, clock + dt], it lies between its values 2 us before
+ * and after them (the margin covers the rounding of the phase times ta),
+ * hi and lo. s' at the clock is bounded above by a u (u the time to the
+ * nearer end plus 1 us, within ta of it) and by the peak v: K = 10^6 s'
+ * (LSB us/s^2, below 2^61), k = K / dt, and the quotients of the file
+ * comment multiplied through by dt (no quotient for k). A larger K and hi
+ * and a smaller lo only lower the bounds; another profile kind takes s''
+ * within +-a and s' at v. */
+DH_NOINLINE int32_t dh_motion_feed_bound_q_(const dh_profile_q *pr, int32_t A, uint32_t clock, dh_q30 r, uint32_t dt,
+                                            int rise)
 {
-    uint64_t nn = (uint64_t)sd * MOVEQ_DT_MAX, k = 0u;   /* < 2^51 */
-    uint32_t bit = 52u;
-    while (bit > 0u) {
-        bit--;
-        if ((nn >> bit) >= dt) {
-            nn -= (uint64_t)dt << bit;
-            k |= (uint64_t)1 << bit;
+    const uint64_t back = ((uint64_t)(uint32_t)r * dt) >> 30;
+    const uint32_t ta = (uint32_t)(((uint64_t)(uint32_t)pr->xa * pr->T) >> 30);
+    const uint32_t u = (clock < pr->T) ? ((clock < pr->T - clock) ? clock : pr->T - clock) : 0u;
+    uint64_t K = (uint64_t)pr->v * MOVEQ_DT_MAX, num, den;
+    int64_t hi = pr->a, lo = -pr->a;
+    if (u == 0u) return DH_Q30_ONE;
+    if (pr->kind == (uint32_t)DH_PROFILE_TRAP) {
+        if (u <= ta) {
+            const uint32_t u1 = u + 1u;
+            const uint64_t ku = (uint64_t)pr->a * u1;
+            if (ku < K) K = ku;
         }
+        hi = moveq_acc(pr, ta, (int64_t)clock - (int64_t)back - 2);
+        lo = moveq_acc(pr, ta, (int64_t)clock + dt + 2);
     }
-    return (nn != 0u) ? k + 1u : k;
+    if (rise != 0) {
+        /* (A - p r^2) dt / (K + (2 p r + p) dt), p = max(hi, 0), the denominator rounded up */
+        const uint64_t p = (hi > 0) ? (uint64_t)hi : 0u;
+        num = moveq_r2((int64_t)p, r);
+        den = K + ((((p * (uint32_t)r) >> 29) + 1u) + p) * dt;
+    } else {
+        /* (A + lo r^2) dt / K */
+        num = (lo < 0) ? moveq_r2(-lo, r) : 0u;
+        den = K;
+    }
+    return (int32_t)(((int64_t)A > (int64_t)num) ? moveq_ratio(((uint64_t)A - num) * dt, den) : 0u);
 }
 
-/* The largest rise (*up) and fall (*dn) of r this period that keep the
- * commanded acceleration of s within the profile's peak (file comment),
- * from the sample in mv->ps (dh_move_advance_q); 2^30 (no bound) where s' is 0 */
-static DH_NOINLINE void moveq_feed_bounds(const dh_move_q *mv, uint32_t dt, dh_q30 *up, dh_q30 *dn)
-{
-    const int32_t *ps = mv->ps;
-    const int64_t A = mv->prof[0].a, r = mv->feed;
-    const int64_t hi = (ps[0] > 0) ? ps[0] : 0, lo = ps[1];
-    uint64_t k, num, den;
-    *up = DH_Q30_ONE;
-    *dn = DH_Q30_ONE;
-    if (ps[2] <= 0) return;
-    k = moveq_k(ps[2], dt);
-    num = moveq_r2(hi, (dh_q30)r);
-    /* (A - p r^2) / (k + 2 p r + p), the denominator rounded up */
-    den = k + ((((uint64_t)hi * (uint32_t)r) >> 29) + 1u) + (uint64_t)hi;
-    *up = (dh_q30)(((uint64_t)A > num) ? moveq_ratio((uint64_t)A - num, den) : 0u);
-    num = (lo < 0) ? moveq_r2(-lo, (dh_q30)r) : 0u;
-    *dn = (dh_q30)(((uint64_t)A > num) ? moveq_ratio((uint64_t)A - num, k) : 0u);
-}
-
-/* r after a period whose tracker state was OK (ok 1) or not, within its
- * largest rise up and fall dn, and the ceiling's update (dh_move.c's
- * method) */
-static DH_NOINLINE dh_q30 moveq_feed_next(dh_move_q *mv, uint32_t dt, int ok, dh_q30 up, dh_q30 dn)
+/* the goal of r after a period whose tracker state was OK (ok 1) or not,
+ * and the ceiling's update (dh_move.c's method) */
+static DH_NOINLINE dh_q30 moveq_feed_goal(dh_move_q *mv, uint32_t dt, int ok)
 {
     const dh_q30 r = mv->feed;
     dh_q30 goal, c = mv->fcap;
@@ -283,8 +306,7 @@ static DH_NOINLINE dh_q30 moveq_feed_next(dh_move_q *mv, uint32_t dt, int ok, dh
         mv->lag = 1u;
     }
     mv->fcap = c;
-    if (goal > r) return ((int64_t)r + up < goal) ? r + up : goal;
-    return ((int64_t)r - dn > goal) ? r - dn : goal;
+    return goal;
 }
 
 dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh_move_report_q *rep)
@@ -302,28 +324,14 @@ dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh
         mv->lag = 0u;   /* at full feed and ceiling: r stays 1, no bound needed */
         moveq_tick(mv, DH_Q30_ONE, dt);
     } else {
-        /* s'' near the clock into mv->ps: its largest (ps[0]) and
-         * smallest (ps[1]) value at the times of moveq_sample_times (the
-         * profile's first and last phases, clamped to 0 by the evaluation,
-         * taken at +-A), and s' at the clock (ps[2]); the evaluations and
-         * the bounds called from here, one level down (the 256 B guard) */
-        const dh_profile_q *pr = &mv->prof[0];
-        int32_t s, sd, a0;
-        uint32_t t[3], i;
-        dh_q30 up, dn;
-        moveq_sample_times(mv, dt, t);
-        mv->ps[0] = -pr->a;
-        mv->ps[1] = pr->a;
-        for (i = 0u; i < 3u; i++) {
-            (void)dh_profile_eval_q(pr, t[i], &s, &sd, &a0);
-            if (i == 1u && t[1] >= mv->dur) a0 = -pr->a;
-            if (a0 > mv->ps[0]) mv->ps[0] = a0;
-            if (a0 < mv->ps[1]) mv->ps[1] = a0;
-            if (i == 0u && t[0] == 0u) mv->ps[0] = pr->a;
-        }
-        mv->ps[2] = sd;
-        moveq_feed_bounds(mv, dt, &up, &dn);
-        mv->feed = moveq_feed_next(mv, dt, ok, up, dn);
+        /* the goal, the bound of the change towards it and r's update
+         * called from here, one level down (the 256 B guard) */
+        const dh_q30 goal = moveq_feed_goal(mv, dt, ok), r = mv->feed;
+        const int32_t x = dh_motion_feed_bound_q_(&mv->prof[0], mv->prof[0].a, mv->clock, r, dt, goal > r);
+        if (goal > r)
+            mv->feed = ((int64_t)r + x < goal) ? r + x : goal;
+        else
+            mv->feed = ((int64_t)r - x > goal) ? r - x : goal;
         moveq_tick(mv, mv->feed, dt);
     }
     rep->clock = mv->clock;

@@ -147,4 +147,16 @@ void dh_motion_quat_rot_q_(const dh_quat_q *q, dh_frame_q *T);
  * move (dh_joint_move_q.c, in its output) call it. */
 dh_status dh_motion_profile_q_(dh_profile_q *p);
 
+/* ---- fixed point (dh_move_q.c) ---- */
+
+/* mv's clock, its fraction, feed override and ceiling at the start of a
+ * move of duration dur (dh_move_q.c; the fixed queue starts its moves so) */
+void dh_motion_start_q_(dh_move_q *mv, uint32_t dur);
+
+/* The largest rise (rise 1) or fall (rise 0), Q2.30, of the time warp r
+ * of the profile pr (a trapezoid; r that of the last period, dt its
+ * length in us) at clock this period that keeps the commanded
+ * acceleration within A (dh_move_q.c); 2^30 where s' is 0 */
+int32_t dh_motion_feed_bound_q_(const dh_profile_q *pr, int32_t A, uint32_t clock, dh_q30 r, uint32_t dt, int rise);
+
 #endif /* DHMATH_SRC_MOTION_IMPL_H */

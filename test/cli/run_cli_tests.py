@@ -34,7 +34,9 @@ Groups:
             finite differences here, the tool on the line and within one
             period's travel, each end reached (double FK here); exit 3 and
             the period cap for a line beyond reach; exit 2, empty stdout and
-            the message for each bad argument
+            the message for each bad argument; move --fixed (the fixed
+            queue): the UR5 against the float run, a blended square, the
+            Puma's lagging line and a joint move back (exit 3)
   messages  the messages that name a cause: ik robot size and --w-rot,
             non-rigid tool/base/target, fk --fixed constants, projective
             EXPR in axis/euler/quat, --q0 clamping, '-' for stdin
@@ -1966,7 +1968,7 @@ def group_move_fixed(seed, tmp):
     the printed values, which %.9g prints exactly); the tool on the line
     within 5e-3 mm; the joint move's end exact; --fixed with --jerk and a
     --dt that is no whole number of microseconds: exit 2; a blended square
-    (move_fixed_blend)."""
+    (move_fixed_blend); a lagging Puma queue (move_fixed_lagging)."""
     rng = random.Random(seed)
     ur5 = os.path.join(ROOT, 'examples', 'robots', 'ur5_mm.dh')
     rob = read_robot(open(ur5).read())
@@ -2038,6 +2040,38 @@ def group_move_fixed(seed, tmp):
     rc, out, err = run(['move', path] + q0 + ['--dt', '0.0000015', '--fixed', '--joint', '0,0,0,0,0,0'])
     check(rc == 2 and out == '' and 'whole number of microseconds' in err, 'move --fixed --dt: rc %d %r' % (rc, err))
     move_fixed_blend(rob, n, path, qa, A, p0)
+    move_fixed_lagging(tmp)
+
+
+def move_fixed_lagging(tmp):
+    """move --fixed through the fixed queue: the Puma 560 (mm) line of
+    docs/motion.md into the base's orientation, faster than its wrist can
+    follow, then a joint move back: lagging periods reported (exit 3 and
+    the summary on stderr), the move slowed down by the queue's feed
+    override and completed, every joint step and change of step within the
+    fixed bounds (finite differences of the printed values), the joint
+    move's end exact."""
+    puma = os.path.join(ROOT, 'examples', 'robots', 'puma560_mm.dh')
+    path = move_robot(tmp, 'puma560_mm_rates.dh', puma, 150.0, 600.0)
+    pq, dt = [10.0, -30.0, 45.0, 20.0, 35.0, -60.0], 0.002
+    rc, out, err = run(['move', path, '--q0', ','.join(map(str, pq)), '--dt', str(dt), '--speed', '300', '--accel',
+                        '1500', '--rspeed', '90', '--raccel', '360', '--line', 'trans(500,-30,1000)', '--joint',
+                        ','.join(map(str, pq)), '--fixed'])
+    head, rows = read_csv(out, 6)
+    check(rc == 3 and 'completed with' in err and rows and None not in rows,
+          'move --fixed puma lagging: rc %d %r' % (rc, err))
+    if not rows or None in rows:
+        return
+    lag = sum(1 for r in rows if r[2] == 'lagging')
+    check(lag > 0 and rows[-1][2] == 'ok', 'move --fixed puma lagging: %d of %d periods lagging' % (lag, len(rows)))
+    us = round(dt * 1e6)
+    vb = math.floor(150.0 * 65536 * us / 1e6) / 65536.0
+    ab = math.floor(math.floor(600.0 * 65536 * us / 1e6) * us / 1e6) / 65536.0
+    check_joint_limits('move --fixed puma lagging', pq, rows, [vb / dt] * 6, [ab / (dt * dt)] * 6, dt,
+                       [4 * f32_ulp(360.0)] * 6)
+    check(rows[-1][1] == [f32(math.floor(q * 65536 + 0.5) / 65536.0) for q in pq],
+          'move --fixed puma lagging: last line %r, not %r' % (rows[-1][1], pq))
+    print('move --fixed puma lagging: %d periods, %d lagging' % (len(rows), lag))
 
 
 def move_fixed_blend(rob, n, path, qa, A, p0):

@@ -280,7 +280,14 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_move_target_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_move_advance_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_blend_seq_plan_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
-    X(dh_blend_seq_eval_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS)
+    X(dh_blend_seq_eval_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_queue_init_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_queue_add_joint_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_queue_add_path_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_queue_target_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_queue_advance_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_queue_stop_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_queue_resume_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS)
 
 /* enum of the table rows */
 #define DIFF_ENUM(name, gen, count, len, cmp) E_##name,

@@ -49,21 +49,17 @@
 
 #include "dht.h"
 #include "support_robots.h"
+#include "support_motion_q.h"
 #include "dhmath/motion.h"
 #include "dhmath/track.h"
 #include "dhmath/frame.h"
 
 #define DT_US 1000u
 #define DT 1e-3
-#define QPOS ((double)((int32_t)1 << DH_QPOS_FRAC))
-#define Q16 65536.0
-#define Q30 1073741824.0
+#define QPOS DHSM_QPOS
+#define Q16 DHSM_Q16
 #define PI_D 3.14159265358979323846
-/* Length unit per mm: 1, or 2^(16 - DH_QPOS_FRAC) in a finer format, whose
- * range (ikc.h: 2^(30 - DH_QPOS_FRAC) units for the closed form) does not
- * hold the robots in mm: the robots and paths then have the same lengths
- * in LSB as at DH_QPOS_FRAC 16. */
-#define LS (DH_QPOS_FRAC > 16 ? ldexp(1.0, 16 - DH_QPOS_FRAC) : 1.0)
+#define LS DHSM_LS
 /* length unit: the issue's 5e-3 mm at DH_QPOS_FRAC 16, 328 LSB (the
  * tracker's default pos_tol, the closed form's bound, is 328 LSB in every
  * format), so 2^(16 - DH_QPOS_FRAC) times that in another format */
@@ -74,155 +70,12 @@
 #define RING 35    /* positions kept: the longest window (2 w for an acceleration) plus one, in DEC periods */
 #define ROT_NOISE 3e-6  /* rad: the rotation of two targets (dh_pose_interp_q's 1.5e-6 each) */
 
-typedef struct {
-    const dhs_robot *d;
-    dh_robot r;
-    dh_ikc_model_q m;
-} rig;
-
 /* one robot, one tracker, one move (the M0 target has 16 KB of RAM) */
-static rig the_rig;
+static dhsm_rig the_rig;
 static dh_track_q the_trk;
 static dh_move_q the_mv;
 static int32_t ring[RING][3];   /* target positions, one every DEC periods */
 static int32_t ring_tool[RING][3];  /* tool positions (LSB, rounded) of OK periods, one every DEC periods */
-
-static void rig_make(rig *g, const dhs_robot *d, double vdeg, double adeg)
-{
-    dhs_robot fmt;   /* d in units of LS mm: the same lengths in LSB in every format (on the stack: the micro:bit's RAM) */
-    uint32_t i;
-    int k;
-    g->d = d;
-    fmt = *d;
-    for (i = 0; i < d->n; i++) {
-        fmt.j[i].a *= LS;
-        fmt.j[i].d *= LS;
-        if (d->j[i].type == DH_JOINT_PRISMATIC) {
-            fmt.j[i].qmin *= LS;
-            fmt.j[i].qmax *= LS;
-        }
-    }
-    for (k = 0; k < 3; k++) {
-        DHR_M4(&fmt.base, k, 3) *= LS;
-        DHR_M4(&fmt.tool, k, 3) *= LS;
-    }
-    fmt.unit_per_m *= LS;
-    DHT_EQ_INT(dhs_build_q(&fmt, &g->r), DH_OK);
-    for (i = 0; i < g->r.n; i++)
-        DHT_EQ_INT(dh_robot_set_rates_q(&g->r, i, (int32_t)(vdeg * Q16), (int32_t)(adeg * Q16)), DH_OK);
-    DHT_EQ_INT(dh_ikc_analyse_q(&g->r, &g->m), DH_OK);
-}
-
-static void tool_mm(const rig *g, const int32_t *q, double *p, dhr_mat4 *T)
-{
-    dhs_fk_ref_q(&g->r, q, NULL, T);
-    p[0] = DHR_M4(T, 0, 3);
-    p[1] = DHR_M4(T, 1, 3);
-    p[2] = DHR_M4(T, 2, 3);
-}
-
-static void target_of(const rig *g, const int32_t *q, dh_frame_q *T)
-{
-    dhr_mat4 R;
-    dhs_fk_ref_q(&g->r, q, NULL, &R);
-    dhs_to_frame_q(&R, T);
-}
-
-static double dot3(const double *a, const double *b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static double dist3(const double *a, const double *b)
-{
-    const double d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-    return sqrt(dot3(d, d));
-}
-
-/* double reference of a path in mm: the segment pa pb, or the circle
- * (centre c, normal n, radius R) through pa, via, pb */
-typedef struct {
-    double pa[3], pb[3], c[3], n[3], R;
-    int arc;
-} ref_path;
-
-static void ref_make(ref_path *rp, const dh_path_q *p, const dh_qpos *via)
-{
-    int k;
-    memset(rp, 0, sizeof *rp);
-    for (k = 0; k < 3; k++) {
-        rp->pa[k] = p->A.p[k] / QPOS;
-        rp->pb[k] = p->B.p[k] / QPOS;
-    }
-    rp->arc = via != NULL;
-    if (rp->arc) {
-        /* rows: n . c = n . pa; (v - pa) . c = (|v|^2 - |pa|^2) / 2; (pb - pa) . c likewise */
-        double M[3][3], r[3], v[3], det, x[3];
-        int i, j;
-        for (k = 0; k < 3; k++) v[k] = via[k] / QPOS;
-        for (k = 0; k < 3; k++) {
-            M[1][k] = v[k] - rp->pa[k];
-            M[2][k] = rp->pb[k] - rp->pa[k];
-        }
-        M[0][0] = M[1][1] * M[2][2] - M[1][2] * M[2][1];
-        M[0][1] = M[1][2] * M[2][0] - M[1][0] * M[2][2];
-        M[0][2] = M[1][0] * M[2][1] - M[1][1] * M[2][0];
-        r[0] = dot3(M[0], rp->pa);
-        r[1] = 0.5 * (dot3(v, v) - dot3(rp->pa, rp->pa));
-        r[2] = 0.5 * (dot3(rp->pb, rp->pb) - dot3(rp->pa, rp->pa));
-        det = M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
-              M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
-        for (j = 0; j < 3; j++) {
-            double Mj[3][3], dj;
-            memcpy(Mj, M, sizeof Mj);
-            for (i = 0; i < 3; i++) Mj[i][j] = r[i];
-            dj = Mj[0][0] * (Mj[1][1] * Mj[2][2] - Mj[1][2] * Mj[2][1]) -
-                 Mj[0][1] * (Mj[1][0] * Mj[2][2] - Mj[1][2] * Mj[2][0]) +
-                 Mj[0][2] * (Mj[1][0] * Mj[2][1] - Mj[1][1] * Mj[2][0]);
-            x[j] = dj / det;
-        }
-        for (k = 0; k < 3; k++) {
-            rp->c[k] = x[k];
-            rp->n[k] = M[0][k] / sqrt(dot3(M[0], M[0]));
-        }
-        rp->R = dist3(rp->c, rp->pa);
-    }
-}
-
-/* distance (mm) of p from the reference path */
-static double ref_dist(const ref_path *rp, const double *p)
-{
-    double d[3], u[3], t, h, rho;
-    int k;
-    if (!rp->arc) {
-        for (k = 0; k < 3; k++) {
-            d[k] = rp->pb[k] - rp->pa[k];
-            u[k] = p[k] - rp->pa[k];
-        }
-        t = dot3(d, d) > 0.0 ? dot3(u, d) / dot3(d, d) : 0.0;
-        t = fmin(fmax(t, 0.0), 1.0);
-        for (k = 0; k < 3; k++) u[k] = rp->pa[k] + t * d[k];
-        return dist3(p, u);
-    }
-    for (k = 0; k < 3; k++) d[k] = p[k] - rp->c[k];
-    h = dot3(d, rp->n);
-    for (k = 0; k < 3; k++) d[k] -= h * rp->n[k];
-    rho = sqrt(dot3(d, d));
-    return sqrt(h * h + (rho - rp->R) * (rho - rp->R));
-}
-
-/* rotation angle (rad) between the rotations of two fixed frames */
-static double rot_between(const dh_frame_q *F, const dh_frame_q *G)
-{
-    double R[3][3];
-    int i, j, k;
-    for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++) {
-            R[i][j] = 0.0;
-            for (k = 0; k < 3; k++) R[i][j] += (F->r[j][k] / Q30) * (G->r[i][k] / Q30);
-        }
-    return dhs_rot_angle(R);
-}
 
 typedef struct {
     long periods, notok, done_at;
@@ -230,7 +83,7 @@ typedef struct {
 } run_stats;
 
 /* The firmware loop of a path move (the file's comment), every check made */
-static void run_path(rig *g, dh_track_q *t, dh_move_q *mv, const ref_path *rp, const dh_cart_limits_q *lim,
+static void run_path(dhsm_rig *g, dh_track_q *t, dh_move_q *mv, const dhsm_ref *rp, const dh_cart_limits_q *lim,
                      run_stats *rs, const char *what)
 {
     const double V = lim->vmax / QPOS, Ac = lim->amax / QPOS, W = lim->wmax / Q16 * PI_D / 180.0;
@@ -260,25 +113,25 @@ static void run_path(rig *g, dh_track_q *t, dh_move_q *mv, const ref_path *rp, c
         clock0 = mv->clock;
         DHT_EQ_INT(dh_move_target_q(mv, &T), DH_OK);
         for (c = 0; c < 3; c++) pt[c] = T.p[c] / QPOS;
-        d = ref_dist(rp, pt);
+        d = dhsm_ref_dist(rp, pt);
         DHT_TRUE_MSG(d <= PATH_TOL && d <= pbound + 1e-9, "%s period %ld: target %.3g mm off the path", what, k, d);
         if (k > 0) {
             double pp[3];
             for (c = 0; c < 3; c++) pp[c] = Tp.p[c] / QPOS;
-            DHT_TRUE_MSG(dist3(pt, pp) <= V * DT * (1 + REL_FD) + 2.0 * N, "%s period %ld: target step %.6g mm", what, k,
-                         dist3(pt, pp));
-            DHT_TRUE_MSG(rot_between(&T, &Tp) <= W * DT * (1 + REL_FD) + ROT_NOISE, "%s period %ld: target turn %.6g", what,
-                         k, rot_between(&T, &Tp));
+            DHT_TRUE_MSG(dhsm_dist3(pt, pp) <= V * DT * (1 + REL_FD) + 2.0 * N, "%s period %ld: target step %.6g mm", what, k,
+                         dhsm_dist3(pt, pp));
+            DHT_TRUE_MSG(dhsm_rot_between(&T, &Tp) <= W * DT * (1 + REL_FD) + ROT_NOISE, "%s period %ld: target turn %.6g", what,
+                         k, dhsm_rot_between(&T, &Tp));
         }
         Tp = T;
         if (k % DEC == 0) memcpy(ring[(k / DEC) % RING], T.p, sizeof ring[0]);
         DHT_EQ_INT(dh_track_step_q(t, &T, q, &tr), DH_OK);
         if (tr.state == DH_TRACK_OK) {
-            tool_mm(g, q, pq, &F);
-            d = dist3(pq, pt);
+            dhsm_tool_mm(g, q, pq, &F);
+            d = dhsm_dist3(pq, pt);
             DHT_TRUE_MSG(d <= t->pos_tol / QPOS + 4.0 * g->r.n / QPOS + 1e-6, "%s period %ld: tool %.3g mm from the target",
                          what, k, d);
-            d = ref_dist(rp, pq);
+            d = dhsm_ref_dist(rp, pq);
             DHT_TRUE_MSG(d <= PATH_TOL, "%s period %ld: tool %.3g mm off the path", what, k, d);
             if (k % DEC == 0)
                 for (c = 0; c < 3; c++) ring_tool[(k / DEC) % RING][c] = (int32_t)floor(pq[c] * QPOS + 0.5);
@@ -337,37 +190,11 @@ static void run_path(rig *g, dh_track_q *t, dh_move_q *mv, const ref_path *rp, c
         dhr_mat4 F;
         double pq[3], pb[3];
         int c;
-        tool_mm(g, q, pq, &F);
+        dhsm_tool_mm(g, q, pq, &F);
         for (c = 0; c < 3; c++) pb[c] = mv->path.B.p[c] / QPOS;
-        DHT_TRUE_MSG(dist3(pq, pb) <= t->pos_tol / QPOS + 4.0 * g->r.n / QPOS + 1e-6, "%s: end %.3g mm from B", what,
-                     dist3(pq, pb));
+        DHT_TRUE_MSG(dhsm_dist3(pq, pb) <= t->pos_tol / QPOS + 4.0 * g->r.n / QPOS + 1e-6, "%s: end %.3g mm from B", what,
+                     dhsm_dist3(pq, pb));
     }
-}
-
-/* a configuration of the robot's region (the file's comment) */
-static void region_q(const rig *g, double *q)
-{
-    static const double QP[6] = { 10.0, -30.0, 45.0, 20.0, 35.0, -60.0 };
-    int i;
-    if (g->d == &dhs_ur5_mm) {
-        dhs_ur5_safe_q(15.0, q);
-        return;
-    }
-    for (i = 0; i < 6; i++) q[i] = QP[i] + dht_rand_uniform(-10.0, 10.0);
-}
-
-/* 1 when every point of the path at 16 samples has a closed-form solution */
-static int path_reachable(const rig *g, const dh_path_q *p, const int32_t *qref)
-{
-    dh_ikc_sol_q sol[DH_IKC_MAX_SOL];
-    dh_frame_q T;
-    uint32_t ns = 0;
-    int k;
-    for (k = 0; k <= 16; k++) {
-        DHT_EQ_INT(dh_path_eval_q(p, (dh_q30)(((int64_t)k << 30) / 16), &T), DH_OK);
-        if (dh_ikc_q(&g->m, &T, qref, 0u, sol, &ns) != DH_OK || ns == 0u) return 0;
-    }
-    return 1;
 }
 
 static const dhs_robot *const robots[] = { &dhs_ur5_mm, &dhs_puma560_mm };
@@ -378,21 +205,21 @@ static void cartesian_moves_q(void)
 {
     size_t ri;
     for (ri = 0; ri < sizeof robots / sizeof robots[0]; ri++) {
-        rig *const g = &the_rig;
+        dhsm_rig *const g = &the_rig;
         long mvn, n = DHT_ITER(6), notok = 0, periods = 0;
-        rig_make(g, robots[ri], 180.0, 720.0);
+        dhsm_rig_make(g, robots[ri], 180.0, 720.0);
         for (mvn = 0; mvn < n; mvn++) {
             double qa[DH_MAX_JOINTS], qb[DH_MAX_JOINTS], qm[DH_MAX_JOINTS];
             int32_t ia[DH_MAX_JOINTS], ib[DH_MAX_JOINTS], im[DH_MAX_JOINTS];
             dh_frame_q A, B, Mf;
             dh_qpos via[3];
             dh_path_q p;
-            ref_path rp;
+            dhsm_ref rp;
             run_stats rs;
             const int arc = (mvn & 1) != 0;
             int tries = 0, ok = 0, i;
             while (!ok && tries++ < 50) {
-                region_q(g, qa);
+                dhsm_region_q(g, qa);
                 for (i = 0; i < 6; i++) {
                     const double dlt = dht_rand_uniform(4.0, 12.0) * (dht_rand_uniform(0.0, 1.0) < 0.5 ? -1.0 : 1.0);
                     qb[i] = qa[i] + dlt;
@@ -401,19 +228,19 @@ static void cartesian_moves_q(void)
                 dhs_q_from_double(&g->r, qa, ia);
                 dhs_q_from_double(&g->r, qb, ib);
                 dhs_q_from_double(&g->r, qm, im);
-                target_of(g, ia, &A);
-                target_of(g, ib, &B);
-                target_of(g, im, &Mf);
+                dhsm_target_of(g, ia, &A);
+                dhsm_target_of(g, ib, &B);
+                dhsm_target_of(g, im, &Mf);
                 memcpy(via, Mf.p, sizeof via);
                 if (arc) {
                     if (dh_path_arc_q(&p, &A, via, &B) != DH_OK) continue;
                 } else {
                     DHT_EQ_INT(dh_path_line_q(&p, &A, &B), DH_OK);
                 }
-                ok = path_reachable(g, &p, ia);
+                ok = dhsm_path_reachable(g, &p, ia);
             }
             DHT_TRUE(ok);
-            ref_make(&rp, &p, arc ? via : NULL);
+            dhsm_ref_make(&rp, &p, arc ? via : NULL);
             DHT_EQ_INT(dh_move_path_q(&the_mv, &p, &LIM), DH_OK);
             DHT_EQ_INT(dh_track_init_q(&the_trk, &g->r, &g->m, ia, DT_US), DH_OK);
             run_path(g, &the_trk, &the_mv, &rp, &LIM, &rs, arc ? "arc" : "line");
@@ -426,9 +253,9 @@ static void cartesian_moves_q(void)
 
 static void joint_moves_q(void)
 {
-    rig *const g = &the_rig;
+    dhsm_rig *const g = &the_rig;
     long mvn, n = DHT_ITER(8);
-    rig_make(g, &dhs_ur5_mm, 180.0, 720.0);
+    dhsm_rig_make(g, &dhs_ur5_mm, 180.0, 720.0);
     for (mvn = 0; mvn < n; mvn++) {
         double qa[DH_MAX_JOINTS], qb[DH_MAX_JOINTS];
         int32_t ia[DH_MAX_JOINTS], ib[DH_MAX_JOINTS], q[DH_MAX_JOINTS], qp[DH_MAX_JOINTS], sp[DH_MAX_JOINTS];
@@ -478,25 +305,25 @@ static void lagging_puma_q(void)
 {
     static const double QP[6] = { 10.0, -30.0, 45.0, 20.0, 35.0, -60.0 };
     static const dh_cart_limits_q PLIM = { 300 << 16, 1500 << 16, 90 << 16, 360 << 16 };
-    rig *const g = &the_rig;
+    dhsm_rig *const g = &the_rig;
     int it, n = (int)DHT_ITER(2), k;
-    rig_make(g, &dhs_puma560_mm, 150.0, 600.0);
+    dhsm_rig_make(g, &dhs_puma560_mm, 150.0, 600.0);
     for (it = 0; it < n; it++) {
         double qa[DH_MAX_JOINTS];
         int32_t ia[DH_MAX_JOINTS];
         dh_frame_q A, B;
         dh_path_q p;
-        ref_path rp;
+        dhsm_ref rp;
         run_stats rs;
         for (k = 0; k < 6; k++) qa[k] = QP[k] + ((it == 0) ? 0.0 : dht_rand_uniform(-2.0, 2.0));
         dhs_q_from_double(&g->r, qa, ia);
-        target_of(g, ia, &A);
+        dhsm_target_of(g, ia, &A);
         dh_frame_identity_q(&B);
         B.p[0] = (int32_t)((500.0 + ((it == 0) ? 0.0 : dht_rand_uniform(-10.0, 10.0))) * LS * QPOS);
         B.p[1] = (int32_t)((-30.0 + ((it == 0) ? 0.0 : dht_rand_uniform(-10.0, 10.0))) * LS * QPOS);
         B.p[2] = (int32_t)((1000.0 + ((it == 0) ? 0.0 : dht_rand_uniform(-10.0, 10.0))) * LS * QPOS);
         DHT_EQ_INT(dh_path_line_q(&p, &A, &B), DH_OK);
-        ref_make(&rp, &p, NULL);
+        dhsm_ref_make(&rp, &p, NULL);
         DHT_EQ_INT(dh_move_path_q(&the_mv, &p, &PLIM), DH_OK);
         DHT_EQ_INT(dh_track_init_q(&the_trk, &g->r, &g->m, ia, DT_US), DH_OK);
         run_path(g, &the_trk, &the_mv, &rp, &PLIM, &rs, "puma line");

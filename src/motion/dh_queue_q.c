@@ -1,0 +1,413 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * dh_queue_q.c - the fixed-point queue of moves, the twin of dh_queue.c:
+ * a ring of moves in the caller's array, run one control period at a
+ * time, with stop and resume (contract in motion.h, method and proof in
+ * docs/design.md, "Fixed-point queue"). Integer only: no float, no 64-bit
+ * division (bit-serial quotients).
+ *
+ * Ring. items[head] is the running move; appending writes
+ * items[(head + count) mod cap] and never overwrites a queued move. A
+ * path's profile of s is planned when it is appended (dh_path_move_q,
+ * into its item) and copied into qu->mv when it starts; a joint move is
+ * planned when it starts, from the last joint command or the tracker's
+ * configuration, as dh_move_joint_q plans it (each joint's profile in
+ * place by dh_motion_profile_q_, then stretched to the longest): one call
+ * level less than through dh_move_joint_q, as the path's frame is
+ * evaluated here by dh_path_eval_q rather than through dh_move_target_q
+ * (the 256 B stack guard).
+ *
+ * Time warp. Every move runs its own plan X(tau) at a clock tau with
+ * d tau / dt = r in [0, 1]: a path move's r is dh_move_advance_q's feed
+ * override (which falls while the tracker lags), a joint move's r is the
+ * queue's own (1 but during a stop or a resume). The commanded velocity
+ * is X' r (within the plan's, so within its limits) and the acceleration
+ * X'' r^2 + X' r', which r keeps within the limit A by changing each
+ * period by at most the bound of dh_motion_feed_bound_q_ (dh_move_q.c:
+ * the plan's s'' sampled over the last and the next period, taken along
+ * the travel). A joint move takes the least bound over its joints, each
+ * with its own A = amax_i - floor(amax_i / 1024), the planning's limit.
+ * A stop drives r to 0 (a path move: its feed override as if the tracker
+ * lagged), a resume back up: the move stays on its own path and ends at
+ * its exact end.
+ */
+#include <string.h>
+
+#include "dhmath/motion.h"
+#include "../internal/dh_build.h"
+#include "motion_impl.h"
+
+/* the longest control period (us) */
+#define QUEUEQ_DT_MAX 1000000u
+
+/* the index of the k-th queued move (k <= count < 2 cap) */
+static uint32_t queueq_index(const dh_queue_q *qu, uint32_t k)
+{
+    const uint32_t i = qu->head + k;
+    return (i >= qu->cap) ? i - qu->cap : i;
+}
+
+/* floor(x dt / 10^6) for dt <= 10^6: one quotient bit per step (below 2^31) */
+static uint32_t queueq_per(uint32_t x, uint32_t dt)
+{
+    uint64_t n = (uint64_t)x * dt, q = 0u;
+    uint32_t bit = 52u;
+    while (bit > 0u) {
+        bit--;
+        if ((n >> bit) >= QUEUEQ_DT_MAX) {
+            n -= (uint64_t)QUEUEQ_DT_MAX << bit;
+            q |= (uint64_t)1 << bit;
+        }
+    }
+    return (uint32_t)q;
+}
+
+/* the free item, or NULL when the queue is full */
+static dh_queue_item_q *queueq_free(dh_queue_q *qu)
+{
+    return (qu->count < qu->cap) ? &qu->items[queueq_index(qu, qu->count)] : NULL;
+}
+
+dh_status dh_queue_init_q(dh_queue_q *qu, dh_queue_item_q *items, uint32_t cap)
+{
+    DH_ASSERT(qu != NULL && items != NULL);
+    if (cap == 0u) return DH_ERR_ARG;
+    (void)memset(qu, 0, sizeof *qu);
+    qu->items = items;
+    qu->cap = cap;
+    qu->phase = (uint32_t)DH_QUEUE_RUN;
+    qu->hold = (uint32_t)DH_MOVE_NONE;
+    qu->r = DH_Q30_ONE;
+    qu->mv.kind = (uint32_t)DH_MOVE_NONE;
+    return DH_OK;
+}
+
+dh_status dh_queue_add_joint_q(dh_queue_q *qu, uint32_t n, const int32_t *q1, const int32_t *vmax,
+                               const int32_t *amax)
+{
+    dh_queue_item_q *it;
+    uint32_t i;
+    DH_ASSERT(qu != NULL && q1 != NULL && vmax != NULL && amax != NULL);
+    if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
+    for (i = 0u; i < n; i++)
+        if (vmax[i] <= 0 || amax[i] <= 0) return DH_ERR_ARG;
+    it = queueq_free(qu);
+    if (it == NULL) return DH_ERR_LIMIT;
+    for (i = 0u; i < n; i++) {
+        it->q1[i] = q1[i];
+        it->vmax[i] = vmax[i];
+        it->amax[i] = amax[i];
+    }
+    it->n = n;
+    it->kind = (uint32_t)DH_MOVE_JOINT;
+    qu->count++;
+    return DH_OK;
+}
+
+dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim)
+{
+    dh_queue_item_q *it;
+    dh_status st;
+    DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
+    it = queueq_free(qu);
+    if (it == NULL) return DH_ERR_LIMIT;
+    st = dh_path_move_q(&it->prof, &it->e, p, lim);
+    if (st != DH_OK) return st;
+    it->path = *p;
+    it->lim = *lim;
+    it->n = 0u;
+    it->kind = (uint32_t)DH_MOVE_PATH;
+    qu->count++;
+    return DH_OK;
+}
+
+/* the running move's clock and warp at its start (dh_move_q.c's rule) */
+static void queueq_clock0(dh_queue_q *qu, uint32_t dur)
+{
+    dh_motion_start_q_(&qu->mv, dur);
+    qu->r = DH_Q30_ONE;
+    qu->rfrac = 0u;
+    qu->started = 1u;
+}
+
+/* the head path move started: its planned profile and path into mv */
+static DH_NOINLINE void queueq_start_path(dh_queue_q *qu, const dh_queue_item_q *it)
+{
+    dh_move_q *const mv = &qu->mv;
+    mv->prof[0] = it->prof;
+    mv->e = it->e;
+    mv->path = it->path;
+    mv->n = 0u;
+    mv->kind = (uint32_t)DH_MOVE_PATH;
+    queueq_clock0(qu, it->prof.T);
+}
+
+/* where the head joint move it starts: the last joint command, or after a
+ * path move the tracker's configuration once every 2 |v_i| <=
+ * floor(floor(amax_i dt / 10^6) dt / 10^6); NULL while it waits */
+static DH_NOINLINE const int32_t *queueq_joint_from(const dh_queue_q *qu, const dh_track_q *t, const dh_queue_item_q *it)
+{
+    uint32_t i;
+    if (qu->hold == (uint32_t)DH_MOVE_JOINT) return qu->hq;
+    if (qu->hold == (uint32_t)DH_MOVE_PATH) {
+        for (i = 0u; i < it->n; i++) {
+            const int64_t v = t->v[i];
+            const uint64_t m = (uint64_t)((v < 0) ? -v : v);
+            if (2u * m > queueq_per(queueq_per((uint32_t)it->amax[i], t->dt_us), t->dt_us)) return NULL;
+        }
+    }
+    return t->q;
+}
+
+/* The head joint move's distances from q0 and its lowered limits into
+ * mv's profiles, as dh_move_joint_q fills them: DH_ERR_OVERFLOW for a
+ * distance beyond int32. mv then holds no move, and a hold command that
+ * was its frame is dropped. */
+static DH_NOINLINE dh_status queueq_joint_fill(dh_queue_q *qu, const int32_t *q0, const dh_queue_item_q *it)
+{
+    dh_move_q *const mv = &qu->mv;
+    dh_status st = DH_OK;
+    uint32_t i;
+    mv->kind = (uint32_t)DH_MOVE_NONE;
+    if (qu->hold == (uint32_t)DH_MOVE_PATH) qu->hold = (uint32_t)DH_MOVE_NONE;
+    for (i = 0u; i < it->n; i++) {
+        const int64_t d = (int64_t)it->q1[i] - q0[i];
+        if (d > INT32_MAX || d < INT32_MIN) st = DH_ERR_OVERFLOW;
+        mv->q0[i] = q0[i];
+        mv->q1[i] = it->q1[i];
+        mv->prof[i].d = (int32_t)d;
+        mv->prof[i].v = it->vmax[i] - (int32_t)((uint32_t)it->vmax[i] >> 10);
+        mv->prof[i].a = it->amax[i] - (int32_t)((uint32_t)it->amax[i] >> 10);
+        mv->prof[i].j = 0;
+    }
+    mv->n = it->n;
+    return st;
+}
+
+/* The filled joint move planned as dh_move_joint_q plans it (each
+ * joint's profile in place, then all stretched to the longest), and
+ * started (a frame of its own: the 256 B guard) */
+static DH_NOINLINE dh_status queueq_joint_plan(dh_queue_q *qu)
+{
+    dh_move_q *const mv = &qu->mv;
+    uint32_t i, T = 0u;
+    dh_status st = DH_OK;
+    for (i = 0u; i < mv->n && st == DH_OK; i++) {
+        st = dh_motion_profile_q_(&mv->prof[i]);
+        if (st == DH_OK && mv->prof[i].T > T) T = mv->prof[i].T;
+    }
+    for (i = 0u; i < mv->n && st == DH_OK; i++) st = dh_profile_stretch_q(&mv->prof[i], T);
+    if (st != DH_OK) return st;
+    mv->e = 0u;
+    mv->kind = (uint32_t)DH_MOVE_JOINT;
+    queueq_clock0(qu, T);
+    qu->sync = 1u;
+    return DH_OK;
+}
+
+/* A joint move's time warp r after a stop or a resume: towards 0 while
+ * braking, else towards 1, by at most the least bound over its joints
+ * (the file comment) */
+static DH_NOINLINE void queueq_warp(dh_queue_q *qu, uint32_t dt)
+{
+    const dh_move_q *mv = &qu->mv;
+    const dh_queue_item_q *it = &qu->items[qu->head];
+    const dh_q30 r = qu->r;
+    const int rise = qu->phase != (uint32_t)DH_QUEUE_BRAKE;
+    int32_t x = DH_Q30_ONE;
+    uint32_t i;
+    for (i = 0u; i < mv->n; i++) {
+        int32_t b, A;
+        if (mv->prof[i].d == 0) continue;
+        A = it->amax[i] - (int32_t)((uint32_t)it->amax[i] >> 10);
+        b = dh_motion_feed_bound_q_(&mv->prof[i], A, mv->clock, r, dt, rise);
+        if (b < x) x = b;
+    }
+    if (rise == 0)
+        qu->r = (r > x) ? r - x : 0;
+    else
+        qu->r = (DH_Q30_ONE - r > x) ? r + x : DH_Q30_ONE;
+}
+
+/* One period of the running joint move: its clock advanced by r dt (the
+ * fraction of a us carried; held while stopped) and q = the move there,
+ * each joint from its nearer end as dh_move_joint_step_q evaluates it */
+static DH_NOINLINE void queueq_joint_step(dh_queue_q *qu, uint32_t dt, int32_t *q)
+{
+    dh_move_q *const mv = &qu->mv;
+    const dh_q30 r = (qu->phase == (uint32_t)DH_QUEUE_STOPPED) ? 0 : qu->r;
+    const uint64_t adv = (uint64_t)(uint32_t)r * dt + qu->rfrac;
+    uint64_t c = (uint64_t)mv->clock + (adv >> 30);
+    uint32_t i;
+    qu->rfrac = (uint32_t)(adv & 0x3FFFFFFFu);
+    if (c > mv->dur) c = mv->dur;
+    for (i = 0u; i < mv->n; i++) {
+        const dh_profile_q *pr = &mv->prof[i];
+        int32_t p;
+        /* mv->ps the evaluation's scratch (a small frame) */
+        (void)dh_profile_eval_q(pr, (uint32_t)c, &mv->ps[0], &mv->ps[1], &mv->ps[2]);
+        p = mv->ps[0];
+        q[i] = ((c >= pr->T || c > pr->T - c) && pr->d != 0) ? (int32_t)((int64_t)mv->q1[i] - ((int64_t)pr->d - p))
+                                                         : (int32_t)((int64_t)mv->q0[i] + p);
+        qu->hq[i] = q[i];
+    }
+    mv->clock = (uint32_t)c;
+}
+
+/* s of the path move in mv at its clock, Q2.30; -1 for a profile out of
+ * range (dh_queue_target_q refuses it) */
+static DH_NOINLINE int32_t queueq_s(dh_move_q *mv)
+{
+    uint32_t s;
+    if (mv->e > 30u || mv->clock > mv->dur) return -1;
+    if (dh_profile_eval_q(&mv->prof[0], mv->clock, &mv->ps[0], &mv->ps[1], &mv->ps[2]) != DH_OK) return -1;
+    if (mv->ps[0] < 0 || (uint32_t)mv->ps[0] > (1u << mv->e)) return -1;
+    s = (uint32_t)mv->ps[0] << (30u - mv->e);
+    return (int32_t)s;
+}
+
+dh_status dh_queue_target_q(dh_queue_q *qu, const dh_track_q *t, dh_queue_cmd_q *cmd)
+{
+    dh_status st;
+    uint32_t kind;
+    DH_ASSERT(qu != NULL && t != NULL && t->r != NULL && cmd != NULL);
+    if (qu->pend != 0u || t->dt_us == 0u || t->dt_us > QUEUEQ_DT_MAX) return DH_ERR_ARG;
+    if (qu->started == 0u && qu->count > 0u && qu->phase == (uint32_t)DH_QUEUE_RUN) {
+        /* the head move started when it can (a joint move waits for rest) */
+        const dh_queue_item_q *it = &qu->items[qu->head];
+        if (it->kind == (uint32_t)DH_MOVE_PATH) {
+            queueq_start_path(qu, it);
+        } else {
+            const int32_t *q0;
+            if (it->n != t->r->n) return DH_ERR_ARG;
+            q0 = queueq_joint_from(qu, t, it);
+            if (q0 != NULL) {
+                st = queueq_joint_fill(qu, q0, it);
+                if (st == DH_OK) st = queueq_joint_plan(qu);
+                if (st != DH_OK) return st;
+            }
+        }
+    }
+    kind = (qu->started != 0u) ? qu->mv.kind : qu->hold;
+    if (kind == (uint32_t)DH_MOVE_PATH) {
+        const int32_t s = queueq_s(&qu->mv);
+        if (s < 0) return DH_ERR_ARG;
+        st = dh_path_eval_q(&qu->mv.path, s, &cmd->T);
+        if (st != DH_OK) return st;
+        cmd->sync = qu->sync;
+        if (qu->sync != 0u) (void)memcpy(cmd->q, qu->hq, sizeof cmd->q);
+        qu->sync = 0u;
+    } else if (kind == (uint32_t)DH_MOVE_JOINT) {
+        if (qu->started != 0u) {
+            if (qu->phase == (uint32_t)DH_QUEUE_BRAKE ||
+                (qu->phase == (uint32_t)DH_QUEUE_RUN && qu->r < DH_Q30_ONE))
+                queueq_warp(qu, t->dt_us);
+            queueq_joint_step(qu, t->dt_us, cmd->q);
+        } else {
+            (void)memcpy(cmd->q, qu->hq, sizeof cmd->q);
+        }
+        cmd->sync = 0u;
+    } else {
+        cmd->sync = 0u;
+    }
+    cmd->kind = kind;
+    qu->dt = t->dt_us;
+    qu->pend = 1u;
+    return DH_OK;
+}
+
+/* 1 when the running move is at rest where it is: at its start, its end,
+ * or with its clock held (r 0) */
+static int queueq_at_rest(const dh_queue_q *qu)
+{
+    const dh_move_q *mv = &qu->mv;
+    const dh_q30 r = (mv->kind == (uint32_t)DH_MOVE_PATH) ? mv->feed : qu->r;
+    return mv->clock == 0u || mv->clock >= mv->dur || r == 0;
+}
+
+/* 1 when the braking move's next command is this period's: its warp at
+ * 0, or a path move's clock at its end already at the start of this
+ * period (c0; its frame then stays B until the tracker is OK there) */
+static int queueq_still(const dh_queue_q *qu, uint32_t c0)
+{
+    const dh_move_q *mv = &qu->mv;
+    if (mv->kind == (uint32_t)DH_MOVE_PATH) return mv->feed == 0 || c0 >= mv->dur;
+    return qu->r == 0;
+}
+
+/* the running move completed: removed from the queue, its end held */
+static void queueq_done(dh_queue_q *qu)
+{
+    qu->hold = qu->mv.kind;
+    qu->started = 0u;
+    qu->head = queueq_index(qu, 1u);
+    qu->count--;
+    qu->seq++;
+    if (qu->phase == (uint32_t)DH_QUEUE_BRAKE) qu->phase = (uint32_t)DH_QUEUE_STOPPED;
+}
+
+dh_status dh_queue_advance_q(dh_queue_q *qu, dh_track_state state, dh_queue_report_q *rep)
+{
+    dh_move_q *mv;
+    uint32_t c0;
+    dh_q30 feed = DH_Q30_ONE;
+    int done = 0, held = 1;
+    DH_ASSERT(qu != NULL && rep != NULL);
+    if (qu->pend == 0u) return DH_ERR_ARG;
+    if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
+    mv = &qu->mv;
+    c0 = mv->clock;
+    if (qu->started != 0u && mv->kind == (uint32_t)DH_MOVE_PATH) {
+        if (qu->phase != (uint32_t)DH_QUEUE_STOPPED) {
+            /* braking: the feed override falls as if the tracker lagged,
+             * but at the end (s' = 0) the tracker's state decides done */
+            const int brake = qu->phase == (uint32_t)DH_QUEUE_BRAKE && mv->clock < mv->dur;
+            const dh_status st = dh_move_advance_q(mv, qu->dt, brake ? DH_TRACK_LAGGING : state, &qu->mrep);
+            if (st != DH_OK) return st;
+            done = qu->mrep.done;
+        }
+        held = state != DH_TRACK_OK || qu->phase == (uint32_t)DH_QUEUE_STOPPED;
+        feed = mv->feed;
+    } else if (qu->started != 0u) {
+        done = mv->clock >= mv->dur;
+        held = qu->phase == (uint32_t)DH_QUEUE_STOPPED;
+        feed = qu->r;
+    } else {
+        held = 1;   /* nothing running: the command at rest */
+    }
+    qu->pend = 0u;
+    rep->feed = feed;
+    rep->seq = qu->seq;
+    rep->clock = (qu->started != 0u) ? mv->clock : 0u;
+    if (done != 0) queueq_done(qu);
+    if (done == 0 && qu->phase == (uint32_t)DH_QUEUE_BRAKE && qu->started != 0u && queueq_still(qu, c0))
+        qu->phase = (uint32_t)DH_QUEUE_STOPPED;
+    rep->held = held;
+    rep->done = done;
+    rep->last = qu->count == 0u;
+    rep->stopped = qu->phase == (uint32_t)DH_QUEUE_STOPPED;
+    return DH_OK;
+}
+
+dh_status dh_queue_stop_q(dh_queue_q *qu)
+{
+    DH_ASSERT(qu != NULL);
+    if (qu->pend != 0u) return DH_ERR_ARG;
+    if (qu->phase != (uint32_t)DH_QUEUE_RUN) return DH_OK;
+    if (qu->started != 0u && qu->mv.kind == (uint32_t)DH_MOVE_PATH) qu->fcap = qu->mv.fcap;
+    qu->phase = (qu->started != 0u && !queueq_at_rest(qu)) ? (uint32_t)DH_QUEUE_BRAKE : (uint32_t)DH_QUEUE_STOPPED;
+    return DH_OK;
+}
+
+dh_status dh_queue_resume_q(dh_queue_q *qu)
+{
+    DH_ASSERT(qu != NULL);
+    if (qu->pend != 0u) return DH_ERR_ARG;
+    if (qu->phase == (uint32_t)DH_QUEUE_RUN) return DH_OK;
+    if (qu->started != 0u && qu->mv.kind == (uint32_t)DH_MOVE_PATH) {
+        qu->mv.fcap = qu->fcap;
+        qu->mv.lag = 0u;
+    }
+    qu->phase = (uint32_t)DH_QUEUE_RUN;
+    return DH_OK;
+}
