@@ -484,13 +484,15 @@ static DH_NOINLINE dh_status ikc_finish(const dh_ikc_model_f32 *m, const float *
     return (fin == 0u) ? DH_ERR_UNREACHABLE : DH_ERR_LIMIT;
 }
 
-/* ikc_finish, or ikc_finish6 when it applies (opts 0, six revolute joints
- * with narrow limits); *n_sol as ikc_finish's. Every build takes the same
- * one (the entries of sol beyond the kept ones, which the two leave
- * differently, then agree between builds). */
+/* dh_ikc_f32's conversion: ikc_finish, or ikc_finish6 when it applies
+ * (opts 0, six revolute joints with narrow limits, an FPU: with soft
+ * float its constants would not stay in registers, and its frame would
+ * not fit under the Cortex-M0+ budget); *n_sol as ikc_finish's. Both
+ * builds of a core take the same one (the entries of sol beyond the kept
+ * ones, which the two leave differently, then agree between builds). */
 DH_INLINE dh_status ikc_done(const dh_ikc_model_f32 *m, const float *q_ref, dh_ikc_sol_f32 *sol, uint32_t *n_sol)
 {
-    if ((*n_sol >> 4) == 0u && m->n == 6u && m->prismatic == 0u && m->wide == 0u)
+    if (!DH_SOFT_FLOAT && (*n_sol >> 4) == 0u && m->n == 6u && m->prismatic == 0u && m->wide == 0u)
         return ikc_finish6(m, q_ref, sol, n_sol);
     return ikc_finish(m, q_ref, sol, n_sol);
 }
@@ -510,7 +512,7 @@ dh_status dh_ikc_finish_f32_(const dh_ikc_model_f32 *m, const float *q_ref, uint
     if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;
     if (raw == 0u) return DH_ERR_UNREACHABLE;
     *n_sol = raw | (opts << 4);
-    return ikc_done(m, q_ref, sol, n_sol);
+    return ikc_finish(m, q_ref, sol, n_sol);
 }
 
 dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const float *q_ref, uint32_t opts,
