@@ -262,9 +262,10 @@ static DH_NOINLINE float ikc_wrap_any(float v)
  * (any float) with reference ref, after the window and one-turn tests of
  * ikc_joint: wrapped into (-180, 180] (a non-finite value: IKC_V_NAN, *v
  * unchanged), then, outside the limits, shifted by whole turns into them
- * to the value nearest ref (IKC_V_IN) or left wrapped (IKC_V_OUT). Out of
- * line: the rare case, shared by both conversion loops. */
-static DH_NOINLINE int ikc_general(const dh_ikc_model_f32 *m, uint32_t i, float ref, float *v)
+ * to the value nearest ref (IKC_V_IN) or left wrapped (IKC_V_OUT). Inlined
+ * into ikc_joint (no frame of its own under the tracker's on Cortex-M0+);
+ * ikc_finish6 calls it out of line through ikc_general_call. */
+DH_INLINE int ikc_general(const dh_ikc_model_f32 *m, uint32_t i, float ref, float *v)
 {
     const int lim = m->qmin[i] <= m->qmax[i];
     const int narrow = ((m->wide >> i) & 1u) == 0u;
@@ -283,6 +284,12 @@ static DH_NOINLINE int ikc_general(const dh_ikc_model_f32 *m, uint32_t i, float 
         ((narrow && lo > -180.0f && hi <= 180.0f) || !ikc_shift(v, lo, hi, ref)))
         return IKC_V_OUT;
     return IKC_V_IN;
+}
+
+/* ikc_general out of line (the rare case of ikc_finish6) */
+static DH_NOINLINE int ikc_general_call(const dh_ikc_model_f32 *m, uint32_t i, float ref, float *v)
+{
+    return ikc_general(m, i, ref, v);
 }
 
 /* Joint i of the raw solutions sol[s] with bit s set in live_in (s < ns) to
@@ -377,7 +384,7 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
 /* Value *v = c - o of narrow revolute joint i with window [lo, hi]
  * (ikc_finish6): 1 when it is kept, its value in *v. ikc_joint's
  * operations: the window, one turn towards the reference into the window,
- * else ikc_general. */
+ * else ikc_general (ikc_general_call). */
 DH_INLINE int ikc_val6(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i, float c, float o, float lo, float hi,
                        float *v)
 {
@@ -391,7 +398,7 @@ DH_INLINE int ikc_val6(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i
         *v = t;
         return 1;
     }
-    return ikc_general(m, i, ref, v) == IKC_V_IN;
+    return ikc_general_call(m, i, ref, v) == IKC_V_IN;
 }
 
 /* ikc_finish (opts 0) for six revolute joints whose limits are less than a
@@ -492,7 +499,7 @@ static DH_NOINLINE dh_status ikc_finish(const dh_ikc_model_f32 *m, const float *
  * ones, which the two leave differently, then agree between builds). */
 DH_INLINE dh_status ikc_done(const dh_ikc_model_f32 *m, const float *q_ref, dh_ikc_sol_f32 *sol, uint32_t *n_sol)
 {
-    if (!DH_SOFT_FLOAT && (*n_sol >> 4) == 0u && m->n == 6u && m->prismatic == 0u && m->wide == 0u)
+    if (!DH_SOFT_FLOAT && m->wide == 0u && (*n_sol >> 4) == 0u && m->n == 6u && m->prismatic == 0u)
         return ikc_finish6(m, q_ref, sol, n_sol);
     return ikc_finish(m, q_ref, sol, n_sol);
 }
