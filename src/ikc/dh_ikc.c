@@ -353,6 +353,7 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
     for (s = 0, rest = live; rest != 0u; s++, rest >>= 1) {
         uint32_t bit;
         float v, t;
+        int verdict;
         if ((rest & 1u) == 0u) continue;
         v = sol[s].q[i] - off;
         if (v >= flo && v <= fhi) {
@@ -368,14 +369,13 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
             continue;
         }
         bit = 1u << s;
-        switch (ikc_general(m, i, ref, &v)) {
-        case IKC_V_NAN:
+        verdict = ikc_general(m, i, ref, &v);
+        if (verdict == IKC_V_NAN) {
             *fin &= ~bit;
             live &= ~bit;
             continue;
-        case IKC_V_OUT: *out |= bit; break;
-        default: break;
         }
+        if (verdict == IKC_V_OUT) *out |= bit;
         sol[s].q[i] = v;
     }
     return live;
