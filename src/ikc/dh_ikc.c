@@ -253,6 +253,45 @@ static DH_NOINLINE float ikc_wrap_any(float v)
     return dh_ikc_wrap_f32_(dh_ikc_wrap_f32_(v));
 }
 
+/* ikc_general's verdicts on a value */
+#define IKC_V_IN 0  /* within the limits (or none) */
+#define IKC_V_OUT 1 /* outside the limits */
+#define IKC_V_NAN 2 /* not finite */
+
+/* The general conversion of revolute joint i's value *v = raw - offset
+ * (any float) with reference ref, after the window and one-turn tests of
+ * ikc_joint: wrapped into (-180, 180] (a non-finite value: IKC_V_NAN, *v
+ * unchanged), then, outside the limits, shifted by whole turns into them
+ * to the value nearest ref (IKC_V_IN) or left wrapped (IKC_V_OUT). Inlined
+ * into ikc_joint (no frame of its own under the tracker's on Cortex-M0+);
+ * ikc_finish6 calls it out of line through ikc_general_call. */
+DH_INLINE int ikc_general(const dh_ikc_model_f32 *m, uint32_t i, float ref, float *v)
+{
+    const int lim = m->qmin[i] <= m->qmax[i];
+    const int narrow = ((m->wide >> i) & 1u) == 0u;
+    /* no limits: every value in (-180, 180] stays, as one within limits
+     * [-180, 180] less than a turn apart would */
+    const float lo = lim ? m->qmin[i] : -180.0f, hi = lim ? m->qmax[i] : 180.0f;
+    float x = *v;
+    if (!(x > -180.0f && x <= 180.0f)) {
+        if (!dh_isfinite_f32(x)) return IKC_V_NAN;
+        x = ikc_wrap_any(x);
+    }
+    *v = x;
+    /* limits less than a turn apart within (-180, 180]: no shift of a
+     * value of (-180, 180] outside them enters them */
+    if (!(x >= lo && x <= hi && (narrow || fabsf(ref - x) <= 180.0f)) &&
+        ((narrow && lo > -180.0f && hi <= 180.0f) || !ikc_shift(v, lo, hi, ref)))
+        return IKC_V_OUT;
+    return IKC_V_IN;
+}
+
+/* ikc_general out of line (the rare case of ikc_finish6) */
+static DH_NOINLINE int ikc_general_call(const dh_ikc_model_f32 *m, uint32_t i, float ref, float *v)
+{
+    return ikc_general(m, i, ref, v);
+}
+
 /* Joint i of the raw solutions sol[s] with bit s set in live_in (s < ns) to
  * its joint value. Returns live_in with the bits cleared of the solutions
  * whose value is outside the limits (lim: into *out instead) and of those
@@ -313,7 +352,8 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
     /* the live solutions only: rest holds the bits from s on */
     for (s = 0, rest = live; rest != 0u; s++, rest >>= 1) {
         uint32_t bit;
-        float v, lo, hi;
+        float v, t;
+        int verdict;
         if ((rest & 1u) == 0u) continue;
         v = sol[s].q[i] - off;
         if (v >= flo && v <= fhi) {
@@ -323,32 +363,90 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
         /* one turn towards ref, rounded as ikc_wrap_any and ikc_shift
          * round it: when in [slo, shi], their result (the other way, or a
          * value beyond one turn, fails the test) */
-        lo = (v > ref) ? v - 360.0f : v + 360.0f;
-        if (lo >= slo && lo <= shi) {
-            sol[s].q[i] = lo;
+        t = (v > ref) ? v - 360.0f : v + 360.0f;
+        if (t >= slo && t <= shi) {
+            sol[s].q[i] = t;
             continue;
         }
         bit = 1u << s;
-        /* no limits: every value in (-180, 180] stays, as one within limits
-         * [-180, 180] less than a turn apart would */
-        lo = lim ? m->qmin[i] : -180.0f;
-        hi = lim ? m->qmax[i] : 180.0f;
-        if (!(v > -180.0f && v <= 180.0f)) {
-            if (!dh_isfinite_f32(v)) {
-                *fin &= ~bit;
-                live &= ~bit;
-                continue;
-            }
-            v = ikc_wrap_any(v);
+        verdict = ikc_general(m, i, ref, &v);
+        if (verdict == IKC_V_NAN) {
+            *fin &= ~bit;
+            live &= ~bit;
+            continue;
         }
-        /* limits less than a turn apart within (-180, 180]: no shift of a
-         * value of (-180, 180] outside them enters them */
-        if (!(v >= lo && v <= hi && (narrow || fabsf(ref - v) <= 180.0f)) &&
-            ((narrow && lo > -180.0f && hi <= 180.0f) || !ikc_shift(&v, lo, hi, ref)))
-            *out |= bit;
+        if (verdict == IKC_V_OUT) *out |= bit;
         sol[s].q[i] = v;
     }
     return live;
+}
+
+/* Value *v = c - o of narrow revolute joint i with window [lo, hi]
+ * (ikc_finish6): 1 when it is kept, its value in *v. ikc_joint's
+ * operations: the window, one turn towards the reference into the window,
+ * else ikc_general (ikc_general_call). */
+DH_INLINE int ikc_val6(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i, float c, float o, float lo, float hi,
+                       float *v)
+{
+    const float x = c - o;
+    float ref, t;
+    *v = x;
+    if (x >= lo && x <= hi) return 1;
+    ref = (q_ref != NULL) ? q_ref[i] : 0.0f;
+    t = (x > ref) ? x - 360.0f : x + 360.0f;
+    if (t >= lo && t <= hi) {
+        *v = t;
+        return 1;
+    }
+    return ikc_general_call(m, i, ref, v) == IKC_V_IN;
+}
+
+/* ikc_finish (opts 0) for six revolute joints whose limits are less than a
+ * turn apart or absent (m->wide 0): each joint's window [win_lo, win_hi]
+ * does not depend on q_ref, so the solutions are taken one by one, the
+ * joints' offsets and windows held in registers, each value written
+ * straight into the solution's final slot (sol[n], n <= s: the solution's
+ * own slot or one already read) by ikc_val6, and the first value found outside the limits or not finite
+ * leaves the solution (its slot is free again). Per value these are
+ * ikc_joint's operations, so the kept solutions, values and order are
+ * ikc_finish's; for the status, a solution left while none is kept is
+ * checked for finite values in its slot as ikc_finish does (the values
+ * written keep the finiteness of the raw ones). */
+static DH_NOINLINE dh_status ikc_finish6(const dh_ikc_model_f32 *m, const float *q_ref, dh_ikc_sol_f32 *sol,
+                                         uint32_t *n_sol)
+{
+    const uint32_t raw = *n_sol & 0xFu;
+    const float o0 = m->off[0], o1 = m->off[1], o2 = m->off[2], o3 = m->off[3], o4 = m->off[4], o5 = m->off[5];
+    const float l0 = m->win_lo[0], l1 = m->win_lo[1], l2 = m->win_lo[2], l3 = m->win_lo[3], l4 = m->win_lo[4],
+                l5 = m->win_lo[5];
+    const float h0 = m->win_hi[0], h1 = m->win_hi[1], h2 = m->win_hi[2], h3 = m->win_hi[3], h4 = m->win_hi[4],
+                h5 = m->win_hi[5];
+    uint32_t s, n = 0u, fin = 0u;
+    for (s = 0; s < raw; s++) {
+        const dh_ikc_sol_f32 *src = &sol[s];
+        dh_ikc_sol_f32 *d = &sol[n];
+        const uint32_t f = src->flags;
+        float *v = d->q;
+        if (ikc_val6(m, q_ref, 0u, src->q[0], o0, l0, h0, &v[0]) &&
+            ikc_val6(m, q_ref, 1u, src->q[1], o1, l1, h1, &v[1]) &&
+            ikc_val6(m, q_ref, 2u, src->q[2], o2, l2, h2, &v[2]) &&
+            ikc_val6(m, q_ref, 3u, src->q[3], o3, l3, h3, &v[3]) &&
+            ikc_val6(m, q_ref, 4u, src->q[4], o4, l4, h4, &v[4]) &&
+            ikc_val6(m, q_ref, 5u, src->q[5], o5, l5, h5, &v[5])) {
+            d->flags = f;
+            n++;
+        } else if (n == 0u && fin == 0u && dh_allfinite_f32(src->q, 6u)) {
+            /* left while none is kept: the slot holds this solution's
+             * values so far and its raw ones */
+            fin = 1u;
+        } else {
+            /* left: its slot is free again */
+        }
+    }
+    for (s = n; s < raw; s++) sol[s].flags = 0u;
+    *n_sol = n;
+    if (n != 0u) return DH_OK;
+    return (fin == 0u) ? DH_ERR_UNREACHABLE : DH_ERR_LIMIT;
 }
 
 /* ikc_finish's raw_mask lists the masks for up to eight solutions */
@@ -391,6 +489,19 @@ static DH_NOINLINE dh_status ikc_finish(const dh_ikc_model_f32 *m, const float *
     for (s = 0; s < raw; s++)
         if (((fin >> s) & 1u) != 0u && !dh_allfinite_f32(sol[s].q, m->n)) fin &= ~(1u << s);
     return (fin == 0u) ? DH_ERR_UNREACHABLE : DH_ERR_LIMIT;
+}
+
+/* dh_ikc_f32's conversion: ikc_finish, or ikc_finish6 when it applies
+ * (opts 0, six revolute joints with narrow limits, an FPU: with soft
+ * float its constants would not stay in registers, and its frame would
+ * not fit under the Cortex-M0+ budget); *n_sol as ikc_finish's. Both
+ * builds of a core take the same one (the entries of sol beyond the kept
+ * ones, which the two leave differently, then agree between builds). */
+DH_INLINE dh_status ikc_done(const dh_ikc_model_f32 *m, const float *q_ref, dh_ikc_sol_f32 *sol, uint32_t *n_sol)
+{
+    if (!DH_SOFT_FLOAT && m->wide == 0u && (*n_sol >> 4) == 0u && m->n == 6u && m->prismatic == 0u)
+        return ikc_finish6(m, q_ref, sol, n_sol);
+    return ikc_finish(m, q_ref, sol, n_sol);
 }
 
 dh_status dh_ikc_args_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, uint32_t opts)
@@ -438,7 +549,7 @@ dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const
         return DH_ERR_UNREACHABLE;
     }
     *n_sol |= raw;
-    return ikc_finish(m, q_ref, sol, n_sol);
+    return ikc_done(m, q_ref, sol, n_sol);
 }
 
 dh_status dh_ikc_nearest_f32(const dh_ikc_sol_f32 *sol, uint32_t n_sol, const float *q_ref, uint32_t n,

@@ -1,17 +1,11 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dh_ikc_common.c - closed-form IK, float: the helpers that every family
- * solver calls (joint references in canonical values, vectors of T06);
- * interface in ikc_impl.h. Calls no solver and no front end.
+ * solver calls (vectors of T06); interface in ikc_impl.h. Calls no solver
+ * and no front end.
  */
 #include "ikc_impl.h"
 #include "../internal/dh_floatops.h"
-
-float dh_ikc_cref_f32_(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i)
-{
-    const float v = (q_ref != NULL) ? q_ref[i] : 0.0f;
-    return v + (((m->prismatic >> i) & 1u) ? m->d[i] : m->off[i]);
-}
 
 
 void dh_ikc_t06_vec_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *v, float w, float *out)

@@ -56,6 +56,15 @@ typedef char dh_ikc_k_fits_[(KW_COUNT <= (int)DH_IKC_K) ? 1 : -1];
  * more than the in-place one); 0: the in-place solver (soft float). */
 #define WRIST_ONE_PASS (!DH_SOFT_FLOAT)
 
+/* The wrist phases B and C: inlined into their one caller by the one-pass
+ * solver (the values pass in registers), out of line for the in-place
+ * solver (its frames within the Cortex-M0+ stack budget). */
+#if WRIST_ONE_PASS
+#define WRIST_PHASE static
+#else
+#define WRIST_PHASE static DH_NOINLINE
+#endif
+
 /* Wrist singular when axis 6 is within this angle (rad) of axis 4: the
  * orientation error of the q_ref split is at most that angle. */
 #define IKC_SING_WRIST 1.5e-6f
@@ -213,7 +222,7 @@ DH_INLINE void wrist_m(const dh_ikc_model_f32 *m, const float *q_ref, dh_ikc_sol
  * out[1].q[3]) and theta6 (out[1].q[4], q[5]). theta4 rotates (X', Y') =
  * (sin a5 s5, 0) onto (m13, m23); theta6 from M e_x rotated back by theta4
  * against the first two columns of Rx(a4) Rz(t5) Rx(a5) (consistency). */
-static DH_NOINLINE void wrist_b(const dh_ikc_model_f32 *m, dh_ikc_sol_f32 *out)
+WRIST_PHASE void wrist_b(const dh_ikc_model_f32 *m, dh_ikc_sol_f32 *out)
 {
     const float *k = m->k;
     const float m0 = out[0].q[3], m1 = out[0].q[4], m2 = out[0].q[5];
@@ -248,7 +257,7 @@ static DH_NOINLINE void wrist_b(const dh_ikc_model_f32 *m, dh_ikc_sol_f32 *out)
 
 /* Wrist, phase C: the angles, and the flipped solution (t4 + 180, -t5,
  * t6 + 180) into out[1] unless singular. */
-static DH_NOINLINE void wrist_c(dh_ikc_sol_f32 *out)
+WRIST_PHASE void wrist_c(dh_ikc_sol_f32 *out)
 {
     const int sing = (out[0].flags & DH_IKC_SING_WRIST) != 0u;
     const float t4 = sing ? out[1].q[2] : wrist_atan2(out[0].q[3], out[0].q[4], 0.0f);

@@ -42,7 +42,11 @@
 /* out = T06 (v, w): w = 1 a point, 0 a direction; out may alias v. */
 void dh_ikc_t06_vec_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *v, float w, float *out);
 /* q_ref[i] (0 when q_ref is NULL) plus joint i's theta or d offset. */
-float dh_ikc_cref_f32_(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i);
+static inline float dh_ikc_cref_f32_(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i)
+{
+    const float v = (q_ref != NULL) ? q_ref[i] : 0.0f;
+    return v + (((m->prismatic >> i) & 1u) ? m->d[i] : m->off[i]);
+}
 int dh_ikc_detect_wrist_f32_(dh_ikc_model_f32 *m);   /* sets kind WRIST_RRR or WRIST_RRP */
 int dh_ikc_detect_par234_f32_(dh_ikc_model_f32 *m);
 int dh_ikc_detect_scara_f32_(dh_ikc_model_f32 *m);

@@ -117,7 +117,9 @@ DH_INLINE int dh_rot_cols_ok_f32(const float *c0, const float *c1, const float *
     col[0] = c0;
     col[1] = c1;
     col[2] = c2;
+    DH_UNROLL3
     for (a = 0; a < 3u; a++) {
+        DH_UNROLL3
         for (b = a; b < 3u; b++) {
             float d = col[a][0] * col[b][0] + col[a][1] * col[b][1] + col[a][2] * col[b][2];
             if (a == b) d -= 1.0f;

@@ -62,6 +62,8 @@ float dh_atan2f_dg_(float y, float x);
  * the registers for it (the FPU builds' closed-form wrist solver). */
 DH_INLINE float dh_atan2f_dg_inl_(float y, float x)
 {
+    /* 45 K degrees, indexed by (w << 2) | (xn << 1) | b (below) */
+    static const float k45[8] = { 0.0f, 45.0f, 180.0f, 135.0f, 90.0f, 45.0f, 90.0f, 135.0f };
     const float ax = fabsf(x), ay = fabsf(y);
     float mx, mn, u, z, p, a;
     uint32_t w, xn, b, k, sneg;
@@ -98,11 +100,12 @@ DH_INLINE float dh_atan2f_dg_inl_(float y, float x)
     z = u * u;
     p = (u + u * (z * (DH_MF_T1 + z * (DH_MF_T2 + z * (DH_MF_T3 + z * (DH_MF_T4 + z * (DH_MF_T5 + z * DH_MF_T6))))))) *
         DH_MF_RAD2DEG;
-    /* angle = 45 K + s atan(u) degrees, K and s as in mathf_atan2_parts */
+    /* angle = 45 K + s atan(u) degrees, K and s as in mathf_atan2_parts:
+     * K = b (w 0, xn 0), 4 - b (w 0, xn 1), 2 - b (w 1, xn 0), 2 + b (w 1,
+     * xn 1); s = -1 when w ^ xn */
     sneg = w ^ xn;
-    k = w ? 2u : (xn ? 4u : 0u);
-    k = sneg ? k - b : k + b;
-    a = 45.0f * (float)k + (sneg ? -p : p); /* in [0, 180] */
+    k = (w << 2) | (xn << 1) | b;
+    a = sneg ? k45[k] - p : k45[k] + p; /* in [0, 180] */
     return (y < 0.0f && a < 180.0f) ? -a : a;
 }
 
