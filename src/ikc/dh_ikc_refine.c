@@ -431,6 +431,7 @@ uint32_t dh_ikc_pack_f32_(dh_ikc_sol_f32 *sol, uint32_t raw)
 #define REF_PEND 0x100u
 #define REF_NEW 0x200u
 #define REF_FREE 0x400u
+#define REF_PRIVATE 0x700u
 /* dh_ikc_refine_f32_'s rounds take slot k & 7 and round k >> 3 */
 typedef char ref_eight_slots_[(DH_IKC_MAX_SOL == 8u) ? 1 : -1];
 
@@ -586,6 +587,8 @@ static DH_NOINLINE uint32_t ref_plan(dh_ikc_sol_f32 *sol, uint32_t sh)
             src = s;
         } else if (src == DH_IKC_MAX_SOL || (sol[src].flags & DH_IKC_REFINED) == 0u) {
             src = s;
+        } else {
+            /* an unconverged branch after a converged one: the start stays */
         }
     }
     if (src == DH_IKC_MAX_SOL) return src;
@@ -632,7 +635,7 @@ static DH_NOINLINE uint32_t ref_marks(dh_ikc_sol_f32 *sol, uint32_t raw, int ms)
             sol[s].flags = (s < raw) ? (sol[s].flags | REF_NEW) : REF_FREE;
         } else {
             if ((sol[s].flags & REF_FREE) == 0u) n = s + 1u;
-            sol[s].flags &= ~(uint32_t)(REF_PEND | REF_NEW | REF_FREE);
+            sol[s].flags &= ~(uint32_t)REF_PRIVATE;
         }
     }
     return n;
@@ -658,13 +661,14 @@ uint32_t dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_
     w.m = m;
     w.T = T;
     (void)ref_marks(sol, (raw > DH_IKC_MAX_SOL) ? DH_IKC_MAX_SOL : raw, 0);
-    for (k = 0; k < 5u * DH_IKC_MAX_SOL; k++) {
+    k = 0;
+    while (k < 5u * DH_IKC_MAX_SOL) {
         if ((k & 8u) != 0u) {
             /* a restart round */
             if ((k & 7u) == 0u) {
                 it = ref_plan(sol, (k < 2u * DH_IKC_MAX_SOL) ? 0u : DH_IKC_SHOULDER_ALT);
                 if (it == DH_IKC_MAX_SOL) {
-                    k += 7u;
+                    k += DH_IKC_MAX_SOL;
                     continue;
                 }
                 /* from the first pending slot, holding the start's values:
@@ -682,17 +686,22 @@ uint32_t dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_
                 ref_fk(&w, 1);
                 ref_virtual(&w, sol[k & 7u].q);
             }
-            if ((sol[k & 7u].flags & REF_PEND) == 0u) continue;
-            it = (uint32_t)(ref_bs(&w, sol[k & 7u].flags) && ref_bw(&w));
-            if (it != 0u) {
-                ref_b6(&w, sol[k & 7u].flags);
-                it = (uint32_t)ref_be(&w, sol[k & 7u].flags);
+            if ((sol[k & 7u].flags & REF_PEND) != 0u) {
+                it = 0u;
+                if (ref_bs(&w, sol[k & 7u].flags) && ref_bw(&w)) {
+                    ref_b6(&w, sol[k & 7u].flags);
+                    if (ref_be(&w, sol[k & 7u].flags)) it = 1u;
+                }
+                if (it != 0u) ref_angles(w.cs, sol[k & 7u].q);
+                ref_started(&w, &sol[k & 7u], (int)it);
             }
-            if (it != 0u) ref_angles(w.cs, sol[k & 7u].q);
-            ref_started(&w, &sol[k & 7u], (int)it);
+            k++;
             continue;
         }
-        if ((sol[k & 7u].flags & REF_NEW) == 0u) continue;
+        if ((sol[k & 7u].flags & REF_NEW) == 0u) {
+            k++;
+            continue;
+        }
         sol[k & 7u].flags &= ~(uint32_t)REF_NEW;
         it = ref_begin(&sol[k & 7u]);
         while (it < REF_DONE) {
@@ -707,6 +716,7 @@ uint32_t dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_
                 if (!ref_a(&w) || !ref_b(&w) || !ref_apply(&w, sol[k & 7u].q)) it = REF_DONE;
             }
         }
+        k++;
     }
     return ref_marks(sol, 0u, 1);
 }
