@@ -914,6 +914,76 @@ static void bt_ikc(void)
     bt_status |= st;
 }
 
+/* ---- closed-form inverse kinematics of a calibrated robot --------------------- */
+
+#if BT_IKC_FLOAT
+/* The UR5 exact (cal 0), and calibrated (cal 1): a2 +1.5 mm, d4 -1 mm,
+ * a5 1 mm, twists 2 and 4 +0.4 and +0.3 deg, joint 3's offset +0.3 deg
+ * (within the calibration tolerance of ikc.h; the kind of deviations a
+ * calibrated table holds). */
+static uint32_t bt_ur5_cal(dh_robot *r, int cal)
+{
+    static const float dev[6][4] = { { 0.0f, 0.0f, 0.0f, 0.0f },       { 0.0015f, 0.0f, 0.4f, 0.0f },
+                                     { 0.0f, 0.0f, 0.0f, 0.3f },       { 0.0f, -0.001f, 0.3f, 0.0f },
+                                     { 0.001f, 0.0f, 0.0f, 0.0f },     { 0.0f, 0.0f, 0.0f, 0.0f } };
+    const float k = cal ? 1.0f : 0.0f;
+    uint32_t st, j;
+    st = (uint32_t)dh_robot_init(r, DH_CONV_STANDARD);
+    for (j = 0; j < 6u; j++) {
+        st |= (uint32_t)dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, k * dev[j][3], bt_ur5_tab[j][1] + k * dev[j][1],
+                                               bt_ur5_tab[j][0] + k * dev[j][0], bt_ur5_tab[j][2] + k * dev[j][2]);
+        st |= (uint32_t)dh_robot_set_limits_f32(r, j, bt_ur5_tab[j][3], bt_ur5_tab[j][4]);
+    }
+    return st;
+}
+
+/* dh_ikc_f32 on the UR5, exact and calibrated, the targets FK of the same
+ * random configurations on each robot (untimed), as bt_ikc. */
+static void bt_ikc_cal(void)
+{
+    dh_ikc_model_f32 *const mf = &bt_mem.c.mf;
+    dh_mat4_f32 *const Tf = bt_mem.c.Tf;
+    dh_ikc_sol_f32 *const solf = bt_mem.c.solf;
+    dh_robot r;
+    uint32_t k, j, nsol, total, st, cal;
+    uint64_t t0, t1, tl;
+    t0 = bt_now();
+    for (k = 0; k < BT_NIKC; k++) {
+        bt_sink = k;
+    }
+    t1 = bt_now();
+    tl = t1 - t0;
+    for (cal = 0; cal < 2u; cal++) {
+        const uint32_t saved = bt_rng;
+        st = bt_ur5_cal(&r, (int)cal);
+        bt_rng = 0x27D4EB2Fu;
+        for (k = 0; k < BT_NIKC; k++) {
+            float q[6];
+            for (j = 0; j < 6u; j++) q[j] = bt_uniform(bt_ur5_tab[j][3], bt_ur5_tab[j][4]);
+            st |= (uint32_t)dh_fk_f32(&r, q, &Tf[k]);
+        }
+        bt_rng = saved;
+        st |= (uint32_t)dh_ikc_analyse_f32(&r, mf);
+        if (st != 0u || mf->calibrated != cal) {
+            printf("BT error|calibrated closed-form IK set-up returned status %lu\n", (unsigned long)st);
+            bt_status |= 1u;
+            return;
+        }
+        total = 0u;
+        t0 = bt_now();
+        for (k = 0; k < BT_NIKC; k++) {
+            st |= (uint32_t)dh_ikc_f32(mf, &Tf[k], NULL, 0u, solf, &nsol);
+            total += nsol;
+        }
+        t1 = bt_now();
+        printf("BT ikc|dh_ikc_f32 (UR5%s, m, all solutions)|%lu|%llu|%llu|%lu|%lu\n", cal ? " calibrated" : "",
+               (unsigned long)BT_NIKC, (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total,
+               (unsigned long)st);
+        bt_status |= st;
+    }
+}
+#endif
+
 /* ---- closed-form inverse kinematics against opw_kinematics ------------------ */
 
 #if !BENCH_HAVE_OPW
@@ -1708,6 +1778,7 @@ int main(void)
     bt_ik_q();
     bt_ikc();
 #if BT_IKC_FLOAT
+    bt_ikc_cal();
     bt_opw();
 #endif
     if (bt_inputs_dls() != 0u) {

@@ -139,11 +139,15 @@ typedef enum {
  * DH_IKC_REFINED) only when its residual on the exact chain is within
  * 4e-7 L in position (L: the sum of |a| and |d|) and 8e-7 rad, and left
  * out otherwise (none left: DH_ERR_UNREACHABLE); the accuracy bounds below
- * hold for it. A branch exists only where the idealised chain has it: a
- * configuration whose joint 5 point lies within the deviations' shift
- * (about 1.3e-2 L for 2 mm and 0.5 deg) of the elbow's boundary, or one at
- * a singularity of the idealised blocks (s5, shoulder, elbow), may be
- * missing. Beyond the tolerance: no closed form (DH_ERR_UNAVAILABLE, why
+ * hold for it. A shoulder whose four branches are not all refined is
+ * started again from the virtual target of one of its branches (the exact
+ * errors there applied to the idealised chain), which finds the branches
+ * that the idealised chain lacks or misplaces near the wrist singularity
+ * (docs/design.md). A configuration whose joint 5 point lies within the
+ * deviations' shift (about 1.3e-2 L for 2 mm and 0.5 deg) of the elbow's
+ * boundary, or one at a singularity of the idealised blocks (s5, shoulder,
+ * elbow), may be missing; near the elbow's boundary the solutions may
+ * number more or fewer than the idealised chain's. Beyond the tolerance: no closed form (DH_ERR_UNAVAILABLE, why
  * as for any robot). The spherical-wrist and SCARA families, and the fixed
  * path (dh_ikc_analyse_q), recognise exact robots only.
  * @{ */

@@ -540,7 +540,7 @@ dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const
     *n_sol = opts << 4;
     raw = dh_ikc_raw_f32_(m, target, q_ref, sol);
     if (m->calibrated != 0u) {
-        dh_ikc_refine_f32_(m, target, sol, raw);
+        raw = dh_ikc_refine_f32_(m, target, sol, raw);
         raw = dh_ikc_pack_f32_(sol, raw);
     }
     if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;

@@ -16,10 +16,16 @@
  * planar position error and the rotation about axis 2 on joints 2, 3, 4
  * once those are known), each step one exact forward kinematics.
  *
+ * A shoulder whose four branches are not all refined then starts again
+ * from the virtual target of one of its branches (the exact errors there
+ * applied to the idealised chain's T06), solved in closed form for each of
+ * its missing or unconverged branches, and refines those starts.
+ *
  * Stack: the entry keeps 24 floats (the cosines and sines of the branch's
- * joints, and the exact frame or the errors); every helper runs from the
- * entry in sequence, none below another, and only the trigonometry helper
- * calls dh_sincos_f32.
+ * joints, and the exact frame or the errors, or the virtual target and the
+ * one-branch closed form's atan2 arguments); every helper runs from the
+ * entry in sequence, none below another, and only the trigonometry and
+ * angle helpers call dh_sincos_f32 and dh_atan2f_dg_.
  */
 #include "dhmath/ikc.h"
 #include "dhmath/trig.h"
@@ -27,6 +33,7 @@
 #include "../internal/dh_floatops.h"
 
 #include <math.h>
+#include <stddef.h>
 
 /* sin of DH_IKC_CAL_ANGLE_DEG (1 degree) */
 #define REF_SIN_TOL 0.0174524064f
@@ -39,14 +46,20 @@
 #define REF_MAX_STEP 0.2f
 /* |sin theta5| or a planar determinant below this (relative): the branch
  * is at a singularity of the idealised Jacobian and is not refined. */
-#define REF_SING 1e-6f
+#define REF_SING_TOL 1e-6f
 /* Two refined solutions this close on every joint (deg) are one. */
 /* A step count past the last: the branch is done. */
 #define REF_DONE (DH_IKC_CAL_STEPS + 1u)
 #define REF_SAME_DEG 1e-3f
 
 /* m->k layout of DH_IKC_PARALLEL_234 (dh_ikc_par234.c), the entries read here */
-enum { RK_TAU = 0, RK_S2 = 1, RK_S23 = 2, RK_SB = 3, RK_W5 = 4 };
+enum {
+    RK_TAU = 0, RK_S2 = 1, RK_S23 = 2, RK_SB = 3, RK_W5 = 4, RK_H = 5, RK_D = 6, RK_A23 = 7, RK_E5 = 8,
+    RK_W0 = 12, RK_SUM2 = 18, RK_DIF2 = 19
+};
+/* the branch bits of a solution's flags */
+#define REF_BRANCH (DH_IKC_SHOULDER_ALT | DH_IKC_ELBOW_ALT | DH_IKC_WRIST_ALT)
+#define REF_SING (DH_IKC_SING_WRIST | DH_IKC_SING_SHOULDER | DH_IKC_SING_ELBOW)
 
 /* ---- analysis -------------------------------------------------------------------- */
 
@@ -122,8 +135,9 @@ int dh_ikc_calibrate_f32_(dh_ikc_model_f32 *m)
 /* Work data of one call: cs the cosines and sines of the branch's canonical
  * joint values (c1, s1, ..., c6, s6); u the exact chain's end frame
  * (columns x, y, z and the joint 5 point), then the errors and the joint
- * 5 point (ref_rot, ref_pos, ref_frame1), then the steps (ref_a, ref_b);
- * m the model, T the target. */
+ * 5 point (ref_rot, ref_pos, ref_frame1), then the steps (ref_a, ref_b),
+ * or the vectors of a virtual target (ref_virtual); m the model, T the
+ * target. */
 typedef struct {
     float cs[12];
     float u[12];
@@ -139,12 +153,29 @@ static DH_NOINLINE void ref_trig(const float *q, ref_work *w)
     for (i = 0; i < 12u; i += 2u) (void)dh_sincos_f32(q[i >> 1], &w->cs[i + 1u], &w->cs[i]);
 }
 
-/* The exact chain's T06 from cs into u, per joint the turn about z, the
- * offsets, the twist, each a pass over the three rows; then p moved to the
- * joint 5 point, T06 (-a6, -d6 sa6, -d6 ca6). */
-static DH_NOINLINE void ref_fk(ref_work *w)
+/* Byte offsets of d, sin and cos of the twist from a in the model's
+ * idealised chain, the same in its exact chain (xa..xca; checked below). */
+#define REF_OD (offsetof(dh_ikc_model_f32, d) - offsetof(dh_ikc_model_f32, a))
+#define REF_OS (offsetof(dh_ikc_model_f32, sa) - offsetof(dh_ikc_model_f32, a))
+#define REF_OC (offsetof(dh_ikc_model_f32, ca) - offsetof(dh_ikc_model_f32, a))
+typedef char ref_chain_layout_[(offsetof(dh_ikc_model_f32, xd) - offsetof(dh_ikc_model_f32, xa) == REF_OD &&
+                                offsetof(dh_ikc_model_f32, xsa) - offsetof(dh_ikc_model_f32, xa) == REF_OS &&
+                                offsetof(dh_ikc_model_f32, xca) - offsetof(dh_ikc_model_f32, xa) == REF_OC)
+                                   ? 1
+                                   : -1];
+
+/* Joint j's value at byte offset o from a (or xa) of the chain at c. */
+#define REF_CH(c, o, j) (*(const float *)(const void *)((c) + (o) + sizeof(float) * (j)))
+
+/* The exact chain's (ideal 0) or the idealised chain's (1) T06 from cs
+ * into u, per joint the turn about z, the offsets, the twist, each a pass
+ * over the three rows; then p moved to the joint 5 point, T06 (-a6,
+ * -d6 sa6, -d6 ca6) of that chain. The chain is read through one pointer
+ * (c: the model's a or xa, as bytes), which keeps the frame small. */
+static DH_NOINLINE void ref_fk(ref_work *w, int ideal)
 {
-    const dh_ikc_model_f32 *m = w->m;
+    const unsigned char *c = (const unsigned char *)(const void *)w->m +
+                             (ideal ? offsetof(dh_ikc_model_f32, a) : offsetof(dh_ikc_model_f32, xa));
     float *u = w->u;
     uint32_t i, r;
     for (r = 0; r < 12u; r++) u[r] = ((r & 3u) == 0u && r < 9u) ? 1.0f : 0.0f;
@@ -154,15 +185,17 @@ static DH_NOINLINE void ref_fk(ref_work *w)
             const float x = u[r];
             u[r] = cs[0] * x + cs[1] * u[3u + r];
             u[3u + r] = cs[0] * u[3u + r] - cs[1] * x;
-            u[9u + r] += m->xd[i] * u[6u + r] + m->xa[i] * u[r];
+            u[9u + r] += REF_CH(c, REF_OD, i) * u[6u + r] + REF_CH(c, 0u, i) * u[r];
         }
         for (r = 0; r < 3u; r++) {
             const float y = u[3u + r];
-            u[3u + r] = m->xca[i] * y + m->xsa[i] * u[6u + r];
-            u[6u + r] = m->xca[i] * u[6u + r] - m->xsa[i] * y;
+            u[3u + r] = REF_CH(c, REF_OC, i) * y + REF_CH(c, REF_OS, i) * u[6u + r];
+            u[6u + r] = REF_CH(c, REF_OC, i) * u[6u + r] - REF_CH(c, REF_OS, i) * y;
         }
     }
-    for (r = 0; r < 3u; r++) u[9u + r] -= m->xa[5] * u[r] + m->xd[5] * (m->xsa[5] * u[3u + r] + m->xca[5] * u[6u + r]);
+    for (r = 0; r < 3u; r++)
+        u[9u + r] -= REF_CH(c, 0u, 5u) * u[r] +
+                     REF_CH(c, REF_OD, 5u) * (REF_CH(c, REF_OS, 5u) * u[3u + r] + REF_CH(c, REF_OC, 5u) * u[6u + r]);
 }
 
 /* u's rotation times the tool frame's (post = post_inv^-1, rotation S^T),
@@ -304,8 +337,8 @@ static DH_NOINLINE int ref_a(ref_work *w)
     const dh_ikc_model_f32 *m = w->m;
     float *u = w->u;
     float d1, r2;
-    if (!(fabsf(u[6] + m->a[0]) > REF_SING * (fabsf(u[6]) + fabsf(u[7]) + fabsf(m->a[0]))) ||
-        !(fabsf(w->cs[9]) > REF_SING))
+    if (!(fabsf(u[6] + m->a[0]) > REF_SING_TOL * (fabsf(u[6]) + fabsf(u[7]) + fabsf(m->a[0]))) ||
+        !(fabsf(w->cs[9]) > REF_SING_TOL))
         return 0;
     d1 = -m->k[RK_TAU] * u[2] / (u[6] + m->a[0]);
     r2 = u[4] - m->k[RK_TAU] * d1;
@@ -332,7 +365,7 @@ static DH_NOINLINE int ref_b(ref_work *w)
     cp[0] = m->a[1] * w->cs[2] + m->a[2] * cp[0];
     cp[1] = m->a[1] * w->cs[3] + m->a[2] * cp[1];
     det = m->a[1] * (w->cs[2] * cp[1] - w->cs[3] * cp[0]);
-    if (!(fabsf(det) > REF_SING * fabsf(m->a[1] * m->a[2]))) return 0;
+    if (!(fabsf(det) > REF_SING_TOL * fabsf(m->a[1] * m->a[2]))) return 0;
     om = u[5] + m->k[RK_SB] * m->k[RK_W5] * w->cs[8] * u[11];
     gx = u[6] * om - u[1];
     gy = u[7] * om + (u[0] - m->k[RK_TAU] * u[8] * u[9]);
@@ -391,29 +424,299 @@ uint32_t dh_ikc_pack_f32_(dh_ikc_sol_f32 *sol, uint32_t raw)
     return n;
 }
 
-/* Each branch, last to first: at most DH_IKC_CAL_STEPS steps, each one
- * exact forward kinematics; the helpers run in sequence from here, with
- * only sol, the branch's index and the step count live across them. */
-void dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol, uint32_t raw)
+/* Private flag bits of the slots while dh_ikc_refine_f32_ runs, cleared
+ * before it returns: a slot waiting for a start from the virtual target
+ * (ref_plan), one waiting for its refinement (a raw branch, or started by
+ * ref_start), and a free one. */
+#define REF_PEND 0x100u
+#define REF_NEW 0x200u
+#define REF_FREE 0x400u
+#define REF_PRIVATE 0x700u
+/* dh_ikc_refine_f32_'s rounds take slot k & 7 and round k >> 3 */
+typedef char ref_eight_slots_[(DH_IKC_MAX_SOL == 8u) ? 1 : -1];
+
+/* The first-order virtual target of the canonical values q whose exact
+ * errors (ref_rot, ref_pos: the joint 5 point's position error and the
+ * rotation error, base frame) are in e, from the idealised chain's T06 at q
+ * in u (ref_fk, ideal): T'06 = the errors applied to it, the target whose
+ * idealised solution of q's branch is q up to the change of the
+ * deviations' effect between q and that solution. Its vectors as the
+ * family solver reads them (the joint 5 point, x6 and axis 6) into u[0..8]. */
+static DH_NOINLINE void ref_virtual(ref_work *w, float *e)
+{
+    const dh_ikc_model_f32 *m = w->m;
+    const dh_mat4_f32 *P = &m->pre_inv;
+    float *u = w->u;
+    uint32_t k;
+    if ((m->xframes & 1u) != 0u)
+        for (k = 0; k < 6u; k += 3u) {
+            float *v = &e[k];
+            const float x = v[0], y = v[1], z = v[2];
+            v[0] = P->m[0][0] * x + P->m[1][0] * y + P->m[2][0] * z;
+            v[1] = P->m[0][1] * x + P->m[1][1] * y + P->m[2][1] * z;
+            v[2] = P->m[0][2] * x + P->m[1][2] * y + P->m[2][2] * z;
+        }
+    /* axis 6, then x6, each turned by the rotation error; the point moved by the position error */
+    for (k = 0; k < 3u; k++) u[3u + k] = m->sa[5] * u[3u + k] + m->ca[5] * u[6u + k];
+    for (k = 0; k < 6u; k += 3u) {
+        const float *a = &u[(k == 0u) ? 3u : 0u];
+        float *o = &u[(k == 0u) ? 6u : 3u];
+        const float x = a[0], y = a[1], z = a[2];
+        o[0] = x + e[4] * z - e[5] * y;
+        o[1] = y + e[5] * x - e[3] * z;
+        o[2] = z + e[3] * y - e[4] * x;
+    }
+    for (k = 0; k < 3u; k++) u[k] = u[9u + k] + e[k];
+}
+
+/* The idealised chain's solution of branch f (shoulder, wrist and elbow
+ * bits) for the target whose vectors are in u (ref_virtual): the closed
+ * form of DH_IKC_PARALLEL_234 (docs/design.md) for one branch, in four
+ * helpers: ref_bs the shoulder, ref_bw and ref_b6 the wrist, ref_be the elbow, each writing
+ * the arguments of its angles into cs (atan2 (y, x) pairs: joint 1 at 0,
+ * 5 at 2, 6 at 4, 3 at 6, 2 at 8; cos and sin of phi at 10), ref_angles
+ * the angles into q. 0 when the branch does not exist there (beyond the
+ * shoulder cylinder or the elbow's reach, or the wrist singular). */
+static DH_NOINLINE int ref_bs(ref_work *w, uint32_t f)
+{
+    const float *k = w->m->k, *p = w->u;
+    const float th = k[RK_TAU] * k[RK_H];
+    float *o = w->cs;
+    float r = p[0] * p[0] + p[1] * p[1] - k[RK_H] * k[RK_H];
+    if (!(r > 0.0f)) return 0;
+    r = dh_sqrt_f32(r);
+    if ((f & DH_IKC_SHOULDER_ALT) != 0u) r = -r;
+    o[1] = r * p[0] - th * p[1];
+    o[0] = th * p[0] + r * p[1];
+    r = 1.0f / dh_sqrt_f32(o[0] * o[0] + o[1] * o[1]);
+    o[0] *= r;
+    o[1] *= r;
+    return 1;
+}
+
+static DH_NOINLINE int ref_bw(ref_work *w)
+{
+    const float *k = w->m->k, *z = &w->u[6];
+    const float tau = k[RK_TAU], sb = k[RK_SB], w5 = k[RK_W5];
+    float *o = w->cs;
+    const float c1 = o[1], s1 = o[0];
+    float s5, cp, sp;
+    cp = c1 * z[0] + s1 * z[1];
+    sp = tau * z[2];
+    s5 = dh_sqrt_f32(cp * cp + sp * sp);
+    if (!(s5 > REF_SING_TOL)) return 0;
+    o[2] = s5;
+    o[3] = -sb * w5 * tau * (s1 * z[0] - c1 * z[1]);
+    o[10] = w5 * cp / s5;
+    o[11] = w5 * sp / s5;
+    return 1;
+}
+
+/* Joint 6's pair from the first column (n11 = x1 . x6, n21 = y1 . x6,
+ * n31 = z1 . x6), then the wrist flip of f. */
+static DH_NOINLINE void ref_b6(ref_work *w, uint32_t f)
+{
+    const float *k = w->m->k, *x = &w->u[3];
+    float *o = w->cs;
+    float n11, n21;
+    o[5] = k[RK_SB] * k[RK_TAU] * o[2] * (o[0] * x[0] - o[1] * x[1]);
+    n11 = o[1] * x[0] + o[0] * x[1];
+    n21 = k[RK_TAU] * x[2];
+    o[5] += o[3] * (o[10] * n11 + o[11] * n21);
+    o[4] = -k[RK_W5] * k[RK_SB] * (o[10] * n21 - o[11] * n11);
+    if ((f & DH_IKC_WRIST_ALT) != 0u) {
+        o[2] = -o[2];
+        o[4] = -o[4];
+        o[5] = -o[5];
+        o[10] = -o[10];
+        o[11] = -o[11];
+    }
+}
+
+static DH_NOINLINE int ref_be(ref_work *w, uint32_t f)
+{
+    const dh_ikc_model_f32 *m = w->m;
+    const float *k = m->k, *p = w->u;
+    float *o = w->cs;
+    float vx, vy, v2, r, kd, ad, bd;
+    vx = o[1] * p[0] + o[0] * p[1] - m->a[0] - m->a[3] * o[10] - k[RK_E5] * o[11];
+    vy = k[RK_TAU] * (p[2] - m->d[0]) - m->a[3] * o[11] + k[RK_E5] * o[10];
+    v2 = vx * vx + vy * vy;
+    r = (k[RK_SUM2] - v2) * (v2 - k[RK_DIF2]);
+    if (!(r >= 0.0f)) return 0;
+    r = dh_sqrt_f32(r);
+    if ((f & DH_IKC_ELBOW_ALT) != 0u) r = -r;
+    kd = (k[RK_D] < 0.0f) ? k[RK_A23] - v2 : v2 - k[RK_A23];
+    ad = m->a[1] * fabsf(k[RK_D]) + m->a[2] * kd;
+    bd = k[RK_S2] * m->a[2] * r;
+    o[6] = r;
+    o[7] = kd;
+    o[8] = ad * vy - bd * vx;
+    o[9] = ad * vx + bd * vy;
+    return 1;
+}
+
+static DH_NOINLINE void ref_angles(float *o, float *q)
+{
+    /* a start: (0, 0) pairs need no rule of their own */
+    q[0] = dh_atan2f_dg_(o[0], o[1]);
+    q[4] = dh_atan2f_dg_(o[2], o[3]);
+    q[5] = dh_atan2f_dg_(o[4], o[5]);
+    q[2] = dh_atan2f_dg_(o[6], o[7]);
+    q[1] = dh_atan2f_dg_(o[8], o[9]);
+    o[10] = dh_atan2f_dg_(o[11], o[10]);
+}
+
+/* The branches of shoulder sh (0 or DH_IKC_SHOULDER_ALT) that did not
+ * converge, or that the idealised chain did not have, marked REF_PEND
+ * (those that did not converge in their slots, the missing ones in free
+ * slots while there are any); returns the first of them, which holds the
+ * values of the branch whose virtual target starts them (a converged one
+ * when there is one), and DH_IKC_MAX_SOL when none is pending (every
+ * branch converged, no free slot, or the shoulder has a singular branch or
+ * none). */
+static DH_NOINLINE uint32_t ref_plan(dh_ikc_sol_f32 *sol, uint32_t sh)
+{
+    uint32_t s, c, src = DH_IKC_MAX_SOL, done = 0u, pend;
+    for (s = 0; s < DH_IKC_MAX_SOL; s++) {
+        const uint32_t f = sol[s].flags;
+        if ((f & REF_FREE) != 0u || (f & DH_IKC_SHOULDER_ALT) != sh) continue;
+        if ((f & REF_SING) != 0u) return DH_IKC_MAX_SOL;
+        if ((f & DH_IKC_REFINED) != 0u) {
+            done |= 1u << ((f & (DH_IKC_ELBOW_ALT | DH_IKC_WRIST_ALT)) >> 1);
+            src = s;
+        } else if (src == DH_IKC_MAX_SOL || (sol[src].flags & DH_IKC_REFINED) == 0u) {
+            src = s;
+        } else {
+            /* an unconverged branch after a converged one: the start stays */
+        }
+    }
+    if (src == DH_IKC_MAX_SOL) return src;
+    pend = DH_IKC_MAX_SOL;
+    for (c = 0; c < 4u; c++) {
+        const uint32_t f = sh | (c << 1);
+        uint32_t slot = DH_IKC_MAX_SOL;
+        if (((done >> c) & 1u) != 0u) continue;
+        /* its own unconverged slot, else the first free one */
+        for (s = DH_IKC_MAX_SOL; s > 0u; s--)
+            if ((sol[s - 1u].flags & REF_FREE) != 0u) slot = s - 1u;
+        for (s = 0; s < DH_IKC_MAX_SOL; s++)
+            if ((sol[s].flags & (REF_FREE | REF_PEND | REF_BRANCH | DH_IKC_REFINED)) == f) slot = s;
+        if (slot == DH_IKC_MAX_SOL) continue;
+        sol[slot].flags = f | REF_PEND;
+        if (slot < pend) pend = slot;
+    }
+    /* the start's values into the first pending slot */
+    if (pend != DH_IKC_MAX_SOL && pend != src)
+        for (c = 0; c < 6u; c++) sol[pend].q[c] = sol[src].q[c];
+    return pend;
+}
+
+/* Slot b after its start (ref_bw, ref_be, ref_angles; ok 1 when it has
+ * one): joint 4 from phi, flagged REF_NEW; none: free again. */
+static DH_NOINLINE void ref_started(const ref_work *w, dh_ikc_sol_f32 *b, int ok)
+{
+    const uint32_t f = b->flags & ~(uint32_t)REF_PEND;
+    b->flags = REF_FREE;
+    if (ok) {
+        b->q[3] = dh_wrap180_f32(w->m->k[RK_S23] * (w->cs[10] - b->q[1] - w->m->k[RK_S2] * b->q[2]));
+        b->flags = f | REF_NEW;
+    }
+}
+
+/* Slots 0..raw-1 flagged REF_NEW (the raw branches), the others REF_FREE
+ * (ms 0); or (ms 1) the private flags cleared and the number of slots up to
+ * the last one in use returned. */
+static DH_NOINLINE uint32_t ref_marks(dh_ikc_sol_f32 *sol, uint32_t raw, int ms)
+{
+    uint32_t s, n = 0;
+    for (s = 0; s < DH_IKC_MAX_SOL; s++) {
+        if (ms == 0) {
+            sol[s].flags = (s < raw) ? (sol[s].flags | REF_NEW) : REF_FREE;
+        } else {
+            if ((sol[s].flags & REF_FREE) == 0u) n = s + 1u;
+            sol[s].flags &= ~(uint32_t)REF_PRIVATE;
+        }
+    }
+    return n;
+}
+
+/* Five rounds over the slots (k: round k >> 3, slot k & 7). Round 0
+ * refines the raw branches. Rounds 1 and 3 restart shoulder 0, then 1: its
+ * missing and unconverged branches marked (ref_plan), the virtual target
+ * of one of its branches formed (ref_virtual) and each marked slot started
+ * from it (ref_bs, ref_bw, ref_b6, ref_be, ref_angles: near the wrist
+ * singularity the idealised joint 1 can be degrees off, which the wrist
+ * turns into a planar point beyond the elbow's reach for one wrist branch
+ * and into a start without a solution near it for the other); rounds 2
+ * and 4 refine those starts. Each refinement at most DH_IKC_CAL_STEPS
+ * steps, each one exact forward kinematics. The helpers run in sequence
+ * from here, none below another, and only the work data, sol, k and one
+ * count are kept across them. Returns the number of slots used (refined
+ * ones flagged DH_IKC_REFINED). */
+uint32_t dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol, uint32_t raw)
 {
     ref_work w;
-    uint32_t s = (raw > DH_IKC_MAX_SOL) ? DH_IKC_MAX_SOL : raw, it;
+    uint32_t k, it;
     w.m = m;
     w.T = T;
-    while (s > 0u) {
-        s--;
-        it = ref_begin(&sol[s]);
+    (void)ref_marks(sol, (raw > DH_IKC_MAX_SOL) ? DH_IKC_MAX_SOL : raw, 0);
+    k = 0;
+    while (k < 5u * DH_IKC_MAX_SOL) {
+        if ((k & 8u) != 0u) {
+            /* a restart round */
+            if ((k & 7u) == 0u) {
+                it = ref_plan(sol, (k < 2u * DH_IKC_MAX_SOL) ? 0u : DH_IKC_SHOULDER_ALT);
+                if (it == DH_IKC_MAX_SOL) {
+                    k += DH_IKC_MAX_SOL;
+                    continue;
+                }
+                /* from the first pending slot, holding the start's values:
+                 * the exact errors there into its q, then the virtual
+                 * target into w.u */
+                k += it;
+                ref_trig(sol[k & 7u].q, &w);
+                ref_fk(&w, 0);
+                ref_tool(&w);
+                ref_base(&w);
+                ref_rot(&w);
+                (void)ref_pos(&w, &sol[k & 7u], 0u);
+                ref_trig(sol[k & 7u].q, &w);
+                for (it = 0; it < 6u; it++) sol[k & 7u].q[it] = w.u[it];
+                ref_fk(&w, 1);
+                ref_virtual(&w, sol[k & 7u].q);
+            }
+            if ((sol[k & 7u].flags & REF_PEND) != 0u) {
+                it = 0u;
+                if (ref_bs(&w, sol[k & 7u].flags) && ref_bw(&w)) {
+                    ref_b6(&w, sol[k & 7u].flags);
+                    if (ref_be(&w, sol[k & 7u].flags)) it = 1u;
+                }
+                if (it != 0u) ref_angles(w.cs, sol[k & 7u].q);
+                ref_started(&w, &sol[k & 7u], (int)it);
+            }
+            k++;
+            continue;
+        }
+        if ((sol[k & 7u].flags & REF_NEW) == 0u) {
+            k++;
+            continue;
+        }
+        sol[k & 7u].flags &= ~(uint32_t)REF_NEW;
+        it = ref_begin(&sol[k & 7u]);
         while (it < REF_DONE) {
-            ref_trig(sol[s].q, &w);
-            ref_fk(&w);
+            ref_trig(sol[k & 7u].q, &w);
+            ref_fk(&w, 0);
             ref_tool(&w);
             ref_base(&w);
             ref_rot(&w);
-            it = ref_pos(&w, &sol[s], it);
+            it = ref_pos(&w, &sol[k & 7u], it);
             if (it < REF_DONE) {
                 ref_frame1(&w);
-                if (!ref_a(&w) || !ref_b(&w) || !ref_apply(&w, sol[s].q)) it = REF_DONE;
+                if (!ref_a(&w) || !ref_b(&w) || !ref_apply(&w, sol[k & 7u].q)) it = REF_DONE;
             }
         }
+        k++;
     }
+    return ref_marks(sol, 0u, 1);
 }

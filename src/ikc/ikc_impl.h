@@ -71,16 +71,19 @@ dh_status dh_ikc_args_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, cons
  * tolerance of a family it refines; else 0 with m as on entry (calibrated
  * 0). dh_ikc_refine_f32_: the raw solutions sol[0..raw-1] (canonical values
  * of the idealised chain, raw clamped to DH_IKC_MAX_SOL) refined in place
- * on the exact chain for the target T, the converged ones flagged
- * DH_IKC_REFINED; dh_ikc_pack_f32_ then keeps those, distinct, packed to
- * the front in order, and returns their count. Called after the solver has
+ * on the exact chain for the target T, and the branches restarted from a
+ * virtual target in their slots or in the free ones (every slot of sol may
+ * be written), the converged ones flagged DH_IKC_REFINED; returns the
+ * number of slots up to the last one used. dh_ikc_pack_f32_ then keeps
+ * the converged ones, distinct, packed to the front in order, and returns
+ * their count. Called after the solver has
  * returned (its frames are not below the refinement's), one after the
  * other. dh_ikc_raw_f32_ gives the idealised solutions only: dh_ikc_args_f32_
  * refuses a calibrated model (DH_ERR_UNAVAILABLE), so that a caller of the
  * three calls treats it as a robot without a closed form; dh_ikc_f32
  * refines. */
 int dh_ikc_calibrate_f32_(dh_ikc_model_f32 *m);
-void dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol, uint32_t raw);
+uint32_t dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol, uint32_t raw);
 uint32_t dh_ikc_pack_f32_(dh_ikc_sol_f32 *sol, uint32_t raw);
 static inline uint32_t dh_ikc_raw_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                                        dh_ikc_sol_f32 *sol)

@@ -15,7 +15,13 @@
  * only where every solution of the idealised robot is SING_MIN (3e-2) from
  * its singularities: nearer one, the deviations make branches appear or
  * disappear (a branch of the idealised robot 1.07e-2 L inside the elbow's
- * boundary has no twin on the calibrated one).
+ * boundary has no twin on the calibrated one), and only where the wrist
+ * flip of every idealised solution that the idealised robot lacks lies
+ * beyond the elbow's reach by more than FLIP_BAND / |s5| (flip_margin):
+ * the calibrated robot's joint 1 differs from the idealised one's by up to
+ * degrees, which the wrist turns into a planar point moved by up to
+ * 4.4e-3 L / |s5| (3.4e-2 L at q5 = 7.5 deg), so such a branch may exist
+ * on the calibrated robot and is then found.
  */
 #include "dht.h"
 #include "support_ikc.h"
@@ -40,6 +46,8 @@
 #define GEN_MIN 1e-2
 #define GEN_ELBOW 3e-2
 #define SING_MIN 3e-2
+/* twice the largest planar shift of a wrist-flipped branch measured, times |s5| (L) */
+#define FLIP_BAND 1e-2
 /* deg: a solution this near the generating configuration on every joint is
  * it; the nearest other branch lies degrees away at GEN_MIN (joint 5
  * flipped at |s5| = 0.1: 11 deg). */
@@ -129,6 +137,38 @@ static double sing_of(const dhs_robot *d, const double *q, double elbow_scale)
     return best;
 }
 
+/* The wrist flip of the idealised robot's solution q (the same joint 1, 5
+ * point and orientation; joint 4 turned by 180 deg, joint 5 negated): its
+ * elbow's planar point (from axis 2 to axis 4 across axis 2) is 2 g - v,
+ * with v that of q and g the joint 5 point's, both across axis 2 from
+ * frame 1's origin. Returns that point's signed distance inside the
+ * elbow's annulus over L (negative: the flip does not exist) divided by
+ * FLIP_BAND / |s5|: in (-1, 0) the flip may exist on the calibrated robot. */
+static double flip_margin(const dhs_robot *d, const double *q)
+{
+    dhr_mat4 F[NJ];
+    double v[3], g[3], vz = 0.0, gz = 0.0, n = 0.0, reach = 0.0, l1, l2, e, s5;
+    unsigned i;
+    dhs_fk_desc(d, q, F, NULL);
+    for (i = 0; i < d->n; i++) reach += fabs(d->j[i].a) + fabs(d->j[i].d);
+    for (i = 0; i < 3u; i++) {
+        v[i] = F[2].m[3][i] - F[0].m[3][i];
+        g[i] = F[4].m[3][i] - F[0].m[3][i];
+        vz += v[i] * F[0].m[2][i];
+        gz += g[i] * F[0].m[2][i];
+    }
+    for (i = 0; i < 3u; i++) {
+        const double c = 2.0 * (g[i] - gz * F[0].m[2][i]) - (v[i] - vz * F[0].m[2][i]);
+        n += c * c;
+    }
+    n = sqrt(n);
+    l1 = fabs(d->j[1].a);
+    l2 = fabs(d->j[2].a);
+    e = ((l1 + l2 - n < n - fabs(l1 - l2)) ? l1 + l2 - n : n - fabs(l1 - l2)) / reach;
+    s5 = fabs(sin((q[4] + d->j[4].theta_deg) * D2R));
+    return e * s5 / FLIP_BAND;
+}
+
 /* ---- the check ---------------------------------------------------------------- */
 
 typedef struct {
@@ -182,11 +222,21 @@ static void check_target(const dhs_robot *cal, const dhs_robot *ideal, const dh_
     DHT_TRUE_MSG(best <= GEN_DEG, "%s: q %s not among the %u solutions (nearest %.3g deg)", cal->name,
                  dhs_q_str(q, 6u, 0), (unsigned)n, best);
     (void)dh_ikc_f32(mi, &T, NULL, 0u, isol, &ni);
+    best = 360.0;
     for (s = 0; s < ni; s++) {
-        double qi[NJ];
-        for (i = 0; i < 6u; i++) qi[i] = (double)isol[s].q[i];
+        double qi[NJ], dmax = 0.0;
+        for (i = 0; i < 6u; i++) {
+            const double dd = dhs_joint_dist(rc, i, (double)isol[s].q[i], q[i]);
+            if (dd > dmax) dmax = dd;
+            qi[i] = (double)isol[s].q[i];
+        }
+        if (dmax < best) best = dmax;
         if (sing_of(ideal, qi, 1.0) < SING_MIN) ideal_far = 0;
+        if (flip_margin(ideal, qi) > -1.0 && flip_margin(ideal, qi) < 0.0) ideal_far = 0;
     }
+    /* the generating configuration this far (deg) from every idealised
+     * solution: its branch is not the idealised robot's nearest one */
+    dht_reach_max("calib.ur5.ideal_deg", best);
     if (ideal_far) {
         DHT_TRUE_MSG(n == ni, "%s: %u solutions, the idealised robot %u; q %s", cal->name, (unsigned)n,
                      (unsigned)ni, dhs_q_str(q, 6u, 0));
