@@ -10,7 +10,8 @@
  *                    dh_path_move_f32, dh_path_move_jerk_f32,
  *                    dh_path_move_eval_f32
  *   dh_blend.c       dh_blend_plan_f32, dh_blend_eval_f32,
- *                    dh_blend_seq_plan_f32, dh_blend_seq_eval_f32
+ *                    dh_blend_seq_plan_f32, dh_blend_seq_eval_f32,
+ *                    dh_blend_seq_plan_jerk_f32
  *   dh_move.c        dh_move_joint_f32, dh_move_joint_step_f32,
  *                    dh_move_path_f32, dh_move_path_jerk_f32,
  *                    dh_move_target_f32, dh_move_advance_f32
@@ -636,9 +637,14 @@ typedef struct {
     float t1;  /**< duration of the acceleration from u0 to v */
     float tv;  /**< duration of the cruise at v */
     float t3;  /**< duration of the deceleration from v to u1 */
-    float T;   /**< duration of the line: tb0 + t1 + tv + t3 + tb1 (0: no motion) */
+    float T;   /**< duration of the line: tb0 + t1 + tv + t3 + tb1 (jerk-limited: t1 + tv + t3) (0: no motion) */
     float t0;  /**< its start on the sequence's clock (s) */
     float dev; /**< bound on the distance of the tool point from its END corner during that overlap */
+    float j;   /**< 0: the trapezoid above. > 0: the jerk-limited scaling of dh_blend_seq_plan_jerk_f32, the line's bound of |d3s/dt3| (1/s^3): from rest to v over t1 (|s''| <= b0, |s'''| <= k0, ramps tj1), cruise tv, to rest over t3 (b1, k1, tj3); tb0 and tb1 are the overlaps, inside t1 / 2 and t3 / 2; u0, e0 the s' and s at tb0, u1, e1 at T - tb1 (s' and 1 - s); tb0 + t1 + ... is then not T */
+    float k0;  /**< jerk-limited: |d3s/dt3| of the acceleration from rest (1/s^3) */
+    float k1;  /**< jerk-limited: |d3s/dt3| of the deceleration to rest (1/s^3) */
+    float tj1; /**< jerk-limited: duration of each jerk phase of the acceleration (s) */
+    float tj3; /**< jerk-limited: duration of each jerk phase of the deceleration (s) */
 } dh_blend_seg_f32;
 
 /* ======================================================================
@@ -1060,6 +1066,46 @@ dh_status dh_blend_seq_plan_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, con
  *         error.
  */
 dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32 *T);
+
+/**
+ * @brief sq = the n LINES p[0..n-1] blended at their corners as by
+ *        dh_blend_seq_plan_f32, with the jerk limited as well: each
+ *        line's scaling of s is jerk-limited (|s'''| <= min(jmax / L,
+ *        wjmax / angle), the acceleration ramped between the phases), and
+ *        at a corner the end tail of line k and the start tail of line
+ *        k+1 have the same duration tb and the same shape: s'' rises from
+ *        0 to +-b and back to 0 at the jerk +-k (b = k tb / 2), so in the
+ *        overlap the tool's jerk is +-(L2 k2 d2 - L1 k1 d1) with
+ *        L_i k_i <= jmax / max(1, |d2 - d1|), its acceleration that vector
+ *        times a ramp within tb / 2, its speed within the larger tail
+ *        speed; tb is held so that speed, TOTAL acceleration and jerk,
+ *        angular speed, acceleration and jerk (the composed rotation's
+ *        cross terms included) stay within lim and jerk, the tool within
+ *        radius[k] of the corner ((L1 k1 + L2 k2) tb^3 / 8 <= radius[k])
+ *        and each tail within half its line. Method and proofs:
+ *        docs/design.md ("Jerk-limited blended sequences").
+ * @param sq, seg, p, n, radius, lim as dh_blend_seq_plan_f32, but every
+ *        p[k] a line: an arc's tail adds the centripetal jerk terms
+ *        (L s')^3 / rho^2 and 3 L^2 s' s'' / rho, which depend on both
+ *        tails' speeds and turning tangents; no bound of them through tb
+ *        is proved, so arcs are refused (DH_ERR_ARG).
+ * @param jerk jerk limits (linear jmax of the tool point's TOTAL jerk,
+ *        angular wjmax), each finite and > 0; NULL: dh_blend_seq_plan_f32
+ *        bit for bit.
+ * A corner runs at rest (tb 0) when its radius is 0, a line next to it
+ * has no motion, or its blend alone would not shorten the pair; every
+ * corner does when the whole sequence would not be shorter than its
+ * lines' rest-to-rest jerk-limited scalings back to back (each the
+ * time-optimal seven-phase profile of s for its bounds). Limits met up
+ * to float rounding (1e-6 relative); seg[k].dev <= radius[k]; seg[k].j
+ * > 0. dh_blend_seq_eval_f32 evaluates sq.
+ * @return DH_OK; the statuses of dh_blend_seq_plan_f32 in its order, then
+ *         DH_ERR_NAN for a NaN/Inf jerk limit, DH_ERR_ARG for one <= 0 or
+ *         a p[k] that is an arc; DH_ERR_OVERFLOW when a jerk bound of s
+ *         is not a positive finite float. sq and seg untouched on error.
+ */
+dh_status dh_blend_seq_plan_jerk_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t n,
+                                     const float *radius, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jerk);
 
 /* ======================================================================
  * Fixed point (integer only: no float, no libm, no 64-bit division)

@@ -583,6 +583,11 @@ static DH_NOINLINE int seq_prof(dh_blend_seg_f32 *g, const float *r, float D)
     g->u1 = g->b1 * g->tb1;
     g->e1 = 0.5f * g->u1 * g->tb1;
     g->a = (a > 0.0f) ? a : 0.0f;
+    g->j = 0.0f;
+    g->k0 = 0.0f;
+    g->k1 = 0.0f;
+    g->tj1 = 0.0f;
+    g->tj3 = 0.0f;
     g->t1 = 0.0f;
     g->t3 = 0.0f;
     g->T = 0.0f;
@@ -690,6 +695,45 @@ DH_INLINE int seg_eval(const dh_blend_seg_f32 *g, float t, float *x)
     return 1;
 }
 
+/* The distance covered at the time r in [0, ta] of a jerk-limited
+ * change of speed from u to v >= u over ta, jerk phases tj (ta >= 2 tj,
+ * tj > 0 when v > u): the acceleration rises at +j to ap, holds, and
+ * falls at -j to 0, ap = (v - u) / (ta - tj), j = ap / tj. The speed is
+ * point-symmetric about ta / 2 (w(r) + w(ta - r) = u + v), so the second
+ * half is (u + v) (ta / 2 - m) + x(m), m = ta - r, from the first. */
+static float jt_x(float u, float v, float tj, float ta, float r)
+{
+    float ap, j, m = r, x, c = 0.0f;
+    if (!(ta > 0.0f) || !(tj > 0.0f)) return u * r;
+    ap = (v - u) / (ta - tj);
+    j = ap / tj;
+    if (r > 0.5f * ta) {
+        m = ta - r;
+        c = (u + v) * (0.5f * ta - m);
+    }
+    if (m <= tj) {
+        x = m * (u + (j * m) * m * (1.0f / 6.0f));
+    } else {
+        x = m * u + ap * tj * tj * (1.0f / 6.0f) + (m - tj) * (0.5f * ap * tj + 0.5f * ap * (m - tj));
+    }
+    return c + x;
+}
+
+/* seg_eval for a jerk-limited scaling (g->j > 0): the changes of speed
+ * from rest to v over t1 and from v to rest over t3 (jt_x), the second
+ * evaluated from the end; the overlaps lie inside them */
+static int jseg_eval(const dh_blend_seg_f32 *g, float t, float *x)
+{
+    float r;
+    if (t < g->t1 + 0.5f * g->tv) {
+        *x = (t < g->t1) ? jt_x(0.0f, g->v, g->tj1, g->t1, t) : g->v * (0.5f * g->t1 + (t - g->t1));
+        return 0;
+    }
+    r = g->T - t;
+    *x = (r < g->t3) ? jt_x(0.0f, g->v, g->tj3, g->t3, r) : g->v * (0.5f * g->t3 + (r - g->t3));
+    return 1;
+}
+
 /* s (rest 0) or 1 - s (rest 1), each accurate near its own 0, of the
  * scaling g at its time t, clamped to [0, g->T]: the first half from the
  * start, the second from the end */
@@ -698,7 +742,7 @@ static float seq_prof_eval(const dh_blend_seg_f32 *g, float t, int rest)
     float x;
     if (!(t > 0.0f)) return rest ? 1.0f : 0.0f;
     if (!(t < g->T)) return rest ? 0.0f : 1.0f;
-    return (rest != seg_eval(g, t, &x)) ? 1.0f - x : x;
+    return (rest != ((g->j > 0.0f) ? jseg_eval(g, t, &x) : seg_eval(g, t, &x))) ? 1.0f - x : x;
 }
 
 /* s of line k of sq at the sequence's time t */
@@ -749,6 +793,425 @@ dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32
     seq_slerp(sq, k, t, T, 1);
     dh_blend_compose_f32_(&sq->p[k].qa, T);
     seq_position(sq, k, t, T);
+    return DH_OK;
+}
+
+/* ---- jerk-limited blended sequences of lines ------------------------ */
+
+/* The jerk limits: DH_ERR_NAN for a NaN/Inf one, DH_ERR_ARG for one
+ * <= 0 or an arc among the n paths p */
+static DH_NOINLINE dh_status jseq_check(const dh_path_f32 *p, uint32_t n, const dh_cart_jerk_f32 *jk)
+{
+    uint32_t k;
+    if (!dh_isfinite_f32(jk->jmax) || !dh_isfinite_f32(jk->wjmax)) return DH_ERR_NAN;
+    if (!(jk->jmax > 0.0f) || !(jk->wjmax > 0.0f)) return DH_ERR_ARG;
+    for (k = 0u; k < n; k++) {
+        if (p[k].kind != (uint32_t)DH_PATH_LINE) return DH_ERR_ARG;
+    }
+    return DH_OK;
+}
+
+/* r = V, a, j: the bounds of s', s'', s''' of the line p within lim and
+ * jk (those of dh_path_move_jerk_f32 on a line); all 0 when p has no
+ * motion */
+static DH_NOINLINE dh_status jseq_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                        const dh_cart_jerk_f32 *jk, float r[3])
+{
+    dh_status st;
+    r[0] = 0.0f;
+    r[1] = 0.0f;
+    r[2] = 0.0f;
+    st = dh_motion_bound_f32_(&r[0], lim->vmax, p->length);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[0], lim->wmax, p->angle);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], lim->amax, p->length);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], lim->wdmax, p->angle);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[2], jk->jmax, p->length);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[2], jk->wjmax, p->angle);
+    if (st == DH_OK && (p->length > 0.0f || p->angle > 0.0f) &&
+        (!(r[0] > 0.0f) || !(r[1] > 0.0f) || !(r[2] > 0.0f))) {
+        st = DH_ERR_OVERFLOW;
+    }
+    return st;
+}
+
+/* *tj, *ta: the jerk phases and the duration of the time-optimal
+ * jerk-limited change of speed by du within a, j (both > 0), from and to
+ * acceleration 0: a reached when du >= a^2 / j (tj = a / j,
+ * ta = du / a + tj), else tj = sqrt(du / j), ta = 2 tj; 0 for du <= 0 */
+static void jt_times(float du, float a, float j, float *tj, float *ta)
+{
+    *tj = 0.0f;
+    *ta = 0.0f;
+    if (!(du > 0.0f)) return;
+    if (du >= a * (a / j)) {
+        *tj = a / j;
+        *ta = du / a + *tj;
+    } else {
+        *tj = dh_motion_root_f32_(du, j, 0);
+        *ta = 2.0f * *tj;
+    }
+}
+
+/* s' at the time r in [0, ta / 2] of the change of speed from 0 to v
+ * over ta with the jerk phases tj (jt_x's): j r^2 / 2 up to tj, then
+ * ap tj / 2 + ap (r - tj) */
+static float jt_v(float v, float tj, float ta, float r)
+{
+    float ap;
+    if (!(ta > 0.0f) || !(tj > 0.0f)) return 0.0f;
+    ap = v / (ta - tj);
+    if (r <= tj) return 0.5f * (ap / tj) * r * r;
+    return ap * (0.5f * tj + (r - tj));
+}
+
+/* s covered by the scaling of a line that accelerates from rest to v
+ * within k[0], k[1] (s'', s''') and decelerates to rest within k[2],
+ * k[3], without cruising: v (ta0 + ta1) / 2 (the speed of each change is
+ * point-symmetric) */
+static float jp_dist(const float k[4], float v)
+{
+    float tj, t0, t1;
+    jt_times(v, k[0], k[1], &tj, &t0);
+    jt_times(v, k[2], k[3], &tj, &t1);
+    return 0.5f * v * (t0 + t1);
+}
+
+/* the peak speed of that scaling over s from 0 to 1 within s' <= V, and
+ * its cruise *tv: V and the distance left when jp_dist(V) <= 1; else the
+ * largest v with jp_dist(v) <= 1 (jp_dist grows with v: bisection down
+ * to one ulp) and the tiny cruise at v that covers the rest exactly */
+static DH_NOINLINE float jp_solve(float V, const float k[4], float *tv)
+{
+    float lo = 0.0f, hi = V, m, x = jp_dist(k, V);
+    int i;
+    *tv = 0.0f;
+    if (x <= 1.0f) {
+        *tv = (1.0f - x) / V;
+        return V;
+    }
+    for (i = 0; i < 200; i++) {
+        m = 0.5f * (lo + hi);
+        if (!(m > lo) || !(m < hi)) break;
+        if (jp_dist(k, m) <= 1.0f) {
+            lo = m;
+        } else {
+            hi = m;
+        }
+    }
+    x = jp_dist(k, lo);
+    if (lo > 0.0f && x < 1.0f) *tv = (1.0f - x) / lo;
+    return lo;
+}
+
+/* the duration of that scaling (0 when k[0] is 0: no motion; +Inf when
+ * not finite) */
+static DH_NOINLINE float jp_dur(float V, const float k[4])
+{
+    float v, tv, tj, t0, t1, T;
+    if (!(k[0] > 0.0f)) return 0.0f;
+    v = jp_solve(V, k, &tv);
+    jt_times(v, k[0], k[1], &tj, &t0);
+    jt_times(v, k[2], k[3], &tj, &t1);
+    T = t0 + tv + t1;
+    return dh_isfinite_f32(T) ? T : INFINITY;
+}
+
+/* *T = the sum of the lines' rest-to-rest jerk-limited durations
+ * (jseq_rates' statuses; DH_ERR_OVERFLOW when one is not finite) */
+static DH_NOINLINE dh_status jseq_rest(const dh_path_f32 *p, uint32_t n, const dh_cart_limits_f32 *lim,
+                                       const dh_cart_jerk_f32 *jk, float *T)
+{
+    float r[3], k[4];
+    uint32_t i;
+    dh_status st = DH_OK;
+    *T = 0.0f;
+    for (i = 0u; i < n && st == DH_OK; i++) {
+        st = jseq_rates(&p[i], lim, jk, r);
+        k[0] = r[1];
+        k[1] = r[2];
+        k[2] = r[1];
+        k[3] = r[2];
+        if (st == DH_OK) *T += jp_dur(r[0], k);
+    }
+    if (st == DH_OK && !dh_isfinite_f32(*T)) st = DH_ERR_OVERFLOW;
+    return st;
+}
+
+/* *x, *y scaled together so that wx x + wy y <= w (w > 0) */
+static void jseq_scale2(float *x, float *y, float wx, float wy, float w)
+{
+    float s = wx * *x + wy * *y;
+    if (s > w) {
+        s = w / s;
+        *x *= s;
+        *y *= s;
+    }
+}
+
+/* The bounds c = { a1', j1', a2', j2' } of s'' and s''' of line 1's
+ * deceleration and line 2's acceleration at the corner p[0] | p[1] (the
+ * lines' rates r1, r2 lowered): L_i a_i' <= amax / max(1, |d2 - d1|) and
+ * L_i j_i' <= jmax / max(1, |d1 + d2|) (in the overlap the tool's
+ * acceleration is x2 d2 - x1 d1 and its jerk y1 d1 + y2 d2 with x_i, y_i
+ * in [0, L_i a_i'] and [0, L_i j_i']: norms convex, largest at a vertex
+ * of the box), th1 a1' + th2 a2' <= (63/64) wdmax and
+ * th1 j1' + th2 j2' <= (63/64) wjmax (the cross terms of the composed
+ * rotation get the last 1/64 through tb) */
+static DH_NOINLINE void jseq_red(const dh_path_f32 *p, const float r1[3], const float r2[3],
+                                 const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk, float c[4])
+{
+    float ca = lim->amax * BLEND_MARGIN, cj = jk->jmax * BLEND_MARGIN, g, h;
+    int i;
+    c[0] = r1[1];
+    c[1] = r1[2];
+    c[2] = r2[1];
+    c[3] = r2[2];
+    if (p[0].length > 0.0f && p[1].length > 0.0f) {
+        g = blend_turn(&p[0], &p[1]);
+        h = 4.0f - g * g;                   /* |d1 + d2|^2 of unit d1, d2 */
+        if (g > 1.0f) ca /= g;
+        if (h > 1.0f) cj /= dh_sqrtf_(h);
+    }
+    for (i = 0; i < 2; i++) {
+        if (p[i].length * c[2 * i] > ca) c[2 * i] = ca / p[i].length;
+        if (p[i].length * c[2 * i + 1] > cj) c[2 * i + 1] = cj / p[i].length;
+    }
+    jseq_scale2(&c[0], &c[2], p[0].angle, p[1].angle, BLEND_WSHARE * lim->wdmax);
+    jseq_scale2(&c[1], &c[3], p[0].angle, p[1].angle, BLEND_WSHARE * jk->wjmax);
+}
+
+/* the change of speed of line 1's deceleration (h[0..2]: its v, tj, ta)
+ * and line 2's acceleration (h[3..5]) at a corner; at the overlap tb
+ * (<= both ta / 2) the tool within radius of the corner
+ * (L1 x1 + L2 x2 <= radius, x_i the s each covers in its tb: jt_x) and
+ * the cross terms of the composed rotation within their 1/64
+ * (docs/design.md): with w_i = th_i u_i (u_i the s' at tb, the largest in
+ * the overlap) and P_i = th_i c's a_i', (pi/180) w1 w2 <= wdmax / 64,
+ * (pi/180) (2 w2 P1 + P2 w1) <= wjmax / 128 and
+ * (pi/180)^2 w2^2 w1 <= wjmax / 128 */
+static int jseq_ok(const dh_path_f32 *p, const float c[4], const float h[6], const dh_cart_limits_f32 *lim,
+                   const dh_cart_jerk_f32 *jk, float radius, float tb)
+{
+    const float x1 = jt_x(0.0f, h[0], h[1], h[2], tb), x2 = jt_x(0.0f, h[3], h[4], h[5], tb);
+    const float w1 = p[0].angle * jt_v(h[0], h[1], h[2], tb), w2 = p[1].angle * jt_v(h[3], h[4], h[5], tb);
+    if (!(p[0].length * x1 + p[1].length * x2 <= radius)) return 0;
+    if (!(w1 * w2 <= BLEND_RAD2DEG * (lim->wdmax * 0.015625f))) return 0;
+    if (!(2.0f * w2 * (p[0].angle * c[0]) + (p[1].angle * c[2]) * w1 <= BLEND_RAD2DEG * (jk->wjmax * 0.0078125f))) {
+        return 0;
+    }
+    return (w2 * w2) * w1 <= (BLEND_RAD2DEG * BLEND_RAD2DEG) * (jk->wjmax * 0.0078125f);
+}
+
+/* the overlap of the corner with the changes h (jseq_ok): the largest tb
+ * <= both ta / 2 that jseq_ok accepts (each of its terms grows with tb:
+ * bisection), times 1 - 2^-10; 0 when none */
+static DH_NOINLINE float jseq_tb(const dh_path_f32 *p, const float c[4], const float h[6],
+                                 const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk, float radius)
+{
+    float lo = 0.0f, hi = 0.5f * ((h[2] < h[5]) ? h[2] : h[5]), m;
+    int i;
+    if (!(hi > 0.0f)) return 0.0f;
+    if (jseq_ok(p, c, h, lim, jk, radius, hi)) {
+        lo = hi;
+    } else {
+        for (i = 0; i < 200; i++) {
+            m = 0.5f * (lo + hi);
+            if (!(m > lo) || !(m < hi)) break;
+            if (jseq_ok(p, c, h, lim, jk, radius, m)) {
+                lo = m;
+            } else {
+                hi = m;
+            }
+        }
+    }
+    lo *= BLEND_MARGIN;
+    return (lo > 0.0f && dh_isfinite_f32(lo)) ? lo : 0.0f;
+}
+
+/* the change of speed (h: v, tj, ta) at the end (end 1) or start (end 0)
+ * of the scaling of a line within s' <= V and the bounds k (jp_solve) */
+static DH_NOINLINE void jseq_change(float V, const float k[4], int end, float h[3])
+{
+    float tv;
+    h[0] = jp_solve(V, k, &tv);
+    jt_times(h[0], k[end ? 2 : 0], k[end ? 3 : 1], &h[1], &h[2]);
+}
+
+/* 1 when the corner p[0] | p[1] is blended: its overlap, with each line's
+ * deceleration (line 1) and acceleration (line 2) within the bounds c of
+ * jseq_red and the other end as at rest, is longer than the time these
+ * bounds add to the two lines (the decision of a corner of
+ * dh_blend_seq_plan_f32) */
+static DH_NOINLINE int jseq_pays(const dh_path_f32 *p, const float r1[3], const float r2[3], const float c[4],
+                                 const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk, float radius)
+{
+    float k[4], h[6], cost, tb;
+    k[0] = r1[1];
+    k[1] = r1[2];
+    k[2] = c[0];
+    k[3] = c[1];
+    jseq_change(r1[0], k, 1, &h[0]);
+    cost = jp_dur(r1[0], k);
+    k[2] = r1[1];
+    k[3] = r1[2];
+    cost -= jp_dur(r1[0], k);
+    k[0] = c[2];
+    k[1] = c[3];
+    k[2] = r2[1];
+    k[3] = r2[2];
+    jseq_change(r2[0], k, 0, &h[3]);
+    cost += jp_dur(r2[0], k);
+    k[0] = r2[1];
+    k[1] = r2[2];
+    cost -= jp_dur(r2[0], k);
+    tb = jseq_tb(p, c, h, lim, jk, radius);
+    return tb > 0.0f && cost < tb;
+}
+
+/* The bounds of the corner p[0] | p[1] into g: g[0].b1, k1 (line 1's
+ * deceleration) and g[1].b0, k0 (line 2's acceleration): jseq_red's when
+ * the corner is blended (jseq_pays; g[0].tb1 = 1 marks it until
+ * jseq_overlaps), else the lines' own (at rest, tb1 0) */
+static DH_NOINLINE void jseq_corner(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                    const dh_cart_jerk_f32 *jk, float radius)
+{
+    float r1[3], r2[3], c[4];
+    (void)jseq_rates(&p[0], lim, jk, r1);
+    (void)jseq_rates(&p[1], lim, jk, r2);
+    g[0].tb1 = 0.0f;
+    c[0] = r1[1];
+    c[1] = r1[2];
+    c[2] = r2[1];
+    c[3] = r2[2];
+    if (radius > 0.0f && r1[1] > 0.0f && r2[1] > 0.0f) {
+        jseq_red(p, r1, r2, lim, jk, c);
+        if (jseq_pays(p, r1, r2, c, lim, jk, radius)) {
+            g[0].tb1 = 1.0f;
+        } else {
+            c[0] = r1[1];
+            c[1] = r1[2];
+            c[2] = r2[1];
+            c[3] = r2[2];
+        }
+    }
+    g[0].b1 = c[0];
+    g[0].k1 = c[1];
+    g[1].b0 = c[2];
+    g[1].k0 = c[3];
+}
+
+/* g's jerk-limited scaling from its line's V (r[0]), j (r[2]) and the
+ * bounds of its acceleration (b0, k0) and deceleration (b1, k1): from
+ * rest to v over t1 (ramps tj1), a cruise tv, to rest over t3 (ramps
+ * tj3); T 0 when r[1] is 0 (no motion) */
+static DH_NOINLINE void jseq_prof(dh_blend_seg_f32 *g, const float r[3])
+{
+    float k[4], v = 0.0f, tv = 0.0f;
+    g->a = r[1];
+    g->j = r[2];
+    g->t1 = 0.0f;
+    g->t3 = 0.0f;
+    g->tj1 = 0.0f;
+    g->tj3 = 0.0f;
+    g->T = 0.0f;
+    if (r[1] > 0.0f) {
+        k[0] = g->b0;
+        k[1] = g->k0;
+        k[2] = g->b1;
+        k[3] = g->k1;
+        v = jp_solve(r[0], k, &tv);
+        jt_times(v, k[0], k[1], &g->tj1, &g->t1);
+        jt_times(v, k[2], k[3], &g->tj3, &g->t3);
+        g->T = g->t1 + tv + g->t3;
+    }
+    g->v = v;
+    g->tv = tv;
+}
+
+/* the overlap of corner g[0] | g[1] (marked blended by jseq_corner) from
+ * the two scalings (jseq_tb): tb1 = tb0, the s' and s covered at its
+ * ends (u1, e1 of g[0]; u0, e0 of g[1]) and g[0].dev, the bound
+ * L1 e1 + L2 e0 of the distance from the corner; all 0 at rest */
+static DH_NOINLINE void jseq_overlap(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                     const dh_cart_jerk_f32 *jk, float radius)
+{
+    float h[6], c[4], tb = 0.0f;
+    h[0] = g[0].v;
+    h[1] = g[0].tj3;
+    h[2] = g[0].t3;
+    h[3] = g[1].v;
+    h[4] = g[1].tj1;
+    h[5] = g[1].t1;
+    c[0] = g[0].b1;
+    c[1] = g[0].k1;
+    c[2] = g[1].b0;
+    c[3] = g[1].k0;
+    if (g[0].tb1 > 0.0f) tb = jseq_tb(p, c, h, lim, jk, radius);
+    g[0].tb1 = tb;
+    g[1].tb0 = tb;
+    g[0].u1 = jt_v(h[0], h[1], h[2], tb);
+    g[0].e1 = jt_x(0.0f, h[0], h[1], h[2], tb);
+    g[1].u0 = jt_v(h[3], h[4], h[5], tb);
+    g[1].e0 = jt_x(0.0f, h[3], h[4], h[5], tb);
+    g[0].dev = p[0].length * g[0].e1 + p[1].length * g[1].e0;
+}
+
+/* The sequence's scalings: the corners' bounds (jseq_corner, all at rest
+ * when rest is 1), each line's scaling, the corners' overlaps and each
+ * line's start t0 on the sequence's clock; returns its duration */
+static DH_NOINLINE float jseq_build(dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t n, const float *radius,
+                                    const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk, int rest)
+{
+    float r[3], T = 0.0f;
+    uint32_t k;
+    (void)jseq_rates(&p[0], lim, jk, r);
+    seg[0].b0 = r[1];
+    seg[0].k0 = r[2];
+    (void)jseq_rates(&p[n - 1u], lim, jk, r);
+    seg[n - 1u].b1 = r[1];
+    seg[n - 1u].k1 = r[2];
+    for (k = 0u; k + 1u < n; k++) jseq_corner(&seg[k], &p[k], lim, jk, rest ? 0.0f : radius[k]);
+    for (k = 0u; k < n; k++) {
+        (void)jseq_rates(&p[k], lim, jk, r);
+        jseq_prof(&seg[k], r);
+    }
+    seg[0].tb0 = 0.0f;
+    seg[0].u0 = 0.0f;
+    seg[0].e0 = 0.0f;
+    seg[n - 1u].tb1 = 0.0f;
+    seg[n - 1u].u1 = 0.0f;
+    seg[n - 1u].e1 = 0.0f;
+    seg[n - 1u].dev = 0.0f;
+    for (k = 0u; k + 1u < n; k++) jseq_overlap(&seg[k], &p[k], lim, jk, rest ? 0.0f : radius[k]);
+    for (k = 0u; k < n; k++) {
+        seg[k].t0 = T;
+        T = seg[k].t0 + (seg[k].T - seg[k].tb1);
+    }
+    return T;
+}
+
+dh_status dh_blend_seq_plan_jerk_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t n,
+                                     const float *radius, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jerk)
+{
+    float Trr = 0.0f, T = 0.0f;
+    int pass;
+    dh_status st;
+    if (jerk == NULL) return dh_blend_seq_plan_f32(sq, seg, p, n, radius, lim);
+    DH_ASSERT(sq != NULL && seg != NULL && p != NULL && lim != NULL && (n <= 1u || radius != NULL));
+    if (n == 0u) return DH_ERR_ARG;
+    st = seq_check(p, n, radius, lim);
+    if (st == DH_OK) st = jseq_check(p, n, jerk);
+    if (st == DH_OK) st = jseq_rest(p, n, lim, jerk, &Trr);
+    if (st != DH_OK) return st;
+    /* the blended corners, then all at rest when that is not shorter */
+    for (pass = 0; pass < 2; pass++) {
+        T = jseq_build(seg, p, n, radius, lim, jerk, pass);
+        if (T < Trr) break;
+    }
+    sq->p = p;
+    sq->seg = seg;
+    sq->n = n;
+    sq->T = T;
     return DH_OK;
 }
 

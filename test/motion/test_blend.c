@@ -40,6 +40,7 @@
 
 #include "dht.h"
 #include "support_ref.h"
+#include "support_robots.h"
 #include "dhmath/motion.h"
 #include "dhmath/mat4.h"
 
@@ -266,14 +267,14 @@ static long fd_window(double noise, int order, double lim)
 }
 
 /* the largest ratio to lim of the finite difference of the given order
- * (1 speed, 2 acceleration) of the position (ang 0) or of the rotation
- * (ang 1) over windows of w periods */
+ * (1 speed, 2 acceleration, 3 jerk: the position only) of the position
+ * (ang 0) or of the rotation (ang 1) over windows of w periods */
 static double fd_ratio(const source *src, int order, int ang, long w, double lim)
 {
-    double worst = 0.0, h = 1.0 / HZ, x[3][3], ra[3], rb[3], f, d;
+    double worst = 0.0, h = 1.0 / HZ, x[3][4], ra[3], rb[3], f, d;
     long k, kend = (long)ceil(src_T(src) * HZ) + 2;
     int i, j;
-    dh_mat4_f32 T[3];
+    dh_mat4_f32 T[4];
     for (k = -2 * w; k <= kend; k++) {
         for (j = 0; j <= order; j++) {
             src_at(src, (double)(k + j * w) * h, &T[j]);
@@ -290,7 +291,10 @@ static double fd_ratio(const source *src, int order, int ang, long w, double lim
             f = sqrt(dot3(rb, rb));
         } else {
             for (i = 0; i < 3; i++) {
-                d = (order == 1) ? x[i][1] - x[i][0] : x[i][2] - 2.0 * x[i][1] + x[i][0];
+                if (order == 3)
+                    d = x[i][3] - 3.0 * x[i][2] + 3.0 * x[i][1] - x[i][0];
+                else
+                    d = (order == 1) ? x[i][1] - x[i][0] : x[i][2] - 2.0 * x[i][1] + x[i][0];
                 f += d * d;
             }
             f = sqrt(f);
@@ -797,6 +801,214 @@ static void seq_errors(void)
     DHT_TRUE(memcmp(&T, &keep.B, sizeof T) == 0);
 }
 
+/* ---- jerk-limited blended sequences (dh_blend_seq_plan_jerk_f32) ----- */
+
+/* the rest-to-rest minimum duration of s from 0 to 1 within s' <= V,
+ * |s''| <= A, |s'''| <= J (Biagiotti & Melchiorri 2008, 3.4), in double:
+ * V reached (then T = 1 / V + ta), else A reached (1 >= 2 A^3 / J^2:
+ * T = 2 ta, ta = tj / 2 + sqrt(tj^2 / 4 + 1 / A), tj = A / J), else
+ * T = 4 cbrt(1 / (2 J)) */
+static double scurve_tmin(double V, double A, double J)
+{
+    double tj, ta;
+    ta = (V * J >= A * A) ? V / A + A / J : 2.0 * sqrt(V / J);
+    if (V * ta <= 1.0) return 1.0 / V + ta;
+    if (1.0 >= 2.0 * A * A * A / (J * J)) {
+        tj = A / J;
+        return 2.0 * (0.5 * tj + sqrt(0.25 * tj * tj + 1.0 / A));
+    }
+    return 4.0 * cbrt(1.0 / (2.0 * J));
+}
+
+/* the rest-to-rest jerk-limited minimum duration of a line of length L
+ * and angle th (degrees) within lim and jk */
+static double line_jmin(double L, double th, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk)
+{
+    double v = 1e300, a = 1e300, j = 1e300;
+    if (L > 0.0) {
+        v = fmin(v, lim->vmax / L);
+        a = fmin(a, lim->amax / L);
+        j = fmin(j, jk->jmax / L);
+    }
+    if (th > 0.0) {
+        v = fmin(v, lim->wmax / th);
+        a = fmin(a, lim->wdmax / th);
+        j = fmin(j, jk->wjmax / th);
+    }
+    return (L > 0.0 || th > 0.0) ? scurve_tmin(v, a, j) : 0.0;
+}
+
+/* n lines between the tool frames of the robot d at n + 1
+ * configurations: a random one, then each joint moved by up to 20
+ * degrees from the one before */
+static void robot_chain(chain *c, const dhs_robot *d, int n)
+{
+    dh_robot r;
+    double q[DHS_MAX_JOINTS], ax[3], dd[3];
+    dh_mat4_f32 F0, F1;
+    int k, i;
+    DHT_EQ_INT(dhs_build(d, &r), DH_OK);
+    dhs_random_q(d, q);
+    dhs_target_f32(&r, q, &F0);
+    pos_of(&F0, c->x[0]);
+    c->n = n;
+    c->S = 0.0;
+    for (k = 0; k < n; k++) {
+        for (i = 0; i < (int)r.n; i++) q[i] += dht_rand_uniform(-20.0, 20.0);
+        dhs_target_f32(&r, q, &F1);
+        DHT_EQ_INT(dh_path_line_f32(&c->p[k], &F0, &F1), DH_OK);
+        pos_of(&F1, c->x[k + 1]);
+        rot_vec(&F0, &F1, ax);
+        c->th[k] = sqrt(dot3(ax, ax));
+        for (i = 0; i < 3; i++) dd[i] = c->x[k + 1][i] - c->x[k][i];
+        c->L[k] = sqrt(dot3(dd, dd));
+        F0 = F1;
+    }
+    for (k = 0; k <= n; k++)
+        for (i = 0; i < 3; i++) c->S = fmax(c->S, fabs(c->x[k][i]));
+}
+
+/* the sequence against its lines' jerk-limited rest-to-rest minima (in
+ * double), on its lines outside the overlaps and within the radii inside
+ * (seq_path_check), speed, acceleration (linear and angular) and the
+ * linear jerk within their limits by finite differences over windows */
+static void jseq_check_all(const chain *c, const float *radius, const dh_cart_limits_f32 *lim,
+                           const dh_cart_jerk_f32 *jk, const dh_blend_seq_f32 *sq)
+{
+    source src;
+    double Trr = 0.0, ang = 0.0, wr;
+    long w;
+    int k, blended = 0;
+    for (k = 0; k < c->n; k++) {
+        Trr += line_jmin(c->L[k], c->th[k], lim, jk);
+        ang += c->th[k];
+        DHT_TRUE(sq->seg[k].j > 0.0f || sq->seg[k].T == 0.0f);
+        if (k + 1 < c->n) {
+            DHT_TRUE(sq->seg[k].tb1 == sq->seg[k + 1].tb0 && sq->seg[k].dev <= radius[k]);
+            if (sq->seg[k].tb1 > 0.0f) blended = 1;
+        }
+    }
+    DHT_TRUE(sq->seg[0].tb0 == 0.0f && sq->seg[c->n - 1].tb1 == 0.0f);
+    DHT_TRUE_MSG(blended ? (double)sq->T < Trr : fabs((double)sq->T - Trr) <= Trr * 1e-5,
+                 "jerk-limited sequence %.9g s (blended %d), rest to rest %.9g s", (double)sq->T, blended, Trr);
+    if (blended) dht_reach_max("jseq.saving_frac", (Trr - (double)sq->T) / Trr);
+    seq_path_check(sq, c, radius, lim);
+    src.bl = NULL;
+    src.sq = sq;
+    src_limits(&src, c->S, ang > 0.0, lim);
+    w = fd_window(8.0 * dhr_ulp_f32(c->S), 3, jk->jmax);
+    wr = fd_ratio(&src, 3, 0, w, jk->jmax);
+    DHT_TRUE_MSG(wr <= 1.0 + REL_FD, "linear jerk: %.9g x its limit (window %ld ms)", wr, w);
+    dht_reach_max("jseq.lin.j", wr);
+}
+
+/* random jerk-limited sequences of 2 to NSEQ lines on the robot d */
+static void jerk_sequences(const dhs_robot *d)
+{
+    int it, k, n = DHT_ITER(8);
+    for (it = 0; it < n; it++) {
+        chain c;
+        dh_blend_seg_f32 seg[NSEQ];
+        dh_blend_seq_f32 sq;
+        dh_cart_limits_f32 lim;
+        dh_cart_jerk_f32 jk;
+        float radius[NSEQ - 1];
+        int nl = 2 + (int)(dht_rand_u32() % (NSEQ - 1));
+        robot_chain(&c, d, nl);
+        for (k = 0; k + 1 < nl; k++)
+            radius[k] = (dht_rand_u32() % 5u == 0u) ? 0.0f : (float)pow(10.0, dht_rand_uniform(-3.0, -1.0));
+        lim.vmax = (float)dht_rand_uniform(0.25, 1.0);
+        lim.amax = (float)dht_rand_uniform(1.0, 10.0);
+        lim.wmax = (float)dht_rand_uniform(30.0, 90.0);
+        lim.wdmax = (float)dht_rand_uniform(300.0, 2000.0);
+        jk.jmax = (float)dht_rand_uniform(5.0, 100.0);
+        jk.wjmax = (float)dht_rand_uniform(3000.0, 30000.0);
+        DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, (uint32_t)nl, radius, &lim, &jk), DH_OK);
+        DHT_TRUE(sq.n == (uint32_t)nl && sq.seg == seg && sq.p == c.p);
+        jseq_check_all(&c, radius, &lim, &jk, &sq);
+    }
+}
+
+static void jerk_sequences_puma560(void)
+{
+    jerk_sequences(&dhs_puma560_m);
+}
+
+static void jerk_sequences_ur5(void)
+{
+    jerk_sequences(&dhs_ur5_m);
+}
+
+static void jerk_sequences_panda(void)
+{
+    jerk_sequences(&dhs_panda_m);
+}
+
+/* NULL jerk is dh_blend_seq_plan_f32 bit for bit; one line and radius 0
+ * are the double minima; every status, nothing written on error */
+static void jerk_seq_single_and_errors(void)
+{
+    chain c;
+    dh_blend_seg_f32 seg[3], seg2[3], segz[3];
+    dh_blend_seq_f32 sq, sq2, sqz;
+    dh_cart_limits_f32 lim = { 0.5f, 2.0f, 60.0f, 500.0f };
+    dh_cart_jerk_f32 jk = { 20.0f, 5000.0f };
+    float radius[2] = { 0.01f, 0.01f };
+    const float zero[2] = { 0.0f, 0.0f };
+    dh_path_f32 keep;
+    double Trr;
+    make_chain(&c, 3, 30.0, 0, 0);
+    memset(seg, 0x55, sizeof seg);
+    memset(seg2, 0x55, sizeof seg2);
+    DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, 3u, radius, &lim), DH_OK);
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq2, seg2, c.p, 3u, radius, &lim, NULL), DH_OK);
+    DHT_TRUE(memcmp(seg, seg2, sizeof seg) == 0 && sq.T == sq2.T && sq2.seg == seg2 && sq2.n == 3u);
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, zero, &lim, &jk), DH_OK);
+    jseq_check_all(&c, zero, &lim, &jk, &sq);
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_OK);
+    jseq_check_all(&c, radius, &lim, &jk, &sq);
+    make_chain(&c, 1, 30.0, 0, 0);
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 1u, NULL, &lim, &jk), DH_OK);
+    Trr = line_jmin(c.L[0], c.th[0], &lim, &jk);
+    DHT_TRUE_MSG(fabs((double)sq.T - Trr) <= 1e-5 * Trr, "one line %.9g s vs %.9g s", (double)sq.T, Trr);
+    jseq_check_all(&c, zero, &lim, &jk, &sq);
+    /* errors: the trapezoid's statuses first, then the jerk's */
+    make_chain(&c, 3, 30.0, 0, 0);
+    memset(segz, 0, sizeof segz);
+    memset(&sqz, 0, sizeof sqz);
+    memcpy(seg, segz, sizeof seg);
+    sq = sqz;
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 0u, radius, &lim, &jk), DH_ERR_ARG);
+    radius[0] = NAN;
+    jk.jmax = 0.0f;
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_ERR_NAN);
+    radius[0] = 0.01f;
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_ERR_ARG);
+    jk.jmax = NAN;
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_ERR_NAN);
+    jk.jmax = 20.0f;
+    jk.wjmax = INFINITY;
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_ERR_NAN);
+    jk.wjmax = -1.0f;
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_ERR_ARG);
+    jk.wjmax = 5000.0f;
+    /* an arc: its centripetal jerk in a tail is not bounded */
+    keep = c.p[1];
+    arc_of(&c.p[1]);
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_ERR_ARG);
+    c.p[1] = keep;
+    /* a bound of s too small for float */
+    lim.vmax = 1e-45f;
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_ERR_OVERFLOW);
+    lim.vmax = 0.5f;
+    DHT_TRUE(memcmp(seg, segz, sizeof seg) == 0 && memcmp(&sq, &sqz, sizeof sq) == 0);
+    /* a line without motion in the middle: both its corners at rest */
+    DHT_EQ_INT(dh_path_line_f32(&c.p[1], &c.p[0].B, &c.p[0].B), DH_OK);
+    DHT_EQ_INT(dh_path_line_f32(&c.p[2], &c.p[0].B, &keep.B), DH_OK);
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_OK);
+    DHT_TRUE(seg[1].T == 0.0f && seg[0].tb1 == 0.0f && seg[2].tb0 == 0.0f);
+}
+
 static const dht_case cases[] = {
     DHT_CASE(random_corners),
     DHT_CASE(straight_and_zero_radius),
@@ -806,5 +1018,9 @@ static const dht_case cases[] = {
     DHT_CASE(seq_errors),
     DHT_CASE(random_arc_corners),
     DHT_CASE(random_arc_sequences),
+    DHT_CASE(jerk_sequences_puma560),
+    DHT_CASE(jerk_sequences_ur5),
+    DHT_CASE(jerk_sequences_panda),
+    DHT_CASE(jerk_seq_single_and_errors),
 };
 DHT_MAIN(cases)
