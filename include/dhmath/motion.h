@@ -1053,7 +1053,7 @@ dh_status dh_blend_seq_plan_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, con
  *        sequence's clock): the frame of path k at its own time
  *        t - seg[k].t0 where one path runs, the superposition of paths k
  *        and k+1 in their overlap.
- * @param sq sequence from dh_blend_seq_plan_f32.
+ * @param sq sequence from dh_blend_seq_plan_f32 or dh_blend_seq_plan_jerk_f32.
  * @param t time, any value but NaN: clamped to [0, sq->T]; t <= 0 gives
  *        p[0].A and t >= sq->T gives p[n-1].B bit for bit.
  * @param T output frame (must not alias the lines).
@@ -1068,41 +1068,33 @@ dh_status dh_blend_seq_plan_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, con
 dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32 *T);
 
 /**
- * @brief sq = the n LINES p[0..n-1] blended at their corners as by
- *        dh_blend_seq_plan_f32, with the jerk limited as well: each
- *        line's scaling of s is jerk-limited (|s'''| <= min(jmax / L,
- *        wjmax / angle), the acceleration ramped between the phases), and
- *        at a corner the end tail of line k and the start tail of line
- *        k+1 have the same duration tb and the same shape: s'' rises from
- *        0 to +-b and back to 0 at the jerk +-k (b = k tb / 2), so in the
- *        overlap the tool's jerk is +-(L2 k2 d2 - L1 k1 d1) with
- *        L_i k_i <= jmax / max(1, |d2 - d1|), its acceleration that vector
- *        times a ramp within tb / 2, its speed within the larger tail
- *        speed; tb is held so that speed, TOTAL acceleration and jerk,
- *        angular speed, acceleration and jerk (the composed rotation's
- *        cross terms included) stay within lim and jerk, the tool within
- *        radius[k] of the corner ((L1 k1 + L2 k2) tb^3 / 8 <= radius[k])
- *        and each tail within half its line. Method and proofs:
- *        docs/design.md ("Jerk-limited blended sequences").
- * @param sq, seg, p, n, radius, lim as dh_blend_seq_plan_f32, but every
- *        p[k] a line: an arc's tail adds the centripetal jerk terms
- *        (L s')^3 / rho^2 and 3 L^2 s' s'' / rho, which depend on both
- *        tails' speeds and turning tangents; no bound of them through tb
- *        is proved, so arcs are refused (DH_ERR_ARG).
- * @param jerk jerk limits (linear jmax of the tool point's TOTAL jerk,
- *        angular wjmax), each finite and > 0; NULL: dh_blend_seq_plan_f32
- *        bit for bit.
- * A corner runs at rest (tb 0) when its radius is 0, a line next to it
- * has no motion, or its blend alone would not shorten the pair; every
- * corner does when the whole sequence would not be shorter than its
- * lines' rest-to-rest jerk-limited scalings back to back (each the
- * time-optimal seven-phase profile of s for its bounds). Limits met up
- * to float rounding (1e-6 relative); seg[k].dev <= radius[k]; seg[k].j
- * > 0. dh_blend_seq_eval_f32 evaluates sq.
- * @return DH_OK; the statuses of dh_blend_seq_plan_f32 in its order, then
+ * @brief sq = the n LINES p[0..n-1] one after the other, each a
+ *        jerk-limited scaling of s (ramped acceleration, |s'''| within
+ *        jmax / L and wjmax / angle), each corner k blended within
+ *        radius[k]: line k's deceleration and line k+1's acceleration
+ *        superposed for tb, with L_i |s''| <= amax / max(1, |d2 - d1|)
+ *        and L_i |s'''| <= jmax / max(1, |d1 + d2|) in them (d_i the
+ *        directions), tb the longest that keeps the tool within radius[k]
+ *        of the corner and the rotation's cross terms within 1/64 of
+ *        wdmax and wjmax (docs/design.md, "Jerk-limited blended
+ *        sequences"). Speed, TOTAL acceleration and jerk, angular speed,
+ *        acceleration and jerk within lim and jerk up to float rounding
+ *        (1e-6 relative); seg[k].dev <= radius[k]; evaluated by
+ *        dh_blend_seq_eval_f32 (same position bounds).
+ * @param sq, seg, p, n, radius, lim as dh_blend_seq_plan_f32, every p[k]
+ *        a line: an arc's tail adds the centripetal jerk (L s')^3 / rho^2
+ *        + 3 L^2 s' s'' / rho along turning tangents, which no proved
+ *        bound through tb holds yet, so arcs are refused.
+ * @param jerk jmax (TOTAL linear jerk) and wjmax, finite and > 0; NULL:
+ *        dh_blend_seq_plan_f32 bit for bit.
+ * A corner runs at rest (tb 0, the lines' own bounds) when its radius is
+ * 0, a line next to it has no motion or its overlap would not exceed the
+ * time its lowered bounds cost; all do when the sequence would not be
+ * shorter than its lines' rest-to-rest seven-phase scalings back to back.
+ * @return DH_OK; dh_blend_seq_plan_f32's statuses in its order, then
  *         DH_ERR_NAN for a NaN/Inf jerk limit, DH_ERR_ARG for one <= 0 or
- *         a p[k] that is an arc; DH_ERR_OVERFLOW when a jerk bound of s
- *         is not a positive finite float. sq and seg untouched on error.
+ *         an arc; DH_ERR_OVERFLOW for a bound of s that is not a
+ *         positive finite float. sq and seg untouched on error.
  */
 dh_status dh_blend_seq_plan_jerk_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t n,
                                      const float *radius, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jerk);

@@ -1843,6 +1843,55 @@ def group_move(seed, tmp):
               'a corner there (radius %g), speed %.6g, acceleration %.6g over %d periods' %
               (len(brows), len(rows0), off, worst, R, vw, aw, w))
 
+    # 5c. the blended square jerk-limited (--blend with --jerk): shorter
+    # than the jerk-limited square at rest at its corners, every period ok,
+    # the joints within the tracker's limits, the tool within R of a corner
+    # off the sides (and off them somewhere), its speed and acceleration
+    # over 20 periods and its jerk by third differences over 25 periods
+    # (the --jerk line's windows and slack) within their limits, the end
+    # frame reached
+    jsq_args = sq_args + ['--jerk', str(jerk)]
+    rc0, out0, err0 = run(jsq_args)
+    rc, out, err = run(jsq_args + ['--blend', str(R)])
+    head0, jrows0 = read_csv(out0, n)
+    head, jrows = read_csv(out, n)
+    check(rc0 == 0 and rc == 0 and err == '' and head == head_want and jrows and None not in jrows and
+          all(r[2] == 'ok' for r in jrows), 'move --blend --jerk square: rc %d %d err %r' % (rc0, rc, err))
+    if jrows and None not in jrows and jrows0:
+        check(len(jrows) < len(jrows0), 'move --blend --jerk square: %d periods, at rest %d' %
+              (len(jrows), len(jrows0)))
+        check_joint_limits('move --blend --jerk square', qa, jrows, [vm] * n, [am] * n, dt,
+                           [4 * f32_ulp(360.0)] * n)
+        pts = [p0] + [[F[i][3] for i in range(3)] for F in (ref_fk(rob, r[1]) for r in jrows)]
+        corners = [p0] + sq
+        worst, off = 0.0, 0.0
+        for p in pts:
+            ds = min(seg_dist(p, corners[k], corners[k + 1]) for k in range(4))
+            dc = min(math.sqrt(sum((p[i] - c[i]) ** 2 for i in range(3))) for c in sq[:3])
+            off = max(off, ds)
+            if ds > 1e-5:
+                worst = max(worst, dc)
+        check(worst <= R + 1e-5 and off > 1e-4, 'move --blend --jerk square: off the sides %.3g, %.6g from a '
+              'corner (radius %g)' % (off, worst, R))
+        w = 20
+        vw, aw = window_rates(pts, w, dt)
+        check(vw <= speed * (1 + 1e-3) + 4e-6 / (w * dt) and aw <= accel * (1 + 1e-3) + 8e-6 / (w * dt) ** 2,
+              'move --blend --jerk square: speed %.6g, acceleration %.6g over %d periods' % (vw, aw, w))
+        e = 2e-6 * sum(abs(j['a']) + abs(j['d']) for j in rob['joints']) + 1e-6
+        wj, jw = 25, 0.0
+        for k in range(len(pts) - 3 * wj):
+            d3 = [pts[k + 3 * wj][i] - 3 * pts[k + 2 * wj][i] + 3 * pts[k + wj][i] - pts[k][i] for i in range(3)]
+            jw = max(jw, math.sqrt(sum(x * x for x in d3)) / (wj * dt) ** 3)
+        slack = 8.0 * e / (wj * dt) ** 3
+        check(jw <= jerk * (1 + 1e-3) + slack, 'move --blend --jerk square: jerk %.6g over %d periods beyond %g + '
+              '%.3g' % (jw, wj, jerk, slack))
+        F = ref_fk(rob, jrows[-1][1])
+        pe = max(abs(F[i][3] - p0[i]) for i in range(3))
+        check(pe <= 5e-6, 'move --blend --jerk square: last line %.3g from the end' % pe)
+        print('move --blend --jerk square: %d periods (at rest at the corners %d), off the sides %.4g m, within '
+              '%.6g m of a corner there (radius %g), speed %.6g, acceleration %.6g over %d periods, jerk %.6g over '
+              '%d' % (len(jrows), len(jrows0), off, worst, R, vw, aw, w, jw, wj))
+
     # 5b. a blended line, arc, line (--blend with an arc): shorter than at
     # rest at its corners, every period ok, the joints within the tracker's
     # limits, the tool's speed and acceleration (the arc's centripetal one
@@ -1938,9 +1987,9 @@ def group_move(seed, tmp):
         ([path] + q0 + ['--dt', '0.01', '--jerk', '1e38', '--speed', '0.2', '--accel', '1e-30', '--rspeed', '60',
                         '--raccel', '240'] + ln, 'move --jerk: the angular jerk limit J * raccel / accel is not a '
                                                  'positive float'),
-        ([path] + q0 + ['--dt', '0.01', '--blend', '0.01', '--jerk', '100'] + cart + ln + ln,
-         'move --blend: blended corners are not jerk-limited'),
         ([path] + q0 + ['--dt', '0.01', '--blend', '-0.01'] + cart + ln + ln, '--blend: -0.01 must be a finite radius'),
+        ([path] + q0 + ['--dt', '0.01', '--blend', '-0.01', '--jerk', '100'] + cart + ln + ln,
+         '--blend: -0.01 must be a finite radius'),
         ([path] + q0 + ['--dt', '0.01', '--blend', 'r'] + cart + ln + ln, "bad number 'r' for --blend"),
         ([path] + q0 + ['--dt', '0.01', '--fixed', '--blend', '0.01'] + cart + ln + ln,
          'move --fixed --blend: blended corners are not in the fixed-point motion API'),
