@@ -82,6 +82,38 @@ def window_rates(pts, w, dt):
     return vw, aw
 
 
+def window_jerk(pts, w, dt):
+    """largest jerk of the points by third differences over w periods of dt"""
+    jw = 0.0
+    for k in range(len(pts) - 3 * w):
+        d3 = [pts[k + 3 * w][i] - 3 * pts[k + 2 * w][i] + 3 * pts[k + w][i] - pts[k][i] for i in range(3)]
+        jw = max(jw, math.sqrt(sum(x * x for x in d3)) / (w * dt) ** 3)
+    return jw
+
+
+def check_rates(what, pts, dt, speed, accel, w=20):
+    """the speed and acceleration of the points over w periods within speed
+    and accel (1e-3 relative, plus the rounding of positions 2e-6 apart)"""
+    vw, aw = window_rates(pts, w, dt)
+    check(vw <= speed * (1 + 1e-3) + 4e-6 / (w * dt) and aw <= accel * (1 + 1e-3) + 8e-6 / (w * dt) ** 2,
+          '%s: speed %.6g, acceleration %.6g over %d periods' % (what, vw, aw, w))
+    return vw, aw, w
+
+
+def polyline_dist(pts, corners, inner):
+    """the largest distance of the points from the polyline through corners,
+    and among the points off it (by more than 1e-5) the largest distance
+    from the nearest of the inner corners"""
+    worst, off = 0.0, 0.0
+    for p in pts:
+        ds = min(seg_dist(p, corners[k], corners[k + 1]) for k in range(len(corners) - 1))
+        dc = min(math.sqrt(sum((p[i] - c[i]) ** 2 for i in range(3))) for c in inner)
+        off = max(off, ds)
+        if ds > 1e-5:
+            worst = max(worst, dc)
+    return off, worst
+
+
 def check(cond, what):
     CHECKS[0] += 1
     if not cond:
@@ -1728,10 +1760,8 @@ def group_move(seed, tmp):
         # such points carries up to 8 e of them, so the windows are long
         # enough (25 periods) for that to be a small part of J
         e = 2e-6 * sum(abs(j['a']) + abs(j['d']) for j in rob['joints']) + 1e-6
-        w, jw = 25, 0.0
-        for k in range(len(pts) - 3 * w):
-            d3 = [pts[k + 3 * w][i] - 3 * pts[k + 2 * w][i] + 3 * pts[k + w][i] - pts[k][i] for i in range(3)]
-            jw = max(jw, math.sqrt(sum(x * x for x in d3)) / (w * dt) ** 3)
+        w = 25
+        jw = window_jerk(pts, w, dt)
         slack = 8.0 * e / (w * dt) ** 3
         check(jw <= jerk * (1 + 1e-3) + slack, 'move --jerk line: jerk %.6g over %d periods beyond %g + %.3g' %
               (jw, w, jerk, slack))
@@ -1824,21 +1854,10 @@ def group_move(seed, tmp):
         check(len(brows) < len(rows0), 'move --blend square: %d periods, at rest %d' % (len(brows), len(rows0)))
         check_joint_limits('move --blend square', qa, brows, [vm] * n, [am] * n, dt, [4 * f32_ulp(360.0)] * n)
         pts = [p0] + [[F[i][3] for i in range(3)] for F in (ref_fk(rob, r[1]) for r in brows)]
-        corners = [p0] + sq
-
-        worst, off = 0.0, 0.0
-        for p in pts:
-            ds = min(seg_dist(p, corners[k], corners[k + 1]) for k in range(4))
-            dc = min(math.sqrt(sum((p[i] - c[i]) ** 2 for i in range(3))) for c in sq[:3])
-            off = max(off, ds)
-            if ds > 1e-5:
-                worst = max(worst, dc)
+        off, worst = polyline_dist(pts, [p0] + sq, sq[:3])
         check(worst <= R + 1e-5 and off > 1e-3, 'move --blend square: off the sides %.3g, %.6g from a corner '
               '(radius %g)' % (off, worst, R))
-        w = 20
-        vw, aw = window_rates(pts, w, dt)
-        check(vw <= speed * (1 + 1e-3) + 4e-6 / (w * dt) and aw <= accel * (1 + 1e-3) + 8e-6 / (w * dt) ** 2,
-              'move --blend square: speed %.6g, acceleration %.6g over %d periods' % (vw, aw, w))
+        vw, aw, w = check_rates('move --blend square', pts, dt, speed, accel)
         print('move --blend square: %d periods (at rest at the corners %d), off the sides %.4g m, within %.6g m of '
               'a corner there (radius %g), speed %.6g, acceleration %.6g over %d periods' %
               (len(brows), len(rows0), off, worst, R, vw, aw, w))
@@ -1863,25 +1882,13 @@ def group_move(seed, tmp):
         check_joint_limits('move --blend --jerk square', qa, jrows, [vm] * n, [am] * n, dt,
                            [4 * f32_ulp(360.0)] * n)
         pts = [p0] + [[F[i][3] for i in range(3)] for F in (ref_fk(rob, r[1]) for r in jrows)]
-        corners = [p0] + sq
-        worst, off = 0.0, 0.0
-        for p in pts:
-            ds = min(seg_dist(p, corners[k], corners[k + 1]) for k in range(4))
-            dc = min(math.sqrt(sum((p[i] - c[i]) ** 2 for i in range(3))) for c in sq[:3])
-            off = max(off, ds)
-            if ds > 1e-5:
-                worst = max(worst, dc)
+        off, worst = polyline_dist(pts, [p0] + sq, sq[:3])
         check(worst <= R + 1e-5 and off > 1e-4, 'move --blend --jerk square: off the sides %.3g, %.6g from a '
               'corner (radius %g)' % (off, worst, R))
-        w = 20
-        vw, aw = window_rates(pts, w, dt)
-        check(vw <= speed * (1 + 1e-3) + 4e-6 / (w * dt) and aw <= accel * (1 + 1e-3) + 8e-6 / (w * dt) ** 2,
-              'move --blend --jerk square: speed %.6g, acceleration %.6g over %d periods' % (vw, aw, w))
+        vw, aw, w = check_rates('move --blend --jerk square', pts, dt, speed, accel)
         e = 2e-6 * sum(abs(j['a']) + abs(j['d']) for j in rob['joints']) + 1e-6
-        wj, jw = 25, 0.0
-        for k in range(len(pts) - 3 * wj):
-            d3 = [pts[k + 3 * wj][i] - 3 * pts[k + 2 * wj][i] + 3 * pts[k + wj][i] - pts[k][i] for i in range(3)]
-            jw = max(jw, math.sqrt(sum(x * x for x in d3)) / (wj * dt) ** 3)
+        wj = 25
+        jw = window_jerk(pts, wj, dt)
         slack = 8.0 * e / (wj * dt) ** 3
         check(jw <= jerk * (1 + 1e-3) + slack, 'move --blend --jerk square: jerk %.6g over %d periods beyond %g + '
               '%.3g' % (jw, wj, jerk, slack))
@@ -1938,10 +1945,7 @@ def group_move(seed, tmp):
                 worst = max(worst, dc)
         check(worst <= R + 1e-5 and off > 1e-4, 'move --blend line-arc-line: off the path %.3g, %.6g from a corner '
               '(radius %g)' % (off, worst, R))
-        w = 20
-        vw, aw = window_rates(pts, w, dt)
-        check(vw <= speed * (1 + 1e-3) + 4e-6 / (w * dt) and aw <= accel * (1 + 1e-3) + 8e-6 / (w * dt) ** 2,
-              'move --blend line-arc-line: speed %.6g, acceleration %.6g over %d periods' % (vw, aw, w))
+        vw, aw, w = check_rates('move --blend line-arc-line', pts, dt, speed, accel)
         print('move --blend line-arc-line: %d periods (at rest at the corners %d), off the path %.4g m, within %.6g m '
               'of a corner there (radius %g), speed %.6g, acceleration %.6g over %d periods' %
               (len(lrows), len(rows0), off, worst, R, vw, aw, w))
