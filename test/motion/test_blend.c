@@ -267,8 +267,9 @@ static long fd_window(double noise, int order, double lim)
 }
 
 /* the largest ratio to lim of the finite difference of the given order
- * (1 speed, 2 acceleration, 3 jerk: the position only) of the position
- * (ang 0) or of the rotation (ang 1) over windows of w periods */
+ * (1 speed, 2 acceleration, 3 jerk) of the position (ang 0) or of the
+ * rotation (ang 1; order 3 only for rotations about one world axis, whose
+ * rotation vectors add) over windows of w periods */
 static double fd_ratio(const source *src, int order, int ang, long w, double lim)
 {
     double worst = 0.0, h = 1.0 / HZ, x[3][4], ra[3], rb[3], f, d;
@@ -281,7 +282,15 @@ static double fd_ratio(const source *src, int order, int ang, long w, double lim
             for (i = 0; i < 3; i++) x[i][j] = DH_M4(&T[j], i, 3);
         }
         f = 0.0;
-        if (ang && order == 1) {
+        if (ang && order == 3) {
+            /* about one world axis only: the rotation vectors from T[0] add */
+            for (i = 0; i < 3; i++) rb[i] = 0.0;
+            for (j = 1; j <= 3; j++) {
+                rot_vec(&T[0], &T[j], ra);
+                for (i = 0; i < 3; i++) rb[i] += ((j == 3) ? 1.0 : ((j == 2) ? -3.0 : 3.0)) * ra[i];
+            }
+            f = sqrt(dot3(rb, rb));
+        } else if (ang && order == 1) {
             rot_vec(&T[0], &T[1], ra);
             f = sqrt(dot3(ra, ra));
         } else if (ang) {
@@ -553,8 +562,9 @@ typedef struct {
 
 /* n lines of 0.05 to 0.4 m in random directions (the second straight on
  * when straight, the third reversed when reverse), each turning the tool
- * by up to rmax degrees */
-static void make_chain(chain *c, int n, double rmax, int straight, int reverse)
+ * by up to rmax degrees about a random axis (about the world axis ax when
+ * not NULL) */
+static void make_chain_ax(chain *c, int n, double rmax, int straight, int reverse, const double *ax1)
 {
     dhr_mat4 R0, R1, X;
     dh_mat4_f32 F0, F1;
@@ -577,7 +587,9 @@ static void make_chain(chain *c, int n, double rmax, int straight, int reverse)
         }
         c->L[k] = dht_rand_uniform(0.05, 0.4);
         dhr_rand_unit3(ax);
-        dhr_rot_axis(ax[0], ax[1], ax[2], dht_rand_uniform(0.0, rmax), &X);
+        if (ax1 != NULL)
+            for (i = 0; i < 3; i++) ax[i] = ax1[i];
+        dhr_rot_axis(ax[0], ax[1], ax[2], dht_rand_uniform((ax1 != NULL) ? -rmax : 0.0, rmax), &X);
         dhr_mul(&X, &R0, &R1);
         for (i = 0; i < 3; i++) {
             pos[i] += c->L[k] * d[i];
@@ -596,6 +608,11 @@ static void make_chain(chain *c, int n, double rmax, int straight, int reverse)
     }
     for (k = 0; k <= n; k++)
         for (i = 0; i < 3; i++) c->S = fmax(c->S, fabs(c->x[k][i]));
+}
+
+static void make_chain(chain *c, int n, double rmax, int straight, int reverse)
+{
+    make_chain_ax(c, n, rmax, straight, reverse, NULL);
 }
 
 /* every sample on its line outside the overlaps, within the radius and
@@ -944,6 +961,44 @@ static void jerk_sequences_panda(void)
     jerk_sequences(&dhs_panda_m);
 }
 
+/* random jerk-limited sequences whose lines turn the tool about the world
+ * z axis only (by up to +-60 degrees each): the angular jerk by third
+ * differences of the rotation angle within wjmax as well (the composed
+ * rotation's cross terms vanish there; they are bounded by the proof) */
+static void jerk_sequences_one_axis(void)
+{
+    const double z[3] = { 0.0, 0.0, 1.0 };
+    int it, k, n = DHT_ITER(8);
+    for (it = 0; it < n; it++) {
+        chain c;
+        dh_blend_seg_f32 seg[NSEQ];
+        dh_blend_seq_f32 sq;
+        dh_cart_limits_f32 lim;
+        dh_cart_jerk_f32 jk;
+        source src;
+        float radius[NSEQ - 1];
+        double wr;
+        long w;
+        int nl = 2 + (int)(dht_rand_u32() % (NSEQ - 1));
+        make_chain_ax(&c, nl, 60.0, it % 4 == 1, it % 4 == 2, z);
+        for (k = 0; k + 1 < nl; k++) radius[k] = (float)pow(10.0, dht_rand_uniform(-3.0, -1.0));
+        lim.vmax = (float)dht_rand_uniform(0.25, 1.0);
+        lim.amax = (float)dht_rand_uniform(1.0, 10.0);
+        lim.wmax = (float)dht_rand_uniform(30.0, 90.0);
+        lim.wdmax = (float)dht_rand_uniform(100.0, 1000.0);
+        jk.jmax = (float)dht_rand_uniform(5.0, 100.0);
+        jk.wjmax = (float)dht_rand_uniform(500.0, 10000.0);
+        DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, (uint32_t)nl, radius, &lim, &jk), DH_OK);
+        jseq_check_all(&c, radius, &lim, &jk, &sq);
+        src.bl = NULL;
+        src.sq = &sq;
+        w = fd_window(ANG_NOISE, 3, jk.wjmax);
+        wr = fd_ratio(&src, 3, 1, w, jk.wjmax);
+        DHT_TRUE_MSG(wr <= 1.0 + REL_FD, "angular jerk: %.9g x its limit (window %ld ms)", wr, w);
+        dht_reach_max("jseq.ang.j", wr);
+    }
+}
+
 /* NULL jerk is dh_blend_seq_plan_f32 bit for bit; one line and radius 0
  * are the double minima; every status, nothing written on error */
 static void jerk_seq_single_and_errors(void)
@@ -1022,5 +1077,6 @@ static const dht_case cases[] = {
     DHT_CASE(jerk_sequences_ur5),
     DHT_CASE(jerk_sequences_panda),
     DHT_CASE(jerk_seq_single_and_errors),
+    DHT_CASE(jerk_sequences_one_axis),
 };
 DHT_MAIN(cases)
