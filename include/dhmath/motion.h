@@ -1085,8 +1085,8 @@ dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32
  *        a line: an arc's tail adds the centripetal jerk (L s')^3 / rho^2
  *        + 3 L^2 s' s'' / rho along turning tangents, which no proved
  *        bound through tb holds yet, so arcs are refused.
- * @param jerk jmax (TOTAL linear jerk) and wjmax, finite and > 0; NULL:
- *        dh_blend_seq_plan_f32 bit for bit.
+ * @param jerk jmax (TOTAL linear jerk) and wjmax, finite and > 0 (not
+ *        NULL: dh_blend_seq_plan_f32 plans without a jerk limit).
  * A corner runs at rest (tb 0, the lines' own bounds) when its radius is
  * 0, a line next to it has no motion or its overlap would not exceed the
  * time its lowered bounds cost; all do when the sequence would not be
