@@ -1094,7 +1094,8 @@ dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32
  * @return DH_OK; dh_blend_seq_plan_f32's statuses in its order, then
  *         DH_ERR_NAN for a NaN/Inf jerk limit, DH_ERR_ARG for one <= 0 or
  *         an arc; DH_ERR_OVERFLOW for a bound of s that is not a
- *         positive finite float. sq and seg untouched on error.
+ *         positive finite float or a bound of the duration that is not
+ *         finite. sq and seg untouched on error.
  */
 dh_status dh_blend_seq_plan_jerk_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t n,
                                      const float *radius, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jerk);
