@@ -77,6 +77,8 @@ typedef struct {
     float blend;           /* --blend R: the radius of every corner between Cartesian segments (-1: none) */
     dh_queue_f32 qu;       /* with --blend: the queue that runs consecutive Cartesian segments */
     dh_queue_item_f32 items[MOVE_MAX_SEG];
+    dh_blend_seg_f32 seg[MOVE_MAX_SEG];  /* with --blend --jerk: the scalings of a sequence of lines */
+    float rad[MOVE_MAX_SEG];             /* its corners' radii (all --blend) */
     double dt;
     int jerk;
     cli_outbuf out;
@@ -199,14 +201,11 @@ static int move_parse(int argc, char **argv, move_args *a)
     return 0;
 }
 
-/* --blend R: a radius finite and >= 0 in float; refused with --jerk */
+/* --blend R: a radius finite and >= 0 in float */
 static int move_blend(const move_args *a, float *r)
 {
     double x = 0.0;
     int rc;
-    if (a->jerk)
-        return cli_error("move --blend", "blended corners are not jerk-limited (a blend superposes two trapezoidal "
-                         "scalings, whose acceleration steps); run with --jerk or with --blend, not both");
     if ((rc = cli_parse_num(a->blend, "--blend", &x)) != 0) return rc;
     if (!(x >= 0.0) || !isfinite((float)x)) {
         fprintf(stderr, "dhmath: error: --blend: %.9g must be a finite radius >= 0 (length unit)\n", x);
@@ -438,6 +437,42 @@ static int run_blend(move_plan *p, const move_args *a, unsigned i0, unsigned i1,
     return 0;
 }
 
+/* Lines i0..i1-1 (two or more) with --blend and --jerk: one jerk-limited
+ * blended sequence (dh_blend_seq_plan_jerk_f32), every corner within
+ * --blend, tracked from the tracker's configuration. Its clock holds at
+ * 0 until the tracker is ok at the first line's start, then advances by
+ * dt every period (no feed override: a tracker that lags reports it);
+ * done when the clock is at the end and the tracker ok there. */
+static int run_blend_jerk(move_plan *p, const move_args *a, unsigned i0, unsigned i1, float *q)
+{
+    dh_blend_seq_f32 sq;
+    dh_track_report_f32 trep;
+    dh_mat4_f32 T;
+    double c = 0.0, tc, k = 0.0, cap;
+    unsigned i;
+    int rc, started = 0, done = 0;
+    dh_status st;
+    for (i = i0; i < i1; i++) p->rad[i - i0] = p->blend;
+    st = dh_blend_seq_plan_jerk_f32(&sq, p->seg, &p->path[i0], i1 - i0, p->rad, &p->lim, &p->cj);
+    if (st != DH_OK) return seg_error(i0, &a->seg[i0], "the blended jerk-limited move cannot be planned", path_why(st));
+    cap = move_cap(p, sq.T);
+    while (!done) {
+        if (k >= cap) return cap_reached(i0, &a->seg[i0], cap);
+        k += 1.0;
+        tc = started ? c + p->dt : 0.0;
+        if (tc > (double)sq.T) tc = (double)sq.T;
+        if ((st = dh_blend_seq_eval_f32(&sq, (float)tc, &T)) == DH_OK) st = dh_track_step_f32(&p->t, &T, q, &trep);
+        if (st != DH_OK) return seg_error(i0, &a->seg[i0], "a control period failed", dh_status_str(st));
+        if ((rc = move_line(p, q, (int)trep.state)) != 0) return rc;
+        if (trep.state == DH_TRACK_OK || started) {
+            c = tc;
+            started = 1;
+        }
+        done = (c >= (double)sq.T && trep.state == DH_TRACK_OK);
+    }
+    return 0;
+}
+
 static int move_run(const move_args *a, move_plan *p)
 {
     float q[DH_MAX_JOINTS];
@@ -460,7 +495,18 @@ static int move_run(const move_args *a, move_plan *p)
         /* the tracker starts (again) where the robot is at rest */
         if (!tracking && (rc = cli_track_start("move", &p->r, &p->m, q, (float)p->dt, &p->t)) != 0) return rc;
         tracking = 1;
-        if (p->blend >= 0.0f) {
+        if (p->blend >= 0.0f && p->jerk) {
+            /* with --blend --jerk: this line and the lines after it
+             * (an arc, or a line alone, runs at rest) */
+            unsigned e = i + 1u;
+            while (s->kind == SEG_LINE && e < a->nseg && a->seg[e].kind == SEG_LINE) e++;
+            if (e > i + 1u) {
+                rc = run_blend_jerk(p, a, i, e, q);
+                i = e - 1u;
+            } else {
+                rc = run_path(p, i, s, q);
+            }
+        } else if (p->blend >= 0.0f) {
             /* with --blend: this segment and the Cartesian ones after it */
             unsigned e = i + 1u;
             while (e < a->nseg && a->seg[e].kind != SEG_JOINT) e++;

@@ -65,6 +65,10 @@ EXAMPLES = [
      [UR5, "--q0", UR5_Q0] + UR5_LIMITS + UR5_CART + ["--blend", "0.03"] +
      [a for c in ("-0.408,-0.273", "-0.408,-0.123", "-0.558,-0.123", "-0.558,-0.273")
       for a in ("--line", "trans(%s,0.281) %s" % (c, UR5_ROT))]),
+    ("move_ur5_blend_jerk", "UR5: the square jerk-limited, its corners blended within 3 cm (--blend 0.03 --jerk 5)",
+     [UR5, "--q0", UR5_Q0] + UR5_LIMITS + UR5_CART + ["--jerk", "5", "--blend", "0.03"] +
+     [a for c in ("-0.408,-0.273", "-0.408,-0.123", "-0.558,-0.123", "-0.558,-0.273")
+      for a in ("--line", "trans(%s,0.281) %s" % (c, UR5_ROT))]),
     ("move_ur5_blend_arc", "UR5: a line, an arc and a line, their corners blended within 3 cm (--blend 0.03)",
      [UR5, "--q0", UR5_Q0] + UR5_LIMITS + UR5_CART + ["--blend", "0.03",
       "--line", "trans(-0.408,-0.273,0.281) " + UR5_ROT, "--line", "trans(-0.408,-0.123,0.281) " + UR5_ROT,

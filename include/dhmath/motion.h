@@ -10,7 +10,8 @@
  *                    dh_path_move_f32, dh_path_move_jerk_f32,
  *                    dh_path_move_eval_f32
  *   dh_blend.c       dh_blend_plan_f32, dh_blend_eval_f32,
- *                    dh_blend_seq_plan_f32, dh_blend_seq_eval_f32
+ *                    dh_blend_seq_plan_f32, dh_blend_seq_eval_f32,
+ *                    dh_blend_seq_plan_jerk_f32
  *   dh_move.c        dh_move_joint_f32, dh_move_joint_step_f32,
  *                    dh_move_path_f32, dh_move_path_jerk_f32,
  *                    dh_move_target_f32, dh_move_advance_f32
@@ -637,9 +638,14 @@ typedef struct {
     float t1;  /**< duration of the acceleration from u0 to v */
     float tv;  /**< duration of the cruise at v */
     float t3;  /**< duration of the deceleration from v to u1 */
-    float T;   /**< duration of the line: tb0 + t1 + tv + t3 + tb1 (0: no motion) */
+    float T;   /**< duration of the line: tb0 + t1 + tv + t3 + tb1 (jerk-limited: t1 + tv + t3) (0: no motion) */
     float t0;  /**< its start on the sequence's clock (s) */
     float dev; /**< bound on the distance of the tool point from its END corner during that overlap */
+    float j;   /**< 0: the trapezoid above. > 0: the jerk-limited scaling of dh_blend_seq_plan_jerk_f32, the line's bound of |d3s/dt3| (1/s^3): from rest to v over t1 (|s''| <= b0, |s'''| <= k0, ramps tj1), cruise tv, to rest over t3 (b1, k1, tj3); tb0 and tb1 are the overlaps, inside t1 / 2 and t3 / 2; u0, e0 the s' and s at tb0, u1, e1 at T - tb1 (s' and 1 - s); tb0 + t1 + ... is then not T */
+    float k0;  /**< jerk-limited: |d3s/dt3| of the acceleration from rest (1/s^3) */
+    float k1;  /**< jerk-limited: |d3s/dt3| of the deceleration to rest (1/s^3) */
+    float tj1; /**< jerk-limited: duration of each jerk phase of the acceleration (s) */
+    float tj3; /**< jerk-limited: duration of each jerk phase of the deceleration (s) */
 } dh_blend_seg_f32;
 
 /* ======================================================================
@@ -1048,7 +1054,7 @@ dh_status dh_blend_seq_plan_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, con
  *        sequence's clock): the frame of path k at its own time
  *        t - seg[k].t0 where one path runs, the superposition of paths k
  *        and k+1 in their overlap.
- * @param sq sequence from dh_blend_seq_plan_f32.
+ * @param sq sequence from dh_blend_seq_plan_f32 or dh_blend_seq_plan_jerk_f32.
  * @param t time, any value but NaN: clamped to [0, sq->T]; t <= 0 gives
  *        p[0].A and t >= sq->T gives p[n-1].B bit for bit.
  * @param T output frame (must not alias the lines).
@@ -1061,6 +1067,39 @@ dh_status dh_blend_seq_plan_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, con
  *         error.
  */
 dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32 *T);
+
+/**
+ * @brief sq = the n LINES p[0..n-1] one after the other, each a
+ *        jerk-limited scaling of s (ramped acceleration, |s'''| within
+ *        jmax / L and wjmax / angle), each corner k blended within
+ *        radius[k]: line k's deceleration and line k+1's acceleration
+ *        superposed for tb, with L_i |s''| <= amax / max(1, |d2 - d1|)
+ *        and L_i |s'''| <= jmax / max(1, |d1 + d2|) in them (d_i the
+ *        directions), tb the longest that keeps the tool within radius[k]
+ *        of the corner and the rotation's cross terms within 1/64 of
+ *        wdmax and wjmax (docs/design.md, "Jerk-limited blended
+ *        sequences"). Speed, TOTAL acceleration and jerk, angular speed,
+ *        acceleration and jerk within lim and jerk up to float rounding
+ *        (1e-6 relative); seg[k].dev <= radius[k]; evaluated by
+ *        dh_blend_seq_eval_f32 (same position bounds).
+ * @param sq, seg, p, n, radius, lim as dh_blend_seq_plan_f32, every p[k]
+ *        a line: an arc's tail adds the centripetal jerk (L s')^3 / rho^2
+ *        + 3 L^2 s' s'' / rho along turning tangents, which no proved
+ *        bound through tb holds yet, so arcs are refused.
+ * @param jerk jmax (TOTAL linear jerk) and wjmax, finite and > 0 (not
+ *        NULL: dh_blend_seq_plan_f32 plans without a jerk limit).
+ * A corner runs at rest (tb 0, the lines' own bounds) when its radius is
+ * 0, a line next to it has no motion or its overlap would not exceed the
+ * time its lowered bounds cost; all do when the sequence would not be
+ * shorter than its lines' rest-to-rest seven-phase scalings back to back.
+ * @return DH_OK; dh_blend_seq_plan_f32's statuses in its order, then
+ *         DH_ERR_NAN for a NaN/Inf jerk limit, DH_ERR_ARG for one <= 0 or
+ *         an arc; DH_ERR_OVERFLOW for a bound of s that is not a
+ *         positive finite float or a bound of the duration that is not
+ *         finite. sq and seg untouched on error.
+ */
+dh_status dh_blend_seq_plan_jerk_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t n,
+                                     const float *radius, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jerk);
 
 /* ======================================================================
  * Fixed point (integer only: no float, no libm, no 64-bit division)

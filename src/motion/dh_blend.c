@@ -138,7 +138,7 @@ static dh_status blend_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim
 
 
 /* |d2 - d1| of the unit directions of two lines of length > 0 */
-static float blend_turn(const dh_path_f32 *p1, const dh_path_f32 *p2)
+DH_INLINE float blend_turn(const dh_path_f32 *p1, const dh_path_f32 *p2)
 {
     float d, g = 0.0f;
     int i;
@@ -583,6 +583,11 @@ static DH_NOINLINE int seq_prof(dh_blend_seg_f32 *g, const float *r, float D)
     g->u1 = g->b1 * g->tb1;
     g->e1 = 0.5f * g->u1 * g->tb1;
     g->a = (a > 0.0f) ? a : 0.0f;
+    g->j = 0.0f;
+    g->k0 = 0.0f;
+    g->k1 = 0.0f;
+    g->tj1 = 0.0f;
+    g->tj3 = 0.0f;
     g->t1 = 0.0f;
     g->t3 = 0.0f;
     g->T = 0.0f;
@@ -690,6 +695,45 @@ DH_INLINE int seg_eval(const dh_blend_seg_f32 *g, float t, float *x)
     return 1;
 }
 
+/* The distance covered at the time r in [0, ta] of a jerk-limited
+ * change of speed from u to v >= u over ta, jerk phases tj (ta >= 2 tj,
+ * tj > 0 when v > u): the acceleration rises at +j to ap, holds, and
+ * falls at -j to 0, ap = (v - u) / (ta - tj), j = ap / tj. The speed is
+ * point-symmetric about ta / 2 (w(r) + w(ta - r) = u + v), so the second
+ * half is (u + v) (ta / 2 - m) + x(m), m = ta - r, from the first. */
+static float jt_x(float u, float v, float tj, float ta, float r)
+{
+    float ap, j, m = r, x, c = 0.0f;
+    if (!(ta > 0.0f) || !(tj > 0.0f)) return u * r;
+    ap = (v - u) / (ta - tj);
+    j = ap / tj;
+    if (r > 0.5f * ta) {
+        m = ta - r;
+        c = (u + v) * (0.5f * ta - m);
+    }
+    if (m <= tj) {
+        x = m * (u + (j * m) * m * (1.0f / 6.0f));
+    } else {
+        x = m * u + ap * tj * tj * (1.0f / 6.0f) + (m - tj) * (0.5f * ap * tj + 0.5f * ap * (m - tj));
+    }
+    return c + x;
+}
+
+/* seg_eval for a jerk-limited scaling (g->j > 0): the changes of speed
+ * from rest to v over t1 and from v to rest over t3 (jt_x), the second
+ * evaluated from the end; the overlaps lie inside them */
+static int jseg_eval(const dh_blend_seg_f32 *g, float t, float *x)
+{
+    float r;
+    if (t < g->t1 + 0.5f * g->tv) {
+        *x = (t < g->t1) ? jt_x(0.0f, g->v, g->tj1, g->t1, t) : g->v * (0.5f * g->t1 + (t - g->t1));
+        return 0;
+    }
+    r = g->T - t;
+    *x = (r < g->t3) ? jt_x(0.0f, g->v, g->tj3, g->t3, r) : g->v * (0.5f * g->t3 + (r - g->t3));
+    return 1;
+}
+
 /* s (rest 0) or 1 - s (rest 1), each accurate near its own 0, of the
  * scaling g at its time t, clamped to [0, g->T]: the first half from the
  * start, the second from the end */
@@ -698,7 +742,7 @@ static float seq_prof_eval(const dh_blend_seg_f32 *g, float t, int rest)
     float x;
     if (!(t > 0.0f)) return rest ? 1.0f : 0.0f;
     if (!(t < g->T)) return rest ? 0.0f : 1.0f;
-    return (rest != seg_eval(g, t, &x)) ? 1.0f - x : x;
+    return (rest != ((g->j > 0.0f) ? jseg_eval(g, t, &x) : seg_eval(g, t, &x))) ? 1.0f - x : x;
 }
 
 /* s of line k of sq at the sequence's time t */
@@ -749,6 +793,379 @@ dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32
     seq_slerp(sq, k, t, T, 1);
     dh_blend_compose_f32_(&sq->p[k].qa, T);
     seq_position(sq, k, t, T);
+    return DH_OK;
+}
+
+/* ---- jerk-limited blended sequences of lines ------------------------ */
+
+/* The jerk limits: DH_ERR_NAN for a NaN/Inf one, DH_ERR_ARG for one
+ * <= 0 or an arc among the n paths p */
+static DH_NOINLINE dh_status jseq_check(const dh_path_f32 *p, uint32_t n, const dh_cart_jerk_f32 *jk)
+{
+    uint32_t k;
+    if (!dh_isfinite_f32(jk->jmax) || !dh_isfinite_f32(jk->wjmax)) return DH_ERR_NAN;
+    if (!(jk->jmax > 0.0f) || !(jk->wjmax > 0.0f)) return DH_ERR_ARG;
+    for (k = 0u; k < n; k++) {
+        if (p[k].kind != (uint32_t)DH_PATH_LINE) return DH_ERR_ARG;
+    }
+    return DH_OK;
+}
+
+/* r = V, a, j: the bounds of s', s'', s''' of the line p within lim and
+ * jk (those of dh_path_move_jerk_f32 on a line); all 0 when p has no
+ * motion */
+static DH_NOINLINE dh_status jseq_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                        const dh_cart_jerk_f32 *jk, float r[3])
+{
+    dh_status st;
+    r[0] = 0.0f;
+    r[1] = 0.0f;
+    r[2] = 0.0f;
+    st = dh_motion_bound_f32_(&r[0], lim->vmax, p->length);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[0], lim->wmax, p->angle);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], lim->amax, p->length);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], lim->wdmax, p->angle);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[2], jk->jmax, p->length);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[2], jk->wjmax, p->angle);
+    if (st == DH_OK && (p->length > 0.0f || p->angle > 0.0f) &&
+        (!(r[0] > 0.0f) || !(r[1] > 0.0f) || !(r[2] > 0.0f))) {
+        st = DH_ERR_OVERFLOW;
+    }
+    return st;
+}
+
+/* *tj, *ta: the jerk phases and the duration of the time-optimal
+ * jerk-limited change of speed by du within a, j (both > 0), from and to
+ * acceleration 0: a reached when du >= a^2 / j (tj = a / j,
+ * ta = du / a + tj), else tj = sqrt(du) / sqrt(j) (no underflow of a
+ * quotient), ta = 2 tj; 0 for du <= 0 */
+DH_INLINE void jt_times(float du, float a, float j, float *tj, float *ta)
+{
+    *tj = 0.0f;
+    *ta = 0.0f;
+    if (!(du > 0.0f)) return;
+    if (du >= a * (a / j)) {
+        *tj = a / j;
+        *ta = du / a + *tj;
+    } else {
+        *tj = dh_sqrtf_(du) / dh_sqrtf_(j);
+        *ta = 2.0f * *tj;
+    }
+}
+
+/* s' at the time r in [0, ta / 2] of the change of speed from 0 to v
+ * over ta with the jerk phases tj (jt_x's): j r^2 / 2 up to tj, then
+ * ap tj / 2 + ap (r - tj) */
+DH_INLINE float jt_v(float v, float tj, float ta, float r)
+{
+    float ap;
+    if (!(ta > 0.0f) || !(tj > 0.0f)) return 0.0f;
+    ap = v / (ta - tj);
+    if (r <= tj) return 0.5f * (ap / tj) * r * r;
+    return ap * (0.5f * tj + (r - tj));
+}
+
+/* s covered by the scaling g of a line that accelerates from rest to v
+ * within g->b0, g->k0 (bounds of s'' and s''') and decelerates to rest
+ * within g->b1, g->k1, without cruising: v (ta0 + ta1) / 2 (the speed of
+ * each change is point-symmetric) */
+DH_INLINE float jp_dist(const dh_blend_seg_f32 *g, float v)
+{
+    float tj, t0, t1;
+    jt_times(v, g->b0, g->k0, &tj, &t0);
+    jt_times(v, g->b1, g->k1, &tj, &t1);
+    return 0.5f * v * (t0 + t1);
+}
+
+/* g's scaling of s from s' <= V and its bounds b0, k0, b1, k1: from rest
+ * to v over t1 (ramps tj1), a cruise tv, to rest over t3 (ramps tj3), T;
+ * v = V and the cruise the distance left when jp_dist(V) <= 1, else the
+ * largest v with jp_dist(v) <= 1 (jp_dist grows with v: bisection to one
+ * ulp) and the tiny cruise at v that covers the rest exactly; all 0 when
+ * b0 is 0 (no motion) */
+static DH_NOINLINE void jp_fill(dh_blend_seg_f32 *g, float V)
+{
+    float lo = 0.0f, hi = V, m = V, x;
+    int i;
+    for (i = 0; i < 200 && g->b0 > 0.0f; i++) {
+        if (jp_dist(g, m) <= 1.0f) {
+            lo = m;
+            if (!(m < V)) break;
+        } else {
+            hi = m;
+        }
+        m = 0.5f * (lo + hi);
+        if (!(m > lo) || !(m < hi)) break;
+    }
+    x = jp_dist(g, lo);
+    g->v = lo;
+    g->tv = (lo > 0.0f && x < 1.0f) ? (1.0f - x) / lo : 0.0f;
+    jt_times(lo, g->b0, g->k0, &g->tj1, &g->t1);
+    jt_times(lo, g->b1, g->k1, &g->tj3, &g->t3);
+    g->T = g->t1 + g->tv + g->t3;
+}
+
+/* the statuses of the lines' rates (jseq_rates), then DH_ERR_OVERFLOW
+ * when a line's duration bound 2 / V + 4 (V / a + a / j + 2 sqrt(V / j))
+ * (above any of its scalings: each change of speed takes at most
+ * V / a + a / j + 2 sqrt(V / j), the cruise at most 1 / V plus the
+ * rounding of the bisection), or their sum, is not finite */
+static DH_NOINLINE dh_status jseq_bound(const dh_path_f32 *p, uint32_t n, const dh_cart_limits_f32 *lim,
+                                        const dh_cart_jerk_f32 *jk)
+{
+    float r[3], T = 0.0f;
+    uint32_t i;
+    dh_status st = DH_OK;
+    for (i = 0u; i < n && st == DH_OK; i++) {
+        st = jseq_rates(&p[i], lim, jk, r);
+        if (st == DH_OK && r[1] > 0.0f) {
+            T += 2.0f / r[0] + 4.0f * (r[0] / r[1] + r[1] / r[2] + 2.0f * (dh_sqrtf_(r[0]) / dh_sqrtf_(r[2])));
+        }
+    }
+    if (st == DH_OK && !dh_isfinite_f32(T)) st = DH_ERR_OVERFLOW;
+    return st;
+}
+
+/* *x, *y scaled together so that wx x + wy y <= w (w > 0) */
+static void jseq_scale2(float *x, float *y, float wx, float wy, float w)
+{
+    float s = wx * *x + wy * *y;
+    if (s > w) {
+        s = w / s;
+        *x *= s;
+        *y *= s;
+    }
+}
+
+/* The bounds of line 1's deceleration (g[0].b1, k1) and line 2's
+ * acceleration (g[1].b0, k0) at the corner p[0] | p[1], set to the lines'
+ * own by jseq_unmark: at rest when radius is 0 or a line has no motion
+ * (g[0].tb1 = 0), else lowered to L_i a_i' <= amax / max(1, |d2 - d1|)
+ * and L_i j_i' <= jmax / max(1, |d1 + d2|) (in the overlap the tool's
+ * acceleration is x2 d2 - x1 d1 and its jerk y1 d1 + y2 d2 with x_i, y_i
+ * in [0, L_i a_i'] and [0, L_i j_i']: norms convex, at most their largest
+ * value at a vertex of the box), then th1 a1' + th2 a2' <= (63/64) wdmax
+ * and th1 j1' + th2 j2' <= (63/64) wjmax (the cross terms of the composed
+ * rotation get the last 1/64 through tb), g[0].tb1 = 1 marking the corner
+ * for jseq_cost */
+static DH_NOINLINE void jseq_red(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                 const dh_cart_jerk_f32 *jk, float radius)
+{
+    float ca = lim->amax * BLEND_MARGIN, cj = jk->jmax * BLEND_MARGIN, x;
+    float *c[4];
+    int i;
+    c[0] = &g[0].b1;
+    c[1] = &g[0].k1;
+    c[2] = &g[1].b0;
+    c[3] = &g[1].k0;
+    g[0].tb1 = (radius > 0.0f && *c[0] > 0.0f && *c[2] > 0.0f) ? 1.0f : 0.0f;
+    if (!(g[0].tb1 > 0.0f)) return;
+    if (p[0].length > 0.0f && p[1].length > 0.0f) {
+        x = blend_turn(&p[0], &p[1]);
+        if (x > 1.0f) ca /= x;
+        x = 4.0f - x * x; /* |d1 + d2|^2 of unit d1, d2 */
+        if (x > 1.0f) cj /= dh_sqrtf_(x);
+    }
+    for (i = 0; i < 2; i++) {
+        if (p[i].length * *c[2 * i] > ca) *c[2 * i] = ca / p[i].length;
+        if (p[i].length * *c[2 * i + 1] > cj) *c[2 * i + 1] = cj / p[i].length;
+    }
+    jseq_scale2(c[0], c[2], p[0].angle, p[1].angle, BLEND_WSHARE * lim->wdmax);
+    jseq_scale2(c[1], c[3], p[0].angle, p[1].angle, BLEND_WSHARE * jk->wjmax);
+}
+
+/* 1 when the overlap tb of the corner g[0] | g[1] (g[0]'s deceleration
+ * v, tj3, t3 and g[1]'s acceleration v, tj1, t1, tb within half of each)
+ * keeps the tool within radius of the corner (L1 x1 + L2 x2 <= radius,
+ * x_i the s each covers in its tb: jt_x) and the cross terms of the
+ * composed rotation within their 1/64 (docs/design.md): with
+ * w_i = th_i u_i (u_i the s' at tb, the largest in the overlap) and
+ * P_i = th_i times the lowered s'' bound, (pi/180) w1 w2 <= wdmax / 64,
+ * (pi/180) (2 w2 P1 + P2 w1) <= wjmax / 128 and
+ * (pi/180)^2 w2^2 w1 <= wjmax / 128 */
+DH_INLINE int jseq_ok(const dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                      const dh_cart_jerk_f32 *jk, float radius, float tb)
+{
+    const float w1 = p[0].angle * jt_v(g[0].v, g[0].tj3, g[0].t3, tb);
+    const float w2 = p[1].angle * jt_v(g[1].v, g[1].tj1, g[1].t1, tb);
+    if (!(p[0].length * jt_x(0.0f, g[0].v, g[0].tj3, g[0].t3, tb) +
+              p[1].length * jt_x(0.0f, g[1].v, g[1].tj1, g[1].t1, tb) <=
+          radius)) {
+        return 0;
+    }
+    if (!(w1 * w2 <= BLEND_RAD2DEG * (lim->wdmax * 0.015625f))) return 0;
+    if (!(2.0f * w2 * (p[0].angle * g[0].b1) + (p[1].angle * g[1].b0) * w1 <=
+          BLEND_RAD2DEG * (jk->wjmax * 0.0078125f))) {
+        return 0;
+    }
+    return (w2 * w2) * w1 <= (BLEND_RAD2DEG * BLEND_RAD2DEG) * (jk->wjmax * 0.0078125f);
+}
+
+/* the overlap of the corner g[0] | g[1] (jseq_ok): the largest tb up to
+ * half of both changes of speed that jseq_ok accepts (each of its terms
+ * grows with tb: bisection), times 1 - 2^-10; 0 when none */
+static DH_NOINLINE float jseq_tb(const dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                 const dh_cart_jerk_f32 *jk, float radius)
+{
+    const float H = 0.5f * ((g[0].t3 < g[1].t1) ? g[0].t3 : g[1].t1);
+    float lo = 0.0f, hi = H, m = H;
+    int i;
+    for (i = 0; i < 200 && H > 0.0f; i++) {
+        if (jseq_ok(g, p, lim, jk, radius, m)) {
+            lo = m;
+            if (!(m < H)) break;
+        } else {
+            hi = m;
+        }
+        m = 0.5f * (lo + hi);
+        if (!(m > lo) || !(m < hi)) break;
+    }
+    lo *= BLEND_MARGIN;
+    return (lo > 0.0f && dh_isfinite_f32(lo)) ? lo : 0.0f;
+}
+
+/* g[0].dev (scratch until jseq_overlap) = the time the lowered bounds
+ * of the corner g[0] | g[1] (jseq_red) add to its two lines, each line's
+ * other end as set; g's scalings are left as with the lowered bounds
+ * (for jseq_tb) */
+static DH_NOINLINE void jseq_cost(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                  const dh_cart_jerk_f32 *jk)
+{
+    float r[3], x, y, c;
+    (void)jseq_rates(&p[0], lim, jk, r);
+    x = g[0].b1;
+    y = g[0].k1;
+    g[0].b1 = r[1];
+    g[0].k1 = r[2];
+    jp_fill(&g[0], r[0]);
+    c = -g[0].T;
+    g[0].b1 = x;
+    g[0].k1 = y;
+    jp_fill(&g[0], r[0]);
+    c += g[0].T;
+    (void)jseq_rates(&p[1], lim, jk, r);
+    x = g[1].b0;
+    y = g[1].k0;
+    g[1].b0 = r[1];
+    g[1].k0 = r[2];
+    jp_fill(&g[1], r[0]);
+    c -= g[1].T;
+    g[1].b0 = x;
+    g[1].k0 = y;
+    jp_fill(&g[1], r[0]);
+    g[0].dev = c + g[1].T;
+}
+
+/* the corner g[0] | g[1] at rest: its lines' own bounds, tb1 0 */
+static DH_NOINLINE void jseq_unmark(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                    const dh_cart_jerk_f32 *jk)
+{
+    float r[3];
+    (void)jseq_rates(&p[0], lim, jk, r);
+    g[0].b1 = r[1];
+    g[0].k1 = r[2];
+    (void)jseq_rates(&p[1], lim, jk, r);
+    g[1].b0 = r[1];
+    g[1].k0 = r[2];
+    g[0].tb1 = 0.0f;
+}
+
+/* g's jerk-limited scaling (jp_fill) from its line's rates and the bounds
+ * of its acceleration (b0, k0) and deceleration (b1, k1) */
+static DH_NOINLINE void jseq_prof(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                  const dh_cart_jerk_f32 *jk)
+{
+    float r[3];
+    (void)jseq_rates(p, lim, jk, r);
+    jp_fill(g, r[0]);
+    g->a = r[1];
+    g->j = r[2];
+}
+
+/* the overlap tb of corner g[0] | g[1] (0: at rest): tb1 = tb0 = tb, the
+ * s' and s covered at its inner ends (u1, e1 of g[0]; u0, e0 of g[1]) and
+ * g[0].dev, the bound L1 e1 + L2 e0 of the distance from the corner */
+static DH_NOINLINE void jseq_overlap(dh_blend_seg_f32 *g, const dh_path_f32 *p, float tb)
+{
+    g[0].tb1 = tb;
+    g[1].tb0 = tb;
+    g[0].u1 = jt_v(g[0].v, g[0].tj3, g[0].t3, tb);
+    g[0].e1 = jt_x(0.0f, g[0].v, g[0].tj3, g[0].t3, tb);
+    g[1].u0 = jt_v(g[1].v, g[1].tj1, g[1].t1, tb);
+    g[1].e0 = jt_x(0.0f, g[1].v, g[1].tj1, g[1].t1, tb);
+    g[0].dev = p[0].length * g[0].e1 + p[1].length * g[1].e0;
+}
+
+/* the first line's acceleration and the last line's deceleration at their
+ * own bounds, at rest */
+static DH_NOINLINE void jseq_ends(dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t n,
+                                  const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk)
+{
+    float r[3];
+    (void)jseq_rates(&p[0], lim, jk, r);
+    seg[0].b0 = r[1];
+    seg[0].k0 = r[2];
+    seg[0].tb0 = 0.0f;
+    seg[0].u0 = 0.0f;
+    seg[0].e0 = 0.0f;
+    (void)jseq_rates(&p[n - 1u], lim, jk, r);
+    seg[n - 1u].b1 = r[1];
+    seg[n - 1u].k1 = r[2];
+    seg[n - 1u].tb1 = 0.0f;
+    seg[n - 1u].u1 = 0.0f;
+    seg[n - 1u].e1 = 0.0f;
+    seg[n - 1u].dev = 0.0f;
+}
+
+/* Planned in steps called from here, each with its stack apart: pass 0
+ * all corners at rest (its duration the rest-to-rest sum Trr), pass 1
+ * blended, kept when shorter than Trr, else pass 2 at rest again. A pass:
+ * the corners' bounds (jseq_red), each marked corner kept when its
+ * overlap exceeds its cost (jseq_cost, jseq_tb), the lines' scalings, the
+ * overlaps (jseq_tb, jseq_overlap) and the starts t0 */
+dh_status dh_blend_seq_plan_jerk_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t n,
+                                     const float *radius, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jerk)
+{
+    float Trr = 0.0f, T = 0.0f;
+    uint32_t k;
+    int pass;
+    dh_status st;
+    DH_ASSERT(sq != NULL && seg != NULL && p != NULL && lim != NULL && jerk != NULL && (n <= 1u || radius != NULL));
+    if (n == 0u) return DH_ERR_ARG;
+    st = seq_check(p, n, radius, lim);
+    if (st == DH_OK) st = jseq_check(p, n, jerk);
+    if (st == DH_OK) st = jseq_bound(p, n, lim, jerk);
+    if (st != DH_OK) return st;
+    for (pass = 0; pass < 3; pass++) {
+        jseq_ends(seg, p, n, lim, jerk);
+        for (k = 0u; k + 1u < n; k++) {
+            jseq_unmark(&seg[k], &p[k], lim, jerk);
+            jseq_red(&seg[k], &p[k], lim, jerk, (pass == 1) ? radius[k] : 0.0f);
+        }
+        for (k = 0u; k + 1u < n; k++) {
+            if (seg[k].tb1 > 0.0f) {
+                jseq_cost(&seg[k], &p[k], lim, jerk);
+                if (!(seg[k].dev < jseq_tb(&seg[k], &p[k], lim, jerk, radius[k]))) {
+                    jseq_unmark(&seg[k], &p[k], lim, jerk);
+                }
+            }
+        }
+        for (k = 0u; k < n; k++) jseq_prof(&seg[k], &p[k], lim, jerk);
+        for (k = 0u; k + 1u < n; k++) {
+            jseq_overlap(&seg[k], &p[k], (seg[k].tb1 > 0.0f) ? jseq_tb(&seg[k], &p[k], lim, jerk, radius[k]) : 0.0f);
+        }
+        T = 0.0f;
+        for (k = 0u; k < n; k++) {
+            seg[k].t0 = T;
+            T = seg[k].t0 + (seg[k].T - seg[k].tb1);
+        }
+        if (pass == 0) Trr = T;
+        if (pass == 1 && T < Trr) break;
+    }
+    sq->p = p;
+    sq->seg = seg;
+    sq->n = n;
+    sq->T = T;
     return DH_OK;
 }
 

@@ -84,6 +84,38 @@ def window_rates(pts, w, dt):
     return vw, aw
 
 
+def window_jerk(pts, w, dt):
+    """largest jerk of the points by third differences over w periods of dt"""
+    jw = 0.0
+    for k in range(len(pts) - 3 * w):
+        d3 = [pts[k + 3 * w][i] - 3 * pts[k + 2 * w][i] + 3 * pts[k + w][i] - pts[k][i] for i in range(3)]
+        jw = max(jw, math.sqrt(sum(x * x for x in d3)) / (w * dt) ** 3)
+    return jw
+
+
+def check_rates(what, pts, dt, speed, accel, w=20):
+    """the speed and acceleration of the points over w periods within speed
+    and accel (1e-3 relative, plus the rounding of positions 2e-6 apart)"""
+    vw, aw = window_rates(pts, w, dt)
+    check(vw <= speed * (1 + 1e-3) + 4e-6 / (w * dt) and aw <= accel * (1 + 1e-3) + 8e-6 / (w * dt) ** 2,
+          '%s: speed %.6g, acceleration %.6g over %d periods' % (what, vw, aw, w))
+    return vw, aw, w
+
+
+def polyline_dist(pts, corners, inner):
+    """the largest distance of the points from the polyline through corners,
+    and among the points off it (by more than 1e-5) the largest distance
+    from the nearest of the inner corners"""
+    worst, off = 0.0, 0.0
+    for p in pts:
+        ds = min(seg_dist(p, corners[k], corners[k + 1]) for k in range(len(corners) - 1))
+        dc = min(math.sqrt(sum((p[i] - c[i]) ** 2 for i in range(3))) for c in inner)
+        off = max(off, ds)
+        if ds > 1e-5:
+            worst = max(worst, dc)
+    return off, worst
+
+
 def check(cond, what):
     CHECKS[0] += 1
     if not cond:
@@ -1730,10 +1762,8 @@ def group_move(seed, tmp):
         # such points carries up to 8 e of them, so the windows are long
         # enough (25 periods) for that to be a small part of J
         e = 2e-6 * sum(abs(j['a']) + abs(j['d']) for j in rob['joints']) + 1e-6
-        w, jw = 25, 0.0
-        for k in range(len(pts) - 3 * w):
-            d3 = [pts[k + 3 * w][i] - 3 * pts[k + 2 * w][i] + 3 * pts[k + w][i] - pts[k][i] for i in range(3)]
-            jw = max(jw, math.sqrt(sum(x * x for x in d3)) / (w * dt) ** 3)
+        w = 25
+        jw = window_jerk(pts, w, dt)
         slack = 8.0 * e / (w * dt) ** 3
         check(jw <= jerk * (1 + 1e-3) + slack, 'move --jerk line: jerk %.6g over %d periods beyond %g + %.3g' %
               (jw, w, jerk, slack))
@@ -1826,24 +1856,50 @@ def group_move(seed, tmp):
         check(len(brows) < len(rows0), 'move --blend square: %d periods, at rest %d' % (len(brows), len(rows0)))
         check_joint_limits('move --blend square', qa, brows, [vm] * n, [am] * n, dt, [4 * f32_ulp(360.0)] * n)
         pts = [p0] + [[F[i][3] for i in range(3)] for F in (ref_fk(rob, r[1]) for r in brows)]
-        corners = [p0] + sq
-
-        worst, off = 0.0, 0.0
-        for p in pts:
-            ds = min(seg_dist(p, corners[k], corners[k + 1]) for k in range(4))
-            dc = min(math.sqrt(sum((p[i] - c[i]) ** 2 for i in range(3))) for c in sq[:3])
-            off = max(off, ds)
-            if ds > 1e-5:
-                worst = max(worst, dc)
+        off, worst = polyline_dist(pts, [p0] + sq, sq[:3])
         check(worst <= R + 1e-5 and off > 1e-3, 'move --blend square: off the sides %.3g, %.6g from a corner '
               '(radius %g)' % (off, worst, R))
-        w = 20
-        vw, aw = window_rates(pts, w, dt)
-        check(vw <= speed * (1 + 1e-3) + 4e-6 / (w * dt) and aw <= accel * (1 + 1e-3) + 8e-6 / (w * dt) ** 2,
-              'move --blend square: speed %.6g, acceleration %.6g over %d periods' % (vw, aw, w))
+        vw, aw, w = check_rates('move --blend square', pts, dt, speed, accel)
         print('move --blend square: %d periods (at rest at the corners %d), off the sides %.4g m, within %.6g m of '
               'a corner there (radius %g), speed %.6g, acceleration %.6g over %d periods' %
               (len(brows), len(rows0), off, worst, R, vw, aw, w))
+
+    # 5c. the blended square jerk-limited (--blend with --jerk): shorter
+    # than the jerk-limited square at rest at its corners, every period ok,
+    # the joints within the tracker's limits, the tool within R of a corner
+    # off the sides (and off them somewhere), its speed and acceleration
+    # over 20 periods and its jerk by third differences over 25 periods
+    # (the --jerk line's windows and slack) within their limits, the end
+    # frame reached
+    jsq_args = sq_args + ['--jerk', str(jerk)]
+    rc0, out0, err0 = run(jsq_args)
+    rc, out, err = run(jsq_args + ['--blend', str(R)])
+    head0, jrows0 = read_csv(out0, n)
+    head, jrows = read_csv(out, n)
+    check(rc0 == 0 and rc == 0 and err == '' and head == head_want and jrows and None not in jrows and
+          all(r[2] == 'ok' for r in jrows), 'move --blend --jerk square: rc %d %d err %r' % (rc0, rc, err))
+    if jrows and None not in jrows and jrows0:
+        check(len(jrows) < len(jrows0), 'move --blend --jerk square: %d periods, at rest %d' %
+              (len(jrows), len(jrows0)))
+        check_joint_limits('move --blend --jerk square', qa, jrows, [vm] * n, [am] * n, dt,
+                           [4 * f32_ulp(360.0)] * n)
+        pts = [p0] + [[F[i][3] for i in range(3)] for F in (ref_fk(rob, r[1]) for r in jrows)]
+        off, worst = polyline_dist(pts, [p0] + sq, sq[:3])
+        check(worst <= R + 1e-5 and off > 1e-4, 'move --blend --jerk square: off the sides %.3g, %.6g from a '
+              'corner (radius %g)' % (off, worst, R))
+        vw, aw, w = check_rates('move --blend --jerk square', pts, dt, speed, accel)
+        e = 2e-6 * sum(abs(j['a']) + abs(j['d']) for j in rob['joints']) + 1e-6
+        wj = 25
+        jw = window_jerk(pts, wj, dt)
+        slack = 8.0 * e / (wj * dt) ** 3
+        check(jw <= jerk * (1 + 1e-3) + slack, 'move --blend --jerk square: jerk %.6g over %d periods beyond %g + '
+              '%.3g' % (jw, wj, jerk, slack))
+        F = ref_fk(rob, jrows[-1][1])
+        pe = max(abs(F[i][3] - p0[i]) for i in range(3))
+        check(pe <= 5e-6, 'move --blend --jerk square: last line %.3g from the end' % pe)
+        print('move --blend --jerk square: %d periods (at rest at the corners %d), off the sides %.4g m, within '
+              '%.6g m of a corner there (radius %g), speed %.6g, acceleration %.6g over %d periods, jerk %.6g over '
+              '%d' % (len(jrows), len(jrows0), off, worst, R, vw, aw, w, jw, wj))
 
     # 5b. a blended line, arc, line (--blend with an arc): shorter than at
     # rest at its corners, every period ok, the joints within the tracker's
@@ -1891,10 +1947,7 @@ def group_move(seed, tmp):
                 worst = max(worst, dc)
         check(worst <= R + 1e-5 and off > 1e-4, 'move --blend line-arc-line: off the path %.3g, %.6g from a corner '
               '(radius %g)' % (off, worst, R))
-        w = 20
-        vw, aw = window_rates(pts, w, dt)
-        check(vw <= speed * (1 + 1e-3) + 4e-6 / (w * dt) and aw <= accel * (1 + 1e-3) + 8e-6 / (w * dt) ** 2,
-              'move --blend line-arc-line: speed %.6g, acceleration %.6g over %d periods' % (vw, aw, w))
+        vw, aw, w = check_rates('move --blend line-arc-line', pts, dt, speed, accel)
         print('move --blend line-arc-line: %d periods (at rest at the corners %d), off the path %.4g m, within %.6g m '
               'of a corner there (radius %g), speed %.6g, acceleration %.6g over %d periods' %
               (len(lrows), len(rows0), off, worst, R, vw, aw, w))
@@ -1940,9 +1993,9 @@ def group_move(seed, tmp):
         ([path] + q0 + ['--dt', '0.01', '--jerk', '1e38', '--speed', '0.2', '--accel', '1e-30', '--rspeed', '60',
                         '--raccel', '240'] + ln, 'move --jerk: the angular jerk limit J * raccel / accel is not a '
                                                  'positive float'),
-        ([path] + q0 + ['--dt', '0.01', '--blend', '0.01', '--jerk', '100'] + cart + ln + ln,
-         'move --blend: blended corners are not jerk-limited'),
         ([path] + q0 + ['--dt', '0.01', '--blend', '-0.01'] + cart + ln + ln, '--blend: -0.01 must be a finite radius'),
+        ([path] + q0 + ['--dt', '0.01', '--blend', '-0.01', '--jerk', '100'] + cart + ln + ln,
+         '--blend: -0.01 must be a finite radius'),
         ([path] + q0 + ['--dt', '0.01', '--blend', 'r'] + cart + ln + ln, "bad number 'r' for --blend"),
         ([path] + q0 + ['--dt', '0.01', '--fixed', '--jerk', '10'] + jt, 'move --fixed --jerk: jerk-limited moves'),
         ([path] + q0 + ['--dt', '0.01', '--dt', '0.02'] + jt, "option '--dt' given more than once"),

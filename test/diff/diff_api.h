@@ -238,6 +238,7 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_blend_eval_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_blend_seq_plan_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_blend_seq_eval_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \
+    X(dh_blend_seq_plan_jerk_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_move_joint_f32, g_motion, 1000000, DIFF_OUT_SMALL, C_BITS) \
     X(dh_move_joint_step_f32, g_motion, 1000000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_move_path_f32, g_path, 1000000, DIFF_OUT_SMALL, C_BITS) \

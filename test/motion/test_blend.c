@@ -40,6 +40,7 @@
 
 #include "dht.h"
 #include "support_ref.h"
+#include "support_robots.h"
 #include "dhmath/motion.h"
 #include "dhmath/mat4.h"
 
@@ -266,21 +267,30 @@ static long fd_window(double noise, int order, double lim)
 }
 
 /* the largest ratio to lim of the finite difference of the given order
- * (1 speed, 2 acceleration) of the position (ang 0) or of the rotation
- * (ang 1) over windows of w periods */
+ * (1 speed, 2 acceleration, 3 jerk) of the position (ang 0) or of the
+ * rotation (ang 1; order 3 only for rotations about one world axis, whose
+ * rotation vectors add) over windows of w periods */
 static double fd_ratio(const source *src, int order, int ang, long w, double lim)
 {
-    double worst = 0.0, h = 1.0 / HZ, x[3][3], ra[3], rb[3], f, d;
+    double worst = 0.0, h = 1.0 / HZ, x[3][4], ra[3], rb[3], f, d;
     long k, kend = (long)ceil(src_T(src) * HZ) + 2;
     int i, j;
-    dh_mat4_f32 T[3];
+    dh_mat4_f32 T[4];
     for (k = -2 * w; k <= kend; k++) {
         for (j = 0; j <= order; j++) {
             src_at(src, (double)(k + j * w) * h, &T[j]);
             for (i = 0; i < 3; i++) x[i][j] = DH_M4(&T[j], i, 3);
         }
         f = 0.0;
-        if (ang && order == 1) {
+        if (ang && order == 3) {
+            /* about one world axis only: the rotation vectors from T[0] add */
+            for (i = 0; i < 3; i++) rb[i] = 0.0;
+            for (j = 1; j <= 3; j++) {
+                rot_vec(&T[0], &T[j], ra);
+                for (i = 0; i < 3; i++) rb[i] += ((j == 3) ? 1.0 : ((j == 2) ? -3.0 : 3.0)) * ra[i];
+            }
+            f = sqrt(dot3(rb, rb));
+        } else if (ang && order == 1) {
             rot_vec(&T[0], &T[1], ra);
             f = sqrt(dot3(ra, ra));
         } else if (ang) {
@@ -290,7 +300,10 @@ static double fd_ratio(const source *src, int order, int ang, long w, double lim
             f = sqrt(dot3(rb, rb));
         } else {
             for (i = 0; i < 3; i++) {
-                d = (order == 1) ? x[i][1] - x[i][0] : x[i][2] - 2.0 * x[i][1] + x[i][0];
+                if (order == 3)
+                    d = x[i][3] - 3.0 * x[i][2] + 3.0 * x[i][1] - x[i][0];
+                else
+                    d = (order == 1) ? x[i][1] - x[i][0] : x[i][2] - 2.0 * x[i][1] + x[i][0];
                 f += d * d;
             }
             f = sqrt(f);
@@ -549,8 +562,9 @@ typedef struct {
 
 /* n lines of 0.05 to 0.4 m in random directions (the second straight on
  * when straight, the third reversed when reverse), each turning the tool
- * by up to rmax degrees */
-static void make_chain(chain *c, int n, double rmax, int straight, int reverse)
+ * by up to rmax degrees about a random axis (about the world axis ax when
+ * not NULL) */
+static void make_chain_ax(chain *c, int n, double rmax, int straight, int reverse, const double *ax1)
 {
     dhr_mat4 R0, R1, X;
     dh_mat4_f32 F0, F1;
@@ -573,7 +587,9 @@ static void make_chain(chain *c, int n, double rmax, int straight, int reverse)
         }
         c->L[k] = dht_rand_uniform(0.05, 0.4);
         dhr_rand_unit3(ax);
-        dhr_rot_axis(ax[0], ax[1], ax[2], dht_rand_uniform(0.0, rmax), &X);
+        if (ax1 != NULL)
+            for (i = 0; i < 3; i++) ax[i] = ax1[i];
+        dhr_rot_axis(ax[0], ax[1], ax[2], dht_rand_uniform((ax1 != NULL) ? -rmax : 0.0, rmax), &X);
         dhr_mul(&X, &R0, &R1);
         for (i = 0; i < 3; i++) {
             pos[i] += c->L[k] * d[i];
@@ -592,6 +608,11 @@ static void make_chain(chain *c, int n, double rmax, int straight, int reverse)
     }
     for (k = 0; k <= n; k++)
         for (i = 0; i < 3; i++) c->S = fmax(c->S, fabs(c->x[k][i]));
+}
+
+static void make_chain(chain *c, int n, double rmax, int straight, int reverse)
+{
+    make_chain_ax(c, n, rmax, straight, reverse, NULL);
 }
 
 /* every sample on its line outside the overlaps, within the radius and
@@ -797,6 +818,248 @@ static void seq_errors(void)
     DHT_TRUE(memcmp(&T, &keep.B, sizeof T) == 0);
 }
 
+/* ---- jerk-limited blended sequences (dh_blend_seq_plan_jerk_f32) ----- */
+
+/* the rest-to-rest minimum duration of s from 0 to 1 within s' <= V,
+ * |s''| <= A, |s'''| <= J (Biagiotti & Melchiorri 2008, 3.4), in double:
+ * V reached (then T = 1 / V + ta), else A reached (1 >= 2 A^3 / J^2:
+ * T = 2 ta, ta = tj / 2 + sqrt(tj^2 / 4 + 1 / A), tj = A / J), else
+ * T = 4 cbrt(1 / (2 J)) */
+static double scurve_tmin(double V, double A, double J)
+{
+    double tj, ta;
+    ta = (V * J >= A * A) ? V / A + A / J : 2.0 * sqrt(V / J);
+    if (V * ta <= 1.0) return 1.0 / V + ta;
+    if (1.0 >= 2.0 * A * A * A / (J * J)) {
+        tj = A / J;
+        return 2.0 * (0.5 * tj + sqrt(0.25 * tj * tj + 1.0 / A));
+    }
+    return 4.0 * cbrt(1.0 / (2.0 * J));
+}
+
+/* the rest-to-rest jerk-limited minimum duration of a line of length L
+ * and angle th (degrees) within lim and jk */
+static double line_jmin(double L, double th, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk)
+{
+    double v = 1e300, a = 1e300, j = 1e300;
+    if (L > 0.0) {
+        v = fmin(v, lim->vmax / L);
+        a = fmin(a, lim->amax / L);
+        j = fmin(j, jk->jmax / L);
+    }
+    if (th > 0.0) {
+        v = fmin(v, lim->wmax / th);
+        a = fmin(a, lim->wdmax / th);
+        j = fmin(j, jk->wjmax / th);
+    }
+    return (L > 0.0 || th > 0.0) ? scurve_tmin(v, a, j) : 0.0;
+}
+
+/* n lines between the tool frames of the robot d at n + 1
+ * configurations: a random one, then each joint moved by up to 20
+ * degrees from the one before */
+static void robot_chain(chain *c, const dhs_robot *d, int n)
+{
+    dh_robot r;
+    double q[DHS_MAX_JOINTS], ax[3], dd[3];
+    dh_mat4_f32 F0, F1;
+    int k, i;
+    DHT_EQ_INT(dhs_build(d, &r), DH_OK);
+    dhs_random_q(d, q);
+    dhs_target_f32(&r, q, &F0);
+    pos_of(&F0, c->x[0]);
+    c->n = n;
+    c->S = 0.0;
+    for (k = 0; k < n; k++) {
+        for (i = 0; i < (int)r.n; i++) q[i] += dht_rand_uniform(-20.0, 20.0);
+        dhs_target_f32(&r, q, &F1);
+        DHT_EQ_INT(dh_path_line_f32(&c->p[k], &F0, &F1), DH_OK);
+        pos_of(&F1, c->x[k + 1]);
+        rot_vec(&F0, &F1, ax);
+        c->th[k] = sqrt(dot3(ax, ax));
+        for (i = 0; i < 3; i++) dd[i] = c->x[k + 1][i] - c->x[k][i];
+        c->L[k] = sqrt(dot3(dd, dd));
+        F0 = F1;
+    }
+    for (k = 0; k <= n; k++)
+        for (i = 0; i < 3; i++) c->S = fmax(c->S, fabs(c->x[k][i]));
+}
+
+/* the sequence against its lines' jerk-limited rest-to-rest minima (in
+ * double), on its lines outside the overlaps and within the radii inside
+ * (seq_path_check), speed, acceleration (linear and angular) and the
+ * linear jerk within their limits by finite differences over windows */
+static void jseq_check_all(const chain *c, const float *radius, const dh_cart_limits_f32 *lim,
+                           const dh_cart_jerk_f32 *jk, const dh_blend_seq_f32 *sq)
+{
+    source src;
+    double Trr = 0.0, ang = 0.0, wr;
+    long w;
+    int k, blended = 0;
+    for (k = 0; k < c->n; k++) {
+        Trr += line_jmin(c->L[k], c->th[k], lim, jk);
+        ang += c->th[k];
+        DHT_TRUE(sq->seg[k].j > 0.0f || sq->seg[k].T == 0.0f);
+        if (k + 1 < c->n) {
+            DHT_TRUE(sq->seg[k].tb1 == sq->seg[k + 1].tb0 && sq->seg[k].dev <= radius[k]);
+            if (sq->seg[k].tb1 > 0.0f) blended = 1;
+        }
+    }
+    DHT_TRUE(sq->seg[0].tb0 == 0.0f && sq->seg[c->n - 1].tb1 == 0.0f);
+    DHT_TRUE_MSG(blended ? (double)sq->T < Trr : fabs((double)sq->T - Trr) <= Trr * 1e-5,
+                 "jerk-limited sequence %.9g s (blended %d), rest to rest %.9g s", (double)sq->T, blended, Trr);
+    if (blended) dht_reach_max("jseq.saving_frac", (Trr - (double)sq->T) / Trr);
+    seq_path_check(sq, c, radius, lim);
+    src.bl = NULL;
+    src.sq = sq;
+    src_limits(&src, c->S, ang > 0.0, lim);
+    w = fd_window(8.0 * dhr_ulp_f32(c->S), 3, jk->jmax);
+    wr = fd_ratio(&src, 3, 0, w, jk->jmax);
+    DHT_TRUE_MSG(wr <= 1.0 + REL_FD, "linear jerk: %.9g x its limit (window %ld ms)", wr, w);
+    dht_reach_max("jseq.lin.j", wr);
+}
+
+/* random jerk-limited sequences of 2 to NSEQ lines on the robot d */
+static void jerk_sequences(const dhs_robot *d)
+{
+    int it, k, n = DHT_ITER(8);
+    for (it = 0; it < n; it++) {
+        chain c;
+        dh_blend_seg_f32 seg[NSEQ];
+        dh_blend_seq_f32 sq;
+        dh_cart_limits_f32 lim;
+        dh_cart_jerk_f32 jk;
+        float radius[NSEQ - 1];
+        int nl = 2 + (int)(dht_rand_u32() % (NSEQ - 1));
+        robot_chain(&c, d, nl);
+        for (k = 0; k + 1 < nl; k++)
+            radius[k] = (dht_rand_u32() % 5u == 0u) ? 0.0f : (float)pow(10.0, dht_rand_uniform(-3.0, -1.0));
+        lim.vmax = (float)dht_rand_uniform(0.25, 1.0);
+        lim.amax = (float)dht_rand_uniform(1.0, 10.0);
+        lim.wmax = (float)dht_rand_uniform(30.0, 90.0);
+        lim.wdmax = (float)dht_rand_uniform(300.0, 2000.0);
+        jk.jmax = (float)dht_rand_uniform(5.0, 100.0);
+        jk.wjmax = (float)dht_rand_uniform(3000.0, 30000.0);
+        DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, (uint32_t)nl, radius, &lim, &jk), DH_OK);
+        DHT_TRUE(sq.n == (uint32_t)nl && sq.seg == seg && sq.p == c.p);
+        jseq_check_all(&c, radius, &lim, &jk, &sq);
+    }
+}
+
+static void jerk_sequences_puma560(void)
+{
+    jerk_sequences(&dhs_puma560_m);
+}
+
+static void jerk_sequences_ur5(void)
+{
+    jerk_sequences(&dhs_ur5_m);
+}
+
+static void jerk_sequences_panda(void)
+{
+    jerk_sequences(&dhs_panda_m);
+}
+
+/* random jerk-limited sequences whose lines turn the tool about the world
+ * z axis only (by up to +-60 degrees each): the angular jerk by third
+ * differences of the rotation angle within wjmax as well (the composed
+ * rotation's cross terms vanish there; they are bounded by the proof) */
+static void jerk_sequences_one_axis(void)
+{
+    const double z[3] = { 0.0, 0.0, 1.0 };
+    int it, k, n = DHT_ITER(8);
+    for (it = 0; it < n; it++) {
+        chain c;
+        dh_blend_seg_f32 seg[NSEQ];
+        dh_blend_seq_f32 sq;
+        dh_cart_limits_f32 lim;
+        dh_cart_jerk_f32 jk;
+        source src;
+        float radius[NSEQ - 1];
+        double wr;
+        long w;
+        int nl = 2 + (int)(dht_rand_u32() % (NSEQ - 1));
+        make_chain_ax(&c, nl, 60.0, it % 4 == 1, it % 4 == 2, z);
+        for (k = 0; k + 1 < nl; k++) radius[k] = (float)pow(10.0, dht_rand_uniform(-3.0, -1.0));
+        lim.vmax = (float)dht_rand_uniform(0.25, 1.0);
+        lim.amax = (float)dht_rand_uniform(1.0, 10.0);
+        lim.wmax = (float)dht_rand_uniform(30.0, 90.0);
+        lim.wdmax = (float)dht_rand_uniform(100.0, 1000.0);
+        jk.jmax = (float)dht_rand_uniform(5.0, 100.0);
+        jk.wjmax = (float)dht_rand_uniform(500.0, 10000.0);
+        DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, (uint32_t)nl, radius, &lim, &jk), DH_OK);
+        jseq_check_all(&c, radius, &lim, &jk, &sq);
+        src.bl = NULL;
+        src.sq = &sq;
+        w = fd_window(ANG_NOISE, 3, jk.wjmax);
+        wr = fd_ratio(&src, 3, 1, w, jk.wjmax);
+        DHT_TRUE_MSG(wr <= 1.0 + REL_FD, "angular jerk: %.9g x its limit (window %ld ms)", wr, w);
+        dht_reach_max("jseq.ang.j", wr);
+    }
+}
+
+/* radius 0 and one line are the double minima; every status, nothing
+ * written on error */
+static void jerk_seq_single_and_errors(void)
+{
+    chain c;
+    dh_blend_seg_f32 seg[3], segz[3];
+    dh_blend_seq_f32 sq, sqz;
+    dh_cart_limits_f32 lim = { 0.5f, 2.0f, 60.0f, 500.0f };
+    dh_cart_jerk_f32 jk = { 20.0f, 5000.0f };
+    float radius[2] = { 0.01f, 0.01f };
+    const float zero[2] = { 0.0f, 0.0f };
+    dh_path_f32 keep;
+    double Trr;
+    make_chain(&c, 3, 30.0, 0, 0);
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, zero, &lim, &jk), DH_OK);
+    jseq_check_all(&c, zero, &lim, &jk, &sq);
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_OK);
+    jseq_check_all(&c, radius, &lim, &jk, &sq);
+    make_chain(&c, 1, 30.0, 0, 0);
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 1u, NULL, &lim, &jk), DH_OK);
+    DHT_TRUE(sq.n == 1u && sq.seg == seg && seg[0].j > 0.0f);
+    Trr = line_jmin(c.L[0], c.th[0], &lim, &jk);
+    DHT_TRUE_MSG(fabs((double)sq.T - Trr) <= 1e-5 * Trr, "one line %.9g s vs %.9g s", (double)sq.T, Trr);
+    jseq_check_all(&c, zero, &lim, &jk, &sq);
+    /* errors: the trapezoid's statuses first, then the jerk's */
+    make_chain(&c, 3, 30.0, 0, 0);
+    memset(segz, 0, sizeof segz);
+    memset(&sqz, 0, sizeof sqz);
+    memcpy(seg, segz, sizeof seg);
+    sq = sqz;
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 0u, radius, &lim, &jk), DH_ERR_ARG);
+    radius[0] = NAN;
+    jk.jmax = 0.0f;
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_ERR_NAN);
+    radius[0] = 0.01f;
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_ERR_ARG);
+    jk.jmax = NAN;
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_ERR_NAN);
+    jk.jmax = 20.0f;
+    jk.wjmax = INFINITY;
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_ERR_NAN);
+    jk.wjmax = -1.0f;
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_ERR_ARG);
+    jk.wjmax = 5000.0f;
+    /* an arc: its centripetal jerk in a tail is not bounded */
+    keep = c.p[1];
+    arc_of(&c.p[1]);
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_ERR_ARG);
+    c.p[1] = keep;
+    /* a bound of s too small for float */
+    lim.vmax = 1e-45f;
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_ERR_OVERFLOW);
+    lim.vmax = 0.5f;
+    DHT_TRUE(memcmp(seg, segz, sizeof seg) == 0 && memcmp(&sq, &sqz, sizeof sq) == 0);
+    /* a line without motion in the middle: both its corners at rest */
+    DHT_EQ_INT(dh_path_line_f32(&c.p[1], &c.p[0].B, &c.p[0].B), DH_OK);
+    DHT_EQ_INT(dh_path_line_f32(&c.p[2], &c.p[0].B, &keep.B), DH_OK);
+    DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, 3u, radius, &lim, &jk), DH_OK);
+    DHT_TRUE(seg[1].T == 0.0f && seg[0].tb1 == 0.0f && seg[2].tb0 == 0.0f);
+}
+
 static const dht_case cases[] = {
     DHT_CASE(random_corners),
     DHT_CASE(straight_and_zero_radius),
@@ -806,5 +1069,10 @@ static const dht_case cases[] = {
     DHT_CASE(seq_errors),
     DHT_CASE(random_arc_corners),
     DHT_CASE(random_arc_sequences),
+    DHT_CASE(jerk_sequences_puma560),
+    DHT_CASE(jerk_sequences_ur5),
+    DHT_CASE(jerk_sequences_panda),
+    DHT_CASE(jerk_seq_single_and_errors),
+    DHT_CASE(jerk_sequences_one_axis),
 };
 DHT_MAIN(cases)
