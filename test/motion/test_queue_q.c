@@ -98,7 +98,7 @@ static void gen_next(const dhsm_rig *g, gen_state *gs)
     dh_queue_q *const qu = &the_qu;
     const uint32_t slot = (qu->head + qu->count) % qu->cap;
     int32_t v[NJ], a[NJ], ib[NJ], im[NJ];
-    double qa[NJ], qb[NJ], qm[NJ];
+    double qa[DH_MAX_JOINTS], qb[DH_MAX_JOINTS], qm[DH_MAX_JOINTS];
     dh_frame_q B, Mf;
     dh_path_q p;
     uint32_t i;
@@ -357,7 +357,7 @@ static void random_queues_q(void)
         long it, n = DHT_ITER(4), periods = 0, notok = 0, stops = 0;
         dhsm_rig_make(g, robots[ri], 180.0, 720.0);
         for (it = 0; it < n; it++) {
-            double qa[NJ];
+            double qa[DH_MAX_JOINTS];
             int32_t ia[NJ];
             gen_state gs;
             run_stats rs;
@@ -390,7 +390,7 @@ static void lagging_queue_q(void)
     dh_queue_item_q items[CAP];
     dhsm_ref refs[CAP];
     dhsm_rig *const g = &rig;
-    double qa[NJ];
+    double qa[DH_MAX_JOINTS];
     int32_t ia[NJ];
     gen_state gs;
     run_stats rs;
@@ -427,7 +427,7 @@ static void queue_q_errors(void)
     dh_path_q p;
     dh_cart_limits_q lim = LIM;
     int32_t q1[NJ] = { 0 }, v[NJ], a[NJ];
-    double qa[NJ];
+    double qa[DH_MAX_JOINTS];
     int32_t ia[NJ];
     dhsm_rig_make(g, &dhs_ur5_mm, 180.0, 720.0);
     dhs_ur5_safe_q(15.0, qa);
