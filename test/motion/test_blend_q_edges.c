@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * test_blend_q_edges.c - the fixed-point blended sequences
- * (dh_blend_seq_plan_q, dh_blend_seq_eval_q) at their edges, in mm:
+ * (dh_blend_seq_plan_q, dh_blend_seq_eval_q) at their edges, in mm at
+ * Q16.16 (units of 2^(16 - F) mm in other length formats):
  * - every DH_ERR_ARG of the plan (sq untouched) and of the evaluation
  *   (a sequence whose scalings or lines were changed after planning: T
  *   untouched), a single line;
@@ -30,7 +31,10 @@
 
 #define PI_D 3.14159265358979323846
 #define Q30 1073741824.0
-#define QPOS ((double)((int32_t)1 << DH_QPOS_FRAC))
+/* lengths in units of 2^(16 - DH_QPOS_FRAC) mm (mm at Q16.16): the same
+ * LSB values in every length format, as the planner works in LSB, so the
+ * range cases sit at the int32 edge in every build */
+#define QPOS 65536.0
 #define MM(x) ((dh_qpos)((x) * QPOS))
 #define DEG(x) ((int32_t)((x) * 65536.0))
 #define NL 3
