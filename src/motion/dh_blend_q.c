@@ -80,9 +80,10 @@ DH_INLINE bq_f bq_pack(uint32_t m, int32_t e)
 static DH_NOINLINE bq_f bq_make(uint64_t v, int32_t e)
 {
     const unsigned n = dh_q_bitlen64(v);
+    const uint32_t sh = 64u - (uint32_t)n;
     if (v == 0u) return bq_pack(0u, 0);
     /* the top bit to bit 63 (1 <= n <= 64), then the high word */
-    return bq_pack((uint32_t)((v << (64u - n)) >> 32), e + (int32_t)n - 32);
+    return bq_pack((uint32_t)((v << sh) >> 32), e + (int32_t)n - 32);
 }
 
 /* v (exact; clz(0) is 32: m 0) */
@@ -103,8 +104,8 @@ static DH_NOINLINE bq_f bq_mul(bq_f a, bq_f b)
     const uint32_t p00 = x0 * y0, p01 = x0 * y1, p10 = x1 * y0, p11 = x1 * y1;
     const uint64_t mid = (uint64_t)p01 + p10;
     const uint64_t p = ((uint64_t)p11 << 32) + (mid << 16) + p00;
-    const uint32_t hb = (uint32_t)(p >> 63);
-    return bq_pack((uint32_t)(p >> (31u + hb)), bq_e(a) + bq_e(b) + 31 + (int32_t)hb);
+    const uint32_t hb = (uint32_t)(p >> 63), sh = 31u + hb;
+    return bq_pack((uint32_t)(p >> sh), bq_e(a) + bq_e(b) + 31 + (int32_t)hb);
 }
 
 /* a / b for b != 0 (every divisor of the planning is a positive rate,
@@ -222,11 +223,11 @@ DH_INLINE int32_t bq_q30(bq_f a)
 /* 1, 10^6, and (each rounded down) 1e-6 (s per us), 63/128, 128/191,
  * 1 - 2^-10, 180/pi 2^16 / 16 */
 #define BQ_ONE BQ_C(0x80000000u, -31)
-#define BQ_MEGA BQ_C(1000000u << 12, -12)
+#define BQ_MEGA BQ_C(0xF4240000u, -12)
 #define BQ_MICRO BQ_C(2251799813u, -51)
-#define BQ_TAIL BQ_C(63u << 26, -33)
+#define BQ_TAIL BQ_C(0xFC000000u, -33)
 #define BQ_HALF BQ_C(2878302690u, -32)
-#define BQ_MARGIN BQ_C(1023u << 22, -32)
+#define BQ_MARGIN BQ_C(0xFFC00000u, -32)
 #define BQ_RAD2DEG BQ_C(3845054675u, -14)
 
 /* every phase lasts less than 2^28 us (268 s): a line's five sum below
@@ -463,8 +464,11 @@ static DH_NOINLINE int bq_starts(dh_blend_seg_q *g)
         if (g->dur[k] > g->dur[big]) big = k;
     for (k = 0u; k < 5u; k++) s += (int64_t)g->P[k] + g->Q[k];
     s = (int64_t)DH_Q30_ONE - s;
-    ok = (s >= -(1 << 20)) & (s <= (1 << 20));
-    g->Q[big] = (int32_t)((int64_t)g->Q[big] + (s & -(int64_t)ok));
+    ok = 0;
+    if ((s >= -1048576) && (s <= 1048576)) { /* |s| <= 2^20 */
+        g->Q[big] = (int32_t)((int64_t)g->Q[big] + s);
+        ok = 1;
+    }
     s = 0;
     for (k = 0u; k < 5u; k++) {
         g->s[k] = (int32_t)(uint32_t)s;
