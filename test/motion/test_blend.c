@@ -564,6 +564,28 @@ typedef struct {
  * when straight, the third reversed when reverse), each turning the tool
  * by up to rmax degrees about a random axis (about the world axis ax when
  * not NULL) */
+/* line k of the chain from F0 to F1: its path, end point, rotation angle
+ * and length */
+static void chain_line(chain *c, int k, const dh_mat4_f32 *F0, const dh_mat4_f32 *F1)
+{
+    double ax[3], d[3];
+    int i;
+    DHT_EQ_INT(dh_path_line_f32(&c->p[k], F0, F1), DH_OK);
+    pos_of(F1, c->x[k + 1]);
+    rot_vec(F0, F1, ax);
+    c->th[k] = sqrt(dot3(ax, ax));
+    for (i = 0; i < 3; i++) d[i] = c->x[k + 1][i] - c->x[k][i];
+    c->L[k] = sqrt(dot3(d, d));
+}
+
+/* c->S: the largest coordinate of the chain's points */
+static void chain_scale(chain *c)
+{
+    int k, i;
+    for (k = 0; k <= c->n; k++)
+        for (i = 0; i < 3; i++) c->S = fmax(c->S, fabs(c->x[k][i]));
+}
+
 static void make_chain_ax(chain *c, int n, double rmax, int straight, int reverse, const double *ax1)
 {
     dhr_mat4 R0, R1, X;
@@ -597,17 +619,11 @@ static void make_chain_ax(chain *c, int n, double rmax, int straight, int revers
             pd[i] = d[i];
         }
         dhr_to_f32(&R1, &F1);
-        DHT_EQ_INT(dh_path_line_f32(&c->p[k], &F0, &F1), DH_OK);
-        pos_of(&F1, c->x[k + 1]);
-        rot_vec(&F0, &F1, ax);
-        c->th[k] = sqrt(dot3(ax, ax));
-        for (i = 0; i < 3; i++) d[i] = c->x[k + 1][i] - c->x[k][i];
-        c->L[k] = sqrt(dot3(d, d));
+        chain_line(c, k, &F0, &F1);
         R0 = R1;
         F0 = F1;
     }
-    for (k = 0; k <= n; k++)
-        for (i = 0; i < 3; i++) c->S = fmax(c->S, fabs(c->x[k][i]));
+    chain_scale(c);
 }
 
 static void make_chain(chain *c, int n, double rmax, int straight, int reverse)
@@ -861,7 +877,7 @@ static double line_jmin(double L, double th, const dh_cart_limits_f32 *lim, cons
 static void robot_chain(chain *c, const dhs_robot *d, int n)
 {
     dh_robot r;
-    double q[DHS_MAX_JOINTS], ax[3], dd[3];
+    double q[DHS_MAX_JOINTS];
     dh_mat4_f32 F0, F1;
     int k, i;
     DHT_EQ_INT(dhs_build(d, &r), DH_OK);
@@ -873,16 +889,10 @@ static void robot_chain(chain *c, const dhs_robot *d, int n)
     for (k = 0; k < n; k++) {
         for (i = 0; i < (int)r.n; i++) q[i] += dht_rand_uniform(-20.0, 20.0);
         dhs_target_f32(&r, q, &F1);
-        DHT_EQ_INT(dh_path_line_f32(&c->p[k], &F0, &F1), DH_OK);
-        pos_of(&F1, c->x[k + 1]);
-        rot_vec(&F0, &F1, ax);
-        c->th[k] = sqrt(dot3(ax, ax));
-        for (i = 0; i < 3; i++) dd[i] = c->x[k + 1][i] - c->x[k][i];
-        c->L[k] = sqrt(dot3(dd, dd));
+        chain_line(c, k, &F0, &F1);
         F0 = F1;
     }
-    for (k = 0; k <= n; k++)
-        for (i = 0; i < 3; i++) c->S = fmax(c->S, fabs(c->x[k][i]));
+    chain_scale(c);
 }
 
 /* the sequence against its lines' jerk-limited rest-to-rest minima (in
