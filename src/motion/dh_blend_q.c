@@ -45,6 +45,7 @@
 #include "../internal/dh_build.h"
 #include "../internal/dh_qmath.h"
 #include "motion_impl.h"
+#include "blend_q_impl.h"
 
 /* ---- normalised integer format: m 2^e, m in [2^31, 2^32) or m == 0 ------ */
 
@@ -295,9 +296,11 @@ static bq_f bq_get(dh_blend_seg_q *g, unsigned i)
 
 /* the rates V = min(vmax / L, wmax / th), a = min(amax / L, wdmax / th)
  * of s along the line p within lim (1/s, 1/s^2), lowered by 2^-10, into
- * g's state; both 0 when p has no length and no angle. Each is a
- * quotient of positive int32 (length and angle at least 1 LSB), so
- * within [2^-31, 2^31): always in the planning's range. */
+ * g's state, and the acceleration of both its tails, b = (63/128) a
+ * (states BQ_U0 and BQ_B1, as bq_tails reads them); all 0 when p has no
+ * length and no angle. Each rate is a quotient of positive int32 (length
+ * and angle at least 1 LSB), so within [2^-31, 2^31): always in the
+ * planning's range. */
 static DH_NOINLINE void bq_rates(const dh_path_q *p, const dh_cart_limits_q *lim, dh_blend_seg_q *g)
 {
     bq_f v = BQ_ZERO, a = BQ_ZERO;
@@ -313,6 +316,9 @@ static DH_NOINLINE void bq_rates(const dh_path_q *p, const dh_cart_limits_q *lim
     a = bq_mul(a, BQ_MARGIN);
     bq_put(g, BQ_RV, v);
     bq_put(g, BQ_RA, a);
+    a = bq_mul(a, BQ_TAIL);
+    bq_put(g, BQ_U0, a);
+    bq_put(g, BQ_B1, a);
 }
 
 /* *tb = min(*tb, sqrt(n / d)) for d != 0 */
@@ -322,16 +328,14 @@ static void bq_min_sqrt(bq_f *tb, bq_f n, bq_f d)
 }
 
 /* The overlap (us, rounded down) of the corner between lines p1 and p2
- * (their rates in g1, g2) within radius R and lim, its tails'
- * accelerations b1, b2 kept in g1, g2 (bq_put_b); 0 when the corner
- * runs at rest (file comment) */
+ * (their rates and tails' accelerations b1, b2 in g1, g2: bq_rates)
+ * within radius R and lim; 0 when the corner runs at rest (file
+ * comment) */
 static DH_NOINLINE uint32_t bq_overlap(const dh_path_q *p1, const dh_path_q *p2, dh_blend_seg_q *g1,
                                        dh_blend_seg_q *g2, dh_qpos R, const dh_cart_limits_q *lim)
 {
     bq_f tb, x;
     uint32_t us;
-    bq_put(g1, BQ_B1, bq_mul(bq_get(g1, BQ_RA), BQ_TAIL));
-    bq_put(g2, BQ_U0, bq_mul(bq_get(g2, BQ_RA), BQ_TAIL));
     if (R <= 0 || bq_m(bq_get(g1, BQ_B1)) == 0u || bq_m(bq_get(g2, BQ_U0)) == 0u) return 0u;
     tb = bq_div(bq_get(g1, BQ_RV), bq_get(g1, BQ_B1));
     bq_min(&tb, bq_div(bq_get(g2, BQ_RV), bq_get(g2, BQ_U0)));
@@ -374,7 +378,7 @@ static DH_NOINLINE bq_f bq_time(dh_blend_seg_q *g, bq_f b, uint32_t tb)
 
 /* the tails' speeds u0, u1 and the s left for the middle, E, of g's
  * tails (durations dur[0], dur[4]; accelerations b0 in the state BQ_U0,
- * b1 in BQ_B1, as bq_corner keeps them: any bits for a duration 0,
+ * b1 in BQ_B1, as bq_rates puts them: any bits for a duration 0,
  * whose product with t = 0 is 0). Each tail takes at most 64/191 of the
  * line (bq_overlap's second bound), so E >= 63/191. */
 static DH_NOINLINE void bq_tails(dh_blend_seg_q *g)
@@ -478,15 +482,13 @@ static DH_NOINLINE int bq_starts(dh_blend_seg_q *g)
     return ok;
 }
 
-/* g = the scaling of a line (its rates in g's state, bq_rates) with its
- * tails (g->dur[0], dur[4] and their accelerations as bq_tails reads
- * them, set by the caller); 1 when the tails fit and every duration is
- * in range, 0 when not (g no scaling then); t0 and dev are the caller's
- * to set after */
-static DH_NOINLINE int bq_seg(dh_blend_seg_q *g)
+/* dh_blend_line_q_ (blend_q_impl.h): the rates and the tails'
+ * accelerations by bq_rates, then the phases (file comment) */
+DH_NOINLINE int dh_blend_line_q_(dh_blend_seg_q *g, const dh_path_q *p, const dh_cart_limits_q *lim)
 {
     unsigned k;
     int ok;
+    bq_rates(p, lim, g);
     for (k = 1u; k < 4u; k++) g->dur[k] = 0u;
     if (bq_m(bq_get(g, BQ_RV)) == 0u) {
         /* no motion: no time */
@@ -533,7 +535,7 @@ static DH_NOINLINE dh_status bq_check(const dh_path_q *p, uint32_t n, const dh_q
 }
 
 /* 1 when the corner C keeps every point within R + 4 LSB of it inside
- * the int32 range (bq_pos: the blend's points are within dev + 2 LSB) */
+ * the int32 range (dh_blend_pos_q_: the blend's points are within dev + 2 LSB) */
 static int bq_inside(const dh_frame_q *C, dh_qpos R)
 {
     unsigned i;
@@ -545,42 +547,49 @@ static int bq_inside(const dh_frame_q *C, dh_qpos R)
 }
 
 /* (L1 b1 + 2 L2 b2) tb^2 / 2 (the bound of a brake too), rounded up:
- * the dev of the corner after line p[0] from its overlap tb (0 for 0)
- * and tails b1, b2 */
-static DH_NOINLINE dh_qpos bq_dev(const dh_path_q *p, uint32_t tb, bq_f b1, bq_f b2)
+ * the dev of the corner between lines p1 and p2 from its overlap tb (0
+ * for 0) and tails b1, b2 */
+static DH_NOINLINE dh_qpos bq_dev(const dh_path_q *p1, const dh_path_q *p2, uint32_t tb, bq_f b1, bq_f b2)
 {
     const bq_f t = bq_sec(tb);
-    bq_f x = bq_add(bq_mul(bq_u((uint32_t)p[0].length), b1), bq_mul(bq_u((uint32_t)p[1].length), bq_add(b2, b2)));
+    bq_f x = bq_add(bq_mul(bq_u((uint32_t)p1->length), b1), bq_mul(bq_u((uint32_t)p2->length), bq_add(b2, b2)));
     x = bq_half(bq_mul(bq_mul(x, t), t));
     return (dh_qpos)bq_int(x, 0, 1);
 }
 
-/* Corner k of the sequence: its overlap and its tails' b, kept for
- * bq_build: the overlap in seg[k].dur[4] and seg[k + 1].dur[0], the
- * tails' b by bq_overlap, its dev in seg[k].dev; the overlap is 0
- * (at rest) unless the pair so blended is shorter than at rest (the
- * closed forms' durations, bq_time) and the corner lies its radius and
- * 4 LSB inside the range (bq_inside). The lines' rates go into the states
- * of seg[k] and seg[k + 1] (scratch). */
-static DH_NOINLINE void bq_corner(dh_blend_seg_q *seg, const dh_path_q *p, uint32_t k, const dh_qpos *radius,
-                                  const dh_cart_limits_q *lim)
+/* dh_blend_corner_q_ (blend_q_impl.h): the overlap is 0 (at rest)
+ * unless the pair so blended is shorter than at rest (the closed forms'
+ * durations, bq_time) and the corner lies its radius and 4 LSB inside
+ * the range (bq_inside) */
+DH_NOINLINE uint32_t dh_blend_corner_q_(const dh_path_q *p1, const dh_path_q *p2, dh_qpos R,
+                                        const dh_cart_limits_q *lim, dh_blend_seg_q *g1, dh_blend_seg_q *g2,
+                                        dh_qpos *dev)
 {
-    dh_blend_seg_q *g1 = &seg[k], *g2 = &seg[k + 1u];
     uint32_t tb;
     bq_f x;
-    bq_rates(&p[k], lim, g1);
-    bq_rates(&p[k + 1u], lim, g2);
-    tb = bq_overlap(&p[k], &p[k + 1u], g1, g2, radius[k], lim);
-    if (!bq_inside(&p[k].B, radius[k])) tb = 0u;
+    bq_rates(p1, lim, g1);
+    bq_rates(p2, lim, g2);
+    tb = bq_overlap(p1, p2, g1, g2, R, lim);
+    if (!bq_inside(&p1->B, R)) tb = 0u;
     if (tb > 0u) {
         /* blended: T1 + T2 - tb, at rest: R1 + R2 */
         x = bq_add(bq_time(g1, BQ_ZERO, 0u), bq_time(g2, BQ_ZERO, 0u));
         x = bq_sub(bq_add(x, bq_sec(tb)), bq_time(g1, bq_get(g1, BQ_B1), tb));
         if (!bq_lt(bq_time(g2, bq_get(g2, BQ_U0), tb), x)) tb = 0u;
     }
-    g1->dur[4] = tb;
-    g2->dur[0] = tb;
-    g1->dev = bq_dev(&p[k], tb, bq_get(g1, BQ_B1), bq_get(g2, BQ_U0));
+    *dev = bq_dev(p1, p2, tb, bq_get(g1, BQ_B1), bq_get(g2, BQ_U0));
+    return tb;
+}
+
+/* Corner k of the sequence (dh_blend_corner_q_ on its lines, seg[k] and
+ * seg[k + 1] the scratch), kept for bq_build: the overlap in
+ * seg[k].dur[4] and seg[k + 1].dur[0], its dev in seg[k].dev */
+static DH_NOINLINE void bq_corner(dh_blend_seg_q *seg, const dh_path_q *p, uint32_t k, const dh_qpos *radius,
+                                  const dh_cart_limits_q *lim)
+{
+    const uint32_t tb = dh_blend_corner_q_(&p[k], &p[k + 1u], radius[k], lim, &seg[k], &seg[k + 1u], &seg[k].dev);
+    seg[k].dur[4] = tb;
+    seg[k + 1u].dur[0] = tb;
 }
 
 /* every corner at rest (for bq_build) */
@@ -603,8 +612,7 @@ static DH_NOINLINE uint32_t bq_build(dh_blend_seg_q *seg, const dh_path_q *p, ui
 {
     uint32_t k, t0 = 0u, bad = 0u;
     for (k = 0u; k < n; k++) {
-        bq_rates(&p[k], lim, &seg[k]);
-        bad |= (uint32_t)(bq_seg(&seg[k]) == 0);
+        bad |= (uint32_t)(dh_blend_line_q_(&seg[k], &p[k], lim) == 0);
         seg[k].t0 = t0;
         /* t0 below 2^31 (else bad already) and a duration below 2^31: no wrap */
         t0 += seg[k].T - seg[k].dur[4];
@@ -621,11 +629,10 @@ static DH_NOINLINE uint32_t bq_rest_sum(dh_blend_seg_q *seg, const dh_path_q *p,
 {
     uint32_t k, sum = 0u;
     for (k = 0u; k < n; k++) {
-        bq_rates(&p[k], lim, &seg[k]);
         seg[k].dur[0] = 0u;
         seg[k].dur[4] = 0u;
         seg[k].dev = 0;
-        if (!bq_seg(&seg[k])) return UINT32_MAX;
+        if (!dh_blend_line_q_(&seg[k], &p[k], lim)) return UINT32_MAX;
         /* both below 2^31: the sum fits */
         sum += seg[k].T;
         if (sum >= (uint32_t)INT32_MAX) return UINT32_MAX;
@@ -663,10 +670,8 @@ dh_status dh_blend_seq_plan_q(dh_blend_seq_q *sq, dh_blend_seg_q *seg, const dh_
 
 /* ---- evaluation --------------------------------------------------------- */
 
-/* s (Q2.30) of the scaling g at its time t (us; t >= g->T: 1), held
- * to [0, 1] (a scaling that passed bq_seg_ok but whose P or Q were
- * changed after planning cannot take s out of its line) */
-static DH_NOINLINE dh_q30 bq_s(const dh_blend_seg_q *g, uint32_t t)
+/* dh_blend_s_q_ (blend_q_impl.h) */
+DH_NOINLINE dh_q30 dh_blend_s_q_(const dh_blend_seg_q *g, uint32_t t)
 {
     uint32_t k, x;
     int64_t s;
@@ -693,33 +698,29 @@ static int bq_seg_ok(const dh_blend_seg_q *g)
     return sum == g->T && g->T < (uint32_t)INT32_MAX;
 }
 
-/* The overlap's rotation R2(s2) R_A2^T R1(s1) (p the two lines) into
- * T->r: as quaternions q2(s2) qA2* q1(s1) with q1(s1) = qB1 (cos f h1,
- * -sin f h1 k1) (f = 1 - s1, line 1's slerp from its end) and qA2, qB1
- * the unit quaternion of the same frame (p[k].B == p[k+1].A, the plan's
- * check) up to sign: +-q2(s2) (cos f h1, -sin f h1 k1) */
-static DH_NOINLINE void bq_rot(const dh_path_q *p, dh_q30 s1, dh_q30 s2, dh_frame_q *T)
+/* dh_blend_rot_q_ (blend_q_impl.h): as quaternions q2(s2) qA2* q1(s1)
+ * with q1(s1) = qB1 (cos f h1, -sin f h1 k1) (f = 1 - s1, line 1's slerp
+ * from its end) and qA2, qB1 the unit quaternion of the same frame
+ * (p1->B == p2->A) up to sign: +-q2(s2) (cos f h1, -sin f h1 k1) */
+DH_NOINLINE void dh_blend_rot_q_(const dh_path_q *p1, const dh_path_q *p2, dh_q30 s1, dh_q30 s2, dh_frame_q *T)
 {
     int32_t sn, cs;
     dh_quat_q q2, q;
-    dh_sincos_q((dh_q16)dh_q_rshr(dh_q_mul64(s2, p[1].h), 30u), &sn, &cs);
-    dh_motion_turn_q_(&p[1].qa, cs, sn, p[1].k, &q2);
-    dh_sincos_q((dh_q16)dh_q_rshr(dh_q_mul64(DH_Q30_ONE - s1, p[0].h), 30u), &sn, &cs);
-    dh_motion_turn_q_(&q2, cs, -sn, p[0].k, &q);
+    dh_sincos_q((dh_q16)dh_q_rshr(dh_q_mul64(s2, p2->h), 30u), &sn, &cs);
+    dh_motion_turn_q_(&p2->qa, cs, sn, p2->k, &q2);
+    dh_sincos_q((dh_q16)dh_q_rshr(dh_q_mul64(DH_Q30_ONE - s1, p1->h), 30u), &sn, &cs);
+    dh_motion_turn_q_(&q2, cs, -sn, p1->k, &q);
     dh_motion_quat_rot_q_(&q, T);
 }
 
-/* T->p = p1(s1) + (p2(s2) - p_A2) (p the two lines), saturated to int32:
- * 1 when it was (the plan keeps each blended corner at least its radius
- * and 4 LSB inside the range, so only scalings or lines changed after
- * planning can) */
-static DH_NOINLINE int bq_pos(const dh_path_q *p, dh_q30 s1, dh_q30 s2, dh_frame_q *T)
+/* dh_blend_pos_q_ (blend_q_impl.h) */
+DH_NOINLINE int dh_blend_pos_q_(const dh_path_q *p1, const dh_path_q *p2, dh_q30 s1, dh_q30 s2, dh_frame_q *T)
 {
     unsigned i;
     int sat = 0;
     for (i = 0u; i < 3u; i++) {
-        int64_t x = (int64_t)dh_motion_lerp_q_(p[0].A.p[i], p[0].B.p[i], s1) +
-                    dh_motion_lerp_q_(p[1].A.p[i], p[1].B.p[i], s2) - p[1].A.p[i];
+        int64_t x = (int64_t)dh_motion_lerp_q_(p1->A.p[i], p1->B.p[i], s1) +
+                    dh_motion_lerp_q_(p2->A.p[i], p2->B.p[i], s2) - p2->A.p[i];
         if (x > INT32_MAX || x < INT32_MIN) {
             x = (x > 0) ? INT32_MAX : INT32_MIN;
             sat = 1;
@@ -749,12 +750,12 @@ dh_status dh_blend_seq_eval_q(const dh_blend_seq_q *sq, uint32_t t, dh_frame_q *
     k = bq_find(sq, t);
     g = &sq->seg[k];
     if (!bq_seg_ok(g)) return DH_ERR_ARG;
-    if (k == 0u || t - g->t0 >= g->dur[0]) return dh_path_eval_q(&sq->p[k], bq_s(g, t - g->t0), T);
+    if (k == 0u || t - g->t0 >= g->dur[0]) return dh_path_eval_q(&sq->p[k], dh_blend_s_q_(g, t - g->t0), T);
     /* in the overlap with the line before: the superposition */
     p = &sq->p[k - 1u];
     if (!bq_seg_ok(&g[-1]) || !dh_motion_path_ok_q_(&p[0]) || !dh_motion_path_ok_q_(&p[1])) return DH_ERR_ARG;
-    s1 = bq_s(&g[-1], t - g[-1].t0);
-    s2 = bq_s(g, t - g->t0);
-    bq_rot(p, s1, s2, T);
-    return (bq_pos(p, s1, s2, T) != 0) ? DH_ERR_OVERFLOW : DH_OK;
+    s1 = dh_blend_s_q_(&g[-1], t - g[-1].t0);
+    s2 = dh_blend_s_q_(g, t - g->t0);
+    dh_blend_rot_q_(&p[0], &p[1], s1, s2, T);
+    return (dh_blend_pos_q_(&p[0], &p[1], s1, s2, T) != 0) ? DH_ERR_OVERFLOW : DH_OK;
 }

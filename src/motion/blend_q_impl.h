@@ -1,0 +1,50 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * blend_q_impl.h - PRIVATE planning and evaluation of the fixed-point
+ * blended corners (dh_blend_q.c; src/motion/, not installed), shared by
+ * the blended sequence (dh_blend_seq_plan_q, dh_blend_seq_eval_q) and
+ * any other user of one corner or one line at a time, so that each
+ * bound is planned by one body (method: docs/design.md, "Blended
+ * corners, fixed point").
+ */
+#ifndef DHMATH_SRC_BLEND_Q_IMPL_H
+#define DHMATH_SRC_BLEND_Q_IMPL_H
+
+#include "dhmath/motion.h"
+
+/* The overlap tb (us) of the corner between the lines p1 and p2 (p2->A
+ * equal to p1->B, both holding paths of kind LINE, lengths and angles
+ * >= 0; lim's fields > 0, R >= 0) within radius R: each tail at
+ * b = (63/128) a of its line, tb the least of the four bounds of the
+ * file comment of dh_blend_q.c, 0 (at rest) when R is 0, a line has no
+ * motion, the corner lies within R + 4 LSB of the int32 range or the
+ * blend does not shorten the pair. *dev = (L1 b1 + 2 L2 b2) tb^2 / 2
+ * rounded up (<= R; 0 for tb 0): the bound on the tool point's distance
+ * from the corner in the overlap, also for a brake of each line at its
+ * tail's acceleration. g1, g2 are scratch (their contents unspecified
+ * after; dur and dev untouched). */
+uint32_t dh_blend_corner_q_(const dh_path_q *p1, const dh_path_q *p2, dh_qpos R, const dh_cart_limits_q *lim,
+                            dh_blend_seg_q *g1, dh_blend_seg_q *g2, dh_qpos *dev);
+
+/* g = the five-phase scaling of s from 0 to 1 along the line p within
+ * lim, with the tails' durations the caller set in g->dur[0] (start) and
+ * g->dur[4] (end; each an overlap of dh_blend_corner_q_ for this line,
+ * or 0 for rest), each tail at (63/128) a: 1 when the tails fit and
+ * every phase is below 2^28 us (g->T their sum), 0 when not (g holds no
+ * scaling then). g->t0 and g->dev are not written. */
+int dh_blend_line_q_(dh_blend_seg_q *g, const dh_path_q *p, const dh_cart_limits_q *lim);
+
+/* s (Q2.30) of the scaling g at its time t (us; t >= g->T: 1), held to
+ * [0, 1]; g must hold a scaling (durations summing to g->T) */
+dh_q30 dh_blend_s_q_(const dh_blend_seg_q *g, uint32_t t);
+
+/* T->r = the overlap's rotation R2(s2) R_A2^T R1(s1) of the lines p1, p2
+ * (p2->A equal to p1->B) at s1, s2 (Q2.30); T->p untouched */
+void dh_blend_rot_q_(const dh_path_q *p1, const dh_path_q *p2, dh_q30 s1, dh_q30 s2, dh_frame_q *T);
+
+/* T->p = p1(s1) + (p2(s2) - p2->A), saturated to int32: 1 when it was
+ * (a corner that dh_blend_corner_q_ blends keeps its overlap inside the
+ * range, so only lines or scalings changed after planning can) */
+int dh_blend_pos_q_(const dh_path_q *p1, const dh_path_q *p2, dh_q30 s1, dh_q30 s2, dh_frame_q *T);
+
+#endif /* DHMATH_SRC_BLEND_Q_IMPL_H */
