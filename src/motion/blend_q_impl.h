@@ -14,25 +14,33 @@
 
 /* The overlap tb (us) of the corner between the lines p1 and p2 (p2->A
  * equal to p1->B, both holding paths of kind LINE, lengths and angles
- * >= 0; lim's fields > 0, R >= 0) within radius R: each tail at
+ * >= 0; lim's fields > 0) within the radius R >= 0 that g[0].dev holds
+ * on the call (a field, not an argument: the 256 B guard): each tail at
  * b = (63/128) a of its line, tb the least of the four bounds of the
  * file comment of dh_blend_q.c, 0 (at rest) when R is 0, a line has no
  * motion, the corner lies within R + 4 LSB of the int32 range or the
- * blend does not shorten the pair. *dev = (L1 b1 + 2 L2 b2) tb^2 / 2
- * rounded up (<= R; 0 for tb 0): the bound on the tool point's distance
- * from the corner in the overlap, also for a brake of each line at its
- * tail's acceleration. g1, g2 are scratch (their contents unspecified
- * after; dur and dev untouched). */
-uint32_t dh_blend_corner_q_(const dh_path_q *p1, const dh_path_q *p2, dh_qpos R, const dh_cart_limits_q *lim,
-                            dh_blend_seg_q *g1, dh_blend_seg_q *g2, dh_qpos *dev);
+ * blend does not shorten the pair, into g[0].dur[4] and g[1].dur[0];
+ * and g[0].dev = (L1 b1 + 2 L2 b2) tb^2 / 2 rounded up (<= R; 0 for tb
+ * 0): the bound on the tool point's distance from the corner in the
+ * overlap, also for a brake of each line at its tail's acceleration. The
+ * rest of g[0] and g[1] (the scalings of p1 and p2 to be, or scratch) is
+ * unspecified after; their other durations are untouched. */
+void dh_blend_corner_q_(const dh_path_q *p1, const dh_path_q *p2, const dh_cart_limits_q *lim, dh_blend_seg_q *g);
 
-/* g = the five-phase scaling of s from 0 to 1 along the line p within
- * lim, with the tails' durations the caller set in g->dur[0] (start) and
- * g->dur[4] (end; each an overlap of dh_blend_corner_q_ for this line,
- * or 0 for rest), each tail at (63/128) a: 1 when the tails fit and
- * every phase is below 2^28 us (g->T their sum), 0 when not (g holds no
- * scaling then). g->t0 and g->dev are not written. */
-int dh_blend_line_q_(dh_blend_seg_q *g, const dh_path_q *p, const dh_cart_limits_q *lim);
+/* The rates of s along the line p within lim (lim's fields > 0),
+ * V = min(vmax / L, wmax / th) and a = min(amax / L, wdmax / th), both
+ * lowered by 2^-10, and its tails' accelerations (63/128) a, into g's
+ * planning state (fields of g that dh_blend_line_q_ writes last); all 0
+ * when p has no length and no angle. */
+void dh_blend_rates_q_(const dh_path_q *p, const dh_cart_limits_q *lim, dh_blend_seg_q *g);
+
+/* g = the five-phase scaling of s from 0 to 1 along the line whose rates
+ * dh_blend_rates_q_ put into g, with the tails' durations the caller set
+ * in g->dur[0] (start) and g->dur[4] (end; each an overlap of
+ * dh_blend_corner_q_ for this line, or 0 for rest): 1 when the tails fit
+ * and every phase is below 2^28 us (g->T their sum), 0 when not (g holds
+ * no scaling then). g->t0 and g->dev are not written. */
+int dh_blend_line_q_(dh_blend_seg_q *g);
 
 /* s (Q2.30) of the scaling g at its time t (us; t >= g->T: 1), held to
  * [0, 1]; g must hold a scaling (durations summing to g->T) */

@@ -294,14 +294,12 @@ static bq_f bq_get(dh_blend_seg_q *g, unsigned i)
     return ((uint64_t)(uint32_t)w[0] << 32) | (uint32_t)w[1];
 }
 
-/* the rates V = min(vmax / L, wmax / th), a = min(amax / L, wdmax / th)
- * of s along the line p within lim (1/s, 1/s^2), lowered by 2^-10, into
- * g's state, and the acceleration of both its tails, b = (63/128) a
- * (states BQ_U0 and BQ_B1, as bq_tails reads them); all 0 when p has no
- * length and no angle. Each rate is a quotient of positive int32 (length
- * and angle at least 1 LSB), so within [2^-31, 2^31): always in the
- * planning's range. */
-static DH_NOINLINE void bq_rates(const dh_path_q *p, const dh_cart_limits_q *lim, dh_blend_seg_q *g)
+/* dh_blend_rates_q_ (blend_q_impl.h): V = min(vmax / L, wmax / th),
+ * a = min(amax / L, wdmax / th) lowered by 2^-10, and the tails'
+ * b = (63/128) a (states BQ_U0 and BQ_B1, as bq_tails reads them). Each
+ * rate is a quotient of positive int32 (length and angle at least
+ * 1 LSB), so within [2^-31, 2^31): always in the planning's range. */
+DH_NOINLINE void dh_blend_rates_q_(const dh_path_q *p, const dh_cart_limits_q *lim, dh_blend_seg_q *g)
 {
     bq_f v = BQ_ZERO, a = BQ_ZERO;
     if (p->length > 0) {
@@ -328,7 +326,7 @@ static void bq_min_sqrt(bq_f *tb, bq_f n, bq_f d)
 }
 
 /* The overlap (us, rounded down) of the corner between lines p1 and p2
- * (their rates and tails' accelerations b1, b2 in g1, g2: bq_rates)
+ * (their rates and tails' accelerations b1, b2 in g1, g2: dh_blend_rates_q_)
  * within radius R and lim; 0 when the corner runs at rest (file
  * comment) */
 static DH_NOINLINE uint32_t bq_overlap(const dh_path_q *p1, const dh_path_q *p2, dh_blend_seg_q *g1,
@@ -378,7 +376,7 @@ static DH_NOINLINE bq_f bq_time(dh_blend_seg_q *g, bq_f b, uint32_t tb)
 
 /* the tails' speeds u0, u1 and the s left for the middle, E, of g's
  * tails (durations dur[0], dur[4]; accelerations b0 in the state BQ_U0,
- * b1 in BQ_B1, as bq_rates puts them: any bits for a duration 0,
+ * b1 in BQ_B1, as dh_blend_rates_q_ puts them: any bits for a duration 0,
  * whose product with t = 0 is 0). Each tail takes at most 64/191 of the
  * line (bq_overlap's second bound), so E >= 63/191. */
 static DH_NOINLINE void bq_tails(dh_blend_seg_q *g)
@@ -482,13 +480,11 @@ static DH_NOINLINE int bq_starts(dh_blend_seg_q *g)
     return ok;
 }
 
-/* dh_blend_line_q_ (blend_q_impl.h): the rates and the tails'
- * accelerations by bq_rates, then the phases (file comment) */
-DH_NOINLINE int dh_blend_line_q_(dh_blend_seg_q *g, const dh_path_q *p, const dh_cart_limits_q *lim)
+/* dh_blend_line_q_ (blend_q_impl.h): the phases of the file comment */
+DH_NOINLINE int dh_blend_line_q_(dh_blend_seg_q *g)
 {
     unsigned k;
     int ok;
-    bq_rates(p, lim, g);
     for (k = 1u; k < 4u; k++) g->dur[k] = 0u;
     if (bq_m(bq_get(g, BQ_RV)) == 0u) {
         /* no motion: no time */
@@ -536,7 +532,7 @@ static DH_NOINLINE dh_status bq_check(const dh_path_q *p, uint32_t n, const dh_q
 
 /* 1 when the corner C keeps every point within R + 4 LSB of it inside
  * the int32 range (dh_blend_pos_q_: the blend's points are within dev + 2 LSB) */
-static int bq_inside(const dh_frame_q *C, dh_qpos R)
+static DH_NOINLINE int bq_inside(const dh_frame_q *C, dh_qpos R)
 {
     unsigned i;
     for (i = 0u; i < 3u; i++) {
@@ -561,35 +557,29 @@ static DH_NOINLINE dh_qpos bq_dev(const dh_path_q *p1, const dh_path_q *p2, uint
  * unless the pair so blended is shorter than at rest (the closed forms'
  * durations, bq_time) and the corner lies its radius and 4 LSB inside
  * the range (bq_inside) */
-DH_NOINLINE uint32_t dh_blend_corner_q_(const dh_path_q *p1, const dh_path_q *p2, dh_qpos R,
-                                        const dh_cart_limits_q *lim, dh_blend_seg_q *g1, dh_blend_seg_q *g2,
-                                        dh_qpos *dev)
+DH_NOINLINE void dh_blend_corner_q_(const dh_path_q *p1, const dh_path_q *p2, const dh_cart_limits_q *lim,
+                                    dh_blend_seg_q *g)
 {
-    uint32_t tb;
+    dh_blend_seg_q *const g1 = &g[0], *const g2 = &g[1];
+    uint32_t tb = 0u;
     bq_f x;
-    bq_rates(p1, lim, g1);
-    bq_rates(p2, lim, g2);
-    tb = bq_overlap(p1, p2, g1, g2, R, lim);
-    if (!bq_inside(&p1->B, R)) tb = 0u;
+    dh_blend_rates_q_(p1, lim, g1);
+    dh_blend_rates_q_(p2, lim, g2);
+    if (bq_inside(&p1->B, g1->dev)) tb = bq_overlap(p1, p2, g1, g2, g1->dev, lim);
+    /* the dev of this tb (0 for 0) before the test below, which needs
+     * neither line: fewer values live across its calls (the 256 B guard) */
+    g1->dev = bq_dev(p1, p2, tb, bq_get(g1, BQ_B1), bq_get(g2, BQ_U0));
     if (tb > 0u) {
         /* blended: T1 + T2 - tb, at rest: R1 + R2 */
         x = bq_add(bq_time(g1, BQ_ZERO, 0u), bq_time(g2, BQ_ZERO, 0u));
         x = bq_sub(bq_add(x, bq_sec(tb)), bq_time(g1, bq_get(g1, BQ_B1), tb));
-        if (!bq_lt(bq_time(g2, bq_get(g2, BQ_U0), tb), x)) tb = 0u;
+        if (!bq_lt(bq_time(g2, bq_get(g2, BQ_U0), tb), x)) {
+            tb = 0u;
+            g1->dev = 0;
+        }
     }
-    *dev = bq_dev(p1, p2, tb, bq_get(g1, BQ_B1), bq_get(g2, BQ_U0));
-    return tb;
-}
-
-/* Corner k of the sequence (dh_blend_corner_q_ on its lines, seg[k] and
- * seg[k + 1] the scratch), kept for bq_build: the overlap in
- * seg[k].dur[4] and seg[k + 1].dur[0], its dev in seg[k].dev */
-static DH_NOINLINE void bq_corner(dh_blend_seg_q *seg, const dh_path_q *p, uint32_t k, const dh_qpos *radius,
-                                  const dh_cart_limits_q *lim)
-{
-    const uint32_t tb = dh_blend_corner_q_(&p[k], &p[k + 1u], radius[k], lim, &seg[k], &seg[k + 1u], &seg[k].dev);
-    seg[k].dur[4] = tb;
-    seg[k + 1u].dur[0] = tb;
+    g1->dur[4] = tb;
+    g2->dur[0] = tb;
 }
 
 /* every corner at rest (for bq_build) */
@@ -603,7 +593,7 @@ static void bq_rest_all(dh_blend_seg_q *seg, uint32_t n)
     }
 }
 
-/* Every line's scaling with the tails of its corners as bq_corner kept
+/* Every line's scaling with the tails of its corners as dh_blend_corner_q_ kept
  * them (none at the ends: bq_rest_sum), and its start t0: the sequence's
  * duration, UINT32_MAX when a scaling does not fit or the duration
  * reaches 2^31 us (then the caller plans every corner at rest: the
@@ -612,7 +602,8 @@ static DH_NOINLINE uint32_t bq_build(dh_blend_seg_q *seg, const dh_path_q *p, ui
 {
     uint32_t k, t0 = 0u, bad = 0u;
     for (k = 0u; k < n; k++) {
-        bad |= (uint32_t)(dh_blend_line_q_(&seg[k], &p[k], lim) == 0);
+        dh_blend_rates_q_(&p[k], lim, &seg[k]);
+        bad |= (uint32_t)(dh_blend_line_q_(&seg[k]) == 0);
         seg[k].t0 = t0;
         /* t0 below 2^31 (else bad already) and a duration below 2^31: no wrap */
         t0 += seg[k].T - seg[k].dur[4];
@@ -632,12 +623,21 @@ static DH_NOINLINE uint32_t bq_rest_sum(dh_blend_seg_q *seg, const dh_path_q *p,
         seg[k].dur[0] = 0u;
         seg[k].dur[4] = 0u;
         seg[k].dev = 0;
-        if (!dh_blend_line_q_(&seg[k], &p[k], lim)) return UINT32_MAX;
+        dh_blend_rates_q_(&p[k], lim, &seg[k]);
+        if (!dh_blend_line_q_(&seg[k])) return UINT32_MAX;
         /* both below 2^31: the sum fits */
         sum += seg[k].T;
         if (sum >= (uint32_t)INT32_MAX) return UINT32_MAX;
     }
     return sum;
+}
+
+/* seg[k].dev = radius[k] for the n - 1 corners (dh_blend_corner_q_ reads
+ * a corner's radius there) */
+static DH_NOINLINE void bq_radii(dh_blend_seg_q *seg, const dh_qpos *radius, uint32_t n)
+{
+    uint32_t k;
+    for (k = 0u; k + 1u < n; k++) seg[k].dev = radius[k];
 }
 
 dh_status dh_blend_seq_plan_q(dh_blend_seq_q *sq, dh_blend_seg_q *seg, const dh_path_q *p, uint32_t n,
@@ -653,7 +653,10 @@ dh_status dh_blend_seq_plan_q(dh_blend_seq_q *sq, dh_blend_seg_q *seg, const dh_
     if (rest == UINT32_MAX) return DH_ERR_OVERFLOW;
     T = rest;
     if (n > 1u) {
-        for (k = 0u; k + 1u < n; k++) bq_corner(seg, p, k, radius, lim);
+        /* each corner's overlap into seg[k].dur[4], seg[k + 1].dur[0], its
+         * dev into seg[k].dev (its radius there on the call), for bq_build */
+        bq_radii(seg, radius, n);
+        for (k = 0u; k + 1u < n; k++) dh_blend_corner_q_(&p[k], &p[k + 1u], lim, &seg[k]);
         T = bq_build(seg, p, n, lim);
     }
     if (T >= rest) {
