@@ -1678,6 +1678,9 @@ typedef struct {
     int32_t amax[DH_MAX_JOINTS]; /**< joint move: acceleration limits (LSB/s^2) */
     uint32_t n;                  /**< joint move: number of joints */
     uint32_t kind;               /**< DH_MOVE_JOINT or DH_MOVE_PATH */
+    dh_blend_seg_q seg;          /**< blended line (dh_queue_add_path_blend_q): its scaling of s (prof then bounds it) */
+    dh_qpos radius;              /**< blended line: the radius of its corner with the next move */
+    uint32_t blend;              /**< 1 for a blended line */
 } dh_queue_item_q;
 
 /**
@@ -1704,6 +1707,10 @@ typedef struct {
     int32_t hq[DH_MAX_JOINTS];   /**< the last joint command */
     dh_move_report_q mrep;       /**< workspace: the running path move's report */
     dh_move_q mv;                /**< plan of the running move (or of the last one completed) */
+    uint32_t bl;                 /**< 1 when mv is a blended line (its s from bg, mv.prof[0] its bound) */
+    dh_blend_seg_q bg;           /**< blended line in mv: its scaling of s */
+    dh_blend_seg_q bs[2];        /**< workspace: the scalings of a corner being planned */
+    dh_profile_q bz[2];          /**< workspace: their bounds */
 } dh_queue_q;
 
 /** @brief What the caller does this period (dh_queue_target_q). */
@@ -1767,6 +1774,41 @@ dh_status dh_queue_add_joint_q(dh_queue_q *qu, uint32_t n, const int32_t *q1, co
  *         queued items are untouched.
  */
 dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim);
+
+/**
+ * @brief Appends a Cartesian LINE move along p within lim, as
+ *        dh_queue_add_path_q, whose corner with the NEXT move is blended
+ *        within radius: passed without stopping, the lines left only
+ *        inside the ball of that radius about the corner.
+ * Blended when the next move is also appended by this function, is a line
+ * with the same limits starting at p->B (the same frame, bit for bit), is
+ * appended while this one has not started, both lines move and the blend
+ * is shorter than a stop there (dh_blend_seq_plan_q's corner: tails at
+ * (63/128) of each line's acceleration, each within half its line, the
+ * overlap within radius); else the corner is at rest. Arcs are appended
+ * by dh_queue_add_path_q (their corners at rest). Each line runs a
+ * five-phase scaling of s (dh_blend_seg_q) on the queue's clock, in an
+ * overlap the superposition of the two lines (dh_blend_seq_eval_q's).
+ * Speed, TOTAL acceleration, angular speed and acceleration within lim
+ * (the plan's 2^-10 margin covers the integer rounding) with the feed
+ * override, a stop and a resume: the time warp r of the clock changes
+ * only in periods that do not reach into an overlap (docs/design.md,
+ * "Fixed-point queue", blended lines), so a stop or a lagging tracker
+ * inside an overlap slows the move from its end (the tool stays on the
+ * planned blend, within radius of the corner). Outside the overlaps the
+ * target is on its line as dh_path_eval_q's.
+ * @param qu queue from dh_queue_init_q.
+ * @param p line from dh_path_line_q (copied).
+ * @param lim Cartesian limits, each > 0 (copied).
+ * @param radius blend radius (dh_qpos), >= 0 (0: at rest).
+ * @return DH_OK; DH_ERR_LIMIT when the queue is full (checked first);
+ *         DH_ERR_ARG for radius < 0, a p that is not a line (an arc, no
+ *         path, a negative length or angle) or a limit <= 0;
+ *         DH_ERR_OVERFLOW when a phase of the line reaches 2^28 us or its
+ *         bound 2^30 us. On error qu and its queued items are untouched.
+ */
+dh_status dh_queue_add_path_blend_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                    dh_qpos radius);
 
 /**
  * @brief Begins a control period of dt = t->dt_us: the command of the

@@ -42,6 +42,24 @@ void dh_blend_rates_q_(const dh_path_q *p, const dh_cart_limits_q *lim, dh_blend
  * no scaling then). g->t0 and g->dev are not written. */
 int dh_blend_line_q_(dh_blend_seg_q *g);
 
+/* A line of the fixed queue (dh_queue_q.c): g = its scaling as
+ * dh_blend_rates_q_ and dh_blend_line_q_ make it (the tails' durations
+ * set in g->dur[0] and g->dur[4] by the caller; the same status, and 0
+ * when Z's duration below reaches 2^30 us), and Z = a trapezoid that
+ * bounds it for the queue's time warp (dh_motion_feed_bound_q_), never
+ * evaluated (d 0): v >= s' and a >= |s''| of every phase (the rates V and
+ * a times 1 + 2^-11, rounded up, in units of 2^-k of s; the held phases
+ * keep within 2^-13 of them), with t1 = dur[0] + dur[1] and
+ * t2 = t1 + dur[2]: Z's s'' is +a before t1 or later (the start tail's b
+ * and the acceleration phase), -a after t2 or earlier (the deceleration
+ * and the end tail), its duration at least t1 + t2 and where the held
+ * deceleration would reach rest (so s' <= a (u + 1 us) within Z's phase
+ * time of its ends, u the time to the nearer one, holds for the line up
+ * to its end tail). So over a window that does not reach into a tail,
+ * Z's s'' at its start bounds the line's from above where positive, at
+ * its end from below where negative: the bound's hi and lo hold. */
+int dh_blend_queue_line_q_(dh_blend_seg_q *g, const dh_path_q *p, const dh_cart_limits_q *lim, dh_profile_q *Z);
+
 /* s (Q2.30) of the scaling g at its time t (us; t >= g->T: 1), held to
  * [0, 1]; g must hold a scaling (durations summing to g->T) */
 dh_q30 dh_blend_s_q_(const dh_blend_seg_q *g, uint32_t t);

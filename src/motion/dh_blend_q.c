@@ -582,6 +582,62 @@ DH_NOINLINE void dh_blend_corner_q_(const dh_path_q *p1, const dh_path_q *p2, co
     g2->dur[0] = tb;
 }
 
+/* 1 + 2^-11 (rounded down): the margin of a queued line's rates
+ * (dh_blend_queue_line_q_) over its phases' */
+#define BQ_UP BQ_C(0x80100000u, -31)
+
+/* Z's v and a: the rates V and a of g's state times 1 + 2^-11, in units
+ * of 2^-k of s (k <= 30 the largest that keeps both below 2^31), rounded
+ * up */
+static DH_NOINLINE void bq_warp_rates(dh_blend_seg_q *g, dh_profile_q *Z)
+{
+    const bq_f v = bq_mul(bq_get(g, BQ_RV), BQ_UP), a = bq_mul(bq_get(g, BQ_RA), BQ_UP);
+    int32_t k = 30;
+    while (bq_int(v, k, 1) > (uint32_t)INT32_MAX || bq_int(a, k, 1) > (uint32_t)INT32_MAX) k--;
+    Z->v = (int32_t)bq_int(v, k, 1);
+    Z->a = (int32_t)bq_int(a, k, 1);
+}
+
+/* Z's duration: t1 + t2 (t1 = dur[0] + dur[1], t2 = t1 + dur[2]), or
+ * when longer t2 + v'/a3 + 1 us, rounded up: where the held deceleration
+ * phase (P[3] = v' dur3, -2 Q[3] = a3 dur3^2) would reach rest, so that
+ * Z's s' near its end, a (T - t) >= a3 (T - t), is not below the
+ * line's. 0 when it reaches 2^30 us. */
+static DH_NOINLINE uint32_t bq_warp_end(const dh_blend_seg_q *g)
+{
+    const uint32_t t1 = g->dur[0] + g->dur[1], t2 = t1 + g->dur[2];
+    uint32_t tz = t1 + t2;
+    if (g->Q[3] < 0 && g->P[3] > 0) {
+        const bq_f x = bq_div(bq_mul(bq_u((uint32_t)g->P[3]), bq_u(g->dur[3])), bq_u((uint32_t)(-g->Q[3]) * 2u));
+        const uint32_t e = bq_int(x, 0, 1);
+        if (e >= ((uint32_t)1 << 30)) return 0u;
+        if (t2 + e + 1u > tz) tz = t2 + e + 1u;
+    }
+    return (tz < ((uint32_t)1 << 30)) ? tz : 0u;
+}
+
+/* dh_blend_queue_line_q_ (blend_q_impl.h): Z's phase time from
+ * xa = floor(ta 2^30 / T_Z) + 1, ta = T_Z - t2 (the bound computes
+ * floor(xa T_Z / 2^30), in [ta, ta + 1] as T_Z < 2^30: its -a from at
+ * most t2 on, its +a until at least T_Z - t2 >= t1) */
+DH_NOINLINE int dh_blend_queue_line_q_(dh_blend_seg_q *g, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                       dh_profile_q *Z)
+{
+    uint32_t tz;
+    int ok;
+    dh_blend_rates_q_(p, lim, g);
+    bq_warp_rates(g, Z);
+    ok = dh_blend_line_q_(g);
+    tz = bq_warp_end(g);
+    Z->d = 0;
+    Z->T = tz;
+    Z->xj = 0;
+    Z->xa = (tz > 0u) ? (dh_q30)(dh_q_ufloor30(tz - (g->dur[0] + g->dur[1] + g->dur[2]), tz) + 1u) : 0;
+    Z->j = 0;
+    Z->kind = (uint32_t)DH_PROFILE_TRAP;
+    return ok & (int)((tz > 0u) || (g->T == 0u));
+}
+
 /* every corner at rest (for bq_build) */
 static void bq_rest_all(dh_blend_seg_q *seg, uint32_t n)
 {

@@ -36,6 +36,7 @@
 #include "dhmath/motion.h"
 #include "../internal/dh_build.h"
 #include "motion_impl.h"
+#include "blend_q_impl.h"
 
 /* the longest control period (us) */
 #define QUEUEQ_DT_MAX 1000000u
@@ -62,10 +63,16 @@ static uint32_t queueq_per(uint32_t x, uint32_t dt)
     return (uint32_t)q;
 }
 
-/* the free item, or NULL when the queue is full */
+/* the free item (not a blended line until its function says so), or
+ * NULL when the queue is full */
 static dh_queue_item_q *queueq_free(dh_queue_q *qu)
 {
-    return (qu->count < qu->cap) ? &qu->items[queueq_index(qu, qu->count)] : NULL;
+    dh_queue_item_q *it = NULL;
+    if (qu->count < qu->cap) {
+        it = &qu->items[queueq_index(qu, qu->count)];
+        it->blend = 0u;
+    }
+    return it;
 }
 
 dh_status dh_queue_init_q(dh_queue_q *qu, dh_queue_item_q *items, uint32_t cap)
@@ -121,6 +128,96 @@ dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_
     return DH_OK;
 }
 
+/* the checks of dh_queue_add_path_blend_q's line and limits, in the
+ * order of its statuses */
+static dh_status queueq_line_ok(const dh_path_q *p, const dh_cart_limits_q *lim)
+{
+    if (lim->vmax <= 0 || lim->amax <= 0 || lim->wmax <= 0 || lim->wdmax <= 0) return DH_ERR_ARG;
+    if (!dh_motion_path_ok_q_(p) || p->length < 0 || p->angle < 0) return DH_ERR_ARG;
+    return DH_OK;
+}
+
+/* The queued move before the free item when the line p (within lim) can
+ * blend with it: a blended line with a radius, not started, with the same
+ * limits, ending where p starts; NULL when not. Its radius then in
+ * qu->bs[0].dev (dh_blend_corner_q_ reads it there). */
+static DH_NOINLINE dh_queue_item_q *queueq_blend_prev(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim)
+{
+    dh_queue_item_q *pv;
+    if (qu->count == 0u || (qu->count == 1u && qu->started != 0u)) return NULL;
+    pv = &qu->items[queueq_index(qu, qu->count - 1u)];
+    if (pv->kind != (uint32_t)DH_MOVE_PATH || pv->blend == 0u || pv->radius <= 0) return NULL;
+    if (memcmp(&pv->lim, lim, sizeof *lim) != 0 || memcmp(&pv->path.B, &p->A, sizeof p->A) != 0) return NULL;
+    qu->bs[0].dev = pv->radius;
+    return pv;
+}
+
+/* 1 when the corner of dh_blend_corner_q_ (in qu->bs) has an overlap:
+ * then qu->bs hold the tails' durations of the two lines' scalings with
+ * it (pv's start tail as planned, it's end tail at rest) */
+static int queueq_blend_tails(dh_queue_q *qu, const dh_queue_item_q *pv)
+{
+    qu->bs[0].dur[0] = pv->seg.dur[0];
+    qu->bs[1].dur[4] = 0u;
+    return qu->bs[0].dur[4] > 0u;
+}
+
+/* the scalings with the corner (qu->bs, qu->bz) into the items pv and it
+ * (pv's dev the corner's, in bs[0].dev) */
+static DH_NOINLINE void queueq_blend_keep(dh_queue_q *qu, dh_queue_item_q *pv, dh_queue_item_q *it)
+{
+    pv->seg = qu->bs[0];
+    pv->prof = qu->bz[0];
+    it->seg = qu->bs[1];
+    it->seg.dev = 0;
+    it->prof = qu->bz[1];
+}
+
+/* the free item it = the line p within lim and radius, its scaling to be
+ * planned at rest at both ends (the corner before it after) */
+static DH_NOINLINE void queueq_blend_item(dh_queue_item_q *it, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                          dh_qpos radius)
+{
+    it->path = *p;
+    it->lim = *lim;
+    it->seg.dur[0] = 0u;
+    it->seg.dur[4] = 0u;
+    it->seg.t0 = 0u;
+    it->seg.dev = 0;
+    it->radius = radius;
+    it->e = 0u;
+    it->n = 0u;
+}
+
+dh_status dh_queue_add_path_blend_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                    dh_qpos radius)
+{
+    dh_queue_item_q *it, *pv;
+    dh_status st;
+    DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
+    it = queueq_free(qu);
+    if (it == NULL) return DH_ERR_LIMIT;
+    if (radius < 0 || p->kind != (uint32_t)DH_PATH_LINE) return DH_ERR_ARG;
+    st = queueq_line_ok(p, lim);
+    if (st != DH_OK) return st;
+    queueq_blend_item(it, p, lim, radius);
+    if (dh_blend_queue_line_q_(&it->seg, &it->path, &it->lim, &it->prof) == 0) return DH_ERR_OVERFLOW;
+    /* the corner with the move before, planned from this frame (the 256 B
+     * guard): kept when both lines' scalings with it fit */
+    pv = queueq_blend_prev(qu, &it->path, &it->lim);
+    if (pv != NULL) {
+        dh_blend_corner_q_(&pv->path, &it->path, &it->lim, qu->bs);
+        if (queueq_blend_tails(qu, pv) != 0 &&
+            (dh_blend_queue_line_q_(&qu->bs[0], &pv->path, &pv->lim, &qu->bz[0]) &
+             dh_blend_queue_line_q_(&qu->bs[1], &it->path, &it->lim, &qu->bz[1])) != 0)
+            queueq_blend_keep(qu, pv, it);
+    }
+    it->kind = (uint32_t)DH_MOVE_PATH;
+    it->blend = 1u;
+    qu->count++;
+    return DH_OK;
+}
+
 /* the running move's clock and warp at its start (dh_move_q.c's rule) */
 static void queueq_clock0(dh_queue_q *qu, uint32_t dur)
 {
@@ -139,7 +236,13 @@ static DH_NOINLINE void queueq_start_path(dh_queue_q *qu, const dh_queue_item_q 
     mv->path = it->path;
     mv->n = 0u;
     mv->kind = (uint32_t)DH_MOVE_PATH;
-    queueq_clock0(qu, it->prof.T);
+    qu->bl = it->blend;
+    if (it->blend != 0u) {
+        qu->bg = it->seg;
+        queueq_clock0(qu, it->seg.T);
+    } else {
+        queueq_clock0(qu, it->prof.T);
+    }
 }
 
 /* where the head joint move it starts: the last joint command, or after a
@@ -266,6 +369,26 @@ static DH_NOINLINE int32_t queueq_s(dh_move_q *mv)
     return (int32_t)s;
 }
 
+/* 1 when the blended line in mv runs in its end tail (clock c beyond
+ * T - tb): with the next line, queued (the corner was planned with it) */
+static int queueq_overlap(const dh_queue_q *qu)
+{
+    const dh_blend_seg_q *g = &qu->bg;
+    return g->dur[4] > 0u && qu->mv.clock > g->T - g->dur[4] && qu->count >= 2u;
+}
+
+/* The frame of the blended line in mv in its overlap with the next line
+ * (whose clock is c - (T - tb)): the superposition */
+static DH_NOINLINE dh_status queueq_blend_frame(const dh_queue_q *qu, dh_frame_q *T)
+{
+    const dh_blend_seg_q *g = &qu->bg;
+    const dh_queue_item_q *nx = &qu->items[queueq_index(qu, 1u)];
+    const dh_q30 s1 = dh_blend_s_q_(g, qu->mv.clock);
+    const dh_q30 s2 = dh_blend_s_q_(&nx->seg, qu->mv.clock - (g->T - g->dur[4]));
+    dh_blend_rot_q_(&qu->mv.path, &nx->path, s1, s2, T);
+    return (dh_blend_pos_q_(&qu->mv.path, &nx->path, s1, s2, T) != 0) ? DH_ERR_OVERFLOW : DH_OK;
+}
+
 dh_status dh_queue_target_q(dh_queue_q *qu, const dh_track_q *t, dh_queue_cmd_q *cmd)
 {
     dh_status st;
@@ -290,9 +413,14 @@ dh_status dh_queue_target_q(dh_queue_q *qu, const dh_track_q *t, dh_queue_cmd_q 
     }
     kind = (qu->started != 0u) ? qu->mv.kind : qu->hold;
     if (kind == (uint32_t)DH_MOVE_PATH) {
-        const int32_t s = queueq_s(&qu->mv);
-        if (s < 0) return DH_ERR_ARG;
-        st = dh_path_eval_q(&qu->mv.path, s, &cmd->T);
+        if (qu->bl != 0u && queueq_overlap(qu)) {
+            st = queueq_blend_frame(qu, &cmd->T);
+        } else {
+            /* a blended line alone at its s (its last frame once done) */
+            const int32_t s = (qu->bl != 0u) ? dh_blend_s_q_(&qu->bg, qu->mv.clock) : queueq_s(&qu->mv);
+            if (s < 0) return DH_ERR_ARG;
+            st = dh_path_eval_q(&qu->mv.path, s, &cmd->T);
+        }
         if (st != DH_OK) return st;
         cmd->sync = qu->sync;
         if (qu->sync != 0u) (void)memcpy(cmd->q, qu->hq, sizeof cmd->q);
@@ -335,6 +463,61 @@ static int queueq_still(const dh_queue_q *qu, uint32_t c0)
     return qu->r == 0;
 }
 
+/* 1 when this period of the blended line in mv reaches into one of its
+ * tails (an overlap): the window [c0 - r dt - 2, c0 + dt + 2] of the
+ * bound (dh_motion_feed_bound_q_) meets [0, dur0) or (T - dur4, T] of a
+ * tail that is not 0; r then holds. Not at the line's end (c0 >= T):
+ * its tracker decides there, as for any path move. */
+static int queueq_blend_hold(const dh_queue_q *qu, uint32_t c0)
+{
+    const dh_blend_seg_q *g = &qu->bg;
+    const int64_t back = (int64_t)(((uint64_t)(uint32_t)qu->mv.feed * qu->dt) >> 30);
+    if (c0 >= g->T) return 0;
+    if (g->dur[0] > 0u && (int64_t)c0 - back - 2 < (int64_t)g->dur[0]) return 1;
+    return g->dur[4] > 0u && (int64_t)c0 + qu->dt + 2 > (int64_t)g->T - g->dur[4];
+}
+
+/* One held period of the blended line in mv: its clock advanced by r dt
+ * (the fraction carried), capped at T when it ends at rest; 1 when it
+ * passed T with an end tail: the hand-over (queueq_handover) */
+static int queueq_blend_tick(dh_queue_q *qu)
+{
+    dh_move_q *const mv = &qu->mv;
+    const uint64_t adv = (uint64_t)(uint32_t)mv->feed * qu->dt + mv->cfrac;
+    const uint64_t c = (uint64_t)mv->clock + (adv >> 30);
+    mv->cfrac = (uint32_t)(adv & 0x3FFFFFFFu);
+    if (c >= mv->dur && qu->bg.dur[4] > 0u) {
+        mv->clock = (uint32_t)c;
+        return 1;
+    }
+    if (c >= mv->dur) {
+        mv->clock = mv->dur;
+        mv->cfrac = 0u;
+    } else {
+        mv->clock = (uint32_t)c;
+    }
+    return 0;
+}
+
+/* The blended line in mv passed its end in the overlap: removed from the
+ * queue (seq + 1) and the next line runs on from its clock
+ * c - (T - tb) = c - T + tb, with the same warp, ceiling and fraction */
+static DH_NOINLINE void queueq_handover(dh_queue_q *qu)
+{
+    dh_move_q *const mv = &qu->mv;
+    const dh_queue_item_q *nx;
+    const uint32_t c = mv->clock - qu->bg.T + qu->bg.dur[4];
+    qu->head = queueq_index(qu, 1u);
+    qu->count--;
+    qu->seq++;
+    nx = &qu->items[qu->head];
+    qu->bg = nx->seg;
+    mv->prof[0] = nx->prof;
+    mv->path = nx->path;
+    mv->dur = nx->seg.T;
+    mv->clock = (c < mv->dur) ? c : mv->dur;
+}
+
 /* the running move completed: removed from the queue, its end held */
 static void queueq_done(dh_queue_q *qu)
 {
@@ -351,13 +534,18 @@ dh_status dh_queue_advance_q(dh_queue_q *qu, dh_track_state state, dh_queue_repo
     dh_move_q *mv;
     uint32_t c0;
     dh_q30 feed = DH_Q30_ONE;
-    int done = 0, held = 1;
+    int done = 0, held = 1, over = 0;
     DH_ASSERT(qu != NULL && rep != NULL);
     if (qu->pend == 0u) return DH_ERR_ARG;
     if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
     mv = &qu->mv;
     c0 = mv->clock;
-    if (qu->started != 0u && mv->kind == (uint32_t)DH_MOVE_PATH) {
+    if (qu->started != 0u && mv->kind == (uint32_t)DH_MOVE_PATH && qu->bl != 0u && queueq_blend_hold(qu, c0)) {
+        /* in an overlap: r holds (stopped: the clock too) */
+        if (qu->phase != (uint32_t)DH_QUEUE_STOPPED) over = queueq_blend_tick(qu);
+        held = state != DH_TRACK_OK || qu->phase == (uint32_t)DH_QUEUE_STOPPED;
+        feed = mv->feed;
+    } else if (qu->started != 0u && mv->kind == (uint32_t)DH_MOVE_PATH) {
         if (qu->phase != (uint32_t)DH_QUEUE_STOPPED) {
             /* braking: the feed override falls as if the tracker lagged,
              * but at the end (s' = 0) the tracker's state decides done */
@@ -379,11 +567,12 @@ dh_status dh_queue_advance_q(dh_queue_q *qu, dh_track_state state, dh_queue_repo
     rep->feed = feed;
     rep->seq = qu->seq;
     rep->clock = (qu->started != 0u) ? mv->clock : 0u;
+    if (over != 0) queueq_handover(qu);
     if (done != 0) queueq_done(qu);
-    if (done == 0 && qu->phase == (uint32_t)DH_QUEUE_BRAKE && qu->started != 0u && queueq_still(qu, c0))
+    if ((done | over) == 0 && qu->phase == (uint32_t)DH_QUEUE_BRAKE && qu->started != 0u && queueq_still(qu, c0))
         qu->phase = (uint32_t)DH_QUEUE_STOPPED;
     rep->held = held;
-    rep->done = done;
+    rep->done = done | over;
     rep->last = qu->count == 0u;
     rep->stopped = qu->phase == (uint32_t)DH_QUEUE_STOPPED;
     return DH_OK;
