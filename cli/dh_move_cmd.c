@@ -623,7 +623,8 @@ static int plan_path_q(move_plan *p, unsigned i, const move_seg *s, const dh_fra
 
 /* segment i (fixed, a joint move or a line or arc) appended to the fixed
  * queue qu, from F (updated to its end: B, or the FK of a joint move's
- * end) */
+ * end); with --blend a line as a blended line (its corner with the next
+ * line blended within the radius) */
 static int queue_add_q(move_plan *p, unsigned i, const move_seg *s, dh_queue_q *qu, const dh_cart_limits_q *lim,
                        dh_frame_q *F)
 {
@@ -647,19 +648,28 @@ static int queue_add_q(move_plan *p, unsigned i, const move_seg *s, dh_queue_q *
         return 0;
     }
     if ((rc = plan_path_q(p, i, s, F, &path, &B)) != 0) return rc;
-    st = dh_queue_add_path_q(qu, &path, lim);
+    if (s->kind == SEG_LINE && p->blend >= 0.0f) {
+        const double R = floor((double)p->blend * (double)((int32_t)1 << DH_QPOS_FRAC) + 0.5);
+        if (!(R < 2147483647.0)) return cli_error("--blend", "the radius does not fit the fixed-point length format");
+        st = dh_queue_add_path_blend_q(qu, &path, lim, (dh_qpos)R);
+    } else {
+        st = dh_queue_add_path_q(qu, &path, lim);
+    }
     if (st != DH_OK) return seg_error(i, s, "the fixed-point move along the path cannot be planned", path_why(st));
     *F = B;
     return 0;
 }
 
-/* Segments i0 .. i1 - 1 (fixed; joint moves, and lines and arcs not
- * blended) run by the fixed queue (dh_queue_q), appended as it drains:
- * joint commands go to the robot as they are, path frames through the
- * tracker t (started again at the last joint command when the queue says
- * so), whose lagging periods slow the move down (its feed override). F is
- * where the first starts (updated to the last end); t and q end at the
- * last move's end, the tracker started there after a joint move. */
+/* Segments i0 .. i1 - 1 (fixed; joint moves, lines and arcs, with
+ * --blend the corners between lines blended) run by the fixed queue
+ * (dh_queue_q), appended as it drains (MOVE_QUEUE_CAP >= 3: a line's
+ * corner with the next is planned when the next is appended, before the
+ * line starts): joint commands go to the robot as they are, path frames
+ * through the tracker t (started again at the last joint command when the
+ * queue says so), whose lagging periods slow the move down (its feed
+ * override). F is where the first starts (updated to the last end); t and
+ * q end at the last move's end, the tracker started there after a joint
+ * move. */
 static int run_queue_q(move_plan *p, const move_args *a, unsigned i0, unsigned i1, dh_frame_q *F,
                        const dh_cart_limits_q *lim, dh_track_q *t, const dh_ikc_model_q *mp, int32_t *q)
 {
@@ -706,54 +716,7 @@ static int run_queue_q(move_plan *p, const move_args *a, unsigned i0, unsigned i
     return 0;
 }
 
-/* Line segments i0 .. i1 - 1 (fixed) from F (updated to the last end) as
- * one sequence blended within --blend at every corner
- * (dh_blend_seq_plan_q), tracked from the tracker's configuration: the
- * clock holds at 0 until the tracker is ok at the first line's start,
- * then advances by dt every period (the sequence has no feed override: a
- * lagging tracker is reported, not slowed down), and the run ends when
- * the tracker is ok at the last line's end. */
-static int run_blend_q(move_plan *p, const move_args *a, unsigned i0, unsigned i1, dh_frame_q *F,
-                       const dh_cart_limits_q *lim, dh_track_q *t, int32_t *q)
-{
-    static dh_path_q lines[MOVE_MAX_SEG];
-    static dh_blend_seg_q seg[MOVE_MAX_SEG];
-    static dh_qpos radius[MOVE_MAX_SEG];
-    const double R = floor((double)p->blend * (double)((int32_t)1 << DH_QPOS_FRAC) + 0.5);
-    dh_blend_seq_q sq;
-    dh_track_report_q trep;
-    dh_frame_q T, B;
-    double cap, k = 0.0;
-    uint32_t clock = 0u;
-    unsigned i;
-    int rc, started = 0;
-    dh_status st;
-    if (!(R < 2147483647.0)) return cli_error("--blend", "the radius does not fit the fixed-point length format");
-    for (i = i0; i < i1; i++) {
-        if ((rc = plan_path_q(p, i, &a->seg[i], F, &lines[i - i0], &B)) != 0) return rc;
-        radius[i - i0] = (dh_qpos)R;
-        *F = B;
-    }
-    st = dh_blend_seq_plan_q(&sq, seg, lines, i1 - i0, radius, lim);
-    if (st != DH_OK) return seg_error(i0, &a->seg[i0], "the blended fixed-point lines cannot be planned", path_why(st));
-    cap = move_cap(p, (float)(sq.T * 1e-6));
-    for (;;) {
-        if (k >= cap) return cap_reached(i0, &a->seg[i0], cap);
-        k += 1.0;
-        if ((st = dh_blend_seq_eval_q(&sq, clock, &T)) == DH_OK) st = dh_track_step_q(t, &T, q, &trep);
-        if (st != DH_OK) return seg_error(i0, &a->seg[i0], "a control period failed", dh_status_str(st));
-        if ((rc = move_line_q(p, q, (int)trep.state)) != 0) return rc;
-        if (trep.state == DH_TRACK_OK) {
-            if (clock >= sq.T) break;
-            started = 1;
-        }
-        if (started) clock = (sq.T - clock > t->dt_us) ? clock + t->dt_us : sq.T;
-    }
-    return 0;
-}
-
-/* move --fixed: every segment through the fixed queue and tracker, runs
- * of lines with --blend through the fixed blended sequence */
+/* move --fixed: every segment through the fixed queue and tracker */
 static int move_run_fixed(const move_args *a, move_plan *p)
 {
     static dh_ikc_model_q m;
@@ -763,7 +726,7 @@ static int move_run_fixed(const move_args *a, move_plan *p)
     dh_cart_limits_q lim;
     dh_frame_q F;
     uint32_t us = 0u;
-    unsigned i, e;
+    unsigned i;
     int rc;
     dh_status st;
     if ((rc = move_fixed_setup(a, p, &us, q, &lim, &m, &mp)) != 0) return rc;
@@ -777,18 +740,7 @@ static int move_run_fixed(const move_args *a, move_plan *p)
     st = dh_track_init_q(&t, &p->r, mp, q, us);
     if (st == DH_ERR_LIMIT) return cli_error("--q0", "a joint value is outside its limits");
     if (st != DH_OK) return cli_error("move --fixed: the tracker", dh_status_str(st));
-    for (i = 0; i < a->nseg; i = e) {
-        e = i + 1u;
-        if (a->seg[i].kind == SEG_LINE && p->blend >= 0.0f) {
-            /* with --blend: this line and the lines right after it, blended */
-            while (e < a->nseg && a->seg[e].kind == SEG_LINE) e++;
-            if ((rc = run_blend_q(p, a, i, e, &F, &lim, &t, q)) != 0) return rc;
-            continue;
-        }
-        while (e < a->nseg && !(a->seg[e].kind == SEG_LINE && p->blend >= 0.0f)) e++;
-        if ((rc = run_queue_q(p, a, i, e, &F, &lim, &t, mp, q)) != 0) return rc;
-    }
-    return 0;
+    return run_queue_q(p, a, 0u, a->nseg, &F, &lim, &t, mp, q);
 }
 
 int cli_cmd_move(int argc, char **argv)

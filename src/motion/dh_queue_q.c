@@ -474,7 +474,7 @@ static int queueq_blend_hold(const dh_queue_q *qu, uint32_t c0)
     const int64_t back = (int64_t)(((uint64_t)(uint32_t)qu->mv.feed * qu->dt) >> 30);
     if (c0 >= g->T) return 0;
     if (g->dur[0] > 0u && (int64_t)c0 - back - 2 < (int64_t)g->dur[0]) return 1;
-    return g->dur[4] > 0u && (int64_t)c0 + qu->dt + 2 > (int64_t)g->T - g->dur[4];
+    return g->dur[4] > 0u && (int64_t)c0 + (int64_t)qu->dt + 2 > (int64_t)g->T - (int64_t)g->dur[4];
 }
 
 /* One held period of the blended line in mv: its clock advanced by r dt

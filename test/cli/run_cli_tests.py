@@ -2094,6 +2094,70 @@ def group_move_fixed(seed, tmp):
     check(rc == 2 and out == '' and 'whole number of microseconds' in err, 'move --fixed --dt: rc %d %r' % (rc, err))
     move_fixed_blend(rob, n, path, qa, A, p0)
     move_fixed_lagging(tmp)
+    move_fixed_blend_lagging(tmp)
+
+
+def move_fixed_blend_lagging(tmp):
+    """move --fixed --blend through the fixed queue: the Puma 560 (mm)
+    line of move_fixed_lagging blended within 20 mm into a line 150 mm
+    down, then a joint move back: lagging periods reported (exit 3), the
+    move completed, every joint step and change of step within the fixed
+    bounds (finite differences of the printed values), the joint move's end
+    exact, the tool (double FK of the printed joints, within the fixed
+    tracker's 5e-3 mm of its target at ok periods) within 5e-3 mm of the
+    lines or within R + 5e-3 mm of their corner, and the run shorter than
+    with the corner at rest (the wrist lags near the corner, so the blend
+    itself passes in lagging periods)."""
+    puma = os.path.join(ROOT, 'examples', 'robots', 'puma560_mm.dh')
+    path = move_robot(tmp, 'puma560_mm_rates.dh', puma, 150.0, 600.0)
+    rob = read_robot(open(path).read())
+    pq, dt, R = [10.0, -30.0, 45.0, 20.0, 35.0, -60.0], 0.002, 20.0
+    args = ['move', path, '--q0', ','.join(map(str, pq)), '--dt', str(dt), '--speed', '300', '--accel', '1500',
+            '--rspeed', '90', '--raccel', '360', '--line', 'trans(500,-30,1000)', '--line', 'trans(500,-30,850)',
+            '--joint', ','.join(map(str, pq)), '--fixed']
+    rc0, out0, err0 = run(args)
+    rc, out, err = run(args + ['--blend', str(R)])
+    head0, rows0 = read_csv(out0, 6)
+    head, rows = read_csv(out, 6)
+    check(rc == 3 and 'completed with' in err and rows and None not in rows,
+          'move --fixed --blend puma lagging: rc %d %r' % (rc, err))
+    if not rows or None in rows:
+        return
+    lag = sum(1 for r in rows if r[2] == 'lagging')
+    check(lag > 0 and rows[-1][2] == 'ok', 'move --fixed --blend puma lagging: %d of %d periods lagging' %
+          (lag, len(rows)))
+    us = round(dt * 1e6)
+    vb = math.floor(150.0 * 65536 * us / 1e6) / 65536.0
+    ab = math.floor(math.floor(600.0 * 65536 * us / 1e6) * us / 1e6) / 65536.0
+    check_joint_limits('move --fixed --blend puma lagging', pq, rows, [vb / dt] * 6, [ab / (dt * dt)] * 6, dt,
+                       [4 * f32_ulp(360.0)] * 6)
+    check(rows[-1][1] == [f32(math.floor(q * 65536 + 0.5) / 65536.0) for q in pq],
+          'move --fixed --blend puma lagging: last line %r, not %r' % (rows[-1][1], pq))
+    A = ref_fk(rob, pq)
+    ends = [[A[i][3] for i in range(3)], [500.0, -30.0, 1000.0], [500.0, -30.0, 850.0]]
+
+    def seg_dist(p, a, b):
+        d = [b[i] - a[i] for i in range(3)]
+        u = max(0.0, min(1.0, sum((p[i] - a[i]) * d[i] for i in range(3)) / sum(x * x for x in d)))
+        return math.sqrt(sum((p[i] - a[i] - u * d[i]) ** 2 for i in range(3)))
+    worst, off, nline = 0.0, 0.0, 0
+    for r in rows:
+        F = ref_fk(rob, r[1])
+        p = [F[i][3] for i in range(3)]
+        if math.sqrt(sum((p[i] - ends[2][i]) ** 2 for i in range(3))) <= 5e-3:
+            break    # the second line's end: the joint move back follows
+        if r[2] != 'ok':
+            continue
+        ds = min(seg_dist(p, ends[0], ends[1]), seg_dist(p, ends[1], ends[2]))
+        nline += 1
+        off = max(off, ds)
+        if ds > 5e-3:
+            worst = max(worst, math.sqrt(sum((p[i] - ends[1][i]) ** 2 for i in range(3))))
+    check(nline > 0 and worst <= R + 5e-3 and rc0 == 3 and len(rows) < len(rows0),
+          'move --fixed --blend puma lagging: off the lines %.3g, %.6g from the corner (radius %g), %d periods (at '
+          'rest %d)' % (off, worst, R, len(rows), len(rows0)))
+    print('move --fixed --blend puma lagging: %d periods (at rest at the corner %d), %d lagging, ok periods off the '
+          'lines %.4g mm, within %.6g mm of the corner there (radius %g)' % (len(rows), len(rows0), lag, off, worst, R))
 
 
 def move_fixed_lagging(tmp):
