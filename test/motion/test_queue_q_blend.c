@@ -213,14 +213,15 @@ static void run_chain(const dhsm_rig *g, const chain *ch, int stop, long rest, r
             const dh_qpos dev = qu->bg.dev;
             const double d = dhsm_dist3(pt, ch->ref[line].pb);
             const double tol = (3.0 + 64.0 * (ch->p[line].length + ch->p[line + 1u].length) / DHSM_Q30) / QPOS;
-            DHT_TRUE_MSG(dev <= ch->R[line], "%s: corner %u dev %d > radius %d", what, line, dev, ch->R[line]);
-            DHT_TRUE_MSG(d <= dev / QPOS + tol, "%s period %ld: %.4g mm from corner %u (dev %.4g)", what, i, d, line,
-                         dev / QPOS);
+            DHT_TRUE_MSG(dev <= ch->R[line], "%s: corner %u dev %ld > radius %ld", what, (unsigned)line, (long)dev,
+                         (long)ch->R[line]);
+            DHT_TRUE_MSG(d <= dev / QPOS + tol, "%s period %ld: %.4g mm from corner %u (dev %.4g)", what, i, d,
+                         (unsigned)line, dev / QPOS);
             dht_reach_max("queue_q_blend.corner_frac", d / (dev / QPOS + tol));
             rs->inside++;
         } else {
             const double d = dhsm_ref_dist(&ch->ref[line], pt);
-            DHT_TRUE_MSG(d <= PATH_TOL, "%s period %ld: target %.3g mm off line %u", what, i, d, line);
+            DHT_TRUE_MSG(d <= PATH_TOL, "%s period %ld: target %.3g mm off line %u", what, i, d, (unsigned)line);
         }
         if (tr.state == DH_TRACK_OK) {
             const double tol = t->pos_tol / QPOS + 4.0 * NJ / QPOS + 1e-6;
@@ -280,7 +281,8 @@ static void run_chain(const dhsm_rig *g, const chain *ch, int stop, long rest, r
         }
     }
     rs->periods = i;
-    DHT_TRUE_MSG(qu->count == 0u && done == ch->n, "%s: %u of %u lines done in %ld periods", what, done, ch->n, i);
+    DHT_TRUE_MSG(qu->count == 0u && done == ch->n, "%s: %u of %u lines done in %ld periods", what, (unsigned)done,
+                 (unsigned)ch->n, i);
 }
 
 static const dhs_robot *const robots[] = { &dhs_ur5_mm, &dhs_puma560_mm };
