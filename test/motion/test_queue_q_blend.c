@@ -55,14 +55,15 @@
 #define PATH_TOL (5e-3 * ldexp(1.0, 16 - DH_QPOS_FRAC))
 #define REL_FD 1e-3
 #define NOISE_FRAC 2.5e-4
-#define NL 4u      /* lines of a chain at most (the queue's items: the micro:bit's RAM) */
+#define NL 3u      /* lines of a chain at most (the queue's items: the micro:bit's RAM) */
 #define DEC 4      /* one position kept every DEC periods */
-#define RING 48    /* positions kept, in DEC periods: the longest window (2 w) plus one */
+#define RING 42    /* positions kept, in DEC periods: the longest window (2 w) plus one */
 #define NJ 6u
 
+/* one tracker, one queue (the M0 target has 16 KB of RAM: the queue's
+ * items live on the cases' stacks) */
 static dh_track_q the_trk;
 static dh_queue_q the_qu;
-static dh_queue_item_q the_items[NL];
 static int32_t pring[RING][3];   /* targets, one every DEC periods */
 static int32_t jring[RING][NJ];  /* tracked joints, one every DEC periods */
 
@@ -294,6 +295,7 @@ static void blend_queues_q(void)
     for (ri = 0; ri < sizeof robots / sizeof robots[0]; ri++) {
         dhsm_rig rig;
         chain ch;
+        dh_queue_item_q items[NL];
         dhsm_rig *const g = &rig;
         long it, n = DHT_ITER(6), periods = 0, blended = 0, inside = 0, stops = 0;
         dhsm_rig_make(g, robots[ri], 180.0, 720.0);
@@ -308,7 +310,7 @@ static void blend_queues_q(void)
             dhs_q_from_double(&g->r, qa, ia);
             chain_make(g, ia, 2u + dht_rand_u32() % (NL - 1u), it == 0, &ch);
             DHT_EQ_INT(dh_track_init_q(&the_trk, &g->r, &g->m, ia, DT_US), DH_OK);
-            DHT_EQ_INT(dh_queue_init_q(&the_qu, the_items, NL), DH_OK);
+            DHT_EQ_INT(dh_queue_init_q(&the_qu, items, NL), DH_OK);
             for (k = 0; k < ch.n; k++) DHT_EQ_INT(dh_queue_add_path_blend_q(&the_qu, &ch.p[k], ch.lim, ch.R[k]), DH_OK);
             run_chain(g, &ch, stop, rest, &rs, g->d->name);
             periods += rs.periods;
@@ -331,6 +333,7 @@ static void lagging_blend_q(void)
     static const double QP[6] = { 10.0, -30.0, 45.0, 20.0, 35.0, -60.0 };
     dhsm_rig rig;
     chain ch;
+    dh_queue_item_q items[2];
     dhsm_rig *const g = &rig;
     double qa[DH_MAX_JOINTS];
     int32_t ia[NJ];
@@ -356,9 +359,9 @@ static void lagging_blend_q(void)
     ch.R[0] = (dh_qpos)(20.0 * LS * QPOS);
     ch.R[1] = 0;
     DHT_EQ_INT(dh_track_init_q(&the_trk, &g->r, &g->m, ia, DT_US), DH_OK);
-    DHT_EQ_INT(dh_queue_init_q(&the_qu, the_items, NL), DH_OK);
+    DHT_EQ_INT(dh_queue_init_q(&the_qu, items, 2u), DH_OK);
     for (k = 0; k < 2; k++) DHT_EQ_INT(dh_queue_add_path_blend_q(&the_qu, &ch.p[k], ch.lim, ch.R[k]), DH_OK);
-    DHT_TRUE(the_items[0].seg.dur[4] > 0u);
+    DHT_TRUE(items[0].seg.dur[4] > 0u);
     run_chain(g, &ch, 0, 0, &rs, "Puma lagging blend");
     DHT_TRUE_MSG(rs.notok > 0, "the Puma blend: no lagging period");
     DHT_TRUE(rs.minfeed < DH_Q30_ONE && rs.blended == 1);
@@ -370,6 +373,7 @@ static void lagging_blend_q(void)
 static void blend_q_errors(void)
 {
     dh_queue_q *const qu = &the_qu;
+    dh_queue_item_q the_items[4];
     dh_frame_q A, B, C;
     dh_path_q p[3], arc;
     dh_cart_limits_q lim = LIM;
@@ -407,7 +411,7 @@ static void blend_q_errors(void)
     DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[1], &LIM, R), DH_ERR_LIMIT);
     DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[1], &LIM, -1), DH_ERR_LIMIT);
     /* a phase of 2^28 us or more (a line of 100 mm at 1 LSB/s) */
-    DHT_EQ_INT(dh_queue_init_q(qu, the_items, NL), DH_OK);
+    DHT_EQ_INT(dh_queue_init_q(qu, the_items, 4u), DH_OK);
     lim.vmax = 1;
     DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[0], &lim, R), DH_ERR_OVERFLOW);
     DHT_EQ_INT(qu->count, 0u);
@@ -423,7 +427,7 @@ static void blend_q_errors(void)
     lim.vmax = LIM.vmax / 2;
     DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[2], &lim, R), DH_OK);
     DHT_EQ_INT(the_items[1].seg.dur[4], 0u);
-    DHT_EQ_INT(dh_queue_init_q(qu, the_items, NL), DH_OK);
+    DHT_EQ_INT(dh_queue_init_q(qu, the_items, 4u), DH_OK);
     DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[0], &LIM, 0), DH_OK);
     DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[1], &LIM, R), DH_OK);
     DHT_EQ_INT(the_items[0].seg.dur[4], 0u);
@@ -432,7 +436,7 @@ static void blend_q_errors(void)
     DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[1], &LIM, R), DH_OK);
     DHT_EQ_INT(the_items[3].seg.dur[0], 0u);
     /* not starting at the last one's end: at rest */
-    DHT_EQ_INT(dh_queue_init_q(qu, the_items, NL), DH_OK);
+    DHT_EQ_INT(dh_queue_init_q(qu, the_items, 4u), DH_OK);
     DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[0], &LIM, R), DH_OK);
     DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[2], &LIM, R), DH_OK);
     DHT_EQ_INT(the_items[0].seg.dur[4], 0u);
