@@ -1785,18 +1785,16 @@ dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_
  * appended while this one has not started, both lines move and the blend
  * is shorter than a stop there (dh_blend_seq_plan_q's corner: tails at
  * (63/128) of each line's acceleration, each within half its line, the
- * overlap within radius); else the corner is at rest. Arcs are appended
- * by dh_queue_add_path_q (their corners at rest). Each line runs a
- * five-phase scaling of s (dh_blend_seg_q) on the queue's clock, in an
- * overlap the superposition of the two lines (dh_blend_seq_eval_q's).
- * Speed, TOTAL acceleration, angular speed and acceleration within lim
- * (the plan's 2^-10 margin covers the integer rounding) with the feed
- * override, a stop and a resume: the time warp r of the clock changes
+ * overlap within radius); else at rest (arcs: dh_queue_add_path_q).
+ * Each line runs a five-phase scaling of s (dh_blend_seg_q) on the
+ * queue's clock, in an overlap the superposition of the two lines
+ * (dh_blend_seq_eval_q's). Speed, TOTAL acceleration, angular speed and
+ * acceleration within lim (the plan's 2^-10 margin covers the rounding)
+ * with the feed override, a stop and a resume: the time warp r changes
  * only in periods that do not reach into an overlap (docs/design.md,
- * "Fixed-point queue", blended lines), so a stop or a lagging tracker
- * inside an overlap slows the move from its end (the tool stays on the
- * planned blend, within radius of the corner). Outside the overlaps the
- * target is on its line as dh_path_eval_q's.
+ * "Fixed-point queue"), so a stop or a lagging tracker inside an overlap
+ * slows the move from its end, on the planned blend within radius of the
+ * corner. Outside the overlaps the target is on its line.
  * @param qu queue from dh_queue_init_q.
  * @param p line from dh_path_line_q (copied).
  * @param lim Cartesian limits, each > 0 (copied).
