@@ -170,18 +170,31 @@ dh_status dh_move_joint_step_q(dh_move_q *mv, uint32_t dt, int32_t *q, dh_move_r
     return DH_OK;
 }
 
-dh_status dh_move_path_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_limits_q *lim)
+/* the path move of the profile planned into mv->prof[0] (its status st),
+ * started */
+static dh_status moveq_path_start(dh_move_q *mv, const dh_path_q *p, dh_status st)
 {
-    dh_status st;
-    DH_ASSERT(mv != NULL && p != NULL && lim != NULL);
-    mv->kind = (uint32_t)DH_MOVE_NONE;
-    st = dh_path_move_q(&mv->prof[0], &mv->e, p, lim);
     if (st != DH_OK) return st;
     mv->path = *p;
     mv->n = 0u;
     dh_motion_start_q_(mv, mv->prof[0].T);
     mv->kind = (uint32_t)DH_MOVE_PATH;
     return DH_OK;
+}
+
+dh_status dh_move_path_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_limits_q *lim)
+{
+    DH_ASSERT(mv != NULL && p != NULL && lim != NULL);
+    mv->kind = (uint32_t)DH_MOVE_NONE;
+    return moveq_path_start(mv, p, dh_path_move_q(&mv->prof[0], &mv->e, p, lim));
+}
+
+dh_status dh_move_path_jerk_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_limits_q *lim,
+                              const dh_cart_jerk_q *jerk)
+{
+    DH_ASSERT(mv != NULL && p != NULL && lim != NULL);
+    mv->kind = (uint32_t)DH_MOVE_NONE;
+    return moveq_path_start(mv, p, dh_path_move_jerk_q(&mv->prof[0], &mv->e, p, lim, jerk));
 }
 
 dh_status dh_move_target_q(const dh_move_q *mv, dh_frame_q *T)
@@ -243,36 +256,60 @@ static int32_t moveq_acc(const dh_profile_q *pr, uint32_t ta, int64_t t)
     return 0;
 }
 
+/* 2^36 / 10^6, rounded up: microseconds times it over 2^36 are seconds */
+#define MOVEQ_US2S36 68720u
+
+/* hi and lo of the seven-phase profile pr along the travel over the
+ * window of w us either side of the clock: its s'' there (evaluated) plus
+ * and minus j w / 10^6 (|s'''| <= j, and s'' is continuous, 0 outside
+ * [0, T]), rounded outwards and held to +-a */
+static DH_NOINLINE void moveq_jerk_window(const dh_profile_q *pr, uint32_t clock, uint32_t w, int64_t *hi,
+                                          int64_t *lo)
+{
+    int32_t p, v, acc;
+    const uint64_t jw = (uint64_t)(uint32_t)pr->j * w;
+    const int64_t dj = (int64_t)(((((jw >> 6) + 1u) * MOVEQ_US2S36) >> 30) + 1u);
+    int64_t c;
+    (void)dh_profile_eval_q(pr, clock, &p, &v, &acc);
+    c = (pr->d < 0) ? -(int64_t)acc : (int64_t)acc;
+    *hi = (c + dj < pr->a) ? c + dj : pr->a;
+    *lo = (c - dj > -(int64_t)pr->a) ? c - dj : -(int64_t)pr->a;
+}
+
 /* The largest rise (rise 1) or fall (rise 0) of r this period that keeps
  * the commanded acceleration of the profile pr (along the travel) within
  * A (file comment), r the warp of the last period; 2^30 (no bound) where
- * s' is 0 (at rest at the clock). The profiles run here are trapezoids,
- * whose s'' falls monotonically (+a, 0, -a): over the last period and the
- * next, [clock - r dt, clock + dt], it lies between its values 2 us before
- * and after them (the margin covers the rounding of the phase times ta),
- * hi and lo. s' at the clock is bounded above by a u (u the time to the
- * nearer end plus 1 us, within ta of it) and by the peak v: K = 10^6 s'
- * (LSB us/s^2, below 2^61), k = K / dt, and the quotients of the file
- * comment multiplied through by dt (no quotient for k). A larger K and hi
- * and a smaller lo only lower the bounds; another profile kind takes s''
- * within +-a and s' at v. */
+ * s' is 0 (at rest at the clock). Over the last period and the next,
+ * [clock - r dt, clock + dt], s'' lies between hi and lo: a trapezoid's
+ * s'' falls monotonically (+a, 0, -a), so there its values 2 us before
+ * and after the window (the margin covers the rounding of the phase times
+ * ta); a seven-phase profile's s'' changes at most at j, so its value at
+ * the clock plus and minus j (w + 3 us), w the longer side of the window
+ * (the 3 us cover the rounding of its phase times and of the clock);
+ * another profile kind takes +-a. s' at the clock is bounded above by
+ * a (u + 1 us) (|s''| <= a, s' = 0 at the ends; u the time to the nearer
+ * end) and by the peak v: K = 10^6 s' (LSB us/s^2, below 2^62),
+ * k = K / dt, and the quotients of the file comment multiplied through
+ * by dt (no quotient for k). A larger K and hi and a smaller lo only lower
+ * the bounds. */
 DH_NOINLINE int32_t dh_motion_feed_bound_q_(const dh_profile_q *pr, int32_t A, uint32_t clock, dh_q30 r, uint32_t dt,
                                             int rise)
 {
     const uint64_t back = ((uint64_t)(uint32_t)r * dt) >> 30;
     const uint32_t ta = (uint32_t)(((uint64_t)(uint32_t)pr->xa * pr->T) >> 30);
     const uint32_t u = (clock < pr->T) ? ((clock < pr->T - clock) ? clock : pr->T - clock) : 0u;
+    const uint64_t ku = (uint64_t)pr->a * (u + 1u);
     uint64_t K = (uint64_t)pr->v * MOVEQ_DT_MAX, num, den;
     int64_t hi = pr->a, lo = -pr->a;
     if (u == 0u) return DH_Q30_ONE;
+    if (ku < K) K = ku;
     if (pr->kind == (uint32_t)DH_PROFILE_TRAP) {
-        if (u <= ta) {
-            const uint32_t u1 = u + 1u;
-            const uint64_t ku = (uint64_t)pr->a * u1;
-            if (ku < K) K = ku;
-        }
         hi = moveq_acc(pr, ta, (int64_t)clock - (int64_t)back - 2);
         lo = moveq_acc(pr, ta, (int64_t)clock + dt + 2);
+    } else if (pr->kind == (uint32_t)DH_PROFILE_SCURVE) {
+        moveq_jerk_window(pr, clock, ((back > dt) ? (uint32_t)back : dt) + 3u, &hi, &lo);
+    } else {
+        /* the quintic: +-a */
     }
     if (rise != 0) {
         /* (A - p r^2) dt / (K + (2 p r + p) dt), p = max(hi, 0), the denominator rounded up */

@@ -589,9 +589,39 @@ static void pathq_bound(pathq_rate *b, uint64_t num, uint64_t den)
     }
 }
 
+/* 1 when x y > z w (x, z below 2^64, y, w below 2^32): both 96-bit
+ * products compared as their top 64 bits and low 32 bits */
+static int pathq_gt96(uint64_t x, uint32_t y, uint64_t z, uint32_t w)
+{
+    const uint64_t xl = (x & 0xFFFFFFFFu) * y, zl = (z & 0xFFFFFFFFu) * w;
+    const uint64_t xh = (x >> 32) * y + (xl >> 32), zh = (z >> 32) * w + (zl >> 32);
+    if (xh != zh) return xh > zh;
+    return (xl & 0xFFFFFFFFu) > (zl & 0xFFFFFFFFu);
+}
+
+/* The largest v <= cap (1 <= cap < 2^31) with 4 v^3 <= jmax R^2
+ * (v = floor(cbrt(jmax R^2 / 4)), the speed bound of a jerk-limited
+ * arc), at least 1: one bit per step from the top, 4 v^2 below 2^64 and
+ * jmax R^2 below 2^91 compared as 96-bit products */
+static DH_NOINLINE uint32_t pathq_arc_vj(uint32_t R, uint32_t jmax, uint32_t cap)
+{
+    const uint64_t R2 = (uint64_t)R * R;
+    uint32_t v = 0u, bit = 0x40000000u;
+    while (bit != 0u) {
+        const uint32_t t = v | bit;
+        if (t <= cap && !pathq_gt96(4u * ((uint64_t)t * t), t, R2, jmax)) v = t;
+        bit >>= 1;
+    }
+    return (v == 0u) ? 1u : v;
+}
+
 /* The speed V and tangential acceleration At (LSB/s, /s^2) of an arc of
- * radius R within lim, both rounded down (file comment) */
-static DH_NOINLINE void pathq_arc_rates(uint32_t R, const dh_cart_limits_q *lim, uint32_t *V, uint32_t *At)
+ * radius R within lim, both rounded down (file comment); jmax > 0 (a
+ * jerk-limited move, dh_path_move_jerk_q) lowers V to
+ * floor(cbrt(jmax R^2 / 4)) before At is taken from it, and At to
+ * floor(jmax R / (12 V)) */
+static DH_NOINLINE void pathq_arc_rates(uint32_t R, const dh_cart_limits_q *lim, uint32_t jmax, uint32_t *V,
+                                        uint32_t *At)
 {
     const uint64_t aR = (uint64_t)(uint32_t)lim->amax * R;
     uint32_t v = (uint32_t)(((uint64_t)dh_q_sqrt_u64(aR) * PATHQ_R4SQRT2) >> 30), c;
@@ -599,6 +629,7 @@ static DH_NOINLINE void pathq_arc_rates(uint32_t R, const dh_cart_limits_q *lim,
     unsigned sh = 0u;
     if (v > (uint32_t)lim->vmax) v = (uint32_t)lim->vmax;
     if (v == 0u) v = 1u;
+    if (jmax != 0u) v = pathq_arc_vj(R, jmax, v);
     /* r = V^2 / (amax R) <= 2^-1/2, rounded up; At = amax sqrt(1 - r^2) rounded down */
     n = (uint64_t)v * v;
     dd = aR;
@@ -613,6 +644,9 @@ static DH_NOINLINE void pathq_arc_rates(uint32_t R, const dh_cart_limits_q *lim,
     c = dh_q_isqrt62(((uint64_t)1 << 60) - (uint64_t)c * c);   /* sqrt(1 - r^2), Q30, down */
     *V = v;
     *At = (uint32_t)(((uint64_t)(uint32_t)lim->amax * c) >> 30);
+    /* At 12 V > jmax R: At = floor(jmax R / (12 V)) (below the old At) */
+    if (jmax != 0u && pathq_gt96(12u * (uint64_t)v, *At, (uint64_t)jmax * R, 1u))
+        *At = pathq_udiv64((uint64_t)jmax * R, 12u * (uint64_t)v);
 }
 
 /* floor(b 2^e) of a bound */
@@ -621,59 +655,86 @@ static uint32_t pathq_scaled(const pathq_rate *b, unsigned e)
     return pathq_udiv64(b->num << e, b->den);
 }
 
-/* The rates of s along p within lim into prof's d = 2^e, v and a (j = 0:
- * the trapezoid) and *e (file comment), for dh_motion_profile_q_ to plan
- * in place: the planner one call level below dh_path_move_q (the 256 B
- * guard) */
+/* The rates of s along p within lim (and jk, when not NULL) into prof's
+ * d = 2^e, v, a and j (0 without jk: the trapezoid) and *e (file
+ * comment), for dh_motion_profile_q_ to plan in place: the planner one
+ * call level below dh_path_move_q (the 256 B guard). The limits are
+ * checked by the caller. */
 static DH_NOINLINE dh_status pathq_rates(dh_profile_q *prof, uint32_t *e, const dh_path_q *p,
-                                         const dh_cart_limits_q *lim)
+                                         const dh_cart_limits_q *lim, const dh_cart_jerk_q *jk)
 {
-    pathq_rate bv = { 0u, 0u }, ba = { 0u, 0u };
-    uint32_t V, At;
+    pathq_rate b[3] = { { 0u, 0u }, { 0u, 0u }, { 0u, 0u } };
+    uint32_t V, At, Jt;
     int k;
-    if (lim->vmax <= 0 || lim->amax <= 0 || lim->wmax <= 0 || lim->wdmax <= 0) return DH_ERR_ARG;
     if (!pathq_ok(p)) return DH_ERR_ARG;
     *e = 30u;
     prof->d = 0;
     prof->v = 1;
     prof->a = 1;
-    prof->j = 0;
+    prof->j = (jk != NULL) ? 1 : 0;
     if (p->length <= 0 && p->angle <= 0) return DH_OK;
     V = (uint32_t)lim->vmax;
     At = (uint32_t)lim->amax;
-    if (p->kind == (uint32_t)DH_PATH_ARC) pathq_arc_rates((uint32_t)p->radius, lim, &V, &At);
+    Jt = (jk != NULL) ? (uint32_t)jk->jmax : 0u;
+    if (p->kind == (uint32_t)DH_PATH_ARC) {
+        pathq_arc_rates((uint32_t)p->radius, lim, Jt, &V, &At);
+        Jt >>= 1;
+    }
     if (p->length > 0) {
-        pathq_bound(&bv, V, (uint32_t)p->length);
-        pathq_bound(&ba, At, (uint32_t)p->length);
+        pathq_bound(&b[0], V, (uint32_t)p->length);
+        pathq_bound(&b[1], At, (uint32_t)p->length);
+        if (jk != NULL) pathq_bound(&b[2], Jt, (uint32_t)p->length);
     }
     if (p->angle > 0) {
-        pathq_bound(&bv, (uint32_t)lim->wmax, (uint32_t)p->angle);
-        pathq_bound(&ba, (uint32_t)lim->wdmax, (uint32_t)p->angle);
+        pathq_bound(&b[0], (uint32_t)lim->wmax, (uint32_t)p->angle);
+        pathq_bound(&b[1], (uint32_t)lim->wdmax, (uint32_t)p->angle);
+        if (jk != NULL) pathq_bound(&b[2], (uint32_t)jk->wjmax, (uint32_t)p->angle);
     }
-    /* the largest e <= 30 with both rates times 2^e within int32 */
+    /* the largest e <= 30 with every rate times 2^e within int32 */
     for (k = 30; k >= 0; k--) {
-        if ((bv.num << k) < (uint64_t)INT32_MAX * bv.den && (ba.num << k) < (uint64_t)INT32_MAX * ba.den) break;
+        if ((b[0].num << k) < (uint64_t)INT32_MAX * b[0].den && (b[1].num << k) < (uint64_t)INT32_MAX * b[1].den &&
+            (b[2].den == 0u || (b[2].num << k) < (uint64_t)INT32_MAX * b[2].den)) {
+            break;
+        }
     }
     if (k < 0) return DH_ERR_OVERFLOW;
-    prof->v = (int32_t)pathq_scaled(&bv, (unsigned)k);
-    prof->a = (int32_t)pathq_scaled(&ba, (unsigned)k);
-    if (prof->v == 0 || prof->a == 0) return DH_ERR_OVERFLOW;
+    prof->v = (int32_t)pathq_scaled(&b[0], (unsigned)k);
+    prof->a = (int32_t)pathq_scaled(&b[1], (unsigned)k);
+    if (jk != NULL) prof->j = (int32_t)pathq_scaled(&b[2], (unsigned)k);
+    if (prof->v == 0 || prof->a == 0 || (jk != NULL && prof->j == 0)) return DH_ERR_OVERFLOW;
     prof->d = (int32_t)1 << k;
     *e = (uint32_t)k;
     return DH_OK;
 }
 
-dh_status dh_path_move_q(dh_profile_q *prof, uint32_t *e, const dh_path_q *p, const dh_cart_limits_q *lim)
+/* the move of pathq_rates planned in place (dh_motion_profile_q_: the
+ * trapezoid, or with jk the seven-phase profile); on error no move */
+static dh_status pathq_move(dh_profile_q *prof, uint32_t *e, const dh_path_q *p, const dh_cart_limits_q *lim,
+                            const dh_cart_jerk_q *jk)
 {
-    dh_status st;
-    DH_ASSERT(prof != NULL && e != NULL && p != NULL && lim != NULL);
-    st = pathq_rates(prof, e, p, lim);
+    dh_status st = DH_OK;
+    if (lim->vmax <= 0 || lim->amax <= 0 || lim->wmax <= 0 || lim->wdmax <= 0) st = DH_ERR_ARG;
+    if (jk != NULL && (jk->jmax <= 0 || jk->wjmax <= 0)) st = DH_ERR_ARG;
+    if (st == DH_OK) st = pathq_rates(prof, e, p, lim, jk);
     if (st == DH_OK) st = dh_motion_profile_q_(prof);
     if (st != DH_OK) {
         (void)memset(prof, 0, sizeof *prof);
         *e = 30u;
     }
     return st;
+}
+
+dh_status dh_path_move_q(dh_profile_q *prof, uint32_t *e, const dh_path_q *p, const dh_cart_limits_q *lim)
+{
+    DH_ASSERT(prof != NULL && e != NULL && p != NULL && lim != NULL);
+    return pathq_move(prof, e, p, lim, NULL);
+}
+
+dh_status dh_path_move_jerk_q(dh_profile_q *prof, uint32_t *e, const dh_path_q *p, const dh_cart_limits_q *lim,
+                              const dh_cart_jerk_q *jerk)
+{
+    DH_ASSERT(prof != NULL && e != NULL && p != NULL && lim != NULL);
+    return pathq_move(prof, e, p, lim, jerk);
 }
 
 dh_status dh_path_move_eval_q(const dh_profile_q *prof, uint32_t e, const dh_path_q *p, uint32_t t, dh_frame_q *T)

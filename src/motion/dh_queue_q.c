@@ -83,20 +83,21 @@ dh_status dh_queue_init_q(dh_queue_q *qu, dh_queue_item_q *items, uint32_t cap)
 }
 
 dh_status dh_queue_add_joint_q(dh_queue_q *qu, uint32_t n, const int32_t *q1, const int32_t *vmax,
-                               const int32_t *amax)
+                               const int32_t *amax, const int32_t *jmax)
 {
     dh_queue_item_q *it;
     uint32_t i;
     DH_ASSERT(qu != NULL && q1 != NULL && vmax != NULL && amax != NULL);
     if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     for (i = 0u; i < n; i++)
-        if (vmax[i] <= 0 || amax[i] <= 0) return DH_ERR_ARG;
+        if (vmax[i] <= 0 || amax[i] <= 0 || (jmax != NULL && jmax[i] <= 0)) return DH_ERR_ARG;
     it = queueq_free(qu);
     if (it == NULL) return DH_ERR_LIMIT;
     for (i = 0u; i < n; i++) {
         it->q1[i] = q1[i];
         it->vmax[i] = vmax[i];
         it->amax[i] = amax[i];
+        it->jmax[i] = (jmax != NULL) ? jmax[i] : 0;
     }
     it->n = n;
     it->kind = (uint32_t)DH_MOVE_JOINT;
@@ -104,14 +105,16 @@ dh_status dh_queue_add_joint_q(dh_queue_q *qu, uint32_t n, const int32_t *q1, co
     return DH_OK;
 }
 
-dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim)
+/* a path move along p within lim and jerk (NULL: the trapezoid) appended,
+ * its profile of s planned into the free item */
+static dh_status queueq_add_path(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                 const dh_cart_jerk_q *jerk)
 {
     dh_queue_item_q *it;
     dh_status st;
-    DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
     it = queueq_free(qu);
     if (it == NULL) return DH_ERR_LIMIT;
-    st = dh_path_move_q(&it->prof, &it->e, p, lim);
+    st = dh_path_move_jerk_q(&it->prof, &it->e, p, lim, jerk);
     if (st != DH_OK) return st;
     it->path = *p;
     it->lim = *lim;
@@ -119,6 +122,19 @@ dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_
     it->kind = (uint32_t)DH_MOVE_PATH;
     qu->count++;
     return DH_OK;
+}
+
+dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim)
+{
+    DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
+    return queueq_add_path(qu, p, lim, NULL);
+}
+
+dh_status dh_queue_add_path_jerk_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                   const dh_cart_jerk_q *jerk)
+{
+    DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
+    return queueq_add_path(qu, p, lim, jerk);
 }
 
 /* the running move's clock and warp at its start (dh_move_q.c's rule) */
@@ -178,7 +194,7 @@ static DH_NOINLINE dh_status queueq_joint_fill(dh_queue_q *qu, const int32_t *q0
         mv->prof[i].d = (int32_t)d;
         mv->prof[i].v = it->vmax[i] - (int32_t)((uint32_t)it->vmax[i] >> 10);
         mv->prof[i].a = it->amax[i] - (int32_t)((uint32_t)it->amax[i] >> 10);
-        mv->prof[i].j = 0;
+        mv->prof[i].j = it->jmax[i];
     }
     mv->n = it->n;
     return st;
