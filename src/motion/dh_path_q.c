@@ -50,6 +50,16 @@
  * den) (bit-serial): below the float rate, never above. So the rates of s
  * do not meet the 32767 units/s^k cap of the fixed profiles for any
  * speed; the position resolution of s is 2^-e of the path.
+ *
+ * A jerk-limited move (dh_path_move_jerk_q) plans the seven-phase profile
+ * instead, with a third rate s''' <= min(Jt / length, wjmax / angle). On
+ * a line Jt = jmax; on an arc the float twin's split of the TOTAL jerk:
+ * V also <= cbrt(jmax R^2 / 4) (the largest integer v with
+ * 4 v^3 <= jmax R^2, compared as 96-bit products), At from that V and
+ * then <= floor(jmax R / (12 V)), Jt = floor(jmax / 2), so
+ * |x'''| + x'^3 / R^2 + 3 x' |x''| / R <= jmax / 2 + jmax / 4 + jmax / 4
+ * for the rounded V and At (docs/design.md, "Paths and moves, fixed
+ * point").
  */
 #include <string.h>
 

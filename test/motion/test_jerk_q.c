@@ -283,7 +283,8 @@ static void executor_stop_q(void)
         if (!path_rand(g, (i & 1) != 0, &p, via, ia)) continue;
         draw_limits(&lim, &jk);
         DHT_EQ_INT(dh_move_path_jerk_q(mv, &p, &lim, &jk), DH_OK);
-        k0 = (long)dht_rand_uniform(0.0, mv->dur / 1000.0);
+        /* even moves: the stretch begins in the first half (r must reach 0) */
+        k0 = (long)dht_rand_uniform(0.0, mv->dur / ((i & 1) != 0 ? 1000.0 : 2000.0));
         len = (long)(mv->dur / 1000u) + 1000;
         /* noise: the path and profile, the clock's 1 us at vmax, 1 LSB */
         N = 6.0 + ldexp(p.radius, -26) + lim.vmax * 1e-6 + ldexp((double)p.length, -27);
