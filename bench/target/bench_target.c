@@ -1479,8 +1479,14 @@ static uint32_t bt_line_q(const bt_move *mv, dh_robot *r, dh_frame_q *A, dh_fram
 /* twin: bt_period_f32 on the fixed types and calls, the robot in mm
  * (0.25 m/s and 2 m/s^2 as 250 mm/s and 2000 mm/s^2): the period timed
  * whole, and within it the tracker call on its own ("dh_track_step_q
- * line": the rest of the period is the move's target and advance) */
-static BT_NOINLINE void bt_period_q(const bt_move *mv, dh_robot *r)
+ * line": the rest of the period is the move's target and advance); with
+ * jk the jerk-limited move of the same line (dh_move_path_jerk_q, "move
+ * period jerk q") */
+/* the jerk limits of "move period jerk q": 5000 mm/s^3, the angular one
+ * with the same jerk time as the linear (wjmax / wdmax = jmax / amax) */
+static const dh_cart_jerk_q bt_jerk_q = { 5000 << 16, 900 << 16 };
+
+static BT_NOINLINE void bt_period_q(const bt_move *mv, dh_robot *r, const dh_cart_jerk_q *jk)
 {
     dh_track_q *const t = &bt_mem.t.tq;
     dh_move_q *const m = &bt_mem.t.u.mvq;
@@ -1495,7 +1501,7 @@ static BT_NOINLINE void bt_period_q(const bt_move *mv, dh_robot *r)
     int32_t q[6];
     st = bt_line_q(mv, r, &A, &B, q);
     st |= (uint32_t)dh_path_line_q(&m->path, &A, &B);
-    st |= (uint32_t)dh_move_path_q(m, &m->path, &lim);
+    st |= (uint32_t)dh_move_path_jerk_q(m, &m->path, &lim, jk);
     st |= (uint32_t)dh_track_init_q(t, r, &bt_mem.t.mq, q, 1000u);
     mrep.done = 0;
     while (st == 0u && mrep.done == 0 && n < 4u * BT_NTRK) {
@@ -1520,10 +1526,11 @@ static BT_NOINLINE void bt_period_q(const bt_move *mv, dh_robot *r)
         t1 = bt_now();
         bt_acc_add(&nul, t0, t1);
     }
-    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|%lu|%lu|%lu|%lu\n", "move period q", mv->robot, "mm",
-           (unsigned long)n, (unsigned long long)aper.sum, (unsigned long long)nul.sum,
-           (unsigned long long)aper.max, (unsigned long)states[0], (unsigned long)states[1],
-           (unsigned long)states[2], (unsigned long)st);
+    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|%lu|%lu|%lu|%lu\n",
+           (jk != NULL) ? "move period jerk q" : "move period q", mv->robot, "mm", (unsigned long)n,
+           (unsigned long long)aper.sum, (unsigned long long)nul.sum, (unsigned long long)aper.max,
+           (unsigned long)states[0], (unsigned long)states[1], (unsigned long)states[2], (unsigned long)st);
+    if (jk != NULL) return;
     printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|0|0|0|%lu\n", "dh_track_step_q line", mv->robot, "mm",
            (unsigned long)n, (unsigned long long)atr.sum, (unsigned long long)nul.sum,
            (unsigned long long)atr.max, (unsigned long)st);
@@ -1676,7 +1683,8 @@ static void bt_track(void)
         bt_period_f32(&bt_moves[m], &bt_puma_m);
 #endif
         bt_track_q(&bt_moves[m], &bt_puma_mm, &null);
-        bt_period_q(&bt_moves[m], &bt_puma_mm);
+        bt_period_q(&bt_moves[m], &bt_puma_mm, NULL);
+        bt_period_q(&bt_moves[m], &bt_puma_mm, &bt_jerk_q);
         bt_blend_q(&bt_moves[m], &bt_puma_mm);
         bt_queue_q(&bt_moves[m], &bt_puma_mm);
     }

@@ -175,6 +175,7 @@ dh_status dh_move_joint_step_q(dh_move_q *mv, uint32_t dt, int32_t *q, dh_move_r
 static dh_status moveq_path_start(dh_move_q *mv, const dh_path_q *p, dh_status st)
 {
     if (st != DH_OK) return st;
+    mv->e = dh_motion_path_e_q_(&mv->prof[0]);
     mv->path = *p;
     mv->n = 0u;
     dh_motion_start_q_(mv, mv->prof[0].T);
@@ -182,19 +183,27 @@ static dh_status moveq_path_start(dh_move_q *mv, const dh_path_q *p, dh_status s
     return DH_OK;
 }
 
+/* The path moves plan as dh_path_move_jerk_q does, its two steps called
+ * from here (the 256 B guard) */
 dh_status dh_move_path_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_limits_q *lim)
 {
+    dh_status st;
     DH_ASSERT(mv != NULL && p != NULL && lim != NULL);
     mv->kind = (uint32_t)DH_MOVE_NONE;
-    return moveq_path_start(mv, p, dh_path_move_q(&mv->prof[0], &mv->e, p, lim));
+    st = dh_motion_path_rates_q_(&mv->prof[0], p, lim, NULL);
+    if (st == DH_OK) st = dh_motion_profile_q_(&mv->prof[0]);
+    return moveq_path_start(mv, p, st);
 }
 
 dh_status dh_move_path_jerk_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_limits_q *lim,
                               const dh_cart_jerk_q *jerk)
 {
+    dh_status st;
     DH_ASSERT(mv != NULL && p != NULL && lim != NULL);
     mv->kind = (uint32_t)DH_MOVE_NONE;
-    return moveq_path_start(mv, p, dh_path_move_jerk_q(&mv->prof[0], &mv->e, p, lim, jerk));
+    st = dh_motion_path_rates_q_(&mv->prof[0], p, lim, jerk);
+    if (st == DH_OK) st = dh_motion_profile_q_(&mv->prof[0]);
+    return moveq_path_start(mv, p, st);
 }
 
 dh_status dh_move_target_q(const dh_move_q *mv, dh_frame_q *T)
@@ -256,25 +265,8 @@ static int32_t moveq_acc(const dh_profile_q *pr, uint32_t ta, int64_t t)
     return 0;
 }
 
-/* 2^36 / 10^6, rounded up: microseconds times it over 2^36 are seconds */
-#define MOVEQ_US2S36 68720u
-
-/* hi and lo of the seven-phase profile pr along the travel over the
- * window of w us either side of the clock: its s'' there (evaluated) plus
- * and minus j w / 10^6 (|s'''| <= j, and s'' is continuous, 0 outside
- * [0, T]), rounded outwards and held to +-a */
-static DH_NOINLINE void moveq_jerk_window(const dh_profile_q *pr, uint32_t clock, uint32_t w, int64_t *hi,
-                                          int64_t *lo)
-{
-    int32_t p, v, acc;
-    const uint64_t jw = (uint64_t)(uint32_t)pr->j * w;
-    const int64_t dj = (int64_t)(((((jw >> 6) + 1u) * MOVEQ_US2S36) >> 30) + 1u);
-    int64_t c;
-    (void)dh_profile_eval_q(pr, clock, &p, &v, &acc);
-    c = (pr->d < 0) ? -(int64_t)acc : (int64_t)acc;
-    *hi = (c + dj < pr->a) ? c + dj : pr->a;
-    *lo = (c - dj > -(int64_t)pr->a) ? c - dj : -(int64_t)pr->a;
-}
+/* 2^40 / 10^6, rounded up */
+#define MOVEQ_US2S40 1099512u
 
 /* The largest rise (rise 1) or fall (rise 0) of r this period that keeps
  * the commanded acceleration of the profile pr (along the travel) within
@@ -283,15 +275,18 @@ static DH_NOINLINE void moveq_jerk_window(const dh_profile_q *pr, uint32_t clock
  * [clock - r dt, clock + dt], s'' lies between hi and lo: a trapezoid's
  * s'' falls monotonically (+a, 0, -a), so there its values 2 us before
  * and after the window (the margin covers the rounding of the phase times
- * ta); a seven-phase profile's s'' changes at most at j, so its value at
- * the clock plus and minus j (w + 3 us), w the longer side of the window
- * (the 3 us cover the rounding of its phase times and of the clock);
- * another profile kind takes +-a. s' at the clock is bounded above by
- * a (u + 1 us) (|s''| <= a, s' = 0 at the ends; u the time to the nearer
- * end) and by the peak v: K = 10^6 s' (LSB us/s^2, below 2^62),
- * k = K / dt, and the quotients of the file comment multiplied through
- * by dt (no quotient for k). A larger K and hi and a smaller lo only lower
- * the bounds. */
+ * ta). A seven-phase profile's s'' is continuous, >= 0 in the first half,
+ * <= 0 in the second, 0 in the cruise, and changes at most at j, so over
+ * the window it is within [-j w, a] in the first half's acceleration,
+ * [-a, j w] in the second half's deceleration and [-j w, j w] in the
+ * cruise, w the longer side of the window plus 4 us (the rounding of ta
+ * and of the clock), j w / 10^6 rounded up by 4 LSB/s^2 (a multiply by
+ * 2^40 / 10^6 after a shift: within 2). Another profile kind takes +-a.
+ * s' at the clock is bounded above by a (u + 1 us) (|s''| <= a and s' = 0
+ * at the ends; u the time to the nearer end) and by the peak v:
+ * K = 10^6 s' (LSB us/s^2, below 2^62), k = K / dt, and the quotients of
+ * the file comment multiplied through by dt (no quotient for k). A larger
+ * K and hi and a smaller lo only lower the bounds. */
 DH_NOINLINE int32_t dh_motion_feed_bound_q_(const dh_profile_q *pr, int32_t A, uint32_t clock, dh_q30 r, uint32_t dt,
                                             int rise)
 {
@@ -307,7 +302,10 @@ DH_NOINLINE int32_t dh_motion_feed_bound_q_(const dh_profile_q *pr, int32_t A, u
         hi = moveq_acc(pr, ta, (int64_t)clock - (int64_t)back - 2);
         lo = moveq_acc(pr, ta, (int64_t)clock + dt + 2);
     } else if (pr->kind == (uint32_t)DH_PROFILE_SCURVE) {
-        moveq_jerk_window(pr, clock, ((back > dt) ? (uint32_t)back : dt) + 3u, &hi, &lo);
+        const uint64_t jw = (uint64_t)(uint32_t)pr->j * (((back > dt) ? (uint32_t)back : dt) + 4u);
+        const int64_t d = (int64_t)(((jw >> 20) * MOVEQ_US2S40) >> 20) + 4;
+        if (u >= ta || clock > pr->T - clock) hi = (d < pr->a) ? d : pr->a;
+        if (u >= ta || clock <= pr->T - clock) lo = (d < pr->a) ? -d : -(int64_t)pr->a;
     } else {
         /* the quintic: +-a */
     }

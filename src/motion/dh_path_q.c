@@ -583,17 +583,17 @@ dh_status dh_path_eval_q(const dh_path_q *p, dh_q30 s, dh_frame_q *T)
 
 /* ---- moves -------------------------------------------------------------- */
 
-/* A bound num / den on a rate of s; den 0: none */
+/* A bound num / den on a rate of s (num, den below 2^31); den 0: none */
 typedef struct {
-    uint64_t num;
-    uint64_t den;
+    uint32_t num;
+    uint32_t den;
 } pathq_rate;
 
-/* *b = min(*b, num / den) for den > 0 (exact cross products: num, den below 2^31) */
-static void pathq_bound(pathq_rate *b, uint64_t num, uint64_t den)
+/* *b = min(*b, num / den) for den > 0 (exact cross products) */
+DH_INLINE void pathq_bound(pathq_rate *b, uint32_t num, uint32_t den)
 {
     if (den == 0u) return;
-    if (b->den == 0u || num * b->den < b->num * den) {
+    if (b->den == 0u || (uint64_t)num * b->den < (uint64_t)b->num * den) {
         b->num = num;
         b->den = den;
     }
@@ -625,21 +625,26 @@ static DH_NOINLINE uint32_t pathq_arc_vj(uint32_t R, uint32_t jmax, uint32_t cap
     return (v == 0u) ? 1u : v;
 }
 
-/* The speed V and tangential acceleration At (LSB/s, /s^2) of an arc of
- * radius R within lim, both rounded down (file comment); jmax > 0 (a
- * jerk-limited move, dh_path_move_jerk_q) lowers V to
- * floor(cbrt(jmax R^2 / 4)) before At is taken from it, and At to
- * floor(jmax R / (12 V)) */
-static DH_NOINLINE void pathq_arc_rates(uint32_t R, const dh_cart_limits_q *lim, uint32_t jmax, uint32_t *V,
-                                        uint32_t *At)
+/* The speed bound V (LSB/s) of an arc of radius R within lim:
+ * min(vmax, sqrt(amax R / sqrt 2)) rounded down, at least 1 (file
+ * comment) */
+static DH_NOINLINE uint32_t pathq_arc_v(uint32_t R, const dh_cart_limits_q *lim)
+{
+    uint32_t v = (uint32_t)(((uint64_t)dh_q_sqrt_u64((uint64_t)(uint32_t)lim->amax * R) * PATHQ_R4SQRT2) >> 30);
+    if (v > (uint32_t)lim->vmax) v = (uint32_t)lim->vmax;
+    return (v == 0u) ? 1u : v;
+}
+
+/* The tangential acceleration At (LSB/s^2) of an arc of radius R at the
+ * speed v within lim: amax sqrt(1 - (v^2 / (amax R))^2) rounded down
+ * (file comment); jmax > 0 (a jerk-limited move, dh_path_move_jerk_q)
+ * lowers it to floor(jmax R / (12 v)) */
+static DH_NOINLINE uint32_t pathq_arc_at(uint32_t R, const dh_cart_limits_q *lim, uint32_t v, uint32_t jmax)
 {
     const uint64_t aR = (uint64_t)(uint32_t)lim->amax * R;
-    uint32_t v = (uint32_t)(((uint64_t)dh_q_sqrt_u64(aR) * PATHQ_R4SQRT2) >> 30), c;
     uint64_t n, dd;
+    uint32_t c, at;
     unsigned sh = 0u;
-    if (v > (uint32_t)lim->vmax) v = (uint32_t)lim->vmax;
-    if (v == 0u) v = 1u;
-    if (jmax != 0u) v = pathq_arc_vj(R, jmax, v);
     /* r = V^2 / (amax R) <= 2^-1/2, rounded up; At = amax sqrt(1 - r^2) rounded down */
     n = (uint64_t)v * v;
     dd = aR;
@@ -652,58 +657,74 @@ static DH_NOINLINE void pathq_arc_rates(uint32_t R, const dh_cart_limits_q *lim,
     c = (n >= dd) ? (uint32_t)DH_Q30_ONE : pathq_udiv64(n << 30, dd) + 1u;
     if (c > (uint32_t)DH_Q30_ONE) c = (uint32_t)DH_Q30_ONE;
     c = dh_q_isqrt62(((uint64_t)1 << 60) - (uint64_t)c * c);   /* sqrt(1 - r^2), Q30, down */
-    *V = v;
-    *At = (uint32_t)(((uint64_t)(uint32_t)lim->amax * c) >> 30);
+    at = (uint32_t)(((uint64_t)(uint32_t)lim->amax * c) >> 30);
     /* At 12 V > jmax R: At = floor(jmax R / (12 V)) (below the old At) */
-    if (jmax != 0u && pathq_gt96(12u * (uint64_t)v, *At, (uint64_t)jmax * R, 1u))
-        *At = pathq_udiv64((uint64_t)jmax * R, 12u * (uint64_t)v);
+    if (jmax != 0u && pathq_gt96(12u * (uint64_t)v, at, (uint64_t)jmax * R, 1u))
+        at = pathq_udiv64((uint64_t)jmax * R, 12u * (uint64_t)v);
+    return at;
 }
 
 /* floor(b 2^e) of a bound */
 static uint32_t pathq_scaled(const pathq_rate *b, unsigned e)
 {
-    return pathq_udiv64(b->num << e, b->den);
+    return pathq_udiv64((uint64_t)b->num << e, b->den);
 }
 
-/* The rates of s along p within lim (and jk, when not NULL) into prof's
- * d = 2^e, v, a and j (0 without jk: the trapezoid) and *e (file
- * comment), for dh_motion_profile_q_ to plan in place: the planner one
- * call level below dh_path_move_q (the 256 B guard). The limits are
- * checked by the caller. */
-static DH_NOINLINE dh_status pathq_rates(dh_profile_q *prof, uint32_t *e, const dh_path_q *p,
-                                         const dh_cart_limits_q *lim, const dh_cart_jerk_q *jk)
+/* The tool's speed V, tangential acceleration At and jerk Jt (jk NULL:
+ * 0) along p within lim and jk into prof's v, a and j (below 2^31: never
+ * above vmax, amax, jmax; file comment), for pathq_rates; DH_ERR_ARG for
+ * a limit <= 0 or a p that holds no path. Called by the public functions
+ * beside pathq_rates, not under it (the 256 B guard). */
+static DH_NOINLINE dh_status pathq_limits(dh_profile_q *prof, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                          const dh_cart_jerk_q *jk)
+{
+    uint32_t V, At, Jt;
+    if (lim->vmax <= 0 || lim->amax <= 0 || lim->wmax <= 0 || lim->wdmax <= 0) return DH_ERR_ARG;
+    if (jk != NULL && (jk->jmax <= 0 || jk->wjmax <= 0)) return DH_ERR_ARG;
+    if (!pathq_ok(p)) return DH_ERR_ARG;
+    V = (uint32_t)lim->vmax;
+    At = (uint32_t)lim->amax;
+    Jt = (jk != NULL) ? (uint32_t)jk->jmax : 0u;
+    if (p->kind == (uint32_t)DH_PATH_ARC) {
+        /* each step called from here (the 256 B guard) */
+        V = pathq_arc_v((uint32_t)p->radius, lim);
+        if (Jt != 0u) V = pathq_arc_vj((uint32_t)p->radius, Jt, V);
+        At = pathq_arc_at((uint32_t)p->radius, lim, V, Jt);
+        Jt >>= 1;
+    }
+    prof->v = (int32_t)V;
+    prof->a = (int32_t)At;
+    prof->j = (int32_t)Jt;
+    return DH_OK;
+}
+
+/* The rates of s along p into prof's d = 2^e, v, a and j (0 without jk:
+ * the trapezoid; file comment), from the tool's V, At, Jt that
+ * pathq_limits left in prof's v, a and j, for dh_motion_profile_q_ to
+ * plan in place */
+static DH_NOINLINE dh_status pathq_rates(dh_profile_q *prof, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                         const dh_cart_jerk_q *jk)
 {
     pathq_rate b[3] = { { 0u, 0u }, { 0u, 0u }, { 0u, 0u } };
-    uint32_t V, At, Jt;
     int k;
-    if (!pathq_ok(p)) return DH_ERR_ARG;
-    *e = 30u;
+    /* speed, acceleration, jerk: the tool's over the length, the angular
+     * over the angle, the smaller */
+    for (k = 0; k < ((jk != NULL) ? 3 : 2); k++) {
+        const int32_t tool = (k == 0) ? prof->v : ((k == 1) ? prof->a : prof->j);
+        const int32_t rot = (k == 0) ? lim->wmax : ((k == 1) ? lim->wdmax : jk->wjmax);
+        if (p->length > 0) pathq_bound(&b[k], (uint32_t)tool, (uint32_t)p->length);
+        if (p->angle > 0) pathq_bound(&b[k], (uint32_t)rot, (uint32_t)p->angle);
+    }
     prof->d = 0;
     prof->v = 1;
     prof->a = 1;
     prof->j = (jk != NULL) ? 1 : 0;
     if (p->length <= 0 && p->angle <= 0) return DH_OK;
-    V = (uint32_t)lim->vmax;
-    At = (uint32_t)lim->amax;
-    Jt = (jk != NULL) ? (uint32_t)jk->jmax : 0u;
-    if (p->kind == (uint32_t)DH_PATH_ARC) {
-        pathq_arc_rates((uint32_t)p->radius, lim, Jt, &V, &At);
-        Jt >>= 1;
-    }
-    if (p->length > 0) {
-        pathq_bound(&b[0], V, (uint32_t)p->length);
-        pathq_bound(&b[1], At, (uint32_t)p->length);
-        if (jk != NULL) pathq_bound(&b[2], Jt, (uint32_t)p->length);
-    }
-    if (p->angle > 0) {
-        pathq_bound(&b[0], (uint32_t)lim->wmax, (uint32_t)p->angle);
-        pathq_bound(&b[1], (uint32_t)lim->wdmax, (uint32_t)p->angle);
-        if (jk != NULL) pathq_bound(&b[2], (uint32_t)jk->wjmax, (uint32_t)p->angle);
-    }
     /* the largest e <= 30 with every rate times 2^e within int32 */
     for (k = 30; k >= 0; k--) {
-        if ((b[0].num << k) < (uint64_t)INT32_MAX * b[0].den && (b[1].num << k) < (uint64_t)INT32_MAX * b[1].den &&
-            (b[2].den == 0u || (b[2].num << k) < (uint64_t)INT32_MAX * b[2].den)) {
+        if (((uint64_t)b[0].num << k) < (uint64_t)INT32_MAX * b[0].den &&
+            ((uint64_t)b[1].num << k) < (uint64_t)INT32_MAX * b[1].den &&
+            (b[2].den == 0u || ((uint64_t)b[2].num << k) < (uint64_t)INT32_MAX * b[2].den)) {
             break;
         }
     }
@@ -713,38 +734,49 @@ static DH_NOINLINE dh_status pathq_rates(dh_profile_q *prof, uint32_t *e, const 
     if (jk != NULL) prof->j = (int32_t)pathq_scaled(&b[2], (unsigned)k);
     if (prof->v == 0 || prof->a == 0 || (jk != NULL && prof->j == 0)) return DH_ERR_OVERFLOW;
     prof->d = (int32_t)1 << k;
-    *e = (uint32_t)k;
     return DH_OK;
 }
 
-/* the move of pathq_rates planned in place (dh_motion_profile_q_: the
- * trapezoid, or with jk the seven-phase profile); on error no move */
-static dh_status pathq_move(dh_profile_q *prof, uint32_t *e, const dh_path_q *p, const dh_cart_limits_q *lim,
-                            const dh_cart_jerk_q *jk)
+/* dh_motion_path_rates_q_ (motion_impl.h): the tool's limits, then the
+ * rates of s, each called from here */
+dh_status dh_motion_path_rates_q_(dh_profile_q *prof, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                  const dh_cart_jerk_q *jk)
 {
-    dh_status st = DH_OK;
-    if (lim->vmax <= 0 || lim->amax <= 0 || lim->wmax <= 0 || lim->wdmax <= 0) st = DH_ERR_ARG;
-    if (jk != NULL && (jk->jmax <= 0 || jk->wjmax <= 0)) st = DH_ERR_ARG;
-    if (st == DH_OK) st = pathq_rates(prof, e, p, lim, jk);
-    if (st == DH_OK) st = dh_motion_profile_q_(prof);
-    if (st != DH_OK) {
-        (void)memset(prof, 0, sizeof *prof);
-        *e = 30u;
-    }
-    return st;
+    const dh_status st = pathq_limits(prof, p, lim, jk);
+    return (st == DH_OK) ? pathq_rates(prof, p, lim, jk) : st;
 }
 
+uint32_t dh_motion_path_e_q_(const dh_profile_q *prof)
+{
+    uint32_t e = 0u;
+    if (prof->d <= 0) return 30u;
+    while (e < 30u && ((uint32_t)prof->d >> e) > 1u) e++;
+    return e;
+}
+
+/* the move planned in place (the rates of s, then the profile); on error
+ * no move: prof all zero, *e 30 */
 dh_status dh_path_move_q(dh_profile_q *prof, uint32_t *e, const dh_path_q *p, const dh_cart_limits_q *lim)
 {
+    dh_status st;
     DH_ASSERT(prof != NULL && e != NULL && p != NULL && lim != NULL);
-    return pathq_move(prof, e, p, lim, NULL);
+    st = dh_motion_path_rates_q_(prof, p, lim, NULL);
+    if (st == DH_OK) st = dh_motion_profile_q_(prof);
+    if (st != DH_OK) (void)memset(prof, 0, sizeof *prof);
+    *e = dh_motion_path_e_q_(prof);
+    return st;
 }
 
 dh_status dh_path_move_jerk_q(dh_profile_q *prof, uint32_t *e, const dh_path_q *p, const dh_cart_limits_q *lim,
                               const dh_cart_jerk_q *jerk)
 {
+    dh_status st;
     DH_ASSERT(prof != NULL && e != NULL && p != NULL && lim != NULL);
-    return pathq_move(prof, e, p, lim, jerk);
+    st = dh_motion_path_rates_q_(prof, p, lim, jerk);
+    if (st == DH_OK) st = dh_motion_profile_q_(prof);
+    if (st != DH_OK) (void)memset(prof, 0, sizeof *prof);
+    *e = dh_motion_path_e_q_(prof);
+    return st;
 }
 
 dh_status dh_path_move_eval_q(const dh_profile_q *prof, uint32_t e, const dh_path_q *p, uint32_t t, dh_frame_q *T)

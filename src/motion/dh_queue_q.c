@@ -105,36 +105,33 @@ dh_status dh_queue_add_joint_q(dh_queue_q *qu, uint32_t n, const int32_t *q1, co
     return DH_OK;
 }
 
-/* a path move along p within lim and jerk (NULL: the trapezoid) appended,
- * its profile of s planned into the free item */
-static dh_status queueq_add_path(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim,
-                                 const dh_cart_jerk_q *jerk)
+/* one body for both path appends; dh_queue_add_path_q's call is its last
+ * (a tail call: no frame of its own above the planning, the 256 B guard) */
+dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim)
+{
+    return dh_queue_add_path_jerk_q(qu, p, lim, NULL);
+}
+
+dh_status dh_queue_add_path_jerk_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                   const dh_cart_jerk_q *jerk)
 {
     dh_queue_item_q *it;
     dh_status st;
+    DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
     it = queueq_free(qu);
     if (it == NULL) return DH_ERR_LIMIT;
-    st = dh_path_move_jerk_q(&it->prof, &it->e, p, lim, jerk);
+    /* planned as dh_path_move_jerk_q does, its two steps called from here
+     * (the 256 B guard) */
+    st = dh_motion_path_rates_q_(&it->prof, p, lim, jerk);
+    if (st == DH_OK) st = dh_motion_profile_q_(&it->prof);
     if (st != DH_OK) return st;
+    it->e = dh_motion_path_e_q_(&it->prof);
     it->path = *p;
     it->lim = *lim;
     it->n = 0u;
     it->kind = (uint32_t)DH_MOVE_PATH;
     qu->count++;
     return DH_OK;
-}
-
-dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim)
-{
-    DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
-    return queueq_add_path(qu, p, lim, NULL);
-}
-
-dh_status dh_queue_add_path_jerk_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim,
-                                   const dh_cart_jerk_q *jerk)
-{
-    DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
-    return queueq_add_path(qu, p, lim, jerk);
 }
 
 /* the running move's clock and warp at its start (dh_move_q.c's rule) */
