@@ -8,8 +8,9 @@
  *
  * Ring. items[head] is the running move; appending writes
  * items[(head + count) mod cap] and never overwrites a queued move. A
- * path's profile of s is planned when it is appended (dh_path_move_q,
- * into its item) and copied into qu->mv when it starts; a joint move is
+ * path's profile of s is planned when it is appended (as
+ * dh_path_move_jerk_q plans it: dh_motion_path_rates_q_, dh_motion_profile_q_)
+ * into its item and copied into qu->mv when it starts; a joint move is
  * planned when it starts, from the last joint command or the tracker's
  * configuration, as dh_move_joint_q plans it (each joint's profile in
  * place by dh_motion_profile_q_, then stretched to the longest): one call

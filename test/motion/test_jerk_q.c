@@ -61,15 +61,18 @@
 #define REL_FD 1e-3
 #define NOISE_FRAC 2.5e-4
 #define ROT_NOISE 3e-6
-#define RING 64   /* ring entries (the micro:bit's RAM) */
-#define CAP 3u
+#define RING 16   /* ring entries (the micro:bit's RAM) */
+#define CAP 1u    /* queue items: each move appended as the queue drains (RAM) */
 
 static dhsm_rig the_rig;
 static dh_track_q the_trk;
-static dh_move_q the_mv;
-static dh_queue_q the_qu;
+/* the executor's move or the queue, one at a time (the micro:bit's RAM) */
+static union {
+    dh_move_q mv;
+    dh_queue_q qu;
+} the_mem;
 static dh_queue_item_q the_items[CAP];
-static int32_t ring[RING][DH_MAX_JOINTS]; /* positions, one every dec periods */
+static int32_t ring[RING][6]; /* positions (6 joints or 3 coordinates), one every dec periods */
 static unsigned char ring_r1[RING];        /* 1 when r was 1 since the entry before */
 
 /* the least window (periods) with k N / (w dt)^m within NOISE_FRAC of lim */
@@ -229,8 +232,10 @@ static void jerk_paths_q_vs_double(void)
         for (m = 1; m <= 3; m++) win[m - 1] += check_fd(&pr, e, &p, &rp, lin, rot, N, m, i);
     }
     DHT_TRUE(win[0] > 10 * n && win[1] > 10 * n && win[2] > 2 * n);
-    dht_printf("%ld jerk-limited moves: T within %.3g of the minimum; windows %ld (speed) %ld (acceleration) %ld (jerk)\n",
-               n, worst_T, win[0], win[1], win[2]);
+    /* integers only: a double's conversion needs more heap than the
+     * micro:bit leaves beside this suite */
+    dht_printf("%ld jerk-limited moves: T within %ld ppb of the minimum; windows %ld (speed) %ld (acceleration) %ld "
+               "(jerk)\n", n, (long)ceil(worst_T * 1e9), win[0], win[1], win[2]);
 }
 
 /* ring entry k periods back (k < RING) */
@@ -274,10 +279,10 @@ static void executor_stop_q(void)
         int32_t ia[DH_MAX_JOINTS];
         dh_cart_limits_q lim;
         dh_cart_jerk_q jk;
-        dh_move_q *const mv = &the_mv;
+        dh_move_q *const mv = &the_mem.mv;
         dh_move_report_q rep;
         dh_frame_q T;
-        long k, k0, len, at = -1, filled = 0, wa;
+        long k, k0, len, at = -1, filled = 0, wa, dec;
         double N, A;
         uint32_t c0 = 0u;
         if (!path_rand(g, (i & 1) != 0, &p, via, ia)) continue;
@@ -289,15 +294,18 @@ static void executor_stop_q(void)
         /* noise: the path and profile, the clock's 1 us at vmax, 1 LSB */
         N = 6.0 + ldexp(p.radius, -26) + lim.vmax * 1e-6 + ldexp((double)p.length, -27);
         A = lim.amax;
-        wa = 1 + window(4.0, N, A, 2) / 4;
+        /* entries dec periods apart, the acceleration's 2 wa within the ring */
+        wa = window(4.0, N, A, 2);
+        dec = 1 + 2 * wa / (RING - 4);
+        wa = 1 + wa / dec;
         for (k = 0; k < 10L * len; k++) {
             const dh_track_state st = (k >= k0 && k < k0 + len) ? DH_TRACK_LAGGING : DH_TRACK_OK;
             DHT_EQ_INT(dh_move_target_q(mv, &T), DH_OK);
-            if (k % 4 == 0) {
+            if (k % dec == 0) {
                 at = (at + 1) % RING;
                 memcpy(ring[at], T.p, 3u * sizeof T.p[0]);
                 filled++;
-                ring_cart(at, filled, 4, wa, N, lim.vmax, A, "executor");
+                ring_cart(at, filled, dec, wa, N, lim.vmax, A, "executor");
             }
             if (k == k0) c0 = mv->clock;
             DHT_EQ_INT(dh_move_advance_q(mv, DT_US, st, &rep), DH_OK);
@@ -357,7 +365,7 @@ static void run_queue(dhsm_rig *g, long kstop, long rest, long *stats)
 {
     static const dh_cart_limits_q LIM = { 250 << 16, 2000 << 16, 45 << 16, 360 << 16 };
     static const dh_cart_jerk_q JK = { 8000 << 16, 3000 << 16 };
-    dh_queue_q *const qu = &the_qu;
+    dh_queue_q *const qu = &the_mem.qu;
     double qa[DH_MAX_JOINTS], qb[DH_MAX_JOINTS], qc[DH_MAX_JOINTS];
     int32_t ia[DH_MAX_JOINTS], ib[DH_MAX_JOINTS], ic[DH_MAX_JOINTS], v[6], a[6], j[6], q[DH_MAX_JOINTS];
     dh_frame_q B, C;
@@ -369,7 +377,7 @@ static void run_queue(dhsm_rig *g, long kstop, long rest, long *stats)
     /* noise (LSB): a joint command's 4 + 2^-27 |d| and 1 us at vmax (NJ),
      * with the tracker's output (N) */
     const double N = 30.0, NJ = 13.0;
-    int i, ok = 0, tries = 0, r1 = 1;
+    int i, ok = 0, tries = 0, r1 = 1, added = 0;
     dh_q30 rprev = DH_Q30_ONE;
     while (!ok && tries++ < 50) {
         dhsm_region_q(g, qa);
@@ -402,14 +410,19 @@ static void run_queue(dhsm_rig *g, long kstop, long rest, long *stats)
     DHT_TRUE(3 * wj < RING);
     DHT_EQ_INT(dh_queue_init_q(qu, the_items, CAP), DH_OK);
     DHT_EQ_INT(dh_track_init_q(&the_trk, &g->r, &g->m, ia, DT_US), DH_OK);
-    DHT_EQ_INT(dh_queue_add_joint_q(qu, 6u, ib, v, a, j), DH_OK);
-    DHT_EQ_INT(dh_queue_add_path_jerk_q(qu, &p, &LIM, &JK), DH_OK);
-    DHT_EQ_INT(dh_queue_add_joint_q(qu, 6u, ia, v, a, j), DH_OK);
     memcpy(q, ia, sizeof q);
     for (k = 0; k < 200000 && done < 3; k++) {
         dh_track_state st = DH_TRACK_OK;
         int32_t qprev[DH_MAX_JOINTS];
         memcpy(qprev, q, sizeof q);
+        /* the three moves appended as the queue drains */
+        if (added < 3 && qu->count < qu->cap) {
+            if (added == 1)
+                DHT_EQ_INT(dh_queue_add_path_jerk_q(qu, &p, &LIM, &JK), DH_OK);
+            else
+                DHT_EQ_INT(dh_queue_add_joint_q(qu, 6u, (added == 0) ? ib : ia, v, a, j), DH_OK);
+            added++;
+        }
         if (k == kstop) DHT_EQ_INT(dh_queue_stop_q(qu), DH_OK);
         if (stopped_at >= 0 && k == stopped_at + rest) DHT_EQ_INT(dh_queue_resume_q(qu), DH_OK);
         DHT_EQ_INT(dh_queue_target_q(qu, &the_trk, &cmd), DH_OK);
@@ -431,7 +444,7 @@ static void run_queue(dhsm_rig *g, long kstop, long rest, long *stats)
         rprev = rep.feed;
         if (k % dec == 0) {
             at = (at + 1) % RING;
-            memcpy(ring[at], q, sizeof ring[0]);
+            memcpy(ring[at], q, sizeof ring[0]);   /* the UR5's 6 joints */
             ring_r1[at] = (unsigned char)r1;
             r1 = 1;
             filled++;
@@ -502,38 +515,38 @@ static void jerk_q_errors(void)
     DHT_EQ_INT(dh_path_move_jerk_q(&pr, &e, &zero, &lim, &jk), DH_ERR_OVERFLOW);
     DHT_TRUE(memcmp(&pr, &none, sizeof pr) == 0 && e == 30u);
     /* the executor: no move on error, a move otherwise */
-    DHT_EQ_INT(dh_move_path_jerk_q(&the_mv, &zero, &lim, &jk), DH_ERR_OVERFLOW);
-    DHT_EQ_INT((int)the_mv.kind, (int)DH_MOVE_NONE);
-    DHT_EQ_INT(dh_move_target_q(&the_mv, &A), DH_ERR_ARG);
+    DHT_EQ_INT(dh_move_path_jerk_q(&the_mem.mv, &zero, &lim, &jk), DH_ERR_OVERFLOW);
+    DHT_EQ_INT((int)the_mem.mv.kind, (int)DH_MOVE_NONE);
+    DHT_EQ_INT(dh_move_target_q(&the_mem.mv, &A), DH_ERR_ARG);
     lim.vmax = 100 << 16;
     jk.jmax = 5000 << 16;
-    DHT_EQ_INT(dh_move_path_jerk_q(&the_mv, &p, &lim, &jk), DH_OK);
-    DHT_EQ_INT((int)the_mv.kind, (int)DH_MOVE_PATH);
-    DHT_EQ_INT((int)the_mv.prof[0].kind, (int)DH_PROFILE_SCURVE);
+    DHT_EQ_INT(dh_move_path_jerk_q(&the_mem.mv, &p, &lim, &jk), DH_OK);
+    DHT_EQ_INT((int)the_mem.mv.kind, (int)DH_MOVE_PATH);
+    DHT_EQ_INT((int)the_mem.mv.prof[0].kind, (int)DH_PROFILE_SCURVE);
     jk.wjmax = 0;
-    DHT_EQ_INT(dh_move_path_jerk_q(&the_mv, &p, &lim, &jk), DH_ERR_ARG);
-    DHT_EQ_INT((int)the_mv.kind, (int)DH_MOVE_NONE);
-    DHT_EQ_INT(dh_move_path_jerk_q(&the_mv, &p, &lim, NULL), DH_OK);
-    DHT_EQ_INT((int)the_mv.prof[0].kind, (int)DH_PROFILE_TRAP);
+    DHT_EQ_INT(dh_move_path_jerk_q(&the_mem.mv, &p, &lim, &jk), DH_ERR_ARG);
+    DHT_EQ_INT((int)the_mem.mv.kind, (int)DH_MOVE_NONE);
+    DHT_EQ_INT(dh_move_path_jerk_q(&the_mem.mv, &p, &lim, NULL), DH_OK);
+    DHT_EQ_INT((int)the_mem.mv.prof[0].kind, (int)DH_PROFILE_TRAP);
     /* the queue */
-    DHT_EQ_INT(dh_queue_init_q(&the_qu, the_items, 1u), DH_OK);
-    DHT_EQ_INT(dh_queue_add_path_jerk_q(&the_qu, &p, &lim, &jk), DH_ERR_ARG);
-    DHT_EQ_INT(the_qu.count, 0u);
+    DHT_EQ_INT(dh_queue_init_q(&the_mem.qu, the_items, 1u), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_jerk_q(&the_mem.qu, &p, &lim, &jk), DH_ERR_ARG);
+    DHT_EQ_INT(the_mem.qu.count, 0u);
     jk.wjmax = 5000 << 16;
     for (i = 0; i < 6; i++) {
         v[i] = 90 << 16;
         a[i] = 360 << 16;
         j[i] = 0;
     }
-    DHT_EQ_INT(dh_queue_add_joint_q(&the_qu, 6u, ia, v, a, j), DH_ERR_ARG);
+    DHT_EQ_INT(dh_queue_add_joint_q(&the_mem.qu, 6u, ia, v, a, j), DH_ERR_ARG);
     j[5] = -5;
-    DHT_EQ_INT(dh_queue_add_joint_q(&the_qu, 6u, ia, v, a, j), DH_ERR_ARG);
-    DHT_EQ_INT(the_qu.count, 0u);
-    DHT_EQ_INT(dh_queue_add_path_jerk_q(&the_qu, &p, &lim, &jk), DH_OK);
-    DHT_EQ_INT(the_qu.items[0].prof.kind, (uint32_t)DH_PROFILE_SCURVE);
-    DHT_EQ_INT(dh_queue_add_path_jerk_q(&the_qu, &p, &lim, &jk), DH_ERR_LIMIT);
-    DHT_EQ_INT(dh_queue_add_path_jerk_q(&the_qu, &p, &lim, NULL), DH_ERR_LIMIT);
-    DHT_EQ_INT(the_qu.count, 1u);
+    DHT_EQ_INT(dh_queue_add_joint_q(&the_mem.qu, 6u, ia, v, a, j), DH_ERR_ARG);
+    DHT_EQ_INT(the_mem.qu.count, 0u);
+    DHT_EQ_INT(dh_queue_add_path_jerk_q(&the_mem.qu, &p, &lim, &jk), DH_OK);
+    DHT_EQ_INT(the_mem.qu.items[0].prof.kind, (uint32_t)DH_PROFILE_SCURVE);
+    DHT_EQ_INT(dh_queue_add_path_jerk_q(&the_mem.qu, &p, &lim, &jk), DH_ERR_LIMIT);
+    DHT_EQ_INT(dh_queue_add_path_jerk_q(&the_mem.qu, &p, &lim, NULL), DH_ERR_LIMIT);
+    DHT_EQ_INT(the_mem.qu.count, 1u);
 }
 
 static const dht_case cases[] = {
