@@ -735,6 +735,7 @@ static union {
             } b;
             dh_queue_item_q qit[1];   /* bt_queue_q's item (its queue in bt_puma_m_u) */
         } u;
+        dh_frame_q tgt;   /* bt_period_q's target (off its stack: the reserve's high-water mark) */
 #if BT_IKC_FLOAT
         dh_ikc_model_f32 mf;
         dh_track_f32 tf;
@@ -1486,6 +1487,16 @@ static uint32_t bt_line_q(const bt_move *mv, dh_robot *r, dh_frame_q *A, dh_fram
  * with the same jerk time as the linear (wjmax / wdmax = jmax / amax) */
 static const dh_cart_jerk_q bt_jerk_q = { 5000 << 16, 900 << 16 };
 
+/* bt_period_q's line into bt_mem's move (its path built in place) and
+ * q = its start, in a frame of its own (the ends A and B not on the stack
+ * under the planning's and the periods' calls); the statuses or'ed */
+static BT_NOINLINE uint32_t bt_period_line_q(const bt_move *mv, dh_robot *r, int32_t *q)
+{
+    dh_frame_q A, B;
+    const uint32_t st = bt_line_q(mv, r, &A, &B, q);
+    return st | (uint32_t)dh_path_line_q(&bt_mem.t.u.mvq.path, &A, &B);
+}
+
 static BT_NOINLINE void bt_period_q(const bt_move *mv, dh_robot *r, const dh_cart_jerk_q *jk)
 {
     dh_track_q *const t = &bt_mem.t.tq;
@@ -1493,22 +1504,21 @@ static BT_NOINLINE void bt_period_q(const bt_move *mv, dh_robot *r, const dh_car
     const dh_cart_limits_q lim = { 250 << 16, 2000 << 16, 90 << 16, 360 << 16 };
     dh_track_report_q rep;
     dh_move_report_q mrep;
-    dh_frame_q A, B, T;
+    dh_frame_q *const T = &bt_mem.t.tgt;
     bt_acc atr = { 0u, 0u }, aper = { 0u, 0u }, nul = { 0u, 0u };
     uint32_t states[3] = { 0u, 0u, 0u };
     uint32_t st, n = 0u, j;
     uint64_t t0, t1, t2, t3;
     int32_t q[6];
-    st = bt_line_q(mv, r, &A, &B, q);
-    st |= (uint32_t)dh_path_line_q(&m->path, &A, &B);
+    st = bt_period_line_q(mv, r, q);
     st |= (uint32_t)dh_move_path_jerk_q(m, &m->path, &lim, jk);
     st |= (uint32_t)dh_track_init_q(t, r, &bt_mem.t.mq, q, 1000u);
     mrep.done = 0;
     while (st == 0u && mrep.done == 0 && n < 4u * BT_NTRK) {
         t0 = bt_now();
-        st |= (uint32_t)dh_move_target_q(m, &T);
+        st |= (uint32_t)dh_move_target_q(m, T);
         t1 = bt_now();
-        st |= (uint32_t)dh_track_step_q(t, &T, q, &rep);
+        st |= (uint32_t)dh_track_step_q(t, T, q, &rep);
         t2 = bt_now();
         st |= (uint32_t)dh_move_advance_q(m, 1000u, rep.state, &mrep);
         t3 = bt_now();

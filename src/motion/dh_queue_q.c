@@ -106,11 +106,33 @@ dh_status dh_queue_add_joint_q(dh_queue_q *qu, uint32_t n, const int32_t *q1, co
     return DH_OK;
 }
 
-/* one body for both path appends; dh_queue_add_path_q's call is its last
- * (a tail call: no frame of its own above the planning, the 256 B guard) */
+/* the planned path move in the free item it (status st of its planning)
+ * appended; called after the planning, not above it (the 256 B guard) */
+static dh_status queueq_path_item(dh_queue_q *qu, dh_queue_item_q *it, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                  dh_status st)
+{
+    if (st != DH_OK) return st;
+    it->e = dh_motion_path_e_q_(&it->prof);
+    it->path = *p;
+    it->lim = *lim;
+    it->n = 0u;
+    it->kind = (uint32_t)DH_MOVE_PATH;
+    qu->count++;
+    return DH_OK;
+}
+
+/* Each append plans as dh_path_move_jerk_q does, its two steps called
+ * from here, into the free item */
 dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim)
 {
-    return dh_queue_add_path_jerk_q(qu, p, lim, NULL);
+    dh_queue_item_q *it;
+    dh_status st;
+    DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
+    it = queueq_free(qu);
+    if (it == NULL) return DH_ERR_LIMIT;
+    st = dh_motion_path_rates_q_(&it->prof, p, lim, NULL);
+    if (st == DH_OK) st = dh_motion_profile_q_(&it->prof);
+    return queueq_path_item(qu, it, p, lim, st);
 }
 
 dh_status dh_queue_add_path_jerk_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim,
@@ -121,18 +143,9 @@ dh_status dh_queue_add_path_jerk_q(dh_queue_q *qu, const dh_path_q *p, const dh_
     DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
     it = queueq_free(qu);
     if (it == NULL) return DH_ERR_LIMIT;
-    /* planned as dh_path_move_jerk_q does, its two steps called from here
-     * (the 256 B guard) */
     st = dh_motion_path_rates_q_(&it->prof, p, lim, jerk);
     if (st == DH_OK) st = dh_motion_profile_q_(&it->prof);
-    if (st != DH_OK) return st;
-    it->e = dh_motion_path_e_q_(&it->prof);
-    it->path = *p;
-    it->lim = *lim;
-    it->n = 0u;
-    it->kind = (uint32_t)DH_MOVE_PATH;
-    qu->count++;
-    return DH_OK;
+    return queueq_path_item(qu, it, p, lim, st);
 }
 
 /* the running move's clock and warp at its start (dh_move_q.c's rule) */
