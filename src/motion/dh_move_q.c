@@ -293,7 +293,8 @@ DH_NOINLINE int32_t dh_motion_feed_bound_q_(const dh_profile_q *pr, int32_t A, u
     const uint64_t back = ((uint64_t)(uint32_t)r * dt) >> 30;
     const uint32_t ta = (uint32_t)(((uint64_t)(uint32_t)pr->xa * pr->T) >> 30);
     const uint32_t u = (clock < pr->T) ? ((clock < pr->T - clock) ? clock : pr->T - clock) : 0u;
-    const uint64_t ku = (uint64_t)pr->a * (u + 1u);
+    const uint32_t u1 = u + 1u;
+    const uint64_t ku = (uint64_t)pr->a * u1;
     uint64_t K = (uint64_t)pr->v * MOVEQ_DT_MAX, num, den;
     int64_t hi = pr->a, lo = -pr->a;
     if (u == 0u) return DH_Q30_ONE;
@@ -302,7 +303,8 @@ DH_NOINLINE int32_t dh_motion_feed_bound_q_(const dh_profile_q *pr, int32_t A, u
         hi = moveq_acc(pr, ta, (int64_t)clock - (int64_t)back - 2);
         lo = moveq_acc(pr, ta, (int64_t)clock + dt + 2);
     } else if (pr->kind == (uint32_t)DH_PROFILE_SCURVE) {
-        const uint64_t jw = (uint64_t)(uint32_t)pr->j * (((back > dt) ? (uint32_t)back : dt) + 4u);
+        const uint32_t w = ((back > dt) ? (uint32_t)back : dt) + 4u;
+        const uint64_t jw = (uint64_t)(uint32_t)pr->j * w;
         const int64_t d = (int64_t)(((jw >> 20) * MOVEQ_US2S40) >> 20) + 4;
         if (u >= ta || clock > pr->T - clock) hi = (d < pr->a) ? d : pr->a;
         if (u >= ta || clock <= pr->T - clock) lo = (d < pr->a) ? -d : -(int64_t)pr->a;

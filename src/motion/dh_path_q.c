@@ -711,7 +711,7 @@ static DH_NOINLINE dh_status pathq_rates(dh_profile_q *prof, const dh_path_q *p,
      * over the angle, the smaller */
     for (k = 0; k < ((jk != NULL) ? 3 : 2); k++) {
         const int32_t tool = (k == 0) ? prof->v : ((k == 1) ? prof->a : prof->j);
-        const int32_t rot = (k == 0) ? lim->wmax : ((k == 1) ? lim->wdmax : jk->wjmax);
+        const int32_t rot = (k == 0) ? lim->wmax : ((k == 1 || jk == NULL) ? lim->wdmax : jk->wjmax);
         if (p->length > 0) pathq_bound(&b[k], (uint32_t)tool, (uint32_t)p->length);
         if (p->angle > 0) pathq_bound(&b[k], (uint32_t)rot, (uint32_t)p->angle);
     }
