@@ -735,7 +735,6 @@ static union {
             } b;
             dh_queue_item_q qit[1];   /* bt_queue_q's item (its queue in bt_puma_m_u) */
         } u;
-        dh_frame_q tgt;   /* bt_period_q's target (off its stack: the reserve's high-water mark) */
 #if BT_IKC_FLOAT
         dh_ikc_model_f32 mf;
         dh_track_f32 tf;
@@ -1480,45 +1479,30 @@ static uint32_t bt_line_q(const bt_move *mv, dh_robot *r, dh_frame_q *A, dh_fram
 /* twin: bt_period_f32 on the fixed types and calls, the robot in mm
  * (0.25 m/s and 2 m/s^2 as 250 mm/s and 2000 mm/s^2): the period timed
  * whole, and within it the tracker call on its own ("dh_track_step_q
- * line": the rest of the period is the move's target and advance); with
- * jk the jerk-limited move of the same line (dh_move_path_jerk_q, "move
- * period jerk q") */
-/* the jerk limits of "move period jerk q": 5000 mm/s^3, the angular one
- * with the same jerk time as the linear (wjmax / wdmax = jmax / amax) */
-static const dh_cart_jerk_q bt_jerk_q = { 5000 << 16, 900 << 16 };
-
-/* bt_period_q's line into bt_mem's move (its path built in place) and
- * q = its start, in a frame of its own (the ends A and B not on the stack
- * under the planning's and the periods' calls); the statuses or'ed */
-static BT_NOINLINE uint32_t bt_period_line_q(const bt_move *mv, dh_robot *r, int32_t *q)
-{
-    dh_frame_q A, B;
-    const uint32_t st = bt_line_q(mv, r, &A, &B, q);
-    return st | (uint32_t)dh_path_line_q(&bt_mem.t.u.mvq.path, &A, &B);
-}
-
-static BT_NOINLINE void bt_period_q(const bt_move *mv, dh_robot *r, const dh_cart_jerk_q *jk)
+ * line": the rest of the period is the move's target and advance) */
+static BT_NOINLINE void bt_period_q(const bt_move *mv, dh_robot *r)
 {
     dh_track_q *const t = &bt_mem.t.tq;
     dh_move_q *const m = &bt_mem.t.u.mvq;
     const dh_cart_limits_q lim = { 250 << 16, 2000 << 16, 90 << 16, 360 << 16 };
     dh_track_report_q rep;
     dh_move_report_q mrep;
-    dh_frame_q *const T = &bt_mem.t.tgt;
+    dh_frame_q A, B, T;
     bt_acc atr = { 0u, 0u }, aper = { 0u, 0u }, nul = { 0u, 0u };
     uint32_t states[3] = { 0u, 0u, 0u };
     uint32_t st, n = 0u, j;
     uint64_t t0, t1, t2, t3;
     int32_t q[6];
-    st = bt_period_line_q(mv, r, q);
-    st |= (uint32_t)dh_move_path_jerk_q(m, &m->path, &lim, jk);
+    st = bt_line_q(mv, r, &A, &B, q);
+    st |= (uint32_t)dh_path_line_q(&m->path, &A, &B);
+    st |= (uint32_t)dh_move_path_q(m, &m->path, &lim);
     st |= (uint32_t)dh_track_init_q(t, r, &bt_mem.t.mq, q, 1000u);
     mrep.done = 0;
     while (st == 0u && mrep.done == 0 && n < 4u * BT_NTRK) {
         t0 = bt_now();
-        st |= (uint32_t)dh_move_target_q(m, T);
+        st |= (uint32_t)dh_move_target_q(m, &T);
         t1 = bt_now();
-        st |= (uint32_t)dh_track_step_q(t, T, q, &rep);
+        st |= (uint32_t)dh_track_step_q(t, &T, q, &rep);
         t2 = bt_now();
         st |= (uint32_t)dh_move_advance_q(m, 1000u, rep.state, &mrep);
         t3 = bt_now();
@@ -1536,11 +1520,10 @@ static BT_NOINLINE void bt_period_q(const bt_move *mv, dh_robot *r, const dh_car
         t1 = bt_now();
         bt_acc_add(&nul, t0, t1);
     }
-    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|%lu|%lu|%lu|%lu\n",
-           (jk != NULL) ? "move period jerk q" : "move period q", mv->robot, "mm", (unsigned long)n,
-           (unsigned long long)aper.sum, (unsigned long long)nul.sum, (unsigned long long)aper.max,
-           (unsigned long)states[0], (unsigned long)states[1], (unsigned long)states[2], (unsigned long)st);
-    if (jk != NULL) return;
+    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|%lu|%lu|%lu|%lu\n", "move period q", mv->robot, "mm",
+           (unsigned long)n, (unsigned long long)aper.sum, (unsigned long long)nul.sum,
+           (unsigned long long)aper.max, (unsigned long)states[0], (unsigned long)states[1],
+           (unsigned long)states[2], (unsigned long)st);
     printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|0|0|0|%lu\n", "dh_track_step_q line", mv->robot, "mm",
            (unsigned long)n, (unsigned long long)atr.sum, (unsigned long long)nul.sum,
            (unsigned long long)atr.max, (unsigned long)st);
@@ -1693,8 +1676,7 @@ static void bt_track(void)
         bt_period_f32(&bt_moves[m], &bt_puma_m);
 #endif
         bt_track_q(&bt_moves[m], &bt_puma_mm, &null);
-        bt_period_q(&bt_moves[m], &bt_puma_mm, NULL);
-        bt_period_q(&bt_moves[m], &bt_puma_mm, &bt_jerk_q);
+        bt_period_q(&bt_moves[m], &bt_puma_mm);
         bt_blend_q(&bt_moves[m], &bt_puma_mm);
         bt_queue_q(&bt_moves[m], &bt_puma_mm);
     }

@@ -51,7 +51,6 @@ TRACK_TARGETS = [
      "period of a line move, float, Puma 560, Cortex-M4F"),
     ("m0", "move period q (UR5, mm)", 45000, "period of a line move, fixed, UR5, Cortex-M0"),
     ("m0", "move period q (Puma 560, mm)", 45000, "period of a line move, fixed, Puma 560, Cortex-M0"),
-    ("m0", "move period jerk q (UR5, mm)", 45000, "period of a jerk-limited line move, fixed, UR5, Cortex-M0"),
     ("m0", "queue period q (UR5, mm)", 45000, "period of a queued line, stopped and resumed, fixed, UR5, Cortex-M0"),
     ("m0", "queue period q (Puma 560, mm)", 45000,
      "period of a queued line, stopped and resumed, fixed, Puma 560, Cortex-M0"),
