@@ -81,6 +81,8 @@ typedef struct {
     float rad[MOVE_MAX_SEG];             /* its corners' radii (all --blend) */
     double dt;
     int jerk;
+    int32_t jq[DH_MAX_JOINTS]; /* --fixed --jerk: the joints' jerk limits (Q16.16 deg/s^3, dh_qpos/s^3) */
+    dh_cart_jerk_q cjq;        /* --fixed --jerk: the Cartesian segments' jerk limits */
     cli_outbuf out;
     double periods;   /* periods printed so far */
     double bad;       /* periods not ok */
@@ -524,9 +526,9 @@ static int move_run(const move_args *a, move_plan *p)
 /* --fixed with an option the fixed-point motion API does not offer: exit 2 */
 static int move_fixed_check(const move_args *a)
 {
-    if (a->jerk)
-        return cli_error("move --fixed --jerk", "jerk-limited moves are not in the fixed-point executor; run --jerk "
-                         "without --fixed");
+    if (a->jerk && a->blend)
+        return cli_error("move --fixed --jerk --blend", "the fixed-point blended corners are not jerk-limited; run "
+                         "--fixed --jerk without --blend, or --blend --jerk without --fixed");
     return 0;
 }
 
@@ -569,6 +571,21 @@ static int move_lim_q(const char *opt, float v, double scale, int32_t *out)
     return 0;
 }
 
+/* --fixed --jerk with a joint segment: every joint's jerk limit J in its
+ * fixed format (Q16.16 deg/s^3, dh_qpos/s^3) */
+static int move_jerk_q(const move_args *a, move_plan *p)
+{
+    const double one = (double)((int32_t)1 << DH_QPOS_FRAC);
+    unsigned i, joint = 0;
+    int rc;
+    for (i = 0; i < a->nseg; i++) joint += a->seg[i].kind == SEG_JOINT;
+    for (i = 0; i < p->r.n && p->jerk && joint; i++) {
+        const double scale = (p->r.joint[i].type == DH_JOINT_REVOLUTE) ? 65536.0 : one;
+        if ((rc = move_lim_q("--jerk", p->jmax[i], scale, &p->jq[i])) != 0) return rc;
+    }
+    return 0;
+}
+
 /* The fixed-point set-up: dt in whole microseconds, the robot's fixed path,
  * q0 and the limits in their formats, the closed-form model (*mp) */
 static int move_fixed_setup(const move_args *a, move_plan *p, uint32_t *us, int32_t *q, dh_cart_limits_q *lim,
@@ -590,7 +607,12 @@ static int move_fixed_setup(const move_args *a, move_plan *p, uint32_t *us, int3
         if ((rc = move_lim_q("--accel", p->lim.amax, one, &lim->amax)) != 0) return rc;
         if ((rc = move_lim_q("--rspeed", p->lim.wmax, 65536.0, &lim->wmax)) != 0) return rc;
         if ((rc = move_lim_q("--raccel", p->lim.wdmax, 65536.0, &lim->wdmax)) != 0) return rc;
+        if (p->jerk && (rc = move_lim_q("--jerk", p->cj.jmax, one, &p->cjq.jmax)) != 0) return rc;
+        if (p->jerk && (rc = move_lim_q("--jerk (the angular jerk J * raccel / accel)", p->cj.wjmax, 65536.0,
+                                        &p->cjq.wjmax)) != 0)
+            return rc;
     }
+    if ((rc = move_jerk_q(a, p)) != 0) return rc;
     *mp = (dh_ikc_analyse_q(&p->r, m) == DH_OK && m->kind != DH_IKC_NONE) ? m : NULL;
     return 0;
 }
@@ -642,7 +664,7 @@ static int queue_add_q(move_plan *p, unsigned i, const move_seg *s, dh_queue_q *
             vq[j] = p->r.joint[j].vmax_q;
             aq[j] = p->r.joint[j].amax_q;
         }
-        st = dh_queue_add_joint_q(qu, p->r.n, q1, vq, aq);
+        st = dh_queue_add_joint_q(qu, p->r.n, q1, vq, aq, p->jerk ? p->jq : NULL);
         if (st != DH_OK) return seg_error(i, s, "the fixed-point joint move cannot be queued", dh_status_str(st));
         if ((st = dh_fk_q(&p->r, q1, F)) != DH_OK) return seg_error(i, s, "FK of the end", dh_status_str(st));
         return 0;
@@ -653,7 +675,7 @@ static int queue_add_q(move_plan *p, unsigned i, const move_seg *s, dh_queue_q *
         if (!(R < 2147483647.0)) return cli_error("--blend", "the radius does not fit the fixed-point length format");
         st = dh_queue_add_path_blend_q(qu, &path, lim, (dh_qpos)R);
     } else {
-        st = dh_queue_add_path_q(qu, &path, lim);
+        st = dh_queue_add_path_jerk_q(qu, &path, lim, p->jerk ? &p->cjq : NULL);
     }
     if (st != DH_OK) return seg_error(i, s, "the fixed-point move along the path cannot be planned", path_why(st));
     *F = B;

@@ -26,9 +26,9 @@
  *                    dh_profile_eval_q
  *   dh_joint_move_q.c dh_joint_move_q, dh_joint_move_eval_q
  *   dh_path_q.c      dh_path_line_q, dh_path_arc_q, dh_path_eval_q,
- *                    dh_path_move_q, dh_path_move_eval_q
+ *                    dh_path_move_q, dh_path_move_jerk_q, dh_path_move_eval_q
  *   dh_move_q.c      dh_move_joint_q, dh_move_joint_step_q, dh_move_path_q,
- *                    dh_move_target_q, dh_move_advance_q
+ *                    dh_move_path_jerk_q, dh_move_target_q, dh_move_advance_q
  *   dh_blend_q.c     dh_blend_seq_plan_q, dh_blend_seq_eval_q
  */
 /**
@@ -1430,6 +1430,47 @@ typedef struct {
 dh_status dh_path_move_q(dh_profile_q *prof, uint32_t *e, const dh_path_q *p, const dh_cart_limits_q *lim);
 
 /**
+ * @brief Jerk limits of a fixed-point Cartesian move (the twin of
+ *        dh_cart_jerk_f32): magnitudes of the tool point's TOTAL jerk and
+ *        of the tool's angular jerk, each > 0.
+ */
+typedef struct {
+    int32_t jmax;  /**< linear jerk, total |d^3 p / dt^3|, dh_qpos per s^3 */
+    int32_t wjmax; /**< angular jerk, Q16.16 deg/s^3 */
+} dh_cart_jerk_q;
+
+/**
+ * @brief Fixed twin of dh_path_move_jerk_f32: prof = the time-optimal
+ *        seven-phase profile (dh_profile_scurve_q) of the path parameter
+ *        along p within lim and jerk, on the distance D = 2^e LSB as
+ *        dh_path_move_q. Rates of s as dh_path_move_q and
+ *        s''' <= min(Jt / length, wjmax / angle); on a line Jt = jmax; on
+ *        an arc of radius R, V is further held to floor(cbrt(jmax R^2 / 4)),
+ *        At to floor(jmax R / (12 V)) and Jt = floor(jmax / 2), so the
+ *        TOTAL jerk |x''' - x'^3 / R^2| + 3 x' |x''| / R (x the arc length)
+ *        is within jmax and the total acceleration within amax (method:
+ *        docs/design.md, "Paths and moves, fixed point"). e is the largest
+ *        exponent <= 30 for which all three rates times 2^e fit int32.
+ *        Integer only, no division by a variable in a period.
+ * @param prof output (kind DH_PROFILE_SCURVE of d = 2^e; d = 0 and T = 0
+ *        when length and angle are 0).
+ * @param e output exponent, 0..30 (30 for no motion).
+ * @param p path from dh_path_line_q or dh_path_arc_q.
+ * @param lim limits, each > 0.
+ * @param jerk jerk limits, each > 0; NULL: dh_path_move_q (the trapezoid).
+ * Speed, total acceleration, total jerk and angular rates of the
+ * profile's motion within lim and jerk up to 1e-8 relative (the held
+ * shape, dh_profile_scurve_q); T the seven-phase minimum for the rates of
+ * s within 1 us + 2^-26 T.
+ * @return DH_OK; DH_ERR_ARG for a limit <= 0 or a p that holds no path;
+ *         DH_ERR_OVERFLOW when a rate of s does not fit int32 at e = 0 or
+ *         rounds to 0, or as dh_profile_scurve_q. On error *prof is all
+ *         zero and *e is 30 (no move).
+ */
+dh_status dh_path_move_jerk_q(dh_profile_q *prof, uint32_t *e, const dh_path_q *p, const dh_cart_limits_q *lim,
+                              const dh_cart_jerk_q *jerk);
+
+/**
  * @brief Fixed twin of dh_path_move_eval_f32: T = the frame of the move
  *        (prof, e, p) at time t (us): dh_path_eval_q at s = the profile's
  *        position times 2^(30 - e); t == 0 gives p->A and t >= prof->T
@@ -1526,6 +1567,26 @@ dh_status dh_move_joint_step_q(dh_move_q *mv, uint32_t dt, int32_t *q, dh_move_r
  *         (its path as it was).
  */
 dh_status dh_move_path_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_limits_q *lim);
+
+/**
+ * @brief Fixed twin of dh_move_path_jerk_f32: starts a jerk-limited
+ *        Cartesian move along p within lim and jerk (dh_path_move_jerk_q),
+ *        executed as a move of dh_move_path_q (dh_move_target_q,
+ *        dh_move_advance_q): only the profile of s differs.
+ * @param mv output move (kind DH_MOVE_PATH, clock 0, dur the profile's T;
+ *        p copied).
+ * @param p path from dh_path_line_q or dh_path_arc_q; may be &mv->path.
+ * @param lim Cartesian limits, each > 0.
+ * @param jerk jerk limits, each > 0; NULL: dh_move_path_q.
+ * The jerk bound holds while the feed override r is constant (1 while the
+ * tracker is OK); while r changes, speed and acceleration stay within lim
+ * and the jerk is not bounded by jerk (docs/design.md).
+ * @return DH_OK; DH_ERR_ARG for a limit <= 0 or a p that holds no path;
+ *         DH_ERR_OVERFLOW as dh_path_move_jerk_q. On error mv holds no
+ *         move (its path as it was).
+ */
+dh_status dh_move_path_jerk_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_limits_q *lim,
+                              const dh_cart_jerk_q *jerk);
 
 /**
  * @brief Fixed twin of dh_move_target_f32: T = the frame to track this
@@ -1676,6 +1737,7 @@ typedef struct {
     int32_t q1[DH_MAX_JOINTS];   /**< joint move: end configuration */
     int32_t vmax[DH_MAX_JOINTS]; /**< joint move: velocity limits (LSB/s) */
     int32_t amax[DH_MAX_JOINTS]; /**< joint move: acceleration limits (LSB/s^2) */
+    int32_t jmax[DH_MAX_JOINTS]; /**< joint move: jerk limits (LSB/s^3; 0: the trapezoid) */
     uint32_t n;                  /**< joint move: number of joints */
     uint32_t kind;               /**< DH_MOVE_JOINT or DH_MOVE_PATH */
     dh_blend_seg_q seg;          /**< blended line (dh_queue_add_path_blend_q): its scaling of s (prof then bounds it) */
@@ -1746,20 +1808,23 @@ dh_status dh_queue_init_q(dh_queue_q *qu, dh_queue_item_q *items, uint32_t cap);
 
 /**
  * @brief Appends a joint move of n joints to q1 within vmax and amax
- *        (trapezoids: the fixed queue has no jerk-limited joint move), as
+ *        (and jmax when not NULL: seven-phase profiles), as
  *        dh_move_joint_q plans it when it starts: from the last joint
  *        command, or after a path move from the tracker's configuration.
  * @param qu queue from dh_queue_init_q.
  * @param n number of joints, 1..DH_MAX_JOINTS (the tracker's robot's).
  * @param q1 end configuration (n; Q16.16 degrees or dh_qpos), within the
  *        robot's limits.
- * @param vmax, amax limits (n each, LSB/s and LSB/s^2, > 0).
+ * @param vmax, amax, jmax limits (n each, LSB/s, LSB/s^2 and LSB/s^3,
+ *        > 0); jmax may be NULL (trapezoids). The jerk bound holds while
+ *        the move's time warp is 1 (not during a stop or a resume, which
+ *        keep velocity and acceleration within vmax and amax).
  * @return DH_OK; DH_ERR_ARG for n outside 1..DH_MAX_JOINTS or a limit
  *         <= 0; DH_ERR_LIMIT when the queue holds cap moves already
  *         (nothing is overwritten). On error qu and its items are untouched.
  */
 dh_status dh_queue_add_joint_q(dh_queue_q *qu, uint32_t n, const int32_t *q1, const int32_t *vmax,
-                               const int32_t *amax);
+                               const int32_t *amax, const int32_t *jmax);
 
 /**
  * @brief Appends a Cartesian move along p within lim (dh_move_path_q):
@@ -1807,6 +1872,23 @@ dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_
  */
 dh_status dh_queue_add_path_blend_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim,
                                     dh_qpos radius);
+
+/**
+ * @brief Appends a jerk-limited Cartesian move along p within lim and
+ *        jerk (dh_move_path_jerk_q), otherwise as dh_queue_add_path_q.
+ * @param qu queue from dh_queue_init_q.
+ * @param p path from dh_path_line_q or dh_path_arc_q (copied).
+ * @param lim Cartesian limits, each > 0 (copied).
+ * @param jerk jerk limits, each > 0; NULL: dh_queue_add_path_q.
+ * The jerk bound holds while the feed override is constant (not during a
+ * stop, a resume or a slow-down for the tracker, which keep speed and
+ * acceleration within lim).
+ * @return DH_OK; DH_ERR_LIMIT when the queue is full (checked first);
+ *         DH_ERR_ARG, DH_ERR_OVERFLOW as dh_move_path_jerk_q. On error qu
+ *         and its queued items are untouched.
+ */
+dh_status dh_queue_add_path_jerk_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                   const dh_cart_jerk_q *jerk);
 
 /**
  * @brief Begins a control period of dt = t->dt_us: the command of the

@@ -170,18 +170,40 @@ dh_status dh_move_joint_step_q(dh_move_q *mv, uint32_t dt, int32_t *q, dh_move_r
     return DH_OK;
 }
 
-dh_status dh_move_path_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_limits_q *lim)
+/* the path move of the profile planned into mv->prof[0] (its status st),
+ * started */
+static dh_status moveq_path_start(dh_move_q *mv, const dh_path_q *p, dh_status st)
 {
-    dh_status st;
-    DH_ASSERT(mv != NULL && p != NULL && lim != NULL);
-    mv->kind = (uint32_t)DH_MOVE_NONE;
-    st = dh_path_move_q(&mv->prof[0], &mv->e, p, lim);
     if (st != DH_OK) return st;
+    mv->e = dh_motion_path_e_q_(&mv->prof[0]);
     mv->path = *p;
     mv->n = 0u;
     dh_motion_start_q_(mv, mv->prof[0].T);
     mv->kind = (uint32_t)DH_MOVE_PATH;
     return DH_OK;
+}
+
+/* The path moves plan as dh_path_move_jerk_q does, its two steps called
+ * from here (the 256 B guard) */
+dh_status dh_move_path_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_limits_q *lim)
+{
+    dh_status st;
+    DH_ASSERT(mv != NULL && p != NULL && lim != NULL);
+    mv->kind = (uint32_t)DH_MOVE_NONE;
+    st = dh_motion_path_rates_q_(&mv->prof[0], p, lim, NULL);
+    if (st == DH_OK) st = dh_motion_profile_q_(&mv->prof[0]);
+    return moveq_path_start(mv, p, st);
+}
+
+dh_status dh_move_path_jerk_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_limits_q *lim,
+                              const dh_cart_jerk_q *jerk)
+{
+    dh_status st;
+    DH_ASSERT(mv != NULL && p != NULL && lim != NULL);
+    mv->kind = (uint32_t)DH_MOVE_NONE;
+    st = dh_motion_path_rates_q_(&mv->prof[0], p, lim, jerk);
+    if (st == DH_OK) st = dh_motion_profile_q_(&mv->prof[0]);
+    return moveq_path_start(mv, p, st);
 }
 
 dh_status dh_move_target_q(const dh_move_q *mv, dh_frame_q *T)
@@ -243,36 +265,51 @@ static int32_t moveq_acc(const dh_profile_q *pr, uint32_t ta, int64_t t)
     return 0;
 }
 
+/* 2^40 / 10^6, rounded up */
+#define MOVEQ_US2S40 1099512u
+
 /* The largest rise (rise 1) or fall (rise 0) of r this period that keeps
  * the commanded acceleration of the profile pr (along the travel) within
  * A (file comment), r the warp of the last period; 2^30 (no bound) where
- * s' is 0 (at rest at the clock). The profiles run here are trapezoids,
- * whose s'' falls monotonically (+a, 0, -a): over the last period and the
- * next, [clock - r dt, clock + dt], it lies between its values 2 us before
- * and after them (the margin covers the rounding of the phase times ta),
- * hi and lo. s' at the clock is bounded above by a u (u the time to the
- * nearer end plus 1 us, within ta of it) and by the peak v: K = 10^6 s'
- * (LSB us/s^2, below 2^61), k = K / dt, and the quotients of the file
- * comment multiplied through by dt (no quotient for k). A larger K and hi
- * and a smaller lo only lower the bounds; another profile kind takes s''
- * within +-a and s' at v. */
+ * s' is 0 (at rest at the clock). Over the last period and the next,
+ * [clock - r dt, clock + dt], s'' lies between hi and lo: a trapezoid's
+ * s'' falls monotonically (+a, 0, -a), so there its values 2 us before
+ * and after the window (the margin covers the rounding of the phase times
+ * ta). A seven-phase profile's s'' is continuous, >= 0 in the first half,
+ * <= 0 in the second, 0 in the cruise, and changes at most at j, so over
+ * the window it is within [-j w, a] in the first half's acceleration,
+ * [-a, j w] in the second half's deceleration and [-j w, j w] in the
+ * cruise, w the longer side of the window plus 4 us (the rounding of ta
+ * and of the clock), j w / 10^6 rounded up by 4 LSB/s^2 (a multiply by
+ * 2^40 / 10^6 after a shift: within 2). Another profile kind takes +-a.
+ * s' at the clock is bounded above by a (u + 1 us) (|s''| <= a and s' = 0
+ * at the ends; u the time to the nearer end) and by the peak v:
+ * K = 10^6 s' (LSB us/s^2, below 2^62), k = K / dt, and the quotients of
+ * the file comment multiplied through by dt (no quotient for k). A larger
+ * K and hi and a smaller lo only lower the bounds. */
 DH_NOINLINE int32_t dh_motion_feed_bound_q_(const dh_profile_q *pr, int32_t A, uint32_t clock, dh_q30 r, uint32_t dt,
                                             int rise)
 {
     const uint64_t back = ((uint64_t)(uint32_t)r * dt) >> 30;
     const uint32_t ta = (uint32_t)(((uint64_t)(uint32_t)pr->xa * pr->T) >> 30);
     const uint32_t u = (clock < pr->T) ? ((clock < pr->T - clock) ? clock : pr->T - clock) : 0u;
+    const uint32_t u1 = u + 1u;
+    const uint64_t ku = (uint64_t)pr->a * u1;
     uint64_t K = (uint64_t)pr->v * MOVEQ_DT_MAX, num, den;
     int64_t hi = pr->a, lo = -pr->a;
     if (u == 0u) return DH_Q30_ONE;
+    if (ku < K) K = ku;
     if (pr->kind == (uint32_t)DH_PROFILE_TRAP) {
-        if (u <= ta) {
-            const uint32_t u1 = u + 1u;
-            const uint64_t ku = (uint64_t)pr->a * u1;
-            if (ku < K) K = ku;
-        }
         hi = moveq_acc(pr, ta, (int64_t)clock - (int64_t)back - 2);
         lo = moveq_acc(pr, ta, (int64_t)clock + dt + 2);
+    } else if (pr->kind == (uint32_t)DH_PROFILE_SCURVE) {
+        const uint32_t w = ((back > dt) ? (uint32_t)back : dt) + 4u;
+        const uint64_t jw = (uint64_t)(uint32_t)pr->j * w;
+        const int64_t d = (int64_t)(((jw >> 20) * MOVEQ_US2S40) >> 20) + 4;
+        if (u >= ta || clock > pr->T - clock) hi = (d < pr->a) ? d : pr->a;
+        if (u >= ta || clock <= pr->T - clock) lo = (d < pr->a) ? -d : -(int64_t)pr->a;
+    } else {
+        /* the quintic: +-a */
     }
     if (rise != 0) {
         /* (A - p r^2) dt / (K + (2 p r + p) dt), p = max(hi, 0), the denominator rounded up */

@@ -50,6 +50,16 @@
  * den) (bit-serial): below the float rate, never above. So the rates of s
  * do not meet the 32767 units/s^k cap of the fixed profiles for any
  * speed; the position resolution of s is 2^-e of the path.
+ *
+ * A jerk-limited move (dh_path_move_jerk_q) plans the seven-phase profile
+ * instead, with a third rate s''' <= min(Jt / length, wjmax / angle). On
+ * a line Jt = jmax; on an arc the float twin's split of the TOTAL jerk:
+ * V also <= cbrt(jmax R^2 / 4) (the largest integer v with
+ * 4 v^3 <= jmax R^2, compared as 96-bit products), At from that V and
+ * then <= floor(jmax R / (12 V)), Jt = floor(jmax / 2), so
+ * |x'''| + x'^3 / R^2 + 3 x' |x''| / R <= jmax / 2 + jmax / 4 + jmax / 4
+ * for the rounded V and At (docs/design.md, "Paths and moves, fixed
+ * point").
  */
 #include <string.h>
 
@@ -573,32 +583,68 @@ dh_status dh_path_eval_q(const dh_path_q *p, dh_q30 s, dh_frame_q *T)
 
 /* ---- moves -------------------------------------------------------------- */
 
-/* A bound num / den on a rate of s; den 0: none */
+/* A bound num / den on a rate of s (num, den below 2^31); den 0: none */
 typedef struct {
-    uint64_t num;
-    uint64_t den;
+    uint32_t num;
+    uint32_t den;
 } pathq_rate;
 
-/* *b = min(*b, num / den) for den > 0 (exact cross products: num, den below 2^31) */
-static void pathq_bound(pathq_rate *b, uint64_t num, uint64_t den)
+/* *b = min(*b, num / den) for den > 0 (exact cross products) */
+DH_INLINE void pathq_bound(pathq_rate *b, uint32_t num, uint32_t den)
 {
     if (den == 0u) return;
-    if (b->den == 0u || num * b->den < b->num * den) {
+    if (b->den == 0u || (uint64_t)num * b->den < (uint64_t)b->num * den) {
         b->num = num;
         b->den = den;
     }
 }
 
-/* The speed V and tangential acceleration At (LSB/s, /s^2) of an arc of
- * radius R within lim, both rounded down (file comment) */
-static DH_NOINLINE void pathq_arc_rates(uint32_t R, const dh_cart_limits_q *lim, uint32_t *V, uint32_t *At)
+/* 1 when x y > z w (x, z below 2^64, y, w below 2^32): both 96-bit
+ * products compared as their top 64 bits and low 32 bits */
+static int pathq_gt96(uint64_t x, uint32_t y, uint64_t z, uint32_t w)
+{
+    const uint64_t xl = (x & 0xFFFFFFFFu) * y, zl = (z & 0xFFFFFFFFu) * w;
+    const uint64_t xh = (x >> 32) * y + (xl >> 32), zh = (z >> 32) * w + (zl >> 32);
+    if (xh != zh) return xh > zh;
+    return (xl & 0xFFFFFFFFu) > (zl & 0xFFFFFFFFu);
+}
+
+/* The largest v <= cap (1 <= cap < 2^31) with 4 v^3 <= jmax R^2
+ * (v = floor(cbrt(jmax R^2 / 4)), the speed bound of a jerk-limited
+ * arc), at least 1: one bit per step from the top, 4 v^2 below 2^64 and
+ * jmax R^2 below 2^91 compared as 96-bit products */
+static DH_NOINLINE uint32_t pathq_arc_vj(uint32_t R, uint32_t jmax, uint32_t cap)
+{
+    const uint64_t R2 = (uint64_t)R * R;
+    uint32_t v = 0u, bit = 0x40000000u;
+    while (bit != 0u) {
+        const uint32_t t = v | bit;
+        if (t <= cap && !pathq_gt96(4u * ((uint64_t)t * t), t, R2, jmax)) v = t;
+        bit >>= 1;
+    }
+    return (v == 0u) ? 1u : v;
+}
+
+/* The speed bound V (LSB/s) of an arc of radius R within lim:
+ * min(vmax, sqrt(amax R / sqrt 2)) rounded down, at least 1 (file
+ * comment) */
+static DH_NOINLINE uint32_t pathq_arc_v(uint32_t R, const dh_cart_limits_q *lim)
+{
+    uint32_t v = (uint32_t)(((uint64_t)dh_q_sqrt_u64((uint64_t)(uint32_t)lim->amax * R) * PATHQ_R4SQRT2) >> 30);
+    if (v > (uint32_t)lim->vmax) v = (uint32_t)lim->vmax;
+    return (v == 0u) ? 1u : v;
+}
+
+/* The tangential acceleration At (LSB/s^2) of an arc of radius R at the
+ * speed v within lim: amax sqrt(1 - (v^2 / (amax R))^2) rounded down
+ * (file comment); jmax > 0 (a jerk-limited move, dh_path_move_jerk_q)
+ * lowers it to floor(jmax R / (12 v)) */
+static DH_NOINLINE uint32_t pathq_arc_at(uint32_t R, const dh_cart_limits_q *lim, uint32_t v, uint32_t jmax)
 {
     const uint64_t aR = (uint64_t)(uint32_t)lim->amax * R;
-    uint32_t v = (uint32_t)(((uint64_t)dh_q_sqrt_u64(aR) * PATHQ_R4SQRT2) >> 30), c;
     uint64_t n, dd;
+    uint32_t c, at;
     unsigned sh = 0u;
-    if (v > (uint32_t)lim->vmax) v = (uint32_t)lim->vmax;
-    if (v == 0u) v = 1u;
     /* r = V^2 / (amax R) <= 2^-1/2, rounded up; At = amax sqrt(1 - r^2) rounded down */
     n = (uint64_t)v * v;
     dd = aR;
@@ -611,68 +657,125 @@ static DH_NOINLINE void pathq_arc_rates(uint32_t R, const dh_cart_limits_q *lim,
     c = (n >= dd) ? (uint32_t)DH_Q30_ONE : pathq_udiv64(n << 30, dd) + 1u;
     if (c > (uint32_t)DH_Q30_ONE) c = (uint32_t)DH_Q30_ONE;
     c = dh_q_isqrt62(((uint64_t)1 << 60) - (uint64_t)c * c);   /* sqrt(1 - r^2), Q30, down */
-    *V = v;
-    *At = (uint32_t)(((uint64_t)(uint32_t)lim->amax * c) >> 30);
+    at = (uint32_t)(((uint64_t)(uint32_t)lim->amax * c) >> 30);
+    /* At 12 V > jmax R: At = floor(jmax R / (12 V)) (below the old At) */
+    if (jmax != 0u && pathq_gt96(12u * (uint64_t)v, at, (uint64_t)jmax * R, 1u))
+        at = pathq_udiv64((uint64_t)jmax * R, 12u * (uint64_t)v);
+    return at;
 }
 
 /* floor(b 2^e) of a bound */
 static uint32_t pathq_scaled(const pathq_rate *b, unsigned e)
 {
-    return pathq_udiv64(b->num << e, b->den);
+    return pathq_udiv64((uint64_t)b->num << e, b->den);
 }
 
-/* The rates of s along p within lim into prof's d = 2^e, v and a (j = 0:
- * the trapezoid) and *e (file comment), for dh_motion_profile_q_ to plan
- * in place: the planner one call level below dh_path_move_q (the 256 B
- * guard) */
-static DH_NOINLINE dh_status pathq_rates(dh_profile_q *prof, uint32_t *e, const dh_path_q *p,
-                                         const dh_cart_limits_q *lim)
+/* The tool's speed V, tangential acceleration At and jerk Jt (jk NULL:
+ * 0) along p within lim and jk into prof's v, a and j (below 2^31: never
+ * above vmax, amax, jmax; file comment), for pathq_rates; DH_ERR_ARG for
+ * a limit <= 0 or a p that holds no path. Called by the public functions
+ * beside pathq_rates, not under it (the 256 B guard). */
+static DH_NOINLINE dh_status pathq_limits(dh_profile_q *prof, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                          const dh_cart_jerk_q *jk)
 {
-    pathq_rate bv = { 0u, 0u }, ba = { 0u, 0u };
-    uint32_t V, At;
-    int k;
+    uint32_t V, At, Jt;
     if (lim->vmax <= 0 || lim->amax <= 0 || lim->wmax <= 0 || lim->wdmax <= 0) return DH_ERR_ARG;
+    if (jk != NULL && (jk->jmax <= 0 || jk->wjmax <= 0)) return DH_ERR_ARG;
     if (!pathq_ok(p)) return DH_ERR_ARG;
-    *e = 30u;
-    prof->d = 0;
-    prof->v = 1;
-    prof->a = 1;
-    prof->j = 0;
-    if (p->length <= 0 && p->angle <= 0) return DH_OK;
     V = (uint32_t)lim->vmax;
     At = (uint32_t)lim->amax;
-    if (p->kind == (uint32_t)DH_PATH_ARC) pathq_arc_rates((uint32_t)p->radius, lim, &V, &At);
-    if (p->length > 0) {
-        pathq_bound(&bv, V, (uint32_t)p->length);
-        pathq_bound(&ba, At, (uint32_t)p->length);
+    Jt = (jk != NULL) ? (uint32_t)jk->jmax : 0u;
+    if (p->kind == (uint32_t)DH_PATH_ARC) {
+        /* each step called from here (the 256 B guard) */
+        V = pathq_arc_v((uint32_t)p->radius, lim);
+        if (Jt != 0u) V = pathq_arc_vj((uint32_t)p->radius, Jt, V);
+        At = pathq_arc_at((uint32_t)p->radius, lim, V, Jt);
+        Jt >>= 1;
     }
-    if (p->angle > 0) {
-        pathq_bound(&bv, (uint32_t)lim->wmax, (uint32_t)p->angle);
-        pathq_bound(&ba, (uint32_t)lim->wdmax, (uint32_t)p->angle);
-    }
-    /* the largest e <= 30 with both rates times 2^e within int32 */
-    for (k = 30; k >= 0; k--) {
-        if ((bv.num << k) < (uint64_t)INT32_MAX * bv.den && (ba.num << k) < (uint64_t)INT32_MAX * ba.den) break;
-    }
-    if (k < 0) return DH_ERR_OVERFLOW;
-    prof->v = (int32_t)pathq_scaled(&bv, (unsigned)k);
-    prof->a = (int32_t)pathq_scaled(&ba, (unsigned)k);
-    if (prof->v == 0 || prof->a == 0) return DH_ERR_OVERFLOW;
-    prof->d = (int32_t)1 << k;
-    *e = (uint32_t)k;
+    prof->v = (int32_t)V;
+    prof->a = (int32_t)At;
+    prof->j = (int32_t)Jt;
     return DH_OK;
 }
 
+/* The rates of s along p into prof's d = 2^e, v, a and j (0 without jk:
+ * the trapezoid; file comment), from the tool's V, At, Jt that
+ * pathq_limits left in prof's v, a and j, for dh_motion_profile_q_ to
+ * plan in place */
+static DH_NOINLINE dh_status pathq_rates(dh_profile_q *prof, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                         const dh_cart_jerk_q *jk)
+{
+    pathq_rate b[3] = { { 0u, 0u }, { 0u, 0u }, { 0u, 0u } };
+    int k;
+    /* speed, acceleration, jerk: the tool's over the length, the angular
+     * over the angle, the smaller */
+    for (k = 0; k < ((jk != NULL) ? 3 : 2); k++) {
+        const int32_t tool = (k == 0) ? prof->v : ((k == 1) ? prof->a : prof->j);
+        const int32_t rot = (k == 0) ? lim->wmax : ((k == 1 || jk == NULL) ? lim->wdmax : jk->wjmax);
+        if (p->length > 0) pathq_bound(&b[k], (uint32_t)tool, (uint32_t)p->length);
+        if (p->angle > 0) pathq_bound(&b[k], (uint32_t)rot, (uint32_t)p->angle);
+    }
+    prof->d = 0;
+    prof->v = 1;
+    prof->a = 1;
+    prof->j = (jk != NULL) ? 1 : 0;
+    if (p->length <= 0 && p->angle <= 0) return DH_OK;
+    /* the largest e <= 30 with every rate times 2^e within int32 */
+    for (k = 30; k >= 0; k--) {
+        if (((uint64_t)b[0].num << k) < (uint64_t)INT32_MAX * b[0].den &&
+            ((uint64_t)b[1].num << k) < (uint64_t)INT32_MAX * b[1].den &&
+            (b[2].den == 0u || ((uint64_t)b[2].num << k) < (uint64_t)INT32_MAX * b[2].den)) {
+            break;
+        }
+    }
+    if (k < 0) return DH_ERR_OVERFLOW;
+    prof->v = (int32_t)pathq_scaled(&b[0], (unsigned)k);
+    prof->a = (int32_t)pathq_scaled(&b[1], (unsigned)k);
+    if (jk != NULL) prof->j = (int32_t)pathq_scaled(&b[2], (unsigned)k);
+    if (prof->v == 0 || prof->a == 0 || (jk != NULL && prof->j == 0)) return DH_ERR_OVERFLOW;
+    prof->d = (int32_t)1 << k;
+    return DH_OK;
+}
+
+/* dh_motion_path_rates_q_ (motion_impl.h): the tool's limits, then the
+ * rates of s, each called from here */
+dh_status dh_motion_path_rates_q_(dh_profile_q *prof, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                  const dh_cart_jerk_q *jk)
+{
+    const dh_status st = pathq_limits(prof, p, lim, jk);
+    return (st == DH_OK) ? pathq_rates(prof, p, lim, jk) : st;
+}
+
+uint32_t dh_motion_path_e_q_(const dh_profile_q *prof)
+{
+    uint32_t e = 0u;
+    if (prof->d <= 0) return 30u;
+    while (e < 30u && ((uint32_t)prof->d >> e) > 1u) e++;
+    return e;
+}
+
+/* the move planned in place (the rates of s, then the profile); on error
+ * no move: prof all zero, *e 30 */
 dh_status dh_path_move_q(dh_profile_q *prof, uint32_t *e, const dh_path_q *p, const dh_cart_limits_q *lim)
 {
     dh_status st;
     DH_ASSERT(prof != NULL && e != NULL && p != NULL && lim != NULL);
-    st = pathq_rates(prof, e, p, lim);
+    st = dh_motion_path_rates_q_(prof, p, lim, NULL);
     if (st == DH_OK) st = dh_motion_profile_q_(prof);
-    if (st != DH_OK) {
-        (void)memset(prof, 0, sizeof *prof);
-        *e = 30u;
-    }
+    if (st != DH_OK) (void)memset(prof, 0, sizeof *prof);
+    *e = dh_motion_path_e_q_(prof);
+    return st;
+}
+
+dh_status dh_path_move_jerk_q(dh_profile_q *prof, uint32_t *e, const dh_path_q *p, const dh_cart_limits_q *lim,
+                              const dh_cart_jerk_q *jerk)
+{
+    dh_status st;
+    DH_ASSERT(prof != NULL && e != NULL && p != NULL && lim != NULL);
+    st = dh_motion_path_rates_q_(prof, p, lim, jerk);
+    if (st == DH_OK) st = dh_motion_profile_q_(prof);
+    if (st != DH_OK) (void)memset(prof, 0, sizeof *prof);
+    *e = dh_motion_path_e_q_(prof);
     return st;
 }
 

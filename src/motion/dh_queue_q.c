@@ -8,8 +8,9 @@
  *
  * Ring. items[head] is the running move; appending writes
  * items[(head + count) mod cap] and never overwrites a queued move. A
- * path's profile of s is planned when it is appended (dh_path_move_q,
- * into its item) and copied into qu->mv when it starts; a joint move is
+ * path's profile of s is planned when it is appended (as
+ * dh_path_move_jerk_q plans it: dh_motion_path_rates_q_, dh_motion_profile_q_)
+ * into its item and copied into qu->mv when it starts; a joint move is
  * planned when it starts, from the last joint command or the tracker's
  * configuration, as dh_move_joint_q plans it (each joint's profile in
  * place by dh_motion_profile_q_, then stretched to the longest): one call
@@ -90,20 +91,21 @@ dh_status dh_queue_init_q(dh_queue_q *qu, dh_queue_item_q *items, uint32_t cap)
 }
 
 dh_status dh_queue_add_joint_q(dh_queue_q *qu, uint32_t n, const int32_t *q1, const int32_t *vmax,
-                               const int32_t *amax)
+                               const int32_t *amax, const int32_t *jmax)
 {
     dh_queue_item_q *it;
     uint32_t i;
     DH_ASSERT(qu != NULL && q1 != NULL && vmax != NULL && amax != NULL);
     if (n == 0u || n > (uint32_t)DH_MAX_JOINTS) return DH_ERR_ARG;
     for (i = 0u; i < n; i++)
-        if (vmax[i] <= 0 || amax[i] <= 0) return DH_ERR_ARG;
+        if (vmax[i] <= 0 || amax[i] <= 0 || (jmax != NULL && jmax[i] <= 0)) return DH_ERR_ARG;
     it = queueq_free(qu);
     if (it == NULL) return DH_ERR_LIMIT;
     for (i = 0u; i < n; i++) {
         it->q1[i] = q1[i];
         it->vmax[i] = vmax[i];
         it->amax[i] = amax[i];
+        it->jmax[i] = (jmax != NULL) ? jmax[i] : 0;
     }
     it->n = n;
     it->kind = (uint32_t)DH_MOVE_JOINT;
@@ -111,6 +113,23 @@ dh_status dh_queue_add_joint_q(dh_queue_q *qu, uint32_t n, const int32_t *q1, co
     return DH_OK;
 }
 
+/* the planned path move in the free item it (status st of its planning)
+ * appended; called after the planning, not above it (the 256 B guard) */
+static dh_status queueq_path_item(dh_queue_q *qu, dh_queue_item_q *it, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                  dh_status st)
+{
+    if (st != DH_OK) return st;
+    it->e = dh_motion_path_e_q_(&it->prof);
+    it->path = *p;
+    it->lim = *lim;
+    it->n = 0u;
+    it->kind = (uint32_t)DH_MOVE_PATH;
+    qu->count++;
+    return DH_OK;
+}
+
+/* Each append plans as dh_path_move_jerk_q does, its two steps called
+ * from here, into the free item */
 dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim)
 {
     dh_queue_item_q *it;
@@ -118,14 +137,22 @@ dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_
     DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
     it = queueq_free(qu);
     if (it == NULL) return DH_ERR_LIMIT;
-    st = dh_path_move_q(&it->prof, &it->e, p, lim);
-    if (st != DH_OK) return st;
-    it->path = *p;
-    it->lim = *lim;
-    it->n = 0u;
-    it->kind = (uint32_t)DH_MOVE_PATH;
-    qu->count++;
-    return DH_OK;
+    st = dh_motion_path_rates_q_(&it->prof, p, lim, NULL);
+    if (st == DH_OK) st = dh_motion_profile_q_(&it->prof);
+    return queueq_path_item(qu, it, p, lim, st);
+}
+
+dh_status dh_queue_add_path_jerk_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                   const dh_cart_jerk_q *jerk)
+{
+    dh_queue_item_q *it;
+    dh_status st;
+    DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
+    it = queueq_free(qu);
+    if (it == NULL) return DH_ERR_LIMIT;
+    st = dh_motion_path_rates_q_(&it->prof, p, lim, jerk);
+    if (st == DH_OK) st = dh_motion_profile_q_(&it->prof);
+    return queueq_path_item(qu, it, p, lim, st);
 }
 
 /* the checks of dh_queue_add_path_blend_q's line and limits, in the
@@ -281,7 +308,7 @@ static DH_NOINLINE dh_status queueq_joint_fill(dh_queue_q *qu, const int32_t *q0
         mv->prof[i].d = (int32_t)d;
         mv->prof[i].v = it->vmax[i] - (int32_t)((uint32_t)it->vmax[i] >> 10);
         mv->prof[i].a = it->amax[i] - (int32_t)((uint32_t)it->amax[i] >> 10);
-        mv->prof[i].j = 0;
+        mv->prof[i].j = it->jmax[i];
     }
     mv->n = it->n;
     return st;

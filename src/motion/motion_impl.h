@@ -147,6 +147,20 @@ void dh_motion_quat_rot_q_(const dh_quat_q *q, dh_frame_q *T);
  * move (dh_joint_move_q.c, in its output) call it. */
 dh_status dh_motion_profile_q_(dh_profile_q *p);
 
+/* ---- fixed point (dh_path_q.c) ---- */
+
+/* The rates of s of a move along p within lim and jk (NULL: the
+ * trapezoid) into prof's d = 2^e (0: no motion), v, a and j, for
+ * dh_motion_profile_q_ to plan in place (dh_path_move_jerk_q's first
+ * step; the executor and the queue call the two steps themselves, so no
+ * frame of a path function lies under the planner's: the 256 B guard).
+ * DH_ERR_ARG for a limit <= 0 or a p that holds no path, DH_ERR_OVERFLOW
+ * for a rate of s beyond int32 at e = 0 or rounding to 0. */
+dh_status dh_motion_path_rates_q_(dh_profile_q *prof, const dh_path_q *p, const dh_cart_limits_q *lim,
+                                  const dh_cart_jerk_q *jk);
+/* e of a profile of d = 2^e from dh_motion_path_rates_q_ (30 for d = 0) */
+uint32_t dh_motion_path_e_q_(const dh_profile_q *prof);
+
 /* ---- fixed point (dh_move_q.c) ---- */
 
 /* mv's clock, its fraction, feed override and ceiling at the start of a
@@ -154,7 +168,7 @@ dh_status dh_motion_profile_q_(dh_profile_q *p);
 void dh_motion_start_q_(dh_move_q *mv, uint32_t dur);
 
 /* The largest rise (rise 1) or fall (rise 0), Q2.30, of the time warp r
- * of the profile pr (a trapezoid; r that of the last period, dt its
+ * of the profile pr (a trapezoid or a seven-phase profile; r that of the last period, dt its
  * length in us) at clock this period that keeps the commanded
  * acceleration within A (dh_move_q.c); 2^30 where s' is 0 */
 int32_t dh_motion_feed_bound_q_(const dh_profile_q *pr, int32_t A, uint32_t clock, dh_q30 r, uint32_t dt, int rise);

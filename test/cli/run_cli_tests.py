@@ -1997,7 +1997,8 @@ def group_move(seed, tmp):
         ([path] + q0 + ['--dt', '0.01', '--blend', '-0.01', '--jerk', '100'] + cart + ln + ln,
          '--blend: -0.01 must be a finite radius'),
         ([path] + q0 + ['--dt', '0.01', '--blend', 'r'] + cart + ln + ln, "bad number 'r' for --blend"),
-        ([path] + q0 + ['--dt', '0.01', '--fixed', '--jerk', '10'] + jt, 'move --fixed --jerk: jerk-limited moves'),
+        ([path] + q0 + ['--dt', '0.01', '--fixed', '--jerk', '10', '--blend', '1'] + jt,
+         'move --fixed --jerk --blend: the fixed-point blended corners are not jerk-limited'),
         ([path] + q0 + ['--dt', '0.01', '--dt', '0.02'] + jt, "option '--dt' given more than once"),
         ([path] + q0 + ['--dt', '0.01', '--frames'] + jt, "unknown or inapplicable option '--frames'"),
         ([path] + q0 + ['--dt', '0.01', '--joint'], "option '--joint' needs a value"),
@@ -2085,7 +2086,8 @@ def group_move_fixed(seed, tmp):
     q0 = ['--q0', ','.join(map(str, qa))]
     cart = ['--speed', '200', '--accel', '1000', '--rspeed', '60', '--raccel', '240']
     ln = ['--line', to_expr(A)]
-    for extra, want in ((['--jerk', '100'] + ln, 'move --fixed --jerk: jerk-limited moves are not in the fixed'),
+    for extra, want in ((['--jerk', '100', '--blend', '2'] + ln + ln, 'move --fixed --jerk --blend: the fixed-point'),
+                        (['--jerk', '40000'] + ln, '--jerk: out of the fixed-point range'),
                         (['--speed', '40000'] + cart[2:] + ln, '--speed: out of the fixed-point range')):
         a = [path] + q0 + ['--dt', '0.004', '--fixed'] + (cart if '--speed' not in extra else []) + extra
         rc, out, err = run(['move'] + a)
@@ -2095,6 +2097,7 @@ def group_move_fixed(seed, tmp):
     move_fixed_blend(rob, n, path, qa, A, p0)
     move_fixed_lagging(tmp)
     move_fixed_blend_lagging(tmp)
+    move_fixed_jerk(rob, n, path, qa, qb, A, endB, p0, pB, dp)
 
 
 def move_fixed_blend_lagging(tmp):
@@ -2158,6 +2161,80 @@ def move_fixed_blend_lagging(tmp):
           'rest %d)' % (off, worst, R, len(rows), len(rows0)))
     print('move --fixed --blend puma lagging: %d periods (at rest at the corner %d), %d lagging, ok periods off the '
           'lines %.4g mm, within %.6g mm of the corner there (radius %g)' % (len(rows), len(rows0), lag, off, worst, R))
+
+
+def move_fixed_jerk(rob, n, path, qa, qb, A, endB, p0, pB, dp):
+    """move --fixed --jerk J on the UR5 (mm): a joint move, exit 0, every
+    joint's third difference over windows of w periods within J (deg/s^3)
+    times 1 + 1e-3 plus 8 e / (w dt)^3 (e: the fixed joint move's 4 LSB +
+    2^-27 of its distance, 5 LSB), w the least window with that noise
+    within 2.5e-4 of J; steps and changes of step within the fixed vmax
+    and amax bounds; the end exactly qb. A line and an arc with --jerk:
+    exit 0, every period ok, the tool within 5e-3 mm of the line, the
+    same number of periods as the float run's (both the seven-phase
+    minimum), the last row's tool at B."""
+    dt, J = 0.004, 1500.0
+    rc, out, err = run(['move', path, '--q0', ','.join(map(str, qa)), '--dt', str(dt), '--jerk', str(J), '--joint',
+                        ','.join('%.9g' % q for q in qb), '--fixed'])
+    head, rows = read_csv(out, n)
+    check(rc == 0 and err == '' and rows and None not in rows, 'move --fixed --jerk joint: rc %d %r' % (rc, err))
+    if not rows or None in rows:
+        return
+    us = round(dt * 1e6)
+    vb = math.floor(180.0 * 65536 * us / 1e6) / 65536.0
+    ab = math.floor(math.floor(720.0 * 65536 * us / 1e6) * us / 1e6) / 65536.0
+    check_joint_limits('move --fixed --jerk', qa, rows, [vb / dt] * n, [ab / (dt * dt)] * n, dt,
+                       [4 * f32_ulp(360.0)] * n)
+    e = 5.0 / 65536.0
+    w = int(math.ceil((8.0 * e / (2.5e-4 * J)) ** (1.0 / 3.0) / dt))
+    qs = [qa] * (3 * w) + [r[1] for r in rows] + [rows[-1][1]] * (3 * w)
+    worst, windows = 0.0, 0
+    for k in range(len(qs) - 3 * w):
+        h = (w * dt) ** 3
+        for i in range(n):
+            d = abs(qs[k + 3 * w][i] - 3.0 * qs[k + 2 * w][i] + 3.0 * qs[k + w][i] - qs[k][i]) / h
+            worst = max(worst, d / J)
+            check(d <= J * (1.0 + 1e-3) + 8.0 * e / h, 'move --fixed --jerk joint: jerk %.6g > %g (joint %d, window '
+                  '%d at %d)' % (d, J, i + 1, w, k))
+        windows += 1
+    check(rows[-1][1] == [f32(math.floor(q * 65536 + 0.5) / 65536.0) for q in qb],
+          'move --fixed --jerk joint: last line %r, not %r' % (rows[-1][1], qb))
+    print('move --fixed --jerk: joint move of %d periods, largest jerk %.4f of J over %d windows of %d periods' %
+          (len(rows), worst, windows, w))
+    ax = [0.0, 0.0, 1.0] if abs(dp[2]) < 0.9 * math.sqrt(sum(d * d for d in dp)) else [1.0, 0.0, 0.0]
+    nv = [dp[1] * ax[2] - dp[2] * ax[1], dp[2] * ax[0] - dp[0] * ax[2], dp[0] * ax[1] - dp[1] * ax[0]]
+    nn = math.sqrt(sum(v * v for v in nv))
+    via = [p0[r] + 0.5 * dp[r] + 50.0 * nv[r] / nn for r in range(3)]
+    args = [path, '--q0', ','.join(map(str, qa)), '--dt', str(dt), '--speed', '250', '--accel', '1000', '--rspeed',
+            '60', '--raccel', '240', '--jerk', '5000', '--line', endB, '--arc', 'trans(%.6f,%.6f,%.6f)' % tuple(via),
+            to_expr(A)]
+    rc, out, err = run(['move'] + args + ['--fixed'])
+    head, rows = read_csv(out, n)
+    rc2, out2, err2 = run(['move'] + args)
+    head2, frows = read_csv(out2, n)
+    check(rc == 0 and err == '' and rc2 == 0 and rows and None not in rows,
+          'move --fixed --jerk line, arc: rc %d %r' % (rc, err))
+    if not rows or None in rows or not frows or None in frows:
+        return
+    check(all(r[2] == 'ok' for r in rows), 'move --fixed --jerk line, arc: not ok')
+    check(len(rows) == len(frows), 'move --fixed --jerk line, arc: %d periods, the float run %d' %
+          (len(rows), len(frows)))
+    L1 = math.sqrt(sum(d * d for d in dp))
+    off, at_b = 0.0, False
+    for r in rows:
+        F = ref_fk(rob, r[1])
+        p = [F[i][3] for i in range(3)]
+        s = max(0.0, min(1.0, sum((p[i] - p0[i]) * dp[i] for i in range(3)) / (L1 * L1)))
+        off = max(off, math.sqrt(sum((p[i] - p0[i] - s * dp[i]) ** 2 for i in range(3))))
+        if max(abs(p[i] - pB[i]) for i in range(3)) <= 5e-3:
+            at_b = True
+            break
+    check(at_b and off <= 5e-3, 'move --fixed --jerk: the tool %.3g mm off the line (at B: %r)' % (off, at_b))
+    F = ref_fk(rob, rows[-1][1])
+    end = max(abs(F[i][3] - A[i][3]) for i in range(3))
+    check(end <= 5e-3, 'move --fixed --jerk: the last row %.3g mm from the arc\'s end' % end)
+    print('move --fixed --jerk: line and arc in %d periods (float %d), %.3g mm off the line, end within %.3g mm' %
+          (len(rows), len(frows), off, end))
 
 
 def move_fixed_lagging(tmp):

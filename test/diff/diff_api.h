@@ -274,10 +274,12 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_path_arc_q, g_fpath, 100000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_path_eval_q, g_fpath, 100000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_path_move_q, g_fpath, 50000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_path_move_jerk_q, g_fpath, 50000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_path_move_eval_q, g_fpath, 50000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_move_joint_q, g_fpath, 50000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_move_joint_step_q, g_fpath, 50000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_move_path_q, g_fpath, 50000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_move_path_jerk_q, g_fpath, 50000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_move_target_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_move_advance_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_blend_seq_plan_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
@@ -285,6 +287,7 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_queue_init_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_queue_add_joint_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_queue_add_path_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_queue_add_path_jerk_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_queue_target_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_queue_advance_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_queue_stop_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \

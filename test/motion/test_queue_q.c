@@ -112,7 +112,7 @@ static void gen_next(const dhsm_rig *g, gen_state *gs)
             dhsm_region_q(g, qa);
             dhs_q_from_double(&g->r, qa, ib);
         }
-        DHT_EQ_INT(dh_queue_add_joint_q(qu, NJ, ib, v, a), DH_OK);
+        DHT_EQ_INT(dh_queue_add_joint_q(qu, NJ, ib, v, a, NULL), DH_OK);
         memcpy(gs->q, ib, sizeof ib);
         dhsm_target_of(g, ib, &gs->F);
         gs->left--;
@@ -459,14 +459,14 @@ static void queue_q_errors(void)
     DHT_EQ_INT(dh_queue_resume_q(qu), DH_OK);
     DHT_EQ_INT(qu->phase, DH_QUEUE_RUN);
     /* joint moves: bad arguments, a full queue */
-    DHT_EQ_INT(dh_queue_add_joint_q(qu, 0u, q1, v, a), DH_ERR_ARG);
-    DHT_EQ_INT(dh_queue_add_joint_q(qu, DH_MAX_JOINTS + 1u, q1, v, a), DH_ERR_ARG);
+    DHT_EQ_INT(dh_queue_add_joint_q(qu, 0u, q1, v, a, NULL), DH_ERR_ARG);
+    DHT_EQ_INT(dh_queue_add_joint_q(qu, DH_MAX_JOINTS + 1u, q1, v, a, NULL), DH_ERR_ARG);
     v[3] = 0;
-    DHT_EQ_INT(dh_queue_add_joint_q(qu, NJ, q1, v, a), DH_ERR_ARG);
+    DHT_EQ_INT(dh_queue_add_joint_q(qu, NJ, q1, v, a, NULL), DH_ERR_ARG);
     v[3] = v[2];
     DHT_EQ_INT(qu->count, 0u);
-    DHT_EQ_INT(dh_queue_add_joint_q(qu, NJ, ia, v, a), DH_OK);
-    DHT_EQ_INT(dh_queue_add_joint_q(qu, NJ, ia, v, a), DH_ERR_LIMIT);
+    DHT_EQ_INT(dh_queue_add_joint_q(qu, NJ, ia, v, a, NULL), DH_OK);
+    DHT_EQ_INT(dh_queue_add_joint_q(qu, NJ, ia, v, a, NULL), DH_ERR_LIMIT);
     dhsm_target_of(g, ia, &A);
     B = A;
     B.p[0] += 10 << 16;
@@ -475,7 +475,7 @@ static void queue_q_errors(void)
     DHT_EQ_INT(qu->count, 1u);
     /* a joint move for another number of joints than the robot's */
     DHT_EQ_INT(dh_queue_init_q(qu, items, CAP), DH_OK);
-    DHT_EQ_INT(dh_queue_add_joint_q(qu, 5u, ia, v, a), DH_OK);
+    DHT_EQ_INT(dh_queue_add_joint_q(qu, 5u, ia, v, a, NULL), DH_OK);
     cmd = keep_cmd;
     DHT_EQ_INT(dh_queue_target_q(qu, &the_trk, &cmd), DH_ERR_ARG);
     DHT_TRUE(memcmp(&cmd, &keep_cmd, sizeof cmd) == 0);
@@ -487,7 +487,7 @@ static void queue_q_errors(void)
     DHT_EQ_INT(dh_queue_add_path_q(qu, &p, &LIM), DH_ERR_ARG);
     DHT_EQ_INT(qu->count, 0u);
     /* a joint move to where the robot is: done at once, at q1 */
-    DHT_EQ_INT(dh_queue_add_joint_q(qu, NJ, ia, v, a), DH_OK);
+    DHT_EQ_INT(dh_queue_add_joint_q(qu, NJ, ia, v, a, NULL), DH_OK);
     DHT_EQ_INT(dh_queue_target_q(qu, &the_trk, &cmd), DH_OK);
     DHT_EQ_INT(cmd.kind, DH_MOVE_JOINT);
     DHT_TRUE(memcmp(cmd.q, ia, sizeof ia) == 0);
