@@ -836,9 +836,11 @@ dh_status dh_queue_add_path_blend_f32(dh_queue_f32 *qu, const dh_path_f32 *p, co
  * @param qu, p, lim as dh_queue_add_path_f32 (p, lim and jerk copied).
  * @param jerk jerk limits, each finite and > 0; NULL: the move of
  *        dh_queue_add_path_f32.
- * @return DH_OK; DH_ERR_NAN, DH_ERR_ARG, DH_ERR_OVERFLOW as
- *         dh_move_path_jerk_f32; DH_ERR_LIMIT when the queue is full. On
- *         error qu and its items are untouched.
+ * @return DH_OK; DH_ERR_LIMIT when the queue is full (checked first);
+ *         then DH_ERR_NAN, DH_ERR_ARG, DH_ERR_OVERFLOW as
+ *         dh_move_path_jerk_f32. On error qu and its queued moves are
+ *         untouched (the free item's profile is overwritten: it is
+ *         planned there).
  */
 dh_status dh_queue_add_path_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
                                      const dh_cart_jerk_f32 *jerk);

@@ -191,7 +191,7 @@ static DH_NOINLINE dh_status queue_add_item(dh_queue_f32 *qu, const dh_path_f32 
     if (qu->count >= qu->cap) return DH_ERR_LIMIT;
     it = queue_slot(qu, qu->count);
     it->path = *p;
-    it->prof = *prof;
+    if (prof != &it->prof) it->prof = *prof;
     it->lim = *lim;
     dh_blend_rates_f32_(p, lim, it->rate);
     it->radius = 0.0f;
@@ -203,14 +203,14 @@ static DH_NOINLINE dh_status queue_add_item(dh_queue_f32 *qu, const dh_path_f32 
     return DH_OK;
 }
 
-/* A path move appended (the radius's checks, then dh_move_path_jerk_f32's
- * (jerk NULL: dh_move_path_f32's): its profile, in this frame only) */
+/* A path move appended (the radius's checks, then dh_move_path_f32's:
+ * its profile, in this frame only) */
 static DH_NOINLINE dh_status queue_add_path(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
-                                            const dh_cart_jerk_f32 *jerk, float radius)
+                                            float radius)
 {
     dh_profile_f32 prof;
     dh_status st = queue_radius(radius);
-    if (st == DH_OK) st = dh_path_move_jerk_f32(&prof, p, lim, jerk);
+    if (st == DH_OK) st = dh_path_move_f32(&prof, p, lim);
     if (st == DH_OK) st = queue_add_item(qu, p, lim, &prof);
     return st;
 }
@@ -220,7 +220,7 @@ dh_status dh_queue_add_path_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh
 {
     dh_status st;
     DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
-    st = queue_add_path(qu, p, lim, NULL, 0.0f);
+    st = queue_add_path(qu, p, lim, 0.0f);
     if (st == DH_OK) queue_add_corner(qu, 0.0f);
     return st;
 }
@@ -230,18 +230,25 @@ dh_status dh_queue_add_path_blend_f32(dh_queue_f32 *qu, const dh_path_f32 *p, co
 {
     dh_status st;
     DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
-    st = queue_add_path(qu, p, lim, NULL, radius);
+    st = queue_add_path(qu, p, lim, radius);
     if (st == DH_OK) queue_add_corner(qu, radius);
     return st;
 }
 
-/* The corner after it runs at rest (the blends' tails are trapezoids). */
+/* The profile is planned straight into the free item (no profile on this
+ * frame: dh_path_move_jerk_f32 fills the stack budget on Cortex-M0+ with
+ * one small frame above it); the corner after it runs at rest (the
+ * blends' tails are trapezoids). */
 dh_status dh_queue_add_path_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
                                      const dh_cart_jerk_f32 *jerk)
 {
+    dh_queue_item_f32 *it;
     dh_status st;
     DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
-    st = queue_add_path(qu, p, lim, jerk, 0.0f);
+    if (qu->count >= qu->cap) return DH_ERR_LIMIT;
+    it = queue_slot(qu, qu->count);
+    st = dh_path_move_jerk_f32(&it->prof, p, lim, jerk);
+    if (st == DH_OK) st = queue_add_item(qu, p, lim, &it->prof);
     if (st == DH_OK) queue_add_corner(qu, 0.0f);
     return st;
 }

@@ -33,7 +33,8 @@
  * complete in order, the last target is the last segment's B bit for bit.
  *
  * Statuses of dh_queue_add_path_jerk_f32: NaN/Inf and <= 0 jerk limits, a
- * full queue, each with the queue untouched; NULL jerk queues the item of
+ * full queue (before a bad limit), each with the queue and its queued moves
+ * untouched; NULL jerk queues the item of
  * dh_queue_add_path_f32 bit for bit; a blended move before a jerk-limited
  * one keeps its corner at rest.
  */
@@ -266,10 +267,11 @@ static void queues_puma(void) { run_robot(&dhm_puma560); }
 static void queues_ur5(void) { run_robot(&dhm_ur5); }
 static void queues_panda(void) { run_robot(&dhm_panda); }
 
-/* the queue's hash (and its items') */
+/* the queue's hash and its queued items' (the first count: jerk_bad
+ * queues from items[0]) */
 static uint64_t queue_hash(void)
 {
-    return dhm_hash(&qu, sizeof qu, items, sizeof items);
+    return dhm_hash(&qu, sizeof qu, items, qu.count * sizeof items[0]);
 }
 
 /* the statuses (the file's comment) */
@@ -325,6 +327,8 @@ static void jerk_bad(void)
     DHT_TRUE(items[0].ctb == 0.0f);
     /* full */
     keep = queue_hash();
+    DHT_EQ_INT(dh_queue_add_path_jerk_f32(&qu, &seg, &lim, &jk), DH_ERR_LIMIT);
+    jk.jmax = NAN;
     DHT_EQ_INT(dh_queue_add_path_jerk_f32(&qu, &seg, &lim, &jk), DH_ERR_LIMIT);
     DHT_TRUE(queue_hash() == keep);
     DHT_EQ_INT(qu.count, 2);
