@@ -74,7 +74,6 @@ static float cp[NMAX + 1][3];         /* the corners' positions (line k: cp[k] t
 static float radius[NMAX];
 static unsigned char isarc[NMAX];      /* segment k is an arc (drawn when appended) */
 static float sp[NS][7], lp[NL][7];    /* position and unit quaternion of the target m periods (m WD periods) ago */
-static dhm_fd fd = { sp, lp, NS, NL, WS, WD, W, (double)DT, 0 };
 static long arc_ov;                   /* periods in overlaps at a corner with an arc */
 static long arc_stops;                /* stops inside such an overlap */
 
@@ -103,9 +102,9 @@ static double arc_dist(uint32_t k, const double x[3])
 /* every target's finite differences within lim (the file's comment):
  * each period's step, windows of WS periods every period and of W
  * periods every WD periods */
-static void check_fd(const dh_mat4_f32 *T, const dh_cart_limits_f32 *lim, double S, long call)
+static void check_fd(dhm_fd *fd, const dh_mat4_f32 *T, const dh_cart_limits_f32 *lim, double S, long call)
 {
-    (void)dhm_fd_push(&fd, T, lim, S * FLT_EPSILON, call);
+    (void)dhm_fd_push(fd, T, lim, S * FLT_EPSILON, call);
 }
 
 /* the target on its line outside an overlap, within the corner's radius
@@ -175,6 +174,7 @@ static void draw_lines(const dhm_rig *g, const double *qa, uint32_t n, double st
 static void blend_queue(dhm_rig *g, const double *q_nom, long *overlap_periods)
 {
     dh_cart_limits_f32 lim;
+    dhm_fd fd = { sp, lp, NS, NL, WS, WD, W, (double)DT, 0 };
     double qa[DH_MAX_JOINTS], S = 1.0;
     float q0[DH_MAX_JOINTS];
     dh_queue_cmd_f32 cmd;
@@ -206,14 +206,13 @@ static void blend_queue(dhm_rig *g, const double *q_nom, long *overlap_periods)
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
     for (added = 0; added < n0 && added < CAP; added++) append(g, added, &lim);
     planned = added >= 2u && items[0].ctb > 0.0f;
-    fd.nh = 0;
     for (call = 0; call < MAXCALL && done < n; call++) {
         dh_track_state st;
         DHT_EQ_INT(dh_queue_target_f32(&qu, &g->t, DT, &cmd), DH_OK);
         DHT_EQ_INT(cmd.kind, DH_MOVE_PATH);
         in_ov = check_path(&cmd.T, n, S, call);
         *overlap_periods += in_ov;
-        check_fd(&cmd.T, &lim, S, call);
+        check_fd(&fd, &cmd.T, &lim, S, call);
         DHT_EQ_INT(dh_track_step_f32(&g->t, &cmd.T, g->t.q, &trep), DH_OK);
         st = trep.state;
         /* the lag stretch: inside the first overlap, or at a random period */

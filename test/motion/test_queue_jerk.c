@@ -5,7 +5,7 @@
  * random queues on the Puma 560, UR5 (closed forms) and Panda (numerical
  * tracker).
  *
- * Queues of 2 to 6 segments, each a line or (in half of them) an arc
+ * Queues of 2 to 5 segments, each a line or (in half of them) an arc
  * through a via point off its chord by 0.1 to 0.4 of it, joining the FK
  * frames of configurations a few degrees apart (so the tool also turns),
  * random Cartesian and jerk limits, in a queue of three items (the rest
@@ -15,7 +15,7 @@
  *   the arc's circle within its sweep), braking included;
  * - speed, TOTAL acceleration, angular speed and acceleration by finite
  *   differences within the limits times 1 + 1e-3 over windows of WS = 10
- *   periods every period and of W = 50 periods every WD = 10 (plus the
+ *   periods every period and of W = 50 periods every WD = 25 (plus the
  *   rounding of 8 ulp of the positions' scale and 1e-4 degrees per
  *   sample), from the start to the end, feed override changes, stops and
  *   resumes included;
@@ -40,7 +40,6 @@
  */
 #include <float.h>
 #include <math.h>
-#include <stdio.h>
 #include <string.h>
 
 #include "dht.h"
@@ -50,10 +49,10 @@
 #include "dhmath/track.h"
 
 #define DT 1e-3f
-#define NMAX 6              /* segments of a queue */
+#define NMAX 5              /* segments of a queue */
 #define CAP 3               /* the queue's items */
 #define WS 10               /* the short window (periods), every period */
-#define WD 10               /* the long window's sampling (periods) */
+#define WD 25               /* the long window's sampling (periods) */
 #define W (5 * WD)          /* the long window (periods) */
 #define NS (2 * WS + 1)     /* samples kept, every period */
 #define NL (3 * W / WD + 1) /* samples kept, every WD periods */
@@ -63,10 +62,8 @@
 static dh_queue_f32 qu;
 static dh_queue_item_f32 items[CAP];
 static dh_path_f32 seg;                   /* the segment being appended */
-static dh_path_f32 segs[NMAX];            /* every segment of the queue */
 static float qc[NMAX + 1][DH_MAX_JOINTS]; /* the corners' configurations */
 static float sp[NS][7], lp[NL][7];        /* position and unit quaternion of the target m periods (m WD periods) ago */
-static dhm_fd fd = { sp, lp, NS, NL, WS, WD, W, (double)DT, 0 };
 static long last_bad;                     /* the last period with a lag or a change of r */
 static double jerk_worst[2];              /* largest third-difference ratios seen (linear, angular) */
 static long jerk_windows;
@@ -97,28 +94,30 @@ static void check_jerk(const float (*h)[7], int w, double hdt, const dh_cart_jer
 
 /* every target's finite differences within lim and jk (the file's
  * comment) */
-static void check_fd(const dh_mat4_f32 *T, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk, double S,
+static void check_fd(dhm_fd *fd, const dh_mat4_f32 *T, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk, double S,
                      long call)
 {
     const double ulp = S * FLT_EPSILON;
-    if (!dhm_fd_push(&fd, T, lim, ulp, call)) return;
+    if (!dhm_fd_push(fd, T, lim, ulp, call)) return;
     /* the jerk over windows of OK periods at a constant r */
-    if (fd.nh >= (long)(NL - 1) * WD + 1 && last_bad < call - 3L * W - 1L)
+    if (fd->nh >= (long)(NL - 1) * WD + 1 && last_bad < call - 3L * W - 1L)
         check_jerk((const float (*)[7])lp, W / WD, (double)W * DT, jk, ulp, call);
 }
 
-/* the target on segment k (the move running) within 1e-6 m */
-static void check_path(const dh_mat4_f32 *T, uint32_t n, long call)
+/* the target on the running move's segment (the queue's head item)
+ * within 1e-6 m */
+static void check_path(const dh_mat4_f32 *T, long call)
 {
-    const uint32_t k = (qu.seq < n) ? qu.seq : n - 1u;
+    const dh_path_f32 *p = &items[qu.head].path;
     double x[3], d;
     int i;
+    DHT_TRUE(qu.count > 0u);
     for (i = 0; i < 3; i++) x[i] = T->m[3][i];
-    if (segs[k].kind == (uint32_t)DH_PATH_ARC)
-        d = dhm_arc_dist(&segs[k], x);
+    if (p->kind == (uint32_t)DH_PATH_ARC)
+        d = dhm_arc_dist(p, x);
     else
-        d = dhm_seg_dist(&segs[k].A.m[3][0], &segs[k].B.m[3][0], x);
-    DHT_TRUE_MSG(d <= 1e-6, "call %ld: %.9g off segment %u", call, d, (unsigned)k);
+        d = dhm_seg_dist(&p->A.m[3][0], &p->B.m[3][0], x);
+    DHT_TRUE_MSG(d <= 1e-6, "call %ld: %.9g off segment %u", call, d, (unsigned)qu.seq);
 }
 
 /* the frame of corner k (FK of its configuration) */
@@ -130,27 +129,33 @@ static void corner(const dhm_rig *g, uint32_t k, dh_mat4_f32 *T)
     dhs_target_f32(&g->r, q, T);
 }
 
-/* segment k: a line, or an arc (dhm_draw_via) */
-static void make_seg(const dhm_rig *g, uint32_t k)
+/* segment k (a line, or an arc: dhm_draw_via) appended */
+static void append(const dhm_rig *g, uint32_t k, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk)
 {
     dh_mat4_f32 A, B;
     float via[3];
     corner(g, k, &A);
     corner(g, k + 1u, &B);
     if (dhm_draw_via(&A.m[3][0], &B.m[3][0], via))
-        DHT_EQ_INT(dh_path_arc_f32(&segs[k], &A, via, &B), DH_OK);
+        DHT_EQ_INT(dh_path_arc_f32(&seg, &A, via, &B), DH_OK);
     else
-        DHT_EQ_INT(dh_path_line_f32(&segs[k], &A, &B), DH_OK);
+        DHT_EQ_INT(dh_path_line_f32(&seg, &A, &B), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_jerk_f32(&qu, &seg, lim, jk), DH_OK);
 }
 
-/* the corners' configurations a few degrees apart from qa, and the
- * segments between them */
-static void draw_segs(const dhm_rig *g, const double *qa, uint32_t n, double step)
+/* the corners' configurations a few degrees apart from qa; S the
+ * largest |coordinate| of their positions (at least 1) */
+static void draw_corners(const dhm_rig *g, const double *qa, uint32_t n, double step, double *S)
 {
+    dh_mat4_f32 T;
     uint32_t k, i;
     for (i = 0; i < g->r.n; i++) qc[0][i] = (float)qa[i];
     for (k = 1; k <= n; k++) dhm_draw_q(&g->r, qc[k - 1u], step, qc[k]);
-    for (k = 0; k < n; k++) make_seg(g, k);
+    *S = 1.0;
+    for (k = 0; k <= n; k++) {
+        corner(g, k, &T);
+        for (i = 0; i < 3u; i++) *S = fmax(*S, fabs((double)T.m[3][i]));
+    }
 }
 
 /* the stop at call: braking, a second stop changes nothing; the bound of
@@ -177,6 +182,7 @@ static void jerk_queue(dhm_rig *g, const double *q_nom, long *nstop)
     dh_cart_limits_f32 lim;
     dh_cart_jerk_f32 jk;
     double qa[DH_MAX_JOINTS], S = 1.0, tmax = 0.0;
+    dhm_fd fd = { sp, lp, NS, NL, WS, WD, W, (double)DT, 0 };
     float q0[DH_MAX_JOINTS];
     dh_queue_cmd_f32 cmd;
     dh_queue_report_f32 rep;
@@ -191,11 +197,7 @@ static void jerk_queue(dhm_rig *g, const double *q_nom, long *nstop)
     float feed = 1.0f;
     int resumed = 0;
     for (i = 0; i < g->r.n; i++) qa[i] = q_nom[i] + dht_rand_uniform(-5.0, 5.0);
-    draw_segs(g, qa, n, 8.0);
-    for (i = 0; i <= n; i++) {
-        int k;
-        for (k = 0; k < 3; k++) S = fmax(S, fabs((double)((i < n) ? segs[i].A.m[3][k] : segs[n - 1u].B.m[3][k])));
-    }
+    draw_corners(g, qa, n, 8.0, &S);
     lim.vmax = (float)dht_rand_uniform(0.05, 0.2);
     lim.amax = (float)dht_rand_uniform(0.3, 2.0);
     lim.wmax = (float)dht_rand_uniform(15.0, 60.0);
@@ -206,15 +208,14 @@ static void jerk_queue(dhm_rig *g, const double *q_nom, long *nstop)
     DHT_EQ_INT(dh_track_init_f32(&g->t, &g->r, g->closed ? &g->m : NULL, q0, DT), DH_OK);
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
     for (added = 0; added < n && added < CAP; added++)
-        DHT_EQ_INT(dh_queue_add_path_jerk_f32(&qu, &segs[added], &lim, &jk), DH_OK);
-    fd.nh = 0;
+        append(g, added, &lim, &jk);
     last_bad = -1;
     for (call = 0; call < MAXCALL && done < n; call++) {
         dh_track_state st;
         DHT_EQ_INT(dh_queue_target_f32(&qu, &g->t, DT, &cmd), DH_OK);
         DHT_EQ_INT(cmd.kind, DH_MOVE_PATH);
-        check_path(&cmd.T, n, call);
-        check_fd(&cmd.T, &lim, &jk, S, call);
+        check_path(&cmd.T, call);
+        check_fd(&fd, &cmd.T, &lim, &jk, S, call);
         DHT_EQ_INT(dh_track_step_f32(&g->t, &cmd.T, g->t.q, &trep), DH_OK);
         st = trep.state;
         if (lag_on && call >= lag_at && call - lag_at < lag_len && qu.phase == (uint32_t)DH_QUEUE_RUN)
@@ -236,7 +237,7 @@ static void jerk_queue(dhm_rig *g, const double *q_nom, long *nstop)
         if (rep.done) {
             done++;
             DHT_EQ_INT(rep.last, done == added);
-            if (added < n) DHT_EQ_INT(dh_queue_add_path_jerk_f32(&qu, &segs[added++], &lim, &jk), DH_OK);
+            if (added < n) append(g, added++, &lim, &jk);
         }
         if (stop_call < 0 && stop_mode != 0 && call == stop_at && done < n) {
             stop_call = call;
@@ -245,7 +246,11 @@ static void jerk_queue(dhm_rig *g, const double *q_nom, long *nstop)
         }
     }
     DHT_TRUE_MSG(done == n, "%u of %u moves done in %ld periods", (unsigned)done, (unsigned)n, call);
-    DHT_TRUE(memcmp(&cmd.T, &segs[n - 1u].B, sizeof cmd.T) == 0);
+    {
+        dh_mat4_f32 B;
+        corner(g, n, &B);
+        DHT_TRUE(memcmp(&cmd.T, &B, sizeof cmd.T) == 0);
+    }
     if (stop_call >= 0) DHT_TRUE(resumed);
 }
 
@@ -259,8 +264,9 @@ static void run_robot(const dhm_robot_case *c)
     jerk_windows = 0;
     for (it = 0; it < nq; it++) jerk_queue(&g, c->q, &nstop);
     DHT_TRUE(jerk_windows > 0);
-    printf("%s: %ld queues, %ld stops braked, %ld jerk windows, worst jerk %.6f, angular %.6f of the limits\n",
-           c->d->name, nq, nstop, jerk_windows, jerk_worst[0], jerk_worst[1]);
+    /* integers: a double's printf needs more heap than the micro:bit's */
+    dht_printf("%s: %ld queues, %ld stops braked, %ld jerk windows, worst jerk %ld, angular %ld ppm of the limits\n",
+               c->d->name, nq, nstop, jerk_windows, (long)(jerk_worst[0] * 1e6), (long)(jerk_worst[1] * 1e6));
 }
 
 static void queues_puma(void) { run_robot(&dhm_puma560); }
