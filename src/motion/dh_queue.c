@@ -196,7 +196,8 @@ static DH_NOINLINE dh_status queue_add_item(dh_queue_f32 *qu, const dh_path_f32 
     dh_blend_rates_f32_(p, lim, it->rate);
     it->radius = 0.0f;
     it->ctb = 0.0f;
-    it->jerk = (prof->kind == (uint32_t)DH_PROFILE_SCURVE) ? 1u : 0u;
+    it->jerk = 0u;
+    if (prof->kind == (uint32_t)DH_PROFILE_SCURVE) it->jerk = 1u;
     it->n = 0u;
     it->kind = (uint32_t)DH_MOVE_PATH;
     qu->count++;
