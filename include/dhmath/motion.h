@@ -17,6 +17,7 @@
  *                    dh_move_target_f32, dh_move_advance_f32
  *   dh_queue.c       dh_queue_init_f32, dh_queue_add_joint_f32,
  *                    dh_queue_add_path_f32, dh_queue_add_path_blend_f32,
+ *                    dh_queue_add_path_jerk_f32,
  *                    dh_queue_target_f32,
  *                    dh_queue_advance_f32, dh_queue_stop_f32,
  *                    dh_queue_resume_f32
@@ -667,12 +668,12 @@ typedef enum {
  */
 typedef struct {
     dh_path_f32 path;              /**< path move: the path */
-    dh_profile_f32 prof;           /**< path move: its profile of s (dh_path_move_f32) */
+    dh_profile_f32 prof;           /**< path move: its profile of s (dh_path_move_f32, dh_path_move_jerk_f32) */
     float q1[DH_MAX_JOINTS];       /**< joint move: end configuration */
     float vmax[DH_MAX_JOINTS];     /**< joint move: velocity limits */
     float amax[DH_MAX_JOINTS];     /**< joint move: acceleration limits */
     float jmax[DH_MAX_JOINTS];     /**< joint move: jerk limits (when jerk is 1) */
-    uint32_t jerk;                 /**< joint move: 1 when jmax was given */
+    uint32_t jerk;                 /**< 1 when jerk-limited: joint move with jmax, path move of dh_queue_add_path_jerk_f32 with jerk */
     uint32_t n;                    /**< joint move: number of joints */
     uint32_t kind;                 /**< DH_MOVE_JOINT or DH_MOVE_PATH */
     dh_cart_limits_f32 lim;        /**< path move: its limits */
@@ -817,6 +818,34 @@ dh_status dh_queue_add_path_blend_f32(dh_queue_f32 *qu, const dh_path_f32 *p, co
                                       float radius);
 
 /**
+ * @brief Appends a jerk-limited Cartesian move along p within lim and
+ *        jerk (dh_move_path_jerk_f32: the seven-phase profile of s of
+ *        dh_path_move_jerk_f32, TOTAL linear jerk within jerk->jmax on
+ *        lines and arcs), run as dh_queue_add_path_f32's moves are.
+ * Feed override r as dh_move_advance_f32's: speed and TOTAL acceleration
+ * within lim at every r; the jerk within jerk while r is constant (a
+ * change of r adds s' r' and s'' r r' terms that the rule bounds in
+ * acceleration only). Stop: s brakes from its rate s' r and acceleration
+ * s'' r^2 with jerk +-j (j = the plan's peak |s'''|), its deceleration
+ * ramped to at most the plan's peak |s''| and back, so the tool's speed,
+ * acceleration and jerk stay within lim and jerk (docs/design.md, "Stop
+ * and resume"), never beyond B. Resume: a seven-phase profile of s from
+ * where it stopped to 1 within the first plan's peaks of s', s'' and
+ * s'''. Its corners with the moves before and after it run at rest
+ * (no jerk limit holds in the queue's blends).
+ * @param qu, p, lim as dh_queue_add_path_f32 (p, lim and jerk copied).
+ * @param jerk jerk limits, each finite and > 0; NULL: the move of
+ *        dh_queue_add_path_f32.
+ * @return DH_OK; DH_ERR_LIMIT when the queue is full (checked first);
+ *         then DH_ERR_NAN, DH_ERR_ARG, DH_ERR_OVERFLOW as
+ *         dh_move_path_jerk_f32. On error qu and its queued moves are
+ *         untouched (the free item's profile is overwritten: it is
+ *         planned there).
+ */
+dh_status dh_queue_add_path_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                     const dh_cart_jerk_f32 *jerk);
+
+/**
  * @brief Begins a control period: the command of the running move after
  *        this period (joint move) or the frame to track this period (path
  *        move), starting the next queued move when the last one is done.
@@ -877,8 +906,11 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
  *   stop, a = amax_i (1 - 2^-10), j = jmax_i; never beyond q1;
  * - path move: s decelerates from its rate s' r (r the feed override) at
  *   the acceleration of its plan (within lim) and stops within s' r / s''
- *   of the stop, never beyond B; the brake time advances only when the
- *   tracker is OK.
+ *   of the stop (jerk-limited: jerk +-j, the deceleration ramped to
+ *   a_p <= A and back, within v1 / A + 3 A / j, v1 = s' r +
+ *   (s'' r^2)^2 / (2 j), A and j the plan's peak |s''| and |s'''|),
+ *   never beyond B; the brake time
+ *   advances only when the tracker is OK.
  * A move not started, held at its start (clock 0) or at its end, or no
  * move at all, is at rest: the stop is immediate (phase STOPPED). A stop
  * while braking or stopped changes nothing. Queued moves stay queued and
@@ -894,7 +926,8 @@ dh_status dh_queue_stop_f32(dh_queue_f32 *qu);
  * @brief Resumes after a stop: the stopped move is planned again from
  *        rest where it stopped to its end within the same limits (a joint
  *        move by dh_move_joint_f32 to q1, a path move by a trapezoid of s
- *        to 1 within the first plan's rates of s), so it ends exactly at
+ *        to 1 within the first plan's rates of s, a seven-phase profile
+ *        within its jerk too when jerk-limited), so it ends exactly at
  *        its end (q1 bit for bit; B), and then the rest of the queue runs.
  * Called while braking, the move resumes when the brake reaches rest;
  * called while running, it changes nothing.

@@ -176,7 +176,8 @@ float dh_motion_feed_rise_f32_(float k, float p, float A, float r)
  * design.md, "Motion"): s'' is bounded over the last and the next period
  * by its values at their ends and at the clock (the trapezoid's s'' falls
  * monotonically; the profile's first and last phases, clamped to 0 by the
- * evaluation, are taken at +-A). 1 (no bound) where s' is 0. */
+ * evaluation, are taken at +-A), widened by j dt for the seven-phase
+ * profile (its s'' is j-Lipschitz). 1 (no bound) where s' is 0. */
 static void move_feed_bounds(const dh_move_f32 *mv, float dt, float *up, float *dn)
 {
     const dh_profile_f32 *pr = &mv->prof[0];
@@ -194,6 +195,10 @@ static void move_feed_bounds(const dh_move_f32 *mv, float dt, float *up, float *
     (void)dh_profile_eval_f32(pr, mv->clock, &s, &sd, &a0);
     if (a0 > hi) hi = a0;
     if (a0 < lo) lo = a0;
+    /* the seven-phase s'' is not monotone but j-Lipschitz: within j dt of
+     * the value at the clock over the period's clocks (0 for the trapezoid) */
+    hi += pr->j * dt;
+    lo -= pr->j * dt;
     if (!(sd > 0.0f)) return;
     k = sd / dt;
     *up = dh_motion_feed_rise_f32_(k, (hi > 0.0f) ? hi : 0.0f, A, r);

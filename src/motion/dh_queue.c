@@ -165,6 +165,8 @@ static DH_NOINLINE void queue_add_corner(dh_queue_f32 *qu, float radius)
     i1->cb[0] = 0.0f;
     i1->cb[1] = 0.0f;
     if (i1->kind != (uint32_t)DH_MOVE_PATH || i2->kind != (uint32_t)DH_MOVE_PATH) return;
+    /* a jerk-limited path move's corners run at rest (the tails are trapezoids) */
+    if (i1->jerk != 0u || i2->jerk != 0u) return;
     if (!dh_feq_f32(i1->lim.vmax, i2->lim.vmax) || !dh_feq_f32(i1->lim.amax, i2->lim.amax) ||
         !dh_feq_f32(i1->lim.wmax, i2->lim.wmax) || !dh_feq_f32(i1->lim.wdmax, i2->lim.wdmax))
         return;
@@ -189,12 +191,13 @@ static DH_NOINLINE dh_status queue_add_item(dh_queue_f32 *qu, const dh_path_f32 
     if (qu->count >= qu->cap) return DH_ERR_LIMIT;
     it = queue_slot(qu, qu->count);
     it->path = *p;
-    it->prof = *prof;
+    if (prof != &it->prof) it->prof = *prof;
     it->lim = *lim;
     dh_blend_rates_f32_(p, lim, it->rate);
     it->radius = 0.0f;
     it->ctb = 0.0f;
     it->jerk = 0u;
+    if (prof->kind == (uint32_t)DH_PROFILE_SCURVE) it->jerk = 1u;
     it->n = 0u;
     it->kind = (uint32_t)DH_MOVE_PATH;
     qu->count++;
@@ -230,6 +233,24 @@ dh_status dh_queue_add_path_blend_f32(dh_queue_f32 *qu, const dh_path_f32 *p, co
     DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
     st = queue_add_path(qu, p, lim, radius);
     if (st == DH_OK) queue_add_corner(qu, radius);
+    return st;
+}
+
+/* The profile is planned straight into the free item (no profile on this
+ * frame: dh_path_move_jerk_f32 fills the stack budget on Cortex-M0+ with
+ * one small frame above it); the corner after it runs at rest (the
+ * blends' tails are trapezoids). */
+dh_status dh_queue_add_path_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                     const dh_cart_jerk_f32 *jerk)
+{
+    dh_queue_item_f32 *it;
+    dh_status st;
+    DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
+    if (qu->count >= qu->cap) return DH_ERR_LIMIT;
+    it = queue_slot(qu, qu->count);
+    st = dh_path_move_jerk_f32(&it->prof, p, lim, jerk);
+    if (st == DH_OK) st = queue_add_item(qu, p, lim, &it->prof);
+    if (st == DH_OK) queue_add_corner(qu, 0.0f);
     return st;
 }
 
@@ -648,7 +669,11 @@ static DH_NOINLINE dh_status queue_start_path(dh_queue_f32 *qu, const dh_queue_i
     mv->kind = (uint32_t)DH_MOVE_NONE;
     mv->prof[0] = it->prof;
     if (s0 > 0.0f && qu->vs > 0.0f && qu->as > 0.0f) {
-        st = dh_profile_trap_f32(&mv->prof[0], (s0 < 1.0f) ? 1.0f - s0 : 0.0f, qu->vs, qu->as);
+        /* the rest of the path within the first plan's peaks of s (and its jerk) */
+        if (it->jerk != 0u)
+            st = dh_profile_scurve_f32(&mv->prof[0], (s0 < 1.0f) ? 1.0f - s0 : 0.0f, qu->vs, qu->as, it->prof.j);
+        else
+            st = dh_profile_trap_f32(&mv->prof[0], (s0 < 1.0f) ? 1.0f - s0 : 0.0f, qu->vs, qu->as);
         if (st != DH_OK) return st;
     } else {
         s0 = 0.0f;
@@ -905,7 +930,8 @@ static DH_NOINLINE float queue_brake(dh_queue_f32 *qu)
     } else {
         /* s's rate and acceleration under the feed override r: s' r, s'' r^2 */
         s = queue_path_s(qu, qu->mv.clock, &sd, &sdd);
-        d = queue_brake_plan(qu, 0u, s, sd * qu->mv.feed, sdd * qu->mv.feed * qu->mv.feed, qu->as, 0.0f, 1.0f);
+        d = queue_brake_plan(qu, 0u, s, sd * qu->mv.feed, sdd * qu->mv.feed * qu->mv.feed, qu->as,
+                             (it->jerk != 0u) ? it->prof.j : 0.0f, 1.0f);
     }
     return d;
 }

@@ -50,6 +50,7 @@
 #include <string.h>
 
 #include "dht.h"
+#include "support_motion.h"
 #include "support_robots.h"
 #include "dhmath/motion.h"
 #include "dhmath/track.h"
@@ -62,17 +63,7 @@
 #define W (5 * WD)       /* the long window (periods) */
 #define NS (2 * WS + 1)  /* samples kept, every period */
 #define NL (2 * W / WD + 1) /* samples kept, every WD periods */
-#define REL 1e-3
-#define ANG_NOISE 1e-4   /* degrees: rounding of a sampled rotation */
 #define MAXCALL 200000L
-#define RAD2DEG 57.29577951308232
-
-typedef struct {
-    dh_robot r;
-    dh_ikc_model_f32 m;
-    dh_track_f32 t;
-    int closed;
-} rig;
 
 /* static: the micro:bit's RAM holds them beside the rig on the stack */
 static dh_queue_f32 qu;
@@ -83,33 +74,8 @@ static float cp[NMAX + 1][3];         /* the corners' positions (line k: cp[k] t
 static float radius[NMAX];
 static unsigned char isarc[NMAX];      /* segment k is an arc (drawn when appended) */
 static float sp[NS][7], lp[NL][7];    /* position and unit quaternion of the target m periods (m WD periods) ago */
-static long nh;
 static long arc_ov;                   /* periods in overlaps at a corner with an arc */
 static long arc_stops;                /* stops inside such an overlap */
-
-static double dist3(const double a[3], const double b[3])
-{
-    const double d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-    return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-}
-
-/* distance of x from the segment of line k */
-static double seg_dist(uint32_t k, const double x[3])
-{
-    double a[3], d[3], r[3], dd = 0.0, s = 0.0, e[3];
-    int i;
-    for (i = 0; i < 3; i++) {
-        a[i] = cp[k][i];
-        d[i] = (double)cp[k + 1u][i] - a[i];
-        r[i] = x[i] - a[i];
-        dd += d[i] * d[i];
-        s += r[i] * d[i];
-    }
-    s = (dd > 0.0) ? s / dd : 0.0;
-    s = fmin(fmax(s, 0.0), 1.0);
-    for (i = 0; i < 3; i++) e[i] = r[i] - s * d[i];
-    return sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-}
 
 /* the path of segment k in the queue's ring: the item from corner k to
  * corner k + 1 (NULL when none) */
@@ -125,155 +91,20 @@ static const dh_path_f32 *seg_path(uint32_t k)
     return NULL;
 }
 
-/* distance of x from the arc of segment k (its path in the queue's ring):
- * from the circle of centre p_A - u0, radius |u0| in the plane of normal
- * n, and beyond the sweep the distance from the nearer end */
+/* distance of x from the arc of segment k (its path in the queue's ring) */
 static double arc_dist(uint32_t k, const double x[3])
 {
     const dh_path_f32 *p = seg_path(k);
-    double r[3], n[3], u[3], w[3], z = 0.0, nn = 0.0, rho = 0.0, rr = 0.0, ph, e[2], sw;
-    int i;
-    DHT_TRUE(p != NULL && p->kind == (uint32_t)DH_PATH_ARC);
-    if (p == NULL) return INFINITY;
-    sw = (double)p->sweep / RAD2DEG;
-    for (i = 0; i < 3; i++) nn += (double)p->n[i] * p->n[i];
-    for (i = 0; i < 3; i++) {
-        n[i] = p->n[i] / sqrt(nn);
-        u[i] = p->u0[i];
-        r[i] = x[i] - ((double)cp[k][i] - u[i]);
-        z += r[i] * n[i];
-        rho += u[i] * u[i];
-    }
-    rho = sqrt(rho);
-    for (i = 0; i < 3; i++) {
-        r[i] -= z * n[i];
-        rr += r[i] * r[i];
-    }
-    w[0] = n[1] * u[2] - n[2] * u[1];
-    w[1] = n[2] * u[0] - n[0] * u[2];
-    w[2] = n[0] * u[1] - n[1] * u[0];
-    ph = atan2(r[0] * w[0] + r[1] * w[1] + r[2] * w[2], r[0] * u[0] + r[1] * u[1] + r[2] * u[2]);
-    if (ph < -0.5 * (2.0 * 3.14159265358979323846 - sw)) ph += 2.0 * 3.14159265358979323846;
-    if (ph >= 0.0 && ph <= sw) {
-        e[0] = z;
-        e[1] = sqrt(rr) - rho;
-        return sqrt(e[0] * e[0] + e[1] * e[1]);
-    }
-    for (i = 0; i < 3; i++) r[i] = x[i] - cp[(ph < 0.0) ? k : k + 1u][i];
-    return sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
-}
-
-/* unit quaternion (w, x, y, z) of T's rotation, in double (Shepperd) */
-static void quat_of(const dh_mat4_f32 *T, double q[4])
-{
-    double R[3][3], tr, s, n;
-    int i, j;
-    for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++) R[i][j] = T->m[j][i];
-    tr = R[0][0] + R[1][1] + R[2][2];
-    if (tr > 0.0) {
-        s = 2.0 * sqrt(1.0 + tr);
-        q[0] = 0.25 * s;
-        q[1] = (R[2][1] - R[1][2]) / s;
-        q[2] = (R[0][2] - R[2][0]) / s;
-        q[3] = (R[1][0] - R[0][1]) / s;
-    } else if (R[0][0] > R[1][1] && R[0][0] > R[2][2]) {
-        s = 2.0 * sqrt(1.0 + R[0][0] - R[1][1] - R[2][2]);
-        q[0] = (R[2][1] - R[1][2]) / s;
-        q[1] = 0.25 * s;
-        q[2] = (R[0][1] + R[1][0]) / s;
-        q[3] = (R[0][2] + R[2][0]) / s;
-    } else if (R[1][1] > R[2][2]) {
-        s = 2.0 * sqrt(1.0 + R[1][1] - R[0][0] - R[2][2]);
-        q[0] = (R[0][2] - R[2][0]) / s;
-        q[1] = (R[0][1] + R[1][0]) / s;
-        q[2] = 0.25 * s;
-        q[3] = (R[1][2] + R[2][1]) / s;
-    } else {
-        s = 2.0 * sqrt(1.0 + R[2][2] - R[0][0] - R[1][1]);
-        q[0] = (R[1][0] - R[0][1]) / s;
-        q[1] = (R[0][2] + R[2][0]) / s;
-        q[2] = (R[1][2] + R[2][1]) / s;
-        q[3] = 0.25 * s;
-    }
-    n = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    for (i = 0; i < 4; i++) q[i] /= n;
-}
-
-/* v = the rotation vector (degrees) of Rb Ra^T, from quaternions */
-static void rotvec(const float *qa, const float *qb, double v[3])
-{
-    /* qb * conj(qa) */
-    const double w = (double)qb[0] * qa[0] + (double)qb[1] * qa[1] + (double)qb[2] * qa[2] + (double)qb[3] * qa[3];
-    double x[3], n, th;
-    int i;
-    x[0] = -(double)qb[0] * qa[1] + (double)qb[1] * qa[0] - (double)qb[2] * qa[3] + (double)qb[3] * qa[2];
-    x[1] = -(double)qb[0] * qa[2] + (double)qb[1] * qa[3] + (double)qb[2] * qa[0] - (double)qb[3] * qa[1];
-    x[2] = -(double)qb[0] * qa[3] - (double)qb[1] * qa[2] + (double)qb[2] * qa[1] + (double)qb[3] * qa[0];
-    n = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-    th = 2.0 * atan2(n, fabs(w));
-    for (i = 0; i < 3; i++) v[i] = (n > 0.0) ? ((w < 0.0) ? -1.0 : 1.0) * th * x[i] / n * RAD2DEG : 0.0;
-}
-
-/* the acceleration (linear, angular) of the samples h[0], h[w], h[2 w]
- * times (w dt)^2 within lim (h: NS or NL rows of 7) */
-static void check_acc(const float (*h)[7], int w, double hdt, const dh_cart_limits_f32 *lim, double ulp, long call)
-{
-    double a[3], b[3], x;
-    int k;
-    for (k = 0; k < 3; k++) a[k] = (double)h[0][k] - 2.0 * h[w][k] + h[2 * w][k];
-    x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    DHT_TRUE_MSG(x <= (double)lim->amax * hdt * hdt * (1.0 + REL) + 8.0 * ulp,
-                 "call %ld: acceleration %.9g over %.9g (%.3g s)", call, x / (hdt * hdt), (double)lim->amax, hdt);
-    rotvec(&h[w][3], &h[0][3], a);
-    rotvec(&h[w][3], &h[2 * w][3], b);
-    for (k = 0; k < 3; k++) a[k] += b[k];
-    x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    DHT_TRUE_MSG(x <= (double)lim->wdmax * hdt * hdt * (1.0 + REL) + 2.0 * ANG_NOISE,
-                 "call %ld: angular acceleration %.9g over %.9g (%.3g s)", call, x / (hdt * hdt), (double)lim->wdmax,
-                 hdt);
-}
-
-/* the speed (linear, angular) between the samples h0 and h1, hdt apart */
-static void check_speed(const float *h0, const float *h1, double hdt, const dh_cart_limits_f32 *lim, double ulp,
-                        long call)
-{
-    double p0[3], p1[3], a[3], x;
-    int k;
-    for (k = 0; k < 3; k++) {
-        p0[k] = h0[k];
-        p1[k] = h1[k];
-    }
-    x = dist3(p0, p1);
-    DHT_TRUE_MSG(x <= (double)lim->vmax * hdt * (1.0 + REL) + 4.0 * ulp, "call %ld: speed %.9g over %.9g (%.3g s)",
-                 call, x / hdt, (double)lim->vmax, hdt);
-    rotvec(&h1[3], &h0[3], a);
-    x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    DHT_TRUE_MSG(x <= (double)lim->wmax * hdt * (1.0 + REL) + ANG_NOISE, "call %ld: angular speed %.9g over %.9g",
-                 call, x / hdt, (double)lim->wmax);
+    DHT_TRUE(p != NULL);
+    return (p != NULL) ? dhm_arc_dist(p, x) : INFINITY;
 }
 
 /* every target's finite differences within lim (the file's comment):
  * each period's step, windows of WS periods every period and of W
  * periods every WD periods */
-static void check_fd(const dh_mat4_f32 *T, const dh_cart_limits_f32 *lim, double S, long call)
+static void check_fd(dhm_fd *fd, const dh_mat4_f32 *T, const dh_cart_limits_f32 *lim, double S, long call)
 {
-    const double ulp = S * FLT_EPSILON;
-    double q[4];
-    int m, k;
-    for (m = NS - 1; m > 0; m--) memcpy(sp[m], sp[m - 1], sizeof sp[0]);
-    quat_of(T, q);
-    for (k = 0; k < 3; k++) sp[0][k] = T->m[3][k];
-    for (k = 0; k < 4; k++) sp[0][3 + k] = (float)q[k];
-    nh++;
-    if (nh >= 2) check_speed(sp[0], sp[1], DT, lim, ulp, call);
-    if (nh >= NS) check_acc((const float (*)[7])sp, WS, (double)WS * DT, lim, ulp, call);
-    if ((nh - 1) % WD != 0) return;
-    for (m = NL - 1; m > 0; m--) memcpy(lp[m], lp[m - 1], sizeof lp[0]);
-    memcpy(lp[0], sp[0], sizeof lp[0]);
-    if (nh < (long)(NL - 1) * WD + 1) return;
-    check_speed(lp[0], lp[W / WD], (double)W * DT, lim, ulp, call);
-    check_acc((const float (*)[7])lp, W / WD, (double)W * DT, lim, ulp, call);
+    (void)dhm_fd_push(fd, T, lim, S * FLT_EPSILON, call);
 }
 
 /* the target on its line outside an overlap, within the corner's radius
@@ -289,19 +120,19 @@ static int check_path(const dh_mat4_f32 *T, uint32_t n, double S, long call)
         c[i] = cp[k + 1u][i];
     }
     if (qu.bmode == 2u) {
-        d = dist3(x, c);
+        d = dhm_dist3(x, c);
         DHT_TRUE_MSG(k + 1u < n && d <= (double)radius[k] + tol, "call %ld: %.9g from corner %u, radius %.9g", call, d,
                      (unsigned)k, (double)radius[k]);
         if (isarc[k] || (k + 1u < n && isarc[k + 1u])) arc_ov++;
         return 1;
     }
-    d = isarc[k] ? arc_dist(k, x) : seg_dist(k, x);
+    d = isarc[k] ? arc_dist(k, x) : dhm_seg_dist(cp[k], cp[k + 1u], x);
     DHT_TRUE_MSG(d <= 1e-6, "call %ld: %.9g off %s %u", call, d, isarc[k] ? "arc" : "line", (unsigned)k);
     return 0;
 }
 
 /* the frame of corner k (FK of its configuration) */
-static void corner(const rig *g, uint32_t k, dh_mat4_f32 *T)
+static void corner(const dhm_rig *g, uint32_t k, dh_mat4_f32 *T)
 {
     double q[DH_MAX_JOINTS];
     uint32_t i;
@@ -309,40 +140,14 @@ static void corner(const rig *g, uint32_t k, dh_mat4_f32 *T)
     dhs_target_f32(&g->r, q, T);
 }
 
-/* segment k an arc (in half the segments, of a chord of 1 cm at least;
- * 0 when not): its via point off the chord's middle by 0.1 to 0.4 of the
- * chord, in a random direction across it */
-static int draw_arc(uint32_t k, float via[3])
-{
-    double d[3], e[3], h = 0.0, c = 0.0, x;
-    int i;
-    for (i = 0; i < 3; i++) {
-        d[i] = (double)cp[k + 1u][i] - cp[k][i];
-        c += d[i] * d[i];
-    }
-    if (dht_rand_u32() % 2u == 0u || c < 1e-4) return 0;
-    do {
-        for (i = 0; i < 3; i++) e[i] = dht_rand_uniform(-1.0, 1.0);
-        x = (e[0] * d[0] + e[1] * d[1] + e[2] * d[2]) / c;
-        h = 0.0;
-        for (i = 0; i < 3; i++) {
-            e[i] -= x * d[i];
-            h += e[i] * e[i];
-        }
-    } while (h < 0.01);
-    x = dht_rand_uniform(0.1, 0.4) * sqrt(c / h);
-    for (i = 0; i < 3; i++) via[i] = (float)(0.5 * ((double)cp[k][i] + cp[k + 1u][i]) + x * e[i]);
-    return 1;
-}
-
-/* segment k appended with its radius: a line, or an arc (draw_arc) */
-static void append(const rig *g, uint32_t k, const dh_cart_limits_f32 *lim)
+/* segment k appended with its radius: a line, or an arc (dhm_draw_via) */
+static void append(const dhm_rig *g, uint32_t k, const dh_cart_limits_f32 *lim)
 {
     dh_mat4_f32 A, B;
     float via[3];
     corner(g, k, &A);
     corner(g, k + 1u, &B);
-    isarc[k] = (unsigned char)draw_arc(k, via);
+    isarc[k] = (unsigned char)dhm_draw_via(cp[k], cp[k + 1u], via);
     if (isarc[k])
         DHT_EQ_INT(dh_path_arc_f32(&line, &A, via, &B), DH_OK);
     else
@@ -352,18 +157,13 @@ static void append(const rig *g, uint32_t k, const dh_cart_limits_f32 *lim)
 
 /* a random queue of n lines from the configuration qa: the corners'
  * configurations a few degrees apart, their positions, the radii */
-static void draw_lines(const rig *g, const double *qa, uint32_t n, double step)
+static void draw_lines(const dhm_rig *g, const double *qa, uint32_t n, double step)
 {
     dh_mat4_f32 T;
     uint32_t k, i;
     for (i = 0; i < g->r.n; i++) qc[0][i] = (float)qa[i];
     for (k = 0; k <= n; k++) {
-        for (i = 0; k > 0 && i < g->r.n; i++) {
-            const dh_joint *j = &g->r.joint[i];
-            double v = qc[k - 1u][i] + dht_rand_uniform(-step, step);
-            if (j->qmin <= j->qmax) v = fmin(fmax(v, j->qmin + 5.0), j->qmax - 5.0);
-            qc[k][i] = (float)v;
-        }
+        if (k > 0) dhm_draw_q(&g->r, qc[k - 1u], step, qc[k]);
         corner(g, k, &T);
         for (i = 0; i < 3u; i++) cp[k][i] = T.m[3][i];
         if (k < n) radius[k] = (dht_rand_u32() % 5u == 0u) ? 0.0f : (float)dht_rand_uniform(1e-3, 0.05);
@@ -371,9 +171,10 @@ static void draw_lines(const rig *g, const double *qa, uint32_t n, double step)
 }
 
 /* one random queue on the rig's robot from about q_nom (the file's comment) */
-static void blend_queue(rig *g, const double *q_nom, long *overlap_periods)
+static void blend_queue(dhm_rig *g, const double *q_nom, long *overlap_periods)
 {
     dh_cart_limits_f32 lim;
+    dhm_fd fd = { sp, lp, NS, NL, WS, WD, W, (double)DT, 0 };
     double qa[DH_MAX_JOINTS], S = 1.0;
     float q0[DH_MAX_JOINTS];
     dh_queue_cmd_f32 cmd;
@@ -405,14 +206,13 @@ static void blend_queue(rig *g, const double *q_nom, long *overlap_periods)
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
     for (added = 0; added < n0 && added < CAP; added++) append(g, added, &lim);
     planned = added >= 2u && items[0].ctb > 0.0f;
-    nh = 0;
     for (call = 0; call < MAXCALL && done < n; call++) {
         dh_track_state st;
         DHT_EQ_INT(dh_queue_target_f32(&qu, &g->t, DT, &cmd), DH_OK);
         DHT_EQ_INT(cmd.kind, DH_MOVE_PATH);
         in_ov = check_path(&cmd.T, n, S, call);
         *overlap_periods += in_ov;
-        check_fd(&cmd.T, &lim, S, call);
+        check_fd(&fd, &cmd.T, &lim, S, call);
         DHT_EQ_INT(dh_track_step_f32(&g->t, &cmd.T, g->t.q, &trep), DH_OK);
         st = trep.state;
         /* the lag stretch: inside the first overlap, or at a random period */
@@ -458,48 +258,26 @@ static void blend_queue(rig *g, const double *q_nom, long *overlap_periods)
     if (stop_mode == 0 && planned) DHT_TRUE(*overlap_periods > ov0);
 }
 
-static void run_robot(const dhs_robot *d, const double *q_nom, int closed)
+static void run_robot(const dhm_robot_case *c)
 {
     long it, nq = DHT_ITER(8), ov = 0;
-    uint32_t i;
-    rig g;
-    DHT_EQ_INT(dhs_build(d, &g.r), DH_OK);
-    for (i = 0; i < g.r.n; i++) DHT_EQ_INT(dh_robot_set_rates_f32(&g.r, i, 180.0f, 3000.0f), DH_OK);
-    g.closed = closed;
-    if (closed) DHT_EQ_INT(dh_ikc_analyse_f32(&g.r, &g.m), DH_OK);
+    dhm_rig g;
+    dhm_rig_make(&g, c);
     arc_ov = 0;
     arc_stops = 0;
-    for (it = 0; it < nq; it++) blend_queue(&g, q_nom, &ov);
-    printf("%s: %ld queues, %ld periods in overlaps, %ld at corners with an arc (%ld stops there)\n", d->name, nq,
+    for (it = 0; it < nq; it++) blend_queue(&g, c->q, &ov);
+    printf("%s: %ld queues, %ld periods in overlaps, %ld at corners with an arc (%ld stops there)\n", c->d->name, nq,
            ov, arc_ov, arc_stops);
 }
 
-static void queues_puma(void)
-{
-    static const double Q[6] = { 10.0, -30.0, 45.0, 20.0, 35.0, -60.0 };
-    run_robot(&dhs_puma560_m, Q, 1);
-}
+static void queues_puma(void) { run_robot(&dhm_puma560); }
+static void queues_ur5(void) { run_robot(&dhm_ur5); }
+static void queues_panda(void) { run_robot(&dhm_panda); }
 
-static void queues_ur5(void)
-{
-    static const double Q[6] = { 30.0, -80.0, 90.0, -100.0, -90.0, 20.0 };
-    run_robot(&dhs_ur5_m, Q, 1);
-}
-
-static void queues_panda(void)
-{
-    static const double Q[7] = { 0.0, -30.0, 0.0, -120.0, 0.0, 90.0, 45.0 };
-    run_robot(&dhs_panda_m, Q, 0);
-}
-
-/* FNV-1a hash of the queue (a copy does not fit the micro:bit's RAM) */
+/* the queue's hash (and its items') */
 static uint64_t queue_hash(void)
 {
-    const unsigned char *b = (const unsigned char *)&qu;
-    uint64_t h = 14695981039346656037ull;
-    size_t i;
-    for (i = 0; i < sizeof qu; i++) h = (h ^ b[i]) * 1099511628211ull;
-    return h;
+    return dhm_hash(&qu, sizeof qu, NULL, 0);
 }
 
 /* the radius's statuses; the queue untouched */

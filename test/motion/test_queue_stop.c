@@ -21,6 +21,7 @@
 #include <string.h>
 
 #include "dht.h"
+#include "support_motion.h"
 #include "support_robots.h"
 #include "dhmath/motion.h"
 #include "dhmath/track.h"
@@ -50,16 +51,10 @@ static const double STEP[NL][6] = {
     { 5.0, 4.0, -6.0, 3.0, 2.0, -5.0 },
 };
 
-/* FNV-1a hash of the queue and its items */
+/* the queue's hash (and its items') */
 static uint64_t queue_hash(void)
 {
-    const unsigned char *b = (const unsigned char *)&qu;
-    uint64_t h = 14695981039346656037ull;
-    size_t i;
-    for (i = 0; i < sizeof qu; i++) h = (h ^ b[i]) * 1099511628211ull;
-    b = (const unsigned char *)items;
-    for (i = 0; i < sizeof items; i++) h = (h ^ b[i]) * 1099511628211ull;
-    return h;
+    return dhm_hash(&qu, sizeof qu, items, sizeof items);
 }
 
 /* corner k's configuration and frame */
