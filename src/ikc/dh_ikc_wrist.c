@@ -80,8 +80,9 @@ typedef char dh_ikc_k_fits_[(KW_COUNT <= (int)DH_IKC_K) ? 1 : -1];
  * optimised for size (DH_HOT_INLINE). */
 DH_INLINE float wrist_atan2(float y, float x, float fallback)
 {
+    if (WRIST_ONE_PASS && DH_HOT_INLINE) return dh_atan2f_dg_fb_inl_(y, x, fallback);
     if (dh_feq_f32(y, 0.0f) && dh_feq_f32(x, 0.0f)) return fallback;
-    return (WRIST_ONE_PASS && DH_HOT_INLINE) ? dh_atan2f_dg_inl_(y, x) : dh_atan2f_dg_(y, x);
+    return dh_atan2f_dg_(y, x);
 }
 
 

@@ -58,9 +58,12 @@ float dh_atan2f_dg_(float y, float x);
 /* 180 / pi rounded to float (DH_RAD2DEG_F) */
 #define DH_MF_RAD2DEG 57.295779513082320876798f
 
-/* dh_atan2f_dg_'s body, inlined by a caller that has the code space and
- * the registers for it (the FPU builds' closed-form wrist solver). */
-DH_INLINE float dh_atan2f_dg_inl_(float y, float x)
+/* dh_atan2f_dg_'s body with fb returned for (+-0, +-0) (dh_atan2f_dg_: fb
+ * 45, the value the general path gives them), inlined by a caller that has
+ * the code space and the registers for it (the FPU builds' closed-form
+ * wrist solver, whose fallback is a free angle): the zero test costs
+ * nothing on the common path, it sits in the branch of equal magnitudes. */
+DH_INLINE float dh_atan2f_dg_fb_inl_(float y, float x, float fb)
 {
     /* 45 K degrees, indexed by (w << 2) | (xn << 1) | b (below) */
     static const float k45[8] = { 0.0f, 45.0f, 180.0f, 135.0f, 90.0f, 45.0f, 90.0f, 135.0f };
@@ -75,7 +78,8 @@ DH_INLINE float dh_atan2f_dg_inl_(float y, float x)
     mn = w ? ax : ay;
     if (!(mn < mx)) {
         /* equal magnitudes (or a NaN): 45 degrees off an axis; mn - mx
-         * is 0, or NaN for a NaN */
+         * is 0, or NaN for a NaN; both zero (a NaN fails the tests): fb */
+        if (mx <= 0.0f && mn <= 0.0f) return fb;
         b = 1u;
         u = mn - mx;
     } else if (mn + mn >= mx) {
