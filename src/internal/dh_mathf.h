@@ -43,8 +43,9 @@ float dh_atan2f_deg_(float y, float x, float corr);
  * within 3 ulp (results below 2^-100: 3 ulp of 2^-100; ratios that small
  * underflow), for finite (y, x) not both zero (both zero give 45; a NaN
  * in gives NaN out): the reduction of dh_atan2f_ in plain float (no bit
- * tests, no special cases), 45 K degrees exact and atan(u) scaled by
- * 180/pi. For the closed-form solvers, whose callers take (0, 0) apart.
+ * tests, no special cases; the polynomial in fused multiply-adds where
+ * the core has them, dh_mla_f32_), 45 K degrees exact and atan(u) scaled
+ * by 180/pi. For the closed-form solvers, whose callers take (0, 0) apart.
  */
 float dh_atan2f_dg_(float y, float x);
 
@@ -57,6 +58,21 @@ float dh_atan2f_dg_(float y, float x);
 #define DH_MF_T6 0.03871351284f
 /* 180 / pi rounded to float (DH_RAD2DEG_F) */
 #define DH_MF_RAD2DEG 57.295779513082320876798f
+
+/* a b + c: one fused multiply-add (a single rounding) where the core has
+ * the instruction (__FP_FAST_FMAF: Cortex-M4F, M7, RV32F), else the product
+ * and the sum rounded each (the same bits as writing a * b + c). */
+#if defined(__GNUC__) && defined(__FP_FAST_FMAF)
+DH_INLINE float dh_mla_f32_(float a, float b, float c)
+{
+    return __builtin_fmaf(a, b, c);
+}
+#else
+DH_INLINE float dh_mla_f32_(float a, float b, float c)
+{
+    return a * b + c;
+}
+#endif
 
 /* dh_atan2f_dg_'s body with fb returned for (+-0, +-0) (dh_atan2f_dg_: fb
  * 45, the value the general path gives them), inlined by a caller that has
@@ -102,8 +118,14 @@ DH_INLINE float dh_atan2f_dg_fb_inl_(float y, float x, float fb)
         u = mn / mx; /* in [0, 1/2); mx > 0 here */
     }
     z = u * u;
-    p = (u + u * (z * (DH_MF_T1 + z * (DH_MF_T2 + z * (DH_MF_T3 + z * (DH_MF_T4 + z * (DH_MF_T5 + z * DH_MF_T6))))))) *
-        DH_MF_RAD2DEG;
+    /* u + u z P(z), Horner in multiply-adds (fused where the core has them:
+     * each step rounds once, within the 3 ulp bound either way) */
+    p = dh_mla_f32_(z, DH_MF_T6, DH_MF_T5);
+    p = dh_mla_f32_(z, p, DH_MF_T4);
+    p = dh_mla_f32_(z, p, DH_MF_T3);
+    p = dh_mla_f32_(z, p, DH_MF_T2);
+    p = dh_mla_f32_(z, p, DH_MF_T1);
+    p = dh_mla_f32_(u, z * p, u) * DH_MF_RAD2DEG;
     /* angle = 45 K + s atan(u) degrees, K and s as in mathf_atan2_parts:
      * K = b (w 0, xn 0), 4 - b (w 0, xn 1), 2 - b (w 1, xn 0), 2 + b (w 1,
      * xn 1); s = -1 when w ^ xn */
