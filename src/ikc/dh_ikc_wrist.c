@@ -182,10 +182,10 @@ static void wrist_rzrx_t(const float *xa, const float *xb, float *a, float *b, f
     for (k = 0; k < 2u; k++) {
         const float *u = (k == 0u) ? xa : xb;
         float *v = (k == 0u) ? a : b;
-        const float x = dh_mla_f32_(s, u[1], c * u[0]), y = dh_mla_f32_(-s, u[0], c * u[1]), z = u[2];
+        const float x = dh_mla_f32_(s, u[1], c * u[0]), y = dh_mls_f32_(s, u[0], c * u[1]), z = u[2];
         v[0] = x;
         v[1] = dh_mla_f32_(sa, z, ca * y);
-        v[2] = dh_mla_f32_(-sa, y, ca * z);
+        v[2] = dh_mls_f32_(sa, y, ca * z);
     }
 }
 
@@ -245,7 +245,7 @@ WRIST_PHASE void wrist_b(const dh_ikc_model_f32 *m, dh_ikc_sol_f32 *out)
         s4 = m1 * r;
     }
     mpx = dh_mla_f32_(s4, out[1].q[4], c4 * out[1].q[3]);
-    mpy = dh_mla_f32_(-s4, out[1].q[3], c4 * out[1].q[4]);
+    mpy = dh_mls_f32_(s4, out[1].q[3], c4 * out[1].q[4]);
     mpz = out[1].q[5];
     out[0].q[3] = s4;
     out[0].q[4] = c4;
@@ -320,7 +320,7 @@ static DH_NOINLINE uint32_t wrist_elbow_rrr(const dh_ikc_model_f32 *m, float cre
         float y, x;
         /* a3 s3 - e c3 = rho sin(theta3 - phi) = +-sqrt(D^2 - K'^2) / (2 |a2|) */
         B = k[KW_SIGMA] * sg * sq * fabsf(k[KW_INV2A2]);
-        y = dh_mla_f32_(-B, vx, A * vy);
+        y = dh_mls_f32_(B, vx, A * vy);
         x = dh_mla_f32_(B, vy, A * vx);
         a->q[0] = t1;
         a->q[2] = dh_ikc_wrap_f32_(k[KW_PHI] + sg * psi);
@@ -329,14 +329,14 @@ static DH_NOINLINE uint32_t wrist_elbow_rrr(const dh_ikc_model_f32 *m, float cre
         if (WRIST_ONE_PASS) {
             /* theta3 = phi + sg psi; theta2 + sigma theta3 */
             const float sps = sg * cpsi[1], sig = k[KW_SIGMA];
-            const float c3 = dh_mla_f32_(-k[KW_SPHI], sps, k[KW_CPHI] * cpsi[0]);
+            const float c3 = dh_mls_f32_(k[KW_SPHI], sps, k[KW_CPHI] * cpsi[0]);
             const float s3 = dh_mla_f32_(k[KW_CPHI], sps, k[KW_SPHI] * cpsi[0]);
             float c2, s2;
             wrist_cs(y, x, &a->q[3]);
             c2 = a->q[3];
             s2 = a->q[4];
             if (!(c2 > 1.5f)) {
-                a->q[3] = dh_mla_f32_(-(sig * s2), s3, c2 * c3);
+                a->q[3] = dh_mls_f32_(sig * s2, s3, c2 * c3);
                 a->q[4] = dh_mla_f32_(sig * c2, s3, s2 * c3);
             }
         }

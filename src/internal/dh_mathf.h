@@ -59,18 +59,27 @@ float dh_atan2f_dg_(float y, float x);
 /* 180 / pi rounded to float (DH_RAD2DEG_F) */
 #define DH_MF_RAD2DEG 57.295779513082320876798f
 
-/* a b + c: one fused multiply-add (a single rounding) where the core has
- * the instruction (__FP_FAST_FMAF: Cortex-M4F, M7, RV32F), else the product
- * and the sum rounded each (the same bits as writing a * b + c). */
+/* a b + c (dh_mla_f32_) and c - a b (dh_mls_f32_): one fused multiply-add
+ * (a single rounding) where the core has the instruction (__FP_FAST_FMAF:
+ * Cortex-M4F, M7, RV32F), else the product and the sum rounded each (the
+ * same bits as writing a * b + c or c - a * b). */
 #if defined(__GNUC__) && defined(__FP_FAST_FMAF)
 DH_INLINE float dh_mla_f32_(float a, float b, float c)
 {
     return __builtin_fmaf(a, b, c);
 }
+DH_INLINE float dh_mls_f32_(float a, float b, float c)
+{
+    return __builtin_fmaf(-a, b, c);
+}
 #else
 DH_INLINE float dh_mla_f32_(float a, float b, float c)
 {
     return a * b + c;
+}
+DH_INLINE float dh_mls_f32_(float a, float b, float c)
+{
+    return c - a * b;
 }
 #endif
 
