@@ -178,6 +178,20 @@ const char *dh_ikc_why_str(dh_ikc_why why)
 
 /* ---- solving ------------------------------------------------------------------ */
 
+/* 1 when the n floats of v (n 4 or 6) are all finite. With an FPU, the sum
+ * of the differences x - x is exactly 0 then (each is +0) and NaN
+ * otherwise (infinity - infinity, NaN - NaN): three operations per value,
+ * no loop; soft float: dh_allfinite_f32 (its bit tests are the cheaper
+ * there). */
+DH_INLINE int ikc_finite46(const float *v, uint32_t n)
+{
+    float z;
+    if (DH_SOFT_FLOAT) return dh_allfinite_f32(v, n);
+    z = ((v[0] - v[0]) + (v[1] - v[1])) + ((v[2] - v[2]) + (v[3] - v[3]));
+    if (n > 4u) z += (v[4] - v[4]) + (v[5] - v[5]);
+    return dh_feq_f32(z, 0.0f);
+}
+
 /* Every check of dh_ikc_f32 made before anything is written. The common
  * case first: a rotation that passes dh_rot_cols_ok_f32 has finite
  * entries (a NaN or infinity fails its comparisons), and the bottom row
@@ -191,9 +205,9 @@ static DH_NOINLINE dh_status ikc_args(const dh_ikc_model_f32 *m, const dh_mat4_f
         ((m->n == 6u && (m->kind == DH_IKC_WRIST_RRR || m->kind == DH_IKC_WRIST_RRP ||
                          m->kind == DH_IKC_PARALLEL_234)) ||
          (m->n == 4u && m->kind == DH_IKC_SCARA)) &&
-        dh_rot_cols_ok_f32(T->m[0], T->m[1], T->m[2], DH_ROT_ERROR_TOL) && dh_allfinite_f32(T->m[3], 3u) &&
+        dh_rot_cols_ok_f32(T->m[0], T->m[1], T->m[2], DH_ROT_ERROR_TOL) && ikc_finite46(T->m[3], 4u) &&
         dh_feq_f32(T->m[0][3], 0.0f) && dh_feq_f32(T->m[1][3], 0.0f) && dh_feq_f32(T->m[2][3], 0.0f) &&
-        dh_feq_f32(T->m[3][3], 1.0f) && (q_ref == NULL || dh_allfinite_f32(q_ref, m->n)))
+        dh_feq_f32(T->m[3][3], 1.0f) && (q_ref == NULL || ikc_finite46(q_ref, m->n)))
         return DH_OK;
     if ((opts & ~(uint32_t)DH_IKC_KEEP_OUT_OF_LIMITS) != 0u) return DH_ERR_ARG;
     if (m->kind == DH_IKC_NONE) return DH_ERR_UNAVAILABLE;

@@ -80,8 +80,9 @@ typedef char dh_ikc_k_fits_[(KW_COUNT <= (int)DH_IKC_K) ? 1 : -1];
  * optimised for size (DH_HOT_INLINE). */
 DH_INLINE float wrist_atan2(float y, float x, float fallback)
 {
+    if (WRIST_ONE_PASS && DH_HOT_INLINE) return dh_atan2f_dg_fb_inl_(y, x, fallback);
     if (dh_feq_f32(y, 0.0f) && dh_feq_f32(x, 0.0f)) return fallback;
-    return (WRIST_ONE_PASS && DH_HOT_INLINE) ? dh_atan2f_dg_inl_(y, x) : dh_atan2f_dg_(y, x);
+    return dh_atan2f_dg_(y, x);
 }
 
 
@@ -94,7 +95,7 @@ DH_INLINE float wrist_atan2(float y, float x, float fallback)
  * wrist_cs). Inlined, no call. */
 DH_INLINE void wrist_cs(float y, float x, float *cs)
 {
-    float xs = x, ys = y, r2 = x * x + y * y, ir;
+    float xs = x, ys = y, r2 = dh_mla_f32_(x, x, y * y), ir;
     if (!(r2 >= 1e-30f && r2 <= 1e30f)) {
         /* squares out of range (or zero): scaled by the larger magnitude */
         const float ax = fabsf(x), ay = fabsf(y), mx = (ax > ay) ? ax : ay;
@@ -104,7 +105,7 @@ DH_INLINE void wrist_cs(float y, float x, float *cs)
         }
         xs = x / mx;
         ys = y / mx;
-        r2 = xs * xs + ys * ys;
+        r2 = dh_mla_f32_(xs, xs, ys * ys);
     }
     ir = 1.0f / dh_sqrt_f32(r2);
     cs[0] = xs * ir;
@@ -181,10 +182,10 @@ static void wrist_rzrx_t(const float *xa, const float *xb, float *a, float *b, f
     for (k = 0; k < 2u; k++) {
         const float *u = (k == 0u) ? xa : xb;
         float *v = (k == 0u) ? a : b;
-        const float x = c * u[0] + s * u[1], y = c * u[1] - s * u[0], z = u[2];
+        const float x = dh_mla_f32_(s, u[1], c * u[0]), y = dh_mls_f32_(s, u[0], c * u[1]), z = u[2];
         v[0] = x;
-        v[1] = ca * y + sa * z;
-        v[2] = ca * z - sa * y;
+        v[1] = dh_mla_f32_(sa, z, ca * y);
+        v[2] = dh_mls_f32_(sa, y, ca * z);
     }
 }
 
@@ -243,8 +244,8 @@ WRIST_PHASE void wrist_b(const dh_ikc_model_f32 *m, dh_ikc_sol_f32 *out)
         c4 = m0 * r;
         s4 = m1 * r;
     }
-    mpx = c4 * out[1].q[3] + s4 * out[1].q[4];
-    mpy = c4 * out[1].q[4] - s4 * out[1].q[3];
+    mpx = dh_mla_f32_(s4, out[1].q[4], c4 * out[1].q[3]);
+    mpy = dh_mls_f32_(s4, out[1].q[3], c4 * out[1].q[4]);
     mpz = out[1].q[5];
     out[0].q[3] = s4;
     out[0].q[4] = c4;
@@ -252,7 +253,7 @@ WRIST_PHASE void wrist_b(const dh_ikc_model_f32 *m, dh_ikc_sol_f32 *out)
     out[1].q[3] = c5;
     /* N21, N11 with cos a4 = cos a5 = 0 */
     out[1].q[4] = -sa4 * sa5 * mpy;
-    out[1].q[5] = c5 * mpx + sa4 * s5 * mpz;
+    out[1].q[5] = dh_mla_f32_(sa4 * s5, mpz, c5 * mpx);
 }
 
 /* Wrist, phase C: the angles, and the flipped solution (t4 + 180, -t5,
@@ -319,8 +320,8 @@ static DH_NOINLINE uint32_t wrist_elbow_rrr(const dh_ikc_model_f32 *m, float cre
         float y, x;
         /* a3 s3 - e c3 = rho sin(theta3 - phi) = +-sqrt(D^2 - K'^2) / (2 |a2|) */
         B = k[KW_SIGMA] * sg * sq * fabsf(k[KW_INV2A2]);
-        y = A * vy - B * vx;
-        x = A * vx + B * vy;
+        y = dh_mls_f32_(B, vx, A * vy);
+        x = dh_mla_f32_(B, vy, A * vx);
         a->q[0] = t1;
         a->q[2] = dh_ikc_wrap_f32_(k[KW_PHI] + sg * psi);
         a->q[1] = wrist_atan2(y, x, cref2);
@@ -328,14 +329,15 @@ static DH_NOINLINE uint32_t wrist_elbow_rrr(const dh_ikc_model_f32 *m, float cre
         if (WRIST_ONE_PASS) {
             /* theta3 = phi + sg psi; theta2 + sigma theta3 */
             const float sps = sg * cpsi[1], sig = k[KW_SIGMA];
-            const float c3 = k[KW_CPHI] * cpsi[0] - k[KW_SPHI] * sps, s3 = k[KW_SPHI] * cpsi[0] + k[KW_CPHI] * sps;
+            const float c3 = dh_mls_f32_(k[KW_SPHI], sps, k[KW_CPHI] * cpsi[0]);
+            const float s3 = dh_mla_f32_(k[KW_CPHI], sps, k[KW_SPHI] * cpsi[0]);
             float c2, s2;
             wrist_cs(y, x, &a->q[3]);
             c2 = a->q[3];
             s2 = a->q[4];
             if (!(c2 > 1.5f)) {
-                a->q[3] = c2 * c3 - sig * s2 * s3;
-                a->q[4] = s2 * c3 + sig * c2 * s3;
+                a->q[3] = dh_mls_f32_(sig * s2, s3, c2 * c3);
+                a->q[4] = dh_mla_f32_(sig * c2, s3, s2 * c3);
             }
         }
     }

@@ -267,7 +267,8 @@ static inline void dh_ikc_xform_f32_(const dh_mat4_f32 *A, const float *x, float
 {
     const float x0 = x[0], x1 = x[1], x2 = x[2];
     uint32_t i;
-    for (i = 0; i < 3u; i++) out[i] = A->m[0][i] * x0 + A->m[1][i] * x1 + A->m[2][i] * x2 + A->m[3][i] * w;
+    for (i = 0; i < 3u; i++)
+        out[i] = dh_mla_f32_(A->m[3][i], w, dh_mla_f32_(A->m[2][i], x2, dh_mla_f32_(A->m[1][i], x1, A->m[0][i] * x0)));
 }
 
 DH_INLINE int dh_ikc_zero_f32_(float x, float eps)

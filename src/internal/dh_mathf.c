@@ -140,7 +140,7 @@ float dh_atan2f_(float y, float x)
 
 float dh_atan2f_dg_(float y, float x)
 {
-    return dh_atan2f_dg_inl_(y, x);
+    return dh_atan2f_dg_fb_inl_(y, x, 45.0f);
 }
 
 /* 180 / pi = DH_MF_R_HI + DH_MF_R_LO (+ 2.0e-15) */

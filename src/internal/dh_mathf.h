@@ -43,8 +43,9 @@ float dh_atan2f_deg_(float y, float x, float corr);
  * within 3 ulp (results below 2^-100: 3 ulp of 2^-100; ratios that small
  * underflow), for finite (y, x) not both zero (both zero give 45; a NaN
  * in gives NaN out): the reduction of dh_atan2f_ in plain float (no bit
- * tests, no special cases), 45 K degrees exact and atan(u) scaled by
- * 180/pi. For the closed-form solvers, whose callers take (0, 0) apart.
+ * tests, no special cases; the polynomial in fused multiply-adds where
+ * the core has them, dh_mla_f32_), 45 K degrees exact and atan(u) scaled
+ * by 180/pi. For the closed-form solvers, whose callers take (0, 0) apart.
  */
 float dh_atan2f_dg_(float y, float x);
 
@@ -58,9 +59,36 @@ float dh_atan2f_dg_(float y, float x);
 /* 180 / pi rounded to float (DH_RAD2DEG_F) */
 #define DH_MF_RAD2DEG 57.295779513082320876798f
 
-/* dh_atan2f_dg_'s body, inlined by a caller that has the code space and
- * the registers for it (the FPU builds' closed-form wrist solver). */
-DH_INLINE float dh_atan2f_dg_inl_(float y, float x)
+/* a b + c (dh_mla_f32_) and c - a b (dh_mls_f32_): one fused multiply-add
+ * (a single rounding) where the core has the instruction (__FP_FAST_FMAF:
+ * Cortex-M4F, M7, RV32F), else the product and the sum rounded each (the
+ * same bits as writing a * b + c or c - a * b). */
+#if defined(__GNUC__) && defined(__FP_FAST_FMAF)
+DH_INLINE float dh_mla_f32_(float a, float b, float c)
+{
+    return __builtin_fmaf(a, b, c);
+}
+DH_INLINE float dh_mls_f32_(float a, float b, float c)
+{
+    return __builtin_fmaf(-a, b, c);
+}
+#else
+DH_INLINE float dh_mla_f32_(float a, float b, float c)
+{
+    return a * b + c;
+}
+DH_INLINE float dh_mls_f32_(float a, float b, float c)
+{
+    return c - a * b;
+}
+#endif
+
+/* dh_atan2f_dg_'s body with fb returned for (+-0, +-0) (dh_atan2f_dg_: fb
+ * 45, the value the general path gives them), inlined by a caller that has
+ * the code space and the registers for it (the FPU builds' closed-form
+ * wrist solver, whose fallback is a free angle): the zero test costs
+ * nothing on the common path, it sits in the branch of equal magnitudes. */
+DH_INLINE float dh_atan2f_dg_fb_inl_(float y, float x, float fb)
 {
     /* 45 K degrees, indexed by (w << 2) | (xn << 1) | b (below) */
     static const float k45[8] = { 0.0f, 45.0f, 180.0f, 135.0f, 90.0f, 45.0f, 90.0f, 135.0f };
@@ -75,7 +103,8 @@ DH_INLINE float dh_atan2f_dg_inl_(float y, float x)
     mn = w ? ax : ay;
     if (!(mn < mx)) {
         /* equal magnitudes (or a NaN): 45 degrees off an axis; mn - mx
-         * is 0, or NaN for a NaN */
+         * is 0, or NaN for a NaN; both zero (a NaN fails the tests): fb */
+        if (mx <= 0.0f && mn <= 0.0f) return fb;
         b = 1u;
         u = mn - mx;
     } else if (mn + mn >= mx) {
@@ -98,8 +127,14 @@ DH_INLINE float dh_atan2f_dg_inl_(float y, float x)
         u = mn / mx; /* in [0, 1/2); mx > 0 here */
     }
     z = u * u;
-    p = (u + u * (z * (DH_MF_T1 + z * (DH_MF_T2 + z * (DH_MF_T3 + z * (DH_MF_T4 + z * (DH_MF_T5 + z * DH_MF_T6))))))) *
-        DH_MF_RAD2DEG;
+    /* u + u z P(z), Horner in multiply-adds (fused where the core has them:
+     * each step rounds once, within the 3 ulp bound either way) */
+    p = dh_mla_f32_(z, DH_MF_T6, DH_MF_T5);
+    p = dh_mla_f32_(z, p, DH_MF_T4);
+    p = dh_mla_f32_(z, p, DH_MF_T3);
+    p = dh_mla_f32_(z, p, DH_MF_T2);
+    p = dh_mla_f32_(z, p, DH_MF_T1);
+    p = dh_mla_f32_(u, z * p, u) * DH_MF_RAD2DEG;
     /* angle = 45 K + s atan(u) degrees, K and s as in mathf_atan2_parts:
      * K = b (w 0, xn 0), 4 - b (w 0, xn 1), 2 - b (w 1, xn 0), 2 + b (w 1,
      * xn 1); s = -1 when w ^ xn */
