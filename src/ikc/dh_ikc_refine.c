@@ -168,34 +168,60 @@ typedef char ref_chain_layout_[(offsetof(dh_ikc_model_f32, xd) - offsetof(dh_ikc
 #define REF_CH(c, o, j) (*(const float *)(const void *)((c) + (o) + sizeof(float) * (j)))
 
 /* The exact chain's (ideal 0) or the idealised chain's (1) T06 from cs
- * into u, per joint the turn about z, the offsets, the twist, each a pass
- * over the three rows; then p moved to the joint 5 point, T06 (-a6,
- * -d6 sa6, -d6 ca6) of that chain. The chain is read through one pointer
- * (c: the model's a or xa, as bytes), which keeps the frame small. */
+ * into u, per joint the turn about z, the offsets and the twist on the
+ * frame held in locals (columns x, y, z and the point); then the point
+ * moved to the joint 5 point, T06 (-a6, -d6 sa6, -d6 ca6) of that chain.
+ * The chain is read through one pointer (c: the model's a or xa, as
+ * bytes), which keeps the frame small. */
 static DH_NOINLINE void ref_fk(ref_work *w, int ideal)
 {
     const unsigned char *c = (const unsigned char *)(const void *)w->m +
                              (ideal ? offsetof(dh_ikc_model_f32, a) : offsetof(dh_ikc_model_f32, xa));
+    const float *cs = w->cs;
     float *u = w->u;
-    uint32_t i, r;
-    for (r = 0; r < 12u; r++) u[r] = ((r & 3u) == 0u && r < 9u) ? 1.0f : 0.0f;
+    float x0 = 1.0f, x1 = 0.0f, x2 = 0.0f, y0 = 0.0f, y1 = 1.0f, y2 = 0.0f, z0 = 0.0f, z1 = 0.0f, z2 = 1.0f;
+    float p0 = 0.0f, p1 = 0.0f, p2 = 0.0f;
+    uint32_t i;
     for (i = 0; i < 6u; i++) {
-        const float *cs = &w->cs[2u * i];
-        for (r = 0; r < 3u; r++) {
-            const float x = u[r];
-            u[r] = cs[0] * x + cs[1] * u[3u + r];
-            u[3u + r] = cs[0] * u[3u + r] - cs[1] * x;
-            u[9u + r] += REF_CH(c, REF_OD, i) * u[6u + r] + REF_CH(c, 0u, i) * u[r];
-        }
-        for (r = 0; r < 3u; r++) {
-            const float y = u[3u + r];
-            u[3u + r] = REF_CH(c, REF_OC, i) * y + REF_CH(c, REF_OS, i) * u[6u + r];
-            u[6u + r] = REF_CH(c, REF_OC, i) * u[6u + r] - REF_CH(c, REF_OS, i) * y;
-        }
+        const float ct = cs[2u * i], st = cs[2u * i + 1u];
+        const float ai = REF_CH(c, 0u, i), di = REF_CH(c, REF_OD, i);
+        const float sa = REF_CH(c, REF_OS, i), ca = REF_CH(c, REF_OC, i);
+        float t0, t1, t2;
+        p0 += di * z0;
+        p1 += di * z1;
+        p2 += di * z2;
+        t0 = ct * y0 - st * x0;
+        t1 = ct * y1 - st * x1;
+        t2 = ct * y2 - st * x2;
+        x0 = ct * x0 + st * y0;
+        x1 = ct * x1 + st * y1;
+        x2 = ct * x2 + st * y2;
+        p0 += ai * x0;
+        p1 += ai * x1;
+        p2 += ai * x2;
+        y0 = ca * t0 + sa * z0;
+        y1 = ca * t1 + sa * z1;
+        y2 = ca * t2 + sa * z2;
+        z0 = ca * z0 - sa * t0;
+        z1 = ca * z1 - sa * t1;
+        z2 = ca * z2 - sa * t2;
     }
-    for (r = 0; r < 3u; r++)
-        u[9u + r] -= REF_CH(c, 0u, 5u) * u[r] +
-                     REF_CH(c, REF_OD, 5u) * (REF_CH(c, REF_OS, 5u) * u[3u + r] + REF_CH(c, REF_OC, 5u) * u[6u + r]);
+    {
+        const float a6 = REF_CH(c, 0u, 5u), d6 = REF_CH(c, REF_OD, 5u);
+        const float ds = d6 * REF_CH(c, REF_OS, 5u), dc = d6 * REF_CH(c, REF_OC, 5u);
+        u[9] = p0 - (a6 * x0 + ds * y0 + dc * z0);
+        u[10] = p1 - (a6 * x1 + ds * y1 + dc * z1);
+        u[11] = p2 - (a6 * x2 + ds * y2 + dc * z2);
+    }
+    u[0] = x0;
+    u[1] = x1;
+    u[2] = x2;
+    u[3] = y0;
+    u[4] = y1;
+    u[5] = y2;
+    u[6] = z0;
+    u[7] = z1;
+    u[8] = z2;
 }
 
 /* u's rotation times the tool frame's (post = post_inv^-1, rotation S^T),
