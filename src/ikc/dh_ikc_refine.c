@@ -44,6 +44,9 @@
 #define REF_ROT 8e-7f
 /* Largest joint step (rad): a larger Newton step is scaled down to it. */
 #define REF_MAX_STEP 0.2f
+/* Largest joint step (rad) whose cosine and sine follow from the previous
+ * ones by the series (ref_apply). */
+#define REF_TURN_MAX 0.02f
 /* |sin theta5| or a planar determinant below this (relative): the branch
  * is at a singularity of the idealised Jacobian and is not refined. */
 #define REF_SING_TOL 1e-6f
@@ -256,21 +259,23 @@ static DH_NOINLINE void ref_base(ref_work *w)
 
 /* The rotation error (x x xt + y x yt + z x zt) / 2 (rad) of u (the exact
  * chain's end frame) against the target into u[3..5] (the rotation is not
- * read after it; its first two components pass through cs[10], cs[11],
- * which the forward kinematics has used). */
+ * read after it). */
 static DH_NOINLINE void ref_rot(ref_work *w)
 {
     const dh_mat4_f32 *T = w->T;
     float *u = w->u;
+    float e0 = 0.0f, e1 = 0.0f, e2 = 0.0f;
     uint32_t k;
-    w->cs[10] = 0.0f;
-    w->cs[11] = 0.0f;
-    for (k = 0; k < 3u; k++) w->cs[10] += u[3u * k + 1u] * T->m[k][2] - u[3u * k + 2u] * T->m[k][1];
-    for (k = 0; k < 3u; k++) w->cs[11] += u[3u * k + 2u] * T->m[k][0] - u[3u * k] * T->m[k][2];
-    u[5] = 0.5f * ((u[0] * T->m[0][1] - u[1] * T->m[0][0]) + (u[3] * T->m[1][1] - u[4] * T->m[1][0]) +
-                   (u[6] * T->m[2][1] - u[7] * T->m[2][0]));
-    u[3] = 0.5f * w->cs[10];
-    u[4] = 0.5f * w->cs[11];
+    for (k = 0; k < 3u; k++) {
+        const float *t = T->m[k];
+        const float v0 = u[3u * k], v1 = u[3u * k + 1u], v2 = u[3u * k + 2u];
+        e0 += v1 * t[2] - v2 * t[1];
+        e1 += v2 * t[0] - v0 * t[2];
+        e2 += v0 * t[1] - v1 * t[0];
+    }
+    u[3] = 0.5f * e0;
+    u[4] = 0.5f * e1;
+    u[5] = 0.5f * e2;
 }
 
 /* The position error of the joint 5 point (u[9..11]) against the target
@@ -404,8 +409,14 @@ static DH_NOINLINE int ref_b(ref_work *w)
 }
 
 /* The steps (rad; joints 1, 5, 6 in u[9..11], 2, 3, 4 in u[6..8]),
- * scaled to at most REF_MAX_STEP, added to q (degrees, wrapped); 0 when
- * not finite. */
+ * scaled to at most REF_MAX_STEP, added to q (degrees, wrapped), with cs
+ * following: a step r (rad) of at most REF_TURN_MAX as applied (the
+ * difference of the degree values before the wrap: exact in float when
+ * the step is smaller than the value (Fast2Sum), else within half an ulp
+ * of the step) turns the joint's cosine and sine by 1 - r^2 / 2 and
+ * r - r^3 / 6 (within 7e-9 of cos r and sin r) and scales them back to
+ * unit length (one Newton step of 1 / sqrt); a larger one takes them from
+ * dh_sincos_f32 of the new value. 0 when not finite. */
 static DH_NOINLINE int ref_apply(ref_work *w, float *q)
 {
     float *u = w->u;
@@ -421,9 +432,21 @@ static DH_NOINLINE int ref_apply(ref_work *w, float *q)
         if (fabsf(u[i]) > big) big = fabsf(u[i]);
     if (!(big <= 1e30f)) return 0;
     if (big > REF_MAX_STEP) f = REF_MAX_STEP / big;
+    f *= DH_RAD2DEG_F;
     for (i = 0; i < 6u; i++) {
-        u[6u + i] *= f;
-        q[i] = dh_wrap180_f32(q[i] + DH_RAD2DEG_F * u[6u + i]);
+        float *cs = &w->cs[2u * i];
+        const float v = q[i] + f * u[6u + i];
+        const float r = DH_DEG2RAD_F * (v - q[i]), r2 = r * r;
+        q[i] = dh_wrap180_f32(v);
+        if (r2 <= REF_TURN_MAX * REF_TURN_MAX) {
+            const float cd = 1.0f - 0.5f * r2, sd = r - r * r2 * (1.0f / 6.0f);
+            const float c = cs[0] * cd - cs[1] * sd, s = cs[1] * cd + cs[0] * sd;
+            const float k = 1.5f - 0.5f * (c * c + s * s);
+            cs[0] = c * k;
+            cs[1] = s * k;
+        } else {
+            (void)dh_sincos_f32(q[i], &cs[1], &cs[0]);
+        }
     }
     return 1;
 }
@@ -707,7 +730,6 @@ uint32_t dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_
                 ref_base(&w);
                 ref_rot(&w);
                 (void)ref_pos(&w, &sol[k & 7u], 0u);
-                ref_trig(sol[k & 7u].q, &w);
                 for (it = 0; it < 6u; it++) sol[k & 7u].q[it] = w.u[it];
                 ref_fk(&w, 1);
                 ref_virtual(&w, sol[k & 7u].q);
@@ -730,8 +752,8 @@ uint32_t dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_
         }
         sol[k & 7u].flags &= ~(uint32_t)REF_NEW;
         it = ref_begin(&sol[k & 7u]);
+        if (it < REF_DONE) ref_trig(sol[k & 7u].q, &w);
         while (it < REF_DONE) {
-            ref_trig(sol[k & 7u].q, &w);
             ref_fk(&w, 0);
             ref_tool(&w);
             ref_base(&w);
