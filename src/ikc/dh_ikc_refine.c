@@ -44,9 +44,6 @@
 #define REF_ROT 8e-7f
 /* Largest joint step (rad): a larger Newton step is scaled down to it. */
 #define REF_MAX_STEP 0.2f
-/* Largest joint step (rad) whose cosine and sine follow from the previous
- * ones by the series (ref_apply). */
-#define REF_TURN_MAX 0.02f
 /* |sin theta5| or a planar determinant below this (relative): the branch
  * is at a singularity of the idealised Jacobian and is not refined. */
 #define REF_SING_TOL 1e-6f
@@ -170,13 +167,39 @@ typedef char ref_chain_layout_[(offsetof(dh_ikc_model_f32, xd) - offsetof(dh_ikc
 /* Joint j's value at byte offset o from a (or xa) of the chain at c. */
 #define REF_CH(c, o, j) (*(const float *)(const void *)((c) + (o) + sizeof(float) * (j)))
 
-/* The exact chain's (ideal 0) or the idealised chain's (1) T06 from cs
- * into u, per joint the turn about z, the offsets and the twist on the
- * frame held in locals (columns x, y, z and the point); then the point
- * moved to the joint 5 point, T06 (-a6, -d6 sa6, -d6 ca6) of that chain.
- * The chain is read through one pointer (c: the model's a or xa, as
- * bytes), which keeps the frame small. */
-static DH_NOINLINE void ref_fk(ref_work *w, int ideal)
+/* ref_fk with soft float: u updated in place, per joint the turn about
+ * z, the offsets, the twist, each a pass over the three rows (a frame of
+ * a few words where every float lives in memory anyway). */
+static DH_NOINLINE void ref_fk_rows(ref_work *w, int ideal)
+{
+    const unsigned char *c = (const unsigned char *)(const void *)w->m +
+                             (ideal ? offsetof(dh_ikc_model_f32, a) : offsetof(dh_ikc_model_f32, xa));
+    float *u = w->u;
+    uint32_t i, r;
+    for (r = 0; r < 12u; r++) u[r] = ((r & 3u) == 0u && r < 9u) ? 1.0f : 0.0f;
+    for (i = 0; i < 6u; i++) {
+        const float *cs = &w->cs[2u * i];
+        for (r = 0; r < 3u; r++) {
+            const float x = u[r];
+            u[r] = cs[0] * x + cs[1] * u[3u + r];
+            u[3u + r] = cs[0] * u[3u + r] - cs[1] * x;
+            u[9u + r] += REF_CH(c, REF_OD, i) * u[6u + r] + REF_CH(c, 0u, i) * u[r];
+        }
+        for (r = 0; r < 3u; r++) {
+            const float y = u[3u + r];
+            u[3u + r] = REF_CH(c, REF_OC, i) * y + REF_CH(c, REF_OS, i) * u[6u + r];
+            u[6u + r] = REF_CH(c, REF_OC, i) * u[6u + r] - REF_CH(c, REF_OS, i) * y;
+        }
+    }
+    for (r = 0; r < 3u; r++)
+        u[9u + r] -= REF_CH(c, 0u, 5u) * u[r] +
+                     REF_CH(c, REF_OD, 5u) * (REF_CH(c, REF_OS, 5u) * u[3u + r] + REF_CH(c, REF_OC, 5u) * u[6u + r]);
+}
+
+/* ref_fk with an FPU: the frame (columns x, y, z and the point) held in
+ * locals, which stay in registers through the six joints, and stored
+ * once. */
+static DH_NOINLINE void ref_fk_regs(ref_work *w, int ideal)
 {
     const unsigned char *c = (const unsigned char *)(const void *)w->m +
                              (ideal ? offsetof(dh_ikc_model_f32, a) : offsetof(dh_ikc_model_f32, xa));
@@ -225,6 +248,22 @@ static DH_NOINLINE void ref_fk(ref_work *w, int ideal)
     u[6] = z0;
     u[7] = z1;
     u[8] = z2;
+}
+
+/* The exact chain's (ideal 0) or the idealised chain's (1) T06 from cs
+ * into u (ref_fk_regs with an FPU, ref_fk_rows with soft float, whose
+ * frame would not stay in registers and would not fit the stack budget):
+ * per joint the turn about z, the offsets and the twist; then the point
+ * moved to the joint 5 point, T06 (-a6, -d6 sa6, -d6 ca6) of that chain.
+ * The chain is read through one pointer (c: the model's a or xa, as
+ * bytes), which keeps the frame small. */
+DH_INLINE void ref_fk(ref_work *w, int ideal)
+{
+    if (DH_SOFT_FLOAT) {
+        ref_fk_rows(w, ideal);
+    } else {
+        ref_fk_regs(w, ideal);
+    }
 }
 
 /* u's rotation times the tool frame's (post = post_inv^-1, rotation S^T),
@@ -410,13 +449,12 @@ static DH_NOINLINE int ref_b(ref_work *w)
 
 /* The steps (rad; joints 1, 5, 6 in u[9..11], 2, 3, 4 in u[6..8]),
  * scaled to at most REF_MAX_STEP, added to q (degrees, wrapped), with cs
- * following: a step r (rad) of at most REF_TURN_MAX as applied (the
- * difference of the degree values before the wrap: exact in float when
- * the step is smaller than the value (Fast2Sum), else within half an ulp
- * of the step) turns the joint's cosine and sine by 1 - r^2 / 2 and
- * r - r^3 / 6 (within 7e-9 of cos r and sin r) and scales them back to
- * unit length (one Newton step of 1 / sqrt); a larger one takes them from
- * dh_sincos_f32 of the new value. 0 when not finite. */
+ * following: each step r (rad) as applied (the difference of the degree
+ * values before the wrap: exact in float when the step is smaller than
+ * the value (Fast2Sum), else within half an ulp of the step) turns the
+ * joint's cosine and sine by the series of cos r to r^6 and sin r to r^5
+ * (within 3e-9 up to REF_MAX_STEP), then they are scaled back to unit
+ * length (one Newton step of 1 / sqrt). 0 when not finite. */
 static DH_NOINLINE int ref_apply(ref_work *w, float *q)
 {
     float *u = w->u;
@@ -437,16 +475,13 @@ static DH_NOINLINE int ref_apply(ref_work *w, float *q)
         float *cs = &w->cs[2u * i];
         const float v = q[i] + f * u[6u + i];
         const float r = DH_DEG2RAD_F * (v - q[i]), r2 = r * r;
+        const float sd = r * (1.0f - (r2 * (1.0f / 6.0f)) * (1.0f - r2 * (1.0f / 20.0f)));
+        const float cd = 1.0f - (r2 * 0.5f) * (1.0f - (r2 * (1.0f / 12.0f)) * (1.0f - r2 * (1.0f / 30.0f)));
+        const float c = cs[0] * cd - cs[1] * sd, s = cs[1] * cd + cs[0] * sd;
+        const float k = 1.5f - 0.5f * (c * c + s * s);
+        cs[0] = c * k;
+        cs[1] = s * k;
         q[i] = dh_wrap180_f32(v);
-        if (r2 <= REF_TURN_MAX * REF_TURN_MAX) {
-            const float cd = 1.0f - 0.5f * r2, sd = r - r * r2 * (1.0f / 6.0f);
-            const float c = cs[0] * cd - cs[1] * sd, s = cs[1] * cd + cs[0] * sd;
-            const float k = 1.5f - 0.5f * (c * c + s * s);
-            cs[0] = c * k;
-            cs[1] = s * k;
-        } else {
-            (void)dh_sincos_f32(q[i], &cs[1], &cs[0]);
-        }
     }
     return 1;
 }
