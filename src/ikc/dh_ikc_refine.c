@@ -197,22 +197,28 @@ static DH_NOINLINE void ref_fk_rows(ref_work *w, int ideal)
 }
 
 /* ref_fk with an FPU: the frame (columns x, y, z and the point) held in
- * locals, which stay in registers through the six joints, and stored
- * once. */
+ * locals, which stay in registers, and stored once: joint 1 from the
+ * identity (its columns and point written out), joints 2 to 5 in full,
+ * their point the joint 5 point (frame 5's origin), joint 6 its rotation
+ * only. */
 static DH_NOINLINE void ref_fk_regs(ref_work *w, int ideal)
 {
     const unsigned char *c = (const unsigned char *)(const void *)w->m +
                              (ideal ? offsetof(dh_ikc_model_f32, a) : offsetof(dh_ikc_model_f32, xa));
     const float *cs = w->cs;
     float *u = w->u;
-    float x0 = 1.0f, x1 = 0.0f, x2 = 0.0f, y0 = 0.0f, y1 = 1.0f, y2 = 0.0f, z0 = 0.0f, z1 = 0.0f, z2 = 1.0f;
-    float p0 = 0.0f, p1 = 0.0f, p2 = 0.0f;
+    const float sa1 = REF_CH(c, REF_OS, 0u), ca1 = REF_CH(c, REF_OC, 0u), a1 = REF_CH(c, 0u, 0u);
+    float x0 = cs[0], x1 = cs[1], x2 = 0.0f, y0 = -ca1 * cs[1], y1 = ca1 * cs[0], y2 = sa1;
+    float z0 = sa1 * cs[1], z1 = -sa1 * cs[0], z2 = ca1;
+    float p0 = a1 * cs[0], p1 = a1 * cs[1], p2 = REF_CH(c, REF_OD, 0u);
+    float t0, t1, t2, ct, st, sa, ca;
     uint32_t i;
-    for (i = 0; i < 6u; i++) {
-        const float ct = cs[2u * i], st = cs[2u * i + 1u];
+    for (i = 1u; i < 5u; i++) {
         const float ai = REF_CH(c, 0u, i), di = REF_CH(c, REF_OD, i);
-        const float sa = REF_CH(c, REF_OS, i), ca = REF_CH(c, REF_OC, i);
-        float t0, t1, t2;
+        ct = cs[2u * i];
+        st = cs[2u * i + 1u];
+        sa = REF_CH(c, REF_OS, i);
+        ca = REF_CH(c, REF_OC, i);
         p0 += di * z0;
         p1 += di * z1;
         p2 += di * z2;
@@ -232,22 +238,25 @@ static DH_NOINLINE void ref_fk_regs(ref_work *w, int ideal)
         z1 = ca * z1 - sa * t1;
         z2 = ca * z2 - sa * t2;
     }
-    {
-        const float a6 = REF_CH(c, 0u, 5u), d6 = REF_CH(c, REF_OD, 5u);
-        const float ds = d6 * REF_CH(c, REF_OS, 5u), dc = d6 * REF_CH(c, REF_OC, 5u);
-        u[9] = p0 - (a6 * x0 + ds * y0 + dc * z0);
-        u[10] = p1 - (a6 * x1 + ds * y1 + dc * z1);
-        u[11] = p2 - (a6 * x2 + ds * y2 + dc * z2);
-    }
-    u[0] = x0;
-    u[1] = x1;
-    u[2] = x2;
-    u[3] = y0;
-    u[4] = y1;
-    u[5] = y2;
-    u[6] = z0;
-    u[7] = z1;
-    u[8] = z2;
+    ct = cs[10];
+    st = cs[11];
+    sa = REF_CH(c, REF_OS, 5u);
+    ca = REF_CH(c, REF_OC, 5u);
+    t0 = ct * y0 - st * x0;
+    t1 = ct * y1 - st * x1;
+    t2 = ct * y2 - st * x2;
+    u[0] = ct * x0 + st * y0;
+    u[1] = ct * x1 + st * y1;
+    u[2] = ct * x2 + st * y2;
+    u[3] = ca * t0 + sa * z0;
+    u[4] = ca * t1 + sa * z1;
+    u[5] = ca * t2 + sa * z2;
+    u[6] = ca * z0 - sa * t0;
+    u[7] = ca * z1 - sa * t1;
+    u[8] = ca * z2 - sa * t2;
+    u[9] = p0;
+    u[10] = p1;
+    u[11] = p2;
 }
 
 /* The exact chain's (ideal 0) or the idealised chain's (1) T06 from cs
