@@ -461,15 +461,11 @@ static DH_NOINLINE int ref_b(ref_work *w)
  * length (one Newton step of 1 / sqrt). 0 when not finite. */
 static DH_NOINLINE int ref_apply(ref_work *w, float *q)
 {
-    float *u = w->u;
-    float big = 0.0f, f = 1.0f, t;
+    /* joint i's step in u[ref_order[i]] */
+    static const uint8_t ref_order[6] = { 9u, 6u, 7u, 8u, 10u, 11u };
+    const float *u = w->u;
+    float big = 0.0f, f = 1.0f;
     uint32_t i;
-    /* joint order: 1, 2, 3, 4, 5, 6 from u[9], u[6], u[7], u[8], u[10], u[11] */
-    t = u[8];
-    u[8] = u[7];
-    u[7] = u[6];
-    u[6] = u[9];
-    u[9] = t;
     for (i = 6u; i < 12u; i++)
         if (fabsf(u[i]) > big) big = fabsf(u[i]);
     if (!(big <= 1e30f)) return 0;
@@ -477,7 +473,7 @@ static DH_NOINLINE int ref_apply(ref_work *w, float *q)
     f *= DH_RAD2DEG_F;
     for (i = 0; i < 6u; i++) {
         float *cs = &w->cs[2u * i];
-        const float v = q[i] + f * u[6u + i];
+        const float v = q[i] + f * u[ref_order[i]];
         const float r = DH_DEG2RAD_F * (v - q[i]), r2 = r * r;
         const float sd = r * (1.0f - (r2 * (1.0f / 6.0f)) * (1.0f - r2 * (1.0f / 20.0f)));
         const float cd = 1.0f - (r2 * 0.5f) * (1.0f - (r2 * (1.0f / 12.0f)) * (1.0f - r2 * (1.0f / 30.0f)));
@@ -485,7 +481,7 @@ static DH_NOINLINE int ref_apply(ref_work *w, float *q)
         const float k = 1.5f - 0.5f * (c * c + s * s);
         cs[0] = c * k;
         cs[1] = s * k;
-        q[i] = dh_wrap180_f32(v);
+        q[i] = (fabsf(v) < 180.0f) ? v : dh_wrap180_f32(v);
     }
     return 1;
 }
