@@ -135,7 +135,7 @@ int dh_ikc_calibrate_f32_(dh_ikc_model_f32 *m)
 /* Work data of one call: cs the cosines and sines of the branch's canonical
  * joint values (c1, s1, ..., c6, s6); u the exact chain's end frame
  * (columns x, y, z and the joint 5 point), then the errors and the joint
- * 5 point (ref_err, ref_frame1), then the steps (ref_a, ref_b),
+ * 5 point (ref_rot, ref_pos, ref_frame1), then the steps (ref_a, ref_b),
  * or the vectors of a virtual target (ref_virtual); m the model, T the
  * target. */
 typedef struct {
@@ -305,21 +305,14 @@ static DH_NOINLINE void ref_base(ref_work *w)
     }
 }
 
-/* The errors of u (the exact chain's end frame and joint 5 point) against
- * the target: the position error of the joint 5 point into u[0..2], the
- * rotation error (x x xt + y x yt + z x zt) / 2 (rad) into u[3..5], the
- * point into u[6..8] (the rotation is not read after it); then the
- * verdict on branch b after it steps: converged (|position error| <= tp =
- * REF_POS_REL L and |rotation error| <= REF_ROT, in the sum of their
- * squares over the squared bounds): b flagged DH_IKC_REFINED, REF_DONE
- * returned; an error not finite: REF_DONE; else it + 1 (REF_DONE after
- * DH_IKC_CAL_STEPS). */
-static DH_NOINLINE uint32_t ref_err(ref_work *w, dh_ikc_sol_f32 *b, uint32_t it)
+/* The rotation error (x x xt + y x yt + z x zt) / 2 (rad) of u (the exact
+ * chain's end frame) against the target into u[3..5] (the rotation is not
+ * read after it). */
+static DH_NOINLINE void ref_rot(ref_work *w)
 {
     const dh_mat4_f32 *T = w->T;
-    const float *p = w->m->xw5;
     float *u = w->u;
-    float e0 = 0.0f, e1 = 0.0f, e2 = 0.0f, ep, tp;
+    float e0 = 0.0f, e1 = 0.0f, e2 = 0.0f;
     uint32_t k;
     for (k = 0; k < 3u; k++) {
         const float *t = T->m[k];
@@ -331,13 +324,25 @@ static DH_NOINLINE uint32_t ref_err(ref_work *w, dh_ikc_sol_f32 *b, uint32_t it)
     u[3] = 0.5f * e0;
     u[4] = 0.5f * e1;
     u[5] = 0.5f * e2;
-    ep = 0.0f;
+}
+
+/* The position error of the joint 5 point (u[9..11]) against the target
+ * into u[0..2], the point into u[6..8]; then the verdict on branch b after
+ * it steps: converged (|position error| <= tp = REF_POS_REL L and
+ * |rotation error| <= REF_ROT, in the sum of their squares over the
+ * squared bounds): b flagged DH_IKC_REFINED, REF_DONE returned; an error
+ * not finite: REF_DONE; else it + 1 (REF_DONE after DH_IKC_CAL_STEPS). */
+static DH_NOINLINE uint32_t ref_pos(ref_work *w, dh_ikc_sol_f32 *b, uint32_t it)
+{
+    const dh_mat4_f32 *T = w->T;
+    const float *p = w->m->xw5;
+    float *u = w->u;
+    float ep = 0.0f, tp;
+    uint32_t k;
     for (k = 0; k < 3u; k++) {
-        const float o = u[9u + k];
-        const float d = T->m[3][k] + T->m[0][k] * p[0] + T->m[1][k] * p[1] + T->m[2][k] * p[2] - o;
-        u[k] = d;
-        u[6u + k] = o;
-        ep += d * d;
+        u[k] = T->m[3][k] + T->m[0][k] * p[0] + T->m[1][k] * p[1] + T->m[2][k] * p[2] - u[9u + k];
+        ep += u[k] * u[k];
+        u[6u + k] = u[9u + k];
     }
     tp = REF_POS_REL * w->m->xlen;
     ep = ep / (tp * tp) + (u[3] * u[3] + u[4] * u[4] + u[5] * u[5]) * (1.0f / (REF_ROT * REF_ROT));
@@ -356,7 +361,7 @@ static DH_NOINLINE uint32_t ref_begin(dh_ikc_sol_f32 *b)
     return dh_allfinite_f32(b->q, 6u) ? 0u : REF_DONE;
 }
 
-/* ref_err's errors and point into the basis of the idealised frame 1, in
+/* ref_pos's errors and point into the basis of the idealised frame 1, in
  * place: pre^-1 (skipped when the identity), then Rz(theta1)^T,
  * Rx(alpha1)^T; the point from frame 1's origin (a1 c1, a1 s1, d1). */
 static DH_NOINLINE void ref_frame1(ref_work *w)
@@ -520,7 +525,7 @@ uint32_t dh_ikc_pack_f32_(dh_ikc_sol_f32 *sol, uint32_t raw)
 typedef char ref_eight_slots_[(DH_IKC_MAX_SOL == 8u) ? 1 : -1];
 
 /* The first-order virtual target of the canonical values q whose exact
- * errors (ref_err: the joint 5 point's position error and the
+ * errors (ref_rot, ref_pos: the joint 5 point's position error and the
  * rotation error, base frame) are in e, from the idealised chain's T06 at q
  * in u (ref_fk, ideal): T'06 = the errors applied to it, the target whose
  * idealised solution of q's branch is q up to the change of the
@@ -763,7 +768,8 @@ uint32_t dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_
                 ref_fk(&w, 0);
                 ref_tool(&w);
                 ref_base(&w);
-                (void)ref_err(&w, &sol[k & 7u], 0u);
+                ref_rot(&w);
+                (void)ref_pos(&w, &sol[k & 7u], 0u);
                 for (it = 0; it < 6u; it++) sol[k & 7u].q[it] = w.u[it];
                 ref_fk(&w, 1);
                 ref_virtual(&w, sol[k & 7u].q);
@@ -791,7 +797,8 @@ uint32_t dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_
             ref_fk(&w, 0);
             ref_tool(&w);
             ref_base(&w);
-            it = ref_err(&w, &sol[k & 7u], it);
+            ref_rot(&w);
+            it = ref_pos(&w, &sol[k & 7u], it);
             if (it < REF_DONE) {
                 ref_frame1(&w);
                 if (!ref_a(&w) || !ref_b(&w) || !ref_apply(&w, sol[k & 7u].q)) it = REF_DONE;
