@@ -83,7 +83,20 @@ dh_status dh_ikc_args_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, cons
  * three calls treats it as a robot without a closed form; dh_ikc_f32
  * refines. */
 int dh_ikc_calibrate_f32_(dh_ikc_model_f32 *m);
-uint32_t dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol, uint32_t raw);
+/* The refinement by family (inline: no frame of its own):
+ * DH_IKC_PARALLEL_234 in dh_ikc_refine.c, the spherical-wrist family in
+ * dh_ikc_refine_wrist.c (the raw branches refined in their slots, none
+ * restarted). */
+uint32_t dh_ikc_refine_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol,
+                                   uint32_t raw);
+uint32_t dh_ikc_refine_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol,
+                                  uint32_t raw);
+static inline uint32_t dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol,
+                                          uint32_t raw)
+{
+    if (m->kind == DH_IKC_PARALLEL_234) return dh_ikc_refine_par234_f32_(m, T, sol, raw);
+    return dh_ikc_refine_wrist_f32_(m, T, sol, raw);
+}
 uint32_t dh_ikc_pack_f32_(dh_ikc_sol_f32 *sol, uint32_t raw);
 static inline uint32_t dh_ikc_raw_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                                        dh_ikc_sol_f32 *sol)
