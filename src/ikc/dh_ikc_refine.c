@@ -106,14 +106,25 @@ static void ref_keep(dh_ikc_model_f32 *m, int to)
     }
 }
 
-/* The spherical-wrist family's idealisation of m (twists snapped, a5
- * within tol already 0): a4 and d5 within tol taken as 0, which makes axes
- * 4, 5, 6 meet; then its detector (DH_IKC_WRIST_RRR: six revolute joints). */
-static int ref_wrist_ideal(dh_ikc_model_f32 *m, float tol)
+int dh_ikc_calibrated_f32_(dh_ikc_model_f32 *m, int ok)
 {
-    if (fabsf(m->a[3]) <= tol) m->a[3] = 0.0f;
-    if (fabsf(m->d[4]) <= tol) m->d[4] = 0.0f;
-    return dh_ikc_detect_wrist_f32_(m);
+    uint32_t i;
+    if (!ok) {
+        ref_keep(m, 0);
+        m->kind = DH_IKC_NONE;
+        return 0;
+    }
+    m->calibrated = 1u;
+    m->xlen = 0.0f;
+    for (i = 0; i < 6u; i++) m->xlen += fabsf(m->xa[i]) + fabsf(m->xd[i]);
+    if (!(m->xlen > 0.0f)) m->xlen = 1.0f;
+    /* post^-1 (-a6, -d6 sa6, -d6 ca6): frame 5's origin seen from the tool */
+    m->xw5[0] = -m->xa[5];
+    m->xw5[1] = -m->xd[5] * m->xsa[5];
+    m->xw5[2] = -m->xd[5] * m->xca[5];
+    dh_ikc_xform_f32_(&m->post_inv, m->xw5, 1.0f, m->xw5);
+    m->xframes = (dh_ikc_is_identity_f32_(&m->pre_inv) ? 0u : 1u) | (dh_ikc_is_identity_f32_(&m->post_inv) ? 0u : 2u);
+    return 1;
 }
 
 int dh_ikc_calibrate_f32_(dh_ikc_model_f32 *m)
@@ -124,23 +135,12 @@ int dh_ikc_calibrate_f32_(dh_ikc_model_f32 *m)
     ref_snap_twists(m);
     tol = DH_IKC_CAL_OFFSET_REL * dh_ikc_len_scale_f32_(m, 6u);
     if (fabsf(m->a[4]) <= tol) m->a[4] = 0.0f;
-    if (dh_ikc_detect_par234_f32_(m) || ref_wrist_ideal(m, tol)) {
-        uint32_t i;
-        m->calibrated = 1u;
-        m->xlen = 0.0f;
-        for (i = 0; i < 6u; i++) m->xlen += fabsf(m->xa[i]) + fabsf(m->xd[i]);
-        if (!(m->xlen > 0.0f)) m->xlen = 1.0f;
-        /* post^-1 (-a6, -d6 sa6, -d6 ca6): frame 5's origin seen from the tool */
-        m->xw5[0] = -m->xa[5];
-        m->xw5[1] = -m->xd[5] * m->xsa[5];
-        m->xw5[2] = -m->xd[5] * m->xca[5];
-        dh_ikc_xform_f32_(&m->post_inv, m->xw5, 1.0f, m->xw5);
-        m->xframes = (dh_ikc_is_identity_f32_(&m->pre_inv) ? 0u : 1u) | (dh_ikc_is_identity_f32_(&m->post_inv) ? 0u : 2u);
-        return 1;
-    }
-    ref_keep(m, 0);
-    m->kind = DH_IKC_NONE;
-    return 0;
+    if (dh_ikc_detect_par234_f32_(m)) return dh_ikc_calibrated_f32_(m, 1);
+    /* the spherical wrist's idealisation: a4 and d5 within tol as 0 too,
+     * which makes axes 4, 5, 6 meet; its detector runs from the caller */
+    if (fabsf(m->a[3]) <= tol) m->a[3] = 0.0f;
+    if (fabsf(m->d[4]) <= tol) m->d[4] = 0.0f;
+    return 2;
 }
 
 /* ---- refinement ------------------------------------------------------------------ */
@@ -285,7 +285,7 @@ DH_NOINLINE uint32_t dh_ikc_ref_begin_f32_(dh_ikc_sol_f32 *b)
 /* dh_ikc_ref_pos_f32_'s errors and point into the basis of the idealised frame 1, in
  * place: pre^-1 (skipped when the identity), then Rz(theta1)^T,
  * Rx(alpha1)^T; the point from frame 1's origin (a1 c1, a1 s1, d1). */
-static DH_NOINLINE void ref_frame1(dh_ikc_ref_work_f32 *w)
+DH_NOINLINE void dh_ikc_ref_frame1_f32_(dh_ikc_ref_work_f32 *w)
 {
     const dh_ikc_model_f32 *m = w->m;
     const dh_mat4_f32 *P = &m->pre_inv;
@@ -380,7 +380,7 @@ static DH_NOINLINE int ref_b(dh_ikc_ref_work_f32 *w)
 /* The steps (rad; joints 1, 5, 6 in u[9..11], 2, 3, 4 in u[6..8]),
  * scaled to at most REF_MAX_STEP, added to q (degrees, wrapped); 0 when
  * not finite. */
-static DH_NOINLINE int ref_apply(dh_ikc_ref_work_f32 *w, float *q)
+DH_NOINLINE int dh_ikc_ref_apply_f32_(dh_ikc_ref_work_f32 *w, float *q)
 {
     float *u = w->u;
     float big = 0.0f, f = 1.0f, t;
@@ -712,8 +712,8 @@ uint32_t dh_ikc_refine_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 
             dh_ikc_ref_rot_f32_(&w);
             it = dh_ikc_ref_pos_f32_(&w, &sol[k & 7u], it);
             if (it < DH_IKC_REF_DONE) {
-                ref_frame1(&w);
-                if (!ref_a(&w) || !ref_b(&w) || !ref_apply(&w, sol[k & 7u].q)) it = DH_IKC_REF_DONE;
+                dh_ikc_ref_frame1_f32_(&w);
+                if (!ref_a(&w) || !ref_b(&w) || !dh_ikc_ref_apply_f32_(&w, sol[k & 7u].q)) it = DH_IKC_REF_DONE;
             }
         }
         k++;

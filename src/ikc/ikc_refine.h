@@ -17,7 +17,8 @@
  * the rotation error (u[3..5], the rotation vector from the chain's end
  * frame to the target's, base frame) and the point (u[6..8]); w->cs holds
  * the cosines and sines of q (c1, s1, ..., c5, s5; cs[10], cs[11] are
- * overwritten). Each helper is DH_NOINLINE and calls only trigonometry
+ * overwritten). dh_ikc_ref_frame1_f32_ and dh_ikc_ref_apply_f32_ then
+ * take the errors into the idealised frame 1 and apply a family's step. Each helper is DH_NOINLINE and calls only trigonometry
  * (dh_ikc_ref_trig_f32_), so a caller's stack is its own frame plus one
  * helper's.
  */
@@ -59,5 +60,13 @@ void dh_ikc_ref_rot_f32_(dh_ikc_ref_work_f32 *w);
 uint32_t dh_ikc_ref_pos_f32_(dh_ikc_ref_work_f32 *w, dh_ikc_sol_f32 *b, uint32_t it);
 /* b's DH_IKC_REFINED cleared; 0, or DH_IKC_REF_DONE when b is not finite */
 uint32_t dh_ikc_ref_begin_f32_(dh_ikc_sol_f32 *b);
+/* after an evaluation: the errors and the point into the basis of the
+ * idealised frame 1 (pre^-1, Rz(theta1)^T, Rx(alpha1)^T of the idealised
+ * chain), the point from frame 1's origin (a1 c1, a1 s1, d1), in place */
+void dh_ikc_ref_frame1_f32_(dh_ikc_ref_work_f32 *w);
+/* the steps (rad) of joints 1, 2, 3, 4, 5, 6 in u[9], u[6], u[7], u[8],
+ * u[10], u[11], scaled to at most 0.2 rad, added to q (degrees, wrapped);
+ * 0 when not finite */
+int dh_ikc_ref_apply_f32_(dh_ikc_ref_work_f32 *w, float *q);
 
 #endif /* DHMATH_SRC_IKC_REFINE_H */

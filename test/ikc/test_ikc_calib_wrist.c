@@ -189,29 +189,43 @@ static void wrist_target(const dhs_robot *cal, const dhs_robot *ideal, const dh_
     st->targets++;
 }
 
-/* PER_ROBOT configurations per drawn robot, DHT_ITER(10^4) in all. */
-static void ikc_calib_wrist(void)
+/* A configuration of d uniform in +-180 deg on every joint, redrawn until
+ * it is GEN_MIN from the singularities (wrist_sing) */
+static void draw_q(const dhs_robot *d, double *q)
 {
+    unsigned i;
+    do
+        for (i = 0; i < 6u; i++) q[i] = dht_rand_uniform(-180.0, 180.0);
+    while (wrist_sing(d, q, GEN_ELBOW / GEN_MIN) < GEN_MIN);
+    dht_reach_min("calib.wrist.gen_sing", wrist_sing(d, q, GEN_ELBOW / GEN_MIN));
+}
+
+/* A drawn robot (draw_wrist) and its idealised twin, built and analysed */
+typedef struct {
     dhs_robot cal, ideal;
     dh_robot rc, ri;
     dh_ikc_model_f32 mc, mi;
-    wrist_stats st;
+} wrist_pair;
+
+static void draw_pair(long k, wrist_pair *p)
+{
+    draw_wrist(k, 0.0005, 0.2, &p->cal, &p->ideal);
+    analyse_as(&p->cal, 1u, &p->rc, &p->mc);
+    analyse_as(&p->ideal, 0u, &p->ri, &p->mi);
+}
+
+/* PER_ROBOT configurations per drawn robot, DHT_ITER(10^4) in all. */
+static void ikc_calib_wrist(void)
+{
+    static wrist_pair p;
+    wrist_stats st = { 0L, 0L, 0.0, 0.0 };
     const long total = DHT_ITER(10000L);
     long k;
-    memset(&st, 0, sizeof st);
     for (k = 0; k < total; k++) {
         double q[NJ];
-        uint32_t i;
-        if (k % PER_ROBOT == 0L) {
-            draw_wrist(k / PER_ROBOT, 0.0005, 0.2, &cal, &ideal);
-            analyse_as(&cal, 1u, &rc, &mc);
-            analyse_as(&ideal, 0u, &ri, &mi);
-        }
-        do {
-            for (i = 0; i < 6u; i++) q[i] = dht_rand_uniform(-180.0, 180.0);
-        } while (wrist_sing(&cal, q, GEN_ELBOW / GEN_MIN) < GEN_MIN);
-        dht_reach_min("calib.wrist.gen_sing", wrist_sing(&cal, q, GEN_ELBOW / GEN_MIN));
-        wrist_target(&cal, &ideal, &rc, &mc, &mi, q, &st);
+        if (k % PER_ROBOT == 0L) draw_pair(k / PER_ROBOT, &p);
+        draw_q(&p.cal, q);
+        wrist_target(&p.cal, &p.ideal, &p.rc, &p.mc, &p.mi, q, &st);
     }
     dht_printf("spherical wrist calibrated: %ld targets (%ld counts compared), worst %.3g m, %.3g rad\n", st.targets,
                st.compared, st.pos, st.rot);
