@@ -43,8 +43,8 @@
 /* deg: a solution this near the generating configuration on every joint is
  * it (the nearest other branch lies degrees away at GEN_MIN) */
 #define GEN_DEG 0.05
-/* configurations per drawn robot (at DHT_ITER_DIV 1: 10 robots) */
-#define PER_ROBOT 1000L
+/* drawn robots per run (every DHT_ITER_DIV) */
+#define ROBOTS 10L
 
 /* ---- the robots -------------------------------------------------------------- */
 
@@ -214,16 +214,17 @@ static void draw_pair(long k, wrist_pair *p)
     analyse_as(&p->ideal, 0u, &p->ri, &p->mi);
 }
 
-/* PER_ROBOT configurations per drawn robot, DHT_ITER(10^4) in all. */
+/* DHT_ITER(10^4) configurations in all, on ROBOTS drawn robots in turn. */
 static void ikc_calib_wrist(void)
 {
     static wrist_pair p;
     wrist_stats st = { 0L, 0L, 0.0, 0.0 };
     const long total = DHT_ITER(10000L);
+    const long per = (total >= ROBOTS) ? total / ROBOTS : 1L;
     long k;
     for (k = 0; k < total; k++) {
         double q[NJ];
-        if (k % PER_ROBOT == 0L) draw_pair(k / PER_ROBOT, &p);
+        if (k % per == 0L) draw_pair(k / per, &p);
         draw_q(&p.cal, q);
         wrist_target(&p.cal, &p.ideal, &p.rc, &p.mc, &p.mi, q, &st);
     }
