@@ -944,9 +944,28 @@ static uint32_t bt_cal_robot(dh_robot *r, uint32_t fam, int cal)
     return st;
 }
 
+/* 1 when the Puma 560 configuration q (deg) is at least 1e-2 from the
+ * singularities as test/ikc/test_ikc_calib_wrist.c draws its
+ * configurations: s5^2, (u / L)^2 (u = a2 c2 + a3 c23 - d4 s23, the wrist
+ * centre's distance across axis 1 from the shoulder's plane; L 1.706 m)
+ * and, for the elbow, sin^2(theta3 - phi) (phi = -87.3 deg) at least 1e-1
+ * (the wrist centre 1 cm from the elbow's boundary): the calibrated solve
+ * finds every branch there (ikc.h). From q alone, so that the exact and
+ * the calibrated robot get the same configurations. */
+static int bt_puma_away(const float *q)
+{
+    float s5, c5, se, ce, s2, c2, s23, c23, u;
+    (void)dh_sincos_f32(q[4], &s5, &c5);
+    (void)dh_sincos_f32(q[2] + 87.3f, &se, &ce);
+    (void)dh_sincos_f32(q[1], &s2, &c2);
+    (void)dh_sincos_f32(q[1] + q[2], &s23, &c23);
+    u = 0.4318f * c2 + 0.0203f * c23 - 0.4318f * s23;
+    return s5 * s5 >= 1e-2f && se * se >= 1e-1f && u * u >= 1e-2f * 1.706f * 1.706f;
+}
+
 /* dh_ikc_f32 on the UR5 and the Puma 560, each exact and calibrated, the
  * targets FK of the same random configurations on each robot (untimed),
- * as bt_ikc. */
+ * as bt_ikc; the Puma 560's redrawn until bt_puma_away. */
 static void bt_ikc_cal(void)
 {
     static const char *const name[4] = { "UR5", "UR5 calibrated", "Puma 560", "Puma 560 calibrated" };
@@ -969,7 +988,9 @@ static void bt_ikc_cal(void)
         bt_rng = 0x27D4EB2Fu;
         for (k = 0; k < BT_NIKC; k++) {
             float q[6];
-            for (j = 0; j < 6u; j++) q[j] = bt_uniform(tab[j][3], tab[j][4]);
+            do {
+                for (j = 0; j < 6u; j++) q[j] = bt_uniform(tab[j][3], tab[j][4]);
+            } while (cal >= 2u && !bt_puma_away(q));
             st |= (uint32_t)dh_fk_f32(&r, q, &Tf[k]);
         }
         bt_rng = saved;

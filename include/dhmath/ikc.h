@@ -153,11 +153,13 @@ typedef enum {
  * elbow), may be missing; near the elbow's boundary the solutions may
  * number more or fewer than the idealised chain's. WRIST_RRR: each
  * idealised branch is refined with the exact chain's Jacobian split into
- * the wrist centre's and the wrist's blocks, none restarted; a
+ * the idealised wrist centre's and wrist's blocks, none restarted; a
  * configuration whose wrist centre lies within the deviations' shift (the
  * wrist offset plus the twists' deviation in radians times the arm's
- * lengths) of the elbow's boundary, or one at
- * a singularity (s5, shoulder, elbow), may be missing, and there the
+ * lengths) of the elbow's boundary or of the shoulder's cylinder (where
+ * its two shoulder branches meet), or one at a singularity (s5, shoulder,
+ * elbow), may be missing: there the idealised chain may have no branch
+ * for the target, and a reachable target may be DH_ERR_UNREACHABLE; the
  * solutions may number fewer than the idealised chain's. Beyond the
  * tolerance: no closed form (DH_ERR_UNAVAILABLE, why as for any robot).
  * The R-R-P wrist and SCARA families, and the fixed path

@@ -283,8 +283,9 @@ static void ikc_calib_wrist_tolerance(void)
 
 /* A calibrated Puma 560 (fixed deviations) at configurations on the
  * idealised chain's singularities, where a block of the refinement is
- * singular: wrist (q5 0), elbow stretched, shoulder (wrist centre on the
- * shoulder's cylinder), and near them. The contract (ikc.h): a branch
+ * singular: wrist (q5 0), elbow stretched or folded, shoulder (the wrist
+ * centre on the shoulder's cylinder: q2 30, q3 32.58; 1 cm across it: q3
+ * 30.04), and near them. The contract (ikc.h): a branch
  * there may be missing, but every branch returned is refined and within
  * the bounds on the exact chain; none left is DH_ERR_UNREACHABLE. */
 static void ikc_calib_wrist_singular(void)
@@ -294,6 +295,7 @@ static void ikc_calib_wrist_singular(void)
         { 60.0, -45.0, 90.0, 30.0, 50.0, 10.0 },    { 10.0, 30.0, 87.3, -90.0, 0.0, 0.0 },
         { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 },           { 45.0, -30.0, 60.0, 15.0, 0.3, -15.0 },
         { 90.0, -90.0, -90.0, -90.0, -90.0, 0.0 },  { -45.0, 100.0, -92.7, 100.0, -90.0, 5.0 },
+        { 20.0, 30.0, 32.58, 40.0, 60.0, 10.0 },    { 20.0, 30.0, 30.04, 40.0, 60.0, 10.0 },
     };
     dhs_robot d = dhs_puma560_m;
     dh_robot r;
