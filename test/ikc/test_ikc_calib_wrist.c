@@ -217,7 +217,7 @@ static void draw_pair(long k, wrist_pair *p)
 /* DHT_ITER(10^4) configurations in all, on ROBOTS drawn robots in turn. */
 static void ikc_calib_wrist(void)
 {
-    static wrist_pair p;
+    wrist_pair p;
     wrist_stats st = { 0L, 0L, 0.0, 0.0 };
     const long total = DHT_ITER(10000L);
     const long per = (total >= ROBOTS) ? total / ROBOTS : 1L;
