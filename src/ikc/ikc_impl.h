@@ -75,11 +75,12 @@ dh_status dh_ikc_args_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, cons
  * dh_ikc_calibrated_f32_, which completes the calibrated model (ok 1,
  * returns 1) or puts the exact chain back (returns 0, m->kind NONE). The
  * wrist detector runs from the caller because its stack and the analysis's
- * leave no room for a frame between them (256 B on Cortex-M0+). dh_ikc_refine_f32_: the raw solutions sol[0..raw-1] (canonical values
+ * leave no room for a frame between them (256 B on Cortex-M0+).
+ * dh_ikc_refine_f32_: the raw solutions sol[0..raw-1] (canonical values
  * of the idealised chain, raw clamped to DH_IKC_MAX_SOL) refined in place
- * on the exact chain for the target T, and the branches restarted from a
- * virtual target in their slots or in the free ones (every slot of sol may
- * be written), the converged ones flagged DH_IKC_REFINED; returns the
+ * on the exact chain for the target T, and (DH_IKC_PARALLEL_234) the
+ * branches restarted from a virtual target in their slots or in the free
+ * ones (every slot of sol may be written), the converged ones flagged DH_IKC_REFINED; returns the
  * number of slots up to the last one used. dh_ikc_pack_f32_ then keeps
  * the converged ones, distinct, packed to the front in order, and returns
  * their count. Called after the solver has

@@ -18,7 +18,8 @@
  * frame to the target's, base frame) and the point (u[6..8]); w->cs holds
  * the cosines and sines of q (c1, s1, ..., c5, s5; cs[10], cs[11] are
  * overwritten). dh_ikc_ref_frame1_f32_ and dh_ikc_ref_apply_f32_ then
- * take the errors into the idealised frame 1 and apply a family's step. Each helper is DH_NOINLINE and calls only trigonometry
+ * take the errors into the idealised frame 1 and apply a family's step.
+ * Each helper is DH_NOINLINE and calls only trigonometry
  * (dh_ikc_ref_trig_f32_), so a caller's stack is its own frame plus one
  * helper's.
  */
