@@ -917,30 +917,58 @@ static void bt_ikc(void)
 /* ---- closed-form inverse kinematics of a calibrated robot --------------------- */
 
 #if BT_IKC_FLOAT
-/* The UR5 exact (cal 0), and calibrated (cal 1): a2 +1.5 mm, d4 -1 mm,
- * a5 1 mm, twists 2 and 4 +0.4 and +0.3 deg, joint 3's offset +0.3 deg
- * (within the calibration tolerance of ikc.h; the kind of deviations a
- * calibrated table holds). */
-static uint32_t bt_ur5_cal(dh_robot *r, int cal)
+/* The UR5 (fam 0) or the Puma 560 (fam 1) exact (cal 0), and calibrated
+ * (cal 1; within the calibration tolerance of ikc.h; the kind of
+ * deviations a calibrated table holds): UR5 a2 +1.5 mm, d4 -1 mm, a5 1 mm,
+ * twists 2 and 4 +0.4 and +0.3 deg, joint 3's offset +0.3 deg; Puma 560 a
+ * wrist offset a4 0.4 mm, a5 -0.3 mm, d5 0.5 mm and the twists off by up to
+ * 0.2 deg. */
+static uint32_t bt_cal_robot(dh_robot *r, uint32_t fam, int cal)
 {
-    static const float dev[6][4] = { { 0.0f, 0.0f, 0.0f, 0.0f },       { 0.0015f, 0.0f, 0.4f, 0.0f },
-                                     { 0.0f, 0.0f, 0.0f, 0.3f },       { 0.0f, -0.001f, 0.3f, 0.0f },
-                                     { 0.001f, 0.0f, 0.0f, 0.0f },     { 0.0f, 0.0f, 0.0f, 0.0f } };
+    static const float dev[2][6][4] = {
+        { { 0.0f, 0.0f, 0.0f, 0.0f }, { 0.0015f, 0.0f, 0.4f, 0.0f }, { 0.0f, 0.0f, 0.0f, 0.3f },
+          { 0.0f, -0.001f, 0.3f, 0.0f }, { 0.001f, 0.0f, 0.0f, 0.0f }, { 0.0f, 0.0f, 0.0f, 0.0f } },
+        { { 0.0f, 0.0f, 0.15f, 0.0f }, { 0.0f, 0.0f, -0.1f, 0.0f }, { 0.0f, 0.0f, -0.2f, 0.0f },
+          { 0.0004f, 0.0f, 0.1f, 0.0f }, { -0.0003f, 0.0005f, 0.15f, 0.0f }, { 0.0f, 0.0f, 0.2f, 0.0f } }
+    };
+    const float(*tab)[5] = (fam == 0u) ? bt_ur5_tab : bt_puma_tab;
     const float k = cal ? 1.0f : 0.0f;
     uint32_t st, j;
     st = (uint32_t)dh_robot_init(r, DH_CONV_STANDARD);
     for (j = 0; j < 6u; j++) {
-        st |= (uint32_t)dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, k * dev[j][3], bt_ur5_tab[j][1] + k * dev[j][1],
-                                               bt_ur5_tab[j][0] + k * dev[j][0], bt_ur5_tab[j][2] + k * dev[j][2]);
-        st |= (uint32_t)dh_robot_set_limits_f32(r, j, bt_ur5_tab[j][3], bt_ur5_tab[j][4]);
+        const float *dv = dev[fam][j];
+        st |= (uint32_t)dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, k * dv[3], tab[j][1] + k * dv[1],
+                                               tab[j][0] + k * dv[0], tab[j][2] + k * dv[2]);
+        st |= (uint32_t)dh_robot_set_limits_f32(r, j, tab[j][3], tab[j][4]);
     }
     return st;
 }
 
-/* dh_ikc_f32 on the UR5, exact and calibrated, the targets FK of the same
- * random configurations on each robot (untimed), as bt_ikc. */
+/* 1 when the Puma 560 configuration q (deg) is at least 1e-2 from the
+ * singularities as test/ikc/test_ikc_calib_wrist.c draws its
+ * configurations: s5^2, (u / L)^2 (u = a2 c2 + a3 c23 - d4 s23, the wrist
+ * centre's distance across axis 1 from the shoulder's plane; L 1.706 m)
+ * and, for the elbow, sin^2(theta3 - phi) (phi = -87.3 deg) at least 1e-1
+ * (the wrist centre 1 cm from the elbow's boundary): the calibrated solve
+ * finds every branch there (ikc.h). From q alone, so that the exact and
+ * the calibrated robot get the same configurations. */
+static int bt_puma_away(const float *q)
+{
+    float s5, c5, se, ce, s2, c2, s23, c23, u;
+    (void)dh_sincos_f32(q[4], &s5, &c5);
+    (void)dh_sincos_f32(q[2] + 87.3f, &se, &ce);
+    (void)dh_sincos_f32(q[1], &s2, &c2);
+    (void)dh_sincos_f32(q[1] + q[2], &s23, &c23);
+    u = 0.4318f * c2 + 0.0203f * c23 - 0.4318f * s23;
+    return s5 * s5 >= 1e-2f && se * se >= 1e-1f && u * u >= 1e-2f * 1.706f * 1.706f;
+}
+
+/* dh_ikc_f32 on the UR5 and the Puma 560, each exact and calibrated, the
+ * targets FK of the same random configurations on each robot (untimed),
+ * as bt_ikc; the Puma 560's redrawn until bt_puma_away. */
 static void bt_ikc_cal(void)
 {
+    static const char *const name[4] = { "UR5", "UR5 calibrated", "Puma 560", "Puma 560 calibrated" };
     dh_ikc_model_f32 *const mf = &bt_mem.c.mf;
     dh_mat4_f32 *const Tf = bt_mem.c.Tf;
     dh_ikc_sol_f32 *const solf = bt_mem.c.solf;
@@ -953,18 +981,21 @@ static void bt_ikc_cal(void)
     }
     t1 = bt_now();
     tl = t1 - t0;
-    for (cal = 0; cal < 2u; cal++) {
+    for (cal = 0; cal < 4u; cal++) {
         const uint32_t saved = bt_rng;
-        st = bt_ur5_cal(&r, (int)cal);
+        const float(*tab)[5] = (cal < 2u) ? bt_ur5_tab : bt_puma_tab;
+        st = bt_cal_robot(&r, cal >> 1, (int)(cal & 1u));
         bt_rng = 0x27D4EB2Fu;
         for (k = 0; k < BT_NIKC; k++) {
             float q[6];
-            for (j = 0; j < 6u; j++) q[j] = bt_uniform(bt_ur5_tab[j][3], bt_ur5_tab[j][4]);
+            do {
+                for (j = 0; j < 6u; j++) q[j] = bt_uniform(tab[j][3], tab[j][4]);
+            } while (cal >= 2u && !bt_puma_away(q));
             st |= (uint32_t)dh_fk_f32(&r, q, &Tf[k]);
         }
         bt_rng = saved;
         st |= (uint32_t)dh_ikc_analyse_f32(&r, mf);
-        if (st != 0u || mf->calibrated != cal) {
+        if (st != 0u || mf->calibrated != (cal & 1u)) {
             printf("BT error|calibrated closed-form IK set-up returned status %lu\n", (unsigned long)st);
             bt_status |= 1u;
             return;
@@ -976,9 +1007,8 @@ static void bt_ikc_cal(void)
             total += nsol;
         }
         t1 = bt_now();
-        printf("BT ikc|dh_ikc_f32 (UR5%s, m, all solutions)|%lu|%llu|%llu|%lu|%lu\n", cal ? " calibrated" : "",
-               (unsigned long)BT_NIKC, (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total,
-               (unsigned long)st);
+        printf("BT ikc|dh_ikc_f32 (%s, m, all solutions)|%lu|%llu|%llu|%lu|%lu\n", name[cal], (unsigned long)BT_NIKC,
+               (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total, (unsigned long)st);
         bt_status |= st;
     }
 }

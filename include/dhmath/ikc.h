@@ -129,17 +129,21 @@ typedef enum {
 
 /** @name Calibration tolerance (dh_ikc_analyse_f32)
  * A six-revolute robot that no family fits exactly but that is within these
- * of DH_IKC_PARALLEL_234 is a calibrated robot of that family
- * (model.calibrated = 1): every twist within DH_IKC_CAL_ANGLE_DEG of a
- * multiple of 90 degrees is taken as that multiple and a5 of the canonical
- * chain within DH_IKC_CAL_OFFSET_REL of the sum of the chain's |a| and |d|
- * as 0 (the idealised chain). dh_ikc_f32 solves the idealised chain in
+ * of DH_IKC_PARALLEL_234 or of DH_IKC_WRIST_RRR is a calibrated robot of
+ * that family (model.calibrated = 1; PARALLEL_234 tried first): every
+ * twist within DH_IKC_CAL_ANGLE_DEG of a multiple of 90 degrees is taken
+ * as that multiple and the lengths that break the family's structure
+ * within DH_IKC_CAL_OFFSET_REL of the sum of the chain's |a| and |d| as 0
+ * (PARALLEL_234: a5 of the canonical chain; WRIST_RRR: the wrist offsets
+ * a4, a5, d5, which keep axes 4, 5, 6 from meeting): the idealised chain.
+ * dh_ikc_f32 solves the idealised chain in
  * closed form and refines every branch on the exact chain by at most
- * DH_IKC_CAL_STEPS simplified Newton steps; a branch is returned (flagged
+ * DH_IKC_CAL_STEPS Newton steps; a branch is returned (flagged
  * DH_IKC_REFINED) only when its residual on the exact chain is within
  * 4e-7 L in position (L: the sum of |a| and |d|) and 8e-7 rad, and left
  * out otherwise (none left: DH_ERR_UNREACHABLE); the accuracy bounds below
- * hold for it. A shoulder whose four branches are not all refined is
+ * hold for it. PARALLEL_234: the steps are simplified Newton steps, and a
+ * shoulder whose four branches are not all refined is
  * started again from the virtual target of one of its branches (the exact
  * errors there applied to the idealised chain), which finds the branches
  * that the idealised chain lacks or misplaces near the wrist singularity
@@ -147,9 +151,19 @@ typedef enum {
  * deviations' shift (about 1.3e-2 L for 2 mm and 0.5 deg) of the elbow's
  * boundary, or one at a singularity of the idealised blocks (s5, shoulder,
  * elbow), may be missing; near the elbow's boundary the solutions may
- * number more or fewer than the idealised chain's. Beyond the tolerance: no closed form (DH_ERR_UNAVAILABLE, why
- * as for any robot). The spherical-wrist and SCARA families, and the fixed
- * path (dh_ikc_analyse_q), recognise exact robots only.
+ * number more or fewer than the idealised chain's. WRIST_RRR: each
+ * idealised branch is refined with the exact chain's Jacobian split into
+ * the idealised wrist centre's and wrist's blocks, none restarted; a
+ * configuration whose wrist centre lies within the deviations' shift (the
+ * wrist offset plus the twists' deviation in radians times the arm's
+ * lengths) of the elbow's boundary or of the shoulder's cylinder (where
+ * its two shoulder branches meet), or one at a singularity (s5, shoulder,
+ * elbow), may be missing: there the idealised chain may have no branch
+ * for the target, and a reachable target may be DH_ERR_UNREACHABLE; the
+ * solutions may number fewer than the idealised chain's. Beyond the
+ * tolerance: no closed form (DH_ERR_UNAVAILABLE, why as for any robot).
+ * The R-R-P wrist and SCARA families, and the fixed path
+ * (dh_ikc_analyse_q), recognise exact robots only.
  * @{ */
 #define DH_IKC_CAL_ANGLE_DEG 1.0f   /**< twist deviation, degrees */
 #define DH_IKC_CAL_OFFSET_REL 0.01f /**< structure-breaking length, fraction of the reach */

@@ -157,7 +157,9 @@ dh_status dh_ikc_analyse_f32(const dh_robot *r, dh_ikc_model_f32 *m)
         m->why = DH_IKC_WHY_NONE;
         return DH_OK;
     }
-    if (dh_ikc_calibrate_f32_(m)) {
+    i = (uint32_t)dh_ikc_calibrate_f32_(m);
+    if (i == 2u) i = (uint32_t)dh_ikc_calibrated_f32_(m, dh_ikc_detect_wrist_f32_(m));
+    if (i != 0u) {
         m->why = DH_IKC_WHY_NONE;
         return DH_OK;
     }

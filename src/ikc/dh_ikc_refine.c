@@ -2,12 +2,14 @@
 /*
  * dh_ikc_refine.c - closed-form IK of calibrated robots, float: the
  * recognition of a six-revolute chain within the calibration tolerance of
- * DH_IKC_PARALLEL_234 (dh_ikc_calibrate_f32_, called by dh_ikc_analyse_f32
- * after the exact detectors) and the refinement of the idealised closed
- * form's raw solutions on the exact chain (dh_ikc_refine_f32_, called by
- * dh_ikc_raw_f32_ after the family solver has returned); interface in
- * ikc_impl.h. Method and convergence argument: docs/design.md
- * ("Calibrated robots").
+ * DH_IKC_PARALLEL_234 or of the spherical-wrist family DH_IKC_WRIST_RRR
+ * (dh_ikc_calibrate_f32_, called by dh_ikc_analyse_f32 after the exact
+ * detectors), the evaluation helpers of every family's refinement
+ * (ikc_refine.h) and the refinement of DH_IKC_PARALLEL_234's raw
+ * solutions on the exact chain (dh_ikc_refine_par234_f32_, called by
+ * dh_ikc_f32 after the family solver has returned; the spherical wrist's:
+ * dh_ikc_refine_wrist.c); interface in ikc_impl.h. Method and convergence
+ * argument: docs/design.md ("Calibrated robots").
  *
  * Refinement of one branch: simplified Newton steps with the idealised
  * chain's Jacobian in the frame-1 split of the family (the errors in the
@@ -30,6 +32,7 @@
 #include "dhmath/ikc.h"
 #include "dhmath/trig.h"
 #include "ikc_impl.h"
+#include "ikc_refine.h"
 #include "../internal/dh_floatops.h"
 
 #include <math.h>
@@ -48,8 +51,6 @@
  * is at a singularity of the idealised Jacobian and is not refined. */
 #define REF_SING_TOL 1e-6f
 /* Two refined solutions this close on every joint (deg) are one. */
-/* A step count past the last: the branch is done. */
-#define REF_DONE (DH_IKC_CAL_STEPS + 1u)
 #define REF_SAME_DEG 1e-3f
 
 /* m->k layout of DH_IKC_PARALLEL_234 (dh_ikc_par234.c), the entries read here */
@@ -105,49 +106,48 @@ static void ref_keep(dh_ikc_model_f32 *m, int to)
     }
 }
 
+int dh_ikc_calibrated_f32_(dh_ikc_model_f32 *m, int ok)
+{
+    uint32_t i;
+    if (!ok) {
+        ref_keep(m, 0);
+        m->kind = DH_IKC_NONE;
+        return 0;
+    }
+    m->calibrated = 1u;
+    m->xlen = 0.0f;
+    for (i = 0; i < 6u; i++) m->xlen += fabsf(m->xa[i]) + fabsf(m->xd[i]);
+    if (!(m->xlen > 0.0f)) m->xlen = 1.0f;
+    /* post^-1 (-a6, -d6 sa6, -d6 ca6): frame 5's origin seen from the tool */
+    m->xw5[0] = -m->xa[5];
+    m->xw5[1] = -m->xd[5] * m->xsa[5];
+    m->xw5[2] = -m->xd[5] * m->xca[5];
+    dh_ikc_xform_f32_(&m->post_inv, m->xw5, 1.0f, m->xw5);
+    m->xframes = (dh_ikc_is_identity_f32_(&m->pre_inv) ? 0u : 1u) | (dh_ikc_is_identity_f32_(&m->post_inv) ? 0u : 2u);
+    return 1;
+}
+
 int dh_ikc_calibrate_f32_(dh_ikc_model_f32 *m)
 {
+    float tol;
     if (m->n != 6u || m->prismatic != 0u) return 0;
     ref_keep(m, 1);
     ref_snap_twists(m);
-    if (fabsf(m->a[4]) <= DH_IKC_CAL_OFFSET_REL * dh_ikc_len_scale_f32_(m, 6u)) m->a[4] = 0.0f;
-    if (dh_ikc_detect_par234_f32_(m)) {
-        uint32_t i;
-        m->calibrated = 1u;
-        m->xlen = 0.0f;
-        for (i = 0; i < 6u; i++) m->xlen += fabsf(m->xa[i]) + fabsf(m->xd[i]);
-        if (!(m->xlen > 0.0f)) m->xlen = 1.0f;
-        /* post^-1 (-a6, -d6 sa6, -d6 ca6): frame 5's origin seen from the tool */
-        m->xw5[0] = -m->xa[5];
-        m->xw5[1] = -m->xd[5] * m->xsa[5];
-        m->xw5[2] = -m->xd[5] * m->xca[5];
-        dh_ikc_xform_f32_(&m->post_inv, m->xw5, 1.0f, m->xw5);
-        m->xframes = (dh_ikc_is_identity_f32_(&m->pre_inv) ? 0u : 1u) | (dh_ikc_is_identity_f32_(&m->post_inv) ? 0u : 2u);
-        return 1;
-    }
-    ref_keep(m, 0);
-    m->kind = DH_IKC_NONE;
-    return 0;
+    tol = DH_IKC_CAL_OFFSET_REL * dh_ikc_len_scale_f32_(m, 6u);
+    if (fabsf(m->a[4]) <= tol) m->a[4] = 0.0f;
+    if (dh_ikc_detect_par234_f32_(m)) return dh_ikc_calibrated_f32_(m, 1);
+    /* the spherical wrist's idealisation: a4 and d5 within tol as 0 too,
+     * which makes axes 4, 5, 6 meet; its detector runs from the caller */
+    if (fabsf(m->a[3]) <= tol) m->a[3] = 0.0f;
+    if (fabsf(m->d[4]) <= tol) m->d[4] = 0.0f;
+    return 2;
 }
 
 /* ---- refinement ------------------------------------------------------------------ */
 
-/* Work data of one call: cs the cosines and sines of the branch's canonical
- * joint values (c1, s1, ..., c6, s6); u the exact chain's end frame
- * (columns x, y, z and the joint 5 point), then the errors and the joint
- * 5 point (ref_rot, ref_pos, ref_frame1), then the steps (ref_a, ref_b),
- * or the vectors of a virtual target (ref_virtual); m the model, T the
- * target. */
-typedef struct {
-    float cs[12];
-    float u[12];
-    const dh_ikc_model_f32 *m;
-    const dh_mat4_f32 *T;
-} ref_work;
-
 /* cs of the canonical values q (of the joint values being refined, so
  * that the verdict is on them) */
-static DH_NOINLINE void ref_trig(const float *q, ref_work *w)
+DH_NOINLINE void dh_ikc_ref_trig_f32_(const float *q, dh_ikc_ref_work_f32 *w)
 {
     uint32_t i;
     for (i = 0; i < 12u; i += 2u) (void)dh_sincos_f32(q[i >> 1], &w->cs[i + 1u], &w->cs[i]);
@@ -167,12 +167,10 @@ typedef char ref_chain_layout_[(offsetof(dh_ikc_model_f32, xd) - offsetof(dh_ikc
 /* Joint j's value at byte offset o from a (or xa) of the chain at c. */
 #define REF_CH(c, o, j) (*(const float *)(const void *)((c) + (o) + sizeof(float) * (j)))
 
-/* The exact chain's (ideal 0) or the idealised chain's (1) T06 from cs
- * into u, per joint the turn about z, the offsets, the twist, each a pass
- * over the three rows; then p moved to the joint 5 point, T06 (-a6,
- * -d6 sa6, -d6 ca6) of that chain. The chain is read through one pointer
- * (c: the model's a or xa, as bytes), which keeps the frame small. */
-static DH_NOINLINE void ref_fk(ref_work *w, int ideal)
+/* dh_ikc_ref_fk_f32_ with soft float: u updated in place, per joint the
+ * turn about z, the offsets, the twist, each a pass over the three rows
+ * (a frame of a few words where every float lives in memory anyway). */
+DH_NOINLINE void dh_ikc_ref_fk_rows_f32_(dh_ikc_ref_work_f32 *w, int ideal)
 {
     const unsigned char *c = (const unsigned char *)(const void *)w->m +
                              (ideal ? offsetof(dh_ikc_model_f32, a) : offsetof(dh_ikc_model_f32, xa));
@@ -198,9 +196,72 @@ static DH_NOINLINE void ref_fk(ref_work *w, int ideal)
                      REF_CH(c, REF_OD, 5u) * (REF_CH(c, REF_OS, 5u) * u[3u + r] + REF_CH(c, REF_OC, 5u) * u[6u + r]);
 }
 
+/* dh_ikc_ref_fk_f32_ with an FPU: the frame (columns x, y, z and the
+ * point) held in locals, which stay in registers, and stored once: joint 1
+ * from the identity (its columns and point written out), joints 2 to 5 in
+ * full, their point the joint 5 point (frame 5's origin), joint 6 its
+ * rotation only. */
+DH_NOINLINE void dh_ikc_ref_fk_regs_f32_(dh_ikc_ref_work_f32 *w, int ideal)
+{
+    const unsigned char *c = (const unsigned char *)(const void *)w->m +
+                             (ideal ? offsetof(dh_ikc_model_f32, a) : offsetof(dh_ikc_model_f32, xa));
+    const float *cs = w->cs;
+    float *u = w->u;
+    const float sa1 = REF_CH(c, REF_OS, 0u), ca1 = REF_CH(c, REF_OC, 0u), a1 = REF_CH(c, 0u, 0u);
+    float x0 = cs[0], x1 = cs[1], x2 = 0.0f, y0 = -ca1 * cs[1], y1 = ca1 * cs[0], y2 = sa1;
+    float z0 = sa1 * cs[1], z1 = -sa1 * cs[0], z2 = ca1;
+    float p0 = a1 * cs[0], p1 = a1 * cs[1], p2 = REF_CH(c, REF_OD, 0u);
+    float t0, t1, t2, ct, st, sa, ca;
+    uint32_t i;
+    for (i = 1u; i < 5u; i++) {
+        const float ai = REF_CH(c, 0u, i), di = REF_CH(c, REF_OD, i);
+        ct = cs[2u * i];
+        st = cs[2u * i + 1u];
+        sa = REF_CH(c, REF_OS, i);
+        ca = REF_CH(c, REF_OC, i);
+        p0 += di * z0;
+        p1 += di * z1;
+        p2 += di * z2;
+        t0 = ct * y0 - st * x0;
+        t1 = ct * y1 - st * x1;
+        t2 = ct * y2 - st * x2;
+        x0 = ct * x0 + st * y0;
+        x1 = ct * x1 + st * y1;
+        x2 = ct * x2 + st * y2;
+        p0 += ai * x0;
+        p1 += ai * x1;
+        p2 += ai * x2;
+        y0 = ca * t0 + sa * z0;
+        y1 = ca * t1 + sa * z1;
+        y2 = ca * t2 + sa * z2;
+        z0 = ca * z0 - sa * t0;
+        z1 = ca * z1 - sa * t1;
+        z2 = ca * z2 - sa * t2;
+    }
+    ct = cs[10];
+    st = cs[11];
+    sa = REF_CH(c, REF_OS, 5u);
+    ca = REF_CH(c, REF_OC, 5u);
+    t0 = ct * y0 - st * x0;
+    t1 = ct * y1 - st * x1;
+    t2 = ct * y2 - st * x2;
+    u[0] = ct * x0 + st * y0;
+    u[1] = ct * x1 + st * y1;
+    u[2] = ct * x2 + st * y2;
+    u[3] = ca * t0 + sa * z0;
+    u[4] = ca * t1 + sa * z1;
+    u[5] = ca * t2 + sa * z2;
+    u[6] = ca * z0 - sa * t0;
+    u[7] = ca * z1 - sa * t1;
+    u[8] = ca * z2 - sa * t2;
+    u[9] = p0;
+    u[10] = p1;
+    u[11] = p2;
+}
+
 /* u's rotation times the tool frame's (post = post_inv^-1, rotation S^T),
  * when there is one */
-static DH_NOINLINE void ref_tool(ref_work *w)
+DH_NOINLINE void dh_ikc_ref_tool_f32_(dh_ikc_ref_work_f32 *w)
 {
     const dh_mat4_f32 *P = &w->m->post_inv;
     float *u = w->u;
@@ -214,7 +275,7 @@ static DH_NOINLINE void ref_tool(ref_work *w)
 
 /* u <- pre u (pre = pre_inv^-1 = (R^T, -R^T p): each column v to R^T v,
  * the point to R^T (v - p)), when there is a base frame */
-static DH_NOINLINE void ref_base(ref_work *w)
+DH_NOINLINE void dh_ikc_ref_base_f32_(dh_ikc_ref_work_f32 *w)
 {
     const dh_mat4_f32 *P = &w->m->pre_inv;
     float *u = w->u;
@@ -230,30 +291,32 @@ static DH_NOINLINE void ref_base(ref_work *w)
 
 /* The rotation error (x x xt + y x yt + z x zt) / 2 (rad) of u (the exact
  * chain's end frame) against the target into u[3..5] (the rotation is not
- * read after it; its first two components pass through cs[10], cs[11],
- * which the forward kinematics has used). */
-static DH_NOINLINE void ref_rot(ref_work *w)
+ * read after it). */
+DH_NOINLINE void dh_ikc_ref_rot_f32_(dh_ikc_ref_work_f32 *w)
 {
     const dh_mat4_f32 *T = w->T;
     float *u = w->u;
+    float e0 = 0.0f, e1 = 0.0f, e2 = 0.0f;
     uint32_t k;
-    w->cs[10] = 0.0f;
-    w->cs[11] = 0.0f;
-    for (k = 0; k < 3u; k++) w->cs[10] += u[3u * k + 1u] * T->m[k][2] - u[3u * k + 2u] * T->m[k][1];
-    for (k = 0; k < 3u; k++) w->cs[11] += u[3u * k + 2u] * T->m[k][0] - u[3u * k] * T->m[k][2];
-    u[5] = 0.5f * ((u[0] * T->m[0][1] - u[1] * T->m[0][0]) + (u[3] * T->m[1][1] - u[4] * T->m[1][0]) +
-                   (u[6] * T->m[2][1] - u[7] * T->m[2][0]));
-    u[3] = 0.5f * w->cs[10];
-    u[4] = 0.5f * w->cs[11];
+    for (k = 0; k < 3u; k++) {
+        const float *t = T->m[k];
+        const float v0 = u[3u * k], v1 = u[3u * k + 1u], v2 = u[3u * k + 2u];
+        e0 += v1 * t[2] - v2 * t[1];
+        e1 += v2 * t[0] - v0 * t[2];
+        e2 += v0 * t[1] - v1 * t[0];
+    }
+    u[3] = 0.5f * e0;
+    u[4] = 0.5f * e1;
+    u[5] = 0.5f * e2;
 }
 
 /* The position error of the joint 5 point (u[9..11]) against the target
  * into u[0..2], the point into u[6..8]; then the verdict on branch b after
  * it steps: converged (|position error| <= tp = REF_POS_REL L and
  * |rotation error| <= REF_ROT, in the sum of their squares over the
- * squared bounds): b flagged DH_IKC_REFINED, REF_DONE returned; an error
- * not finite: REF_DONE; else it + 1 (REF_DONE after DH_IKC_CAL_STEPS). */
-static DH_NOINLINE uint32_t ref_pos(ref_work *w, dh_ikc_sol_f32 *b, uint32_t it)
+ * squared bounds): b flagged DH_IKC_REFINED, DH_IKC_REF_DONE returned; an error
+ * not finite: DH_IKC_REF_DONE; else it + 1 (DH_IKC_REF_DONE after DH_IKC_CAL_STEPS). */
+DH_NOINLINE uint32_t dh_ikc_ref_pos_f32_(dh_ikc_ref_work_f32 *w, dh_ikc_sol_f32 *b, uint32_t it)
 {
     const dh_mat4_f32 *T = w->T;
     const float *p = w->m->xw5;
@@ -269,23 +332,23 @@ static DH_NOINLINE uint32_t ref_pos(ref_work *w, dh_ikc_sol_f32 *b, uint32_t it)
     ep = ep / (tp * tp) + (u[3] * u[3] + u[4] * u[4] + u[5] * u[5]) * (1.0f / (REF_ROT * REF_ROT));
     if (ep <= 1.0f) {
         b->flags |= DH_IKC_REFINED;
-        return REF_DONE;
+        return DH_IKC_REF_DONE;
     }
-    return (ep <= 1e30f) ? (it + 1u) : REF_DONE;
+    return (ep <= 1e30f) ? (it + 1u) : DH_IKC_REF_DONE;
 }
 
 /* The start of branch b: its DH_IKC_REFINED flag cleared; the step count 0,
- * or REF_DONE when b is not finite. */
-static DH_NOINLINE uint32_t ref_begin(dh_ikc_sol_f32 *b)
+ * or DH_IKC_REF_DONE when b is not finite. */
+DH_NOINLINE uint32_t dh_ikc_ref_begin_f32_(dh_ikc_sol_f32 *b)
 {
     b->flags &= ~(uint32_t)DH_IKC_REFINED;
-    return dh_allfinite_f32(b->q, 6u) ? 0u : REF_DONE;
+    return dh_allfinite_f32(b->q, 6u) ? 0u : DH_IKC_REF_DONE;
 }
 
-/* ref_pos's errors and point into the basis of the idealised frame 1, in
+/* dh_ikc_ref_pos_f32_'s errors and point into the basis of the idealised frame 1, in
  * place: pre^-1 (skipped when the identity), then Rz(theta1)^T,
  * Rx(alpha1)^T; the point from frame 1's origin (a1 c1, a1 s1, d1). */
-static DH_NOINLINE void ref_frame1(ref_work *w)
+DH_NOINLINE void dh_ikc_ref_frame1_f32_(dh_ikc_ref_work_f32 *w)
 {
     const dh_ikc_model_f32 *m = w->m;
     const dh_mat4_f32 *P = &m->pre_inv;
@@ -332,7 +395,7 @@ static void ref_phi(const dh_ikc_model_f32 *m, const float *cs, int with4, float
  * across it (rows lin_z, ang_x, ang_y of the idealised Jacobian in frame 1:
  * joint 1 (-tau (px + a1), 0, tau), joint 5 (0, sb sphi, -sb cphi), joint 6
  * (0, w5 s5 cphi, w5 s5 sphi)) into u[9..11]; 0 at a singularity. */
-static DH_NOINLINE int ref_a(ref_work *w)
+static DH_NOINLINE int ref_a(dh_ikc_ref_work_f32 *w)
 {
     const dh_ikc_model_f32 *m = w->m;
     float *u = w->u;
@@ -355,7 +418,7 @@ static DH_NOINLINE int ref_a(ref_work *w)
  * 3R (o2 u3 + o3 u4 = p om - (ey, -ex) with u3 = s2 dtheta3, u4 = s23
  * dtheta4, om their sum with dtheta2; o2, o3 the origins of frames 2, 3).
  * 0 at a singularity (elbow stretched or folded). */
-static DH_NOINLINE int ref_b(ref_work *w)
+static DH_NOINLINE int ref_b(dh_ikc_ref_work_f32 *w)
 {
     const dh_ikc_model_f32 *m = w->m;
     float *u = w->u;
@@ -378,26 +441,36 @@ static DH_NOINLINE int ref_b(ref_work *w)
 }
 
 /* The steps (rad; joints 1, 5, 6 in u[9..11], 2, 3, 4 in u[6..8]),
- * scaled to at most REF_MAX_STEP, added to q (degrees, wrapped); 0 when
- * not finite. */
-static DH_NOINLINE int ref_apply(ref_work *w, float *q)
+ * scaled to at most REF_MAX_STEP, added to q (degrees, wrapped), with cs
+ * following: each step r (rad) as applied (the difference of the degree
+ * values before the wrap: exact in float when the step is smaller than
+ * the value (Fast2Sum), else within half an ulp of the step) turns the
+ * joint's cosine and sine by the series of cos r to r^6 and sin r to r^5
+ * (within 3e-9 up to REF_MAX_STEP), then they are scaled back to unit
+ * length (one Newton step of 1 / sqrt). 0 when not finite. */
+DH_NOINLINE int dh_ikc_ref_apply_f32_(dh_ikc_ref_work_f32 *w, float *q)
 {
-    float *u = w->u;
-    float big = 0.0f, f = 1.0f, t;
+    /* joint i's step in u[ref_order[i]] */
+    static const uint8_t ref_order[6] = { 9u, 6u, 7u, 8u, 10u, 11u };
+    const float *u = w->u;
+    float big = 0.0f, f = 1.0f;
     uint32_t i;
-    /* joint order: 1, 2, 3, 4, 5, 6 from u[9], u[6], u[7], u[8], u[10], u[11] */
-    t = u[8];
-    u[8] = u[7];
-    u[7] = u[6];
-    u[6] = u[9];
-    u[9] = t;
     for (i = 6u; i < 12u; i++)
         if (fabsf(u[i]) > big) big = fabsf(u[i]);
     if (!(big <= 1e30f)) return 0;
     if (big > REF_MAX_STEP) f = REF_MAX_STEP / big;
+    f *= DH_RAD2DEG_F;
     for (i = 0; i < 6u; i++) {
-        u[6u + i] *= f;
-        q[i] = dh_wrap180_f32(q[i] + DH_RAD2DEG_F * u[6u + i]);
+        float *cs = &w->cs[2u * i];
+        const float v = q[i] + f * u[ref_order[i]];
+        const float r = DH_DEG2RAD_F * (v - q[i]), r2 = r * r;
+        const float sd = r * (1.0f - (r2 * (1.0f / 6.0f)) * (1.0f - r2 * (1.0f / 20.0f)));
+        const float cd = 1.0f - (r2 * 0.5f) * (1.0f - (r2 * (1.0f / 12.0f)) * (1.0f - r2 * (1.0f / 30.0f)));
+        const float c = cs[0] * cd - cs[1] * sd, s = cs[1] * cd + cs[0] * sd;
+        const float k = 1.5f - 0.5f * (c * c + s * s);
+        cs[0] = c * k;
+        cs[1] = s * k;
+        q[i] = (fabsf(v) < 180.0f) ? v : dh_wrap180_f32(v);
     }
     return 1;
 }
@@ -436,13 +509,13 @@ uint32_t dh_ikc_pack_f32_(dh_ikc_sol_f32 *sol, uint32_t raw)
 typedef char ref_eight_slots_[(DH_IKC_MAX_SOL == 8u) ? 1 : -1];
 
 /* The first-order virtual target of the canonical values q whose exact
- * errors (ref_rot, ref_pos: the joint 5 point's position error and the
+ * errors (dh_ikc_ref_rot_f32_, dh_ikc_ref_pos_f32_: the joint 5 point's position error and the
  * rotation error, base frame) are in e, from the idealised chain's T06 at q
- * in u (ref_fk, ideal): T'06 = the errors applied to it, the target whose
+ * in u (dh_ikc_ref_fk_f32_, ideal): T'06 = the errors applied to it, the target whose
  * idealised solution of q's branch is q up to the change of the
  * deviations' effect between q and that solution. Its vectors as the
  * family solver reads them (the joint 5 point, x6 and axis 6) into u[0..8]. */
-static DH_NOINLINE void ref_virtual(ref_work *w, float *e)
+static DH_NOINLINE void ref_virtual(dh_ikc_ref_work_f32 *w, float *e)
 {
     const dh_ikc_model_f32 *m = w->m;
     const dh_mat4_f32 *P = &m->pre_inv;
@@ -477,7 +550,7 @@ static DH_NOINLINE void ref_virtual(ref_work *w, float *e)
  * 5 at 2, 6 at 4, 3 at 6, 2 at 8; cos and sin of phi at 10), ref_angles
  * the angles into q. 0 when the branch does not exist there (beyond the
  * shoulder cylinder or the elbow's reach, or the wrist singular). */
-static DH_NOINLINE int ref_bs(ref_work *w, uint32_t f)
+static DH_NOINLINE int ref_bs(dh_ikc_ref_work_f32 *w, uint32_t f)
 {
     const float *k = w->m->k, *p = w->u;
     const float th = k[RK_TAU] * k[RK_H];
@@ -494,7 +567,7 @@ static DH_NOINLINE int ref_bs(ref_work *w, uint32_t f)
     return 1;
 }
 
-static DH_NOINLINE int ref_bw(ref_work *w)
+static DH_NOINLINE int ref_bw(dh_ikc_ref_work_f32 *w)
 {
     const float *k = w->m->k, *z = &w->u[6];
     const float tau = k[RK_TAU], sb = k[RK_SB], w5 = k[RK_W5];
@@ -514,7 +587,7 @@ static DH_NOINLINE int ref_bw(ref_work *w)
 
 /* Joint 6's pair from the first column (n11 = x1 . x6, n21 = y1 . x6,
  * n31 = z1 . x6), then the wrist flip of f. */
-static DH_NOINLINE void ref_b6(ref_work *w, uint32_t f)
+static DH_NOINLINE void ref_b6(dh_ikc_ref_work_f32 *w, uint32_t f)
 {
     const float *k = w->m->k, *x = &w->u[3];
     float *o = w->cs;
@@ -533,7 +606,7 @@ static DH_NOINLINE void ref_b6(ref_work *w, uint32_t f)
     }
 }
 
-static DH_NOINLINE int ref_be(ref_work *w, uint32_t f)
+static DH_NOINLINE int ref_be(dh_ikc_ref_work_f32 *w, uint32_t f)
 {
     const dh_ikc_model_f32 *m = w->m;
     const float *k = m->k, *p = w->u;
@@ -614,7 +687,7 @@ static DH_NOINLINE uint32_t ref_plan(dh_ikc_sol_f32 *sol, uint32_t sh)
 
 /* Slot b after its start (ref_bw, ref_be, ref_angles; ok 1 when it has
  * one): joint 4 from phi, flagged REF_NEW; none: free again. */
-static DH_NOINLINE void ref_started(const ref_work *w, dh_ikc_sol_f32 *b, int ok)
+static DH_NOINLINE void ref_started(const dh_ikc_ref_work_f32 *w, dh_ikc_sol_f32 *b, int ok)
 {
     const uint32_t f = b->flags & ~(uint32_t)REF_PEND;
     b->flags = REF_FREE;
@@ -654,9 +727,9 @@ static DH_NOINLINE uint32_t ref_marks(dh_ikc_sol_f32 *sol, uint32_t raw, int ms)
  * from here, none below another, and only the work data, sol, k and one
  * count are kept across them. Returns the number of slots used (refined
  * ones flagged DH_IKC_REFINED). */
-uint32_t dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol, uint32_t raw)
+uint32_t dh_ikc_refine_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol, uint32_t raw)
 {
-    ref_work w;
+    dh_ikc_ref_work_f32 w;
     uint32_t k, it;
     w.m = m;
     w.T = T;
@@ -675,15 +748,14 @@ uint32_t dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_
                  * the exact errors there into its q, then the virtual
                  * target into w.u */
                 k += it;
-                ref_trig(sol[k & 7u].q, &w);
-                ref_fk(&w, 0);
-                ref_tool(&w);
-                ref_base(&w);
-                ref_rot(&w);
-                (void)ref_pos(&w, &sol[k & 7u], 0u);
-                ref_trig(sol[k & 7u].q, &w);
+                dh_ikc_ref_trig_f32_(sol[k & 7u].q, &w);
+                dh_ikc_ref_fk_f32_(&w, 0);
+                dh_ikc_ref_tool_f32_(&w);
+                dh_ikc_ref_base_f32_(&w);
+                dh_ikc_ref_rot_f32_(&w);
+                (void)dh_ikc_ref_pos_f32_(&w, &sol[k & 7u], 0u);
                 for (it = 0; it < 6u; it++) sol[k & 7u].q[it] = w.u[it];
-                ref_fk(&w, 1);
+                dh_ikc_ref_fk_f32_(&w, 1);
                 ref_virtual(&w, sol[k & 7u].q);
             }
             if ((sol[k & 7u].flags & REF_PEND) != 0u) {
@@ -703,17 +775,17 @@ uint32_t dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_
             continue;
         }
         sol[k & 7u].flags &= ~(uint32_t)REF_NEW;
-        it = ref_begin(&sol[k & 7u]);
-        while (it < REF_DONE) {
-            ref_trig(sol[k & 7u].q, &w);
-            ref_fk(&w, 0);
-            ref_tool(&w);
-            ref_base(&w);
-            ref_rot(&w);
-            it = ref_pos(&w, &sol[k & 7u], it);
-            if (it < REF_DONE) {
-                ref_frame1(&w);
-                if (!ref_a(&w) || !ref_b(&w) || !ref_apply(&w, sol[k & 7u].q)) it = REF_DONE;
+        it = dh_ikc_ref_begin_f32_(&sol[k & 7u]);
+        if (it < DH_IKC_REF_DONE) dh_ikc_ref_trig_f32_(sol[k & 7u].q, &w);
+        while (it < DH_IKC_REF_DONE) {
+            dh_ikc_ref_fk_f32_(&w, 0);
+            dh_ikc_ref_tool_f32_(&w);
+            dh_ikc_ref_base_f32_(&w);
+            dh_ikc_ref_rot_f32_(&w);
+            it = dh_ikc_ref_pos_f32_(&w, &sol[k & 7u], it);
+            if (it < DH_IKC_REF_DONE) {
+                dh_ikc_ref_frame1_f32_(&w);
+                if (!ref_a(&w) || !ref_b(&w) || !dh_ikc_ref_apply_f32_(&w, sol[k & 7u].q)) it = DH_IKC_REF_DONE;
             }
         }
         k++;

@@ -68,12 +68,19 @@ dh_status dh_ikc_args_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, cons
  * analysis of a chain that no family fits exactly (m->a..ca exact on
  * entry): 1 with m->kind, m->k, the idealised chain in a..ca, the exact one
  * in xa..xca and m->calibrated = 1 when it is within the calibration
- * tolerance of a family it refines; else 0 with m as on entry (calibrated
- * 0). dh_ikc_refine_f32_: the raw solutions sol[0..raw-1] (canonical values
+ * tolerance of DH_IKC_PARALLEL_234; 0 with m as on entry (calibrated 0)
+ * when the chain is not six revolute joints; 2 with the chain idealised as
+ * the spherical-wrist family takes it: the caller then runs
+ * dh_ikc_detect_wrist_f32_(m) and passes its answer as ok to
+ * dh_ikc_calibrated_f32_, which completes the calibrated model (ok 1,
+ * returns 1) or puts the exact chain back (returns 0, m->kind NONE). The
+ * wrist detector runs from the caller because its stack and the analysis's
+ * leave no room for a frame between them (256 B on Cortex-M0+).
+ * dh_ikc_refine_f32_: the raw solutions sol[0..raw-1] (canonical values
  * of the idealised chain, raw clamped to DH_IKC_MAX_SOL) refined in place
- * on the exact chain for the target T, and the branches restarted from a
- * virtual target in their slots or in the free ones (every slot of sol may
- * be written), the converged ones flagged DH_IKC_REFINED; returns the
+ * on the exact chain for the target T, and (DH_IKC_PARALLEL_234) the
+ * branches restarted from a virtual target in their slots or in the free
+ * ones (every slot of sol may be written), the converged ones flagged DH_IKC_REFINED; returns the
  * number of slots up to the last one used. dh_ikc_pack_f32_ then keeps
  * the converged ones, distinct, packed to the front in order, and returns
  * their count. Called after the solver has
@@ -83,7 +90,21 @@ dh_status dh_ikc_args_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, cons
  * three calls treats it as a robot without a closed form; dh_ikc_f32
  * refines. */
 int dh_ikc_calibrate_f32_(dh_ikc_model_f32 *m);
-uint32_t dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol, uint32_t raw);
+int dh_ikc_calibrated_f32_(dh_ikc_model_f32 *m, int ok);
+/* The refinement by family (inline: no frame of its own):
+ * DH_IKC_PARALLEL_234 in dh_ikc_refine.c, the spherical-wrist family in
+ * dh_ikc_refine_wrist.c (the raw branches refined in their slots, none
+ * restarted). */
+uint32_t dh_ikc_refine_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol,
+                                   uint32_t raw);
+uint32_t dh_ikc_refine_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol,
+                                  uint32_t raw);
+static inline uint32_t dh_ikc_refine_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, dh_ikc_sol_f32 *sol,
+                                          uint32_t raw)
+{
+    if (m->kind == DH_IKC_PARALLEL_234) return dh_ikc_refine_par234_f32_(m, T, sol, raw);
+    return dh_ikc_refine_wrist_f32_(m, T, sol, raw);
+}
 uint32_t dh_ikc_pack_f32_(dh_ikc_sol_f32 *sol, uint32_t raw);
 static inline uint32_t dh_ikc_raw_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                                        dh_ikc_sol_f32 *sol)

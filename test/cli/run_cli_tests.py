@@ -24,7 +24,7 @@ Groups:
             solution (double FK here), the generating configuration among
             them, exit 3 unreachable / outside the limits, exit 2 and the
             reason for a robot without a closed form; a calibrated UR5
-            (its summary says the solutions were refined); ik --all
+            and Puma 560 (the summary says the solutions were refined); ik --all
             --fixed on puma560_mm and ur5_mm (the fixed path, within 5e-3
             mm), its exit 3 and exit 2 cases
   move      move: a joint move (trapezoids and --jerk), a line, an arc and
@@ -1283,33 +1283,56 @@ joint R a=0         d=0.0829   alpha=0.1    min=-360 max=360
 """
 
 
+# A Puma 560 as a calibration could give it: a wrist offset (a4, a5, d5) of
+# up to 0.5 mm, twists off by up to 0.2 deg (puma560.dh with these values).
+PUMA_CALIBRATED = """convention standard
+joint R a=0       d=0.67183 alpha=90.15  min=-360 max=360
+joint R a=0.4318  d=0       alpha=-0.1   min=-360 max=360
+joint R a=0.0203  d=0.15005 alpha=-90.2  min=-360 max=360
+joint R a=0.0004  d=0.4318  alpha=90.1   min=-360 max=360
+joint R a=-0.0003 d=0.0005  alpha=-89.85 min=-360 max=360
+joint R a=0       d=0       alpha=0.2    min=-360 max=360
+"""
+
+
+def calibrated_q(rng, name):
+    """A configuration of the calibrated robot away from its singularities."""
+    if name == 'ur5':
+        return [rng.uniform(-170, 170), rng.uniform(-130, -50), rng.choice((-1, 1)) * rng.uniform(65, 115),
+                rng.uniform(-170, 170), rng.choice((-1, 1)) * rng.uniform(55, 125), rng.uniform(-170, 170)]
+    return [rng.uniform(-170, 170), rng.uniform(-60, 60), rng.uniform(20, 70) * rng.choice((-1, 1)) - 90,
+            rng.uniform(-170, 170), rng.choice((-1, 1)) * rng.uniform(40, 140), rng.uniform(-170, 170)]
+
+
 def group_ikc_calibrated(rng, tmp, rdir):
-    """ik --all on a calibrated UR5: unchanged command line, the summary says
-    the solutions were refined, every printed solution reaches the target
-    (double reference FK of the calibrated table), the generating
-    configuration (away from the singularities) is printed."""
-    path = write(tmp, 'ur5_calibrated.dh', UR5_CALIBRATED)
-    rob = read_robot(UR5_CALIBRATED)
-    js = rob['joints']
-    nsol = 0
-    for it in range(10):
-        q = [rng.uniform(-170, 170), rng.uniform(-130, -50), rng.choice((-1, 1)) * rng.uniform(65, 115),
-             rng.uniform(-170, 170), rng.choice((-1, 1)) * rng.uniform(55, 125), rng.uniform(-170, 170)]
-        T = ref_fk(rob, q)
-        rc, out, err = run(['ik', '--all', path, to_expr(T)])
-        lines = err.splitlines()
-        rows = nums(out)
-        check(rc == 0 and len(lines) == 1 and re.match(
-            r'ik --all: %d closed-form solutions? within the limits \(0 outside\), refined by Newton steps on the '
-            r'calibrated chain' % len(rows), lines[0]) is not None, 'ik --all calibrated ur5: rc %d err %r' % (rc, err))
-        best = 1e30
-        for row in rows:
-            d = maxdiff(ref_fk(rob, row), T)
-            check(d <= 2e-5, 'ik --all calibrated ur5: solution %r misses the target by %.3g' % (row, d))
-            best = min(best, max(ang_diff(a, b) for a, b in zip(row, q)))
-        check(best <= 1e-2, 'ik --all calibrated ur5: generating q %r not printed (nearest %.3g)\n%s' % (q, best, out))
-        nsol += len(rows)
-    print('ik --all calibrated ur5: %d solutions printed' % nsol)
+    """ik --all on a calibrated UR5 and a calibrated Puma 560 (spherical
+    wrist): unchanged command line, the summary says the solutions were
+    refined, every printed solution reaches the target (double reference FK
+    of the calibrated table), the generating configuration (away from the
+    singularities) is printed."""
+    for name, table in (('ur5', UR5_CALIBRATED), ('puma', PUMA_CALIBRATED)):
+        path = write(tmp, name + '_calibrated.dh', table)
+        rob = read_robot(table)
+        nsol = 0
+        for it in range(10):
+            q = calibrated_q(rng, name)
+            T = ref_fk(rob, q)
+            rc, out, err = run(['ik', '--all', path, to_expr(T)])
+            lines = err.splitlines()
+            rows = nums(out)
+            check(rc == 0 and len(lines) == 1 and re.match(
+                r'ik --all: %d closed-form solutions? within the limits \(0 outside\), refined by Newton steps on '
+                r'the calibrated chain' % len(rows), lines[0]) is not None,
+                'ik --all calibrated %s: rc %d err %r' % (name, rc, err))
+            best = 1e30
+            for row in rows:
+                d = maxdiff(ref_fk(rob, row), T)
+                check(d <= 2e-5, 'ik --all calibrated %s: solution %r misses the target by %.3g' % (name, row, d))
+                best = min(best, max(ang_diff(a, b) for a, b in zip(row, q)))
+            check(best <= 1e-2, 'ik --all calibrated %s: generating q %r not printed (nearest %.3g)\n%s' %
+                  (name, q, best, out))
+            nsol += len(rows)
+        print('ik --all calibrated %s: %d solutions printed' % (name, nsol))
 
 
 def group_ikc_fixed(rng, tmp, rdir):
