@@ -71,7 +71,6 @@ static union {
     dh_move_q mv;
     dh_queue_q qu;
 } the_mem;
-static dh_queue_item_q the_items[CAP];
 static int32_t ring[RING][6]; /* positions (6 joints or 3 coordinates), one every dec periods */
 static unsigned char ring_r1[RING];        /* 1 when r was 1 since the entry before */
 
@@ -366,6 +365,7 @@ static void run_queue(dhsm_rig *g, long kstop, long rest, long *stats)
     static const dh_cart_limits_q LIM = { 250 << 16, 2000 << 16, 45 << 16, 360 << 16 };
     static const dh_cart_jerk_q JK = { 8000 << 16, 3000 << 16 };
     dh_queue_q *const qu = &the_mem.qu;
+    dh_queue_item_q items[CAP]; /* on the stack: the micro:bit's .data + .bss has no room for it */
     double qa[DH_MAX_JOINTS], qb[DH_MAX_JOINTS], qc[DH_MAX_JOINTS];
     int32_t ia[DH_MAX_JOINTS], ib[DH_MAX_JOINTS], ic[DH_MAX_JOINTS], v[6], a[6], j[6], q[DH_MAX_JOINTS];
     dh_frame_q B, C;
@@ -408,7 +408,7 @@ static void run_queue(dhsm_rig *g, long kstop, long rest, long *stats)
     wa = 1 + wa / dec;
     wj = 1 + wj / dec;
     DHT_TRUE(3 * wj < RING);
-    DHT_EQ_INT(dh_queue_init_q(qu, the_items, CAP), DH_OK);
+    DHT_EQ_INT(dh_queue_init_q(qu, items, CAP), DH_OK);
     DHT_EQ_INT(dh_track_init_q(&the_trk, &g->r, &g->m, ia, DT_US), DH_OK);
     memcpy(q, ia, sizeof q);
     for (k = 0; k < 200000 && done < 3; k++) {
@@ -478,6 +478,7 @@ static void queue_jerk_stop_q(void)
 static void jerk_q_errors(void)
 {
     dhsm_rig *const g = &the_rig;
+    dh_queue_item_q items[1]; /* on the stack, as run_queue's */
     dh_path_q p, zero;
     dh_qpos via[3];
     int32_t ia[DH_MAX_JOINTS], v[6], a[6], j[6];
@@ -531,7 +532,7 @@ static void jerk_q_errors(void)
     DHT_EQ_INT(dh_move_path_jerk_q(&the_mem.mv, &p, &lim, NULL), DH_OK);
     DHT_EQ_INT((int)the_mem.mv.prof[0].kind, (int)DH_PROFILE_TRAP);
     /* the queue */
-    DHT_EQ_INT(dh_queue_init_q(&the_mem.qu, the_items, 1u), DH_OK);
+    DHT_EQ_INT(dh_queue_init_q(&the_mem.qu, items, 1u), DH_OK);
     DHT_EQ_INT(dh_queue_add_path_jerk_q(&the_mem.qu, &p, &lim, &jk), DH_ERR_ARG);
     DHT_EQ_INT(the_mem.qu.count, 0u);
     jk.wjmax = 5000 << 16;
