@@ -556,39 +556,34 @@ static void queueq_done(dh_queue_q *qu)
     if (qu->phase == (uint32_t)DH_QUEUE_BRAKE) qu->phase = (uint32_t)DH_QUEUE_STOPPED;
 }
 
-dh_status dh_queue_advance_q(dh_queue_q *qu, dh_track_state state, dh_queue_report_q *rep)
+/* What the running move is this period (queueq_advance_end) */
+enum { QUEUEQ_IDLE = 0, QUEUEQ_OVERLAP = 1, QUEUEQ_PATH = 2, QUEUEQ_JOINT = 3 };
+
+/* The period's end after the path move's advance, if any (mode
+ * QUEUEQ_PATH: dh_move_advance_q has run unless stopped): the report, the
+ * overlap's tick and hand-over, the move's completion and the brake's
+ * rest. Called last by dh_queue_advance_q, apart from the path move's
+ * advance, so that the deepest call of a period has the public call's
+ * small frame above it. */
+static DH_NOINLINE void queueq_advance_end(dh_queue_q *qu, dh_track_state state, dh_queue_report_q *rep, uint32_t c0,
+                                           int mode)
 {
-    dh_move_q *mv;
-    uint32_t c0;
-    dh_q30 feed = DH_Q30_ONE;
-    int done = 0, held = 1, over = 0;
-    DH_ASSERT(qu != NULL && rep != NULL);
-    if (qu->pend == 0u) return DH_ERR_ARG;
-    if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
-    mv = &qu->mv;
-    c0 = mv->clock;
-    if (qu->started != 0u && mv->kind == (uint32_t)DH_MOVE_PATH && qu->bl != 0u && queueq_blend_hold(qu, c0)) {
+    dh_move_q *const mv = &qu->mv;
+    const int stopped = qu->phase == (uint32_t)DH_QUEUE_STOPPED;
+    dh_q30 feed = mv->feed;
+    int done = 0, held = state != DH_TRACK_OK || stopped, over = 0;
+    if (mode == QUEUEQ_OVERLAP) {
         /* in an overlap: r holds (stopped: the clock too) */
-        if (qu->phase != (uint32_t)DH_QUEUE_STOPPED) over = queueq_blend_tick(qu);
-        held = state != DH_TRACK_OK || qu->phase == (uint32_t)DH_QUEUE_STOPPED;
-        feed = mv->feed;
-    } else if (qu->started != 0u && mv->kind == (uint32_t)DH_MOVE_PATH) {
-        if (qu->phase != (uint32_t)DH_QUEUE_STOPPED) {
-            /* braking: the feed override falls as if the tracker lagged,
-             * but at the end (s' = 0) the tracker's state decides done */
-            const int brake = qu->phase == (uint32_t)DH_QUEUE_BRAKE && mv->clock < mv->dur;
-            const dh_status st = dh_move_advance_q(mv, qu->dt, brake ? DH_TRACK_LAGGING : state, &qu->mrep);
-            if (st != DH_OK) return st;
-            done = qu->mrep.done;
-        }
-        held = state != DH_TRACK_OK || qu->phase == (uint32_t)DH_QUEUE_STOPPED;
-        feed = mv->feed;
-    } else if (qu->started != 0u) {
+        if (!stopped) over = queueq_blend_tick(qu);
+    } else if (mode == QUEUEQ_PATH) {
+        if (!stopped) done = qu->mrep.done;
+    } else if (mode == QUEUEQ_JOINT) {
         done = mv->clock >= mv->dur;
-        held = qu->phase == (uint32_t)DH_QUEUE_STOPPED;
+        held = stopped;
         feed = qu->r;
     } else {
         held = 1;   /* nothing running: the command at rest */
+        feed = DH_Q30_ONE;
     }
     qu->pend = 0u;
     rep->feed = feed;
@@ -602,6 +597,37 @@ dh_status dh_queue_advance_q(dh_queue_q *qu, dh_track_state state, dh_queue_repo
     rep->done = done | over;
     rep->last = qu->count == 0u;
     rep->stopped = qu->phase == (uint32_t)DH_QUEUE_STOPPED;
+}
+
+/* the running move's mode this period, its clock at c0 */
+static DH_NOINLINE int queueq_mode(const dh_queue_q *qu, uint32_t c0)
+{
+    int mode = QUEUEQ_IDLE;
+    if (qu->started != 0u && qu->mv.kind == (uint32_t)DH_MOVE_PATH) {
+        mode = (qu->bl != 0u && queueq_blend_hold(qu, c0)) ? QUEUEQ_OVERLAP : QUEUEQ_PATH;
+    } else if (qu->started != 0u) {
+        mode = QUEUEQ_JOINT;
+    }
+    return mode;
+}
+
+dh_status dh_queue_advance_q(dh_queue_q *qu, dh_track_state state, dh_queue_report_q *rep)
+{
+    uint32_t c0;
+    int mode;
+    DH_ASSERT(qu != NULL && rep != NULL);
+    if (qu->pend == 0u) return DH_ERR_ARG;
+    if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
+    c0 = qu->mv.clock;
+    mode = queueq_mode(qu, c0);
+    if (mode == QUEUEQ_PATH && qu->phase != (uint32_t)DH_QUEUE_STOPPED) {
+        /* braking: the feed override falls as if the tracker lagged, but
+         * at the end (s' = 0) the tracker's state decides done */
+        const int brake = qu->phase == (uint32_t)DH_QUEUE_BRAKE && qu->mv.clock < qu->mv.dur;
+        const dh_status st = dh_move_advance_q(&qu->mv, qu->dt, brake ? DH_TRACK_LAGGING : state, &qu->mrep);
+        if (st != DH_OK) return st;
+    }
+    queueq_advance_end(qu, state, rep, c0, mode);
     return DH_OK;
 }
 
