@@ -603,10 +603,11 @@ static DH_NOINLINE void queueq_advance_end(dh_queue_q *qu, dh_track_state state,
 static DH_NOINLINE int queueq_mode(const dh_queue_q *qu, uint32_t c0)
 {
     int mode = QUEUEQ_IDLE;
-    if (qu->started != 0u && qu->mv.kind == (uint32_t)DH_MOVE_PATH) {
-        mode = (qu->bl != 0u && queueq_blend_hold(qu, c0)) ? QUEUEQ_OVERLAP : QUEUEQ_PATH;
-    } else if (qu->started != 0u) {
+    if (qu->started != 0u) {
         mode = QUEUEQ_JOINT;
+        if (qu->mv.kind == (uint32_t)DH_MOVE_PATH) {
+            mode = (qu->bl != 0u && queueq_blend_hold(qu, c0)) ? QUEUEQ_OVERLAP : QUEUEQ_PATH;
+        }
     }
     return mode;
 }
