@@ -277,7 +277,7 @@ static uint32_t bt_rigid(dh_mat4_f32 *T, float reach)
     return st;
 }
 
-static uint32_t bt_inputs(void)
+static BT_NOINLINE uint32_t bt_inputs(void)
 {
     uint32_t st = 0u, k, j;
     dh_mat4_f32 T;
@@ -544,7 +544,7 @@ static dh_vec3_f32 bt_v3;
 static dh_dir3_q bt_dq;
 static dh_mat3_f32 bt_R3out;
 
-static uint32_t bt_inputs_kinq(void)
+static BT_NOINLINE uint32_t bt_inputs_kinq(void)
 {
     uint32_t st = 0u, k, c, r;
     for (k = 0; k < BT_NSET; k++) {
@@ -733,7 +733,7 @@ static union {
                 dh_path_q lines[2];
                 dh_blend_seg_q seg[2];
             } b;
-            dh_queue_item_q qit[1];   /* bt_queue_q's item (its queue in bt_puma_m_u) */
+            dh_queue_item_q qit[2];   /* bt_queue_q's items (its queue in bt_puma_m_u) */
         } u;
 #if BT_IKC_FLOAT
         dh_ikc_model_f32 mf;
@@ -742,6 +742,8 @@ static union {
         float J[36];
         dh_move_f32 mv;
         dh_path_f32 path;
+        dh_queue_f32 qu;              /* bt_queue_f32's queue and items */
+        dh_queue_item_f32 qit[2];
 #endif
     } t;
 #if BT_IKC_FLOAT
@@ -759,7 +761,7 @@ static union {
 } bt_mem;
 #define bt_ik_work bt_mem.ik_work
 
-static void bt_ik(void)
+static BT_NOINLINE void bt_ik(void)
 {
     dh_ik_params_f32 p;
     dh_ik_result_f32 res;
@@ -849,7 +851,7 @@ static BT_NOINLINE void bt_ik_q(void)
 /* Targets: FK of random configurations within the limits (untimed). The
  * loop of BT_NIKC solves is timed as a whole; the same loop with the call
  * left out gives the loop's own count. */
-static void bt_ikc(void)
+static BT_NOINLINE void bt_ikc(void)
 {
     dh_ikc_model_q *const mq = &bt_mem.c.mq;
     dh_frame_q *const Tq = bt_mem.c.Tq;
@@ -966,7 +968,7 @@ static int bt_puma_away(const float *q)
 /* dh_ikc_f32 on the UR5 and the Puma 560, each exact and calibrated, the
  * targets FK of the same random configurations on each robot (untimed),
  * as bt_ikc; the Puma 560's redrawn until bt_puma_away. */
-static void bt_ikc_cal(void)
+static BT_NOINLINE void bt_ikc_cal(void)
 {
     static const char *const name[4] = { "UR5", "UR5 calibrated", "Puma 560", "Puma 560 calibrated" };
     dh_ikc_model_f32 *const mf = &bt_mem.c.mf;
@@ -1120,7 +1122,7 @@ static void bt_opw_match(uint32_t nsol, uint32_t *kept_all, uint32_t *count_bad,
  * on the same KR6 targets (FK of random configurations within the limits,
  * untimed); each loop of BT_NOPW solves timed as a whole, minus the same
  * loop without the call. */
-static void bt_opw(void)
+static BT_NOINLINE void bt_opw(void)
 {
     uint32_t k, j, nsol, total, st = 0u, nopw, kept = 0u, count_bad = 0u, unmatched = 0u;
     uint64_t t0, t1, tl;
@@ -1211,7 +1213,7 @@ static void bt_opw(void)
 static float bt_dls_lam, bt_dls_max[6], bt_dls_dq[6];
 static int32_t bt_dls_maxq[6], bt_dls_dqq[6];
 
-static uint32_t bt_inputs_dls(void)
+static BT_NOINLINE uint32_t bt_inputs_dls(void)
 {
     uint32_t st = 0u, k, j;
     dh_mat4_f32 T;
@@ -1428,8 +1430,11 @@ static BT_NOINLINE void bt_track_f32(const bt_move *mv, dh_robot *r, const bt_ac
  * dh_track_step_f32 on that frame, dh_move_advance_f32 with the tracker's
  * state, timed together. Beside it, untimed for the period, the
  * closed-form solve of the same frame with the tracker's configuration as
- * q_ref (the limit's reference). */
-static BT_NOINLINE void bt_period_f32(const bt_move *mv, dh_robot *r)
+ * q_ref (the limit's reference). jerk NULL: the trapezoid of
+ * dh_move_path_f32 ("move period f32", "dh_ikc_f32 line"); else the
+ * seven-phase move of dh_move_path_jerk_f32 within jerk ("jerk period
+ * f32", "dh_ikc_f32 jerk line"). */
+static BT_NOINLINE void bt_period_f32(const bt_move *mv, dh_robot *r, const dh_cart_jerk_f32 *jerk)
 {
     dh_track_f32 *const t = &bt_mem.t.tf;
     dh_move_f32 *const m = &bt_mem.t.mv;
@@ -1450,7 +1455,7 @@ static BT_NOINLINE void bt_period_f32(const bt_move *mv, dh_robot *r)
     }
     st |= (uint32_t)dh_fk_f32(r, q, &B);
     st |= (uint32_t)dh_path_line_f32(&bt_mem.t.path, &A, &B);
-    st |= (uint32_t)dh_move_path_f32(m, &bt_mem.t.path, &lim);
+    st |= (uint32_t)dh_move_path_jerk_f32(m, &bt_mem.t.path, &lim, jerk);
     st |= (uint32_t)dh_track_init_f32(t, r, &bt_mem.t.mf, mv->qa, 1e-3f);
     mrep.done = 0;
     while (st == 0u && mrep.done == 0 && n < 4u * BT_NTRK) {
@@ -1477,40 +1482,47 @@ static BT_NOINLINE void bt_period_f32(const bt_move *mv, dh_robot *r)
         t1 = bt_now();
         bt_acc_add(&nul, t0, t1);
     }
-    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|%lu|%lu|%lu|%lu\n", "move period f32", mv->robot, "m",
+    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|%lu|%lu|%lu|%lu\n",
+           (jerk == NULL) ? "move period f32" : "jerk period f32", mv->robot, "m",
            (unsigned long)n, (unsigned long long)aper.sum, (unsigned long long)nul.sum,
            (unsigned long long)aper.max, (unsigned long)states[0], (unsigned long)states[1],
            (unsigned long)states[2], (unsigned long)st);
-    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|0|0|0|%lu\n", "dh_ikc_f32 line", mv->robot, "m",
+    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|0|0|0|%lu\n",
+           (jerk == NULL) ? "dh_ikc_f32 line" : "dh_ikc_f32 jerk line", mv->robot, "m",
            (unsigned long)n, (unsigned long long)aik.sum, (unsigned long long)nul.sum,
            (unsigned long long)aik.max, (unsigned long)st);
 }
 #endif
+
+/* q = qa + f dq of mv (Q16.16 deg) and F = its FK on r; the status */
+static uint32_t bt_fk_at_q(const bt_move *mv, const dh_robot *r, float f, dh_frame_q *F, int32_t *q)
+{
+    uint32_t j;
+    for (j = 0; j < 6u; j++) {
+        q[j] = bt_to_q16(mv->qa[j] + f * mv->dq[j]);
+    }
+    return (uint32_t)dh_fk_q(r, q, F);
+}
 
 /* the fixed robot of mv in mm and its closed-form model, the line's ends
  * A = FK(qa) and B = FK(qa + dq / 2), and q = qa (the tracker's start);
  * the statuses or'ed */
 static uint32_t bt_line_q(const bt_move *mv, dh_robot *r, dh_frame_q *A, dh_frame_q *B, int32_t *q)
 {
-    uint32_t st, j;
+    uint32_t st;
     st = bt_move_robot(mv, r, 1000.0f);
     st |= (uint32_t)dh_ikc_analyse_q(r, &bt_mem.t.mq);
-    for (j = 0; j < 6u; j++) {
-        q[j] = bt_to_q16(mv->qa[j] + 0.5f * mv->dq[j]);
-    }
-    st |= (uint32_t)dh_fk_q(r, q, B);
-    for (j = 0; j < 6u; j++) {
-        q[j] = bt_to_q16(mv->qa[j]);
-    }
-    st |= (uint32_t)dh_fk_q(r, q, A);
+    st |= bt_fk_at_q(mv, r, 0.5f, B, q);
+    st |= bt_fk_at_q(mv, r, 0.0f, A, q);
     return st;
 }
 
 /* twin: bt_period_f32 on the fixed types and calls, the robot in mm
  * (0.25 m/s and 2 m/s^2 as 250 mm/s and 2000 mm/s^2): the period timed
- * whole, and within it the tracker call on its own ("dh_track_step_q
+ * whole ("move period q", jerk-limited "jerk period q"), and within it the
+ * tracker call on its own ("dh_track_step_q line", "dh_track_step_q jerk
  * line": the rest of the period is the move's target and advance) */
-static BT_NOINLINE void bt_period_q(const bt_move *mv, dh_robot *r)
+static BT_NOINLINE void bt_period_q(const bt_move *mv, dh_robot *r, const dh_cart_jerk_q *jerk)
 {
     dh_track_q *const t = &bt_mem.t.tq;
     dh_move_q *const m = &bt_mem.t.u.mvq;
@@ -1525,7 +1537,7 @@ static BT_NOINLINE void bt_period_q(const bt_move *mv, dh_robot *r)
     int32_t q[6];
     st = bt_line_q(mv, r, &A, &B, q);
     st |= (uint32_t)dh_path_line_q(&m->path, &A, &B);
-    st |= (uint32_t)dh_move_path_q(m, &m->path, &lim);
+    st |= (uint32_t)dh_move_path_jerk_q(m, &m->path, &lim, jerk);
     st |= (uint32_t)dh_track_init_q(t, r, &bt_mem.t.mq, q, 1000u);
     mrep.done = 0;
     while (st == 0u && mrep.done == 0 && n < 4u * BT_NTRK) {
@@ -1550,11 +1562,13 @@ static BT_NOINLINE void bt_period_q(const bt_move *mv, dh_robot *r)
         t1 = bt_now();
         bt_acc_add(&nul, t0, t1);
     }
-    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|%lu|%lu|%lu|%lu\n", "move period q", mv->robot, "mm",
+    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|%lu|%lu|%lu|%lu\n",
+           (jerk == NULL) ? "move period q" : "jerk period q", mv->robot, "mm",
            (unsigned long)n, (unsigned long long)aper.sum, (unsigned long long)nul.sum,
            (unsigned long long)aper.max, (unsigned long)states[0], (unsigned long)states[1],
            (unsigned long)states[2], (unsigned long)st);
-    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|0|0|0|%lu\n", "dh_track_step_q line", mv->robot, "mm",
+    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|0|0|0|%lu\n",
+           (jerk == NULL) ? "dh_track_step_q line" : "dh_track_step_q jerk line", mv->robot, "mm",
            (unsigned long)n, (unsigned long long)atr.sum, (unsigned long long)nul.sum,
            (unsigned long long)atr.max, (unsigned long)st);
 }
@@ -1574,25 +1588,17 @@ static BT_NOINLINE void bt_blend_q(const bt_move *mv, dh_robot *r)
     dh_blend_seq_q sq;
     bt_acc aper = { 0u, 0u }, nul = { 0u, 0u };
     uint32_t states[3] = { 0u, 0u, 0u };
-    uint32_t st, n = 0u, j, k, clock = 0u;
+    uint32_t st, n = 0u, j, clock = 0u;
     uint64_t t0, t1;
     int32_t q[6];
-    st = bt_move_robot(mv, r, 1000.0f);
-    st |= (uint32_t)dh_ikc_analyse_q(r, &bt_mem.t.mq);
-    /* FK(qa + dq) into T, FK(qa + dq / 2) into F: the second line; then
-     * FK(qa) into T: the first (q ends at qa, the tracker's start) */
-    for (k = 3u; k > 0u; k--) {
-        for (j = 0; j < 6u; j++) {
-            q[j] = bt_to_q16(mv->qa[j] + 0.5f * (float)(k - 1u) * mv->dq[j]);
-        }
-        st |= (uint32_t)dh_fk_q(r, q, (k == 2u) ? &F : &T);
-        if (k == 2u) {
-            st |= (uint32_t)dh_path_line_q(&bt_mem.t.u.b.lines[1], &F, &T);
-        }
-    }
+    /* the first line FK(qa) to FK(qa + dq / 2) (in T, F), the tracker at
+     * qa; the second to FK(qa + dq) (in T) */
+    st = bt_line_q(mv, r, &T, &F, q);
     st |= (uint32_t)dh_path_line_q(&bt_mem.t.u.b.lines[0], &T, &F);
-    st |= (uint32_t)dh_blend_seq_plan_q(&sq, bt_mem.t.u.b.seg, bt_mem.t.u.b.lines, 2u, radius, &lim);
     st |= (uint32_t)dh_track_init_q(t, r, &bt_mem.t.mq, q, 1000u);
+    st |= bt_fk_at_q(mv, r, 1.0f, &T, q);
+    st |= (uint32_t)dh_path_line_q(&bt_mem.t.u.b.lines[1], &F, &T);
+    st |= (uint32_t)dh_blend_seq_plan_q(&sq, bt_mem.t.u.b.seg, bt_mem.t.u.b.lines, 2u, radius, &lim);
     while (st == 0u && n < 16u * BT_NTRK && (clock < sq.T || n == 0u)) {
         clock = (sq.T - clock > 1000u) ? clock + 1000u : sq.T;
         t0 = bt_now();
@@ -1618,9 +1624,9 @@ static BT_NOINLINE void bt_blend_q(const bt_move *mv, dh_robot *r)
 }
 
 /* the "BT track" line of n periods timed in *a with the tracker's states
- * (robot in mm), the counter's own cost measured over as many intervals */
-static void bt_track_row(const char *name, const char *robot, uint32_t n, const bt_acc *a, const uint32_t states[3],
-                         uint32_t st)
+ * (robot in unit), the counter's own cost measured over as many intervals */
+static void bt_track_row(const char *name, const char *robot, const char *unit, uint32_t n, const bt_acc *a,
+                         const uint32_t states[3], uint32_t st)
 {
     bt_acc nul = { 0u, 0u };
     uint64_t t0, t1;
@@ -1630,17 +1636,21 @@ static void bt_track_row(const char *name, const char *robot, uint32_t n, const 
         t1 = bt_now();
         bt_acc_add(&nul, t0, t1);
     }
-    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|%lu|%lu|%lu|%lu\n", name, robot, "mm", (unsigned long)n,
+    printf("BT track|%s (%s, %s)|%lu|%llu|%llu|%llu|%lu|%lu|%lu|%lu\n", name, robot, unit, (unsigned long)n,
            (unsigned long long)a->sum, (unsigned long long)nul.sum, (unsigned long long)a->max,
            (unsigned long)states[0], (unsigned long)states[1], (unsigned long)states[2], (unsigned long)st);
 }
 
-/* bt_period_q's line through the fixed queue (dh_queue_q): a period is
- * dh_queue_target_q, dh_track_step_q on its frame and dh_queue_advance_q,
- * timed whole ("queue period q"); the queue is stopped at the 100th period
- * and resumed once at rest, so the periods of the brake and of the resume
- * (the feed override's bounds each period) are among those timed */
-static BT_NOINLINE void bt_queue_q(const bt_move *mv, dh_robot *r)
+/* twin: bt_queue_f32. bt_period_q's line through the fixed queue
+ * (dh_queue_q): a period is dh_queue_target_q, dh_track_step_q on its
+ * frame and dh_queue_advance_q, timed whole; the queue is stopped at the
+ * 100th period and resumed once at rest, so the periods of the brake and
+ * of the resume (the feed override's bounds each period) are among those
+ * timed. radius 0: the line alone ("queue period q"); else bt_blend_q's
+ * two lines appended by dh_queue_add_path_blend_q, their corner blended
+ * within radius ("queue blend period q"), so the overlap's periods are
+ * timed too. */
+static BT_NOINLINE void bt_queue_q(const bt_move *mv, dh_robot *r, dh_qpos radius)
 {
     dh_track_q *const t = &bt_mem.t.tq;
     dh_queue_q *const qu = &bt_puma_m_u.qu;
@@ -1655,12 +1665,21 @@ static BT_NOINLINE void bt_queue_q(const bt_move *mv, dh_robot *r)
     uint64_t t0, t1;
     int32_t q[6];
     st = bt_line_q(mv, r, &A, &B, q);
-    st |= (uint32_t)dh_queue_init_q(qu, bt_mem.t.u.qit, 1u);
-    st |= (uint32_t)dh_path_line_q(&qu->mv.path, &A, &B);
-    st |= (uint32_t)dh_queue_add_path_q(qu, &qu->mv.path, &lim);
     st |= (uint32_t)dh_track_init_q(t, r, &bt_mem.t.mq, q, 1000u);
+    st |= (uint32_t)dh_queue_init_q(qu, bt_mem.t.u.qit, 2u);
+    /* each line built in the queue's move (copied when appended) */
+    st |= (uint32_t)dh_path_line_q(&qu->mv.path, &A, &B);
+    if (radius == 0) {
+        st |= (uint32_t)dh_queue_add_path_q(qu, &qu->mv.path, &lim);
+    } else {
+        st |= (uint32_t)dh_queue_add_path_blend_q(qu, &qu->mv.path, &lim, radius);
+        /* the second line B to FK(qa + dq) (in A) */
+        st |= bt_fk_at_q(mv, r, 1.0f, &A, q);
+        st |= (uint32_t)dh_path_line_q(&qu->mv.path, &B, &A);
+        st |= (uint32_t)dh_queue_add_path_blend_q(qu, &qu->mv.path, &lim, 0);
+    }
     qrep.last = 0;
-    while (st == 0u && qrep.last == 0 && n < 4u * BT_NTRK) {
+    while (st == 0u && qrep.last == 0 && n < 16u * BT_NTRK) {
         if (n == 100u) {
             st |= (uint32_t)dh_queue_stop_q(qu);
         }
@@ -1680,17 +1699,98 @@ static BT_NOINLINE void bt_queue_q(const bt_move *mv, dh_robot *r)
         n++;
     }
     if (qrep.last == 0) {
-        st |= 0x100u;   /* the queue did not finish within 4 x BT_NTRK periods */
+        st |= 0x100u;   /* the queue did not finish within 16 x BT_NTRK periods */
     }
-    bt_track_row("queue period q", mv->robot, n, &aper, states, st);
+    bt_track_row((radius == 0) ? "queue period q" : "queue blend period q", mv->robot, "mm", n, &aper, states, st);
 }
+
+#if BT_IKC_FLOAT
+/* twin: bt_queue_q on the float types and calls (the robot in metres),
+ * its two lines blended within radius: a period (dh_queue_target_f32,
+ * dh_track_step_f32 on its frame, dh_queue_advance_f32) timed whole
+ * ("queue blend period f32"), stopped at the 100th period and resumed at
+ * rest; after each period, untimed for it, the closed-form solve of its
+ * frame with the tracker's configuration before the period as q_ref
+ * ("dh_ikc_f32 queue blend", the limit's reference) */
+static BT_NOINLINE void bt_queue_f32(const bt_move *mv, dh_robot *r, float radius)
+{
+    dh_track_f32 *const t = &bt_mem.t.tf;
+    dh_queue_f32 *const qu = &bt_mem.t.qu;
+    const dh_cart_limits_f32 lim = { 0.25f, 2.0f, 90.0f, 360.0f };
+    dh_track_report_f32 rep;
+    dh_queue_report_f32 qrep;
+    dh_queue_cmd_f32 cmd;
+    dh_mat4_f32 A, B;
+    bt_acc aik = { 0u, 0u }, aper = { 0u, 0u };
+    uint32_t states[3] = { 0u, 0u, 0u }, none[3] = { 0u, 0u, 0u };
+    uint32_t st, n = 0u, ns, j;
+    uint64_t t0, t1;
+    float q[6], qref[6];
+    st = bt_move_robot(mv, r, 1.0f);
+    st |= (uint32_t)dh_ikc_analyse_f32(r, &bt_mem.t.mf);
+    st |= (uint32_t)dh_track_init_f32(t, r, &bt_mem.t.mf, mv->qa, 1e-3f);
+    st |= (uint32_t)dh_queue_init_f32(qu, bt_mem.t.qit, 2u);
+    /* FK(qa) to FK(qa + dq / 2), blended into FK(qa + dq / 2) to
+     * FK(qa + dq); each line built in the queue's move (copied when
+     * appended) */
+    st |= (uint32_t)dh_fk_f32(r, mv->qa, &A);
+    for (j = 0; j < 6u; j++) {
+        q[j] = mv->qa[j] + 0.5f * mv->dq[j];
+    }
+    st |= (uint32_t)dh_fk_f32(r, q, &B);
+    st |= (uint32_t)dh_path_line_f32(&qu->mv.path, &A, &B);
+    st |= (uint32_t)dh_queue_add_path_blend_f32(qu, &qu->mv.path, &lim, radius);
+    for (j = 0; j < 6u; j++) {
+        q[j] = mv->qa[j] + mv->dq[j];
+    }
+    st |= (uint32_t)dh_fk_f32(r, q, &A);
+    st |= (uint32_t)dh_path_line_f32(&qu->mv.path, &B, &A);
+    st |= (uint32_t)dh_queue_add_path_blend_f32(qu, &qu->mv.path, &lim, 0.0f);
+    qrep.last = 0;
+    while (st == 0u && qrep.last == 0 && n < 16u * BT_NTRK) {
+        if (n == 100u) {
+            st |= (uint32_t)dh_queue_stop_f32(qu);
+        }
+        if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) {
+            st |= (uint32_t)dh_queue_resume_f32(qu);
+        }
+        for (j = 0; j < 6u; j++) {
+            qref[j] = t->q[j];
+        }
+        t0 = bt_now();
+        st |= (uint32_t)dh_queue_target_f32(qu, t, 1e-3f, &cmd);
+        rep.state = DH_TRACK_OK;
+        if (cmd.kind == (uint32_t)DH_MOVE_PATH) {
+            st |= (uint32_t)dh_track_step_f32(t, &cmd.T, q, &rep);
+        }
+        st |= (uint32_t)dh_queue_advance_f32(qu, rep.state, &qrep);
+        t1 = bt_now();
+        bt_acc_add(&aper, t0, t1);
+        t0 = bt_now();
+        st |= (uint32_t)dh_ikc_f32(&bt_mem.t.mf, &cmd.T, qref, 0u, bt_mem.t.solf, &ns);
+        t1 = bt_now();
+        bt_acc_add(&aik, t0, t1);
+        states[rep.state]++;
+        n++;
+    }
+    if (qrep.last == 0) {
+        st |= 0x100u;   /* the queue did not finish within 16 x BT_NTRK periods */
+    }
+    bt_track_row("queue blend period f32", mv->robot, "m", n, &aper, states, st);
+    bt_track_row("dh_ikc_f32 queue blend", mv->robot, "m", n, &aik, none, st);
+}
+#endif
 
 /* Runs after the sanity checks: the micro:bit's RAM has no room for more
  * robots, so each move's robot is built in the storage of bt_puma_m (float,
  * metres) and bt_puma_mm (fixed, mm), which nothing uses afterwards. A
  * status other than DH_OK is printed on the line (report.py fails on it). */
-static void bt_track(void)
+static BT_NOINLINE void bt_track(void)
 {
+#if BT_IKC_FLOAT
+    static const dh_cart_jerk_f32 jerk_f = { 20.0f, 3600.0f };   /* 20 m/s^3, 3600 deg/s^3 */
+#endif
+    static const dh_cart_jerk_q jerk_q = { 20000 << 16, 3600 << 16 };
     bt_acc null = { 0u, 0u };
     uint64_t t0, t1;
     uint32_t m, k;
@@ -1703,12 +1803,16 @@ static void bt_track(void)
     for (m = 0; m < 2u; m++) {
 #if BT_IKC_FLOAT
         bt_track_f32(&bt_moves[m], &bt_puma_m, &null);
-        bt_period_f32(&bt_moves[m], &bt_puma_m);
+        bt_period_f32(&bt_moves[m], &bt_puma_m, NULL);
+        bt_period_f32(&bt_moves[m], &bt_puma_m, &jerk_f);
+        bt_queue_f32(&bt_moves[m], &bt_puma_m, 0.02f);
 #endif
         bt_track_q(&bt_moves[m], &bt_puma_mm, &null);
-        bt_period_q(&bt_moves[m], &bt_puma_mm);
+        bt_period_q(&bt_moves[m], &bt_puma_mm, NULL);
+        bt_period_q(&bt_moves[m], &bt_puma_mm, &jerk_q);
         bt_blend_q(&bt_moves[m], &bt_puma_mm);
-        bt_queue_q(&bt_moves[m], &bt_puma_mm);
+        bt_queue_q(&bt_moves[m], &bt_puma_mm, 0);
+        bt_queue_q(&bt_moves[m], &bt_puma_mm, 20 << 16);
     }
 }
 
@@ -1720,7 +1824,7 @@ static int bt_check(const char *name, int ok)
     return ok ? 0 : 1;
 }
 
-static int bt_checks(void)
+static BT_NOINLINE int bt_checks(void)
 {
     int fail = 0;
     float s, c, d;
@@ -1772,6 +1876,12 @@ static uint32_t bt_stack_used(void)
     return (uint32_t)((uintptr_t)__stack_top__ - (uintptr_t)p);
 }
 
+/* Every section main calls is a function of its own (BT_NOINLINE): inlined,
+ * their locals would all be in main's frame, which stays on the stack under
+ * every later section. The deepest chain is then main, bt_track, a move's
+ * section (its frames, reports and commands) and newlib's printf of its
+ * line; the library calls within a section stay within 256 B each
+ * (tools/check_guards.sh). */
 int main(void)
 {
     bt_op *const ops = bt_mem.cglm_ops;

@@ -54,6 +54,20 @@ TRACK_TARGETS = [
     ("m0", "queue period q (UR5, mm)", 45000, "period of a queued line, stopped and resumed, fixed, UR5, Cortex-M0"),
     ("m0", "queue period q (Puma 560, mm)", 45000,
      "period of a queued line, stopped and resumed, fixed, Puma 560, Cortex-M0"),
+    ("m4f", "jerk period f32 (UR5, m)", ("dh_ikc_f32 jerk line (UR5, m)", PERIOD_MARGIN),
+     "period of a jerk-limited line move, float, UR5, Cortex-M4F"),
+    ("m4f", "jerk period f32 (Puma 560, m)", ("dh_ikc_f32 jerk line (Puma 560, m)", PERIOD_MARGIN),
+     "period of a jerk-limited line move, float, Puma 560, Cortex-M4F"),
+    ("m0", "jerk period q (UR5, mm)", 45000, "period of a jerk-limited line move, fixed, UR5, Cortex-M0"),
+    ("m0", "jerk period q (Puma 560, mm)", 45000, "period of a jerk-limited line move, fixed, Puma 560, Cortex-M0"),
+    ("m4f", "queue blend period f32 (UR5, m)", ("dh_ikc_f32 queue blend (UR5, m)", PERIOD_MARGIN),
+     "period of two queued lines with a blended corner, stopped and resumed, float, UR5, Cortex-M4F"),
+    ("m4f", "queue blend period f32 (Puma 560, m)", ("dh_ikc_f32 queue blend (Puma 560, m)", PERIOD_MARGIN),
+     "period of two queued lines with a blended corner, stopped and resumed, float, Puma 560, Cortex-M4F"),
+    ("m0", "queue blend period q (UR5, mm)", 45000,
+     "period of two queued lines with a blended corner, stopped and resumed, fixed, UR5, Cortex-M0"),
+    ("m0", "queue blend period q (Puma 560, mm)", 45000,
+     "period of two queued lines with a blended corner, stopped and resumed, fixed, Puma 560, Cortex-M0"),
 ]
 
 # dhmath operation -> peer operation
@@ -516,7 +530,17 @@ def main():
       "solve of the period's frame (`dh_ikc_f32 line`). Its fixed twin on every core "
       "(`dh_move_path_q`, the robots in mm: 250 mm/s, 2000 mm/s^2), each period timed whole "
       "(`dh_move_target_q`, `dh_track_step_q`, `dh_move_advance_q`) and its tracker call on its "
-      "own in the same periods (`dh_track_step_q line`).")
+      "own in the same periods (`dh_track_step_q line`). The jerk-limited periods: the same line "
+      "as a seven-phase move within 20 m/s^3 (20,000 mm/s^3) and 3,600 deg/s^3 "
+      "(`dh_move_path_jerk_f32`, `dh_move_path_jerk_q`), the same calls per period "
+      "(`dh_ikc_f32 jerk line`, `dh_track_step_q jerk line` beside them). The queue periods "
+      "(`dh_queue_target_*`, the tracker call on its frame, `dh_queue_advance_*`, timed whole; "
+      "the queue stopped at the 100th period and resumed at rest, so the brake's and the resume's "
+      "periods are among them): the fixed line alone (`queue period q`), and that line followed by "
+      "a second one to the FK of the tracking move's end, appended by `dh_queue_add_path_blend_*` "
+      "with their corner blended within 20 mm (`queue blend period`), beside the closed-form "
+      "solve of each period's frame with the tracker's configuration before the period as q_ref "
+      "(`dh_ikc_f32 queue blend`, after the period, untimed for it).")
     w("")
     w("| goal | limit | -O2 | -Os | -Os DH_SMALL | met at -O2 (mean) | met at -O2 (largest call) |")
     w("|---|---|---:|---:|---:|---|---|")
@@ -546,10 +570,9 @@ def main():
                                                  if isinstance(ref, tuple) and lim is not None else fmt(t[1])))
         t2 = track_get(c, "O2", name)
         lim_txt = ("`%s` + %d" % (ref[0].split()[0], ref[1])) if isinstance(ref, tuple) else "%d" % ref
+        kind, ty = ("queue" if name.startswith("queue ") else "move"), ("f32" if " f32 " in name else "q")
         code = (name.split()[0] if name.startswith("dh_")
-                else "dh_move_target_f32` + `dh_track_step_f32` + `dh_move_advance_f32" if " f32 " in name
-                else "dh_queue_target_q` + `dh_track_step_q` + `dh_queue_advance_q" if name.startswith("queue ")
-                else "dh_move_target_q` + `dh_track_step_q` + `dh_move_advance_q")
+                else "dh_%s_target_%s` + `dh_track_step_%s` + `dh_%s_advance_%s" % (kind, ty, ty, kind, ty))
         w("| %s (`%s`) | %s | %s | %s | %s |" % (label, code, lim_txt, " | ".join(cells),
                                                 verdict(None if t2 is None else t2[1], lim2),
                                                 verdict(None if t2 is None else t2[2], lim2)))
@@ -565,7 +588,8 @@ def main():
     for c, o in cols:
         r = runs["%s-%s" % (c, o)]
         for name, (n, mean, mx, ok, lag, unr) in r.track.items():
-            st = ("%d / %d / %d" % (ok, lag, unr) if name.startswith(("dh_track", "move period")) and " line (" not in name
+            st = ("%d / %d / %d" % (ok, lag, unr) if name.startswith(("dh_track", "move period", "jerk period",
+                                                                     "blend period", "queue")) and " line (" not in name
                   else "")
             w("| %s -%s | `%s` | %d | %.0f | %.0f | %s |" % (core_name[c], o, name, n, mean, mx, st))
     w("")
