@@ -53,6 +53,10 @@ extern __attribute__((aligned(16))) dh_mat4_f32 bt_A[BT_NSET];
 extern __attribute__((aligned(16))) dh_mat4_f32 bt_B[BT_NSET];
 extern __attribute__((aligned(16))) dh_mat4_f32 bt_out;
 extern dh_vec3_f32 bt_pts[BT_NSET];
+/* Operands of the in-place rigid inverses (dhmath's, then cglm's: one
+ * array for both, the micro:bit's RAM): T, T^-1, T, ..., rigid at every
+ * step; each library's rows start from the inputs bt_A. */
+extern __attribute__((aligned(16))) dh_mat4_f32 bt_M[BT_NSET];
 extern dh_vec3_f32 bt_vout;
 extern volatile uint32_t bt_sink;
 
@@ -63,7 +67,8 @@ extern volatile uint32_t bt_sink;
 /**
  * cglm peer operations (bench_cglm.c). Writes at most max entries to ops
  * and returns their number; 0 when the firmware was built without cglm.
- * bt_cglm_setup() is called once after the inputs exist.
+ * bt_cglm_setup() is called before the cglm operations are measured (it
+ * resets bt_M to the inputs).
  */
 uint32_t bt_cglm_ops(bt_op *ops, uint32_t max);
 void bt_cglm_setup(void);
