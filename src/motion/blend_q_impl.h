@@ -13,12 +13,12 @@
 #include "dhmath/motion.h"
 
 /* The overlap tb (us) of the corner between the lines p1 and p2 (p2->A
- * equal to p1->B, both holding paths of kind LINE, lengths and angles
- * >= 0; lim's fields > 0) within the radius R >= 0 that g[0].dev holds
- * on the call (a field, not an argument: the 256 B guard): each tail at
- * b = (63/128) a of its line, tb the least of the four bounds of the
- * file comment of dh_blend_q.c, 0 (at rest) when R is 0, a line has no
- * motion, the corner lies within R + 4 LSB of the int32 range or the
+ * equal to p1->B, both holding paths, lines or arcs of radius > 0,
+ * lengths and angles >= 0; lim's fields > 0) within the radius R >= 0
+ * that g[0].dev holds on the call (a field, not an argument: the 256 B
+ * guard): each tail at b = (63/128) a of its line, tb the least of the bounds of the file comment of dh_blend_q.c
+ * (four, and one per arc), 0 (at rest) when R is 0, a line has no
+ * motion, the corner lies within R + 64 LSB of the int32 range or the
  * blend does not shorten the pair, into g[0].dur[4] and g[1].dur[0];
  * and g[0].dev = (L1 b1 + 2 L2 b2) tb^2 / 2 rounded up (<= R; 0 for tb
  * 0): the bound on the tool point's distance from the corner in the
@@ -27,9 +27,11 @@
  * unspecified after; their other durations are untouched. */
 void dh_blend_corner_q_(const dh_path_q *p1, const dh_path_q *p2, const dh_cart_limits_q *lim, dh_blend_seg_q *g);
 
-/* The rates of s along the line p within lim (lim's fields > 0),
- * V = min(vmax / L, wmax / th) and a = min(amax / L, wdmax / th), both
- * lowered by 2^-10, and its tails' accelerations (63/128) a, into g's
+/* The rates of s along the line or arc p within lim (lim's fields > 0),
+ * V = min(Vt / L, wmax / th) and a = min(At / L, wdmax / th), both
+ * lowered by 2^-10 (Vt, At: vmax, amax on a line; on an arc
+ * dh_path_move_q's Vt and half its At), and its tails' accelerations
+ * (63/128) a, into g's
  * planning state (fields of g that dh_blend_line_q_ writes last); all 0
  * when p has no length and no angle. */
 void dh_blend_rates_q_(const dh_path_q *p, const dh_cart_limits_q *lim, dh_blend_seg_q *g);

@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * dh_blend_q.c - a fixed-point sequence of line moves blended at their
- * corners by superposition, the twin of dh_blend.c's sequences. Integer
- * only: no float, no 64-bit division (bit-serial quotients).
+ * dh_blend_q.c - a fixed-point sequence of line and arc moves blended at
+ * their corners by superposition, the twin of dh_blend.c's sequences.
+ * Integer only: no float, no 64-bit division (bit-serial quotients).
+ * ("Line" below is either; an arc is named where it differs.)
  *
  * Planning (once per sequence) in a small normalised integer format
  * m 2^e (m a 32-bit mantissa in [2^31, 2^32), e an int32), every
@@ -10,19 +11,28 @@
  * subtraction's relative error grows by the cancellation, at most 2^10
  * here: each difference is of a quantity and at most (1 - 2^-10) of it).
  * Notation of docs/design.md ("Blended corners", "Blended sequences"):
- * per line the bounds of s, V = min(vmax / L, wmax / th) and
- * a = min(amax / L, wdmax / th), both lowered by 2^-10 (the margin that
- * covers the planning's rounding). A corner's tails take
- * b_i = (63/128) a_i, so that L1 b1 + L2 b2 <= (63/64) amax and
- * th1 b1 + th2 b2 <= (63/64) wdmax for any signs (a brake in the
- * overlap included), and the overlap
+ * per line the bounds of s, V = min(Vt / L, wmax / th) and
+ * a = min(At / L, wdmax / th), both lowered by 2^-10 (the margin that
+ * covers the planning's rounding; Vt = vmax and At = amax on a line, on
+ * an arc of radius rho dh_path_move_q's Vt = min(vmax,
+ * sqrt(amax rho / sqrt 2)) and half its At, amax sqrt(1 - (Vt^2 /
+ * (amax rho))^2) / 2). A corner's tails take b_i = (63/128) a_i, so that
+ * L1 b1 + L2 b2 <= (63/64) amax ((189/256) amax with an arc) and
+ * th1 b1 + th2 b2 <= (63/64) wdmax for any signs (a brake in the overlap
+ * included), and the overlap
  * tb = (1 - 2^-10) min(V_i / b_i, sqrt((128/191) / b_i),
- *      sqrt(2 R / (L1 b1 + 2 L2 b2)), sqrt((180/pi) wdmax / (16 th1 b1 th2 b2)))
+ *      sqrt(2 R / (L1 b1 + 2 L2 b2)), sqrt((180/pi) wdmax / (16 th1 b1 th2 b2)),
+ *      sqrt(amax rho_i / 4) / (L_i b_i) for each arc i)
  * rounded down to whole microseconds: the tail starts below the cruise
  * speed, fits half its line (tb^2 b (1 + b / a) <= 1, b / a = 63/128),
  * keeps the tool point within R of the corner (also for a brake from
- * anywhere in the overlap), and the cross term of the two rotations
- * within wdmax / 64.
+ * anywhere in the overlap; a chord is at most its arc), the cross term
+ * of the two rotations within wdmax / 64, and an arc's centripetal
+ * acceleration in the overlap within amax / 4 (the sum of the two is
+ * convex in the time, so at most its larger end value): tangential and
+ * centripetal together within (253/256) amax. An arc alone keeps its
+ * tangential s'' L <= At / 2 and its centripetal acceleration within
+ * Vt^2 / rho, perpendicular to it: within amax, as dh_path_move_q's.
  *
  * A line's scaling is five phases of constant s'' with whole-microsecond
  * durations: the start tail (b0, tb0), the acceleration at a to v, the
@@ -230,6 +240,8 @@ DH_INLINE int32_t bq_q30(bq_f a)
 #define BQ_HALF BQ_C(2878302690u, -32)
 #define BQ_MARGIN BQ_C(0xFFC00000u, -32)
 #define BQ_RAD2DEG BQ_C(3845054675u, -14)
+/* 2^-1/2 (rounded down) */
+#define BQ_RSQRT2 BQ_C(0xB504F333u, -32)
 
 /* every phase lasts less than 2^28 us (268 s): a line's five sum below
  * 2^31 */
@@ -294,17 +306,42 @@ static bq_f bq_get(dh_blend_seg_q *g, unsigned i)
     return ((uint64_t)(uint32_t)w[0] << 32) | (uint32_t)w[1];
 }
 
-/* dh_blend_rates_q_ (blend_q_impl.h): V = min(vmax / L, wmax / th),
- * a = min(amax / L, wdmax / th) lowered by 2^-10, and the tails'
- * b = (63/128) a (states BQ_U0 and BQ_B1, as bq_tails reads them). Each
- * rate is a quotient of positive int32 (length and angle at least
- * 1 LSB), so within [2^-31, 2^31): always in the planning's range. */
+/* An arc's tool speed bound min(vmax, sqrt(amax rho / sqrt 2)) (LSB/s,
+ * rho its radius), dh_path_move_q's V */
+static DH_NOINLINE bq_f bq_arc_v(const dh_path_q *p, const dh_cart_limits_q *lim)
+{
+    const bq_f v = bq_sqrt(bq_mul(bq_mul(bq_u((uint32_t)lim->amax), bq_u((uint32_t)p->radius)), BQ_RSQRT2));
+    const bq_f vm = bq_u((uint32_t)lim->vmax);
+    return bq_lt(vm, v) ? vm : v;
+}
+
+/* An arc's tangential acceleration amax sqrt(1 - c^2) beside the
+ * centripetal c amax = v^2 / rho of its speed bound v (c <= 2^-1/2, so
+ * 1 - c^2 >= 1/2: no cancellation), dh_path_move_q's At */
+static DH_NOINLINE bq_f bq_arc_at(const dh_path_q *p, const dh_cart_limits_q *lim, bq_f v)
+{
+    const bq_f am = bq_u((uint32_t)lim->amax);
+    const bq_f c = bq_div(bq_mul(v, v), bq_mul(am, bq_u((uint32_t)p->radius)));
+    return bq_mul(am, bq_sqrt(bq_sub(BQ_ONE, bq_mul(c, c))));
+}
+
+/* dh_blend_rates_q_ (blend_q_impl.h): V = min(Vt / L, wmax / th),
+ * a = min(At / L, wdmax / th) lowered by 2^-10 (Vt = vmax and At = amax
+ * on a line; on an arc dh_path_move_q's Vt and half its At: bq_arc_v,
+ * bq_arc_at), and the tails' b = (63/128) a (states BQ_U0 and BQ_B1, as
+ * bq_tails reads them). Each rate is a quotient of a
+ * positive int32 (or an arc's Vt, At in [2^-1, 2^31)) by one (length and
+ * angle at least 1 LSB), so within [2^-32, 2^31): always in the
+ * planning's range. */
 DH_NOINLINE void dh_blend_rates_q_(const dh_path_q *p, const dh_cart_limits_q *lim, dh_blend_seg_q *g)
 {
+    const int arc = p->kind == (uint32_t)DH_PATH_ARC;
     bq_f v = BQ_ZERO, a = BQ_ZERO;
     if (p->length > 0) {
-        bq_min(&v, bq_div(bq_u((uint32_t)lim->vmax), bq_u((uint32_t)p->length)));
-        bq_min(&a, bq_div(bq_u((uint32_t)lim->amax), bq_u((uint32_t)p->length)));
+        const bq_f vt = arc ? bq_arc_v(p, lim) : bq_u((uint32_t)lim->vmax);
+        const bq_f at = arc ? bq_half(bq_arc_at(p, lim, vt)) : bq_u((uint32_t)lim->amax);
+        bq_min(&v, bq_div(vt, bq_u((uint32_t)p->length)));
+        bq_min(&a, bq_div(at, bq_u((uint32_t)p->length)));
     }
     if (p->angle > 0) {
         bq_min(&v, bq_div(bq_u((uint32_t)lim->wmax), bq_u((uint32_t)p->angle)));
@@ -323,6 +360,17 @@ DH_NOINLINE void dh_blend_rates_q_(const dh_path_q *p, const dh_cart_limits_q *l
 static void bq_min_sqrt(bq_f *tb, bq_f n, bq_f d)
 {
     if (bq_m(d) != 0u) bq_min(tb, bq_sqrt(bq_div(n, d)));
+}
+
+/* *tb = min(*tb, sqrt(amax rho / 4) / (L b)) for an arc p (radius rho,
+ * length L) with the tail b: its centripetal acceleration in the overlap,
+ * (L s')^2 / rho with s' <= b tb, within amax / 4 */
+static DH_NOINLINE void bq_arc_tb(bq_f *tb, const dh_path_q *p, bq_f b, const dh_cart_limits_q *lim)
+{
+    bq_f x;
+    if (p->kind != (uint32_t)DH_PATH_ARC) return;
+    x = bq_mul(bq_u((uint32_t)p->length), b);
+    bq_min_sqrt(tb, bq_half(bq_half(bq_mul(bq_u((uint32_t)lim->amax), bq_u((uint32_t)p->radius)))), bq_mul(x, x));
 }
 
 /* The overlap (us, rounded down) of the corner between lines p1 and p2
@@ -345,6 +393,8 @@ static DH_NOINLINE uint32_t bq_overlap(const dh_path_q *p1, const dh_path_q *p2,
     bq_min_sqrt(&tb, bq_u(2u * (uint32_t)R), x);
     x = bq_mul(bq_mul(bq_u((uint32_t)p1->angle), bq_get(g1, BQ_B1)), bq_mul(bq_u((uint32_t)p2->angle), bq_get(g2, BQ_U0)));
     bq_min_sqrt(&tb, bq_mul(bq_u((uint32_t)lim->wdmax), BQ_RAD2DEG), x);
+    bq_arc_tb(&tb, p1, bq_get(g1, BQ_B1), lim);
+    bq_arc_tb(&tb, p2, bq_get(g2, BQ_U0), lim);
     tb = bq_mul(tb, BQ_MARGIN);
     /* in us, at most BQ_DUR_MAX (a longer overlap belongs to lines too
      * long anyway: their scalings do not fit) */
@@ -523,21 +573,24 @@ static DH_NOINLINE dh_status bq_check(const dh_path_q *p, uint32_t n, const dh_q
     uint32_t k;
     if (n == 0u || lim->vmax <= 0 || lim->amax <= 0 || lim->wmax <= 0 || lim->wdmax <= 0) return DH_ERR_ARG;
     for (k = 0u; k < n; k++) {
-        if (p[k].kind != (uint32_t)DH_PATH_LINE || !dh_motion_path_ok_q_(&p[k])) return DH_ERR_ARG;
+        if (!dh_motion_path_ok_q_(&p[k])) return DH_ERR_ARG;
         if (p[k].length < 0 || p[k].angle < 0) return DH_ERR_ARG;
+        if (p[k].kind == (uint32_t)DH_PATH_ARC && p[k].radius <= 0) return DH_ERR_ARG;
         if (k + 1u < n && (radius[k] < 0 || memcmp(&p[k].B, &p[k + 1u].A, sizeof p[k].B) != 0)) return DH_ERR_ARG;
     }
     return DH_OK;
 }
 
-/* 1 when the corner C keeps every point within R + 4 LSB of it inside
- * the int32 range (dh_blend_pos_q_: the blend's points are within dev + 2 LSB) */
+/* 1 when the corner C keeps every point within R + 64 LSB of it inside
+ * the int32 range (dh_blend_pos_q_: the blend's points are within dev + 2
+ * LSB of it on lines, dev + 2 (4 LSB + 2^-26 rho) + 2 LSB with arcs,
+ * rho < 2^30) */
 static DH_NOINLINE int bq_inside(const dh_frame_q *C, dh_qpos R)
 {
     unsigned i;
     for (i = 0u; i < 3u; i++) {
         const int64_t c = C->p[i];
-        if (((c < 0) ? -c : c) > (int64_t)INT32_MAX - R - 4) return 0;
+        if (((c < 0) ? -c : c) > (int64_t)INT32_MAX - R - 64) return 0;
     }
     return 1;
 }
@@ -555,7 +608,7 @@ static DH_NOINLINE dh_qpos bq_dev(const dh_path_q *p1, const dh_path_q *p2, uint
 
 /* dh_blend_corner_q_ (blend_q_impl.h): the overlap is 0 (at rest)
  * unless the pair so blended is shorter than at rest (the closed forms'
- * durations, bq_time) and the corner lies its radius and 4 LSB inside
+ * durations, bq_time) and the corner lies its radius and 64 LSB inside
  * the range (bq_inside) */
 DH_NOINLINE void dh_blend_corner_q_(const dh_path_q *p1, const dh_path_q *p2, const dh_cart_limits_q *lim,
                                     dh_blend_seg_q *g)
@@ -772,14 +825,28 @@ DH_NOINLINE void dh_blend_rot_q_(const dh_path_q *p1, const dh_path_q *p2, dh_q3
     dh_motion_quat_rot_q_(&q, T);
 }
 
+/* pos = the position of the path p at s in [0, 2^30]: a line's
+ * dh_motion_lerp_q_, an arc's dh_motion_arc_point_q_ (its ends exact) */
+static DH_NOINLINE void bq_point(const dh_path_q *p, dh_q30 s, dh_qpos pos[3])
+{
+    unsigned i;
+    if (p->kind == (uint32_t)DH_PATH_ARC && s > 0 && s < DH_Q30_ONE) {
+        dh_motion_arc_point_q_(p, s, pos);
+        return;
+    }
+    for (i = 0u; i < 3u; i++) pos[i] = dh_motion_lerp_q_(p->A.p[i], p->B.p[i], s);
+}
+
 /* dh_blend_pos_q_ (blend_q_impl.h) */
 DH_NOINLINE int dh_blend_pos_q_(const dh_path_q *p1, const dh_path_q *p2, dh_q30 s1, dh_q30 s2, dh_frame_q *T)
 {
+    dh_qpos x2[3];
     unsigned i;
     int sat = 0;
+    bq_point(p1, s1, T->p);
+    bq_point(p2, s2, x2);
     for (i = 0u; i < 3u; i++) {
-        int64_t x = (int64_t)dh_motion_lerp_q_(p1->A.p[i], p1->B.p[i], s1) +
-                    dh_motion_lerp_q_(p2->A.p[i], p2->B.p[i], s2) - p2->A.p[i];
+        int64_t x = (int64_t)T->p[i] + x2[i] - p2->A.p[i];
         if (x > INT32_MAX || x < INT32_MIN) {
             x = (x > 0) ? INT32_MAX : INT32_MIN;
             sat = 1;

@@ -491,8 +491,8 @@ dh_status dh_path_arc_q(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3],
     return DH_OK;
 }
 
-/* The position of the arc of p at 0 < s < 2^30 into pos, from the nearer end */
-static DH_NOINLINE void pathq_arc_point(const dh_path_q *p, dh_q30 s, dh_qpos pos[3])
+/* dh_motion_arc_point_q_ (motion_impl.h): from the nearer end */
+DH_NOINLINE void dh_motion_arc_point_q_(const dh_path_q *p, dh_q30 s, dh_qpos pos[3])
 {
     const int back = s > (DH_Q30_ONE / 2);
     const dh_frame_q *E = back ? &p->B : &p->A;
@@ -572,7 +572,7 @@ dh_status dh_path_eval_q(const dh_path_q *p, dh_q30 s, dh_frame_q *T)
         return DH_OK;
     }
     if (p->kind == (uint32_t)DH_PATH_ARC) {
-        pathq_arc_point(p, s, pos);
+        dh_motion_arc_point_q_(p, s, pos);
     } else {
         for (i = 0; i < 3u; i++) pos[i] = dh_motion_lerp_q_(p->A.p[i], p->B.p[i], s);
     }

@@ -155,12 +155,13 @@ dh_status dh_queue_add_path_jerk_q(dh_queue_q *qu, const dh_path_q *p, const dh_
     return queueq_path_item(qu, it, p, lim, st);
 }
 
-/* the checks of dh_queue_add_path_blend_q's line and limits, in the
+/* the checks of dh_queue_add_path_blend_q's path and limits, in the
  * order of its statuses */
 static dh_status queueq_line_ok(const dh_path_q *p, const dh_cart_limits_q *lim)
 {
     if (lim->vmax <= 0 || lim->amax <= 0 || lim->wmax <= 0 || lim->wdmax <= 0) return DH_ERR_ARG;
     if (!dh_motion_path_ok_q_(p) || p->length < 0 || p->angle < 0) return DH_ERR_ARG;
+    if (p->kind == (uint32_t)DH_PATH_ARC && p->radius <= 0) return DH_ERR_ARG;
     return DH_OK;
 }
 
@@ -224,7 +225,7 @@ dh_status dh_queue_add_path_blend_q(dh_queue_q *qu, const dh_path_q *p, const dh
     DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
     it = queueq_free(qu);
     if (it == NULL) return DH_ERR_LIMIT;
-    if (radius < 0 || p->kind != (uint32_t)DH_PATH_LINE) return DH_ERR_ARG;
+    if (radius < 0) return DH_ERR_ARG;
     st = queueq_line_ok(p, lim);
     if (st != DH_OK) return st;
     queueq_blend_item(it, p, lim, radius);

@@ -134,6 +134,11 @@ int dh_motion_path_ok_q_(const dh_path_q *p);
  * and the blended sequences' overlaps (dh_blend_q.c) */
 void dh_motion_turn_q_(const dh_quat_q *e, int32_t cs, int32_t sn, const int32_t k[3], dh_quat_q *out);
 
+/* pos = the position of the arc of p at 0 < s < 2^30 (dh_path_eval_q's,
+ * within 4 LSB + 2^-26 R of the circle); the blended corners' overlaps
+ * (dh_blend_q.c) evaluate an arc's point with it */
+void dh_motion_arc_point_q_(const dh_path_q *p, dh_q30 s, dh_qpos pos[3]);
+
 /* T->r = the rotation of the unit quaternion q (Q2.30, each entry rounded
  * once); T->p untouched */
 void dh_motion_quat_rot_q_(const dh_quat_q *q, dh_frame_q *T);
