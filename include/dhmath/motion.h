@@ -1884,8 +1884,8 @@ dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_
  * while this one has not started, both move and the blend is shorter
  * than a stop there (dh_blend_seq_plan_q's corner: tails at (63/128) of
  * each path's acceleration, each within half its path, the overlap within
- * radius; an arc's s'' at half dh_path_move_q's, in an overlap within
- * amax / 4 centripetal). Each path runs a five-phase scaling of s
+ * radius; an arc's tails at (7/16), its centripetal acceleration in an
+ * overlap within amax / 16). Each path runs a five-phase scaling of s
  * (dh_blend_seg_q) on the queue's clock, in an overlap the superposition
  * of the two (dh_blend_seq_eval_q's). Speed, TOTAL acceleration, angular speed and
  * acceleration within lim (the plan's 2^-10 margin covers the rounding)

@@ -234,6 +234,8 @@ dh_status dh_queue_add_path_blend_q(dh_queue_q *qu, const dh_path_q *p, const dh
      * guard): kept when both lines' scalings with it fit */
     pv = queueq_blend_prev(qu, &it->path, &it->lim);
     if (pv != NULL) {
+        dh_blend_rates_q_(&pv->path, &it->lim, &qu->bs[0]);
+        dh_blend_rates_q_(&it->path, &it->lim, &qu->bs[1]);
         dh_blend_corner_q_(&pv->path, &it->path, &it->lim, qu->bs);
         if (queueq_blend_tails(qu, pv) != 0 &&
             (dh_blend_queue_line_q_(&qu->bs[0], &pv->path, &pv->lim, &qu->bz[0]) &
@@ -413,8 +415,12 @@ static DH_NOINLINE dh_status queueq_blend_frame(const dh_queue_q *qu, dh_frame_q
     const dh_queue_item_q *nx = &qu->items[queueq_index(qu, 1u)];
     const dh_q30 s1 = dh_blend_s_q_(g, qu->mv.clock);
     const dh_q30 s2 = dh_blend_s_q_(&nx->seg, qu->mv.clock - (g->T - g->dur[4]));
+    int sat;
+    dh_motion_point_q_(&qu->mv.path, s1, T->p);
+    dh_motion_point_q_(&nx->path, s2, T->r[0]);
+    sat = dh_blend_pos_q_(&nx->path, T);
     dh_blend_rot_q_(&qu->mv.path, &nx->path, s1, s2, T);
-    return (dh_blend_pos_q_(&qu->mv.path, &nx->path, s1, s2, T) != 0) ? DH_ERR_OVERFLOW : DH_OK;
+    return (sat != 0) ? DH_ERR_OVERFLOW : DH_OK;
 }
 
 dh_status dh_queue_target_q(dh_queue_q *qu, const dh_track_q *t, dh_queue_cmd_q *cmd)
