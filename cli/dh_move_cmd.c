@@ -645,8 +645,8 @@ static int plan_path_q(move_plan *p, unsigned i, const move_seg *s, const dh_fra
 
 /* segment i (fixed, a joint move or a line or arc) appended to the fixed
  * queue qu, from F (updated to its end: B, or the FK of a joint move's
- * end); with --blend a line as a blended line (its corner with the next
- * line blended within the radius) */
+ * end); with --blend a line or arc as a blended path (its corner with
+ * the next line or arc blended within the radius) */
 static int queue_add_q(move_plan *p, unsigned i, const move_seg *s, dh_queue_q *qu, const dh_cart_limits_q *lim,
                        dh_frame_q *F)
 {
@@ -670,7 +670,7 @@ static int queue_add_q(move_plan *p, unsigned i, const move_seg *s, dh_queue_q *
         return 0;
     }
     if ((rc = plan_path_q(p, i, s, F, &path, &B)) != 0) return rc;
-    if (s->kind == SEG_LINE && p->blend >= 0.0f) {
+    if (p->blend >= 0.0f) {
         const double R = floor((double)p->blend * (double)((int32_t)1 << DH_QPOS_FRAC) + 0.5);
         if (!(R < 2147483647.0)) return cli_error("--blend", "the radius does not fit the fixed-point length format");
         st = dh_queue_add_path_blend_q(qu, &path, lim, (dh_qpos)R);
@@ -683,10 +683,10 @@ static int queue_add_q(move_plan *p, unsigned i, const move_seg *s, dh_queue_q *
 }
 
 /* Segments i0 .. i1 - 1 (fixed; joint moves, lines and arcs, with
- * --blend the corners between lines blended) run by the fixed queue
- * (dh_queue_q), appended as it drains (MOVE_QUEUE_CAP >= 3: a line's
- * corner with the next is planned when the next is appended, before the
- * line starts): joint commands go to the robot as they are, path frames
+ * --blend the corners between lines and arcs blended) run by the fixed
+ * queue (dh_queue_q), appended as it drains (MOVE_QUEUE_CAP >= 3: a
+ * path's corner with the next is planned when the next is appended,
+ * before the path starts): joint commands go to the robot as they are, path frames
  * through the tracker t (started again at the last joint command when the
  * queue says so), whose lagging periods slow the move down (its feed
  * override). F is where the first starts (updated to the last end); t and

@@ -1697,23 +1697,23 @@ typedef struct {
 } dh_blend_seq_q;
 
 /**
- * @brief Fixed twin of dh_blend_seq_plan_f32: sq = the n lines p[0..n-1]
+ * @brief Fixed twin of dh_blend_seq_plan_f32: sq = the n paths p[0..n-1]
  *        run one after the other, each corner k (between p[k] and p[k+1])
  *        blended within radius[k] by superposition (the last part of p[k]
  *        at a reduced deceleration overlapping the first part of p[k+1] at
- *        a reduced acceleration), each tail within half its line. Integer
+ *        a reduced acceleration), each tail within half its path. Integer
  *        only. Method, proofs and rounding: docs/design.md ("Blended
- *        corners, fixed point").
+ *        corners, fixed point"; an arc's as in dh_queue_add_path_blend_q).
  * @param sq output sequence.
  * @param seg the caller's array of n scalings (written; owned by sq).
- * @param p the caller's n lines (dh_path_line_q; arcs are refused), each
+ * @param p the caller's n lines or arcs (dh_path_line_q, dh_path_arc_q), each
  *        p[k+1].A equal to p[k].B (every entry; not copied: owned by sq);
  *        lengths 0, pure rotations and straight continuations are fine.
- * @param n number of lines, >= 1.
+ * @param n number of paths, >= 1.
  * @param radius n - 1 blend radii (dh_qpos), >= 0 (NULL allowed when n == 1).
  * @param lim limits, each > 0.
  * A corner runs at rest (dur[4] of p[k], dur[0] of p[k+1] 0) when its
- * radius is 0, a line next to it has no motion, it is within radius[k] + 4
+ * radius is 0, a path next to it has no motion, it is within radius[k] + 64
  * LSB of the int32 range, or its blend would not shorten the pair; every
  * corner does when blending would not shorten the whole sequence.
  * The planned motion (the phases as held) keeps the tool point's speed,
@@ -1721,8 +1721,8 @@ typedef struct {
  * (the plan's margin of 2^-10 covers the planning's integer rounding);
  * seg[k].dev <= radius[k].
  * @return DH_OK; DH_ERR_ARG for n == 0, a limit <= 0, a radius < 0, a p[k]
- *         that is not a line (an arc, or no path) or a p[k+1].A that is
- *         not p[k].B; DH_ERR_OVERFLOW when a phase of a line reaches
+ *         that holds no path (or an arc of radius <= 0) or a p[k+1].A that
+ *         is not p[k].B; DH_ERR_OVERFLOW when a phase of a path reaches
  *         2^28 us (268 s) or the lines at rest 2^31 us. sq untouched on
  *         error; seg's contents are then unspecified.
  */
@@ -1731,17 +1731,18 @@ dh_status dh_blend_seq_plan_q(dh_blend_seq_q *sq, dh_blend_seg_q *seg, const dh_
 
 /**
  * @brief Fixed twin of dh_blend_seq_eval_f32: T = the frame of the blended
- *        sequence sq at time t (us, on the sequence's clock): line k's
+ *        sequence sq at time t (us, on the sequence's clock): path k's
  *        frame (dh_path_eval_q at its s) where it runs alone, in an overlap
- *        the superposition of lines k and k+1: position p_k(s_k) +
+ *        the superposition of paths k and k+1: position p_k(s_k) +
  *        (p_k+1(s_k+1) - corner), rotation R_k+1(s_k+1) R_corner^T R_k(s_k).
  * @param sq sequence from dh_blend_seq_plan_q.
  * @param t time (us), any uint32: t == 0 gives p[0].A and t >= sq->T gives
  *        p[n-1].B exactly.
  * @param T output frame (must not alias the lines).
- * Outside the overlaps the position is on line k within 1 LSB (as
- * dh_path_eval_q's); inside, within seg[k].dev of corner k plus 2 LSB +
- * 32 2^-30 (L_k + L_k+1) (the rounding of the held scalings). Rotation
+ * Outside the overlaps the position is on path k as dh_path_eval_q's;
+ * inside, within seg[k].dev of corner k plus 2 LSB + 32 2^-30 (L_k +
+ * L_k+1) (the rounding of the held scalings) and each arc's 4 LSB +
+ * 2^-26 R (dh_path_eval_q's). Rotation
  * entries as dh_path_eval_q's (1.5e-6) plus a few 2^-30.
  * @return DH_OK; DH_ERR_ARG when sq holds no sequence (n 0, a line that
  *         holds no path, or a scaling out of range; T untouched);
@@ -1874,33 +1875,33 @@ dh_status dh_queue_add_joint_q(dh_queue_q *qu, uint32_t n, const int32_t *q1, co
 dh_status dh_queue_add_path_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim);
 
 /**
- * @brief Appends a Cartesian LINE move along p within lim, as
+ * @brief Appends a Cartesian line or arc move along p within lim, as
  *        dh_queue_add_path_q, whose corner with the NEXT move is blended
- *        within radius: passed without stopping, the lines left only
+ *        within radius: passed without stopping, the paths left only
  *        inside the ball of that radius about the corner.
- * Blended when the next move is also appended by this function, is a line
- * with the same limits starting at p->B (the same frame, bit for bit), is
- * appended while this one has not started, both lines move and the blend
- * is shorter than a stop there (dh_blend_seq_plan_q's corner: tails at
- * (63/128) of each line's acceleration, each within half its line, the
- * overlap within radius); else at rest (arcs: dh_queue_add_path_q).
- * Each line runs a five-phase scaling of s (dh_blend_seg_q) on the
- * queue's clock, in an overlap the superposition of the two lines
- * (dh_blend_seq_eval_q's). Speed, TOTAL acceleration, angular speed and
+ * Blended when the next move is also appended by this function, has the
+ * same limits, starts at p->B (the same frame, bit for bit), is appended
+ * while this one has not started, both move and the blend is shorter
+ * than a stop there (dh_blend_seq_plan_q's corner: tails at (63/128) of
+ * each path's acceleration, each within half its path, the overlap within
+ * radius; an arc's tails at (7/16), its centripetal acceleration in an
+ * overlap within amax / 16). Each path runs a five-phase scaling of s
+ * (dh_blend_seg_q) on the queue's clock, in an overlap the superposition
+ * of the two (dh_blend_seq_eval_q's). Speed, TOTAL acceleration, angular speed and
  * acceleration within lim (the plan's 2^-10 margin covers the rounding)
  * with the feed override, a stop and a resume: the time warp r changes
  * only in periods that do not reach into an overlap (docs/design.md,
  * "Fixed-point queue"), so a stop or a lagging tracker inside an overlap
  * slows the move from its end, on the planned blend within radius of the
- * corner. Outside the overlaps the target is on its line.
+ * corner. Outside the overlaps the target is on its path.
  * @param qu queue from dh_queue_init_q.
- * @param p line from dh_path_line_q (copied).
+ * @param p path from dh_path_line_q or dh_path_arc_q (copied).
  * @param lim Cartesian limits, each > 0 (copied).
  * @param radius blend radius (dh_qpos), >= 0 (0: at rest).
  * @return DH_OK; DH_ERR_LIMIT when the queue is full (checked first);
- *         DH_ERR_ARG for radius < 0, a p that is not a line (an arc, no
- *         path, a negative length or angle) or a limit <= 0;
- *         DH_ERR_OVERFLOW when a phase of the line reaches 2^28 us or its
+ *         DH_ERR_ARG for radius < 0, a p that holds no path (or an arc of
+ *         radius <= 0, a negative length or angle) or a limit <= 0;
+ *         DH_ERR_OVERFLOW when a phase of the path reaches 2^28 us or its
  *         bound 2^30 us. On error qu and its queued items are untouched.
  */
 dh_status dh_queue_add_path_blend_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim,

@@ -13,25 +13,29 @@
 #include "dhmath/motion.h"
 
 /* The overlap tb (us) of the corner between the lines p1 and p2 (p2->A
- * equal to p1->B, both holding paths of kind LINE, lengths and angles
- * >= 0; lim's fields > 0) within the radius R >= 0 that g[0].dev holds
- * on the call (a field, not an argument: the 256 B guard): each tail at
- * b = (63/128) a of its line, tb the least of the four bounds of the
- * file comment of dh_blend_q.c, 0 (at rest) when R is 0, a line has no
- * motion, the corner lies within R + 4 LSB of the int32 range or the
- * blend does not shorten the pair, into g[0].dur[4] and g[1].dur[0];
- * and g[0].dev = (L1 b1 + 2 L2 b2) tb^2 / 2 rounded up (<= R; 0 for tb
- * 0): the bound on the tool point's distance from the corner in the
- * overlap, also for a brake of each line at its tail's acceleration. The
- * rest of g[0] and g[1] (the scalings of p1 and p2 to be, or scratch) is
- * unspecified after; their other durations are untouched. */
+ * equal to p1->B, both holding paths, lines or arcs of radius > 0,
+ * lengths and angles >= 0; lim's fields > 0; their rates in g[0] and
+ * g[1] from dh_blend_rates_q_, called by the caller: one call level
+ * less, the 256 B guard; left as they are) within the radius R >= 0
+ * that g[0].dev holds on the call (a field, not an argument: the 256 B
+ * guard): each tail at b = (63/128) a of its line ((7/16) a of an arc),
+ * tb the least of the bounds of the file comment of dh_blend_q.c (four,
+ * and one per arc), 0 (at rest) when R is 0, a line has no motion, the
+ * corner lies within R + 64 LSB of the int32 range or the blend does not
+ * shorten the pair, into g[0].dur[4] and g[1].dur[0]; and
+ * g[0].dev = (L1 b1 + 2 L2 b2) tb^2 / 2 rounded up (<= R; 0 for tb 0):
+ * the bound on the tool point's distance from the corner in the overlap,
+ * also for a brake of each line at its tail's acceleration. Nothing else
+ * of g[0] and g[1] is written. */
 void dh_blend_corner_q_(const dh_path_q *p1, const dh_path_q *p2, const dh_cart_limits_q *lim, dh_blend_seg_q *g);
 
-/* The rates of s along the line p within lim (lim's fields > 0),
- * V = min(vmax / L, wmax / th) and a = min(amax / L, wdmax / th), both
- * lowered by 2^-10, and its tails' accelerations (63/128) a, into g's
- * planning state (fields of g that dh_blend_line_q_ writes last); all 0
- * when p has no length and no angle. */
+/* The rates of s along the line or arc p within lim (lim's fields > 0),
+ * V = min(Vt / L, wmax / th) and a = min(At / L, wdmax / th), both
+ * lowered by 2^-10 (Vt, At: vmax, amax on a line, an arc's of
+ * dh_path_move_q), and its tails' accelerations (63/128) a on a line,
+ * (7/16) a on an arc, into g's planning state (fields of g that
+ * dh_blend_line_q_ writes last); all 0 when p has no length and no
+ * angle. */
 void dh_blend_rates_q_(const dh_path_q *p, const dh_cart_limits_q *lim, dh_blend_seg_q *g);
 
 /* g = the five-phase scaling of s from 0 to 1 along the line whose rates
@@ -64,13 +68,16 @@ int dh_blend_queue_line_q_(dh_blend_seg_q *g, const dh_path_q *p, const dh_cart_
  * [0, 1]; g must hold a scaling (durations summing to g->T) */
 dh_q30 dh_blend_s_q_(const dh_blend_seg_q *g, uint32_t t);
 
-/* T->r = the overlap's rotation R2(s2) R_A2^T R1(s1) of the lines p1, p2
+/* T->r = the overlap's rotation R2(s2) R_A2^T R1(s1) of the paths p1, p2
  * (p2->A equal to p1->B) at s1, s2 (Q2.30); T->p untouched */
 void dh_blend_rot_q_(const dh_path_q *p1, const dh_path_q *p2, dh_q30 s1, dh_q30 s2, dh_frame_q *T);
 
-/* T->p = p1(s1) + (p2(s2) - p2->A), saturated to int32: 1 when it was
- * (a corner that dh_blend_corner_q_ blends keeps its overlap inside the
- * range, so only lines or scalings changed after planning can) */
-int dh_blend_pos_q_(const dh_path_q *p1, const dh_path_q *p2, dh_q30 s1, dh_q30 s2, dh_frame_q *T);
+/* The overlap's position p1(s1) + (p2(s2) - p2->A) from p1(s1) in T->p
+ * and p2(s2) in T->r[0] (dh_motion_point_q_, called by the caller: one
+ * call level less, the 256 B guard; T->r is written after, by
+ * dh_blend_rot_q_), into T->p saturated to int32: 1 when it was (a
+ * corner that dh_blend_corner_q_ blends keeps its overlap inside the
+ * range, so only paths or scalings changed after planning can) */
+int dh_blend_pos_q_(const dh_path_q *p2, dh_frame_q *T);
 
 #endif /* DHMATH_SRC_BLEND_Q_IMPL_H */

@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * dh_blend_q.c - a fixed-point sequence of line moves blended at their
- * corners by superposition, the twin of dh_blend.c's sequences. Integer
- * only: no float, no 64-bit division (bit-serial quotients).
+ * dh_blend_q.c - a fixed-point sequence of line and arc moves blended at
+ * their corners by superposition, the twin of dh_blend.c's sequences.
+ * Integer only: no float, no 64-bit division (bit-serial quotients).
+ * ("Line" below is either; an arc is named where it differs.)
  *
  * Planning (once per sequence) in a small normalised integer format
  * m 2^e (m a 32-bit mantissa in [2^31, 2^32), e an int32), every
@@ -10,19 +11,28 @@
  * subtraction's relative error grows by the cancellation, at most 2^10
  * here: each difference is of a quantity and at most (1 - 2^-10) of it).
  * Notation of docs/design.md ("Blended corners", "Blended sequences"):
- * per line the bounds of s, V = min(vmax / L, wmax / th) and
- * a = min(amax / L, wdmax / th), both lowered by 2^-10 (the margin that
- * covers the planning's rounding). A corner's tails take
- * b_i = (63/128) a_i, so that L1 b1 + L2 b2 <= (63/64) amax and
- * th1 b1 + th2 b2 <= (63/64) wdmax for any signs (a brake in the
+ * per line the bounds of s, V = min(Vt / L, wmax / th) and
+ * a = min(At / L, wdmax / th), both lowered by 2^-10 (the margin that
+ * covers the planning's rounding; Vt = vmax and At = amax on a line, on
+ * an arc of radius rho dh_path_move_q's Vt = min(vmax,
+ * sqrt(amax rho / sqrt 2)) and At = amax sqrt(1 - (Vt^2 / (amax rho))^2)).
+ * A corner's tails take b_i = (63/128) a_i on a line, (7/16) a_i on an
+ * arc, so that L1 b1 + L2 b2 <= (63/64) amax ((119/128) amax with an arc)
+ * and th1 b1 + th2 b2 <= (63/64) wdmax for any signs (a brake in the
  * overlap included), and the overlap
  * tb = (1 - 2^-10) min(V_i / b_i, sqrt((128/191) / b_i),
- *      sqrt(2 R / (L1 b1 + 2 L2 b2)), sqrt((180/pi) wdmax / (16 th1 b1 th2 b2)))
+ *      sqrt(2 R / (L1 b1 + 2 L2 b2)), sqrt((180/pi) wdmax / (16 th1 b1 th2 b2)),
+ *      sqrt(amax rho_i / 16) / (L_i b_i) for each arc i)
  * rounded down to whole microseconds: the tail starts below the cruise
- * speed, fits half its line (tb^2 b (1 + b / a) <= 1, b / a = 63/128),
+ * speed, fits half its line (tb^2 b (1 + b / a) <= 1, b / a <= 63/128),
  * keeps the tool point within R of the corner (also for a brake from
- * anywhere in the overlap), and the cross term of the two rotations
- * within wdmax / 64.
+ * anywhere in the overlap; a chord is at most its arc), the cross term
+ * of the two rotations within wdmax / 64, and an arc's centripetal
+ * acceleration in the overlap within amax / 16 (the sum of the two is
+ * convex in the time, so at most its larger end value): tangential and
+ * centripetal together within (127/128) amax. An arc alone keeps its
+ * tangential s'' L <= At and its centripetal acceleration within
+ * Vt^2 / rho, perpendicular to it: within amax, as dh_path_move_q's.
  *
  * A line's scaling is five phases of constant s'' with whole-microsecond
  * durations: the start tail (b0, tb0), the acceleration at a to v, the
@@ -230,6 +240,10 @@ DH_INLINE int32_t bq_q30(bq_f a)
 #define BQ_HALF BQ_C(2878302690u, -32)
 #define BQ_MARGIN BQ_C(0xFFC00000u, -32)
 #define BQ_RAD2DEG BQ_C(3845054675u, -14)
+/* 7/16 (an arc's tails), 1/16, 2^-1/2 (rounded down) */
+#define BQ_TAIL_ARC BQ_C(0xE0000000u, -33)
+#define BQ_SIXTEENTH BQ_C(0x80000000u, -35)
+#define BQ_RSQRT2 BQ_C(0xB504F333u, -32)
 
 /* every phase lasts less than 2^28 us (268 s): a line's five sum below
  * 2^31 */
@@ -294,27 +308,36 @@ static bq_f bq_get(dh_blend_seg_q *g, unsigned i)
     return ((uint64_t)(uint32_t)w[0] << 32) | (uint32_t)w[1];
 }
 
-/* dh_blend_rates_q_ (blend_q_impl.h): V = min(vmax / L, wmax / th),
- * a = min(amax / L, wdmax / th) lowered by 2^-10, and the tails'
- * b = (63/128) a (states BQ_U0 and BQ_B1, as bq_tails reads them). Each
- * rate is a quotient of positive int32 (length and angle at least
- * 1 LSB), so within [2^-31, 2^31): always in the planning's range. */
+/* dh_blend_rates_q_ (blend_q_impl.h): V = min(Vt / L, wmax / th),
+ * a = min(At / L, wdmax / th) lowered by 2^-10 (Vt = vmax and At = amax
+ * on a line, an arc's dh_path_move_q's: dh_motion_tool_va_q_), and the
+ * tails' b = (63/128) a on a line, (7/16) a on an arc (states BQ_U0 and
+ * BQ_B1, as bq_tails reads them). Each rate is a quotient of a
+ * positive int32 (or an arc's Vt, At in [2^-1, 2^31)) by one (length and
+ * angle at least 1 LSB), so within [2^-32, 2^31): always in the
+ * planning's range. */
 DH_NOINLINE void dh_blend_rates_q_(const dh_path_q *p, const dh_cart_limits_q *lim, dh_blend_seg_q *g)
 {
     bq_f v = BQ_ZERO, a = BQ_ZERO;
+    uint32_t at = 1u;
     if (p->length > 0) {
-        bq_min(&v, bq_div(bq_u((uint32_t)lim->vmax), bq_u((uint32_t)p->length)));
-        bq_min(&a, bq_div(bq_u((uint32_t)lim->amax), bq_u((uint32_t)p->length)));
+        const uint64_t va = dh_motion_tool_va_q_(p, lim);
+        at = (uint32_t)va;
+        bq_min(&v, bq_div(bq_u((uint32_t)(va >> 32)), bq_u((uint32_t)p->length)));
+        bq_min(&a, bq_div(bq_u(at), bq_u((uint32_t)p->length)));
     }
     if (p->angle > 0) {
         bq_min(&v, bq_div(bq_u((uint32_t)lim->wmax), bq_u((uint32_t)p->angle)));
         bq_min(&a, bq_div(bq_u((uint32_t)lim->wdmax), bq_u((uint32_t)p->angle)));
     }
+    /* an arc's At rounded to 0 (amax of a few LSB): a 0 with motion, which
+     * dh_blend_line_q_ refuses */
+    if (at == 0u) a = BQ_ZERO;
     v = bq_mul(v, BQ_MARGIN);
     a = bq_mul(a, BQ_MARGIN);
     bq_put(g, BQ_RV, v);
     bq_put(g, BQ_RA, a);
-    a = bq_mul(a, BQ_TAIL);
+    a = bq_mul(a, (p->kind == (uint32_t)DH_PATH_ARC) ? BQ_TAIL_ARC : BQ_TAIL);
     bq_put(g, BQ_U0, a);
     bq_put(g, BQ_B1, a);
 }
@@ -333,7 +356,7 @@ static DH_NOINLINE uint32_t bq_overlap(const dh_path_q *p1, const dh_path_q *p2,
                                        dh_blend_seg_q *g2, dh_qpos R, const dh_cart_limits_q *lim)
 {
     bq_f tb, x;
-    uint32_t us;
+    uint32_t us, i;
     if (R <= 0 || bq_m(bq_get(g1, BQ_B1)) == 0u || bq_m(bq_get(g2, BQ_U0)) == 0u) return 0u;
     tb = bq_div(bq_get(g1, BQ_RV), bq_get(g1, BQ_B1));
     bq_min(&tb, bq_div(bq_get(g2, BQ_RV), bq_get(g2, BQ_U0)));
@@ -345,6 +368,16 @@ static DH_NOINLINE uint32_t bq_overlap(const dh_path_q *p1, const dh_path_q *p2,
     bq_min_sqrt(&tb, bq_u(2u * (uint32_t)R), x);
     x = bq_mul(bq_mul(bq_u((uint32_t)p1->angle), bq_get(g1, BQ_B1)), bq_mul(bq_u((uint32_t)p2->angle), bq_get(g2, BQ_U0)));
     bq_min_sqrt(&tb, bq_mul(bq_u((uint32_t)lim->wdmax), BQ_RAD2DEG), x);
+    /* each arc's centripetal acceleration in the overlap, (L s')^2 / rho
+     * with s' <= b tb, within amax / 16: tb <= sqrt(amax rho / 16) / (L b) */
+    for (i = 0u; i < 2u; i++) {
+        const dh_path_q *p = (i == 0u) ? p1 : p2;
+        if (p->kind == (uint32_t)DH_PATH_ARC) {
+            x = bq_mul(bq_u((uint32_t)p->length), (i == 0u) ? bq_get(g1, BQ_B1) : bq_get(g2, BQ_U0));
+            bq_min_sqrt(&tb, bq_mul(bq_mul(bq_u((uint32_t)lim->amax), bq_u((uint32_t)p->radius)), BQ_SIXTEENTH),
+                        bq_mul(x, x));
+        }
+    }
     tb = bq_mul(tb, BQ_MARGIN);
     /* in us, at most BQ_DUR_MAX (a longer overlap belongs to lines too
      * long anyway: their scalings do not fit) */
@@ -498,6 +531,7 @@ DH_NOINLINE int dh_blend_line_q_(dh_blend_seg_q *g)
         g->T = 0u;
         return 1;
     }
+    if (bq_m(bq_get(g, BQ_RA)) == 0u) return 0;
     bq_tails(g);
     ok = bq_cruise(g);
     ok &= bq_ramp(g, 1u, BQ_U0);
@@ -523,21 +557,24 @@ static DH_NOINLINE dh_status bq_check(const dh_path_q *p, uint32_t n, const dh_q
     uint32_t k;
     if (n == 0u || lim->vmax <= 0 || lim->amax <= 0 || lim->wmax <= 0 || lim->wdmax <= 0) return DH_ERR_ARG;
     for (k = 0u; k < n; k++) {
-        if (p[k].kind != (uint32_t)DH_PATH_LINE || !dh_motion_path_ok_q_(&p[k])) return DH_ERR_ARG;
+        if (!dh_motion_path_ok_q_(&p[k])) return DH_ERR_ARG;
         if (p[k].length < 0 || p[k].angle < 0) return DH_ERR_ARG;
+        if (p[k].kind == (uint32_t)DH_PATH_ARC && p[k].radius <= 0) return DH_ERR_ARG;
         if (k + 1u < n && (radius[k] < 0 || memcmp(&p[k].B, &p[k + 1u].A, sizeof p[k].B) != 0)) return DH_ERR_ARG;
     }
     return DH_OK;
 }
 
-/* 1 when the corner C keeps every point within R + 4 LSB of it inside
- * the int32 range (dh_blend_pos_q_: the blend's points are within dev + 2 LSB) */
+/* 1 when the corner C keeps every point within R + 64 LSB of it inside
+ * the int32 range (dh_blend_pos_q_: the blend's points are within dev + 2
+ * LSB of it on lines, dev + 2 (4 LSB + 2^-26 rho) + 2 LSB with arcs,
+ * rho < 2^30) */
 static DH_NOINLINE int bq_inside(const dh_frame_q *C, dh_qpos R)
 {
     unsigned i;
     for (i = 0u; i < 3u; i++) {
         const int64_t c = C->p[i];
-        if (((c < 0) ? -c : c) > (int64_t)INT32_MAX - R - 4) return 0;
+        if (((c < 0) ? -c : c) > (int64_t)INT32_MAX - R - 64) return 0;
     }
     return 1;
 }
@@ -555,7 +592,7 @@ static DH_NOINLINE dh_qpos bq_dev(const dh_path_q *p1, const dh_path_q *p2, uint
 
 /* dh_blend_corner_q_ (blend_q_impl.h): the overlap is 0 (at rest)
  * unless the pair so blended is shorter than at rest (the closed forms'
- * durations, bq_time) and the corner lies its radius and 4 LSB inside
+ * durations, bq_time) and the corner lies its radius and 64 LSB inside
  * the range (bq_inside) */
 DH_NOINLINE void dh_blend_corner_q_(const dh_path_q *p1, const dh_path_q *p2, const dh_cart_limits_q *lim,
                                     dh_blend_seg_q *g)
@@ -563,8 +600,6 @@ DH_NOINLINE void dh_blend_corner_q_(const dh_path_q *p1, const dh_path_q *p2, co
     dh_blend_seg_q *const g1 = &g[0], *const g2 = &g[1];
     uint32_t tb = 0u;
     bq_f x;
-    dh_blend_rates_q_(p1, lim, g1);
-    dh_blend_rates_q_(p2, lim, g2);
     if (bq_inside(&p1->B, g1->dev)) tb = bq_overlap(p1, p2, g1, g2, g1->dev, lim);
     /* the dev of this tb (0 for 0) before the test below, which needs
      * neither line: fewer values live across its calls (the 256 B guard) */
@@ -696,6 +731,14 @@ static DH_NOINLINE void bq_radii(dh_blend_seg_q *seg, const dh_qpos *radius, uin
     for (k = 0u; k + 1u < n; k++) seg[k].dev = radius[k];
 }
 
+/* seg[k] = the rates of line k (dh_blend_rates_q_), for
+ * dh_blend_corner_q_, which reads them and leaves them */
+static DH_NOINLINE void bq_rates_all(dh_blend_seg_q *seg, const dh_path_q *p, uint32_t n, const dh_cart_limits_q *lim)
+{
+    uint32_t k;
+    for (k = 0u; k < n; k++) dh_blend_rates_q_(&p[k], lim, &seg[k]);
+}
+
 dh_status dh_blend_seq_plan_q(dh_blend_seq_q *sq, dh_blend_seg_q *seg, const dh_path_q *p, uint32_t n,
                               const dh_qpos *radius, const dh_cart_limits_q *lim)
 {
@@ -712,6 +755,7 @@ dh_status dh_blend_seq_plan_q(dh_blend_seq_q *sq, dh_blend_seg_q *seg, const dh_
         /* each corner's overlap into seg[k].dur[4], seg[k + 1].dur[0], its
          * dev into seg[k].dev (its radius there on the call), for bq_build */
         bq_radii(seg, radius, n);
+        bq_rates_all(seg, p, n, lim);
         for (k = 0u; k + 1u < n; k++) dh_blend_corner_q_(&p[k], &p[k + 1u], lim, &seg[k]);
         T = bq_build(seg, p, n, lim);
     }
@@ -773,13 +817,12 @@ DH_NOINLINE void dh_blend_rot_q_(const dh_path_q *p1, const dh_path_q *p2, dh_q3
 }
 
 /* dh_blend_pos_q_ (blend_q_impl.h) */
-DH_NOINLINE int dh_blend_pos_q_(const dh_path_q *p1, const dh_path_q *p2, dh_q30 s1, dh_q30 s2, dh_frame_q *T)
+DH_NOINLINE int dh_blend_pos_q_(const dh_path_q *p2, dh_frame_q *T)
 {
     unsigned i;
     int sat = 0;
     for (i = 0u; i < 3u; i++) {
-        int64_t x = (int64_t)dh_motion_lerp_q_(p1->A.p[i], p1->B.p[i], s1) +
-                    dh_motion_lerp_q_(p2->A.p[i], p2->B.p[i], s2) - p2->A.p[i];
+        int64_t x = (int64_t)T->p[i] + T->r[0][i] - p2->A.p[i];
         if (x > INT32_MAX || x < INT32_MIN) {
             x = (x > 0) ? INT32_MAX : INT32_MIN;
             sat = 1;
@@ -803,6 +846,7 @@ dh_status dh_blend_seq_eval_q(const dh_blend_seq_q *sq, uint32_t t, dh_frame_q *
     const dh_path_q *p;
     dh_q30 s1, s2;
     uint32_t k;
+    int sat;
     DH_ASSERT(sq != NULL && T != NULL);
     if (sq->n == 0u) return DH_ERR_ARG;
     if (t == 0u) return dh_path_eval_q(&sq->p[0], 0, T);
@@ -815,6 +859,9 @@ dh_status dh_blend_seq_eval_q(const dh_blend_seq_q *sq, uint32_t t, dh_frame_q *
     if (!bq_seg_ok(&g[-1]) || !dh_motion_path_ok_q_(&p[0]) || !dh_motion_path_ok_q_(&p[1])) return DH_ERR_ARG;
     s1 = dh_blend_s_q_(&g[-1], t - g[-1].t0);
     s2 = dh_blend_s_q_(g, t - g->t0);
+    dh_motion_point_q_(&p[0], s1, T->p);
+    dh_motion_point_q_(&p[1], s2, T->r[0]);
+    sat = dh_blend_pos_q_(&p[1], T);
     dh_blend_rot_q_(&p[0], &p[1], s1, s2, T);
-    return (dh_blend_pos_q_(&p[0], &p[1], s1, s2, T) != 0) ? DH_ERR_OVERFLOW : DH_OK;
+    return (sat != 0) ? DH_ERR_OVERFLOW : DH_OK;
 }

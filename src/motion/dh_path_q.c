@@ -491,8 +491,9 @@ dh_status dh_path_arc_q(dh_path_q *p, const dh_frame_q *A, const dh_qpos via[3],
     return DH_OK;
 }
 
-/* The position of the arc of p at 0 < s < 2^30 into pos, from the nearer end */
-static DH_NOINLINE void pathq_arc_point(const dh_path_q *p, dh_q30 s, dh_qpos pos[3])
+/* dh_motion_point_q_ (motion_impl.h): a line's dh_motion_lerp_q_ (and
+ * an arc's ends, exact), else the arc's point from the nearer end */
+DH_NOINLINE void dh_motion_point_q_(const dh_path_q *p, dh_q30 s, dh_qpos pos[3])
 {
     const int back = s > (DH_Q30_ONE / 2);
     const dh_frame_q *E = back ? &p->B : &p->A;
@@ -502,6 +503,10 @@ static DH_NOINLINE void pathq_arc_point(const dh_path_q *p, dh_q30 s, dh_qpos po
     int32_t sn, cs, dl;
     int64_t cm;
     unsigned k;
+    if (p->kind != (uint32_t)DH_PATH_ARC || s <= 0 || s >= DH_Q30_ONE) {
+        for (k = 0; k < 3u; k++) pos[k] = dh_motion_lerp_q_(p->A.p[k], p->B.p[k], (s < 0) ? 0 : ((s > DH_Q30_ONE) ? DH_Q30_ONE : s));
+        return;
+    }
     dh_sincos_q((dh_q16)(phi >> 37), &sn, &cs);
     /* the rest of phi below 2^-16 degrees, to first order (file comment) */
     dl = (int32_t)((phi & (((uint64_t)1 << 37) - 1u)) >> 7);   /* 2^-46 degrees, < 2^30 */
@@ -571,11 +576,7 @@ dh_status dh_path_eval_q(const dh_path_q *p, dh_q30 s, dh_frame_q *T)
         *T = (s > 0) ? p->B : p->A;
         return DH_OK;
     }
-    if (p->kind == (uint32_t)DH_PATH_ARC) {
-        pathq_arc_point(p, s, pos);
-    } else {
-        for (i = 0; i < 3u; i++) pos[i] = dh_motion_lerp_q_(p->A.p[i], p->B.p[i], s);
-    }
+    dh_motion_point_q_(p, s, pos);
     pathq_rot(p, s, T);
     for (i = 0; i < 3u; i++) T->p[i] = pos[i];
     return DH_OK;
@@ -662,6 +663,17 @@ static DH_NOINLINE uint32_t pathq_arc_at(uint32_t R, const dh_cart_limits_q *lim
     if (jmax != 0u && pathq_gt96(12u * (uint64_t)v, at, (uint64_t)jmax * R, 1u))
         at = pathq_udiv64((uint64_t)jmax * R, 12u * (uint64_t)v);
     return at;
+}
+
+/* dh_motion_tool_va_q_ (motion_impl.h) */
+DH_NOINLINE uint64_t dh_motion_tool_va_q_(const dh_path_q *p, const dh_cart_limits_q *lim)
+{
+    uint32_t V = (uint32_t)lim->vmax, At = (uint32_t)lim->amax;
+    if (p->kind == (uint32_t)DH_PATH_ARC) {
+        V = pathq_arc_v((uint32_t)p->radius, lim);
+        At = pathq_arc_at((uint32_t)p->radius, lim, V, 0u);
+    }
+    return ((uint64_t)V << 32) | At;
 }
 
 /* floor(b 2^e) of a bound */

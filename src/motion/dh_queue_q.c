@@ -155,12 +155,13 @@ dh_status dh_queue_add_path_jerk_q(dh_queue_q *qu, const dh_path_q *p, const dh_
     return queueq_path_item(qu, it, p, lim, st);
 }
 
-/* the checks of dh_queue_add_path_blend_q's line and limits, in the
+/* the checks of dh_queue_add_path_blend_q's path and limits, in the
  * order of its statuses */
 static dh_status queueq_line_ok(const dh_path_q *p, const dh_cart_limits_q *lim)
 {
     if (lim->vmax <= 0 || lim->amax <= 0 || lim->wmax <= 0 || lim->wdmax <= 0) return DH_ERR_ARG;
     if (!dh_motion_path_ok_q_(p) || p->length < 0 || p->angle < 0) return DH_ERR_ARG;
+    if (p->kind == (uint32_t)DH_PATH_ARC && p->radius <= 0) return DH_ERR_ARG;
     return DH_OK;
 }
 
@@ -224,7 +225,7 @@ dh_status dh_queue_add_path_blend_q(dh_queue_q *qu, const dh_path_q *p, const dh
     DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
     it = queueq_free(qu);
     if (it == NULL) return DH_ERR_LIMIT;
-    if (radius < 0 || p->kind != (uint32_t)DH_PATH_LINE) return DH_ERR_ARG;
+    if (radius < 0) return DH_ERR_ARG;
     st = queueq_line_ok(p, lim);
     if (st != DH_OK) return st;
     queueq_blend_item(it, p, lim, radius);
@@ -233,6 +234,8 @@ dh_status dh_queue_add_path_blend_q(dh_queue_q *qu, const dh_path_q *p, const dh
      * guard): kept when both lines' scalings with it fit */
     pv = queueq_blend_prev(qu, &it->path, &it->lim);
     if (pv != NULL) {
+        dh_blend_rates_q_(&pv->path, &it->lim, &qu->bs[0]);
+        dh_blend_rates_q_(&it->path, &it->lim, &qu->bs[1]);
         dh_blend_corner_q_(&pv->path, &it->path, &it->lim, qu->bs);
         if (queueq_blend_tails(qu, pv) != 0 &&
             (dh_blend_queue_line_q_(&qu->bs[0], &pv->path, &pv->lim, &qu->bz[0]) &
@@ -412,8 +415,12 @@ static DH_NOINLINE dh_status queueq_blend_frame(const dh_queue_q *qu, dh_frame_q
     const dh_queue_item_q *nx = &qu->items[queueq_index(qu, 1u)];
     const dh_q30 s1 = dh_blend_s_q_(g, qu->mv.clock);
     const dh_q30 s2 = dh_blend_s_q_(&nx->seg, qu->mv.clock - (g->T - g->dur[4]));
+    int sat;
+    dh_motion_point_q_(&qu->mv.path, s1, T->p);
+    dh_motion_point_q_(&nx->path, s2, T->r[0]);
+    sat = dh_blend_pos_q_(&nx->path, T);
     dh_blend_rot_q_(&qu->mv.path, &nx->path, s1, s2, T);
-    return (dh_blend_pos_q_(&qu->mv.path, &nx->path, s1, s2, T) != 0) ? DH_ERR_OVERFLOW : DH_OK;
+    return (sat != 0) ? DH_ERR_OVERFLOW : DH_OK;
 }
 
 dh_status dh_queue_target_q(dh_queue_q *qu, const dh_track_q *t, dh_queue_cmd_q *cmd)

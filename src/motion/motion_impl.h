@@ -134,6 +134,18 @@ int dh_motion_path_ok_q_(const dh_path_q *p);
  * and the blended sequences' overlaps (dh_blend_q.c) */
 void dh_motion_turn_q_(const dh_quat_q *e, int32_t cs, int32_t sn, const int32_t k[3], dh_quat_q *out);
 
+/* pos = the position of the path p at s (held to [0, 2^30]): a line's
+ * dh_motion_lerp_q_, an arc's point (within 4 LSB + 2^-26 R of the
+ * circle; its ends exact); dh_path_eval_q's, and the blended corners'
+ * overlaps' (dh_blend_q.c) */
+void dh_motion_point_q_(const dh_path_q *p, dh_q30 s, dh_qpos pos[3]);
+
+/* The tool's speed bound V (high word) and tangential acceleration At
+ * (low word) of a move along p within lim (lim's fields > 0; an arc of
+ * radius > 0): vmax and amax on a line, an arc's as dh_path_move_q
+ * plans them (V >= 1, At >= 0, each rounded down) */
+uint64_t dh_motion_tool_va_q_(const dh_path_q *p, const dh_cart_limits_q *lim);
+
 /* T->r = the rotation of the unit quaternion q (Q2.30, each entry rounded
  * once); T->p untouched */
 void dh_motion_quat_rot_q_(const dh_quat_q *q, dh_frame_q *T);

@@ -102,18 +102,26 @@ def check_rates(what, pts, dt, speed, accel, w=20):
     return vw, aw, w
 
 
+def blend_dist(pts, path_dist, inner, tol):
+    """the largest distance path_dist(p) of the points from their paths, and
+    among the points off them (by more than tol) the largest distance from
+    the nearest of the inner corners"""
+    worst, off = 0.0, 0.0
+    for p in pts:
+        ds = path_dist(p)
+        dc = min(math.sqrt(sum((p[i] - c[i]) ** 2 for i in range(3))) for c in inner)
+        off = max(off, ds)
+        if ds > tol:
+            worst = max(worst, dc)
+    return off, worst
+
+
 def polyline_dist(pts, corners, inner):
     """the largest distance of the points from the polyline through corners,
     and among the points off it (by more than 1e-5) the largest distance
     from the nearest of the inner corners"""
-    worst, off = 0.0, 0.0
-    for p in pts:
-        ds = min(seg_dist(p, corners[k], corners[k + 1]) for k in range(len(corners) - 1))
-        dc = min(math.sqrt(sum((p[i] - c[i]) ** 2 for i in range(3))) for c in inner)
-        off = max(off, ds)
-        if ds > 1e-5:
-            worst = max(worst, dc)
-    return off, worst
+    return blend_dist(pts, lambda p: min(seg_dist(p, corners[k], corners[k + 1]) for k in range(len(corners) - 1)),
+                      inner, 1e-5)
 
 
 def check(cond, what):
@@ -2045,7 +2053,8 @@ def group_move_fixed(seed, tmp):
     the printed values, which %.9g prints exactly); the tool on the line
     within 5e-3 mm; the joint move's end exact; --fixed with --jerk and a
     --dt that is no whole number of microseconds: exit 2; a blended square
-    (move_fixed_blend); a lagging Puma queue (move_fixed_lagging)."""
+    (move_fixed_blend) and a line-arc-line one (move_fixed_blend_arc); a
+    lagging Puma queue (move_fixed_lagging)."""
     rng = random.Random(seed)
     ur5 = os.path.join(ROOT, 'examples', 'robots', 'ur5_mm.dh')
     rob = read_robot(open(ur5).read())
@@ -2118,6 +2127,7 @@ def group_move_fixed(seed, tmp):
     rc, out, err = run(['move', path] + q0 + ['--dt', '0.0000015', '--fixed', '--joint', '0,0,0,0,0,0'])
     check(rc == 2 and out == '' and 'whole number of microseconds' in err, 'move --fixed --dt: rc %d %r' % (rc, err))
     move_fixed_blend(rob, n, path, qa, A, p0)
+    move_fixed_blend_arc(rob, n, path, qa, A, p0)
     move_fixed_lagging(tmp)
     move_fixed_blend_lagging(tmp)
     move_fixed_jerk(rob, n, path, qa, qb, A, endB, p0, pB, dp)
@@ -2346,6 +2356,60 @@ def move_fixed_blend(rob, n, path, qa, A, p0):
     check(vw <= speed * (1 + 1e-3) + 2 * noise / (w * dt) and aw <= accel * (1 + 1e-3) + 4 * noise / (w * dt) ** 2,
           'move --fixed --blend square: speed %.6g, acceleration %.6g over %d periods' % (vw, aw, w))
     print('move --fixed --blend square: %d periods (at rest at the corners %d), off the sides %.4g mm, within '
+          '%.6g mm of a corner there (radius %g), speed %.6g, acceleration %.6g over %d periods' %
+          (len(rows), len(rows0), off, worst, R, vw, aw, w))
+
+
+def move_fixed_blend_arc(rob, n, path, qa, A, p0):
+    """move --fixed --blend with arc corners: a line (100 mm), an arc
+    bulging 30 mm out of its 100 mm chord, a line (100 mm), the corners
+    line-arc and arc-line blended within R = 15 mm by the fixed queue:
+    shorter than at rest (--fixed without --blend), every period ok; the
+    tool (double FK of the printed joints, within the fixed tracker's
+    5e-3 mm of its target) within 5e-3 mm of a line or of the arc's circle
+    (through its ends and via point) or within R + 5e-3 mm of a corner,
+    off the paths somewhere; its speed and acceleration (centripetal
+    included) by finite differences over 25 periods within --speed and
+    --accel times 1 + 1e-3 plus the tracker's noise (2 and 4 times 5e-3 mm
+    over the window and its square); every joint step within the robot's
+    rates."""
+    R, dt, w, noise = 15.0, 0.002, 25, 5e-3
+    speed, accel = 200.0, 1000.0
+    rot = to_expr(A).split(' ', 1)[1]
+    c1 = [p0[0] + 100.0, p0[1], p0[2]]
+    c2 = [p0[0] + 100.0, p0[1] + 100.0, p0[2]]
+    c3 = [p0[0], p0[1] + 100.0, p0[2]]
+    via = [p0[0] + 130.0, p0[1] + 50.0, p0[2]]
+    # the circle through c1, via, c2: its centre on y = p0 + 50, equally far from c1 and via
+    xc, yc = p0[0] + (130.0 ** 2 - 100.0 ** 2 - 50.0 ** 2) / (2.0 * 30.0), p0[1] + 50.0
+    rho = math.hypot(c1[0] - xc, c1[1] - yc)
+    args = ['move', path, '--q0', ','.join(map(str, qa)), '--dt', str(dt), '--speed', str(speed), '--accel',
+            str(accel), '--rspeed', '60', '--raccel', '240', '--fixed', '--line', 'trans(%.6f,%.6f,%.6f) %s' %
+            tuple(c1 + [rot]), '--arc', 'trans(%.6f,%.6f,%.6f)' % tuple(via), 'trans(%.6f,%.6f,%.6f) %s' %
+            tuple(c2 + [rot]), '--line', 'trans(%.6f,%.6f,%.6f) %s' % tuple(c3 + [rot])]
+    rc0, out0, err0 = run(args)
+    rc, out, err = run(args + ['--blend', str(R)])
+    head0, rows0 = read_csv(out0, n)
+    head, rows = read_csv(out, n)
+    check(rc0 == 0 and rc == 0 and err == '' and rows and None not in rows and all(r[2] == 'ok' for r in rows),
+          'move --fixed --blend arc: rc %d %d err %r %r' % (rc0, rc, err0, err))
+    if not rows or None in rows or not rows0:
+        return
+    check(len(rows) < len(rows0), 'move --fixed --blend arc: %d periods, at rest %d' % (len(rows), len(rows0)))
+    check_joint_limits('move --fixed --blend arc', qa, rows, [180.0] * n, [720.0] * n, dt, [4 * f32_ulp(360.0)] * n)
+    pts = [p0] + [[F[i][3] for i in range(3)] for F in (ref_fk(rob, r[1]) for r in rows)]
+
+    def arc_dist(p):
+        # the arc is the part of the circle on the via point's side of the chord c1 c2 (x >= c1's)
+        return math.hypot(p[2] - p0[2], math.hypot(p[0] - xc, p[1] - yc) - rho) if p[0] >= c1[0] else 1e9
+    off, worst = blend_dist(pts, lambda p: min(seg_dist(p, p0, c1), arc_dist(p), seg_dist(p, c2, c3)), (c1, c2),
+                            5e-3)
+    check(worst <= R + 5e-3 and off > 0.1, 'move --fixed --blend arc: off the paths %.3g, %.6g from a corner '
+          '(radius %g)' % (off, worst, R))
+    vw, aw = window_rates(pts, w, dt)
+    check(vw <= speed * (1 + 1e-3) + 2 * noise / (w * dt) and aw <= accel * (1 + 1e-3) + 4 * noise / (w * dt) ** 2,
+          'move --fixed --blend arc: speed %.6g, acceleration %.6g over %d periods' % (vw, aw, w))
+    print('move --fixed --blend arc: %d periods (at rest at the corners %d), off the paths %.4g mm, within '
           '%.6g mm of a corner there (radius %g), speed %.6g, acceleration %.6g over %d periods' %
           (len(rows), len(rows0), off, worst, R, vw, aw, w))
 

@@ -35,6 +35,7 @@
 
 #include "dht.h"
 #include "dhmath/motion.h"
+#include "dhmath/frame.h"
 
 #define PI_D 3.14159265358979323846
 #define RAD2DEG (180.0 / PI_D)
@@ -348,7 +349,6 @@ static void statuses(void)
     dh_path_q arc;
     dh_qpos via[3];
     dh_qpos r[NMAX] = { 0 };
-    int i;
     draw_lines(3u);
     memset(&sq, 0x5A, sizeof sq);
     DHT_EQ_INT(dh_blend_seq_plan_q(&sq, seg, line, 0u, r, &lim), DH_ERR_ARG);
@@ -362,13 +362,28 @@ static void statuses(void)
     line[1].A.p[0] += 1;
     DHT_EQ_INT(dh_blend_seq_plan_q(&sq, seg, line, 3u, r, &lim), DH_ERR_ARG);
     line[1].A.p[0] -= 1;
-    /* an arc */
-    for (i = 0; i < 3; i++) via[i] = fr[1].p[i] / 2 + fr[0].p[i] / 2 + ((i == 2) ? (10 << 16) : 0);
-    if (dh_path_arc_q(&arc, &fr[0], via, &fr[1]) == DH_OK) {
-        const dh_path_q keep = line[0];
-        line[0] = arc;
-        DHT_EQ_INT(dh_blend_seq_plan_q(&sq, seg, line, 3u, r, &lim), DH_ERR_ARG);
-        line[0] = keep;
+    /* an arc into a line: blended (its corner's dev within the radius);
+     * an arc whose radius is not positive holds no arc */
+    {
+        dh_frame_q F[3];
+        dh_path_q pa[2];
+        dh_qpos ra[2] = { 10 << 16, 0 };
+        int k;
+        for (k = 0; k < 3; k++) dh_frame_identity_q(&F[k]);
+        F[1].p[0] = 100 << 16;
+        F[2].p[0] = 100 << 16;
+        F[2].p[1] = 100 << 16;
+        via[0] = 50 << 16;
+        via[1] = 0;
+        via[2] = 30 << 16;
+        DHT_EQ_INT(dh_path_arc_q(&arc, &F[0], via, &F[1]), DH_OK);
+        pa[0] = arc;
+        DHT_EQ_INT(dh_path_line_q(&pa[1], &F[1], &F[2]), DH_OK);
+        DHT_EQ_INT(dh_blend_seq_plan_q(&sq, seg, pa, 2u, ra, &lim), DH_OK);
+        DHT_TRUE(seg[0].dur[4] > 0u && seg[0].dev > 0 && seg[0].dev <= ra[0]);
+        pa[0].radius = 0;
+        DHT_EQ_INT(dh_blend_seq_plan_q(&sq, seg, pa, 2u, ra, &lim), DH_ERR_ARG);
+        memset(&sq, 0x5A, sizeof sq);
     }
     /* no path */
     memset(&line[2], 0, sizeof line[2]);

@@ -1,12 +1,14 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * test_queue_q_blend.c - blended lines in the fixed-point move queue
+ * test_queue_q_blend.c - blended lines and arcs in the fixed-point move queue
  * (motion.h: dh_queue_add_path_blend_q, run by dh_queue_target_q and
  * dh_queue_advance_q, with dh_queue_stop_q and dh_queue_resume_q) with
  * the fixed tracker (dh_track_step_q) on the UR5 and the Puma 560 in mm,
- * 1 kHz.
+ * 1 kHz (the Panda's seven joints have no fixed closed-form model for
+ * the fixed tracker).
  *
- * Random chains (seeded) of 2 to 4 lines between tool frames of
+ * Random chains (seeded) of 2 to 3 lines and arcs (through a point off
+ * the chord by 0.1 to 0.3 of its length) between tool frames of
  * configurations of the robot's region (support_motion_q.c), each
  * appended with a random radius (0 to 24 mm, in units of 2^(16 - F) mm
  * as the robots are), all before the first period, run by the firmware
@@ -14,16 +16,16 @@
  * some chains a stop at the first period inside an overlap, resumed
  * after a random rest or at once (during the brake). Checked every period
  * against references computed here in double: outside the overlaps the
- * target within PATH_TOL = 5e-3 mm of its line (the issue's bound at
- * DH_QPOS_FRAC 16), inside an overlap within the corner's dev (<= its
- * radius) plus the held scalings' rounding of the corner; the tool at
- * every OK period within the tracker's pos_tol (plus the fixed FK's 4 n
- * LSB) of the target; over windows of w periods (a position every DEC
+ * target within PATH_TOL = 5e-3 mm of its line or arc (the issue's bound
+ * at DH_QPOS_FRAC 16), inside an overlap within the corner's dev (<= its
+ * radius) plus the held scalings' and the arcs' rounding of the corner;
+ * the tool at every OK period within the tracker's pos_tol (plus the
+ * fixed FK's 4 n LSB) of the target; over windows of w periods (a position every DEC
  * periods) the target's speed within vmax and its total acceleration
  * within amax times 1 + 1e-3 plus the noise terms 2 N / (w dt) and
- * 4 N / (w dt)^2 (N: 1 LSB of the path, 64 2^-30 of the two lines' length
- * of the held scalings, the clock's 1 us at vmax), w the least window
- * with the noise within 2.5e-4 of the limit; every joint's tracked
+ * 4 N / (w dt)^2 (N: 1 LSB of the path, an arc's 4 LSB + 2^-26 R, 64
+ * 2^-30 of the two paths' length of the held scalings, the clock's 1 us
+ * at vmax), w the least window with the noise within 2.5e-4 of the limit; every joint's tracked
  * position over such windows within the robot's vmax and amax. Every
  * line completes in order (seq), the last with the target at its B bit
  * for bit and the tool there within the tracker's tolerance; a stop
@@ -123,10 +125,32 @@ static void check_rates(const int32_t *rg, int m, double scale, long i, long n, 
     }
 }
 
-/* the chain's lines from the configuration q through n - 1 more of the
- * region (each joint 4 to 12 degrees on), each reachable; radii in
- * [0, 24] mm (some 0), in [5, 24] mm in the first chain of a robot (so
- * that every run passes blended corners) */
+/* via = the point of the arc from F to B bulging out of the chord by
+ * f of its length (f in [0.1, 0.3]) in a random direction across it */
+static void arc_via(const dh_frame_q *F, const dh_frame_q *B, dh_qpos *via)
+{
+    double d[3], r[3], x[3], n = 0.0, L = 0.0, f = dht_rand_uniform(0.1, 0.3);
+    int i;
+    for (i = 0; i < 3; i++) {
+        d[i] = (double)B->p[i] - F->p[i];
+        r[i] = dht_rand_uniform(-1.0, 1.0);
+        L += d[i] * d[i];
+    }
+    x[0] = d[1] * r[2] - d[2] * r[1];
+    x[1] = d[2] * r[0] - d[0] * r[2];
+    x[2] = d[0] * r[1] - d[1] * r[0];
+    for (i = 0; i < 3; i++) n += x[i] * x[i];
+    L = sqrt(L);
+    n = sqrt(n);
+    for (i = 0; i < 3; i++)
+        via[i] = (dh_qpos)llround(0.5 * ((double)F->p[i] + B->p[i]) + ((n > 0.0) ? f * L * x[i] / n : 0.0));
+}
+
+/* the chain's lines and arcs from the configuration q through n - 1 more
+ * of the region (each joint 4 to 12 degrees on), each reachable, an arc
+ * with probability 1/2 (through arc_via's point); radii in [0, 24] mm
+ * (some 0), in [5, 24] mm in the first chain of a robot (so that every
+ * run passes blended corners), whose paths alternate: line, arc, line */
 static void chain_make(const dhsm_rig *g, const int32_t *q0, uint32_t n, int first, chain *ch)
 {
     int32_t q[NJ], qb[NJ];
@@ -138,6 +162,8 @@ static void chain_make(const dhsm_rig *g, const int32_t *q0, uint32_t n, int fir
     ch->lim = &LIM;
     for (k = 0; k < n; k++) {
         int tries = 0, ok = 0;
+        const int arc = first ? (int)(k % 2u) : (int)(dht_rand_u32() % 2u);
+        dh_qpos via[3];
         while (!ok && tries++ < 50) {
             double qa[DH_MAX_JOINTS], qn[DH_MAX_JOINTS];
             dhsm_region_q(g, qa);
@@ -145,11 +171,16 @@ static void chain_make(const dhsm_rig *g, const int32_t *q0, uint32_t n, int fir
                 qn[i] = q[i] / Q16 + dht_rand_uniform(4.0, 12.0) * (qa[i] < q[i] / Q16 ? -1.0 : 1.0);
             dhs_q_from_double(&g->r, qn, qb);
             dhsm_target_of(g, qb, &B);
-            DHT_EQ_INT(dh_path_line_q(&ch->p[k], &F, &B), DH_OK);
+            if (arc) {
+                arc_via(&F, &B, via);
+                if (dh_path_arc_q(&ch->p[k], &F, via, &B) != DH_OK) continue;
+            } else {
+                DHT_EQ_INT(dh_path_line_q(&ch->p[k], &F, &B), DH_OK);
+            }
             ok = dhsm_path_reachable(g, &ch->p[k], q);
         }
         DHT_TRUE(ok);
-        dhsm_ref_make(&ch->ref[k], &ch->p[k], NULL);
+        dhsm_ref_make(&ch->ref[k], &ch->p[k], arc ? via : NULL);
         ch->R[k] = (dh_qpos)(dht_rand_uniform(first ? 5.0 : 0.0, 24.0) * LS * QPOS);
         if (!first && dht_rand_u32() % 5u == 0u) ch->R[k] = 0;
         memcpy(q, qb, sizeof q);
@@ -158,7 +189,7 @@ static void chain_make(const dhsm_rig *g, const int32_t *q0, uint32_t n, int fir
 }
 
 typedef struct {
-    long periods, notok, blended, inside, stopped;
+    long periods, notok, blended, arcs, inside, stopped;
     dh_q30 minfeed;
 } run_stats;
 
@@ -180,14 +211,19 @@ static void run_chain(const dhsm_rig *g, const chain *ch, int stop, long rest, r
     dh_track_q *const t = &the_trk;
     const double V = ch->lim->vmax / QPOS, A = ch->lim->amax / QPOS;
     const double VJ = g->r.joint[0].vmax_q, AJ = g->r.joint[0].amax_q;
-    double Lmax = 0.0, NP, NJN;
+    double Lmax = 0.0, Rmax = 0.0, NA, NP, NJN;
     long i, n = 0, wv, wa, wvj, waj, still = -1, braking = -1;
     uint32_t k, done = 0;
     int32_t q[NJ];
     dh_frame_q Thold;
     int stop_done = !stop;
-    for (k = 0; k < ch->n; k++) Lmax = fmax(Lmax, ch->p[k].length);
-    NP = (1.0 + 2.0 * Lmax * 64.0 / DHSM_Q30) / QPOS + V * 1e-6;
+    for (k = 0; k < ch->n; k++) {
+        Lmax = fmax(Lmax, ch->p[k].length);
+        Rmax = fmax(Rmax, ch->p[k].radius);
+    }
+    /* an arc's point within 4 LSB + 2^-26 of its radius (dh_path_eval_q) */
+    NA = 4.0 + Rmax / 67108864.0;
+    NP = (1.0 + NA + 2.0 * Lmax * 64.0 / DHSM_Q30) / QPOS + V * 1e-6;
     NJN = 4.0 + VJ * 1e-6;
     wv = window_of(NP, V, 1);
     wa = window_of(NP, A, 2);
@@ -213,7 +249,7 @@ static void run_chain(const dhsm_rig *g, const chain *ch, int stop, long rest, r
             /* within the corner's dev (<= its radius) of the corner */
             const dh_qpos dev = qu->bg.dev;
             const double d = dhsm_dist3(pt, ch->ref[line].pb);
-            const double tol = (3.0 + 64.0 * (ch->p[line].length + ch->p[line + 1u].length) / DHSM_Q30) / QPOS;
+            const double tol = (3.0 + 2.0 * NA + 64.0 * (ch->p[line].length + ch->p[line + 1u].length) / DHSM_Q30) / QPOS;
             DHT_TRUE_MSG(dev <= ch->R[line], "%s: corner %u dev %ld > radius %ld", what, (unsigned)line, (long)dev,
                          (long)ch->R[line]);
             DHT_TRUE_MSG(d <= dev / QPOS + tol, "%s period %ld: %.4g mm from corner %u (dev %.4g)", what, i, d,
@@ -251,6 +287,7 @@ static void run_chain(const dhsm_rig *g, const chain *ch, int stop, long rest, r
             DHT_EQ_INT(qu->seq, line + 1u);
             done++;
             if (ov) rs->blended++;
+            if (ov && (ch->p[line].kind == DH_PATH_ARC || ch->p[line + 1u].kind == DH_PATH_ARC)) rs->arcs++;
             if (rep.last) {
                 DHT_TRUE(memcmp(&cmd.T, &ch->p[ch->n - 1u].B, sizeof cmd.T) == 0);
                 DHT_TRUE(tr.state == DH_TRACK_OK);
@@ -290,14 +327,14 @@ static const dhs_robot *const robots[] = { &dhs_ur5_mm, &dhs_puma560_mm };
 
 static void blend_queues_q(void)
 {
-    long total = 0;
+    long total = 0, total_arcs = 0;
     size_t ri;
     for (ri = 0; ri < sizeof robots / sizeof robots[0]; ri++) {
         dhsm_rig rig;
         chain ch;
         dh_queue_item_q items[NL];
         dhsm_rig *const g = &rig;
-        long it, n = DHT_ITER(6), periods = 0, blended = 0, inside = 0, stops = 0;
+        long it, n = DHT_ITER(6), periods = 0, blended = 0, arcs = 0, inside = 0, stops = 0;
         dhsm_rig_make(g, robots[ri], 180.0, 720.0);
         for (it = 0; it < n; it++) {
             double qa[DH_MAX_JOINTS];
@@ -315,15 +352,19 @@ static void blend_queues_q(void)
             run_chain(g, &ch, stop, rest, &rs, g->d->name);
             periods += rs.periods;
             blended += rs.blended;
+            arcs += rs.arcs;
             inside += rs.inside;
             stops += rs.stopped;
         }
         total += blended;
+        total_arcs += arcs;
         dht_reach_min("queue_q_blend.robot_blended", (double)blended);
-        dht_printf("%s: %ld chains, %ld periods, %ld corners passed blended (%ld periods inside), %ld stops inside\n",
-                   g->d->name, n, periods, blended, inside, stops);
+        dht_reach_min("queue_q_blend.robot_arc_corners", (double)arcs);
+        dht_printf("%s: %ld chains, %ld periods, %ld corners passed blended (%ld with an arc; %ld periods inside), "
+                   "%ld stops inside\n",
+                   g->d->name, n, periods, blended, arcs, inside, stops);
     }
-    DHT_TRUE(total > 0);
+    DHT_TRUE(total > 0 && total_arcs > 0);
 }
 
 /* The Puma's line its wrist cannot follow, blended into a line back
@@ -421,9 +462,8 @@ static void blend_q_errors(void)
     DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[1], &LIM, R), DH_OK);
     DHT_TRUE(the_items[0].seg.dur[4] > 0u && the_items[0].seg.dur[4] == the_items[1].seg.dur[0]);
     DHT_TRUE(the_items[0].seg.dev > 0 && the_items[0].seg.dev <= R);
-    /* an arc is refused (dh_queue_add_path_q appends it) */
-    DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &arc, &LIM, R), DH_ERR_ARG);
-    /* at rest: other limits, radius 0, after an arc */
+    /* at rest: other limits, radius 0, after an arc appended by
+     * dh_queue_add_path_q */
     lim.vmax = LIM.vmax / 2;
     DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[2], &lim, R), DH_OK);
     DHT_EQ_INT(the_items[1].seg.dur[4], 0u);
@@ -435,6 +475,26 @@ static void blend_q_errors(void)
     DHT_TRUE(the_items[2].blend == 0u && the_items[1].seg.dur[4] == 0u);
     DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[1], &LIM, R), DH_OK);
     DHT_EQ_INT(the_items[3].seg.dur[0], 0u);
+    /* an arc into a line and a line into an arc, blended; an arc whose
+     * radius is not positive holds no arc */
+    DHT_EQ_INT(dh_queue_init_q(qu, the_items, 4u), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &arc, &LIM, R), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[2], &LIM, R), DH_OK);
+    DHT_TRUE(the_items[0].seg.dur[4] > 0u && the_items[0].seg.dur[4] == the_items[1].seg.dur[0]);
+    DHT_TRUE(the_items[0].seg.dev > 0 && the_items[0].seg.dev <= R);
+    {
+        dh_path_q back, bad = arc;
+        dh_qpos v2[3];
+        memcpy(v2, via, sizeof v2);
+        v2[1] = via[1] + (int32_t)(50.0 * LS * QPOS);
+        DHT_EQ_INT(dh_path_arc_q(&back, &A, v2, &C), DH_OK);
+        bad.radius = 0;
+        DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &bad, &LIM, R), DH_ERR_ARG);
+        DHT_EQ_INT(dh_queue_init_q(qu, the_items, 4u), DH_OK);
+        DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[2], &LIM, R), DH_OK);
+        DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &back, &LIM, R), DH_OK);
+        DHT_TRUE(the_items[0].seg.dur[4] > 0u && the_items[0].seg.dev <= R);
+    }
     /* not starting at the last one's end: at rest */
     DHT_EQ_INT(dh_queue_init_q(qu, the_items, 4u), DH_OK);
     DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[0], &LIM, R), DH_OK);
