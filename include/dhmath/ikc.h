@@ -220,6 +220,13 @@ typedef struct {
     int32_t k[DH_IKC_K];         /**< family constants */
     dh_frame_q pre_inv;          /**< inverse of the frame before the canonical chain */
     dh_frame_q post_inv;         /**< inverse of the frame after it (tool) */
+    uint32_t calibrated;         /**< 1: within the calibration tolerance of kind (a..ca idealised, xa..xca exact); 0: exact */
+    dh_qpos xa[DH_IKC_JOINTS];   /**< exact canonical a (calibrated; 0 otherwise) */
+    dh_qpos xd[DH_IKC_JOINTS];   /**< exact canonical d */
+    dh_q30 xsa[DH_IKC_JOINTS];   /**< exact canonical sin(alpha) */
+    dh_q30 xca[DH_IKC_JOINTS];   /**< exact canonical cos(alpha) */
+    dh_qpos xw5[3];              /**< the exact chain's joint 5 point in the tool frame (calibrated) */
+    uint32_t xframes;            /**< bit 0: a base frame (pre_inv not the identity), bit 1: a tool frame */
 } dh_ikc_model_q;
 
 /** One float solution. */
