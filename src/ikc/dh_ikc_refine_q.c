@@ -41,6 +41,7 @@
  * of their squares over the squared bounds: e_p^2 2^8 + e_r^2 <= 2^22. */
 #define REFQ_POS_SH 7
 #define REFQ_ROT_SH 11
+#define REFQ_SCALE ((int32_t)1 << (REFQ_ROT_SH - REFQ_POS_SH))
 /* an error component beyond this (LSB) is far from converged */
 #define REFQ_ERR_BIG ((int32_t)1 << 20)
 /* Largest joint step, 0.2 rad in Q2.30 */
@@ -144,14 +145,15 @@ int dh_ikc_calibrate_q_(dh_ikc_model_q *m)
 
 /* ---- refinement ---------------------------------------------------------------- */
 
-/* Work data of one refinement: cs the cosines and sines of the branch's
- * canonical values (c1, s1, ..., c6, s6; Q2.30); u the exact chain's end
- * frame (columns x, y, z Q2.30, the joint 5 point dh_qpos), then the errors
- * (position u[0..2], rotation u[3..5]) and the point u[6..8], then the
- * steps; m the model, T the target. */
+/* Work data of one refinement: u the exact chain's end frame (columns x,
+ * y, z Q2.30, the joint 5 point dh_qpos), then the errors (position u[0..2],
+ * rotation u[3..5]) and the point u[6..8], then the steps; t and the
+ * slots of u that the next helper does not read hold the cosines and sines
+ * it reads (Q2.30, written by the entry through dh_sincos_q, so that no
+ * helper calls it); m the model, T the target. */
 typedef struct {
-    int32_t cs[12];
     int32_t u[12];
+    int32_t t[2];
     const dh_ikc_model_q *m;
     const dh_frame_q *T;
 } refq_work;
@@ -164,7 +166,8 @@ static DH_NOINLINE int32_t refq_div(int64_t num, int64_t den, int sh)
     uint64_t a = dh_ikc_abs64_q_(num), b = dh_ikc_abs64_q_(den);
     const int neg = (num < 0) != (den < 0);
     int s = (int)dh_q_bitlen64(b) - 31;
-    uint32_t q = 0u, r, i;
+    uint32_t q = 0u, r, bb, i;
+    bb = (uint32_t)((s >= 0) ? b >> (unsigned)s : b << (unsigned)(-s));
     /* b 2^-s in [2^30, 2^31); a 2^(sh - s) */
     s = sh - s;
     if (s >= 0) {
@@ -173,20 +176,17 @@ static DH_NOINLINE int32_t refq_div(int64_t num, int64_t den, int sh)
     } else {
         a = (s < -62) ? 0u : (a + ((uint64_t)1 << (unsigned)(-s - 1))) >> (unsigned)(-s);
     }
-    s = (int)dh_q_bitlen64(b) - 31;
-    b = (s >= 0) ? b >> (unsigned)s : b << (unsigned)(-s);
-    if ((a >> 31) >= b) return neg ? -INT32_MAX : INT32_MAX;
+    if ((a >> 31) >= bb) return neg ? -INT32_MAX : INT32_MAX;
     r = (uint32_t)(a >> 31);
     for (i = 0; i < 31u; i++) {
-        const uint32_t t = (r << 1) | (uint32_t)((a >> (30u - i)) & 1u);
+        r = (r << 1) | (uint32_t)((a >> (30u - i)) & 1u);
         q <<= 1;
-        r = t;
-        if (r >= (uint32_t)b) {
-            r -= (uint32_t)b;
+        if (r >= bb) {
+            r -= bb;
             q |= 1u;
         }
     }
-    if (q < (uint32_t)INT32_MAX && r >= (uint32_t)b - r) q++;
+    if (q < (uint32_t)INT32_MAX && r >= bb - r) q++;
     return neg ? -(int32_t)q : (int32_t)q;
 }
 
@@ -198,60 +198,82 @@ DH_INLINE int32_t refq_sat(int64_t v)
     return (int32_t)v;
 }
 
-/* cs of the canonical values q */
-static DH_NOINLINE void refq_trig(const int32_t *q, refq_work *w)
+/* u <- the identity frame (the exact chain's forward kinematics starts) */
+static DH_NOINLINE void refq_fk_init(refq_work *w)
 {
-    uint32_t i;
-    for (i = 0; i < 6u; i++) dh_sincos_q(q[i], &w->cs[2u * i + 1u], &w->cs[2u * i]);
+    uint32_t r;
+    for (r = 0; r < 12u; r++) w->u[r] = ((r & 3u) == 0u && r < 9u) ? DH_Q_ONE30 : 0;
 }
 
-/* The exact chain's T06 from cs into u (rows of the columns updated in
- * place per joint), its point moved to the joint 5 point; 1 on overflow. */
-static DH_NOINLINE int refq_fk(refq_work *w)
+/* Joint i of the exact chain (cos, sin of its canonical value in t[0],
+ * t[1]) applied to u in three helpers, each a pass over the three rows:
+ * refq_turn the turn about z, refq_offset the offsets a_i, d_i (1 on
+ * overflow), refq_twist the twist, and after joint 6 the point moved back
+ * to the joint 5 point (frame 5's origin: p6 - a6 x6 - d6 z5; 1 on
+ * overflow). */
+static DH_NOINLINE void refq_turn(refq_work *w)
 {
-    const dh_ikc_model_q *m = w->m;
+    const int32_t c = w->t[0], s = w->t[1];
     int32_t *u = w->u;
-    uint32_t i, r;
-    int ovf = 0;
-    for (r = 0; r < 12u; r++) u[r] = ((r & 3u) == 0u && r < 9u) ? DH_Q_ONE30 : 0;
-    for (i = 0; i < 6u; i++) {
-        const int32_t c = w->cs[2u * i], s = w->cs[2u * i + 1u];
-        for (r = 0; r < 3u; r++) {
-            const int32_t x = u[r];
-            u[r] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(c, x), s, u[3u + r]));
-            u[3u + r] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(c, u[3u + r]), -s, x));
-            u[9u + r] = dh_q_pos_rnd30(u[9u + r], dh_q_mla64(dh_q_mul64(m->xd[i], u[6u + r]), m->xa[i], u[r]), &ovf);
-        }
-        for (r = 0; r < 3u; r++) {
-            const int32_t y = u[3u + r];
-            u[3u + r] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(m->xca[i], y), m->xsa[i], u[6u + r]));
-            u[6u + r] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(m->xca[i], u[6u + r]), -m->xsa[i], y));
-        }
-    }
+    uint32_t r;
     for (r = 0; r < 3u; r++) {
-        const int64_t t = dh_q_mla64(dh_q_mul64(m->xsa[5], u[3u + r]), m->xca[5], u[6u + r]);
-        u[9u + r] = dh_q_pos_rnd30(u[9u + r], -dh_q_mla64(dh_q_mul64(m->xa[5], u[r]), m->xd[5], dh_ikc_r30_q_(t)), &ovf);
+        const int32_t x = u[r], y = u[3u + r];
+        u[r] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(c, x), s, y));
+        u[3u + r] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(c, y), -s, x));
+    }
+}
+
+static DH_NOINLINE int refq_offset(refq_work *w, uint32_t i)
+{
+    const int32_t a = w->m->xa[i], d = w->m->xd[i];
+    int32_t *u = w->u;
+    uint32_t r;
+    int ovf = 0;
+    for (r = 0; r < 3u; r++) u[9u + r] = dh_q_pos_rnd30(u[9u + r], dh_q_mla64(dh_q_mul64(d, u[6u + r]), a, u[r]), &ovf);
+    return ovf;
+}
+
+static DH_NOINLINE int refq_twist(refq_work *w, uint32_t i)
+{
+    const int32_t sa = w->m->xsa[i], ca = w->m->xca[i];
+    int32_t *u = w->u;
+    uint32_t r;
+    int ovf = 0;
+    for (r = 0; r < 3u; r++) {
+        const int32_t y = u[3u + r], z = u[6u + r];
+        u[3u + r] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(ca, y), sa, z));
+        u[6u + r] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(ca, z), -sa, y));
+        if (i == 5u) {
+            const int32_t z5 = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(sa, u[3u + r]), ca, u[6u + r]));
+            u[9u + r] = dh_q_pos_rnd30(u[9u + r], -dh_q_mla64(dh_q_mul64(w->m->xa[5], u[r]), w->m->xd[5], z5), &ovf);
+        }
     }
     return ovf;
 }
 
-/* u's rotation times the tool frame's (post = post_inv^-1, rotation S^T);
- * then u <- pre u (pre = pre_inv^-1: each column v to R^T v, the point to
- * R^T (v - p)); each skipped when the model has no such frame. 1 on
- * overflow. */
-static DH_NOINLINE int refq_frames(refq_work *w)
+/* u's rotation times the tool frame's (post = post_inv^-1, rotation S^T),
+ * when there is one */
+static DH_NOINLINE void refq_tool(refq_work *w)
 {
     const dh_frame_q *P = &w->m->post_inv;
     int32_t *u = w->u;
     uint32_t c, r;
+    if ((w->m->xframes & 2u) == 0u) return;
+    for (r = 0; r < 3u; r++) {
+        const int32_t x = u[r], y = u[3u + r], z = u[6u + r];
+        for (c = 0; c < 3u; c++)
+            u[3u * c + r] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mla64(dh_q_mul64(x, P->r[0][c]), y, P->r[1][c]), z, P->r[2][c]));
+    }
+}
+
+/* u <- pre u (pre = pre_inv^-1: each column v to R^T v, the point to
+ * R^T (v - p)), when there is a base frame; 1 on overflow */
+static DH_NOINLINE int refq_base(refq_work *w)
+{
+    const dh_frame_q *P = &w->m->pre_inv;
+    int32_t *u = w->u;
+    uint32_t c, r;
     int ovf = 0;
-    if ((w->m->xframes & 2u) != 0u)
-        for (r = 0; r < 3u; r++) {
-            const int32_t x = u[r], y = u[3u + r], z = u[6u + r];
-            for (c = 0; c < 3u; c++)
-                u[3u * c + r] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mla64(dh_q_mul64(x, P->r[0][c]), y, P->r[1][c]), z, P->r[2][c]));
-        }
-    P = &w->m->pre_inv;
     if ((w->m->xframes & 1u) == 0u) return 0;
     for (r = 0; r < 3u; r++) u[9u + r] = dh_q_sat32((int64_t)u[9u + r] - P->p[r], &ovf);
     for (c = 0; c < 4u; c++) {
@@ -266,150 +288,185 @@ static DH_NOINLINE int refq_frames(refq_work *w)
 }
 
 /* The rotation error (x x xt + y x yt + z x zt) / 2 (rad, Q2.30) of u
- * against the target into u[3..5]; the position error of the joint 5
- * point (target minus chain) into u[0..2], the point into u[6..8]; then the
- * verdict on branch b after it steps: converged: b flagged DH_IKC_REFINED,
- * REFQ_DONE; else it + 1 (REFQ_DONE after DH_IKC_CAL_STEPS). */
-static DH_NOINLINE uint32_t refq_verdict(refq_work *w, dh_ikc_sol_q *b, uint32_t it)
+ * against the target, component by component (the first two into t), then
+ * into u[3..5] (the rotation is not read after it). */
+static DH_NOINLINE void refq_rot(refq_work *w)
+{
+    const dh_frame_q *T = w->T;
+    int32_t *u = w->u;
+    int32_t e2 = 0;
+    uint32_t j, k;
+    for (j = 0; j < 3u; j++) {
+        const uint32_t a = (j == 2u) ? 0u : j + 1u, b = (j == 0u) ? 2u : j - 1u;
+        int64_t e = 0;
+        for (k = 0; k < 3u; k++) e = dh_q_mla64(dh_q_mla64(e, u[3u * k + a], T->r[k][b]), -u[3u * k + b], T->r[k][a]);
+        e2 = (int32_t)dh_q_rshr(e, 31u);
+        if (j < 2u) w->t[j] = e2;
+    }
+    u[3] = w->t[0];
+    u[4] = w->t[1];
+    u[5] = e2;
+}
+
+/* The position error of the joint 5 point (target minus chain) into
+ * u[0..2], the point into u[6..8]. */
+static DH_NOINLINE void refq_perr(refq_work *w)
 {
     const dh_frame_q *T = w->T;
     const int32_t *p = w->m->xw5;
     int32_t *u = w->u;
-    int64_t e0 = 0, e1 = 0, e2 = 0, ep = 0, er = 0;
     uint32_t k;
-    int big = 0;
-    for (k = 0; k < 3u; k++) {
-        const int32_t *t = T->r[k];
-        const int32_t v0 = u[3u * k], v1 = u[3u * k + 1u], v2 = u[3u * k + 2u];
-        e0 = dh_q_mla64(dh_q_mla64(e0, v1, t[2]), -v2, t[1]);
-        e1 = dh_q_mla64(dh_q_mla64(e1, v2, t[0]), -v0, t[2]);
-        e2 = dh_q_mla64(dh_q_mla64(e2, v0, t[1]), -v1, t[0]);
-    }
-    u[3] = (int32_t)dh_q_rshr(e0, 31u);
-    u[4] = (int32_t)dh_q_rshr(e1, 31u);
-    u[5] = (int32_t)dh_q_rshr(e2, 31u);
     for (k = 0; k < 3u; k++) {
         const int64_t t = dh_q_mla64(dh_q_mla64(dh_q_mul64(T->r[0][k], p[0]), T->r[1][k], p[1]), T->r[2][k], p[2]);
-        const int64_t e = (int64_t)T->p[k] + ((t + DH_Q_HALF30) >> 30) - u[9u + k];
-        u[k] = refq_sat(e);
+        u[k] = refq_sat((int64_t)T->p[k] + ((t + DH_Q_HALF30) >> 30) - u[9u + k]);
         u[6u + k] = u[9u + k];
-        if (dh_q_abs_u32(u[k]) > (uint32_t)REFQ_ERR_BIG || dh_q_abs_u32(u[3u + k]) > (uint32_t)REFQ_ERR_BIG) big = 1;
     }
-    if (!big) {
-        for (k = 0; k < 3u; k++) {
-            ep = dh_q_mla64(ep, u[k], u[k]);
-            er = dh_q_mla64(er, u[3u + k], u[3u + k]);
-        }
-        if ((ep << (2 * (REFQ_ROT_SH - REFQ_POS_SH))) + er <= ((int64_t)1 << (2 * REFQ_ROT_SH))) {
-            b->flags |= DH_IKC_REFINED;
-            return REFQ_DONE;
-        }
+}
+
+/* The verdict on branch b after it steps: converged: b flagged
+ * DH_IKC_REFINED, REFQ_DONE; else it + 1 (REFQ_DONE after
+ * DH_IKC_CAL_STEPS). */
+static DH_NOINLINE uint32_t refq_pos(const refq_work *w, dh_ikc_sol_q *b, uint32_t it)
+{
+    const int32_t *u = w->u;
+    int64_t ep = 0;
+    uint32_t k;
+    for (k = 0; k < 6u; k++)
+        if (dh_q_abs_u32(u[k]) > (uint32_t)REFQ_ERR_BIG) return it + 1u;
+    /* e_p^2 2^4 + e_r^2 2^-4 <= 2^18 (e_r^2 2^-4 from e_r (e_r / 16), within e_r / 16 below it) */
+    for (k = 0; k < 3u; k++)
+        ep = dh_q_mla64(dh_q_mla64(ep, u[k] * REFQ_SCALE, u[k]), u[3u + k], u[3u + k] / REFQ_SCALE);
+    if (ep <= ((int64_t)1 << (REFQ_ROT_SH + REFQ_POS_SH))) {
+        b->flags |= DH_IKC_REFINED;
+        return REFQ_DONE;
     }
     return it + 1u;
 }
 
-/* The errors and the point into the basis of the idealised frame 1, in
- * place: pre^-1 (skipped when the identity), then Rz(theta1)^T,
- * Rx(alpha1)^T; the point from frame 1's origin (a1 c1, a1 s1, d1). */
-static DH_NOINLINE void refq_frame1(refq_work *w)
+/* The errors and the point into the basis of the base frame of the
+ * canonical chain (pre^-1), when there is one; 1 on overflow. */
+static DH_NOINLINE int refq_unbase(refq_work *w)
 {
-    const dh_ikc_model_q *m = w->m;
-    const dh_frame_q *P = &m->pre_inv;
-    const int32_t c1 = w->cs[0], s1 = w->cs[1];
+    const dh_frame_q *P = &w->m->pre_inv;
     int32_t *u = w->u;
     uint32_t k, r;
     int ovf = 0;
-    if ((m->xframes & 1u) != 0u)
-        for (k = 0; k < 3u; k++) {
-            int32_t *v = &u[3u * k];
-            const int32_t x = v[0], y = v[1], z = v[2];
-            for (r = 0; r < 3u; r++) {
-                const int64_t t = dh_q_mla64(dh_q_mla64(dh_q_mul64(P->r[0][r], x), P->r[1][r], y), P->r[2][r], z);
-                v[r] = dh_q_pos_rnd30((k == 2u) ? P->p[r] : 0, t, &ovf);
-            }
+    if ((w->m->xframes & 1u) == 0u) return 0;
+    for (k = 0; k < 3u; k++) {
+        int32_t *v = &u[3u * k];
+        const int32_t x = v[0], y = v[1], z = v[2];
+        for (r = 0; r < 3u; r++) {
+            const int64_t t = dh_q_mla64(dh_q_mla64(dh_q_mul64(P->r[0][r], x), P->r[1][r], y), P->r[2][r], z);
+            v[r] = dh_q_pos_rnd30((k == 2u) ? P->p[r] : 0, t, &ovf);
         }
+    }
+    return ovf;
+}
+
+/* Then into the idealised frame 1 (c1, s1 in u[9], u[10]), in place, in
+ * two helpers: refq_frame1 the point from frame 1's origin (a1 c1, a1 s1,
+ * d1) and Rz(theta1)^T, refq_alpha1 Rx(alpha1)^T. */
+static DH_NOINLINE void refq_frame1(refq_work *w)
+{
+    const dh_ikc_model_q *m = w->m;
+    const int32_t c1 = w->u[9], s1 = w->u[10];
+    int32_t *u = w->u;
+    uint32_t k;
     u[6] = refq_sat((int64_t)u[6] - dh_ikc_r30_q_(dh_q_mul64(m->a[0], c1)));
     u[7] = refq_sat((int64_t)u[7] - dh_ikc_r30_q_(dh_q_mul64(m->a[0], s1)));
     u[8] = refq_sat((int64_t)u[8] - m->d[0]);
-    for (k = 0; k < 3u; k++) {
-        int32_t *v = &u[3u * k];
-        const int32_t x = v[0], y = v[1];
-        v[0] = refq_sat((dh_q_mla64(dh_q_mul64(c1, x), s1, y) + DH_Q_HALF30) >> 30);
-        v[1] = refq_sat((dh_q_mla64(dh_q_mul64(c1, y), -s1, x) + DH_Q_HALF30) >> 30);
-    }
-    for (k = 0; k < 3u; k++) {
-        int32_t *v = &u[3u * k];
-        const int32_t y = v[1], z = v[2];
-        v[1] = refq_sat((dh_q_mla64(dh_q_mul64(m->ca[0], y), m->sa[0], z) + DH_Q_HALF30) >> 30);
-        v[2] = refq_sat((dh_q_mla64(dh_q_mul64(m->ca[0], z), -m->sa[0], y) + DH_Q_HALF30) >> 30);
+    for (k = 0; k < 9u; k += 3u) {
+        const int32_t x = u[k], y = u[k + 1u];
+        u[k] = refq_sat(dh_q_rshr(dh_q_mla64(dh_q_mul64(c1, x), s1, y), 30u));
+        u[k + 1u] = refq_sat(dh_q_rshr(dh_q_mla64(dh_q_mul64(c1, y), -s1, x), 30u));
     }
 }
 
-/* cos and sin of phi = theta2 + s2 theta3 (with4 0) or + s23 theta4 into
- * cp[0], cp[1] (Q2.30) */
-static void refq_phi(const dh_ikc_model_q *m, const int32_t *cs, int with4, int32_t *cp)
+static DH_NOINLINE void refq_alpha1(refq_work *w)
 {
-    const int32_t s3 = m->k[RQ_S2] * cs[5];
-    cp[0] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(cs[2], cs[4]), -s3, cs[3]));
-    cp[1] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(cs[3], cs[4]), s3, cs[2]));
-    if (with4) {
-        const int32_t s4 = m->k[RQ_S23] * cs[7], c = cp[0], s = cp[1];
-        cp[0] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(c, cs[6]), -s4, s));
-        cp[1] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(s, cs[6]), s4, c));
+    const int32_t ca = w->m->ca[0], sa = w->m->sa[0];
+    int32_t *u = w->u;
+    uint32_t k;
+    for (k = 0; k < 9u; k += 3u) {
+        const int32_t y = u[k + 1u], z = u[k + 2u];
+        u[k + 1u] = refq_sat(dh_q_rshr(dh_q_mla64(dh_q_mul64(ca, y), sa, z), 30u));
+        u[k + 2u] = refq_sat(dh_q_rshr(dh_q_mla64(dh_q_mul64(ca, z), -sa, y), 30u));
     }
 }
 
 /* Joints 1, 5, 6 (rad, Q2.30) from the error along axis 2 and the rotation
  * error across it (rows lin_z, ang_x, ang_y of the idealised Jacobian in
- * frame 1) into u[9..11]; 0 at a singularity (joint 5 point on axis 2's
- * plane through axis 1, or s5 within 2^-20 of 0). */
+ * frame 1: joint 1 (-tau (px + a1), 0, tau), joint 5 (0, sb sphi,
+ * -sb cphi), joint 6 (0, w5 s5 cphi, w5 s5 sphi)) into u[9..11], joint
+ * 6's part of the rotation about axis 2 (sb w5 c5) added to u[5]; u[9],
+ * u[10] cos and sin of phi = theta2 + s2 theta3 + s23 theta4, u[11] s5,
+ * t[0] c5; in two helpers: refq_a joint 1's step into u[2] (0 at a
+ * singularity: the joint 5 point on the plane of axes 1 and 2 within
+ * 2^-20 of the reach, or |s5| within 2^-20), refq_a2 the rest. */
 static DH_NOINLINE int refq_a(refq_work *w)
 {
     const dh_ikc_model_q *m = w->m;
-    const int32_t tau = m->k[RQ_TAU];
     int32_t *u = w->u;
     const int64_t r = (int64_t)u[6] + m->a[0];
-    const uint64_t scale = (uint64_t)dh_q_abs_u32(u[6]) + dh_q_abs_u32(u[7]) + dh_q_abs_u32(m->a[0]);
-    int32_t d1, r2;
-    if ((dh_ikc_abs64_q_(r) << 20) <= scale || dh_q_abs_u32(w->cs[9]) <= (1u << 10)) return 0;
-    d1 = refq_div(-(int64_t)tau * u[2], r, 30);
-    r2 = refq_sat((int64_t)u[4] - (int64_t)tau * d1);
-    refq_phi(m, w->cs, 1, &u[9]);
-    u[11] = m->k[RQ_W5] * refq_div(dh_q_mla64(dh_q_mul64(u[9], u[3]), u[10], r2), w->cs[9], 0);
-    u[10] = m->k[RQ_SB] * refq_sat(dh_q_rshr(dh_q_mla64(dh_q_mul64(u[10], u[3]), -u[9], r2), 30u));
-    u[9] = d1;
+    if ((dh_ikc_abs64_q_(r) << 20) <= (uint64_t)dh_q_abs_u32(u[6]) + dh_q_abs_u32(u[7]) + dh_q_abs_u32(m->a[0]) ||
+        dh_q_abs_u32(u[11]) <= (1u << 10))
+        return 0;
+    u[2] = refq_div(-(int64_t)m->k[RQ_TAU] * u[2], r, 30);
     return 1;
 }
 
-/* Joints 2, 3, 4 (rad, Q2.30) into u[6..8] from the planar errors and the
- * rotation about axis 2 less the parts of joints 1 and 6 (u[9], u[11]):
- * rows lin_x, lin_y, ang_z of the idealised Jacobian in frame 1, a planar
- * 3R; 0 at a singularity (elbow stretched or folded within 2^-20). */
+static DH_NOINLINE void refq_a2(refq_work *w)
+{
+    const dh_ikc_model_q *m = w->m;
+    const int32_t cp = w->u[9], sp = w->u[10], d1 = w->u[2];
+    int32_t *u = w->u;
+    const int32_t r2 = refq_sat((int64_t)u[4] - (int64_t)m->k[RQ_TAU] * d1);
+    u[11] = m->k[RQ_W5] * refq_div(dh_q_mla64(dh_q_mul64(cp, u[3]), sp, r2), u[11], 0);
+    u[10] = m->k[RQ_SB] * refq_sat(dh_q_rshr(dh_q_mla64(dh_q_mul64(sp, u[3]), -cp, r2), 30u));
+    u[9] = d1;
+    u[5] = refq_sat((int64_t)u[5] + (int64_t)(m->k[RQ_SB] * m->k[RQ_W5]) * dh_ikc_r30_q_(dh_q_mul64(w->t[0], u[11])));
+}
+
+/* Joints 2, 3, 4 from the planar errors and the rotation about axis 2 less
+ * the parts of joints 1 and 6 (u[9], u[11]): rows lin_x, lin_y, ang_z of
+ * the idealised Jacobian in frame 1, a planar 3R, in two helpers. refq_b
+ * (u[3], u[4] cos and sin of theta2 + s2 theta3, t[0], t[1] c2, s2; u[5]
+ * om, the rotation about axis 2 less joint 6's part): o3 = a2 (c2, s2) +
+ * a3 (cos, sin)(theta2 + s2 theta3) (the origin of frame 3) into u[3],
+ * u[4], the cross (c2, s2) x o3 into u[2], the planar right sides gx, gy
+ * into u[1], u[0]; 0 at a singularity (elbow stretched or folded within
+ * 2^-20). refq_b2: the steps (rad, Q2.30) into u[6..8]. */
 static DH_NOINLINE int refq_b(refq_work *w)
 {
     const dh_ikc_model_q *m = w->m;
-    const int32_t *cs = w->cs;
+    const int32_t *t = w->t;
     int32_t *u = w->u;
-    int32_t cp[2], om, gx, gy, u3, cr;
-    int64_t det, num;
-    refq_phi(m, cs, 0, cp);
-    /* o3 = a2 (c2, s2) + a3 (cos, sin)(theta2 + s2 theta3) into cp (dh_qpos) */
-    cp[0] = refq_sat(dh_q_rshr(dh_q_mla64(dh_q_mul64(m->a[1], cs[2]), m->a[2], cp[0]), 30u));
-    cp[1] = refq_sat(dh_q_rshr(dh_q_mla64(dh_q_mul64(m->a[1], cs[3]), m->a[2], cp[1]), 30u));
-    cr = refq_sat(dh_q_rshr(dh_q_mla64(dh_q_mul64(cs[2], cp[1]), -cs[3], cp[0]), 30u));
-    det = dh_q_mul64(m->a[1], cr);
-    if (dh_ikc_abs64_q_(det) <= (dh_ikc_abs64_q_(dh_q_mul64(m->a[1], m->a[2])) >> 20)) return 0;
-    om = refq_sat((int64_t)u[5] + (int64_t)(m->k[RQ_SB] * m->k[RQ_W5]) * dh_ikc_r30_q_(dh_q_mul64(cs[8], u[11])));
-    gx = refq_sat(dh_q_rshr(dh_q_mul64(u[6], om), 30u) - u[1]);
-    gy = refq_sat(dh_q_rshr(dh_q_mul64(u[7], om), 30u) + u[0] - (int64_t)m->k[RQ_TAU] * dh_q_rshr(dh_q_mul64(u[8], u[9]), 30u));
-    if (dh_q_abs_u32(gx) > (1u << 30) || dh_q_abs_u32(gy) > (1u << 30)) return 0;
-    u3 = refq_div(dh_q_mla64(dh_q_mul64(gx, cp[1]), -gy, cp[0]), det, 30);
-    num = dh_q_mul64(m->a[1], refq_sat(dh_q_rshr(dh_q_mla64(dh_q_mul64(cs[2], gy), -cs[3], gx), 30u)));
-    gx = refq_div(num, det, 30);
-    u[6] = refq_sat((int64_t)om - u3 - gx);
+    const int32_t om = u[5];
+    int32_t cr;
+    u[3] = refq_sat(dh_q_rshr(dh_q_mla64(dh_q_mul64(m->a[1], t[0]), m->a[2], u[3]), 30u));
+    u[4] = refq_sat(dh_q_rshr(dh_q_mla64(dh_q_mul64(m->a[1], t[1]), m->a[2], u[4]), 30u));
+    cr = refq_sat(dh_q_rshr(dh_q_mla64(dh_q_mul64(t[0], u[4]), -t[1], u[3]), 30u));
+    if (dh_ikc_abs64_q_(dh_q_mul64(m->a[1], cr)) <= (dh_ikc_abs64_q_(dh_q_mul64(m->a[1], m->a[2])) >> 20)) return 0;
+    u[2] = cr;
+    u[1] = refq_sat(dh_q_rshr(dh_q_mul64(u[6], om), 30u) - u[1]);
+    u[0] = refq_sat(dh_q_rshr(dh_q_mul64(u[7], om), 30u) + u[0] -
+                    (int64_t)m->k[RQ_TAU] * dh_q_rshr(dh_q_mul64(u[8], u[9]), 30u));
+    return dh_q_abs_u32(u[0]) <= (1u << 30) && dh_q_abs_u32(u[1]) <= (1u << 30);
+}
+
+static DH_NOINLINE void refq_b2(refq_work *w)
+{
+    const dh_ikc_model_q *m = w->m;
+    const int32_t *t = w->t;
+    int32_t *u = w->u;
+    const int64_t det = dh_q_mul64(m->a[1], u[2]);
+    const int32_t gx = u[1], gy = u[0];
+    const int32_t u3 = refq_div(dh_q_mla64(dh_q_mul64(gx, u[4]), -gy, u[3]), det, 30);
+    const int32_t u4 =
+        refq_div(dh_q_mul64(m->a[1], refq_sat(dh_q_rshr(dh_q_mla64(dh_q_mul64(t[0], gy), -t[1], gx), 30u))), det, 30);
+    u[6] = refq_sat((int64_t)u[5] - u3 - u4);
     u[7] = m->k[RQ_S2] * u3;
-    u[8] = m->k[RQ_S23] * gx;
-    return 1;
+    u[8] = m->k[RQ_S23] * u4;
 }
 
 /* The steps (rad, Q2.30; joints 1, 5, 6 in u[9..11], 2, 3, 4 in u[6..8]),
@@ -450,27 +507,56 @@ static DH_NOINLINE uint32_t refq_pack(dh_ikc_sol_q *sol, uint32_t raw)
     return n;
 }
 
+/* theta2 + s2 theta3 (+ s23 theta4 with with4) of the canonical values q
+ * (each in (-180, 180]: the sum within +-540 degrees) */
+DH_INLINE int32_t refq_phi(const dh_ikc_model_q *m, const int32_t *q, int with4)
+{
+    int32_t v = q[1] + m->k[RQ_S2] * q[2];
+    if (with4) v += m->k[RQ_S23] * q[3];
+    return v;
+}
+
 /* Each raw branch refined in its slot: at most DH_IKC_CAL_STEPS steps,
  * each one exact forward kinematics; the helpers run in sequence from
- * here. */
+ * here, and so do the dh_sincos_q calls that fill w.t for them. */
 uint32_t dh_ikc_refine_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_sol_q *sol, uint32_t raw)
 {
     refq_work w;
-    uint32_t s, it;
+    uint32_t s, it, i;
     w.m = m;
     w.T = T;
     if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;
     for (s = 0; s < raw; s++) {
+        int32_t *q = sol[s].q;
         sol[s].flags &= ~(uint32_t)DH_IKC_REFINED;
         it = 0u;
         while (it < REFQ_DONE) {
-            refq_trig(sol[s].q, &w);
-            if (refq_fk(&w) || refq_frames(&w)) break;
-            it = refq_verdict(&w, &sol[s], it);
-            if (it >= REFQ_DONE) break;
+            int ovf = 0;
+            refq_fk_init(&w);
+            for (i = 0; i < 6u; i++) {
+                dh_sincos_q(q[i], &w.t[1], &w.t[0]);
+                refq_turn(&w);
+                ovf |= refq_offset(&w, i);
+                ovf |= refq_twist(&w, i);
+            }
+            refq_tool(&w);
+            if (ovf || refq_base(&w)) break;
+            refq_rot(&w);
+            refq_perr(&w);
+            it = refq_pos(&w, &sol[s], it);
+            if (it >= REFQ_DONE || refq_unbase(&w)) break;
+            dh_sincos_q(q[0], &w.u[10], &w.u[9]);
             refq_frame1(&w);
-            if (!refq_a(&w) || !refq_b(&w)) break;
-            refq_apply(&w, sol[s].q);
+            refq_alpha1(&w);
+            dh_sincos_q(refq_phi(m, q, 1), &w.u[10], &w.u[9]);
+            dh_sincos_q(q[4], &w.u[11], &w.t[0]);
+            if (!refq_a(&w)) break;
+            refq_a2(&w);
+            dh_sincos_q(refq_phi(m, q, 0), &w.u[4], &w.u[3]);
+            dh_sincos_q(q[1], &w.t[1], &w.t[0]);
+            if (!refq_b(&w)) break;
+            refq_b2(&w);
+            refq_apply(&w, q);
         }
     }
     return refq_pack(sol, raw);
