@@ -418,20 +418,6 @@ static DH_NOINLINE int ikcq_row_apply(const dh_frame_q *F, dh_ikc_sol_q *sol, un
     return ovf;
 }
 
-/* 1 when F is the identity frame, word by word (the same answer as a
- * memcmp with the identity frame: no padding; a fraction of its cost on the
- * cores whose memcmp goes byte by byte) */
-static int ikcq_is_identity(const dh_frame_q *F)
-{
-    unsigned c, i;
-    for (c = 0; c < 3u; c++) {
-        for (i = 0; i < 3u; i++)
-            if (F->r[c][i] != ((c == i) ? DH_Q_ONE30 : 0)) return 0;
-        if (F->p[c] != 0) return 0;
-    }
-    return 1;
-}
-
 /* T06 = pre_inv T post_inv into the scratch of sol, identity products
  * skipped; 1 on overflow */
 static DH_NOINLINE int ikcq_t06(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_sol_q *sol)
@@ -440,9 +426,9 @@ static DH_NOINLINE int ikcq_t06(const dh_ikc_model_q *m, const dh_frame_q *T, dh
     int ovf = 0;
     for (c = 0; c < 4u; c++)
         for (i = 0; i < 3u; i++) DH_IKC_T06_COL_(sol, c)[i] = (c < 3u) ? T->r[c][i] : T->p[i];
-    if (!ikcq_is_identity(&m->pre_inv))
+    if (!dh_ikc_is_identity_q_(&m->pre_inv))
         for (c = 0; c < 4u; c++) ovf |= ikcq_col_apply(&m->pre_inv, DH_IKC_T06_COL_(sol, c), c == 3u);
-    if (!ikcq_is_identity(&m->post_inv))
+    if (!dh_ikc_is_identity_q_(&m->post_inv))
         for (i = 0; i < 3u; i++) ovf |= ikcq_row_apply(&m->post_inv, sol, i);
     return ovf;
 }

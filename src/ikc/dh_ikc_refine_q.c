@@ -83,18 +83,6 @@ static DH_NOINLINE void refq_keep(dh_ikc_model_q *m, int to)
     }
 }
 
-/* 1 when F is the identity frame */
-static int refq_identity(const dh_frame_q *F)
-{
-    unsigned c, i;
-    for (c = 0; c < 3u; c++) {
-        for (i = 0; i < 3u; i++)
-            if (F->r[c][i] != ((c == i) ? DH_Q_ONE30 : 0)) return 0;
-        if (F->p[c] != 0) return 0;
-    }
-    return 1;
-}
-
 /* The model completed as calibrated: frame 5's origin seen from the tool
  * (post^-1 (-a6, -d6 sa6, -d6 ca6), exact chain) and the frame bits. 0 on
  * overflow (the exact chain put back). */
@@ -112,7 +100,7 @@ static DH_NOINLINE int refq_complete(dh_ikc_model_q *m)
                                                        P->r[2][i], w[2]),
                                    &ovf);
     if (ovf) return 0;
-    m->xframes = (refq_identity(&m->pre_inv) ? 0u : 1u) | (refq_identity(&m->post_inv) ? 0u : 2u);
+    m->xframes = (dh_ikc_is_identity_q_(&m->pre_inv) ? 0u : 1u) | (dh_ikc_is_identity_q_(&m->post_inv) ? 0u : 2u);
     m->calibrated = 1u;
     return 1;
 }

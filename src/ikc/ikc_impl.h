@@ -223,6 +223,10 @@ uint32_t dh_ikc_refine_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_s
 int32_t dh_ikc_atan2_q_(int64_t y, int64_t x);
 /* acc + c v, |c| <= 2^30; factors 0 and +-2^30 cost no multiplication. */
 int64_t dh_ikc_mla_q_(int64_t acc, int32_t c, int32_t v);
+/* 1 when F is the identity frame, word by word (the same answer as a
+ * memcmp with the identity frame: no padding; a fraction of its cost on
+ * the cores whose memcmp goes byte by byte). */
+int dh_ikc_is_identity_q_(const dh_frame_q *F);
 /* The right shift that brings a non-negative int64 below 2^31. */
 unsigned dh_ikc_fit31_q_(int64_t v);
 /* x in (-540, 540] deg (Q16.16) -> (-180, 180]. */
