@@ -41,9 +41,10 @@
  * of their squares over the squared bounds: e_p^2 2^8 + e_r^2 <= 2^22. */
 #define REFQ_POS_SH 7
 #define REFQ_ROT_SH 11
-#define REFQ_SCALE ((int32_t)1 << (REFQ_ROT_SH - REFQ_POS_SH))
+#define REFQ_BOUND 0x40000u /* 2^(REFQ_ROT_SH + REFQ_POS_SH) */
+#define REFQ_SCALE ((int32_t)16) /* 2^(REFQ_ROT_SH - REFQ_POS_SH) */
 /* an error component beyond this (LSB) is far from converged */
-#define REFQ_ERR_BIG ((int32_t)1 << 20)
+#define REFQ_ERR_BIG 0x100000u
 /* Largest joint step, 0.2 rad in Q2.30 */
 #define REFQ_MAX_STEP ((int32_t)214748365)
 /* 180 / pi 2^24: Q2.30 radians times it, >> 38, is Q16.16 degrees */
@@ -162,12 +163,13 @@ static DH_NOINLINE int32_t refq_div(int64_t num, int64_t den, int sh)
         if (a != 0u && (int)dh_q_bitlen64(a) + s > 62) return neg ? -INT32_MAX : INT32_MAX;
         a <<= (unsigned)s;
     } else {
-        a = (s < -62) ? 0u : (a + ((uint64_t)1 << (unsigned)(-s - 1))) >> (unsigned)(-s);
+        const unsigned n = (unsigned)(-s);
+        a = (n > 62u) ? 0u : (a + ((uint64_t)1 << (n - 1u))) >> n;
     }
     if ((a >> 31) >= bb) return neg ? -INT32_MAX : INT32_MAX;
     r = (uint32_t)(a >> 31);
     for (i = 0; i < 31u; i++) {
-        r = (r << 1) | (uint32_t)((a >> (30u - i)) & 1u);
+        r = (r << 1) | (uint32_t)((a >> (30u - i)) & (uint64_t)1u);
         q <<= 1;
         if (r >= bb) {
             r -= bb;
@@ -306,7 +308,7 @@ static DH_NOINLINE void refq_perr(refq_work *w)
     uint32_t k;
     for (k = 0; k < 3u; k++) {
         const int64_t t = dh_q_mla64(dh_q_mla64(dh_q_mul64(T->r[0][k], p[0]), T->r[1][k], p[1]), T->r[2][k], p[2]);
-        u[k] = refq_sat((int64_t)T->p[k] + ((t + DH_Q_HALF30) >> 30) - u[9u + k]);
+        u[k] = refq_sat((int64_t)T->p[k] + dh_q_rshr(t, 30u) - u[9u + k]);
         u[6u + k] = u[9u + k];
     }
 }
@@ -320,11 +322,11 @@ static DH_NOINLINE uint32_t refq_pos(const refq_work *w, dh_ikc_sol_q *b, uint32
     int64_t ep = 0;
     uint32_t k;
     for (k = 0; k < 6u; k++)
-        if (dh_q_abs_u32(u[k]) > (uint32_t)REFQ_ERR_BIG) return it + 1u;
+        if (dh_q_abs_u32(u[k]) > REFQ_ERR_BIG) return it + 1u;
     /* e_p^2 2^4 + e_r^2 2^-4 <= 2^18 (e_r^2 2^-4 from e_r (e_r / 16), within e_r / 16 below it) */
     for (k = 0; k < 3u; k++)
         ep = dh_q_mla64(dh_q_mla64(ep, u[k] * REFQ_SCALE, u[k]), u[3u + k], u[3u + k] / REFQ_SCALE);
-    if (ep <= ((int64_t)1 << (REFQ_ROT_SH + REFQ_POS_SH))) {
+    if (ep <= (int64_t)REFQ_BOUND) {
         b->flags |= DH_IKC_REFINED;
         return REFQ_DONE;
     }
@@ -397,7 +399,7 @@ static DH_NOINLINE int refq_a(refq_work *w)
     int32_t *u = w->u;
     const int64_t r = (int64_t)u[6] + m->a[0];
     if ((dh_ikc_abs64_q_(r) << 20) <= (uint64_t)dh_q_abs_u32(u[6]) + dh_q_abs_u32(u[7]) + dh_q_abs_u32(m->a[0]) ||
-        dh_q_abs_u32(u[11]) <= (1u << 10))
+        dh_q_abs_u32(u[11]) <= 1024u)
         return 0;
     u[2] = refq_div(-(int64_t)m->k[RQ_TAU] * u[2], r, 30);
     return 1;
@@ -439,7 +441,7 @@ static DH_NOINLINE int refq_b(refq_work *w)
     u[1] = refq_sat(dh_q_rshr(dh_q_mul64(u[6], om), 30u) - u[1]);
     u[0] = refq_sat(dh_q_rshr(dh_q_mul64(u[7], om), 30u) + u[0] -
                     (int64_t)m->k[RQ_TAU] * dh_q_rshr(dh_q_mul64(u[8], u[9]), 30u));
-    return dh_q_abs_u32(u[0]) <= (1u << 30) && dh_q_abs_u32(u[1]) <= (1u << 30);
+    return dh_q_abs_u32(u[0]) <= 0x40000000u && dh_q_abs_u32(u[1]) <= 0x40000000u;
 }
 
 static DH_NOINLINE void refq_b2(refq_work *w)
@@ -528,23 +530,31 @@ uint32_t dh_ikc_refine_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_s
                 ovf |= refq_twist(&w, i);
             }
             refq_tool(&w);
-            if (ovf || refq_base(&w)) break;
-            refq_rot(&w);
-            refq_perr(&w);
-            it = refq_pos(&w, &sol[s], it);
-            if (it >= REFQ_DONE || refq_unbase(&w)) break;
-            dh_sincos_q(q[0], &w.u[10], &w.u[9]);
-            refq_frame1(&w);
-            refq_alpha1(&w);
-            dh_sincos_q(refq_phi(m, q, 1), &w.u[10], &w.u[9]);
-            dh_sincos_q(q[4], &w.u[11], &w.t[0]);
-            if (!refq_a(&w)) break;
-            refq_a2(&w);
-            dh_sincos_q(refq_phi(m, q, 0), &w.u[4], &w.u[3]);
-            dh_sincos_q(q[1], &w.t[1], &w.t[0]);
-            if (!refq_b(&w)) break;
-            refq_b2(&w);
-            refq_apply(&w, q);
+            it = (ovf != 0 || refq_base(&w) != 0) ? REFQ_DONE : it;
+            if (it < REFQ_DONE) {
+                refq_rot(&w);
+                refq_perr(&w);
+                it = refq_pos(&w, &sol[s], it);
+            }
+            if (it < REFQ_DONE && refq_unbase(&w) != 0) it = REFQ_DONE;
+            if (it < REFQ_DONE) {
+                dh_sincos_q(q[0], &w.u[10], &w.u[9]);
+                refq_frame1(&w);
+                refq_alpha1(&w);
+                dh_sincos_q(refq_phi(m, q, 1), &w.u[10], &w.u[9]);
+                dh_sincos_q(q[4], &w.u[11], &w.t[0]);
+                if (refq_a(&w) == 0) it = REFQ_DONE;
+            }
+            if (it < REFQ_DONE) {
+                refq_a2(&w);
+                dh_sincos_q(refq_phi(m, q, 0), &w.u[4], &w.u[3]);
+                dh_sincos_q(q[1], &w.t[1], &w.t[0]);
+                if (refq_b(&w) == 0) it = REFQ_DONE;
+            }
+            if (it < REFQ_DONE) {
+                refq_b2(&w);
+                refq_apply(&w, q);
+            }
         }
     }
     return refq_pack(sol, raw);
