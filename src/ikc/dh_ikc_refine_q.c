@@ -164,12 +164,18 @@ static DH_NOINLINE int32_t refq_div(int64_t num, int64_t den, int sh)
         a <<= (unsigned)s;
     } else {
         const unsigned n = (unsigned)(-s);
-        a = (n > 62u) ? 0u : (a + ((uint64_t)1 << (n - 1u))) >> n;
+        if (n > 62u) {
+            a = 0u;
+        } else {
+            const uint64_t half = (uint64_t)1 << (n - 1u);
+            a = (a + half) >> n;
+        }
     }
     if ((a >> 31) >= bb) return neg ? -INT32_MAX : INT32_MAX;
     r = (uint32_t)(a >> 31);
     for (i = 0; i < 31u; i++) {
-        r = (r << 1) | (uint32_t)((a >> (30u - i)) & (uint64_t)1u);
+        const uint32_t bit = (uint32_t)(a >> (30u - i)) & 1u;
+        r = (r << 1) | bit;
         q <<= 1;
         if (r >= bb) {
             r -= bb;
