@@ -39,10 +39,8 @@
  * dh_qpos (2^7: 2e-3 mm for robots in mm at DH_QPOS_FRAC 16) and the
  * rotation error within REFQ_ROT (2^11 2^-30 rad: 1.9e-6 rad), in the sum
  * of their squares over the squared bounds: e_p^2 2^8 + e_r^2 <= 2^22. */
-#define REFQ_POS_SH 7
-#define REFQ_ROT_SH 11
-#define REFQ_BOUND 0x40000u /* 2^(REFQ_ROT_SH + REFQ_POS_SH) */
-#define REFQ_SCALE ((int32_t)16) /* 2^(REFQ_ROT_SH - REFQ_POS_SH) */
+#define REFQ_BOUND 0x40000u     /* 2^(11 + 7) */
+#define REFQ_SCALE ((int32_t)16) /* 2^(11 - 7) */
 /* an error component beyond this (LSB) is far from converged */
 #define REFQ_ERR_BIG 0x100000u
 /* Largest joint step, 0.2 rad in Q2.30 */
@@ -167,14 +165,16 @@ static DH_NOINLINE int32_t refq_div(int64_t num, int64_t den, int sh)
         if (n > 62u) {
             a = 0u;
         } else {
-            const uint64_t half = (uint64_t)1 << (n - 1u);
+            const unsigned n1 = n - 1u;
+            const uint64_t half = (uint64_t)1 << n1;
             a = (a + half) >> n;
         }
     }
     if ((a >> 31) >= bb) return neg ? -INT32_MAX : INT32_MAX;
     r = (uint32_t)(a >> 31);
     for (i = 0; i < 31u; i++) {
-        const uint32_t bit = (uint32_t)(a >> (30u - i)) & 1u;
+        const unsigned at = 30u - i;
+        const uint32_t bit = (uint32_t)(a >> at) & 1u;
         r = (r << 1) | bit;
         q <<= 1;
         if (r >= bb) {
