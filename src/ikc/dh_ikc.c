@@ -99,8 +99,10 @@ static void ikc_inv_rigid(dh_mat4_f32 *F)
  * reduction exact below 2^20) and of the conversion of ikc_finish, so
  * that a value outside the window is outside the limits after the
  * conversion as well: the window only drops solutions the conversion
- * drops. Unlimited, wide, prismatic, or limits beyond 2^20 degrees: +inf. */
-static void ikc_windows(dh_ikc_model_f32 *m)
+ * drops. Unlimited, wide, prismatic, or limits beyond 2^20 degrees: +inf.
+ * Out of line: its frame is not in dh_ikc_analyse_f32's, under the
+ * detectors' (256-byte stack budget on Cortex-M0+). */
+static DH_NOINLINE void ikc_windows(dh_ikc_model_f32 *m)
 {
     uint32_t i;
     for (i = 0; i < DH_IKC_JOINTS; i++) {
