@@ -137,6 +137,16 @@ static dh_ikc_why ikc_why(const dh_ikc_model_f32 *m)
     return DH_IKC_WHY_JOINTS;
 }
 
+/* The end of an analysis that found kind: lim_any kept only where
+ * dh_ikc_f32 prunes by it (ikc_prune: a spherical-wrist family, exact), so
+ * that the other families pay one test for it. */
+static dh_status ikc_found(dh_ikc_model_f32 *m)
+{
+    if (m->calibrated != 0u || (m->kind != DH_IKC_WRIST_RRR && m->kind != DH_IKC_WRIST_RRP)) m->lim_any = 0u;
+    m->why = DH_IKC_WHY_NONE;
+    return DH_OK;
+}
+
 static dh_status ikc_none(dh_ikc_model_f32 *m, dh_ikc_why why, dh_status st)
 {
     m->kind = DH_IKC_NONE;
@@ -169,24 +179,20 @@ dh_status dh_ikc_analyse_f32(const dh_robot *r, dh_ikc_model_f32 *m)
     m->post_inv = r->tool;
     ikc_inv_rigid(&m->post_inv);
     if (dh_ikc_detect_wrist_f32_(m)) {
-        m->why = DH_IKC_WHY_NONE;
-        return DH_OK;
+        return ikc_found(m);
     }
     if (dh_ikc_detect_par234_f32_(m)) {
         m->kind = DH_IKC_PARALLEL_234;
-        m->why = DH_IKC_WHY_NONE;
-        return DH_OK;
+        return ikc_found(m);
     }
     if (dh_ikc_detect_scara_f32_(m)) {
         m->kind = DH_IKC_SCARA;
-        m->why = DH_IKC_WHY_NONE;
-        return DH_OK;
+        return ikc_found(m);
     }
     i = (uint32_t)dh_ikc_calibrate_f32_(m);
     if (i == 2u) i = (uint32_t)dh_ikc_calibrated_f32_(m, dh_ikc_detect_wrist_f32_(m));
     if (i != 0u) {
-        m->why = DH_IKC_WHY_NONE;
-        return DH_OK;
+        return ikc_found(m);
     }
     return ikc_none(m, ikc_why(m), DH_ERR_UNAVAILABLE);
 }
@@ -546,15 +552,15 @@ DH_INLINE dh_status ikc_done(const dh_ikc_model_f32 *m, const float *q_ref, dh_i
 }
 
 /* 1 when dh_ikc_f32 solves m pruned by its limit windows first (m->lim_w,
- * ikc_windows): opts 0 (the limits apply), a wrist family with an FPU
- * (the one-pass solver leaves branches), a finite window, an exact model
- * (the refinement moves a calibrated model's values). The solutions kept
- * are those of the full solve: the window drops only branches whose
- * joints 1-3 the conversion finds outside the limits. */
+ * ikc_windows): opts 0 (the limits apply), with an FPU (the one-pass
+ * wrist solver leaves branches), a finite window on a spherical-wrist
+ * family of an exact model (lim_any, ikc_found: the refinement moves a
+ * calibrated model's values). The solutions kept are those of the full
+ * solve: the window drops only branches whose joints 1-3 the conversion
+ * finds outside the limits. */
 DH_INLINE int ikc_prune(const dh_ikc_model_f32 *m, uint32_t opts)
 {
-    return !DH_SOFT_FLOAT && opts == 0u && m->lim_any != 0u && m->calibrated == 0u &&
-           (m->kind == DH_IKC_WRIST_RRR || m->kind == DH_IKC_WRIST_RRP);
+    return !DH_SOFT_FLOAT && opts == 0u && m->lim_any != 0u;
 }
 
 dh_status dh_ikc_args_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, uint32_t opts)
