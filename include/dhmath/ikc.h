@@ -202,6 +202,10 @@ typedef struct {
     float win_lo[DH_IKC_JOINTS]; /**< a revolute value v with win_lo <= v <= win_hi lies in (-180, 180] and within the limits */
     float win_hi[DH_IKC_JOINTS]; /**< upper end of that window */
     uint32_t wide;               /**< bit i set: joint i's limits are a turn or more apart (q_ref picks among the shifts) */
+    float lim_w[2u * DH_IKC_JOINTS]; /**< revolute joint i's limits as a circular window of canonical values: centre
+                                          lim_w[i] in (-180, 180], radius lim_w[6 + i] with a rounding margin (+inf:
+                                          no bound); a value farther from the centre is outside the limits */
+    uint32_t lim_any;            /**< 1: a radius of lim_w is finite and kind a spherical-wrist family (exact): dh_ikc_f32 prunes by it */
     uint32_t calibrated;         /**< 1: within the calibration tolerance of kind, not on it: a..ca hold the
                                       idealised chain, xa..xca the exact one, solutions refined; 0: exact */
     float xa[DH_IKC_JOINTS];     /**< exact canonical a (calibrated; 0 otherwise) */

@@ -89,17 +89,42 @@ static void ikc_inv_rigid(dh_mat4_f32 *F)
     for (i = 0; i < 3u; i++) F->m[3][i] = 0.0f - (F->m[0][i] * p0 + F->m[1][i] * p1 + F->m[2][i] * p2);
 }
 
-/* The conversion windows of m's joints from their limits (ikc_joint). */
-static void ikc_windows(dh_ikc_model_f32 *m)
+/* The conversion windows of m's joints from their limits (ikc_joint), and
+ * the circular windows of the limits in canonical values (lim_w) by which
+ * dh_ikc_f32 prunes the solver's branches. A revolute joint value q within
+ * [lo, hi] (less than a turn apart) has the canonical value c = q + off
+ * modulo 360 within r = (hi - lo) / 2 of the centre off + (lo + hi) / 2;
+ * the radius adds a margin for the roundings of the centre (each within
+ * 2^-24 of at most |off| + |lo| + |hi| + 360, a handful of them, with its
+ * reduction exact below 2^20) and of the conversion of ikc_finish, so
+ * that a value outside the window is outside the limits after the
+ * conversion as well: the window only drops solutions the conversion
+ * drops. Unlimited, wide, prismatic, or limits beyond 2^20 degrees: +inf.
+ * Out of line: its frame is not in dh_ikc_analyse_f32's, under the
+ * detectors' (256-byte stack budget on Cortex-M0+). */
+static DH_NOINLINE void ikc_windows(dh_ikc_model_f32 *m)
 {
     uint32_t i;
+    for (i = 0; i < DH_IKC_JOINTS; i++) {
+        m->lim_w[i] = 0.0f;
+        m->lim_w[DH_IKC_JOINTS + i] = dh_f32_from_bits(0x7F800000u);
+    }
     for (i = 0; i < m->n; i++) {
         const int lim = m->qmin[i] <= m->qmax[i];
         const float lo = lim ? m->qmin[i] : -180.0f, hi = lim ? m->qmax[i] : 180.0f;
+        const float mag = fabsf(m->off[i]) + fabsf(lo) + fabsf(hi);
         /* v > -180 is v >= -180 + 2^-16, the next float */
         m->win_lo[i] = (lo > -180.0f) ? lo : (-180.0f + 0x1p-16f);
         m->win_hi[i] = (hi < 180.0f) ? hi : 180.0f;
         if (lim && !(hi - lo < 360.0f)) m->wide |= 1u << i;
+        if (lim && (((m->wide | m->prismatic) >> i) & 1u) == 0u && mag <= 1048576.0f) {
+            const float r = 0.5f * (hi - lo) + 1e-3f + 1e-6f * (mag + 720.0f);
+            m->lim_w[i] = dh_ikc_ref_f32_(m->off[i] + 0.5f * (lo + hi));
+            if (r < 180.0f) {
+                m->lim_w[DH_IKC_JOINTS + i] = r;
+                m->lim_any = 1u;
+            }
+        }
     }
 }
 
@@ -110,6 +135,16 @@ static dh_ikc_why ikc_why(const dh_ikc_model_f32 *m)
         return dh_ikc_spherical_f32_(m) ? DH_IKC_WHY_AXES : DH_IKC_WHY_WRIST;
     if (m->n == 4u && m->prismatic == 0x4u) return DH_IKC_WHY_AXES;
     return DH_IKC_WHY_JOINTS;
+}
+
+/* The end of an analysis that found kind: lim_any kept only where
+ * dh_ikc_f32 prunes by it (ikc_prune: a spherical-wrist family, exact), so
+ * that the other families pay one test for it. */
+static dh_status ikc_found(dh_ikc_model_f32 *m)
+{
+    if (m->calibrated != 0u || (m->kind != DH_IKC_WRIST_RRR && m->kind != DH_IKC_WRIST_RRP)) m->lim_any = 0u;
+    m->why = DH_IKC_WHY_NONE;
+    return DH_OK;
 }
 
 static dh_status ikc_none(dh_ikc_model_f32 *m, dh_ikc_why why, dh_status st)
@@ -144,24 +179,20 @@ dh_status dh_ikc_analyse_f32(const dh_robot *r, dh_ikc_model_f32 *m)
     m->post_inv = r->tool;
     ikc_inv_rigid(&m->post_inv);
     if (dh_ikc_detect_wrist_f32_(m)) {
-        m->why = DH_IKC_WHY_NONE;
-        return DH_OK;
+        return ikc_found(m);
     }
     if (dh_ikc_detect_par234_f32_(m)) {
         m->kind = DH_IKC_PARALLEL_234;
-        m->why = DH_IKC_WHY_NONE;
-        return DH_OK;
+        return ikc_found(m);
     }
     if (dh_ikc_detect_scara_f32_(m)) {
         m->kind = DH_IKC_SCARA;
-        m->why = DH_IKC_WHY_NONE;
-        return DH_OK;
+        return ikc_found(m);
     }
     i = (uint32_t)dh_ikc_calibrate_f32_(m);
     if (i == 2u) i = (uint32_t)dh_ikc_calibrated_f32_(m, dh_ikc_detect_wrist_f32_(m));
     if (i != 0u) {
-        m->why = DH_IKC_WHY_NONE;
-        return DH_OK;
+        return ikc_found(m);
     }
     return ikc_none(m, ikc_why(m), DH_ERR_UNAVAILABLE);
 }
@@ -520,6 +551,18 @@ DH_INLINE dh_status ikc_done(const dh_ikc_model_f32 *m, const float *q_ref, dh_i
     return ikc_finish(m, q_ref, sol, n_sol);
 }
 
+/* 1 when dh_ikc_f32 solves m pruned by its limit windows first (m->lim_w,
+ * ikc_windows): opts 0 (the limits apply), with an FPU (the one-pass
+ * wrist solver leaves branches), a finite window on a spherical-wrist
+ * family of an exact model (lim_any, ikc_found: the refinement moves a
+ * calibrated model's values). The solutions kept are those of the full
+ * solve: the window drops only branches whose joints 1-3 the conversion
+ * finds outside the limits. */
+DH_INLINE int ikc_prune(const dh_ikc_model_f32 *m, uint32_t opts)
+{
+    return !DH_SOFT_FLOAT && opts == 0u && m->lim_any != 0u;
+}
+
 dh_status dh_ikc_args_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, uint32_t opts)
 {
     const dh_status st = ikc_args(m, T, q_ref, opts);
@@ -554,6 +597,18 @@ dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const
      * across it, so that the target can be (the refinement of a calibrated
      * model reads it) within the same frame */
     *n_sol = opts << 4;
+    if (ikc_prune(m, opts)) {
+        /* the branches within the limits' windows; when none of them is
+         * kept, the full solve below decides the status (DH_ERR_LIMIT or
+         * DH_ERR_UNREACHABLE) */
+        raw = dh_ikc_wrist_lim_f32_(m, target, q_ref, sol);
+        if (raw != 0u) {
+            *n_sol = (raw > DH_IKC_MAX_SOL) ? DH_IKC_MAX_SOL : raw;
+            st = ikc_done(m, q_ref, sol, n_sol);
+            if (st == DH_OK) return st;
+        }
+        *n_sol = 0u;
+    }
     raw = dh_ikc_raw_f32_(m, target, q_ref, sol);
     if (m->calibrated != 0u) {
         raw = dh_ikc_refine_f32_(m, target, sol, raw);

@@ -519,11 +519,10 @@ static DH_NOINLINE void wrist_arm(const dh_ikc_model_f32 *m, const float *q_ref,
     wrist_c(a);
 }
 
-/* 1 when the arm's joint 2 or (RRR) 3 lies outside the window of wq
- * (dh_ikc_raw_win_f32_) */
-static DH_NOINLINE int wrist_left(const dh_ikc_model_f32 *m, const float *wq, const dh_ikc_sol_f32 *arm)
+/* 1 when the arm's joint 2 or (RRR) 3 lies outside the window win
+ * (dh_ikc_out_f32_) */
+static DH_NOINLINE int wrist_left(const dh_ikc_model_f32 *m, const float *win, const dh_ikc_sol_f32 *arm)
 {
-    const float *const win = &wq[6];
     return dh_ikc_out_f32_(win, 1u, arm->q[1]) || (m->kind == DH_IKC_WRIST_RRR && dh_ikc_out_f32_(win, 2u, arm->q[2]));
 }
 
@@ -534,14 +533,14 @@ static DH_NOINLINE int wrist_left(const dh_ikc_model_f32 *m, const float *wq, co
  * the next slot. R01^T of R06's columns a and n, shared by a shoulder
  * branch's arms, waits in q[0..2] and q[3..5] of the fourth slot from its
  * first arm (n0 + 3 <= 7: written last, by the second arm's flipped wrist
- * solution, which reads the column n in place). win 1: q_ref is the wq
- * of dh_ikc_raw_win_f32_ (0: no window); a shoulder branch whose joint 1
- * lies outside the window is left before its elbow, an arm whose joint 2
+ * solution, which reads the column n in place). win: a window of
+ * canonical values (dh_ikc_out_f32_; NULL: none); a shoulder branch whose
+ * joint 1 lies outside it is left before its elbow, an arm whose joint 2
  * or 3 does before its wrist; the branches kept are computed by the same
  * operations as without it, so they come out the same, in the same
  * order. */
 DH_INLINE uint32_t wrist_solve(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
-                               int win, dh_ikc_sol_f32 *sol)
+                               const float *win, dh_ikc_sol_f32 *sol)
 {
     /* R06 e_x, R06 Rx(alpha6)^T e_z, the wrist centre; after the
      * shoulder v[6..7] = cos, sin of joint 1, v[8..9] of joint 2 (RRR: of
@@ -554,7 +553,7 @@ DH_INLINE uint32_t wrist_solve(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, 
     for (b = 0; b < ns; b++) {
         const dh_ikc_sol_f32 *sh = &sol[6u + b];
         const uint32_t n0 = n;
-        if (win && dh_ikc_out_f32_(&q_ref[6], 0u, sh->q[0])) continue;
+        if (win != NULL && dh_ikc_out_f32_(win, 0u, sh->q[0])) continue;
         ne = (m->kind == DH_IKC_WRIST_RRR) ? wrist_elbow_rrr(m, cref2, sh, &sol[n]) : wrist_elbow_rrp(m, cref2, sh, &sol[n]);
         if (ne != 0u) {
             /* joint 1 of both elbow branches (the arms keep theta1 in q[0]) */
@@ -566,7 +565,7 @@ DH_INLINE uint32_t wrist_solve(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, 
         }
         for (e = 0; e < ne; e++) {
             dh_ikc_sol_f32 *a = &sol[n];
-            if (win && wrist_left(m, q_ref, &sol[n0 + e * 2u])) continue;
+            if (win != NULL && wrist_left(m, win, &sol[n0 + e * 2u])) continue;
             if (e != 0u && n != n0 + 2u) *a = sol[n0 + 2u]; /* branch 0's wrist singular or left */
             v[8] = a->q[3];
             v[9] = a->q[4];
@@ -579,13 +578,19 @@ DH_INLINE uint32_t wrist_solve(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, 
 
 uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, dh_ikc_sol_f32 *sol)
 {
-    return wrist_solve(m, T, q_ref, 0, sol);
+    return wrist_solve(m, T, q_ref, NULL, sol);
 }
 
 uint32_t dh_ikc_wrist_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *wq,
                                dh_ikc_sol_f32 *sol)
 {
-    return wrist_solve(m, T, wq, 1, sol);
+    return wrist_solve(m, T, wq, &wq[6], sol);
+}
+
+uint32_t dh_ikc_wrist_lim_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
+                               dh_ikc_sol_f32 *sol)
+{
+    return wrist_solve(m, T, q_ref, m->lim_w, sol);
 }
 
 #else
@@ -680,6 +685,12 @@ uint32_t dh_ikc_wrist_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, 
                                dh_ikc_sol_f32 *sol)
 {
     return dh_ikc_wrist_f32_(m, T, wq, sol);
+}
+
+uint32_t dh_ikc_wrist_lim_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
+                               dh_ikc_sol_f32 *sol)
+{
+    return dh_ikc_wrist_f32_(m, T, q_ref, sol);
 }
 
 #endif /* WRIST_ONE_PASS */

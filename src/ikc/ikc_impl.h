@@ -135,6 +135,11 @@ uint32_t dh_ikc_wrist_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, 
                                dh_ikc_sol_f32 *sol);
 uint32_t dh_ikc_par234_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *wq,
                                 dh_ikc_sol_f32 *sol);
+/* dh_ikc_wrist_f32_ pruned by the model's limit window m->lim_w
+ * (dh_ikc_out_f32_ on joints 1-3; see dh_ikc_wrist_win_f32_ for what it
+ * returns): with an FPU; soft float, every solution. */
+uint32_t dh_ikc_wrist_lim_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
+                               dh_ikc_sol_f32 *sol);
 static inline uint32_t dh_ikc_raw_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *wq,
                                            dh_ikc_sol_f32 *sol)
 {
