@@ -1411,7 +1411,7 @@ static BT_NOINLINE void bt_track_q(const bt_move *mv, dh_robot *r, const bt_acc 
         }
         st |= (uint32_t)dh_fk_q(r, q, &T);
         t0 = bt_now();
-        st |= (uint32_t)dh_ikc_q(&bt_mem.t.mq, &T, t->q, 0u, bt_mem.t.u.k.solq, &ns);
+        st |= (uint32_t)dh_ikc_q(&bt_mem.t.mq, &T, t->q, DH_IKC_KEEP_OUT_OF_LIMITS, bt_mem.t.u.k.solq, &ns);
         t1 = bt_now();
         bt_acc_add(&aik, t0, t1);
         t0 = bt_now();
@@ -1449,7 +1449,7 @@ static BT_NOINLINE void bt_track_f32(const bt_move *mv, dh_robot *r, const bt_ac
         bt_move_q(mv, k, q);
         st |= (uint32_t)dh_fk_f32(r, q, &T);
         t0 = bt_now();
-        st |= (uint32_t)dh_ikc_f32(&bt_mem.t.mf, &T, t->q, 0u, bt_mem.t.solf, &ns);
+        st |= (uint32_t)dh_ikc_f32(&bt_mem.t.mf, &T, t->q, DH_IKC_KEEP_OUT_OF_LIMITS, bt_mem.t.solf, &ns);
         t1 = bt_now();
         bt_acc_add(&aik, t0, t1);
         t0 = bt_now();
@@ -1509,7 +1509,7 @@ static BT_NOINLINE void bt_period_f32(const bt_move *mv, dh_robot *r, const dh_c
     while (st == 0u && mrep.done == 0 && n < 4u * BT_NTRK) {
         st |= (uint32_t)dh_move_target_f32(m, &T);
         t0 = bt_now();
-        st |= (uint32_t)dh_ikc_f32(&bt_mem.t.mf, &T, t->q, 0u, bt_mem.t.solf, &ns);
+        st |= (uint32_t)dh_ikc_f32(&bt_mem.t.mf, &T, t->q, DH_IKC_KEEP_OUT_OF_LIMITS, bt_mem.t.solf, &ns);
         t1 = bt_now();
         bt_acc_add(&aik, t0, t1);
         t0 = bt_now();
@@ -1815,7 +1815,7 @@ static BT_NOINLINE void bt_queue_f32(const bt_move *mv, dh_robot *r, float radiu
         t1 = bt_now();
         bt_acc_add(&aper, t0, t1);
         t0 = bt_now();
-        st |= (uint32_t)dh_ikc_f32(&bt_mem.t.mf, &cmd.T, qref, 0u, bt_mem.t.solf, &ns);
+        st |= (uint32_t)dh_ikc_f32(&bt_mem.t.mf, &cmd.T, qref, DH_IKC_KEEP_OUT_OF_LIMITS, bt_mem.t.solf, &ns);
         t1 = bt_now();
         bt_acc_add(&aik, t0, t1);
         states[rep.state]++;
