@@ -17,7 +17,7 @@
  *                    dh_move_target_f32, dh_move_advance_f32
  *   dh_queue.c       dh_queue_init_f32, dh_queue_add_joint_f32,
  *                    dh_queue_add_path_f32, dh_queue_add_path_blend_f32,
- *                    dh_queue_add_path_jerk_f32,
+ *                    dh_queue_add_path_jerk_f32, dh_queue_add_path_blend_jerk_f32,
  *                    dh_queue_target_f32,
  *                    dh_queue_advance_f32, dh_queue_stop_f32,
  *                    dh_queue_resume_f32
@@ -673,7 +673,7 @@ typedef struct {
     float vmax[DH_MAX_JOINTS];     /**< joint move: velocity limits */
     float amax[DH_MAX_JOINTS];     /**< joint move: acceleration limits */
     float jmax[DH_MAX_JOINTS];     /**< joint move: jerk limits (when jerk is 1) */
-    uint32_t jerk;                 /**< 1 when jerk-limited: joint move with jmax, path move of dh_queue_add_path_jerk_f32 with jerk */
+    uint32_t jerk;                 /**< 1 when jerk-limited: joint move with jmax, path move of dh_queue_add_path_jerk_f32 with jerk; 2: line of dh_queue_add_path_blend_jerk_f32 */
     uint32_t n;                    /**< joint move: number of joints */
     uint32_t kind;                 /**< DH_MOVE_JOINT or DH_MOVE_PATH */
     dh_cart_limits_f32 lim;        /**< path move: its limits */
@@ -681,6 +681,8 @@ typedef struct {
     float ctb;                     /**< path move: overlap of that corner (s; 0: at rest), planned when the next is appended */
     float cb[2];                   /**< path move: the corner's tail accelerations of s, its own and the next move's */
     float rate[2];                 /**< path move: the bounds of s' and s'' of its blended scalings (arcs: beside the centripetal acceleration) */
+    dh_cart_jerk_f32 jk;           /**< line of dh_queue_add_path_blend_jerk_f32 (jerk 2): its jerk limits */
+    dh_blend_seg_f32 seg;          /**< line of dh_queue_add_path_blend_jerk_f32: its jerk-limited scaling of s with its corners as planned so far */
 } dh_queue_item_f32;
 
 /**
@@ -844,6 +846,39 @@ dh_status dh_queue_add_path_blend_f32(dh_queue_f32 *qu, const dh_path_f32 *p, co
  */
 dh_status dh_queue_add_path_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
                                      const dh_cart_jerk_f32 *jerk);
+
+/**
+ * @brief Appends a jerk-limited line along p within lim and jerk whose
+ *        corner with the NEXT such line is blended within radius, as
+ *        dh_blend_seq_plan_jerk_f32 blends a sequence's corners.
+ * The line's scaling of s is dh_blend_seq_plan_jerk_f32's (seven phases,
+ * s''' within the line's bound), planned again when the next line is
+ * appended. The corner is blended when both are lines of this function
+ * with equal limits, the next starts at p->B, is queued when this one
+ * starts, the blend is shorter and keeps this line's peak speed; else
+ * at rest. The corner's rule is the sequence's with the tails' bounds
+ * summed (L1 a1 + L2 a2 <= amax, L1 j1 + L2 j2 <= jmax: a stop may brake
+ * both lines) and the overlap within the radius, vmax and wmax also
+ * while both lines brake (docs/design.md, "Jerk-limited blended corners
+ * in the queue"). Speed, TOTAL acceleration, angular speed and
+ * acceleration within lim at every feed override r (held inside an
+ * overlap); TOTAL jerk and angular jerk within jerk while r is constant,
+ * in a stop (each line brakes with jerk +-its bound, in an overlap at its
+ * tail's bounds, within the radius) and a resume (from rest at its own
+ * bounds to its end, its corner after at rest), all up to float rounding
+ * (1e-6 relative). Outside the overlaps the target is on the line as
+ * dh_path_eval_f32's.
+ * @param qu, p, lim as dh_queue_add_path_f32 (p, lim and jerk copied).
+ * @param jerk jerk limits, each finite and > 0.
+ * @param radius blend radius (p's length unit), finite and >= 0.
+ * @return DH_OK; DH_ERR_LIMIT when the queue is full (checked first);
+ *         DH_ERR_NAN for a NaN/Inf radius, DH_ERR_ARG for radius < 0 or
+ *         an arc (dh_queue_add_path_jerk_f32 runs an arc, at rest); then
+ *         the statuses of dh_queue_add_path_jerk_f32. On error qu and its
+ *         queued moves are untouched (the free item is overwritten).
+ */
+dh_status dh_queue_add_path_blend_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                           const dh_cart_jerk_f32 *jerk, float radius);
 
 /**
  * @brief Begins a control period: the command of the running move after
