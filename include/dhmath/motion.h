@@ -723,6 +723,7 @@ typedef struct {
     dh_blend_seg_f32 bl[2];        /**< blended lines: scaling of the running line [0] and of the next [1] in their overlap */
     float bo[2];                   /**< blended lines: s where each scaling starts (0, or where a stop left the line) */
     uint32_t bmode;                /**< blended lines: 0 none; 1 the running line; 2 and the next; 3 the next starts at bo[0] */
+    uint32_t stopq;                /**< 1 when a stop waits for the end of an overlap of jerk-limited blended lines */
 } dh_queue_f32;
 
 /** @brief What the caller does this period (dh_queue_target_f32). */
@@ -851,23 +852,20 @@ dh_status dh_queue_add_path_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, con
  * @brief Appends a jerk-limited line along p within lim and jerk whose
  *        corner with the NEXT such line is blended within radius, as
  *        dh_blend_seq_plan_jerk_f32 blends a sequence's corners.
- * The line's scaling of s is dh_blend_seq_plan_jerk_f32's (seven phases,
- * s''' within the line's bound), planned again when the next line is
- * appended. The corner is blended when both are lines of this function
- * with equal limits, the next starts at p->B, is queued when this one
- * starts, the blend is shorter and keeps this line's peak speed; else
- * at rest. The corner's rule is the sequence's with the tails' bounds
- * summed (L1 a1 + L2 a2 <= amax, L1 j1 + L2 j2 <= jmax: a stop may brake
- * both lines) and the overlap within the radius, vmax and wmax also
- * while both lines brake (docs/design.md, "Jerk-limited blended corners
- * in the queue"). Speed, TOTAL acceleration, angular speed and
- * acceleration within lim at every feed override r (held inside an
- * overlap); TOTAL jerk and angular jerk within jerk while r is constant,
- * in a stop (each line brakes with jerk +-its bound, in an overlap at its
- * tail's bounds, within the radius) and a resume (from rest at its own
- * bounds to its end, its corner after at rest), all up to float rounding
- * (1e-6 relative). Outside the overlaps the target is on the line as
- * dh_path_eval_f32's.
+ * The line's scaling of s is dh_blend_seq_plan_jerk_f32's (seven phases),
+ * planned again when the next line is appended, by the same corner rule
+ * (docs/design.md, "Jerk-limited blended corners in the queue"). The
+ * corner is blended when both are lines of this function with equal
+ * limits, the next starts at p->B, is queued when this one starts, the
+ * blend is shorter and keeps this line's peak speed; else at rest.
+ * Speed, TOTAL acceleration, angular speed and acceleration within lim
+ * at every feed override r (held inside an overlap); TOTAL jerk and
+ * angular jerk within jerk while r is constant, in a stop and a resume,
+ * all up to float rounding (1e-6 relative). A stop inside an overlap
+ * waits for its end (qu->stopq; the tool within radius of the corner),
+ * then the next line brakes alone with jerk +-its bound; a resume runs a
+ * line from rest to its end, its corner after at rest. Outside the
+ * overlaps the target is on the line as dh_path_eval_f32's.
  * @param qu, p, lim as dh_queue_add_path_f32 (p, lim and jerk copied).
  * @param jerk jerk limits, each finite and > 0.
  * @param radius blend radius (p's length unit), finite and >= 0.
@@ -944,8 +942,9 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
  *   of the stop (jerk-limited: jerk +-j, the deceleration ramped to
  *   a_p <= A and back, within v1 / A + 3 A / j, v1 = s' r +
  *   (s'' r^2)^2 / (2 j), A and j the plan's peak |s''| and |s'''|),
- *   never beyond B; the brake time
- *   advances only when the tracker is OK.
+ *   never beyond B; the brake time advances only when the tracker is OK;
+ * - inside an overlap of jerk-limited blended lines: at the overlap's end
+ *   (phase RUN and stopq 1 until then), the next line's brake from there.
  * A move not started, held at its start (clock 0) or at its end, or no
  * move at all, is at rest: the stop is immediate (phase STOPPED). A stop
  * while braking or stopped changes nothing. Queued moves stay queued and

@@ -940,16 +940,14 @@ static void jseq_scale2(float *x, float *y, float wx, float wy, float w)
 
 /* One corner of jerk-limited lines: the scalings g[0] (the line before
  * the corner) and g[1] (the line after it) of the lines p[0], p[1]
- * within lim, jk and radius; queue 1 for the queue's corner, where a
- * stop may brake both lines in their overlap (any signs of their s'' and
- * s''', and the brake's rise of line 2's speed) */
+ * within lim, jk and radius (the sequence's consecutive ones, or the
+ * queue's items') */
 typedef struct {
     dh_blend_seg_f32 *g[2];
     const dh_path_f32 *p[2];
     const dh_cart_limits_f32 *lim;
     const dh_cart_jerk_f32 *jk;
     float radius;
-    int queue;
 } jseq_corner;
 
 /* The bounds of line 1's deceleration (g[0]->b1, k1) and line 2's
@@ -959,11 +957,10 @@ typedef struct {
  * and L_i j_i' <= jmax / max(1, |d1 + d2|) (in the overlap the tool's
  * acceleration is x2 d2 - x1 d1 and its jerk y1 d1 + y2 d2 with x_i, y_i
  * in [0, L_i a_i'] and [0, L_i j_i']: norms convex, at most their largest
- * value at a vertex of the box), for the queue's corner to
- * L1 a1' + L2 a2' <= amax and L1 j1' + L2 j2' <= jmax (any signs), then
- * th1 a1' + th2 a2' <= (63/64) wdmax and th1 j1' + th2 j2' <= (63/64)
- * wjmax (the cross terms of the composed rotation get the last 1/64
- * through tb), g[0]->tb1 = 1 marking the corner for jseq_cost */
+ * value at a vertex of the box), then th1 a1' + th2 a2' <= (63/64) wdmax
+ * and th1 j1' + th2 j2' <= (63/64) wjmax (the cross terms of the composed
+ * rotation get the last 1/64 through tb), g[0]->tb1 = 1 marking the
+ * corner for jseq_cost */
 static DH_NOINLINE void jseq_red(const jseq_corner *c)
 {
     dh_blend_seg_f32 *const *g = c->g;
@@ -977,20 +974,15 @@ static DH_NOINLINE void jseq_red(const jseq_corner *c)
     b[3] = &g[1]->k0;
     g[0]->tb1 = (c->radius > 0.0f && *b[0] > 0.0f && *b[2] > 0.0f) ? 1.0f : 0.0f;
     if (!(g[0]->tb1 > 0.0f)) return;
-    if (c->queue != 0) {
-        jseq_scale2(b[0], b[2], p[0]->length, p[1]->length, ca);
-        jseq_scale2(b[1], b[3], p[0]->length, p[1]->length, cj);
-    } else {
-        if (p[0]->length > 0.0f && p[1]->length > 0.0f) {
-            x = blend_turn(p[0], p[1]);
-            if (x > 1.0f) ca /= x;
-            x = 4.0f - x * x; /* |d1 + d2|^2 of unit d1, d2 */
-            if (x > 1.0f) cj /= dh_sqrtf_(x);
-        }
-        for (i = 0; i < 2; i++) {
-            if (p[i]->length * *b[2 * i] > ca) *b[2 * i] = ca / p[i]->length;
-            if (p[i]->length * *b[2 * i + 1] > cj) *b[2 * i + 1] = cj / p[i]->length;
-        }
+    if (p[0]->length > 0.0f && p[1]->length > 0.0f) {
+        x = blend_turn(p[0], p[1]);
+        if (x > 1.0f) ca /= x;
+        x = 4.0f - x * x; /* |d1 + d2|^2 of unit d1, d2 */
+        if (x > 1.0f) cj /= dh_sqrtf_(x);
+    }
+    for (i = 0; i < 2; i++) {
+        if (p[i]->length * *b[2 * i] > ca) *b[2 * i] = ca / p[i]->length;
+        if (p[i]->length * *b[2 * i + 1] > cj) *b[2 * i + 1] = cj / p[i]->length;
     }
     jseq_scale2(b[0], b[2], p[0]->angle, p[1]->angle, BLEND_WSHARE * c->lim->wdmax);
     jseq_scale2(b[1], b[3], p[0]->angle, p[1]->angle, BLEND_WSHARE * c->jk->wjmax);
@@ -1006,20 +998,6 @@ DH_INLINE float jt_a(float v, float tj, float ta, float r)
     return (r < tj) ? (ap / tj) * r : ap;
 }
 
-/* The queue's line 2 at the overlap's end (s' u, s'' a >= 0 within the
- * bounds A, J > 0): x[0] its s' plus the rise a^2 / (2 J) of a brake from
- * there (the brake's peak speed, from which the speed only falls), x[1]
- * a bound of the brake's distance: that peak speed times the brake's
- * duration (a + 2 pk) / J + x[0] / pk, pk = min(A, sqrt(J u + a^2 / 2))
- * its peak deceleration (queue_brake_plan's time-optimal brake) */
-static DH_NOINLINE void jseq_brake(float u, float a, float A, float J, float x[2])
-{
-    float pk = dh_sqrtf_(J * u + 0.5f * a * a);
-    if (pk > A) pk = A;
-    x[0] = u + 0.5f * a * (a / J);
-    x[1] = (pk > 0.0f) ? x[0] * ((a + 2.0f * pk) / J + x[0] / pk) : 0.0f;
-}
-
 /* 1 when the overlap tb of the corner c (g[0]'s deceleration v, tj3, t3
  * and g[1]'s acceleration v, tj1, t1, tb within half of each) keeps the
  * tool within radius of the corner (L1 x1 + L2 x2 <= radius, x_i the s
@@ -1028,29 +1006,18 @@ static DH_NOINLINE void jseq_brake(float u, float a, float A, float J, float x[2
  * the s' at tb, the largest in the overlap) and P_i = th_i times the
  * lowered s'' bound, (pi/180) w1 w2 <= wdmax / 64,
  * (pi/180) (2 w2 P1 + P2 w1) <= wjmax / 128 and
- * (pi/180)^2 w2^2 w1 <= wjmax / 128. The queue's corner takes line 2's
- * brake from the overlap's end into u2 and x2 (jseq_brake), keeps x2 <= 1
- * and L1 u1 + L2 u2 <= vmax, th1 u1 + th2 u2 <= wmax (the speeds while
- * both lines brake). */
+ * (pi/180)^2 w2^2 w1 <= wjmax / 128 */
 DH_INLINE int jseq_ok(const jseq_corner *c, float tb)
 {
     dh_blend_seg_f32 *const *g = c->g;
     const dh_path_f32 *const *p = c->p;
-    const float u1 = jt_v(g[0]->v, g[0]->tj3, g[0]->t3, tb);
-    float u2 = jt_v(g[1]->v, g[1]->tj1, g[1]->t1, tb), x2 = jt_x(0.0f, g[1]->v, g[1]->tj1, g[1]->t1, tb), w1, w2;
-    if (c->queue != 0) {
-        float y[2];
-        jseq_brake(u2, jt_a(g[1]->v, g[1]->tj1, g[1]->t1, tb), g[1]->b0, g[1]->k0, y);
-        u2 = y[0];
-        x2 += y[1];
-        if (!(x2 <= 1.0f) || !(p[0]->length * u1 + p[1]->length * u2 <= c->lim->vmax) ||
-            !(p[0]->angle * u1 + p[1]->angle * u2 <= c->lim->wmax)) {
-            return 0;
-        }
+    const float w1 = p[0]->angle * jt_v(g[0]->v, g[0]->tj3, g[0]->t3, tb);
+    const float w2 = p[1]->angle * jt_v(g[1]->v, g[1]->tj1, g[1]->t1, tb);
+    if (!(p[0]->length * jt_x(0.0f, g[0]->v, g[0]->tj3, g[0]->t3, tb) +
+              p[1]->length * jt_x(0.0f, g[1]->v, g[1]->tj1, g[1]->t1, tb) <=
+          c->radius)) {
+        return 0;
     }
-    w1 = p[0]->angle * u1;
-    w2 = p[1]->angle * u2;
-    if (!(p[0]->length * jt_x(0.0f, g[0]->v, g[0]->tj3, g[0]->t3, tb) + p[1]->length * x2 <= c->radius)) return 0;
     if (!(w1 * w2 <= BLEND_RAD2DEG * (c->lim->wdmax * 0.015625f))) return 0;
     if (!(2.0f * w2 * (p[0]->angle * g[0]->b1) + (p[1]->angle * g[1]->b0) * w1 <=
           BLEND_RAD2DEG * (c->jk->wjmax * 0.0078125f))) {
@@ -1150,7 +1117,7 @@ static DH_NOINLINE void jseq_overlap(const jseq_corner *c, float tb)
     g[0]->dev = c->p[0]->length * g[0]->e1 + c->p[1]->length * g[1]->e0;
 }
 
-/* c = corner k of the seq planner's lines (queue 0) */
+/* c = corner k of the seq planner's lines with the radius radius */
 static void jseq_at(jseq_corner *c, dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t k, float radius)
 {
     c->g[0] = &seg[k];
@@ -1158,7 +1125,6 @@ static void jseq_at(jseq_corner *c, dh_blend_seg_f32 *seg, const dh_path_f32 *p,
     c->p[0] = &p[k];
     c->p[1] = &p[k + 1u];
     c->radius = radius;
-    c->queue = 0;
 }
 
 /* the first line's acceleration and the last line's deceleration at their
@@ -1378,7 +1344,6 @@ float dh_blend_jcorner_f32_(dh_blend_seg_f32 *g[2], const dh_path_f32 *p1, const
     c.lim = lim;
     c.jk = jk;
     c.radius = radius;
-    c.queue = 1;
     if (p1->kind == (uint32_t)DH_PATH_LINE && p2->kind == (uint32_t)DH_PATH_LINE && blend_joins(p1, p2)) {
         jseq_unmark(&c);
         jseq_red(&c);

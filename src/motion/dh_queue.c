@@ -119,6 +119,7 @@ dh_status dh_queue_init_f32(dh_queue_f32 *qu, dh_queue_item_f32 *items, uint32_t
     qu->next = 0.0f;
     qu->braked = 0u;
     qu->bmode = QB_NONE;
+    qu->stopq = 0u;
     return DH_OK;
 }
 
@@ -965,6 +966,9 @@ static void queue_period(dh_queue_f32 *qu, uint32_t what, dh_track_state state, 
     }
 }
 
+static int queue_jerk_overlap(const dh_queue_f32 *qu);
+static DH_NOINLINE void queue_stop_now(dh_queue_f32 *qu);
+
 dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_report_f32 *rep)
 {
     uint32_t what;
@@ -982,6 +986,7 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
     if (done != 0) queue_pop(qu);
     /* blended: the next line runs on */
     if (done == 2) qu->started = 1u;
+    if (qu->stopq != 0u && queue_jerk_overlap(qu) == 0) queue_stop_now(qu);
     rep->held = held;
     rep->done = 0;
     if (done != 0) rep->done = 1;
@@ -1022,17 +1027,26 @@ static DH_NOINLINE float queue_brake(dh_queue_f32 *qu)
     return d;
 }
 
-dh_status dh_queue_stop_f32(dh_queue_f32 *qu)
+/* 1 while two jerk-limited blended lines overlap: a stop waits for the
+ * overlap's end and acts from there (line 2 alone brakes at its own
+ * bounds), since the corner's bounds hold only while line 1 decelerates
+ * and line 2 accelerates (docs/design.md) */
+static int queue_jerk_overlap(const dh_queue_f32 *qu)
 {
-    DH_ASSERT(qu != NULL);
-    if (qu->pend != 0u) return DH_ERR_ARG;
-    if (qu->phase != (uint32_t)DH_QUEUE_RUN) return DH_OK;
-    qu->resume = 0u;
+    return (qu->bmode == QB_TWO && qu->bl[1].T > 0.0f && qu->bl[0].j > 0.0f) ? 1 : 0;
+}
+
+/* the stop of the running move from its state now: its brake, or at
+ * rest at once (then running again when a resume came while it waited) */
+static DH_NOINLINE void queue_stop_now(dh_queue_f32 *qu)
+{
+    qu->stopq = 0u;
     if (qu->count == 0u || qu->started == 0u ||
         ((qu->bmode == QB_ONE || qu->bmode == QB_TWO) ? !queue_blend_moving(qu)
                                                        : (!(qu->mv.clock > 0.0f) || !(qu->mv.clock < qu->mv.dur)))) {
-        qu->phase = (uint32_t)DH_QUEUE_STOPPED;
-        return DH_OK;
+        qu->phase = (qu->resume != 0u) ? (uint32_t)DH_QUEUE_RUN : (uint32_t)DH_QUEUE_STOPPED;
+        qu->resume = 0u;
+        return;
     }
     if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT)
         (void)dh_joint_move_eval_f32(qu->mv.prof, qu->mv.n, qu->mv.q0, qu->mv.q1, qu->mv.clock, qu->bq, qu->mv.ws[0],
@@ -1041,6 +1055,20 @@ dh_status dh_queue_stop_f32(dh_queue_f32 *qu)
     qu->tbend = queue_brake(qu);
     qu->braked = 1u;
     qu->phase = (qu->tbend > 0.0f) ? (uint32_t)DH_QUEUE_BRAKE : (uint32_t)DH_QUEUE_STOPPED;
+    if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) queue_rest(qu);
+}
+
+dh_status dh_queue_stop_f32(dh_queue_f32 *qu)
+{
+    DH_ASSERT(qu != NULL);
+    if (qu->pend != 0u) return DH_ERR_ARG;
+    if (qu->phase != (uint32_t)DH_QUEUE_RUN) return DH_OK;
+    qu->resume = 0u;
+    if (queue_jerk_overlap(qu) != 0) {
+        qu->stopq = 1u;
+    } else {
+        queue_stop_now(qu);
+    }
     return DH_OK;
 }
 
@@ -1048,7 +1076,7 @@ dh_status dh_queue_resume_f32(dh_queue_f32 *qu)
 {
     DH_ASSERT(qu != NULL);
     if (qu->pend != 0u) return DH_ERR_ARG;
-    if (qu->phase == (uint32_t)DH_QUEUE_BRAKE) {
+    if (qu->phase == (uint32_t)DH_QUEUE_BRAKE || qu->stopq != 0u) {
         qu->resume = 1u;
     } else if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) {
         qu->phase = (uint32_t)DH_QUEUE_RUN;

@@ -28,9 +28,10 @@
  * In half the queues the tracker's state is replaced by LAGGING for a
  * random stretch starting inside an overlap, in the other half at a
  * random period (the feed override falls and rises; it holds inside an
- * overlap). In a third, a stop comes inside an overlap (both lines brake,
- * inside the ball), in a third at a random period; resumed at once or
- * some periods after rest. A first corner planned blended with its next
+ * overlap). In a third, a stop comes inside an overlap: it waits, the
+ * overlap runs to its end, then the next line alone brakes (qu.stopq,
+ * the phase); in a third a stop comes at a random period; resumed some
+ * periods after rest. A first corner planned blended with its next
  * line queued at the start runs blended when nothing stops the queue.
  * Moves complete in order, the last target is the last line's B bit for
  * bit.
@@ -186,7 +187,7 @@ static void blend_jerk_queue(dhm_rig *g, const double *q_nom, long ov[2])
     const long lag_len = 1 + (long)(dht_rand_u32() % 300u), lag_at = (long)(dht_rand_u32() % 3000u);
     const long resume_wait = (long)(dht_rand_u32() % 3u) * (long)(dht_rand_u32() % 200u);
     long call, lag_from = -1, stop_call = -1, stopped_at = -1;
-    uint32_t i, added, done = 0;
+    uint32_t i, added, done = 0, ov_stop = 0xffffffffu;
     int resumed = 0, in_ov, planned;
     for (i = 0; i < g->r.n; i++) qa[i] = q_nom[i] + dht_rand_uniform(-5.0, 5.0);
     draw_lines(g, qa, n, 8.0, &S);
@@ -234,8 +235,19 @@ static void blend_jerk_queue(dhm_rig *g, const double *q_nom, long ov[2])
             stop_call = call;
             if (stop_mode == 1) ov[1]++;
             DHT_EQ_INT(dh_queue_stop_f32(&qu), DH_OK);
-            if (stop_mode == 1) DHT_EQ_INT(qu.phase, DH_QUEUE_BRAKE);
+            /* inside an overlap it waits for the overlap's end */
+            if (stop_mode == 1) {
+                DHT_EQ_INT(qu.phase, DH_QUEUE_RUN);
+                DHT_EQ_INT(qu.stopq, 1);
+                ov_stop = qu.seq;
+            }
         }
+        /* the deferred stop brakes the next line alone, from the overlap's end on */
+        if (ov_stop != 0xffffffffu && qu.stopq == 0u) {
+            DHT_TRUE(qu.seq == ov_stop + 1u && qu.bmode != 2u && qu.phase != (uint32_t)DH_QUEUE_RUN);
+            ov_stop = 0xffffffffu;
+        }
+        if (ov_stop != 0xffffffffu) DHT_TRUE(qu.bmode == 2u && qu.phase == (uint32_t)DH_QUEUE_RUN);
     }
     DHT_TRUE_MSG(done == n, "%u of %u moves done in %ld periods", (unsigned)done, (unsigned)n, call);
     {
