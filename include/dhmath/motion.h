@@ -835,7 +835,7 @@ dh_status dh_queue_add_path_blend_f32(dh_queue_f32 *qu, const dh_path_f32 *p, co
  * and resume"), never beyond B. Resume: a seven-phase profile of s from
  * where it stopped to 1 within the first plan's peaks of s', s'' and
  * s'''. Its corners with the moves before and after it run at rest
- * (no jerk limit holds in the queue's blends).
+ * (dh_queue_add_path_blend_jerk_f32 blends jerk-limited lines).
  * @param qu, p, lim as dh_queue_add_path_f32 (p, lim and jerk copied).
  * @param jerk jerk limits, each finite and > 0; NULL: the move of
  *        dh_queue_add_path_f32.
