@@ -1256,12 +1256,17 @@ float dh_blend_seg_s_f32_(const dh_blend_seg_f32 *g, float s0, float t)
 static DH_NOINLINE float jseg_rate(const dh_blend_seg_f32 *g, float t, float *sdd)
 {
     const float r = g->T - t;
-    const int acc = (t < g->t1) ? 1 : 0;
-    const float ta = acc ? g->t1 : g->t3, tj = acc ? g->tj1 : g->tj3, x = acc ? t : r;
-    const float m = (x < 0.5f * ta) ? x : ta - x;
+    float ta = g->t3, tj = g->tj3, x = r, sg = -1.0f, m;
+    if (t < g->t1) {
+        ta = g->t1;
+        tj = g->tj1;
+        x = t;
+        sg = 1.0f;
+    }
     *sdd = 0.0f;
-    if (!acc && !(r < g->t3)) return g->v;
-    *sdd = acc ? jt_a(g->v, tj, ta, m) : -jt_a(g->v, tj, ta, m);
+    if (!(x < ta)) return g->v;
+    m = (x < 0.5f * ta) ? x : ta - x;
+    *sdd = sg * jt_a(g->v, tj, ta, m);
     return (x < 0.5f * ta) ? jt_v(g->v, tj, ta, x) : g->v - jt_v(g->v, tj, ta, m);
 }
 
