@@ -204,6 +204,28 @@ void dhm_check_acc(const float (*h)[7], int w, double hdt, const dh_cart_limits_
                  hdt);
 }
 
+void dhm_check_jerk(const float (*h)[7], int w, double hdt, const dh_cart_jerk_f32 *jk, double ulp, long call,
+                    double worst[2])
+{
+    double a[3], b[3], c[3], x, h3 = hdt * hdt * hdt;
+    int k;
+    for (k = 0; k < 3; k++) a[k] = (double)h[0][k] - 3.0 * h[w][k] + 3.0 * h[2 * w][k] - h[3 * w][k];
+    x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    if (x / h3 / (double)jk->jmax > worst[0]) worst[0] = x / h3 / (double)jk->jmax;
+    DHT_TRUE_MSG(x <= (double)jk->jmax * h3 * (1.0 + DHM_REL) + 8.0 * ulp, "call %ld: jerk %.9g over %.9g", call,
+                 x / h3, (double)jk->jmax);
+    /* rotation vectors relative to h[w]: along one move they are one axis
+     * times the angle (a fixed world axis) */
+    dhm_rotvec(&h[w][3], &h[0][3], a);
+    dhm_rotvec(&h[w][3], &h[2 * w][3], b);
+    dhm_rotvec(&h[w][3], &h[3 * w][3], c);
+    for (k = 0; k < 3; k++) a[k] = a[k] + 3.0 * b[k] - c[k];
+    x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    if (x / h3 / (double)jk->wjmax > worst[1]) worst[1] = x / h3 / (double)jk->wjmax;
+    DHT_TRUE_MSG(x <= (double)jk->wjmax * h3 * (1.0 + DHM_REL) + 8.0 * DHM_ANG_NOISE,
+                 "call %ld: angular jerk %.9g over %.9g", call, x / h3, (double)jk->wjmax);
+}
+
 uint64_t dhm_hash(const void *a, size_t na, const void *b, size_t nb)
 {
     const unsigned char *x = (const unsigned char *)a;

@@ -52,6 +52,14 @@ void dhm_check_speed(const float *h0, const float *h1, double hdt, const dh_cart
  * over (w dt = hdt)^2 within lim likewise (h: rows of 7) */
 void dhm_check_acc(const float (*h)[7], int w, double hdt, const dh_cart_limits_f32 *lim, double ulp, long call);
 
+/* The third differences of the samples h[0], h[w], h[2 w], h[3 w]
+ * (hdt = w periods): TOTAL jerk and angular jerk within jk times
+ * 1 + DHM_REL (plus 8 ulp of the positions' scale and 8 DHM_ANG_NOISE);
+ * worst[0], worst[1] raised to the ratios to the limits seen (linear,
+ * angular) */
+void dhm_check_jerk(const float (*h)[7], int w, double hdt, const dh_cart_jerk_f32 *jk, double ulp, long call,
+                    double worst[2]);
+
 /* The finite-difference checks of a stream of targets, one per period
  * dt: the caller's sample rows sp (ns = 2 ws + 1, every period) and lp
  * (nl >= 2 w / wd + 1, every wd periods), nh the samples so far (0 to

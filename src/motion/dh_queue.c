@@ -119,6 +119,7 @@ dh_status dh_queue_init_f32(dh_queue_f32 *qu, dh_queue_item_f32 *items, uint32_t
     qu->next = 0.0f;
     qu->braked = 0u;
     qu->bmode = QB_NONE;
+    qu->stopq = 0u;
     return DH_OK;
 }
 
@@ -151,6 +152,18 @@ dh_status dh_queue_add_joint_f32(dh_queue_f32 *qu, uint32_t n, const float *q1, 
     return DH_OK;
 }
 
+/* the corner of the jerk-limited blended lines i1 then i2 (equal jerk
+ * limits; else at rest): both items' scalings planned again with it
+ * (dh_blend_jcorner_f32_), its overlap into i1->ctb */
+static DH_NOINLINE void queue_add_jcorner(dh_queue_item_f32 *i1, dh_queue_item_f32 *i2)
+{
+    dh_blend_seg_f32 *g[2];
+    if (!dh_feq_f32(i1->jk.jmax, i2->jk.jmax) || !dh_feq_f32(i1->jk.wjmax, i2->jk.wjmax)) return;
+    g[0] = &i1->seg;
+    g[1] = &i2->seg;
+    i1->ctb = dh_blend_jcorner_f32_(g, &i1->path, &i2->path, &i1->lim, &i1->jk, i1->radius);
+}
+
 /* the radius of the last queued move, and the corner of the last two
  * (dh_blend_corner_f32_, when both are path moves with equal limits)
  * into the first one's ctb, cb */
@@ -165,11 +178,15 @@ static DH_NOINLINE void queue_add_corner(dh_queue_f32 *qu, float radius)
     i1->cb[0] = 0.0f;
     i1->cb[1] = 0.0f;
     if (i1->kind != (uint32_t)DH_MOVE_PATH || i2->kind != (uint32_t)DH_MOVE_PATH) return;
-    /* a jerk-limited path move's corners run at rest (the tails are trapezoids) */
-    if (i1->jerk != 0u || i2->jerk != 0u) return;
     if (!dh_feq_f32(i1->lim.vmax, i2->lim.vmax) || !dh_feq_f32(i1->lim.amax, i2->lim.amax) ||
         !dh_feq_f32(i1->lim.wmax, i2->lim.wmax) || !dh_feq_f32(i1->lim.wdmax, i2->lim.wdmax))
         return;
+    if (i1->jerk == 2u && i2->jerk == 2u) {
+        queue_add_jcorner(i1, i2);
+        return;
+    }
+    /* another jerk-limited path move's corners run at rest (the tails are trapezoids) */
+    if (i1->jerk != 0u || i2->jerk != 0u) return;
     i1->ctb = dh_blend_corner_f32_(&i1->path, &i2->path, &i1->lim, i1->radius, i1->cb);
 }
 
@@ -251,6 +268,31 @@ dh_status dh_queue_add_path_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, con
     st = dh_path_move_jerk_f32(&it->prof, p, lim, jerk);
     if (st == DH_OK) st = queue_add_item(qu, p, lim, &it->prof);
     if (st == DH_OK) queue_add_corner(qu, 0.0f);
+    return st;
+}
+
+/* The line's checks as dh_queue_add_path_jerk_f32's (its profile planned
+ * into the free item, which holds no move then), then the line's
+ * scaling at rest (dh_blend_jline_f32_) and its corner with the move
+ * before it. */
+dh_status dh_queue_add_path_blend_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                           const dh_cart_jerk_f32 *jerk, float radius)
+{
+    dh_queue_item_f32 *it;
+    dh_status st;
+    DH_ASSERT(qu != NULL && p != NULL && lim != NULL && jerk != NULL);
+    if (qu->count >= qu->cap) return DH_ERR_LIMIT;
+    st = queue_radius(radius);
+    if (st == DH_OK && p->kind != (uint32_t)DH_PATH_LINE) st = DH_ERR_ARG;
+    it = queue_slot(qu, qu->count);
+    if (st == DH_OK) st = dh_path_move_jerk_f32(&it->prof, p, lim, jerk);
+    if (st == DH_OK) st = queue_add_item(qu, p, lim, &it->prof);
+    if (st == DH_OK) {
+        it->jerk = 2u;
+        it->jk = *jerk;
+        dh_blend_jline_f32_(&it->seg, &it->path, &it->lim, &it->jk, 1.0f);
+        queue_add_corner(qu, radius);
+    }
     return st;
 }
 
@@ -411,6 +453,32 @@ static void queue_seg_rest(dh_blend_seg_f32 *g)
     g->b1 = 0.0f;
     g->tb1 = 0.0f;
     g->T = 0.0f;
+    g->j = 0.0f;
+}
+
+/* the head line alone (QB_ONE) on bl[0] from s0 */
+static void queue_blend_one(dh_queue_f32 *qu, float s0)
+{
+    queue_seg_rest(&qu->bl[1]);
+    qu->bo[0] = s0;
+    qu->bo[1] = 0.0f;
+    qu->bmode = QB_ONE;
+    queue_blend_mv(qu);
+}
+
+/* bl[i] = the jerk-limited scaling of queued line i from rest at s0: as
+ * planned with its corners (its item's) from s0 = 0, its start at rest;
+ * from s0 > 0 (where a stop left it) to its end at rest */
+static DH_NOINLINE void queue_jline(dh_queue_f32 *qu, uint32_t i, float s0)
+{
+    const dh_queue_item_f32 *it = queue_at(qu, i);
+    dh_blend_seg_f32 *g = &qu->bl[i];
+    if (s0 > 0.0f) {
+        dh_blend_jline_f32_(g, &it->path, &it->lim, &it->jk, 1.0f - s0);
+    } else {
+        *g = it->seg;
+        g->tb0 = 0.0f;
+    }
 }
 
 /* Plans the head line from rest at s = s0 with its corner after it
@@ -421,6 +489,11 @@ static DH_NOINLINE int queue_blend_from(dh_queue_f32 *qu, float s0)
     const dh_queue_item_f32 *it = queue_at(qu, 0u);
     dh_blend_seg_f32 *g = &qu->bl[0];
     float b[2];
+    if (it->jerk == 2u) {
+        queue_jline(qu, 0u, s0);
+        queue_blend_one(qu, s0);
+        return 1;
+    }
     queue_seg_rest(g);
     g->tb1 = queue_corner(qu, 0u, b);
     g->b1 = b[0];
@@ -430,11 +503,7 @@ static DH_NOINLINE int queue_blend_from(dh_queue_f32 *qu, float s0)
         queue_seg_rest(g);
         (void)dh_blend_seg_plan_f32_(g, it->rate, 1.0f - s0);
     }
-    queue_seg_rest(&qu->bl[1]);
-    qu->bo[0] = s0;
-    qu->bo[1] = 0.0f;
-    qu->bmode = QB_ONE;
-    queue_blend_mv(qu);
+    queue_blend_one(qu, s0);
     return 1;
 }
 
@@ -445,7 +514,10 @@ static DH_NOINLINE void queue_blend_two(dh_queue_f32 *qu, float s0, float s1)
 {
     const dh_queue_item_f32 *it = queue_at(qu, 0u);
     queue_seg_rest(&qu->bl[0]);
-    (void)dh_blend_seg_plan_f32_(&qu->bl[0], it->rate, 1.0f - s0);
+    if (it->jerk == 2u)
+        dh_blend_jline_f32_(&qu->bl[0], &it->path, &it->lim, &it->jk, 1.0f - s0);
+    else
+        (void)dh_blend_seg_plan_f32_(&qu->bl[0], it->rate, 1.0f - s0);
     queue_seg_rest(&qu->bl[1]);
     qu->bo[0] = s0;
     qu->bo[1] = s1;
@@ -460,6 +532,14 @@ static DH_NOINLINE void queue_blend_next(dh_queue_f32 *qu)
     const dh_queue_item_f32 *it = queue_at(qu, 1u);
     dh_blend_seg_f32 *g = &qu->bl[1];
     float b[2];
+    qu->bo[1] = 0.0f;
+    qu->bmode = QB_TWO;
+    if (it->jerk == 2u) {
+        /* as planned with its corners; its end blended only when the next is queued */
+        *g = it->seg;
+        if (!(queue_corner(qu, 1u, b) > 0.0f)) g->tb1 = 0.0f;
+        return;
+    }
     (void)queue_corner(qu, 0u, b);
     g->b0 = b[1];
     g->tb0 = qu->bl[0].tb1;
@@ -619,9 +699,9 @@ static int queue_blend_moving(const dh_queue_f32 *qu)
 
 /* the brake's start of blended line i (0: the head, 1: the next in an
  * overlap): x = s, its rate and acceleration under the feed override r
- * (s' r, s'' r^2) and the deceleration, its tail's in an overlap, its
- * line's own alone */
-static DH_NOINLINE void queue_blend_state(const dh_queue_f32 *qu, uint32_t i, float x[4])
+ * (s' r, s'' r^2), the deceleration and jerk (0: none; jerk-limited
+ * lines), its tail's in an overlap, its line's own alone */
+static DH_NOINLINE void queue_blend_state(const dh_queue_f32 *qu, uint32_t i, float x[5])
 {
     const dh_blend_seg_f32 *g = &qu->bl[i];
     const float r = qu->mv.feed, t = (i == 0u) ? qu->mv.clock : qu->mv.clock - (qu->bl[0].T - qu->bl[0].tb1);
@@ -630,8 +710,15 @@ static DH_NOINLINE void queue_blend_state(const dh_queue_f32 *qu, uint32_t i, fl
     x[1] = dh_blend_seg_rate_f32_(g, t, &sdd) * r;
     x[2] = sdd * r * r;
     x[3] = g->a;
-    if (i == 1u) x[3] = g->b0;
-    if (i == 0u && g->tb1 > 0.0f && qu->bmode == QB_TWO) x[3] = g->b1;
+    x[4] = g->j;
+    if (i == 1u) {
+        x[3] = g->b0;
+        x[4] = g->k0;
+    }
+    if (i == 0u && g->tb1 > 0.0f && qu->bmode == QB_TWO) {
+        x[3] = g->b1;
+        x[4] = g->k1;
+    }
 }
 
 /* 1 when the tracker is at rest for the joint move it: every
@@ -879,6 +966,9 @@ static void queue_period(dh_queue_f32 *qu, uint32_t what, dh_track_state state, 
     }
 }
 
+static int queue_jerk_overlap(const dh_queue_f32 *qu);
+static DH_NOINLINE void queue_stop_now(dh_queue_f32 *qu);
+
 dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_report_f32 *rep)
 {
     uint32_t what;
@@ -896,6 +986,7 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
     if (done != 0) queue_pop(qu);
     /* blended: the next line runs on */
     if (done == 2) qu->started = 1u;
+    if (qu->stopq != 0u && queue_jerk_overlap(qu) == 0) queue_stop_now(qu);
     rep->held = held;
     rep->done = 0;
     if (done != 0) rep->done = 1;
@@ -912,7 +1003,7 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
 static DH_NOINLINE float queue_brake(dh_queue_f32 *qu)
 {
     const dh_queue_item_f32 *it = &qu->items[qu->head];
-    float d = 0.0f, e, sd, sdd, s, x[4];
+    float d = 0.0f, e, sd, sdd, s, x[5];
     uint32_t i;
     if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) {
         for (i = 0u; i < qu->mv.n; i++) {
@@ -924,7 +1015,7 @@ static DH_NOINLINE float queue_brake(dh_queue_f32 *qu)
         /* each line (two in an overlap) from its state */
         for (i = 0u; i < ((qu->bmode == QB_TWO) ? 2u : 1u); i++) {
             queue_blend_state(qu, i, x);
-            e = queue_brake_plan(qu, i, x[0], x[1], x[2], x[3], 0.0f, 1.0f);
+            e = queue_brake_plan(qu, i, x[0], x[1], x[2], x[3], x[4], 1.0f);
             if (e > d) d = e;
         }
     } else {
@@ -936,17 +1027,26 @@ static DH_NOINLINE float queue_brake(dh_queue_f32 *qu)
     return d;
 }
 
-dh_status dh_queue_stop_f32(dh_queue_f32 *qu)
+/* 1 while two jerk-limited blended lines overlap: a stop waits for the
+ * overlap's end and acts from there (line 2 alone brakes at its own
+ * bounds), since the corner's bounds hold only while line 1 decelerates
+ * and line 2 accelerates (docs/design.md) */
+static int queue_jerk_overlap(const dh_queue_f32 *qu)
 {
-    DH_ASSERT(qu != NULL);
-    if (qu->pend != 0u) return DH_ERR_ARG;
-    if (qu->phase != (uint32_t)DH_QUEUE_RUN) return DH_OK;
-    qu->resume = 0u;
+    return (qu->bmode == QB_TWO && qu->bl[1].T > 0.0f && qu->bl[0].j > 0.0f) ? 1 : 0;
+}
+
+/* the stop of the running move from its state now: its brake, or at
+ * rest at once (then running again when a resume came while it waited) */
+static DH_NOINLINE void queue_stop_now(dh_queue_f32 *qu)
+{
+    qu->stopq = 0u;
     if (qu->count == 0u || qu->started == 0u ||
         ((qu->bmode == QB_ONE || qu->bmode == QB_TWO) ? !queue_blend_moving(qu)
                                                        : (!(qu->mv.clock > 0.0f) || !(qu->mv.clock < qu->mv.dur)))) {
-        qu->phase = (uint32_t)DH_QUEUE_STOPPED;
-        return DH_OK;
+        qu->phase = (qu->resume != 0u) ? (uint32_t)DH_QUEUE_RUN : (uint32_t)DH_QUEUE_STOPPED;
+        qu->resume = 0u;
+        return;
     }
     if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT)
         (void)dh_joint_move_eval_f32(qu->mv.prof, qu->mv.n, qu->mv.q0, qu->mv.q1, qu->mv.clock, qu->bq, qu->mv.ws[0],
@@ -955,6 +1055,20 @@ dh_status dh_queue_stop_f32(dh_queue_f32 *qu)
     qu->tbend = queue_brake(qu);
     qu->braked = 1u;
     qu->phase = (qu->tbend > 0.0f) ? (uint32_t)DH_QUEUE_BRAKE : (uint32_t)DH_QUEUE_STOPPED;
+    if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) queue_rest(qu);
+}
+
+dh_status dh_queue_stop_f32(dh_queue_f32 *qu)
+{
+    DH_ASSERT(qu != NULL);
+    if (qu->pend != 0u) return DH_ERR_ARG;
+    if (qu->phase != (uint32_t)DH_QUEUE_RUN) return DH_OK;
+    qu->resume = 0u;
+    if (queue_jerk_overlap(qu) != 0) {
+        qu->stopq = 1u;
+    } else {
+        queue_stop_now(qu);
+    }
     return DH_OK;
 }
 
@@ -962,7 +1076,7 @@ dh_status dh_queue_resume_f32(dh_queue_f32 *qu)
 {
     DH_ASSERT(qu != NULL);
     if (qu->pend != 0u) return DH_ERR_ARG;
-    if (qu->phase == (uint32_t)DH_QUEUE_BRAKE) {
+    if (qu->phase == (uint32_t)DH_QUEUE_BRAKE || qu->stopq != 0u) {
         qu->resume = 1u;
     } else if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) {
         qu->phase = (uint32_t)DH_QUEUE_RUN;

@@ -68,30 +68,6 @@ static long last_bad;                     /* the last period with a lag or a cha
 static double jerk_worst[2];              /* largest third-difference ratios seen (linear, angular) */
 static long jerk_windows;
 
-/* the third differences of the samples h[0], h[w], h[2 w], h[3 w]
- * (hdt = w periods) within jk (the file's comment) */
-static void check_jerk(const float (*h)[7], int w, double hdt, const dh_cart_jerk_f32 *jk, double ulp, long call)
-{
-    double a[3], b[3], c[3], x, h3 = hdt * hdt * hdt;
-    int k;
-    for (k = 0; k < 3; k++) a[k] = (double)h[0][k] - 3.0 * h[w][k] + 3.0 * h[2 * w][k] - h[3 * w][k];
-    x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    if (x / h3 / (double)jk->jmax > jerk_worst[0]) jerk_worst[0] = x / h3 / (double)jk->jmax;
-    DHT_TRUE_MSG(x <= (double)jk->jmax * h3 * (1.0 + DHM_REL) + 8.0 * ulp, "call %ld: jerk %.9g over %.9g", call,
-                 x / h3, (double)jk->jmax);
-    /* rotation vectors relative to h[w]: along one move they are one axis
-     * times the angle (a fixed world axis) */
-    dhm_rotvec(&h[w][3], &h[0][3], a);
-    dhm_rotvec(&h[w][3], &h[2 * w][3], b);
-    dhm_rotvec(&h[w][3], &h[3 * w][3], c);
-    for (k = 0; k < 3; k++) a[k] = a[k] + 3.0 * b[k] - c[k];
-    x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    if (x / h3 / (double)jk->wjmax > jerk_worst[1]) jerk_worst[1] = x / h3 / (double)jk->wjmax;
-    DHT_TRUE_MSG(x <= (double)jk->wjmax * h3 * (1.0 + DHM_REL) + 8.0 * DHM_ANG_NOISE,
-                 "call %ld: angular jerk %.9g over %.9g", call, x / h3, (double)jk->wjmax);
-    jerk_windows++;
-}
-
 /* every target's finite differences within lim and jk (the file's
  * comment) */
 static void check_fd(dhm_fd *fd, const dh_mat4_f32 *T, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk, double S,
@@ -100,8 +76,10 @@ static void check_fd(dhm_fd *fd, const dh_mat4_f32 *T, const dh_cart_limits_f32 
     const double ulp = S * FLT_EPSILON;
     if (!dhm_fd_push(fd, T, lim, ulp, call)) return;
     /* the jerk over windows of OK periods at a constant r */
-    if (fd->nh >= (long)(NL - 1) * WD + 1 && last_bad < call - 3L * W - 1L)
-        check_jerk((const float (*)[7])lp, W / WD, (double)W * DT, jk, ulp, call);
+    if (fd->nh >= (long)(NL - 1) * WD + 1 && last_bad < call - 3L * W - 1L) {
+        dhm_check_jerk((const float (*)[7])lp, W / WD, (double)W * DT, jk, ulp, call, jerk_worst);
+        jerk_windows++;
+    }
 }
 
 /* the target on the running move's segment (the queue's head item)
