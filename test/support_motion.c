@@ -3,6 +3,7 @@
  * support_motion.c - shared helpers of the float queue tests (contract in
  * support_motion.h), in double.
  */
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 #include <string.h>
@@ -202,6 +203,24 @@ void dhm_check_acc(const float (*h)[7], int w, double hdt, const dh_cart_limits_
     DHT_TRUE_MSG(x <= (double)lim->wdmax * hdt * hdt * (1.0 + REL) + 2.0 * ANG_NOISE,
                  "call %ld: angular acceleration %.9g over %.9g (%.3g s)", call, x / (hdt * hdt), (double)lim->wdmax,
                  hdt);
+}
+
+int dhm_check_corner(const dh_queue_f32 *qu, const dh_mat4_f32 *T, uint32_t n, const float (*cp)[3],
+                     const float *radius, double S, long call, uint32_t *k, double x[3])
+{
+    const double tol = 1e-6 + 8.0 * FLT_EPSILON * S;
+    double c[3], d;
+    int i;
+    *k = (qu->seq < n) ? qu->seq : n - 1u;
+    for (i = 0; i < 3; i++) {
+        x[i] = T->m[3][i];
+        c[i] = cp[*k + 1u][i];
+    }
+    if (qu->bmode != 2u) return 0;
+    d = dhm_dist3(x, c);
+    DHT_TRUE_MSG(*k + 1u < n && d <= (double)radius[*k] + tol, "call %ld: %.9g from corner %u, radius %.9g", call, d,
+                 (unsigned)*k, (double)radius[*k]);
+    return 1;
 }
 
 void dhm_check_jerk(const float (*h)[7], int w, double hdt, const dh_cart_jerk_f32 *jk, double ulp, long call,

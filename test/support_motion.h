@@ -57,6 +57,13 @@ void dhm_check_acc(const float (*h)[7], int w, double hdt, const dh_cart_limits_
  * 1 + DHM_REL (plus 8 ulp of the positions' scale and 8 DHM_ANG_NOISE);
  * worst[0], worst[1] raised to the ratios to the limits seen (linear,
  * angular) */
+/* the queued line k that qu runs (its seq, at most n - 1) and the tool's
+ * position x (T's column 3); in an overlap of blended lines (bmode 2)
+ * checks that line k + 1 exists and x lies within radius[k] (plus 1e-6
+ * and 8 ulp of the scale S) of the corner cp[k + 1] and returns 1, else
+ * returns 0 (the caller checks x against line k, cp[k] to cp[k + 1]) */
+int dhm_check_corner(const dh_queue_f32 *qu, const dh_mat4_f32 *T, uint32_t n, const float (*cp)[3],
+                     const float *radius, double S, long call, uint32_t *k, double x[3]);
 void dhm_check_jerk(const float (*h)[7], int w, double hdt, const dh_cart_jerk_f32 *jk, double ulp, long call,
                     double worst[2]);
 

@@ -669,7 +669,7 @@ dh_status dh_blend_seq_plan_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, con
 /* the distance x of the scaling g at its time t in (0, g->T) covered
  * from its start (returns 0: the first half) or left to its end (returns
  * 1) */
-DH_INLINE int seg_eval(const dh_blend_seg_f32 *g, float t, float *x)
+static DH_NOINLINE int seg_eval(const dh_blend_seg_f32 *g, float t, float *x)
 {
     float r;
     if (t < g->tb0 + g->t1 + 0.5f * g->tv) {
@@ -906,6 +906,12 @@ static DH_NOINLINE void jp_fill(dh_blend_seg_f32 *g, float V, float D)
     g->T = g->t1 + g->tv + g->t3;
 }
 
+/* jseq_bound's bound of one line's duration from its rates r */
+static DH_NOINLINE float jseq_line_T(const float r[3])
+{
+    return 2.0f / r[0] + 4.0f * (r[0] / r[1] + r[1] / r[2] + 2.0f * (dh_sqrtf_(r[0]) / dh_sqrtf_(r[2])));
+}
+
 /* the statuses of the lines' rates (jseq_rates), then DH_ERR_OVERFLOW
  * when a line's duration bound 2 / V + 4 (V / a + a / j + 2 sqrt(V / j))
  * (above any of its scalings: each change of speed takes at most
@@ -919,9 +925,7 @@ static DH_NOINLINE dh_status jseq_bound(const dh_path_f32 *p, uint32_t n, const 
     dh_status st = DH_OK;
     for (i = 0u; i < n && st == DH_OK; i++) {
         st = jseq_rates(&p[i], lim, jk, r);
-        if (st == DH_OK && r[1] > 0.0f) {
-            T += 2.0f / r[0] + 4.0f * (r[0] / r[1] + r[1] / r[2] + 2.0f * (dh_sqrtf_(r[0]) / dh_sqrtf_(r[2])));
-        }
+        if (st == DH_OK && r[1] > 0.0f) T += jseq_line_T(r);
     }
     if (st == DH_OK && !dh_isfinite_f32(T)) st = DH_ERR_OVERFLOW;
     return st;
@@ -998,26 +1002,34 @@ DH_INLINE float jt_a(float v, float tj, float ta, float r)
     return (r < tj) ? (ap / tj) * r : ap;
 }
 
+/* 1 when the tool stays within the radius of the corner c over its
+ * overlap tb: L1 x1 + L2 x2 <= radius, x_i the s each line covers in tb
+ * (jt_x; jseq_tb's first test, apart from jseq_ok's frame) */
+static DH_NOINLINE int jseq_near(const jseq_corner *c, float tb)
+{
+    dh_blend_seg_f32 *const *g = c->g;
+    const dh_path_f32 *const *p = c->p;
+    return (p[0]->length * jt_x(0.0f, g[0]->v, g[0]->tj3, g[0]->t3, tb) +
+                p[1]->length * jt_x(0.0f, g[1]->v, g[1]->tj1, g[1]->t1, tb) <=
+            c->radius)
+               ? 1
+               : 0;
+}
+
 /* 1 when the overlap tb of the corner c (g[0]'s deceleration v, tj3, t3
  * and g[1]'s acceleration v, tj1, t1, tb within half of each) keeps the
- * tool within radius of the corner (L1 x1 + L2 x2 <= radius, x_i the s
- * each covers in its tb: jt_x) and the cross terms of the composed
- * rotation within their 1/64 (docs/design.md): with w_i = th_i u_i (u_i
+ * cross terms of the composed rotation within their 1/64 (docs/design.md;
+ * the radius is jseq_near's test): with w_i = th_i u_i (u_i
  * the s' at tb, the largest in the overlap) and P_i = th_i times the
  * lowered s'' bound, (pi/180) w1 w2 <= wdmax / 64,
  * (pi/180) (2 w2 P1 + P2 w1) <= wjmax / 128 and
  * (pi/180)^2 w2^2 w1 <= wjmax / 128 */
-DH_INLINE int jseq_ok(const jseq_corner *c, float tb)
+static DH_NOINLINE int jseq_ok(const jseq_corner *c, float tb)
 {
     dh_blend_seg_f32 *const *g = c->g;
     const dh_path_f32 *const *p = c->p;
     const float w1 = p[0]->angle * jt_v(g[0]->v, g[0]->tj3, g[0]->t3, tb);
     const float w2 = p[1]->angle * jt_v(g[1]->v, g[1]->tj1, g[1]->t1, tb);
-    if (!(p[0]->length * jt_x(0.0f, g[0]->v, g[0]->tj3, g[0]->t3, tb) +
-              p[1]->length * jt_x(0.0f, g[1]->v, g[1]->tj1, g[1]->t1, tb) <=
-          c->radius)) {
-        return 0;
-    }
     if (!(w1 * w2 <= BLEND_RAD2DEG * (c->lim->wdmax * 0.015625f))) return 0;
     if (!(2.0f * w2 * (p[0]->angle * g[0]->b1) + (p[1]->angle * g[1]->b0) * w1 <=
           BLEND_RAD2DEG * (c->jk->wjmax * 0.0078125f))) {
@@ -1035,7 +1047,7 @@ static DH_NOINLINE float jseq_tb(const jseq_corner *c)
     float lo = 0.0f, hi = H, m = H;
     int i;
     for (i = 0; i < 200 && H > 0.0f; i++) {
-        if (jseq_ok(c, m)) {
+        if (jseq_near(c, m) != 0 && jseq_ok(c, m) != 0) {
             lo = m;
             if (!(m < H)) break;
         } else {
@@ -1060,10 +1072,13 @@ static DH_NOINLINE void jseq_prof(dh_blend_seg_f32 *g, const dh_path_f32 *p, con
     g->j = r[2];
 }
 
-/* the time line i of the corner c takes with its own bounds at the
- * corner's end (b, k of its side) less with the ones it holds, its
- * scaling left as with the ones it holds */
-static DH_NOINLINE float jseq_side(const jseq_corner *c, int i)
+/* g[0]->dev (scratch until jseq_overlap) = the time the lowered bounds
+ * of the corner c (jseq_red) add to its two lines, each line's other end
+ * as set, over two calls: line i = 0's set, line i = 1's added (the time
+ * line i takes with its own bounds at the corner's end, b, k of its
+ * side, less with the ones it holds); the scalings are left as with the
+ * lowered bounds (for jseq_tb) */
+static DH_NOINLINE void jseq_cost(const jseq_corner *c, int i)
 {
     dh_blend_seg_f32 *g = c->g[i];
     float *b = (i == 0) ? &g->b1 : &g->b0, *k = (i == 0) ? &g->k1 : &g->k0;
@@ -1076,18 +1091,10 @@ static DH_NOINLINE float jseq_side(const jseq_corner *c, int i)
     *b = x;
     *k = y;
     jp_fill(g, r[0], 1.0f);
-    return g->T - T;
+    x = g->T - T;
+    c->g[0]->dev = (i == 0) ? x : c->g[0]->dev + x;
 }
 
-/* g[0]->dev (scratch until jseq_overlap) = the time the lowered bounds
- * of the corner c (jseq_red) add to its two lines, each line's other end
- * as set; the scalings are left as with the lowered bounds (for
- * jseq_tb) */
-static DH_NOINLINE void jseq_cost(const jseq_corner *c)
-{
-    float x = jseq_side(c, 0);
-    c->g[0]->dev = x + jseq_side(c, 1);
-}
 
 /* the corner c at rest: its lines' own bounds, tb1 0 */
 static DH_NOINLINE void jseq_unmark(const jseq_corner *c)
@@ -1180,7 +1187,8 @@ dh_status dh_blend_seq_plan_jerk_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg
         for (k = 0u; k + 1u < n; k++) {
             jseq_at(&c, seg, p, k, radius[k]);
             if (seg[k].tb1 > 0.0f) {
-                jseq_cost(&c);
+                jseq_cost(&c, 0);
+                jseq_cost(&c, 1);
                 if (!(seg[k].dev < jseq_tb(&c))) jseq_unmark(&c);
             }
         }
@@ -1270,12 +1278,10 @@ static DH_NOINLINE float jseg_rate(const dh_blend_seg_f32 *g, float t, float *sd
     return (x < 0.5f * ta) ? jt_v(g->v, tj, ta, x) : g->v - jt_v(g->v, tj, ta, m);
 }
 
-float dh_blend_seg_rate_f32_(const dh_blend_seg_f32 *g, float t, float *sdd)
+/* s' of the trapezoidal scaling g at its time t in (0, T), s'' into *sdd */
+static DH_NOINLINE float seg_rate(const dh_blend_seg_f32 *g, float t, float *sdd)
 {
     float r = g->T - t;
-    *sdd = 0.0f;
-    if (!(t > 0.0f) || !(t < g->T)) return 0.0f;
-    if (g->j > 0.0f) return jseg_rate(g, t, sdd);
     if (t < g->tb0) {
         *sdd = g->b0;
         return g->b0 * t;
@@ -1293,6 +1299,13 @@ float dh_blend_seg_rate_f32_(const dh_blend_seg_f32 *g, float t, float *sdd)
         return g->u1 + g->a * (r - g->tb1);
     }
     return g->v;
+}
+
+float dh_blend_seg_rate_f32_(const dh_blend_seg_f32 *g, float t, float *sdd)
+{
+    *sdd = 0.0f;
+    if (!(t > 0.0f) || !(t < g->T)) return 0.0f;
+    return (g->j > 0.0f) ? jseg_rate(g, t, sdd) : seg_rate(g, t, sdd);
 }
 
 void dh_blend_pose_rot_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat4_f32 *T)
@@ -1336,19 +1349,22 @@ void dh_blend_jline_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_car
  * on the pair, its steps called from here one after the other; the
  * first line's speed v as it was planned kept (its start overlap, when it
  * has one, was planned with it), else the corner at rest */
-float dh_blend_jcorner_f32_(dh_blend_seg_f32 *g[2], const dh_path_f32 *p1, const dh_path_f32 *p2,
-                            const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk, float radius)
+float dh_blend_jcorner_f32_(dh_queue_item_f32 *i1, dh_queue_item_f32 *i2)
 {
     jseq_corner c;
-    const float v = g[0]->v;
+    dh_blend_seg_f32 *const *g = c.g;
+    const dh_path_f32 *p1 = &i1->path, *p2 = &i2->path;
+    const dh_cart_limits_f32 *lim = &i1->lim;
+    const dh_cart_jerk_f32 *jk = &i1->jk;
+    const float v = i1->seg.v;
     float tb = 0.0f;
-    c.g[0] = g[0];
-    c.g[1] = g[1];
+    c.g[0] = &i1->seg;
+    c.g[1] = &i2->seg;
     c.p[0] = p1;
     c.p[1] = p2;
     c.lim = lim;
     c.jk = jk;
-    c.radius = radius;
+    c.radius = i1->radius;
     if (p1->kind == (uint32_t)DH_PATH_LINE && p2->kind == (uint32_t)DH_PATH_LINE && blend_joins(p1, p2)) {
         jseq_unmark(&c);
         jseq_red(&c);
@@ -1356,7 +1372,8 @@ float dh_blend_jcorner_f32_(dh_blend_seg_f32 *g[2], const dh_path_f32 *p1, const
         g[0]->tb1 = 0.0f;
     }
     if (g[0]->tb1 > 0.0f) {
-        jseq_cost(&c);
+        jseq_cost(&c, 0);
+        jseq_cost(&c, 1);
         if (!(g[0]->dev < jseq_tb(&c))) jseq_unmark(&c);
     }
     jseq_prof(g[0], p1, lim, jk);

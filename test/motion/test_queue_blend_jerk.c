@@ -89,20 +89,9 @@ static void check_fd(dhm_fd *fd, const dh_mat4_f32 *T, const dh_cart_limits_f32 
  * inside one; 1 when inside */
 static int check_path(const dh_mat4_f32 *T, uint32_t n, double S, long call)
 {
-    const uint32_t k = (qu.seq < n) ? qu.seq : n - 1u;
-    const double tol = 1e-6 + 8.0 * FLT_EPSILON * S;
-    double x[3], c[3], d;
-    int i;
-    for (i = 0; i < 3; i++) {
-        x[i] = T->m[3][i];
-        c[i] = cp[k + 1u][i];
-    }
-    if (qu.bmode == 2u) {
-        d = dhm_dist3(x, c);
-        DHT_TRUE_MSG(k + 1u < n && d <= (double)radius[k] + tol, "call %ld: %.9g from corner %u, radius %.9g", call, d,
-                     (unsigned)k, (double)radius[k]);
-        return 1;
-    }
+    uint32_t k;
+    double x[3], d;
+    if (dhm_check_corner(&qu, T, n, (const float (*)[3])cp, radius, S, call, &k, x)) return 1;
     d = dhm_seg_dist(cp[k], cp[k + 1u], x);
     DHT_TRUE_MSG(d <= 1e-6, "call %ld: %.9g off line %u", call, d, (unsigned)k);
     return 0;
