@@ -205,6 +205,20 @@ void dhm_check_acc(const float (*h)[7], int w, double hdt, const dh_cart_limits_
                  hdt);
 }
 
+void dhm_line_arc(dh_path_f32 *line, dh_path_f32 *arc)
+{
+    dh_mat4_f32 A, B;
+    const float v[3] = { 0.3f, 0.1f, 0.2f };
+    memset(&A, 0, sizeof A);
+    A.m[0][0] = A.m[1][1] = A.m[2][2] = A.m[3][3] = 1.0f;
+    B = A;
+    A.m[3][0] = 0.2f;
+    B.m[3][0] = 0.4f;
+    B.m[3][1] = 0.2f;
+    DHT_EQ_INT(dh_path_line_f32(line, &A, &B), DH_OK);
+    DHT_EQ_INT(dh_path_arc_f32(arc, &A, v, &B), DH_OK);
+}
+
 int dhm_check_corner(const dh_queue_f32 *qu, const dh_mat4_f32 *T, uint32_t n, const float (*cp)[3],
                      const float *radius, double S, long call, uint32_t *k, double x[3])
 {

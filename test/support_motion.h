@@ -57,6 +57,10 @@ void dhm_check_acc(const float (*h)[7], int w, double hdt, const dh_cart_limits_
  * 1 + DHM_REL (plus 8 ulp of the positions' scale and 8 DHM_ANG_NOISE);
  * worst[0], worst[1] raised to the ratios to the limits seen (linear,
  * angular) */
+/* a line from (0.2, 0, 0) to (0.4, 0.2, 0), identity rotation, and an
+ * arc between the same ends through (0.3, 0.1, 0.2): the paths of the
+ * queue tests' status checks */
+void dhm_line_arc(dh_path_f32 *line, dh_path_f32 *arc);
 /* the queued line k that qu runs (its seq, at most n - 1) and the tool's
  * position x (T's column 3); in an overlap of blended lines (bmode 2)
  * checks that line k + 1 exists and x lies within radius[k] (plus 1e-6

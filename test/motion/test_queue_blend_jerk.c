@@ -258,17 +258,8 @@ static void blend_jerk_bad(void)
     static const dh_cart_limits_f32 lim = { 0.1f, 1.0f, 30.0f, 300.0f };
     dh_cart_jerk_f32 jk = { 10.0f, 3000.0f };
     dh_path_f32 arc;
-    dh_mat4_f32 A, B;
-    const float v[3] = { 0.3f, 0.1f, 0.2f };
     uint64_t keep;
-    memset(&A, 0, sizeof A);
-    A.m[0][0] = A.m[1][1] = A.m[2][2] = A.m[3][3] = 1.0f;
-    B = A;
-    A.m[3][0] = 0.2f;
-    B.m[3][0] = 0.4f;
-    B.m[3][1] = 0.2f;
-    DHT_EQ_INT(dh_path_line_f32(&line, &A, &B), DH_OK);
-    DHT_EQ_INT(dh_path_arc_f32(&arc, &A, v, &B), DH_OK);
+    dhm_line_arc(&line, &arc);
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, 1), DH_OK);
     DHT_EQ_INT(dh_queue_add_path_blend_jerk_f32(&qu, &line, &lim, &jk, NAN), DH_ERR_NAN);
     DHT_EQ_INT(dh_queue_add_path_blend_jerk_f32(&qu, &line, &lim, &jk, -1e-3f), DH_ERR_ARG);
