@@ -63,8 +63,6 @@
 /* static: the micro:bit's RAM holds them beside the rig on the stack */
 static dh_queue_f32 qu;
 static dh_queue_item_f32 items[CAP];
-static dh_path_f32 line;                  /* the line being appended */
-static float qc[NMAX + 1][DH_MAX_JOINTS]; /* the corners' configurations */
 static float cp[NMAX + 1][3];             /* the corners' positions (line k: cp[k] to cp[k + 1]) */
 static float radius[NMAX];
 static float sp[NS][7], lp[NL][7]; /* position and unit quaternion of the target m periods (m WD periods) ago */
@@ -98,7 +96,7 @@ static int check_path(const dh_mat4_f32 *T, uint32_t n, double S, long call)
 }
 
 /* the frame of corner k (FK of its configuration) */
-static void corner(const dhm_rig *g, uint32_t k, dh_mat4_f32 *T)
+static void corner(const dhm_rig *g, const float (*qc)[DH_MAX_JOINTS], uint32_t k, dh_mat4_f32 *T)
 {
     double q[DH_MAX_JOINTS];
     uint32_t i;
@@ -106,20 +104,23 @@ static void corner(const dhm_rig *g, uint32_t k, dh_mat4_f32 *T)
     dhs_target_f32(&g->r, q, T);
 }
 
-/* line k appended with its radius */
-static void append(const dhm_rig *g, uint32_t k, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk)
+/* line k appended with its radius (qc: the corners' configurations) */
+static void append(const dhm_rig *g, const float (*qc)[DH_MAX_JOINTS], uint32_t k, const dh_cart_limits_f32 *lim,
+                   const dh_cart_jerk_f32 *jk)
 {
+    dh_path_f32 line;
     dh_mat4_f32 A, B;
-    corner(g, k, &A);
-    corner(g, k + 1u, &B);
+    corner(g, qc, k, &A);
+    corner(g, qc, k + 1u, &B);
     DHT_EQ_INT(dh_path_line_f32(&line, &A, &B), DH_OK);
     DHT_EQ_INT(dh_queue_add_path_blend_jerk_f32(&qu, &line, lim, jk, radius[k]), DH_OK);
     DHT_EQ_INT(items[(qu.head + qu.count - 1u) % CAP].jerk, 2);
 }
 
-/* the corners' configurations a few degrees apart from qa, their
+/* the corners' configurations qc a few degrees apart from qa, their
  * positions, the radii; S the largest |coordinate| (at least 1) */
-static void draw_lines(const dhm_rig *g, const double *qa, uint32_t n, double step, double *S)
+static void draw_lines(const dhm_rig *g, const double *qa, uint32_t n, double step, float (*qc)[DH_MAX_JOINTS],
+                       double *S)
 {
     dh_mat4_f32 T;
     uint32_t k, i;
@@ -127,7 +128,7 @@ static void draw_lines(const dhm_rig *g, const double *qa, uint32_t n, double st
     for (i = 0; i < g->r.n; i++) qc[0][i] = (float)qa[i];
     for (k = 0; k <= n; k++) {
         if (k > 0) dhm_draw_q(&g->r, qc[k - 1u], step, qc[k]);
-        corner(g, k, &T);
+        corner(g, (const float (*)[DH_MAX_JOINTS])qc, k, &T);
         for (i = 0; i < 3u; i++) {
             cp[k][i] = T.m[3][i];
             *S = fmax(*S, fabs((double)cp[k][i]));
@@ -157,8 +158,10 @@ static void blend_jerk_queue(dhm_rig *g, const double *q_nom, long ov[2])
     long call, lag_from = -1, stop_call = -1, stopped_at = -1;
     uint32_t i, added, done = 0, ov_stop = 0xffffffffu;
     int resumed = 0, in_ov, planned;
+    float qc[NMAX + 1][DH_MAX_JOINTS]; /* the corners' configurations (on the stack: the micro:bit's RAM) */
+    const float (*qcc)[DH_MAX_JOINTS] = (const float (*)[DH_MAX_JOINTS])qc;
     for (i = 0; i < g->r.n; i++) qa[i] = q_nom[i] + dht_rand_uniform(-5.0, 5.0);
-    draw_lines(g, qa, n, 8.0, &S);
+    draw_lines(g, qa, n, 8.0, qc, &S);
     lim.vmax = (float)dht_rand_uniform(0.05, 0.2);
     lim.amax = (float)dht_rand_uniform(0.3, 2.0);
     lim.wmax = (float)dht_rand_uniform(15.0, 60.0);
@@ -168,7 +171,7 @@ static void blend_jerk_queue(dhm_rig *g, const double *q_nom, long ov[2])
     for (i = 0; i < g->r.n; i++) q0[i] = qc[0][i];
     DHT_EQ_INT(dh_track_init_f32(&g->t, &g->r, g->closed ? &g->m : NULL, q0, DT), DH_OK);
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
-    for (added = 0; added < n0 && added < CAP; added++) append(g, added, &lim, &jk);
+    for (added = 0; added < n0 && added < CAP; added++) append(g, qcc, added, &lim, &jk);
     planned = added >= 2u && items[0].ctb > 0.0f;
     last_bad = -1;
     for (call = 0; call < MAXCALL && done < n; call++) {
@@ -194,7 +197,7 @@ static void blend_jerk_queue(dhm_rig *g, const double *q_nom, long ov[2])
         if (rep.done) {
             done++;
             DHT_EQ_INT(rep.last, done == added);
-            if (added < n) append(g, added++, &lim, &jk);
+            if (added < n) append(g, qcc, added++, &lim, &jk);
         }
         /* the stop inside an overlap (the head line's tail and the next's), or at stop_at */
         if (stop_call < 0 && qu.phase == (uint32_t)DH_QUEUE_RUN && done < n &&
@@ -220,7 +223,7 @@ static void blend_jerk_queue(dhm_rig *g, const double *q_nom, long ov[2])
     DHT_TRUE_MSG(done == n, "%u of %u moves done in %ld periods", (unsigned)done, (unsigned)n, call);
     {
         dh_mat4_f32 B;
-        corner(g, n, &B);
+        corner(g, qcc, n, &B);
         DHT_TRUE(memcmp(&cmd.T, &B, sizeof cmd.T) == 0);
     }
     if (stop_call >= 0) DHT_TRUE(resumed);
@@ -257,7 +260,7 @@ static void blend_jerk_bad(void)
 {
     static const dh_cart_limits_f32 lim = { 0.1f, 1.0f, 30.0f, 300.0f };
     dh_cart_jerk_f32 jk = { 10.0f, 3000.0f };
-    dh_path_f32 arc;
+    dh_path_f32 line, arc;
     uint64_t keep;
     dhm_line_arc(&line, &arc);
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, 1), DH_OK);
