@@ -77,8 +77,6 @@ typedef struct {
     float blend;           /* --blend R: the radius of every corner between Cartesian segments (-1: none) */
     dh_queue_f32 qu;       /* with --blend: the queue that runs consecutive Cartesian segments */
     dh_queue_item_f32 items[MOVE_MAX_SEG];
-    dh_blend_seg_f32 seg[MOVE_MAX_SEG];  /* with --blend --jerk: the scalings of a sequence of lines */
-    float rad[MOVE_MAX_SEG];             /* its corners' radii (all --blend) */
     double dt;
     int jerk;
     int32_t jq[DH_MAX_JOINTS]; /* --fixed --jerk: the joints' jerk limits (Q16.16 deg/s^3, dh_qpos/s^3) */
@@ -406,9 +404,28 @@ static int run_path(move_plan *p, unsigned i, const move_seg *s, float *q)
     return 0;
 }
 
+/* segment i appended to the queue: with --jerk a line as a jerk-limited
+ * blended line, an arc as a jerk-limited move (its corners at rest);
+ * else as a blended move */
+static dh_status blend_add(move_plan *p, unsigned i, const move_seg *s)
+{
+    if (!p->jerk) return dh_queue_add_path_blend_f32(&p->qu, &p->path[i], &p->lim, p->blend);
+    if (s->kind == SEG_LINE) return dh_queue_add_path_blend_jerk_f32(&p->qu, &p->path[i], &p->lim, &p->cj, p->blend);
+    return dh_queue_add_path_jerk_f32(&p->qu, &p->path[i], &p->lim, &p->cj);
+}
+
+/* the planned duration of the queue's head move: its profile's, or its
+ * jerk-limited blended scaling's when longer (lowered at its corners) */
+static float blend_dur(const move_plan *p)
+{
+    const dh_queue_item_f32 *it = &p->qu.items[p->qu.head];
+    return (it->jerk == 2u && it->seg.T > it->prof.T) ? it->seg.T : it->prof.T;
+}
+
 /* Cartesian segments i0..i1-1 (lines and arcs) run by one queue with
- * their corners blended within --blend, tracked from the tracker's
- * configuration */
+ * their corners blended within --blend (with --jerk: the corners between
+ * lines, jerk-limited), tracked from the tracker's configuration; a
+ * tracker that lags slows the queue's feed override */
 static int run_blend(move_plan *p, const move_args *a, unsigned i0, unsigned i1, float *q)
 {
     dh_queue_report_f32 rep;
@@ -419,11 +436,11 @@ static int run_blend(move_plan *p, const move_args *a, unsigned i0, unsigned i1,
     int rc;
     dh_status st = dh_queue_init_f32(&p->qu, p->items, MOVE_MAX_SEG);
     for (; i < i1 && st == DH_OK; i++) {
-        st = dh_queue_add_path_blend_f32(&p->qu, &p->path[i], &p->lim, p->blend);
+        st = blend_add(p, i, &a->seg[i]);
         if (st != DH_OK) return seg_error(i, &a->seg[i], "the blended move cannot be planned", path_why(st));
     }
     for (i = i0; i < i1;) {
-        const double cap = move_cap(p, p->qu.items[p->qu.head].prof.T);
+        const double cap = move_cap(p, blend_dur(p));
         if (k >= cap) return cap_reached(i, &a->seg[i], cap);
         k += 1.0;
         st = dh_queue_target_f32(&p->qu, &p->t, (float)p->dt, &cmd);
@@ -435,42 +452,6 @@ static int run_blend(move_plan *p, const move_args *a, unsigned i0, unsigned i1,
             i++;
             k = 0.0;
         }
-    }
-    return 0;
-}
-
-/* Lines i0..i1-1 (two or more) with --blend and --jerk: one jerk-limited
- * blended sequence (dh_blend_seq_plan_jerk_f32), every corner within
- * --blend, tracked from the tracker's configuration. Its clock holds at
- * 0 until the tracker is ok at the first line's start, then advances by
- * dt every period (no feed override: a tracker that lags reports it);
- * done when the clock is at the end and the tracker ok there. */
-static int run_blend_jerk(move_plan *p, const move_args *a, unsigned i0, unsigned i1, float *q)
-{
-    dh_blend_seq_f32 sq;
-    dh_track_report_f32 trep;
-    dh_mat4_f32 T;
-    double c = 0.0, tc, k = 0.0, cap;
-    unsigned i;
-    int rc, started = 0, done = 0;
-    dh_status st;
-    for (i = i0; i < i1; i++) p->rad[i - i0] = p->blend;
-    st = dh_blend_seq_plan_jerk_f32(&sq, p->seg, &p->path[i0], i1 - i0, p->rad, &p->lim, &p->cj);
-    if (st != DH_OK) return seg_error(i0, &a->seg[i0], "the blended jerk-limited move cannot be planned", path_why(st));
-    cap = move_cap(p, sq.T);
-    while (!done) {
-        if (k >= cap) return cap_reached(i0, &a->seg[i0], cap);
-        k += 1.0;
-        tc = started ? c + p->dt : 0.0;
-        if (tc > (double)sq.T) tc = (double)sq.T;
-        if ((st = dh_blend_seq_eval_f32(&sq, (float)tc, &T)) == DH_OK) st = dh_track_step_f32(&p->t, &T, q, &trep);
-        if (st != DH_OK) return seg_error(i0, &a->seg[i0], "a control period failed", dh_status_str(st));
-        if ((rc = move_line(p, q, (int)trep.state)) != 0) return rc;
-        if (trep.state == DH_TRACK_OK || started) {
-            c = tc;
-            started = 1;
-        }
-        done = (c >= (double)sq.T && trep.state == DH_TRACK_OK);
     }
     return 0;
 }
@@ -497,18 +478,7 @@ static int move_run(const move_args *a, move_plan *p)
         /* the tracker starts (again) where the robot is at rest */
         if (!tracking && (rc = cli_track_start("move", &p->r, &p->m, q, (float)p->dt, &p->t)) != 0) return rc;
         tracking = 1;
-        if (p->blend >= 0.0f && p->jerk) {
-            /* with --blend --jerk: this line and the lines after it
-             * (an arc, or a line alone, runs at rest) */
-            unsigned e = i + 1u;
-            while (s->kind == SEG_LINE && e < a->nseg && a->seg[e].kind == SEG_LINE) e++;
-            if (e > i + 1u) {
-                rc = run_blend_jerk(p, a, i, e, q);
-                i = e - 1u;
-            } else {
-                rc = run_path(p, i, s, q);
-            }
-        } else if (p->blend >= 0.0f) {
+        if (p->blend >= 0.0f) {
             /* with --blend: this segment and the Cartesian ones after it */
             unsigned e = i + 1u;
             while (e < a->nseg && a->seg[e].kind != SEG_JOINT) e++;

@@ -3,6 +3,7 @@
  * support_motion.c - shared helpers of the float queue tests (contract in
  * support_motion.h), in double.
  */
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 #include <string.h>
@@ -202,6 +203,60 @@ void dhm_check_acc(const float (*h)[7], int w, double hdt, const dh_cart_limits_
     DHT_TRUE_MSG(x <= (double)lim->wdmax * hdt * hdt * (1.0 + REL) + 2.0 * ANG_NOISE,
                  "call %ld: angular acceleration %.9g over %.9g (%.3g s)", call, x / (hdt * hdt), (double)lim->wdmax,
                  hdt);
+}
+
+void dhm_line_arc(dh_path_f32 *line, dh_path_f32 *arc)
+{
+    dh_mat4_f32 A, B;
+    const float v[3] = { 0.3f, 0.1f, 0.2f };
+    memset(&A, 0, sizeof A);
+    A.m[0][0] = A.m[1][1] = A.m[2][2] = A.m[3][3] = 1.0f;
+    B = A;
+    A.m[3][0] = 0.2f;
+    B.m[3][0] = 0.4f;
+    B.m[3][1] = 0.2f;
+    DHT_EQ_INT(dh_path_line_f32(line, &A, &B), DH_OK);
+    DHT_EQ_INT(dh_path_arc_f32(arc, &A, v, &B), DH_OK);
+}
+
+int dhm_check_corner(const dh_queue_f32 *qu, const dh_mat4_f32 *T, uint32_t n, const float (*cp)[3],
+                     const float *radius, double S, long call, uint32_t *k, double x[3])
+{
+    const double tol = 1e-6 + 8.0 * FLT_EPSILON * S;
+    double c[3], d;
+    int i;
+    *k = (qu->seq < n) ? qu->seq : n - 1u;
+    for (i = 0; i < 3; i++) {
+        x[i] = T->m[3][i];
+        c[i] = cp[*k + 1u][i];
+    }
+    if (qu->bmode != 2u) return 0;
+    d = dhm_dist3(x, c);
+    DHT_TRUE_MSG(*k + 1u < n && d <= (double)radius[*k] + tol, "call %ld: %.9g from corner %u, radius %.9g", call, d,
+                 (unsigned)*k, (double)radius[*k]);
+    return 1;
+}
+
+void dhm_check_jerk(const float (*h)[7], int w, double hdt, const dh_cart_jerk_f32 *jk, double ulp, long call,
+                    double worst[2])
+{
+    double a[3], b[3], c[3], x, h3 = hdt * hdt * hdt;
+    int k;
+    for (k = 0; k < 3; k++) a[k] = (double)h[0][k] - 3.0 * h[w][k] + 3.0 * h[2 * w][k] - h[3 * w][k];
+    x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    if (x / h3 / (double)jk->jmax > worst[0]) worst[0] = x / h3 / (double)jk->jmax;
+    DHT_TRUE_MSG(x <= (double)jk->jmax * h3 * (1.0 + DHM_REL) + 8.0 * ulp, "call %ld: jerk %.9g over %.9g", call,
+                 x / h3, (double)jk->jmax);
+    /* rotation vectors relative to h[w]: along one move they are one axis
+     * times the angle (a fixed world axis) */
+    dhm_rotvec(&h[w][3], &h[0][3], a);
+    dhm_rotvec(&h[w][3], &h[2 * w][3], b);
+    dhm_rotvec(&h[w][3], &h[3 * w][3], c);
+    for (k = 0; k < 3; k++) a[k] = a[k] + 3.0 * b[k] - c[k];
+    x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    if (x / h3 / (double)jk->wjmax > worst[1]) worst[1] = x / h3 / (double)jk->wjmax;
+    DHT_TRUE_MSG(x <= (double)jk->wjmax * h3 * (1.0 + DHM_REL) + 8.0 * DHM_ANG_NOISE,
+                 "call %ld: angular jerk %.9g over %.9g", call, x / h3, (double)jk->wjmax);
 }
 
 uint64_t dhm_hash(const void *a, size_t na, const void *b, size_t nb)

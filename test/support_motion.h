@@ -52,6 +52,25 @@ void dhm_check_speed(const float *h0, const float *h1, double hdt, const dh_cart
  * over (w dt = hdt)^2 within lim likewise (h: rows of 7) */
 void dhm_check_acc(const float (*h)[7], int w, double hdt, const dh_cart_limits_f32 *lim, double ulp, long call);
 
+/* The third differences of the samples h[0], h[w], h[2 w], h[3 w]
+ * (hdt = w periods): TOTAL jerk and angular jerk within jk times
+ * 1 + DHM_REL (plus 8 ulp of the positions' scale and 8 DHM_ANG_NOISE);
+ * worst[0], worst[1] raised to the ratios to the limits seen (linear,
+ * angular) */
+/* a line from (0.2, 0, 0) to (0.4, 0.2, 0), identity rotation, and an
+ * arc between the same ends through (0.3, 0.1, 0.2): the paths of the
+ * queue tests' status checks */
+void dhm_line_arc(dh_path_f32 *line, dh_path_f32 *arc);
+/* the queued line k that qu runs (its seq, at most n - 1) and the tool's
+ * position x (T's column 3); in an overlap of blended lines (bmode 2)
+ * checks that line k + 1 exists and x lies within radius[k] (plus 1e-6
+ * and 8 ulp of the scale S) of the corner cp[k + 1] and returns 1, else
+ * returns 0 (the caller checks x against line k, cp[k] to cp[k + 1]) */
+int dhm_check_corner(const dh_queue_f32 *qu, const dh_mat4_f32 *T, uint32_t n, const float (*cp)[3],
+                     const float *radius, double S, long call, uint32_t *k, double x[3]);
+void dhm_check_jerk(const float (*h)[7], int w, double hdt, const dh_cart_jerk_f32 *jk, double ulp, long call,
+                    double worst[2]);
+
 /* The finite-difference checks of a stream of targets, one per period
  * dt: the caller's sample rows sp (ns = 2 ws + 1, every period) and lp
  * (nl >= 2 w / wd + 1, every wd periods), nh the samples so far (0 to

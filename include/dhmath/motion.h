@@ -17,7 +17,7 @@
  *                    dh_move_target_f32, dh_move_advance_f32
  *   dh_queue.c       dh_queue_init_f32, dh_queue_add_joint_f32,
  *                    dh_queue_add_path_f32, dh_queue_add_path_blend_f32,
- *                    dh_queue_add_path_jerk_f32,
+ *                    dh_queue_add_path_jerk_f32, dh_queue_add_path_blend_jerk_f32,
  *                    dh_queue_target_f32,
  *                    dh_queue_advance_f32, dh_queue_stop_f32,
  *                    dh_queue_resume_f32
@@ -673,7 +673,7 @@ typedef struct {
     float vmax[DH_MAX_JOINTS];     /**< joint move: velocity limits */
     float amax[DH_MAX_JOINTS];     /**< joint move: acceleration limits */
     float jmax[DH_MAX_JOINTS];     /**< joint move: jerk limits (when jerk is 1) */
-    uint32_t jerk;                 /**< 1 when jerk-limited: joint move with jmax, path move of dh_queue_add_path_jerk_f32 with jerk */
+    uint32_t jerk;                 /**< 1 when jerk-limited: joint move with jmax, path move of dh_queue_add_path_jerk_f32 with jerk; 2: line of dh_queue_add_path_blend_jerk_f32 */
     uint32_t n;                    /**< joint move: number of joints */
     uint32_t kind;                 /**< DH_MOVE_JOINT or DH_MOVE_PATH */
     dh_cart_limits_f32 lim;        /**< path move: its limits */
@@ -681,6 +681,8 @@ typedef struct {
     float ctb;                     /**< path move: overlap of that corner (s; 0: at rest), planned when the next is appended */
     float cb[2];                   /**< path move: the corner's tail accelerations of s, its own and the next move's */
     float rate[2];                 /**< path move: the bounds of s' and s'' of its blended scalings (arcs: beside the centripetal acceleration) */
+    dh_cart_jerk_f32 jk;           /**< line of dh_queue_add_path_blend_jerk_f32 (jerk 2): its jerk limits */
+    dh_blend_seg_f32 seg;          /**< line of dh_queue_add_path_blend_jerk_f32: its jerk-limited scaling of s with its corners as planned so far */
 } dh_queue_item_f32;
 
 /**
@@ -721,6 +723,7 @@ typedef struct {
     dh_blend_seg_f32 bl[2];        /**< blended lines: scaling of the running line [0] and of the next [1] in their overlap */
     float bo[2];                   /**< blended lines: s where each scaling starts (0, or where a stop left the line) */
     uint32_t bmode;                /**< blended lines: 0 none; 1 the running line; 2 and the next; 3 the next starts at bo[0] */
+    uint32_t stopq;                /**< 1 when a stop waits for the end of an overlap of jerk-limited blended lines */
 } dh_queue_f32;
 
 /** @brief What the caller does this period (dh_queue_target_f32). */
@@ -832,7 +835,7 @@ dh_status dh_queue_add_path_blend_f32(dh_queue_f32 *qu, const dh_path_f32 *p, co
  * and resume"), never beyond B. Resume: a seven-phase profile of s from
  * where it stopped to 1 within the first plan's peaks of s', s'' and
  * s'''. Its corners with the moves before and after it run at rest
- * (no jerk limit holds in the queue's blends).
+ * (dh_queue_add_path_blend_jerk_f32 blends jerk-limited lines).
  * @param qu, p, lim as dh_queue_add_path_f32 (p, lim and jerk copied).
  * @param jerk jerk limits, each finite and > 0; NULL: the move of
  *        dh_queue_add_path_f32.
@@ -844,6 +847,36 @@ dh_status dh_queue_add_path_blend_f32(dh_queue_f32 *qu, const dh_path_f32 *p, co
  */
 dh_status dh_queue_add_path_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
                                      const dh_cart_jerk_f32 *jerk);
+
+/**
+ * @brief Appends a jerk-limited line along p within lim and jerk whose
+ *        corner with the NEXT such line is blended within radius, as
+ *        dh_blend_seq_plan_jerk_f32 blends a sequence's corners.
+ * The line's scaling of s is dh_blend_seq_plan_jerk_f32's (seven phases),
+ * planned again when the next line is appended, by the same corner rule
+ * (docs/design.md, "Jerk-limited blended corners in the queue"). The
+ * corner is blended when both are lines of this function with equal
+ * limits, the next starts at p->B, is queued when this one starts, the
+ * blend is shorter and keeps this line's peak speed; else at rest.
+ * Speed, TOTAL acceleration, angular speed and acceleration within lim
+ * at every feed override r (held inside an overlap); TOTAL jerk and
+ * angular jerk within jerk while r is constant, in a stop and a resume,
+ * all up to float rounding (1e-6 relative). A stop inside an overlap
+ * waits for its end (qu->stopq; the tool within radius of the corner),
+ * then the next line brakes alone with jerk +-its bound; a resume runs a
+ * line from rest to its end, its corner after at rest. Outside the
+ * overlaps the target is on the line as dh_path_eval_f32's.
+ * @param qu, p, lim as dh_queue_add_path_f32 (p, lim and jerk copied).
+ * @param jerk jerk limits, each finite and > 0.
+ * @param radius blend radius (p's length unit), finite and >= 0.
+ * @return DH_OK; DH_ERR_LIMIT when the queue is full (checked first);
+ *         DH_ERR_NAN for a NaN/Inf radius, DH_ERR_ARG for radius < 0 or
+ *         an arc (dh_queue_add_path_jerk_f32 runs an arc, at rest); then
+ *         the statuses of dh_queue_add_path_jerk_f32. On error qu and its
+ *         queued moves are untouched (the free item is overwritten).
+ */
+dh_status dh_queue_add_path_blend_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                           const dh_cart_jerk_f32 *jerk, float radius);
 
 /**
  * @brief Begins a control period: the command of the running move after
@@ -909,8 +942,9 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
  *   of the stop (jerk-limited: jerk +-j, the deceleration ramped to
  *   a_p <= A and back, within v1 / A + 3 A / j, v1 = s' r +
  *   (s'' r^2)^2 / (2 j), A and j the plan's peak |s''| and |s'''|),
- *   never beyond B; the brake time
- *   advances only when the tracker is OK.
+ *   never beyond B; the brake time advances only when the tracker is OK;
+ * - inside an overlap of jerk-limited blended lines: at the overlap's end
+ *   (phase RUN and stopq 1 until then), the next line's brake from there.
  * A move not started, held at its start (clock 0) or at its end, or no
  * move at all, is at rest: the stop is immediate (phase STOPPED). A stop
  * while braking or stopped changes nothing. Queued moves stay queued and

@@ -669,7 +669,7 @@ dh_status dh_blend_seq_plan_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, con
 /* the distance x of the scaling g at its time t in (0, g->T) covered
  * from its start (returns 0: the first half) or left to its end (returns
  * 1) */
-DH_INLINE int seg_eval(const dh_blend_seg_f32 *g, float t, float *x)
+static DH_NOINLINE int seg_eval(const dh_blend_seg_f32 *g, float t, float *x)
 {
     float r;
     if (t < g->tb0 + g->t1 + 0.5f * g->tv) {
@@ -877,18 +877,19 @@ DH_INLINE float jp_dist(const dh_blend_seg_f32 *g, float v)
     return 0.5f * v * (t0 + t1);
 }
 
-/* g's scaling of s from s' <= V and its bounds b0, k0, b1, k1: from rest
- * to v over t1 (ramps tj1), a cruise tv, to rest over t3 (ramps tj3), T;
- * v = V and the cruise the distance left when jp_dist(V) <= 1, else the
- * largest v with jp_dist(v) <= 1 (jp_dist grows with v: bisection to one
- * ulp) and the tiny cruise at v that covers the rest exactly; all 0 when
- * b0 is 0 (no motion) */
-static DH_NOINLINE void jp_fill(dh_blend_seg_f32 *g, float V)
+/* g's scaling of s over the distance D (s from 1 - D to 1) from s' <= V
+ * and its bounds b0, k0, b1, k1: from rest to v over t1 (ramps tj1), a
+ * cruise tv, to rest over t3 (ramps tj3), T; v = V and the cruise the
+ * distance left when jp_dist(V) <= D, else the largest v with
+ * jp_dist(v) <= D (jp_dist grows with v: bisection to one ulp) and the
+ * tiny cruise at v that covers the rest exactly; all 0 when b0 is 0 (no
+ * motion) */
+static DH_NOINLINE void jp_fill(dh_blend_seg_f32 *g, float V, float D)
 {
     float lo = 0.0f, hi = V, m = V, x;
     int i;
     for (i = 0; i < 200 && g->b0 > 0.0f; i++) {
-        if (jp_dist(g, m) <= 1.0f) {
+        if (jp_dist(g, m) <= D) {
             lo = m;
             if (!(m < V)) break;
         } else {
@@ -899,10 +900,16 @@ static DH_NOINLINE void jp_fill(dh_blend_seg_f32 *g, float V)
     }
     x = jp_dist(g, lo);
     g->v = lo;
-    g->tv = (lo > 0.0f && x < 1.0f) ? (1.0f - x) / lo : 0.0f;
+    g->tv = (lo > 0.0f && x < D) ? (D - x) / lo : 0.0f;
     jt_times(lo, g->b0, g->k0, &g->tj1, &g->t1);
     jt_times(lo, g->b1, g->k1, &g->tj3, &g->t3);
     g->T = g->t1 + g->tv + g->t3;
+}
+
+/* jseq_bound's bound of one line's duration from its rates r */
+static DH_NOINLINE float jseq_line_T(const float r[3])
+{
+    return 2.0f / r[0] + 4.0f * (r[0] / r[1] + r[1] / r[2] + 2.0f * (dh_sqrtf_(r[0]) / dh_sqrtf_(r[2])));
 }
 
 /* the statuses of the lines' rates (jseq_rates), then DH_ERR_OVERFLOW
@@ -918,9 +925,7 @@ static DH_NOINLINE dh_status jseq_bound(const dh_path_f32 *p, uint32_t n, const 
     dh_status st = DH_OK;
     for (i = 0u; i < n && st == DH_OK; i++) {
         st = jseq_rates(&p[i], lim, jk, r);
-        if (st == DH_OK && r[1] > 0.0f) {
-            T += 2.0f / r[0] + 4.0f * (r[0] / r[1] + r[1] / r[2] + 2.0f * (dh_sqrtf_(r[0]) / dh_sqrtf_(r[2])));
-        }
+        if (st == DH_OK && r[1] > 0.0f) T += jseq_line_T(r);
     }
     if (st == DH_OK && !dh_isfinite_f32(T)) st = DH_ERR_OVERFLOW;
     return st;
@@ -937,81 +942,112 @@ static void jseq_scale2(float *x, float *y, float wx, float wy, float w)
     }
 }
 
-/* The bounds of line 1's deceleration (g[0].b1, k1) and line 2's
- * acceleration (g[1].b0, k0) at the corner p[0] | p[1], set to the lines'
- * own by jseq_unmark: at rest when radius is 0 or a line has no motion
- * (g[0].tb1 = 0), else lowered to L_i a_i' <= amax / max(1, |d2 - d1|)
+/* One corner of jerk-limited lines: the scalings g[0] (the line before
+ * the corner) and g[1] (the line after it) of the lines p[0], p[1]
+ * within lim, jk and radius (the sequence's consecutive ones, or the
+ * queue's items') */
+typedef struct {
+    dh_blend_seg_f32 *g[2];
+    const dh_path_f32 *p[2];
+    const dh_cart_limits_f32 *lim;
+    const dh_cart_jerk_f32 *jk;
+    float radius;
+} jseq_corner;
+
+/* The bounds of line 1's deceleration (g[0]->b1, k1) and line 2's
+ * acceleration (g[1]->b0, k0) at the corner c, set to the lines' own by
+ * jseq_unmark: at rest when the radius is 0 or a line has no motion
+ * (g[0]->tb1 = 0), else lowered to L_i a_i' <= amax / max(1, |d2 - d1|)
  * and L_i j_i' <= jmax / max(1, |d1 + d2|) (in the overlap the tool's
  * acceleration is x2 d2 - x1 d1 and its jerk y1 d1 + y2 d2 with x_i, y_i
  * in [0, L_i a_i'] and [0, L_i j_i']: norms convex, at most their largest
  * value at a vertex of the box), then th1 a1' + th2 a2' <= (63/64) wdmax
  * and th1 j1' + th2 j2' <= (63/64) wjmax (the cross terms of the composed
- * rotation get the last 1/64 through tb), g[0].tb1 = 1 marking the corner
- * for jseq_cost */
-static DH_NOINLINE void jseq_red(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
-                                 const dh_cart_jerk_f32 *jk, float radius)
+ * rotation get the last 1/64 through tb), g[0]->tb1 = 1 marking the
+ * corner for jseq_cost */
+static DH_NOINLINE void jseq_red(const jseq_corner *c)
 {
-    float ca = lim->amax * BLEND_MARGIN, cj = jk->jmax * BLEND_MARGIN, x;
-    float *c[4];
+    dh_blend_seg_f32 *const *g = c->g;
+    const dh_path_f32 *const *p = c->p;
+    float ca = c->lim->amax * BLEND_MARGIN, cj = c->jk->jmax * BLEND_MARGIN, x;
+    float *b[4];
     int i;
-    c[0] = &g[0].b1;
-    c[1] = &g[0].k1;
-    c[2] = &g[1].b0;
-    c[3] = &g[1].k0;
-    g[0].tb1 = (radius > 0.0f && *c[0] > 0.0f && *c[2] > 0.0f) ? 1.0f : 0.0f;
-    if (!(g[0].tb1 > 0.0f)) return;
-    if (p[0].length > 0.0f && p[1].length > 0.0f) {
-        x = blend_turn(&p[0], &p[1]);
+    b[0] = &g[0]->b1;
+    b[1] = &g[0]->k1;
+    b[2] = &g[1]->b0;
+    b[3] = &g[1]->k0;
+    g[0]->tb1 = (c->radius > 0.0f && *b[0] > 0.0f && *b[2] > 0.0f) ? 1.0f : 0.0f;
+    if (!(g[0]->tb1 > 0.0f)) return;
+    if (p[0]->length > 0.0f && p[1]->length > 0.0f) {
+        x = blend_turn(p[0], p[1]);
         if (x > 1.0f) ca /= x;
         x = 4.0f - x * x; /* |d1 + d2|^2 of unit d1, d2 */
         if (x > 1.0f) cj /= dh_sqrtf_(x);
     }
     for (i = 0; i < 2; i++) {
-        if (p[i].length * *c[2 * i] > ca) *c[2 * i] = ca / p[i].length;
-        if (p[i].length * *c[2 * i + 1] > cj) *c[2 * i + 1] = cj / p[i].length;
+        if (p[i]->length * *b[2 * i] > ca) *b[2 * i] = ca / p[i]->length;
+        if (p[i]->length * *b[2 * i + 1] > cj) *b[2 * i + 1] = cj / p[i]->length;
     }
-    jseq_scale2(c[0], c[2], p[0].angle, p[1].angle, BLEND_WSHARE * lim->wdmax);
-    jseq_scale2(c[1], c[3], p[0].angle, p[1].angle, BLEND_WSHARE * jk->wjmax);
+    jseq_scale2(b[0], b[2], p[0]->angle, p[1]->angle, BLEND_WSHARE * c->lim->wdmax);
+    jseq_scale2(b[1], b[3], p[0]->angle, p[1]->angle, BLEND_WSHARE * c->jk->wjmax);
 }
 
-/* 1 when the overlap tb of the corner g[0] | g[1] (g[0]'s deceleration
- * v, tj3, t3 and g[1]'s acceleration v, tj1, t1, tb within half of each)
- * keeps the tool within radius of the corner (L1 x1 + L2 x2 <= radius,
- * x_i the s each covers in its tb: jt_x) and the cross terms of the
- * composed rotation within their 1/64 (docs/design.md): with
- * w_i = th_i u_i (u_i the s' at tb, the largest in the overlap) and
- * P_i = th_i times the lowered s'' bound, (pi/180) w1 w2 <= wdmax / 64,
+/* s'' at the time r in [0, ta / 2] of the change of speed from 0 to v
+ * over ta with the jerk phases tj (jt_v's): j r up to tj, then ap */
+DH_INLINE float jt_a(float v, float tj, float ta, float r)
+{
+    float ap;
+    if (!(ta > 0.0f) || !(tj > 0.0f)) return 0.0f;
+    ap = v / (ta - tj);
+    return (r < tj) ? (ap / tj) * r : ap;
+}
+
+/* 1 when the tool stays within the radius of the corner c over its
+ * overlap tb: L1 x1 + L2 x2 <= radius, x_i the s each line covers in tb
+ * (jt_x; jseq_tb's first test, apart from jseq_ok's frame) */
+static DH_NOINLINE int jseq_near(const jseq_corner *c, float tb)
+{
+    dh_blend_seg_f32 *const *g = c->g;
+    const dh_path_f32 *const *p = c->p;
+    return (p[0]->length * jt_x(0.0f, g[0]->v, g[0]->tj3, g[0]->t3, tb) +
+                p[1]->length * jt_x(0.0f, g[1]->v, g[1]->tj1, g[1]->t1, tb) <=
+            c->radius)
+               ? 1
+               : 0;
+}
+
+/* 1 when the overlap tb of the corner c (g[0]'s deceleration v, tj3, t3
+ * and g[1]'s acceleration v, tj1, t1, tb within half of each) keeps the
+ * cross terms of the composed rotation within their 1/64 (docs/design.md;
+ * the radius is jseq_near's test): with w_i = th_i u_i (u_i
+ * the s' at tb, the largest in the overlap) and P_i = th_i times the
+ * lowered s'' bound, (pi/180) w1 w2 <= wdmax / 64,
  * (pi/180) (2 w2 P1 + P2 w1) <= wjmax / 128 and
  * (pi/180)^2 w2^2 w1 <= wjmax / 128 */
-DH_INLINE int jseq_ok(const dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
-                      const dh_cart_jerk_f32 *jk, float radius, float tb)
+static DH_NOINLINE int jseq_ok(const jseq_corner *c, float tb)
 {
-    const float w1 = p[0].angle * jt_v(g[0].v, g[0].tj3, g[0].t3, tb);
-    const float w2 = p[1].angle * jt_v(g[1].v, g[1].tj1, g[1].t1, tb);
-    if (!(p[0].length * jt_x(0.0f, g[0].v, g[0].tj3, g[0].t3, tb) +
-              p[1].length * jt_x(0.0f, g[1].v, g[1].tj1, g[1].t1, tb) <=
-          radius)) {
+    dh_blend_seg_f32 *const *g = c->g;
+    const dh_path_f32 *const *p = c->p;
+    const float w1 = p[0]->angle * jt_v(g[0]->v, g[0]->tj3, g[0]->t3, tb);
+    const float w2 = p[1]->angle * jt_v(g[1]->v, g[1]->tj1, g[1]->t1, tb);
+    if (!(w1 * w2 <= BLEND_RAD2DEG * (c->lim->wdmax * 0.015625f))) return 0;
+    if (!(2.0f * w2 * (p[0]->angle * g[0]->b1) + (p[1]->angle * g[1]->b0) * w1 <=
+          BLEND_RAD2DEG * (c->jk->wjmax * 0.0078125f))) {
         return 0;
     }
-    if (!(w1 * w2 <= BLEND_RAD2DEG * (lim->wdmax * 0.015625f))) return 0;
-    if (!(2.0f * w2 * (p[0].angle * g[0].b1) + (p[1].angle * g[1].b0) * w1 <=
-          BLEND_RAD2DEG * (jk->wjmax * 0.0078125f))) {
-        return 0;
-    }
-    return (w2 * w2) * w1 <= (BLEND_RAD2DEG * BLEND_RAD2DEG) * (jk->wjmax * 0.0078125f);
+    return (w2 * w2) * w1 <= (BLEND_RAD2DEG * BLEND_RAD2DEG) * (c->jk->wjmax * 0.0078125f);
 }
 
-/* the overlap of the corner g[0] | g[1] (jseq_ok): the largest tb up to
- * half of both changes of speed that jseq_ok accepts (each of its terms
- * grows with tb: bisection), times 1 - 2^-10; 0 when none */
-static DH_NOINLINE float jseq_tb(const dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
-                                 const dh_cart_jerk_f32 *jk, float radius)
+/* the overlap of the corner c (jseq_ok): the largest tb up to half of
+ * both changes of speed that jseq_ok accepts (each of its terms grows
+ * with tb: bisection), times 1 - 2^-10; 0 when none */
+static DH_NOINLINE float jseq_tb(const jseq_corner *c)
 {
-    const float H = 0.5f * ((g[0].t3 < g[1].t1) ? g[0].t3 : g[1].t1);
+    const float H = 0.5f * ((c->g[0]->t3 < c->g[1]->t1) ? c->g[0]->t3 : c->g[1]->t1);
     float lo = 0.0f, hi = H, m = H;
     int i;
     for (i = 0; i < 200 && H > 0.0f; i++) {
-        if (jseq_ok(g, p, lim, jk, radius, m)) {
+        if (jseq_near(c, m) != 0 && jseq_ok(c, m) != 0) {
             lo = m;
             if (!(m < H)) break;
         } else {
@@ -1024,76 +1060,78 @@ static DH_NOINLINE float jseq_tb(const dh_blend_seg_f32 *g, const dh_path_f32 *p
     return (lo > 0.0f && dh_isfinite_f32(lo)) ? lo : 0.0f;
 }
 
-/* g[0].dev (scratch until jseq_overlap) = the time the lowered bounds
- * of the corner g[0] | g[1] (jseq_red) add to its two lines, each line's
- * other end as set; g's scalings are left as with the lowered bounds
- * (for jseq_tb) */
-static DH_NOINLINE void jseq_cost(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
-                                  const dh_cart_jerk_f32 *jk)
-{
-    float r[3], x, y, c;
-    (void)jseq_rates(&p[0], lim, jk, r);
-    x = g[0].b1;
-    y = g[0].k1;
-    g[0].b1 = r[1];
-    g[0].k1 = r[2];
-    jp_fill(&g[0], r[0]);
-    c = -g[0].T;
-    g[0].b1 = x;
-    g[0].k1 = y;
-    jp_fill(&g[0], r[0]);
-    c += g[0].T;
-    (void)jseq_rates(&p[1], lim, jk, r);
-    x = g[1].b0;
-    y = g[1].k0;
-    g[1].b0 = r[1];
-    g[1].k0 = r[2];
-    jp_fill(&g[1], r[0]);
-    c -= g[1].T;
-    g[1].b0 = x;
-    g[1].k0 = y;
-    jp_fill(&g[1], r[0]);
-    g[0].dev = c + g[1].T;
-}
-
-/* the corner g[0] | g[1] at rest: its lines' own bounds, tb1 0 */
-static DH_NOINLINE void jseq_unmark(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
-                                    const dh_cart_jerk_f32 *jk)
-{
-    float r[3];
-    (void)jseq_rates(&p[0], lim, jk, r);
-    g[0].b1 = r[1];
-    g[0].k1 = r[2];
-    (void)jseq_rates(&p[1], lim, jk, r);
-    g[1].b0 = r[1];
-    g[1].k0 = r[2];
-    g[0].tb1 = 0.0f;
-}
-
-/* g's jerk-limited scaling (jp_fill) from its line's rates and the bounds
- * of its acceleration (b0, k0) and deceleration (b1, k1) */
+/* g's jerk-limited scaling (jp_fill over s = 1) from its line's rates
+ * and the bounds of its acceleration (b0, k0) and deceleration (b1, k1) */
 static DH_NOINLINE void jseq_prof(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
                                   const dh_cart_jerk_f32 *jk)
 {
     float r[3];
     (void)jseq_rates(p, lim, jk, r);
-    jp_fill(g, r[0]);
+    jp_fill(g, r[0], 1.0f);
     g->a = r[1];
     g->j = r[2];
 }
 
-/* the overlap tb of corner g[0] | g[1] (0: at rest): tb1 = tb0 = tb, the
- * s' and s covered at its inner ends (u1, e1 of g[0]; u0, e0 of g[1]) and
- * g[0].dev, the bound L1 e1 + L2 e0 of the distance from the corner */
-static DH_NOINLINE void jseq_overlap(dh_blend_seg_f32 *g, const dh_path_f32 *p, float tb)
+/* g[0]->dev (scratch until jseq_overlap) = the time the lowered bounds
+ * of the corner c (jseq_red) add to its two lines, each line's other end
+ * as set, over two calls: line i = 0's set, line i = 1's added (the time
+ * line i takes with its own bounds at the corner's end, b, k of its
+ * side, less with the ones it holds); the scalings are left as with the
+ * lowered bounds (for jseq_tb) */
+static DH_NOINLINE void jseq_cost(const jseq_corner *c, int i)
 {
-    g[0].tb1 = tb;
-    g[1].tb0 = tb;
-    g[0].u1 = jt_v(g[0].v, g[0].tj3, g[0].t3, tb);
-    g[0].e1 = jt_x(0.0f, g[0].v, g[0].tj3, g[0].t3, tb);
-    g[1].u0 = jt_v(g[1].v, g[1].tj1, g[1].t1, tb);
-    g[1].e0 = jt_x(0.0f, g[1].v, g[1].tj1, g[1].t1, tb);
-    g[0].dev = p[0].length * g[0].e1 + p[1].length * g[1].e0;
+    dh_blend_seg_f32 *g = c->g[i];
+    float *b = (i == 0) ? &g->b1 : &g->b0, *k = (i == 0) ? &g->k1 : &g->k0;
+    float r[3], x = *b, y = *k, T;
+    (void)jseq_rates(c->p[i], c->lim, c->jk, r);
+    *b = r[1];
+    *k = r[2];
+    jp_fill(g, r[0], 1.0f);
+    T = g->T;
+    *b = x;
+    *k = y;
+    jp_fill(g, r[0], 1.0f);
+    x = g->T - T;
+    c->g[0]->dev = (i == 0) ? x : c->g[0]->dev + x;
+}
+
+
+/* the corner c at rest: its lines' own bounds, tb1 0 */
+static DH_NOINLINE void jseq_unmark(const jseq_corner *c)
+{
+    float r[3];
+    (void)jseq_rates(c->p[0], c->lim, c->jk, r);
+    c->g[0]->b1 = r[1];
+    c->g[0]->k1 = r[2];
+    (void)jseq_rates(c->p[1], c->lim, c->jk, r);
+    c->g[1]->b0 = r[1];
+    c->g[1]->k0 = r[2];
+    c->g[0]->tb1 = 0.0f;
+}
+
+/* the overlap tb of the corner c (0: at rest): tb1 = tb0 = tb, the s'
+ * and s covered at its inner ends (u1, e1 of g[0]; u0, e0 of g[1]) and
+ * g[0]->dev, the bound L1 e1 + L2 e0 of the distance from the corner */
+static DH_NOINLINE void jseq_overlap(const jseq_corner *c, float tb)
+{
+    dh_blend_seg_f32 *const *g = c->g;
+    g[0]->tb1 = tb;
+    g[1]->tb0 = tb;
+    g[0]->u1 = jt_v(g[0]->v, g[0]->tj3, g[0]->t3, tb);
+    g[0]->e1 = jt_x(0.0f, g[0]->v, g[0]->tj3, g[0]->t3, tb);
+    g[1]->u0 = jt_v(g[1]->v, g[1]->tj1, g[1]->t1, tb);
+    g[1]->e0 = jt_x(0.0f, g[1]->v, g[1]->tj1, g[1]->t1, tb);
+    g[0]->dev = c->p[0]->length * g[0]->e1 + c->p[1]->length * g[1]->e0;
+}
+
+/* c = corner k of the seq planner's lines with the radius radius */
+static void jseq_at(jseq_corner *c, dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t k, float radius)
+{
+    c->g[0] = &seg[k];
+    c->g[1] = &seg[k + 1u];
+    c->p[0] = &p[k];
+    c->p[1] = &p[k + 1u];
+    c->radius = radius;
 }
 
 /* the first line's acceleration and the last line's deceleration at their
@@ -1126,6 +1164,7 @@ static DH_NOINLINE void jseq_ends(dh_blend_seg_f32 *seg, const dh_path_f32 *p, u
 dh_status dh_blend_seq_plan_jerk_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t n,
                                      const float *radius, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jerk)
 {
+    jseq_corner c;
     float Trr = 0.0f, T = 0.0f;
     uint32_t k;
     int pass;
@@ -1136,23 +1175,27 @@ dh_status dh_blend_seq_plan_jerk_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg
     if (st == DH_OK) st = jseq_check(p, n, jerk);
     if (st == DH_OK) st = jseq_bound(p, n, lim, jerk);
     if (st != DH_OK) return st;
+    c.lim = lim;
+    c.jk = jerk;
     for (pass = 0; pass < 3; pass++) {
         jseq_ends(seg, p, n, lim, jerk);
         for (k = 0u; k + 1u < n; k++) {
-            jseq_unmark(&seg[k], &p[k], lim, jerk);
-            jseq_red(&seg[k], &p[k], lim, jerk, (pass == 1) ? radius[k] : 0.0f);
+            jseq_at(&c, seg, p, k, (pass == 1) ? radius[k] : 0.0f);
+            jseq_unmark(&c);
+            jseq_red(&c);
         }
         for (k = 0u; k + 1u < n; k++) {
+            jseq_at(&c, seg, p, k, radius[k]);
             if (seg[k].tb1 > 0.0f) {
-                jseq_cost(&seg[k], &p[k], lim, jerk);
-                if (!(seg[k].dev < jseq_tb(&seg[k], &p[k], lim, jerk, radius[k]))) {
-                    jseq_unmark(&seg[k], &p[k], lim, jerk);
-                }
+                jseq_cost(&c, 0);
+                jseq_cost(&c, 1);
+                if (!(seg[k].dev < jseq_tb(&c))) jseq_unmark(&c);
             }
         }
         for (k = 0u; k < n; k++) jseq_prof(&seg[k], &p[k], lim, jerk);
         for (k = 0u; k + 1u < n; k++) {
-            jseq_overlap(&seg[k], &p[k], (seg[k].tb1 > 0.0f) ? jseq_tb(&seg[k], &p[k], lim, jerk, radius[k]) : 0.0f);
+            jseq_at(&c, seg, p, k, radius[k]);
+            jseq_overlap(&c, (seg[k].tb1 > 0.0f) ? jseq_tb(&c) : 0.0f);
         }
         T = 0.0f;
         for (k = 0u; k < n; k++) {
@@ -1210,16 +1253,35 @@ float dh_blend_seg_s_f32_(const dh_blend_seg_f32 *g, float s0, float t)
     float x;
     if (!(t > 0.0f) || !(g->T > 0.0f)) return s0;
     if (!(t < g->T)) return 1.0f;
-    if (seg_eval(g, t, &x) != 0) return 1.0f - x;
+    if (((g->j > 0.0f) ? jseg_eval(g, t, &x) : seg_eval(g, t, &x)) != 0) return 1.0f - x;
     x += s0;
     return (x < 1.0f) ? x : 1.0f;
 }
 
-float dh_blend_seg_rate_f32_(const dh_blend_seg_f32 *g, float t, float *sdd)
+/* s' of the jerk-limited scaling g at its time t in (0, T), s'' into
+ * *sdd: each change of speed point-symmetric about its middle (jt_v and
+ * jt_a on its first half) */
+static DH_NOINLINE float jseg_rate(const dh_blend_seg_f32 *g, float t, float *sdd)
+{
+    const float r = g->T - t;
+    float ta = g->t3, tj = g->tj3, x = r, sg = -1.0f, m;
+    if (t < g->t1) {
+        ta = g->t1;
+        tj = g->tj1;
+        x = t;
+        sg = 1.0f;
+    }
+    *sdd = 0.0f;
+    if (!(x < ta)) return g->v;
+    m = (x < 0.5f * ta) ? x : ta - x;
+    *sdd = sg * jt_a(g->v, tj, ta, m);
+    return (x < 0.5f * ta) ? jt_v(g->v, tj, ta, x) : g->v - jt_v(g->v, tj, ta, m);
+}
+
+/* s' of the trapezoidal scaling g at its time t in (0, T), s'' into *sdd */
+static DH_NOINLINE float seg_rate(const dh_blend_seg_f32 *g, float t, float *sdd)
 {
     float r = g->T - t;
-    *sdd = 0.0f;
-    if (!(t > 0.0f) || !(t < g->T)) return 0.0f;
     if (t < g->tb0) {
         *sdd = g->b0;
         return g->b0 * t;
@@ -1239,6 +1301,13 @@ float dh_blend_seg_rate_f32_(const dh_blend_seg_f32 *g, float t, float *sdd)
     return g->v;
 }
 
+float dh_blend_seg_rate_f32_(const dh_blend_seg_f32 *g, float t, float *sdd)
+{
+    *sdd = 0.0f;
+    if (!(t > 0.0f) || !(t < g->T)) return 0.0f;
+    return (g->j > 0.0f) ? jseg_rate(g, t, sdd) : seg_rate(g, t, sdd);
+}
+
 void dh_blend_pose_rot_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat4_f32 *T)
 {
     dh_quat_f32 q;
@@ -1251,3 +1320,71 @@ void dh_blend_pose_rot_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat
 }
 
 
+
+/* ---- the queue's jerk-limited blended lines (dh_queue.c) ------------ */
+
+void dh_blend_jline_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                         const dh_cart_jerk_f32 *jk, float D)
+{
+    float r[3];
+    (void)jseq_rates(p, lim, jk, r);
+    g->b0 = r[1];
+    g->k0 = r[2];
+    g->b1 = r[1];
+    g->k1 = r[2];
+    g->tb0 = 0.0f;
+    g->u0 = 0.0f;
+    g->e0 = 0.0f;
+    g->tb1 = 0.0f;
+    g->u1 = 0.0f;
+    g->e1 = 0.0f;
+    g->t0 = 0.0f;
+    g->dev = 0.0f;
+    jp_fill(g, r[0], D);
+    g->a = r[1];
+    g->j = r[2];
+}
+
+/* The seq planner's corner (jseq_red, jseq_cost, jseq_tb, jseq_overlap)
+ * on the pair, its steps called from here one after the other; the
+ * first line's speed v as it was planned kept (its start overlap, when it
+ * has one, was planned with it), else the corner at rest */
+float dh_blend_jcorner_f32_(dh_queue_item_f32 *i1, dh_queue_item_f32 *i2)
+{
+    jseq_corner c;
+    dh_blend_seg_f32 *const *g = c.g;
+    const dh_path_f32 *p1 = &i1->path, *p2 = &i2->path;
+    const dh_cart_limits_f32 *lim = &i1->lim;
+    const dh_cart_jerk_f32 *jk = &i1->jk;
+    const float v = i1->seg.v;
+    float tb = 0.0f;
+    c.g[0] = &i1->seg;
+    c.g[1] = &i2->seg;
+    c.p[0] = p1;
+    c.p[1] = p2;
+    c.lim = lim;
+    c.jk = jk;
+    c.radius = i1->radius;
+    if (p1->kind == (uint32_t)DH_PATH_LINE && p2->kind == (uint32_t)DH_PATH_LINE && blend_joins(p1, p2)) {
+        jseq_unmark(&c);
+        jseq_red(&c);
+    } else {
+        g[0]->tb1 = 0.0f;
+    }
+    if (g[0]->tb1 > 0.0f) {
+        jseq_cost(&c, 0);
+        jseq_cost(&c, 1);
+        if (!(g[0]->dev < jseq_tb(&c))) jseq_unmark(&c);
+    }
+    jseq_prof(g[0], p1, lim, jk);
+    jseq_prof(g[1], p2, lim, jk);
+    if (g[0]->tb1 > 0.0f && (!(g[0]->tb0 > 0.0f) || dh_feq_f32(g[0]->v, v))) tb = jseq_tb(&c);
+    if (!(tb > 0.0f)) {
+        jseq_unmark(&c);
+        jseq_prof(g[0], p1, lim, jk);
+        jseq_prof(g[1], p2, lim, jk);
+    }
+    jseq_overlap(&c, tb);
+    if (!(tb > 0.0f)) g[0]->dev = 0.0f;
+    return tb;
+}

@@ -119,6 +119,7 @@ dh_status dh_queue_init_f32(dh_queue_f32 *qu, dh_queue_item_f32 *items, uint32_t
     qu->next = 0.0f;
     qu->braked = 0u;
     qu->bmode = QB_NONE;
+    qu->stopq = 0u;
     return DH_OK;
 }
 
@@ -153,24 +154,29 @@ dh_status dh_queue_add_joint_f32(dh_queue_f32 *qu, uint32_t n, const float *q1, 
 
 /* the radius of the last queued move, and the corner of the last two
  * (dh_blend_corner_f32_, when both are path moves with equal limits)
- * into the first one's ctb, cb */
-static DH_NOINLINE void queue_add_corner(dh_queue_f32 *qu, float radius)
+ * into the first one's ctb, cb; 1 when both are jerk-limited blended
+ * lines with equal jerk limits too (the caller plans that corner:
+ * dh_blend_jcorner_f32_), else 0 */
+static DH_NOINLINE int queue_add_corner(dh_queue_f32 *qu, float radius)
 {
     dh_queue_item_f32 *i1, *i2;
     queue_slot(qu, qu->count - 1u)->radius = radius;
-    if (qu->count < 2u) return;
+    if (qu->count < 2u) return 0;
     i1 = queue_slot(qu, qu->count - 2u);
     i2 = queue_slot(qu, qu->count - 1u);
     i1->ctb = 0.0f;
     i1->cb[0] = 0.0f;
     i1->cb[1] = 0.0f;
-    if (i1->kind != (uint32_t)DH_MOVE_PATH || i2->kind != (uint32_t)DH_MOVE_PATH) return;
-    /* a jerk-limited path move's corners run at rest (the tails are trapezoids) */
-    if (i1->jerk != 0u || i2->jerk != 0u) return;
+    if (i1->kind != (uint32_t)DH_MOVE_PATH || i2->kind != (uint32_t)DH_MOVE_PATH) return 0;
     if (!dh_feq_f32(i1->lim.vmax, i2->lim.vmax) || !dh_feq_f32(i1->lim.amax, i2->lim.amax) ||
         !dh_feq_f32(i1->lim.wmax, i2->lim.wmax) || !dh_feq_f32(i1->lim.wdmax, i2->lim.wdmax))
-        return;
+        return 0;
+    if (i1->jerk == 2u && i2->jerk == 2u)
+        return (dh_feq_f32(i1->jk.jmax, i2->jk.jmax) && dh_feq_f32(i1->jk.wjmax, i2->jk.wjmax)) ? 1 : 0;
+    /* another jerk-limited path move's corners run at rest (the tails are trapezoids) */
+    if (i1->jerk != 0u || i2->jerk != 0u) return 0;
     i1->ctb = dh_blend_corner_f32_(&i1->path, &i2->path, &i1->lim, i1->radius, i1->cb);
+    return 0;
 }
 
 /* the radius's status */
@@ -222,7 +228,7 @@ dh_status dh_queue_add_path_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh
     dh_status st;
     DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
     st = queue_add_path(qu, p, lim, 0.0f);
-    if (st == DH_OK) queue_add_corner(qu, 0.0f);
+    if (st == DH_OK) (void)queue_add_corner(qu, 0.0f);
     return st;
 }
 
@@ -232,7 +238,7 @@ dh_status dh_queue_add_path_blend_f32(dh_queue_f32 *qu, const dh_path_f32 *p, co
     dh_status st;
     DH_ASSERT(qu != NULL && p != NULL && lim != NULL);
     st = queue_add_path(qu, p, lim, radius);
-    if (st == DH_OK) queue_add_corner(qu, radius);
+    if (st == DH_OK) (void)queue_add_corner(qu, radius);
     return st;
 }
 
@@ -250,7 +256,44 @@ dh_status dh_queue_add_path_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, con
     it = queue_slot(qu, qu->count);
     st = dh_path_move_jerk_f32(&it->prof, p, lim, jerk);
     if (st == DH_OK) st = queue_add_item(qu, p, lim, &it->prof);
-    if (st == DH_OK) queue_add_corner(qu, 0.0f);
+    if (st == DH_OK) (void)queue_add_corner(qu, 0.0f);
+    return st;
+}
+
+/* the queued line it made a jerk-limited blended line within jerk: its
+ * scaling at rest (dh_blend_jline_f32_) */
+static DH_NOINLINE void queue_item_jline(dh_queue_item_f32 *it, const dh_cart_jerk_f32 *jerk)
+{
+    it->jerk = 2u;
+    it->jk = *jerk;
+    dh_blend_jline_f32_(&it->seg, &it->path, &it->lim, &it->jk, 1.0f);
+}
+
+/* The line's checks as dh_queue_add_path_jerk_f32's (its profile planned
+ * into the free item, which holds no move then), then the line's
+ * scaling at rest (dh_blend_jline_f32_) and its corner with the move
+ * before it (queue_add_corner returns 1 when both are such lines): both
+ * items' scalings planned again with it (dh_blend_jcorner_f32_, called
+ * from here apart from the checks' deeper calls), its overlap into the
+ * first one's ctb. */
+dh_status dh_queue_add_path_blend_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                           const dh_cart_jerk_f32 *jerk, float radius)
+{
+    dh_queue_item_f32 *it;
+    dh_status st;
+    DH_ASSERT(qu != NULL && p != NULL && lim != NULL && jerk != NULL);
+    if (qu->count >= qu->cap) return DH_ERR_LIMIT;
+    st = queue_radius(radius);
+    if (st == DH_OK && p->kind != (uint32_t)DH_PATH_LINE) st = DH_ERR_ARG;
+    it = queue_slot(qu, qu->count);
+    if (st == DH_OK) st = dh_path_move_jerk_f32(&it->prof, p, lim, jerk);
+    if (st == DH_OK) st = queue_add_item(qu, p, lim, &it->prof);
+    if (st == DH_OK) {
+        queue_item_jline(it, jerk);
+        if (queue_add_corner(qu, radius) != 0)
+            queue_slot(qu, qu->count - 2u)->ctb =
+                dh_blend_jcorner_f32_(queue_slot(qu, qu->count - 2u), queue_slot(qu, qu->count - 1u));
+    }
     return st;
 }
 
@@ -258,11 +301,14 @@ dh_status dh_queue_add_path_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, con
 
 static DH_NOINLINE float queue_brake_dist(const dh_queue_f32 *qu, uint32_t i, float tau);
 
-/* the brake of coordinate i from x (position), v, a (signed) within the
- * deceleration A and jerk j (0: none), never beyond end (ahead along the
- * travel); its duration */
-static DH_NOINLINE float queue_brake_plan(dh_queue_f32 *qu, uint32_t i, float x, float v, float a, float A, float j, float end)
+/* the brake of coordinate i from its start set by the caller in the
+ * brake's fields, x = bq[i] (position), v = bv[i], a = ba[i] (signed),
+ * within the deceleration A = bap[i] and jerk j = bj[i] (0: none), never
+ * beyond end (ahead along the travel): those fields replaced by the
+ * brake's; its duration */
+static DH_NOINLINE float queue_brake_plan(dh_queue_f32 *qu, uint32_t i, float end)
 {
+    const float x = qu->bq[i], v = qu->bv[i], a = qu->ba[i], A = qu->bap[i], j = qu->bj[i];
     const float rem = (end > x) ? end - x : x - end;
     float s, vp, ap, pk, t1 = 0.0f, t2 = 0.0f, t3 = 0.0f, d = 0.0f;
     s = (v > 0.0f) ? 1.0f : ((v < 0.0f) ? -1.0f : 0.0f);
@@ -411,6 +457,32 @@ static void queue_seg_rest(dh_blend_seg_f32 *g)
     g->b1 = 0.0f;
     g->tb1 = 0.0f;
     g->T = 0.0f;
+    g->j = 0.0f;
+}
+
+/* the head line alone (QB_ONE) on bl[0] from s0 */
+static void queue_blend_one(dh_queue_f32 *qu, float s0)
+{
+    queue_seg_rest(&qu->bl[1]);
+    qu->bo[0] = s0;
+    qu->bo[1] = 0.0f;
+    qu->bmode = QB_ONE;
+    queue_blend_mv(qu);
+}
+
+/* bl[i] = the jerk-limited scaling of queued line i from rest at s0: as
+ * planned with its corners (its item's) from s0 = 0, its start at rest;
+ * from s0 > 0 (where a stop left it) to its end at rest */
+static DH_NOINLINE void queue_jline(dh_queue_f32 *qu, uint32_t i, float s0)
+{
+    const dh_queue_item_f32 *it = queue_at(qu, i);
+    dh_blend_seg_f32 *g = &qu->bl[i];
+    if (s0 > 0.0f) {
+        dh_blend_jline_f32_(g, &it->path, &it->lim, &it->jk, 1.0f - s0);
+    } else {
+        *g = it->seg;
+        g->tb0 = 0.0f;
+    }
 }
 
 /* Plans the head line from rest at s = s0 with its corner after it
@@ -430,11 +502,7 @@ static DH_NOINLINE int queue_blend_from(dh_queue_f32 *qu, float s0)
         queue_seg_rest(g);
         (void)dh_blend_seg_plan_f32_(g, it->rate, 1.0f - s0);
     }
-    queue_seg_rest(&qu->bl[1]);
-    qu->bo[0] = s0;
-    qu->bo[1] = 0.0f;
-    qu->bmode = QB_ONE;
-    queue_blend_mv(qu);
+    queue_blend_one(qu, s0);
     return 1;
 }
 
@@ -445,7 +513,10 @@ static DH_NOINLINE void queue_blend_two(dh_queue_f32 *qu, float s0, float s1)
 {
     const dh_queue_item_f32 *it = queue_at(qu, 0u);
     queue_seg_rest(&qu->bl[0]);
-    (void)dh_blend_seg_plan_f32_(&qu->bl[0], it->rate, 1.0f - s0);
+    if (it->jerk == 2u)
+        dh_blend_jline_f32_(&qu->bl[0], &it->path, &it->lim, &it->jk, 1.0f - s0);
+    else
+        (void)dh_blend_seg_plan_f32_(&qu->bl[0], it->rate, 1.0f - s0);
     queue_seg_rest(&qu->bl[1]);
     qu->bo[0] = s0;
     qu->bo[1] = s1;
@@ -460,6 +531,14 @@ static DH_NOINLINE void queue_blend_next(dh_queue_f32 *qu)
     const dh_queue_item_f32 *it = queue_at(qu, 1u);
     dh_blend_seg_f32 *g = &qu->bl[1];
     float b[2];
+    qu->bo[1] = 0.0f;
+    qu->bmode = QB_TWO;
+    if (it->jerk == 2u) {
+        /* as planned with its corners; its end blended only when the next is queued */
+        *g = it->seg;
+        if (!(queue_corner(qu, 1u, b) > 0.0f)) g->tb1 = 0.0f;
+        return;
+    }
     (void)queue_corner(qu, 0u, b);
     g->b0 = b[1];
     g->tb0 = qu->bl[0].tb1;
@@ -617,21 +696,39 @@ static int queue_blend_moving(const dh_queue_f32 *qu)
     return (qu->mv.clock > 0.0f || g[0].tb0 > 0.0f) && (qu->mv.clock < qu->mv.dur || g[0].tb1 > 0.0f);
 }
 
+/* bq[i] = s of each blended line i (two in an overlap) at its clock, for
+ * queue_blend_state */
+static DH_NOINLINE void queue_blend_pos(dh_queue_f32 *qu)
+{
+    uint32_t i;
+    for (i = 0u; i < ((qu->bmode == QB_TWO) ? 2u : 1u); i++)
+        qu->bq[i] = dh_blend_seg_s_f32_(&qu->bl[i], qu->bo[i],
+                                        (i == 0u) ? qu->mv.clock : qu->mv.clock - (qu->bl[0].T - qu->bl[0].tb1));
+}
+
 /* the brake's start of blended line i (0: the head, 1: the next in an
- * overlap): x = s, its rate and acceleration under the feed override r
- * (s' r, s'' r^2) and the deceleration, its tail's in an overlap, its
- * line's own alone */
-static DH_NOINLINE void queue_blend_state(const dh_queue_f32 *qu, uint32_t i, float x[4])
+ * overlap), into the brake's fields of coordinate i for queue_brake_plan
+ * (bq = s: queue_blend_pos): bv, ba = its rate and acceleration under the
+ * feed override r (s' r, s'' r^2), bap, bj = the deceleration and jerk
+ * (0: none; jerk-limited lines), its tail's in an overlap, its line's
+ * own alone */
+static DH_NOINLINE void queue_blend_state(dh_queue_f32 *qu, uint32_t i)
 {
     const dh_blend_seg_f32 *g = &qu->bl[i];
     const float r = qu->mv.feed, t = (i == 0u) ? qu->mv.clock : qu->mv.clock - (qu->bl[0].T - qu->bl[0].tb1);
     float sdd;
-    x[0] = dh_blend_seg_s_f32_(g, qu->bo[i], t);
-    x[1] = dh_blend_seg_rate_f32_(g, t, &sdd) * r;
-    x[2] = sdd * r * r;
-    x[3] = g->a;
-    if (i == 1u) x[3] = g->b0;
-    if (i == 0u && g->tb1 > 0.0f && qu->bmode == QB_TWO) x[3] = g->b1;
+    qu->bv[i] = dh_blend_seg_rate_f32_(g, t, &sdd) * r;
+    qu->ba[i] = sdd * r * r;
+    qu->bap[i] = g->a;
+    qu->bj[i] = g->j;
+    if (i == 1u) {
+        qu->bap[i] = g->b0;
+        qu->bj[i] = g->k0;
+    }
+    if (i == 0u && g->tb1 > 0.0f && qu->bmode == QB_TWO) {
+        qu->bap[i] = g->b1;
+        qu->bj[i] = g->k1;
+    }
 }
 
 /* 1 when the tracker is at rest for the joint move it: every
@@ -660,6 +757,11 @@ static DH_NOINLINE dh_status queue_start_path(dh_queue_f32 *qu, const dh_queue_i
     }
     if (qu->braked != 0u && qu->bmode == QB_ONE) s0 = queue_brake_at(qu, 0u, qu->tbend);
     if (qu->bmode == QB_NEXT) s0 = qu->bo[0];
+    if (!(qu->braked != 0u && qu->bmode == QB_NONE) && it->jerk == 2u) {
+        queue_jline(qu, 0u, s0);
+        queue_blend_one(qu, s0);
+        return DH_OK;
+    }
     if (!(qu->braked != 0u && qu->bmode == QB_NONE) && queue_blend_from(qu, s0) != 0) return DH_OK;
     s0 = 0.0f;
     qu->bmode = QB_NONE;
@@ -879,6 +981,11 @@ static void queue_period(dh_queue_f32 *qu, uint32_t what, dh_track_state state, 
     }
 }
 
+static int queue_jerk_overlap(const dh_queue_f32 *qu);
+static DH_NOINLINE void queue_stop_now(dh_queue_f32 *qu);
+
+/* The period; then a stop deferred to an overlap's end acts when the
+ * overlap ended (queue_stop_now). */
 dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_report_f32 *rep)
 {
     uint32_t what;
@@ -896,6 +1003,7 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
     if (done != 0) queue_pop(qu);
     /* blended: the next line runs on */
     if (done == 2) qu->started = 1u;
+    if (qu->stopq != 0u && queue_jerk_overlap(qu) == 0) queue_stop_now(qu);
     rep->held = held;
     rep->done = 0;
     if (done != 0) rep->done = 1;
@@ -906,34 +1014,96 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
     return DH_OK;
 }
 
-/* plans the brake of the running move from its state at its clock (a
- * joint move's: position, velocity, acceleration in bq, ws[0], ws[1]);
- * its duration */
-static DH_NOINLINE float queue_brake(dh_queue_f32 *qu)
+/* a joint move's position, velocity and acceleration at its clock into
+ * bq, ws[0], ws[1] */
+static DH_NOINLINE void queue_joint_state(dh_queue_f32 *qu)
+{
+    (void)dh_joint_move_eval_f32(qu->mv.prof, qu->mv.n, qu->mv.q0, qu->mv.q1, qu->mv.clock, qu->bq, qu->mv.ws[0],
+                                 qu->mv.ws[1]);
+}
+
+/* a joint move's brake from its state (queue_joint_state); its duration */
+static DH_NOINLINE float queue_brake_joint(dh_queue_f32 *qu)
 {
     const dh_queue_item_f32 *it = &qu->items[qu->head];
-    float d = 0.0f, e, sd, sdd, s, x[4];
+    float d = 0.0f, e;
     uint32_t i;
-    if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) {
-        for (i = 0u; i < qu->mv.n; i++) {
-            e = queue_brake_plan(qu, i, qu->bq[i], qu->mv.ws[0][i], qu->mv.ws[1][i], it->amax[i] * QUEUE_MARGIN,
-                                 (it->jerk != 0u) ? it->jmax[i] : 0.0f, qu->mv.q1[i]);
-            if (e > d) d = e;
-        }
-    } else if (qu->bmode == QB_ONE || qu->bmode == QB_TWO) {
-        /* each line (two in an overlap) from its state */
-        for (i = 0u; i < ((qu->bmode == QB_TWO) ? 2u : 1u); i++) {
-            queue_blend_state(qu, i, x);
-            e = queue_brake_plan(qu, i, x[0], x[1], x[2], x[3], 0.0f, 1.0f);
-            if (e > d) d = e;
-        }
-    } else {
-        /* s's rate and acceleration under the feed override r: s' r, s'' r^2 */
-        s = queue_path_s(qu, qu->mv.clock, &sd, &sdd);
-        d = queue_brake_plan(qu, 0u, s, sd * qu->mv.feed, sdd * qu->mv.feed * qu->mv.feed, qu->as,
-                             (it->jerk != 0u) ? it->prof.j : 0.0f, 1.0f);
+    for (i = 0u; i < qu->mv.n; i++) {
+        qu->bv[i] = qu->mv.ws[0][i];
+        qu->ba[i] = qu->mv.ws[1][i];
+        qu->bap[i] = it->amax[i] * QUEUE_MARGIN;
+        qu->bj[i] = (it->jerk != 0u) ? it->jmax[i] : 0.0f;
+        e = queue_brake_plan(qu, i, qu->mv.q1[i]);
+        if (e > d) d = e;
     }
     return d;
+}
+
+/* each blended line (two in an overlap) from its state */
+static DH_NOINLINE float queue_brake_blend(dh_queue_f32 *qu)
+{
+    float d = 0.0f, e;
+    uint32_t i;
+    for (i = 0u; i < ((qu->bmode == QB_TWO) ? 2u : 1u); i++) {
+        queue_blend_state(qu, i);
+        e = queue_brake_plan(qu, i, 1.0f);
+        if (e > d) d = e;
+    }
+    return d;
+}
+
+/* a path move from s, its rate and acceleration under the feed override
+ * r: s' r, s'' r^2 */
+static DH_NOINLINE float queue_brake_path(dh_queue_f32 *qu)
+{
+    const dh_queue_item_f32 *it = &qu->items[qu->head];
+    float sd, sdd;
+    qu->bq[0] = queue_path_s(qu, qu->mv.clock, &sd, &sdd);
+    qu->bv[0] = sd * qu->mv.feed;
+    qu->ba[0] = sdd * qu->mv.feed * qu->mv.feed;
+    qu->bap[0] = qu->as;
+    qu->bj[0] = (it->jerk != 0u) ? it->prof.j : 0.0f;
+    return queue_brake_plan(qu, 0u, 1.0f);
+}
+
+/* plans the brake of the running move from its state at its clock (a
+ * joint move's in bq, ws[0], ws[1]), each kind of move in its own step;
+ * its duration */
+static float queue_brake(dh_queue_f32 *qu)
+{
+    if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) return queue_brake_joint(qu);
+    if (qu->bmode == QB_ONE || qu->bmode == QB_TWO) return queue_brake_blend(qu);
+    return queue_brake_path(qu);
+}
+
+/* 1 while two jerk-limited blended lines overlap: a stop waits for the
+ * overlap's end and acts from there (line 2 alone brakes at its own
+ * bounds), since the corner's bounds hold only while line 1 decelerates
+ * and line 2 accelerates (docs/design.md) */
+static int queue_jerk_overlap(const dh_queue_f32 *qu)
+{
+    return (qu->bmode == QB_TWO && qu->bl[1].T > 0.0f && qu->bl[0].j > 0.0f) ? 1 : 0;
+}
+
+/* the stop of the running move from its state now: its brake, or at
+ * rest at once (then running again when a resume came while it waited) */
+static DH_NOINLINE void queue_stop_now(dh_queue_f32 *qu)
+{
+    qu->stopq = 0u;
+    if (qu->count == 0u || qu->started == 0u ||
+        ((qu->bmode == QB_ONE || qu->bmode == QB_TWO) ? !queue_blend_moving(qu)
+                                                       : (!(qu->mv.clock > 0.0f) || !(qu->mv.clock < qu->mv.dur)))) {
+        qu->phase = (qu->resume != 0u) ? (uint32_t)DH_QUEUE_RUN : (uint32_t)DH_QUEUE_STOPPED;
+        qu->resume = 0u;
+        return;
+    }
+    if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) queue_joint_state(qu);
+    if (qu->mv.kind != (uint32_t)DH_MOVE_JOINT && (qu->bmode == QB_ONE || qu->bmode == QB_TWO)) queue_blend_pos(qu);
+    qu->tb = 0.0f;
+    qu->tbend = queue_brake(qu);
+    qu->braked = 1u;
+    qu->phase = (qu->tbend > 0.0f) ? (uint32_t)DH_QUEUE_BRAKE : (uint32_t)DH_QUEUE_STOPPED;
+    if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) queue_rest(qu);
 }
 
 dh_status dh_queue_stop_f32(dh_queue_f32 *qu)
@@ -942,19 +1112,11 @@ dh_status dh_queue_stop_f32(dh_queue_f32 *qu)
     if (qu->pend != 0u) return DH_ERR_ARG;
     if (qu->phase != (uint32_t)DH_QUEUE_RUN) return DH_OK;
     qu->resume = 0u;
-    if (qu->count == 0u || qu->started == 0u ||
-        ((qu->bmode == QB_ONE || qu->bmode == QB_TWO) ? !queue_blend_moving(qu)
-                                                       : (!(qu->mv.clock > 0.0f) || !(qu->mv.clock < qu->mv.dur)))) {
-        qu->phase = (uint32_t)DH_QUEUE_STOPPED;
-        return DH_OK;
+    if (queue_jerk_overlap(qu) != 0) {
+        qu->stopq = 1u;
+    } else {
+        queue_stop_now(qu);
     }
-    if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT)
-        (void)dh_joint_move_eval_f32(qu->mv.prof, qu->mv.n, qu->mv.q0, qu->mv.q1, qu->mv.clock, qu->bq, qu->mv.ws[0],
-                                     qu->mv.ws[1]);
-    qu->tb = 0.0f;
-    qu->tbend = queue_brake(qu);
-    qu->braked = 1u;
-    qu->phase = (qu->tbend > 0.0f) ? (uint32_t)DH_QUEUE_BRAKE : (uint32_t)DH_QUEUE_STOPPED;
     return DH_OK;
 }
 
@@ -962,7 +1124,7 @@ dh_status dh_queue_resume_f32(dh_queue_f32 *qu)
 {
     DH_ASSERT(qu != NULL);
     if (qu->pend != 0u) return DH_ERR_ARG;
-    if (qu->phase == (uint32_t)DH_QUEUE_BRAKE) {
+    if (qu->phase == (uint32_t)DH_QUEUE_BRAKE || qu->stopq != 0u) {
         qu->resume = 1u;
     } else if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) {
         qu->phase = (uint32_t)DH_QUEUE_RUN;

@@ -106,6 +106,25 @@ void dh_blend_pose_rot_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat
 void dh_blend_compose_f32_(const dh_quat_f32 *qa2, dh_mat4_f32 *T);
 void dh_blend_pose_pos_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, float x1, float x2, dh_mat4_f32 *T);
 
+/* g = the jerk-limited scaling of s over the distance D (s from 1 - D to
+ * 1) of the line p within lim and jk, at rest at both ends (its own
+ * bounds of s'' and s''', no overlap): dh_blend_seq_plan_jerk_f32's
+ * scaling of a line, which dh_blend_seg_s_f32_ and dh_blend_seg_rate_f32_
+ * evaluate (g->j > 0) */
+void dh_blend_jline_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                         const dh_cart_jerk_f32 *jk, float D);
+
+/* The corner of the queued jerk-limited lines i1 then i2 (their paths
+ * p1, p2; i1's lim, jk and radius) as the queue blends it
+ * (docs/design.md, "Jerk-limited blended corners in the queue"):
+ * i1->seg p1's scaling as planned (its start as set, its end at rest),
+ * i2->seg p2's (dh_blend_jline_f32_, D 1); both planned again with the
+ * corner's lowered bounds and overlap, tb returned, or left at rest at
+ * the corner (0 returned) when it is not two lines that join, radius is
+ * 0, the blend is not shorter, or it would change p1's speed while p1's
+ * start is blended. */
+float dh_blend_jcorner_f32_(dh_queue_item_f32 *i1, dh_queue_item_f32 *i2);
+
 /* ---- fixed point (dh_interp_q.c) ---- */
 
 /* qb replaced by -qb when qa . qb < 0: the shorter arc; unit inputs (no

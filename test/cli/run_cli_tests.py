@@ -2158,7 +2158,57 @@ def group_move_fixed(seed, tmp):
     move_fixed_blend_arc(rob, n, path, qa, A, p0)
     move_fixed_lagging(tmp)
     move_fixed_blend_lagging(tmp)
+    move_blend_jerk_lagging(tmp)
     move_fixed_jerk(rob, n, path, qa, qb, A, endB, p0, pB, dp)
+
+
+def move_blend_jerk_lagging(tmp):
+    """move --blend --jerk through the float queue: the Puma 560 line of
+    'move puma infeasible' (the wrist asked for more than its rates)
+    blended within R = 2 cm into a line 15 cm down: lagging periods
+    reported (exit 3), the queue's feed override slowing the move, which
+    completes; every joint step and change of step within the tracker's
+    limits (finite differences of the printed values), the tool (double FK
+    of the printed joints) at ok periods within 5e-6 m of the lines or
+    within R of their corner, off the lines somewhere, and at rest on the
+    last line's end (5e-6 m)."""
+    puma = move_robot(tmp, 'puma_rates_bj.dh', os.path.join(ROOT, 'examples', 'robots', 'puma560.dh'), 150.0, 600.0)
+    rob = read_robot(open(puma).read())
+    pq, dt, R = [10.0, -30.0, 45.0, 20.0, 35.0, -60.0], 0.002, 0.02
+    ends = [None, [0.5, -0.03, 1.0], [0.5, -0.03, 0.85]]
+    A = ref_fk(rob, pq)
+    ends[0] = [A[i][3] for i in range(3)]
+    args = ['move', puma, '--q0', ','.join(map(str, pq)), '--dt', str(dt), '--speed', '0.3', '--accel', '1.5',
+            '--rspeed', '90', '--raccel', '360', '--jerk', '8', '--line', 'trans(0.5,-0.03,1.0)', '--line',
+            'trans(0.5,-0.03,0.85)', '--blend', str(R)]
+    rc, out, err = run(args)
+    head, rows = read_csv(out, 6)
+    check(rc == 3 and 'completed with' in err and rows and None not in rows,
+          'move --blend --jerk puma lagging: rc %d %r' % (rc, err))
+    if not rows or None in rows:
+        return
+    lag = sum(1 for r in rows if r[2] == 'lagging')
+    check(lag > 0 and rows[-1][2] == 'ok', 'move --blend --jerk puma lagging: %d of %d periods lagging' %
+          (lag, len(rows)))
+    check_joint_limits('move --blend --jerk puma lagging', pq, rows, [150.0] * 6, [600.0] * 6, dt,
+                       [4 * f32_ulp(360.0)] * 6)
+    worst, off = 0.0, 0.0
+    for r in rows:
+        if r[2] != 'ok':
+            continue
+        F = ref_fk(rob, r[1])
+        p = [F[i][3] for i in range(3)]
+        ds = min(seg_dist(p, ends[0], ends[1]), seg_dist(p, ends[1], ends[2]))
+        if ds > 5e-6:
+            off = max(off, ds)
+            worst = max(worst, math.sqrt(sum((p[i] - ends[1][i]) ** 2 for i in range(3))))
+    F = ref_fk(rob, rows[-1][1])
+    pe = max(abs(F[i][3] - ends[2][i]) for i in range(3))
+    check(off > 1e-4 and worst <= R + 1e-5 and pe <= 5e-6,
+          'move --blend --jerk puma lagging: off the lines %.3g, %.6g from the corner (radius %g), end %.3g' %
+          (off, worst, R, pe))
+    print('move --blend --jerk puma lagging: %d periods, %d lagging, ok periods off the lines up to %.4g m, within '
+          '%.6g m of the corner there (radius %g), end %.3g m' % (len(rows), lag, off, worst, R, pe))
 
 
 def move_fixed_blend_lagging(tmp):

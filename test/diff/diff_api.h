@@ -250,6 +250,7 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_queue_add_path_f32, g_path, 100000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_queue_add_path_blend_f32, g_path, 100000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_queue_add_path_jerk_f32, g_path, 100000, DIFF_OUT_FRAMES, C_BITS) \
+    X(dh_queue_add_path_blend_jerk_f32, g_path, 100000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_queue_target_f32, g_path, 100000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_queue_advance_f32, g_path, 100000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_queue_stop_f32, g_path, 100000, DIFF_OUT_FRAMES, C_BITS) \

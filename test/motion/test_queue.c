@@ -366,14 +366,14 @@ static void path_queue(void)
     double qa[DH_MAX_JOINTS], qb[DH_MAX_JOINTS], qc[DH_MAX_JOINTS];
     float q0[DH_MAX_JOINTS], qp[DH_MAX_JOINTS], sp[DH_MAX_JOINTS], qcf[DH_MAX_JOINTS], vmax[DH_MAX_JOINTS],
         amax[DH_MAX_JOINTS];
-    static dh_mat4_f32 A, B, C, D, Tstop; /* off the micro:bit's stack */
+    static dh_mat4_f32 A, B, Tstop; /* off the micro:bit's stack */
     static dh_path_f32 p1, p2;
     dh_queue_cmd_f32 cmd;
     dh_queue_report_f32 rep;
     dh_track_report_f32 trep;
     uint32_t i;
     long call, stop_call = -1, okp = 0;
-    int have = 0, next = 0, stop_move = (int)(dht_rand_u32() % 3u), k, stopped = 0;
+    int have = 0, next = 0, stop_move = (int)(dht_rand_u32() % 3u), k, stopped = 0, far1;
     const float stop_frac = (float)dht_rand_uniform(0.02, 0.98);
     double tbound = 0.0;
     memset(&Tstop, 0, sizeof Tstop);
@@ -383,14 +383,16 @@ static void path_queue(void)
             qb[k] = qa[k] + dht_rand_uniform(-5.0, 5.0);
             qc[k] = qb[k] + dht_rand_uniform(-5.0, 5.0);
         }
+        /* the first line from A to B, then the second's ends into A and B */
         frame_of(qa, &A);
         frame_of(qb, &B);
+        far1 = !(axis_dist(&A, &B) < 0.3);
+        DHT_EQ_INT(dh_path_line_f32(&p1, &A, &B), DH_OK);
         for (k = 0; k < 6; k++) qb[k] = qc[k] + dht_rand_uniform(-5.0, 5.0);
-        frame_of(qc, &C);
-        frame_of(qb, &D);
-    } while (axis_dist(&A, &B) < 0.3 || axis_dist(&C, &D) < 0.3);
-    DHT_EQ_INT(dh_path_line_f32(&p1, &A, &B), DH_OK);
-    DHT_EQ_INT(dh_path_line_f32(&p2, &C, &D), DH_OK);
+        frame_of(qc, &A);
+        frame_of(qb, &B);
+    } while (!far1 || axis_dist(&A, &B) < 0.3);
+    DHT_EQ_INT(dh_path_line_f32(&p2, &A, &B), DH_OK);
     for (i = 0; i < G->r.n; i++) {
         q0[i] = (float)qa[i];
         qp[i] = q0[i];

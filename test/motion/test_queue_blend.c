@@ -68,8 +68,6 @@
 /* static: the micro:bit's RAM holds them beside the rig on the stack */
 static dh_queue_f32 qu;
 static dh_queue_item_f32 items[CAP];
-static dh_path_f32 line;              /* the line being appended */
-static float qc[NMAX + 1][DH_MAX_JOINTS]; /* the corners' configurations */
 static float cp[NMAX + 1][3];         /* the corners' positions (line k: cp[k] to cp[k + 1]) */
 static float radius[NMAX];
 static unsigned char isarc[NMAX];      /* segment k is an arc (drawn when appended) */
@@ -111,18 +109,9 @@ static void check_fd(dhm_fd *fd, const dh_mat4_f32 *T, const dh_cart_limits_f32 
  * inside one; 1 when inside */
 static int check_path(const dh_mat4_f32 *T, uint32_t n, double S, long call)
 {
-    const uint32_t k = (qu.seq < n) ? qu.seq : n - 1u;
-    const double tol = 1e-6 + 8.0 * FLT_EPSILON * S;
-    double x[3], c[3], d;
-    int i;
-    for (i = 0; i < 3; i++) {
-        x[i] = T->m[3][i];
-        c[i] = cp[k + 1u][i];
-    }
-    if (qu.bmode == 2u) {
-        d = dhm_dist3(x, c);
-        DHT_TRUE_MSG(k + 1u < n && d <= (double)radius[k] + tol, "call %ld: %.9g from corner %u, radius %.9g", call, d,
-                     (unsigned)k, (double)radius[k]);
+    uint32_t k;
+    double x[3], d;
+    if (dhm_check_corner(&qu, T, n, (const float (*)[3])cp, radius, S, call, &k, x)) {
         if (isarc[k] || (k + 1u < n && isarc[k + 1u])) arc_ov++;
         return 1;
     }
@@ -132,7 +121,7 @@ static int check_path(const dh_mat4_f32 *T, uint32_t n, double S, long call)
 }
 
 /* the frame of corner k (FK of its configuration) */
-static void corner(const dhm_rig *g, uint32_t k, dh_mat4_f32 *T)
+static void corner(const dhm_rig *g, const float (*qc)[DH_MAX_JOINTS], uint32_t k, dh_mat4_f32 *T)
 {
     double q[DH_MAX_JOINTS];
     uint32_t i;
@@ -141,12 +130,13 @@ static void corner(const dhm_rig *g, uint32_t k, dh_mat4_f32 *T)
 }
 
 /* segment k appended with its radius: a line, or an arc (dhm_draw_via) */
-static void append(const dhm_rig *g, uint32_t k, const dh_cart_limits_f32 *lim)
+static void append(const dhm_rig *g, const float (*qc)[DH_MAX_JOINTS], uint32_t k, const dh_cart_limits_f32 *lim)
 {
+    dh_path_f32 line;
     dh_mat4_f32 A, B;
     float via[3];
-    corner(g, k, &A);
-    corner(g, k + 1u, &B);
+    corner(g, qc, k, &A);
+    corner(g, qc, k + 1u, &B);
     isarc[k] = (unsigned char)dhm_draw_via(cp[k], cp[k + 1u], via);
     if (isarc[k])
         DHT_EQ_INT(dh_path_arc_f32(&line, &A, via, &B), DH_OK);
@@ -157,14 +147,14 @@ static void append(const dhm_rig *g, uint32_t k, const dh_cart_limits_f32 *lim)
 
 /* a random queue of n lines from the configuration qa: the corners'
  * configurations a few degrees apart, their positions, the radii */
-static void draw_lines(const dhm_rig *g, const double *qa, uint32_t n, double step)
+static void draw_lines(const dhm_rig *g, const double *qa, uint32_t n, double step, float (*qc)[DH_MAX_JOINTS])
 {
     dh_mat4_f32 T;
     uint32_t k, i;
     for (i = 0; i < g->r.n; i++) qc[0][i] = (float)qa[i];
     for (k = 0; k <= n; k++) {
         if (k > 0) dhm_draw_q(&g->r, qc[k - 1u], step, qc[k]);
-        corner(g, k, &T);
+        corner(g, (const float (*)[DH_MAX_JOINTS])qc, k, &T);
         for (i = 0; i < 3u; i++) cp[k][i] = T.m[3][i];
         if (k < n) radius[k] = (dht_rand_u32() % 5u == 0u) ? 0.0f : (float)dht_rand_uniform(1e-3, 0.05);
     }
@@ -191,8 +181,10 @@ static void blend_queue(dhm_rig *g, const double *q_nom, long *overlap_periods)
     double tb_stop = 0.0;
     uint32_t i, added, done = 0;
     int stopped = 0, in_ov, planned;
+    float qc[NMAX + 1][DH_MAX_JOINTS]; /* the corners' configurations (on the stack: the micro:bit's RAM) */
+    const float (*qcc)[DH_MAX_JOINTS] = (const float (*)[DH_MAX_JOINTS])qc;
     for (i = 0; i < g->r.n; i++) qa[i] = q_nom[i] + dht_rand_uniform(-5.0, 5.0);
-    draw_lines(g, qa, n, 8.0);
+    draw_lines(g, qa, n, 8.0, qc);
     for (i = 0; i <= n; i++) {
         int k;
         for (k = 0; k < 3; k++) S = fmax(S, fabs((double)cp[i][k]));
@@ -204,7 +196,7 @@ static void blend_queue(dhm_rig *g, const double *q_nom, long *overlap_periods)
     for (i = 0; i < g->r.n; i++) q0[i] = qc[0][i];
     DHT_EQ_INT(dh_track_init_f32(&g->t, &g->r, g->closed ? &g->m : NULL, q0, DT), DH_OK);
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
-    for (added = 0; added < n0 && added < CAP; added++) append(g, added, &lim);
+    for (added = 0; added < n0 && added < CAP; added++) append(g, qcc, added, &lim);
     planned = added >= 2u && items[0].ctb > 0.0f;
     for (call = 0; call < MAXCALL && done < n; call++) {
         dh_track_state st;
@@ -233,7 +225,7 @@ static void blend_queue(dhm_rig *g, const double *q_nom, long *overlap_periods)
         if (rep.done) {
             done++;
             DHT_EQ_INT(rep.last, done == added);
-            if (added < n) append(g, added++, &lim);
+            if (added < n) append(g, qcc, added++, &lim);
         }
         /* the stop inside an overlap (the head line's tail and the next's) */
         if (stop_call < 0 && qu.phase == (uint32_t)DH_QUEUE_RUN && done < n &&
@@ -249,7 +241,7 @@ static void blend_queue(dhm_rig *g, const double *q_nom, long *overlap_periods)
     DHT_TRUE_MSG(done == n, "%u of %u moves done in %ld periods", (unsigned)done, (unsigned)n, call);
     {
         dh_mat4_f32 B;
-        corner(g, n, &B);
+        corner(g, qcc, n, &B);
         DHT_TRUE(memcmp(&cmd.T, &B, sizeof cmd.T) == 0);
     }
     if (stop_call >= 0) DHT_TRUE(stopped);
@@ -284,18 +276,9 @@ static uint64_t queue_hash(void)
 static void blend_bad(void)
 {
     static const dh_cart_limits_f32 lim = { 0.1f, 1.0f, 30.0f, 300.0f };
-    dh_path_f32 arc;
-    dh_mat4_f32 A, B;
-    const float v[3] = { 0.3f, 0.1f, 0.2f };
+    dh_path_f32 line, arc;
     uint64_t keep;
-    memset(&A, 0, sizeof A);
-    A.m[0][0] = A.m[1][1] = A.m[2][2] = A.m[3][3] = 1.0f;
-    B = A;
-    A.m[3][0] = 0.2f;
-    B.m[3][0] = 0.4f;
-    B.m[3][1] = 0.2f;
-    DHT_EQ_INT(dh_path_line_f32(&line, &A, &B), DH_OK);
-    DHT_EQ_INT(dh_path_arc_f32(&arc, &A, v, &B), DH_OK);
+    dhm_line_arc(&line, &arc);
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, 1), DH_OK);
     keep = queue_hash();
     DHT_EQ_INT(dh_queue_add_path_blend_f32(&qu, &line, &lim, NAN), DH_ERR_NAN);

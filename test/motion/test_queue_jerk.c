@@ -61,36 +61,10 @@
 /* static: the micro:bit's RAM holds them beside the rig on the stack */
 static dh_queue_f32 qu;
 static dh_queue_item_f32 items[CAP];
-static dh_path_f32 seg;                   /* the segment being appended */
-static float qc[NMAX + 1][DH_MAX_JOINTS]; /* the corners' configurations */
 static float sp[NS][7], lp[NL][7];        /* position and unit quaternion of the target m periods (m WD periods) ago */
 static long last_bad;                     /* the last period with a lag or a change of r */
 static double jerk_worst[2];              /* largest third-difference ratios seen (linear, angular) */
 static long jerk_windows;
-
-/* the third differences of the samples h[0], h[w], h[2 w], h[3 w]
- * (hdt = w periods) within jk (the file's comment) */
-static void check_jerk(const float (*h)[7], int w, double hdt, const dh_cart_jerk_f32 *jk, double ulp, long call)
-{
-    double a[3], b[3], c[3], x, h3 = hdt * hdt * hdt;
-    int k;
-    for (k = 0; k < 3; k++) a[k] = (double)h[0][k] - 3.0 * h[w][k] + 3.0 * h[2 * w][k] - h[3 * w][k];
-    x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    if (x / h3 / (double)jk->jmax > jerk_worst[0]) jerk_worst[0] = x / h3 / (double)jk->jmax;
-    DHT_TRUE_MSG(x <= (double)jk->jmax * h3 * (1.0 + DHM_REL) + 8.0 * ulp, "call %ld: jerk %.9g over %.9g", call,
-                 x / h3, (double)jk->jmax);
-    /* rotation vectors relative to h[w]: along one move they are one axis
-     * times the angle (a fixed world axis) */
-    dhm_rotvec(&h[w][3], &h[0][3], a);
-    dhm_rotvec(&h[w][3], &h[2 * w][3], b);
-    dhm_rotvec(&h[w][3], &h[3 * w][3], c);
-    for (k = 0; k < 3; k++) a[k] = a[k] + 3.0 * b[k] - c[k];
-    x = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    if (x / h3 / (double)jk->wjmax > jerk_worst[1]) jerk_worst[1] = x / h3 / (double)jk->wjmax;
-    DHT_TRUE_MSG(x <= (double)jk->wjmax * h3 * (1.0 + DHM_REL) + 8.0 * DHM_ANG_NOISE,
-                 "call %ld: angular jerk %.9g over %.9g", call, x / h3, (double)jk->wjmax);
-    jerk_windows++;
-}
 
 /* every target's finite differences within lim and jk (the file's
  * comment) */
@@ -100,8 +74,10 @@ static void check_fd(dhm_fd *fd, const dh_mat4_f32 *T, const dh_cart_limits_f32 
     const double ulp = S * FLT_EPSILON;
     if (!dhm_fd_push(fd, T, lim, ulp, call)) return;
     /* the jerk over windows of OK periods at a constant r */
-    if (fd->nh >= (long)(NL - 1) * WD + 1 && last_bad < call - 3L * W - 1L)
-        check_jerk((const float (*)[7])lp, W / WD, (double)W * DT, jk, ulp, call);
+    if (fd->nh >= (long)(NL - 1) * WD + 1 && last_bad < call - 3L * W - 1L) {
+        dhm_check_jerk((const float (*)[7])lp, W / WD, (double)W * DT, jk, ulp, call, jerk_worst);
+        jerk_windows++;
+    }
 }
 
 /* the target on the running move's segment (the queue's head item)
@@ -121,7 +97,7 @@ static void check_path(const dh_mat4_f32 *T, long call)
 }
 
 /* the frame of corner k (FK of its configuration) */
-static void corner(const dhm_rig *g, uint32_t k, dh_mat4_f32 *T)
+static void corner(const dhm_rig *g, const float (*qc)[DH_MAX_JOINTS], uint32_t k, dh_mat4_f32 *T)
 {
     double q[DH_MAX_JOINTS];
     uint32_t i;
@@ -130,12 +106,13 @@ static void corner(const dhm_rig *g, uint32_t k, dh_mat4_f32 *T)
 }
 
 /* segment k (a line, or an arc: dhm_draw_via) appended */
-static void append(const dhm_rig *g, uint32_t k, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk)
+static void append(const dhm_rig *g, const float (*qc)[DH_MAX_JOINTS], uint32_t k, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk)
 {
+    dh_path_f32 seg;
     dh_mat4_f32 A, B;
     float via[3];
-    corner(g, k, &A);
-    corner(g, k + 1u, &B);
+    corner(g, qc, k, &A);
+    corner(g, qc, k + 1u, &B);
     if (dhm_draw_via(&A.m[3][0], &B.m[3][0], via))
         DHT_EQ_INT(dh_path_arc_f32(&seg, &A, via, &B), DH_OK);
     else
@@ -145,7 +122,7 @@ static void append(const dhm_rig *g, uint32_t k, const dh_cart_limits_f32 *lim, 
 
 /* the corners' configurations a few degrees apart from qa; S the
  * largest |coordinate| of their positions (at least 1) */
-static void draw_corners(const dhm_rig *g, const double *qa, uint32_t n, double step, double *S)
+static void draw_corners(const dhm_rig *g, const double *qa, uint32_t n, double step, float (*qc)[DH_MAX_JOINTS], double *S)
 {
     dh_mat4_f32 T;
     uint32_t k, i;
@@ -153,7 +130,7 @@ static void draw_corners(const dhm_rig *g, const double *qa, uint32_t n, double 
     for (k = 1; k <= n; k++) dhm_draw_q(&g->r, qc[k - 1u], step, qc[k]);
     *S = 1.0;
     for (k = 0; k <= n; k++) {
-        corner(g, k, &T);
+        corner(g, (const float (*)[DH_MAX_JOINTS])qc, k, &T);
         for (i = 0; i < 3u; i++) *S = fmax(*S, fabs((double)T.m[3][i]));
     }
 }
@@ -196,8 +173,10 @@ static void jerk_queue(dhm_rig *g, const double *q_nom, long *nstop)
     uint32_t i, added, done = 0;
     float feed = 1.0f;
     int resumed = 0;
+    float qc[NMAX + 1][DH_MAX_JOINTS]; /* the corners' configurations (on the stack: the micro:bit's RAM) */
+    const float (*qcc)[DH_MAX_JOINTS] = (const float (*)[DH_MAX_JOINTS])qc;
     for (i = 0; i < g->r.n; i++) qa[i] = q_nom[i] + dht_rand_uniform(-5.0, 5.0);
-    draw_corners(g, qa, n, 8.0, &S);
+    draw_corners(g, qa, n, 8.0, qc, &S);
     lim.vmax = (float)dht_rand_uniform(0.05, 0.2);
     lim.amax = (float)dht_rand_uniform(0.3, 2.0);
     lim.wmax = (float)dht_rand_uniform(15.0, 60.0);
@@ -208,7 +187,7 @@ static void jerk_queue(dhm_rig *g, const double *q_nom, long *nstop)
     DHT_EQ_INT(dh_track_init_f32(&g->t, &g->r, g->closed ? &g->m : NULL, q0, DT), DH_OK);
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
     for (added = 0; added < n && added < CAP; added++)
-        append(g, added, &lim, &jk);
+        append(g, qcc, added, &lim, &jk);
     last_bad = -1;
     for (call = 0; call < MAXCALL && done < n; call++) {
         dh_track_state st;
@@ -237,7 +216,7 @@ static void jerk_queue(dhm_rig *g, const double *q_nom, long *nstop)
         if (rep.done) {
             done++;
             DHT_EQ_INT(rep.last, done == added);
-            if (added < n) append(g, added++, &lim, &jk);
+            if (added < n) append(g, qcc, added++, &lim, &jk);
         }
         if (stop_call < 0 && stop_mode != 0 && call == stop_at && done < n) {
             stop_call = call;
@@ -248,7 +227,7 @@ static void jerk_queue(dhm_rig *g, const double *q_nom, long *nstop)
     DHT_TRUE_MSG(done == n, "%u of %u moves done in %ld periods", (unsigned)done, (unsigned)n, call);
     {
         dh_mat4_f32 B;
-        corner(g, n, &B);
+        corner(g, qcc, n, &B);
         DHT_TRUE(memcmp(&cmd.T, &B, sizeof cmd.T) == 0);
     }
     if (stop_call >= 0) DHT_TRUE(resumed);
@@ -286,6 +265,7 @@ static void jerk_bad(void)
     static const dh_cart_limits_f32 lim = { 0.1f, 1.0f, 30.0f, 300.0f };
     static const float bad[5] = { NAN, INFINITY, -INFINITY, 0.0f, -1.0f };
     dh_cart_jerk_f32 jk;
+    dh_path_f32 seg;
     dh_mat4_f32 A, B;
     dh_queue_item_f32 it0;
     uint64_t keep;
