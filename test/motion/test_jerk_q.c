@@ -65,7 +65,6 @@
 #define CAP 1u    /* queue items: each move appended as the queue drains (RAM) */
 
 static dhsm_rig the_rig;
-static dh_track_q the_trk;
 /* the executor's move or the queue, one at a time (the micro:bit's RAM) */
 static union {
     dh_move_q mv;
@@ -365,6 +364,7 @@ static void run_queue(dhsm_rig *g, long kstop, long rest, long *stats)
     static const dh_cart_limits_q LIM = { 250 << 16, 2000 << 16, 45 << 16, 360 << 16 };
     static const dh_cart_jerk_q JK = { 8000 << 16, 3000 << 16 };
     dh_queue_q *const qu = &the_mem.qu;
+    dh_track_q trk; /* on the stack: the micro:bit's .data + .bss are full */
     dh_queue_item_q items[CAP]; /* on the stack: the micro:bit's .data + .bss has no room for it */
     double qa[DH_MAX_JOINTS], qb[DH_MAX_JOINTS], qc[DH_MAX_JOINTS];
     int32_t ia[DH_MAX_JOINTS], ib[DH_MAX_JOINTS], ic[DH_MAX_JOINTS], v[6], a[6], j[6], q[DH_MAX_JOINTS];
@@ -409,7 +409,7 @@ static void run_queue(dhsm_rig *g, long kstop, long rest, long *stats)
     wj = 1 + wj / dec;
     DHT_TRUE(3 * wj < RING);
     DHT_EQ_INT(dh_queue_init_q(qu, items, CAP), DH_OK);
-    DHT_EQ_INT(dh_track_init_q(&the_trk, &g->r, &g->m, ia, DT_US), DH_OK);
+    DHT_EQ_INT(dh_track_init_q(&trk, &g->r, &g->m, ia, DT_US), DH_OK);
     memcpy(q, ia, sizeof q);
     for (k = 0; k < 200000 && done < 3; k++) {
         dh_track_state st = DH_TRACK_OK;
@@ -427,10 +427,10 @@ static void run_queue(dhsm_rig *g, long kstop, long rest, long *stats)
         }
         if (k == kstop) DHT_EQ_INT(dh_queue_stop_q(qu), DH_OK);
         if (stopped_at >= 0 && k == stopped_at + rest) DHT_EQ_INT(dh_queue_resume_q(qu), DH_OK);
-        DHT_EQ_INT(dh_queue_target_q(qu, &the_trk, &cmd), DH_OK);
+        DHT_EQ_INT(dh_queue_target_q(qu, &trk, &cmd), DH_OK);
         if (cmd.kind == (uint32_t)DH_MOVE_PATH) {
-            if (cmd.sync) DHT_EQ_INT(dh_track_init_q(&the_trk, &g->r, &g->m, cmd.q, DT_US), DH_OK);
-            DHT_EQ_INT(dh_track_step_q(&the_trk, &cmd.T, q, &trep), DH_OK);
+            if (cmd.sync) DHT_EQ_INT(dh_track_init_q(&trk, &g->r, &g->m, cmd.q, DT_US), DH_OK);
+            DHT_EQ_INT(dh_track_step_q(&trk, &cmd.T, q, &trep), DH_OK);
             st = trep.state;
         } else if (cmd.kind == (uint32_t)DH_MOVE_JOINT) {
             memcpy(q, cmd.q, sizeof q);

@@ -72,7 +72,6 @@
 
 /* one robot, one tracker, one move (the M0 target has 16 KB of RAM) */
 static dhsm_rig the_rig;
-static dh_track_q the_trk;
 static dh_move_q the_mv;
 static int32_t ring[RING][3];   /* target positions, one every DEC periods */
 static int32_t ring_tool[RING][3];  /* tool positions (LSB, rounded) of OK periods, one every DEC periods */
@@ -203,6 +202,7 @@ static const dh_cart_limits_q LIM = { 250 << 16, 2000 << 16, 45 << 16, 360 << 16
 
 static void cartesian_moves_q(void)
 {
+    dh_track_q trk; /* on the stack: the micro:bit's .data + .bss are full */
     size_t ri;
     for (ri = 0; ri < sizeof robots / sizeof robots[0]; ri++) {
         dhsm_rig *const g = &the_rig;
@@ -242,8 +242,8 @@ static void cartesian_moves_q(void)
             DHT_TRUE(ok);
             dhsm_ref_make(&rp, &p, arc ? via : NULL);
             DHT_EQ_INT(dh_move_path_q(&the_mv, &p, &LIM), DH_OK);
-            DHT_EQ_INT(dh_track_init_q(&the_trk, &g->r, &g->m, ia, DT_US), DH_OK);
-            run_path(g, &the_trk, &the_mv, &rp, &LIM, &rs, arc ? "arc" : "line");
+            DHT_EQ_INT(dh_track_init_q(&trk, &g->r, &g->m, ia, DT_US), DH_OK);
+            run_path(g, &trk, &the_mv, &rp, &LIM, &rs, arc ? "arc" : "line");
             notok += rs.notok;
             periods += rs.periods;
         }
@@ -306,6 +306,7 @@ static void lagging_puma_q(void)
     static const double QP[6] = { 10.0, -30.0, 45.0, 20.0, 35.0, -60.0 };
     static const dh_cart_limits_q PLIM = { 300 << 16, 1500 << 16, 90 << 16, 360 << 16 };
     dhsm_rig *const g = &the_rig;
+    dh_track_q trk; /* on the stack: the micro:bit's .data + .bss are full */
     int it, n = (int)DHT_ITER(2), k;
     dhsm_rig_make(g, &dhs_puma560_mm, 150.0, 600.0);
     for (it = 0; it < n; it++) {
@@ -325,8 +326,8 @@ static void lagging_puma_q(void)
         DHT_EQ_INT(dh_path_line_q(&p, &A, &B), DH_OK);
         dhsm_ref_make(&rp, &p, NULL);
         DHT_EQ_INT(dh_move_path_q(&the_mv, &p, &PLIM), DH_OK);
-        DHT_EQ_INT(dh_track_init_q(&the_trk, &g->r, &g->m, ia, DT_US), DH_OK);
-        run_path(g, &the_trk, &the_mv, &rp, &PLIM, &rs, "puma line");
+        DHT_EQ_INT(dh_track_init_q(&trk, &g->r, &g->m, ia, DT_US), DH_OK);
+        run_path(g, &trk, &the_mv, &rp, &PLIM, &rs, "puma line");
         DHT_TRUE_MSG(rs.notok > 0, "the Puma line: no lagging period");
         dht_reach_max("move_q.puma_notok", (double)rs.notok);
         dht_printf("Puma line: %ld periods, %ld not OK (held), duration %lu us\n", rs.periods, rs.notok,
