@@ -470,6 +470,9 @@ typedef struct {
     float clock;                        /**< time into the move (s), in [0, dur] */
     float feed;                         /**< path move: feed override r in [0, 1], d clock / dt (1 otherwise) */
     float fcap;                         /**< path move: ceiling of r, in [0, 1] (dh_move_advance_f32) */
+    float fd;                           /**< path move with a jerk limit: r' (1/s), 0 otherwise */
+    float wa;                           /**< path move with a jerk limit: bound of |s''| the warp keeps (0 otherwise) */
+    float wj;                           /**< path move with a jerk limit: bound of |s'''| the warp keeps (0 otherwise) */
     uint32_t lag;                       /**< path move: 1 when the last period was not OK */
     uint32_t n;                         /**< joint move: number of joints */
     uint32_t kind;                      /**< a dh_move_kind value */

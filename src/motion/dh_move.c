@@ -67,12 +67,37 @@ static float move_next_clock(const dh_move_f32 *mv, float dt)
     return (c < mv->dur) ? c : mv->dur;
 }
 
+/* the share of a seven-phase plan's bounds of |s''| and |s'''| its profile
+ * of s runs at: the rest is the room a change of r takes */
+#define MOVE_WARP 0.875f
+
 /* the override at its start: r = its ceiling = 1 */
 static void move_feed_init(dh_move_f32 *mv)
 {
     mv->feed = 1.0f;
     mv->fcap = 1.0f;
     mv->lag = 0u;
+}
+
+/* A seven-phase profile of s in mv->prof[0] (within the bounds wa of |s''|
+ * and wj of |s'''|) planned again at MOVE_WARP of them, the bounds kept for
+ * the warp (move_warp_next); r' = 0. Nothing but r' for other profiles. */
+dh_status dh_motion_warp_plan_f32_(dh_move_f32 *mv)
+{
+    dh_profile_f32 *pr = &mv->prof[0];
+    const float a = pr->a, j = pr->j;
+    dh_status st = DH_OK;
+    mv->fd = 0.0f;
+    mv->wa = 0.0f;
+    mv->wj = 0.0f;
+    if (pr->kind == (uint32_t)DH_PROFILE_SCURVE && pr->v > 0.0f) {
+        st = dh_profile_scurve_f32(pr, pr->d, pr->v, a * MOVE_WARP, j * MOVE_WARP);
+        if (st == DH_OK) {
+            mv->wa = a;
+            mv->wj = j;
+        }
+    }
+    return st;
 }
 
 dh_status dh_move_joint_f32(dh_move_f32 *mv, uint32_t n, const float *q0, const float *q1, const float *vmax,
@@ -131,6 +156,8 @@ dh_status dh_move_path_jerk_f32(dh_move_f32 *mv, const dh_path_f32 *p, const dh_
     st = dh_path_move_jerk_f32(&mv->prof[0], p, lim, jerk);
     if (st != DH_OK) return st;
     if (!dh_motion_path_ok_f32_(p)) return DH_ERR_ARG;
+    st = dh_motion_warp_plan_f32_(mv);
+    if (st != DH_OK) return st;
     mv->path = *p;
     mv->n = 0u;
     mv->dur = mv->prof[0].T;
@@ -239,6 +266,58 @@ float dh_motion_feed_goal_f32_(dh_move_f32 *mv, float dt, int ok, float up, floa
     return (r - dn > goal) ? r - dn : goal;
 }
 
+/* The largest |r'| of a fall at r (0 <= r <= 1) of the seven-phase plan
+ * pr within the bounds A of |s''| and J of |s'''| (move_warp_next) */
+static float move_warp_qf(const dh_profile_f32 *pr, float A, float J, float r)
+{
+    const float a = pr->a, j = pr->j;
+    const float qa = (A - a * r * r) / pr->v, qj = (0.5f * (J + j) - j * r * r * r) / (3.0f * a * r);
+    return (r > 0.0f && qj < qa) ? qj : qa;
+}
+
+/* r and r' after a period of the seven-phase path move mv towards the goal
+ * g of r (docs/design.md, "Feed override"): r'' constant over the period,
+ * |r''| <= U = (J - j) / (2 V), r' within [-Qf(r), Qf(1)] and r within
+ * [0, 1] by the stopping distance at U; the clock's advance, the integral
+ * of r over the period */
+static float move_warp_next(dh_move_f32 *mv, float dt, float g)
+{
+    const dh_profile_f32 *pr = &mv->prof[0];
+    const float U = (mv->wj - pr->j) / (2.0f * pr->v), r0 = mv->feed, q0 = mv->fd;
+    const float D = g - r0 - 0.5f * q0 * dt, ud = U * dt;
+    float q1, rh, lo, r1;
+    /* the largest change of r' towards g after which a stop at U stays
+     * within g: x^2 / (2 U) + x dt <= |D|, x = |r'| at the period's end */
+    q1 = 2.0f * ((D < 0.0f) ? -D : D) / (dh_sqrt_f32(dt * dt + 2.0f * ((D < 0.0f) ? -D : D) / U) + dt);
+    if (D < 0.0f) q1 = -q1;
+    if (q1 > q0 + ud) q1 = q0 + ud;
+    if (q1 < q0 - ud) q1 = q0 - ud;
+    if (q1 > move_warp_qf(pr, mv->wa, mv->wj, 1.0f)) q1 = move_warp_qf(pr, mv->wa, mv->wj, 1.0f);
+    rh = r0 + ((q0 > 0.0f) ? q0 * dt : 0.0f);
+    lo = -move_warp_qf(pr, mv->wa, mv->wj, (rh < 1.0f) ? rh : 1.0f);
+    if (q1 < lo) q1 = lo;
+    r1 = r0 + 0.5f * (q0 + q1) * dt;
+    if (r1 > 1.0f) r1 = 1.0f;
+    if (!(r1 > 0.0f)) r1 = 0.0f;
+    mv->feed = r1;
+    mv->fd = q1;
+    return dt * (r0 + (2.0f * q0 + q1) * dt * (1.0f / 6.0f));
+}
+
+/* A period of a seven-phase path move: the goal of r as
+ * dh_motion_feed_goal_f32_ sets it (its ceiling, or 0), reached at once at
+ * the clock 0 (the target holds the plan's start); the clock's advance */
+static DH_NOINLINE float move_warp_period(dh_move_f32 *mv, float dt, int ok)
+{
+    const float g = dh_motion_feed_goal_f32_(mv, dt, ok, 1.0f, 1.0f);
+    if (!(mv->clock > 0.0f)) {
+        mv->feed = g;
+        mv->fd = 0.0f;
+        return g * dt;
+    }
+    return move_warp_next(mv, dt, g);
+}
+
 dh_status dh_move_advance_f32(dh_move_f32 *mv, float dt, dh_track_state state, dh_move_report_f32 *rep)
 {
     dh_status st;
@@ -253,6 +332,8 @@ dh_status dh_move_advance_f32(dh_move_f32 *mv, float dt, dh_track_state state, d
     }
     if (ok != 0 && !(mv->clock < mv->dur)) {
         done = 1;
+    } else if (mv->wj > 0.0f) {
+        mv->clock = move_next_clock(mv, move_warp_period(mv, dt, ok));
     } else {
         mv->feed = move_feed_next(mv, dt, ok);
         mv->clock = move_next_clock(mv, mv->feed * dt);

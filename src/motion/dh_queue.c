@@ -678,6 +678,8 @@ static DH_NOINLINE dh_status queue_start_path(dh_queue_f32 *qu, const dh_queue_i
     } else {
         s0 = 0.0f;
     }
+    st = dh_motion_warp_plan_f32_(mv);
+    if (st != DH_OK) return st;
     qu->s0 = (s0 < 1.0f) ? s0 : 1.0f;
     mv->path = it->path;
     mv->n = 0u;
@@ -928,10 +930,12 @@ static DH_NOINLINE float queue_brake(dh_queue_f32 *qu)
             if (e > d) d = e;
         }
     } else {
-        /* s's rate and acceleration under the feed override r: s' r, s'' r^2 */
+        /* s's rate and acceleration under the feed override r: s' r and
+         * s'' r^2 (+ s' r' on a seven-phase plan, whose r changes smoothly) */
         s = queue_path_s(qu, qu->mv.clock, &sd, &sdd);
-        d = queue_brake_plan(qu, 0u, s, sd * qu->mv.feed, sdd * qu->mv.feed * qu->mv.feed, qu->as,
-                             (it->jerk != 0u) ? it->prof.j : 0.0f, 1.0f);
+        sdd = sdd * qu->mv.feed * qu->mv.feed;
+        if (it->jerk != 0u) sdd += sd * qu->mv.fd;
+        d = queue_brake_plan(qu, 0u, s, sd * qu->mv.feed, sdd, qu->as, (it->jerk != 0u) ? it->prof.j : 0.0f, 1.0f);
     }
     return d;
 }

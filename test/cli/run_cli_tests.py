@@ -2193,9 +2193,11 @@ def move_fixed_jerk(rob, n, path, qa, qb, A, endB, p0, pB, dp):
     2^-27 of its distance, 5 LSB), w the least window with that noise
     within 2.5e-4 of J; steps and changes of step within the fixed vmax
     and amax bounds; the end exactly qb. A line and an arc with --jerk:
-    exit 0, every period ok, the tool within 5e-3 mm of the line, the
-    same number of periods as the float run's (both the seven-phase
-    minimum), the last row's tool at B."""
+    exit 0, every period ok, the tool within 5e-3 mm of the line, at most
+    as many periods as the float run's and at least 7/8 of them (the
+    float run's profiles of s use 7/8 of their peaks |s''| and |s'''|,
+    the room of its feed override: a time scaling by 8/7 would meet
+    them), the last row's tool at B."""
     dt, J = 0.004, 1500.0
     rc, out, err = run(['move', path, '--q0', ','.join(map(str, qa)), '--dt', str(dt), '--jerk', str(J), '--joint',
                         ','.join('%.9g' % q for q in qb), '--fixed'])
@@ -2240,8 +2242,8 @@ def move_fixed_jerk(rob, n, path, qa, qb, A, endB, p0, pB, dp):
     if not rows or None in rows or not frows or None in frows:
         return
     check(all(r[2] == 'ok' for r in rows), 'move --fixed --jerk line, arc: not ok')
-    check(len(rows) == len(frows), 'move --fixed --jerk line, arc: %d periods, the float run %d' %
-          (len(rows), len(frows)))
+    check(len(rows) <= len(frows) and 7 * len(frows) <= 8 * len(rows) + 16,
+          'move --fixed --jerk line, arc: %d periods, the float run %d' % (len(rows), len(frows)))
     L1 = math.sqrt(sum(d * d for d in dp))
     off, at_b = 0.0, False
     for r in rows:
