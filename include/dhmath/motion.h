@@ -557,6 +557,10 @@ dh_status dh_move_path_f32(dh_move_f32 *mv, const dh_path_f32 *p, const dh_cart_
  *        and jerk (dh_path_move_jerk_f32), executed as a move of
  *        dh_move_path_f32 (dh_move_target_f32, dh_move_advance_f32; the
  *        same start and holding of the clock).
+ * The profile of s runs at 7/8 of dh_path_move_jerk_f32's peaks |s''| and
+ * |s'''| (wa and wj keep them): the rest is the room of the feed override,
+ * so speed, acceleration and jerk stay within lim and jerk at every r and
+ * while r changes (docs/design.md, "Feed override").
  * @param mv output move (kind DH_MOVE_PATH, clock 0, dur the profile's T;
  *        p copied).
  * @param p path from dh_path_line_f32 or dh_path_arc_f32.
@@ -605,9 +609,9 @@ dh_status dh_move_target_f32(const dh_move_f32 *mv, dh_mat4_f32 *T);
  *   joints could not follow and speeds up again where they can.
  * r changes each period by at most what keeps the commanded s' r and
  * d(s' r)/dt within the profile's peaks prof[0].v and prof[0].a, so the
- * target's speed, acceleration and angular rates stay within lim (not
- * the jerk of dh_move_path_jerk_f32 while r changes; docs/design.md).
- * At clock 0 (s' = 0) r falls to 0 and rises back at once.
+ * target's speed, acceleration and angular rates stay within lim; on a
+ * jerk-limited move r' is continuous and r'' bounded, so its jerk stays
+ * within jerk as well (docs/design.md). At clock 0 r jumps to its goal.
  * @param mv move from dh_move_path_f32 or dh_move_path_jerk_f32.
  * @param dt control period (s), finite, > 0 (the tracker's dt).
  * @param state the tracker's state this period, a dh_track_state value.
@@ -825,11 +829,11 @@ dh_status dh_queue_add_path_blend_f32(dh_queue_f32 *qu, const dh_path_f32 *p, co
  *        jerk (dh_move_path_jerk_f32: the seven-phase profile of s of
  *        dh_path_move_jerk_f32, TOTAL linear jerk within jerk->jmax on
  *        lines and arcs), run as dh_queue_add_path_f32's moves are.
- * Feed override r as dh_move_advance_f32's: speed and TOTAL acceleration
- * within lim at every r; the jerk within jerk while r is constant (a
- * change of r adds s' r' and s'' r r' terms that the rule bounds in
- * acceleration only). Stop: s brakes from its rate s' r and acceleration
- * s'' r^2 with jerk +-j (j = the plan's peak |s'''|), its deceleration
+ * Feed override r as dh_move_advance_f32's on dh_move_path_jerk_f32's
+ * move (its profile of s at 7/8 of the plan's peaks |s''| and |s'''|):
+ * speed, TOTAL acceleration and jerk within lim and jerk at every r and
+ * while r changes. Stop: s brakes from its rate s' r and acceleration
+ * s'' r^2 + s' r' with jerk +-j (j = the plan's peak |s'''|), its deceleration
  * ramped to at most the plan's peak |s''| and back, so the tool's speed,
  * acceleration and jerk stay within lim and jerk (docs/design.md, "Stop
  * and resume"), never beyond B. Resume: a seven-phase profile of s from

@@ -16,7 +16,11 @@
  * it is, each period by at most what keeps the target's acceleration
  * along the path within the profile's peak (move_feed_bounds). While the
  * tracker is OK with r at 1 the clock advances by dt exactly, as r dt is
- * dt: a move the tracker follows runs its profile bit for bit.
+ * dt: a move the tracker follows runs its profile bit for bit. A
+ * seven-phase move runs its profile at MOVE_WARP of its bounds of |s''|
+ * and |s'''| and changes r with r' continuous and r'' bounded in the room
+ * left (move_warp_next), the clock advancing by the integral of r, so its
+ * jerk stays within the bound while r changes too.
  *
  * Ceiling. Each stretch of not-OK periods (an episode) that begins while
  * the path moves sets the ceiling of r to MOVE_CEIL times the r it began
