@@ -275,28 +275,49 @@ float dh_motion_feed_goal_f32_(dh_move_f32 *mv, float dt, int ok, float up, floa
 static float move_warp_qf(const dh_profile_f32 *pr, float A, float J, float r)
 {
     const float a = pr->a, j = pr->j;
-    const float qa = (A - a * r * r) / pr->v, qj = (0.5f * (J + j) - j * r * r * r) / (3.0f * a * r);
-    return (r > 0.0f && qj < qa) ? qj : qa;
+    float q = (A - a * r * r) / pr->v;
+    if (r > 0.0f) {
+        const float qj = (0.5f * (J + j) - j * r * r * r) / (3.0f * a * r);
+        if (qj < q) q = qj;
+    }
+    return q;
+}
+
+/* The largest fall of r' this period, at least ud = U dt: on a fall
+ * (r' <= 0, r at most its value r0), r'' = -x keeps
+ * j r0^3 + 3 a r0 (|r'| + x dt) + V x <= J (move_warp_next) */
+static float move_warp_fall(const dh_move_f32 *mv, float dt, float ud)
+{
+    const dh_profile_f32 *pr = &mv->prof[0];
+    const float r = mv->feed, q = mv->fd, k = 3.0f * pr->a * r;
+    const float x = (mv->wj - pr->j * r * r * r + k * q) / (pr->v + k * dt);
+    return (q <= 0.0f && x * dt > ud) ? x * dt : ud;
 }
 
 /* r and r' after a period of the seven-phase path move mv towards the goal
- * g of r (docs/design.md, "Feed override"): r'' constant over the period,
- * |r''| <= U = (J - j) / (2 V), r' within [-Qf(r), Qf(1)] and r within
- * [0, 1] by the stopping distance at U; the clock's advance, the integral
- * of r over the period */
+ * g of r (docs/design.md, "Feed override of a seven-phase move"): r''
+ * constant over the period, |r''| <= U = (J - j) / (2 V), |r'| within Qf
+ * of the largest r it may reach, r within [0, 1] by the stopping distance
+ * at U; the clock's advance, the integral of r over the period */
 static float move_warp_next(dh_move_f32 *mv, float dt, float g)
 {
     const dh_profile_f32 *pr = &mv->prof[0];
     const float U = (mv->wj - pr->j) / (2.0f * pr->v), r0 = mv->feed, q0 = mv->fd;
     const float D = g - r0 - 0.5f * q0 * dt, ud = U * dt;
-    float q1, rh, lo, r1;
+    float q1, rh, lo, cap, r1;
     /* the largest change of r' towards g after which a stop at U stays
      * within g: x^2 / (2 U) + x dt <= |D|, x = |r'| at the period's end */
     q1 = 2.0f * ((D < 0.0f) ? -D : D) / (dh_sqrt_f32(dt * dt + 2.0f * ((D < 0.0f) ? -D : D) / U) + dt);
     if (D < 0.0f) q1 = -q1;
     if (q1 > q0 + ud) q1 = q0 + ud;
-    if (q1 < q0 - ud) q1 = q0 - ud;
-    if (q1 > move_warp_qf(pr, mv->wa, mv->wj, 1.0f)) q1 = move_warp_qf(pr, mv->wa, mv->wj, 1.0f);
+    if (q1 < q0 - move_warp_fall(mv, dt, ud)) q1 = q0 - move_warp_fall(mv, dt, ud);
+    if (q1 > 0.0f) {
+        /* a rise within Qf at the r where a stop at U would end (lowering
+         * q1 lowers that r), or the brake */
+        rh = r0 + 0.5f * (q0 + q1) * dt + q1 * q1 / (2.0f * U) + 0.5f * q1 * dt;
+        cap = move_warp_qf(pr, mv->wa, mv->wj, (rh < 1.0f) ? rh : 1.0f);
+        if (q1 > cap) q1 = (cap > q0 - ud) ? cap : q0 - ud;
+    }
     rh = r0 + ((q0 > 0.0f) ? q0 * dt : 0.0f);
     lo = -move_warp_qf(pr, mv->wa, mv->wj, (rh < 1.0f) ? rh : 1.0f);
     if (q1 < lo) q1 = lo;
