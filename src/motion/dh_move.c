@@ -17,7 +17,7 @@
  * along the path within the profile's peak (move_feed_bounds). While the
  * tracker is OK with r at 1 the clock advances by dt exactly, as r dt is
  * dt: a move the tracker follows runs its profile bit for bit. A
- * seven-phase move runs its profile at MOVE_WARP of its bounds of |s''|
+ * seven-phase move runs its profile at DH_MOTION_WARP of its bounds of |s''|
  * and |s'''| and changes r with r' continuous and r'' bounded in the room
  * left (move_warp_next), the clock advancing by the integral of r, so its
  * jerk stays within the bound while r changes too.
@@ -71,10 +71,6 @@ static float move_next_clock(const dh_move_f32 *mv, float dt)
     return (c < mv->dur) ? c : mv->dur;
 }
 
-/* the share of a seven-phase plan's bounds of |s''| and |s'''| its profile
- * of s runs at: the rest is the room a change of r takes */
-#define MOVE_WARP 0.875f
-
 /* the override at its start: r = its ceiling = 1 */
 static void move_feed_init(dh_move_f32 *mv)
 {
@@ -84,9 +80,9 @@ static void move_feed_init(dh_move_f32 *mv)
 }
 
 /* A seven-phase profile of s in mv->prof[0] (within the bounds wa of |s''|
- * and wj of |s'''|) planned again at MOVE_WARP of them, the bounds kept for
+ * and wj of |s'''|) planned again at DH_MOTION_WARP of them, the bounds kept for
  * the warp (move_warp_next); r' = 0. Nothing but r' for other profiles. */
-dh_status dh_motion_warp_plan_f32_(dh_move_f32 *mv)
+static dh_status move_warp_plan(dh_move_f32 *mv)
 {
     dh_profile_f32 *pr = &mv->prof[0];
     const float a = pr->a, j = pr->j;
@@ -95,7 +91,7 @@ dh_status dh_motion_warp_plan_f32_(dh_move_f32 *mv)
     mv->wa = 0.0f;
     mv->wj = 0.0f;
     if (pr->kind == (uint32_t)DH_PROFILE_SCURVE && pr->v > 0.0f) {
-        st = dh_profile_scurve_f32(pr, pr->d, pr->v, a * MOVE_WARP, j * MOVE_WARP);
+        st = dh_profile_scurve_f32(pr, pr->d, pr->v, a * DH_MOTION_WARP, j * DH_MOTION_WARP);
         if (st == DH_OK) {
             mv->wa = a;
             mv->wj = j;
@@ -160,7 +156,7 @@ dh_status dh_move_path_jerk_f32(dh_move_f32 *mv, const dh_path_f32 *p, const dh_
     st = dh_path_move_jerk_f32(&mv->prof[0], p, lim, jerk);
     if (st != DH_OK) return st;
     if (!dh_motion_path_ok_f32_(p)) return DH_ERR_ARG;
-    st = dh_motion_warp_plan_f32_(mv);
+    st = move_warp_plan(mv);
     if (st != DH_OK) return st;
     mv->path = *p;
     mv->n = 0u;

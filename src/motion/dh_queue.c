@@ -668,18 +668,25 @@ static DH_NOINLINE dh_status queue_start_path(dh_queue_f32 *qu, const dh_queue_i
     qu->as = it->prof.a;
     mv->kind = (uint32_t)DH_MOVE_NONE;
     mv->prof[0] = it->prof;
-    if (s0 > 0.0f && qu->vs > 0.0f && qu->as > 0.0f) {
-        /* the rest of the path within the first plan's peaks of s (and its jerk) */
-        if (it->jerk != 0u)
-            st = dh_profile_scurve_f32(&mv->prof[0], (s0 < 1.0f) ? 1.0f - s0 : 0.0f, qu->vs, qu->as, it->prof.j);
-        else
-            st = dh_profile_trap_f32(&mv->prof[0], (s0 < 1.0f) ? 1.0f - s0 : 0.0f, qu->vs, qu->as);
+    if (!(s0 > 0.0f && qu->vs > 0.0f && qu->as > 0.0f)) s0 = 0.0f;
+    mv->fd = 0.0f;
+    mv->wa = 0.0f;
+    mv->wj = 0.0f;
+    if (it->jerk != 0u && qu->vs > 0.0f) {
+        /* the path, or its rest, within the plan's peak of s' and the
+         * warp's share of its peaks of s'' and s''' (dh_move_path_jerk_f32) */
+        st = dh_profile_scurve_f32(&mv->prof[0], (s0 > 0.0f) ? ((s0 < 1.0f) ? 1.0f - s0 : 0.0f) : it->prof.d, qu->vs,
+                                   qu->as * DH_MOTION_WARP, it->prof.j * DH_MOTION_WARP);
+        if (st != DH_OK) return st;
+        mv->wa = qu->as;
+        mv->wj = it->prof.j;
+    } else if (s0 > 0.0f) {
+        /* the rest of the path within the first plan's peaks of s */
+        st = dh_profile_trap_f32(&mv->prof[0], (s0 < 1.0f) ? 1.0f - s0 : 0.0f, qu->vs, qu->as);
         if (st != DH_OK) return st;
     } else {
-        s0 = 0.0f;
+        /* the plan as appended */
     }
-    st = dh_motion_warp_plan_f32_(mv);
-    if (st != DH_OK) return st;
     qu->s0 = (s0 < 1.0f) ? s0 : 1.0f;
     mv->path = it->path;
     mv->n = 0u;

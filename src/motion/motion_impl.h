@@ -57,12 +57,11 @@ float dh_motion_root_f32_(float n, float m, int cube);
  * queue's blended lines (dh_queue.c) take it with their own bounds. */
 float dh_motion_feed_goal_f32_(dh_move_f32 *mv, float dt, int ok, float up, float dn);
 
-/* A seven-phase profile of s in mv->prof[0] planned again at a share of
- * its peaks |s''| and |s'''|, which mv->wa and mv->wj keep as the bounds of
- * the feed override's warp, r' = 0 (dh_move.c); other profiles: wa = wj =
- * r' = 0. The statuses of dh_profile_scurve_f32 (the profile untouched
- * on error). The queue's path moves (dh_queue.c) start with it. */
-dh_status dh_motion_warp_plan_f32_(dh_move_f32 *mv);
+/* The share of a seven-phase plan's peaks |s''| and |s'''| at which a
+ * jerk-limited path move runs its profile of s, the rest the room of its
+ * feed override (dh_move.c; the queue, dh_queue.c, plans its path moves
+ * so, keeping the peaks in the move's wa and wj) */
+#define DH_MOTION_WARP 0.875f
 
 /* The largest rise of r within the acceleration A of s: k = s' / dt > 0,
  * p >= 0 the largest s'' near the clock (dh_move.c) */
