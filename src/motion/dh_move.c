@@ -82,7 +82,7 @@ static void move_feed_init(dh_move_f32 *mv)
 /* A seven-phase profile of s in mv->prof[0] (within the bounds wa of |s''|
  * and wj of |s'''|) planned again at DH_MOTION_WARP of them, the bounds kept for
  * the warp (move_warp_next); r' = 0. Nothing but r' for other profiles. */
-static dh_status move_warp_plan(dh_move_f32 *mv)
+static DH_NOINLINE dh_status move_warp_plan(dh_move_f32 *mv)
 {
     dh_profile_f32 *pr = &mv->prof[0];
     const float a = pr->a, j = pr->j;
