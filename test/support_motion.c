@@ -298,3 +298,15 @@ int dhm_fd_push(dhm_fd *f, const dh_mat4_f32 *T, const dh_cart_limits_f32 *lim, 
     dhm_check_acc((const float (*)[7])f->lp, f->w / f->wd, (double)f->w * f->dt, lim, ulp, call);
     return 1;
 }
+
+void dhm_draw_limits(dh_cart_limits_f32 *lim, dh_cart_jerk_f32 *jk)
+{
+    lim->vmax = (float)dht_rand_uniform(0.05, 0.2);
+    lim->amax = (float)dht_rand_uniform(0.3, 2.0);
+    lim->wmax = (float)dht_rand_uniform(15.0, 60.0);
+    lim->wdmax = (float)dht_rand_uniform(60.0, 600.0);
+    if (jk != NULL) {
+        jk->jmax = (float)dht_rand_uniform(1.0, 20.0);
+        jk->wjmax = (float)dht_rand_uniform(300.0, 6000.0);
+    }
+}

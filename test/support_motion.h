@@ -20,6 +20,10 @@
 #define DHM_ANG_NOISE 1e-4 /* degrees: rounding of a sampled rotation */
 #define DHM_RAD2DEG 57.29577951308232
 
+/* The seeded queue tests' Cartesian limits (metres, degrees), drawn in
+ * this order: vmax, amax, wmax, wdmax, then with jk jmax and wjmax. */
+void dhm_draw_limits(dh_cart_limits_f32 *lim, dh_cart_jerk_f32 *jk);
+
 double dhm_dist3(const double a[3], const double b[3]);
 /* distance of x from the segment a b */
 double dhm_seg_dist(const float a[3], const float b[3], const double x[3]);

@@ -189,10 +189,7 @@ static void blend_queue(dhm_rig *g, const double *q_nom, long *overlap_periods)
         int k;
         for (k = 0; k < 3; k++) S = fmax(S, fabs((double)cp[i][k]));
     }
-    lim.vmax = (float)dht_rand_uniform(0.05, 0.2);
-    lim.amax = (float)dht_rand_uniform(0.3, 2.0);
-    lim.wmax = (float)dht_rand_uniform(15.0, 60.0);
-    lim.wdmax = (float)dht_rand_uniform(60.0, 600.0);
+    dhm_draw_limits(&lim, NULL);
     for (i = 0; i < g->r.n; i++) q0[i] = qc[0][i];
     DHT_EQ_INT(dh_track_init_f32(&g->t, &g->r, g->closed ? &g->m : NULL, q0, DT), DH_OK);
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);

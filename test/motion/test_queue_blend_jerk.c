@@ -162,12 +162,7 @@ static void blend_jerk_queue(dhm_rig *g, const double *q_nom, long ov[2])
     const float (*qcc)[DH_MAX_JOINTS] = (const float (*)[DH_MAX_JOINTS])qc;
     for (i = 0; i < g->r.n; i++) qa[i] = q_nom[i] + dht_rand_uniform(-5.0, 5.0);
     draw_lines(g, qa, n, 8.0, qc, &S);
-    lim.vmax = (float)dht_rand_uniform(0.05, 0.2);
-    lim.amax = (float)dht_rand_uniform(0.3, 2.0);
-    lim.wmax = (float)dht_rand_uniform(15.0, 60.0);
-    lim.wdmax = (float)dht_rand_uniform(60.0, 600.0);
-    jk.jmax = (float)dht_rand_uniform(1.0, 20.0);
-    jk.wjmax = (float)dht_rand_uniform(300.0, 6000.0);
+    dhm_draw_limits(&lim, &jk);
     for (i = 0; i < g->r.n; i++) q0[i] = qc[0][i];
     DHT_EQ_INT(dh_track_init_f32(&g->t, &g->r, g->closed ? &g->m : NULL, q0, DT), DH_OK);
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
