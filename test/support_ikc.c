@@ -229,3 +229,118 @@ int dhk_first_order_match_q(const dhs_robot *d, const double *q, const dh_robot 
     }
     return -1;
 }
+
+/* ---- calibrated robots (test_ikc_calib.c, test_ikc_calib_q.c) ------------- */
+
+/* d widened to +-360 deg on every joint (the limits drop no branch) */
+void dhk_open_limits(dhs_robot *d)
+{
+    unsigned i;
+    for (i = 0; i < d->n; i++) {
+        d->j[i].qmin = -360.0;
+        d->j[i].qmax = 360.0;
+    }
+}
+
+/* twist snapped to the nearest multiple of 90 deg */
+static double ikcs_snap90(double a)
+{
+    return 90.0 * floor(a / 90.0 + 0.5);
+}
+
+/* A rigid frame: Rz Rx Rz of random angles, translation within +-t (m),
+ * its entries rounded to float (the description and the float robot hold
+ * the same frame). */
+void dhk_draw_frame(dhr_mat4 *F, double t)
+{
+    dhr_mat4 A, B;
+    int c, k;
+    dhr_rotz(dht_rand_uniform(-180, 180), &A);
+    dhr_rotx(dht_rand_uniform(-180, 180), &B);
+    dhr_mul(&A, &B, F);
+    dhr_rotz(dht_rand_uniform(-180, 180), &A);
+    dhr_mul(F, &A, F);
+    for (k = 0; k < 3; k++) F->m[3][k] = dht_rand_uniform(-t, t);
+    for (c = 0; c < 4; c++)
+        for (k = 0; k < 4; k++) F->m[c][k] = (double)(float)F->m[c][k];
+}
+
+/* A UR5 with every a and d off by up to dl (m) and every twist and theta
+ * offset by up to da (deg) into cal, with a random base and tool frame
+ * when frames is set; its idealised twin (twists snapped, a5 = 0) into
+ * ideal. */
+void dhk_draw_ur5(const dhs_robot *src, double dl, double da, int frames, dhs_robot *cal, dhs_robot *ideal)
+{
+    const double unit = fabs(src->j[1].a) > 10.0 ? 1000.0 : 1.0;
+    unsigned i;
+    *cal = *src;
+    dhk_open_limits(cal);
+    if (frames) {
+        dhk_draw_frame(&cal->base, 0.5 * unit);
+        dhk_draw_frame(&cal->tool, 0.15 * unit);
+    }
+    for (i = 0; i < 6u; i++) {
+        cal->j[i].a += dht_rand_uniform(-dl, dl);
+        cal->j[i].d += dht_rand_uniform(-dl, dl);
+        cal->j[i].alpha_deg += dht_rand_uniform(-da, da);
+        cal->j[i].theta_deg += dht_rand_uniform(-da, da);
+    }
+    *ideal = *cal;
+    for (i = 0; i < 6u; i++) ideal->j[i].alpha_deg = ikcs_snap90(cal->j[i].alpha_deg);
+    ideal->j[4].a = 0.0;
+}
+
+/* Normalised distances from the singularities, the smallest returned:
+ * wrist s5^2; shoulder (u / L)^2 with u the joint 5 point's coordinate
+ * along x1 (dhk_sing_parts) and L the sum of |a| and |d|; elbow: the joint
+ * 5 point's distance from the boundary of the elbow's annulus (stretched or
+ * folded) over L, divided by elbow_scale. */
+double dhk_cal_sing(const dhs_robot *d, const double *q, double elbow_scale)
+{
+    double part[3], best, l1, l2, th, reach = 0.0, v;
+    unsigned i;
+    for (i = 0; i < d->n; i++) reach += fabs(d->j[i].a) + fabs(d->j[i].d);
+    l1 = fabs(d->j[1].a);
+    l2 = fabs(d->j[2].a);
+    th = (q[2] + d->j[2].theta_deg) * DHK_D2R;
+    (void)dhk_sing_parts(d, q, part);
+    if (d->j[1].a * d->j[2].a < 0.0) th += DHR_PI;
+    v = sqrt(l1 * l1 + l2 * l2 + 2.0 * l1 * l2 * cos(th));
+    part[1] = ((l1 + l2 - v < v - fabs(l1 - l2)) ? l1 + l2 - v : v - fabs(l1 - l2)) / reach;
+    best = part[0] * part[0];
+    if (part[2] * part[2] < best) best = part[2] * part[2];
+    if (part[1] / elbow_scale < best) best = part[1] / elbow_scale;
+    return best;
+}
+
+/* The wrist flip of the idealised robot's solution q (the same joint 1, 5
+ * point and orientation; joint 4 turned by 180 deg, joint 5 negated): its
+ * elbow's planar point (from axis 2 to axis 4 across axis 2) is 2 g - v,
+ * with v that of q and g the joint 5 point's, both across axis 2 from
+ * frame 1's origin. Returns that point's signed distance inside the
+ * elbow's annulus over L (negative: the flip does not exist) divided by
+ * band / |s5|: in (-1, 0) the flip may exist on the calibrated robot. */
+double dhk_flip_margin(const dhs_robot *d, const double *q, double band)
+{
+    dhr_mat4 F[DH_IKC_JOINTS];
+    double v[3], g[3], vz = 0.0, gz = 0.0, n = 0.0, reach = 0.0, l1, l2, e, s5;
+    unsigned i;
+    dhs_fk_desc(d, q, F, NULL);
+    for (i = 0; i < d->n; i++) reach += fabs(d->j[i].a) + fabs(d->j[i].d);
+    for (i = 0; i < 3u; i++) {
+        v[i] = F[2].m[3][i] - F[0].m[3][i];
+        g[i] = F[4].m[3][i] - F[0].m[3][i];
+        vz += v[i] * F[0].m[2][i];
+        gz += g[i] * F[0].m[2][i];
+    }
+    for (i = 0; i < 3u; i++) {
+        const double c = 2.0 * (g[i] - gz * F[0].m[2][i]) - (v[i] - vz * F[0].m[2][i]);
+        n += c * c;
+    }
+    n = sqrt(n);
+    l1 = fabs(d->j[1].a);
+    l2 = fabs(d->j[2].a);
+    e = ((l1 + l2 - n < n - fabs(l1 - l2)) ? l1 + l2 - n : n - fabs(l1 - l2)) / reach;
+    s5 = fabs(sin((q[4] + d->j[4].theta_deg) * DHK_D2R));
+    return e * s5 / band;
+}

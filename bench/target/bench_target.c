@@ -705,6 +705,7 @@ static union {
         dh_ikc_model_q mq;
         dh_frame_q Tq[BT_NIKC];
         dh_ikc_sol_q solq[DH_IKC_MAX_SOL];
+        dh_robot rq;   /* bt_ikc_cal_q's robot */
 #if BT_IKC_FLOAT
         dh_ikc_model_f32 mf;
         dh_mat4_f32 Tf[BT_NIKC];
@@ -918,14 +919,13 @@ static BT_NOINLINE void bt_ikc(void)
 
 /* ---- closed-form inverse kinematics of a calibrated robot --------------------- */
 
-#if BT_IKC_FLOAT
 /* The UR5 (fam 0) or the Puma 560 (fam 1) exact (cal 0), and calibrated
  * (cal 1; within the calibration tolerance of ikc.h; the kind of
  * deviations a calibrated table holds): UR5 a2 +1.5 mm, d4 -1 mm, a5 1 mm,
  * twists 2 and 4 +0.4 and +0.3 deg, joint 3's offset +0.3 deg; Puma 560 a
  * wrist offset a4 0.4 mm, a5 -0.3 mm, d5 0.5 mm and the twists off by up to
- * 0.2 deg. */
-static uint32_t bt_cal_robot(dh_robot *r, uint32_t fam, int cal)
+ * 0.2 deg. Lengths times unit (1: m, 1000: mm). */
+static uint32_t bt_cal_robot(dh_robot *r, uint32_t fam, int cal, float unit)
 {
     static const float dev[2][6][4] = {
         { { 0.0f, 0.0f, 0.0f, 0.0f }, { 0.0015f, 0.0f, 0.4f, 0.0f }, { 0.0f, 0.0f, 0.0f, 0.3f },
@@ -939,13 +939,61 @@ static uint32_t bt_cal_robot(dh_robot *r, uint32_t fam, int cal)
     st = (uint32_t)dh_robot_init(r, DH_CONV_STANDARD);
     for (j = 0; j < 6u; j++) {
         const float *dv = dev[fam][j];
-        st |= (uint32_t)dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, k * dv[3], tab[j][1] + k * dv[1],
-                                               tab[j][0] + k * dv[0], tab[j][2] + k * dv[2]);
+        st |= (uint32_t)dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, k * dv[3], unit * (tab[j][1] + k * dv[1]),
+                                               unit * (tab[j][0] + k * dv[0]), tab[j][2] + k * dv[2]);
         st |= (uint32_t)dh_robot_set_limits_f32(r, j, tab[j][3], tab[j][4]);
     }
     return st;
 }
 
+/* dh_ikc_q on the UR5 in mm, exact and calibrated (bt_cal_robot), the
+ * targets dh_fk_q of the same random configurations on each robot
+ * (untimed), as bt_ikc. */
+static BT_NOINLINE void bt_ikc_cal_q(void)
+{
+    static const char *const name[2] = { "UR5", "UR5 calibrated" };
+    dh_ikc_model_q *const mq = &bt_mem.c.mq;
+    dh_frame_q *const Tq = bt_mem.c.Tq;
+    dh_ikc_sol_q *const solq = bt_mem.c.solq;
+    dh_robot *const r = &bt_mem.c.rq;
+    uint32_t k, j, nsol, total, st, cal;
+    uint64_t t0, t1, tl;
+    t0 = bt_now();
+    for (k = 0; k < BT_NIKC; k++) {
+        bt_sink = k;
+    }
+    t1 = bt_now();
+    tl = t1 - t0;
+    for (cal = 0; cal < 2u; cal++) {
+        const uint32_t saved = bt_rng;
+        st = bt_cal_robot(r, 0u, (int)cal, 1000.0f);
+        bt_rng = 0x27D4EB2Fu;
+        for (k = 0; k < BT_NIKC; k++) {
+            int32_t qq[6];
+            for (j = 0; j < 6u; j++) qq[j] = bt_to_q16(bt_uniform(bt_ur5_tab[j][3], bt_ur5_tab[j][4]));
+            st |= (uint32_t)dh_fk_q(r, qq, &Tq[k]);
+        }
+        bt_rng = saved;
+        st |= (uint32_t)dh_ikc_analyse_q(r, mq);
+        if (st != 0u || mq->calibrated != cal) {
+            printf("BT error|calibrated fixed closed-form IK set-up returned status %lu\n", (unsigned long)st);
+            bt_status |= 1u;
+            return;
+        }
+        total = 0u;
+        t0 = bt_now();
+        for (k = 0; k < BT_NIKC; k++) {
+            st |= (uint32_t)dh_ikc_q(mq, &Tq[k], NULL, 0u, solq, &nsol);
+            total += nsol;
+        }
+        t1 = bt_now();
+        printf("BT ikc|dh_ikc_q (%s, mm, all solutions)|%lu|%llu|%llu|%lu|%lu\n", name[cal], (unsigned long)BT_NIKC,
+               (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total, (unsigned long)st);
+        bt_status |= st;
+    }
+}
+
+#if BT_IKC_FLOAT
 /* 1 when the Puma 560 configuration q (deg) is at least 1e-2 from the
  * singularities as test/ikc/test_ikc_calib_wrist.c draws its
  * configurations: s5^2, (u / L)^2 (u = a2 c2 + a3 c23 - d4 s23, the wrist
@@ -986,7 +1034,7 @@ static BT_NOINLINE void bt_ikc_cal(void)
     for (cal = 0; cal < 4u; cal++) {
         const uint32_t saved = bt_rng;
         const float(*tab)[5] = (cal < 2u) ? bt_ur5_tab : bt_puma_tab;
-        st = bt_cal_robot(&r, cal >> 1, (int)(cal & 1u));
+        st = bt_cal_robot(&r, cal >> 1, (int)(cal & 1u), 1.0f);
         bt_rng = 0x27D4EB2Fu;
         for (k = 0; k < BT_NIKC; k++) {
             float q[6];
@@ -1917,6 +1965,7 @@ int main(void)
     bt_ik();
     bt_ik_q();
     bt_ikc();
+    bt_ikc_cal_q();
 #if BT_IKC_FLOAT
     bt_ikc_cal();
     bt_opw();

@@ -204,6 +204,21 @@ static inline dh_status dh_ikc_raw_q_(const dh_ikc_model_q *m, const int32_t *q_
     return dh_ikc_wrist_q_(m, q_ref, sol, count);
 }
 dh_status dh_ikc_finish_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *n_sol);
+/* Calibrated robots, fixed (dh_ikc_refine_q.c): dh_ikc_calibrate_q_ is the
+ * analysis of a six-revolute chain that no family fits exactly (m->a..ca
+ * exact on entry): 1 with m->kind DH_IKC_PARALLEL_234, m->k, the idealised
+ * chain in a..ca, the exact one in xa..xca, xw5, xframes and
+ * m->calibrated = 1 when it is within the calibration tolerance of that
+ * family; 0 with m's chain as on entry, kind DH_IKC_NONE, otherwise.
+ * dh_ikc_refine_q_: the raw solutions sol[0..raw-1] (canonical values of
+ * the idealised chain) refined in place on the exact chain for the target
+ * T (the user's frame), the converged ones flagged DH_IKC_REFINED, kept
+ * distinct and packed to the front; returns their count. Called by
+ * dh_ikc_q after the solver has returned. dh_ikc_args_q_ and
+ * dh_ikc_args_rigid_q_ refuse a calibrated model (DH_ERR_UNAVAILABLE), so
+ * that a caller of the three calls never takes unrefined solutions. */
+int dh_ikc_calibrate_q_(dh_ikc_model_q *m);
+uint32_t dh_ikc_refine_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_sol_q *sol, uint32_t raw);
 
 /* Shared fixed helpers (defined in dh_ikc_common_q.c). */
 #define DH_IKC_Q16_180 ((int32_t)11796480)
@@ -213,6 +228,10 @@ dh_status dh_ikc_finish_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc
 int32_t dh_ikc_atan2_q_(int64_t y, int64_t x);
 /* acc + c v, |c| <= 2^30; factors 0 and +-2^30 cost no multiplication. */
 int64_t dh_ikc_mla_q_(int64_t acc, int32_t c, int32_t v);
+/* 1 when F is the identity frame, word by word (the same answer as a
+ * memcmp with the identity frame: no padding; a fraction of its cost on
+ * the cores whose memcmp goes byte by byte). */
+int dh_ikc_is_identity_q_(const dh_frame_q *F);
 /* The right shift that brings a non-negative int64 below 2^31. */
 unsigned dh_ikc_fit31_q_(int64_t v);
 /* x in (-540, 540] deg (Q16.16) -> (-180, 180]. */

@@ -1341,6 +1341,34 @@ def group_ikc_calibrated(rng, tmp, rdir):
                   (name, q, best, out))
             nsol += len(rows)
         print('ik --all calibrated %s: %d solutions printed' % (name, nsol))
+    # the UR5 in mm on the fixed path: the same summary, the fixed bounds
+    table = '\n'.join(re.sub(r'\b([ad])=(-?[0-9.]+)', lambda mo: '%s=%.4f' % (mo.group(1), 1000.0 * float(mo.group(2))),
+                              line) for line in UR5_CALIBRATED.splitlines()) + '\n'
+    path = write(tmp, 'ur5_calibrated_mm.dh', table)
+    rob = read_robot(table)
+    nsol = 0
+    for it in range(10):
+        q = calibrated_q(rng, 'ur5')
+        T = ref_fk(rob, q)
+        rc, out, err = run(['ik', '--all', '--fixed', path, to_expr(T)])
+        lines = err.splitlines()
+        rows = nums(out)
+        check(rc == 0 and len(lines) == 1 and re.match(
+            r'ik --all --fixed: %d closed-form solutions? within the limits \(0 outside\), refined by Newton steps '
+            r'on the calibrated chain' % len(rows), lines[0]) is not None,
+            'ik --all --fixed calibrated ur5: rc %d err %r' % (rc, err))
+        best = 1e30
+        for row in rows:
+            T2 = ref_fk(rob, row)
+            dp = max(abs(T2[i][3] - T[i][3]) for i in range(3))
+            dr = max(abs(T2[i][c] - T[i][c]) for i in range(3) for c in range(3))
+            check(dp <= 5e-3 and dr <= 5e-6, 'ik --all --fixed calibrated ur5: solution %r misses the target by '
+                  '%.3g mm, %.3g' % (row, dp, dr))
+            best = min(best, max(ang_diff(a, b) for a, b in zip(row, q)))
+        check(best <= 1e-2, 'ik --all --fixed calibrated ur5: generating q %r not printed (nearest %.3g)\n%s' %
+              (q, best, out))
+        nsol += len(rows)
+    print('ik --all --fixed calibrated ur5 (mm): %d solutions printed' % nsol)
 
 
 def group_ikc_fixed(rng, tmp, rdir):
