@@ -1087,7 +1087,6 @@ uint32_t bt_opw_solutions(float q_dh_deg[8][6])
 }
 #endif
 
-#if BT_IKC_FLOAT
 /* KUKA KR6 R700 sixx, standard DH, metres: the robot of opw_kinematics'
  * example makeKukaKR6_R700_sixx (include/opw_kinematics/
  * opw_parameters_examples.h: a1 0.025, a2 -0.035, b 0, c1 0.4, c2 0.315,
@@ -1100,7 +1099,9 @@ static const float bt_kr6_tab[6][4] = {
     { 0.025f, 0.4f, -90.0f, 0.0f }, { 0.315f, 0.0f, 0.0f, 0.0f },  { -0.035f, 0.0f, 90.0f, 90.0f },
     { 0.0f, 0.365f, -90.0f, 0.0f }, { 0.0f, 0.0f, 90.0f, 0.0f },   { 0.0f, 0.08f, 0.0f, 0.0f }
 };
+#if BT_IKC_FLOAT
 static const float bt_kr6_qref[6] = { 0.0f, -90.0f, 90.0f, 0.0f, 0.0f, 0.0f };
+#endif
 static const int32_t bt_kr6_qref_q[6] = { 0, -90 * 65536, 90 * 65536, 0, 0, 0 };
 
 static uint32_t bt_kr6(dh_robot *r, float scale)
@@ -1115,6 +1116,55 @@ static uint32_t bt_kr6(dh_robot *r, float scale)
     return st;
 }
 
+#if !BT_IKC_FLOAT
+/* dh_ikc_q (limits, q_ref) on the first BT_NIKC of bt_opw's KR6 targets (the
+ * same draws), for the cores without an FPU, where bt_opw does not run;
+ * timed as bt_opw's dh_ikc_q row. */
+static BT_NOINLINE void bt_kr6_q(void)
+{
+    dh_robot *const r = &bt_mem.c.rq;
+    dh_ikc_model_q *const mq = &bt_mem.c.mq;
+    dh_frame_q *const Tq = bt_mem.c.Tq;
+    uint32_t k, j, nsol, total = 0u, st;
+    uint64_t t0, t1, tl;
+    const uint32_t saved = bt_rng;
+    st = bt_kr6(r, 1000.0f);
+    st |= (uint32_t)dh_ikc_analyse_q(r, mq);
+    bt_rng = 0x68E31DA4u;
+    for (k = 0; k < BT_NIKC; k++) {
+        int32_t qq[6];
+        for (j = 0; j < 6u; j++) {
+            qq[j] = bt_to_q16(bt_uniform(-170.0f, 170.0f));
+        }
+        st |= (uint32_t)dh_fk_q(r, qq, &Tq[k]);
+    }
+    bt_rng = saved;
+    if (st != 0u) {
+        printf("BT error|KR6 R700 set-up returned status %lu\n", (unsigned long)st);
+        bt_status |= st;
+        return;
+    }
+    t0 = bt_now();
+    for (k = 0; k < BT_NIKC; k++) {
+        bt_sink = k;
+    }
+    t1 = bt_now();
+    tl = t1 - t0;
+    t0 = bt_now();
+    for (k = 0; k < BT_NIKC; k++) {
+        st |= (uint32_t)dh_ikc_q(mq, &Tq[k], bt_kr6_qref_q, 0u, bt_mem.c.solq, &nsol);
+        total += nsol;
+    }
+    t1 = bt_now();
+    printf("BT opw|dh_ikc_q (KR6 R700, mm, solutions within the limits, q_ref)|%lu|%llu|%llu|%lu|%lu\n",
+           (unsigned long)BT_NIKC, (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total,
+           (unsigned long)st);
+    printf("BT opwpeer|absent\n");
+    bt_status |= st;
+}
+#endif
+
+#if BT_IKC_FLOAT
 static float bt_wrap180(float x)
 {
     x = fmodf(x, 360.0f);
@@ -1969,6 +2019,8 @@ int main(void)
 #if BT_IKC_FLOAT
     bt_ikc_cal();
     bt_opw();
+#else
+    bt_kr6_q();
 #endif
     if (bt_inputs_dls() != 0u) {
         printf("BT error|damped least-squares inputs returned a status\n");

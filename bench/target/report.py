@@ -479,7 +479,8 @@ def main():
       "Check (untimed): opw's finite solutions, mapped to the DH table's joint values "
       "(q_dh = (-1, 1, 1, -1, 1, -1) * q_opw, degrees), wrapped to (-180, 180] and kept within "
       "the limits, against dhmath's float ones: the count per target, and each matched by one "
-      "within 1e-3 deg on every joint. opw_kinematics: %s."
+      "within 1e-3 deg on every joint. On the Cortex-M0 (no FPU, 16 KiB of RAM): `dh_ikc_q` alone "
+      "on the first 4 of these targets (`bt_kr6_q`). opw_kinematics: %s."
       % (16, meta.get("opw", "not given")))
     w("")
     opw_rows = [(c, o) for c, o in cols if runs["%s-%s" % (c, o)].opw_peer is not None]
