@@ -54,7 +54,26 @@
 #define REFQ_DONE (DH_IKC_CAL_STEPS + 1u)
 
 /* m->k layout of DH_IKC_PARALLEL_234 (dh_ikc_par234_q.c), the entries read here */
-enum { RQ_TAU = 0, RQ_S2 = 1, RQ_S23 = 2, RQ_SB = 3, RQ_W5 = 4 };
+enum { RQ_TAU = 0, RQ_S2 = 1, RQ_S23 = 2, RQ_SB = 3, RQ_W5 = 4, RQ_H = 5, RQ_E5 = 6 };
+
+/* Private flag bits of the slots while dh_ikc_refine_q_ runs, cleared
+ * before it returns: a slot waiting for a start from the virtual target
+ * (refq_plan), one waiting for its refinement (a raw branch, or one
+ * started), and a free one. */
+#define REFQ_PEND 0x100u
+#define REFQ_NEW 0x200u
+#define REFQ_FREE 0x400u
+#define REFQ_PRIVATE 0x700u
+#define REFQ_BRANCH (DH_IKC_SHOULDER_ALT | DH_IKC_ELBOW_ALT | DH_IKC_WRIST_ALT)
+#define REFQ_SINGS (DH_IKC_SING_WRIST | DH_IKC_SING_SHOULDER | DH_IKC_SING_ELBOW)
+/* refq_plan: no restart */
+#define REFQ_NONE 0xFFu
+/* the wrist singular for a start: |n13|, |n23| within 2^11 LSB (as the solver) */
+#define REFQ_SING_W ((uint32_t)1 << 11)
+#define REFQ_POS_LIM ((uint64_t)1 << 30)
+/* refq_offset, refq_twist: the idealised chain instead of the exact one */
+#define REFQ_IDEAL 8u
+
 
 /* ---- analysis ------------------------------------------------------------------ */
 
@@ -194,13 +213,6 @@ DH_INLINE int32_t refq_sat(int64_t v)
     return (int32_t)v;
 }
 
-/* u <- the identity frame (the exact chain's forward kinematics starts) */
-static DH_NOINLINE void refq_fk_init(refq_work *w)
-{
-    uint32_t r;
-    for (r = 0; r < 12u; r++) w->u[r] = ((r & 3u) == 0u && r < 9u) ? DH_Q_ONE30 : 0;
-}
-
 /* Joint i of the exact chain (cos, sin of its canonical value in t[0],
  * t[1]) applied to u in three helpers, each a pass over the three rows:
  * refq_turn the turn about z, refq_offset the offsets a_i, d_i (1 on
@@ -221,7 +233,9 @@ static DH_NOINLINE void refq_turn(refq_work *w)
 
 static DH_NOINLINE int refq_offset(refq_work *w, uint32_t i)
 {
-    const int32_t a = w->m->xa[i], d = w->m->xd[i];
+    const uint32_t j = i & 7u;
+    const int32_t a = ((i & REFQ_IDEAL) != 0u) ? w->m->a[j] : w->m->xa[j];
+    const int32_t d = ((i & REFQ_IDEAL) != 0u) ? w->m->d[j] : w->m->xd[j];
     int32_t *u = w->u;
     uint32_t r;
     int ovf = 0;
@@ -231,7 +245,10 @@ static DH_NOINLINE int refq_offset(refq_work *w, uint32_t i)
 
 static DH_NOINLINE int refq_twist(refq_work *w, uint32_t i)
 {
-    const int32_t sa = w->m->xsa[i], ca = w->m->xca[i];
+    const uint32_t j = i & 7u;
+    const int ideal = (i & REFQ_IDEAL) != 0u;
+    const int32_t sa = ideal ? w->m->sa[j] : w->m->xsa[j], ca = ideal ? w->m->ca[j] : w->m->xca[j];
+    const int32_t a6 = ideal ? w->m->a[5] : w->m->xa[5], d6 = ideal ? w->m->d[5] : w->m->xd[5];
     int32_t *u = w->u;
     uint32_t r;
     int ovf = 0;
@@ -239,10 +256,27 @@ static DH_NOINLINE int refq_twist(refq_work *w, uint32_t i)
         const int32_t y = u[3u + r], z = u[6u + r];
         u[3u + r] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(ca, y), sa, z));
         u[6u + r] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(ca, z), -sa, y));
-        if (i == 5u) {
+        if (j == 5u) {
             const int32_t z5 = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(sa, u[3u + r]), ca, u[6u + r]));
-            u[9u + r] = dh_q_pos_rnd30(u[9u + r], -dh_q_mla64(dh_q_mul64(w->m->xa[5], u[r]), w->m->xd[5], z5), &ovf);
+            u[9u + r] = dh_q_pos_rnd30(u[9u + r], -dh_q_mla64(dh_q_mul64(a6, u[r]), d6, z5), &ovf);
         }
+    }
+    return ovf;
+}
+
+/* u <- the forward kinematics of the canonical values q on the exact
+ * chain (id 0) or the idealised one (id REFQ_IDEAL), the point moved back
+ * to the joint 5 point, without base and tool frames; 1 on overflow */
+static DH_NOINLINE int refq_fk(refq_work *w, const int32_t *q, uint32_t id)
+{
+    uint32_t i;
+    int ovf = 0;
+    for (i = 0; i < 12u; i++) w->u[i] = ((i & 3u) == 0u && i < 9u) ? DH_Q_ONE30 : 0;
+    for (i = 0; i < 6u; i++) {
+        dh_sincos_q(q[i], &w->t[1], &w->t[0]);
+        refq_turn(w);
+        ovf |= refq_offset(w, i | id);
+        ovf |= refq_twist(w, i | id);
     }
     return ovf;
 }
@@ -483,12 +517,14 @@ static DH_NOINLINE void refq_apply(refq_work *w, int32_t *q)
     }
 }
 
-/* The refined solutions, distinct, packed to the front; their count. */
-static DH_NOINLINE uint32_t refq_pack(dh_ikc_sol_q *sol, uint32_t raw)
+/* The refined solutions, distinct, packed to the front, their private
+ * flags cleared; their count. */
+static DH_NOINLINE uint32_t refq_pack(dh_ikc_sol_q *sol)
 {
     uint32_t s, k, i, n = 0;
-    for (s = 0; s < raw; s++) {
-        int keep = (sol[s].flags & DH_IKC_REFINED) != 0u;
+    for (s = 0; s < DH_IKC_MAX_SOL; s++) {
+        int keep = (sol[s].flags & (DH_IKC_REFINED | REFQ_FREE)) == DH_IKC_REFINED;
+        sol[s].flags &= ~(uint32_t)REFQ_PRIVATE;
         for (k = 0; keep && k < n; k++) {
             for (i = 0; i < 6u; i++) {
                 const int32_t d = dh_ikc_wrap180_q_(sol[k].q[i] - sol[s].q[i]);
@@ -512,35 +548,239 @@ DH_INLINE int32_t refq_phi(const dh_ikc_model_q *m, const int32_t *q, int with4)
     return v;
 }
 
-/* Each raw branch refined in its slot: at most DH_IKC_CAL_STEPS steps,
- * each one exact forward kinematics; the helpers run in sequence from
- * here, and so do the dh_sincos_q calls that fill w.t for them. */
+/* ---- restart from the virtual target ------------------------------------------ */
+
+/* Slots 0..raw-1 flagged REFQ_NEW (the raw branches), the others
+ * REFQ_FREE. */
+static DH_NOINLINE void refq_marks(dh_ikc_sol_q *sol, uint32_t raw)
+{
+    uint32_t s;
+    for (s = 0; s < DH_IKC_MAX_SOL; s++) sol[s].flags = (s < raw) ? (sol[s].flags | REFQ_NEW) : REFQ_FREE;
+}
+
+/* The branches of shoulder sh (0 or DH_IKC_SHOULDER_ALT) that did not
+ * converge, or that the idealised chain did not have, marked REFQ_PEND
+ * (those that did not converge in their slots, the missing ones in free
+ * slots while there are any). Returns src + 16 st: src the slot whose
+ * values start them (a converged branch of the shoulder when there is
+ * one), st a pending slot other than src (its q takes the exact errors
+ * at src); REFQ_NONE when there is no restart (every branch converged,
+ * a singular branch, no branch of the shoulder, no such st). */
+static DH_NOINLINE uint32_t refq_plan(dh_ikc_sol_q *sol, uint32_t sh)
+{
+    uint32_t s, c, src = DH_IKC_MAX_SOL, done = 0u, st = DH_IKC_MAX_SOL;
+    for (s = 0; s < DH_IKC_MAX_SOL; s++) {
+        const uint32_t f = sol[s].flags;
+        if ((f & REFQ_FREE) != 0u || (f & DH_IKC_SHOULDER_ALT) != sh) continue;
+        if ((f & REFQ_SINGS) != 0u) return REFQ_NONE;
+        if ((f & DH_IKC_REFINED) != 0u) {
+            done |= 1u << ((f & (DH_IKC_ELBOW_ALT | DH_IKC_WRIST_ALT)) >> 1);
+            src = s;
+        } else if (src == DH_IKC_MAX_SOL || (sol[src].flags & DH_IKC_REFINED) == 0u) {
+            src = s;
+        } else {
+            /* an unconverged branch after a converged one: the start stays */
+        }
+    }
+    if (src == DH_IKC_MAX_SOL) return REFQ_NONE;
+    for (c = 0; c < 4u; c++) {
+        const uint32_t f = sh | (c << 1);
+        uint32_t slot = DH_IKC_MAX_SOL;
+        if (((done >> c) & 1u) != 0u) continue;
+        /* its own unconverged slot, else the first free one */
+        for (s = DH_IKC_MAX_SOL; s > 0u; s--)
+            if ((sol[s - 1u].flags & REFQ_FREE) != 0u) slot = s - 1u;
+        for (s = 0; s < DH_IKC_MAX_SOL; s++)
+            if ((sol[s].flags & (REFQ_FREE | REFQ_PEND | REFQ_BRANCH | DH_IKC_REFINED)) == f) slot = s;
+        if (slot == DH_IKC_MAX_SOL) continue;
+        sol[slot].flags = f | REFQ_PEND;
+        if (slot != src && st == DH_IKC_MAX_SOL) st = slot;
+    }
+    return (st == DH_IKC_MAX_SOL) ? REFQ_NONE : src + 16u * st;
+}
+
+/* The first-order virtual target of the canonical values whose exact
+ * errors (refq_rot, refq_perr, refq_unbase: the joint 5 point's position
+ * error and the rotation error, canonical base) are in e, from the
+ * idealised chain's T06 there in u (refq_fk, REFQ_IDEAL): T'06 = the
+ * errors applied to it, the target whose idealised solution of the
+ * branch is those values up to the change of the deviations' effect
+ * between them and that solution. Its vectors as the family solver reads
+ * them into u: the joint 5 point u[0..2], x6 u[3..5], axis 6 u[6..8]. */
+static DH_NOINLINE void refq_virtual(refq_work *w, const int32_t *e)
+{
+    const int32_t sa = w->m->sa[5], ca = w->m->ca[5];
+    int32_t *u = w->u;
+    uint32_t k;
+    for (k = 0; k < 3u; k++) u[3u + k] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(sa, u[3u + k]), ca, u[6u + k]));
+    /* axis 6, then x6, each turned by the rotation error */
+    for (k = 0; k < 6u; k += 3u) {
+        const int32_t *a = &u[(k == 0u) ? 3u : 0u];
+        int32_t *o = &u[(k == 0u) ? 6u : 3u];
+        const int32_t x = a[0], y = a[1], z = a[2];
+        o[0] = refq_sat((int64_t)x + dh_ikc_r30_q_(dh_q_mul64(e[4], z) - dh_q_mul64(e[5], y)));
+        o[1] = refq_sat((int64_t)y + dh_ikc_r30_q_(dh_q_mul64(e[5], x) - dh_q_mul64(e[3], z)));
+        o[2] = refq_sat((int64_t)z + dh_ikc_r30_q_(dh_q_mul64(e[3], y) - dh_q_mul64(e[4], x)));
+    }
+    for (k = 0; k < 3u; k++) u[k] = refq_sat((int64_t)u[9u + k] + e[k]);
+}
+
+/* The idealised chain's solution of slot b's branch (its flags) for the
+ * target whose vectors are in u (refq_virtual): the closed form of
+ * DH_IKC_PARALLEL_234 (dh_ikc_par234_q.c) for one branch, in three
+ * helpers: refq_sh joint 1 (cos, sin into t[0], t[1]), refq_wr joints 5,
+ * 6 and phi (q[3]; cos, sin into u[9], u[10]), refq_el joints 2, 3, 4.
+ * 0 when the branch does not exist there (inside the shoulder cylinder,
+ * the wrist singular, beyond the elbow's reach, or an overflow). */
+static DH_NOINLINE int refq_sh(refq_work *w, dh_ikc_sol_q *b)
+{
+    const int32_t *k = w->m->k, *p = w->u;
+    const int32_t th = (k[RQ_TAU] > 0) ? k[RQ_H] : -k[RQ_H];
+    const int64_t v = dh_q_mla64(dh_q_mul64(p[0], p[0]), p[1], p[1]) - dh_q_mul64(k[RQ_H], k[RQ_H]);
+    int32_t r;
+    if (v <= 0) return 0;
+    r = (int32_t)dh_q_isqrt62((uint64_t)v);
+    if ((b->flags & DH_IKC_SHOULDER_ALT) != 0u) r = -r;
+    b->q[0] = dh_ikc_atan2_q_(dh_q_mla64(dh_q_mul64(th, p[0]), r, p[1]), dh_q_mul64(r, p[0]) - dh_q_mul64(th, p[1]));
+    dh_sincos_q(b->q[0], &w->t[1], &w->t[0]);
+    return 1;
+}
+
+static DH_NOINLINE int refq_wr(refq_work *w, dh_ikc_sol_q *b)
+{
+    const int32_t *k = w->m->k, *x = &w->u[3], *z = &w->u[6];
+    const int32_t c1 = w->t[0], s1 = w->t[1];
+    const int32_t cp = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(c1, z[0]), s1, z[1]));
+    const int32_t sp = (k[RQ_TAU] > 0) ? z[2] : -z[2];
+    int32_t sn, cs, s5, c5, n11, n21, n31, mx, my, phi;
+    if (dh_q_abs_u32(cp) <= REFQ_SING_W && dh_q_abs_u32(sp) <= REFQ_SING_W) return 0;
+    phi = dh_ikc_atan2_q_((k[RQ_W5] > 0) ? sp : -sp, (k[RQ_W5] > 0) ? cp : -cp);
+    dh_sincos_q(phi, &sn, &cs);
+    s5 = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(cs, cp), sn, sp));
+    if (k[RQ_W5] < 0) s5 = -s5;
+    c5 = dh_ikc_r30_q_(dh_q_mul64(s1, z[0]) - dh_q_mul64(c1, z[1]));
+    if ((k[RQ_TAU] * k[RQ_SB] * k[RQ_W5]) > 0) c5 = -c5;
+    b->q[4] = 0;
+    (void)dh_atan2_q(s5, c5, &b->q[4]);
+    n11 = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(c1, x[0]), s1, x[1]));
+    n21 = (k[RQ_TAU] > 0) ? x[2] : -x[2];
+    n31 = dh_ikc_r30_q_(dh_q_mul64(s1, x[0]) - dh_q_mul64(c1, x[1]));
+    if (k[RQ_TAU] < 0) n31 = -n31;
+    mx = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(cs, n11), sn, n21));
+    my = dh_ikc_r30_q_(dh_q_mul64(cs, n21) - dh_q_mul64(sn, n11));
+    if (k[RQ_SB] < 0) s5 = -s5;
+    if ((k[RQ_W5] * k[RQ_SB]) > 0) my = -my;
+    b->q[5] = dh_ikc_atan2_q_(dh_q_mul64(my, DH_Q_ONE30), dh_q_mla64(dh_q_mul64(c5, mx), s5, n31));
+    if ((b->flags & DH_IKC_WRIST_ALT) != 0u) {
+        b->q[4] = dh_ikc_wrap180_q_(-b->q[4]);
+        b->q[5] = dh_ikc_wrap180_q_(b->q[5] + DH_IKC_Q16_180);
+        phi = dh_ikc_wrap180_q_(phi + DH_IKC_Q16_180);
+        cs = -cs;
+        sn = -sn;
+    }
+    b->q[3] = phi;
+    w->u[9] = cs;
+    w->u[10] = sn;
+    return 1;
+}
+
+static DH_NOINLINE int refq_el(refq_work *w, dh_ikc_sol_q *b)
+{
+    const dh_ikc_model_q *m = w->m;
+    const int32_t *k = m->k, *p = w->u;
+    const int32_t c1 = w->t[0], s1 = w->t[1], cs = w->u[9], sn = w->u[10];
+    int64_t x, y;
+    int32_t psi = 0, s3, c3, A, B, t3;
+    x = dh_q_rshr(dh_q_mla64(dh_q_mul64(c1, p[0]), s1, p[1]), 30u) - m->a[0] -
+        dh_q_rshr(dh_q_mla64(dh_q_mul64(m->a[3], cs), k[RQ_E5], sn), 30u);
+    y = (k[RQ_TAU] > 0) ? (int64_t)p[2] - m->d[0] : (int64_t)m->d[0] - p[2];
+    y -= dh_q_rshr(dh_q_mul64(m->a[3], sn) - dh_q_mul64(k[RQ_E5], cs), 30u);
+    if (dh_ikc_abs64_q_(x) > REFQ_POS_LIM || dh_ikc_abs64_q_(y) > REFQ_POS_LIM) return 0;
+    w->u[9] = (int32_t)x;
+    w->u[10] = (int32_t)y;
+    if (dh_ikc_elbow_q_(m->a[1], m->a[2], w->u[9], w->u[10], w->t) == 0u) return 0;
+    (void)dh_atan2_q(w->t[0], w->t[1], &psi);
+    t3 = dh_ikc_wrap180_q_(((b->flags & DH_IKC_ELBOW_ALT) != 0u) ? -psi : psi);
+    dh_sincos_q(t3, &s3, &c3);
+    A = m->a[1] + dh_ikc_r30_q_(dh_q_mul64(m->a[2], c3));
+    B = dh_ikc_r30_q_(dh_q_mul64(m->a[2], s3));
+    if (k[RQ_S2] < 0) B = -B;
+    y = dh_q_mul64(A, w->u[10]) - dh_q_mul64(B, w->u[9]);
+    x = dh_q_mla64(dh_q_mul64(A, w->u[9]), B, w->u[10]);
+    if (x == 0 && y == 0) return 0;
+    b->q[1] = dh_ikc_atan2_q_(y, x);
+    b->q[2] = t3;
+    A = dh_ikc_wrap180_q_(dh_ikc_wrap180_q_(b->q[3] - b->q[1]) - ((k[RQ_S2] > 0) ? t3 : -t3));
+    b->q[3] = (k[RQ_S23] < 0) ? dh_ikc_wrap180_q_(-A) : A;
+    return 1;
+}
+
+/* Slot b after its start (ok 1 when it has one): flagged REFQ_NEW; none:
+ * free again. */
+static DH_NOINLINE void refq_started(dh_ikc_sol_q *b, int ok)
+{
+    b->flags = ok ? ((b->flags & REFQ_BRANCH) | REFQ_NEW) : REFQ_FREE;
+}
+
+/* The exact errors at the canonical values q, canonical base, into
+ * u[0..5] (refq_rot, refq_perr, refq_unbase); 1 on overflow. */
+static DH_NOINLINE int refq_errors(refq_work *w, const int32_t *q)
+{
+    if (refq_fk(w, q, 0u) != 0) return 1;
+    refq_tool(w);
+    if (refq_base(w) != 0) return 1;
+    refq_rot(w);
+    refq_perr(w);
+    return refq_unbase(w);
+}
+
+/* Five rounds over the slots (k: round k >> 3, slot k & 7). Round 0
+ * refines the raw branches. Rounds 1 and 3 restart shoulder 0, then the
+ * other: its missing and unconverged branches marked (refq_plan), the
+ * virtual target of one of its branches formed (refq_errors, refq_fk on
+ * the idealised chain, refq_virtual) and each marked slot started from it
+ * (refq_sh, refq_wr, refq_el: near the wrist singularity the idealised
+ * joint 1 can be degrees off, which the wrist turns into a planar point
+ * beyond the elbow's reach for one wrist branch and into a start without
+ * a solution near it for the other); rounds 2 and 4 refine those starts.
+ * Each refinement at most DH_IKC_CAL_STEPS steps, each one exact forward
+ * kinematics. The helpers run in sequence from here, and so do the
+ * dh_sincos_q calls of the steps that fill w.t for them. */
 uint32_t dh_ikc_refine_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_sol_q *sol, uint32_t raw)
 {
     refq_work w;
-    uint32_t s, it, i;
+    uint32_t k, s, it;
     w.m = m;
     w.T = T;
-    if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;
-    for (s = 0; s < raw; s++) {
-        int32_t *q = sol[s].q;
-        sol[s].flags &= ~(uint32_t)DH_IKC_REFINED;
+    refq_marks(sol, (raw > DH_IKC_MAX_SOL) ? DH_IKC_MAX_SOL : raw);
+    for (k = 0; k < 5u * DH_IKC_MAX_SOL; k++) {
+        int32_t *q = sol[k & 7u].q;
+        if ((k & 8u) != 0u) {
+            /* a restart round, whole */
+            it = refq_plan(sol, (k < 2u * DH_IKC_MAX_SOL) ? 0u : DH_IKC_SHOULDER_ALT);
+            k += DH_IKC_MAX_SOL - 1u;
+            if (it == REFQ_NONE || refq_errors(&w, sol[it & 15u].q) != 0) continue;
+            for (s = 0; s < 6u; s++) sol[it >> 4].q[s] = w.u[s];
+            if (refq_fk(&w, sol[it & 15u].q, REFQ_IDEAL) != 0) continue;
+            refq_virtual(&w, sol[it >> 4].q);
+            for (s = 0; s < DH_IKC_MAX_SOL; s++)
+                if ((sol[s].flags & REFQ_PEND) != 0u)
+                    refq_started(&sol[s], refq_sh(&w, &sol[s]) && refq_wr(&w, &sol[s]) && refq_el(&w, &sol[s]));
+            continue;
+        }
+        if ((sol[k & 7u].flags & REFQ_NEW) == 0u) continue;
+        sol[k & 7u].flags &= ~(uint32_t)(REFQ_NEW | DH_IKC_REFINED);
         it = 0u;
         while (it < REFQ_DONE) {
-            int ovf = 0;
-            refq_fk_init(&w);
-            for (i = 0; i < 6u; i++) {
-                dh_sincos_q(q[i], &w.t[1], &w.t[0]);
-                refq_turn(&w);
-                ovf |= refq_offset(&w, i);
-                ovf |= refq_twist(&w, i);
+            it = (refq_fk(&w, q, 0u) != 0) ? REFQ_DONE : it;
+            if (it < REFQ_DONE) {
+                refq_tool(&w);
+                if (refq_base(&w) != 0) it = REFQ_DONE;
             }
-            refq_tool(&w);
-            it = (ovf != 0 || refq_base(&w) != 0) ? REFQ_DONE : it;
             if (it < REFQ_DONE) {
                 refq_rot(&w);
                 refq_perr(&w);
-                it = refq_pos(&w, &sol[s], it);
+                it = refq_pos(&w, &sol[k & 7u], it);
             }
             if (it < REFQ_DONE && refq_unbase(&w) != 0) it = REFQ_DONE;
             if (it < REFQ_DONE) {
@@ -563,5 +803,5 @@ uint32_t dh_ikc_refine_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_s
             }
         }
     }
-    return refq_pack(sol, raw);
+    return refq_pack(sol);
 }
