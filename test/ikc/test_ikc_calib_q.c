@@ -81,13 +81,21 @@ static void check_target(const dhs_robot *cal, const dhs_robot *ideal, const dh_
     DHT_TRUE_MSG(best <= GEN_DEG, "%s: q %s not among the %u solutions (nearest %.3g deg)", cal->name,
                  dhs_q_str(q, 6u, 0), (unsigned)n, best);
     (void)dh_ikc_q(mi, &T, NULL, 0u, isol, &ni);
+    best = 1e9;
     for (s = 0; s < ni; s++) {
-        double qi[NJ], fm;
-        for (i = 0; i < 6u; i++) qi[i] = ldexp((double)isol[s].q[i], -16);
+        double qi[NJ], fm, dmax = 0.0;
+        for (i = 0; i < 6u; i++) {
+            const double dd = dhk_jdiff_q(rc, i, isol[s].q[i], qq[i]);
+            if (dd > dmax) dmax = dd;
+            qi[i] = ldexp((double)isol[s].q[i], -16);
+        }
+        if (dmax < best) best = dmax;
         if (dhk_cal_sing(ideal, qi, 1.0) < SING_MIN) ideal_far = 0;
         fm = dhk_flip_margin(ideal, qi, FLIP_BAND);
         if (fm > -1.0 && fm < 0.0) ideal_far = 0;
     }
+    /* the idealised solution nearest q: far when the restart found q */
+    dht_reach_max("calibq.ur5.ideal_deg", best);
     if (ideal_far) {
         DHT_TRUE_MSG(n == ni, "%s: %u solutions, the idealised robot %u; q %s", cal->name, (unsigned)n,
                      (unsigned)ni, dhs_q_str(q, 6u, 0));
