@@ -483,7 +483,12 @@ dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int3
     raw = *n_sol;
     *n_sol = 0;
     if (st != DH_OK) return st;
-    if (m->calibrated != 0u) raw = dh_ikc_refine_q_(m, target, sol, raw);
+    if (m->calibrated != 0u) {
+        /* refined, then each shoulder restarted and its starts refined */
+        raw = dh_ikc_refine_q_(m, target, sol, raw);
+        raw = dh_ikc_refine_q_(m, target, sol, dh_ikc_restart_q_(m, target, sol, raw, 0u));
+        raw = dh_ikc_refine_q_(m, target, sol, dh_ikc_restart_q_(m, target, sol, raw, DH_IKC_SHOULDER_ALT));
+    }
     if (raw == 0u) return DH_ERR_UNREACHABLE;
     raw = ikcq_finish(m, q_ref, opts, sol, raw);
     if (raw == IKCQ_FINISH_OVF) return DH_ERR_OVERFLOW;

@@ -5,9 +5,10 @@
  * a six-revolute chain within the calibration tolerance of
  * DH_IKC_PARALLEL_234 (dh_ikc_calibrate_q_, called by dh_ikc_analyse_q
  * after the exact detectors) and the refinement of the family solver's raw
- * solutions on the exact chain (dh_ikc_refine_q_, called by dh_ikc_q after
- * the solver has returned); interface in ikc_impl.h. Method: the float
- * twin's (dh_ikc_refine.c; docs/design.md, "Calibrated robots").
+ * solutions on the exact chain (dh_ikc_refine_q_ and dh_ikc_restart_q_,
+ * called by dh_ikc_q after the solver has returned); interface in
+ * ikc_impl.h. Method: the float twin's (dh_ikc_refine.c; docs/design.md,
+ * "Calibrated robots").
  *
  * Refinement of one branch: simplified Newton steps with the idealised
  * chain's Jacobian in the frame-1 split of the family (the position error
@@ -18,13 +19,21 @@
  * exact chain is within REFQ_POS and REFQ_ROT, after at most
  * DH_IKC_CAL_STEPS steps.
  *
+ * A shoulder whose four branches are not all refined then starts again
+ * from the virtual target of one of its branches (the exact errors there
+ * applied to the idealised chain's T06), solved in closed form for each of
+ * its missing branches, and those starts are refined.
+ *
  * Formats: cosines and sines, rotation entries and rotation errors Q2.30;
  * points and position errors dh_qpos; joint steps Q2.30 radians; joint
  * values Q16.16 degrees. Products are int64, each sum rounded once.
  *
- * Stack: the entry keeps the work data (24 words: the cosines and sines of
- * the branch's joints, the exact frame or the errors); every helper runs
- * from the entry in sequence, none below another.
+ * Stack: each of the two entries keeps its work data (the exact or
+ * idealised frame, the errors, the virtual target; cosines and sines, 14
+ * words); every helper runs from an entry in sequence, none below
+ * another, and so do the trigonometry and elbow calls. The exact errors
+ * at a restart's start wait in the q of a slot it fills, the unconverged
+ * branches in the slots after the refined ones (caller memory).
  */
 #include "dhmath/ikc.h"
 #include "dhmath/trig.h"
@@ -56,18 +65,20 @@
 /* m->k layout of DH_IKC_PARALLEL_234 (dh_ikc_par234_q.c), the entries read here */
 enum { RQ_TAU = 0, RQ_S2 = 1, RQ_S23 = 2, RQ_SB = 3, RQ_W5 = 4, RQ_H = 5, RQ_E5 = 6 };
 
-/* Private flag bits of the slots while dh_ikc_refine_q_ runs, cleared
- * before it returns: a slot waiting for a start from the virtual target
- * (refq_plan), one waiting for its refinement (a raw branch, or one
- * started), and a free one. */
+/* Private flag bits of the slots between dh_ikc_refine_q_ and
+ * dh_ikc_restart_q_, cleared on the refined ones: a slot waiting for a
+ * start from the virtual target (refq_plan), a branch that did not
+ * converge (a restart's start when its shoulder has no refined one), and
+ * a free one. */
 #define REFQ_PEND 0x100u
-#define REFQ_NEW 0x200u
+#define REFQ_UNCONV 0x200u
 #define REFQ_FREE 0x400u
 #define REFQ_PRIVATE 0x700u
 #define REFQ_BRANCH (DH_IKC_SHOULDER_ALT | DH_IKC_ELBOW_ALT | DH_IKC_WRIST_ALT)
 #define REFQ_SINGS (DH_IKC_SING_WRIST | DH_IKC_SING_SHOULDER | DH_IKC_SING_ELBOW)
-/* refq_plan: no restart */
-#define REFQ_NONE 0xFFu
+/* refq_plan: no restart; dh_ikc_restart_q_: an overflow (its plan's bit) */
+#define REFQ_NONE 0x80u
+#define REFQ_OVF 0x100u
 /* the wrist singular for a start: |n13|, |n23| within 2^11 LSB (as the solver) */
 #define REFQ_SING_W ((uint32_t)1 << 11)
 #define REFQ_POS_LIM ((uint64_t)1 << 30)
@@ -213,12 +224,10 @@ DH_INLINE int32_t refq_sat(int64_t v)
     return (int32_t)v;
 }
 
-/* Joint i of the exact chain (cos, sin of its canonical value in t[0],
- * t[1]) applied to u in three helpers, each a pass over the three rows:
- * refq_turn the turn about z, refq_offset the offsets a_i, d_i (1 on
- * overflow), refq_twist the twist, and after joint 6 the point moved back
- * to the joint 5 point (frame 5's origin: p6 - a6 x6 - d6 z5; 1 on
- * overflow). */
+/* Joint i of the exact chain, or of the idealised one with i | REFQ_IDEAL
+ * (cos, sin of its canonical value in t[0], t[1]), applied to u in three
+ * helpers, each a pass over the three rows: refq_turn the turn about z,
+ * refq_offset the offsets a_i, d_i (1 on overflow), refq_twist the twist. */
 static DH_NOINLINE void refq_turn(refq_work *w)
 {
     const int32_t c = w->t[0], s = w->t[1];
@@ -243,42 +252,26 @@ static DH_NOINLINE int refq_offset(refq_work *w, uint32_t i)
     return ovf;
 }
 
-static DH_NOINLINE int refq_twist(refq_work *w, uint32_t i)
+static DH_NOINLINE void refq_twist(refq_work *w, uint32_t i)
 {
     const uint32_t j = i & 7u;
     const int ideal = (i & REFQ_IDEAL) != 0u;
     const int32_t sa = ideal ? w->m->sa[j] : w->m->xsa[j], ca = ideal ? w->m->ca[j] : w->m->xca[j];
-    const int32_t a6 = ideal ? w->m->a[5] : w->m->xa[5], d6 = ideal ? w->m->d[5] : w->m->xd[5];
     int32_t *u = w->u;
     uint32_t r;
-    int ovf = 0;
     for (r = 0; r < 3u; r++) {
         const int32_t y = u[3u + r], z = u[6u + r];
         u[3u + r] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(ca, y), sa, z));
         u[6u + r] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(ca, z), -sa, y));
-        if (j == 5u) {
-            const int32_t z5 = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(sa, u[3u + r]), ca, u[6u + r]));
-            u[9u + r] = dh_q_pos_rnd30(u[9u + r], -dh_q_mla64(dh_q_mul64(a6, u[r]), d6, z5), &ovf);
-        }
     }
-    return ovf;
 }
 
-/* u <- the forward kinematics of the canonical values q on the exact
- * chain (id 0) or the idealised one (id REFQ_IDEAL), the point moved back
- * to the joint 5 point, without base and tool frames; 1 on overflow */
-static DH_NOINLINE int refq_fk(refq_work *w, const int32_t *q, uint32_t id)
+/* u <- the identity frame (a forward kinematics starts; joint 6's offsets
+ * are left out: the point ends at the joint 5 point, frame 5's origin) */
+static DH_NOINLINE void refq_fk_init(refq_work *w)
 {
     uint32_t i;
-    int ovf = 0;
     for (i = 0; i < 12u; i++) w->u[i] = ((i & 3u) == 0u && i < 9u) ? DH_Q_ONE30 : 0;
-    for (i = 0; i < 6u; i++) {
-        dh_sincos_q(q[i], &w->t[1], &w->t[0]);
-        refq_turn(w);
-        ovf |= refq_offset(w, i | id);
-        ovf |= refq_twist(w, i | id);
-    }
-    return ovf;
 }
 
 /* u's rotation times the tool frame's (post = post_inv^-1, rotation S^T),
@@ -517,14 +510,14 @@ static DH_NOINLINE void refq_apply(refq_work *w, int32_t *q)
     }
 }
 
-/* The refined solutions, distinct, packed to the front, their private
- * flags cleared; their count. */
-static DH_NOINLINE uint32_t refq_pack(dh_ikc_sol_q *sol)
+/* The refined solutions among sol[0..raw-1], distinct, swapped to the
+ * front, their private flags cleared; after them the unconverged ones
+ * flagged REFQ_UNCONV, every other slot REFQ_FREE; the refined count. */
+static DH_NOINLINE uint32_t refq_pack(dh_ikc_sol_q *sol, uint32_t raw)
 {
     uint32_t s, k, i, n = 0;
-    for (s = 0; s < DH_IKC_MAX_SOL; s++) {
-        int keep = (sol[s].flags & (DH_IKC_REFINED | REFQ_FREE)) == DH_IKC_REFINED;
-        sol[s].flags &= ~(uint32_t)REFQ_PRIVATE;
+    for (s = 0; s < raw; s++) {
+        int keep = (sol[s].flags & (DH_IKC_REFINED | REFQ_FREE | REFQ_UNCONV)) == DH_IKC_REFINED;
         for (k = 0; keep && k < n; k++) {
             for (i = 0; i < 6u; i++) {
                 const int32_t d = dh_ikc_wrap180_q_(sol[k].q[i] - sol[s].q[i]);
@@ -532,10 +525,21 @@ static DH_NOINLINE uint32_t refq_pack(dh_ikc_sol_q *sol)
             }
             if (i == 6u) keep = 0;
         }
+        if ((sol[s].flags & DH_IKC_REFINED) != 0u) sol[s].flags = keep ? (sol[s].flags & ~(uint32_t)REFQ_PRIVATE) : REFQ_FREE;
         if (!keep) continue;
-        if (n != s) sol[n] = sol[s];
+        for (i = 0; n != s && i < 6u; i++) {
+            const int32_t t = sol[n].q[i];
+            sol[n].q[i] = sol[s].q[i];
+            sol[s].q[i] = t;
+        }
+        k = sol[n].flags;
+        sol[n].flags = sol[s].flags;
+        sol[s].flags = (n != s) ? k : sol[s].flags;
         n++;
     }
+    for (s = n; s < DH_IKC_MAX_SOL; s++)
+        sol[s].flags = (s < raw && (sol[s].flags & (REFQ_FREE | DH_IKC_REFINED)) == 0u) ? (sol[s].flags | REFQ_UNCONV)
+                                                                                       : REFQ_FREE;
     return n;
 }
 
@@ -550,51 +554,34 @@ DH_INLINE int32_t refq_phi(const dh_ikc_model_q *m, const int32_t *q, int with4)
 
 /* ---- restart from the virtual target ------------------------------------------ */
 
-/* Slots 0..raw-1 flagged REFQ_NEW (the raw branches), the others
- * REFQ_FREE. */
-static DH_NOINLINE void refq_marks(dh_ikc_sol_q *sol, uint32_t raw)
-{
-    uint32_t s;
-    for (s = 0; s < DH_IKC_MAX_SOL; s++) sol[s].flags = (s < raw) ? (sol[s].flags | REFQ_NEW) : REFQ_FREE;
-}
-
-/* The branches of shoulder sh (0 or DH_IKC_SHOULDER_ALT) that did not
- * converge, or that the idealised chain did not have, marked REFQ_PEND
- * (those that did not converge in their slots, the missing ones in free
- * slots while there are any). Returns src + 16 st: src the slot whose
- * values start them (a converged branch of the shoulder when there is
- * one), st a pending slot other than src (its q takes the exact errors
- * at src); REFQ_NONE when there is no restart (every branch converged,
- * a singular branch, no branch of the shoulder, no such st). */
-static DH_NOINLINE uint32_t refq_plan(dh_ikc_sol_q *sol, uint32_t sh)
+/* The branches of shoulder sh (0 or DH_IKC_SHOULDER_ALT) that are not
+ * among the n refined solutions sol[0..n-1] (the idealised chain lacked
+ * them, or they did not converge), marked REFQ_PEND in free slots or in
+ * the unconverged ones of the shoulder (refq_pack), while there are any.
+ * Returns src + 16 st: src the slot whose values start them (a refined
+ * branch of the shoulder, else an unconverged one), st the first marked;
+ * REFQ_NONE when there is no restart (every branch refined, a singular
+ * one, no start, no slot). */
+static DH_NOINLINE uint32_t refq_plan(dh_ikc_sol_q *sol, uint32_t n, uint32_t sh)
 {
     uint32_t s, c, src = DH_IKC_MAX_SOL, done = 0u, st = DH_IKC_MAX_SOL;
     for (s = 0; s < DH_IKC_MAX_SOL; s++) {
         const uint32_t f = sol[s].flags;
-        if ((f & REFQ_FREE) != 0u || (f & DH_IKC_SHOULDER_ALT) != sh) continue;
+        if ((s >= n && (f & REFQ_UNCONV) == 0u) || (f & DH_IKC_SHOULDER_ALT) != sh) continue;
         if ((f & REFQ_SINGS) != 0u) return REFQ_NONE;
-        if ((f & DH_IKC_REFINED) != 0u) {
-            done |= 1u << ((f & (DH_IKC_ELBOW_ALT | DH_IKC_WRIST_ALT)) >> 1);
-            src = s;
-        } else if (src == DH_IKC_MAX_SOL || (sol[src].flags & DH_IKC_REFINED) == 0u) {
-            src = s;
-        } else {
-            /* an unconverged branch after a converged one: the start stays */
-        }
+        if (s < n) done |= 1u << ((f & (DH_IKC_ELBOW_ALT | DH_IKC_WRIST_ALT)) >> 1);
+        if (s < n || src == DH_IKC_MAX_SOL) src = s;
     }
     if (src == DH_IKC_MAX_SOL) return REFQ_NONE;
+    s = n;
     for (c = 0; c < 4u; c++) {
-        const uint32_t f = sh | (c << 1);
-        uint32_t slot = DH_IKC_MAX_SOL;
         if (((done >> c) & 1u) != 0u) continue;
-        /* its own unconverged slot, else the first free one */
-        for (s = DH_IKC_MAX_SOL; s > 0u; s--)
-            if ((sol[s - 1u].flags & REFQ_FREE) != 0u) slot = s - 1u;
-        for (s = 0; s < DH_IKC_MAX_SOL; s++)
-            if ((sol[s].flags & (REFQ_FREE | REFQ_PEND | REFQ_BRANCH | DH_IKC_REFINED)) == f) slot = s;
-        if (slot == DH_IKC_MAX_SOL) continue;
-        sol[slot].flags = f | REFQ_PEND;
-        if (slot != src && st == DH_IKC_MAX_SOL) st = slot;
+        while (s < DH_IKC_MAX_SOL && (s == src || ((sol[s].flags & REFQ_FREE) == 0u &&
+                                                    (sol[s].flags & (REFQ_UNCONV | DH_IKC_SHOULDER_ALT)) != (REFQ_UNCONV | sh))))
+            s++;
+        if (s == DH_IKC_MAX_SOL) break;
+        sol[s].flags = sh | (c << 1) | REFQ_PEND;
+        if (st == DH_IKC_MAX_SOL) st = s;
     }
     return (st == DH_IKC_MAX_SOL) ? REFQ_NONE : src + 16u * st;
 }
@@ -602,37 +589,70 @@ static DH_NOINLINE uint32_t refq_plan(dh_ikc_sol_q *sol, uint32_t sh)
 /* The first-order virtual target of the canonical values whose exact
  * errors (refq_rot, refq_perr, refq_unbase: the joint 5 point's position
  * error and the rotation error, canonical base) are in e, from the
- * idealised chain's T06 there in u (refq_fk, REFQ_IDEAL): T'06 = the
- * errors applied to it, the target whose idealised solution of the
+ * idealised chain's T06 there in u (the idealised forward kinematics): T'06
+ * = the errors applied to it, the target whose idealised solution of the
  * branch is those values up to the change of the deviations' effect
  * between them and that solution. Its vectors as the family solver reads
- * them into u: the joint 5 point u[0..2], x6 u[3..5], axis 6 u[6..8]. */
-static DH_NOINLINE void refq_virtual(refq_work *w, const int32_t *e)
+ * them into u: the joint 5 point u[0..2], x6 u[3..5], axis 6 u[6..8]; in
+ * two helpers, refq_zaxis axis 6 (sa6 y6 + ca6 z6) into u[3..5],
+ * refq_spin (twice) a vector turned by the rotation error, then the point
+ * moved by the position error. */
+static DH_NOINLINE void refq_zaxis(refq_work *w)
 {
     const int32_t sa = w->m->sa[5], ca = w->m->ca[5];
     int32_t *u = w->u;
     uint32_t k;
     for (k = 0; k < 3u; k++) u[3u + k] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(sa, u[3u + k]), ca, u[6u + k]));
-    /* axis 6, then x6, each turned by the rotation error */
-    for (k = 0; k < 6u; k += 3u) {
-        const int32_t *a = &u[(k == 0u) ? 3u : 0u];
-        int32_t *o = &u[(k == 0u) ? 6u : 3u];
-        const int32_t x = a[0], y = a[1], z = a[2];
-        o[0] = refq_sat((int64_t)x + dh_ikc_r30_q_(dh_q_mul64(e[4], z) - dh_q_mul64(e[5], y)));
-        o[1] = refq_sat((int64_t)y + dh_ikc_r30_q_(dh_q_mul64(e[5], x) - dh_q_mul64(e[3], z)));
-        o[2] = refq_sat((int64_t)z + dh_ikc_r30_q_(dh_q_mul64(e[3], y) - dh_q_mul64(e[4], x)));
+}
+
+/* v: 0 axis 6 (u[3..5] into u[6..8]), 1 x6 (u[0..2] into u[3..5]), 2 the
+ * point (u[9..11] plus the position error into u[0..2]) */
+static DH_NOINLINE void refq_spin(refq_work *w, const int32_t *e, uint32_t v)
+{
+    int32_t *u = w->u;
+    const int32_t *a = &u[(v == 0u) ? 3u : 0u];
+    int32_t *o = &u[(v == 0u) ? 6u : 3u];
+    uint32_t k;
+    if (v == 2u) {
+        for (k = 0; k < 3u; k++) u[k] = refq_sat((int64_t)u[9u + k] + e[k]);
+        return;
     }
-    for (k = 0; k < 3u; k++) u[k] = refq_sat((int64_t)u[9u + k] + e[k]);
+    for (k = 0; k < 3u; k++) {
+        const uint32_t k1 = (k == 2u) ? 0u : k + 1u, k2 = (k == 0u) ? 2u : k - 1u;
+        /* (e_r x a)_k = e_k1 a_k2 - e_k2 a_k1 */
+        const int64_t c = dh_q_mul64(e[3u + k1], a[k2]) - dh_q_mul64(e[3u + k2], a[k1]);
+        o[k] = refq_sat((int64_t)a[k] + dh_ikc_r30_q_(c));
+    }
+}
+
+/* (y, x) of a common scale rounded by one shift below 2^30 into o[0],
+ * o[1] (the atan2 arguments of a start); 0 when both are 0 */
+DH_INLINE int refq_args(int32_t *o, int64_t y, int64_t x)
+{
+    const uint64_t ay = dh_ikc_abs64_q_(y), ax = dh_ikc_abs64_q_(x);
+    const unsigned n = dh_q_bitlen64(ay > ax ? ay : ax);
+    if (n > 30u) {
+        y = dh_q_rshr(y, n - 30u);
+        x = dh_q_rshr(x, n - 30u);
+    }
+    o[0] = (int32_t)y;
+    o[1] = (int32_t)x;
+    return (ay | ax) != 0u;
 }
 
 /* The idealised chain's solution of slot b's branch (its flags) for the
- * target whose vectors are in u (refq_virtual): the closed form of
- * DH_IKC_PARALLEL_234 (dh_ikc_par234_q.c) for one branch, in three
- * helpers: refq_sh joint 1 (cos, sin into t[0], t[1]), refq_wr joints 5,
- * 6 and phi (q[3]; cos, sin into u[9], u[10]), refq_el joints 2, 3, 4.
- * 0 when the branch does not exist there (inside the shoulder cylinder,
- * the wrist singular, beyond the elbow's reach, or an overflow). */
-static DH_NOINLINE int refq_sh(refq_work *w, dh_ikc_sol_q *b)
+ * target whose vectors are in u (refq_zaxis, refq_spin): the closed form
+ * of DH_IKC_PARALLEL_234 (dh_ikc_par234_q.c) for one branch. The helpers
+ * form the arguments of its angles, dh_ikc_refine_q_ takes the atan2,
+ * sine, cosine and elbow calls between them: refq_s1 joint 1's (u[9],
+ * u[10]; cos, sin of t1 then in t[0], t[1]), refq_w1 phi's (u[9], u[10];
+ * its cos, sin then there), refq_w2 joint 5's (q[1], q[2]), refq_w3
+ * joint 6's (q[1], q[2]), refq_w4 the wrist flip, refq_e1 the planar
+ * point (u[9], u[10]; the elbow's pair then in t), refq_e2 joint 3,
+ * refq_e3 joint 2's (t[0], t[1], after cos, sin of t3 there), refq_e4
+ * joint 4. 0 where the branch does not exist (inside the shoulder
+ * cylinder, the wrist singular, an overflow). */
+static DH_NOINLINE int refq_s1(refq_work *w, const dh_ikc_sol_q *b)
 {
     const int32_t *k = w->m->k, *p = w->u;
     const int32_t th = (k[RQ_TAU] > 0) ? k[RQ_H] : -k[RQ_H];
@@ -641,146 +661,142 @@ static DH_NOINLINE int refq_sh(refq_work *w, dh_ikc_sol_q *b)
     if (v <= 0) return 0;
     r = (int32_t)dh_q_isqrt62((uint64_t)v);
     if ((b->flags & DH_IKC_SHOULDER_ALT) != 0u) r = -r;
-    b->q[0] = dh_ikc_atan2_q_(dh_q_mla64(dh_q_mul64(th, p[0]), r, p[1]), dh_q_mul64(r, p[0]) - dh_q_mul64(th, p[1]));
-    dh_sincos_q(b->q[0], &w->t[1], &w->t[0]);
-    return 1;
+    return refq_args(&w->u[9], dh_q_mla64(dh_q_mul64(th, p[0]), r, p[1]), dh_q_mul64(r, p[0]) - dh_q_mul64(th, p[1]));
 }
 
-static DH_NOINLINE int refq_wr(refq_work *w, dh_ikc_sol_q *b)
+/* n13 (cp) and n23 (sp) of the target in frame 1 into o[0], o[1] */
+static DH_NOINLINE void refq_n3(const refq_work *w, int32_t *o)
 {
-    const int32_t *k = w->m->k, *x = &w->u[3], *z = &w->u[6];
-    const int32_t c1 = w->t[0], s1 = w->t[1];
-    const int32_t cp = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(c1, z[0]), s1, z[1]));
-    const int32_t sp = (k[RQ_TAU] > 0) ? z[2] : -z[2];
-    int32_t sn, cs, s5, c5, n11, n21, n31, mx, my, phi;
-    if (dh_q_abs_u32(cp) <= REFQ_SING_W && dh_q_abs_u32(sp) <= REFQ_SING_W) return 0;
-    phi = dh_ikc_atan2_q_((k[RQ_W5] > 0) ? sp : -sp, (k[RQ_W5] > 0) ? cp : -cp);
-    dh_sincos_q(phi, &sn, &cs);
-    s5 = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(cs, cp), sn, sp));
-    if (k[RQ_W5] < 0) s5 = -s5;
-    c5 = dh_ikc_r30_q_(dh_q_mul64(s1, z[0]) - dh_q_mul64(c1, z[1]));
-    if ((k[RQ_TAU] * k[RQ_SB] * k[RQ_W5]) > 0) c5 = -c5;
-    b->q[4] = 0;
-    (void)dh_atan2_q(s5, c5, &b->q[4]);
-    n11 = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(c1, x[0]), s1, x[1]));
-    n21 = (k[RQ_TAU] > 0) ? x[2] : -x[2];
-    n31 = dh_ikc_r30_q_(dh_q_mul64(s1, x[0]) - dh_q_mul64(c1, x[1]));
-    if (k[RQ_TAU] < 0) n31 = -n31;
-    mx = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(cs, n11), sn, n21));
-    my = dh_ikc_r30_q_(dh_q_mul64(cs, n21) - dh_q_mul64(sn, n11));
-    if (k[RQ_SB] < 0) s5 = -s5;
-    if ((k[RQ_W5] * k[RQ_SB]) > 0) my = -my;
-    b->q[5] = dh_ikc_atan2_q_(dh_q_mul64(my, DH_Q_ONE30), dh_q_mla64(dh_q_mul64(c5, mx), s5, n31));
-    if ((b->flags & DH_IKC_WRIST_ALT) != 0u) {
-        b->q[4] = dh_ikc_wrap180_q_(-b->q[4]);
-        b->q[5] = dh_ikc_wrap180_q_(b->q[5] + DH_IKC_Q16_180);
-        phi = dh_ikc_wrap180_q_(phi + DH_IKC_Q16_180);
-        cs = -cs;
-        sn = -sn;
-    }
-    b->q[3] = phi;
-    w->u[9] = cs;
-    w->u[10] = sn;
+    const int32_t *z = &w->u[6];
+    o[0] = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(w->t[0], z[0]), w->t[1], z[1]));
+    o[1] = (w->m->k[RQ_TAU] > 0) ? z[2] : -z[2];
+}
+
+static DH_NOINLINE int refq_w1(refq_work *w)
+{
+    int32_t n[2];
+    refq_n3(w, n);
+    if (dh_q_abs_u32(n[0]) <= REFQ_SING_W && dh_q_abs_u32(n[1]) <= REFQ_SING_W) return 0;
+    /* (y, x) = w5 (sp, cp) */
+    w->u[9] = (w->m->k[RQ_W5] > 0) ? n[1] : -n[1];
+    w->u[10] = (w->m->k[RQ_W5] > 0) ? n[0] : -n[0];
     return 1;
 }
 
-static DH_NOINLINE int refq_el(refq_work *w, dh_ikc_sol_q *b)
+static DH_NOINLINE void refq_w2(const refq_work *w, dh_ikc_sol_q *b)
+{
+    const int32_t *k = w->m->k, *z = &w->u[6];
+    int32_t n[2], s5, c5;
+    refq_n3(w, n);
+    s5 = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(w->u[9], n[0]), w->u[10], n[1]));
+    c5 = dh_ikc_r30_q_(dh_q_mul64(w->t[1], z[0]) - dh_q_mul64(w->t[0], z[1]));
+    if (k[RQ_W5] < 0) s5 = -s5;
+    if ((k[RQ_TAU] * k[RQ_SB] * k[RQ_W5]) > 0) c5 = -c5;
+    b->q[1] = s5;
+    b->q[2] = c5;
+}
+
+static DH_NOINLINE void refq_w3(const refq_work *w, dh_ikc_sol_q *b)
+{
+    const int32_t *k = w->m->k, *x = &w->u[3];
+    const int32_t c1 = w->t[0], s1 = w->t[1], cs = w->u[9], sn = w->u[10];
+    const int32_t n11 = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(c1, x[0]), s1, x[1]));
+    const int32_t n21 = (k[RQ_TAU] > 0) ? x[2] : -x[2];
+    int32_t n31 = dh_ikc_r30_q_(dh_q_mul64(s1, x[0]) - dh_q_mul64(c1, x[1]));
+    int32_t my = dh_ikc_r30_q_(dh_q_mul64(cs, n21) - dh_q_mul64(sn, n11));
+    const int32_t mx = dh_ikc_r30_q_(dh_q_mla64(dh_q_mul64(cs, n11), sn, n21));
+    if (k[RQ_TAU] < 0) n31 = -n31;
+    if (k[RQ_SB] < 0) n31 = -n31; /* with sb s5 */
+    if ((k[RQ_W5] * k[RQ_SB]) > 0) my = -my;
+    (void)refq_args(b->q + 1, dh_q_mul64(my, DH_Q_ONE30), dh_q_mla64(dh_q_mul64(b->q[2], mx), b->q[1], n31));
+}
+
+static DH_NOINLINE void refq_w4(refq_work *w, dh_ikc_sol_q *b)
+{
+    if ((b->flags & DH_IKC_WRIST_ALT) == 0u) return;
+    b->q[4] = dh_ikc_wrap180_q_(-b->q[4]);
+    b->q[5] = dh_ikc_wrap180_q_(b->q[5] + DH_IKC_Q16_180);
+    b->q[3] = dh_ikc_wrap180_q_(b->q[3] + DH_IKC_Q16_180);
+    w->u[9] = -w->u[9];
+    w->u[10] = -w->u[10];
+}
+
+static DH_NOINLINE int refq_e1(refq_work *w)
 {
     const dh_ikc_model_q *m = w->m;
     const int32_t *k = m->k, *p = w->u;
-    const int32_t c1 = w->t[0], s1 = w->t[1], cs = w->u[9], sn = w->u[10];
+    const int32_t cs = w->u[9], sn = w->u[10];
     int64_t x, y;
-    int32_t psi = 0, s3, c3, A, B, t3;
-    x = dh_q_rshr(dh_q_mla64(dh_q_mul64(c1, p[0]), s1, p[1]), 30u) - m->a[0] -
+    x = dh_q_rshr(dh_q_mla64(dh_q_mul64(w->t[0], p[0]), w->t[1], p[1]), 30u) - m->a[0] -
         dh_q_rshr(dh_q_mla64(dh_q_mul64(m->a[3], cs), k[RQ_E5], sn), 30u);
     y = (k[RQ_TAU] > 0) ? (int64_t)p[2] - m->d[0] : (int64_t)m->d[0] - p[2];
     y -= dh_q_rshr(dh_q_mul64(m->a[3], sn) - dh_q_mul64(k[RQ_E5], cs), 30u);
     if (dh_ikc_abs64_q_(x) > REFQ_POS_LIM || dh_ikc_abs64_q_(y) > REFQ_POS_LIM) return 0;
     w->u[9] = (int32_t)x;
     w->u[10] = (int32_t)y;
-    if (dh_ikc_elbow_q_(m->a[1], m->a[2], w->u[9], w->u[10], w->t) == 0u) return 0;
-    (void)dh_atan2_q(w->t[0], w->t[1], &psi);
-    t3 = dh_ikc_wrap180_q_(((b->flags & DH_IKC_ELBOW_ALT) != 0u) ? -psi : psi);
-    dh_sincos_q(t3, &s3, &c3);
-    A = m->a[1] + dh_ikc_r30_q_(dh_q_mul64(m->a[2], c3));
-    B = dh_ikc_r30_q_(dh_q_mul64(m->a[2], s3));
-    if (k[RQ_S2] < 0) B = -B;
-    y = dh_q_mul64(A, w->u[10]) - dh_q_mul64(B, w->u[9]);
-    x = dh_q_mla64(dh_q_mul64(A, w->u[9]), B, w->u[10]);
-    if (x == 0 && y == 0) return 0;
-    b->q[1] = dh_ikc_atan2_q_(y, x);
-    b->q[2] = t3;
-    A = dh_ikc_wrap180_q_(dh_ikc_wrap180_q_(b->q[3] - b->q[1]) - ((k[RQ_S2] > 0) ? t3 : -t3));
-    b->q[3] = (k[RQ_S23] < 0) ? dh_ikc_wrap180_q_(-A) : A;
     return 1;
 }
 
-/* Slot b after its start (ok 1 when it has one): flagged REFQ_NEW; none:
- * free again. */
-static DH_NOINLINE void refq_started(dh_ikc_sol_q *b, int ok)
+static DH_NOINLINE void refq_e2(dh_ikc_sol_q *b)
 {
-    b->flags = ok ? ((b->flags & REFQ_BRANCH) | REFQ_NEW) : REFQ_FREE;
+    if ((b->flags & DH_IKC_ELBOW_ALT) != 0u) b->q[2] = dh_ikc_wrap180_q_(-b->q[2]);
 }
 
-/* The exact errors at the canonical values q, canonical base, into
- * u[0..5] (refq_rot, refq_perr, refq_unbase); 1 on overflow. */
-static DH_NOINLINE int refq_errors(refq_work *w, const int32_t *q)
+static DH_NOINLINE int refq_e3(refq_work *w)
 {
-    if (refq_fk(w, q, 0u) != 0) return 1;
-    refq_tool(w);
-    if (refq_base(w) != 0) return 1;
-    refq_rot(w);
-    refq_perr(w);
-    return refq_unbase(w);
+    const dh_ikc_model_q *m = w->m;
+    int32_t A = m->a[1] + dh_ikc_r30_q_(dh_q_mul64(m->a[2], w->t[0]));
+    int32_t B = dh_ikc_r30_q_(dh_q_mul64(m->a[2], w->t[1]));
+    if (m->k[RQ_S2] < 0) B = -B;
+    return refq_args(w->t, dh_q_mul64(A, w->u[10]) - dh_q_mul64(B, w->u[9]),
+                     dh_q_mla64(dh_q_mul64(A, w->u[9]), B, w->u[10]));
 }
 
-/* Five rounds over the slots (k: round k >> 3, slot k & 7). Round 0
- * refines the raw branches. Rounds 1 and 3 restart shoulder 0, then the
- * other: its missing and unconverged branches marked (refq_plan), the
- * virtual target of one of its branches formed (refq_errors, refq_fk on
- * the idealised chain, refq_virtual) and each marked slot started from it
- * (refq_sh, refq_wr, refq_el: near the wrist singularity the idealised
- * joint 1 can be degrees off, which the wrist turns into a planar point
- * beyond the elbow's reach for one wrist branch and into a start without
- * a solution near it for the other); rounds 2 and 4 refine those starts.
- * Each refinement at most DH_IKC_CAL_STEPS steps, each one exact forward
- * kinematics. The helpers run in sequence from here, and so do the
- * dh_sincos_q calls of the steps that fill w.t for them. */
+static DH_NOINLINE void refq_e4(const refq_work *w, dh_ikc_sol_q *b)
+{
+    const int32_t *k = w->m->k;
+    const int32_t t3 = b->q[2];
+    const int32_t a = dh_ikc_wrap180_q_(dh_ikc_wrap180_q_(b->q[3] - b->q[1]) - ((k[RQ_S2] > 0) ? t3 : -t3));
+    b->q[3] = (k[RQ_S23] < 0) ? dh_ikc_wrap180_q_(-a) : a;
+}
+
+/* Slot b after its start (ok 1 when it has one): its branch's flags; none:
+ * REFQ_FREE (dh_ikc_refine_q_ leaves it out). */
+static DH_NOINLINE void refq_started(dh_ikc_sol_q *b, uint32_t ok)
+{
+    b->flags = (ok != 0u) ? (b->flags & REFQ_BRANCH) : REFQ_FREE;
+}
+
+/* Each solution of sol[0..raw-1] that is neither refined nor free refined
+ * in its slot: at most DH_IKC_CAL_STEPS steps, each one exact forward
+ * kinematics; the helpers run in sequence from here, and so do the
+ * dh_sincos_q calls that fill w.t for them. Then the refined ones packed
+ * (refq_pack); returns their count. */
 uint32_t dh_ikc_refine_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_sol_q *sol, uint32_t raw)
 {
     refq_work w;
-    uint32_t k, s, it;
+    uint32_t s, it, i;
     w.m = m;
     w.T = T;
-    refq_marks(sol, (raw > DH_IKC_MAX_SOL) ? DH_IKC_MAX_SOL : raw);
-    for (k = 0; k < 5u * DH_IKC_MAX_SOL; k++) {
-        int32_t *q = sol[k & 7u].q;
-        if ((k & 8u) != 0u) {
-            /* a restart round, whole */
-            it = refq_plan(sol, (k < 2u * DH_IKC_MAX_SOL) ? 0u : DH_IKC_SHOULDER_ALT);
-            k += DH_IKC_MAX_SOL - 1u;
-            if (it == REFQ_NONE || refq_errors(&w, sol[it & 15u].q) != 0) continue;
-            for (s = 0; s < 6u; s++) sol[it >> 4].q[s] = w.u[s];
-            if (refq_fk(&w, sol[it & 15u].q, REFQ_IDEAL) != 0) continue;
-            refq_virtual(&w, sol[it >> 4].q);
-            for (s = 0; s < DH_IKC_MAX_SOL; s++)
-                if ((sol[s].flags & REFQ_PEND) != 0u)
-                    refq_started(&sol[s], refq_sh(&w, &sol[s]) && refq_wr(&w, &sol[s]) && refq_el(&w, &sol[s]));
-            continue;
-        }
-        if ((sol[k & 7u].flags & REFQ_NEW) == 0u) continue;
-        sol[k & 7u].flags &= ~(uint32_t)(REFQ_NEW | DH_IKC_REFINED);
-        it = 0u;
+    if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;
+    for (s = 0; s < raw; s++) {
+        int32_t *q = sol[s].q;
+        it = ((sol[s].flags & (DH_IKC_REFINED | REFQ_FREE | REFQ_UNCONV)) != 0u) ? REFQ_DONE : 0u;
         while (it < REFQ_DONE) {
-            it = (refq_fk(&w, q, 0u) != 0) ? REFQ_DONE : it;
-            if (it < REFQ_DONE) {
-                refq_tool(&w);
-                if (refq_base(&w) != 0) it = REFQ_DONE;
+            int ovf = 0;
+            refq_fk_init(&w);
+            for (i = 0; i < 6u; i++) {
+                dh_sincos_q(q[i], &w.t[1], &w.t[0]);
+                refq_turn(&w);
+                if (i < 5u) ovf |= refq_offset(&w, i);
+                refq_twist(&w, i);
             }
+            refq_tool(&w);
+            it = (ovf != 0 || refq_base(&w) != 0) ? REFQ_DONE : it;
             if (it < REFQ_DONE) {
                 refq_rot(&w);
                 refq_perr(&w);
-                it = refq_pos(&w, &sol[k & 7u], it);
+                it = refq_pos(&w, &sol[s], it);
             }
             if (it < REFQ_DONE && refq_unbase(&w) != 0) it = REFQ_DONE;
             if (it < REFQ_DONE) {
@@ -803,5 +819,95 @@ uint32_t dh_ikc_refine_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_s
             }
         }
     }
-    return refq_pack(sol);
+    return refq_pack(sol, raw);
+}
+
+/* Shoulder sh restarted (refq_plan) from the virtual target of one of its
+ * refined branches src: the exact errors there (an exact pass: refq_tool
+ * .. refq_unbase, kept in the q of the first slot the restart fills), the
+ * idealised chain's T06 there (an idealised pass) turned into the virtual
+ * target (refq_zaxis, refq_spin), and each marked slot started from it
+ * (refq_s1 .. refq_e4 and the trigonometry and elbow calls between them,
+ * from here): near the wrist singularity the idealised joint 1 can be
+ * degrees off, which the wrist turns into a planar point beyond the
+ * elbow's reach for one wrist branch and into a start without a solution
+ * near it for the other. Returns the number of slots in use (n plus the
+ * marked ones; a start that failed free), for dh_ikc_refine_q_. */
+uint32_t dh_ikc_restart_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_sol_q *sol, uint32_t n, uint32_t sh)
+{
+    refq_work w;
+    uint32_t pl, i, it;
+    w.m = m;
+    w.T = T;
+    pl = refq_plan(sol, n, sh);
+    if (pl == REFQ_NONE) return n;
+    /* an exact pass, then an idealised one; an overflow sets REFQ_OVF in pl */
+    for (it = 0; it < 2u && pl < REFQ_OVF; it++) {
+        refq_fk_init(&w);
+        for (i = 0; i < 6u; i++) {
+            dh_sincos_q(sol[pl & 15u].q[i], &w.t[1], &w.t[0]);
+            refq_turn(&w);
+            if (i < 5u && refq_offset(&w, i | (it * REFQ_IDEAL)) != 0) pl |= REFQ_OVF;
+            refq_twist(&w, i | (it * REFQ_IDEAL));
+        }
+        if (it == 0u) {
+            refq_tool(&w);
+            if (refq_base(&w) != 0) pl |= REFQ_OVF;
+        }
+        if (it == 0u && pl < REFQ_OVF) {
+            refq_rot(&w);
+            refq_perr(&w);
+            if (refq_unbase(&w) != 0) pl |= REFQ_OVF;
+        }
+        for (i = 0; it == 0u && pl < REFQ_OVF && i < 6u; i++) sol[(pl >> 4) & 15u].q[i] = w.u[i];
+    }
+    if (pl < REFQ_OVF) {
+        refq_zaxis(&w);
+        refq_spin(&w, sol[pl >> 4].q, 0u);
+        refq_spin(&w, sol[pl >> 4].q, 1u);
+        refq_spin(&w, sol[pl >> 4].q, 2u);
+    }
+    /* an unconverged start is left out */
+    if ((pl & 15u) >= n) sol[pl & 15u].flags = REFQ_FREE;
+    for (i = 0; i < DH_IKC_MAX_SOL; i++) {
+        if ((sol[i].flags & REFQ_PEND) == 0u) continue;
+        it = (pl < REFQ_OVF) ? (uint32_t)refq_s1(&w, &sol[i]) : 0u;
+        if (it != 0u) {
+            sol[i].q[0] = 0;
+            (void)dh_atan2_q(w.u[9], w.u[10], &sol[i].q[0]);
+            dh_sincos_q(sol[i].q[0], &w.t[1], &w.t[0]);
+            it = (uint32_t)refq_w1(&w);
+        }
+        if (it != 0u) {
+            sol[i].q[3] = 0;
+            (void)dh_atan2_q(w.u[9], w.u[10], &sol[i].q[3]);
+            dh_sincos_q(sol[i].q[3], &w.u[10], &w.u[9]);
+            refq_w2(&w, &sol[i]);
+            sol[i].q[4] = 0;
+            (void)dh_atan2_q(sol[i].q[1], sol[i].q[2], &sol[i].q[4]);
+            refq_w3(&w, &sol[i]);
+            sol[i].q[5] = 0;
+            (void)dh_atan2_q(sol[i].q[1], sol[i].q[2], &sol[i].q[5]);
+            refq_w4(&w, &sol[i]);
+            it = (uint32_t)refq_e1(&w);
+        }
+        if (it != 0u) it = dh_ikc_elbow_q_(m->a[1], m->a[2], w.u[9], w.u[10], w.t);
+        if (it != 0u) {
+            sol[i].q[2] = 0;
+            (void)dh_atan2_q(w.t[0], w.t[1], &sol[i].q[2]);
+            refq_e2(&sol[i]);
+            dh_sincos_q(sol[i].q[2], &w.t[1], &w.t[0]);
+            it = (uint32_t)refq_e3(&w);
+        }
+        if (it != 0u) {
+            sol[i].q[1] = 0;
+            (void)dh_atan2_q(w.t[0], w.t[1], &sol[i].q[1]);
+            refq_e4(&w, &sol[i]);
+        }
+        refq_started(&sol[i], it);
+    }
+    /* the slots up to the last one in use */
+    i = DH_IKC_MAX_SOL;
+    while (i > n && (sol[i - 1u].flags & REFQ_FREE) != 0u) i--;
+    return i;
 }

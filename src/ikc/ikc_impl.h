@@ -210,15 +210,21 @@ dh_status dh_ikc_finish_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc
  * chain in a..ca, the exact one in xa..xca, xw5, xframes and
  * m->calibrated = 1 when it is within the calibration tolerance of that
  * family; 0 with m's chain as on entry, kind DH_IKC_NONE, otherwise.
- * dh_ikc_refine_q_: the raw solutions sol[0..raw-1] (canonical values of
- * the idealised chain) refined in place on the exact chain for the target
- * T (the user's frame), the converged ones flagged DH_IKC_REFINED, kept
- * distinct and packed to the front; returns their count. Called by
- * dh_ikc_q after the solver has returned. dh_ikc_args_q_ and
+ * dh_ikc_refine_q_: the solutions sol[0..raw-1] (canonical values of
+ * the idealised chain) not yet refined refined in place on the exact chain
+ * for the target T (the user's frame), the converged ones flagged
+ * DH_IKC_REFINED, the refined ones kept distinct and packed to the front;
+ * returns their count. dh_ikc_restart_q_: shoulder sh (0 or
+ * DH_IKC_SHOULDER_ALT) of the n refined solutions restarted from the
+ * virtual target of one of its branches, its missing branches started in
+ * slots n, n + 1, ...; returns the slots in use, for dh_ikc_refine_q_.
+ * dh_ikc_q calls the three in turn after the solver has returned (each
+ * from its own frame, for the stack bound). dh_ikc_args_q_ and
  * dh_ikc_args_rigid_q_ refuse a calibrated model (DH_ERR_UNAVAILABLE), so
  * that a caller of the three calls never takes unrefined solutions. */
 int dh_ikc_calibrate_q_(dh_ikc_model_q *m);
 uint32_t dh_ikc_refine_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_sol_q *sol, uint32_t raw);
+uint32_t dh_ikc_restart_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_sol_q *sol, uint32_t n, uint32_t sh);
 
 /* Shared fixed helpers (defined in dh_ikc_common_q.c). */
 #define DH_IKC_Q16_180 ((int32_t)11796480)
