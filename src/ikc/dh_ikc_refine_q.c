@@ -631,12 +631,9 @@ DH_INLINE int refq_args(int32_t *o, int64_t y, int64_t x)
 {
     const uint64_t ay = dh_ikc_abs64_q_(y), ax = dh_ikc_abs64_q_(x);
     const unsigned n = dh_q_bitlen64(ay > ax ? ay : ax);
-    if (n > 30u) {
-        y = dh_q_rshr(y, n - 30u);
-        x = dh_q_rshr(x, n - 30u);
-    }
-    o[0] = (int32_t)y;
-    o[1] = (int32_t)x;
+    const unsigned sh = (n > 30u) ? n - 30u : 0u;
+    o[0] = (int32_t)((sh != 0u) ? dh_q_rshr(y, sh) : y);
+    o[1] = (int32_t)((sh != 0u) ? dh_q_rshr(x, sh) : x);
     return (ay | ax) != 0u;
 }
 
@@ -708,7 +705,7 @@ static DH_NOINLINE void refq_w3(const refq_work *w, dh_ikc_sol_q *b)
     if (k[RQ_TAU] < 0) n31 = -n31;
     if (k[RQ_SB] < 0) n31 = -n31; /* with sb s5 */
     if ((k[RQ_W5] * k[RQ_SB]) > 0) my = -my;
-    (void)refq_args(b->q + 1, dh_q_mul64(my, DH_Q_ONE30), dh_q_mla64(dh_q_mul64(b->q[2], mx), b->q[1], n31));
+    (void)refq_args(&b->q[1], dh_q_mul64(my, DH_Q_ONE30), dh_q_mla64(dh_q_mul64(b->q[2], mx), b->q[1], n31));
 }
 
 static DH_NOINLINE void refq_w4(refq_work *w, dh_ikc_sol_q *b)
@@ -781,7 +778,8 @@ uint32_t dh_ikc_refine_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_s
     if (raw > DH_IKC_MAX_SOL) raw = DH_IKC_MAX_SOL;
     for (s = 0; s < raw; s++) {
         int32_t *q = sol[s].q;
-        it = ((sol[s].flags & (DH_IKC_REFINED | REFQ_FREE | REFQ_UNCONV)) != 0u) ? REFQ_DONE : 0u;
+        it = 0u;
+        if ((sol[s].flags & (DH_IKC_REFINED | REFQ_FREE | REFQ_UNCONV)) != 0u) it = REFQ_DONE;
         while (it < REFQ_DONE) {
             int ovf = 0;
             refq_fk_init(&w);
