@@ -205,7 +205,8 @@ typedef struct {
     float lim_w[2u * DH_IKC_JOINTS]; /**< revolute joint i's limits as a circular window of canonical values: centre
                                           lim_w[i] in (-180, 180], radius lim_w[6 + i] with a rounding margin (+inf:
                                           no bound); a value farther from the centre is outside the limits */
-    uint32_t lim_any;            /**< 1: a radius of lim_w is finite and kind a spherical-wrist family (exact): dh_ikc_f32 prunes by it */
+    uint32_t lim_any;            /**< 1: a radius of lim_w is finite and kind a spherical-wrist family (exact): dh_ikc_f32 prunes by it;
+                                          2: kind DH_IKC_WRIST_RRR (exact), no wide limits: it solves and applies the limits in one pass */
     uint32_t calibrated;         /**< 1: within the calibration tolerance of kind, not on it: a..ca hold the
                                       idealised chain, xa..xca the exact one, solutions refined; 0: exact */
     float xa[DH_IKC_JOINTS];     /**< exact canonical a (calibrated; 0 otherwise) */

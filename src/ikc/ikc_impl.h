@@ -140,6 +140,16 @@ uint32_t dh_ikc_par234_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T,
  * returns): with an FPU; soft float, every solution. */
 uint32_t dh_ikc_wrist_lim_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                                dh_ikc_sol_f32 *sol);
+/* dh_ikc_f32 (opts 0) for an exact DH_IKC_WRIST_RRR model with m->wide 0,
+ * with an FPU: each solution converted by dh_ikc_val_f32_ as it is found
+ * (joint 1 before its elbow, joints 2-3 before their wrist, once for both
+ * wrist solutions), a branch left at its first value outside the limits,
+ * the solutions within them written into their final slots in the order
+ * of dh_ikc_wrist_f32_: the solutions and count of dh_ikc_f32. 0 when none
+ * is kept or a value needs the general conversion (the caller then solves
+ * in full). Soft float: 0. */
+uint32_t dh_ikc_wrist_fin_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
+                               dh_ikc_sol_f32 *sol);
 static inline uint32_t dh_ikc_raw_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *wq,
                                            dh_ikc_sol_f32 *sol)
 {
@@ -294,6 +304,43 @@ static inline float dh_ikc_wrap_f32_(float x)
     if (x > 180.0f) x -= 360.0f;
     else if (x <= -180.0f) x += 360.0f;
     return x;
+}
+
+/* dh_ikc_f32's conversion (opts 0, m->wide 0: limits less than a turn
+ * apart or none) of revolute joint i's canonical value c with offset o
+ * and window [lo, hi] (m->win_lo[i], m->win_hi[i]): the value x = c - o
+ * when in the window; else x one turn towards the reference (q_ref[i],
+ * 0 when q_ref is NULL) when that is; else, with no limits or limits
+ * within (-180, 180] and |x| < 540, x wrapped into (-180, 180] (the one
+ * shift that can enter them) when within them, else outside them: the
+ * verdicts and values of dh_ikc.c's general conversion. Returns DH_IKC_VAL_IN (*v
+ * the joint value), DH_IKC_VAL_OUT, or DH_IKC_VAL_GEN (*v = x): the
+ * general conversion decides (other limits, a value beyond +-540 or not
+ * finite). */
+#define DH_IKC_VAL_OUT 0u
+#define DH_IKC_VAL_IN 1u
+#define DH_IKC_VAL_GEN 2u
+DH_INLINE uint32_t dh_ikc_val_f32_(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i, float c, float o,
+                                   float lo, float hi, float *v)
+{
+    const float x = c - o;
+    float ref, t;
+    *v = x;
+    if (x >= lo && x <= hi) return DH_IKC_VAL_IN;
+    ref = (q_ref != NULL) ? q_ref[i] : 0.0f;
+    t = (x > ref) ? x - 360.0f : x + 360.0f;
+    if (t >= lo && t <= hi) {
+        *v = t;
+        return DH_IKC_VAL_IN;
+    }
+    if (x > -540.0f && x <= 540.0f && (m->qmin[i] > m->qmax[i] || (m->qmin[i] > -180.0f && m->qmax[i] <= 180.0f))) {
+        /* no limits (the window is (-180, 180]) or limits within it: only
+         * x wrapped into (-180, 180] can lie within them */
+        t = dh_ikc_wrap_f32_(x);
+        *v = t;
+        return (t >= lo && t <= hi) ? DH_IKC_VAL_IN : DH_IKC_VAL_OUT;
+    }
+    return DH_IKC_VAL_GEN;
 }
 
 static inline int dh_ikc_is_identity_f32_(const dh_mat4_f32 *T)
