@@ -55,6 +55,7 @@
 #define BLEND_RAD2DEG 57.295779513082321f
 #define BLEND_MARGIN 0.9990234375f    /* 1 - 2^-10: the rounding of the bounds */
 #define BLEND_WSHARE 0.984375f        /* 63/64 of wdmax for the tails, 1/64 for the cross term */
+#define JSEQ_ARC_SH 0.75f             /* a jerk-limited corner with an arc: the tangential share of amax, jmax */
 
 /* The limits and a radius: DH_ERR_NAN for a NaN/Inf one, then
  * DH_ERR_ARG for a limit <= 0 */
@@ -799,33 +800,32 @@ dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32
 /* ---- jerk-limited blended sequences of lines ------------------------ */
 
 /* The jerk limits: DH_ERR_NAN for a NaN/Inf one, DH_ERR_ARG for one
- * <= 0 or an arc among the n paths p */
-static DH_NOINLINE dh_status jseq_check(const dh_path_f32 *p, uint32_t n, const dh_cart_jerk_f32 *jk)
+ * <= 0 */
+static DH_NOINLINE dh_status jseq_check(const dh_cart_jerk_f32 *jk)
 {
-    uint32_t k;
     if (!dh_isfinite_f32(jk->jmax) || !dh_isfinite_f32(jk->wjmax)) return DH_ERR_NAN;
     if (!(jk->jmax > 0.0f) || !(jk->wjmax > 0.0f)) return DH_ERR_ARG;
-    for (k = 0u; k < n; k++) {
-        if (p[k].kind != (uint32_t)DH_PATH_LINE) return DH_ERR_ARG;
-    }
     return DH_OK;
 }
 
-/* r = V, a, j: the bounds of s', s'', s''' of the line p within lim and
- * jk (those of dh_path_move_jerk_f32 on a line); all 0 when p has no
- * motion */
+/* r = V, a, j: the bounds of s', s'', s''' of the path p within lim and
+ * jk (those of dh_path_move_jerk_f32: on an arc the tool point's speed,
+ * tangential acceleration and jerk leave room for the centripetal
+ * terms); all 0 when p has no motion */
 static DH_NOINLINE dh_status jseq_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
                                         const dh_cart_jerk_f32 *jk, float r[3])
 {
+    float x[3] = { lim->vmax, lim->amax, jk->jmax };
     dh_status st;
+    if (blend_is_arc(p)) dh_motion_arc_jrates_f32_(p, lim, jk, x);
     r[0] = 0.0f;
     r[1] = 0.0f;
     r[2] = 0.0f;
-    st = dh_motion_bound_f32_(&r[0], lim->vmax, p->length);
+    st = dh_motion_bound_f32_(&r[0], x[0], p->length);
     if (st == DH_OK) st = dh_motion_bound_f32_(&r[0], lim->wmax, p->angle);
-    if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], lim->amax, p->length);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], x[1], p->length);
     if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], lim->wdmax, p->angle);
-    if (st == DH_OK) st = dh_motion_bound_f32_(&r[2], jk->jmax, p->length);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[2], x[2], p->length);
     if (st == DH_OK) st = dh_motion_bound_f32_(&r[2], jk->wjmax, p->angle);
     if (st == DH_OK && (p->length > 0.0f || p->angle > 0.0f) &&
         (!(r[0] > 0.0f) || !(r[1] > 0.0f) || !(r[2] > 0.0f))) {
@@ -978,7 +978,13 @@ static DH_NOINLINE void jseq_red(const jseq_corner *c)
     b[3] = &g[1]->k0;
     g[0]->tb1 = (c->radius > 0.0f && *b[0] > 0.0f && *b[2] > 0.0f) ? 1.0f : 0.0f;
     if (!(g[0]->tb1 > 0.0f)) return;
-    if (p[0]->length > 0.0f && p[1]->length > 0.0f) {
+    if (blend_is_arc(p[0]) || blend_is_arc(p[1])) {
+        /* the tangents turn: the tangential terms' sums within 3/4 of
+         * amax and jmax for any directions (jseq_arc_ok holds the
+         * centripetal ones within the last 1/4) */
+        jseq_scale2(b[0], b[2], p[0]->length, p[1]->length, JSEQ_ARC_SH * ca);
+        jseq_scale2(b[1], b[3], p[0]->length, p[1]->length, JSEQ_ARC_SH * cj);
+    } else if (p[0]->length > 0.0f && p[1]->length > 0.0f) {
         x = blend_turn(p[0], p[1]);
         if (x > 1.0f) ca /= x;
         x = 4.0f - x * x; /* |d1 + d2|^2 of unit d1, d2 */
@@ -1038,6 +1044,30 @@ static DH_NOINLINE int jseq_ok(const jseq_corner *c, float tb)
     return (w2 * w2) * w1 <= (BLEND_RAD2DEG * BLEND_RAD2DEG) * (c->jk->wjmax * 0.0078125f);
 }
 
+/* 1 when the overlap tb of the corner c keeps the centripetal terms of
+ * its arcs within the last 1/4 of amax and jmax (jseq_red gives the
+ * tangential ones 3/4; docs/design.md): with x_i = L_i u_i the tool
+ * speed on path i at the overlap's inner end (the largest in it), A_i =
+ * L_i times its lowered s'' bound and rho_i its radius (a line: no term),
+ * sum x_i^2 / rho_i <= amax / 4 and
+ * sum (x_i^3 / rho_i^2 + 3 x_i A_i / rho_i) <= jmax / 4 */
+static DH_NOINLINE int jseq_arc_ok(const jseq_corner *c, float tb)
+{
+    dh_blend_seg_f32 *const *g = c->g;
+    const dh_path_f32 *const *p = c->p;
+    float x, y, A = 0.0f, J = 0.0f;
+    int i;
+    for (i = 0; i < 2; i++) {
+        if (blend_is_arc(p[i])) {
+            x = p[i]->length * ((i == 0) ? jt_v(g[0]->v, g[0]->tj3, g[0]->t3, tb) : jt_v(g[1]->v, g[1]->tj1, g[1]->t1, tb));
+            y = x / p[i]->radius;
+            A += x * y;
+            J += y * (x * y + 3.0f * (p[i]->length * ((i == 0) ? g[0]->b1 : g[1]->b0)));
+        }
+    }
+    return (A <= (1.0f - JSEQ_ARC_SH) * c->lim->amax && J <= (1.0f - JSEQ_ARC_SH) * c->jk->jmax) ? 1 : 0;
+}
+
 /* the overlap of the corner c (jseq_ok): the largest tb up to half of
  * both changes of speed that jseq_ok accepts (each of its terms grows
  * with tb: bisection), times 1 - 2^-10; 0 when none */
@@ -1047,7 +1077,7 @@ static DH_NOINLINE float jseq_tb(const jseq_corner *c)
     float lo = 0.0f, hi = H, m = H;
     int i;
     for (i = 0; i < 200 && H > 0.0f; i++) {
-        if (jseq_near(c, m) != 0 && jseq_ok(c, m) != 0) {
+        if (jseq_near(c, m) != 0 && jseq_ok(c, m) != 0 && jseq_arc_ok(c, m) != 0) {
             lo = m;
             if (!(m < H)) break;
         } else {
@@ -1172,7 +1202,7 @@ dh_status dh_blend_seq_plan_jerk_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg
     DH_ASSERT(sq != NULL && seg != NULL && p != NULL && lim != NULL && jerk != NULL && (n <= 1u || radius != NULL));
     if (n == 0u) return DH_ERR_ARG;
     st = seq_check(p, n, radius, lim);
-    if (st == DH_OK) st = jseq_check(p, n, jerk);
+    if (st == DH_OK) st = jseq_check(jerk);
     if (st == DH_OK) st = jseq_bound(p, n, lim, jerk);
     if (st != DH_OK) return st;
     c.lim = lim;
@@ -1365,7 +1395,7 @@ float dh_blend_jcorner_f32_(dh_queue_item_f32 *i1, dh_queue_item_f32 *i2)
     c.lim = lim;
     c.jk = jk;
     c.radius = i1->radius;
-    if (p1->kind == (uint32_t)DH_PATH_LINE && p2->kind == (uint32_t)DH_PATH_LINE && blend_joins(p1, p2)) {
+    if (blend_is_path(p1) && blend_is_path(p2) && blend_joins(p1, p2)) {
         jseq_unmark(&c);
         jseq_red(&c);
     } else {

@@ -401,6 +401,13 @@ static void path_arc_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, 
     }
 }
 
+/* motion_impl.h */
+void dh_motion_arc_jrates_f32_(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk,
+                               float r[3])
+{
+    path_arc_rates(p, lim, jk, &r[0], &r[1], &r[2]);
+}
+
 /* The speed, acceleration and (jk != NULL) jerk bounds of s for the path
  * p within lim and jk, into b[0], b[1], b[2] */
 static dh_status path_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk,

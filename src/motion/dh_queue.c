@@ -284,7 +284,6 @@ dh_status dh_queue_add_path_blend_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *
     DH_ASSERT(qu != NULL && p != NULL && lim != NULL && jerk != NULL);
     if (qu->count >= qu->cap) return DH_ERR_LIMIT;
     st = queue_radius(radius);
-    if (st == DH_OK && p->kind != (uint32_t)DH_PATH_LINE) st = DH_ERR_ARG;
     it = queue_slot(qu, qu->count);
     if (st == DH_OK) st = dh_path_move_jerk_f32(&it->prof, p, lim, jerk);
     if (st == DH_OK) st = queue_add_item(qu, p, lim, &it->prof);

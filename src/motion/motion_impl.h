@@ -39,6 +39,15 @@ dh_status dh_motion_bound_f32_(float *sl, float num, float den);
  * dh_path_move_f32 takes them (dh_path.c); the blends' rates (dh_blend.c) */
 void dh_motion_arc_rates_f32_(const dh_path_f32 *p, float amax, float *V, float *At);
 
+/* For the arc p (radius > 0) within lim and jk: r[0] (the speed bound so
+ * far, lowered), r[1], r[2] the tool point's speed, tangential
+ * acceleration and tangential jerk bounds that keep its total
+ * acceleration within amax and total jerk within jmax, as
+ * dh_path_move_jerk_f32 takes them (dh_path.c); the jerk-limited blends'
+ * rates (dh_blend.c) */
+void dh_motion_arc_jrates_f32_(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk,
+                               float r[3]);
+
 /* T's position column (rows 0-2) = p(s) less p's end (end 0: p_A,
  * s = x; end 1: p_B, s = 1 - x) for x in [0, 1], an arc from its nearer
  * end (dh_path.c); the superposition of blends (dh_blend.c) */
