@@ -56,6 +56,7 @@
 #define BLEND_MARGIN 0.9990234375f    /* 1 - 2^-10: the rounding of the bounds */
 #define BLEND_WSHARE 0.984375f        /* 63/64 of wdmax for the tails, 1/64 for the cross term */
 #define JSEQ_ARC_SH 0.75f             /* a jerk-limited corner with an arc: the tangential share of amax, jmax */
+#define JSEQ_ARC_TURN 0.25f           /* ... and the turn (rad) of the arcs' tangents in its overlap */
 
 /* The limits and a radius: DH_ERR_NAN for a NaN/Inf one, then
  * DH_ERR_ARG for a limit <= 0 */
@@ -942,6 +943,46 @@ static void jseq_scale2(float *x, float *y, float wx, float wy, float w)
     }
 }
 
+/* t = the unit tangent of the path p at its end B (end 1) or A (end 0):
+ * an arc's n x (p - centre) / rho, a line's direction (0 without length) */
+static DH_NOINLINE void jseq_tangent(const dh_path_f32 *p, int end, float t[3])
+{
+    float u[3];
+    int i;
+    for (i = 0; i < 3; i++) {
+        t[i] = (p->length > 0.0f) ? (DH_M4(&p->B, i, 3) - DH_M4(&p->A, i, 3)) / p->length : 0.0f;
+        u[i] = p->u0[i] + ((end != 0) ? DH_M4(&p->B, i, 3) - DH_M4(&p->A, i, 3) : 0.0f);
+    }
+    if (!blend_is_arc(p)) return;
+    t[0] = (p->n[1] * u[2] - p->n[2] * u[1]) / p->radius;
+    t[1] = (p->n[2] * u[0] - p->n[0] * u[2]) / p->radius;
+    t[2] = (p->n[0] * u[1] - p->n[1] * u[0]) / p->radius;
+}
+
+/* *ca, *cj (amax, jmax) lowered for a corner of p1 | p2 with an arc:
+ * times 3/4 / max(1, |t2 - t1| + turn) and 3/4 / max(1, |t1 + t2| +
+ * turn), t_i the paths' unit tangents at the corner, turn =
+ * JSEQ_ARC_TURN: in the overlap each tangent stays within its arc's turn
+ * phi_i of its corner value (|t(phi) - t(0)| = 2 sin(phi / 2) <= phi),
+ * phi1 + phi2 <= turn (jseq_arc_ok) */
+static DH_NOINLINE void jseq_turns(const dh_path_f32 *p1, const dh_path_f32 *p2, float *ca, float *cj)
+{
+    float t1[3], t2[3], d = 0.0f, e = 0.0f, x;
+    int i;
+    jseq_tangent(p1, 1, t1);
+    jseq_tangent(p2, 0, t2);
+    for (i = 0; i < 3; i++) {
+        x = t2[i] - t1[i];
+        d += x * x;
+        x = t2[i] + t1[i];
+        e += x * x;
+    }
+    d = dh_sqrtf_(d) + JSEQ_ARC_TURN;
+    e = dh_sqrtf_(e) + JSEQ_ARC_TURN;
+    *ca *= JSEQ_ARC_SH / ((d > 1.0f) ? d : 1.0f);
+    *cj *= JSEQ_ARC_SH / ((e > 1.0f) ? e : 1.0f);
+}
+
 /* One corner of jerk-limited lines: the scalings g[0] (the line before
  * the corner) and g[1] (the line after it) of the lines p[0], p[1]
  * within lim, jk and radius (the sequence's consecutive ones, or the
@@ -979,11 +1020,10 @@ static DH_NOINLINE void jseq_red(const jseq_corner *c)
     g[0]->tb1 = (c->radius > 0.0f && *b[0] > 0.0f && *b[2] > 0.0f) ? 1.0f : 0.0f;
     if (!(g[0]->tb1 > 0.0f)) return;
     if (blend_is_arc(p[0]) || blend_is_arc(p[1])) {
-        /* the tangents turn: the tangential terms' sums within 3/4 of
-         * amax and jmax for any directions (jseq_arc_ok holds the
-         * centripetal ones within the last 1/4) */
-        jseq_scale2(b[0], b[2], p[0]->length, p[1]->length, JSEQ_ARC_SH * ca);
-        jseq_scale2(b[1], b[3], p[0]->length, p[1]->length, JSEQ_ARC_SH * cj);
+        /* the tangents turn by up to JSEQ_ARC_TURN in the overlap
+         * (jseq_arc_ok): the vertex bounds with the turns added, within
+         * 3/4 of amax and jmax (the centripetal terms the last 1/4) */
+        jseq_turns(p[0], p[1], &ca, &cj);
     } else if (p[0]->length > 0.0f && p[1]->length > 0.0f) {
         x = blend_turn(p[0], p[1]);
         if (x > 1.0f) ca /= x;
@@ -1045,27 +1085,35 @@ static DH_NOINLINE int jseq_ok(const jseq_corner *c, float tb)
 }
 
 /* 1 when the overlap tb of the corner c keeps the centripetal terms of
- * its arcs within the last 1/4 of amax and jmax (jseq_red gives the
- * tangential ones 3/4; docs/design.md): with x_i = L_i u_i the tool
- * speed on path i at the overlap's inner end (the largest in it), A_i =
- * L_i times its lowered s'' bound and rho_i its radius (a line: no term),
- * sum x_i^2 / rho_i <= amax / 4 and
- * sum (x_i^3 / rho_i^2 + 3 x_i A_i / rho_i) <= jmax / 4 */
+ * its arcs within the last 1/4 of amax and jmax and their tangents'
+ * turns within JSEQ_ARC_TURN (jseq_turns; docs/design.md): with
+ * x_i = L_i u_i the tool speed on path i at the overlap's inner end (the
+ * largest in it), A_i = L_i times its lowered s'' bound, rho_i its
+ * radius and L_i e_i the arc length it covers in the overlap (a line: no
+ * term), sum x_i^2 / rho_i <= amax / 4,
+ * sum (x_i^3 / rho_i^2 + 3 x_i A_i / rho_i) <= jmax / 4 and
+ * sum L_i e_i / rho_i <= JSEQ_ARC_TURN */
 static DH_NOINLINE int jseq_arc_ok(const jseq_corner *c, float tb)
 {
     dh_blend_seg_f32 *const *g = c->g;
     const dh_path_f32 *const *p = c->p;
-    float x, y, A = 0.0f, J = 0.0f;
+    float x, y, A = 0.0f, J = 0.0f, phi = 0.0f;
     int i;
     for (i = 0; i < 2; i++) {
+        const dh_blend_seg_f32 *h = g[i];
+        const float tj = (i == 0) ? h->tj3 : h->tj1, ta = (i == 0) ? h->t3 : h->t1;
         if (blend_is_arc(p[i])) {
-            x = p[i]->length * ((i == 0) ? jt_v(g[0]->v, g[0]->tj3, g[0]->t3, tb) : jt_v(g[1]->v, g[1]->tj1, g[1]->t1, tb));
+            x = p[i]->length * jt_v(h->v, tj, ta, tb);
             y = x / p[i]->radius;
             A += x * y;
-            J += y * (x * y + 3.0f * (p[i]->length * ((i == 0) ? g[0]->b1 : g[1]->b0)));
+            J += y * (x * y + 3.0f * (p[i]->length * ((i == 0) ? h->b1 : h->b0)));
+            phi += (p[i]->length * jt_x(0.0f, h->v, tj, ta, tb)) / p[i]->radius;
         }
     }
-    return (A <= (1.0f - JSEQ_ARC_SH) * c->lim->amax && J <= (1.0f - JSEQ_ARC_SH) * c->jk->jmax) ? 1 : 0;
+    return (A <= (1.0f - JSEQ_ARC_SH) * c->lim->amax && J <= (1.0f - JSEQ_ARC_SH) * c->jk->jmax &&
+            phi <= JSEQ_ARC_TURN)
+               ? 1
+               : 0;
 }
 
 /* the overlap of the corner c (jseq_ok): the largest tb up to half of
