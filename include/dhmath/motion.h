@@ -647,6 +647,7 @@ typedef struct {
     float k1;  /**< jerk-limited: |d3s/dt3| of the deceleration to rest (1/s^3) */
     float tj1; /**< jerk-limited: duration of each jerk phase of the acceleration (s) */
     float tj3; /**< jerk-limited: duration of each jerk phase of the deceleration (s) */
+    float V;   /**< jerk-limited: the path's own bound of ds/dt (1/s; a and j its own bounds of |d2s/dt2| and |d3s/dt3|) */
 } dh_blend_seg_f32;
 
 /* ======================================================================
@@ -1162,7 +1163,8 @@ dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32
  *         DH_ERR_NAN for a NaN/Inf jerk limit, DH_ERR_ARG for one <= 0;
  *         DH_ERR_OVERFLOW for a bound of s that is not a
  *         positive finite float or a bound of the duration that is not
- *         finite. sq and seg untouched on error.
+ *         finite. sq untouched on error, seg too but on DH_ERR_OVERFLOW
+ *         (then scratch: the paths' rates are held in it).
  */
 dh_status dh_blend_seq_plan_jerk_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t n,
                                      const float *radius, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jerk);
