@@ -798,7 +798,7 @@ dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32
     return DH_OK;
 }
 
-/* ---- jerk-limited blended sequences of lines ------------------------ */
+/* ---- jerk-limited blended sequences of lines and arcs --------------- */
 
 /* The jerk limits: DH_ERR_NAN for a NaN/Inf one, DH_ERR_ARG for one
  * <= 0 */
@@ -1191,8 +1191,6 @@ static DH_NOINLINE void jseq_cost(const jseq_corner *c, int i)
     c->g[0]->dev = (i == 0) ? x : c->g[0]->dev + x;
 }
 
-
-
 /* the overlap tb of the corner c (0: at rest): tb1 = tb0 = tb, the s'
  * and s covered at its inner ends (u1, e1 of g[0]; u0, e0 of g[1]) and
  * g[0]->dev, the bound L1 e1 + L2 e0 of the distance from the corner */
@@ -1403,7 +1401,7 @@ void dh_blend_pose_rot_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat
 
 
 
-/* ---- the queue's jerk-limited blended lines (dh_queue.c) ------------ */
+/* ---- the queue's jerk-limited blended lines and arcs (dh_queue.c) --- */
 
 void dh_blend_jrates_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
                           const dh_cart_jerk_f32 *jk)
