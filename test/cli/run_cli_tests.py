@@ -93,6 +93,21 @@ def window_jerk(pts, w, dt):
     return jw
 
 
+def check_jerk(what, pts, dt, rob, jerk, w=25):
+    """the jerk of the tool points by third differences over w periods
+    within jerk (1e-3 relative) plus the rounding: each tool point is
+    within e of its path point (the tracker's default tolerance 2e-6 L, L
+    the sum of |a| and |d|, plus the float FK's 1e-6) and a third
+    difference of four such points carries up to 8 e; returns the jerk
+    and w"""
+    e = 2e-6 * sum(abs(j['a']) + abs(j['d']) for j in rob['joints']) + 1e-6
+    jw = window_jerk(pts, w, dt)
+    slack = 8.0 * e / (w * dt) ** 3
+    check(jw <= jerk * (1 + 1e-3) + slack, '%s: jerk %.6g over %d periods beyond %g + %.3g' %
+          (what, jw, w, jerk, slack))
+    return jw, w
+
+
 def check_rates(what, pts, dt, speed, accel, w=20):
     """the speed and acceleration of the points over w periods within speed
     and accel (1e-3 relative, plus the rounding of positions 2e-6 apart)"""
@@ -1787,17 +1802,8 @@ def group_move(seed, tmp):
         off = max(math.sqrt(sum((p[i] - p0[i] - sum((p[k] - p0[k]) * dp[k] for k in range(3)) / (L * L) * dp[i]) ** 2
                                 for i in range(3))) for p in pts)
         check(off <= 1e-5, 'move --jerk line: the tool %.3g off the line' % off)
-        # each tool point is within e of its path point: the tracker's
-        # default tolerance 2e-6 L (L the sum of |a| and |d|) plus the float
-        # FK's error it is measured with (1e-6); a third difference of four
-        # such points carries up to 8 e of them, so the windows are long
-        # enough (25 periods) for that to be a small part of J
-        e = 2e-6 * sum(abs(j['a']) + abs(j['d']) for j in rob['joints']) + 1e-6
-        w = 25
-        jw = window_jerk(pts, w, dt)
-        slack = 8.0 * e / (w * dt) ** 3
-        check(jw <= jerk * (1 + 1e-3) + slack, 'move --jerk line: jerk %.6g over %d periods beyond %g + %.3g' %
-              (jw, w, jerk, slack))
+        # windows of 25 periods: the rounding's 8 e a small part of J
+        jw, w = check_jerk('move --jerk line', pts, dt, rob, jerk)
         F, E = ref_fk(rob, jl[-1][1]), B
         pe = max(abs(F[i][3] - E[i][3]) for i in range(3))
         check(pe <= 5e-6 and rot_angle(F, E) <= 5e-5, 'move --jerk line: last line %.3g, %.3g rad from the end' %
@@ -1919,12 +1925,7 @@ def group_move(seed, tmp):
         check(worst <= R + 1e-5 and off > 1e-4, 'move --blend --jerk square: off the sides %.3g, %.6g from a '
               'corner (radius %g)' % (off, worst, R))
         vw, aw, w = check_rates('move --blend --jerk square', pts, dt, speed, accel)
-        e = 2e-6 * sum(abs(j['a']) + abs(j['d']) for j in rob['joints']) + 1e-6
-        wj = 25
-        jw = window_jerk(pts, wj, dt)
-        slack = 8.0 * e / (wj * dt) ** 3
-        check(jw <= jerk * (1 + 1e-3) + slack, 'move --blend --jerk square: jerk %.6g over %d periods beyond %g + '
-              '%.3g' % (jw, wj, jerk, slack))
+        jw, wj = check_jerk('move --blend --jerk square', pts, dt, rob, jerk)
         F = ref_fk(rob, jrows[-1][1])
         pe = max(abs(F[i][3] - p0[i]) for i in range(3))
         check(pe <= 5e-6, 'move --blend --jerk square: last line %.3g from the end' % pe)
@@ -2011,12 +2012,7 @@ def group_move(seed, tmp):
         check(worst <= R + 1e-5 and off > 1e-4, 'move --blend --jerk line-arc-line: off the path %.3g, %.6g from a '
               'corner (radius %g)' % (off, worst, R))
         vw, aw, w = check_rates('move --blend --jerk line-arc-line', pts, dt, speed, accel)
-        e = 2e-6 * sum(abs(j['a']) + abs(j['d']) for j in rob['joints']) + 1e-6
-        wj = 25
-        jw = window_jerk(pts, wj, dt)
-        slack = 8.0 * e / (wj * dt) ** 3
-        check(jw <= jerk * (1 + 1e-3) + slack, 'move --blend --jerk line-arc-line: jerk %.6g over %d periods beyond '
-              '%g + %.3g' % (jw, wj, jerk, slack))
+        jw, wj = check_jerk('move --blend --jerk line-arc-line', pts, dt, rob, jerk)
         F = ref_fk(rob, lrows[-1][1])
         pe = max(abs(F[i][3] - c3[i]) for i in range(3))
         check(pe <= 5e-6, 'move --blend --jerk line-arc-line: last line %.3g from the end' % pe)

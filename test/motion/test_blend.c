@@ -708,16 +708,22 @@ static void seq_check_all(const chain *c, const float *radius, const dh_cart_lim
     src_limits(&src, c->S, ang > 0.0, lim);
 }
 
+static void jseq_check_all(const chain *c, const float *radius, const dh_cart_limits_f32 *lim,
+                           const dh_cart_jerk_f32 *jk, const dh_blend_seq_f32 *sq);
+
 /* random chains of lines (arcs 0) or of lines and arcs (arcs 1: each
- * segment an arc with probability 1/2) */
-static void sequences(int arcs)
+ * segment an arc with probability 1/2), planned without a jerk limit
+ * (jerk 0) or with one (jerk 1: dh_blend_seq_plan_jerk_f32, line-arc,
+ * arc-line and arc-arc corners; some corner with an arc blended) */
+static void sequences(int arcs, int jerk)
 {
-    int it, k, n = DHT_ITER(20);
+    int it, k, n = DHT_ITER(20), arcc = 0;
     for (it = 0; it < n; it++) {
         chain c;
         dh_blend_seg_f32 seg[NSEQ];
         dh_blend_seq_f32 sq;
         dh_cart_limits_f32 lim;
+        dh_cart_jerk_f32 jk = { 0.0f, 0.0f };
         float radius[NSEQ - 1];
         int nl = 2 + (int)(dht_rand_u32() % (NSEQ - 1));
         make_chain(&c, nl, 60.0, it % 4 == 1, it % 4 == 2);
@@ -727,23 +733,44 @@ static void sequences(int arcs)
         lim.amax = (float)dht_rand_uniform(1.0, 10.0);
         lim.wmax = (float)dht_rand_uniform(30.0, 90.0);
         lim.wdmax = (float)dht_rand_uniform(300.0, 2000.0);
+        if (jerk) {
+            jk.jmax = (float)dht_rand_uniform(5.0, 100.0);
+            jk.wjmax = (float)dht_rand_uniform(3000.0, 30000.0);
+        }
         for (k = 0; arcs && k < nl; k++) {
             if (dht_rand_u32() % 2u == 0u) arc_of(&c.p[k]);
         }
-        DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, (uint32_t)nl, radius, &lim), DH_OK);
+        if (jerk) {
+            DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, (uint32_t)nl, radius, &lim, &jk), DH_OK);
+        } else {
+            DHT_EQ_INT(dh_blend_seq_plan_f32(&sq, seg, c.p, (uint32_t)nl, radius, &lim), DH_OK);
+        }
         DHT_TRUE(sq.n == (uint32_t)nl && sq.seg == seg && sq.p == c.p);
-        seq_check_all(&c, radius, &lim, &sq);
+        for (k = 0; k + 1 < nl; k++) {
+            if (seg[k].tb1 > 0.0f && (c.p[k].kind == (uint32_t)DH_PATH_ARC || c.p[k + 1].kind == (uint32_t)DH_PATH_ARC))
+                arcc++;
+        }
+        if (jerk)
+            jseq_check_all(&c, radius, &lim, &jk, &sq);
+        else
+            seq_check_all(&c, radius, &lim, &sq);
     }
+    if (arcs && jerk) DHT_TRUE(arcc > 0);
 }
 
 static void random_sequences(void)
 {
-    sequences(0);
+    sequences(0, 0);
 }
 
 static void random_arc_sequences(void)
 {
-    sequences(1);
+    sequences(1, 0);
+}
+
+static void jerk_arc_sequences(void)
+{
+    sequences(1, 1);
 }
 
 /* one line is its rest-to-rest trapezoid; radius 0 everywhere runs the
@@ -981,42 +1008,6 @@ static void jerk_sequences_ur5(void)
 static void jerk_sequences_panda(void)
 {
     jerk_sequences(&dhs_panda_m);
-}
-
-/* random jerk-limited chains of lines and arcs (each segment an arc with
- * probability 1/2: line-arc, arc-line and arc-arc corners) */
-static void jerk_arc_sequences(void)
-{
-    int it, k, n = DHT_ITER(20), arcc = 0;
-    for (it = 0; it < n; it++) {
-        chain c;
-        dh_blend_seg_f32 seg[NSEQ];
-        dh_blend_seq_f32 sq;
-        dh_cart_limits_f32 lim;
-        dh_cart_jerk_f32 jk;
-        float radius[NSEQ - 1];
-        int nl = 2 + (int)(dht_rand_u32() % (NSEQ - 1));
-        make_chain(&c, nl, 60.0, it % 4 == 1, it % 4 == 2);
-        for (k = 0; k + 1 < nl; k++)
-            radius[k] = (dht_rand_u32() % 5u == 0u) ? 0.0f : (float)pow(10.0, dht_rand_uniform(-3.0, -1.0));
-        lim.vmax = (float)dht_rand_uniform(0.1, 1.0);
-        lim.amax = (float)dht_rand_uniform(1.0, 10.0);
-        lim.wmax = (float)dht_rand_uniform(30.0, 90.0);
-        lim.wdmax = (float)dht_rand_uniform(300.0, 2000.0);
-        jk.jmax = (float)dht_rand_uniform(5.0, 100.0);
-        jk.wjmax = (float)dht_rand_uniform(3000.0, 30000.0);
-        for (k = 0; k < nl; k++) {
-            if (dht_rand_u32() % 2u == 0u) arc_of(&c.p[k]);
-        }
-        DHT_EQ_INT(dh_blend_seq_plan_jerk_f32(&sq, seg, c.p, (uint32_t)nl, radius, &lim, &jk), DH_OK);
-        for (k = 0; k + 1 < nl; k++) {
-            if (seg[k].tb1 > 0.0f && (c.p[k].kind == (uint32_t)DH_PATH_ARC || c.p[k + 1].kind == (uint32_t)DH_PATH_ARC))
-                arcc++;
-        }
-        jseq_check_all(&c, radius, &lim, &jk, &sq);
-    }
-    /* some corner with an arc blended */
-    DHT_TRUE(arcc > 0);
 }
 
 /* random jerk-limited sequences whose lines turn the tool about the world

@@ -91,20 +91,6 @@ static void check_fd(dhm_fd *fd, const dh_mat4_f32 *T, const dh_cart_limits_f32 
     }
 }
 
-/* the path of segment k in the queue's ring: the item from corner k to
- * corner k + 1 (NULL when none) */
-static const dh_path_f32 *seg_path(uint32_t k)
-{
-    uint32_t i;
-    for (i = 0; i < CAP; i++) {
-        const dh_path_f32 *p = &items[i].path;
-        if (items[i].kind == (uint32_t)DH_MOVE_PATH && memcmp(&p->A.m[3][0], cp[k], sizeof cp[k]) == 0 &&
-            memcmp(&p->B.m[3][0], cp[k + 1u], sizeof cp[k]) == 0)
-            return p;
-    }
-    return NULL;
-}
-
 /* the target on its line or arc outside an overlap, within the corner's
  * radius inside one; 1 when inside */
 static int check_path(const dh_mat4_f32 *T, uint32_t n, double S, long call)
@@ -117,7 +103,7 @@ static int check_path(const dh_mat4_f32 *T, uint32_t n, double S, long call)
         return 1;
     }
     if (isarc[k]) {
-        p = seg_path(k);
+        p = dhm_seg_path(items, CAP, (const float (*)[3])cp, k);
         DHT_TRUE(p != NULL);
         d = (p != NULL) ? dhm_arc_dist(p, x) : INFINITY;
     } else {
