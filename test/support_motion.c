@@ -121,6 +121,18 @@ void dhm_rotvec(const float *qa, const float *qb, double v[3])
     for (i = 0; i < 3; i++) v[i] = (n > 0.0) ? ((w < 0.0) ? -1.0 : 1.0) * th * x[i] / n * RAD2DEG : 0.0;
 }
 
+const dh_path_f32 *dhm_seg_path(const dh_queue_item_f32 *items, uint32_t cap, const float (*cp)[3], uint32_t k)
+{
+    uint32_t i;
+    for (i = 0; i < cap; i++) {
+        const dh_path_f32 *p = &items[i].path;
+        if (items[i].kind == (uint32_t)DH_MOVE_PATH && memcmp(&p->A.m[3][0], cp[k], sizeof cp[k]) == 0 &&
+            memcmp(&p->B.m[3][0], cp[k + 1u], sizeof cp[k]) == 0)
+            return p;
+    }
+    return NULL;
+}
+
 int dhm_draw_via(const float a[3], const float b[3], float via[3])
 {
     double d[3], e[3], h = 0.0, c = 0.0, x;

@@ -31,6 +31,10 @@ double dhm_seg_dist(const float a[3], const float b[3], const double x[3]);
  * p_A - u0, radius |u0|, in the plane of normal n, within its sweep; beyond
  * the sweep the distance from the nearer end) */
 double dhm_arc_dist(const dh_path_f32 *p, const double x[3]);
+/* the path of segment k (corner cp[k] to corner cp[k + 1]) among the cap
+ * queue items (a path move whose ends' positions are those bit for bit),
+ * NULL when none */
+const dh_path_f32 *dhm_seg_path(const dh_queue_item_f32 *items, uint32_t cap, const float (*cp)[3], uint32_t k);
 /* unit quaternion (w, x, y, z) of T's rotation, in double (Shepperd) */
 void dhm_quat_of(const dh_mat4_f32 *T, double q[4]);
 /* v = the rotation vector (degrees) of Rb Ra^T, from quaternions */

@@ -1809,8 +1809,11 @@ static BT_NOINLINE void bt_queue_q(const bt_move *mv, dh_robot *r, dh_qpos radiu
  * ("queue blend period f32"), stopped at the 100th period and resumed at
  * rest; after each period, untimed for it, the closed-form solve of its
  * frame with the tracker's configuration before the period as q_ref
- * ("dh_ikc_f32 queue blend", the limit's reference) */
-static BT_NOINLINE void bt_queue_f32(const bt_move *mv, dh_robot *r, float radius)
+ * ("dh_ikc_f32 queue blend", the limit's reference). With jk (not NULL)
+ * the second path is the arc through FK(qa + 3 dq / 4)'s position and
+ * both are appended by dh_queue_add_path_blend_jerk_f32 ("queue jerk arc
+ * period f32", "dh_ikc_f32 queue jerk arc"). */
+static BT_NOINLINE void bt_queue_f32(const bt_move *mv, dh_robot *r, float radius, const dh_cart_jerk_f32 *jk)
 {
     dh_track_f32 *const t = &bt_mem.t.tf;
     dh_queue_f32 *const qu = &bt_mem.t.qu;
@@ -1823,7 +1826,7 @@ static BT_NOINLINE void bt_queue_f32(const bt_move *mv, dh_robot *r, float radiu
     uint32_t states[3] = { 0u, 0u, 0u }, none[3] = { 0u, 0u, 0u };
     uint32_t st, n = 0u, ns, j;
     uint64_t t0, t1;
-    float q[6], qref[6];
+    float q[6], qref[6], via[3];
     st = bt_move_robot(mv, r, 1.0f);
     st |= (uint32_t)dh_ikc_analyse_f32(r, &bt_mem.t.mf);
     st |= (uint32_t)dh_track_init_f32(t, r, &bt_mem.t.mf, mv->qa, 1e-3f);
@@ -1837,13 +1840,29 @@ static BT_NOINLINE void bt_queue_f32(const bt_move *mv, dh_robot *r, float radiu
     }
     st |= (uint32_t)dh_fk_f32(r, q, &B);
     st |= (uint32_t)dh_path_line_f32(&qu->mv.path, &A, &B);
-    st |= (uint32_t)dh_queue_add_path_blend_f32(qu, &qu->mv.path, &lim, radius);
+    if (jk == NULL) {
+        st |= (uint32_t)dh_queue_add_path_blend_f32(qu, &qu->mv.path, &lim, radius);
+    } else {
+        st |= (uint32_t)dh_queue_add_path_blend_jerk_f32(qu, &qu->mv.path, &lim, jk, radius);
+    }
+    for (j = 0; j < 6u; j++) {
+        q[j] = mv->qa[j] + 0.75f * mv->dq[j];
+    }
+    st |= (uint32_t)dh_fk_f32(r, q, &A);
+    for (j = 0; j < 3u; j++) {
+        via[j] = DH_M4(&A, j, 3);
+    }
     for (j = 0; j < 6u; j++) {
         q[j] = mv->qa[j] + mv->dq[j];
     }
     st |= (uint32_t)dh_fk_f32(r, q, &A);
-    st |= (uint32_t)dh_path_line_f32(&qu->mv.path, &B, &A);
-    st |= (uint32_t)dh_queue_add_path_blend_f32(qu, &qu->mv.path, &lim, 0.0f);
+    if (jk == NULL) {
+        st |= (uint32_t)dh_path_line_f32(&qu->mv.path, &B, &A);
+        st |= (uint32_t)dh_queue_add_path_blend_f32(qu, &qu->mv.path, &lim, 0.0f);
+    } else {
+        st |= (uint32_t)dh_path_arc_f32(&qu->mv.path, &B, via, &A);
+        st |= (uint32_t)dh_queue_add_path_blend_jerk_f32(qu, &qu->mv.path, &lim, jk, 0.0f);
+    }
     qrep.last = 0;
     while (st == 0u && qrep.last == 0 && n < 16u * BT_NTRK) {
         if (n == 100u) {
@@ -1874,8 +1893,10 @@ static BT_NOINLINE void bt_queue_f32(const bt_move *mv, dh_robot *r, float radiu
     if (qrep.last == 0) {
         st |= 0x100u;   /* the queue did not finish within 16 x BT_NTRK periods */
     }
-    bt_track_row("queue blend period f32", mv->robot, "m", n, &aper, states, st);
-    bt_track_row("dh_ikc_f32 queue blend", mv->robot, "m", n, &aik, none, st);
+    bt_track_row((jk == NULL) ? "queue blend period f32" : "queue jerk arc period f32", mv->robot, "m", n, &aper,
+                 states, st);
+    bt_track_row((jk == NULL) ? "dh_ikc_f32 queue blend" : "dh_ikc_f32 queue jerk arc", mv->robot, "m", n, &aik, none,
+                 st);
 }
 #endif
 
@@ -1903,7 +1924,8 @@ static BT_NOINLINE void bt_track(void)
         bt_track_f32(&bt_moves[m], &bt_puma_m, &null);
         bt_period_f32(&bt_moves[m], &bt_puma_m, NULL);
         bt_period_f32(&bt_moves[m], &bt_puma_m, &jerk_f);
-        bt_queue_f32(&bt_moves[m], &bt_puma_m, 0.02f);
+        bt_queue_f32(&bt_moves[m], &bt_puma_m, 0.02f, NULL);
+        bt_queue_f32(&bt_moves[m], &bt_puma_m, 0.02f, &jerk_f);
 #endif
         bt_track_q(&bt_moves[m], &bt_puma_mm, &null);
         bt_period_q(&bt_moves[m], &bt_puma_mm, NULL);

@@ -541,7 +541,11 @@ def main():
       "a second one to the FK of the tracking move's end, appended by `dh_queue_add_path_blend_*` "
       "with their corner blended within 20 mm (`queue blend period`), beside the closed-form "
       "solve of each period's frame with the tracker's configuration before the period as q_ref "
-      "(`dh_ikc_f32 queue blend`, after the period, untimed for it).")
+      "(`dh_ikc_f32 queue blend`, after the period, untimed for it). The float jerk-limited "
+      "twin (`queue jerk arc period f32`, `dh_ikc_f32 queue jerk arc`): the same first line and "
+      "an arc through the FK of three quarters of the tracking move to its end, both appended by "
+      "`dh_queue_add_path_blend_jerk_f32` within the jerk limits above, their line-arc corner "
+      "blended within 20 mm.")
     w("")
     w("| goal | limit | -O2 | -Os | -Os DH_SMALL | met at -O2 (mean) | met at -O2 (largest call) |")
     w("|---|---|---:|---:|---:|---|---|")

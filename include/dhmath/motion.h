@@ -647,6 +647,7 @@ typedef struct {
     float k1;  /**< jerk-limited: |d3s/dt3| of the deceleration to rest (1/s^3) */
     float tj1; /**< jerk-limited: duration of each jerk phase of the acceleration (s) */
     float tj3; /**< jerk-limited: duration of each jerk phase of the deceleration (s) */
+    float V;   /**< jerk-limited: the path's own bound of ds/dt (1/s; a and j its own bounds of |d2s/dt2| and |d3s/dt3|) */
 } dh_blend_seg_f32;
 
 /* ======================================================================
@@ -673,7 +674,7 @@ typedef struct {
     float vmax[DH_MAX_JOINTS];     /**< joint move: velocity limits */
     float amax[DH_MAX_JOINTS];     /**< joint move: acceleration limits */
     float jmax[DH_MAX_JOINTS];     /**< joint move: jerk limits (when jerk is 1) */
-    uint32_t jerk;                 /**< 1 when jerk-limited: joint move with jmax, path move of dh_queue_add_path_jerk_f32 with jerk; 2: line of dh_queue_add_path_blend_jerk_f32 */
+    uint32_t jerk;                 /**< 1 when jerk-limited: joint move with jmax, path move of dh_queue_add_path_jerk_f32 with jerk; 2: line or arc of dh_queue_add_path_blend_jerk_f32 */
     uint32_t n;                    /**< joint move: number of joints */
     uint32_t kind;                 /**< DH_MOVE_JOINT or DH_MOVE_PATH */
     dh_cart_limits_f32 lim;        /**< path move: its limits */
@@ -681,8 +682,8 @@ typedef struct {
     float ctb;                     /**< path move: overlap of that corner (s; 0: at rest), planned when the next is appended */
     float cb[2];                   /**< path move: the corner's tail accelerations of s, its own and the next move's */
     float rate[2];                 /**< path move: the bounds of s' and s'' of its blended scalings (arcs: beside the centripetal acceleration) */
-    dh_cart_jerk_f32 jk;           /**< line of dh_queue_add_path_blend_jerk_f32 (jerk 2): its jerk limits */
-    dh_blend_seg_f32 seg;          /**< line of dh_queue_add_path_blend_jerk_f32: its jerk-limited scaling of s with its corners as planned so far */
+    dh_cart_jerk_f32 jk;           /**< line or arc of dh_queue_add_path_blend_jerk_f32 (jerk 2): its jerk limits */
+    dh_blend_seg_f32 seg;          /**< line or arc of dh_queue_add_path_blend_jerk_f32: its jerk-limited scaling of s with its corners as planned so far */
 } dh_queue_item_f32;
 
 /**
@@ -835,7 +836,7 @@ dh_status dh_queue_add_path_blend_f32(dh_queue_f32 *qu, const dh_path_f32 *p, co
  * and resume"), never beyond B. Resume: a seven-phase profile of s from
  * where it stopped to 1 within the first plan's peaks of s', s'' and
  * s'''. Its corners with the moves before and after it run at rest
- * (dh_queue_add_path_blend_jerk_f32 blends jerk-limited lines).
+ * (dh_queue_add_path_blend_jerk_f32 blends jerk-limited lines and arcs).
  * @param qu, p, lim as dh_queue_add_path_f32 (p, lim and jerk copied).
  * @param jerk jerk limits, each finite and > 0; NULL: the move of
  *        dh_queue_add_path_f32.
@@ -849,13 +850,13 @@ dh_status dh_queue_add_path_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, con
                                      const dh_cart_jerk_f32 *jerk);
 
 /**
- * @brief Appends a jerk-limited line along p within lim and jerk whose
- *        corner with the NEXT such line is blended within radius, as
- *        dh_blend_seq_plan_jerk_f32 blends a sequence's corners.
+ * @brief Appends a jerk-limited line or arc along p within lim and jerk
+ *        whose corner with the NEXT such path is blended within radius,
+ *        as dh_blend_seq_plan_jerk_f32 blends a sequence's corners.
  * The line's scaling of s is dh_blend_seq_plan_jerk_f32's (seven phases),
  * planned again when the next line is appended, by the same corner rule
  * (docs/design.md, "Jerk-limited blended corners in the queue"). The
- * corner is blended when both are lines of this function with equal
+ * corner is blended when both are paths of this function with equal
  * limits, the next starts at p->B, is queued when this one starts, the
  * blend is shorter and keeps this line's peak speed; else at rest.
  * Speed, TOTAL acceleration, angular speed and acceleration within lim
@@ -865,14 +866,14 @@ dh_status dh_queue_add_path_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, con
  * waits for its end (qu->stopq; the tool within radius of the corner),
  * then the next line brakes alone with jerk +-its bound; a resume runs a
  * line from rest to its end, its corner after at rest. Outside the
- * overlaps the target is on the line as dh_path_eval_f32's.
+ * overlaps the target is on the path as dh_path_eval_f32's (an arc's
+ * centripetal terms are within the totals above).
  * @param qu, p, lim as dh_queue_add_path_f32 (p, lim and jerk copied).
  * @param jerk jerk limits, each finite and > 0.
  * @param radius blend radius (p's length unit), finite and >= 0.
  * @return DH_OK; DH_ERR_LIMIT when the queue is full (checked first);
- *         DH_ERR_NAN for a NaN/Inf radius, DH_ERR_ARG for radius < 0 or
- *         an arc (dh_queue_add_path_jerk_f32 runs an arc, at rest); then
- *         the statuses of dh_queue_add_path_jerk_f32. On error qu and its
+ *         DH_ERR_NAN for a NaN/Inf radius, DH_ERR_ARG for radius < 0;
+ *         then the statuses of dh_queue_add_path_jerk_f32. On error qu and its
  *         queued moves are untouched (the free item is overwritten).
  */
 dh_status dh_queue_add_path_blend_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
@@ -1136,23 +1137,22 @@ dh_status dh_blend_seq_plan_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, con
 dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32 *T);
 
 /**
- * @brief sq = the n LINES p[0..n-1] one after the other, each a
+ * @brief sq = the n lines and arcs p[0..n-1] one after the other, each a
  *        jerk-limited scaling of s (ramped acceleration, |s'''| within
- *        jmax / L and wjmax / angle), each corner k blended within
- *        radius[k]: line k's deceleration and line k+1's acceleration
- *        superposed for tb, with L_i |s''| <= amax / max(1, |d2 - d1|)
- *        and L_i |s'''| <= jmax / max(1, |d1 + d2|) in them (d_i the
- *        directions), tb the longest that keeps the tool within radius[k]
- *        of the corner and the rotation's cross terms within 1/64 of
- *        wdmax and wjmax (docs/design.md, "Jerk-limited blended
- *        sequences"). Speed, TOTAL acceleration and jerk, angular speed,
+ *        jmax / L and wjmax / angle; an arc's rates dh_path_move_jerk_f32's),
+ *        each corner k blended within radius[k]: path k's deceleration
+ *        and path k+1's acceleration superposed for tb, with
+ *        L_i |s''| <= amax / max(1, |d2 - d1|) and
+ *        L_i |s'''| <= jmax / max(1, |d1 + d2|) in them (d_i the
+ *        directions; at an arc 3/4 of that with the tangents' turn, the
+ *        centripetal terms within 1/4), tb the longest that keeps the tool
+ *        within radius[k] of the corner and the rotation's cross terms
+ *        within 1/64 of wdmax and wjmax (docs/design.md, "Jerk-limited
+ *        blended sequences"). Speed, TOTAL acceleration and jerk, angular speed,
  *        acceleration and jerk within lim and jerk up to float rounding
  *        (1e-6 relative); seg[k].dev <= radius[k]; evaluated by
  *        dh_blend_seq_eval_f32 (same position bounds).
- * @param sq, seg, p, n, radius, lim as dh_blend_seq_plan_f32, every p[k]
- *        a line: an arc's tail adds the centripetal jerk (L s')^3 / rho^2
- *        + 3 L^2 s' s'' / rho along turning tangents, which no proved
- *        bound through tb holds yet, so arcs are refused.
+ * @param sq, seg, p, n, radius, lim as dh_blend_seq_plan_f32.
  * @param jerk jmax (TOTAL linear jerk) and wjmax, finite and > 0 (not
  *        NULL: dh_blend_seq_plan_f32 plans without a jerk limit).
  * A corner runs at rest (tb 0, the lines' own bounds) when its radius is
@@ -1160,10 +1160,11 @@ dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32
  * time its lowered bounds cost; all do when the sequence would not be
  * shorter than its lines' rest-to-rest seven-phase scalings back to back.
  * @return DH_OK; dh_blend_seq_plan_f32's statuses in its order, then
- *         DH_ERR_NAN for a NaN/Inf jerk limit, DH_ERR_ARG for one <= 0 or
- *         an arc; DH_ERR_OVERFLOW for a bound of s that is not a
+ *         DH_ERR_NAN for a NaN/Inf jerk limit, DH_ERR_ARG for one <= 0;
+ *         DH_ERR_OVERFLOW for a bound of s that is not a
  *         positive finite float or a bound of the duration that is not
- *         finite. sq and seg untouched on error.
+ *         finite. sq untouched on error, seg too but on DH_ERR_OVERFLOW
+ *         (then scratch: the paths' rates are held in it).
  */
 dh_status dh_blend_seq_plan_jerk_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t n,
                                      const float *radius, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jerk);

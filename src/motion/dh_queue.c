@@ -266,7 +266,8 @@ static DH_NOINLINE void queue_item_jline(dh_queue_item_f32 *it, const dh_cart_je
 {
     it->jerk = 2u;
     it->jk = *jerk;
-    dh_blend_jline_f32_(&it->seg, &it->path, &it->lim, &it->jk, 1.0f);
+    dh_blend_jrates_f32_(&it->seg, &it->path, &it->lim, &it->jk);
+    dh_blend_jline_f32_(&it->seg, &it->seg, 1.0f);
 }
 
 /* The line's checks as dh_queue_add_path_jerk_f32's (its profile planned
@@ -284,7 +285,6 @@ dh_status dh_queue_add_path_blend_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *
     DH_ASSERT(qu != NULL && p != NULL && lim != NULL && jerk != NULL);
     if (qu->count >= qu->cap) return DH_ERR_LIMIT;
     st = queue_radius(radius);
-    if (st == DH_OK && p->kind != (uint32_t)DH_PATH_LINE) st = DH_ERR_ARG;
     it = queue_slot(qu, qu->count);
     if (st == DH_OK) st = dh_path_move_jerk_f32(&it->prof, p, lim, jerk);
     if (st == DH_OK) st = queue_add_item(qu, p, lim, &it->prof);
@@ -478,7 +478,7 @@ static DH_NOINLINE void queue_jline(dh_queue_f32 *qu, uint32_t i, float s0)
     const dh_queue_item_f32 *it = queue_at(qu, i);
     dh_blend_seg_f32 *g = &qu->bl[i];
     if (s0 > 0.0f) {
-        dh_blend_jline_f32_(g, &it->path, &it->lim, &it->jk, 1.0f - s0);
+        dh_blend_jline_f32_(g, &it->seg, 1.0f - s0);
     } else {
         *g = it->seg;
         g->tb0 = 0.0f;
@@ -514,7 +514,7 @@ static DH_NOINLINE void queue_blend_two(dh_queue_f32 *qu, float s0, float s1)
     const dh_queue_item_f32 *it = queue_at(qu, 0u);
     queue_seg_rest(&qu->bl[0]);
     if (it->jerk == 2u)
-        dh_blend_jline_f32_(&qu->bl[0], &it->path, &it->lim, &it->jk, 1.0f - s0);
+        dh_blend_jline_f32_(&qu->bl[0], &it->seg, 1.0f - s0);
     else
         (void)dh_blend_seg_plan_f32_(&qu->bl[0], it->rate, 1.0f - s0);
     queue_seg_rest(&qu->bl[1]);

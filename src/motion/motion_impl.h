@@ -39,6 +39,15 @@ dh_status dh_motion_bound_f32_(float *sl, float num, float den);
  * dh_path_move_f32 takes them (dh_path.c); the blends' rates (dh_blend.c) */
 void dh_motion_arc_rates_f32_(const dh_path_f32 *p, float amax, float *V, float *At);
 
+/* For the arc p (radius > 0) within lim and jk: *V (the speed bound so
+ * far, lowered), *At, *Jt the tool point's speed, tangential
+ * acceleration and tangential jerk bounds that keep its total
+ * acceleration within amax and total jerk within jmax, as
+ * dh_path_move_jerk_f32 takes them (dh_path.c); the jerk-limited blends'
+ * rates (dh_blend.c) */
+void dh_motion_arc_jrates_f32_(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk,
+                               float *V, float *At, float *Jt);
+
 /* T's position column (rows 0-2) = p(s) less p's end (end 0: p_A,
  * s = x; end 1: p_B, s = 1 - x) for x in [0, 1], an arc from its nearer
  * end (dh_path.c); the superposition of blends (dh_blend.c) */
@@ -106,13 +115,18 @@ void dh_blend_pose_rot_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat
 void dh_blend_compose_f32_(const dh_quat_f32 *qa2, dh_mat4_f32 *T);
 void dh_blend_pose_pos_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, float x1, float x2, dh_mat4_f32 *T);
 
+/* g->V, g->a, g->j = the bounds of s', s'', s''' of the line or arc p
+ * within lim and jk (dh_blend_seq_plan_jerk_f32's rates of a path: an
+ * arc's leave room for its centripetal terms), all 0 without motion */
+void dh_blend_jrates_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                          const dh_cart_jerk_f32 *jk);
+
 /* g = the jerk-limited scaling of s over the distance D (s from 1 - D to
- * 1) of the line p within lim and jk, at rest at both ends (its own
- * bounds of s'' and s''', no overlap): dh_blend_seq_plan_jerk_f32's
- * scaling of a line, which dh_blend_seg_s_f32_ and dh_blend_seg_rate_f32_
- * evaluate (g->j > 0) */
-void dh_blend_jline_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
-                         const dh_cart_jerk_f32 *jk, float D);
+ * 1) of a path with the rates r->V, r->a, r->j (dh_blend_jrates_f32_; r
+ * may be g), at rest at both ends (its own bounds of s'' and s''', no
+ * overlap): dh_blend_seq_plan_jerk_f32's scaling of a path, which
+ * dh_blend_seg_s_f32_ and dh_blend_seg_rate_f32_ evaluate (g->j > 0) */
+void dh_blend_jline_f32_(dh_blend_seg_f32 *g, const dh_blend_seg_f32 *r, float D);
 
 /* The corner of the queued jerk-limited lines i1 then i2 (their paths
  * p1, p2; i1's lim, jk and radius) as the queue blends it
@@ -120,7 +134,7 @@ void dh_blend_jline_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_car
  * i1->seg p1's scaling as planned (its start as set, its end at rest),
  * i2->seg p2's (dh_blend_jline_f32_, D 1); both planned again with the
  * corner's lowered bounds and overlap, tb returned, or left at rest at
- * the corner (0 returned) when it is not two lines that join, radius is
+ * the corner (0 returned) when it is not two paths that join, radius is
  * 0, the blend is not shorter, or it would change p1's speed while p1's
  * start is blended. */
 float dh_blend_jcorner_f32_(dh_queue_item_f32 *i1, dh_queue_item_f32 *i2);

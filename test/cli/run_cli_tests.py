@@ -93,6 +93,21 @@ def window_jerk(pts, w, dt):
     return jw
 
 
+def check_jerk(what, pts, dt, rob, jerk, w=25):
+    """the jerk of the tool points by third differences over w periods
+    within jerk (1e-3 relative) plus the rounding: each tool point is
+    within e of its path point (the tracker's default tolerance 2e-6 L, L
+    the sum of |a| and |d|, plus the float FK's 1e-6) and a third
+    difference of four such points carries up to 8 e; returns the jerk
+    and w"""
+    e = 2e-6 * sum(abs(j['a']) + abs(j['d']) for j in rob['joints']) + 1e-6
+    jw = window_jerk(pts, w, dt)
+    slack = 8.0 * e / (w * dt) ** 3
+    check(jw <= jerk * (1 + 1e-3) + slack, '%s: jerk %.6g over %d periods beyond %g + %.3g' %
+          (what, jw, w, jerk, slack))
+    return jw, w
+
+
 def check_rates(what, pts, dt, speed, accel, w=20):
     """the speed and acceleration of the points over w periods within speed
     and accel (1e-3 relative, plus the rounding of positions 2e-6 apart)"""
@@ -1815,17 +1830,8 @@ def group_move(seed, tmp):
         off = max(math.sqrt(sum((p[i] - p0[i] - sum((p[k] - p0[k]) * dp[k] for k in range(3)) / (L * L) * dp[i]) ** 2
                                 for i in range(3))) for p in pts)
         check(off <= 1e-5, 'move --jerk line: the tool %.3g off the line' % off)
-        # each tool point is within e of its path point: the tracker's
-        # default tolerance 2e-6 L (L the sum of |a| and |d|) plus the float
-        # FK's error it is measured with (1e-6); a third difference of four
-        # such points carries up to 8 e of them, so the windows are long
-        # enough (25 periods) for that to be a small part of J
-        e = 2e-6 * sum(abs(j['a']) + abs(j['d']) for j in rob['joints']) + 1e-6
-        w = 25
-        jw = window_jerk(pts, w, dt)
-        slack = 8.0 * e / (w * dt) ** 3
-        check(jw <= jerk * (1 + 1e-3) + slack, 'move --jerk line: jerk %.6g over %d periods beyond %g + %.3g' %
-              (jw, w, jerk, slack))
+        # windows of 25 periods: the rounding's 8 e a small part of J
+        jw, w = check_jerk('move --jerk line', pts, dt, rob, jerk)
         F, E = ref_fk(rob, jl[-1][1]), B
         pe = max(abs(F[i][3] - E[i][3]) for i in range(3))
         check(pe <= 5e-6 and rot_angle(F, E) <= 5e-5, 'move --jerk line: last line %.3g, %.3g rad from the end' %
@@ -1947,12 +1953,7 @@ def group_move(seed, tmp):
         check(worst <= R + 1e-5 and off > 1e-4, 'move --blend --jerk square: off the sides %.3g, %.6g from a '
               'corner (radius %g)' % (off, worst, R))
         vw, aw, w = check_rates('move --blend --jerk square', pts, dt, speed, accel)
-        e = 2e-6 * sum(abs(j['a']) + abs(j['d']) for j in rob['joints']) + 1e-6
-        wj = 25
-        jw = window_jerk(pts, wj, dt)
-        slack = 8.0 * e / (wj * dt) ** 3
-        check(jw <= jerk * (1 + 1e-3) + slack, 'move --blend --jerk square: jerk %.6g over %d periods beyond %g + '
-              '%.3g' % (jw, wj, jerk, slack))
+        jw, wj = check_jerk('move --blend --jerk square', pts, dt, rob, jerk)
         F = ref_fk(rob, jrows[-1][1])
         pe = max(abs(F[i][3] - p0[i]) for i in range(3))
         check(pe <= 5e-6, 'move --blend --jerk square: last line %.3g from the end' % pe)
@@ -1980,36 +1981,72 @@ def group_move(seed, tmp):
     head, lrows = read_csv(out, n)
     check(rc0 == 0 and rc == 0 and err == '' and head == head_want and lrows and None not in lrows and
           all(r[2] == 'ok' for r in lrows), 'move --blend line-arc-line: rc %d %d err %r' % (rc0, rc, err))
-    if lrows and None not in lrows and rows0:
-        check(len(lrows) < len(rows0), 'move --blend line-arc-line: %d periods, at rest %d' %
-              (len(lrows), len(rows0)))
-        check_joint_limits('move --blend line-arc-line', qa, lrows, [vm] * n, [am] * n, dt, [4 * f32_ulp(360.0)] * n)
-        pts = [p0] + [[F[i][3] for i in range(3)] for F in (ref_fk(rob, r[1]) for r in lrows)]
-        # the circle through c1, via, c2 (all at height p0[2]): centre in the plane
-        (ax, ay), (bx, by), (vx, vy) = c1[:2], c2[:2], via[:2]
-        dd = 2.0 * (ax * (vy - by) + vx * (by - ay) + bx * (ay - vy))
-        ux = ((ax * ax + ay * ay) * (vy - by) + (vx * vx + vy * vy) * (by - ay) + (bx * bx + by * by) * (ay - vy)) / dd
-        uy = ((ax * ax + ay * ay) * (bx - vx) + (vx * vx + vy * vy) * (ax - bx) + (bx * bx + by * by) * (vx - ax)) / dd
-        rho = math.hypot(ax - ux, ay - uy)
+    # the circle through c1, via, c2 (all at height p0[2]): centre in the plane
+    (ax, ay), (bx, by), (vx, vy) = c1[:2], c2[:2], via[:2]
+    dd = 2.0 * (ax * (vy - by) + vx * (by - ay) + bx * (ay - vy))
+    ux = ((ax * ax + ay * ay) * (vy - by) + (vx * vx + vy * vy) * (by - ay) + (bx * bx + by * by) * (ay - vy)) / dd
+    uy = ((ax * ax + ay * ay) * (bx - vx) + (vx * vx + vy * vy) * (ax - bx) + (bx * bx + by * by) * (vx - ax)) / dd
+    rho = math.hypot(ax - ux, ay - uy)
 
-        def arc_dist(p):
-            # the arc is the part of the circle on the via point's side of the chord c1 c2 (x >= c1's)
-            if p[0] < c1[0]:
-                return min(math.sqrt(sum((p[i] - c[i]) ** 2 for i in range(3))) for c in (c1, c2))
-            return math.hypot(p[2] - p0[2], math.hypot(p[0] - ux, p[1] - uy) - rho)
-        worst, off, onp = 0.0, 0.0, 0.0
+    def arc_dist(p):
+        # the arc is the part of the circle on the via point's side of the chord c1 c2 (x >= c1's)
+        if p[0] < c1[0]:
+            return min(math.sqrt(sum((p[i] - c[i]) ** 2 for i in range(3))) for c in (c1, c2))
+        return math.hypot(p[2] - p0[2], math.hypot(p[0] - ux, p[1] - uy) - rho)
+
+    def lal_off(pts):
+        # the largest distance from the path, and from the nearer corner where off it by more than 1e-5 m
+        worst, off = 0.0, 0.0
         for p in pts:
             ds = min(seg_dist(p, p0, c1), arc_dist(p), seg_dist(p, c2, c3))
             dc = min(math.sqrt(sum((p[i] - c[i]) ** 2 for i in range(3))) for c in (c1, c2))
             off = max(off, ds)
             if ds > 1e-5:
                 worst = max(worst, dc)
+        return off, worst
+    if lrows and None not in lrows and rows0:
+        check(len(lrows) < len(rows0), 'move --blend line-arc-line: %d periods, at rest %d' %
+              (len(lrows), len(rows0)))
+        check_joint_limits('move --blend line-arc-line', qa, lrows, [vm] * n, [am] * n, dt, [4 * f32_ulp(360.0)] * n)
+        pts = [p0] + [[F[i][3] for i in range(3)] for F in (ref_fk(rob, r[1]) for r in lrows)]
+        off, worst = lal_off(pts)
         check(worst <= R + 1e-5 and off > 1e-4, 'move --blend line-arc-line: off the path %.3g, %.6g from a corner '
               '(radius %g)' % (off, worst, R))
         vw, aw, w = check_rates('move --blend line-arc-line', pts, dt, speed, accel)
         print('move --blend line-arc-line: %d periods (at rest at the corners %d), off the path %.4g m, within %.6g m '
               'of a corner there (radius %g), speed %.6g, acceleration %.6g over %d periods' %
               (len(lrows), len(rows0), off, worst, R, vw, aw, w))
+
+    # 5d. the blended line, arc, line jerk-limited (--blend with --jerk):
+    # shorter than at rest at its corners, every period ok, the joints
+    # within the tracker's limits, the tool on its line or arc or within R
+    # of a corner (and off the path somewhere), its speed and acceleration
+    # over 20 periods and its jerk (the arc's centripetal terms included)
+    # by third differences over 25 periods within their limits (the --jerk
+    # line's slack), the end reached
+    rc0, out0, err0 = run(la_args + ['--jerk', str(jerk)])
+    rc, out, err = run(la_args + ['--jerk', str(jerk), '--blend', str(R)])
+    head0, rows0 = read_csv(out0, n)
+    head, lrows = read_csv(out, n)
+    check(rc0 == 0 and rc == 0 and err == '' and head == head_want and lrows and None not in lrows and
+          all(r[2] == 'ok' for r in lrows), 'move --blend --jerk line-arc-line: rc %d %d err %r' % (rc0, rc, err))
+    if lrows and None not in lrows and rows0:
+        check(len(lrows) < len(rows0), 'move --blend --jerk line-arc-line: %d periods, at rest %d' %
+              (len(lrows), len(rows0)))
+        check_joint_limits('move --blend --jerk line-arc-line', qa, lrows, [vm] * n, [am] * n, dt,
+                           [4 * f32_ulp(360.0)] * n)
+        pts = [p0] + [[F[i][3] for i in range(3)] for F in (ref_fk(rob, r[1]) for r in lrows)]
+        off, worst = lal_off(pts)
+        check(worst <= R + 1e-5 and off > 1e-4, 'move --blend --jerk line-arc-line: off the path %.3g, %.6g from a '
+              'corner (radius %g)' % (off, worst, R))
+        vw, aw, w = check_rates('move --blend --jerk line-arc-line', pts, dt, speed, accel)
+        jw, wj = check_jerk('move --blend --jerk line-arc-line', pts, dt, rob, jerk)
+        F = ref_fk(rob, lrows[-1][1])
+        pe = max(abs(F[i][3] - c3[i]) for i in range(3))
+        check(pe <= 5e-6, 'move --blend --jerk line-arc-line: last line %.3g from the end' % pe)
+        print('move --blend --jerk line-arc-line: %d periods (at rest at the corners %d), off the path %.4g m, within '
+              '%.6g m of a corner there (radius %g), speed %.6g, acceleration %.6g over %d periods, jerk %.6g over %d' %
+              (len(lrows), len(rows0), off, worst, R, vw, aw, w, jw, wj))
 
     # 6. every bad argument: exit 2, nothing on stdout, the message naming it
     q0 = ['--q0', ','.join(map(str, qa))]

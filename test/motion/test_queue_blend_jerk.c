@@ -5,22 +5,28 @@
  * `dhmath move --blend --jerk` runs them, at 1 kHz, seeded random queues
  * on the Puma 560, UR5 (closed forms) and Panda (numerical tracker).
  *
- * Queues of 2 to 6 lines joining the FK frames of configurations a few
- * degrees apart (so the tool also turns), each with a random radius (0
+ * Queues of 2 to 6 segments joining the FK frames of configurations a
+ * few degrees apart (so the tool also turns), each a line or (in half of
+ * them) an arc through a via point off its chord (dhm_draw_via), so that
+ * line-line, line-arc, arc-line and arc-arc corners all occur, each
+ * with a random radius (0
  * in a fifth of them; up to 5 cm), random Cartesian and jerk limits, in
  * a queue of three items: up to three lines queued at the start (in a
  * third of the queues fewer), the others appended as moves complete.
  * Every period's target is checked against double references written
  * here:
- * - outside an overlap (the queue's bmode is not 2) on its line within
- *   1e-6 m, inside one within the corner's radius of the corner (plus 8
+ * - outside an overlap (the queue's bmode is not 2) on its line or arc
+ *   within 1e-6 m (an arc: the circle of the path dh_path_arc_f32 made,
+ *   in double, dhm_arc_dist), inside one within the corner's radius of
+ *   the corner (plus 8
  *   FLT_EPSILON of the positions' scale);
  * - speed, TOTAL acceleration, angular speed and acceleration by finite
  *   differences within the limits times 1 + 1e-3 over windows of WS = 10
  *   periods every period and of W = 125 periods every WD = 25 (plus the
  *   rounding), from the start to the end, feed override changes, stops
  *   and resumes included;
- * - TOTAL jerk and angular jerk by third differences over W periods
+ * - TOTAL jerk (an arc's centripetal terms included) and angular jerk by
+ *   third differences over W periods
  *   within jmax and wjmax times 1 + 1e-3 (plus the rounding: 8 samples)
  *   over every window whose periods had the tracker OK and the feed
  *   override unchanged (the contract's condition), stops included;
@@ -37,8 +43,8 @@
  * bit.
  *
  * Statuses of dh_queue_add_path_blend_jerk_f32: a full queue, a NaN and a
- * negative radius, an arc, a NaN and a zero jerk limit, each with the
- * queue untouched.
+ * negative radius, a NaN and a zero jerk limit, each with the queue
+ * untouched; an arc is accepted.
  */
 #include <float.h>
 #include <math.h>
@@ -65,6 +71,8 @@ static dh_queue_f32 qu;
 static dh_queue_item_f32 items[CAP];
 static float cp[NMAX + 1][3];             /* the corners' positions (line k: cp[k] to cp[k + 1]) */
 static float radius[NMAX];
+static unsigned char isarc[NMAX];  /* segment k is an arc (drawn when appended) */
+static long arc_ov;                /* periods in overlaps at a corner with an arc */
 static float sp[NS][7], lp[NL][7]; /* position and unit quaternion of the target m periods (m WD periods) ago */
 static long last_bad;              /* the last period with a lag or a change of r */
 static double jerk_worst[2];       /* largest third-difference ratios seen (linear, angular) */
@@ -83,15 +91,25 @@ static void check_fd(dhm_fd *fd, const dh_mat4_f32 *T, const dh_cart_limits_f32 
     }
 }
 
-/* the target on its line outside an overlap, within the corner's radius
- * inside one; 1 when inside */
+/* the target on its line or arc outside an overlap, within the corner's
+ * radius inside one; 1 when inside */
 static int check_path(const dh_mat4_f32 *T, uint32_t n, double S, long call)
 {
     uint32_t k;
     double x[3], d;
-    if (dhm_check_corner(&qu, T, n, (const float (*)[3])cp, radius, S, call, &k, x)) return 1;
-    d = dhm_seg_dist(cp[k], cp[k + 1u], x);
-    DHT_TRUE_MSG(d <= 1e-6, "call %ld: %.9g off line %u", call, d, (unsigned)k);
+    const dh_path_f32 *p;
+    if (dhm_check_corner(&qu, T, n, (const float (*)[3])cp, radius, S, call, &k, x)) {
+        if (isarc[k] || (k + 1u < n && isarc[k + 1u])) arc_ov++;
+        return 1;
+    }
+    if (isarc[k]) {
+        p = dhm_seg_path(items, CAP, (const float (*)[3])cp, k);
+        DHT_TRUE(p != NULL);
+        d = (p != NULL) ? dhm_arc_dist(p, x) : INFINITY;
+    } else {
+        d = dhm_seg_dist(cp[k], cp[k + 1u], x);
+    }
+    DHT_TRUE_MSG(d <= 1e-6, "call %ld: %.9g off %s %u", call, d, isarc[k] ? "arc" : "line", (unsigned)k);
     return 0;
 }
 
@@ -104,15 +122,21 @@ static void corner(const dhm_rig *g, const float (*qc)[DH_MAX_JOINTS], uint32_t 
     dhs_target_f32(&g->r, q, T);
 }
 
-/* line k appended with its radius (qc: the corners' configurations) */
+/* segment k appended with its radius: a line, or an arc (dhm_draw_via)
+ * (qc: the corners' configurations) */
 static void append(const dhm_rig *g, const float (*qc)[DH_MAX_JOINTS], uint32_t k, const dh_cart_limits_f32 *lim,
                    const dh_cart_jerk_f32 *jk)
 {
     dh_path_f32 line;
     dh_mat4_f32 A, B;
+    float via[3];
     corner(g, qc, k, &A);
     corner(g, qc, k + 1u, &B);
-    DHT_EQ_INT(dh_path_line_f32(&line, &A, &B), DH_OK);
+    isarc[k] = (unsigned char)dhm_draw_via(cp[k], cp[k + 1u], via);
+    if (isarc[k])
+        DHT_EQ_INT(dh_path_arc_f32(&line, &A, via, &B), DH_OK);
+    else
+        DHT_EQ_INT(dh_path_line_f32(&line, &A, &B), DH_OK);
     DHT_EQ_INT(dh_queue_add_path_blend_jerk_f32(&qu, &line, lim, jk, radius[k]), DH_OK);
     DHT_EQ_INT(items[(qu.head + qu.count - 1u) % CAP].jerk, 2);
 }
@@ -233,11 +257,13 @@ static void run_robot(const dhm_robot_case *c)
     jerk_worst[0] = 0.0;
     jerk_worst[1] = 0.0;
     jerk_windows = 0;
+    arc_ov = 0;
     for (it = 0; it < nq; it++) blend_jerk_queue(&g, c->q, ov);
     DHT_TRUE(jerk_windows > 0);
-    dht_printf("%s: %ld queues, %ld periods in overlaps, %ld stops there, %ld jerk windows, worst jerk %ld, angular "
-               "%ld ppm of the limits\n",
-               c->d->name, nq, ov[0], ov[1], jerk_windows, (long)(jerk_worst[0] * 1e6), (long)(jerk_worst[1] * 1e6));
+    dht_printf("%s: %ld queues, %ld periods in overlaps (%ld at corners with an arc), %ld stops there, %ld jerk "
+               "windows, worst jerk %ld, angular %ld ppm of the limits\n",
+               c->d->name, nq, ov[0], arc_ov, ov[1], jerk_windows, (long)(jerk_worst[0] * 1e6),
+               (long)(jerk_worst[1] * 1e6));
 }
 
 static void queues_puma(void) { run_robot(&dhm_puma560); }
@@ -261,7 +287,6 @@ static void blend_jerk_bad(void)
     DHT_EQ_INT(dh_queue_init_f32(&qu, items, 1), DH_OK);
     DHT_EQ_INT(dh_queue_add_path_blend_jerk_f32(&qu, &line, &lim, &jk, NAN), DH_ERR_NAN);
     DHT_EQ_INT(dh_queue_add_path_blend_jerk_f32(&qu, &line, &lim, &jk, -1e-3f), DH_ERR_ARG);
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_f32(&qu, &arc, &lim, &jk, 1e-3f), DH_ERR_ARG);
     jk.jmax = NAN;
     DHT_EQ_INT(dh_queue_add_path_blend_jerk_f32(&qu, &line, &lim, &jk, 1e-3f), DH_ERR_NAN);
     jk.jmax = 0.0f;
@@ -273,6 +298,10 @@ static void blend_jerk_bad(void)
     keep = queue_hash();
     DHT_EQ_INT(dh_queue_add_path_blend_jerk_f32(&qu, &line, &lim, &jk, 1e-3f), DH_ERR_LIMIT);
     DHT_TRUE(queue_hash() == keep);
+    /* an arc is a blended segment like a line */
+    DHT_EQ_INT(dh_queue_init_f32(&qu, items, 1), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_f32(&qu, &arc, &lim, &jk, 1e-3f), DH_OK);
+    DHT_TRUE(items[0].jerk == 2u && items[0].seg.T > 0.0f);
 }
 
 static const dht_case cases[] = {
