@@ -455,6 +455,23 @@ typedef enum {
 } dh_move_kind;
 
 /**
+ * @brief The brake of one coordinate (a joint, or s of a path) to rest
+ *        within a deceleration and a jerk (read-only for the user): the
+ *        queue's stop and a jerk-limited path move's brake on a lag.
+ */
+typedef struct {
+    float q;    /**< position at its start */
+    float s;    /**< direction of travel (+1, -1; 0 at rest) */
+    float v;    /**< |velocity| at its start */
+    float a;    /**< acceleration at its start, along the travel */
+    float ap;   /**< peak deceleration */
+    float j;    /**< jerk (0: none) */
+    float t[3]; /**< durations of its three phases */
+    float x;    /**< distance to rest, at most the distance left */
+    float end;  /**< the move's end (q1, or s = 1), never passed */
+} dh_brake_f32;
+
+/**
  * @brief One move being executed, written by dh_move_joint_f32 /
  *        dh_move_path_f32 and advanced once per control period by
  *        dh_move_joint_step_f32 / dh_move_advance_f32 (read-only for the
@@ -473,6 +490,14 @@ typedef struct {
     uint32_t lag;                       /**< path move: 1 when the last period was not OK */
     uint32_t n;                         /**< joint move: number of joints */
     uint32_t kind;                      /**< a dh_move_kind value */
+    float s0;                           /**< path move: s at the plan's start (its profile runs from s0 to 1) */
+    float vs;                           /**< jerk-limited path move: its first plan's peak of ds/dt */
+    float as;                           /**< jerk-limited path move: its first plan's peak of |d2s/dt2| */
+    float js;                           /**< jerk-limited path move: its first plan's peak of |d3s/dt3| */
+    float tb;                           /**< jerk-limited path move: time into its brake (s) */
+    float tbend;                        /**< jerk-limited path move: duration of its brake (s) */
+    dh_brake_f32 brk;                   /**< jerk-limited path move: its brake on a lag */
+    uint32_t bst;                       /**< jerk-limited path move: 0 on its plan, 1 braking, 2 at rest after a brake */
 } dh_move_f32;
 
 /** @brief What one period of a move did. */
@@ -702,24 +727,15 @@ typedef struct {
     uint32_t resume;               /**< 1 when a resume waits for the brake to reach rest */
     uint32_t pend;                 /**< 1 between dh_queue_target_f32 and dh_queue_advance_f32 */
     uint32_t n;                    /**< joints of the robot (tracker) of the last target call */
-    uint32_t braked;               /**< 1 when the running move's state is its brake's (after a stop) */
+    uint32_t braked;               /**< 1 when the running move's state is its brake's (after a stop); 2 when that brake is a jerk-limited move's brake on a lag, taken on by the stop (it runs whatever the tracker reports) */
     dh_move_f32 mv;                /**< plan of the running move (or of the last one completed) */
-    float s0;                      /**< path move: s at the plan's start (its profile runs from s0 to 1) */
     float vs;                      /**< path move: limit of ds/dt (its first plan's peak) */
     float as;                      /**< path move: limit of d2s/dt2 (its first plan's peak) */
     float tb;                      /**< time into the brake (s) */
     float tbend;                   /**< duration of the brake (s) */
     float dt;                      /**< control period of the pending target call (s) */
     float next;                    /**< the clock, or brake time, the pending period advances to */
-    float bq[DH_MAX_JOINTS];       /**< brake: joint (path move: [0] is s) at its start */
-    float bs[DH_MAX_JOINTS];       /**< brake: direction of travel (+1, -1; 0 at rest) */
-    float bv[DH_MAX_JOINTS];       /**< brake: |velocity| at its start */
-    float ba[DH_MAX_JOINTS];       /**< brake: acceleration at its start, along the travel */
-    float bap[DH_MAX_JOINTS];      /**< brake: peak deceleration */
-    float bj[DH_MAX_JOINTS];       /**< brake: jerk (0: none) */
-    float bt[3][DH_MAX_JOINTS];    /**< brake: durations of its three phases */
-    float bx[DH_MAX_JOINTS];       /**< brake: distance to rest, at most the distance left */
-    float bend[DH_MAX_JOINTS];     /**< brake: the move's end (q1, or s = 1), never passed */
+    dh_brake_f32 br[DH_MAX_JOINTS]; /**< brake of each joint (path move: [0], of s) */
     dh_blend_seg_f32 bl[2];        /**< blended lines: scaling of the running line [0] and of the next [1] in their overlap */
     float bo[2];                   /**< blended lines: s where each scaling starts (0, or where a stop left the line) */
     uint32_t bmode;                /**< blended lines: 0 none; 1 the running line; 2 and the next; 3 the next starts at bo[0] */

@@ -61,6 +61,30 @@ float dh_motion_feed_goal_f32_(dh_move_f32 *mv, float dt, int ok, float up, floa
  * p >= 0 the largest s'' near the clock (dh_move.c) */
 float dh_motion_feed_rise_f32_(float k, float p, float A, float r);
 
+/* ---- the brake of one coordinate to rest (dh_brake.c; the queue's stop,
+ * the jerk-limited path moves' brake on a lag) ---- */
+
+/* The brake b from its start set by the caller, b->q (position), b->v
+ * (velocity), b->a (acceleration, signed), within the deceleration
+ * A = b->ap and the jerk j = b->j (0: none), never beyond end (ahead
+ * along the travel): b's other fields written, v, a, ap replaced by the
+ * brake's (along the travel); its duration (0: at rest) */
+float dh_motion_brake_plan_f32_(dh_brake_f32 *b, float end);
+
+/* the brake b's position at its time tau (>= 0; tend its duration): within
+ * [0, b->x] of its start along the travel, b->x exactly from tend on,
+ * never past b->end */
+float dh_motion_brake_at_f32_(const dh_brake_f32 *b, float tau, float tend);
+
+/* s of the path move mv (dh_move.c) at the clock c of its plan (mv->s0 +
+ * its profile, 1 at the end of a plan that moves), its rate and
+ * acceleration into *sd, *sdd; the queue's path moves (dh_queue.c) */
+float dh_motion_move_s_f32_(const dh_move_f32 *mv, float c, float *sd, float *sdd);
+
+/* s of the path move mv now: on its brake (mv->bst != 0), else at its
+ * clock (dh_move.c); the queue's path moves (dh_queue.c) */
+float dh_motion_move_now_f32_(const dh_move_f32 *mv);
+
 /* ---- the queue's blended lines (dh_blend.c, called by dh_queue.c) ---- */
 
 /* The corner of the paths p1 then p2 within lim and radius as the queue

@@ -64,7 +64,8 @@ static dh_queue_item_f32 items[CAP];
 static float sp[NS][7], lp[NL][7];        /* position and unit quaternion of the target m periods (m WD periods) ago */
 static long last_bad;                     /* the last period with a lag or a change of r */
 static double jerk_worst[2];              /* largest third-difference ratios seen (linear, angular) */
-static long jerk_windows;
+static double lag_worst[2];               /* the same over the windows that hold a lag, a brake or a resume */
+static long jerk_windows, lag_windows;
 
 /* every target's finite differences within lim and jk (the file's
  * comment) */
@@ -73,9 +74,14 @@ static void check_fd(dhm_fd *fd, const dh_mat4_f32 *T, const dh_cart_limits_f32 
 {
     const double ulp = S * FLT_EPSILON;
     if (!dhm_fd_push(fd, T, lim, ulp, call)) return;
-    /* the jerk over windows of OK periods at a constant r */
-    if (fd->nh >= (long)(NL - 1) * WD + 1 && last_bad < call - 3L * W - 1L) {
-        dhm_check_jerk((const float (*)[7])lp, W / WD, (double)W * DT, jk, ulp, call, jerk_worst);
+    /* the jerk over every window, the lags' included */
+    if (fd->nh >= (long)(NL - 1) * WD + 1) {
+        if (last_bad >= call - 3L * W - 1L) {
+            dhm_check_jerk((const float (*)[7])lp, W / WD, (double)W * DT, jk, ulp, call, lag_worst);
+            lag_windows++;
+        } else {
+            dhm_check_jerk((const float (*)[7])lp, W / WD, (double)W * DT, jk, ulp, call, jerk_worst);
+        }
         jerk_windows++;
     }
 }
@@ -235,12 +241,17 @@ static void run_robot(const dhm_robot_case *c)
     dhm_rig_make(&g, c);
     jerk_worst[0] = 0.0;
     jerk_worst[1] = 0.0;
+    lag_worst[0] = 0.0;
+    lag_worst[1] = 0.0;
     jerk_windows = 0;
+    lag_windows = 0;
     for (it = 0; it < nq; it++) jerk_queue(&g, c->q, &nstop);
     DHT_TRUE(jerk_windows > 0);
     /* integers: a double's printf needs more heap than the micro:bit's */
-    dht_printf("%s: %ld queues, %ld stops braked, %ld jerk windows, worst jerk %ld, angular %ld ppm of the limits\n",
-               c->d->name, nq, nstop, jerk_windows, (long)(jerk_worst[0] * 1e6), (long)(jerk_worst[1] * 1e6));
+    dht_printf("%s: %ld queues, %ld stops braked, %ld jerk windows, worst jerk %ld, angular %ld ppm of the limits; "
+               "%ld windows with a lag: worst jerk %ld, angular %ld ppm\n",
+               c->d->name, nq, nstop, jerk_windows, (long)(jerk_worst[0] * 1e6), (long)(jerk_worst[1] * 1e6),
+               lag_windows, (long)(lag_worst[0] * 1e6), (long)(lag_worst[1] * 1e6));
 }
 
 static void queues_puma(void) { run_robot(&dhm_puma560); }
