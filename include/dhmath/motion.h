@@ -740,6 +740,8 @@ typedef struct {
     float bo[2];                   /**< blended lines: s where each scaling starts (0, or where a stop left the line) */
     uint32_t bmode;                /**< blended lines: 0 none; 1 the running line; 2 and the next; 3 the next starts at bo[0] */
     uint32_t stopq;                /**< 1 when a stop waits for the end of an overlap of jerk-limited blended lines */
+    uint32_t lagstop;              /**< 1 while jerk-limited blended lines stop on a lag: at rest they resume by themselves once the tracker is OK */
+    dh_cart_limits_f32 clim;       /**< jerk-limited blended lines: the running line's limits with its speeds capped after a lag */
 } dh_queue_f32;
 
 /** @brief What the caller does this period (dh_queue_target_f32). */

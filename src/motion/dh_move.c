@@ -286,7 +286,7 @@ float dh_motion_feed_goal_f32_(dh_move_f32 *mv, float dt, int ok, float up, floa
  * of s' lowered */
 static DH_NOINLINE void move_jerk_brake(dh_move_f32 *mv, float dt)
 {
-    float sd, sdd, cap;
+    float sd, sdd;
     mv->brk.q = dh_motion_move_s_f32_(mv, mv->clock, &sd, &sdd);
     mv->brk.v = sd;
     mv->brk.a = sdd;
@@ -295,7 +295,12 @@ static DH_NOINLINE void move_jerk_brake(dh_move_f32 *mv, float dt)
     mv->tbend = dh_motion_brake_plan_f32_(&mv->brk, 1.0f);
     mv->tb = (dt < mv->tbend) ? dt : mv->tbend;
     mv->bst = (mv->tb < mv->tbend) ? 1u : 2u;
-    cap = MOVE_CEIL * (sd / mv->vs);
+    dh_motion_lag_cap_f32_(mv, sd, mv->vs);
+}
+
+void dh_motion_lag_cap_f32_(dh_move_f32 *mv, float sd, float v)
+{
+    float cap = MOVE_CEIL * (sd / v);
     if (!(cap >= MOVE_CAP_MIN)) cap = MOVE_CAP_MIN;
     if (cap < mv->fcap) mv->fcap = cap;
     mv->feed = mv->fcap;

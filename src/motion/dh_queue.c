@@ -114,6 +114,7 @@ dh_status dh_queue_init_f32(dh_queue_f32 *qu, dh_queue_item_f32 *items, uint32_t
     qu->braked = 0u;
     qu->bmode = QB_NONE;
     qu->stopq = 0u;
+    qu->lagstop = 0u;
     return DH_OK;
 }
 
@@ -339,8 +340,9 @@ static void queue_blend_mv(dh_queue_f32 *qu)
     qu->mv.n = 0u;
     qu->mv.dur = qu->bl[0].T;
     qu->mv.clock = 0.0f;
-    qu->mv.feed = 1.0f;
-    qu->mv.fcap = 1.0f;
+    /* jerk-limited lines resumed after a brake keep their cap of s' */
+    if (qu->braked == 0u || !(qu->bl[0].j > 0.0f)) qu->mv.fcap = 1.0f;
+    qu->mv.feed = (qu->bl[0].j > 0.0f) ? qu->mv.fcap : 1.0f;
     qu->mv.lag = 0u;
     qu->mv.bst = 0u;
     qu->mv.kind = (uint32_t)DH_MOVE_PATH;
@@ -367,6 +369,16 @@ static void queue_blend_one(dh_queue_f32 *qu, float s0)
     queue_blend_mv(qu);
 }
 
+/* the limits of the head line it within the cap of s' (mv.fcap) into
+ * qu->clim */
+static const dh_cart_limits_f32 *queue_cap_lim(dh_queue_f32 *qu, const dh_queue_item_f32 *it)
+{
+    qu->clim = it->lim;
+    qu->clim.vmax *= qu->mv.fcap;
+    qu->clim.wmax *= qu->mv.fcap;
+    return &qu->clim;
+}
+
 /* bl[i] = the jerk-limited scaling of queued line i from rest at s0: as
  * planned with its corners (its item's) from s0 = 0, its start at rest;
  * from s0 > 0 (where a stop left it) to its end at rest */
@@ -375,7 +387,7 @@ static DH_NOINLINE void queue_jline(dh_queue_f32 *qu, uint32_t i, float s0)
     const dh_queue_item_f32 *it = queue_at(qu, i);
     dh_blend_seg_f32 *g = &qu->bl[i];
     if (s0 > 0.0f) {
-        dh_blend_jline_f32_(g, &it->path, &it->lim, &it->jk, 1.0f - s0);
+        dh_blend_jline_f32_(g, &it->path, queue_cap_lim(qu, it), &it->jk, 1.0f - s0);
     } else {
         *g = it->seg;
         g->tb0 = 0.0f;
@@ -411,7 +423,7 @@ static DH_NOINLINE void queue_blend_two(dh_queue_f32 *qu, float s0, float s1)
     const dh_queue_item_f32 *it = queue_at(qu, 0u);
     queue_seg_rest(&qu->bl[0]);
     if (it->jerk == 2u)
-        dh_blend_jline_f32_(&qu->bl[0], &it->path, &it->lim, &it->jk, 1.0f - s0);
+        dh_blend_jline_f32_(&qu->bl[0], &it->path, queue_cap_lim(qu, it), &it->jk, 1.0f - s0);
     else
         (void)dh_blend_seg_plan_f32_(&qu->bl[0], it->rate, 1.0f - s0);
     queue_seg_rest(&qu->bl[1]);
@@ -546,9 +558,16 @@ static DH_NOINLINE void queue_blend_shift(dh_queue_f32 *qu, float clock)
     qu->bmode = QB_ONE;
     qu->mv.path = queue_at(qu, 1u)->path;
     qu->mv.dur = qu->bl[0].T;
+    if (qu->bl[0].j > 0.0f) {
+        /* a jerk-limited line runs without a cap until it lags */
+        qu->mv.fcap = 1.0f;
+        qu->mv.feed = 1.0f;
+    }
     if (!(c > 0.0f)) c = 0.0f;
     qu->mv.clock = (c < qu->mv.dur) ? c : qu->mv.dur;
 }
+
+static int queue_blend_moving(const dh_queue_f32 *qu);
 
 /* A period of blended lines (QB_ONE, QB_TWO): the feed override as
  * dh_move_advance_f32's, held in an overlap; the clock advances by r dt,
@@ -570,13 +589,20 @@ static DH_NOINLINE int queue_blend_period(dh_queue_f32 *qu, int ok)
         }
         return 1;
     }
-    if (ok != 0 && mv->feed >= 1.0f && mv->fcap >= 1.0f) {
+    if (g[0].j > 0.0f) {
+        /* jerk-limited lines: the clock runs at dt; a lag while they move
+         * stops them (at the end of an overlap), to resume on their own */
+        if (ok == 0 && qu->stopq == 0u && queue_blend_moving(qu)) {
+            qu->stopq = 1u;
+            qu->lagstop = 1u;
+        }
+    } else if (ok != 0 && mv->feed >= 1.0f && mv->fcap >= 1.0f) {
         mv->lag = 0u;
     } else {
         queue_blend_bounds(qu, &up, &dn);
         mv->feed = dh_motion_feed_goal_f32_(mv, qu->dt, ok, up, dn);
     }
-    c = mv->clock + mv->feed * qu->dt;
+    c = mv->clock + ((g[0].j > 0.0f) ? qu->dt : mv->feed * qu->dt);
     if (qu->bmode == QB_TWO && g[1].T > 0.0f && !(c < mv->dur)) {
         queue_blend_shift(qu, c);
         return 2;
@@ -612,7 +638,8 @@ static DH_NOINLINE void queue_blend_pos(dh_queue_f32 *qu)
 static DH_NOINLINE void queue_blend_state(dh_queue_f32 *qu, uint32_t i)
 {
     const dh_blend_seg_f32 *g = &qu->bl[i];
-    const float r = qu->mv.feed, t = (i == 0u) ? qu->mv.clock : qu->mv.clock - (qu->bl[0].T - qu->bl[0].tb1);
+    const float r = (qu->bl[0].j > 0.0f) ? 1.0f : qu->mv.feed;
+    const float t = (i == 0u) ? qu->mv.clock : qu->mv.clock - (qu->bl[0].T - qu->bl[0].tb1);
     float sdd;
     qu->br[i].v = dh_blend_seg_rate_f32_(g, t, &sdd) * r;
     qu->br[i].a = sdd * r * r;
@@ -882,6 +909,11 @@ static void queue_period(dh_queue_f32 *qu, uint32_t what, dh_track_state state, 
         else
             *held = 1;
         if (!(qu->tb < qu->tbend)) queue_rest(qu);
+    } else if (qu->lagstop != 0u && qu->phase == (uint32_t)DH_QUEUE_STOPPED && ok != 0) {
+        /* at rest after a stop on a lag, the tracker OK: replanned from here */
+        qu->lagstop = 0u;
+        qu->phase = (uint32_t)DH_QUEUE_RUN;
+        qu->started = 0u;
     } else {
         *held = 1;
     }
@@ -916,7 +948,7 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
     rep->last = 0;
     if (qu->count == 0u) rep->last = 1;
     rep->stopped = 0;
-    if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) rep->stopped = 1;
+    if (qu->phase == (uint32_t)DH_QUEUE_STOPPED && qu->lagstop == 0u) rep->stopped = 1;
     return DH_OK;
 }
 
@@ -1003,6 +1035,18 @@ static int queue_jerk_overlap(const dh_queue_f32 *qu)
     return (qu->bmode == QB_TWO && qu->bl[1].T > 0.0f && qu->bl[0].j > 0.0f) ? 1 : 0;
 }
 
+/* A stop on a lag of jerk-limited blended lines: its brake runs whatever
+ * the tracker reports (braked 2), and the head line's cap of s' is
+ * lowered from its s' now (dh_motion_lag_cap_f32_, relative to its peak
+ * as appended) */
+static DH_NOINLINE void queue_lag_cap(dh_queue_f32 *qu)
+{
+    float sdd;
+    const float sd = dh_blend_seg_rate_f32_(&qu->bl[0], qu->mv.clock, &sdd);
+    qu->braked = 2u;
+    dh_motion_lag_cap_f32_(&qu->mv, sd, queue_at(qu, 0u)->seg.v);
+}
+
 /* the stop of the running move from its state now: its brake, or at
  * rest at once (then running again when a resume came while it waited) */
 static DH_NOINLINE void queue_stop_now(dh_queue_f32 *qu)
@@ -1011,14 +1055,16 @@ static DH_NOINLINE void queue_stop_now(dh_queue_f32 *qu)
     if (qu->count == 0u || qu->started == 0u ||
         ((qu->bmode == QB_ONE || qu->bmode == QB_TWO) ? !queue_blend_moving(qu)
                                                        : (!(qu->mv.clock > 0.0f) || !(qu->mv.clock < qu->mv.dur)))) {
-        qu->phase = (qu->resume != 0u) ? (uint32_t)DH_QUEUE_RUN : (uint32_t)DH_QUEUE_STOPPED;
+        qu->phase = (qu->resume != 0u || qu->lagstop != 0u) ? (uint32_t)DH_QUEUE_RUN : (uint32_t)DH_QUEUE_STOPPED;
         qu->resume = 0u;
+        qu->lagstop = 0u;
         return;
     }
     if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) queue_joint_state(qu);
     if (qu->mv.kind != (uint32_t)DH_MOVE_JOINT && (qu->bmode == QB_ONE || qu->bmode == QB_TWO)) queue_blend_pos(qu);
     qu->tb = 0.0f;
     qu->braked = 1u;
+    if (qu->lagstop != 0u) queue_lag_cap(qu);
     qu->tbend = queue_brake(qu);
     qu->phase = (qu->tb < qu->tbend) ? (uint32_t)DH_QUEUE_BRAKE : (uint32_t)DH_QUEUE_STOPPED;
     if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) queue_rest(qu);
@@ -1028,6 +1074,8 @@ dh_status dh_queue_stop_f32(dh_queue_f32 *qu)
 {
     DH_ASSERT(qu != NULL);
     if (qu->pend != 0u) return DH_ERR_ARG;
+    /* a stop on a lag becomes the caller's: no resume of its own */
+    qu->lagstop = 0u;
     if (qu->phase != (uint32_t)DH_QUEUE_RUN) return DH_OK;
     qu->resume = 0u;
     if (queue_jerk_overlap(qu) != 0) {
@@ -1042,6 +1090,7 @@ dh_status dh_queue_resume_f32(dh_queue_f32 *qu)
 {
     DH_ASSERT(qu != NULL);
     if (qu->pend != 0u) return DH_ERR_ARG;
+    qu->lagstop = 0u;
     if (qu->phase == (uint32_t)DH_QUEUE_BRAKE || qu->stopq != 0u) {
         qu->resume = 1u;
     } else if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) {

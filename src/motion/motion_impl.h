@@ -85,6 +85,12 @@ float dh_motion_move_s_f32_(const dh_move_f32 *mv, float c, float *sd, float *sd
  * clock (dh_move.c); the queue's path moves (dh_queue.c) */
 float dh_motion_move_now_f32_(const dh_move_f32 *mv);
 
+/* The cap of a jerk-limited path move's s' lowered on a lag begun at s'
+ * = sd, v its first plan's peak (dh_move.c: MOVE_CEIL sd / v, at least
+ * MOVE_CAP_MIN): mv->fcap = the lower of it and the cap so far, reported
+ * in mv->feed; the queue's jerk-limited blended lines (dh_queue.c) */
+void dh_motion_lag_cap_f32_(dh_move_f32 *mv, float sd, float v);
+
 /* ---- the queue's blended lines (dh_blend.c, called by dh_queue.c) ---- */
 
 /* The corner of the paths p1 then p2 within lim and radius as the queue

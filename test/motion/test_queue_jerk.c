@@ -21,12 +21,12 @@
  *   resumes included;
  * - TOTAL jerk and angular jerk by third differences over W = 50 periods
  *   within jmax and wjmax times 1 + 1e-3 (plus the rounding: 8 samples),
- *   over every window whose periods had the tracker OK and the feed
- *   override unchanged (the contract's condition);
+ *   over every window, lags, brakes and resumes included;
  * - each period's step within one period at the speed limits.
  * In half the queues the tracker's state is replaced by LAGGING for a
- * random stretch at a random period while running (the feed override
- * falls and rises); in two thirds a stop comes at a random period (twice,
+ * random stretch at a random period while running (the move brakes,
+ * holds and resumes with its speed capped); in two thirds a stop comes
+ * at a random period (twice,
  * the second changing nothing), resumed at once, while braking or some
  * periods after rest: rest comes within v / A + 3 A / j of OK periods
  * (motion.h, dh_queue_stop_f32; v, A, j the plan's peaks of s). Moves
