@@ -125,7 +125,6 @@ static void run_move(dhm_rig *g, const float *q0, const dh_path_f32 *p, const dh
  * move, which resumes and completes */
 static void puma_lag(void)
 {
-    static const double QP[6] = { 10.0, -30.0, 45.0, 20.0, 35.0, -60.0 };
     static const dh_cart_limits_f32 PLIM = { 0.3f, 1.5f, 90.0f, 360.0f };
     dhm_rig g;
     run_stats rs;
@@ -143,18 +142,8 @@ static void puma_lag(void)
         dh_cart_jerk_f32 jk;
         dh_mat4_f32 A, B;
         dh_path_f32 p;
-        int k;
-        for (i = 0; i < 6u; i++) {
-            qa[i] = QP[i] + ((it == 0) ? 0.0 : dht_rand_uniform(-2.0, 2.0));
-            q0[i] = (float)qa[i];
-        }
-        dhs_target_f32(&g.r, qa, &A);
-        memset(&B, 0, sizeof B);
-        for (k = 0; k < 3; k++) B.m[k][k] = 1.0f;
-        B.m[3][3] = 1.0f;
-        B.m[3][0] = 0.5f + ((it == 0) ? 0.0f : (float)dht_rand_uniform(-0.01, 0.01));
-        B.m[3][1] = -0.03f + ((it == 0) ? 0.0f : (float)dht_rand_uniform(-0.01, 0.01));
-        B.m[3][2] = 1.0f + ((it == 0) ? 0.0f : (float)dht_rand_uniform(-0.01, 0.01));
+        dhm_puma_line(&g.r, it == 0, qa, &A, &B);
+        for (i = 0; i < 6u; i++) q0[i] = (float)qa[i];
         jk.jmax = (it == 0) ? 8.0f : (float)dht_rand_uniform(4.0, 20.0);
         jk.wjmax = (it == 0) ? 3600.0f : (float)dht_rand_uniform(1000.0, 6000.0);
         DHT_EQ_INT(dh_path_line_f32(&p, &A, &B), DH_OK);

@@ -76,12 +76,9 @@ static void check_fd(dhm_fd *fd, const dh_mat4_f32 *T, const dh_cart_limits_f32 
     if (!dhm_fd_push(fd, T, lim, ulp, call)) return;
     /* the jerk over every window, the lags' included */
     if (fd->nh >= (long)(NL - 1) * WD + 1) {
-        if (last_bad >= call - 3L * W - 1L) {
-            dhm_check_jerk((const float (*)[7])lp, W / WD, (double)W * DT, jk, ulp, call, lag_worst);
-            lag_windows++;
-        } else {
-            dhm_check_jerk((const float (*)[7])lp, W / WD, (double)W * DT, jk, ulp, call, jerk_worst);
-        }
+        const int lag = last_bad >= call - 3L * W - 1L;
+        dhm_check_jerk((const float (*)[7])lp, W / WD, (double)W * DT, jk, ulp, call, lag ? lag_worst : jerk_worst);
+        lag_windows += lag;
         jerk_windows++;
     }
 }
