@@ -306,26 +306,21 @@ void dh_motion_lag_cap_f32_(dh_move_f32 *mv, float sd, float v)
     mv->feed = mv->fcap;
 }
 
-/* The jerk-limited path move mv at rest on its brake resumed (the file's
- * comment): the rest of the path planned from where the brake left it,
- * its first period of dt run */
-static DH_NOINLINE dh_status move_jerk_resume(dh_move_f32 *mv, float dt)
+/* The resume of the jerk-limited path move mv at rest on its brake (the
+ * file's comment), its first step: mv->s0 = where the brake left s; the
+ * distance left, for the plan of the rest (dh_move_advance_f32 calls the
+ * planner itself, one frame less under it: the stack budget) */
+static DH_NOINLINE float move_jerk_rest(dh_move_f32 *mv)
 {
     const float s0 = dh_motion_brake_at_f32_(&mv->brk, mv->tbend, mv->tbend);
-    const dh_status st =
-        dh_profile_scurve_f32(&mv->prof[0], (s0 < 1.0f) ? 1.0f - s0 : 0.0f, mv->vs * mv->fcap, mv->as, mv->js);
-    if (st != DH_OK) return st;
     mv->s0 = (s0 < 1.0f) ? s0 : 1.0f;
-    mv->dur = mv->prof[0].T;
-    mv->clock = 0.0f;
-    mv->bst = 0u;
-    mv->clock = move_next_clock(mv, dt);
-    return DH_OK;
+    return 1.0f - mv->s0;
 }
 
-/* A period of the jerk-limited path move mv (the file's comment): *done
- * 1 when it is complete */
-static DH_NOINLINE dh_status move_jerk_period(dh_move_f32 *mv, float dt, int ok, int *done)
+/* A period of the jerk-limited path move mv (the file's comment) but the
+ * resume's plan: *done 1 when it is complete; on its plan again after a
+ * resume (its first period of dt run) */
+static DH_NOINLINE void move_jerk_period(dh_move_f32 *mv, float dt, int ok, int *done)
 {
     mv->lag = (ok != 0) ? 0u : 1u;
     if (mv->bst == 1u) {
@@ -335,13 +330,16 @@ static DH_NOINLINE dh_status move_jerk_period(dh_move_f32 *mv, float dt, int ok,
     } else if (ok == 0) {
         if (mv->bst == 0u && mv->clock > 0.0f && mv->clock < mv->dur) move_jerk_brake(mv, dt);
     } else if (mv->bst == 2u) {
-        return move_jerk_resume(mv, dt);
+        /* resumed: the rest of the path is planned in prof[0] */
+        mv->dur = mv->prof[0].T;
+        mv->clock = 0.0f;
+        mv->bst = 0u;
+        mv->clock = move_next_clock(mv, dt);
     } else if (mv->clock < mv->dur) {
         mv->clock = move_next_clock(mv, dt);
     } else {
         *done = 1;
     }
-    return DH_OK;
 }
 
 dh_status dh_move_advance_f32(dh_move_f32 *mv, float dt, dh_track_state state, dh_move_report_f32 *rep)
@@ -357,8 +355,11 @@ dh_status dh_move_advance_f32(dh_move_f32 *mv, float dt, dh_track_state state, d
         held = 0;
     }
     if (mv->prof[0].kind == (uint32_t)DH_PROFILE_SCURVE) {
-        st = move_jerk_period(mv, dt, ok, &done);
-        if (st != DH_OK) return st;
+        if (ok != 0 && mv->bst == 2u) {
+            st = dh_profile_scurve_f32(&mv->prof[0], move_jerk_rest(mv), mv->vs * mv->fcap, mv->as, mv->js);
+            if (st != DH_OK) return st;
+        }
+        move_jerk_period(mv, dt, ok, &done);
     } else if (ok != 0 && !(mv->clock < mv->dur)) {
         done = 1;
     } else {

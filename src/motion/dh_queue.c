@@ -370,8 +370,8 @@ static void queue_blend_one(dh_queue_f32 *qu, float s0)
 }
 
 /* the limits of the head line it within the cap of s' (mv.fcap) into
- * qu->clim */
-static const dh_cart_limits_f32 *queue_cap_lim(dh_queue_f32 *qu, const dh_queue_item_f32 *it)
+ * qu->clim (its frame gone before the planner's: the stack budget) */
+static DH_NOINLINE const dh_cart_limits_f32 *queue_cap_lim(dh_queue_f32 *qu, const dh_queue_item_f32 *it)
 {
     qu->clim = it->lim;
     qu->clim.vmax *= qu->mv.fcap;
@@ -578,7 +578,7 @@ static DH_NOINLINE int queue_blend_period(dh_queue_f32 *qu, int ok)
 {
     dh_move_f32 *mv = &qu->mv;
     const dh_blend_seg_f32 *g = qu->bl;
-    float up = 0.0f, dn = 0.0f, c;
+    float up = 0.0f, dn = 0.0f, adv, c;
     if (!(g[0].tb1 > 0.0f) && !(mv->clock < mv->dur) && ok != 0) {
         qu->next = mv->clock;
         if (qu->bmode == QB_TWO) {
@@ -590,19 +590,27 @@ static DH_NOINLINE int queue_blend_period(dh_queue_f32 *qu, int ok)
         return 1;
     }
     if (g[0].j > 0.0f) {
-        /* jerk-limited lines: the clock runs at dt; a lag while they move
-         * stops them (at the end of an overlap), to resume on their own */
-        if (ok == 0 && qu->stopq == 0u && queue_blend_moving(qu)) {
-            qu->stopq = 1u;
-            qu->lagstop = 1u;
+        /* jerk-limited lines: the clock runs at dt, held at rest while the
+         * tracker is not OK; a lag while they move stops them (at the end
+         * of an overlap), to resume on their own */
+        adv = qu->dt;
+        if (ok == 0 && qu->stopq == 0u) {
+            if (queue_blend_moving(qu)) {
+                qu->stopq = 1u;
+                qu->lagstop = 1u;
+            } else {
+                adv = 0.0f;
+            }
         }
     } else if (ok != 0 && mv->feed >= 1.0f && mv->fcap >= 1.0f) {
         mv->lag = 0u;
+        adv = qu->dt;
     } else {
         queue_blend_bounds(qu, &up, &dn);
         mv->feed = dh_motion_feed_goal_f32_(mv, qu->dt, ok, up, dn);
+        adv = mv->feed * qu->dt;
     }
-    c = mv->clock + ((g[0].j > 0.0f) ? qu->dt : mv->feed * qu->dt);
+    c = mv->clock + adv;
     if (qu->bmode == QB_TWO && g[1].T > 0.0f && !(c < mv->dur)) {
         queue_blend_shift(qu, c);
         return 2;
