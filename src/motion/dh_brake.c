@@ -20,8 +20,9 @@
 #include "../internal/dh_floatops.h"
 #include "motion_impl.h"
 
-/* the brake b's distance at time tau (>= 0), before the cap */
-static DH_NOINLINE float brake_dist(const dh_brake_f32 *b, float tau)
+/* the brake b's distance at time tau (>= 0), before the cap (inlined in
+ * the plan, so no frame of it lies under the plan's: the stack budget) */
+DH_INLINE float brake_dist_in(const dh_brake_f32 *b, float tau)
 {
     const float j = b->j, pk = b->ap, t1 = b->t[0], t2 = b->t[1], t3 = b->t[2];
     float x, v = b->v, a = b->a, u, r = tau;
@@ -42,6 +43,12 @@ static DH_NOINLINE float brake_dist(const dh_brake_f32 *b, float tau)
     u = (r < t3) ? r : t3;
     x += v * u - 0.5f * pk * u * u + j * u * u * u / 6.0f;
     return x;
+}
+
+/* brake_dist_in, one copy for the evaluation */
+static DH_NOINLINE float brake_dist(const dh_brake_f32 *b, float tau)
+{
+    return brake_dist_in(b, tau);
 }
 
 float dh_motion_brake_plan_f32_(dh_brake_f32 *b, float end)
@@ -81,7 +88,7 @@ float dh_motion_brake_plan_f32_(dh_brake_f32 *b, float end)
     if (!dh_feq_f32(s, 0.0f)) {
         float e;
         d = t1 + t2 + t3;
-        e = brake_dist(b, d);
+        e = brake_dist_in(b, d);
         if (!(e >= 0.0f)) e = 0.0f;
         b->x = (e < rem) ? e : rem;
     }

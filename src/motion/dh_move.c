@@ -194,6 +194,7 @@ dh_status dh_move_target_f32(const dh_move_f32 *mv, dh_mat4_f32 *T)
     float s;
     DH_ASSERT(mv != NULL && T != NULL);
     if (!move_holds(mv, (uint32_t)DH_MOVE_PATH) || !dh_motion_path_ok_f32_(&mv->path)) return DH_ERR_ARG;
+    if (!dh_isfinite_f32(mv->prof[0].d)) return DH_ERR_ARG;
     s = dh_motion_move_now_f32_(mv);
     if (!dh_isfinite_f32(s)) return DH_ERR_ARG;
     return dh_path_eval_f32(&mv->path, s, T);
@@ -282,9 +283,9 @@ float dh_motion_feed_goal_f32_(dh_move_f32 *mv, float dt, int ok, float up, floa
 }
 
 /* The brake on a lag of the jerk-limited path move mv from s, s', s''
- * at its clock (the file's comment), its first period of dt run; the cap
- * of s' lowered */
-static DH_NOINLINE void move_jerk_brake(dh_move_f32 *mv, float dt)
+ * at its clock (the file's comment), at its time 0; the cap of s'
+ * lowered */
+static DH_NOINLINE void move_jerk_brake(dh_move_f32 *mv)
 {
     float sd, sdd;
     mv->brk.q = dh_motion_move_s_f32_(mv, mv->clock, &sd, &sdd);
@@ -293,8 +294,8 @@ static DH_NOINLINE void move_jerk_brake(dh_move_f32 *mv, float dt)
     mv->brk.ap = mv->as;
     mv->brk.j = mv->js;
     mv->tbend = dh_motion_brake_plan_f32_(&mv->brk, 1.0f);
-    mv->tb = (dt < mv->tbend) ? dt : mv->tbend;
-    mv->bst = (mv->tb < mv->tbend) ? 1u : 2u;
+    mv->tb = 0.0f;
+    mv->bst = 1u;
     dh_motion_lag_cap_f32_(mv, sd, mv->vs);
 }
 
@@ -318,8 +319,8 @@ static DH_NOINLINE float move_jerk_rest(dh_move_f32 *mv)
 }
 
 /* A period of the jerk-limited path move mv (the file's comment) but the
- * resume's plan: *done 1 when it is complete; on its plan again after a
- * resume (its first period of dt run) */
+ * brake's and the resume's plans: *done 1 when it is complete; on its
+ * brake (its period of dt run), or on its plan again after a resume */
 static DH_NOINLINE void move_jerk_period(dh_move_f32 *mv, float dt, int ok, int *done)
 {
     mv->lag = (ok != 0) ? 0u : 1u;
@@ -328,7 +329,7 @@ static DH_NOINLINE void move_jerk_period(dh_move_f32 *mv, float dt, int ok, int 
         mv->tb = (mv->tb + dt < mv->tbend) ? mv->tb + dt : mv->tbend;
         if (!(mv->tb < mv->tbend)) mv->bst = 2u;
     } else if (ok == 0) {
-        if (mv->bst == 0u && mv->clock > 0.0f && mv->clock < mv->dur) move_jerk_brake(mv, dt);
+        /* held */
     } else if (mv->bst == 2u) {
         /* resumed: the rest of the path is planned in prof[0] */
         mv->dur = mv->prof[0].T;
@@ -342,33 +343,46 @@ static DH_NOINLINE void move_jerk_period(dh_move_f32 *mv, float dt, int ok, int 
     }
 }
 
-dh_status dh_move_advance_f32(dh_move_f32 *mv, float dt, dh_track_state state, dh_move_report_f32 *rep)
+dh_status dh_motion_advance_f32_(dh_move_f32 *mv, float dt, int ok, int *done)
 {
     dh_status st;
-    int done = 0, ok = 0, held = 1;
-    DH_ASSERT(mv != NULL && rep != NULL);
-    st = move_period_ok(mv, (uint32_t)DH_MOVE_PATH, dt);
-    if (st != DH_OK) return st;
-    if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
-    if (state == DH_TRACK_OK) {
-        ok = 1;
-        held = 0;
-    }
+    *done = 0;
     if (mv->prof[0].kind == (uint32_t)DH_PROFILE_SCURVE) {
+        /* the plans are made from here, one frame above the planners */
         if (ok != 0 && mv->bst == 2u) {
             st = dh_profile_scurve_f32(&mv->prof[0], move_jerk_rest(mv), mv->vs * mv->fcap, mv->as, mv->js);
             if (st != DH_OK) return st;
+        } else if (ok == 0 && mv->bst == 0u && mv->clock > 0.0f && mv->clock < mv->dur) {
+            move_jerk_brake(mv);
+        } else {
+            /* on its plan, brake or rest */
         }
-        move_jerk_period(mv, dt, ok, &done);
+        move_jerk_period(mv, dt, ok, done);
     } else if (ok != 0 && !(mv->clock < mv->dur)) {
-        done = 1;
+        *done = 1;
     } else {
         mv->feed = move_feed_next(mv, dt, ok);
         mv->clock = move_next_clock(mv, mv->feed * dt);
     }
+    return DH_OK;
+}
+
+/* The checks, then the period (dh_motion_advance_f32_, which the queue
+ * calls itself) */
+dh_status dh_move_advance_f32(dh_move_f32 *mv, float dt, dh_track_state state, dh_move_report_f32 *rep)
+{
+    dh_status st;
+    int done, ok = 0;
+    DH_ASSERT(mv != NULL && rep != NULL);
+    st = move_period_ok(mv, (uint32_t)DH_MOVE_PATH, dt);
+    if (st != DH_OK) return st;
+    if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
+    if (state == DH_TRACK_OK) ok = 1;
+    st = dh_motion_advance_f32_(mv, dt, ok, &done);
+    if (st != DH_OK) return st;
     rep->clock = mv->clock;
     rep->feed = mv->feed;
-    rep->held = held;
+    rep->held = 1 - ok;
     rep->done = done;
     return DH_OK;
 }

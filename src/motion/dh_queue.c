@@ -295,7 +295,7 @@ dh_status dh_queue_add_path_blend_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *
 /* ---- brake of one coordinate (dh_brake.c) ---------------------------- */
 
 /* coordinate i's position at brake time tau */
-static float queue_brake_at(const dh_queue_f32 *qu, uint32_t i, float tau)
+static DH_NOINLINE float queue_brake_at(const dh_queue_f32 *qu, uint32_t i, float tau)
 {
     return dh_motion_brake_at_f32_(&qu->br[i], tau, qu->tbend);
 }
@@ -903,11 +903,10 @@ static void queue_period(dh_queue_f32 *qu, uint32_t what, dh_track_state state, 
         *held = 1 - ok;
         *done = queue_blend_period(qu, ok);
     } else if (what == QUEUE_PATH) {
-        dh_move_report_f32 mrep;
-        /* the executor's period: clock and feed override (dh_move.c) */
-        (void)dh_move_advance_f32(&qu->mv, qu->dt, state, &mrep);
-        *held = mrep.held;
-        *done = mrep.done;
+        /* the executor's period: clock and feed override, or a
+         * jerk-limited move's brake and resume (dh_move.c) */
+        *held = 1 - ok;
+        (void)dh_motion_advance_f32_(&qu->mv, qu->dt, ok, done);
     } else if (what == QUEUE_BJOINT || what == QUEUE_BPATH) {
         if (what == QUEUE_BPATH) *held = 1 - ok;
         if (what == QUEUE_BJOINT)
@@ -961,14 +960,13 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
 }
 
 /* a joint move's position, velocity and acceleration at its clock into
- * the brakes' q, ws[0], ws[1] */
+ * each joint's brake (q, v, a), one joint at a time */
 static DH_NOINLINE void queue_joint_state(dh_queue_f32 *qu)
 {
-    float q[DH_MAX_JOINTS];
     uint32_t i;
-    (void)dh_joint_move_eval_f32(qu->mv.prof, qu->mv.n, qu->mv.q0, qu->mv.q1, qu->mv.clock, q, qu->mv.ws[0],
-                                 qu->mv.ws[1]);
-    for (i = 0u; i < qu->mv.n; i++) qu->br[i].q = q[i];
+    for (i = 0u; i < qu->mv.n; i++)
+        (void)dh_joint_move_eval_f32(&qu->mv.prof[i], 1u, &qu->mv.q0[i], &qu->mv.q1[i], qu->mv.clock, &qu->br[i].q,
+                                     &qu->br[i].v, &qu->br[i].a);
 }
 
 /* a joint move's brake from its state (queue_joint_state); its duration */
@@ -978,8 +976,6 @@ static DH_NOINLINE float queue_brake_joint(dh_queue_f32 *qu)
     float d = 0.0f, e;
     uint32_t i;
     for (i = 0u; i < qu->mv.n; i++) {
-        qu->br[i].v = qu->mv.ws[0][i];
-        qu->br[i].a = qu->mv.ws[1][i];
         qu->br[i].ap = it->amax[i] * QUEUE_MARGIN;
         qu->br[i].j = (it->jerk != 0u) ? it->jmax[i] : 0.0f;
         e = dh_motion_brake_plan_f32_(&qu->br[i], qu->mv.q1[i]);
@@ -1025,7 +1021,7 @@ static DH_NOINLINE float queue_brake_path(dh_queue_f32 *qu)
 }
 
 /* plans the brake of the running move from its state at its clock (a
- * joint move's in the brakes' q, ws[0], ws[1]), each kind of move in its own step;
+ * joint move's in its brakes: queue_joint_state), each kind of move in its own step;
  * its duration */
 static float queue_brake(dh_queue_f32 *qu)
 {
@@ -1055,8 +1051,9 @@ static DH_NOINLINE void queue_lag_cap(dh_queue_f32 *qu)
     dh_motion_lag_cap_f32_(&qu->mv, sd, queue_at(qu, 0u)->seg.v);
 }
 
-/* the stop of the running move from its state now: its brake, or at
- * rest at once (then running again when a resume came while it waited) */
+/* the stop of the running move from its state now (a joint move's in its
+ * brakes: queue_joint_state): its brake, or at rest at once (then
+ * running again when a resume came while it waited) */
 static DH_NOINLINE void queue_stop_now(dh_queue_f32 *qu)
 {
     qu->stopq = 0u;
@@ -1068,7 +1065,6 @@ static DH_NOINLINE void queue_stop_now(dh_queue_f32 *qu)
         qu->lagstop = 0u;
         return;
     }
-    if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) queue_joint_state(qu);
     if (qu->mv.kind != (uint32_t)DH_MOVE_JOINT && (qu->bmode == QB_ONE || qu->bmode == QB_TWO)) queue_blend_pos(qu);
     qu->tb = 0.0f;
     qu->braked = 1u;
@@ -1089,6 +1085,9 @@ dh_status dh_queue_stop_f32(dh_queue_f32 *qu)
     if (queue_jerk_overlap(qu) != 0) {
         qu->stopq = 1u;
     } else {
+        /* a joint move's state for its brake (a deferred stop, in
+         * dh_queue_advance_f32, is never a joint move's) */
+        if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) queue_joint_state(qu);
         queue_stop_now(qu);
     }
     return DH_OK;

@@ -85,6 +85,12 @@ float dh_motion_move_s_f32_(const dh_move_f32 *mv, float c, float *sd, float *sd
  * clock (dh_move.c); the queue's path moves (dh_queue.c) */
 float dh_motion_move_now_f32_(const dh_move_f32 *mv);
 
+/* The period of the path move mv (dh_move_advance_f32's, after its
+ * checks): ok 1 when the tracker was OK; *done 1 when the move is
+ * complete; DH_ERR_OVERFLOW as dh_profile_scurve_f32 (dh_move.c). The
+ * queue's path moves (dh_queue.c) call it directly (the stack budget). */
+dh_status dh_motion_advance_f32_(dh_move_f32 *mv, float dt, int ok, int *done);
+
 /* The cap of a jerk-limited path move's s' lowered on a lag begun at s'
  * = sd, v its first plan's peak (dh_move.c: MOVE_CEIL sd / v, at least
  * MOVE_CAP_MIN): mv->fcap = the lower of it and the cap so far, reported
