@@ -323,7 +323,8 @@ static DH_NOINLINE float move_jerk_rest(dh_move_f32 *mv)
  * brake (its period of dt run), or on its plan again after a resume */
 static DH_NOINLINE void move_jerk_period(dh_move_f32 *mv, float dt, int ok, int *done)
 {
-    mv->lag = (ok != 0) ? 0u : 1u;
+    mv->lag = 0u;
+    if (ok == 0) mv->lag = 1u;
     if (mv->bst == 1u) {
         /* the brake runs to its end whatever the tracker reports */
         mv->tb = (mv->tb + dt < mv->tbend) ? mv->tb + dt : mv->tbend;
