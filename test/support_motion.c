@@ -271,6 +271,21 @@ void dhm_check_jerk(const float (*h)[7], int w, double hdt, const dh_cart_jerk_f
                  "call %ld: angular jerk %.9g over %.9g", call, x / h3, (double)jk->wjmax);
 }
 
+void dhm_puma_line(const dh_robot *r, int first, double qa[6], dh_mat4_f32 *A, dh_mat4_f32 *B)
+{
+    static const double QP[6] = { 10.0, -30.0, 45.0, 20.0, 35.0, -60.0 };
+    static const float BP[3] = { 0.5f, -0.03f, 1.0f };
+    int k;
+    for (k = 0; k < 6; k++) qa[k] = QP[k] + (first ? 0.0 : dht_rand_uniform(-2.0, 2.0));
+    dhs_target_f32(r, qa, A);
+    memset(B, 0, sizeof *B);
+    for (k = 0; k < 3; k++) {
+        B->m[k][k] = 1.0f;
+        B->m[3][k] = BP[k] + (first ? 0.0f : (float)dht_rand_uniform(-0.01, 0.01));
+    }
+    B->m[3][3] = 1.0f;
+}
+
 uint64_t dhm_hash(const void *a, size_t na, const void *b, size_t nb)
 {
     const unsigned char *x = (const unsigned char *)a;

@@ -96,6 +96,12 @@ typedef struct {
  * before it, for the first nh / wd + 1 rows) */
 int dhm_fd_push(dhm_fd *f, const dh_mat4_f32 *T, const dh_cart_limits_f32 *lim, double ulp, long call);
 
+/* The Puma 560 line of docs/motion.md that asks the wrist for more than
+ * its rates: qa (degrees) within 2 degrees per joint of (10, -30, 45, 20,
+ * 35, -60), A its frame on r, B at (0.5, -0.03, 1.0) within 1 cm per axis
+ * with the base's orientation; exactly those when first is 1 */
+void dhm_puma_line(const dh_robot *r, int first, double qa[6], dh_mat4_f32 *A, dh_mat4_f32 *B);
+
 /* FNV-1a hash of the na bytes at a, then the nb bytes at b */
 uint64_t dhm_hash(const void *a, size_t na, const void *b, size_t nb);
 

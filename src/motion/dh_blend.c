@@ -1412,9 +1412,9 @@ void dh_blend_jrates_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_ca
     (void)jseq_path_rates(p, lim, jk, g);
 }
 
-void dh_blend_jline_f32_(dh_blend_seg_f32 *g, const dh_blend_seg_f32 *r, float D)
+void dh_blend_jline_f32_(dh_blend_seg_f32 *g, const dh_blend_seg_f32 *r, float cap, float D)
 {
-    g->V = r->V;
+    g->V = r->V * cap;
     g->a = r->a;
     g->j = r->j;
     g->b0 = g->a;

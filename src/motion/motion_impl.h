@@ -70,6 +70,42 @@ float dh_motion_feed_goal_f32_(dh_move_f32 *mv, float dt, int ok, float up, floa
  * p >= 0 the largest s'' near the clock (dh_move.c) */
 float dh_motion_feed_rise_f32_(float k, float p, float A, float r);
 
+/* ---- the brake of one coordinate to rest (dh_brake.c; the queue's stop,
+ * the jerk-limited path moves' brake on a lag) ---- */
+
+/* The brake b from its start set by the caller, b->q (position), b->v
+ * (velocity), b->a (acceleration, signed), within the deceleration
+ * A = b->ap and the jerk j = b->j (0: none), never beyond end (ahead
+ * along the travel): b's other fields written, v, a, ap replaced by the
+ * brake's (along the travel); its duration (0: at rest) */
+float dh_motion_brake_plan_f32_(dh_brake_f32 *b, float end);
+
+/* the brake b's position at its time tau (>= 0; tend its duration): within
+ * [0, b->x] of its start along the travel, b->x exactly from tend on,
+ * never past b->end */
+float dh_motion_brake_at_f32_(const dh_brake_f32 *b, float tau, float tend);
+
+/* s of the path move mv (dh_move.c) at the clock c of its plan (mv->s0 +
+ * its profile, 1 at the end of a plan that moves), its rate and
+ * acceleration into *sd, *sdd; the queue's path moves (dh_queue.c) */
+float dh_motion_move_s_f32_(const dh_move_f32 *mv, float c, float *sd, float *sdd);
+
+/* s of the path move mv now: on its brake (mv->bst != 0), else at its
+ * clock (dh_move.c); the queue's path moves (dh_queue.c) */
+float dh_motion_move_now_f32_(const dh_move_f32 *mv);
+
+/* The period of the path move mv (dh_move_advance_f32's, after its
+ * checks): ok 1 when the tracker was OK; *done 1 when the move is
+ * complete; DH_ERR_OVERFLOW as dh_profile_scurve_f32 (dh_move.c). The
+ * queue's path moves (dh_queue.c) call it directly (the stack budget). */
+dh_status dh_motion_advance_f32_(dh_move_f32 *mv, float dt, int ok, int *done);
+
+/* The cap of a jerk-limited path move's s' lowered on a lag begun at s'
+ * = sd, v its first plan's peak (dh_move.c: MOVE_CEIL sd / v, at least
+ * MOVE_CAP_MIN): mv->fcap = the lower of it and the cap so far, reported
+ * in mv->feed; the queue's jerk-limited blended lines (dh_queue.c) */
+void dh_motion_lag_cap_f32_(dh_move_f32 *mv, float sd, float v);
+
 /* ---- the queue's blended lines (dh_blend.c, called by dh_queue.c) ---- */
 
 /* The corner of the paths p1 then p2 within lim and radius as the queue
@@ -122,11 +158,11 @@ void dh_blend_jrates_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_ca
                           const dh_cart_jerk_f32 *jk);
 
 /* g = the jerk-limited scaling of s over the distance D (s from 1 - D to
- * 1) of a path with the rates r->V, r->a, r->j (dh_blend_jrates_f32_; r
- * may be g), at rest at both ends (its own bounds of s'' and s''', no
+ * 1) of a path with the rates cap r->V, r->a, r->j (dh_blend_jrates_f32_;
+ * cap in (0, 1] the speed cap after a lag, else 1; r may be g), at rest at both ends (its own bounds of s'' and s''', no
  * overlap): dh_blend_seq_plan_jerk_f32's scaling of a path, which
  * dh_blend_seg_s_f32_ and dh_blend_seg_rate_f32_ evaluate (g->j > 0) */
-void dh_blend_jline_f32_(dh_blend_seg_f32 *g, const dh_blend_seg_f32 *r, float D);
+void dh_blend_jline_f32_(dh_blend_seg_f32 *g, const dh_blend_seg_f32 *r, float cap, float D);
 
 /* The corner of the queued jerk-limited lines i1 then i2 (their paths
  * p1, p2; i1's lim, jk and radius) as the queue blends it

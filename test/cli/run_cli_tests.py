@@ -2203,8 +2203,8 @@ def move_blend_jerk_lagging(tmp):
     """move --blend --jerk through the float queue: the Puma 560 line of
     'move puma infeasible' (the wrist asked for more than its rates)
     blended within R = 2 cm into a line 15 cm down: lagging periods
-    reported (exit 3), the queue's feed override slowing the move, which
-    completes; every joint step and change of step within the tracker's
+    reported (exit 3), the lines braking, holding and resuming on their
+    own, which completes; every joint step and change of step within the tracker's
     limits (finite differences of the printed values), the tool (double FK
     of the printed joints) at ok periods within 5e-6 m of the lines or
     within R of their corner, off the lines somewhere, and at rest on the
