@@ -1551,6 +1551,19 @@ dh_status dh_path_move_jerk_q(dh_profile_q *prof, uint32_t *e, const dh_path_q *
 dh_status dh_path_move_eval_q(const dh_profile_q *prof, uint32_t e, const dh_path_q *p, uint32_t t, dh_frame_q *T);
 
 /**
+ * @brief The jerk-limited brake of a fixed-point path move's s (written
+ *        by the executor, read-only for the user): from s' = v0 and
+ *        s'' = a0 to rest, s''' = -(a0 + ap) / d[0] for d[0] us, s'' =
+ *        -ap for d[1] us, s''' = ap / d[2] for d[2] us.
+ */
+typedef struct {
+    int32_t v0;   /**< s' at the brake's start (LSB/s, >= 0) */
+    int32_t a0;   /**< s'' at the brake's start (LSB/s^2, >= 0) */
+    int32_t ap;   /**< the level of -s'' held (LSB/s^2, >= 0) */
+    uint32_t d[3]; /**< the three phases' durations (us) */
+} dh_brake_q;
+
+/**
  * @brief One fixed-point move being executed (the twin of dh_move_f32),
  *        written by dh_move_joint_q / dh_move_path_q and advanced once
  *        per control period by dh_move_joint_step_q / dh_move_advance_q
@@ -1569,6 +1582,11 @@ typedef struct {
     uint32_t e;                       /**< path move: the profile's distance is 2^e (dh_path_move_q) */
     uint32_t lag;                     /**< path move: 1 when the last period was not OK */
     int32_t ps[3];                    /**< scratch of the fixed queue's evaluations (dh_queue_q.c); unused by the executor */
+    uint32_t mode;                    /**< seven-phase path move: 0 on its plan prof[0], 1 braking (brk), 2 held at rest */
+    int32_t soff;                     /**< seven-phase path move: s (LSB of 2^e) where the plan or the brake starts, or held */
+    int32_t vcap;                     /**< seven-phase path move: cap of s' after a brake (LSB/s); 0: none */
+    int32_t lim[3];                   /**< seven-phase path move: the first plan's peaks of s', s'', s''' (LSB/s^k) */
+    dh_brake_q brk;                   /**< seven-phase path move: the brake while mode is 1 */
     uint32_t n;                       /**< joint move: number of joints */
     uint32_t kind;                    /**< a dh_move_kind value */
 } dh_move_q;

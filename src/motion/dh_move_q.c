@@ -46,7 +46,8 @@ static int moveq_holds(const dh_move_q *mv, uint32_t kind)
     if (mv->kind != kind) return 0;
     if (mv->dur > (uint32_t)INT32_MAX || mv->clock > mv->dur || mv->cfrac >= (uint32_t)DH_Q30_ONE) return 0;
     if (mv->feed < 0 || mv->feed > DH_Q30_ONE || mv->fcap < 0 || mv->fcap > DH_Q30_ONE) return 0;
-    if (kind == (uint32_t)DH_MOVE_PATH) return mv->e <= 30u;
+    if (kind == (uint32_t)DH_MOVE_PATH)
+        return mv->e <= 30u && (mv->mode == 0u || (mv->mode <= 2u && mv->prof[0].kind == (uint32_t)DH_PROFILE_SCURVE));
     return mv->n >= 1u && mv->n <= (uint32_t)DH_MAX_JOINTS;
 }
 
@@ -71,6 +72,12 @@ void dh_motion_start_q_(dh_move_q *mv, uint32_t dur)
     mv->ps[0] = 0;
     mv->ps[1] = 0;
     mv->ps[2] = 0;
+    mv->mode = 0u;
+    mv->soff = 0;
+    mv->vcap = 0;
+    mv->lim[0] = mv->prof[0].v;
+    mv->lim[1] = mv->prof[0].a;
+    mv->lim[2] = mv->prof[0].j;
 }
 
 /* the clock advanced by r dt (r Q2.30 in [0, 1]) with its fraction,
@@ -206,13 +213,28 @@ dh_status dh_move_path_jerk_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_l
     return moveq_path_start(mv, p, st);
 }
 
+int32_t dh_motion_s_q_(const dh_move_q *mv, int32_t *f)
+{
+    int64_t s;
+    if (mv->e > 30u) return -1;
+    if (mv->mode == 2u) {
+        s = mv->soff;
+    } else if (mv->mode == 1u) {
+        s = (int64_t)mv->soff + dh_motion_brake_s_q_(&mv->brk, mv->clock);
+    } else {
+        if (dh_profile_eval_q(&mv->prof[0], mv->clock, &f[0], &f[1], &f[2]) != DH_OK) return -1;
+        s = (int64_t)mv->soff + f[0];
+    }
+    return (s < 0 || s > ((int64_t)1 << mv->e)) ? -1 : (int32_t)s;
+}
+
 dh_status dh_move_target_q(const dh_move_q *mv, dh_frame_q *T)
 {
-    int32_t s = 0, sd, sdd;
+    int32_t f[3], s;
     DH_ASSERT(mv != NULL && T != NULL);
     if (!moveq_holds(mv, (uint32_t)DH_MOVE_PATH)) return DH_ERR_ARG;
-    if (dh_profile_eval_q(&mv->prof[0], mv->clock, &s, &sd, &sdd) != DH_OK) return DH_ERR_ARG;
-    if (s < 0 || (uint32_t)s > (1u << mv->e)) return DH_ERR_ARG;
+    s = dh_motion_s_q_(mv, f);
+    if (s < 0) return DH_ERR_ARG;
     return dh_path_eval_q(&mv->path, (dh_q30)((uint32_t)s << (30u - mv->e)), T);
 }
 
@@ -346,6 +368,92 @@ static DH_NOINLINE dh_q30 moveq_feed_goal(dh_move_q *mv, uint32_t dt, int ok)
     return goal;
 }
 
+/* The brake of the seven-phase move mv from its plan's s' and s'' at the
+ * clock started (1), its cap of s' lowered to 7/8 of the plan's peak s'
+ * (7/8 of a resumed plan's cap); 0 (the
+ * plan runs on) where s' is 0, s'' < 0 (the plan's own deceleration to
+ * its end is the stop) or the brake would pass the path's end */
+static DH_NOINLINE int moveq_brake(dh_move_q *mv)
+{
+    dh_brake_q b;
+    int32_t f[3], cap;
+    int64_t end;
+    if (dh_profile_eval_q(&mv->prof[0], mv->clock, &f[0], &f[1], &f[2]) != DH_OK || f[1] <= 0 || f[2] < 0) return 0;
+    if (dh_motion_brake_plan_q_(&b, f[1], f[2], mv->lim[1], mv->lim[2]) != DH_OK) return 0;
+    end = (int64_t)mv->soff + f[0] + dh_motion_brake_s_q_(&b, UINT32_MAX);
+    if (end > ((int64_t)1 << mv->e) || (uint64_t)b.d[0] + b.d[1] + b.d[2] > (uint64_t)INT32_MAX) return 0;
+    mv->brk = b;
+    mv->soff += f[0];
+    mv->mode = 1u;
+    mv->clock = 0u;
+    mv->cfrac = 0u;
+    mv->dur = b.d[0] + b.d[1] + b.d[2];
+    cap = mv->prof[0].v - (mv->prof[0].v >> 3);
+    if (cap < 1) cap = 1;
+    if (mv->vcap == 0 || cap < mv->vcap) mv->vcap = cap;
+    return 1;
+}
+
+/* The rest of the path from the held s planned rest to rest within the
+ * first plan's peaks, s' within the cap, and started (mode 0) */
+static DH_NOINLINE dh_status moveq_resume(dh_move_q *mv)
+{
+    dh_profile_q p;
+    dh_status st;
+    p.d = (int32_t)(((int64_t)1 << mv->e) - mv->soff);
+    p.v = (mv->vcap > 0 && mv->vcap < mv->lim[0]) ? mv->vcap : mv->lim[0];
+    p.a = mv->lim[1];
+    p.j = mv->lim[2];
+    st = dh_motion_profile_q_(&p);
+    if (st != DH_OK) return st;
+    mv->prof[0] = p;
+    mv->mode = 0u;
+    mv->clock = 0u;
+    mv->cfrac = 0u;
+    mv->dur = p.T;
+    return DH_OK;
+}
+
+/* One period of a seven-phase path move (the lag rule of motion.h):
+ * r stays 1; a not-OK period while moving starts the brake, which runs to
+ * its end; at rest the move holds until an OK period, which resumes it.
+ * *done 1 when OK at the end. */
+static DH_NOINLINE dh_status moveq_jerk_period(dh_move_q *mv, uint32_t dt, int ok, int *done)
+{
+    if (mv->mode == 2u) {
+        if (ok == 0) return DH_OK;
+        {
+            const dh_status st = moveq_resume(mv);
+            if (st != DH_OK) return st;
+        }
+    } else if (mv->mode == 0u && ok == 0) {
+        if (mv->clock == 0u || mv->clock >= mv->dur) return DH_OK;
+        (void)moveq_brake(mv);
+    } else {
+        /* braking, or running while OK */
+    }
+    if (mv->mode == 0u && mv->clock >= mv->dur) {
+        *done = ok;
+        return DH_OK;
+    }
+    moveq_tick(mv, DH_Q30_ONE, dt);
+    if (mv->mode == 1u && mv->clock >= mv->dur) {
+        mv->soff += dh_motion_brake_s_q_(&mv->brk, mv->dur);
+        mv->mode = 2u;
+    }
+    return DH_OK;
+}
+
+/* the report's feed of a seven-phase move: its cap of s' over the first
+ * plan's peak (Q2.30; 1 without a cap) */
+static dh_q30 moveq_cap_feed(const dh_move_q *mv)
+{
+    uint32_t r;
+    if (mv->vcap <= 0 || mv->vcap >= mv->lim[0]) return DH_Q30_ONE;
+    r = dh_q_udiv((uint32_t)mv->vcap, (uint32_t)mv->lim[0], 30u);
+    return (dh_q30)((r > 0u) ? r : 1u);
+}
+
 dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh_move_report_q *rep)
 {
     dh_status st;
@@ -355,7 +463,11 @@ dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh
     if (st != DH_OK) return st;
     if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
     ok = state == DH_TRACK_OK;
-    if (ok != 0 && mv->clock >= mv->dur) {
+    if (mv->prof[0].kind == (uint32_t)DH_PROFILE_SCURVE) {
+        st = moveq_jerk_period(mv, dt, ok, &done);
+        if (st != DH_OK) return st;
+        mv->feed = moveq_cap_feed(mv);
+    } else if (ok != 0 && mv->clock >= mv->dur) {
         done = 1;
     } else if (ok != 0 && mv->feed >= DH_Q30_ONE && mv->fcap >= DH_Q30_ONE) {
         mv->lag = 0u;   /* at full feed and ceiling: r stays 1, no bound needed */

@@ -391,12 +391,10 @@ static DH_NOINLINE void queueq_joint_step(dh_queue_q *qu, uint32_t dt, int32_t *
  * range (dh_queue_target_q refuses it) */
 static DH_NOINLINE int32_t queueq_s(dh_move_q *mv)
 {
-    uint32_t s;
-    if (mv->e > 30u || mv->clock > mv->dur) return -1;
-    if (dh_profile_eval_q(&mv->prof[0], mv->clock, &mv->ps[0], &mv->ps[1], &mv->ps[2]) != DH_OK) return -1;
-    if (mv->ps[0] < 0 || (uint32_t)mv->ps[0] > (1u << mv->e)) return -1;
-    s = (uint32_t)mv->ps[0] << (30u - mv->e);
-    return (int32_t)s;
+    int32_t s;
+    if (mv->clock > mv->dur) return -1;
+    s = dh_motion_s_q_(mv, mv->ps);
+    return (s < 0) ? -1 : (int32_t)((uint32_t)s << (30u - mv->e));
 }
 
 /* 1 when the blended line in mv runs in its end tail (clock c beyond
@@ -484,7 +482,7 @@ static int queueq_at_rest(const dh_queue_q *qu)
 {
     const dh_move_q *mv = &qu->mv;
     const dh_q30 r = (mv->kind == (uint32_t)DH_MOVE_PATH) ? mv->feed : qu->r;
-    return mv->clock == 0u || mv->clock >= mv->dur || r == 0;
+    return mv->clock == 0u || mv->clock >= mv->dur || r == 0 || mv->mode == 2u;
 }
 
 /* 1 when the braking move's next command is this period's: its warp at
@@ -631,7 +629,7 @@ dh_status dh_queue_advance_q(dh_queue_q *qu, dh_track_state state, dh_queue_repo
     if (mode == QUEUEQ_PATH && qu->phase != (uint32_t)DH_QUEUE_STOPPED) {
         /* braking: the feed override falls as if the tracker lagged, but
          * at the end (s' = 0) the tracker's state decides done */
-        const int brake = qu->phase == (uint32_t)DH_QUEUE_BRAKE && qu->mv.clock < qu->mv.dur;
+        const int brake = qu->phase == (uint32_t)DH_QUEUE_BRAKE && (qu->mv.clock < qu->mv.dur || qu->mv.mode == 2u);
         const dh_status st = dh_move_advance_q(&qu->mv, qu->dt, brake ? DH_TRACK_LAGGING : state, &qu->mrep);
         if (st != DH_OK) return st;
     }
