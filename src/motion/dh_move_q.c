@@ -47,7 +47,7 @@ static int moveq_holds(const dh_move_q *mv, uint32_t kind)
     if (mv->dur > (uint32_t)INT32_MAX || mv->clock > mv->dur || mv->cfrac >= (uint32_t)DH_Q30_ONE) return 0;
     if (mv->feed < 0 || mv->feed > DH_Q30_ONE || mv->fcap < 0 || mv->fcap > DH_Q30_ONE) return 0;
     if (kind == (uint32_t)DH_MOVE_PATH)
-        return mv->e <= 30u && (mv->mode == 0u || (mv->mode <= 2u && mv->prof[0].kind == (uint32_t)DH_PROFILE_SCURVE));
+        return mv->e <= 30u && mv->mode <= 3u;
     return mv->n >= 1u && mv->n <= (uint32_t)DH_MAX_JOINTS;
 }
 
@@ -217,9 +217,9 @@ int32_t dh_motion_s_q_(const dh_move_q *mv, int32_t *f)
 {
     int64_t s;
     if (mv->e > 30u) return -1;
-    if (mv->mode == 2u) {
+    if (mv->mode == 3u) {
         s = mv->soff;
-    } else if (mv->mode == 1u) {
+    } else if (mv->mode != 0u) {
         s = (int64_t)mv->soff + dh_motion_brake_s_q_(&mv->brk, mv->clock);
     } else {
         if (dh_profile_eval_q(&mv->prof[0], mv->clock, &f[0], &f[1], &f[2]) != DH_OK) return -1;
@@ -369,84 +369,75 @@ static DH_NOINLINE dh_q30 moveq_feed_goal(dh_move_q *mv, uint32_t dt, int ok)
 }
 
 /* The brake of the seven-phase move mv from its plan's s' and s'' at the
- * clock started (1), its cap of s' lowered to 7/8 of the plan's peak s'
- * (7/8 of a resumed plan's cap); 0 (the
- * plan runs on) where s' is 0, s'' < 0 (the plan's own deceleration to
- * its end is the stop) or the brake would pass the path's end */
-static DH_NOINLINE int moveq_brake(dh_move_q *mv)
+ * clock (in mv->ps) started, its cap of s' lowered to 7/8 of the plan's
+ * peak s'; the plan runs on where s' is 0, s'' < 0 (its own deceleration
+ * to its end is the stop) or the brake might pass the path's end */
+static void moveq_brake(dh_move_q *mv)
 {
-    dh_brake_q b;
-    int32_t f[3], cap;
-    int64_t end;
-    if (dh_profile_eval_q(&mv->prof[0], mv->clock, &f[0], &f[1], &f[2]) != DH_OK || f[1] <= 0 || f[2] < 0) return 0;
-    if (dh_motion_brake_plan_q_(&b, f[1], f[2], mv->lim[1], mv->lim[2]) != DH_OK) return 0;
-    end = (int64_t)mv->soff + f[0] + dh_motion_brake_s_q_(&b, UINT32_MAX);
-    if (end > ((int64_t)1 << mv->e) || (uint64_t)b.d[0] + b.d[1] + b.d[2] > (uint64_t)INT32_MAX) return 0;
-    mv->brk = b;
-    mv->soff += f[0];
+    uint32_t T;
+    int32_t cap;
+    if (mv->ps[1] <= 0 || mv->ps[2] < 0) return;
+    if (dh_motion_brake_plan_q_(&mv->brk, mv->ps[1], mv->ps[2], mv->lim[1], mv->lim[2]) != DH_OK) return;
+    T = dh_motion_brake_dur_q_(&mv->brk);
+    if (T == 0u || (int64_t)mv->soff + mv->ps[0] + dh_motion_brake_reach_q_(&mv->brk) > ((int64_t)1 << mv->e)) return;
+    mv->soff += mv->ps[0];
     mv->mode = 1u;
     mv->clock = 0u;
     mv->cfrac = 0u;
-    mv->dur = b.d[0] + b.d[1] + b.d[2];
+    mv->dur = T;
     cap = mv->prof[0].v - (mv->prof[0].v >> 3);
     if (cap < 1) cap = 1;
     if (mv->vcap == 0 || cap < mv->vcap) mv->vcap = cap;
-    return 1;
 }
 
-/* The rest of the path from the held s planned rest to rest within the
- * first plan's peaks, s' within the cap, and started (mode 0) */
-static DH_NOINLINE dh_status moveq_resume(dh_move_q *mv)
+/* The rest of the path from the held s, to be planned rest to rest in
+ * prof[0] (d, the first plan's peaks, v within the cap): mode 3 */
+static DH_NOINLINE void moveq_rest(dh_move_q *mv)
 {
-    dh_profile_q p;
-    dh_status st;
-    p.d = (int32_t)(((int64_t)1 << mv->e) - mv->soff);
-    p.v = (mv->vcap > 0 && mv->vcap < mv->lim[0]) ? mv->vcap : mv->lim[0];
-    p.a = mv->lim[1];
-    p.j = mv->lim[2];
-    st = dh_motion_profile_q_(&p);
-    if (st != DH_OK) return st;
-    mv->prof[0] = p;
-    mv->mode = 0u;
-    mv->clock = 0u;
-    mv->cfrac = 0u;
-    mv->dur = p.T;
-    return DH_OK;
+    dh_profile_q *const p = &mv->prof[0];
+    if (mv->mode == 2u) mv->soff += dh_motion_brake_s_q_(&mv->brk, mv->clock);
+    mv->mode = 3u;
+    p->d = (int32_t)(((int64_t)1 << mv->e) - mv->soff);
+    p->v = (mv->vcap > 0 && mv->vcap < mv->lim[0]) ? mv->vcap : mv->lim[0];
+    p->a = mv->lim[1];
+    p->j = mv->lim[2];
 }
 
-/* One period of a seven-phase path move (the lag rule of motion.h):
- * r stays 1; a not-OK period while moving starts the brake, which runs to
- * its end; at rest the move holds until an OK period, which resumes it.
- * *done 1 when OK at the end. */
-static DH_NOINLINE dh_status moveq_jerk_period(dh_move_q *mv, uint32_t dt, int ok, int *done)
+int dh_motion_jerk_pre_q_(dh_move_q *mv, int ok)
 {
-    if (mv->mode == 2u) {
-        if (ok == 0) return DH_OK;
-        {
-            const dh_status st = moveq_resume(mv);
-            if (st != DH_OK) return st;
-        }
-    } else if (mv->mode == 0u && ok == 0) {
-        if (mv->clock == 0u || mv->clock >= mv->dur) return DH_OK;
-        (void)moveq_brake(mv);
-    } else {
-        /* braking, or running while OK */
+    if (mv->mode >= 2u) {
+        if (ok == 0) return 0;
+        moveq_rest(mv);
+        return 1;
     }
-    if (mv->mode == 0u && mv->clock >= mv->dur) {
-        *done = ok;
-        return DH_OK;
+    if (mv->mode == 0u && ok == 0 && mv->clock > 0u && mv->clock < mv->dur &&
+        dh_profile_eval_q(&mv->prof[0], mv->clock, &mv->ps[0], &mv->ps[1], &mv->ps[2]) == DH_OK)
+        moveq_brake(mv);
+    return 0;
+}
+
+int dh_motion_jerk_post_q_(dh_move_q *mv, uint32_t dt, int ok)
+{
+    if (mv->mode == 3u) {
+        if (ok == 0) return 0;
+        mv->mode = 0u;
+        mv->clock = 0u;
+        mv->cfrac = 0u;
+        mv->dur = mv->prof[0].T;
     }
+    if (mv->mode == 0u && mv->clock >= mv->dur) return ok;
+    if (mv->mode == 2u || (mv->mode == 0u && ok == 0 && mv->clock == 0u)) return 0;
     moveq_tick(mv, DH_Q30_ONE, dt);
-    if (mv->mode == 1u && mv->clock >= mv->dur) {
-        mv->soff += dh_motion_brake_s_q_(&mv->brk, mv->dur);
-        mv->mode = 2u;
+    if (mv->mode == 1u) {
+        dh_motion_brake_seek_q_(&mv->brk, mv->clock);
+        if (mv->clock >= mv->dur) mv->mode = 2u;
     }
-    return DH_OK;
+    return 0;
 }
 
 /* the report's feed of a seven-phase move: its cap of s' over the first
  * plan's peak (Q2.30; 1 without a cap) */
-static dh_q30 moveq_cap_feed(const dh_move_q *mv)
+dh_q30 dh_motion_cap_feed_q_(const dh_move_q *mv)
 {
     uint32_t r;
     if (mv->vcap <= 0 || mv->vcap >= mv->lim[0]) return DH_Q30_ONE;
@@ -454,20 +445,10 @@ static dh_q30 moveq_cap_feed(const dh_move_q *mv)
     return (dh_q30)((r > 0u) ? r : 1u);
 }
 
-dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh_move_report_q *rep)
+int dh_motion_trap_period_q_(dh_move_q *mv, uint32_t dt, int ok)
 {
-    dh_status st;
-    int done = 0, ok = 0;
-    DH_ASSERT(mv != NULL && rep != NULL);
-    st = moveq_period_ok(mv, (uint32_t)DH_MOVE_PATH, dt);
-    if (st != DH_OK) return st;
-    if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
-    ok = state == DH_TRACK_OK;
-    if (mv->prof[0].kind == (uint32_t)DH_PROFILE_SCURVE) {
-        st = moveq_jerk_period(mv, dt, ok, &done);
-        if (st != DH_OK) return st;
-        mv->feed = moveq_cap_feed(mv);
-    } else if (ok != 0 && mv->clock >= mv->dur) {
+    int done = 0;
+    if (ok != 0 && mv->clock >= mv->dur) {
         done = 1;
     } else if (ok != 0 && mv->feed >= DH_Q30_ONE && mv->fcap >= DH_Q30_ONE) {
         mv->lag = 0u;   /* at full feed and ceiling: r stays 1, no bound needed */
@@ -482,6 +463,30 @@ dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh
         else
             mv->feed = ((int64_t)r - x > goal) ? r - x : goal;
         moveq_tick(mv, mv->feed, dt);
+    }
+    return done;
+}
+
+dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh_move_report_q *rep)
+{
+    dh_status st;
+    int done, ok;
+    DH_ASSERT(mv != NULL && rep != NULL);
+    st = moveq_period_ok(mv, (uint32_t)DH_MOVE_PATH, dt);
+    if (st != DH_OK) return st;
+    if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
+    ok = state == DH_TRACK_OK;
+    if (mv->mode != 0u || mv->prof[0].kind == (uint32_t)DH_PROFILE_SCURVE) {
+        /* the lag rule's steps and the rest's planning called from here,
+         * one level down each (the 256 B guard) */
+        if (dh_motion_jerk_pre_q_(mv, ok) != 0) {
+            st = dh_motion_profile_q_(&mv->prof[0]);
+            if (st != DH_OK) return st;
+        }
+        done = dh_motion_jerk_post_q_(mv, dt, ok);
+        mv->feed = dh_motion_cap_feed_q_(mv);
+    } else {
+        done = dh_motion_trap_period_q_(mv, dt, ok);
     }
     rep->clock = mv->clock;
     rep->feed = mv->feed;

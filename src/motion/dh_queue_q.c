@@ -482,7 +482,7 @@ static int queueq_at_rest(const dh_queue_q *qu)
 {
     const dh_move_q *mv = &qu->mv;
     const dh_q30 r = (mv->kind == (uint32_t)DH_MOVE_PATH) ? mv->feed : qu->r;
-    return mv->clock == 0u || mv->clock >= mv->dur || r == 0 || mv->mode == 2u;
+    return mv->clock == 0u || mv->clock >= mv->dur || r == 0 || mv->mode >= 2u;
 }
 
 /* 1 when the braking move's next command is this period's: its warp at
@@ -629,9 +629,20 @@ dh_status dh_queue_advance_q(dh_queue_q *qu, dh_track_state state, dh_queue_repo
     if (mode == QUEUEQ_PATH && qu->phase != (uint32_t)DH_QUEUE_STOPPED) {
         /* braking: the feed override falls as if the tracker lagged, but
          * at the end (s' = 0) the tracker's state decides done */
-        const int brake = qu->phase == (uint32_t)DH_QUEUE_BRAKE && (qu->mv.clock < qu->mv.dur || qu->mv.mode == 2u);
-        const dh_status st = dh_move_advance_q(&qu->mv, qu->dt, brake ? DH_TRACK_LAGGING : state, &qu->mrep);
-        if (st != DH_OK) return st;
+        const int brake = qu->phase == (uint32_t)DH_QUEUE_BRAKE && (qu->mv.clock < qu->mv.dur || qu->mv.mode >= 2u);
+        const int ok = !brake && state == DH_TRACK_OK;
+        if (qu->bl == 0u && (qu->mv.mode != 0u || qu->mv.prof[0].kind == (uint32_t)DH_PROFILE_SCURVE)) {
+            /* a seven-phase move: the lag rule of dh_move_advance_q, its
+             * steps called from here (the 256 B guard) */
+            if (dh_motion_jerk_pre_q_(&qu->mv, ok) != 0) {
+                const dh_status st = dh_motion_profile_q_(&qu->mv.prof[0]);
+                if (st != DH_OK) return st;
+            }
+            qu->mrep.done = dh_motion_jerk_post_q_(&qu->mv, qu->dt, ok);
+            qu->mv.feed = dh_motion_cap_feed_q_(&qu->mv);
+        } else {
+            qu->mrep.done = dh_motion_trap_period_q_(&qu->mv, qu->dt, ok);
+        }
     }
     queueq_advance_end(qu, state, rep, c0, mode);
     return DH_OK;
