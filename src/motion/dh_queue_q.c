@@ -486,11 +486,13 @@ static int queueq_at_rest(const dh_queue_q *qu)
 }
 
 /* 1 when the braking move's next command is this period's: its warp at
- * 0, or a path move's clock at its end already at the start of this
- * period (c0; its frame then stays B until the tracker is OK there) */
+ * 0, a path move's clock at its end already at the start of this period
+ * (c0; its frame then stays B until the tracker is OK there), or a
+ * seven-phase move held since the start of this period */
 static int queueq_still(const dh_queue_q *qu, uint32_t c0)
 {
     const dh_move_q *mv = &qu->mv;
+    if (mv->kind == (uint32_t)DH_MOVE_PATH && mv->mode != 0u) return mv->mode >= 2u && c0 >= mv->dur;
     if (mv->kind == (uint32_t)DH_MOVE_PATH) return mv->feed == 0 || c0 >= mv->dur;
     return qu->r == 0;
 }

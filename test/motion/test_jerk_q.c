@@ -30,6 +30,11 @@
  * cap, 7/8 of the peak s' of the plan the brake left; the move completes
  * at B exactly.
  *
+ * Queue with lag: a jerk-limited line or arc in the fixed queue with a
+ * stretch of LAGGING periods and a stop resumed after a rest: the
+ * target's speed, acceleration and jerk over every window (the brake of
+ * the lag rule and of the stop); the move completes at B exactly.
+ *
  * Queue (UR5, fixed tracker): jerk-limited joint moves and a jerk-limited
  * line, one stop at a random period and a resume after a rest; every
  * joint command over windows within vmax and amax, and within jmax over
@@ -290,7 +295,54 @@ static int64_t plan_s(const dh_move_q *mv, int32_t *sd)
     return (int64_t)mv->soff + s;
 }
 
-static double exec_worst; /* the largest jerk over jmax in windows with a lag period */
+static double exec_worst; /* the largest jerk over jmax in windows with a lag */
+
+/* the windows of the Cartesian targets' checks: entries dec periods
+ * apart, acceleration over 2 wa entries, jerk over 3 wj */
+typedef struct {
+    long at, filled, dec, wa, wj;
+    double N, V, A, J;
+} cart_win;
+
+static void cart_win_init(cart_win *w, double N, const dh_cart_limits_q *lim, const dh_cart_jerk_q *jk)
+{
+    w->at = -1;
+    w->filled = 0;
+    w->N = N;
+    w->V = lim->vmax;
+    w->A = lim->amax;
+    w->J = jk->jmax;
+    w->wa = window(4.0, N, w->A, 2);
+    w->wj = window(8.0, N, w->J, 3);
+    /* the jerk's 3 wj entries within the ring */
+    w->dec = 1 + 3 * w->wj / (RING - 8);
+    w->wa = 1 + w->wa / w->dec;
+    w->wj = 1 + w->wj / w->dec;
+    DHT_TRUE(3 * w->wj < RING && 2 * w->wa < RING);
+}
+
+/* the target p of period k into the ring every dec periods (lag: this or
+ * a period since the last entry lagged or braked): speed, acceleration
+ * and jerk over the windows ending there within the limits */
+static void cart_win_put(cart_win *w, long k, const dh_qpos *p, int lag, const char *what)
+{
+    const double hj = w->wj * w->dec * DT;
+    double d3;
+    long c, anylag = 0;
+    if (k % w->dec != 0) return;
+    w->at = (w->at + 1) % RING;
+    memcpy(ring[w->at], p, 3u * sizeof p[0]);
+    ring_r1[w->at] = (unsigned char)lag;
+    w->filled++;
+    ring_cart(w->at, w->filled, w->dec, w->wa, w->N, w->V, w->A, what);
+    d3 = ring_jerk(w->at, w->filled, w->dec, w->wj);
+    for (c = 0; c <= 3 * w->wj && c < RING; c++) anylag |= ring_r1[(w->at - c + RING) % RING];
+    if (d3 >= 0.0) {
+        DHT_TRUE_MSG(d3 <= w->J * (1 + REL_FD) + 8.0 * w->N / (hj * hj * hj), "%s: jerk %.6g > %.0f (w %ld)", what, d3, w->J,
+                     w->wj);
+        if (anylag && d3 / w->J > exec_worst) exec_worst = d3 / w->J;
+    }
+}
 
 /* One jerk-limited executor move (line or arc) with two stretches of
  * LAGGING periods: speed, acceleration and jerk of the target over every
@@ -306,8 +358,8 @@ static int executor_move(dhsm_rig *g, long i)
     dh_move_q *const mv = &the_mem.mv;
     dh_move_report_q rep;
     dh_frame_q T, Tprev;
-    long k, k0, k1, len0, len1, at = -1, filled = 0, wa, wj, dec, resumed = 0;
-    double N, hj, d3;
+    long k, k0, k1, len0, len1, resumed = 0;
+    cart_win w;
     int64_t sprev = -1;
     uint32_t mode0 = 0u, held = 0u;
     memset(&rep, 0, sizeof rep);
@@ -319,41 +371,19 @@ static int executor_move(dhsm_rig *g, long i)
     k1 = k0 + len0 + (long)dht_rand_uniform(0.0, mv->dur / 1000.0);
     len1 = (long)dht_rand_uniform(1.0, 400.0);
     /* noise: the path and profile, the clock's 1 us at vmax, 1 LSB */
-    N = 6.0 + ldexp(p.radius, -26) + lim.vmax * 1e-6 + ldexp((double)p.length, -27);
-    wa = window(4.0, N, lim.amax, 2);
-    wj = window(8.0, N, jk.jmax, 3);
-    /* entries dec periods apart, the jerk's 3 wj entries within the ring */
-    dec = 1 + 3 * wj / (RING - 8);
-    wa = 1 + wa / dec;
-    wj = 1 + wj / dec;
-    hj = wj * dec * DT;
-    DHT_TRUE(3 * wj < RING && 2 * wa < RING);
+    cart_win_init(&w, 6.0 + ldexp(p.radius, -26) + lim.vmax * 1e-6 + ldexp((double)p.length, -27), &lim, &jk);
     memset(&Tprev, 0, sizeof Tprev);
     for (k = 0; k < 200000; k++) {
         const int lag = (k >= k0 && k < k0 + len0) || (k >= k1 && k < k1 + len1);
         const dh_track_state st = lag ? DH_TRACK_LAGGING : DH_TRACK_OK;
-        long c, anylag = 0;
         DHT_EQ_INT(dh_move_target_q(mv, &T), DH_OK);
         /* held at rest: the target does not move */
         if (mv->mode == 2u && held == 2u) DHT_TRUE_MSG(memcmp(&T, &Tprev, sizeof T) == 0, "move %ld: held target moved", i);
         Tprev = T;
         held = mv->mode;
-        if (k % dec == 0) {
-            at = (at + 1) % RING;
-            memcpy(ring[at], T.p, 3u * sizeof T.p[0]);
-            ring_r1[at] = (unsigned char)(lag || mv->mode != 0u || mode0 != 0u);
-            mode0 = 0u;
-            filled++;
-            ring_cart(at, filled, dec, wa, N, lim.vmax, lim.amax, "executor");
-            d3 = ring_jerk(at, filled, dec, wj);
-            for (c = 0; c <= 3 * wj && c < RING; c++) anylag |= ring_r1[(at - c + RING) % RING];
-            if (d3 >= 0.0) {
-                DHT_TRUE_MSG(d3 <= jk.jmax * (1 + REL_FD) + 8.0 * N / (hj * hj * hj), "move %ld: jerk %.6g > %d (w %ld)", i,
-                             d3, (int)jk.jmax, wj);
-                if (anylag && d3 / jk.jmax > exec_worst) exec_worst = d3 / jk.jmax;
-            }
-        }
         mode0 |= mv->mode;
+        cart_win_put(&w, k, T.p, lag || mode0 != 0u, "executor");
+        if (k % w.dec == 0) mode0 = 0u;
         /* after a resume: s' within the cap, 7/8 of the plan's peak s' when
          * the brake began */
         if (mv->mode == 0u && mv->vcap > 0) {
@@ -392,6 +422,68 @@ static void executor_stop_q(void)
     DHT_TRUE(braked > 0);
     dht_printf("%ld jerk-limited executor moves with two stretches of lagging periods, %ld braked, held and resumed; "
                "largest jerk / jmax over windows with a lag: %.6f\n",
+               n, braked, exec_worst);
+}
+
+/* One seven-phase path item in the fixed queue with a stretch of LAGGING
+ * periods and a stop resumed after a rest: the target's speed,
+ * acceleration and jerk over every window; the item completes at B
+ * exactly. Returns 1 when it braked. */
+static int queue_lag_one(dhsm_rig *g, long i)
+{
+    dh_queue_q *const qu = &the_mem.qu;
+    dh_track_q trk; /* on the stack: the micro:bit's .data + .bss are full */
+    dh_queue_item_q items[CAP];
+    dh_path_q p;
+    dh_qpos via[3];
+    int32_t ia[DH_MAX_JOINTS];
+    dh_cart_limits_q lim;
+    dh_cart_jerk_q jk;
+    dh_queue_cmd_q cmd;
+    dh_queue_report_q rep;
+    cart_win w;
+    long k, k0, len0, kstop, rest, stopped_at = -1;
+    int braked = 0, done = 0;
+    if (!path_rand(g, (i & 1) != 0, &p, via, ia)) return 0;
+    draw_limits(&lim, &jk);
+    DHT_EQ_INT(dh_queue_init_q(qu, items, CAP), DH_OK);
+    DHT_EQ_INT(dh_track_init_q(&trk, &g->r, &g->m, ia, DT_US), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_jerk_q(qu, &p, &lim, &jk), DH_OK);
+    k0 = (long)dht_rand_uniform(1.0, items[0].prof.T / 1000.0);
+    len0 = (long)dht_rand_uniform(1.0, 400.0);
+    kstop = (long)dht_rand_uniform(1.0, items[0].prof.T / 1000.0 + 400.0);
+    rest = (long)dht_rand_uniform(1.0, 300.0);
+    cart_win_init(&w, 6.0 + ldexp(p.radius, -26) + lim.vmax * 1e-6 + ldexp((double)p.length, -27), &lim, &jk);
+    for (k = 0; k < 200000 && !done; k++) {
+        const int lag = k >= k0 && k < k0 + len0;
+        if (k == kstop) DHT_EQ_INT(dh_queue_stop_q(qu), DH_OK);
+        if (stopped_at >= 0 && k == stopped_at + rest) DHT_EQ_INT(dh_queue_resume_q(qu), DH_OK);
+        DHT_EQ_INT(dh_queue_target_q(qu, &trk, &cmd), DH_OK);
+        DHT_EQ_INT((int)cmd.kind, (int)DH_MOVE_PATH);
+        cart_win_put(&w, k, cmd.T.p, lag || qu->mv.mode != 0u || qu->phase != (uint32_t)DH_QUEUE_RUN, "queue");
+        DHT_EQ_INT(dh_queue_advance_q(qu, lag ? DH_TRACK_LAGGING : DH_TRACK_OK, &rep), DH_OK);
+        DHT_TRUE(rep.feed > 0 && rep.feed <= DH_Q30_ONE);
+        braked |= qu->mv.mode != 0u;
+        if (rep.stopped && stopped_at < 0) stopped_at = k;
+        done = rep.done;
+    }
+    DHT_TRUE_MSG(done, "queue %ld: not done", i);
+    DHT_EQ_INT(dh_queue_target_q(qu, &trk, &cmd), DH_OK);
+    DHT_TRUE(memcmp(&cmd.T, &p.B, sizeof cmd.T) == 0);
+    DHT_EQ_INT(dh_queue_advance_q(qu, DH_TRACK_OK, &rep), DH_OK);
+    return braked;
+}
+
+static void queue_lag_q(void)
+{
+    dhsm_rig *const g = &the_rig;
+    long i, n = DHT_ITER(12), braked = 0;
+    dhsm_rig_make(g, &dhs_ur5_mm, 180.0, 720.0);
+    exec_worst = 0.0;
+    for (i = 0; i < n; i++) braked += queue_lag_one(g, i);
+    DHT_TRUE(braked > 0);
+    dht_printf("%ld queued jerk-limited moves with a lagging stretch and a stop, %ld braked; largest jerk / jmax over "
+               "windows with a lag or a stop: %.6f\n",
                n, braked, exec_worst);
 }
 
@@ -629,6 +721,7 @@ static const dht_case cases[] = {
     DHT_CASE(jerk_paths_q_vs_double),
     DHT_CASE(executor_stop_q),
     DHT_CASE(queue_jerk_stop_q),
+    DHT_CASE(queue_lag_q),
     DHT_CASE(jerk_q_errors),
 };
 DHT_MAIN(cases)
