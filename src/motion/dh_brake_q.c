@@ -61,7 +61,8 @@ static DH_NOINLINE uint64_t brakeq_div96(uint64_t d, uint64_t u, uint32_t w, int
     uint64_t r = 0u, q = 0u;
     uint32_t i;
     for (i = 96u; i > 0u; i--) {
-        r = (r << 1) | ((i > 32u) ? (u >> (i - 33u)) & 1u : (w >> (i - 1u)) & 1u);
+        const uint32_t bit = (i > 32u) ? (uint32_t)(u >> (i - 33u)) & 1u : (w >> (i - 1u)) & 1u;
+        r = (r << 1) | bit;
         q <<= 1;
         if (r >= d) {
             r -= d;
@@ -130,13 +131,14 @@ void dh_motion_brake_seek_q_(dh_brake_q *b, uint32_t t)
     for (k = 0u; k < b->k; k++) t0 += b->d[k];
     while (b->k < 2u && t >= t0 + b->d[b->k]) {
         const uint32_t D = b->d[b->k];
+        const uint32_t dn = (b->k == 0u) ? (uint32_t)b->ap - (uint32_t)b->a0 : 2u * (uint32_t)b->ap;
         uint64_t w = brakeq_get(b->w);
         brakeq_put(b->c, brakeq_get(b->c) + brakeq_get(&b->c[2]) + brakeq_get(&b->c[4]) + brakeq_get(&b->c[6]));
         /* W_{k+1} = W_k + (a_k + a_{k+1}) D_k: a0 - ap, -2 ap, -ap */
         if (b->k == 0u && b->a0 >= b->ap)
-            w += (uint64_t)(uint32_t)(b->a0 - b->ap) * D;
+            w += (uint64_t)((uint32_t)0 - dn) * D;
         else
-            w -= (uint64_t)((b->k == 0u) ? (uint32_t)(b->ap - b->a0) : 2u * (uint32_t)b->ap) * D;
+            w -= (uint64_t)dn * D;
         brakeq_put(b->w, w);
         t0 += D;
         brakeq_enter(b, b->k + 1u);
@@ -154,7 +156,7 @@ int32_t dh_motion_brake_s_q_(const dh_brake_q *b, uint32_t t)
     x3 = (uint32_t)(((uint64_t)x2 * x + 0x20000000u) >> 30);
     s = (int64_t)brakeq_get(b->c) + brakeq_mul30((int64_t)brakeq_get(&b->c[2]), x);
     s += brakeq_mul30((int64_t)brakeq_get(&b->c[4]), x2) + brakeq_mul30((int64_t)brakeq_get(&b->c[6]), x3);
-    return (int32_t)((s + 128) >> 8);
+    return (int32_t)dh_q_rshr(s, 8u);
 }
 
 /* a duration (us) of x 10^6 / d, rounded down and 1 us added, held to BRAKEQ_TMAX */
@@ -197,7 +199,7 @@ dh_status dh_motion_brake_plan_q_(dh_brake_q *b, int32_t v0, int32_t a0, int32_t
     uint32_t n = 0u, ap;
     if (v0 < 0 || a0 < 0 || A <= 0 || j <= 0 || a0 > A) return DH_ERR_ARG;
     b->a0 = a0;
-    brakeq_put(b->w, (uint64_t)(2u * BRAKEQ_MEGA) * (uint32_t)v0);
+    brakeq_put(b->w, 2u * ((uint64_t)BRAKEQ_MEGA * (uint32_t)v0));
     /* the ideal brake's phase times (the file comment) */
     ap = brakeq_peak((uint32_t)v0, (uint32_t)a0, (uint32_t)A, (uint32_t)j);
     b->d[0] = brakeq_us((uint32_t)j, (uint64_t)(uint32_t)a0 + ap);

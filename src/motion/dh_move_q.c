@@ -23,6 +23,13 @@
  * inequality for x <= 1 (p x^2 <= p x) without a square root. The fall is
  * (A + lo r^2) / k as in the float twin. Every quotient is rounded towards
  * the smaller change (k up, numerators down) and taken bit-serially.
+ *
+ * A seven-phase path move does not warp (its jerk would not be bounded
+ * while r changes): a period not OK while it moves starts the brake of
+ * dh_brake_q.c from the plan's s' and s'', which runs to rest; held, an
+ * OK period plans the rest of the path from rest (s' within 7/8 of the
+ * left plan's peak). s is soff plus the plan's or the brake's distance
+ * (dh_motion_s_q_); docs/design.md, "Lag on a seven-phase path move".
  */
 #include <string.h>
 

@@ -30,7 +30,11 @@
  * with its own A = amax_i - floor(amax_i / 1024), the planning's limit.
  * A stop drives r to 0 (a path move: its feed override as if the tracker
  * lagged), a resume back up: the move stays on its own path and ends at
- * its exact end.
+ * its exact end. A seven-phase path move (not a blended line) keeps r = 1
+ * and takes dh_move_advance_q's lag rule instead (its steps called from
+ * dh_queue_advance_q): a lagging tracker or a stop brakes it at its jerk
+ * limit, it holds at rest, and an OK period after a resume plans and
+ * starts the rest of its path.
  */
 #include <string.h>
 
@@ -391,10 +395,11 @@ static DH_NOINLINE void queueq_joint_step(dh_queue_q *qu, uint32_t dt, int32_t *
  * range (dh_queue_target_q refuses it) */
 static DH_NOINLINE int32_t queueq_s(dh_move_q *mv)
 {
-    int32_t s;
-    if (mv->clock > mv->dur) return -1;
-    s = dh_motion_s_q_(mv, mv->ps);
-    return (s < 0) ? -1 : (int32_t)((uint32_t)s << (30u - mv->e));
+    const int32_t s = (mv->clock > mv->dur) ? -1 : dh_motion_s_q_(mv, mv->ps);
+    uint32_t u;
+    if (s < 0) return -1;
+    u = (uint32_t)s << (30u - mv->e);
+    return (int32_t)u;
 }
 
 /* 1 when the blended line in mv runs in its end tail (clock c beyond
