@@ -61,7 +61,12 @@ static DH_NOINLINE uint64_t brakeq_div96(uint64_t d, uint64_t u, uint32_t w, int
     uint64_t r = 0u, q = 0u;
     uint32_t i;
     for (i = 96u; i > 0u; i--) {
-        const uint32_t bit = (i > 32u) ? (uint32_t)(u >> (i - 33u)) & 1u : (w >> (i - 1u)) & 1u;
+        const uint32_t sh = (i > 32u) ? i - 33u : i - 1u;
+        uint32_t bit = (w >> (sh & 31u)) & 1u;
+        if (i > 32u) {
+            const uint64_t t = u >> sh;
+            bit = (uint32_t)t & 1u;
+        }
         r = (r << 1) | bit;
         q <<= 1;
         if (r >= d) {
@@ -132,11 +137,12 @@ void dh_motion_brake_seek_q_(dh_brake_q *b, uint32_t t)
     while (b->k < 2u && t >= t0 + b->d[b->k]) {
         const uint32_t D = b->d[b->k];
         const uint32_t dn = (b->k == 0u) ? (uint32_t)b->ap - (uint32_t)b->a0 : 2u * (uint32_t)b->ap;
+        const uint32_t dp = (uint32_t)0 - dn;
         uint64_t w = brakeq_get(b->w);
         brakeq_put(b->c, brakeq_get(b->c) + brakeq_get(&b->c[2]) + brakeq_get(&b->c[4]) + brakeq_get(&b->c[6]));
         /* W_{k+1} = W_k + (a_k + a_{k+1}) D_k: a0 - ap, -2 ap, -ap */
         if (b->k == 0u && b->a0 >= b->ap)
-            w += (uint64_t)((uint32_t)0 - dn) * D;
+            w += (uint64_t)dp * D;
         else
             w -= (uint64_t)dn * D;
         brakeq_put(b->w, w);
