@@ -672,8 +672,7 @@ static int run_queue_q(move_plan *p, const move_args *a, unsigned i0, unsigned i
     dh_track_report_q trep;
     double cap, k = 0.0;
     unsigned next = i0, at;
-    uint32_t seq = 0u, dur0 = 0u;
-    int planned = 0;
+    uint32_t seq = 0u;
     int rc;
     dh_status st = dh_queue_init_q(&qu, items, MOVE_QUEUE_CAP);
     if (st != DH_OK) return cli_error("move --fixed: the queue", dh_status_str(st));
@@ -685,18 +684,9 @@ static int run_queue_q(move_plan *p, const move_args *a, unsigned i0, unsigned i
         }
         if (qu.count == 0u) break;
         at = i0 + qu.seq;
-        if (qu.seq != seq) {
-            k = 0.0;
-            planned = 0;
-        }
+        if (qu.seq != seq) k = 0.0;
         seq = qu.seq;
-        /* the cap from the move's duration as planned at its start (a
-         * brake and a resumed rest replan mv.dur) */
-        if (qu.started && !planned) {
-            dur0 = qu.mv.dur;
-            planned = 1;
-        }
-        cap = move_cap(p, planned ? (float)(dur0 * 1e-6) : 0.0f);
+        cap = move_cap(p, qu.started ? (float)(qu.mv.dur * 1e-6) : 0.0f);
         if (k >= cap) return cap_reached(at, &a->seg[at], cap);
         k += 1.0;
         st = dh_queue_target_q(&qu, t, &cmd);

@@ -1551,22 +1551,6 @@ dh_status dh_path_move_jerk_q(dh_profile_q *prof, uint32_t *e, const dh_path_q *
 dh_status dh_path_move_eval_q(const dh_profile_q *prof, uint32_t e, const dh_path_q *p, uint32_t t, dh_frame_q *T);
 
 /**
- * @brief The jerk-limited brake of a fixed-point path move's s (written
- *        by the executor, read-only for the user): from s' = v0 and
- *        s'' = a0 to rest, s''' = -(a0 + ap) / d[0] for d[0] us, s'' =
- *        -ap for d[1] us, s''' = ap / d[2] for d[2] us; phase k's cubic
- *        of s in c (src/motion/dh_brake_q.c).
- */
-typedef struct {
-    int32_t a0;    /**< s'' at the brake's start (LSB/s^2, >= 0) */
-    int32_t ap;    /**< the level of -s'' held (LSB/s^2, >= 0) */
-    uint32_t d[3]; /**< the three phases' durations (us) */
-    uint32_t k;    /**< the phase c holds, 0..2 */
-    uint32_t w[2]; /**< 2 10^6 s' (LSB/s) at phase k's start, uint64 as two words, low first */
-    uint32_t c[8]; /**< phase k: s at its start (from the brake's start), P, Q, R (2^-8 LSB), int64 as word pairs */
-} dh_brake_q;
-
-/**
  * @brief One fixed-point move being executed (the twin of dh_move_f32),
  *        written by dh_move_joint_q / dh_move_path_q and advanced once
  *        per control period by dh_move_joint_step_q / dh_move_advance_q
@@ -1584,12 +1568,7 @@ typedef struct {
     dh_q30 fcap;                      /**< path move: ceiling of r, Q2.30 in [0, 1] */
     uint32_t e;                       /**< path move: the profile's distance is 2^e (dh_path_move_q) */
     uint32_t lag;                     /**< path move: 1 when the last period was not OK */
-    int32_t ps[3];                    /**< scratch of the evaluations of s, s', s'' (dh_move_q.c, dh_queue_q.c) */
-    uint32_t mode;                    /**< seven-phase path move: 0 on its plan prof[0], 1 braking (brk), 2 held, 3 held, rest planned */
-    int32_t soff;                     /**< seven-phase path move: s (LSB of 2^e) where the plan or the brake starts, or held */
-    int32_t vcap;                     /**< seven-phase path move: cap of s' after a brake (LSB/s); 0: none */
-    int32_t lim[3];                   /**< seven-phase path move: the first plan's peaks of s', s'', s''' (LSB/s^k) */
-    dh_brake_q brk;                   /**< seven-phase path move: the brake while mode is 1 */
+    int32_t ps[3];                    /**< scratch of the fixed queue's evaluations (dh_queue_q.c); unused by the executor */
     uint32_t n;                       /**< joint move: number of joints */
     uint32_t kind;                    /**< a dh_move_kind value */
 } dh_move_q;
@@ -1666,10 +1645,9 @@ dh_status dh_move_path_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_limits
  * @param p path from dh_path_line_q or dh_path_arc_q; may be &mv->path.
  * @param lim Cartesian limits, each > 0.
  * @param jerk jerk limits, each > 0; NULL: dh_move_path_q.
- * Speed, acceleration and jerk stay within lim and jerk at every period,
- * a lagging tracker included: the move brakes, holds and resumes with
- * r = 1 (dh_move_advance_q; docs/design.md, "Lag on a seven-phase path
- * move").
+ * The jerk bound holds while the feed override r is constant (1 while the
+ * tracker is OK); while r changes, speed and acceleration stay within lim
+ * and the jerk is not bounded by jerk (docs/design.md).
  * @return DH_OK; DH_ERR_ARG for a limit <= 0 or a p that holds no path;
  *         DH_ERR_OVERFLOW as dh_path_move_jerk_q. On error mv holds no
  *         move (its path as it was).
@@ -1700,23 +1678,15 @@ dh_status dh_move_target_q(const dh_move_q *mv, dh_frame_q *T);
  *   clock and the target hold: the move slows down instead of jumping.
  *   The ceiling after such a stretch and its recovery as the float twin
  *   (7/8 of r at its start, rising by 2 r per second of OK periods).
- * r changes each period by at most what keeps s' r and d(s' r)/dt within
- * the profile's peaks. Seven-phase move (dh_move_path_jerk_q): r stays 1;
- * a period not OK while it moves starts a jerk-limited brake (mode 1,
- * clock and dur the brake's) that completes whatever the state (in the
- * deceleration half the plan itself is the stop); at rest (mode 2) the
- * target holds while not OK; an OK period plans the rest of the path
- * from rest, s' capped at 7/8 of the left plan's peak, and starts it
- * (mode 0, clock 0). feed: the cap over the first plan's peak (1 without
- * one).
+ * r changes each period by at most what keeps the commanded s' r and
+ * d(s' r)/dt within the profile's peaks (src/motion/dh_move_q.c).
  * @param mv move from dh_move_path_q.
  * @param dt control period (us), 1..10^6 (the tracker's dt_us).
  * @param state the tracker's state this period, a dh_track_state value.
  * @param rep report: clock and r after the call, held, done.
  * @return DH_OK; DH_ERR_ARG for dt outside 1..10^6, a state that is no
- *         dh_track_state, or an mv that holds no path move (mv and rep
- *         untouched); DH_ERR_OVERFLOW when the rest cannot be planned
- *         (mv stays held at rest, rep untouched).
+ *         dh_track_state, or an mv that holds no path move. On error mv
+ *         and rep are untouched.
  */
 dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh_move_report_q *rep);
 
@@ -1978,9 +1948,9 @@ dh_status dh_queue_add_path_blend_q(dh_queue_q *qu, const dh_path_q *p, const dh
  * @param p path from dh_path_line_q or dh_path_arc_q (copied).
  * @param lim Cartesian limits, each > 0 (copied).
  * @param jerk jerk limits, each > 0; NULL: dh_queue_add_path_q.
- * Speed, acceleration and jerk stay within lim and jerk at every period:
- * a lagging tracker and a stop brake it at the jerk limit, a resume
- * plans the rest from rest (dh_move_advance_q's seven-phase rule).
+ * The jerk bound holds while the feed override is constant (not during a
+ * stop, a resume or a slow-down for the tracker, which keep speed and
+ * acceleration within lim).
  * @return DH_OK; DH_ERR_LIMIT when the queue is full (checked first);
  *         DH_ERR_ARG, DH_ERR_OVERFLOW as dh_move_path_jerk_q. On error qu
  *         and its queued items are untouched.
@@ -2024,10 +1994,9 @@ dh_status dh_queue_target_q(dh_queue_q *qu, const dh_track_q *t, dh_queue_cmd_q 
  *        tracker's state of this period (DH_TRACK_OK after a joint command
  *        or DH_MOVE_NONE; it is read for path moves only).
  * Joint move: its clock advanced in dh_queue_target_q. Path move:
- * dh_move_advance_q's rule (its feed override r falls while the tracker
- * is not OK and rises while it is; a seven-phase move brakes, holds and
- * resumes; while braking after dh_queue_stop_q as if not OK). Returns
- * dh_move_advance_q's DH_ERR_OVERFLOW as it does. A move is done when its clock reached its
+ * dh_move_advance_q (its feed override r falls while the tracker is not
+ * OK and rises while it is; while braking after dh_queue_stop_q it falls
+ * whatever the state). A move is done when its clock reached its
  * duration (a path move: and the tracker OK at B) and is then removed
  * from the queue (seq + 1). A brake that reached rest (r 0, or the move
  * done) sets phase DH_QUEUE_STOPPED.
@@ -2045,9 +2014,9 @@ dh_status dh_queue_advance_q(dh_queue_q *qu, dh_track_state state, dh_queue_repo
  *        jump in position or velocity): a joint move's r falls by at most
  *        what keeps every joint's acceleration within amax_i (1 - 2^-10),
  *        a path move's feed override as when its tracker lags (within the
- *        profile's peaks, so within lim); a seven-phase path move by
- *        its jerk-limited brake. Where the plan already decelerates at
- *        its limit the move comes to rest at its end instead. A move not started, held at its start (clock
+ *        profile's peaks, so within lim). Where the plan already
+ *        decelerates at its limit r cannot fall and the move comes to rest
+ *        at its end instead. A move not started, held at its start (clock
  *        0), at its end or at r == 0, or no move, is at rest: the stop is
  *        immediate (phase STOPPED). A stop while braking or stopped
  *        changes nothing. Queued moves stay queued and do not start until
@@ -2061,11 +2030,10 @@ dh_status dh_queue_stop_q(dh_queue_q *qu);
 /**
  * @brief Resumes after (or during) a stop: r rises again from where it is
  *        towards 1 (a path move: towards the ceiling its feed override had
- *        when the stop began; a seven-phase path move held at rest: the
- *        rest of its path planned from rest with its cap at the first OK
- *        period), within the same bounds as its fall, so the move ends
- *        exactly at its end (q1; B), and then the rest of the queue runs.
- *        Called while running, it changes nothing.
+ *        when the stop began), within the same bounds as its fall, so the
+ *        move continues along its own plan and ends exactly at its end (q1;
+ *        B), and then the rest of the queue runs. Called while running, it
+ *        changes nothing.
  * @param qu queue from dh_queue_init_q (not between target and advance).
  * @return DH_OK; DH_ERR_ARG for a call between dh_queue_target_q and
  *         dh_queue_advance_q (qu untouched).

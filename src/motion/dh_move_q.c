@@ -23,13 +23,6 @@
  * inequality for x <= 1 (p x^2 <= p x) without a square root. The fall is
  * (A + lo r^2) / k as in the float twin. Every quotient is rounded towards
  * the smaller change (k up, numerators down) and taken bit-serially.
- *
- * A seven-phase path move does not warp (its jerk would not be bounded
- * while r changes): a period not OK while it moves starts the brake of
- * dh_brake_q.c from the plan's s' and s'', which runs to rest; held, an
- * OK period plans the rest of the path from rest (s' within 7/8 of the
- * left plan's peak). s is soff plus the plan's or the brake's distance
- * (dh_motion_s_q_); docs/design.md, "Lag on a seven-phase path move".
  */
 #include <string.h>
 
@@ -53,8 +46,7 @@ static int moveq_holds(const dh_move_q *mv, uint32_t kind)
     if (mv->kind != kind) return 0;
     if (mv->dur > (uint32_t)INT32_MAX || mv->clock > mv->dur || mv->cfrac >= (uint32_t)DH_Q30_ONE) return 0;
     if (mv->feed < 0 || mv->feed > DH_Q30_ONE || mv->fcap < 0 || mv->fcap > DH_Q30_ONE) return 0;
-    if (kind == (uint32_t)DH_MOVE_PATH)
-        return mv->e <= 30u && mv->mode <= 3u;
+    if (kind == (uint32_t)DH_MOVE_PATH) return mv->e <= 30u;
     return mv->n >= 1u && mv->n <= (uint32_t)DH_MAX_JOINTS;
 }
 
@@ -79,12 +71,6 @@ void dh_motion_start_q_(dh_move_q *mv, uint32_t dur)
     mv->ps[0] = 0;
     mv->ps[1] = 0;
     mv->ps[2] = 0;
-    mv->mode = 0u;
-    mv->soff = 0;
-    mv->vcap = 0;
-    mv->lim[0] = mv->prof[0].v;
-    mv->lim[1] = mv->prof[0].a;
-    mv->lim[2] = mv->prof[0].j;
 }
 
 /* the clock advanced by r dt (r Q2.30 in [0, 1]) with its fraction,
@@ -220,28 +206,13 @@ dh_status dh_move_path_jerk_q(dh_move_q *mv, const dh_path_q *p, const dh_cart_l
     return moveq_path_start(mv, p, st);
 }
 
-int32_t dh_motion_s_q_(const dh_move_q *mv, int32_t *f)
-{
-    int64_t s;
-    if (mv->e > 30u) return -1;
-    if (mv->mode == 3u) {
-        s = mv->soff;
-    } else if (mv->mode != 0u) {
-        s = (int64_t)mv->soff + dh_motion_brake_s_q_(&mv->brk, mv->clock);
-    } else {
-        if (dh_profile_eval_q(&mv->prof[0], mv->clock, &f[0], &f[1], &f[2]) != DH_OK) return -1;
-        s = (int64_t)mv->soff + f[0];
-    }
-    return (s < 0 || s > ((int64_t)1 << mv->e)) ? -1 : (int32_t)s;
-}
-
 dh_status dh_move_target_q(const dh_move_q *mv, dh_frame_q *T)
 {
-    int32_t f[3], s;
+    int32_t s = 0, sd, sdd;
     DH_ASSERT(mv != NULL && T != NULL);
     if (!moveq_holds(mv, (uint32_t)DH_MOVE_PATH)) return DH_ERR_ARG;
-    s = dh_motion_s_q_(mv, f);
-    if (s < 0) return DH_ERR_ARG;
+    if (dh_profile_eval_q(&mv->prof[0], mv->clock, &s, &sd, &sdd) != DH_OK) return DH_ERR_ARG;
+    if (s < 0 || (uint32_t)s > (1u << mv->e)) return DH_ERR_ARG;
     return dh_path_eval_q(&mv->path, (dh_q30)((uint32_t)s << (30u - mv->e)), T);
 }
 
@@ -375,86 +346,15 @@ static DH_NOINLINE dh_q30 moveq_feed_goal(dh_move_q *mv, uint32_t dt, int ok)
     return goal;
 }
 
-/* The brake of the seven-phase move mv from its plan's s' and s'' at the
- * clock (in mv->ps) started, its cap of s' lowered to 7/8 of the plan's
- * peak s'; the plan runs on where s' is 0, s'' < 0 (its own deceleration
- * to its end is the stop) or the brake might pass the path's end */
-static void moveq_brake(dh_move_q *mv)
+dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh_move_report_q *rep)
 {
-    uint32_t T;
-    int32_t cap;
-    if (mv->ps[1] <= 0 || mv->ps[2] < 0) return;
-    if (dh_motion_brake_plan_q_(&mv->brk, mv->ps[1], mv->ps[2], mv->lim[1], mv->lim[2]) != DH_OK) return;
-    T = dh_motion_brake_dur_q_(&mv->brk);
-    if (T == 0u || (int64_t)mv->soff + mv->ps[0] + dh_motion_brake_reach_q_(&mv->brk) > ((int64_t)1 << mv->e)) return;
-    mv->soff += mv->ps[0];
-    mv->mode = 1u;
-    mv->clock = 0u;
-    mv->cfrac = 0u;
-    mv->dur = T;
-    cap = mv->prof[0].v - (mv->prof[0].v >> 3);
-    if (cap < 1) cap = 1;
-    if (mv->vcap == 0 || cap < mv->vcap) mv->vcap = cap;
-}
-
-/* The rest of the path from the held s, to be planned rest to rest in
- * prof[0] (d, the first plan's peaks, v within the cap): mode 3 */
-static DH_NOINLINE void moveq_rest(dh_move_q *mv)
-{
-    dh_profile_q *const p = &mv->prof[0];
-    if (mv->mode == 2u) mv->soff += dh_motion_brake_s_q_(&mv->brk, mv->clock);
-    mv->mode = 3u;
-    p->d = (int32_t)(((int64_t)1 << mv->e) - mv->soff);
-    p->v = (mv->vcap > 0 && mv->vcap < mv->lim[0]) ? mv->vcap : mv->lim[0];
-    p->a = mv->lim[1];
-    p->j = mv->lim[2];
-}
-
-int dh_motion_jerk_pre_q_(dh_move_q *mv, int ok)
-{
-    if (mv->mode >= 2u) {
-        if (ok == 0) return 0;
-        moveq_rest(mv);
-        return 1;
-    }
-    if (mv->mode == 0u && ok == 0 && mv->clock > 0u && mv->clock < mv->dur &&
-        dh_profile_eval_q(&mv->prof[0], mv->clock, &mv->ps[0], &mv->ps[1], &mv->ps[2]) == DH_OK)
-        moveq_brake(mv);
-    return 0;
-}
-
-int dh_motion_jerk_post_q_(dh_move_q *mv, uint32_t dt, int ok)
-{
-    if (mv->mode == 3u) {
-        if (ok == 0) return 0;
-        mv->mode = 0u;
-        mv->clock = 0u;
-        mv->cfrac = 0u;
-        mv->dur = mv->prof[0].T;
-    }
-    if (mv->mode == 0u && mv->clock >= mv->dur) return ok;
-    if (mv->mode == 2u || (mv->mode == 0u && ok == 0 && mv->clock == 0u)) return 0;
-    moveq_tick(mv, DH_Q30_ONE, dt);
-    if (mv->mode == 1u) {
-        dh_motion_brake_seek_q_(&mv->brk, mv->clock);
-        if (mv->clock >= mv->dur) mv->mode = 2u;
-    }
-    return 0;
-}
-
-/* the report's feed of a seven-phase move: its cap of s' over the first
- * plan's peak (Q2.30; 1 without a cap) */
-dh_q30 dh_motion_cap_feed_q_(const dh_move_q *mv)
-{
-    uint32_t r;
-    if (mv->vcap <= 0 || mv->vcap >= mv->lim[0]) return DH_Q30_ONE;
-    r = dh_q_udiv((uint32_t)mv->vcap, (uint32_t)mv->lim[0], 30u);
-    return (dh_q30)((r > 0u) ? r : 1u);
-}
-
-int dh_motion_trap_period_q_(dh_move_q *mv, uint32_t dt, int ok)
-{
-    int done = 0;
+    dh_status st;
+    int done = 0, ok = 0;
+    DH_ASSERT(mv != NULL && rep != NULL);
+    st = moveq_period_ok(mv, (uint32_t)DH_MOVE_PATH, dt);
+    if (st != DH_OK) return st;
+    if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
+    ok = state == DH_TRACK_OK;
     if (ok != 0 && mv->clock >= mv->dur) {
         done = 1;
     } else if (ok != 0 && mv->feed >= DH_Q30_ONE && mv->fcap >= DH_Q30_ONE) {
@@ -470,30 +370,6 @@ int dh_motion_trap_period_q_(dh_move_q *mv, uint32_t dt, int ok)
         else
             mv->feed = ((int64_t)r - x > goal) ? r - x : goal;
         moveq_tick(mv, mv->feed, dt);
-    }
-    return done;
-}
-
-dh_status dh_move_advance_q(dh_move_q *mv, uint32_t dt, dh_track_state state, dh_move_report_q *rep)
-{
-    dh_status st;
-    int done, ok;
-    DH_ASSERT(mv != NULL && rep != NULL);
-    st = moveq_period_ok(mv, (uint32_t)DH_MOVE_PATH, dt);
-    if (st != DH_OK) return st;
-    if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
-    ok = state == DH_TRACK_OK;
-    if (mv->mode != 0u || mv->prof[0].kind == (uint32_t)DH_PROFILE_SCURVE) {
-        /* the lag rule's steps and the rest's planning called from here,
-         * one level down each (the 256 B guard) */
-        if (dh_motion_jerk_pre_q_(mv, ok) != 0) {
-            st = dh_motion_profile_q_(&mv->prof[0]);
-            if (st != DH_OK) return st;
-        }
-        done = dh_motion_jerk_post_q_(mv, dt, ok);
-        mv->feed = dh_motion_cap_feed_q_(mv);
-    } else {
-        done = dh_motion_trap_period_q_(mv, dt, ok);
     }
     rep->clock = mv->clock;
     rep->feed = mv->feed;

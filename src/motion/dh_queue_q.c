@@ -30,11 +30,7 @@
  * with its own A = amax_i - floor(amax_i / 1024), the planning's limit.
  * A stop drives r to 0 (a path move: its feed override as if the tracker
  * lagged), a resume back up: the move stays on its own path and ends at
- * its exact end. A seven-phase path move (not a blended line) keeps r = 1
- * and takes dh_move_advance_q's lag rule instead (its steps called from
- * dh_queue_advance_q): a lagging tracker or a stop brakes it at its jerk
- * limit, it holds at rest, and an OK period after a resume plans and
- * starts the rest of its path.
+ * its exact end.
  */
 #include <string.h>
 
@@ -395,11 +391,12 @@ static DH_NOINLINE void queueq_joint_step(dh_queue_q *qu, uint32_t dt, int32_t *
  * range (dh_queue_target_q refuses it) */
 static DH_NOINLINE int32_t queueq_s(dh_move_q *mv)
 {
-    const int32_t s = (mv->clock > mv->dur) ? -1 : dh_motion_s_q_(mv, mv->ps);
-    uint32_t u;
-    if (s < 0) return -1;
-    u = (uint32_t)s << (30u - mv->e);
-    return (int32_t)u;
+    uint32_t s;
+    if (mv->e > 30u || mv->clock > mv->dur) return -1;
+    if (dh_profile_eval_q(&mv->prof[0], mv->clock, &mv->ps[0], &mv->ps[1], &mv->ps[2]) != DH_OK) return -1;
+    if (mv->ps[0] < 0 || (uint32_t)mv->ps[0] > (1u << mv->e)) return -1;
+    s = (uint32_t)mv->ps[0] << (30u - mv->e);
+    return (int32_t)s;
 }
 
 /* 1 when the blended line in mv runs in its end tail (clock c beyond
@@ -487,17 +484,15 @@ static int queueq_at_rest(const dh_queue_q *qu)
 {
     const dh_move_q *mv = &qu->mv;
     const dh_q30 r = (mv->kind == (uint32_t)DH_MOVE_PATH) ? mv->feed : qu->r;
-    return mv->clock == 0u || mv->clock >= mv->dur || r == 0 || mv->mode >= 2u;
+    return mv->clock == 0u || mv->clock >= mv->dur || r == 0;
 }
 
 /* 1 when the braking move's next command is this period's: its warp at
- * 0, a path move's clock at its end already at the start of this period
- * (c0; its frame then stays B until the tracker is OK there), or a
- * seven-phase move held since the start of this period */
+ * 0, or a path move's clock at its end already at the start of this
+ * period (c0; its frame then stays B until the tracker is OK there) */
 static int queueq_still(const dh_queue_q *qu, uint32_t c0)
 {
     const dh_move_q *mv = &qu->mv;
-    if (mv->kind == (uint32_t)DH_MOVE_PATH && mv->mode != 0u) return mv->mode >= 2u && c0 >= mv->dur;
     if (mv->kind == (uint32_t)DH_MOVE_PATH) return mv->feed == 0 || c0 >= mv->dur;
     return qu->r == 0;
 }
@@ -636,20 +631,9 @@ dh_status dh_queue_advance_q(dh_queue_q *qu, dh_track_state state, dh_queue_repo
     if (mode == QUEUEQ_PATH && qu->phase != (uint32_t)DH_QUEUE_STOPPED) {
         /* braking: the feed override falls as if the tracker lagged, but
          * at the end (s' = 0) the tracker's state decides done */
-        const int brake = qu->phase == (uint32_t)DH_QUEUE_BRAKE && (qu->mv.clock < qu->mv.dur || qu->mv.mode >= 2u);
-        const int ok = !brake && state == DH_TRACK_OK;
-        if (qu->bl == 0u && (qu->mv.mode != 0u || qu->mv.prof[0].kind == (uint32_t)DH_PROFILE_SCURVE)) {
-            /* a seven-phase move: the lag rule of dh_move_advance_q, its
-             * steps called from here (the 256 B guard) */
-            if (dh_motion_jerk_pre_q_(&qu->mv, ok) != 0) {
-                const dh_status st = dh_motion_profile_q_(&qu->mv.prof[0]);
-                if (st != DH_OK) return st;
-            }
-            qu->mrep.done = dh_motion_jerk_post_q_(&qu->mv, qu->dt, ok);
-            qu->mv.feed = dh_motion_cap_feed_q_(&qu->mv);
-        } else {
-            qu->mrep.done = dh_motion_trap_period_q_(&qu->mv, qu->dt, ok);
-        }
+        const int brake = qu->phase == (uint32_t)DH_QUEUE_BRAKE && qu->mv.clock < qu->mv.dur;
+        const dh_status st = dh_move_advance_q(&qu->mv, qu->dt, brake ? DH_TRACK_LAGGING : state, &qu->mrep);
+        if (st != DH_OK) return st;
     }
     queueq_advance_end(qu, state, rep, c0, mode);
     return DH_OK;

@@ -204,47 +204,4 @@ void dh_motion_start_q_(dh_move_q *mv, uint32_t dur);
  * acceleration within A (dh_move_q.c); 2^30 where s' is 0 */
 int32_t dh_motion_feed_bound_q_(const dh_profile_q *pr, int32_t A, uint32_t clock, dh_q30 r, uint32_t dt, int rise);
 
-/* s (LSB of 2^e, in [0, 2^e]) of the path move mv at its clock: its plan
- * prof[0] from soff, its brake or its hold (dh_move_q.c); -1 for a plan
- * or an s out of range. f: 3 words of scratch. The executor's target and
- * the fixed queue's (dh_queue_q.c) take s from here. */
-int32_t dh_motion_s_q_(const dh_move_q *mv, int32_t *f);
-
-/* One period of a path move (dh_move_q.c), the steps of
- * dh_move_advance_q, which the fixed queue (dh_queue_q.c) calls itself
- * (the 256 B guard). ok: the tracker was OK. A trapezoid or a quintic:
- * dh_motion_trap_period_q_ (the feed override), 1 when done. A
- * seven-phase plan (mv->mode != 0 or prof[0] of kind DH_PROFILE_SCURVE):
- * dh_motion_jerk_pre_q_ brakes when the plan lags while moving and
- * returns 1 when held and OK, with prof[0]'s d, v, a, j set for the rest
- * (the caller then plans it in place, dh_motion_profile_q_; on error mv
- * stays held); dh_motion_jerk_post_q_ starts that rest and advances the
- * clock, 1 when done; the report's feed is dh_motion_cap_feed_q_. */
-int dh_motion_trap_period_q_(dh_move_q *mv, uint32_t dt, int ok);
-int dh_motion_jerk_pre_q_(dh_move_q *mv, int ok);
-int dh_motion_jerk_post_q_(dh_move_q *mv, uint32_t dt, int ok);
-dh_q30 dh_motion_cap_feed_q_(const dh_move_q *mv);
-
-/* ---- fixed point (dh_brake_q.c) ---- */
-
-/* b = the jerk-limited brake of s from s' = v0 >= 0 and s'' = a0 in
- * [0, A] to rest within |s''| <= A and |s'''| <= j (A, j > 0); DH_ERR_ARG
- * for inputs outside these, DH_ERR_OVERFLOW for a brake beyond 2^30 us
- * a phase. The executor (dh_move_q.c) brakes a seven-phase path move so
- * when its tracker lags and the fixed queue's stop through it. */
-dh_status dh_motion_brake_plan_q_(dh_brake_q *b, int32_t v0, int32_t a0, int32_t A, int32_t j);
-
-/* the distance (LSB) the brake b covers from its start to time t (us;
- * beyond its end: the whole brake), t within b's phase k or later (its
- * end then); dh_motion_brake_seek_q_ moves k on to t's phase first */
-int32_t dh_motion_brake_s_q_(const dh_brake_q *b, uint32_t t);
-void dh_motion_brake_seek_q_(dh_brake_q *b, uint32_t t);
-
-/* the brake's duration (us), 0 when beyond INT32_MAX */
-uint32_t dh_motion_brake_dur_q_(const dh_brake_q *b);
-
-/* a bound (LSB, held to INT32_MAX) on the distance the brake covers:
- * its largest s' times its duration */
-int32_t dh_motion_brake_reach_q_(const dh_brake_q *b);
-
 #endif /* DHMATH_SRC_MOTION_IMPL_H */
