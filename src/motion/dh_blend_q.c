@@ -865,3 +865,88 @@ dh_status dh_blend_seq_eval_q(const dh_blend_seq_q *sq, uint32_t t, dh_frame_q *
     dh_blend_rot_q_(&p[0], &p[1], s1, s2, T);
     return (sat != 0) ? DH_ERR_OVERFLOW : DH_OK;
 }
+
+/* ---- the fixed queue's jerk-limited blended lines (dh_queue_q.c) ---- */
+
+/* pi/180 in Q16.16, rounded up: the cross terms' factor */
+#define BJ_RAD 1144u
+/* 2^31: a Q16.16 magnitude held there is above every bound it meets */
+#define BJ_SAT 0x80000000u
+
+/* ceil(x y / 2^e) for x, y in [0, 2^31) and e <= 30 */
+static uint64_t bj_rate(int32_t x, int32_t y, uint32_t e)
+{
+    const uint64_t m = (uint64_t)(uint32_t)x * (uint32_t)y;
+    return (m + (((uint64_t)1 << e) - 1u)) >> e;
+}
+
+/* ceil(a b / 2^16) of two Q16.16 magnitudes, held at BJ_SAT when it or
+ * an input reaches it */
+static uint64_t bj_mul(uint64_t a, uint64_t b)
+{
+    uint64_t m;
+    if (a >= BJ_SAT || b >= BJ_SAT) return BJ_SAT;
+    m = (a * b + 0xFFFFu) >> 16;
+    return (m < BJ_SAT) ? m : BJ_SAT;
+}
+
+/* half the change of speed of the profile pr (us), less 1 us for the
+ * rounding of its phase ends; 0 when it has no motion */
+static uint32_t bj_half(const dh_profile_q *pr)
+{
+    uint32_t h;
+    if (pr->d == 0 || pr->T == 0u) return 0u;
+    h = (uint32_t)(((uint64_t)(uint32_t)pr->xa * pr->T) >> 31);
+    return (h > 1u) ? h - 1u : 0u;
+}
+
+/* 1 when the overlap tb of the lines of i1 and i2 meets the bounds of
+ * dh_blend_jcorner_q_, *dev then its bound on the distance from the
+ * corner. Both profiles are point-symmetric, so line 1's last tb covers
+ * and moves as its first: x_i, u_i = s, s' of profile i at tb (on 2^e_i),
+ * the largest of the overlap. */
+static DH_NOINLINE int bj_ok(const dh_queue_item_q *i1, const dh_queue_item_q *i2, uint32_t tb, dh_qpos *dev)
+{
+    int32_t x1, u1, x2, u2, acc;
+    uint64_t w1, w2, k1, k2;
+    (void)dh_profile_eval_q(&i1->prof, tb, &x1, &u1, &acc);
+    (void)dh_profile_eval_q(&i2->prof, tb, &x2, &u2, &acc);
+    w1 = bj_rate(i1->path.length, x1 + 16, i1->e) + bj_rate(i2->path.length, x2 + 16, i2->e) + 16u;
+    if (w1 > (uint64_t)(uint32_t)i1->radius) return 0;
+    *dev = (dh_qpos)w1;
+    w1 = bj_rate(i1->path.angle, u1, i1->e);
+    w2 = bj_rate(i2->path.angle, u2, i2->e);
+    k1 = bj_mul(BJ_RAD, w1);
+    k2 = bj_mul(BJ_RAD, w2);
+    if (bj_mul(k1, w2) > ((uint32_t)i1->lim.wdmax >> 6)) return 0;
+    if (2u * bj_mul(k2, bj_rate(i1->path.angle, i1->prof.a, i1->e)) +
+            bj_mul(k1, bj_rate(i2->path.angle, i2->prof.a, i2->e)) >
+        ((uint32_t)i1->jk.wjmax >> 7))
+        return 0;
+    return bj_mul(bj_mul(k2, k2), w1) <= ((uint32_t)i1->jk.wjmax >> 7);
+}
+
+/* Both lines hold the profiles of their shares (amax / 2, jmax / 2 less
+ * 2^-11, (63/128) wdmax and wjmax), so the corner changes neither: the overlap is
+ * the largest whole us that bj_ok accepts (each of its terms grows with
+ * tb over the first half of a change of speed: bisection) */
+uint32_t dh_blend_jcorner_q_(const dh_queue_item_q *i1, const dh_queue_item_q *i2, dh_qpos *dev)
+{
+    uint32_t lo = 0u, hi = bj_half(&i1->prof), m;
+    dh_qpos d = 0;
+    *dev = 0;
+    if (bj_half(&i2->prof) < hi) hi = bj_half(&i2->prof);
+    if (i1->radius <= 0 || i1->path.kind != (uint32_t)DH_PATH_LINE || i2->path.kind != (uint32_t)DH_PATH_LINE ||
+        i1->e > 30u || i2->e > 30u || !bq_inside(&i1->path.B, i1->radius))
+        return 0u;
+    while (lo < hi) {
+        m = hi - ((hi - lo) >> 1);
+        if (bj_ok(i1, i2, m, &d) != 0) {
+            lo = m;
+            *dev = d;
+        } else {
+            hi = m - 1u;
+        }
+    }
+    return lo;
+}

@@ -1,0 +1,532 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * test_queue_q_blend_jerk.c - jerk-limited blended lines in the
+ * fixed-point move queue (motion.h: dh_queue_add_path_blend_jerk_q, run
+ * by dh_queue_target_q and dh_queue_advance_q, with dh_queue_stop_q and
+ * dh_queue_resume_q) with the fixed tracker (dh_track_step_q) on the UR5
+ * and the Puma 560 in mm, 1 kHz (the Panda's seven joints have no fixed
+ * closed-form model for the fixed tracker).
+ *
+ * Random chains (seeded) of 2 to 3 lines between tool frames of
+ * configurations of the robot's region (support_motion_q.c), each
+ * appended with a random radius (0 to 24 mm, at least 5 mm in each
+ * robot's first chain) and random jerk limits (one draw per chain), all
+ * before the first period, run by the firmware loop (dh_track_init_q
+ * when cmd.sync, dh_track_step_q, advance). In some chains a stop at the
+ * first period inside an overlap (it waits for the overlap's end, then
+ * the next line brakes alone), resumed after a random rest or at once
+ * (during the brake). Checked every period against references computed
+ * here in double: outside the overlaps the target within PATH_TOL =
+ * 5e-3 mm of its line, inside an overlap within the corner's dev (<= its
+ * radius) plus the profiles' rounding; the tool at every OK period within
+ * the tracker's pos_tol (plus the fixed FK's 4 n LSB) of the target; over
+ * windows of w periods the target's speed within vmax, its total
+ * acceleration within amax and, over windows in which the feed override
+ * stayed 1 (the jerk bound holds at a constant feed override), its total
+ * jerk by third differences within jmax, each times 1 + 1e-3 plus the
+ * noise terms 2 N / (w dt), 4 N / (w dt)^2 and 8 N / (w dt)^3 (N: 1 LSB
+ * of the path, 64 2^-30 of the two lines' length of the profiles, the
+ * clock's 1 us at vmax), w the least window with the noise within
+ * 2.5e-4 (speed, acceleration) or 2.5e-3 (jerk) of the limit; every
+ * joint's tracked position over such windows within the robot's vmax and
+ * amax. Every line completes in order (seq), the last with the target at
+ * its B bit for bit; a stop reaches rest and the commands hold still
+ * until the resume.
+ *
+ * The Puma's line faster than its wrist can follow blended into a second
+ * line: lagging periods, the feed override below 1, the limits and the
+ * radius hold and the queue completes.
+ *
+ * Every status of dh_queue_add_path_blend_jerk_q, and the corners it runs
+ * at rest.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "dht.h"
+#include "support_robots.h"
+#include "support_motion_q.h"
+#include "dhmath/motion.h"
+#include "dhmath/track.h"
+#include "dhmath/frame.h"
+
+#define DT_US 1000u
+#define DT 1e-3
+#define QPOS DHSM_QPOS
+#define Q16 DHSM_Q16
+#define LS DHSM_LS
+#define PATH_TOL (5e-3 * ldexp(1.0, 16 - DH_QPOS_FRAC))
+#define REL_FD 1e-3
+#define NOISE_FRAC 2.5e-4
+#define NOISE_FRAC_J 2.5e-3
+#define NL 3u      /* lines of a chain at most (the queue's items: the micro:bit's RAM) */
+#define DEC 4      /* one position kept every DEC periods */
+#define RING 60    /* positions kept, in DEC periods: the longest window (3 w) plus one */
+#define NJ 6u
+
+/* one tracker, one queue (the M0 target has 16 KB of RAM: the queue's
+ * items live on the cases' stacks) */
+static dh_track_q the_trk;
+static dh_queue_q the_qu;
+static int32_t pring[RING][3];   /* targets, one every DEC periods */
+static int32_t jring[RING][NJ];  /* tracked joints, one every DEC periods */
+static dh_cart_jerk_q the_jk;    /* the chain's jerk limits */
+
+static const dh_cart_limits_q LIM = { 250 << 16, 2000 << 16, 45 << 16, 360 << 16 };
+/* the Puma's lagging line's limits (test_move_q.c's) */
+static const dh_cart_limits_q PLIM = { 300 << 16, 1500 << 16, 90 << 16, 360 << 16 };
+
+/* a chain of lines: the paths, their double references and radii */
+typedef struct {
+    dh_path_q p[NL];
+    dhsm_ref ref[NL];
+    dh_qpos R[NL];
+    uint32_t n;
+    const dh_cart_limits_q *lim;
+    const dh_cart_jerk_q *jk;
+} chain;
+
+/* the least window (periods, a multiple of DEC) with the noise 2 N / w
+ * (k 1: speed), 4 N / w^2 (k 2) within NOISE_FRAC or 8 N / w^3 (k 3)
+ * within NOISE_FRAC_J of the limit L */
+static long window_of(double N, double L, int k)
+{
+    double w = 2.0 * N / (NOISE_FRAC * L * DT);
+    long p;
+    if (k == 2) w = sqrt(4.0 * N / (NOISE_FRAC * L)) / DT;
+    if (k == 3) w = cbrt(8.0 * N / (NOISE_FRAC_J * L)) / DT;
+    p = DEC * ((long)ceil(w / DEC) + 1);
+    DHT_TRUE_MSG(k * p < DEC * RING, "window %ld periods for noise %.3g", p, N);
+    return p;
+}
+
+/* the difference of order k (1 to 3) over w periods of coordinate c of
+ * m-wide ring positions, ending at period i (a multiple of DEC) */
+static double ring_diff(const int32_t *rg, int m, int c, long i, long w, int k)
+{
+    const double x0 = rg[((i / DEC) % RING) * m + c], x1 = rg[(((i - w) / DEC) % RING) * m + c];
+    const double x2 = rg[(((i - 2 * w) / DEC) % RING) * m + c];
+    if (k == 1) return x0 - x1;
+    if (k == 2) return x0 - 2.0 * x1 + x2;
+    return x0 - 3.0 * x1 + 3.0 * x2 - rg[(((i - 3 * w) / DEC) % RING) * m + c];
+}
+
+/* The rates of the ring rg (m coordinates, scale to mm or degrees) at
+ * period i, n positions recorded since it was fresh: the norm (m 3) or
+ * each coordinate's speed over wv and acceleration over wa within V and
+ * A up to the noise N */
+static void check_rates(const int32_t *rg, int m, double scale, long i, long n, double N, double V, double A, long wv,
+                        long wa, const char *what)
+{
+    int k;
+    for (k = 1; k <= 2; k++) {
+        const long w = (k == 1) ? wv : wa;
+        const double tw = pow(w * DT, (double)k), L = (k == 1) ? V : A;
+        const double bound = L * (1 + REL_FD) + 2.0 * k * N / tw;
+        double sq = 0.0;
+        int c;
+        if (n < k * w) continue;
+        for (c = 0; c < m; c++) {
+            const double x = ring_diff(rg, m, c, i, w, k) * scale / tw;
+            if (m == 3) sq += x * x;
+            else DHT_TRUE_MSG(fabs(x) <= bound, "%s period %ld: joint %d rate %d %.6g > %.6g", what, i, c, k, fabs(x), L);
+        }
+        if (m == 3) DHT_TRUE_MSG(sqrt(sq) <= bound, "%s period %ld: rate %d %.6g > %.6g", what, i, k, sqrt(sq), L);
+    }
+}
+
+/* the target's total jerk over the window w at period i by third
+ * differences within J up to the noise N (n positions since fresh) */
+static void check_jerk(long i, long n, double N, double J, long w, const char *what)
+{
+    const double tw = pow(w * DT, 3.0), bound = J * (1 + REL_FD) + 8.0 * N / tw;
+    double sq = 0.0;
+    int c;
+    if (n < 3 * w) return;
+    for (c = 0; c < 3; c++) {
+        const double x = ring_diff(&pring[0][0], 3, c, i, w, 3) / QPOS / tw;
+        sq += x * x;
+    }
+    DHT_TRUE_MSG(sqrt(sq) <= bound, "%s period %ld: jerk %.6g > %.6g", what, i, sqrt(sq), J);
+    dht_reach_max("queue_q_blend_jerk.jerk_frac", sqrt(sq) / J);
+}
+
+/* the chain's lines from the configuration q through n - 1 more of the
+ * region (each joint 4 to 12 degrees on), each reachable; radii in
+ * [0, 24] mm (some 0), in [5, 24] mm in the first chain of a robot (so
+ * that every run passes blended corners); its jerk limits drawn */
+static void chain_make(const dhsm_rig *g, const int32_t *q0, uint32_t n, int first, chain *ch)
+{
+    int32_t q[NJ], qb[NJ];
+    dh_frame_q F, B;
+    uint32_t k, i;
+    memcpy(q, q0, sizeof q);
+    dhsm_target_of(g, q, &F);
+    ch->n = n;
+    ch->lim = &LIM;
+    the_jk.jmax = (int32_t)(dht_rand_uniform(5000.0, 30000.0) * LS * QPOS);
+    the_jk.wjmax = (int32_t)(dht_rand_uniform(2000.0, 20000.0) * Q16);
+    ch->jk = &the_jk;
+    for (k = 0; k < n; k++) {
+        int tries = 0, ok = 0;
+        while (!ok && tries++ < 50) {
+            double qa[DH_MAX_JOINTS], qn[DH_MAX_JOINTS];
+            dhsm_region_q(g, qa);
+            for (i = 0; i < NJ; i++)
+                qn[i] = q[i] / Q16 + dht_rand_uniform(4.0, 12.0) * (qa[i] < q[i] / Q16 ? -1.0 : 1.0);
+            dhs_q_from_double(&g->r, qn, qb);
+            dhsm_target_of(g, qb, &B);
+            DHT_EQ_INT(dh_path_line_q(&ch->p[k], &F, &B), DH_OK);
+            ok = dhsm_path_reachable(g, &ch->p[k], q);
+        }
+        DHT_TRUE(ok);
+        dhsm_ref_make(&ch->ref[k], &ch->p[k], NULL);
+        ch->R[k] = (dh_qpos)(dht_rand_uniform(first ? 5.0 : 0.0, 24.0) * LS * QPOS);
+        if (!first && dht_rand_u32() % 5u == 0u) ch->R[k] = 0;
+        memcpy(q, qb, sizeof q);
+        F = B;
+    }
+}
+
+typedef struct {
+    long periods, notok, blended, inside, stopped, jchecked;
+    dh_q30 minfeed;
+} run_stats;
+
+/* the current line's overlap with the next: 1 when the running blended
+ * line's clock is in its end tail */
+static int in_overlap(const dh_queue_q *qu)
+{
+    const dh_blend_seg_q *g = &qu->bg;
+    return qu->started && qu->bl && g->dur[4] > 0u && qu->mv.clock > g->T - g->dur[4];
+}
+
+/* The chain ch run from the tracker's configuration to its end (the
+ * file's comment): stopped at the first period inside an overlap when
+ * stop (resumed after rest periods; at once during the brake when rest
+ * < 0) */
+static void run_chain(const dhsm_rig *g, const chain *ch, int stop, long rest, run_stats *rs, const char *what)
+{
+    dh_queue_q *const qu = &the_qu;
+    dh_track_q *const t = &the_trk;
+    const double V = ch->lim->vmax / QPOS, A = ch->lim->amax / QPOS, J = ch->jk->jmax / QPOS;
+    const double VJ = g->r.joint[0].vmax_q, AJ = g->r.joint[0].amax_q;
+    double Lmax = 0.0, NP, NJN;
+    long i, n = 0, wv, wa, wj, wvj, waj, still = -1, braking = -1, unit = 0;
+    uint32_t k, done = 0;
+    int32_t q[NJ];
+    dh_frame_q Thold;
+    int stop_done = !stop;
+    for (k = 0; k < ch->n; k++) Lmax = fmax(Lmax, ch->p[k].length);
+    NP = (1.0 + 2.0 * Lmax * 64.0 / DHSM_Q30) / QPOS + V * 1e-6;
+    NJN = 4.0 + VJ * 1e-6;
+    wv = window_of(NP, V, 1);
+    wa = window_of(NP, A, 2);
+    wj = window_of(NP, J, 3);
+    wvj = window_of(NJN, VJ, 1);
+    waj = window_of(NJN, AJ, 2);
+    memcpy(q, t->q, sizeof q);
+    memset(rs, 0, sizeof *rs);
+    rs->minfeed = DH_Q30_ONE;
+    for (i = 0; i < 400000 && qu->count > 0u; i++) {
+        dh_queue_cmd_q cmd;
+        dh_queue_report_q rep;
+        dh_track_report_q tr;
+        const uint32_t line = qu->seq;
+        double pt[3];
+        int c, ov;
+        DHT_EQ_INT(dh_queue_target_q(qu, t, &cmd), DH_OK);
+        DHT_EQ_INT(cmd.kind, DH_MOVE_PATH);
+        if (cmd.sync) DHT_EQ_INT(dh_track_init_q(t, &g->r, &g->m, cmd.q, DT_US), DH_OK);
+        DHT_EQ_INT(dh_track_step_q(t, &cmd.T, q, &tr), DH_OK);
+        for (c = 0; c < 3; c++) pt[c] = cmd.T.p[c] / QPOS;
+        ov = in_overlap(qu);
+        if (ov) {
+            /* within the corner's dev (<= its radius) of the corner */
+            const dh_qpos dev = qu->bg.dev;
+            const double d = dhsm_dist3(pt, ch->ref[line].pb);
+            const double tol = (3.0 + 64.0 * (ch->p[line].length + ch->p[line + 1u].length) / DHSM_Q30) / QPOS;
+            DHT_TRUE_MSG(dev <= ch->R[line], "%s: corner %u dev %ld > radius %ld", what, (unsigned)line, (long)dev,
+                         (long)ch->R[line]);
+            DHT_TRUE_MSG(d <= dev / QPOS + tol, "%s period %ld: %.4g mm from corner %u (dev %.4g)", what, i, d,
+                         (unsigned)line, dev / QPOS);
+            dht_reach_max("queue_q_blend_jerk.corner_frac", d / (dev / QPOS + tol));
+            rs->inside++;
+        } else {
+            const double d = dhsm_ref_dist(&ch->ref[line], pt);
+            DHT_TRUE_MSG(d <= PATH_TOL, "%s period %ld: target %.3g mm off line %u", what, i, d, (unsigned)line);
+        }
+        if (tr.state == DH_TRACK_OK) {
+            const double tol = t->pos_tol / QPOS + 4.0 * NJ / QPOS + 1e-6;
+            dhr_mat4 F;
+            double pq[3];
+            dhsm_tool_mm(g, q, pq, &F);
+            DHT_TRUE_MSG(dhsm_dist3(pq, pt) <= tol, "%s period %ld: tool %.3g mm from the target", what, i,
+                         dhsm_dist3(pq, pt));
+        } else {
+            rs->notok++;
+        }
+        if (qu->phase == DH_QUEUE_STOPPED && still >= 0) DHT_TRUE(memcmp(&cmd.T, &Thold, sizeof Thold) == 0);
+        Thold = cmd.T;
+        if (i % DEC == 0) {
+            memcpy(pring[(i / DEC) % RING], cmd.T.p, sizeof pring[0]);
+            memcpy(jring[(i / DEC) % RING], q, sizeof jring[0]);
+            check_rates(&pring[0][0], 3, 1.0 / QPOS, i, n, NP, V, A, wv, wa, what);
+            check_rates(&jring[0][0], NJ, 1.0 / Q16, i, n, NJN / Q16, VJ / Q16, AJ / Q16, wvj, waj, what);
+            if (i - unit >= 3 * wj + DEC) {
+                check_jerk(i, n, NP, J, wj, what);
+                rs->jchecked++;
+            }
+        }
+        n++;
+        DHT_EQ_INT(dh_queue_advance_q(qu, tr.state, &rep), DH_OK);
+        DHT_EQ_INT(rep.seq, line);
+        DHT_EQ_INT(rep.held, tr.state != DH_TRACK_OK || (qu->phase == DH_QUEUE_STOPPED && !rep.done && still >= 0));
+        if (rep.feed < rs->minfeed) rs->minfeed = rep.feed;
+        /* the last period whose feed override was not 1 (or stopped) */
+        if (rep.feed != DH_Q30_ONE || qu->phase != DH_QUEUE_RUN) unit = i + 1;
+        if (rep.done) {
+            DHT_EQ_INT(qu->seq, line + 1u);
+            done++;
+            if (ov) rs->blended++;
+            if (rep.last) {
+                DHT_TRUE(memcmp(&cmd.T, &ch->p[ch->n - 1u].B, sizeof cmd.T) == 0);
+                DHT_TRUE(tr.state == DH_TRACK_OK);
+            }
+        }
+        /* the stop at the first period inside an overlap */
+        if (!stop_done && braking < 0 && in_overlap(qu) && qu->mv.feed > 0) {
+            DHT_EQ_INT(dh_queue_stop_q(qu), DH_OK);
+            DHT_EQ_INT(qu->phase, DH_QUEUE_BRAKE);
+            braking = 0;
+            rs->stopped++;
+        } else if (braking >= 0 && still < 0) {
+            DHT_TRUE_MSG(braking++ < 20000, "%s: the brake does not reach rest", what);
+            if (rest < 0 && braking == 3) {
+                DHT_EQ_INT(dh_queue_resume_q(qu), DH_OK);
+                braking = -1;
+                stop_done = 1;
+            } else if (rep.stopped) {
+                still = 0;
+            }
+        } else if (still >= 0) {
+            DHT_TRUE(rep.stopped);
+            if (still++ >= rest) {
+                DHT_EQ_INT(dh_queue_resume_q(qu), DH_OK);
+                still = -1;
+                braking = -1;
+                stop_done = 1;
+            }
+        }
+    }
+    rs->periods = i;
+    DHT_TRUE_MSG(qu->count == 0u && done == ch->n, "%s: %u of %u lines done in %ld periods", what, (unsigned)done,
+                 (unsigned)ch->n, i);
+}
+
+static const dhs_robot *const robots[] = { &dhs_ur5_mm, &dhs_puma560_mm };
+
+static void blend_jerk_queues_q(void)
+{
+    long total = 0, jtotal = 0;
+    size_t ri;
+    for (ri = 0; ri < sizeof robots / sizeof robots[0]; ri++) {
+        dhsm_rig rig;
+        chain ch;
+        dh_queue_item_q items[NL];
+        dhsm_rig *const g = &rig;
+        long it, n = DHT_ITER(6), periods = 0, blended = 0, inside = 0, stops = 0, jchecked = 0;
+        dhsm_rig_make(g, robots[ri], 180.0, 720.0);
+        for (it = 0; it < n; it++) {
+            double qa[DH_MAX_JOINTS];
+            int32_t ia[NJ];
+            run_stats rs;
+            uint32_t k;
+            const int stop = (int)(dht_rand_u32() % 2u);
+            const long rest = (dht_rand_u32() % 3u == 0u) ? -1 : (long)(dht_rand_u32() % 200u);
+            dhsm_region_q(g, qa);
+            dhs_q_from_double(&g->r, qa, ia);
+            chain_make(g, ia, 2u + dht_rand_u32() % (NL - 1u), it == 0, &ch);
+            DHT_EQ_INT(dh_track_init_q(&the_trk, &g->r, &g->m, ia, DT_US), DH_OK);
+            DHT_EQ_INT(dh_queue_init_q(&the_qu, items, NL), DH_OK);
+            for (k = 0; k < ch.n; k++)
+                DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(&the_qu, &ch.p[k], ch.lim, ch.jk, ch.R[k]), DH_OK);
+            run_chain(g, &ch, stop, rest, &rs, g->d->name);
+            periods += rs.periods;
+            blended += rs.blended;
+            inside += rs.inside;
+            stops += rs.stopped;
+            jchecked += rs.jchecked;
+        }
+        total += blended;
+        jtotal += jchecked;
+        dht_reach_min("queue_q_blend_jerk.robot_blended", (double)blended);
+        dht_printf("%s: %ld chains, %ld periods, %ld corners passed blended (%ld periods inside), %ld stops inside, "
+                   "%ld jerk windows\n",
+                   g->d->name, n, periods, blended, inside, stops, jchecked);
+    }
+    DHT_TRUE(total > 0 && jtotal > 0);
+}
+
+/* The Puma's line its wrist cannot follow, blended into a line back
+ * towards its start (the file's comment) */
+static void lagging_blend_jerk_q(void)
+{
+    static const double QP[6] = { 10.0, -30.0, 45.0, 20.0, 35.0, -60.0 };
+    dhsm_rig rig;
+    chain ch;
+    dh_queue_item_q items[2];
+    dhsm_rig *const g = &rig;
+    double qa[DH_MAX_JOINTS];
+    int32_t ia[NJ];
+    dh_frame_q A, B, C;
+    run_stats rs;
+    int k;
+    dhsm_rig_make(g, &dhs_puma560_mm, 150.0, 600.0);
+    for (k = 0; k < 6; k++) qa[k] = QP[k];
+    dhs_q_from_double(&g->r, qa, ia);
+    dhsm_target_of(g, ia, &A);
+    dh_frame_identity_q(&B);
+    B.p[0] = (int32_t)(500.0 * LS * QPOS);
+    B.p[1] = (int32_t)(-30.0 * LS * QPOS);
+    B.p[2] = (int32_t)(1000.0 * LS * QPOS);
+    C = B;
+    C.p[2] -= (int32_t)(150.0 * LS * QPOS);
+    ch.n = 2u;
+    ch.lim = &PLIM;
+    the_jk.jmax = (int32_t)(20000.0 * LS * QPOS);
+    the_jk.wjmax = (int32_t)(10000.0 * Q16);
+    ch.jk = &the_jk;
+    DHT_EQ_INT(dh_path_line_q(&ch.p[0], &A, &B), DH_OK);
+    DHT_EQ_INT(dh_path_line_q(&ch.p[1], &B, &C), DH_OK);
+    dhsm_ref_make(&ch.ref[0], &ch.p[0], NULL);
+    dhsm_ref_make(&ch.ref[1], &ch.p[1], NULL);
+    ch.R[0] = (dh_qpos)(20.0 * LS * QPOS);
+    ch.R[1] = 0;
+    DHT_EQ_INT(dh_track_init_q(&the_trk, &g->r, &g->m, ia, DT_US), DH_OK);
+    DHT_EQ_INT(dh_queue_init_q(&the_qu, items, 2u), DH_OK);
+    for (k = 0; k < 2; k++)
+        DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(&the_qu, &ch.p[k], ch.lim, ch.jk, ch.R[k]), DH_OK);
+    DHT_TRUE(items[0].seg.dur[4] > 0u);
+    run_chain(g, &ch, 0, 0, &rs, "Puma lagging jerk blend");
+    DHT_TRUE_MSG(rs.notok > 0, "the Puma blend: no lagging period");
+    DHT_TRUE(rs.minfeed < DH_Q30_ONE && rs.blended == 1);
+    dht_printf("Puma lagging jerk blend: %ld periods, %ld not OK, least feed %.3f\n", rs.periods, rs.notok,
+               rs.minfeed / DHSM_Q30);
+}
+
+/* a queue of the lines p0, p1 in items[0..1] (jerk-blended, radius R, p1 within lim,
+ * jk): 1 when their corner blends */
+static int pair_blends(const dh_path_q *p0, const dh_path_q *p1, const dh_cart_limits_q *lim,
+                       const dh_cart_jerk_q *jk, dh_qpos R, dh_queue_item_q *items)
+{
+    DHT_EQ_INT(dh_queue_init_q(&the_qu, items, 2u), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(&the_qu, p0, &LIM, &the_jk, R), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(&the_qu, p1, lim, jk, R), DH_OK);
+    DHT_TRUE(items[0].seg.dur[4] == items[1].seg.dur[0]);
+    return items[0].seg.dur[4] > 0u;
+}
+
+static void blend_jerk_q_errors(void)
+{
+    dh_queue_q *const qu = &the_qu;
+    dh_queue_item_q the_items[4];
+    dh_frame_q A, B, C, Z;
+    dh_path_q p[3], arc, bad, far;
+    dh_cart_limits_q lim = LIM;
+    dh_cart_jerk_q jk;
+    const dh_qpos R = (dh_qpos)(10.0 * LS * QPOS);
+    dh_qpos via[3];
+    the_jk.jmax = (int32_t)(10000.0 * LS * QPOS);
+    the_jk.wjmax = (int32_t)(5000.0 * Q16);
+    jk = the_jk;
+    dh_frame_identity_q(&A);
+    A.p[0] = (int32_t)(300.0 * LS * QPOS);
+    A.p[2] = (int32_t)(400.0 * LS * QPOS);
+    B = A;
+    B.p[0] += (int32_t)(100.0 * LS * QPOS);
+    C = B;
+    C.p[1] += (int32_t)(100.0 * LS * QPOS);
+    DHT_EQ_INT(dh_path_line_q(&p[0], &A, &B), DH_OK);
+    DHT_EQ_INT(dh_path_line_q(&p[1], &B, &C), DH_OK);
+    DHT_EQ_INT(dh_path_line_q(&p[2], &C, &A), DH_OK);
+    memcpy(via, B.p, sizeof via);
+    via[2] += (int32_t)(30.0 * LS * QPOS);
+    DHT_EQ_INT(dh_path_arc_q(&arc, &A, via, &C), DH_OK);
+    /* bad arguments, checked after a full queue; nothing appended */
+    DHT_EQ_INT(dh_queue_init_q(qu, the_items, 1u), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[0], &LIM, &jk, -1), DH_ERR_ARG);
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &arc, &LIM, &jk, R), DH_ERR_ARG);
+    lim.wmax = 0;
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[0], &lim, &jk, R), DH_ERR_ARG);
+    lim = LIM;
+    jk.jmax = 0;
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[0], &LIM, &jk, R), DH_ERR_ARG);
+    jk = the_jk;
+    jk.wjmax = -1;
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[0], &LIM, &jk, R), DH_ERR_ARG);
+    jk = the_jk;
+    memset(&bad, 0, sizeof bad);
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &bad, &LIM, &jk, R), DH_ERR_ARG);
+    bad = p[0];
+    bad.length = -1;
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &bad, &LIM, &jk, R), DH_ERR_ARG);
+    DHT_EQ_INT(qu->count, 0u);
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[0], &LIM, &jk, R), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[1], &LIM, &jk, R), DH_ERR_LIMIT);
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[1], &LIM, &jk, -1), DH_ERR_LIMIT);
+    /* a duration beyond the profile's range (a line of 100 mm at 1 LSB/s) */
+    DHT_EQ_INT(dh_queue_init_q(qu, the_items, 4u), DH_OK);
+    lim.vmax = 1;
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[0], &lim, &jk, R), DH_ERR_OVERFLOW);
+    DHT_EQ_INT(qu->count, 0u);
+    lim = LIM;
+    /* blended: two lines with a radius, the bound within it, both at the
+     * shares (a profile's acceleration at most half of the line's: longer
+     * than alone, less than the overlap longer) */
+    DHT_EQ_INT(dh_queue_init_q(qu, the_items, 4u), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[0], &LIM, &jk, 0), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[1], &LIM, &jk, 0), DH_OK);
+    DHT_TRUE(pair_blends(&p[0], &p[1], &LIM, &jk, R, &the_items[2]));
+    DHT_TRUE(the_items[2].seg.dev > 0 && the_items[2].seg.dev <= R);
+    DHT_TRUE(the_items[2].blend == 2u && the_items[2].seg.T == the_items[2].prof.T);
+    DHT_TRUE(the_items[2].prof.T > the_items[0].prof.T && the_items[3].prof.T > the_items[1].prof.T);
+    DHT_TRUE((double)the_items[2].prof.a * the_items[2].path.length <= 0.5 * LIM.amax * ldexp(1.0, (int)the_items[2].e));
+    /* at rest: other limits, other jerk limits, radius 0, not at the end */
+    lim.vmax = LIM.vmax / 2;
+    DHT_TRUE(!pair_blends(&p[0], &p[1], &lim, &jk, R, the_items));
+    jk.jmax /= 2;
+    DHT_TRUE(!pair_blends(&p[0], &p[1], &LIM, &jk, R, the_items));
+    jk = the_jk;
+    DHT_TRUE(!pair_blends(&p[0], &p[1], &LIM, &jk, 0, the_items));
+    DHT_TRUE(!pair_blends(&p[0], &p[2], &LIM, &jk, R, the_items));
+    /* a radius > 0 puts the line at the shares; radius 0 after a corner at
+     * rest leaves it at its whole limits */
+    DHT_EQ_INT(dh_queue_init_q(qu, the_items, 4u), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[0], &LIM, &jk, 0), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[1], &LIM, &jk, 0), DH_OK);
+    DHT_TRUE(!pair_blends(&p[0], &p[2], &LIM, &jk, 0, &the_items[2]));
+    DHT_TRUE(the_items[0].prof.T == the_items[2].prof.T);
+    DHT_TRUE(!pair_blends(&p[0], &p[2], &LIM, &jk, R, &the_items[2]));
+    DHT_TRUE(the_items[0].prof.T < the_items[2].prof.T);
+    /* after a trapezoid blended line or a jerk-limited move: at rest */
+    DHT_EQ_INT(dh_queue_init_q(qu, the_items, 4u), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[0], &LIM, R), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[1], &LIM, &jk, R), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_jerk_q(qu, &p[2], &LIM, &jk), DH_OK);
+    DHT_TRUE(the_items[0].seg.dur[4] == 0u && the_items[1].seg.dur[0] == 0u && the_items[1].seg.dur[4] == 0u);
+    /* a corner within radius + 64 LSB of the int32 range: at rest */
+    Z = B;
+    Z.p[0] = INT32_MAX - R;
+    far = p[0];
+    DHT_EQ_INT(dh_path_line_q(&far, &A, &Z), DH_OK);
+    DHT_EQ_INT(dh_path_line_q(&bad, &Z, &C), DH_OK);
+    DHT_TRUE(!pair_blends(&far, &bad, &LIM, &jk, R, the_items));
+}
+
+static const dht_case cases[] = {
+    DHT_CASE(blend_jerk_queues_q),
+    DHT_CASE(lagging_blend_jerk_q),
+    DHT_CASE(blend_jerk_q_errors),
+};
+DHT_MAIN(cases)
