@@ -900,22 +900,19 @@ static uint32_t bj_half(const dh_profile_q *pr)
     return (h > 1u) ? h - 1u : 0u;
 }
 
-/* 1 when the overlap tb of the lines of i1 and i2 meets the bounds of
- * dh_blend_jcorner_q_, *dev then its bound on the distance from the
- * corner. Both profiles are point-symmetric, so line 1's last tb covers
- * and moves as its first: x_i, u_i = s, s' of profile i at tb (on 2^e_i),
- * the largest of the overlap. */
-static DH_NOINLINE int bj_ok(const dh_queue_item_q *i1, const dh_queue_item_q *i2, uint32_t tb, dh_qpos *dev)
+/* 1 when the overlap of the lines of i1 and i2 with x = s1, s1', s2, s2'
+ * at its length tb (on 2^e_i: both profiles are point-symmetric, so line
+ * 1's last tb covers and moves as its first; the largest of the overlap)
+ * meets the bounds of dh_blend_jcorner_q_, *dev then its bound on the
+ * distance from the corner */
+static DH_NOINLINE int bj_ok(const dh_queue_item_q *i1, const dh_queue_item_q *i2, const int32_t *x, dh_qpos *dev)
 {
-    int32_t x1, u1, x2, u2, acc;
     uint64_t w1, w2, k1, k2;
-    (void)dh_profile_eval_q(&i1->prof, tb, &x1, &u1, &acc);
-    (void)dh_profile_eval_q(&i2->prof, tb, &x2, &u2, &acc);
-    w1 = bj_rate(i1->path.length, x1 + 16, i1->e) + bj_rate(i2->path.length, x2 + 16, i2->e) + 16u;
+    w1 = bj_rate(i1->path.length, x[0] + 16, i1->e) + bj_rate(i2->path.length, x[2] + 16, i2->e) + 16u;
     if (w1 > (uint64_t)(uint32_t)i1->radius) return 0;
     *dev = (dh_qpos)w1;
-    w1 = bj_rate(i1->path.angle, u1, i1->e);
-    w2 = bj_rate(i2->path.angle, u2, i2->e);
+    w1 = bj_rate(i1->path.angle, x[1], i1->e);
+    w2 = bj_rate(i2->path.angle, x[3], i2->e);
     k1 = bj_mul(BJ_RAD, w1);
     k2 = bj_mul(BJ_RAD, w2);
     if (bj_mul(k1, w2) > ((uint32_t)i1->lim.wdmax >> 6)) return 0;
@@ -927,13 +924,15 @@ static DH_NOINLINE int bj_ok(const dh_queue_item_q *i1, const dh_queue_item_q *i
 }
 
 /* Both lines hold the profiles of their shares (amax / 2, jmax / 2 less
- * 2^-11, (63/128) wdmax and wjmax), so the corner changes neither: the overlap is
- * the largest whole us that bj_ok accepts (each of its terms grows with
- * tb over the first half of a change of speed: bisection) */
+ * 2^-11, (63/128) wdmax and wjmax), so the corner changes neither: the
+ * overlap is the largest whole us that bj_ok accepts (each of its terms
+ * grows with tb over the first half of a change of speed: bisection), the
+ * profiles evaluated here and the bounds tested in bj_ok's frame apart
+ * (the 256 B guard) */
 uint32_t dh_blend_jcorner_q_(const dh_queue_item_q *i1, const dh_queue_item_q *i2, dh_qpos *dev)
 {
     uint32_t lo = 0u, hi = bj_half(&i1->prof), m;
-    dh_qpos d = 0;
+    int32_t x[5];
     *dev = 0;
     if (bj_half(&i2->prof) < hi) hi = bj_half(&i2->prof);
     if (i1->radius <= 0 || i1->path.kind != (uint32_t)DH_PATH_LINE || i2->path.kind != (uint32_t)DH_PATH_LINE ||
@@ -941,9 +940,11 @@ uint32_t dh_blend_jcorner_q_(const dh_queue_item_q *i1, const dh_queue_item_q *i
         return 0u;
     while (lo < hi) {
         m = hi - ((hi - lo) >> 1);
-        if (bj_ok(i1, i2, m, &d) != 0) {
+        (void)dh_profile_eval_q(&i1->prof, m, &x[0], &x[1], &x[4]);
+        (void)dh_profile_eval_q(&i2->prof, m, &x[2], &x[3], &x[4]);
+        if (bj_ok(i1, i2, x, &x[4]) != 0) {
             lo = m;
-            *dev = d;
+            *dev = x[4];
         } else {
             hi = m - 1u;
         }

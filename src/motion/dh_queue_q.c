@@ -277,21 +277,10 @@ static DH_NOINLINE dh_status queueq_jline(dh_queue_item_q *it, int share)
     return st;
 }
 
-/* The corner of the jerk-limited blended lines pv (not started, radius
- * > 0: at the shares) and it: it at the shares, the overlap of
- * dh_blend_jcorner_q_, which changes neither profile; when that is 0 the
- * corner at rest, each line planned again as its other corner needs it
- * (pv at the shares when its start blends, it when its radius is > 0) */
-static DH_NOINLINE void queueq_jcorner(dh_queue_item_q *pv, dh_queue_item_q *it)
+/* The corner of the jerk-limited blended lines pv and it: its overlap tb
+ * (0: at rest) and the bound dev */
+static DH_NOINLINE void queueq_jcorner(dh_queue_item_q *pv, dh_queue_item_q *it, uint32_t tb, dh_qpos dev)
 {
-    uint32_t tb = 0u;
-    dh_qpos dev = 0;
-    if (queueq_jline(it, 1) == DH_OK) tb = dh_blend_jcorner_q_(pv, it, &dev);
-    if (tb == 0u) {
-        (void)queueq_jline(pv, (pv->seg.dur[0] > 0u) ? 1 : 0);
-        (void)queueq_jline(it, (it->radius > 0) ? 1 : 0);
-        dev = 0;
-    }
     pv->seg.dur[4] = tb;
     pv->seg.dev = dev;
     it->seg.dur[0] = tb;
@@ -299,8 +288,9 @@ static DH_NOINLINE void queueq_jcorner(dh_queue_item_q *pv, dh_queue_item_q *it)
 
 /* Planned in steps called from here (the 256 B guard): the item, its
  * profile (queueq_jline: at the shares when radius > 0, for the corner
- * after it), then its corner with the move before when it can blend
- * (queueq_jcorner) */
+ * after it), then its corner with the move before when it can blend: it
+ * at the shares, the overlap (dh_blend_jcorner_q_, which changes neither
+ * profile), the items (queueq_jcorner) */
 dh_status dh_queue_add_path_blend_jerk_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim,
                                          const dh_cart_jerk_q *jerk, dh_qpos radius)
 {
@@ -320,7 +310,19 @@ dh_status dh_queue_add_path_blend_jerk_q(dh_queue_q *qu, const dh_path_q *p, con
     if (st == DH_OK && radius > 0) st = queueq_jline(it, 1);
     if (st != DH_OK) return st;
     pv = queueq_blend_prev(qu, it);
-    if (pv != NULL) queueq_jcorner(pv, it);
+    if (pv != NULL) {
+        dh_qpos dev = 0;
+        uint32_t tb = 0u;
+        if (queueq_jline(it, 1) == DH_OK) tb = dh_blend_jcorner_q_(pv, it, &dev);
+        if (tb == 0u) {
+            /* at rest: each line as its other corner needs it (pv at the
+             * shares when its start blends, it when its radius is > 0) */
+            (void)queueq_jline(pv, (pv->seg.dur[0] > 0u) ? 1 : 0);
+            (void)queueq_jline(it, (radius > 0) ? 1 : 0);
+            dev = 0;
+        }
+        queueq_jcorner(pv, it, tb, dev);
+    }
     it->kind = (uint32_t)DH_MOVE_PATH;
     qu->count++;
     return DH_OK;
@@ -486,35 +488,36 @@ static int queueq_overlap(const dh_queue_q *qu)
     return g->dur[4] > 0u && qu->mv.clock > g->T - g->dur[4] && qu->count >= 2u;
 }
 
-/* s of the blended line in mv (qu->bl 1: its scaling bg; 2: its jerk-limited
- * profile) at its clock, and of the next line nx in their overlap (whose
- * clock is c - (T - tb)) into *s2 */
-static DH_NOINLINE dh_q30 queueq_blend_s(dh_queue_q *qu, const dh_queue_item_q *nx, dh_q30 *s2)
+/* The frame of the blended line in mv in its overlap with the next line
+ * nx (at s1 and s2): the superposition */
+static DH_NOINLINE dh_status queueq_blend_frame(const dh_queue_q *qu, const dh_queue_item_q *nx, dh_q30 s1, dh_q30 s2,
+                                                dh_frame_q *T)
 {
-    const dh_blend_seg_q *g = &qu->bg;
-    const uint32_t c = qu->mv.clock - (g->T - g->dur[4]);
-    if (qu->bl == 2u) {
-        *s2 = queueq_s(&qu->mv, &nx->prof, nx->e, c);
-        return queueq_s(&qu->mv, &qu->mv.prof[0], qu->mv.e, qu->mv.clock);
-    }
-    *s2 = dh_blend_s_q_(&nx->seg, c);
-    return dh_blend_s_q_(g, qu->mv.clock);
-}
-
-/* The frame of the blended line in mv in its overlap with the next line:
- * the superposition */
-static DH_NOINLINE dh_status queueq_blend_frame(dh_queue_q *qu, dh_frame_q *T)
-{
-    const dh_queue_item_q *nx = &qu->items[queueq_index(qu, 1u)];
-    dh_q30 s2;
-    const dh_q30 s1 = queueq_blend_s(qu, nx, &s2);
     int sat;
-    if (s1 < 0 || s2 < 0) return DH_ERR_ARG;
     dh_motion_point_q_(&qu->mv.path, s1, T->p);
     dh_motion_point_q_(&nx->path, s2, T->r[0]);
     sat = dh_blend_pos_q_(&nx->path, T);
     dh_blend_rot_q_(&qu->mv.path, &nx->path, s1, s2, T);
     return (sat != 0) ? DH_ERR_OVERFLOW : DH_OK;
+}
+
+/* s of the blended line in mv at the clock c (qu->bl 1: of its scaling g;
+ * 2: of its jerk-limited profile pr on 2^e), evaluated from
+ * dh_queue_target_q's frame (the 256 B guard) */
+DH_INLINE dh_q30 queueq_bl_s(dh_queue_q *qu, const dh_blend_seg_q *g, const dh_profile_q *pr, uint32_t e, uint32_t c)
+{
+    return (qu->bl == 1u) ? dh_blend_s_q_(g, c) : queueq_s(&qu->mv, pr, e, c);
+}
+
+/* The frame of the blended line in mv in its overlap: s of both lines
+ * (the next one's clock c - (T - tb)), then the superposition */
+static DH_NOINLINE dh_status queueq_overlap_frame(dh_queue_q *qu, dh_frame_q *T)
+{
+    const dh_queue_item_q *nx = &qu->items[queueq_index(qu, 1u)];
+    const dh_q30 s1 = queueq_bl_s(qu, &qu->bg, &qu->mv.prof[0], qu->mv.e, qu->mv.clock);
+    const dh_q30 s2 = queueq_bl_s(qu, &nx->seg, &nx->prof, nx->e, qu->mv.clock - (qu->bg.T - qu->bg.dur[4]));
+    if (s1 < 0 || s2 < 0) return DH_ERR_ARG;
+    return queueq_blend_frame(qu, nx, s1, s2, T);
 }
 
 dh_status dh_queue_target_q(dh_queue_q *qu, const dh_track_q *t, dh_queue_cmd_q *cmd)
@@ -542,10 +545,10 @@ dh_status dh_queue_target_q(dh_queue_q *qu, const dh_track_q *t, dh_queue_cmd_q 
     kind = (qu->started != 0u) ? qu->mv.kind : qu->hold;
     if (kind == (uint32_t)DH_MOVE_PATH) {
         if (qu->bl != 0u && queueq_overlap(qu)) {
-            st = queueq_blend_frame(qu, &cmd->T);
+            st = queueq_overlap_frame(qu, &cmd->T);
         } else {
             /* a blended line alone at its s (its last frame once done) */
-            const int32_t s = (qu->bl == 1u) ? dh_blend_s_q_(&qu->bg, qu->mv.clock)
+            const int32_t s = (qu->bl != 0u) ? queueq_bl_s(qu, &qu->bg, &qu->mv.prof[0], qu->mv.e, qu->mv.clock)
                                              : queueq_s(&qu->mv, &qu->mv.prof[0], qu->mv.e, qu->mv.clock);
             if (s < 0) return DH_ERR_ARG;
             st = dh_path_eval_q(&qu->mv.path, s, &cmd->T);
