@@ -493,6 +493,15 @@ static int move_run(const move_args *a, move_plan *p)
 
 /* ---- --fixed: the fixed-point executor and tracker ---------------------------- */
 
+/* --fixed with an option the fixed-point motion API does not offer: exit 2 */
+static int move_fixed_check(const move_args *a)
+{
+    if (a->jerk && a->blend)
+        return cli_error("move --fixed --jerk --blend", "the fixed-point blended corners are not jerk-limited; run "
+                         "--fixed --jerk without --blend, or --blend --jerk without --fixed");
+    return 0;
+}
+
 /* one CSV line of fixed joint values (Q16.16 degrees, dh_qpos lengths) */
 static int move_line_q(move_plan *p, const int32_t *q, int state)
 {
@@ -607,9 +616,7 @@ static int plan_path_q(move_plan *p, unsigned i, const move_seg *s, const dh_fra
 /* segment i (fixed, a joint move or a line or arc) appended to the fixed
  * queue qu, from F (updated to its end: B, or the FK of a joint move's
  * end); with --blend a line or arc as a blended path (its corner with
- * the next line or arc blended within the radius), with --jerk too a line
- * as a jerk-limited blended line (its corner with the next line blended)
- * and an arc as a jerk-limited move (its corners at rest) */
+ * the next line or arc blended within the radius) */
 static int queue_add_q(move_plan *p, unsigned i, const move_seg *s, dh_queue_q *qu, const dh_cart_limits_q *lim,
                        dh_frame_q *F)
 {
@@ -636,12 +643,7 @@ static int queue_add_q(move_plan *p, unsigned i, const move_seg *s, dh_queue_q *
     if (p->blend >= 0.0f) {
         const double R = floor((double)p->blend * (double)((int32_t)1 << DH_QPOS_FRAC) + 0.5);
         if (!(R < 2147483647.0)) return cli_error("--blend", "the radius does not fit the fixed-point length format");
-        if (!p->jerk)
-            st = dh_queue_add_path_blend_q(qu, &path, lim, (dh_qpos)R);
-        else if (s->kind == SEG_LINE)
-            st = dh_queue_add_path_blend_jerk_q(qu, &path, lim, &p->cjq, (dh_qpos)R);
-        else
-            st = dh_queue_add_path_jerk_q(qu, &path, lim, &p->cjq);
+        st = dh_queue_add_path_blend_q(qu, &path, lim, (dh_qpos)R);
     } else {
         st = dh_queue_add_path_jerk_q(qu, &path, lim, p->jerk ? &p->cjq : NULL);
     }
@@ -742,6 +744,7 @@ int cli_cmd_move(int argc, char **argv)
     int rc;
     dh_status st;
     if ((rc = move_parse(argc, argv, &a)) != 0) return rc;
+    if (a.fixed && (rc = move_fixed_check(&a)) != 0) return rc;
     for (i = 0; i < a.nseg; i++) cart += a.seg[i].kind != SEG_JOINT;
     memset(&p, 0, sizeof p);
     p.blend = -1.0f;

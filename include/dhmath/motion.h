@@ -1810,8 +1810,7 @@ typedef struct {
     uint32_t kind;               /**< DH_MOVE_JOINT or DH_MOVE_PATH */
     dh_blend_seg_q seg;          /**< blended line (dh_queue_add_path_blend_q): its scaling of s (prof then bounds it) */
     dh_qpos radius;              /**< blended line: the radius of its corner with the next move */
-    dh_cart_jerk_q jk;           /**< jerk-limited blended line (blend 2): its jerk limits */
-    uint32_t blend;              /**< 1 for a blended line (dh_queue_add_path_blend_q), 2 for a jerk-limited one (dh_queue_add_path_blend_jerk_q) */
+    uint32_t blend;              /**< 1 for a blended line */
 } dh_queue_item_q;
 
 /**
@@ -1958,39 +1957,6 @@ dh_status dh_queue_add_path_blend_q(dh_queue_q *qu, const dh_path_q *p, const dh
  */
 dh_status dh_queue_add_path_jerk_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim,
                                    const dh_cart_jerk_q *jerk);
-
-/**
- * @brief Appends a jerk-limited Cartesian LINE along p within lim and jerk
- *        whose corner with the NEXT move is blended within radius, the
- *        fixed twin of dh_queue_add_path_blend_jerk_f32. Integer only.
- * The line runs dh_move_path_jerk_q's seven-phase profile of s within the
- * corners' shares (amax / 2, jmax / 2 less 2^-11, (63/128) wdmax and
- * wjmax: slower, so a blended corner can take longer than a stop) when
- * radius > 0 or its corner before blends, else within lim and jerk. The
- * corner blends when the next move is also appended by this function with
- * the same lim and jerk, starts at p->B (bit for bit), is appended while
- * this one has not started, both move, the corner is more than radius + 64
- * LSB inside the int32 range and the overlap (seg.dur[4] here, seg.dur[0]
- * of the next) is > 0: the longest within half of each line's change of
- * speed that keeps the tool within seg.dev <= radius of the corner and the
- * composed rotation's cross terms within wdmax / 64 and wjmax / 64
- * (docs/design.md, "Jerk-limited blended corners, fixed point"). Speed,
- * TOTAL acceleration and jerk, angular speed, acceleration and jerk
- * within lim and jerk while the feed override is constant; the feed
- * override, a stop (inside an overlap after its end) and a resume keep
- * speed and acceleration within lim. Off the overlaps: on the line.
- * @param qu queue from dh_queue_init_q.
- * @param p line from dh_path_line_q (copied).
- * @param lim Cartesian limits, each > 0 (copied).
- * @param jerk jerk limits, each > 0 (copied).
- * @param radius blend radius (dh_qpos), >= 0 (0: at rest).
- * @return DH_OK; DH_ERR_LIMIT when the queue is full (checked first);
- *         DH_ERR_ARG for radius < 0, a p that holds no line (an arc too)
- *         or a limit <= 0; DH_ERR_OVERFLOW as dh_move_path_jerk_q. On
- *         error qu and its items are untouched.
- */
-dh_status dh_queue_add_path_blend_jerk_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim,
-                                         const dh_cart_jerk_q *jerk, dh_qpos radius);
 
 /**
  * @brief Begins a control period of dt = t->dt_us: the command of the

@@ -80,20 +80,4 @@ void dh_blend_rot_q_(const dh_path_q *p1, const dh_path_q *p2, dh_q30 s1, dh_q30
  * range, so only paths or scalings changed after planning can) */
 int dh_blend_pos_q_(const dh_path_q *p2, dh_frame_q *T);
 
-/* The overlap tb (us; 0: at rest) of the corner between the
- * jerk-limited blended lines of the queue items i1 and i2 (both planned
- * by dh_queue_add_path_blend_jerk_q: profiles on 2^e within the shares
- * amax / 2, jmax / 2 (less 2^-11), (63/128) wdmax and wjmax; i2's path starting at
- * i1's B; i1's radius, limits and jerk limits the corner's): the largest
- * tb up to half of each line's change of speed with L1 x1 + L2 x2 (x_i
- * the s line i covers in tb, each plus 16 LSB of its profile, and 16 LSB)
- * <= radius, the composed rotation's cross terms (pi/180) w1 w2 <=
- * wdmax / 64, (pi/180) (2 w2 P1 + P2 w1) <= wjmax / 128 and
- * (pi/180)^2 w2^2 w1 <= wjmax / 128 (w_i = th_i s_i' at tb, P_i = th_i
- * times the peak s_i''); 0 when the radius is 0, a path is no line, a
- * line has no motion or the corner lies within radius + 64 LSB of the
- * int32 range. *dev = that bound of the distance from the corner (0 for
- * tb 0). */
-uint32_t dh_blend_jcorner_q_(const dh_queue_item_q *i1, const dh_queue_item_q *i2, dh_qpos *dev);
-
 #endif /* DHMATH_SRC_BLEND_Q_IMPL_H */

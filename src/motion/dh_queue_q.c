@@ -165,20 +165,17 @@ static dh_status queueq_line_ok(const dh_path_q *p, const dh_cart_limits_q *lim)
     return DH_OK;
 }
 
-/* The queued move before the free item it when its line (within its
- * limits) can blend with it: a blended line of it's kind (it->blend)
- * with a radius, not started, with the same limits (and jerk limits),
- * ending where it's line starts; NULL when not. Its radius then in
+/* The queued move before the free item when the line p (within lim) can
+ * blend with it: a blended line with a radius, not started, with the same
+ * limits, ending where p starts; NULL when not. Its radius then in
  * qu->bs[0].dev (dh_blend_corner_q_ reads it there). */
-static DH_NOINLINE dh_queue_item_q *queueq_blend_prev(dh_queue_q *qu, const dh_queue_item_q *it)
+static DH_NOINLINE dh_queue_item_q *queueq_blend_prev(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim)
 {
     dh_queue_item_q *pv;
     if (qu->count == 0u || (qu->count == 1u && qu->started != 0u)) return NULL;
     pv = &qu->items[queueq_index(qu, qu->count - 1u)];
-    if (pv->kind != (uint32_t)DH_MOVE_PATH || pv->blend != it->blend || pv->radius <= 0) return NULL;
-    if (memcmp(&pv->lim, &it->lim, sizeof it->lim) != 0 || memcmp(&pv->path.B, &it->path.A, sizeof it->path.A) != 0)
-        return NULL;
-    if (it->blend == 2u && memcmp(&pv->jk, &it->jk, sizeof it->jk) != 0) return NULL;
+    if (pv->kind != (uint32_t)DH_MOVE_PATH || pv->blend == 0u || pv->radius <= 0) return NULL;
+    if (memcmp(&pv->lim, lim, sizeof *lim) != 0 || memcmp(&pv->path.B, &p->A, sizeof p->A) != 0) return NULL;
     qu->bs[0].dev = pv->radius;
     return pv;
 }
@@ -235,8 +232,7 @@ dh_status dh_queue_add_path_blend_q(dh_queue_q *qu, const dh_path_q *p, const dh
     if (dh_blend_queue_line_q_(&it->seg, &it->path, &it->lim, &it->prof) == 0) return DH_ERR_OVERFLOW;
     /* the corner with the move before, planned from this frame (the 256 B
      * guard): kept when both lines' scalings with it fit */
-    it->blend = 1u;
-    pv = queueq_blend_prev(qu, it);
+    pv = queueq_blend_prev(qu, &it->path, &it->lim);
     if (pv != NULL) {
         dh_blend_rates_q_(&pv->path, &it->lim, &qu->bs[0]);
         dh_blend_rates_q_(&it->path, &it->lim, &qu->bs[1]);
@@ -247,83 +243,7 @@ dh_status dh_queue_add_path_blend_q(dh_queue_q *qu, const dh_path_q *p, const dh
             queueq_blend_keep(qu, pv, it);
     }
     it->kind = (uint32_t)DH_MOVE_PATH;
-    qu->count++;
-    return DH_OK;
-}
-
-/* The jerk-limited blended line's profile in the item it (its path, lim
- * and jk set) as dh_path_move_jerk_q plans (its two steps), within lim
- * and jk (share 0) or within the corners' shares of them (share 1:
- * amax / 2 and jmax / 2 less 2^-11 of theirs for the rounding, (63/128)
- * wdmax and wjmax; DH_ERR_ARG for a share of 0), and its e and seg.T */
-static DH_NOINLINE dh_status queueq_jline(dh_queue_item_q *it, int share)
-{
-    dh_cart_limits_q l = it->lim;
-    dh_cart_jerk_q j = it->jk;
-    dh_status st;
-    if (share != 0) {
-        l.amax = (l.amax >> 1) - (l.amax >> 11);
-        l.wdmax = (int32_t)(((int64_t)l.wdmax * 63) >> 7);
-        j.jmax = (j.jmax >> 1) - (j.jmax >> 11);
-        j.wjmax = (int32_t)(((int64_t)j.wjmax * 63) >> 7);
-    }
-    if (l.amax <= 0 || l.wdmax <= 0 || j.jmax <= 0 || j.wjmax <= 0) return DH_ERR_ARG;
-    st = dh_motion_path_rates_q_(&it->prof, &it->path, &l, &j);
-    if (st == DH_OK) st = dh_motion_profile_q_(&it->prof);
-    if (st == DH_OK) {
-        it->e = dh_motion_path_e_q_(&it->prof);
-        it->seg.T = it->prof.T;
-    }
-    return st;
-}
-
-/* The corner of the jerk-limited blended lines pv and it: its overlap tb
- * (0: at rest) and the bound dev */
-static DH_NOINLINE void queueq_jcorner(dh_queue_item_q *pv, dh_queue_item_q *it, uint32_t tb, dh_qpos dev)
-{
-    pv->seg.dur[4] = tb;
-    pv->seg.dev = dev;
-    it->seg.dur[0] = tb;
-}
-
-/* Planned in steps called from here (the 256 B guard): the item, its
- * profile (queueq_jline: at the shares when radius > 0, for the corner
- * after it), then its corner with the move before when it can blend: it
- * at the shares, the overlap (dh_blend_jcorner_q_, which changes neither
- * profile), the items (queueq_jcorner) */
-dh_status dh_queue_add_path_blend_jerk_q(dh_queue_q *qu, const dh_path_q *p, const dh_cart_limits_q *lim,
-                                         const dh_cart_jerk_q *jerk, dh_qpos radius)
-{
-    dh_queue_item_q *it, *pv;
-    dh_status st;
-    DH_ASSERT(qu != NULL && p != NULL && lim != NULL && jerk != NULL);
-    it = queueq_free(qu);
-    if (it == NULL) return DH_ERR_LIMIT;
-    if (radius < 0 || jerk->jmax <= 0 || jerk->wjmax <= 0) return DH_ERR_ARG;
-    st = queueq_line_ok(p, lim);
-    if (st == DH_OK && p->kind != (uint32_t)DH_PATH_LINE) st = DH_ERR_ARG;
-    if (st != DH_OK) return st;
-    queueq_blend_item(it, p, lim, radius);
-    it->jk = *jerk;
-    it->blend = 2u;
-    st = queueq_jline(it, 0);
-    if (st == DH_OK && radius > 0) st = queueq_jline(it, 1);
-    if (st != DH_OK) return st;
-    pv = queueq_blend_prev(qu, it);
-    if (pv != NULL) {
-        dh_qpos dev = 0;
-        uint32_t tb = 0u;
-        if (queueq_jline(it, 1) == DH_OK) tb = dh_blend_jcorner_q_(pv, it, &dev);
-        if (tb == 0u) {
-            /* at rest: each line as its other corner needs it (pv at the
-             * shares when its start blends, it when its radius is > 0) */
-            (void)queueq_jline(pv, (pv->seg.dur[0] > 0u) ? 1 : 0);
-            (void)queueq_jline(it, (radius > 0) ? 1 : 0);
-            dev = 0;
-        }
-        queueq_jcorner(pv, it, tb, dev);
-    }
-    it->kind = (uint32_t)DH_MOVE_PATH;
+    it->blend = 1u;
     qu->count++;
     return DH_OK;
 }
@@ -467,16 +387,15 @@ static DH_NOINLINE void queueq_joint_step(dh_queue_q *qu, uint32_t dt, int32_t *
     mv->clock = (uint32_t)c;
 }
 
-/* s, Q2.30, of the profile pr on 2^e at the clock c <= its T (mv->ps
- * the evaluation's scratch: a small frame); -1 for a profile out of range
- * (dh_queue_target_q refuses it) */
-static DH_NOINLINE int32_t queueq_s(dh_move_q *mv, const dh_profile_q *pr, uint32_t e, uint32_t c)
+/* s of the path move in mv at its clock, Q2.30; -1 for a profile out of
+ * range (dh_queue_target_q refuses it) */
+static DH_NOINLINE int32_t queueq_s(dh_move_q *mv)
 {
     uint32_t s;
-    if (e > 30u || c > pr->T) return -1;
-    if (dh_profile_eval_q(pr, c, &mv->ps[0], &mv->ps[1], &mv->ps[2]) != DH_OK) return -1;
-    if (mv->ps[0] < 0 || (uint32_t)mv->ps[0] > (1u << e)) return -1;
-    s = (uint32_t)mv->ps[0] << (30u - e);
+    if (mv->e > 30u || mv->clock > mv->dur) return -1;
+    if (dh_profile_eval_q(&mv->prof[0], mv->clock, &mv->ps[0], &mv->ps[1], &mv->ps[2]) != DH_OK) return -1;
+    if (mv->ps[0] < 0 || (uint32_t)mv->ps[0] > (1u << mv->e)) return -1;
+    s = (uint32_t)mv->ps[0] << (30u - mv->e);
     return (int32_t)s;
 }
 
@@ -489,35 +408,19 @@ static int queueq_overlap(const dh_queue_q *qu)
 }
 
 /* The frame of the blended line in mv in its overlap with the next line
- * nx (at s1 and s2): the superposition */
-static DH_NOINLINE dh_status queueq_blend_frame(const dh_queue_q *qu, const dh_queue_item_q *nx, dh_q30 s1, dh_q30 s2,
-                                                dh_frame_q *T)
+ * (whose clock is c - (T - tb)): the superposition */
+static DH_NOINLINE dh_status queueq_blend_frame(const dh_queue_q *qu, dh_frame_q *T)
 {
+    const dh_blend_seg_q *g = &qu->bg;
+    const dh_queue_item_q *nx = &qu->items[queueq_index(qu, 1u)];
+    const dh_q30 s1 = dh_blend_s_q_(g, qu->mv.clock);
+    const dh_q30 s2 = dh_blend_s_q_(&nx->seg, qu->mv.clock - (g->T - g->dur[4]));
     int sat;
     dh_motion_point_q_(&qu->mv.path, s1, T->p);
     dh_motion_point_q_(&nx->path, s2, T->r[0]);
     sat = dh_blend_pos_q_(&nx->path, T);
     dh_blend_rot_q_(&qu->mv.path, &nx->path, s1, s2, T);
     return (sat != 0) ? DH_ERR_OVERFLOW : DH_OK;
-}
-
-/* s of the blended line in mv at the clock c (qu->bl 1: of its scaling g;
- * 2: of its jerk-limited profile pr on 2^e), evaluated from
- * dh_queue_target_q's frame (the 256 B guard) */
-DH_INLINE dh_q30 queueq_bl_s(dh_queue_q *qu, const dh_blend_seg_q *g, const dh_profile_q *pr, uint32_t e, uint32_t c)
-{
-    return (qu->bl == 1u) ? dh_blend_s_q_(g, c) : queueq_s(&qu->mv, pr, e, c);
-}
-
-/* The frame of the blended line in mv in its overlap: s of both lines
- * (the next one's clock c - (T - tb)), then the superposition */
-static DH_NOINLINE dh_status queueq_overlap_frame(dh_queue_q *qu, dh_frame_q *T)
-{
-    const dh_queue_item_q *nx = &qu->items[queueq_index(qu, 1u)];
-    const dh_q30 s1 = queueq_bl_s(qu, &qu->bg, &qu->mv.prof[0], qu->mv.e, qu->mv.clock);
-    const dh_q30 s2 = queueq_bl_s(qu, &nx->seg, &nx->prof, nx->e, qu->mv.clock - (qu->bg.T - qu->bg.dur[4]));
-    if (s1 < 0 || s2 < 0) return DH_ERR_ARG;
-    return queueq_blend_frame(qu, nx, s1, s2, T);
 }
 
 dh_status dh_queue_target_q(dh_queue_q *qu, const dh_track_q *t, dh_queue_cmd_q *cmd)
@@ -545,11 +448,10 @@ dh_status dh_queue_target_q(dh_queue_q *qu, const dh_track_q *t, dh_queue_cmd_q 
     kind = (qu->started != 0u) ? qu->mv.kind : qu->hold;
     if (kind == (uint32_t)DH_MOVE_PATH) {
         if (qu->bl != 0u && queueq_overlap(qu)) {
-            st = queueq_overlap_frame(qu, &cmd->T);
+            st = queueq_blend_frame(qu, &cmd->T);
         } else {
             /* a blended line alone at its s (its last frame once done) */
-            const int32_t s = (qu->bl != 0u) ? queueq_bl_s(qu, &qu->bg, &qu->mv.prof[0], qu->mv.e, qu->mv.clock)
-                                             : queueq_s(&qu->mv, &qu->mv.prof[0], qu->mv.e, qu->mv.clock);
+            const int32_t s = (qu->bl != 0u) ? dh_blend_s_q_(&qu->bg, qu->mv.clock) : queueq_s(&qu->mv);
             if (s < 0) return DH_ERR_ARG;
             st = dh_path_eval_q(&qu->mv.path, s, &cmd->T);
         }
@@ -645,7 +547,6 @@ static DH_NOINLINE void queueq_handover(dh_queue_q *qu)
     nx = &qu->items[qu->head];
     qu->bg = nx->seg;
     mv->prof[0] = nx->prof;
-    mv->e = nx->e;
     mv->path = nx->path;
     mv->dur = nx->seg.T;
     mv->clock = (c < mv->dur) ? c : mv->dur;

@@ -2028,6 +2028,8 @@ def group_move(seed, tmp):
         ([path] + q0 + ['--dt', '0.01', '--blend', '-0.01', '--jerk', '100'] + cart + ln + ln,
          '--blend: -0.01 must be a finite radius'),
         ([path] + q0 + ['--dt', '0.01', '--blend', 'r'] + cart + ln + ln, "bad number 'r' for --blend"),
+        ([path] + q0 + ['--dt', '0.01', '--fixed', '--jerk', '10', '--blend', '1'] + jt,
+         'move --fixed --jerk --blend: the fixed-point blended corners are not jerk-limited'),
         ([path] + q0 + ['--dt', '0.01', '--dt', '0.02'] + jt, "option '--dt' given more than once"),
         ([path] + q0 + ['--dt', '0.01', '--frames'] + jt, "unknown or inapplicable option '--frames'"),
         ([path] + q0 + ['--dt', '0.01', '--joint'], "option '--joint' needs a value"),
@@ -2051,9 +2053,8 @@ def group_move_fixed(seed, tmp):
     the printed values, which %.9g prints exactly); the tool on the line
     within 5e-3 mm; the joint move's end exact; --fixed with --jerk and a
     --dt that is no whole number of microseconds: exit 2; a blended square
-    (move_fixed_blend), a line-arc-line one (move_fixed_blend_arc) and the
-    square jerk-limited (move_fixed_blend_jerk); a lagging Puma queue
-    (move_fixed_lagging)."""
+    (move_fixed_blend) and a line-arc-line one (move_fixed_blend_arc); a
+    lagging Puma queue (move_fixed_lagging)."""
     rng = random.Random(seed)
     ur5 = os.path.join(ROOT, 'examples', 'robots', 'ur5_mm.dh')
     rob = read_robot(open(ur5).read())
@@ -2117,7 +2118,8 @@ def group_move_fixed(seed, tmp):
     q0 = ['--q0', ','.join(map(str, qa))]
     cart = ['--speed', '200', '--accel', '1000', '--rspeed', '60', '--raccel', '240']
     ln = ['--line', to_expr(A)]
-    for extra, want in ((['--jerk', '40000'] + ln, '--jerk: out of the fixed-point range'),
+    for extra, want in ((['--jerk', '100', '--blend', '2'] + ln + ln, 'move --fixed --jerk --blend: the fixed-point'),
+                        (['--jerk', '40000'] + ln, '--jerk: out of the fixed-point range'),
                         (['--speed', '40000'] + cart[2:] + ln, '--speed: out of the fixed-point range')):
         a = [path] + q0 + ['--dt', '0.004', '--fixed'] + (cart if '--speed' not in extra else []) + extra
         rc, out, err = run(['move'] + a)
@@ -2126,7 +2128,6 @@ def group_move_fixed(seed, tmp):
     check(rc == 2 and out == '' and 'whole number of microseconds' in err, 'move --fixed --dt: rc %d %r' % (rc, err))
     move_fixed_blend(rob, n, path, qa, A, p0)
     move_fixed_blend_arc(rob, n, path, qa, A, p0)
-    move_fixed_blend_jerk(rob, n, path, qa, A, p0)
     move_fixed_lagging(tmp)
     move_fixed_blend_lagging(tmp)
     move_blend_jerk_lagging(tmp)
@@ -2461,52 +2462,6 @@ def move_fixed_blend_arc(rob, n, path, qa, A, p0):
     print('move --fixed --blend arc: %d periods (at rest at the corners %d), off the paths %.4g mm, within '
           '%.6g mm of a corner there (radius %g), speed %.6g, acceleration %.6g over %d periods' %
           (len(rows), len(rows0), off, worst, R, vw, aw, w))
-
-
-def move_fixed_blend_jerk(rob, n, path, qa, A, p0):
-    """move --fixed --jerk --blend: the blended square of move_fixed_blend
-    (100 mm sides, radius 20 mm) jerk-limited (--jerk 5000 mm/s^3) through
-    the fixed queue's jerk-limited blended lines and the fixed tracker:
-    exit 0, every period ok; the tool (double FK of the printed joints,
-    within the fixed tracker's 5e-3 mm of its target) on the square's sides
-    within 5e-3 mm or within R + 5e-3 mm of a corner, off the sides
-    somewhere; its speed and acceleration over 25 periods and its jerk by
-    third differences over 50 periods within --speed, --accel and --jerk
-    times 1 + 1e-3 plus the tracker's noise (2, 4 and 8 times 5e-3 mm over
-    the window and its powers); every joint step within the robot's rates;
-    the last row at the square's start."""
-    side, R, dt, w, wj, noise = 100.0, 20.0, 0.002, 25, 50, 5e-3
-    speed, accel, jerk = 200.0, 1000.0, 5000.0
-    rot = to_expr(A).split(' ', 1)[1]
-    sq = [[p0[0] + side, p0[1], p0[2]], [p0[0] + side, p0[1] + side, p0[2]], [p0[0], p0[1] + side, p0[2]], p0]
-    args = ['move', path, '--q0', ','.join(map(str, qa)), '--dt', str(dt), '--speed', str(speed), '--accel',
-            str(accel), '--rspeed', '60', '--raccel', '240', '--jerk', str(jerk), '--fixed', '--blend', str(R)]
-    for c in sq:
-        args += ['--line', 'trans(%.6f,%.6f,%.6f) %s' % (c[0], c[1], c[2], rot)]
-    rc, out, err = run(args)
-    head, rows = read_csv(out, n)
-    check(rc == 0 and err == '' and rows and None not in rows and all(r[2] == 'ok' for r in rows),
-          'move --fixed --jerk --blend square: rc %d err %r' % (rc, err))
-    if not rows or None in rows:
-        return
-    check_joint_limits('move --fixed --jerk --blend square', qa, rows, [180.0] * n, [720.0] * n, dt,
-                       [4 * f32_ulp(360.0)] * n)
-    pts = [p0] + [[F[i][3] for i in range(3)] for F in (ref_fk(rob, r[1]) for r in rows)]
-    off, worst = blend_dist(pts, lambda p: min(seg_dist(p, c0, c1) for c0, c1 in zip([p0] + sq[:3], sq)), sq[:3],
-                            5e-3)
-    check(worst <= R + 5e-3 and off > 1.0, 'move --fixed --jerk --blend square: off the sides %.3g, %.6g from a '
-          'corner (radius %g)' % (off, worst, R))
-    vw, aw = window_rates(pts, w, dt)
-    jw = window_jerk(pts, wj, dt)
-    check(vw <= speed * (1 + 1e-3) + 2 * noise / (w * dt) and aw <= accel * (1 + 1e-3) + 4 * noise / (w * dt) ** 2
-          and jw <= jerk * (1 + 1e-3) + 8 * noise / (wj * dt) ** 3,
-          'move --fixed --jerk --blend square: speed %.6g, acceleration %.6g over %d periods, jerk %.6g over %d' %
-          (vw, aw, w, jw, wj))
-    pe = max(abs(pts[-1][i] - p0[i]) for i in range(3))
-    check(pe <= 5e-3, 'move --fixed --jerk --blend square: last row %.3g mm from the end' % pe)
-    print('move --fixed --jerk --blend square: %d periods, off the sides %.4g mm, within %.6g mm of a corner there '
-          '(radius %g), speed %.6g, acceleration %.6g over %d periods, jerk %.6g over %d' %
-          (len(rows), off, worst, R, vw, aw, w, jw, wj))
 
 
 def main():

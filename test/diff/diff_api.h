@@ -291,7 +291,6 @@ typedef void (*diff_call)(const diff_in *in, diff_out *out);
     X(dh_queue_add_path_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_queue_add_path_jerk_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_queue_add_path_blend_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
-    X(dh_queue_add_path_blend_jerk_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_queue_target_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_queue_advance_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \
     X(dh_queue_stop_q, g_fpath, 20000, DIFF_OUT_FRAMES, C_BITS) \

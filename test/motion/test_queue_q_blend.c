@@ -38,16 +38,6 @@
  *
  * Every status of dh_queue_add_path_blend_q, and the corners it runs at
  * rest.
- *
- * The same for jerk-limited blended lines (dh_queue_add_path_blend_jerk_q):
- * chains of lines only, with random jerk limits (one draw per chain), and
- * over windows in which the feed override stayed 1 (the jerk bound holds
- * at a constant feed override) the target's total jerk by third
- * differences within jmax times 1 + 1e-3 plus the noise term
- * 8 N / (w dt)^3, w the least window with it within 2.5e-3 of the limit;
- * a stop inside an overlap waits for the overlap's end, then the next line
- * brakes alone. Every status of dh_queue_add_path_blend_jerk_q, and the
- * corners it runs at rest.
  */
 #include <math.h>
 #include <string.h>
@@ -67,10 +57,9 @@
 #define PATH_TOL (5e-3 * ldexp(1.0, 16 - DH_QPOS_FRAC))
 #define REL_FD 1e-3
 #define NOISE_FRAC 2.5e-4
-#define NOISE_FRAC_J 2.5e-3
 #define NL 3u      /* lines of a chain at most (the queue's items: the micro:bit's RAM) */
 #define DEC 4      /* one position kept every DEC periods */
-#define RING 60    /* positions kept, in DEC periods: the longest window (3 w) plus one */
+#define RING 42    /* positions kept, in DEC periods: the longest window (2 w) plus one */
 #define NJ 6u
 
 /* one tracker, one queue (the M0 target has 16 KB of RAM: the queue's
@@ -79,7 +68,6 @@ static dh_track_q the_trk;
 static dh_queue_q the_qu;
 static int32_t pring[RING][3];   /* targets, one every DEC periods */
 static int32_t jring[RING][NJ];  /* tracked joints, one every DEC periods */
-static dh_cart_jerk_q the_jk;    /* a jerk-limited chain's jerk limits */
 
 static const dh_cart_limits_q LIM = { 250 << 16, 2000 << 16, 45 << 16, 360 << 16 };
 /* the Puma's lagging line's limits (test_move_q.c's) */
@@ -92,32 +80,25 @@ typedef struct {
     dh_qpos R[NL];
     uint32_t n;
     const dh_cart_limits_q *lim;
-    const dh_cart_jerk_q *jk; /* NULL: trapezoid blends (dh_queue_add_path_blend_q) */
 } chain;
 
 /* the least window (periods, a multiple of DEC) with the noise 2 N / w
- * (k 1: speed), 4 N / w^2 (k 2) within NOISE_FRAC or 8 N / w^3 (k 3)
- * within NOISE_FRAC_J of the limit L */
+ * (k 1: speed) or 4 N / w^2 (k 2) within NOISE_FRAC of the limit L */
 static long window_of(double N, double L, int k)
 {
-    double w = 2.0 * N / (NOISE_FRAC * L * DT);
-    long p;
-    if (k == 2) w = sqrt(4.0 * N / (NOISE_FRAC * L)) / DT;
-    if (k == 3) w = cbrt(8.0 * N / (NOISE_FRAC_J * L)) / DT;
-    p = DEC * ((long)ceil(w / DEC) + 1);
-    DHT_TRUE_MSG(k * p < DEC * RING, "window %ld periods for noise %.3g", p, N);
+    const double w = (k == 1) ? 2.0 * N / (NOISE_FRAC * L * DT) : sqrt(4.0 * N / (NOISE_FRAC * L)) / DT;
+    const long p = DEC * ((long)ceil(w / DEC) + 1);
+    DHT_TRUE_MSG(2 * p < DEC * RING, "window %ld periods for noise %.3g", p, N);
     return p;
 }
 
-/* the difference of order k (1 to 3) over w periods of coordinate c of
+/* the difference of order k (1 or 2) over w periods of coordinate c of
  * m-wide ring positions, ending at period i (a multiple of DEC) */
 static double ring_diff(const int32_t *rg, int m, int c, long i, long w, int k)
 {
     const double x0 = rg[((i / DEC) % RING) * m + c], x1 = rg[(((i - w) / DEC) % RING) * m + c];
-    const double x2 = rg[(((i - 2 * w) / DEC) % RING) * m + c];
     if (k == 1) return x0 - x1;
-    if (k == 2) return x0 - 2.0 * x1 + x2;
-    return x0 - 3.0 * x1 + 3.0 * x2 - rg[(((i - 3 * w) / DEC) % RING) * m + c];
+    return x0 - 2.0 * x1 + rg[(((i - 2 * w) / DEC) % RING) * m + c];
 }
 
 /* The rates of the ring rg (m coordinates, scale to mm or degrees) at
@@ -142,22 +123,6 @@ static void check_rates(const int32_t *rg, int m, double scale, long i, long n, 
         }
         if (m == 3) DHT_TRUE_MSG(sqrt(sq) <= bound, "%s period %ld: rate %d %.6g > %.6g", what, i, k, sqrt(sq), L);
     }
-}
-
-/* the target's total jerk over the window w at period i by third
- * differences within J up to the noise N (n positions since fresh) */
-static void check_jerk(long i, long n, double N, double J, long w, const char *what)
-{
-    const double tw = pow(w * DT, 3.0), bound = J * (1 + REL_FD) + 8.0 * N / tw;
-    double sq = 0.0;
-    int c;
-    if (n < 3 * w) return;
-    for (c = 0; c < 3; c++) {
-        const double x = ring_diff(&pring[0][0], 3, c, i, w, 3) / QPOS / tw;
-        sq += x * x;
-    }
-    DHT_TRUE_MSG(sqrt(sq) <= bound, "%s period %ld: jerk %.6g > %.6g", what, i, sqrt(sq), J);
-    dht_reach_max("queue_q_blend_jerk.jerk_frac", sqrt(sq) / J);
 }
 
 /* via = the point of the arc from F to B bulging out of the chord by
@@ -185,9 +150,8 @@ static void arc_via(const dh_frame_q *F, const dh_frame_q *B, dh_qpos *via)
  * of the region (each joint 4 to 12 degrees on), each reachable, an arc
  * with probability 1/2 (through arc_via's point); radii in [0, 24] mm
  * (some 0), in [5, 24] mm in the first chain of a robot (so that every
- * run passes blended corners), whose paths alternate: line, arc, line;
- * with jerk lines only, with jerk limits drawn */
-static void chain_make(const dhsm_rig *g, const int32_t *q0, uint32_t n, int first, int jerk, chain *ch)
+ * run passes blended corners), whose paths alternate: line, arc, line */
+static void chain_make(const dhsm_rig *g, const int32_t *q0, uint32_t n, int first, chain *ch)
 {
     int32_t q[NJ], qb[NJ];
     dh_frame_q F, B;
@@ -196,15 +160,9 @@ static void chain_make(const dhsm_rig *g, const int32_t *q0, uint32_t n, int fir
     dhsm_target_of(g, q, &F);
     ch->n = n;
     ch->lim = &LIM;
-    ch->jk = NULL;
-    if (jerk) {
-        the_jk.jmax = (int32_t)(dht_rand_uniform(5000.0, 30000.0) * LS * QPOS);
-        the_jk.wjmax = (int32_t)(dht_rand_uniform(2000.0, 20000.0) * Q16);
-        ch->jk = &the_jk;
-    }
     for (k = 0; k < n; k++) {
         int tries = 0, ok = 0;
-        const int arc = jerk ? 0 : (first ? (int)(k % 2u) : (int)(dht_rand_u32() % 2u));
+        const int arc = first ? (int)(k % 2u) : (int)(dht_rand_u32() % 2u);
         dh_qpos via[3];
         while (!ok && tries++ < 50) {
             double qa[DH_MAX_JOINTS], qn[DH_MAX_JOINTS];
@@ -231,7 +189,7 @@ static void chain_make(const dhsm_rig *g, const int32_t *q0, uint32_t n, int fir
 }
 
 typedef struct {
-    long periods, notok, blended, arcs, inside, stopped, jchecked;
+    long periods, notok, blended, arcs, inside, stopped;
     dh_q30 minfeed;
 } run_stats;
 
@@ -252,10 +210,9 @@ static void run_chain(const dhsm_rig *g, const chain *ch, int stop, long rest, r
     dh_queue_q *const qu = &the_qu;
     dh_track_q *const t = &the_trk;
     const double V = ch->lim->vmax / QPOS, A = ch->lim->amax / QPOS;
-    const double J = (ch->jk != NULL) ? ch->jk->jmax / QPOS : 0.0;
     const double VJ = g->r.joint[0].vmax_q, AJ = g->r.joint[0].amax_q;
     double Lmax = 0.0, Rmax = 0.0, NA, NP, NJN;
-    long i, n = 0, wv, wa, wj = 0, wvj, waj, still = -1, braking = -1, unit = 0;
+    long i, n = 0, wv, wa, wvj, waj, still = -1, braking = -1;
     uint32_t k, done = 0;
     int32_t q[NJ];
     dh_frame_q Thold;
@@ -270,7 +227,6 @@ static void run_chain(const dhsm_rig *g, const chain *ch, int stop, long rest, r
     NJN = 4.0 + VJ * 1e-6;
     wv = window_of(NP, V, 1);
     wa = window_of(NP, A, 2);
-    if (ch->jk != NULL) wj = window_of(NP, J, 3);
     wvj = window_of(NJN, VJ, 1);
     waj = window_of(NJN, AJ, 2);
     memcpy(q, t->q, sizeof q);
@@ -321,18 +277,12 @@ static void run_chain(const dhsm_rig *g, const chain *ch, int stop, long rest, r
             memcpy(jring[(i / DEC) % RING], q, sizeof jring[0]);
             check_rates(&pring[0][0], 3, 1.0 / QPOS, i, n, NP, V, A, wv, wa, what);
             check_rates(&jring[0][0], NJ, 1.0 / Q16, i, n, NJN / Q16, VJ / Q16, AJ / Q16, wvj, waj, what);
-            if (ch->jk != NULL && i - unit >= 3 * wj + DEC) {
-                check_jerk(i, n, NP, J, wj, what);
-                rs->jchecked++;
-            }
         }
         n++;
         DHT_EQ_INT(dh_queue_advance_q(qu, tr.state, &rep), DH_OK);
         DHT_EQ_INT(rep.seq, line);
         DHT_EQ_INT(rep.held, tr.state != DH_TRACK_OK || (qu->phase == DH_QUEUE_STOPPED && !rep.done && still >= 0));
         if (rep.feed < rs->minfeed) rs->minfeed = rep.feed;
-        /* the last period whose feed override was not 1 (or stopped) */
-        if (rep.feed != DH_Q30_ONE || qu->phase != DH_QUEUE_RUN) unit = i + 1;
         if (rep.done) {
             DHT_EQ_INT(qu->seq, line + 1u);
             done++;
@@ -375,22 +325,7 @@ static void run_chain(const dhsm_rig *g, const chain *ch, int stop, long rest, r
 
 static const dhs_robot *const robots[] = { &dhs_ur5_mm, &dhs_puma560_mm };
 
-/* chain ch appended to the_qu: blended lines and arcs, or jerk-limited
- * blended lines when it has jerk limits */
-static void chain_add(const chain *ch)
-{
-    uint32_t k;
-    for (k = 0; k < ch->n; k++) {
-        if (ch->jk != NULL)
-            DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(&the_qu, &ch->p[k], ch->lim, ch->jk, ch->R[k]), DH_OK);
-        else
-            DHT_EQ_INT(dh_queue_add_path_blend_q(&the_qu, &ch->p[k], ch->lim, ch->R[k]), DH_OK);
-    }
-}
-
-/* random chains on each robot (the file's comment), jerk-limited when
- * jerk */
-static void run_queues(int jerk)
+static void blend_queues_q(void)
 {
     long total = 0, total_arcs = 0;
     size_t ri;
@@ -399,53 +334,42 @@ static void run_queues(int jerk)
         chain ch;
         dh_queue_item_q items[NL];
         dhsm_rig *const g = &rig;
-        long it, n = DHT_ITER(6), periods = 0, blended = 0, arcs = 0, inside = 0, stops = 0, jchecked = 0;
+        long it, n = DHT_ITER(6), periods = 0, blended = 0, arcs = 0, inside = 0, stops = 0;
         dhsm_rig_make(g, robots[ri], 180.0, 720.0);
         for (it = 0; it < n; it++) {
             double qa[DH_MAX_JOINTS];
             int32_t ia[NJ];
             run_stats rs;
+            uint32_t k;
             const int stop = (int)(dht_rand_u32() % 2u);
             const long rest = (dht_rand_u32() % 3u == 0u) ? -1 : (long)(dht_rand_u32() % 200u);
             dhsm_region_q(g, qa);
             dhs_q_from_double(&g->r, qa, ia);
-            chain_make(g, ia, 2u + dht_rand_u32() % (NL - 1u), it == 0, jerk, &ch);
+            chain_make(g, ia, 2u + dht_rand_u32() % (NL - 1u), it == 0, &ch);
             DHT_EQ_INT(dh_track_init_q(&the_trk, &g->r, &g->m, ia, DT_US), DH_OK);
             DHT_EQ_INT(dh_queue_init_q(&the_qu, items, NL), DH_OK);
-            chain_add(&ch);
+            for (k = 0; k < ch.n; k++) DHT_EQ_INT(dh_queue_add_path_blend_q(&the_qu, &ch.p[k], ch.lim, ch.R[k]), DH_OK);
             run_chain(g, &ch, stop, rest, &rs, g->d->name);
             periods += rs.periods;
             blended += rs.blended;
             arcs += rs.arcs;
             inside += rs.inside;
             stops += rs.stopped;
-            jchecked += rs.jchecked;
         }
         total += blended;
         total_arcs += arcs;
-        dht_reach_min(jerk ? "queue_q_blend.jerk_robot_blended" : "queue_q_blend.robot_blended", (double)blended);
-        if (!jerk) dht_reach_min("queue_q_blend.robot_arc_corners", (double)arcs);
-        dht_printf("%s%s: %ld chains, %ld periods, %ld corners passed blended (%ld with an arc; %ld periods inside), "
-                   "%ld stops inside, %ld jerk windows\n",
-                   g->d->name, jerk ? " jerk" : "", n, periods, blended, arcs, inside, stops, jchecked);
-        DHT_TRUE(!jerk || jchecked > 0);
+        dht_reach_min("queue_q_blend.robot_blended", (double)blended);
+        dht_reach_min("queue_q_blend.robot_arc_corners", (double)arcs);
+        dht_printf("%s: %ld chains, %ld periods, %ld corners passed blended (%ld with an arc; %ld periods inside), "
+                   "%ld stops inside\n",
+                   g->d->name, n, periods, blended, arcs, inside, stops);
     }
-    DHT_TRUE(total > 0 && (jerk || total_arcs > 0));
-}
-
-static void blend_queues_q(void)
-{
-    run_queues(0);
-}
-
-static void blend_jerk_queues_q(void)
-{
-    run_queues(1);
+    DHT_TRUE(total > 0 && total_arcs > 0);
 }
 
 /* The Puma's line its wrist cannot follow, blended into a line back
- * towards its start (the file's comment), jerk-limited when jerk */
-static void lagging_run(int jerk)
+ * towards its start (the file's comment) */
+static void lagging_blend_q(void)
 {
     static const double QP[6] = { 10.0, -30.0, 45.0, 20.0, 35.0, -60.0 };
     dhsm_rig rig;
@@ -469,9 +393,6 @@ static void lagging_run(int jerk)
     C.p[2] -= (int32_t)(150.0 * LS * QPOS);
     ch.n = 2u;
     ch.lim = &PLIM;
-    the_jk.jmax = (int32_t)(20000.0 * LS * QPOS);
-    the_jk.wjmax = (int32_t)(10000.0 * Q16);
-    ch.jk = jerk ? &the_jk : NULL;
     DHT_EQ_INT(dh_path_line_q(&ch.p[0], &A, &B), DH_OK);
     DHT_EQ_INT(dh_path_line_q(&ch.p[1], &B, &C), DH_OK);
     dhsm_ref_make(&ch.ref[0], &ch.p[0], NULL);
@@ -480,24 +401,14 @@ static void lagging_run(int jerk)
     ch.R[1] = 0;
     DHT_EQ_INT(dh_track_init_q(&the_trk, &g->r, &g->m, ia, DT_US), DH_OK);
     DHT_EQ_INT(dh_queue_init_q(&the_qu, items, 2u), DH_OK);
-    chain_add(&ch);
+    for (k = 0; k < 2; k++) DHT_EQ_INT(dh_queue_add_path_blend_q(&the_qu, &ch.p[k], ch.lim, ch.R[k]), DH_OK);
     DHT_TRUE(items[0].seg.dur[4] > 0u);
-    run_chain(g, &ch, 0, 0, &rs, jerk ? "Puma lagging jerk blend" : "Puma lagging blend");
+    run_chain(g, &ch, 0, 0, &rs, "Puma lagging blend");
     DHT_TRUE_MSG(rs.notok > 0, "the Puma blend: no lagging period");
     DHT_TRUE(rs.minfeed < DH_Q30_ONE && rs.blended == 1);
-    if (!jerk) dht_reach_max("queue_q_blend.puma_notok", (double)rs.notok);
-    dht_printf("Puma lagging %sblend: %ld periods, %ld not OK, least feed %.3f\n", jerk ? "jerk " : "", rs.periods,
-               rs.notok, rs.minfeed / DHSM_Q30);
-}
-
-static void lagging_blend_q(void)
-{
-    lagging_run(0);
-}
-
-static void lagging_blend_jerk_q(void)
-{
-    lagging_run(1);
+    dht_reach_max("queue_q_blend.puma_notok", (double)rs.notok);
+    dht_printf("Puma lagging blend: %ld periods, %ld not OK, least feed %.3f\n", rs.periods, rs.notok,
+               rs.minfeed / DHSM_Q30);
 }
 
 static void blend_q_errors(void)
@@ -591,121 +502,9 @@ static void blend_q_errors(void)
     DHT_EQ_INT(the_items[0].seg.dur[4], 0u);
 }
 
-/* a queue of the lines p0, p1 in items[0..1] (jerk-blended, radius R, p1 within lim,
- * jk): 1 when their corner blends */
-static int pair_blends(const dh_path_q *p0, const dh_path_q *p1, const dh_cart_limits_q *lim,
-                       const dh_cart_jerk_q *jk, dh_qpos R, dh_queue_item_q *items)
-{
-    DHT_EQ_INT(dh_queue_init_q(&the_qu, items, 2u), DH_OK);
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(&the_qu, p0, &LIM, &the_jk, R), DH_OK);
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(&the_qu, p1, lim, jk, R), DH_OK);
-    DHT_TRUE(items[0].seg.dur[4] == items[1].seg.dur[0]);
-    return items[0].seg.dur[4] > 0u;
-}
-
-static void blend_jerk_q_errors(void)
-{
-    dh_queue_q *const qu = &the_qu;
-    dh_queue_item_q the_items[4];
-    dh_frame_q A, B, C, Z;
-    dh_path_q p[3], arc, bad, far;
-    dh_cart_limits_q lim = LIM;
-    dh_cart_jerk_q jk;
-    const dh_qpos R = (dh_qpos)(10.0 * LS * QPOS);
-    dh_qpos via[3];
-    the_jk.jmax = (int32_t)(10000.0 * LS * QPOS);
-    the_jk.wjmax = (int32_t)(5000.0 * Q16);
-    jk = the_jk;
-    dh_frame_identity_q(&A);
-    A.p[0] = (int32_t)(300.0 * LS * QPOS);
-    A.p[2] = (int32_t)(400.0 * LS * QPOS);
-    B = A;
-    B.p[0] += (int32_t)(100.0 * LS * QPOS);
-    C = B;
-    C.p[1] += (int32_t)(100.0 * LS * QPOS);
-    DHT_EQ_INT(dh_path_line_q(&p[0], &A, &B), DH_OK);
-    DHT_EQ_INT(dh_path_line_q(&p[1], &B, &C), DH_OK);
-    DHT_EQ_INT(dh_path_line_q(&p[2], &C, &A), DH_OK);
-    memcpy(via, B.p, sizeof via);
-    via[2] += (int32_t)(30.0 * LS * QPOS);
-    DHT_EQ_INT(dh_path_arc_q(&arc, &A, via, &C), DH_OK);
-    /* bad arguments, checked after a full queue; nothing appended */
-    DHT_EQ_INT(dh_queue_init_q(qu, the_items, 1u), DH_OK);
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[0], &LIM, &jk, -1), DH_ERR_ARG);
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &arc, &LIM, &jk, R), DH_ERR_ARG);
-    lim.wmax = 0;
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[0], &lim, &jk, R), DH_ERR_ARG);
-    lim = LIM;
-    jk.jmax = 0;
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[0], &LIM, &jk, R), DH_ERR_ARG);
-    jk = the_jk;
-    jk.wjmax = -1;
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[0], &LIM, &jk, R), DH_ERR_ARG);
-    jk = the_jk;
-    memset(&bad, 0, sizeof bad);
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &bad, &LIM, &jk, R), DH_ERR_ARG);
-    bad = p[0];
-    bad.length = -1;
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &bad, &LIM, &jk, R), DH_ERR_ARG);
-    DHT_EQ_INT(qu->count, 0u);
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[0], &LIM, &jk, R), DH_OK);
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[1], &LIM, &jk, R), DH_ERR_LIMIT);
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[1], &LIM, &jk, -1), DH_ERR_LIMIT);
-    /* a duration beyond the profile's range (a line of 100 mm at 1 LSB/s) */
-    DHT_EQ_INT(dh_queue_init_q(qu, the_items, 4u), DH_OK);
-    lim.vmax = 1;
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[0], &lim, &jk, R), DH_ERR_OVERFLOW);
-    DHT_EQ_INT(qu->count, 0u);
-    lim = LIM;
-    /* blended: two lines with a radius, the bound within it, both at the
-     * shares (a profile's acceleration at most half of the line's: longer
-     * than alone, less than the overlap longer) */
-    DHT_EQ_INT(dh_queue_init_q(qu, the_items, 4u), DH_OK);
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[0], &LIM, &jk, 0), DH_OK);
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[1], &LIM, &jk, 0), DH_OK);
-    DHT_TRUE(pair_blends(&p[0], &p[1], &LIM, &jk, R, &the_items[2]));
-    DHT_TRUE(the_items[2].seg.dev > 0 && the_items[2].seg.dev <= R);
-    DHT_TRUE(the_items[2].blend == 2u && the_items[2].seg.T == the_items[2].prof.T);
-    DHT_TRUE(the_items[2].prof.T > the_items[0].prof.T && the_items[3].prof.T > the_items[1].prof.T);
-    DHT_TRUE((double)the_items[2].prof.a * the_items[2].path.length <= 0.5 * LIM.amax * ldexp(1.0, (int)the_items[2].e));
-    /* at rest: other limits, other jerk limits, radius 0, not at the end */
-    lim.vmax = LIM.vmax / 2;
-    DHT_TRUE(!pair_blends(&p[0], &p[1], &lim, &jk, R, the_items));
-    jk.jmax /= 2;
-    DHT_TRUE(!pair_blends(&p[0], &p[1], &LIM, &jk, R, the_items));
-    jk = the_jk;
-    DHT_TRUE(!pair_blends(&p[0], &p[1], &LIM, &jk, 0, the_items));
-    DHT_TRUE(!pair_blends(&p[0], &p[2], &LIM, &jk, R, the_items));
-    /* a radius > 0 puts the line at the shares; radius 0 after a corner at
-     * rest leaves it at its whole limits */
-    DHT_EQ_INT(dh_queue_init_q(qu, the_items, 4u), DH_OK);
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[0], &LIM, &jk, 0), DH_OK);
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[1], &LIM, &jk, 0), DH_OK);
-    DHT_TRUE(!pair_blends(&p[0], &p[2], &LIM, &jk, 0, &the_items[2]));
-    DHT_TRUE(the_items[0].prof.T == the_items[2].prof.T);
-    DHT_TRUE(!pair_blends(&p[0], &p[2], &LIM, &jk, R, &the_items[2]));
-    DHT_TRUE(the_items[0].prof.T < the_items[2].prof.T);
-    /* after a trapezoid blended line or a jerk-limited move: at rest */
-    DHT_EQ_INT(dh_queue_init_q(qu, the_items, 4u), DH_OK);
-    DHT_EQ_INT(dh_queue_add_path_blend_q(qu, &p[0], &LIM, R), DH_OK);
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_q(qu, &p[1], &LIM, &jk, R), DH_OK);
-    DHT_EQ_INT(dh_queue_add_path_jerk_q(qu, &p[2], &LIM, &jk), DH_OK);
-    DHT_TRUE(the_items[0].seg.dur[4] == 0u && the_items[1].seg.dur[0] == 0u && the_items[1].seg.dur[4] == 0u);
-    /* a corner within radius + 64 LSB of the int32 range: at rest */
-    Z = B;
-    Z.p[0] = INT32_MAX - R;
-    far = p[0];
-    DHT_EQ_INT(dh_path_line_q(&far, &A, &Z), DH_OK);
-    DHT_EQ_INT(dh_path_line_q(&bad, &Z, &C), DH_OK);
-    DHT_TRUE(!pair_blends(&far, &bad, &LIM, &jk, R, the_items));
-}
-
 static const dht_case cases[] = {
     DHT_CASE(blend_queues_q),
     DHT_CASE(lagging_blend_q),
     DHT_CASE(blend_q_errors),
-    DHT_CASE(blend_jerk_queues_q),
-    DHT_CASE(lagging_blend_jerk_q),
-    DHT_CASE(blend_jerk_q_errors),
 };
 DHT_MAIN(cases)
