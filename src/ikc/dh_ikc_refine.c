@@ -616,14 +616,9 @@ static DH_NOINLINE int ref_be(dh_ikc_ref_work_f32 *w, uint32_t f)
     vy = k[RK_TAU] * (p[2] - m->d[0]) - m->a[3] * o[11] + k[RK_E5] * o[10];
     v2 = vx * vx + vy * vy;
     r = (k[RK_SUM2] - v2) * (v2 - k[RK_DIF2]);
-    if (r > 0.0f) {
-        r = dh_sqrt_f32(r);
-    } else if (r <= 0.0f) {
-        /* beyond the elbow's reach: the elbow stretched or folded towards it */
-        r = 0.0f;
-    } else {
-        return 0;
-    }
+    if (dh_isfinite_f32(r) == 0) return 0;
+    /* beyond the elbow's reach (r <= 0): the elbow stretched or folded towards it */
+    r = (r > 0.0f) ? dh_sqrt_f32(r) : 0.0f;
     if ((f & DH_IKC_ELBOW_ALT) != 0u) r = -r;
     kd = (k[RK_D] < 0.0f) ? k[RK_A23] - v2 : v2 - k[RK_A23];
     ad = m->a[1] * fabsf(k[RK_D]) + m->a[2] * kd;
@@ -764,7 +759,7 @@ uint32_t dh_ikc_refine_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 
         if ((k & 8u) != 0u) {
             /* a restart round */
             if ((k & 7u) == 0u) {
-                it = ref_plan(sol, ((k & 16u) == 0u) ? 0u : DH_IKC_SHOULDER_ALT, (int)(k > 4u * DH_IKC_MAX_SOL));
+                it = ref_plan(sol, ((k & 16u) == 0u) ? 0u : DH_IKC_SHOULDER_ALT, (k > 4u * DH_IKC_MAX_SOL) ? 1 : 0);
                 if (it == DH_IKC_MAX_SOL) {
                     k += DH_IKC_MAX_SOL;
                     continue;

@@ -761,8 +761,9 @@ static DH_NOINLINE uint32_t refq_reach(refq_work *w, unsigned e)
     int64_t k;
     if (e != 0u) return 1u;
     k = dh_q_mla64(dh_q_mul64(w->u[9], w->u[9]), w->u[10], w->u[10]) - dh_q_mla64(dh_q_mul64(l1, l1), l2, l2);
+    if ((l1 < 0) != (l2 < 0)) k = -k;
     w->t[0] = 0;
-    w->t[1] = ((k < 0) != ((l1 < 0) != (l2 < 0))) ? -DH_Q_ONE30 : DH_Q_ONE30;
+    w->t[1] = (k < 0) ? -DH_Q_ONE30 : DH_Q_ONE30;
     return 1u;
 }
 
