@@ -488,6 +488,10 @@ dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int3
         raw = dh_ikc_refine_q_(m, target, sol, raw);
         raw = dh_ikc_refine_q_(m, target, sol, dh_ikc_restart_q_(m, target, sol, raw, 0u));
         raw = dh_ikc_refine_q_(m, target, sol, dh_ikc_restart_q_(m, target, sol, raw, DH_IKC_SHOULDER_ALT));
+        /* a shoulder with starts and none refined: from one of its own */
+        raw = dh_ikc_refine_q_(m, target, sol, dh_ikc_restart_q_(m, target, sol, raw, DH_IKC_RESTART_AGAIN_));
+        raw = dh_ikc_refine_q_(m, target, sol,
+                               dh_ikc_restart_q_(m, target, sol, raw, DH_IKC_RESTART_AGAIN_ | DH_IKC_SHOULDER_ALT));
     }
     if (raw == 0u) return DH_ERR_UNREACHABLE;
     raw = ikcq_finish(m, q_ref, opts, sol, raw);

@@ -562,8 +562,18 @@ DH_INLINE int32_t refq_phi(const dh_ikc_model_q *m, const int32_t *q, int with4)
  * branch of the shoulder, else an unconverged one), st the first marked;
  * REFQ_NONE when there is no restart (every branch refined, a singular
  * one, no start, no slot). */
-static DH_NOINLINE uint32_t refq_plan(dh_ikc_sol_q *sol, uint32_t n, uint32_t sh)
+/* A slot of flags f open to a start of shoulder sh: free, or unconverged
+ * and of sh or of the other shoulder when that has a refined branch (bit
+ * 4 of done) */
+DH_INLINE int refq_open(uint32_t f, uint32_t sh, uint32_t done)
 {
+    return (f & REFQ_FREE) != 0u ||
+           ((f & REFQ_UNCONV) != 0u && ((f & DH_IKC_SHOULDER_ALT) == sh || (done & 0x10u) != 0u));
+}
+
+static DH_NOINLINE uint32_t refq_plan(dh_ikc_sol_q *sol, uint32_t n, uint32_t shx)
+{
+    const uint32_t sh = shx & DH_IKC_SHOULDER_ALT;
     uint32_t s, c, src = DH_IKC_MAX_SOL, done = 0u, st = DH_IKC_MAX_SOL;
     for (s = 0; s < DH_IKC_MAX_SOL; s++) {
         const uint32_t f = sol[s].flags;
@@ -572,13 +582,20 @@ static DH_NOINLINE uint32_t refq_plan(dh_ikc_sol_q *sol, uint32_t n, uint32_t sh
         if (s < n) done |= 1u << ((f & (DH_IKC_ELBOW_ALT | DH_IKC_WRIST_ALT)) >> 1);
         if (s < n || src == DH_IKC_MAX_SOL) src = s;
     }
+    /* again: only a shoulder with branches, none refined (each a start
+     * beyond the elbow's reach or a failed refinement) */
+    if ((shx & DH_IKC_RESTART_AGAIN_) != 0u && (done != 0u || src == DH_IKC_MAX_SOL)) return REFQ_NONE;
+    /* a shoulder the idealised chain lacks: from a branch of the other */
+    for (s = 0; src == DH_IKC_MAX_SOL && s < DH_IKC_MAX_SOL; s++)
+        if (s < n || (sol[s].flags & REFQ_UNCONV) != 0u) src = s;
     if (src == DH_IKC_MAX_SOL) return REFQ_NONE;
+    /* the other shoulder's unconverged slots are free when it has a refined branch */
+    for (s = 0; s < n; s++)
+        if ((sol[s].flags & DH_IKC_SHOULDER_ALT) != sh) done |= 0x10u;
     s = n;
     for (c = 0; c < 4u; c++) {
         if (((done >> c) & 1u) != 0u) continue;
-        while (s < DH_IKC_MAX_SOL && (s == src || ((sol[s].flags & REFQ_FREE) == 0u &&
-                                                    (sol[s].flags & (REFQ_UNCONV | DH_IKC_SHOULDER_ALT)) != (REFQ_UNCONV | sh))))
-            s++;
+        while (s < DH_IKC_MAX_SOL && (s == src || !refq_open(sol[s].flags, sh, done))) s++;
         if (s == DH_IKC_MAX_SOL) break;
         sol[s].flags = sh | (c << 1) | REFQ_PEND;
         if (st == DH_IKC_MAX_SOL) st = s;
@@ -732,6 +749,22 @@ static DH_NOINLINE int refq_e1(refq_work *w)
     w->u[9] = (int32_t)x;
     w->u[10] = (int32_t)y;
     return 1;
+}
+
+/* e: dh_ikc_elbow_q_'s verdict on the planar point (u[9], u[10]), its
+ * pair in t. 0 (beyond the elbow's reach): the elbow stretched or folded
+ * towards the point, the pair (0, K sgn D) into t (K = |v|^2 - a2^2 -
+ * a3^2, D = 2 a2 a3). Returns 1 (a start either way). */
+static DH_NOINLINE uint32_t refq_reach(refq_work *w, unsigned e)
+{
+    const int32_t l1 = w->m->a[1], l2 = w->m->a[2];
+    int64_t k;
+    if (e != 0u) return 1u;
+    k = dh_q_mla64(dh_q_mul64(w->u[9], w->u[9]), w->u[10], w->u[10]) - dh_q_mla64(dh_q_mul64(l1, l1), l2, l2);
+    if ((l1 < 0) != (l2 < 0)) k = -k;
+    w->t[0] = 0;
+    w->t[1] = (k < 0) ? -DH_Q_ONE30 : DH_Q_ONE30;
+    return 1u;
 }
 
 static DH_NOINLINE void refq_e2(dh_ikc_sol_q *b)
@@ -889,7 +922,7 @@ uint32_t dh_ikc_restart_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_
             refq_w4(&w, &sol[i]);
             it = (uint32_t)refq_e1(&w);
         }
-        if (it != 0u) it = dh_ikc_elbow_q_(m->a[1], m->a[2], w.u[9], w.u[10], w.t);
+        if (it != 0u) it = refq_reach(&w, dh_ikc_elbow_q_(m->a[1], m->a[2], w.u[9], w.u[10], w.t));
         if (it != 0u) {
             sol[i].q[2] = 0;
             (void)dh_atan2_q(w.t[0], w.t[1], &sol[i].q[2]);

@@ -226,8 +226,9 @@ dh_status dh_ikc_finish_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc
  * DH_IKC_REFINED, the refined ones kept distinct and packed to the front;
  * returns their count. dh_ikc_restart_q_: shoulder sh (0 or
  * DH_IKC_SHOULDER_ALT) of the n refined solutions restarted from the
- * virtual target of one of its branches, its missing branches started in
- * slots n, n + 1, ...; returns the slots in use, for dh_ikc_refine_q_.
+ * virtual target of one of its branches (of the other shoulder's when it
+ * has none), its missing branches started in slots n, n + 1, ...; returns
+ * the slots in use, for dh_ikc_refine_q_.
  * dh_ikc_q calls the three in turn after the solver has returned (each
  * from its own frame, for the stack bound). dh_ikc_args_q_ and
  * dh_ikc_args_rigid_q_ refuse a calibrated model (DH_ERR_UNAVAILABLE), so
@@ -235,6 +236,9 @@ dh_status dh_ikc_finish_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc
 int dh_ikc_calibrate_q_(dh_ikc_model_q *m);
 uint32_t dh_ikc_refine_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_sol_q *sol, uint32_t raw);
 uint32_t dh_ikc_restart_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_sol_q *sol, uint32_t n, uint32_t sh);
+/* dh_ikc_restart_q_'s sh with this bit: a second restart, only of a
+ * shoulder that has branches and none refined */
+#define DH_IKC_RESTART_AGAIN_ 0x100u
 
 /* Shared fixed helpers (defined in dh_ikc_common_q.c). */
 #define DH_IKC_Q16_180 ((int32_t)11796480)

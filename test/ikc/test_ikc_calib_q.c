@@ -50,7 +50,7 @@ static void build_pair(const dhs_robot *cal, const dhs_robot *ideal, dh_ikc_kind
 
 /* The target of q on the calibrated robot: every solution refined and
  * within the bounds, q among them, and the count the idealised robot's
- * when its solutions are away from its singularities. */
+ * when the solutions of both are away from their singularities. */
 static void check_target(const dhs_robot *cal, const dhs_robot *ideal, const dh_robot *rc,
                          const dh_ikc_model_q *mc, const dh_ikc_model_q *mi, const double *q, dhk_stats *st,
                          long *compared)
@@ -70,12 +70,14 @@ static void check_target(const dhs_robot *cal, const dhs_robot *ideal, const dh_
     DHT_TRUE_MSG(rs == DH_OK, "%s: status %d for q %s", cal->name, (int)rs, dhs_q_str(q, 6u, 0));
     (void)dhk_check_sols_q(rc, &Td, sol, n, NULL, st);
     for (s = 0; s < n; s++) {
-        double dmax = 0.0;
+        double dmax = 0.0, qs[NJ];
         DHT_TRUE((sol[s].flags & DH_IKC_REFINED) != 0u);
         for (i = 0; i < 6u; i++) {
             const double dd = dhk_jdiff_q(rc, i, sol[s].q[i], qq[i]);
             if (dd > dmax) dmax = dd;
+            qs[i] = ldexp((double)sol[s].q[i], -16);
         }
+        if (dhk_cal_sing(cal, qs, 1.0) < SING_MIN) ideal_far = 0;
         if (dmax < best) best = dmax;
     }
     DHT_TRUE_MSG(best <= GEN_DEG, "%s: q %s not among the %u solutions (nearest %.3g deg)", cal->name,
