@@ -70,9 +70,13 @@
 /* static: the micro:bit's RAM holds them beside the rig on the stack */
 static dh_queue_f32 qu;
 static dh_queue_item_f32 items[CAP];
-static float cp[NMAX + 1][3];             /* the corners' positions (line k: cp[k] to cp[k + 1]) */
-static float radius[NMAX];
-static unsigned char isarc[NMAX];  /* segment k is an arc (drawn when appended) */
+/* a queue's geometry, on run_robot's stack (the micro:bit's RAM) */
+typedef struct {
+    float cp[NMAX + 1][3];     /* the corners' positions (line k: cp[k] to cp[k + 1]) */
+    float radius[NMAX];
+    unsigned char isarc[NMAX]; /* segment k is an arc (drawn when appended) */
+} qbj_geom;
+static qbj_geom *geo;
 static long arc_ov;                /* periods in overlaps at a corner with an arc */
 static float sp[NS][7], lp[NL][7]; /* position and unit quaternion of the target m periods (m WD periods) ago */
 static long last_bad;              /* the last period with a lag or a change of r */
@@ -103,18 +107,18 @@ static int check_path(const dh_mat4_f32 *T, uint32_t n, double S, long call)
     uint32_t k;
     double x[3], d;
     const dh_path_f32 *p;
-    if (dhm_check_corner(&qu, T, n, (const float (*)[3])cp, radius, S, call, &k, x)) {
-        if (isarc[k] || (k + 1u < n && isarc[k + 1u])) arc_ov++;
+    if (dhm_check_corner(&qu, T, n, (const float (*)[3])geo->cp, geo->radius, S, call, &k, x)) {
+        if (geo->isarc[k] || (k + 1u < n && geo->isarc[k + 1u])) arc_ov++;
         return 1;
     }
-    if (isarc[k]) {
-        p = dhm_seg_path(items, CAP, (const float (*)[3])cp, k);
+    if (geo->isarc[k]) {
+        p = dhm_seg_path(items, CAP, (const float (*)[3])geo->cp, k);
         DHT_TRUE(p != NULL);
         d = (p != NULL) ? dhm_arc_dist(p, x) : INFINITY;
     } else {
-        d = dhm_seg_dist(cp[k], cp[k + 1u], x);
+        d = dhm_seg_dist(geo->cp[k], geo->cp[k + 1u], x);
     }
-    DHT_TRUE_MSG(d <= 1e-6, "call %ld: %.9g off %s %u", call, d, isarc[k] ? "arc" : "line", (unsigned)k);
+    DHT_TRUE_MSG(d <= 1e-6, "call %ld: %.9g off %s %u", call, d, geo->isarc[k] ? "arc" : "line", (unsigned)k);
     return 0;
 }
 
@@ -137,12 +141,12 @@ static void append(const dhm_rig *g, const float (*qc)[DH_MAX_JOINTS], uint32_t 
     float via[3];
     corner(g, qc, k, &A);
     corner(g, qc, k + 1u, &B);
-    isarc[k] = (unsigned char)dhm_draw_via(cp[k], cp[k + 1u], via);
-    if (isarc[k])
+    geo->isarc[k] = (unsigned char)dhm_draw_via(geo->cp[k], geo->cp[k + 1u], via);
+    if (geo->isarc[k])
         DHT_EQ_INT(dh_path_arc_f32(&line, &A, via, &B), DH_OK);
     else
         DHT_EQ_INT(dh_path_line_f32(&line, &A, &B), DH_OK);
-    DHT_EQ_INT(dh_queue_add_path_blend_jerk_f32(&qu, &line, lim, jk, radius[k]), DH_OK);
+    DHT_EQ_INT(dh_queue_add_path_blend_jerk_f32(&qu, &line, lim, jk, geo->radius[k]), DH_OK);
     DHT_EQ_INT(items[(qu.head + qu.count - 1u) % CAP].jerk, 2);
 }
 
@@ -159,10 +163,10 @@ static void draw_lines(const dhm_rig *g, const double *qa, uint32_t n, double st
         if (k > 0) dhm_draw_q(&g->r, qc[k - 1u], step, qc[k]);
         corner(g, (const float (*)[DH_MAX_JOINTS])qc, k, &T);
         for (i = 0; i < 3u; i++) {
-            cp[k][i] = T.m[3][i];
-            *S = fmax(*S, fabs((double)cp[k][i]));
+            geo->cp[k][i] = T.m[3][i];
+            *S = fmax(*S, fabs((double)geo->cp[k][i]));
         }
-        if (k < n) radius[k] = (dht_rand_u32() % 5u == 0u) ? 0.0f : (float)dht_rand_uniform(1e-3, 0.05);
+        if (k < n) geo->radius[k] = (dht_rand_u32() % 5u == 0u) ? 0.0f : (float)dht_rand_uniform(1e-3, 0.05);
     }
 }
 
@@ -263,6 +267,8 @@ static void run_robot(const dhm_robot_case *c)
 {
     long it, nq = DHT_ITER(8), ov[2] = { 0, 0 };
     dhm_rig g;
+    qbj_geom gm;
+    geo = &gm;
     dhm_rig_make(&g, c);
     jerk_worst[0] = 0.0;
     jerk_worst[1] = 0.0;
