@@ -714,11 +714,12 @@ static void jseq_check_all(const chain *c, const float *radius, const dh_cart_li
 /* random chains of lines (arcs 0) or of lines and arcs (arcs 1: each
  * segment an arc with probability 1/2), planned without a jerk limit
  * (jerk 0) or with one (jerk 1: dh_blend_seq_plan_jerk_f32, line-arc,
- * arc-line and arc-arc corners; some corner with an arc blended) */
+ * arc-line and arc-arc corners; some corner with an arc blended: with
+ * arcs and jerk, chains are drawn beyond n, up to n + 64, until one is) */
 static void sequences(int arcs, int jerk)
 {
     int it, k, n = DHT_ITER(20), arcc = 0;
-    for (it = 0; it < n; it++) {
+    for (it = 0; it < n || (arcs && jerk && arcc == 0 && it < n + 64); it++) {
         chain c;
         dh_blend_seg_f32 seg[NSEQ];
         dh_blend_seq_f32 sq;
