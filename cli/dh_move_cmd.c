@@ -404,12 +404,14 @@ static int run_path(move_plan *p, unsigned i, const move_seg *s, float *q)
     return 0;
 }
 
-/* segment i (a line or an arc) appended to the queue: with --jerk as a
- * jerk-limited blended segment, else as a blended move */
-static dh_status blend_add(move_plan *p, unsigned i)
+/* segment i appended to the queue: with --jerk a line as a jerk-limited
+ * blended line, an arc as a jerk-limited move (its corners at rest);
+ * else as a blended move */
+static dh_status blend_add(move_plan *p, unsigned i, const move_seg *s)
 {
     if (!p->jerk) return dh_queue_add_path_blend_f32(&p->qu, &p->path[i], &p->lim, p->blend);
-    return dh_queue_add_path_blend_jerk_f32(&p->qu, &p->path[i], &p->lim, &p->cj, p->blend);
+    if (s->kind == SEG_LINE) return dh_queue_add_path_blend_jerk_f32(&p->qu, &p->path[i], &p->lim, &p->cj, p->blend);
+    return dh_queue_add_path_jerk_f32(&p->qu, &p->path[i], &p->lim, &p->cj);
 }
 
 /* the planned duration of the queue's head move: its profile's, or its
@@ -421,8 +423,8 @@ static float blend_dur(const move_plan *p)
 }
 
 /* Cartesian segments i0..i1-1 (lines and arcs) run by one queue with
- * their corners blended within --blend (with --jerk: jerk-limited),
- * tracked from the tracker's configuration; a
+ * their corners blended within --blend (with --jerk: the corners between
+ * lines, jerk-limited), tracked from the tracker's configuration; a
  * tracker that lags slows the queue's feed override */
 static int run_blend(move_plan *p, const move_args *a, unsigned i0, unsigned i1, float *q)
 {
@@ -434,7 +436,7 @@ static int run_blend(move_plan *p, const move_args *a, unsigned i0, unsigned i1,
     int rc;
     dh_status st = dh_queue_init_f32(&p->qu, p->items, MOVE_MAX_SEG);
     for (; i < i1 && st == DH_OK; i++) {
-        st = blend_add(p, i);
+        st = blend_add(p, i, &a->seg[i]);
         if (st != DH_OK) return seg_error(i, &a->seg[i], "the blended move cannot be planned", path_why(st));
     }
     for (i = i0; i < i1;) {

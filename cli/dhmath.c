@@ -606,8 +606,7 @@ static int ik_all_q(const opts *o, const dh_robot *r, const dh_mat4_f32 *target,
         return EXIT_ERR;
     }
     if (st == DH_ERR_UNREACHABLE) {
-        fprintf(stderr, "ik --all --fixed: no solution: the target is out of reach%s\n",
-                m.calibrated ? " (or no branch of the idealised closed form converged on the calibrated chain)" : "");
+        fprintf(stderr, "ik --all --fixed: no solution: the target is out of reach\n");
         return EXIT_NOCONV;
     }
     if (st == DH_ERR_LIMIT) {
@@ -621,10 +620,8 @@ static int ik_all_q(const opts *o, const dh_robot *r, const dh_mat4_f32 *target,
             put_num((double)sol[s].q[k] / (r->joint[k].type == DH_JOINT_PRISMATIC ? pscale : 65536.0), k + 1 == r->n);
     rc = cli_finish();
     (void)dh_ikc_q(&m, &F, qref, DH_IKC_KEEP_OUT_OF_LIMITS, sol, &n_all);
-    fprintf(stderr, "ik --all --fixed: %u closed-form solution%s within the limits (%u outside)%s\n", (unsigned)n_sol,
-            n_sol == 1u ? "" : "s", (unsigned)(n_all - n_sol),
-            m.calibrated ? ", refined by Newton steps on the calibrated chain (the robot is within the calibration "
-                           "tolerance of a closed-form family)" : "");
+    fprintf(stderr, "ik --all --fixed: %u closed-form solution%s within the limits (%u outside)\n", (unsigned)n_sol,
+            n_sol == 1u ? "" : "s", (unsigned)(n_all - n_sol));
     return rc;
 }
 

@@ -35,28 +35,6 @@ double dhk_sing_parts(const dhs_robot *d, const double *q, double part[3]);
  *  once, under ".se", ".ew", ".sw". */
 void dhk_reach_sing(const char *prefix, const double part[3]);
 
-/* ---- calibrated robots (test_ikc_calib.c, test_ikc_calib_q.c) ---------- */
-
-/** d's limits widened to +-360 deg on every joint (the limits drop no branch). */
-void dhk_open_limits(dhs_robot *d);
-/** A rigid frame: Rz Rx Rz of random angles, translation within +-t, its
- *  entries rounded to float. */
-void dhk_draw_frame(dhr_mat4 *F, double t);
-/** The UR5 src (in m or mm) with every a and d off by up to dl (its unit)
- *  and every twist and theta offset by up to da (deg) into cal, with a
- *  random base and tool frame (0.5 m, 0.15 m) when frames is set; its
- *  idealised twin (twists snapped to multiples of 90 deg, a5 = 0) into ideal. */
-void dhk_draw_ur5(const dhs_robot *src, double dl, double da, int frames, dhs_robot *cal, dhs_robot *ideal);
-/** Normalised distances of q from the singularities of a UR-type robot,
- *  the smallest returned: wrist s5^2, shoulder (u / L)^2 (dhk_sing_parts),
- *  elbow the joint 5 point's distance from the elbow annulus's boundary
- *  over L, divided by elbow_scale. */
-double dhk_cal_sing(const dhs_robot *d, const double *q, double elbow_scale);
-/** The wrist flip of the idealised robot's solution q: its elbow planar
- *  point's signed distance inside the elbow's annulus over L (negative:
- *  the flip does not exist) divided by band / |s5|. */
-double dhk_flip_margin(const dhs_robot *d, const double *q, double band);
-
 /* ---- fixed point (robots in mm) ---------------------------------------- */
 
 /* The accuracy targets are for robots in mm at DH_QPOS_FRAC 16. At other

@@ -121,18 +121,6 @@ void dhm_rotvec(const float *qa, const float *qb, double v[3])
     for (i = 0; i < 3; i++) v[i] = (n > 0.0) ? ((w < 0.0) ? -1.0 : 1.0) * th * x[i] / n * RAD2DEG : 0.0;
 }
 
-const dh_path_f32 *dhm_seg_path(const dh_queue_item_f32 *items, uint32_t cap, const float (*cp)[3], uint32_t k)
-{
-    uint32_t i;
-    for (i = 0; i < cap; i++) {
-        const dh_path_f32 *p = &items[i].path;
-        if (items[i].kind == (uint32_t)DH_MOVE_PATH && memcmp(&p->A.m[3][0], cp[k], sizeof cp[k]) == 0 &&
-            memcmp(&p->B.m[3][0], cp[k + 1u], sizeof cp[k]) == 0)
-            return p;
-    }
-    return NULL;
-}
-
 int dhm_draw_via(const float a[3], const float b[3], float via[3])
 {
     double d[3], e[3], h = 0.0, c = 0.0, x;
@@ -269,21 +257,6 @@ void dhm_check_jerk(const float (*h)[7], int w, double hdt, const dh_cart_jerk_f
     if (x / h3 / (double)jk->wjmax > worst[1]) worst[1] = x / h3 / (double)jk->wjmax;
     DHT_TRUE_MSG(x <= (double)jk->wjmax * h3 * (1.0 + DHM_REL) + 8.0 * DHM_ANG_NOISE,
                  "call %ld: angular jerk %.9g over %.9g", call, x / h3, (double)jk->wjmax);
-}
-
-void dhm_puma_line(const dh_robot *r, int first, double qa[6], dh_mat4_f32 *A, dh_mat4_f32 *B)
-{
-    static const double QP[6] = { 10.0, -30.0, 45.0, 20.0, 35.0, -60.0 };
-    static const float BP[3] = { 0.5f, -0.03f, 1.0f };
-    int k;
-    for (k = 0; k < 6; k++) qa[k] = QP[k] + (first ? 0.0 : dht_rand_uniform(-2.0, 2.0));
-    dhs_target_f32(r, qa, A);
-    memset(B, 0, sizeof *B);
-    for (k = 0; k < 3; k++) {
-        B->m[k][k] = 1.0f;
-        B->m[3][k] = BP[k] + (first ? 0.0f : (float)dht_rand_uniform(-0.01, 0.01));
-    }
-    B->m[3][3] = 1.0f;
 }
 
 uint64_t dhm_hash(const void *a, size_t na, const void *b, size_t nb)

@@ -31,10 +31,6 @@ double dhm_seg_dist(const float a[3], const float b[3], const double x[3]);
  * p_A - u0, radius |u0|, in the plane of normal n, within its sweep; beyond
  * the sweep the distance from the nearer end) */
 double dhm_arc_dist(const dh_path_f32 *p, const double x[3]);
-/* the path of segment k (corner cp[k] to corner cp[k + 1]) among the cap
- * queue items (a path move whose ends' positions are those bit for bit),
- * NULL when none */
-const dh_path_f32 *dhm_seg_path(const dh_queue_item_f32 *items, uint32_t cap, const float (*cp)[3], uint32_t k);
 /* unit quaternion (w, x, y, z) of T's rotation, in double (Shepperd) */
 void dhm_quat_of(const dh_mat4_f32 *T, double q[4]);
 /* v = the rotation vector (degrees) of Rb Ra^T, from quaternions */
@@ -95,12 +91,6 @@ typedef struct {
  * dhm_check_acc); 1 when lp[0] is a new sample (lp[k] then k wd periods
  * before it, for the first nh / wd + 1 rows) */
 int dhm_fd_push(dhm_fd *f, const dh_mat4_f32 *T, const dh_cart_limits_f32 *lim, double ulp, long call);
-
-/* The Puma 560 line of docs/motion.md that asks the wrist for more than
- * its rates: qa (degrees) within 2 degrees per joint of (10, -30, 45, 20,
- * 35, -60), A its frame on r, B at (0.5, -0.03, 1.0) within 1 cm per axis
- * with the base's orientation; exactly those when first is 1 */
-void dhm_puma_line(const dh_robot *r, int first, double qa[6], dh_mat4_f32 *A, dh_mat4_f32 *B);
 
 /* FNV-1a hash of the na bytes at a, then the nb bytes at b */
 uint64_t dhm_hash(const void *a, size_t na, const void *b, size_t nb);

@@ -705,7 +705,6 @@ static union {
         dh_ikc_model_q mq;
         dh_frame_q Tq[BT_NIKC];
         dh_ikc_sol_q solq[DH_IKC_MAX_SOL];
-        dh_robot rq;   /* bt_ikc_cal_q's robot */
 #if BT_IKC_FLOAT
         dh_ikc_model_f32 mf;
         dh_mat4_f32 Tf[BT_NIKC];
@@ -919,13 +918,14 @@ static BT_NOINLINE void bt_ikc(void)
 
 /* ---- closed-form inverse kinematics of a calibrated robot --------------------- */
 
+#if BT_IKC_FLOAT
 /* The UR5 (fam 0) or the Puma 560 (fam 1) exact (cal 0), and calibrated
  * (cal 1; within the calibration tolerance of ikc.h; the kind of
  * deviations a calibrated table holds): UR5 a2 +1.5 mm, d4 -1 mm, a5 1 mm,
  * twists 2 and 4 +0.4 and +0.3 deg, joint 3's offset +0.3 deg; Puma 560 a
  * wrist offset a4 0.4 mm, a5 -0.3 mm, d5 0.5 mm and the twists off by up to
- * 0.2 deg. Lengths times unit (1: m, 1000: mm). */
-static uint32_t bt_cal_robot(dh_robot *r, uint32_t fam, int cal, float unit)
+ * 0.2 deg. */
+static uint32_t bt_cal_robot(dh_robot *r, uint32_t fam, int cal)
 {
     static const float dev[2][6][4] = {
         { { 0.0f, 0.0f, 0.0f, 0.0f }, { 0.0015f, 0.0f, 0.4f, 0.0f }, { 0.0f, 0.0f, 0.0f, 0.3f },
@@ -939,61 +939,13 @@ static uint32_t bt_cal_robot(dh_robot *r, uint32_t fam, int cal, float unit)
     st = (uint32_t)dh_robot_init(r, DH_CONV_STANDARD);
     for (j = 0; j < 6u; j++) {
         const float *dv = dev[fam][j];
-        st |= (uint32_t)dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, k * dv[3], unit * (tab[j][1] + k * dv[1]),
-                                               unit * (tab[j][0] + k * dv[0]), tab[j][2] + k * dv[2]);
+        st |= (uint32_t)dh_robot_add_joint_f32(r, DH_JOINT_REVOLUTE, k * dv[3], tab[j][1] + k * dv[1],
+                                               tab[j][0] + k * dv[0], tab[j][2] + k * dv[2]);
         st |= (uint32_t)dh_robot_set_limits_f32(r, j, tab[j][3], tab[j][4]);
     }
     return st;
 }
 
-/* dh_ikc_q on the UR5 in mm, exact and calibrated (bt_cal_robot), the
- * targets dh_fk_q of the same random configurations on each robot
- * (untimed), as bt_ikc. */
-static BT_NOINLINE void bt_ikc_cal_q(void)
-{
-    static const char *const name[2] = { "UR5", "UR5 calibrated" };
-    dh_ikc_model_q *const mq = &bt_mem.c.mq;
-    dh_frame_q *const Tq = bt_mem.c.Tq;
-    dh_ikc_sol_q *const solq = bt_mem.c.solq;
-    dh_robot *const r = &bt_mem.c.rq;
-    uint32_t k, j, nsol, total, st, cal;
-    uint64_t t0, t1, tl;
-    t0 = bt_now();
-    for (k = 0; k < BT_NIKC; k++) {
-        bt_sink = k;
-    }
-    t1 = bt_now();
-    tl = t1 - t0;
-    for (cal = 0; cal < 2u; cal++) {
-        const uint32_t saved = bt_rng;
-        st = bt_cal_robot(r, 0u, (int)cal, 1000.0f);
-        bt_rng = 0x27D4EB2Fu;
-        for (k = 0; k < BT_NIKC; k++) {
-            int32_t qq[6];
-            for (j = 0; j < 6u; j++) qq[j] = bt_to_q16(bt_uniform(bt_ur5_tab[j][3], bt_ur5_tab[j][4]));
-            st |= (uint32_t)dh_fk_q(r, qq, &Tq[k]);
-        }
-        bt_rng = saved;
-        st |= (uint32_t)dh_ikc_analyse_q(r, mq);
-        if (st != 0u || mq->calibrated != cal) {
-            printf("BT error|calibrated fixed closed-form IK set-up returned status %lu\n", (unsigned long)st);
-            bt_status |= 1u;
-            return;
-        }
-        total = 0u;
-        t0 = bt_now();
-        for (k = 0; k < BT_NIKC; k++) {
-            st |= (uint32_t)dh_ikc_q(mq, &Tq[k], NULL, 0u, solq, &nsol);
-            total += nsol;
-        }
-        t1 = bt_now();
-        printf("BT ikc|dh_ikc_q (%s, mm, all solutions)|%lu|%llu|%llu|%lu|%lu\n", name[cal], (unsigned long)BT_NIKC,
-               (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total, (unsigned long)st);
-        bt_status |= st;
-    }
-}
-
-#if BT_IKC_FLOAT
 /* 1 when the Puma 560 configuration q (deg) is at least 1e-2 from the
  * singularities as test/ikc/test_ikc_calib_wrist.c draws its
  * configurations: s5^2, (u / L)^2 (u = a2 c2 + a3 c23 - d4 s23, the wrist
@@ -1034,7 +986,7 @@ static BT_NOINLINE void bt_ikc_cal(void)
     for (cal = 0; cal < 4u; cal++) {
         const uint32_t saved = bt_rng;
         const float(*tab)[5] = (cal < 2u) ? bt_ur5_tab : bt_puma_tab;
-        st = bt_cal_robot(&r, cal >> 1, (int)(cal & 1u), 1.0f);
+        st = bt_cal_robot(&r, cal >> 1, (int)(cal & 1u));
         bt_rng = 0x27D4EB2Fu;
         for (k = 0; k < BT_NIKC; k++) {
             float q[6];
@@ -1087,6 +1039,7 @@ uint32_t bt_opw_solutions(float q_dh_deg[8][6])
 }
 #endif
 
+#if BT_IKC_FLOAT
 /* KUKA KR6 R700 sixx, standard DH, metres: the robot of opw_kinematics'
  * example makeKukaKR6_R700_sixx (include/opw_kinematics/
  * opw_parameters_examples.h: a1 0.025, a2 -0.035, b 0, c1 0.4, c2 0.315,
@@ -1099,9 +1052,7 @@ static const float bt_kr6_tab[6][4] = {
     { 0.025f, 0.4f, -90.0f, 0.0f }, { 0.315f, 0.0f, 0.0f, 0.0f },  { -0.035f, 0.0f, 90.0f, 90.0f },
     { 0.0f, 0.365f, -90.0f, 0.0f }, { 0.0f, 0.0f, 90.0f, 0.0f },   { 0.0f, 0.08f, 0.0f, 0.0f }
 };
-#if BT_IKC_FLOAT
 static const float bt_kr6_qref[6] = { 0.0f, -90.0f, 90.0f, 0.0f, 0.0f, 0.0f };
-#endif
 static const int32_t bt_kr6_qref_q[6] = { 0, -90 * 65536, 90 * 65536, 0, 0, 0 };
 
 static uint32_t bt_kr6(dh_robot *r, float scale)
@@ -1116,55 +1067,6 @@ static uint32_t bt_kr6(dh_robot *r, float scale)
     return st;
 }
 
-#if !BT_IKC_FLOAT
-/* dh_ikc_q (limits, q_ref) on the first BT_NIKC of bt_opw's KR6 targets (the
- * same draws), for the cores without an FPU, where bt_opw does not run;
- * timed as bt_opw's dh_ikc_q row. */
-static BT_NOINLINE void bt_kr6_q(void)
-{
-    dh_robot *const r = &bt_mem.c.rq;
-    dh_ikc_model_q *const mq = &bt_mem.c.mq;
-    dh_frame_q *const Tq = bt_mem.c.Tq;
-    uint32_t k, j, nsol, total = 0u, st;
-    uint64_t t0, t1, tl;
-    const uint32_t saved = bt_rng;
-    st = bt_kr6(r, 1000.0f);
-    st |= (uint32_t)dh_ikc_analyse_q(r, mq);
-    bt_rng = 0x68E31DA4u;
-    for (k = 0; k < BT_NIKC; k++) {
-        int32_t qq[6];
-        for (j = 0; j < 6u; j++) {
-            qq[j] = bt_to_q16(bt_uniform(-170.0f, 170.0f));
-        }
-        st |= (uint32_t)dh_fk_q(r, qq, &Tq[k]);
-    }
-    bt_rng = saved;
-    if (st != 0u) {
-        printf("BT error|KR6 R700 set-up returned status %lu\n", (unsigned long)st);
-        bt_status |= st;
-        return;
-    }
-    t0 = bt_now();
-    for (k = 0; k < BT_NIKC; k++) {
-        bt_sink = k;
-    }
-    t1 = bt_now();
-    tl = t1 - t0;
-    t0 = bt_now();
-    for (k = 0; k < BT_NIKC; k++) {
-        st |= (uint32_t)dh_ikc_q(mq, &Tq[k], bt_kr6_qref_q, 0u, bt_mem.c.solq, &nsol);
-        total += nsol;
-    }
-    t1 = bt_now();
-    printf("BT opw|dh_ikc_q (KR6 R700, mm, solutions within the limits, q_ref)|%lu|%llu|%llu|%lu|%lu\n",
-           (unsigned long)BT_NIKC, (unsigned long long)(t1 - t0), (unsigned long long)tl, (unsigned long)total,
-           (unsigned long)st);
-    printf("BT opwpeer|absent\n");
-    bt_status |= st;
-}
-#endif
-
-#if BT_IKC_FLOAT
 static float bt_wrap180(float x)
 {
     x = fmodf(x, 360.0f);
@@ -1809,11 +1711,8 @@ static BT_NOINLINE void bt_queue_q(const bt_move *mv, dh_robot *r, dh_qpos radiu
  * ("queue blend period f32"), stopped at the 100th period and resumed at
  * rest; after each period, untimed for it, the closed-form solve of its
  * frame with the tracker's configuration before the period as q_ref
- * ("dh_ikc_f32 queue blend", the limit's reference). With jk (not NULL)
- * the second path is the arc through FK(qa + 3 dq / 4)'s position and
- * both are appended by dh_queue_add_path_blend_jerk_f32 ("queue jerk arc
- * period f32", "dh_ikc_f32 queue jerk arc"). */
-static BT_NOINLINE void bt_queue_f32(const bt_move *mv, dh_robot *r, float radius, const dh_cart_jerk_f32 *jk)
+ * ("dh_ikc_f32 queue blend", the limit's reference) */
+static BT_NOINLINE void bt_queue_f32(const bt_move *mv, dh_robot *r, float radius)
 {
     dh_track_f32 *const t = &bt_mem.t.tf;
     dh_queue_f32 *const qu = &bt_mem.t.qu;
@@ -1826,7 +1725,7 @@ static BT_NOINLINE void bt_queue_f32(const bt_move *mv, dh_robot *r, float radiu
     uint32_t states[3] = { 0u, 0u, 0u }, none[3] = { 0u, 0u, 0u };
     uint32_t st, n = 0u, ns, j;
     uint64_t t0, t1;
-    float q[6], qref[6], via[3];
+    float q[6], qref[6];
     st = bt_move_robot(mv, r, 1.0f);
     st |= (uint32_t)dh_ikc_analyse_f32(r, &bt_mem.t.mf);
     st |= (uint32_t)dh_track_init_f32(t, r, &bt_mem.t.mf, mv->qa, 1e-3f);
@@ -1840,29 +1739,13 @@ static BT_NOINLINE void bt_queue_f32(const bt_move *mv, dh_robot *r, float radiu
     }
     st |= (uint32_t)dh_fk_f32(r, q, &B);
     st |= (uint32_t)dh_path_line_f32(&qu->mv.path, &A, &B);
-    if (jk == NULL) {
-        st |= (uint32_t)dh_queue_add_path_blend_f32(qu, &qu->mv.path, &lim, radius);
-    } else {
-        st |= (uint32_t)dh_queue_add_path_blend_jerk_f32(qu, &qu->mv.path, &lim, jk, radius);
-    }
-    for (j = 0; j < 6u; j++) {
-        q[j] = mv->qa[j] + 0.75f * mv->dq[j];
-    }
-    st |= (uint32_t)dh_fk_f32(r, q, &A);
-    for (j = 0; j < 3u; j++) {
-        via[j] = DH_M4(&A, j, 3);
-    }
+    st |= (uint32_t)dh_queue_add_path_blend_f32(qu, &qu->mv.path, &lim, radius);
     for (j = 0; j < 6u; j++) {
         q[j] = mv->qa[j] + mv->dq[j];
     }
     st |= (uint32_t)dh_fk_f32(r, q, &A);
-    if (jk == NULL) {
-        st |= (uint32_t)dh_path_line_f32(&qu->mv.path, &B, &A);
-        st |= (uint32_t)dh_queue_add_path_blend_f32(qu, &qu->mv.path, &lim, 0.0f);
-    } else {
-        st |= (uint32_t)dh_path_arc_f32(&qu->mv.path, &B, via, &A);
-        st |= (uint32_t)dh_queue_add_path_blend_jerk_f32(qu, &qu->mv.path, &lim, jk, 0.0f);
-    }
+    st |= (uint32_t)dh_path_line_f32(&qu->mv.path, &B, &A);
+    st |= (uint32_t)dh_queue_add_path_blend_f32(qu, &qu->mv.path, &lim, 0.0f);
     qrep.last = 0;
     while (st == 0u && qrep.last == 0 && n < 16u * BT_NTRK) {
         if (n == 100u) {
@@ -1893,10 +1776,8 @@ static BT_NOINLINE void bt_queue_f32(const bt_move *mv, dh_robot *r, float radiu
     if (qrep.last == 0) {
         st |= 0x100u;   /* the queue did not finish within 16 x BT_NTRK periods */
     }
-    bt_track_row((jk == NULL) ? "queue blend period f32" : "queue jerk arc period f32", mv->robot, "m", n, &aper,
-                 states, st);
-    bt_track_row((jk == NULL) ? "dh_ikc_f32 queue blend" : "dh_ikc_f32 queue jerk arc", mv->robot, "m", n, &aik, none,
-                 st);
+    bt_track_row("queue blend period f32", mv->robot, "m", n, &aper, states, st);
+    bt_track_row("dh_ikc_f32 queue blend", mv->robot, "m", n, &aik, none, st);
 }
 #endif
 
@@ -1924,8 +1805,7 @@ static BT_NOINLINE void bt_track(void)
         bt_track_f32(&bt_moves[m], &bt_puma_m, &null);
         bt_period_f32(&bt_moves[m], &bt_puma_m, NULL);
         bt_period_f32(&bt_moves[m], &bt_puma_m, &jerk_f);
-        bt_queue_f32(&bt_moves[m], &bt_puma_m, 0.02f, NULL);
-        bt_queue_f32(&bt_moves[m], &bt_puma_m, 0.02f, &jerk_f);
+        bt_queue_f32(&bt_moves[m], &bt_puma_m, 0.02f);
 #endif
         bt_track_q(&bt_moves[m], &bt_puma_mm, &null);
         bt_period_q(&bt_moves[m], &bt_puma_mm, NULL);
@@ -2037,12 +1917,9 @@ int main(void)
     bt_ik();
     bt_ik_q();
     bt_ikc();
-    bt_ikc_cal_q();
 #if BT_IKC_FLOAT
     bt_ikc_cal();
     bt_opw();
-#else
-    bt_kr6_q();
 #endif
     if (bt_inputs_dls() != 0u) {
         printf("BT error|damped least-squares inputs returned a status\n");

@@ -479,8 +479,7 @@ def main():
       "Check (untimed): opw's finite solutions, mapped to the DH table's joint values "
       "(q_dh = (-1, 1, 1, -1, 1, -1) * q_opw, degrees), wrapped to (-180, 180] and kept within "
       "the limits, against dhmath's float ones: the count per target, and each matched by one "
-      "within 1e-3 deg on every joint. On the Cortex-M0 (no FPU, 16 KiB of RAM): `dh_ikc_q` alone "
-      "on the first 4 of these targets (`bt_kr6_q`). opw_kinematics: %s."
+      "within 1e-3 deg on every joint. opw_kinematics: %s."
       % (16, meta.get("opw", "not given")))
     w("")
     opw_rows = [(c, o) for c, o in cols if runs["%s-%s" % (c, o)].opw_peer is not None]
@@ -541,11 +540,7 @@ def main():
       "a second one to the FK of the tracking move's end, appended by `dh_queue_add_path_blend_*` "
       "with their corner blended within 20 mm (`queue blend period`), beside the closed-form "
       "solve of each period's frame with the tracker's configuration before the period as q_ref "
-      "(`dh_ikc_f32 queue blend`, after the period, untimed for it). The float jerk-limited "
-      "twin (`queue jerk arc period f32`, `dh_ikc_f32 queue jerk arc`): the same first line and "
-      "an arc through the FK of three quarters of the tracking move to its end, both appended by "
-      "`dh_queue_add_path_blend_jerk_f32` within the jerk limits above, their line-arc corner "
-      "blended within 20 mm.")
+      "(`dh_ikc_f32 queue blend`, after the period, untimed for it).")
     w("")
     w("| goal | limit | -O2 | -Os | -Os DH_SMALL | met at -O2 (mean) | met at -O2 (largest call) |")
     w("|---|---|---:|---:|---:|---|---|")

@@ -127,7 +127,7 @@ typedef enum {
 #define DH_IKC_SING_ELBOW 0x80u    /**< elbow stretched: the two elbow branches coincide (returned once) */
 /** @} */
 
-/** @name Calibration tolerance (dh_ikc_analyse_f32, dh_ikc_analyse_q)
+/** @name Calibration tolerance (dh_ikc_analyse_f32)
  * A six-revolute robot that no family fits exactly but that is within these
  * of DH_IKC_PARALLEL_234 or of DH_IKC_WRIST_RRR is a calibrated robot of
  * that family (model.calibrated = 1; PARALLEL_234 tried first): every
@@ -162,17 +162,8 @@ typedef enum {
  * for the target, and a reachable target may be DH_ERR_UNREACHABLE; the
  * solutions may number fewer than the idealised chain's. Beyond the
  * tolerance: no closed form (DH_ERR_UNAVAILABLE, why as for any robot).
- * The R-R-P wrist and SCARA families recognise exact robots only. Fixed
- * path: dh_ikc_analyse_q recognises calibrated DH_IKC_PARALLEL_234 robots
- * with the same tolerance (a calibrated spherical-wrist robot has no fixed
- * closed form: DH_ERR_UNAVAILABLE); dh_ikc_q refines each idealised branch
- * by the same simplified Newton steps, integer only, none restarted, and
- * returns it (DH_IKC_REFINED) only when the exact chain's joint 5 point is
- * within 2^(7 - F) length units and its rotation within 1.9e-6 rad of the
- * target (F = DH_QPOS_FRAC); the fixed accuracy bounds below hold for it.
- * A configuration at a singularity of the idealised blocks, or whose
- * joint 5 point lies within the deviations' shift of the elbow's boundary,
- * may be missing. dh_ikc_nearest_q is unchanged.
+ * The R-R-P wrist and SCARA families, and the fixed path
+ * (dh_ikc_analyse_q), recognise exact robots only.
  * @{ */
 #define DH_IKC_CAL_ANGLE_DEG 1.0f   /**< twist deviation, degrees */
 #define DH_IKC_CAL_OFFSET_REL 0.01f /**< structure-breaking length, fraction of the reach */
@@ -205,8 +196,7 @@ typedef struct {
     float lim_w[2u * DH_IKC_JOINTS]; /**< revolute joint i's limits as a circular window of canonical values: centre
                                           lim_w[i] in (-180, 180], radius lim_w[6 + i] with a rounding margin (+inf:
                                           no bound); a value farther from the centre is outside the limits */
-    uint32_t lim_any;            /**< 1: a radius of lim_w is finite and kind a spherical-wrist family (exact): dh_ikc_f32 prunes by it;
-                                          2: kind DH_IKC_WRIST_RRR (exact), no wide limits: it solves and applies the limits in one pass */
+    uint32_t lim_any;            /**< 1: a radius of lim_w is finite and kind a spherical-wrist family (exact): dh_ikc_f32 prunes by it */
     uint32_t calibrated;         /**< 1: within the calibration tolerance of kind, not on it: a..ca hold the
                                       idealised chain, xa..xca the exact one, solutions refined; 0: exact */
     float xa[DH_IKC_JOINTS];     /**< exact canonical a (calibrated; 0 otherwise) */
@@ -234,13 +224,6 @@ typedef struct {
     int32_t k[DH_IKC_K];         /**< family constants */
     dh_frame_q pre_inv;          /**< inverse of the frame before the canonical chain */
     dh_frame_q post_inv;         /**< inverse of the frame after it (tool) */
-    uint32_t calibrated;         /**< 1: within the calibration tolerance of kind (a..ca idealised, xa..xca exact); 0: exact */
-    dh_qpos xa[DH_IKC_JOINTS];   /**< exact canonical a (calibrated; 0 otherwise) */
-    dh_qpos xd[DH_IKC_JOINTS];   /**< exact canonical d */
-    dh_q30 xsa[DH_IKC_JOINTS];   /**< exact canonical sin(alpha) */
-    dh_q30 xca[DH_IKC_JOINTS];   /**< exact canonical cos(alpha) */
-    dh_qpos xw5[3];              /**< the exact chain's joint 5 point in the tool frame (calibrated) */
-    uint32_t xframes;            /**< bit 0: a base frame (pre_inv not the identity), bit 1: a tool frame */
 } dh_ikc_model_q;
 
 /** One float solution. */

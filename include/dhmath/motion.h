@@ -455,23 +455,6 @@ typedef enum {
 } dh_move_kind;
 
 /**
- * @brief The brake of one coordinate (a joint, or s of a path) to rest
- *        within a deceleration and a jerk (read-only for the user): the
- *        queue's stop and a jerk-limited path move's brake on a lag.
- */
-typedef struct {
-    float q;    /**< position at its start */
-    float s;    /**< direction of travel (+1, -1; 0 at rest) */
-    float v;    /**< |velocity| at its start */
-    float a;    /**< acceleration at its start, along the travel */
-    float ap;   /**< peak deceleration */
-    float j;    /**< jerk (0: none) */
-    float t[3]; /**< durations of its three phases */
-    float x;    /**< distance to rest, at most the distance left */
-    float end;  /**< the move's end (q1, or s = 1), never passed */
-} dh_brake_f32;
-
-/**
  * @brief One move being executed, written by dh_move_joint_f32 /
  *        dh_move_path_f32 and advanced once per control period by
  *        dh_move_joint_step_f32 / dh_move_advance_f32 (read-only for the
@@ -490,14 +473,6 @@ typedef struct {
     uint32_t lag;                       /**< path move: 1 when the last period was not OK */
     uint32_t n;                         /**< joint move: number of joints */
     uint32_t kind;                      /**< a dh_move_kind value */
-    float s0;                           /**< path move: s at the plan's start (its profile runs from s0 to 1) */
-    float vs;                           /**< jerk-limited path move: its first plan's peak of ds/dt */
-    float as;                           /**< jerk-limited path move: its first plan's peak of |d2s/dt2| */
-    float js;                           /**< jerk-limited path move: its first plan's peak of |d3s/dt3| */
-    float tb;                           /**< jerk-limited path move: time into its brake (s) */
-    float tbend;                        /**< jerk-limited path move: duration of its brake (s) */
-    dh_brake_f32 brk;                   /**< jerk-limited path move: its brake on a lag */
-    uint32_t bst;                       /**< jerk-limited path move: 0 on its plan, 1 braking, 2 at rest after a brake */
 } dh_move_f32;
 
 /** @brief What one period of a move did. */
@@ -578,15 +553,7 @@ dh_status dh_move_path_f32(dh_move_f32 *mv, const dh_path_f32 *p, const dh_cart_
  * @brief Starts a jerk-limited Cartesian move along the path p within lim
  *        and jerk (dh_path_move_jerk_f32), executed as a move of
  *        dh_move_path_f32 (dh_move_target_f32, dh_move_advance_f32; the
- *        same start and holding of the clock), but with no feed override.
- * Lag: its clock advances by dt; a not-OK period while its path moves
- * starts a brake of s within the plan's peaks of s'' and s''' that runs to
- * rest whatever the tracker reports; at rest the target holds while not
- * OK, and the first OK period plans the rest of the path from rest within
- * the first plan's peaks, s' capped at 7/8 of s' where the brake began
- * (each brake lowers the cap, to at least 1/64 of the peak; mv->feed and
- * the report's feed give the cap). Speed, acceleration and jerk stay
- * within lim and jerk at every period (docs/design.md, "Motion").
+ *        same start and holding of the clock).
  * @param mv output move (kind DH_MOVE_PATH, clock 0, dur the profile's T;
  *        p copied).
  * @param p path from dh_path_line_f32 or dh_path_arc_f32.
@@ -608,9 +575,7 @@ dh_status dh_move_path_jerk_f32(dh_move_f32 *mv, const dh_path_f32 *p, const dh_
  * Between two periods the clock advances by r dt (dh_move_advance_f32),
  * so the target moves by at most r lim->vmax dt in position and
  * r lim->wmax dt in rotation (up to the path's and the profile's rounding,
- * motion.h above), and at r == 0 it does not move. A jerk-limited move
- * whose tracker lagged is on its brake, or at rest there (the frame at
- * the brake's s), or on the rest of its path planned again.
+ * motion.h above), and at r == 0 it does not move.
  * @param mv move from dh_move_path_f32 or dh_move_path_jerk_f32.
  * @param T output frame.
  * @return DH_OK; DH_ERR_ARG for an mv that holds no path move (written by
@@ -624,29 +589,29 @@ dh_status dh_move_target_f32(const dh_move_f32 *mv, dh_mat4_f32 *T);
  *        period's dh_move_target_f32; the clock advances by r dt (capped
  *        at dur), r in [0, 1] the move's feed override.
  * - state OK, clock == dur: done (the tracker reached p->B within its
- *   pos_tol and rot_tol; the clock stays at dur).
+ *   pos_tol and rot_tol); the clock stays at dur.
  * - state OK, clock < dur: r rises towards its ceiling (1 until the
  *   tracker lagged); with r at 1 the clock advances by dt exactly, so a
  *   move the tracker follows runs its profile bit for bit.
  * - state LAGGING or UNREACHABLE (held 1): r falls towards 0, where the
- *   clock and the target hold: the move slows down on its own schedule.
+ *   clock and the target hold; the move slows down on its own schedule
+ *   instead of jumping, and stops at a stretch that stays unreachable.
  *   A stretch of such periods while the path moves lowers the ceiling to
  *   7/8 of r at its start; the ceiling rises by 2 r per second of OK
  *   periods at it (relative), so the move settles below the speed the
  *   joints could not follow and speeds up again where they can.
  * r changes each period by at most what keeps the commanded s' r and
  * d(s' r)/dt within the profile's peaks prof[0].v and prof[0].a, so the
- * target's speed, acceleration and angular rates stay within lim. At
- * clock 0 (s' = 0) r falls to 0 and rises back at once. A jerk-limited
- * move brakes, holds and resumes instead (dh_move_path_jerk_f32).
+ * target's speed, acceleration and angular rates stay within lim (not
+ * the jerk of dh_move_path_jerk_f32 while r changes; docs/design.md).
+ * At clock 0 (s' = 0) r falls to 0 and rises back at once.
  * @param mv move from dh_move_path_f32 or dh_move_path_jerk_f32.
  * @param dt control period (s), finite, > 0 (the tracker's dt).
  * @param state the tracker's state this period, a dh_track_state value.
  * @param rep report: clock and r after the call, held, done.
  * @return DH_OK; DH_ERR_NAN for a NaN/Inf dt; DH_ERR_ARG for dt <= 0, a
  *         state that is no dh_track_state, or an mv that holds no path
- *         move; DH_ERR_OVERFLOW as dh_profile_scurve_f32 for the rest of
- *         a path after a brake. On error rep is untouched.
+ *         move. On error mv and rep are untouched.
  */
 dh_status dh_move_advance_f32(dh_move_f32 *mv, float dt, dh_track_state state, dh_move_report_f32 *rep);
 
@@ -682,7 +647,6 @@ typedef struct {
     float k1;  /**< jerk-limited: |d3s/dt3| of the deceleration to rest (1/s^3) */
     float tj1; /**< jerk-limited: duration of each jerk phase of the acceleration (s) */
     float tj3; /**< jerk-limited: duration of each jerk phase of the deceleration (s) */
-    float V;   /**< jerk-limited: the path's own bound of ds/dt (1/s; a and j its own bounds of |d2s/dt2| and |d3s/dt3|) */
 } dh_blend_seg_f32;
 
 /* ======================================================================
@@ -709,7 +673,7 @@ typedef struct {
     float vmax[DH_MAX_JOINTS];     /**< joint move: velocity limits */
     float amax[DH_MAX_JOINTS];     /**< joint move: acceleration limits */
     float jmax[DH_MAX_JOINTS];     /**< joint move: jerk limits (when jerk is 1) */
-    uint32_t jerk;                 /**< 1 when jerk-limited: joint move with jmax, path move of dh_queue_add_path_jerk_f32 with jerk; 2: line or arc of dh_queue_add_path_blend_jerk_f32 */
+    uint32_t jerk;                 /**< 1 when jerk-limited: joint move with jmax, path move of dh_queue_add_path_jerk_f32 with jerk; 2: line of dh_queue_add_path_blend_jerk_f32 */
     uint32_t n;                    /**< joint move: number of joints */
     uint32_t kind;                 /**< DH_MOVE_JOINT or DH_MOVE_PATH */
     dh_cart_limits_f32 lim;        /**< path move: its limits */
@@ -717,8 +681,8 @@ typedef struct {
     float ctb;                     /**< path move: overlap of that corner (s; 0: at rest), planned when the next is appended */
     float cb[2];                   /**< path move: the corner's tail accelerations of s, its own and the next move's */
     float rate[2];                 /**< path move: the bounds of s' and s'' of its blended scalings (arcs: beside the centripetal acceleration) */
-    dh_cart_jerk_f32 jk;           /**< line or arc of dh_queue_add_path_blend_jerk_f32 (jerk 2): its jerk limits */
-    dh_blend_seg_f32 seg;          /**< line or arc of dh_queue_add_path_blend_jerk_f32: its jerk-limited scaling of s with its corners as planned so far */
+    dh_cart_jerk_f32 jk;           /**< line of dh_queue_add_path_blend_jerk_f32 (jerk 2): its jerk limits */
+    dh_blend_seg_f32 seg;          /**< line of dh_queue_add_path_blend_jerk_f32: its jerk-limited scaling of s with its corners as planned so far */
 } dh_queue_item_f32;
 
 /**
@@ -738,20 +702,28 @@ typedef struct {
     uint32_t resume;               /**< 1 when a resume waits for the brake to reach rest */
     uint32_t pend;                 /**< 1 between dh_queue_target_f32 and dh_queue_advance_f32 */
     uint32_t n;                    /**< joints of the robot (tracker) of the last target call */
-    uint32_t braked;               /**< 1 when the running move's state is its brake's (after a stop); 2 when that brake is a jerk-limited move's brake on a lag, taken on by the stop (it runs whatever the tracker reports) */
+    uint32_t braked;               /**< 1 when the running move's state is its brake's (after a stop) */
     dh_move_f32 mv;                /**< plan of the running move (or of the last one completed) */
+    float s0;                      /**< path move: s at the plan's start (its profile runs from s0 to 1) */
     float vs;                      /**< path move: limit of ds/dt (its first plan's peak) */
     float as;                      /**< path move: limit of d2s/dt2 (its first plan's peak) */
     float tb;                      /**< time into the brake (s) */
     float tbend;                   /**< duration of the brake (s) */
     float dt;                      /**< control period of the pending target call (s) */
     float next;                    /**< the clock, or brake time, the pending period advances to */
-    dh_brake_f32 br[DH_MAX_JOINTS]; /**< brake of each joint (path move: [0], of s) */
+    float bq[DH_MAX_JOINTS];       /**< brake: joint (path move: [0] is s) at its start */
+    float bs[DH_MAX_JOINTS];       /**< brake: direction of travel (+1, -1; 0 at rest) */
+    float bv[DH_MAX_JOINTS];       /**< brake: |velocity| at its start */
+    float ba[DH_MAX_JOINTS];       /**< brake: acceleration at its start, along the travel */
+    float bap[DH_MAX_JOINTS];      /**< brake: peak deceleration */
+    float bj[DH_MAX_JOINTS];       /**< brake: jerk (0: none) */
+    float bt[3][DH_MAX_JOINTS];    /**< brake: durations of its three phases */
+    float bx[DH_MAX_JOINTS];       /**< brake: distance to rest, at most the distance left */
+    float bend[DH_MAX_JOINTS];     /**< brake: the move's end (q1, or s = 1), never passed */
     dh_blend_seg_f32 bl[2];        /**< blended lines: scaling of the running line [0] and of the next [1] in their overlap */
     float bo[2];                   /**< blended lines: s where each scaling starts (0, or where a stop left the line) */
     uint32_t bmode;                /**< blended lines: 0 none; 1 the running line; 2 and the next; 3 the next starts at bo[0] */
     uint32_t stopq;                /**< 1 when a stop waits for the end of an overlap of jerk-limited blended lines */
-    uint32_t lagstop;              /**< 1 while jerk-limited blended lines stop on a lag: at rest they resume by themselves once the tracker is OK */
 } dh_queue_f32;
 
 /** @brief What the caller does this period (dh_queue_target_f32). */
@@ -853,19 +825,17 @@ dh_status dh_queue_add_path_blend_f32(dh_queue_f32 *qu, const dh_path_f32 *p, co
  *        jerk (dh_move_path_jerk_f32: the seven-phase profile of s of
  *        dh_path_move_jerk_f32, TOTAL linear jerk within jerk->jmax on
  *        lines and arcs), run as dh_queue_add_path_f32's moves are.
- * Lag as dh_move_advance_f32's for a jerk-limited move: a brake of s, a
- * hold at rest and a resume with s' capped, the queue's phase RUN; speed,
- * TOTAL acceleration and jerk within lim and jerk at every period. Stop:
- * s brakes from its rate s' and acceleration s'' (from its brake on a lag
- * where it is, which then runs to rest whatever the tracker reports) with
- * jerk +-j (j = the plan's peak |s'''|), its deceleration
+ * Feed override r as dh_move_advance_f32's: speed and TOTAL acceleration
+ * within lim at every r; the jerk within jerk while r is constant (a
+ * change of r adds s' r' and s'' r r' terms that the rule bounds in
+ * acceleration only). Stop: s brakes from its rate s' r and acceleration
+ * s'' r^2 with jerk +-j (j = the plan's peak |s'''|), its deceleration
  * ramped to at most the plan's peak |s''| and back, so the tool's speed,
  * acceleration and jerk stay within lim and jerk (docs/design.md, "Stop
  * and resume"), never beyond B. Resume: a seven-phase profile of s from
  * where it stopped to 1 within the first plan's peaks of s', s'' and
- * s''' (s' within its cap after a lag). Its corners with the moves
- * before and after it run at rest (dh_queue_add_path_blend_jerk_f32
- * blends jerk-limited lines and arcs).
+ * s'''. Its corners with the moves before and after it run at rest
+ * (dh_queue_add_path_blend_jerk_f32 blends jerk-limited lines).
  * @param qu, p, lim as dh_queue_add_path_f32 (p, lim and jerk copied).
  * @param jerk jerk limits, each finite and > 0; NULL: the move of
  *        dh_queue_add_path_f32.
@@ -879,33 +849,30 @@ dh_status dh_queue_add_path_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, con
                                      const dh_cart_jerk_f32 *jerk);
 
 /**
- * @brief Appends a jerk-limited line or arc along p within lim and jerk
- *        whose corner with the NEXT such path is blended within radius,
- *        as dh_blend_seq_plan_jerk_f32 blends a sequence's corners.
+ * @brief Appends a jerk-limited line along p within lim and jerk whose
+ *        corner with the NEXT such line is blended within radius, as
+ *        dh_blend_seq_plan_jerk_f32 blends a sequence's corners.
  * The line's scaling of s is dh_blend_seq_plan_jerk_f32's (seven phases),
  * planned again when the next line is appended, by the same corner rule
  * (docs/design.md, "Jerk-limited blended corners in the queue"). The
- * corner is blended when both are paths of this function with equal
+ * corner is blended when both are lines of this function with equal
  * limits, the next starts at p->B, is queued when this one starts, the
- * blend is shorter and keeps this line's peak speed; else at rest. Speed,
- * TOTAL acceleration, angular speed and acceleration, TOTAL jerk and
- * angular jerk within lim and jerk at every period, up to float rounding
- * (1e-6 relative). No feed override: a not-OK period while the lines
- * move stops them as a stop does, the brake running whatever the tracker
- * reports (qu->lagstop; not reported stopped), and an OK period at rest
- * resumes them, s' capped at 7/8 of the head line's where its brake began
- * (rep->feed), unless dh_queue_stop_f32 came. A stop inside an overlap
+ * blend is shorter and keeps this line's peak speed; else at rest.
+ * Speed, TOTAL acceleration, angular speed and acceleration within lim
+ * at every feed override r (held inside an overlap); TOTAL jerk and
+ * angular jerk within jerk while r is constant, in a stop and a resume,
+ * all up to float rounding (1e-6 relative). A stop inside an overlap
  * waits for its end (qu->stopq; the tool within radius of the corner),
  * then the next line brakes alone with jerk +-its bound; a resume runs a
  * line from rest to its end, its corner after at rest. Outside the
- * overlaps the target is on the path as dh_path_eval_f32's (an arc's
- * centripetal terms are within the totals above).
+ * overlaps the target is on the line as dh_path_eval_f32's.
  * @param qu, p, lim as dh_queue_add_path_f32 (p, lim and jerk copied).
  * @param jerk jerk limits, each finite and > 0.
  * @param radius blend radius (p's length unit), finite and >= 0.
  * @return DH_OK; DH_ERR_LIMIT when the queue is full (checked first);
- *         DH_ERR_NAN for a NaN/Inf radius, DH_ERR_ARG for radius < 0;
- *         then the statuses of dh_queue_add_path_jerk_f32. On error qu and its
+ *         DH_ERR_NAN for a NaN/Inf radius, DH_ERR_ARG for radius < 0 or
+ *         an arc (dh_queue_add_path_jerk_f32 runs an arc, at rest); then
+ *         the statuses of dh_queue_add_path_jerk_f32. On error qu and its
  *         queued moves are untouched (the free item is overwritten).
  */
 dh_status dh_queue_add_path_blend_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
@@ -1169,22 +1136,23 @@ dh_status dh_blend_seq_plan_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, con
 dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32 *T);
 
 /**
- * @brief sq = the n lines and arcs p[0..n-1] one after the other, each a
+ * @brief sq = the n LINES p[0..n-1] one after the other, each a
  *        jerk-limited scaling of s (ramped acceleration, |s'''| within
- *        jmax / L and wjmax / angle; an arc's rates dh_path_move_jerk_f32's),
- *        each corner k blended within radius[k]: path k's deceleration
- *        and path k+1's acceleration superposed for tb, with
- *        L_i |s''| <= amax / max(1, |d2 - d1|) and
- *        L_i |s'''| <= jmax / max(1, |d1 + d2|) in them (d_i the
- *        directions; at an arc 3/4 of that with the tangents' turn, the
- *        centripetal terms within 1/4), tb the longest that keeps the tool
- *        within radius[k] of the corner and the rotation's cross terms
- *        within 1/64 of wdmax and wjmax (docs/design.md, "Jerk-limited
- *        blended sequences"). Speed, TOTAL acceleration and jerk, angular speed,
+ *        jmax / L and wjmax / angle), each corner k blended within
+ *        radius[k]: line k's deceleration and line k+1's acceleration
+ *        superposed for tb, with L_i |s''| <= amax / max(1, |d2 - d1|)
+ *        and L_i |s'''| <= jmax / max(1, |d1 + d2|) in them (d_i the
+ *        directions), tb the longest that keeps the tool within radius[k]
+ *        of the corner and the rotation's cross terms within 1/64 of
+ *        wdmax and wjmax (docs/design.md, "Jerk-limited blended
+ *        sequences"). Speed, TOTAL acceleration and jerk, angular speed,
  *        acceleration and jerk within lim and jerk up to float rounding
  *        (1e-6 relative); seg[k].dev <= radius[k]; evaluated by
  *        dh_blend_seq_eval_f32 (same position bounds).
- * @param sq, seg, p, n, radius, lim as dh_blend_seq_plan_f32.
+ * @param sq, seg, p, n, radius, lim as dh_blend_seq_plan_f32, every p[k]
+ *        a line: an arc's tail adds the centripetal jerk (L s')^3 / rho^2
+ *        + 3 L^2 s' s'' / rho along turning tangents, which no proved
+ *        bound through tb holds yet, so arcs are refused.
  * @param jerk jmax (TOTAL linear jerk) and wjmax, finite and > 0 (not
  *        NULL: dh_blend_seq_plan_f32 plans without a jerk limit).
  * A corner runs at rest (tb 0, the lines' own bounds) when its radius is
@@ -1192,11 +1160,10 @@ dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32
  * time its lowered bounds cost; all do when the sequence would not be
  * shorter than its lines' rest-to-rest seven-phase scalings back to back.
  * @return DH_OK; dh_blend_seq_plan_f32's statuses in its order, then
- *         DH_ERR_NAN for a NaN/Inf jerk limit, DH_ERR_ARG for one <= 0;
- *         DH_ERR_OVERFLOW for a bound of s that is not a
+ *         DH_ERR_NAN for a NaN/Inf jerk limit, DH_ERR_ARG for one <= 0 or
+ *         an arc; DH_ERR_OVERFLOW for a bound of s that is not a
  *         positive finite float or a bound of the duration that is not
- *         finite. sq untouched on error, seg too but on DH_ERR_OVERFLOW
- *         (then scratch: the paths' rates are held in it).
+ *         finite. sq and seg untouched on error.
  */
 dh_status dh_blend_seq_plan_jerk_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t n,
                                      const float *radius, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jerk);

@@ -137,22 +137,12 @@ static dh_ikc_why ikc_why(const dh_ikc_model_f32 *m)
     return DH_IKC_WHY_JOINTS;
 }
 
-/* lim_any when dh_ikc_f32 solves and converts in one pass
- * (dh_ikc_wrist_fin_f32_): an exact DH_IKC_WRIST_RRR model without wide
- * limits, six revolute joints, the conditions of ikc_finish6 */
-#define IKC_LIM_FUSED 2u
-
 /* The end of an analysis that found kind: lim_any kept only where
  * dh_ikc_f32 prunes by it (ikc_prune: a spherical-wrist family, exact), so
- * that the other families pay one test for it; IKC_LIM_FUSED where it
- * solves in one pass. */
+ * that the other families pay one test for it. */
 static dh_status ikc_found(dh_ikc_model_f32 *m)
 {
     if (m->calibrated != 0u || (m->kind != DH_IKC_WRIST_RRR && m->kind != DH_IKC_WRIST_RRP)) m->lim_any = 0u;
-    else if (m->kind == DH_IKC_WRIST_RRR && m->wide == 0u) m->lim_any = IKC_LIM_FUSED;
-    else {
-        /* lim_any as ikc_windows found it */
-    }
     m->why = DH_IKC_WHY_NONE;
     return DH_OK;
 }
@@ -440,14 +430,22 @@ static uint32_t ikc_joint(const dh_ikc_model_f32 *m, const float *q_ref, uint32_
 
 /* Value *v = c - o of narrow revolute joint i with window [lo, hi]
  * (ikc_finish6): 1 when it is kept, its value in *v. ikc_joint's
- * operations: dh_ikc_val_f32_, which leaves only what it cannot decide to
- * ikc_general (ikc_general_call). */
+ * operations: the window, one turn towards the reference into the window,
+ * else ikc_general (ikc_general_call). */
 DH_INLINE int ikc_val6(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i, float c, float o, float lo, float hi,
                        float *v)
 {
-    const uint32_t r = dh_ikc_val_f32_(m, q_ref, i, c, o, lo, hi, v);
-    if (r != DH_IKC_VAL_GEN) return r == DH_IKC_VAL_IN;
-    return ikc_general_call(m, i, (q_ref != NULL) ? q_ref[i] : 0.0f, v) == IKC_V_IN;
+    const float x = c - o;
+    float ref, t;
+    *v = x;
+    if (x >= lo && x <= hi) return 1;
+    ref = (q_ref != NULL) ? q_ref[i] : 0.0f;
+    t = (x > ref) ? x - 360.0f : x + 360.0f;
+    if (t >= lo && t <= hi) {
+        *v = t;
+        return 1;
+    }
+    return ikc_general_call(m, i, ref, v) == IKC_V_IN;
 }
 
 /* ikc_finish (opts 0) for six revolute joints whose limits are less than a
@@ -554,13 +552,12 @@ DH_INLINE dh_status ikc_done(const dh_ikc_model_f32 *m, const float *q_ref, dh_i
 }
 
 /* 1 when dh_ikc_f32 solves m pruned by its limit windows first (m->lim_w,
- * ikc_windows) or, lim_any IKC_LIM_FUSED, by the conversion itself
- * (dh_ikc_wrist_fin_f32_): opts 0 (the limits apply), with an FPU (the
- * one-pass wrist solver leaves branches), a finite window or
- * IKC_LIM_FUSED on a spherical-wrist family of an exact model (lim_any,
- * ikc_found: the refinement moves a calibrated model's values). The
- * solutions kept are those of the full solve: the window drops only
- * branches whose joints 1-3 the conversion finds outside the limits. */
+ * ikc_windows): opts 0 (the limits apply), with an FPU (the one-pass
+ * wrist solver leaves branches), a finite window on a spherical-wrist
+ * family of an exact model (lim_any, ikc_found: the refinement moves a
+ * calibrated model's values). The solutions kept are those of the full
+ * solve: the window drops only branches whose joints 1-3 the conversion
+ * finds outside the limits. */
 DH_INLINE int ikc_prune(const dh_ikc_model_f32 *m, uint32_t opts)
 {
     return !DH_SOFT_FLOAT && opts == 0u && m->lim_any != 0u;
@@ -601,23 +598,14 @@ dh_status dh_ikc_f32(const dh_ikc_model_f32 *m, const dh_mat4_f32 *target, const
      * model reads it) within the same frame */
     *n_sol = opts << 4;
     if (ikc_prune(m, opts)) {
-        /* the branches within the limits' windows, or (IKC_LIM_FUSED) the
-         * solutions within the limits; when none of them is kept, the full
-         * solve below decides the status (DH_ERR_LIMIT or
+        /* the branches within the limits' windows; when none of them is
+         * kept, the full solve below decides the status (DH_ERR_LIMIT or
          * DH_ERR_UNREACHABLE) */
-        if (m->lim_any == IKC_LIM_FUSED) {
-            raw = dh_ikc_wrist_fin_f32_(m, target, q_ref, sol);
-            if (raw != 0u) {
-                *n_sol = raw;
-                return DH_OK;
-            }
-        } else {
-            raw = dh_ikc_wrist_lim_f32_(m, target, q_ref, sol);
-            if (raw != 0u) {
-                *n_sol = (raw > DH_IKC_MAX_SOL) ? DH_IKC_MAX_SOL : raw;
-                st = ikc_done(m, q_ref, sol, n_sol);
-                if (st == DH_OK) return st;
-            }
+        raw = dh_ikc_wrist_lim_f32_(m, target, q_ref, sol);
+        if (raw != 0u) {
+            *n_sol = (raw > DH_IKC_MAX_SOL) ? DH_IKC_MAX_SOL : raw;
+            st = ikc_done(m, q_ref, sol, n_sol);
+            if (st == DH_OK) return st;
         }
         *n_sol = 0u;
     }

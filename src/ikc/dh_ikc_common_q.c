@@ -3,7 +3,7 @@
  * dh_ikc_common_q.c - closed-form IK, fixed point (integer only): the
  * helpers that several family solvers call (atan2 of int64 pairs, the
  * multiply-accumulate that skips exact factors, the 2R elbow, joint
- * references in canonical values, the identity test of a model frame); interface in ikc_impl.h. Calls no
+ * references in canonical values); interface in ikc_impl.h. Calls no
  * solver and no front end.
  */
 #include "dhmath/trig.h"
@@ -127,18 +127,4 @@ uint32_t dh_ikc_pmul_q_(uint32_t p, uint32_t f, int fb, int32_t *ex)
         *ex -= (int32_t)d;
     }
     return (uint32_t)x;
-}
-
-/* 1 when F is the identity frame, word by word (the same answer as a
- * memcmp with the identity frame: no padding; a fraction of its cost on the
- * cores whose memcmp goes byte by byte) */
-int dh_ikc_is_identity_q_(const dh_frame_q *F)
-{
-    unsigned c, i;
-    for (c = 0; c < 3u; c++) {
-        for (i = 0; i < 3u; i++)
-            if (F->r[c][i] != ((c == i) ? DH_Q_ONE30 : 0)) return 0;
-        if (F->p[c] != 0) return 0;
-    }
-    return 1;
 }

@@ -169,7 +169,6 @@ static DH_NOINLINE void ikcq_classify(dh_ikc_model_q *m)
             m->kind = DH_IKC_PARALLEL_234;
             return;
         }
-        if (dh_ikc_calibrate_q_(m)) return;
         m->kind = DH_IKC_NONE;
         if (p != 0u && p != 0x4u)
             m->why = DH_IKC_WHY_JOINTS;
@@ -231,7 +230,6 @@ static DH_NOINLINE int ikcq_model_ok(const dh_ikc_model_q *m)
                 return 0;
     for (i = 0; i < m->n && i < DH_IKC_JOINTS; i++)
         if (((m->prismatic >> i) & 1u) == 0u && (m->off[i] > DH_IKC_Q16_180 || m->off[i] <= -DH_IKC_Q16_180)) return 0;
-    if (m->calibrated > 1u || (m->calibrated != 0u && m->kind != DH_IKC_PARALLEL_234)) return 0;
     switch (m->kind) {
     case DH_IKC_WRIST_RRR:
     case DH_IKC_WRIST_RRP:
@@ -418,6 +416,20 @@ static DH_NOINLINE int ikcq_row_apply(const dh_frame_q *F, dh_ikc_sol_q *sol, un
     return ovf;
 }
 
+/* 1 when F is the identity frame, word by word (the same answer as a
+ * memcmp with the identity frame: no padding; a fraction of its cost on the
+ * cores whose memcmp goes byte by byte) */
+static int ikcq_is_identity(const dh_frame_q *F)
+{
+    unsigned c, i;
+    for (c = 0; c < 3u; c++) {
+        for (i = 0; i < 3u; i++)
+            if (F->r[c][i] != ((c == i) ? DH_Q_ONE30 : 0)) return 0;
+        if (F->p[c] != 0) return 0;
+    }
+    return 1;
+}
+
 /* T06 = pre_inv T post_inv into the scratch of sol, identity products
  * skipped; 1 on overflow */
 static DH_NOINLINE int ikcq_t06(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_sol_q *sol)
@@ -426,16 +438,14 @@ static DH_NOINLINE int ikcq_t06(const dh_ikc_model_q *m, const dh_frame_q *T, dh
     int ovf = 0;
     for (c = 0; c < 4u; c++)
         for (i = 0; i < 3u; i++) DH_IKC_T06_COL_(sol, c)[i] = (c < 3u) ? T->r[c][i] : T->p[i];
-    if (!dh_ikc_is_identity_q_(&m->pre_inv))
+    if (!ikcq_is_identity(&m->pre_inv))
         for (c = 0; c < 4u; c++) ovf |= ikcq_col_apply(&m->pre_inv, DH_IKC_T06_COL_(sol, c), c == 3u);
-    if (!dh_ikc_is_identity_q_(&m->post_inv))
+    if (!ikcq_is_identity(&m->post_inv))
         for (i = 0; i < 3u; i++) ovf |= ikcq_row_apply(&m->post_inv, sol, i);
     return ovf;
 }
 
-/* dh_ikc_q's checks and T06 */
-static DH_NOINLINE dh_status ikcq_args(const dh_ikc_model_q *m, const dh_frame_q *target, uint32_t opts,
-                                       dh_ikc_sol_q *sol)
+dh_status dh_ikc_args_q_(const dh_ikc_model_q *m, const dh_frame_q *target, uint32_t opts, dh_ikc_sol_q *sol)
 {
     if (m->kind == DH_IKC_NONE) return DH_ERR_UNAVAILABLE;
     if ((opts & ~DH_IKC_KEEP_OUT_OF_LIMITS) != 0u || !ikcq_model_ok(m)) return DH_ERR_ARG;
@@ -443,16 +453,9 @@ static DH_NOINLINE dh_status ikcq_args(const dh_ikc_model_q *m, const dh_frame_q
     return ikcq_t06(m, target, sol) ? DH_ERR_OVERFLOW : DH_OK;
 }
 
-/* the refinement of a calibrated model runs in dh_ikc_q only */
-dh_status dh_ikc_args_q_(const dh_ikc_model_q *m, const dh_frame_q *target, uint32_t opts, dh_ikc_sol_q *sol)
-{
-    if (m->calibrated != 0u) return DH_ERR_UNAVAILABLE;
-    return ikcq_args(m, target, opts, sol);
-}
-
 dh_status dh_ikc_args_rigid_q_(const dh_ikc_model_q *m, const dh_frame_q *target, dh_ikc_sol_q *sol)
 {
-    if (m->kind == DH_IKC_NONE || m->calibrated != 0u) return DH_ERR_UNAVAILABLE;
+    if (m->kind == DH_IKC_NONE) return DH_ERR_UNAVAILABLE;
     if (!ikcq_model_ok(m)) return DH_ERR_ARG;
     return ikcq_t06(m, target, sol) ? DH_ERR_OVERFLOW : DH_OK;
 }
@@ -476,23 +479,13 @@ dh_status dh_ikc_q(const dh_ikc_model_q *m, const dh_frame_q *target, const int3
 
     DH_ASSERT(m != NULL && target != NULL && sol != NULL && n_sol != NULL);
     *n_sol = 0;
-    st = ikcq_args(m, target, opts, sol);
+    st = dh_ikc_args_q_(m, target, opts, sol);
     if (st != DH_OK) return st;
     /* the raw count goes through *n_sol (no addressable local here) */
     st = dh_ikc_raw_q_(m, q_ref, sol, n_sol);
     raw = *n_sol;
     *n_sol = 0;
     if (st != DH_OK) return st;
-    if (m->calibrated != 0u) {
-        /* refined, then each shoulder restarted and its starts refined */
-        raw = dh_ikc_refine_q_(m, target, sol, raw);
-        raw = dh_ikc_refine_q_(m, target, sol, dh_ikc_restart_q_(m, target, sol, raw, 0u));
-        raw = dh_ikc_refine_q_(m, target, sol, dh_ikc_restart_q_(m, target, sol, raw, DH_IKC_SHOULDER_ALT));
-        /* a shoulder with starts and none refined: from one of its own */
-        raw = dh_ikc_refine_q_(m, target, sol, dh_ikc_restart_q_(m, target, sol, raw, DH_IKC_RESTART_AGAIN_));
-        raw = dh_ikc_refine_q_(m, target, sol,
-                               dh_ikc_restart_q_(m, target, sol, raw, DH_IKC_RESTART_AGAIN_ | DH_IKC_SHOULDER_ALT));
-    }
     if (raw == 0u) return DH_ERR_UNREACHABLE;
     raw = ikcq_finish(m, q_ref, opts, sol, raw);
     if (raw == IKCQ_FINISH_OVF) return DH_ERR_OVERFLOW;

@@ -616,9 +616,8 @@ static DH_NOINLINE int ref_be(dh_ikc_ref_work_f32 *w, uint32_t f)
     vy = k[RK_TAU] * (p[2] - m->d[0]) - m->a[3] * o[11] + k[RK_E5] * o[10];
     v2 = vx * vx + vy * vy;
     r = (k[RK_SUM2] - v2) * (v2 - k[RK_DIF2]);
-    if (dh_isfinite_f32(r) == 0) return 0;
-    /* beyond the elbow's reach (r <= 0): the elbow stretched or folded towards it */
-    r = (r > 0.0f) ? dh_sqrt_f32(r) : 0.0f;
+    if (!(r >= 0.0f)) return 0;
+    r = dh_sqrt_f32(r);
     if ((f & DH_IKC_ELBOW_ALT) != 0u) r = -r;
     kd = (k[RK_D] < 0.0f) ? k[RK_A23] - v2 : v2 - k[RK_A23];
     ad = m->a[1] * fabsf(k[RK_D]) + m->a[2] * kd;
@@ -649,16 +648,7 @@ static DH_NOINLINE void ref_angles(float *o, float *q)
  * when there is one), and DH_IKC_MAX_SOL when none is pending (every
  * branch converged, no free slot, or the shoulder has a singular branch or
  * none). */
-/* A slot of flags f open to a start of shoulder sh: free, or unconverged
- * (neither refined nor pending) of the other shoulder when that has a
- * refined branch (bit 4 of done) */
-DH_INLINE int ref_open(uint32_t f, uint32_t sh, uint32_t done)
-{
-    return (f & REF_FREE) != 0u || ((f & (REF_PEND | DH_IKC_REFINED)) == 0u && (f & DH_IKC_SHOULDER_ALT) != sh &&
-                                    (done & 0x10u) != 0u);
-}
-
-static DH_NOINLINE uint32_t ref_plan(dh_ikc_sol_f32 *sol, uint32_t sh, int again)
+static DH_NOINLINE uint32_t ref_plan(dh_ikc_sol_f32 *sol, uint32_t sh)
 {
     uint32_t s, c, src = DH_IKC_MAX_SOL, done = 0u, pend;
     for (s = 0; s < DH_IKC_MAX_SOL; s++) {
@@ -674,17 +664,7 @@ static DH_NOINLINE uint32_t ref_plan(dh_ikc_sol_f32 *sol, uint32_t sh, int again
             /* an unconverged branch after a converged one: the start stays */
         }
     }
-    /* again: only a shoulder with branches, none refined (each a start
-     * beyond the elbow's reach or a failed refinement) */
-    if (again != 0 && (done != 0u || src == DH_IKC_MAX_SOL)) return DH_IKC_MAX_SOL;
-    /* a shoulder the idealised chain lacks: from a branch of the other */
-    for (s = 0; src == DH_IKC_MAX_SOL && s < DH_IKC_MAX_SOL; s++)
-        if ((sol[s].flags & REF_FREE) == 0u) src = s;
     if (src == DH_IKC_MAX_SOL) return src;
-    /* the other shoulder's unconverged slots are free when it has a refined branch */
-    for (s = 0; s < DH_IKC_MAX_SOL; s++)
-        if ((sol[s].flags & (REF_FREE | DH_IKC_REFINED | DH_IKC_SHOULDER_ALT)) == (DH_IKC_REFINED | (sh ^ DH_IKC_SHOULDER_ALT)))
-            done |= 0x10u;
     pend = DH_IKC_MAX_SOL;
     for (c = 0; c < 4u; c++) {
         const uint32_t f = sh | (c << 1);
@@ -692,7 +672,7 @@ static DH_NOINLINE uint32_t ref_plan(dh_ikc_sol_f32 *sol, uint32_t sh, int again
         if (((done >> c) & 1u) != 0u) continue;
         /* its own unconverged slot, else the first free one */
         for (s = DH_IKC_MAX_SOL; s > 0u; s--)
-            if (s - 1u != src && ref_open(sol[s - 1u].flags, sh, done)) slot = s - 1u;
+            if ((sol[s - 1u].flags & REF_FREE) != 0u) slot = s - 1u;
         for (s = 0; s < DH_IKC_MAX_SOL; s++)
             if ((sol[s].flags & (REF_FREE | REF_PEND | REF_BRANCH | DH_IKC_REFINED)) == f) slot = s;
         if (slot == DH_IKC_MAX_SOL) continue;
@@ -755,11 +735,11 @@ uint32_t dh_ikc_refine_par234_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 
     w.T = T;
     (void)ref_marks(sol, (raw > DH_IKC_MAX_SOL) ? DH_IKC_MAX_SOL : raw, 0);
     k = 0;
-    while (k < 9u * DH_IKC_MAX_SOL) {
+    while (k < 5u * DH_IKC_MAX_SOL) {
         if ((k & 8u) != 0u) {
             /* a restart round */
             if ((k & 7u) == 0u) {
-                it = ref_plan(sol, ((k & 16u) == 0u) ? 0u : DH_IKC_SHOULDER_ALT, (k > 4u * DH_IKC_MAX_SOL) ? 1 : 0);
+                it = ref_plan(sol, (k < 2u * DH_IKC_MAX_SOL) ? 0u : DH_IKC_SHOULDER_ALT);
                 if (it == DH_IKC_MAX_SOL) {
                     k += DH_IKC_MAX_SOL;
                     continue;

@@ -526,55 +526,6 @@ static DH_NOINLINE int wrist_left(const dh_ikc_model_f32 *m, const float *win, c
     return dh_ikc_out_f32_(win, 1u, arm->q[1]) || (m->kind == DH_IKC_WRIST_RRR && dh_ikc_out_f32_(win, 2u, arm->q[2]));
 }
 
-/* dh_ikc_val_f32_ of joint i's canonical value c */
-DH_INLINE uint32_t wrist_val(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i, float c, float *v)
-{
-    return dh_ikc_val_f32_(m, q_ref, i, c, m->off[i], m->win_lo[i], m->win_hi[i], v);
-}
-
-/* wrist_keep's answer when a value needs the general conversion */
-#define WRIST_KEEP_GEN 4u
-
-/* Wrist solution src (joint 1 converted) to joint values into dst (may
- * be src): joints 2-3 from j23, joints 4-6 by dh_ikc_val_f32_, dst
- * written only when all three are within the limits. Returns the verdict
- * (DH_IKC_VAL_*). */
-DH_INLINE uint32_t wrist_keep1(const dh_ikc_model_f32 *m, const float *q_ref, const dh_ikc_sol_f32 *src,
-                               dh_ikc_sol_f32 *dst, const float *j23)
-{
-    float v3, v4 = 0.0f, v5 = 0.0f;
-    uint32_t r = wrist_val(m, q_ref, 3u, src->q[3], &v3);
-    if (r == DH_IKC_VAL_IN) r = wrist_val(m, q_ref, 4u, src->q[4], &v4);
-    if (r == DH_IKC_VAL_IN) r = wrist_val(m, q_ref, 5u, src->q[5], &v5);
-    if (r != DH_IKC_VAL_IN) return r;
-    if (dst != src) {
-        dst->flags = src->flags;
-        dst->q[0] = src->q[0];
-    }
-    dst->q[1] = j23[0];
-    dst->q[2] = j23[1];
-    dst->q[3] = v3;
-    dst->q[4] = v4;
-    dst->q[5] = v5;
-    return r;
-}
-
-/* The arm's wrist solutions a[0] and a[1] (a[1] IKC_GAP: none; joint 1
- * converted, joints 2-3's values in j23) to joint values (wrist_keep1),
- * those within the limits packed into a[0], a[1], in order. Returns their
- * count, or WRIST_KEEP_GEN when a value needs the general conversion. */
-static DH_NOINLINE uint32_t wrist_keep(const dh_ikc_model_f32 *m, const float *q_ref, dh_ikc_sol_f32 *a,
-                                       const float *j23)
-{
-    uint32_t k = 0u, r = wrist_keep1(m, q_ref, &a[0], &a[0], j23);
-    if (r == DH_IKC_VAL_GEN) return WRIST_KEEP_GEN;
-    if (r == DH_IKC_VAL_IN) k = 1u;
-    if (a[1].flags == IKC_GAP) return k;
-    r = wrist_keep1(m, q_ref, &a[1], &a[k], j23);
-    if (r == DH_IKC_VAL_GEN) return WRIST_KEEP_GEN;
-    return (r == DH_IKC_VAL_IN) ? k + 1u : k;
-}
-
 /* One pass: the shoulder branches into sol[6] and sol[7] (read before any
  * solution reaches them), each arm into its solution's final slot
  * (elbow branch 1 two slots on, moved down when branch 0's wrist is
@@ -587,36 +538,22 @@ static DH_NOINLINE uint32_t wrist_keep(const dh_ikc_model_f32 *m, const float *q
  * joint 1 lies outside it is left before its elbow, an arm whose joint 2
  * or 3 does before its wrist; the branches kept are computed by the same
  * operations as without it, so they come out the same, in the same
- * order. conv (dh_ikc_wrist_fin_f32_): the same with the limits
- * (dh_ikc_val_f32_) in place of the window, the arms' joint 1 replaced by
- * its joint value once its cosine and sine are taken, and each wrist
- * solution converted (wrist_keep); 0 when a value needs the general
- * conversion. */
+ * order. */
 DH_INLINE uint32_t wrist_solve(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
-                               const float *win, int conv, dh_ikc_sol_f32 *sol)
+                               const float *win, dh_ikc_sol_f32 *sol)
 {
     /* R06 e_x, R06 Rx(alpha6)^T e_z, the wrist centre; after the
      * shoulder v[6..7] = cos, sin of joint 1, v[8..9] of joint 2 (RRR: of
-     * theta2 + sigma theta3) for wrist_m; conv: the joint values of
-     * joint 1 in v[8] (until the arms hold it), of joints 2-3 in v[6..7] */
+     * theta2 + sigma theta3) for wrist_m */
     float v[10];
     const float cref2 = dh_ikc_cref_f32_(m, q_ref, 1u);
-    uint32_t b, e, ns, ne, r, n = 0u;
+    uint32_t b, e, ns, ne, n = 0u;
     wrist_prepare(m, T, v, &v[3], &v[6]);
     ns = wrist_shoulder(m, dh_ikc_cref_f32_(m, q_ref, 0u), &v[6], &sol[6]);
     for (b = 0; b < ns; b++) {
         const dh_ikc_sol_f32 *sh = &sol[6u + b];
         const uint32_t n0 = n;
-        if (conv) {
-            /* joint 1's value waits in v[8] until the arms are made */
-            r = wrist_val(m, q_ref, 0u, sh->q[0], &v[8]);
-            if (r == DH_IKC_VAL_GEN) return 0u;
-            if (r == DH_IKC_VAL_OUT) continue;
-        } else if (win != NULL && dh_ikc_out_f32_(win, 0u, sh->q[0])) {
-            continue;
-        } else {
-            /* within the window, or none */
-        }
+        if (win != NULL && dh_ikc_out_f32_(win, 0u, sh->q[0])) continue;
         ne = (m->kind == DH_IKC_WRIST_RRR) ? wrist_elbow_rrr(m, cref2, sh, &sol[n]) : wrist_elbow_rrp(m, cref2, sh, &sol[n]);
         if (ne != 0u) {
             /* joint 1 of both elbow branches (the arms keep theta1 in q[0]) */
@@ -625,36 +562,15 @@ DH_INLINE uint32_t wrist_solve(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, 
             v[7] = sh->q[4];
             if (v[6] > 1.5f) (void)dh_sincos_f32(sol[n].q[0], &v[7], &v[6]);
             wrist_rzrx_t(&v[3], &v[0], &rot[0], &rot[3], v[6], v[7], m->sa[0], m->ca[0]);
-            if (conv) {
-                sol[n0].q[0] = v[8];
-                if (ne > 1u) sol[n0 + 2u].q[0] = v[8];
-            }
         }
         for (e = 0; e < ne; e++) {
             dh_ikc_sol_f32 *a = &sol[n];
-            if (conv) {
-                /* joints 2 and 3's values wait in v[6..7] (free after rot) */
-                const dh_ikc_sol_f32 *arm = &sol[n0 + e * 2u];
-                r = wrist_val(m, q_ref, 1u, arm->q[1], &v[6]);
-                if (r == DH_IKC_VAL_IN) r = wrist_val(m, q_ref, 2u, arm->q[2], &v[7]);
-                if (r == DH_IKC_VAL_GEN) return 0u;
-                if (r == DH_IKC_VAL_OUT) continue;
-            } else if (win != NULL && wrist_left(m, win, &sol[n0 + e * 2u])) {
-                continue;
-            } else {
-                /* within the window, or none */
-            }
+            if (win != NULL && wrist_left(m, win, &sol[n0 + e * 2u])) continue;
             if (e != 0u && n != n0 + 2u) *a = sol[n0 + 2u]; /* branch 0's wrist singular or left */
             v[8] = a->q[3];
             v[9] = a->q[4];
             wrist_arm(m, q_ref, a, v, &sol[n0 + 3u]);
-            if (conv) {
-                r = wrist_keep(m, q_ref, a, &v[6]);
-                if (r == WRIST_KEEP_GEN) return 0u;
-                n += r;
-            } else {
-                n += (a[1].flags == IKC_GAP) ? 1u : 2u;
-            }
+            n += (a[1].flags == IKC_GAP) ? 1u : 2u;
         }
     }
     return n;
@@ -662,25 +578,19 @@ DH_INLINE uint32_t wrist_solve(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, 
 
 uint32_t dh_ikc_wrist_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref, dh_ikc_sol_f32 *sol)
 {
-    return wrist_solve(m, T, q_ref, NULL, 0, sol);
+    return wrist_solve(m, T, q_ref, NULL, sol);
 }
 
 uint32_t dh_ikc_wrist_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *wq,
                                dh_ikc_sol_f32 *sol)
 {
-    return wrist_solve(m, T, wq, &wq[6], 0, sol);
+    return wrist_solve(m, T, wq, &wq[6], sol);
 }
 
 uint32_t dh_ikc_wrist_lim_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                                dh_ikc_sol_f32 *sol)
 {
-    return wrist_solve(m, T, q_ref, m->lim_w, 0, sol);
-}
-
-uint32_t dh_ikc_wrist_fin_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
-                               dh_ikc_sol_f32 *sol)
-{
-    return wrist_solve(m, T, q_ref, NULL, 1, sol);
+    return wrist_solve(m, T, q_ref, m->lim_w, sol);
 }
 
 #else
@@ -781,18 +691,6 @@ uint32_t dh_ikc_wrist_lim_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, 
                                dh_ikc_sol_f32 *sol)
 {
     return dh_ikc_wrist_f32_(m, T, q_ref, sol);
-}
-
-/* The in-place solver converts nothing: 0, the caller solves in full
- * (ikc_impl.h; dh_ikc_f32 does not prune in these builds). */
-uint32_t dh_ikc_wrist_fin_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
-                               dh_ikc_sol_f32 *sol)
-{
-    (void)m;
-    (void)T;
-    (void)q_ref;
-    (void)sol;
-    return 0u;
 }
 
 #endif /* WRIST_ONE_PASS */

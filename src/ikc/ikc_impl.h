@@ -140,16 +140,6 @@ uint32_t dh_ikc_par234_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T,
  * returns): with an FPU; soft float, every solution. */
 uint32_t dh_ikc_wrist_lim_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
                                dh_ikc_sol_f32 *sol);
-/* dh_ikc_f32 (opts 0) for an exact DH_IKC_WRIST_RRR model with m->wide 0,
- * with an FPU: each solution converted by dh_ikc_val_f32_ as it is found
- * (joint 1 before its elbow, joints 2-3 before their wrist, once for both
- * wrist solutions), a branch left at its first value outside the limits,
- * the solutions within them written into their final slots in the order
- * of dh_ikc_wrist_f32_: the solutions and count of dh_ikc_f32. 0 when none
- * is kept or a value needs the general conversion (the caller then solves
- * in full). Soft float: 0. */
-uint32_t dh_ikc_wrist_fin_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *q_ref,
-                               dh_ikc_sol_f32 *sol);
 static inline uint32_t dh_ikc_raw_win_f32_(const dh_ikc_model_f32 *m, const dh_mat4_f32 *T, const float *wq,
                                            dh_ikc_sol_f32 *sol)
 {
@@ -214,31 +204,6 @@ static inline dh_status dh_ikc_raw_q_(const dh_ikc_model_q *m, const int32_t *q_
     return dh_ikc_wrist_q_(m, q_ref, sol, count);
 }
 dh_status dh_ikc_finish_q_(const dh_ikc_model_q *m, const int32_t *q_ref, dh_ikc_sol_q *sol, uint32_t *n_sol);
-/* Calibrated robots, fixed (dh_ikc_refine_q.c): dh_ikc_calibrate_q_ is the
- * analysis of a six-revolute chain that no family fits exactly (m->a..ca
- * exact on entry): 1 with m->kind DH_IKC_PARALLEL_234, m->k, the idealised
- * chain in a..ca, the exact one in xa..xca, xw5, xframes and
- * m->calibrated = 1 when it is within the calibration tolerance of that
- * family; 0 with m's chain as on entry, kind DH_IKC_NONE, otherwise.
- * dh_ikc_refine_q_: the solutions sol[0..raw-1] (canonical values of
- * the idealised chain) not yet refined refined in place on the exact chain
- * for the target T (the user's frame), the converged ones flagged
- * DH_IKC_REFINED, the refined ones kept distinct and packed to the front;
- * returns their count. dh_ikc_restart_q_: shoulder sh (0 or
- * DH_IKC_SHOULDER_ALT) of the n refined solutions restarted from the
- * virtual target of one of its branches (of the other shoulder's when it
- * has none), its missing branches started in slots n, n + 1, ...; returns
- * the slots in use, for dh_ikc_refine_q_.
- * dh_ikc_q calls the three in turn after the solver has returned (each
- * from its own frame, for the stack bound). dh_ikc_args_q_ and
- * dh_ikc_args_rigid_q_ refuse a calibrated model (DH_ERR_UNAVAILABLE), so
- * that a caller of the three calls never takes unrefined solutions. */
-int dh_ikc_calibrate_q_(dh_ikc_model_q *m);
-uint32_t dh_ikc_refine_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_sol_q *sol, uint32_t raw);
-uint32_t dh_ikc_restart_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_sol_q *sol, uint32_t n, uint32_t sh);
-/* dh_ikc_restart_q_'s sh with this bit: a second restart, only of a
- * shoulder that has branches and none refined */
-#define DH_IKC_RESTART_AGAIN_ 0x100u
 
 /* Shared fixed helpers (defined in dh_ikc_common_q.c). */
 #define DH_IKC_Q16_180 ((int32_t)11796480)
@@ -248,10 +213,6 @@ uint32_t dh_ikc_restart_q_(const dh_ikc_model_q *m, const dh_frame_q *T, dh_ikc_
 int32_t dh_ikc_atan2_q_(int64_t y, int64_t x);
 /* acc + c v, |c| <= 2^30; factors 0 and +-2^30 cost no multiplication. */
 int64_t dh_ikc_mla_q_(int64_t acc, int32_t c, int32_t v);
-/* 1 when F is the identity frame, word by word (the same answer as a
- * memcmp with the identity frame: no padding; a fraction of its cost on
- * the cores whose memcmp goes byte by byte). */
-int dh_ikc_is_identity_q_(const dh_frame_q *F);
 /* The right shift that brings a non-negative int64 below 2^31. */
 unsigned dh_ikc_fit31_q_(int64_t v);
 /* x in (-540, 540] deg (Q16.16) -> (-180, 180]. */
@@ -308,43 +269,6 @@ static inline float dh_ikc_wrap_f32_(float x)
     if (x > 180.0f) x -= 360.0f;
     else if (x <= -180.0f) x += 360.0f;
     return x;
-}
-
-/* dh_ikc_f32's conversion (opts 0, m->wide 0: limits less than a turn
- * apart or none) of revolute joint i's canonical value c with offset o
- * and window [lo, hi] (m->win_lo[i], m->win_hi[i]): the value x = c - o
- * when in the window; else x one turn towards the reference (q_ref[i],
- * 0 when q_ref is NULL) when that is; else, with no limits or limits
- * within (-180, 180] and |x| < 540, x wrapped into (-180, 180] (the one
- * shift that can enter them) when within them, else outside them: the
- * verdicts and values of dh_ikc.c's general conversion. Returns DH_IKC_VAL_IN (*v
- * the joint value), DH_IKC_VAL_OUT, or DH_IKC_VAL_GEN (*v = x): the
- * general conversion decides (other limits, a value beyond +-540 or not
- * finite). */
-#define DH_IKC_VAL_OUT 0u
-#define DH_IKC_VAL_IN 1u
-#define DH_IKC_VAL_GEN 2u
-DH_INLINE uint32_t dh_ikc_val_f32_(const dh_ikc_model_f32 *m, const float *q_ref, uint32_t i, float c, float o,
-                                   float lo, float hi, float *v)
-{
-    const float x = c - o;
-    float ref, t;
-    *v = x;
-    if (x >= lo && x <= hi) return DH_IKC_VAL_IN;
-    ref = (q_ref != NULL) ? q_ref[i] : 0.0f;
-    t = (x > ref) ? x - 360.0f : x + 360.0f;
-    if (t >= lo && t <= hi) {
-        *v = t;
-        return DH_IKC_VAL_IN;
-    }
-    if (x > -540.0f && x <= 540.0f && (m->qmin[i] > m->qmax[i] || (m->qmin[i] > -180.0f && m->qmax[i] <= 180.0f))) {
-        /* no limits (the window is (-180, 180]) or limits within it: only
-         * x wrapped into (-180, 180] can lie within them */
-        t = dh_ikc_wrap_f32_(x);
-        *v = t;
-        return (t >= lo && t <= hi) ? DH_IKC_VAL_IN : DH_IKC_VAL_OUT;
-    }
-    return DH_IKC_VAL_GEN;
 }
 
 static inline int dh_ikc_is_identity_f32_(const dh_mat4_f32 *T)

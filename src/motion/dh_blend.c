@@ -55,8 +55,6 @@
 #define BLEND_RAD2DEG 57.295779513082321f
 #define BLEND_MARGIN 0.9990234375f    /* 1 - 2^-10: the rounding of the bounds */
 #define BLEND_WSHARE 0.984375f        /* 63/64 of wdmax for the tails, 1/64 for the cross term */
-#define JSEQ_ARC_SH 0.75f             /* a jerk-limited corner with an arc: the tangential share of amax, jmax */
-#define JSEQ_ARC_TURN 0.25f           /* ... and the turn (rad) of the arcs' tangents in its overlap */
 
 /* The limits and a radius: DH_ERR_NAN for a NaN/Inf one, then
  * DH_ERR_ARG for a limit <= 0 */
@@ -798,57 +796,42 @@ dh_status dh_blend_seq_eval_f32(const dh_blend_seq_f32 *sq, float t, dh_mat4_f32
     return DH_OK;
 }
 
-/* ---- jerk-limited blended sequences of lines and arcs --------------- */
+/* ---- jerk-limited blended sequences of lines ------------------------ */
 
 /* The jerk limits: DH_ERR_NAN for a NaN/Inf one, DH_ERR_ARG for one
- * <= 0 */
-static DH_NOINLINE dh_status jseq_check(const dh_cart_jerk_f32 *jk)
+ * <= 0 or an arc among the n paths p */
+static DH_NOINLINE dh_status jseq_check(const dh_path_f32 *p, uint32_t n, const dh_cart_jerk_f32 *jk)
 {
+    uint32_t k;
     if (!dh_isfinite_f32(jk->jmax) || !dh_isfinite_f32(jk->wjmax)) return DH_ERR_NAN;
     if (!(jk->jmax > 0.0f) || !(jk->wjmax > 0.0f)) return DH_ERR_ARG;
+    for (k = 0u; k < n; k++) {
+        if (p[k].kind != (uint32_t)DH_PATH_LINE) return DH_ERR_ARG;
+    }
     return DH_OK;
 }
 
-/* g->V, g->a, g->j = the bounds of s', s'', s''' of the path p within lim
- * and jk (those of dh_path_move_jerk_f32), all 0 when p has no motion,
- * from the tool point's bounds: a line's vmax, amax, jmax; an arc's held
- * in g->V, g->a, g->j by the caller (dh_motion_arc_jrates_f32_: they
- * leave room for its centripetal terms; called by the planners
- * themselves, its stack apart). g untouched unless DH_OK. */
+/* r = V, a, j: the bounds of s', s'', s''' of the line p within lim and
+ * jk (those of dh_path_move_jerk_f32 on a line); all 0 when p has no
+ * motion */
 static DH_NOINLINE dh_status jseq_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
-                                        const dh_cart_jerk_f32 *jk, dh_blend_seg_f32 *g)
+                                        const dh_cart_jerk_f32 *jk, float r[3])
 {
-    const int arc = blend_is_arc(p);
-    float r[3] = { 0.0f, 0.0f, 0.0f };
     dh_status st;
-    st = dh_motion_bound_f32_(&r[0], arc ? g->V : lim->vmax, p->length);
+    r[0] = 0.0f;
+    r[1] = 0.0f;
+    r[2] = 0.0f;
+    st = dh_motion_bound_f32_(&r[0], lim->vmax, p->length);
     if (st == DH_OK) st = dh_motion_bound_f32_(&r[0], lim->wmax, p->angle);
-    if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], arc ? g->a : lim->amax, p->length);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], lim->amax, p->length);
     if (st == DH_OK) st = dh_motion_bound_f32_(&r[1], lim->wdmax, p->angle);
-    if (st == DH_OK) st = dh_motion_bound_f32_(&r[2], arc ? g->j : jk->jmax, p->length);
+    if (st == DH_OK) st = dh_motion_bound_f32_(&r[2], jk->jmax, p->length);
     if (st == DH_OK) st = dh_motion_bound_f32_(&r[2], jk->wjmax, p->angle);
     if (st == DH_OK && (p->length > 0.0f || p->angle > 0.0f) &&
         (!(r[0] > 0.0f) || !(r[1] > 0.0f) || !(r[2] > 0.0f))) {
         st = DH_ERR_OVERFLOW;
     }
-    if (st == DH_OK) {
-        g->V = r[0];
-        g->a = r[1];
-        g->j = r[2];
-    }
     return st;
-}
-
-/* the rates of the path p within lim and jk into g (jseq_rates' status
- * and writes), an arc's tool point bounds first */
-DH_INLINE dh_status jseq_path_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
-                                    const dh_cart_jerk_f32 *jk, dh_blend_seg_f32 *g)
-{
-    if (blend_is_arc(p)) {
-        g->V = lim->vmax;
-        dh_motion_arc_jrates_f32_(p, lim, jk, &g->V, &g->a, &g->j);
-    }
-    return jseq_rates(p, lim, jk, g);
 }
 
 /* *tj, *ta: the jerk phases and the duration of the time-optimal
@@ -923,25 +906,29 @@ static DH_NOINLINE void jp_fill(dh_blend_seg_f32 *g, float V, float D)
     g->T = g->t1 + g->tv + g->t3;
 }
 
-/* jseq_bound's bound of one line's duration from its rates */
-static DH_NOINLINE float jseq_line_T(const dh_blend_seg_f32 *g)
+/* jseq_bound's bound of one line's duration from its rates r */
+static DH_NOINLINE float jseq_line_T(const float r[3])
 {
-    return 2.0f / g->V + 4.0f * (g->V / g->a + g->a / g->j + 2.0f * (dh_sqrtf_(g->V) / dh_sqrtf_(g->j)));
+    return 2.0f / r[0] + 4.0f * (r[0] / r[1] + r[1] / r[2] + 2.0f * (dh_sqrtf_(r[0]) / dh_sqrtf_(r[2])));
 }
 
-/* DH_ERR_OVERFLOW when a line's duration bound from its rates in seg
- * (jseq_rates), 2 / V + 4 (V / a + a / j + 2 sqrt(V / j)) (above any of
- * its scalings: each change of speed takes at most
+/* the statuses of the lines' rates (jseq_rates), then DH_ERR_OVERFLOW
+ * when a line's duration bound 2 / V + 4 (V / a + a / j + 2 sqrt(V / j))
+ * (above any of its scalings: each change of speed takes at most
  * V / a + a / j + 2 sqrt(V / j), the cruise at most 1 / V plus the
  * rounding of the bisection), or their sum, is not finite */
-static DH_NOINLINE dh_status jseq_bound(const dh_blend_seg_f32 *seg, uint32_t n)
+static DH_NOINLINE dh_status jseq_bound(const dh_path_f32 *p, uint32_t n, const dh_cart_limits_f32 *lim,
+                                        const dh_cart_jerk_f32 *jk)
 {
-    float T = 0.0f;
+    float r[3], T = 0.0f;
     uint32_t i;
-    for (i = 0u; i < n; i++) {
-        if (seg[i].a > 0.0f) T += jseq_line_T(&seg[i]);
+    dh_status st = DH_OK;
+    for (i = 0u; i < n && st == DH_OK; i++) {
+        st = jseq_rates(&p[i], lim, jk, r);
+        if (st == DH_OK && r[1] > 0.0f) T += jseq_line_T(r);
     }
-    return dh_isfinite_f32(T) ? DH_OK : DH_ERR_OVERFLOW;
+    if (st == DH_OK && !dh_isfinite_f32(T)) st = DH_ERR_OVERFLOW;
+    return st;
 }
 
 /* *x, *y scaled together so that wx x + wy y <= w (w > 0) */
@@ -967,83 +954,14 @@ typedef struct {
     float radius;
 } jseq_corner;
 
-/* t = the unit tangent of the path p at its end B (end 1) or A (end 0):
- * an arc's n x (p - centre) / rho, a line's direction (0 without length) */
-DH_INLINE void jseq_tangent(const dh_path_f32 *p, int end, float t[3])
-{
-    float u[3];
-    int i;
-    for (i = 0; i < 3; i++) {
-        t[i] = (p->length > 0.0f) ? (DH_M4(&p->B, i, 3) - DH_M4(&p->A, i, 3)) / p->length : 0.0f;
-        u[i] = p->u0[i] + ((end != 0) ? DH_M4(&p->B, i, 3) - DH_M4(&p->A, i, 3) : 0.0f);
-    }
-    if (!blend_is_arc(p)) return;
-    t[0] = (p->n[1] * u[2] - p->n[2] * u[1]) / p->radius;
-    t[1] = (p->n[2] * u[0] - p->n[0] * u[2]) / p->radius;
-    t[2] = (p->n[0] * u[1] - p->n[1] * u[0]) / p->radius;
-}
-
 /* The bounds of line 1's deceleration (g[0]->b1, k1) and line 2's
- * acceleration (g[1]->b0, k0) at the corner c lowered to
- * L_i a_i' <= ca and L_i j_i' <= cj: between lines
- * ca = amax / max(1, |d2 - d1|) and cj = jmax / max(1, |d1 + d2|) (d_i
- * the directions); at a corner with an arc 3/4 of amax / max(1,
- * |t2 - t1| + turn) and of jmax / max(1, |t1 + t2| + turn), t_i the
- * paths' unit tangents at the corner, turn = JSEQ_ARC_TURN: in the
- * overlap each tangent stays within its arc's turn phi_i of its corner
- * value (|t(phi) - t(0)| = 2 sin(phi / 2) <= phi), phi1 + phi2 <= turn
- * (jseq_near); both times 1 - 2^-10 (jseq_red then marks the corner or
- * puts it back at rest). Called by the planners themselves (its stack
- * apart from the steps'). */
-static DH_NOINLINE void jseq_caps(const jseq_corner *c)
-{
-    float t1[3], t2[3], d = 0.0f, e = 0.0f, x, sh = BLEND_MARGIN, turn = 0.0f;
-    float *b[4];
-    int i;
-    jseq_tangent(c->p[0], 1, t1);
-    jseq_tangent(c->p[1], 0, t2);
-    if (blend_is_arc(c->p[0]) || blend_is_arc(c->p[1])) {
-        sh *= JSEQ_ARC_SH;
-        turn = JSEQ_ARC_TURN;
-    }
-    for (i = 0; i < 3; i++) {
-        x = t2[i] - t1[i];
-        d += x * x;
-        x = t2[i] + t1[i];
-        e += x * x;
-    }
-    d = dh_sqrtf_(d) + turn;
-    e = dh_sqrtf_(e) + turn;
-    d = c->lim->amax * (sh / ((d > 1.0f) ? d : 1.0f));
-    e = c->jk->jmax * (sh / ((e > 1.0f) ? e : 1.0f));
-    b[0] = &c->g[0]->b1;
-    b[1] = &c->g[0]->k1;
-    b[2] = &c->g[1]->b0;
-    b[3] = &c->g[1]->k0;
-    for (i = 0; i < 2; i++) {
-        x = c->p[i]->length;
-        if (x * *b[2 * i] > d) *b[2 * i] = d / x;
-        if (x * *b[2 * i + 1] > e) *b[2 * i + 1] = e / x;
-    }
-}
-
-/* the corner c at rest: its lines' own bounds (a, j), tb1 0 */
-static DH_NOINLINE void jseq_unmark(const jseq_corner *c)
-{
-    c->g[0]->b1 = c->g[0]->a;
-    c->g[0]->k1 = c->g[0]->j;
-    c->g[1]->b0 = c->g[1]->a;
-    c->g[1]->k0 = c->g[1]->j;
-    c->g[0]->tb1 = 0.0f;
-}
-
-/* The bounds of line 1's deceleration (g[0]->b1, k1) and line 2's
- * acceleration (g[1]->b0, k0) at the corner c, lowered by jseq_caps (in
- * the overlap the tool's tangential acceleration is x2 t2 - x1 t1 and its
- * jerk y1 t1 + y2 t2 with x_i, y_i in [0, L_i a_i'] and [0, L_i j_i']:
- * norms convex, at most their largest value at a vertex of the box): at
- * rest (jseq_unmark, g[0]->tb1 = 0) when the radius is 0 or a line has
- * no motion, else th1 a1' + th2 a2' <= (63/64) wdmax
+ * acceleration (g[1]->b0, k0) at the corner c, set to the lines' own by
+ * jseq_unmark: at rest when the radius is 0 or a line has no motion
+ * (g[0]->tb1 = 0), else lowered to L_i a_i' <= amax / max(1, |d2 - d1|)
+ * and L_i j_i' <= jmax / max(1, |d1 + d2|) (in the overlap the tool's
+ * acceleration is x2 d2 - x1 d1 and its jerk y1 d1 + y2 d2 with x_i, y_i
+ * in [0, L_i a_i'] and [0, L_i j_i']: norms convex, at most their largest
+ * value at a vertex of the box), then th1 a1' + th2 a2' <= (63/64) wdmax
  * and th1 j1' + th2 j2' <= (63/64) wjmax (the cross terms of the composed
  * rotation get the last 1/64 through tb), g[0]->tb1 = 1 marking the
  * corner for jseq_cost */
@@ -1051,13 +969,27 @@ static DH_NOINLINE void jseq_red(const jseq_corner *c)
 {
     dh_blend_seg_f32 *const *g = c->g;
     const dh_path_f32 *const *p = c->p;
-    if (!(c->radius > 0.0f && g[0]->b1 > 0.0f && g[1]->b0 > 0.0f)) {
-        jseq_unmark(c);
-        return;
+    float ca = c->lim->amax * BLEND_MARGIN, cj = c->jk->jmax * BLEND_MARGIN, x;
+    float *b[4];
+    int i;
+    b[0] = &g[0]->b1;
+    b[1] = &g[0]->k1;
+    b[2] = &g[1]->b0;
+    b[3] = &g[1]->k0;
+    g[0]->tb1 = (c->radius > 0.0f && *b[0] > 0.0f && *b[2] > 0.0f) ? 1.0f : 0.0f;
+    if (!(g[0]->tb1 > 0.0f)) return;
+    if (p[0]->length > 0.0f && p[1]->length > 0.0f) {
+        x = blend_turn(p[0], p[1]);
+        if (x > 1.0f) ca /= x;
+        x = 4.0f - x * x; /* |d1 + d2|^2 of unit d1, d2 */
+        if (x > 1.0f) cj /= dh_sqrtf_(x);
     }
-    g[0]->tb1 = 1.0f;
-    jseq_scale2(&g[0]->b1, &g[1]->b0, p[0]->angle, p[1]->angle, BLEND_WSHARE * c->lim->wdmax);
-    jseq_scale2(&g[0]->k1, &g[1]->k0, p[0]->angle, p[1]->angle, BLEND_WSHARE * c->jk->wjmax);
+    for (i = 0; i < 2; i++) {
+        if (p[i]->length * *b[2 * i] > ca) *b[2 * i] = ca / p[i]->length;
+        if (p[i]->length * *b[2 * i + 1] > cj) *b[2 * i + 1] = cj / p[i]->length;
+    }
+    jseq_scale2(b[0], b[2], p[0]->angle, p[1]->angle, BLEND_WSHARE * c->lim->wdmax);
+    jseq_scale2(b[1], b[3], p[0]->angle, p[1]->angle, BLEND_WSHARE * c->jk->wjmax);
 }
 
 /* s'' at the time r in [0, ta / 2] of the change of speed from 0 to v
@@ -1070,25 +1002,18 @@ DH_INLINE float jt_a(float v, float tj, float ta, float r)
     return (r < tj) ? (ap / tj) * r : ap;
 }
 
-/* the turn x / rho (rad) of the tangent of the path p over its arc
- * length x (a line: 0) */
-DH_INLINE float jseq_turn(const dh_path_f32 *p, float x)
-{
-    return blend_is_arc(p) ? x / p->radius : 0.0f;
-}
-
 /* 1 when the tool stays within the radius of the corner c over its
  * overlap tb: L1 x1 + L2 x2 <= radius, x_i the s each line covers in tb
- * (jt_x; jseq_tb's first test, apart from jseq_ok's frame), and the
- * arcs' tangents turn by L1 x1 / rho1 + L2 x2 / rho2 <= JSEQ_ARC_TURN
- * in it (jseq_caps) */
+ * (jt_x; jseq_tb's first test, apart from jseq_ok's frame) */
 static DH_NOINLINE int jseq_near(const jseq_corner *c, float tb)
 {
     dh_blend_seg_f32 *const *g = c->g;
     const dh_path_f32 *const *p = c->p;
-    const float x1 = p[0]->length * jt_x(0.0f, g[0]->v, g[0]->tj3, g[0]->t3, tb);
-    const float x2 = p[1]->length * jt_x(0.0f, g[1]->v, g[1]->tj1, g[1]->t1, tb);
-    return (x1 + x2 <= c->radius && jseq_turn(p[0], x1) + jseq_turn(p[1], x2) <= JSEQ_ARC_TURN) ? 1 : 0;
+    return (p[0]->length * jt_x(0.0f, g[0]->v, g[0]->tj3, g[0]->t3, tb) +
+                p[1]->length * jt_x(0.0f, g[1]->v, g[1]->tj1, g[1]->t1, tb) <=
+            c->radius)
+               ? 1
+               : 0;
 }
 
 /* 1 when the overlap tb of the corner c (g[0]'s deceleration v, tj3, t3
@@ -1113,32 +1038,6 @@ static DH_NOINLINE int jseq_ok(const jseq_corner *c, float tb)
     return (w2 * w2) * w1 <= (BLEND_RAD2DEG * BLEND_RAD2DEG) * (c->jk->wjmax * 0.0078125f);
 }
 
-/* 1 when the overlap tb of the corner c keeps the centripetal terms of
- * its arcs within the last 1/4 of amax and jmax (jseq_caps gives the
- * tangential ones 3/4; docs/design.md): with x_i = L_i u_i the tool
- * speed on path i at the overlap's inner end (the largest in it),
- * A_i = L_i times its lowered s'' bound and rho_i its radius (a line: no
- * term), sum x_i^2 / rho_i <= amax / 4 and
- * sum (x_i^3 / rho_i^2 + 3 x_i A_i / rho_i) <= jmax / 4 */
-static DH_NOINLINE int jseq_arc_ok(const jseq_corner *c, float tb)
-{
-    dh_blend_seg_f32 *const *g = c->g;
-    const dh_path_f32 *const *p = c->p;
-    float x, y, A = 0.0f, J = 0.0f;
-    int i;
-    for (i = 0; i < 2; i++) {
-        const dh_blend_seg_f32 *h = g[i];
-        const float tj = (i == 0) ? h->tj3 : h->tj1, ta = (i == 0) ? h->t3 : h->t1;
-        if (blend_is_arc(p[i])) {
-            x = p[i]->length * jt_v(h->v, tj, ta, tb);
-            y = x / p[i]->radius;
-            A += x * y;
-            J += y * (x * y + 3.0f * (p[i]->length * ((i == 0) ? h->b1 : h->b0)));
-        }
-    }
-    return (A <= (1.0f - JSEQ_ARC_SH) * c->lim->amax && J <= (1.0f - JSEQ_ARC_SH) * c->jk->jmax) ? 1 : 0;
-}
-
 /* the overlap of the corner c (jseq_ok): the largest tb up to half of
  * both changes of speed that jseq_ok accepts (each of its terms grows
  * with tb: bisection), times 1 - 2^-10; 0 when none */
@@ -1148,7 +1047,7 @@ static DH_NOINLINE float jseq_tb(const jseq_corner *c)
     float lo = 0.0f, hi = H, m = H;
     int i;
     for (i = 0; i < 200 && H > 0.0f; i++) {
-        if (jseq_near(c, m) != 0 && jseq_ok(c, m) != 0 && jseq_arc_ok(c, m) != 0) {
+        if (jseq_near(c, m) != 0 && jseq_ok(c, m) != 0) {
             lo = m;
             if (!(m < H)) break;
         } else {
@@ -1162,11 +1061,15 @@ static DH_NOINLINE float jseq_tb(const jseq_corner *c)
 }
 
 /* g's jerk-limited scaling (jp_fill over s = 1) from its line's rates
- * (g->V; jseq_rates) and the bounds of its acceleration (b0, k0) and
- * deceleration (b1, k1) */
-static DH_NOINLINE void jseq_prof(dh_blend_seg_f32 *g)
+ * and the bounds of its acceleration (b0, k0) and deceleration (b1, k1) */
+static DH_NOINLINE void jseq_prof(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                                  const dh_cart_jerk_f32 *jk)
 {
-    jp_fill(g, g->V, 1.0f);
+    float r[3];
+    (void)jseq_rates(p, lim, jk, r);
+    jp_fill(g, r[0], 1.0f);
+    g->a = r[1];
+    g->j = r[2];
 }
 
 /* g[0]->dev (scratch until jseq_overlap) = the time the lowered bounds
@@ -1179,16 +1082,31 @@ static DH_NOINLINE void jseq_cost(const jseq_corner *c, int i)
 {
     dh_blend_seg_f32 *g = c->g[i];
     float *b = (i == 0) ? &g->b1 : &g->b0, *k = (i == 0) ? &g->k1 : &g->k0;
-    float x = *b, y = *k, T;
-    *b = g->a;
-    *k = g->j;
-    jp_fill(g, g->V, 1.0f);
+    float r[3], x = *b, y = *k, T;
+    (void)jseq_rates(c->p[i], c->lim, c->jk, r);
+    *b = r[1];
+    *k = r[2];
+    jp_fill(g, r[0], 1.0f);
     T = g->T;
     *b = x;
     *k = y;
-    jp_fill(g, g->V, 1.0f);
+    jp_fill(g, r[0], 1.0f);
     x = g->T - T;
     c->g[0]->dev = (i == 0) ? x : c->g[0]->dev + x;
+}
+
+
+/* the corner c at rest: its lines' own bounds, tb1 0 */
+static DH_NOINLINE void jseq_unmark(const jseq_corner *c)
+{
+    float r[3];
+    (void)jseq_rates(c->p[0], c->lim, c->jk, r);
+    c->g[0]->b1 = r[1];
+    c->g[0]->k1 = r[2];
+    (void)jseq_rates(c->p[1], c->lim, c->jk, r);
+    c->g[1]->b0 = r[1];
+    c->g[1]->k0 = r[2];
+    c->g[0]->tb1 = 0.0f;
 }
 
 /* the overlap tb of the corner c (0: at rest): tb1 = tb0 = tb, the s'
@@ -1218,15 +1136,19 @@ static void jseq_at(jseq_corner *c, dh_blend_seg_f32 *seg, const dh_path_f32 *p,
 
 /* the first line's acceleration and the last line's deceleration at their
  * own bounds, at rest */
-static DH_NOINLINE void jseq_ends(dh_blend_seg_f32 *seg, uint32_t n)
+static DH_NOINLINE void jseq_ends(dh_blend_seg_f32 *seg, const dh_path_f32 *p, uint32_t n,
+                                  const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk)
 {
-    seg[0].b0 = seg[0].a;
-    seg[0].k0 = seg[0].j;
+    float r[3];
+    (void)jseq_rates(&p[0], lim, jk, r);
+    seg[0].b0 = r[1];
+    seg[0].k0 = r[2];
     seg[0].tb0 = 0.0f;
     seg[0].u0 = 0.0f;
     seg[0].e0 = 0.0f;
-    seg[n - 1u].b1 = seg[n - 1u].a;
-    seg[n - 1u].k1 = seg[n - 1u].j;
+    (void)jseq_rates(&p[n - 1u], lim, jk, r);
+    seg[n - 1u].b1 = r[1];
+    seg[n - 1u].k1 = r[2];
     seg[n - 1u].tb1 = 0.0f;
     seg[n - 1u].u1 = 0.0f;
     seg[n - 1u].e1 = 0.0f;
@@ -1250,18 +1172,16 @@ dh_status dh_blend_seq_plan_jerk_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg
     DH_ASSERT(sq != NULL && seg != NULL && p != NULL && lim != NULL && jerk != NULL && (n <= 1u || radius != NULL));
     if (n == 0u) return DH_ERR_ARG;
     st = seq_check(p, n, radius, lim);
-    if (st == DH_OK) st = jseq_check(jerk);
-    for (k = 0u; k < n && st == DH_OK; k++) st = jseq_path_rates(&p[k], lim, jerk, &seg[k]);
-    if (st == DH_OK) st = jseq_bound(seg, n);
+    if (st == DH_OK) st = jseq_check(p, n, jerk);
+    if (st == DH_OK) st = jseq_bound(p, n, lim, jerk);
     if (st != DH_OK) return st;
     c.lim = lim;
     c.jk = jerk;
     for (pass = 0; pass < 3; pass++) {
-        jseq_ends(seg, n);
+        jseq_ends(seg, p, n, lim, jerk);
         for (k = 0u; k + 1u < n; k++) {
             jseq_at(&c, seg, p, k, (pass == 1) ? radius[k] : 0.0f);
             jseq_unmark(&c);
-            jseq_caps(&c);
             jseq_red(&c);
         }
         for (k = 0u; k + 1u < n; k++) {
@@ -1272,7 +1192,7 @@ dh_status dh_blend_seq_plan_jerk_f32(dh_blend_seq_f32 *sq, dh_blend_seg_f32 *seg
                 if (!(seg[k].dev < jseq_tb(&c))) jseq_unmark(&c);
             }
         }
-        for (k = 0u; k < n; k++) jseq_prof(&seg[k]);
+        for (k = 0u; k < n; k++) jseq_prof(&seg[k], &p[k], lim, jerk);
         for (k = 0u; k + 1u < n; k++) {
             jseq_at(&c, seg, p, k, radius[k]);
             jseq_overlap(&c, (seg[k].tb1 > 0.0f) ? jseq_tb(&c) : 0.0f);
@@ -1401,26 +1321,17 @@ void dh_blend_pose_rot_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat
 
 
 
-/* ---- the queue's jerk-limited blended lines and arcs (dh_queue.c) --- */
+/* ---- the queue's jerk-limited blended lines (dh_queue.c) ------------ */
 
-void dh_blend_jrates_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
-                          const dh_cart_jerk_f32 *jk)
+void dh_blend_jline_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                         const dh_cart_jerk_f32 *jk, float D)
 {
-    g->V = 0.0f;
-    g->a = 0.0f;
-    g->j = 0.0f;
-    (void)jseq_path_rates(p, lim, jk, g);
-}
-
-void dh_blend_jline_f32_(dh_blend_seg_f32 *g, const dh_blend_seg_f32 *r, float cap, float D)
-{
-    g->V = r->V * cap;
-    g->a = r->a;
-    g->j = r->j;
-    g->b0 = g->a;
-    g->k0 = g->j;
-    g->b1 = g->a;
-    g->k1 = g->j;
+    float r[3];
+    (void)jseq_rates(p, lim, jk, r);
+    g->b0 = r[1];
+    g->k0 = r[2];
+    g->b1 = r[1];
+    g->k1 = r[2];
     g->tb0 = 0.0f;
     g->u0 = 0.0f;
     g->e0 = 0.0f;
@@ -1429,7 +1340,9 @@ void dh_blend_jline_f32_(dh_blend_seg_f32 *g, const dh_blend_seg_f32 *r, float c
     g->e1 = 0.0f;
     g->t0 = 0.0f;
     g->dev = 0.0f;
-    jp_fill(g, g->V, D);
+    jp_fill(g, r[0], D);
+    g->a = r[1];
+    g->j = r[2];
 }
 
 /* The seq planner's corner (jseq_red, jseq_cost, jseq_tb, jseq_overlap)
@@ -1452,9 +1365,8 @@ float dh_blend_jcorner_f32_(dh_queue_item_f32 *i1, dh_queue_item_f32 *i2)
     c.lim = lim;
     c.jk = jk;
     c.radius = i1->radius;
-    if (blend_is_path(p1) && blend_is_path(p2) && blend_joins(p1, p2)) {
+    if (p1->kind == (uint32_t)DH_PATH_LINE && p2->kind == (uint32_t)DH_PATH_LINE && blend_joins(p1, p2)) {
         jseq_unmark(&c);
-        jseq_caps(&c);
         jseq_red(&c);
     } else {
         g[0]->tb1 = 0.0f;
@@ -1464,13 +1376,13 @@ float dh_blend_jcorner_f32_(dh_queue_item_f32 *i1, dh_queue_item_f32 *i2)
         jseq_cost(&c, 1);
         if (!(g[0]->dev < jseq_tb(&c))) jseq_unmark(&c);
     }
-    jseq_prof(g[0]);
-    jseq_prof(g[1]);
+    jseq_prof(g[0], p1, lim, jk);
+    jseq_prof(g[1], p2, lim, jk);
     if (g[0]->tb1 > 0.0f && (!(g[0]->tb0 > 0.0f) || dh_feq_f32(g[0]->v, v))) tb = jseq_tb(&c);
     if (!(tb > 0.0f)) {
         jseq_unmark(&c);
-        jseq_prof(g[0]);
-        jseq_prof(g[1]);
+        jseq_prof(g[0], p1, lim, jk);
+        jseq_prof(g[1], p2, lim, jk);
     }
     jseq_overlap(&c, tb);
     if (!(tb > 0.0f)) g[0]->dev = 0.0f;

@@ -26,20 +26,6 @@
  * the joints can follow. A tool away from the path's start is brought onto
  * it with the clock at 0 (s' = 0 there: r falls to 0 and rises back to
  * its ceiling in one period each, and the ceiling is not lowered).
- *
- * Lag of a jerk-limited path move. A seven-phase move keeps r at 1 (a
- * change of r adds 3 p'' r r' + p' r'' to the jerk of s, beyond its
- * limit). A period whose tracker is not OK while the path moves starts a
- * brake of s from its s, s', s'' at the clock (dh_brake.c, within the
- * plan's peaks of |s''| and |s'''|), which always runs to its end; at rest
- * the target holds while the tracker is not OK, and the first OK period
- * there plans the rest of the path from rest to rest within the plan's
- * peaks, its peak of s' capped at MOVE_CEIL times the s' the brake began
- * at (lowered by each episode, never below MOVE_CAP_MIN of the first
- * plan's peak, for the rest of the move; r reports the cap). The brake
- * starts from the plan's state and the new plan from the brake's rest, so
- * s, s' and s'' run on continuously and s''' stays within the peak
- * through every switch (docs/design.md, "Motion").
  */
 #include "dhmath/motion.h"
 #include "../internal/dh_build.h"
@@ -53,8 +39,6 @@
 #define MOVE_CEIL 0.875f
 /* the ceiling's relative rise per second of OK periods at it (1/s) */
 #define MOVE_CREEP 2.0f
-/* the least cap of a jerk-limited path move's s', relative to its first plan's peak */
-#define MOVE_CAP_MIN 0.015625f
 
 /* 1 when mv holds a move of the given kind with a consistent clock and
  * override */
@@ -64,7 +48,6 @@ static int move_holds(const dh_move_f32 *mv, uint32_t kind)
     if (!dh_isfinite_f32(mv->dur) || !(mv->dur >= 0.0f)) return 0;
     if (!(mv->clock >= 0.0f) || !(mv->clock <= mv->dur)) return 0;
     if (!(mv->feed >= 0.0f) || !(mv->feed <= 1.0f) || !(mv->fcap >= 0.0f) || !(mv->fcap <= 1.0f)) return 0;
-    if (mv->bst > 2u) return 0;
     return (kind != (uint32_t)DH_MOVE_JOINT) || (mv->n >= 1u && mv->n <= (uint32_t)DH_MAX_JOINTS);
 }
 
@@ -84,19 +67,12 @@ static float move_next_clock(const dh_move_f32 *mv, float dt)
     return (c < mv->dur) ? c : mv->dur;
 }
 
-/* the override at its start: r = its ceiling = 1, on its plan from s = 0 */
+/* the override at its start: r = its ceiling = 1 */
 static void move_feed_init(dh_move_f32 *mv)
 {
     mv->feed = 1.0f;
     mv->fcap = 1.0f;
     mv->lag = 0u;
-    mv->s0 = 0.0f;
-    mv->vs = mv->prof[0].v;
-    mv->as = mv->prof[0].a;
-    mv->js = mv->prof[0].j;
-    mv->tb = 0.0f;
-    mv->tbend = 0.0f;
-    mv->bst = 0u;
 }
 
 dh_status dh_move_joint_f32(dh_move_f32 *mv, uint32_t n, const float *q0, const float *q1, const float *vmax,
@@ -170,33 +146,14 @@ dh_status dh_move_path_f32(dh_move_f32 *mv, const dh_path_f32 *p, const dh_cart_
     return dh_move_path_jerk_f32(mv, p, lim, NULL);
 }
 
-float dh_motion_move_s_f32_(const dh_move_f32 *mv, float c, float *sd, float *sdd)
-{
-    float p, s;
-    (void)dh_profile_eval_f32(&mv->prof[0], c, &p, sd, sdd);
-    s = mv->s0 + p;
-    if ((c >= mv->dur && !dh_feq_f32(mv->prof[0].d, 0.0f)) || s > 1.0f) s = 1.0f;
-    return s;
-}
-
-float dh_motion_move_now_f32_(const dh_move_f32 *mv)
-{
-    float sd, sdd;
-    if (mv->bst != 0u) return dh_motion_brake_at_f32_(&mv->brk, mv->tb, mv->tbend);
-    return dh_motion_move_s_f32_(mv, mv->clock, &sd, &sdd);
-}
-
-/* dh_path_move_eval_f32's frame at s now (its plan's, or its brake's),
- * from its two steps (s, then the path at s): one call level less on the
- * stack */
+/* dh_path_move_eval_f32's frame at the clock, from its two steps (the
+ * profile's s, then the path at s): one call level less on the stack */
 dh_status dh_move_target_f32(const dh_move_f32 *mv, dh_mat4_f32 *T)
 {
-    float s;
+    float s, sd, sdd;
     DH_ASSERT(mv != NULL && T != NULL);
     if (!move_holds(mv, (uint32_t)DH_MOVE_PATH) || !dh_motion_path_ok_f32_(&mv->path)) return DH_ERR_ARG;
-    if (!dh_isfinite_f32(mv->prof[0].d)) return DH_ERR_ARG;
-    s = dh_motion_move_now_f32_(mv);
-    if (!dh_isfinite_f32(s)) return DH_ERR_ARG;
+    if (dh_profile_eval_f32(&mv->prof[0], mv->clock, &s, &sd, &sdd) != DH_OK || !dh_isfinite_f32(s)) return DH_ERR_ARG;
     return dh_path_eval_f32(&mv->path, s, T);
 }
 
@@ -282,108 +239,27 @@ float dh_motion_feed_goal_f32_(dh_move_f32 *mv, float dt, int ok, float up, floa
     return (r - dn > goal) ? r - dn : goal;
 }
 
-/* The brake on a lag of the jerk-limited path move mv from s, s', s''
- * at its clock (the file's comment), at its time 0; the cap of s'
- * lowered */
-static DH_NOINLINE void move_jerk_brake(dh_move_f32 *mv)
-{
-    float sd, sdd;
-    mv->brk.q = dh_motion_move_s_f32_(mv, mv->clock, &sd, &sdd);
-    mv->brk.v = sd;
-    mv->brk.a = sdd;
-    mv->brk.ap = mv->as;
-    mv->brk.j = mv->js;
-    mv->tbend = dh_motion_brake_plan_f32_(&mv->brk, 1.0f);
-    mv->tb = 0.0f;
-    mv->bst = 1u;
-    dh_motion_lag_cap_f32_(mv, sd, mv->vs);
-}
-
-void dh_motion_lag_cap_f32_(dh_move_f32 *mv, float sd, float v)
-{
-    float cap = MOVE_CEIL * (sd / v);
-    if (!(cap >= MOVE_CAP_MIN)) cap = MOVE_CAP_MIN;
-    if (cap < mv->fcap) mv->fcap = cap;
-    mv->feed = mv->fcap;
-}
-
-/* The resume of the jerk-limited path move mv at rest on its brake (the
- * file's comment), its first step: mv->s0 = where the brake left s; the
- * distance left, for the plan of the rest (dh_move_advance_f32 calls the
- * planner itself, one frame less under it: the stack budget) */
-static DH_NOINLINE float move_jerk_rest(dh_move_f32 *mv)
-{
-    const float s0 = dh_motion_brake_at_f32_(&mv->brk, mv->tbend, mv->tbend);
-    mv->s0 = (s0 < 1.0f) ? s0 : 1.0f;
-    return 1.0f - mv->s0;
-}
-
-/* A period of the jerk-limited path move mv (the file's comment) but the
- * brake's and the resume's plans: *done 1 when it is complete; on its
- * brake (its period of dt run), or on its plan again after a resume */
-static DH_NOINLINE void move_jerk_period(dh_move_f32 *mv, float dt, int ok, int *done)
-{
-    mv->lag = 0u;
-    if (ok == 0) mv->lag = 1u;
-    if (mv->bst == 1u) {
-        /* the brake runs to its end whatever the tracker reports */
-        mv->tb = (mv->tb + dt < mv->tbend) ? mv->tb + dt : mv->tbend;
-        if (!(mv->tb < mv->tbend)) mv->bst = 2u;
-    } else if (ok == 0) {
-        /* held */
-    } else if (mv->bst == 2u) {
-        /* resumed: the rest of the path is planned in prof[0] */
-        mv->dur = mv->prof[0].T;
-        mv->clock = 0.0f;
-        mv->bst = 0u;
-        mv->clock = move_next_clock(mv, dt);
-    } else if (mv->clock < mv->dur) {
-        mv->clock = move_next_clock(mv, dt);
-    } else {
-        *done = 1;
-    }
-}
-
-dh_status dh_motion_advance_f32_(dh_move_f32 *mv, float dt, int ok, int *done)
-{
-    dh_status st;
-    *done = 0;
-    if (mv->prof[0].kind == (uint32_t)DH_PROFILE_SCURVE) {
-        /* the plans are made from here, one frame above the planners */
-        if (ok != 0 && mv->bst == 2u) {
-            st = dh_profile_scurve_f32(&mv->prof[0], move_jerk_rest(mv), mv->vs * mv->fcap, mv->as, mv->js);
-            if (st != DH_OK) return st;
-        } else if (ok == 0 && mv->bst == 0u && mv->clock > 0.0f && mv->clock < mv->dur) {
-            move_jerk_brake(mv);
-        } else {
-            /* on its plan, brake or rest */
-        }
-        move_jerk_period(mv, dt, ok, done);
-    } else if (ok != 0 && !(mv->clock < mv->dur)) {
-        *done = 1;
-    } else {
-        mv->feed = move_feed_next(mv, dt, ok);
-        mv->clock = move_next_clock(mv, mv->feed * dt);
-    }
-    return DH_OK;
-}
-
-/* The checks, then the period (dh_motion_advance_f32_, which the queue
- * calls itself) */
 dh_status dh_move_advance_f32(dh_move_f32 *mv, float dt, dh_track_state state, dh_move_report_f32 *rep)
 {
     dh_status st;
-    int done, ok = 0;
+    int done = 0, ok = 0, held = 1;
     DH_ASSERT(mv != NULL && rep != NULL);
     st = move_period_ok(mv, (uint32_t)DH_MOVE_PATH, dt);
     if (st != DH_OK) return st;
     if (state != DH_TRACK_OK && state != DH_TRACK_LAGGING && state != DH_TRACK_UNREACHABLE) return DH_ERR_ARG;
-    if (state == DH_TRACK_OK) ok = 1;
-    st = dh_motion_advance_f32_(mv, dt, ok, &done);
-    if (st != DH_OK) return st;
+    if (state == DH_TRACK_OK) {
+        ok = 1;
+        held = 0;
+    }
+    if (ok != 0 && !(mv->clock < mv->dur)) {
+        done = 1;
+    } else {
+        mv->feed = move_feed_next(mv, dt, ok);
+        mv->clock = move_next_clock(mv, mv->feed * dt);
+    }
     rep->clock = mv->clock;
     rep->feed = mv->feed;
-    rep->held = 1 - ok;
+    rep->held = held;
     rep->done = done;
     return DH_OK;
 }

@@ -385,8 +385,8 @@ void dh_motion_arc_rates_f32_(const dh_path_f32 *p, float amax, float *V, float 
 /* The speed and tangential acceleration of the arc p's tool point within
  * lim (and within jk's jmax when jk is not NULL), lowering *V and setting
  * *At; with jk, the tangential jerk bound into *Jt */
-DH_INLINE void path_arc_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk,
-                            float *V, float *At, float *Jt)
+static void path_arc_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk,
+                           float *V, float *At, float *Jt)
 {
     float R = p->radius, r;
     if (jk != NULL) {
@@ -399,13 +399,6 @@ DH_INLINE void path_arc_rates(const dh_path_f32 *p, const dh_cart_limits_f32 *li
         if (r < *At) *At = r;
         *Jt = 0.5f * jk->jmax;
     }
-}
-
-/* motion_impl.h */
-void dh_motion_arc_jrates_f32_(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk,
-                               float *V, float *At, float *Jt)
-{
-    path_arc_rates(p, lim, jk, V, At, Jt);
 }
 
 /* The speed, acceleration and (jk != NULL) jerk bounds of s for the path

@@ -20,8 +20,15 @@
  * tracker to rest within its own bounds.
  *
  * Brake. Each coordinate (a joint, or s of a path) brakes from its
- * velocity and acceleration within its deceleration and jerk
- * (dh_brake.c), never past the move's end.
+ * velocity v and acceleration a (taken along the travel, v >= 0) in three
+ * phases: jerk -j until the acceleration is -ap, -ap held, jerk +j back
+ * to 0 exactly as the velocity reaches 0, where
+ * ap = min(A, sqrt(j v + a^2 / 2)) is the least peak deceleration that
+ * stops in time (the shortest stop within A and j). Without a jerk limit
+ * the deceleration A is applied at once (v / A, distance v^2 / (2 A)).
+ * The distance is at most the one the plan had left (the plan itself is
+ * one way to stop within the same limits), and is capped there against
+ * rounding, so a brake never passes the move's end.
  */
 #include "dhmath/motion.h"
 #include "../internal/dh_build.h"
@@ -103,8 +110,7 @@ dh_status dh_queue_init_f32(dh_queue_f32 *qu, dh_queue_item_f32 *items, uint32_t
     qu->mv.dur = 0.0f;
     qu->mv.feed = 1.0f;
     qu->mv.fcap = 1.0f;
-    qu->mv.s0 = 0.0f;
-    qu->mv.bst = 0u;
+    qu->s0 = 0.0f;
     qu->vs = 0.0f;
     qu->as = 0.0f;
     qu->tb = 0.0f;
@@ -114,7 +120,6 @@ dh_status dh_queue_init_f32(dh_queue_f32 *qu, dh_queue_item_f32 *items, uint32_t
     qu->braked = 0u;
     qu->bmode = QB_NONE;
     qu->stopq = 0u;
-    qu->lagstop = 0u;
     return DH_OK;
 }
 
@@ -261,8 +266,7 @@ static DH_NOINLINE void queue_item_jline(dh_queue_item_f32 *it, const dh_cart_je
 {
     it->jerk = 2u;
     it->jk = *jerk;
-    dh_blend_jrates_f32_(&it->seg, &it->path, &it->lim, &it->jk);
-    dh_blend_jline_f32_(&it->seg, &it->seg, 1.0f, 1.0f);
+    dh_blend_jline_f32_(&it->seg, &it->path, &it->lim, &it->jk, 1.0f);
 }
 
 /* The line's checks as dh_queue_add_path_jerk_f32's (its profile planned
@@ -280,6 +284,7 @@ dh_status dh_queue_add_path_blend_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *
     DH_ASSERT(qu != NULL && p != NULL && lim != NULL && jerk != NULL);
     if (qu->count >= qu->cap) return DH_ERR_LIMIT;
     st = queue_radius(radius);
+    if (st == DH_OK && p->kind != (uint32_t)DH_PATH_LINE) st = DH_ERR_ARG;
     it = queue_slot(qu, qu->count);
     if (st == DH_OK) st = dh_path_move_jerk_f32(&it->prof, p, lim, jerk);
     if (st == DH_OK) st = queue_add_item(qu, p, lim, &it->prof);
@@ -292,23 +297,121 @@ dh_status dh_queue_add_path_blend_jerk_f32(dh_queue_f32 *qu, const dh_path_f32 *
     return st;
 }
 
-/* ---- brake of one coordinate (dh_brake.c) ---------------------------- */
+/* ---- brake of one coordinate ------------------------------------------ */
 
-/* coordinate i's position at brake time tau */
+static DH_NOINLINE float queue_brake_dist(const dh_queue_f32 *qu, uint32_t i, float tau);
+
+/* the brake of coordinate i from its start set by the caller in the
+ * brake's fields, x = bq[i] (position), v = bv[i], a = ba[i] (signed),
+ * within the deceleration A = bap[i] and jerk j = bj[i] (0: none), never
+ * beyond end (ahead along the travel): those fields replaced by the
+ * brake's; its duration */
+static DH_NOINLINE float queue_brake_plan(dh_queue_f32 *qu, uint32_t i, float end)
+{
+    const float x = qu->bq[i], v = qu->bv[i], a = qu->ba[i], A = qu->bap[i], j = qu->bj[i];
+    const float rem = (end > x) ? end - x : x - end;
+    float s, vp, ap, pk, t1 = 0.0f, t2 = 0.0f, t3 = 0.0f, d = 0.0f;
+    s = (v > 0.0f) ? 1.0f : ((v < 0.0f) ? -1.0f : 0.0f);
+    vp = s * v;
+    ap = s * a;
+    pk = 0.0f;
+    if (!dh_feq_f32(s, 0.0f) && A > 0.0f) {
+        if (j > 0.0f) {
+            float v1;
+            pk = dh_sqrt_f32(j * vp + 0.5f * ap * ap);
+            if (pk > A) pk = A;
+            if (pk < -ap) pk = -ap; /* only by rounding: the plan never decelerates faster than it can stop */
+            t1 = (ap + pk) / j;
+            v1 = vp + ap * t1 - 0.5f * j * t1 * t1;
+            t2 = (v1 - 0.5f * pk * pk / j) / pk;
+            if (!(t2 > 0.0f)) t2 = 0.0f;
+            t3 = pk / j;
+        } else {
+            pk = A;
+            t2 = vp / A;
+        }
+    }
+    qu->bq[i] = x;
+    qu->bs[i] = s;
+    qu->bv[i] = vp;
+    qu->ba[i] = ap;
+    qu->bap[i] = pk;
+    qu->bj[i] = j;
+    qu->bt[0][i] = t1;
+    qu->bt[1][i] = t2;
+    qu->bt[2][i] = t3;
+    qu->bx[i] = 0.0f;
+    qu->bend[i] = end;
+    if (!dh_feq_f32(s, 0.0f)) {
+        float e;
+        d = t1 + t2 + t3;
+        e = queue_brake_dist(qu, i, d);
+        if (!(e >= 0.0f)) e = 0.0f;
+        qu->bx[i] = (e < rem) ? e : rem;
+    }
+    return d;
+}
+
+/* distance of coordinate i's brake at time tau (>= 0), before the cap */
+static DH_NOINLINE float queue_brake_dist(const dh_queue_f32 *qu, uint32_t i, float tau)
+{
+    const float j = qu->bj[i], pk = qu->bap[i];
+    const float t1 = qu->bt[0][i], t2 = qu->bt[1][i], t3 = qu->bt[2][i];
+    float x = 0.0f, v = qu->bv[i], a = qu->ba[i], u, r = tau;
+    if (dh_feq_f32(qu->bs[i], 0.0f)) return 0.0f;
+    /* phase 1: jerk -j from a to -pk */
+    u = (r < t1) ? r : t1;
+    x = v * u + 0.5f * a * u * u - j * u * u * u / 6.0f;
+    if (r <= t1) return x;
+    v = v + a * t1 - 0.5f * j * t1 * t1;
+    r -= t1;
+    /* phase 2: -pk */
+    u = (r < t2) ? r : t2;
+    x += v * u - 0.5f * pk * u * u;
+    if (r <= t2) return x;
+    v -= pk * t2;
+    r -= t2;
+    /* phase 3: jerk +j from -pk to 0 */
+    u = (r < t3) ? r : t3;
+    x += v * u - 0.5f * pk * u * u + j * u * u * u / 6.0f;
+    return x;
+}
+
+/* coordinate i's position at brake time tau: within [0, bx] of the start
+ * along the travel, bx exactly from the end of the brake on */
 static DH_NOINLINE float queue_brake_at(const dh_queue_f32 *qu, uint32_t i, float tau)
 {
-    return dh_motion_brake_at_f32_(&qu->br[i], tau, qu->tbend);
+    float x = qu->bx[i], q;
+    if (tau < qu->tbend) {
+        x = queue_brake_dist(qu, i, tau);
+        if (!(x >= 0.0f)) x = 0.0f;
+        if (x > qu->bx[i]) x = qu->bx[i];
+    }
+    q = qu->bq[i] + qu->bs[i] * x;
+    /* the rounding of the sum never passes the end */
+    if ((qu->bs[i] > 0.0f && q > qu->bend[i]) || (qu->bs[i] < 0.0f && q < qu->bend[i])) q = qu->bend[i];
+    return q;
 }
 
 /* ---- the running move ----------------------------------------------- */
 
-/* s where the path move is now: on its brake after a stop, else the
- * executor's (dh_motion_move_now_f32_: at its clock, or on its brake on a
- * lag) */
+/* s of the path plan at clock c (s0 + the profile, 1 at the end of a plan
+ * that moves), with its rate and acceleration */
+static float queue_path_s(const dh_queue_f32 *qu, float c, float *sd, float *sdd)
+{
+    float p, s;
+    (void)dh_profile_eval_f32(&qu->mv.prof[0], c, &p, sd, sdd);
+    s = qu->s0 + p;
+    if ((c >= qu->mv.dur && !dh_feq_f32(qu->mv.prof[0].d, 0.0f)) || s > 1.0f) s = 1.0f;
+    return s;
+}
+
+/* s where the path move is now: on its brake after a stop, else at its clock */
 static DH_NOINLINE float queue_path_now(const dh_queue_f32 *qu)
 {
+    float sd, sdd;
     if (qu->braked != 0u) return queue_brake_at(qu, 0u, qu->tb);
-    return dh_motion_move_now_f32_(&qu->mv);
+    return queue_path_s(qu, qu->mv.clock, &sd, &sdd);
 }
 
 /* ---- blended lines ------------------------------------------------------ */
@@ -340,11 +443,9 @@ static void queue_blend_mv(dh_queue_f32 *qu)
     qu->mv.n = 0u;
     qu->mv.dur = qu->bl[0].T;
     qu->mv.clock = 0.0f;
-    /* jerk-limited lines resumed after a brake keep their cap of s' */
-    if (qu->braked == 0u || !(qu->bl[0].j > 0.0f)) qu->mv.fcap = 1.0f;
-    qu->mv.feed = (qu->bl[0].j > 0.0f) ? qu->mv.fcap : 1.0f;
+    qu->mv.feed = 1.0f;
+    qu->mv.fcap = 1.0f;
     qu->mv.lag = 0u;
-    qu->mv.bst = 0u;
     qu->mv.kind = (uint32_t)DH_MOVE_PATH;
 }
 
@@ -377,7 +478,7 @@ static DH_NOINLINE void queue_jline(dh_queue_f32 *qu, uint32_t i, float s0)
     const dh_queue_item_f32 *it = queue_at(qu, i);
     dh_blend_seg_f32 *g = &qu->bl[i];
     if (s0 > 0.0f) {
-        dh_blend_jline_f32_(g, &it->seg, qu->mv.fcap, 1.0f - s0);
+        dh_blend_jline_f32_(g, &it->path, &it->lim, &it->jk, 1.0f - s0);
     } else {
         *g = it->seg;
         g->tb0 = 0.0f;
@@ -413,7 +514,7 @@ static DH_NOINLINE void queue_blend_two(dh_queue_f32 *qu, float s0, float s1)
     const dh_queue_item_f32 *it = queue_at(qu, 0u);
     queue_seg_rest(&qu->bl[0]);
     if (it->jerk == 2u)
-        dh_blend_jline_f32_(&qu->bl[0], &it->seg, qu->mv.fcap, 1.0f - s0);
+        dh_blend_jline_f32_(&qu->bl[0], &it->path, &it->lim, &it->jk, 1.0f - s0);
     else
         (void)dh_blend_seg_plan_f32_(&qu->bl[0], it->rate, 1.0f - s0);
     queue_seg_rest(&qu->bl[1]);
@@ -548,16 +649,9 @@ static DH_NOINLINE void queue_blend_shift(dh_queue_f32 *qu, float clock)
     qu->bmode = QB_ONE;
     qu->mv.path = queue_at(qu, 1u)->path;
     qu->mv.dur = qu->bl[0].T;
-    if (qu->bl[0].j > 0.0f) {
-        /* a jerk-limited line runs without a cap until it lags */
-        qu->mv.fcap = 1.0f;
-        qu->mv.feed = 1.0f;
-    }
     if (!(c > 0.0f)) c = 0.0f;
     qu->mv.clock = (c < qu->mv.dur) ? c : qu->mv.dur;
 }
-
-static int queue_blend_moving(const dh_queue_f32 *qu);
 
 /* A period of blended lines (QB_ONE, QB_TWO): the feed override as
  * dh_move_advance_f32's, held in an overlap; the clock advances by r dt,
@@ -568,7 +662,7 @@ static DH_NOINLINE int queue_blend_period(dh_queue_f32 *qu, int ok)
 {
     dh_move_f32 *mv = &qu->mv;
     const dh_blend_seg_f32 *g = qu->bl;
-    float up = 0.0f, dn = 0.0f, adv, c;
+    float up = 0.0f, dn = 0.0f, c;
     if (!(g[0].tb1 > 0.0f) && !(mv->clock < mv->dur) && ok != 0) {
         qu->next = mv->clock;
         if (qu->bmode == QB_TWO) {
@@ -579,28 +673,13 @@ static DH_NOINLINE int queue_blend_period(dh_queue_f32 *qu, int ok)
         }
         return 1;
     }
-    if (g[0].j > 0.0f) {
-        /* jerk-limited lines: the clock runs at dt, held at rest while the
-         * tracker is not OK; a lag while they move stops them (at the end
-         * of an overlap), to resume on their own */
-        adv = qu->dt;
-        if (ok == 0 && qu->stopq == 0u) {
-            if (queue_blend_moving(qu)) {
-                qu->stopq = 1u;
-                qu->lagstop = 1u;
-            } else {
-                adv = 0.0f;
-            }
-        }
-    } else if (ok != 0 && mv->feed >= 1.0f && mv->fcap >= 1.0f) {
+    if (ok != 0 && mv->feed >= 1.0f && mv->fcap >= 1.0f) {
         mv->lag = 0u;
-        adv = qu->dt;
     } else {
         queue_blend_bounds(qu, &up, &dn);
         mv->feed = dh_motion_feed_goal_f32_(mv, qu->dt, ok, up, dn);
-        adv = mv->feed * qu->dt;
     }
-    c = mv->clock + adv;
+    c = mv->clock + mv->feed * qu->dt;
     if (qu->bmode == QB_TWO && g[1].T > 0.0f && !(c < mv->dur)) {
         queue_blend_shift(qu, c);
         return 2;
@@ -617,39 +696,38 @@ static int queue_blend_moving(const dh_queue_f32 *qu)
     return (qu->mv.clock > 0.0f || g[0].tb0 > 0.0f) && (qu->mv.clock < qu->mv.dur || g[0].tb1 > 0.0f);
 }
 
-/* br[i].q = s of each blended line i (two in an overlap) at its clock, for
+/* bq[i] = s of each blended line i (two in an overlap) at its clock, for
  * queue_blend_state */
 static DH_NOINLINE void queue_blend_pos(dh_queue_f32 *qu)
 {
     uint32_t i;
     for (i = 0u; i < ((qu->bmode == QB_TWO) ? 2u : 1u); i++)
-        qu->br[i].q = dh_blend_seg_s_f32_(&qu->bl[i], qu->bo[i],
+        qu->bq[i] = dh_blend_seg_s_f32_(&qu->bl[i], qu->bo[i],
                                         (i == 0u) ? qu->mv.clock : qu->mv.clock - (qu->bl[0].T - qu->bl[0].tb1));
 }
 
 /* the brake's start of blended line i (0: the head, 1: the next in an
- * overlap), into brake i for dh_motion_brake_plan_f32_
- * (q = s: queue_blend_pos): v, a = its rate and acceleration under the
- * feed override r (s' r, s'' r^2), ap, j = the deceleration and jerk
+ * overlap), into the brake's fields of coordinate i for queue_brake_plan
+ * (bq = s: queue_blend_pos): bv, ba = its rate and acceleration under the
+ * feed override r (s' r, s'' r^2), bap, bj = the deceleration and jerk
  * (0: none; jerk-limited lines), its tail's in an overlap, its line's
  * own alone */
 static DH_NOINLINE void queue_blend_state(dh_queue_f32 *qu, uint32_t i)
 {
     const dh_blend_seg_f32 *g = &qu->bl[i];
-    const float r = (qu->bl[0].j > 0.0f) ? 1.0f : qu->mv.feed;
-    const float t = (i == 0u) ? qu->mv.clock : qu->mv.clock - (qu->bl[0].T - qu->bl[0].tb1);
+    const float r = qu->mv.feed, t = (i == 0u) ? qu->mv.clock : qu->mv.clock - (qu->bl[0].T - qu->bl[0].tb1);
     float sdd;
-    qu->br[i].v = dh_blend_seg_rate_f32_(g, t, &sdd) * r;
-    qu->br[i].a = sdd * r * r;
-    qu->br[i].ap = g->a;
-    qu->br[i].j = g->j;
+    qu->bv[i] = dh_blend_seg_rate_f32_(g, t, &sdd) * r;
+    qu->ba[i] = sdd * r * r;
+    qu->bap[i] = g->a;
+    qu->bj[i] = g->j;
     if (i == 1u) {
-        qu->br[i].ap = g->b0;
-        qu->br[i].j = g->k0;
+        qu->bap[i] = g->b0;
+        qu->bj[i] = g->k0;
     }
     if (i == 0u && g->tb1 > 0.0f && qu->bmode == QB_TWO) {
-        qu->br[i].ap = g->b1;
-        qu->br[i].j = g->k1;
+        qu->bap[i] = g->b1;
+        qu->bj[i] = g->k1;
     }
 }
 
@@ -687,36 +765,29 @@ static DH_NOINLINE dh_status queue_start_path(dh_queue_f32 *qu, const dh_queue_i
     if (!(qu->braked != 0u && qu->bmode == QB_NONE) && queue_blend_from(qu, s0) != 0) return DH_OK;
     s0 = 0.0f;
     qu->bmode = QB_NONE;
-    if (qu->braked != 0u) s0 = qu->br[0].q + qu->br[0].x;
-    /* a jerk-limited move's cap of s' lasts until it completes (dh_move.c) */
-    if (qu->braked == 0u || it->jerk == 0u) mv->fcap = 1.0f;
+    if (qu->braked != 0u) s0 = qu->bq[0] + qu->bx[0];
     qu->vs = it->prof.v;
     qu->as = it->prof.a;
     mv->kind = (uint32_t)DH_MOVE_NONE;
     mv->prof[0] = it->prof;
     if (s0 > 0.0f && qu->vs > 0.0f && qu->as > 0.0f) {
-        /* the rest of the path within the first plan's peaks of s (and its
-         * jerk; s' within its cap) */
+        /* the rest of the path within the first plan's peaks of s (and its jerk) */
         if (it->jerk != 0u)
-            st = dh_profile_scurve_f32(&mv->prof[0], (s0 < 1.0f) ? 1.0f - s0 : 0.0f, qu->vs * mv->fcap, qu->as,
-                                       it->prof.j);
+            st = dh_profile_scurve_f32(&mv->prof[0], (s0 < 1.0f) ? 1.0f - s0 : 0.0f, qu->vs, qu->as, it->prof.j);
         else
             st = dh_profile_trap_f32(&mv->prof[0], (s0 < 1.0f) ? 1.0f - s0 : 0.0f, qu->vs, qu->as);
         if (st != DH_OK) return st;
     } else {
         s0 = 0.0f;
     }
-    qu->mv.s0 = (s0 < 1.0f) ? s0 : 1.0f;
+    qu->s0 = (s0 < 1.0f) ? s0 : 1.0f;
     mv->path = it->path;
     mv->n = 0u;
     mv->dur = mv->prof[0].T;
     mv->clock = 0.0f;
-    mv->feed = mv->fcap;
+    mv->feed = 1.0f;
+    mv->fcap = 1.0f;
     mv->lag = 0u;
-    mv->vs = qu->vs;
-    mv->as = qu->as;
-    mv->js = it->prof.j;
-    mv->bst = 0u;
     mv->kind = (uint32_t)DH_MOVE_PATH;
     return DH_OK;
 }
@@ -739,7 +810,6 @@ static DH_NOINLINE void queue_joint_end(dh_queue_f32 *qu, uint32_t n, float T)
     qu->mv.clock = 0.0f;
     qu->mv.feed = 1.0f;
     qu->mv.fcap = 1.0f;
-    qu->mv.bst = 0u;
     qu->mv.kind = (uint32_t)DH_MOVE_JOINT;
 }
 
@@ -893,24 +963,19 @@ static void queue_period(dh_queue_f32 *qu, uint32_t what, dh_track_state state, 
         *held = 1 - ok;
         *done = queue_blend_period(qu, ok);
     } else if (what == QUEUE_PATH) {
-        /* the executor's period: clock and feed override, or a
-         * jerk-limited move's brake and resume (dh_move.c) */
-        *held = 1 - ok;
-        (void)dh_motion_advance_f32_(&qu->mv, qu->dt, ok, done);
+        dh_move_report_f32 mrep;
+        /* the executor's period: clock and feed override (dh_move.c) */
+        (void)dh_move_advance_f32(&qu->mv, qu->dt, state, &mrep);
+        *held = mrep.held;
+        *done = mrep.done;
     } else if (what == QUEUE_BJOINT || what == QUEUE_BPATH) {
-        if (what == QUEUE_BPATH) *held = 1 - ok;
         if (what == QUEUE_BJOINT)
             qu->tb = qu->next;
-        else if (ok != 0 || qu->braked == 2u)
-            qu->tb = (qu->tb + qu->dt < qu->tbend) ? qu->tb + qu->dt : qu->tbend;
-        else
+        else if (ok == 0)
             *held = 1;
+        else
+            qu->tb = (qu->tb + qu->dt < qu->tbend) ? qu->tb + qu->dt : qu->tbend;
         if (!(qu->tb < qu->tbend)) queue_rest(qu);
-    } else if (qu->lagstop != 0u && qu->phase == (uint32_t)DH_QUEUE_STOPPED && ok != 0) {
-        /* at rest after a stop on a lag, the tracker OK: replanned from here */
-        qu->lagstop = 0u;
-        qu->phase = (uint32_t)DH_QUEUE_RUN;
-        qu->started = 0u;
     } else {
         *held = 1;
     }
@@ -945,18 +1010,16 @@ dh_status dh_queue_advance_f32(dh_queue_f32 *qu, dh_track_state state, dh_queue_
     rep->last = 0;
     if (qu->count == 0u) rep->last = 1;
     rep->stopped = 0;
-    if (qu->phase == (uint32_t)DH_QUEUE_STOPPED && qu->lagstop == 0u) rep->stopped = 1;
+    if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) rep->stopped = 1;
     return DH_OK;
 }
 
 /* a joint move's position, velocity and acceleration at its clock into
- * each joint's brake (q, v, a), one joint at a time */
+ * bq, ws[0], ws[1] */
 static DH_NOINLINE void queue_joint_state(dh_queue_f32 *qu)
 {
-    uint32_t i;
-    for (i = 0u; i < qu->mv.n; i++)
-        (void)dh_joint_move_eval_f32(&qu->mv.prof[i], 1u, &qu->mv.q0[i], &qu->mv.q1[i], qu->mv.clock, &qu->br[i].q,
-                                     &qu->br[i].v, &qu->br[i].a);
+    (void)dh_joint_move_eval_f32(qu->mv.prof, qu->mv.n, qu->mv.q0, qu->mv.q1, qu->mv.clock, qu->bq, qu->mv.ws[0],
+                                 qu->mv.ws[1]);
 }
 
 /* a joint move's brake from its state (queue_joint_state); its duration */
@@ -966,9 +1029,11 @@ static DH_NOINLINE float queue_brake_joint(dh_queue_f32 *qu)
     float d = 0.0f, e;
     uint32_t i;
     for (i = 0u; i < qu->mv.n; i++) {
-        qu->br[i].ap = it->amax[i] * QUEUE_MARGIN;
-        qu->br[i].j = (it->jerk != 0u) ? it->jmax[i] : 0.0f;
-        e = dh_motion_brake_plan_f32_(&qu->br[i], qu->mv.q1[i]);
+        qu->bv[i] = qu->mv.ws[0][i];
+        qu->ba[i] = qu->mv.ws[1][i];
+        qu->bap[i] = it->amax[i] * QUEUE_MARGIN;
+        qu->bj[i] = (it->jerk != 0u) ? it->jmax[i] : 0.0f;
+        e = queue_brake_plan(qu, i, qu->mv.q1[i]);
         if (e > d) d = e;
     }
     return d;
@@ -981,37 +1046,28 @@ static DH_NOINLINE float queue_brake_blend(dh_queue_f32 *qu)
     uint32_t i;
     for (i = 0u; i < ((qu->bmode == QB_TWO) ? 2u : 1u); i++) {
         queue_blend_state(qu, i);
-        e = dh_motion_brake_plan_f32_(&qu->br[i], 1.0f);
+        e = queue_brake_plan(qu, i, 1.0f);
         if (e > d) d = e;
     }
     return d;
 }
 
 /* a path move from s, its rate and acceleration under the feed override
- * r: s' r, s'' r^2 (a jerk-limited move: r 1); a jerk-limited move on
- * its brake on a lag (dh_move.c) takes that brake on from where it is,
- * running to its end whatever the tracker reports (braked 2) */
+ * r: s' r, s'' r^2 */
 static DH_NOINLINE float queue_brake_path(dh_queue_f32 *qu)
 {
     const dh_queue_item_f32 *it = &qu->items[qu->head];
-    const float r = (it->jerk != 0u) ? 1.0f : qu->mv.feed;
     float sd, sdd;
-    if (qu->mv.bst != 0u) {
-        qu->br[0] = qu->mv.brk;
-        qu->tb = qu->mv.tb;
-        qu->braked = 2u;
-        return qu->mv.tbend;
-    }
-    qu->br[0].q = dh_motion_move_s_f32_(&qu->mv, qu->mv.clock, &sd, &sdd);
-    qu->br[0].v = sd * r;
-    qu->br[0].a = sdd * r * r;
-    qu->br[0].ap = qu->as;
-    qu->br[0].j = (it->jerk != 0u) ? it->prof.j : 0.0f;
-    return dh_motion_brake_plan_f32_(&qu->br[0u], 1.0f);
+    qu->bq[0] = queue_path_s(qu, qu->mv.clock, &sd, &sdd);
+    qu->bv[0] = sd * qu->mv.feed;
+    qu->ba[0] = sdd * qu->mv.feed * qu->mv.feed;
+    qu->bap[0] = qu->as;
+    qu->bj[0] = (it->jerk != 0u) ? it->prof.j : 0.0f;
+    return queue_brake_plan(qu, 0u, 1.0f);
 }
 
 /* plans the brake of the running move from its state at its clock (a
- * joint move's in its brakes: queue_joint_state), each kind of move in its own step;
+ * joint move's in bq, ws[0], ws[1]), each kind of move in its own step;
  * its duration */
 static float queue_brake(dh_queue_f32 *qu)
 {
@@ -1029,38 +1085,24 @@ static int queue_jerk_overlap(const dh_queue_f32 *qu)
     return (qu->bmode == QB_TWO && qu->bl[1].T > 0.0f && qu->bl[0].j > 0.0f) ? 1 : 0;
 }
 
-/* A stop on a lag of jerk-limited blended lines: its brake runs whatever
- * the tracker reports (braked 2), and the head line's cap of s' is
- * lowered from its s' now (dh_motion_lag_cap_f32_, relative to its peak
- * as appended) */
-static DH_NOINLINE void queue_lag_cap(dh_queue_f32 *qu)
-{
-    float sdd;
-    const float sd = dh_blend_seg_rate_f32_(&qu->bl[0], qu->mv.clock, &sdd);
-    qu->braked = 2u;
-    dh_motion_lag_cap_f32_(&qu->mv, sd, queue_at(qu, 0u)->seg.v);
-}
-
-/* the stop of the running move from its state now (a joint move's in its
- * brakes: queue_joint_state): its brake, or at rest at once (then
- * running again when a resume came while it waited) */
+/* the stop of the running move from its state now: its brake, or at
+ * rest at once (then running again when a resume came while it waited) */
 static DH_NOINLINE void queue_stop_now(dh_queue_f32 *qu)
 {
     qu->stopq = 0u;
     if (qu->count == 0u || qu->started == 0u ||
         ((qu->bmode == QB_ONE || qu->bmode == QB_TWO) ? !queue_blend_moving(qu)
                                                        : (!(qu->mv.clock > 0.0f) || !(qu->mv.clock < qu->mv.dur)))) {
-        qu->phase = (qu->resume != 0u || qu->lagstop != 0u) ? (uint32_t)DH_QUEUE_RUN : (uint32_t)DH_QUEUE_STOPPED;
+        qu->phase = (qu->resume != 0u) ? (uint32_t)DH_QUEUE_RUN : (uint32_t)DH_QUEUE_STOPPED;
         qu->resume = 0u;
-        qu->lagstop = 0u;
         return;
     }
+    if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) queue_joint_state(qu);
     if (qu->mv.kind != (uint32_t)DH_MOVE_JOINT && (qu->bmode == QB_ONE || qu->bmode == QB_TWO)) queue_blend_pos(qu);
     qu->tb = 0.0f;
-    qu->braked = 1u;
-    if (qu->lagstop != 0u) queue_lag_cap(qu);
     qu->tbend = queue_brake(qu);
-    qu->phase = (qu->tb < qu->tbend) ? (uint32_t)DH_QUEUE_BRAKE : (uint32_t)DH_QUEUE_STOPPED;
+    qu->braked = 1u;
+    qu->phase = (qu->tbend > 0.0f) ? (uint32_t)DH_QUEUE_BRAKE : (uint32_t)DH_QUEUE_STOPPED;
     if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) queue_rest(qu);
 }
 
@@ -1068,16 +1110,11 @@ dh_status dh_queue_stop_f32(dh_queue_f32 *qu)
 {
     DH_ASSERT(qu != NULL);
     if (qu->pend != 0u) return DH_ERR_ARG;
-    /* a stop on a lag becomes the caller's: no resume of its own */
-    qu->lagstop = 0u;
     if (qu->phase != (uint32_t)DH_QUEUE_RUN) return DH_OK;
     qu->resume = 0u;
     if (queue_jerk_overlap(qu) != 0) {
         qu->stopq = 1u;
     } else {
-        /* a joint move's state for its brake (a deferred stop, in
-         * dh_queue_advance_f32, is never a joint move's) */
-        if (qu->mv.kind == (uint32_t)DH_MOVE_JOINT) queue_joint_state(qu);
         queue_stop_now(qu);
     }
     return DH_OK;
@@ -1087,7 +1124,6 @@ dh_status dh_queue_resume_f32(dh_queue_f32 *qu)
 {
     DH_ASSERT(qu != NULL);
     if (qu->pend != 0u) return DH_ERR_ARG;
-    qu->lagstop = 0u;
     if (qu->phase == (uint32_t)DH_QUEUE_BRAKE || qu->stopq != 0u) {
         qu->resume = 1u;
     } else if (qu->phase == (uint32_t)DH_QUEUE_STOPPED) {

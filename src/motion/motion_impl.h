@@ -39,15 +39,6 @@ dh_status dh_motion_bound_f32_(float *sl, float num, float den);
  * dh_path_move_f32 takes them (dh_path.c); the blends' rates (dh_blend.c) */
 void dh_motion_arc_rates_f32_(const dh_path_f32 *p, float amax, float *V, float *At);
 
-/* For the arc p (radius > 0) within lim and jk: *V (the speed bound so
- * far, lowered), *At, *Jt the tool point's speed, tangential
- * acceleration and tangential jerk bounds that keep its total
- * acceleration within amax and total jerk within jmax, as
- * dh_path_move_jerk_f32 takes them (dh_path.c); the jerk-limited blends'
- * rates (dh_blend.c) */
-void dh_motion_arc_jrates_f32_(const dh_path_f32 *p, const dh_cart_limits_f32 *lim, const dh_cart_jerk_f32 *jk,
-                               float *V, float *At, float *Jt);
-
 /* T's position column (rows 0-2) = p(s) less p's end (end 0: p_A,
  * s = x; end 1: p_B, s = 1 - x) for x in [0, 1], an arc from its nearer
  * end (dh_path.c); the superposition of blends (dh_blend.c) */
@@ -69,42 +60,6 @@ float dh_motion_feed_goal_f32_(dh_move_f32 *mv, float dt, int ok, float up, floa
 /* The largest rise of r within the acceleration A of s: k = s' / dt > 0,
  * p >= 0 the largest s'' near the clock (dh_move.c) */
 float dh_motion_feed_rise_f32_(float k, float p, float A, float r);
-
-/* ---- the brake of one coordinate to rest (dh_brake.c; the queue's stop,
- * the jerk-limited path moves' brake on a lag) ---- */
-
-/* The brake b from its start set by the caller, b->q (position), b->v
- * (velocity), b->a (acceleration, signed), within the deceleration
- * A = b->ap and the jerk j = b->j (0: none), never beyond end (ahead
- * along the travel): b's other fields written, v, a, ap replaced by the
- * brake's (along the travel); its duration (0: at rest) */
-float dh_motion_brake_plan_f32_(dh_brake_f32 *b, float end);
-
-/* the brake b's position at its time tau (>= 0; tend its duration): within
- * [0, b->x] of its start along the travel, b->x exactly from tend on,
- * never past b->end */
-float dh_motion_brake_at_f32_(const dh_brake_f32 *b, float tau, float tend);
-
-/* s of the path move mv (dh_move.c) at the clock c of its plan (mv->s0 +
- * its profile, 1 at the end of a plan that moves), its rate and
- * acceleration into *sd, *sdd; the queue's path moves (dh_queue.c) */
-float dh_motion_move_s_f32_(const dh_move_f32 *mv, float c, float *sd, float *sdd);
-
-/* s of the path move mv now: on its brake (mv->bst != 0), else at its
- * clock (dh_move.c); the queue's path moves (dh_queue.c) */
-float dh_motion_move_now_f32_(const dh_move_f32 *mv);
-
-/* The period of the path move mv (dh_move_advance_f32's, after its
- * checks): ok 1 when the tracker was OK; *done 1 when the move is
- * complete; DH_ERR_OVERFLOW as dh_profile_scurve_f32 (dh_move.c). The
- * queue's path moves (dh_queue.c) call it directly (the stack budget). */
-dh_status dh_motion_advance_f32_(dh_move_f32 *mv, float dt, int ok, int *done);
-
-/* The cap of a jerk-limited path move's s' lowered on a lag begun at s'
- * = sd, v its first plan's peak (dh_move.c: MOVE_CEIL sd / v, at least
- * MOVE_CAP_MIN): mv->fcap = the lower of it and the cap so far, reported
- * in mv->feed; the queue's jerk-limited blended lines (dh_queue.c) */
-void dh_motion_lag_cap_f32_(dh_move_f32 *mv, float sd, float v);
 
 /* ---- the queue's blended lines (dh_blend.c, called by dh_queue.c) ---- */
 
@@ -151,18 +106,13 @@ void dh_blend_pose_rot_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, dh_mat
 void dh_blend_compose_f32_(const dh_quat_f32 *qa2, dh_mat4_f32 *T);
 void dh_blend_pose_pos_f32_(const dh_path_f32 *p1, const dh_path_f32 *p2, float x1, float x2, dh_mat4_f32 *T);
 
-/* g->V, g->a, g->j = the bounds of s', s'', s''' of the line or arc p
- * within lim and jk (dh_blend_seq_plan_jerk_f32's rates of a path: an
- * arc's leave room for its centripetal terms), all 0 without motion */
-void dh_blend_jrates_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
-                          const dh_cart_jerk_f32 *jk);
-
 /* g = the jerk-limited scaling of s over the distance D (s from 1 - D to
- * 1) of a path with the rates cap r->V, r->a, r->j (dh_blend_jrates_f32_;
- * cap in (0, 1] the speed cap after a lag, else 1; r may be g), at rest at both ends (its own bounds of s'' and s''', no
- * overlap): dh_blend_seq_plan_jerk_f32's scaling of a path, which
- * dh_blend_seg_s_f32_ and dh_blend_seg_rate_f32_ evaluate (g->j > 0) */
-void dh_blend_jline_f32_(dh_blend_seg_f32 *g, const dh_blend_seg_f32 *r, float cap, float D);
+ * 1) of the line p within lim and jk, at rest at both ends (its own
+ * bounds of s'' and s''', no overlap): dh_blend_seq_plan_jerk_f32's
+ * scaling of a line, which dh_blend_seg_s_f32_ and dh_blend_seg_rate_f32_
+ * evaluate (g->j > 0) */
+void dh_blend_jline_f32_(dh_blend_seg_f32 *g, const dh_path_f32 *p, const dh_cart_limits_f32 *lim,
+                         const dh_cart_jerk_f32 *jk, float D);
 
 /* The corner of the queued jerk-limited lines i1 then i2 (their paths
  * p1, p2; i1's lim, jk and radius) as the queue blends it
@@ -170,7 +120,7 @@ void dh_blend_jline_f32_(dh_blend_seg_f32 *g, const dh_blend_seg_f32 *r, float c
  * i1->seg p1's scaling as planned (its start as set, its end at rest),
  * i2->seg p2's (dh_blend_jline_f32_, D 1); both planned again with the
  * corner's lowered bounds and overlap, tb returned, or left at rest at
- * the corner (0 returned) when it is not two paths that join, radius is
+ * the corner (0 returned) when it is not two lines that join, radius is
  * 0, the blend is not shorter, or it would change p1's speed while p1's
  * start is blended. */
 float dh_blend_jcorner_f32_(dh_queue_item_f32 *i1, dh_queue_item_f32 *i2);

@@ -61,7 +61,6 @@
 #include <string.h>
 
 #include "dht.h"
-#include "support_motion.h"
 #include "support_ref.h"
 #include "support_robots.h"
 #include "dhmath/motion.h"
@@ -843,6 +842,7 @@ static long hold_clock_notok(rig *g, dh_track_f32 *t, const float *q0, const dh_
  * not-OK periods as in it. */
 static void infeasible_puma(void)
 {
+    static const double QP[6] = { 10.0, -30.0, 45.0, 20.0, 35.0, -60.0 };
     static const dh_cart_limits_f32 PLIM = { 0.3f, 1.5f, 90.0f, 360.0f };
     dh_track_f32 t;
     rig g;
@@ -859,8 +859,18 @@ static void infeasible_puma(void)
         ref_path rp;
         run_stats rs;
         long old_notok, old_periods;
-        dhm_puma_line(&g.r, it == 0, qa, &A, &B);
-        for (i = 0; i < 6u; i++) q0[i] = (float)qa[i];
+        int k;
+        for (i = 0; i < 6u; i++) {
+            qa[i] = QP[i] + ((it == 0) ? 0.0 : dht_rand_uniform(-2.0, 2.0));
+            q0[i] = (float)qa[i];
+        }
+        dhs_target_f32(&g.r, qa, &A);
+        memset(&B, 0, sizeof B);
+        for (k = 0; k < 3; k++) B.m[k][k] = 1.0f;
+        B.m[3][3] = 1.0f;
+        B.m[3][0] = 0.5f + ((it == 0) ? 0.0f : (float)dht_rand_uniform(-0.01, 0.01));
+        B.m[3][1] = -0.03f + ((it == 0) ? 0.0f : (float)dht_rand_uniform(-0.01, 0.01));
+        B.m[3][2] = 1.0f + ((it == 0) ? 0.0f : (float)dht_rand_uniform(-0.01, 0.01));
         DHT_EQ_INT(dh_path_line_f32(&p, &A, &B), DH_OK);
         ref_make(&rp, &A, &B, NULL);
         old_notok = hold_clock_notok(&g, &t, q0, &p, &PLIM, &old_periods);

@@ -75,10 +75,24 @@ static float sp[NS][7], lp[NL][7];    /* position and unit quaternion of the tar
 static long arc_ov;                   /* periods in overlaps at a corner with an arc */
 static long arc_stops;                /* stops inside such an overlap */
 
+/* the path of segment k in the queue's ring: the item from corner k to
+ * corner k + 1 (NULL when none) */
+static const dh_path_f32 *seg_path(uint32_t k)
+{
+    uint32_t i;
+    for (i = 0; i < CAP; i++) {
+        const dh_path_f32 *p = &items[i].path;
+        if (items[i].kind == (uint32_t)DH_MOVE_PATH && memcmp(&p->A.m[3][0], cp[k], sizeof cp[k]) == 0 &&
+            memcmp(&p->B.m[3][0], cp[k + 1u], sizeof cp[k]) == 0)
+            return p;
+    }
+    return NULL;
+}
+
 /* distance of x from the arc of segment k (its path in the queue's ring) */
 static double arc_dist(uint32_t k, const double x[3])
 {
-    const dh_path_f32 *p = dhm_seg_path(items, CAP, (const float (*)[3])cp, k);
+    const dh_path_f32 *p = seg_path(k);
     DHT_TRUE(p != NULL);
     return (p != NULL) ? dhm_arc_dist(p, x) : INFINITY;
 }

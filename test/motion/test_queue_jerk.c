@@ -21,20 +21,16 @@
  *   resumes included;
  * - TOTAL jerk and angular jerk by third differences over W = 50 periods
  *   within jmax and wjmax times 1 + 1e-3 (plus the rounding: 8 samples),
- *   over every window, lags, brakes and resumes included;
+ *   over every window whose periods had the tracker OK and the feed
+ *   override unchanged (the contract's condition);
  * - each period's step within one period at the speed limits.
  * In half the queues the tracker's state is replaced by LAGGING for a
- * random stretch at a random period while running (the move brakes,
- * holds and resumes with its speed capped); in two thirds a stop comes
- * at a random period (twice,
+ * random stretch at a random period while running (the feed override
+ * falls and rises); in two thirds a stop comes at a random period (twice,
  * the second changing nothing), resumed at once, while braking or some
  * periods after rest: rest comes within v / A + 3 A / j of OK periods
  * (motion.h, dh_queue_stop_f32; v, A, j the plan's peaks of s). Moves
  * complete in order, the last target is the last segment's B bit for bit.
- *
- * A lag, then the caller's stop during the brake or at rest after it, for
- * a jerk-limited path move and a jerk-limited blended line (lag_stop_one):
- * the stop wins, the caller's resume runs the line to its end.
  *
  * Statuses of dh_queue_add_path_jerk_f32: NaN/Inf and <= 0 jerk limits, a
  * full queue (before a bad limit), each with the queue and its queued moves
@@ -68,8 +64,7 @@ static dh_queue_item_f32 items[CAP];
 static float sp[NS][7], lp[NL][7];        /* position and unit quaternion of the target m periods (m WD periods) ago */
 static long last_bad;                     /* the last period with a lag or a change of r */
 static double jerk_worst[2];              /* largest third-difference ratios seen (linear, angular) */
-static double lag_worst[2];               /* the same over the windows that hold a lag, a brake or a resume */
-static long jerk_windows, lag_windows;
+static long jerk_windows;
 
 /* every target's finite differences within lim and jk (the file's
  * comment) */
@@ -78,11 +73,9 @@ static void check_fd(dhm_fd *fd, const dh_mat4_f32 *T, const dh_cart_limits_f32 
 {
     const double ulp = S * FLT_EPSILON;
     if (!dhm_fd_push(fd, T, lim, ulp, call)) return;
-    /* the jerk over every window, the lags' included */
-    if (fd->nh >= (long)(NL - 1) * WD + 1) {
-        const int lag = last_bad >= call - 3L * W - 1L;
-        dhm_check_jerk((const float (*)[7])lp, W / WD, (double)W * DT, jk, ulp, call, lag ? lag_worst : jerk_worst);
-        lag_windows += lag;
+    /* the jerk over windows of OK periods at a constant r */
+    if (fd->nh >= (long)(NL - 1) * WD + 1 && last_bad < call - 3L * W - 1L) {
+        dhm_check_jerk((const float (*)[7])lp, W / WD, (double)W * DT, jk, ulp, call, jerk_worst);
         jerk_windows++;
     }
 }
@@ -242,17 +235,12 @@ static void run_robot(const dhm_robot_case *c)
     dhm_rig_make(&g, c);
     jerk_worst[0] = 0.0;
     jerk_worst[1] = 0.0;
-    lag_worst[0] = 0.0;
-    lag_worst[1] = 0.0;
     jerk_windows = 0;
-    lag_windows = 0;
     for (it = 0; it < nq; it++) jerk_queue(&g, c->q, &nstop);
     DHT_TRUE(jerk_windows > 0);
     /* integers: a double's printf needs more heap than the micro:bit's */
-    dht_printf("%s: %ld queues, %ld stops braked, %ld jerk windows, worst jerk %ld, angular %ld ppm of the limits; "
-               "%ld windows with a lag: worst jerk %ld, angular %ld ppm\n",
-               c->d->name, nq, nstop, jerk_windows, (long)(jerk_worst[0] * 1e6), (long)(jerk_worst[1] * 1e6),
-               lag_windows, (long)(lag_worst[0] * 1e6), (long)(lag_worst[1] * 1e6));
+    dht_printf("%s: %ld queues, %ld stops braked, %ld jerk windows, worst jerk %ld, angular %ld ppm of the limits\n",
+               c->d->name, nq, nstop, jerk_windows, (long)(jerk_worst[0] * 1e6), (long)(jerk_worst[1] * 1e6));
 }
 
 static void queues_puma(void) { run_robot(&dhm_puma560); }
@@ -327,97 +315,8 @@ static void jerk_bad(void)
     DHT_EQ_INT(qu.count, 2);
 }
 
-/* 1 while the queue's running move brakes on a lag (stage 1 of
- * lag_stop_one), 2 at rest after it */
-static int lag_state(void)
-{
-    if (qu.bmode == 0u) return (int)qu.mv.bst;
-    if (qu.lagstop == 0u) return 0;
-    return (qu.phase == (uint32_t)DH_QUEUE_STOPPED) ? 2 : 1;
-}
-
-/* One line on the UR5, a jerk-limited path move (blend 0) or a
- * jerk-limited blended line (blend 1): a lag at a random point of its
- * first three quarters, then the caller's stop during the brake (when 0)
- * or at rest after it (when 1; the lag lasts until then): the stop wins
- * (at rest, reported stopped, no resume of its own while the tracker is
- * OK for up to 300 periods), and the caller's resume runs the line to its
- * end, B bit for bit. Every target's finite differences (the file's
- * comment) within the limits, the jerk's over every window. */
-static void lag_stop_one(dhm_rig *g, int blend, int when)
-{
-    dh_cart_limits_f32 lim;
-    dh_cart_jerk_f32 jk;
-    dhm_fd fd = { sp, lp, NS, NL, WS, WD, W, (double)DT, 0 };
-    double qa[DH_MAX_JOINTS], S = 1.0, frac = dht_rand_uniform(0.1, 0.75);
-    float qc[2][DH_MAX_JOINTS];
-    const float (*qcc)[DH_MAX_JOINTS] = (const float (*)[DH_MAX_JOINTS])qc;
-    dh_queue_cmd_f32 cmd;
-    dh_queue_report_f32 rep;
-    dh_track_report_f32 trep;
-    dh_path_f32 seg;
-    dh_mat4_f32 A, B;
-    const long hold = 1 + (long)(dht_rand_u32() % 300u);
-    long call, at_rest = -1;
-    int stage = 0, done = 0;
-    uint32_t i;
-    for (i = 0; i < g->r.n; i++) qa[i] = dhm_ur5.q[i] + dht_rand_uniform(-5.0, 5.0);
-    draw_corners(g, qa, 1u, 8.0, qc, &S);
-    dhm_draw_limits(&lim, &jk);
-    corner(g, qcc, 0u, &A);
-    corner(g, qcc, 1u, &B);
-    DHT_EQ_INT(dh_path_line_f32(&seg, &A, &B), DH_OK);
-    DHT_EQ_INT(dh_track_init_f32(&g->t, &g->r, &g->m, qc[0], DT), DH_OK);
-    DHT_EQ_INT(dh_queue_init_f32(&qu, items, CAP), DH_OK);
-    if (blend)
-        DHT_EQ_INT(dh_queue_add_path_blend_jerk_f32(&qu, &seg, &lim, &jk, 0.0f), DH_OK);
-    else
-        DHT_EQ_INT(dh_queue_add_path_jerk_f32(&qu, &seg, &lim, &jk), DH_OK);
-    for (call = 0; call < MAXCALL && !done; call++) {
-        dh_track_state st;
-        DHT_EQ_INT(dh_queue_target_f32(&qu, &g->t, DT, &cmd), DH_OK);
-        check_fd(&fd, &cmd.T, &lim, &jk, S, call);
-        DHT_EQ_INT(dh_track_step_f32(&g->t, &cmd.T, g->t.q, &trep), DH_OK);
-        st = trep.state;
-        if (stage == 0 && qu.started != 0u && qu.mv.clock > frac * qu.mv.dur) stage = 1;
-        if (stage == 1) st = DH_TRACK_LAGGING;
-        DHT_EQ_INT(dh_queue_advance_f32(&qu, st, &rep), DH_OK);
-        done = rep.done;
-        if (stage == 1 && lag_state() == when + 1) {
-            /* the caller's stop on the brake, or at rest after it */
-            DHT_EQ_INT(dh_queue_stop_f32(&qu), DH_OK);
-            DHT_TRUE(qu.phase != (uint32_t)DH_QUEUE_RUN && qu.lagstop == 0u);
-            stage = 2;
-        } else if (stage == 1) {
-            DHT_TRUE(lag_state() != 0 && qu.phase != (uint32_t)DH_QUEUE_STOPPED);
-        } else if (stage == 2 && rep.stopped) {
-            if (at_rest < 0) at_rest = call;
-            if (call - at_rest >= hold) {
-                DHT_EQ_INT(dh_queue_resume_f32(&qu), DH_OK);
-                stage = 3;
-            }
-        } else if (stage == 2) {
-            /* the brake runs to rest, then the queue stays stopped */
-            DHT_TRUE(at_rest < 0 && qu.phase == (uint32_t)DH_QUEUE_BRAKE);
-        }
-    }
-    DHT_TRUE_MSG(done && stage == 3, "stage %d, done %d in %ld periods", stage, done, call);
-    DHT_TRUE(memcmp(&cmd.T, &B, sizeof B) == 0);
-}
-
-/* lag_stop_one for both kinds of line and both moments of the stop */
-static void lag_stop(void)
-{
-    dhm_rig g;
-    long it, n = DHT_ITER(4);
-    dhm_rig_make(&g, &dhm_ur5);
-    last_bad = -1;
-    for (it = 0; it < n; it++) lag_stop_one(&g, (int)(it & 1), (int)((it >> 1) & 1));
-}
-
 static const dht_case cases[] = {
     DHT_CASE(jerk_bad),
-    DHT_CASE(lag_stop),
     DHT_CASE(queues_ur5),
     DHT_CASE(queues_puma),
     DHT_CASE(queues_panda),
